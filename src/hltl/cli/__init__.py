@@ -1,0 +1,1 @@
+"""The hltl command line."""

@@ -1,0 +1,52 @@
+"""Error hierarchy: one root, subclasses that also inherit the matching builtin."""
+
+from __future__ import annotations
+
+
+class HltlError(Exception):
+    """Root of every error hltl raises on purpose."""
+
+
+class SpecSyntaxError(HltlError, ValueError):
+    """An LTLf formula does not parse; carries the line and column of the problem."""
+
+    def __init__(self, message: str, *, text: str = "", line: int = 0, column: int = 0) -> None:
+        super().__init__(message)
+        self.text = text
+        self.line = line
+        self.column = column
+
+
+class SpecValidationError(HltlError, ValueError):
+    """An H-LTLf specification breaks one of the validity rules (DESIGN.md §4)."""
+
+
+class SceneError(HltlError, ValueError):
+    """A scene file or scene value is malformed (names file, field and value)."""
+
+
+class UnknownEntityError(HltlError, KeyError):
+    """A name refers to no robot, object, human or surface of the scene."""
+
+    def __str__(self) -> str:  # KeyError would quote the message otherwise
+        return str(self.args[0]) if self.args else ""
+
+
+class AutomatonError(HltlError, RuntimeError):
+    """Compiling a formula to a DFA failed (MONA missing, crashed or timed out)."""
+
+
+class BackendUnavailableError(HltlError, ImportError):
+    """An optional dependency or external binary is missing; names the extra to install."""
+
+
+class GroundingError(HltlError, ValueError):
+    """An instruction could not be turned into a valid H-LTLf specification."""
+
+
+class EventsError(HltlError, ValueError):
+    """An events file is malformed or names unknown entities."""
+
+
+class PlanFormatError(HltlError, ValueError):
+    """A plan or log file does not follow the documented format."""

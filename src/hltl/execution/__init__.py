@@ -1,0 +1,1 @@
+"""Receding-horizon execution, safety monitoring and robot drivers."""

@@ -1,0 +1,1 @@
+"""Instruction to H-LTLf grounding: offline semantic parser and LLM grounders."""

@@ -1,0 +1,1 @@
+"""Geometry for handover, grasp and place poses, and motion durations."""

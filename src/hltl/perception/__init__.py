@@ -1,0 +1,1 @@
+"""Perception models that turn observations into world states."""

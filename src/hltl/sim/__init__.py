@@ -1,0 +1,1 @@
+"""Simulator, scenario catalogue, events, metrics and benchmarks."""

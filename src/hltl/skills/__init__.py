@@ -1,0 +1,1 @@
+"""Skill library: pick, place, robot-to-robot and robot-to-human handover."""

@@ -1,0 +1,1 @@
+"""LTLf syntax, H-LTLf hierarchies, automata and monitors."""

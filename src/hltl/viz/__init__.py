@@ -1,0 +1,1 @@
+"""Pictures: Gantt charts, scene animations and spec trees."""

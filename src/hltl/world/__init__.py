@@ -1,0 +1,1 @@
+"""Scene model, world state, context labelling and projection."""
