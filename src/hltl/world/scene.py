@@ -291,7 +291,8 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
             if item.id in seen:
                 raise SceneError(
                     f"{source}: {where}: duplicate id {item.id!r} "
-                    f"(already used by {seen[item.id]}); ids must be unique across robots, objects, humans and surfaces"
+                    f"(already used by {seen[item.id]}); ids must be unique across "
+                    "robots, objects, humans and surfaces"
                 )
             seen[item.id] = f"{kind}[{i}]"
 
