@@ -1,0 +1,100 @@
+"""Skill durations d(s, a): fixed per-skill times, or the analytic hand-travel model."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Protocol
+
+from hltl.errors import SceneError
+from hltl.skills.library import Action, Transition
+from hltl.world.geometry import distance
+from hltl.world.scene import Scene, Vec3
+
+DEFAULT_SPEED = 0.5  # m/s, hand speed of a collaborative arm near people
+
+
+class CostModel(Protocol):
+    """d(s, a). ``fixed`` models ignore hand poses (the planner then does not track them)."""
+
+    @property
+    def fixed(self) -> bool: ...
+
+    def duration(self, action: Action, transition: Transition, hands: Mapping[str, Vec3]) -> float:
+        """Seconds the instance takes when each executor's hand starts at ``hands[robot]``."""
+        ...
+
+    def lower_bound(self, action: Action, transition: Transition) -> float:
+        """A duration no start pose can beat (used by the planner's admissible heuristic)."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class FixedDurations:
+    """The paper's d(a): one time per skill, from the scene's ``durations``."""
+
+    durations: tuple[tuple[str, float], ...]
+
+    @property
+    def fixed(self) -> bool:
+        return True
+
+    def duration(self, action: Action, transition: Transition, hands: Mapping[str, Vec3]) -> float:
+        return self.lower_bound(action, transition)
+
+    def lower_bound(self, action: Action, transition: Transition) -> float:
+        for skill, d in self.durations:
+            if skill == action.skill:
+                return d
+        have = ", ".join(s for s, _ in self.durations)
+        raise SceneError(
+            f"durations: no time for skill {action.skill!r}; the scene gives: {have}. "
+            "Add it to 'durations' or drop 'durations' to use the analytic model"
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class AnalyticCostModel:
+    """Hand travel over speed plus a fixed grasp/release time (DESIGN.md §4).
+
+    A two-robot handover lasts until the slower hand arrives, plus the exchange.
+    """
+
+    speeds: tuple[tuple[str, float], ...]
+    grasp: float = 0.3
+    release: float = 0.3
+    exchange: float = 0.4
+
+    @property
+    def fixed(self) -> bool:
+        return False
+
+    def _const(self, skill: str) -> float:
+        if skill == "pick":
+            return self.grasp
+        if skill == "handover_r2r":
+            return self.exchange
+        return self.release
+
+    def _speed(self, rid: str) -> float:
+        for k, v in self.speeds:
+            if k == rid:
+                return v
+        return DEFAULT_SPEED
+
+    def duration(self, action: Action, transition: Transition, hands: Mapping[str, Vec3]) -> float:
+        travel = 0.0
+        for rid, target in transition.hands:
+            start = hands.get(rid, target)
+            travel = max(travel, distance(start, target) / self._speed(rid))
+        return travel + self._const(action.skill)
+
+    def lower_bound(self, action: Action, transition: Transition) -> float:
+        return self._const(action.skill)
+
+
+def cost_model_for(scene: Scene) -> CostModel:
+    """Fixed durations when the scene gives them, else the analytic model."""
+    if scene.durations is not None:
+        return FixedDurations(scene.durations)
+    return AnalyticCostModel(tuple((r.id, r.speed or DEFAULT_SPEED) for r in scene.robots))
