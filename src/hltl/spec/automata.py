@@ -1,0 +1,436 @@
+"""LTLf to minimal DFA via MONA (program from ltlf2dfa); a cache keyed by formula shape."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import tempfile
+import threading
+from collections.abc import Iterable, Mapping, Sequence
+from concurrent.futures import Future
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import AutomatonError, BackendUnavailableError
+from hltl.spec.printer import atoms_in_order, to_string
+from hltl.spec.syntax import (
+    Always,
+    And,
+    Atom,
+    Equiv,
+    Eventually,
+    FalseF,
+    Formula,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    TrueF,
+    Until,
+    WeakNext,
+)
+
+# The transition table has 2**len(props) columns per state; past 16 propositions it stops being
+# a table one wants in memory (and MONA itself slows down near 20).
+MAX_PROPS = 16
+MONA_TIMEOUT = 60.0
+
+
+@dataclass(frozen=True, slots=True)
+class DFA:
+    """A complete, minimal DFA over the symbols ``2**props``.
+
+    ``table[(state << len(props)) | mask]`` is the successor of ``state`` on the symbol whose true
+    propositions are ``{props[i] for i where bit i of mask is set}``. States are numbered
+    breadth-first from ``initial == 0``; a non-accepting sink (dead state) is kept as an ordinary
+    state when reachable, so ``table`` is total.
+    """
+
+    props: tuple[Atom, ...]
+    initial: int
+    accepting: frozenset[int]
+    n_states: int
+    table: tuple[int, ...]
+    _bit: Mapping[Atom, int] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if len(self.table) != self.n_states << len(self.props):
+            raise AutomatonError(
+                f"DFA table has {len(self.table)} entries; expected "
+                f"{self.n_states} states x {1 << len(self.props)} symbols"
+            )
+        object.__setattr__(self, "_bit", {a: 1 << i for i, a in enumerate(self.props)})
+
+    @property
+    def n_edges(self) -> int:
+        """Number of distinct (source, target) state pairs."""
+        width = 1 << len(self.props)
+        return sum(len(set(self.table[s * width : (s + 1) * width])) for s in range(self.n_states))
+
+    def mask_of(self, true_props: Iterable[Atom]) -> int:
+        """The symbol of a set of true atoms; atoms outside ``props`` are ignored."""
+        bit = self._bit
+        mask = 0
+        for a in true_props:
+            mask |= bit.get(a, 0)
+        return mask
+
+    def step_mask(self, state: int, mask: int) -> int:
+        """Successor of ``state`` on the symbol ``mask`` (see the class docstring)."""
+        return self.table[(state << len(self.props)) | mask]
+
+    def step(self, state: int, true_props: Iterable[Atom]) -> int:
+        """Successor of ``state`` when exactly ``true_props`` (restricted to ``props``) hold."""
+        return self.table[(state << len(self.props)) | self.mask_of(true_props)]
+
+    def is_accepting(self, state: int) -> bool:
+        return state in self.accepting
+
+    def run(self, trace: Iterable[Iterable[Atom]]) -> int:
+        """The state after reading the trace from the initial state."""
+        q = self.initial
+        for symbol in trace:
+            q = self.step(q, symbol)
+        return q
+
+    def accepts(self, trace: Sequence[Iterable[Atom]]) -> bool:
+        """Whether the finite, non-empty trace satisfies the formula."""
+        if not trace:
+            raise ValueError("LTLf is evaluated on non-empty traces; got an empty trace")
+        return self.run(trace) in self.accepting
+
+    def is_empty(self) -> bool:
+        """True when no non-empty trace is accepted (the formula is unsatisfiable)."""
+        width = 1 << len(self.props)
+        start = self.initial * width
+        frontier = list(set(self.table[start : start + width]))
+        seen = set(frontier)
+        while frontier:
+            s = frontier.pop()
+            if s in self.accepting:
+                return False
+            for t in set(self.table[s * width : (s + 1) * width]):
+                if t not in seen:
+                    seen.add(t)
+                    frontier.append(t)
+        return True
+
+    def relabel(self, props: Sequence[Atom]) -> DFA:
+        """The same automaton with ``props[i]`` in place of ``self.props[i]``."""
+        props = tuple(props)
+        if len(props) != len(self.props) or len(set(props)) != len(props):
+            raise ValueError(
+                f"relabel needs {len(self.props)} distinct propositions, got {len(props)}"
+            )
+        return DFA(props, self.initial, self.accepting, self.n_states, self.table)
+
+
+# ---------------------------------------------------------------------------------------------
+# canonical renaming: atoms become x0, x1, ... in order of first occurrence
+
+
+def _placeholder(i: int) -> Atom:
+    return Atom(f"x{i}")
+
+
+def rename_atoms(f: Formula, mapping: Mapping[Atom, Atom]) -> Formula:
+    """The formula with every atom ``a`` replaced by ``mapping.get(a, a)``."""
+    if isinstance(f, Atom):
+        return mapping.get(f, f)
+    if isinstance(f, TrueF | FalseF):
+        return f
+    if isinstance(f, Not | Next | WeakNext | Eventually | Always):
+        return type(f)(rename_atoms(f.operand, mapping))
+    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+        return type(f)(rename_atoms(f.left, mapping), rename_atoms(f.right, mapping))
+    raise TypeError(f"not a formula: {f!r}")
+
+
+def canonical_form(f: Formula) -> tuple[Formula, tuple[Atom, ...]]:
+    """``(g, props)``: ``g`` is ``f`` with ``props[i]`` renamed to ``x{i}``.
+
+    Two formulas that differ only in the names of their atoms (``F delivered(bottle, A)`` and
+    ``F delivered(chips, B)``) have the same ``g``.
+    """
+    props = atoms_in_order(f)
+    mapping = {a: _placeholder(i) for i, a in enumerate(props)}
+    return rename_atoms(f, mapping), props
+
+
+# ---------------------------------------------------------------------------------------------
+# MONA
+
+
+def _to_ltlf2dfa(f: Formula, mod: Any) -> Any:
+    # Atoms here are the placeholders x0, x1, ...: lowercase identifiers as ltlf2dfa requires.
+    if isinstance(f, Atom):
+        return mod.LTLfAtomic(f.name)
+    if isinstance(f, TrueF):
+        return mod.LTLfTrue()
+    if isinstance(f, FalseF):
+        return mod.LTLfFalse()
+    if isinstance(f, Not):
+        return mod.LTLfNot(_to_ltlf2dfa(f.operand, mod))
+    unary = {
+        Next: mod.LTLfNext,
+        WeakNext: mod.LTLfWeakNext,
+        Eventually: mod.LTLfEventually,
+        Always: mod.LTLfAlways,
+    }
+    if isinstance(f, Next | WeakNext | Eventually | Always):
+        return unary[type(f)](_to_ltlf2dfa(f.operand, mod))
+    binary = {
+        And: mod.LTLfAnd,
+        Or: mod.LTLfOr,
+        Implies: mod.LTLfImplies,
+        Equiv: mod.LTLfEquivalence,
+        Until: mod.LTLfUntil,
+        Release: mod.LTLfRelease,
+    }
+    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+        return binary[type(f)]([_to_ltlf2dfa(f.left, mod), _to_ltlf2dfa(f.right, mod)])
+    raise TypeError(f"not a formula: {f!r}")
+
+
+def mona_program(canonical: Formula) -> str:
+    """The MONA program (WS1S) for a formula over the placeholder atoms ``x0, x1, ...``."""
+    try:
+        from ltlf2dfa import ltlf as ltlf_mod
+        from ltlf2dfa.base import MonaProgram
+    except ImportError as exc:  # pragma: no cover - a core dependency
+        raise BackendUnavailableError(
+            "the Python package 'ltlf2dfa' is needed to compile formulas: pip install ltlf2dfa"
+        ) from exc
+    return str(MonaProgram(_to_ltlf2dfa(canonical, ltlf_mod)).mona_program())
+
+
+def _run_mona(program: str, mona: str, timeout: float, shown: str) -> str:
+    exe = shutil.which(mona)
+    if exe is None:
+        raise BackendUnavailableError(
+            f"the MONA binary {mona!r} was not found; install the Debian package 'mona' "
+            "(apt-get install mona; ./setup.sh does it)"
+        )
+    with tempfile.TemporaryDirectory(prefix="hltl-mona-") as tmp:
+        path = Path(tmp) / "formula.mona"
+        path.write_text(program, encoding="utf-8")
+        try:
+            proc = subprocess.run(
+                [exe, "-q", "-u", "-w", str(path)],
+                capture_output=True,
+                text=True,
+                timeout=timeout,
+                check=False,
+            )
+        except subprocess.TimeoutExpired:
+            raise AutomatonError(
+                f"MONA timed out after {timeout:g} s compiling {shown!r}"
+            ) from None
+        except OSError as exc:
+            raise AutomatonError(f"could not run MONA ({exe}): {exc}") from None
+    if proc.returncode != 0:
+        detail = (proc.stderr.strip() or proc.stdout.strip())[-500:]
+        raise AutomatonError(
+            f"MONA failed (exit {proc.returncode}) compiling {shown!r}: {detail or 'no output'}"
+        )
+    return proc.stdout
+
+
+_FREE = re.compile(r"DFA for formula with free variables:([^\n]*)")
+_ACCEPTING = re.compile(r"Accepting states:([^\n]*)")
+_STATE = re.compile(r"^State (\d+): ([01X]*) -> state (\d+)\s*$", re.MULTILINE)
+
+
+def parse_mona_output(output: str, n_props: int) -> DFA:
+    """The minimal DFA of MONA's raw state table for a formula over ``x0 .. x{n_props-1}``.
+
+    MONA's state 0 reads a dummy first symbol (the same successor on every symbol); the DFA
+    starts in that successor. ``X`` in a guard is a don't-care and is expanded; a placeholder
+    that MONA dropped from its free variables is a don't-care everywhere.
+    """
+    free_m, acc_m = _FREE.search(output), _ACCEPTING.search(output)
+    if free_m is None or acc_m is None:
+        raise AutomatonError(f"unexpected MONA output (no state table): {output[-300:]!r}")
+    free = free_m.group(1).split()
+    bits: list[int] = []
+    for name in free:
+        m = re.fullmatch(r"X(\d+)", name)
+        if m is None or int(m.group(1)) >= n_props:
+            raise AutomatonError(f"unexpected free variable {name!r} in MONA output")
+        bits.append(int(m.group(1)))
+    width = 1 << n_props
+    accepting = {int(s) for s in acc_m.group(1).split()}
+    raw: dict[int, list[int]] = {}
+    for m in _STATE.finditer(output):
+        src, guard, dst = int(m.group(1)), m.group(2), int(m.group(3))
+        if len(guard) != len(bits):
+            raise AutomatonError(f"MONA guard {guard!r} does not match variables {free}")
+        row = raw.setdefault(src, [-1] * width)
+        fixed = 0
+        free_bits = [b for b in range(n_props) if b not in bits]
+        for ch, b in zip(guard, bits, strict=True):
+            if ch == "1":
+                fixed |= 1 << b
+            elif ch == "X":
+                free_bits.append(b)
+        masks = [fixed]
+        for b in free_bits:
+            masks += [m | 1 << b for m in masks]
+        for mask in masks:
+            row[mask] = dst
+    if 0 not in raw or any(-1 in row for row in raw.values()):
+        raise AutomatonError("MONA's state table is incomplete")
+    initial = raw[0][0]
+    if any(t != initial for t in raw[0]):
+        raise AutomatonError("MONA's pre-initial state does not read a dummy symbol")
+    return _minimise(raw, initial, accepting, n_props)
+
+
+def _minimise(
+    raw: Mapping[int, Sequence[int]], initial: int, accepting: set[int], n_props: int
+) -> DFA:
+    """Moore partition refinement on the part reachable from ``initial``; BFS numbering."""
+    reach = [initial]
+    seen = {initial}
+    for s in reach:
+        for t in raw[s]:
+            if t not in seen:
+                seen.add(t)
+                reach.append(t)
+    block = {s: int(s in accepting) for s in reach}
+    n_blocks = len(set(block.values()))
+    while True:
+        signatures: dict[tuple[int, tuple[int, ...]], int] = {}
+        new_block = {}
+        for s in reach:
+            sig = (block[s], tuple(block[t] for t in raw[s]))
+            new_block[s] = signatures.setdefault(sig, len(signatures))
+        block = new_block
+        if len(signatures) == n_blocks:
+            break
+        n_blocks = len(signatures)
+    rep: dict[int, int] = {}
+    for s in reach:
+        rep.setdefault(block[s], s)
+    # renumber blocks breadth-first from the initial block, symbols in increasing order
+    number = {block[initial]: 0}
+    order = [block[initial]]
+    for b in order:
+        for t in raw[rep[b]]:
+            if block[t] not in number:
+                number[block[t]] = len(order)
+                order.append(block[t])
+    table: list[int] = []
+    for b in order:
+        table.extend(number[block[t]] for t in raw[rep[b]])
+    acc = frozenset(number[b] for b in order if rep[b] in accepting)
+    props = tuple(_placeholder(i) for i in range(n_props))
+    return DFA(props, 0, acc, len(order), tuple(table))
+
+
+def _compile_canonical(canonical: Formula, n_props: int, mona: str, timeout: float) -> DFA:
+    if n_props > MAX_PROPS:
+        raise AutomatonError(
+            f"{to_string(canonical)!r} has {n_props} atoms; at most {MAX_PROPS} fit a DFA table "
+            "(split the formula into children)"
+        )
+    output = _run_mona(mona_program(canonical), mona, timeout, to_string(canonical))
+    return parse_mona_output(output, n_props)
+
+
+def to_dfa(f: Formula, *, mona: str = "mona", timeout: float = MONA_TIMEOUT) -> DFA:
+    """Compile a formula to its minimal DFA, uncached (see ``AutomatonCache`` for the cached way).
+
+    Args:
+        f: the formula; its atoms become ``props`` in order of first occurrence.
+        mona: the MONA executable (name on PATH or a path).
+        timeout: seconds MONA may take.
+
+    Raises:
+        BackendUnavailableError: MONA is not installed.
+        AutomatonError: too many atoms, or MONA failed or timed out.
+    """
+    canonical, props = canonical_form(f)
+    try:
+        dfa = _compile_canonical(canonical, len(props), mona, timeout)
+    except AutomatonError as exc:
+        raise AutomatonError(str(exc).replace(to_string(canonical), to_string(f))) from None
+    return dfa.relabel(props)
+
+
+class AutomatonCache:
+    """Thread-safe DFA cache keyed by formula shape (atoms renamed in first-occurrence order).
+
+    ``F delivered(bottle, A)`` and ``F delivered(chips, B)`` share one MONA call; the cached DFA
+    is re-labelled with each formula's atoms. Concurrent requests for the same shape wait for
+    the one compilation in flight. Failed compilations are not cached.
+    """
+
+    def __init__(self, *, mona: str = "mona", timeout: float = MONA_TIMEOUT) -> None:
+        self.mona = mona
+        self.timeout = timeout
+        self._lock = threading.Lock()
+        self._entries: dict[Formula, Future[DFA]] = {}
+        self._hits = 0
+        self._misses = 0
+
+    @property
+    def hits(self) -> int:
+        """Requests answered from the cache (including waits on a compilation in flight)."""
+        return self._hits
+
+    @property
+    def misses(self) -> int:
+        """Requests that ran MONA."""
+        return self._misses
+
+    def __len__(self) -> int:
+        with self._lock:
+            return sum(1 for fut in self._entries.values() if fut.done())
+
+    def clear(self) -> None:
+        """Forget every cached DFA and reset the counts."""
+        with self._lock:
+            self._entries.clear()
+            self._hits = self._misses = 0
+
+    def to_dfa(self, f: Formula) -> DFA:
+        """The minimal DFA of ``f`` (``props`` = its atoms in first-occurrence order).
+
+        Raises:
+            BackendUnavailableError: MONA is not installed.
+            AutomatonError: too many atoms, or MONA failed or timed out.
+        """
+        canonical, props = canonical_form(f)
+        with self._lock:
+            fut = self._entries.get(canonical)
+            owner = fut is None
+            if fut is None:
+                fut = Future()
+                self._entries[canonical] = fut
+                self._misses += 1
+            else:
+                self._hits += 1
+        if owner:
+            try:
+                fut.set_result(_compile_canonical(canonical, len(props), self.mona, self.timeout))
+            except BaseException as exc:
+                with self._lock:
+                    self._entries.pop(canonical, None)
+                fut.set_exception(exc)
+        try:
+            dfa = fut.result()
+        except AutomatonError as exc:
+            raise AutomatonError(str(exc).replace(to_string(canonical), to_string(f))) from None
+        return dfa.relabel(props)
+
+
+_default_cache = AutomatonCache()
+
+
+def default_cache() -> AutomatonCache:
+    """The process-wide cache used when no cache is passed (owned by this module)."""
+    return _default_cache
