@@ -1,1 +1,68 @@
 """Exact search over the unified graph of joint robot states, bindings and monitor states."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from hltl.planner.problem import Problem
+from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
+from hltl.planner.search import ALGORITHMS, search
+from hltl.skills.cost import CostModel
+from hltl.skills.library import DEFAULT_SKILLS, Skill
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.world.scene import Scene
+from hltl.world.state import WorldState
+
+__all__ = [
+    "ALGORITHMS",
+    "Binding",
+    "PlanResult",
+    "PlanStatus",
+    "PlanStep",
+    "Problem",
+    "SearchStats",
+    "plan",
+]
+
+
+def plan(
+    scene: Scene,
+    spec: HSpec,
+    *,
+    world: WorldState | None = None,
+    monitor: HierarchyMonitor | None = None,
+    q0: MonitorState | None = None,
+    algorithm: str = "astar",
+    timeout: float | None = 60.0,
+    max_expansions: int | None = None,
+    skills: Sequence[Skill] = DEFAULT_SKILLS,
+    cost: CostModel | None = None,
+    on_progress: Callable[[int, float], None] | None = None,
+) -> PlanResult:
+    """Find a minimum-makespan plan for ``spec`` in ``scene``.
+
+    Args:
+        scene: the cell.
+        spec: the H-LTLf specification.
+        world: the current world state w_t (default: the scene's initial state).
+        monitor: a compiled monitor to reuse (the executor keeps one across replans).
+        q0: the monitor state to start from (default: the monitor's initial state).
+        algorithm: ``"astar"`` or ``"dijkstra"``; both are exact.
+        timeout: seconds before the search gives up with status ``timeout``.
+        max_expansions: node budget, also ending in ``timeout``.
+        skills: the skill library.
+        cost: the duration model (default: the scene's fixed durations, else analytic).
+        on_progress: called now and then with (nodes expanded, current f bound).
+
+    Returns:
+        A :class:`PlanResult`; "no plan" is ``status == PlanStatus.INFEASIBLE`` with a reason.
+    """
+    problem = Problem(scene, spec, world=world, monitor=monitor, q0=q0, skills=skills, cost=cost)
+    return search(
+        problem,
+        algorithm=algorithm,
+        timeout=timeout,
+        max_expansions=max_expansions,
+        on_progress=on_progress,
+    )

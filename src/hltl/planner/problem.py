@@ -1,0 +1,218 @@
+"""The unified search graph, compiled: integer-coded states, ground skill instances, atom tables."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from hltl.errors import UnknownEntityError
+from hltl.skills.cost import AnalyticCostModel, CostModel, cost_model_for
+from hltl.skills.library import DEFAULT_SKILLS, Action, Situation, Skill, ground, state_atoms
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.printer import atoms as formula_atoms
+from hltl.spec.syntax import PREDICATES, Atom
+from hltl.world.geometry import distance, home_point
+from hltl.world.scene import Scene, Vec3
+from hltl.world.state import REST, Loc, WorldState, initial_world
+
+# A search node x = (s, q): object places (codes), hand poses (point ids, or None when durations
+# are fixed and poses cannot change a cost), and the monitor state. η is derived (docs/model.md).
+Node = tuple[tuple[int, ...], tuple[int, ...] | None, MonitorState]
+
+
+@dataclass(frozen=True, slots=True)
+class Instance:
+    """A ground skill instance in integer codes (hot loop of the search)."""
+
+    index: int
+    obj: int
+    pre: int
+    post: int
+    executors: int  # bit mask over robots
+    free: tuple[int, ...]
+    events: frozenset[Atom]
+    hands: tuple[tuple[int, int], ...]  # (robot index, point index)
+    lower: float  # duration lower bound (exact when durations are fixed)
+    const: float  # analytic model: grasp/release/exchange time
+    action: Action
+
+
+class Problem:
+    """A planning problem: scene, world w_t, spec with its monitor and q_t, skills, cost model."""
+
+    def __init__(
+        self,
+        scene: Scene,
+        spec: HSpec,
+        *,
+        world: WorldState | None = None,
+        monitor: HierarchyMonitor | None = None,
+        q0: MonitorState | None = None,
+        skills: Sequence[Skill] = DEFAULT_SKILLS,
+        cost: CostModel | None = None,
+    ) -> None:
+        self.scene = scene
+        self.spec = spec
+        self.world = initial_world(scene) if world is None else world
+        self.monitor = HierarchyMonitor(spec) if monitor is None else monitor
+        self.q0 = self.monitor.initial if q0 is None else q0
+        self.cost = cost_model_for(scene) if cost is None else cost
+        self.situation = Situation.of(scene, self.world)
+        self.context = self.situation.context
+
+        # every predicate atom of the spec, and which formulas mention which objects
+        self.formula_atoms: dict[str, frozenset[Atom]] = {
+            name: frozenset(a for a in formula_atoms(f) if a.is_predicate)
+            for name, f in spec.formulas
+        }
+        self.spec_atoms: frozenset[Atom] = frozenset().union(*self.formula_atoms.values())
+        check_atoms_against_scene(self.spec_atoms, scene)
+
+        self.objects: tuple[str, ...] = tuple(oid for oid, _ in self.world.objects)
+        self.robots: tuple[str, ...] = scene.robot_ids
+        self.obj_index = {o: i for i, o in enumerate(self.objects)}
+        self.robot_index = {r: i for i, r in enumerate(self.robots)}
+
+        self.locs: list[Loc] = [REST]
+        self.locs += [Loc("held", r) for r in self.robots]
+        self.locs += [Loc("on", s) for s in scene.surface_ids]
+        self.locs += [Loc("delivered", h) for h in scene.human_ids]
+        self.loc_code = {loc: i for i, loc in enumerate(self.locs)}
+        self.held_code = {i: self.loc_code[Loc("held", r)] for i, r in enumerate(self.robots)}
+        self.code_holder = {c: i for i, c in self.held_code.items()}
+
+        # hand poses (analytic model only)
+        self.points: list[Vec3] = []
+        self._point_index: dict[Vec3, int] = {}
+        self.track_hands = not self.cost.fixed
+        self.speeds: tuple[float, ...] = ()
+        if isinstance(self.cost, AnalyticCostModel):
+            self.speeds = tuple(self.cost._speed(r) for r in self.robots)
+
+        self.instances: list[Instance] = []
+        n_locs = len(self.locs)
+        self.by_obj_pre: list[list[list[Instance]]] = [
+            [[] for _ in range(n_locs)] for _ in self.objects
+        ]
+        for action, trans in ground(self.situation, skills):
+            oi = self.obj_index[trans.obj]
+            inst = Instance(
+                index=len(self.instances),
+                obj=oi,
+                pre=self.loc_code[trans.pre],
+                post=self.loc_code[trans.post],
+                executors=sum(1 << self.robot_index[r] for r in action.robots),
+                free=tuple(self.robot_index[r] for r in trans.free),
+                events=trans.events & self.spec_atoms,
+                hands=tuple((self.robot_index[r], self._point(p)) for r, p in trans.hands),
+                lower=self.cost.lower_bound(action, trans),
+                const=self.cost.lower_bound(action, trans),
+                action=action,
+            )
+            self.instances.append(inst)
+            self.by_obj_pre[oi][inst.pre].append(inst)
+        self._transitions = {a: t for a, t in ground(self.situation, skills)}
+
+        # state atoms per (object, place), restricted to the spec's atoms
+        self.state_atoms: list[list[frozenset[Atom]]] = [
+            [state_atoms(o, loc) & self.spec_atoms for loc in self.locs] for o in self.objects
+        ]
+        self.state_atom_objects: tuple[int, ...] = tuple(
+            i for i in range(len(self.objects)) if any(self.state_atoms[i])
+        )
+        # objects each formula is about
+        self.formula_objects: dict[str, frozenset[int]] = {
+            name: frozenset(
+                self.obj_index[o] for a in atoms_ for o in _object_args(a) if o in self.obj_index
+            )
+            for name, atoms_ in self.formula_atoms.items()
+        }
+        self._relevant_cache: dict[frozenset[str], frozenset[int]] = {}
+        self._dist: dict[tuple[int, int], float] = {}
+
+    # -- encoding --------------------------------------------------------------------------------
+    def _point(self, p: Vec3) -> int:
+        idx = self._point_index.get(p)
+        if idx is None:
+            idx = len(self.points)
+            self.points.append(p)
+            self._point_index[p] = idx
+        return idx
+
+    def start(self) -> Node:
+        status = dict(self.world.objects)
+        locs = tuple(self.loc_code[status[o].loc] for o in self.objects)
+        hands: tuple[int, ...] | None = None
+        if self.track_hands:
+            hands = tuple(
+                self._point(self.world.hand_position(r) or home_point(self.scene.robot(r)))
+                for r in self.robots
+            )
+        return (locs, hands, self.q0)
+
+    def relevant(self, done: frozenset[str]) -> frozenset[int]:
+        """Objects that some formula not yet done is about: only they are worth touching."""
+        rel = self._relevant_cache.get(done)
+        if rel is None:
+            rel = frozenset().union(
+                *(objs for name, objs in self.formula_objects.items() if name not in done)
+            )
+            self._relevant_cache[done] = rel
+        return rel
+
+    def travel(self, a: int, b: int) -> float:
+        key = (a, b) if a <= b else (b, a)
+        d = self._dist.get(key)
+        if d is None:
+            d = distance(self.points[a], self.points[b])
+            self._dist[key] = d
+        return d
+
+    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> float:
+        if hands is None:
+            return inst.lower
+        if self.speeds:
+            t = 0.0
+            for r, p in inst.hands:
+                t = max(t, self.travel(hands[r], p) / self.speeds[r])
+            return t + inst.const
+        start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
+        return self.cost.duration(inst.action, self._transitions[inst.action], start)
+
+
+def _object_args(atom: Atom) -> tuple[str, ...]:
+    if atom.name == "holding":
+        return atom.args[1:]
+    if atom.name in ("delivered", "placed", "picked", "at"):
+        return atom.args[:1]
+    return ()
+
+
+_ARG_KINDS: dict[str, tuple[str, ...]] = {
+    "delivered": ("object", "human"),
+    "placed": ("object", "surface"),
+    "picked": ("object",),
+    "holding": ("robot", "object"),
+    "at": ("object", "surface"),
+}
+
+
+def check_atoms_against_scene(atoms_: frozenset[Atom], scene: Scene) -> None:
+    """Every predicate atom must name entities of the right kind that the scene has."""
+    ids = {
+        "object": scene.object_ids,
+        "human": scene.human_ids,
+        "surface": scene.surface_ids,
+        "robot": scene.robot_ids,
+    }
+    for atom in sorted(atoms_):
+        kinds = _ARG_KINDS.get(atom.name)
+        if kinds is None or len(kinds) != PREDICATES.get(atom.name, -1):
+            continue
+        for value, kind in zip(atom.args, kinds, strict=False):
+            if value not in ids[kind]:
+                have = ", ".join(ids[kind]) or "none"
+                raise UnknownEntityError(
+                    f"{atom}: unknown {kind} {value!r}; the scene ({scene.source}) has: {have}"
+                )

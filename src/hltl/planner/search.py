@@ -1,0 +1,229 @@
+"""Exact search over the unified graph: on-the-fly Dijkstra and A* to the accepting set F."""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import math
+import time
+from collections.abc import Callable, Iterator, Sequence
+
+from hltl.planner.bindings import derive_bindings
+from hltl.planner.explain import explain_infeasible
+from hltl.planner.heuristic import Heuristic
+from hltl.planner.problem import Instance, Node, Problem
+from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
+from hltl.spec.syntax import Atom
+
+ALGORITHMS = ("astar", "dijkstra")
+_EPS = 1e-9
+
+
+class _Search:
+    """One search run; kept as an object so successor generation can reuse its memo tables."""
+
+    def __init__(self, problem: Problem) -> None:
+        self.p = problem
+        self.monitor = problem.monitor
+        self._step_memo: dict[tuple[object, frozenset[Atom]], object] = {}
+        self._done_memo: dict[object, frozenset[str]] = {}
+
+    def done(self, q: object) -> frozenset[str]:
+        d = self._done_memo.get(q)
+        if d is None:
+            d = self.monitor.done(q)  # type: ignore[arg-type]
+            self._done_memo[q] = d
+        return d
+
+    def monitor_step(self, q: object, atoms: frozenset[Atom]) -> object:
+        key = (q, atoms)
+        nq = self._step_memo.get(key)
+        if nq is None:
+            nq = self.monitor.step(q, atoms)  # type: ignore[arg-type]
+            self._step_memo[key] = nq
+        return nq
+
+    def options(self, node: Node) -> list[list[Instance]]:
+        """Per object worth touching, the instances whose state preconditions hold."""
+        locs, _, q = node
+        p = self.p
+        holder_of = p.code_holder
+        busy = 0
+        for code in locs:
+            r = holder_of.get(code)
+            if r is not None:
+                busy |= 1 << r
+        relevant = p.relevant(self.done(q))
+        out: list[list[Instance]] = []
+        for o, code in enumerate(locs):
+            if o not in relevant and code not in holder_of:
+                continue
+            cands = [
+                inst for inst in p.by_obj_pre[o][code] if not any(busy >> f & 1 for f in inst.free)
+            ]
+            if cands:
+                out.append(cands)
+        return out
+
+    def steps(self, node: Node) -> Iterator[tuple[tuple[Instance, ...], float, Node]]:
+        """All successors: every set U of applicable instances with disjoint robots."""
+        locs, hands, q = node
+        p = self.p
+        opts = self.options(node)
+        chosen: list[Instance] = []
+
+        def rec(i: int, used: int) -> Iterator[tuple[Instance, ...]]:
+            if i == len(opts):
+                yield tuple(chosen)
+                return
+            yield from rec(i + 1, used)
+            for inst in opts[i]:
+                if inst.executors & used:
+                    continue
+                chosen.append(inst)
+                yield from rec(i + 1, used | inst.executors)
+                chosen.pop()
+
+        for U in rec(0, 0):
+            new_locs = list(locs)
+            events: set[Atom] = set()
+            cost = 0.0
+            new_hands = list(hands) if hands is not None else None
+            for inst in U:
+                new_locs[inst.obj] = inst.post
+                events |= inst.events
+                d = p.duration(inst, hands)
+                if d > cost:
+                    cost = d
+                if new_hands is not None:
+                    for r, pt in inst.hands:
+                        new_hands[r] = pt
+            for o in p.state_atom_objects:
+                events |= p.state_atoms[o][new_locs[o]]
+            nq = self.monitor_step(q, frozenset(events))
+            if not U and nq == q:
+                continue
+            yield U, cost, (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)  # type: ignore[misc]
+
+
+def search(
+    problem: Problem,
+    *,
+    algorithm: str = "astar",
+    timeout: float | None = 60.0,
+    max_expansions: int | None = None,
+    on_progress: Callable[[int, float], None] | None = None,
+) -> PlanResult:
+    """Minimum-makespan path from the problem's start node to the accepting set F.
+
+    Args:
+        problem: the compiled problem.
+        algorithm: ``"astar"`` (admissible heuristic) or ``"dijkstra"`` (no heuristic).
+        timeout: seconds of search before giving up with ``timeout`` status; ``None``: no limit.
+        max_expansions: node budget; exceeding it also yields ``timeout``.
+        on_progress: called every 1000 expansions with (expanded, best f so far).
+    """
+    if algorithm not in ALGORITHMS:
+        raise ValueError(
+            f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}"
+        )
+    t0 = time.perf_counter()
+    s = _Search(problem)
+    h: Callable[[Node], float]
+    if algorithm == "astar":
+        heur = Heuristic(problem, s.done)
+        h = heur
+    else:
+        h = _zero
+    start = problem.start()
+    if problem.monitor.accepted(start[2]):
+        return PlanResult(
+            PlanStatus.SOLVED, (), 0.0, SearchStats(0, 1, time.perf_counter() - t0, algorithm)
+        )
+    h0 = h(start)
+    if math.isinf(h0):
+        return _infeasible(problem, s, algorithm, t0, 0, 1)
+
+    counter = itertools.count()
+    g_best: dict[Node, float] = {start: 0.0}
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], float]] = {}
+    heap: list[tuple[float, float, int, Node]] = [(h0, 0.0, next(counter), start)]
+    expanded = generated = 0
+    while heap:
+        f, neg_g, _, node = heapq.heappop(heap)
+        g = -neg_g
+        # stale entry: a cheaper path to this node was found after it was pushed (the heuristic
+        # need not be consistent, so a node may be expanded again with a smaller g)
+        if g > g_best[node] + _EPS:
+            continue
+        if problem.monitor.accepted(node[2]):
+            steps = _reconstruct(problem, parent, node)
+            stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+            return PlanResult(PlanStatus.SOLVED, steps, g, stats)
+        expanded += 1
+        if expanded & 255 == 0:
+            elapsed = time.perf_counter() - t0
+            if (timeout is not None and elapsed > timeout) or (
+                max_expansions is not None and expanded > max_expansions
+            ):
+                stats = SearchStats(expanded, generated, elapsed, algorithm)
+                return PlanResult(
+                    PlanStatus.TIMEOUT,
+                    stats=stats,
+                    reason=f"search stopped after {elapsed:.1f} s and {expanded} expansions "
+                    f"(best lower bound on the makespan: {f:.3f} s)",
+                )
+            if on_progress is not None and expanded % 1024 == 0:
+                on_progress(expanded, f)
+        for U, cost, child in s.steps(node):
+            ng = g + cost
+            if ng + _EPS < g_best.get(child, math.inf):
+                hc = h(child)
+                if math.isinf(hc):
+                    continue
+                g_best[child] = ng
+                parent[child] = (node, U, cost)
+                generated += 1
+                heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
+    return _infeasible(problem, s, algorithm, t0, expanded, generated)
+
+
+def _zero(_: Node) -> float:
+    return 0.0
+
+
+def _infeasible(
+    problem: Problem, s: _Search, algorithm: str, t0: float, expanded: int, generated: int
+) -> PlanResult:
+    stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+    return PlanResult(PlanStatus.INFEASIBLE, stats=stats, reason=explain_infeasible(problem))
+
+
+def _reconstruct(
+    problem: Problem,
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], float]],
+    node: Node,
+) -> tuple[PlanStep, ...]:
+    chain: list[tuple[Node, tuple[Instance, ...], float]] = []
+    while node in parent:
+        prev, U, cost = parent[node]
+        chain.append((prev, U, cost))
+        node = prev
+    chain.reverse()
+    steps: list[PlanStep] = []
+    t = 0.0
+    for _, U, cost in chain:
+        actions = tuple(sorted(inst.action for inst in U))
+        steps.append(PlanStep(t, cost, actions))
+        t += cost
+    done_before = [problem.monitor.done(prev[2]) for prev, _, _ in chain]
+    return derive_bindings(problem, steps, done_before)
+
+
+def plan_problem(problem: Problem, **kwargs: object) -> PlanResult:
+    return search(problem, **kwargs)  # type: ignore[arg-type]
+
+
+def all_steps(problem: Problem, node: Node) -> Sequence[tuple[tuple[Instance, ...], float, Node]]:
+    """Every successor of ``node`` (for tests and debugging)."""
+    return list(_Search(problem).steps(node))
