@@ -1,0 +1,1 @@
+"""Independent oracles for the planner, from docs/model.md alone: validator, brute force, CP-SAT."""
