@@ -1,0 +1,526 @@
+"""Words of an instruction: tokens, keyword lemmas and scene entities (longest match first)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Literal, TypeAlias
+
+from hltl.errors import GroundingError
+from hltl.world.scene import Scene
+
+Kind: TypeAlias = Literal["object", "human", "surface", "robot"]
+
+_TOKEN = re.compile(r"n't|'(?:s|ve|d|ll|re|m)\b|[A-Za-z0-9_]+(?:-[A-Za-z0-9_]+)*|[,.;:!?]")
+
+
+@dataclass(frozen=True, slots=True)
+class Token:
+    text: str  # as typed
+    low: str  # lower case
+
+
+def tokenize(text: str) -> list[Token]:
+    """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
+    text = text.replace("\u2019", "'").replace("\u2018", "'")
+    text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
+    return [Token(m.group(0), m.group(0).lower()) for m in _TOKEN.finditer(text)]
+
+
+# -- keywords ------------------------------------------------------------------------------------
+
+# Verb lemmas by class. Inflections map to the lemma; tense does not change the meaning here.
+VERBS: dict[str, str] = {}
+VERB_CLASS: dict[str, str] = {}
+
+
+def _verb(lemma: str, cls: str, *forms: str) -> None:
+    VERB_CLASS[lemma] = cls
+    for f in (lemma, *forms):
+        VERBS[f] = lemma
+
+
+# give: a person receives the object ("give A the bottle", "give the bottle to A")
+for _lemma, _forms in {
+    "give": ("gives", "giving", "gave", "given"),
+    "hand": ("hands", "handing", "handed"),
+    "pass": ("passes", "passing", "passed"),
+    "offer": ("offers", "offering", "offered"),
+    "serve": ("serves", "serving", "served"),
+}.items():
+    _verb(_lemma, "give", *_forms)
+# bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
+for _lemma, _forms in {
+    "bring": ("brings", "bringing", "brought"),
+    "fetch": ("fetches", "fetching", "fetched"),
+    "get": ("gets", "getting", "got", "gotten"),
+    "send": ("sends", "sending", "sent"),
+    "deliver": ("delivers", "delivering", "delivered"),
+    "take": ("takes", "taking", "took", "taken"),
+    "carry": ("carries", "carrying", "carried"),
+    "move": ("moves", "moving", "moved"),
+    "go": ("goes", "going", "went", "gone"),
+}.items():
+    _verb(_lemma, "bring", *_forms)
+# put: a surface ("put the cup on the shelf")
+for _lemma, _forms in {
+    "put": ("puts", "putting"),
+    "place": ("places", "placing", "placed"),
+    "set": ("sets", "setting"),
+    "leave": ("leaves", "leaving"),
+    "store": ("stores", "storing", "stored"),
+    "stack": ("stacks", "stacking", "stacked"),
+}.items():
+    _verb(_lemma, "put", *_forms)
+# pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")
+for _lemma, _forms in {
+    "pick": ("picks", "picking", "picked"),
+    "grab": ("grabs", "grabbing", "grabbed"),
+}.items():
+    _verb(_lemma, "pick", *_forms)
+# possession, with the person as subject ("A wants the bottle", "once A has the bottle")
+for _lemma, _forms in {
+    "want": ("wants", "wanted"),
+    "need": ("needs", "needed"),
+    "have": ("has", "having", "had"),
+    "receive": ("receives", "receiving", "received"),
+    "like": (),
+}.items():
+    _verb(_lemma, "possess", *_forms)
+
+GIVE_VERBS = frozenset(lemma for lemma, c in VERB_CLASS.items() if c == "give")
+
+# Multi-word keywords, longest first when matching. Values are the lemma used by the parser.
+PHRASES: dict[tuple[str, ...], str] = {
+    ("as", "well", "as"): "and",
+    ("along", "with"): "and",
+    ("together", "with"): "and",
+    ("in", "addition", "to"): "and",
+    ("and", "also"): "and",
+    ("and", "then"): "then",
+    ("and", "after", "that"): "then",
+    ("after", "that"): "then",
+    ("after", "this"): "then",
+    ("and", "finally"): "then",
+    ("and", "lastly"): "then",
+    ("and", "next"): "then",
+    ("followed", "by"): "then",
+    ("as", "soon", "as"): "once",
+    ("as", "well"): "filler",
+    ("or", "else"): "or",
+    ("on", "top", "of"): "on",
+    ("on", "to"): "on",
+    ("instead", "of"): "instead_of",
+    ("in", "parallel"): "meanwhile",
+    ("at", "the", "same", "time"): "meanwhile",
+    ("in", "the", "meantime"): "meanwhile",
+    ("would", "like"): "verb:like",
+    ("'d", "like"): "verb:like",
+    ("should", "get"): "verb:have",
+    ("should", "have"): "verb:have",
+    ("is", "to", "get"): "verb:have",
+    ("make", "sure", "that"): "filler",
+    ("make", "sure"): "filler",
+    ("i", "want", "you", "to"): "filler",
+    ("i", "need", "you", "to"): "filler",
+    ("i", "would", "like", "you", "to"): "filler",
+    ("i", "'d", "like", "you", "to"): "filler",
+    ("can", "you"): "filler",
+    ("could", "you"): "filler",
+    ("would", "you"): "filler",
+    ("will", "you"): "filler",
+    ("go", "ahead", "and"): "filler",
+    ("let", "'s"): "filler",
+    ("we", "need", "to"): "filler",
+    ("you", "need", "to"): "filler",
+    ("the", "robots"): "subject",
+    ("the", "robot"): "subject",
+    ("the", "arms"): "subject",
+    ("never", "mind"): "cancel",
+    ("no", "longer"): "cancel",
+    ("do", "not"): "not",
+    ("pick", "up"): "verb:pick",
+    ("picks", "up"): "verb:pick",
+    ("picking", "up"): "verb:pick",
+    ("picked", "up"): "verb:pick",
+    ("grab", "hold", "of"): "verb:pick",
+}
+MAX_PHRASE = max(len(p) for p in PHRASES)
+
+WORDS: dict[str, str] = {
+    # coordination
+    "and": "and",
+    "plus": "and",
+    "also": "also",
+    "additionally": "also",
+    "or": "or",
+    "either": "either",
+    "both": "both",
+    # sequencing
+    "then": "then",
+    "afterwards": "then",
+    "afterward": "then",
+    "next": "then",
+    "finally": "then",
+    "lastly": "then",
+    "subsequently": "then",
+    "later": "then",
+    "second": "then",
+    "secondly": "then",
+    "third": "then",
+    "thirdly": "then",
+    "first": "first",
+    "firstly": "first",
+    "initially": "first",
+    "after": "after",
+    "before": "before",
+    "once": "once",
+    "when": "once",
+    "meanwhile": "meanwhile",
+    "simultaneously": "meanwhile",
+    # prepositions
+    "to": "to",
+    "for": "for",
+    "on": "on",
+    "onto": "on",
+    "in": "on",
+    "into": "on",
+    "inside": "on",
+    "at": "on",
+    "atop": "on",
+    "instead": "instead",
+    # determiners and fillers
+    "the": "det",
+    "a": "det",
+    "an": "det",
+    "some": "det",
+    "this": "det",
+    "that": "det",
+    "these": "det",
+    "those": "det",
+    "my": "det",
+    "our": "det",
+    "your": "det",
+    "please": "filler",
+    "kindly": "filler",
+    "now": "filler",
+    "just": "filler",
+    "too": "filler",
+    "over": "filler",
+    "back": "filler",
+    "down": "filler",
+    "up": "filler",
+    "across": "filler",
+    "off": "filler",
+    "done": "filler",
+    "ok": "filler",
+    "okay": "filler",
+    "robots": "filler",
+    "robot": "filler",
+    "arms": "filler",
+    "'s": "filler",
+    "quickly": "filler",
+    "carefully": "filler",
+    "gently": "filler",
+    "immediately": "filler",
+    "asap": "filler",
+    "right": "filler",
+    "away": "filler",
+    "soon": "filler",
+    "thanks": "filler",
+    "thank": "filler",
+    # subjects and auxiliaries, skipped ("after you have given …", "once the cup is on …")
+    "you": "subject",
+    "we": "subject",
+    "they": "subject",
+    "is": "aux",
+    "are": "aux",
+    "was": "aux",
+    "were": "aux",
+    "be": "aux",
+    "been": "aux",
+    "being": "aux",
+    "will": "aux",
+    "shall": "aux",
+    "should": "aux",
+    "would": "aux",
+    "could": "aux",
+    "can": "aux",
+    "must": "aux",
+    "may": "aux",
+    "did": "aux",
+    "does": "aux",
+    "'ve": "aux",
+    "'ll": "aux",
+    "'re": "aux",
+    "'d": "aux",
+    "'m": "aux",
+    # words the offline grounder refuses to guess about
+    "it": "it",
+    "him": "pronoun",
+    "her": "pronoun",
+    "his": "pronoun",
+    "hers": "pronoun",
+    "he": "pronoun",
+    "she": "pronoun",
+    "them": "pronoun",
+    "their": "pronoun",
+    "theirs": "pronoun",
+    "me": "pronoun",
+    "i": "pronoun",
+    "us": "pronoun",
+    "n't": "not",
+    "not": "not",
+    "never": "not",
+    "no": "not",
+    "without": "not",
+    "except": "not",
+    "don": "not",
+    "nothing": "not",
+    "if": "if",
+    "unless": "if",
+    "whether": "if",
+    "all": "all",
+    "every": "all",
+    "each": "all",
+    "everything": "all",
+    "everyone": "all",
+    "everybody": "all",
+    "anyone": "all",
+    "anybody": "all",
+    "someone": "all",
+    "somebody": "all",
+    # update commands
+    "cancel": "cancel",
+    "cancels": "cancel",
+    "forget": "cancel",
+    "skip": "cancel",
+    "remove": "cancel",
+    "abort": "cancel",
+    "scrap": "cancel",
+    "drop": "cancel",
+    "do": "do",
+    "prioritise": "priority",
+    "prioritize": "priority",
+    "priority": "priority",
+    "urgent": "priority",
+    "urgently": "priority",
+    "task": "task",
+    "tasks": "task",
+    "delivery": "task",
+    "deliveries": "task",
+    "placement": "task",
+    "one": "task",
+    "order": "task",
+    "orders": "task",
+    "job": "task",
+    "request": "task",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Ref:
+    """A scene entity a phrase can mean."""
+
+    kind: Kind
+    id: str
+    plural: bool = False  # matched through a plural form ("bottles")
+
+
+@dataclass(frozen=True, slots=True)
+class Item:
+    """One unit the parser sees: an entity mention, a keyword (lemma) or an unknown word."""
+
+    kind: Literal["ent", "word", "punct", "unknown"]
+    lemma: str  # keyword lemma; for entities and unknown words, the lower-case text
+    text: str  # as typed
+    refs: tuple[Ref, ...] = ()
+
+
+def _plural_forms(words: tuple[str, ...]) -> list[tuple[str, ...]]:
+    *head, last = words
+    forms = []
+    if last.endswith(("s", "x", "z", "ch", "sh")):
+        forms.append(last + "es")
+    elif last.endswith("y") and len(last) > 1 and last[-2] not in "aeiou":
+        forms.append(last[:-1] + "ies")
+    else:
+        forms.append(last + "s")
+    return [(*head, f) for f in forms]
+
+
+def _singular_forms(words: tuple[str, ...]) -> list[tuple[str, ...]]:
+    *head, last = words
+    out = []
+    if last.endswith("ies") and len(last) > 3:
+        out.append(last[:-3] + "y")
+    if last.endswith("es") and len(last) > 2:
+        out.append(last[:-2])
+    if last.endswith("s") and not last.endswith("ss") and len(last) > 1:
+        out.append(last[:-1])
+    return [(*head, f) for f in out]
+
+
+def _words(name: str) -> tuple[str, ...]:
+    return tuple(t.low for t in tokenize(name.replace("_", " ")) if t.low not in ",.;:!?")
+
+
+class Lexicon:
+    """Scene-specific lexicon: which phrases name which scene entities."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
+        self._phrases: dict[tuple[str, ...], list[tuple[Ref, str]]] = {}
+        for o in scene.objects:
+            for name in dict.fromkeys((o.id, o.category, *o.aliases)):
+                self._add(Ref("object", o.id), name, plurals=True)
+        for h in scene.humans:
+            for name in dict.fromkeys((h.id, h.name, *h.aliases, f"person {h.id}")):
+                self._add(Ref("human", h.id), name, plurals=False)
+        for s in scene.surfaces:
+            for name in dict.fromkeys((s.id, *s.aliases)):
+                self._add(Ref("surface", s.id), name, plurals=False)
+        for r in scene.robots:
+            self._add(Ref("robot", r.id), r.id, plurals=False)
+        self.max_len = max((len(p) for p in self._phrases), default=1)
+
+    def _add(self, ref: Ref, name: str, *, plurals: bool) -> None:
+        if len(name) == 1 and name.isalpha():
+            self._exact.setdefault(name, []).append(ref)
+            return
+        words = _words(name)
+        if not words:
+            return
+        self._put(words, ref, name)
+        if plurals:
+            for form in _plural_forms(words):
+                self._put(form, Ref(ref.kind, ref.id, plural=True), name)
+            # "chip" for "chips": a singular spelling of a plural-looking name
+            for form in _singular_forms(words):
+                self._put(form, ref, name)
+
+    def _put(self, words: tuple[str, ...], ref: Ref, spelling: str) -> None:
+        lst = self._phrases.setdefault(words, [])
+        if all(r != ref for r, _ in lst):
+            lst.append((ref, spelling))
+
+    def match(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
+        """The longest entity mention starting at token ``i``: (length, refs), else None."""
+        for n in range(min(self.max_len, len(tokens) - i), 0, -1):
+            key = tuple(t.low for t in tokens[i : i + n])
+            found = self._phrases.get(key)
+            if not found:
+                continue
+            if n == 1 and (key[0] in WORDS or key[0] in VERBS):
+                # a keyword names an entity only when typed as the scene spells it ("Will")
+                found = [(r, s) for r, s in found if s == tokens[i].text]
+                if not found:
+                    continue
+            return n, _best(found, key)
+        exact = self._exact.get(tokens[i].text)
+        if exact:
+            return 1, tuple(exact)
+        return None
+
+    # -- descriptions for error messages -----------------------------------------------------
+    def listing(self, kind: Kind) -> str:
+        sc = self.scene
+        if kind == "object":
+            return "objects: " + (", ".join(sc.object_ids) or "none")
+        if kind == "human":
+            names = [f"{h.id} ({h.name})" if h.name != h.id else h.id for h in sc.humans]
+            return "people: " + (", ".join(names) or "none")
+        if kind == "surface":
+            return "surfaces: " + (", ".join(sc.surface_ids) or "none")
+        return "robots: " + (", ".join(sc.robot_ids) or "none")
+
+    def display(self, ref_id: str) -> str:
+        """A human's name, else the id."""
+        for h in self.scene.humans:
+            if h.id == ref_id:
+                return h.name
+        return ref_id
+
+
+def _best(found: list[tuple[Ref, str]], key: tuple[str, ...]) -> tuple[Ref, ...]:
+    # An id or alias spelled exactly wins over a category shared by several objects.
+    exact = [r for r, s in found if _words(s) == key and not r.plural]
+    if len({r.id for r in exact}) == 1:
+        return (exact[0],)
+    return tuple(r for r, _ in found)
+
+
+def lex(text: str, lexicon: Lexicon) -> list[Item]:
+    """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
+    tokens = tokenize(text)
+    items: list[Item] = []
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
+        if tok.low in ",.;:!?":
+            items.append(Item("punct", tok.low, tok.text))
+            i += 1
+            continue
+        ent = lexicon.match(tokens, i)
+        phrase = _match_phrase(tokens, i)
+        if ent is not None and (phrase is None or ent[0] >= phrase[0]):
+            n, refs = ent
+            low = " ".join(t.low for t in tokens[i : i + n])
+            items.append(Item("ent", low, _text(tokens, i, n), refs))
+            i += n
+            continue
+        if phrase is not None:
+            n, lemma = phrase
+            items.append(Item("word", lemma, _text(tokens, i, n)))
+            i += n
+            continue
+        if tok.low in VERBS:
+            items.append(Item("word", "verb:" + VERBS[tok.low], tok.text))
+        elif tok.low in WORDS:
+            items.append(Item("word", WORDS[tok.low], tok.text))
+        else:
+            items.append(Item("unknown", tok.low, tok.text))
+        i += 1
+    return _merge_unknown(items)
+
+
+def _merge_unknown(items: list[Item]) -> list[Item]:
+    """Join unknown words with the names right next to them into one phrase ("red cup").
+
+    The phrase is then reported whole ("no object called 'red cup'") instead of dropping a word.
+    """
+    out: list[Item] = []
+    for it in items:
+        prev = out[-1] if out else None
+        joinable = it.kind in ("unknown", "ent")
+        if (
+            prev is not None
+            and joinable
+            and prev.kind in ("unknown", "ent")
+            and "unknown" in (prev.kind, it.kind)
+        ):
+            out[-1] = Item("unknown", f"{prev.lemma} {it.lemma}", f"{prev.text} {it.text}")
+            continue
+        out.append(it)
+    return out
+
+
+def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
+    for n in range(min(MAX_PHRASE, len(tokens) - i), 1, -1):
+        lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
+        if lemma is not None:
+            return n, lemma
+    return None
+
+
+def _text(tokens: list[Token], i: int, n: int) -> str:
+    return " ".join(t.text for t in tokens[i : i + n])
+
+
+def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
+    ids = sorted({r.id for r in item.refs})
+    return GroundingError(
+        f"{item.text!r} is ambiguous: it could be {', '.join(ids[:-1])} or {ids[-1]}; "
+        "use the id or an alias"
+    )

@@ -1,0 +1,666 @@
+"""The embedded offline grounder: a deterministic semantic parser for handover instructions.
+
+The grammar (docs/grounding.md lists every phrasing):
+
+    instruction := sentence ((. | ; | meanwhile | also | then) sentence)*
+    sentence    := [(after|once|when|before) sub ,] seq
+    seq         := [first] coord ((then | after that | finally …) coord
+                                  | (after | once | before) coord)*
+    coord       := fragment ((, | and | or | as well as …) fragment)*   with either/both brackets
+    fragment    := [verb] person object | [verb] object (to|for|on) target
+                 | person (wants|needs|has|gets …) object | object | person | (to|on) target
+
+A fragment may leave its verb, its object or its recipient out when a neighbour gives it
+("give A the bottle and B the chips", "hand both the cup and the chips to B"). Every name must
+resolve to exactly one scene entity; anything else raises :class:`GroundingError` quoting the words
+and listing what the scene has.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Literal
+
+from hltl.errors import GroundingError
+from hltl.grounding.base import Grounding, TokenUsage
+from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, lex
+from hltl.grounding.tree import Group, Node, Op, Task, check_deliveries, encode, entities, normalise
+
+if TYPE_CHECKING:
+    from hltl.spec.hierarchy import HSpec
+    from hltl.world.scene import Scene
+
+_SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
+_SUBORDINATORS = frozenset({"after", "once", "before"})
+
+
+class OfflineGrounder:
+    """Grounds the English of this domain without any model; deterministic, 0 tokens."""
+
+    name = "offline"
+
+    def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
+        """Ground ``instruction``; with ``running``, merge it as an update (see update.py)."""
+        if running is not None:
+            from hltl.grounding.update import ground_update
+
+            return ground_update(instruction, scene, running, self)
+        node = parse_instruction(instruction, scene)
+        return Grounding(spec=spec_of(node), entities=entities(node), tokens=TokenUsage())
+
+
+def spec_of(node: Node) -> HSpec:
+    """The H-LTLf spec of a task tree, validated by the spec module."""
+    from hltl.spec.hierarchy import spec_from_dict
+
+    formulas = encode(node)
+    return spec_from_dict({"root": "p0", "formulas": formulas}, source="<grounding>")
+
+
+def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -> Node:
+    """Parse ``text`` into a task tree over ``scene``'s ids.
+
+    Raises:
+        GroundingError: the words, what was expected, and what the scene has.
+    """
+    lexicon = lexicon or Lexicon(scene)
+    items = lex(text, lexicon)
+    if not [it for it in items if it.kind != "punct"]:
+        raise GroundingError("the instruction is empty")
+    _refuse(items, lexicon, text)
+    parser = _Parser(lexicon)
+    raw = parser.instruction(items)
+    node = parser.resolve(raw)
+    if node is None:
+        raise GroundingError(f"no delivery or placement in {text.strip()!r}")
+    node = normalise(node)
+    check_deliveries(node, {h.id: h.name for h in scene.humans})
+    return node
+
+
+def _refuse(items: list[Item], lexicon: Lexicon, text: str) -> None:
+    """Reject what the grammar does not cover instead of guessing around it."""
+    for it in items:
+        if it.kind != "word" and it.kind != "ent":
+            continue
+        if it.lemma == "not":
+            raise GroundingError(
+                f"negation ({it.text!r}) is not supported: say what to do; to drop a running "
+                "task, say 'cancel …'"
+            )
+        if it.lemma == "if":
+            raise GroundingError(f"conditions ({it.text!r}) are not supported: say what to do")
+        if it.lemma == "all":
+            raise GroundingError(
+                f"{it.text!r} is not supported: name the objects and people; "
+                f"{lexicon.listing('object')}; {lexicon.listing('human')}"
+            )
+        if it.lemma == "pronoun":
+            raise GroundingError(
+                f"{it.text!r} is not resolved (the offline grounder does not guess who is "
+                f"meant): name the person; {lexicon.listing('human')}"
+            )
+        if it.lemma in ("cancel", "priority", "instead", "instead_of"):
+            raise GroundingError(
+                f"{it.text!r} changes a running task: give the running spec (--running) to "
+                "update it"
+            )
+        if it.kind == "ent" and any(r.kind == "robot" for r in it.refs):
+            raise GroundingError(
+                f"{it.text!r} is a robot: the planner chooses which robots do what; "
+                "say only what goes to whom"
+            )
+
+
+# -- raw structure -------------------------------------------------------------------------------
+
+
+@dataclass(slots=True)
+class _Target:
+    kind: Literal["human", "surface"]
+    id: str
+    prep: str  # "to", "for", "on"; "" for a person before the object ("give A the cup")
+    text: str
+
+
+@dataclass(slots=True)
+class _Frag:
+    """One clause or elliptical piece of a coordination, before its gaps are filled."""
+
+    index: int
+    segment: int
+    text: str
+    verb: str | None = None  # lemma
+    verb_text: str = ""
+    objects: list[str] | None = None
+    it: bool = False
+    target: _Target | None = None
+    pick: bool = False  # only picks up the antecedent of a later 'it'
+    antecedent: bool = False
+
+
+@dataclass(slots=True)
+class _RawGroup:
+    op: Op
+    children: list[_Frag | _RawGroup] = field(default_factory=list)
+
+
+_Raw = _Frag | _RawGroup
+
+_SKIP = frozenset({"filler", "subject", "aux", "first"})
+
+
+def _text(items: list[Item]) -> str:
+    out = ""
+    for it in items:
+        if it.kind == "punct":
+            out += it.text
+        else:
+            out += (" " if out else "") + it.text
+    return out
+
+
+def _is(item: Item, *lemmas: str) -> bool:
+    return item.kind in ("word", "punct") and item.lemma in lemmas
+
+
+def _is_verb(item: Item) -> bool:
+    return item.kind == "word" and item.lemma.startswith("verb:")
+
+
+class _Parser:
+    def __init__(self, lexicon: Lexicon) -> None:
+        self.lex = lexicon
+        self.frags: list[_Frag] = []
+        self._segment = 0
+
+    # -- sentences -------------------------------------------------------------------------------
+    def instruction(self, items: list[Item]) -> _Raw:
+        sentences: list[list[Item]] = []
+        current: list[Item] = []
+        for it in items:
+            brk = _is(it, "meanwhile")
+            if (it.kind == "punct" and it.lemma in _SENTENCE_END) or brk:
+                while current and _is(current[-1], ",", *(("and",) if brk else ())):
+                    current.pop()
+                if current:
+                    sentences.append(current)
+                current = []
+                continue
+            current.append(it)
+        while current and _is(current[-1], ","):
+            current.pop()
+        if current:
+            sentences.append(current)
+        result: _Raw | None = None
+        for sent in sentences:
+            body, conn = _leading_connector(sent)
+            if not body:
+                raise GroundingError(f"no task in {_text(sent)!r}")
+            node = self.sentence(body)
+            if result is None:
+                result = node
+            else:
+                result = _RawGroup("seq" if conn == "then" else "and", [result, node])
+        if result is None:
+            raise GroundingError("the instruction names no task")
+        return result
+
+    def sentence(self, items: list[Item]) -> _Raw:
+        first = items[0]
+        if _is(first, *_SUBORDINATORS):
+            split = _main_clause_start(items)
+            if split is None:
+                raise GroundingError(
+                    f"cannot tell where the {first.text!r} part of {_text(items)!r} ends: put a "
+                    "comma before the main instruction"
+                )
+            sub = self.seq(items[1:split])
+            main = self.seq(items[split + 1 :] if _is(items[split], ",") else items[split:])
+            if first.lemma == "before":
+                return _RawGroup("seq", [main, sub])
+            return _RawGroup("seq", [sub, main])
+        return self.seq(items)
+
+    # -- sequences ------------------------------------------------------------------------------
+    def seq(self, items: list[Item]) -> _Raw:
+        segments: list[tuple[str, list[Item]]] = []
+        current: list[Item] = []
+        conn = "then"
+        for it in items:
+            if _is(it, "then", "after", "before", "once"):
+                while current and _is(current[-1], ",", "and", "also"):
+                    current.pop()  # ", and then": the separator belongs to the connector
+                if current or segments:
+                    segments.append((conn, current))
+                elif it.lemma != "then":
+                    raise GroundingError(f"nothing before {it.text!r} in {_text(items)!r}")
+                current, conn = [], it.lemma
+                continue
+            current.append(it)
+        segments.append((conn, current))
+        result: _Raw | None = None
+        for conn, seg in segments:
+            seg = _strip_separators(seg)
+            if not [it for it in seg if not _is(it, *_SKIP)]:
+                raise GroundingError(f"nothing to do after {conn!r} in {_text(items)!r}")
+            self._segment += 1
+            node = self.coord(seg)
+            if result is None:
+                result = node
+            elif conn in ("after", "once"):
+                result = _RawGroup("seq", [node, result])
+            else:  # then, before
+                result = _RawGroup("seq", [result, node])
+        assert result is not None
+        return result
+
+    # -- coordination ---------------------------------------------------------------------------
+    def coord(self, items: list[Item]) -> _Raw:
+        pieces: list[list[Item]] = [[]]
+        seps: list[str] = []
+        markers: list[str | None] = [None]
+        for it in items:
+            if _is(it, ",", "and", "or", "also"):
+                sep = "and" if it.lemma == "also" else it.lemma
+                if not pieces[-1]:
+                    if seps:
+                        seps[-1] = _merge_sep(seps[-1], sep, items)
+                    continue  # a leading separator: ignore
+                pieces.append([])
+                seps.append(sep)
+                markers.append(None)
+                continue
+            if _is(it, "either", "both"):
+                if markers[-1] is not None:
+                    raise GroundingError(f"two of 'either'/'both' in one part of {_text(items)!r}")
+                markers[-1] = it.lemma
+                continue
+            pieces[-1].append(it)
+        if not pieces[-1]:
+            raise GroundingError(f"{_text(items)!r} ends with {seps[-1]!r}: something is missing")
+        frags: list[_Raw] = [self.fragment(p) for p in pieces]
+        node, _ = self._coord_list(frags, seps, markers, 0, None, items)
+        return node
+
+    def _coord_list(
+        self,
+        frags: list[_Raw],
+        seps: list[str],
+        markers: list[str | None],
+        start: int,
+        bracket: str | None,
+        items: list[Item],
+    ) -> tuple[_Raw, int]:
+        """Parse frags[start:] into one node; inside an either/both bracket, stop where it ends.
+
+        seps[k] separates frags[k] and frags[k + 1]; a "," takes the operator of its list.
+        """
+        word = {"either": "or", "both": "and"}.get(bracket or "")
+        children: list[_Raw] = []
+        ops: list[str] = []
+        k = start
+        while True:
+            mark = markers[k]
+            if mark is not None and not (bracket is not None and k == start):
+                child, k = self._coord_list(frags, seps, markers, k, mark, items)
+            else:
+                child, k = frags[k], k + 1
+            children.append(child)
+            if k >= len(frags):
+                break
+            if word is not None and not _continues(seps, k - 1, word):
+                break
+            ops.append(seps[k - 1])
+        if word is not None and (len(children) < 2 or word not in ops):
+            raise GroundingError(f"{bracket!r} without {word!r} in {_text(items)!r}")
+        if len(children) == 1:
+            return children[0], k
+        kinds = {op for op in ops if op != ","}
+        if len(kinds) > 1:
+            raise GroundingError(
+                f"{_text(items)!r} mixes 'and' and 'or' and could be read two ways: group the "
+                "alternatives with 'either … or …' or split the sentence"
+            )
+        op: Op = "or" if kinds == {"or"} else "and"
+        return _RawGroup(op, children), k
+
+    # -- fragments ------------------------------------------------------------------------------
+    def fragment(self, items: list[Item]) -> _Frag:
+        frag = _Frag(index=len(self.frags), segment=self._segment, text=_text(items))
+        self.frags.append(frag)
+        units = [it for it in items if not _is(it, *_SKIP, "det")]
+        # auxiliary "have" ("has been handed", "you have given") and "needs to get": drop a
+        # possession verb that another verb follows, with a "to" right after it
+        while True:
+            verbs = [k for k, u in enumerate(units) if _is_verb(u)]
+            if len(verbs) < 2 or VERB_CLASS[_lemma(units[verbs[0]])] != "possess":
+                break
+            k = verbs[0]
+            drop = {k, k + 1} if k + 1 < len(units) and _is(units[k + 1], "to") else {k}
+            units = [u for j, u in enumerate(units) if j not in drop]
+        if len(verbs) > 1:
+            names = ", ".join(repr(units[k].text) for k in verbs)
+            raise GroundingError(f"two verbs ({names}) in {frag.text!r}: join them with 'and'")
+        pre, post = [], units
+        if verbs:
+            v = units[verbs[0]]
+            frag.verb, frag.verb_text = _lemma(v), v.text
+            pre, post = units[: verbs[0]], units[verbs[0] + 1 :]
+            if frag.verb == "get" and pre:
+                frag.verb = "have"  # "A gets the bottle": possession, not "get A the bottle"
+        if pre:
+            self._subject(frag, pre, post)
+        else:
+            self._body(frag, post)
+        return frag
+
+    def _subject(self, frag: _Frag, pre: list[Item], post: list[Item]) -> None:
+        """A clause with a name before its verb: 'A wants the cup', 'the cup is given to A'."""
+        assert frag.verb is not None
+        if len(pre) != 1:
+            raise GroundingError(
+                f"cannot parse {frag.text!r}: too many words before {frag.verb_text!r}"
+            )
+        if VERB_CLASS[frag.verb] == "possess":
+            tid, kind = self._target(pre[0], frag, "human")
+            frag.target = _Target(kind, tid, "", pre[0].text)
+            self._body(frag, post, allow_target=False)
+            if frag.objects is None and not frag.it:
+                raise GroundingError(f"{frag.text!r}: {frag.verb_text} what?")
+            return
+        # passive: "<object> is handed to <person>", "<object> is placed on <surface>"
+        self._object(frag, pre[0])
+        self._body(frag, post, allow_object=False)
+        if frag.target is None:
+            raise GroundingError(f"{frag.text!r} says neither to whom nor where")
+
+    def _body(
+        self,
+        frag: _Frag,
+        units: list[Item],
+        *,
+        allow_target: bool = True,
+        allow_object: bool = True,
+    ) -> None:
+        """The part after the verb: [person] object | object (to|for|on) target | (to|on) target."""
+        nps: list[Item] = []
+        prep: Item | None = None
+        target: Item | None = None
+        for u in units:
+            if _is(u, "to", "for", "on"):
+                if prep is not None or not allow_target:
+                    raise GroundingError(f"cannot parse {frag.text!r}: unexpected {u.text!r}")
+                prep = u
+            elif (u.kind == "word" and u.lemma != "it") or u.kind == "punct":
+                raise GroundingError(f"cannot parse {frag.text!r}: unexpected {u.text!r}")
+            elif prep is not None:
+                if target is not None:
+                    raise GroundingError(f"cannot parse {frag.text!r}: unexpected {u.text!r}")
+                target = u
+            else:
+                nps.append(u)
+        if prep is not None and target is None:
+            raise GroundingError(f"{frag.text!r}: {prep.text} whom or where?")
+        if len(nps) > 2 or (len(nps) == 2 and (prep is not None or not allow_object)):
+            raise GroundingError(f"cannot parse {frag.text!r}: too many names in one clause")
+        if len(nps) == 2:  # "give A the bottle"
+            tid, kind = self._target(nps[0], frag, "")
+            frag.target = _Target(kind, tid, "", nps[0].text)
+            self._object(frag, nps[1])
+        elif len(nps) == 1:
+            np = nps[0]
+            if self._is_target(np, frag, has_prep=prep is not None):
+                if not allow_target or prep is not None:
+                    raise GroundingError(f"cannot parse {frag.text!r}: two recipients")
+                tid, kind = self._target(np, frag, "")
+                frag.target = _Target(kind, tid, "to", np.text)
+            else:
+                if not allow_object:
+                    raise GroundingError(f"cannot parse {frag.text!r}: two objects")
+                self._object(frag, np)
+        if prep is not None and target is not None:
+            tid, kind = self._target(target, frag, prep.lemma)
+            frag.target = _Target(kind, tid, prep.lemma, target.text)
+        if frag.objects is None and not frag.it and frag.target is None:
+            raise GroundingError(f"nothing to do in {frag.text!r}")
+
+    def _is_target(self, np: Item, frag: _Frag, *, has_prep: bool) -> bool:
+        if np.kind == "ent":
+            return {r.kind for r in np.refs} <= {"human", "surface"}
+        if np.kind != "unknown" or has_prep or frag.verb is not None:
+            return False
+        raise GroundingError(
+            f"no object or person called {np.text!r} in the scene; "
+            f"{self.lex.listing('object')}; {self.lex.listing('human')}"
+        )
+
+    def _object(self, frag: _Frag, np: Item) -> None:
+        if _is(np, "it"):
+            frag.it = True
+            return
+        if np.kind == "ent" and all(r.kind == "object" for r in np.refs):
+            if len(np.refs) > 1 and not all(r.plural for r in np.refs):
+                raise ambiguous(np, self.lex)
+            frag.objects = [r.id for r in np.refs]
+            return
+        if np.kind == "ent":
+            raise GroundingError(
+                f"{np.text!r} is a {_kind_word(np.refs[0].kind)}, not an object, in "
+                f"{frag.text!r}; {self.lex.listing('object')}"
+            )
+        raise GroundingError(
+            f"no object called {np.text!r} in the scene; {self.lex.listing('object')}"
+        )
+
+    def _target(self, np: Item, frag: _Frag, prep: str) -> tuple[str, Literal["human", "surface"]]:
+        """Resolve the recipient (person) or place (surface) after ``prep``."""
+        want: tuple[Literal["human", "surface"], ...] = (
+            ("surface",) if prep == "on" else ("human",) if prep == "for" else ("human", "surface")
+        )
+        if np.kind == "ent":
+            refs = [r for r in np.refs if r.kind in want]
+            if len({r.id for r in refs}) > 1:
+                raise ambiguous(np, self.lex)
+            if refs:
+                return refs[0].id, ("human" if refs[0].kind == "human" else "surface")
+            have = np.refs[0].kind
+            if have == "human":
+                raise GroundingError(
+                    f"cannot put anything {prep} {np.text!r}: a person is not a surface; "
+                    f"{self.lex.listing('surface')}"
+                )
+            what = " or ".join(_kind_word(k) for k in want)
+            raise GroundingError(
+                f"{np.text!r} is {_article(have)} {_kind_word(have)}, not a {what}, in "
+                f"{frag.text!r}; " + "; ".join(self.lex.listing(k) for k in want)
+            )
+        if _is(np, "it"):
+            raise GroundingError(f"'it' cannot be a recipient or place in {frag.text!r}")
+        cls = VERB_CLASS[frag.verb] if frag.verb else None
+        if want == ("surface",):
+            raise GroundingError(
+                f"no surface called {np.text!r} in the scene; {self.lex.listing('surface')}"
+            )
+        if want == ("human",) or prep == "" or cls in (None, "give", "possess"):
+            raise GroundingError(
+                f"no person called {np.text!r} in the scene; {self.lex.listing('human')}"
+            )
+        raise GroundingError(
+            f"no person or surface called {np.text!r} in the scene; "
+            f"{self.lex.listing('human')}; {self.lex.listing('surface')}"
+        )
+
+    # -- ellipsis and tasks ---------------------------------------------------------------------
+    def resolve(self, raw: _Raw) -> Node | None:
+        """Fill each fragment's missing verb, object and recipient, then build the task tree."""
+        frags = self.frags
+        for k, f in enumerate(frags):
+            if f.it:
+                if k == 0 or (frags[k - 1].objects is None and not frags[k - 1].it):
+                    raise GroundingError(f"'it' in {f.text!r} refers to nothing before it")
+                frags[k - 1].antecedent = True
+        for k, f in enumerate(frags):
+            if f.verb is None:
+                f.verb = next((g.verb for g in reversed(frags[:k]) if _acting(g)), None)
+            if f.it:
+                prev = frags[k - 1].objects
+                if prev is None or len(prev) != 1:
+                    raise GroundingError(f"'it' in {f.text!r} could mean several objects")
+                f.objects = list(prev)
+            elif f.objects is None:
+                f.objects = self._objects_from_right(k) or next(
+                    (list(g.objects) for g in reversed(frags[:k]) if g.objects and not g.pick),
+                    None,
+                )
+                if f.objects is None:
+                    raise GroundingError(
+                        f"{f.text!r} names no object; {self.lex.listing('object')}"
+                    )
+            if f.target is None:
+                f.target = self._target_from_right(k)
+            if f.target is None and f.antecedent:
+                f.pick = True
+                continue
+            if f.target is None and f.verb is not None and VERB_CLASS[f.verb] == "pick":
+                raise GroundingError(
+                    f"{f.text!r} is not a task by itself: say who gets it or where it goes"
+                )
+            if f.target is None:
+                f.target = next(
+                    (g.target for g in reversed(frags[:k]) if g.target is not None),
+                    None,
+                )
+            if f.target is None:
+                raise GroundingError(
+                    f"no recipient or place for the {', '.join(f.objects)} in {f.text!r}: say "
+                    f"'to <person>' or 'on <surface>'; {self.lex.listing('human')}; "
+                    f"{self.lex.listing('surface')}"
+                )
+            self._check_verb(f)
+        return self._build(raw)
+
+    def _objects_from_right(self, k: int) -> list[str] | None:
+        """Objects shared from the right: 'give A and B the cup'."""
+        frags = self.frags
+        for g in frags[k + 1 :]:
+            if g.segment != frags[k].segment or g.verb is not None:
+                return None
+            if g.objects is not None:
+                dative = g.target is not None and g.target.prep == ""
+                return list(g.objects) if dative else None
+        return None
+
+    def _target_from_right(self, k: int) -> _Target | None:
+        """A recipient or place shared from the right: 'hand the cup and the chips to B'."""
+        frags = self.frags
+        for g in frags[k + 1 :]:
+            if g.segment != frags[k].segment or g.verb is not None:
+                return None
+            if g.target is not None:
+                return g.target if g.target.prep != "" else None
+        return None
+
+    def _check_verb(self, f: _Frag) -> None:
+        assert f.target is not None and f.objects is not None
+        cls = VERB_CLASS[f.verb] if f.verb else None
+        t = f.target
+        verb = f.verb_text or f.verb or "give"
+        what = ", ".join(f.objects)
+        if t.kind == "surface" and cls in ("give", "possess"):
+            raise GroundingError(
+                f"cannot {verb} the {what} to {t.text!r}: {t.id} is a surface, not a person; "
+                f"{self.lex.listing('human')}"
+            )
+        if t.kind == "human" and cls == "put":
+            raise GroundingError(
+                f"cannot {verb} the {what} on {t.text!r}: {self.lex.display(t.id)} is a person, "
+                f"not a surface; say 'give'; {self.lex.listing('surface')}"
+            )
+
+    def _build(self, raw: _Raw) -> Node | None:
+        if isinstance(raw, _Frag):
+            if raw.pick:
+                return None
+            assert raw.target is not None and raw.objects is not None
+            kind: Literal["deliver", "place"] = "deliver" if raw.target.kind == "human" else "place"
+            leaves: list[Node] = [Task(kind, o, raw.target.id) for o in raw.objects]
+            return leaves[0] if len(leaves) == 1 else Group("and", tuple(leaves))
+        kids = [c for c in (self._build(ch) for ch in raw.children) if c is not None]
+        if not kids:
+            return None
+        return kids[0] if len(kids) == 1 else Group(raw.op, tuple(kids))
+
+
+# -- helpers -------------------------------------------------------------------------------------
+
+
+def _acting(f: _Frag) -> bool:
+    """Whether a fragment's verb can be carried over to a later verbless one."""
+    return f.verb is not None and VERB_CLASS[f.verb] != "pick"
+
+
+def _lemma(item: Item) -> str:
+    return item.lemma.removeprefix("verb:")
+
+
+def _kind_word(kind: str) -> str:
+    return {"human": "person", "object": "object", "surface": "surface", "robot": "robot"}[kind]
+
+
+def _article(kind: str) -> str:
+    return "an" if kind == "object" else "a"
+
+
+def _leading_connector(items: list[Item]) -> tuple[list[Item], str]:
+    """Strip 'Then', 'Also', 'And' … from the start of a sentence; return how it attaches."""
+    conn = "and"
+    k = 0
+    while k < len(items) and _is(items[k], "then", "also", "and", ",", "filler"):
+        if items[k].lemma == "then":
+            conn = "then"
+        k += 1
+    return items[k:], conn
+
+
+def _strip_separators(items: list[Item]) -> list[Item]:
+    k = 0
+    while k < len(items) and _is(items[k], ",", "and", "also"):
+        k += 1
+    return items[k:]
+
+
+def _main_clause_start(items: list[Item]) -> int | None:
+    """Where the main clause of 'after X, Y' starts: at 'then', or a comma before a clause."""
+    commas = [k for k, it in enumerate(items) if _is(it, ",")]
+    for k in range(1, len(items)):
+        if _is(items[k], "then"):
+            return k
+        if k in commas:
+            j = k + 1
+            while j < len(items) and _is(items[j], "filler", "subject", "aux", "first"):
+                j += 1
+            if j < len(items) and _is_verb(items[j]):
+                return k
+            if j + 1 < len(items) and items[j].kind == "ent" and _is_verb(items[j + 1]):
+                return k
+    return commas[0] if len(commas) == 1 else None
+
+
+def _merge_sep(a: str, b: str, items: list[Item]) -> str:
+    if a == ",":
+        return b
+    if b == "," or a == b:
+        return a
+    raise GroundingError(f"{a!r} followed by {b!r} in {_text(items)!r}")
+
+
+def _continues(seps: list[str], k: int, word: str) -> bool:
+    """Inside an either/both bracket, separator k continues it if it is the bracket's word, or a
+    comma followed by that word before any other."""
+    for s in seps[k:]:
+        if s == word:
+            return True
+        if s != ",":
+            return False
+    return False

@@ -1,0 +1,570 @@
+"""Instructions given during execution (paper GOAL events): merge them into the running spec.
+
+Every update keeps the names and texts of the running formulas it does not touch, so the
+executor carries their monitor state over as it is (:func:`carry_over`). The phrasings:
+
+* add (default; "also …", "and …", "additionally …", "in addition, …", "plus …"): the new task
+  runs alongside: new root ``F <old root> & F <new>``.
+* then ("then …", "after that …", "afterwards …", "next …", "finally …", "later …",
+  "when/once you are done, …"): after everything running: ``F (<old root> & F <new>)``.
+* first ("first …", "… first" with a new task): before everything running:
+  ``F (<new> & F <old root>)``.
+* priority ("do the chips first", "the chips first", "prioritise the chips", "give B the chips
+  first" for a running task): the matching running tasks move to the front.
+* cancel ("cancel …", "forget (about) …", "skip …", "remove …", "abort …", "scrap …", "drop …",
+  "never mind …", "don't …", "no longer …"): the matching running tasks are removed and the tree
+  is pruned (a group left empty goes too).
+* instead ("… instead of X", "instead of X, …", "… instead"): the new task takes the place of the
+  matching running task (without "of X": the one running task with the same object, else the
+  same recipient or place).
+
+Tasks are matched by the scene entities named ("the chips", "the delivery to B", "B's chips"):
+a task matches when it mentions all of them. Completed tasks cannot be cancelled, replaced or
+moved.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from hltl.errors import GroundingError
+from hltl.grounding.base import Grounder, Grounding, UpdateInfo
+from hltl.grounding.lexicon import Lexicon, lex
+from hltl.grounding.tree import (
+    Names,
+    Op,
+    Task,
+    check_deliveries,
+    composite,
+    decode,
+    recognise_group,
+    recognise_task,
+)
+
+if TYPE_CHECKING:
+    from hltl.spec.automata import AutomatonCache
+    from hltl.spec.hierarchy import HSpec
+    from hltl.spec.monitor import MonitorState
+    from hltl.world.scene import Scene
+
+_THEN = re.compile(
+    r"^\s*(?:and\s+)?(?:then|after\s+that|afterwards?|next|finally|later|"
+    r"(?:when|once|after)\s+(?:you\s*(?:'re|are|have|'ve)?\s*)?(?:done|finished|finish)"
+    r"(?:\s+with\s+(?:that|this))?)\b[\s,]*",
+    re.IGNORECASE,
+)
+_ADD = re.compile(
+    r"^\s*(?:and\s+)?(?:also|additionally|in\s+addition|plus|and)\b[\s,]*", re.IGNORECASE
+)
+_CANCEL = re.compile(
+    r"^\s*(?:please\s+)?(?:cancel|forget(?:\s+about)?|skip|remove|abort|scrap|drop|"
+    r"never\s*mind|no\s+longer|don'?t|do\s+not)\b[\s,]*",
+    re.IGNORECASE,
+)
+_INSTEAD_OF = re.compile(r"\binstead\s+of\s+(?P<x>[^,.;]+)", re.IGNORECASE)
+_INSTEAD = re.compile(r"\binstead\b", re.IGNORECASE)
+_FIRST = re.compile(
+    r"\b(?:first|firstly|prioriti[sz]e|priority|urgent(?:ly)?|asap)\b", re.IGNORECASE
+)
+_SEQ_WORDS = re.compile(r"\b(?:then|after|before|once|next|finally|afterwards)\b", re.IGNORECASE)
+_PRIORITY_FILLER = re.compile(
+    r"\b(?:please|do|first|firstly|prioriti[sz]e|priority|urgent(?:ly)?|asap|with|as\s+a|"
+    r"the\s+)\b",
+    re.IGNORECASE,
+)
+_ROOT_SUFFIX = re.compile(r"^(?P<base>.*?)_(?P<n>\d+)$")
+
+
+@dataclass(frozen=True, slots=True)
+class UpdateCommand:
+    """What an update instruction asks for: its kind, the new task text, the running tasks named."""
+
+    kind: str  # add, then, first, priority, cancel, instead
+    text: str = ""  # the new task to ground (add, then, first, instead)
+    targets: str = ""  # words naming running tasks (cancel, priority, instead of …)
+
+
+def classify(instruction: str, lexicon: Lexicon) -> UpdateCommand:
+    """Read which kind of update ``instruction`` is (see the module docstring)."""
+    text = instruction.strip()
+    m = _CANCEL.match(text)
+    if m:
+        rest = text[m.end() :]
+        # "don't give B the chips", "cancel giving B the chips": the task is the reference
+        return UpdateCommand("cancel", targets=rest)
+    m = _INSTEAD_OF.search(text)
+    if m:
+        rest = (text[: m.start()] + text[m.end() :]).strip(" ,.;")
+        return UpdateCommand("instead", text=rest, targets=m.group("x").strip())
+    if _INSTEAD.search(text):
+        return UpdateCommand("instead", text=_INSTEAD.sub("", text).strip(" ,.;"))
+    m = _THEN.match(text)
+    if m:
+        return UpdateCommand("then", text=text[m.end() :])
+    if _FIRST.search(text) and not _SEQ_WORDS.search(text):
+        rest = _FIRST.sub("", text).strip(" ,.;")
+        items = lex(rest, lexicon)
+        has_verb = any(i.kind == "word" and i.lemma.startswith("verb:") for i in items)
+        if not has_verb:
+            return UpdateCommand("priority", targets=rest)
+        return UpdateCommand("first", text=rest)
+    m = _ADD.match(text)
+    if m:
+        return UpdateCommand("add", text=text[m.end() :])
+    return UpdateCommand("add", text=text)
+
+
+# -- the running tree ---------------------------------------------------------------------------
+
+
+@dataclass(slots=True)
+class _Tree:
+    """The running spec as editable names: formula texts, children, parents."""
+
+    root: str
+    texts: dict[str, str]
+    children: dict[str, list[str]]
+    parent: dict[str, str]
+
+    @classmethod
+    def of(cls, spec: HSpec) -> _Tree:
+        from hltl.spec.printer import to_string
+
+        return cls(
+            root=spec.root,
+            texts={n: to_string(f) for n, f in spec.formulas},
+            children={n: list(spec.children[n]) for n in spec.names},
+            parent=dict(spec.parent),
+        )
+
+
+def _task_of(spec: HSpec, name: str) -> Task | None:
+    return recognise_task(spec.formula(name)) if spec.is_leaf(name) else None
+
+
+def _matching(spec: HSpec, targets: str, lexicon: Lexicon, completed: Collection[str]) -> list[str]:
+    """Running leaves that mention every entity named in each part of ``targets``."""
+    parts = [p for p in re.split(r",|\band\b|\bor\b", targets, flags=re.IGNORECASE) if p.strip()]
+    if not parts:
+        raise GroundingError("say which task: e.g. 'cancel the chips'")
+    leaves = [(n, t) for n in spec.leaves if (t := _task_of(spec, n)) is not None]
+    described = "; ".join(f"{n}: {t.atom}" for n, t in leaves) or "none"
+    found: list[str] = []
+    for part in parts:
+        ids = _entity_ids(part, lexicon)
+        if not ids:
+            continue
+        hits = [n for n, t in leaves if ids <= {t.obj, t.target}]
+        if not hits:
+            raise GroundingError(
+                f"no running task mentions {part.strip()!r}; running tasks: {described}"
+            )
+        done = [n for n in hits if n in completed]
+        if done:
+            raise GroundingError(
+                f"{part.strip()!r} is already done ({', '.join(done)}); it cannot be changed"
+            )
+        found += [n for n in hits if n not in found]
+    if not found:
+        raise GroundingError(
+            f"{targets.strip()!r} names no object, person or surface; running tasks: {described}"
+        )
+    return found
+
+
+def _entity_ids(text: str, lexicon: Lexicon) -> set[str]:
+    ids: set[str] = set()
+    for it in lex(text, lexicon):
+        if it.kind == "unknown":
+            raise GroundingError(
+                f"no object, person or surface called {it.text!r} in the scene; "
+                f"{lexicon.listing('object')}; {lexicon.listing('human')}; "
+                f"{lexicon.listing('surface')}"
+            )
+        if it.kind == "ent":
+            singular = {r.id for r in it.refs if not r.plural}
+            if len(singular) > 1:
+                raise GroundingError(
+                    f"{it.text!r} is ambiguous: it could be {' or '.join(sorted(singular))}"
+                )
+            ids |= singular or {r.id for r in it.refs}
+    return ids
+
+
+def _remove(tree: _Tree, spec: HSpec, name: str) -> list[str]:
+    """Remove ``name``; prune parents left without children; return the names removed."""
+    removed = [name]
+    for gone in _subtree(tree, name):
+        if gone != name:
+            removed.append(gone)
+        tree.texts.pop(gone, None)
+        tree.children.pop(gone, None)
+    parent = tree.parent.pop(name, None)
+    if parent is None:
+        raise GroundingError("that would leave nothing to do; the running task would be empty")
+    kids = tree.children[parent]
+    kids.remove(name)
+    if not kids:
+        return removed + _remove(tree, spec, parent)
+    op = _op_of(spec, parent)
+    tree.texts[parent] = composite(op, kids)
+    return removed
+
+
+def _subtree(tree: _Tree, name: str) -> list[str]:
+    out = [name]
+    for c in tree.children.get(name, []):
+        out += _subtree(tree, c)
+    return out
+
+
+def _op_of(spec: HSpec, name: str) -> Op:
+    found = recognise_group(spec.formula(name))
+    if found is None:
+        from hltl.spec.printer import to_string
+
+        raise GroundingError(
+            f"cannot edit {name}: '{to_string(spec.formula(name))}' is not a conjunction, "
+            "alternative or sequence of its children"
+        )
+    return found[0]
+
+
+# -- merging ------------------------------------------------------------------------------------
+
+
+def _renamed(new: HSpec, names: Names) -> tuple[str, dict[str, str]]:
+    """The new spec's formulas under fresh names; a root that only wraps one child is dropped."""
+    from hltl.spec.automata import rename_atoms
+    from hltl.spec.printer import to_string
+    from hltl.spec.syntax import Atom
+
+    top = new.root
+    kids = new.children[top]
+    found = recognise_group(new.formula(top))
+    if len(kids) == 1 and found is not None and found[1] == list(kids):
+        top = kids[0]
+    order = [n for n in new.names if n == top or _under(new, n, top)]
+    mapping = {n: names.leaf() if new.is_leaf(n) else names.group() for n in order}
+    atoms = {Atom(a): Atom(b) for a, b in mapping.items()}
+    texts = {mapping[n]: to_string(rename_atoms(new.formula(n), atoms)) for n in order}
+    return mapping[top], texts
+
+
+def _under(spec: HSpec, name: str, top: str) -> bool:
+    while name in spec.parent:
+        name = spec.parent[name]
+        if name == top:
+            return True
+    return False
+
+
+def _fresh_root(old: str, taken: Collection[str]) -> str:
+    m = _ROOT_SUFFIX.match(old)
+    base, n = (m.group("base"), int(m.group("n"))) if m else (old, 0)
+    while True:
+        n += 1
+        name = f"{base}_{n}"
+        if name not in taken:
+            return name
+
+
+def merge(
+    running: HSpec,
+    new: HSpec,
+    kind: str = "add",
+) -> tuple[HSpec, UpdateInfo]:
+    """Put ``new`` beside (``add``), after (``then``) or before (``first``) the running root.
+
+    The running formulas keep their names and texts; the new ones get fresh names.
+    """
+    tree = _Tree.of(running)
+    names = Names(set(tree.texts))
+    sub_root, sub = _renamed(new, names)
+    root = _fresh_root(running.root, set(tree.texts) | set(sub))
+    old = running.root
+    if kind == "add":
+        text = composite("and", [old, sub_root])
+    elif kind == "then":
+        text = composite("seq", [old, sub_root])
+    elif kind == "first":
+        text = composite("seq", [sub_root, old])
+    else:
+        raise ValueError(f"unknown merge kind {kind!r}")
+    formulas = {root: text, **tree.texts, **sub}
+    spec = _build(root, formulas)
+    return spec, _info(kind, running, spec, ())
+
+
+def _build(root: str, formulas: dict[str, str]) -> HSpec:
+    from hltl.errors import SpecValidationError
+    from hltl.spec.hierarchy import spec_from_dict
+
+    try:
+        return spec_from_dict({"root": root, "formulas": formulas}, source="<update>")
+    except SpecValidationError as exc:  # pragma: no cover - the edits keep the conventions
+        raise GroundingError(f"the updated spec is not valid: {exc}") from None
+
+
+def _info(kind: str, running: HSpec, spec: HSpec, completed: Collection[str]) -> UpdateInfo:
+    from hltl.spec.printer import to_string
+
+    old = {n: to_string(f) for n, f in running.formulas}
+    new = {n: to_string(f) for n, f in spec.formulas}
+    kept = tuple(n for n in spec.names if old.get(n) == new[n])
+    return UpdateInfo(
+        kind=kind,
+        kept=kept,
+        changed=tuple(n for n in spec.names if n in old and old[n] != new[n]),
+        added=tuple(n for n in spec.names if n not in old),
+        removed=tuple(n for n in running.names if n not in new),
+        completed_kept=tuple(n for n in kept if n in completed),
+    )
+
+
+def apply_update(
+    instruction: str,
+    scene: Scene,
+    running: HSpec,
+    grounder: Grounder,
+    completed: Collection[str] = (),
+) -> Grounding:
+    """Ground an update instruction and merge it into ``running``.
+
+    Args:
+        instruction: the update (see the module docstring for the phrasings).
+        scene: the scene.
+        running: the spec being executed.
+        grounder: grounds the new task in the instruction on its own.
+        completed: names of the running formulas whose monitors have fired
+            (``HierarchyMonitor.done``); completed tasks cannot be cancelled, replaced or moved.
+
+    Raises:
+        GroundingError: the update cannot be applied; the message says why.
+    """
+    lexicon = Lexicon(scene)
+    cmd = classify(instruction, lexicon)
+    done = frozenset(completed)
+    if cmd.kind in ("add", "then", "first"):
+        if not cmd.text.strip():
+            raise GroundingError(f"no task in {instruction.strip()!r}")
+        g = grounder.ground(cmd.text, scene)
+        if cmd.kind == "first":
+            same = _same_tasks(running, g.spec, done)
+            if same:  # "give B the chips first" for a running task: move it to the front
+                return _priority(running, same, done)
+        spec, _ = merge(running, g.spec, cmd.kind)
+        _check_spec_deliveries(spec, scene)
+        return Grounding(spec, g.entities, g.tokens, _info(cmd.kind, running, spec, done), g.rounds)
+    if cmd.kind == "cancel":
+        return _cancel(cmd, scene, running, lexicon, done)
+    if cmd.kind == "priority":
+        return _priority(running, _matching(running, cmd.targets, lexicon, done), done)
+    return _instead(cmd, scene, running, grounder, lexicon, done)
+
+
+def ground_update(instruction: str, scene: Scene, running: HSpec, grounder: Grounder) -> Grounding:
+    """:func:`apply_update` with nothing completed yet (what ``Grounder.ground`` calls)."""
+    return apply_update(instruction, scene, running, grounder)
+
+
+def _same_tasks(running: HSpec, new: HSpec, done: frozenset[str]) -> list[str]:
+    """Running open leaves doing exactly the new spec's tasks, if all of them are running."""
+    old = {t: n for n in running.leaves if n not in done and (t := _task_of(running, n))}
+    new_tasks = [_task_of(new, n) for n in new.leaves]
+    if new_tasks and all(t is not None and t in old for t in new_tasks):
+        return [old[t] for t in new_tasks if t is not None]
+    return []
+
+
+def _check_spec_deliveries(spec: HSpec, scene: Scene) -> None:
+    node = decode(spec)
+    if node is not None:
+        check_deliveries(node, {h.id: h.name for h in scene.humans})
+
+
+def _cancel(
+    cmd: UpdateCommand, scene: Scene, running: HSpec, lexicon: Lexicon, done: frozenset[str]
+) -> Grounding:
+    hits = _matching(running, cmd.targets, lexicon, done)
+    tree = _Tree.of(running)
+    for name in hits:
+        if name in tree.texts:
+            _remove(tree, running, name)
+    spec = _build(tree.root, tree.texts)
+    return Grounding(spec, _ids_of(running, hits), update=_info("cancel", running, spec, done))
+
+
+def _priority(running: HSpec, hits: Sequence[str], done: frozenset[str]) -> Grounding:
+    tree = _Tree.of(running)
+    for name in hits:
+        _check_movable(running, name, done)
+    try:
+        for name in hits:
+            _remove(tree, running, name)
+            tree.texts[name] = running_text(running, name)
+    except GroundingError:
+        raise GroundingError(
+            f"{', '.join(hits)} {'is' if len(hits) == 1 else 'are'} all that is left to do; "
+            "there is nothing to put after it"
+        ) from None
+    names = Names(set(tree.texts))
+    first = hits[0] if len(hits) == 1 else names.group()
+    if len(hits) > 1:
+        tree.texts[first] = composite("and", list(hits))
+    root = _fresh_root(running.root, set(tree.texts))
+    formulas = {root: composite("seq", [first, running.root]), **tree.texts}
+    spec = _build(root, formulas)
+    return Grounding(spec, _ids_of(running, hits), update=_info("priority", running, spec, done))
+
+
+def running_text(spec: HSpec, name: str) -> str:
+    from hltl.spec.printer import to_string
+
+    return to_string(spec.formula(name))
+
+
+def _check_movable(running: HSpec, name: str, done: frozenset[str]) -> None:
+    """A task can go first only if nothing running must come before it or excludes it."""
+    child = name
+    while child in running.parent:
+        parent = running.parent[child]
+        found = recognise_group(running.formula(parent))
+        if found is None:
+            _op_of(running, parent)  # raises with the formula
+            return
+        op, kids = found
+        if op == "or":
+            raise GroundingError(
+                f"{name} is one of several alternatives ({parent}); making it first would make "
+                "it required: cancel the others instead"
+            )
+        if op == "seq":
+            before = [k for k in kids[: kids.index(child)] if k not in done]
+            if before:
+                raise GroundingError(
+                    f"{name} must come after {', '.join(before)} in the running task; cancel and "
+                    "give it again to change the order"
+                )
+        child = parent
+
+
+def _instead(
+    cmd: UpdateCommand,
+    scene: Scene,
+    running: HSpec,
+    grounder: Grounder,
+    lexicon: Lexicon,
+    done: frozenset[str],
+) -> Grounding:
+    if not cmd.text.strip():
+        raise GroundingError("say what to do instead, e.g. 'give B the cup instead of the chips'")
+    g = grounder.ground(cmd.text, scene)
+    if cmd.targets:
+        hits = _matching(running, cmd.targets, lexicon, done)
+    else:
+        hits = _replaced(running, g.spec, done)
+    tree = _Tree.of(running)
+    names = Names(set(tree.texts))
+    sub_root, sub = _renamed(g.spec, names)
+    first = hits[0]
+    parent = running.parent.get(first)
+    if parent is None:  # pragma: no cover - a leaf is never the root in a grounded spec
+        raise GroundingError("cannot replace the whole task; give a new instruction instead")
+    op = _op_of(running, parent)
+    tree.children[parent] = [sub_root if k == first else k for k in tree.children[parent]]
+    tree.texts[parent] = composite(op, tree.children[parent])
+    tree.texts.pop(first)
+    tree.children.pop(first, None)
+    tree.parent[sub_root] = parent
+    tree.parent.pop(first, None)
+    tree.texts.update(sub)
+    for name in hits[1:]:
+        _remove(tree, running, name)
+    spec = _build(tree.root, tree.texts)
+    return Grounding(spec, g.entities, g.tokens, _info("instead", running, spec, done), g.rounds)
+
+
+def _replaced(running: HSpec, new: HSpec, done: frozenset[str]) -> list[str]:
+    """The running task an 'X instead' replaces: same object, else same recipient or place."""
+    new_tasks = [t for n in new.leaves if (t := _task_of(new, n)) is not None]
+    old = [(n, t) for n in running.leaves if (t := _task_of(running, n)) is not None]
+    open_ = [(n, t) for n, t in old if n not in done]
+    for key in ("obj", "target"):
+        hits = [n for n, t in open_ if any(getattr(t, key) == getattr(u, key) for u in new_tasks)]
+        if len(hits) == 1:
+            return hits
+        if len(hits) > 1:
+            raise GroundingError(
+                f"'instead' could replace {', '.join(hits)}: say 'instead of …' to choose"
+            )
+    raise GroundingError(
+        "no running task shares an object, person or surface with the new one: say "
+        "'instead of …' to choose what it replaces"
+    )
+
+
+def _ids_of(spec: HSpec, names: Sequence[str]) -> tuple[str, ...]:
+    out: dict[str, None] = {}
+    for n in names:
+        t = _task_of(spec, n)
+        if t is not None:
+            out.setdefault(t.obj)
+            out.setdefault(t.target)
+    return tuple(out)
+
+
+# -- monitor state ------------------------------------------------------------------------------
+
+
+def carry_over(
+    old_spec: HSpec,
+    old_state: MonitorState,
+    new_spec: HSpec,
+    cache: AutomatonCache | None = None,
+) -> MonitorState:
+    """The monitor state of ``new_spec`` that continues ``old_state`` of ``old_spec``.
+
+    A formula with the same name and text keeps its state; if one of its children became done
+    through the update (a group whose open child was cancelled), it steps once on those children.
+    A new or edited formula starts from its initial state and replays its done children one step
+    each, in the order they appear in its text (the order of the grounding conventions: a
+    sequence lists its children in the order they must complete). Done formulas stay done.
+    """
+    from hltl.spec.monitor import DONE, HierarchyMonitor
+    from hltl.spec.syntax import Atom
+
+    old_m = HierarchyMonitor(old_spec, cache)
+    new_m = HierarchyMonitor(new_spec, cache)
+    old_texts = dict(old_spec.formulas)
+    done_old = old_m.done(old_state)
+    done_new: set[str] = set()
+    states: dict[str, int] = {}
+    for name in reversed(new_m.nodes):  # breadth-first reversed: children before parents
+        dfa = new_m.dfas[name]
+        kids = new_spec.children[name]
+        same = old_texts.get(name) == new_spec.formula(name)
+        if name in done_old:
+            states[name] = DONE
+            done_new.add(name)
+            continue
+        if same:
+            s = old_m.state_of(old_state, name)
+            assert s is not None
+            newly = [k for k in kids if k in done_new and k not in done_old]
+            steps: list[list[str]] = [newly] if newly else []
+        else:
+            s = dfa.initial
+            steps = [[k] for k in kids if k in done_new]
+        for symbol in steps:
+            s = dfa.step(s, [Atom(k) for k in symbol])
+            if dfa.is_accepting(s):
+                s = DONE
+                break
+        states[name] = s
+        if s == DONE:
+            done_new.add(name)
+    return tuple(states[n] for n in new_m.nodes)
