@@ -131,7 +131,7 @@ class _Frag:
     segment: int
     text: str
     verb: str | None = None  # lemma
-    verb_text: str = ""
+    verb_text: str = ""  # empty when the verb is carried over from an earlier fragment
     objects: list[str] | None = None
     it: bool = False
     target: _Target | None = None
@@ -567,6 +567,13 @@ class _Parser:
         t = f.target
         verb = f.verb_text or f.verb or "give"
         what = ", ".join(f.objects)
+        if t.kind == "surface" and t.prep == "":
+            raise GroundingError(
+                f"cannot {verb} {t.text!r} the {what}: {t.id} is a surface, not a person; "
+                f"{self.lex.listing('human')}"
+            )
+        if not f.verb_text and t.prep in ("to", "for", "on"):
+            return  # a carried-over verb does not overrule an explicit 'on the shelf'
         if t.kind == "surface" and cls in ("give", "possess"):
             raise GroundingError(
                 f"cannot {verb} the {what} to {t.text!r}: {t.id} is a surface, not a person; "

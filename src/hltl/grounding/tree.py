@@ -180,10 +180,13 @@ def encode(node: Node, names: Names | None = None, root: str = ROOT) -> dict[str
         if isinstance(n, Task):
             formulas[name] = n.formula
             return
-        child_names = [names.leaf() if isinstance(c, Task) else names.group() for c in n.children]
-        formulas[name] = composite(n.op, child_names)
-        for c, cname in zip(n.children, child_names, strict=True):
+        formulas[name] = ""  # parent before children; names are handed out depth-first
+        child_names = []
+        for c in n.children:
+            cname = names.leaf() if isinstance(c, Task) else names.group()
+            child_names.append(cname)
             emit(c, cname)
+        formulas[name] = composite(n.op, child_names)
 
     if isinstance(node, Task):
         leaf = names.leaf()

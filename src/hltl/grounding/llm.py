@@ -1,0 +1,317 @@
+"""LLM grounder for any OpenAI-compatible endpoint (OpenAI, Ollama, vLLM, llama.cpp server).
+
+Configuration, lowest to highest precedence: defaults; a TOML file (``path`` given, else
+``$HLTL_LLM_CONFIG``, else ``~/.config/hltl/llm.toml`` if it exists) with keys ``base_url``,
+``model``, ``api_key``, ``api_key_env``, ``max_repairs``, ``temperature``, ``timeout``,
+``structured``; then the environment: ``HLTL_LLM_BASE_URL``, ``HLTL_LLM_MODEL``,
+``HLTL_LLM_API_KEY``.
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from hltl.errors import BackendUnavailableError, GroundingError
+from hltl.grounding.base import Grounding, TokenUsage
+from hltl.grounding.prompt import build_messages, repair_message, response_format
+from hltl.grounding.validate import AnswerError, check_answer
+
+if TYPE_CHECKING:
+    from hltl.spec.hierarchy import HSpec
+    from hltl.world.scene import Scene
+
+DEFAULT_CONFIG_PATH = Path("~/.config/hltl/llm.toml")
+ENV_PREFIX = "HLTL_LLM_"
+INSTALL_HINT = "pip install 'hltl[llm]'"
+
+
+@dataclass(frozen=True, slots=True)
+class LLMConfig:
+    """Where and how to query the model.
+
+    Attributes:
+        base_url: the endpoint (``None``: OpenAI's), e.g. ``http://localhost:11434/v1``.
+        model: the model name the endpoint knows.
+        api_key: the key; local servers accept any (``None``: ``$OPENAI_API_KEY`` or a dummy
+            when ``base_url`` is set).
+        max_repairs: rounds that send a rejected answer's error back (0: no repair).
+        temperature: sampling temperature (0 for repeatable answers).
+        timeout: seconds per request.
+        structured: try JSON-schema structured output first (falls back to JSON mode, then none).
+        max_tokens: completion token limit per query.
+    """
+
+    base_url: str | None = None
+    model: str = "gpt-4o-mini"
+    api_key: str | None = field(default=None, repr=False)
+    max_repairs: int = 2
+    temperature: float = 0.0
+    timeout: float = 60.0
+    structured: bool = True
+    max_tokens: int = 600
+
+
+def load_config(path: str | Path | None = None, env: Mapping[str, str] | None = None) -> LLMConfig:
+    """The configuration from a TOML file and the environment (see the module docstring).
+
+    Raises:
+        GroundingError: the file is unreadable, not TOML, or has unknown keys or bad values.
+    """
+    env = os.environ if env is None else env
+    values: dict[str, Any] = {}
+    file = Path(path) if path is not None else None
+    if file is None and env.get("HLTL_LLM_CONFIG"):
+        file = Path(env["HLTL_LLM_CONFIG"])
+    if file is None and DEFAULT_CONFIG_PATH.expanduser().is_file():
+        file = DEFAULT_CONFIG_PATH.expanduser()
+    if file is not None:
+        values.update(_read_toml(file.expanduser(), env))
+    for key in ("base_url", "model", "api_key"):
+        value = env.get(ENV_PREFIX + key.upper())
+        if value:
+            values[key] = value
+    config = replace(LLMConfig(), **values)
+    if config.max_repairs < 0:
+        raise GroundingError(f"max_repairs must be >= 0, got {config.max_repairs}")
+    return config
+
+
+def _read_toml(file: Path, env: Mapping[str, str]) -> dict[str, Any]:
+    try:
+        data = tomllib.loads(file.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise GroundingError(f"{file}: cannot read LLM config: {exc.strerror or exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise GroundingError(f"{file}: not valid TOML: {exc}") from None
+    data = dict(data.get("llm", data))  # a [llm] table or top-level keys
+    key_env = data.pop("api_key_env", None)
+    if key_env is not None:
+        if not isinstance(key_env, str):
+            raise GroundingError(f"{file}: api_key_env must be a variable name, got {key_env!r}")
+        if env.get(key_env):
+            data.setdefault("api_key", env[key_env])
+    types = {f.name: f.type for f in fields(LLMConfig)}
+    for key, value in data.items():
+        if key not in types:
+            raise GroundingError(
+                f"{file}: unknown key {key!r}; expected one of {', '.join([*types, 'api_key_env'])}"
+            )
+        want = str(types[key])
+        ok = (
+            (want.startswith("str") and isinstance(value, str))
+            or (want == "int" and isinstance(value, int) and not isinstance(value, bool))
+            or (want == "float" and isinstance(value, int | float) and not isinstance(value, bool))
+            or (want == "bool" and isinstance(value, bool))
+        )
+        if not ok:
+            raise GroundingError(f"{file}: {key} must be {want.split(' |')[0]}, got {value!r}")
+    return data
+
+
+class LLMGroundingError(GroundingError):
+    """Every answer was rejected; ``history`` holds each (answer, error) and ``tokens`` the cost."""
+
+    def __init__(self, message: str, history: list[tuple[str, str]], tokens: TokenUsage) -> None:
+        super().__init__(message)
+        self.history = history
+        self.tokens = tokens
+
+
+# A chat function: (messages, output mode) -> an OpenAI-shaped chat completion. Modes, best
+# first: "json_schema" (structured output with the answer schema), "json_object" (JSON mode),
+# "text" (plain; the answer is still parsed as JSON).
+ChatFn = Callable[[list[dict[str, str]], str], Any]
+MODES = ("json_schema", "json_object", "text")
+
+
+def ground_with_chat(
+    chat: ChatFn,
+    instruction: str,
+    scene: Scene,
+    *,
+    max_repairs: int,
+    modes: list[str],
+) -> Grounding:
+    """The query-validate-repair loop shared by the LLM and local grounders.
+
+    ``modes`` are the output modes to try, best first; a mode the endpoint rejects (the chat
+    function raises ``UnsupportedFormat``) is removed from the list, which the caller may keep
+    for its next queries, and the same query is sent in the next mode.
+    """
+    if not instruction.strip():
+        raise GroundingError("the instruction is empty")
+    messages = build_messages(instruction, scene)
+    tokens = TokenUsage()
+    history: list[tuple[str, str]] = []
+    rounds = 0
+    for _ in range(max_repairs + 1):
+        response = _query(chat, messages, modes)
+        rounds += 1
+        tokens = tokens + usage_of(response)
+        text = content_of(response)
+        try:
+            spec, ids = check_answer(text, scene)
+        except AnswerError as exc:
+            history.append((text or "", str(exc)))
+            messages = [
+                *messages,
+                {"role": "assistant", "content": text or ""},
+                {"role": "user", "content": repair_message(str(exc))},
+            ]
+            continue
+        except GroundingError as exc:  # the model declined: final
+            raise LLMGroundingError(str(exc), [*history, (text or "", str(exc))], tokens) from None
+        return Grounding(spec=spec, entities=ids, tokens=tokens, rounds=rounds)
+    last = history[-1][1] if history else "no answer"
+    raise LLMGroundingError(
+        f"the model's answer was rejected {len(history)} time(s) for {instruction.strip()!r}; "
+        f"last error: {last}",
+        history,
+        tokens,
+    )
+
+
+class UnsupportedFormat(Exception):
+    """Raised by a chat function when the endpoint rejects the requested response format."""
+
+
+def _query(chat: ChatFn, messages: list[dict[str, str]], modes: list[str]) -> Any:
+    while True:
+        if not modes:
+            raise GroundingError("the endpoint rejected every response format")
+        try:
+            return chat(messages, modes[0])
+        except UnsupportedFormat:
+            modes.pop(0)
+
+
+def _get(obj: Any, name: str) -> Any:
+    if isinstance(obj, Mapping):
+        return obj.get(name)
+    return getattr(obj, name, None)
+
+
+def content_of(response: Any) -> str | None:
+    """The first choice's message text of an OpenAI-shaped response (object or dict)."""
+    choices = _get(response, "choices") or []
+    if not choices:
+        return None
+    message = _get(choices[0], "message")
+    content = _get(message, "content") if message is not None else None
+    return content if isinstance(content, str) else None
+
+
+def usage_of(response: Any) -> TokenUsage:
+    """Prompt and completion tokens from a response's ``usage`` (0 when absent)."""
+    usage = _get(response, "usage")
+    if usage is None:
+        return TokenUsage()
+    return TokenUsage(
+        int(_get(usage, "prompt_tokens") or 0), int(_get(usage, "completion_tokens") or 0)
+    )
+
+
+class LLMGrounder:
+    """Grounds instructions with a chat model behind an OpenAI-compatible API.
+
+    Args:
+        config: endpoint and model (default: :func:`load_config`).
+        client: anything with ``client.chat.completions.create(**kwargs)`` returning an
+            OpenAI-shaped chat completion; tests inject a fake. Default: an ``openai.OpenAI``.
+        config_path: a TOML file for :func:`load_config` when ``config`` is not given.
+    """
+
+    name = "llm"
+
+    def __init__(
+        self,
+        config: LLMConfig | None = None,
+        client: Any = None,
+        config_path: str | Path | None = None,
+    ) -> None:
+        self.config = config if config is not None else load_config(config_path)
+        self._client = client
+        # output modes still worth trying with this endpoint, best first
+        self.modes: list[str] = list(MODES if self.config.structured else MODES[1:])
+
+    @property
+    def client(self) -> Any:
+        if self._client is None:
+            self._client = make_openai_client(self.config)
+        return self._client
+
+    def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
+        """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
+        if running is not None:
+            from hltl.grounding.update import ground_update
+
+            return ground_update(instruction, scene, running, self)
+        client = self.client
+        formats: dict[str, dict[str, Any]] = {
+            "json_schema": response_format(scene),  # names this scene's ids
+            "json_object": {"type": "json_object"},
+        }
+
+        def chat(messages: list[dict[str, str]], mode: str) -> Any:
+            kwargs: dict[str, Any] = {
+                "model": self.config.model,
+                "messages": messages,
+                "temperature": self.config.temperature,
+                "max_tokens": self.config.max_tokens,
+            }
+            if mode in formats:
+                kwargs["response_format"] = formats[mode]
+            try:
+                return client.chat.completions.create(**kwargs)
+            except Exception as exc:
+                if mode in formats and _rejects_format(exc):
+                    raise UnsupportedFormat(str(exc)) from exc
+                raise GroundingError(
+                    f"the LLM endpoint {self.config.base_url or 'api.openai.com'} failed "
+                    f"({type(exc).__name__}): {exc}"
+                ) from exc
+
+        return ground_with_chat(
+            chat, instruction, scene, max_repairs=self.config.max_repairs, modes=self.modes
+        )
+
+
+def _rejects_format(exc: Exception) -> bool:
+    """Whether an API error says the request (its response_format) is not supported."""
+    status = getattr(exc, "status_code", None)
+    return status in (400, 404, 415, 422) or type(exc).__name__ in (
+        "BadRequestError",
+        "UnprocessableEntityError",
+        "NotImplementedError",
+    )
+
+
+def make_openai_client(config: LLMConfig) -> Any:
+    """An ``openai.OpenAI`` client for ``config``.
+
+    Raises:
+        BackendUnavailableError: the ``openai`` package is missing.
+        GroundingError: no API key for OpenAI's own endpoint.
+    """
+    try:
+        import openai
+    except ImportError:
+        raise BackendUnavailableError(
+            f"the llm grounder needs the openai package: {INSTALL_HINT}"
+        ) from None
+    key = config.api_key or os.environ.get("OPENAI_API_KEY")
+    if not key:
+        if config.base_url is None:
+            raise GroundingError(
+                "no API key for OpenAI: set HLTL_LLM_API_KEY or OPENAI_API_KEY, or point "
+                "HLTL_LLM_BASE_URL at a local server"
+            )
+        key = "not-needed"  # Ollama, vLLM and llama.cpp servers accept any key
+    return openai.OpenAI(
+        base_url=config.base_url, api_key=key, timeout=config.timeout, max_retries=1
+    )

