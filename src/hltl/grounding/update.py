@@ -154,10 +154,10 @@ def _matching(spec: HSpec, targets: str, lexicon: Lexicon, completed: Collection
     described = "; ".join(f"{n}: {t.atom}" for n, t in leaves) or "none"
     found: list[str] = []
     for part in parts:
-        ids = _entity_ids(part, lexicon)
-        if not ids:
+        groups = _entity_ids(part, lexicon)
+        if not groups:
             continue
-        hits = [n for n, t in leaves if ids <= {t.obj, t.target}]
+        hits = [n for n, t in leaves if all(g & {t.obj, t.target} for g in groups)]
         if not hits:
             raise GroundingError(
                 f"no running task mentions {part.strip()!r}; running tasks: {described}"
@@ -175,8 +175,9 @@ def _matching(spec: HSpec, targets: str, lexicon: Lexicon, completed: Collection
     return found
 
 
-def _entity_ids(text: str, lexicon: Lexicon) -> set[str]:
-    ids: set[str] = set()
+def _entity_ids(text: str, lexicon: Lexicon) -> list[set[str]]:
+    """Per name in ``text``, the ids it can mean (several for a plural such as 'the mugs')."""
+    groups: list[set[str]] = []
     for it in lex(text, lexicon):
         if it.kind == "unknown":
             raise GroundingError(
@@ -190,8 +191,8 @@ def _entity_ids(text: str, lexicon: Lexicon) -> set[str]:
                 raise GroundingError(
                     f"{it.text!r} is ambiguous: it could be {' or '.join(sorted(singular))}"
                 )
-            ids |= singular or {r.id for r in it.refs}
-    return ids
+            groups.append(singular or {r.id for r in it.refs})
+    return groups
 
 
 def _remove(tree: _Tree, spec: HSpec, name: str) -> list[str]:
