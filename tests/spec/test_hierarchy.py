@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import copy
 import json
+import pickle
 from pathlib import Path
 from typing import Any
 
@@ -86,6 +88,13 @@ def test_round_trip_through_dict() -> None:
 def test_spec_is_hashable_and_compares_by_content() -> None:
     assert hash(spec_from_dict(FIG1)) == hash(spec_from_dict(FIG1))
     assert spec_from_dict(FIG1) != _spec(p0="F (p100 & F p200)", p100=BOTTLE, p200=CHIPS)
+
+
+def test_spec_pickles_and_copies() -> None:
+    spec = load_spec(Path(__file__).parents[2] / "examples" / "specs" / "three_level.yaml")
+    for again in (pickle.loads(pickle.dumps(spec)), copy.deepcopy(spec)):
+        assert again == spec
+        assert dict(again.children) == dict(spec.children) and again.levels == spec.levels
 
 
 def test_spec_from_formulas_checks_the_tree_only() -> None:

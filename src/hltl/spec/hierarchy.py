@@ -81,6 +81,10 @@ class HSpec:
         object.__setattr__(self, "leaves", tuple(n for n in order if not children[n]))
         object.__setattr__(self, "composites", tuple(n for n in order if children[n]))
 
+    def __reduce__(self) -> tuple[type[HSpec], tuple[str, tuple[tuple[str, Formula], ...]]]:
+        # rebuilt from root and formulas: the derived read-only maps do not pickle
+        return (HSpec, (self.root, self.formulas))
+
     @property
     def names(self) -> tuple[str, ...]:
         """Formula names, root first, breadth-first."""
