@@ -342,6 +342,11 @@ class _Parser:
         if len(verbs) > 1:
             names = ", ".join(repr(units[k].text) for k in verbs)
             raise GroundingError(f"two verbs ({names}) in {frag.text!r}: join them with 'and'")
+        if not verbs and len(units) > 1 and units[0].kind == "unknown":
+            raise GroundingError(
+                f"{units[0].text!r} in {frag.text!r} is neither a verb the grounder knows (give, "
+                "hand, pass, bring, take, deliver, put, place, …) nor a name in the scene"
+            )
         pre, post = [], units
         if verbs:
             v = units[verbs[0]]
