@@ -16,7 +16,7 @@ from collections.abc import Callable
 from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
-from hltl.spec.monitor import DONE
+from hltl.spec.monitor import DONE, MonitorState
 from hltl.spec.syntax import Atom
 
 INF = math.inf
@@ -44,6 +44,10 @@ class Heuristic:
             )
             self.nodes.append((name, index[name], dfa, props))
         self._cache: dict[tuple[str, int, tuple[float, ...]], float] = {}
+        self._by_name = {name: (i, dfa, props) for name, i, dfa, props in self.nodes}
+        self.n_robots = len(problem.robots)
+        self._required_cache: dict[MonitorState, frozenset[Atom]] = {}
+        self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
 
     def __call__(self, node: Node) -> float:
         locs, _, q = node
@@ -66,7 +70,108 @@ class Heuristic:
             h[name] = self._bottleneck(name, dfa, state, tuple(costs))
             if name == self.root:
                 break
-        return h[self.root]
+        critical = h[self.root]
+        if critical == INF or self.n_robots < 2:
+            return critical
+        return max(critical, self._load_bound(locs, q))
+
+    # -- robot load ------------------------------------------------------------------------------
+    def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
+        """max over robots of the time it must spend on objects every accepting run needs."""
+        atoms_ = self._required_atoms(q)
+        if not atoms_:
+            return 0.0
+        best = 0.0
+        graph = self.graph
+        for r in range(self.n_robots):
+            per_obj: dict[int, float] = {}
+            head = tail = INF
+            for atom in atoms_:
+                g = graph.goal(atom)
+                if g is None:
+                    continue
+                load = graph.robot_load(atom, r)
+                if load is None:
+                    continue
+                v = load[locs[g[0]]]
+                if v <= 0.0:
+                    continue
+                if v > per_obj.get(g[0], 0.0):
+                    per_obj[g[0]] = v
+                heads, t = graph.head_tail(atom, r)
+                head = min(head, heads[locs[g[0]]])
+                tail = min(tail, t)
+            if not per_obj:
+                continue
+            # the robot's mandatory actions fill distinct steps; the first cannot start before
+            # some object reaches it, and after the last one that object still has to travel
+            total = head + sum(per_obj.values()) + tail
+            if total > best:
+                best = total
+        return best
+
+    def _required_atoms(self, q: MonitorState) -> frozenset[Atom]:
+        """Predicate atoms that every accepting continuation from ``q`` must make true."""
+        hit = self._required_cache.get(q)
+        if hit is not None:
+            return hit
+        out: set[Atom] = set()
+        stack = [self.root]
+        while stack:
+            name = stack.pop()
+            i, dfa, props = self._by_name[name]
+            state = q[i]
+            if state == DONE:
+                continue
+            for b in self._required_props(name, dfa, state):
+                kind, ref = props[b]
+                if kind == "child":
+                    assert isinstance(ref, str)
+                    stack.append(ref)
+                else:
+                    assert isinstance(ref, Atom)
+                    out.add(ref)
+        res = frozenset(out)
+        self._required_cache[q] = res
+        return res
+
+    def _required_props(self, name: str, dfa: DFA, start: int) -> tuple[int, ...]:
+        """Bits of the propositions without which the DFA cannot reach acceptance from ``start``
+        (in one step or more)."""
+        key = (name, start)
+        hit = self._required_prop_cache.get(key)
+        if hit is not None:
+            return hit
+        k = len(dfa.props)
+        width = 1 << k
+        req: list[int] = []
+        for b in range(k):
+            bit = 1 << b
+            seen = {start}
+            frontier = [start]
+            ok = False
+            while frontier and not ok:
+                nxt = []
+                for s in frontier:
+                    base = s * width
+                    for m in range(width):
+                        if m & bit:
+                            continue
+                        y = dfa.table[base + m]
+                        if y in dfa.accepting:
+                            ok = True
+                            break
+                        if y not in seen:
+                            seen.add(y)
+                            nxt.append(y)
+                    if ok:
+                        break
+                frontier = nxt
+            if not ok:
+                req.append(b)
+        res = tuple(req)
+        self._required_prop_cache[key] = res
+        return res
 
     def _bottleneck(self, name: str, dfa: DFA, start: int, costs: tuple[float, ...]) -> float:
         key = (name, start, costs)

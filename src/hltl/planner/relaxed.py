@@ -45,6 +45,82 @@ class RelaxedGraph:
                             best[a] = t
                 ev.append(best)
             self.event_time.append(ev)
+        self._load: dict[tuple[int, int, Atom], list[float]] = {}
+        self._head_tail: dict[tuple[int, int, Atom], tuple[list[float], float]] = {}
+
+    def goal(self, atom: Atom) -> tuple[int, int | None] | None:
+        """(object index, place code) for a state atom, (object index, None) for an event atom."""
+        p = self.p
+        name, args = atom.name, atom.args
+        if name in ("delivered", "placed", "picked"):
+            o = p.obj_index.get(args[0])
+            return None if o is None else (o, None)
+        if name == "holding":
+            o, r = p.obj_index.get(args[1]), p.robot_index.get(args[0])
+            return None if o is None or r is None else (o, p.held_code[r])
+        if name == "at":
+            o, code = p.obj_index.get(args[0]), p.loc_code.get(Loc("on", args[1]))
+            return None if o is None or code is None else (o, code)
+        return None
+
+    def head_tail(self, atom: Atom, robot: int) -> tuple[list[float], float]:
+        """For the atom's object and ``robot``: per place, the earliest time the robot can first
+        act on it (head), and the least time the route to ``atom`` still needs after the robot
+        last acts on it (tail)."""
+        g = self.goal(atom)
+        assert g is not None
+        o, target = g
+        key = (o, robot, atom)
+        hit = self._head_tail.get(key)
+        if hit is not None:
+            return hit
+        p = self.p
+        n = len(p.locs)
+        bit = 1 << robot
+        dist = self.place_time[o]
+        mine = [i for pre in range(n) for i in p.by_obj_pre[o][pre] if i.executors & bit]
+        head = [min((dist[src][i.pre] for i in mine), default=INF) for src in range(n)]
+        tail = INF
+        for i in mine:
+            if target is None:
+                t = 0.0 if atom in i.events else self.event_time[o][i.post].get(atom, INF)
+            else:
+                t = dist[i.post][target]
+            tail = min(tail, t)
+        self._head_tail[key] = (head, tail)
+        return head, tail
+
+    def robot_load(self, atom: Atom, robot: int) -> list[float] | None:
+        """Per place of the atom's object: the least time ``robot`` must spend acting on it on any
+        route that makes ``atom`` true (0 unless every route needs that robot).
+
+        Each action of one robot fills a step of its own lasting at least the action, so summed
+        over the distinct objects a robot must handle this bounds the makespan from below.
+        """
+        g = self.goal(atom)
+        if g is None:
+            return None
+        o, target = g
+        key = (o, robot, atom)
+        hit = self._load.get(key)
+        if hit is not None:
+            return hit
+        p = self.p
+        n = len(p.locs)
+        bit = 1 << robot
+        sink = n
+        rev: list[list[tuple[int, float]]] = [[] for _ in range(n + 1)]
+        for pre in range(n):
+            for inst in p.by_obj_pre[o][pre]:
+                w = inst.lower if inst.executors & bit else 0.0
+                rev[inst.post].append((pre, w))
+                if target is None and atom in inst.events:
+                    rev[sink].append((pre, w))
+        if target is not None:
+            rev[sink].append((target, 0.0))
+        dist = _dijkstra(rev, sink)[:n]
+        self._load[key] = dist
+        return dist
 
     def atom_time(self, atom: Atom, locs: tuple[int, ...]) -> float:
         """Earliest time (lower bound) at which ``atom`` can be true in a step's symbol."""

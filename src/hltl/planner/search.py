@@ -159,7 +159,7 @@ def search(
         if problem.monitor.accepted(node[2]):
             steps = _reconstruct(problem, parent, node)
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
-            return PlanResult(PlanStatus.SOLVED, steps, g, stats)
+            return PlanResult(PlanStatus.SOLVED, steps, round(g, 9), stats)
         expanded += 1
         if expanded & 255 == 0:
             elapsed = time.perf_counter() - t0
@@ -214,7 +214,7 @@ def _reconstruct(
     t = 0.0
     for _, U, cost in chain:
         actions = tuple(sorted(inst.action for inst in U))
-        steps.append(PlanStep(t, cost, actions))
+        steps.append(PlanStep(round(t, 9), cost, actions))
         t += cost
     done_before = [problem.monitor.done(prev[2]) for prev, _, _ in chain]
     return derive_bindings(problem, steps, done_before)
