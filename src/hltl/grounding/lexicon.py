@@ -371,10 +371,13 @@ class Lexicon:
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
         self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
-        self._phrases: dict[tuple[str, ...], list[tuple[Ref, str]]] = {}
+        # phrase -> (ref, spelling, strong): strong for ids, names and aliases, weak for categories
+        self._phrases: dict[tuple[str, ...], list[tuple[Ref, str, bool]]] = {}
         for o in scene.objects:
-            for name in dict.fromkeys((o.id, o.category, *o.aliases)):
+            for name in dict.fromkeys((o.id, *o.aliases)):
                 self._add(Ref("object", o.id), name, plurals=True)
+            if o.category not in (o.id, *o.aliases):
+                self._add(Ref("object", o.id), o.category, plurals=True, strong=False)
         for h in scene.humans:
             for name in dict.fromkeys((h.id, h.name, *h.aliases, f"person {h.id}")):
                 self._add(Ref("human", h.id), name, plurals=False)
@@ -385,25 +388,28 @@ class Lexicon:
             self._add(Ref("robot", r.id), r.id, plurals=False)
         self.max_len = max((len(p) for p in self._phrases), default=1)
 
-    def _add(self, ref: Ref, name: str, *, plurals: bool) -> None:
+    def _add(self, ref: Ref, name: str, *, plurals: bool, strong: bool = True) -> None:
         if len(name) == 1 and name.isalpha():
             self._exact.setdefault(name, []).append(ref)
             return
         words = _words(name)
         if not words:
             return
-        self._put(words, ref, name)
+        self._put(words, ref, name, strong)
         if plurals:
             for form in _plural_forms(words):
-                self._put(form, Ref(ref.kind, ref.id, plural=True), name)
+                self._put(form, Ref(ref.kind, ref.id, plural=True), name, False)
             # "chip" for "chips": a singular spelling of a plural-looking name
             for form in _singular_forms(words):
-                self._put(form, ref, name)
+                self._put(form, ref, name, False)
 
-    def _put(self, words: tuple[str, ...], ref: Ref, spelling: str) -> None:
+    def _put(self, words: tuple[str, ...], ref: Ref, spelling: str, strong: bool) -> None:
         lst = self._phrases.setdefault(words, [])
-        if all(r != ref for r, _ in lst):
-            lst.append((ref, spelling))
+        for k, (r, s, st) in enumerate(lst):
+            if r == ref:
+                lst[k] = (r, s, st or strong)
+                return
+        lst.append((ref, spelling, strong))
 
     def match(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
         """The longest entity mention starting at token ``i``: (length, refs), else None."""
@@ -414,10 +420,10 @@ class Lexicon:
                 continue
             if n == 1 and (key[0] in WORDS or key[0] in VERBS):
                 # a keyword names an entity only when typed as the scene spells it ("Will")
-                found = [(r, s) for r, s in found if s == tokens[i].text]
+                found = [e for e in found if e[1] == tokens[i].text]
                 if not found:
                     continue
-            return n, _best(found, key)
+            return n, _best(found)
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
@@ -443,12 +449,12 @@ class Lexicon:
         return ref_id
 
 
-def _best(found: list[tuple[Ref, str]], key: tuple[str, ...]) -> tuple[Ref, ...]:
-    # An id or alias spelled exactly wins over a category shared by several objects.
-    exact = [r for r, s in found if _words(s) == key and not r.plural]
-    if len({r.id for r in exact}) == 1:
-        return (exact[0],)
-    return tuple(r for r, _ in found)
+def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
+    # An id, name or alias wins over a category shared by several objects.
+    strong = [r for r, _, st in found if st]
+    if len({r.id for r in strong}) == 1:
+        return (strong[0],)
+    return tuple(r for r, _, _ in found)
 
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
