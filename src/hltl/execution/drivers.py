@@ -1,0 +1,78 @@
+"""The robot driver protocol: the only thing the executor knows about robots.
+
+A driver starts a ground skill instance, reports its progress and how it ended, and halts it on
+request. The simulator implements it (:class:`hltl.sim.simulator.Simulator`); a real arm
+controller implements the same four calls on top of its motion stack.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
+
+from hltl.skills.library import Action
+
+
+class ActionState(enum.Enum):
+    """Where a dispatched action is: still running, or how it ended."""
+
+    RUNNING = "running"
+    DONE = "done"
+    FAILED = "failed"
+    HALTED = "halted"
+
+
+@dataclass(frozen=True, slots=True)
+class Handle:
+    """A driver's receipt for one started action."""
+
+    id: int
+    action: Action
+    start: float
+
+
+@dataclass(frozen=True, slots=True)
+class ActionStatus:
+    """The state of a started action.
+
+    Attributes:
+        state: running, done, failed or halted.
+        progress: fraction of the motion completed, in [0, 1].
+        t: for a terminal state, when it was reached; for ``RUNNING``, the time polled.
+        reason: for ``FAILED`` and ``HALTED``, why.
+    """
+
+    state: ActionState
+    progress: float
+    t: float
+    reason: str = ""
+
+    @property
+    def terminal(self) -> bool:
+        return self.state is not ActionState.RUNNING
+
+
+@runtime_checkable
+class RobotDriver(Protocol):
+    """What the executor asks of the robots.
+
+    Calls carry the executor's clock ``t`` (seconds since the episode started) so that a driver
+    can time-stamp what it reports; a driver never moves time itself.
+    """
+
+    def start(self, action: Action, t: float) -> Handle:
+        """Begin executing ``action`` (its robots must be available and idle)."""
+        ...
+
+    def poll(self, handle: Handle, t: float) -> ActionStatus:
+        """How the action is doing at time ``t``: running with its progress, or how it ended."""
+        ...
+
+    def halt(self, handle: Handle, t: float, reason: str) -> None:
+        """Stop the action now; its effect does not happen (the object stays where it was)."""
+        ...
+
+    def unavailable(self, t: float) -> frozenset[str]:
+        """Robots that cannot take actions at time ``t`` (faults, maintenance, another job)."""
+        ...

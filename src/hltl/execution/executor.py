@@ -1,0 +1,883 @@
+"""The receding-horizon executor (paper §III-D): plan, dispatch the first step, monitor, replan.
+
+One :class:`Executor` runs one episode. Its loop is driven from outside: every call of
+:meth:`Executor.update` hands it the time, the latest observation and any new instructions, and
+it polls its robots, checks safety, plans and dispatches. It never advances time itself, so the
+same executor runs against the simulator (:mod:`hltl.sim.episode`) and against real drivers.
+
+Belief. The executor's world w_t merges perception with what its own actions did: people's
+positions come from every observation; an object's place and position come from an observation
+only if it was taken after the executor last touched the object (dispatched, completed or failed
+an action on it), because perception lags; hands come from the observation (proprioception).
+"""
+
+from __future__ import annotations
+
+import enum
+import time
+from collections import OrderedDict
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Protocol
+
+from hltl.errors import GroundingError
+from hltl.execution.drivers import ActionState, ActionStatus, Handle, RobotDriver
+from hltl.execution.log import EventLog, world_to_dict
+from hltl.execution.predict import (
+    ConstantVelocityPredictor,
+    TrajectoryPredictor,
+    WorkspacePrediction,
+    predict_workspace,
+    predicted_world,
+)
+from hltl.execution.safety import (
+    Hazard,
+    hand_speed,
+    intrusion_hazard,
+    precondition_hazard,
+    step_conflict,
+)
+from hltl.planner import PlanResult, PlanStatus, PlanStep
+from hltl.skills.cost import CostModel, cost_model_for
+from hltl.skills.library import (
+    Action,
+    Situation,
+    Transition,
+    check_action,
+    ground,
+    state_atoms,
+)
+from hltl.spec.hierarchy import HSpec, spec_to_dict
+from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.syntax import Atom
+from hltl.world.geometry import Context
+from hltl.world.scene import Scene
+from hltl.world.state import JointState, ObjectStatus, WorldState, initial_world, project
+
+if TYPE_CHECKING:
+    from hltl.grounding.base import Grounder
+
+
+class Planner(Protocol):
+    """What the executor asks of a planner: an optimal suffix from (Proj(w_t), q_t)."""
+
+    def __call__(
+        self,
+        scene: Scene,
+        spec: HSpec,
+        *,
+        world: WorldState,
+        monitor: HierarchyMonitor,
+        q0: MonitorState,
+    ) -> PlanResult: ...
+
+
+@dataclass(frozen=True, slots=True)
+class ExactPlanner:
+    """The exact planner of :mod:`hltl.planner` behind the :class:`Planner` protocol."""
+
+    algorithm: str = "astar"
+    timeout: float = 60.0
+
+    def __call__(
+        self,
+        scene: Scene,
+        spec: HSpec,
+        *,
+        world: WorldState,
+        monitor: HierarchyMonitor,
+        q0: MonitorState,
+    ) -> PlanResult:
+        from hltl.planner import plan
+
+        return plan(
+            scene,
+            spec,
+            world=world,
+            monitor=monitor,
+            q0=q0,
+            algorithm=self.algorithm,
+            timeout=self.timeout,
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class ExecutorConfig:
+    """Knobs of the receding-horizon loop.
+
+    Attributes:
+        predict: run predictive planning and takeover (the paper's P.P.; ``--no-predict`` off).
+        intrusion: halt on intrusion risk (needs a trajectory predictor).
+        horizon: T_pred, seconds of forecast for ŵs and for intrusion risk.
+        predict_dt: spacing of forecast samples.
+        intrusion_speed: hand speed (m/s) from which a motion counts as fast, i.e. subject to
+            the intrusion check; 0 checks every motion.
+        max_failures: consecutive failed actions after which the executor gives up.
+        max_wait: seconds the executor waits for the world to change (people to come back,
+            robots to return, an intrusion risk to pass) before giving up.
+        plan_latency: simulated seconds a critical-path planner call costs before the next
+            dispatch (a takeover costs none); 0 models instant planning.
+        max_predicted: predicted plans kept for takeover.
+    """
+
+    predict: bool = True
+    intrusion: bool = True
+    horizon: float = 1.5
+    predict_dt: float = 0.1
+    intrusion_speed: float = 0.0
+    max_failures: int = 3
+    max_wait: float = 10.0
+    plan_latency: float = 0.0
+    max_predicted: int = 16
+
+    def __post_init__(self) -> None:
+        for name in ("horizon", "predict_dt"):
+            if getattr(self, name) <= 0:
+                raise ValueError(f"{name} must be positive, got {getattr(self, name)!r}")
+        for name in ("intrusion_speed", "max_wait", "plan_latency"):
+            if getattr(self, name) < 0:
+                raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
+        if self.max_failures < 1:
+            raise ValueError(f"max_failures must be >= 1, got {self.max_failures!r}")
+
+
+class ExecStatus(enum.Enum):
+    RUNNING = "running"
+    DONE = "done"
+    GAVE_UP = "gave_up"
+
+
+@dataclass(slots=True)
+class _Running:
+    action: Action
+    handle: Handle
+    transition: Transition
+    expected: float
+    start: float
+    fast: bool
+    progress: float = 0.0
+    status: ActionStatus | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class _Predicted:
+    result: PlanResult
+    at: float
+    context: Context
+
+
+# The discrete start of a plan: context, object places, monitor state, unavailable robots, spec.
+_Key = tuple[Context, JointState, MonitorState, frozenset[str], int]
+
+
+@dataclass(slots=True)
+class _Trigger:
+    reasons: list[str] = field(default_factory=list)
+
+    def add(self, reason: str) -> None:
+        if reason not in self.reasons:
+            self.reasons.append(reason)
+
+    def take(self) -> str:
+        text = "+".join(self.reasons)
+        self.reasons.clear()
+        return text
+
+    def __bool__(self) -> bool:
+        return bool(self.reasons)
+
+
+class Executor:
+    """Receding-horizon execution of an H-LTLf spec with reactive safety and predictive takeover.
+
+    Args:
+        scene: the cell.
+        spec: the specification to execute; ``None`` to wait for a first :meth:`instruct`.
+        driver: the robots.
+        log: where events go (a fresh in-memory log by default).
+        planner: the suffix planner (default: the exact A* planner).
+        grounder: grounds instructions (default: the offline grounder, loaded on first use).
+        predictor: forecasts people (default: constant velocity).
+        config: loop parameters.
+        cost: the duration model used to time actions (default: the scene's).
+    """
+
+    def __init__(
+        self,
+        scene: Scene,
+        spec: HSpec | None,
+        driver: RobotDriver,
+        *,
+        log: EventLog | None = None,
+        planner: Planner | None = None,
+        grounder: Grounder | None = None,
+        predictor: TrajectoryPredictor | None = None,
+        config: ExecutorConfig | None = None,
+        cost: CostModel | None = None,
+    ) -> None:
+        self.scene = scene
+        self.driver = driver
+        self.log = EventLog() if log is None else log
+        self.planner: Planner = ExactPlanner() if planner is None else planner
+        self.grounder = grounder
+        self.config = ExecutorConfig() if config is None else config
+        self.predictor: TrajectoryPredictor | None = (
+            ConstantVelocityPredictor() if predictor is None else predictor
+        )
+        self.cost = cost_model_for(scene) if cost is None else cost
+        self.spec: HSpec | None = None
+        self.monitor: HierarchyMonitor | None = None
+        self.q: MonitorState = ()
+        self.world: WorldState = initial_world(scene)
+        self.t = 0.0
+        self.status = ExecStatus.RUNNING
+        self.reason = ""
+        self.accepted_at: float | None = None
+        self.trace: list[frozenset[Atom]] = []
+
+        self._spec_version = 0
+        self._plan: PlanResult | None = None
+        self._plan_ctx: Context | None = None
+        self._plan_unavailable: frozenset[str] = frozenset()
+        self._blocked: tuple[Context, frozenset[str], int] | None = None
+        self._running: list[_Running] = []
+        self._steps = 0
+        self._trigger = _Trigger()
+        self._touched: dict[str, float] = {}
+        self._await_obs: float | None = None
+        self._last_obs_t = -1.0
+        self._failures = 0
+        self._last_failure = ""
+        self._busy_until = 0.0
+        self._waiting: str | None = None
+        self._wait_since: float | None = None
+        self._pending_tokens = 0
+        self._plan_fresh = False
+        self._predicted: OrderedDict[_Key, _Predicted] = OrderedDict()
+        self.predictions: dict[str, WorkspacePrediction] = {}
+        if spec is not None:
+            self._set_spec(spec, None)
+            self._trigger.add("initial")
+
+    # -- public ----------------------------------------------------------------------------------
+
+    @property
+    def finished(self) -> bool:
+        return self.status is not ExecStatus.RUNNING
+
+    @property
+    def busy(self) -> bool:
+        """Whether a step is executing."""
+        return bool(self._running)
+
+    @property
+    def running_actions(self) -> tuple[Action, ...]:
+        return tuple(r.action for r in self._running if r.status is None)
+
+    def instruct(self, t: float, text: str) -> None:
+        """A (new) instruction: ground it, merging into the running spec (paper GOAL event).
+
+        The monitor state of the running spec carries over by formula name
+        (:func:`hltl.grounding.update.carry_over`); the suffix is replanned at the next decision.
+        A first instruction that cannot be grounded ends the episode; a later one is logged and
+        ignored, the running task going on.
+        """
+        self.t = max(self.t, t)
+        if self.grounder is None:
+            from hltl.grounding import make_grounder
+
+            self.grounder = make_grounder("offline")
+        t0 = time.perf_counter()
+        try:
+            g = self.grounder.ground(text, self.scene, running=self.spec)
+        except GroundingError as exc:
+            self.log.emit(self.t, "grounding", text=text, error=str(exc), tokens=0)
+            if self.spec is None:
+                self._give_up(f"cannot ground the instruction: {exc}")
+            return
+        ms = (time.perf_counter() - t0) * 1000.0
+        old = self.spec
+        self._set_spec(g.spec, old)
+        fields: dict[str, Any] = {
+            "text": text,
+            "tokens": g.tokens.total,
+            "prompt_tokens": g.tokens.prompt,
+            "completion_tokens": g.tokens.completion,
+            "latency_ms": round(ms, 3),
+            "spec": spec_to_dict(g.spec),
+            "done": sorted(self._done()),
+        }
+        if g.update is not None:
+            fields["update"] = {
+                "kind": g.update.kind,
+                "kept": list(g.update.kept),
+                "changed": list(g.update.changed),
+                "added": list(g.update.added),
+                "removed": list(g.update.removed),
+            }
+        self.log.emit(self.t, "grounding", **fields)
+        self._pending_tokens += g.tokens.total
+        self._trigger.add("initial" if old is None else "goal")
+        if self.status is ExecStatus.DONE:
+            self.status = ExecStatus.RUNNING
+            self.reason = ""
+
+    def update(
+        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+    ) -> None:
+        """One tick of the loop at time ``t``.
+
+        Args:
+            t: the time now (seconds since the start of the episode; never decreasing).
+            observation: the latest perceived world (its ``t`` is when it was sensed).
+            instructions: instructions given since the last tick.
+        """
+        if t < self.t - 1e-9:
+            raise ValueError(f"time went back from {self.t} to {t}")
+        self.t = t
+        if observation is not None:
+            self._observe(observation)
+        self._refresh_availability()
+        self._poll()
+        for text in instructions:
+            self.instruct(t, text)
+        if self.status is ExecStatus.GAVE_UP:
+            return
+        if self._running:
+            if all(r.status is not None for r in self._running):
+                self._end_step()
+            else:
+                self._check_safety()
+        if self._stopped():
+            return
+        self._background()
+        self._decide()
+
+    def _stopped(self) -> bool:
+        return self.status is ExecStatus.GAVE_UP
+
+    def give_up(self, reason: str) -> None:
+        """Stop the episode from outside (e.g. a time limit): halt everything, log why."""
+        if self.status is not ExecStatus.GAVE_UP:
+            self._give_up(reason)
+
+    # -- belief ----------------------------------------------------------------------------------
+
+    def _observe(self, obs: WorldState) -> None:
+        if obs.t < self._last_obs_t:
+            return  # out of order: an older observation adds nothing
+        self._last_obs_t = obs.t
+        w = self.world
+        for hid, pos in obs.humans:
+            w = w.with_human(hid, pos)
+        for oid, st in obs.objects:
+            if obs.t >= self._touched.get(oid, -1.0) - 1e-12:
+                w = w.with_object(oid, st)
+        for rid, pos in obs.hands:
+            w = w.with_hand(rid, pos)
+        self.world = w.with_time(self.t)
+        if self.predictor is not None:
+            self.predictor.observe(obs.t, obs.humans)
+
+    def _refresh_availability(self) -> None:
+        down = frozenset(self.driver.unavailable(self.t))
+        if down != self.world.unavailable:
+            self.world = self.world.with_unavailable(down)
+
+    def _done(self) -> frozenset[str]:
+        return frozenset() if self.monitor is None else self.monitor.done(self.q)
+
+    def _set_spec(self, spec: HSpec, old: HSpec | None) -> None:
+        monitor = HierarchyMonitor(spec)
+        if old is None or self.monitor is None:
+            q = monitor.initial
+        else:
+            from hltl.grounding.update import carry_over
+
+            q = carry_over(old, self.q, spec)
+        self.spec, self.monitor, self.q = spec, monitor, q
+        self._spec_version += 1
+        self._predicted.clear()
+        self._plan = None
+        self._blocked = None
+
+    # -- acting ----------------------------------------------------------------------------------
+
+    def _poll(self) -> None:
+        for run in self._running:
+            if run.status is not None:
+                continue
+            st = self.driver.poll(run.handle, self.t)
+            run.progress = st.progress
+            if not st.terminal:
+                continue
+            run.status = st
+            a = run.action
+            if st.state is ActionState.DONE:
+                self._apply(run.transition, st.t)
+                self._failures = 0
+                self.log.emit(
+                    self.t, "action_done", handle=run.handle.id, action=a.to_dict(), end=st.t
+                )
+            elif st.state is ActionState.FAILED:
+                self._touched[a.object] = st.t
+                self._await_obs = max(self._await_obs or 0.0, st.t)
+                self._failures += 1
+                self._last_failure = st.reason
+                self.log.emit(
+                    self.t,
+                    "action_failed",
+                    handle=run.handle.id,
+                    action=a.to_dict(),
+                    reason=st.reason,
+                    end=st.t,
+                )
+                self._trigger.add("failure")
+            else:
+                self._touched[a.object] = st.t
+                self.log.emit(
+                    self.t,
+                    "action_halted",
+                    handle=run.handle.id,
+                    action=a.to_dict(),
+                    reason=st.reason,
+                    end=st.t,
+                )
+                self._trigger.add("halt")
+
+    def _apply(self, tr: Transition, t: float) -> None:
+        w = self.world
+        position = tr.hands[-1][1] if tr.hands else w.object_status(tr.obj).position
+        w = w.with_object(tr.obj, ObjectStatus(position, tr.post))
+        for rid, pos in tr.hands:
+            w = w.with_hand(rid, pos)
+        self.world = w
+        self._touched[tr.obj] = t
+
+    def _transition(self, action: Action, world: WorldState) -> Transition:
+        loc = world.object_status(action.object).loc
+        for a, tr in ground(Situation.of(self.scene, world)):
+            if a == action and tr.pre == loc:
+                return tr
+        raise LookupError(f"{action}: no transition from {loc} (precondition fails)")
+
+    def _symbol(self, done: Sequence[Transition], world: WorldState) -> frozenset[Atom]:
+        atoms: set[Atom] = set()
+        for tr in done:
+            atoms |= tr.events
+        for oid, st in world.objects:
+            atoms |= state_atoms(oid, st.loc)
+        return frozenset(atoms)
+
+    def _end_step(self) -> None:
+        runs, self._running = self._running, []
+        done = [r for r in runs if r.status is not None and r.status.state is ActionState.DONE]
+        assert self.monitor is not None
+        if done or not runs:
+            symbol = self._symbol([r.transition for r in done], self.world)
+            q1 = self.monitor.step(self.q, symbol)
+            fired = self.monitor.fired(self.q, q1)
+            self.q = q1
+            self.trace.append(symbol)
+            accepted = self.monitor.accepted(q1)
+            self.log.emit(
+                self.t,
+                "monitor",
+                step=self._steps,
+                atoms=sorted(str(a) for a in symbol),
+                fired=sorted(fired),
+                done=sorted(self.monitor.done(q1)),
+                accepted=accepted,
+            )
+            if accepted:
+                self.accepted_at = self.t
+        self._steps += 1
+        if not self._trigger:
+            self._trigger.add("progress")
+        if self._failures >= self.config.max_failures:
+            self._give_up(
+                f"{self._failures} consecutive action failures (last: {self._last_failure})"
+            )
+
+    def _check_safety(self) -> None:
+        hazards: list[Hazard] = []
+        for run in self._running:
+            if run.status is not None:
+                continue
+            h = precondition_hazard(run.action, self.scene, self.world)
+            if h is None and self._intrusion_on() and run.fast:
+                until = self.t + max(0.0, 1.0 - run.progress) * run.expected
+                assert self.predictor is not None
+                h = intrusion_hazard(
+                    run.action,
+                    self.scene,
+                    self.world,
+                    self.predictor,
+                    self.t,
+                    until,
+                    self.config.predict_dt,
+                )
+            if h is not None:
+                hazards.append(h)
+        if not hazards:
+            return
+        first = hazards[0]
+        active = [r for r in self._running if r.status is None]
+        for run in active:
+            self.driver.halt(run.handle, self.t, first.reason)
+            run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, first.reason)
+            self._touched[run.action.object] = self.t
+            self.log.emit(
+                self.t,
+                "action_halted",
+                handle=run.handle.id,
+                action=run.action.to_dict(),
+                reason=first.reason,
+            )
+        self.log.emit(
+            self.t,
+            "halt",
+            kind=first.kind,
+            reason=first.reason,
+            actions=[r.action.to_dict() for r in active],
+            hazards=[
+                {"action": h.action.to_dict(), "kind": h.kind, "reason": h.reason} for h in hazards
+            ],
+            done=sorted(self._done()),
+        )
+        self._trigger.add(f"halt:{first.kind}")
+        self._end_step()
+
+    def _intrusion_on(self) -> bool:
+        return self.config.intrusion and self.predictor is not None
+
+    def _dispatch(self, actions: Sequence[Action], step: PlanStep) -> None:
+        conflict = step_conflict(actions)
+        if conflict is not None:  # the planner never does this; refuse rather than collide
+            self._give_up(f"the plan's step is not executable: {conflict}")
+            return
+        world = self.world
+        transitions = []
+        for a in actions:
+            reason = check_action(a, self.scene, world)
+            if reason is not None:  # unreachable: _decide filtered these out
+                raise RuntimeError(f"refusing to dispatch {a}: {reason}")
+            transitions.append(self._transition(a, world))
+        self.log.emit(
+            self.t,
+            "dispatch",
+            step=self._steps,
+            actions=[a.to_dict() for a in actions],
+            planned=[a.to_dict() for a in step.actions],
+            duration=round(step.duration, 6),
+            world=world_to_dict(world),
+            done=sorted(self._done()),
+        )
+        hands = dict(world.hands)
+        for a, tr in zip(actions, transitions, strict=True):
+            handle = self.driver.start(a, self.t)
+            expected = self.cost.duration(a, tr, hands)
+            fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
+            self._touched[a.object] = self.t
+            self._running.append(_Running(a, handle, tr, expected, self.t, fast))
+            self.log.emit(
+                self.t,
+                "action_start",
+                handle=handle.id,
+                action=a.to_dict(),
+                robots=list(a.robots),
+                expected=round(expected, 6),
+            )
+        self._plan = None  # the suffix is replanned when this step ends
+        self._waiting = None
+        self._wait_since = None
+        if not self._running:
+            self._end_step()
+
+    # -- deciding --------------------------------------------------------------------------------
+
+    def _decide(self) -> None:
+        self._plan_fresh = False
+        for _ in range(16):  # empty steps and re-plans settle in a few rounds
+            if self._running or self.status is not ExecStatus.RUNNING or self.monitor is None:
+                return
+            if self.monitor.accepted(self.q):
+                self.status = ExecStatus.DONE
+                self.reason = "all goals met"
+                return
+            if self.t < self._busy_until - 1e-12:
+                return
+            if self._await_obs is not None:
+                if self._last_obs_t < self._await_obs - 1e-12:
+                    self._wait("re-observing after a failed action")
+                    return
+                self._await_obs = None
+            ctx = self.world.context(self.scene)
+            down = self.world.unavailable
+            if self._plan is None or self._trigger:
+                if self._plan is None and not self._trigger:
+                    if self._blocked == (ctx, down, self._spec_version):
+                        self._wait_or_give_up()
+                        return
+                    self._trigger.add("world")
+                if not self._replan(self._trigger.take(), ctx):
+                    return
+                if self.t < self._busy_until - 1e-12:
+                    return
+            elif ctx != self._plan_ctx or down != self._plan_unavailable:
+                self._trigger.add("context" if ctx != self._plan_ctx else "robots")
+                continue
+            assert self._plan is not None
+            if not self._plan.steps:
+                self._give_up("the planner returned an empty plan for an unfinished task")
+                return
+            step = self._plan.steps[0]
+            ok: list[Action] = []
+            risky: list[Hazard] = []
+            blocked: list[Hazard] = []
+            for a in step.actions:
+                h = precondition_hazard(a, self.scene, self.world)
+                if h is not None:
+                    blocked.append(h)
+                    continue
+                h = self._dispatch_risk(a)
+                if h is not None:
+                    risky.append(h)
+                else:
+                    ok.append(a)
+            if blocked:
+                # the plan is stale (e.g. a predicted plan whose objects moved): plan afresh
+                if self._plan_fresh:
+                    self._give_up(
+                        f"the planner's first step is not executable: {blocked[0].reason}"
+                    )
+                    return
+                self._plan = None
+                self._trigger.add("precondition")
+                continue
+            if risky and not ok:
+                self._wait(f"intrusion risk to {risky[0].action}")
+                self._wait_or_give_up(check_only=True)
+                return
+            self._dispatch(ok, step)
+            if self._running:
+                return
+
+    def _dispatch_risk(self, action: Action) -> Hazard | None:
+        if not self._intrusion_on():
+            return None
+        tr = self._transition(action, self.world)
+        hands = dict(self.world.hands)
+        d = self.cost.duration(action, tr, hands)
+        if hand_speed(tr, hands, d) < self.config.intrusion_speed:
+            return None
+        assert self.predictor is not None
+        return intrusion_hazard(
+            action,
+            self.scene,
+            self.world,
+            self.predictor,
+            self.t,
+            self.t + d,
+            self.config.predict_dt,
+        )
+
+    def _wait(self, reason: str) -> None:
+        if self._wait_since is None:
+            self._wait_since = self.t
+        if reason != self._waiting:
+            self._waiting = reason
+            self.log.emit(self.t, "wait", reason=reason)
+
+    def _wait_or_give_up(self, check_only: bool = False) -> None:
+        if not check_only:
+            self._wait(self._waiting or "waiting for the world to change")
+        if self._wait_since is not None and self.t - self._wait_since > self.config.max_wait:
+            self._give_up(f"waited {self.config.max_wait:g} s without progress ({self._waiting})")
+
+    def _key(self, ctx: Context, world: WorldState, q: MonitorState) -> _Key:
+        return (ctx, project(world), q, world.unavailable, self._spec_version)
+
+    def _replan(self, trigger: str, ctx: Context) -> bool:
+        """Plan the suffix from (Proj(w_t), q_t); a matching predicted plan takes over instead."""
+        assert self.spec is not None and self.monitor is not None
+        t0 = time.perf_counter()
+        key = self._key(ctx, self.world, self.q)
+        pred = self._predicted.get(key) if self.config.predict else None
+        common = {
+            "trigger": trigger,
+            "tokens": self._pending_tokens,
+            "context": ctx.describe(),
+            "done": sorted(self._done()),
+        }
+        if pred is not None and pred.result.solved:
+            ms = (time.perf_counter() - t0) * 1000.0
+            self.log.emit(
+                self.t,
+                "takeover",
+                trigger=trigger,
+                context=ctx.describe(),
+                predicted_at=round(pred.at, 6),
+                makespan=pred.result.makespan,
+            )
+            self.log.emit(
+                self.t,
+                "replan",
+                source="predicted",
+                status=pred.result.status.value,
+                latency_ms=round(ms, 3),
+                expanded=0,
+                makespan=pred.result.makespan,
+                steps=[s.to_dict() for s in pred.result.steps],
+                world=world_to_dict(self.world),
+                **common,
+            )
+            self._pending_tokens = 0
+            self._adopt(pred.result, ctx)
+            return True
+        result = self.planner(
+            self.scene, self.spec, world=self.world, monitor=self.monitor, q0=self.q
+        )
+        ms = (time.perf_counter() - t0) * 1000.0
+        self.log.emit(
+            self.t,
+            "replan",
+            source="planner",
+            status=result.status.value,
+            latency_ms=round(ms, 3),
+            expanded=result.stats.expanded,
+            makespan=result.makespan,
+            steps=[s.to_dict() for s in result.steps],
+            reason=result.reason,
+            world=world_to_dict(self.world),
+            **common,
+        )
+        self._pending_tokens = 0
+        if self.config.plan_latency > 0:
+            self._busy_until = self.t + self.config.plan_latency
+        if result.status is PlanStatus.SOLVED:
+            self._adopt(result, ctx)
+            self._plan_fresh = True
+            return True
+        self._plan = None
+        if result.status is PlanStatus.TIMEOUT:
+            self._give_up(f"planner timeout: {result.reason}")
+            return False
+        # infeasible now; people may come back, robots may return: wait for a change
+        self._blocked = (ctx, self.world.unavailable, self._spec_version)
+        self._wait(f"no plan in the current world: {result.reason}")
+        self._wait_or_give_up(check_only=True)
+        return False
+
+    def _adopt(self, result: PlanResult, ctx: Context) -> None:
+        self._plan = result
+        self._plan_ctx = ctx
+        self._plan_unavailable = self.world.unavailable
+        self._blocked = None
+        self._waiting = None
+        self._wait_since = None
+
+    # -- predictive planning ---------------------------------------------------------------------
+
+    def _background(self) -> None:
+        """Plan for the forecast world while the current step executes (computed now, stored).
+
+        The plan is computed synchronously at the tick where the forecast changes the context,
+        and kept until the observed context matches (takeover) or the start state moves on. In
+        simulated time this is exactly a background thread that finishes before it is needed,
+        without making episodes depend on thread scheduling; its wall-clock cost is logged as
+        ``predict`` latency, off the critical path.
+        """
+        if (
+            not self.config.predict
+            or self.predictor is None
+            or self.monitor is None
+            or self.spec is None
+            or self.status is not ExecStatus.RUNNING
+            or self.monitor.accepted(self.q)
+        ):
+            return
+        preds: dict[str, WorkspacePrediction] = {}
+        for hid, _ in self.world.humans:
+            try:
+                preds[hid] = predict_workspace(
+                    self.scene,
+                    self.predictor,
+                    hid,
+                    self.t,
+                    self.config.horizon,
+                    self.config.predict_dt,
+                )
+            except KeyError:  # never observed yet
+                continue
+        self.predictions = preds
+        moving = {h: p for h, p in preds.items() if p.moving}
+        if not moving:
+            return
+        w_pred = predicted_world(self.world, moving)
+        ctx_pred = w_pred.context(self.scene)
+        if ctx_pred == self.world.context(self.scene):
+            return
+        bases: list[tuple[str, WorldState, MonitorState]] = [("now", self.world, self.q)]
+        after = self._after_running()
+        if after is not None:
+            bases.append(("after_step", *after))
+        for basis, w, q in bases:
+            wp = predicted_world(w, moving)
+            key = self._key(ctx_pred, wp, q)
+            if key in self._predicted:
+                continue
+            t0 = time.perf_counter()
+            result = self.planner(self.scene, self.spec, world=wp, monitor=self.monitor, q0=q)
+            ms = (time.perf_counter() - t0) * 1000.0
+            self._predicted[key] = _Predicted(result, self.t, ctx_pred)
+            while len(self._predicted) > self.config.max_predicted:
+                self._predicted.popitem(last=False)
+            self.log.emit(
+                self.t,
+                "predict",
+                basis=basis,
+                humans={h: p.to_dict() for h, p in moving.items()},
+                context=ctx_pred.describe(),
+                status=result.status.value,
+                latency_ms=round(ms, 3),
+                expanded=result.stats.expanded,
+                makespan=result.makespan,
+            )
+
+    def _after_running(self) -> tuple[WorldState, MonitorState] | None:
+        """The expected world and monitor state once the running step completes as planned."""
+        if not self._running or self.monitor is None:
+            return None
+        w = self.world
+        for run in self._running:
+            if run.status is None:
+                tr = run.transition
+                w = w.with_object(tr.obj, ObjectStatus(tr.hands[-1][1], tr.post))
+                for rid, pos in tr.hands:
+                    w = w.with_hand(rid, pos)
+        done = [
+            r.transition
+            for r in self._running
+            if r.status is None or r.status.state is ActionState.DONE
+        ]
+        return w, self.monitor.step(self.q, self._symbol(done, w))
+
+    # -- ending ----------------------------------------------------------------------------------
+
+    def _give_up(self, reason: str) -> None:
+        for run in self._running:
+            if run.status is None:
+                self.driver.halt(run.handle, self.t, f"giving up: {reason}")
+                run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
+                self.log.emit(
+                    self.t,
+                    "action_halted",
+                    handle=run.handle.id,
+                    action=run.action.to_dict(),
+                    reason=f"giving up: {reason}",
+                )
+        self._running = []
+        self.status = ExecStatus.GAVE_UP
+        self.reason = reason
+        self.log.emit(self.t, "give_up", reason=reason, done=sorted(self._done()))

@@ -1,0 +1,182 @@
+"""One closed-loop episode: the simulator, the executor and the log, written once.
+
+The loop (dm_control style): the world advances to the next tick or the next thing that
+happens on its own, whichever comes first; perception observes; the executor updates. Hooks see
+every tick. Everything random is drawn from the episode's seed, so an episode is reproducible.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Protocol
+
+from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
+from hltl.execution.log import EventLog, Record
+from hltl.sim.events import EventSchedule
+from hltl.sim.metrics import Metrics, compute_metrics
+from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.spec.hierarchy import HSpec, spec_to_dict
+from hltl.world.scene import Scene
+
+if TYPE_CHECKING:
+    from hltl.execution.predict import TrajectoryPredictor
+    from hltl.grounding.base import Grounder
+
+
+@dataclass(frozen=True, slots=True)
+class EpisodeConfig:
+    """Parameters of the loop.
+
+    Attributes:
+        tick: perception period in seconds (20 Hz by default).
+        max_time: simulated seconds after which the executor gives up.
+        perception: noise and latency of the simulated perception.
+        executor: the receding-horizon executor's parameters.
+    """
+
+    tick: float = 0.05
+    max_time: float = 120.0
+    perception: PerceptionModel = field(default_factory=PerceptionModel)
+    executor: ExecutorConfig = field(default_factory=ExecutorConfig)
+
+    def __post_init__(self) -> None:
+        if self.tick <= 0:
+            raise ValueError(f"tick must be positive, got {self.tick!r}")
+        if self.max_time <= 0:
+            raise ValueError(f"max_time must be positive, got {self.max_time!r}")
+
+    def to_dict(self) -> dict[str, Any]:
+        e = self.executor
+        return {
+            "tick": self.tick,
+            "max_time": self.max_time,
+            "perception": {"noise": self.perception.noise, "latency": self.perception.latency},
+            "executor": {
+                "predict": e.predict,
+                "intrusion": e.intrusion,
+                "horizon": e.horizon,
+                "predict_dt": e.predict_dt,
+                "intrusion_speed": e.intrusion_speed,
+                "max_failures": e.max_failures,
+                "max_wait": e.max_wait,
+                "plan_latency": e.plan_latency,
+            },
+        }
+
+
+class EpisodeHook(Protocol):
+    """Sees the episode as it runs (tests, live displays, custom tasks)."""
+
+    def on_tick(self, t: float, sim: Simulator, executor: Executor) -> None: ...
+
+
+@dataclass(frozen=True, slots=True)
+class Episode:
+    """The outcome of one episode: its log and its metrics."""
+
+    records: tuple[Record, ...]
+    metrics: Metrics
+    seed: int
+
+    @property
+    def success(self) -> bool:
+        return self.metrics.success
+
+
+def run_episode(
+    scene: Scene,
+    *,
+    spec: HSpec | None = None,
+    instruction: str | None = None,
+    events: EventSchedule | None = None,
+    seed: int = 0,
+    config: EpisodeConfig | None = None,
+    planner: Planner | None = None,
+    grounder: Grounder | None = None,
+    predictor: TrajectoryPredictor | None = None,
+    log_path: str | Path | None = None,
+    on_record: Callable[[Record], None] | None = None,
+    hooks: Sequence[EpisodeHook] = (),
+) -> Episode:
+    """Run one closed-loop episode in the simulator.
+
+    Args:
+        scene: the cell.
+        spec: the task as an H-LTLf spec; or give ``instruction`` to ground it.
+        instruction: the task in English (grounded by ``grounder``, default offline).
+        events: dynamic events to inject.
+        seed: seeds noise, failures and random walks.
+        config: loop parameters.
+        planner: the suffix planner (default: exact A*).
+        grounder: grounds instructions and GOAL events.
+        predictor: forecasts people (default: constant velocity).
+        log_path: also write the JSON Lines log there.
+        on_record: called with each log record as it is written.
+        hooks: called every tick.
+
+    Raises:
+        ValueError: neither or both of ``spec`` and ``instruction`` given.
+    """
+    if (spec is None) == (instruction is None):
+        raise ValueError("give exactly one of spec= and instruction=")
+    cfg = EpisodeConfig() if config is None else config
+    schedule = EventSchedule() if events is None else events
+    with EventLog(log_path, on_record) as log:
+        sim = Simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
+        executor = Executor(
+            scene,
+            spec,
+            sim,
+            log=log,
+            planner=planner,
+            grounder=grounder,
+            predictor=predictor,
+            config=cfg.executor,
+        )
+        log.emit(
+            0.0,
+            "episode_start",
+            scene=scene.to_dict(),
+            scene_source=scene.source,
+            spec=None if spec is None else spec_to_dict(spec),
+            instruction=instruction,
+            events=schedule.to_list(),
+            seed=seed,
+            config=cfg.to_dict(),
+        )
+        if instruction is not None:
+            executor.instruct(0.0, instruction)
+        executor.update(0.0, sim.observe(0.0))
+        t = 0.0
+        while True:
+            for hook in hooks:
+                hook.on_tick(t, sim, executor)
+            if executor.status is ExecStatus.GAVE_UP:
+                break
+            if executor.status is ExecStatus.DONE and not sim.pending_instructions():
+                break
+            if t >= cfg.max_time - 1e-9:
+                executor.give_up(f"time limit of {cfg.max_time:g} s reached")
+                break
+            nxt = sim.next_event_time()
+            if executor.status is ExecStatus.DONE:
+                t_next = min(nxt, cfg.max_time)  # idle until the next instruction
+            else:
+                t_next = min(t + cfg.tick, nxt, cfg.max_time)
+            sim.advance(t_next)
+            executor.update(t_next, sim.observe(t_next), sim.take_instructions())
+            t = t_next
+        success = executor.status is ExecStatus.DONE
+        time_cost = executor.accepted_at if success and executor.accepted_at is not None else t
+        log.emit(
+            t,
+            "episode_end",
+            success=success,
+            reason=executor.reason,
+            time_cost=round(time_cost, 6),
+            done=sorted(executor.monitor.done(executor.q)) if executor.monitor else [],
+        )
+        records = tuple(log.records)
+    return Episode(records, compute_metrics(records), seed)
