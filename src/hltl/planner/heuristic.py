@@ -17,7 +17,7 @@ from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
 from hltl.spec.monitor import DONE, MonitorState
-from hltl.spec.syntax import Atom
+from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 
 INF = math.inf
 
@@ -48,6 +48,13 @@ class Heuristic:
         self.n_robots = len(problem.robots)
         self._required_cache: dict[MonitorState, frozenset[Atom]] = {}
         self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
+        # composites that are positive and/or combinations of "F child": their truth depends only
+        # on which children are done (one-shot), so max/min over children is exact and cheap
+        self._mono: dict[str, _Mono] = {}
+        for name in problem.spec.composites:
+            tree = _monotone(problem.spec.formula(name), names)
+            if tree is not None:
+                self._mono[name] = tree
 
     def __call__(self, node: Node) -> float:
         locs, _, q = node
@@ -58,6 +65,10 @@ class Heuristic:
             state = q[i]
             if state == DONE:
                 h[name] = 0.0
+                continue
+            mono = self._mono.get(name)
+            if mono is not None:
+                h[name] = _mono_bound(mono, h, done)
                 continue
             costs: list[float] = []
             for kind, ref in props:
@@ -84,8 +95,8 @@ class Heuristic:
         best = 0.0
         graph = self.graph
         for r in range(self.n_robots):
-            per_obj: dict[int, float] = {}
-            head = tail = INF
+            # jobs of robot r: per object it must handle, (head, work, tail)
+            jobs: dict[int, list[float]] = {}
             for atom in atoms_:
                 g = graph.goal(atom)
                 if g is None:
@@ -93,21 +104,24 @@ class Heuristic:
                 load = graph.robot_load(atom, r)
                 if load is None:
                     continue
-                v = load[locs[g[0]]]
+                o = g[0]
+                v = load[locs[o]]
                 if v <= 0.0:
                     continue
-                if v > per_obj.get(g[0], 0.0):
-                    per_obj[g[0]] = v
                 heads, t = graph.head_tail(atom, r)
-                head = min(head, heads[locs[g[0]]])
-                tail = min(tail, t)
-            if not per_obj:
-                continue
-            # the robot's mandatory actions fill distinct steps; the first cannot start before
-            # some object reaches it, and after the last one that object still has to travel
-            total = head + sum(per_obj.values()) + tail
-            if total > best:
-                best = total
+                job = jobs.get(o)
+                if job is None:
+                    jobs[o] = [heads[locs[o]], v, t]
+                else:
+                    job[0] = min(job[0], heads[locs[o]])
+                    job[1] = max(job[1], v)
+                    job[2] = min(job[2], t)
+            if jobs:
+                # the robot's jobs fill distinct steps; the first cannot start before some object
+                # reaches it, and after the last one that object still has to travel
+                head = min(j[0] for j in jobs.values())
+                tail = min(j[2] for j in jobs.values())
+                best = max(best, head + sum(j[1] for j in jobs.values()) + tail)
         return best
 
     def _required_atoms(self, q: MonitorState) -> frozenset[Atom]:
@@ -122,6 +136,10 @@ class Heuristic:
             i, dfa, props = self._by_name[name]
             state = q[i]
             if state == DONE:
+                continue
+            mono = self._mono.get(name)
+            if mono is not None:
+                stack.extend(_mono_required(mono, self.done(q)))
                 continue
             for b in self._required_props(name, dfa, state):
                 kind, ref = props[b]
@@ -208,3 +226,58 @@ class Heuristic:
                     heapq.heappush(heap, (c, y))
         self._cache[key] = best
         return best
+
+
+# A monotone composite: ("F", child) | ("and", a, b) | ("or", a, b)
+_Mono = tuple[object, ...]
+
+
+def _monotone(f: Formula, names: set[str]) -> _Mono | None:
+    if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.name in names:
+        if not f.operand.args:
+            return ("F", f.operand.name)
+        return None
+    if isinstance(f, (And, Or)):
+        a, b = _monotone(f.left, names), _monotone(f.right, names)
+        if a is None or b is None:
+            return None
+        return ("and" if isinstance(f, And) else "or", a, b)
+    return None
+
+
+def _mono_bound(t: _Mono, h: dict[str, float], done: frozenset[str]) -> float:
+    if t[0] == "F":
+        child = t[1]
+        assert isinstance(child, str)
+        return 0.0 if child in done else h[child]
+    a, b = t[1], t[2]
+    assert isinstance(a, tuple) and isinstance(b, tuple)
+    if t[0] == "and":
+        return max(_mono_bound(a, h, done), _mono_bound(b, h, done))
+    return min(_mono_bound(a, h, done), _mono_bound(b, h, done))
+
+
+def _mono_required(t: _Mono, done: frozenset[str]) -> frozenset[str]:
+    """Children every way of satisfying ``t`` still needs (none once ``t`` is satisfied)."""
+    if t[0] == "F":
+        child = t[1]
+        assert isinstance(child, str)
+        return frozenset() if child in done else frozenset({child})
+    a, b = t[1], t[2]
+    assert isinstance(a, tuple) and isinstance(b, tuple)
+    ra, rb = _mono_required(a, done), _mono_required(b, done)
+    if t[0] == "and":
+        return ra | rb
+    if _mono_satisfied(a, done) or _mono_satisfied(b, done):
+        return frozenset()
+    return ra & rb
+
+
+def _mono_satisfied(t: _Mono, done: frozenset[str]) -> bool:
+    if t[0] == "F":
+        return t[1] in done
+    a, b = t[1], t[2]
+    assert isinstance(a, tuple) and isinstance(b, tuple)
+    if t[0] == "and":
+        return _mono_satisfied(a, done) and _mono_satisfied(b, done)
+    return _mono_satisfied(a, done) or _mono_satisfied(b, done)

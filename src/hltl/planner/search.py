@@ -13,6 +13,7 @@ from hltl.planner.explain import explain_infeasible
 from hltl.planner.heuristic import Heuristic
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
+from hltl.spec.monitor import DONE
 from hltl.spec.syntax import Atom
 
 ALGORITHMS = ("astar", "dijkstra")
@@ -27,6 +28,13 @@ class _Search:
         self.monitor = problem.monitor
         self._step_memo: dict[tuple[object, frozenset[Atom]], object] = {}
         self._done_memo: dict[object, frozenset[str]] = {}
+        # (child index, parent index), parents first: once a node is done its descendants can
+        # no longer matter, so they are marked done too and equivalent states merge
+        index = {n: i for i, n in enumerate(self.monitor.nodes)}
+        spec = problem.spec
+        self._links = tuple(
+            (index[c], index[spec.parent[c]]) for c in self.monitor.nodes if c in spec.parent
+        )
 
     def done(self, q: object) -> frozenset[str]:
         d = self._done_memo.get(q)
@@ -39,7 +47,11 @@ class _Search:
         key = (q, atoms)
         nq = self._step_memo.get(key)
         if nq is None:
-            nq = self.monitor.step(q, atoms)  # type: ignore[arg-type]
+            stepped = list(self.monitor.step(q, atoms))  # type: ignore[arg-type]
+            for c, parent in self._links:
+                if stepped[parent] == DONE:
+                    stepped[c] = DONE
+            nq = tuple(stepped)
             self._step_memo[key] = nq
         return nq
 
