@@ -112,7 +112,8 @@ class ExecutorConfig:
         predict_dt: spacing of forecast samples.
         intrusion_speed: hand speed (m/s) from which a motion counts as fast, i.e. subject to
             the intrusion check; 0 checks every motion.
-        max_failures: consecutive failed actions after which the executor gives up.
+        max_failures: failed actions on one object in a row (no success on it in between)
+            after which the executor gives up.
         max_wait: seconds the executor waits for the world to change (people to come back,
             robots to return, an intrusion risk to pass) before giving up.
         plan_latency: simulated seconds a critical-path planner call costs before the next
@@ -246,7 +247,7 @@ class Executor:
         self._touched: dict[str, float] = {}
         self._await_obs: float | None = None
         self._last_obs_t = -1.0
-        self._failures = 0
+        self._failures: dict[str, int] = {}
         self._last_failure = ""
         self._busy_until = 0.0
         self._waiting: str | None = None
@@ -415,14 +416,18 @@ class Executor:
             a = run.action
             if st.state is ActionState.DONE:
                 self._apply(run.transition, st.t)
-                self._failures = 0
+                self._failures.pop(a.object, None)
                 self.log.emit(
-                    self.t, "action_done", handle=run.handle.id, action=a.to_dict(), end=st.t
+                    self.t,
+                    "action_done",
+                    handle=run.handle.id,
+                    action=a.to_dict(),
+                    end=round(st.t, 6),
                 )
             elif st.state is ActionState.FAILED:
                 self._touched[a.object] = st.t
                 self._await_obs = max(self._await_obs or 0.0, st.t)
-                self._failures += 1
+                self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
                 self.log.emit(
                     self.t,
@@ -430,7 +435,7 @@ class Executor:
                     handle=run.handle.id,
                     action=a.to_dict(),
                     reason=st.reason,
-                    end=st.t,
+                    end=round(st.t, 6),
                 )
                 self._trigger.add("failure")
             else:
@@ -441,7 +446,7 @@ class Executor:
                     handle=run.handle.id,
                     action=a.to_dict(),
                     reason=st.reason,
-                    end=st.t,
+                    end=round(st.t, 6),
                 )
                 self._trigger.add("halt")
 
@@ -494,9 +499,11 @@ class Executor:
         self._steps += 1
         if not self._trigger:
             self._trigger.add("progress")
-        if self._failures >= self.config.max_failures:
+        stuck = sorted(o for o, n in self._failures.items() if n >= self.config.max_failures)
+        if stuck:
             self._give_up(
-                f"{self._failures} consecutive action failures (last: {self._last_failure})"
+                f"{self._failures[stuck[0]]} consecutive failed actions on {stuck[0]} "
+                f"(last: {self._last_failure})"
             )
 
     def _check_safety(self) -> None:

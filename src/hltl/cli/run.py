@@ -1,0 +1,193 @@
+"""``hltl run``: one closed-loop episode in the simulator, with a live timeline and metrics."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "run",
+        help="run one closed-loop episode in the simulator",
+        description="Execute an instruction or spec in a scene with the receding-horizon "
+        "executor against the simulator, injecting dynamic events. Prints a live timeline and "
+        "the episode's metrics. Exit 0 when every goal is met without violations, 1 otherwise.",
+    )
+    p.add_argument("--scene", required=True, type=Path, help="scene file (YAML or JSON)")
+    src = p.add_mutually_exclusive_group(required=True)
+    src.add_argument("--instruction", help="the task in English")
+    src.add_argument("--spec", type=Path, help="H-LTLf spec file (YAML or JSON)")
+    p.add_argument(
+        "--events", type=Path, help="events file (YAML): H-MOVE, O-MOVE, GOAL, RES, FAIL"
+    )
+    p.add_argument("--seed", type=int, default=0, help="seed of noise, failures and random walks")
+    p.add_argument("--log", type=Path, help="write the JSON Lines execution log here")
+    p.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
+    p.add_argument(
+        "--no-predict", action="store_true", help="no predictive planning or intrusion forecasts"
+    )
+    p.add_argument("--grounder", default="offline", help="grounder for instructions")
+    p.add_argument("--noise", type=float, default=0.0, help="perception noise (m, std. dev.)")
+    p.add_argument("--latency", type=float, default=0.0, help="perception latency (s)")
+    p.add_argument(
+        "--plan-latency",
+        type=float,
+        default=0.0,
+        help="simulated seconds each critical-path planner call costs",
+    )
+    p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from hltl.execution.executor import ExecutorConfig
+    from hltl.grounding import make_grounder
+    from hltl.sim.episode import EpisodeConfig, run_episode
+    from hltl.sim.events import load_events
+    from hltl.sim.simulator import PerceptionModel
+    from hltl.world.scene import load_scene
+
+    try:
+        config = EpisodeConfig(
+            max_time=args.max_time,
+            perception=PerceptionModel(noise=args.noise, latency=args.latency),
+            executor=ExecutorConfig(
+                predict=not args.no_predict,
+                intrusion=not args.no_predict,
+                plan_latency=args.plan_latency,
+            ),
+        )
+    except ValueError as exc:
+        raise HltlError(str(exc)) from None
+    scene = load_scene(args.scene)
+    spec = None
+    if args.spec is not None:
+        from hltl.spec.hierarchy import load_spec
+
+        spec = load_spec(args.spec)
+    events = load_events(args.events, scene) if args.events is not None else None
+    timeline = None if args.json else Timeline(scene)
+    episode = run_episode(
+        scene,
+        spec=spec,
+        instruction=args.instruction,
+        events=events,
+        seed=args.seed,
+        config=config,
+        grounder=make_grounder(args.grounder),
+        log_path=args.log,
+        on_record=None if timeline is None else timeline,
+    )
+    if args.json:
+        print(json.dumps(episode.metrics.to_dict()))
+    else:
+        print_metrics(episode.metrics.to_dict())
+    return 0 if episode.success else 1
+
+
+class Timeline:
+    """Prints the interesting log records as they happen."""
+
+    def __init__(self, scene: Any) -> None:
+        from rich.console import Console
+
+        self.scene = scene
+        self.console = Console(highlight=False)
+
+    def __call__(self, rec: dict[str, Any]) -> None:
+        line = describe_record(self.scene, rec)
+        if line is not None:
+            style, text = line
+            self.console.print(f"[dim]{rec['t']:7.2f}[/] [{style}]{rec['type']:<13}[/] {text}")
+
+
+def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
+    """(style, text) for a log record worth showing, or None."""
+    from hltl.cli.common import describe_action
+    from hltl.skills.library import Action
+
+    kind = rec["type"]
+
+    def act(d: dict[str, Any]) -> str:
+        return describe_action(scene, Action.from_dict(d))
+
+    if kind == "grounding":
+        if "error" in rec:
+            return "red", f"{rec['text']!r}: {rec['error']}"
+        return (
+            "cyan",
+            f"{rec['text']!r} → {rec['tokens']} tokens, {len(rec['spec']['formulas'])} formulas",
+        )
+    if kind == "replan":
+        if rec["status"] != "solved":
+            return "yellow", f"{rec['trigger']}: {rec['status']} ({rec.get('reason', '')})"
+        return (
+            "blue",
+            f"{rec['trigger']} ({rec['source']}): makespan {rec['makespan']:.2f} s, "
+            f"{len(rec['steps'])} steps, {rec['latency_ms']:.1f} ms",
+        )
+    if kind == "dispatch":
+        return "bold", " | ".join(act(a) for a in rec["actions"]) or "(empty step)"
+    if kind == "action_done":
+        return "green", act(rec["action"])
+    if kind in ("action_failed", "action_halted"):
+        return "red", f"{act(rec['action'])}: {rec['reason']}"
+    if kind == "halt":
+        return "bold red", f"{rec['kind']}: {rec['reason']}"
+    if kind == "takeover":
+        return (
+            "magenta",
+            f"predicted plan from t={rec['predicted_at']:.2f} takes over ({rec['context']})",
+        )
+    if kind == "predict":
+        people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec["humans"].items())
+        return "magenta", f"background plan for {people}: {rec['status']}"
+    if kind == "monitor" and rec["fired"]:
+        return "green", f"fired {', '.join(rec['fired'])}" + (
+            " — task complete" if rec["accepted"] else ""
+        )
+    if kind == "human_move":
+        return "yellow", f"{rec['human']} walks to {rec['to']} at {rec['speed']} m/s"
+    if kind == "object_move":
+        return "yellow", f"{rec['object']} moved to {rec['to']}" + (
+            "" if rec["applied"] else f" (ignored: {rec['reason']})"
+        )
+    if kind == "object_drop":
+        return "yellow", f"{rec['object']} dropped at {rec['position']}"
+    if kind in ("robot_down", "robot_up"):
+        return "yellow", rec["robot"] + (
+            f" until t={rec['until']:.2f}" if kind == "robot_down" else ""
+        )
+    if kind == "instruction":
+        return "cyan", repr(rec["text"])
+    if kind in ("wait", "give_up"):
+        return "yellow" if kind == "wait" else "bold red", rec["reason"]
+    if kind == "violation":
+        return "bold red", f"{act(rec['action'])}: {rec['reason']}"
+    if kind == "episode_end":
+        return ("bold green" if rec["success"] else "bold red"), rec["reason"]
+    return None
+
+
+def print_metrics(metrics: dict[str, Any]) -> None:
+    """The metrics as a two-column table."""
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title="metrics", title_justify="left")
+    table.add_column("metric")
+    table.add_column("value", justify="right")
+    for k, v in metrics.items():
+        if isinstance(v, float):
+            text = f"{v:.2f}"
+        elif v is None:
+            text = "—"
+        else:
+            text = str(v)
+        table.add_row(k, text)
+    Console().print(table)
