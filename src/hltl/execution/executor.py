@@ -528,32 +528,37 @@ class Executor:
                 hazards.append(h)
         if not hazards:
             return
+        # Halt only the endangered actions: the others' preconditions still hold, so they run
+        # on and the step ends (and the suffix is replanned) when they finish.
         first = hazards[0]
-        active = [r for r in self._running if r.status is None]
-        for run in active:
-            self.driver.halt(run.handle, self.t, first.reason)
-            run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, first.reason)
+        endangered = {h.action: h for h in hazards}
+        halted = [r for r in self._running if r.status is None and r.action in endangered]
+        for run in halted:
+            reason = endangered[run.action].reason
+            self.driver.halt(run.handle, self.t, reason)
+            run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
             self._touched[run.action.object] = self.t
             self.log.emit(
                 self.t,
                 "action_halted",
                 handle=run.handle.id,
                 action=run.action.to_dict(),
-                reason=first.reason,
+                reason=reason,
             )
         self.log.emit(
             self.t,
             "halt",
             kind=first.kind,
             reason=first.reason,
-            actions=[r.action.to_dict() for r in active],
+            actions=[r.action.to_dict() for r in halted],
             hazards=[
                 {"action": h.action.to_dict(), "kind": h.kind, "reason": h.reason} for h in hazards
             ],
             done=sorted(self._done()),
         )
         self._trigger.add(f"halt:{first.kind}")
-        self._end_step()
+        if all(r.status is not None for r in self._running):
+            self._end_step()
 
     def _intrusion_on(self) -> bool:
         return self.config.intrusion and self.predictor is not None
