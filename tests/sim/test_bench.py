@@ -1,0 +1,34 @@
+"""``hltl bench planner`` runs the catalogue and records a Markdown section."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from hltl.cli.bench import write_section
+from hltl.cli.main import main
+
+
+def test_bench_planner_writes_its_section(tmp_path: Path) -> None:
+    out = tmp_path / "benchmarks.md"
+    out.write_text("# Benchmarks\n\nintro stays\n")
+    assert main(["bench", "planner", "--repeats", "1", "--seeds", "1", "--write", str(out)]) == 0
+    text = out.read_text()
+    assert "intro stays" in text
+    assert "Command: `hltl bench planner --repeats 1 --seeds 1" in text
+    for config in ("1-1", "4-2", "4-4-line", "4-4-square"):
+        assert f"| {config} |" in text
+    assert "| solved |" in text and "| timeout |" not in text
+
+
+def test_write_section_replaces_in_place(tmp_path: Path) -> None:
+    path = tmp_path / "b.md"
+    write_section(path, "x", "first")
+    write_section(path, "y", "other")
+    write_section(path, "x", "second")
+    text = path.read_text()
+    assert "second" in text and "first" not in text and "other" in text
+    assert text.index("second") < text.index("other")
+
+
+def test_bad_scaling_argument_is_a_usage_error(capsys: object) -> None:
+    assert main(["bench", "planner", "--scaling", "8by8", "--seeds", "1"]) == 1
