@@ -6,9 +6,12 @@ it polls its robots, checks safety, plans and dispatches. It never advances time
 same executor runs against the simulator (:mod:`hltl.sim.episode`) and against real drivers.
 
 Belief. The executor's world w_t merges perception with what its own actions did: people's
-positions come from every observation; an object's place and position come from an observation
-only if it was taken after the executor last touched the object (dispatched, completed or failed
-an action on it), because perception lags; hands come from the observation (proprioception).
+positions come from every observation; where an object is comes from the executor's own
+bookkeeping (its completed actions), except that perception updates resting objects (people move
+them) and, after a failed action, decides alone where the object ended up. An observation sensed
+before the executor last touched an object (dispatched, completed or failed an action on it) is
+stale for that object, because perception lags. Hands come from the observation
+(proprioception).
 """
 
 from __future__ import annotations
@@ -245,6 +248,7 @@ class Executor:
         self._steps = 0
         self._trigger = _Trigger()
         self._touched: dict[str, float] = {}
+        self._reobserve: dict[str, float] = {}
         self._await_obs: float | None = None
         self._last_obs_t = -1.0
         self._failures: dict[str, int] = {}
@@ -372,8 +376,13 @@ class Executor:
         for hid, pos in obs.humans:
             w = w.with_human(hid, pos)
         for oid, st in obs.objects:
-            if obs.t >= self._touched.get(oid, -1.0) - 1e-12:
-                w = w.with_object(oid, st)
+            if obs.t < self._touched.get(oid, -1.0) - 1e-12:
+                continue  # sensed before our last action on it: stale
+            if oid in self._reobserve:
+                w = w.with_object(oid, st)  # after a failure only perception knows where it is
+                del self._reobserve[oid]
+            elif w.object_status(oid).loc.kind in ("rest", "on") and st.loc.kind in ("rest", "on"):
+                w = w.with_object(oid, st)  # people move resting objects (O-MOVE)
         for rid, pos in obs.hands:
             w = w.with_hand(rid, pos)
         self.world = w.with_time(self.t)
@@ -426,6 +435,7 @@ class Executor:
                 )
             elif st.state is ActionState.FAILED:
                 self._touched[a.object] = st.t
+                self._reobserve[a.object] = st.t
                 self._await_obs = max(self._await_obs or 0.0, st.t)
                 self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
