@@ -81,7 +81,7 @@ CATALOGUE_SEED = 0
 GROUP = 4  # most children per composite formula: a flat "F p100 & … & F p1600" DFA is huge
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Scenario:
     """A named, tagged planning problem.
 
