@@ -15,5 +15,5 @@ if [ ! -x .venv/bin/python ]; then
   python3 -m venv .venv
 fi
 .venv/bin/python -m pip install -q --disable-pip-version-check --upgrade pip >/dev/null
-.venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test,viz]'
+.venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test,viz,llm]'
 echo "setup: ready (.venv/bin/hltl)" >&2
