@@ -115,7 +115,7 @@ def test_bad_files(cell: Scene, tmp_path: Path) -> None:
         events_from_dict({"event": []}, cell)
     p = tmp_path / "bad.yaml"
     p.write_text("events: [\n")
-    with pytest.raises(EventsError, match="bad.yaml: not valid YAML"):
+    with pytest.raises(EventsError, match=r"bad\.yaml: not valid YAML"):
         load_events(p, cell)
     with pytest.raises(EventsError, match="cannot read"):
         load_events(tmp_path / "missing.yaml", cell)

@@ -626,6 +626,7 @@ class Executor:
             if self.monitor.accepted(self.q):
                 self.status = ExecStatus.DONE
                 self.reason = "all goals met"
+                self._trigger.take()
                 return
             if self.t < self._busy_until - 1e-12:
                 return
