@@ -212,3 +212,16 @@ def test_catalogue_scenarios_with_a_wandering_person(scenario: Any) -> None:
             # a person wandering out of every workspace can make a delivery impossible for a
             # while; the executor must then say so
             assert _of(ep, "give_up") or _of(ep, "wait"), ep.metrics.reason
+
+
+def test_replan_bench_rows() -> None:
+    from hltl.sim.replan_bench import bench_replan, format_rows
+
+    rows = bench_replan([(2, 2, None)], [0])
+    assert [(r.config, r.predict, r.episodes) for r in rows] == [
+        ("2-2", True, 1),
+        ("2-2", False, 1),
+    ]
+    assert all(r.successes == 1 and r.median_ms is not None for r in rows)
+    assert rows[1].takeovers == 0  # no prediction, no takeover
+    assert format_rows(rows).count("\n") == 3

@@ -1,0 +1,124 @@
+"""Replanning latency of the closed loop per paper configuration (``hltl bench replan``).
+
+Each run is one episode of a generated scenario in which a person walks across the cell midway,
+so the executor halts, replans and (with prediction) takes plans over. Latency is the planner's
+wall-clock time on the critical path (``replan`` records after the initial plan; grounding/LLM
+time is not part of it).
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
+
+from hltl.execution.executor import ExecutorConfig
+from hltl.sim.episode import Episode, EpisodeConfig, run_episode
+from hltl.sim.events import EventSchedule, HumanMove
+from hltl.sim.metrics import percentile
+from hltl.sim.scenarios import Scenario, generate
+
+Config = tuple[int, int, str | None]  # (deliveries, robots, layout)
+
+
+@dataclass(frozen=True, slots=True)
+class ReplanRow:
+    """Replanning figures of one configuration and variant, pooled over seeds."""
+
+    config: str
+    predict: bool
+    episodes: int
+    successes: int
+    replans: int
+    takeovers: int
+    median_ms: float | None
+    p95_ms: float | None
+    max_ms: float | None
+
+
+def crossing_walk(scenario: Scenario, start: float = 0.5, speed: float = 1.0) -> EventSchedule:
+    """The first person walks to where the last person stands (or across the cell if alone)."""
+    humans = scenario.scene.humans
+    first = humans[0]
+    if len(humans) > 1:
+        target = humans[-1].position
+    else:
+        xs = [r.base[0] for r in scenario.scene.robots]
+        target = (2 * statistics.fmean(xs) - first.position[0], first.position[1], 0.0)
+    return EventSchedule((HumanMove(start, first.id, target, speed),))
+
+
+def _latencies(ep: Episode) -> list[float]:
+    return [
+        float(r["latency_ms"])
+        for r in ep.records
+        if r["type"] == "replan" and r.get("trigger") != "initial"
+    ]
+
+
+def bench_replan(
+    configs: Iterable[Config],
+    seeds: Sequence[int],
+    *,
+    variants: Sequence[bool] = (True, False),
+    on_row: Callable[[ReplanRow], None] | None = None,
+) -> list[ReplanRow]:
+    """Median and p95 replanning latency per configuration, with and without prediction.
+
+    Args:
+        configs: (deliveries, robots, layout) triples, e.g. ``(4, 4, "square")``.
+        seeds: scenario and episode seeds; one episode per seed, configuration and variant.
+        variants: which ``predict`` settings to run.
+        on_row: called with each row as soon as it is ready.
+    """
+    rows: list[ReplanRow] = []
+    for n_task, n_robot, layout in configs:
+        scenarios = [generate(n_task, n_robot, layout, seed) for seed in seeds]
+        for predict in variants:
+            lat: list[float] = []
+            succ = replans = takeovers = 0
+            cfg = EpisodeConfig(
+                max_time=60.0, executor=ExecutorConfig(predict=predict, intrusion=predict)
+            )
+            for seed, sc in zip(seeds, scenarios, strict=True):
+                ep = run_episode(
+                    sc.scene, spec=sc.spec, events=crossing_walk(sc), seed=seed, config=cfg
+                )
+                lat += _latencies(ep)
+                succ += int(ep.success)
+                replans += ep.metrics.replans
+                takeovers += ep.metrics.takeovers
+            row = ReplanRow(
+                config=scenarios[0].name,
+                predict=predict,
+                episodes=len(scenarios),
+                successes=succ,
+                replans=replans,
+                takeovers=takeovers,
+                median_ms=statistics.median(lat) if lat else None,
+                p95_ms=percentile(lat, 95.0) if lat else None,
+                max_ms=max(lat) if lat else None,
+            )
+            rows.append(row)
+            if on_row is not None:
+                on_row(row)
+    return rows
+
+
+def _fmt(x: float | None) -> str:
+    return "—" if x is None or math.isnan(x) else f"{x:.2f}"
+
+
+def format_rows(rows: Sequence[ReplanRow]) -> str:
+    """A Markdown table of the rows (for docs/benchmarks.md)."""
+    lines = [
+        "| config | predict | episodes | success | replans | takeovers | median ms | p95 ms |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append(
+            f"| {r.config} | {'yes' if r.predict else 'no'} | {r.episodes} | {r.successes} | "
+            f"{r.replans} | {r.takeovers} | {_fmt(r.median_ms)} | {_fmt(r.p95_ms)} |"
+        )
+    return "\n".join(lines)
