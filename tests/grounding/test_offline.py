@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -11,8 +13,9 @@ from hltl.grounding import Grounder, make_grounder
 from hltl.grounding.lexicon import Lexicon, lex, tokenize
 from hltl.grounding.offline import OfflineGrounder, parse_instruction
 from hltl.grounding.tree import Group, Node, Task, decode, encode, normalise
+from hltl.grounding.tree import tasks as tasks_of
 from hltl.spec.hierarchy import spec_from_formulas, spec_to_dict
-from hltl.world.scene import Scene, scene_from_dict
+from hltl.world.scene import Scene, load_scene, scene_from_dict
 
 
 def test_offline_grounder_is_a_grounder() -> None:
@@ -145,3 +148,79 @@ def test_normalise_flattens_same_operators() -> None:
         "and", (a, Group("or", (b, c)))
     )
     assert normalise(Group("or", (a,))) == a
+
+
+VOCAB = [
+    "give",
+    "hand",
+    "bring",
+    "put",
+    "place",
+    "pick",
+    "up",
+    "it",
+    "the",
+    "a",
+    "A",
+    "B",
+    "C",
+    "Alice",
+    "Bob",
+    "Carol",
+    "Person",
+    "cup",
+    "bottle",
+    "chips",
+    "apple",
+    "mug",
+    "mugs",
+    "shelf",
+    "table",
+    "and",
+    "or",
+    ",",
+    ".",
+    ";",
+    "either",
+    "both",
+    "then",
+    "first",
+    "after",
+    "before",
+    "once",
+    "when",
+    "to",
+    "for",
+    "on",
+    "onto",
+    "instead",
+    "cancel",
+    "also",
+    "as",
+    "well",
+    "as",
+    "has",
+    "wants",
+    "is",
+    "been",
+    "her",
+    "not",
+    "r1",
+    "red",
+    "meanwhile",
+]
+
+
+CELL = Path(__file__).parents[2] / "examples" / "scenes" / "grounding_cell.yaml"
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(VOCAB), min_size=0, max_size=12))
+def test_any_text_parses_or_says_why(words: list[str]) -> None:
+    scene = load_scene(CELL)
+    try:
+        node = parse_instruction(" ".join(words), scene)
+    except GroundingError as exc:
+        assert str(exc)  # a reason, never an empty message
+    else:
+        assert all(t.obj in scene.object_ids for t in tasks_of(node))

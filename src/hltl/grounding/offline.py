@@ -278,6 +278,8 @@ class _Parser:
                 continue
             pieces[-1].append(it)
         if not pieces[-1]:
+            if not seps:
+                raise GroundingError(f"no task in {_text(items)!r}")
             raise GroundingError(f"{_text(items)!r} ends with {seps[-1]!r}: something is missing")
         frags: list[_Raw] = [self.fragment(p) for p in pieces]
         node, _ = self._coord_list(frags, seps, markers, 0, None, items)
@@ -522,12 +524,13 @@ class _Parser:
                     raise GroundingError(
                         f"{f.text!r} names no object; {self.lex.listing('object')}"
                     )
-            if f.target is None:
+            picks = f.verb is not None and VERB_CLASS[f.verb] == "pick"
+            if f.target is None and not picks:
                 f.target = self._target_from_right(k)
             if f.target is None and f.antecedent:
                 f.pick = True
                 continue
-            if f.target is None and f.verb is not None and VERB_CLASS[f.verb] == "pick":
+            if f.target is None and picks:
                 raise GroundingError(
                     f"{f.text!r} is not a task by itself: say who gets it or where it goes"
                 )
