@@ -211,13 +211,13 @@ VOCAB = [
 ]
 
 
-CELL = Path(__file__).parents[2] / "examples" / "scenes" / "grounding_cell.yaml"
+SCENE = load_scene(Path(__file__).parents[2] / "examples" / "scenes" / "grounding_cell.yaml")
 
 
 @settings(max_examples=300, deadline=None)
 @given(st.lists(st.sampled_from(VOCAB), min_size=0, max_size=12))
 def test_any_text_parses_or_says_why(words: list[str]) -> None:
-    scene = load_scene(CELL)
+    scene = SCENE
     try:
         node = parse_instruction(" ".join(words), scene)
     except GroundingError as exc:
