@@ -225,3 +225,18 @@ def test_replan_bench_rows() -> None:
     assert all(r.successes == 1 and r.median_ms is not None for r in rows)
     assert rows[1].takeovers == 0  # no prediction, no takeover
     assert format_rows(rows).count("\n") == 3
+
+
+def test_planning_latency_is_charged_and_takeovers_save_it(cell: Scene) -> None:
+    events = load_events(EVENTS / "fig1.yaml", cell)
+    costs = {}
+    for predict in (True, False):
+        cfg = EpisodeConfig(
+            executor=ExecutorConfig(predict=predict, intrusion=predict, plan_latency=0.2)
+        )
+        ep = run_checked(cell, instruction=EXAMPLES["fig1"], events=events, config=cfg)
+        assert ep.success
+        costs[predict] = ep.metrics.time_cost
+        # every critical-path planner call delays the next dispatch by 0.2 simulated seconds
+        assert ep.metrics.time_cost >= 2.0 + 0.2 * (ep.metrics.planner_calls - 1)
+    assert costs[True] < costs[False]
