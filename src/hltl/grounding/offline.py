@@ -67,7 +67,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     items = lex(text, lexicon)
     if not [it for it in items if it.kind != "punct"]:
         raise GroundingError("the instruction is empty")
-    _refuse(items, lexicon, text)
+    _refuse(items, lexicon)
     parser = _Parser(lexicon)
     raw = parser.instruction(items)
     node = parser.resolve(raw)
@@ -78,7 +78,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     return node
 
 
-def _refuse(items: list[Item], lexicon: Lexicon, text: str) -> None:
+def _refuse(items: list[Item], lexicon: Lexicon) -> None:
     """Reject what the grammar does not cover instead of guessing around it."""
     for it in items:
         if it.kind != "word" and it.kind != "ent":

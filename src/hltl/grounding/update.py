@@ -406,7 +406,7 @@ def _priority(running: HSpec, hits: Sequence[str], done: frozenset[str]) -> Grou
     try:
         for name in hits:
             _remove(tree, running, name)
-            tree.texts[name] = running_text(running, name)
+            tree.texts[name] = _running_text(running, name)
     except GroundingError:
         raise GroundingError(
             f"{', '.join(hits)} {'is' if len(hits) == 1 else 'are'} all that is left to do; "
@@ -422,7 +422,7 @@ def _priority(running: HSpec, hits: Sequence[str], done: frozenset[str]) -> Grou
     return Grounding(spec, _ids_of(running, hits), update=_info("priority", running, spec, done))
 
 
-def running_text(spec: HSpec, name: str) -> str:
+def _running_text(spec: HSpec, name: str) -> str:
     from hltl.spec.printer import to_string
 
     return to_string(spec.formula(name))
