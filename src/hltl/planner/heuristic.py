@@ -48,9 +48,18 @@ class Heuristic:
         self.n_robots = len(problem.robots)
         self._required_cache: dict[MonitorState, frozenset[Atom]] = {}
         self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
+        self._load_tables: dict[
+            Atom, tuple[int, list[tuple[int, list[float], list[float], float]]] | None
+        ] = {}
         # composites that are positive and/or combinations of "F child": their truth depends only
         # on which children are done (one-shot), so max/min over children is exact and cheap
         self._mono: dict[str, _Mono] = {}
+        self._single: dict[str, Atom] = {}
+        for name in problem.spec.leaves:
+            f = problem.spec.formula(name)
+            if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.args:
+                self._single[name] = f.operand
+        self._memo: dict[tuple[tuple[int, ...], MonitorState], float] = {}
         for name in problem.spec.composites:
             tree = _monotone(problem.spec.formula(name), names)
             if tree is not None:
@@ -58,6 +67,15 @@ class Heuristic:
 
     def __call__(self, node: Node) -> float:
         locs, _, q = node
+        key = (locs, q)
+        hit = self._memo.get(key)
+        if hit is not None:
+            return hit
+        value = self._evaluate(locs, q)
+        self._memo[key] = value
+        return value
+
+    def _evaluate(self, locs: tuple[int, ...], q: MonitorState) -> float:
         done = self.done(q)
         h: dict[str, float] = {}
         atom_time = self.graph.atom_time
@@ -69,6 +87,11 @@ class Heuristic:
             mono = self._mono.get(name)
             if mono is not None:
                 h[name] = _mono_bound(mono, h, done)
+                continue
+            single = self._single.get(name)
+            if single is not None:
+                # a leaf "F a" that has not fired: a has not happened yet
+                h[name] = atom_time(single, locs)
                 continue
             costs: list[float] = []
             for kind, ref in props:
@@ -92,37 +115,56 @@ class Heuristic:
         atoms_ = self._required_atoms(q)
         if not atoms_:
             return 0.0
-        best = 0.0
-        graph = self.graph
-        for r in range(self.n_robots):
-            # jobs of robot r: per object it must handle, (head, work, tail)
-            jobs: dict[int, list[float]] = {}
-            for atom in atoms_:
-                g = graph.goal(atom)
-                if g is None:
-                    continue
-                load = graph.robot_load(atom, r)
-                if load is None:
-                    continue
-                o = g[0]
-                v = load[locs[o]]
+        # jobs per robot: per object it must handle, [head, work, tail]
+        jobs: dict[int, dict[int, list[float]]] = {}
+        for atom in atoms_:
+            table = self._load_table(atom)
+            if table is None:
+                continue
+            o, rows = table
+            loc = locs[o]
+            for r, load, heads, tail in rows:
+                v = load[loc]
                 if v <= 0.0:
                     continue
-                heads, t = graph.head_tail(atom, r)
-                job = jobs.get(o)
+                mine = jobs.setdefault(r, {})
+                job = mine.get(o)
                 if job is None:
-                    jobs[o] = [heads[locs[o]], v, t]
+                    mine[o] = [heads[loc], v, tail]
                 else:
-                    job[0] = min(job[0], heads[locs[o]])
+                    job[0] = min(job[0], heads[loc])
                     job[1] = max(job[1], v)
-                    job[2] = min(job[2], t)
-            if jobs:
-                # the robot's jobs fill distinct steps; the first cannot start before some object
-                # reaches it, and after the last one that object still has to travel
-                head = min(j[0] for j in jobs.values())
-                tail = min(j[2] for j in jobs.values())
-                best = max(best, head + sum(j[1] for j in jobs.values()) + tail)
+                    job[2] = min(job[2], tail)
+        best = 0.0
+        for mine in jobs.values():
+            # the robot's jobs fill distinct steps; the first cannot start before some object
+            # reaches it, and after the last one that object still has to travel
+            head = min(j[0] for j in mine.values())
+            tail = min(j[2] for j in mine.values())
+            best = max(best, head + sum(j[1] for j in mine.values()) + tail)
         return best
+
+    def _load_table(
+        self, atom: Atom
+    ) -> tuple[int, list[tuple[int, list[float], list[float], float]]] | None:
+        """The atom's object and, for each robot that some route to it needs, its load per
+        place, head per place and tail (computed once per atom)."""
+        if atom in self._load_tables:
+            return self._load_tables[atom]
+        graph = self.graph
+        g = graph.goal(atom)
+        table: tuple[int, list[tuple[int, list[float], list[float], float]]] | None = None
+        if g is not None:
+            rows = []
+            for r in range(self.n_robots):
+                load = graph.robot_load(atom, r)
+                if load is None or not any(0.0 < v < INF for v in load):
+                    continue
+                heads, tail = graph.head_tail(atom, r)
+                rows.append((r, load, heads, tail))
+            table = (g[0], rows)
+        self._load_tables[atom] = table
+        return table
 
     def _required_atoms(self, q: MonitorState) -> frozenset[Atom]:
         """Predicate atoms that every accepting continuation from ``q`` must make true."""
