@@ -32,3 +32,16 @@ def test_write_section_replaces_in_place(tmp_path: Path) -> None:
 
 def test_bad_scaling_argument_is_a_usage_error(capsys: object) -> None:
     assert main(["bench", "planner", "--scaling", "8by8", "--seeds", "1"]) == 1
+
+
+def test_bench_replan_writes_its_section(tmp_path: Path) -> None:
+    out = tmp_path / "benchmarks.md"
+    args = ["bench", "replan", "--seeds", "1", "--configs", "1-2,2-4-line", "--write", str(out)]
+    assert main(args) == 0
+    text = out.read_text()
+    assert "<!-- replan:begin -->" in text and "Command: `hltl bench replan --seeds 1" in text
+    assert "| 1-2 | yes | 1 | 1 |" in text and "| 2-4-line | no | 1 | 1 |" in text
+
+
+def test_bench_replan_rejects_unknown_configs() -> None:
+    assert main(["bench", "replan", "--configs", "9-9"]) == 1

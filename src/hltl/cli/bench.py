@@ -31,6 +31,16 @@ def register(sub: Any) -> None:
     pl.add_argument("--write", type=Path, help="update this Markdown file's planner section")
     pl.set_defaults(func=run_planner)
 
+    rp = bsub.add_parser("replan", help="closed-loop replanning latency per paper configuration")
+    rp.add_argument("--seeds", type=int, default=5, help="episodes per configuration and variant")
+    rp.add_argument(
+        "--configs",
+        default="",
+        help="comma-separated names such as 4-4-line,4-4-square (default: all paper configs)",
+    )
+    rp.add_argument("--write", type=Path, help="update this Markdown file's replan section")
+    rp.set_defaults(func=run_replan)
+
 
 def run_planner(args: argparse.Namespace) -> int:
     from rich.console import Console
@@ -103,6 +113,53 @@ def run_planner(args: argparse.Namespace) -> int:
             + format_planner_table(rows)
         )
         write_section(args.write, "planner", body)
+        print(f"wrote {args.write}", file=sys.stderr)
+    return 0
+
+
+def run_replan(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    from hltl.sim.replan_bench import ReplanRow, bench_replan, format_rows
+    from hltl.sim.scenarios import PAPER_CONFIGS, scenario_name
+
+    if args.seeds < 1:
+        raise HltlError("--seeds must be at least 1")
+    by_name = {scenario_name(*c): c for c in PAPER_CONFIGS}
+    wanted = [c.strip() for c in args.configs.split(",") if c.strip()] or list(by_name)
+    unknown = [c for c in wanted if c not in by_name]
+    if unknown:
+        raise HltlError(
+            f"--configs: unknown configuration {unknown[0]!r}; expected one of "
+            + ", ".join(by_name)
+        )
+    console = Console(stderr=True)
+
+    def show(row: ReplanRow) -> None:
+        med = "—" if row.median_ms is None else f"{row.median_ms:.2f}"
+        p95 = "—" if row.p95_ms is None else f"{row.p95_ms:.2f}"
+        console.print(
+            f"  {row.config:>14} predict={'yes' if row.predict else 'no ':3}  "
+            f"success {row.successes}/{row.episodes}  replans {row.replans:3d}  "
+            f"median {med} ms  p95 {p95} ms"
+        )
+
+    rows = bench_replan([by_name[c] for c in wanted], list(range(args.seeds)), on_row=show)
+    table = format_rows(rows)
+    print(table)
+    if args.write is not None:
+        command = (
+            f"hltl bench replan --seeds {args.seeds}"
+            + (f" --configs {args.configs}" if args.configs else "")
+            + f" --write {shlex.quote(str(args.write))}"
+        )
+        body = (
+            f"Command: `{command}`  \n"
+            f"Machine: {platform.machine()}, Python {platform.python_version()}, {_cpus()} cores. "
+            "Latency is the planner's wall-clock time per replan on the critical path (LLM time "
+            "excluded); each episode has a person walking across the cell midway.\n\n" + table
+        )
+        write_section(args.write, "replan", body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
 
