@@ -88,6 +88,11 @@ def _refuse(items: list[Item], lexicon: Lexicon) -> None:
                 f"negation ({it.text!r}) is not supported: say what to do; to drop a running "
                 "task, say 'cancel …'"
             )
+        if it.lemma == "respectively":
+            raise GroundingError(
+                "'respectively' is not supported: pair them up, e.g. 'give A the cup and B the "
+                "chips'"
+            )
         if it.lemma == "if":
             raise GroundingError(f"conditions ({it.text!r}) are not supported: say what to do")
         if it.lemma == "all":
@@ -200,6 +205,8 @@ class _Parser:
             node = self.sentence(body)
             if result is None:
                 result = node
+            elif conn == "prior":  # "… Before that, Y.": Y first
+                result = _RawGroup("seq", [node, result])
             else:
                 result = _RawGroup("seq" if conn == "then" else "and", [result, node])
         if result is None:
@@ -228,7 +235,7 @@ class _Parser:
         current: list[Item] = []
         conn = "then"
         for it in items:
-            if _is(it, "then", "after", "before", "once"):
+            if _is(it, "then", "after", "before", "once", "prior"):
                 while current and _is(current[-1], ",", "and", "also"):
                     current.pop()  # ", and then": the separator belongs to the connector
                 if current or segments:
@@ -248,7 +255,7 @@ class _Parser:
             node = self.coord(seg)
             if result is None:
                 result = node
-            elif conn in ("after", "once"):
+            elif conn in ("after", "once", "prior"):
                 result = _RawGroup("seq", [node, result])
             else:  # then, before
                 result = _RawGroup("seq", [result, node])
@@ -257,6 +264,11 @@ class _Parser:
 
     # -- coordination ---------------------------------------------------------------------------
     def coord(self, items: list[Item]) -> _Raw:
+        in_order = any(_is(it, "in_order") for it in items)
+        if in_order:  # "give A the cup and B the chips, in that order": the list is a sequence
+            items = [it for it in items if not _is(it, "in_order")]
+            while items and _is(items[-1], ",", "and"):
+                items.pop()
         pieces: list[list[Item]] = [[]]
         seps: list[str] = []
         markers: list[str | None] = [None]
@@ -283,6 +295,10 @@ class _Parser:
             raise GroundingError(f"{_text(items)!r} ends with {seps[-1]!r}: something is missing")
         frags: list[_Raw] = [self.fragment(p) for p in pieces]
         node, _ = self._coord_list(frags, seps, markers, 0, None, items)
+        if in_order:
+            if not isinstance(node, _RawGroup) or node.op != "and":
+                raise GroundingError(f"'in that order' needs a list of tasks in {_text(items)!r}")
+            node.op = "seq"
         return node
 
     def _coord_list(
@@ -314,6 +330,8 @@ class _Parser:
             if word is not None and not _continues(seps, k - 1, word):
                 break
             ops.append(seps[k - 1])
+        if bracket == "both" and len(children) == 1 and _plural(children[0]):
+            return children[0], k  # "put both mugs on the table"
         if word is not None and (len(children) < 2 or word not in ops):
             raise GroundingError(f"{bracket!r} without {word!r} in {_text(items)!r}")
         if len(children) == 1:
@@ -610,6 +628,10 @@ class _Parser:
 # -- helpers -------------------------------------------------------------------------------------
 
 
+def _plural(node: _Raw) -> bool:
+    return isinstance(node, _Frag) and node.objects is not None and len(node.objects) > 1
+
+
 def _acting(f: _Frag) -> bool:
     """Whether a fragment's verb can be carried over to a later verbless one."""
     return f.verb is not None and VERB_CLASS[f.verb] != "pick"
@@ -631,9 +653,9 @@ def _leading_connector(items: list[Item]) -> tuple[list[Item], str]:
     """Strip 'Then', 'Also', 'And' … from the start of a sentence; return how it attaches."""
     conn = "and"
     k = 0
-    while k < len(items) and _is(items[k], "then", "also", "and", ",", "filler"):
-        if items[k].lemma == "then":
-            conn = "then"
+    while k < len(items) and _is(items[k], "then", "prior", "also", "and", ",", "filler"):
+        if items[k].lemma in ("then", "prior"):
+            conn = items[k].lemma
         k += 1
     return items[k:], conn
 
