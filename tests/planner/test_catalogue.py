@@ -40,3 +40,17 @@ def test_generated_paper_configs_agree(tasks: int, robots: int, layout: str, see
     assert a.solved and d.solved
     assert a.makespan == pytest.approx(d.makespan)
     check_plan(sc.scene, sc.spec, a.to_dict())
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_pairwise_bound_agrees_on_larger_lines(seed: int) -> None:
+    from hltl.planner.problem import Problem
+    from hltl.planner.search import search
+
+    sc = generate(5, 5, "line", seed)
+    with_pairs = search(Problem(sc.scene, sc.spec), pairs_after=0)
+    without = search(Problem(sc.scene, sc.spec), pairs_after=10**9)
+    assert with_pairs.solved and without.solved
+    assert with_pairs.makespan == pytest.approx(without.makespan)
+    assert with_pairs.stats.expanded <= without.stats.expanded
+    check_plan(sc.scene, sc.spec, with_pairs.to_dict())

@@ -48,3 +48,37 @@ def test_dijkstra_matches_astar(seed: int) -> None:
     if a.solved:
         assert a.makespan == pytest.approx(d.makespan)
         check_plan(scene, spec, d.to_dict())
+
+
+@pytest.mark.parametrize("seed", range(0, 300, 3))
+def test_pairwise_bound_keeps_astar_exact(seed: int) -> None:
+    # the pairwise bound only switches on for hard instances; force it from the first node
+    from hltl.planner.problem import Problem
+    from hltl.planner.search import search
+
+    scene_d, spec_d = random_instance(seed)
+    scene = scene_from_dict(scene_d)
+    spec = spec_from_dict(spec_d)
+    expected = optimal_makespan(scene, spec)
+    res = search(Problem(scene, spec), pairs_after=0)
+    if expected is None:
+        assert res.status is PlanStatus.INFEASIBLE
+    else:
+        assert res.makespan is not None
+        assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
+        check_plan(scene, spec, res.to_dict())
+
+
+@pytest.mark.parametrize("seed", range(2000, 2030))
+def test_pairwise_bound_on_four_robot_instances(seed: int) -> None:
+    from hltl.planner.problem import Problem
+    from hltl.planner.search import search
+
+    scene_d, spec_d = random_instance(seed, max_robots=4, max_objects=3)
+    scene = scene_from_dict(scene_d)
+    spec = spec_from_dict(spec_d)
+    with_pairs = search(Problem(scene, spec), pairs_after=0)
+    dijkstra = search(Problem(scene, spec), algorithm="dijkstra")
+    assert with_pairs.status is dijkstra.status
+    if dijkstra.solved:
+        assert with_pairs.makespan == pytest.approx(dijkstra.makespan)

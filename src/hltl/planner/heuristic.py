@@ -13,6 +13,7 @@ import heapq
 import math
 from collections.abc import Callable
 
+from hltl.planner.pairs import Lookup, PairBound, pair_value
 from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
@@ -60,6 +61,8 @@ class Heuristic:
             if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.args:
                 self._single[name] = f.operand
         self._memo: dict[tuple[tuple[int, ...], MonitorState], float] = {}
+        self.pairs: PairBound | None = None
+        self._pair_lookups: dict[MonitorState, list[Lookup]] = {}
         for name in problem.spec.composites:
             tree = _monotone(problem.spec.formula(name), names)
             if tree is not None:
@@ -107,7 +110,29 @@ class Heuristic:
         critical = h[self.root]
         if critical == INF or self.n_robots < 2:
             return critical
-        return max(critical, self._load_bound(locs, q))
+        bound = max(critical, self._load_bound(locs, q))
+        if self.pairs is not None:
+            bound = max(bound, self._pair_bound(locs, q))
+        return bound
+
+    def enable_pairs(self) -> None:
+        """Also use the pairwise bound (worth its set-up cost only on hard instances)."""
+        if self.pairs is None:
+            self.pairs = PairBound(self.p, self.graph)
+            self._memo.clear()
+
+    def _pair_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
+        assert self.pairs is not None
+        lookups = self._pair_lookups.get(q)
+        if lookups is None:
+            lookups = self.pairs.lookups(sorted(self._required_atoms(q)))
+            self._pair_lookups[q] = lookups
+        best = 0.0
+        for lk in lookups:
+            v = pair_value(lk, locs)
+            if v > best:
+                best = v
+        return best
 
     # -- robot load ------------------------------------------------------------------------------
     def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:

@@ -17,6 +17,7 @@ from hltl.spec.monitor import DONE
 from hltl.spec.syntax import Atom
 
 ALGORITHMS = ("astar", "dijkstra")
+PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
 _EPS = 1e-9
 
 
@@ -125,6 +126,7 @@ def search(
     timeout: float | None = 60.0,
     max_expansions: int | None = None,
     on_progress: Callable[[int, float], None] | None = None,
+    pairs_after: int = PAIRS_AFTER,
 ) -> PlanResult:
     """Minimum-makespan path from the problem's start node to the accepting set F.
 
@@ -134,6 +136,7 @@ def search(
         timeout: seconds of search before giving up with ``timeout`` status; ``None``: no limit.
         max_expansions: node budget; exceeding it also yields ``timeout``.
         on_progress: called every 1000 expansions with (expanded, best f so far).
+        pairs_after: expansions after which A* adds the pairwise bound (0: from the start).
     """
     if algorithm not in ALGORITHMS:
         raise ValueError(
@@ -142,6 +145,7 @@ def search(
     t0 = time.perf_counter()
     s = _Search(problem)
     h: Callable[[Node], float]
+    heur: Heuristic | None = None
     if algorithm == "astar":
         heur = Heuristic(problem, s.done)
         h = heur
@@ -152,6 +156,8 @@ def search(
         return PlanResult(
             PlanStatus.SOLVED, (), 0.0, SearchStats(0, 1, time.perf_counter() - t0, algorithm)
         )
+    if pairs_after <= 0 and heur is not None:
+        heur.enable_pairs()
     h0 = h(start)
     if math.isinf(h0):
         return _infeasible(problem, s, algorithm, t0, 0, 1)
@@ -173,6 +179,9 @@ def search(
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
             return PlanResult(PlanStatus.SOLVED, steps, round(g, 9), stats)
         expanded += 1
+        if expanded == pairs_after and heur is not None:
+            # a hard instance: the pairwise bound now pays for its tables
+            heur.enable_pairs()
         if expanded & 255 == 0:
             elapsed = time.perf_counter() - t0
             if (timeout is not None and elapsed > timeout) or (
