@@ -73,7 +73,9 @@ class EventLog:
         self._on_record = on_record
         self._file: IO[str] | None = None
         if path is not None:
-            self._file = Path(path).open("w", encoding="utf-8")  # noqa: SIM115 - closed in close()
+            target = Path(path)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            self._file = target.open("w", encoding="utf-8")  # noqa: SIM115 - closed in close()
 
     def emit(self, t: float, type: str, **fields: Any) -> Record:
         """Append a record of kind ``type`` at time ``t`` and return it."""
