@@ -23,13 +23,9 @@ def load_spec_or_ground(
         return load_spec(spec_path)
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
-    if grounder != "offline":
-        raise HltlError(
-            f"grounder {grounder!r} is not available here; use 'hltl ground' or offline"
-        )
-    from hltl.grounding.offline import OfflineGrounder
+    from hltl.grounding import make_grounder
 
-    spec: HSpec = OfflineGrounder().ground(instruction, scene).spec
+    spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
     return spec
 
 

@@ -23,7 +23,12 @@ def register(sub: Any) -> None:
     src = p.add_mutually_exclusive_group(required=True)
     src.add_argument("--spec", type=Path, help="H-LTLf spec file (YAML or JSON)")
     src.add_argument("--instruction", help="an instruction in English, grounded offline")
-    p.add_argument("--grounder", default="offline", help="grounder for --instruction")
+    p.add_argument(
+        "--grounder",
+        choices=("offline", "llm", "local"),
+        default="offline",
+        help="grounder for --instruction (default: the embedded offline parser)",
+    )
     p.add_argument(
         "--algorithm", choices=("astar", "dijkstra"), default="astar", help="search algorithm"
     )
