@@ -132,13 +132,22 @@ def save_animation(
     else:
         from matplotlib.animation import FFMpegWriter
 
-        if shutil.which("ffmpeg") is None or not FFMpegWriter.isAvailable():
-            raise BackendUnavailableError(
-                "MP4 needs ffmpeg, which is not on PATH (apt-get install ffmpeg); "
-                "write --format gif or html instead"
-            )
+        require_ffmpeg()
         anim.save(str(p), writer=FFMpegWriter(fps=rate))
     return p
+
+
+def require_ffmpeg() -> None:
+    """Raise unless ffmpeg (for MP4) is on PATH.
+
+    Raises:
+        BackendUnavailableError: naming what to install and the formats that work without it.
+    """
+    if shutil.which("ffmpeg") is None:
+        raise BackendUnavailableError(
+            "MP4 needs ffmpeg, which is not on PATH (apt-get install ffmpeg); "
+            "write --format gif or html instead"
+        )
 
 
 # -- the drawing ----------------------------------------------------------------------------------

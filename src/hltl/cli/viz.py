@@ -1,0 +1,61 @@
+"""``hltl viz``: draw a plan (Gantt), an execution log (Gantt and animation) or a spec (tree)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "viz",
+        help="draw a plan, an execution log or a spec",
+        description="Draw FILE, told apart by its content: a plan JSON ('hltl plan --json') "
+        "becomes a Gantt chart (--animate: also a top-down replay on its scene); an execution "
+        "log ('hltl run --log') a Gantt chart and an animation; an H-LTLf spec its tree with "
+        "each node's formula and automaton size (--node: also that node's DFA). Prints the "
+        "paths written. Needs the viz extra: pip install 'hltl[viz]'.",
+    )
+    p.add_argument("file", type=Path, metavar="FILE", help="plan JSON, log JSONL or spec YAML/JSON")
+    p.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        metavar="OUT",
+        help="the picture's file (its suffix sets the format) or, for several pictures, a folder "
+        "(default: the current folder)",
+    )
+    p.add_argument(
+        "--format",
+        choices=("png", "svg", "gif", "html", "mp4"),
+        help="png/svg: still pictures only; gif/html/mp4: the animation only (mp4 needs ffmpeg)",
+    )
+    p.add_argument("--scene", type=Path, help="a plan's scene file (default: the one it names)")
+    p.add_argument("--animate", action="store_true", help="also animate a plan on its scene")
+    p.add_argument("--node", help="also draw the DFA of this formula of a spec (e.g. p0)")
+    p.add_argument("--fps", type=int, default=10, help="animation frames per second (default 10)")
+    p.add_argument(
+        "--max-frames", type=int, default=200, help="most animation frames (default 200)"
+    )
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from hltl.viz.render import RenderOptions, render_file
+
+    if args.fps < 1 or args.max_frames < 2:
+        raise HltlError(f"need --fps >= 1 and --max-frames >= 2, got {args.fps}, {args.max_frames}")
+    opts = RenderOptions(
+        format=args.format,
+        scene=args.scene,
+        animate=args.animate,
+        node=args.node,
+        fps=args.fps,
+        max_frames=args.max_frames,
+    )
+    for path in render_file(args.file, args.output, opts):
+        print(path)
+    return 0
