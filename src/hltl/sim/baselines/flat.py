@@ -1,0 +1,228 @@
+"""Flat LTLf: the whole task as one formula and one automaton, no hierarchy.
+
+:func:`flatten` substitutes every child into its parent. A child's proposition is the *event*
+of its monitor's first acceptance; for the leaves hltl's grounders write, ``F delivered(o, u)``
+and ``F placed(o, s)``, whose atoms are one-shot events themselves, that event is exactly the
+atom, so ``F (p100 & F p200)`` becomes ``F (delivered(bottle, A) & F delivered(chips, B))``:
+the same language over plans. (Substituting the leaf's formula instead, ``F (F d1 & F F d2)``,
+would lose the ordering.) Any other leaf is substituted as its formula, which is exact only
+when that formula is itself an event; :func:`flatten` says whether it was exact.
+
+:func:`compare` builds both the hierarchical monitors and the flat automaton with fresh caches,
+timing MONA, and plans with each through the same exact planner (a flat spec is a single leaf);
+the flat side runs in a child process that is killed at the time limit.
+"""
+
+from __future__ import annotations
+
+import multiprocessing as mp
+import time
+from dataclasses import asdict, dataclass
+from typing import Any
+
+from hltl.spec.hierarchy import HSpec, spec_from_formulas
+from hltl.spec.syntax import (
+    Always,
+    And,
+    Atom,
+    Equiv,
+    Eventually,
+    FalseF,
+    Formula,
+    Implies,
+    Next,
+    Not,
+    Or,
+    Release,
+    TrueF,
+    Until,
+    WeakNext,
+)
+from hltl.world.scene import Scene
+
+
+def _event_of_leaf(f: Formula) -> Formula | None:
+    """The atom whose occurrence is the leaf's first acceptance, for ``F delivered/placed``."""
+    if (
+        isinstance(f, Eventually)
+        and isinstance(f.operand, Atom)
+        and f.operand.name in ("delivered", "placed")
+    ):
+        return f.operand
+    return None
+
+
+def flatten(spec: HSpec) -> tuple[Formula, bool]:
+    """The root formula with every child substituted; and whether that is exact (above)."""
+    exact = True
+
+    def sub(f: Formula) -> Formula:
+        nonlocal exact
+        if isinstance(f, Atom):
+            if not f.is_predicate and f.name in spec.children:
+                return expand(f.name)
+            return f
+        if isinstance(f, TrueF | FalseF):
+            return f
+        if isinstance(f, Not | Next | WeakNext | Eventually | Always):
+            return type(f)(sub(f.operand))
+        if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+            return type(f)(sub(f.left), sub(f.right))
+        raise TypeError(f"unknown formula node {f!r}")  # pragma: no cover
+
+    def expand(name: str) -> Formula:
+        nonlocal exact
+        f = spec.formula(name)
+        if not spec.children[name]:
+            event = _event_of_leaf(f)
+            if event is not None:
+                return event
+            exact = False
+            return f
+        return sub(f)
+
+    return expand(spec.root), exact
+
+
+def flat_spec(spec: HSpec) -> HSpec:
+    """A one-node spec whose root is the flattened formula (a leaf: atoms only)."""
+    f, _ = flatten(spec)
+    return spec_from_formulas("p0", {"p0": f})
+
+
+@dataclass(frozen=True, slots=True)
+class SideResult:
+    """Automata and planning for one side (hierarchical or flat)."""
+
+    status: str  # "ok", "timeout", or "error: ..."
+    nodes: int = 0
+    props: int = 0  # most propositions of one automaton
+    states: int = 0  # summed over the automata
+    edges: int = 0
+    compile_s: float | None = None
+    plan_s: float | None = None
+    plan_status: str = ""
+    expanded: int | None = None
+    makespan: float | None = None
+
+
+def measure(scene: Scene, spec: HSpec, plan_timeout: float) -> SideResult:
+    """Compile ``spec``'s monitors with a fresh cache (timed) and plan with them."""
+    from hltl.planner import plan
+    from hltl.spec.automata import AutomatonCache, to_dfa
+    from hltl.spec.monitor import HierarchyMonitor
+    from hltl.spec.parser import parse_formula
+
+    to_dfa(parse_formula("F warm_up(a, b)"))  # load ltlf2dfa and MONA once, outside the timing
+    cache = AutomatonCache(timeout=max(plan_timeout, 1.0))
+    t0 = time.perf_counter()
+    monitor = HierarchyMonitor(spec, cache=cache)
+    compile_s = time.perf_counter() - t0
+    dfas = list(monitor.dfas.values())
+    t1 = time.perf_counter()
+    res = plan(scene, spec, monitor=monitor, timeout=plan_timeout)
+    plan_s = time.perf_counter() - t1
+    return SideResult(
+        status="ok",
+        nodes=len(dfas),
+        props=max(len(d.props) for d in dfas),
+        states=sum(d.n_states for d in dfas),
+        edges=sum(d.n_edges for d in dfas),
+        compile_s=compile_s,
+        plan_s=plan_s,
+        plan_status=res.status.value,
+        expanded=res.stats.expanded,
+        makespan=res.makespan,
+    )
+
+
+def _child(scene: Scene, spec: HSpec, timeout: float, out: Any) -> None:
+    try:
+        out.send(asdict(measure(scene, spec, timeout)))
+    except Exception as exc:  # reported to the parent as this side's status
+        out.send({"status": f"error: {type(exc).__name__}: {exc}"[:300]})
+
+
+def measure_isolated(scene: Scene, spec: HSpec, limit: float) -> SideResult:
+    """:func:`measure` in a child process that is killed after ``limit`` seconds."""
+    ctx = mp.get_context("spawn")
+    recv, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=_child, args=(scene, spec, limit, send), daemon=True)
+    t0 = time.perf_counter()
+    proc.start()
+    try:
+        if recv.poll(limit + 10.0):  # the child's own import and start-up are not the limit
+            data = recv.recv()
+        else:
+            data = {"status": f"timeout: nothing after {time.perf_counter() - t0:.0f} s"}
+    finally:
+        if proc.is_alive():
+            proc.kill()
+        proc.join()
+    return SideResult(**data)
+
+
+@dataclass(frozen=True, slots=True)
+class FlatComparison:
+    """Hierarchical monitors beside one flat automaton for the same task."""
+
+    tasks: int
+    robots: int
+    layout: str
+    seed: int
+    exact: bool
+    hier: SideResult
+    flat: SideResult
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+def compare(
+    scene: Scene,
+    spec: HSpec,
+    *,
+    limit: float = 60.0,
+    tasks: int = 0,
+    robots: int = 0,
+    layout: str = "",
+    seed: int = 0,
+) -> FlatComparison:
+    """Both sides on one task; the flat side gets ``limit`` seconds to compile and plan."""
+    hier = measure(scene, spec, limit)
+    _, exact = flatten(spec)
+    flat = measure_isolated(scene, flat_spec(spec), limit)
+    return FlatComparison(tasks, robots, layout, seed, exact, hier, flat)
+
+
+def sweep(
+    tasks: list[int],
+    *,
+    robots: int = 4,
+    layout: str = "square",
+    seed: int = 0,
+    limit: float = 60.0,
+) -> list[FlatComparison]:
+    """Growing task counts on one layout (unordered deliveries, so only the size grows)."""
+    from hltl.sim.scenarios import generate
+
+    out = []
+    for n in tasks:
+        sc = generate(n, robots, layout, seed, ordered=False)
+        out.append(
+            compare(
+                sc.scene, sc.spec, limit=limit, tasks=n, robots=robots, layout=layout, seed=seed
+            )
+        )
+    return out
+
+
+def side_from_dict(data: dict[str, Any]) -> SideResult:
+    return SideResult(**data)
+
+
+def comparison_from_dict(data: dict[str, Any]) -> FlatComparison:
+    d = dict(data)
+    d["hier"] = side_from_dict(d["hier"])
+    d["flat"] = side_from_dict(d["flat"])
+    return FlatComparison(**d)
