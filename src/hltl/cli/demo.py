@@ -74,9 +74,10 @@ def run(args: argparse.Namespace) -> int:
         args.events is None and args.scene is None and args.instruction == DEMO_INSTRUCTION
     )
     _story(console, result, warn=default_story)
-    console.print(f"[bold]log[/]      {result.log_path}")
+    # paths on one line each, never wrapped, so that they can be copied
+    console.print(f"[bold]log[/]      {result.log_path}", soft_wrap=True)
     for what, path in result.pictures:
-        console.print(f"[bold]picture[/]  {path}  [dim]({what})[/]")
+        console.print(f"[bold]picture[/]  {path}  [dim]({what})[/]", soft_wrap=True)
     return 0 if result.episode.success else 1
 
 

@@ -331,6 +331,20 @@ def _scene_figure(track: Track, *, dpi: float) -> tuple[Figure, Any]:
     clock = fig.text(0.02, at(0.1), "", fontsize=10.5, fontweight="bold", va="top")
     step_text = fig.text(0.02, at(0.38), "", fontsize=8.5, va="top")
     status = fig.text(0.02, at(0.6), "", fontsize=8.5, va="top", linespacing=1.1)
+    # gids name the moving artists, for whoever inspects a frame (tests, documents)
+    for kind, group in (
+        ("arm", arms),
+        ("hand", hands),
+        ("path", paths),
+        ("person", people),
+        ("forecast", forecasts),
+        ("object", objects),
+    ):
+        for key, artist in group.items():
+            artist.set_gid(f"{kind}:{key}")
+    clock.set_gid("clock")
+    step_text.set_gid("step")
+    status.set_gid("status")
     fig.text(0.98, at(0.1), _clip(track.title, 80), fontsize=8, va="top", ha="right", color="#555")
     ax.legend(
         handles=_legend_handles(),

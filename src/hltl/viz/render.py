@@ -93,9 +93,10 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
 
         require_ffmpeg()  # before drawing anything
     if out_path is not None and out_path.suffix and len(jobs) > 1:
+        hint = " (or pick one with --format)" if any(j == "anim" for j, _ in jobs) else ""
         raise HltlError(
             f"{out_path} names one file but {src.path} makes {len(jobs)} pictures "
-            f"({', '.join(j for j, _ in jobs)}); give a folder, or pick one with --format"
+            f"({', '.join(j for j, _ in jobs)}); give a folder{hint}"
         )
     single = out_path is not None and bool(out_path.suffix)
     folder = Path(".") if out_path is None else (out_path.parent if single else out_path)
