@@ -51,8 +51,9 @@ def default_model_path() -> Path:
         raise BackendUnavailableError(f"cannot assemble the Gemma 3 270M model: {exc}") from None
 
 
-def load_llama(model_path: Path, *, n_ctx: int = 4096, seed: int = 0) -> Any:
-    """A ``llama_cpp.Llama`` for ``model_path``.
+def load_llama(model_path: Path, *, seed: int = 0, **options: Any) -> Any:
+    """A ``llama_cpp.Llama`` for ``model_path``; ``options`` go to its constructor (``n_ctx``,
+    ``n_batch``, ``n_threads`` …), over the defaults ``n_ctx=4096, verbose=False``.
 
     Raises:
         BackendUnavailableError: ``llama-cpp-python`` is not installed.
@@ -64,7 +65,8 @@ def load_llama(model_path: Path, *, n_ctx: int = 4096, seed: int = 0) -> Any:
             f"the local grounder needs llama-cpp-python: {INSTALL_HINT} (it compiles llama.cpp, "
             "which takes several minutes)"
         ) from None
-    return llama_cpp.Llama(model_path=str(model_path), n_ctx=n_ctx, seed=seed, verbose=False)
+    kwargs: dict[str, Any] = {"n_ctx": 4096, "verbose": False, **options}
+    return llama_cpp.Llama(model_path=str(model_path), seed=seed, **kwargs)
 
 
 class LocalGrounder:
@@ -77,6 +79,8 @@ class LocalGrounder:
         max_repairs: rounds that send a rejected answer's error back.
         max_tokens: completion token limit per query.
         seed: sampling seed (answers are greedy at temperature 0 anyway).
+        llama_options: extra ``llama_cpp.Llama`` arguments, e.g. ``{"n_batch": 1}`` where a
+            llama.cpp build crashes on batched prompt evaluation.
     """
 
     name = "local"
@@ -89,6 +93,7 @@ class LocalGrounder:
         max_repairs: int = 2,
         max_tokens: int = 600,
         seed: int = 0,
+        llama_options: dict[str, Any] | None = None,
     ) -> None:
         if max_repairs < 0:
             raise GroundingError(f"max_repairs must be >= 0, got {max_repairs}")
@@ -97,6 +102,7 @@ class LocalGrounder:
         self.max_repairs = max_repairs
         self.max_tokens = max_tokens
         self.seed = seed
+        self.llama_options = dict(llama_options or {})
 
     @property
     def llm(self) -> Any:
@@ -110,7 +116,7 @@ class LocalGrounder:
                     "llama.cpp, which takes several minutes)"
                 ) from None
             path = self.model_path or default_model_path()
-            self._llm = load_llama(path, seed=self.seed)
+            self._llm = load_llama(path, seed=self.seed, **self.llama_options)
         return self._llm
 
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
@@ -120,7 +126,7 @@ class LocalGrounder:
 
             return ground_update(instruction, scene, running, self)
         llm = self.llm
-        schema = answer_schema(scene)
+        schema = answer_schema(scene, grammar=True)
 
         def chat(messages: list[dict[str, str]], mode: str) -> Any:
             fmt: dict[str, Any] = {"type": "json_object"}

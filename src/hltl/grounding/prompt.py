@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from typing import TYPE_CHECKING, Any
 
 from hltl.grounding.base import scene_graph
@@ -92,13 +93,37 @@ def repair_message(error: str) -> str:
     )
 
 
-def answer_schema(scene: Scene) -> dict[str, Any]:
+def answer_schema(scene: Scene, *, grammar: bool = False) -> dict[str, Any]:
     """JSON schema of an answer; entity ids are restricted to the scene's.
 
     Written for OpenAI's strict structured outputs (every property required, no extra keys,
-    formulas as a list since free-form keys are not allowed); llama.cpp turns it into a grammar.
+    formulas as a list since free-form keys are not allowed). With ``grammar`` (for llama.cpp,
+    which compiles the schema into a grammar) the arrays are bounded and formula names and texts
+    must match patterns over the scene's ids, so a small model can only write well-formed,
+    finite answers that name scene entities.
     """
     ids = [*scene.object_ids, *scene.human_ids, *scene.surface_ids]
+    schema = _schema(ids)
+    if grammar:
+        props = schema["properties"]
+        item = props["formulas"]["items"]["properties"]
+        item["name"]["pattern"] = "^p[0-9]{1,4}$"
+        item["formula"]["pattern"] = _formula_pattern(scene)
+        props["formulas"]["maxItems"] = min(24, 2 * len(scene.object_ids) + 4)
+        props["entities"]["maxItems"] = max(1, len(ids))
+    return schema
+
+
+def _formula_pattern(scene: Scene) -> str:
+    def alt(names: tuple[str, ...]) -> str:
+        return "(" + "|".join(re.escape(n) for n in names) + ")" if names else "(?!)"
+
+    objs, people, places = alt(scene.object_ids), alt(scene.human_ids), alt(scene.surface_ids)
+    leaf = rf"F (delivered\({objs}, {people}\)|placed\({objs}, {places}\))"
+    return rf"^({leaf}|[Fp0-9 ()&|]{{1,80}})$"
+
+
+def _schema(ids: list[str]) -> dict[str, Any]:
     return {
         "type": "object",
         "properties": {
