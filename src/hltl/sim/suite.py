@@ -426,6 +426,7 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         f_del=m.f_del,
         variant=v.name,
         details=tuple(problems[:5]),
+        extra={"takeovers": m.takeovers, "planner_calls": m.planner_calls},
     )
 
 

@@ -113,7 +113,9 @@ def measure(scene: Scene, spec: HSpec, plan_timeout: float) -> SideResult:
     from hltl.spec.monitor import HierarchyMonitor
     from hltl.spec.parser import parse_formula
 
-    to_dfa(parse_formula("F warm_up(a, b)"))  # load ltlf2dfa and MONA once, outside the timing
+    to_dfa(
+        parse_formula("F delivered(warm, up)")
+    )  # load ltlf2dfa and MONA once, outside the timing
     cache = AutomatonCache(timeout=max(plan_timeout, 1.0))
     t0 = time.perf_counter()
     monitor = HierarchyMonitor(spec, cache=cache)

@@ -50,9 +50,22 @@ def transition_of(action: Action, scene: Scene, world: WorldState) -> Transition
 
 
 def classify(action: Action, scene: Scene, world: WorldState) -> ViolationKind:
-    """Kinematic (no such instance here) or conflict (the instance exists, the state forbids)."""
-    grounded = any(a == action for a, _ in ground(Situation.of(scene, world)))
-    return "conflict" if grounded else "kinematic"
+    """Why an action fails its check: geometry (kinematic) or possession (conflict).
+
+    Kinematic: no instance of the skill exists for these robots and arguments where the object
+    is now (out of reach, outside the workspace, robots that cannot meet). Conflict: the
+    geometry allows it but the object is held by another robot or gone, or a robot that must
+    be free holds something.
+    """
+    loc = world.object_status(action.object).loc
+    matches = [t for a, t in ground(Situation.of(scene, world)) if a == action]
+    if not matches:
+        return "kinematic"
+    if any(t.pre == loc for t in matches):
+        return "conflict"
+    if action.skill == "pick" and loc.kind in ("rest", "on"):
+        return "kinematic"  # it could pick it elsewhere, not where it lies
+    return "conflict"
 
 
 def check_step(actions: Sequence[Action], scene: Scene, world: WorldState) -> list[Violation]:

@@ -9,7 +9,8 @@ Needs the ``baselines`` extra (``unified-planning``, ``up-fast-downward``). The 
 * the four skills as instantaneous actions with the preconditions and effects of
   docs/model.md, one action at a time (a sequential plan);
 * the goal: the spec flattened (:mod:`hltl.sim.baselines.flat`), its eventualities as goal
-  atoms, ``&``/``|`` as conjunction/disjunction; a non-strict ordering ``F (a & F b)`` becomes
+  atoms, ``&``/``|`` as conjunction/disjunction; a non-strict ordering ``F (a & F b)`` (``a``
+  an event, not itself an eventuality: ``F (F a & F b)`` is just ``F a & F b``) becomes
   a precondition of b's delivering action: a's object is already delivered (at most one
   predecessor per object, through a ``pre`` parameter and a dummy item ``none_``);
 * action costs are the skill durations in deciseconds, so the optimal plan minimises the total
@@ -46,6 +47,15 @@ def fd_unavailable() -> str | None:
     return None
 
 
+def _is_state(f: Formula) -> bool:
+    """No temporal operator: true or false at a single step."""
+    if isinstance(f, Atom):
+        return True
+    if isinstance(f, And | Or):
+        return _is_state(f.left) and _is_state(f.right)
+    return False
+
+
 def goal_of(f: Formula) -> tuple[Any, list[tuple[str, str]]]:
     """The goal as nested ``("and"|"or", parts)`` / ``("atom", Atom)`` and the (before, after)
     object orderings.
@@ -68,7 +78,11 @@ def goal_of(f: Formula) -> tuple[Any, list[tuple[str, str]]]:
             return ("atom", x)
         if isinstance(x, Eventually):
             inner = x.operand
-            if isinstance(inner, And) and isinstance(inner.right, Eventually):
+            if (
+                isinstance(inner, And)
+                and isinstance(inner.right, Eventually)
+                and _is_state(inner.left)
+            ):
                 first = conv(inner.left, True)
                 then = conv(inner.right, True)
                 order.extend((a, b) for a in events(first) for b in events(then))
