@@ -83,6 +83,15 @@ def test_log_makes_a_gantt_chart_and_an_animation(
     assert "<svg" in (tmp_path / "g.svg").read_text(encoding="utf-8")
 
 
+def test_frame_draws_one_moment(
+    files: dict[str, Path], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    capsys.readouterr()
+    assert main(["viz", str(files["log"]), "--frame", "0.92", "-o", str(tmp_path)]) == 0
+    (out,) = printed(capsys)
+    assert out == tmp_path / "episode_frame.png" and out.read_bytes()[:8] == PNG
+
+
 def test_spec_makes_its_tree_and_a_node_dfa(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -106,6 +115,8 @@ def test_spec_makes_its_tree_and_a_node_dfa(
         (["{tmp}/missing.json"], "cannot read"),
         (["{junk}"], "expected a plan (JSON with status and steps"),
         (["{log}", "--fps", "0"], "--fps >= 1"),
+        (["{spec}", "--frame", "1"], "--frame draws a moment of a plan or log"),
+        (["{log}", "--frame", "1", "--format", "gif"], "--frame draws a still picture"),
     ],
 )
 def test_errors_name_the_file_and_what_was_expected(

@@ -16,8 +16,9 @@ def register(sub: Any) -> None:
         description="Draw FILE, told apart by its content: a plan JSON ('hltl plan --json') "
         "becomes a Gantt chart (--animate: also a top-down replay on its scene); an execution "
         "log ('hltl run --log') a Gantt chart and an animation; an H-LTLf spec its tree with "
-        "each node's formula and automaton size (--node: also that node's DFA). Prints the "
-        "paths written. Needs the viz extra: pip install 'hltl[viz]'.",
+        "each node's formula and automaton size (--node: also that node's DFA). --frame T draws "
+        "one moment of a plan or log instead. Prints the paths written. Needs the viz extra: "
+        "pip install 'hltl[viz]'.",
     )
     p.add_argument("file", type=Path, metavar="FILE", help="plan JSON, log JSONL or spec YAML/JSON")
     p.add_argument(
@@ -36,6 +37,12 @@ def register(sub: Any) -> None:
     p.add_argument("--scene", type=Path, help="a plan's scene file (default: the one it names)")
     p.add_argument("--animate", action="store_true", help="also animate a plan on its scene")
     p.add_argument("--node", help="also draw the DFA of this formula of a spec (e.g. p0)")
+    p.add_argument(
+        "--frame",
+        type=float,
+        metavar="T",
+        help="instead, draw the animation's frame at T seconds as a still picture",
+    )
     p.add_argument("--fps", type=int, default=10, help="animation frames per second (default 10)")
     p.add_argument(
         "--max-frames", type=int, default=200, help="most animation frames (default 200)"
@@ -53,6 +60,7 @@ def run(args: argparse.Namespace) -> int:
         scene=args.scene,
         animate=args.animate,
         node=args.node,
+        frame=args.frame,
         fps=args.fps,
         max_frames=args.max_frames,
     )

@@ -25,6 +25,7 @@ class RenderOptions:
         scene: the scene file of a plan (default: the one the plan names).
         animate: also animate a plan (replayed on its scene).
         node: also draw the DFA of this node of a spec.
+        frame: instead, draw the animation's still frame at this time (seconds).
         fps: animation frames per simulated second.
         max_frames: most animation frames.
     """
@@ -33,6 +34,7 @@ class RenderOptions:
     scene: Path | None = None
     animate: bool = False
     node: str | None = None
+    frame: float | None = None
     fps: int = 10
     max_frames: int = 200
 
@@ -43,7 +45,7 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
 
     ``out`` is a file when one picture is made and it has a suffix; otherwise a folder (made if
     needed) that gets ``<stem>_gantt.png``, ``<stem>_anim.gif``, ``<stem>_tree.png``,
-    ``<stem>_<node>_dfa.png``. Default: the current folder.
+    ``<stem>_<node>_dfa.png``, ``<stem>_frame.png``. Default: the current folder.
 
     Returns:
         The paths written.
@@ -79,6 +81,14 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
         raise HltlError(f"--node draws a node's DFA of a spec; {src.path} is a {src.kind}")
     if opts.scene is not None and src.kind != "plan":
         raise HltlError(f"--scene is for plans; a {src.kind} carries everything it needs")
+    if opts.frame is not None:
+        if src.kind == "spec":
+            raise HltlError(f"--frame draws a moment of a plan or log; {src.path} is a spec")
+        if fmt in MOVING_FORMATS:
+            raise HltlError("--frame draws a still picture; use --format png or svg")
+        if opts.frame < 0:
+            raise HltlError(f"--frame must be a time >= 0 (seconds), got {opts.frame}")
+        still, moving = False, False
 
     jobs: list[tuple[str, str]] = []  # (picture, format)
     if still:
@@ -87,6 +97,8 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
             jobs.append(("dfa", fmt or "png"))
     if moving:
         jobs.append(("anim", fmt if fmt in MOVING_FORMATS else "gif"))
+    if opts.frame is not None:
+        jobs.append(("frame", fmt or "png"))
 
     if ("anim", "mp4") in jobs:
         from hltl.viz.animate import require_ffmpeg
@@ -146,6 +158,11 @@ def _draw(src: Source, job: str, ext: str, dest: Path, opts: RenderOptions) -> P
         from hltl.viz.gantt import gantt
 
         return save_figure(gantt(track), dest, format=ext)
+    if job == "frame":
+        from hltl.viz.animate import draw_frame
+
+        assert opts.frame is not None
+        return save_figure(draw_frame(track, opts.frame), dest, format=ext)
     from hltl.viz.animate import animate, save_animation
 
     anim = animate(track, fps=opts.fps, max_frames=opts.max_frames)
