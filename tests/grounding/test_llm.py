@@ -217,6 +217,29 @@ def test_falls_back_to_json_mode_then_remembers(two_arms: Scene) -> None:
     assert client.calls[-1]["response_format"]["type"] == "json_object"  # not json_schema again
 
 
+def test_falls_back_on_a_server_error_naming_the_format(two_arms: Scene) -> None:
+    # llama-cpp-python's server answers an unknown response_format type with HTTP 500
+    class ServerError(Exception):
+        status_code = 500
+
+    client = FakeClient("two_deliveries.json")
+    create = client.chat.completions.create
+
+    def picky(**kwargs: object) -> object:
+        fmt = kwargs.get("response_format")
+        if isinstance(fmt, dict) and fmt["type"] == "json_schema":
+            raise ServerError(
+                "Error code: 500 - {'loc': ('body', 'response_format', 'type'), "
+                "'msg': \"Input should be 'text' or 'json_object'\"}"
+            )
+        return create(**kwargs)
+
+    client.chat.completions.create = picky
+    llm = grounder(client)
+    llm.ground(TWO, two_arms)
+    assert llm.modes == ["json_object", "text"]
+
+
 def test_falls_back_to_plain_text(two_arms: Scene) -> None:
     client = FakeClient("two_deliveries.json", reject_formats=("json_schema", "json_object"))
     grounder(client).ground(TWO, two_arms)

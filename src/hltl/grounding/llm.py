@@ -282,12 +282,16 @@ class LLMGrounder:
 
 
 def _rejects_format(exc: Exception) -> bool:
-    """Whether an API error says the request (its response_format) is not supported."""
+    """Whether an API error says the request (its response_format) is not supported.
+
+    Servers differ: OpenAI and vLLM answer 400, some 422, and llama-cpp-python's server 500
+    with a validation message naming ``response_format``.
+    """
     status = getattr(exc, "status_code", None)
-    return status in (400, 404, 415, 422) or type(exc).__name__ in (
-        "BadRequestError",
-        "UnprocessableEntityError",
-        "NotImplementedError",
+    return (
+        status in (400, 404, 415, 422)
+        or "response_format" in str(exc)
+        or type(exc).__name__ in ("BadRequestError", "UnprocessableEntityError")
     )
 
 
