@@ -465,3 +465,11 @@ def test_fast_downward_plan_replays_in_the_skill_model() -> None:
         world, _, _ = apply_step([a], t.scene, world)
     delivered = {o for o, st in world.objects if st.loc.kind == "delivered"}
     assert delivered == set(t.scene.object_ids)
+
+
+@needs_fd
+def test_fast_downward_in_parallel_workers_does_not_mix_up_tasks() -> None:
+    from hltl.sim.suite import jobs_for, run_suite
+
+    results = run_suite(jobs_for(["1-1", "2-2"], 3, ["fd"]), workers=2)
+    assert [r.extra["fd"]["status"] for r in results] == ["solved"] * 6

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import os
+import tempfile
 import time
 from dataclasses import asdict, dataclass
 from typing import Any
@@ -283,6 +285,9 @@ def solve(
 ) -> FDResult:
     """Plan with Fast Downward (``seq-opt`` with ``optimal``, else its satisficing default).
 
+    The call runs in a fresh temporary working directory (the process's, so not from several
+    threads at once).
+
     Raises:
         BackendUnavailableError: the ``baselines`` extra is not installed.
     """
@@ -300,10 +305,18 @@ def solve(
         return FDResult(f"not_encodable: {exc}")
     ups.get_environment().credits_stream = None
     name = "fast-downward-opt" if optimal else "fast-downward"
-    t0 = time.perf_counter()
-    with ups.OneshotPlanner(name=name) as planner:
-        res = planner.solve(problem, timeout=timeout)
-    seconds = time.perf_counter() - t0
+    # Fast Downward's driver writes output.sas into the working directory: two planners in one
+    # directory (parallel workers) would read each other's tasks, so each call gets its own.
+    here = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="hltl-fd-") as work:
+        os.chdir(work)
+        try:
+            t0 = time.perf_counter()
+            with ups.OneshotPlanner(name=name) as planner:
+                res = planner.solve(problem, timeout=timeout)
+            seconds = time.perf_counter() - t0
+        finally:
+            os.chdir(here)
     if res.status in (St.SOLVED_OPTIMALLY, St.SOLVED_SATISFICING) and res.plan is not None:
         names = tuple(str(a) for a in res.plan.actions)
         d = {"pick": 0.5, "place": 0.5, "handover_r2r": 0.6, "handover_r2h": 0.5}
