@@ -52,7 +52,7 @@ def register(sub: Any) -> None:
     )
     su.add_argument(
         "--flat-sweep",
-        default="1,2,4,6,8,10,12,14",
+        default="1,2,4,6,8,10,12",
         help="task counts for the flat-LTLf growth sweep on a 2x2 square ('' to skip)",
     )
     su.add_argument("--flat-limit", type=float, default=60.0, help="seconds for a flat automaton")
