@@ -17,13 +17,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from hltl.execution.log import Record
-from hltl.spec.hierarchy import HSpec, spec_from_dict
-from hltl.world.scene import Scene
-
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # kept out of the import: `hltl --help` reads this module's defaults
+    from hltl.execution.log import Record
     from hltl.sim.episode import Episode
     from hltl.sim.events import EventSchedule
+    from hltl.spec.hierarchy import HSpec
+    from hltl.world.scene import Scene
 
 DEMO_INSTRUCTION = "Give Person A the bottle and Person B the chips"
 # Also in examples/events/demo.yaml (a test keeps the two equal).
@@ -177,6 +176,8 @@ def draw_episode(
 
 def _grounded_spec(records: Sequence[Mapping[str, Any]]) -> HSpec | None:
     """The last spec the episode ran (grounded, or given up front)."""
+    from hltl.spec.hierarchy import spec_from_dict
+
     data = None
     for r in records:
         if r["type"] in ("episode_start", "grounding") and r.get("spec"):
