@@ -144,3 +144,11 @@ def test_without_matplotlib_the_error_names_the_extra(
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     with pytest.raises(BackendUnavailableError, match=r"pip install 'hltl\[viz\]'"):
         plan_gantt(paper_plan, scene)
+
+
+def test_a_plan_that_is_not_solved_says_why(scene: Scene) -> None:
+    plan = {"status": "infeasible", "makespan": None, "reason": "no robot reaches the cup"}
+    fig = plan_gantt({**plan, "steps": []}, scene)
+    assert bars(fig) == {} and vlines(fig) == []
+    texts = [t.get_text() for t in fig.axes[0].texts]
+    assert texts == ["no plan (infeasible): no robot reaches the cup"]

@@ -181,18 +181,24 @@ def gantt(track: Track) -> Figure:
         if track.kind == "plan"
         else (f"done {track.end:.2f} s" if track.success else f"ended {track.end:.2f} s")
     )
-    ax.axvline(track.end, color="black", linewidth=1.6, zorder=5)
-    ax.annotate(
-        end_label,
-        xy=(track.end, 0.0),
-        xycoords=("data", "axes fraction"),
-        xytext=(3, 3),
-        textcoords="offset points",
-        fontsize=8,
-        fontweight="bold",
-        ha="left",
-        va="bottom",
-    )
+    if track.note:  # nothing to draw: say why instead of a zero makespan
+        ax.text(
+            0.5, 0.5, textwrap.fill(track.note, 90), transform=ax.transAxes, ha="center",
+            va="center", fontsize=9, color="#a33", zorder=6,
+        )  # fmt: skip
+    else:
+        ax.axvline(track.end, color="black", linewidth=1.6, zorder=5)
+        ax.annotate(
+            end_label,
+            xy=(track.end, 0.0),
+            xycoords=("data", "axes fraction"),
+            xytext=(3, 3),
+            textcoords="offset points",
+            fontsize=8,
+            fontweight="bold",
+            ha="left",
+            va="bottom",
+        )
 
     # event lines, labels staggered above the chart, reasons as numbered notes below it
     numbers = {id(m): i + 1 for i, m in enumerate(_noted(markers))}
@@ -252,7 +258,8 @@ def gantt(track: Track) -> Figure:
     for kind in dict.fromkeys(m.kind for m in markers):
         color, style = MARKER_STYLES.get(kind, DEFAULT_STYLE)
         handles.append(Line2D([], [], color=color, linestyle=style, label=names.get(kind, kind)))
-    handles.append(Line2D([], [], color="black", linewidth=1.6, label=end_label.split(" ")[0]))
+    if not track.note:
+        handles.append(Line2D([], [], color="black", linewidth=1.6, label=end_label.split(" ")[0]))
     ax.legend(
         handles=handles,
         loc="upper left",

@@ -124,6 +124,7 @@ class Track:
         end: the makespan (plan) or the time the task was done or given up (episode).
         success: whether the episode met every goal (``None`` for a plan).
         title: a one-line description.
+        note: why there is nothing to show (a plan that is not solved), else empty.
     """
 
     kind: Literal["plan", "episode"]
@@ -137,6 +138,7 @@ class Track:
     end: float = 0.0
     success: bool | None = None
     title: str = ""
+    note: str = ""
     _hands: dict[str, tuple[_HandMove, ...]] = field(init=False, repr=False, compare=False)
     _places: dict[str, tuple[tuple[float, ObjectPlace], ...]] = field(
         init=False, repr=False, compare=False
@@ -259,6 +261,7 @@ def track_from_plan(
     end = result.makespan if result.makespan is not None else _last_end(spans)
     status = result.status.value
     head = f"plan ({status}), makespan {end:.2f} s" if result.solved else f"plan: {status}"
+    note = "" if result.solved else f"no plan ({status}): {result.reason or 'no reason given'}"
     return Track(
         kind="plan",
         scene=scene,
@@ -266,6 +269,7 @@ def track_from_plan(
         steps=tuple(steps),
         end=end,
         title=head if title is None else title,
+        note=note,
     )
 
 
