@@ -30,6 +30,7 @@ EXAMPLES = {
     "res": "Give Person A the chips",
     "fail": "Give Person A the bottle and Person B the chips",
     "fig1": "Give Person A the chips and Person B the bottle",
+    "demo": "Give Person A the bottle and Person B the chips",
 }
 
 

@@ -79,3 +79,13 @@ def test_missing_fixed_duration_is_a_clear_error(two_arms_path: Path) -> None:
     a, t = next((a, t) for a, t in ground(sit) if a.skill == "place")
     with pytest.raises(SceneError, match="no time for skill 'place'"):
         model.duration(a, t, {})
+
+
+def test_person_handover_targets_where_the_person_is_now(two_arms_path: Path) -> None:
+    scene = load_scene(two_arms_path)
+    w = initial_world(scene).with_human("A", (-0.2, 0.9, 0.0))
+    sit = Situation.of(scene, w)
+    (t,) = [t for a, t in ground(sit) if a == Action("handover_r2h", ("r1",), "bottle", human="A")]
+    (_, point) = t.hands[0]
+    # the hand reaches out towards A's current position (up and slightly left of r1's base)
+    assert point[1] > 0.3 and point[0] < 0.0

@@ -66,7 +66,7 @@ def _why(problem: Problem, g: RelaxedGraph, atom: Atom, locs: tuple[int, ...]) -
             problem.context.robots_serving(hid) & {r.id for r in problem.situation.available}
         )
         if not serving:
-            pos = scene.human(hid).position
+            pos = problem.situation.human_position(hid)
             near = min(scene.robots, key=lambda r: horizontal_distance(r.base, pos) - r.reach)
             return (
                 f"{atom} can never happen: {scene.human(hid).name} ({hid}) at {_fmt(pos)} "

@@ -94,6 +94,7 @@ class Situation:
     context: Context
     available: tuple[Robot, ...]
     objects: tuple[str, ...] = field(default=())
+    humans: tuple[tuple[str, Vec3], ...] = field(default=())  # where people stand now
 
     @classmethod
     def of(cls, scene: Scene, world: WorldState | None = None) -> Situation:
@@ -105,7 +106,14 @@ class Situation:
             context=context_label(scene, w.humans),
             available=tuple(r for r in scene.robots if r.id not in w.unavailable),
             objects=tuple(oid for oid, _ in w.objects),
+            humans=w.humans,
         )
+
+    def human_position(self, hid: str) -> Vec3:
+        for k, v in self.humans:
+            if k == hid:
+                return v
+        return self.scene.human(hid).position
 
     def rest_position(self, oid: str) -> Vec3:
         for k, v in self.rest:
@@ -207,11 +215,10 @@ class HandoverR2H(Skill):
     name = "handover_r2h"
 
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
-        humans = {h.id: h.position for h in sit.scene.humans}
         for hid, robots in sit.context.served_by:
-            pos = humans.get(hid)
+            pos = sit.human_position(hid)
             for r in sit.available:
-                if r.id not in robots or pos is None:
+                if r.id not in robots:
                     continue
                 point = human_handover_point(r, pos)
                 for oid in sit.objects:
