@@ -249,7 +249,6 @@ class Executor:
         self._trigger = _Trigger()
         self._touched: dict[str, float] = {}
         self._reobserve: dict[str, float] = {}
-        self._await_obs: float | None = None
         self._last_obs_t = -1.0
         self._failures: dict[str, int] = {}
         self._last_failure = ""
@@ -436,7 +435,6 @@ class Executor:
             elif st.state is ActionState.FAILED:
                 self._touched[a.object] = st.t
                 self._reobserve[a.object] = st.t
-                self._await_obs = max(self._await_obs or 0.0, st.t)
                 self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
                 self.log.emit(
@@ -630,11 +628,11 @@ class Executor:
                 return
             if self.t < self._busy_until - 1e-12:
                 return
-            if self._await_obs is not None:
-                if self._last_obs_t < self._await_obs - 1e-12:
-                    self._wait("re-observing after a failed action")
-                    return
-                self._await_obs = None
+            if self._reobserve:
+                # only an observation taken in after the failure says where the object ended
+                # up (one from the same tick was read before the failure was known)
+                self._wait("re-observing after a failed action")
+                return
             ctx = self.world.context(self.scene)
             down = self.world.unavailable
             if self._plan is None or self._trigger:

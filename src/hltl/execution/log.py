@@ -75,7 +75,7 @@ class EventLog:
         if path is not None:
             target = Path(path)
             target.parent.mkdir(parents=True, exist_ok=True)
-            self._file = target.open("w", encoding="utf-8")  # noqa: SIM115 - closed in close()
+            self._file = target.open("w", encoding="utf-8")  # closed in close()
 
     def emit(self, t: float, type: str, **fields: Any) -> Record:
         """Append a record of kind ``type`` at time ``t`` and return it."""
