@@ -29,6 +29,12 @@ def register(sub: Any) -> None:
     pl.add_argument("--timeout", type=float, default=60.0, help="seconds per plan")
     pl.add_argument("--algorithm", choices=("astar", "dijkstra"), default="astar")
     pl.add_argument("--write", type=Path, help="update this Markdown file's planner section")
+    pl.add_argument(
+        "--section",
+        default="planner",
+        help="name of the section --write replaces (default: planner)",
+    )
+    pl.add_argument("--scaling-only", action="store_true", help="skip the paper configurations")
     pl.set_defaults(func=run_planner)
 
     su = bsub.add_parser(
@@ -103,7 +109,7 @@ def run_planner(args: argparse.Namespace) -> int:
     if args.repeats < 1 or args.seeds < 1:
         raise HltlError("--repeats and --seeds must be at least 1")
     work: list[tuple[str, Any]] = []
-    for n_task, n_robot, layout in PAPER_CONFIGS:
+    for n_task, n_robot, layout in () if args.scaling_only else PAPER_CONFIGS:
         name = scenario_name(n_task, n_robot, layout)
         for seed in range(args.seeds):
             work.append((name, generate(n_task, n_robot, layout, seed)))
@@ -155,6 +161,8 @@ def run_planner(args: argparse.Namespace) -> int:
             f"hltl bench planner --repeats {args.repeats} --seeds {args.seeds} "
             f"--algorithm {args.algorithm} --timeout {args.timeout:g}"
             + (f" --scaling {shlex.quote(args.scaling)}" if args.scaling else "")
+            + (" --scaling-only" if args.scaling_only else "")
+            + (f" --section {args.section}" if args.section != "planner" else "")
             + f" --write {shlex.quote(str(args.write))}"
         )
         body = (
@@ -163,7 +171,7 @@ def run_planner(args: argparse.Namespace) -> int:
             f"{_cpus()} cores. Times include compiling monitors from the automaton cache.\n\n"
             + format_planner_table(rows)
         )
-        write_section(args.write, "planner", body)
+        write_section(args.write, args.section, body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
 
