@@ -71,3 +71,14 @@ def test_usage_and_input_errors(
 ) -> None:
     assert main(argv) == code
     assert needle in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("command", ["run", "demo"])
+def test_failed_episodes_end_with_one_error_line(
+    command: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    argv = [command, "--instruction", "give Z the bottle"]
+    argv += ["--scene", SCENE] if command == "run" else ["--no-pictures", "--out", str(tmp_path)]
+    assert main(argv) == 1
+    err = [ln for ln in capsys.readouterr().err.splitlines() if ln.startswith("error:")]
+    assert len(err) == 1 and "no person called 'Z'" in err[0]

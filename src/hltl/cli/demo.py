@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -78,7 +79,10 @@ def run(args: argparse.Namespace) -> int:
     console.print(f"[bold]log[/]      {result.log_path}", soft_wrap=True)
     for what, path in result.pictures:
         console.print(f"[bold]picture[/]  {path}  [dim]({what})[/]", soft_wrap=True)
-    return 0 if result.episode.success else 1
+    if not result.episode.success:
+        print(f"error: demo episode failed: {result.episode.metrics.reason}", file=sys.stderr)
+        return 1
+    return 0
 
 
 def _header(console: Any, scene: Scene, instruction: str, events: Path | None) -> None:

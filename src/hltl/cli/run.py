@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -87,7 +88,10 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(episode.metrics.to_dict()))
     else:
         print_metrics(episode.metrics.to_dict())
-    return 0 if episode.success else 1
+    if not episode.success:
+        print(f"error: episode failed: {episode.metrics.reason}", file=sys.stderr)
+        return 1
+    return 0
 
 
 class Timeline:
