@@ -200,3 +200,35 @@ def test_analytic_durations_track_the_hand(cell: Scene) -> None:
     assert res.makespan == pytest.approx(sum(s.duration for s in res.steps))
     dijkstra = plan(scene, spec_from_dict(FIG1), algorithm="dijkstra")
     assert dijkstra.makespan == pytest.approx(res.makespan)
+
+
+def test_deadlock_is_explained_by_the_current_situation(cell: Scene) -> None:
+    # r1 holds the bottle, r2 the chips, no shelf, and Person A now stands where only r2 serves
+    # them: the bottle must reach A through r2, whose hand is full, and the chips may not go to
+    # B first. The cup's delivery is already done and must not be blamed.
+    data = cell.to_dict()
+    data["surfaces"] = []
+    data["objects"].append({"id": "cup", "category": "cup", "position": [1.4, 0.3, 0.05]})
+    scene = scene_from_dict(data)
+    spec = _spec(
+        {
+            "p0": "F p1 & F p300",
+            "p1": "F (p100 & F p200)",
+            "p100": "F delivered(bottle, A)",
+            "p200": "F delivered(chips, B)",
+            "p300": "F delivered(cup, B)",
+        }
+    )
+    mon = HierarchyMonitor(spec)
+    q = mon.step(mon.initial, frozenset({Atom("delivered", ("cup", "B"))}))
+    world = (
+        initial_world(scene)
+        .with_human("A", (1.6, 0.6, 0.0))
+        .with_object("bottle", ObjectStatus((0.3, 0.0, 0.3), Loc("held", "r1")))
+        .with_object("chips", ObjectStatus((1.4, 0.0, 0.3), Loc("held", "r2")))
+        .with_object("cup", ObjectStatus((1.9, 0.5, 1.0), Loc("delivered", "B")))
+    )
+    res = plan(scene, spec, world=world, monitor=mon, q0=q)
+    assert res.status is PlanStatus.INFEASIBLE
+    assert "r1 holds bottle; r2 holds chips; A served by r2; B served by r2" in res.reason
+    assert "cup" not in res.reason

@@ -12,7 +12,12 @@ def explain_infeasible(problem: Problem, graph: RelaxedGraph | None = None) -> s
     """Say why no plan exists: name the events that can never happen and what blocks them."""
     g = RelaxedGraph(problem) if graph is None else graph
     locs = problem.start()[0]
-    impossible = sorted(a for a in problem.spec_atoms if g.atom_time(a, locs) == INF)
+    # only what is still open matters: a finished delivery's atom can never happen again
+    done = problem.monitor.done(problem.q0)
+    open_atoms = frozenset().union(
+        *(atoms_ for name, atoms_ in problem.formula_atoms.items() if name not in done)
+    )
+    impossible = sorted(a for a in open_atoms if g.atom_time(a, locs) == INF)
     # state atoms that can never become true matter only when positive; we cannot tell polarity
     # here cheaply, so report event atoms and state atoms alike, events first
     reasons = [_why(problem, g, a, locs) for a in impossible if a.name in _EVENTS]
@@ -21,10 +26,25 @@ def explain_infeasible(problem: Problem, graph: RelaxedGraph | None = None) -> s
     if reasons:
         return f"no plan satisfies {root}: " + "; ".join(reasons)
     return (
-        f"no plan satisfies {root}: every event it mentions is reachable on its own, but no "
-        "order of them completes it (an ordering that cannot be met, an object that would be "
-        "needed twice, or a constraint the events violate)"
+        f"no plan satisfies {root} from here: every open event is reachable on its own, but no "
+        "sequence of steps completes it (an ordering that cannot be met, hands that block each "
+        "other, an object that would be needed twice, or a constraint the events violate); "
+        f"now: {_situation(problem, locs)}"
     )
+
+
+def _situation(problem: Problem, locs: tuple[int, ...]) -> str:
+    """Who holds what, and which robots serve each person: what a person can change."""
+    held = [
+        f"{problem.robots[problem.code_holder[c]]} holds {problem.objects[o]}"
+        for o, c in enumerate(locs)
+        if c in problem.code_holder
+    ]
+    served = [
+        f"{hid} served by {', '.join(sorted(rs)) or 'no robot'}"
+        for hid, rs in problem.context.served_by
+    ]
+    return "; ".join(held + served) or "all hands free"
 
 
 _EVENTS = ("delivered", "placed", "picked")
