@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from hltl.errors import GroundingError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle, RobotDriver
-from hltl.execution.log import EventLog, world_to_dict
+from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
     TrajectoryPredictor,
@@ -48,7 +48,7 @@ from hltl.skills.library import (
     Transition,
     check_action,
     ground,
-    state_atoms,
+    step_symbol,
 )
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
@@ -474,35 +474,15 @@ class Executor:
                 return tr
         raise LookupError(f"{action}: no transition from {loc} (precondition fails)")
 
-    def _symbol(self, done: Sequence[Transition], world: WorldState) -> frozenset[Atom]:
-        atoms: set[Atom] = set()
-        for tr in done:
-            atoms |= tr.events
-        for oid, st in world.objects:
-            atoms |= state_atoms(oid, st.loc)
-        return frozenset(atoms)
-
     def _end_step(self) -> None:
         runs, self._running = self._running, []
         done = [r for r in runs if r.status is not None and r.status.state is ActionState.DONE]
         assert self.monitor is not None
         if done or not runs:
-            symbol = self._symbol([r.transition for r in done], self.world)
-            q1 = self.monitor.step(self.q, symbol)
-            fired = self.monitor.fired(self.q, q1)
-            self.q = q1
+            symbol = step_symbol([r.transition for r in done], self.world)
+            self.q = log_monitor_step(self.log, self.t, self._steps, self.monitor, self.q, symbol)
             self.trace.append(symbol)
-            accepted = self.monitor.accepted(q1)
-            self.log.emit(
-                self.t,
-                "monitor",
-                step=self._steps,
-                atoms=sorted(str(a) for a in symbol),
-                fired=sorted(fired),
-                done=sorted(self.monitor.done(q1)),
-                accepted=accepted,
-            )
-            if accepted:
+            if self.monitor.accepted(self.q):
                 self.accepted_at = self.t
         self._steps += 1
         if not self._trigger:
@@ -882,7 +862,7 @@ class Executor:
             for r in self._running
             if r.status is None or r.status.state is ActionState.DONE
         ]
-        return w, self.monitor.step(self.q, self._symbol(done, w))
+        return w, self.monitor.step(self.q, step_symbol(done, w))
 
     # -- ending ----------------------------------------------------------------------------------
 

@@ -13,6 +13,8 @@ from pathlib import Path
 from typing import IO, Any
 
 from hltl.errors import PlanFormatError
+from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.syntax import Atom
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
 Record = dict[str, Any]
@@ -100,6 +102,28 @@ class EventLog:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+def log_monitor_step(
+    log: EventLog,
+    t: float,
+    step: int,
+    monitor: HierarchyMonitor,
+    q: MonitorState,
+    symbol: frozenset[Atom],
+) -> MonitorState:
+    """Step the monitors on a completed step's symbol and record it; returns the new state."""
+    q1 = monitor.step(q, symbol)
+    log.emit(
+        t,
+        "monitor",
+        step=step,
+        atoms=sorted(str(a) for a in symbol),
+        fired=sorted(monitor.fired(q, q1)),
+        done=sorted(monitor.done(q1)),
+        accepted=monitor.accepted(q1),
+    )
+    return q1
 
 
 def read_log(path: str | Path) -> list[Record]:

@@ -254,6 +254,17 @@ def state_atoms(obj: str, loc: Loc) -> frozenset[Atom]:
     return frozenset()
 
 
+def step_symbol(transitions: Sequence[Transition], world: WorldState) -> frozenset[Atom]:
+    """A step's symbol for the monitors: the events of the completed instances plus the state
+    atoms of the world after the step (docs/model.md, "Monitors")."""
+    atoms: set[Atom] = set()
+    for tr in transitions:
+        atoms |= tr.events
+    for oid, st in world.objects:
+        atoms |= state_atoms(oid, st.loc)
+    return frozenset(atoms)
+
+
 def check_action(
     action: Action,
     scene: Scene,

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
 from hltl.execution.drivers import ActionState, Handle
-from hltl.execution.log import EventLog, Record, world_to_dict
+from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
 from hltl.sim.baselines.model import Violation, apply_step, check_step, symbol_of
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics, compute_metrics
@@ -252,20 +252,8 @@ class _Loop:
         done = [r.transition for r in runs if r.state is ActionState.DONE]
         if done:
             symbol = symbol_of(done, self.world())
-            q1 = self.monitor.step(self.q, symbol)
-            fired = self.monitor.fired(self.q, q1)
-            self.q = q1
-            accepted = self.monitor.accepted(q1)
-            self.log.emit(
-                self.t,
-                "monitor",
-                step=self.steps,
-                atoms=sorted(str(a) for a in symbol),
-                fired=sorted(fired),
-                done=sorted(self.monitor.done(q1)),
-                accepted=accepted,
-            )
-            if accepted:
+            self.q = log_monitor_step(self.log, self.t, self.steps, self.monitor, self.q, symbol)
+            if self.monitor.accepted(self.q):
                 self.accepted_at = self.t
         self.steps += 1
 

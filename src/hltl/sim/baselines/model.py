@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from hltl.execution.safety import step_conflict
-from hltl.skills.library import Action, Situation, Transition, check_action, ground, state_atoms
+from hltl.skills.library import Action, Situation, Transition, check_action, ground, step_symbol
 from hltl.spec.monitor import DONE, HierarchyMonitor, MonitorState
 from hltl.spec.syntax import Atom
 from hltl.world.scene import Scene
@@ -103,14 +103,7 @@ def apply_step(
     return w, symbol_of(trs, w), bad
 
 
-def symbol_of(transitions: Sequence[Transition], world: WorldState) -> frozenset[Atom]:
-    """A step's symbol: its events plus the state atoms after it (docs/model.md)."""
-    atoms: set[Atom] = set()
-    for tr in transitions:
-        atoms |= tr.events
-    for oid, st in world.objects:
-        atoms |= state_atoms(oid, st.loc)
-    return frozenset(atoms)
+symbol_of = step_symbol  # the same symbol the executor feeds its monitors
 
 
 class Liveness:
