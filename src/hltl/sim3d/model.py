@@ -372,6 +372,18 @@ class _Builder:
         g.conaffinity = 1 if collide == 2 else 0
         return g
 
+    def hinge(self, body: Any, name: str, axis: list[float], rng: Any, mass: float) -> None:
+        """A limited revolute joint on ``body`` (and a nominal mass: the playback is kinematic)."""
+        mj = self.mj
+        body.add_joint(
+            name=name,
+            type=mj.mjtJoint.mjJNT_HINGE,
+            axis=axis,
+            range=list(rng),
+            limited=mj.mjtLimited.mjLIMITED_TRUE,
+        )
+        body.mass = mass
+
     def build(self) -> Any:
         mj = self.mj
         s = self.spec
@@ -629,7 +641,6 @@ class _Builder:
     def _elfin3(self, root: Any, robot: Robot) -> None:
         """hltl's Elfin-3 from the published kinematics (/work/shared/robots/elfin3.md): six
         revolute joints about local z, capsule links, a two-finger hand on the flange."""
-        mj = self.mj
         white = [0.92, 0.92, 0.90, 1.0]
         blue = [0.15, 0.35, 0.65, 1.0]
         p = f"robot:{robot.id}/"
@@ -654,14 +665,7 @@ class _Builder:
         body = root
         for i, (jname, xyz, rpy, rng) in enumerate(chain, start=1):
             body = body.add_body(name=f"{p}link{i}", pos=list(xyz), quat=_rpy_quat(*rpy))
-            body.add_joint(
-                name=f"{p}{jname}",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, 0, 1],
-                range=list(rng),
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            body.mass = 1.0
+            self.hinge(body, f"{p}{jname}", [0, 0, 1], list(rng), 1.0)
             a, b, r, rgba = shapes[f"link{i}"]
             self._link(body, a, b, r, rgba)
         flange = body.add_body(name=f"{p}tool0", pos=[0, 0, 0.1565])
@@ -669,7 +673,6 @@ class _Builder:
 
     def _primitive(self, root: Any, robot: Robot) -> None:
         """A four-joint arm (yaw, three pitches) sized so that its hand reaches ``reach``."""
-        mj = self.mj
         p = f"robot:{robot.id}/"
         shoulder = 0.15
         hand = 0.1
@@ -678,36 +681,15 @@ class _Builder:
         orange = [0.90, 0.45, 0.10, 1.0]
         self._link(root, [0, 0, 0], [0, 0, shoulder - 0.05], 0.06, grey)
         yaw = root.add_body(name=f"{p}link1", pos=[0, 0, shoulder])
-        yaw.add_joint(
-            name=f"{p}joint1",
-            type=mj.mjtJoint.mjJNT_HINGE,
-            axis=[0, 0, 1],
-            range=[-3.14, 3.14],
-            limited=mj.mjtLimited.mjLIMITED_TRUE,
-        )
-        yaw.mass = 1.0
+        self.hinge(yaw, f"{p}joint1", [0, 0, 1], [-3.14, 3.14], 1.0)
         self._link(yaw, [0, 0, -0.05], [0, 0, 0], 0.055, orange)
         body = yaw
         for i, (length, r) in enumerate(((link, 0.045), (link, 0.04)), start=2):
             body = body.add_body(name=f"{p}link{i}", pos=[0, 0, 0] if i == 2 else [0, 0, link])
-            body.add_joint(
-                name=f"{p}joint{i}",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, 1, 0],
-                range=[-2.6, 2.6],
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            body.mass = 1.0
+            self.hinge(body, f"{p}joint{i}", [0, 1, 0], [-2.6, 2.6], 1.0)
             self._link(body, [0, 0, 0], [0, 0, length], r, grey if i == 2 else orange)
         wrist = body.add_body(name=f"{p}link4", pos=[0, 0, link])
-        wrist.add_joint(
-            name=f"{p}joint4",
-            type=mj.mjtJoint.mjJNT_HINGE,
-            axis=[0, 1, 0],
-            range=[-2.6, 2.6],
-            limited=mj.mjtLimited.mjLIMITED_TRUE,
-        )
-        wrist.mass = 0.5
+        self.hinge(wrist, f"{p}joint4", [0, 1, 0], [-2.6, 2.6], 0.5)
         self._simple_gripper(wrist, robot.id, hand)
 
     # -- people -----------------------------------------------------------------------------
@@ -742,47 +724,19 @@ class _Builder:
         g(root, type=sph, size=[0.02, 0, 0], pos=[0.10, 0, 1.62], rgba=skin)  # nose
         for side, sy in (("r", -1.0), ("l", 1.0)):
             upper = root.add_body(name=f"{p}{side}_upper_arm", pos=[0, sy * 0.21, 1.41])
-            upper.add_joint(
-                name=f"{p}{side}_shoulder",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, -1, 0],
-                range=[-1.0, 2.8],
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            upper.mass = 2.0
+            self.hinge(upper, f"{p}{side}_shoulder", [0, -1, 0], [-1.0, 2.8], 2.0)
             g(upper, type=cap, fromto=[0, 0, 0, 0, 0, -0.27], size=[0.05, 0, 0], rgba=shirt)
             lower = upper.add_body(name=f"{p}{side}_forearm", pos=[0, 0, -0.29])
-            lower.add_joint(
-                name=f"{p}{side}_elbow",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, -1, 0],
-                range=[0.0, 2.6],
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            lower.mass = 1.0
+            self.hinge(lower, f"{p}{side}_elbow", [0, -1, 0], [0.0, 2.6], 1.0)
             g(lower, type=cap, fromto=[0, 0, 0, 0, 0, -0.23], size=[0.04, 0, 0], rgba=skin)
             g(lower, type=sph, size=[0.05, 0, 0], pos=[0, 0, -0.29], rgba=skin)
             if side == "r":
                 lower.add_site(name=f"{p}hand", pos=[0, 0, -0.29], size=[0.01, 0, 0], group=5)
             thigh = root.add_body(name=f"{p}{side}_thigh", pos=[0, sy * 0.095, 0.90])
-            thigh.add_joint(
-                name=f"{p}{side}_hip",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, -1, 0],
-                range=[-1.0, 1.5],
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            thigh.mass = 5.0
+            self.hinge(thigh, f"{p}{side}_hip", [0, -1, 0], [-1.0, 1.5], 5.0)
             g(thigh, type=cap, fromto=[0, 0, 0, 0, 0, -0.42], size=[0.07, 0, 0], rgba=trousers)
             shin = thigh.add_body(name=f"{p}{side}_shin", pos=[0, 0, -0.43])
-            shin.add_joint(
-                name=f"{p}{side}_knee",
-                type=mj.mjtJoint.mjJNT_HINGE,
-                axis=[0, 1, 0],
-                range=[0.0, 2.4],
-                limited=mj.mjtLimited.mjLIMITED_TRUE,
-            )
-            shin.mass = 3.0
+            self.hinge(shin, f"{p}{side}_knee", [0, 1, 0], [0.0, 2.4], 3.0)
             g(shin, type=cap, fromto=[0, 0, 0, 0, 0, -0.38], size=[0.055, 0, 0], rgba=trousers)
             g(shin, type=box, size=[0.12, 0.05, 0.035], pos=[0.05, 0, -0.435], rgba=shoe)
 
