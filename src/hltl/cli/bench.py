@@ -98,6 +98,11 @@ def register(sub: Any) -> None:
     rp.add_argument("--write", type=Path, help="update this Markdown file's replan section")
     rp.set_defaults(func=run_replan)
 
+    gr = bsub.add_parser("grounding", help="offline grounder on the paraphrase corpus")
+    gr.add_argument("--show", action="store_true", help="list every instruction not exact")
+    gr.add_argument("--write", type=Path, help="update this Markdown file's grounding section")
+    gr.set_defaults(func=run_grounding)
+
 
 def run_planner(args: argparse.Namespace) -> int:
     from rich.console import Console
@@ -219,6 +224,38 @@ def run_replan(args: argparse.Namespace) -> int:
             "excluded); each episode has a person walking across the cell midway.\n\n" + table
         )
         write_section(args.write, "replan", body)
+        print(f"wrote {args.write}", file=sys.stderr)
+    return 0
+
+
+def run_grounding(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    from hltl.bench.grounding import CORPUS_DIR, PARTS, format_scores, load_corpus
+    from hltl.bench.grounding import offline_tree, score
+
+    root = Path.cwd()
+    if not (root / CORPUS_DIR).is_dir():
+        raise HltlError(f"no corpus at {CORPUS_DIR}/: run 'hltl bench grounding' in the repository")
+    console = Console(stderr=True)
+    scores = []
+    for part in PARTS:
+        result = score(load_corpus(root / CORPUS_DIR / f"{part}.yaml", root), offline_tree)
+        scores.append(result)
+        for o in result.outcomes:
+            if o.verdict != "exact" and (args.show or o.verdict == "wrong"):
+                console.print(f"  [{o.verdict}] {o.entry.scene}: {o.entry.text!r} -> {o.detail}")
+    table = format_scores(scores)
+    print(table)
+    if args.write is not None:
+        body = (
+            f"Command: `hltl bench grounding --write {shlex.quote(str(args.write))}`  \n"
+            f"Machine: {platform.machine()}, Python {platform.python_version()}, "
+            f"{_cpus()} cores (shared). Exact = a spec language-equivalent to the expected one, or "
+            "a refusal (listing the readings when the corpus names them); wrong = a spec that "
+            "differs, or a grounding where a refusal was expected.\n\n" + table
+        )
+        write_section(args.write, "grounding", body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
 
