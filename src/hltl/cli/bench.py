@@ -231,8 +231,14 @@ def run_replan(args: argparse.Namespace) -> int:
 def run_grounding(args: argparse.Namespace) -> int:
     from rich.console import Console
 
-    from hltl.bench.grounding import CORPUS_DIR, PARTS, format_scores, load_corpus
-    from hltl.bench.grounding import offline_tree, score
+    from hltl.bench.grounding import (
+        CORPUS_DIR,
+        PARTS,
+        format_scores,
+        load_corpus,
+        offline_tree,
+        score,
+    )
 
     root = Path.cwd()
     if not (root / CORPUS_DIR).is_dir():

@@ -140,6 +140,13 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("in", "whatever", "order"): "filler",
     ("in", "the", "meantime"): "meanwhile",
     ("would", "like"): "verb:like",
+    ("would", "love"): "verb:like",
+    ("'d", "love"): "verb:like",
+    ("could", "use"): "verb:like",
+    ("could", "do", "with"): "verb:like",
+    ("and", "nothing", "else"): "filler",
+    ("nothing", "else"): "filler",
+    ("but", "nothing", "else"): "filler",
     ("'d", "like"): "verb:like",
     ("should", "get"): "verb:have",
     ("should", "have"): "verb:have",
@@ -396,6 +403,7 @@ WORDS: dict[str, str] = {
     "any": "q:some",
     "everything": "q:everything",
     "other": "other",
+    "with": "with",
     "same": "same",
     "apart": "except",
     "except": "except",
@@ -622,12 +630,16 @@ class Lexicon:
             return None
         if word in PHRASE_WORDS:
             return None
-        found: list[tuple[Ref, str, bool]] = []
-        for key, entries in self._phrases.items():
-            if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0]):
-                found.extend(entries)
+        keys = [
+            key
+            for key in self._phrases
+            if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0])
+        ]
+        if len(keys) == 1:  # one name within one edit: "mgus" is "mugs" (both mugs)
+            return _best(self._phrases[keys[0]])
+        found = [e for key in keys for e in self._phrases[key]]
         if not found or len({r.id for r, _, _ in found}) != 1:
-            return None
+            return None  # several names within one edit ("chps": chips or cups): no guess
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
 

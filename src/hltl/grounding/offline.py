@@ -170,7 +170,7 @@ class _Frag:
     them: bool = False  # 'them': the objects of the clause before
     group: int = -1  # a choice ('a mug') shared with other fragments: distinct objects each
     subject: bool = False  # a person before a possession verb ('Alice wants …')
-    same: Item | None = None  # 'the same for X': the task before with X in place of its like
+    same: tuple[Item, ...] = ()  # 'the same for X': the task before, X in place of its like
 
 
 @dataclass(slots=True)
@@ -227,13 +227,11 @@ class _Parser:
         here: Node = Group(node.op, tuple(self.expand(c, pending | local) for c in node.children))
         alternatives = [here]
         for g in sorted(local):
-            slots = list(dict.fromkeys(t.obj for t in tasks(here) if self._slots.get(t.obj, (-1,))[0] == g))
+            slots = list(
+                dict.fromkeys(t.obj for t in tasks(here) if self._slots.get(t.obj, (-1,))[0] == g)
+            )
             options = [self._slots[s][1] for s in slots]
-            ways = [
-                combo
-                for combo in itertools.product(*options)
-                if len(set(combo)) == len(combo)
-            ]
+            ways = [combo for combo in itertools.product(*options) if len(set(combo)) == len(combo)]
             union = sorted({o for opts in options for o in opts})
             if not ways:
                 raise GroundingError(
@@ -317,6 +315,8 @@ class _Parser:
             if _is(it, "then", "after", "before", "once", "prior"):
                 while current and _is(current[-1], ",", "and", "also"):
                     current.pop()  # ", and then": the separator belongs to the connector
+                if not current and segments and conn == "then" and it.lemma == "then":
+                    continue  # "and then, when that's done, …": one step, said twice
                 if current or segments:
                     segments.append((conn, current))
                 elif it.lemma != "then":
@@ -330,6 +330,23 @@ class _Parser:
             seg = _strip_separators(seg)
             if not [it for it in seg if not _is(it, *_SKIP)]:
                 raise GroundingError(f"nothing to do after {conn!r} in {_text(items)!r}")
+            if result is not None and conn in ("after", "once", "before", "prior"):
+                _one_condition(conn, seg, items)
+            split = _main_clause_start([Item("word", conn, conn), *seg])
+            if (
+                result is not None
+                and conn in ("after", "once")
+                and split is not None
+                and _is(seg[split - 1], ",")  # only a comma ends the condition mid-sentence
+            ):
+                # "A and, once X, Y": Y waits for X; A stands beside them
+                cut = split - 1
+                self._segment += 1
+                sub = self.coord(seg[:cut])
+                self._segment += 1
+                main = self.coord(seg[cut + 1 :])
+                result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
+                continue
             self._segment += 1
             node = self.coord(seg)
             if result is None:
@@ -430,11 +447,24 @@ class _Parser:
         frag = _Frag(index=len(self.frags), segment=self._segment, text=_text(items))
         self.frags.append(frag)
         units = [it for it in items if not _is(it, *_SKIP, "det")]
-        if units and _is(units[0], "same"):
-            if len(units) != 2 or units[1].kind != "ent":
+        if units and _is(units[0], "same", "do"):
+            named = [u for u in units[1:] if not _is(u, "same", "with", "for", "and")]
+            if not _is(units[0], "same") and not any(_is(u, "same") for u in units):
+                named = []
+            if not named or any(u.kind != "ent" for u in named) or len(named) > 2:
                 raise GroundingError(f"cannot parse {frag.text!r}: 'the same for' what?")
-            frag.same = units[1]
+            frag.same = tuple(named)
             return frag
+        if (
+            len(units) > 3
+            and units[0].kind == "ent"
+            and _is_verb(units[1])
+            and VERB_CLASS[_lemma(units[1])] == "possess"
+            and any(_is_verb(u) for u in units[2:])
+            and any(_is(u, "to", "for", "on") for u in units[2:])
+        ):
+            # "Alice needs the bottle put on the shelf": the thing needed is the placement
+            units = units[2:]
         # auxiliary "have" ("has been handed", "you have given") and "needs to get": drop a
         # possession verb that another verb follows, with a "to" right after it
         while True:
@@ -623,7 +653,7 @@ class _Parser:
                 for g in self._antecedents(k):
                     g.antecedent = True
         for k, f in enumerate(frags):
-            if f.same is not None:
+            if f.same:
                 self._same(k, f)
                 continue
             if f.verb is None:
@@ -696,7 +726,7 @@ class _Parser:
             return [frags[k - 1]]
         out: list[_Frag] = []
         for g in reversed(frags[:k]):
-            if g.segment != f.segment and out:
+            if out and g.segment != out[0].segment:
                 break
             out.insert(0, g)
             if g.verb_text or g.subject:
@@ -705,22 +735,25 @@ class _Parser:
 
     def _same(self, k: int, f: _Frag) -> None:
         """'… and the same for the apple': copy the task before, with the new name in place."""
-        assert f.same is not None
         prev = next(
             (g for g in reversed(self.frags[:k]) if g.target is not None and not g.pick), None
         )
         if prev is None or prev.objects is None or prev.target is None:
             raise GroundingError(f"{f.text!r} refers to no task before it")
         f.verb, f.objects, f.group, f.target = prev.verb, list(prev.objects), -1, prev.target
-        x = f.same
-        kinds = {r.kind for r in x.refs}
-        if kinds == {"object"}:
-            self._object(f, x)
-        elif kinds <= {"human", "surface"}:
-            tid, kind = self._target(x, f, prev.target.prep if prev.target.prep != "" else "to")
-            f.target = _Target(kind, tid, "to" if kind == "human" else "on", x.text)
-        else:
-            raise GroundingError(f"{x.text!r} cannot replace anything in the task before it")
+        kinds_seen: set[str] = set()
+        for x in f.same:
+            kinds = {r.kind for r in x.refs}
+            if kinds == {"object"} and "object" not in kinds_seen:
+                kinds_seen.add("object")
+                self._object(f, x)
+            elif kinds <= {"human", "surface"} and "target" not in kinds_seen:
+                kinds_seen.add("target")
+                prep = prev.target.prep if prev.target.prep != "" else "to"
+                tid, kind = self._target(x, f, prep)
+                f.target = _Target(kind, tid, "to" if kind == "human" else "on", x.text)
+            else:
+                raise GroundingError(f"{x.text!r} cannot replace anything in the task before it")
         f.verb_text = ""
 
     def _target_from_right(self, k: int) -> _Target | None:
@@ -778,6 +811,18 @@ class _Parser:
 # -- helpers -------------------------------------------------------------------------------------
 
 
+def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:
+    """'Y once X and give Z …': does 'and give Z' belong to the condition or the request?"""
+    for k in range(1, len(seg)):
+        if _is(seg[k - 1], "and", ",") and _is_verb(seg[k]):
+            if conn in ("after", "once") and _is(seg[k - 1], ","):
+                return  # "A and, once X, give Z": the comma closes the condition
+            raise GroundingError(
+                f"in {_text(items)!r} it is unclear where the {conn!r} part ends: put it first "
+                f"('{conn} …, …') or split the sentence"
+            )
+
+
 def _substitute(node: Node, chosen: dict[str, str]) -> Node:
     if isinstance(node, Task):
         obj = chosen.get(node.obj)
@@ -799,7 +844,26 @@ def _dedupe(node: Node) -> Node:
         if node.op == "seq" and kids and kids[-1] == c:
             continue
         kids.append(c)
+    if node.op == "and":
+        # a task another part already requires adds nothing: F a & F (a & F b) is F (a & F b)
+        kids = [
+            c
+            for k, c in enumerate(kids)
+            if not (
+                isinstance(c, Task) and any(c in _required(o) for j, o in enumerate(kids) if j != k)
+            )
+        ]
     return normalise(Group(node.op, tuple(kids))) if len(kids) > 1 else kids[0]
+
+
+def _required(node: Node) -> set[Task]:
+    """The tasks every way of completing ``node`` performs."""
+    if isinstance(node, Task):
+        return {node}
+    parts = [_required(c) for c in node.children]
+    if node.op == "or":
+        return set.intersection(*parts) if parts else set()
+    return set().union(*parts)
 
 
 def _only_fillers(items: list[Item]) -> bool:
@@ -852,15 +916,29 @@ def _trailing_order(items: list[Item]) -> list[Item]:
         j = k + 1
         while j < len(body) and _is(body[j], "and", ",", "filler", "subject", "aux"):
             j += 1
-        starts_clause = j < len(body) and (
-            _is_verb(body[j]) or (j + 1 < len(body) and body[j].kind == "ent" and _is_verb(body[j + 1]))
+        starts_clause = (
+            j < len(body)
+            and (
+                _is_verb(body[j])
+                or (j + 1 < len(body) and body[j].kind == "ent" and _is_verb(body[j + 1]))
+                or (  # "… and Alice the bottle afterwards"
+                    body[j].kind == "ent"
+                    and {r.kind for r in body[j].refs} == {"human"}
+                    and next((x.kind for x in body[j + 1 :] if not _is(x, "det")), "") == "ent"
+                )
+            )
         )
         if starts_clause:
             first = k
             while first > 0 and _is(body[first - 1], "and", ","):
                 first -= 1
-            return body[:first] + [Item("word", lemma, core[-1].text)] + body[j:]
+            return [*body[:first], Item("word", lemma, core[-1].text), *body[j:]]
     if lemma == "prior":
+        if any(_is(it, "then", "after", "before", "once", "prior") for it in body):
+            raise GroundingError(
+                f"'first' at the end of {_text(items)!r} contradicts the order given before it: "
+                "say the steps in order"
+            )
         return body  # "Carol needs the bottle first": already first
     return items
 

@@ -83,7 +83,9 @@ def _questions(items: list[Item]) -> list[Item]:
         nxt = items[k + 1] if k + 1 < end else None
         mark = end < len(items) and items[end].lemma == "?"
         low = first.text.lower()
-        asks = _is(first, "wh") or (
+        # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
+        offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
+        asks = offers or _is(first, "wh") or (
             first.kind == "word"
             and low in _QUESTION_VERBS
             and (mark or low not in ("have", "do"))  # "have r2 give …" is causative
@@ -102,8 +104,11 @@ def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
     skipping = False
-    for it in items:
+    for k, it in enumerate(items):
         if _is(it, "whichever"):
+            if k + 1 < len(items) and _objects(items[k + 1]):
+                out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
+                continue
             skipping = True
             continue
         if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
@@ -137,10 +142,12 @@ def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
                         out[-1] = Item("ent", f"{prev.lemma} one", f"{prev.text} one", found)
                         break
                 else:
+                    tried = " or ".join(
+                        repr(f"{prev.lemma} {c}") for c in _categories(last_objects, lexicon)
+                    )
                     raise GroundingError(
-                        f"no object called '{prev.text} one' (as in "
-                        f"{' or '.join(repr(prev.lemma + ' ' + c) for c in _categories(last_objects, lexicon))}"
-                        f") in the scene; {lexicon.listing('object')}"
+                        f"no object called '{prev.text} one' (as in {tried}) in the scene; "
+                        f"{lexicon.listing('object')}"
                     )
                 last_objects = out[-1]
                 continue
@@ -171,7 +178,23 @@ def _demonstratives(items: list[Item]) -> list[Item]:
 
 
 def _quantifiers(items: list[Item], lexicon: Lexicon) -> list[Item]:
-    """Fold 'a', 'one of the', 'all the', 'two', 'either', 'everything' into the object after."""
+    """Fold 'a', 'one of the', 'all the', 'two', 'either', 'everything' into the object after.
+
+    Two choices over the same objects ("a mug … and a mug …") share one group, so they take
+    different objects.
+    """
+    out = _folded(items, lexicon)
+    first: dict[frozenset[str], int] = {}
+    for k, it in enumerate(out):
+        if it.quant == "some":
+            key = frozenset(r.id for r in it.refs)
+            group = first.setdefault(key, it.group)
+            if group != it.group:
+                out[k] = replace(it, group=group)
+    return out
+
+
+def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
     out: list[Item] = []
     k = 0
     everything = tuple(Ref("object", o.id, plural=True) for o in lexicon.scene.objects)
@@ -212,7 +235,7 @@ def _quantifiers(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 continue
             if it.text.lower() in ("each", "every", "all", "either") and quant != "num":
                 pass  # left for the parser ("either … or", "each" as a filler below)
-            elif quant == "num" or quant == "some" and it.text.lower() in ("one", "any"):
+            elif quant == "num" or (quant == "some" and it.text.lower() in ("one", "any")):
                 out.append(Item("unknown", it.text.lower(), it.text))
                 k += 1
                 continue
@@ -270,7 +293,7 @@ def _corrections(items: list[Item]) -> list[Item]:
     k = 0
     while k < len(items):
         it = items[k]
-        after_pause = k > 0 and _is(items[k - 1], ",", "-")
+        after_pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
         is_marker = _is(it, "correct") or (
             it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and after_pause
         )
@@ -279,13 +302,35 @@ def _corrections(items: list[Item]) -> list[Item]:
             continue
         j = k
         while j < len(items) and (
-            _is(items[j], "correct", ",", "-") or (items[j].text.lower() == "no" and _is(items[j], "not"))
+            _is(items[j], "correct", ",", "-")
+            or (items[j].text.lower() == "no" and _is(items[j], "not"))
         ):
             j += 1
         before = items[:k]
         while before and _is(before[-1], ",", "-"):
             before.pop()
         after = items[j:]
+        if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+            # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
+            r = 0
+            while r < len(after) and _is(after[r], "det", "to", "for", "on"):
+                r += 1
+            alone = (
+                r < len(after)
+                and after[r].kind == "ent"
+                and (
+                    r + 1 == len(after)
+                    or (after[r + 1].kind == "punct" and after[r + 1].lemma in _END)
+                )
+            )
+            said_no = any(x.text.lower() == "no" for x in items[k:j])
+            if alone or said_no:
+                before.pop()  # "… . No, put it on the table.": the sentence before is corrected
+            elif after:
+                raise GroundingError(
+                    f"{it.text!r} at the start of a sentence could correct the request before it "
+                    "or add to it: say the whole request again"
+                )
         if not before or before[-1].kind == "punct":
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
@@ -296,13 +341,19 @@ def _corrections(items: list[Item]) -> list[Item]:
 
 
 def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> list[Item]:
-    start = max((k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0)
+    start = max(
+        (k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0
+    )
     r = 0
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
     if r < len(after) and after[r].kind == "word" and after[r].lemma.startswith("verb:"):
         # a whole new clause replaces the last clause; "it" keeps meaning what that clause moved
-        verbs = [k for k in range(start, len(before)) if before[k].kind == "word" and before[k].lemma.startswith("verb:")]
+        verbs = [
+            k
+            for k in range(start, len(before))
+            if before[k].kind == "word" and before[k].lemma.startswith("verb:")
+        ]
         if not verbs:
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         cut = verbs[-1]
@@ -327,7 +378,7 @@ def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> li
     for k in range(len(before) - 1, start - 1, -1):
         old = before[k]
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
-            return before[:k] + [new] + before[k + 1 :] + after[r + 1 :]
+            return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
 
 
@@ -364,7 +415,11 @@ def _exclusions(items: list[Item]) -> list[Item]:
             if j < len(items) and _objects(items[j]):
                 excluded.append(items[j])
                 j += 1
-                if j + 1 < len(items) and _is(items[j], "and", ",") and _starts_objects(items, j + 1):
+                if (
+                    j + 1 < len(items)
+                    and _is(items[j], "and", ",")
+                    and _starts_objects(items, j + 1)
+                ):
                     j += 1
                     continue
             break
@@ -376,7 +431,9 @@ def _exclusions(items: list[Item]) -> list[Item]:
         )
         target = next((n for n in range(len(out) - 1, start - 1, -1) if _objects(out[n])), None)
         if target is None:
-            raise GroundingError(f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing")
+            raise GroundingError(
+                f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
+            )
         kept = tuple(r for r in out[target].refs if r.id not in ids)
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
@@ -403,12 +460,16 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 j += 1
             if j < len(items) and items[j].lemma in ("verb:need", "verb:want", "verb:like"):
                 end = j + 1
-                while end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
+                while end < len(items) and not (
+                    items[end].kind == "punct" and items[end].lemma in _END
+                ):
                     end += 1
                 clause = items[j + 1 : end]
                 if any(_is(x, "to", "for", "on") for x in clause):
                     # drop "I need" and the participle: "the apple and the cup to Carol"
-                    rest = [x for x in clause if not (x.kind == "word" and x.lemma.startswith("verb:"))]
+                    rest = [
+                        x for x in clause if not (x.kind == "word" and x.lemma.startswith("verb:"))
+                    ]
                     out.extend(rest)
                     k = end
                     continue
@@ -432,7 +493,13 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             seen.setdefault(it.refs[0].id)
         if it.kind == "word" and it.lemma == "pronoun" and low in _PERSON_PRONOUNS:
             nxt = items[k + 1] if k + 1 < len(items) else None
-            if low in ("his", "her") and out and _humans(out[-1]) and nxt is not None and _objects(nxt):
+            if (
+                low in ("his", "her")
+                and out
+                and _humans(out[-1])
+                and nxt is not None
+                and _objects(nxt)
+            ):
                 continue  # "give Alice her cup": a possessive after the person
             if len(seen) == 1:
                 pid = next(iter(seen))
@@ -446,7 +513,9 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if it.kind == "word" and it.lemma == "pronoun" and low == "them":
             nxt = items[k + 1] if k + 1 < len(items) else None
             prev = out[-1] if out else None
-            if (nxt is not None and nxt.kind == "ent") or (prev is not None and _is(prev, "to", "for")):
+            if (nxt is not None and nxt.kind == "ent") or (
+                prev is not None and _is(prev, "to", "for")
+            ):
                 readings = list(seen) or [h.id for h in lexicon.scene.humans]
                 raise GroundingError(
                     f"'them' is not resolved: it could mean any of {_or(readings, lexicon)}; "
