@@ -184,6 +184,16 @@ def score(
     return Score(corpus.name, tuple(outcomes))
 
 
+def repository_root() -> Path:
+    """The checkout holding the corpus: the working directory, else the one hltl runs from."""
+    for root in (Path.cwd(), Path(__file__).resolve().parents[3]):
+        if (root / CORPUS_DIR).is_dir():
+            return root
+    raise HltlError(
+        f"no paraphrase corpus ({CORPUS_DIR}/): run 'hltl bench grounding' in a source checkout"
+    )
+
+
 def offline_tree(text: str, scene: Scene) -> Node:
     """The offline grounder's task tree (what ``OfflineGrounder.ground`` encodes)."""
     from hltl.grounding.offline import parse_instruction

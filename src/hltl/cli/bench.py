@@ -229,28 +229,32 @@ def run_replan(args: argparse.Namespace) -> int:
 
 
 def run_grounding(args: argparse.Namespace) -> int:
-    from rich.console import Console
-
     from hltl.bench.grounding import (
         CORPUS_DIR,
         PARTS,
         format_scores,
         load_corpus,
         offline_tree,
+        repository_root,
         score,
     )
 
-    root = Path.cwd()
-    if not (root / CORPUS_DIR).is_dir():
-        raise HltlError(f"no corpus at {CORPUS_DIR}/: run 'hltl bench grounding' in the repository")
-    console = Console(stderr=True)
+    root = repository_root()
     scores = []
     for part in PARTS:
         result = score(load_corpus(root / CORPUS_DIR / f"{part}.yaml", root), offline_tree)
         scores.append(result)
+        print(
+            f"  {part}: {result.exact_pct:.1f} % exact of {result.total}, "
+            f"{result.count('wrong')} wrong",
+            file=sys.stderr,
+        )
         for o in result.outcomes:
             if o.verdict != "exact" and (args.show or o.verdict == "wrong"):
-                console.print(f"  [{o.verdict}] {o.entry.scene}: {o.entry.text!r} -> {o.detail}")
+                print(
+                    f"    [{o.verdict}] {o.entry.scene}: {o.entry.text!r} -> {o.detail}",
+                    file=sys.stderr,
+                )
     table = format_scores(scores)
     print(table)
     if args.write is not None:
@@ -259,7 +263,8 @@ def run_grounding(args: argparse.Namespace) -> int:
             f"Machine: {platform.machine()}, Python {platform.python_version()}, "
             f"{_cpus()} cores (shared). Exact = a spec language-equivalent to the expected one, or "
             "a refusal (listing the readings when the corpus names them); wrong = a spec that "
-            "differs, or a grounding where a refusal was expected.\n\n" + table
+            "differs, or a grounding where a refusal was expected. Parts: docs/grounding.md.\n\n"
+            + table
         )
         write_section(args.write, "grounding", body)
         print(f"wrote {args.write}", file=sys.stderr)
