@@ -85,11 +85,15 @@ def _questions(items: list[Item]) -> list[Item]:
         low = first.text.lower()
         # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
         offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
-        asks = offers or _is(first, "wh") or (
-            first.kind == "word"
-            and low in _QUESTION_VERBS
-            and (mark or low not in ("have", "do"))  # "have r2 give …" is causative
-            and not (nxt is not None and _is(nxt, "not"))
+        asks = (
+            offers
+            or _is(first, "wh")
+            or (
+                first.kind == "word"
+                and low in _QUESTION_VERBS
+                and (mark or low not in ("have", "do"))  # "have r2 give …" is causative
+                and not (nxt is not None and _is(nxt, "not"))
+            )
         )
         if asks:
             words = " ".join(it.text for it in items[start:end])
