@@ -229,6 +229,8 @@ def run_replan(args: argparse.Namespace) -> int:
 
 
 def run_grounding(args: argparse.Namespace) -> int:
+    import datetime
+
     from hltl.bench.grounding import (
         CORPUS_DIR,
         PARTS,
@@ -260,7 +262,8 @@ def run_grounding(args: argparse.Namespace) -> int:
     if args.write is not None:
         body = (
             f"Command: `hltl bench grounding --write {shlex.quote(str(args.write))}`  \n"
-            f"Machine: {platform.machine()}, Python {platform.python_version()}, "
+            f"Date: {datetime.date.today().isoformat()}. Machine: {platform.machine()}, "
+            f"Python {platform.python_version()}, "
             f"{_cpus()} cores (shared). Exact = a spec language-equivalent to the expected one, or "
             "a refusal (listing the readings when the corpus names them); wrong = a spec that "
             "differs, or a grounding where a refusal was expected. Parts: docs/grounding.md.\n\n"
