@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -100,6 +100,8 @@ class MujocoSimulator(Simulator):
         self._touching: set[tuple[str, str]] = set()
         self._arms = _motion_arms(scene) if use_motion_layer else {}
         self.contacts: list[tuple[float, str, str]] = []
+        # called with the time after every posing (every contact_dt at most): video recorders
+        self.on_pose: list[Callable[[float], None]] = []
         self.synced_at = -1.0
         self._sync()
 
@@ -202,6 +204,8 @@ class MujocoSimulator(Simulator):
         st.forward()
         self.synced_at = now
         self._note_contacts()
+        for f in self.on_pose:
+            f(now)
 
     def _walk_pose(self, hid: str, p: Vec3) -> tuple[float, float | None]:
         """Yaw and distance walked so far (None when standing) of a person at ``now``."""
