@@ -235,7 +235,7 @@ def render_video(
     still_i = next((i for i in range(n) if snaps.times[i] >= still_t - 1e-9), n - 1)
     frames: list[np.ndarray] = []
     still: Image.Image | None = None
-    with CameraRenderer(sm, cam, geometry="visual") as renderer:
+    with CameraRenderer(sm, cam, geometry="visual", shadows=True) as renderer:
         for i in range(n):
             snaps.restore(i)
             t = snaps.times[i]
