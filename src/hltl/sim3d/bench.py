@@ -133,6 +133,7 @@ def format_sim3d(b: Sim3dBench, command: str, when: str) -> str:
         "colour pass, one segmentation pass that also yields the depth); the demo video with "
         "shadows. The real-time factor includes the executor and planner calls of the "
         "episode (the same loop as the discrete simulator); the arms are played back "
-        "kinematically, so there is no physics step to pay for. Render times are medians after one warm-up frame.",
+        "kinematically, so there is no physics step to pay for. Render times are medians "
+        "after one warm-up frame.",
     ]
     return "\n".join(lines) + "\n"
