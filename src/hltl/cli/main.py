@@ -25,6 +25,7 @@ COMMAND_MODULES = (
     "bench",
     "render",
     "perception",
+    "motion",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2
