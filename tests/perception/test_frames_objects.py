@@ -149,12 +149,12 @@ def test_bad_frame_folders_name_the_problem(tmp_path: Path) -> None:
     with pytest.raises(PerceptionError, match="rotation"):
         FrameFolder(root)
     (root / "camera.json").write_text(json.dumps(dict(data, width=99)))
-    with pytest.raises(PerceptionError, match="camera.json says 99x"):
+    with pytest.raises(PerceptionError, match=r"camera\.json says 99x"):
         FrameFolder(root).frame(0)
     (root / "camera.json").write_text(json.dumps(data))
     data["frames"][0]["depth"] = "depth/missing.npz"
     (root / "camera.json").write_text(json.dumps(data))
-    with pytest.raises(PerceptionError, match="missing.npz"):
+    with pytest.raises(PerceptionError, match=r"missing\.npz"):
         FrameFolder(root).frame(0)
     with pytest.raises(ValueError, match="unknown object backend"):
         make_backend("sam2")
