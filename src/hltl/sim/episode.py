@@ -138,6 +138,7 @@ def run_episode(
     log_path: str | Path | None = None,
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
+    simulator: Callable[..., Simulator] = Simulator,
     agent: AgentFactory | None = None,
     start_config: Mapping[str, Any] | None = None,
 ) -> Episode:
@@ -156,6 +157,9 @@ def run_episode(
         log_path: also write the JSON Lines log there.
         on_record: called with each log record as it is written.
         hooks: called every tick.
+        simulator: makes the world, called as ``simulator(scene, events, seed=, perception=,
+            log=)``: the discrete-event :class:`Simulator` or one with the same interface
+            (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`).
         agent: builds who decides (default: hltl's executor with ``planner``, ``grounder``,
             ``predictor`` and ``config.executor``).
         start_config: what the ``episode_start`` record says about the configuration
@@ -169,7 +173,7 @@ def run_episode(
     cfg = EpisodeConfig() if config is None else config
     schedule = EventSchedule() if events is None else events
     with EventLog(log_path, on_record) as log:
-        sim = Simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
+        sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
         executor: Agent = (
             Executor(
                 scene,
