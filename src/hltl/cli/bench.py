@@ -145,7 +145,6 @@ def register(sub: Any) -> None:
     s3.add_argument("--write", type=Path, help="update this Markdown file's sim3d section")
     s3.set_defaults(func=run_sim3d)
 
-
     mo = bsub.add_parser("motion", help="IK, reachability maps, handover and P.M.P. timings")
     mo.add_argument("--ik-solves", type=int, default=300, help="IK solves per model")
     mo.add_argument("--probes", type=int, default=1000, help="map probes per model")
