@@ -25,6 +25,8 @@ COMMAND_MODULES = (
     "bench",
     "render",
     "perception",
+    "perceive",
+    "motion",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2
