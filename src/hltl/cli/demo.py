@@ -67,19 +67,16 @@ def run(args: argparse.Namespace) -> int:
 
         events = load_events(args.events, scene)
     _header(console, scene, args.instruction, args.events)
-    if args.three_d:
-        result = _run_3d(args, scene, events)
-    else:
-        result = run_demo(
-            scene=scene,
-            instruction=args.instruction,
-            events=events,
-            seed=args.seed,
-            out=args.out,
-            short=args.short,
-            pictures=not args.no_pictures,
-            on_record=Timeline(scene),
-        )
+    common: dict[str, Any] = {
+        "scene": scene,
+        "instruction": args.instruction,
+        "events": events,
+        "seed": args.seed,
+        "out": args.out,
+        "short": args.short,
+        "on_record": Timeline(scene),
+    }
+    result = _run_3d(common) if args.three_d else run_demo(pictures=not args.no_pictures, **common)
     _summary(console, result)
     default_story = (
         args.events is None and args.scene is None and args.instruction == DEMO_INSTRUCTION
@@ -95,10 +92,9 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_3d(args: argparse.Namespace, scene: Scene, events: Any) -> DemoResult:
+def _run_3d(common: dict[str, Any]) -> DemoResult:
     from rich.progress import Progress
 
-    from hltl.cli.run import Timeline
     from hltl.viz.demo3d import run_demo3d
 
     with Progress(transient=True) as bar:
@@ -107,16 +103,7 @@ def _run_3d(args: argparse.Namespace, scene: Scene, events: Any) -> DemoResult:
         def progress(done: int, total: int) -> None:
             bar.update(task, completed=done, total=total)
 
-        return run_demo3d(
-            scene=scene,
-            instruction=args.instruction,
-            events=events,
-            seed=args.seed,
-            out=args.out,
-            short=args.short,
-            on_record=Timeline(scene),
-            progress=progress,
-        )
+        return run_demo3d(progress=progress, **common)
 
 
 def _header(console: Any, scene: Scene, instruction: str, events: Path | None) -> None:
