@@ -7,6 +7,8 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl.fileio import write_output
+
 if TYPE_CHECKING:
     from hltl.grounding.base import Grounding
     from hltl.world.scene import Scene
@@ -56,7 +58,7 @@ def run(args: argparse.Namespace) -> int:
     if args.output is not None:
         import yaml
 
-        args.output.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
+        write_output(args.output, "the spec", yaml.safe_dump(spec, sort_keys=False))
     if args.json:
         out: dict[str, Any] = {
             "spec": spec,

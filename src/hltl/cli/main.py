@@ -62,7 +62,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except HltlError as exc:
         if args.debug:
             traceback.print_exc()
-        print(f"error: {exc}", file=sys.stderr)
+        print(f"error: {error_line(str(exc))}", file=sys.stderr)
         return EXIT_FAILURE
     except KeyboardInterrupt:
         print("error: interrupted", file=sys.stderr)
@@ -74,6 +74,25 @@ def main(argv: Sequence[str] | None = None) -> int:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return EXIT_OK
+    except (RecursionError, MemoryError, UnicodeError, OSError) as exc:
+        # a defect (input that should have been refused with a clear message earlier), still
+        # reported as one line; --debug shows where
+        if args.debug:
+            traceback.print_exc()
+        text = error_line(f"{type(exc).__name__}: {exc}")
+        print(f"error: {text} (unexpected; rerun with --debug and report it)", file=sys.stderr)
+        return EXIT_FAILURE
+
+
+MAX_ERROR_CHARS = 2000
+
+
+def error_line(message: str) -> str:
+    """One bounded line: messages quote user input, which must not flood the terminal."""
+    line = " ".join(message.split("\n"))
+    if len(line) > MAX_ERROR_CHARS:
+        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
+    return line
 
 
 if __name__ == "__main__":

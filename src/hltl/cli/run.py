@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.common import check_option
 from hltl.errors import HltlError
 
 
@@ -53,6 +54,9 @@ def run(args: argparse.Namespace) -> int:
     from hltl.sim.simulator import PerceptionModel
     from hltl.world.scene import load_scene
 
+    check_option("--max-time", args.max_time, positive=True)
+    for name in ("noise", "latency", "plan_latency"):
+        check_option("--" + name.replace("_", "-"), getattr(args, name))
     try:
         config = EpisodeConfig(
             max_time=args.max_time,

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import heapq
-import json
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
@@ -11,9 +10,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-import yaml
-
 from hltl.errors import SpecSyntaxError, SpecValidationError
+from hltl.fileio import load_file
 from hltl.spec.automata import DFA, AutomatonCache, default_cache
 from hltl.spec.parser import KEYWORDS, parse_formula
 from hltl.spec.printer import atoms_in_order, to_string
@@ -443,15 +441,7 @@ def load_spec(
         SpecSyntaxError: a formula does not parse.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SpecValidationError(f"{path}: cannot read spec: {exc.strerror or exc}") from None
-    try:
-        data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
-    except (json.JSONDecodeError, yaml.YAMLError) as exc:
-        kind = "JSON" if path.suffix.lower() == ".json" else "YAML"
-        raise SpecValidationError(f"{path}: not valid {kind}: {exc}") from None
+    data = load_file(path, "spec", SpecValidationError)
     return spec_from_dict(data, str(path), cache=cache, check_automata=check_automata)
 
 
