@@ -99,15 +99,17 @@ def load_data(text: str, source: str, error: ErrorType, *, as_json: bool) -> Any
     """
     if as_json:
         return _load_json(text, source, error)
-    loader = _StrictLoader(text)
+    loader: _StrictLoader | None = None
     try:
+        loader = _StrictLoader(text)  # reads (and may refuse) the first characters already
         return loader.get_single_data()
     except _Refused as exc:
         raise error(f"{source}: {exc}") from None
     except yaml.YAMLError as exc:
         raise error(f"{source}: not valid YAML: {_bounded_yaml_error(exc)}") from None
     finally:
-        loader.dispose()
+        if loader is not None:
+            loader.dispose()
 
 
 def load_file(path: str | Path, what: str, error: ErrorType, limit: int = MAX_INPUT_BYTES) -> Any:
@@ -126,6 +128,9 @@ def open_output(path: str | Path, what: str) -> IO[str]:
     p = Path(path)
     if p.is_dir():
         raise OutputError(f"{p}: cannot write {what}: it is a folder; give a file name")
+    for parent in p.parents:
+        if parent.exists() and not parent.is_dir():
+            raise OutputError(f"{p}: cannot write {what}: {parent} is a file, not a folder")
     try:
         p.parent.mkdir(parents=True, exist_ok=True)
         return p.open("w", encoding="utf-8")

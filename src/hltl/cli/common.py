@@ -39,7 +39,9 @@ def load_spec_or_ground(
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
     from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction
 
+    check_instruction(instruction, "--instruction")
     spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
     return spec
 

@@ -42,9 +42,11 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction
     from hltl.spec.hierarchy import load_spec, spec_to_dict
     from hltl.world.scene import load_scene
 
+    check_instruction(args.instruction, "--instruction")
     scene = load_scene(args.scene)
     running = load_spec(args.running) if args.running is not None else None
     options: dict[str, Any] = {}

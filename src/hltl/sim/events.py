@@ -16,6 +16,7 @@ from typing import Any, Literal, TypeAlias
 
 from hltl.errors import EventsError
 from hltl.fileio import clip, load_file, quote
+from hltl.grounding.base import MAX_INSTRUCTION_CHARS
 from hltl.world.scene import Scene, Vec3
 
 SKILLS = ("pick", "place", "handover_r2r", "handover_r2h")
@@ -27,7 +28,6 @@ MAX_EVENTS = 10_000
 MAX_SECONDS = 1e6  # times and durations (about 11.6 days)
 MAX_SPEED = 10.0  # m/s; people walk at 1-2
 MIN_LEG = 0.01  # s, a wander's shortest leg
-MAX_TEXT = 2_000  # characters of an instruction
 
 
 @dataclass(frozen=True, slots=True)
@@ -217,7 +217,7 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
         if not isinstance(ev, Mapping):
             raise EventsError(f"{source}: events[{i}]: expected a mapping, got {quote(ev)}")
         kind = ev.get("type")
-        if kind not in _FIELDS:
+        if not isinstance(kind, str) or kind not in _FIELDS:
             raise EventsError(
                 f"{source}: events[{i}].type: unknown event type (value {quote(kind)}); "
                 f"expected one of {', '.join(_FIELDS)}"
@@ -263,8 +263,10 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
             text = ev["text"]
             if not isinstance(text, str) or not text.strip():
                 raise c.fail("text", "expected a non-empty instruction")
-            if len(text) > MAX_TEXT:
-                raise c.fail("text", f"an instruction has at most {MAX_TEXT:,} characters")
+            if len(text) > MAX_INSTRUCTION_CHARS:
+                raise c.fail(
+                    "text", f"an instruction has at most {MAX_INSTRUCTION_CHARS:,} characters"
+                )
             timed.append(Instruction(c.number("t"), text))
         elif kind == "robot_down":
             timed.append(

@@ -11,7 +11,7 @@ from types import MappingProxyType
 from typing import Any
 
 from hltl.errors import SpecSyntaxError, SpecValidationError
-from hltl.fileio import load_file
+from hltl.fileio import load_file, quote
 from hltl.spec.automata import DFA, AutomatonCache, default_cache
 from hltl.spec.parser import KEYWORDS, parse_formula
 from hltl.spec.printer import atoms_in_order, to_string
@@ -69,6 +69,11 @@ class HSpec:
         while layer:
             levels.append(tuple(layer))
             layer = [c for name in layer for c in children[name]]
+        if len(levels) > MAX_LEVELS:
+            # every pass over the tree (printing, monitors) recurses once per level
+            raise SpecValidationError(
+                f"the hierarchy has {len(levels)} levels; at most {MAX_LEVELS} are supported"
+            )
         order = [name for layer_ in levels for name in layer_]
         parent = {c: name for name in order for c in children[name]}
         object.__setattr__(self, "formulas", tuple((n, by_name[n]) for n in order))
@@ -111,6 +116,11 @@ class HSpec:
         return not self.children[name]
 
 
+MAX_LEVELS = 64  # far beyond any task a person states; keeps recursive passes bounded
+MAX_FORMULAS = 2_000
+MAX_NAME_CHARS = 64
+
+
 def _check_tree(
     root: str, formulas: tuple[tuple[str, Formula], ...]
 ) -> tuple[dict[str, Formula], dict[str, tuple[str, ...]]]:
@@ -119,20 +129,28 @@ def _check_tree(
     for name, f in formulas:
         if not isinstance(name, str) or not _NAME.fullmatch(name):
             raise SpecValidationError(
-                f"formula name {name!r} is not an identifier (letters, digits, _), e.g. p100"
+                f"formula name {quote(name)} is not an identifier (letters, digits, _), e.g. p100"
             )
         if name in KEYWORDS or name in PREDICATES:
             raise SpecValidationError(
-                f"formula name {name!r} is an operator or predicate name; use e.g. p100"
+                f"formula name {quote(name)} is an operator or predicate name; use e.g. p100"
+            )
+        if len(name) > MAX_NAME_CHARS:
+            raise SpecValidationError(
+                f"formula name {quote(name, 40)} is too long (at most {MAX_NAME_CHARS} characters)"
             )
         if name in by_name:
             raise SpecValidationError(f"formula {name} is defined twice")
         by_name[name] = f
     if not by_name:
         raise SpecValidationError("the specification has no formulas")
+    if len(by_name) > MAX_FORMULAS:
+        raise SpecValidationError(
+            f"the specification has {len(by_name):,} formulas; at most {MAX_FORMULAS:,}"
+        )
     listing = _listing(by_name)
     if root not in by_name:
-        raise SpecValidationError(f"root {root!r} is not a formula; formulas are: {listing}")
+        raise SpecValidationError(f"root {quote(root)} is not a formula; formulas are: {listing}")
 
     children: dict[str, tuple[str, ...]] = {}
     for name, f in by_name.items():

@@ -276,7 +276,15 @@ class _SceneIn(_Strict):
 _ID_CHARS = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-")
 
 
+MAX_ID_CHARS = 64  # ids appear in formulas, prompts and messages
+
+
 def _check_id(value: str, where: str, source: str) -> None:
+    if len(value) > MAX_ID_CHARS:
+        raise SceneError(
+            f"{source}: {where}: id {quote(value, 40)} is too long (at most {MAX_ID_CHARS} "
+            "characters)"
+        )
     if not set(value) <= _ID_CHARS or value[0].isdigit() or value[0] == "-":
         raise SceneError(
             f"{source}: {where}: id {quote(value)} is not valid; expected letters, digits, '_' "
@@ -352,7 +360,7 @@ def _format_validation(exc: ValidationError, source: str, data: Mapping[str, Any
     for part in loc:
         path += f"[{part}]" if isinstance(part, int) else (f".{part}" if path else str(part))
     value = _lookup(data, loc)
-    msg = err.get("msg", "invalid")
+    msg = str(err.get("msg", "invalid")).removeprefix("Value error, ")
     if err.get("type") == "extra_forbidden":
         return f"{source}: {path}: unknown field (value {quote(value)}); check the spelling"
     if err.get("type") == "missing":
