@@ -133,3 +133,40 @@ def test_usage_that_is_not_a_count_counts_as_zero(two_arms: Scene) -> None:
     bad.usage = SimpleNamespace(prompt_tokens="many", completion_tokens=-3)
     g = grounder(Scripted(bad)).ground("Give Person A the bottle", two_arms)
     assert g.tokens.total == 0
+
+
+class Spends:
+    """A grounder that spends tokens and fails, as an LLM whose answers are all refused."""
+
+    name = "spends"
+
+    def ground(self, instruction: str, scene: Scene, running: Any = None) -> Any:
+        raise GroundingError("every answer was refused", prompt_tokens=900, completion_tokens=70)
+
+
+def test_hltl_ground_reports_tokens_spent_on_failure(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], two_arms_path: Any
+) -> None:
+    import hltl.grounding
+
+    from hltl.cli.main import main
+
+    monkeypatch.setattr(hltl.grounding, "make_grounder", lambda name, **kw: Spends())
+    argv = ["ground", "--scene", str(two_arms_path), "--instruction", "give A the cup", "--json"]
+    assert main(argv) == 1
+    out, err = capsys.readouterr()
+    assert json.loads(out)["tokens"] == {"prompt": 900, "completion": 70}
+    assert err.strip().endswith("(900 prompt + 70 completion tokens spent)")
+
+
+def test_a_failed_grounding_in_an_episode_counts_its_tokens(two_arms: Scene) -> None:
+    from hltl.sim.episode import run_episode
+
+    episode = run_episode(two_arms, instruction="give A the cup", grounder=Spends())
+    record = next(r for r in episode.records if r["type"] == "grounding")
+    assert (record["tokens"], record["prompt_tokens"], record["completion_tokens"]) == (
+        970,
+        900,
+        70,
+    )
+    assert episode.metrics.tokens == 970 and not episode.success

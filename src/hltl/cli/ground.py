@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl.errors import GroundingError
 from hltl.fileio import write_output
 
 if TYPE_CHECKING:
@@ -55,7 +56,21 @@ def run(args: argparse.Namespace) -> int:
     if args.grounder == "local" and args.model is not None:
         options["model_path"] = args.model
     grounder = make_grounder(args.grounder, **options)
-    result = grounder.ground(args.instruction, scene, running)
+    try:
+        result = grounder.ground(args.instruction, scene, running)
+    except GroundingError as exc:
+        if not exc.tokens_spent:
+            raise
+        # tokens are paid for whether the answer was used or not: report them on failure too
+        tokens = {"prompt": exc.prompt_tokens, "completion": exc.completion_tokens}
+        if args.json:
+            print(json.dumps({"error": str(exc), "tokens": tokens}))
+        raise GroundingError(
+            f"{exc} ({exc.prompt_tokens} prompt + {exc.completion_tokens} completion tokens "
+            "spent)",
+            prompt_tokens=exc.prompt_tokens,
+            completion_tokens=exc.completion_tokens,
+        ) from None
     spec = spec_to_dict(result.spec)
     if args.output is not None:
         import yaml
