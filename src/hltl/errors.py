@@ -68,3 +68,7 @@ class PlanFormatError(HltlError, ValueError):
 
 class OutputError(HltlError, OSError):
     """A file or folder hltl was asked to write cannot be written (names the path and why)."""
+
+
+class PerceptionError(HltlError, ValueError):
+    """A frame folder or camera file is malformed, or frames cannot be interpreted."""

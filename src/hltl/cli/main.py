@@ -23,6 +23,8 @@ COMMAND_MODULES = (
     "demo",
     "viz",
     "bench",
+    "render",
+    "perception",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

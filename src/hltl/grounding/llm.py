@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hltl.errors import BackendUnavailableError, GroundingError
-from hltl.fileio import clip, quote
+from hltl.fileio import clip, quote, read_text
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.prompt import build_messages, repair_message, response_format
 from hltl.grounding.validate import AnswerError, check_answer
@@ -105,9 +105,7 @@ def load_config(path: str | Path | None = None, env: Mapping[str, str] | None = 
 
 def _read_toml(file: Path, env: Mapping[str, str]) -> dict[str, Any]:
     try:
-        data = tomllib.loads(file.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise GroundingError(f"{file}: cannot read LLM config: {exc.strerror or exc}") from None
+        data = tomllib.loads(read_text(file, "LLM config", GroundingError))
     except tomllib.TOMLDecodeError as exc:
         raise GroundingError(f"{file}: not valid TOML: {exc}") from None
     data = dict(data.get("llm", data))  # a [llm] table or top-level keys

@@ -6,19 +6,36 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from hltl.errors import UnknownEntityError
-from hltl.skills.cost import AnalyticCostModel, CostModel, cost_model_for
-from hltl.skills.library import DEFAULT_SKILLS, Action, Situation, Skill, ground, state_atoms
+from hltl.skills.cost import AnalyticCostModel, CostModel
+from hltl.skills.kinematics import Kinematics
+from hltl.skills.library import DEFAULT_SKILLS, Action, Skill, Transition, state_atoms
+from hltl.skills.semantics import ActionSemantics
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.printer import atoms as formula_atoms
 from hltl.spec.syntax import PREDICATES, Atom
-from hltl.world.geometry import distance, home_point
+from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
 
 # A search node x = (s, q): object places (codes), hand poses (point ids, or None when durations
 # are fixed and poses cannot change a cost), and the monitor state. η is derived (docs/model.md).
 Node = tuple[tuple[int, ...], tuple[int, ...] | None, MonitorState]
+
+# Search costs are integers in these units (microseconds): sums of integers do not depend on the
+# order they are added in, so the search (its ties, its expansions) is the same in every run,
+# whatever PYTHONHASHSEED says. A plan's makespan is the sum of its steps' rounded durations.
+TICKS_PER_SECOND = 1_000_000
+
+
+def to_ticks(seconds: float) -> int:
+    """Seconds as integer search-cost units (rounded to the nearest microsecond)."""
+    return round(seconds * TICKS_PER_SECOND)
+
+
+def to_seconds(ticks: float) -> float:
+    """Integer search-cost units back to seconds (``inf`` stays ``inf``)."""
+    return ticks / TICKS_PER_SECOND
 
 
 @dataclass(frozen=True, slots=True)
@@ -33,8 +50,8 @@ class Instance:
     free: tuple[int, ...]
     events: frozenset[Atom]
     hands: tuple[tuple[int, int], ...]  # (robot index, point index)
-    lower: float  # duration lower bound (exact when durations are fixed)
-    const: float  # analytic model: grasp/release/exchange time
+    lower: int  # duration lower bound in ticks (exact when durations are fixed)
+    const: float  # analytic model: grasp/release/exchange time in seconds
     action: Action
 
 
@@ -51,14 +68,16 @@ class Problem:
         q0: MonitorState | None = None,
         skills: Sequence[Skill] = DEFAULT_SKILLS,
         cost: CostModel | None = None,
+        kinematics: Kinematics | None = None,
     ) -> None:
         self.scene = scene
         self.spec = spec
         self.world = initial_world(scene) if world is None else world
         self.monitor = HierarchyMonitor(spec) if monitor is None else monitor
         self.q0 = self.monitor.initial if q0 is None else q0
-        self.cost = cost_model_for(scene) if cost is None else cost
-        self.situation = Situation.of(scene, self.world)
+        self.semantics = ActionSemantics.of(scene, cost=cost, skills=skills, kinematics=kinematics)
+        self.cost = self.semantics.cost
+        self.situation = self.semantics.situation(self.world)
         self.context = self.situation.context
 
         # every predicate atom of the spec, and which formulas mention which objects
@@ -86,6 +105,10 @@ class Problem:
         self.points: list[Vec3] = []
         self._point_index: dict[Vec3, int] = {}
         self.track_hands = not self.cost.fixed
+        # Objects no open formula mentions are never picked up only under fixed durations: when
+        # durations depend on hand poses, moving such an object can bring a hand closer to where
+        # it is needed next (docs/planner.md, "Exactness"), so every object stays in play.
+        self.prune_irrelevant = self.cost.fixed
         self.speeds: tuple[float, ...] = ()
         if isinstance(self.cost, AnalyticCostModel):
             self.speeds = tuple(self.cost._speed(r) for r in self.robots)
@@ -95,7 +118,9 @@ class Problem:
         self.by_obj_pre: list[list[list[Instance]]] = [
             [[] for _ in range(n_locs)] for _ in self.objects
         ]
-        for action, trans in ground(self.situation, skills):
+        self._transitions: dict[Action, Transition] = {}
+        for action, trans in self.semantics.instances(self.world):
+            self._transitions[action] = trans
             oi = self.obj_index[trans.obj]
             inst = Instance(
                 index=len(self.instances),
@@ -106,18 +131,25 @@ class Problem:
                 free=tuple(self.robot_index[r] for r in trans.free),
                 events=trans.events & self.spec_atoms,
                 hands=tuple((self.robot_index[r], self._point(p)) for r, p in trans.hands),
-                lower=self.cost.lower_bound(action, trans),
+                lower=to_ticks(self.cost.lower_bound(action, trans)),
                 const=self.cost.lower_bound(action, trans),
                 action=action,
             )
             self.instances.append(inst)
             self.by_obj_pre[oi][inst.pre].append(inst)
-        self._transitions = {a: t for a, t in ground(self.situation, skills)}
 
         # state atoms per (object, place), restricted to the spec's atoms
         self.state_atoms: list[list[frozenset[Atom]]] = [
             [state_atoms(o, loc) & self.spec_atoms for loc in self.locs] for o in self.objects
         ]
+        # instances no monitor can see: no spec event, and the object has no spec state atom
+        # where it starts or ends (picks and robot-to-robot handovers in delivery tasks)
+        self.invisible: tuple[bool, ...] = tuple(
+            not inst.events
+            and not self.state_atoms[inst.obj][inst.pre]
+            and not self.state_atoms[inst.obj][inst.post]
+            for inst in self.instances
+        )
         self.state_atom_objects: tuple[int, ...] = tuple(
             i for i in range(len(self.objects)) if any(self.state_atoms[i])
         )
@@ -145,8 +177,9 @@ class Problem:
         locs = tuple(self.loc_code[status[o].loc] for o in self.objects)
         hands: tuple[int, ...] | None = None
         if self.track_hands:
+            home = self.semantics.kinematics.home_point
             hands = tuple(
-                self._point(self.world.hand_position(r) or home_point(self.scene.robot(r)))
+                self._point(self.world.hand_position(r) or home(self.scene.robot(r)))
                 for r in self.robots
             )
         return (locs, hands, self.q0)
@@ -169,16 +202,17 @@ class Problem:
             self._dist[key] = d
         return d
 
-    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> float:
+    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> int:
+        """The instance's duration in ticks when the hands start at ``hands``."""
         if hands is None:
             return inst.lower
         if self.speeds:
             t = 0.0
             for r, p in inst.hands:
                 t = max(t, self.travel(hands[r], p) / self.speeds[r])
-            return t + inst.const
+            return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
-        return self.cost.duration(inst.action, self._transitions[inst.action], start)
+        return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
 
 
 def _object_args(atom: Atom) -> tuple[str, ...]:
