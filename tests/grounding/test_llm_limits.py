@@ -148,7 +148,6 @@ def test_hltl_ground_reports_tokens_spent_on_failure(
     monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], two_arms_path: Any
 ) -> None:
     import hltl.grounding
-
     from hltl.cli.main import main
 
     monkeypatch.setattr(hltl.grounding, "make_grounder", lambda name, **kw: Spends())

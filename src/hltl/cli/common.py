@@ -14,6 +14,17 @@ if TYPE_CHECKING:
     from hltl.world.scene import Scene
 
 
+MAX_ERROR_CHARS = 2000
+
+
+def error_line(message: str) -> str:
+    """One bounded line: messages quote user input, which must not flood the terminal."""
+    line = " ".join(message.split("\n"))
+    if len(line) > MAX_ERROR_CHARS:
+        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
+    return line
+
+
 def check_option(name: str, value: float, *, positive: bool = False) -> float:
     """A numeric option's value if it is finite and >= 0 (> 0 with ``positive``).
 

@@ -66,8 +66,7 @@ def run(args: argparse.Namespace) -> int:
         if args.json:
             print(json.dumps({"error": str(exc), "tokens": tokens}))
         raise GroundingError(
-            f"{exc} ({exc.prompt_tokens} prompt + {exc.completion_tokens} completion tokens "
-            "spent)",
+            f"{exc} ({exc.prompt_tokens} prompt + {exc.completion_tokens} completion tokens spent)",
             prompt_tokens=exc.prompt_tokens,
             completion_tokens=exc.completion_tokens,
         ) from None

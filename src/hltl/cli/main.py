@@ -9,6 +9,7 @@ import traceback
 from collections.abc import Sequence
 
 from hltl import __version__
+from hltl.cli.common import error_line
 from hltl.errors import HltlError
 
 # Subcommands live in their own modules (``hltl.cli.<module>``), each exposing
@@ -84,17 +85,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         text = error_line(f"{type(exc).__name__}: {exc}")
         print(f"error: {text} (unexpected; rerun with --debug and report it)", file=sys.stderr)
         return EXIT_FAILURE
-
-
-MAX_ERROR_CHARS = 2000
-
-
-def error_line(message: str) -> str:
-    """One bounded line: messages quote user input, which must not flood the terminal."""
-    line = " ".join(message.split("\n"))
-    if len(line) > MAX_ERROR_CHARS:
-        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
-    return line
 
 
 if __name__ == "__main__":

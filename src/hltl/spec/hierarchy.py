@@ -159,13 +159,14 @@ def _check_tree(
         unknown = [n for n in bare if n not in by_name]
         if unknown and not kids:
             raise SpecValidationError(
-                f"{name} refers to {unknown[0]!r}, which is not a formula; formulas are: "
+                f"{name} refers to {quote(unknown[0])}, which is not a formula; formulas are: "
                 f"{listing} (leaf formulas use predicate atoms: "
                 f"{_listing(f'{p}(...)' for p in sorted(PREDICATES))})"
             )
         if unknown:
             raise SpecValidationError(
-                f"{name} refers to {unknown[0]!r}, which is not a formula; formulas are: {listing}"
+                f"{name} refers to {quote(unknown[0])}, which is not a formula; formulas are: "
+                f"{listing}"
             )
         if name in kids:
             raise SpecValidationError(f"{name} refers to itself; the hierarchy must be a tree")
@@ -347,7 +348,7 @@ def _from_design(data: Mapping[Any, Any], source: str) -> tuple[str, list[tuple[
     unknown = [k for k in data if k not in ("root", "formulas")]
     if unknown:
         raise SpecValidationError(
-            f"{source}: unknown key {unknown[0]!r}; a spec has 'root' and 'formulas'"
+            f"{source}: unknown key {quote(unknown[0])}; a spec has 'root' and 'formulas'"
         )
     if "formulas" not in data:
         raise SpecValidationError(f"{source}: missing 'formulas' (a mapping of name to formula)")
