@@ -50,6 +50,21 @@ def register(sub: Any) -> None:
         help="simulated seconds each critical-path planner call costs",
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
+    p.add_argument(
+        "--sim",
+        choices=("discrete", "mujoco"),
+        default="discrete",
+        help="discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log",
+    )
+    p.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
+    p.add_argument(
+        "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
+    )
     p.set_defaults(func=run)
 
 
@@ -90,6 +105,14 @@ def run(args: argparse.Namespace) -> int:
 
     predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
+    if args.sim != "mujoco" and args.frames is not None:
+        raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
+    extra: dict[str, Any] = {}
+    recorder = None
+    if args.sim == "mujoco":
+        from hltl.cli.sim3d import simulator_options
+
+        extra, recorder = simulator_options(scene, args.timing, args.frames)
     episode = run_episode(
         scene,
         spec=spec,
@@ -101,7 +124,12 @@ def run(args: argparse.Namespace) -> int:
         predictor=predictor,
         log_path=args.log,
         on_record=None if timeline is None else timeline,
+        **extra,
     )
+    if recorder is not None:
+        recorder.close()
+        if not args.json:
+            print(f"frames: {recorder.frames} in {args.frames}", file=sys.stderr)
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:
@@ -189,6 +217,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return "cyan", repr(rec["text"])
     if kind in ("wait", "give_up"):
         return "yellow" if kind == "wait" else "bold red", rec["reason"]
+    if kind == "contact":
+        return "bold red", f"{rec['robot']} touches {rec['human']} ({rec['part']})"
     if kind == "violation":
         return "bold red", f"{act(rec['action'])}: {rec['reason']}"
     if kind == "episode_end":

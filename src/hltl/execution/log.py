@@ -46,6 +46,7 @@ RECORD_TYPES = frozenset(
         "robot_up",
         "instruction",
         "violation",
+        "contact",
     }
 )
 
