@@ -47,6 +47,7 @@ RECORD_TYPES = frozenset(
         "instruction",
         "violation",
         "contact",
+        "perception",
     }
 )
 
