@@ -50,3 +50,7 @@ class EventsError(HltlError, ValueError):
 
 class PlanFormatError(HltlError, ValueError):
     """A plan or log file does not follow the documented format."""
+
+
+class PerceptionError(HltlError, ValueError):
+    """A frame folder or camera file is malformed, or frames cannot be interpreted."""

@@ -98,6 +98,11 @@ def register(sub: Any) -> None:
     rp.add_argument("--write", type=Path, help="update this Markdown file's replan section")
     rp.set_defaults(func=run_replan)
 
+    gr = bsub.add_parser("grounding", help="offline grounder on the paraphrase corpus")
+    gr.add_argument("--show", action="store_true", help="list every instruction not exact")
+    gr.add_argument("--write", type=Path, help="update this Markdown file's grounding section")
+    gr.set_defaults(func=run_grounding)
+
 
 def run_planner(args: argparse.Namespace) -> int:
     from rich.console import Console
@@ -219,6 +224,52 @@ def run_replan(args: argparse.Namespace) -> int:
             "excluded); each episode has a person walking across the cell midway.\n\n" + table
         )
         write_section(args.write, "replan", body)
+        print(f"wrote {args.write}", file=sys.stderr)
+    return 0
+
+
+def run_grounding(args: argparse.Namespace) -> int:
+    import datetime
+
+    from hltl.bench.grounding import (
+        CORPUS_DIR,
+        PARTS,
+        format_scores,
+        load_corpus,
+        offline_tree,
+        repository_root,
+        score,
+    )
+
+    root = repository_root()
+    scores = []
+    for part in PARTS:
+        result = score(load_corpus(root / CORPUS_DIR / f"{part}.yaml", root), offline_tree)
+        scores.append(result)
+        print(
+            f"  {part}: {result.exact_pct:.1f} % exact of {result.total}, "
+            f"{result.count('wrong')} wrong",
+            file=sys.stderr,
+        )
+        for o in result.outcomes:
+            if o.verdict != "exact" and (args.show or o.verdict == "wrong"):
+                print(
+                    f"    [{o.verdict}] {o.entry.scene}: {o.entry.text!r} -> {o.detail}",
+                    file=sys.stderr,
+                )
+    table = format_scores(scores)
+    print(table)
+    if args.write is not None:
+        body = (
+            f"Command: `hltl bench grounding --write {shlex.quote(str(args.write))}`  \n"
+            f"Date: {datetime.date.today().isoformat()}. Machine: {platform.machine()}, "
+            f"Python {platform.python_version()}, "
+            f"{_cpus()} cores (shared). Exact = a spec language-equivalent to the expected one, or "
+            "a refusal (listing the readings when the corpus names them); wrong = a spec that "
+            "differs, or a grounding where a refusal was expected. Parts: docs/grounding.md.\n\n"
+            + table
+        )
+        write_section(args.write, "grounding", body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
 

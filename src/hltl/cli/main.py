@@ -24,6 +24,7 @@ COMMAND_MODULES = (
     "viz",
     "bench",
     "render",
+    "perception",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

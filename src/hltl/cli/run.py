@@ -32,6 +32,13 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--no-predict", action="store_true", help="no predictive planning or intrusion forecasts"
     )
+    p.add_argument(
+        "--predictor",
+        choices=("cv", "goal", "gru"),
+        default="cv",
+        help="human trajectory predictor for workspace prediction and intrusion forecasts: "
+        "constant velocity, goal-directed or the learned GRU (default: cv)",
+    )
     p.add_argument("--grounder", default="offline", help="grounder for instructions")
     p.add_argument("--noise", type=float, default=0.0, help="perception noise (m, std. dev.)")
     p.add_argument("--latency", type=float, default=0.0, help="perception latency (s)")
@@ -42,6 +49,21 @@ def register(sub: Any) -> None:
         help="simulated seconds each critical-path planner call costs",
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
+    p.add_argument(
+        "--sim",
+        choices=("discrete", "mujoco"),
+        default="discrete",
+        help="discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log",
+    )
+    p.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
+    p.add_argument(
+        "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
+    )
     p.set_defaults(func=run)
 
 
@@ -72,7 +94,18 @@ def run(args: argparse.Namespace) -> int:
 
         spec = load_spec(args.spec)
     events = load_events(args.events, scene) if args.events is not None else None
+    from hltl.perception.predict import make_predictor
+
+    predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
+    if args.sim != "mujoco" and args.frames is not None:
+        raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
+    extra: dict[str, Any] = {}
+    recorder = None
+    if args.sim == "mujoco":
+        from hltl.cli.sim3d import simulator_options
+
+        extra, recorder = simulator_options(scene, args.timing, args.frames)
     episode = run_episode(
         scene,
         spec=spec,
@@ -81,9 +114,15 @@ def run(args: argparse.Namespace) -> int:
         seed=args.seed,
         config=config,
         grounder=make_grounder(args.grounder),
+        predictor=predictor,
         log_path=args.log,
         on_record=None if timeline is None else timeline,
+        **extra,
     )
+    if recorder is not None:
+        recorder.close()
+        if not args.json:
+            print(f"frames: {recorder.frames} in {args.frames}", file=sys.stderr)
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:
@@ -171,6 +210,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return "cyan", repr(rec["text"])
     if kind in ("wait", "give_up"):
         return "yellow" if kind == "wait" else "bold red", rec["reason"]
+    if kind == "contact":
+        return "bold red", f"{rec['robot']} touches {rec['human']} ({rec['part']})"
     if kind == "violation":
         return "bold red", f"{act(rec['action'])}: {rec['reason']}"
     if kind == "episode_end":

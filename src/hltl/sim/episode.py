@@ -99,6 +99,7 @@ def run_episode(
     log_path: str | Path | None = None,
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
+    simulator: Callable[..., Simulator] = Simulator,
 ) -> Episode:
     """Run one closed-loop episode in the simulator.
 
@@ -115,6 +116,9 @@ def run_episode(
         log_path: also write the JSON Lines log there.
         on_record: called with each log record as it is written.
         hooks: called every tick.
+        simulator: makes the world, called as ``simulator(scene, events, seed=, perception=,
+            log=)``: the discrete-event :class:`Simulator` or one with the same interface
+            (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`).
 
     Raises:
         ValueError: neither or both of ``spec`` and ``instruction`` given.
@@ -124,7 +128,7 @@ def run_episode(
     cfg = EpisodeConfig() if config is None else config
     schedule = EventSchedule() if events is None else events
     with EventLog(log_path, on_record) as log:
-        sim = Simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
+        sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
         executor = Executor(
             scene,
             spec,
