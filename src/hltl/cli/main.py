@@ -25,6 +25,7 @@ COMMAND_MODULES = (
     "bench",
     "render",
     "perception",
+    "perceive",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2
