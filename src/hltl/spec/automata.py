@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import re
 import shutil
 import subprocess
@@ -488,9 +491,13 @@ class AutomatonCache:
     the one compilation in flight. Failed compilations are not cached.
     """
 
-    def __init__(self, *, mona: str = "mona", timeout: float = MONA_TIMEOUT) -> None:
+    def __init__(
+        self, *, mona: str = "mona", timeout: float = MONA_TIMEOUT, disk: Path | None = None
+    ) -> None:
         self.mona = mona
         self.timeout = timeout
+        #: a folder that keeps compiled tables across processes (None: memory only)
+        self.disk = disk
         self._lock = threading.Lock()
         self._entries: dict[Formula, Future[DFA]] = {}
         self._hits = 0
@@ -535,7 +542,7 @@ class AutomatonCache:
                 self._hits += 1
         if owner:
             try:
-                fut.set_result(_compile_canonical(canonical, len(props), self.mona, self.timeout))
+                fut.set_result(self._compile(canonical, len(props)))
             except BaseException as exc:
                 with self._lock:
                     self._entries.pop(canonical, None)
@@ -546,8 +553,59 @@ class AutomatonCache:
             raise AutomatonError(str(exc).replace(to_string(canonical), to_string(f))) from None
         return dfa.relabel(props)
 
+    def _compile(self, canonical: Formula, n_props: int) -> DFA:
+        """MONA, unless the disk folder already holds this formula's table."""
+        if self.disk is None:
+            return _compile_canonical(canonical, n_props, self.mona, self.timeout)
+        text = to_string(canonical)
+        path = self.disk / (hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            if data["formula"] == text and data["format"] == DISK_FORMAT:
+                return DFA(
+                    tuple(_placeholder(i) for i in range(n_props)),
+                    int(data["initial"]),
+                    frozenset(int(x) for x in data["accepting"]),
+                    int(data["n_states"]),
+                    tuple(int(x) for x in data["table"]),
+                )
+        except (OSError, ValueError, KeyError, TypeError, AutomatonError):
+            pass  # absent or unreadable: compile it
+        dfa = _compile_canonical(canonical, n_props, self.mona, self.timeout)
+        if not isinstance(dfa, MonotoneDFA):
+            record = {
+                "format": DISK_FORMAT,
+                "formula": text,
+                "initial": dfa.initial,
+                "accepting": sorted(dfa.accepting),
+                "n_states": dfa.n_states,
+                "table": list(dfa.table),
+            }
+            try:
+                self.disk.mkdir(parents=True, exist_ok=True)
+                tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")
+                tmp.write_text(json.dumps(record), encoding="utf-8")
+                os.replace(tmp, path)  # atomic: concurrent processes never read half a file
+            except OSError:
+                pass  # a read-only cache folder only costs the next process a MONA call
+        return dfa
 
-_default_cache = AutomatonCache()
+
+DISK_FORMAT = 1
+
+
+def disk_cache_dir() -> Path | None:
+    """Where the default cache keeps tables across processes: ``$HLTL_CACHE_DIR/dfa``, else
+    ``$XDG_CACHE_HOME/hltl/dfa`` or ``~/.cache/hltl/dfa``; ``HLTL_CACHE_DIR=off`` disables it."""
+    root = os.environ.get("HLTL_CACHE_DIR")
+    if root is not None:
+        return None if root in ("", "off", "0") else Path(root) / "dfa"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    base = Path(xdg) if xdg else Path.home() / ".cache"
+    return base / "hltl" / "dfa"
+
+
+_default_cache = AutomatonCache(disk=disk_cache_dir())
 
 
 def default_cache() -> AutomatonCache:
