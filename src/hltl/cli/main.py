@@ -30,6 +30,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "perception": ("perception", "train and evaluate the trajectory predictors"),
     "perceive": ("perceive", "objects in 3D and tracked people from an RGB-D frame folder"),
+    "motion": (
+        "motion",
+        "arm kinematics: handover poses, comfort zones, skill motions, reachability maps",
+    ),
 }
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -52,6 +52,12 @@ def register(sub: Any) -> None:
         help="anytime mode that stops once makespan <= W x lower bound (W >= 1, e.g. 1.1)",
     )
     p.add_argument("--json", action="store_true", help="print the plan JSON")
+    p.add_argument(
+        "--motion",
+        action="store_true",
+        help="reach from the arms' reachability maps and durations from motion plans "
+        "(robots with model elfin3, ur5 or panda; needs the motion extra)",
+    )
     p.add_argument("-o", "--output", type=Path, help="also write the plan JSON to this file")
     p.set_defaults(func=run)
 
@@ -71,6 +77,12 @@ def run(args: argparse.Namespace) -> int:
     timeout = args.timeout if args.timeout is not None else (10.0 if anytime else 60.0)
     scene = load_scene(args.scene)
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
+    extra: dict[str, Any] = {}
+    if args.motion:
+        from hltl.motion.cost import motion_models
+
+        kinematics, cost = motion_models(scene)
+        extra = {"kinematics": kinematics, "cost": cost}
     result = plan(
         scene,
         spec,
@@ -78,6 +90,7 @@ def run(args: argparse.Namespace) -> int:
         timeout=timeout,
         anytime=anytime,
         suboptimality=args.suboptimality,
+        **extra,
     )
     data = result.to_dict(spec=spec_to_dict(spec), scene=str(args.scene))
     if args.output is not None:
