@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from pathlib import Path
 from typing import Any
 
-from hltl.cli.common import load_spec_or_ground, print_plan_timeline
+from hltl.cli.common import check_option, load_spec_or_ground, print_plan_timeline
 from hltl.errors import HltlError
+from hltl.fileio import write_output
 
 
 def register(sub: Any) -> None:
@@ -67,9 +69,11 @@ def run(args: argparse.Namespace) -> int:
     from hltl.spec.hierarchy import spec_to_dict
     from hltl.world.scene import load_scene
 
-    if args.timeout is not None and not args.timeout > 0:
-        raise HltlError(f"--timeout: expected a positive number of seconds, got {args.timeout}")
-    if args.suboptimality is not None and not args.suboptimality >= 1.0:
+    if args.timeout is not None:
+        check_option("--timeout", args.timeout, positive=True)
+    if args.suboptimality is not None and not (
+        math.isfinite(args.suboptimality) and args.suboptimality >= 1.0
+    ):
         raise HltlError(
             f"--suboptimality: expected a factor of at least 1 (e.g. 1.1), got {args.suboptimality}"
         )
@@ -94,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
     )
     data = result.to_dict(spec=spec_to_dict(spec), scene=str(args.scene))
     if args.output is not None:
-        args.output.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+        write_output(args.output, "the plan", json.dumps(data, indent=2) + "\n")
     if args.json:
         print(json.dumps(data, indent=2))
     else:
