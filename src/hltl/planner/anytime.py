@@ -21,6 +21,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import _infeasible, _Search, plan_steps, search
@@ -31,6 +32,9 @@ from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 RESTART_SHARE = 0.5
 # the share spent first on the exact search (small cells are proved optimal right away)
 EXACT_FIRST_SHARE = 0.2
+# big cells: pair bounds until this share of the budget, more orders until the next
+PAIRS_SHARE = 0.45
+BIG_RESTART_SHARE = 0.9
 # pair tables cost about a millisecond each; beyond this many goal atoms they wait for A*
 PAIRS_UP_TO = 8
 
@@ -382,14 +386,24 @@ def plan_anytime(
         heur.enable_pairs()
         lb = max(lb, heur(start))
         note()
+    # small cells: a short exact search first (they finish here, proved optimal), then more
+    # priority orders, then the exact search again with whatever time is left. Big cells: pair
+    # bounds at the start node (most promising pairs first) instead of the first exact slice,
+    # whose very first expansion would enumerate more step sets than there is time for
+    big = n_goals > PAIRS_UP_TO
+    phases = (
+        (PAIRS_SHARE, BIG_RESTART_SHARE, 1.0) if big else (EXACT_FIRST_SHARE, RESTART_SHARE, 1.0)
+    )
     expanded = 0
-    # a short exact search first (small cells finish here, proved optimal), then more priority
-    # orders, then the exact search again with whatever time is left
-    for until in (EXACT_FIRST_SHARE, RESTART_SHARE, 1.0):
+    for k, until in enumerate(phases):
         if good_enough():
             break
         end = min(deadline, t0 + until * timeout)
-        if until == RESTART_SHARE:
+        if big and k == 0:
+            lb = max(lb, _pairs_at_start(problem, s, start, end))
+            note()
+            continue
+        if k == 1:
             if best is not None:
                 cand = _more(problem, s, end)
                 if cand is not None and cand[0] < best[0]:
@@ -432,6 +446,26 @@ def plan_anytime(
     return PlanResult(
         PlanStatus.SOLVED, steps, to_seconds(best[0]), stats, "", to_seconds(min(lb, best[0]))
     )
+
+
+def _pairs_at_start(problem: Problem, s: _Search, start: Node, until: float) -> float:
+    """The best pairwise bound at the start node from the pairs solved before ``until``, the
+    pairs of the longest routes first (any subset of pairs gives a valid bound)."""
+    heur = s.heuristic
+    graph = heur.graph
+    locs = start[0]
+    atoms_ = sorted(heur.required_atoms(start[2]))
+    crit = {a: graph.atom_time(a, locs) for a in atoms_}
+    pairs = [(a, b) for i, a in enumerate(atoms_) for b in atoms_[i + 1 :]]
+    pairs.sort(key=lambda ab: (-min(crit[ab[0]], crit[ab[1]]), -max(crit[ab[0]], crit[ab[1]])))
+    bound = PairBound(problem, graph)
+    best = 0.0
+    for a, b in pairs:
+        if time.perf_counter() > until:
+            break
+        for lk in bound.lookups([a, b]):
+            best = max(best, pair_value(lk, locs))
+    return best
 
 
 def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
