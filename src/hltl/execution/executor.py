@@ -303,7 +303,13 @@ class Executor:
             self.grounder = make_grounder("offline")
         t0 = time.perf_counter()
         try:
-            g = self.grounder.ground(text, self.scene, running=self.spec)
+            if self.spec is None:
+                g = self.grounder.ground(text, self.scene)
+            else:
+                from hltl.grounding.update import apply_update
+
+                # what is done decides what an update may change (finished work stays finished)
+                g = apply_update(text, self.scene, self.spec, self.grounder, self.done_formulas())
         except GroundingError as exc:
             self.log.emit(
                 self.t,
