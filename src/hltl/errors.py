@@ -50,3 +50,7 @@ class EventsError(HltlError, ValueError):
 
 class PlanFormatError(HltlError, ValueError):
     """A plan or log file does not follow the documented format."""
+
+
+class BusError(HltlError, RuntimeError):
+    """The Zenoh bus cannot be used: no node answers, a malformed message, a bad endpoint."""

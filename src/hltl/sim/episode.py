@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
 from hltl.execution.log import EventLog, Record
 from hltl.sim.events import EventSchedule
@@ -19,6 +20,7 @@ from hltl.sim.metrics import Metrics, compute_metrics
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.world.scene import Scene
+from hltl.world.state import WorldState
 
 if TYPE_CHECKING:
     from hltl.execution.predict import TrajectoryPredictor
@@ -66,10 +68,39 @@ class EpisodeConfig:
         }
 
 
+class Cell(RobotDriver, Protocol):
+    """The world the loop drives: the robots' driver plus the simulated clock and perception.
+
+    :class:`~hltl.sim.simulator.Simulator` is one; ``hltl.bus`` serves one over Zenoh and
+    drives it from another process.
+    """
+
+    def advance(self, t: float) -> None: ...
+
+    def observe(self, t: float | None = None) -> WorldState: ...
+
+    def next_event_time(self) -> float: ...
+
+    def pending_instructions(self) -> bool: ...
+
+    def take_instructions(self) -> list[str]: ...
+
+
+# Builds the episode's cell from the scene, the events, the seed, the perception model and the log.
+CellFactory = Callable[[Scene, EventSchedule, int, PerceptionModel, EventLog], Cell]
+
+
+def simulated_cell(
+    scene: Scene, events: EventSchedule, seed: int, perception: PerceptionModel, log: EventLog
+) -> Cell:
+    """The default cell: the in-process discrete-event simulator."""
+    return Simulator(scene, events, seed=seed, perception=perception, log=log)
+
+
 class EpisodeHook(Protocol):
     """Sees the episode as it runs (tests, live displays, custom tasks)."""
 
-    def on_tick(self, t: float, sim: Simulator, executor: Executor) -> None: ...
+    def on_tick(self, t: float, sim: Cell, executor: Executor) -> None: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -99,6 +130,7 @@ def run_episode(
     log_path: str | Path | None = None,
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
+    cell: CellFactory = simulated_cell,
 ) -> Episode:
     """Run one closed-loop episode in the simulator.
 
@@ -115,6 +147,8 @@ def run_episode(
         log_path: also write the JSON Lines log there.
         on_record: called with each log record as it is written.
         hooks: called every tick.
+        cell: builds the world the loop drives (default: the in-process simulator; the bus
+            passes one that drives a simulator node over Zenoh).
 
     Raises:
         ValueError: neither or both of ``spec`` and ``instruction`` given.
@@ -124,7 +158,7 @@ def run_episode(
     cfg = EpisodeConfig() if config is None else config
     schedule = EventSchedule() if events is None else events
     with EventLog(log_path, on_record) as log:
-        sim = Simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
+        sim = cell(scene, schedule, seed, cfg.perception, log)
         executor = Executor(
             scene,
             spec,
