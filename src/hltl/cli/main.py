@@ -23,6 +23,7 @@ COMMAND_MODULES = (
     "demo",
     "viz",
     "bench",
+    "node",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 from pathlib import Path
@@ -42,13 +43,26 @@ def register(sub: Any) -> None:
         help="simulated seconds each critical-path planner call costs",
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
+    p.add_argument(
+        "--bus",
+        metavar="zenoh[:ENDPOINT]",
+        help="drive a simulator node over the Zenoh bus (started with 'hltl node sim') instead "
+        "of the in-process simulator; ENDPOINT defaults to tcp/127.0.0.1:7447",
+    )
+    p.add_argument("--cell", default="default", help="with --bus: the cell's name on the bus")
+    p.add_argument(
+        "--bus-timeout",
+        type=float,
+        default=1.0,
+        help="with --bus: seconds to wait for an answer before retrying (3 retries)",
+    )
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     from hltl.execution.executor import ExecutorConfig
     from hltl.grounding import make_grounder
-    from hltl.sim.episode import EpisodeConfig, run_episode
+    from hltl.sim.episode import EpisodeConfig, run_episode, simulated_cell
     from hltl.sim.events import load_events
     from hltl.sim.simulator import PerceptionModel
     from hltl.world.scene import load_scene
@@ -73,17 +87,20 @@ def run(args: argparse.Namespace) -> int:
         spec = load_spec(args.spec)
     events = load_events(args.events, scene) if args.events is not None else None
     timeline = None if args.json else Timeline(scene)
-    episode = run_episode(
-        scene,
-        spec=spec,
-        instruction=args.instruction,
-        events=events,
-        seed=args.seed,
-        config=config,
-        grounder=make_grounder(args.grounder),
-        log_path=args.log,
-        on_record=None if timeline is None else timeline,
-    )
+    with contextlib.ExitStack() as stack:
+        cell = simulated_cell if args.bus is None else _bus_cell(args, stack)
+        episode = run_episode(
+            scene,
+            spec=spec,
+            instruction=args.instruction,
+            events=events,
+            seed=args.seed,
+            config=config,
+            grounder=make_grounder(args.grounder),
+            log_path=args.log,
+            on_record=None if timeline is None else timeline,
+            cell=cell,
+        )
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:
@@ -92,6 +109,29 @@ def run(args: argparse.Namespace) -> int:
         print(f"error: episode failed: {episode.metrics.reason}", file=sys.stderr)
         return 1
     return 0
+
+
+def _bus_cell(args: argparse.Namespace, stack: contextlib.ExitStack) -> Any:
+    """A cell factory driving the simulator node named by ``--bus``/``--cell``; the session and
+    every cell it builds are closed (and the node told the episode ended) when ``stack`` exits."""
+    from hltl.bus.driver import BusCell, BusTiming, bus_cell
+    from hltl.bus.session import BusConfig, open_session, parse_bus
+
+    endpoint = parse_bus(args.bus)
+    try:
+        timing = BusTiming(timeout=args.bus_timeout)
+    except ValueError as exc:
+        raise HltlError(f"--bus-timeout: {exc}") from None
+    session = stack.enter_context(open_session(BusConfig(connect=(endpoint,))))
+    opened: list[BusCell] = []
+
+    def finish() -> None:
+        for c in opened:
+            c.end()
+            c.close()
+
+    stack.callback(finish)
+    return bus_cell(session, cell=args.cell, timing=timing, opened=opened)
 
 
 class Timeline:
@@ -163,6 +203,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         )
     if kind == "object_drop":
         return "yellow", f"{rec['object']} dropped at {rec['position']}"
+    if kind == "robot_down" and rec.get("until") is None:  # lost on the bus: no known return
+        return "yellow", f"{rec['robot']}: {rec.get('reason', 'down')}"
     if kind in ("robot_down", "robot_up"):
         return "yellow", rec["robot"] + (
             f" until t={rec['until']:.2f}" if kind == "robot_down" else ""
