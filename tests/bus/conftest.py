@@ -9,7 +9,7 @@ import pytest
 pytest.importorskip("zenoh")
 pytest.importorskip("rosbags")
 
-from tests.bus.helpers import Loopback, free_endpoint  # noqa: E402
+from tests.bus.helpers import Loopback, free_endpoint
 
 
 @pytest.fixture

@@ -18,6 +18,7 @@ from tests.bus.helpers import Loopback, free_endpoint, without_wall_clock
 
 ROOT = Path(__file__).resolve().parents[2]
 EVENTS = ROOT / "examples" / "events"
+HLTL = (sys.executable, "-m", "hltl.cli.main")
 
 
 def _assert_same(loopback: Loopback, scene, **episode) -> None:  # type: ignore[no-untyped-def]
@@ -116,8 +117,7 @@ def test_cli_node_in_a_subprocess_gives_the_in_process_metrics(tmp_path: Path) -
     scene = ROOT / "examples" / "scenes" / "fig1.yaml"
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     node = subprocess.Popen(
-        [sys.executable, "-m", "hltl.cli.main", "node", "sim", "--scene", str(scene)]
-        + ["--listen", endpoint, "--episodes", "1"],
+        [*HLTL, "node", "sim", "--scene", str(scene), "--listen", endpoint, "--episodes", "1"],
         env=env,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
@@ -128,8 +128,7 @@ def test_cli_node_in_a_subprocess_gives_the_in_process_metrics(tmp_path: Path) -
         common += ["--instruction", "Give Person A the bottle and Person B the chips"]
         common += ["--json"]
         bus = subprocess.run(
-            [sys.executable, "-m", "hltl.cli.main", *common, "--bus", f"zenoh:{endpoint}"]
-            + ["--log", str(tmp_path / "bus.jsonl")],
+            [*HLTL, *common, "--bus", f"zenoh:{endpoint}", "--log", str(tmp_path / "bus.jsonl")],
             env=env,
             capture_output=True,
             text=True,
@@ -139,7 +138,7 @@ def test_cli_node_in_a_subprocess_gives_the_in_process_metrics(tmp_path: Path) -
     finally:
         node.kill()
     local = subprocess.run(
-        [sys.executable, "-m", "hltl.cli.main", *common, "--log", str(tmp_path / "local.jsonl")],
+        [*HLTL, *common, "--log", str(tmp_path / "local.jsonl")],
         env=env,
         capture_output=True,
         text=True,

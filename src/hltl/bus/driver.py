@@ -83,6 +83,7 @@ class DriverStats:
     retransmits: int = 0
     reports: int = 0
     duplicate_reports: int = 0
+    reordered_reports: int = 0
     stale_reports: int = 0
     recoveries: int = 0
     queries: int = 0
@@ -202,6 +203,8 @@ class BusCell:
             self.stats.duplicate_reports += 1
         else:
             self.stats.reports += 1
+            if self._received and rep.seq < max(self._received):
+                self.stats.reordered_reports += 1
             self._received.add(rep.seq)
             while self._contiguous + 1 in self._received:
                 self._contiguous += 1
@@ -349,6 +352,10 @@ class BusCell:
     def observe(self, t: float | None = None) -> WorldState:
         if self._obs is None:
             raise BusError("no observation from the simulator node yet")
+        if self._dead:
+            # The node is gone and every robot with it: nothing can be dispatched, so the last
+            # world seen is good enough for the executor to conclude and give up with a reason.
+            return self._obs.with_time(self.now if t is None else t)
         return self._obs
 
     def next_event_time(self) -> float:
