@@ -87,7 +87,8 @@ class Grounder(Protocol):
 def scene_graph(scene: Scene) -> str:
     """The scene in a few short lines for a prompt: ids with categories, names and aliases.
 
-    Positions are left out on purpose: grounding needs names, the planner handles geometry.
+    Positions and robots are left out on purpose: grounding needs the names of what can be
+    handed over, to whom and where; the planner handles robots and geometry.
     """
     lines = []
     if scene.objects:
@@ -107,7 +108,4 @@ def scene_graph(scene: Scene) -> str:
         for s in scene.surfaces:
             parts.append(f"{s.id} ({', '.join(s.aliases)})" if s.aliases else s.id)
         lines.append("surfaces: " + "; ".join(parts))
-    else:
-        lines.append("surfaces: none")
-    lines.append("robots: " + ", ".join(scene.robot_ids) + " (assigned by the planner)")
     return "\n".join(lines)

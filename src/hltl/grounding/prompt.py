@@ -1,9 +1,10 @@
-"""The LLM prompt: instructions, two few-shot examples, the scene graph and the answer schema."""
+"""The LLM prompt: rules, few-shot examples chosen for the instruction, the scene, the schema."""
 
 from __future__ import annotations
 
 import json
 import re
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from hltl.grounding.base import scene_graph
@@ -13,59 +14,104 @@ if TYPE_CHECKING:
 
 SYSTEM = "\n".join(
     (
-        "Translate a robot instruction into a hierarchical LTLf specification. Answer with JSON "
-        "only:",
-        '{"root": "p0", "formulas": [{"name": "p0", "formula": "..."}, ...], '
-        '"entities": [ids], "error": null}',
-        "Rules:",
-        '- One leaf per delivery or placement: "F delivered(<object>, <person>)" or '
-        '"F placed(<object>, <surface>)", named p100, p200, ...',
-        '- Other formulas use only their children\'s names: "and"/lists -> "F p100 & F p200"; '
-        '"first A then B", "B after A" -> "F (p100 & F p200)"; "A or B" -> "F p100 | F p200". '
-        "A nested group is its own formula (p1, p2, ...). The root is p0; a single task is "
-        '"F p100".',
-        "- Use only the scene's ids. If something is not in the scene or is ambiguous, give "
-        '"error" saying why, with no formulas.',
+        'Instruction to hierarchical LTLf, as JSON only: {"root": "p0", "formulas": [{"name": ..., '
+        '"formula": ...}], "entities": [ids], "error": null}',
+        '- Leaves p100, p200, ...: "F delivered(<object>, <person>)" or "F placed(<object>, '
+        '<surface>)", one per task.',
+        '- Others (p0, p1, ...) combine children by name: A and B "F p100 & F p200"; A then B '
+        '"F (p100 & F p200)"; A or B "F p100 | F p200"; one task "F p100".',
+        '- Scene ids only (aliases in parentheses). Unknown or ambiguous: "error" says why, no '
+        "formulas.",
     )
 )
 
 # Few-shot examples over their own small scene, so that the model copies the format, not the ids.
+# Each shows one structure the rules state in words; a query carries only the examples whose
+# structure its instruction has (a plain list needs none), which keeps a query's tokens close to
+# what its task needs (the paper's point: few tokens per query).
 EXAMPLE_SCENE = """\
 objects: mug; book (novel)
 people: X (Person X, Xia); Y (Person Y)
-surfaces: desk
-robots: r1, r2 (assigned by the planner)"""
+surfaces: desk"""
 
-EXAMPLES: tuple[tuple[str, dict[str, Any]], ...] = (
-    (
-        "Give Xia the mug and Person Y the novel",
-        {
-            "root": "p0",
-            "formulas": [
-                {"name": "p0", "formula": "F p100 & F p200"},
-                {"name": "p100", "formula": "F delivered(mug, X)"},
-                {"name": "p200", "formula": "F delivered(book, Y)"},
-            ],
-            "entities": ["mug", "X", "book", "Y"],
-            "error": None,
-        },
+
+@dataclass(frozen=True, slots=True)
+class Example:
+    """A few-shot pair and the structures it demonstrates."""
+
+    text: str
+    answer: dict[str, Any]
+    shows: frozenset[str]  # "order", "choice"
+
+
+def _answer(formulas: dict[str, str], entities: list[str]) -> dict[str, Any]:
+    return {
+        "root": "p0",
+        "formulas": [{"name": n, "formula": f} for n, f in formulas.items()],
+        "entities": entities,
+        "error": None,
+    }
+
+
+EXAMPLES: tuple[Example, ...] = (
+    Example(
+        "Put the novel on the desk, then give Xia the mug",
+        _answer(
+            {
+                "p0": "F (p100 & F p200)",
+                "p100": "F placed(book, desk)",
+                "p200": "F delivered(mug, X)",
+            },
+            ["book", "desk", "mug", "X"],
+        ),
+        frozenset({"order"}),
     ),
-    (
+    Example(
+        "Give Person Y the mug or the book",
+        _answer(
+            {
+                "p0": "F p100 | F p200",
+                "p100": "F delivered(mug, Y)",
+                "p200": "F delivered(book, Y)",
+            },
+            ["mug", "Y", "book"],
+        ),
+        frozenset({"choice"}),
+    ),
+    Example(
         "First put the book on the desk, then give X either the mug or the book",
-        {
-            "root": "p0",
-            "formulas": [
-                {"name": "p0", "formula": "F (p100 & F p1)"},
-                {"name": "p100", "formula": "F placed(book, desk)"},
-                {"name": "p1", "formula": "F p200 | F p300"},
-                {"name": "p200", "formula": "F delivered(mug, X)"},
-                {"name": "p300", "formula": "F delivered(book, X)"},
-            ],
-            "entities": ["book", "desk", "mug", "X"],
-            "error": None,
-        },
+        _answer(
+            {
+                "p0": "F (p100 & F p1)",
+                "p100": "F placed(book, desk)",
+                "p1": "F p200 | F p300",
+                "p200": "F delivered(mug, X)",
+                "p300": "F delivered(book, X)",
+            },
+            ["book", "desk", "mug", "X"],
+        ),
+        frozenset({"order", "choice"}),
     ),
 )
+
+_CUES = {
+    "order": re.compile(r"\b(then|after|afterwards|before|first|once|next|later|followed)\b", re.I),
+    "choice": re.compile(r"\b(or|either|whichever|one of|any of)\b", re.I),
+}
+
+
+def structures(instruction: str) -> frozenset[str]:
+    """The structures (ordering, choice) an instruction's wording hints at."""
+    return frozenset(name for name, cue in _CUES.items() if cue.search(instruction))
+
+
+def select_examples(instruction: str) -> tuple[Example, ...]:
+    """The few-shot examples for ``instruction``: one that shows exactly its structures, if any.
+
+    A plain instruction ("give A the bottle and B the chips") gets none: the rules say it all.
+    """
+    wanted = structures(instruction)
+    return tuple(e for e in EXAMPLES if wanted and e.shows == wanted)
 
 
 def user_message(instruction: str, scene_text: str) -> str:
@@ -75,12 +121,12 @@ def user_message(instruction: str, scene_text: str) -> str:
 def build_messages(
     instruction: str, scene: Scene, *, examples: bool = True
 ) -> list[dict[str, str]]:
-    """The chat messages for one grounding query (system, few-shot pairs, the instruction)."""
+    """The chat messages for one grounding query (system, selected few-shot pairs, the query)."""
     messages = [{"role": "system", "content": SYSTEM}]
     if examples:
-        for text, answer in EXAMPLES:
-            messages.append({"role": "user", "content": user_message(text, EXAMPLE_SCENE)})
-            messages.append({"role": "assistant", "content": json.dumps(answer)})
+        for ex in select_examples(instruction):
+            messages.append({"role": "user", "content": user_message(ex.text, EXAMPLE_SCENE)})
+            messages.append({"role": "assistant", "content": json.dumps(ex.answer)})
     messages.append({"role": "user", "content": user_message(instruction, scene_graph(scene))})
     return messages
 

@@ -20,6 +20,21 @@ from hltl.world.state import REST, Loc, WorldState, initial_world
 # are fixed and poses cannot change a cost), and the monitor state. η is derived (docs/model.md).
 Node = tuple[tuple[int, ...], tuple[int, ...] | None, MonitorState]
 
+# Search costs are integers in these units (microseconds): sums of integers do not depend on the
+# order they are added in, so the search (its ties, its expansions) is the same in every run,
+# whatever PYTHONHASHSEED says. A plan's makespan is the sum of its steps' rounded durations.
+TICKS_PER_SECOND = 1_000_000
+
+
+def to_ticks(seconds: float) -> int:
+    """Seconds as integer search-cost units (rounded to the nearest microsecond)."""
+    return round(seconds * TICKS_PER_SECOND)
+
+
+def to_seconds(ticks: float) -> float:
+    """Integer search-cost units back to seconds (``inf`` stays ``inf``)."""
+    return ticks / TICKS_PER_SECOND
+
 
 @dataclass(frozen=True, slots=True)
 class Instance:
@@ -33,8 +48,8 @@ class Instance:
     free: tuple[int, ...]
     events: frozenset[Atom]
     hands: tuple[tuple[int, int], ...]  # (robot index, point index)
-    lower: float  # duration lower bound (exact when durations are fixed)
-    const: float  # analytic model: grasp/release/exchange time
+    lower: int  # duration lower bound in ticks (exact when durations are fixed)
+    const: float  # analytic model: grasp/release/exchange time in seconds
     action: Action
 
 
@@ -86,6 +101,10 @@ class Problem:
         self.points: list[Vec3] = []
         self._point_index: dict[Vec3, int] = {}
         self.track_hands = not self.cost.fixed
+        # Objects no open formula mentions are never picked up only under fixed durations: when
+        # durations depend on hand poses, moving such an object can bring a hand closer to where
+        # it is needed next (docs/planner.md, "Exactness"), so every object stays in play.
+        self.prune_irrelevant = self.cost.fixed
         self.speeds: tuple[float, ...] = ()
         if isinstance(self.cost, AnalyticCostModel):
             self.speeds = tuple(self.cost._speed(r) for r in self.robots)
@@ -106,7 +125,7 @@ class Problem:
                 free=tuple(self.robot_index[r] for r in trans.free),
                 events=trans.events & self.spec_atoms,
                 hands=tuple((self.robot_index[r], self._point(p)) for r, p in trans.hands),
-                lower=self.cost.lower_bound(action, trans),
+                lower=to_ticks(self.cost.lower_bound(action, trans)),
                 const=self.cost.lower_bound(action, trans),
                 action=action,
             )
@@ -169,16 +188,17 @@ class Problem:
             self._dist[key] = d
         return d
 
-    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> float:
+    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> int:
+        """The instance's duration in ticks when the hands start at ``hands``."""
         if hands is None:
             return inst.lower
         if self.speeds:
             t = 0.0
             for r, p in inst.hands:
                 t = max(t, self.travel(hands[r], p) / self.speeds[r])
-            return t + inst.const
+            return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
-        return self.cost.duration(inst.action, self._transitions[inst.action], start)
+        return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
 
 
 def _object_args(atom: Atom) -> tuple[str, ...]:

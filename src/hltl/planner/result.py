@@ -12,7 +12,9 @@ from hltl.skills.library import Action
 
 
 class PlanStatus(enum.Enum):
-    """``solved``: an optimal plan; ``infeasible``: proved that none exists; ``timeout``."""
+    """``solved``: a plan (optimal in exact mode; within ``gap`` of optimal in anytime mode);
+    ``infeasible``: proved that none exists; ``timeout``: the limit struck first (the result may
+    still carry the best plan found so far and a lower bound)."""
 
     SOLVED = "solved"
     INFEASIBLE = "infeasible"
@@ -81,10 +83,27 @@ class PlanResult:
     makespan: float | None = None
     stats: SearchStats = field(default_factory=SearchStats)
     reason: str = ""
+    #: a proven lower bound on the optimal makespan (seconds); None when nothing is proved
+    lower_bound: float | None = None
 
     @property
     def solved(self) -> bool:
         return self.status is PlanStatus.SOLVED
+
+    @property
+    def has_plan(self) -> bool:
+        """Whether the result carries a plan (solved, or the best plan found before a timeout)."""
+        return self.makespan is not None and self.status is not PlanStatus.INFEASIBLE
+
+    @property
+    def gap(self) -> float | None:
+        """``(makespan - lower_bound) / makespan``: the plan is optimal within this fraction
+        (0 when proved optimal); None without both a plan and a bound."""
+        if self.makespan is None or self.lower_bound is None:
+            return None
+        if self.makespan <= 0.0:
+            return 0.0
+        return max(0.0, (self.makespan - self.lower_bound) / self.makespan)
 
     @property
     def actions(self) -> tuple[Action, ...]:
@@ -104,6 +123,9 @@ class PlanResult:
                 "seconds": round(self.stats.seconds, 6),
             },
         }
+        lb, gap = self.lower_bound, self.gap
+        d["lower_bound"] = None if lb is None or lb == float("inf") else round(lb, 6)
+        d["gap"] = None if gap is None else round(gap, 6)
         if self.reason:
             d["reason"] = self.reason
         if spec is not None:
@@ -129,6 +151,7 @@ class PlanResult:
                     str(p.get("algorithm", "astar")),
                 ),
                 reason=str(data.get("reason", "")),
+                lower_bound=None if data.get("lower_bound") is None else float(data["lower_bound"]),
             )
         except (KeyError, TypeError, ValueError) as exc:
             raise PlanFormatError(

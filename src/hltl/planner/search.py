@@ -11,14 +11,14 @@ from collections.abc import Callable, Iterator, Sequence
 from hltl.planner.bindings import derive_bindings
 from hltl.planner.explain import explain_infeasible
 from hltl.planner.heuristic import Heuristic
-from hltl.planner.problem import Instance, Node, Problem
+from hltl.planner.problem import Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.spec.monitor import DONE
 from hltl.spec.syntax import Atom
 
 ALGORITHMS = ("astar", "dijkstra")
 PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
-_EPS = 1e-9
+CHECK_EVERY = 64  # successors generated between two looks at the clock inside one expansion
 
 
 class _Search:
@@ -68,8 +68,9 @@ class _Search:
                 busy |= 1 << r
         relevant = p.relevant(self.done(q))
         out: list[list[Instance]] = []
+        prune = p.prune_irrelevant
         for o, code in enumerate(locs):
-            if o not in relevant and code not in holder_of:
+            if prune and o not in relevant and code not in holder_of:
                 continue
             cands = [
                 inst for inst in p.by_obj_pre[o][code] if not any(busy >> f & 1 for f in inst.free)
@@ -78,7 +79,7 @@ class _Search:
                 out.append(cands)
         return out
 
-    def steps(self, node: Node) -> Iterator[tuple[tuple[Instance, ...], float, Node]]:
+    def steps(self, node: Node) -> Iterator[tuple[tuple[Instance, ...], int, Node]]:
         """All successors: every set U of applicable instances with disjoint robots."""
         locs, hands, q = node
         p = self.p
@@ -100,7 +101,7 @@ class _Search:
         for U in rec(0, 0):
             new_locs = list(locs)
             events: set[Atom] = set()
-            cost = 0.0
+            cost = 0
             new_hands = list(hands) if hands is not None else None
             for inst in U:
                 new_locs[inst.obj] = inst.post
@@ -134,8 +135,10 @@ def search(
         problem: the compiled problem.
         algorithm: ``"astar"`` (admissible heuristic) or ``"dijkstra"`` (no heuristic).
         timeout: seconds of search before giving up with ``timeout`` status; ``None``: no limit.
+            The clock is read at every expansion and every ``CHECK_EVERY`` successors, so the
+            search overruns it by at most one heuristic evaluation.
         max_expansions: node budget; exceeding it also yields ``timeout``.
-        on_progress: called every 1000 expansions with (expanded, best f so far).
+        on_progress: called every 1024 expansions with (expanded, best lower bound in seconds).
         pairs_after: expansions after which A* adds the pairwise bound (0: from the start).
     """
     if algorithm not in ALGORITHMS:
@@ -143,6 +146,7 @@ def search(
             f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}"
         )
     t0 = time.perf_counter()
+    deadline = math.inf if timeout is None else t0 + timeout
     s = _Search(problem)
     h: Callable[[Node], float]
     heur: Heuristic | None = None
@@ -154,7 +158,11 @@ def search(
     start = problem.start()
     if problem.monitor.accepted(start[2]):
         return PlanResult(
-            PlanStatus.SOLVED, (), 0.0, SearchStats(0, 1, time.perf_counter() - t0, algorithm)
+            PlanStatus.SOLVED,
+            (),
+            0.0,
+            SearchStats(0, 1, time.perf_counter() - t0, algorithm),
+            lower_bound=0.0,
         )
     if pairs_after <= 0 and heur is not None:
         heur.enable_pairs()
@@ -163,42 +171,54 @@ def search(
         return _infeasible(problem, s, algorithm, t0, 0, 1)
 
     counter = itertools.count()
-    g_best: dict[Node, float] = {start: 0.0}
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], float]] = {}
-    heap: list[tuple[float, float, int, Node]] = [(h0, 0.0, next(counter), start)]
+    g_best: dict[Node, int] = {start: 0}
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], int]] = {}
+    # costs are integer ticks, so ties and the order of expansion are the same in every run
+    heap: list[tuple[float, int, int, Node]] = [(h0, 0, next(counter), start)]
     expanded = generated = 0
+    bound = h0  # the least f on the open list never exceeds the optimum: a proven lower bound
+
+    def stop(elapsed: float) -> PlanResult:
+        stats = SearchStats(expanded, generated, elapsed, algorithm)
+        lb = to_seconds(bound)
+        return PlanResult(
+            PlanStatus.TIMEOUT,
+            stats=stats,
+            reason=f"search stopped after {elapsed:.1f} s and {expanded} expansions "
+            f"(best lower bound on the makespan: {lb:.3f} s)",
+            lower_bound=lb,
+        )
+
     while heap:
         f, neg_g, _, node = heapq.heappop(heap)
         g = -neg_g
         # stale entry: a cheaper path to this node was found after it was pushed (the heuristic
         # need not be consistent, so a node may be expanded again with a smaller g)
-        if g > g_best[node] + _EPS:
+        if g > g_best[node]:
             continue
+        if f > bound:
+            bound = f
         if problem.monitor.accepted(node[2]):
             steps = _reconstruct(problem, parent, node)
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
-            return PlanResult(PlanStatus.SOLVED, steps, round(g, 9), stats)
+            makespan = to_seconds(g)
+            return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, lower_bound=makespan)
         expanded += 1
         if expanded == pairs_after and heur is not None:
             # a hard instance: the pairwise bound now pays for its tables
             heur.enable_pairs()
-        if expanded & 255 == 0:
-            elapsed = time.perf_counter() - t0
-            if (timeout is not None and elapsed > timeout) or (
-                max_expansions is not None and expanded > max_expansions
-            ):
-                stats = SearchStats(expanded, generated, elapsed, algorithm)
-                return PlanResult(
-                    PlanStatus.TIMEOUT,
-                    stats=stats,
-                    reason=f"search stopped after {elapsed:.1f} s and {expanded} expansions "
-                    f"(best lower bound on the makespan: {f:.3f} s)",
-                )
-            if on_progress is not None and expanded % 1024 == 0:
-                on_progress(expanded, f)
+        now = time.perf_counter()
+        if now > deadline or (max_expansions is not None and expanded > max_expansions):
+            return stop(now - t0)
+        if on_progress is not None and expanded % 1024 == 0:
+            on_progress(expanded, to_seconds(bound))
+        n_children = 0
         for U, cost, child in s.steps(node):
+            n_children += 1
+            if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
+                return stop(time.perf_counter() - t0)
             ng = g + cost
-            if ng + _EPS < g_best.get(child, math.inf):
+            if ng < g_best.get(child, math.inf):
                 hc = h(child)
                 if math.isinf(hc):
                     continue
@@ -222,20 +242,20 @@ def _infeasible(
 
 def _reconstruct(
     problem: Problem,
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], float]],
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], int]],
     node: Node,
 ) -> tuple[PlanStep, ...]:
-    chain: list[tuple[Node, tuple[Instance, ...], float]] = []
+    chain: list[tuple[Node, tuple[Instance, ...], int]] = []
     while node in parent:
         prev, U, cost = parent[node]
         chain.append((prev, U, cost))
         node = prev
     chain.reverse()
     steps: list[PlanStep] = []
-    t = 0.0
+    t = 0
     for _, U, cost in chain:
         actions = tuple(sorted(inst.action for inst in U))
-        steps.append(PlanStep(round(t, 9), cost, actions))
+        steps.append(PlanStep(to_seconds(t), to_seconds(cost), actions))
         t += cost
     done_before = [problem.monitor.done(prev[2]) for prev, _, _ in chain]
     return derive_bindings(problem, steps, done_before)
@@ -245,6 +265,6 @@ def plan_problem(problem: Problem, **kwargs: object) -> PlanResult:
     return search(problem, **kwargs)  # type: ignore[arg-type]
 
 
-def all_steps(problem: Problem, node: Node) -> Sequence[tuple[tuple[Instance, ...], float, Node]]:
+def all_steps(problem: Problem, node: Node) -> Sequence[tuple[tuple[Instance, ...], int, Node]]:
     """Every successor of ``node`` (for tests and debugging)."""
     return list(_Search(problem).steps(node))
