@@ -119,7 +119,8 @@ def _bus_cell(args: argparse.Namespace, stack: contextlib.ExitStack) -> Any:
 
     endpoint = parse_bus(args.bus)
     try:
-        timing = BusTiming(timeout=args.bus_timeout)
+        # a node still starting up gets five answer times to appear
+        timing = BusTiming(timeout=args.bus_timeout, connect=5 * args.bus_timeout)
     except ValueError as exc:
         raise HltlError(f"--bus-timeout: {exc}") from None
     session = stack.enter_context(open_session(BusConfig(connect=(endpoint,))))
