@@ -23,6 +23,7 @@ COMMAND_MODULES = (
     "demo",
     "viz",
     "bench",
+    "render",
     "node",
 )
 

@@ -63,6 +63,21 @@ class Surface:
 
 
 @dataclass(frozen=True, slots=True)
+class Camera:
+    """A fixed pinhole camera (the 3D simulator renders it): ``position`` looks at ``look_at``
+    with the world's z axis up; square pixels, principal point at the image centre, vertical
+    field of view ``fovy`` degrees; frames are taken ``rate`` times per simulated second."""
+
+    id: str
+    position: Vec3
+    look_at: Vec3
+    width: int = 640
+    height: int = 480
+    fovy: float = 42.0
+    rate: float = 10.0
+
+
+@dataclass(frozen=True, slots=True)
 class Scene:
     """A validated scene. Lengths are in metres whatever unit the file used."""
 
@@ -72,6 +87,7 @@ class Scene:
     surfaces: tuple[Surface, ...] = ()
     durations: tuple[tuple[str, float], ...] | None = None  # fixed skill durations, sorted by skill
     human_reach: float = DEFAULT_HUMAN_REACH
+    cameras: tuple[Camera, ...] = ()
     source: str = field(default="<scene>", compare=False)
 
     # -- lookups -------------------------------------------------------------------------------
@@ -130,6 +146,19 @@ class Scene:
             out["durations"] = dict(self.durations)
         if self.human_reach != DEFAULT_HUMAN_REACH:
             out["human_reach"] = self.human_reach
+        if self.cameras:
+            out["cameras"] = [
+                {
+                    "id": c.id,
+                    "position": list(c.position),
+                    "look_at": list(c.look_at),
+                    "width": c.width,
+                    "height": c.height,
+                    "fovy": c.fovy,
+                    "rate": c.rate,
+                }
+                for c in self.cameras
+            ]
         return out
 
 
@@ -217,6 +246,18 @@ class _SurfaceIn(_Strict):
         return v
 
 
+class _CameraIn(_Strict):
+    id: str = Field(min_length=1)
+    position: tuple[float, float, float]
+    look_at: tuple[float, float, float]
+    width: int = Field(default=640, ge=8, le=4096)
+    height: int = Field(default=480, ge=8, le=4096)
+    fovy: float = Field(default=42.0, gt=1.0, lt=170.0)
+    rate: float = Field(default=10.0, gt=0.0, le=1000.0)
+
+    _v = field_validator("position", "look_at")(lambda v: tuple(_finite(v)))
+
+
 class _SceneIn(_Strict):
     units: str = "m"
     robots: list[_RobotIn] = Field(min_length=1)
@@ -225,6 +266,7 @@ class _SceneIn(_Strict):
     surfaces: list[_SurfaceIn] = []
     durations: dict[str, float] | None = None
     human_reach: float = Field(default=DEFAULT_HUMAN_REACH, ge=0)
+    cameras: list[_CameraIn] = []
 
     @field_validator("units")
     @classmethod
@@ -295,6 +337,17 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
                     "robots, objects, humans and surfaces"
                 )
             seen[item.id] = f"{kind}[{i}]"
+    cams: dict[str, int] = {}
+    for i, c in enumerate(raw.cameras):
+        _check_id(c.id, f"cameras[{i}].id", source)
+        if c.id in cams:
+            raise SceneError(f"{source}: cameras[{i}].id: duplicate camera id {c.id!r}")
+        cams[c.id] = i
+        if math.dist(c.position, c.look_at) < 1e-6:
+            raise SceneError(
+                f"{source}: cameras[{i}]: look_at {list(c.look_at)} equals position; "
+                "expected a point the camera looks towards"
+            )
 
     return Scene(
         robots=tuple(Robot(r.id, v3(r.base), r.reach * k, r.model, r.speed) for r in raw.robots),
@@ -311,6 +364,10 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
         ),
         durations=None if raw.durations is None else tuple(sorted(raw.durations.items())),
         human_reach=raw.human_reach * k,
+        cameras=tuple(
+            Camera(c.id, v3(c.position), v3(c.look_at), c.width, c.height, c.fovy, c.rate)
+            for c in raw.cameras
+        ),
         source=source,
     )
 

@@ -1,0 +1,330 @@
+"""One arm placed in the scene: forward kinematics, Jacobians, DLS inverse kinematics, capsules."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.motion.robots import ArmSpec, arm_spec, load_model
+from hltl.world.geometry import HANDOVER_HEIGHT
+
+FloatArray = npt.NDArray[np.float64]
+Joints = Sequence[float] | FloatArray  # a configuration, as a tuple or an array
+
+# Reasons an IK query fails (IkResult.reason).
+OUT_OF_REACH = "out_of_reach"
+JOINT_LIMIT = "joint_limit"
+COLLISION = "collision"
+
+# Height (m above the base plane) no link may go below: the table the arm is mounted on.
+TABLE_CLEARANCE = -0.02
+
+
+@dataclass(frozen=True, slots=True)
+class IkResult:
+    """What an IK query found: a configuration, or the reason there is none.
+
+    The residuals are always those of the returned configuration (or of the best attempt when
+    there is none), measured by forward kinematics after the solve, never assumed.
+    """
+
+    q: tuple[float, ...] | None
+    reason: str | None
+    position_error: float
+    rotation_error: float
+    iterations: int
+    starts: int
+
+    @property
+    def ok(self) -> bool:
+        return self.q is not None
+
+
+@dataclass(frozen=True, slots=True)
+class Capsule:
+    """A segment with a radius, in the scene frame: one link, the hand, or a body part."""
+
+    a: tuple[float, float, float]
+    b: tuple[float, float, float]
+    radius: float
+    name: str = ""
+
+
+def rotation_z_to(
+    direction: Sequence[float] | FloatArray, roll_hint: Sequence[float] | FloatArray | None = None
+) -> FloatArray:
+    """A rotation whose z axis is ``direction``, x as close to ``roll_hint`` as it gets."""
+    z = np.asarray(direction, dtype=float)
+    z = z / np.linalg.norm(z)
+    hint = np.array([0.0, 0.0, -1.0]) if roll_hint is None else np.asarray(roll_hint, dtype=float)
+    x = hint - np.dot(hint, z) * z
+    if np.linalg.norm(x) < 1e-6:
+        alt = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+        x = alt - np.dot(alt, z) * z
+    x = x / np.linalg.norm(x)
+    y = np.cross(z, x)
+    return np.column_stack([x, y, z])
+
+
+class Arm:
+    """A registered arm model whose base sits at ``base`` in the scene frame (no base rotation).
+
+    Holds its own Pinocchio data, so one Arm must not be shared between threads.
+    """
+
+    def __init__(self, robot: str, model: str, base: Sequence[float] = (0.0, 0.0, 0.0)) -> None:
+        import pinocchio as pin
+
+        self._pin = pin
+        self.robot = robot
+        self.spec: ArmSpec = arm_spec(model)
+        self.model = load_model(model)
+        self.data = self.model.createData()
+        self.base = np.asarray(base, dtype=float)
+        self.tool = self.model.getFrameId(self.spec.tool_frame)
+        self.nq = int(self.model.nq)
+        self.joint_names: tuple[str, ...] = tuple(str(n) for n in self.model.names[1:])
+        self.lower = np.asarray(self.model.lowerPositionLimit, dtype=float).copy()
+        self.upper = np.asarray(self.model.upperPositionLimit, dtype=float).copy()
+        self.max_velocity = np.asarray(self.model.velocityLimit, dtype=float).copy()
+        # Seeds are drawn from the limits folded into one turn: beyond ±π a revolute joint only
+        # repeats itself.
+        self._seed_lo = np.maximum(self.lower, -math.pi)
+        self._seed_hi = np.minimum(self.upper, math.pi)
+        q0 = self.neutral()
+        self._fk_all(q0)
+        joints = [np.asarray(self.data.oMi[j].translation) for j in range(1, self.model.njoints)]
+        # The shoulder is the first point the arm pivots about away from the base axis; every
+        # reachable point lies within the summed link lengths of it.
+        self.shoulder_offset = joints[1]
+        chain = [*joints[1:], np.asarray(self.data.oMf[self.tool].translation)]
+        self.max_extent = float(sum(np.linalg.norm(b - a) for a, b in itertools.pairwise(chain)))
+        self._library: tuple[FloatArray, FloatArray, FloatArray] | None = None
+        self.home = self._home()
+
+    # -- forward kinematics ----------------------------------------------------------------------
+    def neutral(self) -> FloatArray:
+        return np.clip(np.zeros(self.nq), self.lower, self.upper)
+
+    def _fk_all(self, q: FloatArray) -> None:
+        pin = self._pin
+        local = _local(q)
+        pin.forwardKinematics(self.model, self.data, local)
+        pin.updateFramePlacements(self.model, self.data)
+        # shift into the scene frame lazily: callers add self.base
+
+    def fk(self, q: Joints) -> tuple[FloatArray, FloatArray]:
+        """Tool frame position (scene frame) and rotation matrix at joint positions ``q``."""
+        pin = self._pin
+        qa = _local(q)
+        pin.forwardKinematics(self.model, self.data, qa)
+        m = pin.updateFramePlacement(self.model, self.data, self.tool)
+        return np.asarray(m.translation) + self.base, np.asarray(m.rotation).copy()
+
+    def jacobian(self, q: Joints) -> FloatArray:
+        """6×n tool Jacobian (linear; angular), expressed in the scene-aligned tool frame."""
+        pin = self._pin
+        qa = _local(q)
+        j = pin.computeFrameJacobian(
+            self.model, self.data, qa, self.tool, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
+        )
+        return np.asarray(j).copy()
+
+    def joint_positions(self, q: Joints) -> list[FloatArray]:
+        """Scene-frame origins of every joint, then the flange-side wrist and the tool point."""
+        self._fk_all(_local(q))
+        pts = [
+            np.asarray(self.data.oMi[j].translation) + self.base
+            for j in range(1, self.model.njoints)
+        ]
+        pts.append(np.asarray(self.data.oMf[self.tool].translation) + self.base)
+        return pts
+
+    def capsules(self, q: Joints) -> list[Capsule]:
+        """Collision capsules of the links and the hand at ``q`` (scene frame)."""
+        pts = self.joint_positions(q)
+        tool_rot = np.asarray(self.data.oMf[self.tool].rotation)
+        out = [Capsule(_t(self.base), _t(pts[0]), self.spec.link_radius, "base")]
+        r = self.spec.link_radius
+        for i in range(len(pts) - 2):
+            out.append(Capsule(_t(pts[i]), _t(pts[i + 1]), r, f"link{i + 1}"))
+        # The hand ends short of the tool point: the fingers close around the object there.
+        palm = pts[-1] - tool_rot[:, 2] * (self.spec.hand_radius * 0.9)
+        out.append(Capsule(_t(pts[-2]), _t(palm), self.spec.hand_radius, "hand"))
+        return out
+
+    def above_table(self, q: Joints) -> bool:
+        """True when every joint beyond the shoulder and the tool stay above the mounting plane."""
+        pts = self.joint_positions(q)
+        floor = self.base[2] + TABLE_CLEARANCE
+        return all(p[2] >= floor for p in pts[2:])
+
+    # -- inverse kinematics ----------------------------------------------------------------------
+    def ik(
+        self,
+        position: Sequence[float],
+        rotation: FloatArray | None = None,
+        q0: Joints | None = None,
+        *,
+        starts: int = 8,
+        seed: int = 0,
+        tol_pos: float = 1e-3,
+        tol_rot: float = 1e-2,
+        max_iter: int = 150,
+        accept: Callable[[FloatArray], bool] | None = None,
+    ) -> IkResult:
+        """Damped least squares IK with joint limits and random restarts.
+
+        Args:
+            position: the tool point's target (scene frame).
+            rotation: the tool frame's target rotation, or ``None`` for position only.
+            q0: the first start (the arm's current configuration); else :attr:`home`.
+            starts: number of starts (q0 plus random configurations within the limits).
+            accept: an extra test a solution must pass (e.g. collision-free); a converged
+                solution it rejects makes the reason ``collision``.
+
+        Returns:
+            An :class:`IkResult`; ``reason`` is ``out_of_reach``, ``joint_limit`` or ``collision``
+            when no configuration was found.
+        """
+        target = np.asarray(position, dtype=float)
+        if np.linalg.norm(target - (self.base + self.shoulder_offset)) > self.max_extent + tol_pos:
+            return IkResult(None, OUT_OF_REACH, math.inf, math.inf, 0, 0)
+        rng = np.random.default_rng(seed)
+        near = self._nearest_seeds(target, rotation, max(starts // 2, 1))
+        # The current configuration is the natural first start (short motions); without one the
+        # stored configuration nearest the target is.
+        first = near.pop(0) if q0 is None else np.asarray(q0, dtype=float)
+        rejected = False
+        best: tuple[float, float, FloatArray] | None = None
+        total_iter = 0
+        for k in range(starts):
+            if k == 0:
+                start = first
+            elif k <= len(near):
+                start = near[k - 1]
+            else:
+                start = rng.uniform(self._seed_lo, self._seed_hi)
+            q, ep, er, it = self._dls(target, rotation, start, tol_pos, tol_rot, max_iter, True)
+            total_iter += it
+            if ep <= tol_pos and er <= tol_rot:
+                if self.above_table(q) and (accept is None or accept(q)):
+                    return IkResult(tuple(float(v) for v in q), None, ep, er, total_iter, k + 1)
+                rejected = True
+                continue
+            if best is None or ep + 0.1 * er < best[0] + 0.1 * best[1]:
+                best = (ep, er, q)
+        if rejected:
+            return IkResult(None, COLLISION, 0.0, 0.0, total_iter, starts)
+        assert best is not None
+        # Without joint limits, does the same start converge? Then the limits are what block it.
+        _, ep, er, it = self._dls(target, rotation, best[2], tol_pos, tol_rot, max_iter, False)
+        total_iter += it
+        reason = JOINT_LIMIT if ep <= tol_pos and er <= tol_rot else OUT_OF_REACH
+        return IkResult(None, reason, best[0], best[1], total_iter, starts)
+
+    def _nearest_seeds(
+        self, target: FloatArray, rotation: FloatArray | None, k: int
+    ) -> list[FloatArray]:
+        """Stored configurations whose tool pose is nearest the target: IK starts that converge."""
+        if self._library is None:
+            self._library = self._build_library(2048)
+        qs, pos, rot = self._library
+        cost = np.linalg.norm(pos - (target - self.base), axis=1)
+        if rotation is not None:
+            # 3 - trace(R_a^T R_b) grows with the angle between the two orientations
+            cost = cost + 0.1 * (3.0 - np.einsum("nij,ij->n", rot, rotation))
+        idx = np.argsort(cost)[:k]
+        return [qs[i] for i in idx]
+
+    def _build_library(self, n: int) -> tuple[FloatArray, FloatArray, FloatArray]:
+        rng = np.random.default_rng(12345)
+        qs: list[FloatArray] = []
+        pos: list[FloatArray] = []
+        rot: list[FloatArray] = []
+        while len(qs) < n:
+            q = rng.uniform(self._seed_lo, self._seed_hi)
+            if not self.above_table(q):
+                continue
+            p, r = self.fk(q)
+            qs.append(q)
+            pos.append(p - self.base)
+            rot.append(r)
+        return np.array(qs), np.array(pos), np.array(rot)
+
+    def _dls(
+        self,
+        target: FloatArray,
+        rotation: FloatArray | None,
+        start: FloatArray,
+        tol_pos: float,
+        tol_rot: float,
+        max_iter: int,
+        limits: bool,
+    ) -> tuple[FloatArray, float, float, int]:
+        pin = self._pin
+        model, data, fid = self.model, self.data, self.tool
+        lwa = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
+        q = np.array(start, dtype=float)
+        local_target = target - self.base
+        six = rotation is not None
+        damping = 1e-4
+        ep = er = math.inf
+        stall_ref, stall_it = math.inf, 0
+        for it in range(max_iter):
+            pin.computeJointJacobians(model, data, q)  # also runs forward kinematics
+            m = pin.updateFramePlacement(model, data, fid)
+            e_pos = local_target - m.translation
+            ep = float(np.linalg.norm(e_pos))
+            if six:
+                e_rot = pin.log3(rotation @ m.rotation.T)
+                er = float(np.linalg.norm(e_rot))
+                err = np.concatenate([e_pos, e_rot])
+            else:
+                er = 0.0
+                err = e_pos
+            if ep <= tol_pos and er <= tol_rot:
+                return q, ep, er, it
+            # A start that stops improving (a joint pinned at its limit, a singularity) is
+            # abandoned early: another start is cheaper than waiting out max_iter.
+            total = ep + 0.1 * er
+            if total < 0.98 * stall_ref:
+                stall_ref, stall_it = total, it
+            elif it - stall_it > 25:
+                return q, ep, er, it
+            jac = pin.getFrameJacobian(model, data, fid, lwa)
+            if not six:
+                jac = jac[:3]
+            dq = jac.T @ np.linalg.solve(jac @ jac.T + damping * np.eye(jac.shape[0]), err)
+            step = float(np.max(np.abs(dq)))
+            if step > 0.4:
+                dq *= 0.4 / step
+            q = q + dq
+            if limits:
+                q = np.clip(q, self.lower, self.upper)
+        return q, ep, er, max_iter
+
+    def _home(self) -> FloatArray:
+        """A rest pose: the hand above the base at handover height, pointing down."""
+        target = self.base + np.array([0.0, 0.0, HANDOVER_HEIGHT])
+        down = rotation_z_to((0.0, 0.0, -1.0), (1.0, 0.0, 0.0))
+        seed_q = self.neutral()
+        self.home = seed_q
+        res = self.ik(target, down, seed_q, starts=16, seed=7)
+        if res.q is None:
+            res = self.ik(target + np.array([0.2, 0.0, 0.1]), None, seed_q, starts=16, seed=7)
+        return seed_q if res.q is None else np.asarray(res.q)
+
+
+def _local(q: Joints | FloatArray) -> FloatArray:
+    return np.asarray(q, dtype=float)
+
+
+def _t(p: Any) -> tuple[float, float, float]:
+    return (float(p[0]), float(p[1]), float(p[2]))
