@@ -8,7 +8,8 @@ import pytest
 
 from hltl.errors import SceneError
 from hltl.skills.cost import AnalyticCostModel, FixedDurations, cost_model_for
-from hltl.skills.library import Action, Situation, check_action, ground
+from hltl.skills.library import Action, Situation, ground
+from hltl.skills.semantics import check_action
 from hltl.world.scene import load_scene
 from hltl.world.state import Loc, ObjectStatus, initial_world
 

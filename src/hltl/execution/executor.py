@@ -41,21 +41,16 @@ from hltl.execution.safety import (
     step_conflict,
 )
 from hltl.planner import PlanResult, PlanStatus, PlanStep
-from hltl.skills.cost import CostModel, cost_model_for
-from hltl.skills.library import (
-    Action,
-    Situation,
-    Transition,
-    check_action,
-    ground,
-    step_symbol,
-)
+from hltl.skills.cost import CostModel
+from hltl.skills.kinematics import Kinematics
+from hltl.skills.library import Action, Transition, step_symbol
+from hltl.skills.semantics import ActionSemantics, Infeasible, apply
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.syntax import Atom
 from hltl.world.geometry import Context
 from hltl.world.scene import Scene
-from hltl.world.state import JointState, ObjectStatus, WorldState, initial_world, project
+from hltl.world.state import JointState, WorldState, initial_world, project
 
 if TYPE_CHECKING:
     from hltl.grounding.base import Grounder
@@ -81,6 +76,7 @@ class ExactPlanner:
 
     algorithm: str = "astar"
     timeout: float = 60.0
+    kinematics: Kinematics | None = None
 
     def __call__(
         self,
@@ -101,6 +97,7 @@ class ExactPlanner:
             q0=q0,
             algorithm=self.algorithm,
             timeout=self.timeout,
+            kinematics=self.kinematics,
         )
 
 
@@ -204,6 +201,7 @@ class Executor:
         predictor: forecasts people (default: constant velocity).
         config: loop parameters.
         cost: the duration model used to time actions (default: the scene's).
+        kinematics: reach and poses of the skills (default: the paper's reach spheres).
     """
 
     def __init__(
@@ -218,17 +216,19 @@ class Executor:
         predictor: TrajectoryPredictor | None = None,
         config: ExecutorConfig | None = None,
         cost: CostModel | None = None,
+        kinematics: Kinematics | None = None,
     ) -> None:
         self.scene = scene
         self.driver = driver
         self.log = EventLog() if log is None else log
-        self.planner: Planner = ExactPlanner() if planner is None else planner
+        self.planner: Planner = ExactPlanner(kinematics=kinematics) if planner is None else planner
         self.grounder = grounder
         self.config = ExecutorConfig() if config is None else config
         self.predictor: TrajectoryPredictor | None = (
             ConstantVelocityPredictor() if predictor is None else predictor
         )
-        self.cost = cost_model_for(scene) if cost is None else cost
+        self.semantics = ActionSemantics.of(scene, cost=cost, kinematics=kinematics)
+        self.cost = self.semantics.cost
         self.spec: HSpec | None = None
         self.monitor: HierarchyMonitor | None = None
         self.q: MonitorState = ()
@@ -459,20 +459,14 @@ class Executor:
                 self._trigger.add("halt")
 
     def _apply(self, tr: Transition, t: float) -> None:
-        w = self.world
-        position = tr.hands[-1][1] if tr.hands else w.object_status(tr.obj).position
-        w = w.with_object(tr.obj, ObjectStatus(position, tr.post))
-        for rid, pos in tr.hands:
-            w = w.with_hand(rid, pos)
-        self.world = w
+        self.world = apply(self.world, tr)
         self._touched[tr.obj] = t
 
     def _transition(self, action: Action, world: WorldState) -> Transition:
-        loc = world.object_status(action.object).loc
-        for a, tr in ground(Situation.of(self.scene, world)):
-            if a == action and tr.pre == loc:
-                return tr
-        raise LookupError(f"{action}: no transition from {loc} (precondition fails)")
+        tr = self.semantics.transition(action, world)
+        if isinstance(tr, Infeasible):
+            raise LookupError(tr.reason)
+        return tr
 
     def _end_step(self) -> None:
         runs, self._running = self._running, []
@@ -499,7 +493,7 @@ class Executor:
         for run in self._running:
             if run.status is not None:
                 continue
-            h = precondition_hazard(run.action, self.scene, self.world)
+            h = precondition_hazard(run.action, self.scene, self.world, semantics=self.semantics)
             if h is None and self._intrusion_on() and run.fast:
                 until = self.t + max(0.0, 1.0 - run.progress) * run.expected
                 assert self.predictor is not None
@@ -511,6 +505,7 @@ class Executor:
                     self.t,
                     until,
                     self.config.predict_dt,
+                    semantics=self.semantics,
                 )
             if h is not None:
                 hazards.append(h)
@@ -559,10 +554,10 @@ class Executor:
         world = self.world
         transitions = []
         for a in actions:
-            reason = check_action(a, self.scene, world)
-            if reason is not None:  # unreachable: _decide filtered these out
-                raise RuntimeError(f"refusing to dispatch {a}: {reason}")
-            transitions.append(self._transition(a, world))
+            tr = self.semantics.transition(a, world)
+            if isinstance(tr, Infeasible):  # unreachable: _decide filtered these out
+                raise RuntimeError(f"refusing to dispatch {a}: {tr.reason}")
+            transitions.append(tr)
         self.log.emit(
             self.t,
             "dispatch",
@@ -637,7 +632,7 @@ class Executor:
             risky: list[Hazard] = []
             blocked: list[Hazard] = []
             for a in step.actions:
-                h = precondition_hazard(a, self.scene, self.world)
+                h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
                 if h is not None:
                     blocked.append(h)
                     continue
@@ -681,6 +676,7 @@ class Executor:
             self.t,
             self.t + d,
             self.config.predict_dt,
+            semantics=self.semantics,
         )
 
     def _wait(self, reason: str) -> None:
@@ -853,10 +849,7 @@ class Executor:
         w = self.world
         for run in self._running:
             if run.status is None:
-                tr = run.transition
-                w = w.with_object(tr.obj, ObjectStatus(tr.hands[-1][1], tr.post))
-                for rid, pos in tr.hands:
-                    w = w.with_hand(rid, pos)
+                w = apply(w, run.transition)
         done = [
             r.transition
             for r in self._running

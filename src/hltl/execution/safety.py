@@ -7,7 +7,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 from hltl.execution.predict import TrajectoryPredictor, horizon_times
-from hltl.skills.library import Action, Transition, check_action
+from hltl.skills.library import Action, Transition
+from hltl.skills.semantics import ActionSemantics
 from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import WorldState
@@ -39,9 +40,16 @@ def step_conflict(actions: Sequence[Action]) -> str | None:
     return None
 
 
-def precondition_hazard(action: Action, scene: Scene, world: WorldState) -> Hazard | None:
+def precondition_hazard(
+    action: Action,
+    scene: Scene,
+    world: WorldState,
+    *,
+    semantics: ActionSemantics | None = None,
+) -> Hazard | None:
     """(i) Kinematic infeasibility: Pre(s, ℓ, a) fails under the latest world."""
-    reason = check_action(action, scene, world)
+    sem = ActionSemantics.of(scene) if semantics is None else semantics
+    reason = sem.check(action, world)
     return None if reason is None else Hazard(action, "precondition", reason)
 
 
@@ -65,6 +73,8 @@ def intrusion_hazard(
     until: float,
     dt: float,
     humans: Collection[str] | None = None,
+    *,
+    semantics: ActionSemantics | None = None,
 ) -> Hazard | None:
     """(ii) Intrusion risk: a forecast person breaks the action's precondition before it ends.
 
@@ -74,6 +84,7 @@ def intrusion_hazard(
 
     Args:
         humans: people to forecast (default: those the predictor sees moving).
+        semantics: the action semantics (default: the scene's with reach spheres).
     """
     if until <= t:
         return None
@@ -84,6 +95,7 @@ def intrusion_hazard(
         return None
     times = horizon_times(t, until - t, dt)
     tracks = {h: predictor.predict(h, times) for h in movers}
+    sem = ActionSemantics.of(scene) if semantics is None else semantics
     current = world.context(scene)
     for k, tau in enumerate(times):
         w = world
@@ -91,7 +103,7 @@ def intrusion_hazard(
             w = w.with_human(h, tracks[h][k])
         if w.context(scene) == current:
             continue
-        reason = check_action(action, scene, w)
+        reason = sem.check(action, w)
         if reason is not None:
             return Hazard(action, "intrusion", f"{reason} (forecast for t={tau:.2f})")
     return None

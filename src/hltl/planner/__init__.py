@@ -8,6 +8,7 @@ from hltl.planner.problem import Problem
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.planner.search import ALGORITHMS, search
 from hltl.skills.cost import CostModel
+from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import DEFAULT_SKILLS, Skill
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
@@ -38,6 +39,7 @@ def plan(
     max_expansions: int | None = None,
     skills: Sequence[Skill] = DEFAULT_SKILLS,
     cost: CostModel | None = None,
+    kinematics: Kinematics | None = None,
     on_progress: Callable[[int, float], None] | None = None,
 ) -> PlanResult:
     """Find a minimum-makespan plan for ``spec`` in ``scene``.
@@ -53,12 +55,22 @@ def plan(
         max_expansions: node budget, also ending in ``timeout``.
         skills: the skill library.
         cost: the duration model (default: the scene's fixed durations, else analytic).
+        kinematics: reach and poses of the skills (default: the paper's reach spheres).
         on_progress: called now and then with (nodes expanded, current f bound).
 
     Returns:
         A :class:`PlanResult`; "no plan" is ``status == PlanStatus.INFEASIBLE`` with a reason.
     """
-    problem = Problem(scene, spec, world=world, monitor=monitor, q0=q0, skills=skills, cost=cost)
+    problem = Problem(
+        scene,
+        spec,
+        world=world,
+        monitor=monitor,
+        q0=q0,
+        skills=skills,
+        cost=cost,
+        kinematics=kinematics,
+    )
     return search(
         problem,
         algorithm=algorithm,

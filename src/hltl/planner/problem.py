@@ -6,13 +6,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from hltl.errors import UnknownEntityError
-from hltl.skills.cost import AnalyticCostModel, CostModel, cost_model_for
-from hltl.skills.library import DEFAULT_SKILLS, Action, Situation, Skill, ground, state_atoms
+from hltl.skills.cost import AnalyticCostModel, CostModel
+from hltl.skills.kinematics import Kinematics
+from hltl.skills.library import DEFAULT_SKILLS, Action, Skill, Transition, state_atoms
+from hltl.skills.semantics import ActionSemantics
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.printer import atoms as formula_atoms
 from hltl.spec.syntax import PREDICATES, Atom
-from hltl.world.geometry import distance, home_point
+from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
 
@@ -66,14 +68,16 @@ class Problem:
         q0: MonitorState | None = None,
         skills: Sequence[Skill] = DEFAULT_SKILLS,
         cost: CostModel | None = None,
+        kinematics: Kinematics | None = None,
     ) -> None:
         self.scene = scene
         self.spec = spec
         self.world = initial_world(scene) if world is None else world
         self.monitor = HierarchyMonitor(spec) if monitor is None else monitor
         self.q0 = self.monitor.initial if q0 is None else q0
-        self.cost = cost_model_for(scene) if cost is None else cost
-        self.situation = Situation.of(scene, self.world)
+        self.semantics = ActionSemantics.of(scene, cost=cost, skills=skills, kinematics=kinematics)
+        self.cost = self.semantics.cost
+        self.situation = self.semantics.situation(self.world)
         self.context = self.situation.context
 
         # every predicate atom of the spec, and which formulas mention which objects
@@ -114,7 +118,9 @@ class Problem:
         self.by_obj_pre: list[list[list[Instance]]] = [
             [[] for _ in range(n_locs)] for _ in self.objects
         ]
-        for action, trans in ground(self.situation, skills):
+        self._transitions: dict[Action, Transition] = {}
+        for action, trans in self.semantics.instances(self.world):
+            self._transitions[action] = trans
             oi = self.obj_index[trans.obj]
             inst = Instance(
                 index=len(self.instances),
@@ -131,7 +137,6 @@ class Problem:
             )
             self.instances.append(inst)
             self.by_obj_pre[oi][inst.pre].append(inst)
-        self._transitions = {a: t for a, t in ground(self.situation, skills)}
 
         # state atoms per (object, place), restricted to the spec's atoms
         self.state_atoms: list[list[frozenset[Atom]]] = [
@@ -164,8 +169,9 @@ class Problem:
         locs = tuple(self.loc_code[status[o].loc] for o in self.objects)
         hands: tuple[int, ...] | None = None
         if self.track_hands:
+            home = self.semantics.kinematics.home_point
             hands = tuple(
-                self._point(self.world.hand_position(r) or home_point(self.scene.robot(r)))
+                self._point(self.world.hand_position(r) or home(self.scene.robot(r)))
                 for r in self.robots
             )
         return (locs, hands, self.q0)

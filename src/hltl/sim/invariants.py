@@ -8,7 +8,8 @@ from typing import Any
 
 from hltl.execution.log import world_from_dict
 from hltl.execution.safety import step_conflict
-from hltl.skills.library import Action, check_action
+from hltl.skills.library import Action
+from hltl.skills.semantics import check_action
 from hltl.world.scene import scene_from_dict
 
 _END_TYPES = ("action_done", "action_failed", "action_halted")

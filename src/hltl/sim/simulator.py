@@ -31,9 +31,11 @@ from hltl.sim.events import (
     ObjectMove,
     RobotDown,
 )
-from hltl.skills.cost import CostModel, cost_model_for
-from hltl.skills.library import Action, Situation, Transition, check_action, ground
-from hltl.world.geometry import distance, home_point
+from hltl.skills.cost import CostModel
+from hltl.skills.kinematics import Kinematics
+from hltl.skills.library import Action, Transition
+from hltl.skills.semantics import ActionSemantics, Infeasible, apply
+from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, ObjectStatus, WorldState
 
@@ -103,6 +105,7 @@ class Simulator:
         perception: the perception model.
         log: where world events (people, objects, robots, violations) are recorded.
         cost: the duration model (default: the scene's).
+        kinematics: reach and poses of the skills (default: the paper's reach spheres).
     """
 
     def __init__(
@@ -114,13 +117,15 @@ class Simulator:
         perception: PerceptionModel | None = None,
         log: EventLog | None = None,
         cost: CostModel | None = None,
+        kinematics: Kinematics | None = None,
     ) -> None:
         self.scene = scene
         self.events = EventSchedule() if events is None else events
         self.seed = seed
         self.perception = PerceptionModel() if perception is None else perception
         self.log = EventLog() if log is None else log
-        self.cost = cost_model_for(scene) if cost is None else cost
+        self.semantics = ActionSemantics.of(scene, cost=cost, kinematics=kinematics)
+        self.cost = self.semantics.cost
         self.now = 0.0
         self._rng_fail = random.Random(f"hltl-fail-{seed}")
         self._rng_noise = random.Random(f"hltl-noise-{seed}")
@@ -131,7 +136,9 @@ class Simulator:
         self._objects: dict[str, list[tuple[float, ObjectStatus]]] = {
             o.id: [(0.0, ObjectStatus(o.position))] for o in scene.objects
         }
-        self._hands: dict[str, Vec3] = {r.id: home_point(r) for r in scene.robots}
+        self._hands: dict[str, Vec3] = {
+            r.id: self.semantics.kinematics.home_point(r) for r in scene.robots
+        }
         self._down_until: dict[str, float] = {}
         self._busy: dict[str, int] = {}
         self._actions: dict[int, _SimAction] = {}
@@ -392,7 +399,8 @@ class Simulator:
         hands0 = {r: self.hand_position(r) for r in action.robots}
         busy = [r for r in action.robots if r in self._busy]
         down = [r for r in action.robots if r in self.unavailable()]
-        tr = _transition(action, self.scene, world)
+        found = self.semantics.transition(action, world)
+        tr = None if isinstance(found, Infeasible) else found
         failure = self.events.failure_of(action.skill)
         fails = failure is not None and self._rng_fail.random() < failure.probability
         if tr is None:
@@ -420,9 +428,8 @@ class Simulator:
             return handle
         for r in action.robots:
             self._busy[r] = handle.id
-        reason = check_action(action, self.scene, world)
-        if reason is not None:
-            act.unsafe = reason
+        if isinstance(found, Infeasible):
+            act.unsafe = found.reason
         return handle
 
     def poll(self, handle: Handle, t: float) -> ActionStatus:
@@ -454,14 +461,15 @@ class Simulator:
             if act.status is not None or act.unsafe is not None:
                 continue
             world = world or self.true_world()
-            reason = check_action(act.handle.action, self.scene, world)
+            reason = self.semantics.check(act.handle.action, world)
             if reason is not None:
                 act.unsafe = f"{reason} (at t={self.now:.2f})"
 
     def _complete(self, act: _SimAction) -> None:
         action = act.handle.action
         world = self.true_world()
-        reason = check_action(action, self.scene, world)
+        found = self.semantics.transition(action, world)
+        reason = found.reason if isinstance(found, Infeasible) else None
         if reason is None and act.grasp_at is not None:
             now_at = world.object_status(action.object).position
             if distance(now_at, act.grasp_at) > GRASP_TOLERANCE:
@@ -473,14 +481,15 @@ class Simulator:
             return
         if act.unsafe is not None:
             self._violation(act)
-        tr = _transition(action, self.scene, world)
-        assert tr is not None  # check_action passed
+        assert not isinstance(found, Infeasible)  # its reason was handled above
         if act.fails:
-            self._fail(act, f"{action.skill} failed", act.outcome, tr)
+            self._fail(act, f"{action.skill} failed", act.outcome, found)
             return
-        position = tr.hands[-1][1] if tr.hands else world.object_status(tr.obj).position
-        self._set_object(tr.obj, ObjectStatus(position, tr.post))
-        for rid, pos in tr.hands:
+        after = apply(world, found)
+        self._set_object(found.obj, after.object_status(found.obj))
+        for rid, _ in found.hands:
+            pos = after.hand_position(rid)
+            assert pos is not None  # apply moved it there
             self._hands[rid] = pos
         act.status = ActionStatus(ActionState.DONE, 1.0, self.now)
         self._release(act.handle)
@@ -518,15 +527,6 @@ class Simulator:
             action=act.handle.action.to_dict(),
             reason=act.unsafe or "",
         )
-
-
-def _transition(action: Action, scene: Scene, world: WorldState) -> Transition | None:
-    """The transition of ``action`` in ``world``, if its precondition holds there."""
-    loc = world.object_status(action.object).loc
-    for a, tr in ground(Situation.of(scene, world)):
-        if a == action and tr.pre == loc:
-            return tr
-    return None
 
 
 def _still(action: Action, world: WorldState) -> Transition:

@@ -16,15 +16,9 @@ from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 from hltl.errors import PlanFormatError
+from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.spec.syntax import Atom
-from hltl.world.geometry import (
-    Context,
-    can_meet,
-    context_label,
-    human_handover_point,
-    reaches,
-    rendezvous_point,
-)
+from hltl.world.geometry import Context, context_label
 from hltl.world.scene import Robot, Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
 
@@ -95,9 +89,15 @@ class Situation:
     available: tuple[Robot, ...]
     objects: tuple[str, ...] = field(default=())
     humans: tuple[tuple[str, Vec3], ...] = field(default=())  # where people stand now
+    kinematics: Kinematics = field(default=REACH_SPHERES)
 
     @classmethod
-    def of(cls, scene: Scene, world: WorldState | None = None) -> Situation:
+    def of(
+        cls,
+        scene: Scene,
+        world: WorldState | None = None,
+        kinematics: Kinematics = REACH_SPHERES,
+    ) -> Situation:
         w = initial_world(scene) if world is None else world
         rest = tuple((oid, st.position) for oid, st in w.objects)
         return cls(
@@ -107,6 +107,7 @@ class Situation:
             available=tuple(r for r in scene.robots if r.id not in w.unavailable),
             objects=tuple(oid for oid, _ in w.objects),
             humans=w.humans,
+            kinematics=kinematics,
         )
 
     def human_position(self, hid: str) -> Vec3:
@@ -123,7 +124,12 @@ class Situation:
 
 
 class Skill(ABC):
-    """A skill of the library. Subclasses set ``name`` and ground their instances."""
+    """A skill of the library. Subclasses set ``name`` and ground their instances.
+
+    ``instances`` lists every ground instance of a situation (the planner's graph);
+    ``candidates`` gives the transitions of one action (the executor's and simulator's question).
+    A new skill needs only ``instances``; the default ``candidates`` filters them.
+    """
 
     name: ClassVar[str]
     #: number of robots executing one instance
@@ -133,6 +139,37 @@ class Skill(ABC):
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
         """All ground instances whose situation-dependent preconditions hold in ``sit``."""
 
+    def candidates(self, action: Action, sit: Situation) -> Iterator[Transition]:
+        """The transitions of ``action`` in ``sit`` (one per place the object may start from)."""
+        return (t for a, t in self.instances(sit) if a == action)
+
+
+def _paired(
+    skill: Skill, actions: Iterator[Action], sit: Situation
+) -> Iterator[tuple[Action, Transition]]:
+    for action in actions:
+        for tr in skill.candidates(action, sit):
+            yield action, tr
+
+
+def _robots(
+    skill: Skill, action: Action, sit: Situation, *, human: bool = False, surface: bool = False
+) -> tuple[Robot, ...] | None:
+    """The action's robots when the action has the skill's shape (name, arity, a known object,
+    a human or surface argument exactly when the skill takes one) and all its robots are
+    available; else None."""
+    if (
+        action.skill != skill.name
+        or len(action.robots) != skill.arity
+        or action.object not in sit.objects
+        or (action.human is not None) != human
+        or (action.surface is not None) != surface
+    ):
+        return None
+    avail = {r.id: r for r in sit.available}
+    found = tuple(avail[r] for r in action.robots if r in avail)
+    return found if len(found) == skill.arity else None
+
 
 class Pick(Skill):
     """pick(o) by r: r free, o resting or on a surface within r's reach → r holds o."""
@@ -140,23 +177,27 @@ class Pick(Skill):
     name = "pick"
 
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
-        for oid in sit.objects:
-            sources: list[tuple[Loc, Vec3]] = [(REST, sit.rest_position(oid))]
-            sources += [(Loc("on", s.id), s.center) for s in sit.scene.surfaces]
-            for r in sit.available:
-                for loc, point in sources:
-                    if reaches(r, point):
-                        yield (
-                            Action("pick", (r.id,), oid),
-                            Transition(
-                                oid,
-                                loc,
-                                Loc("held", r.id),
-                                (r.id,),
-                                frozenset({Atom("picked", (oid,))}),
-                                ((r.id, point),),
-                            ),
-                        )
+        acts = (Action("pick", (r.id,), o) for o in sit.objects for r in sit.available)
+        return _paired(self, acts, sit)
+
+    def candidates(self, action: Action, sit: Situation) -> Iterator[Transition]:
+        robots = _robots(self, action, sit)
+        if robots is None:
+            return
+        (r,) = robots
+        oid = action.object
+        sources: list[tuple[Loc, Vec3]] = [(REST, sit.rest_position(oid))]
+        sources += [(Loc("on", s.id), s.center) for s in sit.scene.surfaces]
+        for loc, point in sources:
+            if sit.kinematics.reaches(r, point):
+                yield Transition(
+                    oid,
+                    loc,
+                    Loc("held", r.id),
+                    (r.id,),
+                    frozenset({Atom("picked", (oid,))}),
+                    ((r.id, point),),
+                )
 
 
 class Place(Skill):
@@ -165,48 +206,63 @@ class Place(Skill):
     name = "place"
 
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
-        for oid in sit.objects:
-            for r in sit.available:
-                for s in sit.scene.surfaces:
-                    if reaches(r, s.center):
-                        yield (
-                            Action("place", (r.id,), oid, surface=s.id),
-                            Transition(
-                                oid,
-                                Loc("held", r.id),
-                                Loc("on", s.id),
-                                (),
-                                frozenset({Atom("placed", (oid, s.id))}),
-                                ((r.id, s.center),),
-                            ),
-                        )
+        acts = (
+            Action("place", (r.id,), o, surface=s.id)
+            for o in sit.objects
+            for r in sit.available
+            for s in sit.scene.surfaces
+        )
+        return _paired(self, acts, sit)
+
+    def candidates(self, action: Action, sit: Situation) -> Iterator[Transition]:
+        robots = _robots(self, action, sit, surface=True)
+        surface = next((s for s in sit.scene.surfaces if s.id == action.surface), None)
+        if robots is None or surface is None:
+            return
+        (r,) = robots
+        if sit.kinematics.reaches(r, surface.center):
+            yield Transition(
+                action.object,
+                Loc("held", r.id),
+                Loc("on", surface.id),
+                (),
+                frozenset({Atom("placed", (action.object, surface.id))}),
+                ((r.id, surface.center),),
+            )
 
 
 class HandoverR2R(Skill):
-    """handover_r2r(o; g, r): g holds o, r free, spheres overlap, nobody inside both workspaces
-    → r holds o, g free."""
+    """handover_r2r(o; g, r): g holds o, r free, robots can meet, nobody inside both
+    workspaces → r holds o, g free."""
 
     name = "handover_r2r"
     arity = 2
 
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
-        for g in sit.available:
-            for r in sit.available:
-                if not can_meet(g, r) or sit.context.blocked(g.id, r.id):
-                    continue
-                point = rendezvous_point(g, r)
-                for oid in sit.objects:
-                    yield (
-                        Action("handover_r2r", (g.id, r.id), oid),
-                        Transition(
-                            oid,
-                            Loc("held", g.id),
-                            Loc("held", r.id),
-                            (r.id,),
-                            frozenset(),
-                            ((g.id, point), (r.id, point)),
-                        ),
-                    )
+        acts = (
+            Action("handover_r2r", (g.id, r.id), o)
+            for g in sit.available
+            for r in sit.available
+            for o in sit.objects
+        )
+        return _paired(self, acts, sit)
+
+    def candidates(self, action: Action, sit: Situation) -> Iterator[Transition]:
+        robots = _robots(self, action, sit)
+        if robots is None:
+            return
+        g, r = robots
+        if not sit.kinematics.can_meet(g, r) or sit.context.blocked(g.id, r.id):
+            return
+        point = sit.kinematics.rendezvous_point(g, r)
+        yield Transition(
+            action.object,
+            Loc("held", g.id),
+            Loc("held", r.id),
+            (r.id,),
+            frozenset(),
+            ((g.id, point), (r.id, point)),
+        )
 
 
 class HandoverR2H(Skill):
@@ -215,24 +271,30 @@ class HandoverR2H(Skill):
     name = "handover_r2h"
 
     def instances(self, sit: Situation) -> Iterator[tuple[Action, Transition]]:
-        for hid, robots in sit.context.served_by:
-            pos = sit.human_position(hid)
-            for r in sit.available:
-                if r.id not in robots:
-                    continue
-                point = human_handover_point(r, pos)
-                for oid in sit.objects:
-                    yield (
-                        Action("handover_r2h", (r.id,), oid, human=hid),
-                        Transition(
-                            oid,
-                            Loc("held", r.id),
-                            Loc("delivered", hid),
-                            (),
-                            frozenset({Atom("delivered", (oid, hid))}),
-                            ((r.id, point),),
-                        ),
-                    )
+        acts = (
+            Action("handover_r2h", (r.id,), o, human=h)
+            for h, _ in sit.context.served_by
+            for r in sit.available
+            for o in sit.objects
+        )
+        return _paired(self, acts, sit)
+
+    def candidates(self, action: Action, sit: Situation) -> Iterator[Transition]:
+        robots = _robots(self, action, sit, human=True)
+        if robots is None or action.human is None:
+            return
+        (r,) = robots
+        if r.id not in sit.context.robots_serving(action.human):
+            return
+        point = sit.kinematics.human_handover_point(r, sit.human_position(action.human))
+        yield Transition(
+            action.object,
+            Loc("held", r.id),
+            Loc("delivered", action.human),
+            (),
+            frozenset({Atom("delivered", (action.object, action.human))}),
+            ((r.id, point),),
+        )
 
 
 DEFAULT_SKILLS: tuple[Skill, ...] = (Pick(), Place(), HandoverR2R(), HandoverR2H())
@@ -263,56 +325,3 @@ def step_symbol(transitions: Sequence[Transition], world: WorldState) -> frozens
     for oid, st in world.objects:
         atoms |= state_atoms(oid, st.loc)
     return frozenset(atoms)
-
-
-def check_action(
-    action: Action,
-    scene: Scene,
-    world: WorldState,
-    skills: Sequence[Skill] = DEFAULT_SKILLS,
-) -> str | None:
-    """Pre(s, ℓ, a) under the latest world: ``None`` when it holds, else the reason it fails."""
-    sit = Situation.of(scene, world)
-    matches = [t for a, t in ground(sit, skills) if a == action]
-    if not matches:
-        return _why_not_grounded(action, sit)
-    status = {oid: st.loc for oid, st in world.objects}
-    loc = status.get(action.object)
-    trans = [t for t in matches if t.pre == loc]
-    if not trans:
-        if action.skill == "pick" and loc is not None and loc.kind in ("rest", "on"):
-            where = _where(sit, action.object, loc)
-            return f"{action}: {action.object} {where} is out of reach of {action.robots[0]}"
-        need = " or ".join(sorted({str(t.pre) for t in matches}))
-        return f"{action}: {action.object} is {loc}; the skill needs it {need}"
-    for rid in trans[0].free:
-        held = world.holding(rid)
-        if held is not None:
-            return f"{action}: {rid} is not free (holds {held})"
-    return None
-
-
-def _where(sit: Situation, oid: str, loc: Loc) -> str:
-    if loc.kind == "on":
-        return f"on {loc.ref}"
-    x, y, z = sit.rest_position(oid)
-    return f"at ({x:.2f}, {y:.2f}, {z:.2f})"
-
-
-def _why_not_grounded(action: Action, sit: Situation) -> str:
-    avail = {r.id for r in sit.available}
-    down = [r for r in action.robots if r not in avail]
-    if down:
-        return f"{action}: robot {', '.join(down)} is unavailable"
-    if action.skill == "handover_r2h" and action.human is not None:
-        serving = sorted(sit.context.robots_serving(action.human))
-        return (
-            f"{action}: {action.human} is not inside {action.robots[0]}'s workspace "
-            f"(served by: {', '.join(serving) or 'no robot'})"
-        )
-    if action.skill == "handover_r2r" and len(action.robots) == 2:
-        g, r = action.robots
-        if sit.context.blocked(g, r):
-            return f"{action}: a person stands inside both {g}'s and {r}'s workspaces"
-        return f"{action}: {g} and {r} cannot meet"
-    return f"{action}: out of reach or not a skill of the library"

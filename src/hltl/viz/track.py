@@ -16,8 +16,9 @@ from typing import Any, Literal
 
 from hltl.errors import PlanFormatError, SceneError
 from hltl.planner.result import PlanResult
+from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.skills.library import Action
-from hltl.world.geometry import home_point, human_handover_point, meeting_pairs, rendezvous_point
+from hltl.world.geometry import meeting_pairs
 from hltl.world.scene import Scene, Vec3, scene_from_dict
 
 Outcome = Literal["planned", "done", "failed", "halted", "running"]
@@ -125,6 +126,7 @@ class Track:
         success: whether the episode met every goal (``None`` for a plan).
         title: a one-line description.
         note: why there is nothing to show (a plan that is not solved), else empty.
+        kinematics: where hands go (default: the paper's reach spheres).
     """
 
     kind: Literal["plan", "episode"]
@@ -139,6 +141,7 @@ class Track:
     success: bool | None = None
     title: str = ""
     note: str = ""
+    kinematics: Kinematics = field(default=REACH_SPHERES, repr=False, compare=False)
     _hands: dict[str, tuple[_HandMove, ...]] = field(init=False, repr=False, compare=False)
     _places: dict[str, tuple[tuple[float, ObjectPlace], ...]] = field(
         init=False, repr=False, compare=False
@@ -194,7 +197,7 @@ class Track:
     def hand_position(self, rid: str, t: float) -> Vec3:
         """Where robot ``rid``'s hand is at time ``t``: moving linearly to each action's target
         over the action's planned duration, frozen where a halt or failure stopped it."""
-        pos = home_point(self.scene.robot(rid))
+        pos = self.kinematics.home_point(self.scene.robot(rid))
         for mv in self._hands.get(rid, ()):
             if mv.t0 > t + 1e-9:
                 break
@@ -233,7 +236,8 @@ class Track:
         out = []
         for g, r in meeting_pairs(self.scene):
             if g < r:
-                out.append((g, r, rendezvous_point(self.scene.robot(g), self.scene.robot(r))))
+                p = self.kinematics.rendezvous_point(self.scene.robot(g), self.scene.robot(r))
+                out.append((g, r, p))
         return out
 
 
@@ -485,7 +489,7 @@ def _kinematics(
 
     def hand_at(rid: str, t: float) -> Vec3:
         hist = moves.get(rid, [])
-        return _hand_at(hist[-1], t) if hist else home_point(scene.robot(rid))
+        return _hand_at(hist[-1], t) if hist else track.kinematics.home_point(scene.robot(rid))
 
     for t, kind, i in events:
         if kind == 0:
@@ -522,11 +526,13 @@ def _targets(track: Track, a: Action, place: ObjectPlace, t: float) -> dict[str,
         if a.skill == "place" and a.surface is not None:
             return {a.robots[0]: scene.surface(a.surface).center}
         if a.skill == "handover_r2r" and len(a.robots) == 2:
-            p = rendezvous_point(scene.robot(a.robots[0]), scene.robot(a.robots[1]))
+            g, r = (scene.robot(x) for x in a.robots)
+            p = track.kinematics.rendezvous_point(g, r)
             return {a.robots[0]: p, a.robots[1]: p}
         if a.skill == "handover_r2h" and a.human is not None:
             robot = scene.robot(a.robots[0])
-            return {robot.id: human_handover_point(robot, track.human_position(a.human, t))}
+            pos = track.human_position(a.human, t)
+            return {robot.id: track.kinematics.human_handover_point(robot, pos)}
     except KeyError:  # an id the scene lacks: nothing to draw
         return {}
     return {}

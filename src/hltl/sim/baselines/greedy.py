@@ -19,7 +19,8 @@ from dataclasses import dataclass
 
 from hltl.sim.baselines.loop import PlanContext, Script
 from hltl.sim.baselines.model import Liveness, apply_step
-from hltl.skills.library import Action, check_action
+from hltl.skills.library import Action
+from hltl.skills.semantics import check_action
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import MonitorState
 from hltl.spec.printer import atoms

@@ -9,7 +9,7 @@ for every GOAL, with hltl's monitors). What differs is who decides the actions: 
 :class:`Policy` returns a *script*, a sequence of synchronous steps.
 
 Before every dispatch each action of the step goes through
-:func:`~hltl.skills.library.check_action` against the latest perceived world (and the step
+:func:`~hltl.skills.semantics.check_action` against the latest perceived world (and the step
 through the shared-robot/object check). A refused step is never dispatched. It is
 
 * a **violation** when the step was already infeasible in the world the policy planned for
@@ -31,11 +31,12 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from hltl.execution.drivers import ActionState, Handle
 from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
-from hltl.sim.baselines.model import Violation, apply_step, check_step, symbol_of
+from hltl.sim.baselines.model import Violation, apply_step, check_step
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics, compute_metrics
 from hltl.sim.simulator import Simulator
-from hltl.skills.library import Action, Transition, check_action
+from hltl.skills.library import Action, Transition, step_symbol
+from hltl.skills.semantics import ActionSemantics, Infeasible, check_action
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.geometry import Context
@@ -251,7 +252,7 @@ class _Loop:
         assert self.monitor is not None
         done = [r.transition for r in runs if r.state is ActionState.DONE]
         if done:
-            symbol = symbol_of(done, self.world())
+            symbol = step_symbol(done, self.world())
             self.q = log_monitor_step(self.log, self.t, self.steps, self.monitor, self.q, symbol)
             if self.monitor.accepted(self.q):
                 self.accepted_at = self.t
@@ -411,8 +412,7 @@ class _Loop:
             )
 
     def dispatch(self, step: Sequence[Action], world: WorldState) -> None:
-        from hltl.sim.baselines.model import transition_of
-
+        sem = ActionSemantics.of(self.scene)
         self.log.emit(
             self.t,
             "dispatch",
@@ -424,8 +424,8 @@ class _Loop:
             done=self._done(),
         )
         for a in step:
-            tr = transition_of(a, self.scene, world)
-            assert tr is not None  # check_step passed
+            tr = sem.transition(a, world)
+            assert not isinstance(tr, Infeasible)  # check_step passed
             handle = self.sim.start(a, self.t)
             self.running.append(_Run(a, handle, tr))
             self.log.emit(

@@ -1,0 +1,68 @@
+"""Where hands go and what they reach: the Reachability/Kinematics seam of the skill library.
+
+Skills ask a :class:`Kinematics` which instances exist (reach, robots that can meet) and which
+poses an instance uses (grasp, rendezvous, handover point). :data:`REACH_SPHERES` is the
+paper's geometry (a reach sphere per arm, §IV-B); a motion layer with real arm models plugs in a
+second implementation (docs/architecture.md shows how).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
+
+from hltl.world import geometry
+from hltl.world.scene import Robot, Vec3
+
+
+@runtime_checkable
+class Reachability(Protocol):
+    """Which points a robot's hand reaches and which robots can hand over to each other."""
+
+    def reaches(self, robot: Robot, point: Vec3) -> bool:
+        """True when the robot's hand can grasp or release at ``point``."""
+        ...
+
+    def can_meet(self, giver: Robot, receiver: Robot) -> bool:
+        """True when the two robots can exchange an object hand to hand."""
+        ...
+
+
+@runtime_checkable
+class Kinematics(Reachability, Protocol):
+    """Reachability plus the poses an instance uses (metres, scene frame)."""
+
+    def rendezvous_point(self, giver: Robot, receiver: Robot) -> Vec3:
+        """Where the two hands meet for a robot-to-robot handover."""
+        ...
+
+    def human_handover_point(self, robot: Robot, human_position: Vec3) -> Vec3:
+        """Where the hand offers an object to a person standing at ``human_position``."""
+        ...
+
+    def home_point(self, robot: Robot) -> Vec3:
+        """The hand's rest pose."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class ReachSpheres:
+    """The paper's geometry: each arm reaches a sphere around its base (world/geometry.py)."""
+
+    def reaches(self, robot: Robot, point: Vec3) -> bool:
+        return geometry.reaches(robot, point)
+
+    def can_meet(self, giver: Robot, receiver: Robot) -> bool:
+        return geometry.can_meet(giver, receiver)
+
+    def rendezvous_point(self, giver: Robot, receiver: Robot) -> Vec3:
+        return geometry.rendezvous_point(giver, receiver)
+
+    def human_handover_point(self, robot: Robot, human_position: Vec3) -> Vec3:
+        return geometry.human_handover_point(robot, human_position)
+
+    def home_point(self, robot: Robot) -> Vec3:
+        return geometry.home_point(robot)
+
+
+REACH_SPHERES: Kinematics = ReachSpheres()
