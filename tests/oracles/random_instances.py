@@ -19,12 +19,17 @@ MARGIN = 1e-3  # keep every distance this far from the threshold it is compared 
 
 
 def random_instance(
-    seed: int, max_robots: int = 3, max_objects: int = 3
+    seed: int, max_robots: int = 3, max_objects: int = 3, robots: int | None = None
 ) -> tuple[dict[str, Any], dict[str, Any]]:
-    """A deterministic random ``(scene_dict, spec_dict)`` pair; both load with the hltl loaders."""
+    """A deterministic random ``(scene_dict, spec_dict)`` pair; both load with the hltl loaders.
+
+    ``robots`` fixes the number of robots (else at most ``max_robots``, mostly 2 or 3).
+    """
     rng = random.Random(seed)
     # Several robots more often than one: relays are what the oracles are for.
     n_robots = min(max_robots, rng.choice((1, 2, 2, 3, 3, 3)))
+    if robots is not None:
+        n_robots = robots
     n_objects = rng.randint(1, max_objects)
     n_humans = rng.randint(1, 2)
     with_surface = rng.random() < 0.5

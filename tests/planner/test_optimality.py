@@ -82,3 +82,42 @@ def test_pairwise_bound_on_four_robot_instances(seed: int) -> None:
     assert with_pairs.status is dijkstra.status
     if dijkstra.solved:
         assert with_pairs.makespan == pytest.approx(dijkstra.makespan)
+
+
+@pytest.mark.parametrize("seed", range(3000, 3060))
+def test_pruned_search_matches_exhaustive_search_with_four_robots(seed: int) -> None:
+    # dead-action pruning and the left-shift rule cut most successors on bigger cells: check them
+    # where there is room for relays and idle robots
+    scene_d, spec_d = random_instance(seed, max_objects=3, robots=4)
+    scene = scene_from_dict(scene_d)
+    spec = spec_from_dict(spec_d)
+    expected = optimal_makespan(scene, spec)
+    res = plan(scene, spec, timeout=120)
+    if expected is None:
+        assert res.status is PlanStatus.INFEASIBLE
+        return
+    assert res.makespan is not None
+    assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
+    check_plan(scene, spec, res.to_dict())
+
+
+@pytest.mark.parametrize(
+    ("n", "layout", "seed"),
+    [
+        (n, layout, seed)
+        for n, layout in ((3, "line"), (3, "grid"), (4, "line"), (4, "grid"), (4, "square"))
+        for seed in range(5)
+    ],
+)
+def test_pruned_search_matches_exhaustive_search_on_catalogue_cells(
+    n: int, layout: str, seed: int
+) -> None:
+    # generated cells: several deliveries competing for the same robots, relays, orderings
+    from hltl.sim.scenarios import generate
+
+    sc = generate(n, n, layout, seed)
+    expected = optimal_makespan(sc.scene, sc.spec, max_nodes=1_000_000)
+    res = plan(sc.scene, sc.spec, timeout=120)
+    assert res.makespan is not None and expected is not None
+    assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
+    check_plan(sc.scene, sc.spec, res.to_dict())

@@ -49,6 +49,10 @@ class Heuristic:
         self.n_robots = len(problem.robots)
         self._required_cache: dict[MonitorState, frozenset[Atom]] = {}
         self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
+        self._load_groups: dict[MonitorState, tuple[tuple[int, tuple[Atom, ...]], ...]] = {}
+        self._contrib: dict[
+            tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
+        ] = {}
         self._load_tables: dict[
             Atom, tuple[int, list[tuple[int, list[float], list[float], float]]] | None
         ] = {}
@@ -125,7 +129,7 @@ class Heuristic:
         assert self.pairs is not None
         lookups = self._pair_lookups.get(q)
         if lookups is None:
-            lookups = self.pairs.lookups(sorted(self._required_atoms(q)))
+            lookups = self.pairs.lookups(sorted(self.required_atoms(q)))
             self._pair_lookups[q] = lookups
         best = 0.0
         for lk in lookups:
@@ -137,37 +141,74 @@ class Heuristic:
     # -- robot load ------------------------------------------------------------------------------
     def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
         """max over robots of the time it must spend on objects every accepting run needs."""
-        atoms_ = self._required_atoms(q)
-        if not atoms_:
+        groups = self._load_groups.get(q)
+        if groups is None:
+            groups = self._group_by_object(self.required_atoms(q))
+            self._load_groups[q] = groups
+        if not groups:
             return 0.0
-        # jobs per robot: per object it must handle, [head, work, tail]
-        jobs: dict[int, dict[int, list[float]]] = {}
+        # per robot: least head, summed work, least tail over the objects it must handle
+        head: dict[int, float] = {}
+        work: dict[int, float] = {}
+        tail: dict[int, float] = {}
+        for o, atoms_ in groups:
+            rows = self._contributions(o, atoms_, locs[o])
+            for r, hd, v, tl in rows:
+                if r in work:
+                    work[r] += v
+                    if hd < head[r]:
+                        head[r] = hd
+                    if tl < tail[r]:
+                        tail[r] = tl
+                else:
+                    work[r] = v
+                    head[r] = hd
+                    tail[r] = tl
+        best = 0.0
+        # the robot's jobs fill distinct steps; the first cannot start before some object
+        # reaches it, and after the last one that object still has to travel
+        for r, v in work.items():
+            t = head[r] + v + tail[r]
+            if t > best:
+                best = t
+        return best
+
+    def _group_by_object(self, atoms_: frozenset[Atom]) -> tuple[tuple[int, tuple[Atom, ...]], ...]:
+        by_obj: dict[int, list[Atom]] = {}
+        for atom in sorted(atoms_):
+            table = self._load_table(atom)
+            if table is not None and table[1]:
+                by_obj.setdefault(table[0], []).append(atom)
+        return tuple((o, tuple(a)) for o, a in sorted(by_obj.items()))
+
+    def _contributions(
+        self, o: int, atoms_: tuple[Atom, ...], loc: int
+    ) -> tuple[tuple[int, float, float, float], ...]:
+        """Per robot that must act on object ``o`` (at place ``loc``) to make all of ``atoms_``
+        true: (robot, head, work, tail), combined over the atoms (least head and tail, most
+        work: one route may serve several atoms)."""
+        key = (atoms_, loc)
+        hit = self._contrib.get(key)
+        if hit is not None:
+            return hit
+        merged: dict[int, list[float]] = {}
         for atom in atoms_:
             table = self._load_table(atom)
-            if table is None:
-                continue
-            o, rows = table
-            loc = locs[o]
-            for r, load, heads, tail in rows:
+            assert table is not None
+            for r, load, heads, tl in table[1]:
                 v = load[loc]
                 if v <= 0.0:
                     continue
-                mine = jobs.setdefault(r, {})
-                job = mine.get(o)
+                job = merged.get(r)
                 if job is None:
-                    mine[o] = [heads[loc], v, tail]
+                    merged[r] = [heads[loc], v, tl]
                 else:
                     job[0] = min(job[0], heads[loc])
                     job[1] = max(job[1], v)
-                    job[2] = min(job[2], tail)
-        best = 0.0
-        for mine in jobs.values():
-            # the robot's jobs fill distinct steps; the first cannot start before some object
-            # reaches it, and after the last one that object still has to travel
-            head = min(j[0] for j in mine.values())
-            tail = min(j[2] for j in mine.values())
-            best = max(best, head + sum(j[1] for j in mine.values()) + tail)
-        return best
+                    job[2] = min(job[2], tl)
+        out = tuple((r, j[0], j[1], j[2]) for r, j in sorted(merged.items()))
+        self._contrib[key] = out
+        return out
 
     def _load_table(
         self, atom: Atom
@@ -191,7 +232,7 @@ class Heuristic:
         self._load_tables[atom] = table
         return table
 
-    def _required_atoms(self, q: MonitorState) -> frozenset[Atom]:
+    def required_atoms(self, q: MonitorState) -> frozenset[Atom]:
         """Predicate atoms that every accepting continuation from ``q`` must make true."""
         hit = self._required_cache.get(q)
         if hit is not None:

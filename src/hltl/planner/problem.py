@@ -142,6 +142,14 @@ class Problem:
         self.state_atoms: list[list[frozenset[Atom]]] = [
             [state_atoms(o, loc) & self.spec_atoms for loc in self.locs] for o in self.objects
         ]
+        # instances no monitor can see: no spec event, and the object has no spec state atom
+        # where it starts or ends (picks and robot-to-robot handovers in delivery tasks)
+        self.invisible: tuple[bool, ...] = tuple(
+            not inst.events
+            and not self.state_atoms[inst.obj][inst.pre]
+            and not self.state_atoms[inst.obj][inst.post]
+            for inst in self.instances
+        )
         self.state_atom_objects: tuple[int, ...] = tuple(
             i for i in range(len(self.objects)) if any(self.state_atoms[i])
         )

@@ -47,6 +47,7 @@ class RelaxedGraph:
             self.event_time.append(ev)
         self._load: dict[tuple[int, int, Atom], list[float]] = {}
         self._head_tail: dict[tuple[int, int, Atom], tuple[list[float], float]] = {}
+        self._dead: dict[Atom, frozenset[int]] = {}
 
     def goal(self, atom: Atom) -> tuple[int, int | None] | None:
         """(object index, place code) for a state atom, (object index, None) for an event atom."""
@@ -121,6 +122,31 @@ class RelaxedGraph:
         dist = _dijkstra(rev, sink)[:n]
         self._load[key] = dist
         return dist
+
+    def dead_instances(self, atom: Atom) -> frozenset[int]:
+        """Indices of the instances after which ``atom`` can never hold: they move the atom's
+        object to a place from which the atom is unreachable, without making it true on the way
+        (e.g. handing the object to a person other than the one the atom names)."""
+        hit = self._dead.get(atom)
+        if hit is not None:
+            return hit
+        g = self.goal(atom)
+        out: set[int] = set()
+        if g is not None:
+            o, target = g
+            for pre in range(len(self.p.locs)):
+                for inst in self.p.by_obj_pre[o][pre]:
+                    if atom in inst.events:
+                        continue
+                    if target is None:
+                        t = self.event_time[o][inst.post].get(atom, INF)
+                    else:
+                        t = self.place_time[o][inst.post][target]
+                    if t == INF:
+                        out.add(inst.index)
+        res = frozenset(out)
+        self._dead[atom] = res
+        return res
 
     def atom_time(self, atom: Atom, locs: tuple[int, ...]) -> float:
         """Earliest time (lower bound) at which ``atom`` can be true in a step's symbol."""

@@ -20,6 +20,16 @@ ALGORITHMS = ("astar", "dijkstra")
 PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
 CHECK_EVERY = 64  # successors generated between two looks at the clock inside one expansion
 
+# The step that reached a node, as (robots acting: bit mask, objects moved: bit mask, duration in
+# ticks). Left-shift rule: an instance no monitor can see, whose robots were idle and whose object
+# stayed put in that step, and that would not have made it longer, could have run in it instead
+# (it was applicable then: only a step's own robots change what they hold). Moving it there keeps
+# every symbol, every later precondition and every later duration and makes no step longer, so
+# some optimal plan never delays such an instance, and the search need not generate it. A node
+# reached by several equally cheap steps keeps all their tags; an instance is skipped only when
+# every tag allows it to shift.
+Tag = tuple[int, int, int]
+
 
 class _Search:
     """One search run; kept as an object so successor generation can reuse its memo tables."""
@@ -29,6 +39,8 @@ class _Search:
         self.monitor = problem.monitor
         self._step_memo: dict[tuple[object, frozenset[Atom]], object] = {}
         self._done_memo: dict[object, frozenset[str]] = {}
+        self.heuristic = Heuristic(problem, self.done)
+        self._dead_memo: dict[object, frozenset[int]] = {}
         # (child index, parent index), parents first: once a node is done its descendants can
         # no longer matter, so they are marked done too and equivalent states merge
         index = {n: i for i, n in enumerate(self.monitor.nodes)}
@@ -56,10 +68,25 @@ class _Search:
             self._step_memo[key] = nq
         return nq
 
-    def options(self, node: Node) -> list[list[Instance]]:
-        """Per object worth touching, the instances whose state preconditions hold."""
-        locs, _, q = node
+    def dead(self, q: object) -> frozenset[int]:
+        """Instances that would make an atom every accepting continuation from ``q`` needs
+        impossible: no successor through them can reach F, so they are never generated."""
+        d = self._dead_memo.get(q)
+        if d is None:
+            graph = self.heuristic.graph
+            d = frozenset().union(
+                *(graph.dead_instances(a) for a in self.heuristic.required_atoms(q))  # type: ignore[arg-type]
+            )
+            self._dead_memo[q] = d
+        return d
+
+    def options(self, node: Node, tags: Sequence[Tag] = ()) -> list[list[Instance]]:
+        """Per object worth touching, the instances whose state preconditions hold and that are
+        not left-shiftable into the step that reached ``node`` (see ``Tag``)."""
+        locs, hands, q = node
         p = self.p
+        dead = self.dead(q)
+        invisible = p.invisible
         holder_of = p.code_holder
         busy = 0
         for code in locs:
@@ -73,17 +100,32 @@ class _Search:
             if prune and o not in relevant and code not in holder_of:
                 continue
             cands = [
-                inst for inst in p.by_obj_pre[o][code] if not any(busy >> f & 1 for f in inst.free)
+                inst
+                for inst in p.by_obj_pre[o][code]
+                if inst.index not in dead
+                and not any(busy >> f & 1 for f in inst.free)
+                and not (
+                    tags
+                    and invisible[inst.index]
+                    and all(
+                        not inst.executors & e
+                        and not m >> inst.obj & 1
+                        and p.duration(inst, hands) <= d
+                        for e, m, d in tags
+                    )
+                )
             ]
             if cands:
                 out.append(cands)
         return out
 
-    def steps(self, node: Node) -> Iterator[tuple[tuple[Instance, ...], int, Node]]:
+    def steps(
+        self, node: Node, tags: Sequence[Tag] = ()
+    ) -> Iterator[tuple[tuple[Instance, ...], int, Node]]:
         """All successors: every set U of applicable instances with disjoint robots."""
         locs, hands, q = node
         p = self.p
-        opts = self.options(node)
+        opts = self.options(node, tags)
         chosen: list[Instance] = []
 
         def rec(i: int, used: int) -> Iterator[tuple[Instance, ...]]:
@@ -117,7 +159,8 @@ class _Search:
             nq = self.monitor_step(q, frozenset(events))
             if not U and nq == q:
                 continue
-            yield U, cost, (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)  # type: ignore[misc]
+            child = (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)
+            yield U, cost, child  # type: ignore[misc]
 
 
 def search(
@@ -151,7 +194,7 @@ def search(
     h: Callable[[Node], float]
     heur: Heuristic | None = None
     if algorithm == "astar":
-        heur = Heuristic(problem, s.done)
+        heur = s.heuristic
         h = heur
     else:
         h = _zero
@@ -189,6 +232,8 @@ def search(
             lower_bound=lb,
         )
 
+    tags: dict[Node, list[Tag]] = {start: []}
+    seen_tags: dict[Node, int] = {}  # how many tags a node had when it was last expanded
     while heap:
         f, neg_g, _, node = heapq.heappop(heap)
         g = -neg_g
@@ -196,6 +241,10 @@ def search(
         # need not be consistent, so a node may be expanded again with a smaller g)
         if g > g_best[node]:
             continue
+        node_tags = tags[node]
+        if seen_tags.get(node) == len(node_tags):
+            continue  # already expanded with this g and these tags
+        seen_tags[node] = len(node_tags)
         if f > bound:
             bound = f
         if problem.monitor.accepted(node[2]):
@@ -213,20 +262,50 @@ def search(
         if on_progress is not None and expanded % 1024 == 0:
             on_progress(expanded, to_seconds(bound))
         n_children = 0
-        for U, cost, child in s.steps(node):
+        # the start node has no tag: nothing can be shifted into a step before it
+        for U, cost, child in s.steps(node, node_tags):
             n_children += 1
             if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
                 return stop(time.perf_counter() - t0)
             ng = g + cost
-            if ng < g_best.get(child, math.inf):
+            old = g_best.get(child)
+            if old is not None and ng > old:
+                continue
+            tag = (_executors(U), _moved(U), cost)
+            if old is not None and ng == old:
+                # an equally cheap way in: its tag may allow what the others forbid
+                child_tags = tags[child]
+                if tag in child_tags:
+                    continue
+                child_tags.append(tag)
+                if child not in seen_tags:
+                    continue  # not expanded yet: it will see this tag when it is
+                hc = h(child)
+            else:
                 hc = h(child)
                 if math.isinf(hc):
                     continue
                 g_best[child] = ng
+                tags[child] = [tag]
+                seen_tags.pop(child, None)
                 parent[child] = (node, U, cost)
                 generated += 1
-                heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
+            heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
     return _infeasible(problem, s, algorithm, t0, expanded, generated)
+
+
+def _executors(U: tuple[Instance, ...]) -> int:
+    mask = 0
+    for inst in U:
+        mask |= inst.executors
+    return mask
+
+
+def _moved(U: tuple[Instance, ...]) -> int:
+    mask = 0
+    for inst in U:
+        mask |= 1 << inst.obj
+    return mask
 
 
 def _zero(_: Node) -> float:
