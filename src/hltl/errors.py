@@ -54,3 +54,7 @@ class PlanFormatError(HltlError, ValueError):
 
 class BusError(HltlError, RuntimeError):
     """The Zenoh bus cannot be used: no node answers, a malformed message, a bad endpoint."""
+
+
+class PerceptionError(HltlError, ValueError):
+    """A frame folder or camera file is malformed, or frames cannot be interpreted."""

@@ -24,7 +24,11 @@ COMMAND_MODULES = (
     "viz",
     "bench",
     "render",
+<<<<<<< HEAD
     "node",
+=======
+    "perception",
+>>>>>>> main
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -33,6 +33,13 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--no-predict", action="store_true", help="no predictive planning or intrusion forecasts"
     )
+    p.add_argument(
+        "--predictor",
+        choices=("cv", "goal", "gru"),
+        default="cv",
+        help="human trajectory predictor for workspace prediction and intrusion forecasts: "
+        "constant velocity, goal-directed or the learned GRU (default: cv)",
+    )
     p.add_argument("--grounder", default="offline", help="grounder for instructions")
     p.add_argument("--noise", type=float, default=0.0, help="perception noise (m, std. dev.)")
     p.add_argument("--latency", type=float, default=0.0, help="perception latency (s)")
@@ -86,7 +93,11 @@ def run(args: argparse.Namespace) -> int:
 
         spec = load_spec(args.spec)
     events = load_events(args.events, scene) if args.events is not None else None
+    from hltl.perception.predict import make_predictor
+
+    predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
+<<<<<<< HEAD
     with contextlib.ExitStack() as stack:
         cell = simulated_cell if args.bus is None else _bus_cell(args, stack)
         episode = run_episode(
@@ -101,6 +112,20 @@ def run(args: argparse.Namespace) -> int:
             on_record=None if timeline is None else timeline,
             cell=cell,
         )
+=======
+    episode = run_episode(
+        scene,
+        spec=spec,
+        instruction=args.instruction,
+        events=events,
+        seed=args.seed,
+        config=config,
+        grounder=make_grounder(args.grounder),
+        predictor=predictor,
+        log_path=args.log,
+        on_record=None if timeline is None else timeline,
+    )
+>>>>>>> main
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:

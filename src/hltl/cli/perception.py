@@ -1,0 +1,153 @@
+"""``hltl perception``: train and evaluate the trajectory predictors."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import shlex
+import sys
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+# Held-out test sets: (name, leg mix over walks.KINDS = sim, smooth, turn, hesitate, wander).
+TEST_SETS: tuple[tuple[str, tuple[float, ...]], ...] = (
+    ("mixed", (0.3, 0.3, 0.15, 0.15, 0.1)),
+    ("simulator walks", (1.0, 0.0, 0.0, 0.0, 0.0)),
+    ("stops & turns", (0.0, 0.0, 1.0, 1.0, 0.0)),
+    ("wandering", (0.0, 0.0, 0.0, 0.0, 1.0)),
+)
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "perception",
+        help="train and evaluate the trajectory predictors",
+        description="Train the GRU trajectory predictor on seeded walks of the human model and "
+        "compare it with constant velocity and the goal-directed predictor.",
+    )
+    psub = p.add_subparsers(dest="perception", metavar="ACTION", required=True)
+    tr = psub.add_parser("train-predictor", help="train the GRU on seeded walks")
+    tr.add_argument("--out", type=Path, help="weights file (default: the shipped one)")
+    tr.add_argument("--seed", type=int, default=0, help="seed of walks and initialisation")
+    tr.add_argument("--walks", type=int, default=600, help="20 s walks to train on")
+    tr.add_argument("--epochs", type=int, default=12, help="passes over the windows")
+    tr.set_defaults(func=run_train)
+    ev = psub.add_parser(
+        "eval-predictor", help="ADE/FDE at 1 s and 2 s of cv, goal and gru on held-out walks"
+    )
+    ev.add_argument("--weights", type=Path, help="GRU weights (default: the shipped ones)")
+    ev.add_argument("--seed", type=int, default=1000, help="seed of the held-out walks")
+    ev.add_argument("--walks", type=int, default=30, help="20 s walks per test set")
+    ev.add_argument("--json", action="store_true", help="print the scores as JSON")
+    ev.set_defaults(func=run_eval)
+
+
+def _positive(name: str, value: int) -> None:
+    if value < 1:
+        raise HltlError(f"--{name}: expected a positive integer, got {value!r}")
+
+
+def run_train(args: argparse.Namespace) -> int:
+    from rich.console import Console
+    from rich.progress import Progress
+
+    from hltl.perception.gru import SHIPPED, train
+
+    _positive("walks", args.walks)
+    _positive("epochs", args.epochs)
+    out = SHIPPED if args.out is None else args.out
+    command = "hltl perception train-predictor " + shlex.join(
+        [f"--seed={args.seed}", f"--walks={args.walks}", f"--epochs={args.epochs}"]
+    )
+    console = Console(stderr=True)
+    with Progress(console=console, transient=True) as bar:
+        tasks: dict[str, Any] = {}
+
+        def progress(phase: str, frac: float) -> None:
+            if phase not in tasks:
+                tasks[phase] = bar.add_task(phase, total=1.0)
+            bar.update(tasks[phase], completed=frac)
+
+        try:
+            res = train(
+                out,
+                seed=args.seed,
+                walks=args.walks,
+                epochs=args.epochs,
+                command=command,
+                progress=progress,
+            )
+        except OSError as exc:
+            raise HltlError(f"{out}: cannot write weights ({exc.strerror})") from None
+    print(
+        f"trained on {res.samples} windows of {args.walks} walks in {res.seconds:.0f} s: "
+        f"validation ADE@2s {res.val_ade:.3f} m (goal-directed {res.val_prior_ade:.3f} m)"
+    )
+    print(f"wrote {res.path}")
+    return 0
+
+
+def run_eval(args: argparse.Namespace) -> int:
+    from hltl.perception.evaluate import HORIZONS
+    from hltl.perception.gru import load_model
+
+    _positive("walks", args.walks)
+    try:
+        model = load_model(args.weights)
+    except (FileNotFoundError, ValueError) as exc:
+        raise HltlError(str(exc)) from None
+    results = evaluate_predictors(args.seed, args.walks, model)
+    if args.json:
+        print(json.dumps({name: [s.to_dict() for s in scores] for name, scores in results}))
+        return 0
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title=f"trajectory prediction, held-out walks (seed {args.seed})")
+    table.add_column("test set")
+    table.add_column("predictor")
+    table.add_column("samples", justify="right")
+    for h in HORIZONS:
+        table.add_column(f"ADE@{h:g}s", justify="right")
+        table.add_column(f"FDE@{h:g}s", justify="right")
+    for name, scores in results:
+        for s in scores:
+            cells = [f"{v:.3f}" for pair in zip(s.ade, s.fde, strict=True) for v in pair]
+            table.add_row(name, s.predictor, str(s.samples), *cells)
+    Console(file=sys.stdout).print(table)
+    return 0
+
+
+def evaluate_predictors(
+    seed: int, walks: int, model: Any, stride: int = 2
+) -> list[tuple[str, list[Any]]]:
+    """Scores of cv, goal and gru (the loaded ``model``) on each held-out test set."""
+    from hltl.perception.evaluate import score
+    from hltl.perception.predict import (
+        F64,
+        ConstantVelocityPredictor,
+        GoalDirectedPredictor,
+        GRUPredictor,
+    )
+    from hltl.perception.walks import generate_walks
+
+    def gru(stops: F64) -> GRUPredictor:
+        return GRUPredictor(stops, model=model)
+
+    out = []
+    for k, (name, mix) in enumerate(TEST_SETS):
+        ws = generate_walks(seed + k, walks, mix=mix)
+        data = [(w.observed, w.true, w.stops) for w in ws]
+        out.append(
+            (
+                name,
+                [
+                    score("cv", lambda s: ConstantVelocityPredictor(), data, stride),
+                    score("goal", GoalDirectedPredictor, data, stride),
+                    score("gru", gru, data, stride),
+                ],
+            )
+        )
+    return out
