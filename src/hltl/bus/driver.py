@@ -134,6 +134,7 @@ class BusCell:
         self._contiguous = 0
         self._down: dict[str, str] = {}
         self._logged: set[str] = set()
+        self._suspect: set[str] = set()
         self._dead = False
         self._next_handle = 1
         self._seq = 0
@@ -220,9 +221,32 @@ class BusCell:
         robot = robot_of(str(sample.key_expr))
         gone = str(sample.kind).endswith("DELETE")
         with self._cond:
+            # Only a suspicion: a token withdrawn by an earlier node of the same cell can arrive
+            # late, so the executor's thread asks whether any node still holds it (_confirm).
             if gone:
-                self._down.setdefault(robot, f"robot {robot}'s node left the bus")
+                self._suspect.add(robot)
+            else:
+                self._suspect.discard(robot)
             self._cond.notify_all()
+
+    def _confirm(self) -> None:
+        """Settle suspicions from liveliness: a robot whose token nobody holds is down."""
+        with self._cond:
+            suspects, self._suspect = sorted(self._suspect), set()
+        for r in suspects:
+            if r in self._down:
+                continue
+            try:
+                alive = any(
+                    reply.ok is not None
+                    for reply in self.session.liveliness().get(
+                        self.keys.alive(r), timeout=self.timing.timeout
+                    )
+                )
+            except Exception:  # the session closed under us
+                alive = False
+            if not alive:
+                self._robot_down(r, f"robot {r}'s node left the bus")
 
     # -- queries -----------------------------------------------------------------------------------
 
@@ -340,6 +364,7 @@ class BusCell:
         self.now = t
         if self._dead:
             return
+        self._confirm()
         d = self._ask(self.keys.sim_step, {"episode": self.episode, "step": self._step + 1, "t": t})
         if d is None:
             self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
@@ -382,6 +407,7 @@ class BusCell:
     # -- the robots (RobotDriver) ------------------------------------------------------------------
 
     def unavailable(self, t: float) -> frozenset[str]:
+        self._confirm()
         self._log_down()
         with self._cond:
             return self._unavailable | frozenset(self._down)
@@ -391,6 +417,7 @@ class BusCell:
         self._next_handle += 1
         handle = Handle(hid, action, t)
         self._actions[hid] = action
+        self._confirm()
         with self._cond:
             down = [r for r in action.robots if r in self._down]
         if down:
@@ -458,18 +485,23 @@ class BusCell:
             for r in handle.action.robots:
                 self._link.put(self.keys.action(r), payload)
             deadline = time.monotonic() + self.timing.timeout
-            with self._cond:
-                while True:
+            while True:
+                with self._cond:
                     rep = self._latest.get(handle.id)
                     if rep is not None and rep is not since and done(rep.status):
                         self.stats.round_trips.append(time.perf_counter() - t0)
                         return True
-                    if any(r in self._down for r in handle.action.robots):
-                        return False
+                    suspect = any(r in self._suspect for r in handle.action.robots)
                     left = deadline - time.monotonic()
-                    if left <= 0:
-                        break
-                    self._cond.wait(left)
+                    if not suspect and left > 0:
+                        self._cond.wait(left)
+                        continue
+                if suspect:
+                    self._confirm()  # outside the lock: it queries the bus
+                if any(r in self._down for r in handle.action.robots):
+                    return False
+                if left <= 0:
+                    break
         return False
 
     def _give_up_on(self, handle: Handle, t: float, what: str) -> None:

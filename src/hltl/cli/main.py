@@ -24,11 +24,8 @@ COMMAND_MODULES = (
     "viz",
     "bench",
     "render",
-<<<<<<< HEAD
-    "node",
-=======
     "perception",
->>>>>>> main
+    "node",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -97,7 +97,6 @@ def run(args: argparse.Namespace) -> int:
 
     predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
-<<<<<<< HEAD
     with contextlib.ExitStack() as stack:
         cell = simulated_cell if args.bus is None else _bus_cell(args, stack)
         episode = run_episode(
@@ -108,24 +107,11 @@ def run(args: argparse.Namespace) -> int:
             seed=args.seed,
             config=config,
             grounder=make_grounder(args.grounder),
+            predictor=predictor,
             log_path=args.log,
             on_record=None if timeline is None else timeline,
             cell=cell,
         )
-=======
-    episode = run_episode(
-        scene,
-        spec=spec,
-        instruction=args.instruction,
-        events=events,
-        seed=args.seed,
-        config=config,
-        grounder=make_grounder(args.grounder),
-        predictor=predictor,
-        log_path=args.log,
-        on_record=None if timeline is None else timeline,
-    )
->>>>>>> main
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:
