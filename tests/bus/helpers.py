@@ -63,7 +63,7 @@ class Loopback:
         with CellNode(self._node_session, scene, cell=cell, faults=node_faults) as node:
             ep = run_episode(
                 scene,
-                cell=bus_cell(
+                simulator=bus_cell(
                     self._exec_session, cell=cell, timing=timing, faults=exec_faults, opened=opened
                 ),
                 on_record=on_record,

@@ -136,7 +136,7 @@ def test_node_process_killed_mid_action(tmp_path: Path) -> None:
                 sc.scene,
                 on_record=kill_on_first_start,
                 config=EpisodeConfig(max_time=30.0),
-                cell=bus_cell(
+                simulator=bus_cell(
                     session,
                     timing=BusTiming(timeout=0.2, retries=2, connect=60.0),
                     opened=opened,

@@ -93,7 +93,7 @@ def test_node_refuses_another_scene(loopback: Loopback) -> None:
         run_episode(
             other,
             instruction="Give Person A the chips",
-            cell=bus_cell(loopback._exec_session, timing=BusTiming(timeout=0.5, connect=1.0)),
+            simulator=bus_cell(loopback._exec_session, timing=BusTiming(timeout=0.5, connect=1.0)),
         )
 
 
@@ -106,7 +106,7 @@ def test_no_node_is_an_error_not_a_hang(loopback: Loopback) -> None:
         run_episode(
             sc.scene,
             instruction=sc.instruction,
-            cell=bus_cell(
+            simulator=bus_cell(
                 loopback._exec_session, timing=BusTiming(timeout=0.05, retries=1, connect=0.2)
             ),
         )

@@ -528,11 +528,16 @@ def bus_cell(
     faults: FaultModel | None = None,
     opened: list[BusCell] | None = None,
 ) -> CellFactory:
-    """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(cell=…)`` that drives the node
+    """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given."""
 
     def make(
-        scene: Scene, events: EventSchedule, seed: int, perception: PerceptionModel, log: EventLog
+        scene: Scene,
+        events: EventSchedule,
+        *,
+        seed: int,
+        perception: PerceptionModel,
+        log: EventLog,
     ) -> Cell:
         c = BusCell(
             session, scene, events, seed, perception, log, cell=cell, timing=timing, faults=faults

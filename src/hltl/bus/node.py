@@ -33,9 +33,9 @@ from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionStatus, Handle
 from hltl.execution.log import EventLog, Record
-from hltl.sim.episode import Cell, CellFactory, simulated_cell
+from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
-from hltl.sim.simulator import PerceptionModel
+from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
 
@@ -82,7 +82,8 @@ class CellNode:
         session: an open Zenoh session (the node does not close it).
         scene: the cell; an executor asking for another scene is refused.
         cell: the cell's name in key expressions.
-        factory: builds the cell for each episode (default: the discrete-event simulator).
+        factory: builds the cell for each episode, called like ``Simulator(scene, events,
+            seed=, perception=, log=)`` (default: the discrete-event simulator).
         faults: faults injected into what the node publishes and answers.
         publish_poses: also publish people's and hands' poses (``PoseStamped``) every step.
     """
@@ -93,7 +94,7 @@ class CellNode:
         scene: Scene,
         *,
         cell: str = "default",
-        factory: CellFactory = simulated_cell,
+        factory: CellFactory = Simulator,
         faults: FaultModel | None = None,
         publish_poses: bool = True,
     ) -> None:
@@ -161,7 +162,7 @@ class CellNode:
                 )
             records: list[Record] = []
             log = EventLog(on_record=records.append)
-            cell = self.factory(scene, events, seed, perception, log)
+            cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = _Episode(episode, cell, records)
             self.stats.episodes += 1
             self.stats.starts = {}
@@ -372,7 +373,7 @@ def serve(
     cell: str = "default",
     episodes: int | None = None,
     stop: threading.Event | None = None,
-    factory: CellFactory = simulated_cell,
+    factory: CellFactory = Simulator,
     faults: FaultModel | None = None,
     on_ready: Callable[[CellNode], None] | None = None,
 ) -> NodeStats:

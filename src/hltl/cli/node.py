@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import sys
 import threading
 from pathlib import Path
@@ -32,7 +31,13 @@ def register(sub: Any) -> None:
         "--sim",
         choices=("discrete", "mujoco"),
         default="discrete",
-        help="which simulator serves the cell (mujoco needs the 3D simulator, hltl.sim3d)",
+        help="which simulator serves the cell (mujoco: the 3D simulator, the sim3d extra)",
+    )
+    s.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
     )
     s.add_argument("--cell", default="default", help="the cell's name in key expressions")
     s.add_argument(
@@ -59,7 +64,7 @@ def run_sim(args: argparse.Namespace) -> int:
     if args.episodes is not None and args.episodes < 1:
         raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
     scene = load_scene(args.scene)
-    factory = _factory(args.sim)
+    factory = _factory(args, scene)
     console = Console(stderr=True, highlight=False)
     config = BusConfig(listen=(args.listen,), connect=tuple(args.connect))
 
@@ -93,14 +98,13 @@ def run_sim(args: argparse.Namespace) -> int:
     return 0
 
 
-def _factory(kind: str) -> Any:
-    from hltl.sim.episode import simulated_cell
+def _factory(args: argparse.Namespace, scene: Any) -> Any:
+    """What makes each episode's world: the discrete-event simulator, or the 3D one."""
+    if args.sim == "discrete":
+        from hltl.sim.simulator import Simulator
 
-    if kind == "discrete":
-        return simulated_cell
-    if importlib.util.find_spec("hltl.sim3d") is None:
-        raise HltlError(
-            "--sim mujoco: the MuJoCo simulator (hltl.sim3d) is not part of this build yet; "
-            "use --sim discrete"
-        )
-    raise HltlError("--sim mujoco: hltl.sim3d offers no cell factory the bus can serve yet")
+        return Simulator
+    from hltl.cli.sim3d import simulator_options
+
+    extra, _ = simulator_options(scene, args.timing, None)  # compiles the model once, up front
+    return extra["simulator"]

@@ -51,6 +51,21 @@ def register(sub: Any) -> None:
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
     p.add_argument(
+        "--sim",
+        choices=("discrete", "mujoco"),
+        default="discrete",
+        help="discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log",
+    )
+    p.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
+    p.add_argument(
+        "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
+    )
+    p.add_argument(
         "--bus",
         metavar="zenoh[:ENDPOINT]",
         help="drive a simulator node over the Zenoh bus (started with 'hltl node sim') instead "
@@ -69,7 +84,7 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from hltl.execution.executor import ExecutorConfig
     from hltl.grounding import make_grounder
-    from hltl.sim.episode import EpisodeConfig, run_episode, simulated_cell
+    from hltl.sim.episode import EpisodeConfig, run_episode
     from hltl.sim.events import load_events
     from hltl.sim.simulator import PerceptionModel
     from hltl.world.scene import load_scene
@@ -97,8 +112,22 @@ def run(args: argparse.Namespace) -> int:
 
     predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
+    if args.sim != "mujoco" and args.frames is not None:
+        raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
+    if args.bus is not None and args.sim != "discrete":
+        raise HltlError(
+            "--sim chooses the in-process simulator; with --bus the node chooses it "
+            "('hltl node sim --sim mujoco')"
+        )
+    extra: dict[str, Any] = {}
+    recorder = None
+    if args.sim == "mujoco":
+        from hltl.cli.sim3d import simulator_options
+
+        extra, recorder = simulator_options(scene, args.timing, args.frames)
     with contextlib.ExitStack() as stack:
-        cell = simulated_cell if args.bus is None else _bus_cell(args, stack)
+        if args.bus is not None:
+            extra["simulator"] = _bus_cell(args, stack)
         episode = run_episode(
             scene,
             spec=spec,
@@ -110,8 +139,12 @@ def run(args: argparse.Namespace) -> int:
             predictor=predictor,
             log_path=args.log,
             on_record=None if timeline is None else timeline,
-            cell=cell,
+            **extra,
         )
+    if recorder is not None:
+        recorder.close()
+        if not args.json:
+            print(f"frames: {recorder.frames} in {args.frames}", file=sys.stderr)
     if args.json:
         print(json.dumps(episode.metrics.to_dict()))
     else:
@@ -225,6 +258,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return "cyan", repr(rec["text"])
     if kind in ("wait", "give_up"):
         return "yellow" if kind == "wait" else "bold red", rec["reason"]
+    if kind == "contact":
+        return "bold red", f"{rec['robot']} touches {rec['human']} ({rec['part']})"
     if kind == "violation":
         return "bold red", f"{act(rec['action'])}: {rec['reason']}"
     if kind == "episode_end":

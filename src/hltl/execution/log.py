@@ -45,6 +45,7 @@ RECORD_TYPES = frozenset(
         "robot_up",
         "instruction",
         "violation",
+        "contact",
     }
 )
 

@@ -71,8 +71,8 @@ class EpisodeConfig:
 class Cell(RobotDriver, Protocol):
     """The world the loop drives: the robots' driver plus the simulated clock and perception.
 
-    :class:`~hltl.sim.simulator.Simulator` is one; ``hltl.bus`` serves one over Zenoh and
-    drives it from another process.
+    :class:`~hltl.sim.simulator.Simulator` (and the 3D one) is one; ``hltl.bus`` serves one
+    over Zenoh and drives it from another process (:class:`hltl.bus.driver.BusCell`).
     """
 
     def advance(self, t: float) -> None: ...
@@ -86,15 +86,8 @@ class Cell(RobotDriver, Protocol):
     def take_instructions(self) -> list[str]: ...
 
 
-# Builds the episode's cell from the scene, the events, the seed, the perception model and the log.
-CellFactory = Callable[[Scene, EventSchedule, int, PerceptionModel, EventLog], Cell]
-
-
-def simulated_cell(
-    scene: Scene, events: EventSchedule, seed: int, perception: PerceptionModel, log: EventLog
-) -> Cell:
-    """The default cell: the in-process discrete-event simulator."""
-    return Simulator(scene, events, seed=seed, perception=perception, log=log)
+# Makes an episode's world, called as ``factory(scene, events, seed=, perception=, log=)``.
+CellFactory = Callable[..., Cell]
 
 
 class EpisodeHook(Protocol):
@@ -130,7 +123,7 @@ def run_episode(
     log_path: str | Path | None = None,
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
-    cell: CellFactory = simulated_cell,
+    simulator: CellFactory = Simulator,
 ) -> Episode:
     """Run one closed-loop episode in the simulator.
 
@@ -147,8 +140,10 @@ def run_episode(
         log_path: also write the JSON Lines log there.
         on_record: called with each log record as it is written.
         hooks: called every tick.
-        cell: builds the world the loop drives (default: the in-process simulator; the bus
-            passes one that drives a simulator node over Zenoh).
+        simulator: makes the world, called as ``simulator(scene, events, seed=, perception=,
+            log=)``: the discrete-event :class:`Simulator` or one with the same interface
+            (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`, or
+            :func:`hltl.bus.driver.bus_cell`'s, which drives a simulator node over Zenoh).
 
     Raises:
         ValueError: neither or both of ``spec`` and ``instruction`` given.
@@ -158,7 +153,7 @@ def run_episode(
     cfg = EpisodeConfig() if config is None else config
     schedule = EventSchedule() if events is None else events
     with EventLog(log_path, on_record) as log:
-        sim = cell(scene, schedule, seed, cfg.perception, log)
+        sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
         executor = Executor(
             scene,
             spec,

@@ -76,6 +76,25 @@ _SHIRTS = (
 )
 _TROUSERS = ((0.15, 0.18, 0.28, 1.0), (0.25, 0.25, 0.25, 1.0))
 
+# UR5 joint origins (example-robot-data's ur5_robot.urdf) on robosuite's UR5e body tree.
+_UR5_CHAIN = (
+    ("shoulder_link", (0.0, 0.0, 0.089159)),
+    ("upper_arm_link", (0.0, 0.13585, 0.0)),
+    ("forearm_link", (0.0, -0.1197, 0.425)),
+    ("wrist_1_link", (0.0, 0.0, 0.39225)),
+    ("wrist_2_link", (0.0, 0.093, 0.0)),
+    ("wrist_3_link", (0.0, 0.0, 0.09465)),
+    ("right_hand", (0.0, 0.0823, 0.0)),
+)
+
+
+def _hand_length(kind: str) -> float:
+    """Flange to grasp point, as the motion layer's registry says (its extra is not needed)."""
+    from hltl.motion.robots import arm_spec
+
+    return arm_spec(kind).hand_length if kind in ("ur5", "elfin3") else 0.1034
+
+
 # Per robot model: joint speed limit (rad/s) and a comfortable seed posture for IK.
 _ROBOT_KINEMATICS: dict[str, tuple[float, tuple[float, ...]]] = {
     "ur5": (math.pi, (0.0, -1.9, 1.9, -1.57, -1.57, 0.0)),
@@ -562,11 +581,27 @@ class _Builder:
             for sn in list(sp.sensors):
                 sp.delete(sn)
         hand = arm.body("right_hand")
-        hand.add_frame().attach_body(gripper.body("right_gripper"), "g/", "")
+        if kind == "ur5":
+            # the motion layer plans for the UR5 (example-robot-data's URDF): same joint frames
+            # as robosuite's UR5e, other lengths; the UR5e meshes are drawn on the UR5's chain
+            for body, pos in _UR5_CHAIN:
+                arm.body(body).pos = list(pos)
+        tcp = _hand_length(kind)
+        # the Panda gripper's fingertips end ~0.11 m from its mount: a coupling fills the rest
+        mount = max(0.0, tcp - 0.11)
+        if mount > 0:
+            cg = hand.add_geom(
+                type=mj.mjtGeom.mjGEOM_CYLINDER,
+                size=[0.032, mount / 2, 0],
+                pos=[0, 0, mount / 2],
+                rgba=[0.2, 0.2, 0.22, 1.0],
+            )
+            cg.group = 2
+        hand.add_frame(pos=[0, 0, mount]).attach_body(gripper.body("right_gripper"), "g/", "")
+        hand.add_site(name="tcp", pos=[0, 0, tcp], size=[0.005, 0, 0], group=5)
         base = arm.body("base")
         root.add_frame().attach_body(base, f"robot:{robot.id}/", "")
-        eef = self.spec.body(f"robot:{robot.id}/g/eef")
-        eef.add_site(name=f"robot:{robot.id}/hand", pos=[0, 0, 0], size=[0.005, 0, 0], group=5)
+        self.spec.site(f"robot:{robot.id}/tcp").name = f"robot:{robot.id}/hand"
         # tidy what robosuite's files bring: cameras, sites drawn as long lines
         for cam in list(self.spec.cameras):
             if cam.name.startswith(f"robot:{robot.id}/"):
@@ -639,37 +674,38 @@ class _Builder:
         )
 
     def _elfin3(self, root: Any, robot: Robot) -> None:
-        """hltl's Elfin-3 from the published kinematics (/work/shared/robots/elfin3.md): six
-        revolute joints about local z, capsule links, a two-finger hand on the flange."""
+        """hltl's Elfin-3: the motion layer's URDF itself (one kinematic model), its collision
+        cylinders coloured, the tool frame ``tool0`` as the hand site, fingers on the hand."""
+        from hltl.motion.robots import ELFIN3_URDF
+
+        mj = self.mj
+        arm = mj.MjSpec.from_file(str(ELFIN3_URDF))
         white = [0.92, 0.92, 0.90, 1.0]
         blue = [0.15, 0.35, 0.65, 1.0]
-        p = f"robot:{robot.id}/"
-        self._link(root, [0, 0, 0], [0, 0, 0.12], 0.065, white)
-        chain = (
-            ("joint1", (0, 0, 0.1925), (0, 0, 0), (-3.14, 3.14)),
-            ("joint2", (0, 0, 0), (1.5708, 0, 0), (-2.35, 2.35)),
-            ("joint3", (0, 0.266, 0), (3.1416, 0, 1.5708), (-2.61, 2.61)),
-            ("joint4", (0, 0, 0), (1.5708, 0, 1.5708), (-3.14, 3.14)),
-            ("joint5", (0, 0, 0.324), (-1.5708, 0, 0), (-2.56, 2.56)),
-            ("joint6", (0, 0, 0), (1.5708, 0, 0), (-3.14, 3.14)),
-        )
-        # capsules drawn in each link's frame towards the next joint's origin
-        shapes: dict[str, tuple[list[float], list[float], float, list[float]]] = {
-            "link1": ([0, 0, -0.08], [0, 0, 0.0], 0.06, blue),
-            "link2": ([0, 0, 0], [0, 0.266, 0], 0.05, white),
-            "link3": ([0, 0, -0.05], [0, 0, 0.05], 0.05, blue),
-            "link4": ([0, 0, 0], [0, 0, 0.324], 0.045, white),
-            "link5": ([0, 0, -0.04], [0, 0, 0.04], 0.042, blue),
-            "link6": ([0, 0, 0], [0, 0, 0.1565], 0.038, white),
-        }
-        body = root
-        for i, (jname, xyz, rpy, rng) in enumerate(chain, start=1):
-            body = body.add_body(name=f"{p}link{i}", pos=list(xyz), quat=_rpy_quat(*rpy))
-            self.hinge(body, f"{p}{jname}", [0, 0, 1], list(rng), 1.0)
-            a, b, r, rgba = shapes[f"link{i}"]
-            self._link(body, a, b, r, rgba)
-        flange = body.add_body(name=f"{p}tool0", pos=[0, 0, 0.1565])
-        self._simple_gripper(flange, robot.id, 0.1)
+        for i, b in enumerate(self._bodies_under(arm.worldbody)):
+            for g in b.geoms:
+                g.rgba = blue if i % 2 else white
+                g.group = 2
+                g.contype, g.conaffinity = 1, 0
+        link6 = arm.body("link6")
+        tool = _urdf_fixed_offset(ELFIN3_URDF, "link6", "tool0")
+        for side in (-1, 1):
+            finger = link6.add_geom(
+                type=mj.mjtGeom.mjGEOM_BOX,
+                size=[0.012, 0.006, 0.03],
+                pos=[0, side * 0.03, tool - 0.02],
+                rgba=[0.15, 0.15, 0.17, 1.0],
+            )
+            finger.group = 2
+            finger.contype, finger.conaffinity = 1, 0
+        link6.add_site(name="tool0", pos=[0, 0, tool], size=[0.005, 0, 0], group=5)
+        frame = root.add_frame()
+        for child in list(arm.worldbody.bodies):
+            frame.attach_body(child, f"robot:{robot.id}/", "")
+        self.spec.site(f"robot:{robot.id}/tool0").name = f"robot:{robot.id}/hand"
+        for g in arm.worldbody.geoms:  # the base link's own geoms (fused into the world)
+            ng = root.add_geom(type=g.type, size=list(g.size), pos=list(g.pos), quat=list(g.quat))
+            ng.rgba, ng.group, ng.contype, ng.conaffinity = white, 2, 1, 0
 
     def _primitive(self, root: Any, robot: Robot) -> None:
         """A four-joint arm (yaw, three pitches) sized so that its hand reaches ``reach``."""
@@ -739,6 +775,28 @@ class _Builder:
             self.hinge(shin, f"{p}{side}_knee", [0, 1, 0], [0.0, 2.4], 3.0)
             g(shin, type=cap, fromto=[0, 0, 0, 0, 0, -0.38], size=[0.055, 0, 0], rgba=trousers)
             g(shin, type=box, size=[0.12, 0.05, 0.035], pos=[0.05, 0, -0.435], rgba=shoe)
+
+
+def _urdf_fixed_offset(urdf: Path, parent: str, child: str) -> float:
+    """Distance along z from ``parent`` to ``child`` through fixed joints with no rotation."""
+    import xml.etree.ElementTree as ET
+
+    joints: dict[str, tuple[str, Any]] = {}
+    for j in ET.parse(urdf).getroot().iter("joint"):
+        pj, cj, org = j.find("parent"), j.find("child"), j.find("origin")
+        if pj is not None and cj is not None:
+            joints[cj.get("link", "")] = (pj.get("link", ""), org)
+    z, link = 0.0, child
+    while link != parent:
+        if link not in joints:
+            raise SceneError(f"{urdf}: no fixed chain from {parent!r} to {child!r}")
+        link, org = joints[link]
+        xyz = [float(v) for v in (org.get("xyz", "0 0 0") if org is not None else "0 0 0").split()]
+        rpy = [float(v) for v in (org.get("rpy", "0 0 0") if org is not None else "0 0 0").split()]
+        if any(abs(v) > 1e-9 for v in xyz[:2] + rpy):
+            raise SceneError(f"{urdf}: the hand chain {parent!r}→{child!r} is not straight along z")
+        z += xyz[2]
+    return z
 
 
 # -- compiling, caching --------------------------------------------------------------------------

@@ -24,6 +24,7 @@ class Contact:
     human: str
     position: Vec3
     depth: float  # penetration in metres (MuJoCo's contact distance, negated)
+    part: str = ""  # the person's body part touched (``r_forearm``, ``torso`` …)
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,7 +104,7 @@ class Stage:
             "r_elbow": 0.15 + 0.1 * lift,
         }
         if hold:
-            angles["r_shoulder"], angles["r_elbow"] = 0.15, 1.35
+            angles["r_shoulder"], angles["r_elbow"] = 0.0, 1.0
         a = min(max(reach, 0.0), 1.0)
         if a > 0.0:
             angles["r_shoulder"] = (1 - a) * angles["r_shoulder"] + a * 0.45
@@ -136,12 +137,24 @@ class Stage:
             a, b = segs.get(int(seg[c.geom1])), segs.get(int(seg[c.geom2]))
             if a is None or b is None:
                 continue
+            hg = int(c.geom2)
             if a.kind == "human" and b.kind == "robot":
                 a, b = b, a
+                hg = int(c.geom1)
             if a.kind == "robot" and b.kind == "human":
                 p = c.pos
+                body = self.mj.mj_id2name(
+                    self.model, self.mj.mjtObj.mjOBJ_BODY, int(self.model.geom_bodyid[hg])
+                )
+                part = (body or "").partition("/")[2] or "torso"
                 out.append(
-                    Contact(a.id, b.id, (float(p[0]), float(p[1]), float(p[2])), float(-c.dist))
+                    Contact(
+                        a.id,
+                        b.id,
+                        (float(p[0]), float(p[1]), float(p[2])),
+                        float(-c.dist),
+                        part,
+                    )
                 )
         return out
 

@@ -1,0 +1,31 @@
+"""What ``hltl run --sim mujoco`` adds to an episode: the 3D simulator and its camera frames."""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from hltl.sim3d.record import FrameRecorder
+    from hltl.world.scene import Scene
+
+
+def simulator_options(
+    scene: Scene, timing: str, frames: Path | None
+) -> tuple[dict[str, Any], FrameRecorder | None]:
+    """``run_episode`` keywords for the 3D simulator (model compiled or loaded from the cache
+    before the episode starts) and the frame recorder, if frames are wanted."""
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+    from hltl.sim3d.record import FrameRecorder
+
+    model = compile_scene(scene)
+    extra: dict[str, Any] = {
+        "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
+    }
+    recorder = None
+    if frames is not None:
+        recorder = FrameRecorder(frames)
+        extra["hooks"] = (recorder,)
+    return extra, recorder

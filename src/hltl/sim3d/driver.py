@@ -1,0 +1,356 @@
+"""The 3D simulator: the discrete-event simulator's world, embodied in MuJoCo.
+
+:class:`MujocoSimulator` is the discrete-event :class:`~hltl.sim.simulator.Simulator` (same
+events, same seeded failures, same physical checks, same log) whose robots move their arms:
+each started action gets a :class:`~hltl.motion.trajectory.MotionPlan` (given by the caller, or
+made here from IK of the transition's hand targets) and lasts as long as its motion. Arms are
+played back kinematically: joint positions are set from the trajectories each step (no torque
+control), because the executor's contract is the trajectory itself — position control would add
+tracking error and tuning that say nothing about the plan, and kinematic playback is exact,
+deterministic and far faster than real time. Grasped objects ride on the hand (kinematic
+carry), transfer to the receiver's hand at a handover and rest where the log says otherwise;
+people walk the event paths with swinging legs and raise a forearm while an object comes to
+them. Robot–person contacts are found by MuJoCo's collision detection every ``contact_dt``
+seconds and logged as ``contact`` records.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from hltl.execution.drivers import Handle
+from hltl.execution.log import EventLog, vec
+from hltl.motion.trajectory import JointTrajectory, MotionPlan
+from hltl.sim.events import EventSchedule
+from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.sim3d.model import SceneModel, compile_scene
+from hltl.sim3d.stage import DOWN, Contact, Stage
+from hltl.skills.cost import CostModel
+from hltl.skills.library import Action
+from hltl.world.scene import Scene, Vec3
+
+if TYPE_CHECKING:
+    from hltl.motion.kinematics import Arm
+
+TIMINGS = ("motion", "cost")
+# seconds the hand dwells at the target to close or open the fingers (the analytic cost model's)
+_DWELL = {"pick": 0.3, "place": 0.3, "handover_r2h": 0.3, "handover_r2r": 0.4}
+_EVENT = {
+    "pick": "grasp",
+    "place": "release",
+    "handover_r2h": "release",
+    "handover_r2r": "transfer",
+}
+_SAMPLE_DT = 0.05  # trajectory rows every 50 ms
+_APPROACH = 0.08  # pick and place come down onto the target from this far above
+_MEET_GAP = 0.05  # at a robot-to-robot handover each hand stops this short of the meeting point
+
+
+@dataclass(frozen=True, slots=True)
+class MotionInfo:
+    """What the driver made for one action (for the log and tests)."""
+
+    plan: MotionPlan
+    ik_error: float  # the worst distance between a waypoint and where IK put the hand
+
+
+class MujocoSimulator(Simulator):
+    """The discrete-event simulator with arms, people and objects posed in a MuJoCo model.
+
+    Args:
+        timing: ``motion`` (an action lasts as long as its motion plan) or ``cost`` (the motion
+            is stretched to the scene's cost-model duration, so timing equals the discrete
+            simulator's exactly).
+        model: a compiled scene (default: compiled, or loaded from the model cache).
+        contact_dt: period of the robot–person contact checks, in simulated seconds.
+        use_motion_layer: plan IK with hltl.motion for arms it has a model of (needs the
+            ``motion`` extra); False uses MuJoCo's own IK for every arm.
+    """
+
+    def __init__(
+        self,
+        scene: Scene,
+        events: EventSchedule | None = None,
+        *,
+        seed: int = 0,
+        perception: PerceptionModel | None = None,
+        log: EventLog | None = None,
+        cost: CostModel | None = None,
+        timing: str = "motion",
+        model: SceneModel | None = None,
+        contact_dt: float = 0.02,
+        use_motion_layer: bool = True,
+    ) -> None:
+        if timing not in TIMINGS:
+            raise ValueError(f"timing must be one of {', '.join(TIMINGS)}, got {timing!r}")
+        if not contact_dt > 0:
+            raise ValueError(f"contact_dt must be positive, got {contact_dt!r}")
+        super().__init__(scene, events, seed=seed, perception=perception, log=log, cost=cost)
+        self.timing = timing
+        self.contact_dt = contact_dt
+        self.stage = Stage(model if model is not None else compile_scene(scene))
+        self._q: dict[str, tuple[float, ...]] = dict(self.stage.home)
+        self._plans: dict[int, MotionInfo] = {}
+        self._touching: set[tuple[str, str]] = set()
+        self._arms = _motion_arms(scene) if use_motion_layer else {}
+        self.contacts: list[tuple[float, str, str]] = []
+        self.synced_at = -1.0
+        self._sync()
+
+    # -- the driver --------------------------------------------------------------------------
+
+    def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
+        self._sync()
+        handle = super().start(action, t)
+        act = self._actions[handle.id]
+        if act.status is not None:  # refused at once (robot busy or down)
+            return handle
+        info = MotionInfo(motion, 0.0) if motion is not None else self._plan(action, act.targets)
+        plan = info.plan
+        if self.timing == "cost" or plan.duration <= 0:
+            plan = _stretch(plan, act.duration)
+        else:
+            act.duration = plan.duration
+            act.end = self.now + plan.duration
+        self._plans[handle.id] = MotionInfo(plan, info.ik_error)
+        return handle
+
+    def halt(self, handle: Handle, t: float, reason: str) -> None:
+        self._sync()
+        super().halt(handle, t, reason)
+
+    def motion_of(self, handle: Handle) -> MotionInfo | None:
+        return self._plans.get(handle.id)
+
+    # -- time ----------------------------------------------------------------------------------
+
+    def advance(self, t: float) -> None:
+        # in short steps, so that contacts are looked for while arms and people move
+        while self.now < t - 1e-9:
+            super().advance(min(t, self.now + self.contact_dt))
+            self._sync()
+        super().advance(t)
+        self._sync()
+
+    def hand_position(self, rid: str, t: float | None = None) -> Vec3:
+        """The hand as the arm's encoders give it: forward kinematics of the current pose."""
+        if (t is not None and abs(t - self.now) > 1e-9) or self.synced_at != self.now:
+            return super().hand_position(rid, t)
+        return self.stage.hand(rid)
+
+    # -- posing --------------------------------------------------------------------------------
+
+    def _running_plan(self, rid: str) -> tuple[MotionInfo, float] | None:
+        hid = self._busy.get(rid)
+        if hid is None:
+            return None
+        act = self._actions[hid]
+        info = self._plans.get(hid)
+        if act.status is not None or info is None:
+            return None
+        return info, self.now - act.handle.start
+
+    def _sync(self) -> None:
+        """Pose the MuJoCo model as the world is at ``now`` and log new contacts."""
+        st = self.stage
+        now = self.now
+        for rid in st.sm.robots:
+            run = self._running_plan(rid)
+            if run is not None:
+                tr = run[0].plan.trajectory(rid)
+                if tr is not None:
+                    self._q[rid] = tr.sample(run[1])
+            st.set_robot(rid, self._q[rid])
+        receiving = {}
+        for act in self._actions.values():
+            if act.status is None and act.handle.action.skill == "handover_r2h":
+                h = act.handle.action.human
+                if h is not None:
+                    receiving[h] = min(1.0, (now - act.handle.start) / max(act.duration, 1e-9))
+        holding = {
+            st_.loc.ref
+            for o in self._objects
+            if (st_ := self.object_status(o)).loc.kind == "delivered"
+        }
+        for hid in self._walkers:
+            p = self.human_position(hid)
+            yaw, stride = self._walk_pose(hid, p)
+            st.set_human(
+                hid,
+                p,
+                yaw,
+                reach=min(1.0, 1.5 * receiving.get(hid, 0.0)),
+                hold=hid in holding,
+                stride=stride,
+            )
+        st.forward()  # arms and people first: objects follow hands
+        for oid in self._objects:
+            s = self.object_status(oid)
+            kind, who = s.loc.kind, s.loc.ref
+            if kind == "held" and who in st.sm.robots:
+                st.set_object(oid, st.hand(who))
+            elif kind == "delivered" and who in st.sm.humans:
+                st.set_object(oid, st.human_hand(who))
+            else:
+                st.set_object(oid, s.position)
+        st.forward()
+        self.synced_at = now
+        self._note_contacts()
+
+    def _walk_pose(self, hid: str, p: Vec3) -> tuple[float, float | None]:
+        """Yaw and distance walked so far (None when standing) of a person at ``now``."""
+        w = self._walkers[hid]
+        now = self.now
+        moving = None
+        walked = 0.0
+        for seg in w.segments:
+            if seg.t0 > now + 1e-9:
+                break
+            walked += math.dist(seg.p0[:2], seg.at(now)[:2])
+            if seg.t0 <= now < seg.t1 and math.dist(seg.p0[:2], seg.p1[:2]) > 1e-6:
+                moving = seg
+        if moving is None:
+            return self.stage.facing(p), None
+        return math.atan2(moving.p1[1] - moving.p0[1], moving.p1[0] - moving.p0[0]), walked
+
+    def _note_contacts(self) -> None:
+        # the hand a person holds out to take an object from a robot is meant to meet it
+        taking = {
+            (a.handle.action.robots[0], a.handle.action.human)
+            for a in self._actions.values()
+            if a.status is None and a.handle.action.skill == "handover_r2h"
+        }
+        pairs: dict[tuple[str, str], Contact] = {}
+        for c in self.stage.contacts():
+            key = (c.robot, c.human)
+            if key in taking and c.part == "r_forearm":
+                continue
+            if key not in pairs or c.depth > pairs[key].depth:
+                pairs[key] = c
+        for key in sorted(pairs.keys() - self._touching):
+            c = pairs[key]
+            self.contacts.append((self.now, c.robot, c.human))
+            self.log.emit(
+                self.now,
+                "contact",
+                robot=c.robot,
+                human=c.human,
+                position=vec(c.position),
+                depth=round(c.depth, 4),
+                part=c.part,
+            )
+        self._touching = set(pairs)
+
+    # -- motion plans --------------------------------------------------------------------------
+
+    def _plan(self, action: Action, targets: dict[str, Vec3]) -> MotionInfo:
+        """Waypoints by IK from the current joints to each robot's transition target, timed by
+        the joints' speed limits, with a dwell to grasp or release."""
+        trajectories = []
+        worst = 0.0
+        arrive = 0.0
+        robots = [r for r in action.robots if r in targets]
+        for k, rid in enumerate(robots):
+            target = np.asarray(targets[rid], float)
+            approach: Sequence[float] = DOWN
+            if action.skill == "handover_r2r" and len(robots) == 2:
+                other = self.scene.robot(robots[1 - k]).base
+                here = self.scene.robot(rid).base
+                d = np.array([other[0] - here[0], other[1] - here[1], 0.0])
+                d /= max(float(np.linalg.norm(d)), 1e-9)
+                approach = tuple(d)
+                target = target - _MEET_GAP * d
+            elif action.skill == "handover_r2h" and action.human is not None:
+                hp = self.human_position(action.human)
+                base = self.scene.robot(rid).base
+                d = np.array([hp[0] - base[0], hp[1] - base[1], 0.0])
+                if float(np.linalg.norm(d)) > 1e-6:
+                    approach = tuple(d / np.linalg.norm(d))
+            points = [target]
+            if action.skill in ("pick", "place"):
+                points = [target + np.array([0.0, 0.0, _APPROACH]), target]
+            qs = [self._q[rid]]
+            for p in points:
+                q, err = self._ik(rid, p, qs[-1], approach)
+                worst = max(worst, err)
+                qs.append(q)
+            tr = self._time(rid, qs)
+            arrive = max(arrive, tr.duration)
+            trajectories.append(tr)
+        dwell = _DWELL.get(action.skill, 0.3)
+        duration = arrive + dwell
+        events = tuple((arrive, _EVENT.get(action.skill, "grasp"), r) for r in robots[:1])
+        return MotionInfo(MotionPlan(tuple(trajectories), events, duration), worst)
+
+    def _ik(
+        self, rid: str, target: np.ndarray, q0: tuple[float, ...], approach: Sequence[float]
+    ) -> tuple[tuple[float, ...], float]:
+        arm = self._arms.get(rid)
+        if arm is not None:
+            from hltl.motion.kinematics import rotation_z_to
+
+            res = arm.ik(tuple(target), rotation_z_to(approach), q0, starts=4)
+            if not res.ok:
+                res = arm.ik(tuple(target), None, q0, starts=4)
+            if res.q is not None:
+                return res.q, res.position_error
+        r = self.stage.solve(rid, tuple(target), q0, approach)
+        return r.q, r.error
+
+    def _time(self, rid: str, qs: list[tuple[float, ...]]) -> JointTrajectory:
+        """Segments between waypoints, each a smoothstep at the joints' speed limits."""
+        rig = self.stage.sm.robots[rid]
+        arm = self._arms.get(rid)
+        vmax = np.asarray(arm.max_velocity) if arm is not None else np.full(len(qs[0]), rig.vmax)
+        times = [0.0]
+        rows = [qs[0]]
+        for a, b in itertools.pairwise(qs):
+            qa, qb = np.asarray(a), np.asarray(b)
+            # a smoothstep's peak speed is 1.5 times its mean
+            seg = max(0.2, 1.5 * float(np.max(np.abs(qb - qa) / vmax)))
+            n = max(2, math.ceil(seg / _SAMPLE_DT))
+            t0 = times[-1]
+            for i in range(1, n + 1):
+                s = i / n
+                blend = s * s * (3 - 2 * s)
+                times.append(t0 + seg * s)
+                rows.append(tuple(float(v) for v in qa + blend * (qb - qa)))
+        return JointTrajectory(rid, rig.joint_names, tuple(times), tuple(rows))
+
+
+def _stretch(plan: MotionPlan, duration: float) -> MotionPlan:
+    """The same motion played over ``duration`` seconds."""
+    if plan.duration <= 0 or duration <= 0:
+        return MotionPlan(plan.trajectories, (), max(duration, 0.0)) if duration > 0 else plan
+    k = duration / plan.duration
+    trs = tuple(
+        JointTrajectory(
+            tr.robot, tr.joint_names, tuple(t * k for t in tr.times), tr.positions, None
+        )
+        for tr in plan.trajectories
+    )
+    events = tuple((t * k, kind, r) for t, kind, r in plan.events)
+    return MotionPlan(trs, events, duration)
+
+
+def _motion_arms(scene: Scene) -> dict[str, Arm]:
+    """hltl.motion arms for the scene's robots it has models of (none without the extra)."""
+    try:
+        from hltl.motion.kinematics import Arm
+        from hltl.motion.robots import has_model
+    except ImportError:
+        return {}
+    out: dict[str, Arm] = {}
+    for r in scene.robots:
+        if has_model(r.model) and r.model in ("elfin3", "ur5"):
+            try:
+                out[r.id] = Arm(r.id, r.model, r.base)
+            except ImportError:
+                return {}
+    return out
