@@ -57,10 +57,12 @@ class Loopback:
         timing: BusTiming | None = None,
         on_record: Callable[[dict[str, Any]], None] | None = None,
         cell: str = "default",
+        factory: Any = None,
         **episode: Any,
     ) -> BusRun:
         opened: list[BusCell] = []
-        with CellNode(self._node_session, scene, cell=cell, faults=node_faults) as node:
+        served = {} if factory is None else {"factory": factory}
+        with CellNode(self._node_session, scene, cell=cell, faults=node_faults, **served) as node:
             ep = run_episode(
                 scene,
                 simulator=bus_cell(

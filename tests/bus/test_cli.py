@@ -18,9 +18,12 @@ def _run(argv: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str]
     return code, capsys.readouterr().err
 
 
-def test_mujoco_node_not_in_this_build(capsys: pytest.CaptureFixture[str]) -> None:
-    code, err = _run(["node", "sim", "--scene", FIG1, "--sim", "mujoco"], capsys)
-    assert code == 1 and err.startswith("error: --sim mujoco") and err.count("\n") == 1
+def test_run_over_the_bus_leaves_the_simulator_to_the_node(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle"]
+    code, err = _run([*argv, "--bus", "zenoh", "--sim", "mujoco"], capsys)
+    assert code == 1 and "with --bus the node chooses it" in err and err.count("\n") == 1
 
 
 @pytest.mark.parametrize(

@@ -163,14 +163,14 @@ def test_a_robot_that_never_acknowledges_is_down_not_a_hang(loopback: Loopback) 
     run = loopback.run(
         sc.scene,
         exec_faults=FaultModel(loss=0.999999, seed=0),
-        timing=BusTiming(timeout=0.05, retries=1),
+        timing=BusTiming(timeout=0.05, retries=1, patience=0.3),
         config=EpisodeConfig(max_time=20.0),
         **_fig1(),
     )
     assert time.monotonic() - t0 < 60
     assert not run.episode.success
     failed = [r for r in run.episode.records if r["type"] == "action_failed"]
-    assert failed and "did not acknowledge" in failed[0]["reason"]
+    assert failed and "is down: robot r1 did not acknowledge" in failed[0]["reason"]
     assert run.node.stats.starts == {}  # nothing ever reached the node: nothing ran
 
 

@@ -158,3 +158,21 @@ def test_cli_node_in_a_subprocess_gives_the_in_process_metrics(tmp_path: Path) -
     )
     assert node.returncode == 0
     assert "served 1 episode" in node_err
+
+
+def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
+    """The 3D simulator behind the node: the same log as the 3D simulator in-process."""
+    pytest.importorskip("mujoco")
+    import functools
+
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+
+    sc = scenarios.get("fig1")
+    make = functools.partial(MujocoSimulator, timing="motion", model=compile_scene(sc.scene))
+    local = run_episode(sc.scene, instruction=sc.instruction, seed=0, simulator=make)
+    remote = loopback.run(sc.scene, factory=make, instruction=sc.instruction, seed=0)
+    assert local.success
+    assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
+        list(local.records)
+    )

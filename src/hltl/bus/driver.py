@@ -16,7 +16,7 @@ import math
 import threading
 import time
 import uuid
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -58,17 +58,23 @@ class BusTiming:
         timeout: seconds to wait for one answer (a query reply, an acknowledgement, a report).
         retries: retransmissions before a robot (or the simulator) is declared down.
         connect: seconds to wait for a simulator node to appear when an episode starts.
+        patience: after the retries, how long to keep retransmitting while the node still
+            holds its liveliness tokens (a busy node is slow, not dead; a dead one loses its
+            tokens and is given up at once).
     """
 
     timeout: float = 1.0
     retries: int = 3
     connect: float = 5.0
+    patience: float = 30.0
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.timeout) and self.timeout > 0):
             raise ValueError(
                 f"bus timeout must be a positive number of seconds, got {self.timeout!r}"
             )
+        if not (math.isfinite(self.patience) and self.patience >= 0):
+            raise ValueError(f"bus patience must be >= 0 seconds, got {self.patience!r}")
         if not (math.isfinite(self.connect) and self.connect >= 0):
             raise ValueError(f"bus connect wait must be >= 0 seconds, got {self.connect!r}")
         if self.retries < 0:
@@ -160,7 +166,7 @@ class BusCell:
             "perception": {"noise": perception.noise, "latency": perception.latency},
         }
         deadline = time.monotonic() + self.timing.connect
-        d = self._ask(self.keys.sim_reset, reset)
+        d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
         while d is None and time.monotonic() < deadline:  # the node may still be starting
             time.sleep(0.05)
             d = self._ask(self.keys.sim_reset, reset, retries=0)
@@ -250,8 +256,33 @@ class BusCell:
 
     # -- queries -----------------------------------------------------------------------------------
 
+    def _holds_tokens(self, robots: Sequence[str]) -> bool:
+        """Whether every robot's liveliness token is held by some node right now."""
+        try:
+            liveliness = self.session.liveliness()
+            replies = liveliness.get(self.keys.all_alive, timeout=self.timing.timeout)
+            held = {robot_of(str(r.ok.key_expr)) for r in replies if r.ok is not None}
+        except Exception:  # the session closed under us
+            return False
+        return all(r in held for r in robots)
+
+    def _attempts(self, retries: int, robots: Sequence[str]) -> Iterator[int]:
+        """Attempt numbers: ``retries`` retransmissions, then more while the robots' node is
+        alive (it holds their liveliness tokens) and ``patience`` has not run out."""
+        t0 = time.monotonic()
+        attempt = 0
+        while attempt <= retries or (
+            robots and time.monotonic() - t0 < self.timing.patience and self._holds_tokens(robots)
+        ):
+            yield attempt
+            attempt += 1
+
     def _ask(
-        self, key: str, data: dict[str, Any], retries: int | None = None
+        self,
+        key: str,
+        data: dict[str, Any],
+        retries: int | None = None,
+        robots: Sequence[str] = (),
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
 
@@ -259,7 +290,7 @@ class BusCell:
             BusError: the node answered with an error (it refuses the request).
         """
         payload = dumps(data)
-        for attempt in range(1 + (self.timing.retries if retries is None else retries)):
+        for attempt in self._attempts(self.timing.retries if retries is None else retries, robots):
             if attempt:
                 self.stats.retransmits += 1
             self.stats.queries += 1
@@ -272,8 +303,10 @@ class BusCell:
                 if reply.ok is not None:
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
-                err = loads(reply.err.payload.to_bytes(), f"error from {key}")
-                raise BusError(f"{key}: {err.get('error', err)}")
+                refusal = _refusal(reply.err.payload.to_bytes())
+                if refusal is not None:
+                    raise BusError(f"{key}: {refusal}")
+                # anything else is Zenoh's own error (the query timed out): no answer yet
             if not replies:
                 # no queryable matched: if the node is gone entirely, waiting again is pointless
                 # unless its answer was lost; a short pause lets a restarting route settle
@@ -313,7 +346,7 @@ class BusCell:
         for r in robots:
             if r in self._down:
                 continue
-            d = self._ask(self.keys.state(r), {"episode": self.episode})
+            d = self._ask(self.keys.state(r), {"episode": self.episode}, robots=(r,))
             if d is None:
                 self._robot_down(r, f"robot {r} stopped answering")
                 continue
@@ -365,7 +398,11 @@ class BusCell:
         if self._dead:
             return
         self._confirm()
-        d = self._ask(self.keys.sim_step, {"episode": self.episode, "step": self._step + 1, "t": t})
+        d = self._ask(
+            self.keys.sim_step,
+            {"episode": self.episode, "step": self._step + 1, "t": t},
+            robots=self.scene.robot_ids,
+        )
         if d is None:
             self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
             return
@@ -388,7 +425,9 @@ class BusCell:
             return math.inf
         if self._dirty:
             d = self._ask(
-                self.keys.sim_step, {"episode": self.episode, "peek": True, "t": self.now}
+                self.keys.sim_step,
+                {"episode": self.episode, "peek": True, "t": self.now},
+                robots=self.scene.robot_ids,
             )
             if d is None:
                 self._lose_all(f"the simulator node stopped answering at t={self.now:.2f}")
@@ -477,7 +516,7 @@ class BusCell:
         cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason)
         payload = cmd.encode()
         since = self._latest.get(handle.id)
-        for attempt in range(1 + self.timing.retries):
+        for attempt in self._attempts(self.timing.retries, handle.action.robots):
             if attempt:
                 self.stats.retransmits += 1
             self.stats.commands += 1
@@ -507,17 +546,27 @@ class BusCell:
     def _give_up_on(self, handle: Handle, t: float, what: str) -> None:
         """A robot did not answer: it is down, the action failed, and a late start is cancelled."""
         timing = self.timing
-        why = f"{what} within {timing.retries + 1} x {timing.timeout:g} s"
+        why = f"{what} (no answer to {timing.retries} retransmissions, {timing.timeout:g} s each)"
         for r in handle.action.robots:
             self._robot_down(r, f"robot {r} {why}")
+        # name the first cause: a node that left the bus, or this silence
+        r = handle.action.robots[0]
         self._local[handle.id] = ActionStatus(
-            ActionState.FAILED, 0.0, t, f"robot {handle.action.robots[0]} {why}"
+            ActionState.FAILED, 0.0, t, f"robot {r} is down: {self._down[r]}"
         )
         # should the start still arrive, the node refuses it: the handle is cancelled there
         self._seq += 1
         cancel = Command(self.episode, self._seq, "halt", handle.id, handle.action, t, why)
         for r in handle.action.robots:
             self._link.put(self.keys.action(r), cancel.encode())
+
+
+def _refusal(payload: bytes) -> str | None:
+    """A node's refusal (a JSON ``{"error": …}`` reply), or ``None`` for Zenoh's own errors."""
+    try:
+        return str(loads(payload, "error reply")["error"])
+    except (BusError, KeyError):
+        return None
 
 
 def bus_cell(

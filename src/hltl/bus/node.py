@@ -155,6 +155,10 @@ class CellNode:
                 episode, seed = str(d["episode"]), int(d["seed"])
             except (KeyError, TypeError, ValueError, HltlError) as exc:
                 raise BusError(f"malformed reset request: {exc}") from None
+            cur = self._ep
+            if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
+                self._reply_bytes(query, cur.last_reply)  # a retransmission: same episode
+                return
             if scene != self.scene:
                 raise BusError(
                     f"this node serves the scene {self.scene.source} "
@@ -167,15 +171,16 @@ class CellNode:
             self.stats.episodes += 1
             self.stats.starts = {}
             obs = cell.observe(0.0)
-            self._reply(
-                query,
+            reply = dumps(
                 {
                     "episode": episode,
                     "observation": world_to_wire(obs),
                     **self._clock(cell, 0.0),
                     "records": self._flush(),
-                },
+                }
             )
+            self._ep.last_reply = reply
+            self._reply_bytes(query, reply)
 
     def _on_step(self, query: Any) -> None:
         with self._guard(query):
