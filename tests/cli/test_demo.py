@@ -10,7 +10,8 @@ from PIL import Image
 
 from hltl.cli.main import main
 from hltl.execution.log import read_log
-from hltl.viz.demo import DEMO_EVENTS, story
+from hltl.sim.dynamic import FIG1_EVENTS
+from hltl.viz.demo import story
 
 ROOT = Path(__file__).resolve().parents[2]
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -60,4 +61,4 @@ def test_demo_with_other_events_reports_a_missing_beat(
 
 def test_the_example_events_file_is_the_demo_default() -> None:
     data = yaml.safe_load((ROOT / "examples" / "events" / "demo.yaml").read_text("utf-8"))
-    assert data["events"] == [dict(e) for e in DEMO_EVENTS]
+    assert data["events"] == [dict(e) for e in FIG1_EVENTS]

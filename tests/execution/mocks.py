@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
+from hltl.motion.trajectory import MotionPlan
 from hltl.planner import PlanResult, plan
 from hltl.skills.library import Action
 from hltl.spec.hierarchy import HSpec
@@ -26,7 +27,7 @@ class MockDriver:
     _halted_ids: dict[int, float] = field(default_factory=dict)
     _next: int = 1
 
-    def start(self, action: Action, t: float) -> Handle:
+    def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
         self.started.append((t, action))
         h = Handle(self._next, action, t)
         self._next += 1

@@ -216,7 +216,7 @@ def test_catalogue_scenarios_with_a_wandering_person(scenario: Any) -> None:
 
 
 def test_replan_bench_rows() -> None:
-    from hltl.sim.replan_bench import bench_replan, format_rows
+    from hltl.bench.replan import bench_replan, format_rows
 
     rows = bench_replan([(2, 2, None)], [0])
     assert [(r.config, r.predict, r.episodes) for r in rows] == [

@@ -142,5 +142,6 @@ def _story(console: Any, result: DemoResult, *, warn: bool) -> None:
     if warn and not all(result.story.values()):
         console.print(
             "[bold yellow]warning:[/] the default demo no longer shows the Fig. 1 story "
-            "(see the ✗ above); the executor or simulator changed — adjust DEMO_EVENTS"
+            "(see the ✗ above); the executor or simulator changed — adjust "
+            "FIG1_EVENTS in hltl.sim.dynamic"
         )

@@ -25,6 +25,7 @@ COMMAND_MODULES = (
     "bench",
     "render",
     "perception",
+    "perceive",
     "node",
 )
 

@@ -11,6 +11,7 @@ import enum
 from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
+from hltl.motion.trajectory import MotionPlan
 from hltl.skills.library import Action
 
 
@@ -61,8 +62,10 @@ class RobotDriver(Protocol):
     can time-stamp what it reports; a driver never moves time itself.
     """
 
-    def start(self, action: Action, t: float) -> Handle:
-        """Begin executing ``action`` (its robots must be available and idle)."""
+    def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
+        """Begin executing ``action`` (its robots must be available and idle); ``motion`` is
+        the joint trajectories a motion layer planned for it (drivers that do not move arms
+        ignore it)."""
         ...
 
     def poll(self, handle: Handle, t: float) -> ActionStatus:

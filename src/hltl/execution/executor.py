@@ -309,7 +309,7 @@ class Executor:
             "completion_tokens": g.tokens.completion,
             "latency_ms": round(ms, 3),
             "spec": spec_to_dict(g.spec),
-            "done": sorted(self._done()),
+            "done": sorted(self.done_formulas()),
         }
         if g.update is not None:
             fields["update"] = {
@@ -393,7 +393,8 @@ class Executor:
         if down != self.world.unavailable:
             self.world = self.world.with_unavailable(down)
 
-    def _done(self) -> frozenset[str]:
+    def done_formulas(self) -> frozenset[str]:
+        """Names of the spec's formulas done so far."""
         return frozenset() if self.monitor is None else self.monitor.done(self.q)
 
     def _set_spec(self, spec: HSpec, old: HSpec | None) -> None:
@@ -537,7 +538,7 @@ class Executor:
             hazards=[
                 {"action": h.action.to_dict(), "kind": h.kind, "reason": h.reason} for h in hazards
             ],
-            done=sorted(self._done()),
+            done=sorted(self.done_formulas()),
         )
         self._trigger.add(f"halt:{first.kind}")
         if all(r.status is not None for r in self._running):
@@ -566,7 +567,7 @@ class Executor:
             planned=[a.to_dict() for a in step.actions],
             duration=round(step.duration, 6),
             world=world_to_dict(world),
-            done=sorted(self._done()),
+            done=sorted(self.done_formulas()),
         )
         hands = dict(world.hands)
         for a, tr in zip(actions, transitions, strict=True):
@@ -705,7 +706,7 @@ class Executor:
             "trigger": trigger,
             "tokens": self._pending_tokens,
             "context": ctx.describe(),
-            "done": sorted(self._done()),
+            "done": sorted(self.done_formulas()),
         }
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
@@ -874,4 +875,4 @@ class Executor:
         self._running = []
         self.status = ExecStatus.GAVE_UP
         self.reason = reason
-        self.log.emit(self.t, "give_up", reason=reason, done=sorted(self._done()))
+        self.log.emit(self.t, "give_up", reason=reason, done=sorted(self.done_formulas()))

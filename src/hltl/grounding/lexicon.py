@@ -11,7 +11,9 @@ from hltl.world.scene import Scene
 
 Kind: TypeAlias = Literal["object", "human", "surface", "robot"]
 
-_TOKEN = re.compile(r"n't|'(?:s|ve|d|ll|re|m)\b|[A-Za-z0-9_]+(?:-[A-Za-z0-9_]+)*|[,.;:!?]")
+_TOKEN = re.compile(
+    r"n't|'(?:s|ve|d|ll|re|m)\b|[A-Za-z0-9_]+(?:-[A-Za-z0-9_]+)*|[,.;:!?]|[\u2013\u2014]|(?<!\S)-(?!\S)"
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -24,7 +26,18 @@ def tokenize(text: str) -> list[Token]:
     """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
     text = text.replace("\u2019", "'").replace("\u2018", "'")
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
-    return [Token(m.group(0), m.group(0).lower()) for m in _TOKEN.finditer(text)]
+    out = []
+    for m in _TOKEN.finditer(text):
+        word = m.group(0)
+        if word in ("\u2013", "\u2014"):
+            word = "-"  # an en or em dash reads like a spaced hyphen
+        out.append(Token(word, word.lower()))
+    return out
+
+
+def foreign_words(text: str) -> list[str]:
+    """Words in letters other than English ones: the tokenizer would drop them silently."""
+    return [w for w in re.findall(r"[^\W\d_]+", text) if not w.isascii()]
 
 
 # -- keywords ------------------------------------------------------------------------------------
@@ -127,6 +140,13 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("in", "whatever", "order"): "filler",
     ("in", "the", "meantime"): "meanwhile",
     ("would", "like"): "verb:like",
+    ("would", "love"): "verb:like",
+    ("'d", "love"): "verb:like",
+    ("could", "use"): "verb:like",
+    ("could", "do", "with"): "verb:like",
+    ("and", "nothing", "else"): "filler",
+    ("nothing", "else"): "filler",
+    ("but", "nothing", "else"): "filler",
     ("'d", "like"): "verb:like",
     ("should", "get"): "verb:have",
     ("should", "have"): "verb:have",
@@ -157,7 +177,108 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("picked", "up"): "verb:pick",
     ("grab", "hold", "of"): "verb:pick",
 }
+
+# Politeness and hedges: skipped wherever they occur (docs/grounding.md lists them).
+FILLER_PHRASES: tuple[str, ...] = (
+    "thank you",
+    "thank you very much",
+    "thanks a lot",
+    "thanks so much",
+    "real quick",
+    "right now",
+    "if you can",
+    "if you could",
+    "if you would",
+    "if possible",
+    "if you do n't mind",
+    "would you mind",
+    "do you mind",
+    "would you be so kind as to",
+    "be so kind as to",
+    "when you get a chance",
+    "when you can",
+    "that 's all",
+    "that is all",
+    "while you 're at it",
+    "while you are at it",
+    "for me",
+    "each of",
+    "either one",
+    "any one",
+    "whichever one",
+)
+for _p in FILLER_PHRASES:
+    PHRASES[tuple(_p.split())] = "filler"
+
+# "once that is done", "when you're done with that", "after that's finished": the task before
+# is complete, so what follows comes after it.
+for _sub in ("once", "when", "after", "as soon as", "and once", "and when"):
+    for _what in ("that", "this", "it"):
+        for _be in ("is", "'s", "has been", "was"):
+            for _done in ("done", "finished", "complete", "completed", "over"):
+                PHRASES[tuple(f"{_sub} {_what} {_be} {_done}".split())] = "then"
+    for _you in ("you 're", "you are", "you 've", "you have", "you 've been", "you have been"):
+        for _done in ("done", "finished"):
+            for _with in ("", " with that", " with this", " with it"):
+                PHRASES[tuple(f"{_sub} {_you} {_done}{_with}".split())] = "then"
+
+# Corrections: "the bottle, no, the cup", "— sorry, I mean the table", "actually the shelf".
+for _p in ("i mean", "i meant", "sorry i mean", "no wait", "no sorry", "or rather", "no no"):
+    PHRASES[tuple(_p.split())] = "correct"
+
+# Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
+for _p, _q in {
+    "one of the": "q:some",
+    "one of": "q:some",
+    "any of the": "q:some",
+    "any of": "q:some",
+    "either of the": "q:some",
+    "any one of the": "q:some",
+    "either one of the": "q:some",
+    "both of the": "q:all",
+    "both of": "q:all",
+    "all of the": "q:all",
+    "all the": "q:all",
+    "each of the": "q:all",
+    "every one of the": "q:all",
+    "all the objects": "q:everything",
+    "all objects": "q:everything",
+    "all the items": "q:everything",
+    "all items": "q:everything",
+    "all the things": "q:everything",
+    "every object": "q:everything",
+    "every item": "q:everything",
+    # exclusions
+    "except for": "except",
+    "apart from": "except",
+    "other than": "except",
+    "but not": "except",
+    "and not": "except",
+    "the same for": "same",
+    "same for": "same",
+    "do the same for": "same",
+    "and the same for": "same",
+    "same goes for": "same",
+    "the same goes for": "same",
+}.items():
+    PHRASES[tuple(_p.split())] = _q
+
 MAX_PHRASE = max(len(p) for p in PHRASES)
+# every word of a multi-word keyword: never taken for a misspelt scene name
+PHRASE_WORDS = frozenset(w for p in PHRASES for w in p)
+
+NUMBERS = {
+    "one": 1,
+    "two": 2,
+    "three": 3,
+    "four": 4,
+    "five": 5,
+    "six": 6,
+    "seven": 7,
+    "eight": 8,
+    "nine": 9,
+    "ten": 10,
+}
 
 WORDS: dict[str, str] = {
     # coordination
@@ -243,6 +364,49 @@ WORDS: dict[str, str] = {
     "soon": "filler",
     "thanks": "filler",
     "thank": "filler",
+    "thx": "filler",
+    "cheers": "filler",
+    "pls": "filler",
+    "plz": "filler",
+    "hey": "filler",
+    "hi": "filler",
+    "hello": "filler",
+    "um": "filler",
+    "uh": "filler",
+    "umm": "filler",
+    "er": "filler",
+    "erm": "filler",
+    "hmm": "filler",
+    "so": "filler",
+    "well": "filler",
+    "oh": "filler",
+    "alright": "filler",
+    "sure": "filler",
+    "again": "filler",
+    "whichever": "whichever",
+    # corrections (only after a comma or dash; see hltl.grounding.phrasing)
+    "sorry": "correct",
+    "actually": "correct",
+    "rather": "correct",
+    "oops": "correct",
+    "wait": "correct",
+    # questions that are not requests ("where is the cup?", "is the apple on the shelf?")
+    "where": "wh",
+    "what": "wh",
+    "who": "wh",
+    "whom": "wh",
+    "whose": "wh",
+    "why": "wh",
+    "how": "wh",
+    "which": "wh",
+    # quantities
+    "any": "q:some",
+    "everything": "q:everything",
+    "other": "other",
+    "with": "with",
+    "same": "same",
+    "apart": "except",
+    "except": "except",
     # subjects and auxiliaries, skipped ("after you have given …", "once the cup is on …")
     "you": "subject",
     "we": "subject",
@@ -288,7 +452,6 @@ WORDS: dict[str, str] = {
     "never": "not",
     "no": "not",
     "without": "not",
-    "except": "not",
     "don": "not",
     "nothing": "not",
     "if": "if",
@@ -297,7 +460,6 @@ WORDS: dict[str, str] = {
     "all": "all",
     "every": "all",
     "each": "all",
-    "everything": "all",
     "everyone": "all",
     "everybody": "all",
     "anyone": "all",
@@ -349,6 +511,12 @@ class Item:
     lemma: str  # keyword lemma; for entities and unknown words, the lower-case text
     text: str  # as typed
     refs: tuple[Ref, ...] = ()
+    # how an object mention counts (hltl.grounding.phrasing): "" definite ("the mug"),
+    # "some" one of its refs ("a mug", "one of the mugs"), "all" every ref ("all the mugs")
+    quant: str = ""
+    # the mention a "some" object belongs to: mentions sharing it take distinct objects
+    # ("a mug each", "one of the mugs … the other one"); -1 for none
+    group: int = -1
 
 
 def _plural_forms(words: tuple[str, ...]) -> list[tuple[str, ...]]:
@@ -441,7 +609,39 @@ class Lexicon:
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
+        typo = self.misspelt(tokens[i].low)
+        if typo is not None:
+            return 1, typo
         return None
+
+    def lookup(self, phrase: str) -> tuple[Ref, ...] | None:
+        """The entities a whole phrase names ("blue mug"), else None."""
+        found = self._phrases.get(_words(phrase))
+        return _best(found) if found else None
+
+    def misspelt(self, word: str) -> tuple[Ref, ...] | None:
+        """The one entity a word of 4+ letters names within one edit, else None.
+
+        One edit is an insertion, deletion, substitution or swap of neighbours ("botle",
+        "Alcie"). A keyword is never a misspelling, and two entities within one edit (or a
+        category several objects share) mean the word is not corrected at all.
+        """
+        if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
+            return None
+        if word in PHRASE_WORDS:
+            return None
+        keys = [
+            key
+            for key in self._phrases
+            if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0])
+        ]
+        if len(keys) == 1:  # one name within one edit: "mgus" is "mugs" (both mugs)
+            return _best(self._phrases[keys[0]])
+        found = [e for key in keys for e in self._phrases[key]]
+        if not found or len({r.id for r, _, _ in found}) != 1:
+            return None  # several names within one edit ("chps": chips or cups): no guess
+        singular = [r for r, _, _ in found if not r.plural]
+        return (singular[0] if singular else found[0][0],)
 
     # -- descriptions for error messages -----------------------------------------------------
     def listing(self, kind: Kind) -> str:
@@ -463,6 +663,24 @@ class Lexicon:
         return ref_id
 
 
+def _one_edit(a: str, b: str) -> bool:
+    """Whether ``a`` and ``b`` differ by exactly one insertion, deletion, substitution or swap."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        if len(diff) == 1:
+            return True
+        return (
+            len(diff) == 2
+            and diff[1] == diff[0] + 1
+            and a[diff[0]] == b[diff[1]]
+            and a[diff[1]] == b[diff[0]]
+        )
+    short, long = (a, b) if len(a) < len(b) else (b, a)
+    return any(long[:k] + long[k + 1 :] == short for k in range(len(long)))
+
+
 def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
     # An id, name or alias wins over a category shared by several objects.
     strong = [r for r, _, st in found if st]
@@ -478,7 +696,7 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
     i = 0
     while i < len(tokens):
         tok = tokens[i]
-        if tok.low in ",.;:!?":
+        if tok.low in ",.;:!?-":
             items.append(Item("punct", tok.low, tok.text))
             i += 1
             continue
@@ -499,6 +717,8 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("word", "verb:" + VERBS[tok.low], tok.text))
         elif tok.low in WORDS:
             items.append(Item("word", WORDS[tok.low], tok.text))
+        elif tok.low in NUMBERS or tok.low.isdigit():
+            items.append(Item("word", "num", tok.text))
         else:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
@@ -542,5 +762,5 @@ def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
     ids = sorted({r.id for r in item.refs})
     return GroundingError(
         f"{item.text!r} is ambiguous: it could be {', '.join(ids[:-1])} or {ids[-1]}; "
-        "use the id or an alias"
+        "use the id or an alias, or say 'one of the …' if any will do"
     )

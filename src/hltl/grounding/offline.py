@@ -18,13 +18,25 @@ and listing what the scene has.
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Literal
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
-from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, lex
-from hltl.grounding.tree import Group, Node, Op, Task, check_deliveries, encode, entities, normalise
+from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, foreign_words, lex
+from hltl.grounding.phrasing import refine
+from hltl.grounding.tree import (
+    Group,
+    Node,
+    Op,
+    Task,
+    check_deliveries,
+    encode,
+    entities,
+    normalise,
+    tasks,
+)
 
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
@@ -65,15 +77,28 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     """
     lexicon = lexicon or Lexicon(scene)
     items = lex(text, lexicon)
+    shown = text.strip() if len(text.strip()) <= 60 else text.strip()[:57] + "..."
     if not [it for it in items if it.kind != "punct"]:
+        if text.strip():
+            raise GroundingError(
+                f"no words recognised in {shown!r}: the offline grounder reads English requests "
+                "such as 'give Bob the chips'"
+            )
         raise GroundingError("the instruction is empty")
+    foreign = foreign_words(text)
+    if foreign:
+        raise GroundingError(
+            f"{foreign[0][:30]!r} in {shown!r} is not a word the offline grounder reads "
+            "(English words only)"
+        )
+    items = refine(items, lexicon)
     _refuse(items, lexicon)
     parser = _Parser(lexicon)
     raw = parser.instruction(items)
     node = parser.resolve(raw)
     if node is None:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
-    node = normalise(node)
+    node = _dedupe(normalise(parser.expand(node, frozenset())))
     check_deliveries(node, {h.id: h.name for h in scene.humans})
     return node
 
@@ -142,6 +167,10 @@ class _Frag:
     target: _Target | None = None
     pick: bool = False  # only picks up the antecedent of a later 'it'
     antecedent: bool = False
+    them: bool = False  # 'them': the objects of the clause before
+    group: int = -1  # a choice ('a mug') shared with other fragments: distinct objects each
+    subject: bool = False  # a person before a possession verb ('Alice wants …')
+    same: tuple[Item, ...] = ()  # 'the same for X': the task before, X in place of its like
 
 
 @dataclass(slots=True)
@@ -178,6 +207,48 @@ class _Parser:
         self.lex = lexicon
         self.frags: list[_Frag] = []
         self._segment = 0
+        self._slots: dict[str, tuple[int, tuple[str, ...]]] = {}  # placeholder -> group, options
+
+    # -- choices ---------------------------------------------------------------------------------
+    def expand(self, node: Node, pending: frozenset[int]) -> Node:
+        """Replace choice placeholders: one choice → an ``or`` of its options; a choice shared
+        by several tasks ('a mug each', 'one … the other') → an ``or`` over the ways to give
+        each task a different object, placed at the smallest group holding all of them."""
+        if isinstance(node, Task):
+            slot = self._slots.get(node.obj)
+            if slot is None or slot[0] in pending:
+                return node
+            return Group("or", tuple(Task(node.kind, o, node.target) for o in slot[1]))
+        counts: dict[int, int] = {}
+        for c in node.children:
+            for g in {self._slots[t.obj][0] for t in tasks(c) if t.obj in self._slots}:
+                counts[g] = counts.get(g, 0) + 1
+        local = frozenset(g for g, n in counts.items() if n >= 2 and g not in pending)
+        here: Node = Group(node.op, tuple(self.expand(c, pending | local) for c in node.children))
+        alternatives = [here]
+        for g in sorted(local):
+            slots = list(
+                dict.fromkeys(t.obj for t in tasks(here) if self._slots.get(t.obj, (-1,))[0] == g)
+            )
+            options = [self._slots[s][1] for s in slots]
+            ways = [combo for combo in itertools.product(*options) if len(set(combo)) == len(combo)]
+            union = sorted({o for opts in options for o in opts})
+            if not ways:
+                raise GroundingError(
+                    f"{len(slots)} tasks each need a different one of {', '.join(union)}: the "
+                    f"scene has only {len(union)}"
+                )
+            if len(ways) * len(alternatives) > 120:
+                raise GroundingError(
+                    f"too many ways ({len(ways) * len(alternatives)}) to share out "
+                    f"{', '.join(union)}: name the objects"
+                )
+            alternatives = [
+                _substitute(a, dict(zip(slots, combo, strict=True)))
+                for a in alternatives
+                for combo in ways
+            ]
+        return alternatives[0] if len(alternatives) == 1 else Group("or", tuple(alternatives))
 
     # -- sentences -------------------------------------------------------------------------------
     def instruction(self, items: list[Item]) -> _Raw:
@@ -197,6 +268,11 @@ class _Parser:
             current.pop()
         if current:
             sentences.append(current)
+        sentences = [s for s in sentences if not _only_fillers(s)]
+        if not sentences:
+            raise GroundingError(
+                f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
+            )
         result: _Raw | None = None
         for sent in sentences:
             body, conn = _leading_connector(sent)
@@ -231,6 +307,7 @@ class _Parser:
 
     # -- sequences ------------------------------------------------------------------------------
     def seq(self, items: list[Item]) -> _Raw:
+        items = _trailing_order(items)
         segments: list[tuple[str, list[Item]]] = []
         current: list[Item] = []
         conn = "then"
@@ -238,6 +315,8 @@ class _Parser:
             if _is(it, "then", "after", "before", "once", "prior"):
                 while current and _is(current[-1], ",", "and", "also"):
                     current.pop()  # ", and then": the separator belongs to the connector
+                if not current and segments and conn == "then" and it.lemma == "then":
+                    continue  # "and then, when that's done, …": one step, said twice
                 if current or segments:
                     segments.append((conn, current))
                 elif it.lemma != "then":
@@ -251,6 +330,23 @@ class _Parser:
             seg = _strip_separators(seg)
             if not [it for it in seg if not _is(it, *_SKIP)]:
                 raise GroundingError(f"nothing to do after {conn!r} in {_text(items)!r}")
+            if result is not None and conn in ("after", "once", "before", "prior"):
+                _one_condition(conn, seg, items)
+            split = _main_clause_start([Item("word", conn, conn), *seg])
+            if (
+                result is not None
+                and conn in ("after", "once")
+                and split is not None
+                and _is(seg[split - 1], ",")  # only a comma ends the condition mid-sentence
+            ):
+                # "A and, once X, Y": Y waits for X; A stands beside them
+                cut = split - 1
+                self._segment += 1
+                sub = self.coord(seg[:cut])
+                self._segment += 1
+                main = self.coord(seg[cut + 1 :])
+                result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
+                continue
             self._segment += 1
             node = self.coord(seg)
             if result is None:
@@ -293,6 +389,7 @@ class _Parser:
             if not seps:
                 raise GroundingError(f"no task in {_text(items)!r}")
             raise GroundingError(f"{_text(items)!r} ends with {seps[-1]!r}: something is missing")
+        pieces, seps, markers = _tidy_pieces(pieces, seps, markers)
         frags: list[_Raw] = [self.fragment(p) for p in pieces]
         node, _ = self._coord_list(frags, seps, markers, 0, None, items)
         if in_order:
@@ -350,6 +447,24 @@ class _Parser:
         frag = _Frag(index=len(self.frags), segment=self._segment, text=_text(items))
         self.frags.append(frag)
         units = [it for it in items if not _is(it, *_SKIP, "det")]
+        if units and _is(units[0], "same", "do"):
+            named = [u for u in units[1:] if not _is(u, "same", "with", "for", "and")]
+            if not _is(units[0], "same") and not any(_is(u, "same") for u in units):
+                named = []
+            if not named or any(u.kind != "ent" for u in named) or len(named) > 2:
+                raise GroundingError(f"cannot parse {frag.text!r}: 'the same for' what?")
+            frag.same = tuple(named)
+            return frag
+        if (
+            len(units) > 3
+            and units[0].kind == "ent"
+            and _is_verb(units[1])
+            and VERB_CLASS[_lemma(units[1])] == "possess"
+            and any(_is_verb(u) for u in units[2:])
+            and any(_is(u, "to", "for", "on") for u in units[2:])
+        ):
+            # "Alice needs the bottle put on the shelf": the thing needed is the placement
+            units = units[2:]
         # auxiliary "have" ("has been handed", "you have given") and "needs to get": drop a
         # possession verb that another verb follows, with a "to" right after it
         while True:
@@ -390,6 +505,7 @@ class _Parser:
         if VERB_CLASS[frag.verb] == "possess":
             tid, kind = self._target(pre[0], frag, "human")
             frag.target = _Target(kind, tid, "", pre[0].text)
+            frag.subject = True
             self._body(frag, post, allow_target=False)
             if frag.objects is None and not frag.it:
                 raise GroundingError(f"{frag.text!r}: {frag.verb_text} what?")
@@ -417,7 +533,7 @@ class _Parser:
                 if prep is not None or not allow_target:
                     raise GroundingError(f"cannot parse {frag.text!r}: unexpected {u.text!r}")
                 prep = u
-            elif (u.kind == "word" and u.lemma != "it") or u.kind == "punct":
+            elif (u.kind == "word" and u.lemma not in ("it", "them")) or u.kind == "punct":
                 raise GroundingError(f"cannot parse {frag.text!r}: unexpected {u.text!r}")
             elif prep is not None:
                 if target is not None:
@@ -464,10 +580,17 @@ class _Parser:
         if _is(np, "it"):
             frag.it = True
             return
+        if _is(np, "them"):
+            frag.them = True
+            return
         if np.kind == "ent" and all(r.kind == "object" for r in np.refs):
-            if len(np.refs) > 1 and not all(r.plural for r in np.refs):
+            ids = list(dict.fromkeys(r.id for r in np.refs))
+            if np.quant == "some" and len(ids) > 1:
+                frag.objects, frag.group = ids, np.group
+                return
+            if np.quant != "all" and len(ids) > 1 and not all(r.plural for r in np.refs):
                 raise ambiguous(np, self.lex)
-            frag.objects = [r.id for r in np.refs]
+            frag.objects = ids
             return
         if np.kind == "ent":
             raise GroundingError(
@@ -500,8 +623,8 @@ class _Parser:
                 f"{np.text!r} is {_article(have)} {_kind_word(have)}, not a {what}, in "
                 f"{frag.text!r}; " + "; ".join(self.lex.listing(k) for k in want)
             )
-        if _is(np, "it"):
-            raise GroundingError(f"'it' cannot be a recipient or place in {frag.text!r}")
+        if _is(np, "it", "them"):
+            raise GroundingError(f"{np.text!r} cannot be a recipient or place in {frag.text!r}")
         cls = VERB_CLASS[frag.verb] if frag.verb else None
         if want == ("surface",):
             raise GroundingError(
@@ -521,23 +644,39 @@ class _Parser:
         """Fill each fragment's missing verb, object and recipient, then build the task tree."""
         frags = self.frags
         for k, f in enumerate(frags):
-            if f.it:
-                if k == 0 or (frags[k - 1].objects is None and not frags[k - 1].it):
-                    raise GroundingError(f"'it' in {f.text!r} refers to nothing before it")
-                frags[k - 1].antecedent = True
+            if f.it or f.them:
+                word = "it" if f.it else "them"
+                if k == 0 or (
+                    frags[k - 1].objects is None and not frags[k - 1].it and not frags[k - 1].them
+                ):
+                    raise GroundingError(f"{word!r} in {f.text!r} refers to nothing before it")
+                for g in self._antecedents(k):
+                    g.antecedent = True
         for k, f in enumerate(frags):
+            if f.same:
+                self._same(k, f)
+                continue
             if f.verb is None:
                 f.verb = next((g.verb for g in reversed(frags[:k]) if _acting(g)), None)
             if f.it:
-                prev = frags[k - 1].objects
-                if prev is None or len(prev) != 1:
+                ante = frags[k - 1]
+                prev = ante.objects
+                if prev is None or (len(prev) != 1 and ante.group < 0):
                     raise GroundingError(f"'it' in {f.text!r} could mean several objects")
-                f.objects = list(prev)
+                f.objects, f.group = list(prev), ante.group
+            elif f.them:
+                antes = self._antecedents(k)
+                f.objects = [o for g in antes for o in (g.objects or [])]
+                groups = {g.group for g in antes if g.group >= 0}
+                if groups and len(antes) > 1:
+                    raise GroundingError(f"'them' in {f.text!r} mixes a choice with other objects")
+                f.group = antes[0].group if len(antes) == 1 else -1
             elif f.objects is None:
-                f.objects = self._objects_from_right(k) or next(
-                    (list(g.objects) for g in reversed(frags[:k]) if g.objects and not g.pick),
-                    None,
+                source = self._objects_from_right(k) or next(
+                    (g for g in reversed(frags[:k]) if g.objects and not g.pick), None
                 )
+                if source is not None and source.objects is not None:
+                    f.objects, f.group = list(source.objects), source.group
                 if f.objects is None:
                     raise GroundingError(
                         f"{f.text!r} names no object; {self.lex.listing('object')}"
@@ -566,16 +705,56 @@ class _Parser:
             self._check_verb(f)
         return self._build(raw)
 
-    def _objects_from_right(self, k: int) -> list[str] | None:
-        """Objects shared from the right: 'give A and B the cup'."""
+    def _objects_from_right(self, k: int) -> _Frag | None:
+        """Objects shared from the right: 'give A and B the cup', 'A and B want a mug'."""
         frags = self.frags
         for g in frags[k + 1 :]:
-            if g.segment != frags[k].segment or g.verb is not None:
+            if g.segment != frags[k].segment or (g.verb is not None and not g.subject):
                 return None
             if g.objects is not None:
                 dative = g.target is not None and g.target.prep == ""
-                return list(g.objects) if dative else None
+                return g if dative else None
+            if g.subject:
+                return None
         return None
+
+    def _antecedents(self, k: int) -> list[_Frag]:
+        """What 'it' (the clause just before) or 'them' (that clause and its list) refer to."""
+        frags = self.frags
+        f = frags[k]
+        if f.it:
+            return [frags[k - 1]]
+        out: list[_Frag] = []
+        for g in reversed(frags[:k]):
+            if out and g.segment != out[0].segment:
+                break
+            out.insert(0, g)
+            if g.verb_text or g.subject:
+                break
+        return [g for g in out if g.objects is not None or g.it or g.them]
+
+    def _same(self, k: int, f: _Frag) -> None:
+        """'… and the same for the apple': copy the task before, with the new name in place."""
+        prev = next(
+            (g for g in reversed(self.frags[:k]) if g.target is not None and not g.pick), None
+        )
+        if prev is None or prev.objects is None or prev.target is None:
+            raise GroundingError(f"{f.text!r} refers to no task before it")
+        f.verb, f.objects, f.group, f.target = prev.verb, list(prev.objects), -1, prev.target
+        kinds_seen: set[str] = set()
+        for x in f.same:
+            kinds = {r.kind for r in x.refs}
+            if kinds == {"object"} and "object" not in kinds_seen:
+                kinds_seen.add("object")
+                self._object(f, x)
+            elif kinds <= {"human", "surface"} and "target" not in kinds_seen:
+                kinds_seen.add("target")
+                prep = prev.target.prep if prev.target.prep != "" else "to"
+                tid, kind = self._target(x, f, prep)
+                f.target = _Target(kind, tid, "to" if kind == "human" else "on", x.text)
+            else:
+                raise GroundingError(f"{x.text!r} cannot replace anything in the task before it")
+        f.verb_text = ""
 
     def _target_from_right(self, k: int) -> _Target | None:
         """A recipient or place shared from the right: 'hand the cup and the chips to B'."""
@@ -617,6 +796,10 @@ class _Parser:
                 return None
             assert raw.target is not None and raw.objects is not None
             kind: Literal["deliver", "place"] = "deliver" if raw.target.kind == "human" else "place"
+            if raw.group >= 0 and len(raw.objects) > 1:
+                slot = f"?{len(self._slots)}"  # a placeholder the choice is expanded into
+                self._slots[slot] = (raw.group, tuple(raw.objects))
+                return Task(kind, slot, raw.target.id)
             leaves: list[Node] = [Task(kind, o, raw.target.id) for o in raw.objects]
             return leaves[0] if len(leaves) == 1 else Group("and", tuple(leaves))
         kids = [c for c in (self._build(ch) for ch in raw.children) if c is not None]
@@ -626,6 +809,138 @@ class _Parser:
 
 
 # -- helpers -------------------------------------------------------------------------------------
+
+
+def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:
+    """'Y once X and give Z …': does 'and give Z' belong to the condition or the request?"""
+    for k in range(1, len(seg)):
+        if _is(seg[k - 1], "and", ",") and _is_verb(seg[k]):
+            if conn in ("after", "once") and _is(seg[k - 1], ","):
+                return  # "A and, once X, give Z": the comma closes the condition
+            raise GroundingError(
+                f"in {_text(items)!r} it is unclear where the {conn!r} part ends: put it first "
+                f"('{conn} …, …') or split the sentence"
+            )
+
+
+def _substitute(node: Node, chosen: dict[str, str]) -> Node:
+    if isinstance(node, Task):
+        obj = chosen.get(node.obj)
+        return node if obj is None else Task(node.kind, obj, node.target)
+    return Group(node.op, tuple(_substitute(c, chosen) for c in node.children))
+
+
+def _dedupe(node: Node) -> Node:
+    """One task said twice ('Carol needs the bottle, so give it to her') is one task.
+
+    Exact: ``F a & F a`` is ``F a``, and so is the sequence ``F (a & F a)``.
+    """
+    if isinstance(node, Task):
+        return node
+    kids: list[Node] = []
+    for c in (_dedupe(c) for c in node.children):
+        if node.op == "and" and c in kids:
+            continue
+        if node.op == "seq" and kids and kids[-1] == c:
+            continue
+        kids.append(c)
+    if node.op == "and":
+        # a task another part already requires adds nothing: F a & F (a & F b) is F (a & F b)
+        kids = [
+            c
+            for k, c in enumerate(kids)
+            if not (
+                isinstance(c, Task) and any(c in _required(o) for j, o in enumerate(kids) if j != k)
+            )
+        ]
+    return normalise(Group(node.op, tuple(kids))) if len(kids) > 1 else kids[0]
+
+
+def _required(node: Node) -> set[Task]:
+    """The tasks every way of completing ``node`` performs."""
+    if isinstance(node, Task):
+        return {node}
+    parts = [_required(c) for c in node.children]
+    if node.op == "or":
+        return set.intersection(*parts) if parts else set()
+    return set().union(*parts)
+
+
+def _only_fillers(items: list[Item]) -> bool:
+    """A sentence or list part of politeness alone ('Thanks!', ', please')."""
+    return all(_is(it, "filler", ",", "and", "also", "then", "subject", "aux") for it in items)
+
+
+def _tidy_pieces(
+    pieces: list[list[Item]], seps: list[str], markers: list[str | None]
+) -> tuple[list[list[Item]], list[str], list[str | None]]:
+    """Drop parts that are only politeness; join 'Bob, the chips' into one part."""
+    k = 0
+    while k < len(pieces):
+        if len(pieces) > 1 and markers[k] is None and _only_fillers(pieces[k]):
+            del pieces[k], markers[k]
+            del seps[k - 1 if k > 0 else 0]
+            continue
+        k += 1
+    k = 0
+    while k + 1 < len(pieces):
+        here = [it for it in pieces[k] if not _is(it, *_SKIP, "det")]
+        nxt = [it for it in pieces[k + 1] if not _is(it, *_SKIP, "det")]
+        if (
+            seps[k] == ","
+            and len(here) == 1
+            and here[0].kind == "ent"
+            and all(r.kind == "human" for r in here[0].refs)
+            and nxt
+            and all(it.kind == "ent" and all(r.kind == "object" for r in it.refs) for it in nxt)
+            and markers[k + 1] is None
+        ):
+            pieces[k : k + 2] = [pieces[k] + pieces[k + 1]]
+            del seps[k], markers[k + 1]
+            continue
+        k += 1
+    return pieces, seps, markers
+
+
+def _trailing_order(items: list[Item]) -> list[Item]:
+    """'X and Y afterwards' is 'X, then Y'; 'X, but Y first' is 'Y, then X'."""
+    core = list(items)
+    while core and _is(core[-1], ",", "filler"):
+        core.pop()
+    if len(core) < 3 or not _is(core[-1], "then", "first"):
+        return items
+    lemma = "then" if core[-1].lemma == "then" else "prior"
+    body = core[:-1]
+    seps = [k for k, it in enumerate(body) if _is(it, "and", ",")]
+    for k in reversed(seps):
+        j = k + 1
+        while j < len(body) and _is(body[j], "and", ",", "filler", "subject", "aux"):
+            j += 1
+        starts_clause = (
+            j < len(body)
+            and (
+                _is_verb(body[j])
+                or (j + 1 < len(body) and body[j].kind == "ent" and _is_verb(body[j + 1]))
+                or (  # "… and Alice the bottle afterwards"
+                    body[j].kind == "ent"
+                    and {r.kind for r in body[j].refs} == {"human"}
+                    and next((x.kind for x in body[j + 1 :] if not _is(x, "det")), "") == "ent"
+                )
+            )
+        )
+        if starts_clause:
+            first = k
+            while first > 0 and _is(body[first - 1], "and", ","):
+                first -= 1
+            return [*body[:first], Item("word", lemma, core[-1].text), *body[j:]]
+    if lemma == "prior":
+        if any(_is(it, "then", "after", "before", "once", "prior") for it in body):
+            raise GroundingError(
+                f"'first' at the end of {_text(items)!r} contradicts the order given before it: "
+                "say the steps in order"
+            )
+        return body  # "Carol needs the bottle first": already first
+    return items
 
 
 def _plural(node: _Raw) -> bool:
@@ -681,7 +996,27 @@ def _main_clause_start(items: list[Item]) -> int | None:
                 return k
             if j + 1 < len(items) and items[j].kind == "ent" and _is_verb(items[j + 1]):
                 return k
-    return commas[0] if len(commas) == 1 else None
+    if len(commas) == 1:
+        return commas[0]
+    if commas:
+        return None
+    # no comma: the main clause starts at the first verb after the subordinate clause has its
+    # own predicate and a name ("as soon as the cup is on the shelf give Carol the apple")
+    predicate = named = False
+    for k in range(1, len(items)):
+        it = items[k]
+        if it.kind == "ent":
+            named = True
+        elif _is(it, "aux") and it.text.lower() in ("is", "are", "was", "were", "'s"):
+            predicate = True
+        elif _is_verb(it):
+            if _is(items[k - 1], "aux", "subject", "to") or _is_verb(items[k - 1]):
+                predicate = True
+            elif predicate and named:
+                return k
+            else:
+                predicate = True
+    return None
 
 
 def _merge_sep(a: str, b: str, items: list[Item]) -> str:

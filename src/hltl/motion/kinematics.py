@@ -178,6 +178,8 @@ class Arm:
         tol_rot: float = 1e-2,
         max_iter: int = 150,
         accept: Callable[[FloatArray], bool] | None = None,
+        prefer: Joints | None = None,
+        solutions: int = 3,
     ) -> IkResult:
         """Damped least squares IK with joint limits and random restarts.
 
@@ -188,6 +190,8 @@ class Arm:
             starts: number of starts (q0 plus random configurations within the limits).
             accept: an extra test a solution must pass (e.g. collision-free); a converged
                 solution it rejects makes the reason ``collision``.
+            prefer: when given, up to ``solutions`` solutions are collected and the one nearest
+                ``prefer`` in joint space is returned (a short, predictable motion).
 
         Returns:
             An :class:`IkResult`; ``reason`` is ``out_of_reach``, ``joint_limit`` or ``collision``
@@ -203,6 +207,7 @@ class Arm:
         first = near.pop(0) if q0 is None else np.asarray(q0, dtype=float)
         rejected = False
         best: tuple[float, float, FloatArray] | None = None
+        found: list[tuple[float, FloatArray, float, float, int]] = []
         total_iter = 0
         for k in range(starts):
             if k == 0:
@@ -215,11 +220,20 @@ class Arm:
             total_iter += it
             if ep <= tol_pos and er <= tol_rot:
                 if self.above_table(q) and (accept is None or accept(q)):
-                    return IkResult(tuple(float(v) for v in q), None, ep, er, total_iter, k + 1)
+                    if prefer is None:
+                        return IkResult(_q(q), None, ep, er, total_iter, k + 1)
+                    gap = float(np.max(np.abs(q - np.asarray(prefer, dtype=float))))
+                    found.append((gap, q, ep, er, k + 1))
+                    if len(found) >= solutions:
+                        break
+                    continue
                 rejected = True
                 continue
             if best is None or ep + 0.1 * er < best[0] + 0.1 * best[1]:
                 best = (ep, er, q)
+        if found:
+            _, q, ep, er, k = min(found, key=lambda f: f[0])
+            return IkResult(_q(q), None, ep, er, total_iter, k)
         if rejected:
             return IkResult(None, COLLISION, 0.0, 0.0, total_iter, starts)
         assert best is not None
@@ -316,10 +330,16 @@ class Arm:
         down = rotation_z_to((0.0, 0.0, -1.0), (1.0, 0.0, 0.0))
         seed_q = self.neutral()
         self.home = seed_q
-        res = self.ik(target, down, seed_q, starts=16, seed=7)
+        # among several solutions, the one nearest the upright zero pose: elbow up, wrist level
+        res = self.ik(target, down, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8)
         if res.q is None:
-            res = self.ik(target + np.array([0.2, 0.0, 0.1]), None, seed_q, starts=16, seed=7)
+            lifted = target + np.array([0.2, 0.0, 0.1])
+            res = self.ik(lifted, None, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8)
         return seed_q if res.q is None else np.asarray(res.q)
+
+
+def _q(q: FloatArray) -> tuple[float, ...]:
+    return tuple(float(v) for v in q)
 
 
 def _local(q: Joints | FloatArray) -> FloatArray:

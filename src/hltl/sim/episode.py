@@ -7,7 +7,7 @@ every tick. Everything random is drawn from the episode's seed, so an episode is
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
@@ -90,10 +90,48 @@ class Cell(RobotDriver, Protocol):
 CellFactory = Callable[..., Cell]
 
 
+class Agent(Protocol):
+    """Whatever decides the robots' actions in an episode: hltl's
+    :class:`~hltl.execution.executor.Executor` or a baseline (:mod:`hltl.bench.baselines`).
+
+    The loop hands it the time, what perception sees and what people say; it polls and commands
+    the robots through the driver it was built with.
+    """
+
+    @property
+    def status(self) -> ExecStatus: ...
+
+    @property
+    def reason(self) -> str:
+        """Why it stopped (``all goals met`` when done)."""
+        ...
+
+    @property
+    def accepted_at(self) -> float | None:
+        """When the task was last seen done."""
+        ...
+
+    def instruct(self, t: float, text: str) -> None: ...
+
+    def update(
+        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+    ) -> None: ...
+
+    def give_up(self, reason: str) -> None: ...
+
+    def done_formulas(self) -> frozenset[str]:
+        """Names of the spec's formulas done so far."""
+        ...
+
+
+# Builds the agent of an episode from the simulator (its robots' driver) and the log.
+AgentFactory = Callable[[Cell, EventLog], Agent]
+
+
 class EpisodeHook(Protocol):
     """Sees the episode as it runs (tests, live displays, custom tasks)."""
 
-    def on_tick(self, t: float, sim: Cell, executor: Executor) -> None: ...
+    def on_tick(self, t: float, sim: Cell, executor: Agent) -> None: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -124,6 +162,8 @@ def run_episode(
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
     simulator: CellFactory = Simulator,
+    agent: AgentFactory | None = None,
+    start_config: Mapping[str, Any] | None = None,
 ) -> Episode:
     """Run one closed-loop episode in the simulator.
 
@@ -144,6 +184,10 @@ def run_episode(
             log=)``: the discrete-event :class:`Simulator` or one with the same interface
             (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`, or
             :func:`hltl.bus.driver.bus_cell`'s, which drives a simulator node over Zenoh).
+        agent: builds who decides (default: hltl's executor with ``planner``, ``grounder``,
+            ``predictor`` and ``config.executor``).
+        start_config: what the ``episode_start`` record says about the configuration
+            (default: ``config.to_dict()``).
 
     Raises:
         ValueError: neither or both of ``spec`` and ``instruction`` given.
@@ -154,15 +198,19 @@ def run_episode(
     schedule = EventSchedule() if events is None else events
     with EventLog(log_path, on_record) as log:
         sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
-        executor = Executor(
-            scene,
-            spec,
-            sim,
-            log=log,
-            planner=planner,
-            grounder=grounder,
-            predictor=predictor,
-            config=cfg.executor,
+        executor: Agent = (
+            Executor(
+                scene,
+                spec,
+                sim,
+                log=log,
+                planner=planner,
+                grounder=grounder,
+                predictor=predictor,
+                config=cfg.executor,
+            )
+            if agent is None
+            else agent(sim, log)
         )
         log.emit(
             0.0,
@@ -173,7 +221,7 @@ def run_episode(
             instruction=instruction,
             events=schedule.to_list(),
             seed=seed,
-            config=cfg.to_dict(),
+            config=cfg.to_dict() if start_config is None else dict(start_config),
         )
         if instruction is not None:
             executor.instruct(0.0, instruction)
@@ -205,7 +253,7 @@ def run_episode(
             success=success,
             reason=executor.reason,
             time_cost=round(time_cost, 6),
-            done=sorted(executor.monitor.done(executor.q)) if executor.monitor else [],
+            done=sorted(executor.done_formulas()),
         )
         records = tuple(log.records)
     return Episode(records, compute_metrics(records), seed)

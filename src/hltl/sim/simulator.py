@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, vec
+from hltl.motion.trajectory import MotionPlan
 from hltl.sim.events import (
     EventSchedule,
     HumanMove,
@@ -392,7 +393,8 @@ class Simulator:
         t = self.now if t is None else t
         return frozenset(r for r, u in self._down_until.items() if u > t + _EPS)
 
-    def start(self, action: Action, t: float) -> Handle:
+    def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
+        # the discrete simulator times actions with its cost model: trajectories do not apply
         handle = Handle(self._next_id, action, self.now)
         self._next_id += 1
         world = self.true_world()

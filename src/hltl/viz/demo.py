@@ -25,11 +25,6 @@ if TYPE_CHECKING:  # kept out of the import: `hltl --help` reads this module's d
     from hltl.world.scene import Scene
 
 DEMO_INSTRUCTION = "Give Person A the bottle and Person B the chips"
-# Also in examples/events/demo.yaml (a test keeps the two equal).
-DEMO_EVENTS: tuple[dict[str, Any], ...] = (
-    {"t": 0.0, "type": "human_move", "human": "A", "to": [0.45, 0.75, 0.0], "speed": 1.0},
-    {"t": 0.7, "type": "human_move", "human": "A", "to": [1.1, 1.05, 0.0], "speed": 1.5},
-)
 DEFAULT_OUT = Path("out/demo")
 
 
@@ -42,9 +37,9 @@ def demo_scene() -> Scene:
 
 def demo_events(scene: Scene) -> EventSchedule:
     """The demo's events (Person A walks over to r2's side during the handovers)."""
-    from hltl.sim.events import events_from_dict
+    from hltl.sim.dynamic import fig1_events
 
-    return events_from_dict({"events": [dict(e) for e in DEMO_EVENTS]}, scene, "demo events")
+    return fig1_events(scene)
 
 
 def story(records: Sequence[Mapping[str, Any]]) -> dict[str, bool]:
@@ -110,7 +105,7 @@ def run_demo(
     Args:
         scene: the cell (default: the embedded Fig. 1 cell).
         instruction: the task in English (grounded offline).
-        events: dynamic events (default: :data:`DEMO_EVENTS` on ``scene``).
+        events: dynamic events (default: :data:`hltl.sim.dynamic.FIG1_EVENTS` on ``scene``).
         seed: the episode's seed.
         out: folder for the log and the pictures.
         short: fewer, smaller animation frames (quick, for tests).

@@ -13,11 +13,12 @@ import statistics
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
+from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
 from hltl.sim.episode import Episode, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, HumanMove
 from hltl.sim.metrics import percentile
-from hltl.sim.scenarios import Scenario, generate
+from hltl.sim.scenarios import PAPER_CONFIGS, Scenario, generate, scenario_name
 
 Config = tuple[int, int, str | None]  # (deliveries, robots, layout)
 
@@ -122,3 +123,30 @@ def format_rows(rows: Sequence[ReplanRow]) -> str:
             f"{r.replans} | {r.takeovers} | {_fmt(r.median_ms)} | {_fmt(r.p95_ms)} |"
         )
     return "\n".join(lines)
+
+
+def replan_configs(text: str) -> list[Config]:
+    """The paper configurations named in ``text`` (comma-separated; empty: all of them).
+
+    Raises:
+        HltlError: a name that is not a paper configuration.
+    """
+    by_name = {scenario_name(*c): c for c in PAPER_CONFIGS}
+    wanted = [c.strip() for c in text.split(",") if c.strip()] or list(by_name)
+    unknown = [c for c in wanted if c not in by_name]
+    if unknown:
+        raise HltlError(
+            f"--configs: unknown configuration {unknown[0]!r}; expected one of "
+            + ", ".join(by_name)
+        )
+    return [by_name[c] for c in wanted]
+
+
+def replan_section(command: str, machine: str, table: str) -> str:
+    """The docs/benchmarks.md section of a replan run."""
+    return (
+        f"Command: `{command}`  \n"
+        f"Machine: {machine}. "
+        "Latency is the planner's wall-clock time per replan on the critical path (LLM time "
+        "excluded); each episode has a person walking across the cell midway.\n\n" + table
+    )

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import re
 import statistics
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
+from hltl.errors import HltlError
 from hltl.planner import PlanStatus, plan
+from hltl.sim.scenarios import PAPER_CONFIGS, Scenario, generate, scenario_name
 
 
 @dataclass(frozen=True, slots=True)
@@ -26,7 +29,7 @@ class PlannerRow:
 
 
 def bench_planner(
-    scenarios: Iterable[tuple[str, object]],
+    scenarios: Iterable[tuple[str, Scenario]],
     *,
     repeats: int = 3,
     timeout: float = 60.0,
@@ -38,11 +41,8 @@ def bench_planner(
     ``scenarios`` yields (configuration name, Scenario); several scenarios may share a name
     (different seeds) and are pooled into one row.
     """
-    from hltl.sim.scenarios import Scenario
-
     groups: dict[str, list[Scenario]] = {}
     for name, sc in scenarios:
-        assert isinstance(sc, Scenario)
         groups.setdefault(name, []).append(sc)
     rows: list[PlannerRow] = []
     for name, scs in groups.items():
@@ -90,3 +90,37 @@ def format_planner_table(rows: Sequence[PlannerRow]) -> str:
             f"{r.max_ms:.1f} | {r.expanded:.0f} | {ms} | {r.status} |"
         )
     return "\n".join(lines)
+
+
+def planner_work(
+    seeds: int, scaling: str = "", *, scaling_only: bool = False
+) -> list[tuple[str, Scenario]]:
+    """The (configuration, scenario) list of ``hltl bench planner``: the paper configurations
+    (unless ``scaling_only``) and line layouts of the ``scaling`` sizes (``"8x8,12x12"``),
+    ``seeds`` generated instances each.
+
+    Raises:
+        HltlError: ``seeds`` below 1 or a size that is not ROBOTSxTASKS.
+    """
+    if seeds < 1:
+        raise HltlError("--repeats and --seeds must be at least 1")
+    work: list[tuple[str, Scenario]] = []
+    for n_task, n_robot, layout in () if scaling_only else PAPER_CONFIGS:
+        name = scenario_name(n_task, n_robot, layout)
+        work += [(name, generate(n_task, n_robot, layout, seed)) for seed in range(seeds)]
+    for size in filter(None, (s.strip() for s in scaling.split(","))):
+        m = re.fullmatch(r"(\d+)x(\d+)", size)
+        if not m:
+            raise HltlError(f"--scaling: {size!r} is not ROBOTSxTASKS (e.g. 8x8)")
+        r, t = int(m.group(1)), int(m.group(2))
+        work += [(scenario_name(t, r, "line"), generate(t, r, "line", s)) for s in range(seeds)]
+    return work
+
+
+def planner_section(command: str, machine: str, rows: Sequence[PlannerRow]) -> str:
+    """The docs/benchmarks.md section of a planner run."""
+    return (
+        f"Command: `{command}`  \n"
+        f"Machine: {machine}. Times include compiling monitors from the automaton cache.\n\n"
+        + format_planner_table(rows)
+    )

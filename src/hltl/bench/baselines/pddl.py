@@ -8,7 +8,7 @@ Needs the ``baselines`` extra (``unified-planning``, ``up-fast-downward``). The 
   overlap and nobody blocks the rendezvous), ``serves(r, u)``;
 * the four skills as instantaneous actions with the preconditions and effects of
   docs/model.md, one action at a time (a sequential plan);
-* the goal: the spec flattened (:mod:`hltl.sim.baselines.flat`), its eventualities as goal
+* the goal: the spec flattened (:mod:`hltl.bench.baselines.flat`), its eventualities as goal
   atoms, ``&``/``|`` as conjunction/disjunction; a non-strict ordering ``F (a & F b)`` (``a``
   an event, not itself an eventuality: ``F (F a & F b)`` is just ``F a & F b``) becomes
   a precondition of b's delivering action: a's object is already delivered (at most one
@@ -121,7 +121,7 @@ def build_problem(scene: Scene, spec: HSpec, world: WorldState | None = None) ->
     Int, MinimizeActionCosts, Object = ups.Int, ups.MinimizeActionCosts, ups.Object
     Problem, UserType, UAnd, UOr = ups.Problem, ups.UserType, ups.And, ups.Or
 
-    from hltl.sim.baselines.flat import flatten
+    from hltl.bench.baselines.flat import flatten
 
     w = initial_world(scene) if world is None else world
     flat, _ = flatten(spec)

@@ -2,7 +2,7 @@
 
 As in SMART-LLM (Kannan et al.), the model is shown the robots, objects and people and asked to
 decompose the instruction into subtasks, allocate robots and write code that calls the skill
-functions. The "-R" variant of the paper replans: the loop (:mod:`hltl.sim.baselines.loop`) asks
+functions. The "-R" variant of the paper replans: the loop (:mod:`hltl.bench.baselines.loop`) asks
 again, from the current state, when a new task arrives or the next step fails the feasibility
 check.
 
@@ -27,7 +27,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from hltl.sim.baselines.loop import PlanContext, Script
+from hltl.bench.baselines.policy import PlanContext, Script
 from hltl.skills.library import Action
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from hltl.cli.bench import write_section
+from hltl.bench.markdown import write_section
 from hltl.cli.main import main
 
 

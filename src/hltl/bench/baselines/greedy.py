@@ -17,8 +17,8 @@ import itertools
 from collections import deque
 from dataclasses import dataclass
 
-from hltl.sim.baselines.loop import PlanContext, Script
-from hltl.sim.baselines.model import Liveness, apply_step
+from hltl.bench.baselines.model import Liveness, apply_step
+from hltl.bench.baselines.policy import PlanContext, Script
 from hltl.skills.library import Action
 from hltl.skills.semantics import check_action
 from hltl.spec.hierarchy import HSpec

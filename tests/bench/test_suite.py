@@ -9,21 +9,19 @@ from pathlib import Path
 
 import pytest
 
-from hltl.cli.main import main
-from hltl.grounding.tokens import estimate_grounding_tokens
-from hltl.planner import PlanStatus, plan
-from hltl.sim.events import HumanMove, Instruction
-from hltl.sim.scenarios import delivery_chain
-from hltl.sim.suite import (
+from hltl.bench.suite import (
     TrialJob,
     TrialResult,
-    config_names,
-    full_spec,
     jobs_for,
-    make_trial,
     run_suite,
     run_trial,
 )
+from hltl.cli.main import main
+from hltl.grounding.tokens import estimate_grounding_tokens
+from hltl.planner import PlanStatus, plan
+from hltl.sim.dynamic import config_names, full_spec, make_trial
+from hltl.sim.events import HumanMove, Instruction
+from hltl.sim.scenarios import delivery_chain
 from hltl.world.geometry import human_in_workspace
 
 

@@ -1,16 +1,11 @@
-"""The closed loop of the baselines: plan a script, check every step, dispatch, replan.
+"""The closed-loop baselines as agents of the one episode loop (``run_episode``).
 
-The loop mirrors :func:`hltl.sim.episode.run_episode`: the same
-:class:`~hltl.sim.simulator.Simulator` (robots, people, events, physics), the same tick, the
-same log records (so
-:func:`~hltl.sim.metrics.compute_metrics` and :func:`~hltl.sim.invariants.check_invariants` score
-it), the same referee for the task (the spec the offline grounder gives the instruction, updated
-for every GOAL, with hltl's monitors). What differs is who decides the actions: a
-:class:`Policy` returns a *script*, a sequence of synchronous steps.
-
-Before every dispatch each action of the step goes through
-:func:`~hltl.skills.semantics.check_action` against the latest perceived world (and the step
-through the shared-robot/object check). A refused step is never dispatched. It is
+Same simulator, tick, log records and referee (the offline grounder's spec, updated for every
+GOAL, with hltl's monitors) as hltl; what differs is who decides: a :class:`Policy` returns a
+*script*, a sequence of synchronous steps. Before every dispatch each action of the step goes
+through :meth:`~hltl.skills.semantics.ActionSemantics.transition` against the latest perceived
+world (and the step through the shared-robot/object check). A refused step is never dispatched.
+It is
 
 * a **violation** when the step was already infeasible in the world the policy planned for
   (that world advanced by the script's own earlier steps): the policy's own error, logged as a
@@ -25,81 +20,27 @@ when their precondition breaks.
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol
 
+from hltl.bench.baselines.model import Violation, apply_step, check_step
+from hltl.bench.baselines.policy import PlanContext, Policy, Script
+from hltl.errors import GroundingError
 from hltl.execution.drivers import ActionState, Handle
+from hltl.execution.executor import ExecStatus
 from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
-from hltl.sim.baselines.model import Violation, apply_step, check_step
+from hltl.grounding.offline import OfflineGrounder
+from hltl.grounding.update import carry_over
+from hltl.sim.episode import Cell, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
-from hltl.sim.metrics import Metrics, compute_metrics
-from hltl.sim.simulator import Simulator
+from hltl.sim.metrics import Metrics
 from hltl.skills.library import Action, Transition, step_symbol
-from hltl.skills.semantics import ActionSemantics, Infeasible, check_action
+from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.geometry import Context
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
-
-if TYPE_CHECKING:
-    from hltl.sim.suite import Trial, TrialResult
-
-
-@dataclass(frozen=True, slots=True)
-class PlanContext:
-    """What a policy sees when asked for a script.
-
-    Attributes:
-        scene: the cell.
-        world: the latest perceived world (objects' places, people, hands, robots down).
-        spec: the task as the referee grounds it (for policies that read specs; the LLM
-            baseline reads ``instructions`` instead).
-        monitor, q: the referee's monitors and their state (what is done).
-        done: names of the spec's formulas already done.
-        instructions: everything said so far, in order.
-        trigger: why the policy is asked (``initial``, ``goal``, ``precondition``…).
-    """
-
-    scene: Scene
-    world: WorldState
-    spec: HSpec
-    monitor: HierarchyMonitor
-    q: MonitorState
-    done: frozenset[str]
-    instructions: tuple[str, ...]
-    trigger: str
-
-
-@dataclass(frozen=True, slots=True)
-class Script:
-    """A policy's answer: synchronous steps, each a tuple of actions.
-
-    Attributes:
-        steps: the plan.
-        tokens: LLM tokens this answer cost (prompt + completion).
-        queries: LLM queries made for it.
-        error: set when the answer could not be executed at all (e.g. a script that does not
-            parse); the trial then fails.
-        text: the LLM's raw answer, for the log.
-    """
-
-    steps: tuple[tuple[Action, ...], ...] = ()
-    tokens: int = 0
-    queries: int = 0
-    error: str | None = None
-    text: str = ""
-
-
-class Policy(Protocol):
-    """Decides actions for the baseline loop."""
-
-    name: str
-    #: replan when the context ℓ changes (a person moved), as hltl's executor does
-    replan_on_context: bool
-
-    def plan(self, ctx: PlanContext) -> Script: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -135,24 +76,26 @@ class _Run:
     state: ActionState | None = None
 
 
-class _Loop:
-    def __init__(
-        self,
-        policy: Policy,
-        scene: Scene,
-        events: EventSchedule,
-        seed: int,
-        cfg: LoopConfig,
-        log: EventLog,
-    ) -> None:
-        from hltl.grounding.offline import OfflineGrounder
+class BaselineAgent:
+    """A baseline policy behind the episode loop's agent protocol (:class:`hltl.sim.episode.Agent`).
 
+    The task is refereed as for hltl: the offline grounder's spec, updated for every GOAL, and
+    hltl's monitors; the policy only decides the actions.
+    """
+
+    def __init__(
+        self, policy: Policy, scene: Scene, sim: Cell, log: EventLog, cfg: LoopConfig
+    ) -> None:
         self.policy = policy
         self.scene = scene
         self.cfg = cfg
         self.log = log
         self.referee = OfflineGrounder()
-        self.sim = Simulator(scene, events, seed=seed, log=log)
+        self.semantics = ActionSemantics.of(scene)
+        self.sim = sim
+        self._obs: WorldState | None = None
+        self.status = ExecStatus.RUNNING
+        self.reason = ""
         self.spec: HSpec | None = None
         self.monitor: HierarchyMonitor | None = None
         self.q: MonitorState = ()
@@ -165,8 +108,6 @@ class _Loop:
         self.trigger: list[str] = ["initial"]
         self.steps = 0
         self.t = 0.0
-        self.done_flag = False
-        self.gave_up: str | None = None
         self.accepted_at: float | None = None
         self.wait_since: float | None = None
         self.tokens = self.queries = 0
@@ -175,10 +116,8 @@ class _Loop:
 
     # -- task (the referee) ---------------------------------------------------------------------
 
-    def instruct(self, text: str) -> None:
-        from hltl.errors import GroundingError
-        from hltl.grounding.update import carry_over
-
+    def instruct(self, t: float, text: str) -> None:
+        self.t = max(self.t, t)
         try:
             g = self.referee.ground(text, self.scene, running=self.spec)
         except GroundingError as exc:
@@ -195,21 +134,29 @@ class _Loop:
             self.t, "grounding", text=text, tokens=0, spec=spec_to_dict(g.spec), referee=True
         )
         self.trigger.append("initial" if len(self.instructions) == 1 else "goal")
-        if self.done_flag:
-            self.done_flag = False
+        if self.status is ExecStatus.DONE:
+            self.status = ExecStatus.RUNNING
+            self.reason = ""
             self.accepted_at = None
 
     def world(self) -> WorldState:
-        w = self.sim.observe(self.t)
+        w = self.sim.observe(self.t) if self._obs is None else self._obs
         return w.with_unavailable(self.sim.unavailable(self.t)).with_time(self.t)
+
+    def done_formulas(self) -> frozenset[str]:
+        return frozenset() if self.monitor is None else self.monitor.done(self.q)
 
     # -- one tick -------------------------------------------------------------------------------
 
-    def update(self) -> None:
+    def update(
+        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+    ) -> None:
+        self.t = t
+        self._obs = observation
         self.poll()
-        for text in self.sim.take_instructions():
-            self.instruct(text)
-        if self.gave_up is not None:
+        for text in instructions:
+            self.instruct(t, text)
+        if self.status is ExecStatus.GAVE_UP:
             return
         if self.running:
             if all(r.state is not None for r in self.running):
@@ -217,7 +164,7 @@ class _Loop:
             else:
                 self.safety()
         for _ in range(8):
-            if self.running or self.gave_up is not None or self.monitor is None:
+            if self.running or self.status is not ExecStatus.RUNNING or self.monitor is None:
                 return
             if not self.decide():
                 return
@@ -263,7 +210,7 @@ class _Loop:
         for run in self.running:
             if run.state is not None:
                 continue
-            reason = check_action(run.action, self.scene, world)
+            reason = self.semantics.check(run.action, world)
             if reason is None:
                 continue
             self.sim.halt(run.handle, self.t, reason)
@@ -290,7 +237,7 @@ class _Loop:
             self.end_step()
 
     def _done(self) -> list[str]:
-        return sorted(self.monitor.done(self.q)) if self.monitor is not None else []
+        return sorted(self.done_formulas())
 
     # -- deciding -------------------------------------------------------------------------------
 
@@ -298,7 +245,8 @@ class _Loop:
         """One decision; True when another round may follow in the same tick."""
         assert self.monitor is not None and self.spec is not None
         if self.monitor.accepted(self.q):
-            self.done_flag = True
+            self.status = ExecStatus.DONE
+            self.reason = "all goals met"
             self.trigger.clear()
             return False
         world = self.world()
@@ -323,7 +271,7 @@ class _Loop:
                 self.give_up(f"{self.queries} LLM queries without finishing the task")
                 return False
             self.replan(why, world, ctx)
-            if self.gave_up is not None:
+            if self.status is ExecStatus.GAVE_UP:
                 return False
             script = self.script
             assert script is not None
@@ -412,7 +360,6 @@ class _Loop:
             )
 
     def dispatch(self, step: Sequence[Action], world: WorldState) -> None:
-        sem = ActionSemantics.of(self.scene)
         self.log.emit(
             self.t,
             "dispatch",
@@ -424,7 +371,7 @@ class _Loop:
             done=self._done(),
         )
         for a in step:
-            tr = sem.transition(a, world)
+            tr = self.semantics.transition(a, world)
             assert not isinstance(tr, Infeasible)  # check_step passed
             handle = self.sim.start(a, self.t)
             self.running.append(_Run(a, handle, tr))
@@ -445,7 +392,7 @@ class _Loop:
             self.give_up(f"waited {self.cfg.max_wait:g} s without progress ({reason})")
 
     def give_up(self, reason: str) -> None:
-        if self.gave_up is not None:
+        if self.status is ExecStatus.GAVE_UP:
             return
         for run in self.running:
             if run.state is None:
@@ -460,7 +407,8 @@ class _Loop:
                     end=round(self.t, 6),
                 )
         self.running = []
-        self.gave_up = reason
+        self.status = ExecStatus.GAVE_UP
+        self.reason = reason
         self.log.emit(self.t, "give_up", reason=reason, done=self._done())
 
 
@@ -475,19 +423,20 @@ def run_baseline_episode(
 ) -> BaselineEpisode:
     """Run one closed-loop episode of ``policy`` in the simulator (see the module docstring)."""
     cfg = LoopConfig() if config is None else config
-    schedule = EventSchedule() if events is None else events
-    log = EventLog()
-    loop = _Loop(policy, scene, schedule, seed, cfg, log)
-    log.emit(
-        0.0,
-        "episode_start",
-        scene=scene.to_dict(),
-        scene_source=scene.source,
-        spec=None,
+    agents: list[BaselineAgent] = []
+
+    def make(sim: Cell, log: EventLog) -> BaselineAgent:
+        agents.append(BaselineAgent(policy, scene, sim, log, cfg))
+        return agents[-1]
+
+    ep = run_episode(
+        scene,
         instruction=instruction,
-        events=schedule.to_list(),
+        events=events,
         seed=seed,
-        config={
+        config=EpisodeConfig(tick=cfg.tick, max_time=cfg.max_time),
+        agent=make,
+        start_config={
             "method": policy.name,
             "tick": cfg.tick,
             "max_time": cfg.max_time,
@@ -495,104 +444,15 @@ def run_baseline_episode(
             "max_queries": cfg.max_queries,
         },
     )
-    loop.instruct(instruction)
-    loop.update()
-    sim = loop.sim
-    while True:
-        if loop.gave_up is not None:
-            break
-        if loop.done_flag and not sim.pending_instructions():
-            break
-        if loop.t >= cfg.max_time - 1e-9:
-            loop.give_up(f"time limit of {cfg.max_time:g} s reached")
-            break
-        nxt = sim.next_event_time()
-        if loop.done_flag:
-            t_next = min(nxt, cfg.max_time)
-        else:
-            t_next = min(loop.t + cfg.tick, nxt, cfg.max_time)
-        sim.advance(t_next)
-        loop.t = t_next
-        loop.update()
-    success = loop.gave_up is None and loop.done_flag
-    time_cost = loop.accepted_at if success and loop.accepted_at is not None else loop.t
-    log.emit(
-        loop.t,
-        "episode_end",
-        success=success,
-        reason=loop.gave_up or "all goals met",
-        time_cost=round(time_cost, 6),
-        done=loop._done(),
-    )
-    records = tuple(log.records)
+    (agent,) = agents
     return BaselineEpisode(
-        records=records,
-        metrics=compute_metrics(records),
-        goals_met=success,
-        tokens=loop.tokens,
-        queries=loop.queries,
-        kinematic=loop.kinematic,
-        conflicts=loop.conflicts,
-        stale=loop.stale,
-        violations=tuple(loop.violation_notes),
-    )
-
-
-def make_policy(method: str, **options: Any) -> Policy:
-    """The policy of a closed-loop baseline (``greedy`` or ``smart-llm``)."""
-    if method == "greedy":
-        from hltl.sim.baselines.greedy import GreedyPolicy
-
-        return GreedyPolicy()
-    if method == "smart-llm":
-        from hltl.sim.baselines.smart_llm import SmartLLMPolicy
-
-        return SmartLLMPolicy(**options)
-    from hltl.errors import HltlError
-
-    raise HltlError(f"unknown baseline {method!r}; expected greedy or smart-llm")
-
-
-def run_baseline_trial(
-    method: str, trial: Trial, *, max_time: float = 120.0, **options: Any
-) -> TrialResult:
-    """Run a closed-loop baseline on a suite trial and score it like hltl."""
-    from hltl.sim.invariants import check_invariants
-    from hltl.sim.suite import TrialResult
-
-    policy = make_policy(method, **options)
-    ep = run_baseline_episode(
-        policy,
-        trial.scene,
-        trial.instruction,
-        events=trial.events,
-        seed=trial.seed,
-        config=LoopConfig(max_time=max_time),
-    )
-    m = ep.metrics
-    problems = check_invariants(ep.records)
-    return TrialResult(
-        method=method,
-        config=trial.config,
-        index=trial.index,
-        seed=trial.seed,
-        status="ok",
-        success=m.success and not problems,
-        goals_met=ep.goals_met,
-        reason=m.reason,
-        time_cost=m.time_cost if ep.goals_met else None,
-        tokens=ep.tokens,
-        queries=ep.queries,
-        replans=m.replans,
-        violations=m.violations,
-        kinematic=ep.kinematic,
-        conflicts=ep.conflicts,
-        stale=ep.stale,
-        invariant_problems=len(problems),
-        halts=m.halts,
-        h_idle=m.h_idle,
-        r_idle=m.r_idle,
-        c_act=m.c_act,
-        f_del=m.f_del,
-        details=tuple([*ep.violations[:5], *problems[:5]]),
+        records=ep.records,
+        metrics=ep.metrics,
+        goals_met=agent.status is ExecStatus.DONE,
+        tokens=agent.tokens,
+        queries=agent.queries,
+        kinematic=agent.kinematic,
+        conflicts=agent.conflicts,
+        stale=agent.stale,
+        violations=tuple(agent.violation_notes),
     )

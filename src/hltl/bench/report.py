@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from hltl.sim.suite import TrialResult
+from hltl.bench.suite import TrialResult
 
 Z95 = 1.959963984540054
 

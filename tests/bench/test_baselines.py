@@ -9,28 +9,24 @@ from typing import Any
 
 import pytest
 
-from hltl.planner import plan
-from hltl.sim.baselines.flat import flat_spec, flatten
-from hltl.sim.baselines.greedy import GreedyPolicy, chain
-from hltl.sim.baselines.loop import (
-    LoopConfig,
-    PlanContext,
-    Script,
-    run_baseline_episode,
-    run_baseline_trial,
-)
-from hltl.sim.baselines.model import Liveness, apply_step, check_step
-from hltl.sim.baselines.smart_llm import (
+from hltl.bench.baselines.flat import flat_spec, flatten
+from hltl.bench.baselines.greedy import GreedyPolicy, chain
+from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
+from hltl.bench.baselines.model import Liveness, apply_step, check_step
+from hltl.bench.baselines.policy import PlanContext, Script
+from hltl.bench.baselines.smart_llm import (
     ScriptError,
     SmartLLMPolicy,
     build_messages,
     extract_code,
     run_script,
 )
+from hltl.bench.suite import run_baseline_trial
+from hltl.planner import plan
+from hltl.sim.dynamic import full_spec, make_trial
 from hltl.sim.events import EventSchedule, HumanMove, Instruction
 from hltl.sim.invariants import check_invariants
 from hltl.sim.scenarios import generate, get
-from hltl.sim.suite import full_spec, make_trial
 from hltl.skills.library import Action
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.spec.monitor import HierarchyMonitor
@@ -418,7 +414,7 @@ needs_fd = pytest.mark.skipif(
 
 
 def test_goal_encoding_keeps_orderings_between_events_only() -> None:
-    from hltl.sim.baselines.pddl import goal_of
+    from hltl.bench.baselines.pddl import goal_of
     from hltl.spec.parser import parse_formula
 
     _, order = goal_of(parse_formula("F (delivered(a, A) & F delivered(b, B)) & F delivered(c, A)"))
@@ -430,7 +426,7 @@ def test_goal_encoding_keeps_orderings_between_events_only() -> None:
 @needs_fd
 @pytest.mark.parametrize("config", ["1-1", "4-1", "2-2", "4-4-line", "4-4-square"])
 def test_fast_downward_minimises_total_robot_time(config: str) -> None:
-    from hltl.sim.baselines.pddl import solve
+    from hltl.bench.baselines.pddl import solve
 
     t = make_trial(config, 0)
     spec = full_spec(t)
@@ -447,7 +443,7 @@ def test_fast_downward_minimises_total_robot_time(config: str) -> None:
 
 @needs_fd
 def test_fast_downward_plan_replays_in_the_skill_model() -> None:
-    from hltl.sim.baselines.pddl import solve
+    from hltl.bench.baselines.pddl import solve
 
     t = make_trial("2-4-line", 1)
     fd = solve(t.scene, full_spec(t))
@@ -469,7 +465,7 @@ def test_fast_downward_plan_replays_in_the_skill_model() -> None:
 
 @needs_fd
 def test_fast_downward_in_parallel_workers_does_not_mix_up_tasks() -> None:
-    from hltl.sim.suite import jobs_for, run_suite
+    from hltl.bench.suite import jobs_for, run_suite
 
     results = run_suite(jobs_for(["1-1", "2-2"], 3, ["fd"]), workers=2)
     assert [r.extra["fd"]["status"] for r in results] == ["solved"] * 6

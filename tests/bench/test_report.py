@@ -6,7 +6,7 @@ import statistics
 
 import pytest
 
-from hltl.sim.report import (
+from hltl.bench.report import (
     PAPER_TABLE_II,
     bootstrap_ci,
     failure_modes,
@@ -17,7 +17,8 @@ from hltl.sim.report import (
     summarise,
     wilson,
 )
-from hltl.sim.suite import TrialResult, config_names
+from hltl.bench.suite import TrialResult
+from hltl.sim.dynamic import config_names
 
 
 @pytest.mark.parametrize(

@@ -1,0 +1,1 @@
+"""Benchmark code behind ``hltl bench …``: corpora, measurements and their reports."""

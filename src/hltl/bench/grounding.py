@@ -1,0 +1,230 @@
+"""The grounding benchmark: paraphrase corpora scored by language equivalence and timed."""
+
+from __future__ import annotations
+
+import re
+import statistics
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+import yaml
+
+from hltl.errors import GroundingError, HltlError
+from hltl.grounding.tree import Group, Node, Op, Task
+from hltl.world.scene import Scene, load_scene
+
+Verdict = Literal["exact", "refused", "unclear", "wrong"]
+
+# The parts of the paraphrase corpus, relative to the repository root: tuning (developed
+# against), heldout (written first, measured before tuning), fresh (written after the grammar
+# work, measured once before any change it motivated).
+CORPUS_DIR = Path("tests/grounding/paraphrase")
+PARTS = ("tuning", "heldout", "fresh")
+
+_TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
+
+
+@dataclass(frozen=True, slots=True)
+class Entry:
+    """One instruction with the task tree it must mean (``want``) or ``None`` for a refusal."""
+
+    scene: str
+    text: str
+    want: Node | None
+    readings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Corpus:
+    name: str
+    scenes: dict[str, Scene]
+    entries: tuple[Entry, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Outcome:
+    entry: Entry
+    verdict: Verdict  # exact; refused (should be grounded); unclear (refusal lacks readings); wrong
+    ms: float
+    detail: str  # the error, or the grounded tree when wrong
+
+
+@dataclass(frozen=True, slots=True)
+class Score:
+    corpus: str
+    outcomes: tuple[Outcome, ...]
+
+    @property
+    def total(self) -> int:
+        return len(self.outcomes)
+
+    def count(self, verdict: Verdict) -> int:
+        return sum(1 for o in self.outcomes if o.verdict == verdict)
+
+    @property
+    def exact_pct(self) -> float:
+        return 100.0 * self.count("exact") / max(1, self.total)
+
+    @property
+    def median_ms(self) -> float:
+        return statistics.median(o.ms for o in self.outcomes) if self.outcomes else 0.0
+
+
+def parse_expectation(text: str) -> Node:
+    """Parse ``cup>A & (mug_red@shelf ; chips>B)`` into a task tree (see the corpus header)."""
+    tokens: list[str] = []
+    pos = 0
+    text = text.strip()
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if m is None or m.end() == pos:
+            raise ValueError(f"bad expectation {text!r} at {text[pos:]!r}")
+        tokens.append(m.group(1) or m.group(2))
+        pos = m.end()
+    k = 0
+
+    def peek() -> str | None:
+        return tokens[k] if k < len(tokens) else None
+
+    def take() -> str:
+        nonlocal k
+        if k >= len(tokens):
+            raise ValueError(f"bad expectation {text!r}: ends early")
+        k += 1
+        return tokens[k - 1]
+
+    def term() -> Node:
+        tok = take()
+        if tok == "(":
+            node = expr()
+            if take() != ")":
+                raise ValueError(f"bad expectation {text!r}: missing ')'")
+            return node
+        rel = take()
+        target = take()
+        if rel not in (">", "@"):
+            raise ValueError(f"bad expectation {text!r}: expected '>' or '@' after {tok!r}")
+        return Task("deliver" if rel == ">" else "place", tok, target)
+
+    ops: dict[str, Op] = {"&": "and", "|": "or", ";": "seq"}
+
+    def expr() -> Node:
+        kids = [term()]
+        op: str | None = None
+        while peek() in ops:
+            sym = take()
+            if op is not None and sym != op:
+                raise ValueError(f"bad expectation {text!r}: mixes {op!r} and {sym!r}")
+            op = sym
+            kids.append(term())
+        return kids[0] if op is None else Group(ops[op], tuple(kids))
+
+    node = expr()
+    if k != len(tokens):
+        raise ValueError(f"bad expectation {text!r}: trailing {tokens[k]!r}")
+    return node
+
+
+def load_corpus(path: Path, root: Path) -> Corpus:
+    """Read a paraphrase corpus file; scene paths are relative to ``root``."""
+    try:
+        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise HltlError(f"cannot read corpus {path}: {exc.strerror}") from exc
+    scenes = {k: load_scene(root / v) for k, v in data["scenes"].items()}
+    entries = []
+    for raw in data["entries"]:
+        if raw["scene"] not in scenes:
+            raise HltlError(f"{path}: unknown scene {raw['scene']!r} for {raw['text']!r}")
+        want = None if raw.get("reject") else parse_expectation(raw["want"])
+        entries.append(
+            Entry(raw["scene"], raw["text"], want, tuple(str(r) for r in raw.get("readings", ())))
+        )
+    return Corpus(path.stem, scenes, tuple(entries))
+
+
+def judge(entry: Entry, scene: Scene, ground: Callable[[str, Scene], Node]) -> Outcome:
+    """Ground one entry and judge it by language equivalence (hltl.spec.equivalence)."""
+    from hltl.grounding.offline import spec_of
+    from hltl.spec.equivalence import counterexample
+
+    t0 = time.perf_counter()
+    try:
+        got: Node | None = ground(entry.text, scene)
+        error = ""
+    except GroundingError as exc:
+        got, error = None, str(exc)
+    ms = 1000.0 * (time.perf_counter() - t0)
+    if got is None:
+        if entry.want is not None:
+            return Outcome(entry, "refused", ms, error)
+        missing = [r for r in entry.readings if r not in error]
+        return Outcome(entry, "unclear" if missing else "exact", ms, error)
+    if entry.want is None:
+        return Outcome(entry, "wrong", ms, show_tree(got))
+    same = counterexample(spec_of(got), spec_of(entry.want)) is None
+    return Outcome(entry, "exact", ms, "") if same else Outcome(entry, "wrong", ms, show_tree(got))
+
+
+def score(
+    corpus: Corpus,
+    ground: Callable[[str, Scene], Node],
+    on_outcome: Callable[[Outcome], None] | None = None,
+) -> Score:
+    """Judge every entry of ``corpus``; ``on_outcome`` sees each as it is done."""
+    outcomes = []
+    for entry in corpus.entries:
+        out = judge(entry, corpus.scenes[entry.scene], ground)
+        outcomes.append(out)
+        if on_outcome is not None:
+            on_outcome(out)
+    return Score(corpus.name, tuple(outcomes))
+
+
+def repository_root() -> Path:
+    """The checkout holding the corpus: the working directory, else the one hltl runs from."""
+    for root in (Path.cwd(), Path(__file__).resolve().parents[3]):
+        if (root / CORPUS_DIR).is_dir():
+            return root
+    raise HltlError(
+        f"no paraphrase corpus ({CORPUS_DIR}/): run 'hltl bench grounding' in a source checkout"
+    )
+
+
+def offline_tree(text: str, scene: Scene) -> Node:
+    """The offline grounder's task tree (what ``OfflineGrounder.ground`` encodes)."""
+    from hltl.grounding.offline import parse_instruction
+
+    return parse_instruction(text, scene)
+
+
+def _show(node: Node) -> str:
+    if isinstance(node, Task):
+        return f"{node.obj}{'>' if node.kind == 'deliver' else '@'}{node.target}"
+    sym = {"and": " & ", "or": " | ", "seq": " ; "}[node.op]
+    return "(" + sym.join(_show(c) for c in node.children) + ")"
+
+
+def show_tree(node: Node) -> str:
+    """A task tree in the corpus notation."""
+    text = _show(node)
+    return text[1:-1] if text.startswith("(") and text.endswith(")") else text
+
+
+def format_scores(scores: Sequence[Score]) -> str:
+    """A Markdown table: exact %, refusals that should have been groundings, wrong, median ms."""
+    lines = [
+        "| part | instructions | exact | refused (should ground) | refusal without readings "
+        "| wrong | median ms |",
+        "|---|---:|---:|---:|---:|---:|---:|",
+    ]
+    for s in scores:
+        lines.append(
+            f"| {s.corpus} | {s.total} | {s.exact_pct:.1f} % ({s.count('exact')}) "
+            f"| {s.count('refused')} | {s.count('unclear')} | {s.count('wrong')} "
+            f"| {s.median_ms:.2f} |"
+        )
+    return "\n".join(lines)

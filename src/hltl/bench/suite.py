@@ -1,0 +1,576 @@
+"""The paper's simulation suite (§V-A, Table II) with dynamics, run through the closed loop.
+
+Trials (a generated task plus an H-MOVE and a GOAL) come from the catalogue
+(:mod:`hltl.sim.dynamic`). :func:`run_trial` runs one method on one trial and returns a
+picklable :class:`TrialResult`; :func:`run_suite` runs many in worker processes. Methods:
+``hltl`` (the executor of :mod:`hltl.execution` with the offline grounder), ``greedy`` and
+``smart-llm`` (:mod:`hltl.bench.baselines`), all through :func:`hltl.sim.episode.run_episode`.
+The one-shot comparisons (flat LTLf, Fast Downward) live in :mod:`hltl.bench.baselines.flat`
+and :mod:`hltl.bench.baselines.pddl`.
+"""
+
+from __future__ import annotations
+
+import shlex
+import statistics
+import time
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import asdict, dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+from hltl.bench.baselines.flat import compare, sweep
+from hltl.bench.baselines.greedy import GreedyPolicy
+from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
+from hltl.bench.baselines.pddl import fd_unavailable, solve
+from hltl.bench.baselines.policy import Policy
+from hltl.bench.baselines.smart_llm import SmartLLMPolicy, llm_unavailable
+from hltl.errors import HltlError
+from hltl.execution.executor import ExecutorConfig
+from hltl.execution.log import Record
+from hltl.grounding.offline import OfflineGrounder
+from hltl.grounding.tokens import estimate_grounding_tokens
+from hltl.planner import plan
+from hltl.sim.dynamic import Trial, config_names, config_of, full_spec, make_trial, trial_seed
+from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.sim.invariants import check_invariants
+from hltl.sim.metrics import Metrics
+
+METHODS = ("hltl", "greedy", "smart-llm")
+ONE_SHOT = ("flat", "fd")
+
+
+# -- results ---------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class TrialResult:
+    """What one method scored on one trial (plain data: it crosses process boundaries).
+
+    ``status`` is ``ok`` (the episode ran; ``success`` says how it ended), ``not_run`` (the
+    method's backend is not configured here; ``reason`` says which) or ``error`` (the method
+    crashed; ``reason`` holds the exception, the trial counts as a failure).
+    """
+
+    method: str
+    config: str
+    index: int
+    seed: int
+    status: str
+    success: bool = False
+    goals_met: bool = False
+    reason: str = ""
+    time_cost: float | None = None
+    tokens: int = 0
+    queries: int = 0
+    est_tokens: int = 0
+    replans: int = 0
+    violations: int = 0
+    kinematic: int = 0
+    conflicts: int = 0
+    stale: int = 0
+    invariant_problems: int = 0
+    halts: int = 0
+    h_idle: float | None = None
+    r_idle: float | None = None
+    c_act: float | None = None
+    f_del: float | None = None
+    wall_s: float = 0.0
+    variant: str = "full"
+    details: tuple[str, ...] = field(default=())
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def tokens_per_query(self) -> float | None:
+        return self.tokens / self.queries if self.queries else None
+
+    @property
+    def est_tokens_per_query(self) -> float | None:
+        return self.est_tokens / self.queries if self.queries else None
+
+    def to_dict(self) -> dict[str, Any]:
+        d = asdict(self)
+        d["details"] = list(self.details)
+        d["extra"] = dict(self.extra)
+        d["tokens_per_query"] = self.tokens_per_query
+        d["est_tokens_per_query"] = self.est_tokens_per_query
+        return d
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> TrialResult:
+        d = {k: v for k, v in data.items() if k not in ("tokens_per_query", "est_tokens_per_query")}
+        d["details"] = tuple(d.get("details", ()))
+        return cls(**d)
+
+
+@dataclass(frozen=True, slots=True)
+class Variant:
+    """An executor variant for the ablation (Table III).
+
+    Attributes:
+        name: ``full``, ``no-pp`` (without predictive planning) or ``no-pmp`` (serial
+            replanning computation, see docs/evaluation.md).
+        predict: the executor's predictive planning and takeover.
+        plan_latency: simulated seconds every critical-path planner call costs before the next
+            dispatch (a predicted plan that takes over costs none).
+    """
+
+    name: str = "full"
+    predict: bool = True
+    plan_latency: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class TrialJob:
+    """One unit of work for a worker process."""
+
+    method: str
+    config: str
+    index: int
+    suite_seed: int = 0
+    variant: Variant = field(default_factory=Variant)
+    max_time: float = 120.0
+
+
+def run_trial(job: TrialJob) -> TrialResult:
+    """Run one job; never raises (a crash is an ``error`` result naming the exception)."""
+    t0 = time.perf_counter()
+    try:
+        trial = make_trial(job.config, job.index, job.suite_seed)
+    except HltlError as exc:
+        return TrialResult(
+            job.method,
+            job.config,
+            job.index,
+            trial_seed(job.suite_seed, job.index),
+            "error",
+            reason=f"trial generation failed: {exc}",
+            variant=job.variant.name,
+        )
+    try:
+        if job.method == "hltl":
+            res = _run_hltl(trial, job)
+        elif job.method in ("greedy", "smart-llm"):
+            res = run_baseline_trial(job.method, trial, max_time=job.max_time)
+        elif job.method in ONE_SHOT:
+            res = _run_one_shot(trial, job)
+        else:
+            raise HltlError(f"unknown method {job.method!r}; expected one of {', '.join(METHODS)}")
+    except Exception as exc:  # a crash is a failed trial, reported with its cause
+        res = TrialResult(
+            job.method,
+            job.config,
+            job.index,
+            trial.seed,
+            "error",
+            reason=f"{type(exc).__name__}: {exc}",
+            variant=job.variant.name,
+        )
+    return replace(res, wall_s=round(time.perf_counter() - t0, 4))
+
+
+def _scored(
+    method: str,
+    trial: Trial,
+    records: Sequence[Record],
+    m: Metrics,
+    *,
+    variant: str = "full",
+    notes: Sequence[str] = (),
+    **counts: Any,
+) -> TrialResult:
+    """A closed-loop episode's result: its metrics, judged with the log's invariants."""
+    problems = check_invariants(records)
+    end = [r for r in records if r["type"] == "episode_end"][-1]
+    goals_met = bool(end.get("success"))
+    return TrialResult(
+        method=method,
+        config=trial.config,
+        index=trial.index,
+        seed=trial.seed,
+        status="ok",
+        success=m.success and not problems,
+        goals_met=goals_met,
+        reason=m.reason,
+        time_cost=m.time_cost if goals_met else None,
+        replans=m.replans,
+        violations=m.violations,
+        invariant_problems=len(problems),
+        halts=m.halts,
+        h_idle=m.h_idle,
+        r_idle=m.r_idle,
+        c_act=m.c_act,
+        f_del=m.f_del,
+        variant=variant,
+        details=tuple([*notes[:5], *problems[:5]]),
+        **counts,
+    )
+
+
+def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
+    v = job.variant
+    cfg = EpisodeConfig(
+        max_time=job.max_time,
+        executor=ExecutorConfig(predict=v.predict, plan_latency=v.plan_latency),
+    )
+    ep = run_episode(
+        trial.scene,
+        instruction=trial.instruction,
+        events=trial.events,
+        seed=trial.seed,
+        config=cfg,
+        grounder=OfflineGrounder(),
+    )
+    m = ep.metrics
+    groundings = [r for r in ep.records if r["type"] == "grounding" and "error" not in r]
+    est = sum(estimate_grounding_tokens(str(r["text"]), trial.scene) for r in groundings)
+    return _scored(
+        "hltl",
+        trial,
+        ep.records,
+        m,
+        variant=v.name,
+        tokens=m.tokens,
+        queries=len(groundings),
+        est_tokens=est,
+        extra={"takeovers": m.takeovers, "planner_calls": m.planner_calls},
+    )
+
+
+def make_policy(method: str, **options: Any) -> Policy:
+    """The policy of a closed-loop baseline (``greedy`` or ``smart-llm``)."""
+    if method == "greedy":
+        return GreedyPolicy()
+    if method == "smart-llm":
+        return SmartLLMPolicy(**options)
+    raise HltlError(f"unknown baseline {method!r}; expected greedy or smart-llm")
+
+
+def run_baseline_trial(
+    method: str, trial: Trial, *, max_time: float = 120.0, **options: Any
+) -> TrialResult:
+    """Run a closed-loop baseline on a suite trial and score it like hltl."""
+    ep = run_baseline_episode(
+        make_policy(method, **options),
+        trial.scene,
+        trial.instruction,
+        events=trial.events,
+        seed=trial.seed,
+        config=LoopConfig(max_time=max_time),
+    )
+    return _scored(
+        method,
+        trial,
+        ep.records,
+        ep.metrics,
+        notes=ep.violations,
+        tokens=ep.tokens,
+        queries=ep.queries,
+        kinematic=ep.kinematic,
+        conflicts=ep.conflicts,
+        stale=ep.stale,
+    )
+
+
+def _run_one_shot(trial: Trial, job: TrialJob) -> TrialResult:
+    """Planning-only comparisons on the trial's whole task from the initial world."""
+    spec = full_spec(trial)
+    base = TrialResult(
+        job.method, trial.config, trial.index, trial.seed, "ok", variant=job.variant.name
+    )
+    if job.method == "flat":
+        cmp = compare(trial.scene, spec, limit=60.0)
+        return replace(base, success=cmp.flat.status == "ok", extra=cmp.to_dict())
+    missing = fd_unavailable()
+    if missing is not None:
+        return replace(base, status="not_run", reason=missing)
+    fd = solve(trial.scene, spec, timeout=60.0)
+    t0 = time.perf_counter()
+    ours = plan(trial.scene, spec, timeout=60.0)
+    seconds = time.perf_counter() - t0
+    d = trial.scene.duration_map() or {}
+    work = sum(d.get(a.skill, 0.0) for s in ours.steps for a in s.actions)
+    extra = {
+        "fd": fd.to_dict(),
+        "hltl": {
+            "status": ours.status.value,
+            "seconds": seconds,
+            "makespan": ours.makespan,
+            "work": round(work, 6),
+            "actions": sum(len(s.actions) for s in ours.steps),
+        },
+    }
+    return replace(base, success=fd.status == "solved", extra=extra)
+
+
+# -- running many ----------------------------------------------------------------------------------
+
+
+def jobs_for(
+    configs: Sequence[str],
+    trials: int,
+    methods: Sequence[str],
+    suite_seed: int = 0,
+    variants: Sequence[Variant] = (Variant(),),
+    max_time: float = 120.0,
+) -> list[TrialJob]:
+    """Every (method, variant, configuration, trial) job, configurations outermost."""
+    return [
+        TrialJob(m, c, i, suite_seed, v, max_time)
+        for c in configs
+        for i in range(trials)
+        for m in methods
+        for v in variants
+    ]
+
+
+def run_suite(
+    jobs: Sequence[TrialJob],
+    *,
+    workers: int = 2,
+    on_result: Callable[[TrialResult], None] | None = None,
+) -> list[TrialResult]:
+    """Run ``jobs`` in ``workers`` processes (1: in this process); results in job order.
+
+    Methods whose backend is not configured are answered without starting a process.
+    """
+    results: list[TrialResult | None] = [None] * len(jobs)
+    todo: list[int] = []
+    missing = {
+        "smart-llm": llm_unavailable() if any(j.method == "smart-llm" for j in jobs) else None,
+        "fd": fd_unavailable(),
+    }
+    for k, job in enumerate(jobs):
+        why = missing.get(job.method)
+        if why is not None:
+            res = TrialResult(
+                job.method,
+                job.config,
+                job.index,
+                trial_seed(job.suite_seed, job.index),
+                "not_run",
+                reason=why,
+                variant=job.variant.name,
+            )
+            results[k] = res
+            if on_result is not None:
+                on_result(res)
+        else:
+            todo.append(k)
+    if workers <= 1:
+        for k in todo:
+            res = run_trial(jobs[k])
+            results[k] = res
+            if on_result is not None:
+                on_result(res)
+    else:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            futures = {pool.submit(run_trial, jobs[k]): k for k in todo}
+            for fut in as_completed(futures):
+                res = fut.result()
+                results[futures[fut]] = res
+                if on_result is not None:
+                    on_result(res)
+    return [r for r in results if r is not None]
+
+
+def results_to_json(results: Iterable[TrialResult]) -> list[dict[str, Any]]:
+    return [r.to_dict() for r in results]
+
+
+# -- the commands ---------------------------------------------------------------------------------
+
+
+def configs_from(text: str) -> list[str]:
+    """Configuration names from a comma-separated list (empty: all twelve).
+
+    Raises:
+        HltlError: a name that is not a Table II configuration.
+    """
+    if not text.strip():
+        return list(config_names())
+    names = [c.strip() for c in text.split(",") if c.strip()]
+    for c in names:
+        config_of(c)
+    return names
+
+
+@dataclass(frozen=True, slots=True)
+class SuiteOptions:
+    """What ``hltl bench suite`` runs (its command-line options)."""
+
+    trials: int = 100
+    configs: str = ""
+    methods: str = "hltl,greedy,smart-llm,flat,fd"
+    jobs: int = 2
+    seed: int = 0
+    max_time: float = 120.0
+    flat_trials: int = 2
+    flat_sweep: str = "1,2,4,6,8,10,12"
+    flat_limit: float = 60.0
+    write: Path | None = None
+    figures: Path | None = None
+    json: Path | None = None
+
+    def __post_init__(self) -> None:
+        if self.trials < 1 or self.jobs < 1:
+            raise HltlError("--trials and --jobs must be at least 1")
+        for m in self.method_list:
+            if m not in (*METHODS, *ONE_SHOT):
+                raise HltlError(
+                    f"--methods: unknown method {m!r}; expected some of "
+                    f"{', '.join((*METHODS, *ONE_SHOT))}"
+                )
+
+    @property
+    def method_list(self) -> list[str]:
+        return [m.strip() for m in self.methods.split(",") if m.strip()]
+
+    @property
+    def loop_methods(self) -> list[str]:
+        return [m for m in self.method_list if m in METHODS]
+
+    def trial_jobs(self) -> list[TrialJob]:
+        """Closed-loop jobs first, then Fast Downward, then flat LTLf (fewer trials)."""
+        configs = configs_from(self.configs)
+        methods = self.method_list
+        jobs = jobs_for(configs, self.trials, self.loop_methods, self.seed, max_time=self.max_time)
+        if "fd" in methods:
+            jobs += jobs_for(configs, self.trials, ["fd"], self.seed)
+        if "flat" in methods:
+            jobs += jobs_for(configs, min(self.flat_trials, self.trials), ["flat"], self.seed)
+        return jobs
+
+    def sweep_sizes(self) -> list[int]:
+        """Task counts of the flat-LTLf growth sweep (none when flat is not run)."""
+        if "flat" not in self.method_list:
+            return []
+        return [int(x) for x in self.flat_sweep.split(",") if x.strip()]
+
+    def command(self) -> str:
+        parts = [
+            f"hltl bench suite --trials {self.trials}",
+            f"--methods {self.methods}",
+            f"--jobs {self.jobs} --seed {self.seed}",
+        ]
+        if self.configs:
+            parts.append(f"--configs {self.configs}")
+        if self.max_time != 120.0:
+            parts.append(f"--max-time {self.max_time:g}")
+        if "flat" in self.methods:
+            parts.append(
+                f"--flat-trials {self.flat_trials} --flat-sweep {shlex.quote(self.flat_sweep)}"
+            )
+        for flag, v in (("write", self.write), ("figures", self.figures), ("json", self.json)):
+            if v is not None:
+                parts.append(f"--{flag} {shlex.quote(str(v))}")
+        return " ".join(parts)
+
+
+@dataclass(frozen=True, slots=True)
+class SuiteRun:
+    """What a suite run measured."""
+
+    options: SuiteOptions
+    results: list[TrialResult]
+    wall_s: float
+    sweep_rows: list[dict[str, Any]]
+    sweep_s: float
+
+    @property
+    def configs(self) -> list[str]:
+        return configs_from(self.options.configs)
+
+    @property
+    def shown(self) -> list[str]:
+        """Closed-loop methods of Table II, in the paper's order."""
+        return [m for m in ("hltl", "greedy", "smart-llm") if m in self.options.loop_methods]
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "command": self.options.command(),
+            "wall_s": self.wall_s,
+            "results": results_to_json(self.results),
+            "flat_sweep": self.sweep_rows,
+        }
+
+
+def run_suite_command(
+    options: SuiteOptions, on_result: Callable[[TrialResult], None] | None = None
+) -> SuiteRun:
+    """Run every job of ``options`` and the flat-LTLf sweep."""
+    jobs = options.trial_jobs()
+    t0 = time.perf_counter()
+    results = run_suite(jobs, workers=options.jobs, on_result=on_result)
+    wall = time.perf_counter() - t0
+    sweep_rows: list[dict[str, Any]] = []
+    sweep_s = 0.0
+    sizes = options.sweep_sizes()
+    if sizes:
+        t1 = time.perf_counter()
+        sweep_rows = [
+            c.to_dict() for c in sweep(sizes, limit=options.flat_limit, seed=options.seed)
+        ]
+        sweep_s = time.perf_counter() - t1
+    return SuiteRun(options, results, wall, sweep_rows, sweep_s)
+
+
+@dataclass(frozen=True, slots=True)
+class AblationOptions:
+    """What ``hltl bench ablation`` runs (its command-line options)."""
+
+    trials: int = 20
+    configs: str = ""
+    jobs: int = 2
+    seed: int = 0
+    plan_latency: float = 0.2
+    serial_factor: float = 3.0
+    write: Path | None = None
+    json: Path | None = None
+
+    def __post_init__(self) -> None:
+        if self.trials < 1 or self.jobs < 1:
+            raise HltlError("--trials and --jobs must be at least 1")
+        if self.plan_latency < 0 or self.serial_factor < 1:
+            raise HltlError("--plan-latency must be >= 0 and --serial-factor >= 1")
+
+    def variants(self) -> list[Variant]:
+        """Table III's rows: full, without predictive planning, serial replanning."""
+        return [
+            Variant("full", True, self.plan_latency),
+            Variant("no-pp", False, self.plan_latency),
+            Variant("no-pmp", True, self.plan_latency * self.serial_factor),
+        ]
+
+    def trial_jobs(self) -> list[TrialJob]:
+        return jobs_for(
+            configs_from(self.configs), self.trials, ["hltl"], self.seed, self.variants()
+        )
+
+    def command(self) -> str:
+        return (
+            f"hltl bench ablation --trials {self.trials} --jobs {self.jobs} --seed {self.seed} "
+            f"--plan-latency {self.plan_latency:g} --serial-factor {self.serial_factor:g}"
+            + (f" --configs {self.configs}" if self.configs else "")
+            + (f" --write {shlex.quote(str(self.write))}" if self.write else "")
+            + (f" --json {shlex.quote(str(self.json))}" if self.json else "")
+        )
+
+
+def ablation_extra(
+    results: Sequence[TrialResult], variants: Sequence[Variant]
+) -> dict[str, dict[str, float]]:
+    """Success rate, mean time cost and takeovers per trial of each variant (Table III)."""
+    extra: dict[str, dict[str, float]] = {}
+    for v in variants:
+        rs = [r for r in results if r.variant == v.name and r.status == "ok"]
+        times = [r.time_cost for r in rs if r.success and r.time_cost is not None]
+        extra[v.name] = {
+            "success %": 100.0 * sum(r.success for r in rs) / max(1, len(rs)),
+            "time cost s": statistics.fmean(times) if times else float("nan"),
+            "takeovers/trial": statistics.fmean(r.extra.get("takeovers", 0) for r in rs)
+            if rs
+            else float("nan"),
+        }
+    return extra

@@ -1,0 +1,158 @@
+"""``hltl perceive``: run the perception stage on a frame folder and print what it sees."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "perceive",
+        help="objects in 3D and tracked people from an RGB-D frame folder",
+        description="Read a frame folder (camera.json, rgb/, depth/, optional seg/), detect and "
+        "localise objects, track people and tie them to the scene's people. Prints the last "
+        "frame's objects and people and what could not be decided.",
+    )
+    p.add_argument("frames", type=Path, metavar="FRAMES_DIR", help="frame folder")
+    p.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
+    p.add_argument(
+        "--backend",
+        choices=("segmentation", "depth-clusters"),
+        help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
+    )
+    p.add_argument(
+        "--people",
+        choices=("segmentation", "yolo", "none"),
+        help="person detector for the tracker (default: segmentation when the folder has seg/, "
+        "else yolo)",
+    )
+    p.add_argument("--select", metavar="WORDS", help="pick the object these words name (MiniLM)")
+    p.add_argument("--predictor", choices=("cv", "goal", "gru"), default="gru",
+                   help="forecast drawn by --viz (default: gru)")  # fmt: skip
+    p.add_argument("--json", action="store_true", help="print every frame's observation as JSON")
+    p.add_argument("--viz", type=Path, metavar="DIR", help="write overlay PNGs here")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from hltl.perception.frames import FrameFolder
+    from hltl.perception.observe import Perceiver
+    from hltl.world.scene import load_scene
+
+    folder = FrameFolder(args.frames)
+    scene = load_scene(args.scene) if args.scene is not None else None
+    has_seg = folder.frame(0).seg is not None
+    backend = args.backend or ("segmentation" if has_seg else "depth-clusters")
+    people = args.people or ("segmentation" if has_seg else "yolo")
+    try:
+        perceiver = Perceiver(scene, folder.camera, backend, people)
+    except ValueError as exc:
+        raise HltlError(str(exc)) from None
+    predictor = None
+    if args.viz is not None and scene is not None:
+        from hltl.perception.predict import make_predictor
+
+        predictor = make_predictor(args.predictor, scene)
+    observations = []
+    for frame in folder:
+        obs = perceiver.process(frame)
+        observations.append(obs)
+        if predictor is not None:
+            predictor.observe(obs.t, [(p.person, p.position) for p in obs.people if p.person])
+        if args.viz is not None:
+            from hltl.perception.overlay import draw_overlay
+
+            args.viz.mkdir(parents=True, exist_ok=True)
+            draw_overlay(frame, folder.camera, obs, predictor, perceiver).save(
+                args.viz / f"{frame.index:06d}.png"
+            )
+    selection = None
+    if args.select:
+        selection = _select(args.select, observations[-1], scene)
+    if args.json:
+        out: dict[str, Any] = {"frames": [o.to_dict() for o in observations]}
+        if selection is not None:
+            out["select"] = {
+                "query": selection.query,
+                "id": selection.key,
+                "similarity": round(selection.similarity, 3),
+                "ambiguous": selection.ambiguous,
+                "message": selection.describe(),
+            }
+        print(json.dumps(out))
+    else:
+        _print(observations, backend, people, perceiver)
+        if selection is not None:
+            print(f"select: {selection.describe()}")
+        if args.viz is not None:
+            print(f"overlays: {args.viz}/")
+    return 0
+
+
+def _select(words: str, obs: Any, scene: Any) -> Any:
+    from hltl.perception.language import Candidate, select
+
+    cands = []
+    for k, o in enumerate(obs.objects):
+        ws = [o.label]
+        key = o.id or f"{o.label}#{k}"
+        if scene is not None and o.id is not None:
+            so = scene.object(o.id)
+            ws += [so.id, so.category, *so.aliases]
+        cands.append(Candidate(key, tuple(dict.fromkeys(w.replace("_", " ") for w in ws))))
+    return select(words, cands)
+
+
+def _print(observations: list[Any], backend: str, people: str, perceiver: Any) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    console = Console(file=sys.stdout, highlight=False)
+    last = observations[-1]
+    ms = sorted(o.latency * 1000.0 for o in observations)
+    console.print(
+        f"{len(observations)} frame(s), backend {backend}, people by {people}; "
+        f"latency median {ms[len(ms) // 2]:.0f} ms, max {ms[-1]:.0f} ms; last frame t={last.t:g}"
+    )
+    t = Table(title="objects")
+    for c in ("id", "label", "position (m)", "radius", "height", "score", "pixels"):
+        t.add_column(c)
+    for o in last.objects:
+        t.add_row(
+            o.id or "-",
+            o.label,
+            ", ".join(f"{v:.3f}" for v in o.position),
+            f"{o.cylinder.radius:.3f}",
+            f"{o.cylinder.height:.3f}",
+            f"{o.score:.2f}",
+            str(o.pixels),
+        )
+    console.print(t)
+    t = Table(title="people")
+    for c in ("track", "id", "position (m)", "score"):
+        t.add_column(c)
+    for p in last.people:
+        t.add_row(
+            p.track, p.person or "-", ", ".join(f"{v:.3f}" for v in p.position), f"{p.score:.2f}"
+        )
+    console.print(t)
+    for label, items in (
+        ("not seen", last.missing),
+        ("matches no scene object", last.unmatched),
+        ("ambiguous", last.ambiguous),
+        ("no live track", last.lost),
+    ):
+        if items:
+            console.print(f"{label}: {', '.join(items)}")
+    tracker = perceiver.tracker
+    if tracker is not None and tracker.detector_name == "yolo":
+        console.print(
+            f"person detector: {tracker.detections} detections in {tracker.frames} frame(s), "
+            f"{tracker.rejected} rejected as too short for a person"
+        )

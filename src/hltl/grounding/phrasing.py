@@ -1,0 +1,553 @@
+"""How people phrase requests: rewrite lexed items into the offline grammar's plain form.
+
+Each pass either rewrites a phrasing into the form the parser reads, or refuses with the reason
+(docs/grounding.md, "What the offline grounder ignores and what makes it refuse"):
+
+- questions that are not requests ("where is the cup?", "is the apple on the shelf?") → refuse;
+- the speaker as recipient ("I need the apple", "get me the cup") → refuse; "I need X brought
+  to B" → "X to B";
+- "whichever …" → skipped (the alternatives are already an ``or``);
+- corrections: "the bottle, no, the cup", "— sorry, I mean the table", "no, give it to Bob";
+- "the red one", "the other one": the category of the last object named;
+- "that" / "this" / "those" without a name after them are pronouns;
+- person pronouns (he, him, she, her) → the one person named before, else refuse with the
+  readings; "them" for objects is left for the parser;
+- quantifiers folded into the object name after them: "a mug", "one of the mugs", "all the
+  mugs", "the two mugs", "everything"; exclusions ("except the mugs", "not the red one");
+- "Alice: the cup", "Bob - the chips": the person receives what follows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from hltl.errors import GroundingError
+from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref
+
+_END = frozenset({".", ";", "!", "?", ":"})
+_QUESTION_VERBS = frozenset(
+    {"is", "are", "was", "were", "does", "do", "did", "has", "have", "had", "isn"}
+)
+_PERSON_PRONOUNS = frozenset({"he", "him", "she", "her", "his", "hers"})
+_SPEAKER = frozenset({"i", "me", "us", "we", "myself"})
+_SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "also"})
+
+
+def _is(item: Item, *lemmas: str) -> bool:
+    return item.kind in ("word", "punct") and item.lemma in lemmas
+
+
+def _objects(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "object" for r in item.refs)
+
+
+def _humans(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "human" for r in item.refs)
+
+
+def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
+    items = _questions(items)
+    items = _whichever(items)
+    items = _one_anaphora(items, lexicon)
+    items = _demonstratives(items)
+    items = _quantifiers(items, lexicon)
+    items = _corrections(items)
+    items = _exclusions(items)
+    items = _speaker(items, lexicon)
+    items = _persons(items, lexicon)
+    items = _datives(items)
+    return items
+
+
+def _sentences(items: list[Item]) -> list[tuple[int, int]]:
+    spans = []
+    start = 0
+    for k, it in enumerate(items):
+        if it.kind == "punct" and it.lemma in _END:
+            spans.append((start, k))
+            start = k + 1
+    spans.append((start, len(items)))
+    return spans
+
+
+def _questions(items: list[Item]) -> list[Item]:
+    """A sentence opening with 'where', 'is', 'does', 'has' … asks; it does not request."""
+    for start, end in _sentences(items):
+        k = start
+        while k < end and (_is(items[k], ",", "filler", "correct")):
+            k += 1
+        if k >= end:
+            continue
+        first = items[k]
+        nxt = items[k + 1] if k + 1 < end else None
+        mark = end < len(items) and items[end].lemma == "?"
+        low = first.text.lower()
+        # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
+        offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
+        asks = (
+            offers
+            or _is(first, "wh")
+            or (
+                first.kind == "word"
+                and low in _QUESTION_VERBS
+                and (mark or low not in ("have", "do"))  # "have r2 give …" is causative
+                and not (nxt is not None and _is(nxt, "not"))
+            )
+        )
+        if asks:
+            words = " ".join(it.text for it in items[start:end])
+            raise GroundingError(
+                f"{words!r} is a question, not a request: say what to do, e.g. "
+                "'give Bob the chips' or 'put the cup on the shelf'"
+            )
+    return items
+
+
+def _whichever(items: list[Item]) -> list[Item]:
+    """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
+    out: list[Item] = []
+    skipping = False
+    for k, it in enumerate(items):
+        if _is(it, "whichever"):
+            if k + 1 < len(items) and _objects(items[k + 1]):
+                out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
+                continue
+            skipping = True
+            continue
+        if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
+            skipping = False
+        if not skipping:
+            out.append(it)
+    return out
+
+
+def _categories(item: Item, lexicon: Lexicon) -> list[str]:
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    return list(dict.fromkeys(cats[r.id] for r in item.refs if r.id in cats))
+
+
+def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'the red one' → the object called 'red <category of the last object named>'."""
+    out: list[Item] = []
+    last_objects: Item | None = None
+    for it in items:
+        if it.kind == "word" and it.text.lower() == "one" and out:
+            prev = out[-1]
+            if prev.kind == "unknown":
+                if last_objects is None:
+                    raise GroundingError(
+                        f"'{prev.text} one' refers to no object named before it; "
+                        f"{lexicon.listing('object')}"
+                    )
+                for cat in _categories(last_objects, lexicon):
+                    found = lexicon.lookup(f"{prev.lemma} {cat}")
+                    if found is not None:
+                        out[-1] = Item("ent", f"{prev.lemma} one", f"{prev.text} one", found)
+                        break
+                else:
+                    tried = " or ".join(
+                        repr(f"{prev.lemma} {c}") for c in _categories(last_objects, lexicon)
+                    )
+                    raise GroundingError(
+                        f"no object called '{prev.text} one' (as in {tried}) in the scene; "
+                        f"{lexicon.listing('object')}"
+                    )
+                last_objects = out[-1]
+                continue
+            if _is(prev, "other"):
+                continue  # "the other one" = "the other"
+        if _objects(it):
+            last_objects = it
+        out.append(it)
+    return out
+
+
+def _demonstratives(items: list[Item]) -> list[Item]:
+    """'hand that to Alice': a determiner with no name after it is a pronoun."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        nxt = items[k + 1] if k + 1 < len(items) else None
+        follows = nxt is not None and (nxt.kind in ("ent", "unknown") or nxt.lemma.startswith("q:"))
+        if it.kind == "word" and it.lemma == "det" and not follows:
+            low = it.text.lower()
+            if low in ("that", "this"):
+                out.append(Item("word", "it", it.text))
+                continue
+            if low in ("those", "these"):
+                out.append(Item("word", "them", it.text))
+                continue
+        out.append(it)
+    return out
+
+
+def _quantifiers(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """Fold 'a', 'one of the', 'all the', 'two', 'either', 'everything' into the object after.
+
+    Two choices over the same objects ("a mug … and a mug …") share one group, so they take
+    different objects.
+    """
+    out = _folded(items, lexicon)
+    first: dict[frozenset[str], int] = {}
+    for k, it in enumerate(out):
+        if it.quant == "some":
+            key = frozenset(r.id for r in it.refs)
+            group = first.setdefault(key, it.group)
+            if group != it.group:
+                out[k] = replace(it, group=group)
+    return out
+
+
+def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    out: list[Item] = []
+    k = 0
+    everything = tuple(Ref("object", o.id, plural=True) for o in lexicon.scene.objects)
+    while k < len(items):
+        it = items[k]
+        if _is(it, "q:everything"):
+            out.append(Item("ent", it.lemma, it.text, everything, quant="all"))
+            k += 1
+            continue
+        if _is(it, "other"):
+            prev = next((x for x in reversed(out) if x.quant == "some"), None)
+            if prev is None:
+                raise GroundingError(
+                    f"{it.text!r} needs a choice before it, as in 'one of the mugs … the other'"
+                )
+            if len({r.id for r in prev.refs}) != 2:
+                raise GroundingError(
+                    f"'the other' after {prev.text!r} is ambiguous: there are "
+                    f"{len({r.id for r in prev.refs})} to choose from; name the object"
+                )
+            out.append(replace(prev, text="the other"))
+            k += 1
+            continue
+        quant, count = _quant_word(it)
+        if quant and it.text.lower() == "either":
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if nxt is None or not _objects(nxt) or len({r.id for r in nxt.refs}) < 2:
+                quant = ""  # "either … or …" is the parser's
+        if quant:
+            j = k + 1
+            while j < len(items) and _is(items[j], "det"):
+                j += 1
+            if j < len(items) and _objects(items[j]):
+                target = items[j]
+                words = " ".join(x.text for x in items[k : j + 1])
+                out.append(_quantify(target, quant, count, words, lexicon, k))
+                k = j + 1
+                continue
+            if it.text.lower() in ("each", "every", "all", "either") and quant != "num":
+                pass  # left for the parser ("either … or", "each" as a filler below)
+            elif quant == "num" or (quant == "some" and it.text.lower() in ("one", "any")):
+                out.append(Item("unknown", it.text.lower(), it.text))
+                k += 1
+                continue
+        if it.kind == "word" and it.text.lower() == "each":
+            k += 1  # "a mug each", "would each like": distribution is how shared mentions work
+            continue
+        if it.kind == "word" and it.text.lower() in ("a", "an"):
+            out.append(it)
+            k += 1
+            continue
+        out.append(it)
+        k += 1
+    # a "some" mention with one ref is that object; an indefinite singular stays a choice
+    return out
+
+
+def _quant_word(it: Item) -> tuple[str, int]:
+    if it.kind != "word":
+        return "", 0
+    low = it.text.lower()
+    if it.lemma == "q:some" or low in ("a", "an", "either"):
+        return "some", 1
+    if it.lemma == "q:all" or low in ("all", "every", "each"):
+        return "all", 0
+    if low == "one":
+        return "some", 1
+    if low in NUMBERS or low.isdigit():
+        return "num", NUMBERS.get(low) or int(low)
+    return "", 0
+
+
+def _quantify(target: Item, quant: str, count: int, words: str, lexicon: Lexicon, at: int) -> Item:
+    ids = list(dict.fromkeys(r.id for r in target.refs))
+    plural_form = any(r.plural for r in target.refs)
+    cat = target.text
+    if quant == "num":
+        if count != len(ids):
+            have = f"{len(ids)} ({', '.join(sorted(ids))})" if len(ids) > 1 else f"one ({ids[0]})"
+            raise GroundingError(
+                f"{words!r}: the scene has {have} matching {cat!r}, not {count}; "
+                f"{lexicon.listing('object')}"
+            )
+        quant = "all" if count > 1 else ""
+    if quant == "some" and plural_form and len(ids) < 2:
+        raise GroundingError(
+            f"{words!r}: the scene has only one {cat!r} ({ids[0]}); say 'the {ids[0]}'"
+        )
+    if quant == "some" and len(ids) == 1:
+        quant = ""
+    return replace(target, text=words, quant=quant, group=at if quant == "some" else -1)
+
+
+def _corrections(items: list[Item]) -> list[Item]:
+    """'X, no, Y' / 'X — sorry, I mean Y': Y replaces the last name of its kind (or the clause)."""
+    k = 0
+    while k < len(items):
+        it = items[k]
+        after_pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
+        is_marker = _is(it, "correct") or (
+            it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and after_pause
+        )
+        if not is_marker:
+            k += 1
+            continue
+        j = k
+        while j < len(items) and (
+            _is(items[j], "correct", ",", "-")
+            or (items[j].text.lower() == "no" and _is(items[j], "not"))
+        ):
+            j += 1
+        before = items[:k]
+        while before and _is(before[-1], ",", "-"):
+            before.pop()
+        after = items[j:]
+        if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+            # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
+            r = 0
+            while r < len(after) and _is(after[r], "det", "to", "for", "on"):
+                r += 1
+            alone = (
+                r < len(after)
+                and after[r].kind == "ent"
+                and (
+                    r + 1 == len(after)
+                    or (after[r + 1].kind == "punct" and after[r + 1].lemma in _END)
+                )
+            )
+            said_no = any(x.text.lower() == "no" for x in items[k:j])
+            if alone or said_no:
+                before.pop()  # "… . No, put it on the table.": the sentence before is corrected
+            elif after:
+                raise GroundingError(
+                    f"{it.text!r} at the start of a sentence could correct the request before it "
+                    "or add to it: say the whole request again"
+                )
+        if not before or before[-1].kind == "punct":
+            items = before + after  # "Sorry, give Bob the cup": nothing to correct
+            k = len(before)
+            continue
+        items = _apply_correction(before, after, it)
+        k = 0
+    return items
+
+
+def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> list[Item]:
+    start = max(
+        (k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0
+    )
+    r = 0
+    while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
+        r += 1
+    if r < len(after) and after[r].kind == "word" and after[r].lemma.startswith("verb:"):
+        # a whole new clause replaces the last clause; "it" keeps meaning what that clause moved
+        verbs = [
+            k
+            for k in range(start, len(before))
+            if before[k].kind == "word" and before[k].lemma.startswith("verb:")
+        ]
+        if not verbs:
+            raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+        cut = verbs[-1]
+        moved = [it for it in before[cut:] if _objects(it)]
+        rest = list(after)
+        for m, x in enumerate(rest):
+            if x.kind == "punct" and x.lemma in _END:
+                break
+            if _is(x, "it", "them"):
+                if not moved:
+                    raise GroundingError(f"{x.text!r} after {marker.text!r} refers to nothing")
+                rest[m : m + 1] = _joined(moved)
+                break
+        return before[:cut] + rest
+    if r >= len(after) or after[r].kind != "ent":
+        what = after[r].text if r < len(after) else "nothing"
+        raise GroundingError(
+            f"cannot read the correction {marker.text!r} … {what!r}: say the whole request again"
+        )
+    new = after[r]
+    kinds = {x.kind for x in new.refs}
+    for k in range(len(before) - 1, start - 1, -1):
+        old = before[k]
+        if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
+            return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
+    raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+
+
+def _joined(names: list[Item]) -> list[Item]:
+    out: list[Item] = []
+    for n in names:
+        if out:
+            out.append(Item("word", "and", "and"))
+        out.append(n)
+    return out
+
+
+def _exclusions(items: list[Item]) -> list[Item]:
+    """'everything except the mugs', 'a mug, not the red one': remove them from the last name."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        low = it.text.lower()
+        starts = _is(it, "except") or (
+            _is(it, "not") and low == "not" and k + 1 < len(items) and _starts_objects(items, k + 1)
+        )
+        if _is(it, "and") and low == "but" and out and out[-1].quant == "all":
+            starts = _starts_objects(items, k + 1)  # "everything but the mugs"
+        if not starts:
+            out.append(it)
+            k += 1
+            continue
+        j = k + 1
+        excluded: list[Item] = []
+        while j < len(items):
+            while j < len(items) and _is(items[j], "det", "filler"):
+                j += 1
+            if j < len(items) and _objects(items[j]):
+                excluded.append(items[j])
+                j += 1
+                if (
+                    j + 1 < len(items)
+                    and _is(items[j], "and", ",")
+                    and _starts_objects(items, j + 1)
+                ):
+                    j += 1
+                    continue
+            break
+        if not excluded:
+            raise GroundingError(f"{it.text!r} must be followed by the objects to leave out")
+        ids = {r.id for x in excluded for r in x.refs}
+        start = max(
+            (n + 1 for n, x in enumerate(out) if x.kind == "punct" and x.lemma in _END), default=0
+        )
+        target = next((n for n in range(len(out) - 1, start - 1, -1) if _objects(out[n])), None)
+        if target is None:
+            raise GroundingError(
+                f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
+            )
+        kept = tuple(r for r in out[target].refs if r.id not in ids)
+        if not kept:
+            raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
+        out[target] = replace(out[target], refs=kept)
+        k = j
+    return out
+
+
+def _starts_objects(items: list[Item], k: int) -> bool:
+    while k < len(items) and _is(items[k], "det"):
+        k += 1
+    return k < len(items) and _objects(items[k])
+
+
+def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'I need X brought to B' names B; 'I need X' and 'get me X' name nobody in the scene."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        if it.kind == "word" and it.text.lower() in ("i", "we"):
+            j = k + 1
+            while j < len(items) and _is(items[j], "aux"):
+                j += 1
+            if j < len(items) and items[j].lemma in ("verb:need", "verb:want", "verb:like"):
+                end = j + 1
+                while end < len(items) and not (
+                    items[end].kind == "punct" and items[end].lemma in _END
+                ):
+                    end += 1
+                clause = items[j + 1 : end]
+                if any(_is(x, "to", "for", "on") for x in clause):
+                    # drop "I need" and the participle: "the apple and the cup to Carol"
+                    rest = [
+                        x for x in clause if not (x.kind == "word" and x.lemma.startswith("verb:"))
+                    ]
+                    out.extend(rest)
+                    k = end
+                    continue
+        if it.kind == "word" and it.lemma == "pronoun" and it.text.lower() in _SPEAKER:
+            raise GroundingError(
+                f"{it.text!r} is not resolved: the speaker is not a person in the scene; name "
+                f"the person who gets it; {lexicon.listing('human')}"
+            )
+        out.append(it)
+        k += 1
+    return out
+
+
+def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'give him the apple too': the one person named before; several → refuse with readings."""
+    out: list[Item] = []
+    seen: dict[str, None] = {}
+    for k, it in enumerate(items):
+        low = it.text.lower()
+        if _humans(it) and len({r.id for r in it.refs}) == 1:
+            seen.setdefault(it.refs[0].id)
+        if it.kind == "word" and it.lemma == "pronoun" and low in _PERSON_PRONOUNS:
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if (
+                low in ("his", "her")
+                and out
+                and _humans(out[-1])
+                and nxt is not None
+                and _objects(nxt)
+            ):
+                continue  # "give Alice her cup": a possessive after the person
+            if len(seen) == 1:
+                pid = next(iter(seen))
+                out.append(Item("ent", low, it.text, (Ref("human", pid),)))
+                continue
+            readings = list(seen) or [h.id for h in lexicon.scene.humans]
+            raise GroundingError(
+                f"{it.text!r} is not resolved: it could mean {_or(readings, lexicon)}; name the "
+                "person"
+            )
+        if it.kind == "word" and it.lemma == "pronoun" and low == "them":
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            prev = out[-1] if out else None
+            if (nxt is not None and nxt.kind == "ent") or (
+                prev is not None and _is(prev, "to", "for")
+            ):
+                readings = list(seen) or [h.id for h in lexicon.scene.humans]
+                raise GroundingError(
+                    f"'them' is not resolved: it could mean any of {_or(readings, lexicon)}; "
+                    "name the people"
+                )
+            out.append(Item("word", "them", it.text))
+            continue
+        out.append(it)
+    return out
+
+
+def _or(ids: list[str], lexicon: Lexicon) -> str:
+    names = []
+    for pid in ids:
+        h = next(h for h in lexicon.scene.humans if h.id == pid)
+        extra = [a for a in h.aliases if a != h.name]
+        names.append(f"{h.name} ({', '.join(extra)})" if extra else h.name)
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+
+
+def _datives(items: list[Item]) -> list[Item]:
+    """'Alice: the cup', 'Bob - the chips': the person receives what follows."""
+    out: list[Item] = []
+    for it in items:
+        if it.kind == "punct" and it.lemma in (":", "-") and out and _humans(out[-1]):
+            continue
+        if it.kind == "punct" and it.lemma == "-":
+            out.append(Item("punct", ",", ","))
+            continue
+        out.append(it)
+    return out

@@ -1,0 +1,112 @@
+"""From masks and depth to 3D: back-projection to world point clouds and a vertical-cylinder fit."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.perception.frames import Camera
+
+F64 = npt.NDArray[np.float64]
+Mask = npt.NDArray[np.bool_]
+
+
+def backproject(depth: npt.NDArray[np.float32], mask: Mask, camera: Camera) -> F64:
+    """World points (n, 3) of the pixels of ``mask`` that have a depth return.
+
+    OpenCV pinhole model: pixel (u, v) at depth z is ((u − cx)·z/fx, (v − cy)·z/fy, z) in the
+    optical frame, then ``camera_to_world``.
+    """
+    v, u = np.nonzero(mask & (depth > 0))
+    z = depth[v, u].astype(float)
+    pts = np.stack([(u - camera.cx) * z / camera.fx, (v - camera.cy) * z / camera.fy, z], axis=1)
+    pose = camera.pose
+    return np.asarray(pts @ pose[:3, :3].T + pose[:3, 3], dtype=float)
+
+
+def pixel_of(point: F64, camera: Camera) -> tuple[float, float, float]:
+    """(u, v, depth) of a world point in the image (depth ≤ 0: behind the camera)."""
+    pose = camera.pose
+    p = pose[:3, :3].T @ (np.asarray(point, dtype=float) - pose[:3, 3])
+    if p[2] <= 1e-9:
+        return (math.nan, math.nan, float(p[2]))
+    return (
+        float(camera.fx * p[0] / p[2] + camera.cx),
+        float(camera.fy * p[1] / p[2] + camera.cy),
+        float(p[2]),
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class Cylinder:
+    """An upright cylinder: ``center`` is the axis point at mid-height (world frame)."""
+
+    center: tuple[float, float, float]
+    radius: float
+    height: float
+    axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    points: int = 0
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "center": [round(v, 4) for v in self.center],
+            "radius": round(self.radius, 4),
+            "height": round(self.height, 4),
+            "axis": list(self.axis),
+            "points": self.points,
+        }
+
+
+def _circle(xy: F64) -> tuple[F64, float] | None:
+    """Least-squares (Kåsa) circle through 2D points; None when they are (nearly) collinear."""
+    if len(xy) < 3:
+        return None
+    mean = xy.mean(axis=0)
+    d = xy - mean
+    a = np.column_stack([2 * d, np.ones(len(d))])
+    b = (d * d).sum(axis=1)
+    sol, *_ = np.linalg.lstsq(a, b, rcond=None)
+    c = sol[:2]
+    r2 = float(sol[2] + c @ c)
+    if not math.isfinite(r2) or r2 <= 0:
+        return None
+    return c + mean, math.sqrt(r2)
+
+
+def fit_cylinder(points: F64, floor: float | None = None) -> Cylinder | None:
+    """Fit an upright cylinder to the visible surface points of an object.
+
+    The camera sees part of the side and maybe the top. The side points (below the top rim)
+    fix the axis by a circle fit; when the side is seen too little (a view from above) the top
+    disc's points do (their mean is the axis, their farthest the radius). The radius is
+    bounded by the points' own spread so an almost straight arc cannot blow up. ``floor``, when
+    known, is where the object stands: the height runs from there (the bottom is often hidden).
+
+    Returns None for fewer than 10 points.
+    """
+    if len(points) < 10:
+        return None
+    z = points[:, 2]
+    top = float(z.max())
+    bottom = float(z.min()) if floor is None else min(float(z.min()), floor)
+    height = top - bottom
+    xy = points[:, :2]
+    spread = float(np.ptp(xy, axis=0).max())
+    cap = z >= top - max(0.004, 0.03 * height)
+    side = ~cap
+    fit = _circle(xy[side]) if side.sum() >= 20 else None
+    if fit is not None:
+        c, r = fit
+        # an arc seen edge-on is almost straight: trust it only up to the object's visible size
+        if r > max(spread, 0.01) * 1.2:
+            fit = None
+    if fit is None:
+        pts = xy[cap] if cap.sum() >= 10 else xy
+        c = pts.mean(axis=0)
+        r = float(np.linalg.norm(pts - c, axis=1).max())
+    return Cylinder(
+        (float(c[0]), float(c[1]), bottom + height / 2.0), float(r), height, points=len(points)
+    )

