@@ -11,9 +11,9 @@ import pytest
 
 from hltl.bus.driver import BusTiming
 from hltl.sim import scenarios
+from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
-from hltl.sim.suite import make_trial
 from tests.bus.helpers import Loopback, free_endpoint, without_wall_clock
 
 ROOT = Path(__file__).resolve().parents[2]
