@@ -26,6 +26,7 @@ COMMAND_MODULES = (
     "render",
     "perception",
     "perceive",
+    "motion",
     "node",
 )
 
