@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import contextlib
 import json
 import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.bus_options import add_bus_arguments
 from hltl.errors import HltlError
 
 
@@ -66,18 +66,13 @@ def register(sub: Any) -> None:
         "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
     )
     p.add_argument(
-        "--bus",
-        metavar="zenoh[:ENDPOINT]",
-        help="drive a simulator node over the Zenoh bus (started with 'hltl node sim') instead "
-        "of the in-process simulator; ENDPOINT defaults to tcp/127.0.0.1:7447",
+        "--perception",
+        choices=("truth", "camera"),
+        default="truth",
+        help="--sim mujoco: observe the simulator's state (with --noise/--latency) or run the "
+        "perception stage on its rendered RGB-D frames",
     )
-    p.add_argument("--cell", default="default", help="with --bus: the cell's name on the bus")
-    p.add_argument(
-        "--bus-timeout",
-        type=float,
-        default=1.0,
-        help="with --bus: seconds to wait for an answer before retrying (3 retries)",
-    )
+    add_bus_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -114,33 +109,35 @@ def run(args: argparse.Namespace) -> int:
     timeline = None if args.json else Timeline(scene)
     if args.sim != "mujoco" and args.frames is not None:
         raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
-    if args.bus is not None and args.sim != "discrete":
-        raise HltlError(
-            "--sim chooses the in-process simulator; with --bus the node chooses it "
-            "('hltl node sim --sim mujoco')"
-        )
+    if args.sim != "mujoco" and args.perception == "camera":
+        raise HltlError("--perception camera needs the 3D simulator: add --sim mujoco")
     extra: dict[str, Any] = {}
     recorder = None
     if args.sim == "mujoco":
         from hltl.cli.sim3d import simulator_options
 
-        extra, recorder = simulator_options(scene, args.timing, args.frames)
-    with contextlib.ExitStack() as stack:
-        if args.bus is not None:
-            extra["simulator"] = _bus_cell(args, stack)
-        episode = run_episode(
-            scene,
-            spec=spec,
-            instruction=args.instruction,
-            events=events,
-            seed=args.seed,
-            config=config,
-            grounder=make_grounder(args.grounder),
-            predictor=predictor,
-            log_path=args.log,
-            on_record=None if timeline is None else timeline,
-            **extra,
-        )
+        extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
+    bus = None
+    if args.bus is not None:
+        from hltl.cli.bus_options import BusSimulator
+
+        bus = BusSimulator(args)
+        extra["simulator"] = bus.factory
+    episode = run_episode(
+        scene,
+        spec=spec,
+        instruction=args.instruction,
+        events=events,
+        seed=args.seed,
+        config=config,
+        grounder=make_grounder(args.grounder),
+        predictor=predictor,
+        log_path=args.log,
+        on_record=None if timeline is None else timeline,
+        **extra,
+    )
+    if bus is not None:
+        bus.close()
     if recorder is not None:
         recorder.close()
         if not args.json:
@@ -153,30 +150,6 @@ def run(args: argparse.Namespace) -> int:
         print(f"error: episode failed: {episode.metrics.reason}", file=sys.stderr)
         return 1
     return 0
-
-
-def _bus_cell(args: argparse.Namespace, stack: contextlib.ExitStack) -> Any:
-    """A cell factory driving the simulator node named by ``--bus``/``--cell``; the session and
-    every cell it builds are closed (and the node told the episode ended) when ``stack`` exits."""
-    from hltl.bus.driver import BusCell, BusTiming, bus_cell
-    from hltl.bus.session import BusConfig, open_session, parse_bus
-
-    endpoint = parse_bus(args.bus)
-    try:
-        # a node still starting up gets five answer times to appear
-        timing = BusTiming(timeout=args.bus_timeout, connect=5 * args.bus_timeout)
-    except ValueError as exc:
-        raise HltlError(f"--bus-timeout: {exc}") from None
-    session = stack.enter_context(open_session(BusConfig(connect=(endpoint,))))
-    opened: list[BusCell] = []
-
-    def finish() -> None:
-        for c in opened:
-            c.end()
-            c.close()
-
-    stack.callback(finish)
-    return bus_cell(session, cell=args.cell, timing=timing, opened=opened)
 
 
 class Timeline:
