@@ -301,7 +301,15 @@ class Executor:
         try:
             g = self.grounder.ground(text, self.scene, running=self.spec)
         except GroundingError as exc:
-            self.log.emit(self.t, "grounding", text=text, error=str(exc), tokens=0)
+            self.log.emit(
+                self.t,
+                "grounding",
+                text=text,
+                error=str(exc),
+                tokens=exc.tokens_spent,
+                prompt_tokens=exc.prompt_tokens,
+                completion_tokens=exc.completion_tokens,
+            )
             if self.spec is None:
                 self._give_up(f"cannot ground the instruction: {exc}")
             return
