@@ -41,6 +41,11 @@ class BusSimulator:
                 "--sim chooses the in-process simulator; with --bus the node chooses it "
                 "('hltl node sim --sim mujoco')"
             )
+        if getattr(args, "motion", False):
+            raise HltlError(
+                "--motion with --bus is not supported yet: the node's simulator would need the "
+                "same motion layer; run one or the other"
+            )
         endpoint = parse_bus(args.bus)
         try:
             # a node still starting up gets five answer times to appear

@@ -83,6 +83,7 @@ class ExactPlanner:
     algorithm: str = "astar"
     timeout: float = 60.0
     kinematics: Kinematics | None = None
+    cost: CostModel | None = None
 
     def __call__(
         self,
@@ -104,6 +105,7 @@ class ExactPlanner:
             algorithm=self.algorithm,
             timeout=self.timeout,
             kinematics=self.kinematics,
+            cost=self.cost,
         )
 
 
@@ -227,7 +229,9 @@ class Executor:
         self.scene = scene
         self.driver = driver
         self.log = EventLog() if log is None else log
-        self.planner: Planner = ExactPlanner(kinematics=kinematics) if planner is None else planner
+        self.planner: Planner = (
+            ExactPlanner(kinematics=kinematics, cost=cost) if planner is None else planner
+        )
         self.grounder = grounder
         self.config = ExecutorConfig() if config is None else config
         self.predictor: TrajectoryPredictor | None = (
@@ -299,7 +303,13 @@ class Executor:
             self.grounder = make_grounder("offline")
         t0 = time.perf_counter()
         try:
-            g = self.grounder.ground(text, self.scene, running=self.spec)
+            if self.spec is None:
+                g = self.grounder.ground(text, self.scene)
+            else:
+                from hltl.grounding.update import apply_update
+
+                # what is done decides what an update may change (finished work stays finished)
+                g = apply_update(text, self.scene, self.spec, self.grounder, self.done_formulas())
         except GroundingError as exc:
             self.log.emit(
                 self.t,
