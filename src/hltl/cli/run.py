@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.bus_options import add_bus_arguments
 from hltl.cli.common import check_option
 from hltl.errors import HltlError
 
@@ -78,6 +79,7 @@ def register(sub: Any) -> None:
         help="--sim mujoco: observe the simulator's state (with --noise/--latency) or run the "
         "perception stage on its rendered RGB-D frames",
     )
+    add_bus_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -133,6 +135,12 @@ def run(args: argparse.Namespace) -> int:
     grounder = make_grounder(args.grounder)
     if args.motion:
         extra = _motion_options(scene, spec, config, grounder, predictor)
+    bus = None
+    if args.bus is not None:
+        from hltl.cli.bus_options import BusSimulator
+
+        bus = BusSimulator(args)
+        extra["simulator"] = bus.factory
     episode = run_episode(
         scene,
         spec=spec,
@@ -146,6 +154,8 @@ def run(args: argparse.Namespace) -> int:
         on_record=None if timeline is None else timeline,
         **extra,
     )
+    if bus is not None:
+        bus.close()
     if recorder is not None:
         recorder.close()
         if not args.json:
@@ -266,6 +276,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         )
     if kind == "object_drop":
         return "yellow", f"{rec['object']} dropped at {rec['position']}"
+    if kind == "robot_down" and rec.get("until") is None:  # lost on the bus: no known return
+        return "yellow", f"{rec['robot']}: {rec.get('reason', 'down')}"
     if kind in ("robot_down", "robot_up"):
         return "yellow", rec["robot"] + (
             f" until t={rec['until']:.2f}" if kind == "robot_down" else ""
