@@ -21,10 +21,10 @@ import time
 from collections import OrderedDict
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import Protocol
 
-from hltl.errors import GroundingError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle, RobotDriver
+from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
@@ -45,15 +45,12 @@ from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible, apply
-from hltl.spec.hierarchy import HSpec, spec_to_dict
-from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.spec.syntax import Atom
 from hltl.world.geometry import Context
 from hltl.world.scene import Scene
 from hltl.world.state import JointState, WorldState, initial_world, project
-
-if TYPE_CHECKING:
-    from hltl.grounding.base import Grounder
 
 
 class Planner(Protocol):
@@ -197,7 +194,6 @@ class Executor:
         driver: the robots.
         log: where events go (a fresh in-memory log by default).
         planner: the suffix planner (default: the exact A* planner).
-        grounder: grounds instructions (default: the offline grounder, loaded on first use).
         predictor: forecasts people (default: constant velocity).
         config: loop parameters.
         cost: the duration model used to time actions (default: the scene's).
@@ -212,7 +208,6 @@ class Executor:
         *,
         log: EventLog | None = None,
         planner: Planner | None = None,
-        grounder: Grounder | None = None,
         predictor: TrajectoryPredictor | None = None,
         config: ExecutorConfig | None = None,
         cost: CostModel | None = None,
@@ -222,7 +217,6 @@ class Executor:
         self.driver = driver
         self.log = EventLog() if log is None else log
         self.planner: Planner = ExactPlanner(kinematics=kinematics) if planner is None else planner
-        self.grounder = grounder
         self.config = ExecutorConfig() if config is None else config
         self.predictor: TrajectoryPredictor | None = (
             ConstantVelocityPredictor() if predictor is None else predictor
@@ -278,63 +272,41 @@ class Executor:
     def running_actions(self) -> tuple[Action, ...]:
         return tuple(r.action for r in self._running if r.status is None)
 
-    def instruct(self, t: float, text: str) -> None:
-        """A (new) instruction: ground it, merging into the running spec (paper GOAL event).
+    def assign(self, t: float, update: SpecUpdate) -> None:
+        """A grounded instruction: the running spec with it merged in (paper GOAL event).
 
         The monitor state of the running spec carries over by formula name
-        (:func:`hltl.grounding.update.carry_over`); the suffix is replanned at the next decision.
-        A first instruction that cannot be grounded ends the episode; a later one is logged and
-        ignored, the running task going on.
+        (:func:`hltl.spec.monitor.carry_over`); the suffix is replanned at the next decision.
+        A first instruction that could not be grounded ends the episode; a later one is logged
+        and ignored, the running task going on.
         """
         self.t = max(self.t, t)
-        if self.grounder is None:
-            from hltl.grounding import make_grounder
-
-            self.grounder = make_grounder("offline")
-        t0 = time.perf_counter()
-        try:
-            g = self.grounder.ground(text, self.scene, running=self.spec)
-        except GroundingError as exc:
-            self.log.emit(self.t, "grounding", text=text, error=str(exc), tokens=0)
+        if update.spec is None:
+            self.log.emit(self.t, "grounding", **update.record(frozenset()))
             if self.spec is None:
-                self._give_up(f"cannot ground the instruction: {exc}")
+                self._give_up(f"cannot ground the instruction: {update.error}")
             return
-        ms = (time.perf_counter() - t0) * 1000.0
         old = self.spec
-        self._set_spec(g.spec, old)
-        fields: dict[str, Any] = {
-            "text": text,
-            "tokens": g.tokens.total,
-            "prompt_tokens": g.tokens.prompt,
-            "completion_tokens": g.tokens.completion,
-            "latency_ms": round(ms, 3),
-            "spec": spec_to_dict(g.spec),
-            "done": sorted(self.done_formulas()),
-        }
-        if g.update is not None:
-            fields["update"] = {
-                "kind": g.update.kind,
-                "kept": list(g.update.kept),
-                "changed": list(g.update.changed),
-                "added": list(g.update.added),
-                "removed": list(g.update.removed),
-            }
-        self.log.emit(self.t, "grounding", **fields)
-        self._pending_tokens += g.tokens.total
+        self._set_spec(update.spec, old)
+        self.log.emit(self.t, "grounding", **update.record(self.done_formulas()))
+        self._pending_tokens += update.tokens
         self._trigger.add("initial" if old is None else "goal")
         if self.status is ExecStatus.DONE:
             self.status = ExecStatus.RUNNING
             self.reason = ""
 
     def update(
-        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+        self,
+        t: float,
+        observation: WorldState | None = None,
+        updates: Iterable[SpecUpdate] = (),
     ) -> None:
         """One tick of the loop at time ``t``.
 
         Args:
             t: the time now (seconds since the start of the episode; never decreasing).
             observation: the latest perceived world (its ``t`` is when it was sensed).
-            instructions: instructions given since the last tick.
+            updates: instructions given since the last tick, grounded.
         """
         if t < self.t - 1e-9:
             raise ValueError(f"time went back from {self.t} to {t}")
@@ -343,8 +315,8 @@ class Executor:
             self._observe(observation)
         self._refresh_availability()
         self._poll()
-        for text in instructions:
-            self.instruct(t, text)
+        for upd in updates:
+            self.assign(t, upd)
         if self.status is ExecStatus.GAVE_UP:
             return
         if self._running:
@@ -402,8 +374,6 @@ class Executor:
         if old is None or self.monitor is None:
             q = monitor.initial
         else:
-            from hltl.grounding.update import carry_over
-
             q = carry_over(old, self.q, spec)
         self.spec, self.monitor, self.q = spec, monitor, q
         self._spec_version += 1
