@@ -69,6 +69,8 @@ def _small(argv: list[str], tmp_path: Path) -> list[str]:
         argv = _option(argv, "--trials", "1")
         argv = _option(argv, "--configs", "1-2")
         argv = _option(argv, "--jobs", "1")
+    if argv[1] == "motion":
+        argv = [*argv, "--quick"]
     if argv[1] == "suite":
         argv = _option(argv, "--flat-sweep", "1,2")
         argv = _option(argv, "--flat-trials", "1")
@@ -86,6 +88,9 @@ def test_documented_commands_run(
     (tmp_path / "examples").symlink_to(ROOT / "examples")
     (tmp_path / "docs").mkdir()
     monkeypatch.chdir(tmp_path)
+    # motion commands: coarse reachability maps, cached under tmp_path
+    monkeypatch.setenv("HLTL_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("HLTL_REACH_RESOLUTION", "0.1")
     for argv in commands(doc):
         if argv[:1] == ["demo"]:
             argv = [*argv, "--short", "--out", str(tmp_path / "demo")]

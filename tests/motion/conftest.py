@@ -27,6 +27,8 @@ def coarse_maps(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
     from hltl.motion.reach import load_or_build
 
     os.environ["HLTL_CACHE"] = str(tmp_path_factory.mktemp("hltl-cache"))
+    # the CLI and the cost model build maps at the default spacing: make that coarse too
+    os.environ["HLTL_REACH_RESOLUTION"] = str(TEST_RESOLUTION)
     return {m: load_or_build(m, TEST_RESOLUTION) for m in ("elfin3", "ur5")}
 
 

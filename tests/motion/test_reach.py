@@ -45,7 +45,7 @@ def test_fig1_workspaces_and_context_come_from_the_maps(
     bottle, chips = fig1.object("bottle"), fig1.object("chips")
     assert kin.reaches(r1, bottle.position) and not kin.reaches(r2, bottle.position)
     assert kin.reaches(r2, chips.position) and not kin.reaches(r1, chips.position)
-    ctx = kin.context_label({h.id: h.position for h in fig1.humans})
+    ctx = kin.context_label(fig1, {h.id: h.position for h in fig1.humans})
     assert ctx.robots_serving("A") == frozenset({"r1"})
     assert ctx.robots_serving("B") == frozenset({"r2"})
     rv = kin.rendezvous(r1, r2)

@@ -139,6 +139,15 @@ def register(sub: Any) -> None:
     gr.add_argument("--write", type=Path, help="update this Markdown file's grounding section")
     gr.set_defaults(func=run_grounding)
 
+    mo = bsub.add_parser("motion", help="IK, reachability maps, handover and P.M.P. timings")
+    mo.add_argument("--ik-solves", type=int, default=300, help="IK solves per model")
+    mo.add_argument("--probes", type=int, default=1000, help="map probes per model")
+    mo.add_argument("--runs", type=int, default=7, help="repeats of each planning timing")
+    mo.add_argument("--workers", type=int, default=2, help="processes for parallel P.M.P.")
+    mo.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
+    mo.add_argument("--write", type=Path, help="update this Markdown file's motion section")
+    mo.set_defaults(func=run_motion)
+
 
 def run_planner(args: argparse.Namespace) -> int:
     if args.repeats < 1:
@@ -251,6 +260,36 @@ def run_grounding(args: argparse.Namespace) -> int:
             + table
         )
         write_section(args.write, "grounding", body)
+        print(f"wrote {args.write}", file=sys.stderr)
+    return 0
+
+
+def run_motion(args: argparse.Namespace) -> int:
+    from hltl.bench.motion import bench_motion, format_motion
+
+    if min(args.ik_solves, args.probes, args.runs) < 1 or args.workers < 0:
+        raise HltlError("--ik-solves, --probes and --runs must be >= 1, --workers >= 0")
+    quick = args.quick
+    result = bench_motion(
+        models=("elfin3",) if quick else ("elfin3", "ur5", "panda"),
+        ik_solves=10 if quick else args.ik_solves,
+        map_models=("elfin3",) if quick else ("elfin3", "ur5"),
+        probes=20 if quick else args.probes,
+        runs=1 if quick else args.runs,
+        candidates=(2,) if quick else (8, 16),
+        workers=0 if quick else args.workers,
+        resolution=0.1 if quick else None,
+    )
+    table = format_motion(result)
+    print(table)
+    if args.write is not None:
+        body = (
+            f"Command: `hltl bench motion --write {shlex.quote(str(args.write))}`  \n"
+            f"Date: {datetime.date.today().isoformat()}. Machine: {machine()} (shared with "
+            f"other jobs){' (quick run)' if quick else ''}. Targets and how to read them: "
+            "docs/motion.md.\n\n" + table
+        )
+        write_section(args.write, "motion", body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
 

@@ -26,6 +26,7 @@ COMMAND_MODULES = (
     "render",
     "perception",
     "perceive",
+    "motion",
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -34,6 +34,12 @@ def register(sub: Any) -> None:
     )
     p.add_argument("--timeout", type=float, default=60.0, help="seconds before giving up")
     p.add_argument("--json", action="store_true", help="print the plan JSON")
+    p.add_argument(
+        "--motion",
+        action="store_true",
+        help="reach from the arms' reachability maps and durations from motion plans "
+        "(robots with model elfin3, ur5 or panda; needs the motion extra)",
+    )
     p.add_argument("-o", "--output", type=Path, help="also write the plan JSON to this file")
     p.set_defaults(func=run)
 
@@ -47,7 +53,13 @@ def run(args: argparse.Namespace) -> int:
         raise HltlError(f"--timeout must be positive, got {args.timeout}")
     scene = load_scene(args.scene)
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
-    result = plan(scene, spec, algorithm=args.algorithm, timeout=args.timeout)
+    extra: dict[str, Any] = {}
+    if args.motion:
+        from hltl.motion.cost import motion_models
+
+        kinematics, cost = motion_models(scene)
+        extra = {"kinematics": kinematics, "cost": cost}
+    result = plan(scene, spec, algorithm=args.algorithm, timeout=args.timeout, **extra)
     data = result.to_dict(spec=spec_to_dict(spec), scene=str(args.scene))
     if args.output is not None:
         args.output.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")

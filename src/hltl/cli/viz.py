@@ -43,6 +43,12 @@ def register(sub: Any) -> None:
         metavar="T",
         help="instead, draw the animation's frame at T seconds as a still picture",
     )
+    p.add_argument(
+        "--arms",
+        metavar="POSE",
+        help="FILE is a scene: draw its arms in 3D at POSE, 'home' or 'handover:GIVER,RECEIVER' "
+        "(the optimised robot-to-robot handover pose; needs the motion extra)",
+    )
     p.add_argument("--fps", type=int, default=10, help="animation frames per second (default 10)")
     p.add_argument(
         "--max-frames", type=int, default=200, help="most animation frames (default 200)"
@@ -53,6 +59,9 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from hltl.viz.render import RenderOptions, render_file
 
+    if args.arms is not None:
+        print(_arms(args))
+        return 0
     if args.fps < 1 or args.max_frames < 2:
         raise HltlError(f"need --fps >= 1 and --max-frames >= 2, got {args.fps}, {args.max_frames}")
     opts = RenderOptions(
@@ -67,3 +76,37 @@ def run(args: argparse.Namespace) -> int:
     for path in render_file(args.file, args.output, opts):
         print(path)
     return 0
+
+
+def _arms(args: argparse.Namespace) -> Path:
+    from hltl.motion.handover import optimise_r2r
+    from hltl.motion.planning import Cell
+    from hltl.viz.arms3d import render_arms
+    from hltl.world.scene import load_scene
+
+    cell = Cell(load_scene(args.file))
+    out = args.output or Path(f"{args.file.stem}-arms.png")
+    if out.suffix not in (".png", ".svg"):
+        out = out / f"{args.file.stem}-arms.png"
+    if args.arms == "home":
+        return render_arms(cell, {}, out, title=f"{args.file.name}: arms at home")
+    kind, _, who = args.arms.partition(":")
+    ids = [x.strip() for x in who.split(",") if x.strip()]
+    if kind != "handover" or len(ids) != 2:
+        raise HltlError(f"--arms {args.arms!r}: expected 'home' or 'handover:GIVER,RECEIVER'")
+    g, r = (cell.scene.robot(i) for i in ids)
+    sphere = cell.kinematics.rendezvous(g, r)
+    if sphere is None:
+        raise HltlError(f"{g.id} and {r.id} share no reachable region to meet in")
+    res = optimise_r2r(cell.arm(g.id), cell.arm(r.id), sphere, people=cell.people())
+    if res.pose is None:
+        raise HltlError(f"no handover pose for {g.id}→{r.id}: {res.reason}")
+    pose = res.pose
+    x, y, z = pose.position
+    return render_arms(
+        cell,
+        {g.id: pose.giver.q, r.id: pose.receiver.q},
+        out,
+        title=f"{g.id}→{r.id} handover at ({x:.2f}, {y:.2f}, {z:.2f}) m",
+        marks=[(pose.position, "handover")],
+    )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -151,6 +152,14 @@ def co_grasp_pairs(
     """
     if partner not in ("robot", "human"):
         raise ValueError(f"co-grasp partner {partner!r}: expected 'robot' or 'human'")
+    return list(_co_grasp_pairs(cyl, tuple(grasps), partner, gap))
+
+
+@functools.lru_cache(maxsize=64)
+def _co_grasp_pairs(
+    cyl: Cylinder, grasps: tuple[Grasp, ...], partner: str, gap: float
+) -> tuple[tuple[Grasp, Grasp, float], ...]:
+    # the filter depends on the object and grasps only (hand models in the object's frame)
     origin = (0.0, 0.0, 0.0)
     out = []
     for g in grasps:
@@ -164,7 +173,7 @@ def co_grasp_pairs(
         if d >= gap:
             out.append((g, c, d))
     out.sort(key=lambda t: -t[2])
-    return out
+    return tuple(out)
 
 
 @dataclass(frozen=True, slots=True)

@@ -68,8 +68,11 @@ def rotation_z_to(
         alt = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
         x = alt - np.dot(alt, z) * z
     x = x / np.linalg.norm(x)
-    y = np.cross(z, x)
-    return np.column_stack([x, y, z])
+    # z × x written out: np.cross is slow on single vectors, and this runs per collision check
+    y = np.array([z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]])
+    out = np.empty((3, 3))
+    out[:, 0], out[:, 1], out[:, 2] = x, y, z
+    return out
 
 
 class Arm:

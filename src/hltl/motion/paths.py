@@ -18,11 +18,15 @@ from hltl.motion.trajectory import JointTrajectory
 CHECK_STEP = 0.05  # rad: largest joint change between two collision checks along a path
 SAMPLE_DT = 0.04  # s between the samples of a timed trajectory
 OBSTACLE_MARGIN = 0.02  # m
+# Paths with more waypoints than this (RRTConnect's) are smoothed by TOPP-RA; shorter ones are
+# timed rest to rest, which costs little and follows the checked segments exactly.
+SMOOTH_FROM = 4
 
 
 @dataclass(frozen=True, slots=True)
 class JointPath:
-    """Waypoints from start to goal and how they were found (``direct`` or ``rrt_connect``)."""
+    """Waypoints from start to goal and how they were found: ``direct``, ``via_upright`` (through
+    the arm's upright zero pose) or ``rrt_connect``."""
 
     waypoints: tuple[tuple[float, ...], ...]
     planner: str
@@ -62,6 +66,11 @@ def plan_path(
     packed = capsule_arrays(obstacles)
     if segment_clear(arm, q0, q1, packed):
         return JointPath((_t(q0), _t(q1)), "direct")
+    # Table-top arms usually clear what blocks a straight swing by passing through the upright
+    # pose: two straight segments are cheaper to check than a sampling-based search.
+    up = arm.neutral()
+    if segment_clear(arm, q0, up, packed) and segment_clear(arm, up, q1, packed):
+        return JointPath((_t(q0), _t(up), _t(q1)), "via_upright")
     return _rrt_connect(arm, q0, q1, packed, timeout)
 
 
@@ -122,13 +131,13 @@ def time_parametrise(
 ) -> JointTrajectory:
     """Time a joint path under the arm's velocity and acceleration limits.
 
-    A path with intermediate waypoints (from RRTConnect) is first tried as a smooth spline timed
-    by TOPP-RA; the spline leaves the checked segments a little, so its samples are checked
+    A path with many waypoints (from RRTConnect) is first tried as a smooth spline timed by
+    TOPP-RA; the spline leaves the checked segments a little, so its samples are checked
     again and, if any collides, the path falls back to the exact rest-to-rest timing. Two-point
     paths and the fallback use ruckig: each segment a time-optimal, phase-synchronised
     (straight in joint space) motion from rest to rest.
     """
-    if len(waypoints) > 2:
+    if len(waypoints) > SMOOTH_FROM:
         smooth = _toppra(arm, waypoints)
         packed = capsule_arrays(obstacles)
         if smooth is not None and all(

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from hltl.errors import SceneError
 from hltl.motion.collision import min_distance
 from hltl.motion.grasps import Cylinder, Grasp, co_grasp_pairs, grasp_candidates, side_grasp
 from hltl.motion.handover import (
@@ -65,7 +66,7 @@ class Cell:
     def arm(self, rid: str) -> Arm:
         if rid not in self.arms:
             model = self.scene.robot(rid).model
-            raise ValueError(
+            raise SceneError(
                 f"robot {rid!r} has model {model!r}, which hltl has no kinematics for; "
                 "motion planning needs elfin3, ur5 or panda"
             )

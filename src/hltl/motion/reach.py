@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from hltl.errors import SceneError
 from hltl.motion.kinematics import Arm, FloatArray
 from hltl.motion.robots import load_model, model_hash
 
@@ -207,7 +209,21 @@ def _cache_file(model: str, resolution: float) -> Path:
 
 
 def default_resolution(model: str) -> float:
-    """Grid spacing of a model's map: finer for arms whose map is a revolved profile (cheap)."""
+    """Grid spacing of a model's map: finer for arms whose map is a revolved profile (cheap).
+
+    ``$HLTL_REACH_RESOLUTION`` (metres) overrides it, e.g. coarse maps for quick tests.
+    """
+    env = os.environ.get("HLTL_REACH_RESOLUTION")
+    if env:
+        try:
+            value = float(env)
+        except ValueError:
+            value = math.nan
+        if not 0.005 <= value <= 0.5:
+            raise SceneError(
+                f"HLTL_REACH_RESOLUTION={env!r}: expected a grid spacing of 0.005 … 0.5 m"
+            )
+        return value
     m = load_model(model)
     revolves = m.lowerPositionLimit[0] <= -np.pi + 0.02 and m.upperPositionLimit[0] >= np.pi - 0.02
     return DEFAULT_RESOLUTION if revolves else COARSE_RESOLUTION

@@ -153,11 +153,13 @@ class MapKinematics:
     def serves(self, robot: Robot, human_position: Vec3) -> bool:
         return self.serving_point(robot, human_position) is not None
 
-    def context_label(self, humans: Mapping[str, Vec3] | Iterable[tuple[str, Vec3]]) -> Context:
+    def context_label(
+        self, scene: Scene, humans: Mapping[str, Vec3] | Iterable[tuple[str, Vec3]]
+    ) -> Context:
         """ℓ(w) from the maps: the robots that reach some comfort-zone point of each person."""
         items = humans.items() if isinstance(humans, Mapping) else humans
         served = []
         for hid, pos in sorted(items):
-            robots = frozenset(r.id for r in self.scene.robots if self.serves(r, pos))
+            robots = frozenset(r.id for r in scene.robots if self.serves(r, pos))
             served.append((hid, robots))
         return Context(tuple(served))

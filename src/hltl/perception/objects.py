@@ -106,7 +106,7 @@ class DepthClusterBackend:
         self.planes: list[float] = []
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
-        from scipy import ndimage  # type: ignore[import-untyped]
+        from scipy import ndimage
 
         depth = frame.depth
         valid = depth > 0

@@ -243,7 +243,7 @@ class IdentityBinder:
     def bind(self, live: dict[str, tuple[float, float]]) -> dict[str, str | None]:
         """Person of each live track (given its floor xy); new tracks take the nearest free
         person (Hungarian assignment over all new tracks at once)."""
-        from scipy.optimize import linear_sum_assignment  # type: ignore[import-untyped]
+        from scipy.optimize import linear_sum_assignment
 
         for t in [t for t in self.owner if t not in live]:
             person = self.owner.pop(t)

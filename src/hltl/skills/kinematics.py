@@ -8,11 +8,13 @@ second implementation (docs/architecture.md shows how).
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
 from hltl.world import geometry
-from hltl.world.scene import Robot, Vec3
+from hltl.world.geometry import Context
+from hltl.world.scene import Robot, Scene, Vec3
 
 
 @runtime_checkable
@@ -44,6 +46,12 @@ class Kinematics(Reachability, Protocol):
         """The hand's rest pose."""
         ...
 
+    def context_label(
+        self, scene: Scene, humans: Mapping[str, Vec3] | Iterable[tuple[str, Vec3]]
+    ) -> Context:
+        """ℓ(w): which robots' workspaces hold each person standing where ``humans`` says."""
+        ...
+
 
 @dataclass(frozen=True, slots=True)
 class ReachSpheres:
@@ -63,6 +71,11 @@ class ReachSpheres:
 
     def home_point(self, robot: Robot) -> Vec3:
         return geometry.home_point(robot)
+
+    def context_label(
+        self, scene: Scene, humans: Mapping[str, Vec3] | Iterable[tuple[str, Vec3]]
+    ) -> Context:
+        return geometry.context_label(scene, humans)
 
 
 REACH_SPHERES: Kinematics = ReachSpheres()

@@ -18,7 +18,7 @@ from typing import Any, ClassVar
 from hltl.errors import PlanFormatError
 from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.spec.syntax import Atom
-from hltl.world.geometry import Context, context_label
+from hltl.world.geometry import Context
 from hltl.world.scene import Robot, Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
 
@@ -103,7 +103,7 @@ class Situation:
         return cls(
             scene=scene,
             rest=rest,
-            context=context_label(scene, w.humans),
+            context=kinematics.context_label(scene, w.humans),
             available=tuple(r for r in scene.robots if r.id not in w.unavailable),
             objects=tuple(oid for oid, _ in w.objects),
             humans=w.humans,
