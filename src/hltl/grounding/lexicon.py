@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
+from importlib import resources
 from typing import Literal, TypeAlias
 
 from hltl.errors import GroundingError
@@ -619,12 +621,25 @@ class Lexicon:
         found = self._phrases.get(_words(phrase))
         return _best(found) if found else None
 
+    def suggest(self, text: str) -> str:
+        """' (did you mean …?)' naming scene names one edit from a word of ``text``, else ''."""
+        near: dict[str, None] = {}
+        for word in _words(text):
+            for key, entries in self._phrases.items():
+                if len(key) == 1 and len(word) >= 3 and _one_edit(word, key[0]):
+                    for _, spelling, _ in entries:
+                        near.setdefault(spelling)
+        if not near:
+            return ""
+        names = [repr(n) for n in near]
+        return f" (did you mean {' or '.join(names)}?)"
+
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
-        """The one entity a word of 4+ letters names within one edit, else None.
+        """The entity (or category) a word of 4+ letters names within one edit, else None.
 
         One edit is an insertion, deletion, substitution or swap of neighbours ("botle",
-        "Alcie"). A keyword is never a misspelling, and two entities within one edit (or a
-        category several objects share) mean the word is not corrected at all.
+        "Alcie"). A keyword or a common English word ("hugs", "Carl") is never a misspelling,
+        and two names within one edit ("chps": chips or cups) mean the word is not corrected.
         """
         if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
             return None
@@ -635,6 +650,8 @@ class Lexicon:
             for key in self._phrases
             if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0])
         ]
+        if keys and word in common_words():
+            return None  # a real word ("hugs", "Carl") is not a misspelt "mugs" or "Carol"
         if len(keys) == 1:  # one name within one edit: "mgus" is "mugs" (both mugs)
             return _best(self._phrases[keys[0]])
         found = [e for key in keys for e in self._phrases[key]]
@@ -661,6 +678,13 @@ class Lexicon:
             if h.id == ref_id:
                 return h.name
         return ref_id
+
+
+@functools.cache
+def common_words() -> frozenset[str]:
+    """The 20,000 most frequent English words (data/common_words.txt says where from)."""
+    text = resources.files("hltl.grounding").joinpath("data/common_words.txt").read_text("utf-8")
+    return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
 
 
 def _one_edit(a: str, b: str) -> bool:

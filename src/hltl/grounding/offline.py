@@ -572,7 +572,7 @@ class _Parser:
         if np.kind != "unknown" or has_prep or frag.verb is not None:
             return False
         raise GroundingError(
-            f"no object or person called {np.text!r} in the scene; "
+            f"no object or person called {np.text!r} in the scene{self.lex.suggest(np.text)}; "
             f"{self.lex.listing('object')}; {self.lex.listing('human')}"
         )
 
@@ -598,7 +598,8 @@ class _Parser:
                 f"{frag.text!r}; {self.lex.listing('object')}"
             )
         raise GroundingError(
-            f"no object called {np.text!r} in the scene; {self.lex.listing('object')}"
+            f"no object called {np.text!r} in the scene{self.lex.suggest(np.text)}; "
+            f"{self.lex.listing('object')}"
         )
 
     def _target(self, np: Item, frag: _Frag, prep: str) -> tuple[str, Literal["human", "surface"]]:
@@ -628,14 +629,16 @@ class _Parser:
         cls = VERB_CLASS[frag.verb] if frag.verb else None
         if want == ("surface",):
             raise GroundingError(
-                f"no surface called {np.text!r} in the scene; {self.lex.listing('surface')}"
+                f"no surface called {np.text!r} in the scene{self.lex.suggest(np.text)}; "
+                f"{self.lex.listing('surface')}"
             )
         if want == ("human",) or prep == "" or cls in (None, "give", "possess"):
             raise GroundingError(
-                f"no person called {np.text!r} in the scene; {self.lex.listing('human')}"
+                f"no person called {np.text!r} in the scene{self.lex.suggest(np.text)}; "
+                f"{self.lex.listing('human')}"
             )
         raise GroundingError(
-            f"no person or surface called {np.text!r} in the scene; "
+            f"no person or surface called {np.text!r} in the scene{self.lex.suggest(np.text)}; "
             f"{self.lex.listing('human')}; {self.lex.listing('surface')}"
         )
 
