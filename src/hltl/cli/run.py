@@ -64,6 +64,13 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
     )
+    p.add_argument(
+        "--perception",
+        choices=("truth", "camera"),
+        default="truth",
+        help="--sim mujoco: observe the simulator's state (with --noise/--latency) or run the "
+        "perception stage on its rendered RGB-D frames",
+    )
     p.set_defaults(func=run)
 
 
@@ -100,12 +107,14 @@ def run(args: argparse.Namespace) -> int:
     timeline = None if args.json else Timeline(scene)
     if args.sim != "mujoco" and args.frames is not None:
         raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
+    if args.sim != "mujoco" and args.perception == "camera":
+        raise HltlError("--perception camera needs the 3D simulator: add --sim mujoco")
     extra: dict[str, Any] = {}
     recorder = None
     if args.sim == "mujoco":
         from hltl.cli.sim3d import simulator_options
 
-        extra, recorder = simulator_options(scene, args.timing, args.frames)
+        extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     episode = run_episode(
         scene,
         spec=spec,

@@ -12,10 +12,11 @@ if TYPE_CHECKING:
 
 
 def simulator_options(
-    scene: Scene, timing: str, frames: Path | None
+    scene: Scene, timing: str, frames: Path | None, perception: str = "truth"
 ) -> tuple[dict[str, Any], FrameRecorder | None]:
     """``run_episode`` keywords for the 3D simulator (model compiled or loaded from the cache
-    before the episode starts) and the frame recorder, if frames are wanted."""
+    before the episode starts) and the frame recorder, if frames are wanted. ``perception``
+    ``camera`` observes through the rendered camera (:mod:`hltl.sim3d.perceived`)."""
     from hltl.sim3d.driver import MujocoSimulator
     from hltl.sim3d.model import compile_scene
     from hltl.sim3d.record import FrameRecorder
@@ -24,6 +25,10 @@ def simulator_options(
     extra: dict[str, Any] = {
         "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
     }
+    if perception == "camera":
+        from hltl.sim3d.perceived import CameraSimulator
+
+        extra["simulator"] = functools.partial(CameraSimulator, timing=timing, model=model)
     recorder = None
     if frames is not None:
         recorder = FrameRecorder(frames)

@@ -46,6 +46,7 @@ RECORD_TYPES = frozenset(
         "instruction",
         "violation",
         "contact",
+        "perception",
     }
 )
 

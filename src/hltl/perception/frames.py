@@ -119,7 +119,8 @@ class FrameFolder:
             data = json.loads(cam_path.read_text())
         except (OSError, json.JSONDecodeError) as exc:
             raise PerceptionError(f"{cam_path}: not valid JSON ({exc})") from None
-        self.camera, self._refs = _parse_camera(data, str(cam_path))
+        self.camera = camera_from_dict(data, str(cam_path))
+        self._refs = _parse_frames(data, str(cam_path))
 
     def __len__(self) -> int:
         return len(self._refs)
@@ -144,20 +145,34 @@ class FrameFolder:
             yield self.frame(k)
 
 
-def _parse_camera(data: Any, src: str) -> tuple[Camera, list[_FrameRef]]:
+def _fail(src: str, fld: str, value: Any, expected: str) -> PerceptionError:
+    return PerceptionError(f"{src}: {fld}: expected {expected} (value {str(value)[:80]!r})")
+
+
+def _number(src: str, d: Mapping[str, Any], key: str, where: str, positive: bool = False) -> float:
+    v = d.get(key)
+    if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+        raise _fail(src, f"{where}{key}", v, "a finite number")
+    if positive and v <= 0:
+        raise _fail(src, f"{where}{key}", v, "a positive number")
+    return float(v)
+
+
+def camera_from_dict(data: Any, src: str = "<camera>") -> Camera:
+    """The camera of a ``camera.json`` object (its ``frames`` are not looked at).
+
+    Raises:
+        PerceptionError: naming ``src``, the field and the value.
+    """
+
     def fail(fld: str, value: Any, expected: str) -> PerceptionError:
-        return PerceptionError(f"{src}: {fld}: expected {expected} (value {str(value)[:80]!r})")
+        return _fail(src, fld, value, expected)
+
+    def number(d: Mapping[str, Any], key: str, where: str, positive: bool = False) -> float:
+        return _number(src, d, key, where, positive)
 
     if not isinstance(data, Mapping):
         raise fail("<top>", data, "a JSON object")
-
-    def number(d: Mapping[str, Any], key: str, where: str, positive: bool = False) -> float:
-        v = d.get(key)
-        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-            raise fail(f"{where}{key}", v, "a finite number")
-        if positive and v <= 0:
-            raise fail(f"{where}{key}", v, "a positive number")
-        return float(v)
 
     width, height = number(data, "width", "", True), number(data, "height", "", True)
     if width != int(width) or height != int(height):
@@ -192,6 +207,23 @@ def _parse_camera(data: Any, src: str) -> tuple[Camera, list[_FrameRef]]:
         if s.get("kind") not in KINDS or not isinstance(s.get("id"), str):
             raise fail(f"segments.{key}", s, f"kind one of {', '.join(KINDS)} and a string id")
         segments[int(key)] = Segment(str(s["kind"]), str(s["id"]))
+    return Camera(
+        str(data.get("name", "camera")),
+        int(width),
+        int(height),
+        fx,
+        fy,
+        cx,
+        cy,
+        tuple(tuple(float(x) for x in row) for row in m),
+        segments,
+    )
+
+
+def _parse_frames(data: Mapping[str, Any], src: str) -> list[_FrameRef]:
+    def fail(fld: str, value: Any, expected: str) -> PerceptionError:
+        return _fail(src, fld, value, expected)
+
     frames = data.get("frames")
     if not isinstance(frames, list) or not frames:
         raise fail("frames", frames, "a non-empty list of frames")
@@ -200,7 +232,7 @@ def _parse_camera(data: Any, src: str) -> tuple[Camera, list[_FrameRef]]:
     for i, f in enumerate(frames):
         if not isinstance(f, Mapping):
             raise fail(f"frames[{i}]", f, "an object with index, t, rgb, depth")
-        t = number(f, "t", f"frames[{i}].")
+        t = _number(src, f, "t", f"frames[{i}].")
         if t <= last_t:
             raise fail(f"frames[{i}].t", t, f"times increasing (previous {last_t})")
         last_t = t
@@ -214,18 +246,7 @@ def _parse_camera(data: Any, src: str) -> tuple[Camera, list[_FrameRef]]:
         if isinstance(idx, bool) or not isinstance(idx, int):
             raise fail(f"frames[{i}].index", idx, "an integer")
         refs.append(_FrameRef(idx, t, f["rgb"], f["depth"], seg))
-    cam = Camera(
-        str(data.get("name", "camera")),
-        int(width),
-        int(height),
-        fx,
-        fy,
-        cx,
-        cy,
-        tuple(tuple(float(x) for x in row) for row in m),
-        segments,
-    )
-    return cam, refs
+    return refs
 
 
 def _check_shape(path: Path, arr: npt.NDArray[Any], cam: Camera, what: str) -> None:
