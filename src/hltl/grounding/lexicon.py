@@ -208,6 +208,12 @@ FILLER_PHRASES: tuple[str, ...] = (
     "either one",
     "any one",
     "whichever one",
+    "are you able to",
+    "would you be able to",
+    "could you be able to",
+    "is it possible to",
+    "is it possible for you to",
+    "would it be possible to",
 )
 for _p in FILLER_PHRASES:
     PHRASES[tuple(_p.split())] = "filler"

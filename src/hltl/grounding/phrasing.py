@@ -314,6 +314,12 @@ def _corrections(items: list[Item]) -> list[Item]:
         while before and _is(before[-1], ",", "-"):
             before.pop()
         after = items[j:]
+        if it.text.lower() in ("sorry", "oops") and (
+            not after or (after[0].kind == "punct" and after[0].lemma in _END)
+        ):
+            items = before + after  # "Give Bob the cup, sorry.": an apology, not a correction
+            k = len(before)
+            continue
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
             r = 0
@@ -454,7 +460,7 @@ def _starts_objects(items: list[Item], k: int) -> bool:
 
 def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'I need X brought to B' names B; 'I need X' and 'get me X' name nobody in the scene."""
-    out: list[Item] = []
+    items = list(items)
     k = 0
     while k < len(items):
         it = items[k]
@@ -469,22 +475,34 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 ):
                     end += 1
                 clause = items[j + 1 : end]
+                n = 0
+                while n < len(clause) and _is(clause[n], "det"):
+                    n += 1
+                if (
+                    len(clause) > n + 2
+                    and clause[n].kind == "ent"
+                    and _is(clause[n + 1], "to")
+                    and clause[n + 2].kind == "word"
+                    and clause[n + 2].lemma.startswith("verb:")
+                ):
+                    # "I need Bob to get the chips" → "Bob get the chips";
+                    # "I need the cup to go to Alice" → "the cup go to Alice"
+                    items[k:end] = [*clause[: n + 1], *clause[n + 2 :]]
+                    continue
                 if any(_is(x, "to", "for", "on") for x in clause):
                     # drop "I need" and the participle: "the apple and the cup to Carol"
                     rest = [
                         x for x in clause if not (x.kind == "word" and x.lemma.startswith("verb:"))
                     ]
-                    out.extend(rest)
-                    k = end
+                    items[k:end] = rest
                     continue
         if it.kind == "word" and it.lemma == "pronoun" and it.text.lower() in _SPEAKER:
             raise GroundingError(
                 f"{it.text!r} is not resolved: the speaker is not a person in the scene; name "
                 f"the person who gets it; {lexicon.listing('human')}"
             )
-        out.append(it)
         k += 1
-    return out
+    return items
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
