@@ -122,3 +122,18 @@ def test_motion_cli_rejects_bad_input(
     err = capsys.readouterr().err
     assert code == 1
     assert err.startswith("error: ") and needle in err and err.count("\n") == 1
+
+
+def test_place_puts_the_object_on_the_surface_within_reach(fig1: Scene, fig1_cell: Any) -> None:
+    from hltl.motion.planning import placement_point
+
+    action = Action("place", ("r1",), "bottle", surface="shelf")
+    p = placement_point(fig1_cell, action)
+    shelf = fig1.surface("shelf")
+    assert abs(p[0] - shelf.center[0]) <= shelf.size[0] / 2
+    assert abs(p[1] - shelf.center[1]) <= shelf.size[1] / 2
+    assert p[2] == shelf.center[2]
+    assert fig1_cell.kinematics.reaches(fig1.robot("r1"), (p[0], p[1], p[2] + 0.11))
+    motion = plan_action(fig1_cell, action)
+    assert motion.plan is not None, motion.reason
+    assert [k for _, k, _ in motion.plan.events] == ["release"]

@@ -8,11 +8,13 @@ controller implements the same four calls on top of its motion stack.
 from __future__ import annotations
 
 import enum
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
 from hltl.motion.trajectory import MotionPlan
-from hltl.skills.library import Action
+from hltl.skills.library import Action, Transition
+from hltl.world.scene import Vec3
 
 
 class ActionState(enum.Enum):
@@ -52,6 +54,18 @@ class ActionStatus:
     @property
     def terminal(self) -> bool:
         return self.state is not ActionState.RUNNING
+
+
+@runtime_checkable
+class MotionSource(Protocol):
+    """A cost model that also plans the joint trajectories of what it times (the motion layer's
+    MotionCostModel); the executor hands those trajectories to the driver."""
+
+    def motion_plan(
+        self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
+    ) -> MotionPlan | None:
+        """The motion of ``action`` from the given hand positions, or None without one."""
+        ...
 
 
 @runtime_checkable

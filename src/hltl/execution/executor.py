@@ -19,7 +19,13 @@ from typing import Protocol
 
 from hltl.execution.belief import Belief
 from hltl.execution.decision import Phase, Trigger, Triggers
-from hltl.execution.drivers import ActionState, ActionStatus, Handle, RobotDriver
+from hltl.execution.drivers import (
+    ActionState,
+    ActionStatus,
+    Handle,
+    MotionSource,
+    RobotDriver,
+)
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
 from hltl.execution.predict import (
@@ -491,7 +497,13 @@ class Executor:
         )
         hands = dict(world.hands)
         for a, tr in zip(actions, transitions, strict=True):
-            handle = self.driver.start(a, self.t)
+            motion = (
+                self.cost.motion_plan(a, tr, hands) if isinstance(self.cost, MotionSource) else None
+            )
+            if motion is None:
+                handle = self.driver.start(a, self.t)
+            else:  # the driver executes the trajectories the cost model timed
+                handle = self.driver.start(a, self.t, motion=motion)
             expected = self.cost.duration(a, tr, hands)
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
             self.belief.touched(a.object, self.t)

@@ -16,6 +16,7 @@ from hltl.motion.planning import (
     SkillMotion,
     plan_action,
 )
+from hltl.motion.trajectory import MotionPlan
 from hltl.motion.workspace import MapKinematics
 from hltl.skills.cost import DEFAULT_SPEED, AnalyticCostModel
 from hltl.skills.library import Action, Transition
@@ -75,6 +76,14 @@ class MotionCostModel:
         if motion.plan is None:
             return self.infeasible_cost
         return max(motion.plan.duration, self.lower_bound(action, transition))
+
+    def motion_plan(
+        self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
+    ) -> MotionPlan | None:
+        """The joint trajectories of an instance (the executor passes them to the driver)."""
+        if any(rid not in self.cell.arms for rid in action.robots):
+            return None
+        return self.motion(action, transition, hands).plan
 
     def motion(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]

@@ -12,7 +12,14 @@ import numpy as np
 
 from hltl.errors import SceneError
 from hltl.motion.collision import min_distance
-from hltl.motion.grasps import Cylinder, Grasp, co_grasp_pairs, grasp_candidates, side_grasp
+from hltl.motion.grasps import (
+    Cylinder,
+    Grasp,
+    co_grasp_pairs,
+    grasp_candidates,
+    placements,
+    side_grasp,
+)
 from hltl.motion.handover import (
     PERSON_MARGIN,
     PRE_HANDOVER,
@@ -368,6 +375,32 @@ def _noop(_: int) -> int:
 # -- one action -----------------------------------------------------------------------------------
 
 
+def placement_point(cell: Cell, action: Action) -> Vec3:
+    """Where on the surface to put the object down: the placement with the most room among those
+    inside the placing robot's reach and clear of the scene's other objects (paper §IV-A);
+    the surface's centre when none is."""
+    assert action.surface is not None
+    scene = cell.scene
+    surface = scene.surface(action.surface)
+    robot = scene.robot(action.robots[0])
+    cyl = _object_cylinder(scene, action.object)
+    occupied = [
+        (o.position, Cylinder.for_category(o.category).radius)
+        for o in scene.objects
+        if o.id != action.object
+    ]
+    kin = cell.kinematics
+
+    def reachable(p: FloatArray) -> bool:
+        return kin.reaches(robot, (float(p[0]), float(p[1]), float(p[2])))
+
+    found = placements(surface.center, surface.size, cyl, occupied, reachable)
+    if not found:
+        return surface.center
+    x, y, _ = found[0].position
+    return (x, y, surface.center[2])
+
+
 def plan_action(
     cell: Cell,
     action: Action,
@@ -391,7 +424,7 @@ def plan_action(
     if action.skill == "place":
         if where is None:
             assert action.surface is not None
-            where = scene.surface(action.surface).center
+            where = placement_point(cell, action)
         return plan_pick(cell, action, qq, where, place=True)
     if action.skill == "handover_r2h":
         assert action.human is not None
