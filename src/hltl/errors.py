@@ -41,7 +41,21 @@ class BackendUnavailableError(HltlError, ImportError):
 
 
 class GroundingError(HltlError, ValueError):
-    """An instruction could not be turned into a valid H-LTLf specification."""
+    """An instruction could not be turned into a valid H-LTLf specification.
+
+    ``prompt_tokens`` and ``completion_tokens`` are what the failed attempt spent on an LLM:
+    tokens are paid for whether or not the answer is used, so they are always reported.
+    """
+
+    def __init__(self, message: str, *, prompt_tokens: int = 0, completion_tokens: int = 0) -> None:
+        super().__init__(message)
+        self.prompt_tokens = prompt_tokens
+        self.completion_tokens = completion_tokens
+
+    @property
+    def tokens_spent(self) -> int:
+        """All tokens spent before the failure."""
+        return self.prompt_tokens + self.completion_tokens
 
 
 class EventsError(HltlError, ValueError):
@@ -50,6 +64,10 @@ class EventsError(HltlError, ValueError):
 
 class PlanFormatError(HltlError, ValueError):
     """A plan or log file does not follow the documented format."""
+
+
+class OutputError(HltlError, OSError):
+    """A file or folder hltl was asked to write cannot be written (names the path and why)."""
 
 
 class PerceptionError(HltlError, ValueError):

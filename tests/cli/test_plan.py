@@ -62,7 +62,7 @@ def test_infeasible_exits_1_with_the_reason(
         (
             ["plan", "--scene", SCENE, "--spec", "examples/specs/fig1.yaml", "--timeout", "0"],
             1,
-            "--timeout must be positive",
+            "--timeout: expected a finite number > 0",
         ),
     ],
 )

@@ -129,5 +129,5 @@ def test_world_round_trips_through_the_log_and_bad_logs_are_named(
     with pytest.raises(PlanFormatError, match="first record is 'wait'"):
         read_log(path)
     path.write_text('{"t": 0, "type": "episode_start"}\nnot json\n')
-    with pytest.raises(PlanFormatError, match=r"log.jsonl:2: not a JSON object"):
+    with pytest.raises(PlanFormatError, match=r"log.jsonl:2: not valid JSON"):
         read_log(path)

@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.common import error_line
 from hltl.errors import HltlError
 
 
@@ -97,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
             message = str(exc)
             if not message.startswith(f"{path}:"):
                 message = f"{path}: {message}"
-            print(f"error: {message}", file=sys.stderr)
+            print(f"error: {error_line(message)}", file=sys.stderr)
             reports.append({"file": str(path), "valid": False, "error": message})
             continue
         reports.append(report)

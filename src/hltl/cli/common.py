@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -11,6 +12,31 @@ if TYPE_CHECKING:
     from hltl.planner.result import PlanResult
     from hltl.spec.hierarchy import HSpec
     from hltl.world.scene import Scene
+
+
+MAX_ERROR_CHARS = 2000
+
+
+def error_line(message: str) -> str:
+    """One bounded line: messages quote user input, which must not flood the terminal."""
+    line = " ".join(message.split("\n"))
+    if len(line) > MAX_ERROR_CHARS:
+        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
+    return line
+
+
+def check_option(name: str, value: float, *, positive: bool = False) -> float:
+    """A numeric option's value if it is finite and >= 0 (> 0 with ``positive``).
+
+    argparse's ``float`` reads "nan" and "inf"; no time, noise or latency is either.
+
+    Raises:
+        HltlError: naming the option, the value and what was expected.
+    """
+    if not math.isfinite(value) or value < 0 or (positive and value == 0):
+        want = "a finite number > 0" if positive else "a finite number >= 0"
+        raise HltlError(f"{name}: expected {want}, got {value!r}")
+    return value
 
 
 def load_spec_or_ground(
@@ -24,7 +50,9 @@ def load_spec_or_ground(
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
     from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction
 
+    check_instruction(instruction, "--instruction")
     spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
     return spec
 

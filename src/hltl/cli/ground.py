@@ -7,6 +7,9 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl.errors import GroundingError
+from hltl.fileio import write_output
+
 if TYPE_CHECKING:
     from hltl.grounding.base import Grounding
     from hltl.world.scene import Scene
@@ -40,9 +43,11 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction
     from hltl.spec.hierarchy import load_spec, spec_to_dict
     from hltl.world.scene import load_scene
 
+    check_instruction(args.instruction, "--instruction")
     scene = load_scene(args.scene)
     running = load_spec(args.running) if args.running is not None else None
     options: dict[str, Any] = {}
@@ -51,12 +56,25 @@ def run(args: argparse.Namespace) -> int:
     if args.grounder == "local" and args.model is not None:
         options["model_path"] = args.model
     grounder = make_grounder(args.grounder, **options)
-    result = grounder.ground(args.instruction, scene, running)
+    try:
+        result = grounder.ground(args.instruction, scene, running)
+    except GroundingError as exc:
+        if not exc.tokens_spent:
+            raise
+        # tokens are paid for whether the answer was used or not: report them on failure too
+        tokens = {"prompt": exc.prompt_tokens, "completion": exc.completion_tokens}
+        if args.json:
+            print(json.dumps({"error": str(exc), "tokens": tokens}))
+        raise GroundingError(
+            f"{exc} ({exc.prompt_tokens} prompt + {exc.completion_tokens} completion tokens spent)",
+            prompt_tokens=exc.prompt_tokens,
+            completion_tokens=exc.completion_tokens,
+        ) from None
     spec = spec_to_dict(result.spec)
     if args.output is not None:
         import yaml
 
-        args.output.write_text(yaml.safe_dump(spec, sort_keys=False), encoding="utf-8")
+        write_output(args.output, "the spec", yaml.safe_dump(spec, sort_keys=False))
     if args.json:
         out: dict[str, Any] = {
             "spec": spec,

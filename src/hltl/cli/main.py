@@ -9,6 +9,7 @@ import traceback
 from collections.abc import Sequence
 
 from hltl import __version__
+from hltl.cli.common import error_line
 from hltl.errors import HltlError
 
 # Subcommands live in their own modules (``hltl.cli.<module>``), each exposing
@@ -66,7 +67,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except HltlError as exc:
         if args.debug:
             traceback.print_exc()
-        print(f"error: {exc}", file=sys.stderr)
+        print(f"error: {error_line(str(exc))}", file=sys.stderr)
         return EXIT_FAILURE
     except KeyboardInterrupt:
         print("error: interrupted", file=sys.stderr)
@@ -78,6 +79,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return EXIT_OK
+    except (RecursionError, MemoryError, UnicodeError, OSError) as exc:
+        # a defect (input that should have been refused with a clear message earlier), still
+        # reported as one line; --debug shows where
+        if args.debug:
+            traceback.print_exc()
+        text = error_line(f"{type(exc).__name__}: {exc}")
+        print(f"error: {text} (unexpected; rerun with --debug and report it)", file=sys.stderr)
+        return EXIT_FAILURE
 
 
 if __name__ == "__main__":

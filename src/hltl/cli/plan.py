@@ -8,8 +8,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from hltl.cli.common import load_spec_or_ground, print_plan_timeline
-from hltl.errors import HltlError
+from hltl.cli.common import check_option, load_spec_or_ground, print_plan_timeline
+from hltl.fileio import write_output
 
 
 def register(sub: Any) -> None:
@@ -49,8 +49,7 @@ def run(args: argparse.Namespace) -> int:
     from hltl.spec.hierarchy import spec_to_dict
     from hltl.world.scene import load_scene
 
-    if args.timeout <= 0:
-        raise HltlError(f"--timeout must be positive, got {args.timeout}")
+    check_option("--timeout", args.timeout, positive=True)
     scene = load_scene(args.scene)
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
     extra: dict[str, Any] = {}
@@ -62,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
     result = plan(scene, spec, algorithm=args.algorithm, timeout=args.timeout, **extra)
     data = result.to_dict(spec=spec_to_dict(spec), scene=str(args.scene))
     if args.output is not None:
-        args.output.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+        write_output(args.output, "the plan", json.dumps(data, indent=2) + "\n")
     if args.json:
         print(json.dumps(data, indent=2))
     else:

@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.common import check_option
 from hltl.errors import HltlError
 
 
@@ -77,11 +78,17 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from hltl.execution.executor import ExecutorConfig
     from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction
     from hltl.sim.episode import EpisodeConfig, run_episode
     from hltl.sim.events import load_events
     from hltl.sim.simulator import PerceptionModel
     from hltl.world.scene import load_scene
 
+    check_option("--max-time", args.max_time, positive=True)
+    if args.instruction is not None:
+        check_instruction(args.instruction, "--instruction")
+    for name in ("noise", "latency", "plan_latency"):
+        check_option("--" + name.replace("_", "-"), getattr(args, name))
     try:
         config = EpisodeConfig(
             max_time=args.max_time,

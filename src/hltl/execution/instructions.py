@@ -46,8 +46,14 @@ class SpecUpdate:
 
     def record(self, done: frozenset[str]) -> dict[str, Any]:
         """The fields of the ``grounding`` log record (``done``: formulas done after it)."""
-        if self.spec is None:
-            return {"text": self.text, "error": self.error, "tokens": 0}
+        if self.spec is None:  # tokens are paid for whether or not the answer is used
+            return {
+                "text": self.text,
+                "error": self.error,
+                "tokens": self.tokens,
+                "prompt_tokens": self.prompt_tokens,
+                "completion_tokens": self.completion_tokens,
+            }
         fields: dict[str, Any] = {
             "text": self.text,
             "tokens": self.tokens,

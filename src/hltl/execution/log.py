@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from hltl.errors import PlanFormatError
+from hltl.fileio import MAX_LOG_BYTES, load_data, open_output, read_text
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.syntax import Atom
 from hltl.world.state import Loc, ObjectStatus, WorldState
@@ -77,9 +78,7 @@ class EventLog:
         self._on_record = on_record
         self._file: IO[str] | None = None
         if path is not None:
-            target = Path(path)
-            target.parent.mkdir(parents=True, exist_ok=True)
-            self._file = target.open("w", encoding="utf-8")  # closed in close()
+            self._file = open_output(path, "the log")  # closed in close()
 
     def emit(self, t: float, type: str, **fields: Any) -> Record:
         """Append a record of kind ``type`` at time ``t`` and return it."""
@@ -136,18 +135,12 @@ def read_log(path: str | Path) -> list[Record]:
             ``t`` and a known ``type``, or the log does not start with ``episode_start``.
     """
     p = Path(path)
-    try:
-        lines = p.read_text(encoding="utf-8").splitlines()
-    except OSError as exc:
-        raise PlanFormatError(f"{p}: cannot read log: {exc.strerror or exc}") from None
+    lines = read_text(p, "log", PlanFormatError, MAX_LOG_BYTES).splitlines()
     records: list[Record] = []
     for i, line in enumerate(lines, 1):
         if not line.strip():
             continue
-        try:
-            rec = json.loads(line)
-        except json.JSONDecodeError as exc:
-            raise PlanFormatError(f"{p}:{i}: not a JSON object: {exc.msg}") from None
+        rec = load_data(line, f"{p}:{i}", PlanFormatError, as_json=True)
         records.append(check_record(rec, f"{p}:{i}"))
     check_records(records, str(p))
     return records

@@ -5,9 +5,31 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
+from hltl.errors import GroundingError
+from hltl.fileio import quote
+
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
     from hltl.world.scene import Scene
+
+
+# A spoken or typed task is a sentence or a few; beyond this it is pasted text, and every
+# grounder's cost (prompt tokens, parsing, messages quoting it) grows with it.
+MAX_INSTRUCTION_CHARS = 2_000
+
+
+def check_instruction(text: str, where: str = "instruction") -> str:
+    """``text`` if it is at most :data:`MAX_INSTRUCTION_CHARS` long.
+
+    Raises:
+        GroundingError: naming ``where``, the start of the text and its length.
+    """
+    if len(text) > MAX_INSTRUCTION_CHARS:
+        raise GroundingError(
+            f"{where}: an instruction has at most {MAX_INSTRUCTION_CHARS:,} characters, got "
+            f"{quote(text)}"
+        )
+    return text
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,11 +4,16 @@ Configuration, lowest to highest precedence: defaults; a TOML file (``path`` giv
 ``$HLTL_LLM_CONFIG``, else ``~/.config/hltl/llm.toml`` if it exists) with keys ``base_url``,
 ``model``, ``api_key``, ``api_key_env``, ``max_repairs``, ``temperature``, ``timeout``,
 ``structured``; then the environment: ``HLTL_LLM_BASE_URL``, ``HLTL_LLM_MODEL``,
-``HLTL_LLM_API_KEY``.
+``HLTL_LLM_API_KEY``, ``HLTL_LLM_TIMEOUT`` (seconds per request).
+
+Answers are bounded: one longer than ``MAX_ANSWER_CHARS`` is refused (and only its start is sent
+back for repair), and an endpoint that reports more completion tokens than ``max_tokens`` allows
+is refused, since it ignores the limit the cost of a query relies on.
 """
 
 from __future__ import annotations
 
+import math
 import os
 import tomllib
 from collections.abc import Callable, Mapping
@@ -17,6 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hltl.errors import BackendUnavailableError, GroundingError
+from hltl.fileio import clip, quote, read_text
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.prompt import build_messages, repair_message, response_format
 from hltl.grounding.validate import AnswerError, check_answer
@@ -75,17 +81,31 @@ def load_config(path: str | Path | None = None, env: Mapping[str, str] | None = 
         value = env.get(ENV_PREFIX + key.upper())
         if value:
             values[key] = value
+    timeout = env.get(ENV_PREFIX + "TIMEOUT")
+    if timeout:
+        try:
+            values["timeout"] = float(timeout)
+        except ValueError:
+            values["timeout"] = math.nan  # refused below with the variable's name
+        where = f"{ENV_PREFIX}TIMEOUT"
+    else:
+        where = "timeout"
     config = replace(LLMConfig(), **values)
     if config.max_repairs < 0:
         raise GroundingError(f"max_repairs must be >= 0, got {config.max_repairs}")
+    if not (math.isfinite(config.timeout) and config.timeout > 0):
+        raise GroundingError(
+            f"{where}: expected seconds, a finite number > 0, got "
+            f"{quote(timeout or config.timeout)}"
+        )
+    if config.max_tokens < 1:
+        raise GroundingError(f"max_tokens must be >= 1, got {config.max_tokens}")
     return config
 
 
 def _read_toml(file: Path, env: Mapping[str, str]) -> dict[str, Any]:
     try:
-        data = tomllib.loads(file.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise GroundingError(f"{file}: cannot read LLM config: {exc.strerror or exc}") from None
+        data = tomllib.loads(read_text(file, "LLM config", GroundingError))
     except tomllib.TOMLDecodeError as exc:
         raise GroundingError(f"{file}: not valid TOML: {exc}") from None
     data = dict(data.get("llm", data))  # a [llm] table or top-level keys
@@ -117,9 +137,15 @@ class LLMGroundingError(GroundingError):
     """Every answer was rejected; ``history`` holds each (answer, error) and ``tokens`` the cost."""
 
     def __init__(self, message: str, history: list[tuple[str, str]], tokens: TokenUsage) -> None:
-        super().__init__(message)
+        super().__init__(message, prompt_tokens=tokens.prompt, completion_tokens=tokens.completion)
         self.history = history
         self.tokens = tokens
+
+
+# An answer is a few hundred characters; far more is a misbehaving endpoint or model. Only this
+# much of a refused answer goes back into the repair prompt (the prompt must stay small).
+MAX_ANSWER_CHARS = 20_000
+ECHO_CHARS = 2_000
 
 
 # A chat function: (messages, output mode) -> an OpenAI-shaped chat completion. Modes, best
@@ -136,12 +162,18 @@ def ground_with_chat(
     *,
     max_repairs: int,
     modes: list[str],
+    max_tokens: int | None = None,
 ) -> Grounding:
     """The query-validate-repair loop shared by the LLM and local grounders.
 
     ``modes`` are the output modes to try, best first; a mode the endpoint rejects (the chat
     function raises ``UnsupportedFormat``) is removed from the list, which the caller may keep
-    for its next queries, and the same query is sent in the next mode.
+    for its next queries, and the same query is sent in the next mode. ``max_tokens`` is the
+    completion limit sent with each query; a response reporting more is refused.
+
+    Raises:
+        LLMGroundingError: every answer was refused, the model declined or the endpoint failed;
+            it carries the tokens spent.
     """
     if not instruction.strip():
         raise GroundingError("the instruction is empty")
@@ -150,17 +182,35 @@ def ground_with_chat(
     history: list[tuple[str, str]] = []
     rounds = 0
     for _ in range(max_repairs + 1):
-        response = _query(chat, messages, modes)
+        try:
+            response = _query(chat, messages, modes)
+        except GroundingError as exc:  # the endpoint failed: earlier rounds are still paid for
+            raise LLMGroundingError(str(exc), history, tokens) from None
         rounds += 1
-        tokens = tokens + usage_of(response)
+        used = usage_of(response)
+        tokens = tokens + used
+        if max_tokens is not None and used.completion > max_tokens:
+            raise LLMGroundingError(
+                f"the endpoint reports {used.completion:,} completion tokens for one answer "
+                f"although max_tokens is {max_tokens:,}: it ignores the limit; its answers are "
+                "refused",
+                history,
+                tokens,
+            )
         text = content_of(response)
         try:
+            if text is not None and len(text) > MAX_ANSWER_CHARS:
+                raise AnswerError(
+                    f"the answer has {len(text):,} characters; an answer is one short JSON "
+                    f"object (at most {MAX_ANSWER_CHARS:,} characters)"
+                )
             spec, ids = check_answer(text, scene)
         except AnswerError as exc:
-            history.append((text or "", str(exc)))
+            echo = (text or "")[:ECHO_CHARS]
+            history.append((echo, str(exc)))
             messages = [
                 *messages,
-                {"role": "assistant", "content": text or ""},
+                {"role": "assistant", "content": echo},
                 {"role": "user", "content": repair_message(str(exc))},
             ]
             continue
@@ -169,8 +219,8 @@ def ground_with_chat(
         return Grounding(spec=spec, entities=ids, tokens=tokens, rounds=rounds)
     last = history[-1][1] if history else "no answer"
     raise LLMGroundingError(
-        f"the model's answer was rejected {len(history)} time(s) for {instruction.strip()!r}; "
-        f"last error: {last}",
+        f"the model's answer was rejected {len(history)} time(s) for "
+        f"{quote(instruction.strip())}; last error: {last}",
         history,
         tokens,
     )
@@ -207,13 +257,16 @@ def content_of(response: Any) -> str | None:
 
 
 def usage_of(response: Any) -> TokenUsage:
-    """Prompt and completion tokens from a response's ``usage`` (0 when absent)."""
+    """Prompt and completion tokens from a response's ``usage`` (0 when absent or not a count)."""
     usage = _get(response, "usage")
     if usage is None:
         return TokenUsage()
-    return TokenUsage(
-        int(_get(usage, "prompt_tokens") or 0), int(_get(usage, "completion_tokens") or 0)
-    )
+
+    def count(name: str) -> int:
+        v = _get(usage, name)
+        return v if isinstance(v, int) and not isinstance(v, bool) and v >= 0 else 0
+
+    return TokenUsage(count("prompt_tokens"), count("completion_tokens"))
 
 
 class LLMGrounder:
@@ -266,18 +319,29 @@ class LLMGrounder:
             }
             if mode in formats:
                 kwargs["response_format"] = formats[mode]
+            where = self.config.base_url or "api.openai.com"
             try:
                 return client.chat.completions.create(**kwargs)
             except Exception as exc:
                 if mode in formats and _rejects_format(exc):
                     raise UnsupportedFormat(str(exc)) from exc
+                if "Timeout" in type(exc).__name__:
+                    raise GroundingError(
+                        f"the LLM endpoint {where} did not answer within "
+                        f"{self.config.timeout:g} s; set {ENV_PREFIX}TIMEOUT (or 'timeout' in "
+                        "the config file) to wait longer"
+                    ) from exc
                 raise GroundingError(
-                    f"the LLM endpoint {self.config.base_url or 'api.openai.com'} failed "
-                    f"({type(exc).__name__}): {exc}"
+                    f"the LLM endpoint {where} failed ({type(exc).__name__}): {clip(str(exc))}"
                 ) from exc
 
         return ground_with_chat(
-            chat, instruction, scene, max_repairs=self.config.max_repairs, modes=self.modes
+            chat,
+            instruction,
+            scene,
+            max_repairs=self.config.max_repairs,
+            modes=self.modes,
+            max_tokens=self.config.max_tokens,
         )
 
 
@@ -316,6 +380,7 @@ def make_openai_client(config: LLMConfig) -> Any:
                 "HLTL_LLM_BASE_URL at a local server"
             )
         key = "not-needed"  # Ollama, vLLM and llama.cpp servers accept any key
+    # no retries: the timeout the user set is then the longest a query can take
     return openai.OpenAI(
-        base_url=config.base_url, api_key=key, timeout=config.timeout, max_retries=1
+        base_url=config.base_url, api_key=key, timeout=config.timeout, max_retries=0
     )

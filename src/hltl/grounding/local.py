@@ -141,5 +141,10 @@ class LocalGrounder:
             )
 
         return ground_with_chat(
-            chat, instruction, scene, max_repairs=self.max_repairs, modes=["json_schema"]
+            chat,
+            instruction,
+            scene,
+            max_repairs=self.max_repairs,
+            modes=["json_schema"],
+            max_tokens=self.max_tokens,
         )

@@ -11,7 +11,10 @@ The grammar (docs/grounding.md lists every phrasing):
                  | person (wants|needs|has|gets …) object | object | person | (to|on) target
 
 A fragment may leave its verb, its object or its recipient out when a neighbour gives it
-("give A the bottle and B the chips", "hand both the cup and the chips to B"). Every name must
+("give A the bottle and B the chips", "hand both the cup and the chips to B"). Before the grammar,
+hltl.grounding.phrasing rewrites how people ask (politeness, questions, corrections, pronouns,
+quantifiers) into this plain form or refuses; a choice several tasks share ("a mug each") becomes
+an ``or`` over the ways to give each a different object. Every name must
 resolve to exactly one scene entity; anything else raises :class:`GroundingError` quoting the words
 and listing what the scene has.
 """

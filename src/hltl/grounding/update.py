@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from hltl.errors import GroundingError
+from hltl.fileio import quote
 from hltl.grounding.base import Grounder, Grounding, UpdateInfo
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.tree import (
@@ -159,17 +160,18 @@ def _matching(spec: HSpec, targets: str, lexicon: Lexicon, completed: Collection
         hits = [n for n, t in leaves if all(g & {t.obj, t.target} for g in groups)]
         if not hits:
             raise GroundingError(
-                f"no running task mentions {part.strip()!r}; running tasks: {described}"
+                f"no running task mentions {quote(part.strip())}; running tasks: {described}"
             )
         done = [n for n in hits if n in completed]
         if done:
             raise GroundingError(
-                f"{part.strip()!r} is already done ({', '.join(done)}); it cannot be changed"
+                f"{quote(part.strip())} is already done ({', '.join(done)}); it cannot be changed"
             )
         found += [n for n in hits if n not in found]
     if not found:
         raise GroundingError(
-            f"{targets.strip()!r} names no object, person or surface; running tasks: {described}"
+            f"{quote(targets.strip())} names no object, person or surface; running tasks: "
+            f"{described}"
         )
     return found
 
@@ -180,7 +182,7 @@ def _entity_ids(text: str, lexicon: Lexicon) -> list[set[str]]:
     for it in lex(text, lexicon):
         if it.kind == "unknown":
             raise GroundingError(
-                f"no object, person or surface called {it.text!r} in the scene; "
+                f"no object, person or surface called {quote(it.text)} in the scene; "
                 f"{lexicon.listing('object')}; {lexicon.listing('human')}; "
                 f"{lexicon.listing('surface')}"
             )
@@ -188,7 +190,7 @@ def _entity_ids(text: str, lexicon: Lexicon) -> list[set[str]]:
             singular = {r.id for r in it.refs if not r.plural}
             if len(singular) > 1:
                 raise GroundingError(
-                    f"{it.text!r} is ambiguous: it could be {' or '.join(sorted(singular))}"
+                    f"{quote(it.text)} is ambiguous: it could be {' or '.join(sorted(singular))}"
                 )
             groups.append(singular or {r.id for r in it.refs})
     return groups
@@ -293,7 +295,7 @@ def merge(
     elif kind == "first":
         text = composite("seq", [sub_root, old])
     else:
-        raise ValueError(f"unknown merge kind {kind!r}")
+        raise ValueError(f"unknown merge kind {quote(kind)}")
     formulas = {root: text, **tree.texts, **sub}
     spec = _build(root, formulas)
     return spec, _info(kind, running, spec, ())
@@ -350,7 +352,7 @@ def apply_update(
     done = frozenset(completed)
     if cmd.kind in ("add", "then", "first"):
         if not cmd.text.strip():
-            raise GroundingError(f"no task in {instruction.strip()!r}")
+            raise GroundingError(f"no task in {quote(instruction.strip())}")
         g = grounder.ground(cmd.text, scene)
         if cmd.kind == "first":
             same = _same_tasks(running, g.spec, done)

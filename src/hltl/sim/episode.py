@@ -46,9 +46,9 @@ class EpisodeConfig:
     executor: ExecutorConfig = field(default_factory=ExecutorConfig)
 
     def __post_init__(self) -> None:
-        if self.tick <= 0:
+        if not self.tick > 0:  # written so that NaN fails too
             raise ValueError(f"tick must be positive, got {self.tick!r}")
-        if self.max_time <= 0:
+        if not self.max_time > 0:
             raise ValueError(f"max_time must be positive, got {self.max_time!r}")
 
     def to_dict(self) -> dict[str, Any]:

@@ -8,21 +8,26 @@ the value; ids are checked against the scene.
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal, TypeAlias
 
-import yaml
-
 from hltl.errors import EventsError
+from hltl.fileio import clip, load_file, quote
+from hltl.grounding.base import MAX_INSTRUCTION_CHARS
 from hltl.world.scene import Scene, Vec3
 
 SKILLS = ("pick", "place", "handover_r2r", "handover_r2h")
 Outcome = Literal["stay", "drop"]
 DEFAULT_WALK_SPEED = 1.0  # m/s, a comfortable walking pace
+# What an events file may ask for: far beyond any episode (the default time limit is 120 s), and
+# small enough that no file can make the simulator hang or fill memory.
+MAX_EVENTS = 10_000
+MAX_SECONDS = 1e6  # times and durations (about 11.6 days)
+MAX_SPEED = 10.0  # m/s; people walk at 1-2
+MIN_LEG = 0.01  # s, a wander's shortest leg
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,19 +149,27 @@ class _Checker:
     def fail(self, field: str, problem: str) -> EventsError:
         value = self.event.get(field)
         return EventsError(
-            f"{self.source}: events[{self.index}].{field}: {problem} (value {value!r})"
+            f"{self.source}: events[{self.index}].{field}: {problem} (value {quote(value)})"
         )
 
-    def number(self, field: str, *, low: float = 0.0, strict: bool = False) -> float:
+    def number(
+        self, field: str, *, low: float = 0.0, strict: bool = False, high: float = MAX_SECONDS
+    ) -> float:
         v = self.event[field]
         if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
             raise self.fail(field, "expected a finite number")
         if v < low or (strict and v == low):
             raise self.fail(field, f"must be {'>' if strict else '>='} {low:g}")
+        if v > high:
+            raise self.fail(field, f"must be <= {high:g}")
         return float(v)
 
-    def optional(self, field: str, default: float, *, strict: bool = True) -> float:
-        return default if field not in self.event else self.number(field, strict=strict)
+    def optional(
+        self, field: str, default: float, *, low: float = 0.0, high: float = MAX_SECONDS
+    ) -> float:
+        if field not in self.event:
+            return default
+        return self.number(field, low=low, strict=low == 0.0, high=high)
 
     def point(self, field: str) -> Vec3:
         v = self.event[field]
@@ -192,20 +205,22 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
         )
     extra = sorted(str(k) for k in data if k != "events")
     if extra:
-        raise EventsError(f"{source}: unknown top-level field {extra[0]!r}; expected 'events'")
+        raise EventsError(f"{source}: unknown top-level field {quote(extra[0])}; expected 'events'")
     items = data.get("events") or []
     if not isinstance(items, list):
         raise EventsError(f"{source}: events: expected a list, got {type(items).__name__}")
+    if len(items) > MAX_EVENTS:
+        raise EventsError(f"{source}: events: {len(items):,} events; at most {MAX_EVENTS:,}")
     timed: list[TimedEvent] = []
     failures: list[SkillFailure] = []
     for i, ev in enumerate(items):
         if not isinstance(ev, Mapping):
-            raise EventsError(f"{source}: events[{i}]: expected a mapping, got {ev!r}")
+            raise EventsError(f"{source}: events[{i}]: expected a mapping, got {quote(ev)}")
         kind = ev.get("type")
-        if kind not in _FIELDS:
+        if not isinstance(kind, str) or kind not in _FIELDS:
             raise EventsError(
-                f"{source}: events[{i}].type: unknown event type (value {kind!r}); expected one "
-                f"of {', '.join(_FIELDS)}"
+                f"{source}: events[{i}].type: unknown event type (value {quote(kind)}); "
+                f"expected one of {', '.join(_FIELDS)}"
             )
         required, optional = _FIELDS[kind]
         for f in required:
@@ -214,7 +229,8 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
         for f in ev:
             if f != "type" and f not in required and f not in optional:
                 raise EventsError(
-                    f"{source}: events[{i}].{f}: unknown field for {kind} (value {ev[f]!r}); "
+                    f"{source}: events[{i}].{clip(str(f), 40)}: unknown field for {kind} "
+                    f"(value {quote(ev[f])}); "
                     f"expected {', '.join(required + optional)}"
                 )
         c = _Checker(source, i, ev)
@@ -224,7 +240,7 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
                     c.number("t"),
                     c.ident("human", scene.human_ids, "human"),
                     c.point("to"),
-                    c.optional("speed", DEFAULT_WALK_SPEED),
+                    c.optional("speed", DEFAULT_WALK_SPEED, high=MAX_SPEED),
                 )
             )
         elif kind == "human_wander":
@@ -233,8 +249,8 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
                     c.number("t"),
                     c.ident("human", scene.human_ids, "human"),
                     c.number("duration", strict=True),
-                    c.optional("speed", DEFAULT_WALK_SPEED),
-                    c.optional("leg", 1.0),
+                    c.optional("speed", DEFAULT_WALK_SPEED, high=MAX_SPEED),
+                    c.optional("leg", 1.0, low=MIN_LEG),
                 )
             )
         elif kind == "object_move":
@@ -247,6 +263,10 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
             text = ev["text"]
             if not isinstance(text, str) or not text.strip():
                 raise c.fail("text", "expected a non-empty instruction")
+            if len(text) > MAX_INSTRUCTION_CHARS:
+                raise c.fail(
+                    "text", f"an instruction has at most {MAX_INSTRUCTION_CHARS:,} characters"
+                )
             timed.append(Instruction(c.number("t"), text))
         elif kind == "robot_down":
             timed.append(
@@ -274,13 +294,4 @@ def events_from_dict(data: Any, scene: Scene, source: str = "<events>") -> Event
 def load_events(path: str | Path, scene: Scene) -> EventSchedule:
     """Load and validate an events file (YAML, or JSON by extension)."""
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise EventsError(f"{p}: cannot read events file: {exc.strerror or exc}") from None
-    try:
-        data = json.loads(text) if p.suffix.lower() == ".json" else yaml.safe_load(text)
-    except (json.JSONDecodeError, yaml.YAMLError) as exc:
-        kind = "JSON" if p.suffix.lower() == ".json" else "YAML"
-        raise EventsError(f"{p}: not valid {kind}: {exc}") from None
-    return events_from_dict(data, scene, str(p))
+    return events_from_dict(load_file(p, "events file", EventsError), scene, str(p))

@@ -20,7 +20,13 @@ def ground_instruction(
     try:
         g = grounder.ground(text, scene, running=running)
     except GroundingError as exc:
-        return SpecUpdate(text, None, error=str(exc))
+        return SpecUpdate(
+            text,
+            None,
+            error=str(exc),
+            prompt_tokens=exc.prompt_tokens,
+            completion_tokens=exc.completion_tokens,
+        )
     ms = (time.perf_counter() - t0) * 1000.0
     change = None
     if g.update is not None:

@@ -91,9 +91,26 @@ class _SimAction:
 
 
 @dataclass(slots=True)
+class _Wander:
+    """A random walk in progress; its legs are drawn a chunk at a time as the clock reaches them,
+    so a walk of a million seconds costs only what the episode lives through."""
+
+    rng: random.Random
+    end: float
+    speed: float
+    leg: float
+    until: float  # legs are drawn up to here
+
+
+@dataclass(slots=True)
 class _Walker:
     segments: list[_Segment] = field(default_factory=list)
     arrival: float | None = None  # end of the current walk, for the ``human_stop`` record
+    wander: _Wander | None = None
+
+
+# legs drawn at once by a wander: one log record per chunk
+_WANDER_CHUNK = 32
 
 
 class Simulator:
@@ -284,7 +301,12 @@ class Simulator:
             w = self._walkers[hid]
             if w.arrival is not None and w.arrival <= now + _EPS:
                 w.arrival = None
-                self.log.emit(now, "human_stop", human=hid, position=vec(self.human_position(hid)))
+                if w.wander is not None:
+                    self._wander_on(hid)
+                else:
+                    self.log.emit(
+                        now, "human_stop", human=hid, position=vec(self.human_position(hid))
+                    )
 
     # -- dynamic events --------------------------------------------------------------------------
 
@@ -292,6 +314,7 @@ class Simulator:
         now = self.now
         if isinstance(ev, HumanMove):
             start = self.human_position(ev.human)
+            self._walkers[ev.human].wander = None
             eta = self._walk(ev.human, [ev.to], ev.speed)
             self.log.emit(
                 now,
@@ -303,18 +326,11 @@ class Simulator:
                 eta=round(eta, 6),
             )
         elif isinstance(ev, HumanWander):
-            points = self._wander_points(ev)
-            eta = self._walk(ev.human, points, ev.speed)
-            self.log.emit(
-                now,
-                "human_move",
-                human=ev.human,
-                **{"from": vec(self.human_position(ev.human))},
-                to=vec(points[-1]),
-                speed=ev.speed,
-                eta=round(eta, 6),
-                wander=[vec(p) for p in points],
-            )
+            # its own generator, seeded from the walk stream: chunks drawn later do not shift
+            # the headings of other people's walks
+            rng = random.Random(self._rng_walk.getrandbits(64))
+            self._walkers[ev.human].wander = _Wander(rng, now + ev.duration, ev.speed, ev.leg, now)
+            self._wander_on(ev.human)
         elif isinstance(ev, ObjectMove):
             st = self.object_status(ev.object)
             if st.loc.kind in ("rest", "on"):
@@ -366,15 +382,35 @@ class Simulator:
         w.arrival = t if t > now + _EPS else None
         return t
 
-    def _wander_points(self, ev: HumanWander) -> list[Vec3]:
+    def _wander_on(self, hid: str) -> None:
+        """Draw the next chunk of a wander's legs and walk them (logged as one ``human_move``)."""
+        wander = self._walkers[hid].wander
+        assert wander is not None
+        start = self.human_position(hid)
+        points = self._wander_points(wander, start)
+        if wander.until >= wander.end - _EPS:
+            self._walkers[hid].wander = None
+        eta = self._walk(hid, points, wander.speed)
+        self.log.emit(
+            self.now,
+            "human_move",
+            human=hid,
+            **{"from": vec(start)},
+            to=vec(points[-1]),
+            speed=wander.speed,
+            eta=round(eta, 6),
+            wander=[vec(p) for p in points],
+        )
+
+    def _wander_points(self, wander: _Wander, start: Vec3) -> list[Vec3]:
         x0, x1, y0, y1 = self._bounds
-        p = self.human_position(ev.human)
+        p = start
         points: list[Vec3] = []
-        legs = max(1, math.ceil(ev.duration / ev.leg - 1e-9))
-        for k in range(legs):
-            span = min(ev.leg, ev.duration - k * ev.leg)
-            theta = self._rng_walk.uniform(0.0, 2 * math.pi)
-            step = ev.speed * span
+        while len(points) < _WANDER_CHUNK and (not points or wander.until < wander.end - _EPS):
+            span = max(0.0, min(wander.leg, wander.end - wander.until))
+            wander.until += span
+            theta = wander.rng.uniform(0.0, 2 * math.pi)
+            step = wander.speed * span
             x = p[0] + step * math.cos(theta)
             y = p[1] + step * math.sin(theta)
             # reflect off the cell's bounds so the person stays around the robots

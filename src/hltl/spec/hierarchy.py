@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import heapq
-import json
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
@@ -11,9 +10,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-import yaml
-
 from hltl.errors import SpecSyntaxError, SpecValidationError
+from hltl.fileio import load_file, quote
 from hltl.spec.automata import DFA, AutomatonCache, default_cache
 from hltl.spec.parser import KEYWORDS, parse_formula
 from hltl.spec.printer import atoms_in_order, to_string
@@ -71,6 +69,11 @@ class HSpec:
         while layer:
             levels.append(tuple(layer))
             layer = [c for name in layer for c in children[name]]
+        if len(levels) > MAX_LEVELS:
+            # every pass over the tree (printing, monitors) recurses once per level
+            raise SpecValidationError(
+                f"the hierarchy has {len(levels)} levels; at most {MAX_LEVELS} are supported"
+            )
         order = [name for layer_ in levels for name in layer_]
         parent = {c: name for name in order for c in children[name]}
         object.__setattr__(self, "formulas", tuple((n, by_name[n]) for n in order))
@@ -113,6 +116,11 @@ class HSpec:
         return not self.children[name]
 
 
+MAX_LEVELS = 64  # far beyond any task a person states; keeps recursive passes bounded
+MAX_FORMULAS = 2_000
+MAX_NAME_CHARS = 64
+
+
 def _check_tree(
     root: str, formulas: tuple[tuple[str, Formula], ...]
 ) -> tuple[dict[str, Formula], dict[str, tuple[str, ...]]]:
@@ -121,20 +129,28 @@ def _check_tree(
     for name, f in formulas:
         if not isinstance(name, str) or not _NAME.fullmatch(name):
             raise SpecValidationError(
-                f"formula name {name!r} is not an identifier (letters, digits, _), e.g. p100"
+                f"formula name {quote(name)} is not an identifier (letters, digits, _), e.g. p100"
             )
         if name in KEYWORDS or name in PREDICATES:
             raise SpecValidationError(
-                f"formula name {name!r} is an operator or predicate name; use e.g. p100"
+                f"formula name {quote(name)} is an operator or predicate name; use e.g. p100"
+            )
+        if len(name) > MAX_NAME_CHARS:
+            raise SpecValidationError(
+                f"formula name {quote(name, 40)} is too long (at most {MAX_NAME_CHARS} characters)"
             )
         if name in by_name:
             raise SpecValidationError(f"formula {name} is defined twice")
         by_name[name] = f
     if not by_name:
         raise SpecValidationError("the specification has no formulas")
+    if len(by_name) > MAX_FORMULAS:
+        raise SpecValidationError(
+            f"the specification has {len(by_name):,} formulas; at most {MAX_FORMULAS:,}"
+        )
     listing = _listing(by_name)
     if root not in by_name:
-        raise SpecValidationError(f"root {root!r} is not a formula; formulas are: {listing}")
+        raise SpecValidationError(f"root {quote(root)} is not a formula; formulas are: {listing}")
 
     children: dict[str, tuple[str, ...]] = {}
     for name, f in by_name.items():
@@ -143,13 +159,14 @@ def _check_tree(
         unknown = [n for n in bare if n not in by_name]
         if unknown and not kids:
             raise SpecValidationError(
-                f"{name} refers to {unknown[0]!r}, which is not a formula; formulas are: "
+                f"{name} refers to {quote(unknown[0])}, which is not a formula; formulas are: "
                 f"{listing} (leaf formulas use predicate atoms: "
                 f"{_listing(f'{p}(...)' for p in sorted(PREDICATES))})"
             )
         if unknown:
             raise SpecValidationError(
-                f"{name} refers to {unknown[0]!r}, which is not a formula; formulas are: {listing}"
+                f"{name} refers to {quote(unknown[0])}, which is not a formula; formulas are: "
+                f"{listing}"
             )
         if name in kids:
             raise SpecValidationError(f"{name} refers to itself; the hierarchy must be a tree")
@@ -331,7 +348,7 @@ def _from_design(data: Mapping[Any, Any], source: str) -> tuple[str, list[tuple[
     unknown = [k for k in data if k not in ("root", "formulas")]
     if unknown:
         raise SpecValidationError(
-            f"{source}: unknown key {unknown[0]!r}; a spec has 'root' and 'formulas'"
+            f"{source}: unknown key {quote(unknown[0])}; a spec has 'root' and 'formulas'"
         )
     if "formulas" not in data:
         raise SpecValidationError(f"{source}: missing 'formulas' (a mapping of name to formula)")
@@ -443,15 +460,7 @@ def load_spec(
         SpecSyntaxError: a formula does not parse.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SpecValidationError(f"{path}: cannot read spec: {exc.strerror or exc}") from None
-    try:
-        data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
-    except (json.JSONDecodeError, yaml.YAMLError) as exc:
-        kind = "JSON" if path.suffix.lower() == ".json" else "YAML"
-        raise SpecValidationError(f"{path}: not valid {kind}: {exc}") from None
+    data = load_file(path, "spec", SpecValidationError)
     return spec_from_dict(data, str(path), cache=cache, check_automata=check_automata)
 
 

@@ -9,6 +9,7 @@ from lark import Lark, Token, Transformer, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken, VisitError
 
 from hltl.errors import SpecSyntaxError
+from hltl.fileio import quote
 from hltl.spec.syntax import (
     PREDICATES,
     Always,
@@ -177,8 +178,35 @@ class _ToFormula(Transformer[Token, Formula]):
         return Atom(str(name), args)
 
 
+# Far beyond any task a person states; the bounds keep parsing, printing and compiling (all
+# recursive over the tree) inside Python's recursion limit and error messages short.
+MAX_FORMULA_CHARS = 10_000
+MAX_FORMULA_DEPTH = 100
+_EXCERPT = 60
+
+
 def _where(text: str, line: int, column: int) -> str:
-    return f'at line {line}, column {column} in "{text}"'
+    if len(text) <= 2 * _EXCERPT:
+        return f'at line {line}, column {column} in "{text}"'
+    # a long formula is shown around the problem only
+    lines = text.split("\n")
+    row = lines[line - 1] if 0 < line <= len(lines) else text
+    lo = max(0, column - 1 - _EXCERPT // 2)
+    piece = row[lo : lo + _EXCERPT]
+    left = "…" if lo > 0 else ""
+    right = "…" if lo + _EXCERPT < len(row) else ""
+    return f'at line {line}, column {column} in "{left}{piece}{right}" ({len(text):,} characters)'
+
+
+def _depth(tree: Any) -> int:
+    # iterative: the tree may be far deeper than the recursion limit
+    best = 0
+    stack: list[tuple[Any, int]] = [(tree, 1)]
+    while stack:
+        node, d = stack.pop()
+        best = max(best, d)
+        stack.extend((c, d + 1) for c in getattr(node, "children", ()) if not isinstance(c, Token))
+    return best
 
 
 def _end_position(text: str) -> tuple[int, int]:
@@ -221,9 +249,19 @@ def parse_formula(text: str) -> Formula:
             number of arguments; the message names line and column and quotes the text.
     """
     if not isinstance(text, str):
-        raise SpecSyntaxError(f"a formula must be a string, got {type(text).__name__}: {text!r}")
+        raise SpecSyntaxError(
+            f"a formula must be a string, got {type(text).__name__}: {quote(text)}"
+        )
     if not text.strip():
-        raise SpecSyntaxError(f'empty formula "{text}"', text=text, line=1, column=1)
+        raise SpecSyntaxError(f"empty formula {quote(text)}", text=text, line=1, column=1)
+    if len(text) > MAX_FORMULA_CHARS:
+        raise SpecSyntaxError(
+            f"formula of {len(text):,} characters is too long (at most {MAX_FORMULA_CHARS:,}): "
+            f"{quote(text, 40)}; split the task into named sub-formulas",
+            text=text,
+            line=1,
+            column=1,
+        )
     try:
         tree = _lark().parse(text)
     except UnexpectedCharacters as exc:
@@ -243,6 +281,16 @@ def parse_formula(text: str) -> Formula:
         line, column = _end_position(text)
         msg = f"unexpected end of formula {_where(text, line, column)}"
         raise SpecSyntaxError(msg, text=text, line=line, column=column) from None
+    depth = _depth(tree)
+    if depth > MAX_FORMULA_DEPTH:
+        raise SpecSyntaxError(
+            f"formula nests {depth} levels deep (operators, parentheses or a long chain of "
+            f"binary operators; at most {MAX_FORMULA_DEPTH}): {quote(text, 40)}; split it into "
+            "named sub-formulas",
+            text=text,
+            line=1,
+            column=1,
+        )
     try:
         result: Formula = _ToFormula().transform(tree)
     except VisitError as exc:

@@ -2,15 +2,13 @@
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
-import yaml
-
 from hltl.errors import PlanFormatError
 from hltl.execution.log import check_record, check_records
+from hltl.fileio import MAX_LOG_BYTES, load_data, read_text, try_json
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, load_scene
 
@@ -43,18 +41,10 @@ def load_source(path: str | Path) -> Source:
         SpecValidationError, SpecSyntaxError: a spec that does not validate.
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise PlanFormatError(f"{p}: cannot read: {exc.strerror or exc}") from None
+    text = read_text(p, "file", PlanFormatError, MAX_LOG_BYTES)
     if not text.strip():
         raise PlanFormatError(f"{p}: the file is empty; {EXPECTED}")
-    data: Any = None
-    whole_json = True
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError:
-        whole_json = False
+    whole_json, data = try_json(text, str(p), PlanFormatError)
     if whole_json and isinstance(data, dict) and data.get("type") == "episode_start":
         return _log(p, text)  # a log of one line is valid JSON too
     if not whole_json and _looks_like_jsonl(text):
@@ -62,10 +52,7 @@ def load_source(path: str | Path) -> Source:
     if not whole_json:
         if p.suffix.lower() == ".json":
             raise PlanFormatError(f"{p}: not valid JSON; {EXPECTED}")
-        try:
-            data = yaml.safe_load(text)
-        except yaml.YAMLError:
-            raise PlanFormatError(f"{p}: neither JSON, JSON Lines nor YAML; {EXPECTED}") from None
+        data = load_data(text, str(p), PlanFormatError, as_json=False)
     if isinstance(data, dict) and "steps" in data and "status" in data:
         return Source("plan", p, plan=data)
     if (isinstance(data, dict) and "formulas" in data) or (
@@ -79,8 +66,10 @@ def load_source(path: str | Path) -> Source:
 def _looks_like_jsonl(text: str) -> bool:
     first = text.lstrip().splitlines()[0]
     try:
-        rec = json.loads(first)
-    except json.JSONDecodeError:
+        ok, rec = try_json(first, "", PlanFormatError)
+    except PlanFormatError:
+        return False
+    if not ok:
         return False
     return isinstance(rec, dict) and "type" in rec and "t" in rec
 
@@ -90,10 +79,7 @@ def _log(p: Path, text: str) -> Source:
     for i, line in enumerate(text.splitlines(), 1):
         if not line.strip():
             continue
-        try:
-            rec = json.loads(line)
-        except json.JSONDecodeError as exc:
-            raise PlanFormatError(f"{p}:{i}: not a JSON object: {exc.msg}") from None
+        rec = load_data(line, f"{p}:{i}", PlanFormatError, as_json=True)
         records.append(check_record(rec, f"{p}:{i}"))
     check_records(records, str(p))
     return Source("log", p, records=tuple(records))

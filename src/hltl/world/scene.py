@@ -2,22 +2,30 @@
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Annotated, Any, TypeVar
 
-import yaml
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+)
 
 from hltl.errors import SceneError, UnknownEntityError
+from hltl.fileio import clip, load_file, quote
 
 Vec3 = tuple[float, float, float]
 _T = TypeVar("_T")
 
 DEFAULT_HUMAN_REACH = 0.3
+# the skills of DESIGN.md §4, the keys a scene's ``durations`` may give
+SKILL_NAMES = ("pick", "place", "handover_r2r", "handover_r2h")
 _UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 
 
@@ -178,7 +186,7 @@ def _find(items: Sequence[_T], key: str, kind: str, source: str) -> _T:
         if getattr(item, "id", None) == key:
             return item
     have = ", ".join(str(getattr(i, "id", i)) for i in items) or "none"
-    raise UnknownEntityError(f"{source}: unknown {kind} {key!r}; scene has: {have}")
+    raise UnknownEntityError(f"{source}: unknown {kind} {quote(key)}; scene has: {have}")
 
 
 # -- validation models (file format) -------------------------------------------------------------
@@ -188,19 +196,29 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=False, frozen=True)
 
 
+def _not_bool(v: Any) -> Any:
+    # pydantic's lax mode reads true as 1.0: a coordinate or length is never a yes/no
+    if isinstance(v, bool):
+        raise ValueError(f"expected a number, got {str(v).lower()}")
+    return v
+
+
+Num = Annotated[float, BeforeValidator(_not_bool)]
+
+
 def _finite(values: Sequence[float]) -> list[float]:
     for v in values:
         if not math.isfinite(v):
-            raise ValueError(f"{v!r} is not a finite number")
+            raise ValueError(f"{quote(v)} is not a finite number")
     return list(values)
 
 
 class _RobotIn(_Strict):
     id: str = Field(min_length=1)
-    base: tuple[float, float, float]
-    reach: float = Field(gt=0)
+    base: tuple[Num, Num, Num]
+    reach: Num = Field(gt=0)
     model: str = "generic"
-    speed: float | None = Field(default=None, gt=0)
+    speed: Num | None = Field(default=None, gt=0)
 
     _v = field_validator("base")(lambda v: tuple(_finite(v)))
 
@@ -208,14 +226,14 @@ class _RobotIn(_Strict):
     @classmethod
     def _finite_scalar(cls, v: float | None) -> float | None:
         if v is not None and not math.isfinite(v):
-            raise ValueError(f"{v!r} is not a finite number")
+            raise ValueError(f"{quote(v)} is not a finite number")
         return v
 
 
 class _ObjectIn(_Strict):
     id: str = Field(min_length=1)
     category: str | None = None
-    position: tuple[float, float, float]
+    position: tuple[Num, Num, Num]
     aliases: list[str] = []
 
     _v = field_validator("position")(lambda v: tuple(_finite(v)))
@@ -224,7 +242,7 @@ class _ObjectIn(_Strict):
 class _HumanIn(_Strict):
     id: str = Field(min_length=1)
     name: str | None = None
-    position: tuple[float, float, float]
+    position: tuple[Num, Num, Num]
     aliases: list[str] = []
 
     _v = field_validator("position")(lambda v: tuple(_finite(v)))
@@ -232,15 +250,15 @@ class _HumanIn(_Strict):
 
 class _SurfaceIn(_Strict):
     id: str = Field(min_length=1)
-    center: tuple[float, float, float]
-    size: tuple[float, float]
+    center: tuple[Num, Num, Num]
+    size: tuple[Num, Num]
     aliases: list[str] = []
 
     _v = field_validator("center", "size")(lambda v: tuple(_finite(v)))
 
     @field_validator("size")
     @classmethod
-    def _positive(cls, v: tuple[float, float]) -> tuple[float, float]:
+    def _positive(cls, v: tuple[Num, Num]) -> tuple[Num, Num]:
         if min(v) <= 0:
             raise ValueError(f"sizes must be positive, got {list(v)}")
         return v
@@ -248,12 +266,12 @@ class _SurfaceIn(_Strict):
 
 class _CameraIn(_Strict):
     id: str = Field(min_length=1)
-    position: tuple[float, float, float]
-    look_at: tuple[float, float, float]
+    position: tuple[Num, Num, Num]
+    look_at: tuple[Num, Num, Num]
     width: int = Field(default=640, ge=8, le=4096)
     height: int = Field(default=480, ge=8, le=4096)
-    fovy: float = Field(default=42.0, gt=1.0, lt=170.0)
-    rate: float = Field(default=10.0, gt=0.0, le=1000.0)
+    fovy: Num = Field(default=42.0, gt=1.0, lt=170.0)
+    rate: Num = Field(default=10.0, gt=0.0, le=1000.0)
 
     _v = field_validator("position", "look_at")(lambda v: tuple(_finite(v)))
 
@@ -264,41 +282,55 @@ class _SceneIn(_Strict):
     objects: list[_ObjectIn] = []
     humans: list[_HumanIn] = []
     surfaces: list[_SurfaceIn] = []
-    durations: dict[str, float] | None = None
-    human_reach: float = Field(default=DEFAULT_HUMAN_REACH, ge=0)
+    durations: dict[str, Num] | None = None
+    human_reach: Num = Field(default=DEFAULT_HUMAN_REACH, ge=0)
     cameras: list[_CameraIn] = []
 
     @field_validator("units")
     @classmethod
     def _units(cls, v: str) -> str:
         if v not in _UNIT_SCALE:
-            raise ValueError(f"unknown unit {v!r}; expected one of {', '.join(_UNIT_SCALE)}")
+            raise ValueError(f"unknown unit {quote(v)}; expected one of {', '.join(_UNIT_SCALE)}")
         return v
 
     @field_validator("durations")
     @classmethod
     def _durations(cls, v: dict[str, float] | None) -> dict[str, float] | None:
         for k, d in (v or {}).items():
+            if k not in SKILL_NAMES:
+                raise ValueError(
+                    f"unknown skill {quote(k)}; expected some of {', '.join(SKILL_NAMES)}"
+                )
             if not math.isfinite(d) or d < 0:
-                raise ValueError(f"duration of {k!r} must be a finite number >= 0, got {d!r}")
+                raise ValueError(
+                    f"duration of {quote(k)} must be a finite number >= 0, got {quote(d)}"
+                )
         return v
 
     @field_validator("human_reach")
     @classmethod
     def _hr(cls, v: float) -> float:
         if not math.isfinite(v):
-            raise ValueError(f"{v!r} is not a finite number")
+            raise ValueError(f"{quote(v)} is not a finite number")
         return v
 
 
 _ID_CHARS = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-")
 
 
+MAX_ID_CHARS = 64  # ids appear in formulas, prompts and messages
+
+
 def _check_id(value: str, where: str, source: str) -> None:
+    if len(value) > MAX_ID_CHARS:
+        raise SceneError(
+            f"{source}: {where}: id {quote(value, 40)} is too long (at most {MAX_ID_CHARS} "
+            "characters)"
+        )
     if not set(value) <= _ID_CHARS or value[0].isdigit() or value[0] == "-":
         raise SceneError(
-            f"{source}: {where}: id {value!r} is not valid; expected letters, digits, '_' or '-' "
-            "starting with a letter or '_'"
+            f"{source}: {where}: id {quote(value)} is not valid; expected letters, digits, '_' "
+            "or '-' starting with a letter or '_'"
         )
 
 
@@ -332,7 +364,7 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
             _check_id(item.id, where, source)
             if item.id in seen:
                 raise SceneError(
-                    f"{source}: {where}: duplicate id {item.id!r} "
+                    f"{source}: {where}: duplicate id {quote(item.id)} "
                     f"(already used by {seen[item.id]}); ids must be unique across "
                     "robots, objects, humans and surfaces"
                 )
@@ -375,16 +407,7 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
 def load_scene(path: str | Path) -> Scene:
     """Load and validate a scene from a YAML or JSON file."""
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneError(f"{p}: cannot read scene file: {exc.strerror or exc}") from None
-    try:
-        data = json.loads(text) if p.suffix == ".json" else yaml.safe_load(text)
-    except (yaml.YAMLError, json.JSONDecodeError) as exc:
-        kind = "JSON" if p.suffix == ".json" else "YAML"
-        raise SceneError(f"{p}: not valid {kind}: {exc}") from None
-    return scene_from_dict(data, source=str(p))
+    return scene_from_dict(load_file(p, "scene file", SceneError), source=str(p))
 
 
 def _format_validation(exc: ValidationError, source: str, data: Mapping[str, Any]) -> str:
@@ -394,12 +417,12 @@ def _format_validation(exc: ValidationError, source: str, data: Mapping[str, Any
     for part in loc:
         path += f"[{part}]" if isinstance(part, int) else (f".{part}" if path else str(part))
     value = _lookup(data, loc)
-    msg = err.get("msg", "invalid")
+    msg = str(err.get("msg", "invalid")).removeprefix("Value error, ")
     if err.get("type") == "extra_forbidden":
-        return f"{source}: {path}: unknown field (value {value!r}); check the spelling"
+        return f"{source}: {path}: unknown field (value {quote(value)}); check the spelling"
     if err.get("type") == "missing":
         return f"{source}: {path}: required field is missing"
-    return f"{source}: {path}: invalid value {value!r}: {msg}"
+    return f"{source}: {path}: invalid value {quote(value)}: {clip(msg)}"
 
 
 def _lookup(data: Any, loc: Sequence[Any]) -> Any:
