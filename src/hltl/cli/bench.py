@@ -139,6 +139,12 @@ def register(sub: Any) -> None:
     gr.add_argument("--write", type=Path, help="update this Markdown file's grounding section")
     gr.set_defaults(func=run_grounding)
 
+    s3 = bsub.add_parser("sim3d", help="3D simulator: model cache, real-time factor, render ms")
+    s3.add_argument("--frames", type=int, default=15, help="frames per render measurement")
+    s3.add_argument("--demo", action="store_true", help="also time 'hltl demo --3d'")
+    s3.add_argument("--write", type=Path, help="update this Markdown file's sim3d section")
+    s3.set_defaults(func=run_sim3d)
+
     mo = bsub.add_parser("motion", help="IK, reachability maps, handover and P.M.P. timings")
     mo.add_argument("--ik-solves", type=int, default=300, help="IK solves per model")
     mo.add_argument("--probes", type=int, default=1000, help="map probes per model")
@@ -147,6 +153,24 @@ def register(sub: Any) -> None:
     mo.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
     mo.add_argument("--write", type=Path, help="update this Markdown file's motion section")
     mo.set_defaults(func=run_motion)
+
+
+def run_sim3d(args: argparse.Namespace) -> int:
+    import datetime
+
+    from hltl.sim3d.bench import bench_sim3d, format_sim3d
+
+    if args.frames < 1:
+        raise HltlError(f"--frames must be at least 1, got {args.frames}")
+    b = bench_sim3d(frames=args.frames, demo=args.demo)
+    command = "hltl bench sim3d" + (" --demo" if args.demo else "")
+    if args.write is not None:
+        command += f" --write {shlex.quote(str(args.write))}"
+    body = format_sim3d(b, command, datetime.date.today().isoformat())
+    print(body)
+    if args.write is not None:
+        write_section(args.write, "sim3d", body)
+    return 0
 
 
 def run_planner(args: argparse.Namespace) -> int:

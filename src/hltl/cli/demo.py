@@ -38,6 +38,13 @@ def register(sub: Any) -> None:
     )
     p.add_argument("--short", action="store_true", help="few, small animation frames (quick)")
     p.add_argument("--no-pictures", action="store_true", help="run and summarise only")
+    p.add_argument(
+        "--3d",
+        dest="three_d",
+        action="store_true",
+        help="run in the 3D simulator (MuJoCo) and render a video from the fixed camera and an "
+        "orbit view with the timeline (demo3d.mp4, demo3d.gif, a PNG frame); sim3d extra",
+    )
     p.set_defaults(func=run)
 
 
@@ -60,16 +67,16 @@ def run(args: argparse.Namespace) -> int:
 
         events = load_events(args.events, scene)
     _header(console, scene, args.instruction, args.events)
-    result = run_demo(
-        scene=scene,
-        instruction=args.instruction,
-        events=events,
-        seed=args.seed,
-        out=args.out,
-        short=args.short,
-        pictures=not args.no_pictures,
-        on_record=Timeline(scene),
-    )
+    common: dict[str, Any] = {
+        "scene": scene,
+        "instruction": args.instruction,
+        "events": events,
+        "seed": args.seed,
+        "out": args.out,
+        "short": args.short,
+        "on_record": Timeline(scene),
+    }
+    result = _run_3d(common) if args.three_d else run_demo(pictures=not args.no_pictures, **common)
     _summary(console, result)
     default_story = (
         args.events is None and args.scene is None and args.instruction == DEMO_INSTRUCTION
@@ -83,6 +90,20 @@ def run(args: argparse.Namespace) -> int:
         print(f"error: demo episode failed: {result.episode.metrics.reason}", file=sys.stderr)
         return 1
     return 0
+
+
+def _run_3d(common: dict[str, Any]) -> DemoResult:
+    from rich.progress import Progress
+
+    from hltl.viz.demo3d import run_demo3d
+
+    with Progress(transient=True) as bar:
+        task = bar.add_task("rendering 3D frames", total=None)
+
+        def progress(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        return run_demo3d(progress=progress, **common)
 
 
 def _header(console: Any, scene: Scene, instruction: str, events: Path | None) -> None:

@@ -66,6 +66,12 @@ def register(sub: Any) -> None:
         "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
     )
     p.add_argument(
+        "--motion",
+        action="store_true",
+        help="reach, workspaces and ℓ from the arms' reachability maps, durations from motion "
+        "plans, trajectories handed to the driver (discrete simulator; the motion extra)",
+    )
+    p.add_argument(
         "--perception",
         choices=("truth", "camera"),
         default="truth",
@@ -119,9 +125,14 @@ def run(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {}
     recorder = None
     if args.sim == "mujoco":
+        if args.motion:
+            raise HltlError("--motion runs with the discrete simulator; drop --sim mujoco")
         from hltl.cli.sim3d import simulator_options
 
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
+    grounder = make_grounder(args.grounder)
+    if args.motion:
+        extra = _motion_options(scene, spec, config, predictor)
     episode = run_episode(
         scene,
         spec=spec,
@@ -129,7 +140,7 @@ def run(args: argparse.Namespace) -> int:
         events=events,
         seed=args.seed,
         config=config,
-        grounder=make_grounder(args.grounder),
+        grounder=grounder,
         predictor=predictor,
         log_path=args.log,
         on_record=None if timeline is None else timeline,
@@ -147,6 +158,34 @@ def run(args: argparse.Namespace) -> int:
         print(f"error: episode failed: {episode.metrics.reason}", file=sys.stderr)
         return 1
     return 0
+
+
+def _motion_options(scene: Any, spec: Any, config: Any, predictor: Any) -> dict[str, Any]:
+    """``run_episode`` keywords that put the motion layer under the simulator and the executor."""
+    import functools
+
+    from hltl.execution.executor import Executor
+    from hltl.motion.cost import motion_models
+    from hltl.sim.simulator import Simulator
+
+    kinematics, cost = motion_models(scene)
+
+    def agent(sim: Any, log: Any) -> Executor:
+        return Executor(
+            scene,
+            spec,
+            sim,
+            log=log,
+            predictor=predictor,
+            config=config.executor,
+            cost=cost,
+            kinematics=kinematics,
+        )
+
+    return {
+        "simulator": functools.partial(Simulator, cost=cost, kinematics=kinematics),
+        "agent": agent,
+    }
 
 
 class Timeline:

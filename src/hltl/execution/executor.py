@@ -77,6 +77,7 @@ class ExactPlanner:
     algorithm: str = "astar"
     timeout: float = 60.0
     kinematics: Kinematics | None = None
+    cost: CostModel | None = None
 
     def __call__(
         self,
@@ -98,6 +99,7 @@ class ExactPlanner:
             algorithm=self.algorithm,
             timeout=self.timeout,
             kinematics=self.kinematics,
+            cost=self.cost,
         )
 
 
@@ -191,7 +193,9 @@ class Executor:
         self.scene = scene
         self.driver = driver
         self.log = EventLog() if log is None else log
-        self.planner: Planner = ExactPlanner(kinematics=kinematics) if planner is None else planner
+        self.planner: Planner = (
+            ExactPlanner(kinematics=kinematics, cost=cost) if planner is None else planner
+        )
         self.config = ExecutorConfig() if config is None else config
         self.predictor: TrajectoryPredictor | None = (
             ConstantVelocityPredictor() if predictor is None else predictor

@@ -61,7 +61,9 @@ class CameraRenderer:
         geometry: ``collision`` draws robots' collision shapes (fast), ``visual`` their meshes.
     """
 
-    def __init__(self, sm: SceneModel, cam: Camera, *, geometry: str = "collision") -> None:
+    def __init__(
+        self, sm: SceneModel, cam: Camera, *, geometry: str = "collision", shadows: bool = False
+    ) -> None:
         if geometry not in GEOMETRY:
             raise HltlError(f"geometry {geometry!r} is not one of {', '.join(GEOMETRY)}")
         require_renderer()
@@ -88,6 +90,9 @@ class CameraRenderer:
             self.option.geomgroup[g] = 1 if g in groups else 0
             self.option.sitegroup[g] = 0
         self.seg_lut = np.concatenate([[0], sm.geom_segment]).astype(np.int32)
+        # shadows (and the sky) cost more than the rest of a frame on a CPU renderer: camera
+        # frames go without, the demo video with them
+        self.shadows = shadows
 
     def close(self) -> None:
         self.renderer.close()
@@ -103,31 +108,69 @@ class CameraRenderer:
     ) -> Frame:
         """Render the model's current state (``data`` after ``mj_forward``/``mj_kinematics``).
 
-        ``camera``: an ``MjvCamera`` (e.g. an orbit view) instead of the fixed camera.
+        ``camera``: an ``MjvCamera`` (e.g. an orbit view) instead of the fixed camera. Two
+        passes at most: the lit colour image, and one segmentation pass whose colour buffer
+        gives the ids and whose depth buffer gives the depth (flat id colours keep the depth
+        exact far away, as MuJoCo's own depth rendering does).
         """
-        mj = self.mj
         r = self.renderer
         r.update_scene(
             data, camera=self.cam_id if camera is None else camera, scene_option=self.option
         )
+        flags = r.scene.flags
+        flags[self.mj.mjtRndFlag.mjRND_SHADOW] = self.shadows
+        flags[self.mj.mjtRndFlag.mjRND_SKYBOX] = self.shadows
         rgb = r.render().copy()
         h, w = rgb.shape[:2]
-        ids = np.zeros((h, w), np.int32)
-        if seg or depth:
-            r.enable_segmentation_rendering()
-            raw = r.render()
-            r.disable_segmentation_rendering()
-            objid, objtype = raw[..., 0], raw[..., 1]
-            is_geom = objtype == int(mj.mjtObj.mjOBJ_GEOM)
-            ids = np.where(is_geom, self.seg_lut[np.clip(objid, -1, None) + 1], 0).astype(np.int32)
-            hit = objid >= 0
-        dep = np.zeros((h, w), np.float32)
-        if depth:
-            r.enable_depth_rendering()
-            dep = r.render().astype(np.float32)
-            r.disable_depth_rendering()
-            dep[~hit] = 0.0
-        return Frame(rgb, dep, ids if seg else np.zeros((h, w), np.int32))
+        if not (seg or depth):
+            return Frame(rgb, np.zeros((h, w), np.float32), np.zeros((h, w), np.int32))
+        ids, dep = self._seg_depth(h, w)
+        return Frame(
+            rgb,
+            dep if depth else np.zeros((h, w), np.float32),
+            ids if seg else np.zeros((h, w), np.int32),
+        )
+
+    def _seg_depth(self, h: int, w: int) -> tuple[np.ndarray, np.ndarray]:
+        mj = self.mj
+        r = self.renderer
+        scn = r.scene
+        saved = scn.flags.copy()
+        try:
+            scn.flags[mj.mjtRndFlag.mjRND_SEGMENT] = True
+            scn.flags[mj.mjtRndFlag.mjRND_IDCOLOR] = True
+            if r._gl_context:
+                r._gl_context.make_current()
+            colour = np.empty((h, w, 3), np.uint8)
+            zbuf = np.empty((h, w), np.float32)
+            mj.mjr_render(r._rect, scn, r._mjr_context)
+            mj.mjr_readPixels(colour, zbuf, r._rect, r._mjr_context)
+        finally:
+            np.copyto(scn.flags, saved)
+        colour, zbuf = np.flipud(colour), np.flipud(zbuf)
+        # id colours → MuJoCo segment ids (0 = nothing) → geoms → scene segments
+        segid = (
+            colour[..., 0].astype(np.int64)
+            + colour[..., 1].astype(np.int64) * 256
+            + colour[..., 2].astype(np.int64) * 65536
+        )
+        lut = np.zeros(scn.ngeom + 2, np.int32)
+        geom = int(mj.mjtObj.mjOBJ_GEOM)
+        for g in scn.geoms[: scn.ngeom]:
+            if g.segid >= 0 and g.objtype == geom:
+                lut[g.segid + 1] = self.seg_lut[g.objid + 1]
+        hit = segid > 0
+        ids = lut[np.clip(segid, 0, len(lut) - 1)]
+        # reversed-Z depth buffer → metres along the optical axis (MuJoCo's own conversion)
+        m = self.sm.model
+        far = np.float32(m.vis.map.zfar * m.stat.extent)
+        near = np.float32(m.vis.map.znear * m.stat.extent)
+        c = -(far + near) / (far - near)
+        d = -(np.float32(2) * far * near) / (far - near)
+        c, d = np.float32(-0.5) * c - np.float32(0.5), np.float32(-0.5) * d
+        dep = (d / (zbuf.astype(np.float64) + c)).astype(np.float32)
+        dep[~hit] = 0.0
+        return ids, dep
 
 
 @dataclass

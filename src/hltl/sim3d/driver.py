@@ -16,9 +16,10 @@ seconds and logged as ``contact`` records.
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -37,6 +38,7 @@ from hltl.world.scene import Scene, Vec3
 
 if TYPE_CHECKING:
     from hltl.motion.kinematics import Arm
+    from hltl.motion.planning import Cell
 
 TIMINGS = ("motion", "cost")
 # seconds the hand dwells at the target to close or open the fingers (the analytic cost model's)
@@ -58,6 +60,8 @@ class MotionInfo:
 
     plan: MotionPlan
     ik_error: float  # the worst distance between a waypoint and where IK put the hand
+    source: str = "given"  # given | hltl.motion | ik (the driver's own waypoints)
+    note: str = ""  # why hltl.motion's planner was not used, if it was not
 
 
 class MujocoSimulator(Simulator):
@@ -99,7 +103,14 @@ class MujocoSimulator(Simulator):
         self._plans: dict[int, MotionInfo] = {}
         self._touching: set[tuple[str, str]] = set()
         self._arms = _motion_arms(scene) if use_motion_layer else {}
+        self._cell: Cell | None = None
+        # what the hands visibly carry: object → (robot or human, offset from the hand)
+        self._carry: dict[str, tuple[str, str, np.ndarray]] = {}
+        self._frozen: dict[str, Vec3] = {}  # released by a hand, not yet where the log puts it
+        self._fired: dict[int, set[int]] = {}
         self.contacts: list[tuple[float, str, str]] = []
+        # called with the time after every posing (every contact_dt at most): video recorders
+        self.on_pose: list[Callable[[float], None]] = []
         self.synced_at = -1.0
         self._sync()
 
@@ -113,12 +124,13 @@ class MujocoSimulator(Simulator):
             return handle
         info = MotionInfo(motion, 0.0) if motion is not None else self._plan(action, act.targets)
         plan = info.plan
+        self._fired[handle.id] = set()
         if self.timing == "cost" or plan.duration <= 0:
             plan = _stretch(plan, act.duration)
         else:
             act.duration = plan.duration
             act.end = self.now + plan.duration
-        self._plans[handle.id] = MotionInfo(plan, info.ik_error)
+        self._plans[handle.id] = dataclasses.replace(info, plan=plan)
         return handle
 
     def halt(self, handle: Handle, t: float, reason: str) -> None:
@@ -190,18 +202,92 @@ class MujocoSimulator(Simulator):
                 stride=stride,
             )
         st.forward()  # arms and people first: objects follow hands
+        self._fire_motion_events()
         for oid in self._objects:
-            s = self.object_status(oid)
-            kind, who = s.loc.kind, s.loc.ref
-            if kind == "held" and who in st.sm.robots:
-                st.set_object(oid, st.hand(who))
-            elif kind == "delivered" and who in st.sm.humans:
-                st.set_object(oid, st.human_hand(who))
-            else:
-                st.set_object(oid, s.position)
+            st.set_object(oid, self._object_pose(oid))
         st.forward()
         self.synced_at = now
         self._note_contacts()
+        for f in self.on_pose:
+            f(now)
+
+    def _fire_motion_events(self) -> None:
+        """The running plans' grasp / transfer / release events: hands take and let go."""
+        st = self.stage
+        for hid, act in self._actions.items():
+            info = self._plans.get(hid)
+            if act.status is not None or info is None:
+                continue
+            done = self._fired.setdefault(hid, set())
+            elapsed = self.now - act.handle.start
+            action = act.handle.action
+            oid = action.object
+            for k, (te, kind, rid) in enumerate(info.plan.events):
+                if k in done or te > elapsed + 1e-9:
+                    continue
+                done.add(k)
+                at = np.asarray(self._object_pose(oid), float)
+                if kind in ("grasp", "transfer") and rid in st.sm.robots:
+                    self._carry[oid] = ("robot", rid, at - np.asarray(st.hand(rid)))
+                elif kind == "release":
+                    carrier = self._carry.get(oid)
+                    if carrier is not None and carrier[1] != rid:
+                        continue  # the giver lets go after the receiver took it
+                    self._carry.pop(oid, None)
+                    if action.skill == "handover_r2h" and action.human is not None:
+                        self._carry[oid] = ("human", action.human, np.zeros(3))
+                    else:
+                        self._frozen[oid] = (float(at[0]), float(at[1]), float(at[2]))
+
+    def _object_pose(self, oid: str) -> Vec3:
+        """Where an object is drawn: on the hand that visibly holds it, where a hand let it go
+        until the log moves it, else where the log says (standing on a surface it is on)."""
+        st = self.stage
+        s = self.object_status(oid)
+        kind, who = s.loc.kind, s.loc.ref
+        carrier = self._carry.get(oid)
+        # the log is the truth once it says something the hands do not show (while an action
+        # on the object runs, its hands are ahead of the log)
+        moving = self._running_on(oid)
+        if kind == "held" and (carrier is None or (carrier[1] != who and not moving)):
+            self._carry[oid] = carrier = ("robot", who, np.zeros(3))
+        elif kind == "delivered" and (carrier is None or (carrier[1] != who and not moving)):
+            self._carry[oid] = carrier = ("human", who, np.zeros(3))
+        elif kind in ("rest", "on") and carrier is not None and not self._grasping(oid):
+            self._carry.pop(oid)
+            carrier = None
+        if carrier is not None:
+            base = st.hand(carrier[1]) if carrier[0] == "robot" else st.human_hand(carrier[1])
+            p = np.asarray(base) + carrier[2]
+            return (float(p[0]), float(p[1]), float(p[2]))
+        frozen = self._frozen.get(oid)
+        if frozen is not None:
+            if kind in ("rest", "on") and not self._releasing(oid):
+                del self._frozen[oid]
+            else:
+                return frozen
+        if kind == "on":
+            lift = st.object_lift(oid)
+            return (s.position[0], s.position[1], s.position[2] + lift)
+        return s.position
+
+    def _running_on(self, oid: str) -> bool:
+        return any(
+            a.status is None and a.handle.action.object == oid for a in self._actions.values()
+        )
+
+    def _grasping(self, oid: str) -> bool:
+        """A running pick of ``oid`` has closed its hand (the log says 'held' only at its end)."""
+        return any(
+            a.status is None and a.handle.action.object == oid and a.handle.action.skill == "pick"
+            for a in self._actions.values()
+        )
+
+    def _releasing(self, oid: str) -> bool:
+        return any(
+            a.status is None and a.handle.action.object == oid and a.handle.action.skill == "place"
+            for a in self._actions.values()
+        )
 
     def _walk_pose(self, hid: str, p: Vec3) -> tuple[float, float | None]:
         """Yaw and distance walked so far (None when standing) of a person at ``now``."""
@@ -250,6 +336,31 @@ class MujocoSimulator(Simulator):
     # -- motion plans --------------------------------------------------------------------------
 
     def _plan(self, action: Action, targets: dict[str, Vec3]) -> MotionInfo:
+        """hltl.motion's plan of the skill instance where it has models of every arm involved
+        (grasps, collision-free paths, time parametrisation); else the driver's own IK plan."""
+        note = ""
+        if self._arms and all(r in self._arms for r in action.robots) and targets:
+            try:
+                from hltl.motion.planning import Cell, plan_action
+
+                if self._cell is None:
+                    self._cell = Cell(self.scene)
+                where = None
+                if action.skill == "pick":
+                    where = self.object_status(action.object).position
+                human_at = None
+                if action.human is not None:
+                    human_at = self.human_position(action.human)
+                sm = plan_action(self._cell, action, dict(self._q), where=where, human_at=human_at)
+                if sm.plan is not None:
+                    return MotionInfo(sm.plan, 0.0, "hltl.motion")
+                note = sm.reason or "no motion"
+            except ImportError as exc:
+                note = f"hltl.motion unavailable: {exc}"
+        info = self._ik_plan(action, targets)
+        return dataclasses.replace(info, note=note)
+
+    def _ik_plan(self, action: Action, targets: dict[str, Vec3]) -> MotionInfo:
         """Waypoints by IK from the current joints to each robot's transition target, timed by
         the joints' speed limits, with a dwell to grasp or release."""
         trajectories = []
@@ -286,7 +397,7 @@ class MujocoSimulator(Simulator):
         dwell = _DWELL.get(action.skill, 0.3)
         duration = arrive + dwell
         events = tuple((arrive, _EVENT.get(action.skill, "grasp"), r) for r in robots[:1])
-        return MotionInfo(MotionPlan(tuple(trajectories), events, duration), worst)
+        return MotionInfo(MotionPlan(tuple(trajectories), events, duration), worst, "ik")
 
     def _ik(
         self, rid: str, target: np.ndarray, q0: tuple[float, ...], approach: Sequence[float]

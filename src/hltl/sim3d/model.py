@@ -264,9 +264,12 @@ def robot_kind(robot: Robot) -> str:
 
 def object_look(obj: SceneObject) -> tuple[float, float, tuple[float, float, float, float]]:
     """(radius, height, rgba) of an object's cylinder, by category (unknown ones: hashed colour)."""
+    from hltl.motion.grasps import CATEGORY_CYLINDERS
+
     look = _OBJECT_LOOKS.get(obj.category.lower())
+    size = CATEGORY_CYLINDERS.get(obj.category.lower())  # the motion layer's grasp model
     if look is not None:
-        return look
+        return look if size is None else (size[0], size[1], look[2])
     h = zlib.crc32(obj.category.encode())
     rgb = tuple(0.25 + 0.6 * ((h >> s) & 0xFF) / 255.0 for s in (0, 8, 16))
     return (0.04, 0.14, (rgb[0], rgb[1], rgb[2], 1.0))

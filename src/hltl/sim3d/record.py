@@ -68,22 +68,25 @@ class FrameRecorder:
 
 @dataclass
 class Snapshots:
-    """The 3D pose every ``period`` simulated seconds (rendered after the episode)."""
+    """The 3D pose every ``period`` simulated seconds, taken as the simulator poses its model
+    (between the executor's ticks too), to be rendered after the episode."""
 
-    period: float = 0.05
+    period: float = 0.02
     times: list[float] = field(default_factory=list)
     qpos: list[np.ndarray] = field(default_factory=list)
     mocap_pos: list[np.ndarray] = field(default_factory=list)
     mocap_quat: list[np.ndarray] = field(default_factory=list)
     sim: MujocoSimulator | None = None
 
-    def on_tick(self, t: float, sim: Any, executor: Any) -> None:
-        if not isinstance(sim, MujocoSimulator):
-            raise HltlError("3D snapshots need the 3D simulator")
+    def attach(self, sim: MujocoSimulator) -> None:
         self.sim = sim
-        if self.times and t + 1e-9 < self.times[-1] + self.period:
+        sim.on_pose.append(self._take)
+
+    def _take(self, t: float) -> None:
+        if self.times and t < self.times[-1] + self.period - 1e-9:
             return
-        d = sim.stage.data
+        assert self.sim is not None
+        d = self.sim.stage.data
         self.times.append(t)
         self.qpos.append(d.qpos.copy())
         self.mocap_pos.append(d.mocap_pos.copy())

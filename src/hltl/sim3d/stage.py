@@ -44,6 +44,10 @@ class Stage:
         self.model = sm.model
         self.data = mj.MjData(self.model)
         self._ik = mj.MjData(self.model)
+        self._object_body = {
+            o.id: int(mj.mj_name2id(self.model, mj.mjtObj.mjOBJ_BODY, f"object:{o.id}"))
+            for o in self.scene.objects
+        }
         self.home = {
             rid: self.solve(rid, home_point(self.scene.robot(rid)), rig.seed).q
             for rid, rig in sm.robots.items()
@@ -65,6 +69,13 @@ class Stage:
     def robot_q(self, rid: str) -> tuple[float, ...]:
         rig = self.sm.robots[rid]
         return tuple(float(v) for v in self.data.qpos[list(rig.qpos_adr)])
+
+    def object_lift(self, oid: str) -> float:
+        """Height of an object's grasp point above its bottom (to stand it on a surface)."""
+        m = self.model
+        body = self._object_body[oid]
+        g = int(m.body_geomadr[body])
+        return float(m.geom_size[g][1] - m.geom_pos[g][2])
 
     def set_object(self, oid: str, position: Sequence[float]) -> None:
         self.data.mocap_pos[self.sm.object_mocap[oid]] = position
