@@ -16,3 +16,38 @@ def test_import_hltl_is_light() -> None:
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == ""
+
+
+def test_each_subcommand_module_is_light_and_only_the_chosen_one_is_imported() -> None:
+    # every `hltl <command>` module can be imported without a heavy dependency, and building
+    # the parser for one command imports no other command's module
+    code = (
+        "import sys, importlib, hltl.cli.main as m\n"
+        "heavy = " + repr(HEAVY) + "\n"
+        "for name, (module, _) in m.COMMANDS.items():\n"
+        "    before = {k for k in sys.modules if k.split('.')[0] in heavy}\n"
+        "    importlib.import_module('hltl.cli.' + module)\n"
+        "    new = {k.split('.')[0] for k in sys.modules if k.split('.')[0] in heavy} - before\n"
+        "    print(name + ':' + ','.join(sorted(new)))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    lines = [line.split(":", 1) for line in out.stdout.strip().splitlines()]
+    assert lines and all(heavy.strip() == "" for _, heavy in lines), out.stdout
+    code = (
+        "import sys, hltl.cli.main as m\n"
+        "m.build_parser('plan')\n"
+        "print(sorted(k for k in sys.modules if k.startswith('hltl.cli.')))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "['hltl.cli.common', 'hltl.cli.main', 'hltl.cli.plan']"
+
+
+def test_command_table_help_matches_each_module() -> None:
+    # the one-line help `hltl --help` shows without importing a module is the module's own
+    import hltl.cli.main as m
+
+    for name, (_, help_) in m.COMMANDS.items():
+        parser = m.build_parser(name)
+        sub = next(a for a in parser._actions if a.dest == "command")
+        shown = {c.dest: c.help for c in sub._choices_actions}  # type: ignore[attr-defined]
+        assert shown[name] == help_, name

@@ -10,6 +10,7 @@ import pytest
 from hltl.cli.main import main
 
 SCENE = "examples/scenes/two_arms.yaml"
+FIG1 = ["plan", "--scene", SCENE, "--spec", "examples/specs/fig1.yaml"]
 
 
 @pytest.fixture(autouse=True)
@@ -64,6 +65,11 @@ def test_infeasible_exits_1_with_the_reason(
             1,
             "--timeout: expected a finite number > 0",
         ),
+        (
+            [*FIG1, "--suboptimality", "0.5"],
+            1,
+            "--suboptimality: expected a factor of at least 1 (e.g. 1.1), got 0.5",
+        ),
     ],
 )
 def test_usage_and_input_errors(
@@ -82,3 +88,13 @@ def test_failed_episodes_end_with_one_error_line(
     assert main(argv) == 1
     err = [ln for ln in capsys.readouterr().err.splitlines() if ln.startswith("error:")]
     assert len(err) == 1 and "no person called 'Z'" in err[0]
+
+
+def test_anytime_reports_bound_and_gap(capsys: pytest.CaptureFixture[str]) -> None:
+    argv = ["plan", "--scene", SCENE, "--spec", "examples/specs/fig1.yaml", "--anytime"]
+    assert main([*argv, "--timeout", "2", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["status"] == "solved" and data["makespan"] == 1.0
+    assert data["lower_bound"] == 1.0 and data["gap"] == 0.0
+    assert main([*argv, "--suboptimality", "1.5"]) == 0
+    assert "optimal within 0.0 %" in capsys.readouterr().out

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -84,3 +86,31 @@ def test_segment_distance_matches_coal(xs: list[float], degenerate: int) -> None
         assert mine - 2 * r == pytest.approx(ref, abs=1e-6)
     else:
         assert mine <= 2 * r + 1e-6
+
+
+def test_rrt_connect_goes_around_an_obstacle() -> None:
+    from hltl.motion import paths
+
+    arm = Arm("r", "elfin3")
+    res = arm.ik((0.5, 0.0, 0.25), None, arm.home, prefer=arm.home)
+    assert res.q is not None
+    q0 = np.asarray(res.q)
+    q1 = q0.copy()
+    q1[0] += 1.5 if q0[0] < 1.5 else -1.5
+    # a post where the hand passes halfway through the straight swing
+    w, _ = arm.fk((q0 + q1) / 2)
+    post = [Capsule((w[0], w[1], 0.0), (w[0], w[1], 0.45), 0.05, "post")]
+    packed = paths.capsule_arrays(post)
+    assert not paths.segment_clear(arm, q0, q1, packed)
+    path = paths.plan_path(arm, q0, q1, post, timeout=5.0)
+    assert path is not None and path.planner in ("via_upright", "rrt_connect")
+    rrt = paths._rrt_connect(arm, q0, q1, packed, 5.0)
+    assert rrt is not None
+    for found in (path, rrt):
+        pts = [np.asarray(p) for p in found.waypoints]
+        assert np.allclose(pts[0], q0) and np.allclose(pts[-1], q1)
+        assert all(paths.segment_clear(arm, a, b, packed) for a, b in itertools.pairwise(pts))
+        timed = paths.time_parametrise(arm, found.waypoints, post)
+        assert timed.positions[0] == pytest.approx(tuple(q0))
+        assert timed.positions[-1] == pytest.approx(tuple(q1), abs=1e-6)
+        assert all(paths.config_valid(arm, np.asarray(q), packed) for q in timed.positions)

@@ -161,7 +161,7 @@ def test_default_cache_is_one_instance() -> None:
 
 
 def test_too_many_atoms() -> None:
-    f = parse_formula(" & ".join(f"F a{i}" for i in range(MAX_PROPS + 1)))
+    f = parse_formula(" & ".join(f"G a{i}" for i in range(MAX_PROPS + 1)))
     with pytest.raises(AutomatonError, match=f"has {MAX_PROPS + 1} atoms; at most {MAX_PROPS}"):
         to_dfa(f)
 
@@ -230,3 +230,45 @@ def test_relabel_checks_arity() -> None:
     dfa = to_dfa(parse_formula("F a"))
     with pytest.raises(ValueError, match="relabel needs 1 distinct propositions, got 2"):
         dfa.relabel([a, b])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "F a0 & F a1 & F a2 & F a3 & F a4 & F a5 & F a6",
+        "F a0 | F a1 & F a2 | (F a3 & F a4) | F a5 & F a6 & F a7",
+        "(F a0 | F a1) & (F a2 | F a3) & (F a4 | F a5) & F a6",
+    ],
+)
+def test_and_or_of_eventualities_skips_mona_and_agrees_with_it(text: str) -> None:
+    # the seen-set automaton (no MONA) against MONA's minimal DFA on random traces
+    import random
+
+    from hltl.spec.automata import SYMBOLIC_FROM, MonotoneDFA, _compile_canonical, canonical_form
+
+    f = parse_formula(text)
+    sym = to_dfa(f)
+    assert isinstance(sym, MonotoneDFA) and len(sym.props) >= SYMBOLIC_FROM
+    canonical, props = canonical_form(f)
+    # MONA directly (below the symbolic threshold's reach): force the table path
+    import hltl.spec.automata as automata
+
+    old = automata.SYMBOLIC_FROM
+    automata.SYMBOLIC_FROM = 99
+    try:
+        table = _compile_canonical(canonical, len(props), "mona", 60.0).relabel(props)
+    finally:
+        automata.SYMBOLIC_FROM = old
+    rng = random.Random(text)
+    for _ in range(300):
+        trace = [{a for a in props if rng.random() < 0.15} for _ in range(rng.randint(1, 6))]
+        assert sym.accepts(trace) == table.accepts(trace), trace
+    assert not sym.is_empty()
+
+
+def test_seen_set_automaton_scales_past_the_table_limit() -> None:
+    f = parse_formula(" & ".join(f"F a{i}" for i in range(24)))
+    dfa = to_dfa(f)
+    assert len(dfa.props) == 24
+    trace = [{a} for a in dfa.props]
+    assert dfa.accepts(trace) and not dfa.accepts(trace[:-1])

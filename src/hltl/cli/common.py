@@ -83,7 +83,8 @@ def print_plan_timeline(result: PlanResult, scene: Scene) -> None:
     console = Console()
     if not result.solved:
         console.print(f"[bold red]{result.status.value}[/]: {result.reason}")
-        return
+        if not result.steps:
+            return
     table = Table(title=f"plan — makespan {result.makespan:.2f} s", title_justify="left")
     table.add_column("step", justify="right")
     table.add_column("start", justify="right")

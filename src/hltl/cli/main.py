@@ -12,28 +12,36 @@ from hltl import __version__
 from hltl.cli.common import error_line
 from hltl.errors import HltlError
 
-# Subcommands live in their own modules (``hltl.cli.<module>``), each exposing
-# ``register(subparsers) -> None`` that adds its parser and sets ``func=run(args) -> int``.
-# A module that is not there yet is simply not offered.
-COMMAND_MODULES = (
-    "check_spec",
-    "ground",
-    "plan",
-    "run",
-    "score",
-    "demo",
-    "viz",
-    "bench",
-    "render",
-    "perception",
-    "perceive",
-    "motion",
-)
+# One entry per subcommand: name -> (its module under hltl.cli, the one-line help `hltl --help`
+# lists). The module, which exposes ``register(subparsers)`` adding its parser with
+# ``func=run(args) -> int``, is imported only when its command runs or its --help is asked for,
+# so `hltl --help` and a small `hltl plan` start fast (docs/benchmarks.md, "Start-up").
+COMMANDS: dict[str, tuple[str, str]] = {
+    "check-spec": ("check_spec", "validate H-LTLf specification files"),
+    "ground": ("ground", "turn an instruction into an H-LTLf spec"),
+    "plan": ("plan", "find a makespan-optimal plan"),
+    "run": ("run", "run one closed-loop episode in the simulator"),
+    "score": ("score", "recompute metrics from an execution log"),
+    "demo": ("demo", "run the paper's Fig. 1 episode and draw it"),
+    "viz": ("viz", "draw a plan, an execution log or a spec"),
+    "bench": ("bench", "benchmarks"),
+    "render": (
+        "render",
+        "render a scene's RGB-D camera (RGB, depth, segmentation) to a frame folder",
+    ),
+    "perception": ("perception", "train and evaluate the trajectory predictors"),
+    "perceive": ("perceive", "objects in 3D and tracked people from an RGB-D frame folder"),
+    "motion": (
+        "motion",
+        "arm kinematics: handover poses, comfort zones, skill motions, reachability maps",
+    ),
+}
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser; only ``command``'s module is imported (the others are listed by name)."""
     parser = argparse.ArgumentParser(
         prog="hltl",
         description="Instructions to makespan-optimal multi-robot handover plans via H-LTLf.",
@@ -41,20 +49,26 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"hltl {__version__}")
     parser.add_argument("--debug", action="store_true", help="show tracebacks for errors")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in COMMAND_MODULES:
-        try:
-            module = importlib.import_module(f"hltl.cli.{name}")
-        except ModuleNotFoundError as exc:
-            if exc.name == f"hltl.cli.{name}":
-                continue
-            raise
-        module.register(sub)
+    for name, (module_name, help_) in COMMANDS.items():
+        if name == command:
+            importlib.import_module(f"hltl.cli.{module_name}").register(sub)
+        else:
+            sub.add_parser(name, help=help_, add_help=False)
     return parser
+
+
+def chosen_command(argv: Sequence[str]) -> str | None:
+    """The subcommand in ``argv``: its first word that is not a top-level option."""
+    for arg in argv:
+        if not arg.startswith("-"):
+            return arg if arg in COMMANDS else None
+    return None
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit code (0 ok, 1 failure, 2 usage)."""
-    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(chosen_command(argv))
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help/--version

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from pathlib import Path
 from typing import Any
 
 from hltl.cli.common import check_option, load_spec_or_ground, print_plan_timeline
+from hltl.errors import HltlError
 from hltl.fileio import write_output
 
 
@@ -32,7 +34,25 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--algorithm", choices=("astar", "dijkstra"), default="astar", help="search algorithm"
     )
-    p.add_argument("--timeout", type=float, default=60.0, help="seconds before giving up")
+    p.add_argument(
+        "--timeout",
+        type=float,
+        default=None,
+        help="seconds before giving up (default 60); with --anytime, the time to improve the "
+        "plan and its bound (default 10)",
+    )
+    p.add_argument(
+        "--anytime",
+        action="store_true",
+        help="return a plan fast, improve it until --timeout, and prove how far from optimal it "
+        "can be (lower_bound and gap in the plan JSON)",
+    )
+    p.add_argument(
+        "--suboptimality",
+        type=float,
+        metavar="W",
+        help="anytime mode that stops once makespan <= W x lower bound (W >= 1, e.g. 1.1)",
+    )
     p.add_argument("--json", action="store_true", help="print the plan JSON")
     p.add_argument(
         "--motion",
@@ -49,7 +69,16 @@ def run(args: argparse.Namespace) -> int:
     from hltl.spec.hierarchy import spec_to_dict
     from hltl.world.scene import load_scene
 
-    check_option("--timeout", args.timeout, positive=True)
+    if args.timeout is not None:
+        check_option("--timeout", args.timeout, positive=True)
+    if args.suboptimality is not None and not (
+        math.isfinite(args.suboptimality) and args.suboptimality >= 1.0
+    ):
+        raise HltlError(
+            f"--suboptimality: expected a factor of at least 1 (e.g. 1.1), got {args.suboptimality}"
+        )
+    anytime = args.anytime or args.suboptimality is not None
+    timeout = args.timeout if args.timeout is not None else (10.0 if anytime else 60.0)
     scene = load_scene(args.scene)
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
     extra: dict[str, Any] = {}
@@ -58,7 +87,15 @@ def run(args: argparse.Namespace) -> int:
 
         kinematics, cost = motion_models(scene)
         extra = {"kinematics": kinematics, "cost": cost}
-    result = plan(scene, spec, algorithm=args.algorithm, timeout=args.timeout, **extra)
+    result = plan(
+        scene,
+        spec,
+        algorithm=args.algorithm,
+        timeout=timeout,
+        anytime=anytime,
+        suboptimality=args.suboptimality,
+        **extra,
+    )
     data = result.to_dict(spec=spec_to_dict(spec), scene=str(args.scene))
     if args.output is not None:
         write_output(args.output, "the plan", json.dumps(data, indent=2) + "\n")
@@ -69,4 +106,9 @@ def run(args: argparse.Namespace) -> int:
     if not result.solved:
         print(f"error: {result.status.value}: {result.reason}", file=sys.stderr)
         return 1
+    if anytime and not args.json and result.gap is not None and result.lower_bound is not None:
+        print(
+            f"makespan {result.makespan:.2f} s, lower bound {result.lower_bound:.2f} s: "
+            f"optimal within {100 * result.gap:.1f} %"
+        )
     return 0

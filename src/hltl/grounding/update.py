@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING
 
 from hltl.errors import GroundingError
 from hltl.fileio import quote
-from hltl.grounding.base import Grounder, Grounding, UpdateInfo
+from hltl.grounding.base import Grounder, Grounding, TokenUsage, UpdateInfo
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.tree import (
     Names,
@@ -345,11 +345,68 @@ def apply_update(
             (``HierarchyMonitor.done``); completed tasks cannot be cancelled, replaced or moved.
 
     Raises:
-        GroundingError: the update cannot be applied; the message says why.
+        GroundingError: the update cannot be applied; the message says why. It carries the
+            tokens the grounder spent on the new task, which are paid for all the same.
     """
+    done = frozenset(completed)
+    metered = _Metered(grounder)
+    try:
+        result = _apply(instruction, scene, running, metered, done)
+        _check_not_dropped(result, done)
+    except GroundingError as exc:
+        if exc.tokens_spent >= metered.spent.total:
+            raise
+        raise GroundingError(
+            str(exc),
+            prompt_tokens=metered.spent.prompt,
+            completion_tokens=metered.spent.completion,
+        ) from None
+    return result
+
+
+class _Metered:
+    """A grounder that adds up what the grounder it wraps spends, failures included."""
+
+    def __init__(self, inner: Grounder) -> None:
+        self.inner = inner
+        self.spent = TokenUsage()
+
+    def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
+        try:
+            g = self.inner.ground(instruction, scene, running)
+        except GroundingError as exc:
+            self.spent = self.spent + TokenUsage(exc.prompt_tokens, exc.completion_tokens)
+            raise
+        self.spent = self.spent + g.tokens
+        return g
+
+
+def _check_not_dropped(result: Grounding, done: frozenset[str]) -> None:
+    """Refuse an update whose new tasks sit under a formula that is already complete.
+
+    The monitor state carries over by name and a completed formula stays completed, so a task
+    added below one would count as done without ever being carried out: accepted and dropped.
+    """
+    info = result.update
+    if info is None or not done:
+        return
+    spec = result.spec
+    for name in info.added:
+        node = name
+        while node in spec.parent:
+            node = spec.parent[node]
+            if node in done:
+                raise GroundingError(
+                    f"the new task would belong to {node}, which is already complete, so it "
+                    "would never be carried out; give it as a new task ('also …')"
+                )
+
+
+def _apply(
+    instruction: str, scene: Scene, running: HSpec, grounder: Grounder, done: frozenset[str]
+) -> Grounding:
     lexicon = Lexicon(scene)
     cmd = classify(instruction, lexicon)
-    done = frozenset(completed)
     if cmd.kind in ("add", "then", "first"):
         if not cmd.text.strip():
             raise GroundingError(f"no task in {quote(instruction.strip())}")
@@ -502,6 +559,16 @@ def _replaced(running: HSpec, new: HSpec, done: frozenset[str]) -> list[str]:
         if len(hits) > 1:
             raise GroundingError(
                 f"'instead' could replace {', '.join(hits)}: say 'instead of …' to choose"
+            )
+        finished = [
+            f"{n} ({t.atom})"
+            for n, t in old
+            if n in done and any(getattr(t, key) == getattr(u, key) for u in new_tasks)
+        ]
+        if finished:
+            raise GroundingError(
+                f"{', '.join(finished)} is already done, so there is nothing left to replace; "
+                "say 'also …' to add the new task"
             )
     raise GroundingError(
         "no running task shares an object, person or surface with the new one: say "

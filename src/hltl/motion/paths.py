@@ -118,12 +118,25 @@ def _rrt_connect(
     solved = ss.solve(timeout)
     if not solved or not ss.haveExactSolutionPath():
         return None
-    ss.simplifySolution()
     path = ss.getSolutionPath()
-    pts = tuple(
-        tuple(float(path.getState(k)[i]) for i in range(n)) for k in range(path.getStateCount())
-    )
-    return JointPath(pts, "rrt_connect")
+    raw = [np.array([path.getState(k)[i] for i in range(n)]) for k in range(path.getStateCount())]
+    return JointPath(tuple(_t(q) for q in _shortcut(arm, raw, obstacles)), "rrt_connect")
+
+
+def _shortcut(arm: Arm, pts: list[FloatArray], obstacles: Packed) -> list[FloatArray]:
+    """Greedy shortcutting: from each kept waypoint, jump to the farthest one in plain sight.
+
+    (OMPL's own simplifier spends most of a second in Python validity callbacks here.)
+    """
+    out = [pts[0]]
+    i = 0
+    while i < len(pts) - 1:
+        j = len(pts) - 1
+        while j > i + 1 and not segment_clear(arm, pts[i], pts[j], obstacles):
+            j -= 1
+        out.append(pts[j])
+        i = j
+    return out
 
 
 def time_parametrise(

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from hltl.planner.anytime import plan_anytime, with_fallback_plan
 from hltl.planner.problem import Problem
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.planner.search import ALGORITHMS, search
@@ -41,6 +42,8 @@ def plan(
     cost: CostModel | None = None,
     kinematics: Kinematics | None = None,
     on_progress: Callable[[int, float], None] | None = None,
+    anytime: bool = False,
+    suboptimality: float | None = None,
 ) -> PlanResult:
     """Find a minimum-makespan plan for ``spec`` in ``scene``.
 
@@ -56,10 +59,15 @@ def plan(
         skills: the skill library.
         cost: the duration model (default: the scene's fixed durations, else analytic).
         kinematics: reach and poses of the skills (default: the paper's reach spheres).
-        on_progress: called now and then with (nodes expanded, current f bound).
+        on_progress: called now and then with (nodes expanded, current lower bound).
+        anytime: return a plan fast and improve it until ``timeout`` (default 10 s), with a
+            proven lower bound (``lower_bound``, ``gap``); see docs/planner.md.
+        suboptimality: anytime mode stops once makespan <= suboptimality x lower bound.
 
     Returns:
         A :class:`PlanResult`; "no plan" is ``status == PlanStatus.INFEASIBLE`` with a reason.
+        A ``timeout`` in exact mode still carries a plan (the first one prioritized routing
+        finds) when there is one, with the search's lower bound.
     """
     problem = Problem(
         scene,
@@ -71,10 +79,19 @@ def plan(
         cost=cost,
         kinematics=kinematics,
     )
-    return search(
+    if anytime or suboptimality is not None:
+        return plan_anytime(
+            problem,
+            timeout=10.0 if timeout is None else timeout,
+            suboptimality=suboptimality,
+        )
+    result = search(
         problem,
         algorithm=algorithm,
         timeout=timeout,
         max_expansions=max_expansions,
         on_progress=on_progress,
     )
+    if result.status is PlanStatus.TIMEOUT:
+        return with_fallback_plan(problem, result)
+    return result

@@ -72,6 +72,8 @@ class SearchStats:
     generated: int = 0
     seconds: float = 0.0
     algorithm: str = "astar"
+    #: anytime mode: seconds until the first plan was found (None: none, or exact mode)
+    first_plan: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,6 +125,8 @@ class PlanResult:
                 "seconds": round(self.stats.seconds, 6),
             },
         }
+        if self.stats.first_plan is not None:
+            d["planner"]["first_plan_seconds"] = round(self.stats.first_plan, 6)
         lb, gap = self.lower_bound, self.gap
         d["lower_bound"] = None if lb is None or lb == float("inf") else round(lb, 6)
         d["gap"] = None if gap is None else round(gap, 6)
@@ -149,6 +153,7 @@ class PlanResult:
                     int(p.get("generated", 0)),
                     float(p.get("seconds", 0.0)),
                     str(p.get("algorithm", "astar")),
+                    None if p.get("first_plan_seconds") is None else float(p["first_plan_seconds"]),
                 ),
                 reason=str(data.get("reason", "")),
                 lower_bound=None if data.get("lower_bound") is None else float(data["lower_bound"]),

@@ -123,8 +123,7 @@ class _Search:
         self, node: Node, tags: Sequence[Tag] = ()
     ) -> Iterator[tuple[tuple[Instance, ...], int, Node]]:
         """All successors: every set U of applicable instances with disjoint robots."""
-        locs, hands, q = node
-        p = self.p
+        q = node[2]
         opts = self.options(node, tags)
         chosen: list[Instance] = []
 
@@ -141,26 +140,34 @@ class _Search:
                 chosen.pop()
 
         for U in rec(0, 0):
-            new_locs = list(locs)
-            events: set[Atom] = set()
-            cost = 0
-            new_hands = list(hands) if hands is not None else None
-            for inst in U:
-                new_locs[inst.obj] = inst.post
-                events |= inst.events
-                d = p.duration(inst, hands)
-                if d > cost:
-                    cost = d
-                if new_hands is not None:
-                    for r, pt in inst.hands:
-                        new_hands[r] = pt
-            for o in p.state_atom_objects:
-                events |= p.state_atoms[o][new_locs[o]]
-            nq = self.monitor_step(q, frozenset(events))
-            if not U and nq == q:
+            cost, child = self.apply(node, U)
+            if not U and child[2] == q:
                 continue
-            child = (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)
-            yield U, cost, child  # type: ignore[misc]
+            yield U, cost, child
+
+    def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node]:
+        """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
+        node after it."""
+        locs, hands, q = node
+        p = self.p
+        new_locs = list(locs)
+        events: set[Atom] = set()
+        cost = 0
+        new_hands = list(hands) if hands is not None else None
+        for inst in U:
+            new_locs[inst.obj] = inst.post
+            events |= inst.events
+            d = p.duration(inst, hands)
+            if d > cost:
+                cost = d
+            if new_hands is not None:
+                for r, pt in inst.hands:
+                    new_hands[r] = pt
+        for o in p.state_atom_objects:
+            events |= p.state_atoms[o][new_locs[o]]
+        nq = self.monitor_step(q, frozenset(events))
+        child = (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)
+        return cost, child  # type: ignore[return-value]
 
 
 def search(
@@ -171,6 +178,8 @@ def search(
     max_expansions: int | None = None,
     on_progress: Callable[[int, float], None] | None = None,
     pairs_after: int = PAIRS_AFTER,
+    upper: int | None = None,
+    state: _Search | None = None,
 ) -> PlanResult:
     """Minimum-makespan path from the problem's start node to the accepting set F.
 
@@ -183,6 +192,10 @@ def search(
         max_expansions: node budget; exceeding it also yields ``timeout``.
         on_progress: called every 1024 expansions with (expanded, best lower bound in seconds).
         pairs_after: expansions after which A* adds the pairwise bound (0: from the start).
+        upper: only plans cheaper than this many ticks are wanted (anytime mode: the incumbent's
+            makespan); when none exists the result is ``infeasible`` with ``lower_bound`` equal
+            to it, which proves the incumbent optimal.
+        state: a search object to reuse (its heuristic tables and memos).
     """
     if algorithm not in ALGORITHMS:
         raise ValueError(
@@ -190,7 +203,7 @@ def search(
         )
     t0 = time.perf_counter()
     deadline = math.inf if timeout is None else t0 + timeout
-    s = _Search(problem)
+    s = _Search(problem) if state is None else state
     h: Callable[[Node], float]
     heur: Heuristic | None = None
     if algorithm == "astar":
@@ -268,6 +281,8 @@ def search(
             if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
                 return stop(time.perf_counter() - t0)
             ng = g + cost
+            if upper is not None and ng >= upper:
+                continue
             old = g_best.get(child)
             if old is not None and ng > old:
                 continue
@@ -283,7 +298,7 @@ def search(
                 hc = h(child)
             else:
                 hc = h(child)
-                if math.isinf(hc):
+                if math.isinf(hc) or (upper is not None and ng + hc >= upper):
                     continue
                 g_best[child] = ng
                 tags[child] = [tag]
@@ -291,6 +306,15 @@ def search(
                 parent[child] = (node, U, cost)
                 generated += 1
             heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
+    if upper is not None:
+        stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+        lb = to_seconds(upper)
+        return PlanResult(
+            PlanStatus.INFEASIBLE,
+            stats=stats,
+            reason=f"no plan shorter than {lb:.3f} s",
+            lower_bound=lb,
+        )
     return _infeasible(problem, s, algorithm, t0, expanded, generated)
 
 
@@ -330,6 +354,13 @@ def _reconstruct(
         chain.append((prev, U, cost))
         node = prev
     chain.reverse()
+    return plan_steps(problem, chain)
+
+
+def plan_steps(
+    problem: Problem, chain: Sequence[tuple[Node, tuple[Instance, ...], int]]
+) -> tuple[PlanStep, ...]:
+    """Plan steps with bindings from (node before, step, duration in ticks) triples."""
     steps: list[PlanStep] = []
     t = 0
     for _, U, cost in chain:

@@ -183,12 +183,12 @@ def run_episode(
     schedule = EventSchedule() if events is None else events
     grounders: list[Grounder] = [] if grounder is None else [grounder]
 
-    def ground(texts: Sequence[str], running: HSpec | None) -> list[SpecUpdate]:
+    def ground(texts: Sequence[str], agent: Agent) -> list[SpecUpdate]:
         if not texts:
             return []
         if not grounders:  # the default grounder is loaded only when someone speaks
             grounders.append(make_grounder("offline"))
-        return ground_all(grounders[0], texts, scene, running)
+        return ground_all(grounders[0], texts, scene, agent.spec, agent.done_formulas())
 
     with EventLog(log_path, on_record) as log:
         sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
@@ -217,7 +217,7 @@ def run_episode(
             config=cfg.to_dict() if start_config is None else dict(start_config),
         )
         said = [] if instruction is None else [instruction]
-        executor.update(0.0, sim.observe(0.0), ground(said, executor.spec))
+        executor.update(0.0, sim.observe(0.0), ground(said, executor))
         t = 0.0
         while True:
             for hook in hooks:
@@ -235,9 +235,7 @@ def run_episode(
             else:
                 t_next = min(t + cfg.tick, nxt, cfg.max_time)
             sim.advance(t_next)
-            executor.update(
-                t_next, sim.observe(t_next), ground(sim.take_instructions(), executor.spec)
-            )
+            executor.update(t_next, sim.observe(t_next), ground(sim.take_instructions(), executor))
             t = t_next
         success = executor.status is ExecStatus.DONE
         time_cost = executor.accepted_at if success and executor.accepted_at is not None else t

@@ -3,22 +3,31 @@
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 
 from hltl.errors import GroundingError
 from hltl.execution.instructions import SpecChange, SpecUpdate
 from hltl.grounding.base import Grounder
+from hltl.grounding.update import apply_update
 from hltl.spec.hierarchy import HSpec
 from hltl.world.scene import Scene
 
 
 def ground_instruction(
-    grounder: Grounder, text: str, scene: Scene, running: HSpec | None
+    grounder: Grounder,
+    text: str,
+    scene: Scene,
+    running: HSpec | None,
+    done: Collection[str] = (),
 ) -> SpecUpdate:
-    """Ground ``text`` against the running spec (merging it in, paper GOAL event)."""
+    """Ground ``text`` against the running spec (merging it in, paper GOAL event); ``done``
+    names the running spec's formulas already done (finished work stays finished)."""
     t0 = time.perf_counter()
     try:
-        g = grounder.ground(text, scene, running=running)
+        if running is None:
+            g = grounder.ground(text, scene)
+        else:
+            g = apply_update(text, scene, running, grounder, done)
     except GroundingError as exc:
         return SpecUpdate(
             text,
@@ -43,12 +52,16 @@ def ground_instruction(
 
 
 def ground_all(
-    grounder: Grounder, texts: Iterable[str], scene: Scene, running: HSpec | None
+    grounder: Grounder,
+    texts: Iterable[str],
+    scene: Scene,
+    running: HSpec | None,
+    done: Collection[str] = (),
 ) -> list[SpecUpdate]:
     """Ground several instructions in order, each against the spec the previous ones left."""
     out: list[SpecUpdate] = []
     for text in texts:
-        upd = ground_instruction(grounder, text, scene, running)
+        upd = ground_instruction(grounder, text, scene, running, done)
         out.append(upd)
         if upd.spec is not None:
             running = upd.spec

@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import re
 import shutil
 import subprocess
 import tempfile
 import threading
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Set as AbstractSet
 from concurrent.futures import Future
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,6 +41,11 @@ from hltl.spec.syntax import (
 # a table one wants in memory (and MONA itself slows down near 20).
 MAX_PROPS = 16
 MONA_TIMEOUT = 60.0
+# Positive and/or combinations of "F atom" with more atoms than this skip MONA: their automaton
+# is the set of atoms seen so far (MonotoneDFA), built lazily; MONA's table would have
+# 2**n states x 2**n symbols (n = 10: seconds to parse; n = 12: half a minute).
+SYMBOLIC_FROM = 7
+MAX_SYMBOLIC_PROPS = 30
 
 
 @dataclass(frozen=True, slots=True)
@@ -51,9 +60,9 @@ class DFA:
 
     props: tuple[Atom, ...]
     initial: int
-    accepting: frozenset[int]
+    accepting: AbstractSet[int]
     n_states: int
-    table: tuple[int, ...]
+    table: Sequence[int]
     _bit: Mapping[Atom, int] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -126,6 +135,110 @@ class DFA:
                 f"relabel needs {len(self.props)} distinct propositions, got {len(props)}"
             )
         return DFA(props, self.initial, self.accepting, self.n_states, self.table)
+
+
+# ---------------------------------------------------------------------------------------------
+# positive and/or combinations of "F atom": the automaton is the set of atoms seen so far
+
+# ("F", prop index) | ("and", a, b) | ("or", a, b)
+MonoTree = tuple[object, ...]
+
+
+def monotone_tree(f: Formula, props: Sequence[Atom]) -> MonoTree | None:
+    """``f`` as a positive and/or tree of ``F atom`` over ``props``, or None if it is not one."""
+    if isinstance(f, Eventually) and isinstance(f.operand, Atom):
+        return ("F", list(props).index(f.operand)) if f.operand in props else None
+    if isinstance(f, And | Or):
+        a, b = monotone_tree(f.left, props), monotone_tree(f.right, props)
+        if a is None or b is None:
+            return None
+        return ("and" if isinstance(f, And) else "or", a, b)
+    return None
+
+
+def _holds(t: MonoTree, seen: int) -> bool:
+    if t[0] == "F":
+        return bool(seen >> int(t[1]) & 1)  # type: ignore[call-overload]
+    a, b = t[1], t[2]
+    assert isinstance(a, tuple) and isinstance(b, tuple)
+    if t[0] == "and":
+        return _holds(a, seen) and _holds(b, seen)
+    return _holds(a, seen) or _holds(b, seen)
+
+
+class _SeenTable(Sequence[int]):
+    """``table[(seen << k) | mask] == seen | mask``: reading a symbol adds its atoms."""
+
+    __slots__ = ("_k", "_mask")
+
+    def __init__(self, k: int) -> None:
+        self._k = k
+        self._mask = (1 << k) - 1
+
+    def __len__(self) -> int:
+        return 1 << (2 * self._k)
+
+    def __getitem__(self, index: int) -> int:  # type: ignore[override]
+        return (index >> self._k) | (index & self._mask)
+
+
+class _Accepting(AbstractSet[int]):
+    """The seen-sets that satisfy the tree (membership memoised; iteration enumerates)."""
+
+    __slots__ = ("_k", "_memo", "_tree")
+
+    def __init__(self, tree: MonoTree, k: int) -> None:
+        self._tree = tree
+        self._k = k
+        self._memo: dict[int, bool] = {}
+
+    def __contains__(self, state: object) -> bool:
+        if not isinstance(state, int) or not 0 <= state < 1 << self._k:
+            return False
+        hit = self._memo.get(state)
+        if hit is None:
+            hit = _holds(self._tree, state)
+            self._memo[state] = hit
+        return hit
+
+    def __iter__(self) -> Iterator[int]:
+        return (s for s in range(1 << self._k) if s in self)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+
+@dataclass(frozen=True, slots=True)
+class MonotoneDFA(DFA):
+    """The DFA of a positive and/or combination of ``F atom``: its state is the set of atoms seen
+    so far (bit i: ``props[i]``), accepting when the combination holds on that set.
+
+    This is exact LTLf semantics for such formulas (``F a`` holds on a finite trace iff ``a``
+    holds in some step) and needs neither MONA nor a table: ``table`` and ``accepting`` compute
+    entries on demand. It is complete but not minimal (``n_states == 2**len(props)``).
+    """
+
+    @classmethod
+    def build(cls, tree: MonoTree, props: Sequence[Atom]) -> MonotoneDFA:
+        k = len(props)
+        return cls(tuple(props), 0, _Accepting(tree, k), 1 << k, _SeenTable(k))
+
+    @property
+    def n_edges(self) -> int:
+        # from a seen-set S every superset is one step away: sum over S of 2**(k - |S|) = 3**k
+        return int(3 ** len(self.props))
+
+    def is_empty(self) -> bool:
+        # every atom can be seen in the first step: empty iff even "all seen" is rejected
+        return (1 << len(self.props)) - 1 not in self.accepting
+
+    def relabel(self, props: Sequence[Atom]) -> DFA:
+        props = tuple(props)
+        if len(props) != len(self.props) or len(set(props)) != len(props):
+            raise ValueError(
+                f"relabel needs {len(self.props)} distinct propositions, got {len(props)}"
+            )
+        return MonotoneDFA(props, self.initial, self.accepting, self.n_states, self.table)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -332,6 +445,15 @@ def _minimise(
 
 
 def _compile_canonical(canonical: Formula, n_props: int, mona: str, timeout: float) -> DFA:
+    if n_props >= SYMBOLIC_FROM:
+        tree = monotone_tree(canonical, [_placeholder(i) for i in range(n_props)])
+        if tree is not None:
+            if n_props > MAX_SYMBOLIC_PROPS:
+                raise AutomatonError(
+                    f"{to_string(canonical)!r} has {n_props} atoms; at most "
+                    f"{MAX_SYMBOLIC_PROPS} in one and/or combination (split it into children)"
+                )
+            return MonotoneDFA.build(tree, [_placeholder(i) for i in range(n_props)])
     if n_props > MAX_PROPS:
         raise AutomatonError(
             f"{to_string(canonical)!r} has {n_props} atoms; at most {MAX_PROPS} fit a DFA table "
@@ -369,9 +491,13 @@ class AutomatonCache:
     the one compilation in flight. Failed compilations are not cached.
     """
 
-    def __init__(self, *, mona: str = "mona", timeout: float = MONA_TIMEOUT) -> None:
+    def __init__(
+        self, *, mona: str = "mona", timeout: float = MONA_TIMEOUT, disk: Path | None = None
+    ) -> None:
         self.mona = mona
         self.timeout = timeout
+        #: a folder that keeps compiled tables across processes (None: memory only)
+        self.disk = disk
         self._lock = threading.Lock()
         self._entries: dict[Formula, Future[DFA]] = {}
         self._hits = 0
@@ -416,7 +542,7 @@ class AutomatonCache:
                 self._hits += 1
         if owner:
             try:
-                fut.set_result(_compile_canonical(canonical, len(props), self.mona, self.timeout))
+                fut.set_result(self._compile(canonical, len(props)))
             except BaseException as exc:
                 with self._lock:
                     self._entries.pop(canonical, None)
@@ -427,8 +553,59 @@ class AutomatonCache:
             raise AutomatonError(str(exc).replace(to_string(canonical), to_string(f))) from None
         return dfa.relabel(props)
 
+    def _compile(self, canonical: Formula, n_props: int) -> DFA:
+        """MONA, unless the disk folder already holds this formula's table."""
+        if self.disk is None:
+            return _compile_canonical(canonical, n_props, self.mona, self.timeout)
+        text = to_string(canonical)
+        path = self.disk / (hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            if data["formula"] == text and data["format"] == DISK_FORMAT:
+                return DFA(
+                    tuple(_placeholder(i) for i in range(n_props)),
+                    int(data["initial"]),
+                    frozenset(int(x) for x in data["accepting"]),
+                    int(data["n_states"]),
+                    tuple(int(x) for x in data["table"]),
+                )
+        except (OSError, ValueError, KeyError, TypeError, AutomatonError):
+            pass  # absent or unreadable: compile it
+        dfa = _compile_canonical(canonical, n_props, self.mona, self.timeout)
+        if not isinstance(dfa, MonotoneDFA):
+            record = {
+                "format": DISK_FORMAT,
+                "formula": text,
+                "initial": dfa.initial,
+                "accepting": sorted(dfa.accepting),
+                "n_states": dfa.n_states,
+                "table": list(dfa.table),
+            }
+            try:
+                self.disk.mkdir(parents=True, exist_ok=True)
+                tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")
+                tmp.write_text(json.dumps(record), encoding="utf-8")
+                os.replace(tmp, path)  # atomic: concurrent processes never read half a file
+            except OSError:
+                pass  # a read-only cache folder only costs the next process a MONA call
+        return dfa
 
-_default_cache = AutomatonCache()
+
+DISK_FORMAT = 1
+
+
+def disk_cache_dir() -> Path | None:
+    """Where the default cache keeps tables across processes: ``$HLTL_CACHE_DIR/dfa``, else
+    ``$XDG_CACHE_HOME/hltl/dfa`` or ``~/.cache/hltl/dfa``; ``HLTL_CACHE_DIR=off`` disables it."""
+    root = os.environ.get("HLTL_CACHE_DIR")
+    if root is not None:
+        return None if root in ("", "off", "0") else Path(root) / "dfa"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    base = Path(xdg) if xdg else Path.home() / ".cache"
+    return base / "hltl" / "dfa"
+
+
+_default_cache = AutomatonCache(disk=disk_cache_dir())
 
 
 def default_cache() -> AutomatonCache:

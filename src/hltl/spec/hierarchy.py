@@ -12,7 +12,7 @@ from typing import Any
 
 from hltl.errors import SpecSyntaxError, SpecValidationError
 from hltl.fileio import load_file, quote
-from hltl.spec.automata import DFA, AutomatonCache, default_cache
+from hltl.spec.automata import DFA, AutomatonCache, MonotoneDFA, default_cache
 from hltl.spec.parser import KEYWORDS, parse_formula
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import PREDICATES, Atom, Formula
@@ -242,7 +242,8 @@ def validate_automata(spec: HSpec, cache: AutomatonCache | None = None) -> dict[
         kids = spec.children[name]
         if dfa.is_empty():
             raise SpecValidationError(f"{name}: '{to_string(f)}' is unsatisfiable")
-        if not kids or len(kids) > MAX_CHILDREN_CHECKED:
+        if not kids or len(kids) > MAX_CHILDREN_CHECKED or isinstance(dfa, MonotoneDFA):
+            # an and/or of "F child" never needs two children in one step: nothing to check
             continue
         found = _cheapest_one_shot_run(dfa, kids)
         if found is None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from collections.abc import Set as AbstractSet
 from typing import TypeAlias
 
 from hltl.spec.automata import DFA, AutomatonCache, default_cache
@@ -61,7 +62,7 @@ class HierarchyMonitor:
 
         # per node, deepest first: (index, shift, table, accepting flags, parent index, bit the
         # node sets in its parent's mask when it fires)
-        plan: list[tuple[int, int, tuple[int, ...], tuple[bool, ...], int, int]] = []
+        plan: list[tuple[int, int, Sequence[int], AbstractSet[int], int, int]] = []
         for name in reversed(self.nodes):
             dfa = self.dfas[name]
             parent = spec.parent.get(name)
@@ -70,8 +71,7 @@ class HierarchyMonitor:
             else:
                 p_index = index[parent]
                 p_bit = 1 << self.dfas[parent].props.index(Atom(name))
-            accepting = tuple(s in dfa.accepting for s in range(dfa.n_states))
-            plan.append((index[name], len(dfa.props), dfa.table, accepting, p_index, p_bit))
+            plan.append((index[name], len(dfa.props), dfa.table, dfa.accepting, p_index, p_bit))
         self._plan = tuple(plan)
 
     # -- stepping ------------------------------------------------------------------------------
@@ -98,7 +98,7 @@ class HierarchyMonitor:
             if s == DONE:
                 continue
             t = table[(s << shift) | cur[i]]
-            if accepting[t]:
+            if t in accepting:
                 new[i] = DONE
                 if p_index >= 0:
                     cur[p_index] |= p_bit

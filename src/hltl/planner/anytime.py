@@ -1,0 +1,504 @@
+"""Anytime planning with a certificate: prioritized plans fast, then proof of how good they are.
+
+A first plan comes from *prioritized routing*: the goal atoms the spec needs are served one
+object at a time, in priority order, each by an earliest-arrival search over (place, step) that
+respects what the objects routed before it already reserved (a robot acts on or holds one object
+per step; a robot holding an object can only act on it). Any order gives a valid plan when each
+object can be served alone; other orders may give shorter ones, so the planner tries several.
+Every constructed plan is replayed through the monitors before it is accepted.
+
+The certificate is the admissible heuristic at the start (critical path, robot load, pairs),
+raised by an exact A* that only looks for plans shorter than the best one found: when that
+search runs out of nodes the best plan is optimal; when time runs out, the least f on its open
+list is a proven lower bound. ``gap = (makespan - lower bound) / makespan``.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from hltl.planner.pairs import PairBound, pair_value
+from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
+from hltl.planner.result import PlanResult, PlanStatus, SearchStats
+from hltl.planner.search import _infeasible, _Search, plan_steps, search
+from hltl.spec.monitor import DONE
+from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
+
+# the share of the time budget by which more priority orders stop being tried
+RESTART_SHARE = 0.5
+# the share spent first on the exact search (small cells are proved optimal right away)
+EXACT_FIRST_SHARE = 0.2
+# big cells: pair bounds until this share of the budget, more orders until the next
+PAIRS_SHARE = 0.45
+BIG_RESTART_SHARE = 0.9
+# pair tables cost about a millisecond each; beyond this many goal atoms they wait for A*
+PAIRS_UP_TO = 8
+
+
+@dataclass(frozen=True, slots=True)
+class Goal:
+    """An atom to make true, its object, and the goals that must not happen after it."""
+
+    atom: Atom
+    obj: int
+    after: tuple[int, ...]
+
+
+# a plan found: its cost in ticks and its (node before, step, duration) chain
+_Found = tuple[int, list[tuple[Node, tuple[Instance, ...], int]]]
+
+
+class _Unsupported(Exception):
+    """The spec has a shape prioritized routing does not serve (the exact search still does)."""
+
+
+def goals(s: _Search, node: Node) -> list[Goal] | None:
+    """The goal atoms that satisfy the spec from ``node`` (one branch per "or", the one with the
+    earlier relaxed finish), or None when the spec is not made of such goals."""
+    p = s.p
+    spec = p.spec
+    names = {name for name, _ in spec.formulas}
+    index = {n: i for i, n in enumerate(s.monitor.nodes)}
+    locs, _, q = node
+    graph = s.heuristic.graph
+
+    def estimate(atoms_: Sequence[Atom]) -> float:
+        return max((graph.atom_time(a, locs) for a in atoms_), default=0.0)
+
+    order: list[tuple[Atom, Atom]] = []  # (before, after)
+
+    def walk(name: str) -> list[Atom]:
+        if q[index[name]] == DONE:
+            return []
+        f = spec.formula(name)
+        if name in spec.leaves:
+            if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.args:
+                return [f.operand]
+            raise _Unsupported(name)
+        return tree(f)
+
+    def tree(f: Formula) -> list[Atom]:
+        if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.name in names:
+            return walk(f.operand.name)
+        if (
+            isinstance(f, Eventually)
+            and isinstance(f.operand, And)
+            and isinstance(f.operand.left, Atom)
+            and isinstance(f.operand.right, Eventually)
+            and isinstance(f.operand.right.operand, Atom)
+        ):
+            # F (a & F b): a no later than b
+            first = walk(f.operand.left.name)
+            second = walk(f.operand.right.operand.name)
+            order.extend((x, y) for x in first for y in second)
+            return first + second
+        if isinstance(f, And):
+            return tree(f.left) + tree(f.right)
+        if isinstance(f, Or):
+            a, b = tree(f.left), tree(f.right)
+            return a if estimate(a) <= estimate(b) else b
+        raise _Unsupported(str(f))
+
+    try:
+        atoms_ = list(dict.fromkeys(walk(spec.root)))
+    except _Unsupported:
+        return None
+    out: list[Goal] = []
+    position = {a: i for i, a in enumerate(atoms_)}
+    seen_objects: set[int] = set()
+    for a in atoms_:
+        g = graph.goal(a)
+        if g is None or g[0] in seen_objects:
+            return None  # two goals on one object: routing serves one goal per object
+        seen_objects.add(g[0])
+        after = tuple(sorted(position[x] for x, y in order if y == a and x in position))
+        out.append(Goal(a, g[0], after))
+    return out
+
+
+class _Router:
+    """Prioritized routing over steps with per-robot reservations."""
+
+    def __init__(self, s: _Search, node: Node, gls: Sequence[Goal]) -> None:
+        self.s = s
+        self.p = s.p
+        self.node = node
+        self.goals = gls
+        p = self.p
+        self.targets = {g.obj for g in gls}
+        graph = s.heuristic.graph
+        # per goal and place: can the atom still happen from there? (prune hopeless routes)
+        self.alive: list[list[bool]] = [
+            [
+                graph.atom_time(g.atom, _with(node[0], g.obj, loc)) < math.inf
+                for loc in range(len(p.locs))
+            ]
+            for g in gls
+        ]
+
+    def route_all(self, order: Sequence[int]) -> list[list[Instance]] | None:
+        p = self.p
+        locs = self.node[0]
+        n_robots = len(p.robots)
+        busy: list[set[int]] = [set() for _ in range(n_robots)]
+        forever = [math.inf] * n_robots
+        for o, code in enumerate(locs):
+            r = p.code_holder.get(code)
+            if r is not None and o not in self.targets:
+                forever[r] = 0  # holds an object nobody asked for: out of play
+        steps: dict[int, list[Instance]] = {}
+        finish: dict[int, int] = {}
+        for gi in order:
+            g = self.goals[gi]
+            earliest = max((finish[j] for j in g.after), default=0)
+            found = self._route(g, gi, locs[g.obj], earliest, busy, forever)
+            if found is None:
+                return None
+            route, holds, end, keep = found
+            for t, inst in route:
+                steps.setdefault(t, []).append(inst)
+                for r in range(n_robots):
+                    if inst.executors >> r & 1:
+                        busy[r].add(t)
+            for r, t in holds:
+                busy[r].add(t)
+            if keep is not None:
+                forever[keep] = min(forever[keep], end + 1)
+            finish[gi] = end
+        return [steps[t] for t in sorted(steps)]
+
+    def _route(
+        self,
+        g: Goal,
+        gi: int,
+        start: int,
+        earliest: int,
+        busy: list[set[int]],
+        forever: list[float],
+    ) -> tuple[list[tuple[int, Instance]], list[tuple[int, int]], int, int | None] | None:
+        """Earliest step at which the goal's atom happens, routing its object around the
+        reservations: (actions by step, (robot, step) holds, final step, robot that keeps the
+        object afterwards or None)."""
+        p = self.p
+        holder = p.code_holder
+        alive = self.alive[gi]
+        atom = g.atom
+        state_target = None if atom.name in ("delivered", "placed", "picked") else True
+
+        def free(r: int, t: int) -> bool:
+            return t not in busy[r] and t < forever[r]
+
+        horizon = max((max(b, default=0) for b in busy), default=0) + 4 * len(p.locs) + earliest
+        horizon += 8
+        back: dict[tuple[int, int], tuple[int, Instance | None]] = {}
+        frontier = [start]
+        for t in range(horizon):
+            nxt: list[int] = []
+            seen: set[int] = set()
+            for loc in frontier:
+                r_hold = holder.get(loc)
+                if r_hold is not None and not free(r_hold, t):
+                    continue  # the holder is needed elsewhere in this step: impossible state
+                for inst in p.by_obj_pre[g.obj][loc]:
+                    if not alive[inst.post] and atom not in inst.events:
+                        continue
+                    ok = True
+                    for r in range(len(p.robots)):
+                        if inst.executors >> r & 1 and not free(r, t):
+                            ok = False
+                            break
+                    if not ok:
+                        continue
+                    reached = (
+                        atom in inst.events
+                        if state_target is None
+                        else atom in p.state_atoms[g.obj][inst.post]
+                    )
+                    if reached and t >= earliest:
+                        return self._unwind(back, start, loc, t, inst)
+                    if inst.post not in seen:
+                        seen.add(inst.post)
+                        back[(inst.post, t + 1)] = (loc, inst)
+                        nxt.append(inst.post)
+                if loc not in seen:  # wait
+                    seen.add(loc)
+                    back[(loc, t + 1)] = (loc, None)
+                    nxt.append(loc)
+            frontier = nxt
+        return None
+
+    def _unwind(
+        self,
+        back: dict[tuple[int, int], tuple[int, Instance | None]],
+        start: int,
+        loc: int,
+        t: int,
+        last: Instance,
+    ) -> tuple[list[tuple[int, Instance]], list[tuple[int, int]], int, int | None]:
+        holder = self.p.code_holder
+        route: list[tuple[int, Instance]] = [(t, last)]
+        holds: list[tuple[int, int]] = []
+        r = holder.get(loc)
+        if r is not None:
+            holds.append((r, t))
+        cur, ct = loc, t
+        while ct > 0:
+            prev, inst = back[(cur, ct)]
+            ct -= 1
+            if inst is not None:
+                route.append((ct, inst))
+            r = holder.get(prev)
+            if r is not None:
+                holds.append((r, ct))
+            cur = prev
+        assert cur == start
+        keep = holder.get(last.post)
+        return route[::-1], holds, t, keep
+
+    def replay(self, steps: Sequence[Sequence[Instance]]) -> _Found | None:
+        """Check the plan step by step (preconditions, monitors); its cost and chain, cut at the
+        step in which the root fires; None if it is not a plan."""
+        s, p = self.s, self.p
+        node = self.node
+        total = 0
+        chain: list[tuple[Node, tuple[Instance, ...], int]] = []
+        for U in steps:
+            locs = node[0]
+            held = {p.code_holder[c] for c in locs if c in p.code_holder}
+            for inst in U:
+                if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
+                    return None
+            step = tuple(sorted(U, key=lambda i: i.index))
+            cost, child = s.apply(node, step)
+            chain.append((node, step, cost))
+            total += cost
+            node = child
+            if p.monitor.accepted(node[2]):
+                return total, chain
+        return None
+
+
+def _with(locs: tuple[int, ...], o: int, loc: int) -> tuple[int, ...]:
+    out = list(locs)
+    out[o] = loc
+    return tuple(out)
+
+
+def _orders(s: _Search, node: Node, gls: Sequence[Goal], seed: int) -> Callable[[], list[int]]:
+    """Priority orders: most critical goal first, then random ones; "after" goals keep order."""
+    graph = s.heuristic.graph
+    crit = [graph.atom_time(g.atom, node[0]) for g in gls]
+    rng = random.Random(seed)
+    calls = [0]
+
+    def next_order() -> list[int]:
+        calls[0] += 1
+        noise = [0.0 if calls[0] == 1 else rng.random() * (1.0 + c) for c in crit]
+        key = [-(c + n) for c, n in zip(crit, noise, strict=True)]
+        placed: list[int] = []
+        left = set(range(len(gls)))
+        while left:
+            ready = [i for i in left if all(j not in left for j in gls[i].after)]
+            if not ready:  # a cycle in "after": no order serves it
+                return []
+            i = min(ready, key=lambda k: (key[k], k))
+            placed.append(i)
+            left.discard(i)
+        return placed
+
+    return next_order
+
+
+def construct(
+    problem: Problem, s: _Search | None = None, *, tries: int = 1, deadline: float = math.inf
+) -> _Found | None:
+    """The best prioritized plan over ``tries`` priority orders (cost in ticks, step chain)."""
+    s = _Search(problem) if s is None else s
+    node = problem.start()
+    gls = goals(s, node)
+    if not gls:
+        return None
+    router = _Router(s, node, gls)
+    next_order = _orders(s, node, gls, seed=0)
+    best: _Found | None = None
+    for k in range(tries):
+        if k and time.perf_counter() > deadline:
+            break
+        order = next_order()
+        steps = router.route_all(order) if order else None
+        found = None if steps is None else router.replay(steps)
+        if found is not None and (best is None or found[0] < best[0]):
+            best = found
+    return best
+
+
+def plan_anytime(
+    problem: Problem,
+    *,
+    timeout: float = 10.0,
+    suboptimality: float | None = None,
+    on_improve: Callable[[float, float, float], None] | None = None,
+) -> PlanResult:
+    """A plan within ``timeout`` seconds and a proven lower bound on the optimum.
+
+    Args:
+        problem: the compiled problem.
+        timeout: seconds for the whole run (first plan, improvements, bound).
+        suboptimality: stop as soon as makespan <= suboptimality x lower bound (e.g. 1.1).
+        on_improve: called with (seconds since start, makespan, lower bound) on every change.
+
+    Returns:
+        ``solved`` with ``lower_bound`` and ``gap`` (0: proved optimal); ``infeasible`` when no
+        plan exists; ``timeout`` when no plan was found in time (the bound is still reported).
+    """
+    t0 = time.perf_counter()
+    deadline = t0 + timeout
+    s = _Search(problem)
+    heur = s.heuristic
+    start = problem.start()
+    if problem.monitor.accepted(start[2]):
+        return PlanResult(PlanStatus.SOLVED, (), 0.0, SearchStats(0, 1, 0.0, "anytime"), "", 0.0)
+    lb: float = heur(start)
+    if math.isinf(lb):
+        return _infeasible(problem, s, "anytime", t0, 0, 1)
+
+    best = construct(problem, s, tries=1, deadline=deadline)
+    first = None if best is None else time.perf_counter() - t0
+
+    def note() -> None:
+        if on_improve is not None and best is not None:
+            on_improve(time.perf_counter() - t0, to_seconds(best[0]), to_seconds(lb))
+
+    def good_enough() -> bool:
+        if best is None:
+            return False
+        if best[0] <= lb:
+            return True
+        return suboptimality is not None and best[0] <= suboptimality * lb
+
+    note()
+    n_goals = len(heur.required_atoms(start[2]))
+    if not good_enough() and n_goals <= PAIRS_UP_TO:
+        heur.enable_pairs()
+        lb = max(lb, heur(start))
+        note()
+    # small cells: a short exact search first (they finish here, proved optimal), then more
+    # priority orders, then the exact search again with whatever time is left. Big cells: pair
+    # bounds at the start node (most promising pairs first) instead of the first exact slice,
+    # whose very first expansion would enumerate more step sets than there is time for
+    big = n_goals > PAIRS_UP_TO
+    phases = (
+        (PAIRS_SHARE, BIG_RESTART_SHARE, 1.0) if big else (EXACT_FIRST_SHARE, RESTART_SHARE, 1.0)
+    )
+    expanded = 0
+    for k, until in enumerate(phases):
+        if good_enough():
+            break
+        end = min(deadline, t0 + until * timeout)
+        if big and k == 0:
+            lb = max(lb, _pairs_at_start(problem, s, start, end))
+            note()
+            continue
+        if k == 1:
+            if best is not None:
+                cand = _more(problem, s, end)
+                if cand is not None and cand[0] < best[0]:
+                    best = cand
+                    note()
+            continue
+        remaining = end - time.perf_counter()
+        if remaining <= 0:
+            continue
+        res = search(
+            problem,
+            timeout=remaining,
+            upper=None if best is None else best[0],
+            state=s,
+            pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
+        )
+        expanded += res.stats.expanded
+        if res.status is PlanStatus.SOLVED and res.makespan is not None:
+            stats = SearchStats(
+                expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+            )
+            return PlanResult(PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan)
+        if res.status is PlanStatus.INFEASIBLE and best is None:
+            return res
+        if res.status is PlanStatus.INFEASIBLE:
+            assert best is not None
+            lb = best[0]  # nothing shorter exists: the incumbent is optimal
+        elif res.lower_bound is not None:
+            lb = max(lb, round(res.lower_bound * TICKS_PER_SECOND))
+        note()
+    stats = SearchStats(expanded, 0, time.perf_counter() - t0, "anytime", first)
+    if best is None:
+        return PlanResult(
+            PlanStatus.TIMEOUT,
+            stats=stats,
+            reason=f"no plan found in {timeout:g} s (lower bound {to_seconds(lb):.3f} s)",
+            lower_bound=to_seconds(lb),
+        )
+    steps = plan_steps(problem, best[1])
+    return PlanResult(
+        PlanStatus.SOLVED, steps, to_seconds(best[0]), stats, "", to_seconds(min(lb, best[0]))
+    )
+
+
+def _pairs_at_start(problem: Problem, s: _Search, start: Node, until: float) -> float:
+    """The best pairwise bound at the start node from the pairs solved before ``until``, the
+    pairs of the longest routes first (any subset of pairs gives a valid bound)."""
+    heur = s.heuristic
+    graph = heur.graph
+    locs = start[0]
+    atoms_ = sorted(heur.required_atoms(start[2]))
+    crit = {a: graph.atom_time(a, locs) for a in atoms_}
+    pairs = [(a, b) for i, a in enumerate(atoms_) for b in atoms_[i + 1 :]]
+    pairs.sort(key=lambda ab: (-min(crit[ab[0]], crit[ab[1]]), -max(crit[ab[0]], crit[ab[1]])))
+    bound = PairBound(problem, graph)
+    best = 0.0
+    for a, b in pairs:
+        if time.perf_counter() > until:
+            break
+        for lk in bound.lookups([a, b]):
+            best = max(best, pair_value(lk, locs))
+    return best
+
+
+def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
+    """Random priority orders until ``until``; the best plan among them."""
+    node = problem.start()
+    gls = goals(s, node)
+    if not gls:
+        return None
+    router = _Router(s, node, gls)
+    next_order = _orders(s, node, gls, seed=1)
+    next_order()  # the critical-first order was already tried
+    best = None
+    while time.perf_counter() < until:
+        order = next_order()
+        steps = router.route_all(order) if order else None
+        found = None if steps is None else router.replay(steps)
+        if found is not None and (best is None or found[0] < best[0]):
+            best = found
+    return best
+
+
+def with_fallback_plan(problem: Problem, result: PlanResult) -> PlanResult:
+    """A timed-out exact result with the first prioritized plan attached (status unchanged)."""
+    found = construct(problem)
+    if found is None:
+        return result
+    lb = result.lower_bound
+    makespan = to_seconds(found[0])
+    return PlanResult(
+        result.status,
+        plan_steps(problem, found[1]),
+        makespan,
+        result.stats,
+        result.reason + f"; best plan found: {makespan:.3f} s",
+        None if lb is None else min(lb, makespan),
+    )
