@@ -46,6 +46,9 @@ from hltl.grounding.tree import (
     recognise_task,
 )
 
+# carry_over moved to hltl.spec.monitor (a monitor operation); the old import path still works
+from hltl.spec.monitor import carry_over as carry_over
+
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
     from hltl.world.scene import Scene
