@@ -173,6 +173,14 @@ def register(sub: Any) -> None:
     mo.add_argument("--write", type=Path, help="update this Markdown file's motion section")
     mo.set_defaults(func=run_motion)
 
+    pe = bsub.add_parser(
+        "perception", help="trajectory prediction, object localisation, people tracking"
+    )
+    pe.add_argument("--walks", type=int, default=40, help="held-out walks per synthetic set")
+    pe.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
+    pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")
+    pe.set_defaults(func=run_perception)
+
 
 def run_sim3d(args: argparse.Namespace) -> int:
     import datetime
@@ -416,6 +424,12 @@ def run_motion(args: argparse.Namespace) -> int:
         write_section(args.write, "motion", body)
         print(f"wrote {args.write}", file=sys.stderr)
     return 0
+
+
+def run_perception(args: argparse.Namespace) -> int:
+    from hltl.cli.bench_perception import run
+
+    return run(args)
 
 
 def _progress(title: str) -> Progress:

@@ -11,14 +11,6 @@ from typing import Any
 
 from hltl.errors import HltlError
 
-# Held-out test sets: (name, leg mix over walks.KINDS = sim, smooth, turn, hesitate, wander).
-TEST_SETS: tuple[tuple[str, tuple[float, ...]], ...] = (
-    ("mixed", (0.3, 0.3, 0.15, 0.15, 0.1)),
-    ("simulator walks", (1.0, 0.0, 0.0, 0.0, 0.0)),
-    ("stops & turns", (0.0, 0.0, 1.0, 1.0, 0.0)),
-    ("wandering", (0.0, 0.0, 0.0, 0.0, 1.0)),
-)
-
 
 def register(sub: Any) -> None:
     p: argparse.ArgumentParser = sub.add_parser(
@@ -90,6 +82,7 @@ def run_train(args: argparse.Namespace) -> int:
 
 
 def run_eval(args: argparse.Namespace) -> int:
+    from hltl.bench.perception import evaluate_predictors
     from hltl.perception.evaluate import HORIZONS
     from hltl.perception.gru import load_model
 
@@ -118,36 +111,3 @@ def run_eval(args: argparse.Namespace) -> int:
             table.add_row(name, s.predictor, str(s.samples), *cells)
     Console(file=sys.stdout).print(table)
     return 0
-
-
-def evaluate_predictors(
-    seed: int, walks: int, model: Any, stride: int = 2
-) -> list[tuple[str, list[Any]]]:
-    """Scores of cv, goal and gru (the loaded ``model``) on each held-out test set."""
-    from hltl.perception.evaluate import score
-    from hltl.perception.predict import (
-        F64,
-        ConstantVelocityPredictor,
-        GoalDirectedPredictor,
-        GRUPredictor,
-    )
-    from hltl.perception.walks import generate_walks
-
-    def gru(stops: F64) -> GRUPredictor:
-        return GRUPredictor(stops, model=model)
-
-    out = []
-    for k, (name, mix) in enumerate(TEST_SETS):
-        ws = generate_walks(seed + k, walks, mix=mix)
-        data = [(w.observed, w.true, w.stops) for w in ws]
-        out.append(
-            (
-                name,
-                [
-                    score("cv", lambda s: ConstantVelocityPredictor(), data, stride),
-                    score("goal", GoalDirectedPredictor, data, stride),
-                    score("gru", gru, data, stride),
-                ],
-            )
-        )
-    return out

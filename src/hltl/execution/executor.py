@@ -41,6 +41,7 @@ from hltl.execution.predict import (
 )
 from hltl.execution.safety import (
     Hazard,
+    grasp_hazard,
     hand_speed,
     intrusion_hazard,
     precondition_hazard,
@@ -55,7 +56,7 @@ from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.syntax import Atom
 from hltl.world.geometry import Context
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, Vec3
 from hltl.world.state import JointState, WorldState, initial_world, project
 
 if TYPE_CHECKING:
@@ -166,6 +167,7 @@ class _Running:
     fast: bool
     progress: float = 0.0
     status: ActionStatus | None = None
+    aimed_at: Vec3 | None = None  # a pick's object position at dispatch: its grasp target
 
 
 @dataclass(frozen=True, slots=True)
@@ -519,6 +521,8 @@ class Executor:
             if run.status is not None:
                 continue
             h = precondition_hazard(run.action, self.scene, self.world, semantics=self.semantics)
+            if h is None and run.aimed_at is not None:
+                h = grasp_hazard(run.action, run.aimed_at, self.world)
             if h is None and self._intrusion_on() and run.fast:
                 until = self.t + max(0.0, 1.0 - run.progress) * run.expected
                 assert self.predictor is not None
@@ -605,7 +609,8 @@ class Executor:
             expected = self.cost.duration(a, tr, hands)
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
             self._touched[a.object] = self.t
-            self._running.append(_Running(a, handle, tr, expected, self.t, fast))
+            aimed = self.world.object_status(a.object).position if a.skill == "pick" else None
+            self._running.append(_Running(a, handle, tr, expected, self.t, fast, aimed_at=aimed))
             self.log.emit(
                 self.t,
                 "action_start",

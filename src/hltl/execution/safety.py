@@ -15,6 +15,10 @@ from hltl.world.state import WorldState
 
 HazardKind = Literal["precondition", "intrusion"]
 
+# An object farther than this from where a grasp was aimed is no longer where the fingers close
+# (the simulator counts such a pick as a violation; the executor halts it before that).
+GRASP_TOLERANCE = 0.05
+
 
 @dataclass(frozen=True, slots=True)
 class Hazard:
@@ -51,6 +55,25 @@ def precondition_hazard(
     sem = ActionSemantics.of(scene) if semantics is None else semantics
     reason = sem.check(action, world)
     return None if reason is None else Hazard(action, "precondition", reason)
+
+
+def grasp_hazard(action: Action, aimed_at: Vec3, world: WorldState) -> Hazard | None:
+    """A dispatched pick whose object has moved from where the grasp was aimed.
+
+    The pick's precondition (object in reach, not held) may still hold at the new place, but the
+    motion under way goes to the old one: any change of the grasp target halts and replans.
+    """
+    now = world.object_status(action.object).position
+    moved = distance(now, aimed_at)
+    if moved <= GRASP_TOLERANCE:
+        return None
+    where = ", ".join(f"{v:.2f}" for v in now)
+    return Hazard(
+        action,
+        "precondition",
+        f"{action}: {action.object} moved {moved:.2f} m from where the grasp was aimed "
+        f"(now at [{where}]); the grasp target changed",
+    )
 
 
 def hand_speed(transition: Transition, hands: Mapping[str, Vec3], duration: float) -> float:

@@ -84,6 +84,12 @@ class SegmentationBackend:
                 f"frame {frame.index}: the segmentation backend needs seg/ images; this source "
                 "has none (use --backend depth-clusters)"
             )
+        # support heights (tables, floor) from every 4th pixel: an object whose foot is hidden
+        # still stands on the plane just below what is seen of it
+        sub = np.zeros(frame.depth.shape, dtype=bool)
+        sub[::4, ::4] = True
+        pts = backproject(frame.depth, sub, camera)
+        self.planes = support_planes(pts[:, 2]) if len(pts) else []
         out: list[Detection] = []
         ids, counts = np.unique(frame.seg, return_counts=True)
         for sid, n in zip(ids.tolist(), counts.tolist(), strict=True):
@@ -126,31 +132,41 @@ class DepthClusterBackend:
         above = off_plane & ~jump
         self.planes = planes
         labels, n = ndimage.label(above)
+        sizes = np.bincount(labels.ravel(), minlength=n + 1)
         out: list[Detection] = []
-        for k in range(1, n + 1):
-            mask = labels == k
-            if mask.sum() < MIN_PIXELS:
+        for k, sl in enumerate(ndimage.find_objects(labels), start=1):
+            if sl is None or sizes[k] < MIN_PIXELS:
                 continue
-            p = pts[mask]
+            local = labels[sl] == k  # work inside the region's box: thousands of tiny regions
+            p = pts[sl][local]
             span = np.ptp(p, axis=0)
             if span[2] > 0.7 and max(span[0], span[1]) < 0.9:  # person-tall, person-wide
                 kind, label = "human", "person"
             elif span[0] < 0.3 and span[1] < 0.3 and span[2] < 0.4:
-                kind, label = "object", self._nearest(p.mean(axis=0))
+                kind, label = "object", self._nearest(p)
             else:
                 continue  # tables, robots, walls
-            score = float(min(1.0, mask.sum() / 200.0))
+            mask = np.zeros(labels.shape, dtype=bool)
+            mask[sl] = local
+            score = float(min(1.0, sizes[k] / 200.0))
             out.append(Detection(kind, label, mask, score, _box(mask)))
         return out
 
-    def _nearest(self, point: npt.NDArray[np.float64]) -> str:
+    def _nearest(self, points: npt.NDArray[np.float64]) -> str:
+        """The category of the registered object this cluster is near: within 0.3 m on the
+        floor plan and with the registered (grasp) height inside the cluster's height range
+        give or take 10 cm — a person's legs below the table are near an object on the plan,
+        not in height."""
         if self.scene is None or not self.scene.objects:
             return "object"
-        d = [
-            float(np.linalg.norm(np.array(o.position[:2]) - point[:2])) for o in self.scene.objects
-        ]
-        o = self.scene.objects[int(np.argmin(d))]
-        return o.category if min(d) < 0.3 else "object"
+        c = points.mean(axis=0)
+        lo, hi = float(points[:, 2].min()) - 0.1, float(points[:, 2].max()) + 0.1
+        best, label = 0.3, "object"
+        for o in self.scene.objects:
+            d = float(np.hypot(o.position[0] - c[0], o.position[1] - c[1]))
+            if d < best and lo <= o.position[2] <= hi:
+                best, label = d, o.category
+        return label
 
 
 def support_planes(z: npt.NDArray[np.float64], share: float = 0.04) -> list[float]:
@@ -213,7 +229,9 @@ def localize(
         pts = backproject(frame.depth, det.mask, camera)
         floor = None
         if len(pts):
-            below = [h for h in planes if h <= float(pts[:, 2].min()) + 0.005]
+            zmin = float(pts[:, 2].min())
+            # a foot hidden behind something in front is a few cm, not the floor a table away
+            below = [h for h in planes if zmin - 0.15 <= h <= zmin + 0.005]
             floor = max(below) if below else None
         cyl = fit_cylinder(pts, floor)
         if cyl is not None:

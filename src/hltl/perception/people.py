@@ -180,6 +180,7 @@ def person_position(
 
 
 MIN_PERSON_EXTENT = 0.7  # m: a detected "person" whose nearest surface spans less is not one
+MIN_ASPECT = 0.9  # box height / width: a standing person's box is at least about square
 
 
 def vertical_extent(depth: npt.NDArray[np.float32], camera: Camera, box: Box) -> float:
@@ -233,6 +234,7 @@ class IdentityBinder:
     """Ties tracks to the scene's people and remembers where each person was last seen."""
 
     last_seen: dict[str, tuple[float, float]]
+    gate: float = 1.0  # m: a new track farther than this from a free person stays unbound
     owner: dict[str, str] = field(default_factory=dict)  # track → person
     lost: list[str] = field(default_factory=list)  # people whose track ended, latest first
 
@@ -257,6 +259,8 @@ class IdentityBinder:
             )
             rows, cols = linear_sum_assignment(cost)
             for r, c in zip(rows, cols, strict=True):
+                if cost[r, c] > self.gate:
+                    continue  # nobody was near: leave the track unbound rather than guess
                 self.owner[new[r]] = free[c]
                 if free[c] in self.lost:
                     self.lost.remove(free[c])
@@ -299,7 +303,9 @@ class PeopleTracker:
         if self.detector is not None:
             out_y: list[tuple[PersonBox, Any]] = []
             for b in self.detector.detect(frame.rgb):
-                if vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
+                u0, v0, u1, v1 = b.box
+                upright = (v1 - v0) >= MIN_ASPECT * (u1 - u0)
+                if upright and vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
                     out_y.append((b, None))
                 else:
                     self.rejected += 1

@@ -210,9 +210,14 @@ def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
             / horizon
         )
         f_del = 100.0 * functional_delay(act.completed) / horizon
+    reason = str(end.get("reason", ""))
+    if violations and end.get("success"):
+        # the goals were met, but unsafely: say so instead of "failed: all goals met"
+        first = next(r for r in records if r["type"] == "violation")
+        reason = f"{violations} safety violation(s) ({first.get('reason', '')}) although {reason}"
     return Metrics(
         success=success,
-        reason=str(end.get("reason", "")),
+        reason=reason,
         time_cost=time_cost,
         replans=len(disruptive),
         planner_calls=sum(1 for r in replans if r.get("source") == "planner"),

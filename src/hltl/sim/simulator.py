@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, vec
+from hltl.execution.safety import GRASP_TOLERANCE
 from hltl.motion.trajectory import MotionPlan
 from hltl.sim.events import (
     EventSchedule,
@@ -40,8 +41,6 @@ from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, ObjectStatus, WorldState
 
-# An object farther than this from where a grasp started is no longer where the fingers close.
-GRASP_TOLERANCE = 0.05
 _EPS = 1e-9
 
 

@@ -1,0 +1,67 @@
+"""``hltl bench perception``: run the perception benchmarks and record them."""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import shlex
+import sys
+
+from hltl.errors import HltlError
+
+
+def run(args: argparse.Namespace) -> int:
+    from hltl.bench.markdown import machine, write_section
+    from hltl.bench.perception import (
+        _three,
+        evaluate_predictors,
+        format_objects,
+        format_people,
+        format_prediction,
+        object_bench,
+        people_bench,
+        suite_walks,
+    )
+    from hltl.perception.gru import load_model
+    from hltl.sim.scenarios import get
+
+    if args.walks < 1:
+        raise HltlError(f"--walks: expected a positive integer, got {args.walks!r}")
+    quick = args.quick
+    model = load_model()
+
+    def say(text: str) -> None:
+        print(f"  {text}", file=sys.stderr)
+
+    say("prediction: held-out walks")
+    pred = evaluate_predictors(1000, 2 if quick else args.walks, model)
+    say("prediction: the simulator's walks in the catalogue cells")
+    pred.append(("suite H-MOVE walks", _three(model, suite_walks(legs=1 if quick else 3), 2)))
+    tables = ["### Trajectory prediction\n\n" + format_prediction(pred)]
+    from hltl.sim3d.gl import require_renderer
+
+    try:
+        require_renderer()
+    except HltlError as exc:  # no offscreen GL here: the prediction part only
+        say(f"renders skipped: {exc}")
+    else:
+        names = ("fig1",) if quick else ("fig1", "2-2", "4-2", "4-4-line", "4-4-square")
+        scenes = [get(n).scene for n in names]
+        say(f"objects: {len(scenes)} scene(s) x 3 camera poses")
+        objs = object_bench(scenes, say)
+        tables.append("### Objects on renders\n\n" + format_objects(objs))
+        say("people: two people crossing")
+        people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
+        tables.append("### People crossing on renders\n\n" + format_people(people))
+    text = "\n\n".join(tables)
+    print(text)
+    if args.write is not None:
+        cmd = "hltl bench perception" + (" --quick" if quick else "")
+        body = (
+            f"## Perception\n\nCommand: `{cmd} --write {shlex.quote(str(args.write))}`  \n"
+            f"Date: {datetime.date.today().isoformat()}. Machine: {machine()} (shared with other "
+            "jobs). How to read it: docs/perception.md.\n\n" + text
+        )
+        write_section(args.write, "perception", body)
+        print(f"wrote {args.write}", file=sys.stderr)
+    return 0
