@@ -240,7 +240,7 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return (
             "blue",
             f"{rec['trigger']} ({rec['source']}): makespan {rec['makespan']:.2f} s, "
-            f"{len(rec['steps'])} steps, {rec['latency_ms']:.1f} ms",
+            f"{_steps(len(rec['steps']))}, {rec['latency_ms']:.1f} ms",
         )
     if kind == "dispatch":
         return "bold", " | ".join(act(a) for a in rec["actions"]) or "(empty step)"
@@ -257,7 +257,13 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         )
     if kind == "predict":
         people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec["humans"].items())
-        return "magenta", f"background plan for {people}: {rec['status']}"
+        # two background plans per forecast: one from the current world, one from the world
+        # after the running step; say which, or the lines look like duplicates
+        basis = _BASIS.get(str(rec.get("basis", "")), "")
+        result = str(rec["status"])
+        if rec.get("makespan") is not None and result == "solved":
+            result += f", makespan {float(rec['makespan']):.2f} s"
+        return "magenta", f"background plan for {people}{basis}: {result}"
     if kind == "monitor" and rec["fired"]:
         return "green", f"fired {', '.join(rec['fired'])}" + (
             " — task complete" if rec["accepted"] else ""
@@ -287,6 +293,13 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
     if kind == "episode_end":
         return ("bold green" if rec["success"] else "bold red"), rec["reason"]
     return None
+
+
+_BASIS = {"now": " (from now)", "after_step": " (after the running step)"}
+
+
+def _steps(n: int) -> str:
+    return f"{n} step" if n == 1 else f"{n} steps"
 
 
 def print_metrics(metrics: dict[str, Any]) -> None:
