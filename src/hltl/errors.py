@@ -66,6 +66,10 @@ class PlanFormatError(HltlError, ValueError):
     """A plan or log file does not follow the documented format."""
 
 
+class BusError(HltlError, RuntimeError):
+    """The Zenoh bus cannot be used: no node answers, a malformed message, a bad endpoint."""
+
+
 class OutputError(HltlError, OSError):
     """A file or folder hltl was asked to write cannot be written (names the path and why)."""
 

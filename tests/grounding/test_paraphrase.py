@@ -33,12 +33,17 @@ KNOWN_MISSES = frozenset(
         "Give Carl the chips",  # 'Carl' is a common word (a name), so it is not read as 'Carol'
     }
 )
-CASES = [(part, e) for part, c in CORPORA.items() for e in c.entries]
+# measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
+# groundings included, are the measurement, and the grounder is not tuned on it
+MEASURED_ONLY = frozenset({"blind"})
+CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
 def test_corpus_sizes() -> None:
     assert len(CORPORA["heldout"].entries) >= 100
     assert len(CORPORA["tuning"].entries) >= 200
+    assert len(CORPORA["blind"].entries) >= 100
+    assert len({e.scene for e in CORPORA["blind"].entries}) >= 4
     for corpus in CORPORA.values():
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)

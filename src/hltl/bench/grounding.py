@@ -20,9 +20,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 
 # The parts of the paraphrase corpus, relative to the repository root: tuning (developed
 # against), heldout (written first, measured before tuning), fresh (written after the grammar
-# work, measured once before any change it motivated).
+# work, measured once before any change it motivated), blind (written without reading the
+# grounder's source or outputs, measured once; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
-PARTS = ("tuning", "heldout", "fresh")
+PARTS = ("tuning", "heldout", "fresh", "blind")
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
 

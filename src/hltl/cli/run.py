@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.bus_options import add_bus_arguments
 from hltl.cli.common import check_option
 from hltl.errors import HltlError
 
@@ -78,6 +79,7 @@ def register(sub: Any) -> None:
         help="--sim mujoco: observe the simulator's state (with --noise/--latency) or run the "
         "perception stage on its rendered RGB-D frames",
     )
+    add_bus_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -133,6 +135,12 @@ def run(args: argparse.Namespace) -> int:
     grounder = make_grounder(args.grounder)
     if args.motion:
         extra = _motion_options(scene, spec, config, grounder, predictor)
+    bus = None
+    if args.bus is not None:
+        from hltl.cli.bus_options import BusSimulator
+
+        bus = BusSimulator(args)
+        extra["simulator"] = bus.factory
     episode = run_episode(
         scene,
         spec=spec,
@@ -146,6 +154,8 @@ def run(args: argparse.Namespace) -> int:
         on_record=None if timeline is None else timeline,
         **extra,
     )
+    if bus is not None:
+        bus.close()
     if recorder is not None:
         recorder.close()
         if not args.json:
@@ -230,7 +240,7 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return (
             "blue",
             f"{rec['trigger']} ({rec['source']}): makespan {rec['makespan']:.2f} s, "
-            f"{len(rec['steps'])} steps, {rec['latency_ms']:.1f} ms",
+            f"{_steps(len(rec['steps']))}, {rec['latency_ms']:.1f} ms",
         )
     if kind == "dispatch":
         return "bold", " | ".join(act(a) for a in rec["actions"]) or "(empty step)"
@@ -247,7 +257,13 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         )
     if kind == "predict":
         people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec["humans"].items())
-        return "magenta", f"background plan for {people}: {rec['status']}"
+        # two background plans per forecast: one from the current world, one from the world
+        # after the running step; say which, or the lines look like duplicates
+        basis = _BASIS.get(str(rec.get("basis", "")), "")
+        result = str(rec["status"])
+        if rec.get("makespan") is not None and result == "solved":
+            result += f", makespan {float(rec['makespan']):.2f} s"
+        return "magenta", f"background plan for {people}{basis}: {result}"
     if kind == "monitor" and rec["fired"]:
         return "green", f"fired {', '.join(rec['fired'])}" + (
             " — task complete" if rec["accepted"] else ""
@@ -260,6 +276,8 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         )
     if kind == "object_drop":
         return "yellow", f"{rec['object']} dropped at {rec['position']}"
+    if kind == "robot_down" and rec.get("until") is None:  # lost on the bus: no known return
+        return "yellow", f"{rec['robot']}: {rec.get('reason', 'down')}"
     if kind in ("robot_down", "robot_up"):
         return "yellow", rec["robot"] + (
             f" until t={rec['until']:.2f}" if kind == "robot_down" else ""
@@ -275,6 +293,13 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
     if kind == "episode_end":
         return ("bold green" if rec["success"] else "bold red"), rec["reason"]
     return None
+
+
+_BASIS = {"now": " (from now)", "after_step": " (after the running step)"}
+
+
+def _steps(n: int) -> str:
+    return f"{n} step" if n == 1 else f"{n} steps"
 
 
 def print_metrics(metrics: dict[str, Any]) -> None:

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
 from hltl.execution.log import EventLog, Record
 from hltl.sim.events import EventSchedule
@@ -67,6 +68,28 @@ class EpisodeConfig:
         }
 
 
+class Cell(RobotDriver, Protocol):
+    """The world the loop drives: the robots' driver plus the simulated clock and perception.
+
+    :class:`~hltl.sim.simulator.Simulator` (and the 3D one) is one; ``hltl.bus`` serves one
+    over Zenoh and drives it from another process (:class:`hltl.bus.driver.BusCell`).
+    """
+
+    def advance(self, t: float) -> None: ...
+
+    def observe(self, t: float | None = None) -> WorldState: ...
+
+    def next_event_time(self) -> float: ...
+
+    def pending_instructions(self) -> bool: ...
+
+    def take_instructions(self) -> list[str]: ...
+
+
+# Makes an episode's world, called as ``factory(scene, events, seed=, perception=, log=)``.
+CellFactory = Callable[..., Cell]
+
+
 class Agent(Protocol):
     """Whatever decides the robots' actions in an episode: hltl's
     :class:`~hltl.execution.executor.Executor` or a baseline (:mod:`hltl.bench.baselines`).
@@ -102,13 +125,13 @@ class Agent(Protocol):
 
 
 # Builds the agent of an episode from the simulator (its robots' driver) and the log.
-AgentFactory = Callable[[Simulator, EventLog], Agent]
+AgentFactory = Callable[[Cell, EventLog], Agent]
 
 
 class EpisodeHook(Protocol):
     """Sees the episode as it runs (tests, live displays, custom tasks)."""
 
-    def on_tick(self, t: float, sim: Simulator, executor: Agent) -> None: ...
+    def on_tick(self, t: float, sim: Cell, executor: Agent) -> None: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -138,7 +161,7 @@ def run_episode(
     log_path: str | Path | None = None,
     on_record: Callable[[Record], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
-    simulator: Callable[..., Simulator] = Simulator,
+    simulator: CellFactory = Simulator,
     agent: AgentFactory | None = None,
     start_config: Mapping[str, Any] | None = None,
 ) -> Episode:
@@ -159,7 +182,8 @@ def run_episode(
         hooks: called every tick.
         simulator: makes the world, called as ``simulator(scene, events, seed=, perception=,
             log=)``: the discrete-event :class:`Simulator` or one with the same interface
-            (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`).
+            (the 3D :class:`hltl.sim3d.driver.MujocoSimulator`, or
+            :func:`hltl.bus.driver.bus_cell`'s, which drives a simulator node over Zenoh).
         agent: builds who decides (default: hltl's executor with ``planner``, ``grounder``,
             ``predictor`` and ``config.executor``).
         start_config: what the ``episode_start`` record says about the configuration

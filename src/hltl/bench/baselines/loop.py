@@ -31,10 +31,9 @@ from hltl.execution.executor import ExecStatus
 from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.update import carry_over
-from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.sim.episode import Cell, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
-from hltl.sim.simulator import Simulator
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -85,7 +84,7 @@ class BaselineAgent:
     """
 
     def __init__(
-        self, policy: Policy, scene: Scene, sim: Simulator, log: EventLog, cfg: LoopConfig
+        self, policy: Policy, scene: Scene, sim: Cell, log: EventLog, cfg: LoopConfig
     ) -> None:
         self.policy = policy
         self.scene = scene
@@ -426,7 +425,7 @@ def run_baseline_episode(
     cfg = LoopConfig() if config is None else config
     agents: list[BaselineAgent] = []
 
-    def make(sim: Simulator, log: EventLog) -> BaselineAgent:
+    def make(sim: Cell, log: EventLog) -> BaselineAgent:
         agents.append(BaselineAgent(policy, scene, sim, log, cfg))
         return agents[-1]
 

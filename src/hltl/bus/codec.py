@@ -1,0 +1,353 @@
+"""Payloads on the bus: JSON for hltl's own records, ROS 2 message types (CDR) where one exists.
+
+JSON floats are written with ``repr`` and read back bit for bit, so a world state or a time
+crosses the bus unchanged (an episode over the bus equals the in-process one). ROS 2 types are
+encoded with ``rosbags`` (no ROS installation needed): ``trajectory_msgs/msg/JointTrajectory``,
+``geometry_msgs/msg/PoseStamped`` and ``sensor_msgs/msg/JointState``.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cache
+from typing import Any, Literal, Protocol
+
+from hltl.errors import BackendUnavailableError, BusError, HltlError
+from hltl.execution.drivers import ActionState, ActionStatus
+from hltl.skills.library import Action
+from hltl.world.scene import Vec3
+from hltl.world.state import Loc, ObjectStatus, WorldState
+
+Op = Literal["start", "halt"]
+
+
+def dumps(data: Any) -> bytes:
+    return json.dumps(data, separators=(",", ":"), allow_nan=False).encode()
+
+
+def loads(payload: bytes, what: str) -> dict[str, Any]:
+    """A JSON object from a payload, or :class:`BusError` naming ``what`` was expected."""
+    try:
+        data = json.loads(payload)
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise BusError(f"malformed {what} on the bus: {exc}; payload {payload[:60]!r}") from None
+    if not isinstance(data, dict):
+        raise BusError(f"malformed {what} on the bus: expected a JSON object, got {data!r:.60}")
+    return data
+
+
+@dataclass(frozen=True, slots=True)
+class Command:
+    """Executor → robot: start or halt one action.
+
+    ``seq`` numbers the executor's commands (a retransmission keeps its number); ``handle`` is
+    the action's id, chosen by the executor, so a robot node starts each handle at most once.
+    """
+
+    episode: str
+    seq: int
+    op: Op
+    handle: int
+    action: Action
+    t: float
+    reason: str = ""
+
+    def encode(self) -> bytes:
+        return dumps(
+            {
+                "episode": self.episode,
+                "seq": self.seq,
+                "op": self.op,
+                "handle": self.handle,
+                "action": self.action.to_dict(),
+                "t": self.t,
+                "reason": self.reason,
+            }
+        )
+
+    @classmethod
+    def decode(cls, payload: bytes) -> Command:
+        d = loads(payload, "command")
+        try:
+            op = d["op"]
+            if op not in ("start", "halt"):
+                raise ValueError(f"op {op!r} is not start or halt")
+            return cls(
+                str(d["episode"]),
+                int(d["seq"]),
+                op,
+                int(d["handle"]),
+                Action.from_dict(d["action"]),
+                float(d["t"]),
+                str(d.get("reason", "")),
+            )
+        except (KeyError, TypeError, ValueError, HltlError) as exc:
+            raise BusError(f"malformed command on the bus: {exc}") from None
+
+
+@dataclass(frozen=True, slots=True)
+class Report:
+    """Robot → executor: how one action is doing. ``seq`` numbers the node's reports."""
+
+    episode: str
+    seq: int
+    handle: int
+    status: ActionStatus
+
+    def to_dict(self) -> dict[str, Any]:
+        s = self.status
+        return {
+            "episode": self.episode,
+            "seq": self.seq,
+            "handle": self.handle,
+            "state": s.state.value,
+            "progress": s.progress,
+            "t": s.t,
+            "reason": s.reason,
+        }
+
+    def encode(self) -> bytes:
+        return dumps(self.to_dict())
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any]) -> Report:
+        try:
+            status = ActionStatus(
+                ActionState(d["state"]), float(d["progress"]), float(d["t"]), str(d["reason"])
+            )
+            return cls(str(d["episode"]), int(d["seq"]), int(d["handle"]), status)
+        except (KeyError, TypeError, ValueError) as exc:
+            raise BusError(f"malformed action report on the bus: {exc}") from None
+
+    @classmethod
+    def decode(cls, payload: bytes) -> Report:
+        return cls.from_dict(loads(payload, "action report"))
+
+
+# -- world states, exact -------------------------------------------------------------------
+
+
+def world_to_wire(w: WorldState) -> dict[str, Any]:
+    """A world state as JSON data, floats unrounded."""
+    return {
+        "t": w.t,
+        "humans": [[h, list(p)] for h, p in w.humans],
+        "objects": [[o, list(st.position), st.loc.kind, st.loc.ref] for o, st in w.objects],
+        "hands": [[r, list(p)] for r, p in w.hands],
+        "unavailable": sorted(w.unavailable),
+    }
+
+
+def _v3(p: Sequence[Any]) -> Vec3:
+    if len(p) != 3:
+        raise ValueError(f"expected a point [x, y, z], got {p!r:.60}")
+    return (float(p[0]), float(p[1]), float(p[2]))
+
+
+def world_from_wire(d: Mapping[str, Any]) -> WorldState:
+    """Inverse of :func:`world_to_wire`."""
+    try:
+        return WorldState(
+            t=float(d["t"]),
+            humans=tuple((str(h), _v3(p)) for h, p in d["humans"]),
+            objects=tuple(
+                (str(o), ObjectStatus(_v3(p), Loc(kind, str(ref))))
+                for o, p, kind, ref in d["objects"]
+            ),
+            hands=tuple((str(r), _v3(p)) for r, p in d["hands"]),
+            unavailable=frozenset(str(r) for r in d["unavailable"]),
+        )
+    except (KeyError, TypeError, ValueError) as exc:
+        raise BusError(f"malformed world state on the bus: {exc}") from None
+
+
+def finite_or_none(x: float) -> float | None:
+    """JSON has no infinity: ``None`` stands for "never"."""
+    return x if math.isfinite(x) else None
+
+
+# -- ROS 2 message types (CDR) ---------------------------------------------------------------------
+
+
+class TrajectoryLike(Protocol):
+    """What :class:`hltl.motion.trajectory.JointTrajectory` offers (CONTRACTS.md)."""
+
+    @property
+    def robot(self) -> str: ...
+    @property
+    def joint_names(self) -> tuple[str, ...]: ...
+    @property
+    def times(self) -> tuple[float, ...]: ...
+    @property
+    def positions(self) -> tuple[tuple[float, ...], ...]: ...
+    @property
+    def velocities(self) -> tuple[tuple[float, ...], ...] | None: ...
+
+
+@dataclass(frozen=True, slots=True)
+class WireTrajectory:
+    """A joint trajectory as it arrives from the bus (the fields of ``JointTrajectory``)."""
+
+    robot: str
+    joint_names: tuple[str, ...]
+    times: tuple[float, ...]
+    positions: tuple[tuple[float, ...], ...]
+    velocities: tuple[tuple[float, ...], ...] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class StampedPose:
+    """A ``geometry_msgs/msg/PoseStamped``: a position (and unit quaternion x, y, z, w)."""
+
+    frame_id: str
+    t: float
+    position: Vec3
+    orientation: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 1.0)
+
+
+@dataclass(frozen=True, slots=True)
+class JointStateMsg:
+    """A ``sensor_msgs/msg/JointState``."""
+
+    t: float
+    names: tuple[str, ...]
+    positions: tuple[float, ...]
+    velocities: tuple[float, ...] = ()
+
+
+JOINT_TRAJECTORY = "trajectory_msgs/msg/JointTrajectory"
+POSE_STAMPED = "geometry_msgs/msg/PoseStamped"
+JOINT_STATE = "sensor_msgs/msg/JointState"
+
+
+@cache
+def typestore() -> Any:
+    """rosbags' ROS 2 Humble type store (message definitions shipped with rosbags)."""
+    try:
+        typesys = importlib.import_module("rosbags.typesys")
+    except ImportError:
+        raise BackendUnavailableError(
+            "ROS 2 message types need rosbags; install the 'bus' extra (pip install 'hltl[bus]')"
+        ) from None
+    return typesys.get_typestore(typesys.Stores.ROS2_HUMBLE)
+
+
+def _np() -> Any:
+    return importlib.import_module("numpy")
+
+
+def _stamp(t: float) -> Any:
+    ts = typestore()
+    sec = math.floor(t)
+    return ts.types["builtin_interfaces/msg/Time"](
+        sec=int(sec), nanosec=min(999_999_999, round((t - sec) * 1e9))
+    )
+
+
+def _seconds(stamp: Any) -> float:
+    return float(stamp.sec) + float(stamp.nanosec) * 1e-9
+
+
+def _header(frame_id: str, t: float) -> Any:
+    return typestore().types["std_msgs/msg/Header"](stamp=_stamp(t), frame_id=frame_id)
+
+
+def _deserialize(payload: bytes, msgtype: str) -> Any:
+    try:
+        return typestore().deserialize_cdr(payload, msgtype)
+    except Exception as exc:  # rosbags raises plain exceptions of several kinds on bad bytes
+        raise BusError(f"malformed {msgtype} on the bus: {exc}") from None
+
+
+def encode_trajectory(traj: TrajectoryLike, t: float = 0.0) -> bytes:
+    """A joint trajectory as CDR ``trajectory_msgs/msg/JointTrajectory``; ``frame_id`` carries
+    the robot id and the header stamp the action's start ``t``."""
+    ts = typestore()
+    np = _np()
+    point = ts.types["trajectory_msgs/msg/JointTrajectoryPoint"]
+    duration = ts.types["builtin_interfaces/msg/Duration"]
+    empty = np.array([], dtype=np.float64)
+    points = []
+    for i, (ti, q) in enumerate(zip(traj.times, traj.positions, strict=True)):
+        sec = math.floor(ti)
+        v = traj.velocities[i] if traj.velocities is not None else None
+        points.append(
+            point(
+                positions=np.array(q, dtype=np.float64),
+                velocities=empty if v is None else np.array(v, dtype=np.float64),
+                accelerations=empty,
+                effort=empty,
+                time_from_start=duration(
+                    sec=int(sec), nanosec=min(999_999_999, round((ti - sec) * 1e9))
+                ),
+            )
+        )
+    msg = ts.types[JOINT_TRAJECTORY](
+        header=_header(traj.robot, t), joint_names=list(traj.joint_names), points=points
+    )
+    return bytes(ts.serialize_cdr(msg, JOINT_TRAJECTORY))
+
+
+def decode_trajectory(payload: bytes) -> WireTrajectory:
+    """Inverse of :func:`encode_trajectory` (times to the nanosecond)."""
+    msg = _deserialize(payload, JOINT_TRAJECTORY)
+    times = tuple(_seconds(p.time_from_start) for p in msg.points)
+    positions = tuple(tuple(float(x) for x in p.positions) for p in msg.points)
+    has_v = bool(msg.points) and all(len(p.velocities) for p in msg.points)
+    velocities = tuple(tuple(float(x) for x in p.velocities) for p in msg.points) if has_v else None
+    return WireTrajectory(
+        str(msg.header.frame_id), tuple(msg.joint_names), times, positions, velocities
+    )
+
+
+def encode_pose(pose: StampedPose) -> bytes:
+    ts = typestore()
+    g = ts.types
+    x, y, z = pose.position
+    qx, qy, qz, qw = pose.orientation
+    msg = g[POSE_STAMPED](
+        header=_header(pose.frame_id, pose.t),
+        pose=g["geometry_msgs/msg/Pose"](
+            position=g["geometry_msgs/msg/Point"](x=x, y=y, z=z),
+            orientation=g["geometry_msgs/msg/Quaternion"](x=qx, y=qy, z=qz, w=qw),
+        ),
+    )
+    return bytes(ts.serialize_cdr(msg, POSE_STAMPED))
+
+
+def decode_pose(payload: bytes) -> StampedPose:
+    msg = _deserialize(payload, POSE_STAMPED)
+    p, q = msg.pose.position, msg.pose.orientation
+    return StampedPose(
+        str(msg.header.frame_id),
+        _seconds(msg.header.stamp),
+        (float(p.x), float(p.y), float(p.z)),
+        (float(q.x), float(q.y), float(q.z), float(q.w)),
+    )
+
+
+def encode_joint_state(js: JointStateMsg) -> bytes:
+    ts = typestore()
+    np = _np()
+    msg = ts.types[JOINT_STATE](
+        header=_header("", js.t),
+        name=list(js.names),
+        position=np.array(js.positions, dtype=np.float64),
+        velocity=np.array(js.velocities, dtype=np.float64),
+        effort=np.array([], dtype=np.float64),
+    )
+    return bytes(ts.serialize_cdr(msg, JOINT_STATE))
+
+
+def decode_joint_state(payload: bytes) -> JointStateMsg:
+    msg = _deserialize(payload, JOINT_STATE)
+    return JointStateMsg(
+        _seconds(msg.header.stamp),
+        tuple(msg.name),
+        tuple(float(x) for x in msg.position),
+        tuple(float(x) for x in msg.velocity),
+    )

@@ -1,0 +1,598 @@
+"""The executor's side of the bus: a :class:`~hltl.sim.episode.Cell` whose robots and clock
+are a node somewhere else.
+
+Every command carries a sequence number and the executor's handle id; the node starts a handle
+at most once, so retransmissions after a lost message never dispatch an action twice. Reports
+carry the node's sequence numbers: duplicates and stale (overtaken) reports are dropped, and a
+gap is filled by querying the robots' state. Every wait is bounded: a robot whose node stops
+answering (or leaves: its liveliness token disappears) is down, with the reason, and its
+actions fail; the executor then replans without it or gives up.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import threading
+import time
+import uuid
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from hltl.bus.codec import (
+    Command,
+    Op,
+    Report,
+    TrajectoryLike,
+    dumps,
+    encode_trajectory,
+    loads,
+    world_from_wire,
+)
+from hltl.bus.faults import FaultModel, Link
+from hltl.bus.keys import Keys, robot_of
+from hltl.errors import BusError
+from hltl.execution.drivers import ActionState, ActionStatus, Handle
+from hltl.execution.log import EventLog
+from hltl.sim.episode import Cell, CellFactory
+from hltl.sim.events import EventSchedule
+from hltl.sim.simulator import PerceptionModel
+from hltl.skills.library import Action
+from hltl.world.scene import Scene
+from hltl.world.state import WorldState
+
+
+class MotionLike(Protocol):
+    """What :class:`hltl.motion.trajectory.MotionPlan` offers (CONTRACTS.md)."""
+
+    @property
+    def trajectories(self) -> Sequence[TrajectoryLike]: ...
+
+
+@dataclass(frozen=True, slots=True)
+class BusTiming:
+    """How long the executor waits on the bus.
+
+    Attributes:
+        timeout: seconds to wait for one answer (a query reply, an acknowledgement, a report).
+        retries: retransmissions before a robot (or the simulator) is declared down.
+        connect: seconds to wait for a simulator node to appear when an episode starts.
+        patience: after the retries, how long to keep retransmitting while the node still
+            holds its liveliness tokens (a busy node is slow, not dead; a dead one loses its
+            tokens and is given up at once).
+    """
+
+    timeout: float = 1.0
+    retries: int = 3
+    connect: float = 5.0
+    patience: float = 30.0
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.timeout) and self.timeout > 0):
+            raise ValueError(
+                f"bus timeout must be a positive number of seconds, got {self.timeout!r}"
+            )
+        if not (math.isfinite(self.patience) and self.patience >= 0):
+            raise ValueError(f"bus patience must be >= 0 seconds, got {self.patience!r}")
+        if not (math.isfinite(self.connect) and self.connect >= 0):
+            raise ValueError(f"bus connect wait must be >= 0 seconds, got {self.connect!r}")
+        if self.retries < 0:
+            raise ValueError(f"bus retries must be >= 0, got {self.retries!r}")
+
+
+@dataclass(slots=True)
+class DriverStats:
+    """What the executor's side saw: commands, retransmissions, reports, recoveries."""
+
+    commands: int = 0
+    retransmits: int = 0
+    reports: int = 0
+    duplicate_reports: int = 0
+    reordered_reports: int = 0
+    stale_reports: int = 0
+    recoveries: int = 0
+    queries: int = 0
+    round_trips: list[float] = field(default_factory=list)
+
+
+class BusCell:
+    """A cell served by a :class:`~hltl.bus.node.CellNode`, driven over Zenoh (lockstep time).
+
+    Args:
+        session: an open Zenoh session connected to the node (not closed here).
+        scene, events, seed, perception, log: the episode (as for the in-process simulator).
+        cell: the cell's name in key expressions.
+        timing: timeouts and retries.
+        faults: faults injected into what the executor publishes and receives.
+
+    Raises:
+        BusError: no node serves the cell, or it refuses the episode (another scene).
+    """
+
+    def __init__(
+        self,
+        session: Any,
+        scene: Scene,
+        events: EventSchedule,
+        seed: int,
+        perception: PerceptionModel,
+        log: EventLog,
+        *,
+        cell: str = "default",
+        timing: BusTiming | None = None,
+        faults: FaultModel | None = None,
+    ) -> None:
+        self.session = session
+        self.scene = scene
+        self.log = log
+        self.keys = Keys(cell)
+        self.timing = BusTiming() if timing is None else timing
+        self.faults = FaultModel() if faults is None else faults
+        self.episode = uuid.uuid4().hex
+        self.stats = DriverStats()
+        self._link = Link(session, self.faults, name=f"executor-{cell}")
+        self._cond = threading.Condition()
+        self._latest: dict[int, Report] = {}
+        self._local: dict[int, ActionStatus] = {}  # outcomes decided here (robot down)
+        self._actions: dict[int, Action] = {}
+        self._received: set[int] = set()
+        self._contiguous = 0
+        self._down: dict[str, str] = {}
+        self._logged: set[str] = set()
+        self._suspect: set[str] = set()
+        self._dead = False
+        self._next_handle = 1
+        self._seq = 0
+        self._step = 0
+        self._dirty = False
+        self._instructions: list[str] = []
+        self._next = math.inf
+        self._pending = False
+        self._unavailable: frozenset[str] = frozenset()
+        self._obs: WorldState | None = None
+        self.now = 0.0
+        self._entities: list[Any] = [
+            session.declare_subscriber(self.keys.all_status, self._on_report),
+            session.liveliness().declare_subscriber(
+                self.keys.all_alive, self._on_alive, history=False
+            ),
+        ]
+        reset = {
+            "episode": self.episode,
+            "scene": scene.to_dict(),
+            "events": events.to_list(),
+            "seed": seed,
+            "perception": {"noise": perception.noise, "latency": perception.latency},
+        }
+        deadline = time.monotonic() + self.timing.connect
+        d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
+        while d is None and time.monotonic() < deadline:  # the node may still be starting
+            time.sleep(0.05)
+            d = self._ask(self.keys.sim_reset, reset, retries=0)
+        if d is None:
+            self.close()
+            raise BusError(
+                f"no simulator node answers on {self.keys.sim_reset}; start one with "
+                f"'hltl node sim --scene SCENE --cell {cell}'"
+            )
+        self._absorb(d)
+
+    def close(self) -> None:
+        for e in self._entities:
+            with contextlib.suppress(Exception):  # the session is already closed
+                e.undeclare()
+        self._entities = []
+        self._link.close()
+
+    def end(self) -> None:
+        """Tell the node the episode is over (it may then serve the next one)."""
+        if not self._dead:
+            self._ask(self.keys.sim_step, {"episode": self.episode, "end": True}, retries=0)
+
+    # -- messages in -------------------------------------------------------------------------------
+
+    def _on_report(self, sample: Any) -> None:
+        if self.faults.slow:
+            time.sleep(self.faults.slow)
+        try:
+            rep = Report.decode(sample.payload.to_bytes())
+        except BusError:
+            return
+        if rep.episode != self.episode:
+            return
+        with self._cond:
+            self._accept(rep)
+            self._cond.notify_all()
+
+    def _accept(self, rep: Report) -> None:
+        if rep.seq in self._received or rep.seq <= self._contiguous:
+            self.stats.duplicate_reports += 1
+        else:
+            self.stats.reports += 1
+            if self._received and rep.seq < max(self._received):
+                self.stats.reordered_reports += 1
+            self._received.add(rep.seq)
+            while self._contiguous + 1 in self._received:
+                self._contiguous += 1
+                self._received.discard(self._contiguous)
+        prev = self._latest.get(rep.handle)
+        if prev is not None and prev.seq >= rep.seq:
+            if prev.seq > rep.seq:
+                self.stats.stale_reports += 1
+            return
+        self._latest[rep.handle] = rep
+
+    def _on_alive(self, sample: Any) -> None:
+        robot = robot_of(str(sample.key_expr))
+        gone = str(sample.kind).endswith("DELETE")
+        with self._cond:
+            # Only a suspicion: a token withdrawn by an earlier node of the same cell can arrive
+            # late, so the executor's thread asks whether any node still holds it (_confirm).
+            if gone:
+                self._suspect.add(robot)
+            else:
+                self._suspect.discard(robot)
+            self._cond.notify_all()
+
+    def _confirm(self) -> None:
+        """Settle suspicions from liveliness: a robot whose token nobody holds is down."""
+        with self._cond:
+            suspects, self._suspect = sorted(self._suspect), set()
+        for r in suspects:
+            if r in self._down:
+                continue
+            try:
+                alive = any(
+                    reply.ok is not None
+                    for reply in self.session.liveliness().get(
+                        self.keys.alive(r), timeout=self.timing.timeout
+                    )
+                )
+            except Exception:  # the session closed under us
+                alive = False
+            if not alive:
+                self._robot_down(r, f"robot {r}'s node left the bus")
+
+    # -- queries -----------------------------------------------------------------------------------
+
+    def _holds_tokens(self, robots: Sequence[str]) -> bool:
+        """Whether every robot's liveliness token is held by some node right now."""
+        try:
+            liveliness = self.session.liveliness()
+            replies = liveliness.get(self.keys.all_alive, timeout=self.timing.timeout)
+            held = {robot_of(str(r.ok.key_expr)) for r in replies if r.ok is not None}
+        except Exception:  # the session closed under us
+            return False
+        return all(r in held for r in robots)
+
+    def _attempts(self, retries: int, robots: Sequence[str]) -> Iterator[int]:
+        """Attempt numbers: ``retries`` retransmissions, then more while the robots' node is
+        alive (it holds their liveliness tokens) and ``patience`` has not run out."""
+        t0 = time.monotonic()
+        attempt = 0
+        while attempt <= retries or (
+            robots and time.monotonic() - t0 < self.timing.patience and self._holds_tokens(robots)
+        ):
+            yield attempt
+            attempt += 1
+
+    def _ask(
+        self,
+        key: str,
+        data: dict[str, Any],
+        retries: int | None = None,
+        robots: Sequence[str] = (),
+    ) -> dict[str, Any] | None:
+        """The node's answer to a query, retried on silence; ``None`` when it never answers.
+
+        Raises:
+            BusError: the node answered with an error (it refuses the request).
+        """
+        payload = dumps(data)
+        for attempt in self._attempts(self.timing.retries if retries is None else retries, robots):
+            if attempt:
+                self.stats.retransmits += 1
+            self.stats.queries += 1
+            t0 = time.perf_counter()
+            try:
+                replies = list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
+            except Exception as exc:  # the session closed under us
+                raise BusError(f"the bus failed while asking {key}: {exc}") from None
+            for reply in replies:
+                if reply.ok is not None:
+                    self.stats.round_trips.append(time.perf_counter() - t0)
+                    return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
+                refusal = _refusal(reply.err.payload.to_bytes())
+                if refusal is not None:
+                    raise BusError(f"{key}: {refusal}")
+                # anything else is Zenoh's own error (the query timed out): no answer yet
+            if not replies:
+                # no queryable matched: if the node is gone entirely, waiting again is pointless
+                # unless its answer was lost; a short pause lets a restarting route settle
+                time.sleep(min(0.01, self.timing.timeout))
+        return None
+
+    def _absorb(self, d: dict[str, Any]) -> None:
+        """Take in a reset or step answer: the cell's log records, the clock, the observation."""
+        for rec in d.get("records", ()):
+            rec = dict(rec)
+            self.log.emit(rec.pop("t"), rec.pop("type"), **rec)
+        if "observation" in d:
+            self._obs = world_from_wire(d["observation"])
+        self._instructions.extend(str(s) for s in d.get("instructions", ()))
+        self._clock(d)
+
+    def _clock(self, d: dict[str, Any]) -> None:
+        nxt = d.get("next")
+        self._next = math.inf if nxt is None else float(nxt)
+        self._pending = bool(d.get("pending"))
+        self._unavailable = frozenset(str(r) for r in d.get("unavailable", ()))
+        self._dirty = False
+
+    def _sync(self, upto: int) -> None:
+        """Wait (bounded) for every report up to ``upto``; fill a gap by asking the robots."""
+        deadline = time.monotonic() + self.timing.timeout
+        with self._cond:
+            while self._contiguous < upto:
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    break
+                self._cond.wait(left)
+            if self._contiguous >= upto:
+                return
+        self.stats.recoveries += 1
+        robots = sorted({r for h in self._open() for r in self._actions[h].robots})
+        for r in robots:
+            if r in self._down:
+                continue
+            d = self._ask(self.keys.state(r), {"episode": self.episode}, robots=(r,))
+            if d is None:
+                self._robot_down(r, f"robot {r} stopped answering")
+                continue
+            with self._cond:
+                for item in d.get("reports", ()):
+                    rep = Report.from_dict(item)
+                    if rep.episode == self.episode:
+                        self._accept(rep)
+        with self._cond:
+            self._contiguous = max(self._contiguous, upto)
+            self._received = {s for s in self._received if s > upto}
+
+    def _open(self) -> list[int]:
+        return [h for h in self._actions if self._status(h) is None or not self._status_terminal(h)]
+
+    def _status(self, h: int) -> ActionStatus | None:
+        if h in self._local:
+            return self._local[h]
+        rep = self._latest.get(h)
+        return None if rep is None else rep.status
+
+    def _status_terminal(self, h: int) -> bool:
+        st = self._status(h)
+        return st is not None and st.terminal
+
+    def _robot_down(self, robot: str, reason: str) -> None:
+        with self._cond:
+            self._down.setdefault(robot, reason)
+        self._log_down()
+
+    def _log_down(self) -> None:
+        """Log robots newly found down (liveliness callbacks only note them: the log is not
+        thread-safe, so records are written from the executor's thread)."""
+        with self._cond:
+            new = [(r, why) for r, why in self._down.items() if r not in self._logged]
+            self._logged.update(r for r, _ in new)
+        for r, why in new:
+            self.log.emit(self.now, "robot_down", robot=r, until=None, reason=why)
+
+    def _lose_all(self, reason: str) -> None:
+        self._dead = True
+        for r in self.scene.robot_ids:
+            self._robot_down(r, reason)
+
+    # -- the clock (Cell) --------------------------------------------------------------------------
+
+    def advance(self, t: float) -> None:
+        self.now = t
+        if self._dead:
+            return
+        self._confirm()
+        d = self._ask(
+            self.keys.sim_step,
+            {"episode": self.episode, "step": self._step + 1, "t": t},
+            robots=self.scene.robot_ids,
+        )
+        if d is None:
+            self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
+            return
+        self._step += 1
+        self._absorb(d)
+        self._sync(int(d["reports"]))
+        self._log_down()
+
+    def observe(self, t: float | None = None) -> WorldState:
+        if self._obs is None:
+            raise BusError("no observation from the simulator node yet")
+        if self._dead:
+            # The node is gone and every robot with it: nothing can be dispatched, so the last
+            # world seen is good enough for the executor to conclude and give up with a reason.
+            return self._obs.with_time(self.now if t is None else t)
+        return self._obs
+
+    def next_event_time(self) -> float:
+        if self._dead:
+            return math.inf
+        if self._dirty:
+            d = self._ask(
+                self.keys.sim_step,
+                {"episode": self.episode, "peek": True, "t": self.now},
+                robots=self.scene.robot_ids,
+            )
+            if d is None:
+                self._lose_all(f"the simulator node stopped answering at t={self.now:.2f}")
+                return math.inf
+            self._clock(d)
+        return max(self.now, self._next)
+
+    def pending_instructions(self) -> bool:
+        self.next_event_time()  # refreshes the clock after commands
+        return bool(self._instructions) or self._pending
+
+    def take_instructions(self) -> list[str]:
+        out, self._instructions = self._instructions, []
+        return out
+
+    # -- the robots (RobotDriver) ------------------------------------------------------------------
+
+    def unavailable(self, t: float) -> frozenset[str]:
+        self._confirm()
+        self._log_down()
+        with self._cond:
+            return self._unavailable | frozenset(self._down)
+
+    def start(self, action: Action, t: float, *, motion: MotionLike | None = None) -> Handle:
+        hid = self._next_handle
+        self._next_handle += 1
+        handle = Handle(hid, action, t)
+        self._actions[hid] = action
+        self._confirm()
+        with self._cond:
+            down = [r for r in action.robots if r in self._down]
+        if down:
+            self._local[hid] = ActionStatus(
+                ActionState.FAILED, 0.0, t, f"robot {down[0]} is down: {self._down[down[0]]}"
+            )
+            return handle
+        if motion is not None:
+            for traj in motion.trajectories:
+                if traj.robot in action.robots:
+                    self._link.put(
+                        self.keys.trajectory(traj.robot),
+                        encode_trajectory(traj, t),
+                        attachment=dumps({"episode": self.episode, "handle": hid}),
+                    )
+        self._dirty = True
+        if not self._command("start", handle, t, lambda s: True):
+            self._give_up_on(handle, t, "did not acknowledge the action")
+        return handle
+
+    def poll(self, handle: Handle, t: float) -> ActionStatus:
+        hid = handle.id
+        with self._cond:
+            st = self._status(hid)
+            if st is not None and st.terminal:
+                return st
+            down = [r for r in handle.action.robots if r in self._down]
+        if down:
+            r = down[0]
+            status = ActionStatus(
+                ActionState.FAILED,
+                0.0 if st is None else st.progress,
+                t,
+                f"robot {r} is down: {self._down[r]}",
+            )
+            self._local[hid] = status
+            return status
+        return ActionStatus(ActionState.RUNNING, 0.0, t) if st is None else st
+
+    def halt(self, handle: Handle, t: float, reason: str) -> None:
+        if self._status_terminal(handle.id):
+            return
+        self._dirty = True
+        if not self._command("halt", handle, t, lambda s: s.terminal, reason):
+            self._give_up_on(handle, t, "did not confirm the halt")
+
+    def _command(
+        self,
+        op: Op,
+        handle: Handle,
+        t: float,
+        done: Callable[[ActionStatus], bool],
+        reason: str = "",
+    ) -> bool:
+        """Send a command to every robot of the action until a report says ``done``."""
+        self._seq += 1
+        cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason)
+        payload = cmd.encode()
+        since = self._latest.get(handle.id)
+        for attempt in self._attempts(self.timing.retries, handle.action.robots):
+            if attempt:
+                self.stats.retransmits += 1
+            self.stats.commands += 1
+            t0 = time.perf_counter()
+            for r in handle.action.robots:
+                self._link.put(self.keys.action(r), payload)
+            deadline = time.monotonic() + self.timing.timeout
+            while True:
+                with self._cond:
+                    rep = self._latest.get(handle.id)
+                    if rep is not None and rep is not since and done(rep.status):
+                        self.stats.round_trips.append(time.perf_counter() - t0)
+                        return True
+                    suspect = any(r in self._suspect for r in handle.action.robots)
+                    left = deadline - time.monotonic()
+                    if not suspect and left > 0:
+                        self._cond.wait(left)
+                        continue
+                if suspect:
+                    self._confirm()  # outside the lock: it queries the bus
+                if any(r in self._down for r in handle.action.robots):
+                    return False
+                if left <= 0:
+                    break
+        return False
+
+    def _give_up_on(self, handle: Handle, t: float, what: str) -> None:
+        """A robot did not answer: it is down, the action failed, and a late start is cancelled."""
+        timing = self.timing
+        why = f"{what} (no answer to {timing.retries} retransmissions, {timing.timeout:g} s each)"
+        for r in handle.action.robots:
+            self._robot_down(r, f"robot {r} {why}")
+        # name the first cause: a node that left the bus, or this silence
+        r = handle.action.robots[0]
+        self._local[handle.id] = ActionStatus(
+            ActionState.FAILED, 0.0, t, f"robot {r} is down: {self._down[r]}"
+        )
+        # should the start still arrive, the node refuses it: the handle is cancelled there
+        self._seq += 1
+        cancel = Command(self.episode, self._seq, "halt", handle.id, handle.action, t, why)
+        for r in handle.action.robots:
+            self._link.put(self.keys.action(r), cancel.encode())
+
+
+def _refusal(payload: bytes) -> str | None:
+    """A node's refusal (a JSON ``{"error": …}`` reply), or ``None`` for Zenoh's own errors."""
+    try:
+        return str(loads(payload, "error reply")["error"])
+    except (BusError, KeyError):
+        return None
+
+
+def bus_cell(
+    session: Any,
+    *,
+    cell: str = "default",
+    timing: BusTiming | None = None,
+    faults: FaultModel | None = None,
+    opened: list[BusCell] | None = None,
+) -> CellFactory:
+    """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
+    serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given."""
+
+    def make(
+        scene: Scene,
+        events: EventSchedule,
+        *,
+        seed: int,
+        perception: PerceptionModel,
+        log: EventLog,
+    ) -> Cell:
+        c = BusCell(
+            session, scene, events, seed, perception, log, cell=cell, timing=timing, faults=faults
+        )
+        if opened is not None:
+            opened.append(c)
+        return c
+
+    return make

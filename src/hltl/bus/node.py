@@ -1,0 +1,395 @@
+"""A cell served on the bus: its robots (any :class:`RobotDriver`) and its simulated clock.
+
+:class:`CellNode` takes action commands from ``hltl/<cell>/robots/<r>/action``, starts each
+handle at most once on the cell's driver, publishes reports (acknowledgement, progress,
+completion, failure) on ``…/status``, answers ``…/state`` queries, holds a liveliness token per
+robot and, for simulated cells, serves ``hltl/<cell>/sim/reset`` and ``…/sim/step`` so that an
+executor in another process drives the simulated time step by step.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import Any, Protocol, runtime_checkable
+
+from hltl.bus.codec import (
+    Command,
+    JointStateMsg,
+    Report,
+    StampedPose,
+    dumps,
+    encode_joint_state,
+    encode_pose,
+    finite_or_none,
+    loads,
+    world_to_wire,
+)
+from hltl.bus.faults import FaultModel, Link
+from hltl.bus.keys import Keys, robot_of
+from hltl.errors import BusError, HltlError
+from hltl.execution.drivers import ActionStatus, Handle
+from hltl.execution.log import EventLog, Record
+from hltl.sim.episode import Cell, CellFactory
+from hltl.sim.events import events_from_dict
+from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.world.scene import Scene, scene_from_dict
+from hltl.world.state import WorldState
+
+
+@runtime_checkable
+class JointStateSource(Protocol):
+    """A cell that knows its arms' joints (the 3D simulator, a real arm) publishes them."""
+
+    def joint_states(self, t: float) -> dict[str, JointStateMsg]: ...
+
+
+@dataclass(slots=True)
+class NodeStats:
+    """What a node did, for tests and benchmarks: starts per handle, commands, reports."""
+
+    episodes: int = 0
+    finished: int = 0
+    starts: dict[int, int] = field(default_factory=dict)
+    commands: int = 0
+    duplicates: int = 0
+    stale: int = 0
+    malformed: int = 0
+    reports: int = 0
+    steps: int = 0
+
+
+@dataclass(slots=True)
+class _Episode:
+    id: str
+    cell: Cell
+    records: list[Record]
+    handles: dict[int, Handle] = field(default_factory=dict)
+    by_cell_id: dict[int, int] = field(default_factory=dict)
+    latest: dict[int, Report] = field(default_factory=dict)
+    cancelled: set[int] = field(default_factory=set)
+    last_step: int = 0
+    last_reply: bytes = b""
+
+
+class CellNode:
+    """Serves one cell on an open Zenoh session until closed.
+
+    Args:
+        session: an open Zenoh session (the node does not close it).
+        scene: the cell; an executor asking for another scene is refused.
+        cell: the cell's name in key expressions.
+        factory: builds the cell for each episode, called like ``Simulator(scene, events,
+            seed=, perception=, log=)`` (default: the discrete-event simulator).
+        faults: faults injected into what the node publishes and answers.
+        publish_poses: also publish people's and hands' poses (``PoseStamped``) every step.
+    """
+
+    def __init__(
+        self,
+        session: Any,
+        scene: Scene,
+        *,
+        cell: str = "default",
+        factory: CellFactory = Simulator,
+        faults: FaultModel | None = None,
+        publish_poses: bool = True,
+    ) -> None:
+        self.session = session
+        self.scene = scene
+        self.keys = Keys(cell)
+        self.factory = factory
+        self.faults = FaultModel() if faults is None else faults
+        self.publish_poses = publish_poses
+        self.stats = NodeStats()
+        self.finished = threading.Event()
+        self._lock = threading.RLock()
+        self._ep: _Episode | None = None
+        self._seq = 0
+        self._closed = False
+        self._link = Link(session, self.faults, name=f"node-{cell}")
+        if publish_poses:  # rosbags builds its CDR code on first use (~1 s): not mid-episode
+            encode_pose(StampedPose("world", 0.0, (0.0, 0.0, 0.0)))
+        k = self.keys
+        self._entities: list[Any] = [
+            session.declare_queryable(k.sim_reset, self._on_reset),
+            session.declare_queryable(k.sim_step, self._on_step),
+            session.declare_queryable(k.all_states, self._on_state),
+            session.declare_subscriber(k.all_actions, self._on_command),
+        ]
+        self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
+
+    # -- lifetime ----------------------------------------------------------------------------------
+
+    def close(self) -> None:
+        """Withdraw the node: its liveliness tokens disappear, its queryables stop answering."""
+        with self._lock:
+            if self._closed:
+                return
+            self._closed = True
+        for e in (*self._tokens, *self._entities):
+            with contextlib.suppress(
+                Exception
+            ):  # the session is already closed: nothing left to withdraw
+                e.undeclare()
+        self._link.close()
+
+    def __enter__(self) -> CellNode:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # -- episodes ----------------------------------------------------------------------------------
+
+    def _on_reset(self, query: Any) -> None:
+        with self._guard(query):
+            d = loads(_payload(query), "reset request")
+            try:
+                scene = scene_from_dict(d["scene"])
+                events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
+                perception = PerceptionModel(**d["perception"])
+                episode, seed = str(d["episode"]), int(d["seed"])
+            except (KeyError, TypeError, ValueError, HltlError) as exc:
+                raise BusError(f"malformed reset request: {exc}") from None
+            cur = self._ep
+            if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
+                self._reply_bytes(query, cur.last_reply)  # a retransmission: same episode
+                return
+            if scene != self.scene:
+                raise BusError(
+                    f"this node serves the scene {self.scene.source} "
+                    f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
+                )
+            records: list[Record] = []
+            log = EventLog(on_record=records.append)
+            cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
+            self._ep = _Episode(episode, cell, records)
+            self.stats.episodes += 1
+            self.stats.starts = {}
+            obs = cell.observe(0.0)
+            reply = dumps(
+                {
+                    "episode": episode,
+                    "observation": world_to_wire(obs),
+                    **self._clock(cell, 0.0),
+                    "records": self._flush(),
+                }
+            )
+            self._ep.last_reply = reply
+            self._reply_bytes(query, reply)
+
+    def _on_step(self, query: Any) -> None:
+        with self._guard(query):
+            d = loads(_payload(query), "step request")
+            ep = self._episode(d.get("episode"))
+            if d.get("peek"):
+                self._reply(query, {"episode": ep.id, **self._clock(ep.cell, float(d["t"]))})
+                return
+            if d.get("end"):
+                self._ep = None
+                self.stats.finished += 1
+                self._reply(query, {"episode": ep.id, "ended": True})
+                self.finished.set()
+                return
+            n, t = int(d["step"]), float(d["t"])
+            if n == ep.last_step and ep.last_reply:  # a retransmitted request: same answer
+                self._reply_bytes(query, ep.last_reply)
+                return
+            if n != ep.last_step + 1:
+                raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
+            cell = ep.cell
+            cell.advance(t)
+            obs = cell.observe(t)
+            instructions = cell.take_instructions()
+            self._feedback(ep, t)
+            self.stats.steps += 1
+            reply = dumps(
+                {
+                    "episode": ep.id,
+                    "step": n,
+                    "observation": world_to_wire(obs),
+                    "instructions": instructions,
+                    **self._clock(cell, t),
+                    "records": self._flush(),
+                }
+            )
+            ep.last_step, ep.last_reply = n, reply
+            self._reply_bytes(query, reply)
+            self._publish_world(cell, obs, t)
+
+    def _clock(self, cell: Cell, t: float) -> dict[str, Any]:
+        return {
+            "next": finite_or_none(cell.next_event_time()),
+            "pending": cell.pending_instructions(),
+            "unavailable": sorted(cell.unavailable(t)),
+            "reports": self._seq,
+        }
+
+    def _episode(self, episode: Any) -> _Episode:
+        ep = self._ep
+        if ep is None or episode != ep.id:
+            raise BusError(f"no episode {str(episode)[:40]!r} on this node; reset first")
+        return ep
+
+    def _flush(self) -> list[Record]:
+        """The cell's new log records, with its action ids turned into the executor's."""
+        ep = self._ep
+        if ep is None:
+            return []
+        out = []
+        for rec in ep.records:
+            if "handle" in rec and rec["handle"] in ep.by_cell_id:
+                rec = {**rec, "handle": ep.by_cell_id[rec["handle"]]}
+            out.append(rec)
+        ep.records.clear()
+        return out
+
+    # -- robots ------------------------------------------------------------------------------------
+
+    def _on_command(self, sample: Any) -> None:
+        try:
+            cmd = Command.decode(sample.payload.to_bytes())
+        except BusError:
+            self.stats.malformed += 1
+            return
+        with self._lock:
+            self.stats.commands += 1
+            ep = self._ep
+            if ep is None or cmd.episode != ep.id or self._closed:
+                self.stats.stale += 1
+                return
+            h = ep.handles.get(cmd.handle)
+            if cmd.op == "start":
+                if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
+                    self.stats.stale += 1
+                    return
+                if h is not None:  # another robot's copy, or a retransmission: never twice
+                    self.stats.duplicates += 1
+                    self._publish(ep, ep.latest[cmd.handle])
+                    return
+                h = ep.cell.start(cmd.action, cmd.t)
+                ep.handles[cmd.handle] = h
+                ep.by_cell_id[h.id] = cmd.handle
+                self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
+                self._report(ep, cmd.handle, ep.cell.poll(h, cmd.t))
+                return
+            if h is None:  # its start never arrived: the executor has written it off
+                ep.cancelled.add(cmd.handle)
+                self.stats.stale += 1
+                return
+            prev = ep.latest[cmd.handle]
+            if prev.status.terminal:
+                self.stats.duplicates += 1
+                self._publish(ep, prev)
+                return
+            ep.cell.halt(h, cmd.t, cmd.reason)
+            self._report(ep, cmd.handle, ep.cell.poll(h, cmd.t))
+
+    def _feedback(self, ep: _Episode, t: float) -> None:
+        """After a step: report every action still open (progress, or how it ended)."""
+        for handle_id, h in ep.handles.items():
+            if ep.latest[handle_id].status.terminal:
+                continue
+            self._report(ep, handle_id, ep.cell.poll(h, t))
+
+    def _report(self, ep: _Episode, handle_id: int, status: ActionStatus) -> None:
+        self._seq += 1
+        rep = Report(ep.id, self._seq, handle_id, status)
+        ep.latest[handle_id] = rep
+        self._publish(ep, rep)
+
+    def _publish(self, ep: _Episode, rep: Report) -> None:
+        payload = rep.encode()
+        for r in ep.handles[rep.handle].action.robots:
+            self.stats.reports += 1
+            self._link.put(self.keys.status(r), payload)
+
+    def _on_state(self, query: Any) -> None:
+        with self._guard(query):
+            robot = robot_of(str(query.key_expr))
+            ep = self._ep
+            reports = []
+            if ep is not None:
+                reports = [
+                    rep.to_dict()
+                    for hid, rep in sorted(ep.latest.items())
+                    if robot in ep.handles[hid].action.robots
+                ]
+            self._reply(
+                query,
+                {
+                    "robot": robot,
+                    "episode": None if ep is None else ep.id,
+                    "reports": reports,
+                    "starts": {str(k): v for k, v in sorted(self.stats.starts.items())},
+                },
+                key=self.keys.state(robot),
+            )
+
+    def _publish_world(self, cell: Cell, obs: WorldState, t: float) -> None:
+        """What perception reports, for anyone listening (viz, perception, a ROS 2 bridge)."""
+        if not self.publish_poses:
+            return
+        k, put = self.keys, self.session.put
+        put(k.observation, dumps(world_to_wire(obs)))
+        for h, p in obs.humans:
+            put(k.human_pose(h), encode_pose(StampedPose("world", obs.t, p)))
+        for r, p in obs.hands:
+            put(k.tool_pose(r), encode_pose(StampedPose("world", t, p)))
+        if isinstance(cell, JointStateSource):
+            for r, js in cell.joint_states(t).items():
+                put(k.joint_states(r), encode_joint_state(js))
+
+    # -- replies -----------------------------------------------------------------------------------
+
+    @contextmanager
+    def _guard(self, query: Any) -> Iterator[None]:
+        """Run a query handler under the node's lock; a refusal goes back as an error reply."""
+        with self._lock:
+            if self._closed:
+                return
+            try:
+                yield
+            except HltlError as exc:
+                query.reply_err(dumps({"error": str(exc)}))
+
+    def _reply(self, query: Any, data: dict[str, Any], key: str | None = None) -> None:
+        self._reply_bytes(query, dumps(data), key)
+
+    def _reply_bytes(self, query: Any, payload: bytes, key: str | None = None) -> None:
+        if self._link.reply_lost():
+            return
+        query.reply(key or str(query.key_expr), payload)
+
+
+def _payload(query: Any) -> bytes:
+    p = query.payload
+    return b"" if p is None else bytes(p.to_bytes())
+
+
+def serve(
+    session: Any,
+    scene: Scene,
+    *,
+    cell: str = "default",
+    episodes: int | None = None,
+    stop: threading.Event | None = None,
+    factory: CellFactory = Simulator,
+    faults: FaultModel | None = None,
+    on_ready: Callable[[CellNode], None] | None = None,
+) -> NodeStats:
+    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set."""
+    stop = threading.Event() if stop is None else stop
+    with CellNode(session, scene, cell=cell, factory=factory, faults=faults) as node:
+        if on_ready is not None:
+            on_ready(node)
+        while not stop.is_set():
+            if node.finished.wait(0.1):
+                node.finished.clear()
+                if episodes is not None and node.stats.finished >= episodes:
+                    break
+        return node.stats

@@ -1,0 +1,75 @@
+"""Opening Zenoh sessions the way hltl needs them: no multicast scouting, explicit endpoints."""
+
+from __future__ import annotations
+
+import importlib
+import json
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from hltl.errors import BackendUnavailableError, BusError
+
+DEFAULT_ENDPOINT = "tcp/127.0.0.1:7447"
+_ENDPOINT = re.compile(r"(tcp|udp|quic|tls|ws|unixsock-stream)/\S+")
+
+
+def zenoh() -> Any:
+    """The ``zenoh`` module, or :class:`BackendUnavailableError` naming the extra."""
+    try:
+        return importlib.import_module("zenoh")
+    except ImportError:
+        raise BackendUnavailableError(
+            "the Zenoh bus needs eclipse-zenoh; install the 'bus' extra (pip install 'hltl[bus]')"
+        ) from None
+
+
+def check_endpoint(endpoint: str) -> str:
+    """``endpoint`` if it looks like a Zenoh locator (``tcp/HOST:PORT``, ``udp/…``, …)."""
+    if not _ENDPOINT.fullmatch(endpoint):
+        raise BusError(f"bad Zenoh endpoint {endpoint[:80]!r}; expected e.g. {DEFAULT_ENDPOINT!r}")
+    return endpoint
+
+
+def parse_bus(text: str) -> str:
+    """The endpoint of a ``--bus`` value: ``zenoh`` (loopback default) or ``zenoh:ENDPOINT``."""
+    kind, _, endpoint = text.partition(":")
+    if kind != "zenoh":
+        raise BusError(f"unknown bus {text[:80]!r}; expected 'zenoh' or 'zenoh:ENDPOINT'")
+    return check_endpoint(endpoint) if endpoint else DEFAULT_ENDPOINT
+
+
+@dataclass(frozen=True, slots=True)
+class BusConfig:
+    """How a node joins the bus: ``listen`` on endpoints and/or ``connect`` to them.
+
+    Multicast and gossip scouting are off: peers find each other only through the endpoints
+    given, so nothing leaves the machine unless an endpoint says so.
+    """
+
+    listen: tuple[str, ...] = ()
+    connect: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        for e in (*self.listen, *self.connect):
+            check_endpoint(e)
+
+    def to_zenoh(self) -> Any:
+        z = zenoh()
+        conf = z.Config()
+        conf.insert_json5("mode", json.dumps("peer"))
+        conf.insert_json5("scouting/multicast/enabled", "false")
+        conf.insert_json5("scouting/gossip/enabled", "false")
+        conf.insert_json5("listen/endpoints", json.dumps(list(self.listen)))
+        conf.insert_json5("connect/endpoints", json.dumps(list(self.connect)))
+        return conf
+
+
+def open_session(config: BusConfig) -> Any:
+    """An open Zenoh session (use it in a ``with`` block so it closes)."""
+    z = zenoh()
+    try:
+        return z.open(config.to_zenoh())
+    except Exception as exc:  # zenoh.ZError: the endpoint is taken or unreachable
+        where = ", ".join(config.listen or config.connect)
+        raise BusError(f"cannot open a Zenoh session on {where}: {exc}") from None

@@ -1,0 +1,73 @@
+"""What ``hltl run --bus`` adds: the options, and a simulator factory that drives a node."""
+
+from __future__ import annotations
+
+import argparse
+from typing import TYPE_CHECKING, Any
+
+from hltl.errors import HltlError
+
+if TYPE_CHECKING:
+    from hltl.bus.driver import BusCell
+    from hltl.sim.episode import Cell, CellFactory
+
+
+def add_bus_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "--bus",
+        metavar="zenoh[:ENDPOINT]",
+        help="drive a simulator node over the Zenoh bus (started with 'hltl node sim') instead "
+        "of the in-process simulator; ENDPOINT defaults to tcp/127.0.0.1:7447",
+    )
+    p.add_argument("--cell", default="default", help="with --bus: the cell's name on the bus")
+    p.add_argument(
+        "--bus-timeout",
+        type=float,
+        default=1.0,
+        help="with --bus: seconds to wait for an answer before retrying (3 retries)",
+    )
+
+
+class BusSimulator:
+    """A session to the node named by ``--bus``/``--cell`` and the ``simulator=`` factory that
+    drives it; :meth:`close` tells the node the episode ended and closes the session."""
+
+    def __init__(self, args: argparse.Namespace) -> None:
+        from hltl.bus.driver import BusTiming, bus_cell
+        from hltl.bus.session import BusConfig, open_session, parse_bus
+
+        if args.sim != "discrete":
+            raise HltlError(
+                "--sim chooses the in-process simulator; with --bus the node chooses it "
+                "('hltl node sim --sim mujoco')"
+            )
+        if getattr(args, "motion", False):
+            raise HltlError(
+                "--motion with --bus is not supported yet: the node's simulator would need the "
+                "same motion layer; run one or the other"
+            )
+        endpoint = parse_bus(args.bus)
+        try:
+            # a node still starting up gets five answer times to appear
+            timing = BusTiming(timeout=args.bus_timeout, connect=5 * args.bus_timeout)
+        except ValueError as exc:
+            raise HltlError(f"--bus-timeout: {exc}") from None
+        self.session: Any = open_session(BusConfig(connect=(endpoint,)))
+        self.opened: list[BusCell] = []
+        make = bus_cell(self.session, cell=args.cell, timing=timing, opened=self.opened)
+
+        def factory(*a: Any, **kw: Any) -> Cell:
+            try:
+                return make(*a, **kw)
+            except BaseException:  # no node, or it refused: nothing more will use the session
+                self.session.close()
+                raise
+
+        self.factory: CellFactory = factory
+
+    def close(self) -> None:
+        for c in self.opened:
+            c.end()
+            c.close()
+        if not self.session.is_closed():
+            self.session.close()

@@ -1,0 +1,110 @@
+"""``hltl node``: run a part of the cell as a node on the Zenoh bus (the simulator for now)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import threading
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "node",
+        help="run the simulator as a node on the Zenoh bus",
+        description="Serve a part of the cell on the Zenoh bus (docs/bus.md): its robots, its "
+        "camera and its simulated clock. An executor started with 'hltl run --bus zenoh' "
+        "drives it. Loopback by default, multicast scouting off.",
+    )
+    nsub = p.add_subparsers(dest="node", metavar="NODE", required=True)
+    s = nsub.add_parser(
+        "sim",
+        help="the simulator as robot and camera nodes",
+        description="Serve the simulated cell: robots take actions over the bus, report "
+        "progress and outcomes, and the executor steps simulated time.",
+    )
+    s.add_argument("--scene", required=True, type=Path, help="scene file (YAML or JSON)")
+    s.add_argument(
+        "--sim",
+        choices=("discrete", "mujoco"),
+        default="discrete",
+        help="which simulator serves the cell (mujoco: the 3D simulator, the sim3d extra)",
+    )
+    s.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
+    s.add_argument("--cell", default="default", help="the cell's name in key expressions")
+    s.add_argument(
+        "--listen",
+        default="tcp/127.0.0.1:7447",
+        help="Zenoh endpoint to listen on (default: loopback tcp/127.0.0.1:7447)",
+    )
+    s.add_argument(
+        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
+    )
+    s.add_argument(
+        "--episodes", type=int, help="exit after serving this many episodes (default: run on)"
+    )
+    s.set_defaults(func=run_sim)
+
+
+def run_sim(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    from hltl.bus.node import CellNode, serve
+    from hltl.bus.session import BusConfig, open_session
+    from hltl.world.scene import load_scene
+
+    if args.episodes is not None and args.episodes < 1:
+        raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
+    scene = load_scene(args.scene)
+    factory = _factory(args, scene)
+    console = Console(stderr=True, highlight=False)
+    config = BusConfig(listen=(args.listen,), connect=tuple(args.connect))
+
+    def ready(node: CellNode) -> None:
+        robots = ", ".join(scene.robot_ids)
+        console.print(
+            f"[bold]hltl node sim[/] ({args.sim}) serving cell [cyan]{args.cell}[/] "
+            f"(robots {robots}) on {args.listen}; Ctrl-C to stop"
+        )
+
+    stop = threading.Event()
+    with open_session(config) as session:
+        try:
+            stats = serve(
+                session,
+                scene,
+                cell=args.cell,
+                episodes=args.episodes,
+                stop=stop,
+                factory=factory,
+                on_ready=ready,
+            )
+        except KeyboardInterrupt:
+            console.print("stopped")
+            return 0
+    console.print(
+        f"served {stats.finished} episode(s): {stats.steps} steps, "
+        f"{len(stats.starts)} actions started, {stats.duplicates} duplicate commands ignored"
+    )
+    sys.stdout.flush()
+    return 0
+
+
+def _factory(args: argparse.Namespace, scene: Any) -> Any:
+    """What makes each episode's world: the discrete-event simulator, or the 3D one."""
+    if args.sim == "discrete":
+        from hltl.sim.simulator import Simulator
+
+        return Simulator
+    from hltl.cli.sim3d import simulator_options
+
+    extra, _ = simulator_options(scene, args.timing, None)  # compiles the model once, up front
+    return extra["simulator"]

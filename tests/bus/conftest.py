@@ -1,0 +1,21 @@
+"""Bus tests need the 'bus' extra; each test gets its own loopback endpoint."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+pytest.importorskip("zenoh")
+pytest.importorskip("rosbags")
+
+from tests.bus.helpers import Loopback, free_endpoint
+
+
+@pytest.fixture
+def loopback() -> Iterator[Loopback]:
+    lb = Loopback(free_endpoint())
+    try:
+        yield lb
+    finally:
+        lb.close()

@@ -1,0 +1,86 @@
+"""Helpers for bus tests: a node session and an executor session on a loopback port."""
+
+from __future__ import annotations
+
+import socket
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from hltl.bus.driver import BusCell, BusTiming, bus_cell
+from hltl.bus.faults import FaultModel
+from hltl.bus.node import CellNode
+from hltl.bus.session import BusConfig, open_session
+from hltl.sim.episode import Episode, run_episode
+from hltl.world.scene import Scene
+
+
+def free_endpoint() -> str:
+    """A loopback TCP endpoint nobody listens on (the OS picks the port)."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    return f"tcp/127.0.0.1:{port}"
+
+
+def without_wall_clock(x: Any) -> Any:
+    """A record or metrics dict without wall-clock measurements (``*_ms`` fields): the only
+    fields that legitimately differ between two runs of the same episode."""
+    if isinstance(x, Mapping):
+        return {k: without_wall_clock(v) for k, v in x.items() if not str(k).endswith("_ms")}
+    if isinstance(x, list | tuple):
+        return [without_wall_clock(v) for v in x]
+    return x
+
+
+@dataclass
+class BusRun:
+    episode: Episode
+    node: CellNode
+    cell: BusCell
+
+
+class Loopback:
+    """A node session and an executor session on one loopback endpoint."""
+
+    def __init__(self, endpoint: str) -> None:
+        self.endpoint = endpoint
+        self._node_session = open_session(BusConfig(listen=(endpoint,)))
+        self._exec_session = open_session(BusConfig(connect=(endpoint,)))
+
+    def run(
+        self,
+        scene: Scene,
+        *,
+        node_faults: FaultModel | None = None,
+        exec_faults: FaultModel | None = None,
+        timing: BusTiming | None = None,
+        on_record: Callable[[dict[str, Any]], None] | None = None,
+        cell: str = "default",
+        factory: Any = None,
+        **episode: Any,
+    ) -> BusRun:
+        opened: list[BusCell] = []
+        served = {} if factory is None else {"factory": factory}
+        with CellNode(self._node_session, scene, cell=cell, faults=node_faults, **served) as node:
+            ep = run_episode(
+                scene,
+                simulator=bus_cell(
+                    self._exec_session, cell=cell, timing=timing, faults=exec_faults, opened=opened
+                ),
+                on_record=on_record,
+                **episode,
+            )
+            (bc,) = opened
+            bc.end()
+            bc.close()
+        return BusRun(ep, node, bc)
+
+    def kill_node_session(self) -> None:
+        """The node's process dies: its session goes away without a word."""
+        self._node_session.close()
+
+    def close(self) -> None:
+        for s in (self._exec_session, self._node_session):
+            if not s.is_closed():
+                s.close()

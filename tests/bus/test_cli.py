@@ -1,0 +1,48 @@
+"""The bus on the command line: bad input is one 'error:' line, exit 1."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hltl.cli.main import main
+from tests.bus.helpers import free_endpoint
+
+ROOT = Path(__file__).resolve().parents[2]
+FIG1 = str(ROOT / "examples" / "scenes" / "fig1.yaml")
+
+
+def _run(argv: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str]:
+    code = main(argv)
+    return code, capsys.readouterr().err
+
+
+def test_run_over_the_bus_leaves_the_simulator_to_the_node(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle"]
+    code, err = _run([*argv, "--bus", "zenoh", "--sim", "mujoco"], capsys)
+    assert code == 1 and "with --bus the node chooses it" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("bus", "message"),
+    [("dds", "unknown bus 'dds'"), ("zenoh:localhost:7447", "bad Zenoh endpoint")],
+)
+def test_bad_bus_option(capsys: pytest.CaptureFixture[str], bus: str, message: str) -> None:
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--bus", bus]
+    code, err = _run(argv, capsys)
+    assert code == 1 and message in err and err.count("\n") == 1
+
+
+def test_run_without_a_node_says_so(capsys: pytest.CaptureFixture[str]) -> None:
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--json"]
+    argv += ["--bus", f"zenoh:{free_endpoint()}", "--bus-timeout", "0.05"]
+    code, err = _run(argv, capsys)
+    assert code == 1 and "error: no simulator node answers on hltl/default/sim/reset" in err
+
+
+def test_node_rejects_bad_episode_count(capsys: pytest.CaptureFixture[str]) -> None:
+    code, err = _run(["node", "sim", "--scene", FIG1, "--episodes", "0"], capsys)
+    assert code == 1 and "--episodes must be at least 1" in err

@@ -1,0 +1,181 @@
+"""Faults on the bus: lost, delayed, duplicated, reordered messages, a slow subscriber, a node
+killed mid-action. The executor ends as in-process or halts safely and gives up with a reason;
+no action is ever started twice."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from hltl.bus.driver import BusTiming
+from hltl.bus.faults import FaultModel
+from hltl.sim import scenarios
+from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.sim.events import load_events
+from tests.bus.helpers import BusRun, Loopback, free_endpoint, without_wall_clock
+
+ROOT = Path(__file__).resolve().parents[2]
+EVENTS = ROOT / "examples" / "events"
+HLTL = (sys.executable, "-m", "hltl.cli.main")
+# short waits so that recovering from a lost message costs little wall time
+FAST = BusTiming(timeout=0.1, retries=6)
+
+FAULTS = {
+    "loss": FaultModel(loss=0.25, seed=1),
+    "duplicates": FaultModel(duplicate=0.5, seed=2),
+    "out_of_order": FaultModel(reorder=0.5, seed=3),
+    "delay": FaultModel(delay=0.003, seed=4),
+    "lost_replies": FaultModel(reply_loss=0.25, seed=5),
+    "slow_subscriber": FaultModel(slow=0.004, seed=6),
+    "everything": FaultModel(
+        loss=0.1, duplicate=0.2, reorder=0.2, delay=0.001, reply_loss=0.1, slow=0.001, seed=7
+    ),
+}
+
+
+def _fig1() -> dict[str, Any]:
+    sc = scenarios.get("fig1")
+    return {
+        "instruction": sc.instruction,
+        "events": load_events(EVENTS / "fig1.yaml", sc.scene),
+        "seed": 3,
+    }
+
+
+def _starts_once(run: BusRun) -> None:
+    dispatched = [r["handle"] for r in run.episode.records if r["type"] == "action_start"]
+    assert len(dispatched) == len(set(dispatched))
+    assert all(n == 1 for n in run.node.stats.starts.values()), run.node.stats.starts
+    # nothing lost either: every handle the executor started reached the node
+    assert sorted(run.node.stats.starts) == sorted(dispatched)
+
+
+@pytest.mark.parametrize("fault", sorted(FAULTS))
+def test_faulty_links_change_nothing(loopback: Loopback, fault: str) -> None:
+    sc = scenarios.get("fig1")
+    local = run_episode(sc.scene, **_fig1())
+    faults = FAULTS[fault]
+    run = loopback.run(sc.scene, node_faults=faults, exec_faults=faults, timing=FAST, **_fig1())
+    assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
+    _starts_once(run)
+    stats, node = run.cell.stats, run.node.stats
+    if fault in ("loss", "everything"):
+        assert stats.retransmits + stats.recoveries > 0  # the fault really happened
+    if fault == "duplicates":
+        assert stats.duplicate_reports > 0 and node.duplicates > 0
+    if fault == "out_of_order":
+        assert stats.reordered_reports > 0
+    if fault == "lost_replies":
+        assert stats.retransmits > 0
+
+
+def test_node_killed_mid_action_halts_and_gives_up(loopback: Loopback) -> None:
+    sc = scenarios.get("fig1")
+
+    def kill_on_first_start(rec: dict[str, Any]) -> None:
+        if rec["type"] == "action_start" and rec["handle"] == 1:
+            loopback.kill_node_session()
+
+    t0 = time.monotonic()
+    run = loopback.run(
+        sc.scene,
+        timing=FAST,
+        on_record=kill_on_first_start,
+        config=EpisodeConfig(max_time=30.0),
+        **_fig1(),
+    )
+    assert time.monotonic() - t0 < 60  # bounded: never a hang
+    recs = run.episode.records
+    assert not run.episode.success
+    downs = [r for r in recs if r["type"] == "robot_down"]
+    assert {r["robot"] for r in downs} == set(sc.scene.robot_ids)
+    assert all(r["until"] is None and r["reason"] for r in downs)
+    failed = [r for r in recs if r["type"] == "action_failed"]
+    assert failed and all("down" in r["reason"] for r in failed)
+    # after the node died nothing more was dispatched
+    t_down = min(r["t"] for r in downs)
+    assert not [r for r in recs if r["type"] == "action_start" and r["t"] > t_down]
+    end = recs[-1]
+    assert end["type"] == "episode_end" and not end["success"]
+    assert "available robot (none)" in end["reason"]  # gave up because no robot is left
+    assert all(n == 1 for n in run.node.stats.starts.values())
+
+
+def test_node_process_killed_mid_action(tmp_path: Path) -> None:
+    """A real process, killed with SIGKILL while its robots are moving."""
+    from hltl.bus.driver import BusCell, bus_cell
+    from hltl.bus.session import BusConfig, open_session
+
+    endpoint = free_endpoint()
+    scene_file = ROOT / "examples" / "scenes" / "fig1.yaml"
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    node = subprocess.Popen(
+        [*HLTL, "node", "sim", "--scene", str(scene_file), "--listen", endpoint],
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    sc = scenarios.get("fig1")
+    opened: list[BusCell] = []
+
+    def kill_on_first_start(rec: dict[str, Any]) -> None:
+        if rec["type"] == "action_start" and node.poll() is None:
+            node.send_signal(signal.SIGKILL)
+            node.wait(timeout=10)
+
+    try:
+        with open_session(BusConfig(connect=(endpoint,))) as session:
+            ep = run_episode(
+                sc.scene,
+                on_record=kill_on_first_start,
+                config=EpisodeConfig(max_time=30.0),
+                simulator=bus_cell(
+                    session,
+                    timing=BusTiming(timeout=0.2, retries=2, connect=60.0),
+                    opened=opened,
+                ),
+                **_fig1(),
+            )
+            opened[0].close()
+    finally:
+        node.kill()
+        node.wait(timeout=10)
+    assert not ep.success
+    assert ep.metrics.reason
+    kinds = [r["type"] for r in ep.records]
+    assert "robot_down" in kinds and "action_failed" in kinds
+    starts = [r["handle"] for r in ep.records if r["type"] == "action_start"]
+    assert len(starts) == len(set(starts))
+
+
+def test_a_robot_that_never_acknowledges_is_down_not_a_hang(loopback: Loopback) -> None:
+    """Every command is lost: the first dispatch times out, the robots are declared down, and
+    the executor gives up with a reason instead of waiting forever."""
+    sc = scenarios.get("fig1")
+    t0 = time.monotonic()
+    run = loopback.run(
+        sc.scene,
+        exec_faults=FaultModel(loss=0.999999, seed=0),
+        timing=BusTiming(timeout=0.05, retries=1, patience=0.3),
+        config=EpisodeConfig(max_time=20.0),
+        **_fig1(),
+    )
+    assert time.monotonic() - t0 < 60
+    assert not run.episode.success
+    failed = [r for r in run.episode.records if r["type"] == "action_failed"]
+    assert failed and "is down: robot r1 did not acknowledge" in failed[0]["reason"]
+    assert run.node.stats.starts == {}  # nothing ever reached the node: nothing ran
+
+
+def test_fault_model_rejects_bad_values() -> None:
+    with pytest.raises(ValueError, match="loss"):
+        FaultModel(loss=1.0)
+    with pytest.raises(ValueError, match="delay"):
+        FaultModel(delay=-1.0)

@@ -1,0 +1,178 @@
+"""An episode over the bus gives the same log and metrics as the in-process one."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from hltl.bus.driver import BusTiming
+from hltl.sim import scenarios
+from hltl.sim.dynamic import make_trial
+from hltl.sim.episode import run_episode
+from hltl.sim.events import load_events
+from tests.bus.helpers import Loopback, free_endpoint, without_wall_clock
+
+ROOT = Path(__file__).resolve().parents[2]
+EVENTS = ROOT / "examples" / "events"
+HLTL = (sys.executable, "-m", "hltl.cli.main")
+
+
+def _assert_same(loopback: Loopback, scene, **episode) -> None:  # type: ignore[no-untyped-def]
+    local = run_episode(scene, **episode)
+    remote = loopback.run(scene, **episode)
+    assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
+        list(local.records)
+    )
+    assert without_wall_clock(remote.episode.metrics.to_dict()) == without_wall_clock(
+        local.metrics.to_dict()
+    )
+    # every action the executor started was started exactly once by the node
+    starts = [r["handle"] for r in local.records if r["type"] == "action_start"]
+    assert remote.node.stats.starts == dict.fromkeys(starts, 1)
+
+
+def test_fig1_episode(loopback: Loopback) -> None:
+    sc = scenarios.get("fig1")
+    _assert_same(
+        loopback,
+        sc.scene,
+        instruction=sc.instruction,
+        events=load_events(EVENTS / "fig1.yaml", sc.scene),
+        seed=3,
+    )
+
+
+@pytest.mark.parametrize("config", ["2-2", "2-4-line", "4-4-square"])
+def test_catalogue_cells_with_dynamic_events(loopback: Loopback, config: str) -> None:
+    trial = make_trial(config, 0)
+    _assert_same(
+        loopback, trial.scene, instruction=trial.instruction, events=trial.events, seed=trial.seed
+    )
+
+
+@pytest.mark.parametrize("events", ["res.yaml", "fail.yaml"])
+def test_robot_down_and_skill_failures(loopback: Loopback, events: str) -> None:
+    from hltl.world.scene import load_scene
+
+    scene = load_scene(ROOT / "examples" / "scenes" / "two_arms.yaml")
+    _assert_same(
+        loopback,
+        scene,
+        instruction="Give Person A the bottle and Person B the chips",
+        events=load_events(EVENTS / events, scene),
+        seed=1,
+    )
+
+
+def test_two_episodes_in_a_row_on_one_node(loopback: Loopback) -> None:
+    sc = scenarios.get("fig1")
+    first = loopback.run(sc.scene, instruction=sc.instruction, seed=0)
+    second = loopback.run(sc.scene, instruction=sc.instruction, seed=0)
+    assert without_wall_clock(list(first.episode.records)) == without_wall_clock(
+        list(second.episode.records)
+    )
+
+
+def test_node_refuses_another_scene(loopback: Loopback) -> None:
+    from hltl.errors import BusError
+    from hltl.world.scene import load_scene
+
+    node_scene = scenarios.get("fig1").scene
+    other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
+    from hltl.bus.driver import bus_cell
+    from hltl.bus.node import CellNode
+
+    with (
+        CellNode(loopback._node_session, node_scene),
+        pytest.raises(BusError, match="serves the scene"),
+    ):
+        run_episode(
+            other,
+            instruction="Give Person A the chips",
+            simulator=bus_cell(loopback._exec_session, timing=BusTiming(timeout=0.5, connect=1.0)),
+        )
+
+
+def test_no_node_is_an_error_not_a_hang(loopback: Loopback) -> None:
+    from hltl.bus.driver import bus_cell
+    from hltl.errors import BusError
+
+    sc = scenarios.get("fig1")
+    with pytest.raises(BusError, match="no simulator node answers"):
+        run_episode(
+            sc.scene,
+            instruction=sc.instruction,
+            simulator=bus_cell(
+                loopback._exec_session, timing=BusTiming(timeout=0.05, retries=1, connect=0.2)
+            ),
+        )
+
+
+def test_cli_node_in_a_subprocess_gives_the_in_process_metrics(tmp_path: Path) -> None:
+    endpoint = free_endpoint()
+    scene = ROOT / "examples" / "scenes" / "fig1.yaml"
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    node = subprocess.Popen(
+        [*HLTL, "node", "sim", "--scene", str(scene), "--listen", endpoint, "--episodes", "1"],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        common = ["run", "--scene", str(scene), "--events", str(EVENTS / "fig1.yaml")]
+        common += ["--instruction", "Give Person A the bottle and Person B the chips"]
+        common += ["--json"]
+        bus = subprocess.run(
+            [*HLTL, *common, "--bus", f"zenoh:{endpoint}", "--log", str(tmp_path / "bus.jsonl")],
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
+        _, node_err = node.communicate(timeout=30)
+    finally:
+        node.kill()
+    local = subprocess.run(
+        [*HLTL, *common, "--log", str(tmp_path / "local.jsonl")],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert bus.returncode == 0, bus.stderr
+    assert local.returncode == 0, local.stderr
+    import json
+
+    assert without_wall_clock(json.loads(bus.stdout)) == without_wall_clock(
+        json.loads(local.stdout)
+    )
+    from hltl.execution.log import read_log
+
+    assert without_wall_clock(read_log(tmp_path / "bus.jsonl")) == without_wall_clock(
+        read_log(tmp_path / "local.jsonl")
+    )
+    assert node.returncode == 0
+    assert "served 1 episode" in node_err
+
+
+def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
+    """The 3D simulator behind the node: the same log as the 3D simulator in-process."""
+    pytest.importorskip("mujoco")
+    import functools
+
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+
+    sc = scenarios.get("fig1")
+    make = functools.partial(MujocoSimulator, timing="motion", model=compile_scene(sc.scene))
+    local = run_episode(sc.scene, instruction=sc.instruction, seed=0, simulator=make)
+    remote = loopback.run(sc.scene, factory=make, instruction=sc.instruction, seed=0)
+    assert local.success
+    assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
+        list(local.records)
+    )
