@@ -373,3 +373,95 @@ def format_people(rows: Sequence[PeopleRow]) -> str:
             f"{statistics.median(r.ms):.0f} |"
         )
     return "\n".join(lines)
+
+
+@dataclass(frozen=True, slots=True)
+class LoopRow:
+    """One suite trial run twice in the 3D simulator: ground-truth vs camera perception."""
+
+    config: str
+    index: int
+    truth_success: bool
+    camera_success: bool
+    truth_time: float
+    camera_time: float
+    frames: int
+    lost_frames: int  # frames in which some scene person had no live track
+
+
+def loop_bench(
+    configs: Sequence[str], trials: int, progress: Callable[[str], None] | None = None
+) -> list[LoopRow]:
+    """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
+    truth and through the camera (segmentation backend and person detector)."""
+    from hltl.grounding.offline import OfflineGrounder
+    from hltl.sim.dynamic import make_trial
+    from hltl.sim.episode import run_episode
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+    from hltl.sim3d.perceived import CameraSimulator
+
+    rows = []
+    for config in configs:
+        for index in range(trials):
+            trial = make_trial(config, index)
+            model = compile_scene(trial.scene)
+            made: list[CameraSimulator] = []
+
+            def camera(*a: Any, _m: Any = model, _made: list[Any] = made, **k: Any) -> Any:
+                sim = CameraSimulator(*a, timing="cost", model=_m, **k)
+                _made.append(sim)
+                return sim
+
+            kw: dict[str, Any] = {
+                "instruction": trial.instruction,
+                "events": trial.events,
+                "seed": trial.seed,
+                "grounder": OfflineGrounder(),
+            }
+            truth = run_episode(
+                trial.scene,
+                simulator=lambda *a, _m=model, **k: MujocoSimulator(
+                    *a, timing="cost", model=_m, **k
+                ),
+                **kw,
+            )
+            cam = run_episode(trial.scene, simulator=camera, **kw)
+            frames = [r for r in cam.records if r["type"] == "perception"]
+            for sim in made:
+                sim.close()
+            rows.append(
+                LoopRow(
+                    config,
+                    index,
+                    truth.success,
+                    cam.success,
+                    truth.metrics.time_cost,
+                    cam.metrics.time_cost,
+                    len(frames),
+                    sum(1 for r in frames if r["lost"]),
+                )
+            )
+            if progress:
+                progress(f"loop: {config} #{index}")
+    return rows
+
+
+def format_loop(rows: Sequence[LoopRow]) -> str:
+    lines = [
+        "| trial | success truth / camera | time cost truth / camera (s) | frames | frames with "
+        "someone untracked |",
+        "|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append(
+            f"| {r.config} #{r.index} | {'yes' if r.truth_success else 'no'} / "
+            f"{'yes' if r.camera_success else 'no'} | {r.truth_time:.2f} / {r.camera_time:.2f} | "
+            f"{r.frames} | {r.lost_frames} |"
+        )
+    n = len(rows)
+    if n:
+        st = 100.0 * sum(r.truth_success for r in rows) / n
+        sc = 100.0 * sum(r.camera_success for r in rows) / n
+        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % | | | |")
+    return "\n".join(lines)

@@ -177,6 +177,12 @@ def register(sub: Any) -> None:
         "perception", help="trajectory prediction, object localisation, people tracking"
     )
     pe.add_argument("--walks", type=int, default=40, help="held-out walks per synthetic set")
+    pe.add_argument(
+        "--loop-trials",
+        type=int,
+        default=1,
+        help="suite trials per small configuration run with ground-truth and camera perception",
+    )
     pe.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
     pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")
     pe.set_defaults(func=run_perception)

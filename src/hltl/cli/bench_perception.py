@@ -15,9 +15,11 @@ def run(args: argparse.Namespace) -> int:
     from hltl.bench.perception import (
         _three,
         evaluate_predictors,
+        format_loop,
         format_objects,
         format_people,
         format_prediction,
+        loop_bench,
         object_bench,
         people_bench,
         suite_walks,
@@ -53,6 +55,13 @@ def run(args: argparse.Namespace) -> int:
         say("people: two people crossing")
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))
+        if args.loop_trials > 0 and not quick:
+            say("closed loop: ground truth vs camera")
+            loop = loop_bench(("1-1", "1-2", "2-2", "1-4-line"), args.loop_trials, say)
+            tables.append(
+                "### Closed loop in the 3D simulator: ground truth vs camera\n\n"
+                + format_loop(loop)
+            )
     text = "\n\n".join(tables)
     print(text)
     if args.write is not None:
