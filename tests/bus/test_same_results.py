@@ -176,3 +176,35 @@ def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
     assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
         list(local.records)
     )
+
+
+def test_observers_receive_ros2_poses(loopback: Loopback) -> None:
+    """Anyone on the bus (a viewer, a ROS 2 bridge) gets people and hands as PoseStamped."""
+    import threading
+
+    from hltl.bus.codec import decode_pose
+    from hltl.bus.keys import Keys
+
+    sc = scenarios.get("fig1")
+    got: dict[str, list] = {"humans": [], "hands": []}
+    lock = threading.Lock()
+
+    def on(kind: str):  # type: ignore[no-untyped-def]
+        def cb(sample) -> None:  # type: ignore[no-untyped-def]
+            with lock:
+                got[kind].append((str(sample.key_expr), decode_pose(sample.payload.to_bytes())))
+
+        return cb
+
+    keys = Keys("default")
+    subs = [
+        loopback._exec_session.declare_subscriber(f"{keys.root}/humans/*/pose", on("humans")),
+        loopback._exec_session.declare_subscriber(f"{keys.root}/robots/*/tool_pose", on("hands")),
+    ]
+    run = loopback.run(sc.scene, instruction=sc.instruction, seed=0)
+    for s in subs:
+        s.undeclare()
+    assert run.episode.success
+    assert {k for k, _ in got["humans"]} == {keys.human_pose(h) for h in sc.scene.human_ids}
+    assert {k for k, _ in got["hands"]} == {keys.tool_pose(r) for r in sc.scene.robot_ids}
+    assert all(p.frame_id == "world" for _, p in got["humans"] + got["hands"])

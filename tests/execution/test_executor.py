@@ -7,7 +7,9 @@ from pathlib import Path
 import pytest
 
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig
+from hltl.grounding.offline import OfflineGrounder
 from hltl.planner import PlanResult, PlanStatus, PlanStep
+from hltl.sim.instruct import ground_instruction
 from hltl.sim.invariants import check_invariants
 from hltl.skills.library import Action
 from hltl.spec.hierarchy import HSpec, spec_from_dict
@@ -208,12 +210,14 @@ def test_new_instruction_carries_monitor_state_over(cell: Scene) -> None:
     ex = Executor(cell, None, driver, config=ExecutorConfig(predict=False, intrusion=False))
     _episode_start(ex, cell)
     obs = initial_world(cell)
-    ex.instruct(0.0, "Give Person A the bottle")
+    ex.assign(0.0, ground_instruction(OfflineGrounder(), "Give Person A the bottle", cell, None))
     ex.update(0.0, obs)
     _run(ex, obs, 1.0)
     assert ex.status is ExecStatus.DONE
     done_before = ex.monitor.done(ex.q) if ex.monitor else frozenset()
-    ex.instruct(1.2, "Also give Person B the chips")
+    ex.assign(
+        1.2, ground_instruction(OfflineGrounder(), "Also give Person B the chips", cell, ex.spec)
+    )
     assert ex.status is ExecStatus.RUNNING
     assert ex.monitor is not None and done_before <= ex.monitor.done(ex.q)
     _run(ex, obs, 3.0)

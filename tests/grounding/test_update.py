@@ -7,10 +7,10 @@ import pytest
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.offline import OfflineGrounder
-from hltl.grounding.update import apply_update, carry_over, classify
+from hltl.grounding.update import apply_update, classify
 from hltl.spec.equivalence import equivalent
 from hltl.spec.hierarchy import HSpec, spec_from_dict, spec_to_dict
-from hltl.spec.monitor import DONE, HierarchyMonitor
+from hltl.spec.monitor import DONE, HierarchyMonitor, carry_over
 from hltl.spec.syntax import Atom
 from hltl.world.scene import Scene
 

@@ -15,8 +15,8 @@ import pytest
 
 from hltl.errors import GroundingError
 from hltl.grounding.offline import OfflineGrounder
-from hltl.grounding.update import apply_update, carry_over
-from hltl.spec.monitor import HierarchyMonitor
+from hltl.grounding.update import apply_update
+from hltl.spec.monitor import HierarchyMonitor, carry_over
 from hltl.spec.syntax import Atom
 from hltl.world.scene import Scene
 

@@ -14,6 +14,7 @@ import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any, Protocol, runtime_checkable
 
 from hltl.bus.codec import (
@@ -121,6 +122,7 @@ class CellNode:
             session.declare_subscriber(k.all_actions, self._on_command),
         ]
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
+        self._publishers: dict[str, Any] = {}
 
     # -- lifetime ----------------------------------------------------------------------------------
 
@@ -331,18 +333,30 @@ class CellNode:
             )
 
     def _publish_world(self, cell: Cell, obs: WorldState, t: float) -> None:
-        """What perception reports, for anyone listening (viz, perception, a ROS 2 bridge)."""
+        """What perception reports, for anyone listening (viz, perception, a ROS 2 bridge).
+
+        Each key has a declared publisher; a message is encoded only when some subscriber
+        matches it, so nobody listening costs nothing.
+        """
         if not self.publish_poses:
             return
-        k, put = self.keys, self.session.put
-        put(k.observation, dumps(world_to_wire(obs)))
+        k = self.keys
+        self._put(k.observation, lambda: dumps(world_to_wire(obs)))
         for h, p in obs.humans:
-            put(k.human_pose(h), encode_pose(StampedPose("world", obs.t, p)))
+            self._put(k.human_pose(h), partial(encode_pose, StampedPose("world", obs.t, p)))
         for r, p in obs.hands:
-            put(k.tool_pose(r), encode_pose(StampedPose("world", t, p)))
+            self._put(k.tool_pose(r), partial(encode_pose, StampedPose("world", t, p)))
         if isinstance(cell, JointStateSource):
             for r, js in cell.joint_states(t).items():
-                put(k.joint_states(r), encode_joint_state(js))
+                self._put(k.joint_states(r), partial(encode_joint_state, js))
+
+    def _put(self, key: str, payload: Callable[[], bytes]) -> None:
+        pub = self._publishers.get(key)
+        if pub is None:
+            pub = self._publishers[key] = self.session.declare_publisher(key)
+            self._entities.append(pub)
+        if pub.matching_status.matching:
+            pub.put(payload())
 
     # -- replies -----------------------------------------------------------------------------------
 

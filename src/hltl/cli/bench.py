@@ -187,6 +187,35 @@ def register(sub: Any) -> None:
     pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")
     pe.set_defaults(func=run_perception)
 
+    bu = bsub.add_parser("bus", help="Zenoh bus: round trips, a suite over the bus, faults")
+    bu.add_argument("--round-trips", type=int, default=1000, help="action round trips to time")
+    bu.add_argument("--episodes", type=int, default=20, help="episodes in the suite")
+    bu.add_argument("--endpoint", default="tcp/127.0.0.1:7448", help="loopback endpoint to use")
+    bu.add_argument("--write", type=Path, help="update this Markdown file's bus section")
+    bu.set_defaults(func=run_bus)
+
+
+def run_bus(args: argparse.Namespace) -> int:
+    from hltl.bus.bench import bench_bus, format_bus
+
+    if args.round_trips < 1 or args.episodes < 1:
+        raise HltlError("--round-trips and --episodes must be at least 1")
+    console = Console(stderr=True)
+    b = bench_bus(
+        args.endpoint,
+        round_trips=args.round_trips,
+        episodes=args.episodes,
+        on_progress=lambda m: console.print(f"  {m}"),
+    )
+    command = f"hltl bench bus --round-trips {args.round_trips} --episodes {args.episodes}"
+    if args.write is not None:
+        command += f" --write {shlex.quote(str(args.write))}"
+    body = format_bus(b, command, datetime.date.today().isoformat(), machine())
+    print(body)
+    if args.write is not None:
+        write_section(args.write, "bus", body)
+    return 0
+
 
 def run_sim3d(args: argparse.Namespace) -> int:
     import datetime

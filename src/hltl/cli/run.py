@@ -134,7 +134,7 @@ def run(args: argparse.Namespace) -> int:
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     grounder = make_grounder(args.grounder)
     if args.motion:
-        extra = _motion_options(scene, spec, config, grounder, predictor)
+        extra = _motion_options(scene, spec, config, predictor)
     bus = None
     if args.bus is not None:
         from hltl.cli.bus_options import BusSimulator
@@ -170,9 +170,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _motion_options(
-    scene: Any, spec: Any, config: Any, grounder: Any, predictor: Any
-) -> dict[str, Any]:
+def _motion_options(scene: Any, spec: Any, config: Any, predictor: Any) -> dict[str, Any]:
     """``run_episode`` keywords that put the motion layer under the simulator and the executor."""
     import functools
 
@@ -188,7 +186,6 @@ def _motion_options(
             spec,
             sim,
             log=log,
-            grounder=grounder,
             predictor=predictor,
             config=config.executor,
             cost=cost,

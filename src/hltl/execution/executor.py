@@ -1,29 +1,24 @@
 """The receding-horizon executor (paper §III-D): plan, dispatch the first step, monitor, replan.
 
 One :class:`Executor` runs one episode. Its loop is driven from outside: every call of
-:meth:`Executor.update` hands it the time, the latest observation and any new instructions, and
-it polls its robots, checks safety, plans and dispatches. It never advances time itself, so the
-same executor runs against the simulator (:mod:`hltl.sim.episode`) and against real drivers.
-
-Belief. The executor's world w_t merges perception with what its own actions did: people's
-positions come from every observation; where an object is comes from the executor's own
-bookkeeping (its completed actions), except that perception updates resting objects (people move
-them) and, after a failed action, decides alone where the object ended up. An observation sensed
-before the executor last touched an object (dispatched, completed or failed an action on it) is
-stale for that object, because perception lags. Hands come from the observation
-(proprioception).
+:meth:`Executor.update` hands it the time, the latest observation and any new (grounded)
+instructions, and it polls its robots, checks safety, plans and dispatches. It never advances
+time itself, so the same executor runs against the simulator (:mod:`hltl.sim.episode`) and
+against real drivers. Its parts: the belief w_t (:mod:`~hltl.execution.belief`), the
+predicted-plan cache (:mod:`~hltl.execution.predicted`) and the decision state machine
+(:mod:`~hltl.execution.decision`).
 """
 
 from __future__ import annotations
 
 import enum
 import time
-from collections import OrderedDict
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol
+from dataclasses import dataclass
+from typing import Protocol
 
-from hltl.errors import GroundingError
+from hltl.execution.belief import Belief
+from hltl.execution.decision import Phase, Trigger, Triggers
 from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
@@ -31,6 +26,7 @@ from hltl.execution.drivers import (
     MotionSource,
     RobotDriver,
 )
+from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
@@ -39,6 +35,7 @@ from hltl.execution.predict import (
     predict_workspace,
     predicted_world,
 )
+from hltl.execution.predicted import PlanKey, Predicted, PredictedPlans, plan_key
 from hltl.execution.safety import (
     Hazard,
     grasp_hazard,
@@ -52,15 +49,12 @@ from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible, apply
-from hltl.spec.hierarchy import HSpec, spec_to_dict
-from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.spec.syntax import Atom
 from hltl.world.geometry import Context
 from hltl.world.scene import Scene, Vec3
-from hltl.world.state import JointState, WorldState, initial_world, project
-
-if TYPE_CHECKING:
-    from hltl.grounding.base import Grounder
+from hltl.world.state import WorldState
 
 
 class Planner(Protocol):
@@ -170,34 +164,6 @@ class _Running:
     aimed_at: Vec3 | None = None  # a pick's object position at dispatch: its grasp target
 
 
-@dataclass(frozen=True, slots=True)
-class _Predicted:
-    result: PlanResult
-    at: float
-    context: Context
-
-
-# The discrete start of a plan: context, object places, monitor state, unavailable robots, spec.
-_Key = tuple[Context, JointState, MonitorState, frozenset[str], int]
-
-
-@dataclass(slots=True)
-class _Trigger:
-    reasons: list[str] = field(default_factory=list)
-
-    def add(self, reason: str) -> None:
-        if reason not in self.reasons:
-            self.reasons.append(reason)
-
-    def take(self) -> str:
-        text = "+".join(self.reasons)
-        self.reasons.clear()
-        return text
-
-    def __bool__(self) -> bool:
-        return bool(self.reasons)
-
-
 class Executor:
     """Receding-horizon execution of an H-LTLf spec with reactive safety and predictive takeover.
 
@@ -207,7 +173,6 @@ class Executor:
         driver: the robots.
         log: where events go (a fresh in-memory log by default).
         planner: the suffix planner (default: the exact A* planner).
-        grounder: grounds instructions (default: the offline grounder, loaded on first use).
         predictor: forecasts people (default: constant velocity).
         config: loop parameters.
         cost: the duration model used to time actions (default: the scene's).
@@ -222,7 +187,6 @@ class Executor:
         *,
         log: EventLog | None = None,
         planner: Planner | None = None,
-        grounder: Grounder | None = None,
         predictor: TrajectoryPredictor | None = None,
         config: ExecutorConfig | None = None,
         cost: CostModel | None = None,
@@ -234,7 +198,6 @@ class Executor:
         self.planner: Planner = (
             ExactPlanner(kinematics=kinematics, cost=cost) if planner is None else planner
         )
-        self.grounder = grounder
         self.config = ExecutorConfig() if config is None else config
         self.predictor: TrajectoryPredictor | None = (
             ConstantVelocityPredictor() if predictor is None else predictor
@@ -244,7 +207,7 @@ class Executor:
         self.spec: HSpec | None = None
         self.monitor: HierarchyMonitor | None = None
         self.q: MonitorState = ()
-        self.world: WorldState = initial_world(scene)
+        self.belief = Belief(scene)
         self.t = 0.0
         self.status = ExecStatus.RUNNING
         self.reason = ""
@@ -258,10 +221,7 @@ class Executor:
         self._blocked: tuple[Context, frozenset[str], int] | None = None
         self._running: list[_Running] = []
         self._steps = 0
-        self._trigger = _Trigger()
-        self._touched: dict[str, float] = {}
-        self._reobserve: dict[str, float] = {}
-        self._last_obs_t = -1.0
+        self._trigger = Triggers()
         self._failures: dict[str, int] = {}
         self._last_failure = ""
         self._busy_until = 0.0
@@ -269,13 +229,18 @@ class Executor:
         self._wait_since: float | None = None
         self._pending_tokens = 0
         self._plan_fresh = False
-        self._predicted: OrderedDict[_Key, _Predicted] = OrderedDict()
+        self._predicted = PredictedPlans(self.config.max_predicted)
         self.predictions: dict[str, WorkspacePrediction] = {}
         if spec is not None:
             self._set_spec(spec, None)
-            self._trigger.add("initial")
+            self._trigger.add(Trigger.INITIAL)
 
     # -- public ----------------------------------------------------------------------------------
+
+    @property
+    def world(self) -> WorldState:
+        """The believed world w_t."""
+        return self.belief.world
 
     @property
     def finished(self) -> bool:
@@ -290,77 +255,41 @@ class Executor:
     def running_actions(self) -> tuple[Action, ...]:
         return tuple(r.action for r in self._running if r.status is None)
 
-    def instruct(self, t: float, text: str) -> None:
-        """A (new) instruction: ground it, merging into the running spec (paper GOAL event).
+    def assign(self, t: float, update: SpecUpdate) -> None:
+        """A grounded instruction: the running spec with it merged in (paper GOAL event).
 
         The monitor state of the running spec carries over by formula name
-        (:func:`hltl.grounding.update.carry_over`); the suffix is replanned at the next decision.
-        A first instruction that cannot be grounded ends the episode; a later one is logged and
-        ignored, the running task going on.
+        (:func:`hltl.spec.monitor.carry_over`); the suffix is replanned at the next decision.
+        A first instruction that could not be grounded ends the episode; a later one is logged
+        and ignored, the running task going on.
         """
         self.t = max(self.t, t)
-        if self.grounder is None:
-            from hltl.grounding import make_grounder
-
-            self.grounder = make_grounder("offline")
-        t0 = time.perf_counter()
-        try:
+        if update.spec is None:
+            self.log.emit(self.t, "grounding", **update.record(frozenset()))
             if self.spec is None:
-                g = self.grounder.ground(text, self.scene)
-            else:
-                from hltl.grounding.update import apply_update
-
-                # what is done decides what an update may change (finished work stays finished)
-                g = apply_update(text, self.scene, self.spec, self.grounder, self.done_formulas())
-        except GroundingError as exc:
-            self.log.emit(
-                self.t,
-                "grounding",
-                text=text,
-                error=str(exc),
-                tokens=exc.tokens_spent,
-                prompt_tokens=exc.prompt_tokens,
-                completion_tokens=exc.completion_tokens,
-            )
-            if self.spec is None:
-                self._give_up(f"cannot ground the instruction: {exc}")
+                self._give_up(f"cannot ground the instruction: {update.error}")
             return
-        ms = (time.perf_counter() - t0) * 1000.0
         old = self.spec
-        self._set_spec(g.spec, old)
-        fields: dict[str, Any] = {
-            "text": text,
-            "tokens": g.tokens.total,
-            "prompt_tokens": g.tokens.prompt,
-            "completion_tokens": g.tokens.completion,
-            "latency_ms": round(ms, 3),
-            "spec": spec_to_dict(g.spec),
-            "done": sorted(self.done_formulas()),
-        }
-        if g.update is not None:
-            fields["update"] = {
-                "kind": g.update.kind,
-                "kept": list(g.update.kept),
-                "changed": list(g.update.changed),
-                "added": list(g.update.added),
-                "removed": list(g.update.removed),
-            }
-        self.log.emit(self.t, "grounding", **fields)
-        self._pending_tokens += g.tokens.total
-        self._trigger.add("initial" if old is None else "goal")
+        self._set_spec(update.spec, old)
+        self.log.emit(self.t, "grounding", **update.record(self.done_formulas()))
+        self._pending_tokens += update.tokens
+        self._trigger.add(Trigger.INITIAL if old is None else Trigger.GOAL)
         if self.status is ExecStatus.DONE:
             self.status = ExecStatus.RUNNING
             self.reason = ""
 
     def update(
-        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+        self,
+        t: float,
+        observation: WorldState | None = None,
+        updates: Iterable[SpecUpdate] = (),
     ) -> None:
         """One tick of the loop at time ``t``.
 
         Args:
             t: the time now (seconds since the start of the episode; never decreasing).
             observation: the latest perceived world (its ``t`` is when it was sensed).
-            instructions: instructions given since the last tick.
+            updates: instructions given since the last tick, grounded.
         """
         if t < self.t - 1e-9:
             raise ValueError(f"time went back from {self.t} to {t}")
@@ -369,8 +298,8 @@ class Executor:
             self._observe(observation)
         self._refresh_availability()
         self._poll()
-        for text in instructions:
-            self.instruct(t, text)
+        for upd in updates:
+            self.assign(t, upd)
         if self.status is ExecStatus.GAVE_UP:
             return
         if self._running:
@@ -394,30 +323,11 @@ class Executor:
     # -- belief ----------------------------------------------------------------------------------
 
     def _observe(self, obs: WorldState) -> None:
-        if obs.t < self._last_obs_t:
-            return  # out of order: an older observation adds nothing
-        self._last_obs_t = obs.t
-        w = self.world
-        for hid, pos in obs.humans:
-            w = w.with_human(hid, pos)
-        for oid, st in obs.objects:
-            if obs.t < self._touched.get(oid, -1.0) - 1e-12:
-                continue  # sensed before our last action on it: stale
-            if oid in self._reobserve:
-                w = w.with_object(oid, st)  # after a failure only perception knows where it is
-                del self._reobserve[oid]
-            elif w.object_status(oid).loc.kind in ("rest", "on") and st.loc.kind in ("rest", "on"):
-                w = w.with_object(oid, st)  # people move resting objects (O-MOVE)
-        for rid, pos in obs.hands:
-            w = w.with_hand(rid, pos)
-        self.world = w.with_time(self.t)
-        if self.predictor is not None:
+        if self.belief.observe(obs, self.t) and self.predictor is not None:
             self.predictor.observe(obs.t, obs.humans)
 
     def _refresh_availability(self) -> None:
-        down = frozenset(self.driver.unavailable(self.t))
-        if down != self.world.unavailable:
-            self.world = self.world.with_unavailable(down)
+        self.belief.set_unavailable(frozenset(self.driver.unavailable(self.t)))
 
     def done_formulas(self) -> frozenset[str]:
         """Names of the spec's formulas done so far."""
@@ -428,8 +338,6 @@ class Executor:
         if old is None or self.monitor is None:
             q = monitor.initial
         else:
-            from hltl.grounding.update import carry_over
-
             q = carry_over(old, self.q, spec)
         self.spec, self.monitor, self.q = spec, monitor, q
         self._spec_version += 1
@@ -460,8 +368,7 @@ class Executor:
                     end=round(st.t, 6),
                 )
             elif st.state is ActionState.FAILED:
-                self._touched[a.object] = st.t
-                self._reobserve[a.object] = st.t
+                self.belief.failed(a.object, st.t)
                 self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
                 self.log.emit(
@@ -472,9 +379,9 @@ class Executor:
                     reason=st.reason,
                     end=round(st.t, 6),
                 )
-                self._trigger.add("failure")
+                self._trigger.add(Trigger.FAILURE)
             else:
-                self._touched[a.object] = st.t
+                self.belief.touched(a.object, st.t)
                 self.log.emit(
                     self.t,
                     "action_halted",
@@ -483,11 +390,10 @@ class Executor:
                     reason=st.reason,
                     end=round(st.t, 6),
                 )
-                self._trigger.add("halt")
+                self._trigger.add(Trigger.HALT)
 
     def _apply(self, tr: Transition, t: float) -> None:
-        self.world = apply(self.world, tr)
-        self._touched[tr.obj] = t
+        self.belief.completed(tr, t)
 
     def _transition(self, action: Action, world: WorldState) -> Transition:
         tr = self.semantics.transition(action, world)
@@ -507,7 +413,7 @@ class Executor:
                 self.accepted_at = self.t
         self._steps += 1
         if not self._trigger:
-            self._trigger.add("progress")
+            self._trigger.add(Trigger.PROGRESS)
         stuck = sorted(o for o, n in self._failures.items() if n >= self.config.max_failures)
         if stuck:
             self._give_up(
@@ -549,7 +455,7 @@ class Executor:
             reason = endangered[run.action].reason
             self.driver.halt(run.handle, self.t, reason)
             run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
-            self._touched[run.action.object] = self.t
+            self.belief.touched(run.action.object, self.t)
             self.log.emit(
                 self.t,
                 "action_halted",
@@ -568,7 +474,7 @@ class Executor:
             ],
             done=sorted(self.done_formulas()),
         )
-        self._trigger.add(f"halt:{first.kind}")
+        self._trigger.add(Trigger(f"halt:{first.kind}"))
         if all(r.status is not None for r in self._running):
             self._end_step()
 
@@ -608,7 +514,7 @@ class Executor:
                 handle = self.driver.start(a, self.t, motion=motion)
             expected = self.cost.duration(a, tr, hands)
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
-            self._touched[a.object] = self.t
+            self.belief.touched(a.object, self.t)
             aimed = self.world.object_status(a.object).position if a.skill == "pick" else None
             self._running.append(_Running(a, handle, tr, expected, self.t, fast, aimed_at=aimed))
             self.log.emit(
@@ -627,73 +533,93 @@ class Executor:
 
     # -- deciding --------------------------------------------------------------------------------
 
+    def _phase(self) -> Phase:
+        if self._running or self.status is not ExecStatus.RUNNING or self.monitor is None:
+            return Phase.IDLE
+        if self.monitor.accepted(self.q):
+            return Phase.ACCEPTED
+        if self.t < self._busy_until - 1e-12:
+            return Phase.BUSY
+        if self.belief.reobserving:
+            return Phase.REOBSERVING
+        ctx = self.world.context(self.scene)
+        down = self.world.unavailable
+        if self._plan is None or self._trigger:
+            unchanged = self._blocked == (ctx, down, self._spec_version)
+            if self._plan is None and not self._trigger and unchanged:
+                return Phase.BLOCKED
+            return Phase.REPLAN
+        if ctx != self._plan_ctx or down != self._plan_unavailable:
+            return Phase.STALE_PLAN
+        return Phase.DISPATCH
+
     def _decide(self) -> None:
         self._plan_fresh = False
         for _ in range(16):  # empty steps and re-plans settle in a few rounds
-            if self._running or self.status is not ExecStatus.RUNNING or self.monitor is None:
+            phase = self._phase()
+            if phase in (Phase.IDLE, Phase.BUSY):
                 return
-            if self.monitor.accepted(self.q):
+            if phase is Phase.ACCEPTED:
                 self.status = ExecStatus.DONE
                 self.reason = "all goals met"
                 self._trigger.take()
                 return
-            if self.t < self._busy_until - 1e-12:
-                return
-            if self._reobserve:
+            if phase is Phase.REOBSERVING:
                 # only an observation taken in after the failure says where the object ended
                 # up (one from the same tick was read before the failure was known)
                 self._wait("re-observing after a failed action")
                 return
+            if phase is Phase.BLOCKED:
+                self._wait_or_give_up()
+                return
             ctx = self.world.context(self.scene)
-            down = self.world.unavailable
-            if self._plan is None or self._trigger:
+            if phase is Phase.STALE_PLAN:
+                self._trigger.add(Trigger.CONTEXT if ctx != self._plan_ctx else Trigger.ROBOTS)
+                continue
+            if phase is Phase.REPLAN:
                 if self._plan is None and not self._trigger:
-                    if self._blocked == (ctx, down, self._spec_version):
-                        self._wait_or_give_up()
-                        return
-                    self._trigger.add("world")
+                    self._trigger.add(Trigger.WORLD)
                 if not self._replan(self._trigger.take(), ctx):
                     return
                 if self.t < self._busy_until - 1e-12:
                     return
-            elif ctx != self._plan_ctx or down != self._plan_unavailable:
-                self._trigger.add("context" if ctx != self._plan_ctx else "robots")
+            if not self._dispatch_first():
+                return
+
+    def _dispatch_first(self) -> bool:
+        """Dispatch what can go of the plan's first step; True when the decision goes on."""
+        assert self._plan is not None
+        if not self._plan.steps:
+            self._give_up("the planner returned an empty plan for an unfinished task")
+            return False
+        step = self._plan.steps[0]
+        ok: list[Action] = []
+        risky: list[Hazard] = []
+        blocked: list[Hazard] = []
+        for a in step.actions:
+            h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
+            if h is not None:
+                blocked.append(h)
                 continue
-            assert self._plan is not None
-            if not self._plan.steps:
-                self._give_up("the planner returned an empty plan for an unfinished task")
-                return
-            step = self._plan.steps[0]
-            ok: list[Action] = []
-            risky: list[Hazard] = []
-            blocked: list[Hazard] = []
-            for a in step.actions:
-                h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
-                if h is not None:
-                    blocked.append(h)
-                    continue
-                h = self._dispatch_risk(a)
-                if h is not None:
-                    risky.append(h)
-                else:
-                    ok.append(a)
-            if blocked:
-                # the plan is stale (e.g. a predicted plan whose objects moved): plan afresh
-                if self._plan_fresh:
-                    self._give_up(
-                        f"the planner's first step is not executable: {blocked[0].reason}"
-                    )
-                    return
-                self._plan = None
-                self._trigger.add("precondition")
-                continue
-            if risky and not ok:
-                self._wait(f"intrusion risk to {risky[0].action}")
-                self._wait_or_give_up(check_only=True)
-                return
-            self._dispatch(ok, step)
-            if self._running:
-                return
+            h = self._dispatch_risk(a)
+            if h is not None:
+                risky.append(h)
+            else:
+                ok.append(a)
+        if blocked:
+            # the plan is stale (e.g. a predicted plan whose objects moved): plan afresh
+            if self._plan_fresh:
+                self._give_up(f"the planner's first step is not executable: {blocked[0].reason}")
+                return False
+            self._plan = None
+            self._trigger.add(Trigger.PRECONDITION)
+            return True
+        if risky and not ok:
+            self._wait(f"intrusion risk to {risky[0].action}")
+            self._wait_or_give_up(check_only=True)
+            return False
+        self._dispatch(ok, step)
+        return not self._running
 
     def _dispatch_risk(self, action: Action) -> Hazard | None:
         if not self._intrusion_on():
@@ -728,8 +654,8 @@ class Executor:
         if self._wait_since is not None and self.t - self._wait_since > self.config.max_wait:
             self._give_up(f"waited {self.config.max_wait:g} s without progress ({self._waiting})")
 
-    def _key(self, ctx: Context, world: WorldState, q: MonitorState) -> _Key:
-        return (ctx, project(world), q, world.unavailable, self._spec_version)
+    def _key(self, ctx: Context, world: WorldState, q: MonitorState) -> PlanKey:
+        return plan_key(ctx, world, q, self._spec_version)
 
     def _replan(self, trigger: str, ctx: Context) -> bool:
         """Plan the suffix from (Proj(w_t), q_t); a matching predicted plan takes over instead."""
@@ -863,9 +789,7 @@ class Executor:
             t0 = time.perf_counter()
             result = self.planner(self.scene, self.spec, world=wp, monitor=self.monitor, q0=q)
             ms = (time.perf_counter() - t0) * 1000.0
-            self._predicted[key] = _Predicted(result, self.t, ctx_pred)
-            while len(self._predicted) > self.config.max_predicted:
-                self._predicted.popitem(last=False)
+            self._predicted.put(key, Predicted(result, self.t, ctx_pred))
             self.log.emit(
                 self.t,
                 "predict",

@@ -56,7 +56,7 @@ class UpdateInfo:
 
     ``kept`` formulas have the same name and text as before, so their monitor state carries over
     unchanged; ``changed`` formulas kept their name but got a new text (their state must be
-    recomputed, :func:`hltl.grounding.update.carry_over` does it); ``added`` and ``removed`` are
+    recomputed, :func:`hltl.spec.monitor.carry_over` does it); ``added`` and ``removed`` are
     new and dropped names.
     """
 

@@ -1,7 +1,8 @@
 """Instructions given during execution (paper GOAL events): merge them into the running spec.
 
 Every update keeps the names and texts of the running formulas it does not touch, so the
-executor carries their monitor state over as it is (:func:`carry_over`). The phrasings:
+executor carries their monitor state over as it is (:func:`hltl.spec.monitor.carry_over`).
+The phrasings:
 
 * add (default; "also …", "and …", "additionally …", "in addition, …", "plus …"): the new task
   runs alongside: new root ``F <old root> & F <new>``.
@@ -45,10 +46,11 @@ from hltl.grounding.tree import (
     recognise_task,
 )
 
+# carry_over moved to hltl.spec.monitor (a monitor operation); the old import path still works
+from hltl.spec.monitor import carry_over as carry_over
+
 if TYPE_CHECKING:
-    from hltl.spec.automata import AutomatonCache
     from hltl.spec.hierarchy import HSpec
-    from hltl.spec.monitor import MonitorState
     from hltl.world.scene import Scene
 
 _THEN = re.compile(
@@ -585,56 +587,3 @@ def _ids_of(spec: HSpec, names: Sequence[str]) -> tuple[str, ...]:
             out.setdefault(t.obj)
             out.setdefault(t.target)
     return tuple(out)
-
-
-# -- monitor state ------------------------------------------------------------------------------
-
-
-def carry_over(
-    old_spec: HSpec,
-    old_state: MonitorState,
-    new_spec: HSpec,
-    cache: AutomatonCache | None = None,
-) -> MonitorState:
-    """The monitor state of ``new_spec`` that continues ``old_state`` of ``old_spec``.
-
-    A formula with the same name and text keeps its state; if one of its children became done
-    through the update (a group whose open child was cancelled), it steps once on those children.
-    A new or edited formula starts from its initial state and replays its done children one step
-    each, in the order they appear in its text (the order of the grounding conventions: a
-    sequence lists its children in the order they must complete). Done formulas stay done.
-    """
-    from hltl.spec.monitor import DONE, HierarchyMonitor
-    from hltl.spec.syntax import Atom
-
-    old_m = HierarchyMonitor(old_spec, cache)
-    new_m = HierarchyMonitor(new_spec, cache)
-    old_texts = dict(old_spec.formulas)
-    done_old = old_m.done(old_state)
-    done_new: set[str] = set()
-    states: dict[str, int] = {}
-    for name in reversed(new_m.nodes):  # breadth-first reversed: children before parents
-        dfa = new_m.dfas[name]
-        kids = new_spec.children[name]
-        same = old_texts.get(name) == new_spec.formula(name)
-        if name in done_old:
-            states[name] = DONE
-            done_new.add(name)
-            continue
-        if same:
-            s = old_m.state_of(old_state, name)
-            assert s is not None
-            newly = [k for k in kids if k in done_new and k not in done_old]
-            steps: list[list[str]] = [newly] if newly else []
-        else:
-            s = dfa.initial
-            steps = [[k] for k in kids if k in done_new]
-        for symbol in steps:
-            s = dfa.step(s, [Atom(k) for k in symbol])
-            if dfa.is_accepting(s):
-                s = DONE
-                break
-        states[name] = s
-        if s == DONE:
-            done_new.add(name)
-    return tuple(states[n] for n in new_m.nodes)

@@ -14,8 +14,12 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
+from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, Record
+from hltl.grounding import make_grounder
+from hltl.grounding.base import Grounder
 from hltl.sim.events import EventSchedule
+from hltl.sim.instruct import ground_all
 from hltl.sim.metrics import Metrics, compute_metrics
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -24,7 +28,6 @@ from hltl.world.state import WorldState
 
 if TYPE_CHECKING:
     from hltl.execution.predict import TrajectoryPredictor
-    from hltl.grounding.base import Grounder
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,10 +114,16 @@ class Agent(Protocol):
         """When the task was last seen done."""
         ...
 
-    def instruct(self, t: float, text: str) -> None: ...
+    @property
+    def spec(self) -> HSpec | None:
+        """The running spec (instructions are grounded against it)."""
+        ...
 
     def update(
-        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+        self,
+        t: float,
+        observation: WorldState | None = None,
+        updates: Iterable[SpecUpdate] = (),
     ) -> None: ...
 
     def give_up(self, reason: str) -> None: ...
@@ -196,6 +205,15 @@ def run_episode(
         raise ValueError("give exactly one of spec= and instruction=")
     cfg = EpisodeConfig() if config is None else config
     schedule = EventSchedule() if events is None else events
+    grounders: list[Grounder] = [] if grounder is None else [grounder]
+
+    def ground(texts: Sequence[str], agent: Agent) -> list[SpecUpdate]:
+        if not texts:
+            return []
+        if not grounders:  # the default grounder is loaded only when someone speaks
+            grounders.append(make_grounder("offline"))
+        return ground_all(grounders[0], texts, scene, agent.spec, agent.done_formulas())
+
     with EventLog(log_path, on_record) as log:
         sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
         executor: Agent = (
@@ -205,7 +223,6 @@ def run_episode(
                 sim,
                 log=log,
                 planner=planner,
-                grounder=grounder,
                 predictor=predictor,
                 config=cfg.executor,
             )
@@ -223,9 +240,8 @@ def run_episode(
             seed=seed,
             config=cfg.to_dict() if start_config is None else dict(start_config),
         )
-        if instruction is not None:
-            executor.instruct(0.0, instruction)
-        executor.update(0.0, sim.observe(0.0))
+        said = [] if instruction is None else [instruction]
+        executor.update(0.0, sim.observe(0.0), ground(said, executor))
         t = 0.0
         while True:
             for hook in hooks:
@@ -243,7 +259,7 @@ def run_episode(
             else:
                 t_next = min(t + cfg.tick, nxt, cfg.max_time)
             sim.advance(t_next)
-            executor.update(t_next, sim.observe(t_next), sim.take_instructions())
+            executor.update(t_next, sim.observe(t_next), ground(sim.take_instructions(), executor))
             t = t_next
         success = executor.status is ExecStatus.DONE
         time_cost = executor.accepted_at if success and executor.accepted_at is not None else t

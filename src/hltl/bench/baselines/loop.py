@@ -25,19 +25,18 @@ from dataclasses import dataclass, field
 
 from hltl.bench.baselines.model import Violation, apply_step, check_step
 from hltl.bench.baselines.policy import PlanContext, Policy, Script
-from hltl.errors import GroundingError
 from hltl.execution.drivers import ActionState, Handle
 from hltl.execution.executor import ExecStatus
+from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
 from hltl.grounding.offline import OfflineGrounder
-from hltl.grounding.update import carry_over
 from hltl.sim.episode import Cell, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
-from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.world.geometry import Context
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -90,7 +89,6 @@ class BaselineAgent:
         self.scene = scene
         self.cfg = cfg
         self.log = log
-        self.referee = OfflineGrounder()
         self.semantics = ActionSemantics.of(scene)
         self.sim = sim
         self._obs: WorldState | None = None
@@ -116,22 +114,22 @@ class BaselineAgent:
 
     # -- task (the referee) ---------------------------------------------------------------------
 
-    def instruct(self, t: float, text: str) -> None:
+    def assign(self, t: float, update: SpecUpdate) -> None:
+        """The referee's spec for what was said (the loop grounds it with the offline grounder)."""
         self.t = max(self.t, t)
-        try:
-            g = self.referee.ground(text, self.scene, running=self.spec)
-        except GroundingError as exc:
-            self.log.emit(self.t, "grounding", text=text, error=str(exc), tokens=0)
+        text, spec = update.text, update.spec
+        if spec is None:
+            self.log.emit(self.t, "grounding", text=text, error=update.error, tokens=0)
             if self.spec is None:
-                self.give_up(f"cannot ground the instruction: {exc}")
+                self.give_up(f"cannot ground the instruction: {update.error}")
             return
-        monitor = HierarchyMonitor(g.spec)
-        q = monitor.initial if self.spec is None else carry_over(self.spec, self.q, g.spec)
-        self.spec, self.monitor, self.q = g.spec, monitor, q
+        monitor = HierarchyMonitor(spec)
+        q = monitor.initial if self.spec is None else carry_over(self.spec, self.q, spec)
+        self.spec, self.monitor, self.q = spec, monitor, q
         self.instructions.append(text)
         # the referee's grounding is free; the policy's queries are logged with its replans
         self.log.emit(
-            self.t, "grounding", text=text, tokens=0, spec=spec_to_dict(g.spec), referee=True
+            self.t, "grounding", text=text, tokens=0, spec=spec_to_dict(spec), referee=True
         )
         self.trigger.append("initial" if len(self.instructions) == 1 else "goal")
         if self.status is ExecStatus.DONE:
@@ -149,13 +147,16 @@ class BaselineAgent:
     # -- one tick -------------------------------------------------------------------------------
 
     def update(
-        self, t: float, observation: WorldState | None = None, instructions: Iterable[str] = ()
+        self,
+        t: float,
+        observation: WorldState | None = None,
+        updates: Iterable[SpecUpdate] = (),
     ) -> None:
         self.t = t
         self._obs = observation
         self.poll()
-        for text in instructions:
-            self.instruct(t, text)
+        for upd in updates:
+            self.assign(t, upd)
         if self.status is ExecStatus.GAVE_UP:
             return
         if self.running:
@@ -435,6 +436,7 @@ def run_baseline_episode(
         events=events,
         seed=seed,
         config=EpisodeConfig(tick=cfg.tick, max_time=cfg.max_time),
+        grounder=OfflineGrounder(),  # the referee
         agent=make,
         start_config={
             "method": policy.name,

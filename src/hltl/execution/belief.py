@@ -1,0 +1,70 @@
+"""The executor's belief w_t: perception merged with what its own actions did.
+
+People's positions come from every observation; where an object is comes from the executor's
+own bookkeeping (its completed actions), except that perception updates resting objects (people
+move them) and, after a failed action, decides alone where the object ended up. An observation
+sensed before the executor last touched an object (dispatched, completed or failed an action on
+it) is stale for that object, because perception lags. Hands come from the observation
+(proprioception).
+"""
+
+from __future__ import annotations
+
+from hltl.skills.library import Transition
+from hltl.skills.semantics import apply
+from hltl.world.scene import Scene
+from hltl.world.state import WorldState, initial_world
+
+
+class Belief:
+    """The world as the executor believes it, and which objects it is unsure about."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.world: WorldState = initial_world(scene)
+        self._touched: dict[str, float] = {}
+        self._reobserve: dict[str, float] = {}
+        self._last_obs_t = -1.0
+
+    def observe(self, obs: WorldState, t: float) -> bool:
+        """Merge an observation at time ``t``; False when it is older than one already seen."""
+        if obs.t < self._last_obs_t:
+            return False  # out of order: an older observation adds nothing
+        self._last_obs_t = obs.t
+        w = self.world
+        for hid, pos in obs.humans:
+            w = w.with_human(hid, pos)
+        for oid, st in obs.objects:
+            if obs.t < self._touched.get(oid, -1.0) - 1e-12:
+                continue  # sensed before our last action on it: stale
+            if oid in self._reobserve:
+                w = w.with_object(oid, st)  # after a failure only perception knows where it is
+                del self._reobserve[oid]
+            elif w.object_status(oid).loc.kind in ("rest", "on") and st.loc.kind in ("rest", "on"):
+                w = w.with_object(oid, st)  # people move resting objects (O-MOVE)
+        for rid, pos in obs.hands:
+            w = w.with_hand(rid, pos)
+        self.world = w.with_time(t)
+        return True
+
+    def set_unavailable(self, down: frozenset[str]) -> None:
+        if down != self.world.unavailable:
+            self.world = self.world.with_unavailable(down)
+
+    def touched(self, obj: str, t: float) -> None:
+        """An action on ``obj`` started or stopped at ``t``: older observations of it are stale."""
+        self._touched[obj] = t
+
+    def completed(self, transition: Transition, t: float) -> None:
+        """An action ended as planned at ``t``: its effect is now part of the world."""
+        self.world = apply(self.world, transition)
+        self._touched[transition.obj] = t
+
+    def failed(self, obj: str, t: float) -> None:
+        """An action on ``obj`` failed at ``t``: only a later observation says where it is."""
+        self._touched[obj] = t
+        self._reobserve[obj] = t
+
+    @property
+    def reobserving(self) -> bool:
+        """Whether some object's place waits for an observation taken after a failure."""
+        return bool(self._reobserve)

@@ -1,0 +1,15 @@
+"""``hltl bench bus`` on a tiny run: the figures it reports are consistent."""
+
+from __future__ import annotations
+
+from hltl.bus.bench import bench_bus, format_bus
+from tests.bus.helpers import free_endpoint
+
+
+def test_bench_bus_small() -> None:
+    b = bench_bus(free_endpoint(), round_trips=20, episodes=1)
+    assert b.same_logs == 1 and b.fault_same_logs == 1
+    assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
+    assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
+    text = format_bus(b, "hltl bench bus", "2026-01-01", "test")
+    assert "## Bus" in text and "1/1" in text

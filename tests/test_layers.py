@@ -1,0 +1,82 @@
+"""The layer order of CONTRACTS.md: a package imports only packages at its level or below."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "hltl"
+
+# errors → spec, world → skills → motion → perception → grounding → planner → execution → sim
+# → sim3d → bus → bench → viz → cli. Packages that do not exist (yet) are simply not checked.
+LAYERS: dict[str, float] = {
+    "errors": 0,
+    "fileio": 0,
+    "spec": 1,
+    "world": 1,
+    "skills": 2,
+    "motion": 3,
+    "perception": 4,
+    "grounding": 4.5,  # produces spec objects; below execution (which does not import it)
+    "planner": 5,
+    "execution": 6,
+    "sim": 7,
+    "sim3d": 8,
+    "bus": 9,
+    "bench": 10,
+    "viz": 11,
+    "cli": 12,
+}
+
+
+# Known exceptions, each with why it is there and where it should go.
+KNOWN = {
+    # the 3D benchmark renders its demo; it belongs in bench/ (bench may import viz' helpers)
+    ("sim3d/bench.py", "hltl.viz.demo3d"),
+}
+
+
+def _package(module: str) -> str | None:
+    parts = module.split(".")
+    if parts[0] != "hltl" or len(parts) < 2:
+        return None
+    return parts[1]
+
+
+def _imports(path: Path) -> list[tuple[int, str]]:
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out: list[tuple[int, str]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out += [(node.lineno, a.name) for a in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            out.append((node.lineno, node.module))
+    return out
+
+
+def test_every_package_is_placed_in_the_layer_order() -> None:
+    packages = {p.name for p in SRC.iterdir() if p.is_dir() and (p / "__init__.py").exists()}
+    packages |= {p.stem for p in SRC.glob("*.py") if p.stem != "__init__"}
+    assert packages - set(LAYERS) == set(), "add new packages to LAYERS and CONTRACTS.md"
+
+
+def test_no_import_goes_up_the_layer_order() -> None:
+    wrong: list[str] = []
+    for path in sorted(SRC.rglob("*.py")):
+        rel = path.relative_to(SRC)
+        own = rel.parts[0].removesuffix(".py")
+        if own == "__init__":
+            continue
+        for line, module in _imports(path):
+            other = _package(module)
+            if other is None or other == own or other not in LAYERS:
+                continue
+            if LAYERS[other] > LAYERS[own] and (rel.as_posix(), module) not in KNOWN:
+                wrong.append(f"{rel}:{line}: {own} imports {module}")
+    assert wrong == [], "\n".join(wrong)
+
+
+def test_the_executor_and_the_planner_do_not_ground() -> None:
+    for path in sorted((SRC / "execution").rglob("*.py")) + sorted((SRC / "planner").rglob("*.py")):
+        for line, module in _imports(path):
+            assert not module.startswith("hltl.grounding"), f"{path.name}:{line}: {module}"
