@@ -8,6 +8,7 @@ import json
 import shlex
 import sys
 import time
+from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
@@ -35,6 +36,7 @@ from hltl.bench.grounding import (
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
+from hltl.bench.soak import run_soak, soak_jobs, summary
 from hltl.bench.suite import (
     METHODS,
     AblationOptions,
@@ -47,6 +49,7 @@ from hltl.bench.suite import (
     run_suite_command,
 )
 from hltl.errors import HltlError
+from hltl.fileio import write_output
 
 
 def register(sub: Any) -> None:
@@ -121,6 +124,15 @@ def register(sub: Any) -> None:
     su.add_argument("--figures", type=Path, help="write suite_*.png here (needs matplotlib)")
     su.add_argument("--json", type=Path, help="write every trial's result here")
     su.set_defaults(func=run_suite_cmd)
+
+    so = bsub.add_parser(
+        "soak", help="fault soak: random mixes of the five event types over the catalogue"
+    )
+    so.add_argument("--episodes", type=int, default=130, help="episodes (cycling the catalogue)")
+    so.add_argument("--jobs", type=int, default=2, help="worker processes")
+    so.add_argument("--seed", type=int, default=0, help="soak seed (episode seeds derive from it)")
+    so.add_argument("--json", type=Path, help="write every episode's result here")
+    so.set_defaults(func=run_soak_cmd)
 
     ab = bsub.add_parser("ablation", help="Table III: fluency metrics of executor variants")
     ab.add_argument("--trials", type=int, default=20, help="trials per configuration")
@@ -542,6 +554,26 @@ def run_suite_cmd(args: argparse.Namespace) -> int:
         write_section(opts.write, "suite", body)
         print(f"wrote {opts.write}", file=sys.stderr)
     return 0
+
+
+def run_soak_cmd(args: argparse.Namespace) -> int:
+    """Run the soak; exit 1 when any episode was unsafe, lost work, crashed or hung."""
+    if args.episodes < 1 or args.jobs < 1:
+        raise HltlError("--episodes and --jobs must be at least 1")
+    jobs = soak_jobs(args.episodes, args.seed)
+    with _progress("hltl bench soak") as progress:
+        task = progress.add_task("", total=len(jobs))
+        t0 = time.perf_counter()
+        results = run_soak(
+            jobs, args.jobs, lambda r: progress.update(task, advance=1, description=r.scenario)
+        )
+        wall = time.perf_counter() - t0
+    s = summary(results)
+    print(json.dumps({**s, "wall_s": round(wall, 1), "jobs": args.jobs}, indent=2))
+    if args.json is not None:
+        write_output(args.json, "the soak results", json.dumps([asdict(r) for r in results]))
+    harm = s["violations"] + s["lost"] + s["duplicated"] + s["crash"] + s["hang"]
+    return 1 if harm else 0
 
 
 def run_ablation_cmd(args: argparse.Namespace) -> int:
