@@ -134,14 +134,30 @@ def test_table_ii_layout() -> None:
 
 def test_table_iii_has_our_rows_beside_the_papers() -> None:
     rs = [
-        _r("hltl", "2-2", i, variant=v, h_idle=50.0 + i, r_idle=30.0, c_act=60.0, f_del=-1.0)
+        _r(
+            "hltl",
+            "2-2",
+            i,
+            variant=v,
+            h_idle=50.0 + i,
+            r_idle=30.0,
+            c_act=60.0,
+            f_del=-1.0,
+            f_del_union=-0.5,
+            c_act_hr=20.0,
+        )
         for v in ("full", "no-pp", "no-pmp")
         for i in range(3)
     ]
     stats = fluency(rs)
     assert stats["full"]["h_idle"] == (51.0, 1.0, 3)
     table = format_table_iii(stats, {"full": {"time cost s": 2.5}})
-    assert "| hltl full | 51.0 ± 1.0 | 30.0 ± 0.0 | 60.0 ± 0.0 | -1.0 ± 0.0 | 2.5 |" in table
+    # the paper's four columns, then F-DEL as a union, human-robot C-ACT, and H-IDLE with
+    # walking counted (absent from these results: "–")
+    assert (
+        "| hltl full | 51.0 ± 1.0 | 30.0 ± 0.0 | 60.0 ± 0.0 | -1.0 ± 0.0 | -0.5 ± 0.0 "
+        "| 20.0 ± 0.0 | – | 2.5 |" in table
+    )
     assert (
         "| *paper full* | *67.1 ± 17.2* | *38.8 ± 10.1* | *64.9 ± 11.9* | *-4.5 ± 8.6* |" in table
     )

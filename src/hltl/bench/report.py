@@ -199,6 +199,12 @@ def format_table_ii(
     return "\n".join(lines)
 
 
+# the paper's four columns; then the added forms (docs/metrics.md): F-DEL as a time union,
+# human-robot concurrency, H-IDLE with walking counted as active
+_FLUENCY = ("h_idle", "r_idle", "c_act", "f_del")
+_FLUENCY_ADDED = ("f_del_union", "c_act_hr", "h_idle_walk_active")
+
+
 def fluency(results: Iterable[TrialResult]) -> dict[str, dict[str, tuple[float, float, int]]]:
     """Per variant, (mean, std, n) of H-IDLE, R-IDLE, C-ACT and F-DEL over all trials that
     have the metric (an episode without a recipient has no H-IDLE)."""
@@ -206,7 +212,7 @@ def fluency(results: Iterable[TrialResult]) -> dict[str, dict[str, tuple[float, 
     for r in results:
         if r.status != "ok":
             continue
-        d = by.setdefault(r.variant, {"h_idle": [], "r_idle": [], "c_act": [], "f_del": []})
+        d = by.setdefault(r.variant, {k: [] for k in (*_FLUENCY, *_FLUENCY_ADDED)})
         for key in d:
             v = getattr(r, key)
             if v is not None:
@@ -231,21 +237,30 @@ def format_table_iii(
     """Table III's layout (mean ± std, %), the paper's rows beside ours; ``extra`` adds columns
     per variant (e.g. time cost, takeovers)."""
     extra_keys = sorted({k for v in (extra or {}).values() for k in v})
-    head = ["Variant", "H-IDLE ↓ (%)", "R-IDLE ↓ (%)", "C-ACT ↑ (%)", "F-DEL ↓ (%)", *extra_keys]
+    head = [
+        "Variant",
+        "H-IDLE ↓ (%)",
+        "R-IDLE ↓ (%)",
+        "C-ACT ≥2 ↑ (%)",
+        "F-DEL Σ ↓ (%)",
+        "F-DEL ∪ ↓ (%)",
+        "C-ACT H–R ↑ (%)",
+        "H-IDLE walk=active ↓ (%)",
+        *extra_keys,
+    ]
     lines = ["| " + " | ".join(head) + " |", "|---|" + "---:|" * (len(head) - 1)]
     for variant in ("full", "no-pp", "no-pmp"):
         if variant in stats:
             s = stats[variant]
             row = [f"hltl {VARIANT_LABELS[variant]}"]
-            row += [
-                f"{s[k][0]:.1f} ± {s[k][1]:.1f}" for k in ("h_idle", "r_idle", "c_act", "f_del")
-            ]
+            cells = [s.get(k) for k in (*_FLUENCY, *_FLUENCY_ADDED)]
+            row += ["–" if not c or c[2] == 0 else f"{c[0]:.1f} ± {c[1]:.1f}" for c in cells]
             row += [f"{(extra or {}).get(variant, {}).get(k, math.nan):.3g}" for k in extra_keys]
             lines.append("| " + " | ".join(row) + " |")
     for variant, vals in PAPER_TABLE_III.items():
         row = [f"*paper {VARIANT_LABELS[variant].split(' (')[0]}*"]
         row += [f"*{m:.1f} ± {sd:.1f}*" for m, sd in vals]
-        row += [""] * len(extra_keys)
+        row += [""] * (len(_FLUENCY_ADDED) + len(extra_keys))
         lines.append("| " + " | ".join(row) + " |")
     return "\n".join(lines)
 

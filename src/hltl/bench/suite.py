@@ -76,6 +76,9 @@ class TrialResult:
     r_idle: float | None = None
     c_act: float | None = None
     f_del: float | None = None
+    f_del_union: float | None = None
+    c_act_hr: float | None = None
+    h_idle_walk_active: float | None = None
     wall_s: float = 0.0
     variant: str = "full"
     details: tuple[str, ...] = field(default=())
@@ -202,6 +205,9 @@ def _scored(
         r_idle=m.r_idle,
         c_act=m.c_act,
         f_del=m.f_del,
+        f_del_union=m.f_del_union,
+        c_act_hr=m.c_act_hr,
+        h_idle_walk_active=m.h_idle_walk_active,
         variant=variant,
         details=tuple([*notes[:5], *problems[:5]]),
         **counts,

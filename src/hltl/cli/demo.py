@@ -147,9 +147,12 @@ def _summary(console: Any, result: DemoResult) -> None:
         ("tokens", str(m.tokens), "grounding (0 offline)"),
         ("deliveries", str(m.deliveries), "objects handed to people"),
         ("H-IDLE", pct(m.h_idle), "people idle, not being handed anything"),
+        ("H-IDLE walk=active", pct(m.h_idle_walk_active), "the same, walking counted as active"),
         ("R-IDLE", pct(m.r_idle), "robots idle, no action running"),
         ("C-ACT", pct(m.c_act), "time with two or more agents active"),
-        ("F-DEL", pct(m.f_del), "delays between hand-offs of an object"),
+        ("C-ACT H–R", pct(m.c_act_hr), "time a person and a robot are active at once"),
+        ("F-DEL Σ", pct(m.f_del), "hand-off delays summed over objects"),
+        ("F-DEL ∪", pct(m.f_del_union), "time some object waits (a union over objects)"),
     ]
     for row in rows:
         table.add_row(*row)

@@ -38,6 +38,11 @@ class Metrics:
     r_idle: float | None
     c_act: float | None
     f_del: float | None
+    # added fields (docs/metrics.md): the paper's F-DEL as a time union (``f_del`` is the sum
+    # over hand-offs), Hoffman's human-robot concurrency, and H-IDLE with walking counted
+    f_del_union: float | None = None
+    c_act_hr: float | None = None
+    h_idle_walk_active: float | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -98,6 +103,8 @@ class Activity:
     humans: dict[str, list[Interval]]
     # completed actions, in start order: (start, end, robots, object)
     completed: list[tuple[float, float, tuple[str, ...], str]]
+    # each person's walks: from ``human_move`` to its ``eta``, cut short by the next walk
+    walks: dict[str, list[Interval]]
 
 
 def activity(records: Sequence[Mapping[str, Any]], end_time: float) -> Activity:
@@ -126,7 +133,24 @@ def activity(records: Sequence[Mapping[str, Any]], end_time: float) -> Activity:
     for start in open_.values():  # still running when the log ends
         _add(robots, humans, start, end_time)
     completed.sort(key=lambda c: c[0])
-    return Activity(robots, humans, completed)
+    return Activity(robots, humans, completed, walks(records, end_time))
+
+
+def walks(records: Sequence[Mapping[str, Any]], end_time: float) -> dict[str, list[Interval]]:
+    """When each person walks: a ``human_move`` at t with arrival ``eta`` walks over
+    [t, eta]; a later ``human_move`` of the same person replaces the rest of the walk, and a
+    walk still under way when the log ends counts until ``end_time``."""
+    out: dict[str, list[Interval]] = {}
+    for rec in records:
+        if rec["type"] != "human_move":
+            continue
+        who, t = str(rec["human"]), float(rec["t"])
+        ivs = out.setdefault(who, [])
+        if ivs and ivs[-1][1] > t:  # the new walk replaces the rest of the previous one
+            ivs[-1] = (ivs[-1][0], t)
+        eta = rec.get("eta")
+        ivs.append((t, min(float(eta), end_time) if eta is not None else end_time))
+    return out
 
 
 def _add(
@@ -170,6 +194,40 @@ def functional_delay(completed: Sequence[tuple[float, float, tuple[str, ...], st
     return total
 
 
+def functional_delay_union(
+    completed: Sequence[tuple[float, float, tuple[str, ...], str]],
+) -> float:
+    """Signed functional delay as a time union: the time during which at least one object
+    waits for its next agent (the union over all hand-offs, as in :func:`functional_delay`,
+    of [previous end, next start]) minus the time during which at least one hand-off is
+    anticipated (the union of [next start, previous end] where the next agent began first).
+    Parallel objects waiting at once count once; it equals the sum when no two waits and no
+    two anticipations overlap in time."""
+    last: dict[str, tuple[float, float, tuple[str, ...], str]] = {}
+    waits: list[Interval] = []
+    early: list[Interval] = []
+    for act in completed:
+        prev = last.get(act[3])
+        if prev is not None and set(prev[2]) != set(act[2]):
+            if act[0] >= prev[1]:
+                waits.append((prev[1], act[0]))
+            else:
+                early.append((act[0], prev[1]))
+        last[act[3]] = act
+    return _length(waits) - _length(early)
+
+
+def overlap_time(a: Sequence[Interval], b: Sequence[Interval]) -> float:
+    """Length of (union of ``a``) ∩ (union of ``b``)."""
+    return concurrent_time({"a": a, "b": b}, at_least=2)
+
+
+def _idle(people: Mapping[str, Sequence[Interval]], horizon: float) -> float | None:
+    if not people:
+        return None
+    return 100.0 * statistics.fmean(1.0 - _length(ivs) / horizon for ivs in people.values())
+
+
 def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
     """All metrics of one episode from its log records.
 
@@ -192,6 +250,7 @@ def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
     horizon = time_cost
     act = activity(records, float(end["t"]))
     h_idle = r_idle = c_act = f_del = None
+    f_del_union = c_act_hr = h_idle_walk = None
     if horizon > 0:
         robot_iv = {r: [_clip(i, horizon) for i in ivs] for r, ivs in act.robots.items()}
         people = participants(records)
@@ -200,16 +259,29 @@ def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
             r_idle = 100.0 * statistics.fmean(
                 1.0 - _length(ivs) / horizon for ivs in robot_iv.values()
             )
-        if human_iv:
-            h_idle = 100.0 * statistics.fmean(
-                1.0 - _length(ivs) / horizon for ivs in human_iv.values()
-            )
+        h_idle = _idle(human_iv, horizon)
+        h_idle_walk = _idle(
+            {
+                h: [*ivs, *(_clip(i, horizon) for i in act.walks.get(h, []))]
+                for h, ivs in human_iv.items()
+            },
+            horizon,
+        )
         c_act = (
             100.0
             * concurrent_time({**robot_iv, **{f"human:{h}": v for h, v in human_iv.items()}})
             / horizon
         )
+        c_act_hr = (
+            100.0
+            * overlap_time(
+                [i for ivs in robot_iv.values() for i in ivs],
+                [i for ivs in human_iv.values() for i in ivs],
+            )
+            / horizon
+        )
         f_del = 100.0 * functional_delay(act.completed) / horizon
+        f_del_union = 100.0 * functional_delay_union(act.completed) / horizon
     reason = str(end.get("reason", ""))
     if violations and end.get("success"):
         # the goals were met, but unsafely: say so instead of "failed: all goals met"
@@ -237,4 +309,7 @@ def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
         r_idle=r_idle,
         c_act=c_act,
         f_del=f_del,
+        f_del_union=f_del_union,
+        c_act_hr=c_act_hr,
+        h_idle_walk_active=h_idle_walk,
     )
