@@ -128,8 +128,10 @@ def format_sim3d(b: Sim3dBench, command: str, when: str) -> str:
         )
     lines += [
         "",
-        f"Load average during the renders: {b.load:.1f} on 2 cores (other jobs), which is why "
-        "wall times exceed CPU times. Frames for perception are drawn without shadows (one lit "
+        f"Load average during the renders: {b.load:.1f} on 2 cores. CPU time is summed over the "
+        "renderer's threads (Mesa llvmpipe uses both cores), so on an idle machine the wall time "
+        "is below it and under load above it. Frames for perception are drawn without shadows "
+        "(one lit "
         "colour pass, one segmentation pass that also yields the depth); the demo video with "
         "shadows. The real-time factor includes the executor and planner calls of the "
         "episode (the same loop as the discrete simulator); the arms are played back "
