@@ -10,7 +10,7 @@ import shutil
 import subprocess
 import tempfile
 import threading
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from collections.abc import Set as AbstractSet
 from concurrent.futures import Future
 from dataclasses import dataclass, field
@@ -249,17 +249,22 @@ def _placeholder(i: int) -> Atom:
     return Atom(f"x{i}")
 
 
-def rename_atoms(f: Formula, mapping: Mapping[Atom, Atom]) -> Formula:
-    """The formula with every atom ``a`` replaced by ``mapping.get(a, a)``."""
+def substitute_atoms(f: Formula, replace: Callable[[Atom], Formula]) -> Formula:
+    """The formula with every atom ``a`` replaced by the formula ``replace(a)``."""
     if isinstance(f, Atom):
-        return mapping.get(f, f)
+        return replace(f)
     if isinstance(f, TrueF | FalseF):
         return f
     if isinstance(f, Not | Next | WeakNext | Eventually | Always):
-        return type(f)(rename_atoms(f.operand, mapping))
+        return type(f)(substitute_atoms(f.operand, replace))
     if isinstance(f, And | Or | Implies | Equiv | Until | Release):
-        return type(f)(rename_atoms(f.left, mapping), rename_atoms(f.right, mapping))
+        return type(f)(substitute_atoms(f.left, replace), substitute_atoms(f.right, replace))
     raise TypeError(f"not a formula: {f!r}")
+
+
+def rename_atoms(f: Formula, mapping: Mapping[Atom, Atom]) -> Formula:
+    """The formula with every atom ``a`` replaced by ``mapping.get(a, a)``."""
+    return substitute_atoms(f, lambda a: mapping.get(a, a))
 
 
 def canonical_form(f: Formula) -> tuple[Formula, tuple[Atom, ...]]:

@@ -20,24 +20,9 @@ import time
 from dataclasses import asdict, dataclass
 from typing import Any
 
+from hltl.spec.automata import substitute_atoms
 from hltl.spec.hierarchy import HSpec, spec_from_formulas
-from hltl.spec.syntax import (
-    Always,
-    And,
-    Atom,
-    Equiv,
-    Eventually,
-    FalseF,
-    Formula,
-    Implies,
-    Next,
-    Not,
-    Or,
-    Release,
-    TrueF,
-    Until,
-    WeakNext,
-)
+from hltl.spec.syntax import Atom, Eventually, Formula
 from hltl.world.scene import Scene
 
 
@@ -57,18 +42,12 @@ def flatten(spec: HSpec) -> tuple[Formula, bool]:
     exact = True
 
     def sub(f: Formula) -> Formula:
-        nonlocal exact
-        if isinstance(f, Atom):
-            if not f.is_predicate and f.name in spec.children:
-                return expand(f.name)
-            return f
-        if isinstance(f, TrueF | FalseF):
-            return f
-        if isinstance(f, Not | Next | WeakNext | Eventually | Always):
-            return type(f)(sub(f.operand))
-        if isinstance(f, And | Or | Implies | Equiv | Until | Release):
-            return type(f)(sub(f.left), sub(f.right))
-        raise TypeError(f"unknown formula node {f!r}")  # pragma: no cover
+        return substitute_atoms(f, child)
+
+    def child(a: Atom) -> Formula:
+        if not a.is_predicate and a.name in spec.children:
+            return expand(a.name)
+        return a
 
     def expand(name: str) -> Formula:
         nonlocal exact
