@@ -84,7 +84,8 @@ def instructions(draw: st.DrawFn) -> tuple[str, Node]:
         else:
             forms = ["give", "hand", "gets", "wants"]
             if prev in ("give", "hand", "gap", "gap_to") and clauses[-1].target in PEOPLE:
-                forms += ["gap", "gap_to"]
+                forms.append("gap")
+                forms.append("gap_to")
         op = draw(st.sampled_from(["and", "or"]))
         either = size == 2 and draw(st.booleans())
         clauses.append(Clause(target, objs, op, draw(st.sampled_from(forms)), either))
@@ -110,6 +111,8 @@ def instructions(draw: st.DrawFn) -> tuple[str, Node]:
 def test_or_inside_a_clause_stays_inside_it(case: tuple[str, Node]) -> None:
     text, want = case
     out = judge(Entry("cell", text, want), SCENE, offline_tree)
+    if out.verdict == "refused" and "could go with the person before it" in out.detail:
+        return  # "give Alice the cup, the bottle, the chips to Bob": whose is the bottle?
     assert out.verdict == "exact", f"{text!r} (want {show_tree(want)}): {out.detail}"
 
 
@@ -124,8 +127,6 @@ def _tree(text: str, scene: Scene = SCENE) -> str:
         ("Alice gets the cup or the apple, Bob gets the crisps.", "(cup>A | apple>A) & chips>B"),
         ("Alice gets the cup, Bob gets the crisps or the apple.", "cup>A & (chips>B | apple>B)"),
         ("Give Bob the crisps and Carol the apple or the cup", "chips>B & (apple>C | cup>C)"),
-        ("give Alice the cup and the apple and the crisps to Bob", "cup>A & apple>A & chips>B"),
-        ("give Alice the cup or the apple and the crisps to Bob", "(cup>A | apple>A) & chips>B"),
         ("give the cup or the apple to Alice and the crisps to Bob", "(cup>A | apple>A) & chips>B"),
         (
             "put the cup on the shelf or the table and give Bob the crisps",
@@ -137,6 +138,13 @@ def _tree(text: str, scene: Scene = SCENE) -> str:
             "cup>A | chips>B | apple>C",
         ),
         ("hand the cup, the apple and the crisps to Bob", "cup>B & apple>B & chips>B"),
+        # the commas tell whose the apple is
+        ("Give Alice the cup, and the apple and the crisps to Bob", "cup>A & apple>B & chips>B"),
+        ("Give Alice the cup and the apple, and the crisps to Bob", "cup>A & apple>A & chips>B"),
+        (
+            "Give Alice the cup, and the apple, the red mug and the crisps to Bob.",
+            "cup>A & apple>B & mug_red>B & chips>B",
+        ),
         ("Give Alice the cup or Bob the crisps and the apple", "cup>A | (chips>B & apple>B)"),
         # commas only take the word of the list around them: three alternatives
         ("Give Alice the cup, the apple, or give Bob the crisps", "cup>A | apple>A | chips>B"),
@@ -150,6 +158,9 @@ def test_clause_structure_examples(text: str, want: str) -> None:
     "text",
     [
         "Give Alice the cup or Bob the crisps and Carol the apple",  # one level, both words
+        # the apple could be Alice's or go to Bob with the crisps
+        "give Alice the cup and the apple and the crisps to Bob",
+        "Give Alice the cup, the apple, the red mug and the crisps to Bob.",
         "put the cup on the shelf and give Bob the crisps or put the apple on the table",
     ],
 )
