@@ -627,7 +627,9 @@ def suite_section(
         "success rate with the Wilson interval, time cost (successful trials, seconds from the "
         "start to the last goal, including the injected task) and tokens per query with "
         "seeded percentile-bootstrap intervals. Italic columns are the paper's Table II, for "
-        "reference: its tasks have no injected GOAL, so its times are not directly comparable.",
+        "reference. Whether its times include injected tasks is ambiguous (§V-A says its "
+        "simulator injects new tasks during execution; Table II and its text name only the "
+        "base tasks), so its times are not directly comparable with ours, which do.",
         "",
         "### Table II analogue",
         "",
