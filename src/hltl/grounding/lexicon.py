@@ -606,6 +606,18 @@ class Lexicon:
             self._add(Ref("robot", r.id), r.id, plurals=False)
         self.max_len = max((len(p) for p in self._phrases), default=1)
 
+    @staticmethod
+    def of(scene: Scene) -> Lexicon:
+        """The lexicon of ``scene``, shared by scenes with the same names (it is read-only, and
+        building it is most of a grounding's time)."""
+        key = (
+            tuple((o.id, o.category, tuple(o.aliases)) for o in scene.objects),
+            tuple((h.id, h.name, tuple(h.aliases)) for h in scene.humans),
+            tuple((s.id, tuple(s.aliases)) for s in scene.surfaces),
+            tuple(r.id for r in scene.robots),
+        )
+        return _lexicon(key, scene)
+
     def _add(self, ref: Ref, name: str, *, plurals: bool, strong: bool = True) -> None:
         if len(name) == 1 and name.isalpha():
             self._exact.setdefault(name, []).append(ref)
@@ -712,6 +724,19 @@ class Lexicon:
             if h.id == ref_id:
                 return h.name
         return ref_id
+
+
+_LEXICONS: dict[object, Lexicon] = {}
+
+
+def _lexicon(key: object, scene: Scene) -> Lexicon:
+    """The cached lexicon for ``key`` (a scene's names), built from ``scene`` the first time."""
+    found = _LEXICONS.get(key)
+    if found is None:
+        if len(_LEXICONS) >= 64:
+            _LEXICONS.pop(next(iter(_LEXICONS)))  # the oldest
+        found = _LEXICONS[key] = Lexicon(scene)
+    return found
 
 
 @functools.cache

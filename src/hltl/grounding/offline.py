@@ -78,7 +78,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
     """
-    lexicon = lexicon or Lexicon(scene)
+    lexicon = lexicon or Lexicon.of(scene)
     items = lex(text, lexicon)
     shown = text.strip() if len(text.strip()) <= 60 else text.strip()[:57] + "..."
     if not [it for it in items if it.kind != "punct"]:
