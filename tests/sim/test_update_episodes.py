@@ -29,9 +29,9 @@ UPDATES = {
 
 def _delivered(records: list[dict[str, Any]]) -> set[tuple[str, str]]:
     return {
-        (r["action"]["object"], r["action"]["human"])
+        (r.action["object"], r.action["human"])
         for r in records
-        if r["type"] == "action_done" and r["action"]["skill"] == "handover_r2h"
+        if r.type == "action_done" and r.action["skill"] == "handover_r2h"
     }
 
 
@@ -41,12 +41,12 @@ def test_an_update_is_refused_or_carried_out(two_arms_path: Path, t: float, text
     events = EventSchedule((Instruction(t, text),))
     ep = run_episode(two_arms, instruction="Give Person A the bottle", events=events)
     records = list(ep.records)
-    grounding = [r for r in records if r["type"] == "grounding" and r["text"] == text]
+    grounding = [r for r in records if r.type == "grounding" and r.text == text]
     assert len(grounding) == 1
-    refused = "error" in grounding[0]
+    refused = grounding[0].error is not None
     delivered = _delivered(records)
     if refused:
-        assert grounding[0]["error"]
+        assert grounding[0].error
     elif UPDATES[text] is not None and ep.success:
         assert UPDATES[text] in delivered, (t, text, delivered)
     elif UPDATES[text] is not None:

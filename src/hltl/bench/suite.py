@@ -28,7 +28,7 @@ from hltl.bench.baselines.policy import Policy
 from hltl.bench.baselines.smart_llm import SmartLLMPolicy, llm_unavailable
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
-from hltl.execution.log import Record
+from hltl.execution.log import EpisodeEnd, Grounding, LogRecord
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
 from hltl.planner import plan
@@ -176,7 +176,7 @@ def run_trial(job: TrialJob) -> TrialResult:
 def _scored(
     method: str,
     trial: Trial,
-    records: Sequence[Record],
+    records: Sequence[LogRecord],
     m: Metrics,
     *,
     variant: str = "full",
@@ -185,8 +185,8 @@ def _scored(
 ) -> TrialResult:
     """A closed-loop episode's result: its metrics, judged with the log's invariants."""
     problems = check_invariants(records)
-    end = [r for r in records if r["type"] == "episode_end"][-1]
-    goals_met = bool(end.get("success"))
+    end = [r for r in records if isinstance(r, EpisodeEnd)][-1]
+    goals_met = bool(end.success)
     return TrialResult(
         method=method,
         config=trial.config,
@@ -229,8 +229,8 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         grounder=OfflineGrounder(),
     )
     m = ep.metrics
-    groundings = [r for r in ep.records if r["type"] == "grounding" and "error" not in r]
-    est = sum(estimate_grounding_tokens(str(r["text"]), trial.scene) for r in groundings)
+    groundings = [r for r in ep.records if isinstance(r, Grounding) and r.error is None]
+    est = sum(estimate_grounding_tokens(str(r.text), trial.scene) for r in groundings)
     return _scored(
         "hltl",
         trial,
