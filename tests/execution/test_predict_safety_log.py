@@ -11,11 +11,11 @@ import pytest
 from hltl.errors import PlanFormatError
 from hltl.execution.log import (
     ActionHalted,
+    EpisodeStart,
+    EventLog,
     HumanMove,
     LogRecord,
     PolicyReplan,
-    EpisodeStart,
-    EventLog,
     Wait,
     read_log,
     world_from_dict,

@@ -44,8 +44,9 @@ class SpecUpdate:
     def tokens(self) -> int:
         return self.prompt_tokens + self.completion_tokens
 
-    def record(self, t: float, done: frozenset[str]) -> Grounding:
-        """The ``grounding`` log record (``done``: formulas done after it)."""
+    def record(self, t: float, done: frozenset[str], charged_s: float | None = None) -> Grounding:
+        """The ``grounding`` log record (``done``: formulas done after it; ``charged_s``: the
+        simulated seconds grounding was charged, under a latency model)."""
         if self.spec is None:  # tokens are paid for whether or not the answer is used
             return Grounding(
                 t=t,
@@ -54,6 +55,7 @@ class SpecUpdate:
                 tokens=self.tokens,
                 prompt_tokens=self.prompt_tokens,
                 completion_tokens=self.completion_tokens,
+                charged_s=charged_s,
             )
         c = self.change
         return Grounding(
@@ -74,4 +76,5 @@ class SpecUpdate:
                 "added": list(c.added),
                 "removed": list(c.removed),
             },
+            charged_s=charged_s,
         )

@@ -132,6 +132,7 @@ class Grounding(LogRecord):
             "done",
             "update",
             "referee",
+            "charged_s",
         }
     )
     text: str
@@ -144,6 +145,7 @@ class Grounding(LogRecord):
     done: list[str] | None = None
     update: JsonObject | None = None
     referee: bool | None = None  # the baselines' free grounding of what the referee checks
+    charged_s: float | None = None  # simulated seconds grounding was charged (latency models)
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -151,7 +153,7 @@ class Replan(LogRecord):
     """A planner call (``source`` planner) or a predicted plan taking over (``predicted``)."""
 
     TYPE: ClassVar[str] = "replan"
-    OPTIONAL: ClassVar[frozenset[str]] = frozenset({"reason"})
+    OPTIONAL: ClassVar[frozenset[str]] = frozenset({"reason", "charged_s", "charge"})
     source: str = "planner"
     status: str = ""
     latency_ms: float = 0.0
@@ -160,6 +162,8 @@ class Replan(LogRecord):
     steps: list[Any] = field(default_factory=list)
     reason: str | None = None
     world: JsonObject = field(default_factory=dict)
+    charged_s: float | None = None  # simulated seconds of computation charged (latency models)
+    charge: str | None = None  # how: constant, measured, model, background
     trigger: str = ""
     tokens: int = 0
     context: str = ""
@@ -205,6 +209,19 @@ class Takeover(LogRecord):
     context: str = ""
     predicted_at: float | None = None
     makespan: float | None = None
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Anticipate(LogRecord):
+    """Anticipatory execution: the forecast world's first step dispatched because it is
+    executable now (``differs``: it is not the current plan's first step)."""
+
+    TYPE: ClassVar[str] = "anticipate"
+    context: str = ""
+    predicted_at: float | None = None
+    actions: list[JsonObject] = field(default_factory=list)
+    differs: bool = False
+    humans: JsonObject = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -412,6 +429,7 @@ RECORD_CLASSES: dict[str, type[LogRecord]] = {
         Replan,
         Predict,
         Takeover,
+        Anticipate,
         Dispatch,
         ActionStart,
         ActionDone,
