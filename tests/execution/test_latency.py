@@ -159,8 +159,8 @@ def test_anticipation_relays_toward_the_forecast_and_saves_time() -> None:
     antic = [r for r in ahead.records if r.type == "anticipate"]
     assert antic and not [r for r in plain.records if r.type == "anticipate"]
     for r in antic:
-        dispatch = next(d for d in ahead.records if d["type"] == "dispatch" and d["t"] == r.t)
-        assert dispatch["actions"] == r.actions
+        dispatch = next(d for d in ahead.records if d.type == "dispatch" and d.t == r.t)
+        assert dispatch.actions == r.actions
     assert ahead.metrics.time_cost is not None and plain.metrics.time_cost is not None
     assert ahead.metrics.time_cost < plain.metrics.time_cost - 0.5
 
