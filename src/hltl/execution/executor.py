@@ -420,42 +420,21 @@ class Executor:
                 continue
             run.status = st
             a = run.action
+            handle, action, end = run.handle.id, a.to_dict(), round(st.t, 6)
             if st.state is ActionState.DONE:
                 self._apply(run.transition, st.t)
                 self._failures.pop(a.object, None)
-                self.log.emit(
-                    ActionDone(
-                        t=self.t,
-                        handle=run.handle.id,
-                        action=a.to_dict(),
-                        end=round(st.t, 6),
-                    )
-                )
-            elif st.state is ActionState.FAILED:
+                self.log.emit(ActionDone(t=self.t, handle=handle, action=action, end=end))
+                continue
+            ended = ActionFailed if st.state is ActionState.FAILED else ActionHalted
+            self.log.emit(ended(t=self.t, handle=handle, action=action, reason=st.reason, end=end))
+            if st.state is ActionState.FAILED:
                 self.belief.failed(a.object, st.t)
                 self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
-                self.log.emit(
-                    ActionFailed(
-                        t=self.t,
-                        handle=run.handle.id,
-                        action=a.to_dict(),
-                        reason=st.reason,
-                        end=round(st.t, 6),
-                    )
-                )
                 self._trigger.add(Trigger.FAILURE)
             else:
                 self.belief.touched(a.object, st.t)
-                self.log.emit(
-                    ActionHalted(
-                        t=self.t,
-                        handle=run.handle.id,
-                        action=a.to_dict(),
-                        reason=st.reason,
-                        end=round(st.t, 6),
-                    )
-                )
                 self._trigger.add(Trigger.HALT)
 
     def _apply(self, tr: Transition, t: float) -> None:
