@@ -46,9 +46,10 @@ from hltl.execution.log import (
     world_to_dict,
 )
 from hltl.grounding.offline import OfflineGrounder
-from hltl.sim.episode import Cell, EpisodeConfig, run_episode
+from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
+from hltl.sim.simulator import Simulator
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -441,8 +442,10 @@ def run_baseline_episode(
     events: EventSchedule | None = None,
     seed: int = 0,
     config: LoopConfig | None = None,
+    simulator: CellFactory = Simulator,
 ) -> BaselineEpisode:
-    """Run one closed-loop episode of ``policy`` in the simulator (see the module docstring)."""
+    """Run one closed-loop episode of ``policy`` in the simulator (see the module docstring);
+    ``simulator`` makes the world (default the discrete one; the 3D one runs T1–T6)."""
     cfg = LoopConfig() if config is None else config
     agents: list[BaselineAgent] = []
 
@@ -458,6 +461,7 @@ def run_baseline_episode(
         config=EpisodeConfig(tick=cfg.tick, max_time=cfg.max_time),
         grounder=OfflineGrounder(),  # the referee
         agent=make,
+        simulator=simulator,
         start_config={
             "method": policy.name,
             "tick": cfg.tick,
