@@ -34,7 +34,7 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import EventLog
+from hltl.execution.log import EventLog, LogRecord, RobotDown
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
@@ -338,8 +338,7 @@ class BusCell:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
         clock."""
         for rec in d.get("records", ()):
-            rec = dict(rec)
-            self.log.emit(rec.pop("t"), rec.pop("type"), **rec)
+            self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
         if "observation" in d:
             self._obs = world_from_wire(d["observation"])
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
@@ -411,7 +410,7 @@ class BusCell:
             new = [(r, why) for r, why in self._down.items() if r not in self._logged]
             self._logged.update(r for r, _ in new)
         for r, why in new:
-            self.log.emit(self.now, "robot_down", robot=r, until=None, reason=why)
+            self.log.emit(RobotDown(t=self.now, robot=r, until=None, reason=why))
 
     def _lose_all(self, reason: str) -> None:
         self._dead = True

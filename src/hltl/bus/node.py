@@ -16,7 +16,7 @@ import random
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import Any, Protocol, runtime_checkable
 
@@ -37,7 +37,7 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionStatus, Handle
-from hltl.execution.log import EventLog, Record
+from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
@@ -79,7 +79,7 @@ class NodeStats:
 class _Episode:
     id: str
     cell: Cell
-    records: list[Record]
+    records: list[LogRecord]
     handles: dict[int, Handle] = field(default_factory=dict)
     by_cell_id: dict[int, int] = field(default_factory=dict)
     latest: dict[int, Report] = field(default_factory=dict)
@@ -226,7 +226,7 @@ class CellNode:
                     f"this node serves the scene {self.scene.source} "
                     f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
                 )
-            records: list[Record] = []
+            records: list[LogRecord] = []
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = _Episode(episode, cell, records)
@@ -400,16 +400,16 @@ class CellNode:
             raise BusError(f"no episode {str(episode)[:40]!r} on this node; reset first")
         return ep
 
-    def _flush(self) -> list[Record]:
-        """The cell's new log records, with its action ids turned into the executor's."""
+    def _flush(self) -> list[dict[str, Any]]:
+        """The cell's new log records (as JSON), with its action ids turned into the executor's."""
         ep = self._ep
         if ep is None:
             return []
         out = []
         for rec in ep.records:
-            if "handle" in rec and rec["handle"] in ep.by_cell_id:
-                rec = {**rec, "handle": ep.by_cell_id[rec["handle"]]}
-            out.append(rec)
+            if isinstance(rec, HANDLED) and rec.handle in ep.by_cell_id:
+                rec = replace(rec, handle=ep.by_cell_id[rec.handle])
+            out.append(rec.to_json())
         ep.records.clear()
         return out
 
