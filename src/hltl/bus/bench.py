@@ -13,7 +13,7 @@ from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
 from hltl.bus.session import BusConfig, open_session
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import EventLog
+from hltl.execution.log import ActionStart, EventLog, LogRecord
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import EventSchedule
@@ -80,6 +80,10 @@ class BusBench:
 
 
 def _strip(x: Any) -> Any:
+    if isinstance(x, LogRecord):
+        return _strip(x.to_json())
+    if isinstance(x, LogRecord):
+        return _strip(x.to_json())
     if isinstance(x, dict):
         return {k: _strip(v) for k, v in x.items() if not str(k).endswith("_ms")}
     if isinstance(x, list | tuple):
@@ -167,7 +171,7 @@ def bench_bus(
                 )
                 opened[0].end()
                 opened[0].close()
-                handles = [r["handle"] for r in b.records if r["type"] == "action_start"]
+                handles = [r.handle for r in b.records if isinstance(r, ActionStart)]
                 dispatched += len(handles)
                 lost += sum(1 for h in handles if node.stats.starts.get(h, 0) == 0)
                 dup += sum(1 for n in node.stats.starts.values() if n > 1)
