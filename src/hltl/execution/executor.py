@@ -12,6 +12,7 @@ predicted-plan cache (:mod:`~hltl.execution.predicted`) and the decision state m
 from __future__ import annotations
 
 import enum
+import itertools
 import time
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -44,6 +45,7 @@ from hltl.execution.safety import (
     precondition_hazard,
     step_conflict,
 )
+from hltl.fileio import quote
 from hltl.planner import PlanResult, PlanStatus, PlanStep
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
@@ -104,6 +106,10 @@ class ExactPlanner:
         )
 
 
+# Failed actions in a row on one object before the executor gives up (see ExecutorConfig).
+MAX_FAILURES = 10
+
+
 @dataclass(frozen=True, slots=True)
 class ExecutorConfig:
     """Knobs of the receding-horizon loop.
@@ -116,7 +122,12 @@ class ExecutorConfig:
         intrusion_speed: hand speed (m/s) from which a motion counts as fast, i.e. subject to
             the intrusion check; 0 checks every motion.
         max_failures: failed actions on one object in a row (no success on it in between)
-            after which the executor gives up.
+            after which the executor gives up. A failed action leaves a plan (the object stays
+            or drops where an arm can reach it), so this is the only give-up that is not "no
+            plan": it separates a broken skill from bad luck. At 10, chance failures at the
+            soak's highest rate (30 % per action, independent) end an object's task with
+            probability 0.3**10 = 6e-6 (at 50 %: 1e-3), while a skill that always fails is
+            given up on after 10 tries.
         max_wait: seconds the executor waits for the world to change (people to come back,
             robots to return, an intrusion risk to pass) before giving up.
         plan_latency: simulated seconds a critical-path planner call costs before the next
@@ -129,7 +140,7 @@ class ExecutorConfig:
     horizon: float = 1.5
     predict_dt: float = 0.1
     intrusion_speed: float = 0.0
-    max_failures: int = 3
+    max_failures: int = MAX_FAILURES
     max_wait: float = 10.0
     plan_latency: float = 0.0
     max_predicted: int = 16
@@ -274,6 +285,8 @@ class Executor:
         self.log.emit(self.t, "grounding", **update.record(self.done_formulas()))
         self._pending_tokens += update.tokens
         self._trigger.add(Trigger.INITIAL if old is None else Trigger.GOAL)
+        if old is not None:
+            self._halt_undone(update.text)
         if self.status is ExecStatus.DONE:
             self.status = ExecStatus.RUNNING
             self.reason = ""
@@ -452,17 +465,7 @@ class Executor:
         endangered = {h.action: h for h in hazards}
         halted = [r for r in self._running if r.status is None and r.action in endangered]
         for run in halted:
-            reason = endangered[run.action].reason
-            self.driver.halt(run.handle, self.t, reason)
-            run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
-            self.belief.touched(run.action.object, self.t)
-            self.log.emit(
-                self.t,
-                "action_halted",
-                handle=run.handle.id,
-                action=run.action.to_dict(),
-                reason=reason,
-            )
+            self._halt_run(run, endangered[run.action].reason)
         self.log.emit(
             self.t,
             "halt",
@@ -477,6 +480,71 @@ class Executor:
         self._trigger.add(Trigger(f"halt:{first.kind}"))
         if all(r.status is not None for r in self._running):
             self._end_step()
+
+    def _halt_undone(self, text: str) -> None:
+        """After an update, halt the fewest running actions whose completion would leave no plan.
+
+        "Give B the bottle instead" said while r1 hands the bottle to A: once A holds it no robot
+        can take it back, so finishing the hand-over makes the new spec unsatisfiable. A halted
+        action changes no object (its effect happens only at its end: a halted pick leaves the
+        object resting, a halted hand-over leaves it in the giver's hand), so the world stays
+        consistent and the suffix is replanned from it. When finishing every running action
+        still leaves a plan, or halting does not help either, nothing is halted.
+        """
+        live = [r for r in self._running if r.status is None]
+        if not live or self._plan_exists_after(live, ()):
+            return
+        for k in range(1, len(live) + 1):
+            for halted in itertools.combinations(live, k):
+                if self._plan_exists_after(live, halted):
+                    why = f"the update {quote(text)} undoes it: finishing it would leave no plan"
+                    self._halt_runs(list(halted), why)
+                    return
+
+    def _plan_exists_after(self, live: Sequence[_Running], halted: Sequence[_Running]) -> bool:
+        """Whether the spec has a plan once the running step ends with ``halted`` halted."""
+        assert self.spec is not None and self.monitor is not None
+        w = self.world
+        finishing = [r for r in live if r not in halted]
+        for run in finishing:
+            w = apply(w, run.transition)
+        done = [
+            r.transition
+            for r in self._running
+            if (r.status is None and r not in halted)
+            or (r.status is not None and r.status.state is ActionState.DONE)
+        ]
+        q = self.monitor.step(self.q, step_symbol(done, w)) if done else self.q
+        if self.monitor.accepted(q):
+            return True
+        result = self.planner(self.scene, self.spec, world=w, monitor=self.monitor, q0=q)
+        return result.status is PlanStatus.SOLVED
+
+    def _halt_run(self, run: _Running, reason: str) -> None:
+        self.driver.halt(run.handle, self.t, reason)
+        run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
+        self.belief.touched(run.action.object, self.t)
+        self.log.emit(
+            self.t,
+            "action_halted",
+            handle=run.handle.id,
+            action=run.action.to_dict(),
+            reason=reason,
+        )
+
+    def _halt_runs(self, runs: Sequence[_Running], reason: str) -> None:
+        for run in runs:
+            self._halt_run(run, reason)
+        self.log.emit(
+            self.t,
+            "halt",
+            kind="update",
+            reason=reason,
+            actions=[r.action.to_dict() for r in runs],
+            hazards=[],
+            done=sorted(self.done_formulas()),
+        )
+        self._trigger.add(Trigger.HALT_UPDATE)
 
     def _intrusion_on(self) -> bool:
         return self.config.intrusion and self.predictor is not None
