@@ -36,7 +36,7 @@ from hltl.bench.grounding import (
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
-from hltl.bench.soak import run_soak, soak_jobs, summary
+from hltl.bench.soak import SoakResult, run_soak, soak_jobs, summary
 from hltl.bench.suite import (
     METHODS,
     AblationOptions,
@@ -49,7 +49,7 @@ from hltl.bench.suite import (
     run_suite_command,
 )
 from hltl.errors import HltlError
-from hltl.fileio import write_output
+from hltl.fileio import open_output, write_output
 
 
 def register(sub: Any) -> None:
@@ -132,6 +132,11 @@ def register(sub: Any) -> None:
     so.add_argument("--jobs", type=int, default=2, help="worker processes")
     so.add_argument("--seed", type=int, default=0, help="soak seed (episode seeds derive from it)")
     so.add_argument("--json", type=Path, help="write every episode's result here")
+    so.add_argument(
+        "--stream",
+        type=Path,
+        help="append each episode's result here as it finishes (JSON Lines; kept if interrupted)",
+    )
     so.set_defaults(func=run_soak_cmd)
 
     ab = bsub.add_parser("ablation", help="Table III: fluency metrics of executor variants")
@@ -561,12 +566,22 @@ def run_soak_cmd(args: argparse.Namespace) -> int:
     if args.episodes < 1 or args.jobs < 1:
         raise HltlError("--episodes and --jobs must be at least 1")
     jobs = soak_jobs(args.episodes, args.seed)
+    stream = None if args.stream is None else open_output(args.stream, "the soak stream")
     with _progress("hltl bench soak") as progress:
         task = progress.add_task("", total=len(jobs))
+
+        def done(r: SoakResult) -> None:
+            progress.update(task, advance=1, description=r.scenario)
+            if stream is not None:  # one line per episode, flushed: a killed run keeps its part
+                stream.write(json.dumps(asdict(r)) + "\n")
+                stream.flush()
+
         t0 = time.perf_counter()
-        results = run_soak(
-            jobs, args.jobs, lambda r: progress.update(task, advance=1, description=r.scenario)
-        )
+        try:
+            results = run_soak(jobs, args.jobs, done)
+        finally:
+            if stream is not None:
+                stream.close()
         wall = time.perf_counter() - t0
     s = summary(results)
     print(json.dumps({**s, "wall_s": round(wall, 1), "jobs": args.jobs}, indent=2))
