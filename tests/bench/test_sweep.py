@@ -67,7 +67,7 @@ def test_soak_results_equal_on_dask_and_local(dask_address: str) -> None:
 def test_suite_and_ablation_results_equal_on_dask_and_local(dask_address: str) -> None:
     dask = SweepExecutor("dask", dask_address)
     suite = SuiteOptions(trials=1, configs="1-2", methods="greedy").trial_jobs()
-    ablation = AblationOptions(trials=1, configs="1-1").trial_jobs()
+    ablation = AblationOptions(trials=1, configs="1-1", variants_text="full,no-pmp").trial_jobs()
     for jobs in (suite, ablation):
         local = run_suite(jobs, workers=1)
         remote = run_suite(jobs, workers=1, executor=dask)
