@@ -31,7 +31,7 @@ from hltl.bench.sweep import SweepExecutor
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
 from hltl.execution.latency import LatencyModel, load_latency_model
-from hltl.execution.log import Record
+from hltl.execution.log import Anticipate, EpisodeEnd, Grounding, LogRecord, Replan
 from hltl.execution.predict import TrajectoryPredictor
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
@@ -201,7 +201,7 @@ def run_trial(job: TrialJob) -> TrialResult:
 def _scored(
     method: str,
     trial: Trial,
-    records: Sequence[Record],
+    records: Sequence[LogRecord],
     m: Metrics,
     *,
     variant: str = "full",
@@ -210,8 +210,8 @@ def _scored(
 ) -> TrialResult:
     """A closed-loop episode's result: its metrics, judged with the log's invariants."""
     problems = check_invariants(records)
-    end = [r for r in records if r["type"] == "episode_end"][-1]
-    goals_met = bool(end.get("success"))
+    end = [r for r in records if isinstance(r, EpisodeEnd)][-1]
+    goals_met = bool(end.success)
     return TrialResult(
         method=method,
         config=trial.config,
@@ -260,11 +260,9 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         predictor=_predictor(v.predictor, trial),
     )
     m = ep.metrics
-    charged = [
-        float(r.get("charged_s", 0.0)) for r in ep.records if r["type"] in ("replan", "grounding")
-    ]
-    groundings = [r for r in ep.records if r["type"] == "grounding" and "error" not in r]
-    est = sum(estimate_grounding_tokens(str(r["text"]), trial.scene) for r in groundings)
+    charged = [float(r.charged_s or 0.0) for r in ep.records if isinstance(r, Replan | Grounding)]
+    groundings = [r for r in ep.records if isinstance(r, Grounding) and r.error is None]
+    est = sum(estimate_grounding_tokens(str(r.text), trial.scene) for r in groundings)
     return _scored(
         "hltl",
         trial,
@@ -279,9 +277,7 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
             "planner_calls": m.planner_calls,
             "charged_s": round(sum(charged), 6),
             "charged_calls": sum(1 for c in charged if c > 0),
-            "anticipations": sum(
-                1 for r in ep.records if r["type"] == "anticipate" and r.get("differs")
-            ),
+            "anticipations": sum(1 for r in ep.records if isinstance(r, Anticipate) and r.differs),
         },
     )
 
@@ -694,6 +690,18 @@ class AblationOptions:
         return " ".join(parts)
 
 
+def solved_by_all(
+    results: Iterable[TrialResult], variants: Sequence[Variant]
+) -> set[tuple[str, int]]:
+    """The (configuration, trial) pairs every variant solved: paired times compare those."""
+    names = [v.name for v in variants]
+    solved: dict[tuple[str, int], set[str]] = {}
+    for r in results:
+        if r.status == "ok" and r.success and r.time_cost is not None:
+            solved.setdefault((r.config, r.index), set()).add(r.variant)
+    return {k for k, vs in solved.items() if all(n in vs for n in names)}
+
+
 def ablation_extra(
     results: Sequence[TrialResult], variants: Sequence[Variant]
 ) -> dict[str, dict[str, float]]:
@@ -702,12 +710,7 @@ def ablation_extra(
     compared on the same trials), takeovers, anticipatory dispatches and the computation time
     charged on the critical path per trial."""
     ok = [r for r in results if r.status == "ok"]
-    names = [v.name for v in variants]
-    solved: dict[tuple[str, int], set[str]] = {}
-    for r in ok:
-        if r.success and r.time_cost is not None:
-            solved.setdefault((r.config, r.index), set()).add(r.variant)
-    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
+    common = solved_by_all(ok, variants)
     extra: dict[str, dict[str, float]] = {}
     for v in variants:
         rs = [r for r in ok if r.variant == v.name]
