@@ -7,9 +7,9 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl import grounding
 from hltl.errors import GroundingError
 from hltl.fileio import write_output
-from hltl.grounding import make_grounder
 from hltl.grounding.base import check_instruction
 from hltl.spec.hierarchy import load_spec, spec_to_dict
 from hltl.spec.printer import to_string
@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
         options["config_path"] = args.llm_config
     if args.grounder == "local" and args.model is not None:
         options["model_path"] = args.model
-    grounder = make_grounder(args.grounder, **options)
+    grounder = grounding.make_grounder(args.grounder, **options)
     try:
         result = grounder.ground(args.instruction, scene, running)
     except GroundingError as exc:
