@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hltl.cachedir import cache_dir
 from hltl.errors import AutomatonError, BackendUnavailableError
+from hltl.fileio import cache_dir
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import (
     Always,

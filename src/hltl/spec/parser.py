@@ -8,9 +8,8 @@ from typing import Any
 from lark import Lark, Token, Transformer, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken, VisitError
 
-from hltl.cachedir import cache_dir
 from hltl.errors import SpecSyntaxError
-from hltl.fileio import quote
+from hltl.fileio import cache_dir, quote
 from hltl.spec.syntax import (
     PREDICATES,
     Always,
