@@ -49,6 +49,7 @@ class Instance:
     executors: int  # bit mask over robots
     free: tuple[int, ...]
     events: frozenset[Atom]
+    event_bits: int  # ``events`` as a bit mask over ``Problem.spec_atom_list``
     hands: tuple[tuple[int, int], ...]  # (robot index, point index)
     lower: int  # duration lower bound in ticks (exact when durations are fixed)
     const: float  # analytic model: grasp/release/exchange time in seconds
@@ -87,6 +88,9 @@ class Problem:
         }
         self.spec_atoms: frozenset[Atom] = frozenset().union(*self.formula_atoms.values())
         check_atoms_against_scene(self.spec_atoms, scene)
+        # the hot loop unions a step's events as bit masks over these (no Atom hashing)
+        self.spec_atom_list: tuple[Atom, ...] = tuple(sorted(self.spec_atoms))
+        self.atom_bit: dict[Atom, int] = {a: 1 << i for i, a in enumerate(self.spec_atom_list)}
 
         self.objects: tuple[str, ...] = tuple(oid for oid, _ in self.world.objects)
         self.robots: tuple[str, ...] = scene.robot_ids
@@ -130,6 +134,7 @@ class Problem:
                 executors=sum(1 << self.robot_index[r] for r in action.robots),
                 free=tuple(self.robot_index[r] for r in trans.free),
                 events=trans.events & self.spec_atoms,
+                event_bits=self.atom_bits(trans.events & self.spec_atoms),
                 hands=tuple((self.robot_index[r], self._point(p)) for r, p in trans.hands),
                 lower=to_ticks(self.cost.lower_bound(action, trans)),
                 const=self.cost.lower_bound(action, trans),
@@ -141,6 +146,9 @@ class Problem:
         # state atoms per (object, place), restricted to the spec's atoms
         self.state_atoms: list[list[frozenset[Atom]]] = [
             [state_atoms(o, loc) & self.spec_atoms for loc in self.locs] for o in self.objects
+        ]
+        self.state_bits: list[list[int]] = [
+            [self.atom_bits(a) for a in row] for row in self.state_atoms
         ]
         # instances no monitor can see: no spec event, and the object has no spec state atom
         # where it starts or ends (picks and robot-to-robot handovers in delivery tasks)
@@ -164,6 +172,24 @@ class Problem:
         self._dist: dict[tuple[int, int], float] = {}
 
     # -- encoding --------------------------------------------------------------------------------
+    def atom_bits(self, atoms_: frozenset[Atom]) -> int:
+        """Spec atoms as a bit mask (see ``spec_atom_list``)."""
+        bits = 0
+        for a in atoms_:
+            bits |= self.atom_bit[a]
+        return bits
+
+    def bits_atoms(self, bits: int) -> frozenset[Atom]:
+        """The inverse of :meth:`atom_bits`."""
+        out = []
+        i = 0
+        while bits:
+            if bits & 1:
+                out.append(self.spec_atom_list[i])
+            bits >>= 1
+            i += 1
+        return frozenset(out)
+
     def _point(self, p: Vec3) -> int:
         idx = self._point_index.get(p)
         if idx is None:

@@ -14,7 +14,6 @@ from hltl.planner.heuristic import Heuristic
 from hltl.planner.problem import Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.spec.monitor import DONE
-from hltl.spec.syntax import Atom
 
 ALGORITHMS = ("astar", "dijkstra")
 PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
@@ -37,7 +36,7 @@ class _Search:
     def __init__(self, problem: Problem) -> None:
         self.p = problem
         self.monitor = problem.monitor
-        self._step_memo: dict[tuple[object, frozenset[Atom]], object] = {}
+        self._step_memo: dict[tuple[object, int], object] = {}
         self._done_memo: dict[object, frozenset[str]] = {}
         self.heuristic = Heuristic(problem, self.done)
         self._dead_memo: dict[object, frozenset[int]] = {}
@@ -56,11 +55,12 @@ class _Search:
             self._done_memo[q] = d
         return d
 
-    def monitor_step(self, q: object, atoms: frozenset[Atom]) -> object:
-        key = (q, atoms)
+    def monitor_step(self, q: object, bits: int) -> object:
+        """The monitor state after a step whose symbol is the spec atoms in ``bits``."""
+        key = (q, bits)
         nq = self._step_memo.get(key)
         if nq is None:
-            stepped = list(self.monitor.step(q, atoms))  # type: ignore[arg-type]
+            stepped = list(self.monitor.step(q, self.p.bits_atoms(bits)))  # type: ignore[arg-type]
             for c, parent in self._links:
                 if stepped[parent] == DONE:
                     stepped[c] = DONE
@@ -125,25 +125,22 @@ class _Search:
         """All successors: every set U of applicable instances with disjoint robots."""
         q = node[2]
         opts = self.options(node, tags)
-        chosen: list[Instance] = []
-
-        def rec(i: int, used: int) -> Iterator[tuple[Instance, ...]]:
-            if i == len(opts):
-                yield tuple(chosen)
-                return
-            yield from rec(i + 1, used)
-            for inst in opts[i]:
-                if inst.executors & used:
-                    continue
-                chosen.append(inst)
-                yield from rec(i + 1, used | inst.executors)
-                chosen.pop()
-
-        for U in rec(0, 0):
-            cost, child = self.apply(node, U)
-            if not U and child[2] == q:
+        n = len(opts)
+        # depth-first over the objects, "leave it" before each of its instances (iterative: a
+        # recursive generator passes every step set up through one frame per object)
+        stack: list[tuple[int, int, tuple[Instance, ...]]] = [(0, 0, ())]
+        while stack:
+            i, used, chosen = stack.pop()
+            if i < n:
+                for inst in reversed(opts[i]):
+                    if not inst.executors & used:
+                        stack.append((i + 1, used | inst.executors, (*chosen, inst)))
+                stack.append((i + 1, used, chosen))
                 continue
-            yield U, cost, child
+            cost, child = self.apply(node, chosen)
+            if not chosen and child[2] == q:
+                continue
+            yield chosen, cost, child
 
     def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node]:
         """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
@@ -151,21 +148,22 @@ class _Search:
         locs, hands, q = node
         p = self.p
         new_locs = list(locs)
-        events: set[Atom] = set()
+        events = 0
         cost = 0
         new_hands = list(hands) if hands is not None else None
         for inst in U:
             new_locs[inst.obj] = inst.post
-            events |= inst.events
+            events |= inst.event_bits
             d = p.duration(inst, hands)
             if d > cost:
                 cost = d
             if new_hands is not None:
                 for r, pt in inst.hands:
                     new_hands[r] = pt
+        state_bits = p.state_bits
         for o in p.state_atom_objects:
-            events |= p.state_atoms[o][new_locs[o]]
-        nq = self.monitor_step(q, frozenset(events))
+            events |= state_bits[o][new_locs[o]]
+        nq = self.monitor_step(q, events)
         child = (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)
         return cost, child  # type: ignore[return-value]
 
