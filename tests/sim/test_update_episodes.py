@@ -14,6 +14,7 @@ import pytest
 
 from hltl.sim.episode import run_episode
 from hltl.sim.events import EventSchedule, Instruction
+from hltl.sim.invariants import check_invariants
 from hltl.world.scene import load_scene
 
 # "Give Person A the bottle": r1 picks (0-0.5 s), hands it over (0.5-1.0 s), then it is done
@@ -47,12 +48,45 @@ def test_an_update_is_refused_or_carried_out(two_arms_path: Path, t: float, text
     delivered = _delivered(records)
     if refused:
         assert grounding[0]["error"]
-    elif UPDATES[text] is not None and ep.success:
-        assert UPDATES[text] in delivered, (t, text, delivered)
     elif UPDATES[text] is not None:
-        # accepted while the action it undoes was already under way (the bottle is in A's
-        # hands at 1.0 s): the episode fails, saying that no plan exists any more
-        assert "no plan" in ep.metrics.reason, ep.metrics.reason
+        # accepted, even while the action it undoes is under way: carried out
+        assert ep.success, (t, text, ep.metrics.reason)
+        assert UPDATES[text] in delivered, (t, text, delivered)
     if t > 1.0 and text != "also give Person B the chips" and "after that" not in text:
         # the bottle was handed over already: replacing or cancelling it is refused
         assert refused, (t, text)
+
+
+def test_an_update_halts_the_running_action_it_undoes(two_arms_path: Path) -> None:
+    # r1 hands the bottle to A (0.5-1.0 s) when B is asked for instead: finishing the hand-over
+    # would leave no plan (A would hold it), so it is halted, the bottle stays in r1's hand and
+    # goes to B; it used to end in "no plan" after 10 s of waiting
+    two_arms = load_scene(two_arms_path)
+    text = "give Person B the bottle instead"
+    ep = run_episode(
+        two_arms,
+        instruction="Give Person A the bottle",
+        events=EventSchedule((Instruction(0.7, text),)),
+    )
+    records = list(ep.records)
+    (halt,) = [r for r in records if r["type"] == "halt"]
+    assert (halt["t"], halt["kind"]) == (0.7, "update")
+    assert halt["actions"] == [
+        {"skill": "handover_r2h", "robots": ["r1"], "object": "bottle", "human": "A"}
+    ]
+    assert ep.success and _delivered(records) == {("bottle", "B")}
+    assert ep.metrics.violations == 0
+    assert check_invariants(records) == []
+
+
+def test_an_update_halts_nothing_that_still_leaves_a_plan(two_arms_path: Path) -> None:
+    # "also" adds a task: the running hand-over to A is still wanted and runs on
+    two_arms = load_scene(two_arms_path)
+    ep = run_episode(
+        two_arms,
+        instruction="Give Person A the bottle",
+        events=EventSchedule((Instruction(0.7, "also give Person B the chips"),)),
+    )
+    records = list(ep.records)
+    assert not [r for r in records if r["type"] in ("halt", "action_halted")]
+    assert ep.success and _delivered(records) == {("bottle", "A"), ("chips", "B")}

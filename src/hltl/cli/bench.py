@@ -33,11 +33,13 @@ from hltl.bench.grounding import (
     repository_root,
     score,
 )
+from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
 from hltl.bench.soak import run_soak, soak_jobs, summary
 from hltl.bench.suite import (
+    ABLATION_VARIANTS,
     METHODS,
     AblationOptions,
     SuiteOptions,
@@ -142,8 +144,15 @@ def register(sub: Any) -> None:
     ab.add_argument(
         "--plan-latency",
         type=float,
-        default=0.2,
-        help="simulated seconds a critical-path replan costs (full and w/o P.P.)",
+        default=None,
+        help="charge this constant (s) on every planner call instead of the measured latency "
+        "model (the old assumption, for comparison)",
+    )
+    ab.add_argument(
+        "--latency-model",
+        type=Path,
+        help="latency model JSON from 'hltl bench latency --write-model' (default: the "
+        "shipped measurement)",
     )
     ab.add_argument(
         "--serial-factor",
@@ -151,9 +160,23 @@ def register(sub: Any) -> None:
         default=3.0,
         help="w/o P.M.P.: the replan latency multiplied by this (candidates computed serially)",
     )
+    ab.add_argument(
+        "--variants",
+        default=",".join(ABLATION_VARIANTS),
+        help=f"comma-separated variants (default: {','.join(ABLATION_VARIANTS)})",
+    )
     ab.add_argument("--write", type=Path, help="update this Markdown file's ablation section")
     ab.add_argument("--json", type=Path, help="write every trial's result here")
     ab.set_defaults(func=run_ablation_cmd)
+
+    la = bsub.add_parser(
+        "latency", help="measure planner and grounding latency in the loop; fit the latency model"
+    )
+    la.add_argument("--trials", type=int, default=3, help="trials per configuration")
+    la.add_argument("--configs", default="", help="comma-separated configurations (default: all)")
+    la.add_argument("--seed", type=int, default=0, help="suite seed")
+    la.add_argument("--write-model", type=Path, help="write the fitted model (JSON) here")
+    la.set_defaults(func=run_latency_cmd)
 
     rp = bsub.add_parser("replan", help="closed-loop replanning latency per paper configuration")
     rp.add_argument("--seeds", type=int, default=5, help="episodes per configuration and variant")
@@ -584,10 +607,13 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         seed=args.seed,
         plan_latency=args.plan_latency,
         serial_factor=args.serial_factor,
+        latency_model=args.latency_model,
+        variants_text=args.variants,
         write=args.write,
         json=args.json,
     )
     configs = configs_from(opts.configs)
+    variants = opts.variants()
     jobs = opts.trial_jobs()
     with _progress("hltl bench ablation") as progress:
         task = progress.add_task("", total=len(jobs))
@@ -598,9 +624,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         t0 = time.perf_counter()
         results = run_suite(jobs, workers=opts.jobs, on_result=tick)
         wall = time.perf_counter() - t0
-    table = report.format_table_iii(
-        report.fluency(results), ablation_extra(results, opts.variants())
-    )
+    table = report.format_table_iii(report.fluency(results), ablation_extra(results, variants))
     print(table)
     print(f"\nwall time {wall:.0f} s ({opts.jobs} workers)", file=sys.stderr)
     command = opts.command()
@@ -621,9 +645,36 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             n=len(results),
             configs=configs,
             trials=opts.trials,
+            variants=variants,
+            latency=opts.latency(),
             plan_latency=opts.plan_latency,
             serial_factor=opts.serial_factor,
         )
         write_section(opts.write, "ablation", body)
         print(f"wrote {opts.write}", file=sys.stderr)
+    return 0
+
+
+def run_latency_cmd(args: argparse.Namespace) -> int:
+    """Measure planner and grounding calls on suite trials and fit the latency model."""
+    if args.trials < 1:
+        raise HltlError("--trials must be at least 1")
+    configs = configs_from(args.configs)
+    command = f"hltl bench latency --trials {args.trials} --seed {args.seed}" + (
+        f" --configs {args.configs}" if args.configs else ""
+    )
+    with _progress("hltl bench latency") as progress:
+        task = progress.add_task("", total=len(configs) * args.trials)
+        _, data = measure(
+            configs,
+            args.trials,
+            args.seed,
+            command=command,
+            machine=machine(),
+            on_trial=lambda c, i: progress.update(task, advance=1, description=f"{c}#{i}"),
+        )
+    print(json.dumps(data, indent=2))
+    if args.write_model is not None:
+        write_model(args.write_model, data)
+        print(f"wrote {args.write_model}", file=sys.stderr)
     return 0

@@ -28,9 +28,10 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--people",
-        choices=("segmentation", "yolo", "none"),
-        help="person detector for the tracker (default: segmentation when the folder has seg/, "
-        "else yolo)",
+        choices=("segmentation", "depth", "fused", "yolo", "none"),
+        help="person detector for the tracker: depth = body columns on the floor plan, fused = "
+        "depth confirmed by YOLO every 10th frame (default: segmentation when the folder has "
+        "seg/, else depth)",
     )
     p.add_argument("--select", metavar="WORDS", help="pick the object these words name (MiniLM)")
     p.add_argument("--predictor", choices=("cv", "goal", "gru"), default="gru",
@@ -49,7 +50,7 @@ def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene) if args.scene is not None else None
     has_seg = folder.frame(0).seg is not None
     backend = args.backend or ("segmentation" if has_seg else "depth-clusters")
-    people = args.people or ("segmentation" if has_seg else "yolo")
+    people = args.people or ("segmentation" if has_seg else "depth")
     try:
         perceiver = Perceiver(scene, folder.camera, backend, people)
     except ValueError as exc:
@@ -151,8 +152,13 @@ def _print(observations: list[Any], backend: str, people: str, perceiver: Any) -
         if items:
             console.print(f"{label}: {', '.join(items)}")
     tracker = perceiver.tracker
-    if tracker is not None and tracker.detector_name == "yolo":
+    if tracker is not None and tracker.detector_name in ("yolo", "fused"):
         console.print(
             f"person detector: {tracker.detections} detections in {tracker.frames} frame(s), "
-            f"{tracker.rejected} rejected as too short for a person"
+            f"{tracker.rejected} YOLO boxes rejected as too short for a person"
+            + (
+                f", {tracker.confirmed} depth bodies confirmed by YOLO, {tracker.added} added"
+                if tracker.detector_name == "fused"
+                else ""
+            )
         )

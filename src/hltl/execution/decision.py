@@ -18,6 +18,7 @@ class Trigger(enum.Enum):
     HALT = "halt"  # a driver halted an action
     HALT_PRECONDITION = "halt:precondition"  # the executor halted one: its Pre broke
     HALT_INTRUSION = "halt:intrusion"  # the executor halted one: a person is forecast in
+    HALT_UPDATE = "halt:update"  # the executor halted one: finishing it would leave no plan
     PROGRESS = "progress"  # a step ended
 
 

