@@ -13,7 +13,7 @@ import heapq
 import math
 from collections.abc import Callable
 
-from hltl.planner.pairs import Lookup, PairBound, pair_value
+from hltl.planner.pairs import Lookup, PairBound
 from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
@@ -141,8 +141,8 @@ class Heuristic:
             lookups = self.pairs.lookups(sorted(self.required_atoms(q)))
             self._pair_lookups[q] = lookups
         best = 0.0
-        for lk in lookups:
-            v = pair_value(lk, locs)
+        for o1, o2, n, flat in lookups:  # pair_value, inlined: called for every node
+            v = flat[locs[o1] * n + locs[o2]]
             if v > best:
                 best = v
         return best
@@ -159,24 +159,15 @@ class Heuristic:
             self._load_groups[q] = groups
         if not groups:
             return 0.0
-        # per robot: least head, summed work, least tail over the objects it must handle
-        n = self.n_robots
-        head = [INF] * n
-        work = [0.0] * n
-        tail = [INF] * n
+        # per robot, its jobs: (head, work, tail) of each object it must handle
+        jobs: list[list[tuple[float, float, float]]] = [[] for _ in range(self.n_robots)]
         for o, by_place in groups:
             for r, hd, v, tl in by_place[locs[o]]:
-                work[r] += v
-                if hd < head[r]:
-                    head[r] = hd
-                if tl < tail[r]:
-                    tail[r] = tl
+                jobs[r].append((hd, v, tl))
         best = 0.0
-        # the robot's jobs fill distinct steps; the first cannot start before some object
-        # reaches it, and after the last one that object still has to travel
-        for r in range(n):
-            if work[r] > 0.0:
-                t = head[r] + work[r] + tail[r]
+        for js in jobs:
+            if js:
+                t = _one_machine_bound(js)
                 if t > best:
                     best = t
         return best
@@ -350,6 +341,32 @@ class Heuristic:
                     heapq.heappush(heap, (c, y))
         self._cache[key] = best
         return best
+
+
+def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
+    """A lower bound on the makespan of one robot's jobs (head, work, tail): the robot acts on
+    one object per step, so for any subset of its jobs it needs the subset's work between the
+    subset's least head and its least tail. Subsets tried: all jobs, the jobs with head at least
+    each job's head, and the jobs with tail at least each job's tail (preemptive one-machine
+    scheduling with release and delivery times)."""
+    if len(jobs) == 1:
+        hd, v, tl = jobs[0]
+        return hd + v + tl
+    best = 0.0
+    for key in (0, 2):
+        jobs.sort(key=lambda j: -j[key])
+        total = 0.0
+        least_head = least_tail = INF
+        for hd, v, tl in jobs:
+            total += v
+            if hd < least_head:
+                least_head = hd
+            if tl < least_tail:
+                least_tail = tl
+            t = least_head + total + least_tail
+            if t > best:
+                best = t
+    return best
 
 
 # A monotone composite: ("F", child) | ("and", a, b) | ("or", a, b)

@@ -13,7 +13,7 @@ from hltl.skills.semantics import ActionSemantics
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.printer import atoms as formula_atoms
-from hltl.spec.syntax import PREDICATES, Atom
+from hltl.spec.syntax import PREDICATES, And, Atom, Eventually, Formula
 from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
@@ -161,6 +161,12 @@ class Problem:
         self.state_atom_objects: tuple[int, ...] = tuple(
             i for i in range(len(self.objects)) if any(self.state_atoms[i])
         )
+        # instances the left-shift rule may move one step earlier (docs/planner.md): the
+        # invisible ones, and every instance when the spec is a conjunction of events
+        self.events_commute = _events_commute(spec, self.state_atom_objects)
+        self.shiftable: tuple[bool, ...] = (
+            tuple(True for _ in self.instances) if self.events_commute else self.invisible
+        )
         # objects each formula is about
         self.formula_objects: dict[str, frozenset[int]] = {
             name: frozenset(
@@ -239,6 +245,44 @@ class Problem:
             return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
         return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
+
+
+def _events_commute(spec: HSpec, state_atom_objects: tuple[int, ...]) -> bool:
+    """True when making an event happen one step earlier can never hurt: every leaf is ``F a``
+    for an event atom ``a`` (no state atom anywhere), no two leaves are about the same object,
+    and every composite is a conjunction of ``F child``. Then a formula is done exactly when all
+    the leaves under it have fired, in any order, so firing one earlier leaves the monitor
+    state after the later step unchanged, only frees robots, and keeps every later instance
+    relevant and alive (docs/planner.md, "Left-shift rule")."""
+    if state_atom_objects:
+        return False
+    names = {name for name, _ in spec.formulas}
+    seen: set[str] = set()
+    for name in spec.leaves:
+        f = spec.formula(name)
+        if not (isinstance(f, Eventually) and isinstance(f.operand, Atom)):
+            return False
+        if not f.operand.is_predicate or f.operand.name not in _EVENT_PREDICATES:
+            return False
+        for o in _object_args(f.operand):
+            if o in seen:
+                return False
+            seen.add(o)
+    return all(_conjunction_of_children(spec.formula(n), names) for n in spec.composites)
+
+
+_EVENT_PREDICATES = frozenset({"delivered", "placed", "picked"})
+
+
+def _conjunction_of_children(f: Formula, names: set[str]) -> bool:
+    if isinstance(f, And):
+        return _conjunction_of_children(f.left, names) and _conjunction_of_children(f.right, names)
+    return (
+        isinstance(f, Eventually)
+        and isinstance(f.operand, Atom)
+        and not f.operand.args
+        and f.operand.name in names
+    )
 
 
 def _object_args(atom: Atom) -> tuple[str, ...]:
