@@ -354,6 +354,13 @@ def _names(d: dict[str, Any]) -> tuple[str, ...]:
     return tuple(v)
 
 
+def _labelled(d: dict[str, Any], label: str) -> tuple[str, str, Vec3, tuple[str, ...]]:
+    """An object's or a person's id, label (``category``/``name``, default the id), position
+    and aliases."""
+    position = _vec(d["position"], 3)
+    return (_name(d["id"]), _opt_name(d, label, d["id"]), position, _names(d))  # type: ignore[return-value]
+
+
 def _items(data: Mapping[str, Any], key: str, keys: frozenset[str]) -> list[dict[str, Any]]:
     v = data.get(key, [])
     if type(v) is not list or any(type(d) is not dict or not d.keys() <= keys for d in v):
@@ -385,23 +392,9 @@ def _plain(data: Mapping[str, Any]) -> _Raw | None:
         if not robots:
             raise _NotPlain
         objects = tuple(
-            SceneObject(
-                _name(d["id"]),
-                _opt_name(d, "category", d["id"]),
-                _vec(d["position"], 3),  # type: ignore[arg-type]
-                _names(d),
-            )
-            for d in _items(data, "objects", _OBJECT)
+            SceneObject(*_labelled(d, "category")) for d in _items(data, "objects", _OBJECT)
         )
-        humans = tuple(
-            Human(
-                _name(d["id"]),
-                _opt_name(d, "name", d["id"]),
-                _vec(d["position"], 3),  # type: ignore[arg-type]
-                _names(d),
-            )
-            for d in _items(data, "humans", _HUMAN)
-        )
+        humans = tuple(Human(*_labelled(d, "name")) for d in _items(data, "humans", _HUMAN))
         surfaces = tuple(
             Surface(
                 _name(d["id"]),
