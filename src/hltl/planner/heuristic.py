@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import heapq
 import math
+import operator
 from collections.abc import Callable
 
 from hltl.planner.pairs import Lookup, PairBound
@@ -123,7 +124,7 @@ class Heuristic:
         critical = h[self.root]
         if critical == INF or self.n_robots < 2:
             return critical
-        bound = max(critical, self._load_bound(locs, q))
+        bound = max(critical, self._load_bound(locs, q, critical))
         if self.pairs is not None:
             bound = max(bound, self._pair_bound(locs, q))
         return bound
@@ -148,8 +149,9 @@ class Heuristic:
         return best
 
     # -- robot load ------------------------------------------------------------------------------
-    def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
-        """max over robots of the time it must spend on objects every accepting run needs."""
+    def _load_bound(self, locs: tuple[int, ...], q: MonitorState, floor: float = 0.0) -> float:
+        """max over robots of the time it must spend on objects every accepting run needs (or
+        anything up to ``floor`` when it cannot exceed ``floor``)."""
         groups = self._load_groups.get(q)
         if groups is None:
             groups = tuple(
@@ -164,9 +166,29 @@ class Heuristic:
         for o, by_place in groups:
             for r, hd, v, tl in by_place[locs[o]]:
                 jobs[r].append((hd, v, tl))
-        best = 0.0
+        # the all-jobs bound first; the subset bounds only where they could beat the best so
+        # far (no subset bound exceeds latest head + all work + latest tail)
+        best = floor
+        loose = []
         for js in jobs:
             if js:
+                hd, v, tl = js[0]
+                least_head, total, least_tail, most = hd, v, tl, hd + tl
+                for hd, v, tl in js[1:]:
+                    total += v
+                    if hd < least_head:
+                        least_head = hd
+                    if tl < least_tail:
+                        least_tail = tl
+                    if hd + tl > most:
+                        most = hd + tl
+                t = least_head + total + least_tail
+                if t > best:
+                    best = t
+                if len(js) > 1:
+                    loose.append((total + most, js))
+        for optimistic, js in loose:
+            if optimistic > best:
                 t = _one_machine_bound(js)
                 if t > best:
                     best = t
@@ -353,8 +375,8 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
         hd, v, tl = jobs[0]
         return hd + v + tl
     best = 0.0
-    for key in (0, 2):
-        jobs.sort(key=lambda j: -j[key])
+    for key in (None, _TAIL):
+        jobs.sort(key=key, reverse=True)
         total = 0.0
         least_head = least_tail = INF
         for hd, v, tl in jobs:
@@ -367,6 +389,9 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
             if t > best:
                 best = t
     return best
+
+
+_TAIL = operator.itemgetter(2)
 
 
 # A monotone composite: ("F", child) | ("and", a, b) | ("or", a, b)
