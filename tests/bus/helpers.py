@@ -58,6 +58,7 @@ class Loopback:
         on_record: Callable[[dict[str, Any]], None] | None = None,
         cell: str = "default",
         factory: Any = None,
+        ahead: int = 64,
         **episode: Any,
     ) -> BusRun:
         opened: list[BusCell] = []
@@ -66,7 +67,12 @@ class Loopback:
             ep = run_episode(
                 scene,
                 simulator=bus_cell(
-                    self._exec_session, cell=cell, timing=timing, faults=exec_faults, opened=opened
+                    self._exec_session,
+                    cell=cell,
+                    timing=timing,
+                    faults=exec_faults,
+                    opened=opened,
+                    ahead=ahead,
                 ),
                 on_record=on_record,
                 **episode,

@@ -38,7 +38,15 @@ from hltl.grounding.tokens import estimate_grounding_tokens
 from hltl.perception.gru import load_model
 from hltl.perception.predict import GRUPredictor, make_predictor, stop_places
 from hltl.planner import plan
-from hltl.sim.dynamic import Trial, config_names, config_of, full_spec, make_trial, trial_seed
+from hltl.sim.dynamic import (
+    WALKS,
+    Trial,
+    config_names,
+    config_of,
+    full_spec,
+    make_trial,
+    trial_seed,
+)
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.invariants import check_invariants
 from hltl.sim.metrics import Metrics
@@ -148,13 +156,14 @@ class TrialJob:
     suite_seed: int = 0
     variant: Variant = field(default_factory=Variant)
     max_time: float = 120.0
+    walks: str = "random"
 
 
 def run_trial(job: TrialJob) -> TrialResult:
     """Run one job; never raises (a crash is an ``error`` result naming the exception)."""
     t0 = time.perf_counter()
     try:
-        trial = make_trial(job.config, job.index, job.suite_seed)
+        trial = make_trial(job.config, job.index, job.suite_seed, job.walks)
     except HltlError as exc:
         return TrialResult(
             job.method,
@@ -184,6 +193,8 @@ def run_trial(job: TrialJob) -> TrialResult:
             reason=f"{type(exc).__name__}: {exc}",
             variant=job.variant.name,
         )
+    if res.status == "ok":
+        res = replace(res, extra={**res.extra, "walk": trial.walk})
     return replace(res, wall_s=round(time.perf_counter() - t0, 4))
 
 
@@ -365,10 +376,11 @@ def jobs_for(
     suite_seed: int = 0,
     variants: Sequence[Variant] = (Variant(),),
     max_time: float = 120.0,
+    walks: str = "random",
 ) -> list[TrialJob]:
     """Every (method, variant, configuration, trial) job, configurations outermost."""
     return [
-        TrialJob(m, c, i, suite_seed, v, max_time)
+        TrialJob(m, c, i, suite_seed, v, max_time, walks)
         for c in configs
         for i in range(trials)
         for m in methods
@@ -463,10 +475,12 @@ class SuiteOptions:
     write: Path | None = None
     figures: Path | None = None
     json: Path | None = None
+    walks: str = "random"
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
+        _check_walks(self.walks)
         for m in self.method_list:
             if m not in (*METHODS, *ONE_SHOT):
                 raise HltlError(
@@ -486,11 +500,16 @@ class SuiteOptions:
         """Closed-loop jobs first, then Fast Downward, then flat LTLf (fewer trials)."""
         configs = configs_from(self.configs)
         methods = self.method_list
-        jobs = jobs_for(configs, self.trials, self.loop_methods, self.seed, max_time=self.max_time)
+        w = self.walks
+        jobs = jobs_for(
+            configs, self.trials, self.loop_methods, self.seed, max_time=self.max_time, walks=w
+        )
         if "fd" in methods:
-            jobs += jobs_for(configs, self.trials, ["fd"], self.seed)
+            jobs += jobs_for(configs, self.trials, ["fd"], self.seed, walks=w)
         if "flat" in methods:
-            jobs += jobs_for(configs, min(self.flat_trials, self.trials), ["flat"], self.seed)
+            jobs += jobs_for(
+                configs, min(self.flat_trials, self.trials), ["flat"], self.seed, walks=w
+            )
         return jobs
 
     def sweep_sizes(self) -> list[int]:
@@ -509,6 +528,8 @@ class SuiteOptions:
             parts.append(f"--configs {self.configs}")
         if self.max_time != 120.0:
             parts.append(f"--max-time {self.max_time:g}")
+        if self.walks != "random":
+            parts.append(f"--walks {self.walks}")
         if "flat" in self.methods:
             parts.append(
                 f"--flat-trials {self.flat_trials} --flat-sweep {shlex.quote(self.flat_sweep)}"
@@ -567,6 +588,11 @@ def run_suite_command(
     return SuiteRun(options, results, wall, sweep_rows, sweep_s)
 
 
+def _check_walks(walks: str) -> None:
+    if walks not in WALKS:
+        raise HltlError(f"--walks: unknown kind {walks[:40]!r}; expected one of {', '.join(WALKS)}")
+
+
 ABLATION_VARIANTS = ("full", "no-pp", "no-pmp", "goal", "antic-goal", "antic-gru")
 
 
@@ -587,6 +613,7 @@ class AblationOptions:
     serial_factor: float = 3.0
     latency_model: Path | None = None
     variants_text: str = ",".join(ABLATION_VARIANTS)
+    walks: str = "random"
     write: Path | None = None
     json: Path | None = None
 
@@ -595,6 +622,7 @@ class AblationOptions:
             raise HltlError("--trials and --jobs must be at least 1")
         if (self.plan_latency is not None and self.plan_latency < 0) or self.serial_factor < 1:
             raise HltlError("--plan-latency must be >= 0 and --serial-factor >= 1")
+        _check_walks(self.walks)
         for name in self.variant_names:
             if name not in ABLATION_VARIANTS:
                 raise HltlError(
@@ -632,7 +660,12 @@ class AblationOptions:
 
     def trial_jobs(self) -> list[TrialJob]:
         return jobs_for(
-            configs_from(self.configs), self.trials, ["hltl"], self.seed, self.variants()
+            configs_from(self.configs),
+            self.trials,
+            ["hltl"],
+            self.seed,
+            self.variants(),
+            walks=self.walks,
         )
 
     def command(self) -> str:
@@ -644,6 +677,8 @@ class AblationOptions:
         if self.latency_model is not None:
             parts.append(f"--latency-model {shlex.quote(str(self.latency_model))}")
         parts.append(f"--serial-factor {self.serial_factor:g}")
+        if self.walks != "random":
+            parts.append(f"--walks {self.walks}")
         if self.variant_names != list(ABLATION_VARIANTS):
             parts.append(f"--variants {','.join(self.variant_names)}")
         if self.configs:

@@ -36,6 +36,7 @@ from hltl.bench.grounding import (
 from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
+from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
 from hltl.bench.soak import run_soak, soak_jobs, summary
 from hltl.bench.suite import (
@@ -125,6 +126,7 @@ def register(sub: Any) -> None:
     su.add_argument("--write", type=Path, help="update this Markdown file's suite section")
     su.add_argument("--figures", type=Path, help="write suite_*.png here (needs matplotlib)")
     su.add_argument("--json", type=Path, help="write every trial's result here")
+    su.add_argument("--walks", default="random", help=WALKS_HELP)
     su.set_defaults(func=run_suite_cmd)
 
     so = bsub.add_parser(
@@ -165,9 +167,28 @@ def register(sub: Any) -> None:
         default=",".join(ABLATION_VARIANTS),
         help=f"comma-separated variants (default: {','.join(ABLATION_VARIANTS)})",
     )
+    ab.add_argument("--walks", default="random", help=WALKS_HELP)
     ab.add_argument("--write", type=Path, help="update this Markdown file's ablation section")
     ab.add_argument("--json", type=Path, help="write every trial's result here")
     ab.set_defaults(func=run_ablation_cmd)
+
+    rw = bsub.add_parser(
+        "realworld", help="T1-T6 of the paper's real-world study (§V-B) in the 3D simulator"
+    )
+    rw.add_argument("--trials", type=int, default=20, help="seeded trials per task")
+    rw.add_argument("--tasks", default=",".join(TASKS), help="comma-separated tasks (T1..T6)")
+    rw.add_argument("--jobs", type=int, default=2, help="worker processes")
+    rw.add_argument("--seed", type=int, default=0, help="seed of the variations")
+    rw.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="actions last as long as their arm motions (default) or as the cost model says",
+    )
+    rw.add_argument("--write", type=Path, help="update this Markdown file's realworld section")
+    rw.add_argument("--figure", type=Path, help="write the bar chart (PNG) here")
+    rw.add_argument("--json", type=Path, help="write every trial's result here")
+    rw.set_defaults(func=run_realworld_cmd)
 
     la = bsub.add_parser(
         "latency", help="measure planner and grounding latency in the loop; fit the latency model"
@@ -530,6 +551,7 @@ def run_suite_cmd(args: argparse.Namespace) -> int:
         write=args.write,
         figures=args.figures,
         json=args.json,
+        walks=args.walks,
     )
     configs = configs_from(opts.configs)
     with _progress("hltl bench suite") as progress:
@@ -601,6 +623,13 @@ def run_soak_cmd(args: argparse.Namespace) -> int:
     return 1 if harm else 0
 
 
+WALKS_HELP = (
+    "H-MOVE kind: random (any recipient, 10-70 %% of the makespan), t2 (the recipient of the "
+    "delivery under way walks to other robots' side mid-delivery; one-robot cells keep random) "
+    "or mixed (odd trials t2)"
+)
+
+
 def run_ablation_cmd(args: argparse.Namespace) -> int:
     opts = AblationOptions(
         trials=args.trials,
@@ -611,6 +640,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         serial_factor=args.serial_factor,
         latency_model=args.latency_model,
         variants_text=args.variants,
+        walks=args.walks,
         write=args.write,
         json=args.json,
     )
@@ -627,7 +657,9 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         results = run_suite(jobs, workers=opts.jobs, on_result=tick)
         wall = time.perf_counter() - t0
     table = report.format_table_iii(report.fluency(results), ablation_extra(results, variants))
+    groups = report.format_ablation_groups(results, variants)
     print(table)
+    print("\n" + groups)
     print(f"\nwall time {wall:.0f} s ({opts.jobs} workers)", file=sys.stderr)
     command = opts.command()
     if opts.json is not None:
@@ -651,6 +683,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             latency=opts.latency(),
             plan_latency=opts.plan_latency,
             serial_factor=opts.serial_factor,
+            groups=groups,
         )
         write_section(opts.write, "ablation", body)
         print(f"wrote {opts.write}", file=sys.stderr)
@@ -679,4 +712,70 @@ def run_latency_cmd(args: argparse.Namespace) -> int:
     if args.write_model is not None:
         write_model(args.write_model, data)
         print(f"wrote {args.write_model}", file=sys.stderr)
+    return 0
+
+
+def run_realworld_cmd(args: argparse.Namespace) -> int:
+    """T1–T6 in the MuJoCo simulator for hltl and Greedy-R; table, figure, section."""
+    tasks = [t.strip() for t in args.tasks.split(",") if t.strip()]
+    for t in tasks:
+        if t not in TASKS:
+            raise HltlError(f"--tasks: unknown task {t[:20]!r}; expected some of {','.join(TASKS)}")
+    if args.trials < 1 or args.jobs < 1:
+        raise HltlError("--trials and --jobs must be at least 1")
+    command = (
+        f"hltl bench realworld --trials {args.trials} --jobs {args.jobs} --seed {args.seed}"
+        + (f" --tasks {','.join(tasks)}" if tasks != list(TASKS) else "")
+        + (f" --timing {args.timing}" if args.timing != "motion" else "")
+        + (f" --write {shlex.quote(str(args.write))}" if args.write else "")
+        + (f" --figure {shlex.quote(str(args.figure))}" if args.figure else "")
+    )
+    with _progress("hltl bench realworld") as progress:
+        task = progress.add_task("", total=len(tasks) * args.trials * 2)
+        t0 = time.perf_counter()
+        results = run_all(
+            args.trials,
+            tasks=tasks,
+            seed=args.seed,
+            jobs=args.jobs,
+            timing=args.timing,
+            on_result=lambda r: progress.update(
+                task, advance=1, description=f"{r.method} {r.task}#{r.index}"
+            ),
+        )
+        wall = time.perf_counter() - t0
+    rows = summarise3d(results)
+    table = format_t16(rows)
+    print(table)
+    if args.json is not None:
+        write_output(args.json, "the results", json.dumps([asdict(r) for r in results], indent=1))
+    if args.figure is not None:
+        plot_t16(rows, args.figure)
+        print(f"wrote {args.figure}", file=sys.stderr)
+    if args.write is not None:
+        fails = [r for r in results if not r.success]
+        reasons: dict[str, int] = {}
+        for r in fails:
+            key = f"{r.method} {r.task}: {r.reason[:90]}"
+            reasons[key] = reasons.get(key, 0) + 1
+        body = "\n".join(
+            [
+                f"Command: `{command}`  ",
+                f"Machine: {machine()}. Wall time {wall:.0f} s for {len(results)} episodes "
+                f"({datetime.datetime.now(datetime.UTC):%Y-%m-%d}).",
+                "",
+                "The scenarios, as the paper words them:",
+                "",
+                *[f"* **{t}**: {WORDING[t]}" for t in tasks],
+                "",
+                table,
+                "",
+                *([f"![T1-T6](figures/{args.figure.name})", ""] if args.figure else []),
+                "Failed trials (method, task: why, count): "
+                + ("; ".join(f"{k} ×{n}" for k, n in sorted(reasons.items())) or "none")
+                + ".",
+            ]
+        )
+        write_section(args.write, "realworld", body)
+        print(f"wrote {args.write}", file=sys.stderr)
     return 0

@@ -14,7 +14,7 @@ from __future__ import annotations
 import enum
 import itertools
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -55,7 +55,7 @@ from hltl.skills.semantics import ActionSemantics, Infeasible, apply
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.spec.syntax import Atom
-from hltl.world.geometry import Context
+from hltl.world.geometry import Context, human_in_workspace
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import WorldState
 
@@ -948,6 +948,8 @@ class Executor:
         ctx_pred = wp.context(self.scene)
         if ctx_pred == self.world.context(self.scene):
             return False
+        if self._plan is not None and self._survives_forecast(self._plan, moving):
+            return False  # the plan in hand finishes its hand-overs before people leave
         pred = self._predicted.get(self._key(ctx_pred, wp, self.q))
         if pred is None or not pred.result.solved or not pred.result.steps:
             return False
@@ -976,6 +978,23 @@ class Executor:
             humans={h: p.to_dict() for h, p in moving.items()},
         )
         self._dispatch(list(step.actions), step)
+        return True
+
+    def _survives_forecast(self, plan: PlanResult, moving: Mapping[str, object]) -> bool:
+        """Whether, by the forecast, every hand-over of ``plan`` to a moving person still
+        finds them in the giver's workspace when it ends (steps taken back to back from now)."""
+        assert self.predictor is not None
+        t = self.t
+        for step in plan.steps:
+            t += step.duration
+            for a in step.actions:
+                h = a.human
+                if a.skill != "handover_r2h" or h is None or h not in moving:
+                    continue
+                (p,) = self.predictor.predict(h, [t])
+                robot = self.scene.robot(a.robots[0])
+                if not human_in_workspace(robot, p, self.scene.human_reach):
+                    return False
         return True
 
     def _after_running(self) -> tuple[WorldState, MonitorState] | None:
