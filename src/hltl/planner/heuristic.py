@@ -55,6 +55,7 @@ class Heuristic:
         self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
         self._load_groups: dict[MonitorState, tuple[tuple[int, _Rows], ...]] = {}
         self._rows: dict[tuple[int, tuple[Atom, ...]], _Rows] = {}
+        self._machine_memo: dict[tuple[tuple[float, float, float], ...], float] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
@@ -166,30 +167,16 @@ class Heuristic:
         for o, by_place in groups:
             for r, hd, v, tl in by_place[locs[o]]:
                 jobs[r].append((hd, v, tl))
-        # the all-jobs bound first; the subset bounds only where they could beat the best so
-        # far (no subset bound exceeds latest head + all work + latest tail)
+        # most robots' jobs are the same as in the parent node: one memo lookup each
         best = floor
-        loose = []
+        memo = self._machine_memo
         for js in jobs:
             if js:
-                hd, v, tl = js[0]
-                least_head, total, least_tail, most = hd, v, tl, hd + tl
-                for hd, v, tl in js[1:]:
-                    total += v
-                    if hd < least_head:
-                        least_head = hd
-                    if tl < least_tail:
-                        least_tail = tl
-                    if hd + tl > most:
-                        most = hd + tl
-                t = least_head + total + least_tail
-                if t > best:
-                    best = t
-                if len(js) > 1:
-                    loose.append((total + most, js))
-        for optimistic, js in loose:
-            if optimistic > best:
-                t = _one_machine_bound(js)
+                key = tuple(js)
+                t = memo.get(key)
+                if t is None:
+                    t = _one_machine_bound(js)
+                    memo[key] = t
                 if t > best:
                     best = t
         return best
