@@ -31,7 +31,7 @@ def _assert_same(loopback: Loopback, scene, ahead: int = 64, **episode) -> BusRu
         local.metrics.to_dict()
     )
     # every action the executor started was started exactly once by the node
-    starts = [r["handle"] for r in local.records if r["type"] == "action_start"]
+    starts = [r.handle for r in local.records if r.type == "action_start"]
     assert remote.node.stats.starts == dict.fromkeys(starts, 1)
     return remote
 

@@ -34,7 +34,7 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import EventLog
+from hltl.execution.log import EventLog, LogRecord, RobotDown
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
@@ -48,6 +48,10 @@ class MotionLike(Protocol):
 
     @property
     def trajectories(self) -> Sequence[TrajectoryLike]: ...
+    @property
+    def events(self) -> Sequence[tuple[float, str, str]]: ...
+    @property
+    def duration(self) -> float: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,6 +97,7 @@ class DriverStats:
     stale_reports: int = 0
     recoveries: int = 0
     queries: int = 0
+    ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
     round_trips: list[float] = field(default_factory=list)
 
 
@@ -333,8 +338,7 @@ class BusCell:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
         clock."""
         for rec in d.get("records", ()):
-            rec = dict(rec)
-            self.log.emit(rec.pop("t"), rec.pop("type"), **rec)
+            self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
         if "observation" in d:
             self._obs = world_from_wire(d["observation"])
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
@@ -406,7 +410,7 @@ class BusCell:
             new = [(r, why) for r, why in self._down.items() if r not in self._logged]
             self._logged.update(r for r, _ in new)
         for r, why in new:
-            self.log.emit(self.now, "robot_down", robot=r, until=None, reason=why)
+            self.log.emit(RobotDown(t=self.now, robot=r, until=None, reason=why))
 
     def _lose_all(self, reason: str) -> None:
         self._dead = True
@@ -420,6 +424,7 @@ class BusCell:
         if self._dead:
             return
         self._confirm()
+        self.stats.ticks += 1
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -502,17 +507,33 @@ class BusCell:
                 ActionState.FAILED, 0.0, t, f"robot {down[0]} is down: {self._down[down[0]]}"
             )
             return handle
+        # the trajectories go first (and again with every retransmission): the node starts the
+        # action only once it holds every robot's
+        sends: list[tuple[str, bytes, bytes]] = []
         if motion is not None:
+            meta = dumps(
+                {
+                    "episode": self.episode,
+                    "handle": hid,
+                    "events": [list(e) for e in motion.events],
+                    "duration": motion.duration,
+                }
+            )
             for traj in motion.trajectories:
                 if traj.robot in action.robots:
-                    self.link.put(
-                        self.keys.trajectory(traj.robot),
-                        encode_trajectory(traj, t),
-                        attachment=dumps({"episode": self.episode, "handle": hid}),
+                    sends.append(
+                        (self.keys.trajectory(traj.robot), encode_trajectory(traj, t), meta)
                     )
         self._dirty = True
         self._ahead = []  # simulated without this command: the node undoes them
-        if not self._command("start", handle, t, lambda s: True):
+        if not self._command(
+            "start",
+            handle,
+            t,
+            lambda s: True,
+            sends=sends,
+            motion=tuple(robot_of(k) for k, _, _ in sends),
+        ):
             self._give_up_on(handle, t, "did not acknowledge the action")
         return handle
 
@@ -550,10 +571,13 @@ class BusCell:
         t: float,
         done: Callable[[ActionStatus], bool],
         reason: str = "",
+        sends: Sequence[tuple[str, bytes, bytes]] = (),
+        motion: tuple[str, ...] = (),
     ) -> bool:
-        """Send a command to every robot of the action until a report says ``done``."""
+        """Send a command to every robot of the action until a report says ``done`` (with
+        ``sends``, the puts that must reach the node first, each time)."""
         self._seq += 1
-        cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason)
+        cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason, motion)
         payload = cmd.encode()
         since = self._latest.get(handle.id)
         for attempt in self._attempts(self.timing.retries, handle.action.robots):
@@ -561,6 +585,8 @@ class BusCell:
                 self.stats.retransmits += 1
             self.stats.commands += 1
             t0 = time.perf_counter()
+            for key, data, attachment in sends:
+                self.link.put(key, data, attachment=attachment)
             for r in handle.action.robots:
                 self.link.put(self.keys.action(r), payload)
             deadline = time.monotonic() + self.timing.timeout

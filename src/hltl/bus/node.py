@@ -16,7 +16,7 @@ import random
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import Any, Protocol, runtime_checkable
 
@@ -25,6 +25,7 @@ from hltl.bus.codec import (
     JointStateMsg,
     Report,
     StampedPose,
+    decode_trajectory,
     dumps,
     encode_joint_state,
     encode_pose,
@@ -36,7 +37,8 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionStatus, Handle
-from hltl.execution.log import EventLog, Record
+from hltl.execution.log import HANDLED, EventLog, LogRecord
+from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
@@ -65,6 +67,8 @@ class NodeStats:
     duplicates: int = 0
     stale: int = 0
     malformed: int = 0
+    trajectories: int = 0  # joint trajectories received
+    waiting: int = 0  # starts put off until their trajectories arrive
     reports: int = 0
     steps: int = 0
     ahead: int = 0  # ticks simulated ahead of the executor
@@ -75,7 +79,7 @@ class NodeStats:
 class _Episode:
     id: str
     cell: Cell
-    records: list[Record]
+    records: list[LogRecord]
     handles: dict[int, Handle] = field(default_factory=dict)
     by_cell_id: dict[int, int] = field(default_factory=dict)
     latest: dict[int, Report] = field(default_factory=dict)
@@ -85,6 +89,9 @@ class _Episode:
     batch: _Batch | None = None
     span: int = 8  # ticks to run ahead next: doubles while the executor uses them all
     max_cmd: int = 0  # the highest command number seen (older ones are retransmissions)
+    # joint trajectories received per handle and robot, with the plan's events and duration
+    trajectories: dict[int, dict[str, JointTrajectory]] = field(default_factory=dict)
+    plans: dict[int, tuple[tuple[tuple[float, str, str], ...], float]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -172,6 +179,7 @@ class CellNode:
             session.declare_queryable(k.sim_step, self._on_step),
             session.declare_queryable(k.all_states, self._on_state),
             session.declare_subscriber(k.all_actions, self._on_command),
+            session.declare_subscriber(k.all_trajectories, self._on_trajectory),
         ]
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
@@ -218,7 +226,7 @@ class CellNode:
                     f"this node serves the scene {self.scene.source} "
                     f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
                 )
-            records: list[Record] = []
+            records: list[LogRecord] = []
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = _Episode(episode, cell, records)
@@ -392,16 +400,16 @@ class CellNode:
             raise BusError(f"no episode {str(episode)[:40]!r} on this node; reset first")
         return ep
 
-    def _flush(self) -> list[Record]:
-        """The cell's new log records, with its action ids turned into the executor's."""
+    def _flush(self) -> list[dict[str, Any]]:
+        """The cell's new log records (as JSON), with its action ids turned into the executor's."""
         ep = self._ep
         if ep is None:
             return []
         out = []
         for rec in ep.records:
-            if "handle" in rec and rec["handle"] in ep.by_cell_id:
-                rec = {**rec, "handle": ep.by_cell_id[rec["handle"]]}
-            out.append(rec)
+            if isinstance(rec, HANDLED) and rec.handle in ep.by_cell_id:
+                rec = replace(rec, handle=ep.by_cell_id[rec.handle])
+            out.append(rec.to_json())
         ep.records.clear()
         return out
 
@@ -431,7 +439,14 @@ class CellNode:
                     self.stats.duplicates += 1
                     self._publish(ep, ep.latest[cmd.handle])
                     return
-                h = ep.cell.start(cmd.action, cmd.t)
+                if cmd.motion:
+                    plan = self._motion(ep, cmd)
+                    if plan is None:  # not all here yet: no acknowledgement, so it comes again
+                        self.stats.waiting += 1
+                        return
+                    h = ep.cell.start(cmd.action, cmd.t, motion=plan)
+                else:
+                    h = ep.cell.start(cmd.action, cmd.t)
                 ep.handles[cmd.handle] = h
                 ep.by_cell_id[h.id] = cmd.handle
                 self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
@@ -448,6 +463,42 @@ class CellNode:
                 return
             ep.cell.halt(h, cmd.t, cmd.reason)
             self._report(ep, cmd.handle, ep.cell.poll(h, cmd.t))
+
+    def _on_trajectory(self, sample: Any) -> None:
+        """A robot's joint trajectory for an action about to start (kept until its start)."""
+        try:
+            att = sample.attachment
+            meta = loads(b"" if att is None else att.to_bytes(), "trajectory attachment")
+            wire = decode_trajectory(sample.payload.to_bytes())
+            traj = JointTrajectory(
+                wire.robot, wire.joint_names, wire.times, wire.positions, wire.velocities
+            )
+            episode, handle = str(meta["episode"]), int(meta["handle"])
+            events = tuple((float(t), str(k), str(r)) for t, k, r in meta["events"])
+            duration = float(meta["duration"])
+        except (BusError, KeyError, TypeError, ValueError):
+            self.stats.malformed += 1
+            return
+        with self._lock:
+            ep = self._ep
+            if ep is None or ep.id != episode or self._closed:
+                self.stats.stale += 1
+                return
+            self.stats.trajectories += 1
+            ep.trajectories.setdefault(handle, {})[traj.robot] = traj
+            ep.plans[handle] = (events, duration)
+
+    def _motion(self, ep: _Episode, cmd: Command) -> MotionPlan | None:
+        """The motion plan of a start, once every robot's trajectory has arrived."""
+        got = ep.trajectories.get(cmd.handle, {})
+        if not all(r in got for r in cmd.motion):
+            return None
+        events, duration = ep.plans[cmd.handle]
+        try:
+            return MotionPlan(tuple(got[r] for r in cmd.motion), events, duration)
+        except ValueError:  # inconsistent pieces: wait for the retransmitted ones
+            self.stats.malformed += 1
+            return None
 
     def _feedback(
         self, ep: _Episode, t: float, latest: dict[int, Report], *, publish: bool
