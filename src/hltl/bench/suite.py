@@ -686,6 +686,18 @@ class AblationOptions:
         return " ".join(parts)
 
 
+def solved_by_all(
+    results: Iterable[TrialResult], variants: Sequence[Variant]
+) -> set[tuple[str, int]]:
+    """The (configuration, trial) pairs every variant solved: paired times compare those."""
+    names = [v.name for v in variants]
+    solved: dict[tuple[str, int], set[str]] = {}
+    for r in results:
+        if r.status == "ok" and r.success and r.time_cost is not None:
+            solved.setdefault((r.config, r.index), set()).add(r.variant)
+    return {k for k, vs in solved.items() if all(n in vs for n in names)}
+
+
 def ablation_extra(
     results: Sequence[TrialResult], variants: Sequence[Variant]
 ) -> dict[str, dict[str, float]]:
@@ -694,12 +706,7 @@ def ablation_extra(
     compared on the same trials), takeovers, anticipatory dispatches and the computation time
     charged on the critical path per trial."""
     ok = [r for r in results if r.status == "ok"]
-    names = [v.name for v in variants]
-    solved: dict[tuple[str, int], set[str]] = {}
-    for r in ok:
-        if r.success and r.time_cost is not None:
-            solved.setdefault((r.config, r.index), set()).add(r.variant)
-    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
+    common = solved_by_all(ok, variants)
     extra: dict[str, dict[str, float]] = {}
     for v in variants:
         rs = [r for r in ok if r.variant == v.name]

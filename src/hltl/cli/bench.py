@@ -276,11 +276,14 @@ def run_bus(args: argparse.Namespace) -> int:
 def run_sim3d(args: argparse.Namespace) -> int:
     import datetime
 
-    from hltl.sim3d.bench import bench_sim3d, format_sim3d
+    from hltl.bench.sim3d import bench_sim3d, format_sim3d  # the sim3d extra (MuJoCo)
+    from hltl.viz.demo3d import run_demo3d  # numpy and PIL: only this subcommand needs them
 
     if args.frames < 1:
         raise HltlError(f"--frames must be at least 1, got {args.frames}")
-    b = bench_sim3d(frames=args.frames, demo=args.demo)
+    b = bench_sim3d(
+        frames=args.frames, demo=(lambda out: run_demo3d(out=out)) if args.demo else None
+    )
     command = "hltl bench sim3d" + (" --demo" if args.demo else "")
     if args.write is not None:
         command += f" --write {shlex.quote(str(args.write))}"

@@ -24,6 +24,7 @@ from hltl.spec.syntax import (
     Always,
     And,
     Atom,
+    Binary,
     Equiv,
     Eventually,
     FalseF,
@@ -34,6 +35,7 @@ from hltl.spec.syntax import (
     Or,
     Release,
     TrueF,
+    Unary,
     Until,
     WeakNext,
 )
@@ -256,9 +258,9 @@ def substitute_atoms(f: Formula, replace: Callable[[Atom], Formula]) -> Formula:
         return replace(f)
     if isinstance(f, TrueF | FalseF):
         return f
-    if isinstance(f, Not | Next | WeakNext | Eventually | Always):
+    if isinstance(f, Unary):
         return type(f)(substitute_atoms(f.operand, replace))
-    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+    if isinstance(f, Binary):
         return type(f)(substitute_atoms(f.left, replace), substitute_atoms(f.right, replace))
     raise TypeError(f"not a formula: {f!r}")
 
@@ -291,15 +293,14 @@ def _to_ltlf2dfa(f: Formula, mod: Any) -> Any:
         return mod.LTLfTrue()
     if isinstance(f, FalseF):
         return mod.LTLfFalse()
-    if isinstance(f, Not):
-        return mod.LTLfNot(_to_ltlf2dfa(f.operand, mod))
     unary = {
+        Not: mod.LTLfNot,
         Next: mod.LTLfNext,
         WeakNext: mod.LTLfWeakNext,
         Eventually: mod.LTLfEventually,
         Always: mod.LTLfAlways,
     }
-    if isinstance(f, Next | WeakNext | Eventually | Always):
+    if isinstance(f, Unary):
         return unary[type(f)](_to_ltlf2dfa(f.operand, mod))
     binary = {
         And: mod.LTLfAnd,
@@ -309,7 +310,7 @@ def _to_ltlf2dfa(f: Formula, mod: Any) -> Any:
         Until: mod.LTLfUntil,
         Release: mod.LTLfRelease,
     }
-    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+    if isinstance(f, Binary):
         return binary[type(f)]([_to_ltlf2dfa(f.left, mod), _to_ltlf2dfa(f.right, mod)])
     raise TypeError(f"not a formula: {f!r}")
 
