@@ -408,7 +408,7 @@ def _check_not_dropped(result: Grounding, done: frozenset[str]) -> None:
 def _apply(
     instruction: str, scene: Scene, running: HSpec, grounder: Grounder, done: frozenset[str]
 ) -> Grounding:
-    lexicon = Lexicon(scene)
+    lexicon = Lexicon.of(scene)
     cmd = classify(instruction, lexicon)
     if cmd.kind in ("add", "then", "first"):
         if not cmd.text.strip():
