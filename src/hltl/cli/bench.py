@@ -38,7 +38,7 @@ from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
-from hltl.bench.soak import run_soak, soak_jobs, summary
+from hltl.bench.soak import SoakResult, run_soak, soak_jobs, summary
 from hltl.bench.suite import (
     ABLATION_VARIANTS,
     METHODS,
@@ -51,8 +51,9 @@ from hltl.bench.suite import (
     run_suite,
     run_suite_command,
 )
+from hltl.bench.sweep import SweepExecutor
 from hltl.errors import HltlError
-from hltl.fileio import write_output
+from hltl.fileio import open_output, write_output
 
 
 def register(sub: Any) -> None:
@@ -113,6 +114,12 @@ def register(sub: Any) -> None:
     )
     su.add_argument("--jobs", type=int, default=2, help="worker processes")
     su.add_argument("--seed", type=int, default=0, help="suite seed (trial seeds derive from it)")
+    su.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     su.add_argument("--max-time", type=float, default=120.0, help="simulated seconds per trial")
     su.add_argument(
         "--flat-trials", type=int, default=2, help="trials per configuration for flat LTLf"
@@ -135,7 +142,18 @@ def register(sub: Any) -> None:
     so.add_argument("--episodes", type=int, default=130, help="episodes (cycling the catalogue)")
     so.add_argument("--jobs", type=int, default=2, help="worker processes")
     so.add_argument("--seed", type=int, default=0, help="soak seed (episode seeds derive from it)")
+    so.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     so.add_argument("--json", type=Path, help="write every episode's result here")
+    so.add_argument(
+        "--stream",
+        type=Path,
+        help="append each episode's result here as it finishes (JSON Lines; kept if interrupted)",
+    )
     so.set_defaults(func=run_soak_cmd)
 
     ab = bsub.add_parser("ablation", help="Table III: fluency metrics of executor variants")
@@ -143,6 +161,12 @@ def register(sub: Any) -> None:
     ab.add_argument("--configs", default="", help="comma-separated configurations (default: all)")
     ab.add_argument("--jobs", type=int, default=2, help="worker processes")
     ab.add_argument("--seed", type=int, default=0, help="suite seed")
+    ab.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     ab.add_argument(
         "--plan-latency",
         type=float,
@@ -554,6 +578,7 @@ def run_suite_cmd(args: argparse.Namespace) -> int:
         write=args.write,
         figures=args.figures,
         json=args.json,
+        executor=args.executor,
         walks=args.walks,
     )
     configs = configs_from(opts.configs)
@@ -610,16 +635,28 @@ def run_soak_cmd(args: argparse.Namespace) -> int:
     """Run the soak; exit 1 when any episode was unsafe, lost work, crashed or hung."""
     if args.episodes < 1 or args.jobs < 1:
         raise HltlError("--episodes and --jobs must be at least 1")
+    executor = SweepExecutor.parse(args.executor)
     jobs = soak_jobs(args.episodes, args.seed)
+    stream = None if args.stream is None else open_output(args.stream, "the soak stream")
     with _progress("hltl bench soak") as progress:
         task = progress.add_task("", total=len(jobs))
+
+        def done(r: SoakResult) -> None:
+            progress.update(task, advance=1, description=r.scenario)
+            if stream is not None:  # one line per episode, flushed: a killed run keeps its part
+                stream.write(json.dumps(asdict(r)) + "\n")
+                stream.flush()
+
         t0 = time.perf_counter()
-        results = run_soak(
-            jobs, args.jobs, lambda r: progress.update(task, advance=1, description=r.scenario)
-        )
+        try:
+            results = run_soak(jobs, args.jobs, done, executor)
+        finally:
+            if stream is not None:
+                stream.close()
         wall = time.perf_counter() - t0
     s = summary(results)
-    print(json.dumps({**s, "wall_s": round(wall, 1), "jobs": args.jobs}, indent=2))
+    shown = {**s, "wall_s": round(wall, 1), "jobs": args.jobs, "executor": str(executor)}
+    print(json.dumps(shown, indent=2))
     if args.json is not None:
         write_output(args.json, "the soak results", json.dumps([asdict(r) for r in results]))
     harm = s["violations"] + s["lost"] + s["duplicated"] + s["crash"] + s["hang"]
@@ -646,6 +683,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         walks=args.walks,
         write=args.write,
         json=args.json,
+        executor=args.executor,
     )
     configs = configs_from(opts.configs)
     variants = opts.variants()
@@ -657,7 +695,9 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             progress.update(task, advance=1, description=f"{r.variant} {r.config}#{r.index}")
 
         t0 = time.perf_counter()
-        results = run_suite(jobs, workers=opts.jobs, on_result=tick)
+        results = run_suite(
+            jobs, workers=opts.jobs, on_result=tick, executor=SweepExecutor.parse(opts.executor)
+        )
         wall = time.perf_counter() - t0
     table = report.format_table_iii(report.fluency(results), ablation_extra(results, variants))
     groups = report.format_ablation_groups(results, variants)
