@@ -13,7 +13,9 @@ from typing import Literal
 import yaml
 
 from hltl.errors import GroundingError, HltlError
+from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.grounding.tree import Group, Node, Op, Task
+from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene, load_scene
 
 Verdict = Literal["exact", "refused", "unclear", "wrong"]
@@ -151,9 +153,6 @@ def load_corpus(path: Path, root: Path) -> Corpus:
 
 def judge(entry: Entry, scene: Scene, ground: Callable[[str, Scene], Node]) -> Outcome:
     """Ground one entry and judge it by language equivalence (hltl.spec.equivalence)."""
-    from hltl.grounding.offline import spec_of
-    from hltl.spec.equivalence import counterexample
-
     t0 = time.perf_counter()
     try:
         got: Node | None = ground(entry.text, scene)
@@ -199,8 +198,6 @@ def repository_root() -> Path:
 
 def offline_tree(text: str, scene: Scene) -> Node:
     """The offline grounder's task tree (what ``OfflineGrounder.ground`` encodes)."""
-    from hltl.grounding.offline import parse_instruction
-
     return parse_instruction(text, scene)
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from hltl.bench.suite import TrialResult, Variant, solved_by_all
+from hltl.errors import BackendUnavailableError
 from hltl.execution.latency import LatencyModel
 from hltl.sim.dynamic import config_of
 
@@ -492,8 +493,6 @@ def plot_suite(
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        from hltl.errors import BackendUnavailableError
-
         raise BackendUnavailableError("plots need matplotlib: pip install 'hltl[viz]'") from None
     directory.mkdir(parents=True, exist_ok=True)
     ran = [m for m in methods if any(cells.get((m, c), Cell(m, c, "none")).n for c in configs)]

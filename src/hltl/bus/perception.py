@@ -22,6 +22,9 @@ from typing import TYPE_CHECKING, Any
 from hltl.bus.codec import StampedPose, dumps, encode_pose, loads
 from hltl.bus.keys import Keys
 from hltl.errors import BusError
+from hltl.perception.geometry import Cylinder
+from hltl.perception.observe import ObjectObservation, Observation, fuse
+from hltl.perception.people import PersonObservation
 from hltl.world.state import WorldState
 
 if TYPE_CHECKING:
@@ -82,9 +85,6 @@ def observation_from_wire(d: Mapping[str, Any]) -> Observation:
     Raises:
         BusError: the record is malformed (names what).
     """
-    from hltl.perception.geometry import Cylinder
-    from hltl.perception.observe import ObjectObservation, Observation
-    from hltl.perception.people import PersonObservation
 
     def opt(x: Any) -> str | None:
         return None if x is None else str(x)
@@ -246,7 +246,6 @@ class PerceptionClient:
         obs = self.latest(world.t)
         if obs is None:
             return world
-        from hltl.perception.observe import fuse
 
         return fuse(world, obs)
 

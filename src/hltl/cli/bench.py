@@ -24,6 +24,15 @@ from rich.progress import (
 from rich.table import Table
 
 from hltl.bench import report
+from hltl.bench.cells import (
+    CELL_LAYOUTS,
+    FAMILIES,
+    delivery_cell,
+    format_cells,
+    mixed_cell,
+    run_cells,
+    startup_times,
+)
 from hltl.bench.grounding import (
     CORPUS_DIR,
     PARTS,
@@ -35,9 +44,11 @@ from hltl.bench.grounding import (
 )
 from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
+from hltl.bench.motion import bench_motion, format_motion
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
+from hltl.bench.sim3d import bench_sim3d, format_sim3d
 from hltl.bench.soak import SoakResult, run_soak, soak_jobs, summary
 from hltl.bench.suite import (
     ABLATION_VARIANTS,
@@ -52,8 +63,11 @@ from hltl.bench.suite import (
     run_suite_command,
 )
 from hltl.bench.sweep import SweepExecutor
+from hltl.bus.bench import bench_bus, format_bus
+from hltl.cli.bench_perception import run
 from hltl.errors import HltlError
 from hltl.fileio import open_output, write_output
+from hltl.viz.demo3d import run_demo3d
 
 
 def register(sub: Any) -> None:
@@ -276,8 +290,6 @@ def register(sub: Any) -> None:
 
 
 def run_bus(args: argparse.Namespace) -> int:
-    from hltl.bus.bench import bench_bus, format_bus
-
     if args.round_trips < 1 or args.episodes < 1:
         raise HltlError("--round-trips and --episodes must be at least 1")
     console = Console(stderr=True)
@@ -299,9 +311,6 @@ def run_bus(args: argparse.Namespace) -> int:
 
 def run_sim3d(args: argparse.Namespace) -> int:
     import datetime
-
-    from hltl.bench.sim3d import bench_sim3d, format_sim3d  # the sim3d extra (MuJoCo)
-    from hltl.viz.demo3d import run_demo3d  # numpy and PIL: only this subcommand needs them
 
     if args.frames < 1:
         raise HltlError(f"--frames must be at least 1, got {args.frames}")
@@ -384,16 +393,6 @@ def _sizes(text: str, option: str) -> list[int]:
 
 
 def run_planner_cells(args: argparse.Namespace) -> int:
-    from hltl.bench.cells import (
-        CELL_LAYOUTS,
-        FAMILIES,
-        delivery_cell,
-        format_cells,
-        mixed_cell,
-        run_cells,
-        startup_times,
-    )
-
     try:
         short, long = (float(x) for x in args.budgets.split(","))
     except ValueError:
@@ -517,8 +516,6 @@ def run_grounding(args: argparse.Namespace) -> int:
 
 
 def run_motion(args: argparse.Namespace) -> int:
-    from hltl.bench.motion import bench_motion, format_motion
-
     if min(args.ik_solves, args.probes, args.runs) < 1 or args.workers < 0:
         raise HltlError("--ik-solves, --probes and --runs must be >= 1, --workers >= 0")
     quick = args.quick
@@ -547,8 +544,6 @@ def run_motion(args: argparse.Namespace) -> int:
 
 
 def run_perception(args: argparse.Namespace) -> int:
-    from hltl.cli.bench_perception import run
-
     return run(args)
 
 

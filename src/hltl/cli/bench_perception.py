@@ -7,26 +7,26 @@ import datetime
 import shlex
 import sys
 
+from hltl.bench.markdown import machine, write_section
+from hltl.bench.perception import (
+    _three,
+    evaluate_predictors,
+    format_loop,
+    format_objects,
+    format_people,
+    format_prediction,
+    loop_bench,
+    object_bench,
+    people_bench,
+    suite_walks,
+)
 from hltl.errors import HltlError
+from hltl.perception.gru import load_model
+from hltl.sim.scenarios import get
+from hltl.sim3d.gl import require_renderer
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.bench.markdown import machine, write_section
-    from hltl.bench.perception import (
-        _three,
-        evaluate_predictors,
-        format_loop,
-        format_objects,
-        format_people,
-        format_prediction,
-        loop_bench,
-        object_bench,
-        people_bench,
-        suite_walks,
-    )
-    from hltl.perception.gru import load_model
-    from hltl.sim.scenarios import get
-
     if args.walks < 1:
         raise HltlError(f"--walks: expected a positive integer, got {args.walks!r}")
     quick = args.quick
@@ -40,7 +40,6 @@ def run(args: argparse.Namespace) -> int:
     say("prediction: the simulator's walks in the catalogue cells")
     pred.append(("suite H-MOVE walks", _three(model, suite_walks(legs=1 if quick else 3), 2)))
     tables = ["### Trajectory prediction\n\n" + format_prediction(pred)]
-    from hltl.sim3d.gl import require_renderer
 
     try:
         require_renderer()

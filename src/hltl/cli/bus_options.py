@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
+from hltl.bus.driver import BusTiming, bus_cell
+from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
 from hltl.errors import HltlError
 
 if TYPE_CHECKING:
@@ -39,9 +41,6 @@ class BusSimulator:
     drives it; :meth:`close` tells the node the episode ended and closes the session."""
 
     def __init__(self, args: argparse.Namespace) -> None:
-        from hltl.bus.driver import BusTiming, bus_cell
-        from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
-
         if args.sim != "discrete":
             raise HltlError(
                 "--sim chooses the in-process simulator; with --bus the node chooses it "
@@ -60,7 +59,9 @@ class BusSimulator:
         self.opened: list[BusCell] = []
         self.perception = None
         if args.bus_perception is not None:
-            from hltl.bus.perception import PerceptionClient
+            from hltl.bus.perception import (
+                PerceptionClient,  # the bus extra (Zenoh), only with --bus-perception
+            )
 
             self.perception = PerceptionClient(self.session, cell=args.cell)
         make = bus_cell(

@@ -8,7 +8,14 @@ import threading
 from pathlib import Path
 from typing import Any
 
+from hltl.bus.node import CellNode, serve
+from hltl.bus.perception import serve_frames
+from hltl.bus.session import BusConfig, open_session
+from hltl.cli.sim3d import simulator_options
 from hltl.errors import HltlError
+from hltl.perception.frames import FrameFolder
+from hltl.perception.observe import Perceiver
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -102,10 +109,6 @@ def register(sub: Any) -> None:
 def run_sim(args: argparse.Namespace) -> int:
     from rich.console import Console
 
-    from hltl.bus.node import CellNode, serve
-    from hltl.bus.session import BusConfig, open_session
-    from hltl.world.scene import load_scene
-
     if args.episodes is not None and args.episodes < 1:
         raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
     scene = load_scene(args.scene)
@@ -146,12 +149,6 @@ def run_sim(args: argparse.Namespace) -> int:
 def run_perception(args: argparse.Namespace) -> int:
     from rich.console import Console
 
-    from hltl.bus.perception import serve_frames
-    from hltl.bus.session import BusConfig, open_session
-    from hltl.perception.frames import FrameFolder
-    from hltl.perception.observe import Perceiver
-    from hltl.world.scene import load_scene
-
     if not (args.wait >= 0):
         raise HltlError(f"--wait must be a number of seconds >= 0, got {args.wait!r}")
     folder = FrameFolder(args.frames)
@@ -189,12 +186,12 @@ def run_perception(args: argparse.Namespace) -> int:
 def _factory(args: argparse.Namespace, scene: Any) -> Any:
     """What makes each episode's world: the discrete-event simulator, or the 3D one."""
     if args.sim == "discrete":
-        from hltl.sim.simulator import Simulator
+        from hltl.sim.simulator import Simulator  # only the simulator asked for
 
         if args.motion:
             import functools
 
-            from hltl.motion.cost import motion_models
+            from hltl.motion.cost import motion_models  # the motion extra, only with --motion
 
             kinematics, cost = motion_models(scene)
             return functools.partial(Simulator, cost=cost, kinematics=kinematics)
@@ -204,7 +201,6 @@ def _factory(args: argparse.Namespace, scene: Any) -> Any:
             "--motion times the discrete simulator; the 3D simulator (--sim mujoco) always "
             "follows the joint trajectories it receives"
         )
-    from hltl.cli.sim3d import simulator_options
 
     extra, _ = simulator_options(scene, args.timing, None)  # compiles the model once, up front
     return extra["simulator"]

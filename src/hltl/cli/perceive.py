@@ -9,6 +9,10 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.perception.frames import FrameFolder
+from hltl.perception.language import Candidate, select
+from hltl.perception.observe import Perceiver
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -42,10 +46,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.perception.frames import FrameFolder
-    from hltl.perception.observe import Perceiver
-    from hltl.world.scene import load_scene
-
     folder = FrameFolder(args.frames)
     scene = load_scene(args.scene) if args.scene is not None else None
     has_seg = folder.frame(0).seg is not None
@@ -57,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
         raise HltlError(str(exc)) from None
     predictor = None
     if args.viz is not None and scene is not None:
-        from hltl.perception.predict import make_predictor
+        from hltl.perception.predict import make_predictor  # only with --viz
 
         predictor = make_predictor(args.predictor, scene)
     observations = []
@@ -67,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
         if predictor is not None:
             predictor.observe(obs.t, [(p.person, p.position) for p in obs.people if p.person])
         if args.viz is not None:
-            from hltl.perception.overlay import draw_overlay
+            from hltl.perception.overlay import draw_overlay  # the viz extra (PIL), only with --viz
 
             args.viz.mkdir(parents=True, exist_ok=True)
             draw_overlay(frame, folder.camera, obs, predictor, perceiver).save(
@@ -97,8 +97,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _select(words: str, obs: Any, scene: Any) -> Any:
-    from hltl.perception.language import Candidate, select
-
     cands = []
     for k, o in enumerate(obs.objects):
         ws = [o.label]

@@ -64,7 +64,7 @@ from hltl.execution.safety import (
 from hltl.execution.tick import ExecStatus as ExecStatus  # its historical home
 from hltl.execution.tick import TickTemplate
 from hltl.fileio import quote
-from hltl.planner import PlanResult, PlanStatus, PlanStep
+from hltl.planner import PlanResult, PlanStatus, PlanStep, plan
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
@@ -109,8 +109,6 @@ class ExactPlanner:
         monitor: HierarchyMonitor,
         q0: MonitorState,
     ) -> PlanResult:
-        from hltl.planner import plan
-
         return plan(
             scene,
             spec,

@@ -40,6 +40,7 @@ from hltl.grounding.tree import (
     normalise,
     tasks,
 )
+from hltl.spec.hierarchy import spec_from_dict
 
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
@@ -57,7 +58,9 @@ class OfflineGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (see update.py)."""
         if running is not None:
-            from hltl.grounding.update import ground_update
+            from hltl.grounding.update import (
+                ground_update,  # import cycle: grounding.update imports this module
+            )
 
             return ground_update(instruction, scene, running, self)
         node = parse_instruction(instruction, scene)
@@ -66,8 +69,6 @@ class OfflineGrounder:
 
 def spec_of(node: Node) -> HSpec:
     """The H-LTLf spec of a task tree, validated by the spec module."""
-    from hltl.spec.hierarchy import spec_from_dict
-
     formulas = encode(node)
     return spec_from_dict({"root": "p0", "formulas": formulas}, source="<grounding>")
 
