@@ -11,6 +11,7 @@ from typing import Any
 from hltl.bus.node import CellNode, serve
 from hltl.bus.perception import serve_frames
 from hltl.bus.session import BusConfig, open_session
+from hltl.cli.perceive import frame_options
 from hltl.cli.sim3d import simulator_options
 from hltl.errors import HltlError
 from hltl.perception.frames import FrameFolder
@@ -74,17 +75,9 @@ def register(sub: Any) -> None:
         "hltl/<cell>/perception, people as PoseStamped on hltl/<cell>/humans/<h>/pose. "
         "'hltl run --bus zenoh --bus-perception zenoh' fuses them into the executor's world.",
     )
-    c.add_argument("frames", type=Path, metavar="FRAMES_DIR", help="frame folder")
-    c.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
-    c.add_argument(
-        "--backend",
-        choices=("segmentation", "depth-clusters"),
-        help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
-    )
-    c.add_argument(
-        "--people",
-        choices=("segmentation", "depth", "fused", "yolo", "none"),
-        help="person detector (default: segmentation when the folder has seg/, else depth)",
+    frame_options(
+        c,
+        people_help="person detector (default: segmentation when the folder has seg/, else depth)",
     )
     c.add_argument("--cell", default="default", help="the cell's name in key expressions")
     c.add_argument(

@@ -15,14 +15,8 @@ from hltl.perception.observe import Perceiver
 from hltl.world.scene import load_scene
 
 
-def register(sub: Any) -> None:
-    p: argparse.ArgumentParser = sub.add_parser(
-        "perceive",
-        help="objects in 3D and tracked people from an RGB-D frame folder",
-        description="Read a frame folder (camera.json, rgb/, depth/, optional seg/), detect and "
-        "localise objects, track people and tie them to the scene's people. Prints the last "
-        "frame's objects and people and what could not be decided.",
-    )
+def frame_options(p: argparse.ArgumentParser, *, people_help: str) -> None:
+    """Frame folder and backend options shared by ``perceive`` and ``node perception``."""
     p.add_argument("frames", type=Path, metavar="FRAMES_DIR", help="frame folder")
     p.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
     p.add_argument(
@@ -31,9 +25,22 @@ def register(sub: Any) -> None:
         help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
     )
     p.add_argument(
-        "--people",
-        choices=("segmentation", "depth", "fused", "yolo", "none"),
-        help="person detector for the tracker: depth = body columns on the floor plan, fused = "
+        "--people", choices=("segmentation", "depth", "fused", "yolo", "none"), help=people_help
+    )
+
+
+def register(sub: Any) -> None:
+    p: argparse.ArgumentParser = sub.add_parser(
+        "perceive",
+        help="objects in 3D and tracked people from an RGB-D frame folder",
+        description="Read a frame folder (camera.json, rgb/, depth/, optional seg/), detect and "
+        "localise objects, track people and tie them to the scene's people. Prints the last "
+        "frame's objects and people and what could not be decided.",
+    )
+    frame_options(
+        p,
+        people_help="person detector for the tracker: depth = body columns on the floor plan, "
+        "fused = "
         "depth confirmed by YOLO every 10th frame (default: segmentation when the folder has "
         "seg/, else depth)",
     )

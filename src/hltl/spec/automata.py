@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import AutomatonError, BackendUnavailableError
+from hltl.fileio import cache_dir
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import (
     Always,
@@ -603,12 +604,7 @@ DISK_FORMAT = 1
 def disk_cache_dir() -> Path | None:
     """Where the default cache keeps tables across processes: ``$HLTL_CACHE_DIR/dfa``, else
     ``$XDG_CACHE_HOME/hltl/dfa`` or ``~/.cache/hltl/dfa``; ``HLTL_CACHE_DIR=off`` disables it."""
-    root = os.environ.get("HLTL_CACHE_DIR")
-    if root is not None:
-        return None if root in ("", "off", "0") else Path(root) / "dfa"
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    base = Path(xdg) if xdg else Path.home() / ".cache"
-    return base / "hltl" / "dfa"
+    return cache_dir("dfa")
 
 
 _default_cache = AutomatonCache(disk=disk_cache_dir())
