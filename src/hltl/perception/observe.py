@@ -159,7 +159,7 @@ class Perceiver:
     def process(self, frame: Frame) -> Observation:
         t0 = time.perf_counter()
         dets = self.backend.detect(frame, self.camera)
-        located = localize(frame, self.camera, dets, self.backend.planes)
+        located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
         objects, unmatched, ambiguous = match_objects(self.scene, located)
         people = self.tracker.update(frame, self.camera) if self.tracker is not None else []
         seen = {o.id for o in objects}
