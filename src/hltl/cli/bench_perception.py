@@ -19,9 +19,11 @@ def run(args: argparse.Namespace) -> int:
         format_objects,
         format_people,
         format_prediction,
+        format_skeleton,
         loop_bench,
         object_bench,
         people_bench,
+        skeleton_bench,
         suite_walks,
     )
     from hltl.perception.gru import load_model
@@ -55,6 +57,14 @@ def run(args: argparse.Namespace) -> int:
         say("people: two people crossing")
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))
+        from hltl.perception.skeleton import pose_python
+
+        if pose_python().is_file():
+            say("skeletons: MediaPipe pose worker")
+            sk = skeleton_bench(scenes[0], frames=10 if quick else 40)
+            tables.append("### Skeletons of the crossing people\n\n" + format_skeleton(sk))
+        else:
+            say(f"skeletons skipped: no pose environment at {pose_python()}")
         if args.loop_trials > 0 and not quick:
             from hltl.sim.dynamic import config_names
 
