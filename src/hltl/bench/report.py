@@ -13,7 +13,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from hltl.bench.suite import TrialResult
+from hltl.bench.suite import TrialResult, Variant
+from hltl.execution.latency import LatencyModel
+from hltl.sim.dynamic import config_of
 
 Z95 = 1.959963984540054
 
@@ -39,7 +41,14 @@ PAPER_TABLE_III: dict[str, tuple[tuple[float, float], ...]] = {
     "no-pmp": ((68.6, 17.9), (42.7, 11.9), (60.8, 14.0), (-4.2, 8.6)),
 }
 METHOD_LABELS = {"hltl": "hltl", "greedy": "Greedy-R", "smart-llm": "SMART-LLM-R"}
-VARIANT_LABELS = {"full": "full", "no-pp": "w/o P.P.", "no-pmp": "w/o P.M.P. (serial replanning)"}
+VARIANT_LABELS = {
+    "full": "full",
+    "no-pp": "w/o P.P.",
+    "no-pmp": "w/o P.M.P. (serial replanning)",
+    "goal": "full, goal-directed predictor",
+    "antic-goal": "+ anticipation (goal-directed)",
+    "antic-gru": "+ anticipation (GRU)",
+}
 
 
 def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:
@@ -236,7 +245,7 @@ def format_table_iii(
 ) -> str:
     """Table III's layout (mean ± std, %), the paper's rows beside ours; ``extra`` adds columns
     per variant (e.g. time cost, takeovers)."""
-    extra_keys = sorted({k for v in (extra or {}).values() for k in v})
+    extra_keys = list(dict.fromkeys(k for v in (extra or {}).values() for k in v))
     head = [
         "Variant",
         "H-IDLE ↓ (%)",
@@ -249,7 +258,7 @@ def format_table_iii(
         *extra_keys,
     ]
     lines = ["| " + " | ".join(head) + " |", "|---|" + "---:|" * (len(head) - 1)]
-    for variant in ("full", "no-pp", "no-pmp"):
+    for variant in VARIANT_LABELS:
         if variant in stats:
             s = stats[variant]
             row = [f"hltl {VARIANT_LABELS[variant]}"]
@@ -258,11 +267,71 @@ def format_table_iii(
             row += [f"{(extra or {}).get(variant, {}).get(k, math.nan):.3g}" for k in extra_keys]
             lines.append("| " + " | ".join(row) + " |")
     for variant, vals in PAPER_TABLE_III.items():
-        row = [f"*paper {VARIANT_LABELS[variant].split(' (')[0]}*"]
+        row = [f"*paper {VARIANT_LABELS[variant].split(' (', 1)[0]}*"]
         row += [f"*{m:.1f} ± {sd:.1f}*" for m, sd in vals]
         row += [""] * (len(_FLUENCY_ADDED) + len(extra_keys))
         lines.append("| " + " | ".join(row) + " |")
     return "\n".join(lines)
+
+
+def _group(r: TrialResult) -> str:
+    robots = config_of(r.config)[1]
+    if robots == 1:
+        return "1 robot"
+    return "multi-robot, T2 walk" if r.extra.get("walk") == "t2" else "multi-robot, random walk"
+
+
+def format_ablation_groups(results: Iterable[TrialResult], variants: Sequence[Variant]) -> str:
+    """The ablation split by cell (one robot; several robots with a random or a T2-style
+    walk), then per configuration: trials, success, time over the trials every variant solved
+    (paired), H-IDLE and R-IDLE, anticipatory dispatches. Prediction cannot help a one-robot
+    cell (nobody else can serve a person who moves), so the split shows where it can."""
+    ok = [r for r in results if r.status == "ok"]
+    names = [v.name for v in variants]
+    solved: dict[tuple[str, int], set[str]] = {}
+    for r in ok:
+        if r.success and r.time_cost is not None:
+            solved.setdefault((r.config, r.index), set()).add(r.variant)
+    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
+
+    def cells(rs: list[TrialResult]) -> list[str]:
+        paired = [r.time_cost for r in rs if (r.config, r.index) in common and r.time_cost]
+        h = [r.h_idle for r in rs if r.h_idle is not None]
+        ri = [r.r_idle for r in rs if r.r_idle is not None]
+        ant = [float(r.extra.get("anticipations", 0)) for r in rs]
+
+        def f(v: list[float], fmt: str) -> str:
+            return format(statistics.fmean(v), fmt) if v else "–"
+
+        return [
+            str(len(rs)),
+            f"{100.0 * sum(r.success for r in rs) / max(1, len(rs)):.0f}",
+            f(paired, ".2f"),
+            f(h, ".1f"),
+            f(ri, ".1f"),
+            f(ant, ".2f"),
+        ]
+
+    head = (
+        "| {} | variant | trials | success % | time paired s | H-IDLE % | R-IDLE % "
+        "| anticip./trial |"
+    )
+    sep = "|---|---|---:|---:|---:|---:|---:|---:|"
+    out = ["By cell:", "", head.format("cells"), sep]
+    groups = ("1 robot", "multi-robot, random walk", "multi-robot, T2 walk")
+    for g in groups:
+        for v in names:
+            rs = [r for r in ok if r.variant == v and _group(r) == g]
+            if rs:
+                label = VARIANT_LABELS.get(v, v)
+                out.append("| " + " | ".join([g, label, *cells(rs)]) + " |")
+    out += ["", "By configuration:", "", head.format("config"), sep]
+    for c in dict.fromkeys(r.config for r in ok):
+        for v in names:
+            rs = [r for r in ok if r.variant == v and r.config == c]
+            if rs:
+                out.append("| " + " | ".join([c, VARIANT_LABELS.get(v, v), *cells(rs)]) + " |")
+    return "\n".join(out)
 
 
 def failure_modes(results: Iterable[TrialResult]) -> dict[str, dict[str, int]]:
@@ -558,7 +627,9 @@ def suite_section(
         "success rate with the Wilson interval, time cost (successful trials, seconds from the "
         "start to the last goal, including the injected task) and tokens per query with "
         "seeded percentile-bootstrap intervals. Italic columns are the paper's Table II, for "
-        "reference: its tasks have no injected GOAL, so its times are not directly comparable.",
+        "reference. Whether its times include injected tasks is ambiguous (§V-A says its "
+        "simulator injects new tasks during execution; Table II and its text name only the "
+        "base tasks), so its times are not directly comparable with ours, which do.",
         "",
         "### Table II analogue",
         "",
@@ -620,24 +691,41 @@ def ablation_section(
     n: int,
     configs: Sequence[str],
     trials: int,
-    plan_latency: float,
+    variants: Sequence[Variant],
+    latency: LatencyModel | None,
+    plan_latency: float | None,
     serial_factor: float,
+    groups: str = "",
 ) -> str:
     """The Markdown body of docs/benchmarks.md's ``ablation`` section."""
+    if latency is None:
+        charged = (
+            f"every planner call costs a constant {plan_latency or 0.0:g} s of simulated time "
+            "(assumed, not measured)"
+        )
+    else:
+        charged = (
+            f"computation is charged where it occurs from the measured latency model "
+            f"({latency.describe()}; measured by {latency.source}): disruption replans in "
+            "full, routine post-step replans only beyond the step they overlap, a predicted "
+            "plan only for what remains of its background computation"
+        )
     return "\n".join(
         [
             f"Command: `{command}`  ",
             f"Machine: {machine}. Wall time {wall_s:.0f} s for {n} episodes "
-            f"({trials} trials × {len(configs)} configurations × 3 variants, the suite's "
-            "trials with H-MOVE and GOAL).",
+            f"({trials} trials × {len(configs)} configurations × {len(variants)} variants, the "
+            "suite's trials with H-MOVE and GOAL).",
             "",
-            f"Variants (see [evaluation.md](evaluation.md#ablations)): *full*: predictive "
-            f"planning on, every critical-path replan costs {plan_latency:g} s of simulated "
-            f"time, a predicted plan that takes over costs none; *w/o P.P.*: prediction off; "
-            f"*w/o P.M.P.*: prediction on, replanning computed serially, "
-            f"{plan_latency * serial_factor:g} s per replan. Fluency metrics over all trials "
-            "(mean ± std, %), the paper's rows in italic.",
+            f"Variants (see [evaluation.md](evaluation.md#ablations)): {charged}. *full*: "
+            "predictive planning on (constant-velocity forecasts); *w/o P.P.*: prediction off; "
+            f"*w/o P.M.P.*: prediction on, replanning computed serially ({serial_factor:g} × "
+            "the charge); *goal-directed predictor*: full with the goal-directed forecasts; "
+            "*+ anticipation*: anticipatory execution with the goal-directed or the learned "
+            "(GRU) predictor. Fluency metrics over all trials (mean ± std, %), the paper's rows "
+            "in italic; *time paired* averages the trials every variant solved.",
             "",
             table,
+            *(["", groups] if groups else []),
         ]
     )

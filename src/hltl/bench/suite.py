@@ -11,6 +11,7 @@ and :mod:`hltl.bench.baselines.pddl`.
 
 from __future__ import annotations
 
+import math
 import shlex
 import statistics
 import time
@@ -26,13 +27,26 @@ from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
 from hltl.bench.baselines.pddl import fd_unavailable, solve
 from hltl.bench.baselines.policy import Policy
 from hltl.bench.baselines.smart_llm import SmartLLMPolicy, llm_unavailable
+from hltl.bench.latency import DEFAULT_MODEL as DEFAULT_LATENCY_MODEL
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
+from hltl.execution.latency import LatencyModel, load_latency_model
 from hltl.execution.log import Record
+from hltl.execution.predict import TrajectoryPredictor
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
+from hltl.perception.gru import load_model
+from hltl.perception.predict import GRUPredictor, make_predictor, stop_places
 from hltl.planner import plan
-from hltl.sim.dynamic import Trial, config_names, config_of, full_spec, make_trial, trial_seed
+from hltl.sim.dynamic import (
+    WALKS,
+    Trial,
+    config_names,
+    config_of,
+    full_spec,
+    make_trial,
+    trial_seed,
+)
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.invariants import check_invariants
 from hltl.sim.metrics import Metrics
@@ -112,16 +126,24 @@ class Variant:
     """An executor variant for the ablation (Table III).
 
     Attributes:
-        name: ``full``, ``no-pp`` (without predictive planning) or ``no-pmp`` (serial
-            replanning computation, see docs/evaluation.md).
+        name: ``full``, ``no-pp`` (without predictive planning), ``no-pmp`` (serial
+            replanning computation), ``goal`` (the goal-directed predictor), ``antic-goal`` /
+            ``antic-gru`` (anticipatory execution with the goal-directed / learned predictor);
+            see docs/evaluation.md.
         predict: the executor's predictive planning and takeover.
-        plan_latency: simulated seconds every critical-path planner call costs before the next
-            dispatch (a predicted plan that takes over costs none).
+        plan_latency: a constant charged on every planner call (used only without
+            ``latency``).
+        latency: computation charged where it occurs (:mod:`hltl.execution.latency`).
+        predictor: ``cv``, ``goal`` or ``gru`` (:func:`hltl.perception.predict.make_predictor`).
+        anticipate: anticipatory execution.
     """
 
     name: str = "full"
     predict: bool = True
     plan_latency: float = 0.0
+    latency: LatencyModel | None = None
+    predictor: str = "cv"
+    anticipate: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -134,13 +156,14 @@ class TrialJob:
     suite_seed: int = 0
     variant: Variant = field(default_factory=Variant)
     max_time: float = 120.0
+    walks: str = "random"
 
 
 def run_trial(job: TrialJob) -> TrialResult:
     """Run one job; never raises (a crash is an ``error`` result naming the exception)."""
     t0 = time.perf_counter()
     try:
-        trial = make_trial(job.config, job.index, job.suite_seed)
+        trial = make_trial(job.config, job.index, job.suite_seed, job.walks)
     except HltlError as exc:
         return TrialResult(
             job.method,
@@ -170,6 +193,8 @@ def run_trial(job: TrialJob) -> TrialResult:
             reason=f"{type(exc).__name__}: {exc}",
             variant=job.variant.name,
         )
+    if res.status == "ok":
+        res = replace(res, extra={**res.extra, "walk": trial.walk})
     return replace(res, wall_s=round(time.perf_counter() - t0, 4))
 
 
@@ -218,7 +243,12 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
     v = job.variant
     cfg = EpisodeConfig(
         max_time=job.max_time,
-        executor=ExecutorConfig(predict=v.predict, plan_latency=v.plan_latency),
+        executor=ExecutorConfig(
+            predict=v.predict,
+            plan_latency=v.plan_latency,
+            latency=v.latency,
+            anticipate=v.anticipate,
+        ),
     )
     ep = run_episode(
         trial.scene,
@@ -227,8 +257,12 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         seed=trial.seed,
         config=cfg,
         grounder=OfflineGrounder(),
+        predictor=_predictor(v.predictor, trial),
     )
     m = ep.metrics
+    charged = [
+        float(r.get("charged_s", 0.0)) for r in ep.records if r["type"] in ("replan", "grounding")
+    ]
     groundings = [r for r in ep.records if r["type"] == "grounding" and "error" not in r]
     est = sum(estimate_grounding_tokens(str(r["text"]), trial.scene) for r in groundings)
     return _scored(
@@ -240,8 +274,30 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         tokens=m.tokens,
         queries=len(groundings),
         est_tokens=est,
-        extra={"takeovers": m.takeovers, "planner_calls": m.planner_calls},
+        extra={
+            "takeovers": m.takeovers,
+            "planner_calls": m.planner_calls,
+            "charged_s": round(sum(charged), 6),
+            "charged_calls": sum(1 for c in charged if c > 0),
+            "anticipations": sum(
+                1 for r in ep.records if r["type"] == "anticipate" and r.get("differs")
+            ),
+        },
     )
+
+
+_GRU: list[Any] = []  # the GRU weights, loaded once per worker process
+
+
+def _predictor(name: str, trial: Trial) -> TrajectoryPredictor | None:
+    """The variant's trajectory predictor (None: the executor's default, constant velocity)."""
+    if name == "cv":
+        return None
+    if name == "gru":
+        if not _GRU:
+            _GRU.append(load_model())
+        return GRUPredictor(stop_places(trial.scene), model=_GRU[0])
+    return make_predictor(name, trial.scene)
 
 
 def make_policy(method: str, **options: Any) -> Policy:
@@ -320,10 +376,11 @@ def jobs_for(
     suite_seed: int = 0,
     variants: Sequence[Variant] = (Variant(),),
     max_time: float = 120.0,
+    walks: str = "random",
 ) -> list[TrialJob]:
     """Every (method, variant, configuration, trial) job, configurations outermost."""
     return [
-        TrialJob(m, c, i, suite_seed, v, max_time)
+        TrialJob(m, c, i, suite_seed, v, max_time, walks)
         for c in configs
         for i in range(trials)
         for m in methods
@@ -418,10 +475,12 @@ class SuiteOptions:
     write: Path | None = None
     figures: Path | None = None
     json: Path | None = None
+    walks: str = "random"
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
+        _check_walks(self.walks)
         for m in self.method_list:
             if m not in (*METHODS, *ONE_SHOT):
                 raise HltlError(
@@ -441,11 +500,16 @@ class SuiteOptions:
         """Closed-loop jobs first, then Fast Downward, then flat LTLf (fewer trials)."""
         configs = configs_from(self.configs)
         methods = self.method_list
-        jobs = jobs_for(configs, self.trials, self.loop_methods, self.seed, max_time=self.max_time)
+        w = self.walks
+        jobs = jobs_for(
+            configs, self.trials, self.loop_methods, self.seed, max_time=self.max_time, walks=w
+        )
         if "fd" in methods:
-            jobs += jobs_for(configs, self.trials, ["fd"], self.seed)
+            jobs += jobs_for(configs, self.trials, ["fd"], self.seed, walks=w)
         if "flat" in methods:
-            jobs += jobs_for(configs, min(self.flat_trials, self.trials), ["flat"], self.seed)
+            jobs += jobs_for(
+                configs, min(self.flat_trials, self.trials), ["flat"], self.seed, walks=w
+            )
         return jobs
 
     def sweep_sizes(self) -> list[int]:
@@ -464,6 +528,8 @@ class SuiteOptions:
             parts.append(f"--configs {self.configs}")
         if self.max_time != 120.0:
             parts.append(f"--max-time {self.max_time:g}")
+        if self.walks != "random":
+            parts.append(f"--walks {self.walks}")
         if "flat" in self.methods:
             parts.append(
                 f"--flat-trials {self.flat_trials} --flat-sweep {shlex.quote(self.flat_sweep)}"
@@ -522,61 +588,139 @@ def run_suite_command(
     return SuiteRun(options, results, wall, sweep_rows, sweep_s)
 
 
+def _check_walks(walks: str) -> None:
+    if walks not in WALKS:
+        raise HltlError(f"--walks: unknown kind {walks[:40]!r}; expected one of {', '.join(WALKS)}")
+
+
+ABLATION_VARIANTS = ("full", "no-pp", "no-pmp", "goal", "antic-goal", "antic-gru")
+
+
 @dataclass(frozen=True, slots=True)
 class AblationOptions:
-    """What ``hltl bench ablation`` runs (its command-line options)."""
+    """What ``hltl bench ablation`` runs (its command-line options).
+
+    ``plan_latency`` None charges the latency model (``latency_model``, default the shipped
+    measurement) where computation occurs; a number charges that constant on every planner
+    call instead (the old, assumed model, kept for comparison).
+    """
 
     trials: int = 20
     configs: str = ""
     jobs: int = 2
     seed: int = 0
-    plan_latency: float = 0.2
+    plan_latency: float | None = None
     serial_factor: float = 3.0
+    latency_model: Path | None = None
+    variants_text: str = ",".join(ABLATION_VARIANTS)
+    walks: str = "random"
     write: Path | None = None
     json: Path | None = None
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
-        if self.plan_latency < 0 or self.serial_factor < 1:
+        if (self.plan_latency is not None and self.plan_latency < 0) or self.serial_factor < 1:
             raise HltlError("--plan-latency must be >= 0 and --serial-factor >= 1")
+        _check_walks(self.walks)
+        for name in self.variant_names:
+            if name not in ABLATION_VARIANTS:
+                raise HltlError(
+                    f"--variants: unknown variant {name[:40]!r}; expected some of "
+                    f"{', '.join(ABLATION_VARIANTS)}"
+                )
+
+    @property
+    def variant_names(self) -> list[str]:
+        return [v.strip() for v in self.variants_text.split(",") if v.strip()]
+
+    def latency(self) -> LatencyModel | None:
+        """The latency model charged (None when a constant ``plan_latency`` is)."""
+        if self.plan_latency is not None:
+            return None
+        return load_latency_model(
+            self.latency_model if self.latency_model is not None else DEFAULT_LATENCY_MODEL
+        )
 
     def variants(self) -> list[Variant]:
-        """Table III's rows: full, without predictive planning, serial replanning."""
-        return [
-            Variant("full", True, self.plan_latency),
-            Variant("no-pp", False, self.plan_latency),
-            Variant("no-pmp", True, self.plan_latency * self.serial_factor),
-        ]
+        """Table III's rows: full, without predictive planning, serial replanning, and the
+        predictor / anticipatory-execution rows (docs/evaluation.md#ablations)."""
+        lat = self.latency()
+        const = 0.0 if self.plan_latency is None else self.plan_latency
+        serial = None if lat is None else lat.scaled(self.serial_factor)
+        table = {
+            "full": Variant("full", True, const, lat),
+            "no-pp": Variant("no-pp", False, const, lat),
+            "no-pmp": Variant("no-pmp", True, const * self.serial_factor, serial),
+            "goal": Variant("goal", True, const, lat, "goal"),
+            "antic-goal": Variant("antic-goal", True, const, lat, "goal", anticipate=True),
+            "antic-gru": Variant("antic-gru", True, const, lat, "gru", anticipate=True),
+        }
+        return [table[n] for n in self.variant_names]
 
     def trial_jobs(self) -> list[TrialJob]:
         return jobs_for(
-            configs_from(self.configs), self.trials, ["hltl"], self.seed, self.variants()
+            configs_from(self.configs),
+            self.trials,
+            ["hltl"],
+            self.seed,
+            self.variants(),
+            walks=self.walks,
         )
 
     def command(self) -> str:
-        return (
-            f"hltl bench ablation --trials {self.trials} --jobs {self.jobs} --seed {self.seed} "
-            f"--plan-latency {self.plan_latency:g} --serial-factor {self.serial_factor:g}"
-            + (f" --configs {self.configs}" if self.configs else "")
-            + (f" --write {shlex.quote(str(self.write))}" if self.write else "")
-            + (f" --json {shlex.quote(str(self.json))}" if self.json else "")
-        )
+        parts = [
+            f"hltl bench ablation --trials {self.trials} --jobs {self.jobs} --seed {self.seed}"
+        ]
+        if self.plan_latency is not None:
+            parts.append(f"--plan-latency {self.plan_latency:g}")
+        if self.latency_model is not None:
+            parts.append(f"--latency-model {shlex.quote(str(self.latency_model))}")
+        parts.append(f"--serial-factor {self.serial_factor:g}")
+        if self.walks != "random":
+            parts.append(f"--walks {self.walks}")
+        if self.variant_names != list(ABLATION_VARIANTS):
+            parts.append(f"--variants {','.join(self.variant_names)}")
+        if self.configs:
+            parts.append(f"--configs {self.configs}")
+        if self.write:
+            parts.append(f"--write {shlex.quote(str(self.write))}")
+        if self.json:
+            parts.append(f"--json {shlex.quote(str(self.json))}")
+        return " ".join(parts)
 
 
 def ablation_extra(
     results: Sequence[TrialResult], variants: Sequence[Variant]
 ) -> dict[str, dict[str, float]]:
-    """Success rate, mean time cost and takeovers per trial of each variant (Table III)."""
+    """Per variant (Table III's added columns): success rate, mean time cost over its
+    successful trials and over the trials every variant solved (paired, so variants are
+    compared on the same trials), takeovers, anticipatory dispatches and the computation time
+    charged on the critical path per trial."""
+    ok = [r for r in results if r.status == "ok"]
+    names = [v.name for v in variants]
+    solved: dict[tuple[str, int], set[str]] = {}
+    for r in ok:
+        if r.success and r.time_cost is not None:
+            solved.setdefault((r.config, r.index), set()).add(r.variant)
+    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
     extra: dict[str, dict[str, float]] = {}
     for v in variants:
-        rs = [r for r in results if r.variant == v.name and r.status == "ok"]
+        rs = [r for r in ok if r.variant == v.name]
         times = [r.time_cost for r in rs if r.success and r.time_cost is not None]
+        paired = [
+            r.time_cost for r in rs if (r.config, r.index) in common and r.time_cost is not None
+        ]
+
+        def mean(key: str, rs: list[TrialResult] = rs) -> float:
+            return statistics.fmean(float(r.extra.get(key, 0)) for r in rs) if rs else math.nan
+
         extra[v.name] = {
             "success %": 100.0 * sum(r.success for r in rs) / max(1, len(rs)),
-            "time cost s": statistics.fmean(times) if times else float("nan"),
-            "takeovers/trial": statistics.fmean(r.extra.get("takeovers", 0) for r in rs)
-            if rs
-            else float("nan"),
+            "time cost s": statistics.fmean(times) if times else math.nan,
+            "time paired s": statistics.fmean(paired) if paired else math.nan,
+            "takeovers/trial": mean("takeovers"),
+            "anticip./trial": mean("anticipations"),
+            "charged ms/trial": 1000.0 * mean("charged_s"),
         }
     return extra

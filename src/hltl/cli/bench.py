@@ -33,11 +33,14 @@ from hltl.bench.grounding import (
     repository_root,
     score,
 )
+from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
+from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
 from hltl.bench.soak import run_soak, soak_jobs, summary
 from hltl.bench.suite import (
+    ABLATION_VARIANTS,
     METHODS,
     AblationOptions,
     SuiteOptions,
@@ -123,6 +126,7 @@ def register(sub: Any) -> None:
     su.add_argument("--write", type=Path, help="update this Markdown file's suite section")
     su.add_argument("--figures", type=Path, help="write suite_*.png here (needs matplotlib)")
     su.add_argument("--json", type=Path, help="write every trial's result here")
+    su.add_argument("--walks", default="random", help=WALKS_HELP)
     su.set_defaults(func=run_suite_cmd)
 
     so = bsub.add_parser(
@@ -142,8 +146,15 @@ def register(sub: Any) -> None:
     ab.add_argument(
         "--plan-latency",
         type=float,
-        default=0.2,
-        help="simulated seconds a critical-path replan costs (full and w/o P.P.)",
+        default=None,
+        help="charge this constant (s) on every planner call instead of the measured latency "
+        "model (the old assumption, for comparison)",
+    )
+    ab.add_argument(
+        "--latency-model",
+        type=Path,
+        help="latency model JSON from 'hltl bench latency --write-model' (default: the "
+        "shipped measurement)",
     )
     ab.add_argument(
         "--serial-factor",
@@ -151,9 +162,42 @@ def register(sub: Any) -> None:
         default=3.0,
         help="w/o P.M.P.: the replan latency multiplied by this (candidates computed serially)",
     )
+    ab.add_argument(
+        "--variants",
+        default=",".join(ABLATION_VARIANTS),
+        help=f"comma-separated variants (default: {','.join(ABLATION_VARIANTS)})",
+    )
+    ab.add_argument("--walks", default="random", help=WALKS_HELP)
     ab.add_argument("--write", type=Path, help="update this Markdown file's ablation section")
     ab.add_argument("--json", type=Path, help="write every trial's result here")
     ab.set_defaults(func=run_ablation_cmd)
+
+    rw = bsub.add_parser(
+        "realworld", help="T1-T6 of the paper's real-world study (§V-B) in the 3D simulator"
+    )
+    rw.add_argument("--trials", type=int, default=20, help="seeded trials per task")
+    rw.add_argument("--tasks", default=",".join(TASKS), help="comma-separated tasks (T1..T6)")
+    rw.add_argument("--jobs", type=int, default=2, help="worker processes")
+    rw.add_argument("--seed", type=int, default=0, help="seed of the variations")
+    rw.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="actions last as long as their arm motions (default) or as the cost model says",
+    )
+    rw.add_argument("--write", type=Path, help="update this Markdown file's realworld section")
+    rw.add_argument("--figure", type=Path, help="write the bar chart (PNG) here")
+    rw.add_argument("--json", type=Path, help="write every trial's result here")
+    rw.set_defaults(func=run_realworld_cmd)
+
+    la = bsub.add_parser(
+        "latency", help="measure planner and grounding latency in the loop; fit the latency model"
+    )
+    la.add_argument("--trials", type=int, default=3, help="trials per configuration")
+    la.add_argument("--configs", default="", help="comma-separated configurations (default: all)")
+    la.add_argument("--seed", type=int, default=0, help="suite seed")
+    la.add_argument("--write-model", type=Path, help="write the fitted model (JSON) here")
+    la.set_defaults(func=run_latency_cmd)
 
     rp = bsub.add_parser("replan", help="closed-loop replanning latency per paper configuration")
     rp.add_argument("--seeds", type=int, default=5, help="episodes per configuration and variant")
@@ -506,6 +550,7 @@ def run_suite_cmd(args: argparse.Namespace) -> int:
         write=args.write,
         figures=args.figures,
         json=args.json,
+        walks=args.walks,
     )
     configs = configs_from(opts.configs)
     with _progress("hltl bench suite") as progress:
@@ -577,6 +622,13 @@ def run_soak_cmd(args: argparse.Namespace) -> int:
     return 1 if harm else 0
 
 
+WALKS_HELP = (
+    "H-MOVE kind: random (any recipient, 10-70 %% of the makespan), t2 (the recipient of the "
+    "delivery under way walks to other robots' side mid-delivery; one-robot cells keep random) "
+    "or mixed (odd trials t2)"
+)
+
+
 def run_ablation_cmd(args: argparse.Namespace) -> int:
     opts = AblationOptions(
         trials=args.trials,
@@ -585,10 +637,14 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         seed=args.seed,
         plan_latency=args.plan_latency,
         serial_factor=args.serial_factor,
+        latency_model=args.latency_model,
+        variants_text=args.variants,
+        walks=args.walks,
         write=args.write,
         json=args.json,
     )
     configs = configs_from(opts.configs)
+    variants = opts.variants()
     jobs = opts.trial_jobs()
     with _progress("hltl bench ablation") as progress:
         task = progress.add_task("", total=len(jobs))
@@ -599,10 +655,10 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         t0 = time.perf_counter()
         results = run_suite(jobs, workers=opts.jobs, on_result=tick)
         wall = time.perf_counter() - t0
-    table = report.format_table_iii(
-        report.fluency(results), ablation_extra(results, opts.variants())
-    )
+    table = report.format_table_iii(report.fluency(results), ablation_extra(results, variants))
+    groups = report.format_ablation_groups(results, variants)
     print(table)
+    print("\n" + groups)
     print(f"\nwall time {wall:.0f} s ({opts.jobs} workers)", file=sys.stderr)
     command = opts.command()
     if opts.json is not None:
@@ -622,9 +678,103 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             n=len(results),
             configs=configs,
             trials=opts.trials,
+            variants=variants,
+            latency=opts.latency(),
             plan_latency=opts.plan_latency,
             serial_factor=opts.serial_factor,
+            groups=groups,
         )
         write_section(opts.write, "ablation", body)
         print(f"wrote {opts.write}", file=sys.stderr)
+    return 0
+
+
+def run_latency_cmd(args: argparse.Namespace) -> int:
+    """Measure planner and grounding calls on suite trials and fit the latency model."""
+    if args.trials < 1:
+        raise HltlError("--trials must be at least 1")
+    configs = configs_from(args.configs)
+    command = f"hltl bench latency --trials {args.trials} --seed {args.seed}" + (
+        f" --configs {args.configs}" if args.configs else ""
+    )
+    with _progress("hltl bench latency") as progress:
+        task = progress.add_task("", total=len(configs) * args.trials)
+        _, data = measure(
+            configs,
+            args.trials,
+            args.seed,
+            command=command,
+            machine=machine(),
+            on_trial=lambda c, i: progress.update(task, advance=1, description=f"{c}#{i}"),
+        )
+    print(json.dumps(data, indent=2))
+    if args.write_model is not None:
+        write_model(args.write_model, data)
+        print(f"wrote {args.write_model}", file=sys.stderr)
+    return 0
+
+
+def run_realworld_cmd(args: argparse.Namespace) -> int:
+    """T1–T6 in the MuJoCo simulator for hltl and Greedy-R; table, figure, section."""
+    tasks = [t.strip() for t in args.tasks.split(",") if t.strip()]
+    for t in tasks:
+        if t not in TASKS:
+            raise HltlError(f"--tasks: unknown task {t[:20]!r}; expected some of {','.join(TASKS)}")
+    if args.trials < 1 or args.jobs < 1:
+        raise HltlError("--trials and --jobs must be at least 1")
+    command = (
+        f"hltl bench realworld --trials {args.trials} --jobs {args.jobs} --seed {args.seed}"
+        + (f" --tasks {','.join(tasks)}" if tasks != list(TASKS) else "")
+        + (f" --timing {args.timing}" if args.timing != "motion" else "")
+        + (f" --write {shlex.quote(str(args.write))}" if args.write else "")
+        + (f" --figure {shlex.quote(str(args.figure))}" if args.figure else "")
+    )
+    with _progress("hltl bench realworld") as progress:
+        task = progress.add_task("", total=len(tasks) * args.trials * 2)
+        t0 = time.perf_counter()
+        results = run_all(
+            args.trials,
+            tasks=tasks,
+            seed=args.seed,
+            jobs=args.jobs,
+            timing=args.timing,
+            on_result=lambda r: progress.update(
+                task, advance=1, description=f"{r.method} {r.task}#{r.index}"
+            ),
+        )
+        wall = time.perf_counter() - t0
+    rows = summarise3d(results)
+    table = format_t16(rows)
+    print(table)
+    if args.json is not None:
+        write_output(args.json, "the results", json.dumps([asdict(r) for r in results], indent=1))
+    if args.figure is not None:
+        plot_t16(rows, args.figure)
+        print(f"wrote {args.figure}", file=sys.stderr)
+    if args.write is not None:
+        fails = [r for r in results if not r.success]
+        reasons: dict[str, int] = {}
+        for r in fails:
+            key = f"{r.method} {r.task}: {r.reason[:90]}"
+            reasons[key] = reasons.get(key, 0) + 1
+        body = "\n".join(
+            [
+                f"Command: `{command}`  ",
+                f"Machine: {machine()}. Wall time {wall:.0f} s for {len(results)} episodes "
+                f"({datetime.datetime.now(datetime.UTC):%Y-%m-%d}).",
+                "",
+                "The scenarios, as the paper words them:",
+                "",
+                *[f"* **{t}**: {WORDING[t]}" for t in tasks],
+                "",
+                table,
+                "",
+                *([f"![T1-T6](figures/{args.figure.name})", ""] if args.figure else []),
+                "Failed trials (method, task: why, count): "
+                + ("; ".join(f"{k} ×{n}" for k, n in sorted(reasons.items())) or "none")
+                + ".",
+            ]
+        )
+        write_section(args.write, "realworld", body)
+        print(f"wrote {args.write}", file=sys.stderr)
     return 0

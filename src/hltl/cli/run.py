@@ -50,6 +50,18 @@ def register(sub: Any) -> None:
         default=0.0,
         help="simulated seconds each critical-path planner call costs",
     )
+    p.add_argument(
+        "--compute-latency",
+        choices=("none", "measured", "model"),
+        default="none",
+        help="charge planner and grounding time where it occurs: each call's measured wall "
+        "time, or the shipped latency model (replaces --plan-latency; docs/execution.md)",
+    )
+    p.add_argument(
+        "--anticipate",
+        action="store_true",
+        help="anticipatory execution: start what the forecast world's plan allows now",
+    )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
     p.add_argument(
         "--sim",
@@ -84,7 +96,9 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from hltl.bench.latency import DEFAULT_MODEL
     from hltl.execution.executor import ExecutorConfig
+    from hltl.execution.latency import LatencyModel, load_latency_model
     from hltl.grounding import make_grounder
     from hltl.grounding.base import check_instruction
     from hltl.sim.episode import EpisodeConfig, run_episode
@@ -97,6 +111,11 @@ def run(args: argparse.Namespace) -> int:
         check_instruction(args.instruction, "--instruction")
     for name in ("noise", "latency", "plan_latency"):
         check_option("--" + name.replace("_", "-"), getattr(args, name))
+    compute = None
+    if args.compute_latency == "measured":
+        compute = LatencyModel(measured=True, source="measured per call")
+    elif args.compute_latency == "model":
+        compute = load_latency_model(DEFAULT_MODEL)
     try:
         config = EpisodeConfig(
             max_time=args.max_time,
@@ -105,6 +124,8 @@ def run(args: argparse.Namespace) -> int:
                 predict=not args.no_predict,
                 intrusion=not args.no_predict,
                 plan_latency=args.plan_latency,
+                latency=compute,
+                anticipate=args.anticipate,
             ),
         )
     except ValueError as exc:
@@ -237,7 +258,12 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return (
             "blue",
             f"{rec['trigger']} ({rec['source']}): makespan {rec['makespan']:.2f} s, "
-            f"{_steps(len(rec['steps']))}, {rec['latency_ms']:.1f} ms",
+            f"{_steps(len(rec['steps']))}, {rec['latency_ms']:.1f} ms"
+            + (
+                f", {rec['charged_s'] * 1000:.1f} ms charged ({rec['charge']})"
+                if rec.get("charged_s")
+                else ""
+            ),
         )
     if kind == "dispatch":
         return "bold", " | ".join(act(a) for a in rec["actions"]) or "(empty step)"
@@ -251,6 +277,13 @@ def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
         return (
             "magenta",
             f"predicted plan from t={rec['predicted_at']:.2f} takes over ({rec['context']})",
+        )
+    if kind == "anticipate":
+        return (
+            "magenta",
+            f"anticipating {rec['context']}: "
+            + ", ".join(act(a) for a in rec["actions"])
+            + " (valid now and in the forecast world)",
         )
     if kind == "predict":
         people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec["humans"].items())

@@ -14,7 +14,7 @@ from __future__ import annotations
 import enum
 import itertools
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -28,6 +28,7 @@ from hltl.execution.drivers import (
     RobotDriver,
 )
 from hltl.execution.instructions import SpecUpdate
+from hltl.execution.latency import LatencyModel, planner_charge, takeover_charge
 from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
@@ -54,7 +55,7 @@ from hltl.skills.semantics import ActionSemantics, Infeasible, apply
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.spec.syntax import Atom
-from hltl.world.geometry import Context
+from hltl.world.geometry import Context, human_in_workspace
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import WorldState
 
@@ -130,9 +131,17 @@ class ExecutorConfig:
             given up on after 10 tries.
         max_wait: seconds the executor waits for the world to change (people to come back,
             robots to return, an intrusion risk to pass) before giving up.
-        plan_latency: simulated seconds a critical-path planner call costs before the next
-            dispatch (a takeover costs none); 0 models instant planning.
+        plan_latency: a constant: simulated seconds every planner call costs before the next
+            dispatch (a takeover costs none); 0 models instant planning. Ignored when
+            ``latency`` is given.
+        latency: charge computation where it occurs, measured per call or from a fitted model
+            (:mod:`hltl.execution.latency`); None uses ``plan_latency``.
         max_predicted: predicted plans kept for takeover.
+        anticipate: anticipatory execution: when a confident forecast changes the context,
+            dispatch the first step of the plan for the forecast world if every action of it is
+            executable now (e.g. relay the object toward the arm that will serve the person).
+        anticipate_votes: the share of forecast samples that must agree on a person's
+            predicted workspace for the forecast to count as confident.
     """
 
     predict: bool = True
@@ -143,7 +152,10 @@ class ExecutorConfig:
     max_failures: int = MAX_FAILURES
     max_wait: float = 10.0
     plan_latency: float = 0.0
+    latency: LatencyModel | None = None
     max_predicted: int = 16
+    anticipate: bool = False
+    anticipate_votes: float = 0.6
 
     def __post_init__(self) -> None:
         for name in ("horizon", "predict_dt"):
@@ -154,6 +166,8 @@ class ExecutorConfig:
                 raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
         if self.max_failures < 1:
             raise ValueError(f"max_failures must be >= 1, got {self.max_failures!r}")
+        if not 0.0 <= self.anticipate_votes <= 1.0:
+            raise ValueError(f"anticipate_votes must be in [0, 1], got {self.anticipate_votes!r}")
 
 
 class ExecStatus(enum.Enum):
@@ -236,6 +250,8 @@ class Executor:
         self._failures: dict[str, int] = {}
         self._last_failure = ""
         self._busy_until = 0.0
+        self._step_started: float | None = None
+        self.charged = 0.0  # simulated seconds of computation on the critical path so far
         self._waiting: str | None = None
         self._wait_since: float | None = None
         self._pending_tokens = 0
@@ -275,14 +291,15 @@ class Executor:
         and ignored, the running task going on.
         """
         self.t = max(self.t, t)
+        charge = self._charge_grounding(update)
         if update.spec is None:
-            self.log.emit(self.t, "grounding", **update.record(frozenset()))
+            self.log.emit(self.t, "grounding", **update.record(frozenset()), **charge)
             if self.spec is None:
                 self._give_up(f"cannot ground the instruction: {update.error}")
             return
         old = self.spec
         self._set_spec(update.spec, old)
-        self.log.emit(self.t, "grounding", **update.record(self.done_formulas()))
+        self.log.emit(self.t, "grounding", **update.record(self.done_formulas()), **charge)
         self._pending_tokens += update.tokens
         self._trigger.add(Trigger.INITIAL if old is None else Trigger.GOAL)
         if old is not None:
@@ -324,6 +341,22 @@ class Executor:
             return
         self._background()
         self._decide()
+
+    # -- computation time ------------------------------------------------------------------------
+
+    def _charge(self, seconds: float) -> None:
+        """Nothing is dispatched for ``seconds`` more: the computation is on the critical path."""
+        if seconds > 0:
+            self._busy_until = max(self._busy_until, self.t) + seconds
+            self.charged += seconds
+
+    def _charge_grounding(self, update: SpecUpdate) -> dict[str, float]:
+        model = self.config.latency
+        if model is None:
+            return {}
+        cost = model.grounding(update.latency_ms / 1000.0)
+        self._charge(cost)
+        return {"charged_s": round(cost, 6)}
 
     def _stopped(self) -> bool:
         return self.status is ExecStatus.GAVE_UP
@@ -594,6 +627,7 @@ class Executor:
                 expected=round(expected, 6),
             )
         self._plan = None  # the suffix is replanned when this step ends
+        self._step_started = self.t
         self._waiting = None
         self._wait_since = None
         if not self._running:
@@ -638,7 +672,10 @@ class Executor:
                 self._wait("re-observing after a failed action")
                 return
             if phase is Phase.BLOCKED:
-                self._wait_or_give_up()
+                if not self._anticipate():
+                    self._wait_or_give_up()
+                return
+            if self._anticipate():
                 return
             ctx = self.world.context(self.scene)
             if phase is Phase.STALE_PLAN:
@@ -739,6 +776,14 @@ class Executor:
         }
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
+            model = self.config.latency
+            charge = (
+                0.0
+                if model is None
+                else takeover_charge(
+                    model, pred.result.stats.expanded, pred.wall_s, self.t - pred.at
+                )
+            )
             self.log.emit(
                 self.t,
                 "takeover",
@@ -757,15 +802,19 @@ class Executor:
                 makespan=pred.result.makespan,
                 steps=[s.to_dict() for s in pred.result.steps],
                 world=world_to_dict(self.world),
+                charged_s=round(charge, 6),
+                charge="background",
                 **common,
             )
             self._pending_tokens = 0
+            self._charge(charge)
             self._adopt(pred.result, ctx)
             return True
         result = self.planner(
             self.scene, self.spec, world=self.world, monitor=self.monitor, q0=self.q
         )
         ms = (time.perf_counter() - t0) * 1000.0
+        charge, basis = self._planner_charge(trigger, result.stats.expanded, ms / 1000.0)
         self.log.emit(
             self.t,
             "replan",
@@ -777,11 +826,12 @@ class Executor:
             steps=[s.to_dict() for s in result.steps],
             reason=result.reason,
             world=world_to_dict(self.world),
+            charged_s=round(charge, 6),
+            charge=basis,
             **common,
         )
         self._pending_tokens = 0
-        if self.config.plan_latency > 0:
-            self._busy_until = self.t + self.config.plan_latency
+        self._charge(charge)
         if result.status is PlanStatus.SOLVED:
             self._adopt(result, ctx)
             self._plan_fresh = True
@@ -795,6 +845,13 @@ class Executor:
         self._wait(f"no plan in the current world: {result.reason}")
         self._wait_or_give_up(check_only=True)
         return False
+
+    def _planner_charge(self, trigger: str, expanded: int, wall_s: float) -> tuple[float, str]:
+        model = self.config.latency
+        if model is None:
+            return self.config.plan_latency, "constant"
+        since = None if self._step_started is None else self.t - self._step_started
+        return planner_charge(model, trigger, expanded, wall_s, since)
 
     def _adopt(self, result: PlanResult, ctx: Context) -> None:
         self._plan = result
@@ -857,7 +914,7 @@ class Executor:
             t0 = time.perf_counter()
             result = self.planner(self.scene, self.spec, world=wp, monitor=self.monitor, q0=q)
             ms = (time.perf_counter() - t0) * 1000.0
-            self._predicted.put(key, Predicted(result, self.t, ctx_pred))
+            self._predicted.put(key, Predicted(result, self.t, ctx_pred, ms / 1000.0))
             self.log.emit(
                 self.t,
                 "predict",
@@ -869,6 +926,76 @@ class Executor:
                 expanded=result.stats.expanded,
                 makespan=result.makespan,
             )
+
+    def _anticipate(self) -> bool:
+        """Anticipatory execution: dispatch the forecast world's first step if it can go now.
+
+        Only when every moving person's forecast is confident, the forecast changes the
+        context, a plan for the forecast world from the present state exists (computed in the
+        background), and every action of its first step is executable in the world as it is
+        now (precondition and intrusion checks): the part of the predicted plan valid in both
+        contexts. True when the decision is taken (dispatched, or waiting for the background
+        plan's computation to finish).
+        """
+        if not (self.config.anticipate and self.config.predict) or self.monitor is None:
+            return False
+        moving = {h: p for h, p in self.predictions.items() if p.moving}
+        if not moving or any(
+            p.votes < self.config.anticipate_votes * p.samples for p in moving.values()
+        ):
+            return False
+        wp = predicted_world(self.world, moving)
+        ctx_pred = wp.context(self.scene)
+        if ctx_pred == self.world.context(self.scene):
+            return False
+        if self._plan is not None and self._survives_forecast(self._plan, moving):
+            return False  # the plan in hand finishes its hand-overs before people leave
+        pred = self._predicted.get(self._key(ctx_pred, wp, self.q))
+        if pred is None or not pred.result.solved or not pred.result.steps:
+            return False
+        step = pred.result.steps[0]
+        for a in step.actions:
+            if precondition_hazard(a, self.scene, self.world, semantics=self.semantics):
+                return False
+            if self._dispatch_risk(a) is not None:
+                return False
+        model = self.config.latency
+        if model is not None:
+            remaining = takeover_charge(
+                model, pred.result.stats.expanded, pred.wall_s, self.t - pred.at
+            )
+            if remaining > 0:  # the background computation is still running
+                self._charge(remaining)
+                return True
+        current = self._plan.steps[0].actions if self._plan and self._plan.steps else None
+        self.log.emit(
+            self.t,
+            "anticipate",
+            context=ctx_pred.describe(),
+            predicted_at=round(pred.at, 6),
+            actions=[a.to_dict() for a in step.actions],
+            differs=current is None or tuple(current) != tuple(step.actions),
+            humans={h: p.to_dict() for h, p in moving.items()},
+        )
+        self._dispatch(list(step.actions), step)
+        return True
+
+    def _survives_forecast(self, plan: PlanResult, moving: Mapping[str, object]) -> bool:
+        """Whether, by the forecast, every hand-over of ``plan`` to a moving person still
+        finds them in the giver's workspace when it ends (steps taken back to back from now)."""
+        assert self.predictor is not None
+        t = self.t
+        for step in plan.steps:
+            t += step.duration
+            for a in step.actions:
+                h = a.human
+                if a.skill != "handover_r2h" or h is None or h not in moving:
+                    continue
+                (p,) = self.predictor.predict(h, [t])
+                robot = self.scene.robot(a.robots[0])
+                if not human_in_workspace(robot, p, self.scene.human_reach):
+                    return False
+        return True
 
     def _after_running(self) -> tuple[WorldState, MonitorState] | None:
         """The expected world and monitor state once the running step completes as planned."""

@@ -29,6 +29,7 @@ RECORD_TYPES = frozenset(
         "replan",
         "predict",
         "takeover",
+        "anticipate",
         "dispatch",
         "action_start",
         "action_done",

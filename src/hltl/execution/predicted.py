@@ -21,11 +21,13 @@ def plan_key(ctx: Context, world: WorldState, q: MonitorState, spec_version: int
 
 @dataclass(frozen=True, slots=True)
 class Predicted:
-    """A plan computed at time ``at`` for the forecast context ``context``."""
+    """A plan computed at time ``at`` for the forecast context ``context``, which took
+    ``wall_s`` seconds of wall-clock time."""
 
     result: PlanResult
     at: float
     context: Context
+    wall_s: float = 0.0
 
 
 class PredictedPlans:

@@ -174,6 +174,9 @@ class _Frag:
     group: int = -1  # a choice ('a mug') shared with other fragments: distinct objects each
     subject: bool = False  # a person before a possession verb ('Alice wants …')
     same: tuple[Item, ...] = ()  # 'the same for X': the task before, X in place of its like
+    join: int = 0  # how strongly it is joined to the part before it (_join_levels)
+    comma: bool = False  # a comma before it (", the chips")
+    pause: bool = False  # a comma and a word before it (", and the chips to Bob")
 
 
 @dataclass(slots=True)
@@ -370,6 +373,7 @@ class _Parser:
                 items.pop()
         pieces: list[list[Item]] = [[]]
         seps: list[str] = []
+        commas: list[bool] = []  # whether seps[k] has a comma in it (", and")
         markers: list[str | None] = [None]
         for it in items:
             if _is(it, ",", "and", "or", "also"):
@@ -377,23 +381,30 @@ class _Parser:
                 if not pieces[-1]:
                     if seps:
                         seps[-1] = _merge_sep(seps[-1], sep, items)
+                        commas[-1] = commas[-1] or sep == ","
                     continue  # a leading separator: ignore
                 pieces.append([])
                 seps.append(sep)
+                commas.append(sep == ",")
                 markers.append(None)
                 continue
             if _is(it, "either", "both"):
                 if markers[-1] is not None:
                     raise GroundingError(f"two of 'either'/'both' in one part of {_text(items)!r}")
-                markers[-1] = it.lemma
+                # "give Bob either …": a bracket opened inside a clause holds only its objects
+                opened = any(not _is(x, *_SKIP, "det") for x in pieces[-1])
+                markers[-1] = it.lemma + (" in" if opened else "")
                 continue
             pieces[-1].append(it)
         if not pieces[-1]:
             if not seps:
                 raise GroundingError(f"no task in {_text(items)!r}")
             raise GroundingError(f"{_text(items)!r} ends with {seps[-1]!r}: something is missing")
-        pieces, seps, markers = _tidy_pieces(pieces, seps, markers)
+        pieces, seps, markers = _tidy_pieces(pieces, seps, markers, commas)
         frags: list[_Raw] = [self.fragment(p) for p in pieces]
+        for frag, comma, sep in zip(frags[1:], commas, seps, strict=True):
+            assert isinstance(frag, _Frag)
+            frag.comma, frag.pause = comma, comma and sep != ","
         node, _ = self._coord_list(frags, seps, markers, 0, None, items)
         if in_order:
             if not isinstance(node, _RawGroup) or node.op != "and":
@@ -414,6 +425,8 @@ class _Parser:
 
         seps[k] separates frags[k] and frags[k + 1]; a "," takes the operator of its list.
         """
+        inner = bracket is not None and bracket.endswith(" in")
+        bracket = bracket.removesuffix(" in") if bracket is not None else None
         word = {"either": "or", "both": "and"}.get(bracket or "")
         children: list[_Raw] = []
         ops: list[str] = []
@@ -429,6 +442,22 @@ class _Parser:
                 break
             if word is not None and not _continues(seps, k - 1, word):
                 break
+            nxt = frags[k]
+            if word in ops and isinstance(nxt, _Frag) and nxt.comma:
+                break  # "both X and Y, and Z": the bracket is complete
+            if inner and children and _opens_clause(frags[k]):
+                break  # "give Bob either X or Y, or give Carol Z": the clause ends the bracket
+            if (
+                inner
+                and isinstance(nxt, _Frag)
+                and nxt.target is not None
+                and (nxt.objects is not None or nxt.it or nxt.them)
+            ):
+                state = "open"
+                for c in children:
+                    state = _state(c, state)
+                if state != "open":
+                    break  # "give Bob either X or Y, or Z to Carol": Bob's objects end there
             ops.append(seps[k - 1])
         if bracket == "both" and len(children) == 1 and _plural(children[0]):
             return children[0], k  # "put both mugs on the table"
@@ -436,14 +465,51 @@ class _Parser:
             raise GroundingError(f"{bracket!r} without {word!r} in {_text(items)!r}")
         if len(children) == 1:
             return children[0], k
-        kinds = {op for op in ops if op != ","}
+        levels = _join_levels(children)
+        for child, level in zip(children[1:], levels, strict=True):
+            _edge(child, last=False).join = level
+        return self._levels(children, ops, levels, items, "and"), k
+
+    def _levels(
+        self,
+        children: list[_Raw],
+        ops: list[str],
+        levels: list[int],
+        items: list[Item],
+        comma: Op,
+    ) -> _Raw:
+        """Group a list by how much each separator joins: clauses, then gapped clauses, then
+        objects ("A gets the cup or the apple, B gets the chips" is (cup|apple)>A & chips>B).
+
+        ops[i] joins children[i] and children[i + 1] with strength levels[i] (_join_levels):
+        the strongest separators split the list first, each part is grouped the same way.
+        Within one level a "," takes the list's word ("X, Y or Z"); a level with commas only
+        takes the word ending a list of clauses ("put X on S, give B Y, or C Z"), else the word
+        of the level around it (``comma``): "A the cup, the bottle, or B the chips" is three
+        alternatives. 'and' and 'or' on one level are ambiguous and refused.
+        """
+        if len(children) == 1:
+            return children[0]
+        top = max(levels)
+        cuts = [i for i, lv in enumerate(levels) if lv == top]
+        kinds = {ops[i] for i in cuts if ops[i] != ","}
         if len(kinds) > 1:
             raise GroundingError(
                 f"{_text(items)!r} mixes 'and' and 'or' and could be read two ways: group the "
                 "alternatives with 'either … or …' or split the sentence"
             )
-        op: Op = "or" if kinds == {"or"} else "and"
-        return _RawGroup(op, children), k
+        ending = [op for op, lv in zip(ops, levels, strict=True) if lv >= 1]
+        if not kinds and ending and ending[-1] != ",":
+            kinds = {ending[-1]}  # "X, give B Y, or C Z": the word ending a list of clauses
+        op: Op = "or" if kinds == {"or"} else "and" if kinds else comma
+        group = _RawGroup(op)
+        start = 0
+        for end in [*cuts, len(children) - 1]:
+            seps = ops[start:end]
+            part = self._levels(children[start : end + 1], seps, levels[start:end], items, op)
+            group.children.append(part)
+            start = end + 1
+        return group
 
     # -- fragments ------------------------------------------------------------------------------
     def fragment(self, items: list[Item]) -> _Frag:
@@ -766,7 +832,7 @@ class _Parser:
         """A recipient or place shared from the right: 'hand the cup and the chips to B'."""
         frags = self.frags
         for g in frags[k + 1 :]:
-            if g.segment != frags[k].segment or g.verb is not None:
+            if g.segment != frags[k].segment or g.verb is not None or g.join > 0:
                 return None
             if g.target is not None:
                 return g.target if g.target.prep != "" else None
@@ -878,14 +944,14 @@ def _only_fillers(items: list[Item]) -> bool:
 
 
 def _tidy_pieces(
-    pieces: list[list[Item]], seps: list[str], markers: list[str | None]
+    pieces: list[list[Item]], seps: list[str], markers: list[str | None], commas: list[bool]
 ) -> tuple[list[list[Item]], list[str], list[str | None]]:
     """Drop parts that are only politeness; join 'Bob, the chips' into one part."""
     k = 0
     while k < len(pieces):
         if len(pieces) > 1 and markers[k] is None and _only_fillers(pieces[k]):
             del pieces[k], markers[k]
-            del seps[k - 1 if k > 0 else 0]
+            del seps[k - 1 if k > 0 else 0], commas[k - 1 if k > 0 else 0]
             continue
         k += 1
     k = 0
@@ -902,7 +968,7 @@ def _tidy_pieces(
             and markers[k + 1] is None
         ):
             pieces[k : k + 2] = [pieces[k] + pieces[k + 1]]
-            del seps[k], markers[k + 1]
+            del seps[k], markers[k + 1], commas[k]
             continue
         k += 1
     return pieces, seps, markers
@@ -947,6 +1013,95 @@ def _trailing_order(items: list[Item]) -> list[Item]:
             )
         return body  # "Carol needs the bottle first": already first
     return items
+
+
+def _edge(node: _Raw, last: bool) -> _Frag:
+    while isinstance(node, _RawGroup):
+        node = node.children[-1 if last else 0]
+    return node
+
+
+def _join_levels(children: list[_Raw]) -> list[int]:
+    """How strongly each separator of a list joins the parts beside it.
+
+    2 before a clause with its own verb or subject; 1 before a gapped clause: a person first
+    ("… and Bob the chips"), or a part after a group that already has its recipient or place
+    and that gets its own ("… on the shelf and the chips or the bottle on the table"); 0 inside
+    a group of objects. A group is open until a recipient or place after its objects closes it
+    ("the cup or the apple to Alice": the list shares it); a person before the objects ("give
+    Alice the cup or the apple") leaves it open to more objects but not to another recipient.
+    """
+    levels: list[int] = []
+    state = _state(children[0], "open")
+    for k in range(1, len(children)):
+        f = _edge(children[k], last=False)
+        if f.verb_text or f.subject or f.same:
+            level = 2
+        elif f.target is not None and f.target.prep == "":
+            level = 1
+        elif f.target is not None:
+            level = 0 if state == "open" else 1
+        else:
+            own = _edge(children[k], last=True)  # a bracket may close itself
+            nxt = own if own.target is not None else None
+            if nxt is None:
+                nxt = next((_edge(c, last=False) for c in children[k + 1 :] if _anchored(c)), None)
+            closes = nxt is not None and _closes(nxt)
+            if state == "full" and closes and nxt is not None:
+                # "give A the cup and the bottle, and the chips to B": the bottle is A's;
+                # "give A the cup, and the bottle and the chips to B": it is B's. One ", and"
+                # between A's objects and B's says where B's start; none or several: unclear
+                later = [_edge(c, last=False) for c in children[k + 1 :]]
+                upto = later[: later.index(nxt) + 1] if nxt in later else []
+                pauses = [g for g in [f, *upto] if g.pause]
+                if pauses == [f]:
+                    level = 1
+                elif len(pauses) == 1:
+                    level = 0
+                else:
+                    raise GroundingError(
+                        f"in {_text_of(children)!r}, {f.text!r} could go with the person "
+                        "before it or with the recipient after it: repeat the verb ('… and "
+                        "give the … to …')"
+                    )
+            else:  # after a closed group: a new group only if a place or recipient closes it
+                level = 1 if state == "closed" and closes else 0
+        levels.append(level)
+        state = _state(children[k], state if level == 0 else "open")
+    return levels
+
+
+def _text_of(children: list[_Raw]) -> str:
+    return ", ".join(_edge(c, last=False).text for c in children)
+
+
+def _opens_clause(node: _Raw) -> bool:
+    """A part with its own verb or subject, or a person before its objects."""
+    f = _edge(node, last=False)
+    return bool(f.verb_text or f.subject or f.same) or (
+        f.target is not None and f.target.prep == ""
+    )
+
+
+def _anchored(node: _Raw) -> bool:
+    f = _edge(node, last=False)
+    return bool(f.verb_text or f.subject or f.same or f.target is not None)
+
+
+def _closes(f: _Frag) -> bool:
+    return not (f.verb_text or f.subject or f.same) and f.target is not None and f.target.prep != ""
+
+
+def _state(node: _Raw, state: str) -> str:
+    """After ``node``: 'closed' after a recipient or place after the objects, 'full' after a
+    person before them (more objects may follow), else ``state`` (a part without one)."""
+    if isinstance(node, _RawGroup):
+        for child in node.children:
+            state = _state(child, state)
+        return state
+    if node.target is None:
+        return state
+    return "full" if node.target.prep == "" else "closed"
 
 
 def _plural(node: _Raw) -> bool:

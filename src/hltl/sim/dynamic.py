@@ -21,7 +21,7 @@ from typing import Any
 
 from hltl.errors import HltlError
 from hltl.grounding.offline import OfflineGrounder
-from hltl.planner import PlanStatus, plan
+from hltl.planner import PlanStatus, PlanStep, plan
 from hltl.sim.events import EventSchedule, HumanMove, Instruction, events_from_dict
 from hltl.sim.scenarios import (
     CATEGORIES,
@@ -40,6 +40,9 @@ from hltl.world.geometry import human_in_workspace
 from hltl.world.scene import Scene, Vec3, scene_from_dict
 
 WALK_SPEED = 1.0  # m/s
+# H-MOVE kinds: random walks, T2-style walks (paper §V-B T2: the recipient of the delivery under
+# way walks to a place served by other robots, mid-delivery), or both (odd trials T2-style)
+WALKS = ("random", "t2", "mixed")
 MIN_SPACING = 0.4  # metres between two people's spots
 
 # Fig. 1's walk: Person A steps up to the table, then walks on to r2's side during the handovers.
@@ -68,6 +71,8 @@ class Trial:
         move: the H-MOVE (human, destination).
         events: the schedule injected into the episode (H-MOVE and GOAL).
         base_makespan: the exact planner's optimum for the base task from the start (s).
+        walk: the H-MOVE's kind: ``random`` (10–70 % of the base makespan, any recipient) or
+            ``t2`` (the recipient of a delivery under way leaves for other robots' side).
     """
 
     config: str
@@ -79,6 +84,7 @@ class Trial:
     move: tuple[str, Vec3]
     events: EventSchedule
     base_makespan: float
+    walk: str = "random"
 
     @property
     def scene(self) -> Scene:
@@ -111,25 +117,77 @@ def config_names() -> tuple[str, ...]:
     return tuple(scenario_name(*c) for c in PAPER_CONFIGS)
 
 
-def make_trial(config: str, index: int, suite_seed: int = 0) -> Trial:
+def walk_kind(walks: str, index: int) -> str:
+    """The H-MOVE kind of trial ``index`` under ``walks`` (``mixed``: odd trials T2-style).
+
+    Raises:
+        HltlError: ``walks`` is not one of WALKS.
+    """
+    if walks not in WALKS:
+        raise HltlError(f"unknown walks {walks[:40]!r}; expected one of {', '.join(WALKS)}")
+    if walks == "mixed":
+        return "t2" if index % 2 else "random"
+    return walks
+
+
+def make_trial(config: str, index: int, suite_seed: int = 0, walks: str = "random") -> Trial:
     """Generate trial ``index`` of ``config`` (pure function of its arguments).
+
+    ``walks`` picks the H-MOVE (see :data:`WALKS`); a T2-style walk needs another robot to
+    serve the person, so one-robot cells fall back to the random walk (``Trial.walk`` says
+    which one a trial got). ``random`` trials are the same whatever ``walks`` says.
 
     Raises:
         HltlError: no solvable variant was found in 50 draws (never seen for the paper's
-            configurations; the message names the configuration and seed).
+            configurations; the message names the configuration and seed); unknown ``walks``.
     """
+    kind = walk_kind(walks, index)
     n_task, n_robot, layout = config_of(config)
     seed = trial_seed(suite_seed, index)
     rng = random.Random(f"hltl-suite/{config}/{seed}")
+    if kind == "t2" and n_robot == 1:
+        kind = "random"
     for attempt in range(50):
         sc = generate(n_task, n_robot, layout, seed * 50 + attempt)
-        trial = _dress(config, index, seed, sc, rng)
+        trial = _dress(config, index, seed, sc, rng, kind)
         if trial is not None:
             return trial
     raise HltlError(f"no solvable trial for {config} with seed {seed} after 50 draws")
 
 
-def _dress(config: str, index: int, seed: int, sc: Scenario, rng: random.Random) -> Trial | None:
+def _t2_walk(
+    scene: Scene,
+    base_steps: tuple[PlanStep, ...],
+    deliveries: list[tuple[str, str]],
+    spots: list[Vec3],
+    rng: random.Random,
+) -> tuple[str, Vec3, float, Scene] | None:
+    """A T2-style walk (paper §V-B): the recipient of a delivery of the base plan walks, while
+    that delivery is under way (after its object's first action starts, before the hand-over
+    starts), to a spot served only by robots other than the one planned to hand it over.
+    (mover, destination, start time, moved scene), or None when no such walk exists."""
+    options = []
+    for o, u in deliveries:
+        acts = [(s, a) for s in base_steps for a in s.actions if a.object == o]
+        r2h = [(s, a) for s, a in acts if a.skill == "handover_r2h" and a.human == u]
+        if not acts or not r2h or r2h[0][0].start <= acts[0][0].start:
+            continue
+        options.append((o, u, acts[0][0].start, r2h[0][0].start, r2h[0][1].robots[0]))
+    rng.shuffle(options)
+    for _, u, t0, t1, giver in options:
+        for p in spots:
+            serving = {r.id for r in scene.robots if human_in_workspace(r, p, scene.human_reach)}
+            if giver in serving:
+                continue
+            cand = _moved(scene, u, p)
+            if all(delivery_chain(cand, o2, u2) is not None for o2, u2 in deliveries):
+                return u, p, round(rng.uniform(t0, t1), 3), cand
+    return None
+
+
+def _dress(
+    config: str, index: int, seed: int, sc: Scenario, rng: random.Random, kind: str = "random"
+) -> Trial | None:
     """Add the GOAL object and draw the events; None when the result is not solvable."""
     scene = sc.scene
     deliveries = _deliveries(sc)
@@ -173,14 +231,19 @@ def _dress(config: str, index: int, seed: int, sc: Scenario, rng: random.Random)
     base = plan(scene, sc.spec, timeout=30.0)
     if base.status is not PlanStatus.SOLVED or base.makespan is None:
         return None
+    m = base.makespan
+    t_move = round(rng.uniform(0.1, 0.7) * m, 3)
+    t_goal = round(rng.uniform(0.2, 0.8) * m, 3)
+    if kind == "t2":
+        walk = _t2_walk(scene, base.steps, all_deliveries, spots, rng)
+        if walk is None:
+            return None
+        mover, dest, t_move, moved_scene = walk
     full = _with_goal(sc, scene, goal)
     after = plan(moved_scene, full, timeout=30.0)
     if after.status is not PlanStatus.SOLVED:
         return None
 
-    m = base.makespan
-    t_move = round(rng.uniform(0.1, 0.7) * m, 3)
-    t_goal = round(rng.uniform(0.2, 0.8) * m, 3)
     name = scene.human(goal[1]).name
     text = f"Also give {name} the {category}."
     events = EventSchedule(
@@ -205,6 +268,7 @@ def _dress(config: str, index: int, seed: int, sc: Scenario, rng: random.Random)
         move=(mover, dest),
         events=events,
         base_makespan=m,
+        walk=kind,
     )
 
 

@@ -67,6 +67,8 @@ class EpisodeConfig:
                 "max_failures": e.max_failures,
                 "max_wait": e.max_wait,
                 "plan_latency": e.plan_latency,
+                "latency": None if e.latency is None else e.latency.to_dict(),
+                "anticipate": e.anticipate,
             },
         }
 

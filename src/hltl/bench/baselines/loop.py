@@ -30,9 +30,10 @@ from hltl.execution.executor import ExecStatus
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
 from hltl.grounding.offline import OfflineGrounder
-from hltl.sim.episode import Cell, EpisodeConfig, run_episode
+from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
+from hltl.sim.simulator import Simulator
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -421,8 +422,10 @@ def run_baseline_episode(
     events: EventSchedule | None = None,
     seed: int = 0,
     config: LoopConfig | None = None,
+    simulator: CellFactory = Simulator,
 ) -> BaselineEpisode:
-    """Run one closed-loop episode of ``policy`` in the simulator (see the module docstring)."""
+    """Run one closed-loop episode of ``policy`` in the simulator (see the module docstring);
+    ``simulator`` makes the world (default the discrete one; the 3D one runs T1–T6)."""
     cfg = LoopConfig() if config is None else config
     agents: list[BaselineAgent] = []
 
@@ -438,6 +441,7 @@ def run_baseline_episode(
         config=EpisodeConfig(tick=cfg.tick, max_time=cfg.max_time),
         grounder=OfflineGrounder(),  # the referee
         agent=make,
+        simulator=simulator,
         start_config={
             "method": policy.name,
             "tick": cfg.tick,

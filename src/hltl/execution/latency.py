@@ -1,0 +1,145 @@
+"""Simulated time the executor's own computation costs: planner, grounding and motion planning.
+
+A robot waits for the planner only when the plan is needed and not ready. :class:`LatencyModel`
+says how long each call takes (either the call's measured wall-clock time, or a model fitted to
+such measurements and stored with the measurement that produced it, which keeps episodes
+reproducible), and :func:`planner_charge` says how much of it lands on the critical path:
+
+* a replan after a disruption (a new instruction, a person who changed the context, a failed,
+  halted or refused action, robots down) is paid in full: nothing could start it earlier;
+* the routine replan after a step that ended as expected is *pipelined*: the world after the
+  step is known when the step is dispatched, so the suffix is computed while it executes and
+  only what exceeds the step's duration is paid;
+* a predicted plan that takes over was computed in the background when the forecast changed:
+  only what remains of its computation at takeover is paid;
+* grounding a new instruction is paid when it is heard.
+
+Motion planning happens inside the planner call: a motion cost model (``--motion``) plans and
+caches each instance's trajectories while the search times it, so a measured planner call
+includes it, and dispatch reuses the cached plans.
+
+The constant ``ExecutorConfig.plan_latency`` (the same charge on every planner call) is kept for
+old command lines and compared in docs/evaluation.md; it is not a measurement.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+from hltl.errors import HltlError
+
+PIPELINED = frozenset({"progress"})
+
+
+@dataclass(frozen=True, slots=True)
+class LatencyModel:
+    """How long one call takes, in seconds.
+
+    Attributes:
+        measured: charge each call's measured wall-clock time (not reproducible: it depends on
+            the machine and its load); otherwise the fitted model below.
+        planner_fixed_s, planner_per_node_s: planner time ≈ fixed + per_node · expanded nodes
+            (least squares over measured calls).
+        grounding_s: time to ground one instruction (the median of measured calls).
+        scale: every charge multiplied by this (1 = as measured).
+        source: the measurement the model comes from (command, date, machine, calls, fit).
+    """
+
+    measured: bool = False
+    planner_fixed_s: float = 0.0
+    planner_per_node_s: float = 0.0
+    grounding_s: float = 0.0
+    scale: float = 1.0
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        for name in ("planner_fixed_s", "planner_per_node_s", "grounding_s", "scale"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+                raise ValueError(f"{name} must be a finite number >= 0, got {v!r}")
+
+    def planner(self, expanded: int, wall_s: float) -> float:
+        """Seconds one planner call that expanded ``expanded`` nodes costs."""
+        if self.measured:
+            return self.scale * wall_s
+        return self.scale * (self.planner_fixed_s + self.planner_per_node_s * expanded)
+
+    def grounding(self, wall_s: float) -> float:
+        """Seconds grounding one instruction costs."""
+        return self.scale * (wall_s if self.measured else self.grounding_s)
+
+    def scaled(self, factor: float) -> LatencyModel:
+        return LatencyModel(
+            self.measured,
+            self.planner_fixed_s,
+            self.planner_per_node_s,
+            self.grounding_s,
+            self.scale * factor,
+            self.source,
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    def describe(self) -> str:
+        if self.measured:
+            return "measured per call (wall clock)" + (
+                f" x{self.scale:g}" if self.scale != 1 else ""
+            )
+        text = (
+            f"planner {self.planner_fixed_s * 1e3:.3g} ms + {self.planner_per_node_s * 1e6:.3g} µs"
+            f"/node, grounding {self.grounding_s * 1e3:.3g} ms"
+        )
+        return text + (f" x{self.scale:g}" if self.scale != 1 else "")
+
+
+def planner_charge(
+    model: LatencyModel,
+    trigger: str,
+    expanded: int,
+    wall_s: float,
+    since_step: float | None,
+) -> tuple[float, str]:
+    """(seconds on the critical path, why) for a planner call made for ``trigger``.
+
+    ``since_step`` is how long ago the step that just ended was dispatched (None: no step
+    ran before this call); a pipelined call is paid only beyond that.
+    """
+    cost = model.planner(expanded, wall_s)
+    parts = set(trigger.split("+")) if trigger else set()
+    if parts and parts <= PIPELINED and since_step is not None:
+        return max(0.0, cost - since_step), "pipelined"
+    return cost, "critical"
+
+
+def takeover_charge(model: LatencyModel, expanded: int, wall_s: float, since: float) -> float:
+    """What remains of a predicted plan's computation, started ``since`` seconds ago."""
+    return max(0.0, model.planner(expanded, wall_s) - since)
+
+
+def load_latency_model(path: str | Path) -> LatencyModel:
+    """A model written by ``hltl bench latency --write-model``.
+
+    Raises:
+        HltlError: the file is missing, not JSON or not a latency model.
+    """
+    p = Path(path)
+    try:
+        data = json.loads(p.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise HltlError(f"latency model {str(p)[:200]!r}: cannot read it ({exc})") from exc
+    model = data.get("model") if isinstance(data, dict) else None
+    if not isinstance(model, dict):
+        raise HltlError(f"latency model {str(p)[:200]!r}: expected an object with a 'model' key")
+    fields = set(LatencyModel.__dataclass_fields__)
+    unknown = sorted(set(model) - fields)
+    if unknown:
+        raise HltlError(f"latency model {str(p)[:200]!r}: unknown keys {unknown[:5]}")
+    try:
+        return LatencyModel(**model)
+    except (TypeError, ValueError) as exc:
+        raise HltlError(f"latency model {str(p)[:200]!r}: {exc}") from exc
