@@ -7,7 +7,6 @@ and replan, reading the execution log the command writes.
 
 from __future__ import annotations
 
-import json
 import re
 import shlex
 from pathlib import Path
@@ -15,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from hltl.cli.main import main
+from hltl.execution.log import read_log
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -34,11 +34,11 @@ def test_the_readme_run_example_halts_and_replans(
     argv[argv.index("--log") + 1] = str(log)
     monkeypatch.chdir(ROOT)
     assert main(argv) == 0, capsys.readouterr().err
-    records = [json.loads(line) for line in log.read_text(encoding="utf-8").splitlines()]
-    kinds = [r["type"] for r in records]
+    records = read_log(log)
+    kinds = [r.type for r in records]
     assert "human_move" in kinds
-    halt = next(r for r in records if r["type"] == "halt")
-    after = [r for r in records if r["t"] >= halt["t"]]
-    assert any(r["type"] in ("replan", "takeover") for r in after)
-    assert any("halt" in str(r.get("trigger", "")) for r in after if r["type"] == "replan")
-    assert records[-1]["type"] == "episode_end" and records[-1]["success"]
+    halt = next(r for r in records if r.type == "halt")
+    after = [r for r in records if r.t >= halt.t]
+    assert any(r.type in ("replan", "takeover") for r in after)
+    assert any("halt" in r.trigger for r in after if r.type == "replan")
+    assert records[-1].type == "episode_end" and records[-1].success

@@ -151,9 +151,9 @@ def test_out_of_reach_pick_is_caught_before_dispatch() -> None:
     pol = Scripted(bad, good)
     ep = run_baseline_episode(pol, sc.scene, sc.instruction)
     assert ep.kinematic == 1 and ep.conflicts == 0
-    violations = [r for r in ep.records if r["type"] == "violation"]
-    assert violations[0]["kind"] == "kinematic" and "out of reach" in violations[0]["reason"]
-    started = [r["action"] for r in ep.records if r["type"] == "action_start"]
+    violations = [r for r in ep.records if r.type == "violation"]
+    assert violations[0].kind == "kinematic" and "out of reach" in violations[0].reason
+    started = [r.action for r in ep.records if r.type == "action_start"]
     assert {"skill": "pick", "robots": ["r2"], "object": "bottle"} not in started
     assert ep.goals_met and not ep.metrics.success  # a caught violation counts against success
     assert len(pol.asked) == 2 and pol.asked[1].trigger == "violation"
@@ -298,7 +298,7 @@ def test_smart_llm_non_executable_script_fails_the_trial() -> None:
     ep = run_baseline_episode(SmartLLMPolicy(client=FakeClient(BROKEN)), sc.scene, sc.instruction)
     assert not ep.goals_met and not ep.metrics.success
     assert "not executable: syntax error on line 1" in ep.metrics.reason
-    assert not [r for r in ep.records if r["type"] == "action_start"]
+    assert not [r for r in ep.records if r.type == "action_start"]
 
 
 def test_smart_llm_on_a_suite_trial_replans_for_the_injected_task() -> None:

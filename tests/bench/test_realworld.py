@@ -19,6 +19,7 @@ from hltl.bench.realworld import (
 )
 from hltl.cli.main import main
 from hltl.errors import HltlError
+from hltl.execution.log import Dispatch, LogRecord, PolicyReplan, Replan
 from hltl.sim.events import HumanMove, Instruction
 from hltl.world.geometry import human_in_workspace, reaches
 
@@ -69,11 +70,12 @@ def test_unknown_task() -> None:
 
 
 def test_replans_count_regenerations_not_routine_steps() -> None:
-    recs = [
-        {"type": "replan", "trigger": t}
-        for t in ("initial", "progress", "script_end", "goal", "context+progress", "halt:intrusion")
+    recs: list[LogRecord] = [
+        Replan(t=0.0, trigger=t)
+        for t in ("initial", "progress", "goal", "context+progress", "halt:intrusion")
     ]
-    assert _replans([*recs, {"type": "dispatch"}]) == 3
+    recs.append(PolicyReplan(t=0.0, source="greedy", trigger="script_end"))
+    assert _replans([*recs, Dispatch(t=0.0, step=0, actions=[])]) == 3
 
 
 def test_summary_and_table() -> None:

@@ -52,9 +52,9 @@ def test_chance_skill_failures_do_not_end_an_episode_that_has_a_plan(
     streak: dict[str, int] = {}
     longest = 0
     for r in ep.records:
-        if r["type"] in ("action_failed", "action_done"):
-            o = r["action"]["object"]
-            streak[o] = streak.get(o, 0) + 1 if r["type"] == "action_failed" else 0
+        if r.type in ("action_failed", "action_done"):
+            o = r.action["object"]
+            streak[o] = streak.get(o, 0) + 1 if r.type == "action_failed" else 0
             longest = max(longest, streak[o])
     assert longest >= 3  # what the old rule gave up on
 

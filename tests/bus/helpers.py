@@ -11,6 +11,7 @@ from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
 from hltl.bus.session import BusConfig, open_session
+from hltl.execution.log import LogRecord
 from hltl.sim.episode import Episode, run_episode
 from hltl.world.scene import Scene
 
@@ -26,6 +27,8 @@ def free_endpoint() -> str:
 def without_wall_clock(x: Any) -> Any:
     """A record or metrics dict without wall-clock measurements (``*_ms`` fields): the only
     fields that legitimately differ between two runs of the same episode."""
+    if isinstance(x, LogRecord):
+        return without_wall_clock(x.to_json())
     if isinstance(x, Mapping):
         return {k: without_wall_clock(v) for k, v in x.items() if not str(k).endswith("_ms")}
     if isinstance(x, list | tuple):
@@ -55,9 +58,10 @@ class Loopback:
         node_faults: FaultModel | None = None,
         exec_faults: FaultModel | None = None,
         timing: BusTiming | None = None,
-        on_record: Callable[[dict[str, Any]], None] | None = None,
+        on_record: Callable[[LogRecord], None] | None = None,
         cell: str = "default",
         factory: Any = None,
+        ahead: int = 64,
         **episode: Any,
     ) -> BusRun:
         opened: list[BusCell] = []
@@ -66,7 +70,12 @@ class Loopback:
             ep = run_episode(
                 scene,
                 simulator=bus_cell(
-                    self._exec_session, cell=cell, timing=timing, faults=exec_faults, opened=opened
+                    self._exec_session,
+                    cell=cell,
+                    timing=timing,
+                    faults=exec_faults,
+                    opened=opened,
+                    ahead=ahead,
                 ),
                 on_record=on_record,
                 **episode,

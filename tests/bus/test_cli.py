@@ -46,3 +46,9 @@ def test_run_without_a_node_says_so(capsys: pytest.CaptureFixture[str]) -> None:
 def test_node_rejects_bad_episode_count(capsys: pytest.CaptureFixture[str]) -> None:
     code, err = _run(["node", "sim", "--scene", FIG1, "--episodes", "0"], capsys)
     assert code == 1 and "--episodes must be at least 1" in err
+
+
+def test_node_motion_is_for_the_discrete_simulator(capsys: pytest.CaptureFixture[str]) -> None:
+    argv = ["node", "sim", "--scene", FIG1, "--sim", "mujoco", "--motion", "--episodes", "1"]
+    code, err = _run(argv, capsys)
+    assert code == 1 and "always follows the joint trajectories" in err and err.count("\n") == 1

@@ -50,7 +50,7 @@ def _fig1() -> dict[str, Any]:
 
 
 def _starts_once(run: BusRun) -> None:
-    dispatched = [r["handle"] for r in run.episode.records if r["type"] == "action_start"]
+    dispatched = [r.handle for r in run.episode.records if r.type == "action_start"]
     assert len(dispatched) == len(set(dispatched))
     assert all(n == 1 for n in run.node.stats.starts.values()), run.node.stats.starts
     # nothing lost either: every handle the executor started reached the node
@@ -66,12 +66,12 @@ def test_faulty_links_change_nothing(loopback: Loopback, fault: str) -> None:
     assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
     _starts_once(run)
     stats, node = run.cell.stats, run.node.stats
-    if fault in ("loss", "everything"):
-        assert stats.retransmits + stats.recoveries > 0  # the fault really happened
+    if fault in ("loss", "everything"):  # the fault really happened
+        assert run.cell.link.dropped + run.node.link.dropped > 0
     if fault == "duplicates":
         assert stats.duplicate_reports > 0 and node.duplicates > 0
-    if fault == "out_of_order":
-        assert stats.reordered_reports > 0
+    if fault == "out_of_order":  # an older report arrived after a newer one
+        assert stats.reordered_reports + stats.stale_reports > 0
     if fault == "lost_replies":
         assert stats.retransmits > 0
 
@@ -80,7 +80,7 @@ def test_node_killed_mid_action_halts_and_gives_up(loopback: Loopback) -> None:
     sc = scenarios.get("fig1")
 
     def kill_on_first_start(rec: dict[str, Any]) -> None:
-        if rec["type"] == "action_start" and rec["handle"] == 1:
+        if rec.type == "action_start" and rec.handle == 1:
             loopback.kill_node_session()
 
     t0 = time.monotonic()
@@ -94,17 +94,17 @@ def test_node_killed_mid_action_halts_and_gives_up(loopback: Loopback) -> None:
     assert time.monotonic() - t0 < 60  # bounded: never a hang
     recs = run.episode.records
     assert not run.episode.success
-    downs = [r for r in recs if r["type"] == "robot_down"]
-    assert {r["robot"] for r in downs} == set(sc.scene.robot_ids)
-    assert all(r["until"] is None and r["reason"] for r in downs)
-    failed = [r for r in recs if r["type"] == "action_failed"]
-    assert failed and all("down" in r["reason"] for r in failed)
+    downs = [r for r in recs if r.type == "robot_down"]
+    assert {r.robot for r in downs} == set(sc.scene.robot_ids)
+    assert all(r.until is None and r.reason for r in downs)
+    failed = [r for r in recs if r.type == "action_failed"]
+    assert failed and all("down" in r.reason for r in failed)
     # after the node died nothing more was dispatched
-    t_down = min(r["t"] for r in downs)
-    assert not [r for r in recs if r["type"] == "action_start" and r["t"] > t_down]
+    t_down = min(r.t for r in downs)
+    assert not [r for r in recs if r.type == "action_start" and r.t > t_down]
     end = recs[-1]
-    assert end["type"] == "episode_end" and not end["success"]
-    assert "available robot (none)" in end["reason"]  # gave up because no robot is left
+    assert end.type == "episode_end" and not end.success
+    assert "available robot (none)" in end.reason  # gave up because no robot is left
     assert all(n == 1 for n in run.node.stats.starts.values())
 
 
@@ -126,7 +126,7 @@ def test_node_process_killed_mid_action(tmp_path: Path) -> None:
     opened: list[BusCell] = []
 
     def kill_on_first_start(rec: dict[str, Any]) -> None:
-        if rec["type"] == "action_start" and node.poll() is None:
+        if rec.type == "action_start" and node.poll() is None:
             node.send_signal(signal.SIGKILL)
             node.wait(timeout=10)
 
@@ -149,9 +149,9 @@ def test_node_process_killed_mid_action(tmp_path: Path) -> None:
         node.wait(timeout=10)
     assert not ep.success
     assert ep.metrics.reason
-    kinds = [r["type"] for r in ep.records]
+    kinds = [r.type for r in ep.records]
     assert "robot_down" in kinds and "action_failed" in kinds
-    starts = [r["handle"] for r in ep.records if r["type"] == "action_start"]
+    starts = [r.handle for r in ep.records if r.type == "action_start"]
     assert len(starts) == len(set(starts))
 
 
@@ -169,8 +169,8 @@ def test_a_robot_that_never_acknowledges_is_down_not_a_hang(loopback: Loopback) 
     )
     assert time.monotonic() - t0 < 60
     assert not run.episode.success
-    failed = [r for r in run.episode.records if r["type"] == "action_failed"]
-    assert failed and "is down: robot r1 did not acknowledge" in failed[0]["reason"]
+    failed = [r for r in run.episode.records if r.type == "action_failed"]
+    assert failed and "is down: robot r1 did not acknowledge" in failed[0].reason
     assert run.node.stats.starts == {}  # nothing ever reached the node: nothing ran
 
 

@@ -36,10 +36,10 @@ def test_demo_short_tells_the_story_and_draws_it(
     # the log tells the story: halt with a reason, replan, takeover, success
     records = read_log(out / "episode.jsonl")
     assert all(story(records).values())
-    halt = next(r for r in records if r["type"] == "halt")
-    assert "not inside r1's workspace" in halt["reason"]
+    halt = next(r for r in records if r.type == "halt")
+    assert "not inside r1's workspace" in halt.reason
     end = records[-1]
-    assert end["type"] == "episode_end" and end["success"] is True
+    assert end.type == "episode_end" and end.success is True
 
 
 def test_demo_without_pictures(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

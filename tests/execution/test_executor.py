@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from hltl.execution.executor import MAX_FAILURES, ExecStatus, Executor, ExecutorConfig
+from hltl.execution.log import EpisodeStart
 from hltl.grounding.offline import OfflineGrounder
 from hltl.planner import PlanResult, PlanStatus, PlanStep
 from hltl.sim.instruct import ground_instruction
@@ -44,7 +45,7 @@ def _spec(data: dict[str, object]) -> HSpec:
 
 def _episode_start(ex: Executor, scene: Scene) -> None:
     # the invariant checker reads the scene from the first record, as in a real log
-    ex.log.emit(0.0, "episode_start", scene=scene.to_dict())
+    ex.log.emit(EpisodeStart(t=0.0, scene=scene.to_dict()))
 
 
 def _run(ex: Executor, obs: WorldState, until: float, dt: float = 0.05) -> float:
@@ -106,8 +107,8 @@ def test_halt_on_broken_precondition_keeps_monitor_state(cell: Scene) -> None:
     # replanned from the same q under the new context: r2 hands the chips to A directly
     assert planner.calls[-1][1] == q_before
     assert driver.started[-1][1] == Action("handover_r2h", ("r2",), "chips", human="A")
-    halts = [r for r in ex.log.records if r["type"] == "halt"]
-    assert halts[0]["kind"] == "precondition"
+    halts = [r for r in ex.log.records if r.type == "halt"]
+    assert halts[0].kind == "precondition"
     _run(ex, moved, 2.0)
     assert ex.status is ExecStatus.DONE
     assert check_invariants(ex.log.records) == []
@@ -157,8 +158,8 @@ def test_gives_up_after_consecutive_failures_on_one_object(cell: Scene) -> None:
     assert ex.status is ExecStatus.GAVE_UP
     assert ex.reason.startswith("3 consecutive failed actions on chips")
     assert [a.skill for _, a in driver.started] == ["pick"] * 3
-    give_up = [r for r in ex.log.records if r["type"] == "give_up"]
-    assert give_up and give_up[0]["reason"] == ex.reason
+    give_up = [r for r in ex.log.records if r.type == "give_up"]
+    assert give_up and give_up[0].reason == ex.reason
 
 
 def test_waits_for_an_unavailable_robot_then_gives_up_with_reason(cell: Scene) -> None:
@@ -167,8 +168,8 @@ def test_waits_for_an_unavailable_robot_then_gives_up_with_reason(cell: Scene) -
     obs = initial_world(cell)
     ex.update(0.0, obs)
     assert driver.started == [] and not ex.finished
-    waits = [r for r in ex.log.records if r["type"] == "wait"]
-    assert "no plan in the current world" in waits[0]["reason"]
+    waits = [r for r in ex.log.records if r.type == "wait"]
+    assert "no plan in the current world" in waits[0].reason
     _run(ex, obs, 1.0)
     assert not ex.finished
     driver.down = frozenset()  # r2 is back: replan and go
@@ -204,16 +205,16 @@ def test_predicted_plan_takes_over_only_when_the_context_matches(cell: Scene) ->
         s = min(t - 0.6, 0.53)  # arrives at about (0.3, 0.55)
         pos = (a0[0] + v[0] * s, a0[1] + v[1] * s, 0.0)
         ex.update(t, obs.with_human("A", pos).with_time(t))
-        takeovers = [r for r in ex.log.records if r["type"] == "takeover"]
+        takeovers = [r for r in ex.log.records if r.type == "takeover"]
     assert ex.status is ExecStatus.DONE
-    predicts = [r for r in ex.log.records if r["type"] == "predict"]
+    predicts = [r for r in ex.log.records if r.type == "predict"]
     assert predicts, "a background plan was computed while A walked"
     assert len(takeovers) == 1
     # the takeover happened in a tick whose observed context equals the predicted one
-    replans = [r for r in ex.log.records if r["type"] == "replan"]
-    taken = next(r for r in replans if r["source"] == "predicted")
-    assert taken["context"] == takeovers[0]["context"]
-    assert any(p["context"] == taken["context"] for p in predicts)
+    replans = [r for r in ex.log.records if r.type == "replan"]
+    taken = next(r for r in replans if r.source == "predicted")
+    assert taken.context == takeovers[0].context
+    assert any(p.context == taken.context for p in predicts)
     assert check_invariants(ex.log.records) == []
 
 
@@ -236,6 +237,6 @@ def test_new_instruction_carries_monitor_state_over(cell: Scene) -> None:
     assert ex.status is ExecStatus.DONE
     delivered = [a for _, a in driver.started if a.skill == "handover_r2h"]
     assert [a.object for a in delivered] == ["bottle", "chips"]  # the bottle is not re-delivered
-    grounding = [r for r in ex.log.records if r["type"] == "grounding"]
-    assert grounding[-1]["update"]["kind"] == "add"
+    grounding = [r for r in ex.log.records if r.type == "grounding"]
+    assert grounding[-1].update["kind"] == "add"
     assert check_invariants(ex.log.records) == []

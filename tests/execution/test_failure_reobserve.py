@@ -31,17 +31,17 @@ def test_no_dispatch_on_a_stale_belief_after_a_drop(two_arms_path: Path) -> None
         seed=6,
     )
     assert check_invariants(ep.records) == []
-    drops = [r for r in ep.records if r["type"] == "object_drop"]
+    drops = [r for r in ep.records if r.type == "object_drop"]
     assert drops, "the seed must produce a dropped object for this test to mean anything"
-    halts = [r for r in ep.records if r["type"] == "halt"]
-    assert not any("the skill needs it held" in str(r.get("reason", "")) for r in halts)
+    halts = [r for r in ep.records if r.type == "halt"]
+    assert not any("the skill needs it held" in str(r.reason) for r in halts)
     # after each failure the next dispatch of that object starts by picking it up again
     for i, rec in enumerate(ep.records):
-        if rec["type"] == "action_failed" and rec["action"]["skill"] == "handover_r2h":
-            obj = rec["action"]["object"]
+        if rec.type == "action_failed" and rec.action["skill"] == "handover_r2h":
+            obj = rec.action["object"]
             nxt = next(
                 r
                 for r in ep.records[i + 1 :]
-                if r["type"] == "action_start" and r["action"]["object"] == obj
+                if r.type == "action_start" and r.action["object"] == obj
             )
-            assert nxt["action"]["skill"] == "pick"
+            assert nxt.action["skill"] == "pick"

@@ -133,17 +133,17 @@ def _episode(config: str, index: int, **executor: Any) -> Episode:
 def test_charges_are_logged_and_delay_the_next_dispatch() -> None:
     ep = _episode("2-2", 2, latency=MODEL)
     assert ep.success
-    replans = [r for r in ep.records if r["type"] == "replan"]
-    groundings = [r for r in ep.records if r["type"] == "grounding"]
-    assert {r["charge"] for r in replans} >= {"critical", "pipelined"}
-    assert all(g["charged_s"] == pytest.approx(0.25) for g in groundings)
+    replans = [r for r in ep.records if r.type == "replan"]
+    groundings = [r for r in ep.records if r.type == "grounding"]
+    assert {r.charge for r in replans} >= {"critical", "pipelined"}
+    assert all(g.charged_s == pytest.approx(0.25) for g in groundings)
     # the routine replans overlapped a step of at least 0.5 s: nothing left to pay
-    assert all(r["charged_s"] == 0.0 for r in replans if r["charge"] == "pipelined")
-    dispatches = [r["t"] for r in ep.records if r["type"] == "dispatch"]
+    assert all(r.charged_s == 0.0 for r in replans if r.charge == "pipelined")
+    dispatches = [r.t for r in ep.records if r.type == "dispatch"]
     for r in replans:
-        if r["charge"] == "critical" and r["status"] == "solved":
-            later = [t for t in dispatches if t >= r["t"]]
-            assert later and later[0] >= r["t"] + r["charged_s"] - 1e-9
+        if r.charge == "critical" and r.status == "solved":
+            later = [t for t in dispatches if t >= r.t]
+            assert later and later[0] >= r.t + r.charged_s - 1e-9
     # the same trial charged nothing is faster by at least the first (initial) charge
     free = _episode("2-2", 2)
     assert free.metrics.time_cost is not None and ep.metrics.time_cost is not None
@@ -156,11 +156,11 @@ def test_anticipation_relays_toward_the_forecast_and_saves_time() -> None:
     plain = _episode("2-4-line", 2)
     ahead = _episode("2-4-line", 2, anticipate=True)
     assert plain.success and ahead.success
-    antic = [r for r in ahead.records if r["type"] == "anticipate"]
-    assert antic and not [r for r in plain.records if r["type"] == "anticipate"]
+    antic = [r for r in ahead.records if r.type == "anticipate"]
+    assert antic and not [r for r in plain.records if r.type == "anticipate"]
     for r in antic:
-        dispatch = next(d for d in ahead.records if d["type"] == "dispatch" and d["t"] == r["t"])
-        assert dispatch["actions"] == r["actions"]
+        dispatch = next(d for d in ahead.records if d.type == "dispatch" and d.t == r.t)
+        assert dispatch.actions == r.actions
     assert ahead.metrics.time_cost is not None and plain.metrics.time_cost is not None
     assert ahead.metrics.time_cost < plain.metrics.time_cost - 0.5
 
@@ -169,4 +169,4 @@ def test_anticipation_needs_prediction_and_valid_votes() -> None:
     with pytest.raises(ValueError, match="anticipate_votes"):
         ExecutorConfig(anticipate_votes=1.5)
     ep = _episode("2-4-line", 2, anticipate=True, predict=False)
-    assert not [r for r in ep.records if r["type"] == "anticipate"]
+    assert not [r for r in ep.records if r.type == "anticipate"]

@@ -2,13 +2,25 @@
 
 from __future__ import annotations
 
+import json
 import random
 from pathlib import Path
 
 import pytest
 
 from hltl.errors import PlanFormatError
-from hltl.execution.log import EventLog, read_log, world_from_dict, world_to_dict
+from hltl.execution.log import (
+    ActionHalted,
+    EpisodeStart,
+    EventLog,
+    HumanMove,
+    LogRecord,
+    PolicyReplan,
+    Wait,
+    read_log,
+    world_from_dict,
+    world_to_dict,
+)
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
     predict_workspace,
@@ -119,9 +131,9 @@ def test_world_round_trips_through_the_log_and_bad_logs_are_named(
     assert world_from_dict(world_to_dict(w)) == w
     path = tmp_path / "log.jsonl"
     with EventLog(path) as log:
-        log.emit(0.0, "episode_start", scene=cell.to_dict())
-        log.emit(0.5, "wait", reason="x")
-    assert [r["type"] for r in read_log(path)] == ["episode_start", "wait"]
+        log.emit(EpisodeStart(t=0.0, scene=cell.to_dict()))
+        log.emit(Wait(t=0.5, reason="x"))
+    assert [r.type for r in read_log(path)] == ["episode_start", "wait"]
     path.write_text('{"t": 0, "type": "episode_start"}\n{"t": 1, "type": "teleport"}\n')
     with pytest.raises(PlanFormatError, match=r"log.jsonl:2: unknown record type 'teleport'"):
         read_log(path)
@@ -131,3 +143,36 @@ def test_world_round_trips_through_the_log_and_bad_logs_are_named(
     path.write_text('{"t": 0, "type": "episode_start"}\nnot json\n')
     with pytest.raises(PlanFormatError, match=r"log.jsonl:2: not valid JSON"):
         read_log(path)
+
+
+def test_typed_records_rewrite_an_old_log_byte_for_byte() -> None:
+    """docs/figures/demo.jsonl was written when records were dicts: the typed records load it
+    and write every line back unchanged (key order included)."""
+    path = Path(__file__).parents[2] / "docs" / "figures" / "demo.jsonl"
+    text = path.read_text(encoding="utf-8")
+    records = read_log(path)
+    assert {type(r).__name__ for r in records} >= {"EpisodeStart", "Replan", "Dispatch", "Halt"}
+    again = "".join(json.dumps(r.to_json(), separators=(",", ":")) + "\n" for r in records)
+    assert again == text
+
+
+def test_optional_fields_are_left_out_and_a_missing_required_field_is_named() -> None:
+    halted = ActionHalted(t=1.0, handle=3, action={"skill": "pick"}, reason="x")
+    assert list(halted.to_json()) == ["t", "type", "handle", "action", "reason"]
+    assert LogRecord.from_json(halted.to_json()) == halted
+    move = LogRecord.from_json(
+        {
+            "t": 0.5,
+            "type": "human_move",
+            "human": "A",
+            "from": [0, 0, 0],
+            "to": [1, 0, 0],
+            "speed": 1.0,
+        }
+    )
+    assert isinstance(move, HumanMove) and move.from_ == [0, 0, 0] and move.wander is None
+    assert "from" in move.to_json() and "from_" not in move.to_json()
+    policy = LogRecord.from_json({"t": 0, "type": "replan", "source": "greedy", "queries": 1})
+    assert isinstance(policy, PolicyReplan)
+    with pytest.raises(PlanFormatError, match="a dispatch record needs the field 'step'"):
+        LogRecord.from_json({"t": 0, "type": "dispatch", "actions": []}, "x")

@@ -162,8 +162,8 @@ def test_a_failed_grounding_in_an_episode_counts_its_tokens(two_arms: Scene) -> 
     from hltl.sim.episode import run_episode
 
     episode = run_episode(two_arms, instruction="give A the cup", grounder=Spends())
-    record = next(r for r in episode.records if r["type"] == "grounding")
-    assert (record["tokens"], record["prompt_tokens"], record["completion_tokens"]) == (
+    record = next(r for r in episode.records if r.type == "grounding")
+    assert (record.tokens, record.prompt_tokens, record.completion_tokens) == (
         970,
         900,
         70,

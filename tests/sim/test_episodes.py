@@ -54,7 +54,7 @@ def _config(predict: bool = True, **perception: float) -> EpisodeConfig:
 
 
 def _of(ep: Episode, kind: str) -> list[dict[str, Any]]:
-    return [r for r in ep.records if r["type"] == kind]
+    return [r for r in ep.records if r.type == kind]
 
 
 def test_every_example_has_an_instruction() -> None:
@@ -71,7 +71,7 @@ def test_each_event_type_ends_in_success(cell: Scene, name: str, predict: bool) 
     assert ep.success, ep.metrics.reason
     assert ep.metrics.violations == 0
     end = _of(ep, "episode_end")[-1]
-    assert end["success"] and end["reason"] == "all goals met"
+    assert end.success and end.reason == "all goals met"
 
 
 class QRecorder:
@@ -96,17 +96,17 @@ def test_person_walking_into_the_rendezvous_mid_handover(cell: Scene, predict: b
     )
     assert ep.success
     (halt,) = _of(ep, "halt")
-    assert halt["actions"] == [{"skill": "handover_r2r", "robots": ["r2", "r1"], "object": "chips"}]
-    assert halt["kind"] == ("intrusion" if predict else "precondition")
-    assert "inside both" in halt["reason"]
+    assert halt.actions == [{"skill": "handover_r2r", "robots": ["r2", "r1"], "object": "chips"}]
+    assert halt.kind == ("intrusion" if predict else "precondition")
+    assert "inside both" in halt.reason
     # the replan after the halt keeps q: same finished formulas, and q only ever changes when
     # a step's symbol is read (never at a halt)
-    after = next(r for r in _of(ep, "replan") if r["t"] >= halt["t"])
-    assert after["trigger"].startswith("halt") and after["done"] == halt["done"]
+    after = next(r for r in _of(ep, "replan") if r.t >= halt.t)
+    assert after.trigger.startswith("halt") and after.done == halt.done
     for (_, q0, n0), (_, q1, n1) in zip(hook.seen, hook.seen[1:], strict=False):
         assert q0 == q1 or n1 > n0
     # served directly by r2 once A stands in its workspace
-    last = _of(ep, "action_done")[-1]["action"]
+    last = _of(ep, "action_done")[-1].action
     assert last == {"skill": "handover_r2h", "robots": ["r2"], "object": "chips", "human": "A"}
 
 
@@ -119,12 +119,12 @@ def test_fig1_predicted_plan_takes_over_after_the_halt(cell: Scene) -> None:
     assert ep.success and ep.metrics.deliveries == 2
     (halt,) = _of(ep, "halt")
     (takeover,) = _of(ep, "takeover")
-    predicts = [r for r in _of(ep, "predict") if r["t"] <= takeover["t"]]
-    assert any(p["context"] == takeover["context"] and p["status"] == "solved" for p in predicts)
-    assert halt["t"] < takeover["t"]
+    predicts = [r for r in _of(ep, "predict") if r.t <= takeover.t]
+    assert any(p.context == takeover.context and p.status == "solved" for p in predicts)
+    assert halt.t < takeover.t
     # Person B's delivery went on during the halt
-    b = next(r for r in _of(ep, "action_done") if r["action"].get("human") == "B")
-    assert halt["t"] < b["t"] <= takeover["t"]
+    b = next(r for r in _of(ep, "action_done") if r.action.get("human") == "B")
+    assert halt.t < b.t <= takeover.t
 
 
 def test_new_instruction_mid_episode_keeps_finished_deliveries(cell: Scene) -> None:
@@ -138,15 +138,13 @@ def test_new_instruction_mid_episode_keeps_finished_deliveries(cell: Scene) -> N
     )
     assert ep.success
     delivered = [
-        r["action"]["object"]
-        for r in _of(ep, "action_done")
-        if r["action"]["skill"] == "handover_r2h"
+        r.action["object"] for r in _of(ep, "action_done") if r.action["skill"] == "handover_r2h"
     ]
     assert delivered == ["bottle", "chips"]
-    (update,) = [g for g in _of(ep, "grounding") if "update" in g]
-    assert update["t"] == 1.5 and "p100" in update["done"]  # finished before, still finished
-    assert "p100" in _of(ep, "episode_end")[0]["done"]
-    assert any(r["trigger"] == "goal" for r in _of(ep, "replan"))
+    (update,) = [g for g in _of(ep, "grounding") if g.update is not None]
+    assert update.t == 1.5 and "p100" in update.done  # finished before, still finished
+    assert "p100" in _of(ep, "episode_end")[0].done
+    assert any(r.trigger == "goal" for r in _of(ep, "replan"))
 
 
 def test_grasp_failures_end_in_success_or_a_logged_give_up(cell: Scene) -> None:
@@ -182,7 +180,7 @@ def test_episodes_are_reproducible_from_their_seed(cell: Scene) -> None:
 
     def strip(ep: Episode) -> list[dict[str, Any]]:
         # wall-clock latencies are the only non-simulated numbers in a log
-        return [{k: v for k, v in r.items() if k != "latency_ms"} for r in ep.records]
+        return [{k: v for k, v in r.to_json().items() if k != "latency_ms"} for r in ep.records]
 
     kw: dict[str, Any] = {"instruction": EXAMPLES["fail"], "events": both, "config": cfg}
     a, b, c = (run_checked(cell, seed=s, **kw) for s in (4, 4, 5))

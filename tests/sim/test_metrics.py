@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.errors import PlanFormatError
+from hltl.execution.log import parse_records
 from hltl.sim.metrics import (
     compute_metrics,
     concurrent_time,
@@ -94,7 +95,7 @@ def _log(*, violation: bool = False, overlap: bool = False) -> list[dict[str, An
 
 
 def test_hand_made_log() -> None:
-    m = compute_metrics(_log())
+    m = compute_metrics(parse_records(_log()))
     assert m.success and m.time_cost == 4.0 and m.violations == 0
     assert m.tokens == 120 and m.deliveries == 1 and m.takeovers == 1
     assert m.replans == 2  # the halt and the context change; initial and progress do not count
@@ -118,8 +119,8 @@ def test_hand_made_log() -> None:
 
 
 def test_violations_spoil_success_and_overlap_makes_f_del_negative() -> None:
-    assert not compute_metrics(_log(violation=True)).success
-    m = compute_metrics(_log(overlap=True))
+    assert not compute_metrics(parse_records(_log(violation=True))).success
+    m = compute_metrics(parse_records(_log(overlap=True)))
     # the exchange starts 0.2 s before the grasp ends (-0.2), the r2h 0.5 s after it (+0.5)
     assert m.f_del == pytest.approx(100 * 0.3 / 4.0)
     # one object: the union form agrees (0.5 s waiting minus 0.2 s anticipated)
@@ -136,9 +137,9 @@ def test_helpers() -> None:
 
 def test_truncated_or_malformed_logs_are_refused() -> None:
     with pytest.raises(PlanFormatError, match="no episode_end"):
-        compute_metrics(_log()[:-1])
+        compute_metrics(parse_records(_log()[:-1]))
     with pytest.raises(PlanFormatError, match="empty"):
-        compute_metrics([])
+        compute_metrics(parse_records([]))
 
 
 def _parallel_log() -> list[dict[str, Any]]:
@@ -183,7 +184,7 @@ def _parallel_log() -> list[dict[str, Any]]:
 
 
 def test_parallel_objects_walks_and_human_robot_concurrency() -> None:
-    m = compute_metrics(_parallel_log())
+    m = compute_metrics(parse_records(_parallel_log()))
     # x waits 1-3 (r1 -> r2), y waits 2-4 (r3 -> r1): summed 2 + 2 = 4 s, as a union 1-4 = 3 s
     assert m.f_del == pytest.approx(40.0)
     assert m.f_del_union == pytest.approx(30.0)
@@ -203,7 +204,7 @@ def test_a_walk_under_way_at_the_end_counts_until_the_end() -> None:
     recs = _parallel_log()
     recs.insert(-1, {"t": 9.0, "type": "human_move", "human": "A", "to": [0, 0, 0], "eta": 12.0})
     # active 0.5-5 and 9-10: 5.5 s of 10
-    assert compute_metrics(recs).h_idle_walk_active == pytest.approx(45.0)
+    assert compute_metrics(parse_records(recs)).h_idle_walk_active == pytest.approx(45.0)
 
 
 def test_old_logs_without_walk_arrival_still_score() -> None:
@@ -212,7 +213,7 @@ def test_old_logs_without_walk_arrival_still_score() -> None:
         if r["type"] == "human_move":
             del r["eta"]
     # each walk then lasts until the next one or the end: 0.5-10
-    assert compute_metrics(recs).h_idle_walk_active == pytest.approx(5.0)
+    assert compute_metrics(parse_records(recs)).h_idle_walk_active == pytest.approx(5.0)
 
 
 @st.composite

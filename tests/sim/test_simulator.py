@@ -43,7 +43,7 @@ def test_people_walk_at_their_speed_and_stop_at_the_target(cell: Scene) -> None:
     sim.advance(5.0)
     assert sim.human_position("A") == pytest.approx((0.5, 0.6, 0.0))
     assert sim.human_position("A", 2.0) == pytest.approx((0.0, 0.6, 0.0))  # the past stays known
-    kinds = [(r["type"], r["t"]) for r in sim.log.records]
+    kinds = [(r.type, r.t) for r in sim.log.records]
     assert kinds == [("human_move", 1.0), ("human_stop", 3.0)]
 
 
@@ -124,7 +124,7 @@ def test_injected_failures(cell: Scene, outcome: str) -> None:
         assert bottle.loc == Loc("rest") and "dropped" in st.reason
         assert bottle.position[2] == pytest.approx(0.05)  # the object's original height
         assert math.dist(bottle.position, cell.robot("r1").base) <= 0.7  # r1 can pick it again
-        assert [r["type"] for r in sim.log.records] == ["object_drop"]
+        assert [r.type for r in sim.log.records] == ["object_drop"]
 
 
 def test_robot_down_fails_its_action_and_comes_back(cell: Scene) -> None:
@@ -136,7 +136,7 @@ def test_robot_down_fails_its_action_and_comes_back(cell: Scene) -> None:
     assert sim.unavailable(0.3) == frozenset({"r1"})
     sim.advance(1.5)
     assert sim.unavailable(1.5) == frozenset()
-    assert [r["type"] for r in sim.log.records] == ["robot_down", "robot_up"]
+    assert [r.type for r in sim.log.records] == ["robot_down", "robot_up"]
 
 
 def test_handover_to_a_person_who_left_fails_and_is_a_violation(cell: Scene) -> None:
@@ -150,8 +150,8 @@ def test_handover_to_a_person_who_left_fails_and_is_a_violation(cell: Scene) -> 
     st = sim.poll(h, 1.0)
     assert st.state is ActionState.FAILED and "precondition false at completion" in st.reason
     assert sim.object_status("bottle").loc == Loc("held", "r1")
-    violations = [r for r in sim.log.records if r["type"] == "violation"]
-    assert len(violations) == 1 and "not inside r1's workspace" in violations[0]["reason"]
+    violations = [r for r in sim.log.records if r.type == "violation"]
+    assert len(violations) == 1 and "not inside r1's workspace" in violations[0].reason
 
 
 def test_object_moved_during_a_grasp_makes_it_fail(cell: Scene) -> None:

@@ -30,9 +30,9 @@ UPDATES = {
 
 def _delivered(records: list[dict[str, Any]]) -> set[tuple[str, str]]:
     return {
-        (r["action"]["object"], r["action"]["human"])
+        (r.action["object"], r.action["human"])
         for r in records
-        if r["type"] == "action_done" and r["action"]["skill"] == "handover_r2h"
+        if r.type == "action_done" and r.action["skill"] == "handover_r2h"
     }
 
 
@@ -42,12 +42,12 @@ def test_an_update_is_refused_or_carried_out(two_arms_path: Path, t: float, text
     events = EventSchedule((Instruction(t, text),))
     ep = run_episode(two_arms, instruction="Give Person A the bottle", events=events)
     records = list(ep.records)
-    grounding = [r for r in records if r["type"] == "grounding" and r["text"] == text]
+    grounding = [r for r in records if r.type == "grounding" and r.text == text]
     assert len(grounding) == 1
-    refused = "error" in grounding[0]
+    refused = grounding[0].error is not None
     delivered = _delivered(records)
     if refused:
-        assert grounding[0]["error"]
+        assert grounding[0].error
     elif UPDATES[text] is not None:
         # accepted, even while the action it undoes is under way: carried out
         assert ep.success, (t, text, ep.metrics.reason)
@@ -69,9 +69,9 @@ def test_an_update_halts_the_running_action_it_undoes(two_arms_path: Path) -> No
         events=EventSchedule((Instruction(0.7, text),)),
     )
     records = list(ep.records)
-    (halt,) = [r for r in records if r["type"] == "halt"]
-    assert (halt["t"], halt["kind"]) == (0.7, "update")
-    assert halt["actions"] == [
+    (halt,) = [r for r in records if r.type == "halt"]
+    assert (halt.t, halt.kind) == (0.7, "update")
+    assert halt.actions == [
         {"skill": "handover_r2h", "robots": ["r1"], "object": "bottle", "human": "A"}
     ]
     assert ep.success and _delivered(records) == {("bottle", "B")}
@@ -88,5 +88,5 @@ def test_an_update_halts_nothing_that_still_leaves_a_plan(two_arms_path: Path) -
         events=EventSchedule((Instruction(0.7, "also give Person B the chips"),)),
     )
     records = list(ep.records)
-    assert not [r for r in records if r["type"] in ("halt", "action_halted")]
+    assert not [r for r in records if r.type in ("halt", "action_halted")]
     assert ep.success and _delivered(records) == {("bottle", "A"), ("chips", "B")}

@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from hltl.execution.log import Record
+from hltl.execution.log import LogRecord
 from hltl.sim import scenarios
 from hltl.sim.episode import Episode, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, events_from_dict, load_events
@@ -27,8 +27,8 @@ SMALL_CELLS = ("1-1", "1-2", "2-1", "2-2")
 def _skills(ep: Episode) -> list[tuple[str, tuple[str, ...], str, str | None]]:
     out = []
     for r in ep.records:
-        if r["type"] == "action_done":
-            a = r["action"]
+        if r.type == "action_done":
+            a = r.action
             out.append((a["skill"], tuple(a["robots"]), a["object"], a.get("human")))
     return out
 
@@ -43,7 +43,7 @@ def _per_object(ep: Episode) -> dict[str, list[tuple[str, tuple[str, ...], str |
 
 
 def _timed(ep: Episode) -> list[tuple[float, str]]:
-    return [(round(r["t"], 6), str(r["action"])) for r in ep.records if r["type"] == "action_done"]
+    return [(round(r.t, 6), str(r.action)) for r in ep.records if r.type == "action_done"]
 
 
 def _both(
@@ -64,8 +64,8 @@ def test_small_cells_same_skills_motion_timing(name: str) -> None:
     assert _per_object(deep) == _per_object(flat)
     # timing differs only through the motions: every action lasts its motion plan
     for rec in deep.records:
-        if rec["type"] == "action_start":
-            assert rec["expected"] > 0
+        if rec.type == "action_start":
+            assert rec.expected > 0
 
 
 @pytest.mark.parametrize("name", SMALL_CELLS)
@@ -178,16 +178,16 @@ def _contact_scene() -> tuple[Scene, EventSchedule]:
 def test_person_walking_into_an_arm_is_a_logged_contact() -> None:
     scene, events = _contact_scene()
     spec = spec_from_dict({"root": "p0", "formulas": {"p0": "F picked(cup)"}}, source="t")
-    records: list[Record] = []
+    records: list[LogRecord] = []
     sim = functools.partial(MujocoSimulator, model=compile_scene(scene))
     run_episode(scene, spec=spec, events=events, seed=0, simulator=sim, on_record=records.append)
-    contacts = [r for r in records if r["type"] == "contact"]
-    assert contacts and contacts[0]["robot"] == "r1" and contacts[0]["human"] == "A"
+    contacts = [r for r in records if r.type == "contact"]
+    assert contacts and contacts[0].robot == "r1" and contacts[0].human == "A"
     # the person's torso or legs reach the arm's base after walking ~1.2 m at 1 m/s
-    assert 0.9 < contacts[0]["t"] < 1.6
-    flat: list[Record] = []
+    assert 0.9 < contacts[0].t < 1.6
+    flat: list[LogRecord] = []
     run_episode(scene, spec=spec, events=events, seed=0, on_record=flat.append)
-    assert not [r for r in flat if r["type"] == "contact"]
+    assert not [r for r in flat if r.type == "contact"]
 
 
 def test_dropped_object_rests_where_the_log_says(examples_dir: Path) -> None:
@@ -213,7 +213,7 @@ def test_dropped_object_rests_where_the_log_says(examples_dir: Path) -> None:
         sims.append(MujocoSimulator(*a, model=compile_scene(scene), use_motion_layer=False, **kw))
         return sims[0]
 
-    records: list[Record] = []
+    records: list[LogRecord] = []
     run_episode(
         scene,
         spec=spec,
@@ -223,12 +223,12 @@ def test_dropped_object_rests_where_the_log_says(examples_dir: Path) -> None:
         on_record=records.append,
         config=EpisodeConfig(max_time=12.0),
     )
-    drops = [r for r in records if r["type"] == "object_drop"]
+    drops = [r for r in records if r.type == "object_drop"]
     assert drops
     st = sims[0].stage
     last = drops[-1]
-    at = st.data.mocap_pos[st.sm.object_mocap[last["object"]]]
-    status = sims[0].object_status(last["object"])
+    at = st.data.mocap_pos[st.sm.object_mocap[last.object]]
+    status = sims[0].object_status(last.object)
     assert status.loc.kind in ("rest", "held")
     if status.loc.kind == "rest":
         assert math.dist(tuple(at), status.position) < 1e-9

@@ -42,11 +42,11 @@ def test_camera_perception_matches_ground_truth_on_a_walk() -> None:
     )
     assert truth.success and cam.success
     assert cam.metrics.time_cost == pytest.approx(truth.metrics.time_cost, abs=0.2)
-    frames = [r for r in cam.records if r["type"] == "perception"]
+    frames = [r for r in cam.records if r.type == "perception"]
     assert len(frames) >= 10
     # the walker is tracked the whole way and ends within 5 cm of where they stop
-    assert all(set(r["people"]) == {"A", "B"} and not r["lost"] for r in frames)
-    assert math.dist(frames[-1]["people"]["A"][:2], (0.3, 0.5)) < 0.05
+    assert all(set(r.people) == {"A", "B"} and not r.lost for r in frames)
+    assert math.dist(frames[-1].people["A"][:2], (0.3, 0.5)) < 0.05
 
 
 def test_camera_perception_needs_the_3d_simulator(capsys: pytest.CaptureFixture[str]) -> None:

@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from hltl.execution.log import LogRecord
 from hltl.planner import PlanResult, plan
 from hltl.sim.episode import run_episode
 from hltl.sim.events import events_from_dict
@@ -69,7 +70,7 @@ def paper_spec() -> HSpec:
 
 
 @pytest.fixture(scope="session")
-def demo_records(scene: Scene) -> tuple[dict[str, Any], ...]:
+def demo_records(scene: Scene) -> tuple[LogRecord, ...]:
     """The demo episode: a person walks over, a halt, a predicted takeover, success."""
     ep = run_episode(scene, instruction=DEMO_INSTRUCTION, events=demo_events(scene), seed=0)
     assert ep.success
@@ -77,7 +78,7 @@ def demo_records(scene: Scene) -> tuple[dict[str, Any], ...]:
 
 
 @pytest.fixture(scope="session")
-def down_records(scene: Scene) -> tuple[dict[str, Any], ...]:
+def down_records(scene: Scene) -> tuple[LogRecord, ...]:
     """r1 goes down mid-pick: a failed action, no plan while it is down, a replan when back."""
     events = events_from_dict(
         {"events": [{"t": 0.2, "type": "robot_down", "robot": "r1", "duration": 1.0}]}, scene

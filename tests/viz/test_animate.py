@@ -9,6 +9,7 @@ import pytest
 from PIL import Image
 
 from hltl.errors import BackendUnavailableError
+from hltl.execution.log import LogRecord
 from hltl.planner import PlanResult
 from hltl.viz.animate import (
     animate,
@@ -44,11 +45,11 @@ def test_frame_times(paper_plan: PlanResult, scene: Scene) -> None:
 
 
 def test_a_frame_shows_hands_objects_people_and_the_halt(
-    demo_records: tuple[dict[str, Any], ...], scene: Scene
+    demo_records: tuple[LogRecord, ...], scene: Scene
 ) -> None:
     track = track_from_log(demo_records)
-    halt = next(r for r in demo_records if r["type"] == "halt")
-    t = halt["t"] + 0.02
+    halt = next(r for r in demo_records if r.type == "halt")
+    t = halt.t + 0.02
     fig = draw_frame(track, t)
     for rid in scene.robot_ids:
         assert xy(artist(fig, f"hand:{rid}")) == pytest.approx(track.hand_position(rid, t)[:2])
@@ -56,8 +57,8 @@ def test_a_frame_shows_hands_objects_people_and_the_halt(
     assert xy(artist(fig, "object:bottle")) == pytest.approx(track.hand_position("r1", t)[:2])
     assert xy(artist(fig, "person:A")) == pytest.approx(track.human_position("A", t)[:2])
     # the forecast of the background plan made at the halt is drawn from A to where it puts A
-    pred = next(r for r in demo_records if r["type"] == "predict" and r["t"] == halt["t"])
-    assert xy(artist(fig, "forecast:A")) == pytest.approx(pred["humans"]["A"]["position"][:2])
+    pred = next(r for r in demo_records if r.type == "predict" and r.t == halt.t)
+    assert xy(artist(fig, "forecast:A")) == pytest.approx(pred.humans["A"]["position"][:2])
     assert xy(artist(fig, "forecast:B")) is None
     assert artist(fig, "status").get_text().startswith("HALT (INTRUSION)")
     assert "(halted)" in artist(fig, "step").get_text()
@@ -70,7 +71,7 @@ def test_a_frame_shows_hands_objects_people_and_the_halt(
     assert "all goals met" in artist(end, "step").get_text()
 
 
-def test_gif_has_the_frames(demo_records: tuple[dict[str, Any], ...], tmp_path: Path) -> None:
+def test_gif_has_the_frames(demo_records: tuple[LogRecord, ...], tmp_path: Path) -> None:
     anim = animate_episode(demo_records, fps=5, max_frames=8, dpi=40)
     path = save_animation(anim, tmp_path / "a.gif")
     with Image.open(path) as im:

@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 
 from hltl.errors import BackendUnavailableError, HltlError
+from hltl.execution.log import LogRecord
 from hltl.planner import PlanResult
 from hltl.viz._mpl import save_figure
 from hltl.viz.gantt import episode_gantt, plan_gantt
@@ -77,19 +78,19 @@ def test_a_robot_handover_is_a_linked_pair(chips_plan: PlanResult, scene: Scene)
 
 
 def test_episode_bars_walks_and_markers_match_the_log(
-    demo_records: tuple[dict[str, Any], ...],
+    demo_records: tuple[LogRecord, ...],
 ) -> None:
     fig = episode_gantt(demo_records)
-    starts = {r["handle"]: r for r in demo_records if r["type"] == "action_start"}
+    starts = {r.handle: r for r in demo_records if r.type == "action_start"}
     expected: dict[str, list[tuple[float, float]]] = defaultdict(list)
     for r in demo_records:
-        if r["type"] in ("action_done", "action_halted", "action_failed"):
-            s = starts[r["handle"]]
-            x, w = s["t"], r.get("end", r["t"]) - s["t"]
-            for rid in s["action"]["robots"]:
+        if r.type in ("action_done", "action_halted", "action_failed"):
+            s = starts[r.handle]
+            x, w = s.t, r.ended - s.t
+            for rid in s.action["robots"]:
                 expected[f"action:{rid}"].append((x, w))
-            if s["action"]["skill"] == "handover_r2h":
-                expected[f"receives:{s['action']['human']}"].append((x, w))
+            if s.action["skill"] == "handover_r2h":
+                expected[f"receives:{s.action['human']}"].append((x, w))
     got = bars(fig)
     for gid, items in expected.items():
         assert got[gid] == rounded(items), gid
@@ -101,13 +102,13 @@ def test_episode_bars_walks_and_markers_match_the_log(
         for p in fig.axes[0].patches
         if (p.get_gid() or "").startswith("action:")
     }
-    halted = next(r for r in demo_records if r["type"] == "action_halted")
-    x = starts[halted["handle"]]["t"]
+    halted = next(r for r in demo_records if r.type == "action_halted")
+    x = starts[halted.handle].t
     assert hatches[("action:r1", x)] == "///"
     assert sum(1 for h in hatches.values() if h) == 1
     lines = vlines(fig)
     for kind in ("halt", "takeover"):
-        t = next(r["t"] for r in demo_records if r["type"] == kind)
+        t = next(r.t for r in demo_records if r.type == kind)
         assert t in lines
     labels = " ".join(t.get_text() for t in fig.axes[0].texts)
     assert "halt (intrusion)" in labels and "takeover" in labels
@@ -116,7 +117,7 @@ def test_episode_bars_walks_and_markers_match_the_log(
 
 
 def test_failed_actions_are_hatched_and_robot_events_marked(
-    down_records: tuple[dict[str, Any], ...],
+    down_records: tuple[LogRecord, ...],
 ) -> None:
     fig = episode_gantt(down_records)
     failed = [

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import pytest
 
 from hltl.errors import PlanFormatError
+from hltl.execution.log import EpisodeStart, LogRecord
 from hltl.planner import PlanResult
 from hltl.viz.track import track_from_log, track_from_plan
 from hltl.world.geometry import human_handover_point, rendezvous_point
@@ -68,55 +68,55 @@ def test_hands_and_objects_follow_the_chips_plan(chips_plan: PlanResult, scene: 
     assert math.hypot(ox - ax, oy - ay) < 0.15
 
 
-def test_log_track_of_the_demo(demo_records: tuple[dict[str, Any], ...]) -> None:
+def test_log_track_of_the_demo(demo_records: tuple[LogRecord, ...]) -> None:
     track = track_from_log(demo_records)
     assert track.kind == "episode" and track.success is True
-    end = next(r for r in demo_records if r["type"] == "episode_end")
-    assert track.end == end["time_cost"]
+    end = next(r for r in demo_records if r.type == "episode_end")
+    assert track.end == end.time_cost
     # one span per action_start, ending where its done/failed/halted record says
-    starts = {r["handle"]: r for r in demo_records if r["type"] == "action_start"}
+    starts = {r.handle: r for r in demo_records if r.type == "action_start"}
     ends = {
-        r["handle"]: r
+        r.handle: r
         for r in demo_records
-        if r["type"] in ("action_done", "action_failed", "action_halted")
+        if r.type in ("action_done", "action_failed", "action_halted")
     }
     assert len(track.spans) == len(starts)
     for span in track.spans:
         handle = next(
             h
             for h, r in starts.items()
-            if r["t"] == span.start and r["action"]["robots"] == list(span.action.robots)
+            if r.t == span.start and r.action["robots"] == list(span.action.robots)
         )
-        assert span.end == ends[handle].get("end", ends[handle]["t"])
+        assert span.end == ends[handle].ended
     outcomes = sorted(s.outcome for s in track.spans)
     assert outcomes.count("halted") == 1 and outcomes.count("done") == len(outcomes) - 1
     kinds = [m.kind for m in track.markers]
     assert "halt" in kinds and "takeover" in kinds and "predict" in kinds
-    halt = next(r for r in demo_records if r["type"] == "halt")
+    halt = next(r for r in demo_records if r.type == "halt")
     assert any(
-        m.kind == "halt" and m.t == halt["t"] and m.detail == halt["reason"] for m in track.markers
+        m.kind == "halt" and m.t == halt.t and m.detail == halt.reason for m in track.markers
     )
 
 
-def test_people_walk_as_the_log_says(demo_records: tuple[dict[str, Any], ...]) -> None:
+def test_people_walk_as_the_log_says(demo_records: tuple[LogRecord, ...]) -> None:
     track = track_from_log(demo_records)
-    moves = [r for r in demo_records if r["type"] == "human_move"]
+    moves = [r for r in demo_records if r.type == "human_move"]
     first, second = moves
     # on the first walk, A is speed * elapsed along the straight line
-    p0, p1 = first["from"], first["to"]
+    p0, p1 = first.from_, first.to
     d = math.dist(p0[:2], p1[:2])
-    t = first["t"] + 0.3
-    frac = first["speed"] * 0.3 / d
+    t = first.t + 0.3
+    frac = first.speed * 0.3 / d
     expected = tuple(p0[i] + frac * (p1[i] - p0[i]) for i in range(3))
     assert close(track.human_position("A", t), expected, 1e-6)
     # the second walk starts where A was when it began and ends at its target
-    assert close(track.human_position("A", second["t"]), tuple(second["from"]), 1e-5)
-    assert close(track.human_position("A", track.end + 5.0), tuple(second["to"]))
+    assert close(track.human_position("A", second.t), tuple(second.from_), 1e-5)
+    assert close(track.human_position("A", track.end + 5.0), tuple(second.to))
     assert close(track.human_position("B", 1.0), (1.9, 0.5, 0.0))
 
 
 def test_a_failed_action_leaves_the_object_and_freezes_the_hand(
-    down_records: tuple[dict[str, Any], ...], scene: Scene
+    down_records: tuple[LogRecord, ...], scene: Scene
 ) -> None:
     track = track_from_log(down_records)
     failed = [s for s in track.spans if s.outcome == "failed"]
@@ -133,7 +133,7 @@ def test_bad_inputs_are_rejected_with_what_was_expected(scene: Scene) -> None:
     with pytest.raises(PlanFormatError, match="episode_start"):
         track_from_log([])
     with pytest.raises(PlanFormatError, match="scene"):
-        track_from_log([{"t": 0.0, "type": "episode_start"}])
+        track_from_log([EpisodeStart(t=0.0, scene={})])
     bad = {
         "status": "solved",
         "makespan": 0.5,

@@ -21,6 +21,7 @@ import numpy as np
 
 from hltl.execution.executor import ExecutorConfig
 from hltl.execution.latency import LatencyModel
+from hltl.execution.log import Grounding, Predict, Replan
 from hltl.grounding.offline import OfflineGrounder
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import EpisodeConfig, run_episode
@@ -48,14 +49,14 @@ def episode_samples(config: str, index: int, seed: int = 0) -> Samples:
         grounder=OfflineGrounder(),
     )
     planner = tuple(
-        (int(r["expanded"]), float(r["latency_ms"]) / 1000.0)
+        (int(r.expanded), float(r.latency_ms) / 1000.0)
         for r in ep.records
-        if (r["type"] == "replan" and r.get("source") == "planner") or r["type"] == "predict"
+        if (isinstance(r, Replan) and r.source == "planner") or isinstance(r, Predict)
     )
     grounding = tuple(
-        float(r["latency_ms"]) / 1000.0
+        float(r.latency_ms) / 1000.0
         for r in ep.records
-        if r["type"] == "grounding" and "latency_ms" in r
+        if isinstance(r, Grounding) and r.latency_ms is not None
     )
     return Samples(planner, grounding)
 

@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from hltl.execution.log import Perception
 from hltl.perception.evaluate import HORIZONS, Score, score
 from hltl.perception.predict import (
     DT,
@@ -566,7 +567,7 @@ def loop_bench(
                 **kw,
             )
             cam = run_episode(trial.scene, simulator=camera, **kw)
-            frames = [r for r in cam.records if r["type"] == "perception"]
+            frames = [r for r in cam.records if isinstance(r, Perception)]
             for sim in made:
                 sim.close()
             rows.append(
@@ -578,7 +579,7 @@ def loop_bench(
                     truth.metrics.time_cost,
                     cam.metrics.time_cost,
                     len(frames),
-                    sum(1 for r in frames if r["lost"]),
+                    sum(1 for r in frames if r.lost),
                 )
             )
             if progress:

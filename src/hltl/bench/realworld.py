@@ -25,7 +25,7 @@ from typing import Any
 from hltl.bench.baselines.greedy import GreedyPolicy
 from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
 from hltl.errors import BackendUnavailableError, HltlError
-from hltl.execution.log import Record
+from hltl.execution.log import REPLANS, ActionDone, ActionStart, EpisodeEnd, LogRecord
 from hltl.grounding.offline import OfflineGrounder
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, HumanMove, Instruction, TimedEvent
@@ -181,13 +181,13 @@ def _handover_window(scene: Scene, instruction: str, timing: str) -> tuple[float
         config=EpisodeConfig(max_time=60.0),
     )
     starts = {
-        r["handle"]: r["t"]
+        r.handle: r.t
         for r in ep.records
-        if r["type"] == "action_start" and r["action"]["skill"] == "handover_r2r"
+        if isinstance(r, ActionStart) and r.action["skill"] == "handover_r2r"
     }
     for r in ep.records:
-        if r["type"] == "action_done" and r["handle"] in starts:
-            return float(starts[r["handle"]]), float(r["t"])
+        if isinstance(r, ActionDone) and r.handle in starts:
+            return float(starts[r.handle]), float(r.t)
     raise HltlError(f"{scene.source}: no robot-to-robot hand-over ran ({ep.metrics.reason})")
 
 
@@ -210,12 +210,10 @@ class Result3D:
     wall_s: float
 
 
-def _replans(records: Sequence[Record]) -> int:
+def _replans(records: Sequence[LogRecord]) -> int:
     """Plan regenerations: replans for anything but the first plan or a finished step."""
     return sum(
-        1
-        for r in records
-        if r["type"] == "replan" and not set(str(r.get("trigger", "")).split("+")) <= ROUTINE
+        1 for r in records if isinstance(r, REPLANS) and not set(r.trigger.split("+")) <= ROUTINE
     )
 
 
@@ -254,8 +252,8 @@ def run_task(
     else:
         raise HltlError(f"unknown method {method!r}; expected one of {', '.join(METHODS3D)}")
     wall = time.perf_counter() - t0
-    end = [r for r in records if r["type"] == "episode_end"][-1]
-    goals = bool(end.get("success"))
+    end = [r for r in records if isinstance(r, EpisodeEnd)][-1]
+    goals = bool(end.success)
     replans = _replans(records)
     ok = m.success and not check_invariants(records) and replans <= MAX_REPLANS
     reason = m.reason if not ok and not m.success else ("" if ok else f"{replans} replans")

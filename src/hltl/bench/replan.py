@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
+from hltl.execution.log import REPLANS
 from hltl.sim.episode import Episode, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, HumanMove
 from hltl.sim.metrics import percentile
@@ -52,9 +53,7 @@ def crossing_walk(scenario: Scenario, start: float = 0.5, speed: float = 1.0) ->
 
 def _latencies(ep: Episode) -> list[float]:
     return [
-        float(r["latency_ms"])
-        for r in ep.records
-        if r["type"] == "replan" and r.get("trigger") != "initial"
+        float(r.latency_ms) for r in ep.records if isinstance(r, REPLANS) and r.trigger != "initial"
     ]
 
 

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from types import FrameType
 from typing import Any
 
+from hltl.execution.log import ActionDone, EpisodeStart, Grounding, LogRecord
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.events import (
     EventSchedule,
@@ -155,19 +156,19 @@ def _result(
     )
 
 
-def _deliveries(records: Sequence[dict[str, Any]], success: bool) -> tuple[int, int]:
+def _deliveries(records: Sequence[LogRecord], success: bool) -> tuple[int, int]:
     """(lost, duplicated): spec deliveries missing from a success; objects handed over twice."""
     handed = Counter(
-        r["action"]["object"]
+        r.action["object"]
         for r in records
-        if r["type"] == "action_done" and r["action"]["skill"] == "handover_r2h"
+        if isinstance(r, ActionDone) and r.action["skill"] == "handover_r2h"
     )
     duplicated = sum(n - 1 for n in handed.values() if n > 1)
     lost = 0
     if success:
         spec = next(
-            (r["spec"] for r in reversed(records) if r["type"] == "grounding" and "spec" in r),
-            next(r for r in records if r["type"] == "episode_start").get("spec"),
+            (r.spec for r in reversed(records) if isinstance(r, Grounding) and r.spec is not None),
+            next(r for r in records if isinstance(r, EpisodeStart)).spec,
         )
         wanted = {
             text.split("(")[1].split(",")[0].strip()

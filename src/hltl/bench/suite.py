@@ -31,7 +31,7 @@ from hltl.bench.latency import DEFAULT_MODEL as DEFAULT_LATENCY_MODEL
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
 from hltl.execution.latency import LatencyModel, load_latency_model
-from hltl.execution.log import Record
+from hltl.execution.log import Anticipate, EpisodeEnd, Grounding, LogRecord, Replan
 from hltl.execution.predict import TrajectoryPredictor
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
@@ -201,7 +201,7 @@ def run_trial(job: TrialJob) -> TrialResult:
 def _scored(
     method: str,
     trial: Trial,
-    records: Sequence[Record],
+    records: Sequence[LogRecord],
     m: Metrics,
     *,
     variant: str = "full",
@@ -210,8 +210,8 @@ def _scored(
 ) -> TrialResult:
     """A closed-loop episode's result: its metrics, judged with the log's invariants."""
     problems = check_invariants(records)
-    end = [r for r in records if r["type"] == "episode_end"][-1]
-    goals_met = bool(end.get("success"))
+    end = [r for r in records if isinstance(r, EpisodeEnd)][-1]
+    goals_met = bool(end.success)
     return TrialResult(
         method=method,
         config=trial.config,
@@ -260,11 +260,9 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         predictor=_predictor(v.predictor, trial),
     )
     m = ep.metrics
-    charged = [
-        float(r.get("charged_s", 0.0)) for r in ep.records if r["type"] in ("replan", "grounding")
-    ]
-    groundings = [r for r in ep.records if r["type"] == "grounding" and "error" not in r]
-    est = sum(estimate_grounding_tokens(str(r["text"]), trial.scene) for r in groundings)
+    charged = [float(r.charged_s or 0.0) for r in ep.records if isinstance(r, Replan | Grounding)]
+    groundings = [r for r in ep.records if isinstance(r, Grounding) and r.error is None]
+    est = sum(estimate_grounding_tokens(str(r.text), trial.scene) for r in groundings)
     return _scored(
         "hltl",
         trial,
@@ -279,9 +277,7 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
             "planner_calls": m.planner_calls,
             "charged_s": round(sum(charged), 6),
             "charged_calls": sum(1 for c in charged if c > 0),
-            "anticipations": sum(
-                1 for r in ep.records if r["type"] == "anticipate" and r.get("differs")
-            ),
+            "anticipations": sum(1 for r in ep.records if isinstance(r, Anticipate) and r.differs),
         },
     )
 

@@ -55,19 +55,21 @@ class Command:
     action: Action
     t: float
     reason: str = ""
+    motion: tuple[str, ...] = ()  # robots whose joint trajectories were sent for this start
 
     def encode(self) -> bytes:
-        return dumps(
-            {
-                "episode": self.episode,
-                "seq": self.seq,
-                "op": self.op,
-                "handle": self.handle,
-                "action": self.action.to_dict(),
-                "t": self.t,
-                "reason": self.reason,
-            }
-        )
+        d = {
+            "episode": self.episode,
+            "seq": self.seq,
+            "op": self.op,
+            "handle": self.handle,
+            "action": self.action.to_dict(),
+            "t": self.t,
+            "reason": self.reason,
+        }
+        if self.motion:
+            d["motion"] = list(self.motion)
+        return dumps(d)
 
     @classmethod
     def decode(cls, payload: bytes) -> Command:
@@ -84,6 +86,7 @@ class Command:
                 Action.from_dict(d["action"]),
                 float(d["t"]),
                 str(d.get("reason", "")),
+                tuple(str(r) for r in d.get("motion", ())),
             )
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed command on the bus: {exc}") from None

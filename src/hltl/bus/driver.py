@@ -34,8 +34,8 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import EventLog
-from hltl.sim.episode import Cell, CellFactory
+from hltl.execution.log import EventLog, LogRecord, RobotDown
+from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
 from hltl.skills.library import Action
@@ -48,6 +48,10 @@ class MotionLike(Protocol):
 
     @property
     def trajectories(self) -> Sequence[TrajectoryLike]: ...
+    @property
+    def events(self) -> Sequence[tuple[float, str, str]]: ...
+    @property
+    def duration(self) -> float: ...
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,6 +97,7 @@ class DriverStats:
     stale_reports: int = 0
     recoveries: int = 0
     queries: int = 0
+    ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
     round_trips: list[float] = field(default_factory=list)
 
 
@@ -122,6 +127,9 @@ class BusCell:
         cell: str = "default",
         timing: BusTiming | None = None,
         faults: FaultModel | None = None,
+        tick: float = EpisodeConfig().tick,
+        max_time: float | None = None,
+        ahead: int = 64,
     ) -> None:
         self.session = session
         self.scene = scene
@@ -131,7 +139,7 @@ class BusCell:
         self.faults = FaultModel() if faults is None else faults
         self.episode = uuid.uuid4().hex
         self.stats = DriverStats()
-        self._link = Link(session, self.faults, name=f"executor-{cell}")
+        self.link = Link(session, self.faults, name=f"executor-{cell}")
         self._cond = threading.Condition()
         self._latest: dict[int, Report] = {}
         self._local: dict[int, ActionStatus] = {}  # outcomes decided here (robot down)
@@ -151,6 +159,11 @@ class BusCell:
         self._pending = False
         self._unavailable: frozenset[str] = frozenset()
         self._obs: WorldState | None = None
+        # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
+        self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time}
+        self._ahead: list[dict[str, Any]] = []
+        self._batch = 0
+        self._consumed = 0
         self.now = 0.0
         self._entities: list[Any] = [
             session.declare_subscriber(self.keys.all_status, self._on_report),
@@ -164,6 +177,7 @@ class BusCell:
             "events": events.to_list(),
             "seed": seed,
             "perception": {"noise": perception.noise, "latency": perception.latency},
+            "ahead": self._ahead_req,
         }
         deadline = time.monotonic() + self.timing.connect
         d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
@@ -176,14 +190,14 @@ class BusCell:
                 f"no simulator node answers on {self.keys.sim_reset}; start one with "
                 f"'hltl node sim --scene SCENE --cell {cell}'"
             )
-        self._absorb(d)
+        self._take(d)
 
     def close(self) -> None:
         for e in self._entities:
             with contextlib.suppress(Exception):  # the session is already closed
                 e.undeclare()
         self._entities = []
-        self._link.close()
+        self.link.close()
 
     def end(self) -> None:
         """Tell the node the episode is over (it may then serve the next one)."""
@@ -313,14 +327,26 @@ class BusCell:
                 time.sleep(min(0.01, self.timing.timeout))
         return None
 
+    def _take(self, d: dict[str, Any]) -> None:
+        """Take in a reset, step or peek answer, and the ticks simulated after it."""
+        self._absorb(d)
+        self._ahead = list(d.get("ahead", ()))
+        self._batch = int(d.get("step", 0))
+        self._consumed = 0
+
     def _absorb(self, d: dict[str, Any]) -> None:
-        """Take in a reset or step answer: the cell's log records, the clock, the observation."""
+        """Take in one tick: the cell's log records, the observation, the actions' reports, the
+        clock."""
         for rec in d.get("records", ()):
-            rec = dict(rec)
-            self.log.emit(rec.pop("t"), rec.pop("type"), **rec)
+            self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
         if "observation" in d:
             self._obs = world_from_wire(d["observation"])
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
+        reports = [Report.from_dict(item) for item in d.get("status", ())]
+        with self._cond:
+            for rep in reports:
+                if rep.episode == self.episode:
+                    self._accept(rep)
         self._clock(d)
 
     def _clock(self, d: dict[str, Any]) -> None:
@@ -384,7 +410,7 @@ class BusCell:
             new = [(r, why) for r, why in self._down.items() if r not in self._logged]
             self._logged.update(r for r, _ in new)
         for r, why in new:
-            self.log.emit(self.now, "robot_down", robot=r, until=None, reason=why)
+            self.log.emit(RobotDown(t=self.now, robot=r, until=None, reason=why))
 
     def _lose_all(self, reason: str) -> None:
         self._dead = True
@@ -398,18 +424,39 @@ class BusCell:
         if self._dead:
             return
         self._confirm()
-        d = self._ask(
-            self.keys.sim_step,
-            {"episode": self.episode, "step": self._step + 1, "t": t},
-            robots=self.scene.robot_ids,
-        )
-        if d is None:
-            self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
-            return
-        self._step += 1
-        self._absorb(d)
+        self.stats.ticks += 1
+        if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
+            # the node already simulated this tick: no round trip
+            d = self._ahead.pop(0)
+            self._consumed += 1
+            self._absorb(d)
+        else:
+            d_ = self._request(t)
+            if d_ is None:
+                self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
+                return
+            d = d_
+            self._take(d)
         self._sync(int(d["reports"]))
         self._log_down()
+
+    def _request(self, t: float, peek: bool = False) -> dict[str, Any] | None:
+        """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands); both
+        say how many look-ahead ticks were used and ask for the next ones."""
+        req = {
+            "episode": self.episode,
+            "step": self._step + 1,
+            "t": t,
+            "batch": self._batch,
+            "consumed": self._consumed,
+            "ahead": self._ahead_req,
+        }
+        if peek:
+            req["peek"] = True
+        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids)
+        if d is not None:
+            self._step += 1
+        return d
 
     def observe(self, t: float | None = None) -> WorldState:
         if self._obs is None:
@@ -424,15 +471,11 @@ class BusCell:
         if self._dead:
             return math.inf
         if self._dirty:
-            d = self._ask(
-                self.keys.sim_step,
-                {"episode": self.episode, "peek": True, "t": self.now},
-                robots=self.scene.robot_ids,
-            )
+            d = self._request(self.now, peek=True)
             if d is None:
                 self._lose_all(f"the simulator node stopped answering at t={self.now:.2f}")
                 return math.inf
-            self._clock(d)
+            self._take(d)
         return max(self.now, self._next)
 
     def pending_instructions(self) -> bool:
@@ -464,16 +507,33 @@ class BusCell:
                 ActionState.FAILED, 0.0, t, f"robot {down[0]} is down: {self._down[down[0]]}"
             )
             return handle
+        # the trajectories go first (and again with every retransmission): the node starts the
+        # action only once it holds every robot's
+        sends: list[tuple[str, bytes, bytes]] = []
         if motion is not None:
+            meta = dumps(
+                {
+                    "episode": self.episode,
+                    "handle": hid,
+                    "events": [list(e) for e in motion.events],
+                    "duration": motion.duration,
+                }
+            )
             for traj in motion.trajectories:
                 if traj.robot in action.robots:
-                    self._link.put(
-                        self.keys.trajectory(traj.robot),
-                        encode_trajectory(traj, t),
-                        attachment=dumps({"episode": self.episode, "handle": hid}),
+                    sends.append(
+                        (self.keys.trajectory(traj.robot), encode_trajectory(traj, t), meta)
                     )
         self._dirty = True
-        if not self._command("start", handle, t, lambda s: True):
+        self._ahead = []  # simulated without this command: the node undoes them
+        if not self._command(
+            "start",
+            handle,
+            t,
+            lambda s: True,
+            sends=sends,
+            motion=tuple(robot_of(k) for k, _, _ in sends),
+        ):
             self._give_up_on(handle, t, "did not acknowledge the action")
         return handle
 
@@ -500,6 +560,7 @@ class BusCell:
         if self._status_terminal(handle.id):
             return
         self._dirty = True
+        self._ahead = []
         if not self._command("halt", handle, t, lambda s: s.terminal, reason):
             self._give_up_on(handle, t, "did not confirm the halt")
 
@@ -510,10 +571,13 @@ class BusCell:
         t: float,
         done: Callable[[ActionStatus], bool],
         reason: str = "",
+        sends: Sequence[tuple[str, bytes, bytes]] = (),
+        motion: tuple[str, ...] = (),
     ) -> bool:
-        """Send a command to every robot of the action until a report says ``done``."""
+        """Send a command to every robot of the action until a report says ``done`` (with
+        ``sends``, the puts that must reach the node first, each time)."""
         self._seq += 1
-        cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason)
+        cmd = Command(self.episode, self._seq, op, handle.id, handle.action, t, reason, motion)
         payload = cmd.encode()
         since = self._latest.get(handle.id)
         for attempt in self._attempts(self.timing.retries, handle.action.robots):
@@ -521,8 +585,10 @@ class BusCell:
                 self.stats.retransmits += 1
             self.stats.commands += 1
             t0 = time.perf_counter()
+            for key, data, attachment in sends:
+                self.link.put(key, data, attachment=attachment)
             for r in handle.action.robots:
-                self._link.put(self.keys.action(r), payload)
+                self.link.put(self.keys.action(r), payload)
             deadline = time.monotonic() + self.timing.timeout
             while True:
                 with self._cond:
@@ -558,7 +624,7 @@ class BusCell:
         self._seq += 1
         cancel = Command(self.episode, self._seq, "halt", handle.id, handle.action, t, why)
         for r in handle.action.robots:
-            self._link.put(self.keys.action(r), cancel.encode())
+            self.link.put(self.keys.action(r), cancel.encode())
 
 
 def _refusal(payload: bytes) -> str | None:
@@ -576,6 +642,9 @@ def bus_cell(
     timing: BusTiming | None = None,
     faults: FaultModel | None = None,
     opened: list[BusCell] | None = None,
+    tick: float = EpisodeConfig().tick,
+    max_time: float | None = None,
+    ahead: int = 64,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given."""
@@ -589,7 +658,18 @@ def bus_cell(
         log: EventLog,
     ) -> Cell:
         c = BusCell(
-            session, scene, events, seed, perception, log, cell=cell, timing=timing, faults=faults
+            session,
+            scene,
+            events,
+            seed,
+            perception,
+            log,
+            cell=cell,
+            timing=timing,
+            faults=faults,
+            tick=tick,
+            max_time=max_time,
+            ahead=ahead,
         )
         if opened is not None:
             opened.append(c)

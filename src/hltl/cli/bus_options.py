@@ -41,11 +41,6 @@ class BusSimulator:
                 "--sim chooses the in-process simulator; with --bus the node chooses it "
                 "('hltl node sim --sim mujoco')"
             )
-        if getattr(args, "motion", False):
-            raise HltlError(
-                "--motion with --bus is not supported yet: the node's simulator would need the "
-                "same motion layer; run one or the other"
-            )
         endpoint = parse_bus(args.bus)
         try:
             # a node still starting up gets five answer times to appear
@@ -54,7 +49,13 @@ class BusSimulator:
             raise HltlError(f"--bus-timeout: {exc}") from None
         self.session: Any = open_session(BusConfig(connect=(endpoint,)))
         self.opened: list[BusCell] = []
-        make = bus_cell(self.session, cell=args.cell, timing=timing, opened=self.opened)
+        make = bus_cell(
+            self.session,
+            cell=args.cell,
+            timing=timing,
+            opened=self.opened,
+            max_time=getattr(args, "max_time", None),
+        )
 
         def factory(*a: Any, **kw: Any) -> Cell:
             try:

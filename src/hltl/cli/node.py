@@ -39,6 +39,12 @@ def register(sub: Any) -> None:
         default="motion",
         help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
     )
+    s.add_argument(
+        "--motion",
+        action="store_true",
+        help="--sim discrete: time actions with the motion layer (as 'hltl run --motion', the "
+        "motion extra); serve executors started with 'hltl run --motion --bus'",
+    )
     s.add_argument("--cell", default="default", help="the cell's name in key expressions")
     s.add_argument(
         "--listen",
@@ -103,7 +109,19 @@ def _factory(args: argparse.Namespace, scene: Any) -> Any:
     if args.sim == "discrete":
         from hltl.sim.simulator import Simulator
 
+        if args.motion:
+            import functools
+
+            from hltl.motion.cost import motion_models
+
+            kinematics, cost = motion_models(scene)
+            return functools.partial(Simulator, cost=cost, kinematics=kinematics)
         return Simulator
+    if args.motion:
+        raise HltlError(
+            "--motion times the discrete simulator; the 3D simulator (--sim mujoco) always "
+            "follows the joint trajectories it receives"
+        )
     from hltl.cli.sim3d import simulator_options
 
     extra, _ = simulator_options(scene, args.timing, None)  # compiles the model once, up front

@@ -11,6 +11,8 @@ from typing import Any
 from hltl.cli.bus_options import add_bus_arguments
 from hltl.cli.common import check_option
 from hltl.errors import HltlError
+from hltl.execution import log as elog
+from hltl.execution.log import LogRecord
 
 
 def register(sub: Any) -> None:
@@ -228,100 +230,101 @@ class Timeline:
         self.scene = scene
         self.console = Console(highlight=False)
 
-    def __call__(self, rec: dict[str, Any]) -> None:
+    def __call__(self, rec: LogRecord) -> None:
         line = describe_record(self.scene, rec)
         if line is not None:
             style, text = line
-            self.console.print(f"[dim]{rec['t']:7.2f}[/] [{style}]{rec['type']:<13}[/] {text}")
+            self.console.print(f"[dim]{rec.t:7.2f}[/] [{style}]{rec.type:<13}[/] {text}")
 
 
-def describe_record(scene: Any, rec: dict[str, Any]) -> tuple[str, str] | None:
+def describe_record(scene: Any, rec: LogRecord) -> tuple[str, str] | None:
     """(style, text) for a log record worth showing, or None."""
     from hltl.cli.common import describe_action
     from hltl.skills.library import Action
 
-    kind = rec["type"]
+    def act(d: dict[str, Any] | None) -> str:
+        return "?" if d is None else describe_action(scene, Action.from_dict(d))
 
-    def act(d: dict[str, Any]) -> str:
-        return describe_action(scene, Action.from_dict(d))
-
-    if kind == "grounding":
-        if "error" in rec:
-            return "red", f"{rec['text']!r}: {rec['error']}"
-        return (
-            "cyan",
-            f"{rec['text']!r} → {rec['tokens']} tokens, {len(rec['spec']['formulas'])} formulas",
-        )
-    if kind == "replan":
-        if rec["status"] != "solved":
-            return "yellow", f"{rec['trigger']}: {rec['status']} ({rec.get('reason', '')})"
-        return (
-            "blue",
-            f"{rec['trigger']} ({rec['source']}): makespan {rec['makespan']:.2f} s, "
-            f"{_steps(len(rec['steps']))}, {rec['latency_ms']:.1f} ms"
-            + (
-                f", {rec['charged_s'] * 1000:.1f} ms charged ({rec['charge']})"
-                if rec.get("charged_s")
-                else ""
-            ),
-        )
-    if kind == "dispatch":
-        return "bold", " | ".join(act(a) for a in rec["actions"]) or "(empty step)"
-    if kind == "action_done":
-        return "green", act(rec["action"])
-    if kind in ("action_failed", "action_halted"):
-        return "red", f"{act(rec['action'])}: {rec['reason']}"
-    if kind == "halt":
-        return "bold red", f"{rec['kind']}: {rec['reason']}"
-    if kind == "takeover":
-        return (
-            "magenta",
-            f"predicted plan from t={rec['predicted_at']:.2f} takes over ({rec['context']})",
-        )
-    if kind == "anticipate":
-        return (
-            "magenta",
-            f"anticipating {rec['context']}: "
-            + ", ".join(act(a) for a in rec["actions"])
-            + " (valid now and in the forecast world)",
-        )
-    if kind == "predict":
-        people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec["humans"].items())
-        # two background plans per forecast: one from the current world, one from the world
-        # after the running step; say which, or the lines look like duplicates
-        basis = _BASIS.get(str(rec.get("basis", "")), "")
-        result = str(rec["status"])
-        if rec.get("makespan") is not None and result == "solved":
-            result += f", makespan {float(rec['makespan']):.2f} s"
-        return "magenta", f"background plan for {people}{basis}: {result}"
-    if kind == "monitor" and rec["fired"]:
-        return "green", f"fired {', '.join(rec['fired'])}" + (
-            " — task complete" if rec["accepted"] else ""
-        )
-    if kind == "human_move":
-        return "yellow", f"{rec['human']} walks to {rec['to']} at {rec['speed']} m/s"
-    if kind == "object_move":
-        return "yellow", f"{rec['object']} moved to {rec['to']}" + (
-            "" if rec["applied"] else f" (ignored: {rec['reason']})"
-        )
-    if kind == "object_drop":
-        return "yellow", f"{rec['object']} dropped at {rec['position']}"
-    if kind == "robot_down" and rec.get("until") is None:  # lost on the bus: no known return
-        return "yellow", f"{rec['robot']}: {rec.get('reason', 'down')}"
-    if kind in ("robot_down", "robot_up"):
-        return "yellow", rec["robot"] + (
-            f" until t={rec['until']:.2f}" if kind == "robot_down" else ""
-        )
-    if kind == "instruction":
-        return "cyan", repr(rec["text"])
-    if kind in ("wait", "give_up"):
-        return "yellow" if kind == "wait" else "bold red", rec["reason"]
-    if kind == "contact":
-        return "bold red", f"{rec['robot']} touches {rec['human']} ({rec['part']})"
-    if kind == "violation":
-        return "bold red", f"{act(rec['action'])}: {rec['reason']}"
-    if kind == "episode_end":
-        return ("bold green" if rec["success"] else "bold red"), rec["reason"]
+    match rec:
+        case elog.Grounding(error=str() as error):
+            return "red", f"{rec.text!r}: {error}"
+        case elog.Grounding():
+            n = len((rec.spec or {}).get("formulas", ()))
+            return "cyan", f"{rec.text!r} → {rec.tokens} tokens, {n} formulas"
+        case elog.Replan() | elog.PolicyReplan() if rec.status != "solved":
+            return "yellow", f"{rec.trigger}: {rec.status} ({rec.reason or ''})"
+        case elog.Replan():
+            return (
+                "blue",
+                f"{rec.trigger} ({rec.source}): makespan {rec.makespan or 0.0:.2f} s, "
+                f"{_steps(len(rec.steps))}, {rec.latency_ms:.1f} ms"
+                + (
+                    f", {rec.charged_s * 1000:.1f} ms charged ({rec.charge})"
+                    if rec.charged_s
+                    else ""
+                ),
+            )
+        case elog.PolicyReplan():
+            return "blue", f"{rec.trigger} ({rec.source}): {_steps(len(rec.steps))}"
+        case elog.Dispatch():
+            return "bold", " | ".join(act(a) for a in rec.actions) or "(empty step)"
+        case elog.ActionDone():
+            return "green", act(rec.action)
+        case elog.ActionFailed() | elog.ActionHalted():
+            return "red", f"{act(rec.action)}: {rec.reason}"
+        case elog.Halt():
+            return "bold red", f"{rec.kind}: {rec.reason}"
+        case elog.Takeover():
+            return (
+                "magenta",
+                f"predicted plan from t={rec.predicted_at or 0.0:.2f} takes over ({rec.context})",
+            )
+        case elog.Anticipate():
+            return (
+                "magenta",
+                f"anticipating {rec.context}: "
+                + ", ".join(act(a) for a in rec.actions)
+                + " (valid now and in the forecast world)",
+            )
+        case elog.Predict():
+            people = ", ".join(f"{h} → {{{','.join(p['robots'])}}}" for h, p in rec.humans.items())
+            # two background plans per forecast: one from the current world, one from the world
+            # after the running step; say which, or the lines look like duplicates
+            basis = _BASIS.get(str(rec.basis), "")
+            result = str(rec.status)
+            if rec.makespan is not None and result == "solved":
+                result += f", makespan {float(rec.makespan):.2f} s"
+            return "magenta", f"background plan for {people}{basis}: {result}"
+        case elog.Monitor() if rec.fired:
+            return "green", f"fired {', '.join(rec.fired)}" + (
+                " — task complete" if rec.accepted else ""
+            )
+        case elog.HumanMove():
+            return "yellow", f"{rec.human} walks to {rec.to} at {rec.speed} m/s"
+        case elog.ObjectMove():
+            return "yellow", f"{rec.object} moved to {rec.to}" + (
+                "" if rec.applied else f" (ignored: {rec.reason})"
+            )
+        case elog.ObjectDrop():
+            return "yellow", f"{rec.object} dropped at {rec.position}"
+        case elog.RobotDown(until=None):  # lost on the bus: no known return
+            return "yellow", f"{rec.robot}: {rec.reason or 'down'}"
+        case elog.RobotDown(until=float() | int() as until):
+            return "yellow", f"{rec.robot} until t={until:.2f}"
+        case elog.RobotUp():
+            return "yellow", rec.robot
+        case elog.InstructionGiven():
+            return "cyan", repr(rec.text)
+        case elog.Wait():
+            return "yellow", rec.reason
+        case elog.GiveUp():
+            return "bold red", rec.reason
+        case elog.Contact():
+            return "bold red", f"{rec.robot} touches {rec.human} ({rec.part})"
+        case elog.Violation():
+            return "bold red", f"{act(rec.action)}: {rec.reason}"
+        case elog.EpisodeEnd():
+            return ("bold green" if rec.success else "bold red"), rec.reason
     return None
 
 

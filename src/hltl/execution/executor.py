@@ -29,7 +29,23 @@ from hltl.execution.drivers import (
 )
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.latency import LatencyModel, planner_charge, takeover_charge
-from hltl.execution.log import EventLog, log_monitor_step, world_to_dict
+from hltl.execution.log import (
+    ActionDone,
+    ActionFailed,
+    ActionHalted,
+    ActionStart,
+    Anticipate,
+    Dispatch,
+    EventLog,
+    GiveUp,
+    Halt,
+    Predict,
+    Replan,
+    Takeover,
+    Wait,
+    log_monitor_step,
+    world_to_dict,
+)
 from hltl.execution.predict import (
     ConstantVelocityPredictor,
     TrajectoryPredictor,
@@ -293,13 +309,13 @@ class Executor:
         self.t = max(self.t, t)
         charge = self._charge_grounding(update)
         if update.spec is None:
-            self.log.emit(self.t, "grounding", **update.record(frozenset()), **charge)
+            self.log.emit(update.record(self.t, frozenset(), charge))
             if self.spec is None:
                 self._give_up(f"cannot ground the instruction: {update.error}")
             return
         old = self.spec
         self._set_spec(update.spec, old)
-        self.log.emit(self.t, "grounding", **update.record(self.done_formulas()), **charge)
+        self.log.emit(update.record(self.t, self.done_formulas(), charge))
         self._pending_tokens += update.tokens
         self._trigger.add(Trigger.INITIAL if old is None else Trigger.GOAL)
         if old is not None:
@@ -350,13 +366,14 @@ class Executor:
             self._busy_until = max(self._busy_until, self.t) + seconds
             self.charged += seconds
 
-    def _charge_grounding(self, update: SpecUpdate) -> dict[str, float]:
+    def _charge_grounding(self, update: SpecUpdate) -> float | None:
+        """Seconds charged for grounding ``update`` (None: no latency model, nothing logged)."""
         model = self.config.latency
         if model is None:
-            return {}
+            return None
         cost = model.grounding(update.latency_ms / 1000.0)
         self._charge(cost)
-        return {"charged_s": round(cost, 6)}
+        return round(cost, 6)
 
     def _stopped(self) -> bool:
         return self.status is ExecStatus.GAVE_UP
@@ -403,39 +420,21 @@ class Executor:
                 continue
             run.status = st
             a = run.action
+            handle, action, end = run.handle.id, a.to_dict(), round(st.t, 6)
             if st.state is ActionState.DONE:
                 self._apply(run.transition, st.t)
                 self._failures.pop(a.object, None)
-                self.log.emit(
-                    self.t,
-                    "action_done",
-                    handle=run.handle.id,
-                    action=a.to_dict(),
-                    end=round(st.t, 6),
-                )
-            elif st.state is ActionState.FAILED:
+                self.log.emit(ActionDone(t=self.t, handle=handle, action=action, end=end))
+                continue
+            ended = ActionFailed if st.state is ActionState.FAILED else ActionHalted
+            self.log.emit(ended(t=self.t, handle=handle, action=action, reason=st.reason, end=end))
+            if st.state is ActionState.FAILED:
                 self.belief.failed(a.object, st.t)
                 self._failures[a.object] = self._failures.get(a.object, 0) + 1
                 self._last_failure = st.reason
-                self.log.emit(
-                    self.t,
-                    "action_failed",
-                    handle=run.handle.id,
-                    action=a.to_dict(),
-                    reason=st.reason,
-                    end=round(st.t, 6),
-                )
                 self._trigger.add(Trigger.FAILURE)
             else:
                 self.belief.touched(a.object, st.t)
-                self.log.emit(
-                    self.t,
-                    "action_halted",
-                    handle=run.handle.id,
-                    action=a.to_dict(),
-                    reason=st.reason,
-                    end=round(st.t, 6),
-                )
                 self._trigger.add(Trigger.HALT)
 
     def _apply(self, tr: Transition, t: float) -> None:
@@ -500,15 +499,17 @@ class Executor:
         for run in halted:
             self._halt_run(run, endangered[run.action].reason)
         self.log.emit(
-            self.t,
-            "halt",
-            kind=first.kind,
-            reason=first.reason,
-            actions=[r.action.to_dict() for r in halted],
-            hazards=[
-                {"action": h.action.to_dict(), "kind": h.kind, "reason": h.reason} for h in hazards
-            ],
-            done=sorted(self.done_formulas()),
+            Halt(
+                t=self.t,
+                kind=first.kind,
+                reason=first.reason,
+                actions=[r.action.to_dict() for r in halted],
+                hazards=[
+                    {"action": h.action.to_dict(), "kind": h.kind, "reason": h.reason}
+                    for h in hazards
+                ],
+                done=sorted(self.done_formulas()),
+            )
         )
         self._trigger.add(Trigger(f"halt:{first.kind}"))
         if all(r.status is not None for r in self._running):
@@ -558,24 +559,21 @@ class Executor:
         run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
         self.belief.touched(run.action.object, self.t)
         self.log.emit(
-            self.t,
-            "action_halted",
-            handle=run.handle.id,
-            action=run.action.to_dict(),
-            reason=reason,
+            ActionHalted(t=self.t, handle=run.handle.id, action=run.action.to_dict(), reason=reason)
         )
 
     def _halt_runs(self, runs: Sequence[_Running], reason: str) -> None:
         for run in runs:
             self._halt_run(run, reason)
         self.log.emit(
-            self.t,
-            "halt",
-            kind="update",
-            reason=reason,
-            actions=[r.action.to_dict() for r in runs],
-            hazards=[],
-            done=sorted(self.done_formulas()),
+            Halt(
+                t=self.t,
+                kind="update",
+                reason=reason,
+                actions=[r.action.to_dict() for r in runs],
+                hazards=[],
+                done=sorted(self.done_formulas()),
+            )
         )
         self._trigger.add(Trigger.HALT_UPDATE)
 
@@ -595,14 +593,15 @@ class Executor:
                 raise RuntimeError(f"refusing to dispatch {a}: {tr.reason}")
             transitions.append(tr)
         self.log.emit(
-            self.t,
-            "dispatch",
-            step=self._steps,
-            actions=[a.to_dict() for a in actions],
-            planned=[a.to_dict() for a in step.actions],
-            duration=round(step.duration, 6),
-            world=world_to_dict(world),
-            done=sorted(self.done_formulas()),
+            Dispatch(
+                t=self.t,
+                step=self._steps,
+                actions=[a.to_dict() for a in actions],
+                planned=[a.to_dict() for a in step.actions],
+                duration=round(step.duration, 6),
+                world=world_to_dict(world),
+                done=sorted(self.done_formulas()),
+            )
         )
         hands = dict(world.hands)
         for a, tr in zip(actions, transitions, strict=True):
@@ -619,12 +618,13 @@ class Executor:
             aimed = self.world.object_status(a.object).position if a.skill == "pick" else None
             self._running.append(_Running(a, handle, tr, expected, self.t, fast, aimed_at=aimed))
             self.log.emit(
-                self.t,
-                "action_start",
-                handle=handle.id,
-                action=a.to_dict(),
-                robots=list(a.robots),
-                expected=round(expected, 6),
+                ActionStart(
+                    t=self.t,
+                    handle=handle.id,
+                    action=a.to_dict(),
+                    robots=list(a.robots),
+                    expected=round(expected, 6),
+                )
             )
         self._plan = None  # the suffix is replanned when this step ends
         self._step_started = self.t
@@ -751,7 +751,7 @@ class Executor:
             self._wait_since = self.t
         if reason != self._waiting:
             self._waiting = reason
-            self.log.emit(self.t, "wait", reason=reason)
+            self.log.emit(Wait(t=self.t, reason=reason))
 
     def _wait_or_give_up(self, check_only: bool = False) -> None:
         if not check_only:
@@ -768,12 +768,7 @@ class Executor:
         t0 = time.perf_counter()
         key = self._key(ctx, self.world, self.q)
         pred = self._predicted.get(key) if self.config.predict else None
-        common = {
-            "trigger": trigger,
-            "tokens": self._pending_tokens,
-            "context": ctx.describe(),
-            "done": sorted(self.done_formulas()),
-        }
+        done = sorted(self.done_formulas())
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
             model = self.config.latency
@@ -785,26 +780,31 @@ class Executor:
                 )
             )
             self.log.emit(
-                self.t,
-                "takeover",
-                trigger=trigger,
-                context=ctx.describe(),
-                predicted_at=round(pred.at, 6),
-                makespan=pred.result.makespan,
+                Takeover(
+                    t=self.t,
+                    trigger=trigger,
+                    context=ctx.describe(),
+                    predicted_at=round(pred.at, 6),
+                    makespan=pred.result.makespan,
+                )
             )
             self.log.emit(
-                self.t,
-                "replan",
-                source="predicted",
-                status=pred.result.status.value,
-                latency_ms=round(ms, 3),
-                expanded=0,
-                makespan=pred.result.makespan,
-                steps=[s.to_dict() for s in pred.result.steps],
-                world=world_to_dict(self.world),
-                charged_s=round(charge, 6),
-                charge="background",
-                **common,
+                Replan(
+                    t=self.t,
+                    source="predicted",
+                    status=pred.result.status.value,
+                    latency_ms=round(ms, 3),
+                    expanded=0,
+                    makespan=pred.result.makespan,
+                    steps=[s.to_dict() for s in pred.result.steps],
+                    world=world_to_dict(self.world),
+                    charged_s=round(charge, 6),
+                    charge="background",
+                    trigger=trigger,
+                    tokens=self._pending_tokens,
+                    context=ctx.describe(),
+                    done=done,
+                )
             )
             self._pending_tokens = 0
             self._charge(charge)
@@ -816,19 +816,23 @@ class Executor:
         ms = (time.perf_counter() - t0) * 1000.0
         charge, basis = self._planner_charge(trigger, result.stats.expanded, ms / 1000.0)
         self.log.emit(
-            self.t,
-            "replan",
-            source="planner",
-            status=result.status.value,
-            latency_ms=round(ms, 3),
-            expanded=result.stats.expanded,
-            makespan=result.makespan,
-            steps=[s.to_dict() for s in result.steps],
-            reason=result.reason,
-            world=world_to_dict(self.world),
-            charged_s=round(charge, 6),
-            charge=basis,
-            **common,
+            Replan(
+                t=self.t,
+                source="planner",
+                status=result.status.value,
+                latency_ms=round(ms, 3),
+                expanded=result.stats.expanded,
+                makespan=result.makespan,
+                steps=[s.to_dict() for s in result.steps],
+                reason=result.reason,
+                world=world_to_dict(self.world),
+                charged_s=round(charge, 6),
+                charge=basis,
+                trigger=trigger,
+                tokens=self._pending_tokens,
+                context=ctx.describe(),
+                done=done,
+            )
         )
         self._pending_tokens = 0
         self._charge(charge)
@@ -916,15 +920,16 @@ class Executor:
             ms = (time.perf_counter() - t0) * 1000.0
             self._predicted.put(key, Predicted(result, self.t, ctx_pred, ms / 1000.0))
             self.log.emit(
-                self.t,
-                "predict",
-                basis=basis,
-                humans={h: p.to_dict() for h, p in moving.items()},
-                context=ctx_pred.describe(),
-                status=result.status.value,
-                latency_ms=round(ms, 3),
-                expanded=result.stats.expanded,
-                makespan=result.makespan,
+                Predict(
+                    t=self.t,
+                    basis=basis,
+                    humans={h: p.to_dict() for h, p in moving.items()},
+                    context=ctx_pred.describe(),
+                    status=result.status.value,
+                    latency_ms=round(ms, 3),
+                    expanded=result.stats.expanded,
+                    makespan=result.makespan,
+                )
             )
 
     def _anticipate(self) -> bool:
@@ -969,13 +974,14 @@ class Executor:
                 return True
         current = self._plan.steps[0].actions if self._plan and self._plan.steps else None
         self.log.emit(
-            self.t,
-            "anticipate",
-            context=ctx_pred.describe(),
-            predicted_at=round(pred.at, 6),
-            actions=[a.to_dict() for a in step.actions],
-            differs=current is None or tuple(current) != tuple(step.actions),
-            humans={h: p.to_dict() for h, p in moving.items()},
+            Anticipate(
+                t=self.t,
+                context=ctx_pred.describe(),
+                predicted_at=round(pred.at, 6),
+                actions=[a.to_dict() for a in step.actions],
+                differs=current is None or tuple(current) != tuple(step.actions),
+                humans={h: p.to_dict() for h, p in moving.items()},
+            )
         )
         self._dispatch(list(step.actions), step)
         return True
@@ -1020,13 +1026,14 @@ class Executor:
                 self.driver.halt(run.handle, self.t, f"giving up: {reason}")
                 run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
                 self.log.emit(
-                    self.t,
-                    "action_halted",
-                    handle=run.handle.id,
-                    action=run.action.to_dict(),
-                    reason=f"giving up: {reason}",
+                    ActionHalted(
+                        t=self.t,
+                        handle=run.handle.id,
+                        action=run.action.to_dict(),
+                        reason=f"giving up: {reason}",
+                    )
                 )
         self._running = []
         self.status = ExecStatus.GAVE_UP
         self.reason = reason
-        self.log.emit(self.t, "give_up", reason=reason, done=sorted(self.done_formulas()))
+        self.log.emit(GiveUp(t=self.t, reason=reason, done=sorted(self.done_formulas())))

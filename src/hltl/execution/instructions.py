@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
+from hltl.execution.log import Grounding
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 
 
@@ -44,32 +44,37 @@ class SpecUpdate:
     def tokens(self) -> int:
         return self.prompt_tokens + self.completion_tokens
 
-    def record(self, done: frozenset[str]) -> dict[str, Any]:
-        """The fields of the ``grounding`` log record (``done``: formulas done after it)."""
+    def record(self, t: float, done: frozenset[str], charged_s: float | None = None) -> Grounding:
+        """The ``grounding`` log record (``done``: formulas done after it; ``charged_s``: the
+        simulated seconds grounding was charged, under a latency model)."""
         if self.spec is None:  # tokens are paid for whether or not the answer is used
-            return {
-                "text": self.text,
-                "error": self.error,
-                "tokens": self.tokens,
-                "prompt_tokens": self.prompt_tokens,
-                "completion_tokens": self.completion_tokens,
-            }
-        fields: dict[str, Any] = {
-            "text": self.text,
-            "tokens": self.tokens,
-            "prompt_tokens": self.prompt_tokens,
-            "completion_tokens": self.completion_tokens,
-            "latency_ms": round(self.latency_ms, 3),
-            "spec": spec_to_dict(self.spec),
-            "done": sorted(done),
-        }
-        if self.change is not None:
-            c = self.change
-            fields["update"] = {
+            return Grounding(
+                t=t,
+                text=self.text,
+                error=self.error,
+                tokens=self.tokens,
+                prompt_tokens=self.prompt_tokens,
+                completion_tokens=self.completion_tokens,
+                charged_s=charged_s,
+            )
+        c = self.change
+        return Grounding(
+            t=t,
+            text=self.text,
+            tokens=self.tokens,
+            prompt_tokens=self.prompt_tokens,
+            completion_tokens=self.completion_tokens,
+            latency_ms=round(self.latency_ms, 3),
+            spec=spec_to_dict(self.spec),
+            done=sorted(done),
+            update=None
+            if c is None
+            else {
                 "kind": c.kind,
                 "kept": list(c.kept),
                 "changed": list(c.changed),
                 "added": list(c.added),
                 "removed": list(c.removed),
-            }
-        return fields
+            },
+            charged_s=charged_s,
+        )

@@ -15,7 +15,12 @@ from typing import TYPE_CHECKING, Any, Protocol
 from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
 from hltl.execution.instructions import SpecUpdate
-from hltl.execution.log import EventLog, Record
+from hltl.execution.log import (
+    EpisodeEnd,
+    EpisodeStart,
+    EventLog,
+    LogRecord,
+)
 from hltl.grounding import make_grounder
 from hltl.grounding.base import Grounder
 from hltl.sim.events import EventSchedule
@@ -149,7 +154,7 @@ class EpisodeHook(Protocol):
 class Episode:
     """The outcome of one episode: its log and its metrics."""
 
-    records: tuple[Record, ...]
+    records: tuple[LogRecord, ...]
     metrics: Metrics
     seed: int
 
@@ -170,7 +175,7 @@ def run_episode(
     grounder: Grounder | None = None,
     predictor: TrajectoryPredictor | None = None,
     log_path: str | Path | None = None,
-    on_record: Callable[[Record], None] | None = None,
+    on_record: Callable[[LogRecord], None] | None = None,
     hooks: Sequence[EpisodeHook] = (),
     simulator: CellFactory = Simulator,
     agent: AgentFactory | None = None,
@@ -232,15 +237,16 @@ def run_episode(
             else agent(sim, log)
         )
         log.emit(
-            0.0,
-            "episode_start",
-            scene=scene.to_dict(),
-            scene_source=scene.source,
-            spec=None if spec is None else spec_to_dict(spec),
-            instruction=instruction,
-            events=schedule.to_list(),
-            seed=seed,
-            config=cfg.to_dict() if start_config is None else dict(start_config),
+            EpisodeStart(
+                t=0.0,
+                scene=scene.to_dict(),
+                scene_source=scene.source,
+                spec=None if spec is None else spec_to_dict(spec),
+                instruction=instruction,
+                events=schedule.to_list(),
+                seed=seed,
+                config=cfg.to_dict() if start_config is None else dict(start_config),
+            )
         )
         said = [] if instruction is None else [instruction]
         executor.update(0.0, sim.observe(0.0), ground(said, executor))
@@ -266,12 +272,13 @@ def run_episode(
         success = executor.status is ExecStatus.DONE
         time_cost = executor.accepted_at if success and executor.accepted_at is not None else t
         log.emit(
-            t,
-            "episode_end",
-            success=success,
-            reason=executor.reason,
-            time_cost=round(time_cost, 6),
-            done=sorted(executor.done_formulas()),
+            EpisodeEnd(
+                t=t,
+                success=success,
+                reason=executor.reason,
+                time_cost=round(time_cost, 6),
+                done=sorted(executor.done_formulas()),
+            )
         )
         records = tuple(log.records)
     return Episode(records, compute_metrics(records), seed)

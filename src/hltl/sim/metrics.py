@@ -9,11 +9,26 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 from hltl.errors import PlanFormatError
-from hltl.execution.log import check_records
+from hltl.execution.log import (
+    REPLANS,
+    ActionDone,
+    ActionFailed,
+    ActionHalted,
+    ActionStart,
+    EpisodeEnd,
+    EpisodeStart,
+    Grounding,
+    Halt,
+    HumanMove,
+    LogRecord,
+    Takeover,
+    Violation,
+    check_records,
+)
 
 Interval = tuple[float, float]
 _DELIVERED = re.compile(r"delivered\(\s*([A-Za-z_][\w-]*)\s*,\s*([A-Za-z_][\w-]*)\s*\)")
-_END_TYPES = ("action_done", "action_failed", "action_halted")
+_ENDS = (ActionDone, ActionFailed, ActionHalted)
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,28 +122,28 @@ class Activity:
     walks: dict[str, list[Interval]]
 
 
-def activity(records: Sequence[Mapping[str, Any]], end_time: float) -> Activity:
+def activity(records: Sequence[LogRecord], end_time: float) -> Activity:
     """Who was active when: a robot while it executes an action (start to done, failure or
     halt); a person while a robot hands them an object (the ``handover_r2h`` action)."""
-    scene = records[0].get("scene") or {}
+    first = records[0]
+    scene = (first.scene if isinstance(first, EpisodeStart) else None) or {}
     robots: dict[str, list[Interval]] = {str(r["id"]): [] for r in scene.get("robots", [])}
     humans: dict[str, list[Interval]] = {}
-    open_: dict[int, Mapping[str, Any]] = {}
+    open_: dict[int, ActionStart] = {}
     completed: list[tuple[float, float, tuple[str, ...], str]] = []
     for rec in records:
-        kind = rec["type"]
-        if kind == "action_start":
-            open_[int(rec["handle"])] = rec
-        elif kind in _END_TYPES:
-            start = open_.pop(int(rec["handle"]), None)
+        if isinstance(rec, ActionStart):
+            open_[int(rec.handle)] = rec
+        elif isinstance(rec, _ENDS):
+            start = open_.pop(int(rec.handle), None)
             if start is None:
                 continue
-            end = float(rec.get("end", rec["t"]))
+            end = rec.ended
             _add(robots, humans, start, end)
-            if kind == "action_done":
-                a = start["action"]
+            if isinstance(rec, ActionDone):
+                a = start.action
                 completed.append(
-                    (float(start["t"]), end, tuple(str(r) for r in a["robots"]), str(a["object"]))
+                    (float(start.t), end, tuple(str(r) for r in a["robots"]), str(a["object"]))
                 )
     for start in open_.values():  # still running when the log ends
         _add(robots, humans, start, end_time)
@@ -136,19 +151,19 @@ def activity(records: Sequence[Mapping[str, Any]], end_time: float) -> Activity:
     return Activity(robots, humans, completed, walks(records, end_time))
 
 
-def walks(records: Sequence[Mapping[str, Any]], end_time: float) -> dict[str, list[Interval]]:
+def walks(records: Sequence[LogRecord], end_time: float) -> dict[str, list[Interval]]:
     """When each person walks: a ``human_move`` at t with arrival ``eta`` walks over
     [t, eta]; a later ``human_move`` of the same person replaces the rest of the walk, and a
     walk still under way when the log ends counts until ``end_time``."""
     out: dict[str, list[Interval]] = {}
     for rec in records:
-        if rec["type"] != "human_move":
+        if not isinstance(rec, HumanMove):
             continue
-        who, t = str(rec["human"]), float(rec["t"])
+        who, t = str(rec.human), float(rec.t)
         ivs = out.setdefault(who, [])
         if ivs and ivs[-1][1] > t:  # the new walk replaces the rest of the previous one
             ivs[-1] = (ivs[-1][0], t)
-        eta = rec.get("eta")
+        eta = rec.eta
         ivs.append((t, min(float(eta), end_time) if eta is not None else end_time))
     return out
 
@@ -156,27 +171,27 @@ def walks(records: Sequence[Mapping[str, Any]], end_time: float) -> dict[str, li
 def _add(
     robots: dict[str, list[Interval]],
     humans: dict[str, list[Interval]],
-    start: Mapping[str, Any],
+    start: ActionStart,
     end: float,
 ) -> None:
-    a = start["action"]
-    iv = (float(start["t"]), end)
+    a = start.action
+    iv = (float(start.t), end)
     for r in a["robots"]:
         robots.setdefault(str(r), []).append(iv)
     if a.get("skill") == "handover_r2h" and a.get("human") is not None:
         humans.setdefault(str(a["human"]), []).append(iv)
 
 
-def participants(records: Sequence[Mapping[str, Any]]) -> set[str]:
+def participants(records: Sequence[LogRecord]) -> set[str]:
     """People the task is for: recipients in any spec of the log, or of any handover."""
     people: set[str] = set()
     for rec in records:
-        spec = rec.get("spec") if rec["type"] in ("episode_start", "grounding") else None
+        spec = rec.spec if isinstance(rec, EpisodeStart | Grounding) else None
         if isinstance(spec, Mapping):
             for text in (spec.get("formulas") or {}).values():
                 people |= {m.group(2) for m in _DELIVERED.finditer(str(text))}
-        if rec["type"] == "action_start" and rec["action"].get("skill") == "handover_r2h":
-            people.add(str(rec["action"].get("human")))
+        if isinstance(rec, ActionStart) and rec.action.get("skill") == "handover_r2h":
+            people.add(str(rec.action.get("human")))
     return people
 
 
@@ -228,27 +243,25 @@ def _idle(people: Mapping[str, Sequence[Interval]], horizon: float) -> float | N
     return 100.0 * statistics.fmean(1.0 - _length(ivs) / horizon for ivs in people.values())
 
 
-def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
+def compute_metrics(records: Sequence[LogRecord]) -> Metrics:
     """All metrics of one episode from its log records.
 
     Raises:
         PlanFormatError: the log is malformed or has no ``episode_end`` (truncated).
     """
     check_records(records)
-    ends = [r for r in records if r["type"] == "episode_end"]
+    ends = [r for r in records if isinstance(r, EpisodeEnd)]
     if not ends:
         raise PlanFormatError("the log has no episode_end record (truncated or still running)")
     end = ends[-1]
-    violations = sum(1 for r in records if r["type"] == "violation")
-    success = bool(end.get("success")) and violations == 0
-    time_cost = float(end.get("time_cost", end["t"]))
-    replans = [r for r in records if r["type"] == "replan"]
-    latencies = [float(r["latency_ms"]) for r in replans if r.get("trigger") != "initial"]
-    disruptive = [
-        r for r in replans if set(str(r.get("trigger", "")).split("+")) - {"initial", "progress"}
-    ]
+    violations = sum(1 for r in records if isinstance(r, Violation))
+    success = bool(end.success) and violations == 0
+    time_cost = float(end.t if end.time_cost is None else end.time_cost)
+    replans = [r for r in records if isinstance(r, REPLANS)]
+    latencies = [float(r.latency_ms) for r in replans if r.trigger != "initial"]
+    disruptive = [r for r in replans if set(str(r.trigger).split("+")) - {"initial", "progress"}]
     horizon = time_cost
-    act = activity(records, float(end["t"]))
+    act = activity(records, float(end.t))
     h_idle = r_idle = c_act = f_del = None
     f_del_union = c_act_hr = h_idle_walk = None
     if horizon > 0:
@@ -282,28 +295,28 @@ def compute_metrics(records: Sequence[Mapping[str, Any]]) -> Metrics:
         )
         f_del = 100.0 * functional_delay(act.completed) / horizon
         f_del_union = 100.0 * functional_delay_union(act.completed) / horizon
-    reason = str(end.get("reason", ""))
-    if violations and end.get("success"):
+    reason = str(end.reason)
+    if violations and end.success:
         # the goals were met, but unsafely: say so instead of "failed: all goals met"
-        first = next(r for r in records if r["type"] == "violation")
-        reason = f"{violations} safety violation(s) ({first.get('reason', '')}) although {reason}"
+        first = next(r for r in records if isinstance(r, Violation))
+        reason = f"{violations} safety violation(s) ({first.reason}) although {reason}"
     return Metrics(
         success=success,
         reason=reason,
         time_cost=time_cost,
         replans=len(disruptive),
-        planner_calls=sum(1 for r in replans if r.get("source") == "planner"),
-        takeovers=sum(1 for r in records if r["type"] == "takeover"),
-        halts=sum(1 for r in records if r["type"] == "halt"),
-        failures=sum(1 for r in records if r["type"] == "action_failed"),
+        planner_calls=sum(1 for r in replans if r.source == "planner"),
+        takeovers=sum(1 for r in records if isinstance(r, Takeover)),
+        halts=sum(1 for r in records if isinstance(r, Halt)),
+        failures=sum(1 for r in records if isinstance(r, ActionFailed)),
         replan_latency_median_ms=statistics.median(latencies) if latencies else None,
         replan_latency_p95_ms=percentile(latencies, 95.0) if latencies else None,
-        tokens=sum(int(r.get("tokens", 0)) for r in records if r["type"] == "grounding"),
+        tokens=sum(int(r.tokens) for r in records if isinstance(r, Grounding)),
         violations=violations,
         deliveries=sum(
             1
             for r in records
-            if r["type"] == "action_done" and r["action"].get("skill") == "handover_r2h"
+            if isinstance(r, ActionDone) and r.action.get("skill") == "handover_r2h"
         ),
         h_idle=h_idle,
         r_idle=r_idle,

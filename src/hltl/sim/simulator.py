@@ -21,8 +21,17 @@ import random
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+from hltl.execution import log as elog
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import EventLog, vec
+from hltl.execution.log import (
+    EventLog,
+    HumanStop,
+    InstructionGiven,
+    ObjectDrop,
+    RobotUp,
+    Violation,
+    vec,
+)
 from hltl.execution.safety import GRASP_TOLERANCE
 from hltl.motion.trajectory import MotionPlan
 from hltl.sim.events import (
@@ -288,7 +297,7 @@ class Simulator:
         for rid in sorted(self._down_until):
             if self._down_until[rid] <= now + _EPS:
                 del self._down_until[rid]
-                self.log.emit(now, "robot_up", robot=rid)
+                self.log.emit(RobotUp(t=now, robot=rid))
         while (
             self._next_event < len(self.events.timed)
             and self.events.timed[self._next_event].t <= now + _EPS
@@ -304,7 +313,7 @@ class Simulator:
                     self._wander_on(hid)
                 else:
                     self.log.emit(
-                        now, "human_stop", human=hid, position=vec(self.human_position(hid))
+                        HumanStop(t=now, human=hid, position=vec(self.human_position(hid)))
                     )
 
     # -- dynamic events --------------------------------------------------------------------------
@@ -316,13 +325,14 @@ class Simulator:
             self._walkers[ev.human].wander = None
             eta = self._walk(ev.human, [ev.to], ev.speed)
             self.log.emit(
-                now,
-                "human_move",
-                human=ev.human,
-                **{"from": vec(start)},
-                to=vec(ev.to),
-                speed=ev.speed,
-                eta=round(eta, 6),
+                elog.HumanMove(
+                    t=now,
+                    human=ev.human,
+                    from_=vec(start),
+                    to=vec(ev.to),
+                    speed=ev.speed,
+                    eta=round(eta, 6),
+                )
             )
         elif isinstance(ev, HumanWander):
             # its own generator, seeded from the walk stream: chunks drawn later do not shift
@@ -335,29 +345,31 @@ class Simulator:
             if st.loc.kind in ("rest", "on"):
                 self._set_object(ev.object, ObjectStatus(ev.to, REST))
                 self.log.emit(
-                    now,
-                    "object_move",
-                    object=ev.object,
-                    **{"from": vec(st.position)},
-                    to=vec(ev.to),
-                    applied=True,
+                    elog.ObjectMove(
+                        t=now,
+                        object=ev.object,
+                        from_=vec(st.position),
+                        to=vec(ev.to),
+                        applied=True,
+                    )
                 )
             else:
                 self.log.emit(
-                    now,
-                    "object_move",
-                    object=ev.object,
-                    to=vec(ev.to),
-                    applied=False,
-                    reason=f"{ev.object} is {st.loc}, not resting",
+                    elog.ObjectMove(
+                        t=now,
+                        object=ev.object,
+                        to=vec(ev.to),
+                        applied=False,
+                        reason=f"{ev.object} is {st.loc}, not resting",
+                    )
                 )
         elif isinstance(ev, Instruction):
             self._instructions.append(ev.text)
-            self.log.emit(now, "instruction", text=ev.text)
+            self.log.emit(InstructionGiven(t=now, text=ev.text))
         else:
             until = max(self._down_until.get(ev.robot, 0.0), now + ev.duration)
             self._down_until[ev.robot] = until
-            self.log.emit(now, "robot_down", robot=ev.robot, until=round(until, 6))
+            self.log.emit(elog.RobotDown(t=now, robot=ev.robot, until=round(until, 6)))
             hid = self._busy.get(ev.robot)
             if hid is not None:
                 self._fail(self._actions[hid], f"robot {ev.robot} went down", "stay")
@@ -391,14 +403,15 @@ class Simulator:
             self._walkers[hid].wander = None
         eta = self._walk(hid, points, wander.speed)
         self.log.emit(
-            self.now,
-            "human_move",
-            human=hid,
-            **{"from": vec(start)},
-            to=vec(points[-1]),
-            speed=wander.speed,
-            eta=round(eta, 6),
-            wander=[vec(p) for p in points],
+            elog.HumanMove(
+                t=self.now,
+                human=hid,
+                from_=vec(start),
+                to=vec(points[-1]),
+                speed=wander.speed,
+                eta=round(eta, 6),
+                wander=[vec(p) for p in points],
+            )
         )
 
     def _wander_points(self, wander: _Wander, start: Vec3) -> list[Vec3]:
@@ -544,7 +557,7 @@ class Simulator:
             landed = (at[0], at[1], z)
             self._set_object(action.object, ObjectStatus(landed, REST))
             self.log.emit(
-                self.now, "object_drop", object=action.object, position=vec(landed), cause=reason
+                ObjectDrop(t=self.now, object=action.object, position=vec(landed), cause=reason)
             )
             reason += "; the object dropped"
         progress = (
@@ -558,11 +571,12 @@ class Simulator:
             return
         act.violation_logged = True
         self.log.emit(
-            self.now,
-            "violation",
-            handle=act.handle.id,
-            action=act.handle.action.to_dict(),
-            reason=act.unsafe or "",
+            Violation(
+                t=self.now,
+                handle=act.handle.id,
+                action=act.handle.action.to_dict(),
+                reason=act.unsafe or "",
+            )
         )
 
 

@@ -25,8 +25,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from hltl.execution import log as elog
 from hltl.execution.drivers import Handle
-from hltl.execution.log import EventLog, vec
+from hltl.execution.log import (
+    EventLog,
+    vec,
+)
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel, Simulator
@@ -323,13 +327,14 @@ class MujocoSimulator(Simulator):
             c = pairs[key]
             self.contacts.append((self.now, c.robot, c.human))
             self.log.emit(
-                self.now,
-                "contact",
-                robot=c.robot,
-                human=c.human,
-                position=vec(c.position),
-                depth=round(c.depth, 4),
-                part=c.part,
+                elog.Contact(
+                    t=self.now,
+                    robot=c.robot,
+                    human=c.human,
+                    position=vec(c.position),
+                    depth=round(c.depth, 4),
+                    part=c.part,
+                )
             )
         self._touching = set(pairs)
 

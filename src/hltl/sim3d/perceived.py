@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from hltl.execution.log import Perception
 from hltl.perception.frames import Camera as FrameCamera
 from hltl.perception.frames import Frame, camera_from_dict
 from hltl.perception.observe import Observation, Perceiver, fuse
@@ -88,13 +89,14 @@ class CameraSimulator(MujocoSimulator):
                     seen = seen.with_object(oid, belief.object_status(oid))
             belief = seen
             self.log.emit(
-                now,
-                "perception",
-                latency_ms=round(obs.latency * 1000.0, 1),
-                people={p.person or f"track {p.track}": list(p.position) for p in obs.people},
-                missing=list(obs.missing),
-                lost=list(obs.lost),
-                ambiguous=list(obs.ambiguous),
+                Perception(
+                    t=now,
+                    latency_ms=round(obs.latency * 1000.0, 1),
+                    people={p.person or f"track {p.track}": list(p.position) for p in obs.people},
+                    missing=list(obs.missing),
+                    lost=list(obs.lost),
+                    ambiguous=list(obs.ambiguous),
+                )
             )
             self._next_frame = now + self.period
         self._belief = belief.with_time(truth.t)

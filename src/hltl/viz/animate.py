@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hltl.errors import BackendUnavailableError
+from hltl.execution.log import LogRecord
 from hltl.planner.result import PlanResult
 from hltl.viz._mpl import MARKER_STYLES, MOVING_FORMATS, format_of, pyplot
 from hltl.viz.track import (
@@ -46,7 +47,7 @@ STATUS_HOLD = 0.6
 PREDICTION_HOLD = 0.5
 
 
-def animate_episode(records: Sequence[Mapping[str, Any]], **kwargs: Any) -> FuncAnimation:
+def animate_episode(records: Sequence[LogRecord], **kwargs: Any) -> FuncAnimation:
     """Animate an executed episode from its log records; see :func:`animate`."""
     return animate(track_from_log(records), **kwargs)
 

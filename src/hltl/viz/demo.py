@@ -12,13 +12,13 @@ hands it to A. Both deliveries succeed and the monitor state survives the halt.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # kept out of the import: `hltl --help` reads this module's defaults
-    from hltl.execution.log import Record
+    from hltl.execution.log import LogRecord
     from hltl.sim.episode import Episode
     from hltl.sim.events import EventSchedule
     from hltl.spec.hierarchy import HSpec
@@ -42,29 +42,30 @@ def demo_events(scene: Scene) -> EventSchedule:
     return fig1_events(scene)
 
 
-def story(records: Sequence[Mapping[str, Any]]) -> dict[str, bool]:
+def story(records: Sequence[LogRecord]) -> dict[str, bool]:
     """Which beats of the Fig. 1 story the log shows (each should be ``True``)."""
-    halts = [r for r in records if r["type"] == "halt" and str(r.get("reason", "")).strip()]
-    first_halt = halts[0]["t"] if halts else float("inf")
+    from hltl.execution import log
+
+    halts = [r for r in records if isinstance(r, log.Halt) and r.reason.strip()]
+    first_halt = halts[0].t if halts else float("inf")
     replans = [
         r
         for r in records
-        if r["type"] == "replan"
-        and set(str(r.get("trigger", "")).split("+")) - {"initial", "progress"}
+        if isinstance(r, log.REPLANS) and set(r.trigger.split("+")) - {"initial", "progress"}
     ]
-    switched = any(r["type"] == "takeover" for r in records) or any(
-        "halt" in str(r.get("trigger", "")) and r.get("status") == "solved" for r in replans
+    switched = any(isinstance(r, log.Takeover) for r in records) or any(
+        "halt" in r.trigger and r.status == "solved" for r in replans
     )
-    ends = [r for r in records if r["type"] == "episode_end"]
+    ends = [r for r in records if isinstance(r, log.EpisodeEnd)]
     return {
         "background plan while a person walks": any(
-            r["type"] == "predict" and r.get("status") == "solved" and r["t"] <= first_halt
+            isinstance(r, log.Predict) and r.status == "solved" and r.t <= first_halt
             for r in records
         ),
         "halt with a reason": bool(halts),
-        "replan after the halt": any(r["t"] >= first_halt for r in replans),
+        "replan after the halt": any(r.t >= first_halt for r in replans),
         "takeover or suffix switch": switched,
-        "both deliveries, success": bool(ends) and bool(ends[-1].get("success")),
+        "both deliveries, success": bool(ends) and bool(ends[-1].success),
     }
 
 
@@ -98,7 +99,7 @@ def run_demo(
     out: str | Path = DEFAULT_OUT,
     short: bool = False,
     pictures: bool = True,
-    on_record: Callable[[Record], None] | None = None,
+    on_record: Callable[[LogRecord], None] | None = None,
 ) -> DemoResult:
     """Run the demo episode in the simulator and draw it.
 
@@ -138,14 +139,23 @@ def run_demo(
     )
     records = episode.records
     spec = _grounded_spec(records)
-    solved = [r for r in records if r["type"] == "replan" and r["status"] == "solved"]
-    planned = float(solved[0]["makespan"]) if solved else None
     drawn = draw_episode(records, spec, folder, short=short) if pictures else ()
-    return DemoResult(episode, log_path, drawn, spec, story(records), planned)
+    return DemoResult(episode, log_path, drawn, spec, story(records), first_makespan(records))
+
+
+def first_makespan(records: Sequence[LogRecord]) -> float | None:
+    """The makespan of the episode's first solved plan (what was planned before anything
+    happened), or None."""
+    from hltl.execution.log import Replan
+
+    for r in records:
+        if isinstance(r, Replan) and r.status == "solved" and r.makespan is not None:
+            return float(r.makespan)
+    return None
 
 
 def draw_episode(
-    records: Sequence[Mapping[str, Any]], spec: HSpec | None, folder: Path, *, short: bool = False
+    records: Sequence[LogRecord], spec: HSpec | None, folder: Path, *, short: bool = False
 ) -> tuple[tuple[str, Path], ...]:
     """The demo's pictures of an episode: Gantt chart, animation, the frame at the first halt
     (or mid-episode), the spec tree."""
@@ -169,12 +179,13 @@ def draw_episode(
     return tuple(out)
 
 
-def _grounded_spec(records: Sequence[Mapping[str, Any]]) -> HSpec | None:
+def _grounded_spec(records: Sequence[LogRecord]) -> HSpec | None:
     """The last spec the episode ran (grounded, or given up front)."""
+    from hltl.execution.log import EpisodeStart, Grounding
     from hltl.spec.hierarchy import spec_from_dict
 
     data = None
     for r in records:
-        if r["type"] in ("episode_start", "grounding") and r.get("spec"):
-            data = r["spec"]
+        if isinstance(r, EpisodeStart | Grounding) and r.spec:
+            data = r.spec
     return None if data is None else spec_from_dict(data, "the episode's spec")

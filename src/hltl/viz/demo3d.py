@@ -9,7 +9,7 @@ rendered afterwards, with a Gantt-style timeline of the log drawn under the two 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -17,11 +17,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hltl.errors import BackendUnavailableError
+from hltl.execution import log
+from hltl.execution.log import LogRecord
 
 if TYPE_CHECKING:
     from PIL import Image
 
-    from hltl.execution.log import Record
     from hltl.sim.events import EventSchedule
     from hltl.viz.demo import DemoResult
     from hltl.world.scene import Scene
@@ -49,71 +50,59 @@ class _Bar:
     ended: str  # done | failed | halted | walk
 
 
-def _bars(records: Sequence[Mapping[str, Any]], t_end: float) -> list[_Bar]:
+def _bars(records: Sequence[LogRecord], t_end: float) -> list[_Bar]:
     """Timeline bars from a log: one per action per robot, one per walk per person."""
-    starts: dict[int, Mapping[str, Any]] = {}
+    starts: dict[int, log.ActionStart] = {}
     bars: list[_Bar] = []
     for r in records:
-        kind = r["type"]
-        if kind == "action_start":
-            starts[int(r["handle"])] = r
-        elif kind in ("action_done", "action_failed", "action_halted"):
-            s = starts.pop(int(r["handle"]), None)
+        if isinstance(r, log.ActionStart):
+            starts[int(r.handle)] = r
+        elif isinstance(r, log.ActionDone | log.ActionFailed | log.ActionHalted):
+            s = starts.pop(int(r.handle), None)
             if s is None:
                 continue
-            a = s["action"]
+            a = s.action
             label = a["object"] + (f" to {a['human']}" if a.get("human") else "")
             label = label + (f" on {a['surface']}" if a.get("surface") else "")
             for rid in a["robots"]:
                 bars.append(
                     _Bar(
                         rid,
-                        float(s["t"]),
-                        float(r.get("end", r["t"])),
+                        float(s.t),
+                        r.ended,
                         f"{a['skill'].replace('handover_', '')} {label}",
                         _SKILL_COLOURS.get(a["skill"], (120, 120, 120)),
-                        kind.removeprefix("action_"),
+                        r.type.removeprefix("action_"),
                     )
                 )
-        elif kind == "human_move":
-            t1 = min(float(r["t"]) + float(r.get("eta", r["t"])) - float(r["t"]), t_end)
+        elif isinstance(r, log.HumanMove):
+            t1 = min(float(r.t if r.eta is None else r.eta), t_end)
             bars.append(
-                _Bar(
-                    r["human"],
-                    float(r["t"]),
-                    max(t1, float(r["t"])),
-                    "walks",
-                    (150, 150, 150),
-                    "walk",
-                )
+                _Bar(r.human, float(r.t), max(t1, float(r.t)), "walks", (150, 150, 150), "walk")
             )
     for s in starts.values():
-        for rid in s["action"]["robots"]:
-            bars.append(
-                _Bar(rid, float(s["t"]), t_end, s["action"]["skill"], (120, 120, 120), "done")
-            )
+        for rid in s.action["robots"]:
+            bars.append(_Bar(rid, float(s.t), t_end, s.action["skill"], (120, 120, 120), "done"))
     return bars
 
 
 class _Timeline:
     """Draws the strip under the views: lanes, bars up to now, markers, a cursor."""
 
-    def __init__(
-        self, records: Sequence[Mapping[str, Any]], lanes: Sequence[str], width: int
-    ) -> None:
+    def __init__(self, records: Sequence[LogRecord], lanes: Sequence[str], width: int) -> None:
         from PIL import ImageFont
 
-        ends = [float(r["t"]) for r in records if r["type"] == "episode_end"]
-        self.t_end = max(ends[-1] if ends else float(records[-1]["t"]), 0.1)
+        ends = [float(r.t) for r in records if isinstance(r, log.EpisodeEnd)]
+        self.t_end = max(ends[-1] if ends else float(records[-1].t), 0.1)
         self.bars = _bars(records, self.t_end)
         self.lanes = list(lanes)
         self.width = width
         self.marks = [
-            (float(r["t"]), "halt" if r["type"] == "halt" else "takeover")
+            (float(r.t), "halt" if isinstance(r, log.Halt) else "takeover")
             for r in records
-            if r["type"] in ("halt", "takeover")
+            if isinstance(r, log.Halt | log.Takeover)
         ]
-        self.contacts = [float(r["t"]) for r in records if r["type"] == "contact"]
+        self.contacts = [float(r.t) for r in records if isinstance(r, log.Contact)]
         self.font = ImageFont.load_default(size=13)
         self.big = ImageFont.load_default(size=17)
         self.x0, self.x1 = 60, width - 20
@@ -200,7 +189,7 @@ def _orbit(scene: Scene, k: float) -> Any:
 
 def render_video(
     snaps: Any,
-    records: Sequence[Mapping[str, Any]],
+    records: Sequence[LogRecord],
     folder: Path,
     *,
     fps: int = 25,
@@ -229,7 +218,7 @@ def render_video(
     font = ImageFont.load_default(size=14)
     n = len(snaps.times)
     extra = int(hold * fps)
-    halts = [float(r["t"]) for r in records if r["type"] == "halt"]
+    halts = [float(r.t) for r in records if isinstance(r, log.Halt)]
     still_t = halts[0] if halts else snaps.times[n // 2]
     # the first frame at or after the halt: its marker is on the timeline
     still_i = next((i for i in range(n) if snaps.times[i] >= still_t - 1e-9), n - 1)
@@ -288,7 +277,7 @@ def run_demo3d(
     out: str | Path = "out/demo",
     short: bool = False,
     speed: float = 0.5,
-    on_record: Callable[[Record], None] | None = None,
+    on_record: Callable[[LogRecord], None] | None = None,
     progress: Callable[[int, int], None] | None = None,
 ) -> DemoResult:
     """The demo episode in the 3D simulator, rendered to ``out``/demo3d.{mp4,gif} and a PNG.
@@ -308,6 +297,7 @@ def run_demo3d(
         _grounded_spec,
         demo_events,
         demo_scene,
+        first_makespan,
         story,
     )
 
@@ -343,6 +333,11 @@ def run_demo3d(
     pictures = render_video(
         snaps, records, folder, fps=fps, hold=0.3 if short else 1.0, progress=progress
     )
-    solved = [r for r in records if r["type"] == "replan" and r["status"] == "solved"]
-    planned = float(solved[0]["makespan"]) if solved else None
-    return DemoResult(episode, log_path, pictures, _grounded_spec(records), story(records), planned)
+    return DemoResult(
+        episode,
+        log_path,
+        pictures,
+        _grounded_spec(records),
+        story(records),
+        first_makespan(records),
+    )

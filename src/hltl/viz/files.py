@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any, Literal
 
 from hltl.errors import PlanFormatError
-from hltl.execution.log import check_record, check_records
+from hltl.execution.log import LogRecord, parse_log
 from hltl.fileio import MAX_LOG_BYTES, load_data, read_text, try_json
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, load_scene
@@ -28,7 +28,7 @@ class Source:
     kind: SourceKind
     path: Path
     plan: dict[str, Any] | None = None
-    records: tuple[dict[str, Any], ...] = ()
+    records: tuple[LogRecord, ...] = ()
     spec: HSpec | None = None
 
 
@@ -75,14 +75,7 @@ def _looks_like_jsonl(text: str) -> bool:
 
 
 def _log(p: Path, text: str) -> Source:
-    records = []
-    for i, line in enumerate(text.splitlines(), 1):
-        if not line.strip():
-            continue
-        rec = load_data(line, f"{p}:{i}", PlanFormatError, as_json=True)
-        records.append(check_record(rec, f"{p}:{i}"))
-    check_records(records, str(p))
-    return Source("log", p, records=tuple(records))
+    return Source("log", p, records=tuple(parse_log(text, str(p))))
 
 
 def plan_scene(source: Source, scene: str | Path | None) -> Scene:

@@ -13,6 +13,7 @@ import textwrap
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from hltl.execution.log import LogRecord
 from hltl.planner.result import PlanResult
 from hltl.viz._mpl import (
     DEFAULT_STYLE,
@@ -54,7 +55,7 @@ def plan_gantt(
     return gantt(track_from_plan(plan, scene, title=title))
 
 
-def episode_gantt(records: Sequence[Mapping[str, Any]], *, title: str | None = None) -> Figure:
+def episode_gantt(records: Sequence[LogRecord], *, title: str | None = None) -> Figure:
     """The Gantt chart of an executed episode from its log records."""
     return gantt(track_from_log(records, title=title))
 

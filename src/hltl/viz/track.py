@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from hltl.errors import PlanFormatError, SceneError
+from hltl.execution import log
+from hltl.execution.log import EpisodeStart, LogRecord
 from hltl.planner.result import PlanResult
 from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.skills.library import Action
@@ -277,17 +279,17 @@ def track_from_plan(
     )
 
 
-def track_from_log(records: Sequence[Mapping[str, Any]], *, title: str | None = None) -> Track:
+def track_from_log(records: Sequence[LogRecord], *, title: str | None = None) -> Track:
     """An executed episode from its log records (``hltl.execution.log.read_log``).
 
     Raises:
         PlanFormatError: the log does not start with an ``episode_start`` that carries the scene,
             or a record lacks a field this needs.
     """
-    if not records or records[0].get("type") != "episode_start":
+    if not records or not isinstance(records[0], EpisodeStart):
         raise PlanFormatError("not an execution log: the first record must be 'episode_start'")
     try:
-        scene = scene_from_dict(records[0]["scene"], source="log episode_start.scene")
+        scene = scene_from_dict(records[0].scene, source="log episode_start.scene")
     except (KeyError, SceneError) as exc:
         raise PlanFormatError(
             f"the log's episode_start has no valid scene ({exc}); expected the scene as written "
@@ -299,10 +301,15 @@ def track_from_log(records: Sequence[Mapping[str, Any]], *, title: str | None = 
         raise PlanFormatError(f"malformed log record: {exc!r}") from None
 
 
-def _track_from_records(
-    scene: Scene, records: Sequence[Mapping[str, Any]], title: str | None
-) -> Track:
-    open_: dict[int, tuple[Mapping[str, Any], int]] = {}
+_OUTCOMES: dict[type[LogRecord], Outcome] = {
+    log.ActionDone: "done",
+    log.ActionFailed: "failed",
+    log.ActionHalted: "halted",
+}
+
+
+def _track_from_records(scene: Scene, records: Sequence[LogRecord], title: str | None) -> Track:
+    open_: dict[int, tuple[log.ActionStart, int]] = {}
     spans: list[ActionSpan] = []
     markers: list[Marker] = []
     walks: dict[str, list[Segment]] = {}
@@ -310,114 +317,113 @@ def _track_from_records(
     steps: list[StepInfo] = []
     jumps: list[tuple[float, str, Vec3]] = []
     step = -1
-    end_t = float(records[-1]["t"])
+    end_t = float(records[-1].t)
     success: bool | None = None
-    instruction = str(records[0].get("instruction") or "")
+    first = records[0]
+    instruction = str(first.instruction or "") if isinstance(first, EpisodeStart) else ""
     last_predict_ctx = ""
     for rec in records:
-        kind = rec["type"]
-        t = float(rec["t"])
-        if kind == "dispatch":
-            step = int(rec.get("step", step + 1))
-            actions = [Action.from_dict(a) for a in rec["actions"]]
+        t = float(rec.t)
+        if isinstance(rec, log.Dispatch):
+            step = int(rec.step)
+            actions = [Action.from_dict(a) for a in rec.actions]
             steps.append(StepInfo(t, step, _describe_step(scene, actions)))
-        elif kind == "action_start":
-            open_[int(rec["handle"])] = (rec, step)
-        elif kind in ("action_done", "action_failed", "action_halted"):
-            found = open_.pop(int(rec["handle"]), None)
+        elif isinstance(rec, log.ActionStart):
+            open_[int(rec.handle)] = (rec, step)
+        elif isinstance(rec, log.ActionDone | log.ActionFailed | log.ActionHalted):
+            found = open_.pop(int(rec.handle), None)
             if found is None:
                 continue
             start, k = found
-            t0 = float(start["t"])
-            outcome: Outcome = {
-                "action_done": "done",
-                "action_failed": "failed",
-                "action_halted": "halted",
-            }[kind]  # type: ignore[assignment]
+            t0 = float(start.t)
+            end = rec.ended
+            reason = "" if isinstance(rec, log.ActionDone) else rec.reason
             spans.append(
                 ActionSpan(
-                    Action.from_dict(start["action"]),
+                    Action.from_dict(start.action),
                     t0,
-                    float(rec.get("end", t)),
-                    outcome,
+                    end,
+                    _OUTCOMES[type(rec)],
                     k,
-                    float(start.get("expected", float(rec.get("end", t)) - t0)),
-                    str(rec.get("reason", "")),
+                    float(end - t0 if start.expected is None else start.expected),
+                    str(reason),
                 )
             )
-            if kind == "action_failed":
-                markers.append(Marker(t, "failure", "failed", str(rec.get("reason", ""))))
-        elif kind == "halt":
-            markers.append(Marker(t, "halt", f"halt ({rec['kind']})", str(rec["reason"])))
-        elif kind == "replan":
-            trigger = str(rec.get("trigger", ""))
+            if isinstance(rec, log.ActionFailed):
+                markers.append(Marker(t, "failure", "failed", str(reason)))
+        elif isinstance(rec, log.Halt):
+            markers.append(Marker(t, "halt", f"halt ({rec.kind})", str(rec.reason)))
+        elif isinstance(rec, log.REPLANS):
+            trigger = str(rec.trigger)
             routine = set(trigger.split("+")) <= ROUTINE_TRIGGERS
-            if rec.get("status") != "solved":
+            if rec.status != "solved":
                 markers.append(
-                    Marker(t, "no_plan", f"no plan ({rec['status']})", str(rec.get("reason", "")))
+                    Marker(t, "no_plan", f"no plan ({rec.status})", str(rec.reason or ""))
                 )
-            elif rec.get("source") == "planner" and not routine:
+            elif isinstance(rec, log.Replan) and rec.source == "planner" and not routine:
                 markers.append(
                     Marker(
                         t,
                         "replan",
                         f"replan ({trigger.replace('halt:', 'after ')})",
-                        f"new makespan {float(rec['makespan']):.2f} s",
+                        f"new makespan {float(rec.makespan or 0.0):.2f} s",
                     )
                 )
-        elif kind == "takeover":
+        elif isinstance(rec, log.Takeover):
             markers.append(
                 Marker(
                     t,
                     "takeover",
                     "takeover",
-                    f"plan predicted at t={float(rec['predicted_at']):.2f} s takes over "
-                    f"({rec.get('context', '')})",
+                    f"plan predicted at t={float(rec.predicted_at or 0.0):.2f} s takes over "
+                    f"({rec.context})",
                 )
             )
-        elif kind == "predict":
-            for hid, p in dict(rec.get("humans") or {}).items():
+        elif isinstance(rec, log.Predict):
+            for hid, p in dict(rec.humans or {}).items():
                 predictions.append(
                     Prediction(
                         t,
                         str(hid),
                         _v3(p["position"]),
                         tuple(str(r) for r in p.get("robots", ())),
-                        str(rec.get("status", "")),
+                        str(rec.status),
                     )
                 )
-            ctx = str(rec.get("context", ""))
-            if rec.get("status") == "solved" and ctx != last_predict_ctx:
+            ctx = str(rec.context)
+            if rec.status == "solved" and ctx != last_predict_ctx:
                 markers.append(Marker(t, "predict", "background plan", f"for {ctx}"))
             last_predict_ctx = ctx
-        elif kind == "human_move":
-            points = [_v3(p) for p in rec.get("wander") or [rec["to"]]]
-            _walk(walks, scene, str(rec["human"]), t, _v3(rec["from"]), points, float(rec["speed"]))
-        elif kind == "object_move" and rec.get("applied"):
-            jumps.append((t, str(rec["object"]), _v3(rec["to"])))
-        elif kind == "object_drop":
-            jumps.append((t, str(rec["object"]), _v3(rec["position"])))
-        elif kind == "instruction":
-            markers.append(Marker(t, "goal", "new instruction", repr(rec.get("text", ""))))
-        elif kind == "robot_down":
-            markers.append(Marker(t, "robot", f"{rec['robot']} down", ""))
-        elif kind == "robot_up":
-            markers.append(Marker(t, "robot", f"{rec['robot']} up", ""))
-        elif kind == "grounding" and not instruction:
-            instruction = str(rec.get("text", ""))
-        elif kind == "episode_end":
-            success = bool(rec.get("success"))
-            end_t = float(rec.get("time_cost", t))
+        elif isinstance(rec, log.HumanMove):
+            if rec.from_ is None or rec.speed is None:
+                raise KeyError("a human_move without 'from' or 'speed'")
+            points = [_v3(p) for p in rec.wander or [rec.to]]
+            _walk(walks, scene, str(rec.human), t, _v3(rec.from_), points, float(rec.speed))
+        elif isinstance(rec, log.ObjectMove) and rec.applied:
+            jumps.append((t, str(rec.object), _v3(rec.to)))
+        elif isinstance(rec, log.ObjectDrop):
+            jumps.append((t, str(rec.object), _v3(rec.position)))
+        elif isinstance(rec, log.InstructionGiven):
+            markers.append(Marker(t, "goal", "new instruction", repr(rec.text)))
+        elif isinstance(rec, log.RobotDown):
+            markers.append(Marker(t, "robot", f"{rec.robot} down", ""))
+        elif isinstance(rec, log.RobotUp):
+            markers.append(Marker(t, "robot", f"{rec.robot} up", ""))
+        elif isinstance(rec, log.Grounding) and not instruction:
+            instruction = str(rec.text)
+        elif isinstance(rec, log.EpisodeEnd):
+            success = bool(rec.success)
+            end_t = float(t if rec.time_cost is None else rec.time_cost)
     for start, k in open_.values():  # still running when the log ends
-        t0 = float(start["t"])
+        t0 = float(start.t)
         spans.append(
             ActionSpan(
-                Action.from_dict(start["action"]),
+                Action.from_dict(start.action),
                 t0,
                 max(end_t, t0),
                 "running",
                 k,
-                float(start.get("expected", 0.0)),
+                float(start.expected or 0.0),
             )
         )
     spans.sort(key=lambda s: (s.start, s.step))

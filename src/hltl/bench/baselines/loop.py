@@ -25,10 +25,26 @@ from dataclasses import dataclass, field
 
 from hltl.bench.baselines.model import Violation, apply_step, check_step
 from hltl.bench.baselines.policy import PlanContext, Policy, Script
+from hltl.execution import log as elog
 from hltl.execution.drivers import ActionState, Handle
 from hltl.execution.executor import ExecStatus
 from hltl.execution.instructions import SpecUpdate
-from hltl.execution.log import EventLog, Record, log_monitor_step, world_to_dict
+from hltl.execution.log import (
+    ActionDone,
+    ActionFailed,
+    ActionHalted,
+    ActionStart,
+    Dispatch,
+    EventLog,
+    GiveUp,
+    Grounding,
+    Halt,
+    LogRecord,
+    PolicyReplan,
+    Wait,
+    log_monitor_step,
+    world_to_dict,
+)
 from hltl.grounding.offline import OfflineGrounder
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
@@ -57,7 +73,7 @@ class LoopConfig:
 class BaselineEpisode:
     """The outcome of one baseline episode."""
 
-    records: tuple[Record, ...]
+    records: tuple[LogRecord, ...]
     metrics: Metrics
     goals_met: bool
     tokens: int
@@ -120,7 +136,7 @@ class BaselineAgent:
         self.t = max(self.t, t)
         text, spec = update.text, update.spec
         if spec is None:
-            self.log.emit(self.t, "grounding", text=text, error=update.error, tokens=0)
+            self.log.emit(Grounding(t=self.t, text=text, error=update.error, tokens=0))
             if self.spec is None:
                 self.give_up(f"cannot ground the instruction: {update.error}")
             return
@@ -130,7 +146,7 @@ class BaselineAgent:
         self.instructions.append(text)
         # the referee's grounding is free; the policy's queries are logged with its replans
         self.log.emit(
-            self.t, "grounding", text=text, tokens=0, spec=spec_to_dict(spec), referee=True
+            Grounding(t=self.t, text=text, tokens=0, spec=spec_to_dict(spec), referee=True)
         )
         self.trigger.append("initial" if len(self.instructions) == 1 else "goal")
         if self.status is ExecStatus.DONE:
@@ -179,20 +195,17 @@ class BaselineAgent:
             if not st.terminal:
                 continue
             run.state = st.state
-            kind = {
-                ActionState.DONE: "action_done",
-                ActionState.FAILED: "action_failed",
-                ActionState.HALTED: "action_halted",
-            }[st.state]
-            extra = {} if st.state is ActionState.DONE else {"reason": st.reason}
-            self.log.emit(
-                self.t,
-                kind,
-                handle=run.handle.id,
-                action=run.action.to_dict(),
-                end=round(st.t, 6),
-                **extra,
-            )
+            handle, action, end = run.handle.id, run.action.to_dict(), round(st.t, 6)
+            if st.state is ActionState.DONE:
+                self.log.emit(ActionDone(t=self.t, handle=handle, action=action, end=end))
+            elif st.state is ActionState.FAILED:
+                self.log.emit(
+                    ActionFailed(t=self.t, handle=handle, action=action, reason=st.reason, end=end)
+                )
+            else:
+                self.log.emit(
+                    ActionHalted(t=self.t, handle=handle, action=action, reason=st.reason, end=end)
+                )
             if st.state is ActionState.FAILED:
                 self.trigger.append("failure")
 
@@ -218,21 +231,23 @@ class BaselineAgent:
             self.sim.halt(run.handle, self.t, reason)
             run.state = ActionState.HALTED
             self.log.emit(
-                self.t,
-                "action_halted",
-                handle=run.handle.id,
-                action=run.action.to_dict(),
-                reason=reason,
-                end=round(self.t, 6),
+                ActionHalted(
+                    t=self.t,
+                    handle=run.handle.id,
+                    action=run.action.to_dict(),
+                    reason=reason,
+                    end=round(self.t, 6),
+                )
             )
             self.log.emit(
-                self.t,
-                "halt",
-                kind="precondition",
-                reason=reason,
-                actions=[run.action.to_dict()],
-                hazards=[],
-                done=self._done(),
+                Halt(
+                    t=self.t,
+                    kind="precondition",
+                    reason=reason,
+                    actions=[run.action.to_dict()],
+                    hazards=[],
+                    done=self._done(),
+                )
             )
             self.trigger.append("halt:precondition")
         if all(r.state is not None for r in self.running):
@@ -321,20 +336,21 @@ class BaselineAgent:
             ok.append(not check_step(step, self.scene, w))
             w, _, _ = apply_step(step, self.scene, w)
         self.log.emit(
-            self.t,
-            "replan",
-            source=self.policy.name,
-            trigger=why,
-            status="error" if script.error else ("solved" if script.steps else "empty"),
-            latency_ms=round(ms, 3),
-            tokens=script.tokens,
-            queries=script.queries,
-            steps=[[a.to_dict() for a in s] for s in script.steps],
-            planned_feasible=ok,
-            reason=script.error or "",
-            world=world_to_dict(world),
-            done=self._done(),
-            **({"script": script.text} if script.text else {}),
+            PolicyReplan(
+                t=self.t,
+                source=self.policy.name,
+                trigger=why,
+                status="error" if script.error else ("solved" if script.steps else "empty"),
+                latency_ms=round(ms, 3),
+                tokens=script.tokens,
+                queries=script.queries,
+                steps=[[a.to_dict() for a in s] for s in script.steps],
+                planned_feasible=ok,
+                reason=script.error or "",
+                world=world_to_dict(world),
+                done=self._done(),
+                **({"script": script.text} if script.text else {}),
+            )
         )
         if script.error is not None:
             self.give_up(f"the script is not executable: {script.error}")
@@ -351,26 +367,28 @@ class BaselineAgent:
                 self.conflicts += 1
             self.violation_notes.append(f"{v.kind}: {v.reason}")
             self.log.emit(
-                self.t,
-                "violation",
-                handle=None,
-                action=None if v.action is None else v.action.to_dict(),
-                reason=v.reason,
-                kind=v.kind,
-                caught="before dispatch",
-                world=world_to_dict(world),
+                elog.Violation(
+                    t=self.t,
+                    handle=None,
+                    action=None if v.action is None else v.action.to_dict(),
+                    reason=v.reason,
+                    kind=v.kind,
+                    caught="before dispatch",
+                    world=world_to_dict(world),
+                )
             )
 
     def dispatch(self, step: Sequence[Action], world: WorldState) -> None:
         self.log.emit(
-            self.t,
-            "dispatch",
-            step=self.steps,
-            actions=[a.to_dict() for a in step],
-            planned=[a.to_dict() for a in step],
-            duration=0.0,
-            world=world_to_dict(world),
-            done=self._done(),
+            Dispatch(
+                t=self.t,
+                step=self.steps,
+                actions=[a.to_dict() for a in step],
+                planned=[a.to_dict() for a in step],
+                duration=0.0,
+                world=world_to_dict(world),
+                done=self._done(),
+            )
         )
         for a in step:
             tr = self.semantics.transition(a, world)
@@ -378,18 +396,19 @@ class BaselineAgent:
             handle = self.sim.start(a, self.t)
             self.running.append(_Run(a, handle, tr))
             self.log.emit(
-                self.t,
-                "action_start",
-                handle=handle.id,
-                action=a.to_dict(),
-                robots=list(a.robots),
-                expected=0.0,
+                ActionStart(
+                    t=self.t,
+                    handle=handle.id,
+                    action=a.to_dict(),
+                    robots=list(a.robots),
+                    expected=0.0,
+                )
             )
 
     def wait(self, reason: str) -> None:
         if self.wait_since is None:
             self.wait_since = self.t
-            self.log.emit(self.t, "wait", reason=reason)
+            self.log.emit(Wait(t=self.t, reason=reason))
         elif self.t - self.wait_since > self.cfg.max_wait:
             self.give_up(f"waited {self.cfg.max_wait:g} s without progress ({reason})")
 
@@ -401,17 +420,18 @@ class BaselineAgent:
                 self.sim.halt(run.handle, self.t, f"giving up: {reason}")
                 run.state = ActionState.HALTED
                 self.log.emit(
-                    self.t,
-                    "action_halted",
-                    handle=run.handle.id,
-                    action=run.action.to_dict(),
-                    reason=f"giving up: {reason}",
-                    end=round(self.t, 6),
+                    ActionHalted(
+                        t=self.t,
+                        handle=run.handle.id,
+                        action=run.action.to_dict(),
+                        reason=f"giving up: {reason}",
+                        end=round(self.t, 6),
+                    )
                 )
         self.running = []
         self.status = ExecStatus.GAVE_UP
         self.reason = reason
-        self.log.emit(self.t, "give_up", reason=reason, done=self._done())
+        self.log.emit(GiveUp(t=self.t, reason=reason, done=self._done()))
 
 
 def run_baseline_episode(
