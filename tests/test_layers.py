@@ -30,10 +30,7 @@ LAYERS: dict[str, float] = {
 
 
 # Known exceptions, each with why it is there and where it should go.
-KNOWN = {
-    # the 3D benchmark renders its demo; it belongs in bench/ (bench may import viz' helpers)
-    ("sim3d/bench.py", "hltl.viz.demo3d"),
-}
+KNOWN: set[tuple[str, str]] = set()
 
 
 def _package(module: str) -> str | None:

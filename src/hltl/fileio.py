@@ -1,8 +1,10 @@
-"""Reading user files and quoting user values: bounded sizes, strict YAML and JSON, clear errors."""
+"""Reading user files and quoting user values: bounded sizes, strict YAML and JSON, clear errors;
+where hltl keeps its caches."""
 
 from __future__ import annotations
 
 import json
+import os
 import re
 import reprlib
 from collections.abc import Callable
@@ -306,3 +308,14 @@ def _bounded_yaml_error(exc: yaml.YAMLError) -> str:
     if problem and mark is not None:
         return f"{problem} at line {mark.line + 1}, column {mark.column + 1}"
     return quote(text[0] if text else type(exc).__name__, 200).strip("'\"")
+
+
+def cache_dir(kind: str) -> Path | None:
+    """``$HLTL_CACHE_DIR/<kind>``, else ``$XDG_CACHE_HOME/hltl/<kind>`` or
+    ``~/.cache/hltl/<kind>``; ``None`` when ``HLTL_CACHE_DIR`` is ``off`` (or empty or 0)."""
+    root = os.environ.get("HLTL_CACHE_DIR")
+    if root is not None:
+        return None if root in ("", "off", "0") else Path(root) / kind
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    base = Path(xdg) if xdg else Path.home() / ".cache"
+    return base / "hltl" / kind

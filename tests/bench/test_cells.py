@@ -52,4 +52,5 @@ def test_rows_and_table() -> None:
         [row, CellRow("deliveries", "line", 9, 9, 1, None, 0, None, None, None)], (0.2, 0.4)
     )
     assert "| deliveries | grid | 3 × 3 | 2 |" in table
-    assert "| deliveries | line | 9 × 9 | 1 | – | – | – | – | – |" in table
+    assert "| deliveries | line | 9 × 9 | 1 | – | – | – | – | – | – |" in table
+    assert row.exact_cpu_median_s is not None and row.exact_cpu_median_s > 0

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import pytest
 
 from hltl.bench.soak import (
@@ -75,3 +78,15 @@ def test_every_event_type_is_drawn() -> None:
         for e in (*random_events(s, seed).timed, *random_events(s, seed).failures)
     }
     assert kinds == {"human_move", "object_move", "instruction", "robot_down", "skill_failure"}
+
+
+def test_the_cli_streams_each_episode_as_it_finishes(tmp_path: Path) -> None:
+    from hltl.cli.main import main
+
+    stream = tmp_path / "soak.jsonl"
+    assert main(["bench", "soak", "--episodes", "2", "--jobs", "1", "--stream", str(stream)]) == 0
+    lines = [json.loads(line) for line in stream.read_text().splitlines()]
+    assert [(d["scenario"], d["seed"]) for d in lines] == [
+        (j.scenario, j.seed) for j in soak_jobs(2, seed=0)
+    ]
+    assert all(d["outcome"] in ("success", "failure") for d in lines)

@@ -52,3 +52,9 @@ def test_node_motion_is_for_the_discrete_simulator(capsys: pytest.CaptureFixture
     argv = ["node", "sim", "--scene", FIG1, "--sim", "mujoco", "--motion", "--episodes", "1"]
     code, err = _run(argv, capsys)
     assert code == 1 and "always follows the joint trajectories" in err and err.count("\n") == 1
+
+
+def test_bad_bus_perception_endpoint(capsys: pytest.CaptureFixture[str]) -> None:
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--bus", "zenoh"]
+    code, err = _run([*argv, "--bus-perception", "zenoh:localhost"], capsys)
+    assert code == 1 and "bad Zenoh endpoint 'localhost'" in err and err.count("\n") == 1

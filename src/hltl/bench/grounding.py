@@ -13,7 +13,9 @@ from typing import Literal
 import yaml
 
 from hltl.errors import GroundingError, HltlError
+from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.grounding.tree import Group, Node, Op, Task
+from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene, load_scene
 
 Verdict = Literal["exact", "refused", "unclear", "wrong"]
@@ -21,9 +23,11 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # The parts of the paraphrase corpus, relative to the repository root: tuning (developed
 # against), heldout (written first, measured before tuning), fresh (written after the grammar
 # work, measured once before any change it motivated), blind (written without reading the
-# grounder's source or outputs, measured once; tests do not assert it).
+# grounder's source or outputs, measured once in session 2, then tuned on in session 3), blind2
+# (written in session 3 after the grammar work and before running the grounder on it; measured
+# once; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
-PARTS = ("tuning", "heldout", "fresh", "blind")
+PARTS = ("tuning", "heldout", "fresh", "blind", "blind2")
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
 
@@ -149,9 +153,6 @@ def load_corpus(path: Path, root: Path) -> Corpus:
 
 def judge(entry: Entry, scene: Scene, ground: Callable[[str, Scene], Node]) -> Outcome:
     """Ground one entry and judge it by language equivalence (hltl.spec.equivalence)."""
-    from hltl.grounding.offline import spec_of
-    from hltl.spec.equivalence import counterexample
-
     t0 = time.perf_counter()
     try:
         got: Node | None = ground(entry.text, scene)
@@ -197,8 +198,6 @@ def repository_root() -> Path:
 
 def offline_tree(text: str, scene: Scene) -> Node:
     """The offline grounder's task tree (what ``OfflineGrounder.ground`` encodes)."""
-    from hltl.grounding.offline import parse_instruction
-
     return parse_instruction(text, scene)
 
 

@@ -23,7 +23,11 @@ from typing import Any
 import numpy as np
 
 from hltl.execution.log import Perception
+from hltl.grounding.offline import OfflineGrounder
 from hltl.perception.evaluate import HORIZONS, Score, score
+from hltl.perception.frames import Frame, camera_from_dict
+from hltl.perception.objects import MIN_PIXELS, localize, make_backend
+from hltl.perception.observe import Perceiver, match_objects
 from hltl.perception.predict import (
     DT,
     F64,
@@ -33,6 +37,16 @@ from hltl.perception.predict import (
     stop_places,
 )
 from hltl.perception.walks import generate_walks
+from hltl.sim.dynamic import MIN_SPACING, WALK_SPEED, _spots, make_trial
+from hltl.sim.episode import run_episode
+from hltl.sim.events import EventSchedule, HumanMove
+from hltl.sim.scenarios import catalogue
+from hltl.sim.simulator import Simulator
+from hltl.sim3d.camera import CameraRenderer, camera_to_world, intrinsics
+from hltl.sim3d.driver import MujocoSimulator
+from hltl.sim3d.model import compile_scene
+from hltl.sim3d.perceived import CameraSimulator
+from hltl.sim3d.stage import Stage
 from hltl.world.scene import Camera, Scene
 
 # Held-out test sets: (name, leg mix over walks.KINDS = sim, smooth, turn, hesitate, wander).
@@ -70,11 +84,6 @@ def evaluate_predictors(
 def suite_walks(seed: int = 0, legs: int = 3, noise: float = 0.01) -> Walks:
     """Every person of every catalogue cell walks ``legs`` times (1 m/s, the simulator's H-MOVE)
     to a random free spot of the suite beside a robot, standing 1–2 s in between."""
-    from hltl.sim.dynamic import MIN_SPACING, WALK_SPEED, _spots
-    from hltl.sim.events import EventSchedule, HumanMove
-    from hltl.sim.scenarios import catalogue
-    from hltl.sim.simulator import Simulator
-
     rng = random.Random(seed)
     out: Walks = []
     for sc in catalogue():
@@ -154,9 +163,6 @@ def _truth_centres(stage: Any) -> dict[str, tuple[float, float, float]]:
 
 
 def _frame_camera(sm: Any, cam: Camera) -> Any:
-    from hltl.perception.frames import camera_from_dict
-    from hltl.sim3d.camera import camera_to_world, intrinsics
-
     k = intrinsics(cam)
     return camera_from_dict(
         {
@@ -176,12 +182,6 @@ def object_bench(
 ) -> list[ObjectRow]:
     """Centroid error, recall and time of both object backends on renders of ``scenes``, each
     with and without the categories' known sizes in the cylinder fit."""
-    from hltl.perception.frames import Frame
-    from hltl.perception.objects import MIN_PIXELS, localize, make_backend
-    from hltl.perception.observe import match_objects
-    from hltl.sim3d.camera import CameraRenderer
-    from hltl.sim3d.model import compile_scene
-    from hltl.sim3d.stage import Stage
 
     # (row name, backend, fit with the categories' known sizes)
     runs = (
@@ -259,10 +259,6 @@ def _crossing(
     """Two people crossing in front of the robots, rendered: (scene, camera, segment id of each
     person, [(frame, floor truth)], the true shoulders, elbows and wrists per frame). ``limit``
     renders only the first frames of the ``frames``-frame crossing."""
-    from hltl.perception.frames import Frame
-    from hltl.sim3d.camera import CameraRenderer
-    from hltl.sim3d.model import compile_scene
-    from hltl.sim3d.stage import Stage
 
     a, b = scene.humans[:2]
     cam = _cameras(scene)[0]
@@ -315,8 +311,6 @@ def people_bench(
     """Two people cross in front of the robots (each walks to where the other stood, 1 m/s
     pace), rendered at 10 Hz with walking poses; every detector tracks them inside the whole
     perception stage (its time per frame includes the objects)."""
-    from hltl.perception.observe import Perceiver
-
     scene, fcam, seg_of, rendered, _ = _crossing(scene, frames)
     rows = []
     for det in detectors:
@@ -446,8 +440,6 @@ def skeleton_bench(scene: Scene, frames: int = 40, limit: int | None = None) -> 
     """MediaPipe skeletons of the crossing people (depth detector tracks them): how often the
     pose model finds each tracked person and each joint, and its 3D error against the
     simulator's joints (the person the track is tied to); ``limit``: the first frames only."""
-    from hltl.perception.observe import Perceiver
-
     scene, fcam, _, rendered, truth = _crossing(scene, frames, limit)
     perceiver = Perceiver(scene, fcam, "segmentation", "depth", skeleton=True)
     assert perceiver.tracker is not None and perceiver.tracker.pose is not None
@@ -534,12 +526,6 @@ def loop_bench(
     """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
     truth and through the camera (segmentation object backend with known sizes, ``people``
     person detector)."""
-    from hltl.grounding.offline import OfflineGrounder
-    from hltl.sim.dynamic import make_trial
-    from hltl.sim.episode import run_episode
-    from hltl.sim3d.driver import MujocoSimulator
-    from hltl.sim3d.model import compile_scene
-    from hltl.sim3d.perceived import CameraSimulator
 
     rows = []
     for config in configs:

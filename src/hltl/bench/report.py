@@ -13,7 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from hltl.bench.suite import TrialResult, Variant
+from hltl.bench.suite import TrialResult, Variant, solved_by_all
+from hltl.errors import BackendUnavailableError
 from hltl.execution.latency import LatencyModel
 from hltl.sim.dynamic import config_of
 
@@ -288,11 +289,7 @@ def format_ablation_groups(results: Iterable[TrialResult], variants: Sequence[Va
     cell (nobody else can serve a person who moves), so the split shows where it can."""
     ok = [r for r in results if r.status == "ok"]
     names = [v.name for v in variants]
-    solved: dict[tuple[str, int], set[str]] = {}
-    for r in ok:
-        if r.success and r.time_cost is not None:
-            solved.setdefault((r.config, r.index), set()).add(r.variant)
-    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
+    common = solved_by_all(ok, variants)
 
     def cells(rs: list[TrialResult]) -> list[str]:
         paired = [r.time_cost for r in rs if (r.config, r.index) in common and r.time_cost]
@@ -496,8 +493,6 @@ def plot_suite(
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        from hltl.errors import BackendUnavailableError
-
         raise BackendUnavailableError("plots need matplotlib: pip install 'hltl[viz]'") from None
     directory.mkdir(parents=True, exist_ok=True)
     ran = [m for m in methods if any(cells.get((m, c), Cell(m, c, "none")).n for c in configs)]

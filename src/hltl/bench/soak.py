@@ -9,16 +9,19 @@ episode over its wall-clock budget).
 
 from __future__ import annotations
 
+import ctypes
 import random
 import signal
+import threading
 import time
 from collections import Counter
-from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from types import FrameType
 from typing import Any
 
+from hltl.bench.sweep import SweepExecutor
 from hltl.execution.log import ActionDone, EpisodeStart, Grounding, LogRecord
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.events import (
@@ -105,6 +108,49 @@ class _Hang(Exception):
     pass
 
 
+@contextmanager
+def _hang_guard(seconds: int) -> Iterator[None]:
+    """Raise :class:`_Hang` in this thread after ``seconds`` of wall clock.
+
+    The main thread (this process, local workers) uses SIGALRM. Signals reach only the main
+    thread, so elsewhere (a Dask worker runs jobs in a thread) a timer raises the exception
+    in this thread asynchronously; it lands at the episode's next Python bytecode.
+    """
+    if threading.current_thread() is threading.main_thread():
+
+        def stop(signum: int, frame: FrameType | None) -> None:
+            raise _Hang
+
+        old = signal.signal(signal.SIGALRM, stop)
+        signal.alarm(seconds)
+        try:
+            yield
+        finally:
+            signal.alarm(0)
+            signal.signal(signal.SIGALRM, old)
+        return
+    tid = threading.get_ident()
+    lock = threading.Lock()
+    running = [True]
+
+    def fire() -> None:
+        with lock:
+            if running[0]:
+                ctypes.pythonapi.PyThreadState_SetAsyncExc(
+                    ctypes.c_ulong(tid), ctypes.py_object(_Hang)
+                )
+
+    timer = threading.Timer(seconds, fire)
+    timer.daemon = True
+    timer.start()
+    try:
+        yield
+    finally:
+        with lock:
+            running[0] = False
+        timer.cancel()
+
+
 def run_soak_episode(job: SoakJob) -> SoakResult:
     """One soak episode; never raises (a crash or a hang is a result)."""
     scenario = next(s for s in catalogue() if s.name == job.scenario)
@@ -112,26 +158,19 @@ def run_soak_episode(job: SoakJob) -> SoakResult:
     kinds = tuple(e.type for e in (*events.timed, *events.failures))
     t0 = time.perf_counter()
 
-    def stop(signum: int, frame: FrameType | None) -> None:
-        raise _Hang
-
-    old = signal.signal(signal.SIGALRM, stop)
-    signal.alarm(HANG_SECONDS)
     try:
-        ep = run_episode(
-            scenario.scene,
-            spec=scenario.spec,
-            events=events,
-            seed=job.seed,
-            config=EpisodeConfig(max_time=job.max_time),
-        )
+        with _hang_guard(HANG_SECONDS):
+            ep = run_episode(
+                scenario.scene,
+                spec=scenario.spec,
+                events=events,
+                seed=job.seed,
+                config=EpisodeConfig(max_time=job.max_time),
+            )
     except _Hang:
         return _result(job, kinds, "hang", f"over {HANG_SECONDS} s wall clock", t0)
     except Exception as exc:  # a crash is what the soak looks for: report it, go on
         return _result(job, kinds, "crash", f"{type(exc).__name__}: {exc}", t0)
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
     records = list(ep.records)
     lost, duplicated = _deliveries(records, ep.success)
     m = ep.metrics
@@ -197,23 +236,10 @@ def run_soak(
     jobs: Sequence[SoakJob],
     workers: int = 1,
     on_result: Callable[[SoakResult], None] | None = None,
+    executor: SweepExecutor | None = None,
 ) -> list[SoakResult]:
-    """Run ``jobs`` in ``workers`` processes (1: here); results in job order."""
-    results: list[SoakResult | None] = [None] * len(jobs)
-    if workers <= 1:
-        for k, job in enumerate(jobs):
-            results[k] = run_soak_episode(job)
-            if on_result is not None:
-                on_result(results[k])  # type: ignore[arg-type]
-    else:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            futures = {pool.submit(run_soak_episode, job): k for k, job in enumerate(jobs)}
-            for fut in as_completed(futures):
-                res = fut.result()
-                results[futures[fut]] = res
-                if on_result is not None:
-                    on_result(res)
-    return [r for r in results if r is not None]
+    """Run ``jobs`` on ``executor`` (default: ``workers`` local processes; 1: here), in order."""
+    return (executor or SweepExecutor()).run(run_soak_episode, jobs, workers, on_result)
 
 
 def summary(results: Iterable[SoakResult]) -> dict[str, Any]:

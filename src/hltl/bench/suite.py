@@ -16,7 +16,6 @@ import shlex
 import statistics
 import time
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -28,6 +27,7 @@ from hltl.bench.baselines.pddl import fd_unavailable, solve
 from hltl.bench.baselines.policy import Policy
 from hltl.bench.baselines.smart_llm import SmartLLMPolicy, llm_unavailable
 from hltl.bench.latency import DEFAULT_MODEL as DEFAULT_LATENCY_MODEL
+from hltl.bench.sweep import SweepExecutor
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
 from hltl.execution.latency import LatencyModel, load_latency_model
@@ -389,8 +389,10 @@ def run_suite(
     *,
     workers: int = 2,
     on_result: Callable[[TrialResult], None] | None = None,
+    executor: SweepExecutor | None = None,
 ) -> list[TrialResult]:
-    """Run ``jobs`` in ``workers`` processes (1: in this process); results in job order.
+    """Run ``jobs`` on ``executor`` (default: ``workers`` local processes; 1: in this process);
+    results in job order.
 
     Methods whose backend is not configured are answered without starting a process.
     """
@@ -417,20 +419,9 @@ def run_suite(
                 on_result(res)
         else:
             todo.append(k)
-    if workers <= 1:
-        for k in todo:
-            res = run_trial(jobs[k])
-            results[k] = res
-            if on_result is not None:
-                on_result(res)
-    else:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            futures = {pool.submit(run_trial, jobs[k]): k for k in todo}
-            for fut in as_completed(futures):
-                res = fut.result()
-                results[futures[fut]] = res
-                if on_result is not None:
-                    on_result(res)
+    ran = (executor or SweepExecutor()).run(run_trial, [jobs[k] for k in todo], workers, on_result)
+    for k, res in zip(todo, ran, strict=True):
+        results[k] = res
     return [r for r in results if r is not None]
 
 
@@ -471,11 +462,13 @@ class SuiteOptions:
     write: Path | None = None
     figures: Path | None = None
     json: Path | None = None
+    executor: str = "local"
     walks: str = "random"
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
+        SweepExecutor.parse(self.executor)
         _check_walks(self.walks)
         for m in self.method_list:
             if m not in (*METHODS, *ONE_SHOT):
@@ -520,6 +513,8 @@ class SuiteOptions:
             f"--methods {self.methods}",
             f"--jobs {self.jobs} --seed {self.seed}",
         ]
+        if self.executor != "local":
+            parts.append(f"--executor {shlex.quote(self.executor)}")
         if self.configs:
             parts.append(f"--configs {self.configs}")
         if self.max_time != 120.0:
@@ -570,7 +565,12 @@ def run_suite_command(
     """Run every job of ``options`` and the flat-LTLf sweep."""
     jobs = options.trial_jobs()
     t0 = time.perf_counter()
-    results = run_suite(jobs, workers=options.jobs, on_result=on_result)
+    results = run_suite(
+        jobs,
+        workers=options.jobs,
+        on_result=on_result,
+        executor=SweepExecutor.parse(options.executor),
+    )
     wall = time.perf_counter() - t0
     sweep_rows: list[dict[str, Any]] = []
     sweep_s = 0.0
@@ -612,10 +612,12 @@ class AblationOptions:
     walks: str = "random"
     write: Path | None = None
     json: Path | None = None
+    executor: str = "local"
 
     def __post_init__(self) -> None:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
+        SweepExecutor.parse(self.executor)
         if (self.plan_latency is not None and self.plan_latency < 0) or self.serial_factor < 1:
             raise HltlError("--plan-latency must be >= 0 and --serial-factor >= 1")
         _check_walks(self.walks)
@@ -673,6 +675,8 @@ class AblationOptions:
         if self.latency_model is not None:
             parts.append(f"--latency-model {shlex.quote(str(self.latency_model))}")
         parts.append(f"--serial-factor {self.serial_factor:g}")
+        if self.executor != "local":
+            parts.append(f"--executor {shlex.quote(self.executor)}")
         if self.walks != "random":
             parts.append(f"--walks {self.walks}")
         if self.variant_names != list(ABLATION_VARIANTS):
@@ -686,6 +690,18 @@ class AblationOptions:
         return " ".join(parts)
 
 
+def solved_by_all(
+    results: Iterable[TrialResult], variants: Sequence[Variant]
+) -> set[tuple[str, int]]:
+    """The (configuration, trial) pairs every variant solved: paired times compare those."""
+    names = [v.name for v in variants]
+    solved: dict[tuple[str, int], set[str]] = {}
+    for r in results:
+        if r.status == "ok" and r.success and r.time_cost is not None:
+            solved.setdefault((r.config, r.index), set()).add(r.variant)
+    return {k for k, vs in solved.items() if all(n in vs for n in names)}
+
+
 def ablation_extra(
     results: Sequence[TrialResult], variants: Sequence[Variant]
 ) -> dict[str, dict[str, float]]:
@@ -694,12 +710,7 @@ def ablation_extra(
     compared on the same trials), takeovers, anticipatory dispatches and the computation time
     charged on the critical path per trial."""
     ok = [r for r in results if r.status == "ok"]
-    names = [v.name for v in variants]
-    solved: dict[tuple[str, int], set[str]] = {}
-    for r in ok:
-        if r.success and r.time_cost is not None:
-            solved.setdefault((r.config, r.index), set()).add(r.variant)
-    common = {k for k, vs in solved.items() if all(n in vs for n in names)}
+    common = solved_by_all(ok, variants)
     extra: dict[str, dict[str, float]] = {}
     for v in variants:
         rs = [r for r in ok if r.variant == v.name]

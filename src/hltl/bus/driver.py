@@ -32,6 +32,7 @@ from hltl.bus.codec import (
 )
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
+from hltl.bus.perception import PerceptionClient
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
@@ -110,6 +111,10 @@ class BusCell:
         cell: the cell's name in key expressions.
         timing: timeouts and retries.
         faults: faults injected into what the executor publishes and receives.
+        tick, max_time: the loop's period and time limit, so that the node can simulate the
+            next ticks ahead (a wrong guess only costs a round trip).
+        ahead: most ticks the node may simulate ahead per answer (0: one query per tick).
+        perceived: a perception node's observations to fuse into what the executor sees.
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene).
@@ -130,8 +135,10 @@ class BusCell:
         tick: float = EpisodeConfig().tick,
         max_time: float | None = None,
         ahead: int = 64,
+        perceived: PerceptionClient | None = None,
     ) -> None:
         self.session = session
+        self.perceived = perceived
         self.scene = scene
         self.log = log
         self.keys = Keys(cell)
@@ -465,6 +472,8 @@ class BusCell:
             # The node is gone and every robot with it: nothing can be dispatched, so the last
             # world seen is good enough for the executor to conclude and give up with a reason.
             return self._obs.with_time(self.now if t is None else t)
+        if self.perceived is not None:  # a perception node's camera, over the simulator's
+            return self.perceived.fuse(self._obs)
         return self._obs
 
     def next_event_time(self) -> float:
@@ -645,6 +654,7 @@ def bus_cell(
     tick: float = EpisodeConfig().tick,
     max_time: float | None = None,
     ahead: int = 64,
+    perceived: PerceptionClient | None = None,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given."""
@@ -670,6 +680,7 @@ def bus_cell(
             tick=tick,
             max_time=max_time,
             ahead=ahead,
+            perceived=perceived,
         )
         if opened is not None:
             opened.append(c)

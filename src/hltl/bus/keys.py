@@ -93,6 +93,11 @@ class Keys:
         """The perceived world state (JSON)."""
         return f"{self.root}/observation"
 
+    @property
+    def perception(self) -> str:
+        """What a perception node sees in each camera frame (JSON, ``hltl.bus.perception``)."""
+        return f"{self.root}/perception"
+
     def human_pose(self, human: str) -> str:
         """CDR ``geometry_msgs/msg/PoseStamped`` of a person, scene frame."""
         return f"{self.root}/humans/{check_name('human', human)}/pose"

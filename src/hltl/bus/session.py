@@ -11,6 +11,7 @@ from typing import Any
 from hltl.errors import BackendUnavailableError, BusError
 
 DEFAULT_ENDPOINT = "tcp/127.0.0.1:7447"
+PERCEPTION_ENDPOINT = "tcp/127.0.0.1:7448"  # hltl node perception's default
 _ENDPOINT = re.compile(r"(tcp|udp|quic|tls|ws|unixsock-stream)/\S+")
 
 
@@ -31,12 +32,12 @@ def check_endpoint(endpoint: str) -> str:
     return endpoint
 
 
-def parse_bus(text: str) -> str:
+def parse_bus(text: str, default: str = DEFAULT_ENDPOINT) -> str:
     """The endpoint of a ``--bus`` value: ``zenoh`` (loopback default) or ``zenoh:ENDPOINT``."""
     kind, _, endpoint = text.partition(":")
     if kind != "zenoh":
         raise BusError(f"unknown bus {text[:80]!r}; expected 'zenoh' or 'zenoh:ENDPOINT'")
-    return check_endpoint(endpoint) if endpoint else DEFAULT_ENDPOINT
+    return check_endpoint(endpoint) if endpoint else default
 
 
 @dataclass(frozen=True, slots=True)

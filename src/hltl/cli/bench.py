@@ -24,6 +24,15 @@ from rich.progress import (
 from rich.table import Table
 
 from hltl.bench import report
+from hltl.bench.cells import (
+    CELL_LAYOUTS,
+    FAMILIES,
+    delivery_cell,
+    format_cells,
+    mixed_cell,
+    run_cells,
+    startup_times,
+)
 from hltl.bench.grounding import (
     CORPUS_DIR,
     PARTS,
@@ -35,10 +44,12 @@ from hltl.bench.grounding import (
 )
 from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
+from hltl.bench.motion import bench_motion, format_motion
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
-from hltl.bench.soak import run_soak, soak_jobs, summary
+from hltl.bench.sim3d import bench_sim3d, format_sim3d
+from hltl.bench.soak import SoakResult, run_soak, soak_jobs, summary
 from hltl.bench.suite import (
     ABLATION_VARIANTS,
     METHODS,
@@ -51,8 +62,12 @@ from hltl.bench.suite import (
     run_suite,
     run_suite_command,
 )
+from hltl.bench.sweep import SweepExecutor
+from hltl.bus.bench import bench_bus, format_bus
+from hltl.cli.bench_perception import run
 from hltl.errors import HltlError
-from hltl.fileio import write_output
+from hltl.fileio import open_output, write_output
+from hltl.viz.demo3d import run_demo3d
 
 
 def register(sub: Any) -> None:
@@ -113,6 +128,12 @@ def register(sub: Any) -> None:
     )
     su.add_argument("--jobs", type=int, default=2, help="worker processes")
     su.add_argument("--seed", type=int, default=0, help="suite seed (trial seeds derive from it)")
+    su.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     su.add_argument("--max-time", type=float, default=120.0, help="simulated seconds per trial")
     su.add_argument(
         "--flat-trials", type=int, default=2, help="trials per configuration for flat LTLf"
@@ -135,7 +156,18 @@ def register(sub: Any) -> None:
     so.add_argument("--episodes", type=int, default=130, help="episodes (cycling the catalogue)")
     so.add_argument("--jobs", type=int, default=2, help="worker processes")
     so.add_argument("--seed", type=int, default=0, help="soak seed (episode seeds derive from it)")
+    so.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     so.add_argument("--json", type=Path, help="write every episode's result here")
+    so.add_argument(
+        "--stream",
+        type=Path,
+        help="append each episode's result here as it finishes (JSON Lines; kept if interrupted)",
+    )
     so.set_defaults(func=run_soak_cmd)
 
     ab = bsub.add_parser("ablation", help="Table III: fluency metrics of executor variants")
@@ -143,6 +175,12 @@ def register(sub: Any) -> None:
     ab.add_argument("--configs", default="", help="comma-separated configurations (default: all)")
     ab.add_argument("--jobs", type=int, default=2, help="worker processes")
     ab.add_argument("--seed", type=int, default=0, help="suite seed")
+    ab.add_argument(
+        "--executor",
+        default="local",
+        help="where jobs run: local (--jobs processes), dask (a local Dask cluster of --jobs "
+        "workers) or dask:SCHEDULER_ADDRESS",
+    )
     ab.add_argument(
         "--plan-latency",
         type=float,
@@ -253,8 +291,6 @@ def register(sub: Any) -> None:
 
 
 def run_bus(args: argparse.Namespace) -> int:
-    from hltl.bus.bench import bench_bus, format_bus
-
     if args.round_trips < 1 or args.episodes < 1:
         raise HltlError("--round-trips and --episodes must be at least 1")
     console = Console(stderr=True)
@@ -277,11 +313,11 @@ def run_bus(args: argparse.Namespace) -> int:
 def run_sim3d(args: argparse.Namespace) -> int:
     import datetime
 
-    from hltl.sim3d.bench import bench_sim3d, format_sim3d
-
     if args.frames < 1:
         raise HltlError(f"--frames must be at least 1, got {args.frames}")
-    b = bench_sim3d(frames=args.frames, demo=args.demo)
+    b = bench_sim3d(
+        frames=args.frames, demo=(lambda out: run_demo3d(out=out)) if args.demo else None
+    )
     command = "hltl bench sim3d" + (" --demo" if args.demo else "")
     if args.write is not None:
         command += f" --write {shlex.quote(str(args.write))}"
@@ -358,16 +394,6 @@ def _sizes(text: str, option: str) -> list[int]:
 
 
 def run_planner_cells(args: argparse.Namespace) -> int:
-    from hltl.bench.cells import (
-        CELL_LAYOUTS,
-        FAMILIES,
-        delivery_cell,
-        format_cells,
-        mixed_cell,
-        run_cells,
-        startup_seconds,
-    )
-
     try:
         short, long = (float(x) for x in args.budgets.split(","))
     except ValueError:
@@ -396,11 +422,12 @@ def run_planner_cells(args: argparse.Namespace) -> int:
         rows += run_cells(cells, exact_timeout=None, anytime_budgets=(short, long), on_cell=show)
     table = format_cells(rows, (short, long))
     scene, spec = "examples/scenes/two_arms.yaml", "examples/specs/fig1.yaml"
-    help_s = startup_seconds(["--help"])
-    plan_s = startup_seconds(["plan", "--scene", scene, "--spec", spec])
+    help_s, help_cpu = startup_times(["--help"])
+    plan_s, plan_cpu = startup_times(["plan", "--scene", scene, "--spec", spec])
     startup = (
-        f"Start-up (median of 5 fresh processes, DFA disk cache warm): `hltl --help` "
-        f"{help_s:.2f} s, `hltl plan --scene {scene} --spec {spec}` {plan_s:.2f} s."
+        f"Start-up (median of 5 fresh processes, DFA and grammar disk caches warm; wall time, "
+        f"CPU time in brackets): `hltl --help` {help_s:.2f} s ({help_cpu:.2f} s CPU), "
+        f"`hltl plan --scene {scene} --spec {spec}` {plan_s:.2f} s ({plan_cpu:.2f} s CPU)."
     )
     print(table + "\n\n" + startup)
     if args.write is not None:
@@ -414,7 +441,8 @@ def run_planner_cells(args: argparse.Namespace) -> int:
         date = datetime.date.today().isoformat()
         body = (
             f"Command: `{command}`  \nDate: {date}. Machine: {machine()} (shared with other "
-            "jobs). Exact: `planner.seconds`, median over seeds, search stopped at --timeout. "
+            "jobs). Exact: `planner.seconds` (wall) and the process's CPU time, medians over "
+            "seeds, search stopped at --timeout (wall). "
             "Gap: (makespan − proven lower bound) / makespan, median over seeds.\n\n"
             + table
             + "\n\n"
@@ -489,8 +517,6 @@ def run_grounding(args: argparse.Namespace) -> int:
 
 
 def run_motion(args: argparse.Namespace) -> int:
-    from hltl.bench.motion import bench_motion, format_motion
-
     if min(args.ik_solves, args.probes, args.runs) < 1 or args.workers < 0:
         raise HltlError("--ik-solves, --probes and --runs must be >= 1, --workers >= 0")
     quick = args.quick
@@ -519,8 +545,6 @@ def run_motion(args: argparse.Namespace) -> int:
 
 
 def run_perception(args: argparse.Namespace) -> int:
-    from hltl.cli.bench_perception import run
-
     return run(args)
 
 
@@ -550,6 +574,7 @@ def run_suite_cmd(args: argparse.Namespace) -> int:
         write=args.write,
         figures=args.figures,
         json=args.json,
+        executor=args.executor,
         walks=args.walks,
     )
     configs = configs_from(opts.configs)
@@ -606,16 +631,28 @@ def run_soak_cmd(args: argparse.Namespace) -> int:
     """Run the soak; exit 1 when any episode was unsafe, lost work, crashed or hung."""
     if args.episodes < 1 or args.jobs < 1:
         raise HltlError("--episodes and --jobs must be at least 1")
+    executor = SweepExecutor.parse(args.executor)
     jobs = soak_jobs(args.episodes, args.seed)
+    stream = None if args.stream is None else open_output(args.stream, "the soak stream")
     with _progress("hltl bench soak") as progress:
         task = progress.add_task("", total=len(jobs))
+
+        def done(r: SoakResult) -> None:
+            progress.update(task, advance=1, description=r.scenario)
+            if stream is not None:  # one line per episode, flushed: a killed run keeps its part
+                stream.write(json.dumps(asdict(r)) + "\n")
+                stream.flush()
+
         t0 = time.perf_counter()
-        results = run_soak(
-            jobs, args.jobs, lambda r: progress.update(task, advance=1, description=r.scenario)
-        )
+        try:
+            results = run_soak(jobs, args.jobs, done, executor)
+        finally:
+            if stream is not None:
+                stream.close()
         wall = time.perf_counter() - t0
     s = summary(results)
-    print(json.dumps({**s, "wall_s": round(wall, 1), "jobs": args.jobs}, indent=2))
+    shown = {**s, "wall_s": round(wall, 1), "jobs": args.jobs, "executor": str(executor)}
+    print(json.dumps(shown, indent=2))
     if args.json is not None:
         write_output(args.json, "the soak results", json.dumps([asdict(r) for r in results]))
     harm = s["violations"] + s["lost"] + s["duplicated"] + s["crash"] + s["hang"]
@@ -642,6 +679,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         walks=args.walks,
         write=args.write,
         json=args.json,
+        executor=args.executor,
     )
     configs = configs_from(opts.configs)
     variants = opts.variants()
@@ -653,7 +691,9 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             progress.update(task, advance=1, description=f"{r.variant} {r.config}#{r.index}")
 
         t0 = time.perf_counter()
-        results = run_suite(jobs, workers=opts.jobs, on_result=tick)
+        results = run_suite(
+            jobs, workers=opts.jobs, on_result=tick, executor=SweepExecutor.parse(opts.executor)
+        )
         wall = time.perf_counter() - t0
     table = report.format_table_iii(report.fluency(results), ablation_extra(results, variants))
     groups = report.format_ablation_groups(results, variants)

@@ -7,28 +7,30 @@ import datetime
 import shlex
 import sys
 
+from hltl.bench.markdown import machine, write_section
+from hltl.bench.perception import (
+    _three,
+    evaluate_predictors,
+    format_loop,
+    format_objects,
+    format_people,
+    format_prediction,
+    format_skeleton,
+    loop_bench,
+    object_bench,
+    people_bench,
+    skeleton_bench,
+    suite_walks,
+)
 from hltl.errors import HltlError
+from hltl.perception.gru import load_model
+from hltl.perception.skeleton import pose_python
+from hltl.sim.dynamic import config_names
+from hltl.sim.scenarios import get
+from hltl.sim3d.gl import require_renderer
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.bench.markdown import machine, write_section
-    from hltl.bench.perception import (
-        _three,
-        evaluate_predictors,
-        format_loop,
-        format_objects,
-        format_people,
-        format_prediction,
-        format_skeleton,
-        loop_bench,
-        object_bench,
-        people_bench,
-        skeleton_bench,
-        suite_walks,
-    )
-    from hltl.perception.gru import load_model
-    from hltl.sim.scenarios import get
-
     if args.walks < 1:
         raise HltlError(f"--walks: expected a positive integer, got {args.walks!r}")
     quick = args.quick
@@ -42,7 +44,6 @@ def run(args: argparse.Namespace) -> int:
     say("prediction: the simulator's walks in the catalogue cells")
     pred.append(("suite H-MOVE walks", _three(model, suite_walks(legs=1 if quick else 3), 2)))
     tables = ["### Trajectory prediction\n\n" + format_prediction(pred)]
-    from hltl.sim3d.gl import require_renderer
 
     try:
         require_renderer()
@@ -57,8 +58,6 @@ def run(args: argparse.Namespace) -> int:
         say("people: two people crossing")
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))
-        from hltl.perception.skeleton import pose_python
-
         if pose_python().is_file():
             say("skeletons: MediaPipe pose worker")
             sk = skeleton_bench(scenes[0], frames=10 if quick else 40)
@@ -66,8 +65,6 @@ def run(args: argparse.Namespace) -> int:
         else:
             say(f"skeletons skipped: no pose environment at {pose_python()}")
         if args.loop_trials > 0 and not quick:
-            from hltl.sim.dynamic import config_names
-
             say("closed loop: ground truth vs camera")
             loop = loop_bench(config_names(), args.loop_trials, say)
             tables.append(

@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
+from hltl.bus.driver import BusTiming, bus_cell
+from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
 from hltl.errors import HltlError
 
 if TYPE_CHECKING:
@@ -18,6 +20,12 @@ def add_bus_arguments(p: argparse.ArgumentParser) -> None:
         metavar="zenoh[:ENDPOINT]",
         help="drive a simulator node over the Zenoh bus (started with 'hltl node sim') instead "
         "of the in-process simulator; ENDPOINT defaults to tcp/127.0.0.1:7447",
+    )
+    p.add_argument(
+        "--bus-perception",
+        metavar="zenoh[:ENDPOINT]",
+        help="with --bus: also connect to a perception node ('hltl node perception', default "
+        "tcp/127.0.0.1:7448) and fuse what its camera sees into the executor's observations",
     )
     p.add_argument("--cell", default="default", help="with --bus: the cell's name on the bus")
     p.add_argument(
@@ -33,28 +41,36 @@ class BusSimulator:
     drives it; :meth:`close` tells the node the episode ended and closes the session."""
 
     def __init__(self, args: argparse.Namespace) -> None:
-        from hltl.bus.driver import BusTiming, bus_cell
-        from hltl.bus.session import BusConfig, open_session, parse_bus
-
         if args.sim != "discrete":
             raise HltlError(
                 "--sim chooses the in-process simulator; with --bus the node chooses it "
                 "('hltl node sim --sim mujoco')"
             )
         endpoint = parse_bus(args.bus)
+        endpoints = [endpoint]
+        if args.bus_perception is not None:
+            endpoints.append(parse_bus(args.bus_perception, PERCEPTION_ENDPOINT))
         try:
             # a node still starting up gets five answer times to appear
             timing = BusTiming(timeout=args.bus_timeout, connect=5 * args.bus_timeout)
         except ValueError as exc:
             raise HltlError(f"--bus-timeout: {exc}") from None
-        self.session: Any = open_session(BusConfig(connect=(endpoint,)))
+        self.session: Any = open_session(BusConfig(connect=tuple(endpoints)))
         self.opened: list[BusCell] = []
+        self.perception = None
+        if args.bus_perception is not None:
+            from hltl.bus.perception import (
+                PerceptionClient,  # the bus extra (Zenoh), only with --bus-perception
+            )
+
+            self.perception = PerceptionClient(self.session, cell=args.cell)
         make = bus_cell(
             self.session,
             cell=args.cell,
             timing=timing,
             opened=self.opened,
             max_time=getattr(args, "max_time", None),
+            perceived=self.perception,
         )
 
         def factory(*a: Any, **kw: Any) -> Cell:
@@ -70,5 +86,7 @@ class BusSimulator:
         for c in self.opened:
             c.end()
             c.close()
+        if self.perception is not None:
+            self.perception.close()
         if not self.session.is_closed():
             self.session.close()

@@ -10,6 +10,9 @@ from typing import Any
 
 from hltl.cli.common import error_line
 from hltl.errors import HltlError
+from hltl.spec.automata import default_cache
+from hltl.spec.hierarchy import load_spec
+from hltl.spec.printer import to_string
 
 
 def register(subparsers: Any) -> None:
@@ -25,10 +28,6 @@ def register(subparsers: Any) -> None:
 
 
 def _report(path: Path) -> dict[str, Any]:
-    from hltl.spec.automata import default_cache
-    from hltl.spec.hierarchy import load_spec
-    from hltl.spec.printer import to_string
-
     cache = default_cache()
     spec = load_spec(path, cache=cache)
     formulas = []

@@ -44,13 +44,19 @@ def load_spec_or_ground(
 ) -> HSpec:
     """The spec from a file, or the instruction grounded in the scene."""
     if spec_path is not None:
-        from hltl.spec.hierarchy import load_spec
+        from hltl.spec.hierarchy import (
+            load_spec,  # lazy: cli.main imports this module, keep `hltl` start-up lean
+        )
 
         return load_spec(spec_path)
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
-    from hltl.grounding import make_grounder
-    from hltl.grounding.base import check_instruction
+    from hltl.grounding import (
+        make_grounder,  # lazy: cli.main imports this module, keep `hltl` start-up lean
+    )
+    from hltl.grounding.base import (
+        check_instruction,  # lazy: cli.main imports this module, keep `hltl` start-up lean
+    )
 
     check_instruction(instruction, "--instruction")
     spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
@@ -59,7 +65,9 @@ def load_spec_or_ground(
 
 def describe_action(scene: Scene, action: object) -> str:
     """One action in words: 'r1 hands bottle to Person A'."""
-    from hltl.skills.library import Action
+    from hltl.skills.library import (
+        Action,  # lazy: cli.main imports this module, keep `hltl` start-up lean
+    )
 
     assert isinstance(action, Action)
     rs = action.robots

@@ -7,14 +7,18 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl.cli.run import Timeline
+from hltl.sim.events import load_events
+from hltl.viz.demo import DEFAULT_OUT, DEMO_INSTRUCTION, demo_scene, run_demo
+from hltl.viz.demo3d import run_demo3d
+from hltl.world.scene import load_scene
+
 if TYPE_CHECKING:
     from hltl.viz.demo import DemoResult
     from hltl.world.scene import Scene
 
 
 def register(sub: Any) -> None:
-    from hltl.viz.demo import DEFAULT_OUT, DEMO_INSTRUCTION
-
     p: argparse.ArgumentParser = sub.add_parser(
         "demo",
         help="run the paper's Fig. 1 episode and draw it",
@@ -51,20 +55,10 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from rich.console import Console
 
-    from hltl.cli.run import Timeline
-    from hltl.viz.demo import DEMO_INSTRUCTION, demo_scene, run_demo
-
     console = Console(highlight=False)
-    if args.scene is not None:
-        from hltl.world.scene import load_scene
-
-        scene = load_scene(args.scene)
-    else:
-        scene = demo_scene()
+    scene = load_scene(args.scene) if args.scene is not None else demo_scene()
     events = None
     if args.events is not None:
-        from hltl.sim.events import load_events
-
         events = load_events(args.events, scene)
     _header(console, scene, args.instruction, args.events)
     common: dict[str, Any] = {
@@ -94,8 +88,6 @@ def run(args: argparse.Namespace) -> int:
 
 def _run_3d(common: dict[str, Any]) -> DemoResult:
     from rich.progress import Progress
-
-    from hltl.viz.demo3d import run_demo3d
 
     with Progress(transient=True) as bar:
         task = bar.add_task("rendering 3D frames", total=None)

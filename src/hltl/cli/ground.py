@@ -7,8 +7,13 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl import grounding
 from hltl.errors import GroundingError
 from hltl.fileio import write_output
+from hltl.grounding.base import check_instruction
+from hltl.spec.hierarchy import load_spec, spec_to_dict
+from hltl.spec.printer import to_string
+from hltl.world.scene import load_scene
 
 if TYPE_CHECKING:
     from hltl.grounding.base import Grounding
@@ -42,11 +47,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.grounding import make_grounder
-    from hltl.grounding.base import check_instruction
-    from hltl.spec.hierarchy import load_spec, spec_to_dict
-    from hltl.world.scene import load_scene
-
     check_instruction(args.instruction, "--instruction")
     scene = load_scene(args.scene)
     running = load_spec(args.running) if args.running is not None else None
@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
         options["config_path"] = args.llm_config
     if args.grounder == "local" and args.model is not None:
         options["model_path"] = args.model
-    grounder = make_grounder(args.grounder, **options)
+    grounder = grounding.make_grounder(args.grounder, **options)
     try:
         result = grounder.ground(args.instruction, scene, running)
     except GroundingError as exc:
@@ -100,8 +100,6 @@ def _print_tree(result: Grounding, scene: Scene) -> None:
     from rich.console import Console
     from rich.markup import escape
     from rich.tree import Tree
-
-    from hltl.spec.printer import to_string
 
     spec = result.spec
 

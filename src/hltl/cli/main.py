@@ -35,7 +35,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "motion",
         "arm kinematics: handover poses, comfort zones, skill motions, reachability maps",
     ),
-    "node": ("node", "run the simulator as a node on the Zenoh bus"),
+    "node": ("node", "run the simulator or the perception stage as a node on the Zenoh bus"),
 }
 
 EXIT_OK, EXIT_FAILURE, EXIT_USAGE = 0, 1, 2

@@ -8,6 +8,14 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.motion.grasps import Cylinder
+from hltl.motion.handover import optimise_r2r, plan_r2h
+from hltl.motion.human import standing_posture
+from hltl.motion.planning import CandidatePlanner, Cell, plan_action
+from hltl.motion.reach import _cache_file, default_resolution, load_or_build
+from hltl.motion.robots import MODEL_NAMES
+from hltl.skills.library import Action
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -59,9 +67,6 @@ def register(sub: Any) -> None:
 
 
 def _cell(scene_path: Path) -> Any:
-    from hltl.motion.planning import Cell
-    from hltl.world.scene import load_scene
-
     return Cell(load_scene(scene_path))
 
 
@@ -76,9 +81,6 @@ def _round(x: Any, n: int = 4) -> Any:
 def run_handover(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.table import Table
-
-    from hltl.motion.grasps import Cylinder
-    from hltl.motion.handover import optimise_r2r
 
     if args.samples < 1:
         raise HltlError(f"--samples must be at least 1, got {args.samples}")
@@ -176,9 +178,6 @@ def run_handover(args: argparse.Namespace) -> int:
 def run_r2h(args: argparse.Namespace) -> int:
     from rich.console import Console
 
-    from hltl.motion.handover import plan_r2h
-    from hltl.motion.human import standing_posture
-
     cell = _cell(args.scene)
     robot = cell.scene.robot(args.robot)
     human = cell.scene.human(args.human)
@@ -215,9 +214,6 @@ def run_r2h(args: argparse.Namespace) -> int:
 
 def run_skill(args: argparse.Namespace) -> int:
     from rich.console import Console
-
-    from hltl.motion.planning import CandidatePlanner, plan_action
-    from hltl.skills.library import Action
 
     cell = _cell(args.scene)
     robots = tuple(x.strip() for x in args.robots.split(",") if x.strip())
@@ -283,9 +279,6 @@ def run_maps(args: argparse.Namespace) -> int:
     import time
 
     from rich.console import Console
-
-    from hltl.motion.reach import _cache_file, default_resolution, load_or_build
-    from hltl.motion.robots import MODEL_NAMES
 
     models = args.model or list(MODEL_NAMES)
     for name in models:

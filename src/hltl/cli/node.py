@@ -1,4 +1,4 @@
-"""``hltl node``: run a part of the cell as a node on the Zenoh bus (the simulator for now)."""
+"""``hltl node``: run a part of the cell as a node on the Zenoh bus (simulator, perception)."""
 
 from __future__ import annotations
 
@@ -8,13 +8,21 @@ import threading
 from pathlib import Path
 from typing import Any
 
+from hltl.bus.node import CellNode, serve
+from hltl.bus.perception import serve_frames
+from hltl.bus.session import BusConfig, open_session
+from hltl.cli.perceive import frame_options
+from hltl.cli.sim3d import simulator_options
 from hltl.errors import HltlError
+from hltl.perception.frames import FrameFolder
+from hltl.perception.observe import Perceiver
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
     p: argparse.ArgumentParser = sub.add_parser(
         "node",
-        help="run the simulator as a node on the Zenoh bus",
+        help="run the simulator or the perception stage as a node on the Zenoh bus",
         description="Serve a part of the cell on the Zenoh bus (docs/bus.md): its robots, its "
         "camera and its simulated clock. An executor started with 'hltl run --bus zenoh' "
         "drives it. Loopback by default, multicast scouting off.",
@@ -58,14 +66,41 @@ def register(sub: Any) -> None:
         "--episodes", type=int, help="exit after serving this many episodes (default: run on)"
     )
     s.set_defaults(func=run_sim)
+    c = nsub.add_parser(
+        "perception",
+        help="the perception stage as a node: camera frames in, observations out",
+        description="Run the perception stage on a frame folder (camera.json, rgb/, depth/, "
+        "optional seg/: what 'hltl render' and the 3D simulator write, or a recorded RealSense "
+        "sequence) and publish each frame's objects and tracked people on "
+        "hltl/<cell>/perception, people as PoseStamped on hltl/<cell>/humans/<h>/pose. "
+        "'hltl run --bus zenoh --bus-perception zenoh' fuses them into the executor's world.",
+    )
+    frame_options(
+        c,
+        people_help="person detector (default: segmentation when the folder has seg/, else depth)",
+    )
+    c.add_argument("--cell", default="default", help="the cell's name in key expressions")
+    c.add_argument(
+        "--listen",
+        default="tcp/127.0.0.1:7448",
+        help="Zenoh endpoint to listen on (default: loopback tcp/127.0.0.1:7448); the executor "
+        "connects here",
+    )
+    c.add_argument(
+        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
+    )
+    c.add_argument("--realtime", action="store_true", help="pace frames by their time stamps")
+    c.add_argument(
+        "--wait",
+        type=float,
+        default=30.0,
+        help="seconds to wait for a subscriber before the first frame (default 30)",
+    )
+    c.set_defaults(func=run_perception)
 
 
 def run_sim(args: argparse.Namespace) -> int:
     from rich.console import Console
-
-    from hltl.bus.node import CellNode, serve
-    from hltl.bus.session import BusConfig, open_session
-    from hltl.world.scene import load_scene
 
     if args.episodes is not None and args.episodes < 1:
         raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
@@ -104,15 +139,52 @@ def run_sim(args: argparse.Namespace) -> int:
     return 0
 
 
+def run_perception(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    if not (args.wait >= 0):
+        raise HltlError(f"--wait must be a number of seconds >= 0, got {args.wait!r}")
+    folder = FrameFolder(args.frames)
+    scene = load_scene(args.scene) if args.scene is not None else None
+    has_seg = folder.frame(0).seg is not None
+    backend = args.backend or ("segmentation" if has_seg else "depth-clusters")
+    people = args.people or ("segmentation" if has_seg else "depth")
+    try:
+        perceiver = Perceiver(scene, folder.camera, backend, people)
+    except ValueError as exc:
+        raise HltlError(str(exc)) from None
+    console = Console(stderr=True, highlight=False)
+    config = BusConfig(listen=(args.listen,), connect=tuple(args.connect))
+    with open_session(config) as session:
+        console.print(
+            f"[bold]hltl node perception[/] {args.frames} ({backend}, people by {people}) on "
+            f"cell [cyan]{args.cell}[/], {args.listen}; waiting for a subscriber"
+        )
+        try:
+            stats = serve_frames(
+                session,
+                perceiver,
+                folder,
+                cell=args.cell,
+                realtime=args.realtime,
+                wait=args.wait,
+            )
+        except KeyboardInterrupt:
+            console.print("stopped")
+            return 0
+    console.print(f"published {stats.frames} frame(s), {stats.poses} person pose(s)")
+    return 0
+
+
 def _factory(args: argparse.Namespace, scene: Any) -> Any:
     """What makes each episode's world: the discrete-event simulator, or the 3D one."""
     if args.sim == "discrete":
-        from hltl.sim.simulator import Simulator
+        from hltl.sim.simulator import Simulator  # only the simulator asked for
 
         if args.motion:
             import functools
 
-            from hltl.motion.cost import motion_models
+            from hltl.motion.cost import motion_models  # the motion extra, only with --motion
 
             kinematics, cost = motion_models(scene)
             return functools.partial(Simulator, cost=cost, kinematics=kinematics)
@@ -122,7 +194,6 @@ def _factory(args: argparse.Namespace, scene: Any) -> Any:
             "--motion times the discrete simulator; the 3D simulator (--sim mujoco) always "
             "follows the joint trajectories it receives"
         )
-    from hltl.cli.sim3d import simulator_options
 
     extra, _ = simulator_options(scene, args.timing, None)  # compiles the model once, up front
     return extra["simulator"]

@@ -9,6 +9,24 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.perception.frames import FrameFolder
+from hltl.perception.language import Candidate, select
+from hltl.perception.observe import Perceiver
+from hltl.world.scene import load_scene
+
+
+def frame_options(p: argparse.ArgumentParser, *, people_help: str) -> None:
+    """Frame folder and backend options shared by ``perceive`` and ``node perception``."""
+    p.add_argument("frames", type=Path, metavar="FRAMES_DIR", help="frame folder")
+    p.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
+    p.add_argument(
+        "--backend",
+        choices=("segmentation", "depth-clusters"),
+        help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
+    )
+    p.add_argument(
+        "--people", choices=("segmentation", "depth", "fused", "yolo", "none"), help=people_help
+    )
 
 
 def register(sub: Any) -> None:
@@ -19,17 +37,10 @@ def register(sub: Any) -> None:
         "localise objects, track people and tie them to the scene's people. Prints the last "
         "frame's objects and people and what could not be decided.",
     )
-    p.add_argument("frames", type=Path, metavar="FRAMES_DIR", help="frame folder")
-    p.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
-    p.add_argument(
-        "--backend",
-        choices=("segmentation", "depth-clusters"),
-        help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
-    )
-    p.add_argument(
-        "--people",
-        choices=("segmentation", "depth", "fused", "yolo", "none"),
-        help="person detector for the tracker: depth = body columns on the floor plan, fused = "
+    frame_options(
+        p,
+        people_help="person detector for the tracker: depth = body columns on the floor plan, "
+        "fused = "
         "depth confirmed by YOLO every 10th frame (default: segmentation when the folder has "
         "seg/, else depth)",
     )
@@ -48,10 +59,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.perception.frames import FrameFolder
-    from hltl.perception.observe import Perceiver
-    from hltl.world.scene import load_scene
-
     folder = FrameFolder(args.frames)
     scene = load_scene(args.scene) if args.scene is not None else None
     has_seg = folder.frame(0).seg is not None
@@ -73,7 +80,7 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
          perceiver: Any) -> int:  # fmt: skip
     predictor = None
     if args.viz is not None and scene is not None:
-        from hltl.perception.predict import make_predictor
+        from hltl.perception.predict import make_predictor  # only with --viz
 
         predictor = make_predictor(args.predictor, scene)
     observations = []
@@ -83,7 +90,7 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
         if predictor is not None:
             predictor.observe(obs.t, [(p.person, p.position) for p in obs.people if p.person])
         if args.viz is not None:
-            from hltl.perception.overlay import draw_overlay
+            from hltl.perception.overlay import draw_overlay  # the viz extra (PIL), only with --viz
 
             args.viz.mkdir(parents=True, exist_ok=True)
             draw_overlay(frame, folder.camera, obs, predictor, perceiver).save(
@@ -113,8 +120,6 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
 
 
 def _select(words: str, obs: Any, scene: Any) -> Any:
-    from hltl.perception.language import Candidate, select
-
     cands = []
     for k, o in enumerate(obs.objects):
         ws = [o.label]

@@ -9,7 +9,10 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.bench.perception import evaluate_predictors
 from hltl.errors import HltlError
+from hltl.perception.evaluate import HORIZONS
+from hltl.perception.gru import SHIPPED, load_model, train
 
 
 def register(sub: Any) -> None:
@@ -44,8 +47,6 @@ def _positive(name: str, value: int) -> None:
 def run_train(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.progress import Progress
-
-    from hltl.perception.gru import SHIPPED, train
 
     _positive("walks", args.walks)
     _positive("epochs", args.epochs)
@@ -82,10 +83,6 @@ def run_train(args: argparse.Namespace) -> int:
 
 
 def run_eval(args: argparse.Namespace) -> int:
-    from hltl.bench.perception import evaluate_predictors
-    from hltl.perception.evaluate import HORIZONS
-    from hltl.perception.gru import load_model
-
     _positive("walks", args.walks)
     try:
         model = load_model(args.weights)

@@ -65,9 +65,13 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.planner import plan
-    from hltl.spec.hierarchy import spec_to_dict
-    from hltl.world.scene import load_scene
+    from hltl.planner import plan  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
+    from hltl.spec.hierarchy import (
+        spec_to_dict,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
+    )
+    from hltl.world.scene import (
+        load_scene,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
+    )
 
     if args.timeout is not None:
         check_option("--timeout", args.timeout, positive=True)
@@ -83,7 +87,9 @@ def run(args: argparse.Namespace) -> int:
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
     extra: dict[str, Any] = {}
     if args.motion:
-        from hltl.motion.cost import motion_models
+        from hltl.motion.cost import (
+            motion_models,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
+        )
 
         kinematics, cost = motion_models(scene)
         extra = {"kinematics": kinematics, "cost": cost}

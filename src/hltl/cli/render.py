@@ -7,6 +7,10 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.sim3d.camera import CameraRenderer, FrameWriter, intrinsics
+from hltl.sim3d.model import compile_scene, scene_cameras
+from hltl.sim3d.stage import Stage
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -33,11 +37,6 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rich.console import Console
-
-    from hltl.sim3d.camera import CameraRenderer, FrameWriter, intrinsics
-    from hltl.sim3d.model import compile_scene, scene_cameras
-    from hltl.sim3d.stage import Stage
-    from hltl.world.scene import load_scene
 
     scene = load_scene(args.scene)
     cams = scene_cameras(scene)

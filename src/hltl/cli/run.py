@@ -8,11 +8,24 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from hltl.bench.latency import DEFAULT_MODEL
 from hltl.cli.bus_options import add_bus_arguments
-from hltl.cli.common import check_option
+from hltl.cli.common import check_option, describe_action
 from hltl.errors import HltlError
 from hltl.execution import log as elog
+from hltl.execution.executor import Executor, ExecutorConfig
+from hltl.execution.latency import LatencyModel, load_latency_model
 from hltl.execution.log import LogRecord
+from hltl.grounding import make_grounder
+from hltl.grounding.base import check_instruction
+from hltl.motion.cost import motion_models
+from hltl.perception.predict import make_predictor
+from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.sim.events import load_events
+from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.skills.library import Action
+from hltl.spec.hierarchy import load_spec
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -98,16 +111,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.bench.latency import DEFAULT_MODEL
-    from hltl.execution.executor import ExecutorConfig
-    from hltl.execution.latency import LatencyModel, load_latency_model
-    from hltl.grounding import make_grounder
-    from hltl.grounding.base import check_instruction
-    from hltl.sim.episode import EpisodeConfig, run_episode
-    from hltl.sim.events import load_events
-    from hltl.sim.simulator import PerceptionModel
-    from hltl.world.scene import load_scene
-
     check_option("--max-time", args.max_time, positive=True)
     if args.instruction is not None:
         check_instruction(args.instruction, "--instruction")
@@ -135,11 +138,8 @@ def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     spec = None
     if args.spec is not None:
-        from hltl.spec.hierarchy import load_spec
-
         spec = load_spec(args.spec)
     events = load_events(args.events, scene) if args.events is not None else None
-    from hltl.perception.predict import make_predictor
 
     predictor = make_predictor(args.predictor, scene)
     timeline = None if args.json else Timeline(scene)
@@ -152,7 +152,9 @@ def run(args: argparse.Namespace) -> int:
     if args.sim == "mujoco":
         if args.motion:
             raise HltlError("--motion runs with the discrete simulator; drop --sim mujoco")
-        from hltl.cli.sim3d import simulator_options
+        from hltl.cli.sim3d import (
+            simulator_options,  # the sim3d extra (MuJoCo), only with --sim mujoco
+        )
 
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     grounder = make_grounder(args.grounder)
@@ -160,7 +162,7 @@ def run(args: argparse.Namespace) -> int:
         extra = _motion_options(scene, spec, config, predictor)
     bus = None
     if args.bus is not None:
-        from hltl.cli.bus_options import BusSimulator
+        from hltl.cli.bus_options import BusSimulator  # the bus extra (Zenoh), only with --bus
 
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
@@ -196,10 +198,6 @@ def run(args: argparse.Namespace) -> int:
 def _motion_options(scene: Any, spec: Any, config: Any, predictor: Any) -> dict[str, Any]:
     """``run_episode`` keywords that put the motion layer under the simulator and the executor."""
     import functools
-
-    from hltl.execution.executor import Executor
-    from hltl.motion.cost import motion_models
-    from hltl.sim.simulator import Simulator
 
     kinematics, cost = motion_models(scene)
 
@@ -239,8 +237,6 @@ class Timeline:
 
 def describe_record(scene: Any, rec: LogRecord) -> tuple[str, str] | None:
     """(style, text) for a log record worth showing, or None."""
-    from hltl.cli.common import describe_action
-    from hltl.skills.library import Action
 
     def act(d: dict[str, Any] | None) -> str:
         return "?" if d is None else describe_action(scene, Action.from_dict(d))

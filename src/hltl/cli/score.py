@@ -7,6 +7,11 @@ import json
 from pathlib import Path
 from typing import Any
 
+from hltl.cli.run import print_metrics
+from hltl.execution.log import read_log
+from hltl.sim.invariants import check_invariants
+from hltl.sim.metrics import compute_metrics
+
 
 def register(sub: Any) -> None:
     p: argparse.ArgumentParser = sub.add_parser(
@@ -22,11 +27,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.cli.run import print_metrics
-    from hltl.execution.log import read_log
-    from hltl.sim.invariants import check_invariants
-    from hltl.sim.metrics import compute_metrics
-
     records = read_log(args.log)
     metrics = compute_metrics(records).to_dict()
     problems = check_invariants(records)

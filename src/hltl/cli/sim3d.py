@@ -6,6 +6,10 @@ import functools
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from hltl.sim3d.driver import MujocoSimulator
+from hltl.sim3d.model import compile_scene
+from hltl.sim3d.record import FrameRecorder
+
 if TYPE_CHECKING:
     from hltl.sim3d.record import FrameRecorder
     from hltl.world.scene import Scene
@@ -17,16 +21,14 @@ def simulator_options(
     """``run_episode`` keywords for the 3D simulator (model compiled or loaded from the cache
     before the episode starts) and the frame recorder, if frames are wanted. ``perception``
     ``camera`` observes through the rendered camera (:mod:`hltl.sim3d.perceived`)."""
-    from hltl.sim3d.driver import MujocoSimulator
-    from hltl.sim3d.model import compile_scene
-    from hltl.sim3d.record import FrameRecorder
-
     model = compile_scene(scene)
     extra: dict[str, Any] = {
         "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
     }
     if perception == "camera":
-        from hltl.sim3d.perceived import CameraSimulator
+        from hltl.sim3d.perceived import (
+            CameraSimulator,  # the sim3d and perception extras, only for camera perception
+        )
 
         extra["simulator"] = functools.partial(CameraSimulator, timing=timing, model=model)
     recorder = None

@@ -7,6 +7,11 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.motion.handover import optimise_r2r
+from hltl.motion.planning import Cell
+from hltl.viz.arms3d import render_arms
+from hltl.viz.render import RenderOptions, render_file
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -57,8 +62,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.viz.render import RenderOptions, render_file
-
     if args.arms is not None:
         print(_arms(args))
         return 0
@@ -79,11 +82,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _arms(args: argparse.Namespace) -> Path:
-    from hltl.motion.handover import optimise_r2r
-    from hltl.motion.planning import Cell
-    from hltl.viz.arms3d import render_arms
-    from hltl.world.scene import load_scene
-
     cell = Cell(load_scene(args.file))
     out = args.output or Path(f"{args.file.stem}-arms.png")
     if out.suffix not in (".png", ".svg"):

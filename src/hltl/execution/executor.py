@@ -11,10 +11,9 @@ predicted-plan cache (:mod:`~hltl.execution.predicted`) and the decision state m
 
 from __future__ import annotations
 
-import enum
 import itertools
 import time
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -62,8 +61,10 @@ from hltl.execution.safety import (
     precondition_hazard,
     step_conflict,
 )
+from hltl.execution.tick import ExecStatus as ExecStatus  # its historical home
+from hltl.execution.tick import TickTemplate
 from hltl.fileio import quote
-from hltl.planner import PlanResult, PlanStatus, PlanStep
+from hltl.planner import PlanResult, PlanStatus, PlanStep, plan
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
@@ -108,8 +109,6 @@ class ExactPlanner:
         monitor: HierarchyMonitor,
         q0: MonitorState,
     ) -> PlanResult:
-        from hltl.planner import plan
-
         return plan(
             scene,
             spec,
@@ -186,12 +185,6 @@ class ExecutorConfig:
             raise ValueError(f"anticipate_votes must be in [0, 1], got {self.anticipate_votes!r}")
 
 
-class ExecStatus(enum.Enum):
-    RUNNING = "running"
-    DONE = "done"
-    GAVE_UP = "gave_up"
-
-
 @dataclass(slots=True)
 class _Running:
     action: Action
@@ -205,7 +198,7 @@ class _Running:
     aimed_at: Vec3 | None = None  # a pick's object position at dispatch: its grasp target
 
 
-class Executor:
+class Executor(TickTemplate):
     """Receding-horizon execution of an H-LTLf spec with reactive safety and predictive takeover.
 
     Args:
@@ -324,37 +317,23 @@ class Executor:
             self.status = ExecStatus.RUNNING
             self.reason = ""
 
-    def update(
-        self,
-        t: float,
-        observation: WorldState | None = None,
-        updates: Iterable[SpecUpdate] = (),
-    ) -> None:
-        """One tick of the loop at time ``t``.
+    # -- the tick's steps (TickTemplate.update runs them in order) -------------------------------
 
-        Args:
-            t: the time now (seconds since the start of the episode; never decreasing).
-            observation: the latest perceived world (its ``t`` is when it was sensed).
-            updates: instructions given since the last tick, grounded.
-        """
+    def _sense(self, t: float, observation: WorldState | None) -> None:
         if t < self.t - 1e-9:
             raise ValueError(f"time went back from {self.t} to {t}")
         self.t = t
         if observation is not None:
             self._observe(observation)
         self._refresh_availability()
-        self._poll()
-        for upd in updates:
-            self.assign(t, upd)
-        if self.status is ExecStatus.GAVE_UP:
-            return
-        if self._running:
-            if all(r.status is not None for r in self._running):
-                self._end_step()
-            else:
-                self._check_safety()
-        if self._stopped():
-            return
+
+    def _step_running(self) -> bool:
+        return bool(self._running)
+
+    def _step_ended(self) -> bool:
+        return all(r.status is not None for r in self._running)
+
+    def _act(self) -> None:
         self._background()
         self._decide()
 
@@ -374,9 +353,6 @@ class Executor:
         cost = model.grounding(update.latency_ms / 1000.0)
         self._charge(cost)
         return round(cost, 6)
-
-    def _stopped(self) -> bool:
-        return self.status is ExecStatus.GAVE_UP
 
     def give_up(self, reason: str) -> None:
         """Stop the episode from outside (e.g. a time limit): halt everything, log why."""

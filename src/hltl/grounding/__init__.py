@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from hltl.errors import GroundingError
 from hltl.grounding.base import Grounder, Grounding, TokenUsage, UpdateInfo, scene_graph
 
 GROUNDERS = ("offline", "llm", "local")
@@ -31,18 +32,20 @@ def make_grounder(name: str = "offline", **options: Any) -> Grounder:
         BackendUnavailableError: the backend's optional dependency is missing (``llm``, ``local``
             say so when they are first used).
     """
-    from hltl.errors import GroundingError
-
     if name == "offline":
-        from hltl.grounding.offline import OfflineGrounder
+        from hltl.grounding.offline import (
+            OfflineGrounder,  # only the grounder asked for is imported
+        )
 
         return OfflineGrounder(**options)
     if name == "llm":
-        from hltl.grounding.llm import LLMGrounder
+        from hltl.grounding.llm import LLMGrounder  # only the grounder asked for (the llm extra)
 
         return LLMGrounder(**options)
     if name == "local":
-        from hltl.grounding.local import LocalGrounder
+        from hltl.grounding.local import (
+            LocalGrounder,  # only the grounder asked for (the local extra)
+        )
 
         return LocalGrounder(**options)
     raise GroundingError(f"unknown grounder {name!r}; expected one of {', '.join(GROUNDERS)}")

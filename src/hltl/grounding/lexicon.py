@@ -173,6 +173,24 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("never", "mind"): "cancel",
     ("no", "longer"): "cancel",
     ("do", "not"): "not",
+    # "the apple should end up on the shelf": where it goes
+    ("end", "up"): "verb:go",
+    ("ends", "up"): "verb:go",
+    ("ended", "up"): "verb:go",
+    ("wind", "up"): "verb:go",
+    # "…, actually make that Carol": a correction naming the replacement
+    ("make", "that"): "correct",
+    ("make", "it"): "correct",
+    # "a mug, doesn't matter which": the choice is already an "or"
+    ("does", "n't", "matter", "which"): "whichever",
+    ("it", "does", "n't", "matter", "which"): "whichever",
+    ("does", "n't", "matter"): "whichever",
+    ("it", "does", "n't", "matter"): "whichever",
+    ("no", "matter", "which"): "whichever",
+    ("any", "will", "do"): "whichever",
+    ("either", "will", "do"): "whichever",
+    ("either", "is", "fine"): "whichever",
+    ("any", "is", "fine"): "whichever",
     ("pick", "up"): "verb:pick",
     ("picks", "up"): "verb:pick",
     ("picking", "up"): "verb:pick",
@@ -243,8 +261,8 @@ for _p, _q in {
     "either of the": "q:some",
     "any one of the": "q:some",
     "either one of the": "q:some",
-    "both of the": "q:all",
-    "both of": "q:all",
+    "both of the": "q:both",
+    "both of": "q:both",
     "all of the": "q:all",
     "all the": "q:all",
     "each of the": "q:all",
@@ -270,6 +288,9 @@ for _p, _q in {
     "the same goes for": "same",
 }.items():
     PHRASES[tuple(_p.split())] = _q
+
+# words naming any object: "the two things", "all four objects" ("the thing" is ambiguous)
+GENERIC_NOUNS = ("thing", "object", "item")
 
 MAX_PHRASE = max(len(p) for p in PHRASES)
 # every word of a multi-word keyword: never taken for a misspelt scene name
@@ -373,6 +394,9 @@ WORDS: dict[str, str] = {
     "thanks": "filler",
     "thank": "filler",
     "thx": "filler",
+    "thnx": "filler",
+    "thanx": "filler",
+    "ty": "filler",
     "cheers": "filler",
     "pls": "filler",
     "plz": "filler",
@@ -417,6 +441,8 @@ WORDS: dict[str, str] = {
     "except": "except",
     # subjects and auxiliaries, skipped ("after you have given …", "once the cup is on …")
     "you": "subject",
+    "u": "subject",  # texting: "can u put …"
+    "ya": "subject",
     "we": "subject",
     "they": "subject",
     "is": "aux",
@@ -568,6 +594,8 @@ class Lexicon:
                 self._add(Ref("object", o.id), name, plurals=True)
             if o.category not in (o.id, *o.aliases):
                 self._add(Ref("object", o.id), o.category, plurals=True, strong=False)
+            for noun in GENERIC_NOUNS:  # "both things", "all four objects": any object
+                self._add(Ref("object", o.id), noun, plurals=True, strong=False)
         for h in scene.humans:
             for name in dict.fromkeys((h.id, h.name, *h.aliases, f"person {h.id}")):
                 self._add(Ref("human", h.id), name, plurals=False)
@@ -577,6 +605,18 @@ class Lexicon:
         for r in scene.robots:
             self._add(Ref("robot", r.id), r.id, plurals=False)
         self.max_len = max((len(p) for p in self._phrases), default=1)
+
+    @staticmethod
+    def of(scene: Scene) -> Lexicon:
+        """The lexicon of ``scene``, shared by scenes with the same names (it is read-only, and
+        building it is most of a grounding's time)."""
+        key = (
+            tuple((o.id, o.category, tuple(o.aliases)) for o in scene.objects),
+            tuple((h.id, h.name, tuple(h.aliases)) for h in scene.humans),
+            tuple((s.id, tuple(s.aliases)) for s in scene.surfaces),
+            tuple(r.id for r in scene.robots),
+        )
+        return _lexicon(key, scene)
 
     def _add(self, ref: Ref, name: str, *, plurals: bool, strong: bool = True) -> None:
         if len(name) == 1 and name.isalpha():
@@ -684,6 +724,19 @@ class Lexicon:
             if h.id == ref_id:
                 return h.name
         return ref_id
+
+
+_LEXICONS: dict[object, Lexicon] = {}
+
+
+def _lexicon(key: object, scene: Scene) -> Lexicon:
+    """The cached lexicon for ``key`` (a scene's names), built from ``scene`` the first time."""
+    found = _LEXICONS.get(key)
+    if found is None:
+        if len(_LEXICONS) >= 64:
+            _LEXICONS.pop(next(iter(_LEXICONS)))  # the oldest
+        found = _LEXICONS[key] = Lexicon(scene)
+    return found
 
 
 @functools.cache

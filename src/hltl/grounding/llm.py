@@ -301,7 +301,9 @@ class LLMGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
         if running is not None:
-            from hltl.grounding.update import ground_update
+            from hltl.grounding.update import (
+                ground_update,  # import cycle: grounding.update imports this module
+            )
 
             return ground_update(instruction, scene, running, self)
         client = self.client

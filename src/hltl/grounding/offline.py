@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Literal
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, foreign_words, lex
-from hltl.grounding.phrasing import refine
+from hltl.grounding.phrasing import first_refs, refine
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -40,6 +40,7 @@ from hltl.grounding.tree import (
     normalise,
     tasks,
 )
+from hltl.spec.hierarchy import spec_from_dict
 
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
@@ -57,7 +58,9 @@ class OfflineGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (see update.py)."""
         if running is not None:
-            from hltl.grounding.update import ground_update
+            from hltl.grounding.update import (
+                ground_update,  # import cycle: grounding.update imports this module
+            )
 
             return ground_update(instruction, scene, running, self)
         node = parse_instruction(instruction, scene)
@@ -66,8 +69,6 @@ class OfflineGrounder:
 
 def spec_of(node: Node) -> HSpec:
     """The H-LTLf spec of a task tree, validated by the spec module."""
-    from hltl.spec.hierarchy import spec_from_dict
-
     formulas = encode(node)
     return spec_from_dict({"root": "p0", "formulas": formulas}, source="<grounding>")
 
@@ -78,7 +79,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
     """
-    lexicon = lexicon or Lexicon(scene)
+    lexicon = lexicon or Lexicon.of(scene)
     items = lex(text, lexicon)
     shown = text.strip() if len(text.strip()) <= 60 else text.strip()[:57] + "..."
     if not [it for it in items if it.kind != "punct"]:
@@ -95,6 +96,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
             "(English words only)"
         )
     items = refine(items, lexicon)
+    items, first = first_refs(items)
     _refuse(items, lexicon)
     parser = _Parser(lexicon)
     raw = parser.instruction(items)
@@ -102,6 +104,8 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     if node is None:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
     node = _dedupe(normalise(parser.expand(node, frozenset())))
+    if first:
+        node = _move_first(node, first, lexicon)
     check_deliveries(node, {h.id: h.name for h in scene.humans})
     return node
 
@@ -460,6 +464,13 @@ class _Parser:
                     break  # "give Bob either X or Y, or Z to Carol": Bob's objects end there
             ops.append(seps[k - 1])
         if bracket == "both" and len(children) == 1 and _plural(children[0]):
+            only = children[0]
+            assert isinstance(only, _Frag) and only.objects is not None
+            if len(only.objects) != 2:
+                raise GroundingError(
+                    f"'both' in {_text(items)!r}, but the scene has {len(only.objects)} of "
+                    f"them ({', '.join(only.objects)}): name the two"
+                )
             return children[0], k  # "put both mugs on the table"
         if word is not None and (len(children) < 2 or word not in ops):
             raise GroundingError(f"{bracket!r} without {word!r} in {_text(items)!r}")
@@ -527,6 +538,7 @@ class _Parser:
         if (
             len(units) > 3
             and units[0].kind == "ent"
+            and all(r.kind == "human" for r in units[0].refs)
             and _is_verb(units[1])
             and VERB_CLASS[_lemma(units[1])] == "possess"
             and any(_is_verb(u) for u in units[2:])
@@ -893,6 +905,36 @@ def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:
                 f"in {_text(items)!r} it is unclear where the {conn!r} part ends: put it first "
                 f"('{conn} …, …') or split the sentence"
             )
+
+
+def _move_first(node: Node, first: tuple[str, ...], lexicon: Lexicon) -> Node:
+    """'Hand Bob the chips and Carol the bottle, but do Carol first': Carol's tasks, then the
+    rest. Only a list of tasks can be reordered, and only by tasks that name them all."""
+    name = ", ".join(lexicon.display(i) for i in first)
+    kids = node.children if isinstance(node, Group) and node.op == "and" else (node,)
+    if isinstance(node, Group) and node.op != "and":
+        raise GroundingError(
+            f"'{name} first': the instruction already orders or chooses its tasks; say the "
+            "order in full"
+        )
+
+    def names(n: Node) -> list[bool]:
+        return [bool({t.obj, t.target} & set(first)) for t in tasks(n)]
+
+    marks = [names(c) for c in kids]
+    if any(any(m) and not all(m) for m in marks):
+        raise GroundingError(f"'{name} first' splits a group of tasks; say the order in full")
+    head = [c for c, m in zip(kids, marks, strict=True) if all(m)]
+    rest = [c for c, m in zip(kids, marks, strict=True) if not all(m)]
+    if not head:
+        raise GroundingError(f"'{name} first': no task names {name}")
+    if not rest:
+        return node
+
+    def join(parts: list[Node]) -> Node:
+        return parts[0] if len(parts) == 1 else Group("and", tuple(parts))
+
+    return normalise(Group("seq", (join(head), join(rest))))
 
 
 def _substitute(node: Node, chosen: dict[str, str]) -> Node:

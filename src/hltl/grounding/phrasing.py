@@ -48,6 +48,7 @@ def _humans(item: Item) -> bool:
 def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
     items = _questions(items)
+    items = _after_all(items)
     items = _whichever(items)
     items = _one_anaphora(items, lexicon)
     items = _demonstratives(items)
@@ -56,6 +57,7 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     items = _exclusions(items)
     items = _speaker(items, lexicon)
     items = _persons(items, lexicon)
+    items = _remarks(items)
     items = _datives(items)
     return items
 
@@ -102,6 +104,97 @@ def _questions(items: list[Item]) -> list[Item]:
                 "'give Bob the chips' or 'put the cup on the shelf'"
             )
     return items
+
+
+_DONE_WORDS = frozenset({"done", "finished", "complete", "completed", "over", "there", "through"})
+
+
+def _after_all(items: list[Item]) -> list[Item]:
+    """'…, and after both, give B the chips', 'once those are done, …': then."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        j = k + 1
+        if _is(it, "after", "once") and j < len(items):
+            low = items[j].text.lower()
+            if low in ("both", "those", "these", "them", "all") and items[j].kind == "word":
+                j += 1
+                if low == "all" and j < len(items) and items[j].text.lower() == "that":
+                    j += 1  # "after all that"; "after all" alone is an idiom, not a step
+                while j < len(items) and (
+                    _is(items[j], "aux", "filler", "verb:have")
+                    or items[j].text.lower() in _DONE_WORDS
+                    or items[j].lemma in ("verb:give", "verb:hand", "verb:deliver", "verb:put")
+                    or items[j].lemma in ("verb:place", "verb:bring")
+                ):
+                    j += 1
+                ends = j >= len(items) or (
+                    items[j].kind == "punct" or items[j].lemma.startswith("verb:")
+                )
+                if ends and (low != "all" or j > k + 2):
+                    out.append(Item("word", "then", " ".join(x.text for x in items[k:j])))
+                    k = j
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
+def _remarks(items: list[Item]) -> list[Item]:
+    """'Carol's thirsty, can you hand her the bottle?': a remark about a person, no task.
+
+    A person, 'is'/''s', then words the grammar does not know, up to a comma or the end of the
+    sentence, with a request after it: the remark is dropped (the person pronouns in the request
+    were resolved before this pass).
+    """
+    k = 0
+    while k < len(items):
+        at_start = k == 0 or (items[k - 1].kind == "punct")
+        if at_start and _humans(items[k]) and k + 2 < len(items):
+            j = k + 1
+            if items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
+                j += 1
+                n = j
+                while n < len(items) and (items[n].kind == "unknown" or _is(items[n], "det")):
+                    n += 1
+                said = any(x.kind == "unknown" for x in items[j:n])
+                if said and n < len(items) and items[n].kind == "punct":
+                    rest = items[n + 1 :]
+                    if any(x.kind == "ent" for x in rest):
+                        items = items[:k] + rest
+                        continue
+        k += 1
+    return items
+
+
+def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
+    """'…, but do Carol first', 'Bob first.': the tasks naming them go first.
+
+    Only at the end of the instruction, and only names said before (a new name is a new task,
+    as in 'X, but give Y the cup first'). Returns the items without it and the ids named.
+    """
+    end = len(items)
+    while end > 0 and (_is(items[end - 1], "filler") or items[end - 1].kind == "punct"):
+        end -= 1
+    if end < 3 or not _is(items[end - 1], "first") or items[end - 2].kind != "ent":
+        return items, ()
+    name = items[end - 2]
+    k = end - 2
+    while k > 0 and _is(items[k - 1], "det"):
+        k -= 1
+    if k > 0 and (_is(items[k - 1], "do") or items[k - 1].lemma == "verb:serve"):
+        k -= 1
+    if k == 0 or not (items[k - 1].kind == "punct" or _is(items[k - 1], "and")):
+        return items, ()
+    before = items[:k]
+    while before and (before[-1].kind == "punct" or _is(before[-1], "and", "filler")):
+        before.pop()
+    said = {r.id for x in before if x.kind == "ent" for r in x.refs}
+    ids = tuple(dict.fromkeys(r.id for r in name.refs))
+    if not before or len(ids) != 1 or not set(ids) <= said:
+        return items, ()
+    return before, ids
 
 
 def _whichever(items: list[Item]) -> list[Item]:
@@ -222,6 +315,15 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.append(replace(prev, text="the other"))
             k += 1
             continue
+        if (
+            it.kind == "word"
+            and it.text.lower() == "all"
+            and k + 2 < len(items)
+            and _quant_word(items[k + 1])[0] == "num"
+            and any(_objects(x) for x in items[k + 2 : k + 4])
+        ):
+            k += 1  # "all four objects": the number says how many, and is checked
+            continue
         quant, count = _quant_word(it)
         if quant and it.text.lower() == "either":
             nxt = items[k + 1] if k + 1 < len(items) else None
@@ -262,6 +364,8 @@ def _quant_word(it: Item) -> tuple[str, int]:
     low = it.text.lower()
     if it.lemma == "q:some" or low in ("a", "an", "either"):
         return "some", 1
+    if it.lemma == "q:both":
+        return "num", 2  # "both of the mugs": there must be two
     if it.lemma == "q:all" or low in ("all", "every", "each"):
         return "all", 0
     if low == "one":
@@ -292,8 +396,35 @@ def _quantify(target: Item, quant: str, count: int, words: str, lexicon: Lexicon
     return replace(target, text=words, quant=quant, group=at if quant == "some" else -1)
 
 
+def _instead(items: list[Item]) -> list[Item]:
+    """'Give Bob the chips. Actually, give them to Alice instead.': a correction.
+
+    'instead' ending a sentence after the first, or after a correction marker in its own
+    sentence, corrects what came before (without a running spec there is nothing else it could
+    replace); the first sentence alone keeps it, and is refused.
+    """
+    for start, end in reversed(_sentences(items)):
+        stop = end
+        while stop > start and _is(items[stop - 1], "filler"):
+            stop -= 1
+        if stop <= start or not _is(items[stop - 1], "instead"):
+            continue
+        marked = any(_is(x, "correct") for x in items[start : stop - 1])
+        if not marked and start == 0:
+            continue
+        body = items[start : stop - 1]
+        while body and _is(body[-1], ","):
+            body.pop()
+        opens = next((x for x in items[start:stop] if not _is(x, "filler", ",")), None)
+        leads = not marked or (opens is not None and _is(opens, "correct"))
+        lead = [Item("word", "correct", "instead")] if leads and start > 0 else []
+        items = items[:start] + lead + body + items[stop:]
+    return items
+
+
 def _corrections(items: list[Item]) -> list[Item]:
     """'X, no, Y' / 'X — sorry, I mean Y': Y replaces the last name of its kind (or the clause)."""
+    items = _instead(items)
     k = 0
     while k < len(items):
         it = items[k]
@@ -333,7 +464,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                     or (after[r + 1].kind == "punct" and after[r + 1].lemma in _END)
                 )
             )
-            said_no = any(x.text.lower() == "no" for x in items[k:j])
+            said_no = any(x.text.lower() in ("no", "instead") for x in items[k:j])
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
             elif after:
@@ -372,7 +503,7 @@ def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> li
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
                 break
-            if _is(x, "it", "them"):
+            if _is(x, "it", "them") or (x.lemma == "pronoun" and x.text.lower() == "them"):
                 if not moved:
                     raise GroundingError(f"{x.text!r} after {marker.text!r} refers to nothing")
                 rest[m : m + 1] = _joined(moved)

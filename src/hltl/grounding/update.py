@@ -31,7 +31,7 @@ from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from hltl.errors import GroundingError
+from hltl.errors import GroundingError, SpecValidationError
 from hltl.fileio import quote
 from hltl.grounding.base import Grounder, Grounding, TokenUsage, UpdateInfo
 from hltl.grounding.lexicon import Lexicon, lex
@@ -45,9 +45,13 @@ from hltl.grounding.tree import (
     recognise_group,
     recognise_task,
 )
+from hltl.spec.automata import rename_atoms
+from hltl.spec.hierarchy import spec_from_dict
 
 # carry_over moved to hltl.spec.monitor (a monitor operation); the old import path still works
 from hltl.spec.monitor import carry_over as carry_over
+from hltl.spec.printer import to_string
+from hltl.spec.syntax import Atom
 
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
@@ -134,8 +138,6 @@ class _Tree:
 
     @classmethod
     def of(cls, spec: HSpec) -> _Tree:
-        from hltl.spec.printer import to_string
-
         return cls(
             root=spec.root,
             texts={n: to_string(f) for n, f in spec.formulas},
@@ -229,8 +231,6 @@ def _subtree(tree: _Tree, name: str) -> list[str]:
 def _op_of(spec: HSpec, name: str) -> Op:
     found = recognise_group(spec.formula(name))
     if found is None:
-        from hltl.spec.printer import to_string
-
         raise GroundingError(
             f"cannot edit {name}: '{to_string(spec.formula(name))}' is not a conjunction, "
             "alternative or sequence of its children"
@@ -243,10 +243,6 @@ def _op_of(spec: HSpec, name: str) -> Op:
 
 def _renamed(new: HSpec, names: Names) -> tuple[str, dict[str, str]]:
     """The new spec's formulas under fresh names; a root that only wraps one child is dropped."""
-    from hltl.spec.automata import rename_atoms
-    from hltl.spec.printer import to_string
-    from hltl.spec.syntax import Atom
-
     top = new.root
     kids = new.children[top]
     found = recognise_group(new.formula(top))
@@ -305,9 +301,6 @@ def merge(
 
 
 def _build(root: str, formulas: dict[str, str]) -> HSpec:
-    from hltl.errors import SpecValidationError
-    from hltl.spec.hierarchy import spec_from_dict
-
     try:
         return spec_from_dict({"root": root, "formulas": formulas}, source="<update>")
     except SpecValidationError as exc:  # pragma: no cover - the edits keep the conventions
@@ -315,8 +308,6 @@ def _build(root: str, formulas: dict[str, str]) -> HSpec:
 
 
 def _info(kind: str, running: HSpec, spec: HSpec, completed: Collection[str]) -> UpdateInfo:
-    from hltl.spec.printer import to_string
-
     old = {n: to_string(f) for n, f in running.formulas}
     new = {n: to_string(f) for n, f in spec.formulas}
     kept = tuple(n for n in spec.names if old.get(n) == new[n])
@@ -408,7 +399,7 @@ def _check_not_dropped(result: Grounding, done: frozenset[str]) -> None:
 def _apply(
     instruction: str, scene: Scene, running: HSpec, grounder: Grounder, done: frozenset[str]
 ) -> Grounding:
-    lexicon = Lexicon(scene)
+    lexicon = Lexicon.of(scene)
     cmd = classify(instruction, lexicon)
     if cmd.kind in ("add", "then", "first"):
         if not cmd.text.strip():
@@ -484,8 +475,6 @@ def _priority(running: HSpec, hits: Sequence[str], done: frozenset[str]) -> Grou
 
 
 def _running_text(spec: HSpec, name: str) -> str:
-    from hltl.spec.printer import to_string
-
     return to_string(spec.formula(name))
 
 

@@ -8,6 +8,9 @@ from typing import TYPE_CHECKING, Any
 
 from hltl.errors import GroundingError, HltlError
 from hltl.grounding.tree import check_deliveries, decode
+from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.monitor import HierarchyMonitor
+from hltl.spec.printer import atoms_in_order
 
 if TYPE_CHECKING:
     from hltl.spec.hierarchy import HSpec
@@ -43,8 +46,6 @@ def check_answer(text: str | None, scene: Scene) -> tuple[HSpec, tuple[str, ...]
             unsatisfiable, or an object handed over twice.
         ModelDeclined: the answer's ``error`` field is set.
     """
-    from hltl.spec.hierarchy import spec_from_dict
-
     if not text or not text.strip():
         raise AnswerError("the answer is empty; expected a JSON object")
     try:
@@ -114,8 +115,6 @@ def check_entities(spec: HSpec, scene: Scene) -> tuple[str, ...]:
     Raises:
         AnswerError: naming the atom, the argument and what the scene has.
     """
-    from hltl.spec.printer import atoms_in_order
-
     kinds = {
         "object": scene.object_ids,
         "human": scene.human_ids,
@@ -148,8 +147,6 @@ def root_can_accept(spec: HSpec) -> bool:
     With more than ``MAX_ATOMS_SEARCHED`` atoms this returns True: the spec module's per-formula
     checks (satisfiable with one-shot children) are then what stands.
     """
-    from hltl.spec.monitor import HierarchyMonitor
-
     monitor = HierarchyMonitor(spec)
     props = sorted(monitor.atoms)
     if len(props) > MAX_ATOMS_SEARCHED:

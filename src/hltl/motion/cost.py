@@ -93,15 +93,17 @@ class MotionCostModel:
             (rid, _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base)))
             for rid in action.robots
         )
-        key = (action, start)
+        human_at = None
+        if action.human is not None and self.humans is not None:
+            human_at = self.humans.get(action.human)
+        # where the person stands shapes a hand-over's motion: part of the key, or the plan a
+        # query made for the person elsewhere would be reused
+        key = (action, start) if human_at is None else (action, (*start, ("@", _round(human_at))))
         if key not in self.plans:
             q = {rid: self._config(rid, p) for rid, p in start}
             where = None
             if action.skill == "pick":
                 where = transition.hands[0][1]
-            human_at = None
-            if action.human is not None and self.humans is not None:
-                human_at = self.humans.get(action.human)
             self.plans[key] = plan_action(
                 self.cell, action, q, where=where, human_at=human_at, k=self.candidates
             )

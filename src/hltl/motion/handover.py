@@ -191,21 +191,44 @@ def optimise_r2r(
     return HandoverResult(None, reason, sphere, tuple(cands), tried, time.perf_counter() - t0)
 
 
+def ik_with_line(
+    arm: Arm, tool: FloatArray, rot: FloatArray, q_now: Joints, offset: FloatArray
+) -> tuple[tuple[float, ...], list[tuple[float, ...]]] | str:
+    """IK for a tool pose whose straight line by ``offset`` (approach or retreat) the tool can
+    follow on the same branch, clear of the table: the configuration and the line, or the IK's
+    reason for failing."""
+    lines: dict[tuple[float, ...], list[tuple[float, ...]]] = {}
+
+    def usable(q: FloatArray) -> bool:
+        line = arm.ik_line(q, offset)
+        if line is None or not all(arm.pose_clear(x) for x in line[1:]):
+            return False
+        lines[tuple(float(v) for v in q)] = line
+        return True
+
+    res = arm.ik(tool, rot, q_now, starts=10, prefer=q_now, solutions=4, accept=usable)
+    if res.q is None:
+        return str(res.reason)
+    return res.q, lines[res.q]
+
+
 def _arm_goal(
     arm: Arm, grasp: Grasp, centre: FloatArray, q_now: FloatArray, approach_offset: float
 ) -> tuple[ArmGoal | None, str]:
-    """IK for the grasp pose and for the pose ``approach_offset`` along the approach vector."""
+    """IK for the grasp pose, and the straight line ``approach_offset`` along the approach vector.
+
+    The grasp configuration must be clear of the table (and of the arm itself), and the tool
+    must be able to move along the approach line from it on the same IK branch: a pre-grasp or
+    retreat pose on another branch would make the short approach a wide swing.
+    """
     tool = centre + np.asarray(grasp.offset)
     rot = rotation_z_to(grasp.approach, (0.0, 0.0, -1.0))
-    res = arm.ik(tool, rot, q_now, starts=8, prefer=q_now)
-    if res.q is None:
-        return None, f"no IK at the handover pose ({res.reason})"
-    back = tool + np.asarray(grasp.approach) * approach_offset
-    res2 = arm.ik(back, rot, res.q, starts=6, prefer=res.q)
-    if res2.q is None:
-        return None, f"no IK at the approach/retreat pose ({res2.reason})"
+    found = ik_with_line(arm, tool, rot, q_now, np.asarray(grasp.approach) * approach_offset)
+    if isinstance(found, str):
+        return None, f"no IK at the handover pose ({found})"
+    q, line = found
     rows = tuple((float(r[0]), float(r[1]), float(r[2])) for r in rot)
-    return ArmGoal(arm.robot, grasp, _v(tool), rows, res.q, res2.q), ""
+    return ArmGoal(arm.robot, grasp, _v(tool), rows, q, line[-1]), ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -244,22 +267,20 @@ def plan_r2h(
         p = zone[i]
         approach = -facing  # the hand comes towards the person's front
         rot = rotation_z_to(approach, (0.0, 0.0, -1.0))
-        res = arm.ik(p, rot, q0, starts=8, prefer=q0)
-        if res.q is None:
-            reason = f"no IK in the comfort zone ({res.reason})"
+        found = ik_with_line(arm, p, rot, q0, -approach * PRE_HANDOVER)
+        if isinstance(found, str):
+            reason = f"no IK in the comfort zone with a clear approach ({found})"
             continue
-        pre = arm.ik(p - approach * PRE_HANDOVER, rot, res.q, starts=6, prefer=res.q)
-        if pre.q is None:
-            reason = f"no IK at the pre-handover pose ({pre.reason})"
-            continue
+        q, line = found
+        q_pre = line[-1]
         d = min(
-            min_distance(arm.capsules(res.q), body)[0],
-            min_distance(arm.capsules(pre.q), body)[0],
+            min_distance(arm.capsules(q), body)[0],
+            min_distance(arm.capsules(q_pre), body)[0],
         )
         if d < PERSON_MARGIN:
             reason = f"the arm would pass {d:.2f} m from the person's body"
             continue
-        return R2HTarget(_v(p), _v(approach), res.q, pre.q, d), ""
+        return R2HTarget(_v(p), _v(approach), q, q_pre, d), ""
     return None, reason
 
 

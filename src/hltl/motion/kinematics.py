@@ -22,8 +22,12 @@ OUT_OF_REACH = "out_of_reach"
 JOINT_LIMIT = "joint_limit"
 COLLISION = "collision"
 
-# Height (m above the base plane) no link may go below: the table the arm is mounted on.
-TABLE_CLEARANCE = -0.02
+# How far (m) a link's collision capsule may dip into the table top: the capsules are rounded
+# stand-ins for boxy links and hands, so a grasp at table level may graze the plane a little.
+TABLE_TOLERANCE = 0.01
+# Extra travel time (s) an elbow-down IK solution must save to be preferred over an elbow-up one:
+# elbow-down poses sweep the forearm low over the table and the objects on it.
+ELBOW_DOWN_PENALTY = 1.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -162,16 +166,78 @@ class Arm:
         out.append(Capsule(_t(pts[-2]), _t(palm), self.spec.hand_radius, "hand"))
         return out
 
-    def above_table(self, q: Joints) -> bool:
-        """True when every joint beyond the shoulder and the tool stay above the mounting plane."""
+    def table_clearance(self, q: Joints) -> float:
+        """Signed distance (m) from the table top to the lowest link surface (capsules beyond the
+        base); negative when a link passes into the table."""
+        caps = self.capsules(q)[1:]
+        return min(min(c.a[2], c.b[2]) - c.radius for c in caps) - float(self.base[2])
+
+    def pose_clear(self, q: Joints) -> bool:
+        """The arm alone is in a valid pose: clear of the table top (:meth:`above_table`)."""
+        return self.above_table(q)
+
+    def elbow_up(self, q: Joints) -> bool:
+        """True when the elbow sits above the line from the shoulder to the wrist.
+
+        The elbow is the joint farthest from that line (Elfin-3 joint 3, UR5 elbow, Panda joint 4);
+        the wrist is the last joint origin.
+        """
         pts = self.joint_positions(q)
-        floor = self.base[2] + TABLE_CLEARANCE
-        return all(p[2] >= floor for p in pts[2:])
+        shoulder, wrist = pts[1], pts[-2]
+        axis = wrist - shoulder
+        n = float(np.dot(axis, axis))
+        best, above = -1.0, True
+        for p in pts[2:-2]:
+            s = float(np.dot(p - shoulder, axis)) / n if n > 1e-12 else 0.0
+            foot = shoulder + axis * min(max(s, 0.0), 1.0)
+            d = float(np.linalg.norm(p - foot))
+            if d > best:
+                best, above = d, bool(p[2] >= foot[2] - 1e-6)
+        return above
+
+    def travel_time(self, q_from: Joints, q_to: Joints) -> float:
+        """Lower bound (s) on moving between two configurations: the slowest joint at its
+        velocity limit."""
+        dq = np.abs(np.asarray(q_to, dtype=float) - np.asarray(q_from, dtype=float))
+        return float(np.max(dq / self.max_velocity))
+
+    def ik_line(
+        self,
+        q_start: Joints,
+        offset: Sequence[float] | FloatArray,
+        *,
+        step: float = 0.01,
+        max_joint_step: float = 0.15,
+    ) -> list[tuple[float, ...]] | None:
+        """Configurations moving the tool in a straight line by ``offset`` at a fixed orientation.
+
+        Each step (``step`` m) is solved from the previous configuration, and a step that moves
+        any joint by more than ``max_joint_step`` rad (another IK branch) or does not converge
+        ends the line: approach and retreat stay on the grasp's own branch.
+        """
+        q = np.asarray(q_start, dtype=float)
+        p0, rot = self.fk(q)
+        off = np.asarray(offset, dtype=float)
+        n = max(1, math.ceil(float(np.linalg.norm(off)) / step))
+        out = [_q(q)]
+        for k in range(1, n + 1):
+            target = p0 + off * (k / n)
+            q1, ep, er, _ = self._dls(target, rot, q, 1e-3, 1e-2, 60, True)
+            if ep > 1e-3 or er > 1e-2 or float(np.max(np.abs(q1 - q))) > max_joint_step:
+                return None
+            q = q1
+            out.append(_q(q))
+        return out
+
+    def above_table(self, q: Joints) -> bool:
+        """True when every link capsule beyond the base stays above the table top (within
+        TABLE_TOLERANCE): the table the arm is mounted on, which objects stand on."""
+        return self.table_clearance(q) >= -TABLE_TOLERANCE
 
     # -- inverse kinematics ----------------------------------------------------------------------
     def ik(
         self,
-        position: Sequence[float],
+        position: Sequence[float] | FloatArray,
         rotation: FloatArray | None = None,
         q0: Joints | None = None,
         *,
@@ -193,8 +259,10 @@ class Arm:
             starts: number of starts (q0 plus random configurations within the limits).
             accept: an extra test a solution must pass (e.g. collision-free); a converged
                 solution it rejects makes the reason ``collision``.
-            prefer: when given, up to ``solutions`` solutions are collected and the one nearest
-                ``prefer`` in joint space is returned (a short, predictable motion).
+            prefer: when given, up to ``solutions`` solutions are collected and the one quickest
+                to reach from ``prefer`` (slowest joint at its velocity limit) is returned, an
+                elbow-down one only when it saves more than ELBOW_DOWN_PENALTY seconds: the
+                branch continuous with the current configuration, elbow up.
 
         Returns:
             An :class:`IkResult`; ``reason`` is ``out_of_reach``, ``joint_limit`` or ``collision``
@@ -222,10 +290,12 @@ class Arm:
             q, ep, er, it = self._dls(target, rotation, start, tol_pos, tol_rot, max_iter, True)
             total_iter += it
             if ep <= tol_pos and er <= tol_rot:
-                if self.above_table(q) and (accept is None or accept(q)):
+                if self.pose_clear(q) and (accept is None or accept(q)):
                     if prefer is None:
                         return IkResult(_q(q), None, ep, er, total_iter, k + 1)
-                    gap = float(np.max(np.abs(q - np.asarray(prefer, dtype=float))))
+                    gap = self.travel_time(prefer, q)
+                    if not self.elbow_up(q):
+                        gap += ELBOW_DOWN_PENALTY
                     found.append((gap, q, ep, er, k + 1))
                     if len(found) >= solutions:
                         break
@@ -267,7 +337,7 @@ class Arm:
         rot: list[FloatArray] = []
         while len(qs) < n:
             q = rng.uniform(self._seed_lo, self._seed_hi)
-            if not self.above_table(q):
+            if not self.pose_clear(q):
                 continue
             p, r = self.fk(q)
             qs.append(q)

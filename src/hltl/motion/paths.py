@@ -21,6 +21,7 @@ OBSTACLE_MARGIN = 0.02  # m
 # Paths with more waypoints than this (RRTConnect's) are smoothed by TOPP-RA; shorter ones are
 # timed rest to rest, which costs little and follows the checked segments exactly.
 SMOOTH_FROM = 4
+RRT_SEED = 1
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,10 +37,11 @@ Packed = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
 def config_valid(arm: Arm, q: FloatArray, obstacles: Packed) -> bool:
-    """Within limits, above the table, and clear of the obstacles (packed capsules)."""
+    """Within limits, every link clear of the table top, and clear of the obstacles (packed
+    capsules)."""
     if np.any(q < arm.lower - 1e-9) or np.any(q > arm.upper + 1e-9):
         return False
-    if not arm.above_table(q):
+    if not arm.pose_clear(q):
         return False
     if len(obstacles[2]) == 0:
         return True
@@ -50,6 +52,19 @@ def segment_clear(arm: Arm, q0: FloatArray, q1: FloatArray, obstacles: Packed) -
     """True when the straight joint-space segment q0→q1 stays valid at every check step."""
     n = max(1, math.ceil(float(np.max(np.abs(q1 - q0))) / CHECK_STEP))
     return all(config_valid(arm, q0 + (q1 - q0) * (k / n), obstacles) for k in range(n + 1))
+
+
+def trajectory_clear(arm: Arm, traj: JointTrajectory, obstacles: Sequence[Capsule] = ()) -> bool:
+    """Every sample of a timed trajectory is valid (:func:`config_valid`), and consecutive samples
+    are at most CHECK_STEP apart or the segment between them is checked too."""
+    packed = capsule_arrays(obstacles)
+    rows = [np.asarray(p, dtype=float) for p in traj.positions]
+    if not all(config_valid(arm, q, packed) for q in rows):
+        return False
+    return all(
+        float(np.max(np.abs(b - a))) <= CHECK_STEP or segment_clear(arm, a, b, packed)
+        for a, b in itertools.pairwise(rows)
+    )
 
 
 def plan_path(
@@ -91,6 +106,8 @@ def _rrt_connect(
 ) -> JointPath | None:
     ob, og, ou = _ompl()
     ou.setLogLevel(ou.LOG_NONE)
+    # the same query gets the same path (plans are cached and compared across runs)
+    ou.RNG.setSeed(RRT_SEED)
     if not config_valid(arm, q0, obstacles) or not config_valid(arm, q1, obstacles):
         return None
     n = arm.nq

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hltl.errors import SceneError
-from hltl.motion.collision import min_distance
+from hltl.motion.collision import capsule_arrays, min_distance
 from hltl.motion.grasps import (
     Cylinder,
     Grasp,
@@ -31,7 +31,7 @@ from hltl.motion.handover import (
 )
 from hltl.motion.human import body_capsules, standing_posture
 from hltl.motion.kinematics import Arm, Capsule, FloatArray, Joints
-from hltl.motion.paths import plan_path, time_parametrise
+from hltl.motion.paths import plan_path, segment_clear, time_parametrise
 from hltl.motion.robots import has_model
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.motion.workspace import MapKinematics
@@ -106,6 +106,12 @@ def _traj_to(
     return time_parametrise(arm, pts, obstacles)
 
 
+def _segment_ok(arm: Arm, a: Joints, b: Joints, obstacles: Sequence[Capsule]) -> bool:
+    """The straight joint segment a→b is valid: limits, table, obstacles (paths.config_valid)."""
+    packed = capsule_arrays(obstacles)
+    return segment_clear(arm, np.asarray(a, dtype=float), np.asarray(b, dtype=float), packed)
+
+
 def _side_grasps_towards(base: FloatArray, point: FloatArray, cyl: Cylinder) -> list[Grasp]:
     """Side grasps whose approach points from the arm towards the object, nearest first; a top
     grasp last."""
@@ -146,6 +152,11 @@ def plan_pick(
         if traj is None:
             reason = "no collision-free path to the grasp"
             continue
+        # the approach in and the retreat out retrace one short segment: check it (the legs
+        # before it were checked by plan_path)
+        if not _segment_ok(arm, goal.q_approach, goal.q, obstacles):
+            reason = "the approach or retreat collides"
+            continue
         back = time_parametrise(arm, [goal.q, goal.q_approach])
         kind = "release" if place else "grasp"
         dwell = RELEASE_DWELL if place else GRASP_DWELL
@@ -174,6 +185,10 @@ def plan_r2h_action(
     traj = _traj_to(arm, q0, [target.q_pre], body)
     if traj is None:
         return SkillMotion(action, None, "no path around the person", (), time.perf_counter() - t0)
+    if not _segment_ok(arm, target.q_pre, target.q, body):
+        return SkillMotion(
+            action, None, "the approach or retreat collides", (), time.perf_counter() - t0
+        )
     approach = time_parametrise(arm, [target.q_pre, target.q])
     traj = traj.then(approach)
     t_event = traj.duration + RELEASE_DWELL / 2
@@ -259,6 +274,13 @@ def evaluate_r2r(
     if tg is None or tr is None:
         return SkillMotion(
             action, None, "no collision-free path to the handover", (), time.perf_counter() - t0
+        )
+    if not (
+        _segment_ok(giver, goal_g.q, goal_g.q_approach, people)
+        and _segment_ok(receiver, goal_r.q_approach, goal_r.q, people)
+    ):
+        return SkillMotion(
+            action, None, "the approach or retreat collides", (), time.perf_counter() - t0
         )
     meet = max(tg.duration, tr.duration)
     approach = time_parametrise(receiver, [goal_r.q_approach, goal_r.q])

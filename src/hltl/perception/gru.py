@@ -26,6 +26,7 @@ import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError
 from hltl.perception.predict import DT, F64, T_OBS, T_PRED, fit_velocity, goal_forecast
+from hltl.perception.walks import generate_walks
 
 K_STOPS = 6  # nearest stopping places the model sees
 STOP_RANGE = 4.0  # metres; farther places are left out
@@ -233,8 +234,6 @@ def train(
     The loss is the mean Euclidean error over the 2 s forecast (ADE). ``progress`` is called
     with a phase name and a fraction done.
     """
-    from hltl.perception.walks import generate_walks
-
     torch = _torch()
     t0 = time.perf_counter()
     torch.manual_seed(seed)

@@ -25,6 +25,7 @@ from typing import Protocol
 import numpy as np
 import numpy.typing as npt
 
+from hltl.errors import PerceptionError
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
 from hltl.world.scene import Scene
@@ -78,8 +79,6 @@ class SegmentationBackend:
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         if frame.seg is None:
-            from hltl.errors import PerceptionError
-
             raise PerceptionError(
                 f"frame {frame.index}: the segmentation backend needs seg/ images; this source "
                 "has none (use --backend depth-clusters)"

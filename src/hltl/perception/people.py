@@ -24,7 +24,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from hltl.errors import BackendUnavailableError
+from hltl.errors import BackendUnavailableError, PerceptionError
+from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
 from hltl.perception.skeleton import PoseWorker, Skeleton
@@ -332,7 +333,6 @@ class PeopleTracker:
             )
         if yolo_every < 1:
             raise ValueError(f"yolo_every: expected a positive integer, got {yolo_every!r}")
-        from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
 
         self.detector_name = detector
         self.detector = YoloPersonDetector() if detector in ("yolo", "fused") else None
@@ -391,8 +391,6 @@ class PeopleTracker:
         if self.detector is not None:
             return [(b, None) for b in self._yolo(frame, camera)]
         if frame.seg is None:
-            from hltl.errors import PerceptionError
-
             raise PerceptionError(
                 f"frame {frame.index}: the segmentation person detector needs seg/ images"
             )

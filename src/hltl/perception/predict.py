@@ -297,7 +297,9 @@ class GRUPredictor(GoalDirectedPredictor):
     ) -> None:
         super().__init__(stops)
         if model is None:
-            from hltl.perception.gru import load_model
+            from hltl.perception.gru import (
+                load_model,  # the predict extra (GRU weights, onnxruntime), only when asked for
+            )
 
             model = load_model(weights)
         self.model: GRUModel = model

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import heapq
 import math
+import operator
 from collections.abc import Callable
 
-from hltl.planner.pairs import Lookup, PairBound, pair_value
+from hltl.planner.pairs import Lookup, PairBound
 from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
@@ -21,6 +22,9 @@ from hltl.spec.monitor import DONE, MonitorState
 from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 
 INF = math.inf
+
+# per place of an object: (robot, head, work, tail) for each robot that must act on it
+_Rows = list[tuple[tuple[int, float, float, float], ...]]
 
 
 class Heuristic:
@@ -49,7 +53,9 @@ class Heuristic:
         self.n_robots = len(problem.robots)
         self._required_cache: dict[MonitorState, frozenset[Atom]] = {}
         self._required_prop_cache: dict[tuple[str, int], tuple[int, ...]] = {}
-        self._load_groups: dict[MonitorState, tuple[tuple[int, tuple[Atom, ...]], ...]] = {}
+        self._load_groups: dict[MonitorState, tuple[tuple[int, _Rows], ...]] = {}
+        self._rows: dict[tuple[int, tuple[Atom, ...]], _Rows] = {}
+        self._machine_memo: dict[tuple[tuple[float, float, float], ...], float] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
@@ -59,11 +65,15 @@ class Heuristic:
         # composites that are positive and/or combinations of "F child": their truth depends only
         # on which children are done (one-shot), so max/min over children is exact and cheap
         self._mono: dict[str, _Mono] = {}
-        self._single: dict[str, Atom] = {}
+        self._flat_mono: dict[str, _Flat] = {}
+        # leaves "F a" whose atom has a place table: h is one list lookup
+        self._single: dict[str, tuple[int, list[float]]] = {}
         for name in problem.spec.leaves:
             f = problem.spec.formula(name)
             if isinstance(f, Eventually) and isinstance(f.operand, Atom) and f.operand.args:
-                self._single[name] = f.operand
+                table = self.graph.atom_table(f.operand)
+                if table is not None:
+                    self._single[name] = table
         self._memo: dict[tuple[tuple[int, ...], MonitorState], float] = {}
         self.pairs: PairBound | None = None
         self._pair_lookups: dict[MonitorState, list[Lookup]] = {}
@@ -71,6 +81,7 @@ class Heuristic:
             tree = _monotone(problem.spec.formula(name), names)
             if tree is not None:
                 self._mono[name] = tree
+                self._flat_mono[name] = _flatten(tree)
 
     def __call__(self, node: Node) -> float:
         locs, _, q = node
@@ -93,12 +104,12 @@ class Heuristic:
                 continue
             mono = self._mono.get(name)
             if mono is not None:
-                h[name] = _mono_bound(mono, h, done)
+                h[name] = _flat_bound(self._flat_mono[name], h, done)
                 continue
             single = self._single.get(name)
             if single is not None:
                 # a leaf "F a" that has not fired: a has not happened yet
-                h[name] = atom_time(single, locs)
+                h[name] = single[1][locs[single[0]]]
                 continue
             costs: list[float] = []
             for kind, ref in props:
@@ -114,7 +125,7 @@ class Heuristic:
         critical = h[self.root]
         if critical == INF or self.n_robots < 2:
             return critical
-        bound = max(critical, self._load_bound(locs, q))
+        bound = max(critical, self._load_bound(locs, q, critical))
         if self.pairs is not None:
             bound = max(bound, self._pair_bound(locs, q))
         return bound
@@ -132,46 +143,51 @@ class Heuristic:
             lookups = self.pairs.lookups(sorted(self.required_atoms(q)))
             self._pair_lookups[q] = lookups
         best = 0.0
-        for lk in lookups:
-            v = pair_value(lk, locs)
+        for o1, o2, n, flat in lookups:  # pair_value, inlined: called for every node
+            v = flat[locs[o1] * n + locs[o2]]
             if v > best:
                 best = v
         return best
 
     # -- robot load ------------------------------------------------------------------------------
-    def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
-        """max over robots of the time it must spend on objects every accepting run needs."""
+    def _load_bound(self, locs: tuple[int, ...], q: MonitorState, floor: float = 0.0) -> float:
+        """max over robots of the time it must spend on objects every accepting run needs (or
+        anything up to ``floor`` when it cannot exceed ``floor``)."""
         groups = self._load_groups.get(q)
         if groups is None:
-            groups = self._group_by_object(self.required_atoms(q))
+            groups = tuple(
+                (o, self._rows_by_place(o, atoms_))
+                for o, atoms_ in self._group_by_object(self.required_atoms(q))
+            )
             self._load_groups[q] = groups
         if not groups:
             return 0.0
-        # per robot: least head, summed work, least tail over the objects it must handle
-        head: dict[int, float] = {}
-        work: dict[int, float] = {}
-        tail: dict[int, float] = {}
-        for o, atoms_ in groups:
-            rows = self._contributions(o, atoms_, locs[o])
-            for r, hd, v, tl in rows:
-                if r in work:
-                    work[r] += v
-                    if hd < head[r]:
-                        head[r] = hd
-                    if tl < tail[r]:
-                        tail[r] = tl
-                else:
-                    work[r] = v
-                    head[r] = hd
-                    tail[r] = tl
-        best = 0.0
-        # the robot's jobs fill distinct steps; the first cannot start before some object
-        # reaches it, and after the last one that object still has to travel
-        for r, v in work.items():
-            t = head[r] + v + tail[r]
-            if t > best:
-                best = t
+        # per robot, its jobs: (head, work, tail) of each object it must handle
+        jobs: list[list[tuple[float, float, float]]] = [[] for _ in range(self.n_robots)]
+        for o, by_place in groups:
+            for r, hd, v, tl in by_place[locs[o]]:
+                jobs[r].append((hd, v, tl))
+        # most robots' jobs are the same as in the parent node: one memo lookup each
+        best = floor
+        memo = self._machine_memo
+        for js in jobs:
+            if js:
+                key = tuple(js)
+                t = memo.get(key)
+                if t is None:
+                    t = _one_machine_bound(js)
+                    memo[key] = t
+                if t > best:
+                    best = t
         return best
+
+    def _rows_by_place(self, o: int, atoms_: tuple[Atom, ...]) -> _Rows:
+        key = (o, atoms_)
+        hit = self._rows.get(key)
+        if hit is None:
+            hit = [self._contributions(o, atoms_, loc) for loc in range(len(self.p.locs))]
+            self._rows[key] = hit
+        return hit
 
     def _group_by_object(self, atoms_: frozenset[Atom]) -> tuple[tuple[int, tuple[Atom, ...]], ...]:
         by_obj: dict[int, list[Atom]] = {}
@@ -336,6 +352,35 @@ class Heuristic:
         return best
 
 
+def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
+    """A lower bound on the makespan of one robot's jobs (head, work, tail): the robot acts on
+    one object per step, so for any subset of its jobs it needs the subset's work between the
+    subset's least head and its least tail. Subsets tried: all jobs, the jobs with head at least
+    each job's head, and the jobs with tail at least each job's tail (preemptive one-machine
+    scheduling with release and delivery times)."""
+    if len(jobs) == 1:
+        hd, v, tl = jobs[0]
+        return hd + v + tl
+    best = 0.0
+    for key in (None, _TAIL):
+        jobs.sort(key=key, reverse=True)
+        total = 0.0
+        least_head = least_tail = INF
+        for hd, v, tl in jobs:
+            total += v
+            if hd < least_head:
+                least_head = hd
+            if tl < least_tail:
+                least_tail = tl
+            t = least_head + total + least_tail
+            if t > best:
+                best = t
+    return best
+
+
+_TAIL = operator.itemgetter(2)
+
+
 # A monotone composite: ("F", child) | ("and", a, b) | ("or", a, b)
 _Mono = tuple[object, ...]
 
@@ -353,16 +398,50 @@ def _monotone(f: Formula, names: set[str]) -> _Mono | None:
     return None
 
 
-def _mono_bound(t: _Mono, h: dict[str, float], done: frozenset[str]) -> float:
-    if t[0] == "F":
-        child = t[1]
-        assert isinstance(child, str)
-        return 0.0 if child in done else h[child]
-    a, b = t[1], t[2]
-    assert isinstance(a, tuple) and isinstance(b, tuple)
-    if t[0] == "and":
-        return max(_mono_bound(a, h, done), _mono_bound(b, h, done))
-    return min(_mono_bound(a, h, done), _mono_bound(b, h, done))
+# The same tree with nested "and"s (and "or"s) merged: (is it an "and", children), a child being
+# a formula name ("F child") or a subtree; evaluated for every search node, so kept shallow.
+_Flat = tuple[bool, tuple[object, ...]]
+
+
+def _flatten(t: _Mono) -> _Flat:
+    op = t[0]
+    items: list[object] = []
+
+    def collect(u: _Mono) -> None:
+        if u[0] == op:
+            a, b = u[1], u[2]
+            assert isinstance(a, tuple) and isinstance(b, tuple)
+            collect(a)
+            collect(b)
+        elif u[0] == "F":
+            items.append(u[1])
+        else:
+            items.append(_flatten(u))
+
+    if op == "F":
+        return (True, (t[1],))
+    collect(t)
+    return (op == "and", tuple(items))
+
+
+def _flat_bound(t: _Flat, h: dict[str, float], done: frozenset[str]) -> float:
+    """Least time the combination can hold: max over an "and", min over an "or" of the
+    children's bounds (a child already done costs nothing)."""
+    is_and, items = t
+    best = 0.0 if is_and else INF
+    for x in items:
+        if type(x) is not str:
+            v = _flat_bound(x, h, done)  # type: ignore[arg-type]
+        elif x in done:
+            v = 0.0
+        else:
+            v = h[x]
+        if is_and:
+            if v > best:
+                best = v
+        elif v < best:
+            best = v
+    return best
 
 
 def _mono_required(t: _Mono, done: frozenset[str]) -> frozenset[str]:

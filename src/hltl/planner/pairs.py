@@ -21,16 +21,14 @@ INF = math.inf
 
 # a subproblem state: (place of object 1, place of object 2, atom 1 done, atom 2 done)
 _State = tuple[int, int, bool, bool]
-# (object 1, its target place or None, object 2, its target place or None, table)
-Lookup = tuple[int, int | None, int, int | None, dict[_State, float]]
+# (object 1, object 2, number of places n, value at index place1 * n + place2)
+Lookup = tuple[int, int, int, list[float]]
 
 
 def pair_value(lookup: Lookup, locs: tuple[int, ...]) -> float:
     """Least makespan in which both atoms of the pair can have held, from places ``locs``."""
-    o1, t1, o2, t2, table = lookup
-    l1, l2 = locs[o1], locs[o2]
-    # a state atom that already holds is met by the next step, whatever it is
-    return table.get((l1, l2, l1 == t1, l2 == t2), INF)
+    o1, o2, n, flat = lookup
+    return flat[locs[o1] * n + locs[o2]]
 
 
 class PairBound:
@@ -40,6 +38,7 @@ class PairBound:
         self.p = problem
         self.graph = graph
         self._tables: dict[tuple[Atom, Atom], dict[_State, float] | None] = {}
+        self._flat: dict[tuple[Atom, Atom], Lookup] = {}
 
     def lookups(self, atoms: list[Atom]) -> list[Lookup]:
         """For every pair of the atoms on different objects: what :func:`pair_value` needs."""
@@ -54,10 +53,23 @@ class PairBound:
                 if table is None:
                     continue
                 assert isinstance(table, dict)
-                g1, g2 = self.graph.goal(key[0]), self.graph.goal(key[1])
-                assert g1 is not None and g2 is not None
-                out.append((g1[0], g1[1], g2[0], g2[1], table))
+                lk = self._flat.get(key)
+                if lk is None:
+                    lk = self._flatten(key, table)
+                    self._flat[key] = lk
+                out.append(lk)
         return out
+
+    def _flatten(self, key: tuple[Atom, Atom], table: dict[_State, float]) -> Lookup:
+        """The table read as it is used: one value per (place 1, place 2), the "has happened"
+        flags set as the search sees them (a state atom that already holds is met by the next
+        step, whatever it is; an event atom still needed has not happened)."""
+        g1, g2 = self.graph.goal(key[0]), self.graph.goal(key[1])
+        assert g1 is not None and g2 is not None
+        (o1, t1), (o2, t2) = g1, g2
+        n = len(self.p.locs)
+        flat = [table.get((l1, l2, l1 == t1, l2 == t2), INF) for l1 in range(n) for l2 in range(n)]
+        return (o1, o2, n, flat)
 
     def _solve(self, a1: Atom, a2: Atom) -> dict[_State, float] | None:
         g1, g2 = self.graph.goal(a1), self.graph.goal(a2)

@@ -13,7 +13,7 @@ from hltl.skills.semantics import ActionSemantics
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.spec.printer import atoms as formula_atoms
-from hltl.spec.syntax import PREDICATES, Atom
+from hltl.spec.syntax import PREDICATES, And, Atom, Eventually, Formula
 from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
@@ -49,6 +49,7 @@ class Instance:
     executors: int  # bit mask over robots
     free: tuple[int, ...]
     events: frozenset[Atom]
+    event_bits: int  # ``events`` as a bit mask over ``Problem.spec_atom_list``
     hands: tuple[tuple[int, int], ...]  # (robot index, point index)
     lower: int  # duration lower bound in ticks (exact when durations are fixed)
     const: float  # analytic model: grasp/release/exchange time in seconds
@@ -87,6 +88,9 @@ class Problem:
         }
         self.spec_atoms: frozenset[Atom] = frozenset().union(*self.formula_atoms.values())
         check_atoms_against_scene(self.spec_atoms, scene)
+        # the hot loop unions a step's events as bit masks over these (no Atom hashing)
+        self.spec_atom_list: tuple[Atom, ...] = tuple(sorted(self.spec_atoms))
+        self.atom_bit: dict[Atom, int] = {a: 1 << i for i, a in enumerate(self.spec_atom_list)}
 
         self.objects: tuple[str, ...] = tuple(oid for oid, _ in self.world.objects)
         self.robots: tuple[str, ...] = scene.robot_ids
@@ -130,6 +134,7 @@ class Problem:
                 executors=sum(1 << self.robot_index[r] for r in action.robots),
                 free=tuple(self.robot_index[r] for r in trans.free),
                 events=trans.events & self.spec_atoms,
+                event_bits=self.atom_bits(trans.events & self.spec_atoms),
                 hands=tuple((self.robot_index[r], self._point(p)) for r, p in trans.hands),
                 lower=to_ticks(self.cost.lower_bound(action, trans)),
                 const=self.cost.lower_bound(action, trans),
@@ -142,6 +147,9 @@ class Problem:
         self.state_atoms: list[list[frozenset[Atom]]] = [
             [state_atoms(o, loc) & self.spec_atoms for loc in self.locs] for o in self.objects
         ]
+        self.state_bits: list[list[int]] = [
+            [self.atom_bits(a) for a in row] for row in self.state_atoms
+        ]
         # instances no monitor can see: no spec event, and the object has no spec state atom
         # where it starts or ends (picks and robot-to-robot handovers in delivery tasks)
         self.invisible: tuple[bool, ...] = tuple(
@@ -152,6 +160,12 @@ class Problem:
         )
         self.state_atom_objects: tuple[int, ...] = tuple(
             i for i in range(len(self.objects)) if any(self.state_atoms[i])
+        )
+        # instances the left-shift rule may move one step earlier (docs/planner.md): the
+        # invisible ones, and every instance when the spec is a conjunction of events
+        self.events_commute = _events_commute(spec, self.state_atom_objects)
+        self.shiftable: tuple[bool, ...] = (
+            tuple(True for _ in self.instances) if self.events_commute else self.invisible
         )
         # objects each formula is about
         self.formula_objects: dict[str, frozenset[int]] = {
@@ -164,6 +178,24 @@ class Problem:
         self._dist: dict[tuple[int, int], float] = {}
 
     # -- encoding --------------------------------------------------------------------------------
+    def atom_bits(self, atoms_: frozenset[Atom]) -> int:
+        """Spec atoms as a bit mask (see ``spec_atom_list``)."""
+        bits = 0
+        for a in atoms_:
+            bits |= self.atom_bit[a]
+        return bits
+
+    def bits_atoms(self, bits: int) -> frozenset[Atom]:
+        """The inverse of :meth:`atom_bits`."""
+        out = []
+        i = 0
+        while bits:
+            if bits & 1:
+                out.append(self.spec_atom_list[i])
+            bits >>= 1
+            i += 1
+        return frozenset(out)
+
     def _point(self, p: Vec3) -> int:
         idx = self._point_index.get(p)
         if idx is None:
@@ -213,6 +245,44 @@ class Problem:
             return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
         return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
+
+
+def _events_commute(spec: HSpec, state_atom_objects: tuple[int, ...]) -> bool:
+    """True when making an event happen one step earlier can never hurt: every leaf is ``F a``
+    for an event atom ``a`` (no state atom anywhere), no two leaves are about the same object,
+    and every composite is a conjunction of ``F child``. Then a formula is done exactly when all
+    the leaves under it have fired, in any order, so firing one earlier leaves the monitor
+    state after the later step unchanged, only frees robots, and keeps every later instance
+    relevant and alive (docs/planner.md, "Left-shift rule")."""
+    if state_atom_objects:
+        return False
+    names = {name for name, _ in spec.formulas}
+    seen: set[str] = set()
+    for name in spec.leaves:
+        f = spec.formula(name)
+        if not (isinstance(f, Eventually) and isinstance(f.operand, Atom)):
+            return False
+        if not f.operand.is_predicate or f.operand.name not in _EVENT_PREDICATES:
+            return False
+        for o in _object_args(f.operand):
+            if o in seen:
+                return False
+            seen.add(o)
+    return all(_conjunction_of_children(spec.formula(n), names) for n in spec.composites)
+
+
+_EVENT_PREDICATES = frozenset({"delivered", "placed", "picked"})
+
+
+def _conjunction_of_children(f: Formula, names: set[str]) -> bool:
+    if isinstance(f, And):
+        return _conjunction_of_children(f.left, names) and _conjunction_of_children(f.right, names)
+    return (
+        isinstance(f, Eventually)
+        and isinstance(f.operand, Atom)
+        and not f.operand.args
+        and f.operand.name in names
+    )
 
 
 def _object_args(atom: Atom) -> tuple[str, ...]:

@@ -48,6 +48,7 @@ class RelaxedGraph:
         self._load: dict[tuple[int, int, Atom], list[float]] = {}
         self._head_tail: dict[tuple[int, int, Atom], tuple[list[float], float]] = {}
         self._dead: dict[Atom, frozenset[int]] = {}
+        self._tables: dict[Atom, tuple[int, list[float]] | None] = {}
 
     def goal(self, atom: Atom) -> tuple[int, int | None] | None:
         """(object index, place code) for a state atom, (object index, None) for an event atom."""
@@ -147,6 +148,23 @@ class RelaxedGraph:
         res = frozenset(out)
         self._dead[atom] = res
         return res
+
+    def atom_table(self, atom: Atom) -> tuple[int, list[float]] | None:
+        """The atom's object and, per place of it, :meth:`atom_time` (``None``: no such object)."""
+        hit = self._tables.get(atom, False)
+        if hit is not False:
+            return hit  # type: ignore[return-value]
+        g = self.goal(atom)
+        table: tuple[int, list[float]] | None = None
+        if g is not None:
+            o, target = g
+            n = len(self.p.locs)
+            if target is None:
+                table = (o, [self.event_time[o][loc].get(atom, INF) for loc in range(n)])
+            else:
+                table = (o, [self.place_time[o][loc][target] for loc in range(n)])
+        self._tables[atom] = table
+        return table
 
     def atom_time(self, atom: Atom, locs: tuple[int, ...]) -> float:
         """Earliest time (lower bound) at which ``atom`` can be true in a step's symbol."""

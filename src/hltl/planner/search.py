@@ -14,7 +14,6 @@ from hltl.planner.heuristic import Heuristic
 from hltl.planner.problem import Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.spec.monitor import DONE
-from hltl.spec.syntax import Atom
 
 ALGORITHMS = ("astar", "dijkstra")
 PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
@@ -37,7 +36,7 @@ class _Search:
     def __init__(self, problem: Problem) -> None:
         self.p = problem
         self.monitor = problem.monitor
-        self._step_memo: dict[tuple[object, frozenset[Atom]], object] = {}
+        self._step_memo: dict[tuple[object, int], object] = {}
         self._done_memo: dict[object, frozenset[str]] = {}
         self.heuristic = Heuristic(problem, self.done)
         self._dead_memo: dict[object, frozenset[int]] = {}
@@ -56,11 +55,12 @@ class _Search:
             self._done_memo[q] = d
         return d
 
-    def monitor_step(self, q: object, atoms: frozenset[Atom]) -> object:
-        key = (q, atoms)
+    def monitor_step(self, q: object, bits: int) -> object:
+        """The monitor state after a step whose symbol is the spec atoms in ``bits``."""
+        key = (q, bits)
         nq = self._step_memo.get(key)
         if nq is None:
-            stepped = list(self.monitor.step(q, atoms))  # type: ignore[arg-type]
+            stepped = list(self.monitor.step(q, self.p.bits_atoms(bits)))  # type: ignore[arg-type]
             for c, parent in self._links:
                 if stepped[parent] == DONE:
                     stepped[c] = DONE
@@ -86,7 +86,7 @@ class _Search:
         locs, hands, q = node
         p = self.p
         dead = self.dead(q)
-        invisible = p.invisible
+        shiftable = p.shiftable
         holder_of = p.code_holder
         busy = 0
         for code in locs:
@@ -106,11 +106,11 @@ class _Search:
                 and not any(busy >> f & 1 for f in inst.free)
                 and not (
                     tags
-                    and invisible[inst.index]
+                    and shiftable[inst.index]
                     and all(
                         not inst.executors & e
                         and not m >> inst.obj & 1
-                        and p.duration(inst, hands) <= d
+                        and (inst.lower if hands is None else p.duration(inst, hands)) <= d
                         for e, m, d in tags
                     )
                 )
@@ -121,29 +121,30 @@ class _Search:
 
     def steps(
         self, node: Node, tags: Sequence[Tag] = ()
-    ) -> Iterator[tuple[tuple[Instance, ...], int, Node]]:
-        """All successors: every set U of applicable instances with disjoint robots."""
+    ) -> Iterator[tuple[tuple[Instance, ...], int, Node, Tag]]:
+        """All successors: every set U of applicable instances with disjoint robots, with its
+        duration, the node it leads to and its tag."""
         q = node[2]
         opts = self.options(node, tags)
-        chosen: list[Instance] = []
-
-        def rec(i: int, used: int) -> Iterator[tuple[Instance, ...]]:
-            if i == len(opts):
-                yield tuple(chosen)
-                return
-            yield from rec(i + 1, used)
-            for inst in opts[i]:
-                if inst.executors & used:
-                    continue
-                chosen.append(inst)
-                yield from rec(i + 1, used | inst.executors)
-                chosen.pop()
-
-        for U in rec(0, 0):
-            cost, child = self.apply(node, U)
-            if not U and child[2] == q:
+        n = len(opts)
+        # depth-first over the objects, "leave it" before each of its instances (iterative: a
+        # recursive generator passes every step set up through one frame per object); the
+        # robots acting and the objects moved are carried along for the tag
+        stack: list[tuple[int, int, int, tuple[Instance, ...]]] = [(0, 0, 0, ())]
+        while stack:
+            i, used, moved, chosen = stack.pop()
+            if i < n:
+                for inst in reversed(opts[i]):
+                    if not inst.executors & used:
+                        stack.append(
+                            (i + 1, used | inst.executors, moved | 1 << inst.obj, (*chosen, inst))
+                        )
+                stack.append((i + 1, used, moved, chosen))
                 continue
-            yield U, cost, child
+            cost, child = self.apply(node, chosen)
+            if not chosen and child[2] == q:
+                continue
+            yield chosen, cost, child, (used, moved, cost)
 
     def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node]:
         """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
@@ -151,22 +152,31 @@ class _Search:
         locs, hands, q = node
         p = self.p
         new_locs = list(locs)
-        events: set[Atom] = set()
+        events = 0
         cost = 0
-        new_hands = list(hands) if hands is not None else None
+        if hands is None:  # fixed durations: the hot path
+            for inst in U:
+                new_locs[inst.obj] = inst.post
+                events |= inst.event_bits
+                if inst.lower > cost:
+                    cost = inst.lower
+            for o in p.state_atom_objects:
+                events |= p.state_bits[o][new_locs[o]]
+            return cost, (tuple(new_locs), None, self.monitor_step(q, events))  # type: ignore[return-value]
+        new_hands = list(hands)
         for inst in U:
             new_locs[inst.obj] = inst.post
-            events |= inst.events
+            events |= inst.event_bits
             d = p.duration(inst, hands)
             if d > cost:
                 cost = d
-            if new_hands is not None:
-                for r, pt in inst.hands:
-                    new_hands[r] = pt
+            for r, pt in inst.hands:
+                new_hands[r] = pt
+        state_bits = p.state_bits
         for o in p.state_atom_objects:
-            events |= p.state_atoms[o][new_locs[o]]
-        nq = self.monitor_step(q, frozenset(events))
-        child = (tuple(new_locs), None if new_hands is None else tuple(new_hands), nq)
+            events |= state_bits[o][new_locs[o]]
+        nq = self.monitor_step(q, events)
+        child = (tuple(new_locs), tuple(new_hands), nq)
         return cost, child  # type: ignore[return-value]
 
 
@@ -276,7 +286,7 @@ def search(
             on_progress(expanded, to_seconds(bound))
         n_children = 0
         # the start node has no tag: nothing can be shifted into a step before it
-        for U, cost, child in s.steps(node, node_tags):
+        for U, cost, child, tag in s.steps(node, node_tags):
             n_children += 1
             if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
                 return stop(time.perf_counter() - t0)
@@ -286,7 +296,6 @@ def search(
             old = g_best.get(child)
             if old is not None and ng > old:
                 continue
-            tag = (_executors(U), _moved(U), cost)
             if old is not None and ng == old:
                 # an equally cheap way in: its tag may allow what the others forbid
                 child_tags = tags[child]
@@ -316,20 +325,6 @@ def search(
             lower_bound=lb,
         )
     return _infeasible(problem, s, algorithm, t0, expanded, generated)
-
-
-def _executors(U: tuple[Instance, ...]) -> int:
-    mask = 0
-    for inst in U:
-        mask |= inst.executors
-    return mask
-
-
-def _moved(U: tuple[Instance, ...]) -> int:
-    mask = 0
-    for inst in U:
-        mask |= 1 << inst.obj
-    return mask
 
 
 def _zero(_: Node) -> float:
@@ -377,4 +372,4 @@ def plan_problem(problem: Problem, **kwargs: object) -> PlanResult:
 
 def all_steps(problem: Problem, node: Node) -> Sequence[tuple[tuple[Instance, ...], int, Node]]:
     """Every successor of ``node`` (for tests and debugging)."""
-    return list(_Search(problem).steps(node))
+    return [(U, cost, child) for U, cost, child, _ in _Search(problem).steps(node)]

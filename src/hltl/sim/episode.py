@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
 from hltl.execution.drivers import RobotDriver
-from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig, Planner
+from hltl.execution.executor import Executor, ExecutorConfig, Planner
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import (
     EpisodeEnd,
@@ -21,6 +21,7 @@ from hltl.execution.log import (
     EventLog,
     LogRecord,
 )
+from hltl.execution.tick import ExecStatus
 from hltl.grounding import make_grounder
 from hltl.grounding.base import Grounder
 from hltl.sim.events import EventSchedule

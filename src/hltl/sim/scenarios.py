@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from hltl.errors import SceneError, UnknownEntityError
+from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.geometry import can_meet, context_label, human_in_workspace, reaches
 from hltl.world.scene import Scene, scene_from_dict
 
@@ -110,8 +111,6 @@ class Scenario:
     @property
     def spec(self) -> HSpec:
         """The spec, parsed and validated (``hltl.spec.hierarchy.spec_from_dict``)."""
-        from hltl.spec.hierarchy import spec_from_dict
-
         return spec_from_dict(copy.deepcopy(self.spec_dict), source=f"scenario {self.name}")
 
 

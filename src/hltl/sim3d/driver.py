@@ -346,7 +346,10 @@ class MujocoSimulator(Simulator):
         note = ""
         if self._arms and all(r in self._arms for r in action.robots) and targets:
             try:
-                from hltl.motion.planning import Cell, plan_action
+                from hltl.motion.planning import (  # the motion extra, optional here
+                    Cell,
+                    plan_action,
+                )
 
                 if self._cell is None:
                     self._cell = Cell(self.scene)
@@ -409,7 +412,7 @@ class MujocoSimulator(Simulator):
     ) -> tuple[tuple[float, ...], float]:
         arm = self._arms.get(rid)
         if arm is not None:
-            from hltl.motion.kinematics import rotation_z_to
+            from hltl.motion.kinematics import rotation_z_to  # the motion extra, optional here
 
             res = arm.ik(tuple(target), rotation_z_to(approach), q0, starts=4)
             if not res.ok:
@@ -458,8 +461,8 @@ def _stretch(plan: MotionPlan, duration: float) -> MotionPlan:
 def _motion_arms(scene: Scene) -> dict[str, Arm]:
     """hltl.motion arms for the scene's robots it has models of (none without the extra)."""
     try:
-        from hltl.motion.kinematics import Arm
-        from hltl.motion.robots import has_model
+        from hltl.motion.kinematics import Arm  # the motion extra, optional here
+        from hltl.motion.robots import has_model  # the motion extra, optional here
     except ImportError:
         return {}
     out: dict[str, Arm] = {}

@@ -28,6 +28,8 @@ from typing import Any
 import numpy as np
 
 from hltl.errors import BackendUnavailableError, SceneError
+from hltl.motion.grasps import CATEGORY_CYLINDERS
+from hltl.motion.robots import ELFIN3_URDF, arm_spec
 from hltl.sim3d.gl import mujoco
 from hltl.world.scene import Camera, Robot, Scene, SceneObject
 
@@ -90,8 +92,6 @@ _UR5_CHAIN = (
 
 def _hand_length(kind: str) -> float:
     """Flange to grasp point, as the motion layer's registry says (its extra is not needed)."""
-    from hltl.motion.robots import arm_spec
-
     return arm_spec(kind).hand_length if kind in ("ur5", "elfin3") else 0.1034
 
 
@@ -264,8 +264,6 @@ def robot_kind(robot: Robot) -> str:
 
 def object_look(obj: SceneObject) -> tuple[float, float, tuple[float, float, float, float]]:
     """(radius, height, rgba) of an object's cylinder, by category (unknown ones: hashed colour)."""
-    from hltl.motion.grasps import CATEGORY_CYLINDERS
-
     look = _OBJECT_LOOKS.get(obj.category.lower())
     size = CATEGORY_CYLINDERS.get(obj.category.lower())  # the motion layer's grasp model
     if look is not None:
@@ -679,8 +677,6 @@ class _Builder:
     def _elfin3(self, root: Any, robot: Robot) -> None:
         """hltl's Elfin-3: the motion layer's URDF itself (one kinematic model), its collision
         cylinders coloured, the tool frame ``tool0`` as the hand site, fingers on the hand."""
-        from hltl.motion.robots import ELFIN3_URDF
-
         mj = self.mj
         arm = mj.MjSpec.from_file(str(ELFIN3_URDF))
         white = [0.92, 0.92, 0.90, 1.0]

@@ -18,11 +18,13 @@ from pathlib import Path
 from typing import Any
 
 from hltl.errors import AutomatonError, BackendUnavailableError
+from hltl.fileio import cache_dir
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import (
     Always,
     And,
     Atom,
+    Binary,
     Equiv,
     Eventually,
     FalseF,
@@ -33,6 +35,7 @@ from hltl.spec.syntax import (
     Or,
     Release,
     TrueF,
+    Unary,
     Until,
     WeakNext,
 )
@@ -255,9 +258,9 @@ def substitute_atoms(f: Formula, replace: Callable[[Atom], Formula]) -> Formula:
         return replace(f)
     if isinstance(f, TrueF | FalseF):
         return f
-    if isinstance(f, Not | Next | WeakNext | Eventually | Always):
+    if isinstance(f, Unary):
         return type(f)(substitute_atoms(f.operand, replace))
-    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+    if isinstance(f, Binary):
         return type(f)(substitute_atoms(f.left, replace), substitute_atoms(f.right, replace))
     raise TypeError(f"not a formula: {f!r}")
 
@@ -290,15 +293,14 @@ def _to_ltlf2dfa(f: Formula, mod: Any) -> Any:
         return mod.LTLfTrue()
     if isinstance(f, FalseF):
         return mod.LTLfFalse()
-    if isinstance(f, Not):
-        return mod.LTLfNot(_to_ltlf2dfa(f.operand, mod))
     unary = {
+        Not: mod.LTLfNot,
         Next: mod.LTLfNext,
         WeakNext: mod.LTLfWeakNext,
         Eventually: mod.LTLfEventually,
         Always: mod.LTLfAlways,
     }
-    if isinstance(f, Next | WeakNext | Eventually | Always):
+    if isinstance(f, Unary):
         return unary[type(f)](_to_ltlf2dfa(f.operand, mod))
     binary = {
         And: mod.LTLfAnd,
@@ -308,7 +310,7 @@ def _to_ltlf2dfa(f: Formula, mod: Any) -> Any:
         Until: mod.LTLfUntil,
         Release: mod.LTLfRelease,
     }
-    if isinstance(f, And | Or | Implies | Equiv | Until | Release):
+    if isinstance(f, Binary):
         return binary[type(f)]([_to_ltlf2dfa(f.left, mod), _to_ltlf2dfa(f.right, mod)])
     raise TypeError(f"not a formula: {f!r}")
 
@@ -602,12 +604,7 @@ DISK_FORMAT = 1
 def disk_cache_dir() -> Path | None:
     """Where the default cache keeps tables across processes: ``$HLTL_CACHE_DIR/dfa``, else
     ``$XDG_CACHE_HOME/hltl/dfa`` or ``~/.cache/hltl/dfa``; ``HLTL_CACHE_DIR=off`` disables it."""
-    root = os.environ.get("HLTL_CACHE_DIR")
-    if root is not None:
-        return None if root in ("", "off", "0") else Path(root) / "dfa"
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    base = Path(xdg) if xdg else Path.home() / ".cache"
-    return base / "hltl" / "dfa"
+    return cache_dir("dfa")
 
 
 _default_cache = AutomatonCache(disk=disk_cache_dir())

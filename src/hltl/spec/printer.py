@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from functools import singledispatch
-
 from hltl.spec.syntax import (
     Always,
     And,
     Atom,
+    Binary,
     Equiv,
     Eventually,
     FalseF,
@@ -18,6 +17,7 @@ from hltl.spec.syntax import (
     Or,
     Release,
     TrueF,
+    Unary,
     Until,
     WeakNext,
 )
@@ -40,7 +40,6 @@ def _strength(f: Formula) -> int:
     return entry[1] if entry is not None else _ATOMIC
 
 
-@singledispatch
 def to_string(f: Formula) -> str:
     """The formula as text with the fewest parentheses that keep it unambiguous.
 
@@ -48,77 +47,40 @@ def to_string(f: Formula) -> str:
     left, ``->``, ``U`` and ``R`` to the right, so ``(a & b) & c`` prints as ``a & b & c`` but
     ``a & (b & c)`` keeps its parentheses.
     """
+    if isinstance(f, Atom):
+        return str(f)
+    if isinstance(f, TrueF):
+        return "true"
+    if isinstance(f, FalseF):
+        return "false"
+    if isinstance(f, Unary):
+        inner = to_string(f.operand)
+        if _strength(f.operand) < _ATOMIC:
+            inner = f"({inner})"
+        return _UNARY[type(f)] + inner
+    if isinstance(f, Binary):
+        symbol, strength, assoc = _BINARY[type(f)]
+        left, right = to_string(f.left), to_string(f.right)
+        ls, rs = _strength(f.left), _strength(f.right)
+        if ls < strength or (ls == strength and assoc == "right"):
+            left = f"({left})"
+        if rs < strength or (rs == strength and assoc == "left"):
+            right = f"({right})"
+        return f"{left} {symbol} {right}"
     raise TypeError(f"not a formula: {f!r}")
 
 
-@to_string.register
-def _(f: Atom) -> str:
-    return str(f)
-
-
-@to_string.register
-def _(f: TrueF) -> str:
-    return "true"
-
-
-@to_string.register
-def _(f: FalseF) -> str:
-    return "false"
-
-
-def _unary(f: Not | Next | WeakNext | Eventually | Always) -> str:
-    inner = to_string(f.operand)
-    if _strength(f.operand) < _ATOMIC:
-        inner = f"({inner})"
-    return _UNARY[type(f)] + inner
-
-
-def _binary(f: And | Or | Implies | Equiv | Until | Release) -> str:
-    symbol, strength, assoc = _BINARY[type(f)]
-    left, right = to_string(f.left), to_string(f.right)
-    ls, rs = _strength(f.left), _strength(f.right)
-    if ls < strength or (ls == strength and assoc == "right"):
-        left = f"({left})"
-    if rs < strength or (rs == strength and assoc == "left"):
-        right = f"({right})"
-    return f"{left} {symbol} {right}"
-
-
-for _unary_cls in (Not, Next, WeakNext, Eventually, Always):
-    to_string.register(_unary_cls, _unary)
-for _binary_cls in (And, Or, Implies, Equiv, Until, Release):
-    to_string.register(_binary_cls, _binary)
-
-
-@singledispatch
 def atoms(f: Formula) -> frozenset[Atom]:
     """Every atom of the formula: predicate atoms and bare names alike."""
+    if isinstance(f, Atom):
+        return frozenset({f})
+    if isinstance(f, TrueF | FalseF):
+        return frozenset()
+    if isinstance(f, Unary):
+        return atoms(f.operand)
+    if isinstance(f, Binary):
+        return atoms(f.left) | atoms(f.right)
     raise TypeError(f"not a formula: {f!r}")
-
-
-@atoms.register
-def _(f: Atom) -> frozenset[Atom]:
-    return frozenset({f})
-
-
-@atoms.register(TrueF)
-@atoms.register(FalseF)
-def _(f: Formula) -> frozenset[Atom]:
-    return frozenset()
-
-
-def _unary_atoms(f: Not | Next | WeakNext | Eventually | Always) -> frozenset[Atom]:
-    return atoms(f.operand)
-
-
-def _binary_atoms(f: And | Or | Implies | Equiv | Until | Release) -> frozenset[Atom]:
-    return atoms(f.left) | atoms(f.right)
-
-
-for _unary_cls in (Not, Next, WeakNext, Eventually, Always):
-    atoms.register(_unary_cls, _unary_atoms)
-for _binary_cls in (And, Or, Implies, Equiv, Until, Release):
-    atoms.register(_binary_cls, _binary_atoms)
 
 
 def atoms_in_order(f: Formula) -> tuple[Atom, ...]:
@@ -129,9 +91,9 @@ def atoms_in_order(f: Formula) -> tuple[Atom, ...]:
         g = stack.pop()
         if isinstance(g, Atom):
             seen.setdefault(g, None)
-        elif isinstance(g, Not | Next | WeakNext | Eventually | Always):
+        elif isinstance(g, Unary):
             stack.append(g.operand)
-        elif isinstance(g, And | Or | Implies | Equiv | Until | Release):
+        elif isinstance(g, Binary):
             stack.append(g.right)
             stack.append(g.left)
     return tuple(seen)

@@ -47,68 +47,73 @@ class FalseF:
 
 
 @dataclass(frozen=True, slots=True)
-class Not:
+class Unary:
+    """An operator with one operand (never built itself: use a subclass)."""
+
     operand: Formula
 
 
 @dataclass(frozen=True, slots=True)
-class And:
+class Binary:
+    """An operator with two operands (never built itself: use a subclass)."""
+
     left: Formula
     right: Formula
 
 
 @dataclass(frozen=True, slots=True)
-class Or:
-    left: Formula
-    right: Formula
+class Not(Unary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Implies:
-    left: Formula
-    right: Formula
+class And(Binary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Equiv:
-    left: Formula
-    right: Formula
+class Or(Binary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Next:
+class Implies(Binary):
+    pass
+
+
+@dataclass(frozen=True, slots=True)
+class Equiv(Binary):
+    pass
+
+
+@dataclass(frozen=True, slots=True)
+class Next(Unary):
     """Strong next ``X f``: there is a next step and f holds there."""
 
-    operand: Formula
-
 
 @dataclass(frozen=True, slots=True)
-class WeakNext:
+class WeakNext(Unary):
     """Weak next ``WX f``: if there is a next step, f holds there."""
 
-    operand: Formula
+
+@dataclass(frozen=True, slots=True)
+class Eventually(Unary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Eventually:
-    operand: Formula
+class Always(Unary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Always:
-    operand: Formula
+class Until(Binary):
+    pass
 
 
 @dataclass(frozen=True, slots=True)
-class Until:
-    left: Formula
-    right: Formula
-
-
-@dataclass(frozen=True, slots=True)
-class Release:
-    left: Formula
-    right: Formula
+class Release(Binary):
+    pass
 
 
 Formula: TypeAlias = (
@@ -128,5 +133,5 @@ Formula: TypeAlias = (
     | Release
 )
 
-UNARY = (Not, Next, WeakNext, Eventually, Always)
-BINARY = (And, Or, Implies, Equiv, Until, Release)
+UNARY: tuple[type[Unary], ...] = (Not, Next, WeakNext, Eventually, Always)
+BINARY: tuple[type[Binary], ...] = (And, Or, Implies, Equiv, Until, Release)

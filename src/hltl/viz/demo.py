@@ -17,6 +17,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from hltl.execution import log
+from hltl.execution.log import EpisodeStart, Grounding, Replan
+from hltl.grounding import make_grounder
+from hltl.sim.dynamic import fig1_events
+from hltl.sim.episode import run_episode
+from hltl.sim.scenarios import fig1
+from hltl.spec.hierarchy import spec_from_dict
+from hltl.viz._mpl import save_figure
+from hltl.viz.animate import animate, draw_frame, save_animation
+from hltl.viz.gantt import gantt
+from hltl.viz.spec_tree import spec_tree
+from hltl.viz.track import track_from_log
+
 if TYPE_CHECKING:  # kept out of the import: `hltl --help` reads this module's defaults
     from hltl.execution.log import LogRecord
     from hltl.sim.episode import Episode
@@ -30,22 +43,16 @@ DEFAULT_OUT = Path("out/demo")
 
 def demo_scene() -> Scene:
     """The Fig. 1 cell (the scene of examples/scenes/two_arms.yaml), embedded in hltl."""
-    from hltl.sim.scenarios import fig1
-
     return fig1().scene
 
 
 def demo_events(scene: Scene) -> EventSchedule:
     """The demo's events (Person A walks over to r2's side during the handovers)."""
-    from hltl.sim.dynamic import fig1_events
-
     return fig1_events(scene)
 
 
 def story(records: Sequence[LogRecord]) -> dict[str, bool]:
     """Which beats of the Fig. 1 story the log shows (each should be ``True``)."""
-    from hltl.execution import log
-
     halts = [r for r in records if isinstance(r, log.Halt) and r.reason.strip()]
     first_halt = halts[0].t if halts else float("inf")
     replans = [
@@ -116,11 +123,8 @@ def run_demo(
     Raises:
         BackendUnavailableError: ``pictures`` and matplotlib is missing (checked before the run).
     """
-    from hltl.grounding import make_grounder
-    from hltl.sim.episode import run_episode
-
     if pictures:
-        from hltl.viz._mpl import pyplot
+        from hltl.viz._mpl import pyplot  # the viz extra (matplotlib), only when pictures are drawn
 
         pyplot()  # fail before the episode, not after it
     cell = demo_scene() if scene is None else scene
@@ -146,8 +150,6 @@ def run_demo(
 def first_makespan(records: Sequence[LogRecord]) -> float | None:
     """The makespan of the episode's first solved plan (what was planned before anything
     happened), or None."""
-    from hltl.execution.log import Replan
-
     for r in records:
         if isinstance(r, Replan) and r.status == "solved" and r.makespan is not None:
             return float(r.makespan)
@@ -159,12 +161,6 @@ def draw_episode(
 ) -> tuple[tuple[str, Path], ...]:
     """The demo's pictures of an episode: Gantt chart, animation, the frame at the first halt
     (or mid-episode), the spec tree."""
-    from hltl.viz._mpl import save_figure
-    from hltl.viz.animate import animate, draw_frame, save_animation
-    from hltl.viz.gantt import gantt
-    from hltl.viz.spec_tree import spec_tree
-    from hltl.viz.track import track_from_log
-
     track = track_from_log(records)
     out: list[tuple[str, Path]] = [("Gantt chart", save_figure(gantt(track), folder / "gantt.png"))]
     fps, frames, dpi = (5, 12, 55.0) if short else (10, 200, 80.0)
@@ -181,9 +177,6 @@ def draw_episode(
 
 def _grounded_spec(records: Sequence[LogRecord]) -> HSpec | None:
     """The last spec the episode ran (grounded, or given up front)."""
-    from hltl.execution.log import EpisodeStart, Grounding
-    from hltl.spec.hierarchy import spec_from_dict
-
     data = None
     for r in records:
         if isinstance(r, EpisodeStart | Grounding) and r.spec:

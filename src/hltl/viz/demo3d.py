@@ -19,6 +19,22 @@ import numpy as np
 from hltl.errors import BackendUnavailableError
 from hltl.execution import log
 from hltl.execution.log import LogRecord
+from hltl.grounding import make_grounder
+from hltl.sim.episode import run_episode
+from hltl.sim3d.camera import CameraRenderer
+from hltl.sim3d.driver import MujocoSimulator
+from hltl.sim3d.gl import mujoco
+from hltl.sim3d.model import compile_scene, scene_cameras
+from hltl.sim3d.record import Snapshots
+from hltl.viz.demo import (
+    DEMO_INSTRUCTION,
+    DemoResult,
+    _grounded_spec,
+    demo_events,
+    demo_scene,
+    first_makespan,
+    story,
+)
 
 if TYPE_CHECKING:
     from PIL import Image
@@ -166,8 +182,6 @@ class _Timeline:
 
 
 def _orbit(scene: Scene, k: float) -> Any:
-    from hltl.sim3d.gl import mujoco
-
     mj = mujoco()
     pts = [r.base for r in scene.robots] + [h.position for h in scene.humans]
     cam = mj.MjvCamera()
@@ -205,8 +219,6 @@ def render_video(
         raise BackendUnavailableError(
             f"the 3D demo video needs imageio and pillow ({exc}): pip install 'hltl[sim3d]'"
         ) from None
-    from hltl.sim3d.camera import CameraRenderer
-    from hltl.sim3d.model import scene_cameras
 
     sim = snaps.sim
     sm = sim.stage.sm
@@ -286,21 +298,6 @@ def run_demo3d(
         speed: playback speed (0.5: half real time; the Fig. 1 episode lasts about 2 s).
         short: 10 frames per second at real time or faster (quick, for tests).
     """
-    from hltl.grounding import make_grounder
-    from hltl.sim.episode import run_episode
-    from hltl.sim3d.driver import MujocoSimulator
-    from hltl.sim3d.model import compile_scene
-    from hltl.sim3d.record import Snapshots
-    from hltl.viz.demo import (
-        DEMO_INSTRUCTION,
-        DemoResult,
-        _grounded_spec,
-        demo_events,
-        demo_scene,
-        first_makespan,
-        story,
-    )
-
     cell = demo_scene() if scene is None else scene
     schedule = demo_events(cell) if events is None else events
     fps = 10 if short else 25

@@ -7,7 +7,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from hltl.errors import HltlError
-from hltl.viz._mpl import MOVING_FORMATS, STILL_FORMATS
+from hltl.spec.printer import to_string
+from hltl.viz._mpl import MOVING_FORMATS, STILL_FORMATS, save_figure
+from hltl.viz.animate import animate, save_animation
+from hltl.viz.files import load_source, plan_scene
+from hltl.viz.track import track_from_log, track_from_plan
 
 if TYPE_CHECKING:
     from hltl.viz.files import Source
@@ -56,8 +60,6 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
             pictures.
         BackendUnavailableError: matplotlib (or ffmpeg for MP4) is missing.
     """
-    from hltl.viz.files import load_source
-
     src = load_source(path)
     out_path = None if out is None else Path(out)
     fmt = opts.format
@@ -101,7 +103,9 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
         jobs.append(("frame", fmt or "png"))
 
     if ("anim", "mp4") in jobs:
-        from hltl.viz.animate import require_ffmpeg
+        from hltl.viz.animate import (
+            require_ffmpeg,  # the viz extra (matplotlib), only for the jobs asked
+        )
 
         require_ffmpeg()  # before drawing anything
     if out_path is not None and out_path.suffix and len(jobs) > 1:
@@ -127,43 +131,44 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
 
 
 def _draw(src: Source, job: str, ext: str, dest: Path, opts: RenderOptions) -> Path:
-    from hltl.viz._mpl import save_figure
-    from hltl.viz.files import plan_scene
-
     if job == "tree":
-        from hltl.viz.spec_tree import spec_tree
+        from hltl.viz.spec_tree import (
+            spec_tree,  # the viz extra (matplotlib), only for the jobs asked
+        )
 
         assert src.spec is not None
         return save_figure(spec_tree(src.spec), dest, format=ext)
     if job == "dfa":
-        from hltl.viz.spec_tree import dfa_diagram, node_dfas
+        from hltl.viz.spec_tree import (  # the viz extra (matplotlib), only for the jobs asked
+            dfa_diagram,
+            node_dfas,
+        )
 
         assert src.spec is not None
         if opts.node is None or opts.node not in src.spec.names:
             raise HltlError(
                 f"{src.path}: no formula {opts.node!r}; the spec has {', '.join(src.spec.names)}"
             )
-        from hltl.spec.printer import to_string
 
         dfa = node_dfas(src.spec)[opts.node]
         title = f"{opts.node}: {to_string(src.spec.formula(opts.node))}"
         return save_figure(dfa_diagram(dfa, title=title), dest, format=ext)
-    from hltl.viz.track import track_from_log, track_from_plan
 
     if src.kind == "log":
         track = track_from_log(src.records)
     else:
         track = track_from_plan(src.plan or {}, plan_scene(src, opts.scene))
     if job == "gantt":
-        from hltl.viz.gantt import gantt
+        from hltl.viz.gantt import gantt  # the viz extra (matplotlib), only for the jobs asked
 
         return save_figure(gantt(track), dest, format=ext)
     if job == "frame":
-        from hltl.viz.animate import draw_frame
+        from hltl.viz.animate import (
+            draw_frame,  # the viz extra (matplotlib), only for the jobs asked
+        )
 
         assert opts.frame is not None
         return save_figure(draw_frame(track, opts.frame), dest, format=ext)
-    from hltl.viz.animate import animate, save_animation
 
     anim = animate(track, fps=opts.fps, max_frames=opts.max_frames)
     return save_animation(anim, dest, format=ext)

@@ -6,19 +6,10 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Annotated, Any, TypeVar
-
-from pydantic import (
-    BaseModel,
-    BeforeValidator,
-    ConfigDict,
-    Field,
-    ValidationError,
-    field_validator,
-)
+from typing import Any, TypeVar
 
 from hltl.errors import SceneError, UnknownEntityError
-from hltl.fileio import clip, load_file, quote
+from hltl.fileio import load_file, quote
 
 Vec3 = tuple[float, float, float]
 _T = TypeVar("_T")
@@ -26,7 +17,7 @@ _T = TypeVar("_T")
 DEFAULT_HUMAN_REACH = 0.3
 # the skills of DESIGN.md §4, the keys a scene's ``durations`` may give
 SKILL_NAMES = ("pick", "place", "handover_r2r", "handover_r2h")
-_UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
+UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 
 
 @dataclass(frozen=True, slots=True)
@@ -189,132 +180,6 @@ def _find(items: Sequence[_T], key: str, kind: str, source: str) -> _T:
     raise UnknownEntityError(f"{source}: unknown {kind} {quote(key)}; scene has: {have}")
 
 
-# -- validation models (file format) -------------------------------------------------------------
-
-
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=False, frozen=True)
-
-
-def _not_bool(v: Any) -> Any:
-    # pydantic's lax mode reads true as 1.0: a coordinate or length is never a yes/no
-    if isinstance(v, bool):
-        raise ValueError(f"expected a number, got {str(v).lower()}")
-    return v
-
-
-Num = Annotated[float, BeforeValidator(_not_bool)]
-
-
-def _finite(values: Sequence[float]) -> list[float]:
-    for v in values:
-        if not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
-    return list(values)
-
-
-class _RobotIn(_Strict):
-    id: str = Field(min_length=1)
-    base: tuple[Num, Num, Num]
-    reach: Num = Field(gt=0)
-    model: str = "generic"
-    speed: Num | None = Field(default=None, gt=0)
-
-    _v = field_validator("base")(lambda v: tuple(_finite(v)))
-
-    @field_validator("reach", "speed")
-    @classmethod
-    def _finite_scalar(cls, v: float | None) -> float | None:
-        if v is not None and not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
-        return v
-
-
-class _ObjectIn(_Strict):
-    id: str = Field(min_length=1)
-    category: str | None = None
-    position: tuple[Num, Num, Num]
-    aliases: list[str] = []
-
-    _v = field_validator("position")(lambda v: tuple(_finite(v)))
-
-
-class _HumanIn(_Strict):
-    id: str = Field(min_length=1)
-    name: str | None = None
-    position: tuple[Num, Num, Num]
-    aliases: list[str] = []
-
-    _v = field_validator("position")(lambda v: tuple(_finite(v)))
-
-
-class _SurfaceIn(_Strict):
-    id: str = Field(min_length=1)
-    center: tuple[Num, Num, Num]
-    size: tuple[Num, Num]
-    aliases: list[str] = []
-
-    _v = field_validator("center", "size")(lambda v: tuple(_finite(v)))
-
-    @field_validator("size")
-    @classmethod
-    def _positive(cls, v: tuple[Num, Num]) -> tuple[Num, Num]:
-        if min(v) <= 0:
-            raise ValueError(f"sizes must be positive, got {list(v)}")
-        return v
-
-
-class _CameraIn(_Strict):
-    id: str = Field(min_length=1)
-    position: tuple[Num, Num, Num]
-    look_at: tuple[Num, Num, Num]
-    width: int = Field(default=640, ge=8, le=4096)
-    height: int = Field(default=480, ge=8, le=4096)
-    fovy: Num = Field(default=42.0, gt=1.0, lt=170.0)
-    rate: Num = Field(default=10.0, gt=0.0, le=1000.0)
-
-    _v = field_validator("position", "look_at")(lambda v: tuple(_finite(v)))
-
-
-class _SceneIn(_Strict):
-    units: str = "m"
-    robots: list[_RobotIn] = Field(min_length=1)
-    objects: list[_ObjectIn] = []
-    humans: list[_HumanIn] = []
-    surfaces: list[_SurfaceIn] = []
-    durations: dict[str, Num] | None = None
-    human_reach: Num = Field(default=DEFAULT_HUMAN_REACH, ge=0)
-    cameras: list[_CameraIn] = []
-
-    @field_validator("units")
-    @classmethod
-    def _units(cls, v: str) -> str:
-        if v not in _UNIT_SCALE:
-            raise ValueError(f"unknown unit {quote(v)}; expected one of {', '.join(_UNIT_SCALE)}")
-        return v
-
-    @field_validator("durations")
-    @classmethod
-    def _durations(cls, v: dict[str, float] | None) -> dict[str, float] | None:
-        for k, d in (v or {}).items():
-            if k not in SKILL_NAMES:
-                raise ValueError(
-                    f"unknown skill {quote(k)}; expected some of {', '.join(SKILL_NAMES)}"
-                )
-            if not math.isfinite(d) or d < 0:
-                raise ValueError(
-                    f"duration of {quote(k)} must be a finite number >= 0, got {quote(d)}"
-                )
-        return v
-
-    @field_validator("human_reach")
-    @classmethod
-    def _hr(cls, v: float) -> float:
-        if not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
-        return v
-
-
 _ID_CHARS = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-")
 
 
@@ -342,11 +207,15 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
     """
     if not isinstance(data, Mapping):
         raise SceneError(f"{source}: a scene must be a mapping, got {type(data).__name__}")
-    try:
-        raw = _SceneIn.model_validate(dict(data))
-    except ValidationError as exc:
-        raise SceneError(_format_validation(exc, source, data)) from None
-    k = _UNIT_SCALE[raw.units]
+    raw = _plain(data)
+    if raw is None:
+        # Not in the plain form: the full validator decides, and names the problem if any.
+        # pydantic is imported only here, so that a command reading an ordinary scene starts
+        # fast (docs/benchmarks.md, "Start-up").
+        from hltl.world import scene_schema
+
+        raw = _from_models(scene_schema.validate(data, source))
+    k = UNIT_SCALE[raw.units]
 
     def v3(p: Sequence[float]) -> Vec3:
         return (p[0] * k, p[1] * k, p[2] * k)
@@ -384,17 +253,14 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
     return Scene(
         robots=tuple(Robot(r.id, v3(r.base), r.reach * k, r.model, r.speed) for r in raw.robots),
         objects=tuple(
-            SceneObject(o.id, o.category or o.id, v3(o.position), tuple(o.aliases))
-            for o in raw.objects
+            SceneObject(o.id, o.category, v3(o.position), o.aliases) for o in raw.objects
         ),
-        humans=tuple(
-            Human(h.id, h.name or h.id, v3(h.position), tuple(h.aliases)) for h in raw.humans
-        ),
+        humans=tuple(Human(h.id, h.name, v3(h.position), h.aliases) for h in raw.humans),
         surfaces=tuple(
-            Surface(s.id, v3(s.center), (s.size[0] * k, s.size[1] * k), tuple(s.aliases))
+            Surface(s.id, v3(s.center), (s.size[0] * k, s.size[1] * k), s.aliases)
             for s in raw.surfaces
         ),
-        durations=None if raw.durations is None else tuple(sorted(raw.durations.items())),
+        durations=raw.durations,
         human_reach=raw.human_reach * k,
         cameras=tuple(
             Camera(c.id, v3(c.position), v3(c.look_at), c.width, c.height, c.fovy, c.rate)
@@ -404,32 +270,159 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
     )
 
 
+@dataclass(frozen=True, slots=True)
+class _Raw:
+    """A validated scene file before unit scaling and the id checks."""
+
+    units: str
+    robots: tuple[Robot, ...]
+    objects: tuple[SceneObject, ...]
+    humans: tuple[Human, ...]
+    surfaces: tuple[Surface, ...]
+    durations: tuple[tuple[str, float], ...] | None
+    human_reach: float
+    cameras: tuple[Camera, ...]
+
+
+def _from_models(m: Any) -> _Raw:
+    """The full validator's result (``scene_schema.SceneIn``) as a :class:`_Raw`."""
+    return _Raw(
+        m.units,
+        tuple(Robot(r.id, tuple(r.base), r.reach, r.model, r.speed) for r in m.robots),
+        tuple(
+            SceneObject(o.id, o.category or o.id, tuple(o.position), tuple(o.aliases))
+            for o in m.objects
+        ),
+        tuple(Human(h.id, h.name or h.id, tuple(h.position), tuple(h.aliases)) for h in m.humans),
+        tuple(Surface(s.id, tuple(s.center), tuple(s.size), tuple(s.aliases)) for s in m.surfaces),
+        None if m.durations is None else tuple(sorted(m.durations.items())),
+        m.human_reach,
+        tuple(
+            Camera(c.id, tuple(c.position), tuple(c.look_at), c.width, c.height, c.fovy, c.rate)
+            for c in m.cameras
+        ),
+    )
+
+
+# The plain form: the keys the file format allows, ids and names as non-empty str, numbers as int
+# or float (never bool), finite and in range, lists as lists; no cameras. What ``_plain`` accepts
+# the full validator accepts with the same values (tests/world/test_scene.py checks it on random
+# inputs); anything else, valid or not, goes to the full validator.
+_TOP = frozenset(
+    {"units", "robots", "objects", "humans", "surfaces", "durations", "human_reach", "cameras"}
+)
+_ROBOT = frozenset({"id", "base", "reach", "model", "speed"})
+_OBJECT = frozenset({"id", "category", "position", "aliases"})
+_HUMAN = frozenset({"id", "name", "position", "aliases"})
+_SURFACE = frozenset({"id", "center", "size", "aliases"})
+
+
+class _NotPlain(Exception):
+    """The input is not in the plain form (it may still be valid)."""
+
+
+def _num(v: object) -> float:
+    if type(v) is not float and type(v) is not int:
+        raise _NotPlain
+    f = float(v)
+    if not math.isfinite(f):
+        raise _NotPlain
+    return f
+
+
+def _vec(v: object, n: int) -> tuple[float, ...]:
+    if type(v) is not list or len(v) != n:
+        raise _NotPlain
+    return tuple(_num(x) for x in v)
+
+
+def _name(v: object) -> str:
+    if type(v) is not str or not v:
+        raise _NotPlain
+    return v
+
+
+def _opt_name(d: dict[str, Any], key: str, default: str) -> str:
+    v = d.get(key)
+    return default if v is None else _name(v)
+
+
+def _names(d: dict[str, Any]) -> tuple[str, ...]:
+    v = d.get("aliases", [])
+    if type(v) is not list or any(type(x) is not str for x in v):
+        raise _NotPlain
+    return tuple(v)
+
+
+def _labelled(d: dict[str, Any], label: str) -> tuple[str, str, Vec3, tuple[str, ...]]:
+    """An object's or a person's id, label (``category``/``name``, default the id), position
+    and aliases."""
+    position = _vec(d["position"], 3)
+    return (_name(d["id"]), _opt_name(d, label, d["id"]), position, _names(d))  # type: ignore[return-value]
+
+
+def _items(data: Mapping[str, Any], key: str, keys: frozenset[str]) -> list[dict[str, Any]]:
+    v = data.get(key, [])
+    if type(v) is not list or any(type(d) is not dict or not d.keys() <= keys for d in v):
+        raise _NotPlain
+    return v
+
+
+def _plain(data: Mapping[str, Any]) -> _Raw | None:
+    """The scene read directly when it is in the plain form, else ``None``."""
+    try:
+        if not data.keys() <= _TOP or data.get("cameras", []) != []:
+            raise _NotPlain
+        units = data.get("units", "m")
+        if type(units) is not str or units not in UNIT_SCALE:
+            raise _NotPlain
+        robots = []
+        for d in _items(data, "robots", _ROBOT):
+            speed = d.get("speed")
+            robot = Robot(
+                _name(d["id"]),
+                _vec(d["base"], 3),  # type: ignore[arg-type]
+                _num(d["reach"]),
+                _name(d.get("model", "generic")),
+                None if speed is None else _num(speed),
+            )
+            if robot.reach <= 0 or (robot.speed is not None and robot.speed <= 0):
+                raise _NotPlain
+            robots.append(robot)
+        if not robots:
+            raise _NotPlain
+        objects = tuple(
+            SceneObject(*_labelled(d, "category")) for d in _items(data, "objects", _OBJECT)
+        )
+        humans = tuple(Human(*_labelled(d, "name")) for d in _items(data, "humans", _HUMAN))
+        surfaces = tuple(
+            Surface(
+                _name(d["id"]),
+                _vec(d["center"], 3),  # type: ignore[arg-type]
+                _vec(d["size"], 2),  # type: ignore[arg-type]
+                _names(d),
+            )
+            for d in _items(data, "surfaces", _SURFACE)
+        )
+        if any(min(s.size) <= 0 for s in surfaces):
+            raise _NotPlain
+        durations = data.get("durations")
+        dur: tuple[tuple[str, float], ...] | None = None
+        if durations is not None:
+            if type(durations) is not dict or not durations.keys() <= set(SKILL_NAMES):
+                raise _NotPlain
+            dur = tuple(sorted((key, _num(v)) for key, v in durations.items()))
+            if any(v < 0 for _, v in dur):
+                raise _NotPlain
+        human_reach = _num(data.get("human_reach", DEFAULT_HUMAN_REACH))
+        if human_reach < 0:
+            raise _NotPlain
+    except (_NotPlain, KeyError):
+        return None
+    return _Raw(units, tuple(robots), objects, humans, surfaces, dur, human_reach, ())
+
+
 def load_scene(path: str | Path) -> Scene:
     """Load and validate a scene from a YAML or JSON file."""
     p = Path(path)
     return scene_from_dict(load_file(p, "scene file", SceneError), source=str(p))
-
-
-def _format_validation(exc: ValidationError, source: str, data: Mapping[str, Any]) -> str:
-    err = exc.errors()[0]
-    loc = err.get("loc", ())
-    path = ""
-    for part in loc:
-        path += f"[{part}]" if isinstance(part, int) else (f".{part}" if path else str(part))
-    value = _lookup(data, loc)
-    msg = str(err.get("msg", "invalid")).removeprefix("Value error, ")
-    if err.get("type") == "extra_forbidden":
-        return f"{source}: {path}: unknown field (value {quote(value)}); check the spelling"
-    if err.get("type") == "missing":
-        return f"{source}: {path}: required field is missing"
-    return f"{source}: {path}: invalid value {quote(value)}: {clip(msg)}"
-
-
-def _lookup(data: Any, loc: Sequence[Any]) -> Any:
-    cur = data
-    for part in loc:
-        try:
-            cur = cur[part]
-        except (KeyError, IndexError, TypeError):
-            return None
-    return cur

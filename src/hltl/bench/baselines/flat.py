@@ -20,8 +20,12 @@ import time
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from hltl.spec.automata import substitute_atoms
+from hltl.planner import plan
+from hltl.sim.scenarios import generate
+from hltl.spec.automata import AutomatonCache, substitute_atoms, to_dfa
 from hltl.spec.hierarchy import HSpec, spec_from_formulas
+from hltl.spec.monitor import HierarchyMonitor
+from hltl.spec.parser import parse_formula
 from hltl.spec.syntax import Atom, Eventually, Formula
 from hltl.world.scene import Scene
 
@@ -87,11 +91,6 @@ class SideResult:
 
 def measure(scene: Scene, spec: HSpec, plan_timeout: float) -> SideResult:
     """Compile ``spec``'s monitors with a fresh cache (timed) and plan with them."""
-    from hltl.planner import plan
-    from hltl.spec.automata import AutomatonCache, to_dfa
-    from hltl.spec.monitor import HierarchyMonitor
-    from hltl.spec.parser import parse_formula
-
     to_dfa(
         parse_formula("F delivered(warm, up)")
     )  # load ltlf2dfa and MONA once, outside the timing
@@ -185,8 +184,6 @@ def sweep(
     limit: float = 60.0,
 ) -> list[FlatComparison]:
     """Growing task counts on one layout (unordered deliveries, so only the size grows)."""
-    from hltl.sim.scenarios import generate
-
     out = []
     for n in tasks:
         sc = generate(n, robots, layout, seed, ordered=False)

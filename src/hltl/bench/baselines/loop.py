@@ -20,14 +20,13 @@ when their precondition breaks.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from hltl.bench.baselines.model import Violation, apply_step, check_step
 from hltl.bench.baselines.policy import PlanContext, Policy, Script
 from hltl.execution import log as elog
 from hltl.execution.drivers import ActionState, Handle
-from hltl.execution.executor import ExecStatus
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import (
     ActionDone,
@@ -45,6 +44,7 @@ from hltl.execution.log import (
     log_monitor_step,
     world_to_dict,
 )
+from hltl.execution.tick import ExecStatus, TickTemplate
 from hltl.grounding.offline import OfflineGrounder
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
@@ -92,7 +92,7 @@ class _Run:
     state: ActionState | None = None
 
 
-class BaselineAgent:
+class BaselineAgent(TickTemplate):
     """A baseline policy behind the episode loop's agent protocol (:class:`hltl.sim.episode.Agent`).
 
     The task is refereed as for hltl: the offline grounder's spec, updated for every GOAL, and
@@ -163,31 +163,26 @@ class BaselineAgent:
 
     # -- one tick -------------------------------------------------------------------------------
 
-    def update(
-        self,
-        t: float,
-        observation: WorldState | None = None,
-        updates: Iterable[SpecUpdate] = (),
-    ) -> None:
+    # -- the tick's steps (TickTemplate.update runs them in order) -------------------------------
+
+    def _sense(self, t: float, observation: WorldState | None) -> None:
         self.t = t
         self._obs = observation
-        self.poll()
-        for upd in updates:
-            self.assign(t, upd)
-        if self.status is ExecStatus.GAVE_UP:
-            return
-        if self.running:
-            if all(r.state is not None for r in self.running):
-                self.end_step()
-            else:
-                self.safety()
+
+    def _step_running(self) -> bool:
+        return bool(self.running)
+
+    def _step_ended(self) -> bool:
+        return all(r.state is not None for r in self.running)
+
+    def _act(self) -> None:
         for _ in range(8):
             if self.running or self.status is not ExecStatus.RUNNING or self.monitor is None:
                 return
             if not self.decide():
                 return
 
-    def poll(self) -> None:
+    def _poll(self) -> None:
         for run in self.running:
             if run.state is not None:
                 continue
@@ -209,7 +204,7 @@ class BaselineAgent:
             if st.state is ActionState.FAILED:
                 self.trigger.append("failure")
 
-    def end_step(self) -> None:
+    def _end_step(self) -> None:
         runs, self.running = self.running, []
         assert self.monitor is not None
         done = [r.transition for r in runs if r.state is ActionState.DONE]
@@ -220,7 +215,7 @@ class BaselineAgent:
                 self.accepted_at = self.t
         self.steps += 1
 
-    def safety(self) -> None:
+    def _check_safety(self) -> None:
         world = self.world()
         for run in self.running:
             if run.state is not None:
@@ -251,7 +246,7 @@ class BaselineAgent:
             )
             self.trigger.append("halt:precondition")
         if all(r.state is not None for r in self.running):
-            self.end_step()
+            self._end_step()
 
     def _done(self) -> list[str]:
         return sorted(self.done_formulas())

@@ -27,7 +27,8 @@ import time
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from hltl.errors import HltlError
+from hltl.bench.baselines.flat import flatten
+from hltl.errors import BackendUnavailableError, HltlError
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 from hltl.world.geometry import can_meet, context_label, human_in_workspace, reaches
@@ -120,8 +121,6 @@ def build_problem(scene: Scene, spec: HSpec, world: WorldState | None = None) ->
     BoolType, Fluent, InstantaneousAction = ups.BoolType, ups.Fluent, ups.InstantaneousAction
     Int, MinimizeActionCosts, Object = ups.Int, ups.MinimizeActionCosts, ups.Object
     Problem, UserType, UAnd, UOr = ups.Problem, ups.UserType, ups.And, ups.Or
-
-    from hltl.bench.baselines.flat import flatten
 
     w = initial_world(scene) if world is None else world
     flat, _ = flatten(spec)
@@ -291,8 +290,6 @@ def solve(
     Raises:
         BackendUnavailableError: the ``baselines`` extra is not installed.
     """
-    from hltl.errors import BackendUnavailableError
-
     missing = fd_unavailable()
     if missing is not None:
         raise BackendUnavailableError(missing)

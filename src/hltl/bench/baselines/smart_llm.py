@@ -28,6 +28,14 @@ from dataclasses import dataclass
 from typing import Any
 
 from hltl.bench.baselines.policy import PlanContext, Script
+from hltl.errors import BackendUnavailableError
+from hltl.grounding.llm import (
+    DEFAULT_CONFIG_PATH,
+    content_of,
+    load_config,
+    make_openai_client,
+    usage_of,
+)
 from hltl.skills.library import Action
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -355,8 +363,6 @@ class SmartLLMPolicy:
         self._chat = chat
 
     def plan(self, ctx: PlanContext) -> Script:
-        from hltl.grounding.llm import content_of, usage_of
-
         if self._chat is None:
             self._chat = default_chat()
         response = self._chat(build_messages(ctx))
@@ -371,8 +377,6 @@ class SmartLLMPolicy:
 
 def llm_unavailable() -> str | None:
     """Why SMART-LLM-R cannot run here, or None when an LLM backend is configured."""
-    from hltl.grounding.llm import DEFAULT_CONFIG_PATH
-
     if (
         os.environ.get("HLTL_LLM_BASE_URL")
         or os.environ.get("HLTL_LLM_CONFIG")
@@ -400,13 +404,14 @@ def default_chat() -> ChatFn:
     Raises:
         BackendUnavailableError: no backend is configured or its package is missing.
     """
-    from hltl.errors import BackendUnavailableError
-
     missing = llm_unavailable()
     if missing is not None:
         raise BackendUnavailableError(f"SMART-LLM-R cannot run: {missing}")
     if os.environ.get("HLTL_LOCAL_MODEL") and not os.environ.get("HLTL_LLM_BASE_URL"):
-        from hltl.grounding.local import default_model_path, load_llama
+        from hltl.grounding.local import (  # only the grounder asked for (the local extra)
+            default_model_path,
+            load_llama,
+        )
 
         llm = load_llama(default_model_path())
 
@@ -414,7 +419,6 @@ def default_chat() -> ChatFn:
             return llm.create_chat_completion(messages=messages, temperature=0.0, max_tokens=1500)
 
         return local
-    from hltl.grounding.llm import load_config, make_openai_client
 
     config = load_config()
     client = make_openai_client(config)

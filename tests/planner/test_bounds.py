@@ -1,0 +1,78 @@
+"""The robot-load bound's one-machine relaxation and the commuting-events left-shift."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.planner import plan
+from hltl.planner.heuristic import _one_machine_bound
+from hltl.planner.problem import Problem
+from hltl.sim.scenarios import generate
+from tests.oracles.brute_force import optimal_makespan
+from tests.oracles.validator import check_plan
+
+_job = st.tuples(st.integers(0, 6), st.integers(1, 4), st.integers(0, 6))
+
+
+def _best_schedule(jobs: list[tuple[int, int, int]]) -> int:
+    """One machine, jobs in some order, each started no earlier than its head and followed by
+    its tail: the least makespan over every order (waiting never helps beyond the head)."""
+    best = math.inf
+    for order in itertools.permutations(jobs):
+        t = 0
+        end = 0
+        for hd, v, tl in order:
+            t = max(t, hd) + v
+            end = max(end, t + tl)
+        best = min(best, end)
+    return int(best)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(_job, min_size=1, max_size=5))
+def test_one_machine_bound_never_exceeds_the_best_schedule(
+    jobs: list[tuple[int, int, int]],
+) -> None:
+    bound = _one_machine_bound([(float(h), float(v), float(t)) for h, v, t in jobs])
+    assert bound <= _best_schedule(jobs)
+    # and it is at least the classic all-jobs bound
+    assert bound >= min(h for h, _, _ in jobs) + sum(v for _, v, _ in jobs) + min(
+        t for _, _, t in jobs
+    )
+
+
+def test_one_machine_bound_sees_a_late_subset() -> None:
+    # two jobs free at once, two that only arrive at 5: the late pair alone needs 5 + 2 + 2
+    jobs = [(0.0, 1.0, 0.0), (0.0, 1.0, 0.0), (5.0, 2.0, 0.0), (5.0, 2.0, 0.0)]
+    assert _one_machine_bound(jobs) == 9.0
+
+
+def test_events_commute_only_for_conjunctions_of_events() -> None:
+    unordered = generate(3, 3, "line", 0, ordered=False)
+    assert Problem(unordered.scene, unordered.spec).events_commute
+    ordered = generate(3, 3, "line", 0, ordered=True)
+    assert not Problem(ordered.scene, ordered.spec).events_commute
+
+
+@pytest.mark.parametrize(
+    ("n", "layout", "seed"),
+    [
+        (n, layout, seed)
+        for n, layout in ((3, "grid"), (4, "line"), (4, "square"))
+        for seed in range(3)
+    ],
+)
+def test_commuting_event_cells_match_exhaustive_search(n: int, layout: str, seed: int) -> None:
+    # every instance is left-shiftable here (conjunction of deliveries): check the optimum
+    sc = generate(n, n, layout, seed, ordered=False)
+    assert Problem(sc.scene, sc.spec).events_commute
+    expected = optimal_makespan(sc.scene, sc.spec, max_nodes=1_000_000)
+    res = plan(sc.scene, sc.spec, timeout=120)
+    assert res.makespan is not None and expected is not None
+    assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
+    check_plan(sc.scene, sc.spec, res.to_dict())
