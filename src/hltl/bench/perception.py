@@ -27,8 +27,7 @@ from hltl.grounding.offline import OfflineGrounder
 from hltl.perception.evaluate import HORIZONS, Score, score
 from hltl.perception.frames import Frame, camera_from_dict
 from hltl.perception.objects import MIN_PIXELS, localize, make_backend
-from hltl.perception.observe import match_objects
-from hltl.perception.people import PeopleTracker
+from hltl.perception.observe import Perceiver, match_objects
 from hltl.perception.predict import (
     DT,
     F64,
@@ -181,10 +180,18 @@ def _frame_camera(sm: Any, cam: Camera) -> Any:
 def object_bench(
     scenes: Sequence[Scene], progress: Callable[[str], None] | None = None
 ) -> list[ObjectRow]:
-    """Centroid error, recall and time of both object backends on renders of ``scenes``."""
+    """Centroid error, recall and time of both object backends on renders of ``scenes``, each
+    with and without the categories' known sizes in the cylinder fit."""
+
+    # (row name, backend, fit with the categories' known sizes)
+    runs = (
+        ("segmentation", "segmentation", True),
+        ("segmentation, free fit", "segmentation", False),
+        ("depth-clusters", "depth-clusters", True),
+        ("depth-clusters, free fit", "depth-clusters", False),
+    )
     acc: dict[str, dict[str, list[float]]] = {
-        b: {"errors": [], "ms": [], "visible": [], "found": []}
-        for b in ("segmentation", "depth-clusters")
+        b: {"errors": [], "ms": [], "visible": [], "found": []} for b, _, _ in runs
     }
     frames = 0
     for scene in scenes:
@@ -203,10 +210,12 @@ def object_bench(
                 for sid, s in fcam.segments.items()
                 if s.kind == "object" and int((f.seg == sid).sum()) >= MIN_PIXELS
             }
-            for name, a in acc.items():
-                backend = make_backend(name, scene)
+            for name, kind, priors in runs:
+                a = acc[name]
+                backend = make_backend(kind, scene)
                 t0 = time.perf_counter()
-                located = localize(frame, fcam, backend.detect(frame, fcam), backend.planes)
+                dets = backend.detect(frame, fcam)
+                located = localize(frame, fcam, dets, backend.planes, scene, priors)
                 a["ms"].append((time.perf_counter() - t0) * 1000.0)
                 obs, _, _ = match_objects(scene, located)
                 a["visible"].append(len(visible))
@@ -237,17 +246,20 @@ class PeopleRow:
     switches: int  # times a person's track id changed
     wrong: int  # tracked observations tied to the wrong person
     false: int  # tracked observations near nobody
-    ms: tuple[float, ...]
+    ms: tuple[float, ...]  # wall time per frame
+    cpu: tuple[float, ...] = ()  # CPU time per frame (all of this process's threads)
 
 
-def people_bench(
-    scene: Scene,
-    detectors: Sequence[str] = ("segmentation", "depth", "fused", "yolo"),
-    frames: int = 40,
-    progress: Callable[[str], None] | None = None,
-) -> list[PeopleRow]:
-    """Two people cross in front of the robots (each walks to where the other stood, 1 m/s
-    pace), rendered at 10 Hz with walking poses; every detector tracks them."""
+JointTruth = dict[str, dict[str, tuple[float, float, float]]]
+
+
+def _crossing(
+    scene: Scene, frames: int, limit: int | None = None
+) -> tuple[Scene, Any, dict[str, int], list[Any], list[JointTruth]]:
+    """Two people crossing in front of the robots, rendered: (scene, camera, segment id of each
+    person, [(frame, floor truth)], the true shoulders, elbows and wrists per frame). ``limit``
+    renders only the first frames of the ``frames``-frame crossing."""
+
     a, b = scene.humans[:2]
     cam = _cameras(scene)[0]
     scene = replace(scene, cameras=(cam,))
@@ -255,10 +267,11 @@ def people_bench(
     fcam = _frame_camera(stage.sm, cam)
     seg_of = {s.id: sid for sid, s in fcam.segments.items() if s.kind == "human"}
     rendered = []
+    joints: list[JointTruth] = []
     pa, pb = np.array(a.position[:2]), np.array(b.position[:2])
     off = np.array([0.0, 0.25])  # the two walk on lines 0.5 m apart, so they pass, not collide
     with CameraRenderer(stage.sm, cam, geometry="collision") as r:
-        for k in range(frames):
+        for k in range(frames if limit is None else min(limit, frames)):
             s = k / (frames - 1)
             qa = pa + s * (pb - pa) + off * math.sin(math.pi * s)
             qb = pb + s * (pa - pb) - off * math.sin(math.pi * s)
@@ -271,17 +284,48 @@ def people_bench(
             f = r.render(stage.data)
             truth = {a.id: (float(qa[0]), float(qa[1])), b.id: (float(qb[0]), float(qb[1]))}
             rendered.append((Frame(k, 0.1 * k, f.rgb, f.depth, f.seg), truth))
+            joints.append({h.id: _true_joints(stage, h.id) for h in (a, b)})
+    return scene, fcam, seg_of, rendered, joints
+
+
+def _true_joints(stage: Any, hid: str) -> dict[str, tuple[float, float, float]]:
+    """Shoulder (upper arm's origin), elbow (forearm's origin) and wrist (end of the forearm,
+    0.23 m down it) of a simulated person, both sides."""
+    mj, m, d = stage.mj, stage.model, stage.data
+    out = {}
+    for side in ("l", "r"):
+        up = int(mj.mj_name2id(m, mj.mjtObj.mjOBJ_BODY, f"human:{hid}/{side}_upper_arm"))
+        fore = int(mj.mj_name2id(m, mj.mjtObj.mjOBJ_BODY, f"human:{hid}/{side}_forearm"))
+        wrist = d.xpos[fore] + d.xmat[fore].reshape(3, 3) @ np.array([0.0, 0.0, -0.23])
+        for name, p in (("shoulder", d.xpos[up]), ("elbow", d.xpos[fore]), ("wrist", wrist)):
+            out[f"{side}_{name}"] = (float(p[0]), float(p[1]), float(p[2]))
+    return out
+
+
+def people_bench(
+    scene: Scene,
+    detectors: Sequence[str] = ("segmentation", "depth", "fused", "yolo"),
+    frames: int = 40,
+    progress: Callable[[str], None] | None = None,
+) -> list[PeopleRow]:
+    """Two people cross in front of the robots (each walks to where the other stood, 1 m/s
+    pace), rendered at 10 Hz with walking poses; every detector tracks them inside the whole
+    perception stage (its time per frame includes the objects)."""
+    scene, fcam, seg_of, rendered, _ = _crossing(scene, frames)
     rows = []
     for det in detectors:
-        tracker = PeopleTracker(scene, det)
+        # the whole perception stage per frame: objects (segmentation, known sizes) and people
+        perceiver = Perceiver(scene, fcam, "segmentation", det)
         person_frames = detected = wrong = false = switches = 0
         errors: list[float] = []
         ms: list[float] = []
+        cpu: list[float] = []
         last_track: dict[str, str] = {}
         for frame, truth in rendered:
-            t0 = time.perf_counter()
-            obs = tracker.update(frame, fcam)
+            t0, c0 = time.perf_counter(), time.process_time()
+            obs = perceiver.process(frame).people
             ms.append((time.perf_counter() - t0) * 1000.0)
+            cpu.append((time.process_time() - c0) * 1000.0)
             assert frame.seg is not None
             visible = {h for h in truth if int((frame.seg == seg_of[h]).sum()) >= 2000}
             person_frames += len(visible)
@@ -302,7 +346,15 @@ def people_bench(
                 last_track[near] = o.track
         rows.append(
             PeopleRow(
-                det, person_frames, detected, tuple(errors), switches, wrong, false, tuple(ms)
+                det,
+                person_frames,
+                detected,
+                tuple(errors),
+                switches,
+                wrong,
+                false,
+                tuple(ms),
+                tuple(cpu),
             )
         )
         if progress:
@@ -356,7 +408,7 @@ def format_people(rows: Sequence[PeopleRow]) -> str:
     lines = [
         "| detector | person-frames visible | detected & tied right "
         "| position error median / p95 (cm) | identity switches | wrong identity | false tracks "
-        "| ms per frame median / p95 |",
+        "| ms per frame (objects + people): wall median / p95, CPU median |",
         "|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
@@ -365,7 +417,88 @@ def format_people(rows: Sequence[PeopleRow]) -> str:
         lines.append(
             f"| {r.detector} | {r.person_frames} | {r.detected} ({rate:.0f} %) | "
             f"{_q(e, 0.5):.1f} / {_q(e, 0.95):.1f} | {r.switches} | {r.wrong} | {r.false} | "
-            f"{statistics.median(r.ms):.0f} / {_q(r.ms, 0.95):.0f} |"
+            f"{statistics.median(r.ms):.0f} / {_q(r.ms, 0.95):.0f}, "
+            f"{statistics.median(r.cpu) if r.cpu else math.nan:.0f} |"
+        )
+    return "\n".join(lines)
+
+
+Stats = tuple[float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class SkeletonRow:
+    person_frames: int  # people tracked by the depth detector, over the frames
+    found: int  # of those, the pose model found a body in the crop
+    # joint → (seen, error median/p95/max, the same to the nearer of its left/right truths)
+    joints: dict[str, tuple[int, Stats, Stats]]
+    ms: tuple[float, ...]  # per frame, the whole stage with skeletons
+    version: str
+
+
+def skeleton_bench(scene: Scene, frames: int = 40, limit: int | None = None) -> SkeletonRow:
+    """MediaPipe skeletons of the crossing people (depth detector tracks them): how often the
+    pose model finds each tracked person and each joint, and its 3D error against the
+    simulator's joints (the person the track is tied to); ``limit``: the first frames only."""
+    scene, fcam, _, rendered, truth = _crossing(scene, frames, limit)
+    perceiver = Perceiver(scene, fcam, "segmentation", "depth", skeleton=True)
+    assert perceiver.tracker is not None and perceiver.tracker.pose is not None
+    version = perceiver.tracker.pose.version
+    tracked = found = 0
+    errs: dict[str, list[float]] = {}
+    either: dict[str, list[float]] = {}  # to the nearer of the person's left and right joint
+    seen: dict[str, int] = {}
+    ms: list[float] = []
+    try:
+        for (frame, _), joints in zip(rendered, truth, strict=True):
+            t0 = time.perf_counter()
+            obs = perceiver.process(frame)
+            ms.append((time.perf_counter() - t0) * 1000.0)
+            for p in obs.people:
+                if p.person is None:
+                    continue
+                tracked += 1
+                if p.skeleton is None:
+                    continue
+                found += 1
+                for name, q in p.skeleton.joints:
+                    if q is not None:
+                        true = joints[p.person]
+                        other = ("r" if name[0] == "l" else "l") + name[1:]
+                        seen[name] = seen.get(name, 0) + 1
+                        errs.setdefault(name, []).append(math.dist(q, true[name]))
+                        either.setdefault(name, []).append(
+                            min(math.dist(q, true[name]), math.dist(q, true[other]))
+                        )
+    finally:
+        perceiver.close()
+
+    def stats(xs: list[float]) -> tuple[float, float, float]:
+        return (_q(xs, 0.5), _q(xs, 0.95), max(xs, default=math.nan))
+
+    table = {
+        name: (seen.get(name, 0), stats(errs.get(name, [])), stats(either.get(name, [])))
+        for name in ("l_shoulder", "r_shoulder", "l_elbow", "r_elbow", "l_wrist", "r_wrist")
+    }
+    return SkeletonRow(tracked, found, table, tuple(ms), version)
+
+
+def format_skeleton(row: SkeletonRow) -> str:
+    lines = [
+        f"MediaPipe {row.version} (pose worker in .venv-pose), people tracked by the depth "
+        f"detector: {row.person_frames} person-frames, the pose model found a body in "
+        f"{row.found} ({100.0 * row.found / max(row.person_frames, 1):.0f} %); whole stage with "
+        f"skeletons {statistics.median(row.ms):.0f} ms per frame median, "
+        f"{_q(row.ms, 0.95):.0f} p95.",
+        "",
+        "| joint | seen (of person-frames with a body) | 3D error median / p95 / max (cm) "
+        "| same, to the nearer side's joint (cm) |",
+        "|---|---|---|---|",
+    ]
+    for name, (n, e, a) in row.joints.items():
+        lines.append(
+            f"| {name} | {n} | {100 * e[0]:.1f} / {100 * e[1]:.1f} / {100 * e[2]:.1f} "
+            f"| {100 * a[0]:.1f} / {100 * a[1]:.1f} / {100 * a[2]:.1f} |"
         )
     return "\n".join(lines)
 
@@ -385,10 +518,15 @@ class LoopRow:
 
 
 def loop_bench(
-    configs: Sequence[str], trials: int, progress: Callable[[str], None] | None = None
+    configs: Sequence[str],
+    trials: int,
+    progress: Callable[[str], None] | None = None,
+    people: str = "depth",
 ) -> list[LoopRow]:
     """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
-    truth and through the camera (segmentation backend and person detector)."""
+    truth and through the camera (segmentation object backend with known sizes, ``people``
+    person detector)."""
+
     rows = []
     for config in configs:
         for index in range(trials):
@@ -397,7 +535,7 @@ def loop_bench(
             made: list[CameraSimulator] = []
 
             def camera(*a: Any, _m: Any = model, _made: list[Any] = made, **k: Any) -> Any:
-                sim = CameraSimulator(*a, timing="cost", model=_m, **k)
+                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, **k)
                 _made.append(sim)
                 return sim
 

@@ -275,7 +275,8 @@ def register(sub: Any) -> None:
         "--loop-trials",
         type=int,
         default=1,
-        help="suite trials per small configuration run with ground-truth and camera perception",
+        help="suite trials per configuration (all twelve) run with ground-truth and camera "
+        "perception (segmentation objects, depth person detector)",
     )
     pe.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
     pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")

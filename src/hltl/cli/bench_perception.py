@@ -15,13 +15,17 @@ from hltl.bench.perception import (
     format_objects,
     format_people,
     format_prediction,
+    format_skeleton,
     loop_bench,
     object_bench,
     people_bench,
+    skeleton_bench,
     suite_walks,
 )
 from hltl.errors import HltlError
 from hltl.perception.gru import load_model
+from hltl.perception.skeleton import pose_python
+from hltl.sim.dynamic import config_names
 from hltl.sim.scenarios import get
 from hltl.sim3d.gl import require_renderer
 
@@ -54,9 +58,15 @@ def run(args: argparse.Namespace) -> int:
         say("people: two people crossing")
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))
+        if pose_python().is_file():
+            say("skeletons: MediaPipe pose worker")
+            sk = skeleton_bench(scenes[0], frames=10 if quick else 40)
+            tables.append("### Skeletons of the crossing people\n\n" + format_skeleton(sk))
+        else:
+            say(f"skeletons skipped: no pose environment at {pose_python()}")
         if args.loop_trials > 0 and not quick:
             say("closed loop: ground truth vs camera")
-            loop = loop_bench(("1-1", "1-2", "2-2", "1-4-line"), args.loop_trials, say)
+            loop = loop_bench(config_names(), args.loop_trials, say)
             tables.append(
                 "### Closed loop in the 3D simulator: ground truth vs camera\n\n"
                 + format_loop(loop)

@@ -49,6 +49,12 @@ def register(sub: Any) -> None:
                    help="forecast drawn by --viz (default: gru)")  # fmt: skip
     p.add_argument("--json", action="store_true", help="print every frame's observation as JSON")
     p.add_argument("--viz", type=Path, metavar="DIR", help="write overlay PNGs here")
+    p.add_argument(
+        "--skeleton",
+        action="store_true",
+        help="3D shoulders, elbows, wrists of tracked people (MediaPipe in the .venv-pose "
+        "environment, its own process)",
+    )
     p.set_defaults(func=run)
 
 
@@ -58,10 +64,20 @@ def run(args: argparse.Namespace) -> int:
     has_seg = folder.frame(0).seg is not None
     backend = args.backend or ("segmentation" if has_seg else "depth-clusters")
     people = args.people or ("segmentation" if has_seg else "depth")
+    if args.skeleton and people == "none":
+        raise HltlError("--skeleton: needs a person detector, got --people none")
     try:
-        perceiver = Perceiver(scene, folder.camera, backend, people)
+        perceiver = Perceiver(scene, folder.camera, backend, people, skeleton=args.skeleton)
     except ValueError as exc:
         raise HltlError(str(exc)) from None
+    try:
+        return _run(args, folder, scene, backend, people, perceiver)
+    finally:
+        perceiver.close()
+
+
+def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people: str,
+         perceiver: Any) -> int:  # fmt: skip
     predictor = None
     if args.viz is not None and scene is not None:
         from hltl.perception.predict import make_predictor  # only with --viz
@@ -141,11 +157,16 @@ def _print(observations: list[Any], backend: str, people: str, perceiver: Any) -
         )
     console.print(t)
     t = Table(title="people")
-    for c in ("track", "id", "position (m)", "score"):
+    for c in ("track", "id", "position (m)", "score", "skeleton (joints seen of 6)"):
         t.add_column(c)
     for p in last.people:
+        sk = "-" if p.skeleton is None else str(p.skeleton.seen)
         t.add_row(
-            p.track, p.person or "-", ", ".join(f"{v:.3f}" for v in p.position), f"{p.score:.2f}"
+            p.track,
+            p.person or "-",
+            ", ".join(f"{v:.3f}" for v in p.position),
+            f"{p.score:.2f}",
+            sk,
         )
     console.print(t)
     for label, items in (

@@ -21,6 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.perception.frames import Camera
+from hltl.perception.objects import support_planes
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]
@@ -89,6 +90,11 @@ class DepthPersonDetector:
             return []
         self.floor = floor
         height = pts[:, 2] - floor
+        # table tops a person stands at are not the person (their colour would be theirs)
+        flat = np.zeros(len(pts), dtype=bool)
+        for plane in support_planes(pts[:, 2]):
+            if plane > floor + 0.1:
+                flat |= np.abs(pts[:, 2] - plane) < 0.02
         in_band = (height > BAND[0]) & (height < BAND[1])
         if in_band.sum() < MIN_CELL_POINTS:
             return []
@@ -132,7 +138,7 @@ class DepthPersonDetector:
             )
             sel = np.zeros(len(pts), dtype=bool)
             sel[inside] = region[ij[inside, 0], ij[inside, 1]]
-            sel &= (height > 0.03) & (height < head + 0.05)
+            sel &= (height > 0.03) & (height < head + 0.05) & ~flat
             if sel.sum() < 10:
                 continue
             small_mask = np.zeros(small.shape, dtype=bool)

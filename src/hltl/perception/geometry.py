@@ -76,7 +76,28 @@ def _circle(xy: F64) -> tuple[F64, float] | None:
     return c + mean, math.sqrt(r2)
 
 
-def fit_cylinder(points: F64, floor: float | None = None) -> Cylinder | None:
+def _circle_of_radius(xy: F64, r: float, start: F64) -> F64:
+    """Centre of the circle of radius ``r`` nearest (least squares) to the points, by
+    Gauss-Newton from ``start`` (the side of the arc it begins on is the side it ends on)."""
+    c = np.asarray(start, dtype=float).copy()
+    for _ in range(20):
+        d = xy - c
+        n = np.maximum(np.linalg.norm(d, axis=1), 1e-9)
+        res = n - r
+        jac = -d / n[:, None]
+        step, *_ = np.linalg.lstsq(jac, -res, rcond=None)
+        c += step
+        if float(np.linalg.norm(step)) < 1e-6:
+            break
+    return c
+
+
+def fit_cylinder(
+    points: F64,
+    floor: float | None = None,
+    size: tuple[float, float] | None = None,
+    view: tuple[float, float] | None = None,
+) -> Cylinder | None:
     """Fit an upright cylinder to the visible surface points of an object.
 
     The camera sees part of the side and maybe the top. The side points (below the top rim)
@@ -84,6 +105,13 @@ def fit_cylinder(points: F64, floor: float | None = None) -> Cylinder | None:
     disc's points do (their mean is the axis, their farthest the radius). The radius is
     bounded by the points' own spread so an almost straight arc cannot blow up. ``floor``, when
     known, is where the object stands: the height runs from there (the bottom is often hidden).
+
+    ``size`` (radius, height), when the object is known: the side points fix only the axis
+    (a circle of that radius, started behind the surface as seen from ``view``, the camera's
+    x, y), and the height is the known one, standing on ``floor`` when that is known (else
+    hanging from the visible top) — a sliver of the side or a hidden top or foot then no longer
+    biases the centre. The fitted axis must lie within the known radius (+2 cm) of the
+    visible points, else the free fit is kept.
 
     Returns None for fewer than 10 points.
     """
@@ -107,6 +135,20 @@ def fit_cylinder(points: F64, floor: float | None = None) -> Cylinder | None:
         pts = xy[cap] if cap.sum() >= 10 else xy
         c = pts.mean(axis=0)
         r = float(np.linalg.norm(pts - c, axis=1).max())
+    if size is not None:
+        r0, h0 = size
+        if side.sum() >= 10:
+            sxy = xy[side]
+            mean = sxy.mean(axis=0)
+            away = mean - np.asarray(view, dtype=float) if view is not None else mean - c
+            n = float(np.linalg.norm(away))
+            start = mean + (away / n * r0 if n > 1e-9 else 0.0)
+            c0 = _circle_of_radius(sxy, r0, start)
+            if float(np.linalg.norm(sxy - c0, axis=1).min()) <= r0 + 0.02:
+                c = c0
+        r = r0
+        bottom = floor if floor is not None else top - h0
+        height = h0
     return Cylinder(
         (float(c[0]), float(c[1]), bottom + height / 2.0), float(r), height, points=len(points)
     )

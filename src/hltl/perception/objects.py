@@ -153,18 +153,26 @@ class DepthClusterBackend:
 
     def _nearest(self, points: npt.NDArray[np.float64]) -> str:
         """The category of the registered object this cluster is near: within 0.3 m on the
-        floor plan and with the registered (grasp) height inside the cluster's height range
+        floor plan, with the registered (grasp) height inside the cluster's height range
         give or take 10 cm — a person's legs below the table are near an object on the plan,
-        not in height."""
+        not in height — and no larger than the category's known cylinder (+3 cm)."""
         if self.scene is None or not self.scene.objects:
             return "object"
         c = points.mean(axis=0)
         lo, hi = float(points[:, 2].min()) - 0.1, float(points[:, 2].max()) + 0.1
+        span = np.ptp(points, axis=0)
         best, label = 0.3, "object"
         for o in self.scene.objects:
             d = float(np.hypot(o.position[0] - c[0], o.position[1] - c[1]))
-            if d < best and lo <= o.position[2] <= hi:
-                best, label = d, o.category
+            if d >= best or not lo <= o.position[2] <= hi:
+                continue
+            size = size_prior(None, o.category)
+            # bigger than the object can be: a link of an arm or a hand near it, not the object
+            if size is not None and (
+                max(span[0], span[1]) > 2 * size[0] + 0.03 or span[2] > size[1] + 0.03
+            ):
+                continue
+            best, label = d, o.category
         return label
 
 
@@ -215,13 +223,36 @@ class Located:
     pixels: int
 
 
+def size_prior(scene: Scene | None, label: str) -> tuple[float, float] | None:
+    """(radius, height) of the object a label names, when its category has a known cylinder
+    (the motion layer's grasp model, which the 3D simulator also renders): a scene id names its
+    object's category, any other label is taken as a category. None when unknown."""
+    from hltl.motion.grasps import CATEGORY_CYLINDERS
+
+    category = label
+    if scene is not None:
+        for o in scene.objects:
+            if o.id == label:
+                category = o.category
+                break
+    return CATEGORY_CYLINDERS.get(category.lower())
+
+
 def localize(
-    frame: Frame, camera: Camera, detections: Sequence[Detection], planes: Sequence[float] = ()
+    frame: Frame,
+    camera: Camera,
+    detections: Sequence[Detection],
+    planes: Sequence[float] = (),
+    scene: Scene | None = None,
+    priors: bool = True,
 ) -> list[Located]:
     """Back-project each object detection and fit its cylinder (people are skipped here).
     ``planes`` are support heights: an object stands on the highest one just below its lowest
-    visible point (a backend that cut the plane off also cut the object's foot)."""
+    visible point (a backend that cut the plane off also cut the object's foot). With
+    ``priors``, a detection whose label names a known category (:func:`size_prior`) is fitted
+    with that radius and height."""
     out: list[Located] = []
+    view = (float(camera.pose[0, 3]), float(camera.pose[1, 3]))
     for det in detections:
         if det.kind != "object":
             continue
@@ -232,7 +263,8 @@ def localize(
             # a foot hidden behind something in front is a few cm, not the floor a table away
             below = [h for h in planes if zmin - 0.15 <= h <= zmin + 0.005]
             floor = max(below) if below else None
-        cyl = fit_cylinder(pts, floor)
+        size = size_prior(scene, det.label) if priors else None
+        cyl = fit_cylinder(pts, floor, size, view)
         if cyl is not None:
             out.append(Located(det, cyl, len(pts)))
     return out

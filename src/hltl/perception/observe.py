@@ -134,6 +134,8 @@ class Perceiver:
         camera: the camera the frames come from.
         backend: object backend name (see :data:`hltl.perception.objects.BACKENDS`).
         people: a person detector of :data:`hltl.perception.people.DETECTORS` or ``none``.
+        skeleton: 3D shoulders, elbows and wrists of tracked people (MediaPipe in its own
+            process; see :mod:`hltl.perception.skeleton`).
     """
 
     def __init__(
@@ -142,6 +144,7 @@ class Perceiver:
         camera: Camera,
         backend: str = "segmentation",
         people: str = "segmentation",
+        skeleton: bool = False,
     ) -> None:
         self.scene = scene
         self.camera = camera
@@ -153,13 +156,20 @@ class Perceiver:
         self.tracker = (
             None
             if people == "none"
-            else PeopleTracker(scene if scene is not None else Scene(robots=()), people)
+            else PeopleTracker(
+                scene if scene is not None else Scene(robots=()), people, skeleton=skeleton
+            )
         )
+
+    def close(self) -> None:
+        """End helper processes (the pose worker)."""
+        if self.tracker is not None:
+            self.tracker.close()
 
     def process(self, frame: Frame) -> Observation:
         t0 = time.perf_counter()
         dets = self.backend.detect(frame, self.camera)
-        located = localize(frame, self.camera, dets, self.backend.planes)
+        located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
         objects, unmatched, ambiguous = match_objects(self.scene, located)
         people = self.tracker.update(frame, self.camera) if self.tracker is not None else []
         seen = {o.id for o in objects}

@@ -28,8 +28,9 @@ def draw_overlay(
     predictor: TrajectoryPredictor | None = None,
     perceiver: Any = None,
 ) -> Any:
-    """A PIL image: the frame with object masks tinted, object and person boxes labelled, and
-    each tracked person's 2 s forecast as dots on the floor."""
+    """A PIL image: the frame with object masks tinted, object and person boxes labelled, each
+    person's skeleton (shoulders, elbows, wrists) when there is one, and each tracked person's
+    2 s forecast as dots on the floor."""
     from PIL import Image, ImageDraw
 
     rgb = frame.rgb.astype(float)
@@ -53,6 +54,22 @@ def draw_overlay(
             f"track {p.track} = {p.person or '?'} {p.score:.2f}",
             fill=(255, 255, 0),
         )
+        if p.skeleton is not None:
+            px = dict(p.skeleton.pixels)
+            for a, b in (
+                ("l_shoulder", "r_shoulder"),
+                ("l_shoulder", "l_elbow"),
+                ("l_elbow", "l_wrist"),
+                ("r_shoulder", "r_elbow"),
+                ("r_elbow", "r_wrist"),
+            ):
+                pa, pb = px.get(a), px.get(b)
+                if pa is not None and pb is not None:
+                    draw.line([pa, pb], fill=(0, 255, 255), width=3)
+            for joint in px.values():
+                if joint is not None:
+                    ju, jv = joint
+                    draw.ellipse([ju - 3, jv - 3, ju + 3, jv + 3], fill=(0, 255, 255))
         if predictor is not None and p.person is not None:
             times = [obs.t + 0.2 * k for k in range(1, 11)]
             try:

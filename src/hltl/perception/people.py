@@ -28,6 +28,7 @@ from hltl.errors import BackendUnavailableError, PerceptionError
 from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
+from hltl.perception.skeleton import PoseWorker, Skeleton
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]
@@ -218,6 +219,7 @@ class PersonObservation:
     position: tuple[float, float, float]
     box: Box
     score: float
+    skeleton: Skeleton | None = None  # with a pose worker, when the pose model found the person
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -226,7 +228,7 @@ class PersonObservation:
             "position": [round(v, 4) for v in self.position],
             "box": [round(v, 1) for v in self.box],
             "score": round(self.score, 3),
-            "skeleton": None,
+            "skeleton": None if self.skeleton is None else self.skeleton.to_dict(),
         }
 
 
@@ -301,6 +303,8 @@ class PeopleTracker:
             the person's pixels, microseconds) or ``mobilenet`` (DeepSORT's MobileNetV2,
             ~100 ms per person on two cores).
         yolo_every: how often ``fused`` runs YOLO (frames).
+        skeleton: run MediaPipe pose on each tracked person in its own process
+            (:mod:`hltl.perception.skeleton`; needs the pose environment).
     """
 
     def __init__(
@@ -310,6 +314,7 @@ class PeopleTracker:
         max_age: int = 15,
         appearance: str = "color",
         yolo_every: int = 10,
+        skeleton: bool = False,
     ) -> None:
         try:
             from deep_sort_realtime.deepsort_tracker import DeepSort  # type: ignore[import-untyped]
@@ -343,6 +348,14 @@ class PeopleTracker:
         self.confirmed = 0  # fused: depth bodies a YOLO box agreed with
         self.added = 0  # fused: YOLO boxes with no depth body, kept
         self.frames = 0
+        self.pose: PoseWorker | None = None
+        if skeleton:
+            self.pose = PoseWorker()
+
+    def close(self) -> None:
+        """End the pose worker, if any."""
+        if self.pose is not None:
+            self.pose.close()
 
     def _yolo(self, frame: Frame, camera: Camera) -> list[PersonBox]:
         assert self.detector is not None
@@ -407,7 +420,7 @@ class PeopleTracker:
             for b, _ in found
         ]
         tracks = self.tracker.update_tracks(raw, embeds=embeds, others=[m for _, m in found])
-        live: dict[str, tuple[tuple[float, float, float], Box, float]] = {}
+        live: dict[str, tuple[tuple[float, float, float], Box, float, Any]] = {}
         for tr in tracks:
             if tr.is_deleted() or tr.time_since_update > 0:
                 continue
@@ -420,9 +433,12 @@ class PeopleTracker:
             if pos is None:
                 continue
             score = float(tr.get_det_conf() or 0.0)
-            live[str(tr.track_id)] = (pos, box, score)
-        people = self.binder.bind({t: (p[0], p[1]) for t, (p, _, _) in live.items()})
-        return [
-            PersonObservation(t, people[t], pos, box, score)
-            for t, (pos, box, score) in sorted(live.items())
-        ]
+            live[str(tr.track_id)] = (pos, box, score, tr.get_det_supplementary())
+        people = self.binder.bind({t: (p[0], p[1]) for t, (p, _, _, _) in live.items()})
+        out = []
+        for t, (pos, box, score, mask) in sorted(live.items()):
+            sk = None
+            if self.pose is not None:
+                sk = self.pose.skeleton(frame.rgb, frame.depth, camera, box, mask)
+            out.append(PersonObservation(t, people[t], pos, box, score, sk))
+        return out

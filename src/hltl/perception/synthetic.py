@@ -100,11 +100,11 @@ def render(
         z = o[2] + t_side * d[2]
         side = ok & (t_side > 0) & (z >= s.base[2]) & (z <= s.base[2] + s.height)
         top_z = s.base[2] + s.height
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore"):  # rays parallel to the top
             t_top = (top_z - o[2]) / d[2]
-        px = o[0] + t_top * d[0] - s.base[0]
-        py = o[1] + t_top * d[1] - s.base[1]
-        top = (t_top > 0) & np.isfinite(t_top) & (px * px + py * py <= s.radius**2)
+            px = o[0] + t_top * d[0] - s.base[0]
+            py = o[1] + t_top * d[1] - s.base[1]
+            top = (t_top > 0) & np.isfinite(t_top) & (px * px + py * py <= s.radius**2)
         hit = np.where(side, t_side, np.inf)
         hit = np.minimum(hit, np.where(top, t_top, np.inf))
         nearer = hit < best

@@ -2,7 +2,8 @@
 RGB-D frames run through :mod:`hltl.perception`, not from the simulator's ground truth.
 
 What the camera cannot know stays with the robot's own senses: hands (encoders), which object
-a gripper holds and where it put an object down (the action it executed). People's positions
+a gripper holds, where it put an object down (the action it executed), and that an object one of
+its running actions handles is being handled (not moved by someone). People's positions
 and resting objects' positions are the camera's belief: the last fused observation; someone the
 tracker has lost stays where last seen and the log says so.
 """
@@ -80,7 +81,13 @@ class CameraSimulator(MujocoSimulator):
         if now + 1e-9 >= self._next_frame:
             obs = self._frame(now)
             self.observations.append(obs)
-            belief = fuse(belief, obs)
+            seen = fuse(belief, obs)
+            # an object a running action of ours handles is the robot's business: the camera
+            # sees it rise in the gripper during a pick, which is not the object moving away
+            for oid, _ in truth.objects:
+                if self._running_on(oid):
+                    seen = seen.with_object(oid, belief.object_status(oid))
+            belief = seen
             self.log.emit(
                 Perception(
                     t=now,

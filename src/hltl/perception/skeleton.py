@@ -1,0 +1,226 @@
+"""Skeletons (shoulders, elbows, wrists in 3D) from MediaPipe pose run in its own process.
+
+MediaPipe 0.10.21 needs numpy < 2, hltl numpy 2: the pose model runs in the pose environment
+(``.venv-pose``, made by ``setup.sh``; or any Python named by ``HLTL_POSE_PYTHON``) as the
+worker script :mod:`hltl.perception.pose_worker`, fed one person crop at a time over a pipe.
+Each 2D joint is lifted to 3D with the depth around it (the nearest half of the person's depth
+in a 7×7 window: the limb, not what is behind it), pushed back along the view by a limb's radius.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+from typing import IO, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.errors import BackendUnavailableError, PerceptionError
+from hltl.perception.frames import Camera
+
+Vec3 = tuple[float, float, float]
+Box = tuple[float, float, float, float]
+# MediaPipe pose landmark indices of the joints the comfort zone uses
+JOINTS: dict[str, int] = {
+    "l_shoulder": 11,
+    "r_shoulder": 12,
+    "l_elbow": 13,
+    "r_elbow": 14,
+    "l_wrist": 15,
+    "r_wrist": 16,
+}
+MIN_VISIBILITY = 0.5
+LIMB_RADIUS = 0.045  # m: a joint's visible surface lies this far in front of the joint
+PAD = 0.15  # crops grow by this share of the box on each side (arms reach out of the box)
+
+
+@dataclass(frozen=True, slots=True)
+class Skeleton:
+    """3D joints of one person (scene frame); a joint is None when not seen well enough."""
+
+    joints: tuple[tuple[str, Vec3 | None], ...]
+    pixels: tuple[tuple[str, tuple[float, float] | None], ...]
+
+    def joint(self, name: str) -> Vec3 | None:
+        return dict(self.joints)[name]
+
+    @property
+    def seen(self) -> int:
+        return sum(p is not None for _, p in self.joints)
+
+    def to_dict(self) -> dict[str, list[float] | None]:
+        return {k: (None if p is None else [round(v, 4) for v in p]) for k, p in self.joints}
+
+
+def pose_python() -> Path:
+    """The pose environment's Python: ``HLTL_POSE_PYTHON`` or ``.venv-pose`` at the checkout's
+    root (beside ``src/``)."""
+    env = os.environ.get("HLTL_POSE_PYTHON")
+    if env:
+        return Path(env)
+    return Path(__file__).resolve().parents[3] / ".venv-pose" / "bin" / "python"
+
+
+def lift(
+    depth: npt.NDArray[np.float32],
+    camera: Camera,
+    uv: tuple[float, float],
+    mask: npt.NDArray[np.bool_] | None = None,
+    radius: int = 3,
+) -> Vec3 | None:
+    """The 3D point of pixel ``uv``: the nearest half of the valid depths around it (inside
+    ``mask`` when given), pushed back along the view ray by LIMB_RADIUS."""
+    h, w = depth.shape
+    u, v = round(uv[0]), round(uv[1])
+    if not (0 <= u < w and 0 <= v < h):
+        return None
+    v0, v1, u0, u1 = (
+        max(v - radius, 0),
+        min(v + radius + 1, h),
+        max(u - radius, 0),
+        min(u + radius + 1, w),
+    )
+    win = depth[v0:v1, u0:u1]
+    ok = win > 0
+    if mask is not None:
+        ok &= mask[v0:v1, u0:u1]
+    if not ok.any():
+        return None
+    z = np.sort(win[ok].astype(float))
+    d = float(np.median(z[: max(1, (len(z) + 1) // 2)])) + LIMB_RADIUS
+    ray = np.array([(uv[0] - camera.cx) / camera.fx, (uv[1] - camera.cy) / camera.fy, 1.0])
+    p = camera.pose[:3, :3] @ (ray * d) + camera.pose[:3, 3]
+    return (float(p[0]), float(p[1]), float(p[2]))
+
+
+MIN_SHOULDER_SPAN = 0.25  # m: shoulders lifted closer than this are one shoulder seen twice
+
+
+def _hide_far_side(sk: Skeleton, camera: Camera) -> Skeleton:
+    """Seen from the side, the pose model still places the far arm (behind the body), and its
+    pixels' depth is the near side's: when the two shoulders land closer than a body is wide,
+    the side farther from the camera is dropped (shoulder, elbow, wrist)."""
+    ls, rs = sk.joint("l_shoulder"), sk.joint("r_shoulder")
+    if ls is None or rs is None:
+        return sk
+    if float(np.linalg.norm(np.subtract(ls, rs))) >= MIN_SHOULDER_SPAN:
+        return sk
+    cam = camera.pose[:3, 3]
+    far = (
+        "l" if np.linalg.norm(np.subtract(ls, cam)) > np.linalg.norm(np.subtract(rs, cam)) else "r"
+    )
+    return Skeleton(
+        tuple((k, None if k.startswith(far) else p) for k, p in sk.joints),
+        tuple((k, None if k.startswith(far) else p) for k, p in sk.pixels),
+    )
+
+
+class PoseWorker:
+    """A MediaPipe pose process; :meth:`skeleton` asks it about one person.
+
+    Raises:
+        BackendUnavailableError: no pose environment, or its worker did not start.
+    """
+
+    def __init__(self, python: Path | None = None) -> None:
+        exe = python if python is not None else pose_python()
+        if not exe.is_file():
+            raise BackendUnavailableError(
+                f"skeletons need the pose environment: {exe} not found (bash setup.sh makes "
+                ".venv-pose with mediapipe 0.10.21 and numpy<2; or set HLTL_POSE_PYTHON)"
+            )
+        worker = Path(__file__).with_name("pose_worker.py")
+        self._proc = subprocess.Popen(
+            [str(exe), str(worker)],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,  # TensorFlow Lite's start-up chatter
+        )
+        hello = self._read()
+        if not hello.get("ready"):
+            self.close()
+            raise BackendUnavailableError(f"pose worker {exe}: did not start ({hello})")
+        self.version = str(hello.get("mediapipe"))
+
+    def _pipes(self) -> tuple[IO[bytes], IO[bytes]]:
+        assert self._proc.stdin is not None and self._proc.stdout is not None
+        return self._proc.stdin, self._proc.stdout
+
+    def _read(self) -> dict[str, Any]:
+        _, out = self._pipes()
+        line = out.readline()
+        if not line:
+            code = self._proc.poll()
+            raise BackendUnavailableError(f"pose worker ended (exit code {code})")
+        reply = json.loads(line)
+        if not isinstance(reply, dict):
+            raise PerceptionError(f"pose worker: unexpected reply {line[:80]!r}")
+        return reply
+
+    def landmarks(self, crop: npt.NDArray[np.uint8]) -> list[tuple[float, float, float]] | None:
+        """MediaPipe's 33 landmarks (u, v, visibility) in the crop's pixels, or None."""
+        inp, _ = self._pipes()
+        h, w = crop.shape[:2]
+        inp.write((json.dumps({"w": w, "h": h}) + "\n").encode())
+        inp.write(np.ascontiguousarray(crop, dtype=np.uint8).tobytes())
+        inp.flush()
+        reply = self._read()
+        if "error" in reply:
+            raise PerceptionError(f"pose worker: {reply['error']}")
+        marks = reply.get("landmarks")
+        if marks is None:
+            return None
+        return [(float(a), float(b), float(c)) for a, b, c in marks]
+
+    def skeleton(
+        self,
+        rgb: npt.NDArray[np.uint8],
+        depth: npt.NDArray[np.float32],
+        camera: Camera,
+        box: Box,
+        mask: npt.NDArray[np.bool_] | None = None,
+    ) -> Skeleton | None:
+        """The skeleton of the person in ``box`` (None: the pose model found nobody)."""
+        h, w = depth.shape
+        u0, v0, u1, v1 = box
+        pu, pv = PAD * (u1 - u0), PAD * (v1 - v0)
+        cu0, cv0 = max(int(u0 - pu), 0), max(int(v0 - pv), 0)
+        cu1, cv1 = min(int(u1 + pu) + 1, w), min(int(v1 + pv) + 1, h)
+        if cu1 - cu0 < 8 or cv1 - cv0 < 8:
+            return None
+        marks = self.landmarks(rgb[cv0:cv1, cu0:cu1])
+        if marks is None:
+            return None
+        joints: list[tuple[str, Vec3 | None]] = []
+        pixels: list[tuple[str, tuple[float, float] | None]] = []
+        for name, k in JOINTS.items():
+            mu, mv, vis = marks[k]
+            if vis < MIN_VISIBILITY:
+                joints.append((name, None))
+                pixels.append((name, None))
+                continue
+            uv = (mu + cu0, mv + cv0)
+            pixels.append((name, uv))
+            # an arm held out may leave the detector's mask: then the window alone decides
+            joints.append((name, lift(depth, camera, uv, mask) or lift(depth, camera, uv)))
+        return _hide_far_side(Skeleton(tuple(joints), tuple(pixels)), camera)
+
+    def close(self) -> None:
+        if self._proc.poll() is None:
+            inp, _ = self._pipes()
+            inp.close()
+            try:
+                self._proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self._proc.kill()
+                self._proc.wait()
+
+    def __enter__(self) -> PoseWorker:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
