@@ -1,4 +1,4 @@
-"""What ``hltl run --bus`` adds: the options, and a simulator factory that drives a node."""
+"""Bus options of `hltl run --bus` and `hltl node`, and the simulator factory that drives a node."""
 
 from __future__ import annotations
 
@@ -31,6 +31,19 @@ def add_bus_arguments(p: argparse.ArgumentParser) -> None:
         type=float,
         default=1.0,
         help="with --bus: seconds to wait for an answer before retrying (3 retries)",
+    )
+
+
+def add_node_arguments(p: argparse.ArgumentParser, listen: str, listen_note: str = "") -> None:
+    """A node's ``--cell``, ``--listen`` (default ``listen``) and ``--connect``."""
+    p.add_argument("--cell", default="default", help="the cell's name in key expressions")
+    p.add_argument(
+        "--listen",
+        default=listen,
+        help=f"Zenoh endpoint to listen on (default: loopback {listen}){listen_note}",
+    )
+    p.add_argument(
+        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
     )
 
 
