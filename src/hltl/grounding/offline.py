@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
@@ -40,11 +40,9 @@ from hltl.grounding.tree import (
     normalise,
     tasks,
 )
-from hltl.spec.hierarchy import spec_from_dict
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.grounding.update import ground_update
+from hltl.spec.hierarchy import HSpec, spec_from_dict
+from hltl.world.scene import Scene
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -58,10 +56,6 @@ class OfflineGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (see update.py)."""
         if running is not None:
-            from hltl.grounding.update import (
-                ground_update,  # import cycle: grounding.update imports this module
-            )
-
             return ground_update(instruction, scene, running, self)
         node = parse_instruction(instruction, scene)
         return Grounding(spec=spec_of(node), entities=entities(node), tokens=TokenUsage())
