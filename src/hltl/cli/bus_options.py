@@ -3,15 +3,13 @@
 from __future__ import annotations
 
 import argparse
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from hltl.bus.driver import BusTiming, bus_cell
+from hltl.bus.driver import BusCell, BusTiming, bus_cell
+from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
 from hltl.errors import HltlError
-
-if TYPE_CHECKING:
-    from hltl.bus.driver import BusCell
-    from hltl.sim.episode import Cell, CellFactory
+from hltl.sim.episode import Cell, CellFactory
 
 
 def add_bus_arguments(p: argparse.ArgumentParser) -> None:
@@ -59,10 +57,6 @@ class BusSimulator:
         self.opened: list[BusCell] = []
         self.perception = None
         if args.bus_perception is not None:
-            from hltl.bus.perception import (
-                PerceptionClient,  # the bus extra (Zenoh), only with --bus-perception
-            )
-
             self.perception = PerceptionClient(self.session, cell=args.cell)
         make = bus_cell(
             self.session,

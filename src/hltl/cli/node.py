@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 import threading
 from pathlib import Path
@@ -14,8 +15,10 @@ from hltl.bus.session import BusConfig, open_session
 from hltl.cli.perceive import frame_options
 from hltl.cli.sim3d import simulator_options
 from hltl.errors import HltlError
+from hltl.motion.cost import motion_models
 from hltl.perception.frames import FrameFolder
 from hltl.perception.observe import Perceiver
+from hltl.sim.simulator import Simulator
 from hltl.world.scene import load_scene
 
 
@@ -179,13 +182,7 @@ def run_perception(args: argparse.Namespace) -> int:
 def _factory(args: argparse.Namespace, scene: Any) -> Any:
     """What makes each episode's world: the discrete-event simulator, or the 3D one."""
     if args.sim == "discrete":
-        from hltl.sim.simulator import Simulator  # only the simulator asked for
-
         if args.motion:
-            import functools
-
-            from hltl.motion.cost import motion_models  # the motion extra, only with --motion
-
             kinematics, cost = motion_models(scene)
             return functools.partial(Simulator, cost=cost, kinematics=kinematics)
         return Simulator

@@ -9,8 +9,9 @@ from pathlib import Path
 from typing import Any
 
 from hltl.bench.latency import DEFAULT_MODEL
-from hltl.cli.bus_options import add_bus_arguments
+from hltl.cli.bus_options import BusSimulator, add_bus_arguments
 from hltl.cli.common import check_option, describe_action
+from hltl.cli.sim3d import simulator_options
 from hltl.errors import HltlError
 from hltl.execution import log as elog
 from hltl.execution.executor import Executor, ExecutorConfig
@@ -152,18 +153,12 @@ def run(args: argparse.Namespace) -> int:
     if args.sim == "mujoco":
         if args.motion:
             raise HltlError("--motion runs with the discrete simulator; drop --sim mujoco")
-        from hltl.cli.sim3d import (
-            simulator_options,  # the sim3d extra (MuJoCo), only with --sim mujoco
-        )
-
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     grounder = make_grounder(args.grounder)
     if args.motion:
         extra = _motion_options(scene, spec, config, predictor)
     bus = None
     if args.bus is not None:
-        from hltl.cli.bus_options import BusSimulator  # the bus extra (Zenoh), only with --bus
-
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
     episode = run_episode(

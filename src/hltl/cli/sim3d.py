@@ -4,15 +4,13 @@ from __future__ import annotations
 
 import functools
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
+from hltl.sim3d.perceived import CameraSimulator
 from hltl.sim3d.record import FrameRecorder
-
-if TYPE_CHECKING:
-    from hltl.sim3d.record import FrameRecorder
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 
 def simulator_options(
@@ -26,10 +24,6 @@ def simulator_options(
         "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
     }
     if perception == "camera":
-        from hltl.sim3d.perceived import (
-            CameraSimulator,  # the sim3d and perception extras, only for camera perception
-        )
-
         extra["simulator"] = functools.partial(CameraSimulator, timing=timing, model=model)
     recorder = None
     if frames is not None:
