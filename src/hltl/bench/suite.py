@@ -35,8 +35,9 @@ from hltl.execution.log import Anticipate, EpisodeEnd, Grounding, LogRecord, Rep
 from hltl.execution.predict import TrajectoryPredictor
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
+from hltl.perception.forecast import stop_places
 from hltl.perception.gru import load_model
-from hltl.perception.predict import GRUPredictor, make_predictor, stop_places
+from hltl.perception.predict import GRUPredictor, make_predictor
 from hltl.planner import plan
 from hltl.sim.dynamic import (
     WALKS,

@@ -17,19 +17,16 @@ import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.bus.codec import StampedPose, dumps, encode_pose, loads
 from hltl.bus.keys import Keys
 from hltl.errors import BusError
+from hltl.perception.frames import Frame
 from hltl.perception.geometry import Cylinder
-from hltl.perception.observe import ObjectObservation, Observation, fuse
+from hltl.perception.observe import ObjectObservation, Observation, Perceiver, fuse
 from hltl.perception.people import PersonObservation
 from hltl.world.state import WorldState
-
-if TYPE_CHECKING:
-    from hltl.perception.frames import Frame
-    from hltl.perception.observe import Observation, Perceiver
 
 
 def observation_to_wire(obs: Observation) -> dict[str, Any]:

@@ -1,20 +1,18 @@
-"""What ``hltl run --bus`` adds: the options, and a simulator factory that drives a node."""
+"""Bus options of `hltl run --bus` and `hltl node`, and the simulator factory that drives a node."""
 
 from __future__ import annotations
 
 import argparse
 import math
 from functools import partial
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from hltl.bus.driver import BusTiming, bus_cell
+from hltl.bus.driver import BusCell, BusTiming, bus_cell
+from hltl.bus.perception import PerceptionClient
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
 from hltl.errors import HltlError
-
-if TYPE_CHECKING:
-    from hltl.bus.driver import BusCell
-    from hltl.sim.episode import Cell, CellFactory
+from hltl.sim.episode import Cell, CellFactory
 
 
 def add_bus_arguments(p: argparse.ArgumentParser) -> None:
@@ -49,6 +47,19 @@ def add_bus_arguments(p: argparse.ArgumentParser) -> None:
     )
 
 
+def add_node_arguments(p: argparse.ArgumentParser, listen: str, listen_note: str = "") -> None:
+    """A node's ``--cell``, ``--listen`` (default ``listen``) and ``--connect``."""
+    p.add_argument("--cell", default="default", help="the cell's name in key expressions")
+    p.add_argument(
+        "--listen",
+        default=listen,
+        help=f"Zenoh endpoint to listen on (default: loopback {listen}){listen_note}",
+    )
+    p.add_argument(
+        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
+    )
+
+
 class BusSimulator:
     """A session to the node named by ``--bus``/``--cell`` and the ``simulator=`` factory that
     drives it; :meth:`close` tells the node the episode ended and closes the session."""
@@ -75,10 +86,6 @@ class BusSimulator:
         self.opened: list[BusCell] = []
         self.perception = None
         if args.bus_perception is not None:
-            from hltl.bus.perception import (
-                PerceptionClient,  # the bus extra (Zenoh), only with --bus-perception
-            )
-
             self.perception = PerceptionClient(self.session, cell=args.cell)
         make = (bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime))(
             self.session,

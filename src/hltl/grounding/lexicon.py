@@ -235,6 +235,11 @@ FILLER_PHRASES: tuple[str, ...] = (
 )
 for _p in FILLER_PHRASES:
     PHRASES[tuple(_p.split())] = "filler"
+# "when you get a sec", "if you have a minute", "whenever you've got time": when, not a condition
+for _sub in ("when", "whenever", "once", "if"):
+    for _you in ("you get", "you have", "you 've got", "you got", "you 've", "you find"):
+        for _time in ("a sec", "a second", "a minute", "a moment", "a chance", "time", "a mo"):
+            PHRASES[tuple(f"{_sub} {_you} {_time}".split())] = "filler"
 
 # "once that is done", "when you're done with that", "after that's finished": the task before
 # is complete, so what follows comes after it.
@@ -706,6 +711,19 @@ class Lexicon:
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
 
+    def misspelt_keyword(self, word: str) -> str | None:
+        """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
+
+        Like names: one edit (a short word: a swap of neighbours), never a common English word,
+        only when one keyword lemma is that near, and never when a scene name is that near too.
+        """
+        key = _keyword_typo(word)
+        if key is None or len(word) < 3:
+            return None
+        if any(len(k) == 1 and _one_edit(word, k[0]) for k in self._phrases):
+            return None
+        return key
+
     # -- descriptions for error messages -----------------------------------------------------
     def listing(self, kind: Kind) -> str:
         sc = self.scene
@@ -802,10 +820,29 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("word", WORDS[tok.low], tok.text))
         elif tok.low in NUMBERS or tok.low.isdigit():
             items.append(Item("word", "num", tok.text))
+        elif (key := lexicon.misspelt_keyword(tok.low)) is not None:
+            lemma = "verb:" + VERBS[key] if key in VERBS else WORDS[key]
+            items.append(Item("word", lemma, tok.text))
         else:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
     return _merge_unknown(items)
+
+
+@functools.cache
+def _keywords() -> tuple[str, ...]:
+    return tuple(k for k in dict.fromkeys([*WORDS, *VERBS]) if len(k) >= 3 and k.isalpha())
+
+
+def _keyword_typo(word: str) -> str | None:
+    """The one keyword a typed word is a typo of, else None (see Lexicon.misspelt_keyword)."""
+    if len(word) < 3 or not word.isalpha() or word in common_words() or word in PHRASE_WORDS:
+        return None
+    near = [k for k in _keywords() if _one_edit(word, k)]
+    if len(word) == 3:  # a short word: only two neighbours swapped ("teh", "adn")
+        near = [k for k in near if len(k) == 3 and sorted(k) == sorted(word)]
+    lemmas = {("verb:" + VERBS[k]) if k in VERBS else WORDS[k] for k in near}
+    return near[0] if len(lemmas) == 1 else None
 
 
 def _merge_unknown(items: list[Item]) -> list[Item]:

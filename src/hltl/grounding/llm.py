@@ -19,17 +19,16 @@ import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.errors import BackendUnavailableError, GroundingError
 from hltl.fileio import clip, quote, read_text
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.prompt import build_messages, repair_message, response_format
+from hltl.grounding.update import ground_update
 from hltl.grounding.validate import AnswerError, check_answer
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.spec.hierarchy import HSpec
+from hltl.world.scene import Scene
 
 DEFAULT_CONFIG_PATH = Path("~/.config/hltl/llm.toml")
 ENV_PREFIX = "HLTL_LLM_"
@@ -301,10 +300,6 @@ class LLMGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
         if running is not None:
-            from hltl.grounding.update import (
-                ground_update,  # import cycle: grounding.update imports this module
-            )
-
             return ground_update(instruction, scene, running, self)
         client = self.client
         formats: dict[str, dict[str, Any]] = {

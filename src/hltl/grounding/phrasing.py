@@ -47,13 +47,17 @@ def _humans(item: Item) -> bool:
 
 def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
+    items = _preambles(items)
     items = _questions(items)
     items = _after_all(items)
     items = _whichever(items)
+    items = _relatives(items, lexicon)
     items = _one_anaphora(items, lexicon)
     items = _demonstratives(items)
     items = _quantifiers(items, lexicon)
     items = _corrections(items)
+    items = _nobody(items)
+    items = _instead_of(items)
     items = _exclusions(items)
     items = _speaker(items, lexicon)
     items = _persons(items, lexicon)
@@ -145,8 +149,9 @@ def _remarks(items: list[Item]) -> list[Item]:
     """'Carol's thirsty, can you hand her the bottle?': a remark about a person, no task.
 
     A person, 'is'/''s', then words the grammar does not know, up to a comma or the end of the
-    sentence, with a request after it: the remark is dropped (the person pronouns in the request
-    were resolved before this pass).
+    sentence: the remark is dropped when a request comes after it, or when it follows the
+    request after a comma ('Give Bob the chips, he's hungry'). The person pronouns were resolved
+    before this pass, so an unclear 'she' was refused already.
     """
     k = 0
     while k < len(items):
@@ -156,7 +161,9 @@ def _remarks(items: list[Item]) -> list[Item]:
             if items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
                 j += 1
                 n = j
-                while n < len(items) and (items[n].kind == "unknown" or _is(items[n], "det")):
+                while n < len(items) and (
+                    items[n].kind == "unknown" or _is(items[n], "det", "filler", "aux")
+                ):
                     n += 1
                 said = any(x.kind == "unknown" for x in items[j:n])
                 if said and n < len(items) and items[n].kind == "punct":
@@ -164,8 +171,60 @@ def _remarks(items: list[Item]) -> list[Item]:
                     if any(x.kind == "ent" for x in rest):
                         items = items[:k] + rest
                         continue
+                ends = n == len(items) or (items[n].kind == "punct" and items[n].lemma in _END)
+                after_request = k > 1 and _is(items[k - 1], ",") and _has_request(items[: k - 1])
+                if said and ends and after_request:
+                    items = items[: k - 1] + items[n:]
+                    continue
         k += 1
     return items
+
+
+def _has_request(items: list[Item]) -> bool:
+    """Whether the last sentence of ``items`` names anything."""
+    start = _sentences(items)[-1][0]
+    return any(x.kind == "ent" for x in items[start:])
+
+
+# words a remark without a request may hold ("Sorry to bother you, but …", "I know you're busy,
+# but …"): no name, no verb of the grammar, nothing that negates, conditions or orders
+_REMARK_WORDS = frozenset({"filler", "det", "subject", "aux", "to", "correct", "for", "on"})
+
+
+def _preambles(items: list[Item]) -> list[Item]:
+    """'Sorry to bother you, but could you give Carol the apple?': the opening is no task.
+
+    At the start of a sentence, words up to a comma with at least one the grammar does not know
+    and nothing it reads as a name, verb, negation, condition, order or pronoun other than the
+    speaker, followed by a request in the same sentence: dropped with a 'but' after the comma.
+    """
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        comma = next((k for k, x in enumerate(sent) if _is(x, ",")), None)
+        if comma is not None and comma > 0:
+            head = sent[:comma]
+            plain = all(
+                x.kind == "unknown"
+                or _is(x, *_REMARK_WORDS)
+                or (x.lemma == "pronoun" and x.text.lower() in _SPEAKER)
+                for x in head
+            )
+            rest = sent[comma + 1 :]
+            if (
+                plain
+                and any(x.kind == "unknown" for x in head)
+                and any(x.kind == "ent" for x in rest)
+            ):
+                while rest and (
+                    _is(rest[0], ",") or (_is(rest[0], "and") and rest[0].text.lower() == "but")
+                ):
+                    rest = rest[1:]
+                sent = rest
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
 
 
 def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
@@ -212,6 +271,57 @@ def _whichever(items: list[Item]) -> list[Item]:
             skipping = False
         if not skipping:
             out.append(it)
+    return out
+
+
+_BE = frozenset({"is", "'s", "are", "'re", "was", "were"})
+
+
+def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'a mug that isn't red', 'the mug which is blue': keep the objects the word describes.
+
+    After an object mention, 'that'/'which' + 'is' [not] + a word that names some of those
+    objects with their category ('red' → 'red mug'): the mention keeps those (or, negated, the
+    others). A word that names none of them is refused rather than ignored.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        out.append(it)
+        k += 1
+        if not _objects(it) or k + 2 >= len(items):
+            continue
+        rel = items[k]
+        if not (rel.kind == "word" and rel.text.lower() in ("that", "which")):
+            continue
+        j = k + 1
+        if items[j].text.lower() not in _BE:
+            continue
+        j += 1
+        negated = (
+            j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
+        )
+        if negated:
+            j += 1
+        if j >= len(items) or items[j].kind != "unknown" or " " in items[j].lemma:
+            continue
+        word = items[j]
+        named: set[str] = set()
+        for cat in _categories(it, lexicon):
+            found = lexicon.lookup(f"{word.lemma} {cat}")
+            if found is not None:
+                named |= {r.id for r in found}
+        ids = {r.id for r in it.refs}
+        if not named & ids:
+            raise GroundingError(
+                f"no {it.text!r} is {word.text!r} in the scene; {lexicon.listing('object')}"
+            )
+        keep = ids - named if negated else ids & named
+        if not keep:
+            raise GroundingError(f"no {it.text!r} is left that is not {word.text!r}")
+        out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in keep))
+        k = j + 1
     return out
 
 
@@ -304,6 +414,8 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if _is(it, "other"):
             prev = next((x for x in reversed(out) if x.quant == "some"), None)
             if prev is None:
+                prev = _choice_of_two(out, k)  # "A the cup or the bottle and B the other"
+            if prev is None:
                 raise GroundingError(
                     f"{it.text!r} needs a choice before it, as in 'one of the mugs … the other'"
                 )
@@ -356,6 +468,44 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         k += 1
     # a "some" mention with one ref is that object; an indefinite singular stays a choice
     return out
+
+
+def _choice_of_two(out: list[Item], at: int) -> Item | None:
+    """'the cup or the bottle' as the last objects named before 'the other': one choice.
+
+    Rewrites ``out`` in place ('[either] X or Y' → one mention of X and Y that takes one of
+    them) and returns that mention, else None. Only two single objects next to each other
+    across 'or' (articles between), so the 'or' joins objects, not clauses.
+    """
+    named = [n for n, x in enumerate(out) if _objects(x)]
+    if len(named) < 2:
+        return None
+    j, i = named[-1], named[-2]
+    between = out[i + 1 : j]
+    ors = [x for x in between if _is(x, "or")]
+    if len(ors) != 1 or not all(_is(x, "or", "det") for x in between):
+        return None
+    one, two = out[i], out[j]
+    ids = {r.id for r in one.refs} | {r.id for r in two.refs}
+    if len({r.id for r in one.refs}) != 1 or len({r.id for r in two.refs}) != 1 or len(ids) != 2:
+        return None
+    if one.quant or two.quant:
+        return None
+    start = i
+    while start > 0 and _is(out[start - 1], "det"):
+        start -= 1
+    if start > 0 and _is(out[start - 1], "either"):
+        start -= 1
+    choice = Item(
+        "ent",
+        f"{one.lemma} or {two.lemma}",
+        f"{one.text} or {two.text}",
+        (*one.refs, *two.refs),
+        quant="some",
+        group=at,
+    )
+    out[start : j + 1] = [Item("word", "det", "the"), choice] if start < i else [choice]
+    return choice
 
 
 def _quant_word(it: Item) -> tuple[str, int]:
@@ -530,6 +680,124 @@ def _joined(names: list[Item]) -> list[Item]:
             out.append(Item("word", "and", "and"))
         out.append(n)
     return out
+
+
+def _clause_end(items: list[Item], k: int) -> bool:
+    return k >= len(items) or _is(items[k], ",", "and", *_END)
+
+
+def _nobody(items: list[Item]) -> list[Item]:
+    """'Carol gets nothing, Bob gets the apple', 'give the cup to Bob, not to Carol'.
+
+    A person said to get nothing, or set against the recipient after a comma ('not (to) P'),
+    adds no task: the words are dropped. That person must then receive nothing else in the
+    instruction, or it contradicts itself and is refused.
+    """
+    out: list[Item] = []
+    none: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        # "<P> gets / should get / wants nothing" as a whole clause
+        if _humans(it) and (k == 0 or _is(items[k - 1], ",", "and", *_END)):
+            j = k + 1
+            while j < len(items) and _is(items[j], "aux", "filler"):
+                j += 1
+            if (
+                j + 1 < len(items)
+                and items[j].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
+                and items[j + 1].text.lower() == "nothing"
+                and _clause_end(items, j + 2)
+                and any(x.kind == "ent" for x in items[:k] + items[j + 2 :])
+            ):
+                none.append(it)
+                while out and _is(out[-1], ",", "and"):
+                    out.pop()
+                k = j + 2
+                while k < len(items) and _is(items[k], ",", "and"):
+                    k += 1
+                continue
+        # ", not (to|for) P" after a request naming another person (the contrast after a
+        # pause; "… but not to Carol" stays refused as a negation)
+        if _is(it, "not") and it.text.lower() == "not":
+            j = k + 1
+            while j < len(items) and _is(items[j], "to", "for"):
+                j += 1
+            said = [x for x in out if _humans(x)]
+            if (
+                j < len(items)
+                and _humans(items[j])
+                and _clause_end(items, j + 1)
+                and out
+                and _is(out[-1], ",")
+                and said
+            ):
+                none.append(items[j])
+                while out and _is(out[-1], ","):
+                    out.pop()
+                k = j + 1
+                continue
+        out.append(it)
+        k += 1
+    refused = {r.id for x in none for r in x.refs}
+    for x in out:
+        if _humans(x) and {r.id for r in x.refs} & refused:
+            raise GroundingError(
+                f"{x.text!r} is to get nothing and something in the same instruction: say which"
+            )
+    return out
+
+
+def _instead_of(items: list[Item]) -> list[Item]:
+    """'Give Carol the apple instead of the cup': without a running task, the new one alone.
+
+    'instead of' then names of one kind (or a clause up to a comma): dropped when the rest of
+    the sentence names something of that kind to do instead, and not the replaced names.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        if not _is(it, "instead_of"):
+            out.append(it)
+            k += 1
+            continue
+        j = k + 1
+        while j < len(items) and not _is(items[j], ",", *_END):
+            j += 1
+        dropped = items[k + 1 : j]
+        names = [x for x in dropped if x.kind == "ent"]
+        if not names or not all(
+            x.kind == "ent"
+            or _is(x, "det", "and", "or", "it", "them", "pronoun")
+            or _is_verb_item(x)
+            for x in dropped
+        ):
+            out.append(it)  # refused by the grammar: what does it replace?
+            k += 1
+            continue
+        kinds = {r.kind for x in names for r in x.refs}
+        ids = {r.id for x in names for r in x.refs}
+        start = max(
+            (n + 1 for n, x in enumerate(out) if x.kind == "punct" and x.lemma in _END), default=0
+        )
+        stop = next((n for n in range(j, len(items)) if _is(items[n], *_END)), len(items))
+        rest = out[start:] + items[j:stop]
+        others = [x for x in rest if x.kind == "ent"]
+        if not any({r.kind for r in x.refs} & kinds for x in others) or any(
+            {r.id for r in x.refs} & ids for x in others
+        ):
+            out.append(it)
+            k += 1
+            continue
+        if out and _is(out[-1], ",") and j < len(items) and _is(items[j], ","):
+            j += 1  # "X, instead of Y, to Z"
+        k = j + 1 if not out and j < len(items) and _is(items[j], ",") else j
+    return out
+
+
+def _is_verb_item(item: Item) -> bool:
+    return item.kind == "word" and item.lemma.startswith("verb:")
 
 
 def _exclusions(items: list[Item]) -> list[Item]:

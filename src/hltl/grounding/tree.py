@@ -10,13 +10,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal, TypeAlias
+from typing import Literal, TypeAlias
 
 from hltl.errors import GroundingError
+from hltl.spec.hierarchy import HSpec
 from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
 
 Op: TypeAlias = Literal["and", "or", "seq"]
 TaskKind: TypeAlias = Literal["deliver", "place"]

@@ -29,7 +29,6 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from hltl.errors import GroundingError, SpecValidationError
 from hltl.fileio import quote
@@ -46,16 +45,13 @@ from hltl.grounding.tree import (
     recognise_task,
 )
 from hltl.spec.automata import rename_atoms
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict
 
 # carry_over moved to hltl.spec.monitor (a monitor operation); the old import path still works
 from hltl.spec.monitor import carry_over as carry_over
 from hltl.spec.printer import to_string
 from hltl.spec.syntax import Atom
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 _THEN = re.compile(
     r"^\s*(?:and\s+)?(?:then|after\s+that|afterwards?|next|finally|later|"

@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hltl.perception.predict import DT, F64, T_OBS, T_PRED, TrajectoryPredictor
+from hltl.perception.forecast import DT, F64, T_OBS, T_PRED
+from hltl.perception.predict import TrajectoryPredictor
 
 HORIZONS = (1.0, 2.0)
 MOVING = 0.1  # metres a window must span to count

@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError
-from hltl.perception.predict import DT, F64, T_OBS, T_PRED, fit_velocity, goal_forecast
+from hltl.perception.forecast import DT, F64, T_OBS, T_PRED, fit_velocity, goal_forecast
 from hltl.perception.walks import generate_walks
 
 K_STOPS = 6  # nearest stopping places the model sees

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hltl.perception.predict import DT, F64, stop_places
+from hltl.perception.forecast import DT, F64, stop_places
 from hltl.world.scene import Human, Robot, Scene
 
 LAYOUTS = ((1, 1), (1, 2), (1, 3), (1, 4), (2, 2))  # (rows, cols) of robots

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
+from typing import Any, Protocol, runtime_checkable
 
 from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import Executor, ExecutorConfig, Planner
@@ -21,6 +21,7 @@ from hltl.execution.log import (
     EventLog,
     LogRecord,
 )
+from hltl.execution.predict import TrajectoryPredictor
 from hltl.execution.tick import ExecStatus
 from hltl.grounding import make_grounder
 from hltl.grounding.base import Grounder
@@ -31,9 +32,6 @@ from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
-
-if TYPE_CHECKING:
-    from hltl.execution.predict import TrajectoryPredictor
 
 
 @dataclass(frozen=True, slots=True)

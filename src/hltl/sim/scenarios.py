@@ -16,17 +16,14 @@ from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import yaml
 
 from hltl.errors import SceneError, UnknownEntityError
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.geometry import can_meet, context_label, human_in_workspace, reaches
 from hltl.world.scene import Scene, scene_from_dict
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
 
 LAYOUTS = ("single", "pair", "line", "square", "grid")
 

@@ -21,6 +21,7 @@ from hltl.execution import log
 from hltl.execution.log import LogRecord
 from hltl.grounding import make_grounder
 from hltl.sim.episode import run_episode
+from hltl.sim.events import EventSchedule
 from hltl.sim3d.camera import CameraRenderer
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.gl import mujoco
@@ -35,13 +36,11 @@ from hltl.viz.demo import (
     first_makespan,
     story,
 )
+from hltl.world.scene import Scene
 
 if TYPE_CHECKING:
     from PIL import Image
 
-    from hltl.sim.events import EventSchedule
-    from hltl.viz.demo import DemoResult
-    from hltl.world.scene import Scene
 
 VIEW_W, VIEW_H = 560, 420
 STRIP_H = 154  # the frame height (34 + 420 + 154) is a multiple of 16, as video codecs like

@@ -36,6 +36,7 @@ from hltl.grounding.llm import (
     make_openai_client,
     usage_of,
 )
+from hltl.grounding.local import default_model_path, load_llama
 from hltl.skills.library import Action
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -408,11 +409,6 @@ def default_chat() -> ChatFn:
     if missing is not None:
         raise BackendUnavailableError(f"SMART-LLM-R cannot run: {missing}")
     if os.environ.get("HLTL_LOCAL_MODEL") and not os.environ.get("HLTL_LLM_BASE_URL"):
-        from hltl.grounding.local import (  # only the grounder asked for (the local extra)
-            default_model_path,
-            load_llama,
-        )
-
         llm = load_llama(default_model_path())
 
         def local(messages: list[dict[str, str]]) -> Any:

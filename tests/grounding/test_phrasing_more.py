@@ -1,0 +1,251 @@
+"""Session-4 phrasings of issue 12: keyword typos, remarks, contrast, 'instead of', 'the other'
+after an 'or', 'then, once …', relative clauses and 'it' in a trailing 'once A has it'."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.lexicon import Lexicon, common_words
+from hltl.grounding.offline import parse_instruction, spec_of
+from hltl.grounding.tree import Node
+from hltl.spec.equivalence import counterexample
+from hltl.world.scene import Scene, load_scene
+
+ROOT = Path(__file__).resolve().parents[2]
+CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
+SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
+OBJECTS = ["cup", "bottle", "chips", "apple"]  # named alike in both scenes
+PEOPLE = {"A": "Alice", "B": "Bob", "C": "Carol"}
+
+
+def _means(text: str, want: str, scene: Scene = CELL) -> None:
+    got = parse_instruction(text, scene)
+    assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
+        f"{text!r} -> {show_tree(got)}, want {want}"
+    )
+
+
+def _tree(text: str, scene: Scene = CELL) -> Node | None:
+    try:
+        return parse_instruction(text, scene)
+    except GroundingError:
+        return None
+
+
+# -- typos of keywords ----------------------------------------------------------------------------
+
+
+def _swaps(word: str) -> list[str]:
+    return sorted(
+        {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)} - {word}
+    )
+
+
+SENTENCE = "give Bob the cup and Carol the apple"
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.sampled_from(["give", "the", "and"]), st.data())
+def test_a_typo_of_a_keyword_means_it_or_nothing(word: str, data: st.DataObject) -> None:
+    """A swap of neighbours in 'give', 'the' or 'and': the same spec, or a refusal."""
+    typo = data.draw(st.sampled_from(_swaps(word)))
+    words = SENTENCE.split()
+    at = data.draw(st.sampled_from([k for k, w in enumerate(words) if w == word]))
+    words[at] = typo
+    got = _tree(" ".join(words))
+    assert got is None or got == parse_instruction(SENTENCE, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("give alice teh cup", "cup>A"),
+        ("gvie Bob the chips", "chips>B"),
+        ("Give Bob the chips adn Carol the apple", "chips>B & apple>C"),
+    ],
+)
+def test_keyword_typos_examples(text: str, want: str) -> None:
+    _means(text, want)
+
+
+def test_a_keyword_typo_is_never_a_common_word_or_near_two_keywords() -> None:
+    lex = Lexicon.of(CELL)
+    assert "fro" in common_words() and lex.misspelt_keyword("fro") is None  # a word, not "for"
+    assert lex.misspelt_keyword("hnad") is None  # "hand" and "had" are both one edit away
+    assert lex.misspelt_keyword("cpu") is None  # a name ("cup") is as near: not a keyword
+    assert lex.misspelt_keyword("teh") == "the"
+
+
+# -- remarks, contrast, nobody, instead of --------------------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.sampled_from(OBJECTS),
+    st.sampled_from(["A", "B", "C"]),
+    st.sampled_from(
+        [
+            "Sorry to bother you, but {}",
+            "I know you're busy, but {}",
+            "{}, {p} is hungry",
+            "{}, {p}'s been waiting ages",
+        ]
+    ),
+)
+def test_remarks_add_nothing(obj: str, who: str, wrap: str) -> None:
+    plain = f"give {PEOPLE[who]} the {obj}"
+    _means(wrap.format(plain, p=PEOPLE[who]), f"{obj}>{who}")
+
+
+def test_a_remark_with_an_unclear_pronoun_is_refused() -> None:
+    with pytest.raises(GroundingError, match="could mean"):
+        parse_instruction("Give Bob and Carol the chips, she's hungry", CELL)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.sampled_from(OBJECTS),
+    st.sampled_from(["A", "B", "C"]),
+    st.sampled_from(["A", "B", "C"]),
+    st.sampled_from(
+        [
+            "give the {o} to {p}, not to {q}",
+            "give the {o} to {p}, not {q}",
+            "{q} gets nothing, {p} gets the {o}",
+            "give {p} the {o} and {q} gets nothing",
+        ]
+    ),
+)
+def test_a_person_set_against_the_recipient_gets_nothing(
+    obj: str, who: str, other: str, form: str
+) -> None:
+    text = form.format(o=obj, p=PEOPLE[who], q=PEOPLE[other])
+    if who == other:
+        with pytest.raises(GroundingError, match="get nothing and something"):
+            parse_instruction(text, CELL)
+    else:
+        _means(text, f"{obj}>{who}")
+
+
+def test_negations_without_a_contrast_stay_refused() -> None:
+    for text in (
+        "Carol gets nothing",
+        "Don't give Carol anything",
+        "Give Bob the chips but not to Carol",
+    ):
+        with pytest.raises(GroundingError):
+            parse_instruction(text, CELL)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.sampled_from(OBJECTS),
+    st.sampled_from(OBJECTS),
+    st.sampled_from(["A", "B", "C"]),
+    st.sampled_from(
+        [
+            "give {p} the {x} instead of the {y}",
+            "instead of the {y}, give {p} the {x}",
+            "give {p} the {x} instead of giving them the {y}",
+        ]
+    ),
+)
+def test_instead_of_without_a_running_task(x: str, y: str, who: str, form: str) -> None:
+    text = form.format(p=PEOPLE[who], x=x, y=y)
+    if x == y:
+        assert _tree(text) is None
+    else:
+        _means(text, f"{x}>{who}")
+
+
+# -- 'the other' after an 'or' --------------------------------------------------------------------
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.permutations(OBJECTS),
+    st.permutations(["A", "B"]),
+    st.sampled_from(
+        [
+            "Give Person {p} the {x} or the {y} and Person {q} the other",
+            "Give Person {p} either the {x} or the {y}, and Person {q} the other one",
+        ]
+    ),
+)
+def test_the_other_after_an_or_of_two(objs: list[str], people: list[str], form: str) -> None:
+    x, y = objs[:2]
+    p, q = people
+    text = form.format(p=p, q=q, x=x, y=y)
+    _means(text, f"({x}>{p} & {y}>{q}) | ({y}>{p} & {x}>{q})", SQUARE)
+
+
+def test_the_other_after_a_list_or_clauses_is_refused() -> None:
+    for text in (
+        "Give Person A the cup and the bottle and Person B the other",
+        "Give Person A the cup or Person B the bottle and Person A the other",
+    ):
+        with pytest.raises(GroundingError, match="needs a choice"):
+            parse_instruction(text, SQUARE)
+
+
+# -- 'then, once …' and 'once A has it' -----------------------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.permutations(OBJECTS), st.permutations(["A", "B"]))
+def test_once_the_person_has_it_refers_to_what_they_get(objs: list[str], people: list[str]) -> None:
+    x, y = objs[:2]
+    p, q = people
+    _means(
+        f"Give Person {p} the {x}, and Person {q} the {y} once Person {p} has it",
+        f"{x}>{p} ; {y}>{q}",
+        SQUARE,
+    )
+    _means(
+        f"Give Person {p} the {x} and then, once Person {p} has it, give Person {q} the {y}",
+        f"{x}>{p} ; {y}>{q}",
+        SQUARE,
+    )
+
+
+def test_then_once_another_condition_waits_for_both() -> None:
+    _means(
+        "Give Bob the chips and then, once Carol has the cup, give Alice the apple",
+        "(chips>B & cup>C) ; apple>A",
+    )
+    _means(
+        "Please give Bob the chips and then, once he has them, give Carol the apple",
+        "chips>B ; apple>C",
+    )
+    with pytest.raises(GroundingError, match="unclear where"):
+        parse_instruction("Give Bob the chips, then once he has them give Carol the apple", CELL)
+
+
+# -- relative clauses -----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Carol a mug that isn't red", "mug_blue>C"),
+        ("Give Carol the mug that is blue", "mug_blue>C"),
+        ("Give Carol a mug which is not blue", "mug_red>C"),
+        ("give Bob the mugs that aren't red", "mug_blue>B"),
+    ],
+)
+def test_a_relative_clause_picks_the_objects(text: str, want: str) -> None:
+    _means(text, want)
+
+
+@pytest.mark.parametrize(
+    "text", ["Give Carol the mug that's green", "Give Carol the cup that isn't red"]
+)
+def test_a_relative_clause_naming_none_is_refused(text: str) -> None:
+    with pytest.raises(GroundingError, match="no '"):
+        parse_instruction(text, CELL)
