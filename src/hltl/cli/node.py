@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import functools
+import math
 import sys
 import threading
 from pathlib import Path
@@ -52,6 +53,13 @@ def register(sub: Any) -> None:
     s.add_argument(
         "--episodes", type=int, help="exit after serving this many episodes (default: run on)"
     )
+    s.add_argument(
+        "--rate",
+        type=float,
+        metavar="HZ",
+        help="in real-time episodes ('hltl run --bus --realtime'), tick and publish this many "
+        "times per cell second (default: as often as the executor ticks)",
+    )
     s.set_defaults(func=run_sim)
     c = nsub.add_parser(
         "perception",
@@ -82,6 +90,8 @@ def run_sim(args: argparse.Namespace) -> int:
 
     if args.episodes is not None and args.episodes < 1:
         raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
+    if args.rate is not None and not (math.isfinite(args.rate) and args.rate > 0):
+        raise HltlError(f"--rate must be a positive number of ticks per second, got {args.rate!r}")
     scene = load_scene(args.scene)
     factory = _factory(args, scene)
     console = Console(stderr=True, highlight=False)
@@ -105,6 +115,7 @@ def run_sim(args: argparse.Namespace) -> int:
                 stop=stop,
                 factory=factory,
                 on_ready=ready,
+                period=None if args.rate is None else 1.0 / args.rate,
             )
         except KeyboardInterrupt:
             console.print("stopped")

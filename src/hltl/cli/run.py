@@ -149,6 +149,8 @@ def run(args: argparse.Namespace) -> int:
     if args.motion:
         extra = _motion_options(scene, spec, config, predictor)
     bus = None
+    if args.bus is None and args.realtime is not None:
+        raise HltlError("--realtime runs the cell on a node's clock: add --bus zenoh")
     if args.bus is not None:
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
