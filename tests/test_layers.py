@@ -158,6 +158,7 @@ LONG_DOCSTRINGS = {
     "bench/perception.py",
     "bus/driver.py",
     "bus/node.py",
+    "bus/realtime.py",
     "perception/bodies.py",
     "perception/objects.py",
     "perception/observe.py",
