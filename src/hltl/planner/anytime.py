@@ -493,13 +493,19 @@ class _OrderWalk:
         self.gls = gls
         self.router = _Router(s, node, gls)
         self.next_order = _orders(s, node, gls, seed=1)
-        # the critical-first order (already tried by ``construct``): the walk starts there
+        # the walk starts at the critical-first order
         self.current = self.next_order()
         self.cost: float = math.inf
         self.last: int | None = None  # the goal that finished last in the current plan
         self.rng = random.Random(2)
         self.best: _Found | None = None
         self.tried = 0
+        if self.current:
+            steps = self.router.route_all(self.current)
+            self.best = None if steps is None else self.router.replay(steps)
+            if self.best is not None:
+                self.cost = self.best[0]
+                self.last = self.router.last_goal
 
     def step(self) -> None:
         self.tried += 1
