@@ -19,6 +19,7 @@ Each pass either rewrites a phrasing into the form the parser reads, or refuses 
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 from hltl.errors import GroundingError
@@ -61,6 +62,7 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     items = _exclusions(items)
     items = _speaker(items, lexicon)
     items = _persons(items, lexicon)
+    items = _places(items, lexicon)
     items = _remarks(items)
     items = _datives(items)
     return items
@@ -158,7 +160,9 @@ def _remarks(items: list[Item]) -> list[Item]:
         at_start = k == 0 or (items[k - 1].kind == "punct")
         if at_start and _humans(items[k]) and k + 2 < len(items):
             j = k + 1
-            if items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
+            while j + 1 < len(items) and _is(items[j], "and", ",") and _humans(items[j + 1]):
+                j += 2  # "Alice and Carol are thirsty, …"
+            if j < len(items) and items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
                 j += 1
                 n = j
                 while n < len(items) and (
@@ -299,6 +303,9 @@ def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if items[j].text.lower() not in _BE:
             continue
         j += 1
+        if _is(items[j], "near", "nearest"):
+            k = j  # "the mug that's nearest to Carol": a place, read by _places
+            continue
         negated = (
             j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
         )
@@ -323,6 +330,129 @@ def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in keep))
         k = j + 1
     return out
+
+
+# how much nearer the nearest must be than the next ("the mug nearest to Carol"): closer calls
+# are refused, since positions are where the objects started and a person judges by eye
+_CLEARLY_NEARER = 0.75
+
+
+def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'the mug nearest to Carol', 'the mug next to the bottle', 'the mug by the shelf'.
+
+    After an object mention: 'nearest/closest (to)' or 'near/next to/close to/beside/by', then a
+    person, surface or object. Of the objects the mention names (not counting the one it is
+    measured from), the one nearest to it in the scene (where the objects start) is meant; it
+    must be clearly nearer than the next (within 3/4 of its distance), else refused. A
+    mention naming one object keeps it.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        out.append(it)
+        k += 1
+        if _objects(it) and k < len(items) and _is(items[k], "on") and _given(out[:-1]):
+            k = _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
+            continue
+        if not _objects(it) or k >= len(items) or not _is(items[k], "near", "nearest"):
+            continue
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
+            what = items[j].text if j < len(items) else "nothing"
+            raise GroundingError(
+                f"{items[k].text!r} after {it.text!r} needs one person, surface or object, "
+                f"not {what!r}"
+            )
+        anchor = items[j].refs[0]
+        where = _position(anchor.kind, anchor.id, lexicon)
+        ids = [i for i in dict.fromkeys(r.id for r in it.refs) if i != anchor.id]
+        if not ids:
+            raise GroundingError(f"{it.text!r} {items[k].text} itself names nothing else")
+        if len(ids) > 1:
+            dist = sorted(
+                (math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids
+            )
+            (d1, best), (d2, second) = dist[0], dist[1]
+            if d1 >= _CLEARLY_NEARER * d2:
+                raise GroundingError(
+                    f"'{it.text} {items[k].text} {items[j].text}': {best} and {second} are about "
+                    "as near; name the object"
+                )
+            ids = [best]
+        refs = tuple(r for r in it.refs if r.id in ids)
+        single = len(ids) == 1
+        out[-1] = replace(
+            it,
+            refs=refs,
+            quant="" if single and it.quant == "some" else it.quant,
+            group=-1 if single else it.group,
+        )
+        k = j + 1
+    return out
+
+
+def _given(before: list[Item]) -> bool:
+    """Whether the words before an object are 'give/hand/pass … <person> [the]'."""
+    n = len(before)
+    while n > 0 and _is(before[n - 1], "det"):
+        n -= 1
+    if n < 2 or not _humans(before[n - 1]):
+        return False
+    verb = before[n - 2]
+    return verb.kind == "word" and verb.lemma in ("verb:give", "verb:hand", "verb:pass")
+
+
+def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    """'give Bob the cup on the shelf': the objects of the mention that start on the surface."""
+    it = out[-1]
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
+    if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
+        return k  # not a surface: left to the grammar (which refuses a second recipient)
+    surface = next(x for x in lexicon.scene.surfaces if x.id == items[j].refs[0].id)
+    (cx, cy), (sx, sy) = surface.center[:2], surface.size
+    on = [
+        o.id
+        for o in lexicon.scene.objects
+        if o.id in {r.id for r in it.refs}
+        and abs(o.position[0] - cx) <= sx / 2
+        and abs(o.position[1] - cy) <= sy / 2
+    ]
+    if not on:
+        raise GroundingError(
+            f"no {it.text!r} is on the {items[j].text!r} in the scene (where the objects "
+            f"start); {lexicon.listing('object')}"
+        )
+    n = j + 1
+    while n < len(items) and _is(items[n], "and", "or", ",", "det"):
+        n += 1
+    if n > j + 1 and n < len(items) and _is_surface(items[n]):
+        raise GroundingError(
+            f"'{it.text} on the {items[j].text} …' names several surfaces: say which objects, "
+            "one surface at a time"
+        )
+    out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in on))
+    return j + 1
+
+
+def _is_surface(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "surface" for r in item.refs)
+
+
+def _position(kind: str, ident: str, lexicon: Lexicon) -> tuple[float, ...]:
+    sc = lexicon.scene
+    if kind == "object":
+        return tuple(next(o.position for o in sc.objects if o.id == ident))
+    if kind == "human":
+        return tuple(next(h.position for h in sc.humans if h.id == ident))
+    if kind == "surface":
+        return tuple(next(s.center for s in sc.surfaces if s.id == ident))
+    raise GroundingError(f"{ident!r} is a robot: describe objects by people, surfaces or objects")
 
 
 def _categories(item: Item, lexicon: Lexicon) -> list[str]:
@@ -933,7 +1063,20 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             )
         if it.kind == "word" and it.lemma == "pronoun" and low == "them":
             nxt = items[k + 1] if k + 1 < len(items) else None
-            prev = out[-1] if out else None
+            p = len(out)
+            while p > 0 and _is(out[p - 1], "filler"):
+                p -= 1  # "for each of them"
+            prev = out[p - 1] if p > 0 else None
+            people = (
+                _people_list(out[: p - 1]) if prev is not None and _is(prev, "to", "for") else None
+            )
+            if people is not None:
+                group, dative = people
+                if dative:
+                    del out[p - 1 :]  # "give Alice and Carol a mug for each of them": said already
+                else:
+                    out.extend(group)  # "…, get a mug for each of them": Alice and Carol
+                continue
             if (nxt is not None and nxt.kind == "ent") or (
                 prev is not None and _is(prev, "to", "for")
             ):
@@ -946,6 +1089,35 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
+    """The last list of two or more people before 'for/to them' ('Alice and Carol'), and
+    whether only objects (or 'would like') come between it and 'them': then the list names the
+    recipients already ('give Alice and Carol a mug …', 'A and B would like a mug …')."""
+    end = next((n for n in range(len(before) - 1, -1, -1) if _humans(before[n])), None)
+    if end is None:
+        return None
+    start = end
+    while (
+        start >= 2
+        and _is(before[start - 1], "and", ",")
+        and before[start - 1].text.lower() != "but"
+        and _humans(before[start - 2])
+    ):
+        start -= 2
+    group = before[start : end + 1]
+    ids = [r.id for x in group if _humans(x) for r in x.refs]
+    if len(ids) < 2 or len(set(ids)) != len(ids):
+        return None
+    between = before[end + 1 :]
+    dative = bool(between) and all(
+        _objects(x)
+        or _is(x, "det", "filler", "aux")
+        or x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have")
+        for x in between
+    )
+    return group, dative
 
 
 def _or(ids: list[str], lexicon: Lexicon) -> str:
