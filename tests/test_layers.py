@@ -156,9 +156,6 @@ def test_the_nested_import_check_sees_function_and_type_checking_imports(tmp_pat
 # their detail belongs in docs/modules.md like the others'. Only ever shrink this set.
 LONG_DOCSTRINGS = {
     "bench/perception.py",
-    "bus/driver.py",
-    "bus/node.py",
-    "bus/realtime.py",
     "perception/bodies.py",
     "perception/objects.py",
     "perception/observe.py",

@@ -1,13 +1,4 @@
-"""The executor's side of the bus: a :class:`~hltl.sim.episode.Cell` whose robots and clock
-are a node somewhere else.
-
-Every command carries a sequence number and the executor's handle id; the node starts a handle
-at most once, so retransmissions after a lost message never dispatch an action twice. Reports
-carry the node's sequence numbers: duplicates and stale (overtaken) reports are dropped, and a
-gap is filled by querying the robots' state. Every wait is bounded: a robot whose node stops
-answering (or leaves: its liveliness token disappears) is down, with the reason, and its
-actions fail; the executor then replans without it or gives up.
-"""
+"""The executor's side of the bus: a :class:`~hltl.sim.episode.Cell` whose robots and clock"""
 
 from __future__ import annotations
 

@@ -1,13 +1,4 @@
-"""A cell served on the bus: its robots (any :class:`RobotDriver`) and its simulated clock.
-
-:class:`CellNode` takes action commands from ``hltl/<cell>/robots/<r>/action``, starts each
-handle at most once on the cell's driver, publishes reports (acknowledgement, progress,
-completion, failure) on ``…/status``, answers ``…/state`` queries, holds a liveliness token per
-robot and, for simulated cells, serves ``hltl/<cell>/sim/reset`` and ``…/sim/step`` so that an
-executor in another process drives the simulated time step by step — or, when the executor
-asks for real time, runs the cell against the wall clock on a thread of its own and publishes
-every tick on ``hltl/<cell>/sim/tick`` (:mod:`hltl.bus.realtime`).
-"""
+"""A cell served on the bus: its robots (any :class:`RobotDriver`) and its simulated clock."""
 
 from __future__ import annotations
 

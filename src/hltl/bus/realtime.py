@@ -1,22 +1,4 @@
-"""Real time on the bus: the cell runs on its own clock and the executor follows the wall clock.
-
-Lockstep (:class:`~hltl.bus.driver.BusCell`) suits a simulator: the executor owns simulated
-time and steps it. Real arms move whether the executor is ready or not. In a real-time episode
-the node runs its cell against the wall clock (``factor`` times faster for a simulator, 1 for
-real robots), ticks at its own rate and publishes each tick on ``hltl/<cell>/sim/tick``
-(numbered: time, world, the actions' reports, log records and instructions since the last
-tick); robots report progress on ``…/status`` as before. The executor's loop
-(:func:`hltl.sim.episode.run_episode`) ticks by the wall clock (:meth:`RealtimeBusCell.pace`:
-a late loop skips ticks, it never catches up in a burst), dispatches and halts with the same
-acknowledged commands as in lockstep, and copes with what real time brings:
-
-* a tick that never arrives leaves a gap in the records' or instructions' numbering: the
-  executor asks the node (``sim/clock``) for what it missed;
-* a node that goes quiet (no newer tick for ``timing.timeout``) is asked for its clock; one that
-  does not answer, or whose clock stands still for ``timing.patience``, is down with its robots;
-* reports that do not arrive within ``timing.timeout`` of the node saying they were sent are
-  fetched from the robots' ``state`` queryables, without stopping the loop meanwhile.
-"""
+"""Real time on the bus: the cell runs on its own clock and the executor follows the wall clock."""
 
 from __future__ import annotations
 
