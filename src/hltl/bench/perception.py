@@ -24,9 +24,10 @@ import numpy as np
 
 from hltl.execution.log import Perception
 from hltl.grounding.offline import OfflineGrounder
+from hltl.perception.detection import MIN_PIXELS
 from hltl.perception.evaluate import HORIZONS, Score, score
-from hltl.perception.frames import Frame, camera_from_dict
-from hltl.perception.objects import MIN_PIXELS, localize, make_backend
+from hltl.perception.frames import Frame
+from hltl.perception.objects import localize, make_backend
 from hltl.perception.observe import Perceiver, match_objects
 from hltl.perception.predict import (
     DT,
@@ -42,7 +43,8 @@ from hltl.sim.episode import run_episode
 from hltl.sim.events import EventSchedule, HumanMove
 from hltl.sim.scenarios import catalogue
 from hltl.sim.simulator import Simulator
-from hltl.sim3d.camera import CameraRenderer, camera_to_world, intrinsics
+from hltl.sim3d.camera import CameraRenderer
+from hltl.sim3d.dataset import frame_camera, object_centres, render_samples
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
 from hltl.sim3d.perceived import CameraSimulator
@@ -150,33 +152,6 @@ class ObjectRow:
     ms: tuple[float, ...]  # per-frame time (detect + localise)
 
 
-def _truth_centres(stage: Any) -> dict[str, tuple[float, float, float]]:
-    mj = stage.mj
-    m, d = stage.model, stage.data
-    out = {}
-    for o in stage.scene.objects:
-        bid = int(mj.mj_name2id(m, mj.mjtObj.mjOBJ_BODY, f"object:{o.id}"))
-        geoms = [g for g in range(m.ngeom) if int(m.geom_bodyid[g]) == bid]
-        p = d.geom_xpos[geoms[0]]
-        out[o.id] = (float(p[0]), float(p[1]), float(p[2]))
-    return out
-
-
-def _frame_camera(sm: Any, cam: Camera) -> Any:
-    k = intrinsics(cam)
-    return camera_from_dict(
-        {
-            "name": cam.id,
-            "width": cam.width,
-            "height": cam.height,
-            "intrinsics": {"fx": k.fx, "fy": k.fy, "cx": k.cx, "cy": k.cy},
-            "extrinsics": {"camera_to_world": camera_to_world(cam).tolist()},
-            "segments": sm.segment_table(),
-        },
-        f"camera {cam.id}",
-    )
-
-
 def object_bench(
     scenes: Sequence[Scene], progress: Callable[[str], None] | None = None
 ) -> list[ObjectRow]:
@@ -189,6 +164,7 @@ def object_bench(
         ("segmentation, free fit", "segmentation", False),
         ("depth-clusters", "depth-clusters", True),
         ("depth-clusters, free fit", "depth-clusters", False),
+        ("learned", "learned", True),
     )
     acc: dict[str, dict[str, list[float]]] = {
         b: {"errors": [], "ms": [], "visible": [], "found": []} for b, _, _ in runs
@@ -198,11 +174,11 @@ def object_bench(
         cams = _cameras(scene)
         scene = replace(scene, cameras=cams)
         stage = Stage(compile_scene(scene))
-        truth = _truth_centres(stage)
+        truth = object_centres(stage)
         for cam in cams:
             with CameraRenderer(stage.sm, cam, geometry="visual") as r:
                 f = r.render(stage.data)
-            fcam = _frame_camera(stage.sm, cam)
+            fcam = frame_camera(cam, stage.sm.segment_table())
             frame = Frame(frames, 0.0, f.rgb, f.depth, f.seg)
             frames += 1
             visible = {
@@ -237,6 +213,45 @@ def object_bench(
     ]
 
 
+def clutter_bench(
+    scenes: Sequence[Scene],
+    seed: int = 1000,
+    layouts: int = 2,
+    views: int = 3,
+    progress: Callable[[str], None] | None = None,
+) -> list[ObjectRow]:
+    """The backends (known sizes) on cluttered layouts of ``scenes`` as the learned backend's
+    training renders are made (:mod:`hltl.sim3d.dataset`: 3–8 objects of every rendered
+    category, random cameras, lights, arm poses, people), from cells it was not trained on."""
+    samples = render_samples(scenes, seed=seed, layouts=layouts, views=views)
+    rows = []
+    for name in ("segmentation", "depth-clusters", "learned"):
+        errors: list[float] = []
+        ms: list[float] = []
+        visible = found = 0
+        for s in samples:
+            assert s.frame.seg is not None
+            shown = {
+                seg.id
+                for sid, seg in s.camera.segments.items()
+                if seg.kind == "object" and int((s.frame.seg == sid).sum()) >= MIN_PIXELS
+            }
+            backend = make_backend(name, s.scene)
+            t0 = time.perf_counter()
+            dets = backend.detect(s.frame, s.camera)
+            located = localize(s.frame, s.camera, dets, backend.planes, s.scene)
+            ms.append((time.perf_counter() - t0) * 1000.0)
+            obs, _, _ = match_objects(s.scene, located)
+            hits = [o for o in obs if o.id in shown]
+            visible += len(shown)
+            found += len(hits)
+            errors += [math.dist(o.position, s.centres[o.id]) for o in hits if o.id]
+        rows.append(ObjectRow(name, len(samples), visible, found, tuple(errors), tuple(ms)))
+        if progress:
+            progress(f"clutter: {name}")
+    return rows
+
+
 @dataclass(frozen=True, slots=True)
 class PeopleRow:
     detector: str
@@ -264,7 +279,7 @@ def _crossing(
     cam = _cameras(scene)[0]
     scene = replace(scene, cameras=(cam,))
     stage = Stage(compile_scene(scene))
-    fcam = _frame_camera(stage.sm, cam)
+    fcam = frame_camera(cam, stage.sm.segment_table())
     seg_of = {s.id: sid for sid, s in fcam.segments.items() if s.kind == "human"}
     rendered = []
     joints: list[JointTruth] = []
@@ -304,18 +319,26 @@ def _true_joints(stage: Any, hid: str) -> dict[str, tuple[float, float, float]]:
 
 def people_bench(
     scene: Scene,
-    detectors: Sequence[str] = ("segmentation", "depth", "fused", "yolo"),
+    detectors: Sequence[str] = (
+        "segmentation",
+        "depth",
+        "depth, unfiltered",
+        "fused",
+        "yolo",
+    ),
     frames: int = 40,
     progress: Callable[[str], None] | None = None,
 ) -> list[PeopleRow]:
     """Two people cross in front of the robots (each walks to where the other stood, 1 m/s
     pace), rendered at 10 Hz with walking poses; every detector tracks them inside the whole
-    perception stage (its time per frame includes the objects)."""
+    perception stage (its time per frame includes the objects). ``<detector>, unfiltered``:
+    without the temporal filter of positions."""
     scene, fcam, seg_of, rendered, _ = _crossing(scene, frames)
     rows = []
     for det in detectors:
+        name, _, option = det.partition(", ")
         # the whole perception stage per frame: objects (segmentation, known sizes) and people
-        perceiver = Perceiver(scene, fcam, "segmentation", det)
+        perceiver = Perceiver(scene, fcam, "segmentation", name, smooth=option != "unfiltered")
         person_frames = detected = wrong = false = switches = 0
         errors: list[float] = []
         ms: list[float] = []

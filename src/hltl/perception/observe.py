@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
+from hltl.perception.filtering import RestingFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder
 from hltl.perception.objects import Located, ObjectBackend, localize, make_backend
@@ -136,6 +137,8 @@ class Perceiver:
         people: a person detector of :data:`hltl.perception.people.DETECTORS` or ``none``.
         skeleton: 3D shoulders, elbows and wrists of tracked people (MediaPipe in its own
             process; see :mod:`hltl.perception.skeleton`).
+        smooth: filter positions over frames (:mod:`hltl.perception.filtering`): people by
+            track (constant velocity, gated), matched objects by id (at rest, gated).
     """
 
     def __init__(
@@ -145,9 +148,12 @@ class Perceiver:
         backend: str = "segmentation",
         people: str = "segmentation",
         skeleton: bool = False,
+        smooth: bool = True,
     ) -> None:
         self.scene = scene
         self.camera = camera
+        self.smooth = smooth
+        self.resting: dict[str, RestingFilter] = {}
         self.backend: ObjectBackend = make_backend(backend, scene)
         if people != "none" and people not in DETECTORS:
             raise ValueError(
@@ -157,7 +163,10 @@ class Perceiver:
             None
             if people == "none"
             else PeopleTracker(
-                scene if scene is not None else Scene(robots=()), people, skeleton=skeleton
+                scene if scene is not None else Scene(robots=()),
+                people,
+                skeleton=skeleton,
+                smooth=smooth,
             )
         )
 
@@ -171,6 +180,15 @@ class Perceiver:
         dets = self.backend.detect(frame, self.camera)
         located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
         objects, unmatched, ambiguous = match_objects(self.scene, located)
+        if self.smooth:  # a matched object's position over frames, gated (filtering.py)
+            objects = [
+                o
+                if o.id is None
+                else replace(
+                    o, position=self.resting.setdefault(o.id, RestingFilter()).update(o.position)
+                )
+                for o in objects
+            ]
         people = self.tracker.update(frame, self.camera) if self.tracker is not None else []
         seen = {o.id for o in objects}
         missing = tuple(o for o in self.scene.object_ids if o not in seen) if self.scene else ()

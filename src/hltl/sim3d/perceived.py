@@ -26,8 +26,9 @@ class CameraSimulator(MujocoSimulator):
     """:class:`MujocoSimulator` whose :meth:`observe` is camera perception.
 
     Args:
-        backend: object backend (``segmentation`` or ``depth-clusters``).
-        people: person detector (``segmentation``, ``depth``, ``fused`` or ``yolo``).
+        backend: object backend (a name of ``hltl.perception.objects.BACKENDS``).
+        people: person detector (``depth`` by default: it needs no segmentation render;
+            ``segmentation``, ``fused`` or ``yolo``).
         camera: scene camera id (default: the first).
         (the rest as :class:`MujocoSimulator`)
     """
@@ -36,7 +37,7 @@ class CameraSimulator(MujocoSimulator):
         self,
         *args: Any,
         backend: str = "segmentation",
-        people: str = "segmentation",
+        people: str = "depth",
         camera: str | None = None,
         **kwargs: Any,
     ) -> None:

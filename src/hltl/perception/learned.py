@@ -1,0 +1,348 @@
+"""The learned object backend: a small segmentation network trained on the project's renders.
+
+A compact encoder–decoder (torch, CPU) labels every pixel of a half-resolution RGB-D frame
+with a class (:data:`CLASSES`: background, person, and the object categories the 3D simulator
+renders). Its input is colour, depth and each pixel's height in the world (from the camera's
+pose), so the same weights serve any camera placement. Instances are the connected regions of
+one class, split at depth edges, without support-plane pixels. It is trained by
+``hltl perception train-detector`` on labelled renders of randomised cells
+(:mod:`hltl.sim3d.dataset`); the weights ship in ``perception/data/object_segmenter.npz`` with
+their training command and seed. Nothing is downloaded.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.errors import BackendUnavailableError
+from hltl.perception.detection import MIN_PIXELS, Detection, box_of, support_planes
+from hltl.perception.frames import Camera, Frame
+from hltl.perception.geometry import backproject
+from hltl.world.scene import Scene
+
+CLASSES = ("background", "person", "bottle", "chips", "cup", "mug", "can", "apple", "box", "book")
+SHIPPED = Path(__file__).parent / "data" / "object_segmenter.npz"
+WIDTHS = (12, 24, 48)  # channels of the three encoder stages
+CHANNELS = 6  # r, g, b, depth, world height, valid
+F32 = npt.NDArray[np.float32]
+
+
+def _torch() -> Any:
+    try:
+        import torch
+    except ImportError:
+        raise BackendUnavailableError(
+            "the learned object backend needs torch: pip install 'hltl[predict]'"
+        ) from None
+    return torch
+
+
+def inputs(frame: Frame, camera: Camera) -> F32:
+    """The network's input (CHANNELS × H/2 × W/2): colour averaged over 2×2 pixels, the depth
+    and world height of each block's top-left pixel (exact values, not mixed across an edge)."""
+    h, w = frame.depth.shape
+    h2, w2 = h // 2, w // 2
+    rgb = frame.rgb[: 2 * h2, : 2 * w2].astype(np.float32) / 255.0
+    rgb = rgb.reshape(h2, 2, w2, 2, 3).mean(axis=(1, 3))
+    sub = np.zeros(frame.depth.shape, dtype=bool)
+    sub[: 2 * h2 : 2, : 2 * w2 : 2] = True
+    depth = frame.depth[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.float32)
+    valid = depth > 0
+    z = np.zeros((h2, w2), np.float32)
+    sub &= frame.depth > 0
+    z[valid] = backproject(frame.depth, sub, camera)[:, 2]
+    out = np.empty((CHANNELS, h2, w2), np.float32)
+    out[:3] = rgb.transpose(2, 0, 1) - 0.5
+    out[3] = np.clip(depth, 0.0, 8.0) / 4.0 - 0.5
+    out[4] = np.clip(z, -1.0, 2.5)
+    out[5] = valid
+    return out
+
+
+def _build(torch: Any) -> Any:
+    """Half resolution → three stages down to 1/8 (dilated at the bottom for context: an object
+    is told from a robot link by what is around it) → two skip connections back up; the
+    full-width layers are thin because they cost the most on a CPU."""
+    nn = torch.nn
+    a, b, c = WIDTHS
+
+    def conv(i: int, o: int, stride: int = 1, dil: int = 1) -> Any:
+        return nn.Sequential(
+            nn.Conv2d(i, o, 3, stride=stride, padding=dil, dilation=dil), nn.ReLU(inplace=True)
+        )
+
+    class Net(nn.Module):  # type: ignore[name-defined,misc]
+        def __init__(self) -> None:
+            super().__init__()
+            self.e1 = conv(CHANNELS, a)
+            self.e2 = nn.Sequential(conv(a, b, 2), conv(b, b))
+            self.e3 = nn.Sequential(conv(b, c, 2), conv(c, c, dil=2), conv(c, c, dil=4))
+            self.r3 = nn.Sequential(nn.Conv2d(c, a, 1), nn.ReLU(inplace=True))
+            self.d2 = conv(a + b, b)
+            self.head = nn.Conv2d(b + a, len(CLASSES), 1)
+
+        def forward(self, x: Any) -> Any:
+            f = torch.nn.functional
+            x1 = self.e1(x)
+            x2 = self.e2(x1)
+            x3 = self.r3(self.e3(x2))
+            y2 = self.d2(torch.cat([f.interpolate(x3, size=x2.shape[2:]), x2], dim=1))
+            return self.head(torch.cat([f.interpolate(y2, size=x1.shape[2:]), x1], dim=1))
+
+    return Net()
+
+
+class SegmenterModel:
+    """Loaded weights: :meth:`probabilities` of each class per half-resolution pixel."""
+
+    def __init__(self, state: dict[str, npt.NDArray[Any]], meta: dict[str, Any]) -> None:
+        torch = _torch()
+        self._torch = torch
+        self.meta = meta
+        self.net = _build(torch)
+        self.net.load_state_dict(
+            {k: torch.from_numpy(np.asarray(v, dtype=np.float32)) for k, v in state.items()}
+        )
+        self.net.eval()
+
+    def probabilities(self, x: F32) -> F32:
+        """(classes × h × w) softmax of one input (CHANNELS × h × w)."""
+        torch = self._torch
+        with torch.no_grad():
+            logits = self.net(torch.from_numpy(x[None]))
+            out: F32 = torch.softmax(logits, dim=1)[0].numpy()
+        return out
+
+
+def load_segmenter(path: str | Path | None = None) -> SegmenterModel:
+    """Load weights written by :func:`train` (default: the shipped file).
+
+    Raises:
+        BackendUnavailableError: torch is missing.
+        FileNotFoundError / ValueError: the file is missing or not segmenter weights.
+    """
+    p = SHIPPED if path is None else Path(path)
+    if not p.is_file():
+        raise FileNotFoundError(f"{p}: no such weights file")
+    try:
+        with np.load(p, allow_pickle=False) as data:
+            meta = json.loads(str(data["meta"]))
+            state = {k: np.asarray(data[k]) for k in data.files if k != "meta"}
+    except (OSError, ValueError, KeyError) as exc:
+        raise ValueError(f"{p}: not an object segmenter weights file ({exc})") from exc
+    if tuple(meta.get("classes", ())) != CLASSES or tuple(meta.get("widths", ())) != WIDTHS:
+        raise ValueError(f"{p}: weights were trained for other classes or widths")
+    try:
+        return SegmenterModel(state, meta)
+    except RuntimeError as exc:
+        raise ValueError(f"{p}: weights do not fit this model ({exc})") from exc
+
+
+_MODELS: dict[Path, SegmenterModel] = {}
+
+
+def _shared(path: Path) -> SegmenterModel:
+    """One loaded model per weights file for the process (backends are built per frame
+    source; loading costs more than a frame)."""
+    if path not in _MODELS:
+        _MODELS[path] = load_segmenter(path)
+    return _MODELS[path]
+
+
+class LearnedBackend:
+    """Objects (and people) from the trained segmenter; labels are categories."""
+
+    name = "learned"
+
+    def __init__(
+        self, scene: Scene | None = None, weights: str | Path | None = None, edge: float = 0.03
+    ) -> None:
+        self.scene = scene
+        self.edge = edge
+        self.model = _shared(SHIPPED if weights is None else Path(weights))
+        self.planes: list[float] = []
+
+    def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
+        from scipy import ndimage
+
+        x = inputs(frame, camera)
+        prob = self.model.probabilities(x)
+        cls = prob.argmax(axis=0)
+        conf = prob.max(axis=0)
+        h, w = frame.depth.shape
+        # back to full resolution (each half-resolution label covers its 2×2 block)
+        full = np.zeros((h, w), dtype=np.int64)
+        full[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
+        fconf = np.zeros((h, w), dtype=np.float32)
+        fconf[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
+        depth = frame.depth
+        valid = depth > 0
+        z = np.zeros(depth.shape)
+        z[valid] = backproject(depth, valid, camera)[:, 2]
+        self.planes = support_planes(z[valid][::16])
+        keep = valid & (full > 0)
+        for p in self.planes:  # a table's pixels at an object's foot are not the object
+            keep &= np.abs(z - p) > 0.01
+        jump = np.zeros(depth.shape, dtype=bool)
+        jump[:, 1:] |= np.abs(np.diff(depth, axis=1)) > self.edge * depth[:, 1:]
+        jump[1:, :] |= np.abs(np.diff(depth, axis=0)) > self.edge * depth[1:, :]
+        out: list[Detection] = []
+        for k in np.unique(full[keep]).tolist():
+            region = keep & (full == k) & ~jump
+            labels, _ = ndimage.label(region)
+            for i, sl in enumerate(ndimage.find_objects(labels), start=1):
+                if sl is None:
+                    continue
+                local = labels[sl] == i
+                if int(local.sum()) < MIN_PIXELS:
+                    continue
+                mask = np.zeros(depth.shape, dtype=bool)
+                mask[sl] = local
+                kind, label = (
+                    ("human", "person")
+                    if CLASSES[k] == "person"
+                    else (
+                        "object",
+                        CLASSES[k],
+                    )
+                )
+                score = float(fconf[mask].mean())
+                out.append(Detection(kind, label, mask, score, box_of(mask)))
+        return out
+
+
+# -- training --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class TrainResult:
+    path: Path
+    images: int
+    epochs: int
+    train_loss: float
+    val_iou: dict[str, float]  # per class, on the validation images
+    seconds: float
+
+
+def downsample_labels(labels: npt.NDArray[np.uint8]) -> npt.NDArray[np.int64]:
+    """Class of each 2×2 block: its top-left pixel (the pixel whose depth the input carries)."""
+    h2, w2 = labels.shape[0] // 2, labels.shape[1] // 2
+    out: npt.NDArray[np.int64] = labels[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.int64)
+    return out
+
+
+def train(
+    samples: Sequence[tuple[F32, npt.NDArray[np.int64]]],
+    out: str | Path,
+    *,
+    seed: int = 0,
+    epochs: int = 16,
+    crop: int = 112,
+    command: str = "",
+    progress: Callable[[str, float], None] | None = None,
+) -> TrainResult:
+    """Train on (input, half-resolution labels) pairs (10 % held out for validation) with
+    random crops centred on an object pixel two times in three, horizontal flips, and
+    cross-entropy weighted toward the rare object classes; write the weights to ``out``."""
+    torch = _torch()
+    t0 = time.perf_counter()
+    torch.manual_seed(seed)
+    rng = np.random.default_rng(seed)
+    n = len(samples)
+    order = rng.permutation(n)
+    n_val = max(1, n // 10) if n > 1 else 0
+    val_idx, tr_idx = order[:n_val], order[n_val:]
+    if len(tr_idx) == 0:
+        tr_idx = order
+    net = _build(torch)
+    opt = torch.optim.Adam(net.parameters(), lr=3e-3)
+    steps_per_epoch = max(1, len(tr_idx) // 8)
+    sched = torch.optim.lr_scheduler.OneCycleLR(
+        opt, max_lr=3e-3, total_steps=epochs * steps_per_epoch
+    )
+    weight = torch.tensor([1.0, 2.0] + [6.0] * (len(CLASSES) - 2))
+    loss_fn = torch.nn.CrossEntropyLoss(weight=weight)
+
+    def crop_of(i: int) -> tuple[F32, npt.NDArray[np.int64]]:
+        x, y = samples[i]
+        h, w = y.shape
+        c = min(crop, h, w)
+        objs = np.argwhere(y >= 2)
+        if len(objs) and rng.random() < 2 / 3:
+            cv, cu = objs[rng.integers(len(objs))]
+            v0 = int(np.clip(cv - c // 2 + rng.integers(-c // 4, c // 4 + 1), 0, h - c))
+            u0 = int(np.clip(cu - c // 2 + rng.integers(-c // 4, c // 4 + 1), 0, w - c))
+        else:
+            v0, u0 = int(rng.integers(0, h - c + 1)), int(rng.integers(0, w - c + 1))
+        xs, ys = x[:, v0 : v0 + c, u0 : u0 + c], y[v0 : v0 + c, u0 : u0 + c]
+        if rng.random() < 0.5:
+            xs, ys = xs[:, :, ::-1], ys[:, ::-1]
+        # colour jitter: brightness and contrast of the RGB channels (lighting varies)
+        xs = xs.copy()
+        xs[:3] = (xs[:3] + 0.5) * rng.uniform(0.8, 1.2) + rng.uniform(-0.08, 0.08) - 0.5
+        return xs, np.ascontiguousarray(ys)
+
+    train_loss = math.nan
+    for epoch in range(epochs):
+        net.train()
+        perm = rng.permutation(tr_idx)
+        total, count = 0.0, 0
+        for s in range(steps_per_epoch):
+            batch = perm[s * 8 : s * 8 + 8]
+            if len(batch) == 0:
+                batch = perm[:8]
+            pairs = [crop_of(int(i)) for i in batch]
+            xb = torch.from_numpy(np.stack([p[0] for p in pairs]))
+            yb = torch.from_numpy(np.stack([p[1] for p in pairs]))
+            loss = loss_fn(net(xb), yb)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            sched.step()
+            total += float(loss.detach()) * len(batch)
+            count += len(batch)
+        train_loss = total / max(count, 1)
+        if progress:
+            progress("training", (epoch + 1) / epochs)
+    net.eval()
+    inter = np.zeros(len(CLASSES))
+    union = np.zeros(len(CLASSES))
+    with torch.no_grad():
+        for i in val_idx:
+            x, y = samples[int(i)]
+            pred = net(torch.from_numpy(x[None])).argmax(dim=1)[0].numpy()
+            for k in range(len(CLASSES)):
+                inter[k] += np.sum((pred == k) & (y == k))
+                union[k] += np.sum((pred == k) | (y == k))
+    val_iou = {
+        CLASSES[k]: round(float(inter[k] / union[k]), 4) for k in range(len(CLASSES)) if union[k]
+    }
+    meta = {
+        "command": command,
+        "seed": seed,
+        "epochs": epochs,
+        "images": n,
+        "crop": crop,
+        "classes": list(CLASSES),
+        "widths": list(WIDTHS),
+        "train_loss": round(train_loss, 5),
+        "val_iou": val_iou,
+        "torch": str(torch.__version__),
+    }
+    path = Path(out)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    # float16 storage halves the file; the network runs in float32
+    state = {k: v.detach().numpy().astype(np.float16) for k, v in net.state_dict().items()}
+    with path.open("wb") as fh:
+        np.savez_compressed(fh, meta=np.array(json.dumps(meta)), **state)
+    _MODELS.pop(path, None)
+    return TrainResult(path, n, epochs, train_loss, val_iou, time.perf_counter() - t0)
