@@ -38,9 +38,9 @@ def register(sub: Any) -> None:
     )
     td.add_argument("--out", type=Path, help="weights file (default: the shipped one)")
     td.add_argument("--seed", type=int, default=0, help="seed of layouts, views and weights")
-    td.add_argument("--layouts", type=int, default=5, help="cluttered layouts per training cell")
+    td.add_argument("--layouts", type=int, default=6, help="cluttered layouts per training cell")
     td.add_argument("--views", type=int, default=8, help="random views per layout")
-    td.add_argument("--epochs", type=int, default=16, help="passes over the renders")
+    td.add_argument("--epochs", type=int, default=30, help="passes over the renders")
     td.set_defaults(func=run_train_detector)
     ev = psub.add_parser(
         "eval-predictor", help="ADE/FDE at 1 s and 2 s of cv, goal and gru on held-out walks"

@@ -9,6 +9,9 @@ import numpy.typing as npt
 
 Mask = npt.NDArray[np.bool_]
 MIN_PIXELS = 15  # fewer visible pixels than this: the object counts as not seen
+# a cluster whose points centre this close to a registered arm's base (on the floor plan) is a
+# piece of the base: the bases here are 6–8 cm in radius and nothing can stand inside them
+BASE_CLEARANCE = 0.09
 
 
 @dataclass(frozen=True, slots=True)
@@ -21,6 +24,8 @@ class Detection:
         mask: H×W boolean mask.
         score: the backend's confidence in [0, 1].
         box: (u0, v0, u1, v1) pixel box, inclusive-exclusive.
+        exact: the label is the scene id of what the pixels show (the segmentation render);
+            otherwise it is a category, matched to scene objects by fusion.
     """
 
     kind: str
@@ -28,6 +33,7 @@ class Detection:
     mask: Mask
     score: float
     box: tuple[int, int, int, int]
+    exact: bool = False
 
 
 def box_of(mask: Mask) -> tuple[int, int, int, int]:

@@ -24,7 +24,15 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError
-from hltl.perception.detection import MIN_PIXELS, Detection, box_of, support_planes
+from hltl.motion.grasps import CATEGORY_CYLINDERS
+from hltl.perception.detection import (
+    BASE_CLEARANCE,
+    MIN_PIXELS,
+    Detection,
+    Mask,
+    box_of,
+    support_planes,
+)
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
 from hltl.world.scene import Scene
@@ -34,6 +42,8 @@ SHIPPED = Path(__file__).parent / "data" / "object_segmenter.npz"
 WIDTHS = (12, 24, 48)  # channels of the three encoder stages
 CHANNELS = 6  # r, g, b, depth, world height, valid
 F32 = npt.NDArray[np.float32]
+F64 = npt.NDArray[np.float64]
+MIN_CONFIDENCE = 0.5  # pixels the network is less sure of are left out
 
 
 def _torch() -> Any:
@@ -46,9 +56,10 @@ def _torch() -> Any:
     return torch
 
 
-def inputs(frame: Frame, camera: Camera) -> F32:
+def inputs(frame: Frame, camera: Camera, height: F64 | None = None) -> F32:
     """The network's input (CHANNELS × H/2 × W/2): colour averaged over 2×2 pixels, the depth
-    and world height of each block's top-left pixel (exact values, not mixed across an edge)."""
+    and world height of each block's top-left pixel (exact values, not mixed across an edge).
+    ``height``: every pixel's world height, when the caller has it already."""
     h, w = frame.depth.shape
     h2, w2 = h // 2, w // 2
     rgb = frame.rgb[: 2 * h2, : 2 * w2].astype(np.float32) / 255.0
@@ -57,9 +68,12 @@ def inputs(frame: Frame, camera: Camera) -> F32:
     sub[: 2 * h2 : 2, : 2 * w2 : 2] = True
     depth = frame.depth[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.float32)
     valid = depth > 0
-    z = np.zeros((h2, w2), np.float32)
-    sub &= frame.depth > 0
-    z[valid] = backproject(frame.depth, sub, camera)[:, 2]
+    if height is not None:
+        z = height[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.float32)
+    else:
+        z = np.zeros((h2, w2), np.float32)
+        sub &= frame.depth > 0
+        z[valid] = backproject(frame.depth, sub, camera)[:, 2]
     out = np.empty((CHANNELS, h2, w2), np.float32)
     out[:3] = rgb.transpose(2, 0, 1) - 0.5
     out[3] = np.clip(depth, 0.0, 8.0) / 4.0 - 0.5
@@ -174,8 +188,12 @@ class LearnedBackend:
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         from scipy import ndimage
 
-        x = inputs(frame, camera)
-        prob = self.model.probabilities(x)
+        depth = frame.depth
+        valid = depth > 0
+        pts = np.zeros((*depth.shape, 3))
+        pts[valid] = backproject(depth, valid, camera)
+        z = pts[:, :, 2]
+        prob = self.model.probabilities(inputs(frame, camera, z))
         cls = prob.argmax(axis=0)
         conf = prob.max(axis=0)
         h, w = frame.depth.shape
@@ -184,12 +202,8 @@ class LearnedBackend:
         full[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
         fconf = np.zeros((h, w), dtype=np.float32)
         fconf[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
-        depth = frame.depth
-        valid = depth > 0
-        z = np.zeros(depth.shape)
-        z[valid] = backproject(depth, valid, camera)[:, 2]
         self.planes = support_planes(z[valid][::16])
-        keep = valid & (full > 0)
+        keep = valid & (full > 0) & (fconf >= MIN_CONFIDENCE)
         for p in self.planes:  # a table's pixels at an object's foot are not the object
             keep &= np.abs(z - p) > 0.01
         jump = np.zeros(depth.shape, dtype=bool)
@@ -197,27 +211,78 @@ class LearnedBackend:
         jump[1:, :] |= np.abs(np.diff(depth, axis=0)) > self.edge * depth[1:, :]
         out: list[Detection] = []
         for k in np.unique(full[keep]).tolist():
-            region = keep & (full == k) & ~jump
-            labels, _ = ndimage.label(region)
-            for i, sl in enumerate(ndimage.find_objects(labels), start=1):
-                if sl is None:
-                    continue
-                local = labels[sl] == i
-                if int(local.sum()) < MIN_PIXELS:
-                    continue
-                mask = np.zeros(depth.shape, dtype=bool)
-                mask[sl] = local
-                kind, label = (
-                    ("human", "person")
-                    if CLASSES[k] == "person"
-                    else (
-                        "object",
-                        CLASSES[k],
-                    )
-                )
+            labels, _ = ndimage.label(keep & (full == k) & ~jump)
+            # (slice, local mask) of each region big enough, worked on inside its box
+            parts = [
+                (sl, labels[sl] == i)
+                for i, sl in enumerate(ndimage.find_objects(labels), start=1)
+                if sl is not None
+            ]
+            parts = [(sl, m) for sl, m in parts if int(m.sum()) >= MIN_PIXELS]
+            if CLASSES[k] == "person":
+                masks = [_full(depth.shape, sl, m) for sl, m in parts]
+            else:
+                masks = self._objects(CLASSES[k], parts, pts, depth.shape)
+            kind, label = ("human", "person") if CLASSES[k] == "person" else ("object", CLASSES[k])
+            for mask in masks:
                 score = float(fconf[mask].mean())
                 out.append(Detection(kind, label, mask, score, box_of(mask)))
         return out
+
+    def _objects(
+        self,
+        category: str,
+        parts: list[tuple[tuple[slice, ...], Mask]],
+        pts: F64,
+        shape: tuple[int, ...],
+    ) -> list[Mask]:
+        """One class's regions as objects: fragments of one object (split by a highlight or
+        something thin in front) merged — centres closer than the category's diameter — and
+        what cannot be such an object dropped: wider or taller than its known cylinder (+3 cm),
+        not standing on a support plane (its lowest point more than 12 cm above the plane
+        below it, or below every plane), or centred on a registered arm's base."""
+        r, hgt = CATEGORY_CYLINDERS.get(category, (0.15, 0.3))
+        clouds = [pts[sl][m] for sl, m in parts]
+        centres = [c.mean(axis=0) for c in clouds]
+        group = list(range(len(parts)))
+
+        def root(i: int) -> int:
+            while group[i] != i:
+                i = group[i]
+            return i
+
+        for i in range(len(parts)):
+            for j in range(i):
+                if math.dist(centres[i][:2], centres[j][:2]) < 2 * r + 0.02:
+                    group[root(i)] = root(j)
+        out: list[Mask] = []
+        for g in sorted({root(i) for i in range(len(parts))}):
+            members = [i for i in range(len(parts)) if root(i) == g]
+            q = np.concatenate([clouds[i] for i in members])
+            span = np.ptp(q, axis=0)
+            if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
+                continue
+            zmin = float(q[:, 2].min())
+            below = [p for p in self.planes if p <= zmin + 0.01]
+            if not below or zmin - max(below) > 0.12:
+                continue
+            c = q.mean(axis=0)
+            if self.scene is not None and any(
+                math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) < BASE_CLEARANCE
+                for rb in self.scene.robots
+            ):
+                continue
+            mask = np.zeros(shape, dtype=bool)
+            for i in members:
+                mask[parts[i][0]] |= parts[i][1]
+            out.append(mask)
+        return out
+
+
+def _full(shape: tuple[int, ...], sl: tuple[slice, ...], local: Mask) -> Mask:
+    mask = np.zeros(shape, dtype=bool)
+    mask[sl] = local
+    return mask
 
 
 # -- training --------------------------------------------------------------------------------
@@ -245,7 +310,7 @@ def train(
     out: str | Path,
     *,
     seed: int = 0,
-    epochs: int = 16,
+    epochs: int = 30,
     crop: int = 112,
     command: str = "",
     progress: Callable[[str, float], None] | None = None,

@@ -27,15 +27,18 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import PerceptionError
-from hltl.perception.detection import MIN_PIXELS, Detection, Mask, box_of, support_planes
+from hltl.perception.detection import (
+    BASE_CLEARANCE,
+    MIN_PIXELS,
+    Detection,
+    Mask,
+    box_of,
+    support_planes,
+)
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
 from hltl.perception.learned import LearnedBackend
 from hltl.world.scene import Scene
-
-# a cluster whose points centre this close to a registered arm's base (on the floor plan) is a
-# piece of the base: the bases here are 6–8 cm in radius and nothing can stand inside them
-BASE_CLEARANCE = 0.09
 
 
 class ObjectBackend(Protocol):
@@ -76,7 +79,7 @@ class SegmentationBackend:
             if seg is None or seg.kind not in ("object", "human") or n < MIN_PIXELS:
                 continue
             mask = frame.seg == sid
-            out.append(Detection(seg.kind, seg.id, mask, 1.0, box_of(mask)))
+            out.append(Detection(seg.kind, seg.id, mask, 1.0, box_of(mask), exact=True))
         return out
 
 

@@ -25,6 +25,8 @@ from hltl.perception.people import DETECTORS, PeopleTracker, PersonObservation
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import ObjectStatus, WorldState
 
+# m: a detection named by category matches a registered object of it at most this far away
+CATEGORY_GATE = 1.0
 AMBIGUOUS = 0.05  # m: two registered objects this close in distance to a detection are ambiguous
 
 
@@ -91,9 +93,10 @@ class Observation:
 def match_objects(
     scene: Scene | None, located: list[Located]
 ) -> tuple[list[ObjectObservation], list[str], list[str]]:
-    """Scene ids for located detections: a label that is a scene id is that object; otherwise
-    the scene objects whose category or alias is the label, nearest registered position first
-    (ambiguous when two are about as near). Returns (observations, unmatched, ambiguous)."""
+    """Scene ids for located detections: an exact label (a segment's scene id) is that object;
+    otherwise the scene objects whose category or alias is the label within CATEGORY_GATE,
+    nearest registered position first (ambiguous when two are about as near). Returns
+    (observations, unmatched, ambiguous)."""
     out: list[ObjectObservation] = []
     unmatched: list[str] = []
     ambiguous: list[str] = []
@@ -102,7 +105,7 @@ def match_objects(
         det, cyl = loc.detection, loc.cylinder
         oid: str | None = None
         if scene is not None:
-            if det.label in scene.object_ids:
+            if det.exact and det.label in scene.object_ids:
                 oid = det.label
             else:
                 cands = [
@@ -111,6 +114,10 @@ def match_objects(
                     if o.id not in taken and (det.label == o.category or det.label in o.aliases)
                 ]
                 cands.sort(key=lambda o: math.dist(o.position[:2], cyl.center[:2]))
+                # farther than CATEGORY_GATE from every candidate: some other thing, not guessed
+                cands = [
+                    o for o in cands if math.dist(o.position[:2], cyl.center[:2]) <= CATEGORY_GATE
+                ]
                 if cands:
                     oid = cands[0].id
                     if len(cands) > 1:

@@ -29,7 +29,7 @@ from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
 from hltl.perception.filtering import WalkerFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
-from hltl.perception.skeleton import PoseWorker, Skeleton, orient_sides
+from hltl.perception.skeleton import PoseWorker, Skeleton, drop_implausible, orient_sides
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]
@@ -458,6 +458,7 @@ class PeopleTracker:
                 if sk is not None:
                     walker = self.filters.get(t)
                     vel = walker.velocity if walker is not None else None
+                    sk = drop_implausible(sk, (pos[0], pos[1]))
                     sk = orient_sides(sk, (pos[0], pos[1]), vel, self.skeletons.get(t))
                     self.skeletons[t] = sk
             out.append(PersonObservation(t, people[t], pos, box, score, sk))

@@ -126,8 +126,23 @@ SIDE_SPEED = 0.5
 SIDE_MARGIN = 0.05  # m: a lone joint this far on the wrong side of the body axis is relabelled
 
 
-def _swap_name(name: str) -> str:
-    return ("r" if name[0] == "l" else "l") + name[1:]
+# m: how far from the body's vertical axis a joint can be (shoulder half-width; upper arm and
+# forearm held out); a lifted joint beyond it took its depth from something else
+REACH = {"shoulder": 0.35, "elbow": 0.6, "wrist": 0.85}
+
+
+def drop_implausible(sk: Skeleton, centre: tuple[float, float]) -> Skeleton:
+    """The skeleton without joints farther from the body axis through ``centre`` (the
+    tracked floor position) than a body reaches: their pixel's depth was the background's or
+    another person's."""
+    keep = {
+        k: p is not None and math.hypot(p[0] - centre[0], p[1] - centre[1]) <= REACH[k[2:]]
+        for k, p in sk.joints
+    }
+    return Skeleton(
+        tuple((k, p if keep[k] else None) for k, p in sk.joints),
+        tuple((k, p if keep[k] else None) for k, p in sk.pixels),
+    )
 
 
 def orient_sides(

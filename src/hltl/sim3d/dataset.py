@@ -23,11 +23,12 @@ from hltl.sim.scenarios import get
 from hltl.sim3d.camera import CameraRenderer, camera_to_world, intrinsics
 from hltl.sim3d.model import _quat_from_axes, camera_axes, compile_scene
 from hltl.sim3d.stage import Stage
-from hltl.world.scene import Camera, Human, Scene, SceneObject
+from hltl.world.scene import Camera, Human, Scene, SceneObject, Surface
 
 OBJECT_CATEGORIES = CLASSES[2:]
 # catalogue cells the segmenter is trained on; the object benchmark's cells (fig1, 2-2, 4-2,
 # 4-4-line, 4-4-square) are held out
+ROBOT_MODELS = ("ur5", "panda", "elfin3", "xarm6")  # xarm6 is drawn as the primitive arm
 TRAIN_CELLS = ("1-1", "2-1", "4-1", "1-2", "1-4-line", "2-4-line", "1-4-square", "2-4-square")
 
 
@@ -72,7 +73,22 @@ def _clutter(scene: Scene, rng: random.Random) -> Scene:
         cat = rng.choice(OBJECT_CATEGORIES)
         objects.append(SceneObject(f"o{len(objects)}", cat, p))
     humans = tuple(Human(h.id, h.name, _person_spot(scene, objects, rng)) for h in scene.humans)
-    return replace(scene, objects=tuple(objects), humans=humans, cameras=())
+    # any arm model the simulator renders (the cells mix them), and sometimes a mat
+    robots = tuple(replace(r, model=rng.choice(ROBOT_MODELS)) for r in scene.robots)
+    surfaces: tuple[Surface, ...] = ()
+    if rng.random() < 0.5:
+        b = rng.choice(bases)
+        side = rng.uniform(0.2, 0.4)
+        spot = (b[0] + rng.uniform(-0.5, 0.5), b[1] + rng.uniform(-0.5, 0.5), 0.0)
+        surfaces = (Surface("mat", spot, (side, side * rng.uniform(0.7, 1.3))),)
+    return replace(
+        scene,
+        robots=robots,
+        objects=tuple(objects),
+        humans=humans,
+        surfaces=surfaces,
+        cameras=(),
+    )
 
 
 def _person_spot(
@@ -205,9 +221,9 @@ def train_detector(
     out: str | Path,
     *,
     seed: int = 0,
-    layouts: int = 5,
+    layouts: int = 6,
     views: int = 8,
-    epochs: int = 16,
+    epochs: int = 30,
     command: str = "",
     progress: Callable[[str, float], None] | None = None,
 ) -> TrainResult:
