@@ -12,6 +12,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import random
 import statistics
@@ -546,6 +547,9 @@ class LoopRow:
     camera_time: float
     frames: int
     lost_frames: int  # frames in which some scene person had no live track
+    # the camera loop again without the temporal filters (None: not run)
+    unfiltered_success: bool | None = None
+    unfiltered_time: float | None = None
 
 
 def loop_bench(
@@ -553,10 +557,11 @@ def loop_bench(
     trials: int,
     progress: Callable[[str], None] | None = None,
     people: str = "depth",
+    unfiltered: bool = True,
 ) -> list[LoopRow]:
     """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
     truth and through the camera (segmentation object backend with known sizes, ``people``
-    person detector)."""
+    person detector), and with ``unfiltered`` through the camera without temporal filters."""
 
     rows = []
     for config in configs:
@@ -565,8 +570,10 @@ def loop_bench(
             model = compile_scene(trial.scene)
             made: list[CameraSimulator] = []
 
-            def camera(*a: Any, _m: Any = model, _made: list[Any] = made, **k: Any) -> Any:
-                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, **k)
+            def camera(
+                *a: Any, _m: Any = model, _made: list[Any] = made, _s: bool = True, **k: Any
+            ) -> Any:
+                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, smooth=_s, **k)
                 _made.append(sim)
                 return sim
 
@@ -585,6 +592,11 @@ def loop_bench(
             )
             cam = run_episode(trial.scene, simulator=camera, **kw)
             frames = [r for r in cam.records if isinstance(r, Perception)]
+            raw = (
+                run_episode(trial.scene, simulator=functools.partial(camera, _s=False), **kw)
+                if unfiltered
+                else None
+            )
             for sim in made:
                 sim.close()
             rows.append(
@@ -597,6 +609,8 @@ def loop_bench(
                     cam.metrics.time_cost,
                     len(frames),
                     sum(1 for r in frames if r.lost),
+                    None if raw is None else raw.success,
+                    None if raw is None else raw.metrics.time_cost,
                 )
             )
             if progress:
@@ -605,20 +619,30 @@ def loop_bench(
 
 
 def format_loop(rows: Sequence[LoopRow]) -> str:
+    def yes(b: bool | None) -> str:
+        return "-" if b is None else "yes" if b else "no"
+
     lines = [
-        "| trial | success truth / camera | time cost truth / camera (s) | frames | frames with "
-        "someone untracked |",
+        "| trial | success truth / camera / camera unfiltered | time cost truth / camera / "
+        "camera unfiltered (s) | frames | frames with someone untracked |",
         "|---|---|---|---|---|",
     ]
     for r in rows:
+        raw_time = "-" if r.unfiltered_time is None else f"{r.unfiltered_time:.2f}"
         lines.append(
-            f"| {r.config} #{r.index} | {'yes' if r.truth_success else 'no'} / "
-            f"{'yes' if r.camera_success else 'no'} | {r.truth_time:.2f} / {r.camera_time:.2f} | "
-            f"{r.frames} | {r.lost_frames} |"
+            f"| {r.config} #{r.index} | {yes(r.truth_success)} / {yes(r.camera_success)} / "
+            f"{yes(r.unfiltered_success)} | {r.truth_time:.2f} / {r.camera_time:.2f} / "
+            f"{raw_time} | {r.frames} | {r.lost_frames} |"
         )
     n = len(rows)
     if n:
         st = 100.0 * sum(r.truth_success for r in rows) / n
         sc = 100.0 * sum(r.camera_success for r in rows) / n
-        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % | | | |")
+        ran = [r for r in rows if r.unfiltered_success is not None]
+        su = (
+            f"{100.0 * sum(bool(r.unfiltered_success) for r in ran) / len(ran):.0f} %"
+            if ran
+            else "-"
+        )
+        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % / {su} | | | |")
     return "\n".join(lines)
