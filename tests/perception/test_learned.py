@@ -61,7 +61,7 @@ def test_shipped_weights_find_the_objects_of_a_held_out_cell() -> None:
     obs, _, _ = match_objects(scene, located)
     truth = object_centres(stage)
     found = {o.id: o for o in obs if o.id}
-    assert found  # the chips at least (the bottle stands behind a person's arm)
+    assert "chips" in found  # the bottle stands behind a person's arm: only its top shows
     for oid, o in found.items():
         assert math.dist(o.position, truth[oid]) < 0.03, oid
     assert all(0.0 <= d.score <= 1.0 for d in dets)

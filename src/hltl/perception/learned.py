@@ -258,25 +258,33 @@ class LearnedBackend:
         out: list[Mask] = []
         for g in sorted({root(i) for i in range(len(parts))}):
             members = [i for i in range(len(parts)) if root(i) == g]
-            q = np.concatenate([clouds[i] for i in members])
-            span = np.ptp(q, axis=0)
-            if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
-                continue
-            zmin = float(q[:, 2].min())
-            below = [p for p in self.planes if p <= zmin + 0.01]
-            if not below or zmin - max(below) > 0.12:
-                continue
-            c = q.mean(axis=0)
-            if self.scene is not None and any(
-                math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) < BASE_CLEARANCE
-                for rb in self.scene.robots
-            ):
-                continue
-            mask = np.zeros(shape, dtype=bool)
-            for i in members:
-                mask[parts[i][0]] |= parts[i][1]
-            out.append(mask)
+            # the merged fragments if they make a plausible object, else each fragment alone
+            # (a piece of an arm's base next to the object must not sink it)
+            tries = [members] if len(members) == 1 else [members] + [[i] for i in members]
+            for group_ in tries:
+                q = np.concatenate([clouds[i] for i in group_])
+                if self._plausible(q, r, hgt):
+                    mask = np.zeros(shape, dtype=bool)
+                    for i in group_:
+                        mask[parts[i][0]] |= parts[i][1]
+                    out.append(mask)
+                    if group_ is members:
+                        break
         return out
+
+    def _plausible(self, q: F64, r: float, hgt: float) -> bool:
+        span = np.ptp(q, axis=0)
+        if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
+            return False
+        zmin = float(q[:, 2].min())
+        below = [p for p in self.planes if p <= zmin + 0.01]
+        if not below or zmin - max(below) > 0.12:
+            return False
+        c = q.mean(axis=0)
+        return self.scene is None or all(
+            math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) >= BASE_CLEARANCE
+            for rb in self.scene.robots
+        )
 
 
 def _full(shape: tuple[int, ...], sl: tuple[slice, ...], local: Mask) -> Mask:
