@@ -6,6 +6,7 @@ import argparse
 import json
 import shlex
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -57,6 +58,18 @@ def _positive(name: str, value: int) -> None:
         raise HltlError(f"--{name}: expected a positive integer, got {value!r}")
 
 
+def _phases(bar: Any) -> Callable[[str, float], None]:
+    """A progress callback (phase name, fraction done) drawing one rich bar per phase."""
+    tasks: dict[str, Any] = {}
+
+    def progress(phase: str, frac: float) -> None:
+        if phase not in tasks:
+            tasks[phase] = bar.add_task(phase, total=1.0)
+        bar.update(tasks[phase], completed=frac)
+
+    return progress
+
+
 def run_train(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.progress import Progress
@@ -69,13 +82,7 @@ def run_train(args: argparse.Namespace) -> int:
     )
     console = Console(stderr=True)
     with Progress(console=console, transient=True) as bar:
-        tasks: dict[str, Any] = {}
-
-        def progress(phase: str, frac: float) -> None:
-            if phase not in tasks:
-                tasks[phase] = bar.add_task(phase, total=1.0)
-            bar.update(tasks[phase], completed=frac)
-
+        progress = _phases(bar)
         try:
             res = train(
                 out,
@@ -112,13 +119,7 @@ def run_train_detector(args: argparse.Namespace) -> int:
         ]
     )
     with Progress(console=Console(stderr=True), transient=True) as bar:
-        tasks: dict[str, Any] = {}
-
-        def progress(phase: str, frac: float) -> None:
-            if phase not in tasks:
-                tasks[phase] = bar.add_task(phase, total=1.0)
-            bar.update(tasks[phase], completed=frac)
-
+        progress = _phases(bar)
         try:
             res = train_detector(
                 out,

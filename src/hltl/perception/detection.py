@@ -2,10 +2,16 @@
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
+
+from hltl.perception.frames import Camera
+from hltl.perception.geometry import backproject
 
 Mask = npt.NDArray[np.bool_]
 MIN_PIXELS = 15  # fewer visible pixels than this: the object counts as not seen
@@ -56,3 +62,37 @@ def support_planes(z: npt.NDArray[np.float64], share: float = 0.04) -> list[floa
         if not out or abs(h - out[-1]) > 0.02:
             out.append(h)
     return out
+
+
+def world_points(depth: npt.NDArray[np.float32], camera: Camera) -> npt.NDArray[np.float64]:
+    """H×W×3 world point of every pixel (zeros where the depth has no return)."""
+    valid = depth > 0
+    pts = np.zeros((*depth.shape, 3))
+    pts[valid] = backproject(depth, valid, camera)
+    return pts
+
+
+def depth_edges(depth: npt.NDArray[np.float32], edge: float) -> Mask:
+    """Pixels whose left or upper neighbour is farther away than ``edge`` × their range."""
+    jump = np.zeros(depth.shape, dtype=bool)
+    jump[:, 1:] |= np.abs(np.diff(depth, axis=1)) > edge * depth[:, 1:]
+    jump[1:, :] |= np.abs(np.diff(depth, axis=0)) > edge * depth[1:, :]
+    return jump
+
+
+def read_weights(path: Path, what: str) -> tuple[dict[str, Any], dict[str, npt.NDArray[Any]]]:
+    """(meta, arrays) of a weights file: float arrays plus a JSON ``meta`` entry, nothing
+    unpickled.
+
+    Raises:
+        FileNotFoundError / ValueError: the file is missing or not ``what``.
+    """
+    if not path.is_file():
+        raise FileNotFoundError(f"{path}: no such weights file")
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            meta = json.loads(str(data["meta"]))
+            state = {k: np.asarray(data[k]) for k in data.files if k != "meta"}
+    except (OSError, ValueError, KeyError) as exc:
+        raise ValueError(f"{path}: not {what} ({exc})") from exc
+    return meta, state

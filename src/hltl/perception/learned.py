@@ -31,7 +31,10 @@ from hltl.perception.detection import (
     Detection,
     Mask,
     box_of,
+    depth_edges,
+    read_weights,
     support_planes,
+    world_points,
 )
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
@@ -145,14 +148,7 @@ def load_segmenter(path: str | Path | None = None) -> SegmenterModel:
         FileNotFoundError / ValueError: the file is missing or not segmenter weights.
     """
     p = SHIPPED if path is None else Path(path)
-    if not p.is_file():
-        raise FileNotFoundError(f"{p}: no such weights file")
-    try:
-        with np.load(p, allow_pickle=False) as data:
-            meta = json.loads(str(data["meta"]))
-            state = {k: np.asarray(data[k]) for k in data.files if k != "meta"}
-    except (OSError, ValueError, KeyError) as exc:
-        raise ValueError(f"{p}: not an object segmenter weights file ({exc})") from exc
+    meta, state = read_weights(p, "an object segmenter weights file")
     if tuple(meta.get("classes", ())) != CLASSES or tuple(meta.get("widths", ())) != WIDTHS:
         raise ValueError(f"{p}: weights were trained for other classes or widths")
     try:
@@ -190,8 +186,7 @@ class LearnedBackend:
 
         depth = frame.depth
         valid = depth > 0
-        pts = np.zeros((*depth.shape, 3))
-        pts[valid] = backproject(depth, valid, camera)
+        pts = world_points(depth, camera)
         z = pts[:, :, 2]
         prob = self.model.probabilities(inputs(frame, camera, z))
         cls = prob.argmax(axis=0)
@@ -206,9 +201,7 @@ class LearnedBackend:
         keep = valid & (full > 0) & (fconf >= MIN_CONFIDENCE)
         for p in self.planes:  # a table's pixels at an object's foot are not the object
             keep &= np.abs(z - p) > 0.01
-        jump = np.zeros(depth.shape, dtype=bool)
-        jump[:, 1:] |= np.abs(np.diff(depth, axis=1)) > self.edge * depth[:, 1:]
-        jump[1:, :] |= np.abs(np.diff(depth, axis=0)) > self.edge * depth[1:, :]
+        jump = depth_edges(depth, self.edge)
         out: list[Detection] = []
         for k in np.unique(full[keep]).tolist():
             labels, _ = ndimage.label(keep & (full == k) & ~jump)

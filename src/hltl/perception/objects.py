@@ -33,7 +33,9 @@ from hltl.perception.detection import (
     Detection,
     Mask,
     box_of,
+    depth_edges,
     support_planes,
+    world_points,
 )
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
@@ -101,19 +103,14 @@ class DepthClusterBackend:
 
         depth = frame.depth
         valid = depth > 0
-        pts = np.zeros((*depth.shape, 3))
-        pts[valid] = backproject(depth, valid, camera)
+        pts = world_points(depth, camera)
         z = pts[:, :, 2]
         planes = support_planes(z[valid])
         off_plane = valid & (z > 0.015)
         for h in planes:
             off_plane &= np.abs(z - h) > 0.015
         # split at depth edges: neighbours farther apart than ``edge`` (relative to range)
-        jump = np.zeros(depth.shape, dtype=bool)
-        du = np.abs(np.diff(depth, axis=1)) > self.edge * depth[:, 1:]
-        dv = np.abs(np.diff(depth, axis=0)) > self.edge * depth[1:, :]
-        jump[:, 1:] |= du
-        jump[1:, :] |= dv
+        jump = depth_edges(depth, self.edge)
         above = off_plane & ~jump
         self.planes = planes
         colour_edge = np.zeros(depth.shape, dtype=bool)
