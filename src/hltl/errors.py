@@ -76,3 +76,14 @@ class OutputError(HltlError, OSError):
 
 class PerceptionError(HltlError, ValueError):
     """A frame folder or camera file is malformed, or frames cannot be interpreted."""
+
+
+MAX_ERROR_CHARS = 2000
+
+
+def error_line(message: str) -> str:
+    """One bounded line: messages quote user input, which must not flood the terminal."""
+    line = " ".join(message.split("\n"))
+    if len(line) > MAX_ERROR_CHARS:
+        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
+    return line

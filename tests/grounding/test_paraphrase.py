@@ -35,8 +35,9 @@ KNOWN_MISSES = frozenset(
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
 # groundings included, are the measurement, and the grounder is not tuned on it
-# ("blind" was measured once in session 2, then its misses were fixed in session 3: asserted now)
-MEASURED_ONLY = frozenset({"blind2"})
+# ("blind" was measured once in session 2, then its misses were fixed in session 3; "blind2"
+# measured once in session 3, its misses fixed in session 4: both asserted now)
+MEASURED_ONLY = frozenset({"blind3"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -47,6 +48,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind"].entries}) >= 4
     assert len(CORPORA["blind2"].entries) >= 100
     assert len({e.scene for e in CORPORA["blind2"].entries}) >= 4
+    assert len(CORPORA["blind3"].entries) >= 120
+    assert len({e.scene for e in CORPORA["blind3"].entries}) >= 4
     for corpus in CORPORA.values():
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)
@@ -93,6 +96,9 @@ WRAPS = [
     "hey, {} real quick",
     "{} if you can",
     "um, {}",
+    "sorry to bother you, but {}",
+    "{} when you get a sec",
+    "I know you're busy, but {}",
 ]
 
 

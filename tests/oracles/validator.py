@@ -129,6 +129,29 @@ def check_plan(scene: Scene, spec: Any, plan: Mapping[str, Any]) -> None:
         raise AssertionError("invalid plan:\n  " + "\n  ".join(errors))
 
 
+def check_against_optimum(
+    scene: Scene,
+    spec: Any,
+    result: Any,
+    expected: float | None,
+    *,
+    abs_tol: float = 1e-6,
+    validate: bool = True,
+) -> None:
+    """A planner result against an oracle's optimum (``None``: no plan exists): the status,
+    the makespan, and (``validate``) the plan replayed by :func:`check_plan`."""
+    status = result.status.value
+    if expected is None:
+        assert status == "infeasible", result
+        assert result.reason
+        return
+    assert status == "solved", result.reason
+    assert result.makespan is not None
+    assert math.isclose(result.makespan, expected, abs_tol=abs_tol), (result.makespan, expected)
+    if validate:
+        check_plan(scene, spec, result.to_dict())
+
+
 def _shape_errors(scene: Scene, a: Any, where: str) -> list[str]:
     if not isinstance(a, Mapping):
         return [f"{where}: an action must be a mapping, got {a!r}"]

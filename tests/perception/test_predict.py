@@ -12,18 +12,20 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.perception.evaluate import errors, score
-from hltl.perception.predict import (
+from hltl.perception.forecast import (
     DT,
     T_OBS,
     T_PRED,
+    choose_goal,
+    goal_forecast,
+    resample,
+    stop_places,
+)
+from hltl.perception.predict import (
     ConstantVelocityPredictor,
     GoalDirectedPredictor,
     GRUPredictor,
-    choose_goal,
-    goal_forecast,
     make_predictor,
-    resample,
-    stop_places,
 )
 from hltl.perception.walks import KINDS, generate_walks
 from hltl.world.scene import Human, Robot, Scene, load_scene

@@ -15,7 +15,7 @@ from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
 from tests.oracles.random_instances import random_instance
-from tests.oracles.validator import check_plan
+from tests.oracles.validator import check_against_optimum, check_plan
 
 SEEDS = range(300)
 
@@ -26,15 +26,7 @@ def test_astar_matches_exhaustive_search(seed: int) -> None:
     scene = scene_from_dict(scene_d, source=f"random-{seed}")
     spec = spec_from_dict(spec_d)
     expected = optimal_makespan(scene, spec)
-    res = plan(scene, spec, timeout=120)
-    if expected is None:
-        assert res.status is PlanStatus.INFEASIBLE, res
-        assert res.reason
-        return
-    assert res.status is PlanStatus.SOLVED, res.reason
-    assert res.makespan is not None
-    assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
-    check_plan(scene, spec, res.to_dict())
+    check_against_optimum(scene, spec, plan(scene, spec, timeout=120), expected)
 
 
 @pytest.mark.parametrize("seed", range(0, 300, 5))

@@ -68,7 +68,7 @@ def bench_ik(model: str, n: int, seed: int = 0) -> IkRow:
     solved = 0
     while len(times) < n:
         q = rng.uniform(arm._seed_lo, arm._seed_hi)
-        if not arm.above_table(q):
+        if not arm.pose_clear(q):
             continue
         p, r = arm.fk(q)
         target = (float(p[0]), float(p[1]), float(p[2]))

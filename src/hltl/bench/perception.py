@@ -27,17 +27,11 @@ from hltl.execution.log import Perception
 from hltl.grounding.offline import OfflineGrounder
 from hltl.perception.detection import MIN_PIXELS
 from hltl.perception.evaluate import HORIZONS, Score, score
+from hltl.perception.forecast import DT, F64, stop_places
 from hltl.perception.frames import Frame
 from hltl.perception.objects import localize, make_backend
 from hltl.perception.observe import Perceiver, match_objects
-from hltl.perception.predict import (
-    DT,
-    F64,
-    ConstantVelocityPredictor,
-    GoalDirectedPredictor,
-    GRUPredictor,
-    stop_places,
-)
+from hltl.perception.predict import ConstantVelocityPredictor, GoalDirectedPredictor, GRUPredictor
 from hltl.perception.walks import generate_walks
 from hltl.sim.dynamic import MIN_SPACING, WALK_SPEED, _spots, make_trial
 from hltl.sim.episode import run_episode

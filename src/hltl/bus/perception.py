@@ -1,15 +1,4 @@
-"""Perception as a node: camera frames in, observations of the world out (``hltl node perception``).
-
-:func:`serve_frames` runs the perception stage (:class:`hltl.perception.observe.Perceiver`) on
-each frame of a frame folder (CONTRACTS.md: what ``hltl render`` and the 3D simulator's camera
-write, or a recorded RealSense sequence) and publishes what it sees on
-``hltl/<cell>/perception`` (JSON, floats exact) and each person tied to a scene person as a
-``geometry_msgs/msg/PoseStamped`` on ``hltl/<cell>/humans/<h>/pose``. On the executor's side
-:class:`PerceptionClient` collects them and fuses the latest into the world the executor sees
-(:func:`hltl.perception.observe.fuse`: people and resting objects move to where the camera saw
-them). A pose model that needs its own Python environment runs the same way: a process that
-publishes these records.
-"""
+"""Perception as a node: camera frames in, observations out (``hltl node perception``)."""
 
 from __future__ import annotations
 
@@ -17,19 +6,16 @@ import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.bus.codec import StampedPose, dumps, encode_pose, loads
 from hltl.bus.keys import Keys
 from hltl.errors import BusError
+from hltl.perception.frames import Frame
 from hltl.perception.geometry import Cylinder
-from hltl.perception.observe import ObjectObservation, Observation, fuse
+from hltl.perception.observe import ObjectObservation, Observation, Perceiver, fuse
 from hltl.perception.people import PersonObservation
 from hltl.world.state import WorldState
-
-if TYPE_CHECKING:
-    from hltl.perception.frames import Frame
-    from hltl.perception.observe import Observation, Perceiver
 
 
 def observation_to_wire(obs: Observation) -> dict[str, Any]:

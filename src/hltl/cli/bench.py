@@ -250,6 +250,11 @@ def register(sub: Any) -> None:
     gr = bsub.add_parser("grounding", help="offline grounder on the paraphrase corpus")
     gr.add_argument("--show", action="store_true", help="list every instruction not exact")
     gr.add_argument("--write", type=Path, help="update this Markdown file's grounding section")
+    gr.add_argument(
+        "--parts",
+        default="",
+        help="comma-separated corpus parts such as tuning,blind2 (default: all; not with --write)",
+    )
     gr.set_defaults(func=run_grounding)
 
     s3 = bsub.add_parser("sim3d", help="3D simulator: model cache, real-time factor, render ms")
@@ -485,8 +490,16 @@ def run_replan(args: argparse.Namespace) -> int:
 
 def run_grounding(args: argparse.Namespace) -> int:
     root = repository_root()
+    parts = [p.strip() for p in args.parts.split(",") if p.strip()] or list(PARTS)
+    unknown = [p for p in parts if p not in PARTS]
+    if unknown:
+        raise HltlError(
+            f"--parts: unknown part {unknown[0][:40]!r}; expected some of {', '.join(PARTS)}"
+        )
+    if args.write is not None and len(parts) != len(PARTS):
+        raise HltlError("--parts: --write records every part; drop --parts to write the table")
     scores = []
-    for part in PARTS:
+    for part in parts:
         result = score(load_corpus(root / CORPUS_DIR / f"{part}.yaml", root), offline_tree)
         scores.append(result)
         print(

@@ -8,8 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from hltl.cli.common import error_line
-from hltl.errors import HltlError
+from hltl.errors import HltlError, error_line
 from hltl.spec.automata import default_cache
 from hltl.spec.hierarchy import load_spec
 from hltl.spec.printer import to_string

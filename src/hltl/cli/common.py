@@ -4,25 +4,14 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from hltl.errors import HltlError
-
-if TYPE_CHECKING:
-    from hltl.planner.result import PlanResult
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
-
-
-MAX_ERROR_CHARS = 2000
-
-
-def error_line(message: str) -> str:
-    """One bounded line: messages quote user input, which must not flood the terminal."""
-    line = " ".join(message.split("\n"))
-    if len(line) > MAX_ERROR_CHARS:
-        line = f"{line[:MAX_ERROR_CHARS]}… (message of {len(line):,} characters cut)"
-    return line
+from hltl.grounding import make_grounder
+from hltl.grounding.base import check_instruction
+from hltl.planner.result import PlanResult
+from hltl.skills.library import Action
+from hltl.spec.hierarchy import HSpec, load_spec
+from hltl.world.scene import Scene
 
 
 def check_option(name: str, value: float, *, positive: bool = False) -> float:
@@ -44,19 +33,9 @@ def load_spec_or_ground(
 ) -> HSpec:
     """The spec from a file, or the instruction grounded in the scene."""
     if spec_path is not None:
-        from hltl.spec.hierarchy import (
-            load_spec,  # lazy: cli.main imports this module, keep `hltl` start-up lean
-        )
-
         return load_spec(spec_path)
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
-    from hltl.grounding import (
-        make_grounder,  # lazy: cli.main imports this module, keep `hltl` start-up lean
-    )
-    from hltl.grounding.base import (
-        check_instruction,  # lazy: cli.main imports this module, keep `hltl` start-up lean
-    )
 
     check_instruction(instruction, "--instruction")
     spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
@@ -65,9 +44,6 @@ def load_spec_or_ground(
 
 def describe_action(scene: Scene, action: object) -> str:
     """One action in words: 'r1 hands bottle to Person A'."""
-    from hltl.skills.library import (
-        Action,  # lazy: cli.main imports this module, keep `hltl` start-up lean
-    )
 
     assert isinstance(action, Action)
     rs = action.robots

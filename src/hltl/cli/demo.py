@@ -5,17 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.cli.run import Timeline
 from hltl.sim.events import load_events
-from hltl.viz.demo import DEFAULT_OUT, DEMO_INSTRUCTION, demo_scene, run_demo
+from hltl.viz.demo import DEFAULT_OUT, DEMO_INSTRUCTION, DemoResult, demo_scene, run_demo
 from hltl.viz.demo3d import run_demo3d
-from hltl.world.scene import load_scene
-
-if TYPE_CHECKING:
-    from hltl.viz.demo import DemoResult
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 
 
 def register(sub: Any) -> None:

@@ -5,19 +5,15 @@ from __future__ import annotations
 import argparse
 import json
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl import grounding
 from hltl.errors import GroundingError
 from hltl.fileio import write_output
-from hltl.grounding.base import check_instruction
+from hltl.grounding.base import Grounding, check_instruction
 from hltl.spec.hierarchy import load_spec, spec_to_dict
 from hltl.spec.printer import to_string
-from hltl.world.scene import load_scene
-
-if TYPE_CHECKING:
-    from hltl.grounding.base import Grounding
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 
 
 def register(sub: Any) -> None:

@@ -9,8 +9,7 @@ import traceback
 from collections.abc import Sequence
 
 from hltl import __version__
-from hltl.cli.common import error_line
-from hltl.errors import HltlError
+from hltl.errors import HltlError, error_line
 
 # One entry per subcommand: name -> (its module under hltl.cli, the one-line help `hltl --help`
 # lists). The module, which exposes ``register(subparsers)`` adding its parser with

@@ -13,6 +13,8 @@ from hltl.perception.frames import FrameFolder
 from hltl.perception.language import Candidate, select
 from hltl.perception.objects import BACKENDS
 from hltl.perception.observe import Perceiver
+from hltl.perception.overlay import draw_overlay
+from hltl.perception.predict import make_predictor
 from hltl.world.scene import load_scene
 
 
@@ -81,8 +83,6 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
          perceiver: Any) -> int:  # fmt: skip
     predictor = None
     if args.viz is not None and scene is not None:
-        from hltl.perception.predict import make_predictor  # only with --viz
-
         predictor = make_predictor(args.predictor, scene)
     observations = []
     for frame in folder:
@@ -91,8 +91,6 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
         if predictor is not None:
             predictor.observe(obs.t, [(p.person, p.position) for p in obs.people if p.person])
         if args.viz is not None:
-            from hltl.perception.overlay import draw_overlay  # the viz extra (PIL), only with --viz
-
             args.viz.mkdir(parents=True, exist_ok=True)
             draw_overlay(frame, folder.camera, obs, predictor, perceiver).save(
                 args.viz / f"{frame.index:06d}.png"

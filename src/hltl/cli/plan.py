@@ -12,6 +12,9 @@ from typing import Any
 from hltl.cli.common import check_option, load_spec_or_ground, print_plan_timeline
 from hltl.errors import HltlError
 from hltl.fileio import write_output
+from hltl.planner import plan
+from hltl.spec.hierarchy import spec_to_dict
+from hltl.world.scene import load_scene
 
 
 def register(sub: Any) -> None:
@@ -65,14 +68,6 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from hltl.planner import plan  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
-    from hltl.spec.hierarchy import (
-        spec_to_dict,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
-    )
-    from hltl.world.scene import (
-        load_scene,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
-    )
-
     if args.timeout is not None:
         check_option("--timeout", args.timeout, positive=True)
     if args.suboptimality is not None and not (
@@ -87,9 +82,9 @@ def run(args: argparse.Namespace) -> int:
     spec = load_spec_or_ground(scene, args.spec, args.instruction, args.grounder)
     extra: dict[str, Any] = {}
     if args.motion:
-        from hltl.motion.cost import (
-            motion_models,  # lazy: keeps `hltl plan --help` start-up lean (issue 11)
-        )
+        # why: the motion layer loads numpy and a process pool; `hltl plan` without --motion
+        # starts in 0.2 s CPU (docs/benchmarks.md, Start-up)
+        from hltl.motion.cost import motion_models
 
         kinematics, cost = motion_models(scene)
         extra = {"kinematics": kinematics, "cost": cost}

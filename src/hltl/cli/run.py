@@ -9,8 +9,9 @@ from pathlib import Path
 from typing import Any
 
 from hltl.bench.latency import DEFAULT_MODEL
-from hltl.cli.bus_options import add_bus_arguments
+from hltl.cli.bus_options import BusSimulator, add_bus_arguments
 from hltl.cli.common import check_option, describe_action
+from hltl.cli.sim3d import add_simulator_arguments, simulator_options
 from hltl.errors import HltlError
 from hltl.execution import log as elog
 from hltl.execution.executor import Executor, ExecutorConfig
@@ -78,17 +79,8 @@ def register(sub: Any) -> None:
         help="anticipatory execution: start what the forecast world's plan allows now",
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
-    p.add_argument(
-        "--sim",
-        choices=("discrete", "mujoco"),
-        default="discrete",
-        help="discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log",
-    )
-    p.add_argument(
-        "--timing",
-        choices=("motion", "cost"),
-        default="motion",
-        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    add_simulator_arguments(
+        p, "discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log"
     )
     p.add_argument(
         "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
@@ -152,18 +144,14 @@ def run(args: argparse.Namespace) -> int:
     if args.sim == "mujoco":
         if args.motion:
             raise HltlError("--motion runs with the discrete simulator; drop --sim mujoco")
-        from hltl.cli.sim3d import (
-            simulator_options,  # the sim3d extra (MuJoCo), only with --sim mujoco
-        )
-
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     grounder = make_grounder(args.grounder)
     if args.motion:
         extra = _motion_options(scene, spec, config, predictor)
     bus = None
+    if args.bus is None and args.realtime is not None:
+        raise HltlError("--realtime runs the cell on a node's clock: add --bus zenoh")
     if args.bus is not None:
-        from hltl.cli.bus_options import BusSimulator  # the bus extra (Zenoh), only with --bus
-
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
     episode = run_episode(

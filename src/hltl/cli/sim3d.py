@@ -2,17 +2,27 @@
 
 from __future__ import annotations
 
+import argparse
 import functools
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
+from hltl.sim3d.perceived import CameraSimulator
 from hltl.sim3d.record import FrameRecorder
+from hltl.world.scene import Scene
 
-if TYPE_CHECKING:
-    from hltl.sim3d.record import FrameRecorder
-    from hltl.world.scene import Scene
+
+def add_simulator_arguments(p: argparse.ArgumentParser, sim_help: str) -> None:
+    """``--sim`` (discrete or mujoco) and ``--timing`` (the 3D simulator's action durations)."""
+    p.add_argument("--sim", choices=("discrete", "mujoco"), default="discrete", help=sim_help)
+    p.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
 
 
 def simulator_options(
@@ -26,10 +36,6 @@ def simulator_options(
         "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
     }
     if perception == "camera":
-        from hltl.sim3d.perceived import (
-            CameraSimulator,  # the sim3d and perception extras, only for camera perception
-        )
-
         extra["simulator"] = functools.partial(CameraSimulator, timing=timing, model=model)
     recorder = None
     if frames is not None:

@@ -32,20 +32,21 @@ def make_grounder(name: str = "offline", **options: Any) -> Grounder:
         BackendUnavailableError: the backend's optional dependency is missing (``llm``, ``local``
             say so when they are first used).
     """
+    # A registry of backends (STYLE.md, logaut): `hltl plan --spec` and the executor load no
+    # parser and no LLM client.
     if name == "offline":
-        from hltl.grounding.offline import (
-            OfflineGrounder,  # only the grounder asked for is imported
-        )
+        # why: only the grounder asked for is imported
+        from hltl.grounding.offline import OfflineGrounder
 
         return OfflineGrounder(**options)
     if name == "llm":
-        from hltl.grounding.llm import LLMGrounder  # only the grounder asked for (the llm extra)
+        # why: only the grounder asked for is imported (the llm extra's backend)
+        from hltl.grounding.llm import LLMGrounder
 
         return LLMGrounder(**options)
     if name == "local":
-        from hltl.grounding.local import (
-            LocalGrounder,  # only the grounder asked for (the local extra)
-        )
+        # why: only the grounder asked for is imported (the local extra's backend)
+        from hltl.grounding.local import LocalGrounder
 
         return LocalGrounder(**options)
     raise GroundingError(f"unknown grounder {name!r}; expected one of {', '.join(GROUNDERS)}")

@@ -3,15 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
+from typing import Protocol, runtime_checkable
 
 from hltl.errors import GroundingError
 from hltl.fileio import quote
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
-
+from hltl.spec.hierarchy import HSpec
+from hltl.world.scene import Scene
 
 # A spoken or typed task is a sentence or a few; beyond this it is pasted text, and every
 # grounder's cost (prompt tokens, parsing, messages quoting it) grows with it.

@@ -1,15 +1,4 @@
-"""LLM grounder for any OpenAI-compatible endpoint (OpenAI, Ollama, vLLM, llama.cpp server).
-
-Configuration, lowest to highest precedence: defaults; a TOML file (``path`` given, else
-``$HLTL_LLM_CONFIG``, else ``~/.config/hltl/llm.toml`` if it exists) with keys ``base_url``,
-``model``, ``api_key``, ``api_key_env``, ``max_repairs``, ``temperature``, ``timeout``,
-``structured``; then the environment: ``HLTL_LLM_BASE_URL``, ``HLTL_LLM_MODEL``,
-``HLTL_LLM_API_KEY``, ``HLTL_LLM_TIMEOUT`` (seconds per request).
-
-Answers are bounded: one longer than ``MAX_ANSWER_CHARS`` is refused (and only its start is sent
-back for repair), and an endpoint that reports more completion tokens than ``max_tokens`` allows
-is refused, since it ignores the limit the cost of a query relies on.
-"""
+"""LLM grounder for any OpenAI-compatible endpoint (OpenAI, Ollama, vLLM, llama.cpp server)."""
 
 from __future__ import annotations
 
@@ -19,17 +8,16 @@ import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.errors import BackendUnavailableError, GroundingError
 from hltl.fileio import clip, quote, read_text
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.prompt import build_messages, repair_message, response_format
+from hltl.grounding.update import ground_update
 from hltl.grounding.validate import AnswerError, check_answer
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.spec.hierarchy import HSpec
+from hltl.world.scene import Scene
 
 DEFAULT_CONFIG_PATH = Path("~/.config/hltl/llm.toml")
 ENV_PREFIX = "HLTL_LLM_"
@@ -301,10 +289,6 @@ class LLMGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
         if running is not None:
-            from hltl.grounding.update import (
-                ground_update,  # import cycle: grounding.update imports this module
-            )
-
             return ground_update(instruction, scene, running, self)
         client = self.client
         formats: dict[str, dict[str, Any]] = {

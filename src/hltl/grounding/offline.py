@@ -1,29 +1,10 @@
-"""The embedded offline grounder: a deterministic semantic parser for handover instructions.
-
-The grammar (docs/grounding.md lists every phrasing):
-
-    instruction := sentence ((. | ; | meanwhile | also | then) sentence)*
-    sentence    := [(after|once|when|before) sub ,] seq
-    seq         := [first] coord ((then | after that | finally …) coord
-                                  | (after | once | before) coord)*
-    coord       := fragment ((, | and | or | as well as …) fragment)*   with either/both brackets
-    fragment    := [verb] person object | [verb] object (to|for|on) target
-                 | person (wants|needs|has|gets …) object | object | person | (to|on) target
-
-A fragment may leave its verb, its object or its recipient out when a neighbour gives it
-("give A the bottle and B the chips", "hand both the cup and the chips to B"). Before the grammar,
-hltl.grounding.phrasing rewrites how people ask (politeness, questions, corrections, pronouns,
-quantifiers) into this plain form or refuses; a choice several tasks share ("a mug each") becomes
-an ``or`` over the ways to give each a different object. Every name must
-resolve to exactly one scene entity; anything else raises :class:`GroundingError` quoting the words
-and listing what the scene has.
-"""
+"""The embedded offline grounder: a deterministic semantic parser for handover instructions."""
 
 from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
@@ -40,11 +21,9 @@ from hltl.grounding.tree import (
     normalise,
     tasks,
 )
-from hltl.spec.hierarchy import spec_from_dict
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.grounding.update import ground_update
+from hltl.spec.hierarchy import HSpec, spec_from_dict
+from hltl.world.scene import Scene
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -58,10 +37,6 @@ class OfflineGrounder:
     def ground(self, instruction: str, scene: Scene, running: HSpec | None = None) -> Grounding:
         """Ground ``instruction``; with ``running``, merge it as an update (see update.py)."""
         if running is not None:
-            from hltl.grounding.update import (
-                ground_update,  # import cycle: grounding.update imports this module
-            )
-
             return ground_update(instruction, scene, running, self)
         node = parse_instruction(instruction, scene)
         return Grounding(spec=spec_of(node), entities=entities(node), tokens=TokenUsage())
@@ -317,6 +292,10 @@ class _Parser:
 
     # -- sequences ------------------------------------------------------------------------------
     def seq(self, items: list[Item]) -> _Raw:
+        sides = _either_of_sequences(items)
+        if sides is not None:  # "either give A the cup and then B the chips, or give C …"
+            left, right = sides
+            return _RawGroup("or", [self.seq(left), self.seq(right)])
         items = _trailing_order(items)
         segments: list[tuple[str, list[Item]]] = []
         current: list[Item] = []
@@ -327,6 +306,9 @@ class _Parser:
                     current.pop()  # ", and then": the separator belongs to the connector
                 if not current and segments and conn == "then" and it.lemma == "then":
                     continue  # "and then, when that's done, …": one step, said twice
+                if not current and segments and conn == "then" and it.lemma in ("once", "after"):
+                    conn = "then+" + it.lemma  # "A and then, once he has it, Y": after A and X
+                    continue
                 if current or segments:
                     segments.append((conn, current))
                 elif it.lemma != "then":
@@ -343,6 +325,20 @@ class _Parser:
             if result is not None and conn in ("after", "once", "before", "prior"):
                 _one_condition(conn, seg, items)
             split = _main_clause_start([Item("word", conn, conn), *seg])
+            if conn.startswith("then+"):
+                if split is None or not _is(seg[split - 1], ","):
+                    raise GroundingError(
+                        f"in {_text(items)!r} it is unclear where the {conn[5:]!r} part ends: "
+                        "put a comma before the next instruction"
+                    )
+                # "A, then, once X, Y": Y waits for A and for X (X is often A said again)
+                assert result is not None
+                self._segment += 1
+                sub = self.coord(seg[: split - 1])
+                self._segment += 1
+                main = self.coord(seg[split:])
+                result = _RawGroup("seq", [_RawGroup("and", [result, sub]), main])
+                continue
             if (
                 result is not None
                 and conn in ("after", "once")
@@ -588,7 +584,7 @@ class _Parser:
             frag.target = _Target(kind, tid, "", pre[0].text)
             frag.subject = True
             self._body(frag, post, allow_target=False)
-            if frag.objects is None and not frag.it:
+            if frag.objects is None and not frag.it and not frag.them:
                 raise GroundingError(f"{frag.text!r}: {frag.verb_text} what?")
             return
         # passive: "<object> is handed to <person>", "<object> is placed on <surface>"
@@ -743,7 +739,7 @@ class _Parser:
             if f.verb is None:
                 f.verb = next((g.verb for g in reversed(frags[:k]) if _acting(g)), None)
             if f.it:
-                ante = frags[k - 1]
+                ante = self._antecedents(k)[0]
                 prev = ante.objects
                 if prev is None or (len(prev) != 1 and ante.group < 0):
                     raise GroundingError(f"'it' in {f.text!r} could mean several objects")
@@ -806,6 +802,15 @@ class _Parser:
         """What 'it' (the clause just before) or 'them' (that clause and its list) refer to."""
         frags = self.frags
         f = frags[k]
+        if f.it and f.subject and f.target is not None:
+            # "…, and B the chips once A has it": what A has is what A is given, not the chips
+            given = [
+                g
+                for g in frags[:k]
+                if g.target is not None and g.target.id == f.target.id and not g.subject
+            ]
+            if given:
+                return [given[-1]]
         if f.it:
             return [frags[k - 1]]
         out: list[_Frag] = []
@@ -895,6 +900,45 @@ class _Parser:
 # -- helpers -------------------------------------------------------------------------------------
 
 
+_ORDER = ("then", "after", "before", "once", "prior")
+
+
+def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | None:
+    """'Either X and then Y, or Z': an alternative that is itself a sequence.
+
+    Only for 'either' opening the sentence and an 'or' that opens a clause (a verb after it):
+    with steps before that 'or' only, the two sides are the alternatives. Steps after it ('either
+    X or Y and then Z') could belong to Y or to both, so that is refused.
+    """
+    k = 0
+    while k < len(items) and _is(items[k], "filler", ",", "first"):
+        k += 1
+    if k >= len(items) or not _is(items[k], "either"):
+        return None
+    if not any(_is(it, *_ORDER) for it in items[k + 1 :]):
+        return None
+    ors = []
+    for n in range(k + 1, len(items)):
+        if _is(items[n], "or"):
+            j = n + 1
+            while j < len(items) and _is(items[j], "filler", "subject", "aux", ","):
+                j += 1
+            if j < len(items) and _is_verb(items[j]):
+                ors.append(n)
+    if len(ors) != 1:
+        return None
+    at = ors[0]
+    if any(_is(it, *_ORDER) for it in items[at + 1 :]):
+        raise GroundingError(
+            f"in {_text(items)!r} the steps after 'or' could belong to the last alternative or "
+            "come after either: say it in two sentences ('Either … or …. Then …')"
+        )
+    left = items[k + 1 : at]
+    while left and _is(left[-1], ","):
+        left.pop()
+    return left, items[at + 1 :]
+
+
 def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:
     """'Y once X and give Z …': does 'and give Z' belong to the condition or the request?"""
     for k in range(1, len(seg)):
@@ -958,6 +1002,24 @@ def _dedupe(node: Node) -> Node:
         if node.op == "seq" and kids and kids[-1] == c:
             continue
         kids.append(c)
+    if node.op == "seq":
+        # a task an earlier step already required, said again in a later step, is that task (a
+        # condition restating it), not a second hand-over: "give A the bottle, and B the chips
+        # once A has it" parses as bottle>A ; (bottle>A & chips>B) and means bottle>A ; chips>B
+        done: set[Task] = set()
+        later: list[Node] = []
+        for c in kids:
+            if isinstance(c, Group) and c.op == "and":
+                rest = [x for x in c.children if not (isinstance(x, Task) and x in done)]
+                c = (
+                    (normalise(Group("and", tuple(rest))) if len(rest) > 1 else rest[0])
+                    if rest
+                    else c
+                )
+            if not (isinstance(c, Task) and c in done) or not later:
+                later.append(c)
+            done |= _required(c)
+        kids = later
     if node.op == "and":
         # a task another part already requires adds nothing: F a & F (a & F b) is F (a & F b)
         kids = [

@@ -5,12 +5,10 @@ from __future__ import annotations
 import json
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.grounding.base import scene_graph
-
-if TYPE_CHECKING:
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 SYSTEM = "\n".join(
     (

@@ -1,22 +1,14 @@
-"""Task trees (deliveries, placements, and/or/sequence groups) and their H-LTLf encoding.
-
-The encoding is DESIGN.md's grounding convention: one leaf per delivery or placement
-(``F delivered(o, u)`` / ``F placed(o, s)``); ``and`` → ``F a & F b``; ``or`` → ``F a | F b``;
-sequence → ``F (a & F b)`` (non-strict: b never completes before a). Leaves are named p100,
-p200, …; inner groups p1, p2, …; the root p0.
-"""
+"""Task trees (deliveries, placements, and/or/sequence groups) and their H-LTLf encoding."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal, TypeAlias
+from typing import Literal, TypeAlias
 
 from hltl.errors import GroundingError
+from hltl.spec.hierarchy import HSpec
 from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
 
 Op: TypeAlias = Literal["and", "or", "seq"]
 TaskKind: TypeAlias = Literal["deliver", "place"]

@@ -1,35 +1,10 @@
-"""Instructions given during execution (paper GOAL events): merge them into the running spec.
-
-Every update keeps the names and texts of the running formulas it does not touch, so the
-executor carries their monitor state over as it is (:func:`hltl.spec.monitor.carry_over`).
-The phrasings:
-
-* add (default; "also …", "and …", "additionally …", "in addition, …", "plus …"): the new task
-  runs alongside: new root ``F <old root> & F <new>``.
-* then ("then …", "after that …", "afterwards …", "next …", "finally …", "later …",
-  "when/once you are done, …"): after everything running: ``F (<old root> & F <new>)``.
-* first ("first …", "… first" with a new task): before everything running:
-  ``F (<new> & F <old root>)``.
-* priority ("do the chips first", "the chips first", "prioritise the chips", "give B the chips
-  first" for a running task): the matching running tasks move to the front.
-* cancel ("cancel …", "forget (about) …", "skip …", "remove …", "abort …", "scrap …", "drop …",
-  "never mind …", "don't …", "no longer …"): the matching running tasks are removed and the tree
-  is pruned (a group left empty goes too).
-* instead ("… instead of X", "instead of X, …", "… instead"): the new task takes the place of the
-  matching running task (without "of X": the one running task with the same object, else the
-  same recipient or place).
-
-Tasks are matched by the scene entities named ("the chips", "the delivery to B", "B's chips"):
-a task matches when it mentions all of them. Completed tasks cannot be cancelled, replaced or
-moved.
-"""
+"""Instructions given during execution (paper GOAL events): merge them into the running spec."""
 
 from __future__ import annotations
 
 import re
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from hltl.errors import GroundingError, SpecValidationError
 from hltl.fileio import quote
@@ -46,16 +21,13 @@ from hltl.grounding.tree import (
     recognise_task,
 )
 from hltl.spec.automata import rename_atoms
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict
 
 # carry_over moved to hltl.spec.monitor (a monitor operation); the old import path still works
 from hltl.spec.monitor import carry_over as carry_over
 from hltl.spec.printer import to_string
 from hltl.spec.syntax import Atom
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 _THEN = re.compile(
     r"^\s*(?:and\s+)?(?:then|after\s+that|afterwards?|next|finally|later|"

@@ -4,17 +4,14 @@ from __future__ import annotations
 
 import json
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from hltl.errors import GroundingError, HltlError
 from hltl.grounding.tree import check_deliveries, decode
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.spec.monitor import HierarchyMonitor
 from hltl.spec.printer import atoms_in_order
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 # Argument kinds of each predicate (DESIGN.md §3).
 ARG_KINDS: dict[str, tuple[str, ...]] = {

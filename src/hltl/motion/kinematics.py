@@ -12,6 +12,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.motion.robots import ArmSpec, arm_spec, load_model
+from hltl.motion.selfcollision import LinkPair, SelfCollision, collision_geometry
 from hltl.world.geometry import HANDOVER_HEIGHT
 
 FloatArray = npt.NDArray[np.float64]
@@ -113,6 +114,7 @@ class Arm:
         chain = [*joints[1:], np.asarray(self.data.oMf[self.tool].translation)]
         self.max_extent = float(sum(np.linalg.norm(b - a) for a, b in itertools.pairwise(chain)))
         self._library: tuple[FloatArray, FloatArray, FloatArray] | None = None
+        self.self_collision = SelfCollision(collision_geometry(model), self.model)
         self.home = self._home()
 
     # -- forward kinematics ----------------------------------------------------------------------
@@ -173,8 +175,18 @@ class Arm:
         return min(min(c.a[2], c.b[2]) - c.radius for c in caps) - float(self.base[2])
 
     def pose_clear(self, q: Joints) -> bool:
-        """The arm alone is in a valid pose: clear of the table top (:meth:`above_table`)."""
-        return self.above_table(q)
+        """The arm alone is in a valid pose: clear of the table top (:meth:`above_table`) and of
+        itself (:meth:`self_clear`)."""
+        return self.above_table(q) and self.self_clear(q)
+
+    def self_clear(self, q: Joints) -> bool:
+        """No two links of the arm that can touch come closer than SELF_MARGIN (coal distances
+        on the URDF's collision geometry; see :mod:`hltl.motion.selfcollision`)."""
+        return self.self_collision.clear(_local(q))
+
+    def self_distance(self, q: Joints) -> tuple[float, LinkPair | None]:
+        """The closest pair of the arm's own links that can touch, and their distance (m)."""
+        return self.self_collision.distance(_local(q))
 
     def elbow_up(self, q: Joints) -> bool:
         """True when the elbow sits above the line from the shoulder to the wrist.

@@ -18,7 +18,7 @@ ELFIN3_URDF = MODELS_DIR / "elfin3.urdf"
 
 # Bumped whenever what a model means changes (tool offsets, capsule sizes): it feeds the model
 # hash that keys the reachability maps cached on disk.
-MODEL_FORMAT_VERSION = 2  # 2: the table test uses the link capsules, not the joint points
+MODEL_FORMAT_VERSION = 3  # 2: the table test uses link capsules; 3: self-collision
 
 
 @dataclass(frozen=True, slots=True)

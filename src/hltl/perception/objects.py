@@ -27,6 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import PerceptionError
+from hltl.motion.grasps import CATEGORY_CYLINDERS
 from hltl.perception.detection import (
     BASE_CLEARANCE,
     MIN_PIXELS,
@@ -230,7 +231,6 @@ def size_prior(scene: Scene | None, label: str) -> tuple[float, float] | None:
     """(radius, height) of the object a label names, when its category has a known cylinder
     (the motion layer's grasp model, which the 3D simulator also renders): a scene id names its
     object's category, any other label is taken as a category. None when unknown."""
-    from hltl.motion.grasps import CATEGORY_CYLINDERS
 
     category = label
     if scene is not None:

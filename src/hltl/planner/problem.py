@@ -176,6 +176,7 @@ class Problem:
         }
         self._relevant_cache: dict[frozenset[str], frozenset[int]] = {}
         self._dist: dict[tuple[int, int], float] = {}
+        self.symmetry = Symmetry.of(self, spec)
 
     # -- encoding --------------------------------------------------------------------------------
     def atom_bits(self, atoms_: frozenset[Atom]) -> int:
@@ -245,6 +246,66 @@ class Problem:
             return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
         return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
+
+
+# An instance up to its object: what it needs, what it does, who does it and how long it takes.
+_InstanceShape = tuple[int, int, int, tuple[int, ...], int, bool]
+
+
+def _shape(inst: Instance) -> _InstanceShape:
+    return (inst.pre, inst.post, inst.executors, inst.free, inst.lower, inst.event_bits != 0)
+
+
+@dataclass(frozen=True, slots=True)
+class Symmetry:
+    """Interchangeable objects (docs/planner.md, "Interchangeable objects"): with fixed
+    durations and a conjunction of events, two objects whose instances have the same shapes
+    (places, robots, durations, whether they fire the object's leaf) and whose leaves ask for
+    the same thing of each (``delivered(·, A)``) can swap places without changing what any plan
+    costs from there, as long as neither leaf has fired. The search keeps one node per such
+    swap: it sorts the places of the unfired members of each class.
+
+    ``classes``: per class, its members and each member's leaf (``None``: no leaf mentions it).
+    ``twin``: ``twin[o][k]`` is object ``o``'s instance at position ``k`` of the shape order, so
+    an instance of one member maps to the same position of another (``counterpart``).
+    """
+
+    classes: tuple[tuple[tuple[int, str | None], ...], ...]
+    position: dict[int, int]  # instance index -> its position among its object's instances
+    twin: dict[int, tuple[Instance, ...]]
+
+    @staticmethod
+    def of(problem: Problem, spec: HSpec) -> Symmetry:
+        if problem.track_hands or not problem.events_commute or not problem.prune_irrelevant:
+            return Symmetry((), {}, {})
+        # per object its leaf and what the leaf asks of it (the atom without the object)
+        leaf_of: dict[int, tuple[str, tuple[str, tuple[str, ...]]]] = {}
+        for name in spec.leaves:
+            f = spec.formula(name)
+            assert isinstance(f, Eventually) and isinstance(f.operand, Atom)
+            a = f.operand
+            for oid in _object_args(a):
+                if oid in problem.obj_index:
+                    leaf_of[problem.obj_index[oid]] = (name, (a.name, a.args[1:]))
+        groups: dict[object, list[tuple[int, str | None]]] = {}
+        ordered: dict[int, tuple[Instance, ...]] = {}
+        for o in range(len(problem.objects)):
+            insts = [i for row in problem.by_obj_pre[o] for i in row]
+            ordered[o] = tuple(sorted(insts, key=lambda i: (_shape(i), i.index)))
+            leaf = leaf_of.get(o)
+            key = (None if leaf is None else leaf[1], tuple(_shape(i) for i in ordered[o]))
+            groups.setdefault(key, []).append((o, None if leaf is None else leaf[0]))
+        classes = tuple(tuple(g) for g in groups.values() if len(g) > 1)
+        members = {o for c in classes for o, _ in c}
+        twin = {o: ordered[o] for o in members}
+        position = {inst.index: k for o in members for k, inst in enumerate(ordered[o])}
+        return Symmetry(classes, position, twin)
+
+    def counterpart(self, inst: Instance, obj: int) -> Instance:
+        """``inst`` done to ``obj`` instead (``obj`` in the same class as ``inst.obj``)."""
+        if obj == inst.obj:
+            return inst
+        return self.twin[obj][self.position[inst.index]]
 
 
 def _events_commute(spec: HSpec, state_atom_objects: tuple[int, ...]) -> bool:

@@ -28,6 +28,9 @@ CHECK_EVERY = 64  # successors generated between two looks at the clock inside o
 # reached by several equally cheap steps keeps all their tags; an instance is skipped only when
 # every tag allows it to shift.
 Tag = tuple[int, int, int]
+# A node's labels as the search stores them, against the labels it had when a step reached it:
+# ``perm[o]`` is the object whose place canonical object ``o`` took (``None``: no relabelling).
+Perm = tuple[int, ...] | None
 
 
 class _Search:
@@ -40,6 +43,8 @@ class _Search:
         self._done_memo: dict[object, frozenset[str]] = {}
         self.heuristic = Heuristic(problem, self.done)
         self._dead_memo: dict[object, frozenset[int]] = {}
+        self._sym_memo: dict[object, tuple[tuple[int, ...], ...]] = {}
+        self._classes = problem.symmetry.classes
         # (child index, parent index), parents first: once a node is done its descendants can
         # no longer matter, so they are marked done too and equivalent states merge
         index = {n: i for i, n in enumerate(self.monitor.nodes)}
@@ -67,6 +72,50 @@ class _Search:
             nq = tuple(stepped)
             self._step_memo[key] = nq
         return nq
+
+    def symmetric(self, q: object) -> tuple[tuple[int, ...], ...]:
+        """Per class of interchangeable objects, its members whose leaf has not fired in ``q``
+        (at least two): their places may be permuted freely (``Problem.symmetry``)."""
+        hit = self._sym_memo.get(q)
+        if hit is None:
+            done = self.done(q)
+            groups = []
+            for members in self._classes:
+                live = tuple(o for o, leaf in members if leaf is None or leaf not in done)
+                if len(live) > 1:
+                    groups.append(live)
+            hit = tuple(groups)
+            self._sym_memo[q] = hit
+        return hit
+
+    def canonical(self, node: Node) -> tuple[Node, Perm]:
+        """The representative of ``node`` among its relabellings by interchangeable objects:
+        the unfired members of each class take their places in ascending order."""
+        groups = self.symmetric(node[2])
+        if not groups:
+            return node, None
+        locs = node[0]
+        perm: list[int] | None = None
+        new_locs: list[int] | None = None
+        for members in groups:
+            prev = -1
+            for o in members:
+                if locs[o] < prev:
+                    break
+                prev = locs[o]
+            else:
+                continue  # already in order
+            if perm is None:
+                perm = list(range(len(locs)))
+                new_locs = list(locs)
+            assert new_locs is not None
+            order = sorted(members, key=locs.__getitem__)
+            for o, src in zip(members, order, strict=True):
+                new_locs[o] = locs[src]
+                perm[o] = src
+        if perm is None or new_locs is None:
+            return node, None
+        return (tuple(new_locs), node[1], node[2]), tuple(perm)
 
     def dead(self, q: object) -> frozenset[int]:
         """Instances that would make an atom every accepting continuation from ``q`` needs
@@ -121,11 +170,13 @@ class _Search:
 
     def steps(
         self, node: Node, tags: Sequence[Tag] = ()
-    ) -> Iterator[tuple[tuple[Instance, ...], int, Node, Tag]]:
+    ) -> Iterator[tuple[tuple[Instance, ...], int, Node, Tag, Perm]]:
         """All successors: every set U of applicable instances with disjoint robots, with its
-        duration, the node it leads to and its tag."""
+        duration, the node it leads to (canonical, see ``canonical``), its tag (in the child's
+        labels) and the relabelling."""
         q = node[2]
         opts = self.options(node, tags)
+        classes = self._classes
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
         # recursive generator passes every step set up through one frame per object); the
@@ -144,7 +195,13 @@ class _Search:
             cost, child = self.apply(node, chosen)
             if not chosen and child[2] == q:
                 continue
-            yield chosen, cost, child, (used, moved, cost)
+            if classes:
+                child, perm = self.canonical(child)
+                if perm is not None:
+                    moved = _relabel(moved, perm)
+                yield chosen, cost, child, (used, moved, cost), perm
+            else:
+                yield chosen, cost, child, (used, moved, cost), None
 
     def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node]:
         """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
@@ -221,7 +278,7 @@ def search(
         h = heur
     else:
         h = _zero
-    start = problem.start()
+    start, start_perm = s.canonical(problem.start())
     if problem.monitor.accepted(start[2]):
         return PlanResult(
             PlanStatus.SOLVED,
@@ -238,7 +295,7 @@ def search(
 
     counter = itertools.count()
     g_best: dict[Node, int] = {start: 0}
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], int]] = {}
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], int, Perm]] = {}
     # costs are integer ticks, so ties and the order of expansion are the same in every run
     heap: list[tuple[float, int, int, Node]] = [(h0, 0, next(counter), start)]
     expanded = generated = 0
@@ -271,7 +328,7 @@ def search(
         if f > bound:
             bound = f
         if problem.monitor.accepted(node[2]):
-            steps = _reconstruct(problem, parent, node)
+            steps = _reconstruct(s, parent, node, start_perm)
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
             makespan = to_seconds(g)
             return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, lower_bound=makespan)
@@ -286,7 +343,7 @@ def search(
             on_progress(expanded, to_seconds(bound))
         n_children = 0
         # the start node has no tag: nothing can be shifted into a step before it
-        for U, cost, child, tag in s.steps(node, node_tags):
+        for U, cost, child, tag, perm in s.steps(node, node_tags):
             n_children += 1
             if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
                 return stop(time.perf_counter() - t0)
@@ -312,7 +369,7 @@ def search(
                 g_best[child] = ng
                 tags[child] = [tag]
                 seen_tags.pop(child, None)
-                parent[child] = (node, U, cost)
+                parent[child] = (node, U, cost, perm)
                 generated += 1
             heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
     if upper is not None:
@@ -338,18 +395,46 @@ def _infeasible(
     return PlanResult(PlanStatus.INFEASIBLE, stats=stats, reason=explain_infeasible(problem))
 
 
+def _relabel(mask: int, perm: tuple[int, ...]) -> int:
+    """An object bit mask in the labels after ``perm``."""
+    out = 0
+    for o, src in enumerate(perm):
+        if mask >> src & 1:
+            out |= 1 << o
+    return out
+
+
 def _reconstruct(
-    problem: Problem,
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], int]],
+    s: _Search,
+    parent: dict[Node, tuple[Node, tuple[Instance, ...], int, Perm]],
     node: Node,
+    start_perm: Perm = None,
 ) -> tuple[PlanStep, ...]:
-    chain: list[tuple[Node, tuple[Instance, ...], int]] = []
+    chain: list[tuple[Node, tuple[Instance, ...], int, Perm]] = []
     while node in parent:
-        prev, U, cost = parent[node]
-        chain.append((prev, U, cost))
-        node = prev
+        chain.append(parent[node])
+        node = chain[-1][0]
     chain.reverse()
-    return plan_steps(problem, chain)
+    problem = s.p
+    if start_perm is None and all(perm is None for *_, perm in chain):
+        return plan_steps(problem, [(prev, U, cost) for prev, U, cost, _ in chain])
+    # the search stored every node relabelled (interchangeable objects sorted): replay the
+    # steps on the real objects, carrying which real object each stored label stands for (the
+    # monitor states differ too once a relabelled object's leaf fires)
+    real = list(range(len(problem.objects))) if start_perm is None else list(start_perm)
+    symmetry = problem.symmetry
+    out: list[tuple[Node, tuple[Instance, ...], int]] = []
+    node = problem.start()
+    for _, U, cost, perm in chain:
+        real_U = tuple(symmetry.counterpart(i, real[i.obj]) for i in U)
+        real_cost, child = s.apply(node, real_U)
+        assert real_cost == cost  # a relabelling changes no duration
+        out.append((node, real_U, cost))
+        node = child
+        if perm is not None:
+            real = [real[src] for src in perm]
+    assert problem.monitor.accepted(node[2])
+    return plan_steps(problem, out)
 
 
 def plan_steps(
@@ -372,4 +457,4 @@ def plan_problem(problem: Problem, **kwargs: object) -> PlanResult:
 
 def all_steps(problem: Problem, node: Node) -> Sequence[tuple[tuple[Instance, ...], int, Node]]:
     """Every successor of ``node`` (for tests and debugging)."""
-    return [(U, cost, child) for U, cost, child, _ in _Search(problem).steps(node)]
+    return [(U, cost, child) for U, cost, child, _, _ in _Search(problem).steps(node)]

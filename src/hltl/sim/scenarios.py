@@ -1,10 +1,4 @@
-"""Scenario catalogue: the paper's simulation suite (§V-A, Fig. 7) and the Fig. 1 cell, seeded.
-
-A :class:`Scenario` bundles a scene, an H-LTLf spec (as plain data), the English instruction a
-person would say for it and tags. :func:`generate` builds one procedurally from a size, a
-layout and a seed; :func:`catalogue` lists the named entries (the twelve Table II
-configurations such as ``"2-4-line"`` and ``"fig1"``); :func:`get` fetches one by name.
-"""
+"""Scenario catalogue: the paper's simulation suite (§V-A, Fig. 7) and the Fig. 1 cell, seeded."""
 
 from __future__ import annotations
 
@@ -16,17 +10,14 @@ from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import yaml
 
 from hltl.errors import SceneError, UnknownEntityError
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.geometry import can_meet, context_label, human_in_workspace, reaches
 from hltl.world.scene import Scene, scene_from_dict
-
-if TYPE_CHECKING:
-    from hltl.spec.hierarchy import HSpec
 
 LAYOUTS = ("single", "pair", "line", "square", "grid")
 

@@ -1,18 +1,4 @@
-"""The 3D simulator: the discrete-event simulator's world, embodied in MuJoCo.
-
-:class:`MujocoSimulator` is the discrete-event :class:`~hltl.sim.simulator.Simulator` (same
-events, same seeded failures, same physical checks, same log) whose robots move their arms:
-each started action gets a :class:`~hltl.motion.trajectory.MotionPlan` (given by the caller, or
-made here from IK of the transition's hand targets) and lasts as long as its motion. Arms are
-played back kinematically: joint positions are set from the trajectories each step (no torque
-control), because the executor's contract is the trajectory itself — position control would add
-tracking error and tuning that say nothing about the plan, and kinematic playback is exact,
-deterministic and far faster than real time. Grasped objects ride on the hand (kinematic
-carry), transfer to the receiver's hand at a handover and rest where the log says otherwise;
-people walk the event paths with swinging legs and raise a forearm while an object comes to
-them. Robot–person contacts are found by MuJoCo's collision detection every ``contact_dt``
-seconds and logged as ``contact`` records.
-"""
+"""The 3D simulator: the discrete-event simulator's world, embodied in MuJoCo."""
 
 from __future__ import annotations
 
@@ -21,7 +7,6 @@ import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -31,6 +16,9 @@ from hltl.execution.log import (
     EventLog,
     vec,
 )
+from hltl.motion.kinematics import Arm, rotation_z_to
+from hltl.motion.planning import Cell, plan_action
+from hltl.motion.robots import has_model
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel, Simulator
@@ -39,10 +27,6 @@ from hltl.sim3d.stage import DOWN, Contact, Stage
 from hltl.skills.cost import CostModel
 from hltl.skills.library import Action
 from hltl.world.scene import Scene, Vec3
-
-if TYPE_CHECKING:
-    from hltl.motion.kinematics import Arm
-    from hltl.motion.planning import Cell
 
 TIMINGS = ("motion", "cost")
 # seconds the hand dwells at the target to close or open the fingers (the analytic cost model's)
@@ -346,11 +330,6 @@ class MujocoSimulator(Simulator):
         note = ""
         if self._arms and all(r in self._arms for r in action.robots) and targets:
             try:
-                from hltl.motion.planning import (  # the motion extra, optional here
-                    Cell,
-                    plan_action,
-                )
-
                 if self._cell is None:
                     self._cell = Cell(self.scene)
                 where = None
@@ -412,8 +391,6 @@ class MujocoSimulator(Simulator):
     ) -> tuple[tuple[float, ...], float]:
         arm = self._arms.get(rid)
         if arm is not None:
-            from hltl.motion.kinematics import rotation_z_to  # the motion extra, optional here
-
             res = arm.ik(tuple(target), rotation_z_to(approach), q0, starts=4)
             if not res.ok:
                 res = arm.ik(tuple(target), None, q0, starts=4)
@@ -460,11 +437,6 @@ def _stretch(plan: MotionPlan, duration: float) -> MotionPlan:
 
 def _motion_arms(scene: Scene) -> dict[str, Arm]:
     """hltl.motion arms for the scene's robots it has models of (none without the extra)."""
-    try:
-        from hltl.motion.kinematics import Arm  # the motion extra, optional here
-        from hltl.motion.robots import has_model  # the motion extra, optional here
-    except ImportError:
-        return {}
     out: dict[str, Arm] = {}
     for r in scene.robots:
         if has_model(r.model) and r.model in ("elfin3", "ur5"):

@@ -1,41 +1,25 @@
-"""The paper's Fig. 1 episode end to end: ground, plan, execute with a person walking, draw it.
-
-Two arms of different reach (the Elfin-3 r1, 0.7 m, and the UR5 r2, 0.9 m) are told "Give Person
-A the bottle and Person B the chips". Each picks the object on its side and starts handing it
-over. Person A first steps up to the table (perception sees the motion; a background plan for
-the forecast world is made: snapshot 1), then walks on to r2's side during the handovers. The
-handover to A would lose its precondition (A leaves r1's workspace) before it ends, so it is
-halted while r2 finishes handing B the chips (snapshot 2); when the step ends and A is observed
-where the forecast said, the predicted suffix takes over: r1 passes the bottle to r2, which
-hands it to A. Both deliveries succeed and the monitor state survives the halt.
-"""
+"""The paper's Fig. 1 episode end to end: ground, plan, execute with a person walking, draw it."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from hltl.execution import log
-from hltl.execution.log import EpisodeStart, Grounding, Replan
+from hltl.execution.log import EpisodeStart, Grounding, LogRecord, Replan
 from hltl.grounding import make_grounder
 from hltl.sim.dynamic import fig1_events
-from hltl.sim.episode import run_episode
+from hltl.sim.episode import Episode, run_episode
+from hltl.sim.events import EventSchedule
 from hltl.sim.scenarios import fig1
-from hltl.spec.hierarchy import spec_from_dict
-from hltl.viz._mpl import save_figure
+from hltl.spec.hierarchy import HSpec, spec_from_dict
+from hltl.viz._mpl import pyplot, save_figure
 from hltl.viz.animate import animate, draw_frame, save_animation
 from hltl.viz.gantt import gantt
 from hltl.viz.spec_tree import spec_tree
 from hltl.viz.track import track_from_log
-
-if TYPE_CHECKING:  # kept out of the import: `hltl --help` reads this module's defaults
-    from hltl.execution.log import LogRecord
-    from hltl.sim.episode import Episode
-    from hltl.sim.events import EventSchedule
-    from hltl.spec.hierarchy import HSpec
-    from hltl.world.scene import Scene
+from hltl.world.scene import Scene
 
 DEMO_INSTRUCTION = "Give Person A the bottle and Person B the chips"
 DEFAULT_OUT = Path("out/demo")
@@ -124,8 +108,6 @@ def run_demo(
         BackendUnavailableError: ``pictures`` and matplotlib is missing (checked before the run).
     """
     if pictures:
-        from hltl.viz._mpl import pyplot  # the viz extra (matplotlib), only when pictures are drawn
-
         pyplot()  # fail before the episode, not after it
     cell = demo_scene() if scene is None else scene
     schedule = demo_events(cell) if events is None else events

@@ -1,10 +1,4 @@
-"""The Fig. 1 demo in the 3D simulator as a video: fixed camera, orbit view, timeline below.
-
-The episode runs in :class:`~hltl.sim3d.driver.MujocoSimulator` with ``timing="cost"`` so that
-the story is the discrete demo's (Person A walks away mid-handover, the handover is halted, the
-predicted suffix takes over); poses are recorded every ``1 / fps * speed`` simulated seconds and
-rendered afterwards, with a Gantt-style timeline of the log drawn under the two views.
-"""
+"""The Fig. 1 demo in the 3D simulator as a video: fixed camera, orbit view, timeline below."""
 
 from __future__ import annotations
 
@@ -21,6 +15,7 @@ from hltl.execution import log
 from hltl.execution.log import LogRecord
 from hltl.grounding import make_grounder
 from hltl.sim.episode import run_episode
+from hltl.sim.events import EventSchedule
 from hltl.sim3d.camera import CameraRenderer
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.gl import mujoco
@@ -35,13 +30,11 @@ from hltl.viz.demo import (
     first_makespan,
     story,
 )
+from hltl.world.scene import Scene
 
 if TYPE_CHECKING:
     from PIL import Image
 
-    from hltl.sim.events import EventSchedule
-    from hltl.viz.demo import DemoResult
-    from hltl.world.scene import Scene
 
 VIEW_W, VIEW_H = 560, 420
 STRIP_H = 154  # the frame height (34 + 420 + 154) is a multiple of 16, as video codecs like

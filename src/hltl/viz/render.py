@@ -4,17 +4,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from hltl.errors import HltlError
 from hltl.spec.printer import to_string
 from hltl.viz._mpl import MOVING_FORMATS, STILL_FORMATS, save_figure
-from hltl.viz.animate import animate, save_animation
-from hltl.viz.files import load_source, plan_scene
+from hltl.viz.animate import animate, draw_frame, require_ffmpeg, save_animation
+from hltl.viz.files import Source, load_source, plan_scene
+from hltl.viz.gantt import gantt
+from hltl.viz.spec_tree import dfa_diagram, node_dfas, spec_tree
 from hltl.viz.track import track_from_log, track_from_plan
-
-if TYPE_CHECKING:
-    from hltl.viz.files import Source
 
 KNOWN_FORMATS = STILL_FORMATS + MOVING_FORMATS
 
@@ -103,10 +101,6 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
         jobs.append(("frame", fmt or "png"))
 
     if ("anim", "mp4") in jobs:
-        from hltl.viz.animate import (
-            require_ffmpeg,  # the viz extra (matplotlib), only for the jobs asked
-        )
-
         require_ffmpeg()  # before drawing anything
     if out_path is not None and out_path.suffix and len(jobs) > 1:
         hint = " (or pick one with --format)" if any(j == "anim" for j, _ in jobs) else ""
@@ -132,18 +126,9 @@ def render_file(path: str | Path, out: str | Path | None, opts: RenderOptions) -
 
 def _draw(src: Source, job: str, ext: str, dest: Path, opts: RenderOptions) -> Path:
     if job == "tree":
-        from hltl.viz.spec_tree import (
-            spec_tree,  # the viz extra (matplotlib), only for the jobs asked
-        )
-
         assert src.spec is not None
         return save_figure(spec_tree(src.spec), dest, format=ext)
     if job == "dfa":
-        from hltl.viz.spec_tree import (  # the viz extra (matplotlib), only for the jobs asked
-            dfa_diagram,
-            node_dfas,
-        )
-
         assert src.spec is not None
         if opts.node is None or opts.node not in src.spec.names:
             raise HltlError(
@@ -159,14 +144,8 @@ def _draw(src: Source, job: str, ext: str, dest: Path, opts: RenderOptions) -> P
     else:
         track = track_from_plan(src.plan or {}, plan_scene(src, opts.scene))
     if job == "gantt":
-        from hltl.viz.gantt import gantt  # the viz extra (matplotlib), only for the jobs asked
-
         return save_figure(gantt(track), dest, format=ext)
     if job == "frame":
-        from hltl.viz.animate import (
-            draw_frame,  # the viz extra (matplotlib), only for the jobs asked
-        )
-
         assert opts.frame is not None
         return save_figure(draw_frame(track, opts.frame), dest, format=ext)
 

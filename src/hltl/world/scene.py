@@ -210,8 +210,8 @@ def scene_from_dict(data: Mapping[str, Any], source: str = "<scene>") -> Scene:
     raw = _plain(data)
     if raw is None:
         # Not in the plain form: the full validator decides, and names the problem if any.
-        # pydantic is imported only here, so that a command reading an ordinary scene starts
-        # fast (docs/benchmarks.md, "Start-up").
+        # why: scene_schema imports pydantic, so only here: a command reading an ordinary scene
+        # starts fast (docs/benchmarks.md, "Start-up")
         from hltl.world import scene_schema
 
         raw = _from_models(scene_schema.validate(data, source))
