@@ -1,15 +1,4 @@
-"""Temporal filters of perceived positions: one per person track, one per scene object.
-
-* :class:`WalkerFilter` — a constant-velocity Kalman filter on the floor plane for one person
-  track, with a chi-square gate: a measurement the filter finds implausible (a depth sample off
-  the body, a neighbour's pixels) is not folded in, the estimate coasts on its prediction; after
-  ``resets`` rejected measurements in a row the filter starts again from the measurement (the
-  person really is there). Height is smoothed, not predicted.
-* :class:`RestingFilter` — an object at rest: the mean of its measurements since it last moved
-  (each weighed at most 1/``window`` so a slow drift is followed); a measurement farther than
-  ``gate`` from the estimate is held back, and only ``confirm`` of them in a row that agree with
-  each other move the estimate (a one-frame mistake does not move an object).
-"""
+"""Temporal filters of perceived positions: gated Kalman per person track, gated mean per object."""
 
 from __future__ import annotations
 

@@ -1,14 +1,4 @@
-"""The learned object backend: a small segmentation network trained on the project's renders.
-
-A compact encoder–decoder (torch, CPU) labels every pixel of a half-resolution RGB-D frame
-with a class (:data:`CLASSES`: background, person, and the object categories the 3D simulator
-renders). Its input is colour, depth and each pixel's height in the world (from the camera's
-pose), so the same weights serve any camera placement. Instances are the connected regions of
-one class, split at depth edges, without support-plane pixels. It is trained by
-``hltl perception train-detector`` on labelled renders of randomised cells
-(:mod:`hltl.sim3d.dataset`); the weights ship in ``perception/data/object_segmenter.npz`` with
-their training command and seed. Nothing is downloaded.
-"""
+"""The learned object backend: a small segmentation network trained on the project's own renders."""
 
 from __future__ import annotations
 

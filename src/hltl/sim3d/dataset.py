@@ -1,10 +1,4 @@
-"""Labelled renders for the learned object segmenter: randomised cells, cameras and lights.
-
-Each layout takes a catalogue cell, replaces its objects by 3–8 random ones of every rendered
-category (clutter), moves its people, and renders several views: a random camera orbiting the
-cell (distance, height, aim), random light, random arm poses and walking people. The labels are
-the simulator's segmentation mapped to classes (:data:`hltl.perception.learned.CLASSES`).
-"""
+"""Labelled renders for the learned object segmenter: randomised cells, cameras, lights and arms."""
 
 from __future__ import annotations
 
