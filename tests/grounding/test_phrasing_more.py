@@ -80,6 +80,28 @@ def test_a_keyword_typo_is_never_a_common_word_or_near_two_keywords() -> None:
     assert lex.misspelt_keyword("hnad") is None  # "hand" and "had" are both one edit away
     assert lex.misspelt_keyword("cpu") is None  # a name ("cup") is as near: not a keyword
     assert lex.misspelt_keyword("teh") == "the"
+    assert lex.misspelt_keyword("aer") is None  # "are" is skipped by the grammar: no silent drop
+    assert lex.misspelt_keyword("thae") is None  # "the" or "that"
+
+
+def test_a_keyword_typo_inside_a_phrase_keeps_the_phrase() -> None:
+    _means(
+        "put the bottle on the shelf and after taht give alice the chips", "bottle@shelf ; chips>A"
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Alice tfe cup, Bob the chips, Carol the apple",  # a name inside: not a remark
+        "Give Alice the cup. ahen that is done, give Bob the apple.",  # 'when'/'then' mistyped
+        "Give Alice the cup. Sorry ahen that is done, give Bob the apple.",
+        "Give Bob the chips, he's tfe cup",
+    ],
+)
+def test_what_may_be_a_request_is_never_dropped_as_a_remark(text: str) -> None:
+    with pytest.raises(GroundingError):
+        parse_instruction(text, CELL)
 
 
 # -- remarks, contrast, nobody, instead of --------------------------------------------------------

@@ -1,29 +1,13 @@
-"""How people phrase requests: rewrite lexed items into the offline grammar's plain form.
-
-Each pass either rewrites a phrasing into the form the parser reads, or refuses with the reason
-(docs/grounding.md, "What the offline grounder ignores and what makes it refuse"):
-
-- questions that are not requests ("where is the cup?", "is the apple on the shelf?") → refuse;
-- the speaker as recipient ("I need the apple", "get me the cup") → refuse; "I need X brought
-  to B" → "X to B";
-- "whichever …" → skipped (the alternatives are already an ``or``);
-- corrections: "the bottle, no, the cup", "— sorry, I mean the table", "no, give it to Bob";
-- "the red one", "the other one": the category of the last object named;
-- "that" / "this" / "those" without a name after them are pronouns;
-- person pronouns (he, him, she, her) → the one person named before, else refuse with the
-  readings; "them" for objects is left for the parser;
-- quantifiers folded into the object name after them: "a mug", "one of the mugs", "all the
-  mugs", "the two mugs", "everything"; exclusions ("except the mugs", "not the red one");
-- "Alice: the cup", "Bob - the chips": the person receives what follows.
-"""
+"""How people phrase requests: rewrite lexed items into the offline grammar's plain form."""
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref
+from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref, near_keyword
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -48,7 +32,7 @@ def _humans(item: Item) -> bool:
 
 def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
-    items = _preambles(items)
+    items = _preambles(items, lexicon)
     items = _questions(items)
     items = _after_all(items)
     items = _whichever(items)
@@ -63,7 +47,7 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     items = _speaker(items, lexicon)
     items = _persons(items, lexicon)
     items = _places(items, lexicon)
-    items = _remarks(items)
+    items = _remarks(items, lexicon)
     items = _datives(items)
     return items
 
@@ -147,7 +131,7 @@ def _after_all(items: list[Item]) -> list[Item]:
     return out
 
 
-def _remarks(items: list[Item]) -> list[Item]:
+def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Carol's thirsty, can you hand her the bottle?': a remark about a person, no task.
 
     A person, 'is'/''s', then words the grammar does not know, up to a comma or the end of the
@@ -169,7 +153,9 @@ def _remarks(items: list[Item]) -> list[Item]:
                     items[n].kind == "unknown" or _is(items[n], "det", "filler", "aux")
                 ):
                     n += 1
-                said = any(x.kind == "unknown" for x in items[j:n])
+                said = any(x.kind == "unknown" for x in items[j:n]) and not any(
+                    _hides_name(x, lexicon) for x in items[j:n]
+                )
                 if said and n < len(items) and items[n].kind == "punct":
                     rest = items[n + 1 :]
                     if any(x.kind == "ent" for x in rest):
@@ -184,6 +170,25 @@ def _remarks(items: list[Item]) -> list[Item]:
     return items
 
 
+def _speaker_opens(head: list[Item]) -> bool:
+    """An apology or the speaker about themselves: 'Sorry …', 'Excuse me …', 'I know …'."""
+    first = head[0].text.lower()
+    return first in ("sorry", "excuse", "i", "we", "apologies", "pardon")
+
+
+def _hides_name(item: Item, lexicon: Lexicon) -> bool:
+    """Whether an unknown phrase holds a scene name ("Alice tfe cup") or a word one edit from a
+    keyword ("ahen that is done"): then it may be a request or an order the grammar could not
+    read, never a remark to drop."""
+    if item.kind != "unknown":
+        return False
+    words = item.lemma.split()
+    pairs = [f"{a} {b}" for a, b in itertools.pairwise(words)]
+    return any(lexicon.lookup(w) is not None for w in [*words, *pairs]) or any(
+        lexicon.misspelt(w) is not None or near_keyword(w) for w in words
+    )
+
+
 def _has_request(items: list[Item]) -> bool:
     """Whether the last sentence of ``items`` names anything."""
     start = _sentences(items)[-1][0]
@@ -195,12 +200,14 @@ def _has_request(items: list[Item]) -> bool:
 _REMARK_WORDS = frozenset({"filler", "det", "subject", "aux", "to", "correct", "for", "on"})
 
 
-def _preambles(items: list[Item]) -> list[Item]:
+def _preambles(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Sorry to bother you, but could you give Carol the apple?': the opening is no task.
 
-    At the start of a sentence, words up to a comma with at least one the grammar does not know
-    and nothing it reads as a name, verb, negation, condition, order or pronoun other than the
-    speaker, followed by a request in the same sentence: dropped with a 'but' after the comma.
+    At the start of a sentence, an apology or the speaker about themselves ('Sorry', 'Excuse me',
+    'I', 'we' first) up to a comma, with at least one word the grammar does not know and nothing
+    it reads as a name, verb, negation, condition, order or pronoun other than the speaker (nor
+    a word one edit from a keyword), followed by a request in the same sentence: dropped with a
+    'but' after the comma.
     """
     out: list[Item] = []
     for start, end in _sentences(items):
@@ -218,6 +225,8 @@ def _preambles(items: list[Item]) -> list[Item]:
             if (
                 plain
                 and any(x.kind == "unknown" for x in head)
+                and not any(_hides_name(x, lexicon) for x in head)
+                and _speaker_opens(head)
                 and any(x.kind == "ent" for x in rest)
             ):
                 while rest and (
