@@ -1,9 +1,4 @@
-"""The execution log (DESIGN.md §3): JSON Lines, one time-stamped event a line.
-
-Each kind of line ``{"t": <seconds>, "type": <kind>, ...}`` is a frozen record class here
-(docs/execution.md lists every kind and field); ``to_json``/``from_json`` keep the lines as they
-always were, so a log can be re-scored by any JSON reader.
-"""
+"""The execution log (DESIGN.md §3): JSON Lines, one time-stamped event a line."""
 
 from __future__ import annotations
 

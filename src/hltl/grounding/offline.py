@@ -1,23 +1,4 @@
-"""The embedded offline grounder: a deterministic semantic parser for handover instructions.
-
-The grammar (docs/grounding.md lists every phrasing):
-
-    instruction := sentence ((. | ; | meanwhile | also | then) sentence)*
-    sentence    := [(after|once|when|before) sub ,] seq
-    seq         := [first] coord ((then | after that | finally …) coord
-                                  | (after | once | before) coord)*
-    coord       := fragment ((, | and | or | as well as …) fragment)*   with either/both brackets
-    fragment    := [verb] person object | [verb] object (to|for|on) target
-                 | person (wants|needs|has|gets …) object | object | person | (to|on) target
-
-A fragment may leave its verb, its object or its recipient out when a neighbour gives it
-("give A the bottle and B the chips", "hand both the cup and the chips to B"). Before the grammar,
-hltl.grounding.phrasing rewrites how people ask (politeness, questions, corrections, pronouns,
-quantifiers) into this plain form or refuses; a choice several tasks share ("a mug each") becomes
-an ``or`` over the ways to give each a different object. Every name must
-resolve to exactly one scene entity; anything else raises :class:`GroundingError` quoting the words
-and listing what the scene has.
-"""
+"""The embedded offline grounder: a deterministic semantic parser for handover instructions."""
 
 from __future__ import annotations
 

@@ -1,21 +1,4 @@
-"""How people phrase requests: rewrite lexed items into the offline grammar's plain form.
-
-Each pass either rewrites a phrasing into the form the parser reads, or refuses with the reason
-(docs/grounding.md, "What the offline grounder ignores and what makes it refuse"):
-
-- questions that are not requests ("where is the cup?", "is the apple on the shelf?") → refuse;
-- the speaker as recipient ("I need the apple", "get me the cup") → refuse; "I need X brought
-  to B" → "X to B";
-- "whichever …" → skipped (the alternatives are already an ``or``);
-- corrections: "the bottle, no, the cup", "— sorry, I mean the table", "no, give it to Bob";
-- "the red one", "the other one": the category of the last object named;
-- "that" / "this" / "those" without a name after them are pronouns;
-- person pronouns (he, him, she, her) → the one person named before, else refuse with the
-  readings; "them" for objects is left for the parser;
-- quantifiers folded into the object name after them: "a mug", "one of the mugs", "all the
-  mugs", "the two mugs", "everything"; exclusions ("except the mugs", "not the red one");
-- "Alice: the cup", "Bob - the chips": the person receives what follows.
-"""
+"""How people phrase requests: rewrite lexed items into the offline grammar's plain form."""
 
 from __future__ import annotations
 

@@ -1,17 +1,4 @@
-"""Anytime planning with a certificate: prioritized plans fast, then proof of how good they are.
-
-A first plan comes from *prioritized routing*: the goal atoms the spec needs are served one
-object at a time, in priority order, each by an earliest-arrival search over (place, step) that
-respects what the objects routed before it already reserved (a robot acts on or holds one object
-per step; a robot holding an object can only act on it). Any order gives a valid plan when each
-object can be served alone; other orders may give shorter ones, so the planner tries several.
-Every constructed plan is replayed through the monitors before it is accepted.
-
-The certificate is the admissible heuristic at the start (critical path, robot load, pairs),
-raised by an exact A* that only looks for plans shorter than the best one found: when that
-search runs out of nodes the best plan is optimal; when time runs out, the least f on its open
-list is a proven lower bound. ``gap = (makespan - lower bound) / makespan``.
-"""
+"""Anytime planning with a certificate: prioritized plans fast, then proof of how good they are."""
 
 from __future__ import annotations
 

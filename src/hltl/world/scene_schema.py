@@ -1,8 +1,4 @@
-"""The scene file format as pydantic models: the full validator, with its error messages.
-
-Imported only when a scene is not in the plain form ``scene._plain`` reads itself (importing
-pydantic and building these models costs about 0.1 s of a command's start-up).
-"""
+"""The scene file format as pydantic models: the full validator, with its error messages."""
 
 from __future__ import annotations
 
