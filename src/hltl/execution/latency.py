@@ -16,7 +16,11 @@ reproducible), and :func:`planner_charge` says how much of it lands on the criti
 
 Motion planning happens inside the planner call: a motion cost model (``--motion``) plans and
 caches each instance's trajectories while the search times it, so a measured planner call
-includes it, and dispatch reuses the cached plans.
+includes it, and dispatch reuses the cached plans. The discrete suite has no motion planner in
+the loop; there ``ExecutorConfig.r2r_motion_s`` charges, with each planner call, the measured
+latency of planning the candidate goal sets of every robot-to-robot handover in the new plan's
+first step (the motion that must exist before dispatch; later steps' motions are planned while
+earlier steps run): parallel (P.M.P.) or serial, measured by ``hltl bench motion``.
 
 The constant ``ExecutorConfig.plan_latency`` (the same charge on every planner call) is kept for
 old command lines and compared in docs/evaluation.md; it is not a measurement.
@@ -103,22 +107,27 @@ def planner_charge(
     expanded: int,
     wall_s: float,
     since_step: float | None,
+    motion_s: float = 0.0,
 ) -> tuple[float, str]:
     """(seconds on the critical path, why) for a planner call made for ``trigger``.
 
     ``since_step`` is how long ago the step that just ended was dispatched (None: no step
-    ran before this call); a pipelined call is paid only beyond that.
+    ran before this call); a pipelined call is paid only beyond that. ``motion_s`` is the
+    motion planning the call's plan needs before dispatch, computed with it.
     """
-    cost = model.planner(expanded, wall_s)
+    cost = model.planner(expanded, wall_s) + motion_s
     parts = set(trigger.split("+")) if trigger else set()
     if parts and parts <= PIPELINED and since_step is not None:
         return max(0.0, cost - since_step), "pipelined"
     return cost, "critical"
 
 
-def takeover_charge(model: LatencyModel, expanded: int, wall_s: float, since: float) -> float:
-    """What remains of a predicted plan's computation, started ``since`` seconds ago."""
-    return max(0.0, model.planner(expanded, wall_s) - since)
+def takeover_charge(
+    model: LatencyModel, expanded: int, wall_s: float, since: float, motion_s: float = 0.0
+) -> float:
+    """What remains of a predicted plan's computation (and its motion planning, ``motion_s``),
+    started ``since`` seconds ago."""
+    return max(0.0, model.planner(expanded, wall_s) + motion_s - since)
 
 
 def load_latency_model(path: str | Path) -> LatencyModel:
