@@ -46,7 +46,7 @@ METHOD_LABELS = {"hltl": "hltl", "greedy": "Greedy-R", "smart-llm": "SMART-LLM-R
 VARIANT_LABELS = {
     "full": "full",
     "no-pp": "w/o P.P.",
-    "no-pmp": "w/o P.M.P. (serial replanning)",
+    "no-pmp": "w/o P.M.P. (serial candidates)",
     "goal": "full, goal-directed predictor",
     "antic-goal": "+ anticipation (goal-directed)",
     "antic-gru": "+ anticipation (GRU)",
