@@ -8,7 +8,7 @@ import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from hltl.errors import HltlError
+from hltl.execution.latency import load_record
 
 DEFAULT_PMP = Path(__file__).parent / "data" / "pmp_latency.json"
 
@@ -68,17 +68,4 @@ def load_pmp_latency(path: str | Path) -> PmpLatency:
     Raises:
         HltlError: the file is missing, not JSON or not such a measurement.
     """
-    p = Path(path)
-    try:
-        data = json.loads(p.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise HltlError(f"P.M.P. latency {str(p)[:200]!r}: cannot read it ({exc})") from exc
-    if not isinstance(data, dict):
-        raise HltlError(f"P.M.P. latency {str(p)[:200]!r}: expected a JSON object")
-    unknown = sorted(set(data) - set(PmpLatency.__dataclass_fields__))
-    if unknown:
-        raise HltlError(f"P.M.P. latency {str(p)[:200]!r}: unknown keys {unknown[:5]}")
-    try:
-        return PmpLatency(**data)
-    except (TypeError, ValueError) as exc:
-        raise HltlError(f"P.M.P. latency {str(p)[:200]!r}: {exc}") from exc
+    return load_record(path, "P.M.P. latency", PmpLatency)

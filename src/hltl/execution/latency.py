@@ -32,9 +32,11 @@ import json
 import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from hltl.errors import HltlError
+
+T = TypeVar("T")
 
 PIPELINED = frozenset({"progress"})
 
@@ -136,19 +138,33 @@ def load_latency_model(path: str | Path) -> LatencyModel:
     Raises:
         HltlError: the file is missing, not JSON or not a latency model.
     """
+    return load_record(path, "latency model", LatencyModel, key="model")
+
+
+def load_record(path: str | Path, what: str, cls: type[T], *, key: str | None = None) -> T:
+    """A frozen dataclass ``cls`` from a JSON file (its fields, or under ``key``).
+
+    Raises:
+        HltlError: the file is missing or not JSON, lacks ``key``, has unknown fields, or
+            ``cls`` refuses the values; the message names ``what`` and the file.
+    """
     p = Path(path)
+    name = f"{what} {str(p)[:200]!r}"
     try:
         data = json.loads(p.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise HltlError(f"latency model {str(p)[:200]!r}: cannot read it ({exc})") from exc
-    model = data.get("model") if isinstance(data, dict) else None
-    if not isinstance(model, dict):
-        raise HltlError(f"latency model {str(p)[:200]!r}: expected an object with a 'model' key")
-    fields = set(LatencyModel.__dataclass_fields__)
-    unknown = sorted(set(model) - fields)
+        raise HltlError(f"{name}: cannot read it ({exc})") from exc
+    if key is not None:
+        data = data.get(key) if isinstance(data, dict) else None
+        if not isinstance(data, dict):
+            raise HltlError(f"{name}: expected an object with a {key!r} key")
+    if not isinstance(data, dict):
+        raise HltlError(f"{name}: expected a JSON object")
+    fields: dict[str, Any] = getattr(cls, "__dataclass_fields__", {})
+    unknown = sorted(set(data) - set(fields))
     if unknown:
-        raise HltlError(f"latency model {str(p)[:200]!r}: unknown keys {unknown[:5]}")
+        raise HltlError(f"{name}: unknown keys {unknown[:5]}")
     try:
-        return LatencyModel(**model)
+        return cls(**data)
     except (TypeError, ValueError) as exc:
-        raise HltlError(f"latency model {str(p)[:200]!r}: {exc}") from exc
+        raise HltlError(f"{name}: {exc}") from exc
