@@ -150,3 +150,30 @@ def test_the_nested_import_check_sees_function_and_type_checking_imports(tmp_pat
         True,
         False,
     ]
+
+
+# Multi-line module docstrings left while their packages' owners were editing them (session 4);
+# their detail belongs in docs/modules.md like the others'. Only ever shrink this set.
+LONG_DOCSTRINGS = {
+    "bench/perception.py",
+    "bus/driver.py",
+    "bus/node.py",
+    "bus/realtime.py",
+    "perception/bodies.py",
+    "perception/objects.py",
+    "perception/observe.py",
+    "perception/people.py",
+    "perception/skeleton.py",
+    "sim/episode.py",
+    "sim3d/perceived.py",
+}
+
+
+def test_module_docstrings_are_one_line() -> None:
+    long = []
+    for path in sorted(SRC.rglob("*.py")):
+        doc = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8")), clean=True)
+        rel = path.relative_to(SRC).as_posix()
+        if doc is not None and "\n" in doc.strip() and rel not in LONG_DOCSTRINGS:
+            long.append(rel)
+    assert long == [], f"one-line module docstrings, the detail in docs/modules.md: {long}"

@@ -1,5 +1,4 @@
-"""Reading user files and quoting user values: bounded sizes, strict YAML and JSON, clear errors;
-where hltl keeps its caches."""
+"""Reading user files and quoting user values (bounded, strict, clear errors); hltl's caches."""
 
 from __future__ import annotations
 

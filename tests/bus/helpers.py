@@ -5,11 +5,13 @@ from __future__ import annotations
 import socket
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
+from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, open_session
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import Episode, run_episode
@@ -62,14 +64,18 @@ class Loopback:
         cell: str = "default",
         factory: Any = None,
         ahead: int = 64,
+        realtime: float | None = None,
         **episode: Any,
     ) -> BusRun:
+        """One episode over the bus (``realtime``: the node runs it on its own clock, that
+        many times faster than real time)."""
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
+        make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
         with CellNode(self._node_session, scene, cell=cell, faults=node_faults, **served) as node:
             ep = run_episode(
                 scene,
-                simulator=bus_cell(
+                simulator=make(
                     self._exec_session,
                     cell=cell,
                     timing=timing,

@@ -11,5 +11,9 @@ def test_bench_bus_small() -> None:
     assert b.same_logs == 1 and b.fault_same_logs == 1
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
+    r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
+    assert r.episodes == 1 and r.dispatched > 0 and r.lost == 0 and r.duplicated == 0
+    assert r.same_done == 1 and r.ticks > 0 and r.cell_s > 0
+    assert 0 <= r.lag_ms[0] <= r.lag_ms[1] <= r.lag_ms[2]
     text = format_bus(b, "hltl bench bus", "2026-01-01", "test")
-    assert "## Bus" in text and "1/1" in text
+    assert "## Bus" in text and "1/1" in text and "### Real time" in text

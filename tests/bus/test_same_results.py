@@ -204,6 +204,29 @@ def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
     assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
         list(local.records)
     )
+    # it was run ahead (restored and replayed where a command cut a stretch), not tick by tick
+    stats = remote.node.stats
+    assert stats.ahead > 0 and remote.cell.stats.queries < remote.cell.stats.ticks / 2
+
+
+def test_mujoco_node_looks_ahead_through_a_dynamic_trial(loopback: Loopback) -> None:
+    """2-1 #0 in the 3D simulator: a person walks, a second request comes; the node runs
+    ahead, a command cuts a stretch (restored, replayed), and the log is the in-process one."""
+    pytest.importorskip("mujoco")
+    import functools
+
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+
+    trial = make_trial("2-1", 0)
+    make = functools.partial(MujocoSimulator, model=compile_scene(trial.scene))
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, simulator=make, **episode)
+    remote = loopback.run(trial.scene, factory=make, **episode)
+    assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
+        list(local.records)
+    )
+    assert remote.node.stats.undone > 0  # the restore-and-replay path was taken
 
 
 def test_observers_receive_ros2_poses(loopback: Loopback) -> None:

@@ -10,7 +10,11 @@ import pytest
 
 from hltl.errors import PlanFormatError
 from hltl.execution.log import (
+    ActionDone,
+    ActionFailed,
     ActionHalted,
+    ActionRecord,
+    ActionStart,
     EpisodeStart,
     EventLog,
     HumanMove,
@@ -154,6 +158,24 @@ def test_typed_records_rewrite_an_old_log_byte_for_byte() -> None:
     assert {type(r).__name__ for r in records} >= {"EpisodeStart", "Replan", "Dispatch", "Halt"}
     again = "".join(json.dumps(r.to_json(), separators=(",", ":")) + "\n" for r in records)
     assert again == text
+
+
+def test_action_records_share_handle_and_action_and_keep_their_key_order() -> None:
+    """The action records inherit handle/action and ``ended``; each line keeps its key order."""
+    act = {"skill": "pick"}
+    start = ActionStart(t=1.0, handle=3, action=act, robots=["r1"], expected=2.0)
+    lines: list[tuple[ActionRecord, str]] = [
+        (start, "handle action robots expected"),
+        (ActionDone(t=3.0, handle=3, action=act, end=2.5), "handle action end"),
+        (ActionFailed(t=3.0, handle=3, action=act, reason="x"), "handle action reason end"),
+        (ActionHalted(t=3.0, handle=3, action=act, end=2.0), "handle action reason end"),
+    ]
+    for rec, keys in lines:
+        assert isinstance(rec, ActionRecord)
+        assert list(rec.to_json()) == ["t", "type", *keys.split()]
+        assert LogRecord.from_json(json.loads(json.dumps(rec.to_json()))) == rec
+    assert ActionDone(t=3.0, handle=1, action=act, end=2.5).ended == 2.5
+    assert ActionFailed(t=3.0, handle=1, action=act).ended == 3.0
 
 
 def test_optional_fields_are_left_out_and_a_missing_required_field_is_named() -> None:

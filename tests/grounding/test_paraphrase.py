@@ -96,6 +96,9 @@ WRAPS = [
     "hey, {} real quick",
     "{} if you can",
     "um, {}",
+    "sorry to bother you, but {}",
+    "{} when you get a sec",
+    "I know you're busy, but {}",
 ]
 
 

@@ -80,6 +80,28 @@ def test_a_keyword_typo_is_never_a_common_word_or_near_two_keywords() -> None:
     assert lex.misspelt_keyword("hnad") is None  # "hand" and "had" are both one edit away
     assert lex.misspelt_keyword("cpu") is None  # a name ("cup") is as near: not a keyword
     assert lex.misspelt_keyword("teh") == "the"
+    assert lex.misspelt_keyword("aer") is None  # "are" is skipped by the grammar: no silent drop
+    assert lex.misspelt_keyword("thae") is None  # "the" or "that"
+
+
+def test_a_keyword_typo_inside_a_phrase_keeps_the_phrase() -> None:
+    _means(
+        "put the bottle on the shelf and after taht give alice the chips", "bottle@shelf ; chips>A"
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Alice tfe cup, Bob the chips, Carol the apple",  # a name inside: not a remark
+        "Give Alice the cup. ahen that is done, give Bob the apple.",  # 'when'/'then' mistyped
+        "Give Alice the cup. Sorry ahen that is done, give Bob the apple.",
+        "Give Bob the chips, he's tfe cup",
+    ],
+)
+def test_what_may_be_a_request_is_never_dropped_as_a_remark(text: str) -> None:
+    with pytest.raises(GroundingError):
+        parse_instruction(text, CELL)
 
 
 # -- remarks, contrast, nobody, instead of --------------------------------------------------------
@@ -249,3 +271,120 @@ def test_a_relative_clause_picks_the_objects(text: str, want: str) -> None:
 def test_a_relative_clause_naming_none_is_refused(text: str) -> None:
     with pytest.raises(GroundingError, match="no '"):
         parse_instruction(text, CELL)
+
+
+# -- 'for each of them' ---------------------------------------------------------------------------
+
+MUG_EACH = "(mug_red>{p} & mug_blue>{q}) | (mug_blue>{p} & mug_red>{q})"
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.permutations(["A", "B", "C"]),
+    st.sampled_from(
+        [
+            "Give {p} and {q} a mug for each of them",
+            "{p} and {q} are thirsty, get a mug for each of them",
+            "{p} and {q} would like a mug for each of them",
+            "{p} and {q} are here. Give a mug to each of them",
+        ]
+    ),
+)
+def test_a_mug_for_each_of_them(people: list[str], form: str) -> None:
+    p, q = people[:2]
+    _means(form.format(p=PEOPLE[p], q=PEOPLE[q]), MUG_EACH.format(p=p, q=q))
+
+
+def test_for_each_of_them_needs_enough_objects_and_people() -> None:
+    for text in (
+        "Alice, Bob and Carol are thirsty, get a mug for each of them",  # three people, two mugs
+        "Give Alice and Carol the apple for each of them",  # one apple
+        "Give one mug to each of them",  # nobody named
+    ):
+        with pytest.raises(GroundingError):
+            parse_instruction(text, CELL)
+
+
+# -- sequences inside either … or ------------------------------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.permutations(OBJECTS), st.permutations(["A", "B", "C"]))
+def test_either_of_sequences(objs: list[str], people: list[str]) -> None:
+    x, y, z = objs[:3]
+    p, q, r = (PEOPLE[w] for w in people)
+    text = f"Either give {p} the {x} and then {q} the {y}, or give {r} the {z}"
+    _means(text, f"({x}>{people[0]} ; {y}>{people[1]}) | {z}>{people[2]}")
+
+
+def test_steps_after_the_or_of_an_either_are_refused() -> None:
+    for text in (
+        "Either give Carol the apple, or give Alice the cup and then Bob the chips",
+        "Either give Alice the cup then Bob the chips or give Carol the apple then Bob the cup",
+    ):
+        with pytest.raises(GroundingError, match="could belong"):
+            parse_instruction(text, CELL)
+    _means(
+        "Either give Alice the cup or give Bob the chips. Then give Carol the apple.",
+        "(cup>A | chips>B) ; apple>C",
+    )
+
+
+# -- relative descriptions by position ------------------------------------------------------------
+
+ON_SURFACES = load_scene(ROOT / "tests/grounding/fixtures/on_surfaces.yaml")
+
+
+def _nearest(ids: list[str], where: tuple[float, ...], scene: Scene) -> tuple[str, float, float]:
+    pos = {o.id: o.position for o in scene.objects}
+    d = sorted((((pos[i][0] - where[0]) ** 2 + (pos[i][1] - where[1]) ** 2) ** 0.5, i) for i in ids)
+    return d[0][1], d[0][0], d[1][0]
+
+
+@pytest.mark.parametrize(
+    "anchor", ["Alice", "Bob", "Carol", "the shelf", "the table", "the apple", "the bottle"]
+)
+@pytest.mark.parametrize(
+    "form",
+    [
+        "Give Bob the mug nearest to {a}",
+        "Give Bob the mug next to {a}",
+        "Give Bob a mug that's closest to {a}",
+    ],
+)
+def test_the_mug_nearest_to_something_is_the_nearest_or_refused(anchor: str, form: str) -> None:
+    """Checked against distances computed here: the clearly nearest mug, else a refusal."""
+    where = {
+        "Alice": CELL.humans[0].position,
+        "Bob": CELL.humans[1].position,
+        "Carol": CELL.humans[2].position,
+        "the shelf": CELL.surfaces[0].center,
+        "the table": CELL.surfaces[1].center,
+        "the apple": next(o.position for o in CELL.objects if o.id == "apple"),
+        "the bottle": next(o.position for o in CELL.objects if o.id == "bottle"),
+    }[anchor]
+    best, d1, d2 = _nearest(["mug_red", "mug_blue"], where, CELL)
+    text = form.format(a=anchor)
+    if d1 < 0.75 * d2:
+        _means(text, f"{best}>B")
+    else:
+        with pytest.raises(GroundingError, match="about as near"):
+            parse_instruction(text, CELL)
+
+
+def test_places_examples() -> None:
+    _means("Give Alice the mug closest to her", "mug_blue>A")
+    _means("Put the mug by the shelf on the table", "mug_blue@table")
+    _means("Give Bob the mug next to the red mug", "mug_blue>B")  # not itself
+    _means("Give Bob the cup on the shelf", "cup_a>B", ON_SURFACES)
+    _means("Give Alice the cup on the table and the apple", "cup_b>A & apple>A", ON_SURFACES)
+    for text, scene in (
+        ("Give Bob the cup on the shelf", CELL),  # the cup starts elsewhere
+        ("Hand Bob the apple on the shelf", ON_SURFACES),
+        ("Give Bob the cups on the table and the shelf", ON_SURFACES),
+        ("Give Bob the mug near the robots", CELL),
+        ("Give Bob the cup nearest to Carol", ON_SURFACES),  # as near to both cups
+        ("Put the blue mug next to the red mug", CELL),  # placing by an object: no surface
+    ):
+        with pytest.raises(GroundingError):
+            parse_instruction(text, scene)

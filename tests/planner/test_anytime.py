@@ -5,8 +5,9 @@ from __future__ import annotations
 import pytest
 
 from hltl.planner import PlanResult, PlanStatus, plan
-from hltl.planner.anytime import construct
+from hltl.planner.anytime import _OrderWalk, construct, goals
 from hltl.planner.problem import Problem, to_seconds
+from hltl.planner.search import _Search, plan_steps
 from hltl.sim.scenarios import generate
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
@@ -71,3 +72,27 @@ def test_plan_json_round_trips_the_bound() -> None:
     assert back.lower_bound == pytest.approx(res.lower_bound)
     assert back.gap == pytest.approx(res.gap)
     assert res.gap == 0.0  # a 4 x 4 line is proved optimal well inside two seconds
+
+
+@pytest.mark.parametrize(("n", "layout", "seed"), [(6, "grid", 0), (8, "line", 1), (8, "grid", 3)])
+def test_order_walk_keeps_only_valid_plans_never_worse_than_the_first(
+    n: int, layout: str, seed: int
+) -> None:
+    # ordered specs too: a move that breaks "first A, then B" must be rejected, not routed
+    sc = generate(n, n, layout, seed)
+    problem = Problem(sc.scene, sc.spec)
+    s = _Search(problem)
+    first = construct(problem, s)
+    assert first is not None
+    walk = _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
+    for _ in range(40):
+        walk.step()
+        assert walk.gls
+        placed: set[int] = set()
+        for gi in walk.current:
+            assert all(a in placed for a in walk.gls[gi].after)
+            placed.add(gi)
+    assert walk.best is not None and walk.best[0] <= first[0]
+    steps = plan_steps(problem, walk.best[1])
+    res = PlanResult(PlanStatus.SOLVED, steps, to_seconds(walk.best[0]))
+    check_plan(sc.scene, sc.spec, res.to_dict())

@@ -1,5 +1,4 @@
-"""Planner benchmark at cell scale: line, grid and random layouts, a mixed-spec family, exact and
-anytime figures, and the CLI's start-up time (docs/benchmarks.md, "Planner at cell scale")."""
+"""Planner benchmark at cell scale: layouts, mixed specs, exact and anytime figures, start-up."""
 
 from __future__ import annotations
 

@@ -1,11 +1,4 @@
-"""Measure the planner's and grounder's latency in the closed loop and fit the latency model.
-
-``hltl bench latency`` runs hltl on suite trials with nothing charged, collects every planner
-call's wall-clock time and expanded nodes (critical-path replans and background predictions)
-and every instruction's grounding time from the logs, and fits ``ms = a + b · expanded`` by
-least squares. The model (:class:`hltl.execution.latency.LatencyModel`) is written with the
-measurement that produced it; the ablation charges it (reproducibly) where computation occurs.
-"""
+"""Measure the planner's and grounder's latency in the closed loop and fit the latency model."""
 
 from __future__ import annotations
 

@@ -1,5 +1,4 @@
-"""Measured latency of the motion layer's candidate planning (the paper's P.M.P.), serial vs
-parallel: what the Table III ablation charges for robot-to-robot handovers."""
+"""Measured serial vs parallel latency of the motion layer's candidate planning (P.M.P.)."""
 
 from __future__ import annotations
 

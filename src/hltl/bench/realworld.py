@@ -1,13 +1,4 @@
-"""The paper's real-world study (§V-B, T1–T6) in the 3D simulator: two arms, six scenarios.
-
-The cell is the paper's: an Elfin-3 (reach 0.7 m) and a UR5 (reach 0.9 m) side by side, one
-person (T1–T3) or two (T4–T6) beside them. A *nearby* object lies in the same robot's workspace
-as its recipient, a *distant* one only in the other robot's (it needs a robot-to-robot
-hand-over). Each trial varies positions and timings from its seed; every episode runs in the
-MuJoCo simulator (:class:`hltl.sim3d.driver.MujocoSimulator`, arm motions from the motion
-layer) for hltl and for Greedy-R. The paper counts a trial with more than three replanning
-events as failed; so does :func:`run_task`.
-"""
+"""The paper's real-world study (§V-B, T1–T6) in the 3D simulator: two arms, six scenarios."""
 
 from __future__ import annotations
 

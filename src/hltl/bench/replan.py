@@ -1,10 +1,4 @@
-"""Replanning latency of the closed loop per paper configuration (``hltl bench replan``).
-
-Each run is one episode of a generated scenario in which a person walks across the cell midway,
-so the executor halts, replans and (with prediction) takes plans over. Latency is the planner's
-wall-clock time on the critical path (``replan`` records after the initial plan; grounding/LLM
-time is not part of it).
-"""
+"""Replanning latency of the closed loop per paper configuration (``hltl bench replan``)."""
 
 from __future__ import annotations
 

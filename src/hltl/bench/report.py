@@ -1,7 +1,4 @@
-"""Statistics and tables of the evaluation: Wilson and bootstrap intervals, Table II and III.
-
-Everything here is plain data in, Markdown out; plots import matplotlib lazily (``viz`` extra).
-"""
+"""Statistics and tables of the evaluation: Wilson and bootstrap intervals, Table II and III."""
 
 from __future__ import annotations
 

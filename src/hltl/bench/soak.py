@@ -1,11 +1,4 @@
-"""Fault soak: closed-loop episodes with random mixes of the five event types, checked for harm.
-
-Each episode takes a scenario of the catalogue and a seeded mix of H-MOVE, O-MOVE, GOAL, RES and
-FAIL events, runs hltl's executor against the simulator, and is classified: success, failure
-(by reason), safety violations, lost deliveries (a success without a delivery its spec asked
-for), duplicated deliveries (an object handed over twice), crashes (an exception) and hangs (an
-episode over its wall-clock budget).
-"""
+"""Fault soak: closed-loop episodes with random mixes of the five event types, checked for harm."""
 
 from __future__ import annotations
 

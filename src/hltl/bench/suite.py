@@ -1,13 +1,4 @@
-"""The paper's simulation suite (§V-A, Table II) with dynamics, run through the closed loop.
-
-Trials (a generated task plus an H-MOVE and a GOAL) come from the catalogue
-(:mod:`hltl.sim.dynamic`). :func:`run_trial` runs one method on one trial and returns a
-picklable :class:`TrialResult`; :func:`run_suite` runs many in worker processes. Methods:
-``hltl`` (the executor of :mod:`hltl.execution` with the offline grounder), ``greedy`` and
-``smart-llm`` (:mod:`hltl.bench.baselines`), all through :func:`hltl.sim.episode.run_episode`.
-The one-shot comparisons (flat LTLf, Fast Downward) live in :mod:`hltl.bench.baselines.flat`
-and :mod:`hltl.bench.baselines.pddl`.
-"""
+"""The paper's simulation suite (§V-A, Table II) with dynamics, run through the closed loop."""
 
 from __future__ import annotations
 

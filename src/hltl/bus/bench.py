@@ -11,9 +11,10 @@ from typing import Any
 from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
+from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, open_session
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
-from hltl.execution.log import ActionStart, EventLog, LogRecord
+from hltl.execution.log import ActionDone, ActionStart, EpisodeEnd, EventLog, LogRecord
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import EventSchedule
@@ -82,11 +83,31 @@ class BusBench:
     dispatched: int
     lost: int
     duplicated: int
+    realtime: RealtimeBench
+
+
+@dataclass(frozen=True, slots=True)
+class RealtimeBench:
+    """The same trials run in real time (the node's clock ``factor`` times faster)."""
+
+    factor: float
+    episodes: int
+    goals_met: int  # every goal met (safety violations aside)
+    same_done: int  # the same formulas done as in-process
+    violations: int  # episodes with a safety violation (a late reaction)
+    dispatched: int
+    lost: int
+    duplicated: int
+    lag_ms: tuple[float, float, float]  # action end (node) → the executor logs it: wall ms
+    late_ticks: int  # executor ticks reached after their time (it was busy)
+    ticks: int
+    missed: int  # node ticks that never arrived (none without faults)
+    wall_s: float
+    cell_s: float  # cell seconds the episodes lasted
+    stepped_s: float  # cell seconds they lasted in-process (the executor stepping time)
 
 
 def _strip(x: Any) -> Any:
-    if isinstance(x, LogRecord):
-        return _strip(x.to_json())
     if isinstance(x, LogRecord):
         return _strip(x.to_json())
     if isinstance(x, dict):
@@ -187,6 +208,7 @@ def bench_bus(
                 dup += sum(1 for n in node.stats.starts.values() if n > 1)
             fsame += _strip(list(a.records)) == _strip(list(b.records))
             say(f"faults {tr.config}#{tr.index}: same log {fsame}")
+        rt_bench = _realtime(ns, cs, trials, say)
     return BusBench(
         rt,
         statistics.median(steps) * 1000 if steps else 0.0,
@@ -204,7 +226,55 @@ def bench_bus(
         dispatched,
         lost,
         dup,
+        rt_bench,
     )
+
+
+def _realtime(
+    ns: Any, cs: Any, trials: list[Any], say: Callable[[str], None], factor: float = 10.0
+) -> RealtimeBench:
+    """Run ``trials`` in real time, ``factor`` times faster: what the guarantees and the
+    executor's reaction time are when the cell does not wait for it."""
+    goals = same = violations = dispatched = lost = dup = late = ticks = missed = 0
+    lags: list[float] = []
+    wall = cell_s = stepped_s = 0.0
+    for tr in trials:
+        kw: dict[str, Any] = {"instruction": tr.instruction, "events": tr.events, "seed": tr.seed}
+        a = run_episode(tr.scene, **kw)
+        opened: list[BusCell] = []
+        with CellNode(ns, tr.scene) as node:
+            t0 = time.perf_counter()
+            b = run_episode(
+                tr.scene, simulator=realtime_bus_cell(cs, factor=factor, opened=opened), **kw
+            )
+            wall += time.perf_counter() - t0
+            opened[0].end()
+            opened[0].close()
+        handles = [r.handle for r in b.records if isinstance(r, ActionStart)]
+        dispatched += len(handles)
+        lost += sum(1 for h in handles if node.stats.starts.get(h, 0) == 0)
+        dup += sum(1 for n in node.stats.starts.values() if n > 1)
+        end_a, end_b = a.records[-1], b.records[-1]
+        assert isinstance(end_a, EpisodeEnd) and isinstance(end_b, EpisodeEnd)
+        goals += end_b.reason == "all goals met"
+        same += end_a.done == end_b.done
+        violations += b.metrics.violations > 0
+        lags += [(r.t - r.ended) / factor * 1000 for r in b.records if isinstance(r, ActionDone)]
+        stats = opened[0].stats
+        late, ticks, missed = late + stats.late_ticks, ticks + stats.ticks, missed + stats.missed
+        cell_s += end_b.t
+        stepped_s += end_a.t
+        say(f"real time {tr.config}#{tr.index}: {end_b.reason}")
+    lags.sort()
+    lag = (
+        (statistics.median(lags), lags[int(0.95 * (len(lags) - 1))], lags[-1])
+        if lags
+        else (0.0, 0.0, 0.0)
+    )
+    return RealtimeBench(
+        factor, len(trials), goals, same, violations, dispatched, lost, dup, lag, late, ticks,
+        missed, wall, cell_s, stepped_s,
+    )  # fmt: skip
 
 
 def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
@@ -257,5 +327,33 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "the bus (JSON of every tick, saving the simulator, the replies) and Zenoh's own "
             "threads; the node here shares the Python interpreter with the executor, so its "
             "CPU time adds to the wall time, which a node in its own process would not.",
+            "",
+            *_format_realtime(b.realtime),
         ]
     )
+
+
+def _format_realtime(r: RealtimeBench) -> list[str]:
+    f = f"{r.factor:g}"
+    return [
+        f"### Real time (`hltl run --bus zenoh --realtime {f}`)",
+        "",
+        f"The same {r.episodes} trials with the node running the cell on its own clock, {f} "
+        "times faster than real time, and the executor following the wall clock "
+        '(docs/bus.md, "Real time"). Planning and the bus now take cell time: at '
+        f"{f}× every wall millisecond is {r.factor:g} cell milliseconds, so this is harsher "
+        "than real arms at 1×.",
+        "",
+        "| measure | value |",
+        "|---|---|",
+        f"| episodes with every goal met / the in-process run's formulas done | "
+        f"{r.goals_met}/{r.episodes} / {r.same_done}/{r.episodes} |",
+        f"| episodes with a safety violation (a reaction too late) | {r.violations} |",
+        f"| dispatches / lost / started twice | {r.dispatched} / {r.lost} / {r.duplicated} |",
+        f"| action end on the node → the executor logs it (wall), median / p95 / max | "
+        f"{r.lag_ms[0]:.1f} / {r.lag_ms[1]:.1f} / {r.lag_ms[2]:.1f} ms |",
+        f"| executor ticks / reached late (busy past their time) / node ticks never received | "
+        f"{r.ticks} / {r.late_ticks} / {r.missed} |",
+        f"| wall time / cell time of the episodes (in-process, stepped: {r.stepped_s:.1f} s) | "
+        f"{r.wall_s:.2f} s / {r.cell_s:.1f} s |",
+    ]

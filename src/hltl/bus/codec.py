@@ -1,10 +1,4 @@
-"""Payloads on the bus: JSON for hltl's own records, ROS 2 message types (CDR) where one exists.
-
-JSON floats are written with ``repr`` and read back bit for bit, so a world state or a time
-crosses the bus unchanged (an episode over the bus equals the in-process one). ROS 2 types are
-encoded with ``rosbags`` (no ROS installation needed): ``trajectory_msgs/msg/JointTrajectory``,
-``geometry_msgs/msg/PoseStamped`` and ``sensor_msgs/msg/JointState``.
-"""
+"""Payloads on the bus: JSON for hltl's own records, ROS 2 message types (CDR) where one exists."""
 
 from __future__ import annotations
 

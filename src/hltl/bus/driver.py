@@ -99,6 +99,8 @@ class DriverStats:
     recoveries: int = 0
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
+    late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
+    missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
 
 
@@ -177,6 +179,7 @@ class BusCell:
             session.liveliness().declare_subscriber(
                 self.keys.all_alive, self._on_alive, history=False
             ),
+            *self._subscribe(),
         ]
         reset = {
             "episode": self.episode,
@@ -184,7 +187,7 @@ class BusCell:
             "events": events.to_list(),
             "seed": seed,
             "perception": {"noise": perception.noise, "latency": perception.latency},
-            "ahead": self._ahead_req,
+            **self._mode(),
         }
         deadline = time.monotonic() + self.timing.connect
         d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
@@ -198,6 +201,15 @@ class BusCell:
                 f"'hltl node sim --scene SCENE --cell {cell}'"
             )
         self._take(d)
+
+    def _mode(self) -> dict[str, Any]:
+        """How the node is to run the episode (the reset request's part that says so): here
+        stepped by the executor, with look-ahead."""
+        return {"ahead": self._ahead_req}
+
+    def _subscribe(self) -> list[Any]:
+        """Further subscriptions, declared before the episode starts."""
+        return []
 
     def close(self) -> None:
         for e in self._entities:
@@ -374,6 +386,10 @@ class BusCell:
                 self._cond.wait(left)
             if self._contiguous >= upto:
                 return
+        self._recover(upto)
+
+    def _recover(self, upto: int) -> None:
+        """Some reports up to ``upto`` never came: ask the robots for their latest ones."""
         self.stats.recoveries += 1
         robots = sorted({r for h in self._open() for r in self._actions[h].robots})
         for r in robots:
@@ -655,9 +671,13 @@ def bus_cell(
     max_time: float | None = None,
     ahead: int = 64,
     perceived: PerceptionClient | None = None,
+    make_cell: Callable[..., BusCell] | None = None,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
-    serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given."""
+    serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
+    ``make_cell`` builds it (default :class:`BusCell`, lockstep; see
+    :func:`hltl.bus.realtime.realtime_bus_cell`)."""
+    build = BusCell if make_cell is None else make_cell
 
     def make(
         scene: Scene,
@@ -667,7 +687,7 @@ def bus_cell(
         perception: PerceptionModel,
         log: EventLog,
     ) -> Cell:
-        c = BusCell(
+        c = build(
             session,
             scene,
             events,

@@ -1,8 +1,4 @@
-"""Fault injection on the bus: lost, delayed, duplicated, reordered messages, slow readers.
-
-Faults are drawn from a seeded generator, so a faulty run is repeatable message for message
-(up to thread timing). Used by tests and ``hltl bench bus``; a real network brings its own.
-"""
+"""Fault injection on the bus: lost, delayed, duplicated, reordered messages, slow readers."""
 
 from __future__ import annotations
 

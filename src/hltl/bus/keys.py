@@ -124,6 +124,18 @@ class Keys:
         """Queryable: advance simulated time to ``t`` and return what happened."""
         return f"{self.root}/sim/step"
 
+    @property
+    def sim_tick(self) -> str:
+        """A real-time cell's clock, published every tick of its own: time, world, what
+        happened (JSON, numbered; see :mod:`hltl.bus.realtime`)."""
+        return f"{self.root}/sim/tick"
+
+    @property
+    def sim_clock(self) -> str:
+        """Queryable on a real-time cell: its latest tick and what was missed since given
+        counts of log records and instructions (JSON)."""
+        return f"{self.root}/sim/clock"
+
 
 def robot_of(key: str) -> str:
     """The robot id in ``hltl/<cell>/robots/<robot>/…``."""

@@ -4,7 +4,9 @@
 handle at most once on the cell's driver, publishes reports (acknowledgement, progress,
 completion, failure) on ``…/status``, answers ``…/state`` queries, holds a liveliness token per
 robot and, for simulated cells, serves ``hltl/<cell>/sim/reset`` and ``…/sim/step`` so that an
-executor in another process drives the simulated time step by step.
+executor in another process drives the simulated time step by step — or, when the executor
+asks for real time, runs the cell against the wall clock on a thread of its own and publishes
+every tick on ``hltl/<cell>/sim/tick`` (:mod:`hltl.bus.realtime`).
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ import math
 import pickle
 import random
 import threading
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
@@ -42,11 +45,14 @@ from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.sim3d.driver import MujocoSimulator
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
 
 # most ticks ahead of the executor a node simulates in one answer
 MAX_AHEAD = 256
+# fastest real-time factor a simulator node accepts (cell seconds per wall second)
+MAX_FACTOR = 1000.0
 
 
 @runtime_checkable
@@ -73,6 +79,7 @@ class NodeStats:
     steps: int = 0
     ahead: int = 0  # ticks simulated ahead of the executor
     undone: int = 0  # of those, ticks undone because a command came first
+    skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
 @dataclass(slots=True)
@@ -92,6 +99,45 @@ class _Episode:
     # joint trajectories received per handle and robot, with the plan's events and duration
     trajectories: dict[int, dict[str, JointTrajectory]] = field(default_factory=dict)
     plans: dict[int, tuple[tuple[tuple[float, str, str], ...], float]] = field(default_factory=dict)
+    clock: _Clock | None = None  # a real-time episode's clock (None: the executor steps it)
+
+
+@dataclass(slots=True)
+class _Clock:
+    """A real-time episode's clock: cell time runs ``factor`` times as fast as the wall clock
+    since ``epoch`` (``time.monotonic()`` at cell time 0); the node ticks every ``period`` cell
+    seconds. Everything published is kept, so an executor that missed a tick can ask for it."""
+
+    factor: float
+    period: float
+    epoch: float
+    stop: threading.Event = field(default_factory=threading.Event)
+    n: int = 0  # ticks published
+    t: float = 0.0  # the cell's time (never goes back)
+    records: list[dict[str, Any]] = field(default_factory=list)  # every log record published
+    said: list[str] = field(default_factory=list)  # every instruction published
+    last: dict[str, Any] = field(default_factory=dict)  # the latest tick, without the lists
+    error: str = ""  # why the clock stopped, when the cell failed
+
+    def now(self) -> float:
+        self.t = max(self.t, (time.monotonic() - self.epoch) * self.factor)
+        return self.t
+
+    @classmethod
+    def parse(cls, d: Any, period: float | None) -> _Clock | None:
+        """The clock a reset request asks for (``{"factor", "period"}``), or ``None``: lockstep.
+        ``period`` is the node's own rate, which wins over the executor's wish."""
+        if d is None:
+            return None
+        try:
+            factor, wish = float(d["factor"]), float(d["period"])
+        except (KeyError, TypeError, ValueError) as exc:
+            raise BusError(f"malformed real-time request: {exc}") from None
+        if not (math.isfinite(factor) and 0 < factor <= MAX_FACTOR):
+            raise BusError(f"real-time factor must be in (0, {MAX_FACTOR:g}], got {factor!r}")
+        if not (math.isfinite(wish) and wish > 0):
+            raise BusError(f"real-time period must be a positive number of seconds, got {wish!r}")
+        return cls(factor, wish if period is None else period, time.monotonic())
 
 
 @dataclass(frozen=True, slots=True)
@@ -146,6 +192,8 @@ class CellNode:
             seed=, perception=, log=)`` (default: the discrete-event simulator).
         faults: faults injected into what the node publishes and answers.
         publish_poses: also publish people's and hands' poses (``PoseStamped``) every step.
+        period: in real-time episodes, tick every ``period`` cell seconds (default: as often
+            as the executor ticks).
     """
 
     def __init__(
@@ -157,7 +205,11 @@ class CellNode:
         factory: CellFactory = Simulator,
         faults: FaultModel | None = None,
         publish_poses: bool = True,
+        period: float | None = None,
     ) -> None:
+        if period is not None and not (math.isfinite(period) and period > 0):
+            raise ValueError(f"node period must be a positive number of seconds, got {period!r}")
+        self.period = period
         self.session = session
         self.scene = scene
         self.keys = Keys(cell)
@@ -177,6 +229,7 @@ class CellNode:
         self._entities: list[Any] = [
             session.declare_queryable(k.sim_reset, self._on_reset),
             session.declare_queryable(k.sim_step, self._on_step),
+            session.declare_queryable(k.sim_clock, self._on_clock),
             session.declare_queryable(k.all_states, self._on_state),
             session.declare_subscriber(k.all_actions, self._on_command),
             session.declare_subscriber(k.all_trajectories, self._on_trajectory),
@@ -192,6 +245,8 @@ class CellNode:
             if self._closed:
                 return
             self._closed = True
+            if self._ep is not None and self._ep.clock is not None:
+                self._ep.clock.stop.set()
         for e in (*self._tokens, *self._entities):
             with contextlib.suppress(
                 Exception
@@ -217,6 +272,7 @@ class CellNode:
                 episode, seed = str(d["episode"]), int(d["seed"])
             except (KeyError, TypeError, ValueError, HltlError) as exc:
                 raise BusError(f"malformed reset request: {exc}") from None
+            clock = _Clock.parse(d.get("realtime"), self.period)
             cur = self._ep
             if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
                 self._reply_bytes(query, cur.last_reply)  # a retransmission: same episode
@@ -226,10 +282,12 @@ class CellNode:
                     f"this node serves the scene {self.scene.source} "
                     f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
                 )
+            if cur is not None and cur.clock is not None:
+                cur.clock.stop.set()  # a new episode replaces the one running in real time
             records: list[LogRecord] = []
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
-            self._ep = _Episode(episode, cell, records)
+            self._ep = ep = _Episode(episode, cell, records)
             self.stats.episodes += 1
             self.stats.starts = {}
             obs = cell.observe(0.0)
@@ -239,15 +297,28 @@ class CellNode:
                 **self._clock(cell, 0.0),
                 "records": self._flush(),
             }
+            if clock is not None:
+                ep.clock = clock
+                clock.epoch = time.monotonic()  # cell time 0 is now: the cell was just built
+                clock.records.extend(answer["records"])
+                clock.last = {"episode": episode, "n": 0, "t": 0.0, **answer}
+                del clock.last["records"]
+                answer["realtime"] = {"t": 0.0, "factor": clock.factor, "period": clock.period}
             reply = dumps(answer)
-            self._ep.last_reply = reply
+            ep.last_reply = reply
             self._reply_bytes(query, reply)
+            if clock is not None:
+                threading.Thread(
+                    target=self._run_clock, args=(ep,), name="hltl-node-clock", daemon=True
+                ).start()
 
     def _on_step(self, query: Any) -> None:
         with self._guard(query):
             d = loads(_payload(query), "step request")
             ep = self._episode(d.get("episode"))
             if d.get("end"):
+                if ep.clock is not None:
+                    ep.clock.stop.set()
                 self._ep = None
                 self.stats.finished += 1
                 self._reply(query, {"episode": ep.id, "ended": True})
@@ -256,6 +327,10 @@ class CellNode:
             if d.get("peek") and "step" not in d:  # an unnumbered peek: the clock only
                 self._reply(query, {"episode": ep.id, **self._clock(ep.cell, float(d["t"]))})
                 return
+            if ep.clock is not None:
+                raise BusError(
+                    f"episode {ep.id[:12]} runs in real time on the node's clock: it takes no steps"
+                )
             n, t = int(d["step"]), float(d["t"])
             if n == ep.last_step and ep.last_reply:  # a retransmitted request: same answer
                 self._reply_bytes(query, ep.last_reply)
@@ -299,6 +374,79 @@ class CellNode:
             },
             reports,
         )
+
+    # -- real time -------------------------------------------------------------------------------
+
+    def _run_clock(self, ep: _Episode) -> None:
+        """Tick the cell every ``period`` cell seconds of the wall clock (times ``factor``) until
+        the episode ends; a node that falls behind skips ticks rather than bursting them."""
+        c = ep.clock
+        assert c is not None
+        wall = c.period / c.factor
+        k = 0
+        while not c.stop.is_set():
+            k += 1
+            late = time.monotonic() - (c.epoch + k * wall)
+            if late < 0:
+                if c.stop.wait(-late):
+                    break
+            elif late > wall:
+                skip = int(late // wall)
+                k += skip
+                self.stats.skipped += skip
+            with self._lock:
+                if self._closed or self._ep is not ep or c.stop.is_set():
+                    break
+                try:
+                    self._realtime_tick(ep, c)
+                except Exception as exc:  # the cell failed or the session closed: say why
+                    c.error = f"{type(exc).__name__}: {exc}"[:300]
+                    c.stop.set()
+
+    def _realtime_tick(self, ep: _Episode, c: _Clock) -> None:
+        """One tick on the node's clock: the cell's step (reports go out on ``…/status``), then
+        the tick itself on ``sim/tick`` with the log records and instructions since the last."""
+        t = c.now()
+        obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
+        c.n += 1
+        del tick["status"]  # the robots' reports went out on their own keys
+        msg = {
+            "episode": ep.id,
+            "n": c.n,
+            **tick,
+            "records_from": len(c.records),
+            "said_from": len(c.said),
+        }
+        c.records.extend(tick["records"])
+        c.said.extend(tick["instructions"])
+        c.last = {k: v for k, v in msg.items() if k not in ("records", "instructions")}
+        self.link.put(self.keys.sim_tick, dumps(msg))
+        self._publish_world(ep.cell, obs, t)
+
+    def _on_clock(self, query: Any) -> None:
+        """A real-time episode's latest tick, with the records and instructions published since
+        the counts the executor has (it missed some ticks, or heard nothing for a while)."""
+        with self._guard(query):
+            d = loads(_payload(query), "clock request")
+            ep = self._episode(d.get("episode"))
+            c = ep.clock
+            if c is None:
+                raise BusError(f"episode {ep.id[:12]} is stepped by the executor, not real time")
+            if c.error:
+                raise BusError(f"the cell stopped at t={c.t:.2f}: {c.error}")
+            try:
+                rf, sf = int(d.get("records_from", 0)), int(d.get("said_from", 0))
+            except (TypeError, ValueError) as exc:
+                raise BusError(f"malformed clock request: {exc}") from None
+            rf, sf = max(0, rf), max(0, sf)
+            answer = {
+                **c.last,
+                "records_from": rf,
+                "records": c.records[rf:],
+                "said_from": sf,
+                "instructions": c.said[sf:],
+            }
+            self._reply(query, answer)
 
     # -- ticks ahead of the executor -----------------------------------------------------------
 
@@ -430,6 +578,10 @@ class CellNode:
             if cmd.seq > ep.max_cmd:  # a new command: the executor has reached cmd.t
                 ep.max_cmd = cmd.seq
                 self._settle_at(ep, cmd.t)
+            t = cmd.t
+            if ep.clock is not None:  # real time: the robots act now, on the node's clock
+                t = ep.clock.now()
+                ep.cell.advance(t)
             h = ep.handles.get(cmd.handle)
             if cmd.op == "start":
                 if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
@@ -444,13 +596,13 @@ class CellNode:
                     if plan is None:  # not all here yet: no acknowledgement, so it comes again
                         self.stats.waiting += 1
                         return
-                    h = ep.cell.start(cmd.action, cmd.t, motion=plan)
+                    h = ep.cell.start(cmd.action, t, motion=plan)
                 else:
-                    h = ep.cell.start(cmd.action, cmd.t)
+                    h = ep.cell.start(cmd.action, t)
                 ep.handles[cmd.handle] = h
                 ep.by_cell_id[h.id] = cmd.handle
                 self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
-                self._report(ep, cmd.handle, ep.cell.poll(h, cmd.t))
+                self._report(ep, cmd.handle, ep.cell.poll(h, t))
                 return
             if h is None:  # its start never arrived: the executor has written it off
                 ep.cancelled.add(cmd.handle)
@@ -461,8 +613,8 @@ class CellNode:
                 self.stats.duplicates += 1
                 self._publish(ep, prev)
                 return
-            ep.cell.halt(h, cmd.t, cmd.reason)
-            self._report(ep, cmd.handle, ep.cell.poll(h, cmd.t))
+            ep.cell.halt(h, t, cmd.reason)
+            self._report(ep, cmd.handle, ep.cell.poll(h, t))
 
     def _on_trajectory(self, sample: Any) -> None:
         """A robot's joint trajectory for an action about to start (kept until its start)."""
@@ -599,21 +751,38 @@ class CellNode:
         query.reply(key or str(query.key_expr), payload)
 
 
+# What look-ahead keeps as it is in the 3D simulator: the posed MuJoCo model (``stage``: its
+# pose is a function of the rest of the state, so it is posed again after a restore), the arms'
+# motion planners (``_arms``, ``_cell``: caches only) and the pose hooks (none, or no look-ahead).
+_MUJOCO_SHARED = frozenset({"stage", "_arms", "_cell", "on_pose"})
+
+
 def _saver(cell: Cell) -> Callable[[], None] | None:
-    """A function that puts the discrete-event simulator back to its state now, or ``None`` for
-    a cell this cannot be done for (the 3D simulator's physics lives in MuJoCo's C structures).
+    """A function that puts a simulator back to its state now, or ``None`` for a cell this
+    cannot be done for (anything but the discrete-event simulator and the 3D one; the 3D one
+    with pose hooks — a video recorder — either, since those would see the undone ticks).
 
     Immutable attributes (frozen dataclasses, numbers, strings, tuples) and the log are kept by
     reference, random generators by their state, everything else is pickled: a few tenths of a
-    millisecond instead of a deep copy's two.
+    millisecond instead of a deep copy's two. The 3D simulator's MuJoCo model is not copied: it
+    holds nothing but the pose of the rest, so advancing the restored simulator to its own
+    time poses it again.
     """
-    if type(cell) is not Simulator:
+    shared: frozenset[str]
+    if type(cell) is Simulator:
+        shared = frozenset()
+    elif type(cell) is MujocoSimulator and not cell.on_pose:
+        shared = _MUJOCO_SHARED
+    else:
         return None
+    sim: Simulator = cell
     kept: dict[str, Any] = {}
     rngs: dict[str, tuple[random.Random, Any]] = {}
     mutable: dict[str, Any] = {}
     for k, v in vars(cell).items():
-        if isinstance(v, random.Random):
+        if k in shared:
+            kept[k] = v
+        elif isinstance(v, random.Random):
             rngs[k] = (v, v.getstate())
         elif isinstance(v, EventLog | int | float | str | bytes | type(None)) or getattr(
             getattr(type(v), "__dataclass_params__", None), "frozen", False
@@ -632,6 +801,8 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             rng.setstate(st)
             state[k] = rng
         state.update(pickle.loads(blob))
+        if shared:  # nothing is due at its own time: this only poses the model again
+            sim.advance(sim.now)
 
     return restore
 
@@ -651,10 +822,11 @@ def serve(
     factory: CellFactory = Simulator,
     faults: FaultModel | None = None,
     on_ready: Callable[[CellNode], None] | None = None,
+    period: float | None = None,
 ) -> NodeStats:
     """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set."""
     stop = threading.Event() if stop is None else stop
-    with CellNode(session, scene, cell=cell, factory=factory, faults=faults) as node:
+    with CellNode(session, scene, cell=cell, factory=factory, faults=faults, period=period) as node:
         if on_ready is not None:
             on_ready(node)
         while not stop.is_set():

@@ -1,15 +1,4 @@
-"""Perception as a node: camera frames in, observations of the world out (``hltl node perception``).
-
-:func:`serve_frames` runs the perception stage (:class:`hltl.perception.observe.Perceiver`) on
-each frame of a frame folder (CONTRACTS.md: what ``hltl render`` and the 3D simulator's camera
-write, or a recorded RealSense sequence) and publishes what it sees on
-``hltl/<cell>/perception`` (JSON, floats exact) and each person tied to a scene person as a
-``geometry_msgs/msg/PoseStamped`` on ``hltl/<cell>/humans/<h>/pose``. On the executor's side
-:class:`PerceptionClient` collects them and fuses the latest into the world the executor sees
-(:func:`hltl.perception.observe.fuse`: people and resting objects move to where the camera saw
-them). A pose model that needs its own Python environment runs the same way: a process that
-publishes these records.
-"""
+"""Perception as a node: camera frames in, observations out (``hltl node perception``)."""
 
 from __future__ import annotations
 

@@ -1,12 +1,15 @@
-"""What ``hltl run --bus`` adds: the options, and a simulator factory that drives a node."""
+"""Bus options of `hltl run --bus` and `hltl node`, and the simulator factory that drives a node."""
 
 from __future__ import annotations
 
 import argparse
+import math
+from functools import partial
 from typing import Any
 
 from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.perception import PerceptionClient
+from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
 from hltl.errors import HltlError
 from hltl.sim.episode import Cell, CellFactory
@@ -32,6 +35,29 @@ def add_bus_arguments(p: argparse.ArgumentParser) -> None:
         default=1.0,
         help="with --bus: seconds to wait for an answer before retrying (3 retries)",
     )
+    p.add_argument(
+        "--realtime",
+        type=float,
+        nargs="?",
+        const=1.0,
+        metavar="FACTOR",
+        help="with --bus: run against the wall clock, as with real arms: the node runs the cell "
+        "on its own clock (a simulator FACTOR times faster than real time; default 1) and the "
+        "executor ticks by the wall clock instead of stepping simulated time (docs/bus.md)",
+    )
+
+
+def add_node_arguments(p: argparse.ArgumentParser, listen: str, listen_note: str = "") -> None:
+    """A node's ``--cell``, ``--listen`` (default ``listen``) and ``--connect``."""
+    p.add_argument("--cell", default="default", help="the cell's name in key expressions")
+    p.add_argument(
+        "--listen",
+        default=listen,
+        help=f"Zenoh endpoint to listen on (default: loopback {listen}){listen_note}",
+    )
+    p.add_argument(
+        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
+    )
 
 
 class BusSimulator:
@@ -53,12 +79,15 @@ class BusSimulator:
             timing = BusTiming(timeout=args.bus_timeout, connect=5 * args.bus_timeout)
         except ValueError as exc:
             raise HltlError(f"--bus-timeout: {exc}") from None
+        realtime = getattr(args, "realtime", None)
+        if realtime is not None and not (math.isfinite(realtime) and realtime > 0):
+            raise HltlError(f"--realtime: the factor must be a positive number, got {realtime!r}")
         self.session: Any = open_session(BusConfig(connect=tuple(endpoints)))
         self.opened: list[BusCell] = []
         self.perception = None
         if args.bus_perception is not None:
             self.perception = PerceptionClient(self.session, cell=args.cell)
-        make = bus_cell(
+        make = (bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime))(
             self.session,
             cell=args.cell,
             timing=timing,

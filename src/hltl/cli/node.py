@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import functools
+import math
 import sys
 import threading
 from pathlib import Path
@@ -11,9 +12,10 @@ from typing import Any
 
 from hltl.bus.node import CellNode, serve
 from hltl.bus.perception import serve_frames
-from hltl.bus.session import BusConfig, open_session
+from hltl.bus.session import DEFAULT_ENDPOINT, PERCEPTION_ENDPOINT, BusConfig, open_session
+from hltl.cli.bus_options import add_node_arguments
 from hltl.cli.perceive import frame_options
-from hltl.cli.sim3d import simulator_options
+from hltl.cli.sim3d import add_simulator_arguments, simulator_options
 from hltl.errors import HltlError
 from hltl.motion.cost import motion_models
 from hltl.perception.frames import FrameFolder
@@ -38,17 +40,8 @@ def register(sub: Any) -> None:
         "progress and outcomes, and the executor steps simulated time.",
     )
     s.add_argument("--scene", required=True, type=Path, help="scene file (YAML or JSON)")
-    s.add_argument(
-        "--sim",
-        choices=("discrete", "mujoco"),
-        default="discrete",
-        help="which simulator serves the cell (mujoco: the 3D simulator, the sim3d extra)",
-    )
-    s.add_argument(
-        "--timing",
-        choices=("motion", "cost"),
-        default="motion",
-        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    add_simulator_arguments(
+        s, "which simulator serves the cell (mujoco: the 3D simulator, the sim3d extra)"
     )
     s.add_argument(
         "--motion",
@@ -56,17 +49,16 @@ def register(sub: Any) -> None:
         help="--sim discrete: time actions with the motion layer (as 'hltl run --motion', the "
         "motion extra); serve executors started with 'hltl run --motion --bus'",
     )
-    s.add_argument("--cell", default="default", help="the cell's name in key expressions")
-    s.add_argument(
-        "--listen",
-        default="tcp/127.0.0.1:7447",
-        help="Zenoh endpoint to listen on (default: loopback tcp/127.0.0.1:7447)",
-    )
-    s.add_argument(
-        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
-    )
+    add_node_arguments(s, DEFAULT_ENDPOINT)
     s.add_argument(
         "--episodes", type=int, help="exit after serving this many episodes (default: run on)"
+    )
+    s.add_argument(
+        "--rate",
+        type=float,
+        metavar="HZ",
+        help="in real-time episodes ('hltl run --bus --realtime'), tick and publish this many "
+        "times per cell second (default: as often as the executor ticks)",
     )
     s.set_defaults(func=run_sim)
     c = nsub.add_parser(
@@ -82,16 +74,7 @@ def register(sub: Any) -> None:
         c,
         people_help="person detector (default: segmentation when the folder has seg/, else depth)",
     )
-    c.add_argument("--cell", default="default", help="the cell's name in key expressions")
-    c.add_argument(
-        "--listen",
-        default="tcp/127.0.0.1:7448",
-        help="Zenoh endpoint to listen on (default: loopback tcp/127.0.0.1:7448); the executor "
-        "connects here",
-    )
-    c.add_argument(
-        "--connect", action="append", default=[], help="also connect to this Zenoh endpoint"
-    )
+    add_node_arguments(c, PERCEPTION_ENDPOINT, "; the executor connects here")
     c.add_argument("--realtime", action="store_true", help="pace frames by their time stamps")
     c.add_argument(
         "--wait",
@@ -107,6 +90,8 @@ def run_sim(args: argparse.Namespace) -> int:
 
     if args.episodes is not None and args.episodes < 1:
         raise HltlError(f"--episodes must be at least 1, got {args.episodes}")
+    if args.rate is not None and not (math.isfinite(args.rate) and args.rate > 0):
+        raise HltlError(f"--rate must be a positive number of ticks per second, got {args.rate!r}")
     scene = load_scene(args.scene)
     factory = _factory(args, scene)
     console = Console(stderr=True, highlight=False)
@@ -130,6 +115,7 @@ def run_sim(args: argparse.Namespace) -> int:
                 stop=stop,
                 factory=factory,
                 on_ready=ready,
+                period=None if args.rate is None else 1.0 / args.rate,
             )
         except KeyboardInterrupt:
             console.print("stopped")

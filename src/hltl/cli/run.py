@@ -11,7 +11,7 @@ from typing import Any
 from hltl.bench.latency import DEFAULT_MODEL
 from hltl.cli.bus_options import BusSimulator, add_bus_arguments
 from hltl.cli.common import check_option, describe_action
-from hltl.cli.sim3d import simulator_options
+from hltl.cli.sim3d import add_simulator_arguments, simulator_options
 from hltl.errors import HltlError
 from hltl.execution import log as elog
 from hltl.execution.executor import Executor, ExecutorConfig
@@ -79,17 +79,8 @@ def register(sub: Any) -> None:
         help="anticipatory execution: start what the forecast world's plan allows now",
     )
     p.add_argument("--max-time", type=float, default=120.0, help="simulated time limit (s)")
-    p.add_argument(
-        "--sim",
-        choices=("discrete", "mujoco"),
-        default="discrete",
-        help="discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log",
-    )
-    p.add_argument(
-        "--timing",
-        choices=("motion", "cost"),
-        default="motion",
-        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    add_simulator_arguments(
+        p, "discrete-event simulator, or the 3D one (MuJoCo; the sim3d extra): same log"
     )
     p.add_argument(
         "--frames", type=Path, metavar="DIR", help="--sim mujoco: write camera frames to DIR"
@@ -156,6 +147,8 @@ def run(args: argparse.Namespace) -> int:
     if args.motion:
         extra.update(_motion_options(scene, spec, config, predictor, extra.get("simulator")))
     bus = None
+    if args.bus is None and args.realtime is not None:
+        raise HltlError("--realtime runs the cell on a node's clock: add --bus zenoh")
     if args.bus is not None:
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import functools
 from pathlib import Path
 from typing import Any
@@ -11,6 +12,17 @@ from hltl.sim3d.model import compile_scene
 from hltl.sim3d.perceived import CameraSimulator
 from hltl.sim3d.record import FrameRecorder
 from hltl.world.scene import Scene
+
+
+def add_simulator_arguments(p: argparse.ArgumentParser, sim_help: str) -> None:
+    """``--sim`` (discrete or mujoco) and ``--timing`` (the 3D simulator's action durations)."""
+    p.add_argument("--sim", choices=("discrete", "mujoco"), default="discrete", help=sim_help)
+    p.add_argument(
+        "--timing",
+        choices=("motion", "cost"),
+        default="motion",
+        help="--sim mujoco: actions last as long as their arm motions, or the cost model says",
+    )
 
 
 def simulator_options(

@@ -1,12 +1,4 @@
-"""The executor's belief w_t: perception merged with what its own actions did.
-
-People's positions come from every observation; where an object is comes from the executor's
-own bookkeeping (its completed actions), except that perception updates resting objects (people
-move them) and, after a failed action, decides alone where the object ended up. An observation
-sensed before the executor last touched an object (dispatched, completed or failed an action on
-it) is stale for that object, because perception lags. Hands come from the observation
-(proprioception).
-"""
+"""The executor's belief w_t: perception merged with what its own actions did."""
 
 from __future__ import annotations
 

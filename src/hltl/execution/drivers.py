@@ -1,9 +1,4 @@
-"""The robot driver protocol: the only thing the executor knows about robots.
-
-A driver starts a ground skill instance, reports its progress and how it ended, and halts it on
-request. The simulator implements it (:class:`hltl.sim.simulator.Simulator`); a real arm
-controller implements the same four calls on top of its motion stack.
-"""
+"""The robot driver protocol: the only thing the executor knows about robots."""
 
 from __future__ import annotations
 

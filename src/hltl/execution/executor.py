@@ -1,13 +1,4 @@
-"""The receding-horizon executor (paper §III-D): plan, dispatch the first step, monitor, replan.
-
-One :class:`Executor` runs one episode. Its loop is driven from outside: every call of
-:meth:`Executor.update` hands it the time, the latest observation and any new (grounded)
-instructions, and it polls its robots, checks safety, plans and dispatches. It never advances
-time itself, so the same executor runs against the simulator (:mod:`hltl.sim.episode`) and
-against real drivers. Its parts: the belief w_t (:mod:`~hltl.execution.belief`), the
-predicted-plan cache (:mod:`~hltl.execution.predicted`) and the decision state machine
-(:mod:`~hltl.execution.decision`).
-"""
+"""The receding-horizon executor (paper §III-D): plan, dispatch the first step, monitor, replan."""
 
 from __future__ import annotations
 

@@ -1,30 +1,4 @@
-"""Simulated time the executor's own computation costs: planner, grounding and motion planning.
-
-A robot waits for the planner only when the plan is needed and not ready. :class:`LatencyModel`
-says how long each call takes (either the call's measured wall-clock time, or a model fitted to
-such measurements and stored with the measurement that produced it, which keeps episodes
-reproducible), and :func:`planner_charge` says how much of it lands on the critical path:
-
-* a replan after a disruption (a new instruction, a person who changed the context, a failed,
-  halted or refused action, robots down) is paid in full: nothing could start it earlier;
-* the routine replan after a step that ended as expected is *pipelined*: the world after the
-  step is known when the step is dispatched, so the suffix is computed while it executes and
-  only what exceeds the step's duration is paid;
-* a predicted plan that takes over was computed in the background when the forecast changed:
-  only what remains of its computation at takeover is paid;
-* grounding a new instruction is paid when it is heard.
-
-Motion planning happens inside the planner call: a motion cost model (``--motion``) plans and
-caches each instance's trajectories while the search times it, so a measured planner call
-includes it, and dispatch reuses the cached plans. The discrete suite has no motion planner in
-the loop; there ``ExecutorConfig.r2r_motion_s`` charges, with each planner call, the measured
-latency of planning the candidate goal sets of every robot-to-robot handover in the new plan's
-first step (the motion that must exist before dispatch; later steps' motions are planned while
-earlier steps run): parallel (P.M.P.) or serial, measured by ``hltl bench motion``.
-
-The constant ``ExecutorConfig.plan_latency`` (the same charge on every planner call) is kept for
-old command lines and compared in docs/evaluation.md; it is not a measurement.
-"""
+"""Simulated time the executor's own computation costs: planner, grounding and motion planning."""
 
 from __future__ import annotations
 

@@ -1,9 +1,4 @@
-"""The execution log (DESIGN.md §3): JSON Lines, one time-stamped event a line.
-
-Each kind of line ``{"t": <seconds>, "type": <kind>, ...}`` is a frozen record class here
-(docs/execution.md lists every kind and field); ``to_json``/``from_json`` keep the lines as they
-always were, so a log can be re-scored by any JSON reader.
-"""
+"""The execution log (DESIGN.md §3): JSON Lines, one time-stamped event a line."""
 
 from __future__ import annotations
 
@@ -12,7 +7,7 @@ import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import MISSING, dataclass, field, fields, replace
 from pathlib import Path
-from typing import IO, Any, ClassVar, TypeVar
+from typing import IO, Any, ClassVar, TypeVar, dataclass_transform
 
 from hltl.errors import PlanFormatError
 from hltl.fileio import MAX_LOG_BYTES, load_data, open_output, read_text
@@ -25,7 +20,16 @@ JsonObject = dict[str, Any]
 _KEYS = {"from_": "from"}  # field names that are Python keywords
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+_T = TypeVar("_T")
+
+
+@dataclass_transform(frozen_default=True, kw_only_default=True)
+def record(cls: type[_T]) -> type[_T]:
+    """A log record class: a frozen, slotted dataclass whose fields are given by keyword."""
+    return dataclass(frozen=True, slots=True, kw_only=True)(cls)
+
+
+@record
 class LogRecord:
     """One line of the log: a time stamp and, per subclass, the fields of one kind of record.
 
@@ -94,7 +98,7 @@ def _field_names(cls: type[LogRecord]) -> tuple[str, ...]:
     return names
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class EpisodeStart(LogRecord):
     """Everything needed to re-run or re-score the episode."""
 
@@ -108,7 +112,7 @@ class EpisodeStart(LogRecord):
     config: JsonObject = field(default_factory=dict)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class EpisodeEnd(LogRecord):
     TYPE: ClassVar[str] = "episode_end"
     success: bool
@@ -117,7 +121,7 @@ class EpisodeEnd(LogRecord):
     done: list[str] = field(default_factory=list)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Grounding(LogRecord):
     """An instruction grounded (``spec`` set) or refused (``error`` set)."""
 
@@ -148,7 +152,7 @@ class Grounding(LogRecord):
     charged_s: float | None = None  # simulated seconds grounding was charged (latency models)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Replan(LogRecord):
     """A planner call (``source`` planner) or a predicted plan taking over (``predicted``)."""
 
@@ -170,7 +174,7 @@ class Replan(LogRecord):
     done: list[str] = field(default_factory=list)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class PolicyReplan(LogRecord):
     """A baseline policy's answer (a ``replan`` record with ``queries``)."""
 
@@ -190,7 +194,7 @@ class PolicyReplan(LogRecord):
     script: str | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Predict(LogRecord):
     TYPE: ClassVar[str] = "predict"
     basis: str = "now"
@@ -202,7 +206,7 @@ class Predict(LogRecord):
     makespan: float | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Takeover(LogRecord):
     TYPE: ClassVar[str] = "takeover"
     trigger: str = ""
@@ -211,7 +215,7 @@ class Takeover(LogRecord):
     makespan: float | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Anticipate(LogRecord):
     """Anticipatory execution: the forecast world's first step dispatched because it is
     executable now (``differs``: it is not the current plan's first step)."""
@@ -224,7 +228,7 @@ class Anticipate(LogRecord):
     humans: JsonObject = field(default_factory=dict)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Dispatch(LogRecord):
     TYPE: ClassVar[str] = "dispatch"
     step: int
@@ -235,58 +239,58 @@ class Dispatch(LogRecord):
     done: list[str] = field(default_factory=list)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ActionStart(LogRecord):
-    TYPE: ClassVar[str] = "action_start"
+@record
+class ActionRecord(LogRecord):
+    """A record about one action a driver runs: its handle and the action's JSON."""
+
     handle: int
     action: JsonObject
+
+
+class _Ends:
+    """``ended``: when the action ended, per the driver's ``end`` (absent: at ``t``)."""
+
+    __slots__ = ()
+    t: float
+    end: float | None
+
+    @property
+    def ended(self) -> float:
+        return float(self.t if self.end is None else self.end)
+
+
+@record
+class ActionStart(ActionRecord):
+    TYPE: ClassVar[str] = "action_start"
     robots: list[str] = field(default_factory=list)
     expected: float | None = None  # seconds the action should take
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ActionDone(LogRecord):
+@record
+class ActionDone(_Ends, ActionRecord):
     TYPE: ClassVar[str] = "action_done"
-    handle: int
-    action: JsonObject
-    end: float | None = None  # when it ended, per the driver (absent: at ``t``)
-
-    @property
-    def ended(self) -> float:
-        return float(self.t if self.end is None else self.end)
+    end: float | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ActionFailed(LogRecord):
+@record
+class ActionFailed(_Ends, ActionRecord):
     TYPE: ClassVar[str] = "action_failed"
-    handle: int
-    action: JsonObject
     reason: str = ""
     end: float | None = None
 
-    @property
-    def ended(self) -> float:
-        return float(self.t if self.end is None else self.end)
 
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ActionHalted(LogRecord):
+@record
+class ActionHalted(_Ends, ActionRecord):
     TYPE: ClassVar[str] = "action_halted"
     OPTIONAL: ClassVar[frozenset[str]] = frozenset({"end"})
-    handle: int
-    action: JsonObject
     reason: str = ""
     end: float | None = None
-
-    @property
-    def ended(self) -> float:
-        return float(self.t if self.end is None else self.end)
 
 
 ActionEnded = ActionDone | ActionFailed | ActionHalted
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Halt(LogRecord):
     TYPE: ClassVar[str] = "halt"
     kind: str
@@ -296,7 +300,7 @@ class Halt(LogRecord):
     done: list[str] = field(default_factory=list)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Monitor(LogRecord):
     TYPE: ClassVar[str] = "monitor"
     step: int
@@ -306,20 +310,20 @@ class Monitor(LogRecord):
     accepted: bool = False
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Wait(LogRecord):
     TYPE: ClassVar[str] = "wait"
     reason: str = ""
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class GiveUp(LogRecord):
     TYPE: ClassVar[str] = "give_up"
     reason: str = ""
     done: list[str] = field(default_factory=list)
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class HumanMove(LogRecord):
     """A person starts walking to ``to`` (through ``wander``'s points on a random walk)."""
 
@@ -333,14 +337,14 @@ class HumanMove(LogRecord):
     wander: list[list[float]] | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class HumanStop(LogRecord):
     TYPE: ClassVar[str] = "human_stop"
     human: str
     position: list[float]
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class ObjectMove(LogRecord):
     """An object moved by someone else (``applied`` false: it was not resting, ``reason``)."""
 
@@ -353,7 +357,7 @@ class ObjectMove(LogRecord):
     reason: str | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class ObjectDrop(LogRecord):
     TYPE: ClassVar[str] = "object_drop"
     object: str
@@ -361,7 +365,7 @@ class ObjectDrop(LogRecord):
     cause: str = ""
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class RobotDown(LogRecord):
     TYPE: ClassVar[str] = "robot_down"
     OPTIONAL: ClassVar[frozenset[str]] = frozenset({"reason"})
@@ -370,19 +374,19 @@ class RobotDown(LogRecord):
     reason: str | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class RobotUp(LogRecord):
     TYPE: ClassVar[str] = "robot_up"
     robot: str
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class InstructionGiven(LogRecord):
     TYPE: ClassVar[str] = "instruction"
     text: str
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Violation(LogRecord):
     """An unsafe action: caught by the simulator while running, or by the baselines' referee
     before dispatch (``kind``, ``caught``, ``world`` set)."""
@@ -397,7 +401,7 @@ class Violation(LogRecord):
     world: JsonObject | None = None
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Contact(LogRecord):
     """3D simulator only: a robot's collision geometry starts touching a person."""
 
@@ -409,7 +413,7 @@ class Contact(LogRecord):
     part: str = ""
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@record
 class Perception(LogRecord):
     TYPE: ClassVar[str] = "perception"
     latency_ms: float = 0.0

@@ -1,10 +1,4 @@
-"""Human trajectory prediction and the predicted workspace (paper eq. ws_predict).
-
-A :class:`TrajectoryPredictor` (from :mod:`hltl.perception.predict`: constant velocity,
-goal-directed or the learned GRU) turns the positions perception reports into short-horizon
-forecasts. :func:`predict_workspace` takes the majority workspace label over the horizon and
-:func:`predicted_world` builds w_pred by moving each person to a representative point of it.
-"""
+"""Human trajectory prediction and the predicted workspace (paper eq. ws_predict)."""
 
 from __future__ import annotations
 

@@ -191,6 +191,12 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("either", "will", "do"): "whichever",
     ("either", "is", "fine"): "whichever",
     ("any", "is", "fine"): "whichever",
+    # relative descriptions: "the mug nearest to Carol", "the mug next to the bottle"
+    ("nearest", "to"): "nearest",
+    ("closest", "to"): "nearest",
+    ("next", "to"): "near",
+    ("close", "to"): "near",
+    ("near", "to"): "near",
     ("pick", "up"): "verb:pick",
     ("picks", "up"): "verb:pick",
     ("picking", "up"): "verb:pick",
@@ -358,6 +364,11 @@ WORDS: dict[str, str] = {
     "at": "on",
     "atop": "on",
     "instead": "instead",
+    "nearest": "nearest",
+    "closest": "nearest",
+    "near": "near",
+    "beside": "near",
+    "by": "near",
     # determiners and fillers
     "the": "det",
     "a": "det",
@@ -715,7 +726,7 @@ class Lexicon:
         """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
 
         Like names: one edit (a short word: a swap of neighbours), never a common English word,
-        only when one keyword lemma is that near, and never when a scene name is that near too.
+        only when one keyword is that near, and never when a scene name is that near too.
         """
         key = _keyword_typo(word)
         if key is None or len(word) < 3:
@@ -792,7 +803,7 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
-    tokens = tokenize(text)
+    tokens = _keyword_typos(tokenize(text), lexicon)
     items: list[Item] = []
     i = 0
     while i < len(tokens):
@@ -820,9 +831,6 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("word", WORDS[tok.low], tok.text))
         elif tok.low in NUMBERS or tok.low.isdigit():
             items.append(Item("word", "num", tok.text))
-        elif (key := lexicon.misspelt_keyword(tok.low)) is not None:
-            lemma = "verb:" + VERBS[key] if key in VERBS else WORDS[key]
-            items.append(Item("word", lemma, tok.text))
         else:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
@@ -834,15 +842,55 @@ def _keywords() -> tuple[str, ...]:
     return tuple(k for k in dict.fromkeys([*WORDS, *VERBS]) if len(k) >= 3 and k.isalpha())
 
 
-def _keyword_typo(word: str) -> str | None:
-    """The one keyword a typed word is a typo of, else None (see Lexicon.misspelt_keyword)."""
-    if len(word) < 3 or not word.isalpha() or word in common_words() or word in PHRASE_WORDS:
-        return None
+# keywords the grammar skips: a word corrected into one would vanish silently ("aer" → "are")
+_SKIPPED_LEMMAS = frozenset({"aux", "filler", "subject"})
+
+
+def _lemma_of(key: str) -> str:
+    return "verb:" + VERBS[key] if key in VERBS else WORDS[key]
+
+
+def _near_keywords(word: str) -> list[str]:
+    if len(word) < 3 or not word.isalpha():
+        return []
     near = [k for k in _keywords() if _one_edit(word, k)]
     if len(word) == 3:  # a short word: only two neighbours swapped ("teh", "adn")
         near = [k for k in near if len(k) == 3 and sorted(k) == sorted(word)]
-    lemmas = {("verb:" + VERBS[k]) if k in VERBS else WORDS[k] for k in near}
-    return near[0] if len(lemmas) == 1 else None
+    return near
+
+
+def _keyword_typo(word: str) -> str | None:
+    """The one keyword a typed word is a typo of, else None (see Lexicon.misspelt_keyword)."""
+    if word in common_words() or word in PHRASE_WORDS:
+        return None
+    near = _near_keywords(word)
+    if len(near) != 1 or _lemma_of(near[0]) in _SKIPPED_LEMMAS:
+        return None  # "thae": "the" or "that"? no guess
+    return near[0]
+
+
+def near_keyword(word: str) -> bool:
+    """Whether ``word`` is one edit from a keyword that carries meaning (not a filler,
+    auxiliary or article): then it may be a mistyped 'after' or 'when', never a remark."""
+    if word in common_words():
+        return False  # a real word ("bother") is not a typo of a keyword ("other")
+    return any(_lemma_of(k) not in (*_SKIPPED_LEMMAS, "det") for k in _near_keywords(word))
+
+
+def _keyword_typos(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
+    """Tokens with typos of keywords corrected ("teh" → "the"), before multi-word keywords are
+    matched, so "after taht" is still "after that"; names are matched first."""
+    out = list(tokens)
+    for i, tok in enumerate(tokens):
+        low = tok.low
+        if low in WORDS or low in VERBS or low in NUMBERS or not low.isalpha():
+            continue
+        if lexicon.match(tokens, i) is not None:
+            continue
+        key = lexicon.misspelt_keyword(low)
+        if key is not None:
+            out[i] = Token(key, key)  # read (and quoted) as the keyword it stands for
+    return out
 
 
 def _merge_unknown(items: list[Item]) -> list[Item]:

@@ -1,15 +1,4 @@
-"""LLM grounder for any OpenAI-compatible endpoint (OpenAI, Ollama, vLLM, llama.cpp server).
-
-Configuration, lowest to highest precedence: defaults; a TOML file (``path`` given, else
-``$HLTL_LLM_CONFIG``, else ``~/.config/hltl/llm.toml`` if it exists) with keys ``base_url``,
-``model``, ``api_key``, ``api_key_env``, ``max_repairs``, ``temperature``, ``timeout``,
-``structured``; then the environment: ``HLTL_LLM_BASE_URL``, ``HLTL_LLM_MODEL``,
-``HLTL_LLM_API_KEY``, ``HLTL_LLM_TIMEOUT`` (seconds per request).
-
-Answers are bounded: one longer than ``MAX_ANSWER_CHARS`` is refused (and only its start is sent
-back for repair), and an endpoint that reports more completion tokens than ``max_tokens`` allows
-is refused, since it ignores the limit the cost of a query relies on.
-"""
+"""LLM grounder for any OpenAI-compatible endpoint (OpenAI, Ollama, vLLM, llama.cpp server)."""
 
 from __future__ import annotations
 

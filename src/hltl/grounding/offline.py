@@ -1,23 +1,4 @@
-"""The embedded offline grounder: a deterministic semantic parser for handover instructions.
-
-The grammar (docs/grounding.md lists every phrasing):
-
-    instruction := sentence ((. | ; | meanwhile | also | then) sentence)*
-    sentence    := [(after|once|when|before) sub ,] seq
-    seq         := [first] coord ((then | after that | finally …) coord
-                                  | (after | once | before) coord)*
-    coord       := fragment ((, | and | or | as well as …) fragment)*   with either/both brackets
-    fragment    := [verb] person object | [verb] object (to|for|on) target
-                 | person (wants|needs|has|gets …) object | object | person | (to|on) target
-
-A fragment may leave its verb, its object or its recipient out when a neighbour gives it
-("give A the bottle and B the chips", "hand both the cup and the chips to B"). Before the grammar,
-hltl.grounding.phrasing rewrites how people ask (politeness, questions, corrections, pronouns,
-quantifiers) into this plain form or refuses; a choice several tasks share ("a mug each") becomes
-an ``or`` over the ways to give each a different object. Every name must
-resolve to exactly one scene entity; anything else raises :class:`GroundingError` quoting the words
-and listing what the scene has.
-"""
+"""The embedded offline grounder: a deterministic semantic parser for handover instructions."""
 
 from __future__ import annotations
 
@@ -311,6 +292,10 @@ class _Parser:
 
     # -- sequences ------------------------------------------------------------------------------
     def seq(self, items: list[Item]) -> _Raw:
+        sides = _either_of_sequences(items)
+        if sides is not None:  # "either give A the cup and then B the chips, or give C …"
+            left, right = sides
+            return _RawGroup("or", [self.seq(left), self.seq(right)])
         items = _trailing_order(items)
         segments: list[tuple[str, list[Item]]] = []
         current: list[Item] = []
@@ -913,6 +898,45 @@ class _Parser:
 
 
 # -- helpers -------------------------------------------------------------------------------------
+
+
+_ORDER = ("then", "after", "before", "once", "prior")
+
+
+def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | None:
+    """'Either X and then Y, or Z': an alternative that is itself a sequence.
+
+    Only for 'either' opening the sentence and an 'or' that opens a clause (a verb after it):
+    with steps before that 'or' only, the two sides are the alternatives. Steps after it ('either
+    X or Y and then Z') could belong to Y or to both, so that is refused.
+    """
+    k = 0
+    while k < len(items) and _is(items[k], "filler", ",", "first"):
+        k += 1
+    if k >= len(items) or not _is(items[k], "either"):
+        return None
+    if not any(_is(it, *_ORDER) for it in items[k + 1 :]):
+        return None
+    ors = []
+    for n in range(k + 1, len(items)):
+        if _is(items[n], "or"):
+            j = n + 1
+            while j < len(items) and _is(items[j], "filler", "subject", "aux", ","):
+                j += 1
+            if j < len(items) and _is_verb(items[j]):
+                ors.append(n)
+    if len(ors) != 1:
+        return None
+    at = ors[0]
+    if any(_is(it, *_ORDER) for it in items[at + 1 :]):
+        raise GroundingError(
+            f"in {_text(items)!r} the steps after 'or' could belong to the last alternative or "
+            "come after either: say it in two sentences ('Either … or …. Then …')"
+        )
+    left = items[k + 1 : at]
+    while left and _is(left[-1], ","):
+        left.pop()
+    return left, items[at + 1 :]
 
 
 def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:

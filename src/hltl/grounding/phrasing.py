@@ -1,28 +1,13 @@
-"""How people phrase requests: rewrite lexed items into the offline grammar's plain form.
-
-Each pass either rewrites a phrasing into the form the parser reads, or refuses with the reason
-(docs/grounding.md, "What the offline grounder ignores and what makes it refuse"):
-
-- questions that are not requests ("where is the cup?", "is the apple on the shelf?") → refuse;
-- the speaker as recipient ("I need the apple", "get me the cup") → refuse; "I need X brought
-  to B" → "X to B";
-- "whichever …" → skipped (the alternatives are already an ``or``);
-- corrections: "the bottle, no, the cup", "— sorry, I mean the table", "no, give it to Bob";
-- "the red one", "the other one": the category of the last object named;
-- "that" / "this" / "those" without a name after them are pronouns;
-- person pronouns (he, him, she, her) → the one person named before, else refuse with the
-  readings; "them" for objects is left for the parser;
-- quantifiers folded into the object name after them: "a mug", "one of the mugs", "all the
-  mugs", "the two mugs", "everything"; exclusions ("except the mugs", "not the red one");
-- "Alice: the cup", "Bob - the chips": the person receives what follows.
-"""
+"""How people phrase requests: rewrite lexed items into the offline grammar's plain form."""
 
 from __future__ import annotations
 
+import itertools
+import math
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref
+from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref, near_keyword
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -47,7 +32,7 @@ def _humans(item: Item) -> bool:
 
 def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
-    items = _preambles(items)
+    items = _preambles(items, lexicon)
     items = _questions(items)
     items = _after_all(items)
     items = _whichever(items)
@@ -61,7 +46,8 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     items = _exclusions(items)
     items = _speaker(items, lexicon)
     items = _persons(items, lexicon)
-    items = _remarks(items)
+    items = _places(items, lexicon)
+    items = _remarks(items, lexicon)
     items = _datives(items)
     return items
 
@@ -145,7 +131,7 @@ def _after_all(items: list[Item]) -> list[Item]:
     return out
 
 
-def _remarks(items: list[Item]) -> list[Item]:
+def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Carol's thirsty, can you hand her the bottle?': a remark about a person, no task.
 
     A person, 'is'/''s', then words the grammar does not know, up to a comma or the end of the
@@ -158,14 +144,18 @@ def _remarks(items: list[Item]) -> list[Item]:
         at_start = k == 0 or (items[k - 1].kind == "punct")
         if at_start and _humans(items[k]) and k + 2 < len(items):
             j = k + 1
-            if items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
+            while j + 1 < len(items) and _is(items[j], "and", ",") and _humans(items[j + 1]):
+                j += 2  # "Alice and Carol are thirsty, …"
+            if j < len(items) and items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
                 j += 1
                 n = j
                 while n < len(items) and (
                     items[n].kind == "unknown" or _is(items[n], "det", "filler", "aux")
                 ):
                     n += 1
-                said = any(x.kind == "unknown" for x in items[j:n])
+                said = any(x.kind == "unknown" for x in items[j:n]) and not any(
+                    _hides_name(x, lexicon) for x in items[j:n]
+                )
                 if said and n < len(items) and items[n].kind == "punct":
                     rest = items[n + 1 :]
                     if any(x.kind == "ent" for x in rest):
@@ -180,6 +170,25 @@ def _remarks(items: list[Item]) -> list[Item]:
     return items
 
 
+def _speaker_opens(head: list[Item]) -> bool:
+    """An apology or the speaker about themselves: 'Sorry …', 'Excuse me …', 'I know …'."""
+    first = head[0].text.lower()
+    return first in ("sorry", "excuse", "i", "we", "apologies", "pardon")
+
+
+def _hides_name(item: Item, lexicon: Lexicon) -> bool:
+    """Whether an unknown phrase holds a scene name ("Alice tfe cup") or a word one edit from a
+    keyword ("ahen that is done"): then it may be a request or an order the grammar could not
+    read, never a remark to drop."""
+    if item.kind != "unknown":
+        return False
+    words = item.lemma.split()
+    pairs = [f"{a} {b}" for a, b in itertools.pairwise(words)]
+    return any(lexicon.lookup(w) is not None for w in [*words, *pairs]) or any(
+        lexicon.misspelt(w) is not None or near_keyword(w) for w in words
+    )
+
+
 def _has_request(items: list[Item]) -> bool:
     """Whether the last sentence of ``items`` names anything."""
     start = _sentences(items)[-1][0]
@@ -191,12 +200,14 @@ def _has_request(items: list[Item]) -> bool:
 _REMARK_WORDS = frozenset({"filler", "det", "subject", "aux", "to", "correct", "for", "on"})
 
 
-def _preambles(items: list[Item]) -> list[Item]:
+def _preambles(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Sorry to bother you, but could you give Carol the apple?': the opening is no task.
 
-    At the start of a sentence, words up to a comma with at least one the grammar does not know
-    and nothing it reads as a name, verb, negation, condition, order or pronoun other than the
-    speaker, followed by a request in the same sentence: dropped with a 'but' after the comma.
+    At the start of a sentence, an apology or the speaker about themselves ('Sorry', 'Excuse me',
+    'I', 'we' first) up to a comma, with at least one word the grammar does not know and nothing
+    it reads as a name, verb, negation, condition, order or pronoun other than the speaker (nor
+    a word one edit from a keyword), followed by a request in the same sentence: dropped with a
+    'but' after the comma.
     """
     out: list[Item] = []
     for start, end in _sentences(items):
@@ -214,6 +225,8 @@ def _preambles(items: list[Item]) -> list[Item]:
             if (
                 plain
                 and any(x.kind == "unknown" for x in head)
+                and not any(_hides_name(x, lexicon) for x in head)
+                and _speaker_opens(head)
                 and any(x.kind == "ent" for x in rest)
             ):
                 while rest and (
@@ -299,6 +312,9 @@ def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if items[j].text.lower() not in _BE:
             continue
         j += 1
+        if _is(items[j], "near", "nearest"):
+            k = j  # "the mug that's nearest to Carol": a place, read by _places
+            continue
         negated = (
             j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
         )
@@ -323,6 +339,129 @@ def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in keep))
         k = j + 1
     return out
+
+
+# how much nearer the nearest must be than the next ("the mug nearest to Carol"): closer calls
+# are refused, since positions are where the objects started and a person judges by eye
+_CLEARLY_NEARER = 0.75
+
+
+def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'the mug nearest to Carol', 'the mug next to the bottle', 'the mug by the shelf'.
+
+    After an object mention: 'nearest/closest (to)' or 'near/next to/close to/beside/by', then a
+    person, surface or object. Of the objects the mention names (not counting the one it is
+    measured from), the one nearest to it in the scene (where the objects start) is meant; it
+    must be clearly nearer than the next (within 3/4 of its distance), else refused. A
+    mention naming one object keeps it.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        out.append(it)
+        k += 1
+        if _objects(it) and k < len(items) and _is(items[k], "on") and _given(out[:-1]):
+            k = _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
+            continue
+        if not _objects(it) or k >= len(items) or not _is(items[k], "near", "nearest"):
+            continue
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
+            what = items[j].text if j < len(items) else "nothing"
+            raise GroundingError(
+                f"{items[k].text!r} after {it.text!r} needs one person, surface or object, "
+                f"not {what!r}"
+            )
+        anchor = items[j].refs[0]
+        where = _position(anchor.kind, anchor.id, lexicon)
+        ids = [i for i in dict.fromkeys(r.id for r in it.refs) if i != anchor.id]
+        if not ids:
+            raise GroundingError(f"{it.text!r} {items[k].text} itself names nothing else")
+        if len(ids) > 1:
+            dist = sorted(
+                (math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids
+            )
+            (d1, best), (d2, second) = dist[0], dist[1]
+            if d1 >= _CLEARLY_NEARER * d2:
+                raise GroundingError(
+                    f"'{it.text} {items[k].text} {items[j].text}': {best} and {second} are about "
+                    "as near; name the object"
+                )
+            ids = [best]
+        refs = tuple(r for r in it.refs if r.id in ids)
+        single = len(ids) == 1
+        out[-1] = replace(
+            it,
+            refs=refs,
+            quant="" if single and it.quant == "some" else it.quant,
+            group=-1 if single else it.group,
+        )
+        k = j + 1
+    return out
+
+
+def _given(before: list[Item]) -> bool:
+    """Whether the words before an object are 'give/hand/pass … <person> [the]'."""
+    n = len(before)
+    while n > 0 and _is(before[n - 1], "det"):
+        n -= 1
+    if n < 2 or not _humans(before[n - 1]):
+        return False
+    verb = before[n - 2]
+    return verb.kind == "word" and verb.lemma in ("verb:give", "verb:hand", "verb:pass")
+
+
+def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    """'give Bob the cup on the shelf': the objects of the mention that start on the surface."""
+    it = out[-1]
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
+    if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
+        return k  # not a surface: left to the grammar (which refuses a second recipient)
+    surface = next(x for x in lexicon.scene.surfaces if x.id == items[j].refs[0].id)
+    (cx, cy), (sx, sy) = surface.center[:2], surface.size
+    on = [
+        o.id
+        for o in lexicon.scene.objects
+        if o.id in {r.id for r in it.refs}
+        and abs(o.position[0] - cx) <= sx / 2
+        and abs(o.position[1] - cy) <= sy / 2
+    ]
+    if not on:
+        raise GroundingError(
+            f"no {it.text!r} is on the {items[j].text!r} in the scene (where the objects "
+            f"start); {lexicon.listing('object')}"
+        )
+    n = j + 1
+    while n < len(items) and _is(items[n], "and", "or", ",", "det"):
+        n += 1
+    if n > j + 1 and n < len(items) and _is_surface(items[n]):
+        raise GroundingError(
+            f"'{it.text} on the {items[j].text} …' names several surfaces: say which objects, "
+            "one surface at a time"
+        )
+    out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in on))
+    return j + 1
+
+
+def _is_surface(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "surface" for r in item.refs)
+
+
+def _position(kind: str, ident: str, lexicon: Lexicon) -> tuple[float, ...]:
+    sc = lexicon.scene
+    if kind == "object":
+        return tuple(next(o.position for o in sc.objects if o.id == ident))
+    if kind == "human":
+        return tuple(next(h.position for h in sc.humans if h.id == ident))
+    if kind == "surface":
+        return tuple(next(s.center for s in sc.surfaces if s.id == ident))
+    raise GroundingError(f"{ident!r} is a robot: describe objects by people, surfaces or objects")
 
 
 def _categories(item: Item, lexicon: Lexicon) -> list[str]:
@@ -933,7 +1072,20 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             )
         if it.kind == "word" and it.lemma == "pronoun" and low == "them":
             nxt = items[k + 1] if k + 1 < len(items) else None
-            prev = out[-1] if out else None
+            p = len(out)
+            while p > 0 and _is(out[p - 1], "filler"):
+                p -= 1  # "for each of them"
+            prev = out[p - 1] if p > 0 else None
+            people = (
+                _people_list(out[: p - 1]) if prev is not None and _is(prev, "to", "for") else None
+            )
+            if people is not None:
+                group, dative = people
+                if dative:
+                    del out[p - 1 :]  # "give Alice and Carol a mug for each of them": said already
+                else:
+                    out.extend(group)  # "…, get a mug for each of them": Alice and Carol
+                continue
             if (nxt is not None and nxt.kind == "ent") or (
                 prev is not None and _is(prev, "to", "for")
             ):
@@ -946,6 +1098,35 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
+    """The last list of two or more people before 'for/to them' ('Alice and Carol'), and
+    whether only objects (or 'would like') come between it and 'them': then the list names the
+    recipients already ('give Alice and Carol a mug …', 'A and B would like a mug …')."""
+    end = next((n for n in range(len(before) - 1, -1, -1) if _humans(before[n])), None)
+    if end is None:
+        return None
+    start = end
+    while (
+        start >= 2
+        and _is(before[start - 1], "and", ",")
+        and before[start - 1].text.lower() != "but"
+        and _humans(before[start - 2])
+    ):
+        start -= 2
+    group = before[start : end + 1]
+    ids = [r.id for x in group if _humans(x) for r in x.refs]
+    if len(ids) < 2 or len(set(ids)) != len(ids):
+        return None
+    between = before[end + 1 :]
+    dative = bool(between) and all(
+        _objects(x)
+        or _is(x, "det", "filler", "aux")
+        or x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have")
+        for x in between
+    )
+    return group, dative
 
 
 def _or(ids: list[str], lexicon: Lexicon) -> str:

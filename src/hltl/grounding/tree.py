@@ -1,10 +1,4 @@
-"""Task trees (deliveries, placements, and/or/sequence groups) and their H-LTLf encoding.
-
-The encoding is DESIGN.md's grounding convention: one leaf per delivery or placement
-(``F delivered(o, u)`` / ``F placed(o, s)``); ``and`` → ``F a & F b``; ``or`` → ``F a | F b``;
-sequence → ``F (a & F b)`` (non-strict: b never completes before a). Leaves are named p100,
-p200, …; inner groups p1, p2, …; the root p0.
-"""
+"""Task trees (deliveries, placements, and/or/sequence groups) and their H-LTLf encoding."""
 
 from __future__ import annotations
 

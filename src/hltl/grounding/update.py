@@ -1,28 +1,4 @@
-"""Instructions given during execution (paper GOAL events): merge them into the running spec.
-
-Every update keeps the names and texts of the running formulas it does not touch, so the
-executor carries their monitor state over as it is (:func:`hltl.spec.monitor.carry_over`).
-The phrasings:
-
-* add (default; "also …", "and …", "additionally …", "in addition, …", "plus …"): the new task
-  runs alongside: new root ``F <old root> & F <new>``.
-* then ("then …", "after that …", "afterwards …", "next …", "finally …", "later …",
-  "when/once you are done, …"): after everything running: ``F (<old root> & F <new>)``.
-* first ("first …", "… first" with a new task): before everything running:
-  ``F (<new> & F <old root>)``.
-* priority ("do the chips first", "the chips first", "prioritise the chips", "give B the chips
-  first" for a running task): the matching running tasks move to the front.
-* cancel ("cancel …", "forget (about) …", "skip …", "remove …", "abort …", "scrap …", "drop …",
-  "never mind …", "don't …", "no longer …"): the matching running tasks are removed and the tree
-  is pruned (a group left empty goes too).
-* instead ("… instead of X", "instead of X, …", "… instead"): the new task takes the place of the
-  matching running task (without "of X": the one running task with the same object, else the
-  same recipient or place).
-
-Tasks are matched by the scene entities named ("the chips", "the delivery to B", "B's chips"):
-a task matches when it mentions all of them. Completed tasks cannot be cancelled, replaced or
-moved.
-"""
+"""Instructions given during execution (paper GOAL events): merge them into the running spec."""
 
 from __future__ import annotations
 

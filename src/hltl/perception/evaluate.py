@@ -1,10 +1,4 @@
-"""ADE/FDE of trajectory predictors on walks, run through the live predictor classes.
-
-Each walk's observed positions are fed to a fresh predictor every DT seconds, as the executor
-feeds it; at every sample where the person moves (over the observed window or the next 2 s) the
-forecast at +0.1 … +2 s is compared with the true walk. ADE@h is the mean error over the
-forecast samples up to h seconds, FDE@h the error at h.
-"""
+"""ADE/FDE of trajectory predictors on walks, run through the live predictor classes."""
 
 from __future__ import annotations
 

@@ -1,11 +1,4 @@
-"""Camera frame folders (CONTRACTS.md): ``camera.json`` plus RGB, depth and optional segmentation.
-
-The same reader serves rendered folders (``hltl render``, the 3D simulator's live camera) and
-recorded RealSense sequences in that layout. Depth is metres in an NPZ (key ``depth``) or a
-16-bit PNG in millimetres; segmentation is a 16-bit PNG or an NPZ (key ``seg``) of segment ids,
-mapped to scene entities by ``camera.json``'s ``segments``. Every problem names the file, the
-field and the value.
-"""
+"""Camera frame folders (CONTRACTS.md): ``camera.json``, RGB, depth, optional segmentation."""
 
 from __future__ import annotations
 

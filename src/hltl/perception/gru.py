@@ -1,15 +1,4 @@
-"""The learned trajectory predictor: a compact GRU (torch, CPU) that corrects the goal-directed
-forecast, its features, training on seeded walks, and the shipped weights.
-
-In a frame centred on the person's last position and turned to their heading, the GRU reads the
-observed track (T_OBS samples DT apart); an MLP reads its state, the K nearest stopping places
-and the goal-directed forecast, and outputs a correction to that forecast. The last layer
-starts at zero, so an untrained model is exactly the goal-directed predictor; training only
-moves it where the walks say so (hesitations, braking, turns, wandering).
-
-Weights are an ``.npz`` of float32 arrays plus a JSON ``meta`` entry (training command, seed,
-sizes, losses); nothing is unpickled.
-"""
+"""The learned trajectory predictor: a GRU that corrects the goal-directed forecast."""
 
 from __future__ import annotations
 

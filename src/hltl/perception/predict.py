@@ -1,12 +1,4 @@
-"""Human trajectory predictors: constant velocity, goal-directed and a learned GRU (paper §III-A).
-
-Every predictor follows :class:`TrajectoryPredictor` (what the executor's workspace prediction
-calls): it is fed the positions perception reports and forecasts a person's positions at given
-times. :func:`make_predictor` builds one by name for a scene. The goal-directed and GRU
-predictors share :func:`goal_forecast`, a pure function of an observed track and the scene's
-plausible stopping places (:func:`stop_places`), so training, evaluation and the live loop use
-the same numbers.
-"""
+"""Human trajectory predictors: constant velocity, goal-directed, learned GRU (paper §III-A)."""
 
 from __future__ import annotations
 

@@ -1,9 +1,4 @@
-"""Exact ray-cast RGB-D frames of upright cylinders on a floor, with segmentation.
-
-A small independent renderer for tests and benchmarks of the perception stage: every pixel's
-ray is intersected analytically with the floor (z = 0), each cylinder's side and top, so depth,
-segmentation and the true geometry agree to float precision. People are tall cylinders.
-"""
+"""Exact ray-cast RGB-D frames of upright cylinders on a floor, with segmentation."""
 
 from __future__ import annotations
 

@@ -1,18 +1,4 @@
-"""A seeded human walk model for training and testing trajectory predictors.
-
-Cells look like the simulator's (robots on a 1 m grid, people standing beside them); a person
-walks from stopping place to stopping place with the behaviours a forecaster must handle:
-
-* *simulator* legs: constant speed from the first instant to an exact stop (``hltl run``'s
-  H-MOVE), and *smooth* legs that accelerate and brake;
-* *stops* of 0.5–3 s at each place;
-* *turns*: the person changes their mind mid-walk and heads for another place;
-* *hesitations*: a slowdown (sometimes to a halt) mid-walk, then on;
-* *wandering* legs toward a point that is no stopping place;
-* curved paths (a lateral waypoint) and perception noise on the observed positions.
-
-Everything is drawn from the seed; walks are sampled every DT seconds.
-"""
+"""A seeded human walk model for training and testing trajectory predictors."""
 
 from __future__ import annotations
 

@@ -1,11 +1,4 @@
-"""Admissible heuristic: the earliest time the root monitor can fire, bottom-up over the tree.
-
-Every predicate atom gets a lower bound on when it can first hold (the relaxed object graph).
-A node can fire no earlier than the cheapest run of its DFA into acceptance, where a run costs
-the latest of the times its symbols need (a symbol needs all of its true propositions, and a
-child's proposition is the child firing). Runs combine with ``max``, never ``+``: parallel robots
-may make everything happen at once, which keeps the bound admissible, and so A* stays exact.
-"""
+"""Admissible heuristic: the earliest time the root monitor can fire, bottom-up over the tree."""
 
 from __future__ import annotations
 

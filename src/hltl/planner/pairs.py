@@ -1,12 +1,4 @@
-"""Pairwise lower bound: the exact makespan of every two-object subproblem.
-
-Dropping all objects but two (and the formula down to "make both atoms true at some step") is a
-relaxation: the other objects can only take robots away. So the optimum of each such
-subproblem bounds the full problem from below. It captures what per-object and per-robot
-bounds miss: two objects crossing each other on a line of robots must queue at every link.
-Each subproblem is solved once for every start by a backward Dijkstra over its small state
-space (place of each object × whether each atom has happened).
-"""
+"""Pairwise lower bound: the exact makespan of every two-object subproblem."""
 
 from __future__ import annotations
 

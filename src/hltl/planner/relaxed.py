@@ -1,9 +1,4 @@
-"""Relaxed object-movement graph: earliest time each object can reach each place or event.
-
-The relaxation drops the "receiver is free" preconditions and the interaction between objects,
-so every time it gives is a lower bound on the real one: the basis of the admissible heuristic
-and of infeasibility explanations.
-"""
+"""Relaxed object-movement graph: earliest time each object can reach each place or event."""
 
 from __future__ import annotations
 

@@ -1,16 +1,4 @@
-"""Dynamic scenarios of the catalogue: the suite's trials (H-MOVE and GOAL) and Fig. 1's walk.
-
-A *trial* is one procedurally generated long-horizon task of a Table II configuration
-(:func:`hltl.sim.scenarios.generate`) plus two dynamic events drawn from the trial's seed:
-
-* **H-MOVE**: one recipient walks (1 m/s) to another free spot beside the robots while the robots
-  work, so the robots serving them change;
-* **GOAL**: a new delivery ("Also give Person B the can.") is said during execution; the object
-  is an extra one the generator puts next to a seeded robot. Grounders take it in update mode.
-
-Every trial is checked solvable by the exact planner before it is used: the base task from the
-start, and the base task plus the new one with the mover at their destination.
-"""
+"""Dynamic scenarios of the catalogue: the suite's trials (H-MOVE and GOAL) and Fig. 1's walk."""
 
 from __future__ import annotations
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Any, Protocol, runtime_checkable
 
 from hltl.execution.drivers import RobotDriver
 from hltl.execution.executor import Executor, ExecutorConfig, Planner
@@ -93,6 +93,16 @@ class Cell(RobotDriver, Protocol):
     def pending_instructions(self) -> bool: ...
 
     def take_instructions(self) -> list[str]: ...
+
+
+@runtime_checkable
+class PacedCell(Protocol):
+    """A cell on the wall clock (real arms; :class:`hltl.bus.realtime.RealtimeBusCell`): the
+    loop's next tick comes when the clock says, not as soon as the last one is done."""
+
+    def pace(self, t: float) -> float:
+        """Wait until it is time ``t``; the time then (later than ``t`` when the loop is late)."""
+        ...
 
 
 # Makes an episode's world, called as ``factory(scene, events, seed=, perception=, log=)``.
@@ -249,6 +259,7 @@ def run_episode(
         )
         said = [] if instruction is None else [instruction]
         executor.update(0.0, sim.observe(0.0), ground(said, executor))
+        paced = sim if isinstance(sim, PacedCell) else None
         t = 0.0
         while True:
             for hook in hooks:
@@ -265,6 +276,8 @@ def run_episode(
                 t_next = min(nxt, cfg.max_time)  # idle until the next instruction
             else:
                 t_next = min(t + cfg.tick, nxt, cfg.max_time)
+            if paced is not None:
+                t_next = paced.pace(t_next)
             sim.advance(t_next)
             executor.update(t_next, sim.observe(t_next), ground(sim.take_instructions(), executor))
             t = t_next

@@ -1,10 +1,4 @@
-"""Dynamic events (DESIGN.md §3): load and validate the events YAML that ``hltl run`` injects.
-
-Types: ``human_move`` (H-MOVE), ``human_wander`` (a seeded random walk), ``object_move``
-(O-MOVE), ``instruction`` (GOAL), ``robot_down`` (RES) and ``skill_failure`` (FAIL, for the whole
-episode). Every problem is reported up front with the file, the event's index, the field and
-the value; ids are checked against the scene.
-"""
+"""Dynamic events (DESIGN.md §3): load and validate the events YAML that ``hltl run`` injects."""
 
 from __future__ import annotations
 

@@ -1,10 +1,4 @@
-"""Scenario catalogue: the paper's simulation suite (§V-A, Fig. 7) and the Fig. 1 cell, seeded.
-
-A :class:`Scenario` bundles a scene, an H-LTLf spec (as plain data), the English instruction a
-person would say for it and tags. :func:`generate` builds one procedurally from a size, a
-layout and a seed; :func:`catalogue` lists the named entries (the twelve Table II
-configurations such as ``"2-4-line"`` and ``"fig1"``); :func:`get` fetches one by name.
-"""
+"""Scenario catalogue: the paper's simulation suite (§V-A, Fig. 7) and the Fig. 1 cell, seeded."""
 
 from __future__ import annotations
 

@@ -1,18 +1,4 @@
-"""A discrete-event simulator of the cell in continuous (simulated) time.
-
-Robots execute skill instances over their durations (the scene's cost model) behind the
-:class:`~hltl.execution.drivers.RobotDriver` protocol; people walk along straight segments
-(scripted walks, seeded random walks); people move objects; robots go down; skills fail with
-the probabilities of the events file; perception reports the world with Gaussian position noise
-and latency. Motion is analytic, so the state at any past time is known exactly and the
-perception model can look back by its latency. Every draw comes from generators seeded by the
-episode's seed: an episode is a pure function of its inputs.
-
-Physical truth is checked here, independently of the executor: an action whose precondition is
-false in the true world when it completes fails (the person is not there to take the object, a
-person stands in the rendezvous, the object was moved away from the grasp), and an action that
-ran to its end while its precondition was false at some instant is logged as a ``violation``.
-"""
+"""A discrete-event simulator of the cell in continuous (simulated) time."""
 
 from __future__ import annotations
 

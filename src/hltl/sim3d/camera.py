@@ -1,10 +1,4 @@
-"""The fixed RGB-D camera: offscreen RGB, metric depth and segmentation, written as frame folders.
-
-A frame folder (CONTRACTS.md) is what a recorded real camera would give: ``camera.json`` with
-the intrinsics and the camera-to-world pose in the OpenCV optical convention (x right, y down,
-z forward), ``rgb/NNNNNN.png``, ``depth/NNNNNN.npz`` (key ``depth``, float32 metres along the
-optical axis, 0 where nothing is hit) and ``seg/NNNNNN.png`` (16-bit segment ids, 0 background).
-"""
+"""The fixed RGB-D camera: offscreen RGB, metric depth and segmentation, as frame folders."""
 
 from __future__ import annotations
 

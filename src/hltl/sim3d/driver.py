@@ -1,18 +1,4 @@
-"""The 3D simulator: the discrete-event simulator's world, embodied in MuJoCo.
-
-:class:`MujocoSimulator` is the discrete-event :class:`~hltl.sim.simulator.Simulator` (same
-events, same seeded failures, same physical checks, same log) whose robots move their arms:
-each started action gets a :class:`~hltl.motion.trajectory.MotionPlan` (given by the caller, or
-made here from IK of the transition's hand targets) and lasts as long as its motion. Arms are
-played back kinematically: joint positions are set from the trajectories each step (no torque
-control), because the executor's contract is the trajectory itself — position control would add
-tracking error and tuning that say nothing about the plan, and kinematic playback is exact,
-deterministic and far faster than real time. Grasped objects ride on the hand (kinematic
-carry), transfer to the receiver's hand at a handover and rest where the log says otherwise;
-people walk the event paths with swinging legs and raise a forearm while an object comes to
-them. Robot–person contacts are found by MuJoCo's collision detection every ``contact_dt``
-seconds and logged as ``contact`` records.
-"""
+"""The 3D simulator: the discrete-event simulator's world, embodied in MuJoCo."""
 
 from __future__ import annotations
 

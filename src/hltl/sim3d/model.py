@@ -1,17 +1,4 @@
-"""Scene → MuJoCo model (built in code with MjSpec), with a cache of compiled models.
-
-Everything the simulator and the camera need later is recoverable from the compiled model's
-names, so a model loaded from the cache is as good as a freshly built one:
-
-* ``floor`` (geom), ``table`` (body): the room. The scene's z = 0 plane is the table top; the
-  floor is :data:`TABLE_HEIGHT` below it, where people stand.
-* ``robot:<id>``: a robot's root body; its arm joints are the hinges below it.
-  ``robot:<id>/hand`` is the site the hand (grasp point) is at; its z axis is the approach axis.
-* ``object:<id>``: a mocap body at the object's grasp point; ``surface:<id>``: a body.
-* ``human:<id>``: a mocap body on the floor, facing its local +x; joints
-  ``human:<id>/<limb>`` (shoulders, elbows, hips, knees); site ``human:<id>/hand`` in the right
-  hand.
-"""
+"""Scene → MuJoCo model (built in code with MjSpec), with a cache of compiled models."""
 
 from __future__ import annotations
 

@@ -1,10 +1,4 @@
-"""Where hands go and what they reach: the Reachability/Kinematics seam of the skill library.
-
-Skills ask a :class:`Kinematics` which instances exist (reach, robots that can meet) and which
-poses an instance uses (grasp, rendezvous, handover point). :data:`REACH_SPHERES` is the
-paper's geometry (a reach sphere per arm, §IV-B); a motion layer with real arm models plugs in a
-second implementation (docs/architecture.md shows how).
-"""
+"""Where hands go and what they reach: the Reachability/Kinematics seam of the skill library."""
 
 from __future__ import annotations
 

@@ -1,12 +1,4 @@
-"""Skill library J: pick, place, handover_r2r, handover_r2h; Pre, Post, events and durations.
-
-A skill grounds itself into instances for a :class:`Situation` (the scene, where the objects
-rest, the context ℓ and the available robots). Each instance pairs an :class:`Action` (what a
-plan says and a driver executes) with a :class:`Transition` (what it does to the discrete state).
-The situation-dependent part of Pre (reach, workspaces, rendezvous) decides which instances exist;
-the state-dependent part (the object is at ``pre``, the robots in ``free`` hold nothing) is
-checked against the joint state. A new skill is one class with ``name`` and ``instances``.
-"""
+"""Skill library J: pick, place, handover_r2r, handover_r2h; Pre, Post, events and durations."""
 
 from __future__ import annotations
 

@@ -1,9 +1,4 @@
-"""What one action means, computed in one place: its transition or why it is infeasible, and apply.
-
-The planner, executor, simulator, baselines and viz all ask :class:`ActionSemantics`; it bundles
-the skill library, the :class:`~hltl.skills.kinematics.Kinematics` that places hands, and the
-:class:`~hltl.skills.cost.CostModel` that times them (docs/architecture.md).
-"""
+"""What one action means, in one place: its transition or why it is infeasible, and apply."""
 
 from __future__ import annotations
 

@@ -1,12 +1,4 @@
-"""Top-down animations of an executed episode (from its log) or of a plan replayed on its scene.
-
-Robots are bases with their reach circle (solid) and the circle within which they can serve a
-person (dotted, reach + the person's arm); each hand is a dot on a line from its base, moving
-to its targets; diamonds mark the rendezvous points of meeting pairs. People are large dots with
-the path they walked and, while a background plan is being prepared, a dashed arrow to where the
-forecast puts them. Objects move from rest to hand to hand to person. The title carries the
-clock and the current step; a status line under it names the latest halt, replan or takeover.
-"""
+"""Top-down animations of an executed episode (from its log) or of a plan replayed on its scene."""
 
 from __future__ import annotations
 

@@ -1,14 +1,4 @@
-"""The paper's Fig. 1 episode end to end: ground, plan, execute with a person walking, draw it.
-
-Two arms of different reach (the Elfin-3 r1, 0.7 m, and the UR5 r2, 0.9 m) are told "Give Person
-A the bottle and Person B the chips". Each picks the object on its side and starts handing it
-over. Person A first steps up to the table (perception sees the motion; a background plan for
-the forecast world is made: snapshot 1), then walks on to r2's side during the handovers. The
-handover to A would lose its precondition (A leaves r1's workspace) before it ends, so it is
-halted while r2 finishes handing B the chips (snapshot 2); when the step ends and A is observed
-where the forecast said, the predicted suffix takes over: r1 passes the bottle to r2, which
-hands it to A. Both deliveries succeed and the monitor state survives the halt.
-"""
+"""The paper's Fig. 1 episode end to end: ground, plan, execute with a person walking, draw it."""
 
 from __future__ import annotations
 

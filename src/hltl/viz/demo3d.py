@@ -1,10 +1,4 @@
-"""The Fig. 1 demo in the 3D simulator as a video: fixed camera, orbit view, timeline below.
-
-The episode runs in :class:`~hltl.sim3d.driver.MujocoSimulator` with ``timing="cost"`` so that
-the story is the discrete demo's (Person A walks away mid-handover, the handover is halted, the
-predicted suffix takes over); poses are recorded every ``1 / fps * speed`` simulated seconds and
-rendered afterwards, with a Gantt-style timeline of the log drawn under the two views.
-"""
+"""The Fig. 1 demo in the 3D simulator as a video: fixed camera, orbit view, timeline below."""
 
 from __future__ import annotations
 

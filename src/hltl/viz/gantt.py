@@ -1,11 +1,4 @@
-"""Gantt charts of a plan or an executed episode: one row per robot and per person.
-
-Bars are coloured by skill and labelled with the object; a robot-to-robot handover is a linked
-pair of bars (an arrow from the giver's row to the receiver's); a handover to a person also shows
-on that person's row as "receives". Episodes add people's walks, halted (hatched ``///``) and
-failed (hatched ``xxx``) actions, and vertical lines for halts, replans, takeovers and background
-plans, with their reasons as numbered notes under the chart.
-"""
+"""Gantt charts of a plan or an executed episode: one row per robot and per person."""
 
 from __future__ import annotations
 

@@ -1,11 +1,4 @@
-"""The H-LTLf tree (each node's formula and automaton size) and single-node DFA diagrams.
-
-Drawn with matplotlib boxes and arrows only (no graphviz). The tree is laid out top-down with
-leaves evenly spaced and each composite centred over its children; leaves are green, composites
-blue. A DFA is drawn with its states on a row in breadth-first order (the initial state left),
-accepting states double-ringed, and each edge labelled with its guard as a small sum of products
-over the node's propositions.
-"""
+"""The H-LTLf tree (each node's formula and automaton size) and single-node DFA diagrams."""
 
 from __future__ import annotations
 

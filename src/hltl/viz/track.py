@@ -1,11 +1,4 @@
-"""What happened when: a plan or an executed episode (from its log) as spans, walks and markers.
-
-A :class:`Track` is what every picture draws from. It is built from a plan (replayed on its
-scene: every step runs to its end, people stand still) or from an execution log alone (actions
-from ``action_start`` to their end, people's walks from ``human_move`` records, halts, replans and
-takeovers as markers). It also answers where hands, people and objects are at any time, so the
-animation needs nothing else. No matplotlib here.
-"""
+"""What happened when: a plan or an executed episode (from its log) as spans, walks and markers."""
 
 from __future__ import annotations
 

@@ -1,8 +1,4 @@
-"""The scene file format as pydantic models: the full validator, with its error messages.
-
-Imported only when a scene is not in the plain form ``scene._plain`` reads itself (importing
-pydantic and building these models costs about 0.1 s of a command's start-up).
-"""
+"""The scene file format as pydantic models: the full validator, with its error messages."""
 
 from __future__ import annotations
 
@@ -11,6 +7,7 @@ from collections.abc import Mapping, Sequence
 from typing import Annotated, Any
 
 from pydantic import (
+    AfterValidator,
     BaseModel,
     BeforeValidator,
     ConfigDict,
@@ -35,58 +32,45 @@ def _not_bool(v: Any) -> Any:
     return v
 
 
+def _finite(v: Any) -> Any:
+    for x in v if isinstance(v, tuple) else (v,):
+        if x is not None and not math.isfinite(x):
+            raise ValueError(f"{quote(x)} is not a finite number")
+    return v
+
+
 Num = Annotated[float, BeforeValidator(_not_bool)]
-
-
-def _finite(values: Sequence[float]) -> list[float]:
-    for v in values:
-        if not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
-    return list(values)
+Finite = Annotated[Num, AfterValidator(_finite)]
+Point = Annotated[tuple[Num, Num, Num], AfterValidator(_finite)]  # named whole in messages
 
 
 class RobotIn(Strict):
     id: str = Field(min_length=1)
-    base: tuple[Num, Num, Num]
-    reach: Num = Field(gt=0)
+    base: Point
+    reach: Finite = Field(gt=0)
     model: str = "generic"
-    speed: Num | None = Field(default=None, gt=0)
-
-    _v = field_validator("base")(lambda v: tuple(_finite(v)))
-
-    @field_validator("reach", "speed")
-    @classmethod
-    def _finite_scalar(cls, v: float | None) -> float | None:
-        if v is not None and not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
-        return v
+    speed: Annotated[Num | None, AfterValidator(_finite)] = Field(default=None, gt=0)
 
 
 class ObjectIn(Strict):
     id: str = Field(min_length=1)
     category: str | None = None
-    position: tuple[Num, Num, Num]
+    position: Point
     aliases: list[str] = []
-
-    _v = field_validator("position")(lambda v: tuple(_finite(v)))
 
 
 class HumanIn(Strict):
     id: str = Field(min_length=1)
     name: str | None = None
-    position: tuple[Num, Num, Num]
+    position: Point
     aliases: list[str] = []
-
-    _v = field_validator("position")(lambda v: tuple(_finite(v)))
 
 
 class SurfaceIn(Strict):
     id: str = Field(min_length=1)
-    center: tuple[Num, Num, Num]
-    size: tuple[Num, Num]
+    center: Point
+    size: Annotated[tuple[Num, Num], AfterValidator(_finite)]
     aliases: list[str] = []
-
-    _v = field_validator("center", "size")(lambda v: tuple(_finite(v)))
 
     @field_validator("size")
     @classmethod
@@ -98,14 +82,12 @@ class SurfaceIn(Strict):
 
 class CameraIn(Strict):
     id: str = Field(min_length=1)
-    position: tuple[Num, Num, Num]
-    look_at: tuple[Num, Num, Num]
+    position: Point
+    look_at: Point
     width: int = Field(default=640, ge=8, le=4096)
     height: int = Field(default=480, ge=8, le=4096)
     fovy: Num = Field(default=42.0, gt=1.0, lt=170.0)
     rate: Num = Field(default=10.0, gt=0.0, le=1000.0)
-
-    _v = field_validator("position", "look_at")(lambda v: tuple(_finite(v)))
 
 
 class SceneIn(Strict):
@@ -115,7 +97,7 @@ class SceneIn(Strict):
     humans: list[HumanIn] = []
     surfaces: list[SurfaceIn] = []
     durations: dict[str, Num] | None = None
-    human_reach: Num = Field(default=DEFAULT_HUMAN_REACH, ge=0)
+    human_reach: Finite = Field(default=DEFAULT_HUMAN_REACH, ge=0)
     cameras: list[CameraIn] = []
 
     @field_validator("units")
@@ -137,13 +119,6 @@ class SceneIn(Strict):
                 raise ValueError(
                     f"duration of {quote(k)} must be a finite number >= 0, got {quote(d)}"
                 )
-        return v
-
-    @field_validator("human_reach")
-    @classmethod
-    def _hr(cls, v: float) -> float:
-        if not math.isfinite(v):
-            raise ValueError(f"{quote(v)} is not a finite number")
         return v
 
 

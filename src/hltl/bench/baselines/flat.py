@@ -1,17 +1,4 @@
-"""Flat LTLf: the whole task as one formula and one automaton, no hierarchy.
-
-:func:`flatten` substitutes every child into its parent. A child's proposition is the *event*
-of its monitor's first acceptance; for the leaves hltl's grounders write, ``F delivered(o, u)``
-and ``F placed(o, s)``, whose atoms are one-shot events themselves, that event is exactly the
-atom, so ``F (p100 & F p200)`` becomes ``F (delivered(bottle, A) & F delivered(chips, B))``:
-the same language over plans. (Substituting the leaf's formula instead, ``F (F d1 & F F d2)``,
-would lose the ordering.) Any other leaf is substituted as its formula, which is exact only
-when that formula is itself an event; :func:`flatten` says whether it was exact.
-
-:func:`compare` builds both the hierarchical monitors and the flat automaton with fresh caches,
-timing MONA, and plans with each through the same exact planner (a flat spec is a single leaf);
-the flat side runs in a child process that is killed at the time limit.
-"""
+"""Flat LTLf: the whole task as one formula and one automaton, no hierarchy."""
 
 from __future__ import annotations
 

@@ -1,15 +1,4 @@
-"""Greedy-R: nearest-robot allocation along the shortest handover chain, no LLM, no search.
-
-For every unfinished delivery (or placement) leaf, the object travels along the shortest chain of
-robots that can meet (breadth-first, nearest robots first): the robot nearest the object picks
-it, each robot hands it to the next, and the last one, which serves the person, hands it over.
-Chains are list-scheduled into synchronous steps in the spec's leaf order: a delivery starts
-when every robot of its chain is free and not reserved by another started delivery (so crossing
-traffic cannot deadlock), a robot is released as soon as the object has passed it, and an action
-that would make the monitors unsatisfiable (an ordered delivery before its predecessor) waits.
-The loop replans it on the same triggers as hltl's executor: a new task, a violated
-precondition, a person who moved (the context ℓ changed), a failed or halted action.
-"""
+"""Greedy-R: nearest-robot allocation along the shortest handover chain, no LLM, no search."""
 
 from __future__ import annotations
 

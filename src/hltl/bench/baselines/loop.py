@@ -1,21 +1,4 @@
-"""The closed-loop baselines as agents of the one episode loop (``run_episode``).
-
-Same simulator, tick, log records and referee (the offline grounder's spec, updated for every
-GOAL, with hltl's monitors) as hltl; what differs is who decides: a :class:`Policy` returns a
-*script*, a sequence of synchronous steps. Before every dispatch each action of the step goes
-through :meth:`~hltl.skills.semantics.ActionSemantics.transition` against the latest perceived
-world (and the step through the shared-robot/object check). A refused step is never dispatched.
-It is
-
-* a **violation** when the step was already infeasible in the world the policy planned for
-  (that world advanced by the script's own earlier steps): the policy's own error, logged as a
-  ``violation`` record with its kind (``kinematic`` or ``conflict``), counting against success;
-* **stale** when it was feasible when planned and the world changed since (a person walked
-  away): the same situation in which hltl's executor replans, so it only triggers a replan.
-
-Running actions are re-checked every tick like the executor's reactive safety does, and halted
-when their precondition breaks.
-"""
+"""The closed-loop baselines as agents of the one episode loop (``run_episode``)."""
 
 from __future__ import annotations
 

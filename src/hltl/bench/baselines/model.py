@@ -1,8 +1,4 @@
-"""The discrete model the closed-loop baselines plan and check against (docs/model.md).
-
-Baselines propose ground skill instances (:class:`~hltl.skills.library.Action`); everything here
-decides with the shared action semantics (:mod:`hltl.skills.semantics`).
-"""
+"""The discrete model the closed-loop baselines plan and check against (docs/model.md)."""
 
 from __future__ import annotations
 

@@ -1,21 +1,4 @@
-"""Fast Downward on the same instances, compiled to classical planning with unified-planning.
-
-Needs the ``baselines`` extra (``unified-planning``, ``up-fast-downward``). The compilation
-(docs/evaluation.md lists the semantic differences):
-
-* objects of the types robot, item, person, surface; static facts from the scene *under the
-  initial context* ℓ(w₀): ``reach(r, o)``, ``reach_surface(r, s)``, ``meet(g, r)`` (spheres
-  overlap and nobody blocks the rendezvous), ``serves(r, u)``;
-* the four skills as instantaneous actions with the preconditions and effects of
-  docs/model.md, one action at a time (a sequential plan);
-* the goal: the spec flattened (:mod:`hltl.bench.baselines.flat`), its eventualities as goal
-  atoms, ``&``/``|`` as conjunction/disjunction; a non-strict ordering ``F (a & F b)`` (``a``
-  an event, not itself an eventuality: ``F (F a & F b)`` is just ``F a & F b``) becomes
-  a precondition of b's delivering action: a's object is already delivered (at most one
-  predecessor per object, through a ``pre`` parameter and a dummy item ``none_``);
-* action costs are the skill durations in deciseconds, so the optimal plan minimises the total
-  robot time (the sum of durations), not the makespan.
-"""
+"""Fast Downward on the same instances, compiled to classical planning with unified-planning."""
 
 from __future__ import annotations
 

@@ -1,22 +1,4 @@
-"""SMART-LLM-R: an LLM writes a Python script over the action API; it runs in a sandbox.
-
-As in SMART-LLM (Kannan et al.), the model is shown the robots, objects and people and asked to
-decompose the instruction into subtasks, allocate robots and write code that calls the skill
-functions. The "-R" variant of the paper replans: the loop (:mod:`hltl.bench.baselines.loop`) asks
-again, from the current state, when a new task arrives or the next step fails the feasibility
-check.
-
-The script runs in a restricted namespace: the five API functions, a whitelist of harmless
-builtins, no imports, no ``while`` loops, no dunder or private attribute access, at most
-:data:`MAX_CALLS` actions. Running it only *records* actions: every call becomes one step,
-``parallel(...)`` merges the steps of its arguments into one. The loop then dispatches the steps
-one by one, each through ``check_action``. A script that does not parse or raises is not
-executable, and the trial fails.
-
-The model is reached through any OpenAI-compatible endpoint (``HLTL_LLM_BASE_URL``, the same
-configuration as the LLM grounder) or the local llama.cpp backend (``HLTL_LOCAL_MODEL``); tests
-inject a fake client. Without either the baseline is reported as not run.
-"""
+"""SMART-LLM-R: an LLM writes a Python script over the action API; it runs in a sandbox."""
 
 from __future__ import annotations
 
