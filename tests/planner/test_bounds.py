@@ -11,9 +11,13 @@ from hypothesis import strategies as st
 
 from hltl.planner import plan
 from hltl.planner.heuristic import _one_machine_bound
-from hltl.planner.problem import Problem
+from hltl.planner.problem import Problem, to_seconds
+from hltl.planner.search import _Search
 from hltl.sim.scenarios import generate
+from hltl.spec.hierarchy import spec_from_dict
+from hltl.world.scene import scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
+from tests.oracles.random_instances import random_instance
 from tests.oracles.validator import check_plan
 
 _job = st.tuples(st.integers(0, 6), st.integers(1, 4), st.integers(0, 6))
@@ -76,3 +80,22 @@ def test_commuting_event_cells_match_exhaustive_search(n: int, layout: str, seed
     assert res.makespan is not None and expected is not None
     assert math.isclose(res.makespan, expected, abs_tol=1e-6), (res.makespan, expected)
     check_plan(sc.scene, sc.spec, res.to_dict())
+
+
+@pytest.mark.parametrize("seed", range(0, 300, 10))
+def test_cheap_bound_never_exceeds_the_full_one_or_the_optimum(seed: int) -> None:
+    # the search orders fresh nodes by the cheap bound and pops them under the full one: both
+    # must be admissible, and the cheap one no larger (else a node could be expanded too early)
+    scene_d, spec_d = random_instance(seed)
+    scene = scene_from_dict(scene_d)
+    spec = spec_from_dict(spec_d)
+    expected = optimal_makespan(scene, spec)
+    s = _Search(Problem(scene, spec))
+    s.heuristic.enable_pairs()
+    start = s.p.start()
+    nodes = [start] + [child for *_, child, _, _ in s.steps(start)]
+    for node in nodes:
+        cheap, full = s.heuristic.cheap(node), s.heuristic(node)
+        assert cheap <= full
+    if expected is not None:
+        assert to_seconds(s.heuristic(start)) <= expected + 1e-9

@@ -45,6 +45,7 @@ class _Search:
         self._dead_memo: dict[object, frozenset[int]] = {}
         self._sym_memo: dict[object, tuple[tuple[int, ...], ...]] = {}
         self._classes = problem.symmetry.classes
+        self._sym_objects = sum(1 << o for members in self._classes for o, _ in members)
         # (child index, parent index), parents first: once a node is done its descendants can
         # no longer matter, so they are marked done too and equivalent states merge
         index = {n: i for i, n in enumerate(self.monitor.nodes)}
@@ -174,28 +175,46 @@ class _Search:
         """All successors: every set U of applicable instances with disjoint robots, with its
         duration, the node it leads to (canonical, see ``canonical``), its tag (in the child's
         labels) and the relabelling."""
-        q = node[2]
+        locs, hands, q = node
         opts = self.options(node, tags)
-        classes = self._classes
+        sym = self._sym_objects
+        # fixed durations and no state atoms: the step is applied inline (the hot path)
+        inline = hands is None and not self.p.state_atom_objects
+        monitor_step = self.monitor_step
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
         # recursive generator passes every step set up through one frame per object); the
-        # robots acting and the objects moved are carried along for the tag
-        stack: list[tuple[int, int, int, tuple[Instance, ...]]] = [(0, 0, 0, ())]
+        # robots acting, the objects moved, the events and the duration are carried along
+        stack: list[tuple[int, int, int, int, int, tuple[Instance, ...]]] = [(0, 0, 0, 0, 0, ())]
         while stack:
-            i, used, moved, chosen = stack.pop()
+            i, used, moved, events, cost, chosen = stack.pop()
             if i < n:
                 for inst in reversed(opts[i]):
                     if not inst.executors & used:
                         stack.append(
-                            (i + 1, used | inst.executors, moved | 1 << inst.obj, (*chosen, inst))
+                            (
+                                i + 1,
+                                used | inst.executors,
+                                moved | 1 << inst.obj,
+                                events | inst.event_bits,
+                                inst.lower if inst.lower > cost else cost,
+                                (*chosen, inst),
+                            )
                         )
-                stack.append((i + 1, used, moved, chosen))
+                stack.append((i + 1, used, moved, events, cost, chosen))
                 continue
-            cost, child = self.apply(node, chosen)
+            if inline:
+                new_locs = list(locs)
+                for inst in chosen:
+                    new_locs[inst.obj] = inst.post
+                child: Node = (tuple(new_locs), None, monitor_step(q, events))  # type: ignore[assignment]
+            else:
+                cost, child = self.apply(node, chosen)
             if not chosen and child[2] == q:
                 continue
-            if classes:
+            # the node is canonical and a step that moves no twin keeps it so (a leaf firing
+            # only drops a twin from its class, and what remains stays in order)
+            if moved & sym:
                 child, perm = self.canonical(child)
                 if perm is not None:
                     moved = _relabel(moved, perm)
@@ -272,12 +291,17 @@ def search(
     deadline = math.inf if timeout is None else t0 + timeout
     s = _Search(problem) if state is None else state
     h: Callable[[Node], float]
+    cheap: Callable[[Node], float]
     heur: Heuristic | None = None
     if algorithm == "astar":
         heur = s.heuristic
         h = heur
+        # lazy evaluation: a fresh node waits on the open list under its cheap bound; the full
+        # one (robot load, pairs) is computed when the node comes to the top, and the node goes
+        # back under it if it is larger. Many generated nodes never reach the top.
+        cheap = heur.cheap
     else:
-        h = _zero
+        h = cheap = _zero
     start, start_perm = s.canonical(problem.start())
     if problem.monitor.accepted(start[2]):
         return PlanResult(
@@ -324,9 +348,15 @@ def search(
         node_tags = tags[node]
         if seen_tags.get(node) == len(node_tags):
             continue  # already expanded with this g and these tags
-        seen_tags[node] = len(node_tags)
         if f > bound:
-            bound = f
+            bound = f  # every key on the open list is a lower bound on its node's f
+        if heur is not None:
+            full = g + h(node)
+            if full > f:
+                if not (math.isinf(full) or (upper is not None and full >= upper)):
+                    heapq.heappush(heap, (full, neg_g, next(counter), node))
+                continue
+        seen_tags[node] = len(node_tags)
         if problem.monitor.accepted(node[2]):
             steps = _reconstruct(s, parent, node, start_perm)
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
@@ -361,9 +391,9 @@ def search(
                 child_tags.append(tag)
                 if child not in seen_tags:
                     continue  # not expanded yet: it will see this tag when it is
-                hc = h(child)
+                hc = cheap(child)
             else:
-                hc = h(child)
+                hc = cheap(child)
                 if math.isinf(hc) or (upper is not None and ng + hc >= upper):
                     continue
                 g_best[child] = ng
