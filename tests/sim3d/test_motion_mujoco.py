@@ -98,9 +98,14 @@ def test_mujoco_arms_play_the_executors_trajectories(fig1: Scene, coarse_maps: N
     ep = run_episode(fig1, instruction=INSTRUCTION, config=cfg, grounder=OfflineGrounder(), **extra)
     assert ep.success
     (sim,), (watch,) = sims, poses
-    # every action played the trajectories the executor's motion cost model planned
+    # the first step plays the trajectories the executor's motion cost model planned (from the
+    # rest pose); a later plan the cost model made from another configuration than where the
+    # arm ended (it starts from a hand position, not from joints) is planned again by the
+    # driver from the arm's joints, never played from elsewhere
     infos = list(sim._plans.values())
-    assert len(infos) == 4 and {i.source for i in infos} == {"given"}
+    assert len(infos) == 4 and [i.source for i in infos[:2]] == ["given", "given"]
+    for i in infos:
+        assert i.source == "given" or (i.source == "hltl.motion" and "starts away" in i.note)
     assert watch.played > 100
     assert watch.worst <= 1e-9  # kinematic playback: the joints are the plan's samples
     # and the arms never jump: between posings no joint moves faster than its limit

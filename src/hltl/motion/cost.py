@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -25,8 +24,6 @@ from hltl.skills.library import Action, Transition
 from hltl.world.scene import Scene, Vec3
 
 KEY_DIGITS = 3  # hand positions are compared to the millimetre when reusing a motion plan
-# m: a hand this close to where an executed motion left it starts from that motion's joints
-END_MATCH = 0.005
 
 
 class MotionInfeasibleError(HltlError, ValueError):
@@ -54,9 +51,6 @@ class MotionCostModel:
     plans: dict[tuple[Action, tuple[tuple[str, Any], ...]], SkillMotion] = field(
         default_factory=dict
     )
-    # where a planned motion left each arm, by robot and the hand point the skill model gives:
-    # the next instance from that hand starts at those joints, so consecutive plans chain
-    ends: dict[tuple[str, Vec3], tuple[float, ...]] = field(default_factory=dict)
     _fallback: AnalyticCostModel = field(init=False)
 
     def __post_init__(self) -> None:
@@ -90,11 +84,7 @@ class MotionCostModel:
         """The joint trajectories of an instance (the executor passes them to the driver)."""
         if any(rid not in self.cell.arms for rid in action.robots):
             return None
-        plan = self.motion(action, transition, hands).plan
-        if plan is not None:
-            # this plan is executed: the arms end where it ends, whatever the search assumed
-            self._record_ends(plan, transition, overwrite=True)
-        return plan
+        return self.motion(action, transition, hands).plan
 
     def motion(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
@@ -113,43 +103,18 @@ class MotionCostModel:
         ends = tuple((f"->{rid}", _round(p)) for rid, p in transition.hands)
         if human_at is not None:
             ends = (*ends, ("@", _round(human_at)))
-        q = {rid: self._config(rid, p) for rid, p in start}
-        # the joints the motion starts from are part of the key too: where an executed plan
-        # left an arm (``ends``) may differ from what an earlier search assumed
-        joints = tuple((rid, tuple(round(v, 4) for v in q[rid])) for rid, _ in start)
-        key = (action, (*start, *ends, *joints))
+        key = (action, (*start, *ends))
         if key not in self.plans:
+            q = {rid: self._config(rid, p) for rid, p in start}
             where = None
             if action.skill == "pick":
                 where = transition.hands[0][1]
-            sm = plan_action(
+            self.plans[key] = plan_action(
                 self.cell, action, q, where=where, human_at=human_at, k=self.candidates
             )
-            self.plans[key] = sm
-            if sm.plan is not None:
-                self._record_ends(sm.plan, transition, overwrite=False)
         return self.plans[key]
 
-    def _record_ends(self, plan: MotionPlan, transition: Transition, *, overwrite: bool) -> None:
-        """Remember where ``plan`` leaves each arm, by the hand point the skill model gives and
-        by where the tool really is (a simulator that observes its arms reports that one)."""
-        for rid, p in transition.hands:
-            tr = plan.trajectory(rid)
-            if tr is None or not tr.positions:
-                continue
-            q = tuple(float(v) for v in tr.positions[-1])
-            tool, _ = self.cell.arm(rid).fk(q)
-            for point in (_round(p), _round((float(tool[0]), float(tool[1]), float(tool[2])))):
-                if overwrite or (rid, point) not in self.ends:
-                    self.ends[(rid, point)] = q
-
     def _config(self, rid: str, point: Vec3) -> tuple[float, ...]:
-        end = self.ends.get((rid, point))
-        if end is not None:
-            return end
-        for (r, p), q in self.ends.items():
-            if r == rid and math.dist(p, point) <= END_MATCH:
-                return q
         arm = self.cell.arm(rid)
         home_pos, _ = arm.fk(arm.home)
         if np.linalg.norm(home_pos - np.asarray(point)) < 1e-3:
