@@ -44,6 +44,9 @@ def test_bad_arguments_give_one_error_line(
     assert main(["perception", "eval-predictor", "--weights", str(bad)]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "not a GRU predictor weights file" in err[0]
+    assert main(["perception", "train-detector", "--views", "0"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --views")
 
 
 @pytest.mark.parametrize("predictor", ["goal", "gru"])

@@ -13,6 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.errors import PerceptionError
+from hltl.perception.detection import support_planes
 from hltl.perception.frames import FrameFolder, write_frames
 from hltl.perception.geometry import backproject, fit_cylinder, pixel_of
 from hltl.perception.objects import (
@@ -20,7 +21,6 @@ from hltl.perception.objects import (
     SegmentationBackend,
     localize,
     make_backend,
-    support_planes,
 )
 from hltl.perception.observe import Perceiver, fuse, match_objects
 from hltl.perception.people import IdentityBinder, nms
@@ -304,3 +304,28 @@ def test_language_selection_names_a_match_or_says_none() -> None:
     assert s.key == "chips" and s.word == "crisps"
     none = select("banana", cands)
     assert none.key is None and "nothing in view matches 'banana'" in none.describe()
+
+
+def test_depth_clusters_split_an_object_from_an_arm_base_at_the_same_depth(
+    tmp_path: Path,
+) -> None:
+    # a bottle standing against a robot's column: one depth region (no depth edge between
+    # them), too tall for an object; the colour edge splits the bottle off
+    column = Solid("robot", "r1", (0.0, 0.0, 0.0), 0.08, 0.5, (40, 70, 180))
+    bottle = Solid("object", "bottle", (0.12, 0.0, 0.0), 0.035, 0.22, (30, 140, 80))
+    cam = make_camera((0.1, -1.2, 0.6), (0.1, 0.0, 0.1), (column, bottle))
+    ff = FrameFolder(write_frames(tmp_path / "f", cam, [render(cam, (column, bottle))]))
+    frame = ff.frame(0)
+    sc = Scene(
+        robots=(Robot("r1", (0.0, 0.0, 0.0), 0.7),),
+        objects=(SceneObject("bottle", "bottle", (0.12, 0.0, 0.05)),),
+    )
+    found = {}
+    for colour in (0.0, 24.0):
+        backend = DepthClusterBackend(sc, colour=colour)
+        located = localize(frame, ff.camera, backend.detect(frame, ff.camera), backend.planes, sc)
+        obs, _, _ = match_objects(sc, located)
+        found[colour] = {o.id: o for o in obs if o.id}
+    assert "bottle" not in found[0.0]  # merged with the column by depth alone
+    assert math.dist(found[24.0]["bottle"].position, bottle.center) < 0.01
+    assert "r1" not in found[24.0]

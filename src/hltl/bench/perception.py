@@ -12,6 +12,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import random
 import statistics
@@ -24,10 +25,11 @@ import numpy as np
 
 from hltl.execution.log import Perception
 from hltl.grounding.offline import OfflineGrounder
+from hltl.perception.detection import MIN_PIXELS
 from hltl.perception.evaluate import HORIZONS, Score, score
 from hltl.perception.forecast import DT, F64, stop_places
-from hltl.perception.frames import Frame, camera_from_dict
-from hltl.perception.objects import MIN_PIXELS, localize, make_backend
+from hltl.perception.frames import Frame
+from hltl.perception.objects import localize, make_backend
 from hltl.perception.observe import Perceiver, match_objects
 from hltl.perception.predict import ConstantVelocityPredictor, GoalDirectedPredictor, GRUPredictor
 from hltl.perception.walks import generate_walks
@@ -36,7 +38,8 @@ from hltl.sim.episode import run_episode
 from hltl.sim.events import EventSchedule, HumanMove
 from hltl.sim.scenarios import catalogue
 from hltl.sim.simulator import Simulator
-from hltl.sim3d.camera import CameraRenderer, camera_to_world, intrinsics
+from hltl.sim3d.camera import CameraRenderer
+from hltl.sim3d.dataset import frame_camera, object_centres, render_samples
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
 from hltl.sim3d.perceived import CameraSimulator
@@ -142,33 +145,7 @@ class ObjectRow:
     found: int  # of those, localised and matched to the right id
     errors: tuple[float, ...]  # 3D centroid errors (m) of the found ones
     ms: tuple[float, ...]  # per-frame time (detect + localise)
-
-
-def _truth_centres(stage: Any) -> dict[str, tuple[float, float, float]]:
-    mj = stage.mj
-    m, d = stage.model, stage.data
-    out = {}
-    for o in stage.scene.objects:
-        bid = int(mj.mj_name2id(m, mj.mjtObj.mjOBJ_BODY, f"object:{o.id}"))
-        geoms = [g for g in range(m.ngeom) if int(m.geom_bodyid[g]) == bid]
-        p = d.geom_xpos[geoms[0]]
-        out[o.id] = (float(p[0]), float(p[1]), float(p[2]))
-    return out
-
-
-def _frame_camera(sm: Any, cam: Camera) -> Any:
-    k = intrinsics(cam)
-    return camera_from_dict(
-        {
-            "name": cam.id,
-            "width": cam.width,
-            "height": cam.height,
-            "intrinsics": {"fx": k.fx, "fy": k.fy, "cx": k.cx, "cy": k.cy},
-            "extrinsics": {"camera_to_world": camera_to_world(cam).tolist()},
-            "segments": sm.segment_table(),
-        },
-        f"camera {cam.id}",
-    )
+    cpu: tuple[float, ...] = ()  # per-frame CPU time of this process (all threads)
 
 
 def object_bench(
@@ -183,20 +160,21 @@ def object_bench(
         ("segmentation, free fit", "segmentation", False),
         ("depth-clusters", "depth-clusters", True),
         ("depth-clusters, free fit", "depth-clusters", False),
+        ("learned", "learned", True),
     )
     acc: dict[str, dict[str, list[float]]] = {
-        b: {"errors": [], "ms": [], "visible": [], "found": []} for b, _, _ in runs
+        b: {"errors": [], "ms": [], "cpu": [], "visible": [], "found": []} for b, _, _ in runs
     }
     frames = 0
     for scene in scenes:
         cams = _cameras(scene)
         scene = replace(scene, cameras=cams)
         stage = Stage(compile_scene(scene))
-        truth = _truth_centres(stage)
+        truth = object_centres(stage)
         for cam in cams:
             with CameraRenderer(stage.sm, cam, geometry="visual") as r:
                 f = r.render(stage.data)
-            fcam = _frame_camera(stage.sm, cam)
+            fcam = frame_camera(cam, stage.sm.segment_table())
             frame = Frame(frames, 0.0, f.rgb, f.depth, f.seg)
             frames += 1
             visible = {
@@ -207,10 +185,11 @@ def object_bench(
             for name, kind, priors in runs:
                 a = acc[name]
                 backend = make_backend(kind, scene)
-                t0 = time.perf_counter()
+                t0, c0 = time.perf_counter(), time.process_time()
                 dets = backend.detect(frame, fcam)
                 located = localize(frame, fcam, dets, backend.planes, scene, priors)
                 a["ms"].append((time.perf_counter() - t0) * 1000.0)
+                a["cpu"].append((time.process_time() - c0) * 1000.0)
                 obs, _, _ = match_objects(scene, located)
                 a["visible"].append(len(visible))
                 found = [o for o in obs if o.id in visible]
@@ -226,9 +205,53 @@ def object_bench(
             int(sum(a["found"])),
             tuple(a["errors"]),
             tuple(a["ms"]),
+            tuple(a["cpu"]),
         )
         for b, a in acc.items()
     ]
+
+
+def clutter_bench(
+    scenes: Sequence[Scene],
+    seed: int = 1000,
+    layouts: int = 2,
+    views: int = 3,
+    progress: Callable[[str], None] | None = None,
+) -> list[ObjectRow]:
+    """The backends (known sizes) on cluttered layouts of ``scenes`` as the learned backend's
+    training renders are made (:mod:`hltl.sim3d.dataset`: 3–8 objects of every rendered
+    category, random cameras, lights, arm poses, people), from cells it was not trained on."""
+    samples = render_samples(scenes, seed=seed, layouts=layouts, views=views)
+    rows = []
+    for name in ("segmentation", "depth-clusters", "learned"):
+        errors: list[float] = []
+        ms: list[float] = []
+        cpu: list[float] = []
+        visible = found = 0
+        for s in samples:
+            assert s.frame.seg is not None
+            shown = {
+                seg.id
+                for sid, seg in s.camera.segments.items()
+                if seg.kind == "object" and int((s.frame.seg == sid).sum()) >= MIN_PIXELS
+            }
+            backend = make_backend(name, s.scene)
+            t0, c0 = time.perf_counter(), time.process_time()
+            dets = backend.detect(s.frame, s.camera)
+            located = localize(s.frame, s.camera, dets, backend.planes, s.scene)
+            ms.append((time.perf_counter() - t0) * 1000.0)
+            cpu.append((time.process_time() - c0) * 1000.0)
+            obs, _, _ = match_objects(s.scene, located)
+            hits = [o for o in obs if o.id in shown]
+            visible += len(shown)
+            found += len(hits)
+            errors += [math.dist(o.position, s.centres[o.id]) for o in hits if o.id]
+        rows.append(
+            ObjectRow(name, len(samples), visible, found, tuple(errors), tuple(ms), tuple(cpu))
+        )
+        if progress:
+            progress(f"clutter: {name}")
+    return rows
 
 
 @dataclass(frozen=True, slots=True)
@@ -258,7 +281,7 @@ def _crossing(
     cam = _cameras(scene)[0]
     scene = replace(scene, cameras=(cam,))
     stage = Stage(compile_scene(scene))
-    fcam = _frame_camera(stage.sm, cam)
+    fcam = frame_camera(cam, stage.sm.segment_table())
     seg_of = {s.id: sid for sid, s in fcam.segments.items() if s.kind == "human"}
     rendered = []
     joints: list[JointTruth] = []
@@ -298,18 +321,26 @@ def _true_joints(stage: Any, hid: str) -> dict[str, tuple[float, float, float]]:
 
 def people_bench(
     scene: Scene,
-    detectors: Sequence[str] = ("segmentation", "depth", "fused", "yolo"),
+    detectors: Sequence[str] = (
+        "segmentation",
+        "depth",
+        "depth, unfiltered",
+        "fused",
+        "yolo",
+    ),
     frames: int = 40,
     progress: Callable[[str], None] | None = None,
 ) -> list[PeopleRow]:
     """Two people cross in front of the robots (each walks to where the other stood, 1 m/s
     pace), rendered at 10 Hz with walking poses; every detector tracks them inside the whole
-    perception stage (its time per frame includes the objects)."""
+    perception stage (its time per frame includes the objects). ``<detector>, unfiltered``:
+    without the temporal filter of positions."""
     scene, fcam, seg_of, rendered, _ = _crossing(scene, frames)
     rows = []
     for det in detectors:
+        name, _, option = det.partition(", ")
         # the whole perception stage per frame: objects (segmentation, known sizes) and people
-        perceiver = Perceiver(scene, fcam, "segmentation", det)
+        perceiver = Perceiver(scene, fcam, "segmentation", name, smooth=option != "unfiltered")
         person_frames = detected = wrong = false = switches = 0
         errors: list[float] = []
         ms: list[float] = []
@@ -385,7 +416,7 @@ def format_prediction(results: Sequence[tuple[str, Sequence[Score]]]) -> str:
 def format_objects(rows: Sequence[ObjectRow]) -> str:
     lines = [
         "| backend | frames | objects visible | found "
-        "| centroid error median / p95 / max (cm) | ms per frame median / max |",
+        "| centroid error median / p95 / max (cm) | ms per frame: wall median / max, CPU median |",
         "|---|---|---|---|---|---|",
     ]
     for r in rows:
@@ -393,7 +424,8 @@ def format_objects(rows: Sequence[ObjectRow]) -> str:
         lines.append(
             f"| {r.backend} | {r.frames} | {r.visible} | {r.found} | "
             f"{_q(e, 0.5):.2f} / {_q(e, 0.95):.2f} / {max(e, default=math.nan):.2f} | "
-            f"{statistics.median(r.ms):.0f} / {max(r.ms):.0f} |"
+            f"{statistics.median(r.ms):.0f} / {max(r.ms):.0f}, "
+            f"{statistics.median(r.cpu) if r.cpu else math.nan:.0f} |"
         )
     return "\n".join(lines)
 
@@ -509,6 +541,9 @@ class LoopRow:
     camera_time: float
     frames: int
     lost_frames: int  # frames in which some scene person had no live track
+    # the camera loop again without the temporal filters (None: not run)
+    unfiltered_success: bool | None = None
+    unfiltered_time: float | None = None
 
 
 def loop_bench(
@@ -516,10 +551,11 @@ def loop_bench(
     trials: int,
     progress: Callable[[str], None] | None = None,
     people: str = "depth",
+    unfiltered: bool = True,
 ) -> list[LoopRow]:
     """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
     truth and through the camera (segmentation object backend with known sizes, ``people``
-    person detector)."""
+    person detector), and with ``unfiltered`` through the camera without temporal filters."""
 
     rows = []
     for config in configs:
@@ -528,8 +564,10 @@ def loop_bench(
             model = compile_scene(trial.scene)
             made: list[CameraSimulator] = []
 
-            def camera(*a: Any, _m: Any = model, _made: list[Any] = made, **k: Any) -> Any:
-                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, **k)
+            def camera(
+                *a: Any, _m: Any = model, _made: list[Any] = made, _s: bool = True, **k: Any
+            ) -> Any:
+                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, smooth=_s, **k)
                 _made.append(sim)
                 return sim
 
@@ -548,6 +586,11 @@ def loop_bench(
             )
             cam = run_episode(trial.scene, simulator=camera, **kw)
             frames = [r for r in cam.records if isinstance(r, Perception)]
+            raw = (
+                run_episode(trial.scene, simulator=functools.partial(camera, _s=False), **kw)
+                if unfiltered
+                else None
+            )
             for sim in made:
                 sim.close()
             rows.append(
@@ -560,6 +603,8 @@ def loop_bench(
                     cam.metrics.time_cost,
                     len(frames),
                     sum(1 for r in frames if r.lost),
+                    None if raw is None else raw.success,
+                    None if raw is None else raw.metrics.time_cost,
                 )
             )
             if progress:
@@ -568,20 +613,30 @@ def loop_bench(
 
 
 def format_loop(rows: Sequence[LoopRow]) -> str:
+    def yes(b: bool | None) -> str:
+        return "-" if b is None else "yes" if b else "no"
+
     lines = [
-        "| trial | success truth / camera | time cost truth / camera (s) | frames | frames with "
-        "someone untracked |",
+        "| trial | success truth / camera / camera unfiltered | time cost truth / camera / "
+        "camera unfiltered (s) | frames | frames with someone untracked |",
         "|---|---|---|---|---|",
     ]
     for r in rows:
+        raw_time = "-" if r.unfiltered_time is None else f"{r.unfiltered_time:.2f}"
         lines.append(
-            f"| {r.config} #{r.index} | {'yes' if r.truth_success else 'no'} / "
-            f"{'yes' if r.camera_success else 'no'} | {r.truth_time:.2f} / {r.camera_time:.2f} | "
-            f"{r.frames} | {r.lost_frames} |"
+            f"| {r.config} #{r.index} | {yes(r.truth_success)} / {yes(r.camera_success)} / "
+            f"{yes(r.unfiltered_success)} | {r.truth_time:.2f} / {r.camera_time:.2f} / "
+            f"{raw_time} | {r.frames} | {r.lost_frames} |"
         )
     n = len(rows)
     if n:
         st = 100.0 * sum(r.truth_success for r in rows) / n
         sc = 100.0 * sum(r.camera_success for r in rows) / n
-        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % | | | |")
+        ran = [r for r in rows if r.unfiltered_success is not None]
+        su = (
+            f"{100.0 * sum(bool(r.unfiltered_success) for r in ran) / len(ran):.0f} %"
+            if ran
+            else "-"
+        )
+        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % / {su} | | | |")
     return "\n".join(lines)

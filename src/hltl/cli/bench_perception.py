@@ -10,6 +10,7 @@ import sys
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.perception import (
     _three,
+    clutter_bench,
     evaluate_predictors,
     format_loop,
     format_objects,
@@ -55,6 +56,12 @@ def run(args: argparse.Namespace) -> int:
         say(f"objects: {len(scenes)} scene(s) x 3 camera poses")
         objs = object_bench(scenes, say)
         tables.append("### Objects on renders\n\n" + format_objects(objs))
+        say("objects: cluttered layouts of the same cells")
+        clutter = clutter_bench(scenes, layouts=1 if quick else 2, views=3, progress=say)
+        tables.append(
+            "### Objects in clutter (held-out cells, random cameras and lights)\n\n"
+            + format_objects(clutter)
+        )
         say("people: two people crossing")
         people = people_bench(scenes[0], frames=10 if quick else 40, progress=say)
         tables.append("### People crossing on renders\n\n" + format_people(people))

@@ -11,6 +11,7 @@ from typing import Any
 from hltl.errors import HltlError
 from hltl.perception.frames import FrameFolder
 from hltl.perception.language import Candidate, select
+from hltl.perception.objects import BACKENDS
 from hltl.perception.observe import Perceiver
 from hltl.perception.overlay import draw_overlay
 from hltl.perception.predict import make_predictor
@@ -23,7 +24,7 @@ def frame_options(p: argparse.ArgumentParser, *, people_help: str) -> None:
     p.add_argument("--scene", type=Path, help="scene file: match objects and people to its ids")
     p.add_argument(
         "--backend",
-        choices=("segmentation", "depth-clusters"),
+        choices=tuple(BACKENDS),
         help="object backend (default: segmentation when the folder has seg/, else depth-clusters)",
     )
     p.add_argument(

@@ -6,6 +6,7 @@ import argparse
 import json
 import shlex
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -13,6 +14,9 @@ from hltl.bench.perception import evaluate_predictors
 from hltl.errors import HltlError
 from hltl.perception.evaluate import HORIZONS
 from hltl.perception.gru import SHIPPED, load_model, train
+from hltl.perception.learned import SHIPPED as DETECTOR_WEIGHTS
+from hltl.sim3d.dataset import train_detector
+from hltl.sim3d.gl import require_renderer
 
 
 def register(sub: Any) -> None:
@@ -29,6 +33,16 @@ def register(sub: Any) -> None:
     tr.add_argument("--walks", type=int, default=600, help="20 s walks to train on")
     tr.add_argument("--epochs", type=int, default=12, help="passes over the windows")
     tr.set_defaults(func=run_train)
+    td = psub.add_parser(
+        "train-detector",
+        help="train the learned object segmenter on labelled renders of randomised cells",
+    )
+    td.add_argument("--out", type=Path, help="weights file (default: the shipped one)")
+    td.add_argument("--seed", type=int, default=0, help="seed of layouts, views and weights")
+    td.add_argument("--layouts", type=int, default=6, help="cluttered layouts per training cell")
+    td.add_argument("--views", type=int, default=8, help="random views per layout")
+    td.add_argument("--epochs", type=int, default=30, help="passes over the renders")
+    td.set_defaults(func=run_train_detector)
     ev = psub.add_parser(
         "eval-predictor", help="ADE/FDE at 1 s and 2 s of cv, goal and gru on held-out walks"
     )
@@ -44,6 +58,18 @@ def _positive(name: str, value: int) -> None:
         raise HltlError(f"--{name}: expected a positive integer, got {value!r}")
 
 
+def _phases(bar: Any) -> Callable[[str, float], None]:
+    """A progress callback (phase name, fraction done) drawing one rich bar per phase."""
+    tasks: dict[str, Any] = {}
+
+    def progress(phase: str, frac: float) -> None:
+        if phase not in tasks:
+            tasks[phase] = bar.add_task(phase, total=1.0)
+        bar.update(tasks[phase], completed=frac)
+
+    return progress
+
+
 def run_train(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.progress import Progress
@@ -56,13 +82,7 @@ def run_train(args: argparse.Namespace) -> int:
     )
     console = Console(stderr=True)
     with Progress(console=console, transient=True) as bar:
-        tasks: dict[str, Any] = {}
-
-        def progress(phase: str, frac: float) -> None:
-            if phase not in tasks:
-                tasks[phase] = bar.add_task(phase, total=1.0)
-            bar.update(tasks[phase], completed=frac)
-
+        progress = _phases(bar)
         try:
             res = train(
                 out,
@@ -79,6 +99,44 @@ def run_train(args: argparse.Namespace) -> int:
         f"validation ADE@2s {res.val_ade:.3f} m (goal-directed {res.val_prior_ade:.3f} m)"
     )
     print(f"wrote {res.path}")
+    return 0
+
+
+def run_train_detector(args: argparse.Namespace) -> int:
+    from rich.console import Console
+    from rich.progress import Progress
+
+    for name in ("layouts", "views", "epochs"):
+        _positive(name, getattr(args, name))
+    require_renderer()
+    out = DETECTOR_WEIGHTS if args.out is None else args.out
+    command = "hltl perception train-detector " + shlex.join(
+        [
+            f"--seed={args.seed}",
+            f"--layouts={args.layouts}",
+            f"--views={args.views}",
+            f"--epochs={args.epochs}",
+        ]
+    )
+    with Progress(console=Console(stderr=True), transient=True) as bar:
+        progress = _phases(bar)
+        try:
+            res = train_detector(
+                out,
+                seed=args.seed,
+                layouts=args.layouts,
+                views=args.views,
+                epochs=args.epochs,
+                command=command,
+                progress=progress,
+            )
+        except OSError as exc:
+            raise HltlError(f"{out}: cannot write weights ({exc.strerror})") from None
+    iou = ", ".join(f"{k} {v:.2f}" for k, v in res.val_iou.items())
+    print(
+        f"trained on {res.images} renders in {res.seconds:.0f} s: validation IoU {iou}; "
+        f"wrote {res.path}"
+    )
     return 0
 
 

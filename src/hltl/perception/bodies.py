@@ -20,8 +20,8 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from hltl.perception.detection import support_planes
 from hltl.perception.frames import Camera
-from hltl.perception.objects import support_planes
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]

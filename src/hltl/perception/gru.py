@@ -14,6 +14,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError
+from hltl.perception.detection import read_weights
 from hltl.perception.forecast import DT, F64, T_OBS, T_PRED, fit_velocity, goal_forecast
 from hltl.perception.walks import generate_walks
 
@@ -159,14 +160,7 @@ def load_model(path: str | Path | None = None) -> GRUModel:
         FileNotFoundError / ValueError: the file is missing or not a weights file.
     """
     p = SHIPPED if path is None else Path(path)
-    if not p.is_file():
-        raise FileNotFoundError(f"{p}: no such weights file")
-    try:
-        with np.load(p, allow_pickle=False) as data:
-            meta = json.loads(str(data["meta"]))
-            state = {k: np.asarray(data[k]) for k in data.files if k != "meta"}
-    except (OSError, ValueError, KeyError) as exc:
-        raise ValueError(f"{p}: not a GRU predictor weights file ({exc})") from exc
+    meta, state = read_weights(p, "a GRU predictor weights file")
     if meta.get("t_obs") != T_OBS or meta.get("t_pred") != T_PRED or meta.get("dt") != DT:
         raise ValueError(f"{p}: weights were trained for another grid ({meta})")
     try:

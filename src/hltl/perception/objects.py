@@ -18,6 +18,7 @@ mid-height is the object's 3D position.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Protocol
@@ -27,31 +28,20 @@ import numpy.typing as npt
 
 from hltl.errors import PerceptionError
 from hltl.motion.grasps import CATEGORY_CYLINDERS
+from hltl.perception.detection import (
+    BASE_CLEARANCE,
+    MIN_PIXELS,
+    Detection,
+    Mask,
+    box_of,
+    depth_edges,
+    support_planes,
+    world_points,
+)
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
+from hltl.perception.learned import LearnedBackend
 from hltl.world.scene import Scene
-
-Mask = npt.NDArray[np.bool_]
-MIN_PIXELS = 15  # fewer visible pixels than this: the object counts as not seen
-
-
-@dataclass(frozen=True, slots=True)
-class Detection:
-    """One 2D detection.
-
-    Attributes:
-        kind: ``object`` or ``human``.
-        label: what the backend calls it (a scene id for ``segmentation``).
-        mask: H×W boolean mask.
-        score: the backend's confidence in [0, 1].
-        box: (u0, v0, u1, v1) pixel box, inclusive-exclusive.
-    """
-
-    kind: str
-    label: str
-    mask: Mask
-    score: float
-    box: tuple[int, int, int, int]
 
 
 class ObjectBackend(Protocol):
@@ -62,11 +52,6 @@ class ObjectBackend(Protocol):
     planes: list[float]
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]: ...
-
-
-def _box(mask: Mask) -> tuple[int, int, int, int]:
-    v, u = np.nonzero(mask)
-    return (int(u.min()), int(v.min()), int(u.max()) + 1, int(v.max()) + 1)
 
 
 class SegmentationBackend:
@@ -97,7 +82,7 @@ class SegmentationBackend:
             if seg is None or seg.kind not in ("object", "human") or n < MIN_PIXELS:
                 continue
             mask = frame.seg == sid
-            out.append(Detection(seg.kind, seg.id, mask, 1.0, _box(mask)))
+            out.append(Detection(seg.kind, seg.id, mask, 1.0, box_of(mask), exact=True))
         return out
 
 
@@ -106,9 +91,12 @@ class DepthClusterBackend:
 
     name = "depth-clusters"
 
-    def __init__(self, scene: Scene | None = None, edge: float = 0.03) -> None:
+    def __init__(
+        self, scene: Scene | None = None, edge: float = 0.03, colour: float = 24.0
+    ) -> None:
         self.scene = scene
         self.edge = edge
+        self.colour = colour
         self.planes: list[float] = []
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
@@ -116,21 +104,21 @@ class DepthClusterBackend:
 
         depth = frame.depth
         valid = depth > 0
-        pts = np.zeros((*depth.shape, 3))
-        pts[valid] = backproject(depth, valid, camera)
+        pts = world_points(depth, camera)
         z = pts[:, :, 2]
         planes = support_planes(z[valid])
         off_plane = valid & (z > 0.015)
         for h in planes:
             off_plane &= np.abs(z - h) > 0.015
         # split at depth edges: neighbours farther apart than ``edge`` (relative to range)
-        jump = np.zeros(depth.shape, dtype=bool)
-        du = np.abs(np.diff(depth, axis=1)) > self.edge * depth[:, 1:]
-        dv = np.abs(np.diff(depth, axis=0)) > self.edge * depth[1:, :]
-        jump[:, 1:] |= du
-        jump[1:, :] |= dv
+        jump = depth_edges(depth, self.edge)
         above = off_plane & ~jump
         self.planes = planes
+        colour_edge = np.zeros(depth.shape, dtype=bool)
+        if self.colour > 0:
+            rgb = frame.rgb.astype(np.int16)
+            colour_edge[:, 1:] = np.abs(np.diff(rgb, axis=1)).max(axis=2) > self.colour
+            colour_edge[1:, :] |= np.abs(np.diff(rgb, axis=0)).max(axis=2) > self.colour
         labels, n = ndimage.label(above)
         sizes = np.bincount(labels.ravel(), minlength=n + 1)
         out: list[Detection] = []
@@ -141,16 +129,38 @@ class DepthClusterBackend:
             p = pts[sl][local]
             span = np.ptp(p, axis=0)
             if span[2] > 0.7 and max(span[0], span[1]) < 0.9:  # person-tall, person-wide
-                kind, label = "human", "person"
-            elif span[0] < 0.3 and span[1] < 0.3 and span[2] < 0.4:
-                kind, label = "object", self._nearest(p)
-            else:
-                continue  # tables, robots, walls
-            mask = np.zeros(labels.shape, dtype=bool)
-            mask[sl] = local
-            score = float(min(1.0, sizes[k] / 200.0))
-            out.append(Detection(kind, label, mask, score, _box(mask)))
+                out.append(self._detection("human", "person", sl, local, labels.shape))
+            elif _object_sized(span):
+                if label := self._nearest(p):
+                    out.append(self._detection("object", label, sl, local, labels.shape))
+            elif self.colour > 0:
+                # a region too big for an object may be one standing against an arm's base or
+                # a person at the same depth: split it at colour edges (shading across one
+                # surface changes slowly) and keep the object-sized parts standing on a plane
+                parts, _ = ndimage.label(local & ~colour_edge[sl])
+                for j, psl in enumerate(ndimage.find_objects(parts), start=1):
+                    if psl is None:
+                        continue
+                    part = np.zeros(local.shape, dtype=bool)
+                    part[psl] = parts[psl] == j
+                    if int(part.sum()) < MIN_PIXELS:
+                        continue
+                    q = pts[sl][part]
+                    zmin = float(q[:, 2].min())
+                    standing = any(-0.01 <= zmin - h <= 0.03 for h in planes)
+                    label = self._nearest(q) if standing else ""
+                    if label and _object_sized(np.ptp(q, axis=0)):
+                        out.append(self._detection("object", label, sl, part, labels.shape))
         return out
+
+    @staticmethod
+    def _detection(
+        kind: str, label: str, sl: tuple[slice, ...], local: Mask, shape: tuple[int, ...]
+    ) -> Detection:
+        mask = np.zeros(shape, dtype=bool)
+        mask[sl] = local
+        score = float(min(1.0, local.sum() / 200.0))
+        return Detection(kind, label, mask, score, box_of(mask))
 
     def _nearest(self, points: npt.NDArray[np.float64]) -> str:
         """The category of the registered object this cluster is near: within 0.3 m on the
@@ -160,6 +170,11 @@ class DepthClusterBackend:
         if self.scene is None or not self.scene.objects:
             return "object"
         c = points.mean(axis=0)
+        if any(
+            math.hypot(r.base[0] - c[0], r.base[1] - c[1]) < BASE_CLEARANCE
+            for r in self.scene.robots
+        ):
+            return ""  # a piece of an arm's base (nothing stands there): not an object
         lo, hi = float(points[:, 2].min()) - 0.1, float(points[:, 2].max()) + 0.1
         span = np.ptp(points, axis=0)
         best, label = 0.3, "object"
@@ -177,26 +192,14 @@ class DepthClusterBackend:
         return label
 
 
-def support_planes(z: npt.NDArray[np.float64], share: float = 0.04) -> list[float]:
-    """Heights of horizontal planes things stand on: 1 cm bins of the points' heights holding at
-    least ``share`` of them (the floor, tables), each refined to its points' median."""
-    if len(z) == 0:
-        return []
-    lo, hi = float(z.min()), float(z.max())
-    bins = np.arange(lo, hi + 0.02, 0.01)
-    counts, edges = np.histogram(z, bins=bins)
-    out: list[float] = []
-    for i in np.flatnonzero(counts >= share * len(z)):
-        sel = (z >= edges[i]) & (z < edges[i + 1])
-        h = float(np.median(z[sel]))
-        if not out or abs(h - out[-1]) > 0.02:
-            out.append(h)
-    return out
+def _object_sized(span: npt.NDArray[np.float64]) -> bool:
+    return bool(span[0] < 0.3 and span[1] < 0.3 and span[2] < 0.4)
 
 
 BACKENDS: dict[str, Callable[[Scene | None], ObjectBackend]] = {
     "segmentation": SegmentationBackend,
     "depth-clusters": DepthClusterBackend,
+    "learned": LearnedBackend,
 }
 
 

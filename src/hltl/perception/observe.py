@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
+from hltl.perception.filtering import RestingFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder
 from hltl.perception.objects import Located, ObjectBackend, localize, make_backend
@@ -24,6 +25,8 @@ from hltl.perception.people import DETECTORS, PeopleTracker, PersonObservation
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import ObjectStatus, WorldState
 
+# m: a detection named by category matches a registered object of it at most this far away
+CATEGORY_GATE = 1.0
 AMBIGUOUS = 0.05  # m: two registered objects this close in distance to a detection are ambiguous
 
 
@@ -90,9 +93,10 @@ class Observation:
 def match_objects(
     scene: Scene | None, located: list[Located]
 ) -> tuple[list[ObjectObservation], list[str], list[str]]:
-    """Scene ids for located detections: a label that is a scene id is that object; otherwise
-    the scene objects whose category or alias is the label, nearest registered position first
-    (ambiguous when two are about as near). Returns (observations, unmatched, ambiguous)."""
+    """Scene ids for located detections: an exact label (a segment's scene id) is that object;
+    otherwise the scene objects whose category or alias is the label within CATEGORY_GATE,
+    nearest registered position first (ambiguous when two are about as near). Returns
+    (observations, unmatched, ambiguous)."""
     out: list[ObjectObservation] = []
     unmatched: list[str] = []
     ambiguous: list[str] = []
@@ -101,7 +105,7 @@ def match_objects(
         det, cyl = loc.detection, loc.cylinder
         oid: str | None = None
         if scene is not None:
-            if det.label in scene.object_ids:
+            if det.exact and det.label in scene.object_ids:
                 oid = det.label
             else:
                 cands = [
@@ -110,6 +114,10 @@ def match_objects(
                     if o.id not in taken and (det.label == o.category or det.label in o.aliases)
                 ]
                 cands.sort(key=lambda o: math.dist(o.position[:2], cyl.center[:2]))
+                # farther than CATEGORY_GATE from every candidate: some other thing, not guessed
+                cands = [
+                    o for o in cands if math.dist(o.position[:2], cyl.center[:2]) <= CATEGORY_GATE
+                ]
                 if cands:
                     oid = cands[0].id
                     if len(cands) > 1:
@@ -136,6 +144,8 @@ class Perceiver:
         people: a person detector of :data:`hltl.perception.people.DETECTORS` or ``none``.
         skeleton: 3D shoulders, elbows and wrists of tracked people (MediaPipe in its own
             process; see :mod:`hltl.perception.skeleton`).
+        smooth: filter positions over frames (:mod:`hltl.perception.filtering`): people by
+            track (constant velocity, gated), matched objects by id (at rest, gated).
     """
 
     def __init__(
@@ -145,9 +155,12 @@ class Perceiver:
         backend: str = "segmentation",
         people: str = "segmentation",
         skeleton: bool = False,
+        smooth: bool = True,
     ) -> None:
         self.scene = scene
         self.camera = camera
+        self.smooth = smooth
+        self.resting: dict[str, RestingFilter] = {}
         self.backend: ObjectBackend = make_backend(backend, scene)
         if people != "none" and people not in DETECTORS:
             raise ValueError(
@@ -157,7 +170,10 @@ class Perceiver:
             None
             if people == "none"
             else PeopleTracker(
-                scene if scene is not None else Scene(robots=()), people, skeleton=skeleton
+                scene if scene is not None else Scene(robots=()),
+                people,
+                skeleton=skeleton,
+                smooth=smooth,
             )
         )
 
@@ -171,6 +187,15 @@ class Perceiver:
         dets = self.backend.detect(frame, self.camera)
         located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
         objects, unmatched, ambiguous = match_objects(self.scene, located)
+        if self.smooth:  # a matched object's position over frames, gated (filtering.py)
+            objects = [
+                o
+                if o.id is None
+                else replace(
+                    o, position=self.resting.setdefault(o.id, RestingFilter()).update(o.position)
+                )
+                for o in objects
+            ]
         people = self.tracker.update(frame, self.camera) if self.tracker is not None else []
         seen = {o.id for o in objects}
         missing = tuple(o for o in self.scene.object_ids if o not in seen) if self.scene else ()

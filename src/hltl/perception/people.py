@@ -26,9 +26,10 @@ import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError, PerceptionError
 from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
+from hltl.perception.filtering import WalkerFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
-from hltl.perception.skeleton import PoseWorker, Skeleton
+from hltl.perception.skeleton import PoseWorker, Skeleton, drop_implausible, orient_sides
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]
@@ -305,6 +306,8 @@ class PeopleTracker:
         yolo_every: how often ``fused`` runs YOLO (frames).
         skeleton: run MediaPipe pose on each tracked person in its own process
             (:mod:`hltl.perception.skeleton`; needs the pose environment).
+        smooth: filter each track's floor position over time (:class:`WalkerFilter`: constant
+            velocity, gated); False reports each frame's measurement as it is.
     """
 
     def __init__(
@@ -315,6 +318,7 @@ class PeopleTracker:
         appearance: str = "color",
         yolo_every: int = 10,
         skeleton: bool = False,
+        smooth: bool = True,
     ) -> None:
         try:
             from deep_sort_realtime.deepsort_tracker import DeepSort  # type: ignore[import-untyped]
@@ -348,6 +352,9 @@ class PeopleTracker:
         self.confirmed = 0  # fused: depth bodies a YOLO box agreed with
         self.added = 0  # fused: YOLO boxes with no depth body, kept
         self.frames = 0
+        self.smooth = smooth
+        self.filters: dict[str, WalkerFilter] = {}
+        self.skeletons: dict[str, Skeleton] = {}  # each track's last skeleton
         self.pose: PoseWorker | None = None
         if skeleton:
             self.pose = PoseWorker()
@@ -433,12 +440,26 @@ class PeopleTracker:
             if pos is None:
                 continue
             score = float(tr.get_det_conf() or 0.0)
+            if self.smooth:
+                filt = self.filters.setdefault(str(tr.track_id), WalkerFilter())
+                pos = filt.update(pos, frame.t)
             live[str(tr.track_id)] = (pos, box, score, tr.get_det_supplementary())
+        alive = {str(tr.track_id) for tr in tracks if not tr.is_deleted()}
+        for t in [t for t in self.filters if t not in alive]:
+            del self.filters[t]
+        for t in [t for t in self.skeletons if t not in alive]:
+            del self.skeletons[t]
         people = self.binder.bind({t: (p[0], p[1]) for t, (p, _, _, _) in live.items()})
         out = []
         for t, (pos, box, score, mask) in sorted(live.items()):
             sk = None
             if self.pose is not None:
                 sk = self.pose.skeleton(frame.rgb, frame.depth, camera, box, mask)
+                if sk is not None:
+                    walker = self.filters.get(t)
+                    vel = walker.velocity if walker is not None else None
+                    sk = drop_implausible(sk, (pos[0], pos[1]))
+                    sk = orient_sides(sk, (pos[0], pos[1]), vel, self.skeletons.get(t))
+                    self.skeletons[t] = sk
             out.append(PersonObservation(t, people[t], pos, box, score, sk))
         return out

@@ -26,9 +26,11 @@ class CameraSimulator(MujocoSimulator):
     """:class:`MujocoSimulator` whose :meth:`observe` is camera perception.
 
     Args:
-        backend: object backend (``segmentation`` or ``depth-clusters``).
-        people: person detector (``segmentation``, ``depth``, ``fused`` or ``yolo``).
+        backend: object backend (a name of ``hltl.perception.objects.BACKENDS``).
+        people: person detector (``depth`` by default: it needs no segmentation render;
+            ``segmentation``, ``fused`` or ``yolo``).
         camera: scene camera id (default: the first).
+        smooth: filter people's and objects' positions over frames (``hltl.perception.filtering``).
         (the rest as :class:`MujocoSimulator`)
     """
 
@@ -36,8 +38,9 @@ class CameraSimulator(MujocoSimulator):
         self,
         *args: Any,
         backend: str = "segmentation",
-        people: str = "segmentation",
+        people: str = "depth",
         camera: str | None = None,
+        smooth: bool = True,
         **kwargs: Any,
     ) -> None:
         super().__init__(*args, **kwargs)
@@ -53,7 +56,7 @@ class CameraSimulator(MujocoSimulator):
             "segments": self.stage.sm.segment_table(),
         }
         self.camera: FrameCamera = camera_from_dict(spec, f"camera {cam.id}")
-        self.perceiver = Perceiver(self.scene, self.camera, backend, people)
+        self.perceiver = Perceiver(self.scene, self.camera, backend, people, smooth=smooth)
         self.period = 1.0 / cam.rate
         self._next_frame = 0.0
         self._belief: WorldState = initial_world(self.scene)

@@ -1,0 +1,404 @@
+"""The learned object backend: a small segmentation network trained on the project's own renders."""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from hltl.errors import BackendUnavailableError
+from hltl.motion.grasps import CATEGORY_CYLINDERS
+from hltl.perception.detection import (
+    BASE_CLEARANCE,
+    MIN_PIXELS,
+    Detection,
+    Mask,
+    box_of,
+    depth_edges,
+    read_weights,
+    support_planes,
+    world_points,
+)
+from hltl.perception.frames import Camera, Frame
+from hltl.perception.geometry import backproject
+from hltl.world.scene import Scene
+
+CLASSES = ("background", "person", "bottle", "chips", "cup", "mug", "can", "apple", "box", "book")
+SHIPPED = Path(__file__).parent / "data" / "object_segmenter.npz"
+WIDTHS = (12, 24, 48)  # channels of the three encoder stages
+CHANNELS = 6  # r, g, b, depth, world height, valid
+F32 = npt.NDArray[np.float32]
+F64 = npt.NDArray[np.float64]
+MIN_CONFIDENCE = 0.5  # pixels the network is less sure of are left out
+
+
+def _torch() -> Any:
+    try:
+        import torch
+    except ImportError:
+        raise BackendUnavailableError(
+            "the learned object backend needs torch: pip install 'hltl[predict]'"
+        ) from None
+    return torch
+
+
+def inputs(frame: Frame, camera: Camera, height: F64 | None = None) -> F32:
+    """The network's input (CHANNELS × H/2 × W/2): colour averaged over 2×2 pixels, the depth
+    and world height of each block's top-left pixel (exact values, not mixed across an edge).
+    ``height``: every pixel's world height, when the caller has it already."""
+    h, w = frame.depth.shape
+    h2, w2 = h // 2, w // 2
+    rgb = frame.rgb[: 2 * h2, : 2 * w2].astype(np.float32) / 255.0
+    rgb = rgb.reshape(h2, 2, w2, 2, 3).mean(axis=(1, 3))
+    sub = np.zeros(frame.depth.shape, dtype=bool)
+    sub[: 2 * h2 : 2, : 2 * w2 : 2] = True
+    depth = frame.depth[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.float32)
+    valid = depth > 0
+    if height is not None:
+        z = height[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.float32)
+    else:
+        z = np.zeros((h2, w2), np.float32)
+        sub &= frame.depth > 0
+        z[valid] = backproject(frame.depth, sub, camera)[:, 2]
+    out = np.empty((CHANNELS, h2, w2), np.float32)
+    out[:3] = rgb.transpose(2, 0, 1) - 0.5
+    out[3] = np.clip(depth, 0.0, 8.0) / 4.0 - 0.5
+    out[4] = np.clip(z, -1.0, 2.5)
+    out[5] = valid
+    return out
+
+
+def _build(torch: Any) -> Any:
+    """Half resolution → three stages down to 1/8 (dilated at the bottom for context: an object
+    is told from a robot link by what is around it) → two skip connections back up; the
+    full-width layers are thin because they cost the most on a CPU."""
+    nn = torch.nn
+    a, b, c = WIDTHS
+
+    def conv(i: int, o: int, stride: int = 1, dil: int = 1) -> Any:
+        return nn.Sequential(
+            nn.Conv2d(i, o, 3, stride=stride, padding=dil, dilation=dil), nn.ReLU(inplace=True)
+        )
+
+    class Net(nn.Module):  # type: ignore[name-defined,misc]
+        def __init__(self) -> None:
+            super().__init__()
+            self.e1 = conv(CHANNELS, a)
+            self.e2 = nn.Sequential(conv(a, b, 2), conv(b, b))
+            self.e3 = nn.Sequential(conv(b, c, 2), conv(c, c, dil=2), conv(c, c, dil=4))
+            self.r3 = nn.Sequential(nn.Conv2d(c, a, 1), nn.ReLU(inplace=True))
+            self.d2 = conv(a + b, b)
+            self.head = nn.Conv2d(b + a, len(CLASSES), 1)
+
+        def forward(self, x: Any) -> Any:
+            f = torch.nn.functional
+            x1 = self.e1(x)
+            x2 = self.e2(x1)
+            x3 = self.r3(self.e3(x2))
+            y2 = self.d2(torch.cat([f.interpolate(x3, size=x2.shape[2:]), x2], dim=1))
+            return self.head(torch.cat([f.interpolate(y2, size=x1.shape[2:]), x1], dim=1))
+
+    return Net()
+
+
+class SegmenterModel:
+    """Loaded weights: :meth:`probabilities` of each class per half-resolution pixel."""
+
+    def __init__(self, state: dict[str, npt.NDArray[Any]], meta: dict[str, Any]) -> None:
+        torch = _torch()
+        self._torch = torch
+        self.meta = meta
+        self.net = _build(torch)
+        self.net.load_state_dict(
+            {k: torch.from_numpy(np.asarray(v, dtype=np.float32)) for k, v in state.items()}
+        )
+        self.net.eval()
+
+    def probabilities(self, x: F32) -> F32:
+        """(classes × h × w) softmax of one input (CHANNELS × h × w)."""
+        torch = self._torch
+        with torch.no_grad():
+            logits = self.net(torch.from_numpy(x[None]))
+            out: F32 = torch.softmax(logits, dim=1)[0].numpy()
+        return out
+
+
+def load_segmenter(path: str | Path | None = None) -> SegmenterModel:
+    """Load weights written by :func:`train` (default: the shipped file).
+
+    Raises:
+        BackendUnavailableError: torch is missing.
+        FileNotFoundError / ValueError: the file is missing or not segmenter weights.
+    """
+    p = SHIPPED if path is None else Path(path)
+    meta, state = read_weights(p, "an object segmenter weights file")
+    if tuple(meta.get("classes", ())) != CLASSES or tuple(meta.get("widths", ())) != WIDTHS:
+        raise ValueError(f"{p}: weights were trained for other classes or widths")
+    try:
+        return SegmenterModel(state, meta)
+    except RuntimeError as exc:
+        raise ValueError(f"{p}: weights do not fit this model ({exc})") from exc
+
+
+_MODELS: dict[Path, SegmenterModel] = {}
+
+
+def _shared(path: Path) -> SegmenterModel:
+    """One loaded model per weights file for the process (backends are built per frame
+    source; loading costs more than a frame)."""
+    if path not in _MODELS:
+        _MODELS[path] = load_segmenter(path)
+    return _MODELS[path]
+
+
+class LearnedBackend:
+    """Objects (and people) from the trained segmenter; labels are categories."""
+
+    name = "learned"
+
+    def __init__(
+        self, scene: Scene | None = None, weights: str | Path | None = None, edge: float = 0.03
+    ) -> None:
+        self.scene = scene
+        self.edge = edge
+        self.model = _shared(SHIPPED if weights is None else Path(weights))
+        self.planes: list[float] = []
+
+    def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
+        from scipy import ndimage
+
+        depth = frame.depth
+        valid = depth > 0
+        pts = world_points(depth, camera)
+        z = pts[:, :, 2]
+        prob = self.model.probabilities(inputs(frame, camera, z))
+        cls = prob.argmax(axis=0)
+        conf = prob.max(axis=0)
+        h, w = frame.depth.shape
+        # back to full resolution (each half-resolution label covers its 2×2 block)
+        full = np.zeros((h, w), dtype=np.int64)
+        full[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
+        fconf = np.zeros((h, w), dtype=np.float32)
+        fconf[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
+        self.planes = support_planes(z[valid][::16])
+        keep = valid & (full > 0) & (fconf >= MIN_CONFIDENCE)
+        for p in self.planes:  # a table's pixels at an object's foot are not the object
+            keep &= np.abs(z - p) > 0.01
+        jump = depth_edges(depth, self.edge)
+        out: list[Detection] = []
+        for k in np.unique(full[keep]).tolist():
+            labels, _ = ndimage.label(keep & (full == k) & ~jump)
+            # (slice, local mask) of each region big enough, worked on inside its box
+            parts = [
+                (sl, labels[sl] == i)
+                for i, sl in enumerate(ndimage.find_objects(labels), start=1)
+                if sl is not None
+            ]
+            parts = [(sl, m) for sl, m in parts if int(m.sum()) >= MIN_PIXELS]
+            if CLASSES[k] == "person":
+                masks = [_full(depth.shape, sl, m) for sl, m in parts]
+            else:
+                masks = self._objects(CLASSES[k], parts, pts, depth.shape)
+            kind, label = ("human", "person") if CLASSES[k] == "person" else ("object", CLASSES[k])
+            for mask in masks:
+                score = float(fconf[mask].mean())
+                out.append(Detection(kind, label, mask, score, box_of(mask)))
+        return out
+
+    def _objects(
+        self,
+        category: str,
+        parts: list[tuple[tuple[slice, ...], Mask]],
+        pts: F64,
+        shape: tuple[int, ...],
+    ) -> list[Mask]:
+        """One class's regions as objects: fragments of one object (split by a highlight or
+        something thin in front) merged — centres closer than the category's diameter — and
+        what cannot be such an object dropped: wider or taller than its known cylinder (+3 cm),
+        not standing on a support plane (its lowest point more than 12 cm above the plane
+        below it, or below every plane), or centred on a registered arm's base."""
+        r, hgt = CATEGORY_CYLINDERS.get(category, (0.15, 0.3))
+        clouds = [pts[sl][m] for sl, m in parts]
+        centres = [c.mean(axis=0) for c in clouds]
+        group = list(range(len(parts)))
+
+        def root(i: int) -> int:
+            while group[i] != i:
+                i = group[i]
+            return i
+
+        for i in range(len(parts)):
+            for j in range(i):
+                if math.dist(centres[i][:2], centres[j][:2]) < 2 * r + 0.02:
+                    group[root(i)] = root(j)
+        out: list[Mask] = []
+        for g in sorted({root(i) for i in range(len(parts))}):
+            members = [i for i in range(len(parts)) if root(i) == g]
+            # the merged fragments if they make a plausible object, else each fragment alone
+            # (a piece of an arm's base next to the object must not sink it)
+            tries = [members] if len(members) == 1 else [members] + [[i] for i in members]
+            for group_ in tries:
+                q = np.concatenate([clouds[i] for i in group_])
+                if self._plausible(q, r, hgt):
+                    mask = np.zeros(shape, dtype=bool)
+                    for i in group_:
+                        mask[parts[i][0]] |= parts[i][1]
+                    out.append(mask)
+                    if group_ is members:
+                        break
+        return out
+
+    def _plausible(self, q: F64, r: float, hgt: float) -> bool:
+        span = np.ptp(q, axis=0)
+        if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
+            return False
+        zmin = float(q[:, 2].min())
+        below = [p for p in self.planes if p <= zmin + 0.01]
+        if not below or zmin - max(below) > 0.12:
+            return False
+        c = q.mean(axis=0)
+        return self.scene is None or all(
+            math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) >= BASE_CLEARANCE
+            for rb in self.scene.robots
+        )
+
+
+def _full(shape: tuple[int, ...], sl: tuple[slice, ...], local: Mask) -> Mask:
+    mask = np.zeros(shape, dtype=bool)
+    mask[sl] = local
+    return mask
+
+
+# -- training --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class TrainResult:
+    path: Path
+    images: int
+    epochs: int
+    train_loss: float
+    val_iou: dict[str, float]  # per class, on the validation images
+    seconds: float
+
+
+def downsample_labels(labels: npt.NDArray[np.uint8]) -> npt.NDArray[np.int64]:
+    """Class of each 2×2 block: its top-left pixel (the pixel whose depth the input carries)."""
+    h2, w2 = labels.shape[0] // 2, labels.shape[1] // 2
+    out: npt.NDArray[np.int64] = labels[: 2 * h2 : 2, : 2 * w2 : 2].astype(np.int64)
+    return out
+
+
+def train(
+    samples: Sequence[tuple[F32, npt.NDArray[np.int64]]],
+    out: str | Path,
+    *,
+    seed: int = 0,
+    epochs: int = 30,
+    crop: int = 112,
+    command: str = "",
+    progress: Callable[[str, float], None] | None = None,
+) -> TrainResult:
+    """Train on (input, half-resolution labels) pairs (10 % held out for validation) with
+    random crops centred on an object pixel two times in three, horizontal flips, and
+    cross-entropy weighted toward the rare object classes; write the weights to ``out``."""
+    torch = _torch()
+    t0 = time.perf_counter()
+    torch.manual_seed(seed)
+    rng = np.random.default_rng(seed)
+    n = len(samples)
+    order = rng.permutation(n)
+    n_val = max(1, n // 10) if n > 1 else 0
+    val_idx, tr_idx = order[:n_val], order[n_val:]
+    if len(tr_idx) == 0:
+        tr_idx = order
+    net = _build(torch)
+    opt = torch.optim.Adam(net.parameters(), lr=3e-3)
+    steps_per_epoch = max(1, len(tr_idx) // 8)
+    sched = torch.optim.lr_scheduler.OneCycleLR(
+        opt, max_lr=3e-3, total_steps=epochs * steps_per_epoch
+    )
+    weight = torch.tensor([1.0, 2.0] + [6.0] * (len(CLASSES) - 2))
+    loss_fn = torch.nn.CrossEntropyLoss(weight=weight)
+
+    def crop_of(i: int) -> tuple[F32, npt.NDArray[np.int64]]:
+        x, y = samples[i]
+        h, w = y.shape
+        c = min(crop, h, w)
+        objs = np.argwhere(y >= 2)
+        if len(objs) and rng.random() < 2 / 3:
+            cv, cu = objs[rng.integers(len(objs))]
+            v0 = int(np.clip(cv - c // 2 + rng.integers(-c // 4, c // 4 + 1), 0, h - c))
+            u0 = int(np.clip(cu - c // 2 + rng.integers(-c // 4, c // 4 + 1), 0, w - c))
+        else:
+            v0, u0 = int(rng.integers(0, h - c + 1)), int(rng.integers(0, w - c + 1))
+        xs, ys = x[:, v0 : v0 + c, u0 : u0 + c], y[v0 : v0 + c, u0 : u0 + c]
+        if rng.random() < 0.5:
+            xs, ys = xs[:, :, ::-1], ys[:, ::-1]
+        # colour jitter: brightness and contrast of the RGB channels (lighting varies)
+        xs = xs.copy()
+        xs[:3] = (xs[:3] + 0.5) * rng.uniform(0.8, 1.2) + rng.uniform(-0.08, 0.08) - 0.5
+        return xs, np.ascontiguousarray(ys)
+
+    train_loss = math.nan
+    for epoch in range(epochs):
+        net.train()
+        perm = rng.permutation(tr_idx)
+        total, count = 0.0, 0
+        for s in range(steps_per_epoch):
+            batch = perm[s * 8 : s * 8 + 8]
+            if len(batch) == 0:
+                batch = perm[:8]
+            pairs = [crop_of(int(i)) for i in batch]
+            xb = torch.from_numpy(np.stack([p[0] for p in pairs]))
+            yb = torch.from_numpy(np.stack([p[1] for p in pairs]))
+            loss = loss_fn(net(xb), yb)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            sched.step()
+            total += float(loss.detach()) * len(batch)
+            count += len(batch)
+        train_loss = total / max(count, 1)
+        if progress:
+            progress("training", (epoch + 1) / epochs)
+    net.eval()
+    inter = np.zeros(len(CLASSES))
+    union = np.zeros(len(CLASSES))
+    with torch.no_grad():
+        for i in val_idx:
+            x, y = samples[int(i)]
+            pred = net(torch.from_numpy(x[None])).argmax(dim=1)[0].numpy()
+            for k in range(len(CLASSES)):
+                inter[k] += np.sum((pred == k) & (y == k))
+                union[k] += np.sum((pred == k) | (y == k))
+    val_iou = {
+        CLASSES[k]: round(float(inter[k] / union[k]), 4) for k in range(len(CLASSES)) if union[k]
+    }
+    meta = {
+        "command": command,
+        "seed": seed,
+        "epochs": epochs,
+        "images": n,
+        "crop": crop,
+        "classes": list(CLASSES),
+        "widths": list(WIDTHS),
+        "train_loss": round(train_loss, 5),
+        "val_iou": val_iou,
+        "torch": str(torch.__version__),
+    }
+    path = Path(out)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    # float16 storage halves the file; the network runs in float32
+    state = {k: v.detach().numpy().astype(np.float16) for k, v in net.state_dict().items()}
+    with path.open("wb") as fh:
+        np.savez_compressed(fh, meta=np.array(json.dumps(meta)), **state)
+    _MODELS.pop(path, None)
+    return TrainResult(path, n, epochs, train_loss, val_iou, time.perf_counter() - t0)
