@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import importlib.util
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -89,9 +91,11 @@ def test_summary_and_table() -> None:
         ("hltl", 2, 50.0, (10.0, 0.0)),
         ("greedy", 1, 0.0, None),
     ]
-    table = format_t16(rows)
+    assert "not run" not in format_t16(rows)
+    table = format_t16(rows, {"smart-llm": "no LLM configured"})
     assert "| T1 | hltl | 2 | 50 | 10.00 ± 0.00 | 2.00 ± 2.83 |" in table
-    assert "| T1 | Greedy-R | 1 | 0 | – |" in table and "not run" in table
+    assert "| T1 | Greedy-R | 1 | 0 | – |" in table
+    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured | – | – |" in table
 
 
 @needs_mujoco
@@ -106,17 +110,52 @@ def test_t2_walk_starts_during_the_hand_over_and_both_methods_run() -> None:
         assert r.goals_met and r.time_cost is not None, r
 
 
+def _answer(script: str) -> Callable[[list[dict[str, str]]], dict[str, Any]]:
+    """A chat function answering every query with ``script`` (an OpenAI-shaped response)."""
+
+    def chat(messages: list[dict[str, str]]) -> dict[str, Any]:
+        return {
+            "choices": [{"message": {"content": f"```python\n{script}\n```"}}],
+            "usage": {"prompt_tokens": 800, "completion_tokens": 60},
+        }
+
+    return chat
+
+
 @needs_mujoco
-def test_cli_writes_section_and_figure(tmp_path: Path) -> None:
+def test_smart_llm_runs_on_a_scenario_when_an_llm_answers() -> None:
+    """T1 with a recorded answer: the distant chips go r2 → r1 → A; a script that does not
+    parse fails the trial (the code path an endpoint would take)."""
+    t = make_task("T1", 0, timing="cost")
+    relay = (
+        'pick("r2", "chips")\nhandover_r2r("r2", "r1", "chips")\nhandover_r2h("r1", "chips", "A")'
+    )
+    good = run_task(t, "smart-llm", timing="cost", chat=_answer(relay))
+    assert good.success and good.time_cost is not None and good.method == "smart-llm", good
+    broken = run_task(t, "smart-llm", timing="cost", chat=_answer("for o in x\n    pick(o)"))
+    assert not broken.success and "not executable" in broken.reason
+
+
+@needs_mujoco
+def test_cli_writes_section_and_figure(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    for var in ("HLTL_LLM_BASE_URL", "HLTL_LLM_CONFIG", "HLTL_LOCAL_MODEL"):
+        monkeypatch.delenv(var, raising=False)
+    monkeypatch.setattr("hltl.bench.baselines.smart_llm.DEFAULT_CONFIG_PATH", tmp_path / "none")
     out, fig = tmp_path / "b.md", tmp_path / "figures" / "t16.png"
     argv = ["bench", "realworld", "--trials", "1", "--tasks", "T1", "--jobs", "1"]
     assert main([*argv, "--timing", "cost", "--write", str(out), "--figure", str(fig)]) == 0
     text = out.read_text()
     assert "<!-- realworld:begin -->" in text and WORDING["T1"] in text
+    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured" in text
     assert fig.stat().st_size > 1000
 
 
-def test_cli_rejects_unknown_tasks(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["bench", "realworld", "--tasks", "T1,T7"]) == 1
+@pytest.mark.parametrize(
+    ("argv", "bad"), [(["--tasks", "T1,T7"], "T7"), (["--methods", "hltl,gpt"], "'gpt'")]
+)
+def test_cli_rejects_unknown_tasks_and_methods(
+    capsys: pytest.CaptureFixture[str], argv: list[str], bad: str
+) -> None:
+    assert main(["bench", "realworld", *argv]) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and err[0].startswith("error: ") and "T7" in err[0]
+    assert len(err) == 1 and err[0].startswith("error: ") and bad in err[0]

@@ -15,6 +15,8 @@ from typing import Any
 
 from hltl.bench.baselines.greedy import GreedyPolicy
 from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
+from hltl.bench.baselines.policy import Policy
+from hltl.bench.baselines.smart_llm import ChatFn, SmartLLMPolicy
 from hltl.errors import BackendUnavailableError, HltlError
 from hltl.execution.log import REPLANS, ActionDone, ActionStart, EpisodeEnd, LogRecord
 from hltl.grounding.offline import OfflineGrounder
@@ -43,7 +45,7 @@ WORDING = {
     "switching their positions during the task, leading to combined challenges of dynamic "
     "adaptation and multi-task coordination (Q2, Q3, Q4).",
 }
-METHODS3D = ("hltl", "greedy")
+METHODS3D = ("hltl", "greedy", "smart-llm")
 MAX_REPLANS = 3  # the paper: trials exceeding 3 replans are failures
 ROUTINE = frozenset({"initial", "progress", "script_end"})
 WALK_SPEED = 1.0
@@ -209,12 +211,19 @@ def _replans(records: Sequence[LogRecord]) -> int:
 
 
 def run_task(
-    task: Task3D, method: str, *, timing: str = "motion", max_time: float = 60.0
+    task: Task3D,
+    method: str,
+    *,
+    timing: str = "motion",
+    max_time: float = 60.0,
+    chat: ChatFn | None = None,
 ) -> Result3D:
-    """Run ``method`` (hltl or greedy) on one trial in the MuJoCo simulator.
+    """Run ``method`` (hltl, greedy or smart-llm) on one trial in the MuJoCo simulator;
+    SMART-LLM-R asks ``chat`` (default: the configured LLM endpoint).
 
     Raises:
-        BackendUnavailableError: MuJoCo (extra ``sim3d``) is not installed.
+        BackendUnavailableError: MuJoCo (extra ``sim3d``) is not installed, or SMART-LLM-R has
+            no LLM configured.
     """
     sim = _simulator(task.scene, timing)
     t0 = time.perf_counter()
@@ -229,9 +238,10 @@ def run_task(
             simulator=sim,
         )
         records, m = ep.records, ep.metrics
-    elif method == "greedy":
+    elif method in ("greedy", "smart-llm"):
+        policy: Policy = GreedyPolicy() if method == "greedy" else SmartLLMPolicy(chat=chat)
         bep = run_baseline_episode(
-            GreedyPolicy(),
+            policy,
             task.scene,
             task.instruction,
             events=task.events,
@@ -330,11 +340,12 @@ def summarise3d(results: Sequence[Result3D]) -> list[Summary3D]:
     return out
 
 
-LABELS = {"hltl": "hltl", "greedy": "Greedy-R"}
+LABELS = {"hltl": "hltl", "greedy": "Greedy-R", "smart-llm": "SMART-LLM-R"}
 
 
-def format_t16(rows: Sequence[Summary3D]) -> str:
-    """The T1–T6 table: per scenario, each method's success, execution time and replans."""
+def format_t16(rows: Sequence[Summary3D], not_run: dict[str, str] | None = None) -> str:
+    """The T1–T6 table: per scenario, each method's success, execution time and replans;
+    ``not_run`` names methods that could not run, with why (SMART-LLM-R without an LLM)."""
     lines = [
         "| task | method | trials | success % | execution time s (mean ± std) "
         "| replans (mean ± std) |",
@@ -346,7 +357,8 @@ def format_t16(rows: Sequence[Summary3D]) -> str:
             f"| {s.task} | {LABELS.get(s.method, s.method)} | {s.n} | {s.success:.0f} | "
             f"{time_s} | {s.replans[0]:.2f} ± {s.replans[1]:.2f} |"
         )
-    lines.append("| T1–T6 | SMART-LLM-R | – | not run | – | – |")
+    for m, why in (not_run or {}).items():
+        lines.append(f"| T1–T6 | {LABELS.get(m, m)} | – | not run: {why} | – | – |")
     return "\n".join(lines)
 
 
@@ -368,7 +380,7 @@ def plot_t16(rows: Sequence[Summary3D], path: Path) -> Path:
     cell = {(s.task, s.method): s for s in rows}
     fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
     width = 0.8 / max(1, len(methods))
-    colours = {"hltl": "#4477AA", "greedy": "#EE6677"}
+    colours = {"hltl": "#4477AA", "greedy": "#EE6677", "smart-llm": "#228833"}
     for k, m in enumerate(methods):
         xs = [i + (k - (len(methods) - 1) / 2) * width for i in range(len(tasks))]
         succ = [cell[t, m].success if (t, m) in cell else 0.0 for t in tasks]

@@ -24,6 +24,7 @@ from rich.progress import (
 from rich.table import Table
 
 from hltl.bench import report
+from hltl.bench.baselines.smart_llm import llm_unavailable
 from hltl.bench.cells import (
     CELL_LAYOUTS,
     FAMILIES,
@@ -46,7 +47,15 @@ from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.motion import bench_motion, format_motion
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
-from hltl.bench.realworld import TASKS, WORDING, format_t16, plot_t16, run_all, summarise3d
+from hltl.bench.realworld import (
+    METHODS3D,
+    TASKS,
+    WORDING,
+    format_t16,
+    plot_t16,
+    run_all,
+    summarise3d,
+)
 from hltl.bench.replan import ReplanRow, bench_replan, format_rows, replan_configs, replan_section
 from hltl.bench.sim3d import bench_sim3d, format_sim3d
 from hltl.bench.soak import SoakResult, run_soak, soak_jobs, summary
@@ -217,6 +226,12 @@ def register(sub: Any) -> None:
     rw.add_argument("--tasks", default=",".join(TASKS), help="comma-separated tasks (T1..T6)")
     rw.add_argument("--jobs", type=int, default=2, help="worker processes")
     rw.add_argument("--seed", type=int, default=0, help="seed of the variations")
+    rw.add_argument(
+        "--methods",
+        default=",".join(METHODS3D),
+        help="comma-separated methods (hltl, greedy, smart-llm; smart-llm runs only with an LLM "
+        "configured, else it is reported not run)",
+    )
     rw.add_argument(
         "--timing",
         choices=("motion", "cost"),
@@ -775,19 +790,31 @@ def run_realworld_cmd(args: argparse.Namespace) -> int:
             raise HltlError(f"--tasks: unknown task {t[:20]!r}; expected some of {','.join(TASKS)}")
     if args.trials < 1 or args.jobs < 1:
         raise HltlError("--trials and --jobs must be at least 1")
+    methods = [m.strip() for m in args.methods.split(",") if m.strip()]
+    for m in methods:
+        if m not in METHODS3D:
+            raise HltlError(
+                f"--methods: unknown method {m[:20]!r}; expected some of {','.join(METHODS3D)}"
+            )
+    not_run: dict[str, str] = {}
+    if "smart-llm" in methods and (why := llm_unavailable()) is not None:
+        not_run["smart-llm"] = why  # reported, never estimated
+    run_methods = [m for m in methods if m not in not_run]
     command = (
         f"hltl bench realworld --trials {args.trials} --jobs {args.jobs} --seed {args.seed}"
         + (f" --tasks {','.join(tasks)}" if tasks != list(TASKS) else "")
+        + (f" --methods {','.join(methods)}" if methods != list(METHODS3D) else "")
         + (f" --timing {args.timing}" if args.timing != "motion" else "")
         + (f" --write {shlex.quote(str(args.write))}" if args.write else "")
         + (f" --figure {shlex.quote(str(args.figure))}" if args.figure else "")
     )
     with _progress("hltl bench realworld") as progress:
-        task = progress.add_task("", total=len(tasks) * args.trials * 2)
+        task = progress.add_task("", total=len(tasks) * args.trials * len(run_methods))
         t0 = time.perf_counter()
         results = run_all(
             args.trials,
             tasks=tasks,
+            methods=run_methods,
             seed=args.seed,
             jobs=args.jobs,
             timing=args.timing,
@@ -797,7 +824,7 @@ def run_realworld_cmd(args: argparse.Namespace) -> int:
         )
         wall = time.perf_counter() - t0
     rows = summarise3d(results)
-    table = format_t16(rows)
+    table = format_t16(rows, not_run)
     print(table)
     if args.json is not None:
         write_output(args.json, "the results", json.dumps([asdict(r) for r in results], indent=1))
