@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
+from hltl.bench.pmp import DEFAULT_PMP, load_pmp_latency, write_pmp_latency
 from hltl.bench.suite import AblationOptions
 from hltl.cli.main import main
 from hltl.execution.latency import load_latency_model
@@ -35,6 +37,7 @@ def test_latency_measures_and_writes_a_loadable_model(tmp_path: Path) -> None:
         (["bench", "ablation", "--trials", "1", "--variants", "full,warp"], "warp"),
         (["bench", "ablation", "--trials", "1", "--latency-model", "/nonexistent.json"], "latency"),
         (["bench", "ablation", "--trials", "1", "--plan-latency", "-1"], "--plan-latency"),
+        (["bench", "pmp", "--workers", "1"], "--workers"),
     ],
 )
 def test_bad_options_are_one_error_line(
@@ -48,5 +51,37 @@ def test_a_constant_latency_is_still_available_for_comparison() -> None:
     opts = AblationOptions(trials=1, plan_latency=0.2, variants_text="full,no-pmp")
     full, serial = opts.variants()
     assert full.latency is None and full.plan_latency == 0.2
-    assert serial.plan_latency == pytest.approx(0.6)
+    assert serial.plan_latency == 0.2  # the planner is the same; its motion is serial
     assert "--plan-latency 0.2" in opts.command()
+
+
+def test_no_pmp_charges_the_serial_candidate_planner(tmp_path: Path) -> None:
+    pmp = load_pmp_latency(DEFAULT_PMP)
+    assert pmp.source.startswith("`hltl bench pmp") and pmp.candidates >= 8
+    assert pmp.serial_cpu_s > 0 and pmp.parallel_s > 0
+    opts = AblationOptions(trials=1, variants_text="full,no-pp,no-pmp")
+    full, no_pp, no_pmp = opts.variants()
+    assert full.r2r_motion_s == no_pp.r2r_motion_s == pmp.parallel_s
+    assert no_pmp.r2r_motion_s == pmp.serial_s
+    assert full.latency == no_pmp.latency and no_pmp.predict
+    # another measurement file, named in the command
+    other = tmp_path / "pmp.json"
+    write_pmp_latency(other, replace(pmp, serial_s=2.0, parallel_s=1.0))
+    opts = AblationOptions(trials=1, variants_text="full,no-pmp", pmp_latency=other)
+    assert [v.r2r_motion_s for v in opts.variants()] == [1.0, 2.0]
+    assert f"--pmp-latency {other}" in opts.command()
+
+
+@pytest.mark.parametrize(
+    ("text", "needle"),
+    [("{", "cannot read"), ("[]", "expected a JSON object"), ('{"x": 1}', "unknown keys")],
+)
+def test_bad_pmp_files_are_one_error_line(
+    tmp_path: Path, text: str, needle: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    bad = tmp_path / "pmp.json"
+    bad.write_text(text)
+    argv = ["bench", "ablation", "--trials", "1", "--pmp-latency", str(bad)]
+    assert main(argv) == 1
+    line = _error_line(capsys)
+    assert needle in line and "P.M.P. latency" in line

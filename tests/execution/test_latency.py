@@ -170,3 +170,35 @@ def test_anticipation_needs_prediction_and_valid_votes() -> None:
         ExecutorConfig(anticipate_votes=1.5)
     ep = _episode("2-4-line", 2, anticipate=True, predict=False)
     assert not [r for r in ep.records if r.type == "anticipate"]
+
+
+def test_motion_planning_is_added_to_the_call_and_pipelined_with_it() -> None:
+    # 0.3 + 0.01·10 for the planner, 0.5 for the first step's robot-to-robot hand-over
+    assert planner_charge(MODEL, "goal", 10, 0.0, 2.0, motion_s=0.5) == (
+        pytest.approx(0.9),
+        "critical",
+    )
+    assert planner_charge(MODEL, "progress", 10, 0.0, 0.7, motion_s=0.5) == (
+        pytest.approx(0.2),
+        "pipelined",
+    )
+    assert takeover_charge(MODEL, 0, 0.0, since=0.5, motion_s=0.5) == pytest.approx(0.3)
+    with pytest.raises(ValueError, match="r2r_motion_s"):
+        ExecutorConfig(r2r_motion_s=-1.0)
+
+
+def test_first_step_robot_handovers_pay_their_motion_planning() -> None:
+    plain = _episode("2-2", 2, latency=MODEL)
+    motion = _episode("2-2", 2, latency=MODEL, r2r_motion_s=0.5)
+    charged = 0
+    for r in motion.records:
+        if r.type != "replan" or r.source != "planner":
+            continue
+        first = r.steps[0]["actions"] if r.steps else []
+        n = sum(a["skill"] == "handover_r2r" for a in first)
+        if r.charge == "critical":
+            assert r.charged_s == pytest.approx(0.3 + 0.01 * r.expanded + 0.5 * n, abs=1e-6)
+        charged += n * (r.charged_s > 0)
+    assert charged >= 1  # this trial hands over between robots after a short step
+    assert motion.metrics.time_cost is not None and plain.metrics.time_cost is not None
+    assert motion.metrics.time_cost > plain.metrics.time_cost

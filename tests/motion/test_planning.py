@@ -147,6 +147,4 @@ def test_run_with_motion_completes_fig1(fig1_cell: Any, capsys: pytest.CaptureFi
     assert code == 0 and metrics["success"] and metrics["deliveries"] == 2
     # durations come from motion plans, not the scene's fixed 0.5 s per skill
     assert metrics["time_cost"] > 2.0
-    code = main(["run", "--scene", scene, "--spec", spec, "--motion", "--sim", "mujoco"])
-    assert code == 1
-    assert "drop --sim mujoco" in capsys.readouterr().err
+    # with --sim mujoco as well: tests/sim3d/test_motion_mujoco.py

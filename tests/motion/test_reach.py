@@ -6,6 +6,7 @@ import os
 from typing import Any
 
 import numpy as np
+import pytest
 
 from hltl.motion.kinematics import Arm
 from hltl.motion.reach import _cache_file, load_or_build
@@ -21,6 +22,8 @@ def test_maps_are_cached_by_model_hash(coarse_maps: dict[str, Any]) -> None:
     again = load_or_build("elfin3", 0.1)
     assert np.array_equal(again.reachable, coarse_maps["elfin3"].reachable)
     assert again.profile is not None
+    assert again.fine is not None and coarse_maps["elfin3"].fine is not None
+    assert len(again.fine) > 0 and np.array_equal(again.fine, coarse_maps["elfin3"].fine)
 
 
 def test_map_agrees_with_ik_on_random_probes(coarse_maps: dict[str, Any]) -> None:
@@ -74,3 +77,35 @@ def test_robots_without_a_model_keep_the_sphere(coarse_maps: dict[str, Any]) -> 
     assert kin.reaches(a, (0.45, 0.0, 0.0)) and not kin.reaches(a, (0.55, 0.0, 0.0))
     assert kin.can_meet(a, b)
     assert kin.rendezvous_point(a, b)[0] == 0.4
+
+
+def test_refined_boundary_cells_answer_from_their_fine_grid() -> None:
+    from hltl.motion.reach import REFINE, ReachMap
+
+    n = REFINE
+    prof = np.zeros((3, 3), dtype=bool)
+    prof[0, :] = True  # reachable at radius 0, not beyond: every cell of column 0 is a boundary
+    fine = np.zeros((1, n + 1, n + 1), dtype=bool)
+    fine[0, :n, :] = True  # the fine grid says the boundary lies one fine step before radius h
+    h = 0.1
+    m = ReachMap(
+        "x",
+        "",
+        (0.0, 0.0, 0.0),
+        h,
+        np.zeros((1, 1, 1), dtype=bool),
+        prof,
+        0.0,
+        h,
+        np.array([[0, 0]]),
+        fine,
+    )
+    # inside the refined cell (0, 0): fine values; the neighbouring unrefined cell (0, 1): coarse
+    step = h / n
+    radius = (n - 1) * step + 0.25 * step  # a quarter fine step past the last reachable point
+    assert m.occupancy(np.array([[radius, 0.0, 0.5 * h]]))[0] == pytest.approx(0.75)
+    coarse = radius / h  # bilinear on the coarse profile: 1 - u
+    assert m.occupancy(np.array([[radius, 0.0, 1.5 * h]]))[0] == pytest.approx(1.0 - coarse)
+    # the fine grid's corners are the coarse points, so the two agree on the cell's corners
+    corners = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, h], [h, 0.0, 0.0]])
+    assert np.allclose(m.occupancy(corners), [1.0, 1.0, 0.0])

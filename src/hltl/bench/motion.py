@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import statistics
 import time
 from collections.abc import Callable, Sequence
@@ -10,6 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
+from hltl.bench.pmp import PmpLatency
+from hltl.errors import HltlError
 from hltl.motion.handover import optimise_r2r
 from hltl.motion.kinematics import Arm
 from hltl.motion.planning import CandidatePlanner, Cell, plan_action, r2r_candidates
@@ -138,20 +141,12 @@ def bench_planning(runs: int, candidates: Sequence[int], workers: int) -> list[T
         ms = _median_ms(lambda a=act: plan_action(cell, a, k=2), runs)  # type: ignore[misc]
         rows.append(TimingRow(f"skill motion plan, serial: {act}", runs, *ms, note))
     for k in candidates:
-        cands = r2r_candidates(cell, handover, {}, k=k)
-        serial = CandidatePlanner(cell)
-        ms_s = _median_ms(
-            lambda c=cands, s=serial: s.plan(handover, {}, c),  # type: ignore[misc]
-            runs,
-        )
-        rows.append(TimingRow(f"P.M.P. {len(cands)} candidates, serial", runs, *ms_s, "best of k"))
-        if workers > 1:
-            with CandidatePlanner(cell, workers=workers) as pool:
-                pool.warm_up()
-                ms_p = _median_ms(lambda c=cands: pool.plan(handover, {}, c), runs)  # type: ignore[misc]
+        n, ms_s, ms_p = _pmp_timings(cell, handover, k, workers, runs)
+        rows.append(TimingRow(f"P.M.P. {n} candidates, serial", runs, *ms_s, "best of k"))
+        if ms_p is not None:
             rows.append(
                 TimingRow(
-                    f"P.M.P. {len(cands)} candidates, {workers} processes",
+                    f"P.M.P. {n} candidates, {workers} processes",
                     runs,
                     ms_p[0],
                     ms_p[1],
@@ -159,6 +154,43 @@ def bench_planning(runs: int, candidates: Sequence[int], workers: int) -> list[T
                 )
             )
     return rows
+
+
+def _pmp_timings(
+    cell: Cell, handover: Action, k: int, workers: int, runs: int
+) -> tuple[int, tuple[float, float], tuple[float, float] | None]:
+    """(candidates, serial (wall, CPU) ms, parallel (wall, parent CPU) ms or None) of the
+    candidate planner on ``handover``'s best ``k`` candidates."""
+    cands = r2r_candidates(cell, handover, {}, k=k)
+    serial = CandidatePlanner(cell)
+    ms_s = _median_ms(lambda: serial.plan(handover, {}, cands), runs)
+    if workers < 2:
+        return len(cands), ms_s, None
+    with CandidatePlanner(cell, workers=workers) as pool:
+        pool.warm_up()
+        ms_p = _median_ms(lambda: pool.plan(handover, {}, cands), runs)
+    return len(cands), ms_s, ms_p
+
+
+def measure_pmp(candidates: int, workers: int, runs: int, source: str) -> PmpLatency:
+    """Serial against parallel candidate planning of the Fig. 1 robot-to-robot handover: the
+    latencies the Table III ablation charges (docs/evaluation.md)."""
+    if workers < 2:
+        raise HltlError("--workers must be at least 2 (a pool against the serial planner)")
+    cell = Cell(load_scene(FIG1))
+    handover = Action("handover_r2r", ("r1", "r2"), "bottle")
+    n, ms_s, ms_p = _pmp_timings(cell, handover, candidates, workers, runs)
+    assert ms_p is not None
+    return PmpLatency(
+        candidates=n,
+        workers=workers,
+        serial_s=round(ms_s[0] / 1000.0, 4),
+        parallel_s=round(ms_p[0] / 1000.0, 4),
+        serial_cpu_s=round(ms_s[1] / 1000.0, 4),
+        runs=runs,
+        load=round(os.getloadavg()[0], 2),
+        source=source,
+    )
 
 
 def bench_motion(

@@ -18,6 +18,7 @@ from hltl.bench.baselines.pddl import fd_unavailable, solve
 from hltl.bench.baselines.policy import Policy
 from hltl.bench.baselines.smart_llm import SmartLLMPolicy, llm_unavailable
 from hltl.bench.latency import DEFAULT_MODEL as DEFAULT_LATENCY_MODEL
+from hltl.bench.pmp import DEFAULT_PMP, PmpLatency, load_pmp_latency
 from hltl.bench.sweep import SweepExecutor
 from hltl.errors import HltlError
 from hltl.execution.executor import ExecutorConfig
@@ -126,6 +127,9 @@ class Variant:
         plan_latency: a constant charged on every planner call (used only without
             ``latency``).
         latency: computation charged where it occurs (:mod:`hltl.execution.latency`).
+        r2r_motion_s: motion planning charged per robot-to-robot handover in a new plan's first
+            step (``ExecutorConfig.r2r_motion_s``): the parallel candidate planner's measured
+            latency, the serial one's for ``no-pmp``.
         predictor: ``cv``, ``goal`` or ``gru`` (:func:`hltl.perception.predict.make_predictor`).
         anticipate: anticipatory execution.
     """
@@ -136,6 +140,7 @@ class Variant:
     latency: LatencyModel | None = None
     predictor: str = "cv"
     anticipate: bool = False
+    r2r_motion_s: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -239,6 +244,7 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
             predict=v.predict,
             plan_latency=v.plan_latency,
             latency=v.latency,
+            r2r_motion_s=v.r2r_motion_s,
             anticipate=v.anticipate,
         ),
     )
@@ -590,7 +596,10 @@ class AblationOptions:
 
     ``plan_latency`` None charges the latency model (``latency_model``, default the shipped
     measurement) where computation occurs; a number charges that constant on every planner
-    call instead (the old, assumed model, kept for comparison).
+    call instead (the old, assumed model, kept for comparison). Either way each robot-to-robot
+    handover in a new plan's first step adds the motion layer's measured candidate-planning
+    latency (``pmp_latency``, default the shipped ``hltl bench pmp`` measurement): parallel,
+    or serial for ``no-pmp``.
     """
 
     trials: int = 20
@@ -598,7 +607,7 @@ class AblationOptions:
     jobs: int = 2
     seed: int = 0
     plan_latency: float | None = None
-    serial_factor: float = 3.0
+    pmp_latency: Path | None = None
     latency_model: Path | None = None
     variants_text: str = ",".join(ABLATION_VARIANTS)
     walks: str = "random"
@@ -610,8 +619,8 @@ class AblationOptions:
         if self.trials < 1 or self.jobs < 1:
             raise HltlError("--trials and --jobs must be at least 1")
         SweepExecutor.parse(self.executor)
-        if (self.plan_latency is not None and self.plan_latency < 0) or self.serial_factor < 1:
-            raise HltlError("--plan-latency must be >= 0 and --serial-factor >= 1")
+        if self.plan_latency is not None and self.plan_latency < 0:
+            raise HltlError("--plan-latency must be >= 0")
         _check_walks(self.walks)
         for name in self.variant_names:
             if name not in ABLATION_VARIANTS:
@@ -632,19 +641,28 @@ class AblationOptions:
             self.latency_model if self.latency_model is not None else DEFAULT_LATENCY_MODEL
         )
 
+    def pmp(self) -> PmpLatency:
+        """The candidate-planning latencies charged for robot-to-robot handovers."""
+        return load_pmp_latency(self.pmp_latency if self.pmp_latency is not None else DEFAULT_PMP)
+
     def variants(self) -> list[Variant]:
-        """Table III's rows: full, without predictive planning, serial replanning, and the
-        predictor / anticipatory-execution rows (docs/evaluation.md#ablations)."""
+        """Table III's rows: full, without predictive planning, serial candidate planning, and
+        the predictor / anticipatory-execution rows (docs/evaluation.md#ablations)."""
         lat = self.latency()
         const = 0.0 if self.plan_latency is None else self.plan_latency
-        serial = None if lat is None else lat.scaled(self.serial_factor)
+        pmp = self.pmp()
+        par, ser = pmp.parallel_s, pmp.serial_s
         table = {
-            "full": Variant("full", True, const, lat),
-            "no-pp": Variant("no-pp", False, const, lat),
-            "no-pmp": Variant("no-pmp", True, const * self.serial_factor, serial),
-            "goal": Variant("goal", True, const, lat, "goal"),
-            "antic-goal": Variant("antic-goal", True, const, lat, "goal", anticipate=True),
-            "antic-gru": Variant("antic-gru", True, const, lat, "gru", anticipate=True),
+            "full": Variant("full", True, const, lat, r2r_motion_s=par),
+            "no-pp": Variant("no-pp", False, const, lat, r2r_motion_s=par),
+            "no-pmp": Variant("no-pmp", True, const, lat, r2r_motion_s=ser),
+            "goal": Variant("goal", True, const, lat, "goal", r2r_motion_s=par),
+            "antic-goal": Variant(
+                "antic-goal", True, const, lat, "goal", anticipate=True, r2r_motion_s=par
+            ),
+            "antic-gru": Variant(
+                "antic-gru", True, const, lat, "gru", anticipate=True, r2r_motion_s=par
+            ),
         }
         return [table[n] for n in self.variant_names]
 
@@ -666,7 +684,8 @@ class AblationOptions:
             parts.append(f"--plan-latency {self.plan_latency:g}")
         if self.latency_model is not None:
             parts.append(f"--latency-model {shlex.quote(str(self.latency_model))}")
-        parts.append(f"--serial-factor {self.serial_factor:g}")
+        if self.pmp_latency is not None:
+            parts.append(f"--pmp-latency {shlex.quote(str(self.pmp_latency))}")
         if self.executor != "local":
             parts.append(f"--executor {shlex.quote(self.executor)}")
         if self.walks != "random":

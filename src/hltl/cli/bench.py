@@ -45,8 +45,9 @@ from hltl.bench.grounding import (
 )
 from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
-from hltl.bench.motion import bench_motion, format_motion
+from hltl.bench.motion import bench_motion, format_motion, measure_pmp
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
+from hltl.bench.pmp import write_pmp_latency
 from hltl.bench.realworld import (
     METHODS3D,
     TASKS,
@@ -204,10 +205,11 @@ def register(sub: Any) -> None:
         "shipped measurement)",
     )
     ab.add_argument(
-        "--serial-factor",
-        type=float,
-        default=3.0,
-        help="w/o P.M.P.: the replan latency multiplied by this (candidates computed serially)",
+        "--pmp-latency",
+        type=Path,
+        help="P.M.P. latencies from 'hltl bench pmp --write-model': each robot-to-robot "
+        "handover in a new plan's first step costs the parallel candidate planner's time, "
+        "w/o P.M.P. the serial one's (default: the shipped measurement)",
     )
     ab.add_argument(
         "--variants",
@@ -286,6 +288,17 @@ def register(sub: Any) -> None:
     mo.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
     mo.add_argument("--write", type=Path, help="update this Markdown file's motion section")
     mo.set_defaults(func=run_motion)
+
+    pm = bsub.add_parser(
+        "pmp", help="serial vs parallel candidate planning latency (Table III's w/o P.M.P.)"
+    )
+    pm.add_argument("--candidates", type=int, default=8, help="candidate goal sets per call")
+    pm.add_argument("--workers", type=int, default=2, help="processes of the parallel planner")
+    pm.add_argument("--runs", type=int, default=7, help="calls each median is taken over")
+    pm.add_argument(
+        "--write-model", type=Path, help="write the measurement here (JSON, for the ablation)"
+    )
+    pm.set_defaults(func=run_pmp)
 
     pe = bsub.add_parser(
         "perception", help="trajectory prediction, object localisation, people tracking"
@@ -572,6 +585,25 @@ def run_motion(args: argparse.Namespace) -> int:
     return 0
 
 
+def run_pmp(args: argparse.Namespace) -> int:
+    if args.candidates < 1 or args.runs < 1 or args.workers < 2:
+        raise HltlError("--candidates and --runs must be >= 1, --workers >= 2")
+    parts = [
+        f"hltl bench pmp --candidates {args.candidates} --workers {args.workers} --runs {args.runs}"
+    ]
+    if args.write_model is not None:
+        parts.append(f"--write-model {shlex.quote(str(args.write_model))}")
+    stamp = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    source = f"`{' '.join(parts)}`, {stamp}, {machine()}"
+    rec = measure_pmp(args.candidates, args.workers, args.runs, source)
+    print(rec.describe())
+    print(f"serial CPU {rec.serial_cpu_s * 1e3:.0f} ms per call")
+    if args.write_model is not None:
+        write_pmp_latency(args.write_model, rec)
+        print(f"wrote {args.write_model}", file=sys.stderr)
+    return 0
+
+
 def run_perception(args: argparse.Namespace) -> int:
     return run(args)
 
@@ -701,7 +733,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         jobs=args.jobs,
         seed=args.seed,
         plan_latency=args.plan_latency,
-        serial_factor=args.serial_factor,
+        pmp_latency=args.pmp_latency,
         latency_model=args.latency_model,
         variants_text=args.variants,
         walks=args.walks,
@@ -749,7 +781,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             variants=variants,
             latency=opts.latency(),
             plan_latency=opts.plan_latency,
-            serial_factor=opts.serial_factor,
+            pmp=opts.pmp(),
             groups=groups,
         )
         write_section(opts.write, "ablation", body)

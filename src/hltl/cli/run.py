@@ -89,7 +89,7 @@ def register(sub: Any) -> None:
         "--motion",
         action="store_true",
         help="reach, workspaces and ℓ from the arms' reachability maps, durations from motion "
-        "plans, trajectories handed to the driver (discrete simulator; the motion extra)",
+        "plans, trajectories handed to the driver (either simulator; the motion extra)",
     )
     p.add_argument(
         "--perception",
@@ -142,12 +142,10 @@ def run(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {}
     recorder = None
     if args.sim == "mujoco":
-        if args.motion:
-            raise HltlError("--motion runs with the discrete simulator; drop --sim mujoco")
         extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
     grounder = make_grounder(args.grounder)
     if args.motion:
-        extra = _motion_options(scene, spec, config, predictor)
+        extra.update(_motion_options(scene, spec, config, predictor, extra.get("simulator")))
     bus = None
     if args.bus is None and args.realtime is not None:
         raise HltlError("--realtime runs the cell on a node's clock: add --bus zenoh")
@@ -183,8 +181,11 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _motion_options(scene: Any, spec: Any, config: Any, predictor: Any) -> dict[str, Any]:
-    """``run_episode`` keywords that put the motion layer under the simulator and the executor."""
+def _motion_options(
+    scene: Any, spec: Any, config: Any, predictor: Any, simulator: Any = None
+) -> dict[str, Any]:
+    """``run_episode`` keywords that put the motion layer under the simulator (``simulator``, a
+    factory taking ``cost`` and ``kinematics``, default the discrete one) and the executor."""
     import functools
 
     kinematics, cost = motion_models(scene)
@@ -201,8 +202,9 @@ def _motion_options(scene: Any, spec: Any, config: Any, predictor: Any) -> dict[
             kinematics=kinematics,
         )
 
+    base = Simulator if simulator is None else simulator
     return {
-        "simulator": functools.partial(Simulator, cost=cost, kinematics=kinematics),
+        "simulator": functools.partial(base, cost=cost, kinematics=kinematics),
         "agent": agent,
     }
 

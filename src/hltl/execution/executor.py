@@ -142,6 +142,10 @@ class ExecutorConfig:
             ``latency`` is given.
         latency: charge computation where it occurs, measured per call or from a fitted model
             (:mod:`hltl.execution.latency`); None uses ``plan_latency``.
+        r2r_motion_s: simulated seconds of motion planning charged with a planner call for
+            each robot-to-robot handover in the new plan's first step (its candidate goal sets
+            planned in parallel or serially; :mod:`hltl.execution.latency`). Added to the
+            constant or to the latency model's charge, under the same critical/pipelined rules.
         max_predicted: predicted plans kept for takeover.
         anticipate: anticipatory execution: when a confident forecast changes the context,
             dispatch the first step of the plan for the forecast world if every action of it is
@@ -159,6 +163,7 @@ class ExecutorConfig:
     max_wait: float = 10.0
     plan_latency: float = 0.0
     latency: LatencyModel | None = None
+    r2r_motion_s: float = 0.0
     max_predicted: int = 16
     anticipate: bool = False
     anticipate_votes: float = 0.6
@@ -167,7 +172,7 @@ class ExecutorConfig:
         for name in ("horizon", "predict_dt"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"{name} must be positive, got {getattr(self, name)!r}")
-        for name in ("intrusion_speed", "max_wait", "plan_latency"):
+        for name in ("intrusion_speed", "max_wait", "plan_latency", "r2r_motion_s"):
             if getattr(self, name) < 0:
                 raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
         if self.max_failures < 1:
@@ -743,7 +748,11 @@ class Executor(TickTemplate):
                 0.0
                 if model is None
                 else takeover_charge(
-                    model, pred.result.stats.expanded, pred.wall_s, self.t - pred.at
+                    model,
+                    pred.result.stats.expanded,
+                    pred.wall_s,
+                    self.t - pred.at,
+                    self._motion_charge(pred.result),
                 )
             )
             self.log.emit(
@@ -781,7 +790,9 @@ class Executor(TickTemplate):
             self.scene, self.spec, world=self.world, monitor=self.monitor, q0=self.q
         )
         ms = (time.perf_counter() - t0) * 1000.0
-        charge, basis = self._planner_charge(trigger, result.stats.expanded, ms / 1000.0)
+        charge, basis = self._planner_charge(
+            trigger, result.stats.expanded, ms / 1000.0, self._motion_charge(result)
+        )
         self.log.emit(
             Replan(
                 t=self.t,
@@ -817,12 +828,22 @@ class Executor(TickTemplate):
         self._wait_or_give_up(check_only=True)
         return False
 
-    def _planner_charge(self, trigger: str, expanded: int, wall_s: float) -> tuple[float, str]:
+    def _planner_charge(
+        self, trigger: str, expanded: int, wall_s: float, motion_s: float = 0.0
+    ) -> tuple[float, str]:
         model = self.config.latency
         if model is None:
-            return self.config.plan_latency, "constant"
+            return self.config.plan_latency + motion_s, "constant"
         since = None if self._step_started is None else self.t - self._step_started
-        return planner_charge(model, trigger, expanded, wall_s, since)
+        return planner_charge(model, trigger, expanded, wall_s, since, motion_s)
+
+    def _motion_charge(self, result: PlanResult) -> float:
+        """Motion planning a plan needs before dispatch: its first step's robot-to-robot
+        handovers (ExecutorConfig.r2r_motion_s each)."""
+        if not self.config.r2r_motion_s or not result.steps:
+            return 0.0
+        n = sum(a.skill == "handover_r2r" for a in result.steps[0].actions)
+        return n * self.config.r2r_motion_s
 
     def _adopt(self, result: PlanResult, ctx: Context) -> None:
         self._plan = result
@@ -934,7 +955,11 @@ class Executor(TickTemplate):
         model = self.config.latency
         if model is not None:
             remaining = takeover_charge(
-                model, pred.result.stats.expanded, pred.wall_s, self.t - pred.at
+                model,
+                pred.result.stats.expanded,
+                pred.wall_s,
+                self.t - pred.at,
+                self._motion_charge(pred.result),
             )
             if remaining > 0:  # the background computation is still running
                 self._charge(remaining)

@@ -6,9 +6,11 @@ import json
 import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from hltl.errors import HltlError
+
+T = TypeVar("T")
 
 PIPELINED = frozenset({"progress"})
 
@@ -81,22 +83,27 @@ def planner_charge(
     expanded: int,
     wall_s: float,
     since_step: float | None,
+    motion_s: float = 0.0,
 ) -> tuple[float, str]:
     """(seconds on the critical path, why) for a planner call made for ``trigger``.
 
     ``since_step`` is how long ago the step that just ended was dispatched (None: no step
-    ran before this call); a pipelined call is paid only beyond that.
+    ran before this call); a pipelined call is paid only beyond that. ``motion_s`` is the
+    motion planning the call's plan needs before dispatch, computed with it.
     """
-    cost = model.planner(expanded, wall_s)
+    cost = model.planner(expanded, wall_s) + motion_s
     parts = set(trigger.split("+")) if trigger else set()
     if parts and parts <= PIPELINED and since_step is not None:
         return max(0.0, cost - since_step), "pipelined"
     return cost, "critical"
 
 
-def takeover_charge(model: LatencyModel, expanded: int, wall_s: float, since: float) -> float:
-    """What remains of a predicted plan's computation, started ``since`` seconds ago."""
-    return max(0.0, model.planner(expanded, wall_s) - since)
+def takeover_charge(
+    model: LatencyModel, expanded: int, wall_s: float, since: float, motion_s: float = 0.0
+) -> float:
+    """What remains of a predicted plan's computation (and its motion planning, ``motion_s``),
+    started ``since`` seconds ago."""
+    return max(0.0, model.planner(expanded, wall_s) + motion_s - since)
 
 
 def load_latency_model(path: str | Path) -> LatencyModel:
@@ -105,19 +112,33 @@ def load_latency_model(path: str | Path) -> LatencyModel:
     Raises:
         HltlError: the file is missing, not JSON or not a latency model.
     """
+    return load_record(path, "latency model", LatencyModel, key="model")
+
+
+def load_record(path: str | Path, what: str, cls: type[T], *, key: str | None = None) -> T:
+    """A frozen dataclass ``cls`` from a JSON file (its fields, or under ``key``).
+
+    Raises:
+        HltlError: the file is missing or not JSON, lacks ``key``, has unknown fields, or
+            ``cls`` refuses the values; the message names ``what`` and the file.
+    """
     p = Path(path)
+    name = f"{what} {str(p)[:200]!r}"
     try:
         data = json.loads(p.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise HltlError(f"latency model {str(p)[:200]!r}: cannot read it ({exc})") from exc
-    model = data.get("model") if isinstance(data, dict) else None
-    if not isinstance(model, dict):
-        raise HltlError(f"latency model {str(p)[:200]!r}: expected an object with a 'model' key")
-    fields = set(LatencyModel.__dataclass_fields__)
-    unknown = sorted(set(model) - fields)
+        raise HltlError(f"{name}: cannot read it ({exc})") from exc
+    if key is not None:
+        data = data.get(key) if isinstance(data, dict) else None
+        if not isinstance(data, dict):
+            raise HltlError(f"{name}: expected an object with a {key!r} key")
+    if not isinstance(data, dict):
+        raise HltlError(f"{name}: expected a JSON object")
+    fields: dict[str, Any] = getattr(cls, "__dataclass_fields__", {})
+    unknown = sorted(set(data) - set(fields))
     if unknown:
-        raise HltlError(f"latency model {str(p)[:200]!r}: unknown keys {unknown[:5]}")
+        raise HltlError(f"{name}: unknown keys {unknown[:5]}")
     try:
-        return LatencyModel(**model)
+        return cls(**data)
     except (TypeError, ValueError) as exc:
-        raise HltlError(f"latency model {str(p)[:200]!r}: {exc}") from exc
+        raise HltlError(f"{name}: {exc}") from exc

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -47,7 +48,7 @@ class MotionCostModel:
     humans: Mapping[str, Vec3] | None = None
     candidates: int = 2
     infeasible_cost: float = 1e3
-    plans: dict[tuple[Action, tuple[tuple[str, Vec3], ...]], SkillMotion] = field(
+    plans: dict[tuple[Action, tuple[tuple[str, Any], ...]], SkillMotion] = field(
         default_factory=dict
     )
     _fallback: AnalyticCostModel = field(init=False)
@@ -96,9 +97,13 @@ class MotionCostModel:
         human_at = None
         if action.human is not None and self.humans is not None:
             human_at = self.humans.get(action.human)
-        # where the person stands shapes a hand-over's motion: part of the key, or the plan a
-        # query made for the person elsewhere would be reused
-        key = (action, start) if human_at is None else (action, (*start, ("@", _round(human_at))))
+        # where the person stands shapes a hand-over's motion, and where the hands end (a pick
+        # from the table or from a surface) a pick's: both are part of the key, or the plan
+        # made for one would be reused for the other
+        ends = tuple((f"->{rid}", _round(p)) for rid, p in transition.hands)
+        if human_at is not None:
+            ends = (*ends, ("@", _round(human_at)))
+        key = (action, (*start, *ends))
         if key not in self.plans:
             q = {rid: self._config(rid, p) for rid, p in start}
             where = None

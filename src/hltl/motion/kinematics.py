@@ -29,6 +29,8 @@ TABLE_TOLERANCE = 0.01
 # Extra travel time (s) an elbow-down IK solution must save to be preferred over an elbow-up one:
 # elbow-down poses sweep the forearm low over the table and the objects on it.
 ELBOW_DOWN_PENALTY = 1.0
+# Clearance (m) between the arm's own links in its rest pose (Arm.home).
+HOME_CLEARANCE = 0.03
 
 
 @dataclass(frozen=True, slots=True)
@@ -409,17 +411,28 @@ class Arm:
                 q = np.clip(q, self.lower, self.upper)
         return q, ep, er, max_iter
 
+    def _roomy(self, q: FloatArray) -> bool:
+        """The hand's collision bodies are HOME_CLEARANCE from every other link they could
+        touch."""
+        return self.self_collision.clearance_of(q, self.spec.hand_bodies) >= HOME_CLEARANCE
+
     def _home(self) -> FloatArray:
         """A rest pose: the hand above the base at handover height, pointing down."""
         target = self.base + np.array([0.0, 0.0, HANDOVER_HEIGHT])
         down = rotation_z_to((0.0, 0.0, -1.0), (1.0, 0.0, 0.0))
         seed_q = self.neutral()
         self.home = seed_q
-        # among several solutions, the one nearest the upright zero pose: elbow up, wrist level
-        res = self.ik(target, down, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8)
+        # among several solutions, the one nearest the upright zero pose: elbow up, wrist level,
+        # and the links well apart, so that motions out of the rest pose start free
+        roomy = self._roomy
+        res = self.ik(
+            target, down, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8, accept=roomy
+        )
         if res.q is None:
             lifted = target + np.array([0.2, 0.0, 0.1])
-            res = self.ik(lifted, None, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8)
+            res = self.ik(
+                lifted, None, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8, accept=roomy
+            )
         return seed_q if res.q is None else np.asarray(res.q)
 
 

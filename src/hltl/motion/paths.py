@@ -27,7 +27,7 @@ RRT_SEED = 1
 @dataclass(frozen=True, slots=True)
 class JointPath:
     """Waypoints from start to goal and how they were found: ``direct``, ``via_upright`` (through
-    the arm's upright zero pose) or ``rrt_connect``."""
+    the arm's upright zero pose), ``via_home`` (through its rest pose) or ``rrt_connect``."""
 
     waypoints: tuple[tuple[float, ...], ...]
     planner: str
@@ -81,11 +81,13 @@ def plan_path(
     packed = capsule_arrays(obstacles)
     if segment_clear(arm, q0, q1, packed):
         return JointPath((_t(q0), _t(q1)), "direct")
-    # Table-top arms usually clear what blocks a straight swing by passing through the upright
-    # pose: two straight segments are cheaper to check than a sampling-based search.
-    up = arm.neutral()
-    if segment_clear(arm, q0, up, packed) and segment_clear(arm, up, q1, packed):
-        return JointPath((_t(q0), _t(up), _t(q1)), "via_upright")
+    # Table-top arms usually clear what blocks a straight swing (the table, their own links) by
+    # passing through the upright pose or, for arms whose zero pose lies along the table (the
+    # UR5's), through their folded rest pose: two straight segments are far cheaper to check
+    # than a sampling-based search.
+    for via, name in ((arm.neutral(), "via_upright"), (arm.home, "via_home")):
+        if segment_clear(arm, q0, via, packed) and segment_clear(arm, via, q1, packed):
+            return JointPath((_t(q0), _t(via), _t(q1)), name)
     return _rrt_connect(arm, q0, q1, packed, timeout)
 
 

@@ -14,7 +14,11 @@ from hltl.motion.kinematics import Arm, FloatArray
 from hltl.motion.robots import load_model, model_hash
 
 # Bumped when the way a map is built changes, so stale cache files are not read.
-MAP_FORMAT_VERSION = 1
+MAP_FORMAT_VERSION = 2  # 2: boundary cells of the revolved profile refined
+# Profile cells on the reachable region's boundary (corners that disagree, and their neighbours)
+# are sampled again REFINE times finer: the interpolated boundary of the coarse profile cuts
+# corners where the region is ragged (the table and the self-collision tests make it so).
+REFINE = 3
 DEFAULT_RESOLUTION = 0.03  # metres between grid points (IK runs at half of it on the profile)
 COARSE_RESOLUTION = 0.06  # for arms whose first joint does not turn fully: IK on the 3D grid
 FK_SAMPLES_PER_CELL = 2.0  # random configurations per grid point, before IK fills the gaps
@@ -52,16 +56,21 @@ class ReachMap:
     profile: np.ndarray | None = None  # (radius, height) occupancy of a revolving arm
     profile_origin_z: float = 0.0
     profile_resolution: float = 0.0
+    # Refined boundary cells of the profile: fine_cells[k] = (i, j) is the cell between profile
+    # points (i, j) and (i + 1, j + 1); fine[k] its occupancy on a (REFINE + 1)² sub-grid.
+    fine_cells: np.ndarray | None = None
+    fine: np.ndarray | None = None
 
     def occupancy(self, points: FloatArray) -> FloatArray:
         """Interpolated occupancy (0…1) at base-frame ``points`` (n×3); 0 outside the grid."""
         pts = np.atleast_2d(np.asarray(points, dtype=float))
         if self.profile is not None:
-            return _bilinear(
-                self.profile,
-                np.hypot(pts[:, 0], pts[:, 1]) / self.profile_resolution,
-                (pts[:, 2] - self.profile_origin_z) / self.profile_resolution,
-            )
+            u = np.hypot(pts[:, 0], pts[:, 1]) / self.profile_resolution
+            v = (pts[:, 2] - self.profile_origin_z) / self.profile_resolution
+            occ = _bilinear(self.profile, u, v)
+            if self.fine is not None and self.fine_cells is not None and len(self.fine):
+                _refined(occ, u, v, self.profile.shape, self.fine_cells, self.fine)
+            return occ
         g = (pts - np.asarray(self.origin)) / self.resolution
         shape = np.array(self.reachable.shape)
         i0 = np.floor(g).astype(int)
@@ -119,6 +128,39 @@ def _bilinear(grid: np.ndarray, u: FloatArray, v: FloatArray) -> FloatArray:
     return out
 
 
+def _refined(
+    occ: FloatArray,
+    u: FloatArray,
+    v: FloatArray,
+    shape: tuple[int, ...],
+    cells: np.ndarray,
+    fine: np.ndarray,
+) -> None:
+    """Replace ``occ`` (in place) inside refined profile cells by the fine sub-grid's bilinear
+    interpolation; (u, v) are fractional profile indices."""
+    index = np.full((shape[0] - 1, shape[1] - 1), -1, dtype=int)
+    index[cells[:, 0], cells[:, 1]] = np.arange(len(cells))
+    i, j = np.floor(u).astype(int), np.floor(v).astype(int)
+    inside = (i >= 0) & (j >= 0) & (i < shape[0] - 1) & (j < shape[1] - 1)
+    k = np.full(len(u), -1)
+    k[inside] = index[i[inside], j[inside]]
+    sel = np.flatnonzero(k >= 0)
+    if not len(sel):
+        return
+    n = fine.shape[1] - 1
+    fu, fv = (u[sel] - i[sel]) * n, (v[sel] - j[sel]) * n
+    a, b = np.minimum(np.floor(fu).astype(int), n - 1), np.minimum(np.floor(fv).astype(int), n - 1)
+    du, dv = fu - a, fv - b
+    g = fine[k[sel]].astype(float)
+    rows = np.arange(len(sel))
+    occ[sel] = (
+        (1 - du) * (1 - dv) * g[rows, a, b]
+        + du * (1 - dv) * g[rows, a + 1, b]
+        + (1 - du) * dv * g[rows, a, b + 1]
+        + du * dv * g[rows, a + 1, b + 1]
+    )
+
+
 def _grid(arm: Arm, resolution: float) -> tuple[FloatArray, tuple[int, int, int]]:
     sh = arm.shoulder_offset
     r = arm.max_extent
@@ -148,11 +190,24 @@ def build_map(
         prof = _profile(
             arm, float(lo[2]), float(lo[2] + (shape[2] - 1) * resolution), h, seed, ik_starts
         )
+        cells, fine = _refine_profile(arm, prof, float(lo[2]), h, seed, ik_starts)
+        flat = ReachMap(
+            arm.spec.name,
+            digest,
+            origin,
+            resolution,
+            np.zeros(shape, dtype=bool),
+            prof,
+            float(lo[2]),
+            h,
+            cells,
+            fine,
+        )
         idx = np.array(list(np.ndindex(*shape)))
-        p3 = lo + idx * resolution
-        occ = _bilinear(prof, np.hypot(p3[:, 0], p3[:, 1]) / h, (p3[:, 2] - lo[2]) / h)
-        reach = (occ >= 0.5).reshape(shape)
-        return ReachMap(arm.spec.name, digest, origin, resolution, reach, prof, float(lo[2]), h)
+        reach = flat.contains(lo + idx * resolution).reshape(shape)
+        return ReachMap(
+            arm.spec.name, digest, origin, resolution, reach, prof, float(lo[2]), h, cells, fine
+        )
     reach = _full_grid(arm, lo, shape, resolution, seed, ik_starts)
     return ReachMap(arm.spec.name, digest, origin, resolution, reach)
 
@@ -203,6 +258,43 @@ def _profile(arm: Arm, z_lo: float, z_hi: float, h: float, seed: int, ik_starts:
     return _ik_grid(arm, pts, h, seed, ik_starts).reshape(rr.shape)
 
 
+def _refine_profile(
+    arm: Arm, prof: np.ndarray, z_lo: float, h: float, seed: int, ik_starts: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """IK on a REFINE-times finer sub-grid of every boundary cell of the profile.
+
+    A boundary cell has corners that disagree; its eight neighbours are refined too, so a
+    boundary that bends between coarse points is followed. Returns the cells (m×2) and their
+    sub-grids (m × (REFINE+1) × (REFINE+1)); the sub-grid corners are the coarse points.
+    """
+    n = REFINE
+    g = prof.astype(np.int8)
+    corners = g[:-1, :-1] + g[1:, :-1] + g[:-1, 1:] + g[1:, 1:]
+    mixed = (corners > 0) & (corners < 4)
+    grown = mixed.copy()
+    grown[1:, :] |= mixed[:-1, :]
+    grown[:-1, :] |= mixed[1:, :]
+    grown[:, 1:] |= grown[:, :-1].copy()
+    grown[:, :-1] |= grown[:, 1:].copy()
+    cells = np.argwhere(grown)
+    if not len(cells):
+        return np.zeros((0, 2), dtype=int), np.zeros((0, n + 1, n + 1), dtype=bool)
+    # every fine point once (neighbouring cells share their edges), coarse points from prof
+    sub = np.arange(n + 1)
+    keys = cells[:, None, None, :] * n + np.stack(np.meshgrid(sub, sub, indexing="ij"), -1)
+    flat = keys.reshape(-1, 2)
+    uniq, inverse = np.unique(flat, axis=0, return_inverse=True)
+    on_coarse = (uniq % n == 0).all(axis=1)
+    values = np.zeros(len(uniq), dtype=bool)
+    coarse = uniq[on_coarse] // n
+    values[on_coarse] = prof[coarse[:, 0], coarse[:, 1]]
+    todo = uniq[~on_coarse]
+    pts = np.stack([todo[:, 0] * h / n, np.zeros(len(todo)), z_lo + todo[:, 1] * h / n], axis=1)
+    values[~on_coarse] = _ik_grid(arm, pts, h / n, seed + 1, ik_starts)
+    fine = values[inverse.ravel()].reshape(len(cells), n + 1, n + 1)
+    return cells.astype(int), fine
+
+
 def _cache_file(model: str, resolution: float) -> Path:
     digest = model_hash(model)
     return cache_dir() / f"{model}-{digest}-r{round(resolution * 1000)}mm-v{MAP_FORMAT_VERSION}.npz"
@@ -248,6 +340,8 @@ def load_or_build(
                 prof,
                 float(f["profile_meta"][0]),
                 float(f["profile_meta"][1]),
+                f["fine_cells"] if prof is not None else None,
+                f["fine"].astype(bool) if prof is not None else None,
             )
     m = build_map(Arm("map", model), resolution)
     if use_cache:
@@ -261,6 +355,8 @@ def load_or_build(
             reachable=m.reachable,
             profile=m.profile if m.profile is not None else np.zeros(0, dtype=bool),
             profile_meta=np.array([m.profile_origin_z, m.profile_resolution]),
+            fine_cells=m.fine_cells if m.fine_cells is not None else np.zeros((0, 2), dtype=int),
+            fine=m.fine if m.fine is not None else np.zeros((0, 2, 2), dtype=bool),
         )
         os.replace(tmp, path)  # atomic: concurrent builders never see half a file
     return m

@@ -35,6 +35,8 @@ class ArmSpec:
         max_acceleration: joint acceleration limit (rad/s²) for time parametrisation; URDFs
             carry velocity limits only.
         nominal_reach: the reach (m, from the base) the vendor quotes with a hand.
+        hand_bodies: the collision bodies of the hand (hltl.motion.selfcollision names); the
+            rest pose keeps them clear of the other links.
     """
 
     name: str
@@ -45,6 +47,7 @@ class ArmSpec:
     hand_radius: float
     max_acceleration: float
     nominal_reach: float
+    hand_bodies: tuple[str, ...] = ()
 
 
 ARMS: tuple[ArmSpec, ...] = (
@@ -57,6 +60,7 @@ ARMS: tuple[ArmSpec, ...] = (
         hand_radius=0.045,
         max_acceleration=3.0,
         nominal_reach=0.7,
+        hand_bodies=("hand_0",),
     ),
     ArmSpec(
         name="ur5",
@@ -67,6 +71,7 @@ ARMS: tuple[ArmSpec, ...] = (
         hand_radius=0.045,
         max_acceleration=3.0,
         nominal_reach=0.9,
+        hand_bodies=("hltl_hand_0",),
     ),
     ArmSpec(
         name="panda",
@@ -77,6 +82,10 @@ ARMS: tuple[ArmSpec, ...] = (
         hand_radius=0.05,
         max_acceleration=3.0,
         nominal_reach=0.855,
+        hand_bodies=(
+            "panda_hand_0",
+            *(f"panda_{side}finger_{k}" for side in ("left", "right") for k in range(4)),
+        ),
     ),
 )
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -12,8 +13,9 @@ import numpy as np
 from hltl.errors import BackendUnavailableError
 from hltl.motion.robots import ELFIN3_URDF, arm_spec, load_model
 
-# Smallest allowed distance (m) between two links of one arm that can touch.
-SELF_MARGIN = 0.005
+# Smallest allowed distance (m) between two links of one arm that can touch. Small: the UR5's
+# forearm and wrist-2 meshes pass within 5 mm of each other in ordinary wrist motions.
+SELF_MARGIN = 0.002
 # A pair closer than SELF_MARGIN in at least this fraction of random configurations touches by
 # design (two housings sharing a joint point, e.g. the Elfin-3's upper arm and forearm at the
 # elbow): it is not a collision the arm can avoid, so it is not checked.
@@ -196,13 +198,17 @@ class SelfCollision:
             coal.Transform3s(tj.rotation, tj.translation),
         )
 
-    def _hulls(self, q: Any) -> list[float]:
-        """Broad phase: every checked pair's distance on the convex hulls (Pinocchio, C++)."""
+    def _place(self, q: Any) -> int:
+        """Broad phase: every checked pair's distance on the convex hulls (Pinocchio, C++);
+        returns the index of the closest pair."""
         pin = self._pin
         pin.updateGeometryPlacements(
             self.model, self.data, self.geometry.geometry, self.gdata, np.asarray(q, dtype=float)
         )
-        pin.computeDistances(self.geometry.geometry, self.gdata)
+        return int(pin.computeDistances(self.geometry.geometry, self.gdata))
+
+    def _hulls(self, q: Any) -> list[float]:
+        self._place(q)
         return [float(r.min_distance) for r in self.gdata.distanceResults]
 
     def _has_mesh(self, k: int) -> bool:
@@ -246,10 +252,20 @@ class SelfCollision:
         k = int(np.argmin(d))
         return float(d[k]), self.geometry.checked[k]
 
+    def clearance_of(self, q: Any, bodies: Sequence[str]) -> float:
+        """Exact distance from ``bodies`` to every body they are checked against."""
+        d = self.pair_distances(q, math.inf)
+        on = [(p.first in bodies) != (p.second in bodies) for p in self.geometry.checked]
+        return float(np.min(d[on])) if any(on) else math.inf
+
     def clear(self, q: Any, margin: float = SELF_MARGIN) -> bool:
         """True when every checked pair is at least ``margin`` apart at ``q``."""
-        hull = self._hulls(q)
-        for k, d in enumerate(hull):
-            if d < margin and (not self._has_mesh(k) or self._mesh_touch(k, margin)):
+        if not self._pairs:
+            return True
+        results = self.gdata.distanceResults
+        if results[self._place(q)].min_distance >= margin:
+            return True  # the closest hulls are apart: so is everything (the common case)
+        for k, r in enumerate(results):
+            if r.min_distance < margin and (not self._has_mesh(k) or self._mesh_touch(k, margin)):
                 return False
         return True

@@ -25,6 +25,7 @@ from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.model import SceneModel, compile_scene
 from hltl.sim3d.stage import DOWN, Contact, Stage
 from hltl.skills.cost import CostModel
+from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action
 from hltl.world.scene import Scene, Vec3
 
@@ -40,6 +41,8 @@ _EVENT = {
 _SAMPLE_DT = 0.05  # trajectory rows every 50 ms
 _APPROACH = 0.08  # pick and place come down onto the target from this far above
 _MEET_GAP = 0.05  # at a robot-to-robot handover each hand stops this short of the meeting point
+# rad: a given motion plan whose start is farther than this from an arm's joints is replanned
+START_TOLERANCE = 1e-3
 
 
 @dataclass(frozen=True, slots=True)
@@ -62,7 +65,14 @@ class MujocoSimulator(Simulator):
         model: a compiled scene (default: compiled, or loaded from the model cache).
         contact_dt: period of the robot–person contact checks, in simulated seconds.
         use_motion_layer: plan IK with hltl.motion for arms it has a model of (needs the
-            ``motion`` extra); False uses MuJoCo's own IK for every arm.
+            ``motion`` extra); False uses MuJoCo's own IK for every arm. Those arms start at
+            the motion layer's rest pose (``Arm.home``), where its motion plans start.
+        kinematics: reach, workspaces and ℓ(w) (e.g. the reachability maps of ``--motion``);
+            None keeps the scene's spheres.
+
+    A motion plan given to :meth:`start` (the executor's, from its motion cost model) is played
+    as it is when it starts where the arms are (within START_TOLERANCE); otherwise the instance
+    is planned again here from the arms' joints, so an arm never jumps.
     """
 
     def __init__(
@@ -78,19 +88,30 @@ class MujocoSimulator(Simulator):
         model: SceneModel | None = None,
         contact_dt: float = 0.02,
         use_motion_layer: bool = True,
+        kinematics: Kinematics | None = None,
     ) -> None:
         if timing not in TIMINGS:
             raise ValueError(f"timing must be one of {', '.join(TIMINGS)}, got {timing!r}")
         if not contact_dt > 0:
             raise ValueError(f"contact_dt must be positive, got {contact_dt!r}")
-        super().__init__(scene, events, seed=seed, perception=perception, log=log, cost=cost)
+        super().__init__(
+            scene,
+            events,
+            seed=seed,
+            perception=perception,
+            log=log,
+            cost=cost,
+            kinematics=kinematics,
+        )
         self.timing = timing
         self.contact_dt = contact_dt
         self.stage = Stage(model if model is not None else compile_scene(scene))
+        self._arms = _motion_arms(scene) if use_motion_layer else {}
+        for rid, arm in self._arms.items():
+            self.stage.rehome(rid, tuple(float(v) for v in arm.home))
         self._q: dict[str, tuple[float, ...]] = dict(self.stage.home)
         self._plans: dict[int, MotionInfo] = {}
         self._touching: set[tuple[str, str]] = set()
-        self._arms = _motion_arms(scene) if use_motion_layer else {}
         self._cell: Cell | None = None
         # what the hands visibly carry: object → (robot or human, offset from the hand)
         self._carry: dict[str, tuple[str, str, np.ndarray]] = {}
@@ -110,7 +131,14 @@ class MujocoSimulator(Simulator):
         act = self._actions[handle.id]
         if act.status is not None:  # refused at once (robot busy or down)
             return handle
-        info = MotionInfo(motion, 0.0) if motion is not None else self._plan(action, act.targets)
+        if motion is not None and self._starts_here(motion):
+            info = MotionInfo(motion, 0.0)
+        else:
+            info = self._plan(action, act.targets)
+            if motion is not None:
+                info = dataclasses.replace(
+                    info, note=f"the given plan starts away from the arms; {info.note}".strip()
+                )
         plan = info.plan
         self._fired[handle.id] = set()
         if self.timing == "cost" or plan.duration <= 0:
@@ -124,6 +152,17 @@ class MujocoSimulator(Simulator):
     def halt(self, handle: Handle, t: float, reason: str) -> None:
         self._sync()
         super().halt(handle, t, reason)
+
+    def _starts_here(self, motion: MotionPlan) -> bool:
+        """Every trajectory of ``motion`` starts within START_TOLERANCE of its arm's joints."""
+        for tr in motion.trajectories:
+            q = self._q.get(tr.robot)
+            if q is None or not tr.positions:
+                return False
+            gap = np.max(np.abs(np.asarray(tr.positions[0]) - np.asarray(q)))
+            if float(gap) > START_TOLERANCE:
+                return False
+        return True
 
     def motion_of(self, handle: Handle) -> MotionInfo | None:
         return self._plans.get(handle.id)

@@ -60,6 +60,12 @@ class Stage:
             self.set_object(o.id, o.position)
         self.forward()
 
+    def rehome(self, rid: str, q: Sequence[float]) -> None:
+        """Make ``q`` the arm's rest pose (e.g. the motion layer's ``Arm.home``) and pose it."""
+        self.home[rid] = tuple(float(v) for v in q)
+        self.set_robot(rid, self.home[rid])
+        self.forward()
+
     # -- posing -----------------------------------------------------------------------------
 
     def set_robot(self, rid: str, q: Sequence[float]) -> None:
