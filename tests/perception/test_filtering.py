@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -19,7 +20,9 @@ def _walk(heading: float, speed: float, n: int = 40, dt: float = 0.1) -> list[tu
     ]
 
 
-@settings(max_examples=15, deadline=None)
+# derandomized: the mean-error and velocity bounds are statistical (about 1 noise draw in 1,500
+# breaks the velocity one), so CI must not draw new examples on every run
+@settings(max_examples=15, deadline=None, derandomize=True)
 @given(st.floats(-math.pi, math.pi), st.floats(0.0, 1.5), st.integers(0, 2**31 - 1))
 def test_walker_filter_beats_raw_measurements_and_ignores_one_outlier(
     heading: float, speed: float, seed: int
@@ -32,10 +35,15 @@ def test_walker_filter_beats_raw_measurements_and_ignores_one_outlier(
         m = (x + rng.normal(0, 0.03), y + rng.normal(0, 0.03), 1.0)
         if k == 30:  # one frame measures a neighbour 1 m away
             m = (x + 1.0, y, 1.0)
-        est = f.update(m, 0.1 * k)
         if k == 30:
-            assert math.dist(est[:2], (x, y)) < 0.1  # not folded in
+            # not folded in: the estimate is the filter's own prediction (a hard bound on its
+            # distance to the truth fails on rare noise draws at 1.5 m/s; the old one did)
+            ahead = copy.deepcopy(f).predict(0.1 * k)
+            est = f.update(m, 0.1 * k)
+            assert math.dist(est[:2], (float(ahead[0]), float(ahead[1]))) < 1e-9
+            assert math.dist(est[:2], (x, y)) < 0.3  # folding 1 m in would move it further
             continue
+        est = f.update(m, 0.1 * k)
         if k >= 10:
             raw_err.append(math.dist(m[:2], (x, y)))
             filt_err.append(math.dist(est[:2], (x, y)))
