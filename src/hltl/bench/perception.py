@@ -1,14 +1,4 @@
-"""``hltl bench perception``: trajectory prediction, object localisation and people tracking.
-
-* Prediction: ADE/FDE at 1 s and 2 s of constant velocity, goal-directed and the GRU on held-out
-  seeded walks of the human model (four mixes) and on the simulator's own H-MOVE walks in the
-  catalogue's cells (1 m/s straight walks between the suite's stopping spots, 1 cm noise).
-* Objects: MuJoCo renders of scenes from three camera poses; the 3D centroid error of each
-  backend against the simulator's own cylinder centres, recall, and time per frame.
-* People: two people crossing in front of the robots, rendered at 10 Hz with walking poses;
-  detection rate, floor-position error against the simulator's bodies, identity switches, for
-  the segmentation-based detector and the YOLOv8 ONNX one.
-"""
+"""``hltl bench perception``: trajectory prediction, object localisation and people tracking."""
 
 from __future__ import annotations
 

@@ -1,16 +1,4 @@
-"""People from depth alone (plan-view body columns) and cheap colour appearance features.
-
-:class:`DepthPersonDetector` needs no network and no segmentation: the frame's points are put
-on a floor-plan grid; a person is a connected group of cells whose points rise from the body's
-middle (``BAND``) to a head 1.3–2.2 m above the floor, at most a metre wide, and not standing
-where a registered robot's base is (an arm on its table reaches 1.0–1.4 m above the floor).
-Each body's mask is every pixel above the floor in its cells. Seen from a fixed camera this
-finds people behind tables and people a network misses when half of them is hidden.
-
-:class:`ColorEmbedder` describes a person crop by hue/saturation and value histograms of its
-pixels (the mask when there is one): a few microseconds, against ~100 ms per crop for
-DeepSORT's MobileNetV2 on these two cores, and enough to tell people apart by their clothes.
-"""
+"""People from depth alone (plan-view body columns) and cheap colour appearance features."""
 
 from __future__ import annotations
 

@@ -1,20 +1,4 @@
-"""Object detection backends behind one interface, and language-free 3D localisation.
-
-A backend turns one RGB-D frame into 2D detections (mask, label, score). Backends are
-registered by name in BACKENDS and built by :func:`make_backend`; a backend whose extra is
-missing raises BackendUnavailableError naming it.
-
-* ``segmentation``: masks from the simulator's segmentation render (exact 2D; the reference
-  for tests and benchmarks). Labels are the scene ids of ``camera.json``'s segments.
-* ``depth-clusters``: no segmentation needed. The floor/table plane is removed from the depth
-  (points within 1.5 cm of the lowest supporting plane), the rest is split into connected
-  regions at depth edges; each region's 3D extent classifies it (person-tall, object-sized,
-  anything else) and its label comes from the nearest registered scene object. It is what runs
-  here without open-vocabulary weights (DESIGN.md §5); it is measured against ``segmentation``.
-
-:func:`localize` back-projects each detection and fits an upright cylinder: its axis point at
-mid-height is the object's 3D position.
-"""
+"""Object detection backends behind one interface, and language-free 3D localisation."""
 
 from __future__ import annotations
 

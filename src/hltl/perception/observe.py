@@ -1,12 +1,4 @@
-"""Frames → observations → the executor's WorldState.
-
-:class:`Perceiver` runs one frame through an object backend, 3D localisation and the people
-tracker and returns an :class:`Observation`: objects matched to scene ids (by segment id, or by
-category/alias and nearest registered position), people by track and tied person, the frame's
-processing latency, and what could not be decided — objects not seen, detections that match no
-scene object, ambiguous matches, lost tracks. :func:`fuse` writes an observation into a
-WorldState and returns it with the same report; nothing unsure is guessed silently.
-"""
+"""Frames → observations → the executor's WorldState."""
 
 from __future__ import annotations
 

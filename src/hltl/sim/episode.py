@@ -1,9 +1,4 @@
-"""One closed-loop episode: the simulator, the executor and the log, written once.
-
-The loop (dm_control style): the world advances to the next tick or the next thing that
-happens on its own, whichever comes first; perception observes; the executor updates. Hooks see
-every tick. Everything random is drawn from the episode's seed, so an episode is reproducible.
-"""
+"""One closed-loop episode: the simulator, the executor and the log, written once."""
 
 from __future__ import annotations
 

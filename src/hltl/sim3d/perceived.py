@@ -1,12 +1,4 @@
-"""The 3D simulator seen through its camera: the executor's observations come from rendered
-RGB-D frames run through :mod:`hltl.perception`, not from the simulator's ground truth.
-
-What the camera cannot know stays with the robot's own senses: hands (encoders), which object
-a gripper holds, where it put an object down (the action it executed), and that an object one of
-its running actions handles is being handled (not moved by someone). People's positions
-and resting objects' positions are the camera's belief: the last fused observation; someone the
-tracker has lost stays where last seen and the log says so.
-"""
+"""The 3D simulator seen through its camera: observations from rendered RGB-D frames."""
 
 from __future__ import annotations
 
