@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import statistics
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -107,6 +107,15 @@ class RealtimeBench:
     stepped_s: float  # cell seconds they lasted in-process (the executor stepping time)
 
 
+def _dispatch_counts(
+    records: Sequence[LogRecord], starts: Mapping[int, int]
+) -> tuple[int, int, int]:
+    """(dispatches the executor logged, those the node never started, handles started twice)."""
+    handles = [r.handle for r in records if isinstance(r, ActionStart)]
+    lost = sum(1 for h in handles if starts.get(h, 0) == 0)
+    return len(handles), lost, sum(1 for n in starts.values() if n > 1)
+
+
 def _strip(x: Any) -> Any:
     if isinstance(x, LogRecord):
         return _strip(x.to_json())
@@ -202,10 +211,8 @@ def bench_bus(
                 )
                 opened[0].end()
                 opened[0].close()
-                handles = [r.handle for r in b.records if isinstance(r, ActionStart)]
-                dispatched += len(handles)
-                lost += sum(1 for h in handles if node.stats.starts.get(h, 0) == 0)
-                dup += sum(1 for n in node.stats.starts.values() if n > 1)
+                counts = _dispatch_counts(b.records, node.stats.starts)
+                dispatched, lost, dup = dispatched + counts[0], lost + counts[1], dup + counts[2]
             fsame += _strip(list(a.records)) == _strip(list(b.records))
             say(f"faults {tr.config}#{tr.index}: same log {fsame}")
         rt_bench = _realtime(ns, cs, trials, say)
@@ -250,10 +257,8 @@ def _realtime(
             wall += time.perf_counter() - t0
             opened[0].end()
             opened[0].close()
-        handles = [r.handle for r in b.records if isinstance(r, ActionStart)]
-        dispatched += len(handles)
-        lost += sum(1 for h in handles if node.stats.starts.get(h, 0) == 0)
-        dup += sum(1 for n in node.stats.starts.values() if n > 1)
+        counts = _dispatch_counts(b.records, node.stats.starts)
+        dispatched, lost, dup = dispatched + counts[0], lost + counts[1], dup + counts[2]
         end_a, end_b = a.records[-1], b.records[-1]
         assert isinstance(end_a, EpisodeEnd) and isinstance(end_b, EpisodeEnd)
         goals += end_b.reason == "all goals met"
