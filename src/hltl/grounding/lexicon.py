@@ -262,6 +262,50 @@ for _sub in ("once", "when", "after", "as soon as", "and once", "and when"):
 # Corrections: "the bottle, no, the cup", "— sorry, I mean the table", "actually the shelf".
 for _p in ("i mean", "i meant", "sorry i mean", "no wait", "no sorry", "or rather", "no no"):
     PHRASES[tuple(_p.split())] = "correct"
+# A correction that takes back what was said before it ("Give Alice the chips. Scratch that, …"):
+# at the start of a sentence it replaces the sentence before (hltl.grounding.phrasing)
+RETRACTIONS = frozenset(
+    f"{_verb_word} {_what}"
+    for _verb_word in ("scratch", "strike", "scrap", "forget", "ignore", "disregard")
+    for _what in ("that", "this", "it")
+)
+for _p in RETRACTIONS:
+    PHRASES[tuple(_p.split())] = "correct"
+
+# The speaker asking politely before the request: "I was wondering if you could …", "I'd
+# appreciate it if you could …", "It would be great if you could …": the request follows.
+_YOU_COULD = ("you could", "you would", "you can", "you might", "you 'd")
+for _open in ("i was wondering", "i was just wondering", "i wonder", "i wondered", "we were wondering"):
+    for _if in ("if", "whether"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_open} {_if} {_you}".split())] = "filler"
+for _who in ("i 'd", "i would", "we 'd", "we would"):
+    for _feel in ("appreciate it", "really appreciate it", "be grateful", "be very grateful"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_who} {_feel} if {_you}".split())] = "filler"
+for _it in ("it would be", "it 'd be", "it will be"):
+    for _good in ("great", "nice", "lovely", "good", "helpful", "brilliant", "perfect", "awesome"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_it} {_good} if {_you}".split())] = "filler"
+for _p in ("do you think you could", "any chance you could", "is there any chance you could"):
+    PHRASES[tuple(_p.split())] = "filler"
+# "…, if that's ok": asking leave, not a condition on the task
+for _that in ("that 's", "that is", "that would be"):
+    for _ok in ("ok", "okay", "alright", "all right", "fine", "cool"):
+        PHRASES[tuple(f"if {_that} {_ok}".split())] = "filler"
+PHRASES[("if", "that", "works")] = "filler"
+# "Be a dear and bring …", "Do me a favour and …": an opening that asks kindly
+for _p in ("be a dear and", "be a love and", "be a star and", "do me a favour and"):
+    PHRASES[tuple(_p.split())] = "filler"
+PHRASES[("do", "me", "a", "favor", "and")] = "filler"
+# "a mug, I don't mind which": any of them will do
+for _who in ("i", "we", ""):
+    for _mind in ("mind", "care"):
+        for _which in ("which", "which one", "which it is"):
+            PHRASES[tuple(f"{_who} do n't {_mind} {_which}".split())] = "whichever"
+# "Start by giving Carol the apple, then …": the first step
+for _p in ("start by", "begin by", "start off by", "start with", "begin with", "first of all"):
+    PHRASES[tuple(_p.split())] = "first"
 
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
@@ -285,6 +329,15 @@ for _p, _q in {
     "all the things": "q:everything",
     "every object": "q:everything",
     "every item": "q:everything",
+    "all of it": "q:everything",
+    "all of this": "q:everything",
+    "all of that": "q:everything",
+    "the whole lot": "q:everything",
+    # everyone in the scene as recipients ("give each person one item"): hltl.grounding.phrasing
+    "each person": "q:everyone",
+    "every person": "q:everyone",
+    "each of the people": "q:everyone",
+    "all the people": "q:everyone",
     # exclusions
     "except for": "except",
     "apart from": "except",
@@ -451,6 +504,7 @@ WORDS: dict[str, str] = {
     "any": "q:some",
     "everything": "q:everything",
     "other": "other",
+    "remaining": "other",  # "… or the chips, and the remaining one to Person A"
     "with": "with",
     "same": "same",
     "apart": "except",
@@ -510,8 +564,8 @@ WORDS: dict[str, str] = {
     "all": "all",
     "every": "all",
     "each": "all",
-    "everyone": "all",
-    "everybody": "all",
+    "everyone": "q:everyone",
+    "everybody": "q:everyone",
     "anyone": "all",
     "anybody": "all",
     "someone": "all",

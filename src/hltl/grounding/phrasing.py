@@ -7,7 +7,7 @@ import math
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref, near_keyword
+from hltl.grounding.lexicon import NUMBERS, RETRACTIONS, Item, Lexicon, Ref, near_keyword
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -544,11 +544,28 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
     out: list[Item] = []
     k = 0
     everything = tuple(Ref("object", o.id, plural=True) for o in lexicon.scene.objects)
+    humans = lexicon.scene.humans
     while k < len(items):
         it = items[k]
         if _is(it, "q:everything"):
             out.append(Item("ent", it.lemma, it.text, everything, quant="all"))
             k += 1
+            continue
+        if _is(it, "q:everyone"):  # "give each person one item": every person in the scene
+            people = [Item("ent", it.lemma, it.text, (Ref("human", h.id),)) for h in humans]
+            if not people:
+                raise GroundingError(f"{it.text!r}: the scene has no people")
+            out.extend(_joined(people))
+            k += 1
+            continue
+        count = _counted_alone(items, k)
+        if count:  # "give Alice both", "Person B gets all four": that many objects
+            n = 1 if _is(it, "both") else 2
+            said = items[k : k + n]
+            words = " ".join(x.text for x in said)
+            refs = _the_objects(out, count, words, lexicon)
+            out.append(Item("ent", words.lower(), words, refs, quant="all"))
+            k += n
             continue
         if _is(it, "other"):
             prev = next((x for x in reversed(out) if x.quant == "some"), None)
@@ -584,6 +601,12 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "det"):
                 j += 1
+            if quant == "some" and j + 1 < len(items) and _objects(items[j + 1]):
+                n = _quant_word(items[j])
+                if n[0] == "num":  # "one of the two mugs": there must be two
+                    words = " ".join(x.text for x in items[j : j + 2])
+                    _quantify(items[j + 1], "num", n[1], words, lexicon, k)
+                    j += 1
             if j < len(items) and _objects(items[j]):
                 target = items[j]
                 words = " ".join(x.text for x in items[k : j + 1])
@@ -607,6 +630,50 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         k += 1
     # a "some" mention with one ref is that object; an indefinite singular stays a choice
     return out
+
+
+# what may follow 'both' or 'all four' used alone, as the objects of a clause
+_AFTER_ALONE = frozenset(
+    {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to"}
+)
+
+
+def _counted_alone(items: list[Item], k: int) -> int:
+    """How many objects 'both' (2) or 'all four' (4) stands for when used without a name after
+    it ('give Alice both', 'Person B gets all four'), else 0."""
+    it = items[k]
+    if _is(it, "both"):
+        n = 1
+    elif it.kind == "word" and it.text.lower() == "all" and k + 1 < len(items):
+        if _quant_word(items[k + 1])[0] != "num":
+            return 0
+        n = 2
+    else:
+        return 0
+    nxt = items[k + n] if k + n < len(items) else None
+    if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
+        return 0
+    if nxt is not None and _is(nxt, "and") and k + n + 1 < len(items):
+        if _objects(items[k + n + 1]) or _is(items[k + n + 1], "det"):
+            return 0  # "both and the cup": not a clause's objects
+    if _is(it, "both"):
+        return 2
+    return _quant_word(items[k + 1])[1]
+
+
+def _the_objects(out: list[Item], count: int, words: str, lexicon: Lexicon) -> tuple[Ref, ...]:
+    """The ``count`` objects 'both'/'all four' means: those named before (if that many), else
+    the scene's (if that many); refused when neither or both fit and differ."""
+    named = list(dict.fromkeys(r.id for x in out if _objects(x) for r in x.refs))
+    scene = [o.id for o in lexicon.scene.objects]
+    fits = [ids for ids in (named, scene) if len(ids) == count]
+    if not fits or (len(fits) == 2 and set(fits[0]) != set(fits[1])):
+        raise GroundingError(
+            f"{words!r} does not say which {count} objects: "
+            f"{len(named)} named before it, {len(scene)} in the scene; name them; "
+            f"{lexicon.listing('object')}"
+        )
+    return tuple(Ref("object", i, plural=True) for i in fits[0])
 
 
 def _choice_of_two(out: list[Item], at: int) -> Item | None:
@@ -731,9 +798,9 @@ def _corrections(items: list[Item]) -> list[Item]:
         ):
             j += 1
         before = items[:k]
-        while before and _is(before[-1], ",", "-"):
-            before.pop()
-        after = items[j:]
+        while before and _is(before[-1], ",", "-", "filler"):
+            before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
+        after = _without_trailing_markers(items[j:])
         if it.text.lower() in ("sorry", "oops") and (
             not after or (after[0].kind == "punct" and after[0].lemma in _END)
         ):
@@ -753,7 +820,10 @@ def _corrections(items: list[Item]) -> list[Item]:
                     or (after[r + 1].kind == "punct" and after[r + 1].lemma in _END)
                 )
             )
-            said_no = any(x.text.lower() in ("no", "instead") for x in items[k:j])
+            said_no = any(
+                x.text.lower() in ("no", "instead") or x.text.lower() in RETRACTIONS
+                for x in items[k:j]
+            )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
             elif after:
@@ -768,6 +838,21 @@ def _corrections(items: list[Item]) -> list[Item]:
         items = _apply_correction(before, after, it)
         k = 0
     return items
+
+
+def _without_trailing_markers(after: list[Item]) -> list[Item]:
+    """'…, to Bob actually.': a correction word ending the correction only stresses it."""
+    end = next((n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), None)
+    stop = len(after) if end is None else end
+    cut = stop
+    while cut > 0 and _is(after[cut - 1], "correct", "filler") and after[cut - 1].text.lower() in (
+        "actually",
+        "instead",
+        "please",
+        "then",
+    ):
+        cut -= 1
+    return after[:cut] + after[stop:] if cut > 0 else after
 
 
 def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> list[Item]:
@@ -788,7 +873,16 @@ def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> li
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         cut = verbs[-1]
         moved = [it for it in before[cut:] if _objects(it)]
+        # "Give Alice the chips. Scratch that, give her the bottle.": 'her' is the one person of
+        # the clause taken back (with several, the pronoun is left to be refused as unclear)
+        people = {r.id: x for x in before[cut:] if _humans(x) for r in x.refs}
         rest = list(after)
+        for m, x in enumerate(rest):
+            if x.kind == "punct" and x.lemma in _END:
+                break
+            if x.lemma == "pronoun" and x.text.lower() in _PERSON_PRONOUNS and len(people) == 1:
+                (who,) = people.values()
+                rest[m] = replace(who, text=x.text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
                 break
@@ -1061,9 +1155,9 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 and _objects(nxt)
             ):
                 continue  # "give Alice her cup": a possessive after the person
-            if len(seen) == 1:
-                pid = next(iter(seen))
-                out.append(Item("ent", low, it.text, (Ref("human", pid),)))
+            candidates = [p for p in seen if p not in _waiting(out, items, k)]
+            if len(candidates) == 1:
+                out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
             readings = list(seen) or [h.id for h in lexicon.scene.humans]
             raise GroundingError(
@@ -1098,6 +1192,26 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _waiting(out: list[Item], items: list[Item], k: int) -> set[str]:
+    """The people who wait for 'she' in '…, and Bob the apple once she has it' (the person of
+    the clause right before a trailing 'once/after <pronoun> has …'): not who 'she' is, since
+    nobody waits until they have something themselves."""
+    if not out or not _is(out[-1], "once", "after"):
+        return set()
+    j = k + 1
+    while j < len(items) and _is(items[j], "aux", "filler"):
+        j += 1
+    if j >= len(items) or items[j].lemma not in ("verb:have", "verb:get", "verb:receive"):
+        return set()
+    people: set[str] = set()
+    n = len(out) - 2
+    while n >= 0 and not (out[n].kind == "punct" or _is(out[n], "and", "then")):
+        if _humans(out[n]):
+            people |= {r.id for r in out[n].refs}
+        n -= 1
+    return people
 
 
 def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
