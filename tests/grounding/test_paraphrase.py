@@ -29,15 +29,19 @@ CORPORA: dict[str, Corpus] = {p: load_corpus(ROOT / CORPUS_DIR / f"{p}.yaml", RO
 # refused although a person would read them (docs/grounding.md reports them)
 KNOWN_MISSES = frozenset(
     {
-        "Bob's after the chips, can you sort that out?",
         "Give Carl the chips",  # 'Carl' is a common word (a name), so it is not read as 'Carol'
+        # blind3 (tuned on in session 5): 'Hnad' is one edit from 'hand' and from 'had'
+        "Hnad Alice the red mug please",
+        # blind3: steps after the 'or' of an 'either' could belong to it or come after it
+        "Either put the cup on the shelf, or give it to Bob and then give Carol the apple",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
 # groundings included, are the measurement, and the grounder is not tuned on it
 # ("blind" was measured once in session 2, then its misses were fixed in session 3; "blind2"
-# measured once in session 3, its misses fixed in session 4: both asserted now)
-MEASURED_ONLY = frozenset({"blind3"})
+# measured once in session 3, its misses fixed in session 4; "blind3" measured once in session
+# 4, its misses fixed in session 5: all asserted now)
+MEASURED_ONLY = frozenset({"blind4"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -50,6 +54,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind2"].entries}) >= 4
     assert len(CORPORA["blind3"].entries) >= 120
     assert len({e.scene for e in CORPORA["blind3"].entries}) >= 4
+    assert len(CORPORA["blind4"].entries) >= 150
+    assert len({e.scene for e in CORPORA["blind4"].entries}) >= 8
     for corpus in CORPORA.values():
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)

@@ -275,7 +275,13 @@ for _p in RETRACTIONS:
 # The speaker asking politely before the request: "I was wondering if you could …", "I'd
 # appreciate it if you could …", "It would be great if you could …": the request follows.
 _YOU_COULD = ("you could", "you would", "you can", "you might", "you 'd")
-for _open in ("i was wondering", "i was just wondering", "i wonder", "i wondered", "we were wondering"):
+for _open in (
+    "i was wondering",
+    "i was just wondering",
+    "i wonder",
+    "i wondered",
+    "we were wondering",
+):
     for _if in ("if", "whether"):
         for _you in _YOU_COULD:
             PHRASES[tuple(f"{_open} {_if} {_you}".split())] = "filler"
@@ -294,6 +300,21 @@ for _that in ("that 's", "that is", "that would be"):
     for _ok in ("ok", "okay", "alright", "all right", "fine", "cool"):
         PHRASES[tuple(f"if {_that} {_ok}".split())] = "filler"
 PHRASES[("if", "that", "works")] = "filler"
+# "Bob's after the chips, can you sort that out?": asking for what was just said
+for _do in (
+    "sort that out",
+    "sort it out",
+    "sort that",
+    "take care of that",
+    "take care of it",
+    "deal with that",
+    "deal with it",
+    "handle that",
+    "handle it",
+    "make that happen",
+    "make it happen",
+):
+    PHRASES[tuple(_do.split())] = "filler"
 # "Be a dear and bring …", "Do me a favour and …": an opening that asks kindly
 for _p in ("be a dear and", "be a love and", "be a star and", "do me a favour and"):
     PHRASES[tuple(_p.split())] = "filler"
@@ -353,6 +374,10 @@ for _p, _q in {
 }.items():
     PHRASES[tuple(_p.split())] = _q
 
+# one category said in other words (British and American English): a scene that names only
+# one of them is understood in the other, unless the other names something else there
+SYNONYMS: dict[str, tuple[str, ...]] = {"chips": ("crisps",), "crisps": ("chips",)}
+
 # words naming any object: "the two things", "all four objects" ("the thing" is ambiguous)
 GENERIC_NOUNS = ("thing", "object", "item")
 
@@ -398,6 +423,14 @@ WORDS: dict[str, str] = {
     "third": "then",
     "thirdly": "then",
     "first": "first",
+    "last": "last",  # "Give Alice the bottle last; first …" (hltl.grounding.phrasing)
+    "there": "there",  # "… on the shelf and the cup there too": that surface
+    # a reason after (or before) a request: "… because he's hungry" (hltl.grounding.phrasing)
+    "because": "reason",
+    "since": "reason",
+    "cause": "reason",
+    "cos": "reason",
+    "coz": "reason",
     "firstly": "first",
     "initially": "first",
     "after": "after",
@@ -674,6 +707,10 @@ class Lexicon:
                 self._add(Ref("surface", s.id), name, plurals=False)
         for r in scene.robots:
             self._add(Ref("robot", r.id), r.id, plurals=False)
+        for o in scene.objects:  # "crisps" where the scene says only "chips"
+            for other in SYNONYMS.get(o.category, ()):
+                if _words(other) not in self._phrases:
+                    self._add(Ref("object", o.id), other, plurals=True, strong=False)
         self.max_len = max((len(p) for p in self._phrases), default=1)
 
     @staticmethod
@@ -727,6 +764,9 @@ class Lexicon:
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
+        phrase = self._misspelt_phrase(tokens, i)
+        if phrase is not None:
+            return phrase
         typo = self.misspelt(tokens[i].low)
         if typo is not None:
             return 1, typo
@@ -775,6 +815,31 @@ class Lexicon:
             return None  # several names within one edit ("chps": chips or cups): no guess
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
+
+    def _misspelt_phrase(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
+        """A name of several words with one of them mistyped ("bleu mug"): (length, refs).
+
+        The mistyped word is one edit from the name's word (4+ letters), not a keyword or a
+        common English word, and the other words are exact; refused (None) when the words fit
+        more than one name.
+        """
+        found: list[tuple[int, tuple[Ref, ...]]] = []
+        for key, entries in self._phrases.items():
+            n = len(key)
+            if n < 2 or i + n > len(tokens):
+                continue
+            typed = tuple(t.low for t in tokens[i : i + n])
+            diff = [k for k in range(n) if typed[k] != key[k]]
+            if len(diff) != 1:
+                continue
+            word, right = typed[diff[0]], key[diff[0]]
+            if not _close_word(word, right):
+                continue
+            found.append((n, _best(entries)))
+        ids = {r.id for _, refs in found for r in refs}
+        if len(ids) != 1 or len({n for n, _ in found}) != 1:
+            return None
+        return found[0]
 
     def misspelt_keyword(self, word: str) -> str | None:
         """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
@@ -827,6 +892,14 @@ def common_words() -> frozenset[str]:
     """The 20,000 most frequent English words (data/common_words.txt says where from)."""
     text = resources.files("hltl.grounding").joinpath("data/common_words.txt").read_text("utf-8")
     return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
+
+
+def _close_word(word: str, right: str) -> bool:
+    """Whether a typed word is a typo of ``right`` inside a longer name (see _misspelt_phrase):
+    as for a name of one word, 4+ letters ("mgu" is never corrected) and not a real word."""
+    if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
+        return False
+    return word not in PHRASE_WORDS and word not in common_words() and _one_edit(word, right)
 
 
 def _one_edit(a: str, b: str) -> bool:

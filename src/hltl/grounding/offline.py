@@ -811,18 +811,18 @@ class _Parser:
                 if g.target is not None and g.target.id == f.target.id and not g.subject
             ]
             if given:
-                out = [frags[given[-1]]]
+                heads = [frags[given[-1]]]
                 for g in frags[given[-1] + 1 : k]:
-                    if g.segment != out[0].segment or g.verb_text or g.subject or g.target:
+                    if g.segment != heads[0].segment or g.verb_text or g.subject or g.target:
                         break
-                    out.append(g)
-                out = [g for g in out if g.objects is not None]
-                if f.it and len(out) > 1:
-                    names = ", ".join(o for g in out for o in g.objects or ())
+                    heads.append(g)
+                heads = [g for g in heads if g.objects is not None]
+                if f.it and len(heads) > 1:
+                    names = ", ".join(o for g in heads for o in g.objects or ())
                     raise GroundingError(
                         f"'it' in {f.text!r} could mean any of {names}: name the object"
                     )
-                return out
+                return heads
         if f.it:
             return [frags[k - 1]]
         out: list[_Frag] = []
