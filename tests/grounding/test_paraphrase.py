@@ -23,6 +23,7 @@ from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction
 from hltl.grounding.tree import Group, Task
 from hltl.world.scene import Scene
+from tests.grounding.helpers import one_edits
 
 ROOT = Path(__file__).resolve().parents[2]
 CORPORA: dict[str, Corpus] = {p: load_corpus(ROOT / CORPUS_DIR / f"{p}.yaml", ROOT) for p in PARTS}
@@ -125,21 +126,11 @@ def test_politeness_never_changes_the_meaning(entry: Entry, wrap: str) -> None:
 NAMES = ["bottle", "apple", "chips", "crisps", "Alice", "Carol", "shelf", "table", "counter"]
 
 
-def _edits(word: str) -> list[str]:
-    letters = "abcdefghijklmnopqrstuvwxyz"
-    out = {word[:k] + word[k + 1 :] for k in range(len(word))}
-    out |= {word[:k] + c + word[k:] for k in range(len(word) + 1) for c in letters}
-    out |= {word[:k] + c + word[k + 1 :] for k in range(len(word)) for c in letters}
-    out |= {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)}
-    out.discard(word)
-    return sorted(out)
-
-
 @settings(max_examples=60, deadline=None)
 @given(st.sampled_from(NAMES), st.data())
 def test_a_typo_means_the_word_or_nothing(name: str, data: st.DataObject) -> None:
     """One edit away from a scene name: grounded as that name, or refused; never another."""
-    typo = data.draw(st.sampled_from(_edits(name.lower())))
+    typo = data.draw(st.sampled_from(one_edits(name.lower())))
     if name in ("Alice", "Carol"):
         text, right = f"give {typo} the cup", f"give {name} the cup"
     elif name in ("shelf", "table", "counter"):

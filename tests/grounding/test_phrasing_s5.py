@@ -4,8 +4,6 @@ names of two words, negated wants, corrections naming a person and an object."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -14,31 +12,17 @@ from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon, common_words, tokenize
 from hltl.grounding.offline import parse_instruction, spec_of
-from hltl.grounding.tree import Node
 from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import CELL, ROOT, one_edits
+from tests.grounding.helpers import means as _means
+from tests.grounding.helpers import tree as _tree
 
-ROOT = Path(__file__).resolve().parents[2]
-CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
 SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 OBJECTS = ["cup", "bottle", "chips", "apple"]
 PEOPLE = {"A": "Alice", "B": "Bob", "C": "Carol"}
-
-
-def _means(text: str, want: str, scene: Scene = CELL) -> None:
-    got = parse_instruction(text, scene)
-    assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
-        f"{text!r} -> {show_tree(got)}, want {want}"
-    )
-
-
-def _tree(text: str, scene: Scene = CELL) -> Node | None:
-    try:
-        return parse_instruction(text, scene)
-    except GroundingError:
-        return None
 
 
 def _refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
@@ -287,16 +271,6 @@ def test_there_is_the_surface_named_before() -> None:
     _refused("There's the cup, give it to Bob")
 
 
-def _edits(word: str) -> list[str]:
-    letters = "abcdefghijklmnopqrstuvwxyz"
-    out = {word[:k] + word[k + 1 :] for k in range(len(word))}
-    out |= {word[:k] + c + word[k:] for k in range(len(word) + 1) for c in letters}
-    out |= {word[:k] + c + word[k + 1 :] for k in range(len(word)) for c in letters}
-    out |= {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)}
-    out.discard(word)
-    return sorted(out)
-
-
 ALIASES = [("blue mug", "mug_blue"), ("red mug", "mug_red"), ("water bottle", "bottle")]
 
 
@@ -307,7 +281,7 @@ def test_a_typo_inside_a_two_word_name_means_it_or_nothing(
 ) -> None:
     words = alias[0].split()
     at = data.draw(st.sampled_from(range(len(words))))
-    typo = data.draw(st.sampled_from(_edits(words[at])))
+    typo = data.draw(st.sampled_from(one_edits(words[at])))
     words[at] = typo
     got = _tree(f"give Carol the {' '.join(words)}")
     assert got is None or show_tree(got) == f"{alias[1]}>C", f"{words} -> {got}"
