@@ -91,6 +91,10 @@ def test_remark_examples(text: str, want: str) -> None:
         "Give Bob the chips because then give Carol the apple",
         "Give Bob the chips, Carol brownies",  # an unknown object, not a remark
         "Give Bob the chips, Carol wants them too",
+        # someone else who wants or waits for it may be asking for it too
+        "Give Bob the chips because Carol wants them",
+        "Give Bob the cup, Alice is waiting for it",
+        "Give Alice the cup and Carol the apple once she gets there",  # she: who arrives?
         "Give Bob the chips and Carol the apple because she's hungry",  # 'she': Alice or Carol
         "Because Bob is hungry",
         "Give the cup to Bob if he is hungry",

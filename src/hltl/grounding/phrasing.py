@@ -167,7 +167,8 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
         opening = k == 0 or items[k - 1].lemma in _END
         if reason and (opening or _has_request(items[:k])):
             end = _clause_stop(items, k, opening)
-            if _remark_words(items[k + reason : end], lexicon, reason=True) and (
+            said = _people(items[:k] + items[end:])
+            if _remark_words(items[k + reason : end], lexicon, said, reason=True) and (
                 not opening or (end < len(items) and _is(items[end], ","))
             ):
                 if opening:  # "Because Bob is hungry, give him the chips"
@@ -180,7 +181,7 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if (at_start or after_comma) and _opens_remark(items, k):
             end = _clause_stop(items, k, at_start)
             rest = items[end:]
-            if _remark_words(items[k:end], lexicon, reason=False):
+            if _remark_words(items[k:end], lexicon, _people(items[:k] + rest), reason=False):
                 leads = at_start and end < len(items) and items[end].kind == "punct"
                 if leads and any(x.kind == "ent" for x in rest[1:]):
                     items = items[:k] + rest[1:]
@@ -269,7 +270,11 @@ def _opens_remark(items: list[Item], k: int) -> bool:
     )
 
 
-def _remark_words(words: list[Item], lexicon: Lexicon, *, reason: bool) -> bool:
+def _people(items: list[Item]) -> set[str]:
+    return {r.id for x in items if _humans(x) for r in x.refs}
+
+
+def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason: bool) -> bool:
     """Whether ``words`` can be dropped as a remark: people, 'it'/'them', words the grammar does
     not know (none hiding a scene name or near a keyword), and only glue words; no object,
     surface or robot, no verb that moves anything, no order, choice, condition or correction.
@@ -306,6 +311,18 @@ def _remark_words(words: list[Item], lexicon: Lexicon, *, reason: bool) -> bool:
             ):
                 continue
         return False
+    # someone the request does not name who wants or has it ("because Carol wants them", "Alice
+    # is waiting for it") may be asking for it too: not a remark to drop, unless negated
+    if _people(words) - said and not any(_is(x, "not") for x in words):
+        wants = any(
+            x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive")
+            and not (
+                n + 1 < len(words) and words[n + 1].lemma.split()[0] in ("something", "anything")
+            )
+            for n, x in enumerate(words)
+        )
+        if wants or any(_is(x, "it", "them") for x in words):
+            return False
     return reason or any(x.kind == "unknown" for x in words)
 
 
@@ -1575,6 +1592,11 @@ def _waiting(out: list[Item], items: list[Item], k: int) -> set[str]:
         j += 1
     if j >= len(items) or items[j].lemma not in ("verb:have", "verb:get", "verb:receive"):
         return set()
+    if not (
+        j + 1 < len(items)
+        and (items[j + 1].text.lower() in ("it", "them") or _starts_objects(items, j + 1))
+    ):
+        return set()  # "once she gets there": she may be the one who arrives
     people: set[str] = set()
     n = len(out) - 2
     while n >= 0 and not (out[n].kind == "punct" or _is(out[n], "and", "then")):
