@@ -10,11 +10,12 @@ from pathlib import Path
 import pytest
 
 from hltl.bus.driver import BusTiming
+from hltl.bus.session import free_endpoint
 from hltl.sim import scenarios
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
-from tests.bus.helpers import BusRun, Loopback, free_endpoint, without_wall_clock
+from tests.bus.helpers import BusRun, Loopback, without_wall_clock
 
 ROOT = Path(__file__).resolve().parents[2]
 EVENTS = ROOT / "examples" / "events"
