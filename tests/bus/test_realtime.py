@@ -184,9 +184,12 @@ class _Breaks(Simulator):
 
 @pytest.mark.parametrize(
     ("factory", "reason"),
-    # a hung node is silent: the clock query or a command's acknowledgement gives up first,
-    # whichever the loop is waiting on (a matter of timing on a loaded machine)
-    [(_Hangs, ("stopped answering", "did not acknowledge")), (_Breaks, ("joint 3 encoder fault",))],
+    # a hung or broken node is silent to commands: the clock query (which names a failure) or
+    # a command's acknowledgement gives up first, whichever the loop is waiting on (timing)
+    [
+        (_Hangs, ("stopped answering", "did not acknowledge")),
+        (_Breaks, ("joint 3 encoder fault", "did not acknowledge")),
+    ],
     ids=["hangs", "breaks"],
 )
 def test_a_silent_or_broken_cell_is_down_not_a_hang(
