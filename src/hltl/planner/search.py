@@ -130,9 +130,13 @@ class _Search:
             self._dead_memo[q] = d
         return d
 
-    def options(self, node: Node, tags: Sequence[Tag] = ()) -> list[list[Instance]]:
+    def options(
+        self, node: Node, tags: Sequence[Tag] = ()
+    ) -> tuple[list[list[Instance]], frozenset[int]]:
         """Per object worth touching, the instances whose state preconditions hold and that are
-        not left-shiftable into the step that reached ``node`` (see ``Tag``)."""
+        not left-shiftable into the step that reached ``node`` (see ``Tag``); and the indices of
+        those among them that would shift into every such step but for their duration (a step
+        made of these only is never generated: see ``steps``)."""
         locs, hands, q = node
         p = self.p
         dead = self.dead(q)
@@ -145,38 +149,42 @@ class _Search:
                 busy |= 1 << r
         relevant = p.relevant(self.done(q))
         out: list[list[Instance]] = []
+        late: set[int] = set()
         prune = p.prune_irrelevant
         for o, code in enumerate(locs):
             if prune and o not in relevant and code not in holder_of:
                 continue
-            cands = [
-                inst
-                for inst in p.by_obj_pre[o][code]
-                if inst.index not in dead
-                and not any(busy >> f & 1 for f in inst.free)
-                and not (
+            cands: list[Instance] = []
+            for inst in p.by_obj_pre[o][code]:
+                if inst.index in dead or any(busy >> f & 1 for f in inst.free):
+                    continue
+                if (
                     tags
                     and shiftable[inst.index]
-                    and all(
-                        not inst.executors & e
-                        and not m >> inst.obj & 1
-                        and (inst.lower if hands is None else p.duration(inst, hands)) <= d
-                        for e, m, d in tags
-                    )
-                )
-            ]
+                    and all(not inst.executors & e and not m >> inst.obj & 1 for e, m, _ in tags)
+                ):
+                    dur = inst.lower if hands is None else p.duration(inst, hands)
+                    if all(dur <= d for _, _, d in tags):
+                        continue  # left-shiftable: some optimal plan ran it one step earlier
+                    late.add(inst.index)
+                cands.append(inst)
             if cands:
                 out.append(cands)
-        return out
+        return out, frozenset(late)
 
     def steps(
         self, node: Node, tags: Sequence[Tag] = ()
     ) -> Iterator[tuple[tuple[Instance, ...], int, Node, Tag, Perm]]:
         """All successors: every set U of applicable instances with disjoint robots, with its
         duration, the node it leads to (canonical, see ``canonical``), its tag (in the child's
-        labels) and the relabelling."""
+        labels) and the relabelling.
+
+        A step made only of instances that would shift into the step before but make it longer
+        (``options``) is left out too: run together with that step, they reach the same node
+        for max(d₁, d₂) < d₁ + d₂, so no optimal plan takes the two steps one after the other
+        (docs/planner.md, "Left-shift rule")."""
         locs, hands, q = node
-        opts = self.options(node, tags)
+        opts, late = self.options(node, tags)
         sym = self._sym_objects
         # fixed durations and no state atoms: the step is applied inline (the hot path)
         inline = hands is None and not self.p.state_atom_objects
@@ -184,10 +192,13 @@ class _Search:
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
         # recursive generator passes every step set up through one frame per object); the
-        # robots acting, the objects moved, the events and the duration are carried along
-        stack: list[tuple[int, int, int, int, int, tuple[Instance, ...]]] = [(0, 0, 0, 0, 0, ())]
+        # robots acting, the objects moved, the events, the duration and whether every chosen
+        # instance is a late one are carried along
+        stack: list[tuple[int, int, int, int, int, bool, tuple[Instance, ...]]] = [
+            (0, 0, 0, 0, 0, True, ())
+        ]
         while stack:
-            i, used, moved, events, cost, chosen = stack.pop()
+            i, used, moved, events, cost, all_late, chosen = stack.pop()
             if i < n:
                 for inst in reversed(opts[i]):
                     if not inst.executors & used:
@@ -198,10 +209,13 @@ class _Search:
                                 moved | 1 << inst.obj,
                                 events | inst.event_bits,
                                 inst.lower if inst.lower > cost else cost,
+                                all_late and inst.index in late,
                                 (*chosen, inst),
                             )
                         )
-                stack.append((i + 1, used, moved, events, cost, chosen))
+                stack.append((i + 1, used, moved, events, cost, all_late, chosen))
+                continue
+            if chosen and all_late:
                 continue
             if inline:
                 new_locs = list(locs)
