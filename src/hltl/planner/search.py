@@ -179,12 +179,18 @@ class _Search:
         duration, the node it leads to (canonical, see ``canonical``), its tag (in the child's
         labels) and the relabelling.
 
-        A step made only of instances that would shift into the step before but make it longer
-        (``options``) is left out too: run together with that step, they reach the same node
-        for max(d₁, d₂) < d₁ + d₂, so no optimal plan takes the two steps one after the other
-        (docs/planner.md, "Left-shift rule")."""
+        Steps that some instances shifted into the step before would make no longer are left
+        out too. Let L be the chosen instances that would shift into that step but for their
+        duration (``options``), R the others. Moving L into the step before turns durations
+        d₁ (before), max(d(L), d(R)) into max(d₁, d(L)), d(R): no longer in total when R is
+        empty (the two steps merge, max(d₁, d(L)) < d₁ + d(L)), or when d(R) ≤ d₁ and
+        d(R) ≤ d(L) (fixed durations: then max(d₁, d(L)) + d(R) ≤ d₁ + d(L)). Every such move
+        runs an instance earlier, so an optimal plan in which no move applies exists, and the
+        search keeps it (docs/planner.md, "Left-shift rule")."""
         locs, hands, q = node
         opts, late = self.options(node, tags)
+        # the shortest step that reached the node (``late`` holds for every way in)
+        before = min((d for _, _, d in tags), default=0) if hands is None else -1
         sym = self._sym_objects
         # fixed durations and no state atoms: the step is applied inline (the hot path)
         inline = hands is None and not self.p.state_atom_objects
@@ -192,30 +198,36 @@ class _Search:
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
         # recursive generator passes every step set up through one frame per object); the
-        # robots acting, the objects moved, the events, the duration and whether every chosen
-        # instance is a late one are carried along
-        stack: list[tuple[int, int, int, int, int, bool, tuple[Instance, ...]]] = [
-            (0, 0, 0, 0, 0, True, ())
+        # robots acting, the objects moved, the events, the duration, and the longest chosen
+        # instance among the late ones and among the others (-1: none) are carried along
+        stack: list[tuple[int, int, int, int, int, int, int, tuple[Instance, ...]]] = [
+            (0, 0, 0, 0, 0, -1, -1, ())
         ]
         while stack:
-            i, used, moved, events, cost, all_late, chosen = stack.pop()
+            i, used, moved, events, cost, late_d, rest_d, chosen = stack.pop()
             if i < n:
                 for inst in reversed(opts[i]):
                     if not inst.executors & used:
+                        d = inst.lower
+                        if inst.index in late:
+                            nl, nr = (d if d > late_d else late_d), rest_d
+                        else:
+                            nl, nr = late_d, (d if d > rest_d else rest_d)
                         stack.append(
                             (
                                 i + 1,
                                 used | inst.executors,
                                 moved | 1 << inst.obj,
                                 events | inst.event_bits,
-                                inst.lower if inst.lower > cost else cost,
-                                all_late and inst.index in late,
+                                d if d > cost else cost,
+                                nl,
+                                nr,
                                 (*chosen, inst),
                             )
                         )
-                stack.append((i + 1, used, moved, events, cost, all_late, chosen))
+                stack.append((i + 1, used, moved, events, cost, late_d, rest_d, chosen))
                 continue
-            if chosen and all_late:
+            if late_d >= 0 and (rest_d < 0 or (rest_d <= before and rest_d <= late_d)):
                 continue
             if inline:
                 new_locs = list(locs)
