@@ -155,7 +155,18 @@ def test_node_process_killed_mid_action(tmp_path: Path) -> None:
     assert len(starts) == len(set(starts))
 
 
-def test_a_robot_that_never_acknowledges_is_down_not_a_hang(loopback: Loopback) -> None:
+@pytest.mark.parametrize(
+    ("realtime", "why"),
+    [
+        # lockstep: a step's commands ride its query, which the cell node never acknowledges
+        (None, "is down: the simulator node did not acknowledge the step's commands"),
+        # real time: each command goes to the robots at once, and each robot must acknowledge
+        (10.0, "is down: robot r1 did not acknowledge"),
+    ],
+)
+def test_a_robot_that_never_acknowledges_is_down_not_a_hang(
+    loopback: Loopback, realtime: float | None, why: str
+) -> None:
     """Every command is lost: the first dispatch times out, the robots are declared down, and
     the executor gives up with a reason instead of waiting forever."""
     sc = scenarios.get("fig1")
@@ -165,12 +176,13 @@ def test_a_robot_that_never_acknowledges_is_down_not_a_hang(loopback: Loopback) 
         exec_faults=FaultModel(loss=0.999999, seed=0),
         timing=BusTiming(timeout=0.05, retries=1, patience=0.3),
         config=EpisodeConfig(max_time=20.0),
+        realtime=realtime,
         **_fig1(),
     )
     assert time.monotonic() - t0 < 60
     assert not run.episode.success
     failed = [r for r in run.episode.records if r.type == "action_failed"]
-    assert failed and "is down: robot r1 did not acknowledge" in failed[0].reason
+    assert failed and why in failed[0].reason
     assert run.node.stats.starts == {}  # nothing ever reached the node: nothing ran
 
 

@@ -259,3 +259,38 @@ def test_observers_receive_ros2_poses(loopback: Loopback) -> None:
     assert {k for k, _ in got["humans"]} == {keys.human_pose(h) for h in sc.scene.human_ids}
     assert {k for k, _ in got["hands"]} == {keys.tool_pose(r) for r in sc.scene.robot_ids}
     assert all(p.frame_id == "world" for _, p in got["humans"] + got["hands"])
+
+
+def test_a_steps_commands_ride_its_query(loopback: Loopback) -> None:
+    """Lockstep: no start or halt goes out on its own (nothing on ``…/action``); each rides the
+    query after its step, whose answer acknowledges it: fewer queries than commands plus
+    peeks, and the same log."""
+    import threading
+
+    from hltl.bus.keys import Keys
+
+    trial = make_trial("2-4-line", 0)  # hand-overs: steps with two and more actions
+    heard: list[str] = []
+    lock = threading.Lock()
+
+    def on_action(sample) -> None:  # type: ignore[no-untyped-def]
+        with lock:
+            heard.append(str(sample.key_expr))
+
+    sub = loopback._exec_session.declare_subscriber(Keys("default").all_actions, on_action)
+    try:
+        run = _assert_same(
+            loopback,
+            trial.scene,
+            instruction=trial.instruction,
+            events=trial.events,
+            seed=trial.seed,
+        )
+    finally:
+        sub.undeclare()
+    assert heard == []
+    dispatches = [r for r in run.episode.records if r.type == "dispatch"]
+    starts = [r for r in run.episode.records if r.type == "action_start"]
+    assert len(starts) > len(dispatches)  # some step started several actions at once
+    assert run.node.stats.commands == run.cell.stats.commands >= len(starts)
+    assert run.cell.stats.retransmits == 0

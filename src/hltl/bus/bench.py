@@ -312,8 +312,9 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"| under those faults: dispatches / lost / started twice | "
             f"{b.dispatched} / {b.lost} / {b.duplicated} | 0 lost, 0 twice |",
             "",
-            "The round trip is a start command to a node whose actions end at once, until the "
-            "DONE report is back (one Zenoh put each way, JSON payloads). The suite cycles "
+            "The round trip is a start to a node whose actions end at once, until the DONE "
+            "report is back (in lockstep the start rides the query that follows it: one Zenoh "
+            "query and its answer, JSON payloads). The suite cycles "
             "through the twelve Table II configurations with their dynamic events "
             "(`hltl.sim.dynamic.make_trial`).",
             "",
@@ -325,13 +326,13 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "the executor uses all of it) and sends them, with the actions' reports, in one "
             "answer; the executor consumes them without a round trip, and a command in the "
             "middle makes the node undo the rest (the simulator's state saved before the "
-            "stretch) and replay the ticks used, so the log is unchanged. Hence "
+            "stretch) and replay the ticks used, so the log is unchanged. A step's starts and "
+            "halts ride the query that follows them (no exchange per action). Hence "
             f"{b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % wall). What "
-            "remains is one command/acknowledgement exchange per dispatch, the node's work on "
-            "the bus (JSON of every tick, saving the simulator, the replies) and Zenoh's own "
-            "threads; the node here shares the Python interpreter with the executor, so its "
-            "CPU time adds to the wall time, which a node in its own process would not.",
+            "remains is the node's work on the bus (JSON of every tick, saving and restoring "
+            "the simulator, the replies) and Zenoh's own threads; the node here shares the "
+            "Python interpreter with the executor, so its CPU time adds to the wall time.",
             "",
             *_format_realtime(b.realtime),
         ]

@@ -16,8 +16,8 @@ class FaultModel:
     """What goes wrong with the messages one side publishes.
 
     Attributes:
-        loss: probability that a message is dropped.
-        duplicate: probability that a message is sent twice.
+        loss: probability that a message is dropped (also a query that carries commands).
+        duplicate: probability that a message (or a query) is sent twice.
         reorder: probability that a message is held back so that later ones overtake it.
         delay: seconds every message is late (wall time).
         reply_loss: probability that a node does not answer a query.
@@ -81,6 +81,19 @@ class Link:
         """Whether the next query reply is to be dropped."""
         with self._lock:
             return self.faults.reply_loss > 0 and self._rng.random() < self.faults.reply_loss
+
+    def lost(self) -> bool:
+        """Whether the next request (a query carrying commands) is to be dropped."""
+        with self._lock:
+            if self.faults.loss and self._rng.random() < self.faults.loss:
+                self.dropped += 1
+                return True
+            return False
+
+    def duplicated(self) -> bool:
+        """Whether the next query is to be sent twice."""
+        with self._lock:
+            return self.faults.duplicate > 0 and self._rng.random() < self.faults.duplicate
 
     def put(self, key: str, payload: bytes, attachment: bytes | None = None) -> None:
         f = self.faults

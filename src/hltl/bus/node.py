@@ -61,7 +61,7 @@ class NodeStats:
     finished: int = 0
     starts: dict[int, int] = field(default_factory=dict)
     commands: int = 0
-    duplicates: int = 0
+    duplicates: int = 0  # commands and step requests received again (none acted on twice)
     stale: int = 0
     malformed: int = 0
     trajectories: int = 0  # joint trajectories received
@@ -306,6 +306,10 @@ class CellNode:
     def _on_step(self, query: Any) -> None:
         with self._guard(query):
             d = loads(_payload(query), "step request")
+            if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
+                self.stats.duplicates += 1  # ended already: a copy of the request
+                self._reply(query, {"episode": d.get("episode"), "ended": True})
+                return
             ep = self._episode(d.get("episode"))
             if d.get("end"):
                 if ep.clock is not None:
@@ -324,23 +328,42 @@ class CellNode:
                 )
             n, t = int(d["step"]), float(d["t"])
             if n == ep.last_step and ep.last_reply:  # a retransmitted request: same answer
+                self.stats.duplicates += 1  # its commands are not acted on again
                 self._reply_bytes(query, ep.last_reply)
                 return
             if n != ep.last_step + 1:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
+            commands = self._parse_commands(ep, d.get("commands", []))
             self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
+            # the step's commands, in order, before the clock: as the in-process loop calls them
+            acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
+            status = [a.to_dict() for a in acks if a is not None]
             obs = None
             if d.get("peek"):  # after commands: the clock now, and what follows
-                answer = {"episode": ep.id, "step": n, **self._clock(ep.cell, t)}
+                answer = {"episode": ep.id, "step": n, "status": status, **self._clock(ep.cell, t)}
             else:
                 obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
                 answer = {"episode": ep.id, "step": n, **tick}
+                answer["status"] = status + answer["status"]
             self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
             if obs is not None:
                 self._publish_world(ep.cell, obs, t)
+
+    def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
+        """The commands a step request carries (lockstep: a step's starts and halts ride the
+        next query instead of a message and an acknowledgement each)."""
+        if not isinstance(items, list):
+            raise BusError(f"malformed step request: commands must be a list, got {items!r:.60}")
+        out = [Command.from_dict(c) if isinstance(c, dict) else None for c in items]
+        for cmd in out:
+            if cmd is None or cmd.episode != ep.id:
+                raise BusError("malformed step request: a command of another episode, or none")
+            self.stats.commands += 1
+            ep.max_cmd = max(ep.max_cmd, cmd.seq)
+        return [c for c in out if c is not None]
 
     def _tick(
         self, ep: _Episode, t: float, latest: dict[int, Report], *, publish: bool
@@ -573,39 +596,47 @@ class CellNode:
             if ep.clock is not None:  # real time: the robots act now, on the node's clock
                 t = ep.clock.now()
                 ep.cell.advance(t)
-            h = ep.handles.get(cmd.handle)
-            if cmd.op == "start":
-                if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
-                    self.stats.stale += 1
-                    return
-                if h is not None:  # another robot's copy, or a retransmission: never twice
-                    self.stats.duplicates += 1
-                    self._publish(ep, ep.latest[cmd.handle])
-                    return
-                if cmd.motion:
-                    plan = self._motion(ep, cmd)
-                    if plan is None:  # not all here yet: no acknowledgement, so it comes again
-                        self.stats.waiting += 1
-                        return
-                    h = ep.cell.start(cmd.action, t, motion=plan)
-                else:
-                    h = ep.cell.start(cmd.action, t)
-                ep.handles[cmd.handle] = h
-                ep.by_cell_id[h.id] = cmd.handle
-                self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
-                self._report(ep, cmd.handle, ep.cell.poll(h, t))
-                return
-            if h is None:  # its start never arrived: the executor has written it off
-                ep.cancelled.add(cmd.handle)
+            self._execute(ep, cmd, t, publish=True)
+
+    def _execute(self, ep: _Episode, cmd: Command, t: float, *, publish: bool) -> Report | None:
+        """Start or halt an action at ``t`` (each handle starts at most once); the report that
+        acknowledges it, published when ``publish`` (else the caller answers with it), or
+        ``None`` when there is nothing to acknowledge (yet)."""
+        h = ep.handles.get(cmd.handle)
+        if cmd.op == "start":
+            if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
                 self.stats.stale += 1
-                return
-            prev = ep.latest[cmd.handle]
-            if prev.status.terminal:
+                return None
+            if h is not None:  # another robot's copy, or a retransmission: never twice
                 self.stats.duplicates += 1
-                self._publish(ep, prev)
-                return
-            ep.cell.halt(h, t, cmd.reason)
-            self._report(ep, cmd.handle, ep.cell.poll(h, t))
+                return self._acknowledge(ep, ep.latest[cmd.handle], publish)
+            if cmd.motion:
+                plan = self._motion(ep, cmd)
+                if plan is None:  # not all here yet: no acknowledgement, so it comes again
+                    self.stats.waiting += 1
+                    return None
+                h = ep.cell.start(cmd.action, t, motion=plan)
+            else:
+                h = ep.cell.start(cmd.action, t)
+            ep.handles[cmd.handle] = h
+            ep.by_cell_id[h.id] = cmd.handle
+            self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
+            return self._report(ep, cmd.handle, ep.cell.poll(h, t), publish)
+        if h is None:  # its start never arrived: the executor has written it off
+            ep.cancelled.add(cmd.handle)
+            self.stats.stale += 1
+            return None
+        prev = ep.latest[cmd.handle]
+        if prev.status.terminal:
+            self.stats.duplicates += 1
+            return self._acknowledge(ep, prev, publish)
+        ep.cell.halt(h, t, cmd.reason)
+        return self._report(ep, cmd.handle, ep.cell.poll(h, t), publish)
+
+    def _acknowledge(self, ep: _Episode, rep: Report, publish: bool) -> Report:
+        if publish:
+            self._publish(ep, rep)
+        return rep
 
     def _on_trajectory(self, sample: Any) -> None:
         """A robot's joint trajectory for an action about to start (kept until its start)."""
@@ -659,11 +690,16 @@ class CellNode:
             out.append(rep)
         return out
 
-    def _report(self, ep: _Episode, handle_id: int, status: ActionStatus) -> None:
+    def _report(
+        self, ep: _Episode, handle_id: int, status: ActionStatus, publish: bool = True
+    ) -> Report:
         self._seq += 1
         rep = Report(ep.id, self._seq, handle_id, status)
         ep.latest[handle_id] = rep
-        self._publish(ep, rep)
+        # an outcome goes to observers even when the answer carries it to the executor
+        if publish or status.terminal:
+            self._publish(ep, rep)
+        return rep
 
     def _publish(self, ep: _Episode, rep: Report) -> None:
         payload = rep.encode()

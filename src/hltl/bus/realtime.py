@@ -36,6 +36,8 @@ class RealtimeBusCell(BusCell):
             real time.
     """
 
+    _defer = False  # no step queries: every command goes to the robots at once
+
     def __init__(self, *args: Any, factor: float = 1.0, **kwargs: Any) -> None:
         self.factor = check_factor(factor)
         self.period = float(kwargs.get("tick", EpisodeConfig().tick))
