@@ -9,7 +9,7 @@ from hltl.planner import PlanResult, PlanStatus, plan
 from hltl.planner.anytime import _Neighbourhood, _OrderWalk, construct, goals
 from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.search import _Search, plan_steps
-from hltl.sim.scenarios import generate
+from hltl.sim.scenarios import Scenario, generate
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
@@ -75,17 +75,22 @@ def test_plan_json_round_trips_the_bound() -> None:
     assert res.gap == 0.0  # a 4 x 4 line is proved optimal well inside two seconds
 
 
+def _walk(n: int, layout: str, seed: int) -> tuple[Scenario, Problem, _OrderWalk]:
+    """A generated cell (ordered deliveries), its problem and a walk over priority orders."""
+    sc = generate(n, n, layout, seed)
+    problem = Problem(sc.scene, sc.spec)
+    s = _Search(problem)
+    return sc, problem, _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
+
+
 @pytest.mark.parametrize(("n", "layout", "seed"), [(6, "grid", 0), (8, "line", 1), (8, "grid", 3)])
 def test_order_walk_keeps_only_valid_plans_never_worse_than_the_first(
     n: int, layout: str, seed: int
 ) -> None:
     # ordered specs too: a move that breaks "first A, then B" must be rejected, not routed
-    sc = generate(n, n, layout, seed)
-    problem = Problem(sc.scene, sc.spec)
-    s = _Search(problem)
-    first = construct(problem, s)
+    sc, problem, walk = _walk(n, layout, seed)
+    first = construct(problem, walk.router.s)
     assert first is not None
-    walk = _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
     for _ in range(40):
         walk.step()
         assert walk.gls
@@ -104,10 +109,7 @@ def test_neighbourhood_search_keeps_valid_plans_never_worse_than_its_start(
     n: int, layout: str, seed: int
 ) -> None:
     # ordered specs too: rerouting a goal of "first A, then B" after the other must be rejected
-    sc = generate(n, n, layout, seed)
-    problem = Problem(sc.scene, sc.spec)
-    s = _Search(problem)
-    walk = _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
+    sc, problem, walk = _walk(n, layout, seed)
     assert walk.best is not None
     # the routes kept by the walk give the same plan again when nothing is rerouted
     again = walk.router.replay(walk.router.route_all([], dict(walk.best_routes)) or [])
