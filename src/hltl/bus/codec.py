@@ -51,8 +51,8 @@ class Command:
     reason: str = ""
     motion: tuple[str, ...] = ()  # robots whose joint trajectories were sent for this start
 
-    def encode(self) -> bytes:
-        d = {
+    def to_dict(self) -> dict[str, Any]:
+        d: dict[str, Any] = {
             "episode": self.episode,
             "seq": self.seq,
             "op": self.op,
@@ -63,11 +63,13 @@ class Command:
         }
         if self.motion:
             d["motion"] = list(self.motion)
-        return dumps(d)
+        return d
+
+    def encode(self) -> bytes:
+        return dumps(self.to_dict())
 
     @classmethod
-    def decode(cls, payload: bytes) -> Command:
-        d = loads(payload, "command")
+    def from_dict(cls, d: Mapping[str, Any]) -> Command:
         try:
             op = d["op"]
             if op not in ("start", "halt"):
@@ -84,6 +86,10 @@ class Command:
             )
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed command on the bus: {exc}") from None
+
+    @classmethod
+    def decode(cls, payload: bytes) -> Command:
+        return cls.from_dict(loads(payload, "command"))
 
 
 @dataclass(frozen=True, slots=True)

@@ -98,6 +98,10 @@ class DriverStats:
 class BusCell:
     """A cell served by a :class:`~hltl.bus.node.CellNode`, driven over Zenoh (lockstep time).
 
+    In lockstep a step's starts and halts are not sent one by one: they ride the query that
+    follows them (the peek for the clock after commands), whose answer acknowledges them, so a
+    step costs one round trip however many actions it dispatches.
+
     Args:
         session: an open Zenoh session connected to the node (not closed here).
         scene, events, seed, perception, log: the episode (as for the in-process simulator).
@@ -112,6 +116,9 @@ class BusCell:
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene).
     """
+
+    # commands ride the next step query (lockstep); a real-time cell sends each at once
+    _defer = True
 
     def __init__(
         self,
@@ -154,6 +161,7 @@ class BusCell:
         self._seq = 0
         self._step = 0
         self._dirty = False
+        self._queued: list[Command] = []  # lockstep: commands riding the next step query
         self._instructions: list[str] = []
         self._next = math.inf
         self._pending = False
@@ -309,15 +317,23 @@ class BusCell:
         robots: Sequence[str] = (),
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
+        (A query carrying commands is subject to the executor's message faults, like one.)
 
         Raises:
             BusError: the node answered with an error (it refuses the request).
         """
         payload = dumps(data)
+        commands = bool(data.get("commands"))
         for attempt in self._attempts(self.timing.retries if retries is None else retries, robots):
             if attempt:
                 self.stats.retransmits += 1
             self.stats.queries += 1
+            if commands and self.link.lost():  # it never reaches the node: silence, waited out
+                time.sleep(self.timing.timeout)
+                continue
+            if self.link.duplicated():  # the node must answer a copy without acting twice
+                with contextlib.suppress(Exception):
+                    list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
             t0 = time.perf_counter()
             try:
                 replies = list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
@@ -439,6 +455,12 @@ class BusCell:
             return
         self._confirm()
         self.stats.ticks += 1
+        self._follow(t)
+        self._log_down()
+
+    def _follow(self, t: float) -> None:
+        """Bring what the executor knows of the cell to time ``t``: here the node steps to it
+        (or already did, ahead of the loop) and every report up to then is in."""
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -452,12 +474,12 @@ class BusCell:
             d = d_
             self._take(d)
         self._sync(int(d["reports"]))
-        self._log_down()
 
     def _request(self, t: float, peek: bool = False) -> dict[str, Any] | None:
-        """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands); both
-        say how many look-ahead ticks were used and ask for the next ones."""
-        req = {
+        """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands), with
+        the commands queued since the last request; both say how many look-ahead ticks were
+        used and ask for the next ones."""
+        req: dict[str, Any] = {
             "episode": self.episode,
             "step": self._step + 1,
             "t": t,
@@ -467,10 +489,24 @@ class BusCell:
         }
         if peek:
             req["peek"] = True
+        if self._queued:
+            req["commands"] = [c.to_dict() for c in self._queued]
+            self.stats.commands += len(self._queued)
         d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids)
         if d is not None:
             self._step += 1
+            self._queued = []
         return d
+
+    def _flush(self) -> None:
+        """Ask for the clock after commands, sending the queued ones."""
+        sent = bool(self._queued)
+        d = self._request(self.now, peek=True)
+        if d is None:
+            what = "did not acknowledge the step's commands" if sent else "stopped answering"
+            self._lose_all(f"the simulator node {what} at t={self.now:.2f}")
+        else:
+            self._take(d)
 
     def observe(self, t: float | None = None) -> WorldState:
         if self._obs is None:
@@ -487,11 +523,9 @@ class BusCell:
         if self._dead:
             return math.inf
         if self._dirty:
-            d = self._request(self.now, peek=True)
-            if d is None:
-                self._lose_all(f"the simulator node stopped answering at t={self.now:.2f}")
+            self._flush()
+            if self._dead:
                 return math.inf
-            self._take(d)
         return max(self.now, self._next)
 
     def pending_instructions(self) -> bool:
@@ -542,6 +576,11 @@ class BusCell:
                     )
         self._dirty = True
         self._ahead = []  # simulated without this command: the node undoes them
+        if not sends and self._defer:
+            self._queue("start", handle, t)
+            return handle
+        if self._queued:  # the trajectories' start goes on its own: what came first, first
+            self._flush()
         if not self._command(
             "start",
             handle,
@@ -555,6 +594,8 @@ class BusCell:
 
     def poll(self, handle: Handle, t: float) -> ActionStatus:
         hid = handle.id
+        if any(c.handle == hid for c in self._queued):  # its command has not gone yet
+            self._flush()
         with self._cond:
             st = self._status(hid)
             if st is not None and st.terminal:
@@ -577,8 +618,17 @@ class BusCell:
             return
         self._dirty = True
         self._ahead = []
+        if self._defer:
+            self._queue("halt", handle, t, reason)
+            return
         if not self._command("halt", handle, t, lambda s: s.terminal, reason):
             self._give_up_on(handle, t, "did not confirm the halt")
+
+    def _queue(self, op: Op, handle: Handle, t: float, reason: str = "") -> None:
+        self._seq += 1
+        self._queued.append(
+            Command(self.episode, self._seq, op, handle.id, handle.action, t, reason)
+        )
 
     def _command(
         self,

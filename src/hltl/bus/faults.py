@@ -16,8 +16,8 @@ class FaultModel:
     """What goes wrong with the messages one side publishes.
 
     Attributes:
-        loss: probability that a message is dropped.
-        duplicate: probability that a message is sent twice.
+        loss: probability that a message is dropped (also a query that carries commands).
+        duplicate: probability that a message (or a query) is sent twice.
         reorder: probability that a message is held back so that later ones overtake it.
         delay: seconds every message is late (wall time).
         reply_loss: probability that a node does not answer a query.
@@ -70,6 +70,7 @@ class Link:
         self._closed = False
         self.sent = 0
         self.dropped = 0
+        self.held = 0  # messages held back for later ones to overtake
         self._thread: threading.Thread | None = None
         if self.faults.delay > 0 or self.faults.reorder > 0:
             self._thread = threading.Thread(
@@ -82,6 +83,19 @@ class Link:
         with self._lock:
             return self.faults.reply_loss > 0 and self._rng.random() < self.faults.reply_loss
 
+    def lost(self) -> bool:
+        """Whether the next request (a query carrying commands) is to be dropped."""
+        with self._lock:
+            if self.faults.loss and self._rng.random() < self.faults.loss:
+                self.dropped += 1
+                return True
+            return False
+
+    def duplicated(self) -> bool:
+        """Whether the next query is to be sent twice."""
+        with self._lock:
+            return self.faults.duplicate > 0 and self._rng.random() < self.faults.duplicate
+
     def put(self, key: str, payload: bytes, attachment: bytes | None = None) -> None:
         f = self.faults
         with self._lock:
@@ -89,7 +103,9 @@ class Link:
                 self.dropped += 1
                 return
             copies = 2 if f.duplicate and self._rng.random() < f.duplicate else 1
-            late = f.delay + (REORDER_HOLD if f.reorder and self._rng.random() < f.reorder else 0.0)
+            hold = bool(f.reorder) and self._rng.random() < f.reorder
+            self.held += hold
+            late = f.delay + (REORDER_HOLD if hold else 0.0)
             if self._thread is None:
                 for _ in range(copies):
                     self._send(key, payload, attachment)

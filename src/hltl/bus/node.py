@@ -30,7 +30,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError, HltlError
-from hltl.execution.drivers import ActionStatus, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
@@ -42,6 +42,8 @@ from hltl.world.state import WorldState
 
 # most ticks ahead of the executor a node simulates in one answer
 MAX_AHEAD = 256
+# the first look-ahead span, and the least after a command cut one
+SPAN0 = 16
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -61,7 +63,7 @@ class NodeStats:
     finished: int = 0
     starts: dict[int, int] = field(default_factory=dict)
     commands: int = 0
-    duplicates: int = 0
+    duplicates: int = 0  # commands and step requests received again (none acted on twice)
     stale: int = 0
     malformed: int = 0
     trajectories: int = 0  # joint trajectories received
@@ -85,7 +87,7 @@ class _Episode:
     last_step: int = 0
     last_reply: bytes = b""
     batch: _Batch | None = None
-    span: int = 8  # ticks to run ahead next: doubles while the executor uses them all
+    span: int = SPAN0  # ticks to run ahead next: doubles while the executor uses them all
     max_cmd: int = 0  # the highest command number seen (older ones are retransmissions)
     # joint trajectories received per handle and robot, with the plan's events and duration
     trajectories: dict[int, dict[str, JointTrajectory]] = field(default_factory=dict)
@@ -306,6 +308,10 @@ class CellNode:
     def _on_step(self, query: Any) -> None:
         with self._guard(query):
             d = loads(_payload(query), "step request")
+            if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
+                self.stats.duplicates += 1  # ended already: a copy of the request
+                self._reply(query, {"episode": d.get("episode"), "ended": True})
+                return
             ep = self._episode(d.get("episode"))
             if d.get("end"):
                 if ep.clock is not None:
@@ -324,23 +330,42 @@ class CellNode:
                 )
             n, t = int(d["step"]), float(d["t"])
             if n == ep.last_step and ep.last_reply:  # a retransmitted request: same answer
+                self.stats.duplicates += 1  # its commands are not acted on again
                 self._reply_bytes(query, ep.last_reply)
                 return
             if n != ep.last_step + 1:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
+            commands = self._parse_commands(ep, d.get("commands", []))
             self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
+            # the step's commands, in order, before the clock: as the in-process loop calls them
+            acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
+            status = [a.to_dict() for a in acks if a is not None]
             obs = None
             if d.get("peek"):  # after commands: the clock now, and what follows
-                answer = {"episode": ep.id, "step": n, **self._clock(ep.cell, t)}
+                answer = {"episode": ep.id, "step": n, "status": status, **self._clock(ep.cell, t)}
             else:
                 obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
                 answer = {"episode": ep.id, "step": n, **tick}
+                answer["status"] = status + answer["status"]
             self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
             if obs is not None:
                 self._publish_world(ep.cell, obs, t)
+
+    def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
+        """The commands a step request carries (lockstep: a step's starts and halts ride the
+        next query instead of a message and an acknowledgement each)."""
+        if not isinstance(items, list):
+            raise BusError(f"malformed step request: commands must be a list, got {items!r:.60}")
+        out = [Command.from_dict(c) if isinstance(c, dict) else None for c in items]
+        for cmd in out:
+            if cmd is None or cmd.episode != ep.id:
+                raise BusError("malformed step request: a command of another episode, or none")
+            self.stats.commands += 1
+            ep.max_cmd = max(ep.max_cmd, cmd.seq)
+        return [c for c in out if c is not None]
 
     def _tick(
         self, ep: _Episode, t: float, latest: dict[int, Report], *, publish: bool
@@ -468,7 +493,7 @@ class CellNode:
                 batch.ticks.append((t_next, obs, reports))
                 t, nxt = t_next, tick["next"]
                 if (
-                    any(r.status.terminal for r in reports)
+                    _may_act(reports, batch.latest)
                     or tick["instructions"]
                     or tick["unavailable"] != unavailable
                     or t >= ahead.max_time - 1e-9
@@ -508,7 +533,11 @@ class CellNode:
             raise BusError(f"{consumed} ticks consumed of a batch of {len(b.ticks)}")
         # quiet stretches are long, and a command cuts one anywhere: grow the span while the
         # executor uses every tick (few round trips), shrink it to what it used (little undone)
-        ep.span = min(MAX_AHEAD, max(8, 2 * consumed))
+        if consumed < len(b.ticks):  # a command cut it
+            ep.span = max(SPAN0, 2 * consumed)
+        elif len(b.ticks) >= ep.span:  # used all of a full span: grow it
+            ep.span = min(MAX_AHEAD, 2 * ep.span)
+        # (a stretch that ended at an event and was used whole says nothing about the span)
         if consumed == len(b.ticks):  # all of it: the cell is already there
             ep.latest, self._seq = b.latest, b.seq
         else:
@@ -573,39 +602,47 @@ class CellNode:
             if ep.clock is not None:  # real time: the robots act now, on the node's clock
                 t = ep.clock.now()
                 ep.cell.advance(t)
-            h = ep.handles.get(cmd.handle)
-            if cmd.op == "start":
-                if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
-                    self.stats.stale += 1
-                    return
-                if h is not None:  # another robot's copy, or a retransmission: never twice
-                    self.stats.duplicates += 1
-                    self._publish(ep, ep.latest[cmd.handle])
-                    return
-                if cmd.motion:
-                    plan = self._motion(ep, cmd)
-                    if plan is None:  # not all here yet: no acknowledgement, so it comes again
-                        self.stats.waiting += 1
-                        return
-                    h = ep.cell.start(cmd.action, t, motion=plan)
-                else:
-                    h = ep.cell.start(cmd.action, t)
-                ep.handles[cmd.handle] = h
-                ep.by_cell_id[h.id] = cmd.handle
-                self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
-                self._report(ep, cmd.handle, ep.cell.poll(h, t))
-                return
-            if h is None:  # its start never arrived: the executor has written it off
-                ep.cancelled.add(cmd.handle)
+            self._execute(ep, cmd, t, publish=True)
+
+    def _execute(self, ep: _Episode, cmd: Command, t: float, *, publish: bool) -> Report | None:
+        """Start or halt an action at ``t`` (each handle starts at most once); the report that
+        acknowledges it, published when ``publish`` (else the caller answers with it), or
+        ``None`` when there is nothing to acknowledge (yet)."""
+        h = ep.handles.get(cmd.handle)
+        if cmd.op == "start":
+            if cmd.handle in ep.cancelled:  # written off by the executor before it arrived
                 self.stats.stale += 1
-                return
-            prev = ep.latest[cmd.handle]
-            if prev.status.terminal:
+                return None
+            if h is not None:  # another robot's copy, or a retransmission: never twice
                 self.stats.duplicates += 1
-                self._publish(ep, prev)
-                return
-            ep.cell.halt(h, t, cmd.reason)
-            self._report(ep, cmd.handle, ep.cell.poll(h, t))
+                return self._acknowledge(ep, ep.latest[cmd.handle], publish)
+            if cmd.motion:
+                plan = self._motion(ep, cmd)
+                if plan is None:  # not all here yet: no acknowledgement, so it comes again
+                    self.stats.waiting += 1
+                    return None
+                h = ep.cell.start(cmd.action, t, motion=plan)
+            else:
+                h = ep.cell.start(cmd.action, t)
+            ep.handles[cmd.handle] = h
+            ep.by_cell_id[h.id] = cmd.handle
+            self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
+            return self._report(ep, cmd.handle, ep.cell.poll(h, t), publish)
+        if h is None:  # its start never arrived: the executor has written it off
+            ep.cancelled.add(cmd.handle)
+            self.stats.stale += 1
+            return None
+        prev = ep.latest[cmd.handle]
+        if prev.status.terminal:
+            self.stats.duplicates += 1
+            return self._acknowledge(ep, prev, publish)
+        ep.cell.halt(h, t, cmd.reason)
+        return self._report(ep, cmd.handle, ep.cell.poll(h, t), publish)
+
+    def _acknowledge(self, ep: _Episode, rep: Report, publish: bool) -> Report:
+        if publish:
+            self._publish(ep, rep)
+        return rep
 
     def _on_trajectory(self, sample: Any) -> None:
         """A robot's joint trajectory for an action about to start (kept until its start)."""
@@ -659,11 +696,16 @@ class CellNode:
             out.append(rep)
         return out
 
-    def _report(self, ep: _Episode, handle_id: int, status: ActionStatus) -> None:
+    def _report(
+        self, ep: _Episode, handle_id: int, status: ActionStatus, publish: bool = True
+    ) -> Report:
         self._seq += 1
         rep = Report(ep.id, self._seq, handle_id, status)
         ep.latest[handle_id] = rep
-        self._publish(ep, rep)
+        # an outcome goes to observers even when the answer carries it to the executor
+        if publish or status.terminal:
+            self._publish(ep, rep)
+        return rep
 
     def _publish(self, ep: _Episode, rep: Report) -> None:
         payload = rep.encode()
@@ -796,6 +838,19 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
+
+
+def _may_act(reports: list[Report], latest: dict[int, Report]) -> bool:
+    """Whether the executor may act on these reports: an action failed or was halted (it
+    replans), or the last open action ended (its step is over). One action of a step ending
+    while another still runs changes nothing it does (it waits for the step), so the node
+    simulates on; a wrong guess costs undoing ticks, not a round trip."""
+    ended = [r for r in reports if r.status.terminal]
+    if not ended:
+        return False
+    if any(r.status.state is not ActionState.DONE for r in ended):
+        return True
+    return all(r.status.terminal for r in latest.values())
 
 
 def _payload(query: Any) -> bytes:

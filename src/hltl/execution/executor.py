@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import math
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -181,6 +182,10 @@ class ExecutorConfig:
             raise ValueError(f"anticipate_votes must be in [0, 1], got {self.anticipate_votes!r}")
 
 
+# an infeasible world: context, robots down, spec version, people standing still
+_BlockedKey = tuple[Context, frozenset[str], int, tuple[tuple[str, Vec3], ...]]
+
+
 @dataclass(slots=True)
 class _Running:
     action: Action
@@ -248,7 +253,7 @@ class Executor(TickTemplate):
         self._plan: PlanResult | None = None
         self._plan_ctx: Context | None = None
         self._plan_unavailable: frozenset[str] = frozenset()
-        self._blocked: tuple[Context, frozenset[str], int] | None = None
+        self._blocked: _BlockedKey | None = None
         self._running: list[_Running] = []
         self._steps = 0
         self._trigger = Triggers()
@@ -616,10 +621,10 @@ class Executor(TickTemplate):
             return Phase.BUSY
         if self.belief.reobserving:
             return Phase.REOBSERVING
-        ctx = self.world.context(self.scene)
+        ctx = self.semantics.context(self.world)
         down = self.world.unavailable
         if self._plan is None or self._trigger:
-            unchanged = self._blocked == (ctx, down, self._spec_version)
+            unchanged = self._blocked == self._blocked_key(ctx)
             if self._plan is None and not self._trigger and unchanged:
                 return Phase.BLOCKED
             return Phase.REPLAN
@@ -649,7 +654,7 @@ class Executor(TickTemplate):
                 return
             if self._anticipate():
                 return
-            ctx = self.world.context(self.scene)
+            ctx = self.semantics.context(self.world)
             if phase is Phase.STALE_PLAN:
                 self._trigger.add(Trigger.CONTEXT if ctx != self._plan_ctx else Trigger.ROBOTS)
                 continue
@@ -675,6 +680,8 @@ class Executor(TickTemplate):
         blocked: list[Hazard] = []
         for a in step.actions:
             h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
+            if h is None:
+                h = self._no_motion(a)
             if h is not None:
                 blocked.append(h)
                 continue
@@ -697,6 +704,14 @@ class Executor(TickTemplate):
             return False
         self._dispatch(ok, step)
         return not self._running
+
+    def _no_motion(self, action: Action) -> Hazard | None:
+        """The cost model has no motion for ``action`` from where the hands are (INFEASIBLE):
+        it must not be dispatched."""
+        tr = self._transition(action, self.world)
+        if math.isfinite(self.cost.duration(action, tr, dict(self.world.hands))):
+            return None
+        return Hazard(action, "precondition", f"{action}: no motion plan from where the hands are")
 
     def _dispatch_risk(self, action: Action) -> Hazard | None:
         if not self._intrusion_on():
@@ -823,10 +838,24 @@ class Executor(TickTemplate):
             self._give_up(f"planner timeout: {result.reason}")
             return False
         # infeasible now; people may come back, robots may return: wait for a change
-        self._blocked = (ctx, self.world.unavailable, self._spec_version)
+        self._blocked = self._blocked_key(ctx)
         self._wait(f"no plan in the current world: {result.reason}")
         self._wait_or_give_up(check_only=True)
         return False
+
+    def _blocked_key(self, ctx: Context) -> _BlockedKey:
+        """What an infeasible world is remembered by: a new plan is sought when it changes.
+        With durations from motion plans a hand-over to a person depends on where they stand,
+        not only on whose workspace holds them: then people who stand still count too (to
+        the centimetre; a walking person counts once they stop, not at every step)."""
+        still: tuple[tuple[str, Vec3], ...] = ()
+        if not self.cost.fixed:
+            still = tuple(
+                (h, (round(p[0], 2), round(p[1], 2), round(p[2], 2)))
+                for h, p in self.world.humans
+                if self.predictor is None or not self.predictor.moving(h)
+            )
+        return (ctx, self.world.unavailable, self._spec_version, still)
 
     def _planner_charge(
         self, trigger: str, expanded: int, wall_s: float, motion_s: float = 0.0
@@ -891,8 +920,8 @@ class Executor(TickTemplate):
         if not moving:
             return
         w_pred = predicted_world(self.world, moving)
-        ctx_pred = w_pred.context(self.scene)
-        if ctx_pred == self.world.context(self.scene):
+        ctx_pred = self.semantics.context(w_pred)
+        if ctx_pred == self.semantics.context(self.world):
             return
         bases: list[tuple[str, WorldState, MonitorState]] = [("now", self.world, self.q)]
         after = self._after_running()
@@ -938,8 +967,8 @@ class Executor(TickTemplate):
         ):
             return False
         wp = predicted_world(self.world, moving)
-        ctx_pred = wp.context(self.scene)
-        if ctx_pred == self.world.context(self.scene):
+        ctx_pred = self.semantics.context(wp)
+        if ctx_pred == self.semantics.context(self.world):
             return False
         if self._plan is not None and self._survives_forecast(self._plan, moving):
             return False  # the plan in hand finishes its hand-overs before people leave

@@ -119,12 +119,12 @@ def intrusion_hazard(
     times = horizon_times(t, until - t, dt)
     tracks = {h: predictor.predict(h, times) for h in movers}
     sem = ActionSemantics.of(scene) if semantics is None else semantics
-    current = world.context(scene)
+    current = sem.context(world)
     for k, tau in enumerate(times):
         w = world
         for h in movers:
             w = w.with_human(h, tracks[h][k])
-        if w.context(scene) == current:
+        if sem.context(w) == current:
             continue
         reason = sem.check(action, w)
         if reason is not None:

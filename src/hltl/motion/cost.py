@@ -19,7 +19,7 @@ from hltl.motion.planning import (
 )
 from hltl.motion.trajectory import MotionPlan
 from hltl.motion.workspace import MapKinematics
-from hltl.skills.cost import DEFAULT_SPEED, AnalyticCostModel
+from hltl.skills.cost import DEFAULT_SPEED, INFEASIBLE, AnalyticCostModel
 from hltl.skills.library import Action, Transition
 from hltl.world.scene import Scene, Vec3
 
@@ -40,14 +40,15 @@ class MotionCostModel:
     each distinct motion once. ``lower_bound`` is the instance's dwell time (closing, opening or
     exchanging), which no motion can beat.
 
-    An instance with no motion plan (the maps say reachable, but IK or collisions disagree) gets
-    ``infeasible_cost`` seconds, so the search avoids it without losing exactness elsewhere.
+    An instance with no motion plan from the given hands (the maps say reachable, but IK or
+    collisions disagree) lasts ``math.inf`` (:data:`~hltl.skills.cost.INFEASIBLE`): the planner
+    drops that step, the executor does not dispatch it and the discrete simulator fails it —
+    never a large finite time a search would happily pay.
     """
 
     cell: Cell
     humans: Mapping[str, Vec3] | None = None
     candidates: int = 2
-    infeasible_cost: float = 1e3
     plans: dict[tuple[Action, tuple[tuple[str, Any], ...]], SkillMotion] = field(
         default_factory=dict
     )
@@ -75,7 +76,7 @@ class MotionCostModel:
             return self._fallback.duration(action, transition, hands)
         motion = self.motion(action, transition, hands)
         if motion.plan is None:
-            return self.infeasible_cost
+            return INFEASIBLE
         return max(motion.plan.duration, self.lower_bound(action, transition))
 
     def motion_plan(
@@ -94,8 +95,9 @@ class MotionCostModel:
             (rid, _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base)))
             for rid in action.robots
         )
-        human_at = None
-        if action.human is not None and self.humans is not None:
+        # where the person stands now (the transition's), not where the scene put them first
+        human_at = transition.human_at
+        if human_at is None and action.human is not None and self.humans is not None:
             human_at = self.humans.get(action.human)
         # where the person stands shapes a hand-over's motion, and where the hands end (a pick
         # from the table or from a surface) a pick's: both are part of the key, or the plan

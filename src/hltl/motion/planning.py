@@ -43,6 +43,9 @@ GRASP_DWELL = 0.3
 RELEASE_DWELL = 0.3
 EXCHANGE_DWELL = 0.4
 PRE_GRASP = 0.10  # m back along the approach before closing on an object
+# goal sets (hand-over position x grasp pair) a robot-to-robot hand-over tries before it is
+# called infeasible: the best k first, then the rest of a sample of this many
+R2R_MAX_CANDIDATES = 32
 
 
 @dataclass(frozen=True, slots=True)
@@ -394,6 +397,53 @@ def _noop(_: int) -> int:
     return 0
 
 
+def plan_r2r(
+    cell: Cell,
+    action: Action,
+    q: Mapping[str, Joints],
+    *,
+    planner: CandidatePlanner | None = None,
+    k: int = 8,
+) -> SkillMotion:
+    """The best of the ``k`` best goal sets; when none of them has a motion plan, the further
+    goal sets of a larger sample (up to R2R_MAX_CANDIDATES), ``k`` at a time, until one does.
+
+    The top-ranked goal sets sit near the centre of the shared region, where a hand orientation
+    can put a wrist into a singularity on the approach line (the realworld T1 cell: the
+    Elfin-3's joint 5 passes through 0 backing off from the centre); that is no reason to call
+    the hand-over infeasible while other goal sets remain.
+    """
+    t0 = time.perf_counter()
+    cands = r2r_candidates(cell, action, q, k=k)
+    if not cands:
+        return SkillMotion(action, None, "the two arms share no reachable region", (), 0.0)
+    cp = planner or CandidatePlanner(cell)
+    tried = {(c.position, c.giver_grasp, c.receiver_grasp) for c in cands}
+    best, results = cp.plan(action, q, cands)
+    if best is None and k < R2R_MAX_CANDIDATES:
+        more = [
+            c
+            for c in r2r_candidates(cell, action, q, k=R2R_MAX_CANDIDATES)
+            if (c.position, c.giver_grasp, c.receiver_grasp) not in tried
+        ]
+        for i in range(0, len(more), k):
+            best, batch = cp.plan(action, q, more[i : i + k])
+            results.extend(batch)
+            if best is not None:
+                break
+    if best is None:
+        reasons = sorted({r.reason for r in results if r.reason})
+        why = "; ".join(reasons) if reasons else "no candidate"
+        return SkillMotion(
+            action,
+            None,
+            f"no goal set of {len(results)} has a motion plan ({why})",
+            (),
+            time.perf_counter() - t0,
+        )
+    return best
+
+
 # -- one action -----------------------------------------------------------------------------------
 
 
@@ -453,14 +503,5 @@ def plan_action(
         at = scene.human(action.human).position if human_at is None else human_at
         return plan_r2h_action(cell, action, qq, at)
     if action.skill == "handover_r2r":
-        cands = r2r_candidates(cell, action, qq, k=k)
-        if not cands:
-            return SkillMotion(action, None, "the two arms share no reachable region", (), 0.0)
-        cp = planner or CandidatePlanner(cell)
-        best, results = cp.plan(action, qq, cands)
-        if best is None:
-            return SkillMotion(
-                action, None, results[-1].reason if results else "no candidate", (), 0.0
-            )
-        return best
+        return plan_r2r(cell, action, qq, planner=planner, k=k)
     raise ValueError(f"no motion planner for skill {action.skill!r}")

@@ -262,7 +262,10 @@ class _Router:
                 if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
                     return None
             step = tuple(sorted(U, key=lambda i: i.index))
-            cost, child = s.apply(node, step)
+            applied = s.apply(node, step)
+            if applied is None:  # an instance has no motion from these hands
+                return None
+            cost, child = applied
             chain.append((node, step, cost))
             total += cost
             node = child

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -235,8 +236,9 @@ class Problem:
             self._dist[key] = d
         return d
 
-    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> int:
-        """The instance's duration in ticks when the hands start at ``hands``."""
+    def duration(self, inst: Instance, hands: tuple[int, ...] | None) -> int | None:
+        """The instance's duration in ticks when the hands start at ``hands``; ``None`` when the
+        cost model says it cannot be done from there (``math.inf``: no motion plan)."""
         if hands is None:
             return inst.lower
         if self.speeds:
@@ -245,7 +247,8 @@ class Problem:
                 t = max(t, self.travel(hands[r], p) / self.speeds[r])
             return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
-        return to_ticks(self.cost.duration(inst.action, self._transitions[inst.action], start))
+        d = self.cost.duration(inst.action, self._transitions[inst.action], start)
+        return to_ticks(d) if math.isfinite(d) else None
 
 
 # An instance up to its object: what it needs, what it does, who does it and how long it takes.

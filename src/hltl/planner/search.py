@@ -160,7 +160,11 @@ class _Search:
                     and all(
                         not inst.executors & e
                         and not m >> inst.obj & 1
-                        and (inst.lower if hands is None else p.duration(inst, hands)) <= d
+                        and (
+                            inst.lower <= d
+                            if hands is None
+                            else _at_most(p.duration(inst, hands), d)
+                        )
                         for e, m, d in tags
                     )
                 )
@@ -209,7 +213,10 @@ class _Search:
                     new_locs[inst.obj] = inst.post
                 child: Node = (tuple(new_locs), None, monitor_step(q, events))  # type: ignore[assignment]
             else:
-                cost, child = self.apply(node, chosen)
+                applied = self.apply(node, chosen)
+                if applied is None:  # a chosen instance has no motion from these hands
+                    continue
+                cost, child = applied
             if not chosen and child[2] == q:
                 continue
             # the node is canonical and a step that moves no twin keeps it so (a leaf firing
@@ -222,9 +229,10 @@ class _Search:
             else:
                 yield chosen, cost, child, (used, moved, cost), None
 
-    def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node]:
+    def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node] | None:
         """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
-        node after it."""
+        node after it; ``None`` when an instance of it cannot be done from the node's hands
+        (the cost model found no motion)."""
         locs, hands, q = node
         p = self.p
         new_locs = list(locs)
@@ -244,6 +252,8 @@ class _Search:
             new_locs[inst.obj] = inst.post
             events |= inst.event_bits
             d = p.duration(inst, hands)
+            if d is None:
+                return None
             if d > cost:
                 cost = d
             for r, pt in inst.hands:
@@ -425,6 +435,11 @@ def _infeasible(
     return PlanResult(PlanStatus.INFEASIBLE, stats=stats, reason=explain_infeasible(problem))
 
 
+def _at_most(d: int | None, bound: int) -> bool:
+    """A duration fits ``bound`` (an infeasible instance, ``None``, fits nothing)."""
+    return d is not None and d <= bound
+
+
 def _relabel(mask: int, perm: tuple[int, ...]) -> int:
     """An object bit mask in the labels after ``perm``."""
     out = 0
@@ -457,8 +472,9 @@ def _reconstruct(
     node = problem.start()
     for _, U, cost, perm in chain:
         real_U = tuple(symmetry.counterpart(i, real[i.obj]) for i in U)
-        real_cost, child = s.apply(node, real_U)
-        assert real_cost == cost  # a relabelling changes no duration
+        applied = s.apply(node, real_U)
+        assert applied is not None and applied[0] == cost  # a relabelling changes no duration
+        child = applied[1]
         out.append((node, real_U, cost))
         node = child
         if perm is not None:

@@ -443,6 +443,11 @@ class Simulator:
             duration = self.cost.duration(action, _still(action, world), hands0)
         else:
             duration = self.cost.duration(action, tr, hands0)
+        # the cost model has no motion for it from these hands (INFEASIBLE): the arms cannot
+        # do it, so it fails at once, as on a busy robot
+        no_motion = not math.isfinite(duration)
+        if no_motion:
+            duration = 0.0
         act = _SimAction(
             handle=handle,
             duration=duration,
@@ -460,6 +465,11 @@ class Simulator:
             why = "busy" if busy else "unavailable"
             act.status = ActionStatus(
                 ActionState.FAILED, 0.0, self.now, f"robot {', '.join(busy or down)} is {why}"
+            )
+            return handle
+        if no_motion:
+            act.status = ActionStatus(
+                ActionState.FAILED, 0.0, self.now, f"{action}: no motion from where the hands are"
             )
             return handle
         for r in action.robots:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
@@ -12,6 +13,9 @@ from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 
 DEFAULT_SPEED = 0.5  # m/s, hand speed of a collaborative arm near people
+# d(s, a) of an instance that cannot be executed from the given hands (a motion model found no
+# motion): the planner drops such a step, the executor does not dispatch it, the simulator fails it
+INFEASIBLE = math.inf
 
 
 class CostModel(Protocol):
@@ -21,7 +25,8 @@ class CostModel(Protocol):
     def fixed(self) -> bool: ...
 
     def duration(self, action: Action, transition: Transition, hands: Mapping[str, Vec3]) -> float:
-        """Seconds the instance takes when each executor's hand starts at ``hands[robot]``."""
+        """Seconds the instance takes when each executor's hand starts at ``hands[robot]``;
+        :data:`INFEASIBLE` (``math.inf``) when it cannot be done from there."""
         ...
 
     def lower_bound(self, action: Action, transition: Transition) -> float:

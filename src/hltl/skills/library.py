@@ -61,7 +61,8 @@ class Action:
 class Transition:
     """Post(s, a) for one object: it moves from ``pre`` to ``post``; robots in ``free`` must hold
     nothing before the step; ``events`` are the atoms the step makes true; ``hands`` says where
-    each executor's hand ends up."""
+    each executor's hand ends up; ``human_at``, for a hand-over to a person, where they stand
+    (a motion model plans the arm towards them there)."""
 
     obj: str
     pre: Loc
@@ -69,6 +70,7 @@ class Transition:
     free: tuple[str, ...]
     events: frozenset[Atom]
     hands: tuple[tuple[str, Vec3], ...]
+    human_at: Vec3 | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -278,7 +280,8 @@ class HandoverR2H(Skill):
         (r,) = robots
         if r.id not in sit.context.robots_serving(action.human):
             return
-        point = sit.kinematics.human_handover_point(r, sit.human_position(action.human))
+        at = sit.human_position(action.human)
+        point = sit.kinematics.human_handover_point(r, at)
         yield Transition(
             action.object,
             Loc("held", r.id),
@@ -286,6 +289,7 @@ class HandoverR2H(Skill):
             (),
             frozenset({Atom("delivered", (action.object, action.human))}),
             ((r.id, point),),
+            human_at=at,
         )
 
 

@@ -9,6 +9,7 @@ from typing import Literal
 from hltl.skills.cost import CostModel, cost_model_for
 from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.skills.library import DEFAULT_SKILLS, Action, Situation, Skill, Transition, ground
+from hltl.world.geometry import Context
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
@@ -66,6 +67,11 @@ class ActionSemantics:
 
     def situation(self, world: WorldState) -> Situation:
         return Situation.of(self.scene, world, self.kinematics)
+
+    def context(self, world: WorldState) -> Context:
+        """ℓ(w) by these kinematics (reachability maps when the scene's arms have models; the
+        reach spheres of ``WorldState.context`` otherwise): the label the planner plans under."""
+        return self.kinematics.context_label(self.scene, world.humans)
 
     def instances(self, world: WorldState) -> tuple[tuple[Action, Transition], ...]:
         """Every ground instance whose situation-dependent precondition holds in ``world``."""
