@@ -9,7 +9,8 @@ import pytest
 pytest.importorskip("zenoh")
 pytest.importorskip("rosbags")
 
-from tests.bus.helpers import Loopback, free_endpoint
+from hltl.bus.session import free_endpoint
+from tests.bus.helpers import Loopback
 
 
 @pytest.fixture

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import socket
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import partial
@@ -16,14 +15,6 @@ from hltl.bus.session import BusConfig, open_session
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import Episode, run_episode
 from hltl.world.scene import Scene
-
-
-def free_endpoint() -> str:
-    """A loopback TCP endpoint nobody listens on (the OS picks the port)."""
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    return f"tcp/127.0.0.1:{port}"
 
 
 def without_wall_clock(x: Any) -> Any:

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 from hltl.bus.bench import bench_bus, format_bus
-from tests.bus.helpers import free_endpoint
+from hltl.bus.session import free_endpoint
 
 
 def test_bench_bus_small() -> None:
     b = bench_bus(free_endpoint(), round_trips=20, episodes=1)
     assert b.same_logs == 1 and b.fault_same_logs == 1
+    # the node in a process of its own: the same log, and its CPU time comes back
+    assert b.apart.same_logs == 1 and b.apart.bus_s > 0 and b.apart.node_cpu_s > 0
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
@@ -17,3 +19,4 @@ def test_bench_bus_small() -> None:
     assert 0 <= r.lag_ms[0] <= r.lag_ms[1] <= r.lag_ms[2]
     text = format_bus(b, "hltl bench bus", "2026-01-01", "test")
     assert "## Bus" in text and "1/1" in text and "### Real time" in text
+    assert "process of its own" in text

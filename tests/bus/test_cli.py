@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from hltl.bus.session import free_endpoint
 from hltl.cli.main import main
-from tests.bus.helpers import free_endpoint
 
 ROOT = Path(__file__).resolve().parents[2]
 FIG1 = str(ROOT / "examples" / "scenes" / "fig1.yaml")

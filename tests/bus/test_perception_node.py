@@ -125,9 +125,8 @@ def test_a_bus_cell_fuses_the_perception_node_into_its_observations(
 
 
 def test_cli_node_perception_publishes_every_frame(tmp_path: Path) -> None:
-    from hltl.bus.session import BusConfig, open_session
+    from hltl.bus.session import BusConfig, free_endpoint, open_session
     from hltl.cli.main import main
-    from tests.bus.helpers import free_endpoint
 
     frames = _folder(tmp_path)
     scene_file = tmp_path / "scene.json"

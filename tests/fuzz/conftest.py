@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import contextlib
 import io
-import signal
 import tracemalloc
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from types import FrameType
 
 import pytest
 
+from hltl.bench.soak import alarm
 from hltl.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -38,20 +37,6 @@ class Hang(Exception):
     """The case ran longer than HANG_SECONDS."""
 
 
-@contextlib.contextmanager
-def _deadline(seconds: int) -> Iterator[None]:
-    def stop(signum: int, frame: FrameType | None) -> None:
-        raise Hang(f"still running after {seconds} s")
-
-    old = signal.signal(signal.SIGALRM, stop)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
-
-
 def run_cli(argv: Sequence[str], *, measure: bool = True) -> Outcome:
     """``hltl ARGV`` in this process, with its output captured and its peak memory measured."""
     out, err = io.StringIO(), io.StringIO()
@@ -59,7 +44,7 @@ def run_cli(argv: Sequence[str], *, measure: bool = True) -> Outcome:
         tracemalloc.start()
     try:
         with (
-            _deadline(HANG_SECONDS),
+            alarm(HANG_SECONDS, lambda: Hang(f"still running after {HANG_SECONDS} s")),
             contextlib.redirect_stdout(out),
             contextlib.redirect_stderr(err),
         ):

@@ -102,6 +102,22 @@ class _Hang(Exception):
 
 
 @contextmanager
+def alarm(seconds: int, exc: Callable[[], BaseException]) -> Iterator[None]:
+    """Raise ``exc()`` in the main thread after ``seconds`` of wall clock (SIGALRM)."""
+
+    def stop(signum: int, frame: FrameType | None) -> None:
+        raise exc()
+
+    old = signal.signal(signal.SIGALRM, stop)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+
+
+@contextmanager
 def _hang_guard(seconds: int) -> Iterator[None]:
     """Raise :class:`_Hang` in this thread after ``seconds`` of wall clock.
 
@@ -110,17 +126,8 @@ def _hang_guard(seconds: int) -> Iterator[None]:
     in this thread asynchronously; it lands at the episode's next Python bytecode.
     """
     if threading.current_thread() is threading.main_thread():
-
-        def stop(signum: int, frame: FrameType | None) -> None:
-            raise _Hang
-
-        old = signal.signal(signal.SIGALRM, stop)
-        signal.alarm(seconds)
-        try:
+        with alarm(seconds, _Hang):
             yield
-        finally:
-            signal.alarm(0)
-            signal.signal(signal.SIGALRM, old)
         return
     tid = threading.get_ident()
     lock = threading.Lock()

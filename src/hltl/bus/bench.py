@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import multiprocessing
 import statistics
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -12,11 +14,11 @@ from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
 from hltl.bus.realtime import realtime_bus_cell
-from hltl.bus.session import BusConfig, open_session
+from hltl.bus.session import BusConfig, free_endpoint, open_session
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import ActionDone, ActionStart, EpisodeEnd, EventLog, LogRecord
-from hltl.sim.dynamic import make_trial
-from hltl.sim.episode import run_episode
+from hltl.sim.dynamic import Trial, make_trial
+from hltl.sim.episode import Episode, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.scenarios import get
 from hltl.sim.simulator import PerceptionModel
@@ -74,6 +76,7 @@ class BusBench:
     bus_s: float
     inproc_cpu_s: float  # process CPU time (the node shares the process: both sides counted)
     bus_cpu_s: float
+    apart: ApartBench  # the same suite with the node in a process of its own
     ticks: int  # simulated ticks the executor consumed over the bus
     queries: int  # reset/step/peek queries (round trips) for those ticks
     undone: int  # ticks simulated ahead and undone because a command came first
@@ -84,6 +87,17 @@ class BusBench:
     lost: int
     duplicated: int
     realtime: RealtimeBench
+
+
+@dataclass(frozen=True, slots=True)
+class ApartBench:
+    """The suite over the bus with the cell nodes in a process of their own, as deployed: the
+    two sides no longer share one interpreter (one lock, one core at a time)."""
+
+    bus_s: float  # wall time of the episodes
+    cpu_s: float  # CPU time of the executor's process
+    node_cpu_s: float  # CPU time of the node's process over the whole suite
+    same_logs: int
 
 
 @dataclass(frozen=True, slots=True)
@@ -126,6 +140,51 @@ def _strip(x: Any) -> Any:
     return x
 
 
+def _trials(episodes: int) -> list[Trial]:
+    """The suite: the twelve Table II configurations in turn, with their dynamic events."""
+    return [make_trial(CONFIGS[i % len(CONFIGS)], i // len(CONFIGS)) for i in range(episodes)]
+
+
+def _serve_suite(endpoint: str, episodes: int, ready: Any, stop: Any, cpu: Any) -> None:
+    """In a process of its own: a cell node for every trial of the suite (cell ``suite<i>``)
+    until ``stop``; ``cpu`` gets the process's CPU seconds from ``ready`` on."""
+    with open_session(BusConfig(listen=(endpoint,))) as session:
+        nodes = [
+            CellNode(session, tr.scene, cell=f"suite{i}") for i, tr in enumerate(_trials(episodes))
+        ]
+        c0 = time.process_time()
+        ready.set()
+        stop.wait()
+        cpu.value = time.process_time() - c0
+        for node in nodes:
+            node.close()
+
+
+@contextmanager
+def _node_process(episodes: int) -> Iterator[tuple[Any, Any]]:
+    """The suite's nodes in a child process; yields an executor session connected to them and
+    the child's CPU-seconds cell (filled when the block ends)."""
+    ctx = multiprocessing.get_context("spawn")  # no fork of a process running Zenoh threads
+    ready, stop, cpu = ctx.Event(), ctx.Event(), ctx.Value("d", 0.0)
+    endpoint = free_endpoint()
+    child = ctx.Process(
+        target=_serve_suite, args=(endpoint, episodes, ready, stop, cpu), daemon=True
+    )
+    child.start()
+    try:
+        if not ready.wait(120):
+            raise RuntimeError("the node process did not start within 120 s")
+        with open_session(BusConfig(connect=(endpoint,))) as session:
+            yield session, cpu
+            stop.set()
+            child.join(30)
+    finally:
+        stop.set()
+        if child.is_alive():
+            child.kill()
+        child.join(5)
+
+
 def bench_bus(
     endpoint: str,
     *,
@@ -161,34 +220,42 @@ def bench_bus(
         )
         say(f"round trip median {rt[0]:.3f} ms")
         # 2. the suite, in-process and over the bus, alternating
-        trials = [make_trial(CONFIGS[i % len(CONFIGS)], i // len(CONFIGS)) for i in range(episodes)]
-        inproc = bus = inproc_cpu = bus_cpu = 0.0
-        same = ticks = queries = undone = 0
+        trials = _trials(episodes)
+        inproc = bus = inproc_cpu = bus_cpu = apart = apart_cpu = 0.0
+        same = ticks = queries = undone = apart_same = 0
         steps: list[float] = []
-        for tr in trials:
-            kw: dict[str, Any] = {
-                "instruction": tr.instruction,
-                "events": tr.events,
-                "seed": tr.seed,
-            }
-            t0, c0 = time.perf_counter(), time.process_time()
-            a = run_episode(tr.scene, **kw)
-            inproc += time.perf_counter() - t0
-            inproc_cpu += time.process_time() - c0
-            opened: list[BusCell] = []
-            with CellNode(ns, tr.scene) as node:
+        with _node_process(episodes) as (apart_session, node_cpu):
+            for i, tr in enumerate(trials):
+                kw: dict[str, Any] = {
+                    "instruction": tr.instruction,
+                    "events": tr.events,
+                    "seed": tr.seed,
+                }
                 t0, c0 = time.perf_counter(), time.process_time()
-                b = run_episode(tr.scene, simulator=bus_cell(cs, opened=opened), **kw)
-                bus += time.perf_counter() - t0
-                bus_cpu += time.process_time() - c0
+                a = run_episode(tr.scene, **kw)
+                inproc += time.perf_counter() - t0
+                inproc_cpu += time.process_time() - c0
+                # the node in a process of its own
+                opened: list[BusCell] = []
+                make = bus_cell(apart_session, cell=f"suite{i}", opened=opened)
+                t0, c0 = time.perf_counter(), time.process_time()
+                b = run_episode(tr.scene, simulator=make, **kw)
+                apart += time.perf_counter() - t0
+                apart_cpu += time.process_time() - c0
                 opened[0].end()
                 opened[0].close()
-            steps += opened[0].stats.round_trips
-            ticks += opened[0].stats.ticks
-            queries += opened[0].stats.queries - 1  # not counting the end-of-episode query
-            undone += node.stats.undone
-            same += _strip(list(a.records)) == _strip(list(b.records))
-            say(f"{tr.config}#{tr.index}: same log {same}")
+                apart_same += _strip(list(a.records)) == _strip(list(b.records))
+                # the node in this process
+                b, stats = _suite_episode(ns, cs, tr, kw)
+                bus += stats.wall
+                bus_cpu += stats.cpu
+                steps += stats.round_trips
+                ticks += stats.ticks
+                queries += stats.queries
+                undone += stats.undone
+                same += _strip(list(a.records)) == _strip(list(b.records))
+                say(f"{tr.config}#{tr.index}: same log {same}, node apart {apart_same}")
+        apart_bench = ApartBench(apart, apart_cpu, float(node_cpu.value), apart_same)
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
             loss=0.1, duplicate=0.2, reorder=0.2, delay=0.001, reply_loss=0.1, slow=0.001, seed=1
@@ -224,6 +291,7 @@ def bench_bus(
         bus,
         inproc_cpu,
         bus_cpu,
+        apart_bench,
         ticks,
         queries,
         undone,
@@ -235,6 +303,30 @@ def bench_bus(
         dup,
         rt_bench,
     )
+
+
+@dataclass(frozen=True, slots=True)
+class _Run:
+    wall: float
+    cpu: float
+    round_trips: list[float]
+    ticks: int
+    queries: int
+    undone: int
+
+
+def _suite_episode(ns: Any, cs: Any, tr: Trial, kw: dict[str, Any]) -> tuple[Episode, _Run]:
+    """One trial over the bus with its node in this process (its own session)."""
+    opened: list[BusCell] = []
+    with CellNode(ns, tr.scene) as node:
+        t0, c0 = time.perf_counter(), time.process_time()
+        b = run_episode(tr.scene, simulator=bus_cell(cs, opened=opened), **kw)
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        opened[0].end()
+        opened[0].close()
+    stats = opened[0].stats
+    # not counting the end-of-episode query
+    return b, _Run(wall, cpu, stats.round_trips, stats.ticks, stats.queries - 1, node.stats.undone)
 
 
 def _realtime(
@@ -282,9 +374,15 @@ def _realtime(
     )  # fmt: skip
 
 
+def _pct(x: float, base: float) -> float:
+    return (x / base - 1) * 100 if base else 0.0
+
+
 def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
-    over = (b.bus_s / b.inproc_s - 1) * 100 if b.inproc_s else 0.0
-    cpu_over = (b.bus_cpu_s / b.inproc_cpu_s - 1) * 100 if b.inproc_cpu_s else 0.0
+    over = _pct(b.bus_s, b.inproc_s)
+    cpu_over = _pct(b.bus_cpu_s, b.inproc_cpu_s)
+    ap = b.apart
+    apart_over = _pct(ap.bus_s, b.inproc_s)
     return "\n".join(
         [
             "## Bus (Zenoh, loopback)",
@@ -300,13 +398,19 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"| `sim/step` (and start/halt) round trip during the suite, median | "
             f"{b.step_ms:.3f} ms | — |",
             f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s | — |",
-            f"| same suite over the bus (node in this process, its own session) | "
-            f"{b.bus_s:.2f} s ({over:+.1f} %) | within 10 % |",
-            f"| CPU time of the process, in-process / over the bus (both sides) | "
+            f"| same suite over the bus, node in a process of its own (as deployed) | "
+            f"{ap.bus_s:.2f} s ({apart_over:+.1f} %) | within 10 % |",
+            f"| CPU time, executor's process / node's process (whole suite) | "
+            f"{ap.cpu_s:.2f} s ({_pct(ap.cpu_s, b.inproc_cpu_s):+.1f} %) / "
+            f"{ap.node_cpu_s:.2f} s | — |",
+            f"| same suite over the bus, node in the executor's process (its own session) | "
+            f"{b.bus_s:.2f} s ({over:+.1f} %) | — |",
+            f"| CPU time of the process, in-process / over the bus with the node in it | "
             f"{b.inproc_cpu_s:.2f} s / {b.bus_cpu_s:.2f} s ({cpu_over:+.1f} %) | — |",
             f"| simulated ticks / queries over the bus / ticks undone | "
             f"{b.ticks} / {b.queries} / {b.undone} | — |",
-            f"| episodes whose log equals the in-process one | {b.same_logs}/{b.episodes} | all |",
+            f"| episodes whose log equals the in-process one, node apart / in the process | "
+            f"{ap.same_logs}/{b.episodes} / {b.same_logs}/{b.episodes} | all |",
             f"| under faults (10 % loss, 20 % duplicates, 20 % reordered, 1 ms delay, 10 % lost "
             f"replies, slow subscriber): logs equal | {b.fault_same_logs}/{b.fault_episodes} | — |",
             f"| under those faults: dispatches / lost / started twice | "
@@ -318,9 +422,22 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "through the twelve Table II configurations with their dynamic events "
             "(`hltl.sim.dynamic.make_trial`).",
             "",
-            f"The wall-time target is {'met' if over <= 10 else '**not met**'} on this run: the "
-            f"bus adds {(b.bus_s - b.inproc_s) / b.episodes * 1000:.0f} ms wall and "
-            f"{(b.bus_cpu_s - b.inproc_cpu_s) / b.episodes * 1000:.0f} ms CPU per episode. The "
+            "The suite alternates, trial by trial, the in-process run, the run over the bus "
+            "with the cell node in a process of its own (how the bus is deployed: `hltl node "
+            "sim` in one terminal, `hltl run --bus` in another; one node per trial, started "
+            "once before the suite) and the run with the node in the executor's process. The "
+            "target is judged on the first: that is what a user sees. With two processes the "
+            "node simulates on the other core, but the executor still waits for every answer, "
+            "so the wall time counts the node's work on the bus too; with one process the two "
+            "sides also take turns on one interpreter.",
+            "",
+            f"The wall-time target is {'met' if apart_over <= 10 else '**not met**'} on this "
+            f"run: the bus adds {(ap.bus_s - b.inproc_s) / b.episodes * 1000:.0f} ms wall per "
+            "episode with the node apart (the executor's process "
+            f"{(ap.cpu_s - b.inproc_cpu_s) / b.episodes * 1000:+.0f} ms CPU), "
+            f"{(b.bus_s - b.inproc_s) / b.episodes * 1000:.0f} ms wall and "
+            f"{(b.bus_cpu_s - b.inproc_cpu_s) / b.episodes * 1000:.0f} ms CPU with it in the "
+            "process. The "
             "node simulates the ticks the executor will ask for next (until an action ends, an "
             "instruction arrives or a robot's availability changes, doubling the stretch while "
             "the executor uses all of it) and sends them, with the actions' reports, in one "
@@ -331,8 +448,7 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"{b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % wall). What "
             "remains is the node's work on the bus (JSON of every tick, saving and restoring "
-            "the simulator, the replies) and Zenoh's own threads; the node here shares the "
-            "Python interpreter with the executor, so its CPU time adds to the wall time.",
+            "the simulator, the replies) and Zenoh's own threads.",
             "",
             *_format_realtime(b.realtime),
         ]

@@ -455,6 +455,12 @@ class BusCell:
             return
         self._confirm()
         self.stats.ticks += 1
+        self._follow(t)
+        self._log_down()
+
+    def _follow(self, t: float) -> None:
+        """Bring what the executor knows of the cell to time ``t``: here the node steps to it
+        (or already did, ahead of the loop) and every report up to then is in."""
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -468,7 +474,6 @@ class BusCell:
             d = d_
             self._take(d)
         self._sync(int(d["reports"]))
-        self._log_down()
 
     def _request(self, t: float, peek: bool = False) -> dict[str, Any] | None:
         """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands), with

@@ -70,6 +70,7 @@ class Link:
         self._closed = False
         self.sent = 0
         self.dropped = 0
+        self.held = 0  # messages held back for later ones to overtake
         self._thread: threading.Thread | None = None
         if self.faults.delay > 0 or self.faults.reorder > 0:
             self._thread = threading.Thread(
@@ -102,7 +103,9 @@ class Link:
                 self.dropped += 1
                 return
             copies = 2 if f.duplicate and self._rng.random() < f.duplicate else 1
-            late = f.delay + (REORDER_HOLD if f.reorder and self._rng.random() < f.reorder else 0.0)
+            hold = bool(f.reorder) and self._rng.random() < f.reorder
+            self.held += hold
+            late = f.delay + (REORDER_HOLD if hold else 0.0)
             if self._thread is None:
                 for _ in range(copies):
                     self._send(key, payload, attachment)

@@ -30,7 +30,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.errors import BusError, HltlError
-from hltl.execution.drivers import ActionStatus, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
@@ -42,6 +42,8 @@ from hltl.world.state import WorldState
 
 # most ticks ahead of the executor a node simulates in one answer
 MAX_AHEAD = 256
+# the first look-ahead span, and the least after a command cut one
+SPAN0 = 16
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -85,7 +87,7 @@ class _Episode:
     last_step: int = 0
     last_reply: bytes = b""
     batch: _Batch | None = None
-    span: int = 8  # ticks to run ahead next: doubles while the executor uses them all
+    span: int = SPAN0  # ticks to run ahead next: doubles while the executor uses them all
     max_cmd: int = 0  # the highest command number seen (older ones are retransmissions)
     # joint trajectories received per handle and robot, with the plan's events and duration
     trajectories: dict[int, dict[str, JointTrajectory]] = field(default_factory=dict)
@@ -491,7 +493,7 @@ class CellNode:
                 batch.ticks.append((t_next, obs, reports))
                 t, nxt = t_next, tick["next"]
                 if (
-                    any(r.status.terminal for r in reports)
+                    _may_act(reports, batch.latest)
                     or tick["instructions"]
                     or tick["unavailable"] != unavailable
                     or t >= ahead.max_time - 1e-9
@@ -531,7 +533,11 @@ class CellNode:
             raise BusError(f"{consumed} ticks consumed of a batch of {len(b.ticks)}")
         # quiet stretches are long, and a command cuts one anywhere: grow the span while the
         # executor uses every tick (few round trips), shrink it to what it used (little undone)
-        ep.span = min(MAX_AHEAD, max(8, 2 * consumed))
+        if consumed < len(b.ticks):  # a command cut it
+            ep.span = max(SPAN0, 2 * consumed)
+        elif len(b.ticks) >= ep.span:  # used all of a full span: grow it
+            ep.span = min(MAX_AHEAD, 2 * ep.span)
+        # (a stretch that ended at an event and was used whole says nothing about the span)
         if consumed == len(b.ticks):  # all of it: the cell is already there
             ep.latest, self._seq = b.latest, b.seq
         else:
@@ -832,6 +838,19 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
+
+
+def _may_act(reports: list[Report], latest: dict[int, Report]) -> bool:
+    """Whether the executor may act on these reports: an action failed or was halted (it
+    replans), or the last open action ended (its step is over). One action of a step ending
+    while another still runs changes nothing it does (it waits for the step), so the node
+    simulates on; a wrong guess costs undoing ticks, not a round trip."""
+    ended = [r for r in reports if r.status.terminal]
+    if not ended:
+        return False
+    if any(r.status.state is not ActionState.DONE for r in ended):
+        return True
+    return all(r.status.terminal for r in latest.values())
 
 
 def _payload(query: Any) -> bytes:

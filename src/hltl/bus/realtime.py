@@ -107,12 +107,9 @@ class RealtimeBusCell(BusCell):
             self.stats.late_ticks += 1
         return max(t, now)
 
-    def advance(self, t: float) -> None:
-        self.now = t
-        if self._dead:
-            return
-        self._confirm()
-        self.stats.ticks += 1
+    def _follow(self, t: float) -> None:
+        """Take in the ticks the node published since the last call (asking for what was
+        missed, or for the clock after a silence) and fetch reports that are late."""
         with self._cond:
             inbox, self._inbox = self._inbox, []
         for d in sorted(inbox, key=lambda d: int(d.get("n", 0))):
@@ -121,7 +118,6 @@ class RealtimeBusCell(BusCell):
             self._ask_clock()
         if not self._dead:
             self._late_reports()
-        self._log_down()
 
     def _tick_in(self, d: dict[str, Any]) -> None:
         """Take in one tick (published, or the answer to a clock query): the numbered log

@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import json
 import re
+import socket
 from dataclasses import dataclass
 from typing import Any
 
@@ -30,6 +31,14 @@ def check_endpoint(endpoint: str) -> str:
     if not _ENDPOINT.fullmatch(endpoint):
         raise BusError(f"bad Zenoh endpoint {endpoint[:80]!r}; expected e.g. {DEFAULT_ENDPOINT!r}")
     return endpoint
+
+
+def free_endpoint() -> str:
+    """A loopback TCP endpoint nobody listens on (the OS picks the port)."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    return f"tcp/127.0.0.1:{port}"
 
 
 def parse_bus(text: str, default: str = DEFAULT_ENDPOINT) -> str:
