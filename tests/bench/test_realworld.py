@@ -3,26 +3,43 @@
 from __future__ import annotations
 
 import importlib.util
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import pytest
 
+from hltl.bench import realworld
 from hltl.bench.realworld import (
     TASKS,
     WORDING,
     Result3D,
+    World3D,
     _replans,
+    _world,
     format_t16,
     make_task,
     run_task,
     summarise3d,
+    unplanned_motions,
 )
 from hltl.cli.main import main
 from hltl.errors import HltlError
-from hltl.execution.log import Dispatch, LogRecord, PolicyReplan, Replan
+from hltl.execution.drivers import Handle
+from hltl.execution.log import (
+    ActionDone,
+    ActionStart,
+    Dispatch,
+    LogRecord,
+    PolicyReplan,
+    Replan,
+)
+from hltl.grounding.offline import OfflineGrounder
+from hltl.motion.trajectory import MotionPlan
+from hltl.sim.episode import run_episode
 from hltl.sim.events import HumanMove, Instruction
+from hltl.sim3d.driver import MotionInfo
 from hltl.world.geometry import human_in_workspace, reaches
 
 needs_mujoco = pytest.mark.skipif(
@@ -93,9 +110,13 @@ def test_summary_and_table() -> None:
     ]
     assert "not run" not in format_t16(rows)
     table = format_t16(rows, {"smart-llm": "no LLM configured"})
-    assert "| T1 | hltl | 2 | 50 | 10.00 ± 0.00 | 2.00 ± 2.83 |" in table
+    assert "| T1 | hltl | 2 | 50 | 10.00 ± 0.00 | 2.00 ± 2.83 | 0 |" in table
     assert "| T1 | Greedy-R | 1 | 0 | – |" in table
-    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured | – | – |" in table
+    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured | – | – | – |" in table
+    # a trial that ran an action without a motion plan is failed and counted in its column
+    rows = summarise3d([Result3D("T2", 0, "hltl", True, False, 9.0, 1, "no motion plan", 1.0, 1)])
+    assert rows[0].unplanned == 1 and rows[0].time is None
+    assert format_t16(rows).splitlines()[-1].endswith("| 1 |")
 
 
 @needs_mujoco
@@ -159,3 +180,88 @@ def test_cli_rejects_unknown_tasks_and_methods(
     assert main(["bench", "realworld", *argv]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ") and bad in err[0]
+
+
+def _timing_errors(records: Sequence[LogRecord]) -> list[float]:
+    """Per finished action: how far its real duration is from what the executor expected."""
+    started = {r.handle: r for r in records if isinstance(r, ActionStart)}
+    return [
+        abs((r.ended - started[r.handle].t) - float(started[r.handle].expected or 0.0))
+        for r in records
+        if isinstance(r, ActionDone) and r.handle in started
+    ]
+
+
+@needs_mujoco
+@pytest.mark.skipif(importlib.util.find_spec("pinocchio") is None, reason="needs the motion extra")
+def test_motion_mode_plans_with_the_durations_the_arms_take() -> None:
+    """With --motion hltl's executor expects an action to last as long as the arms' motion
+    (the first pick starts where the arm rests, so the 3D simulator plays the executor's own
+    trajectory: equal to the microsecond); without, it expects the scene's fixed 0.5 s."""
+    for motion in (True, False):
+        t = make_task("T1", 0, motion=motion)
+        world = _world(t.scene, "motion", motion)
+        ep = run_episode(
+            t.scene,
+            instruction=t.instruction,
+            events=t.events,
+            seed=t.seed,
+            grounder=OfflineGrounder(),
+            simulator=world.simulator,
+            agent=world.agent,
+        )
+        assert ep.success, ep.metrics.reason
+        assert len(world.made) == 1
+        first = _timing_errors(ep.records)[0]
+        assert (first < 1e-5) if motion else (first > 1.0)
+
+
+@dataclass
+class _FakeCost:
+    infeasible_cost: float = 1e3
+
+
+class _FakeSim:
+    """Answers motion_of like the 3D simulator: one handle's motion came from its IK fallback."""
+
+    def __init__(self, fallback: int) -> None:
+        self.fallback = fallback
+
+    def motion_of(self, handle: Handle) -> MotionInfo | None:
+        plan = MotionPlan((), (), 1.0)
+        if handle.id == self.fallback:
+            return MotionInfo(plan, 0.0, "ik", "IK found no pose")
+        return MotionInfo(plan, 0.0, "hltl.motion")
+
+
+def test_actions_without_a_motion_plan_are_found_from_both_sides() -> None:
+    def start(handle: int, skill: str, expected: float) -> ActionStart:
+        act = {"skill": skill, "robots": ["r2", "r1"], "object": "chips"}
+        return ActionStart(t=float(handle), handle=handle, action=act, expected=expected)
+
+    recs: list[LogRecord] = [
+        start(1, "pick", 4.0),
+        start(2, "handover_r2r", 1000.0),  # hltl's motion model charged its sentinel
+        start(3, "handover_r2h", 3.0),  # the simulator's planner failed: IK waypoints
+    ]
+    world = World3D(lambda: None, None, _FakeCost(), [_FakeSim(3)])  # type: ignore[arg-type]
+    found = unplanned_motions(recs, world)
+    assert len(found) == 2
+    assert found[0].startswith("handover_r2r(chips) by r2→r1 at 2.00 s: hltl's motion model")
+    assert "simulator has no motion plan, ran IK waypoints (IK found no pose)" in found[1]
+    # without --motion only the simulator's side counts (no sentinel to compare with)
+    plain = World3D(lambda: None, None, None, [_FakeSim(0)])  # type: ignore[arg-type]
+    assert unplanned_motions(recs, plain) == []
+
+
+@needs_mujoco
+def test_a_trial_with_an_unplanned_motion_fails(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The time of such a trial is not a checked motion's: failed, with why, never timed."""
+    t = make_task("T1", 0, timing="cost")
+    ok = run_task(t, "hltl", timing="cost")
+    assert ok.success and ok.unplanned == 0
+    monkeypatch.setattr(realworld, "unplanned_motions", lambda records, world: ["pick(x) …"])
+    bad = run_task(t, "hltl", timing="cost")
+    assert not bad.success and bad.unplanned == 1
+    assert bad.reason == "no motion plan: pick(x) …"
+    assert summarise3d([bad])[0].time is None

@@ -23,21 +23,26 @@ from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction
 from hltl.grounding.tree import Group, Task
 from hltl.world.scene import Scene
+from tests.grounding.helpers import one_edits
 
 ROOT = Path(__file__).resolve().parents[2]
 CORPORA: dict[str, Corpus] = {p: load_corpus(ROOT / CORPUS_DIR / f"{p}.yaml", ROOT) for p in PARTS}
 # refused although a person would read them (docs/grounding.md reports them)
 KNOWN_MISSES = frozenset(
     {
-        "Bob's after the chips, can you sort that out?",
         "Give Carl the chips",  # 'Carl' is a common word (a name), so it is not read as 'Carol'
+        # blind3 (tuned on in session 5): 'Hnad' is one edit from 'hand' and from 'had'
+        "Hnad Alice the red mug please",
+        # blind3: steps after the 'or' of an 'either' could belong to it or come after it
+        "Either put the cup on the shelf, or give it to Bob and then give Carol the apple",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
 # groundings included, are the measurement, and the grounder is not tuned on it
 # ("blind" was measured once in session 2, then its misses were fixed in session 3; "blind2"
-# measured once in session 3, its misses fixed in session 4: both asserted now)
-MEASURED_ONLY = frozenset({"blind3"})
+# measured once in session 3, its misses fixed in session 4; "blind3" measured once in session
+# 4, its misses fixed in session 5: all asserted now)
+MEASURED_ONLY = frozenset({"blind4"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -50,6 +55,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind2"].entries}) >= 4
     assert len(CORPORA["blind3"].entries) >= 120
     assert len({e.scene for e in CORPORA["blind3"].entries}) >= 4
+    assert len(CORPORA["blind4"].entries) >= 150
+    assert len({e.scene for e in CORPORA["blind4"].entries}) >= 8
     for corpus in CORPORA.values():
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)
@@ -119,21 +126,11 @@ def test_politeness_never_changes_the_meaning(entry: Entry, wrap: str) -> None:
 NAMES = ["bottle", "apple", "chips", "crisps", "Alice", "Carol", "shelf", "table", "counter"]
 
 
-def _edits(word: str) -> list[str]:
-    letters = "abcdefghijklmnopqrstuvwxyz"
-    out = {word[:k] + word[k + 1 :] for k in range(len(word))}
-    out |= {word[:k] + c + word[k:] for k in range(len(word) + 1) for c in letters}
-    out |= {word[:k] + c + word[k + 1 :] for k in range(len(word)) for c in letters}
-    out |= {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)}
-    out.discard(word)
-    return sorted(out)
-
-
 @settings(max_examples=60, deadline=None)
 @given(st.sampled_from(NAMES), st.data())
 def test_a_typo_means_the_word_or_nothing(name: str, data: st.DataObject) -> None:
     """One edit away from a scene name: grounded as that name, or refused; never another."""
-    typo = data.draw(st.sampled_from(_edits(name.lower())))
+    typo = data.draw(st.sampled_from(one_edits(name.lower())))
     if name in ("Alice", "Carol"):
         text, right = f"give {typo} the cup", f"give {name} the cup"
     elif name in ("shelf", "table", "counter"):

@@ -3,39 +3,21 @@ after an 'or', 'then, once …', relative clauses and 'it' in a trailing 'once A
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon, common_words
-from hltl.grounding.offline import parse_instruction, spec_of
-from hltl.grounding.tree import Node
-from hltl.spec.equivalence import counterexample
+from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import CELL, ROOT
+from tests.grounding.helpers import means as _means
+from tests.grounding.helpers import tree as _tree
 
-ROOT = Path(__file__).resolve().parents[2]
-CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
 SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 OBJECTS = ["cup", "bottle", "chips", "apple"]  # named alike in both scenes
 PEOPLE = {"A": "Alice", "B": "Bob", "C": "Carol"}
-
-
-def _means(text: str, want: str, scene: Scene = CELL) -> None:
-    got = parse_instruction(text, scene)
-    assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
-        f"{text!r} -> {show_tree(got)}, want {want}"
-    )
-
-
-def _tree(text: str, scene: Scene = CELL) -> Node | None:
-    try:
-        return parse_instruction(text, scene)
-    except GroundingError:
-        return None
 
 
 # -- typos of keywords ----------------------------------------------------------------------------

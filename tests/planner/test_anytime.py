@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.cells import delivery_cell
 from hltl.planner import PlanResult, PlanStatus, plan
-from hltl.planner.anytime import _OrderWalk, construct, goals
+from hltl.planner.anytime import _Neighbourhood, _OrderWalk, construct, goals
 from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.search import _Search, plan_steps
-from hltl.sim.scenarios import generate
+from hltl.sim.scenarios import Scenario, generate
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
@@ -74,17 +75,22 @@ def test_plan_json_round_trips_the_bound() -> None:
     assert res.gap == 0.0  # a 4 x 4 line is proved optimal well inside two seconds
 
 
+def _walk(n: int, layout: str, seed: int) -> tuple[Scenario, Problem, _OrderWalk]:
+    """A generated cell (ordered deliveries), its problem and a walk over priority orders."""
+    sc = generate(n, n, layout, seed)
+    problem = Problem(sc.scene, sc.spec)
+    s = _Search(problem)
+    return sc, problem, _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
+
+
 @pytest.mark.parametrize(("n", "layout", "seed"), [(6, "grid", 0), (8, "line", 1), (8, "grid", 3)])
 def test_order_walk_keeps_only_valid_plans_never_worse_than_the_first(
     n: int, layout: str, seed: int
 ) -> None:
     # ordered specs too: a move that breaks "first A, then B" must be rejected, not routed
-    sc = generate(n, n, layout, seed)
-    problem = Problem(sc.scene, sc.spec)
-    s = _Search(problem)
-    first = construct(problem, s)
+    sc, problem, walk = _walk(n, layout, seed)
+    first = construct(problem, walk.router.s)
     assert first is not None
-    walk = _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
     for _ in range(40):
         walk.step()
         assert walk.gls
@@ -96,3 +102,38 @@ def test_order_walk_keeps_only_valid_plans_never_worse_than_the_first(
     steps = plan_steps(problem, walk.best[1])
     res = PlanResult(PlanStatus.SOLVED, steps, to_seconds(walk.best[0]))
     check_plan(sc.scene, sc.spec, res.to_dict())
+
+
+@pytest.mark.parametrize(("n", "layout", "seed"), [(6, "grid", 0), (8, "line", 1), (8, "grid", 3)])
+def test_neighbourhood_search_keeps_valid_plans_never_worse_than_its_start(
+    n: int, layout: str, seed: int
+) -> None:
+    # ordered specs too: rerouting a goal of "first A, then B" after the other must be rejected
+    sc, problem, walk = _walk(n, layout, seed)
+    assert walk.best is not None
+    # the routes kept by the walk give the same plan again when nothing is rerouted
+    again = walk.router.replay(walk.router.route_all([], dict(walk.best_routes)) or [])
+    assert again is not None and again[0] == walk.best[0]
+    lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
+    costs = [lns.cost]
+    for _ in range(60):
+        lns.step()
+        costs.append(lns.cost)
+    assert costs == sorted(costs, reverse=True)  # the current plan never gets longer
+    assert lns.best[0] == costs[-1] <= walk.best[0]
+    steps = plan_steps(problem, lns.best[1])
+    res = PlanResult(PlanStatus.SOLVED, steps, to_seconds(lns.best[0]))
+    check_plan(sc.scene, sc.spec, res.to_dict())
+
+
+def test_exact_timeout_plan_is_no_worse_than_the_first_prioritized_one() -> None:
+    # a timed-out exact search keeps a share of its time for more orders and neighbourhoods
+    cell = delivery_cell("grid", 10, 2)
+    problem = Problem(cell.scene, cell.spec)
+    first = construct(problem)
+    assert first is not None
+    res = plan(cell.scene, cell.spec, timeout=2.0)
+    assert res.status is PlanStatus.TIMEOUT and res.makespan is not None
+    assert res.makespan <= to_seconds(first[0])
+    assert res.lower_bound is not None and res.lower_bound <= res.makespan
+    check_plan(cell.scene, cell.spec, {**res.to_dict(), "status": "solved"})

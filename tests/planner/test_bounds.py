@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 
 import pytest
 from hypothesis import given, settings
@@ -99,3 +100,33 @@ def test_cheap_bound_never_exceeds_the_full_one_or_the_optimum(seed: int) -> Non
         assert cheap <= full
     if expected is not None:
         assert to_seconds(s.heuristic(start)) <= expected + 1e-9
+
+
+@pytest.mark.parametrize(("layout", "seed"), [("grid", 0), ("line", 1), ("grid", 2)])
+def test_conjunction_critical_path_equals_the_general_one(layout: str, seed: int) -> None:
+    # delivery cells take the short way (largest table value over the open leaves): it must
+    # give what the general bottom-up evaluation gives on every node of a random walk
+    sc = generate(5, 5, layout, seed, ordered=False)
+    s = _Search(Problem(sc.scene, sc.spec))
+    heur = s.heuristic
+    assert heur._conj is not None
+    rng = random.Random(seed)
+    node = s.p.start()
+    checked = 0
+    for _ in range(40):
+        children = [child for _, _, child, _, _ in s.steps(node)]
+        if not children:
+            break
+        for child in children[:15]:
+            fast = heur._critical(child[0], child[2])
+            conj, heur._conj = heur._conj, None
+            try:
+                general = heur._critical(child[0], child[2])
+            finally:
+                heur._conj = conj
+            assert fast == general
+            checked += 1
+        node = rng.choice(children)
+    assert checked > 100
+    ordered = generate(3, 3, "line", 0, ordered=True)
+    assert _Search(Problem(ordered.scene, ordered.spec)).heuristic._conj is None

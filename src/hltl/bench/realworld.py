@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import random
@@ -18,13 +19,24 @@ from hltl.bench.baselines.loop import LoopConfig, run_baseline_episode
 from hltl.bench.baselines.policy import Policy
 from hltl.bench.baselines.smart_llm import ChatFn, SmartLLMPolicy
 from hltl.errors import BackendUnavailableError, HltlError
-from hltl.execution.log import REPLANS, ActionDone, ActionStart, EpisodeEnd, LogRecord
+from hltl.execution.drivers import Handle
+from hltl.execution.executor import Executor
+from hltl.execution.log import (
+    REPLANS,
+    ActionDone,
+    ActionStart,
+    EpisodeEnd,
+    EventLog,
+    LogRecord,
+)
 from hltl.grounding.offline import OfflineGrounder
-from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.motion.cost import MotionCostModel, motion_models
+from hltl.sim.episode import Agent, AgentFactory, Cell, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, HumanMove, Instruction, TimedEvent
 from hltl.sim.invariants import check_invariants
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
+from hltl.skills.library import Action
 from hltl.world.geometry import human_in_workspace
 from hltl.world.scene import Scene, Vec3, scene_from_dict
 
@@ -73,7 +85,9 @@ def _jit(rng: random.Random, p: tuple[float, float], r: float) -> list[float]:
     return [round(p[0] + rng.uniform(-r, r), 3), round(p[1] + rng.uniform(-r, r), 3)]
 
 
-def make_task(task: str, index: int, seed: int = 0, timing: str = "motion") -> Task3D:
+def make_task(
+    task: str, index: int, seed: int = 0, timing: str = "motion", motion: bool = False
+) -> Task3D:
     """Trial ``index`` of scenario ``task`` (positions jittered, timings drawn, from the seed).
 
     T2's walk starts during the robot-to-robot hand-over: when that is depends on the arms'
@@ -145,7 +159,7 @@ def make_task(task: str, index: int, seed: int = 0, timing: str = "motion") -> T
     scene = scene_from_dict(data, source=f"T1-T6 {task} seed {s}")
     _check(scene, task, [e.to for e in events if isinstance(e, HumanMove)])
     if task == "T2":
-        start, end = _handover_window(scene, text, timing)
+        start, end = _handover_window(scene, text, timing, motion)
         walk = events[0]
         assert isinstance(walk, HumanMove)
         events = [HumanMove(round(rng.uniform(start, end), 3), "A", walk.to, WALK_SPEED)]
@@ -164,13 +178,17 @@ def _check(scene: Scene, task: str, moves: Sequence[Vec3]) -> None:
             raise AssertionError(f"{task}: a person at {p} is served by {serving}")
 
 
-def _handover_window(scene: Scene, instruction: str, timing: str) -> tuple[float, float]:
+def _handover_window(
+    scene: Scene, instruction: str, timing: str, motion: bool = False
+) -> tuple[float, float]:
     """When hltl's robot-to-robot hand-over runs on ``scene`` with nobody moving."""
+    world = _world(scene, timing, motion)
     ep = run_episode(
         scene,
         instruction=instruction,
         grounder=OfflineGrounder(),
-        simulator=_simulator(scene, timing),
+        simulator=world.simulator,
+        agent=world.agent,
         config=EpisodeConfig(max_time=60.0),
     )
     starts = {
@@ -184,8 +202,69 @@ def _handover_window(scene: Scene, instruction: str, timing: str) -> tuple[float
     raise HltlError(f"{scene.source}: no robot-to-robot hand-over ran ({ep.metrics.reason})")
 
 
-def _simulator(scene: Scene, timing: str) -> Callable[..., MujocoSimulator]:
-    return functools.partial(MujocoSimulator, timing=timing, model=compile_scene(scene))
+@dataclass(frozen=True, slots=True)
+class World3D:
+    """How a trial runs: the 3D simulator's factory, who decides for hltl (``None``: the default
+    executor), the motion cost model hltl plans with (``None`` without ``--motion``), and every
+    simulator the factory made (read after the episode: which motions the arms really ran)."""
+
+    simulator: Callable[..., MujocoSimulator]
+    agent: AgentFactory | None
+    cost: MotionCostModel | None
+    made: list[MujocoSimulator]
+
+
+def _world(scene: Scene, timing: str, motion: bool = False) -> World3D:
+    """The trial's world: with ``motion`` (the motion extra), the simulator and hltl's executor
+    share the motion layer — reach and workspaces from the arms' reachability maps, each action
+    as long as its motion plan, the executor's trajectories played by the arms — so hltl's plans
+    are optimal for the motions, not for fixed durations; without it hltl plans with the scene's
+    fixed durations while the arms still take as long as their motions."""
+    base = functools.partial(MujocoSimulator, timing=timing, model=compile_scene(scene))
+    made: list[MujocoSimulator] = []
+    agent: AgentFactory | None = None
+    cost: MotionCostModel | None = None
+    if motion:
+        kinematics, cost = motion_models(scene)
+        base = functools.partial(base, cost=cost, kinematics=kinematics)
+        model = cost
+
+        def agent(cell: Cell, log: EventLog) -> Agent:
+            return Executor(scene, None, cell, log=log, cost=model, kinematics=kinematics)
+
+    def simulator(*args: Any, **kwargs: Any) -> MujocoSimulator:
+        sim = base(*args, **kwargs)
+        made.append(sim)
+        return sim
+
+    return World3D(simulator, agent, cost, made)
+
+
+def unplanned_motions(records: Sequence[LogRecord], world: World3D) -> list[str]:
+    """Actions that ran without a checked motion plan, each with who failed to plan it.
+
+    Two ways: hltl's motion cost model found none and charged its sentinel
+    (``infeasible_cost``), so the plan hltl chose was optimal for a made-up duration; or the
+    3D simulator's own motion planner found none and the arms followed unchecked IK waypoints
+    (``MotionInfo.source == "ik"``), so the time is not a collision-checked motion's. Either
+    makes the trial's execution time meaningless: the benchmark counts such a trial as failed.
+    """
+    # a sentinel duration (a finite ``infeasible_cost``) or an infinite one both mean "no plan"
+    limit = math.inf if world.cost is None else getattr(world.cost, "infeasible_cost", math.inf)
+    sim = world.made[-1] if world.made else None
+    out: list[str] = []
+    for r in records:
+        if not isinstance(r, ActionStart):
+            continue
+        act = Action.from_dict(r.action)
+        what = f"{act.skill}({act.object}) by {'→'.join(act.robots)} at {r.t:.2f} s"
+        if r.expected is not None and (r.expected >= limit or not math.isfinite(r.expected)):
+            out.append(f"{what}: hltl's motion model has no plan (charged {r.expected:.0f} s)")
+        info = None if sim is None else sim.motion_of(Handle(r.handle, act, r.t))
+        if info is not None and info.source == "ik":
+            why = f" ({info.note[:60]})" if info.note else ""
+            out.append(f"{what}: the simulator has no motion plan, ran IK waypoints{why}")
+    return out
 
 
 @dataclass(frozen=True, slots=True)
@@ -201,6 +280,8 @@ class Result3D:
     replans: int
     reason: str
     wall_s: float
+    unplanned: int = 0  # actions run without a checked motion plan (unplanned_motions)
+    cpu_s: float = 0.0  # CPU seconds of the worker for this trial (with T2's dry run)
 
 
 def _replans(records: Sequence[LogRecord]) -> int:
@@ -217,15 +298,17 @@ def run_task(
     timing: str = "motion",
     max_time: float = 60.0,
     chat: ChatFn | None = None,
+    motion: bool = False,
 ) -> Result3D:
     """Run ``method`` (hltl, greedy or smart-llm) on one trial in the MuJoCo simulator;
-    SMART-LLM-R asks ``chat`` (default: the configured LLM endpoint).
+    SMART-LLM-R asks ``chat`` (default: the configured LLM endpoint). With ``motion`` hltl
+    plans with the motion layer in the same simulator the baselines run in (:func:`_world`).
 
     Raises:
         BackendUnavailableError: MuJoCo (extra ``sim3d``) is not installed, or SMART-LLM-R has
             no LLM configured.
     """
-    sim = _simulator(task.scene, timing)
+    world = _world(task.scene, timing, motion)
     t0 = time.perf_counter()
     if method == "hltl":
         ep = run_episode(
@@ -235,7 +318,8 @@ def run_task(
             seed=task.seed,
             config=EpisodeConfig(max_time=max_time),
             grounder=OfflineGrounder(),
-            simulator=sim,
+            simulator=world.simulator,
+            agent=world.agent,
         )
         records, m = ep.records, ep.metrics
     elif method in ("greedy", "smart-llm"):
@@ -247,7 +331,7 @@ def run_task(
             events=task.events,
             seed=task.seed,
             config=LoopConfig(max_time=max_time),
-            simulator=sim,
+            simulator=world.simulator,
         )
         records, m = bep.records, bep.metrics
     else:
@@ -256,8 +340,17 @@ def run_task(
     end = [r for r in records if isinstance(r, EpisodeEnd)][-1]
     goals = bool(end.success)
     replans = _replans(records)
-    ok = m.success and not check_invariants(records) and replans <= MAX_REPLANS
-    reason = m.reason if not ok and not m.success else ("" if ok else f"{replans} replans")
+    problems = check_invariants(records)
+    unplanned = unplanned_motions(records, world)
+    # the first reason that fails the trial, in this order
+    reasons = [
+        *([m.reason or "failed"] if not m.success else []),
+        *([f"log check: {problems[0]}"] if problems else []),
+        *([f"no motion plan: {unplanned[0]}"] if unplanned else []),
+        *([f"{replans} replans (> {MAX_REPLANS})"] if replans > MAX_REPLANS else []),
+    ]
+    ok = not reasons
+    reason = reasons[0] if reasons else ""
     return Result3D(
         task.task,
         task.index,
@@ -268,12 +361,17 @@ def run_task(
         replans,
         reason,
         round(wall, 3),
+        len(unplanned),
     )
 
 
-def _run_job(job: tuple[str, int, int, str, str]) -> Result3D:
-    task, index, seed, method, timing = job
-    return run_task(make_task(task, index, seed, timing), method, timing=timing)
+def _run_job(job: tuple[str, int, int, str, str, bool]) -> Result3D:
+    task, index, seed, method, timing, motion = job
+    cpu = time.process_time()
+    res = run_task(
+        make_task(task, index, seed, timing, motion), method, timing=timing, motion=motion
+    )
+    return dataclasses.replace(res, cpu_s=round(time.process_time() - cpu, 3))
 
 
 def run_all(
@@ -284,10 +382,11 @@ def run_all(
     seed: int = 0,
     jobs: int = 2,
     timing: str = "motion",
+    motion: bool = False,
     on_result: Callable[[Result3D], None] | None = None,
 ) -> list[Result3D]:
     """Every (task, trial, method), in ``jobs`` worker processes (1: here); in job order."""
-    todo = [(t, i, seed, m, timing) for t in tasks for i in range(trials) for m in methods]
+    todo = [(t, i, seed, m, timing, motion) for t in tasks for i in range(trials) for m in methods]
     out: list[Result3D] = []
     if jobs <= 1:
         for j in todo:
@@ -305,7 +404,8 @@ def run_all(
 
 @dataclass(frozen=True, slots=True)
 class Summary3D:
-    """One (task, method) cell: success rate, execution time and replans (mean, std)."""
+    """One (task, method) cell: success rate, execution time and replans (mean, std), and how
+    many trials ran an action without a checked motion plan (counted as failed)."""
 
     task: str
     method: str
@@ -313,6 +413,7 @@ class Summary3D:
     success: float
     time: tuple[float, float] | None
     replans: tuple[float, float]
+    unplanned: int = 0
 
 
 def _ms(v: list[float]) -> tuple[float, float]:
@@ -335,6 +436,7 @@ def summarise3d(results: Sequence[Result3D]) -> list[Summary3D]:
                     100.0 * sum(r.success for r in rs) / len(rs),
                     _ms(times) if times else None,
                     _ms([float(r.replans) for r in rs]),
+                    sum(1 for r in rs if r.unplanned),
                 )
             )
     return out
@@ -348,17 +450,17 @@ def format_t16(rows: Sequence[Summary3D], not_run: dict[str, str] | None = None)
     ``not_run`` names methods that could not run, with why (SMART-LLM-R without an LLM)."""
     lines = [
         "| task | method | trials | success % | execution time s (mean ± std) "
-        "| replans (mean ± std) |",
-        "|---|---|---:|---:|---:|---:|",
+        "| replans (mean ± std) | trials without a motion plan |",
+        "|---|---|---:|---:|---:|---:|---:|",
     ]
     for s in rows:
         time_s = "–" if s.time is None else f"{s.time[0]:.2f} ± {s.time[1]:.2f}"
         lines.append(
             f"| {s.task} | {LABELS.get(s.method, s.method)} | {s.n} | {s.success:.0f} | "
-            f"{time_s} | {s.replans[0]:.2f} ± {s.replans[1]:.2f} |"
+            f"{time_s} | {s.replans[0]:.2f} ± {s.replans[1]:.2f} | {s.unplanned} |"
         )
     for m, why in (not_run or {}).items():
-        lines.append(f"| T1–T6 | {LABELS.get(m, m)} | – | not run: {why} | – | – |")
+        lines.append(f"| T1–T6 | {LABELS.get(m, m)} | – | not run: {why} | – | – | – |")
     return "\n".join(lines)
 
 

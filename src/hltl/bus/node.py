@@ -229,6 +229,7 @@ class CellNode:
         ]
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
+        self._matched: set[str] = set()  # keys some subscriber listens to
 
     # -- lifetime ----------------------------------------------------------------------------------
 
@@ -758,9 +759,20 @@ class CellNode:
         pub = self._publishers.get(key)
         if pub is None:
             pub = self._publishers[key] = self.session.declare_publisher(key)
-            self._entities.append(pub)
-        if pub.matching_status.matching:
+            # whether anyone listens is kept up to date by Zenoh (asking it every tick costs
+            # more than the rest of an unheard publication)
+            listener = pub.declare_matching_listener(partial(self._on_matching, key))
+            self._entities += [listener, pub]
+            if pub.matching_status.matching:
+                self._matched.add(key)
+        if key in self._matched:
             pub.put(payload())
+
+    def _on_matching(self, key: str, status: Any) -> None:
+        if status.matching:
+            self._matched.add(key)
+        else:
+            self._matched.discard(key)
 
     # -- replies -----------------------------------------------------------------------------------
 

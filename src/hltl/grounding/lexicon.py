@@ -262,6 +262,71 @@ for _sub in ("once", "when", "after", "as soon as", "and once", "and when"):
 # Corrections: "the bottle, no, the cup", "— sorry, I mean the table", "actually the shelf".
 for _p in ("i mean", "i meant", "sorry i mean", "no wait", "no sorry", "or rather", "no no"):
     PHRASES[tuple(_p.split())] = "correct"
+# A correction that takes back what was said before it ("Give Alice the chips. Scratch that, …"):
+# at the start of a sentence it replaces the sentence before (hltl.grounding.phrasing)
+RETRACTIONS = frozenset(
+    f"{_verb_word} {_what}"
+    for _verb_word in ("scratch", "strike", "scrap", "forget", "ignore", "disregard")
+    for _what in ("that", "this", "it")
+)
+for _p in RETRACTIONS:
+    PHRASES[tuple(_p.split())] = "correct"
+
+# The speaker asking politely before the request: "I was wondering if you could …", "I'd
+# appreciate it if you could …", "It would be great if you could …": the request follows.
+_YOU_COULD = ("you could", "you would", "you can", "you might", "you 'd")
+for _open in (
+    "i was wondering",
+    "i was just wondering",
+    "i wonder",
+    "i wondered",
+    "we were wondering",
+):
+    for _if in ("if", "whether"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_open} {_if} {_you}".split())] = "filler"
+for _who in ("i 'd", "i would", "we 'd", "we would"):
+    for _feel in ("appreciate it", "really appreciate it", "be grateful", "be very grateful"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_who} {_feel} if {_you}".split())] = "filler"
+for _it in ("it would be", "it 'd be", "it will be"):
+    for _good in ("great", "nice", "lovely", "good", "helpful", "brilliant", "perfect", "awesome"):
+        for _you in _YOU_COULD:
+            PHRASES[tuple(f"{_it} {_good} if {_you}".split())] = "filler"
+for _p in ("do you think you could", "any chance you could", "is there any chance you could"):
+    PHRASES[tuple(_p.split())] = "filler"
+# "…, if that's ok": asking leave, not a condition on the task
+for _that in ("that 's", "that is", "that would be"):
+    for _ok in ("ok", "okay", "alright", "all right", "fine", "cool"):
+        PHRASES[tuple(f"if {_that} {_ok}".split())] = "filler"
+PHRASES[("if", "that", "works")] = "filler"
+# "Bob's after the chips, can you sort that out?": asking for what was just said
+for _do in (
+    "sort that out",
+    "sort it out",
+    "sort that",
+    "take care of that",
+    "take care of it",
+    "deal with that",
+    "deal with it",
+    "handle that",
+    "handle it",
+    "make that happen",
+    "make it happen",
+):
+    PHRASES[tuple(_do.split())] = "filler"
+# "Be a dear and bring …", "Do me a favour and …": an opening that asks kindly
+for _p in ("be a dear and", "be a love and", "be a star and", "do me a favour and"):
+    PHRASES[tuple(_p.split())] = "filler"
+PHRASES[("do", "me", "a", "favor", "and")] = "filler"
+# "a mug, I don't mind which": any of them will do
+for _who in ("i", "we", ""):
+    for _mind in ("mind", "care"):
+        for _which in ("which", "which one", "which it is"):
+            PHRASES[tuple(f"{_who} do n't {_mind} {_which}".split())] = "whichever"
+# "Start by giving Carol the apple, then …": the first step
+for _p in ("start by", "begin by", "start off by", "start with", "begin with", "first of all"):
+    PHRASES[tuple(_p.split())] = "first"
 
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
@@ -285,6 +350,15 @@ for _p, _q in {
     "all the things": "q:everything",
     "every object": "q:everything",
     "every item": "q:everything",
+    "all of it": "q:everything",
+    "all of this": "q:everything",
+    "all of that": "q:everything",
+    "the whole lot": "q:everything",
+    # everyone in the scene as recipients ("give each person one item"): hltl.grounding.phrasing
+    "each person": "q:everyone",
+    "every person": "q:everyone",
+    "each of the people": "q:everyone",
+    "all the people": "q:everyone",
     # exclusions
     "except for": "except",
     "apart from": "except",
@@ -299,6 +373,10 @@ for _p, _q in {
     "the same goes for": "same",
 }.items():
     PHRASES[tuple(_p.split())] = _q
+
+# one category said in other words (British and American English): a scene that names only
+# one of them is understood in the other, unless the other names something else there
+SYNONYMS: dict[str, tuple[str, ...]] = {"chips": ("crisps",), "crisps": ("chips",)}
 
 # words naming any object: "the two things", "all four objects" ("the thing" is ambiguous)
 GENERIC_NOUNS = ("thing", "object", "item")
@@ -345,6 +423,14 @@ WORDS: dict[str, str] = {
     "third": "then",
     "thirdly": "then",
     "first": "first",
+    "last": "last",  # "Give Alice the bottle last; first …" (hltl.grounding.phrasing)
+    "there": "there",  # "… on the shelf and the cup there too": that surface
+    # a reason after (or before) a request: "… because he's hungry" (hltl.grounding.phrasing)
+    "because": "reason",
+    "since": "reason",
+    "cause": "reason",
+    "cos": "reason",
+    "coz": "reason",
     "firstly": "first",
     "initially": "first",
     "after": "after",
@@ -451,6 +537,7 @@ WORDS: dict[str, str] = {
     "any": "q:some",
     "everything": "q:everything",
     "other": "other",
+    "remaining": "other",  # "… or the chips, and the remaining one to Person A"
     "with": "with",
     "same": "same",
     "apart": "except",
@@ -510,8 +597,8 @@ WORDS: dict[str, str] = {
     "all": "all",
     "every": "all",
     "each": "all",
-    "everyone": "all",
-    "everybody": "all",
+    "everyone": "q:everyone",
+    "everybody": "q:everyone",
     "anyone": "all",
     "anybody": "all",
     "someone": "all",
@@ -620,6 +707,10 @@ class Lexicon:
                 self._add(Ref("surface", s.id), name, plurals=False)
         for r in scene.robots:
             self._add(Ref("robot", r.id), r.id, plurals=False)
+        for o in scene.objects:  # "crisps" where the scene says only "chips"
+            for other in SYNONYMS.get(o.category, ()):
+                if _words(other) not in self._phrases:
+                    self._add(Ref("object", o.id), other, plurals=True, strong=False)
         self.max_len = max((len(p) for p in self._phrases), default=1)
 
     @staticmethod
@@ -673,6 +764,9 @@ class Lexicon:
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
+        phrase = self._misspelt_phrase(tokens, i)
+        if phrase is not None:
+            return phrase
         typo = self.misspelt(tokens[i].low)
         if typo is not None:
             return 1, typo
@@ -721,6 +815,31 @@ class Lexicon:
             return None  # several names within one edit ("chps": chips or cups): no guess
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
+
+    def _misspelt_phrase(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
+        """A name of several words with one of them mistyped ("bleu mug"): (length, refs).
+
+        The mistyped word is one edit from the name's word (4+ letters), not a keyword or a
+        common English word, and the other words are exact; refused (None) when the words fit
+        more than one name.
+        """
+        found: list[tuple[int, tuple[Ref, ...]]] = []
+        for key, entries in self._phrases.items():
+            n = len(key)
+            if n < 2 or i + n > len(tokens):
+                continue
+            typed = tuple(t.low for t in tokens[i : i + n])
+            diff = [k for k in range(n) if typed[k] != key[k]]
+            if len(diff) != 1:
+                continue
+            word, right = typed[diff[0]], key[diff[0]]
+            if not _close_word(word, right):
+                continue
+            found.append((n, _best(entries)))
+        ids = {r.id for _, refs in found for r in refs}
+        if len(ids) != 1 or len({n for n, _ in found}) != 1:
+            return None
+        return found[0]
 
     def misspelt_keyword(self, word: str) -> str | None:
         """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
@@ -773,6 +892,14 @@ def common_words() -> frozenset[str]:
     """The 20,000 most frequent English words (data/common_words.txt says where from)."""
     text = resources.files("hltl.grounding").joinpath("data/common_words.txt").read_text("utf-8")
     return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
+
+
+def _close_word(word: str, right: str) -> bool:
+    """Whether a typed word is a typo of ``right`` inside a longer name (see _misspelt_phrase):
+    as for a name of one word, 4+ letters ("mgu" is never corrected) and not a real word."""
+    if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
+        return False
+    return word not in PHRASE_WORDS and word not in common_words() and _one_edit(word, right)
 
 
 def _one_edit(a: str, b: str) -> bool:

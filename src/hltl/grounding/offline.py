@@ -802,15 +802,27 @@ class _Parser:
         """What 'it' (the clause just before) or 'them' (that clause and its list) refer to."""
         frags = self.frags
         f = frags[k]
-        if f.it and f.subject and f.target is not None:
-            # "…, and B the chips once A has it": what A has is what A is given, not the chips
+        if (f.it or f.them) and f.subject and f.target is not None:
+            # "…, and B the chips once A has it": what A has is what A is given, not the chips;
+            # 'them': that clause with the list it heads ("give A the cup and the apple, …")
             given = [
-                g
-                for g in frags[:k]
+                n
+                for n, g in enumerate(frags[:k])
                 if g.target is not None and g.target.id == f.target.id and not g.subject
             ]
             if given:
-                return [given[-1]]
+                heads = [frags[given[-1]]]
+                for g in frags[given[-1] + 1 : k]:
+                    if g.segment != heads[0].segment or g.verb_text or g.subject or g.target:
+                        break
+                    heads.append(g)
+                heads = [g for g in heads if g.objects is not None]
+                if f.it and len(heads) > 1:
+                    names = ", ".join(o for g in heads for o in g.objects or ())
+                    raise GroundingError(
+                        f"'it' in {f.text!r} could mean any of {names}: name the object"
+                    )
+                return heads
         if f.it:
             return [frags[k - 1]]
         out: list[_Frag] = []
@@ -1294,10 +1306,12 @@ def _merge_sep(a: str, b: str, items: list[Item]) -> str:
 
 def _continues(seps: list[str], k: int, word: str) -> bool:
     """Inside an either/both bracket, separator k continues it if it is the bracket's word, or a
-    comma followed by that word before any other."""
+    comma followed by that word before any other; in an 'either', an 'and' also continues it
+    when its 'or' comes later ('either A gets the cup and the apple, or B gets …': the 'or'
+    ends the first alternative)."""
     for s in seps[k:]:
         if s == word:
             return True
-        if s != ",":
+        if s != "," and not (word == "or" and s == "and"):
             return False
     return False

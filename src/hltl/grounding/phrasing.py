@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, Item, Lexicon, Ref, near_keyword
+from hltl.grounding.lexicon import NUMBERS, RETRACTIONS, Item, Lexicon, Ref, near_keyword
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -32,24 +33,14 @@ def _humans(item: Item) -> bool:
 
 def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """Apply every pass in order; raises :class:`GroundingError` for what must be refused."""
-    items = _preambles(items, lexicon)
-    items = _questions(items)
-    items = _after_all(items)
-    items = _whichever(items)
-    items = _relatives(items, lexicon)
-    items = _one_anaphora(items, lexicon)
-    items = _demonstratives(items)
-    items = _quantifiers(items, lexicon)
-    items = _corrections(items)
-    items = _nobody(items)
-    items = _instead_of(items)
-    items = _exclusions(items)
-    items = _speaker(items, lexicon)
-    items = _persons(items, lexicon)
-    items = _places(items, lexicon)
-    items = _remarks(items, lexicon)
-    items = _datives(items)
+    for step in _PASSES:
+        items = step(items, lexicon)
     return items
+
+
+def _plain(step: Callable[[list[Item]], list[Item]]) -> Callable[[list[Item], Lexicon], list[Item]]:
+    """A pass that does not need the scene's names, as one of _PASSES."""
+    return lambda items, _lexicon: step(items)
 
 
 def _sentences(items: list[Item]) -> list[tuple[int, int]]:
@@ -96,6 +87,30 @@ def _questions(items: list[Item]) -> list[Item]:
     return items
 
 
+def _is_after(items: list[Item]) -> list[Item]:
+    """'Bob's after the chips': at the start of a clause, a person who 'is after' an object
+    wants it ('after' between a person and an object orders nothing)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        opens = not out or out[-1].kind == "punct" or _is(out[-1], "and")
+        if (
+            opens
+            and _humans(it)
+            and k + 3 < len(items)
+            and items[k + 1].text.lower() in ("'s", "is", "are", "'re")
+            and _is(items[k + 2], "after")
+            and (_objects(items[k + 3]) or _is(items[k + 3], "det"))
+        ):
+            out += [it, Item("word", "verb:want", f"{items[k + 1].text} {items[k + 2].text}")]
+            k += 3
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
 _DONE_WORDS = frozenset({"done", "finished", "complete", "completed", "over", "there", "through"})
 
 
@@ -132,42 +147,183 @@ def _after_all(items: list[Item]) -> list[Item]:
 
 
 def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
-    """'Carol's thirsty, can you hand her the bottle?': a remark about a person, no task.
+    """'Carol's thirsty, can you hand her the bottle?', 'Give Bob the chips because he's
+    hungry': a remark about a person, or a reason, adds no task and is dropped.
 
-    A person, 'is'/''s', then words the grammar does not know, up to a comma or the end of the
-    sentence: the remark is dropped when a request comes after it, or when it follows the
-    request after a comma ('Give Bob the chips, he's hungry'). The person pronouns were resolved
-    before this pass, so an unclear 'she' was refused already.
+    A remark opens a sentence (up to a comma or its end; a request must follow), or follows a
+    request after a comma (up to the end of the sentence): people (or 'it'), then a verb the
+    grammar does not know or 'is'/'has been' …, with words the grammar does not know, and
+    nothing that names an object or surface, moves anything, orders, chooses or conditions
+    (_remark_words). A reason ('because', 'since', 'so that' / 'so <person> can …') after a
+    request, or before it up to a comma, is dropped on the same terms, possession verbs
+    allowed ('because Carol doesn't like them'). The person pronouns were resolved before this
+    pass, so an unclear 'she' was refused already.
     """
     k = 0
     while k < len(items):
         at_start = k == 0 or (items[k - 1].kind == "punct")
-        if at_start and _humans(items[k]) and k + 2 < len(items):
-            j = k + 1
-            while j + 1 < len(items) and _is(items[j], "and", ",") and _humans(items[j + 1]):
-                j += 2  # "Alice and Carol are thirsty, …"
-            if j < len(items) and items[j].text.lower() in ("'s", "is", "was", "'re", "are"):
-                j += 1
-                n = j
-                while n < len(items) and (
-                    items[n].kind == "unknown" or _is(items[n], "det", "filler", "aux")
-                ):
-                    n += 1
-                said = any(x.kind == "unknown" for x in items[j:n]) and not any(
-                    _hides_name(x, lexicon) for x in items[j:n]
-                )
-                if said and n < len(items) and items[n].kind == "punct":
-                    rest = items[n + 1 :]
-                    if any(x.kind == "ent" for x in rest):
-                        items = items[:k] + rest
-                        continue
-                ends = n == len(items) or (items[n].kind == "punct" and items[n].lemma in _END)
-                after_request = k > 1 and _is(items[k - 1], ",") and _has_request(items[: k - 1])
-                if said and ends and after_request:
-                    items = items[: k - 1] + items[n:]
+        after_comma = k > 1 and _is(items[k - 1], ",") and _has_request(items[: k - 1])
+        reason = _reason_length(items, k)
+        opening = k == 0 or items[k - 1].lemma in _END
+        if reason and (opening or _has_request(items[:k])):
+            end = _clause_stop(items, k, opening)
+            said = _people(items[:k] + items[end:])
+            if _remark_words(items[k + reason : end], lexicon, said, reason=True) and (
+                not opening or (end < len(items) and _is(items[end], ","))
+            ):
+                if opening:  # "Because Bob is hungry, give him the chips"
+                    items = items[:k] + items[end + 1 :]
+                else:
+                    cut = k - 1 if _is(items[k - 1], ",") else k
+                    items = items[:cut] + items[end:]
+                    k = cut
+                continue
+        if (at_start or after_comma) and _opens_remark(items, k):
+            end = _clause_stop(items, k, at_start)
+            rest = items[end:]
+            if _remark_words(items[k:end], lexicon, _people(items[:k] + rest), reason=False):
+                leads = at_start and end < len(items) and items[end].kind == "punct"
+                if leads and any(x.kind == "ent" for x in rest[1:]):
+                    items = items[:k] + rest[1:]
+                    continue
+                ends = end == len(items) or items[end].lemma in _END
+                if after_comma and ends:
+                    items = items[: k - 1] + rest
                     continue
         k += 1
     return items
+
+
+def _reason_length(items: list[Item], k: int) -> int:
+    """How many words open a reason at ``k`` ('because', 'so that', 'so <person> can'), else 0."""
+    it = items[k]
+    if _is(it, "reason"):
+        return 1
+    if it.kind == "word" and it.text.lower() == "so" and k + 2 < len(items):
+        nxt = items[k + 1]
+        if nxt.kind == "unknown" and nxt.lemma == "that":
+            return 2
+        if (_humans(nxt) or _is(nxt, "it", "subject")) and _is(items[k + 2], "aux"):
+            return 1  # "so she can have some tea"; "so give her the cup" is a request
+    return 0
+
+
+def _clause_stop(items: list[Item], k: int, to_comma: bool) -> int:
+    """The end of the sentence from ``k`` (or its first comma when ``to_comma``)."""
+    n = k
+    while n < len(items) and not (
+        items[n].kind == "punct"
+        and (items[n].lemma in _END or (to_comma and items[n].lemma == ","))
+    ):
+        n += 1
+    return n
+
+
+# words a person says about themselves or others that are not a request ("she asked for it")
+_REMARK_VERBS = frozenset(
+    {
+        "said",
+        "says",
+        "told",
+        "asked",
+        "asks",
+        "thinks",
+        "thought",
+        "knows",
+        "feels",
+        "felt",
+        "seems",
+        "looks",
+        "loves",
+        "likes",
+        "hates",
+        "mentioned",
+        "missed",
+        "waited",
+        "is",
+        "was",
+    }
+)
+
+
+def _opens_remark(items: list[Item], k: int) -> bool:
+    """People or 'it', then 'is'/'has'/a verb of saying or feeling: a remark may start at k."""
+    j = k
+    if not (_humans(items[j]) or (_is(items[j], "it") and items[j].text.lower() == "it")):
+        return False
+    j += 1
+    while j + 1 < len(items) and _is(items[j], "and", ",") and _humans(items[j + 1]):
+        j += 2  # "Alice and Carol are thirsty, …"
+    if j >= len(items):
+        return False
+    nxt = items[j]
+    return (
+        nxt.text.lower() in ("'s", "is", "was", "'re", "are", "has", "had", "'ve", "have")
+        or (nxt.kind == "unknown" and nxt.lemma.split()[0] in _REMARK_VERBS)
+        or (nxt.kind == "unknown" and nxt.lemma.split()[0].endswith("ed"))
+        or (
+            nxt.lemma in ("verb:want", "verb:need", "verb:like")
+            and j + 1 < len(items)
+            and items[j + 1].kind == "unknown"
+            and items[j + 1].lemma.split()[0] in ("something", "anything")
+        )
+    )
+
+
+def _people(items: list[Item]) -> set[str]:
+    return {r.id for x in items if _humans(x) for r in x.refs}
+
+
+def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason: bool) -> bool:
+    """Whether ``words`` can be dropped as a remark: people, 'it'/'them', words the grammar does
+    not know (none hiding a scene name or near a keyword), and only glue words; no object,
+    surface or robot, no verb that moves anything, no order, choice, condition or correction.
+    Possession verbs only in a reason, or before 'something' ('want something to drink');
+    'have' only as 'has been …'. Outside a reason, one unknown word at least."""
+    if not words:
+        return False
+    glue = ("aux", "filler", "det", "subject", "not", "to", "for", "on", "it", "them", "and")
+    for n, x in enumerate(words):
+        nxt = words[n + 1] if n + 1 < len(words) else None
+        if _humans(x) or _is(x, *glue):
+            continue
+        if x.kind == "unknown":
+            if _hides_name(x, lexicon):
+                return False
+            continue
+        if x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive"):
+            if reason:
+                continue
+            if (
+                nxt is not None
+                and nxt.kind == "unknown"
+                and nxt.lemma.split()[0]
+                in (
+                    "something",
+                    "anything",
+                )
+            ):
+                continue
+            if (
+                x.lemma == "verb:have"
+                and nxt is not None
+                and (_is(nxt, "aux") or nxt.kind == "unknown")
+            ):
+                continue
+        return False
+    # someone the request does not name who wants or has it ("because Carol wants them", "Alice
+    # is waiting for it") may be asking for it too: not a remark to drop, unless negated
+    if _people(words) - said and not any(_is(x, "not") for x in words):
+        wants = any(
+            x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive")
+            and not (
+                n + 1 < len(words) and words[n + 1].lemma.split()[0] in ("something", "anything")
+            )
+            for n, x in enumerate(words)
+        )
+        if wants or any(_is(x, "it", "them") for x in words):
+            return False
+    return reason or any(x.kind == "unknown" for x in words)
 
 
 def _speaker_opens(head: list[Item]) -> bool:
@@ -290,6 +446,22 @@ def _whichever(items: list[Item]) -> list[Item]:
 _BE = frozenset({"is", "'s", "are", "'re", "was", "were"})
 
 
+def _after_objects(
+    items: list[Item], lexicon: Lexicon, read: Callable[[list[Item], int, list[Item], Lexicon], int]
+) -> list[Item]:
+    """Copy ``items``; after each object mention, ``read`` may narrow it (``out[-1]``) by the
+    words from ``k`` on and returns where to go on (``k`` when it reads nothing)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        out.append(it)
+        k += 1
+        if _objects(it):
+            k = read(items, k, out, lexicon)
+    return out
+
+
 def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'a mug that isn't red', 'the mug which is blue': keep the objects the word describes.
 
@@ -297,48 +469,43 @@ def _relatives(items: list[Item], lexicon: Lexicon) -> list[Item]:
     objects with their category ('red' → 'red mug'): the mention keeps those (or, negated, the
     others). A word that names none of them is refused rather than ignored.
     """
-    out: list[Item] = []
-    k = 0
-    while k < len(items):
-        it = items[k]
-        out.append(it)
-        k += 1
-        if not _objects(it) or k + 2 >= len(items):
-            continue
-        rel = items[k]
-        if not (rel.kind == "word" and rel.text.lower() in ("that", "which")):
-            continue
-        j = k + 1
-        if items[j].text.lower() not in _BE:
-            continue
+    return _after_objects(items, lexicon, _relative)
+
+
+def _relative(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    it = out[-1]
+    if k + 2 >= len(items):
+        return k
+    rel = items[k]
+    if not (rel.kind == "word" and rel.text.lower() in ("that", "which")):
+        return k
+    j = k + 1
+    if items[j].text.lower() not in _BE:
+        return k
+    j += 1
+    if _is(items[j], "near", "nearest"):
+        return j  # "the mug that's nearest to Carol": a place, read by _places
+    negated = j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
+    if negated:
         j += 1
-        if _is(items[j], "near", "nearest"):
-            k = j  # "the mug that's nearest to Carol": a place, read by _places
-            continue
-        negated = (
-            j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
+    if j >= len(items) or items[j].kind != "unknown" or " " in items[j].lemma:
+        return k
+    word = items[j]
+    named: set[str] = set()
+    for cat in _categories(it, lexicon):
+        found = lexicon.lookup(f"{word.lemma} {cat}")
+        if found is not None:
+            named |= {r.id for r in found}
+    ids = {r.id for r in it.refs}
+    if not named & ids:
+        raise GroundingError(
+            f"no {it.text!r} is {word.text!r} in the scene; {lexicon.listing('object')}"
         )
-        if negated:
-            j += 1
-        if j >= len(items) or items[j].kind != "unknown" or " " in items[j].lemma:
-            continue
-        word = items[j]
-        named: set[str] = set()
-        for cat in _categories(it, lexicon):
-            found = lexicon.lookup(f"{word.lemma} {cat}")
-            if found is not None:
-                named |= {r.id for r in found}
-        ids = {r.id for r in it.refs}
-        if not named & ids:
-            raise GroundingError(
-                f"no {it.text!r} is {word.text!r} in the scene; {lexicon.listing('object')}"
-            )
-        keep = ids - named if negated else ids & named
-        if not keep:
-            raise GroundingError(f"no {it.text!r} is left that is not {word.text!r}")
-        out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in keep))
-        k = j + 1
-    return out
+    keep = ids - named if negated else ids & named
+    if not keep:
+        raise GroundingError(f"no {it.text!r} is left that is not {word.text!r}")
+    out[-1] = replace(it, refs=tuple(r for r in it.refs if r.id in keep))
+    return j + 1
 
 
 # how much nearer the nearest must be than the next ("the mug nearest to Carol"): closer calls
@@ -355,52 +522,46 @@ def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
     must be clearly nearer than the next (within 3/4 of its distance), else refused. A
     mention naming one object keeps it.
     """
-    out: list[Item] = []
-    k = 0
-    while k < len(items):
-        it = items[k]
-        out.append(it)
-        k += 1
-        if _objects(it) and k < len(items) and _is(items[k], "on") and _given(out[:-1]):
-            k = _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
-            continue
-        if not _objects(it) or k >= len(items) or not _is(items[k], "near", "nearest"):
-            continue
-        j = k + 1
-        while j < len(items) and _is(items[j], "det"):
-            j += 1
-        if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
-            what = items[j].text if j < len(items) else "nothing"
-            raise GroundingError(
-                f"{items[k].text!r} after {it.text!r} needs one person, surface or object, "
-                f"not {what!r}"
-            )
-        anchor = items[j].refs[0]
-        where = _position(anchor.kind, anchor.id, lexicon)
-        ids = [i for i in dict.fromkeys(r.id for r in it.refs) if i != anchor.id]
-        if not ids:
-            raise GroundingError(f"{it.text!r} {items[k].text} itself names nothing else")
-        if len(ids) > 1:
-            dist = sorted(
-                (math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids
-            )
-            (d1, best), (d2, second) = dist[0], dist[1]
-            if d1 >= _CLEARLY_NEARER * d2:
-                raise GroundingError(
-                    f"'{it.text} {items[k].text} {items[j].text}': {best} and {second} are about "
-                    "as near; name the object"
-                )
-            ids = [best]
-        refs = tuple(r for r in it.refs if r.id in ids)
-        single = len(ids) == 1
-        out[-1] = replace(
-            it,
-            refs=refs,
-            quant="" if single and it.quant == "some" else it.quant,
-            group=-1 if single else it.group,
+    return _after_objects(items, lexicon, _place)
+
+
+def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    it = out[-1]
+    if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
+        return _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
+    if k >= len(items) or not _is(items[k], "near", "nearest"):
+        return k
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
+        what = items[j].text if j < len(items) else "nothing"
+        raise GroundingError(
+            f"{items[k].text!r} after {it.text!r} needs one person, surface or object, not {what!r}"
         )
-        k = j + 1
-    return out
+    anchor = items[j].refs[0]
+    where = _position(anchor.kind, anchor.id, lexicon)
+    ids = [i for i in dict.fromkeys(r.id for r in it.refs) if i != anchor.id]
+    if not ids:
+        raise GroundingError(f"{it.text!r} {items[k].text} itself names nothing else")
+    if len(ids) > 1:
+        dist = sorted((math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids)
+        (d1, best), (d2, second) = dist[0], dist[1]
+        if d1 >= _CLEARLY_NEARER * d2:
+            raise GroundingError(
+                f"'{it.text} {items[k].text} {items[j].text}': {best} and {second} are about "
+                "as near; name the object"
+            )
+        ids = [best]
+    refs = tuple(r for r in it.refs if r.id in ids)
+    single = len(ids) == 1
+    out[-1] = replace(
+        it,
+        refs=refs,
+        quant="" if single and it.quant == "some" else it.quant,
+        group=-1 if single else it.group,
+    )
+    return j + 1
 
 
 def _given(before: list[Item]) -> bool:
@@ -544,11 +705,28 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
     out: list[Item] = []
     k = 0
     everything = tuple(Ref("object", o.id, plural=True) for o in lexicon.scene.objects)
+    humans = lexicon.scene.humans
     while k < len(items):
         it = items[k]
         if _is(it, "q:everything"):
             out.append(Item("ent", it.lemma, it.text, everything, quant="all"))
             k += 1
+            continue
+        if _is(it, "q:everyone"):  # "give each person one item": every person in the scene
+            people = [Item("ent", it.lemma, it.text, (Ref("human", h.id),)) for h in humans]
+            if not people:
+                raise GroundingError(f"{it.text!r}: the scene has no people")
+            out.extend(_joined(people))
+            k += 1
+            continue
+        count = _counted_alone(items, k)
+        if count:  # "give Alice both", "Person B gets all four": that many objects
+            n = 1 if _is(it, "both") else 2
+            said = items[k : k + n]
+            words = " ".join(x.text for x in said)
+            refs = _the_objects(out, count, words, lexicon)
+            out.append(Item("ent", words.lower(), words, refs, quant="all"))
+            k += n
             continue
         if _is(it, "other"):
             prev = next((x for x in reversed(out) if x.quant == "some"), None)
@@ -584,6 +762,12 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "det"):
                 j += 1
+            if quant == "some" and j + 1 < len(items) and _objects(items[j + 1]):
+                kind, many = _quant_word(items[j])
+                if kind == "num":  # "one of the two mugs": there must be two
+                    words = " ".join(x.text for x in items[j : j + 2])
+                    _quantify(items[j + 1], "num", many, words, lexicon, k)
+                    j += 1
             if j < len(items) and _objects(items[j]):
                 target = items[j]
                 words = " ".join(x.text for x in items[k : j + 1])
@@ -607,6 +791,54 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         k += 1
     # a "some" mention with one ref is that object; an indefinite singular stays a choice
     return out
+
+
+# what may follow 'both' or 'all four' used alone, as the objects of a clause
+_AFTER_ALONE = frozenset(
+    {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to"}
+)
+
+
+def _counted_alone(items: list[Item], k: int) -> int:
+    """How many objects 'both' (2) or 'all four' (4) stands for when used without a name after
+    it ('give Alice both', 'Person B gets all four'), else 0."""
+    it = items[k]
+    if _is(it, "both"):
+        n = 1
+    elif it.kind == "word" and it.text.lower() == "all" and k + 1 < len(items):
+        if _quant_word(items[k + 1])[0] != "num":
+            return 0
+        n = 2
+    else:
+        return 0
+    nxt = items[k + n] if k + n < len(items) else None
+    if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
+        return 0
+    if (
+        nxt is not None
+        and _is(nxt, "and")
+        and k + n + 1 < len(items)
+        and (_objects(items[k + n + 1]) or _is(items[k + n + 1], "det"))
+    ):
+        return 0  # "both and the cup": not a clause's objects
+    if _is(it, "both"):
+        return 2
+    return _quant_word(items[k + 1])[1]
+
+
+def _the_objects(out: list[Item], count: int, words: str, lexicon: Lexicon) -> tuple[Ref, ...]:
+    """The ``count`` objects 'both'/'all four' means: those named before (if that many), else
+    the scene's (if that many); refused when neither or both fit and differ."""
+    named = list(dict.fromkeys(r.id for x in out if _objects(x) for r in x.refs))
+    scene = [o.id for o in lexicon.scene.objects]
+    fits = [ids for ids in (named, scene) if len(ids) == count]
+    if not fits or (len(fits) == 2 and set(fits[0]) != set(fits[1])):
+        raise GroundingError(
+            f"{words!r} does not say which {count} objects: "
+            f"{len(named)} named before it, {len(scene)} in the scene; name them; "
+            f"{lexicon.listing('object')}"
+        )
+    return tuple(Ref("object", i, plural=True) for i in fits[0])
 
 
 def _choice_of_two(out: list[Item], at: int) -> Item | None:
@@ -731,9 +963,9 @@ def _corrections(items: list[Item]) -> list[Item]:
         ):
             j += 1
         before = items[:k]
-        while before and _is(before[-1], ",", "-"):
-            before.pop()
-        after = items[j:]
+        while before and _is(before[-1], ",", "-", "filler"):
+            before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
+        after = _without_trailing_markers(items[j:])
         if it.text.lower() in ("sorry", "oops") and (
             not after or (after[0].kind == "punct" and after[0].lemma in _END)
         ):
@@ -753,9 +985,25 @@ def _corrections(items: list[Item]) -> list[Item]:
                     or (after[r + 1].kind == "punct" and after[r + 1].lemma in _END)
                 )
             )
-            said_no = any(x.text.lower() in ("no", "instead") for x in items[k:j])
+            said_no = any(
+                x.text.lower() in ("no", "instead") or x.text.lower() in RETRACTIONS
+                for x in items[k:j]
+            )
+            if said_no and not alone and _clause_opens(after, r):
+                last = max(
+                    (n + 1 for n in range(len(before) - 1) if before[n].lemma in _END), default=0
+                )
+                if sum(1 for x in before[last:] if _is_verb_item(x)) > 1:
+                    raise GroundingError(
+                        f"{it.text!r} could take back the whole sentence before it or only its "
+                        "last part: say the whole request again"
+                    )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
+                if before and before[-1].kind != "punct":
+                    items = _apply_correction(before, after, it, whole=True)
+                    k = 0
+                    continue
             elif after:
                 raise GroundingError(
                     f"{it.text!r} at the start of a sentence could correct the request before it "
@@ -770,15 +1018,59 @@ def _corrections(items: list[Item]) -> list[Item]:
     return items
 
 
-def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> list[Item]:
+def _words_of(items: list[Item]) -> str:
+    return " ".join(x.text for x in items)[:60]
+
+
+def _clause_opens(after: list[Item], r: int) -> bool:
+    """Whether a correction at ``after[r]`` is a whole clause: a verb, or a person and a verb
+    ('…, no, Bob wants the crisps')."""
+    if r >= len(after):
+        return False
+    if _is_verb_item(after[r]):
+        return True
+    j = r + 1
+    while j < len(after) and _is(after[j], "aux", "filler"):
+        j += 1
+    if after[r].kind != "ent" or j >= len(after):
+        return False
+    # "…, no, the crisps are for Bob": a name, 'is/are' and a recipient or place is a clause too
+    be = any(x.text.lower() in _BE for x in after[r + 1 : j])
+    return _is_verb_item(after[j]) or (be and _is(after[j], "to", "for", "on"))
+
+
+def _without_trailing_markers(after: list[Item]) -> list[Item]:
+    """'…, to Bob actually.': a correction word ending the correction only stresses it."""
+    end = next((n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), None)
+    stop = len(after) if end is None else end
+    cut = stop
+    while (
+        cut > 0
+        and _is(after[cut - 1], "correct", "filler")
+        and after[cut - 1].text.lower()
+        in (
+            "actually",
+            "instead",
+            "please",
+            "then",
+        )
+    ):
+        cut -= 1
+    return after[:cut] + after[stop:] if cut > 0 else after
+
+
+def _apply_correction(
+    before: list[Item], after: list[Item], marker: Item, *, whole: bool = False
+) -> list[Item]:
     start = max(
         (k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0
     )
     r = 0
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
-    if r < len(after) and after[r].kind == "word" and after[r].lemma.startswith("verb:"):
-        # a whole new clause replaces the last clause; "it" keeps meaning what that clause moved
+    if _clause_opens(after, r):
+        # a whole new clause replaces the last clause (from its verb back to the separator
+        # before it: its subject too); "it" keeps meaning what that clause moved
         verbs = [
             k
             for k in range(start, len(before))
@@ -787,8 +1079,23 @@ def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> li
         if not verbs:
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         cut = verbs[-1]
+        while cut > start and not _is(before[cut - 1], *_SEPARATORS):
+            cut -= 1
+        if any(_is(x, "instead", "instead_of", "correct") for x in before[cut:]):
+            # "X. Give Bob the apple instead, no, Z": what the taken-back 'instead' replaced
+            # is unclear
+            raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         moved = [it for it in before[cut:] if _objects(it)]
+        # "Give Alice the chips. Scratch that, give her the bottle.": 'her' is the one person of
+        # the clause taken back (with several, the pronoun is left to be refused as unclear)
+        people = {r.id: x for x in before[cut:] if _humans(x) for r in x.refs}
         rest = list(after)
+        for m, x in enumerate(rest):
+            if x.kind == "punct" and x.lemma in _END:
+                break
+            if x.lemma == "pronoun" and x.text.lower() in _PERSON_PRONOUNS and len(people) == 1:
+                (who,) = people.values()
+                rest[m] = replace(who, text=x.text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
                 break
@@ -804,12 +1111,59 @@ def _apply_correction(before: list[Item], after: list[Item], marker: Item) -> li
             f"cannot read the correction {marker.text!r} … {what!r}: say the whole request again"
         )
     new = after[r]
+    paired = _person_and_object(before, after, r, start)
+    if paired is not None:
+        return paired
+    tail = after[r + 1 :]
+    stop = next((n for n, x in enumerate(tail) if x.kind == "punct" and x.lemma in _END), len(tail))
+    if whole and not all(_is(x, "filler") for x in tail[:stop]):
+        # after a full stop the name cannot continue the sentence it corrects
+        raise GroundingError(
+            f"cannot read the correction {marker.text!r} … {_words_of(after[r:])!r}: say the "
+            "whole request again"
+        )
     kinds = {x.kind for x in new.refs}
     for k in range(len(before) - 1, start - 1, -1):
         old = before[k]
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
             return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+
+
+def _person_and_object(
+    before: list[Item], after: list[Item], r: int, start: int
+) -> list[Item] | None:
+    """'… and Carol the apple, actually no, Carol the cup': a person said before, with a new
+    object, replaces the object that person was given (in the clause naming them last)."""
+    o = r + 1
+    while o < len(after) and _is(after[o], "det"):
+        o += 1
+    if not _humans(after[r]) or o >= len(after) or not _objects(after[o]):
+        return None
+    tail = after[o + 1 :]
+    if tail and not (tail[0].kind == "punct" and tail[0].lemma in _END):
+        return None
+    who = {x.id for x in after[r].refs}
+    at = next(
+        (
+            n
+            for n in range(len(before) - 1, start - 1, -1)
+            if _humans(before[n]) and {x.id for x in before[n].refs} == who
+        ),
+        None,
+    )
+    if at is None:
+        return None
+    n = at + 1
+    while n < len(before) and _is(before[n], "det"):
+        n += 1
+    if n >= len(before) or not _objects(before[n]):
+        return None
+    if n + 1 < len(before) and (
+        not _is(before[n + 1], ",", "and", "then") or _starts_objects(before, n + 2)
+    ):
+        return None  # more than one object, or a place after it: say it again in full
+    return [*before[:n], after[o], *before[n + 1 :], *tail]
 
 
 def _joined(names: list[Item]) -> list[Item]:
@@ -885,6 +1239,66 @@ def _nobody(items: list[Item]) -> list[Item]:
                 f"{x.text!r} is to get nothing and something in the same instruction: say which"
             )
     return out
+
+
+def _not_wanted(items: list[Item]) -> list[Item]:
+    """'Alice doesn't want the cup, she wants the apple', 'Don't give Bob the apple, give him
+    the chips': a clause saying what not to do, beside a request, adds no task.
+
+    The clause opens the sentence and ends at a comma: a person, 'does not'/'doesn't' and
+    want/need/like, or 'don't'/'never' and a verb that moves things, then only objects and
+    people. It is dropped when a request follows in the same sentence and nothing after it
+    says 'it'/'them' or names one of its objects again (that would contradict it, or leave a
+    pronoun pointing elsewhere): then it is refused as a negation.
+    """
+    for start, end in _sentences(items):
+        comma = next((n for n in range(start, end) if _is(items[n], ",")), None)
+        if comma is None or not any(_is(x, "not") for x in items[start:comma]):
+            continue
+        head = [x for x in items[start:comma] if not _is(x, "filler", "det")]
+        objs = _unwanted(head)
+        rest = items[comma + 1 : end]
+        while rest and _is(rest[0], ",", "and"):
+            rest = rest[1:]  # ", but she wants …"
+        if objs is None or not any(x.kind == "ent" for x in rest):
+            continue
+        if any(_is(x, "it", "them") for x in items[comma:]) or any(
+            x.kind == "ent" and {r.id for r in x.refs} & objs for x in items[comma:]
+        ):
+            continue
+        return _not_wanted([*items[:start], *rest, *items[end:]])
+    return items
+
+
+def _unwanted(head: list[Item]) -> set[str] | None:
+    """The objects of 'P doesn't want X (and Y)' / 'don't give P X', else None."""
+    k = 0
+    person = _humans(head[0]) if head else False
+    if person:  # "Alice doesn't want the cup"
+        k = 1
+        while k < len(head) and _is(head[k], "aux", "do"):
+            k += 1
+        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
+            return None
+        if head[k + 1].lemma not in ("verb:want", "verb:need", "verb:like"):
+            return None
+        k += 2
+    else:  # "Don't give Bob the apple", "never hand Carol the cup"
+        while k < len(head) and _is(head[k], "aux", "do"):
+            k += 1
+        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
+            return None
+        verb = head[k + 1]
+        if verb.lemma not in ("verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"):
+            return None
+        k += 2
+    objs: set[str] = set()
+    for x in head[k:]:
+        if _objects(x):
+            objs |= {r.id for r in x.refs}
+        elif not (_humans(x) or _is(x, "and", "to", "for")):
+            return None
+    return objs or None
 
 
 def _instead_of(items: list[Item]) -> list[Item]:
@@ -990,6 +1404,73 @@ def _exclusions(items: list[Item]) -> list[Item]:
     return out
 
 
+_CLAUSE_OPENERS = frozenset({*_END, "then", "prior", "once", "after", "before"})
+
+
+def _respectively(items: list[Item]) -> list[Item]:
+    """'Give Alice and Bob the cup and the apple respectively': pair the two lists in order.
+
+    The clause before 'respectively' must hold one verb (or a possession verb after the
+    people), one list of two or more people (or surfaces) and one list of as many objects, each
+    naming one object; anything else there leaves 'respectively' to be refused.
+    """
+    k = next((n for n, x in enumerate(items) if _is(x, "respectively")), None)
+    if k is None:
+        return items
+    start = max((n + 1 for n in range(k) if _is(items[n], *_CLAUSE_OPENERS)), default=0)
+    end = k
+    while end > start and _is(items[end - 1], ",", "filler"):
+        end -= 1
+    clause = items[start:end]
+    lists: list[list[Item]] = []
+    verbs: list[int] = []
+    preps: list[Item] = []
+    for n, x in enumerate(clause):
+        if x.kind == "ent":
+            joined = lists and n >= 2 and _is(clause[n - 1], "and", ",", "det")
+            joined = joined and any(
+                y.kind == "ent" for y in clause[max(0, n - 3) : n] if y is not x
+            )
+            if joined and {r.kind for r in x.refs} == {r.kind for r in lists[-1][0].refs}:
+                lists[-1].append(x)
+            else:
+                lists.append([x])
+        elif _is_verb_item(x):
+            verbs.append(n)
+        elif _is(x, "to", "for", "on"):
+            preps.append(x)
+        elif not _is(x, "and", ",", "det", "filler", "aux", "subject"):
+            return items
+    if len(lists) != 2 or len(verbs) != 1 or len(preps) > 1:
+        return items
+    objs = next((g for g in lists if all(_objects(x) for x in g)), None)
+    targets = next((g for g in lists if g is not objs), None)
+    if objs is None or targets is None or len(objs) != len(targets) or len(objs) < 2:
+        return items
+    if any(len({r.id for r in x.refs}) != 1 or x.quant for x in [*objs, *targets]):
+        return items
+    kinds = {r.kind for x in targets for r in x.refs}
+    if kinds not in ({"human"}, {"surface"}):
+        return items
+    verb = clause[verbs[0]]
+    subject_first = clause.index(targets[0]) < verbs[0]
+    if subject_first and (kinds != {"human"} or preps):
+        return items
+    pairs: list[list[Item]] = []
+    for o, t in zip(objs, targets, strict=True):
+        if subject_first:  # "Alice and Bob get the cup and the apple respectively"
+            pairs.append([t, verb, o])
+        else:
+            prep = preps[0] if preps else Item("word", "on" if kinds == {"surface"} else "to", "")
+            pairs.append([verb, o, prep, t])
+    out: list[Item] = []
+    for pair in pairs:
+        if out:
+            out.append(Item("word", "and", "and"))
+        out.extend(pair)
+    return _respectively([*items[:start], *out, *items[k + 1 :]])
+
+
 def _starts_objects(items: list[Item], k: int) -> bool:
     while k < len(items) and _is(items[k], "det"):
         k += 1
@@ -1061,9 +1542,9 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 and _objects(nxt)
             ):
                 continue  # "give Alice her cup": a possessive after the person
-            if len(seen) == 1:
-                pid = next(iter(seen))
-                out.append(Item("ent", low, it.text, (Ref("human", pid),)))
+            candidates = [p for p in seen if p not in _waiting(out, items, k)]
+            if len(candidates) == 1:
+                out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
             readings = list(seen) or [h.id for h in lexicon.scene.humans]
             raise GroundingError(
@@ -1098,6 +1579,31 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _waiting(out: list[Item], items: list[Item], k: int) -> set[str]:
+    """The people who wait for 'she' in '…, and Bob the apple once she has it' (the person of
+    the clause right before a trailing 'once/after <pronoun> has …'): not who 'she' is, since
+    nobody waits until they have something themselves."""
+    if not out or not _is(out[-1], "once", "after"):
+        return set()
+    j = k + 1
+    while j < len(items) and _is(items[j], "aux", "filler"):
+        j += 1
+    if j >= len(items) or items[j].lemma not in ("verb:have", "verb:get", "verb:receive"):
+        return set()
+    if not (
+        j + 1 < len(items)
+        and (items[j + 1].text.lower() in ("it", "them") or _starts_objects(items, j + 1))
+    ):
+        return set()  # "once she gets there": she may be the one who arrives
+    people: set[str] = set()
+    n = len(out) - 2
+    while n >= 0 and not (out[n].kind == "punct" or _is(out[n], "and", "then")):
+        if _humans(out[n]):
+            people |= {r.id for r in out[n].refs}
+        n -= 1
+    return people
 
 
 def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
@@ -1138,6 +1644,64 @@ def _or(ids: list[str], lexicon: Lexicon) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
 
 
+def _there(items: list[Item]) -> list[Item]:
+    """'Put the apple on the shelf and the cup there too': 'there' is the one surface named
+    before it; with none or several it is left to be refused ('there is …' is no place)."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        nxt = items[k + 1] if k + 1 < len(items) else None
+        if _is(it, "there") and not (
+            nxt is not None and _is(nxt, "aux", "filler") and nxt.text.lower() in _BE
+        ):
+            surfaces = {r.id: x for x in out if _is_surface(x) for r in x.refs}
+            if len(surfaces) == 1:
+                (where,) = surfaces.values()
+                if not (out and _is(out[-1], "on", "to")):
+                    out.append(Item("word", "on", ""))
+                out.append(replace(where, text=it.text))
+                continue
+        out.append(it)
+    return out
+
+
+_SEPARATORS = frozenset({*_END, ",", "and", "then", "prior"})
+
+
+def _last(items: list[Item]) -> list[Item]:
+    """'Give Alice the bottle last; first give Bob the chips': that clause after all the rest.
+
+    'last' must end a clause that opens with a verb or a person (not a bare object: 'the cup and
+    the apple last' could order the two or both); the clause then comes after every other task
+    of the instruction. Any other 'last' is left to be refused.
+    """
+    at = [n for n, x in enumerate(items) if _is(x, "last")]
+    if len(at) != 1:
+        return items
+    k = at[0]
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    if nxt is not None and not _is(nxt, *_SEPARATORS, "filler"):
+        return items
+    start = max((n + 1 for n in range(k) if _is(items[n], *_SEPARATORS)), default=0)
+    head = start
+    while head < k and _is(items[head], "filler", "first", "subject", "aux"):
+        head += 1
+    if head >= k or not (_is_verb_item(items[head]) or _humans(items[head])):
+        return items
+    clause = items[start:k]
+    before = list(items[:start])
+    while before and _is(before[-1], ",", "and"):
+        before.pop()
+    after = list(items[k + 1 :])
+    while after and (_is(after[0], *_SEPARATORS, "filler", "first")):
+        after.pop(0)
+    rest = before + ([Item("punct", ".", ".")] if before and after else []) + after
+    while rest and rest[-1].kind == "punct":
+        rest.pop()
+    if not rest:
+        return clause
+    return [*rest, Item("punct", ".", "."), Item("word", "then", items[k].text), *clause]
+
+
 def _datives(items: list[Item]) -> list[Item]:
     """'Alice: the cup', 'Bob - the chips': the person receives what follows."""
     out: list[Item] = []
@@ -1149,3 +1713,31 @@ def _datives(items: list[Item]) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+# the passes of refine, in order (each may refuse): openings and questions first, then
+# quantities and corrections, then people and places, then remarks and the order of clauses
+_PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _preambles,
+    _plain(_is_after),
+    _plain(_questions),
+    _plain(_after_all),
+    _plain(_whichever),
+    _relatives,
+    _one_anaphora,
+    _plain(_demonstratives),
+    _quantifiers,
+    _plain(_corrections),
+    _plain(_nobody),
+    _plain(_instead_of),
+    _plain(_exclusions),
+    _plain(_respectively),
+    _speaker,
+    _persons,
+    _plain(_not_wanted),
+    _places,
+    _plain(_there),
+    _remarks,
+    _plain(_last),
+    _plain(_datives),
+)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 
 from hltl.planner.anytime import plan_anytime, with_fallback_plan
@@ -15,6 +16,10 @@ from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
+
+# exact mode: the share of ``timeout`` (at most 1 s) kept for improving the plan that a
+# timed-out search returns (prioritized routing, docs/planner.md "Anytime mode")
+FALLBACK_SHARE = 0.05
 
 __all__ = [
     "ALGORITHMS",
@@ -85,13 +90,16 @@ def plan(
             timeout=10.0 if timeout is None else timeout,
             suboptimality=suboptimality,
         )
+    # a share of the time is kept for a better plan to return should the search time out
+    reserve = 0.0 if timeout is None or timeout < 2.0 else min(1.0, FALLBACK_SHARE * timeout)
     result = search(
         problem,
         algorithm=algorithm,
-        timeout=timeout,
+        timeout=None if timeout is None else timeout - reserve,
         max_expansions=max_expansions,
         on_progress=on_progress,
     )
     if result.status is PlanStatus.TIMEOUT:
-        return with_fallback_plan(problem, result)
+        # the walk checks the clock between routings: leave room for the last one
+        return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve)
     return result

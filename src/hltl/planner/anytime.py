@@ -22,6 +22,10 @@ EXACT_FIRST_SHARE = 0.2
 # big cells: pair bounds until this share of the budget, more orders until the next
 PAIRS_SHARE = 0.45
 BIG_RESTART_SHARE = 0.9
+# neighbourhood moves per new priority order (a move reroutes a few goals, an order all of them)
+LNS_STEPS = 2
+# big cells: pairs tried at the start node before giving up when none beats the start bound
+PAIRS_TRIAL = 8
 # pair tables cost about a millisecond each; beyond this many goal atoms they wait for A*
 PAIRS_UP_TO = 8
 
@@ -37,6 +41,11 @@ class Goal:
 
 # a plan found: its cost in ticks and its (node before, step, duration) chain
 _Found = tuple[int, list[tuple[Node, tuple[Instance, ...], int]]]
+
+
+# one goal's route: (step, instance) actions, (robot, step) holds, final step, and the robot that
+# keeps the object afterwards (None: nobody)
+_Route = tuple[list[tuple[int, Instance]], list[tuple[int, int]], int, int | None]
 
 
 class _Unsupported(Exception):
@@ -118,6 +127,7 @@ class _Router:
         p = self.p
         self.targets = {g.obj for g in gls}
         self.last_goal: int | None = None  # the goal the last routed plan served last
+        self.routes: dict[int, _Route] = {}  # per goal its route in the last routed plan
         graph = s.heuristic.graph
         # per goal and place: can the atom still happen from there? (prune hopeless routes)
         self.alive: list[list[bool]] = [
@@ -128,7 +138,12 @@ class _Router:
             for g in gls
         ]
 
-    def route_all(self, order: Sequence[int]) -> list[list[Instance]] | None:
+    def route_all(
+        self, order: Sequence[int], fixed: dict[int, _Route] | None = None
+    ) -> list[list[Instance]] | None:
+        """The plan's steps when the goals of ``fixed`` keep their routes and the goals of
+        ``order`` are routed one after the other around them (None: some goal cannot be
+        served). The routes of every goal are kept in ``routes``."""
         p = self.p
         locs = self.node[0]
         n_robots = len(p.robots)
@@ -140,12 +155,9 @@ class _Router:
                 forever[r] = 0  # holds an object nobody asked for: out of play
         steps: dict[int, list[Instance]] = {}
         finish: dict[int, int] = {}
-        for gi in order:
-            g = self.goals[gi]
-            earliest = max((finish[j] for j in g.after), default=0)
-            found = self._route(g, gi, locs[g.obj], earliest, busy, forever)
-            if found is None:
-                return None
+        routes: dict[int, _Route] = {}
+
+        def reserve(gi: int, found: _Route) -> None:
             route, holds, end, keep = found
             for t, inst in route:
                 steps.setdefault(t, []).append(inst)
@@ -157,6 +169,18 @@ class _Router:
             if keep is not None:
                 forever[keep] = min(forever[keep], end + 1)
             finish[gi] = end
+            routes[gi] = found
+
+        for gi, kept in (fixed or {}).items():
+            reserve(gi, kept)
+        for gi in order:
+            g = self.goals[gi]
+            earliest = max((finish[j] for j in g.after if j in finish), default=0)
+            found = self._route(g, gi, locs[g.obj], earliest, busy, forever)
+            if found is None:
+                return None
+            reserve(gi, found)
+        self.routes = routes
         self.last_goal = max(finish, key=lambda gi: (finish[gi], -gi))
         return [steps[t] for t in sorted(steps)]
 
@@ -168,7 +192,7 @@ class _Router:
         earliest: int,
         busy: list[set[int]],
         forever: list[float],
-    ) -> tuple[list[tuple[int, Instance]], list[tuple[int, int]], int, int | None] | None:
+    ) -> _Route | None:
         """Earliest step at which the goal's atom happens, routing its object around the
         reservations: (actions by step, (robot, step) holds, final step, robot that keeps the
         object afterwards or None)."""
@@ -227,7 +251,7 @@ class _Router:
         loc: int,
         t: int,
         last: Instance,
-    ) -> tuple[list[tuple[int, Instance]], list[tuple[int, int]], int, int | None]:
+    ) -> _Route:
         holder = self.p.code_holder
         route: list[tuple[int, Instance]] = [(t, last)]
         holds: list[tuple[int, int]] = []
@@ -392,7 +416,7 @@ def plan_anytime(
             break
         end = min(deadline, t0 + until * timeout)
         if big and k == 0:
-            lb = max(lb, _pairs_at_start(problem, s, start, end))
+            lb = max(lb, _pairs_at_start(problem, s, start, end, lb))
             note()
             continue
         if k == 1:
@@ -440,9 +464,15 @@ def plan_anytime(
     )
 
 
-def _pairs_at_start(problem: Problem, s: _Search, start: Node, until: float) -> float:
+def _pairs_at_start(
+    problem: Problem, s: _Search, start: Node, until: float, floor: float = 0.0
+) -> float:
     """The best pairwise bound at the start node from the pairs solved before ``until``, the
-    pairs of the longest routes first (any subset of pairs gives a valid bound)."""
+    pairs of the longest routes first (any subset of pairs gives a valid bound). When the first
+    ``PAIRS_TRIAL`` pairs do not beat ``floor`` (the bound already known), the rest are skipped
+    and their time goes to the plans: on grid and random cells, where two routes seldom meet,
+    no pair beats the start bound (on lines, where every route crosses the middle, the first
+    ones do)."""
     heur = s.heuristic
     graph = heur.graph
     locs = start[0]
@@ -452,8 +482,8 @@ def _pairs_at_start(problem: Problem, s: _Search, start: Node, until: float) -> 
     pairs.sort(key=lambda ab: (-min(crit[ab[0]], crit[ab[1]]), -max(crit[ab[0]], crit[ab[1]])))
     bound = PairBound(problem, graph)
     best = 0.0
-    for a, b in pairs:
-        if time.perf_counter() > until:
+    for k, (a, b) in enumerate(pairs):
+        if time.perf_counter() > until or (k >= PAIRS_TRIAL and best <= floor):
             break
         for lk in bound.lookups([a, b]):
             best = max(best, pair_value(lk, locs))
@@ -461,15 +491,82 @@ def _pairs_at_start(problem: Problem, s: _Search, start: Node, until: float) -> 
 
 
 def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
-    """More priority orders until ``until``; the best plan among them (see ``_OrderWalk``)."""
+    """More plans until ``until``: a walk over priority orders for the first half of the time,
+    then large-neighbourhood search from the best of them (see ``_OrderWalk``, ``_Neighbourhood``);
+    the best plan found."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
         return None
     walk = _OrderWalk(s, node, gls)
+    lns: _Neighbourhood | None = None
     while time.perf_counter() < until:
         walk.step()
+        if walk.best is None or len(gls) < 3:
+            continue
+        if lns is None or walk.best[0] < lns.cost:
+            lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
+        for _ in range(LNS_STEPS):
+            lns.step()
+    if lns is not None and walk.best is not None and lns.best[0] < walk.best[0]:
+        return lns.best
     return walk.best
+
+
+class _Neighbourhood:
+    """Large-neighbourhood search over a routed plan: take out the routes of a few goals (the
+    one that finishes last and others that share its robots, or random ones) and route them
+    again, in a random order, around the routes that stay. A result no longer than the current
+    plan becomes the current plan (plateaus are crossed); the best is kept. Unlike a new
+    priority order, the routes that stay keep their steps, so a goal routed early in a bad
+    order can move into the room the others leave."""
+
+    def __init__(self, router: _Router, best: _Found, routes: dict[int, _Route]) -> None:
+        self.router = router
+        self.best = best
+        self.cost = best[0]
+        self.routes = dict(routes)
+        self.rng = random.Random(3)
+        self.n = len(router.goals)
+
+    def step(self) -> None:
+        rng = self.rng
+        routes = self.routes
+        last = max(routes, key=lambda gi: (routes[gi][2], -gi))
+        k = min(self.n - 1, rng.choice((2, 2, 3, 3, 4)))
+        if rng.random() < 0.7:
+            robots = {r for _, inst in routes[last][0] for r in _robots(inst.executors)}
+            near = [
+                gi
+                for gi, rt in routes.items()
+                if gi != last and any(set(_robots(i.executors)) & robots for _, i in rt[0])
+            ]
+            pool = near if len(near) >= k - 1 else [gi for gi in routes if gi != last]
+            out = [last, *rng.sample(pool, k - 1)]
+        else:
+            out = rng.sample(list(routes), k)
+        order = list(out)
+        rng.shuffle(order)
+        fixed = {gi: rt for gi, rt in routes.items() if gi not in out}
+        steps = self.router.route_all(order, fixed)
+        found = None if steps is None else self.router.replay(steps)
+        if found is None or found[0] > self.cost:
+            return
+        self.cost = found[0]
+        self.routes = dict(self.router.routes)
+        if found[0] < self.best[0]:
+            self.best = found
+
+
+def _robots(mask: int) -> list[int]:
+    out = []
+    r = 0
+    while mask:
+        if mask & 1:
+            out.append(r)
+        mask >>= 1
+        r += 1
+    return out
 
 
 class _OrderWalk:
@@ -490,12 +587,14 @@ class _OrderWalk:
         self.rng = random.Random(2)
         self.best: _Found | None = None
         self.tried = 0
+        self.best_routes: dict[int, _Route] = {}
         if self.current:
             steps = self.router.route_all(self.current)
             self.best = None if steps is None else self.router.replay(steps)
             if self.best is not None:
                 self.cost = self.best[0]
                 self.last = self.router.last_goal
+                self.best_routes = dict(self.router.routes)
 
     def step(self) -> None:
         self.tried += 1
@@ -512,6 +611,7 @@ class _OrderWalk:
             self.last = self.router.last_goal
         if self.best is None or found[0] < self.best[0]:
             self.best = found
+            self.best_routes = dict(self.router.routes)
 
     def _perturb(self) -> list[int]:
         """The current order changed a little; [] when that breaks an "after" order."""
@@ -534,11 +634,19 @@ class _OrderWalk:
         return out
 
 
-def with_fallback_plan(problem: Problem, result: PlanResult) -> PlanResult:
-    """A timed-out exact result with the first prioritized plan attached (status unchanged)."""
-    found = construct(problem)
+def with_fallback_plan(
+    problem: Problem, result: PlanResult, until: float | None = None
+) -> PlanResult:
+    """A timed-out exact result with a prioritized plan attached (status unchanged): the first
+    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``)."""
+    s = _Search(problem)
+    found = construct(problem, s)
     if found is None:
         return result
+    if until is not None and time.perf_counter() < until:
+        better = _more(problem, s, until)
+        if better is not None and better[0] < found[0]:
+            found = better
     lb = result.lower_bound
     makespan = to_seconds(found[0])
     return PlanResult(

@@ -76,6 +76,11 @@ class Heuristic:
             if tree is not None:
                 self._mono[name] = tree
                 self._flat_mono[name] = _flatten(tree)
+        # a conjunction of "F leaf" (nested any way) over leaves "F a" with place tables (the
+        # delivery cells): the critical path is the largest table value over the leaves that
+        # are neither done nor under a done composite, a list kept per monitor state
+        self._conj: dict[str, tuple[str, ...]] | None = self._conjunction_tree()
+        self._active: dict[MonitorState, tuple[tuple[int, list[float]], ...]] = {}
 
     def __call__(self, node: Node) -> float:
         locs, _, q = node
@@ -113,7 +118,51 @@ class Heuristic:
             bound = max(bound, self._pair_bound(locs, q))
         return bound
 
+    def _conjunction_tree(self) -> dict[str, tuple[str, ...]] | None:
+        """Per composite its children, when every composite is a conjunction of ``F child`` and
+        every leaf has a place table; else None."""
+        children: dict[str, tuple[str, ...]] = {}
+        for name, flat in self._flat_mono.items():
+            is_and, items = flat
+            if not is_and or not all(type(x) is str for x in items):
+                return None
+            children[name] = tuple(str(x) for x in items)
+        spec = self.p.spec
+        if set(children) != set(spec.composites) or not set(spec.leaves) <= set(self._single):
+            return None
+        return children
+
+    def _active_leaves(self, q: MonitorState) -> tuple[tuple[int, list[float]], ...]:
+        """(object, place table) of every leaf that neither it nor a composite above it is
+        done in ``q`` (conjunction trees only, see ``_conjunction_tree``)."""
+        assert self._conj is not None
+        done = self.done(q)
+        out: list[tuple[int, list[float]]] = []
+        stack = [self.root]
+        while stack:
+            name = stack.pop()
+            if name in done:
+                continue
+            kids = self._conj.get(name)
+            if kids is None:
+                out.append(self._single[name])
+            else:
+                stack.extend(kids)
+        res = tuple(out)
+        self._active[q] = res
+        return res
+
     def _critical(self, locs: tuple[int, ...], q: MonitorState) -> float:
+        if self._conj is not None:
+            active = self._active.get(q)
+            if active is None:
+                active = self._active_leaves(q)
+            best = 0.0
+            for o, table in active:
+                v = table[locs[o]]
+                if v > best:
+                    best = v
+            return best
         done = self.done(q)
         h: dict[str, float] = {}
         atom_time = self.graph.atom_time

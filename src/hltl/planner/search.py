@@ -130,9 +130,13 @@ class _Search:
             self._dead_memo[q] = d
         return d
 
-    def options(self, node: Node, tags: Sequence[Tag] = ()) -> list[list[Instance]]:
+    def options(
+        self, node: Node, tags: Sequence[Tag] = ()
+    ) -> tuple[list[list[Instance]], frozenset[int]]:
         """Per object worth touching, the instances whose state preconditions hold and that are
-        not left-shiftable into the step that reached ``node`` (see ``Tag``)."""
+        not left-shiftable into the step that reached ``node`` (see ``Tag``); and the indices of
+        those among them that would shift into every such step but for their duration (a step
+        made of these only is never generated: see ``steps``)."""
         locs, hands, q = node
         p = self.p
         dead = self.dead(q)
@@ -145,42 +149,52 @@ class _Search:
                 busy |= 1 << r
         relevant = p.relevant(self.done(q))
         out: list[list[Instance]] = []
+        late: set[int] = set()
         prune = p.prune_irrelevant
         for o, code in enumerate(locs):
             if prune and o not in relevant and code not in holder_of:
                 continue
-            cands = [
-                inst
-                for inst in p.by_obj_pre[o][code]
-                if inst.index not in dead
-                and not any(busy >> f & 1 for f in inst.free)
-                and not (
+            cands: list[Instance] = []
+            for inst in p.by_obj_pre[o][code]:
+                if inst.index in dead or any(busy >> f & 1 for f in inst.free):
+                    continue
+                if (
                     tags
                     and shiftable[inst.index]
-                    and all(
-                        not inst.executors & e
-                        and not m >> inst.obj & 1
-                        and (
-                            inst.lower <= d
-                            if hands is None
-                            else _at_most(p.duration(inst, hands), d)
-                        )
-                        for e, m, d in tags
-                    )
-                )
-            ]
+                    and all(not inst.executors & e and not m >> inst.obj & 1 for e, m, _ in tags)
+                ):
+                    if hands is None:
+                        fits = all(inst.lower <= d for _, _, d in tags)
+                    else:
+                        dur = p.duration(inst, hands)
+                        fits = all(_at_most(dur, d) for _, _, d in tags)
+                    if fits:
+                        continue  # left-shiftable: some optimal plan ran it one step earlier
+                    late.add(inst.index)
+                cands.append(inst)
             if cands:
                 out.append(cands)
-        return out
+        return out, frozenset(late)
 
     def steps(
         self, node: Node, tags: Sequence[Tag] = ()
     ) -> Iterator[tuple[tuple[Instance, ...], int, Node, Tag, Perm]]:
         """All successors: every set U of applicable instances with disjoint robots, with its
         duration, the node it leads to (canonical, see ``canonical``), its tag (in the child's
-        labels) and the relabelling."""
+        labels) and the relabelling.
+
+        Steps that some instances shifted into the step before would make no longer are left
+        out too. Let L be the chosen instances that would shift into that step but for their
+        duration (``options``), R the others. Moving L into the step before turns durations
+        d₁ (before), max(d(L), d(R)) into max(d₁, d(L)), d(R): no longer in total when R is
+        empty (the two steps merge, max(d₁, d(L)) < d₁ + d(L)), or when d(R) ≤ d₁ and
+        d(R) ≤ d(L) (fixed durations: then max(d₁, d(L)) + d(R) ≤ d₁ + d(L)). Every such move
+        runs an instance earlier, so an optimal plan in which no move applies exists, and the
+        search keeps it (docs/planner.md, "Left-shift rule")."""
         locs, hands, q = node
-        opts = self.options(node, tags)
+        opts, late = self.options(node, tags)
+        # the shortest step that reached the node (``late`` holds for every way in)
+        before = min((d for _, _, d in tags), default=0) if hands is None else -1
         sym = self._sym_objects
         # fixed durations and no state atoms: the step is applied inline (the hot path)
         inline = hands is None and not self.p.state_atom_objects
@@ -188,24 +202,36 @@ class _Search:
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
         # recursive generator passes every step set up through one frame per object); the
-        # robots acting, the objects moved, the events and the duration are carried along
-        stack: list[tuple[int, int, int, int, int, tuple[Instance, ...]]] = [(0, 0, 0, 0, 0, ())]
+        # robots acting, the objects moved, the events, the duration, and the longest chosen
+        # instance among the late ones and among the others (-1: none) are carried along
+        stack: list[tuple[int, int, int, int, int, int, int, tuple[Instance, ...]]] = [
+            (0, 0, 0, 0, 0, -1, -1, ())
+        ]
         while stack:
-            i, used, moved, events, cost, chosen = stack.pop()
+            i, used, moved, events, cost, late_d, rest_d, chosen = stack.pop()
             if i < n:
                 for inst in reversed(opts[i]):
                     if not inst.executors & used:
+                        d = inst.lower
+                        if inst.index in late:
+                            nl, nr = (d if d > late_d else late_d), rest_d
+                        else:
+                            nl, nr = late_d, (d if d > rest_d else rest_d)
                         stack.append(
                             (
                                 i + 1,
                                 used | inst.executors,
                                 moved | 1 << inst.obj,
                                 events | inst.event_bits,
-                                inst.lower if inst.lower > cost else cost,
+                                d if d > cost else cost,
+                                nl,
+                                nr,
                                 (*chosen, inst),
                             )
                         )
-                stack.append((i + 1, used, moved, events, cost, chosen))
+                stack.append((i + 1, used, moved, events, cost, late_d, rest_d, chosen))
+                continue
+            if late_d >= 0 and (rest_d < 0 or (rest_d <= before and rest_d <= late_d)):
                 continue
             if inline:
                 new_locs = list(locs)

@@ -1,0 +1,42 @@
+"""Helpers shared by the grounding phrasing tests: ground, compare by language, typo edits."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction, spec_of
+from hltl.grounding.tree import Node
+from hltl.spec.equivalence import counterexample
+from hltl.world.scene import Scene, load_scene
+
+ROOT = Path(__file__).resolve().parents[2]
+CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
+
+
+def means(text: str, want: str, scene: Scene = CELL) -> None:
+    """Assert that ``text`` grounds to a spec language-equivalent to ``want`` (corpus notation)."""
+    got = parse_instruction(text, scene)
+    assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
+        f"{text!r} -> {show_tree(got)}, want {want}"
+    )
+
+
+def tree(text: str, scene: Scene = CELL) -> Node | None:
+    """The task tree of ``text``, or None when it is refused."""
+    try:
+        return parse_instruction(text, scene)
+    except GroundingError:
+        return None
+
+
+def one_edits(word: str) -> list[str]:
+    """Every word one insertion, deletion, substitution or swap of neighbours from ``word``."""
+    letters = "abcdefghijklmnopqrstuvwxyz"
+    out = {word[:k] + word[k + 1 :] for k in range(len(word))}
+    out |= {word[:k] + c + word[k:] for k in range(len(word) + 1) for c in letters}
+    out |= {word[:k] + c + word[k + 1 :] for k in range(len(word)) for c in letters}
+    out |= {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)}
+    out.discard(word)
+    return sorted(out)
