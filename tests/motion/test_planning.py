@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -18,9 +19,11 @@ from hltl.motion.planning import (
     r2r_candidates,
 )
 from hltl.planner import plan
-from hltl.skills.library import Action
+from hltl.skills.library import Action, Transition
+from hltl.skills.semantics import ActionSemantics, apply
 from hltl.spec.hierarchy import load_spec
 from hltl.world.scene import Scene
+from hltl.world.state import initial_world
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -148,3 +151,48 @@ def test_run_with_motion_completes_fig1(fig1_cell: Any, capsys: pytest.CaptureFi
     # durations come from motion plans, not the scene's fixed 0.5 s per skill
     assert metrics["time_cost"] > 2.0
     # with --sim mujoco as well: tests/sim3d/test_motion_mujoco.py
+
+
+def test_dispatched_motions_chain_through_the_arms_joints_within_an_episode(
+    fig1: Scene, fig1_cell: Any
+) -> None:
+    """The executor's motions start where the episode's previous dispatched plan left the arm
+    (so the 3D simulator plays them as given); the planner's durations stay a function of the
+    hands; a new episode starts from scratch."""
+    sem = ActionSemantics.of(fig1, kinematics=fig1_cell.kinematics)
+    w0 = initial_world(fig1)
+    pick = Action("pick", ("r1",), "bottle")
+    give = Action("handover_r2h", ("r1",), "bottle", human="A")
+    tr0 = sem.transition(pick, w0)
+    assert isinstance(tr0, Transition)
+    w1 = apply(w0, tr0)
+    tr1 = sem.transition(give, w1)
+    assert isinstance(tr1, Transition)
+    h0, h1 = dict(w0.hands), dict(w1.hands)
+    cost = MotionCostModel(fig1_cell)
+    ep = cost.for_episode()
+    assert ep.plans is cost.plans  # the plan cache is shared, the dispatch state is not
+    planned = ep.duration(give, tr1, h1)
+    first = ep.motion_plan(pick, tr0, h0)
+    assert first is not None
+    end = first.trajectory("r1")
+    assert end is not None
+    second = ep.motion_plan(give, tr1, h1)
+    assert second is not None and (t := second.trajectory("r1")) is not None
+    assert np.allclose(t.positions[0], end.positions[-1], atol=1e-9)
+    # the planner's view did not move: same duration as before the dispatch, as a fresh model's
+    assert (
+        ep.duration(give, tr1, h1) == planned == MotionCostModel(fig1_cell).duration(give, tr1, h1)
+    )
+    # the arm reporting its real tool position (not the transition's point) is recognised too
+    ep2 = cost.for_episode()
+    assert ep2.motion_plan(pick, tr0, h0) is not None
+    tool = tuple(float(v) for v in fig1_cell.arm("r1").fk(end.positions[-1])[0])
+    assert math.dist(tool, h1["r1"]) > 0.02
+    again = ep2.motion_plan(give, tr1, {**h1, "r1": tool})
+    assert again is not None and (a := again.trajectory("r1")) is not None
+    assert np.allclose(a.positions[0], end.positions[-1], atol=1e-9)
+    # another episode has no memory of this one's arms
+    other = cost.for_episode().motion_plan(give, tr1, h1)
+    assert other is not None and (o := other.trajectory("r1")) is not None
+    assert not np.allclose(o.positions[0], end.positions[-1], atol=1e-3)

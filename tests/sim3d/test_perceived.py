@@ -47,6 +47,30 @@ def test_camera_perception_matches_ground_truth_on_a_walk() -> None:
     # the walker is tracked the whole way and ends within 5 cm of where they stop
     assert all(set(r.people) == {"A", "B"} and not r.lost for r in frames)
     assert math.dist(frames[-1].people["A"][:2], (0.3, 0.5)) < 0.05
+    # the learned object backend instead of the segmentation render: the same outcome; it sees
+    # the chips until the arm reaches them (held, they stand on nothing) and the bottle once
+    # Person A, whom it stands in front of, has walked away
+    made: list[CameraSimulator] = []
+
+    def learned(*a: object, **k: object) -> CameraSimulator:
+        made.append(CameraSimulator(*a, timing="cost", model=model, backend="learned", **k))
+        return made[-1]
+
+    net = run_episode(scene, simulator=learned, **kw)
+    assert net.success
+    assert net.metrics.time_cost == pytest.approx(truth.metrics.time_cost, abs=0.2)
+    for oid, where in (("chips", (1.5, -0.3)), ("bottle", (-0.4, 0.2))):
+        seen = [o for obs in made[-1].observations for o in obs.objects if o.id == oid]
+        assert len(seen) >= 5, oid
+        assert all(math.dist(o.position[:2], where) < 0.03 for o in seen), oid
+
+
+def test_objects_needs_camera_perception(capsys: pytest.CaptureFixture[str]) -> None:
+    scene = str(ROOT / "examples" / "scenes" / "two_arms.yaml")
+    args = ["run", "--scene", scene, "--instruction", "Give Person A the chips"]
+    assert main([*args, "--sim", "mujoco", "--objects", "learned"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["error: --objects chooses the camera's object backend: add --perception camera"]
 
 
 def test_camera_perception_needs_the_3d_simulator(capsys: pytest.CaptureFixture[str]) -> None:

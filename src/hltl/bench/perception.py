@@ -15,7 +15,7 @@ import numpy as np
 
 from hltl.execution.log import Perception
 from hltl.grounding.offline import OfflineGrounder
-from hltl.perception.detection import MIN_PIXELS
+from hltl.perception.detection import MIN_PIXELS, Detection
 from hltl.perception.evaluate import HORIZONS, Score, score
 from hltl.perception.forecast import DT, F64, stop_places
 from hltl.perception.frames import Frame
@@ -29,7 +29,7 @@ from hltl.sim.events import EventSchedule, HumanMove
 from hltl.sim.scenarios import catalogue
 from hltl.sim.simulator import Simulator
 from hltl.sim3d.camera import CameraRenderer
-from hltl.sim3d.dataset import frame_camera, object_centres, render_samples
+from hltl.sim3d.dataset import Sample, frame_camera, object_centres, render_samples
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.sim3d.model import compile_scene
 from hltl.sim3d.perceived import CameraSimulator
@@ -136,6 +136,8 @@ class ObjectRow:
     errors: tuple[float, ...]  # 3D centroid errors (m) of the found ones
     ms: tuple[float, ...]  # per-frame time (detect + localise)
     cpu: tuple[float, ...] = ()  # per-frame CPU time of this process (all threads)
+    # per category: (category, visible, found, named as another category)
+    categories: tuple[tuple[str, int, int, int], ...] = ()
 
 
 def object_bench(
@@ -201,6 +203,21 @@ def object_bench(
     ]
 
 
+def _named(s: Sample, dets: Sequence[Detection], sid: int) -> str | None:
+    """What a backend calls segment ``sid``'s object: the category (or ``person``) of the
+    detection covering most of it (at least 30 % of the smaller of the two), None if none."""
+    assert s.frame.seg is not None
+    shown = s.frame.seg == sid
+    best, name = 0, None
+    for d in dets:
+        overlap = int((d.mask & shown).sum())
+        if overlap > best and overlap >= 0.3 * min(int(shown.sum()), int(d.mask.sum())):
+            best, name = overlap, d.label
+    if name is not None and name in s.scene.object_ids:  # exact labels are scene ids
+        name = s.scene.object(name).category.lower()
+    return name
+
+
 def clutter_bench(
     scenes: Sequence[Scene],
     seed: int = 1000,
@@ -210,18 +227,19 @@ def clutter_bench(
 ) -> list[ObjectRow]:
     """The backends (known sizes) on cluttered layouts of ``scenes`` as the learned backend's
     training renders are made (:mod:`hltl.sim3d.dataset`: 3–8 objects of every rendered
-    category, random cameras, lights, arm poses, people), from cells it was not trained on."""
+    category, random cameras, lights, arm poses, people), from cells it was not trained on;
+    recall and naming per category."""
     samples = render_samples(scenes, seed=seed, layouts=layouts, views=views)
     rows = []
     for name in ("segmentation", "depth-clusters", "learned"):
         errors: list[float] = []
         ms: list[float] = []
         cpu: list[float] = []
-        visible = found = 0
+        per: dict[str, list[int]] = {}  # category → [visible, found, named otherwise]
         for s in samples:
             assert s.frame.seg is not None
             shown = {
-                seg.id
+                seg.id: sid
                 for sid, seg in s.camera.segments.items()
                 if seg.kind == "object" and int((s.frame.seg == sid).sum()) >= MIN_PIXELS
             }
@@ -232,16 +250,43 @@ def clutter_bench(
             ms.append((time.perf_counter() - t0) * 1000.0)
             cpu.append((time.process_time() - c0) * 1000.0)
             obs, _, _ = match_objects(s.scene, located)
-            hits = [o for o in obs if o.id in shown]
-            visible += len(shown)
-            found += len(hits)
-            errors += [math.dist(o.position, s.centres[o.id]) for o in hits if o.id]
+            hits = {o.id: o for o in obs if o.id in shown}
+            errors += [math.dist(o.position, s.centres[oid]) for oid, o in hits.items() if oid]
+            for oid, sid in shown.items():
+                category = s.scene.object(oid).category.lower()
+                tally = per.setdefault(category, [0, 0, 0])
+                tally[0] += 1
+                tally[1] += oid in hits
+                called = _named(s, dets, sid)
+                tally[2] += called is not None and called != category
         rows.append(
-            ObjectRow(name, len(samples), visible, found, tuple(errors), tuple(ms), tuple(cpu))
+            ObjectRow(
+                name,
+                len(samples),
+                sum(t[0] for t in per.values()),
+                sum(t[1] for t in per.values()),
+                tuple(errors),
+                tuple(ms),
+                tuple(cpu),
+                tuple((c, t[0], t[1], t[2]) for c, t in sorted(per.items())),
+            )
         )
         if progress:
             progress(f"clutter: {name}")
     return rows
+
+
+def format_categories(row: ObjectRow) -> str:
+    """Recall and naming of one backend per category."""
+    lines = [
+        "| category | visible | found (right id) | named as another category |",
+        "|---|---|---|---|",
+    ]
+    for c, visible, found, other in row.categories:
+        lines.append(
+            f"| {c} | {visible} | {found} ({100.0 * found / max(visible, 1):.0f} %) | {other} |"
+        )
+    return "\n".join(lines)
 
 
 @dataclass(frozen=True, slots=True)
@@ -521,7 +566,7 @@ def format_skeleton(row: SkeletonRow) -> str:
 
 @dataclass(frozen=True, slots=True)
 class LoopRow:
-    """One suite trial run twice in the 3D simulator: ground-truth vs camera perception."""
+    """One suite trial run in the 3D simulator: ground-truth vs camera perception."""
 
     config: str
     index: int
@@ -534,6 +579,10 @@ class LoopRow:
     # the camera loop again without the temporal filters (None: not run)
     unfiltered_success: bool | None = None
     unfiltered_time: float | None = None
+    # the camera loop again with the learned object backend (None: not run)
+    learned_success: bool | None = None
+    learned_time: float | None = None
+    learned_missing: float | None = None  # scene objects not seen, per frame (mean)
 
 
 def loop_bench(
@@ -541,11 +590,13 @@ def loop_bench(
     trials: int,
     progress: Callable[[str], None] | None = None,
     people: str = "depth",
-    unfiltered: bool = True,
+    unfiltered: bool = False,
+    learned: bool = True,
 ) -> list[LoopRow]:
     """Suite trials (H-MOVE and GOAL events) in the 3D simulator, observed from the ground
     truth and through the camera (segmentation object backend with known sizes, ``people``
-    person detector), and with ``unfiltered`` through the camera without temporal filters."""
+    person detector); with ``unfiltered`` also through the camera without temporal filters,
+    with ``learned`` also through the camera with the learned object backend."""
 
     rows = []
     for config in configs:
@@ -555,9 +606,16 @@ def loop_bench(
             made: list[CameraSimulator] = []
 
             def camera(
-                *a: Any, _m: Any = model, _made: list[Any] = made, _s: bool = True, **k: Any
+                *a: Any,
+                _m: Any = model,
+                _made: list[Any] = made,
+                _s: bool = True,
+                _b: str = "segmentation",
+                **k: Any,
             ) -> Any:
-                sim = CameraSimulator(*a, timing="cost", model=_m, people=people, smooth=_s, **k)
+                sim = CameraSimulator(
+                    *a, timing="cost", model=_m, people=people, smooth=_s, backend=_b, **k
+                )
                 _made.append(sim)
                 return sim
 
@@ -581,6 +639,12 @@ def loop_bench(
                 if unfiltered
                 else None
             )
+            net = (
+                run_episode(trial.scene, simulator=functools.partial(camera, _b="learned"), **kw)
+                if learned
+                else None
+            )
+            net_frames = [r for r in net.records if isinstance(r, Perception)] if net else []
             for sim in made:
                 sim.close()
             rows.append(
@@ -595,6 +659,9 @@ def loop_bench(
                     sum(1 for r in frames if r.lost),
                     None if raw is None else raw.success,
                     None if raw is None else raw.metrics.time_cost,
+                    None if net is None else net.success,
+                    None if net is None else net.metrics.time_cost,
+                    statistics.fmean(len(r.missing) for r in net_frames) if net_frames else None,
                 )
             )
             if progress:
@@ -606,27 +673,37 @@ def format_loop(rows: Sequence[LoopRow]) -> str:
     def yes(b: bool | None) -> str:
         return "-" if b is None else "yes" if b else "no"
 
+    def sec(x: float | None) -> str:
+        return "-" if x is None else f"{x:.2f}"
+
     lines = [
-        "| trial | success truth / camera / camera unfiltered | time cost truth / camera / "
-        "camera unfiltered (s) | frames | frames with someone untracked |",
-        "|---|---|---|---|---|",
+        "| trial | success truth / camera / camera unfiltered / camera learned | time cost truth "
+        "/ camera / camera unfiltered / camera learned (s) | frames | frames with someone "
+        "untracked | objects unseen per frame, learned |",
+        "|---|---|---|---|---|---|",
     ]
     for r in rows:
-        raw_time = "-" if r.unfiltered_time is None else f"{r.unfiltered_time:.2f}"
         lines.append(
             f"| {r.config} #{r.index} | {yes(r.truth_success)} / {yes(r.camera_success)} / "
-            f"{yes(r.unfiltered_success)} | {r.truth_time:.2f} / {r.camera_time:.2f} / "
-            f"{raw_time} | {r.frames} | {r.lost_frames} |"
+            f"{yes(r.unfiltered_success)} / {yes(r.learned_success)} | {r.truth_time:.2f} / "
+            f"{r.camera_time:.2f} / {sec(r.unfiltered_time)} / {sec(r.learned_time)} "
+            f"| {r.frames} | {r.lost_frames} | {sec(r.learned_missing)} |"
         )
     n = len(rows)
     if n:
-        st = 100.0 * sum(r.truth_success for r in rows) / n
-        sc = 100.0 * sum(r.camera_success for r in rows) / n
-        ran = [r for r in rows if r.unfiltered_success is not None]
-        su = (
-            f"{100.0 * sum(bool(r.unfiltered_success) for r in ran) / len(ran):.0f} %"
-            if ran
-            else "-"
+
+        def rate(xs: Sequence[bool | None]) -> str:
+            ran = [x for x in xs if x is not None]
+            return f"{100.0 * sum(bool(x) for x in ran) / len(ran):.0f} %" if ran else "-"
+
+        cells = " / ".join(
+            rate(xs)
+            for xs in (
+                [r.truth_success for r in rows],
+                [r.camera_success for r in rows],
+                [r.unfiltered_success for r in rows],
+                [r.learned_success for r in rows],
+            )
         )
-        lines.append(f"| **all {n}** | {st:.0f} % / {sc:.0f} % / {su} | | | |")
+        lines.append(f"| **all {n}** | {cells} | | | | |")
     return "\n".join(lines)

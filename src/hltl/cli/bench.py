@@ -316,7 +316,12 @@ def register(sub: Any) -> None:
         type=int,
         default=1,
         help="suite trials per configuration (all twelve) run with ground-truth and camera "
-        "perception (segmentation objects, depth person detector)",
+        "perception (depth person detector; segmentation objects, and again learned objects)",
+    )
+    pe.add_argument(
+        "--loop-unfiltered",
+        action="store_true",
+        help="also run each closed-loop trial through the camera without temporal filters",
     )
     pe.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
     pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")

@@ -8,7 +8,7 @@ import shlex
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from hltl.bench.perception import evaluate_predictors
 from hltl.errors import HltlError
@@ -17,6 +17,8 @@ from hltl.perception.gru import SHIPPED, load_model, train
 from hltl.perception.learned import SHIPPED as DETECTOR_WEIGHTS
 from hltl.sim3d.dataset import train_detector
 from hltl.sim3d.gl import require_renderer
+
+R = TypeVar("R")
 
 
 def register(sub: Any) -> None:
@@ -70,30 +72,35 @@ def _phases(bar: Any) -> Callable[[str, float], None]:
     return progress
 
 
-def run_train(args: argparse.Namespace) -> int:
+def _trained(
+    args: argparse.Namespace,
+    action: str,
+    options: tuple[str, ...],
+    shipped: Path,
+    fit: Callable[..., R],
+) -> R:
+    """Check ``options`` are positive, then train with ``fit(out, seed=…, <options>…,
+    command=…, progress=…)`` under one rich bar per phase; ``command`` records how to
+    reproduce the weights (the file's ``meta``)."""
     from rich.console import Console
     from rich.progress import Progress
 
-    _positive("walks", args.walks)
-    _positive("epochs", args.epochs)
-    out = SHIPPED if args.out is None else args.out
-    command = "hltl perception train-predictor " + shlex.join(
-        [f"--seed={args.seed}", f"--walks={args.walks}", f"--epochs={args.epochs}"]
+    for name in options:
+        _positive(name, getattr(args, name))
+    out = shipped if args.out is None else args.out
+    values = {name: getattr(args, name) for name in ("seed", *options)}
+    command = f"hltl perception {action} " + shlex.join(
+        f"--{name}={value}" for name, value in values.items()
     )
-    console = Console(stderr=True)
-    with Progress(console=console, transient=True) as bar:
-        progress = _phases(bar)
+    with Progress(console=Console(stderr=True), transient=True) as bar:
         try:
-            res = train(
-                out,
-                seed=args.seed,
-                walks=args.walks,
-                epochs=args.epochs,
-                command=command,
-                progress=progress,
-            )
+            return fit(out, **values, command=command, progress=_phases(bar))
         except OSError as exc:
             raise HltlError(f"{out}: cannot write weights ({exc.strerror})") from None
+
+
+def run_train(args: argparse.Namespace) -> int:
+    res = _trained(args, "train-predictor", ("walks", "epochs"), SHIPPED, train)
     print(
         f"trained on {res.samples} windows of {args.walks} walks in {res.seconds:.0f} s: "
         f"validation ADE@2s {res.val_ade:.3f} m (goal-directed {res.val_prior_ade:.3f} m)"
@@ -103,35 +110,10 @@ def run_train(args: argparse.Namespace) -> int:
 
 
 def run_train_detector(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.progress import Progress
-
-    for name in ("layouts", "views", "epochs"):
-        _positive(name, getattr(args, name))
     require_renderer()
-    out = DETECTOR_WEIGHTS if args.out is None else args.out
-    command = "hltl perception train-detector " + shlex.join(
-        [
-            f"--seed={args.seed}",
-            f"--layouts={args.layouts}",
-            f"--views={args.views}",
-            f"--epochs={args.epochs}",
-        ]
+    res = _trained(
+        args, "train-detector", ("layouts", "views", "epochs"), DETECTOR_WEIGHTS, train_detector
     )
-    with Progress(console=Console(stderr=True), transient=True) as bar:
-        progress = _phases(bar)
-        try:
-            res = train_detector(
-                out,
-                seed=args.seed,
-                layouts=args.layouts,
-                views=args.views,
-                epochs=args.epochs,
-                command=command,
-                progress=progress,
-            )
-        except OSError as exc:
-            raise HltlError(f"{out}: cannot write weights ({exc.strerror})") from None
     iou = ", ".join(f"{k} {v:.2f}" for k, v in res.val_iou.items())
     print(
         f"trained on {res.images} renders in {res.seconds:.0f} s: validation IoU {iou}; "

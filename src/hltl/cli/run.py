@@ -20,6 +20,7 @@ from hltl.execution.log import LogRecord
 from hltl.grounding import make_grounder
 from hltl.grounding.base import check_instruction
 from hltl.motion.cost import motion_models
+from hltl.perception.objects import BACKENDS
 from hltl.perception.predict import make_predictor
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.events import load_events
@@ -98,6 +99,11 @@ def register(sub: Any) -> None:
         help="--sim mujoco: observe the simulator's state (with --noise/--latency) or run the "
         "perception stage on its rendered RGB-D frames",
     )
+    p.add_argument(
+        "--objects",
+        choices=tuple(BACKENDS),
+        help="--perception camera: the object backend (default segmentation)",
+    )
     add_bus_arguments(p)
     p.set_defaults(func=run)
 
@@ -139,10 +145,14 @@ def run(args: argparse.Namespace) -> int:
         raise HltlError("--frames needs the 3D simulator: add --sim mujoco")
     if args.sim != "mujoco" and args.perception == "camera":
         raise HltlError("--perception camera needs the 3D simulator: add --sim mujoco")
+    if args.objects is not None and args.perception != "camera":
+        raise HltlError("--objects chooses the camera's object backend: add --perception camera")
     extra: dict[str, Any] = {}
     recorder = None
     if args.sim == "mujoco":
-        extra, recorder = simulator_options(scene, args.timing, args.frames, args.perception)
+        extra, recorder = simulator_options(
+            scene, args.timing, args.frames, args.perception, args.objects or "segmentation"
+        )
     grounder = make_grounder(args.grounder)
     if args.motion:
         extra.update(_motion_options(scene, spec, config, predictor, extra.get("simulator")))

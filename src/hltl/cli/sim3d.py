@@ -26,17 +26,24 @@ def add_simulator_arguments(p: argparse.ArgumentParser, sim_help: str) -> None:
 
 
 def simulator_options(
-    scene: Scene, timing: str, frames: Path | None, perception: str = "truth"
+    scene: Scene,
+    timing: str,
+    frames: Path | None,
+    perception: str = "truth",
+    objects: str = "segmentation",
 ) -> tuple[dict[str, Any], FrameRecorder | None]:
     """``run_episode`` keywords for the 3D simulator (model compiled or loaded from the cache
     before the episode starts) and the frame recorder, if frames are wanted. ``perception``
-    ``camera`` observes through the rendered camera (:mod:`hltl.sim3d.perceived`)."""
+    ``camera`` observes through the rendered camera (:mod:`hltl.sim3d.perceived`) with the
+    ``objects`` backend."""
     model = compile_scene(scene)
     extra: dict[str, Any] = {
         "simulator": functools.partial(MujocoSimulator, timing=timing, model=model)
     }
     if perception == "camera":
-        extra["simulator"] = functools.partial(CameraSimulator, timing=timing, model=model)
+        extra["simulator"] = functools.partial(
+            CameraSimulator, timing=timing, model=model, backend=objects
+        )
     recorder = None
     if frames is not None:
         recorder = FrameRecorder(frames)

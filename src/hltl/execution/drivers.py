@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Protocol, runtime_checkable
+from typing import Protocol, Self, runtime_checkable
 
 from hltl.motion.trajectory import MotionPlan
 from hltl.skills.library import Action, Transition
@@ -59,7 +59,12 @@ class MotionSource(Protocol):
     def motion_plan(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
     ) -> MotionPlan | None:
-        """The motion of ``action`` from the given hand positions, or None without one."""
+        """The motion of ``action`` from the given hand positions, or None without one; called
+        as the action is dispatched (later motions of the episode start where it ends)."""
+        ...
+
+    def for_episode(self) -> Self:
+        """A copy for one episode: no memory of where earlier episodes left the arms."""
         ...
 
 

@@ -230,6 +230,10 @@ class Executor(TickTemplate):
         self.scene = scene
         self.driver = driver
         self.log = EventLog() if log is None else log
+        if isinstance(cost, MotionSource):
+            # motions chain through where this episode's plans leave the arms, and only this
+            # episode's (an executor runs one episode; its cost model may serve several)
+            cost = cost.for_episode()
         self.planner: Planner = (
             ExactPlanner(kinematics=kinematics, cost=cost) if planner is None else planner
         )
@@ -587,9 +591,10 @@ class Executor(TickTemplate):
             )
             if motion is None:
                 handle = self.driver.start(a, self.t)
-            else:  # the driver executes the trajectories the cost model timed
+                expected = self.cost.duration(a, tr, hands)
+            else:  # the driver executes the trajectories the motion layer planned and timed
                 handle = self.driver.start(a, self.t, motion=motion)
-            expected = self.cost.duration(a, tr, hands)
+                expected = max(motion.duration, self.cost.lower_bound(a, tr))
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
             self.belief.touched(a.object, self.t)
             aimed = self.world.object_status(a.object).position if a.skill == "pick" else None

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -23,6 +24,9 @@ from hltl.skills.cost import DEFAULT_SPEED, INFEASIBLE, AnalyticCostModel
 from hltl.skills.library import Action, Transition
 from hltl.world.scene import Scene, Vec3
 
+Config = tuple[float, ...]  # joint positions
+# a hand this close to where the last dispatched plan left the tool is that arm's (m)
+AT_TOLERANCE = 0.01
 KEY_DIGITS = 3  # hand positions are compared to the millimetre when reusing a motion plan
 
 
@@ -34,11 +38,17 @@ class MotionInfeasibleError(HltlError, ValueError):
 class MotionCostModel:
     """The planner's CostModel from real motion plans (``hltl plan --motion``).
 
-    Each executor's hand starts where ``hands`` says; a position-only IK nearest the arm's home
-    pose turns it into a configuration, and :func:`~hltl.motion.planning.plan_action` plans
-    the instance from there. Plans are cached by action and start hands, so the search pays for
-    each distinct motion once. ``lower_bound`` is the instance's dwell time (closing, opening or
-    exchanging), which no motion can beat.
+    For the search, each executor's hand starts where ``hands`` says and a position-only IK
+    nearest the arm's home pose turns it into a configuration: a duration is a function of the
+    hands, so successive plans agree on what the rest of a task costs (a search that chained
+    through guessed configurations made the receding-horizon loop hand an object back and
+    forth on the realworld T6 cell). The motion the executor dispatches (:meth:`motion_plan`)
+    starts where the arms really are: where the plan this episode dispatched last left the arm,
+    when the hand is still there; the driver then plays it as given. Plans are cached by action,
+    start configurations and end hands; that cache may outlive an episode (it is a function of
+    its key), the dispatch state may not: the executor works on :meth:`for_episode`, a copy
+    without it. :func:`~hltl.motion.planning.plan_action` plans each instance. ``lower_bound``
+    is the instance's dwell time (closing, opening or exchanging), which no motion can beat.
 
     An instance with no motion plan from the given hands (the maps say reachable, but IK or
     collisions disagree) lasts ``math.inf`` (:data:`~hltl.skills.cost.INFEASIBLE`): the planner
@@ -52,7 +62,16 @@ class MotionCostModel:
     plans: dict[tuple[Action, tuple[tuple[str, Any], ...]], SkillMotion] = field(
         default_factory=dict
     )
+    # position-only IK nearest home per (robot, hand point): a function of its key, shared
+    configs: dict[tuple[str, Vec3], Config] = field(default_factory=dict)
+    # this episode only: robot → where the last dispatched plan leaves the arm (the
+    # transition's hand point, the tool's real position, the joints)
+    _at: dict[str, tuple[Vec3, Vec3, Config]] = field(init=False, default_factory=dict)
     _fallback: AnalyticCostModel = field(init=False)
+
+    def for_episode(self) -> MotionCostModel:
+        """A copy that chains plans from scratch (the arms at rest), sharing the plan cache."""
+        return MotionCostModel(self.cell, self.humans, self.candidates, self.plans, self.configs)
 
     def __post_init__(self) -> None:
         # robots without an arm model are timed as before: hand travel over speed plus dwell
@@ -82,19 +101,35 @@ class MotionCostModel:
     def motion_plan(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
     ) -> MotionPlan | None:
-        """The joint trajectories of an instance (the executor passes them to the driver)."""
+        """The joint trajectories of an instance (the executor passes them to the driver). The
+        executor calls this as it dispatches: later plans of the episode start where this one
+        leaves the arms."""
         if any(rid not in self.cell.arms for rid in action.robots):
             return None
-        return self.motion(action, transition, hands).plan
+        motion = self.motion(action, transition, hands, dispatch=True)
+        if motion.plan is not None:
+            ends = dict(transition.hands)
+            for rid, q in motion.final:
+                if rid in ends:
+                    tool, _ = self.cell.arm(rid).fk(q)
+                    self._at[rid] = (_round(ends[rid]), _round(_vec(tool)), q)
+        return motion.plan
 
     def motion(
-        self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
+        self,
+        action: Action,
+        transition: Transition,
+        hands: Mapping[str, Vec3],
+        *,
+        dispatch: bool = False,
     ) -> SkillMotion:
-        """The (cached) motion plan of an instance from the given start hands."""
-        start = tuple(
-            (rid, _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base)))
+        """The (cached) motion plan of an instance from the given start hands; with
+        ``dispatch``, from where the arms really are (see the class docstring)."""
+        start = {
+            rid: _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base))
             for rid in action.robots
-        )
+        }
+        q = {rid: self._start(rid, p, dispatch) for rid, p in start.items()}
         # where the person stands now (the transition's), not where the scene put them first
         human_at = transition.human_at
         if human_at is None and action.human is not None and self.humans is not None:
@@ -105,18 +140,33 @@ class MotionCostModel:
         ends = tuple((f"->{rid}", _round(p)) for rid, p in transition.hands)
         if human_at is not None:
             ends = (*ends, ("@", _round(human_at)))
-        key = (action, (*start, *ends))
-        if key not in self.plans:
-            q = {rid: self._config(rid, p) for rid, p in start}
+        key = (action, (*((rid, _key(qr)) for rid, qr in q.items()), *ends))
+        motion = self.plans.get(key)
+        if motion is None:
             where = None
             if action.skill == "pick":
                 where = transition.hands[0][1]
-            self.plans[key] = plan_action(
+            motion = plan_action(
                 self.cell, action, q, where=where, human_at=human_at, k=self.candidates
             )
-        return self.plans[key]
+            self.plans[key] = motion
+        return motion
 
-    def _config(self, rid: str, point: Vec3) -> tuple[float, ...]:
+    def _start(self, rid: str, point: Vec3, dispatch: bool) -> Config:
+        """The arm's configuration when its hand is at ``point`` (see the class docstring)."""
+        q = None
+        at = self._at.get(rid) if dispatch else None
+        # the executor's world says where the hand is either by the transition's point or, once
+        # the arm reports, by the tool's real position
+        if at is not None and (point == at[0] or math.dist(point, at[1]) < AT_TOLERANCE):
+            q = at[2]
+        if q is None:
+            q = self.configs.get((rid, point))
+            if q is None:
+                q = self.configs[(rid, point)] = self._config(rid, point)
+        return q
+
+    def _config(self, rid: str, point: Vec3) -> Config:
         arm = self.cell.arm(rid)
         home_pos, _ = arm.fk(arm.home)
         if np.linalg.norm(home_pos - np.asarray(point)) < 1e-3:
@@ -126,6 +176,15 @@ class MotionCostModel:
             # a hand pose from the sphere geometry the arm cannot take: start from home
             return tuple(float(v) for v in arm.home)
         return res.q
+
+
+def _vec(p: Any) -> Vec3:
+    return (float(p[0]), float(p[1]), float(p[2]))
+
+
+def _key(q: Config) -> Config:
+    """Joints as a cache key: plans from configurations a micro-radian apart are one."""
+    return tuple(round(float(v), 6) for v in q)
 
 
 def _round(p: Vec3) -> Vec3:

@@ -12,6 +12,7 @@ import numpy.typing as npt
 
 from hltl.perception.frames import Camera
 from hltl.perception.geometry import backproject
+from hltl.world.scene import Scene
 
 Mask = npt.NDArray[np.bool_]
 MIN_PIXELS = 15  # fewer visible pixels than this: the object counts as not seen
@@ -78,6 +79,37 @@ def depth_edges(depth: npt.NDArray[np.float32], edge: float) -> Mask:
     jump[:, 1:] |= np.abs(np.diff(depth, axis=1)) > edge * depth[:, 1:]
     jump[1:, :] |= np.abs(np.diff(depth, axis=0)) > edge * depth[1:, :]
     return jump
+
+
+@dataclass(frozen=True, slots=True)
+class DepthView:
+    """What a backend working from depth sees of a frame."""
+
+    valid: Mask  # pixels with a depth return
+    points: npt.NDArray[np.float64]  # H×W×3 world point of each pixel
+    edges: Mask  # depth edges (:func:`depth_edges`)
+
+    @property
+    def z(self) -> npt.NDArray[np.float64]:
+        """Each pixel's height in the world."""
+        return self.points[:, :, 2]
+
+
+class DepthBackend:
+    """The set-up the backends that work from depth share: the scene (its registered arms and
+    objects), the depth-edge threshold that splits regions, and the support planes of the last
+    frame (:class:`hltl.perception.objects.ObjectBackend`'s ``planes``)."""
+
+    def __init__(self, scene: Scene | None = None, edge: float = 0.03) -> None:
+        self.scene = scene
+        self.edge = edge
+        self.planes: list[float] = []
+
+    def view(self, frame_depth: npt.NDArray[np.float32], camera: Camera) -> DepthView:
+        """The frame's depth as world points and depth edges."""
+        return DepthView(
+            frame_depth > 0, world_points(frame_depth, camera), depth_edges(frame_depth, self.edge)
+        )
 
 
 def read_weights(path: Path, what: str) -> tuple[dict[str, Any], dict[str, npt.NDArray[Any]]]:

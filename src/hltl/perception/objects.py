@@ -15,12 +15,11 @@ from hltl.motion.grasps import CATEGORY_CYLINDERS
 from hltl.perception.detection import (
     BASE_CLEARANCE,
     MIN_PIXELS,
+    DepthBackend,
     Detection,
     Mask,
     box_of,
-    depth_edges,
     support_planes,
-    world_points,
 )
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
@@ -70,7 +69,7 @@ class SegmentationBackend:
         return out
 
 
-class DepthClusterBackend:
+class DepthClusterBackend(DepthBackend):
     """Objects and people from depth alone: remove the support plane, split at depth edges."""
 
     name = "depth-clusters"
@@ -78,25 +77,21 @@ class DepthClusterBackend:
     def __init__(
         self, scene: Scene | None = None, edge: float = 0.03, colour: float = 24.0
     ) -> None:
-        self.scene = scene
-        self.edge = edge
+        super().__init__(scene, edge)
         self.colour = colour
-        self.planes: list[float] = []
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         from scipy import ndimage
 
         depth = frame.depth
-        valid = depth > 0
-        pts = world_points(depth, camera)
-        z = pts[:, :, 2]
+        view = self.view(depth, camera)
+        valid, pts, z = view.valid, view.points, view.z
         planes = support_planes(z[valid])
         off_plane = valid & (z > 0.015)
         for h in planes:
             off_plane &= np.abs(z - h) > 0.015
         # split at depth edges: neighbours farther apart than ``edge`` (relative to range)
-        jump = depth_edges(depth, self.edge)
-        above = off_plane & ~jump
+        above = off_plane & ~view.edges
         self.planes = planes
         colour_edge = np.zeros(depth.shape, dtype=bool)
         if self.colour > 0:

@@ -428,7 +428,9 @@ class Simulator:
         return frozenset(r for r, u in self._down_until.items() if u > t + _EPS)
 
     def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
-        # the discrete simulator times actions with its cost model: trajectories do not apply
+        # the discrete simulator times an action with its cost model, or as long as the motion
+        # plan given for it (what the arms execute: the executor's motion layer chains its
+        # plans through where earlier ones left the arms, which this cost model cannot know)
         handle = Handle(self._next_id, action, self.now)
         self._next_id += 1
         world = self.true_world()
@@ -441,6 +443,8 @@ class Simulator:
         fails = failure is not None and self._rng_fail.random() < failure.probability
         if tr is None:
             duration = self.cost.duration(action, _still(action, world), hands0)
+        elif motion is not None:
+            duration = max(motion.duration, self.cost.lower_bound(action, tr))
         else:
             duration = self.cost.duration(action, tr, hands0)
         # the cost model has no motion for it from these hands (INFEASIBLE): the arms cannot

@@ -127,7 +127,7 @@ class MujocoSimulator(Simulator):
 
     def start(self, action: Action, t: float, *, motion: MotionPlan | None = None) -> Handle:
         self._sync()
-        handle = super().start(action, t)
+        handle = super().start(action, t, motion=motion)
         act = self._actions[handle.id]
         if act.status is not None:  # refused at once (robot busy or down)
             return handle
