@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[2]
 CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
 
 
-def means(text: str, want: str, scene: Scene = CELL) -> None:
+def assert_means(text: str, want: str, scene: Scene = CELL) -> None:
     """Assert that ``text`` grounds to a spec language-equivalent to ``want`` (corpus notation)."""
     got = parse_instruction(text, scene)
     assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (

@@ -11,8 +11,7 @@ from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon, common_words
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT
-from tests.grounding.helpers import means as _means
+from tests.grounding.helpers import CELL, ROOT, assert_means
 from tests.grounding.helpers import tree as _tree
 
 SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
@@ -53,7 +52,7 @@ def test_a_typo_of_a_keyword_means_it_or_nothing(word: str, data: st.DataObject)
     ],
 )
 def test_keyword_typos_examples(text: str, want: str) -> None:
-    _means(text, want)
+    assert_means(text, want)
 
 
 def test_a_keyword_typo_is_never_a_common_word_or_near_two_keywords() -> None:
@@ -67,7 +66,7 @@ def test_a_keyword_typo_is_never_a_common_word_or_near_two_keywords() -> None:
 
 
 def test_a_keyword_typo_inside_a_phrase_keeps_the_phrase() -> None:
-    _means(
+    assert_means(
         "put the bottle on the shelf and after taht give alice the chips", "bottle@shelf ; chips>A"
     )
 
@@ -104,7 +103,7 @@ def test_what_may_be_a_request_is_never_dropped_as_a_remark(text: str) -> None:
 )
 def test_remarks_add_nothing(obj: str, who: str, wrap: str) -> None:
     plain = f"give {PEOPLE[who]} the {obj}"
-    _means(wrap.format(plain, p=PEOPLE[who]), f"{obj}>{who}")
+    assert_means(wrap.format(plain, p=PEOPLE[who]), f"{obj}>{who}")
 
 
 def test_a_remark_with_an_unclear_pronoun_is_refused() -> None:
@@ -134,7 +133,7 @@ def test_a_person_set_against_the_recipient_gets_nothing(
         with pytest.raises(GroundingError, match="get nothing and something"):
             parse_instruction(text, CELL)
     else:
-        _means(text, f"{obj}>{who}")
+        assert_means(text, f"{obj}>{who}")
 
 
 def test_negations_without_a_contrast_stay_refused() -> None:
@@ -165,7 +164,7 @@ def test_instead_of_without_a_running_task(x: str, y: str, who: str, form: str) 
     if x == y:
         assert _tree(text) is None
     else:
-        _means(text, f"{x}>{who}")
+        assert_means(text, f"{x}>{who}")
 
 
 # -- 'the other' after an 'or' --------------------------------------------------------------------
@@ -186,7 +185,7 @@ def test_the_other_after_an_or_of_two(objs: list[str], people: list[str], form: 
     x, y = objs[:2]
     p, q = people
     text = form.format(p=p, q=q, x=x, y=y)
-    _means(text, f"({x}>{p} & {y}>{q}) | ({y}>{p} & {x}>{q})", SQUARE)
+    assert_means(text, f"({x}>{p} & {y}>{q}) | ({y}>{p} & {x}>{q})", SQUARE)
 
 
 def test_the_other_after_a_list_or_clauses_is_refused() -> None:
@@ -206,12 +205,12 @@ def test_the_other_after_a_list_or_clauses_is_refused() -> None:
 def test_once_the_person_has_it_refers_to_what_they_get(objs: list[str], people: list[str]) -> None:
     x, y = objs[:2]
     p, q = people
-    _means(
+    assert_means(
         f"Give Person {p} the {x}, and Person {q} the {y} once Person {p} has it",
         f"{x}>{p} ; {y}>{q}",
         SQUARE,
     )
-    _means(
+    assert_means(
         f"Give Person {p} the {x} and then, once Person {p} has it, give Person {q} the {y}",
         f"{x}>{p} ; {y}>{q}",
         SQUARE,
@@ -219,11 +218,11 @@ def test_once_the_person_has_it_refers_to_what_they_get(objs: list[str], people:
 
 
 def test_then_once_another_condition_waits_for_both() -> None:
-    _means(
+    assert_means(
         "Give Bob the chips and then, once Carol has the cup, give Alice the apple",
         "(chips>B & cup>C) ; apple>A",
     )
-    _means(
+    assert_means(
         "Please give Bob the chips and then, once he has them, give Carol the apple",
         "chips>B ; apple>C",
     )
@@ -244,7 +243,7 @@ def test_then_once_another_condition_waits_for_both() -> None:
     ],
 )
 def test_a_relative_clause_picks_the_objects(text: str, want: str) -> None:
-    _means(text, want)
+    assert_means(text, want)
 
 
 @pytest.mark.parametrize(
@@ -274,7 +273,7 @@ MUG_EACH = "(mug_red>{p} & mug_blue>{q}) | (mug_blue>{p} & mug_red>{q})"
 )
 def test_a_mug_for_each_of_them(people: list[str], form: str) -> None:
     p, q = people[:2]
-    _means(form.format(p=PEOPLE[p], q=PEOPLE[q]), MUG_EACH.format(p=p, q=q))
+    assert_means(form.format(p=PEOPLE[p], q=PEOPLE[q]), MUG_EACH.format(p=p, q=q))
 
 
 def test_for_each_of_them_needs_enough_objects_and_people() -> None:
@@ -296,7 +295,7 @@ def test_either_of_sequences(objs: list[str], people: list[str]) -> None:
     x, y, z = objs[:3]
     p, q, r = (PEOPLE[w] for w in people)
     text = f"Either give {p} the {x} and then {q} the {y}, or give {r} the {z}"
-    _means(text, f"({x}>{people[0]} ; {y}>{people[1]}) | {z}>{people[2]}")
+    assert_means(text, f"({x}>{people[0]} ; {y}>{people[1]}) | {z}>{people[2]}")
 
 
 def test_steps_after_the_or_of_an_either_are_refused() -> None:
@@ -306,7 +305,7 @@ def test_steps_after_the_or_of_an_either_are_refused() -> None:
     ):
         with pytest.raises(GroundingError, match="could belong"):
             parse_instruction(text, CELL)
-    _means(
+    assert_means(
         "Either give Alice the cup or give Bob the chips. Then give Carol the apple.",
         "(cup>A | chips>B) ; apple>C",
     )
@@ -348,18 +347,18 @@ def test_the_mug_nearest_to_something_is_the_nearest_or_refused(anchor: str, for
     best, d1, d2 = _nearest(["mug_red", "mug_blue"], where, CELL)
     text = form.format(a=anchor)
     if d1 < 0.75 * d2:
-        _means(text, f"{best}>B")
+        assert_means(text, f"{best}>B")
     else:
         with pytest.raises(GroundingError, match="about as near"):
             parse_instruction(text, CELL)
 
 
 def test_places_examples() -> None:
-    _means("Give Alice the mug closest to her", "mug_blue>A")
-    _means("Put the mug by the shelf on the table", "mug_blue@table")
-    _means("Give Bob the mug next to the red mug", "mug_blue>B")  # not itself
-    _means("Give Bob the cup on the shelf", "cup_a>B", ON_SURFACES)
-    _means("Give Alice the cup on the table and the apple", "cup_b>A & apple>A", ON_SURFACES)
+    assert_means("Give Alice the mug closest to her", "mug_blue>A")
+    assert_means("Put the mug by the shelf on the table", "mug_blue@table")
+    assert_means("Give Bob the mug next to the red mug", "mug_blue>B")  # not itself
+    assert_means("Give Bob the cup on the shelf", "cup_a>B", ON_SURFACES)
+    assert_means("Give Alice the cup on the table and the apple", "cup_b>A & apple>A", ON_SURFACES)
     for text, scene in (
         ("Give Bob the cup on the shelf", CELL),  # the cup starts elsewhere
         ("Hand Bob the apple on the shelf", ON_SURFACES),

@@ -14,8 +14,7 @@ from hltl.grounding.lexicon import Lexicon, common_words, tokenize
 from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT, one_edits
-from tests.grounding.helpers import means as _means
+from tests.grounding.helpers import CELL, ROOT, assert_means, one_edits
 from tests.grounding.helpers import tree as _tree
 
 SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
@@ -81,7 +80,7 @@ def test_openings_and_remarks_add_nothing(wrap: str, request: tuple[str, str]) -
     ],
 )  # fmt: skip
 def test_remark_examples(text: str, want: str) -> None:
-    _means(text, want)
+    assert_means(text, want)
 
 
 @pytest.mark.parametrize(
@@ -117,10 +116,10 @@ def test_a_retraction_replaces_the_sentence_before(
     objs: list[str], people: list[str], word: str
 ) -> None:
     (a, b), (p, q) = objs[:2], people[:2]
-    _means(f"Give {PEOPLE[p]} the {a}. {word}, give {PEOPLE[q]} the {b}.", f"{b}>{q}")
-    _means(f"Give {PEOPLE[p]} the {a}, {word.lower()}, {PEOPLE[q]} wants the {b}", f"{b}>{q}")
+    assert_means(f"Give {PEOPLE[p]} the {a}. {word}, give {PEOPLE[q]} the {b}.", f"{b}>{q}")
+    assert_means(f"Give {PEOPLE[p]} the {a}, {word.lower()}, {PEOPLE[q]} wants the {b}", f"{b}>{q}")
     # 'her' is the person of the sentence taken back
-    _means(f"Give {PEOPLE[p]} the {a}. {word}, give her the {b}.", f"{b}>{p}")
+    assert_means(f"Give {PEOPLE[p]} the {a}. {word}, give her the {b}.", f"{b}>{p}")
 
 
 @pytest.mark.parametrize(
@@ -133,7 +132,7 @@ def test_a_retraction_replaces_the_sentence_before(
     ],
 )
 def test_correction_examples(text: str, want: str) -> None:
-    _means(text, want)
+    assert_means(text, want)
 
 
 @pytest.mark.parametrize(
@@ -157,18 +156,18 @@ def test_unclear_corrections_are_refused(text: str) -> None:
 @settings(max_examples=20, deadline=None)
 @given(st.sampled_from(["A", "B"]), st.sampled_from(["all four", "all of it", "everything"]))
 def test_all_four_is_every_object_of_a_scene_of_four(who: str, words: str) -> None:
-    _means(f"Give Person {who} {words}", " & ".join(f"{o}>{who}" for o in OBJECTS), SQUARE)
+    assert_means(f"Give Person {who} {words}", " & ".join(f"{o}>{who}" for o in OBJECTS), SQUARE)
 
 
 def test_both_and_all_n_need_that_many() -> None:
-    _means("Person A gets nothing, give Person B both", "bottle>B & chips>B", DUO)
-    _means(
+    assert_means("Person A gets nothing, give Person B both", "bottle>B & chips>B", DUO)
+    assert_means(
         "Either put the bottle on the shelf and then give Bob the chips, or give Alice both",
         "(bottle@shelf ; chips>B) | (bottle>A & chips>A)",
         TWO,
     )
-    _means("Hand Alice one of the two mugs", "mug_red>A | mug_blue>A")
-    _means("Give each person one item", "(bottle>A & chips>B) | (chips>A & bottle>B)", DUO)
+    assert_means("Hand Alice one of the two mugs", "mug_red>A | mug_blue>A")
+    assert_means("Give each person one item", "(bottle>A & chips>B) | (chips>A & bottle>B)", DUO)
     _refused("Give Alice both", match="does not say which 2 objects")  # six objects, none named
     _refused("Give Person A all three", SQUARE, match="which 3 objects")
     _refused("Hand Alice one of the three mugs", match="not 3")
@@ -186,9 +185,9 @@ def test_respectively_pairs_the_lists(objs: list[str], people: list[str], n: int
     def listed(xs: list[str]) -> str:
         return ", ".join(xs[:-1]) + " and " + xs[-1]
 
-    _means(f"Give {listed(names)} {listed(things)} respectively", want)
-    _means(f"Give {listed(things)} to {listed(names)}, respectively", want)
-    _means(f"{listed(names)} get {listed(things)} respectively", want)
+    assert_means(f"Give {listed(names)} {listed(things)} respectively", want)
+    assert_means(f"Give {listed(things)} to {listed(names)}, respectively", want)
+    assert_means(f"{listed(names)} get {listed(things)} respectively", want)
     # a list naming several objects at once cannot be paired: refused
     mugs = [*things[: n - 1], "the mugs"]
     assert _tree(f"Give {listed(names)} {listed(mugs)} respectively") is None
@@ -208,13 +207,13 @@ def test_respectively_refusals() -> None:
 def test_x_last_comes_after_the_rest(objs: list[str], people: list[str]) -> None:
     (a, b, c), (p, q, r) = objs[:3], people
     x, y, z = (PEOPLE[w] for w in people)
-    _means(f"Give {x} the {a} last; first give {y} the {b}", f"{b}>{q} ; {a}>{p}")
-    _means(f"Give {y} the {b} and {x} the {a} last", f"{b}>{q} ; {a}>{p}")
-    _means(
+    assert_means(f"Give {x} the {a} last; first give {y} the {b}", f"{b}>{q} ; {a}>{p}")
+    assert_means(f"Give {y} the {b} and {x} the {a} last", f"{b}>{q} ; {a}>{p}")
+    assert_means(
         f"Give {x} the {a} last, and {y} the {b} and {z} the {c}",
         f"({b}>{q} & {c}>{r}) ; {a}>{p}",
     )
-    _means(f"Start by giving {x} the {a}, then hand {y} the {b}", f"{a}>{p} ; {b}>{q}")
+    assert_means(f"Start by giving {x} the {a}, then hand {y} the {b}", f"{a}>{p} ; {b}>{q}")
 
 
 def test_last_that_could_order_objects_is_refused() -> None:
@@ -226,12 +225,12 @@ def test_last_that_could_order_objects_is_refused() -> None:
 @given(st.permutations(OBJECTS), st.permutations(["A", "B"]))
 def test_once_the_person_has_them(objs: list[str], people: list[str]) -> None:
     (a, b, c), (p, q) = objs[:3], people
-    _means(
+    assert_means(
         f"Give Person {p} the {a}, and Person {q} the {b} once Person {p} has them",
         f"{a}>{p} ; {b}>{q}",
         SQUARE,
     )
-    _means(
+    assert_means(
         f"Give Person {p} the {a} and the {c}, and Person {q} the {b} once Person {p} has them",
         f"({a}>{p} & {c}>{p}) ; {b}>{q}",
         SQUARE,
@@ -247,8 +246,8 @@ def test_once_the_person_has_them(objs: list[str], people: list[str]) -> None:
 
 
 def test_she_in_a_trailing_once_is_not_who_waits() -> None:
-    _means("Give Alice the cup, and Bob the apple once she has it", "cup>A ; apple>B")
-    _means("Give Bob the cup and the apple, and Carol the chips once he has them",
+    assert_means("Give Alice the cup, and Bob the apple once she has it", "cup>A ; apple>B")
+    assert_means("Give Bob the cup and the apple, and Carol the chips once he has them",
            "(cup>B & apple>B) ; chips>C")  # fmt: skip
     # two people it could be, besides the one who waits
     _refused(
@@ -257,7 +256,7 @@ def test_she_in_a_trailing_once_is_not_who_waits() -> None:
 
 
 def test_either_with_a_list_before_its_or() -> None:
-    _means(
+    assert_means(
         "Either Person A gets the cup and the apple, or Person B gets all four",
         "(cup>A & apple>A) | (bottle>B & chips>B & cup>B & apple>B)",
         SQUARE,
@@ -268,8 +267,8 @@ def test_either_with_a_list_before_its_or() -> None:
 
 
 def test_there_is_the_surface_named_before() -> None:
-    _means("Put the apple on the shelf and the cup there too", "apple@shelf & cup@shelf")
-    _means("Put the apple on the shelf, then put the cup there", "apple@shelf ; cup@shelf")
+    assert_means("Put the apple on the shelf and the cup there too", "apple@shelf & cup@shelf")
+    assert_means("Put the apple on the shelf, then put the cup there", "apple@shelf ; cup@shelf")
     _refused("Give the cup to Bob and the apple there too", match="there")
     _refused("Put the apple on the shelf and the cup on the table and the bottle there")
     _refused("There's the cup, give it to Bob")
@@ -292,8 +291,8 @@ def test_a_typo_inside_a_two_word_name_means_it_or_nothing(
 
 
 def test_two_word_typo_examples_and_limits() -> None:
-    _means("Give Carol the bleu mug", "mug_blue>C")
-    _means("give Carol the wter bottle", "bottle>C")
+    assert_means("Give Carol the bleu mug", "mug_blue>C")
+    assert_means("give Carol the wter bottle", "bottle>C")
     assert "rad" in common_words()
     _refused("give Carol the rad mug", match="rad mug")  # a real word is no typo
     _refused("Give Carol the rde mug")  # three letters: never corrected, as for one word
@@ -301,8 +300,8 @@ def test_two_word_typo_examples_and_limits() -> None:
 
 
 def test_crisps_where_the_scene_says_chips() -> None:
-    _means("Give Person B the crisps", "chips>B", SQUARE)
-    _means("Give Person B the crisp", "chips>B", SQUARE)
+    assert_means("Give Person B the crisps", "chips>B", SQUARE)
+    assert_means("Give Person B the crisp", "chips>B", SQUARE)
 
 
 # -- negation beside a request ---------------------------------------------------------------------
@@ -313,8 +312,8 @@ def test_crisps_where_the_scene_says_chips() -> None:
 def test_a_negated_want_beside_a_request(objs: list[str], p: str) -> None:
     a, b = objs[:2]
     who = PEOPLE[p]
-    _means(f"{who} doesn't want the {a}, she wants the {b}", f"{b}>{p}")
-    _means(f"Don't give {who} the {a}, give {who} the {b}", f"{b}>{p}")
+    assert_means(f"{who} doesn't want the {a}, she wants the {b}", f"{b}>{p}")
+    assert_means(f"Don't give {who} the {a}, give {who} the {b}", f"{b}>{p}")
     # the same object again, 'everything' or a pronoun after it: refused, not guessed
     assert _tree(f"{who} doesn't want the {a}, give her everything") is None
     assert _tree(f"{who} doesn't want the {a}, give the {a} to {who}") is None
