@@ -535,11 +535,13 @@ class _Neighbourhood:
         last = max(routes, key=lambda gi: (routes[gi][2], -gi))
         k = min(self.n - 1, rng.choice((2, 2, 3, 3, 4)))
         if rng.random() < 0.7:
-            robots = {r for _, inst in routes[last][0] for r in _robots(inst.executors)}
+            robots = 0  # the robots of the last goal's route, as a bit mask
+            for _, inst in routes[last][0]:
+                robots |= inst.executors
             near = [
                 gi
                 for gi, rt in routes.items()
-                if gi != last and any(set(_robots(i.executors)) & robots for _, i in rt[0])
+                if gi != last and any(i.executors & robots for _, i in rt[0])
             ]
             pool = near if len(near) >= k - 1 else [gi for gi in routes if gi != last]
             out = [last, *rng.sample(pool, k - 1)]
@@ -556,17 +558,6 @@ class _Neighbourhood:
         self.routes = dict(self.router.routes)
         if found[0] < self.best[0]:
             self.best = found
-
-
-def _robots(mask: int) -> list[int]:
-    out = []
-    r = 0
-    while mask:
-        if mask & 1:
-            out.append(r)
-        mask >>= 1
-        r += 1
-    return out
 
 
 class _OrderWalk:
