@@ -57,7 +57,7 @@ from hltl.execution.tick import ExecStatus as ExecStatus  # its historical home
 from hltl.execution.tick import TickTemplate
 from hltl.fileio import quote
 from hltl.planner import PlanResult, PlanStatus, PlanStep, plan
-from hltl.skills.cost import CostModel
+from hltl.skills.cost import CostModel, executed_duration
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible, apply
@@ -594,7 +594,7 @@ class Executor(TickTemplate):
                 expected = self.cost.duration(a, tr, hands)
             else:  # the driver executes the trajectories the motion layer planned and timed
                 handle = self.driver.start(a, self.t, motion=motion)
-                expected = max(motion.duration, self.cost.lower_bound(a, tr))
+                expected = executed_duration(self.cost, a, tr, motion.duration)
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
             self.belief.touched(a.object, self.t)
             aimed = self.world.object_status(a.object).position if a.skill == "pick" else None

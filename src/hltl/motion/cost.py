@@ -20,7 +20,7 @@ from hltl.motion.planning import (
 )
 from hltl.motion.trajectory import MotionPlan
 from hltl.motion.workspace import MapKinematics
-from hltl.skills.cost import DEFAULT_SPEED, INFEASIBLE, AnalyticCostModel
+from hltl.skills.cost import DEFAULT_SPEED, INFEASIBLE, AnalyticCostModel, executed_duration
 from hltl.skills.library import Action, Transition
 from hltl.world.scene import Scene, Vec3
 
@@ -96,7 +96,7 @@ class MotionCostModel:
         motion = self.motion(action, transition, hands)
         if motion.plan is None:
             return INFEASIBLE
-        return max(motion.plan.duration, self.lower_bound(action, transition))
+        return executed_duration(self, action, transition, motion.plan.duration)
 
     def motion_plan(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]

@@ -228,18 +228,17 @@ def r2r_candidates(
     cands = score_candidates(pts, sphere, hands)
     cyl = _object_cylinder(cell.scene, action.object)
     pairs = co_grasp_pairs(cyl, grasp_candidates(cyl, n_angles=8, top=False))
+    axis = receiver.base - giver.base
+    az = math.atan2(-axis[1], -axis[0])
+    # the two pairs whose giver approach is closest to the line between the bases (the same
+    # for every position)
+    ranked = sorted(pairs, key=lambda t: abs(math.remainder(t[0].azimuth - az, 2 * math.pi)))
     out: list[R2RCandidate] = []
     for c in cands:
-        p = np.asarray(c.position)
-        axis = receiver.base - giver.base
-        az = math.atan2(-axis[1], -axis[0])
-        # the two pairs whose giver approach is closest to the line between the bases
-        ranked = sorted(pairs, key=lambda t: abs(math.remainder(t[0].azimuth - az, 2 * math.pi)))
         for g, r, _ in ranked[:2]:
             out.append(R2RCandidate(c.position, g, r, c.score))
         if len(out) >= k:
             break
-    _ = p
     return out[:k]
 
 

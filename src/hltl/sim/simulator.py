@@ -28,7 +28,7 @@ from hltl.sim.events import (
     ObjectMove,
     RobotDown,
 )
-from hltl.skills.cost import CostModel
+from hltl.skills.cost import CostModel, executed_duration
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition
 from hltl.skills.semantics import ActionSemantics, Infeasible, apply
@@ -444,7 +444,7 @@ class Simulator:
         if tr is None:
             duration = self.cost.duration(action, _still(action, world), hands0)
         elif motion is not None:
-            duration = max(motion.duration, self.cost.lower_bound(action, tr))
+            duration = executed_duration(self.cost, action, tr, motion.duration)
         else:
             duration = self.cost.duration(action, tr, hands0)
         # the cost model has no motion for it from these hands (INFEASIBLE): the arms cannot

@@ -18,6 +18,15 @@ DEFAULT_SPEED = 0.5  # m/s, hand speed of a collaborative arm near people
 INFEASIBLE = math.inf
 
 
+def executed_duration(
+    cost: CostModel, action: Action, transition: Transition, planned_s: float
+) -> float:
+    """Seconds an instance lasts when executed along a motion plan of ``planned_s`` seconds:
+    the plan's time, never less than the dwell (closing, opening, exchanging) no motion beats.
+    One rule for the cost model, the executor's expectation and the simulator's timing."""
+    return max(planned_s, cost.lower_bound(action, transition))
+
+
 class CostModel(Protocol):
     """d(s, a). ``fixed`` models ignore hand poses (the planner then does not track them)."""
 
