@@ -163,7 +163,10 @@ def _network(truth: int, share: float, split: float) -> np.ndarray:
     plane=st.floats(-0.05, 0.3),
     share=st.floats(0.05, 1.0),
     split=st.floats(0.0, 1.0),
-    noise=st.floats(0.0, 0.003),
+    # the 98th-percentile top reads about two noise sigmas high: up to 2 mm of depth noise the
+    # height outweighs a 19:1 network; at 3 mm only about 6:1 (hypothesis found apple -> mug
+    # at 15:1, 2.9 mm). The renderer's depth has no noise.
+    noise=st.floats(0.0, 0.002),
     seed=st.integers(0, 2**16),
 )
 def test_a_red_object_seen_whole_is_named_by_its_height(
