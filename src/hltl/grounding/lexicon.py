@@ -822,11 +822,11 @@ class Lexicon:
         more than one name.
         """
         found: list[tuple[int, tuple[Ref, ...]]] = []
+        typed = [t.low for t in tokens[i : i + self.max_len]]  # once, not per name
         for key, entries in self._phrases.items():
             n = len(key)
-            if n < 2 or i + n > len(tokens):
+            if n < 2 or n > len(typed):
                 continue
-            typed = tuple(t.low for t in tokens[i : i + n])
             diff = [k for k in range(n) if typed[k] != key[k]]
             if len(diff) != 1:
                 continue
