@@ -17,6 +17,9 @@ _QUESTION_VERBS = frozenset(
 _PERSON_PRONOUNS = frozenset({"he", "him", "she", "her", "his", "hers"})
 _SPEAKER = frozenset({"i", "me", "us", "we", "myself"})
 _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "also"})
+# a person wanting something ("Alice doesn't want the cup"); a verb handing something over
+_WANTS = frozenset({"verb:want", "verb:need", "verb:like"})
+_MOVES = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
 
 
 def _is(item: Item, *lemmas: str) -> bool:
@@ -1272,26 +1275,17 @@ def _not_wanted(items: list[Item]) -> list[Item]:
 
 def _unwanted(head: list[Item]) -> set[str] | None:
     """The objects of 'P doesn't want X (and Y)' / 'don't give P X', else None."""
-    k = 0
-    person = _humans(head[0]) if head else False
-    if person:  # "Alice doesn't want the cup"
-        k = 1
-        while k < len(head) and _is(head[k], "aux", "do"):
-            k += 1
-        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
-            return None
-        if head[k + 1].lemma not in ("verb:want", "verb:need", "verb:like"):
-            return None
-        k += 2
-    else:  # "Don't give Bob the apple", "never hand Carol the cup"
-        while k < len(head) and _is(head[k], "aux", "do"):
-            k += 1
-        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
-            return None
-        verb = head[k + 1]
-        if verb.lemma not in ("verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"):
-            return None
-        k += 2
+    # "Alice doesn't want the cup"; else "Don't give Bob the apple", "never hand Carol the cup"
+    person = bool(head) and _humans(head[0])
+    k = 1 if person else 0
+    while k < len(head) and _is(head[k], "aux", "do"):
+        k += 1
+    if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
+        return None
+    verbs = _WANTS if person else _MOVES
+    if head[k + 1].lemma not in verbs:
+        return None
+    k += 2
     objs: set[str] = set()
     for x in head[k:]:
         if _objects(x):
