@@ -260,21 +260,31 @@ def _opens_remark(items: list[Item], k: int) -> bool:
     if j >= len(items):
         return False
     nxt = items[j]
+    verb = nxt.lemma.split()[0] if nxt.kind == "unknown" else ""
     return (
         nxt.text.lower() in ("'s", "is", "was", "'re", "are", "has", "had", "'ve", "have")
-        or (nxt.kind == "unknown" and nxt.lemma.split()[0] in _REMARK_VERBS)
-        or (nxt.kind == "unknown" and nxt.lemma.split()[0].endswith("ed"))
-        or (
-            nxt.lemma in ("verb:want", "verb:need", "verb:like")
-            and j + 1 < len(items)
-            and items[j + 1].kind == "unknown"
-            and items[j + 1].lemma.split()[0] in ("something", "anything")
-        )
+        or verb in _REMARK_VERBS
+        or verb.endswith("ed")
+        or (nxt.lemma in _WANTS and _something(items, j + 1))
+    )
+
+
+def _something(items: list[Item], n: int) -> bool:
+    """Whether ``items[n]`` is 'something'/'anything' ('she wants something to drink'): no
+    object of the scene is asked for."""
+    return (
+        n < len(items)
+        and items[n].kind == "unknown"
+        and items[n].lemma.split()[0] in ("something", "anything")
     )
 
 
 def _people(items: list[Item]) -> set[str]:
     return {r.id for x in items if _humans(x) for r in x.refs}
+
+
+# possession verbs: a remark or reason with one may ask for something ("Carol wants them")
+_HAS = _WANTS | {"verb:have", "verb:receive"}
 
 
 def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason: bool) -> bool:
@@ -294,36 +304,21 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             if _hides_name(x, lexicon):
                 return False
             continue
-        if x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive"):
-            if reason:
-                continue
-            if (
-                nxt is not None
-                and nxt.kind == "unknown"
-                and nxt.lemma.split()[0]
-                in (
-                    "something",
-                    "anything",
-                )
-            ):
-                continue
-            if (
+        if x.lemma in _HAS and (
+            reason
+            or _something(words, n + 1)
+            or (
                 x.lemma == "verb:have"
                 and nxt is not None
                 and (_is(nxt, "aux") or nxt.kind == "unknown")
-            ):
-                continue
+            )
+        ):
+            continue
         return False
     # someone the request does not name who wants or has it ("because Carol wants them", "Alice
     # is waiting for it") may be asking for it too: not a remark to drop, unless negated
     if _people(words) - said and not any(_is(x, "not") for x in words):
-        wants = any(
-            x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive")
-            and not (
-                n + 1 < len(words) and words[n + 1].lemma.split()[0] in ("something", "anything")
-            )
-            for n, x in enumerate(words)
-        )
+        wants = any(x.lemma in _HAS and not _something(words, n + 1) for n, x in enumerate(words))
         if wants or any(_is(x, "it", "them") for x in words):
             return False
     return reason or any(x.kind == "unknown" for x in words)
@@ -1481,7 +1476,7 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "aux"):
                 j += 1
-            if j < len(items) and items[j].lemma in ("verb:need", "verb:want", "verb:like"):
+            if j < len(items) and items[j].lemma in _WANTS:
                 end = j + 1
                 while end < len(items) and not (
                     items[end].kind == "punct" and items[end].lemma in _END
