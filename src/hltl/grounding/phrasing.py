@@ -988,9 +988,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                 for x in items[k:j]
             )
             if said_no and not alone and _clause_opens(after, r):
-                last = max(
-                    (n + 1 for n in range(len(before) - 1) if before[n].lemma in _END), default=0
-                )
+                last = _sentences(before[:-1])[-1][0]  # the sentence the full stop ends
                 if sum(1 for x in before[last:] if _is_verb_item(x)) > 1:
                     raise GroundingError(
                         f"{it.text!r} could take back the whole sentence before it or only its "
@@ -1037,21 +1035,17 @@ def _clause_opens(after: list[Item], r: int) -> bool:
     return _is_verb_item(after[j]) or (be and _is(after[j], "to", "for", "on"))
 
 
+_STRESS = frozenset({"actually", "instead", "please", "then"})
+
+
 def _without_trailing_markers(after: list[Item]) -> list[Item]:
     """'…, to Bob actually.': a correction word ending the correction only stresses it."""
-    end = next((n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), None)
-    stop = len(after) if end is None else end
+    stop = _clause_stop(after, 0, to_comma=False)
     cut = stop
     while (
         cut > 0
         and _is(after[cut - 1], "correct", "filler")
-        and after[cut - 1].text.lower()
-        in (
-            "actually",
-            "instead",
-            "please",
-            "then",
-        )
+        and after[cut - 1].text.lower() in _STRESS
     ):
         cut -= 1
     return after[:cut] + after[stop:] if cut > 0 else after
@@ -1060,20 +1054,14 @@ def _without_trailing_markers(after: list[Item]) -> list[Item]:
 def _apply_correction(
     before: list[Item], after: list[Item], marker: Item, *, whole: bool = False
 ) -> list[Item]:
-    start = max(
-        (k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0
-    )
+    start = _sentences(before)[-1][0]
     r = 0
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
     if _clause_opens(after, r):
         # a whole new clause replaces the last clause (from its verb back to the separator
         # before it: its subject too); "it" keeps meaning what that clause moved
-        verbs = [
-            k
-            for k in range(start, len(before))
-            if before[k].kind == "word" and before[k].lemma.startswith("verb:")
-        ]
+        verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
         if not verbs:
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         cut = verbs[-1]
@@ -1113,8 +1101,7 @@ def _apply_correction(
     if paired is not None:
         return paired
     tail = after[r + 1 :]
-    stop = next((n for n, x in enumerate(tail) if x.kind == "punct" and x.lemma in _END), len(tail))
-    if whole and not all(_is(x, "filler") for x in tail[:stop]):
+    if whole and not all(_is(x, "filler") for x in tail[: _clause_stop(tail, 0, to_comma=False)]):
         # after a full stop the name cannot continue the sentence it corrects
         raise GroundingError(
             f"cannot read the correction {marker.text!r} … {_words_of(after[r:])!r}: say the "
