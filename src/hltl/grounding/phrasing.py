@@ -717,9 +717,9 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.extend(_joined(people))
             k += 1
             continue
-        count = _counted_alone(items, k)
-        if count:  # "give Alice both", "Person B gets all four": that many objects
-            n = 1 if _is(it, "both") else 2
+        alone = _counted_alone(items, k)
+        if alone:  # "give Alice both", "Person B gets all four": that many objects
+            n, count = alone
             said = items[k : k + n]
             words = " ".join(x.text for x in said)
             refs = _the_objects(out, count, words, lexicon)
@@ -797,31 +797,30 @@ _AFTER_ALONE = frozenset(
 )
 
 
-def _counted_alone(items: list[Item], k: int) -> int:
-    """How many objects 'both' (2) or 'all four' (4) stands for when used without a name after
-    it ('give Alice both', 'Person B gets all four'), else 0."""
+def _counted_alone(items: list[Item], k: int) -> tuple[int, int] | None:
+    """'both' (1 word, 2 objects) or 'all four' (2 words, 4 objects) used without a name after
+    it ('give Alice both', 'Person B gets all four'): (words, objects), else None."""
     it = items[k]
     if _is(it, "both"):
-        n = 1
+        n, count = 1, 2
     elif it.kind == "word" and it.text.lower() == "all" and k + 1 < len(items):
-        if _quant_word(items[k + 1])[0] != "num":
-            return 0
+        kind, count = _quant_word(items[k + 1])
+        if kind != "num" or not count:
+            return None
         n = 2
     else:
-        return 0
+        return None
     nxt = items[k + n] if k + n < len(items) else None
     if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
-        return 0
+        return None
     if (
         nxt is not None
         and _is(nxt, "and")
         and k + n + 1 < len(items)
         and (_objects(items[k + n + 1]) or _is(items[k + n + 1], "det"))
     ):
-        return 0  # "both and the cup": not a clause's objects
-    if _is(it, "both"):
-        return 2
-    return _quant_word(items[k + 1])[1]
+        return None  # "both and the cup": not a clause's objects
+    return n, count
 
 
 def _the_objects(out: list[Item], count: int, words: str, lexicon: Lexicon) -> tuple[Ref, ...]:
