@@ -969,6 +969,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Give Bob the cup, sorry.": an apology, not a correction
             k = len(before)
             continue
+        whole = False  # correcting the sentence before, across its full stop
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
             r = 0
@@ -995,10 +996,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
-                if before and before[-1].kind != "punct":
-                    items = _apply_correction(before, after, it, whole=True)
-                    k = 0
-                    continue
+                whole = True
             elif after:
                 raise GroundingError(
                     f"{it.text!r} at the start of a sentence could correct the request before it "
@@ -1008,7 +1006,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
             continue
-        items = _apply_correction(before, after, it)
+        items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
 
