@@ -1071,14 +1071,13 @@ def _apply_correction(
         moved = [it for it in before[cut:] if _objects(it)]
         # "Give Alice the chips. Scratch that, give her the bottle.": 'her' is the one person of
         # the clause taken back (with several, the pronoun is left to be refused as unclear)
-        people = {r.id: x for x in before[cut:] if _humans(x) for r in x.refs}
+        people = {ref.id: x for x in before[cut:] if _humans(x) for ref in x.refs}
         rest = list(after)
-        for m, x in enumerate(rest):
-            if x.kind == "punct" and x.lemma in _END:
-                break
-            if x.lemma == "pronoun" and x.text.lower() in _PERSON_PRONOUNS and len(people) == 1:
-                (who,) = people.values()
-                rest[m] = replace(who, text=x.text)
+        if len(people) == 1:
+            (who,) = people.values()
+            for m in range(_clause_stop(rest, 0, to_comma=False)):
+                if rest[m].lemma == "pronoun" and rest[m].text.lower() in _PERSON_PRONOUNS:
+                    rest[m] = replace(who, text=rest[m].text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
                 break
