@@ -797,9 +797,7 @@ class Lexicon:
         "Alcie"). A keyword or a common English word ("hugs", "Carl") is never a misspelling,
         and two names within one edit ("chps": chips or cups) mean the word is not corrected.
         """
-        if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
-            return None
-        if word in PHRASE_WORDS:
+        if not _correctable(word):
             return None
         keys = [
             key
@@ -824,11 +822,11 @@ class Lexicon:
         more than one name.
         """
         found: list[tuple[int, tuple[Ref, ...]]] = []
+        typed = [t.low for t in tokens[i : i + self.max_len]]  # once, not per name
         for key, entries in self._phrases.items():
             n = len(key)
-            if n < 2 or i + n > len(tokens):
+            if n < 2 or n > len(typed):
                 continue
-            typed = tuple(t.low for t in tokens[i : i + n])
             diff = [k for k in range(n) if typed[k] != key[k]]
             if len(diff) != 1:
                 continue
@@ -894,12 +892,18 @@ def common_words() -> frozenset[str]:
     return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
 
 
-def _close_word(word: str, right: str) -> bool:
-    """Whether a typed word is a typo of ``right`` inside a longer name (see _misspelt_phrase):
-    as for a name of one word, 4+ letters ("mgu" is never corrected) and not a real word."""
+def _correctable(word: str) -> bool:
+    """Whether a typed word may be a typo of a name: 4+ letters ("mgu" is never corrected), and
+    no keyword or word of a known phrase."""
     if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
         return False
-    return word not in PHRASE_WORDS and word not in common_words() and _one_edit(word, right)
+    return word not in PHRASE_WORDS
+
+
+def _close_word(word: str, right: str) -> bool:
+    """Whether a typed word is a typo of ``right`` inside a longer name (see _misspelt_phrase):
+    as for a name of one word (see Lexicon.misspelt), and not a real word."""
+    return _correctable(word) and word not in common_words() and _one_edit(word, right)
 
 
 def _one_edit(a: str, b: str) -> bool:

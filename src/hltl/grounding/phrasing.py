@@ -17,6 +17,9 @@ _QUESTION_VERBS = frozenset(
 _PERSON_PRONOUNS = frozenset({"he", "him", "she", "her", "his", "hers"})
 _SPEAKER = frozenset({"i", "me", "us", "we", "myself"})
 _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "also"})
+# a person wanting something ("Alice doesn't want the cup"); a verb handing something over
+_WANTS = frozenset({"verb:want", "verb:need", "verb:like"})
+_MOVES = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
 
 
 def _is(item: Item, *lemmas: str) -> bool:
@@ -257,21 +260,31 @@ def _opens_remark(items: list[Item], k: int) -> bool:
     if j >= len(items):
         return False
     nxt = items[j]
+    verb = nxt.lemma.split()[0] if nxt.kind == "unknown" else ""
     return (
         nxt.text.lower() in ("'s", "is", "was", "'re", "are", "has", "had", "'ve", "have")
-        or (nxt.kind == "unknown" and nxt.lemma.split()[0] in _REMARK_VERBS)
-        or (nxt.kind == "unknown" and nxt.lemma.split()[0].endswith("ed"))
-        or (
-            nxt.lemma in ("verb:want", "verb:need", "verb:like")
-            and j + 1 < len(items)
-            and items[j + 1].kind == "unknown"
-            and items[j + 1].lemma.split()[0] in ("something", "anything")
-        )
+        or verb in _REMARK_VERBS
+        or verb.endswith("ed")
+        or (nxt.lemma in _WANTS and _something(items, j + 1))
+    )
+
+
+def _something(items: list[Item], n: int) -> bool:
+    """Whether ``items[n]`` is 'something'/'anything' ('she wants something to drink'): no
+    object of the scene is asked for."""
+    return (
+        n < len(items)
+        and items[n].kind == "unknown"
+        and items[n].lemma.split()[0] in ("something", "anything")
     )
 
 
 def _people(items: list[Item]) -> set[str]:
     return {r.id for x in items if _humans(x) for r in x.refs}
+
+
+# possession verbs: a remark or reason with one may ask for something ("Carol wants them")
+_HAS = _WANTS | {"verb:have", "verb:receive"}
 
 
 def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason: bool) -> bool:
@@ -291,36 +304,21 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             if _hides_name(x, lexicon):
                 return False
             continue
-        if x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive"):
-            if reason:
-                continue
-            if (
-                nxt is not None
-                and nxt.kind == "unknown"
-                and nxt.lemma.split()[0]
-                in (
-                    "something",
-                    "anything",
-                )
-            ):
-                continue
-            if (
+        if x.lemma in _HAS and (
+            reason
+            or _something(words, n + 1)
+            or (
                 x.lemma == "verb:have"
                 and nxt is not None
                 and (_is(nxt, "aux") or nxt.kind == "unknown")
-            ):
-                continue
+            )
+        ):
+            continue
         return False
     # someone the request does not name who wants or has it ("because Carol wants them", "Alice
     # is waiting for it") may be asking for it too: not a remark to drop, unless negated
     if _people(words) - said and not any(_is(x, "not") for x in words):
-        wants = any(
-            x.lemma in ("verb:want", "verb:need", "verb:like", "verb:have", "verb:receive")
-            and not (
-                n + 1 < len(words) and words[n + 1].lemma.split()[0] in ("something", "anything")
-            )
-            for n, x in enumerate(words)
-        )
+        wants = any(x.lemma in _HAS and not _something(words, n + 1) for n, x in enumerate(words))
         if wants or any(_is(x, "it", "them") for x in words):
             return False
     return reason or any(x.kind == "unknown" for x in words)
@@ -719,9 +717,9 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.extend(_joined(people))
             k += 1
             continue
-        count = _counted_alone(items, k)
-        if count:  # "give Alice both", "Person B gets all four": that many objects
-            n = 1 if _is(it, "both") else 2
+        alone = _counted_alone(items, k)
+        if alone:  # "give Alice both", "Person B gets all four": that many objects
+            n, count = alone
             said = items[k : k + n]
             words = " ".join(x.text for x in said)
             refs = _the_objects(out, count, words, lexicon)
@@ -799,31 +797,30 @@ _AFTER_ALONE = frozenset(
 )
 
 
-def _counted_alone(items: list[Item], k: int) -> int:
-    """How many objects 'both' (2) or 'all four' (4) stands for when used without a name after
-    it ('give Alice both', 'Person B gets all four'), else 0."""
+def _counted_alone(items: list[Item], k: int) -> tuple[int, int] | None:
+    """'both' (1 word, 2 objects) or 'all four' (2 words, 4 objects) used without a name after
+    it ('give Alice both', 'Person B gets all four'): (words, objects), else None."""
     it = items[k]
     if _is(it, "both"):
-        n = 1
+        n, count = 1, 2
     elif it.kind == "word" and it.text.lower() == "all" and k + 1 < len(items):
-        if _quant_word(items[k + 1])[0] != "num":
-            return 0
+        kind, count = _quant_word(items[k + 1])
+        if kind != "num" or not count:
+            return None
         n = 2
     else:
-        return 0
+        return None
     nxt = items[k + n] if k + n < len(items) else None
     if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
-        return 0
+        return None
     if (
         nxt is not None
         and _is(nxt, "and")
         and k + n + 1 < len(items)
         and (_objects(items[k + n + 1]) or _is(items[k + n + 1], "det"))
     ):
-        return 0  # "both and the cup": not a clause's objects
-    if _is(it, "both"):
-        return 2
-    return _quant_word(items[k + 1])[1]
+        return None  # "both and the cup": not a clause's objects
+    return n, count
 
 
 def _the_objects(out: list[Item], count: int, words: str, lexicon: Lexicon) -> tuple[Ref, ...]:
@@ -972,6 +969,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Give Bob the cup, sorry.": an apology, not a correction
             k = len(before)
             continue
+        whole = False  # correcting the sentence before, across its full stop
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
             r = 0
@@ -990,9 +988,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                 for x in items[k:j]
             )
             if said_no and not alone and _clause_opens(after, r):
-                last = max(
-                    (n + 1 for n in range(len(before) - 1) if before[n].lemma in _END), default=0
-                )
+                last = _sentences(before[:-1])[-1][0]  # the sentence the full stop ends
                 if sum(1 for x in before[last:] if _is_verb_item(x)) > 1:
                     raise GroundingError(
                         f"{it.text!r} could take back the whole sentence before it or only its "
@@ -1000,10 +996,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
-                if before and before[-1].kind != "punct":
-                    items = _apply_correction(before, after, it, whole=True)
-                    k = 0
-                    continue
+                whole = True
             elif after:
                 raise GroundingError(
                     f"{it.text!r} at the start of a sentence could correct the request before it "
@@ -1013,7 +1006,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
             continue
-        items = _apply_correction(before, after, it)
+        items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
 
@@ -1039,21 +1032,17 @@ def _clause_opens(after: list[Item], r: int) -> bool:
     return _is_verb_item(after[j]) or (be and _is(after[j], "to", "for", "on"))
 
 
+_STRESS = frozenset({"actually", "instead", "please", "then"})
+
+
 def _without_trailing_markers(after: list[Item]) -> list[Item]:
     """'…, to Bob actually.': a correction word ending the correction only stresses it."""
-    end = next((n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), None)
-    stop = len(after) if end is None else end
+    stop = _clause_stop(after, 0, to_comma=False)
     cut = stop
     while (
         cut > 0
         and _is(after[cut - 1], "correct", "filler")
-        and after[cut - 1].text.lower()
-        in (
-            "actually",
-            "instead",
-            "please",
-            "then",
-        )
+        and after[cut - 1].text.lower() in _STRESS
     ):
         cut -= 1
     return after[:cut] + after[stop:] if cut > 0 else after
@@ -1062,20 +1051,14 @@ def _without_trailing_markers(after: list[Item]) -> list[Item]:
 def _apply_correction(
     before: list[Item], after: list[Item], marker: Item, *, whole: bool = False
 ) -> list[Item]:
-    start = max(
-        (k + 1 for k, it in enumerate(before) if it.kind == "punct" and it.lemma in _END), default=0
-    )
+    start = _sentences(before)[-1][0]
     r = 0
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
     if _clause_opens(after, r):
         # a whole new clause replaces the last clause (from its verb back to the separator
         # before it: its subject too); "it" keeps meaning what that clause moved
-        verbs = [
-            k
-            for k in range(start, len(before))
-            if before[k].kind == "word" and before[k].lemma.startswith("verb:")
-        ]
+        verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
         if not verbs:
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         cut = verbs[-1]
@@ -1088,14 +1071,13 @@ def _apply_correction(
         moved = [it for it in before[cut:] if _objects(it)]
         # "Give Alice the chips. Scratch that, give her the bottle.": 'her' is the one person of
         # the clause taken back (with several, the pronoun is left to be refused as unclear)
-        people = {r.id: x for x in before[cut:] if _humans(x) for r in x.refs}
+        people = {ref.id: x for x in before[cut:] if _humans(x) for ref in x.refs}
         rest = list(after)
-        for m, x in enumerate(rest):
-            if x.kind == "punct" and x.lemma in _END:
-                break
-            if x.lemma == "pronoun" and x.text.lower() in _PERSON_PRONOUNS and len(people) == 1:
-                (who,) = people.values()
-                rest[m] = replace(who, text=x.text)
+        if len(people) == 1:
+            (who,) = people.values()
+            for m in range(_clause_stop(rest, 0, to_comma=False)):
+                if rest[m].lemma == "pronoun" and rest[m].text.lower() in _PERSON_PRONOUNS:
+                    rest[m] = replace(who, text=rest[m].text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
                 break
@@ -1115,8 +1097,7 @@ def _apply_correction(
     if paired is not None:
         return paired
     tail = after[r + 1 :]
-    stop = next((n for n, x in enumerate(tail) if x.kind == "punct" and x.lemma in _END), len(tail))
-    if whole and not all(_is(x, "filler") for x in tail[:stop]):
+    if whole and not all(_is(x, "filler") for x in tail[: _clause_stop(tail, 0, to_comma=False)]):
         # after a full stop the name cannot continue the sentence it corrects
         raise GroundingError(
             f"cannot read the correction {marker.text!r} … {_words_of(after[r:])!r}: say the "
@@ -1272,26 +1253,17 @@ def _not_wanted(items: list[Item]) -> list[Item]:
 
 def _unwanted(head: list[Item]) -> set[str] | None:
     """The objects of 'P doesn't want X (and Y)' / 'don't give P X', else None."""
-    k = 0
-    person = _humans(head[0]) if head else False
-    if person:  # "Alice doesn't want the cup"
-        k = 1
-        while k < len(head) and _is(head[k], "aux", "do"):
-            k += 1
-        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
-            return None
-        if head[k + 1].lemma not in ("verb:want", "verb:need", "verb:like"):
-            return None
-        k += 2
-    else:  # "Don't give Bob the apple", "never hand Carol the cup"
-        while k < len(head) and _is(head[k], "aux", "do"):
-            k += 1
-        if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
-            return None
-        verb = head[k + 1]
-        if verb.lemma not in ("verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"):
-            return None
-        k += 2
+    # "Alice doesn't want the cup"; else "Don't give Bob the apple", "never hand Carol the cup"
+    person = bool(head) and _humans(head[0])
+    k = 1 if person else 0
+    while k < len(head) and _is(head[k], "aux", "do"):
+        k += 1
+    if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
+        return None
+    verbs = _WANTS if person else _MOVES
+    if head[k + 1].lemma not in verbs:
+        return None
+    k += 2
     objs: set[str] = set()
     for x in head[k:]:
         if _objects(x):
@@ -1487,7 +1459,7 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "aux"):
                 j += 1
-            if j < len(items) and items[j].lemma in ("verb:need", "verb:want", "verb:like"):
+            if j < len(items) and items[j].lemma in _WANTS:
                 end = j + 1
                 while end < len(items) and not (
                     items[end].kind == "punct" and items[end].lemma in _END
