@@ -208,10 +208,11 @@ def _named(s: Sample, dets: Sequence[Detection], sid: int) -> str | None:
     detection covering most of it (at least 30 % of the smaller of the two), None if none."""
     assert s.frame.seg is not None
     shown = s.frame.seg == sid
+    size = int(shown.sum())
     best, name = 0, None
     for d in dets:
         overlap = int((d.mask & shown).sum())
-        if overlap > best and overlap >= 0.3 * min(int(shown.sum()), int(d.mask.sum())):
+        if overlap > best and overlap >= 0.3 * min(size, int(d.mask.sum())):
             best, name = overlap, d.label
     if name is not None and name in s.scene.object_ids:  # exact labels are scene ids
         name = s.scene.object(name).category.lower()

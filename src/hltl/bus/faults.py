@@ -81,29 +81,36 @@ class Link:
     def reply_lost(self) -> bool:
         """Whether the next query reply is to be dropped."""
         with self._lock:
-            return self.faults.reply_loss > 0 and self._rng.random() < self.faults.reply_loss
+            return self._chance(self.faults.reply_loss)
 
     def lost(self) -> bool:
         """Whether the next request (a query carrying commands) is to be dropped."""
         with self._lock:
-            if self.faults.loss and self._rng.random() < self.faults.loss:
-                self.dropped += 1
-                return True
-            return False
+            return self._drop()
 
     def duplicated(self) -> bool:
         """Whether the next query is to be sent twice."""
         with self._lock:
-            return self.faults.duplicate > 0 and self._rng.random() < self.faults.duplicate
+            return self._chance(self.faults.duplicate)
+
+    def _chance(self, p: float) -> bool:
+        """One draw of a fault of probability ``p`` (none when ``p`` is 0; under the lock)."""
+        return p > 0 and self._rng.random() < p
+
+    def _drop(self) -> bool:
+        """Whether the next message is lost (counted; under the lock)."""
+        if self._chance(self.faults.loss):
+            self.dropped += 1
+            return True
+        return False
 
     def put(self, key: str, payload: bytes, attachment: bytes | None = None) -> None:
         f = self.faults
         with self._lock:
-            if f.loss and self._rng.random() < f.loss:
-                self.dropped += 1
+            if self._drop():
                 return
-            copies = 2 if f.duplicate and self._rng.random() < f.duplicate else 1
-            hold = bool(f.reorder) and self._rng.random() < f.reorder
+            copies = 2 if self._chance(f.duplicate) else 1
+            hold = self._chance(f.reorder)
             self.held += hold
             late = f.delay + (REORDER_HOLD if hold else 0.0)
             if self._thread is None:

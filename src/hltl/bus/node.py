@@ -169,7 +169,8 @@ class _Batch:
     restore: Callable[[], None]
     seq0: int
     latest0: dict[int, Report]
-    ticks: list[tuple[float, WorldState, list[Report]]]
+    # (t, observation, reports, the observation as the answer carries it) of each tick
+    ticks: list[tuple[float, WorldState, list[Report], dict[str, Any]]]
     latest: dict[int, Report]
     seq: int
 
@@ -353,7 +354,7 @@ class CellNode:
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
             if obs is not None:
-                self._publish_world(ep.cell, obs, t)
+                self._publish_world(ep.cell, obs, t, answer["observation"])
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -438,7 +439,7 @@ class CellNode:
         c.said.extend(tick["instructions"])
         c.last = {k: v for k, v in msg.items() if k not in ("records", "instructions")}
         self.link.put(self.keys.sim_tick, dumps(msg))
-        self._publish_world(ep.cell, obs, t)
+        self._publish_world(ep.cell, obs, t, tick["observation"])
 
     def _on_clock(self, query: Any) -> None:
         """A real-time episode's latest tick, with the records and instructions published since
@@ -491,7 +492,7 @@ class CellNode:
                     break
                 obs, tick, reports = self._tick(ep, t_next, batch.latest, publish=False)
                 out.append(tick)
-                batch.ticks.append((t_next, obs, reports))
+                batch.ticks.append((t_next, obs, reports, tick["observation"]))
                 t, nxt = t_next, tick["next"]
                 if (
                     _may_act(reports, batch.latest)
@@ -524,7 +525,7 @@ class CellNode:
         """A new command at time ``t``: the executor consumed every tick up to ``t``."""
         b = ep.batch
         if b is not None:
-            self._commit(ep, sum(1 for tt, _, _ in b.ticks if tt <= t))
+            self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t))
 
     def _commit(self, ep: _Episode, consumed: int) -> None:
         b = ep.batch
@@ -545,15 +546,15 @@ class CellNode:
             b.restore()
             self.stats.undone += len(b.ticks) - consumed
             ep.latest, self._seq = dict(b.latest0), b.seq0
-            for t, _, _ in b.ticks[:consumed]:  # the same calls again give the same results
+            for t, *_ in b.ticks[:consumed]:  # the same calls again give the same results
                 self._tick(ep, t, ep.latest, publish=False)
         # the executor has had these ticks' reports in the answer; observers get the outcomes
         # (every report stays in the state queryable) and the world
-        for t, obs, reports in b.ticks[:consumed]:
+        for t, obs, reports, wire in b.ticks[:consumed]:
             for rep in reports:
                 if rep.status.terminal:
                     self._publish(ep, rep)
-            self._publish_world(ep.cell, obs, t)
+            self._publish_world(ep.cell, obs, t, wire)
 
     def _clock(self, cell: Cell, t: float) -> dict[str, Any]:
         return {
@@ -736,8 +737,11 @@ class CellNode:
                 key=self.keys.state(robot),
             )
 
-    def _publish_world(self, cell: Cell, obs: WorldState, t: float) -> None:
-        """What perception reports, for anyone listening (viz, perception, a ROS 2 bridge).
+    def _publish_world(
+        self, cell: Cell, obs: WorldState, t: float, wire: dict[str, Any] | None = None
+    ) -> None:
+        """What perception reports, for anyone listening (viz, perception, a ROS 2 bridge);
+        ``wire`` is ``obs`` as the tick already carries it (:func:`world_to_wire`), if at hand.
 
         Each key has a declared publisher; a message is encoded only when some subscriber
         matches it, so nobody listening costs nothing.
@@ -745,7 +749,7 @@ class CellNode:
         if not self.publish_poses:
             return
         k = self.keys
-        self._put(k.observation, lambda: dumps(world_to_wire(obs)))
+        self._put(k.observation, lambda: dumps(world_to_wire(obs) if wire is None else wire))
         for h, p in obs.humans:
             self._put(k.human_pose(h), partial(encode_pose, StampedPose("world", obs.t, p)))
         for r, p in obs.hands:

@@ -14,6 +14,7 @@ import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import BackendUnavailableError
+from hltl.motion.grasps import CATEGORY_CYLINDERS
 from hltl.perception.detection import (
     BASE_CLEARANCE,
     MIN_PIXELS,
@@ -36,13 +37,11 @@ F32 = npt.NDArray[np.float32]
 F64 = npt.NDArray[np.float64]
 MIN_CONFIDENCE = 0.5  # pixels the network is less sure of are left out
 # (radius, height) of each category's cylinder as the 3D simulator renders it (hltl.sim3d.model;
-# a test keeps the two equal): what the network was trained to see
+# a test keeps the two equal): what the network was trained to see. The renderer takes the
+# motion layer's grasp cylinders where it has one, its own looks for the rest.
 SIZES: dict[str, tuple[float, float]] = {
-    "bottle": (0.035, 0.22),
-    "chips": (0.05, 0.18),
-    "cup": (0.04, 0.10),
+    **CATEGORY_CYLINDERS,
     "mug": (0.04, 0.10),
-    "can": (0.033, 0.12),
     "apple": (0.04, 0.08),
     "box": (0.06, 0.12),
     "book": (0.07, 0.04),
