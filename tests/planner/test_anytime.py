@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import time
 
 import pytest
 
@@ -178,7 +179,15 @@ def test_joint_replanning_finds_the_exact_optimum_with_room(family: str, n: int,
     assert to_seconds(walk.best[0]) > exact.makespan
     shortest = min(i.lower for i in problem.instances)
     room = walk.best[0] // shortest - len(walk.best[1])
-    found = _jointly(problem, s, walk.router, walk.best, 60.0, detour=math.inf, slack=max(0, room))
+    found = _jointly(
+        problem,
+        s,
+        walk.router,
+        walk.best,
+        time.perf_counter() + 60,
+        detour=math.inf,
+        slack=max(0, room),
+    )
     assert found is not None
     assert to_seconds(found[0]) == pytest.approx(exact.makespan, abs=1e-9)
     res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
@@ -194,7 +203,7 @@ def test_joint_replanning_never_returns_a_longer_plan_than_its_hint(layout: str,
     assert walk.best is not None
     # a tiny time limit: whatever CP-SAT returns starts from the hint, a valid plan
     for seconds in (0.05, 3.0):
-        found = _jointly(problem, s, walk.router, walk.best, seconds)
+        found = _jointly(problem, s, walk.router, walk.best, time.perf_counter() + seconds)
         if found is None:
             continue
         assert found[0] <= walk.best[0]

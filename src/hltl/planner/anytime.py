@@ -525,7 +525,7 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
             if not joint or best is None:
                 break
             joint = False
-            better(_jointly(problem, s, walk.router, best, until - now))
+            better(_jointly(problem, s, walk.router, best, until))
             walk_until = until
             continue
         walk.step()
@@ -555,7 +555,7 @@ def _jointly(
     s: _Search,
     router: _Router,
     best: _Found,
-    seconds: float,
+    until: float,
     *,
     detour: float = CP_DETOUR,
     slack: int = 0,
@@ -563,7 +563,7 @@ def _jointly(
     """``best`` re-planned by CP-SAT with every goal free (``lns.replan_jointly``), in at
     most ``slack`` more steps, each object kept to places on routes at most ``detour`` seconds
     slower than its quickest (and to those ``best`` uses); the plan is replayed through the
-    monitors before it counts. None: nothing found in ``seconds``."""
+    monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``)."""
     node = router.node
     graph = s.heuristic.graph
     steps = [list(U) for _, U, _ in best[1]]
@@ -588,7 +588,7 @@ def _jointly(
         }
         places |= {here, *used.get(o, ()), *(problem.instances[i].post for i in fires)}
         specs.append(lns.GoalSpec(o, fires, frozenset(places), g.after))
-    new = lns.replan_jointly(problem, specs, node[0], steps, slack=slack, time_limit=seconds)
+    new = lns.replan_jointly(problem, specs, node[0], steps, slack=slack, deadline=until)
     return None if new is None else router.replay(new)
 
 

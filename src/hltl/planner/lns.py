@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -39,11 +40,12 @@ def replan_jointly(
     steps: Steps,
     *,
     slack: int = 0,
-    time_limit: float = 1.0,
+    deadline: float,
     seed: int = 0,
 ) -> Steps | None:
-    """A plan for ``goals`` in at most ``len(steps) + slack`` steps, as short as CP-SAT finds in
-    ``time_limit`` seconds, starting from ``steps`` (its hint); None when it found none.
+    """A plan for ``goals`` in at most ``len(steps) + slack`` steps, as short as CP-SAT finds
+    before ``deadline`` (``time.perf_counter()``; building the model counts), starting from
+    ``steps`` (its hint); None when it found none.
 
     The model is time-indexed: where each goal's object is before each step (one of its
     ``places``), and which instance it undergoes in each step. Under the step semantics of
@@ -66,7 +68,17 @@ def replan_jointly(
         r = p.code_holder.get(code)
         if r is not None and o not in goal_objs:
             taken |= 1 << r
+    # the hint, complete: each instance's step, each object's place before each step, each
+    # step's longest duration
     hint = {(inst.index, t) for t, step in enumerate(steps) for inst in step}
+    where = [list(start)]
+    for step in steps:
+        now = list(where[-1])
+        for inst in step:
+            now[inst.obj] = inst.post
+        where.append(now)
+    where += [where[-1]] * slack
+    longest = [max((i.lower for i in step), default=0) for step in steps] + [0] * slack
 
     m = cp_model.CpModel()
     x: dict[tuple[int, int], Any] = {}  # (instance, step) -> it runs in that step
@@ -82,6 +94,7 @@ def replan_jointly(
             for code in places:
                 lit = m.new_bool_var("")
                 loc[(gi, t, code)] = lit
+                m.add_hint(lit, where[t][g.obj] == code)
                 r = p.code_holder.get(code)
                 if r is not None:
                     held[t][r].append(lit)
@@ -140,6 +153,7 @@ def replan_jointly(
         prev = 0
         for d in sorted(by_length[t]):
             y = m.new_bool_var("")
+            m.add_hint(y, longest[t] >= d)
             for dd, lits in by_length[t].items():
                 if dd >= d:
                     for lit in lits:
@@ -148,8 +162,11 @@ def replan_jointly(
             prev = d
     m.minimize(sum(objective))
 
+    left = deadline - time.perf_counter()
+    if left <= 0:
+        return None
     solver = cp_model.CpSolver()
-    solver.parameters.max_time_in_seconds = time_limit
+    solver.parameters.max_time_in_seconds = left
     solver.parameters.num_workers = 1
     solver.parameters.random_seed = seed
     status = solver.solve(m)
