@@ -33,6 +33,10 @@ PAIRS_UP_TO = 8
 # after the walk over priority orders has had this share of them
 CP_MIN_SECONDS = 2.0
 CP_WALK_SHARE = 0.2
+# ... and has at most this many goals: with 32, CP-SAT's presolve alone takes about 3 s of the
+# budget, and the 10 s benchmark runs lost more on 32-robot lines (the walk's time) than they
+# gained on grids (docs/planner.md, "Anytime mode")
+CP_UP_TO = 16
 # ... keeping each object to places on routes at most this much slower than its quickest (s)
 CP_DETOUR = 0.6
 
@@ -500,7 +504,8 @@ def _pairs_at_start(
 def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
-    there are at least ``CP_MIN_SECONDS`` and CP-SAT is installed, the walk stops after
+    there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
+    the walk stops after
     ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
     (``_jointly``), then the walk goes on if time is left. The best plan found."""
     node = problem.start()
@@ -511,7 +516,11 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
     lns: _Neighbourhood | None = None
     best = walk.best
     now = time.perf_counter()
-    joint = len(gls) >= 3 and until - now >= CP_MIN_SECONDS and _joint_possible(problem, gls)
+    joint = (
+        3 <= len(gls) <= CP_UP_TO
+        and until - now >= CP_MIN_SECONDS
+        and _joint_possible(problem, gls)
+    )
     walk_until = now + CP_WALK_SHARE * (until - now) if joint else until
 
     def better(found: _Found | None) -> None:
