@@ -24,6 +24,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.bus.perception import PerceptionClient
+from hltl.bus.session import zenoh
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
@@ -90,6 +91,7 @@ class DriverStats:
     recoveries: int = 0
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
+    streamed: int = 0  # ticks ahead received as further replies to a step request
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -147,6 +149,7 @@ class BusCell:
         self.episode = uuid.uuid4().hex
         self.stats = DriverStats()
         self.link = Link(session, self.faults, name=f"executor-{cell}")
+        self._each = zenoh().ConsolidationMode.NONE
         self._cond = threading.Condition()
         self._latest: dict[int, Report] = {}
         self._local: dict[int, ActionStatus] = {}  # outcomes decided here (robot down)
@@ -170,6 +173,8 @@ class BusCell:
         # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
         self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time}
         self._ahead: list[dict[str, Any]] = []
+        self._stream: Any = None  # the request whose further replies bring more ticks ahead
+        self._got = 0  # ticks of the current batch received so far
         self._batch = 0
         self._consumed = 0
         self.now = 0.0
@@ -269,6 +274,8 @@ class BusCell:
 
     def _confirm(self) -> None:
         """Settle suspicions from liveliness: a robot whose token nobody holds is down."""
+        if not self._suspect:  # (the common case, without the lock: one is seen next time)
+            return
         with self._cond:
             suspects, self._suspect = sorted(self._suspect), set()
         for r in suspects:
@@ -315,9 +322,11 @@ class BusCell:
         data: dict[str, Any],
         retries: int | None = None,
         robots: Sequence[str] = (),
+        keep: bool = False,
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
         (A query carrying commands is subject to the executor's message faults, like one.)
+        With ``keep``, the query's further replies are left in ``self._stream``.
 
         Raises:
             BusError: the node answered with an error (it refuses the request).
@@ -336,18 +345,26 @@ class BusCell:
                     list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
             t0 = time.perf_counter()
             try:
-                replies = list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
+                # unconsolidated: a reply is delivered as soon as it comes, not when the node's
+                # handler returns (what the node does after answering is off the critical path)
+                replies = self.session.get(
+                    key, payload=payload, timeout=self.timing.timeout, consolidation=self._each
+                )
             except Exception as exc:  # the session closed under us
                 raise BusError(f"the bus failed while asking {key}: {exc}") from None
+            answered = False
             for reply in replies:
+                answered = True
                 if reply.ok is not None:
                     self.stats.round_trips.append(time.perf_counter() - t0)
+                    if keep:
+                        self._stream = replies
                     return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
                 refusal = _refusal(reply.err.payload.to_bytes())
                 if refusal is not None:
                     raise BusError(f"{key}: {refusal}")
                 # anything else is Zenoh's own error (the query timed out): no answer yet
-            if not replies:
+            if not answered:
                 # no queryable matched: if the node is gone entirely, waiting again is pointless
                 # unless its answer was lost; a short pause lets a restarting route settle
                 time.sleep(min(0.01, self.timing.timeout))
@@ -357,16 +374,48 @@ class BusCell:
         """Take in a reset, step or peek answer, and the ticks simulated after it."""
         self._absorb(d)
         self._ahead = list(d.get("ahead", ()))
+        self._got = len(self._ahead)
         self._batch = int(d.get("step", 0))
         self._consumed = 0
+        if not d.get("stream"):
+            self._stream = None
+
+    def _pull(self) -> None:
+        """More ticks ahead: the next reply the node streams after its answer (it simulates
+        them while this side takes in the earlier ones). A missing or out-of-order reply, or
+        the request's end, ends the stream: the next tick is then asked for."""
+        stream, self._stream = self._stream, None
+        try:
+            reply = stream.recv()
+        except Exception:  # the request is over: no more replies
+            return
+        if reply.ok is None:  # it timed out
+            return
+        try:
+            d = loads(reply.ok.payload.to_bytes(), "ticks ahead")
+            ticks = list(d["ahead"])
+            fits = (d["episode"], d["step"], d["from"]) == (self.episode, self._batch, self._got)
+        except (BusError, KeyError, TypeError):
+            return
+        if fits:
+            self._ahead.extend(ticks)
+            self._got += len(ticks)
+            self.stats.streamed += len(ticks)
+            if d.get("more"):
+                self._stream = stream
+
+    def _cut(self) -> None:
+        """A command: the ticks simulated without it are not used (the node undoes them)."""
+        self._ahead = []
+        self._stream = None
 
     def _absorb(self, d: dict[str, Any]) -> None:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
         clock."""
         for rec in d.get("records", ()):
             self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
-        if "observation" in d:
-            self._obs = world_from_wire(d["observation"])
+        if "observation" in d:  # (a tick ahead: what changed since the one before)
+            self._obs = world_from_wire(d["observation"], like=self._obs)
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
         reports = [Report.from_dict(item) for item in d.get("status", ())]
         with self._cond:
@@ -436,6 +485,8 @@ class BusCell:
     def _log_down(self) -> None:
         """Log robots newly found down (liveliness callbacks only note them: the log is not
         thread-safe, so records are written from the executor's thread)."""
+        if len(self._logged) == len(self._down):  # (none new: the robots logged are down)
+            return
         with self._cond:
             new = [(r, why) for r, why in self._down.items() if r not in self._logged]
             self._logged.update(r for r, _ in new)
@@ -461,6 +512,8 @@ class BusCell:
     def _follow(self, t: float) -> None:
         """Bring what the executor knows of the cell to time ``t``: here the node steps to it
         (or already did, ahead of the loop) and every report up to then is in."""
+        if not self._ahead and not self._dirty and self._stream is not None:
+            self._pull()
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -492,7 +545,7 @@ class BusCell:
         if self._queued:
             req["commands"] = [c.to_dict() for c in self._queued]
             self.stats.commands += len(self._queued)
-        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids)
+        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids, keep=True)
         if d is not None:
             self._step += 1
             self._queued = []
@@ -575,7 +628,7 @@ class BusCell:
                         (self.keys.trajectory(traj.robot), encode_trajectory(traj, t), meta)
                     )
         self._dirty = True
-        self._ahead = []  # simulated without this command: the node undoes them
+        self._cut()  # simulated without this command: the node undoes them
         if not sends and self._defer:
             self._queue("start", handle, t)
             return handle
@@ -617,7 +670,7 @@ class BusCell:
         if self._status_terminal(handle.id):
             return
         self._dirty = True
-        self._ahead = []
+        self._cut()
         if self._defer:
             self._queue("halt", handle, t, reason)
             return

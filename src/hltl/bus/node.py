@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import math
 import pickle
+import queue
 import random
 import threading
 import time
@@ -25,6 +26,7 @@ from hltl.bus.codec import (
     encode_pose,
     finite_or_none,
     loads,
+    world_changes,
     world_to_wire,
 )
 from hltl.bus.faults import FaultModel, Link
@@ -157,6 +159,11 @@ class _Ahead:
         return cls(count, tick, max_time)
 
 
+# a tick simulated ahead: its time, the observation, the actions' reports, and the observation
+# as the answer carries it (world_to_wire)
+_Ticked = tuple[float, WorldState, list["Report"], dict[str, Any]]
+
+
 @dataclass(slots=True)
 class _Batch:
     """Ticks simulated ahead of the executor, not yet confirmed: the executor consumes them
@@ -166,13 +173,27 @@ class _Batch:
     function of its inputs)."""
 
     id: int
-    restore: Callable[[], None]
+    restore: Callable[[], None] | None  # saved before the first tick ahead
     seq0: int
     latest0: dict[int, Report]
-    # (t, observation, reports, the observation as the answer carries it) of each tick
-    ticks: list[tuple[float, WorldState, list[Report], dict[str, Any]]]
+    ticks: list[_Ticked]
     latest: dict[int, Report]
     seq: int
+    cut: bool = False  # a request or command came: stop simulating ahead
+    finished: threading.Event = field(default_factory=threading.Event)  # no more ticks ahead
+
+
+@dataclass(slots=True)
+class _Stretch:
+    """Where simulating ahead has got to (the next tick follows ``t``), and what to stop at."""
+
+    batch: _Batch
+    ahead: _Ahead
+    t: float
+    next: float | None
+    unavailable: list[str]
+    limit: int
+    done: bool = False
 
 
 class CellNode:
@@ -231,17 +252,21 @@ class CellNode:
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
         self._matched: set[str] = set()  # keys some subscriber listens to
+        self._jobs: queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None] | None = None
 
     # -- lifetime ----------------------------------------------------------------------------------
 
     def close(self) -> None:
         """Withdraw the node: its liveliness tokens disappear, its queryables stop answering."""
+        self._cut()
         with self._lock:
             if self._closed:
                 return
             self._closed = True
             if self._ep is not None and self._ep.clock is not None:
                 self._ep.clock.stop.set()
+            if self._jobs is not None:
+                self._jobs.put(None)
         for e in (*self._tokens, *self._entities):
             with contextlib.suppress(
                 Exception
@@ -258,6 +283,7 @@ class CellNode:
     # -- episodes ----------------------------------------------------------------------------------
 
     def _on_reset(self, query: Any) -> None:
+        self._cut()
         with self._guard(query):
             d = loads(_payload(query), "reset request")
             try:
@@ -308,6 +334,7 @@ class CellNode:
                 ).start()
 
     def _on_step(self, query: Any) -> None:
+        self._cut()
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
@@ -338,7 +365,7 @@ class CellNode:
             if n != ep.last_step + 1:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
             commands = self._parse_commands(ep, d.get("commands", []))
-            self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
+            committed = self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
             # the step's commands, in order, before the clock: as the in-process loop calls them
             acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
             status = [a.to_dict() for a in acks if a is not None]
@@ -349,10 +376,18 @@ class CellNode:
                 obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
-            self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
+            stretch = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
+            if stretch is not None:
+                answer["stream"] = True  # the ticks ahead follow as further replies
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
-            self._reply_bytes(query, reply)
+            # the ticks ahead are simulated while the executor takes in this answer (unless
+            # it was lost: a retransmission of the request is answered without them)
+            if self._reply_bytes(query, reply) and stretch is not None:
+                self._streamer().put((query, ep, stretch))
+            elif stretch is not None:
+                stretch.batch.finished.set()
+            self._publish_ticks(ep, committed)  # observers: once the executor has its answer
             if obs is not None:
                 self._publish_world(ep.cell, obs, t, answer["observation"])
 
@@ -470,64 +505,134 @@ class CellNode:
 
     def _look_ahead(
         self, ep: _Episode, n: int, t: float, answer: dict[str, Any], ahead: _Ahead | None
-    ) -> None:
-        """Simulate the ticks the executor will ask for next, until something happens that it
-        may act on (an action ends, an instruction, a robot's availability changes) or
-        ``ahead.count`` ticks; they go in ``answer["ahead"]`` and wait in a batch for the
-        executor to say how many it used. Only cells whose state can be saved and restored
-        (the discrete-event simulator) are run ahead; others are stepped one tick per query."""
-        if ahead is None or ep.batch is not None:
-            return
-        restore = _saver(ep.cell)
-        if restore is None:
-            return
-        batch = _Batch(n, restore, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
-        out: list[dict[str, Any]] = []
+    ) -> _Stretch | None:
+        """Begin simulating the ticks the executor will ask for next, until something happens
+        that it may act on (an action ends, an instruction, a robot's availability changes) or
+        ``ahead.count`` ticks: they wait in a batch for the executor to say how many it used,
+        and are sent as further replies to the request while the executor works (see
+        :meth:`_stream`). Only cells whose state can be saved and restored (the discrete-event
+        simulator, the 3D one) are run ahead; others are stepped one tick per query."""
+        if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
+            return None
+        batch = _Batch(n, None, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
+        ep.batch = batch
+        nxt = answer["next"]
+        limit = min(ahead.count, ep.span)
+        return _Stretch(batch, ahead, t, nxt, answer["unavailable"], limit)
+
+    def _ahead_tick(self, ep: _Episode, s: _Stretch) -> dict[str, Any] | None:
+        """The next tick of a stretch (under the lock), or ``None`` when it has ended. Its
+        reports are numbered on from the batch's, not committed until the executor says so."""
+        b, ahead = s.batch, s.ahead
+        due = math.inf if s.next is None else max(s.t, float(s.next))
+        t_next = min(s.t + ahead.tick, due, ahead.max_time)
+        if s.done or len(b.ticks) >= s.limit or not t_next > s.t:
+            s.done = True
+            return None
+        if b.restore is None:
+            b.restore = _saver(ep.cell)
+            assert b.restore is not None  # (_look_ahead checked the cell can be saved)
+        self._seq = b.seq
         try:
-            nxt, unavailable = answer["next"], answer["unavailable"]
-            while len(out) < min(ahead.count, ep.span):
-                due = math.inf if nxt is None else max(t, float(nxt))
-                t_next = min(t + ahead.tick, due, ahead.max_time)
-                if not t_next > t:
-                    break
-                obs, tick, reports = self._tick(ep, t_next, batch.latest, publish=False)
-                out.append(tick)
-                batch.ticks.append((t_next, obs, reports, tick["observation"]))
-                t, nxt = t_next, tick["next"]
-                if (
-                    _may_act(reports, batch.latest)
-                    or tick["instructions"]
-                    or tick["unavailable"] != unavailable
-                    or t >= ahead.max_time - 1e-9
-                ):
-                    break
+            obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
         except BaseException:
-            restore()
+            # the cell failed mid-tick: back to where the batch's ticks left it, and stop
+            s.done = True
+            b.restore()  # (set above)
+            self._seq, latest = b.seq0, dict(b.latest0)
+            for t, *_ in b.ticks:
+                self._tick(ep, t, latest, publish=False)
+            b.latest = latest
             raise
         finally:
-            # nothing is committed until the executor says so
-            batch.seq, self._seq = self._seq, batch.seq0
-        if out:
-            ep.batch = batch
-            answer["ahead"] = out
-            self.stats.ahead += len(out)
+            b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
+        wire = tick["observation"]
+        if b.ticks:  # the world as it differs from the tick before (the first one in full)
+            tick["observation"] = world_changes(wire, b.ticks[-1][3])
+        b.ticks.append((t_next, obs, reports, wire))
+        self.stats.ahead += 1
+        s.t, s.next = t_next, tick["next"]
+        s.done = (
+            _may_act(reports, b.latest)
+            or bool(tick["instructions"])
+            or tick["unavailable"] != s.unavailable
+            or t_next >= ahead.max_time - 1e-9
+        )
+        return tick
 
-    def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> None:
-        """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest."""
+    def _streamer(self) -> queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None]:
+        """The queue of stretches to simulate and send, served by one thread of the node."""
+        if self._jobs is None:
+            self._jobs = queue.SimpleQueue()
+            threading.Thread(
+                target=self._serve_streams, args=(self._jobs,), name="hltl-node-ahead", daemon=True
+            ).start()
+        return self._jobs
+
+    def _serve_streams(
+        self, jobs: queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None]
+    ) -> None:
+        while (job := jobs.get()) is not None:
+            query, ep, stretch = job
+            try:
+                self._stream(query, ep, stretch)
+            except Exception:  # the session closed under us, or the cell failed: the stretch
+                pass  # ends here, and the executor asks for what it did not get
+            finally:
+                stretch.batch.finished.set()
+                with contextlib.suppress(Exception):
+                    query.drop()  # the request is answered in full
+
+    def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> None:
+        """Simulate a stretch tick by tick and send the ticks as further replies to the request
+        that began it, in chunks of 1, 2, 4, … ticks (the first at once, the rest while the
+        executor takes in the earlier ones), until it ends or a new request or command cuts
+        it (the executor then says how many it used, as for any batch)."""
+        b = s.batch
+        sent, size = 0, 1
+        chunk: list[dict[str, Any]] = []
+        while True:
+            with self._lock:
+                if self._closed or ep.batch is not b or b.cut or self._ep is not ep:
+                    return
+                tick = self._ahead_tick(ep, s)
+            if tick is not None:
+                chunk.append(tick)
+            if chunk and (len(chunk) >= size or s.done):
+                more = not s.done
+                self._reply(
+                    query,
+                    {"episode": ep.id, "step": b.id, "from": sent, "ahead": chunk, "more": more},
+                )
+                sent, size, chunk = sent + len(chunk), 2 * size, []
+            if s.done:
+                return
+
+    def _cut(self) -> None:
+        """A request or command came: the stretch being simulated ahead stops at its next tick
+        (the handler waits for the node's lock at most that long)."""
+        ep = self._ep
+        b = None if ep is None else ep.batch
+        if b is not None:
+            b.cut = True
+
+    def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> list[_Ticked]:
+        """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest. The
+        committed ticks are returned, for observers (:meth:`_publish_ticks`)."""
         b = ep.batch
         if b is None:
-            return
+            return []
         if batch_id != b.id:
             raise BusError(f"look-ahead batch {batch_id!r} is not this node's ({b.id})")
-        self._commit(ep, consumed)
+        return self._commit(ep, consumed)
 
     def _settle_at(self, ep: _Episode, t: float) -> None:
         """A new command at time ``t``: the executor consumed every tick up to ``t``."""
         b = ep.batch
         if b is not None:
-            self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t))
+            self._publish_ticks(ep, self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t)))
 
-    def _commit(self, ep: _Episode, consumed: int) -> None:
+    def _commit(self, ep: _Episode, consumed: int) -> list[_Ticked]:
         b = ep.batch
         assert b is not None
         ep.batch = None
@@ -543,14 +648,18 @@ class CellNode:
         if consumed == len(b.ticks):  # all of it: the cell is already there
             ep.latest, self._seq = b.latest, b.seq
         else:
+            assert b.restore is not None  # saved before the first tick ahead
             b.restore()
             self.stats.undone += len(b.ticks) - consumed
             ep.latest, self._seq = dict(b.latest0), b.seq0
             for t, *_ in b.ticks[:consumed]:  # the same calls again give the same results
                 self._tick(ep, t, ep.latest, publish=False)
-        # the executor has had these ticks' reports in the answer; observers get the outcomes
-        # (every report stays in the state queryable) and the world
-        for t, obs, reports, wire in b.ticks[:consumed]:
+        return b.ticks[:consumed]
+
+    def _publish_ticks(self, ep: _Episode, ticks: list[_Ticked]) -> None:
+        """The executor has had these ticks' reports in the answer; observers get the outcomes
+        (every report stays in the state queryable) and the world."""
+        for t, obs, reports, wire in ticks:
             for rep in reports:
                 if rep.status.terminal:
                     self._publish(ep, rep)
@@ -591,6 +700,7 @@ class CellNode:
         except BusError:
             self.stats.malformed += 1
             return
+        self._cut()
         with self._lock:
             self.stats.commands += 1
             ep = self._ep
@@ -794,10 +904,12 @@ class CellNode:
     def _reply(self, query: Any, data: dict[str, Any], key: str | None = None) -> None:
         self._reply_bytes(query, dumps(data), key)
 
-    def _reply_bytes(self, query: Any, payload: bytes, key: str | None = None) -> None:
+    def _reply_bytes(self, query: Any, payload: bytes, key: str | None = None) -> bool:
+        """Answer ``query``; ``False`` when the answer was lost (an injected fault)."""
         if self.link.reply_lost():
-            return
+            return False
         query.reply(key or str(query.key_expr), payload)
+        return True
 
 
 # What look-ahead keeps as it is in the 3D simulator: the posed MuJoCo model (``stage``: its
@@ -817,13 +929,10 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
     holds nothing but the pose of the rest, so advancing the restored simulator to its own
     time poses it again.
     """
-    shared: frozenset[str]
-    if type(cell) is Simulator:
-        shared = frozenset()
-    elif type(cell) is MujocoSimulator and not cell.on_pose:
-        shared = _MUJOCO_SHARED
-    else:
+    shared = _kept(cell)
+    if shared is None:
         return None
+    assert isinstance(cell, Simulator)
     sim: Simulator = cell
     kept: dict[str, Any] = {}
     rngs: dict[str, tuple[random.Random, Any]] = {}
@@ -854,6 +963,15 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
+
+
+def _kept(cell: Cell) -> frozenset[str] | None:
+    """What :func:`_saver` keeps as it is in ``cell``, or ``None`` when it cannot save it."""
+    if type(cell) is Simulator:
+        return frozenset()
+    if type(cell) is MujocoSimulator and not cell.on_pose:
+        return _MUJOCO_SHARED
+    return None
 
 
 def _may_act(reports: list[Report], latest: dict[int, Report]) -> bool:
