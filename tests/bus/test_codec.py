@@ -91,6 +91,15 @@ def test_a_tick_ahead_carries_only_what_changed(before: WorldState, w: WorldStat
             world_from_wire(wire)
 
 
+def test_a_tick_ahead_leaves_out_its_reports_episode_and_empty_reason() -> None:
+    rep = Report("ep", 9, 3, ActionStatus(ActionState.RUNNING, 0.25, 1.0 / 3.0))
+    compact = {k: v for k, v in rep.to_dict().items() if k not in ("episode", "reason")}
+    assert Report.from_dict(compact, "ep") == rep
+    assert Report.from_dict(rep.to_dict(), "other") == rep  # its own episode wins
+    with pytest.raises(BusError, match="malformed action report"):
+        Report.from_dict(compact)  # an episode is needed from somewhere
+
+
 def test_commands_and_reports_round_trip() -> None:
     a = Action("handover_r2r", ("r2", "r1"), "chips")
     cmd = Command("ep", 7, "start", 3, a, 0.1 + 0.2, "")

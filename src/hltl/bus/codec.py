@@ -117,12 +117,14 @@ class Report:
         return dumps(self.to_dict())
 
     @classmethod
-    def from_dict(cls, d: Mapping[str, Any]) -> Report:
+    def from_dict(cls, d: Mapping[str, Any], episode: str | None = None) -> Report:
+        """A report from its JSON form; one that leaves out its episode (a tick ahead: it is
+        the request's) and an empty reason is of ``episode``."""
         try:
-            status = ActionStatus(
-                ActionState(d["state"]), float(d["progress"]), float(d["t"]), str(d["reason"])
-            )
-            return cls(str(d["episode"]), int(d["seq"]), int(d["handle"]), status)
+            state, reason = ActionState(d["state"]), str(d.get("reason", ""))
+            status = ActionStatus(state, float(d["progress"]), float(d["t"]), reason)
+            ep = d["episode"] if episode is None or "episode" in d else episode
+            return cls(str(ep), int(d["seq"]), int(d["handle"]), status)
         except (KeyError, TypeError, ValueError) as exc:
             raise BusError(f"malformed action report on the bus: {exc}") from None
 

@@ -417,11 +417,12 @@ class BusCell:
         if "observation" in d:  # (a tick ahead: what changed since the one before)
             self._obs = world_from_wire(d["observation"], like=self._obs)
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
-        reports = [Report.from_dict(item) for item in d.get("status", ())]
-        with self._cond:
-            for rep in reports:
-                if rep.episode == self.episode:
-                    self._accept(rep)
+        reports = [Report.from_dict(item, self.episode) for item in d.get("status", ())]
+        if reports:
+            with self._cond:
+                for rep in reports:
+                    if rep.episode == self.episode:
+                        self._accept(rep)
         self._clock(d)
 
     def _clock(self, d: dict[str, Any]) -> None:

@@ -227,6 +227,7 @@ class CellNode:
         self.period = period
         self.session = session
         self.scene = scene
+        self._scene_wire = loads(dumps(scene.to_dict()), "scene")
         self.keys = Keys(cell)
         self.factory = factory
         self.faults = FaultModel() if faults is None else faults
@@ -287,7 +288,9 @@ class CellNode:
         with self._guard(query):
             d = loads(_payload(query), "reset request")
             try:
-                scene = scene_from_dict(d["scene"])
+                # (the scene this node serves, as it travels, needs no parsing again)
+                wire = d["scene"]
+                scene = self.scene if wire == self._scene_wire else scene_from_dict(wire)
                 events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
                 perception = PerceptionModel(**d["perception"])
                 episode, seed = str(d["episode"]), int(d["seed"])
@@ -547,18 +550,18 @@ class CellNode:
         finally:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
         wire = tick["observation"]
-        if b.ticks:  # the world as it differs from the tick before (the first one in full)
-            tick["observation"] = world_changes(wire, b.ticks[-1][3])
-        b.ticks.append((t_next, obs, reports, wire))
-        self.stats.ahead += 1
-        s.t, s.next = t_next, tick["next"]
         s.done = (
             _may_act(reports, b.latest)
             or bool(tick["instructions"])
             or tick["unavailable"] != s.unavailable
             or t_next >= ahead.max_time - 1e-9
         )
-        return tick
+        if b.ticks:  # the world as it differs from the tick before (the first one in full)
+            tick["observation"] = world_changes(wire, b.ticks[-1][3])
+        b.ticks.append((t_next, obs, reports, wire))
+        self.stats.ahead += 1
+        s.t, s.next = t_next, tick["next"]
+        return _compact(tick)
 
     def _streamer(self) -> queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None]:
         """The queue of stretches to simulate and send, served by one thread of the node."""
@@ -963,6 +966,23 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
+
+
+# what a tick ahead leaves out when empty (or false): the executor reads their absence so
+_QUIET = ("instructions", "status", "records", "unavailable", "pending")
+
+
+def _compact(tick: dict[str, Any]) -> dict[str, Any]:
+    """A tick ahead as it travels: no empty lists, and its reports without their episode (the
+    request's) and empty reasons (see ``Report.from_dict``)."""
+    for k in _QUIET:
+        if not tick[k]:
+            del tick[k]
+    for item in tick.get("status", ()):
+        del item["episode"]
+        if not item["reason"]:
+            del item["reason"]
+    return tick
 
 
 def _kept(cell: Cell) -> frozenset[str] | None:
