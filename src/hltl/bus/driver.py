@@ -92,6 +92,7 @@ class DriverStats:
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
     streamed: int = 0  # ticks ahead received as further replies to a step request
+    waited: float = 0.0  # wall seconds waiting for the node: answers, and ticks not yet sent
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -352,9 +353,11 @@ class BusCell:
                 )
             except Exception as exc:  # the session closed under us
                 raise BusError(f"the bus failed while asking {key}: {exc}") from None
-            answered = False
+            answered, w0 = False, t0
             for reply in replies:
-                answered = True
+                answered, now = True, time.perf_counter()
+                self.stats.waited += now - w0
+                w0 = now
                 if reply.ok is not None:
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     if keep:
@@ -385,10 +388,13 @@ class BusCell:
         them while this side takes in the earlier ones). A missing or out-of-order reply, or
         the request's end, ends the stream: the next tick is then asked for."""
         stream, self._stream = self._stream, None
+        t0 = time.perf_counter()
         try:
             reply = stream.recv()
         except Exception:  # the request is over: no more replies
             return
+        finally:
+            self.stats.waited += time.perf_counter() - t0
         if reply.ok is None:  # it timed out
             return
         try:
