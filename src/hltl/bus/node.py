@@ -610,6 +610,10 @@ class CellNode:
                 sent, size, chunk = sent + len(chunk), 2 * size, []
             if s.done:
                 return
+            # let a thread waiting for the interpreter take it now, not after the switch
+            # interval (5 ms): the session's thread with a new request (which cuts the stretch),
+            # or an executor in this process taking in the ticks
+            time.sleep(0)
 
     def _cut(self) -> None:
         """A request or command came: the stretch being simulated ahead stops at its next tick
