@@ -43,16 +43,6 @@ class Loopback:
         self.endpoint = endpoint
         self._node_session = open_session(BusConfig(listen=(endpoint,)))
         self._exec_session = open_session(BusConfig(connect=(endpoint,)))
-        self.node: CellNode | None = None  # the node of the episode running
-
-    def node_ran_ahead(self, _: LogRecord | None = None) -> None:
-        """Wait (bounded) until the node has simulated all of the stretch it runs ahead of the
-        executor: an ``on_record`` hook that makes a command come after the whole stretch, so
-        that what is undone does not depend on how fast the two sides run."""
-        ep = None if self.node is None else self.node._ep
-        batch = None if ep is None else ep.batch
-        if batch is not None:
-            batch.finished.wait(10.0)
 
     def run(
         self,
@@ -74,7 +64,6 @@ class Loopback:
         served = {} if factory is None else {"factory": factory}
         make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
         with CellNode(self._node_session, scene, cell=cell, faults=node_faults, **served) as node:
-            self.node = node
             ep = run_episode(
                 scene,
                 simulator=make(
@@ -91,7 +80,6 @@ class Loopback:
             (bc,) = opened
             bc.end()
             bc.close()
-        self.node = None
         return BusRun(ep, node, bc)
 
     def kill_node_session(self) -> None:

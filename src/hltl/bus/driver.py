@@ -91,8 +91,7 @@ class DriverStats:
     recoveries: int = 0
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
-    streamed: int = 0  # ticks ahead received as further replies to a step request
-    waited: float = 0.0  # wall seconds waiting for the node: answers, and ticks not yet sent
+    waited: float = 0.0  # wall seconds waiting for the node's answers
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -174,8 +173,6 @@ class BusCell:
         # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
         self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time}
         self._ahead: list[dict[str, Any]] = []
-        self._stream: Any = None  # the request whose further replies bring more ticks ahead
-        self._got = 0  # ticks of the current batch received so far
         self._batch = 0
         self._consumed = 0
         self.now = 0.0
@@ -323,11 +320,9 @@ class BusCell:
         data: dict[str, Any],
         retries: int | None = None,
         robots: Sequence[str] = (),
-        keep: bool = False,
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
         (A query carrying commands is subject to the executor's message faults, like one.)
-        With ``keep``, the query's further replies are left in ``self._stream``.
 
         Raises:
             BusError: the node answered with an error (it refuses the request).
@@ -360,8 +355,6 @@ class BusCell:
                 w0 = now
                 if reply.ok is not None:
                     self.stats.round_trips.append(time.perf_counter() - t0)
-                    if keep:
-                        self._stream = replies
                     return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
                 refusal = _refusal(reply.err.payload.to_bytes())
                 if refusal is not None:
@@ -377,43 +370,8 @@ class BusCell:
         """Take in a reset, step or peek answer, and the ticks simulated after it."""
         self._absorb(d)
         self._ahead = list(d.get("ahead", ()))
-        self._got = len(self._ahead)
         self._batch = int(d.get("step", 0))
         self._consumed = 0
-        if not d.get("stream"):
-            self._stream = None
-
-    def _pull(self) -> None:
-        """More ticks ahead: the next reply the node streams after its answer (it simulates
-        them while this side takes in the earlier ones). A missing or out-of-order reply, or
-        the request's end, ends the stream: the next tick is then asked for."""
-        stream, self._stream = self._stream, None
-        t0 = time.perf_counter()
-        try:
-            reply = stream.recv()
-        except Exception:  # the request is over: no more replies
-            return
-        finally:
-            self.stats.waited += time.perf_counter() - t0
-        if reply.ok is None:  # it timed out
-            return
-        try:
-            d = loads(reply.ok.payload.to_bytes(), "ticks ahead")
-            ticks = list(d["ahead"])
-            fits = (d["episode"], d["step"], d["from"]) == (self.episode, self._batch, self._got)
-        except (BusError, KeyError, TypeError):
-            return
-        if fits:
-            self._ahead.extend(ticks)
-            self._got += len(ticks)
-            self.stats.streamed += len(ticks)
-            if d.get("more"):
-                self._stream = stream
-
-    def _cut(self) -> None:
-        """A command: the ticks simulated without it are not used (the node undoes them)."""
-        self._ahead = []
-        self._stream = None
 
     def _absorb(self, d: dict[str, Any]) -> None:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
@@ -519,8 +477,6 @@ class BusCell:
     def _follow(self, t: float) -> None:
         """Bring what the executor knows of the cell to time ``t``: here the node steps to it
         (or already did, ahead of the loop) and every report up to then is in."""
-        if not self._ahead and not self._dirty and self._stream is not None:
-            self._pull()
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -552,7 +508,7 @@ class BusCell:
         if self._queued:
             req["commands"] = [c.to_dict() for c in self._queued]
             self.stats.commands += len(self._queued)
-        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids, keep=True)
+        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids)
         if d is not None:
             self._step += 1
             self._queued = []
@@ -635,7 +591,7 @@ class BusCell:
                         (self.keys.trajectory(traj.robot), encode_trajectory(traj, t), meta)
                     )
         self._dirty = True
-        self._cut()  # simulated without this command: the node undoes them
+        self._ahead = []  # simulated without this command: the node undoes them
         if not sends and self._defer:
             self._queue("start", handle, t)
             return handle
@@ -677,7 +633,7 @@ class BusCell:
         if self._status_terminal(handle.id):
             return
         self._dirty = True
-        self._cut()
+        self._ahead = []
         if self._defer:
             self._queue("halt", handle, t, reason)
             return

@@ -5,7 +5,6 @@ from __future__ import annotations
 import contextlib
 import math
 import pickle
-import queue
 import random
 import threading
 import time
@@ -179,8 +178,6 @@ class _Batch:
     ticks: list[_Ticked]
     latest: dict[int, Report]
     seq: int
-    cut: bool = False  # a request or command came: stop simulating ahead
-    finished: threading.Event = field(default_factory=threading.Event)  # no more ticks ahead
 
 
 @dataclass(slots=True)
@@ -253,21 +250,17 @@ class CellNode:
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
         self._matched: set[str] = set()  # keys some subscriber listens to
-        self._jobs: queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None] | None = None
 
     # -- lifetime ----------------------------------------------------------------------------------
 
     def close(self) -> None:
         """Withdraw the node: its liveliness tokens disappear, its queryables stop answering."""
-        self._cut()
         with self._lock:
             if self._closed:
                 return
             self._closed = True
             if self._ep is not None and self._ep.clock is not None:
                 self._ep.clock.stop.set()
-            if self._jobs is not None:
-                self._jobs.put(None)
         for e in (*self._tokens, *self._entities):
             with contextlib.suppress(
                 Exception
@@ -284,7 +277,6 @@ class CellNode:
     # -- episodes ----------------------------------------------------------------------------------
 
     def _on_reset(self, query: Any) -> None:
-        self._cut()
         with self._guard(query):
             d = loads(_payload(query), "reset request")
             try:
@@ -337,7 +329,6 @@ class CellNode:
                 ).start()
 
     def _on_step(self, query: Any) -> None:
-        self._cut()
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
@@ -379,17 +370,10 @@ class CellNode:
                 obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
-            stretch = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
-            if stretch is not None:
-                answer["stream"] = True  # the ticks ahead follow as further replies
+            self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
-            # the ticks ahead are simulated while the executor takes in this answer (unless
-            # it was lost: a retransmission of the request is answered without them)
-            if self._reply_bytes(query, reply) and stretch is not None:
-                self._streamer().put((query, ep, stretch))
-            elif stretch is not None:
-                stretch.batch.finished.set()
+            self._reply_bytes(query, reply)
             self._publish_ticks(ep, committed)  # observers: once the executor has its answer
             if obs is not None:
                 self._publish_world(ep.cell, obs, t, answer["observation"])
@@ -508,24 +492,30 @@ class CellNode:
 
     def _look_ahead(
         self, ep: _Episode, n: int, t: float, answer: dict[str, Any], ahead: _Ahead | None
-    ) -> _Stretch | None:
-        """Begin simulating the ticks the executor will ask for next, until something happens
-        that it may act on (an action ends, an instruction, a robot's availability changes) or
-        ``ahead.count`` ticks: they wait in a batch for the executor to say how many it used,
-        and are sent as further replies to the request while the executor works (see
-        :meth:`_stream`). Only cells whose state can be saved and restored (the discrete-event
-        simulator, the 3D one) are run ahead; others are stepped one tick per query."""
+    ) -> None:
+        """Simulate the ticks the executor will ask for next, until something happens that it
+        may act on (an action ends, an instruction, a robot's availability changes) or
+        ``ahead.count`` ticks; they go in ``answer["ahead"]`` (compact: :func:`_compact`) and
+        wait in a batch for the executor to say how many it used. Only cells whose state can
+        be saved and restored (the discrete-event simulator, the 3D one) are run ahead; others
+        are stepped one tick per query."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
-            return None
+            return
         batch = _Batch(n, None, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
-        ep.batch = batch
-        nxt = answer["next"]
-        limit = min(ahead.count, ep.span)
-        return _Stretch(batch, ahead, t, nxt, answer["unavailable"], limit)
+        s = _Stretch(
+            batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
+        )
+        out = []
+        while (tick := self._ahead_tick(ep, s)) is not None:
+            out.append(tick)
+        if out:
+            ep.batch = batch
+            answer["ahead"] = out
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> dict[str, Any] | None:
-        """The next tick of a stretch (under the lock), or ``None`` when it has ended. Its
-        reports are numbered on from the batch's, not committed until the executor says so."""
+        """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
+        on from the batch's, not committed until the executor says so. The simulator is saved
+        before the first one."""
         b, ahead = s.batch, s.ahead
         due = math.inf if s.next is None else max(s.t, float(s.next))
         t_next = min(s.t + ahead.tick, due, ahead.max_time)
@@ -538,14 +528,8 @@ class CellNode:
         self._seq = b.seq
         try:
             obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
-        except BaseException:
-            # the cell failed mid-tick: back to where the batch's ticks left it, and stop
-            s.done = True
+        except BaseException:  # the cell failed: back to before the stretch, none of it kept
             b.restore()  # (set above)
-            self._seq, latest = b.seq0, dict(b.latest0)
-            for t, *_ in b.ticks:
-                self._tick(ep, t, latest, publish=False)
-            b.latest = latest
             raise
         finally:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
@@ -562,66 +546,6 @@ class CellNode:
         self.stats.ahead += 1
         s.t, s.next = t_next, tick["next"]
         return _compact(tick)
-
-    def _streamer(self) -> queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None]:
-        """The queue of stretches to simulate and send, served by one thread of the node."""
-        if self._jobs is None:
-            self._jobs = queue.SimpleQueue()
-            threading.Thread(
-                target=self._serve_streams, args=(self._jobs,), name="hltl-node-ahead", daemon=True
-            ).start()
-        return self._jobs
-
-    def _serve_streams(
-        self, jobs: queue.SimpleQueue[tuple[Any, _Episode, _Stretch] | None]
-    ) -> None:
-        while (job := jobs.get()) is not None:
-            query, ep, stretch = job
-            try:
-                self._stream(query, ep, stretch)
-            except Exception:  # the session closed under us, or the cell failed: the stretch
-                pass  # ends here, and the executor asks for what it did not get
-            finally:
-                stretch.batch.finished.set()
-                with contextlib.suppress(Exception):
-                    query.drop()  # the request is answered in full
-
-    def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> None:
-        """Simulate a stretch tick by tick and send the ticks as further replies to the request
-        that began it, in chunks of 1, 2, 4, … ticks (the first at once, the rest while the
-        executor takes in the earlier ones), until it ends or a new request or command cuts
-        it (the executor then says how many it used, as for any batch)."""
-        b = s.batch
-        sent, size = 0, 1
-        chunk: list[dict[str, Any]] = []
-        while True:
-            with self._lock:
-                if self._closed or ep.batch is not b or b.cut or self._ep is not ep:
-                    return
-                tick = self._ahead_tick(ep, s)
-            if tick is not None:
-                chunk.append(tick)
-            if chunk and (len(chunk) >= size or s.done):
-                more = not s.done
-                self._reply(
-                    query,
-                    {"episode": ep.id, "step": b.id, "from": sent, "ahead": chunk, "more": more},
-                )
-                sent, size, chunk = sent + len(chunk), 2 * size, []
-            if s.done:
-                return
-            # let a thread waiting for the interpreter take it now, not after the switch
-            # interval (5 ms): the session's thread with a new request (which cuts the stretch),
-            # or an executor in this process taking in the ticks
-            time.sleep(0)
-
-    def _cut(self) -> None:
-        """A request or command came: the stretch being simulated ahead stops at its next tick
-        (the handler waits for the node's lock at most that long)."""
-        ep = self._ep
-        b = None if ep is None else ep.batch
-        if b is not None:
-            b.cut = True
 
     def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> list[_Ticked]:
         """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest. The
@@ -707,7 +631,6 @@ class CellNode:
         except BusError:
             self.stats.malformed += 1
             return
-        self._cut()
         with self._lock:
             self.stats.commands += 1
             ep = self._ep
