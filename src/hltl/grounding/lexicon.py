@@ -715,12 +715,14 @@ class Lexicon:
 
     @staticmethod
     def of(scene: Scene) -> Lexicon:
-        """The lexicon of ``scene``, shared by scenes with the same names (it is read-only, and
-        building it is most of a grounding's time)."""
+        """The lexicon of ``scene``, shared by scenes with the same names and positions (it is
+        read-only, and building it is most of a grounding's time). Positions are part of the
+        key: descriptions ("the mug nearest to Carol") are measured in ``lexicon.scene``, and
+        two layouts with the same names (4-4-square, 4-4-line) must not share one."""
         key = (
-            tuple((o.id, o.category, tuple(o.aliases)) for o in scene.objects),
-            tuple((h.id, h.name, tuple(h.aliases)) for h in scene.humans),
-            tuple((s.id, tuple(s.aliases)) for s in scene.surfaces),
+            tuple((o.id, o.category, tuple(o.aliases), o.position) for o in scene.objects),
+            tuple((h.id, h.name, tuple(h.aliases), h.position) for h in scene.humans),
+            tuple((s.id, tuple(s.aliases), s.center, s.size) for s in scene.surfaces),
             tuple(r.id for r in scene.robots),
         )
         return _lexicon(key, scene)

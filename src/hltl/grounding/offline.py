@@ -317,6 +317,7 @@ class _Parser:
                 continue
             current.append(it)
         segments.append((conn, current))
+        extra = self._added_after_steps(segments, items)
         result: _Raw | None = None
         for conn, seg in segments:
             seg = _strip_separators(seg)
@@ -362,7 +363,56 @@ class _Parser:
             else:  # then, before
                 result = _RawGroup("seq", [result, node])
         assert result is not None
+        if extra:
+            self._segment += 1
+            result = _RawGroup("and", [result, self.coord(extra)])
         return result
+
+    def _added_after_steps(
+        self, segments: list[tuple[str, list[Item]]], items: list[Item]
+    ) -> list[Item]:
+        """'First X, then Y, and also Z': a clause added with ', (and) also' after the last step
+        of a sequence adds to the whole request, not to that step (Z is not ordered after X).
+
+        Cuts Z off the last segment and returns it (empty when there is none). Z must open a
+        clause (a verb, a subject, or a person before the objects); objects alone after ', also'
+        ("then give B the chips, and also the cup") could be B's in that step or a new task, and
+        an added clause before a later step could belong to either: both are refused.
+        """
+        for n, (conn, seg) in enumerate(segments):
+            if n == 0 or conn != "then":
+                continue
+            cut = next(
+                (
+                    k
+                    for k in range(1, len(seg))
+                    if _is(seg[k - 1], ",")
+                    and _is(seg[k], "and", "also")
+                    and "also" in seg[k].text.lower().split()
+                ),
+                None,
+            )
+            if cut is None:
+                continue
+            added = _strip_separators(seg[cut:])
+            head = [it for it in added if not _is(it, *_SKIP, "det")]
+            opens = bool(head) and (
+                _is_verb(head[0])
+                or (
+                    len(head) > 1
+                    and head[0].kind == "ent"
+                    and all(r.kind == "human" for r in head[0].refs)
+                    and (_is_verb(head[1]) or head[1].kind == "ent")
+                )
+            )
+            if not opens or n != len(segments) - 1:
+                raise GroundingError(
+                    f"in {_text(items)!r}, {_text(added)!r} could belong to the step before it or "
+                    "to the whole request: say it in its own sentence ('… . Also …')"
+                )
+            segments[n] = (conn, seg[: cut - 1])
+            return added
+        return []
 
     # -- coordination ---------------------------------------------------------------------------
     def coord(self, items: list[Item]) -> _Raw:
@@ -667,6 +717,12 @@ class _Parser:
                 return
             if np.quant != "all" and len(ids) > 1 and not all(r.plural for r in np.refs):
                 raise ambiguous(np, self.lex)
+            if not np.quant and len(ids) == 1 and all(r.plural for r in np.refs):
+                # "give Alice the cups" with one cup: a plural asks for more than the scene has
+                raise GroundingError(
+                    f"{np.text!r} in {frag.text!r}: the scene has only one ({ids[0]}); say "
+                    f"'the {ids[0]}'; {self.lex.listing('object')}"
+                )
             frag.objects = ids
             return
         if np.kind == "ent":
