@@ -717,8 +717,10 @@ class _Parser:
                 return
             if np.quant != "all" and len(ids) > 1 and not all(r.plural for r in np.refs):
                 raise ambiguous(np, self.lex)
-            if not np.quant and len(ids) == 1 and all(r.plural for r in np.refs):
+            typed = self.lex.lookup(np.text) if not np.quant and len(ids) == 1 else None
+            if typed is not None and len({r.id for r in typed}) == 1 and typed[0].plural:
                 # "give Alice the cups" with one cup: a plural asks for more than the scene has
+                # (a plural narrowed to one by a description, "the mugs that aren't red", is not)
                 raise GroundingError(
                     f"{np.text!r} in {frag.text!r}: the scene has only one ({ids[0]}); say "
                     f"'the {ids[0]}'; {self.lex.listing('object')}"
