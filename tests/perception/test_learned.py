@@ -20,6 +20,7 @@ from hltl.perception.learned import (
     SHIPPED,
     SIZES,
     LearnedBackend,
+    PixelProbabilities,
     downsample_labels,
     load_segmenter,
     train,
@@ -146,15 +147,15 @@ def _standing(category: str, plane: float, seen: float, rng: np.random.Generator
     return np.concatenate([side, top])
 
 
-def _network(truth: int, share: float, split: float) -> np.ndarray:
-    """A 4×4 probability map over the classes giving the true red category ``share``, the
-    other two the rest in the ratio ``split``."""
+def _network(truth: int, share: float, split: float) -> PixelProbabilities:
+    """A 4×4 (half-resolution) probability map over the classes giving the true red category
+    ``share``, the other two the rest in the ratio ``split``."""
     prob = np.zeros((len(CLASSES), 4, 4), np.float32)
     others = [c for c in CONFUSED if CONFUSED.index(c) != truth]
     prob[CLASSES.index(CONFUSED[truth])] = share
     prob[CLASSES.index(others[0])] = (1 - share) * split
     prob[CLASSES.index(others[1])] = (1 - share) * (1 - split)
-    return prob
+    return PixelProbabilities(prob)
 
 
 @settings(max_examples=40, deadline=None)
@@ -230,3 +231,53 @@ def test_apple_can_and_mug_on_one_table_are_told_apart() -> None:
     for oid, o in found.items():
         assert o.label == oid
         assert math.dist(o.position, truth[oid]) < 0.03, oid
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    h=st.integers(2, 9),
+    w=st.integers(2, 9),
+    box=st.tuples(st.integers(0, 8), st.integers(0, 8), st.integers(0, 8), st.integers(0, 8)),
+    seed=st.integers(0, 2**16),
+)
+def test_pixel_probabilities_take_the_zoomed_pass_where_it_is_far(
+    h: int, w: int, box: tuple[int, int, int, int], seed: int
+) -> None:
+    # oracle: the full-resolution map written out pixel by pixel
+    rng = np.random.default_rng(seed)
+    half = rng.dirichlet(np.ones(len(CLASSES)), size=(h // 2, w // 2)).transpose(2, 0, 1)
+    v0, v1 = sorted((min(box[0], h), min(box[1], h)))
+    u0, u1 = sorted((min(box[2], w), min(box[3], w)))
+    zoom = rng.dirichlet(np.ones(len(CLASSES)), size=(v1 - v0, u1 - u0)).transpose(2, 0, 1)
+    far = rng.random((v1 - v0, u1 - u0)) < 0.5
+    prob = PixelProbabilities(
+        half.astype(np.float32), (v0, v1, u0, u1), zoom.astype(np.float32), far
+    )
+    want = np.zeros((len(CLASSES), h, w))
+    want[0] = 1.0
+    for v in range(h):
+        for u in range(w):
+            if v0 <= v < v1 and u0 <= u < u1 and far[v - v0, u - u0]:
+                want[:, v, u] = zoom[:, v - v0, u - u0]
+            elif v < 2 * (h // 2) and u < 2 * (w // 2):
+                want[:, v, u] = half[:, v // 2, u // 2]
+    red = [CLASSES.index(c) for c in CONFUSED]
+    merged = want.copy()
+    merged[red[0]] = want[red].sum(axis=0)
+    merged[red[1:]] = 0.0
+    cls, conf = prob.labels((h, w))
+    assert (cls == merged.argmax(axis=0)).all()
+    assert conf == pytest.approx(merged.max(axis=0), abs=1e-5)
+    mask = rng.random((h, w)) < 0.5
+    inside = mask & ~((np.arange(h)[:, None] >= 2 * (h // 2)) | (np.arange(w) >= 2 * (w // 2)))
+    inside |= mask & _far_mask(h, w, (v0, v1, u0, u1), far)
+    if inside.any():
+        k = int(rng.integers(len(CLASSES)))
+        assert prob.mean(k, inside) == pytest.approx(float(want[k][inside].mean()), abs=1e-5)
+
+
+def _far_mask(h: int, w: int, box: tuple[int, int, int, int], far: np.ndarray) -> np.ndarray:
+    out = np.zeros((h, w), dtype=bool)
+    v0, v1, u0, u1 = box
+    out[v0:v1, u0:u1] = far
+    return out

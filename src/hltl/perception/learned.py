@@ -57,6 +57,9 @@ LOOSE: dict[str, tuple[float, float]] = {c: (0.15, 0.3) for c in ("box", "book")
 # the room is ~1-3 % of them (the default cameras of the 1-, 2- and 4-arm cells; at 4 % no
 # table was found there and nothing on it counted as standing)
 PLANE_SHARE = 0.01
+# beyond this range (m) the network also looks at full resolution (LearnedBackend._probabilities)
+FAR = 2.5
+ZOOM_PAD = 16  # pixels of context around the far band
 HEIGHT_SIGMA = 0.006  # spread of a measured height about the true one when the top is seen (m)
 HIDDEN_TOP = 0.01  # chance that a shorter measured height is a taller object with its top hidden
 
@@ -94,6 +97,18 @@ def inputs(frame: Frame, camera: Camera, height: F64 | None = None) -> F32:
     out[3] = np.clip(depth, 0.0, 8.0) / 4.0 - 0.5
     out[4] = np.clip(z, -1.0, 2.5)
     out[5] = valid
+    return out
+
+
+def zoomed_inputs(rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32], z: F64) -> F32:
+    """The network's input at full resolution with the depth halved: what a camera at half the
+    distance would see at half resolution (colour of each pixel, its depth / 2, its world
+    height — heights do not change with the distance)."""
+    out = np.empty((CHANNELS, *depth.shape), np.float32)
+    out[:3] = rgb.astype(np.float32).transpose(2, 0, 1) / 255.0 - 0.5
+    out[3] = np.clip(depth.astype(np.float32) / 2.0, 0.0, 8.0) / 4.0 - 0.5
+    out[4] = np.clip(z, -1.0, 2.5)
+    out[5] = depth > 0
     return out
 
 
@@ -180,6 +195,59 @@ def _shared(path: Path) -> SegmenterModel:
     return _MODELS[path]
 
 
+@dataclass(frozen=True, slots=True)
+class PixelProbabilities:
+    """Class probabilities over a frame: ``half`` (classes × H/2 × W/2, each value covering its
+    2×2 block) and, where ``box`` (v0, v1, u0, u1) says, ``zoom`` (classes × the box, full
+    resolution) for the box's pixels ``far`` marks."""
+
+    half: F32
+    box: tuple[int, int, int, int] | None = None
+    zoom: F32 | None = None
+    far: Mask | None = None
+
+    def _merged(self, p: F32) -> tuple[npt.NDArray[np.int64], F32]:
+        """Class and confidence of each pixel of ``p``, the confused categories counted as one
+        class (their summed probability decides; the class is the first of them)."""
+        group = [CLASSES.index(c) for c in CONFUSED]
+        merged = p.copy()
+        merged[group[0]] = p[group].sum(axis=0)
+        merged[group[1:]] = 0.0
+        return merged.argmax(axis=0), merged.max(axis=0)
+
+    def labels(self, shape: tuple[int, ...]) -> tuple[npt.NDArray[np.int64], F32]:
+        """(class, confidence) of every pixel of a frame of ``shape``; a last odd row or column
+        the half-resolution pass did not cover is background."""
+        cls, conf = self._merged(self.half)
+        full = np.zeros(shape[:2], dtype=np.int64)
+        fconf = np.zeros(shape[:2], dtype=np.float32)
+        h2, w2 = cls.shape
+        full[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
+        fconf[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
+        if self.box is not None and self.zoom is not None and self.far is not None:
+            v0, v1, u0, u1 = self.box
+            zc, zf = self._merged(self.zoom)
+            full[v0:v1, u0:u1] = np.where(self.far, zc, full[v0:v1, u0:u1])
+            fconf[v0:v1, u0:u1] = np.where(self.far, zf, fconf[v0:v1, u0:u1])
+        return full, fconf
+
+    def mean(self, k: int, mask: Mask) -> float:
+        """Mean probability of class ``k`` over the pixels of ``mask``."""
+        v, u = np.nonzero(mask)
+        if len(v) == 0:
+            return 0.0
+        vals = self.half[k][
+            np.minimum(v // 2, self.half.shape[1] - 1), np.minimum(u // 2, self.half.shape[2] - 1)
+        ]
+        if self.box is not None and self.zoom is not None and self.far is not None:
+            v0, v1, u0, u1 = self.box
+            inside = (v >= v0) & (v < v1) & (u >= u0) & (u < u1)
+            vi, ui = v[inside] - v0, u[inside] - u0
+            far = self.far[vi, ui]
+            vals[np.flatnonzero(inside)[far]] = self.zoom[k][vi[far], ui[far]]
+        return float(vals.mean())
+
+
 class LearnedBackend(DepthBackend):
     """Objects (and people) from the trained segmenter; labels are categories."""
 
@@ -197,21 +265,10 @@ class LearnedBackend(DepthBackend):
         depth = frame.depth
         view = self.view(depth, camera)
         valid, pts, z = view.valid, view.points, view.z
-        prob = self.model.probabilities(inputs(frame, camera, z))
-        # the confused categories count as one class: their summed probability decides a pixel
-        group = [CLASSES.index(c) for c in CONFUSED]
-        merged = prob.copy()
-        merged[group[0]] = prob[group].sum(axis=0)
-        merged[group[1:]] = 0.0
-        cls = merged.argmax(axis=0)
-        conf = merged.max(axis=0)
-        h, w = frame.depth.shape
-        # back to full resolution (each half-resolution label covers its 2×2 block)
-        full = np.zeros((h, w), dtype=np.int64)
-        full[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
-        fconf = np.zeros((h, w), dtype=np.float32)
-        fconf[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
         self.planes = support_planes(z[valid][::16], share=PLANE_SHARE)
+        prob = self.probabilities(frame, camera, z)
+        full, fconf = prob.labels(depth.shape)
+        group = [CLASSES.index(c) for c in CONFUSED]
         keep = valid & (full > 0) & (fconf >= MIN_CONFIDENCE)
         for p in self.planes:  # a table's pixels at an object's foot are not the object
             keep &= np.abs(z - p) > 0.01
@@ -237,6 +294,43 @@ class LearnedBackend(DepthBackend):
                 score = float(fconf[mask].mean())
                 out.append(Detection("object", label, mask, score, box_of(mask)))
         return out
+
+    def probabilities(self, frame: Frame, camera: Camera, z: F64) -> PixelProbabilities:
+        """The network's class probabilities for ``frame``: on the half-resolution frame, and
+        again at full resolution with the depth halved — the view of a camera at half the
+        distance — over the box of the far pixels (:data:`FAR` and beyond) in the band where
+        objects stand on the support planes: a cup 4 m away is a handful of half-resolution
+        pixels, too few for the network (docs/perception.md)."""
+        half = self.model.probabilities(inputs(frame, camera, z))
+        box = self._far_box(frame.depth, z)
+        if box is None:
+            return PixelProbabilities(half)
+        v0, v1, u0, u1 = box
+        zoom = self.model.probabilities(
+            zoomed_inputs(frame.rgb[v0:v1, u0:u1], frame.depth[v0:v1, u0:u1], z[v0:v1, u0:u1])
+        )
+        return PixelProbabilities(half, box, zoom, frame.depth[v0:v1, u0:u1] >= FAR)
+
+    def _far_box(self, depth: npt.NDArray[np.float32], z: F64) -> tuple[int, int, int, int] | None:
+        """(v0, v1, u0, u1): the box around the far pixels where objects can stand — up to the
+        tallest category above a support plane, the lowest plane (the floor) left out when there
+        are others — padded by :data:`ZOOM_PAD` pixels; None when there are none."""
+        planes = self.planes[1:] if len(self.planes) > 1 else self.planes
+        tallest = max(hgt for _, hgt in SIZES.values())
+        band = np.zeros(depth.shape, dtype=bool)
+        for p in planes:
+            band |= (z > p + 0.01) & (z < p + tallest + 0.03)
+        band &= depth >= FAR
+        rows, cols = np.flatnonzero(band.any(axis=1)), np.flatnonzero(band.any(axis=0))
+        if len(rows) == 0:
+            return None
+        h, w = depth.shape
+        return (
+            max(int(rows[0]) - ZOOM_PAD, 0),
+            min(int(rows[-1]) + 1 + ZOOM_PAD, h),
+            max(int(cols[0]) - ZOOM_PAD, 0),
+            min(int(cols[-1]) + 1 + ZOOM_PAD, w),
+        )
 
     def _objects(
         self,
@@ -283,7 +377,7 @@ class LearnedBackend(DepthBackend):
                         break
         return out
 
-    def _name(self, categories: Sequence[str], q: F64, prob: F32, mask: Mask) -> str:
+    def _name(self, categories: Sequence[str], q: F64, prob: PixelProbabilities, mask: Mask) -> str:
         """The one of ``categories`` an object is: its measured height — its top (98th
         percentile of its points' heights) above the support plane under it — against each
         category's, weighed with the network's mean probability over its pixels. A top can be
@@ -293,12 +387,9 @@ class LearnedBackend(DepthBackend):
         zmin = float(q[:, 2].min())
         below = [p for p in self.planes if p <= zmin + 0.01]
         tall = float(np.percentile(q[:, 2], 98)) - (max(below) if below else zmin)
-        v, u = np.nonzero(mask)
-        v = np.minimum(v // 2, prob.shape[1] - 1)
-        u = np.minimum(u // 2, prob.shape[2] - 1)
 
         def score(c: str) -> float:
-            net = float(prob[CLASSES.index(c)][v, u].mean())
+            net = prob.mean(CLASSES.index(c), mask)
             fit = math.exp(-0.5 * ((tall - SIZES[c][1]) / HEIGHT_SIGMA) ** 2)
             if tall < SIZES[c][1]:
                 fit += HIDDEN_TOP
