@@ -220,7 +220,7 @@ class PixelProbabilities:
         the half-resolution pass did not cover is background."""
         cls, conf = self._merged(self.half)
         full = np.zeros(shape[:2], dtype=np.int64)
-        fconf = np.zeros(shape[:2], dtype=np.float32)
+        fconf = np.ones(shape[:2], dtype=np.float32)
         h2, w2 = cls.shape
         full[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
         fconf[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
