@@ -164,10 +164,9 @@ def _network(truth: int, share: float, split: float) -> PixelProbabilities:
     plane=st.floats(-0.05, 0.3),
     share=st.floats(0.05, 1.0),
     split=st.floats(0.0, 1.0),
-    # the 98th-percentile top reads about two noise sigmas high: up to 2 mm of depth noise the
-    # height outweighs a 19:1 network; at 3 mm only about 6:1 (hypothesis found apple -> mug
-    # at 15:1, 2.9 mm). The renderer's depth has no noise.
-    noise=st.floats(0.0, 0.002),
+    # depth noise up to 5 mm: the top is fitted unbiased (geometry.top_height); the 98th
+    # percentile read ~2 noise sigmas high and lost to a 15:1 network at 2.9 mm
+    noise=st.floats(0.0, 0.005),
     seed=st.integers(0, 2**16),
 )
 def test_a_red_object_seen_whole_is_named_by_its_height(

@@ -26,7 +26,7 @@ from hltl.perception.detection import (
     support_planes,
 )
 from hltl.perception.frames import Camera, Frame
-from hltl.perception.geometry import backproject
+from hltl.perception.geometry import backproject, top_height
 from hltl.world.scene import Scene
 
 CLASSES = ("background", "person", "bottle", "chips", "cup", "mug", "can", "apple", "box", "book")
@@ -60,6 +60,8 @@ PLANE_SHARE = 0.01
 # beyond this range (m) the network also looks at full resolution (LearnedBackend._probabilities)
 FAR = 2.5
 ZOOM_PAD = 16  # pixels of context around the far band
+SPLIT_HEIGHT = 0.03  # each of two objects split apart is at least this tall (m)
+STRAY = 0.2  # at most this share of a region's pixels are dropped as strays around an object
 HEIGHT_SIGMA = 0.006  # spread of a measured height about the true one when the top is seen (m)
 HIDDEN_TOP = 0.01  # chance that a shorter measured height is a taller object with its top hidden
 
@@ -258,6 +260,7 @@ class LearnedBackend(DepthBackend):
     ) -> None:
         super().__init__(scene, edge)
         self.model = _shared(SHIPPED if weights is None else Path(weights))
+        self._depth: npt.NDArray[np.float32] = np.zeros((0, 0), np.float32)  # the last frame's
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         from scipy import ndimage
@@ -266,6 +269,7 @@ class LearnedBackend(DepthBackend):
         view = self.view(depth, camera)
         valid, pts, z = view.valid, view.points, view.z
         self.planes = support_planes(z[valid][::16], share=PLANE_SHARE)
+        self._depth = depth
         prob = self.probabilities(frame, camera, z)
         full, fconf = prob.labels(depth.shape)
         group = [CLASSES.index(c) for c in CONFUSED]
@@ -367,26 +371,26 @@ class LearnedBackend(DepthBackend):
             # (a piece of an arm's base next to the object must not sink it)
             tries = [members] if len(members) == 1 else [members] + [[i] for i in members]
             for group_ in tries:
-                q = np.concatenate([clouds[i] for i in group_])
-                if self._plausible(q, r, hgt):
-                    mask = np.zeros(shape, dtype=bool)
-                    for i in group_:
-                        mask[parts[i][0]] |= parts[i][1]
-                    out.append(mask)
-                    if group_ is members:
-                        break
+                mask = np.zeros(shape, dtype=bool)
+                for i in group_:
+                    mask[parts[i][0]] |= parts[i][1]
+                shaped = self._shaped(mask, pts, r, hgt)
+                out += shaped
+                if shaped and group_ is members:
+                    break
         return out
 
     def _name(self, categories: Sequence[str], q: F64, prob: PixelProbabilities, mask: Mask) -> str:
-        """The one of ``categories`` an object is: its measured height — its top (98th
-        percentile of its points' heights) above the support plane under it — against each
-        category's, weighed with the network's mean probability over its pixels. A top can be
-        hidden (the height then reads low) but an object cannot read taller than it is, so a
-        category shorter than the measurement by more than 2 cm is out, one taller keeps a
-        small chance (HIDDEN_TOP) and the network decides between those."""
+        """The one of ``categories`` an object is: its measured height — its top surface
+        (:func:`~hltl.perception.geometry.top_height`, unbiased by depth noise) above the support
+        plane under it — against each category's, weighed with the network's mean probability
+        over its pixels. A top can be hidden (the height then reads low) but an object cannot
+        read taller than it is, so a category shorter than the measurement by more than 2 cm is
+        out, one taller keeps a small chance (HIDDEN_TOP) and the network decides between
+        those."""
         zmin = float(q[:, 2].min())
         below = [p for p in self.planes if p <= zmin + 0.01]
-        tall = float(np.percentile(q[:, 2], 98)) - (max(below) if below else zmin)
+        tall = top_height(q[:, 2]) - (max(below) if below else zmin)
 
         def score(c: str) -> float:
             net = prob.mean(CLASSES.index(c), mask)
@@ -397,19 +401,99 @@ class LearnedBackend(DepthBackend):
 
         return max(categories, key=score)
 
-    def _plausible(self, q: F64, r: float, hgt: float) -> bool:
+    def _shaped(self, mask: Mask, pts: F64, r: float, hgt: float) -> list[Mask]:
+        """The objects a region of one class is: itself if it is plausible (:meth:`_plausible`);
+        else, when it is too wide, two objects side by side (touching in the image with no
+        depth edge between them: 2-means on the floor plan, both halves plausible and at least
+        :data:`SPLIT_HEIGHT` tall); else the one object left when stray pixels around it — a
+        table's fringe, the edge of a link — are dropped (those farther than its radius + 2 cm
+        from the median position; at most :data:`STRAY` of the region); else none."""
+        q = pts[mask]
+        if self._plausible(q, r, hgt, mask):
+            return [mask]
+        v, u = np.nonzero(mask)
+        if max(np.ptp(q[:, 0]), np.ptp(q[:, 1])) > 2 * r + 0.03 and len(q) >= 2 * MIN_PIXELS:
+            side = two_means(q[:, :2])
+            halves = []
+            for k in (False, True):
+                sub = np.zeros_like(mask)
+                sub[v[side == k], u[side == k]] = True
+                qk = q[side == k]
+                if (
+                    len(qk) >= MIN_PIXELS
+                    and np.ptp(qk[:, 2]) >= SPLIT_HEIGHT
+                    and self._plausible(qk, r, hgt, sub)
+                ):
+                    halves.append(sub)
+            if len(halves) == 2:
+                return halves
+        near = np.hypot(*(q[:, :2] - np.median(q[:, :2], axis=0)).T) <= r + 0.02
+        if near.sum() >= (1.0 - STRAY) * len(q):
+            sub = np.zeros_like(mask)
+            sub[v[near], u[near]] = True
+            if self._plausible(q[near], r, hgt, sub):
+                return [sub]
+        return []
+
+    def _plausible(self, q: F64, r: float, hgt: float, mask: Mask | None = None) -> bool:
+        """Can points ``q`` be one object of radius ``r`` and height ``hgt``: no wider or
+        taller (+3 cm), standing on a support plane — its lowest point at most 12 cm above it,
+        or, when something nearer hides its foot (:meth:`_foot_hidden`, needs ``mask``), its
+        top at most the height (+3 cm) above it — and not centred on a registered arm's base."""
         span = np.ptp(q, axis=0)
         if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
             return False
         zmin = float(q[:, 2].min())
         below = [p for p in self.planes if p <= zmin + 0.01]
-        if not below or zmin - max(below) > 0.12:
+        if not below:
+            return False
+        if zmin - max(below) > 0.12 and not (
+            mask is not None
+            and float(q[:, 2].max()) - max(below) <= hgt + 0.03
+            and self._foot_hidden(mask)
+        ):
             return False
         c = q.mean(axis=0)
         return self.scene is None or all(
             math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) >= BASE_CLEARANCE
             for rb in self.scene.robots
         )
+
+    def _foot_hidden(self, mask: Mask) -> bool:
+        """Is the bottom of ``mask`` hidden by something nearer: in at least half of its
+        columns, the pixel 3 rows below its lowest one is at least 5 cm nearer the camera."""
+        depth = self._depth
+        v, u = np.nonzero(mask)
+        if len(v) == 0:
+            return False
+        bottom = np.full(depth.shape[1], -1)
+        np.maximum.at(bottom, u, v)
+        cols = np.flatnonzero((bottom >= 0) & (bottom + 3 < depth.shape[0]))
+        if len(cols) == 0:
+            return False
+        here = depth[bottom[cols], cols]
+        below = depth[bottom[cols] + 3, cols]
+        return bool(np.mean((below > 0) & (below < here - 0.05)) >= 0.5)
+
+
+def two_means(xy: F64, iterations: int = 10) -> npt.NDArray[np.bool_]:
+    """Split points (n × 2) in two by 2-means, started from the two points farthest apart
+    along the points' main axis; True marks the second group."""
+    c = xy.mean(axis=0)
+    d = xy - c
+    axis = np.linalg.svd(d, full_matrices=False)[2][0]
+    t = d @ axis
+    a, b = xy[int(np.argmin(t))], xy[int(np.argmax(t))]
+    side = np.zeros(len(xy), dtype=bool)
+    for _ in range(iterations):
+        side = np.sum((xy - b) ** 2, axis=1) < np.sum((xy - a) ** 2, axis=1)
+        if side.all() or not side.any():
+            break
+        a2, b2 = xy[~side].mean(axis=0), xy[side].mean(axis=0)
+        if np.allclose(a2, a) and np.allclose(b2, b):
+            break
+        a, b = a2, b2
+    return side
 
 
 def _full(shape: tuple[int, ...], sl: tuple[slice, ...], local: Mask) -> Mask:
