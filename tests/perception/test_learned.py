@@ -280,3 +280,72 @@ def _far_mask(h: int, w: int, box: tuple[int, int, int, int], far: np.ndarray) -
     v0, v1, u0, u1 = box
     out[v0:v1, u0:u1] = far
     return out
+
+
+def _cylinder_points(
+    category: str, x: float, y: float, plane: float, rng: np.random.Generator
+) -> np.ndarray:
+    """The near half of a category's cylinder standing at (x, y) on ``plane``, and its top."""
+    return _standing(category, plane, 1.0, rng) + np.array([x, y, 0.0])
+
+
+def _region(*clouds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A one-row 'image' holding the clouds' points and the mask of all of them."""
+    q = np.concatenate(clouds)
+    return q[None], np.ones((1, len(q)), dtype=bool)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    first=st.sampled_from(CONFUSED),
+    second=st.sampled_from(CONFUSED),
+    angle=st.floats(0.0, 2 * math.pi),
+    gap=st.floats(0.0, 0.02),
+    seed=st.integers(0, 2**16),
+)
+def test_two_red_objects_side_by_side_in_one_region_are_two_objects(
+    first: str, second: str, angle: float, gap: float, seed: int
+) -> None:
+    # touching in the image with no depth edge between: one region of the merged red class
+    rng = np.random.default_rng(seed)
+    backend = _backend()
+    backend.planes = [-0.75, 0.0]
+    d = SIZES[first][0] + SIZES[second][0] + gap
+    a = _cylinder_points(first, 0.0, 0.0, 0.0, rng)
+    b = _cylinder_points(second, d * math.cos(angle), d * math.sin(angle), 0.0, rng)
+    pts, mask = _region(a, b)
+    r = max(SIZES[c][0] for c in CONFUSED)
+    hgt = max(SIZES[c][1] for c in CONFUSED)
+    found = backend._shaped(mask, pts, r, hgt)
+    assert len(found) == 2
+    truth = np.arange(len(a) + len(b)) >= len(a)
+    for m in found:  # each is (nearly) one of the two objects
+        purity = max(float(np.mean(truth[m[0]])), float(np.mean(~truth[m[0]])))
+        assert purity >= 0.9  # boundary points of two touching objects may go either way
+
+
+@settings(max_examples=30, deadline=None)
+@given(share=st.floats(0.02, 0.15), seed=st.integers(0, 2**16))
+def test_stray_pixels_around_an_object_are_dropped_not_the_object(share: float, seed: int) -> None:
+    # a few pixels of a link or a neighbour 10-25 cm off, joined to a cup's region
+    rng = np.random.default_rng(seed)
+    backend = _backend()
+    backend.planes = [-0.75, -0.015]
+    cup = _cylinder_points("cup", 0.3, 0.2, 0.0, rng)
+    n = int(share * len(cup) / (1 - share)) + 1
+    ang, dist = rng.uniform(0, 2 * math.pi, n), rng.uniform(0.1, 0.25, n)
+    z = rng.uniform(0.0, 0.1, n)
+    fringe = np.stack([0.3 + dist * np.cos(ang), 0.2 + dist * np.sin(ang), z], axis=1)
+    pts, mask = _region(cup, fringe)
+    found = backend._shaped(mask, pts, *SIZES["cup"])
+    assert len(found) == 1
+    assert (found[0][0] == (np.arange(len(cup) + n) < len(cup))).all()
+
+
+def test_three_in_a_row_are_not_guessed_into_one() -> None:
+    rng = np.random.default_rng(0)
+    backend = _backend()
+    backend.planes = [0.0]
+    clouds = [_cylinder_points("can", 0.07 * i, 0.0, 0.0, rng) for i in range(3)]
+    pts, mask = _region(*clouds)
+    assert backend._shaped(mask, pts, *SIZES["can"]) == []
