@@ -286,7 +286,8 @@ def _cylinder_points(
     category: str, x: float, y: float, plane: float, rng: np.random.Generator
 ) -> np.ndarray:
     """The near half of a category's cylinder standing at (x, y) on ``plane``, and its top."""
-    return _standing(category, plane, 1.0, rng) + np.array([x, y, 0.0])
+    out: np.ndarray = _standing(category, plane, 1.0, rng) + np.array([x, y, 0.0])
+    return out
 
 
 def _region(*clouds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
