@@ -8,6 +8,7 @@ import pytest
 
 from hltl.execution.executor import MAX_FAILURES, ExecStatus, Executor, ExecutorConfig
 from hltl.execution.log import EpisodeStart
+from hltl.execution.predicted import Predicted
 from hltl.grounding.offline import OfflineGrounder
 from hltl.planner import PlanResult, PlanStatus, PlanStep
 from hltl.sim.instruct import ground_instruction
@@ -240,3 +241,64 @@ def test_new_instruction_carries_monitor_state_over(cell: Scene) -> None:
     grounding = [r for r in ex.log.records if r.type == "grounding"]
     assert grounding[-1].update["kind"] == "add"
     assert check_invariants(ex.log.records) == []
+
+
+def test_a_predicted_plan_that_cannot_start_takes_over_once(cell: Scene) -> None:
+    """A predicted plan made for where a person was forecast to stand can fail its first
+    step's check in the world as it is (T2 with motion: the hand-over has no motion from
+    where the person stopped). It must not take over again from the same start: before the
+    fix it did so 16 times in one tick, each counted as a replan."""
+    planner = RecordingPlanner()
+    ex = Executor(cell, _spec(CHIPS_TO_A), MockDriver(duration=0.6), planner=planner)
+    _episode_start(ex, cell)
+    obs = initial_world(cell)
+    ex.update(0.0, obs)  # r2 picks the chips
+    after = ex._after_running()
+    assert after is not None
+    w, q = after
+    # r1 does not hold the chips after the pick: this first step fails its precondition
+    stale = PlanResult(
+        PlanStatus.SOLVED,
+        (PlanStep(0.0, 0.5, (Action("handover_r2h", ("r1",), "chips", "A"),)),),
+        0.5,
+    )
+    key = ex._key(ex.semantics.context(w), w, q)
+    ex._predicted.put(key, Predicted(stale, 0.0, ex.semantics.context(w)))
+    calls = len(planner.calls)
+    _run(ex, obs, 3.0)
+    assert ex.status is ExecStatus.DONE
+    records = ex.log.records
+    assert len([r for r in records if r.type == "takeover"]) == 1
+    after_pick = [r for r in records if r.type == "replan" and r.t == 0.6]
+    # the takeover, then one planner call from the real world
+    assert [r.source for r in after_pick] == ["predicted", "planner"]
+    assert len(planner.calls) > calls
+    assert check_invariants(records) == []
+
+
+def test_a_predicted_plan_equal_to_the_plan_in_hand_is_not_a_takeover(cell: Scene) -> None:
+    """B, who takes no part in the task, walks out of every workspace while the first plan's
+    computation is charged (1 s): the context changes, and the plan predicted for B's new
+    context is the plan in hand. It stays; no takeover, no replan (before the fix: a takeover
+    and a replan with trigger "context", which the T1–T6 benchmark counts)."""
+    planner = RecordingPlanner()
+    config = ExecutorConfig(plan_latency=1.0)
+    ex = Executor(cell, _spec(CHIPS_TO_A), MockDriver(duration=0.6), planner=planner, config=config)
+    _episode_start(ex, cell)
+    obs = initial_world(cell)
+    b0 = obs.human_position("B")
+    t = 0.0
+    while t < 8.0 and not ex.finished:
+        s = max(0.0, t - 0.05)
+        ex.update(t, obs.with_human("B", (b0[0] + 1.5 * min(s, 0.8), b0[1], 0.0)).with_time(t))
+        t = round(t + 0.05, 9)
+    assert ex.status is ExecStatus.DONE
+    records = ex.log.records
+    predicts = [r for r in records if r.type == "predict"]
+    replans = [r for r in records if r.type == "replan"]
+    assert predicts and predicts[0].context != replans[0].context  # B's leaving was forecast
+    assert [r for r in records if r.type == "takeover"] == []
+    assert [r.trigger for r in replans] == ["initial", "progress", "progress"]
+    first = next(r for r in records if r.type == "dispatch")
+    assert first.t == pytest.approx(1.0)  # the plan in hand went once its computation was paid
+    assert check_invariants(records) == []

@@ -243,14 +243,13 @@ def _world(scene: Scene, timing: str, motion: bool = False) -> World3D:
 def unplanned_motions(records: Sequence[LogRecord], world: World3D) -> list[str]:
     """Actions that ran without a checked motion plan, each with who failed to plan it.
 
-    Two ways: hltl's motion cost model found none and charged its sentinel
-    (``infeasible_cost``), so the plan hltl chose was optimal for a made-up duration; or the
-    3D simulator's own motion planner found none and the arms followed unchecked IK waypoints
-    (``MotionInfo.source == "ik"``), so the time is not a collision-checked motion's. Either
-    makes the trial's execution time meaningless: the benchmark counts such a trial as failed.
+    Two ways: hltl's executor started an action its motion cost model has no plan for (an
+    infinite expected duration, ``INFEASIBLE``; the executor refuses to, so this is a guard),
+    or the 3D simulator's own motion planner found none and the arms followed unchecked IK
+    waypoints (``MotionInfo.source == "ik"``), so the time is not a collision-checked motion's.
+    Either makes the trial's execution time meaningless: the benchmark counts such a trial as
+    failed.
     """
-    # a sentinel duration (a finite ``infeasible_cost``) or an infinite one both mean "no plan"
-    limit = math.inf if world.cost is None else getattr(world.cost, "infeasible_cost", math.inf)
     sim = world.made[-1] if world.made else None
     out: list[str] = []
     for r in records:
@@ -258,8 +257,8 @@ def unplanned_motions(records: Sequence[LogRecord], world: World3D) -> list[str]
             continue
         act = Action.from_dict(r.action)
         what = f"{act.skill}({act.object}) by {'→'.join(act.robots)} at {r.t:.2f} s"
-        if r.expected is not None and (r.expected >= limit or not math.isfinite(r.expected)):
-            out.append(f"{what}: hltl's motion model has no plan (charged {r.expected:.0f} s)")
+        if r.expected is not None and not math.isfinite(r.expected):
+            out.append(f"{what}: hltl's motion model has no plan")
         info = None if sim is None else sim.motion_of(Handle(r.handle, act, r.t))
         if info is not None and info.source == "ik":
             why = f" ({info.note[:60]})" if info.note else ""
