@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -16,7 +17,7 @@ from hltl.sim.invariants import check_invariants
 from hltl.skills.library import Action
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.spec.syntax import Atom
-from hltl.world.scene import Scene, load_scene
+from hltl.world.scene import Scene, Surface, load_scene
 from hltl.world.state import WorldState, initial_world
 
 from .mocks import MockDriver, RecordingPlanner
@@ -243,37 +244,58 @@ def test_new_instruction_carries_monitor_state_over(cell: Scene) -> None:
     assert check_invariants(ex.log.records) == []
 
 
-def test_a_predicted_plan_that_cannot_start_takes_over_once(cell: Scene) -> None:
-    """A predicted plan made for where a person was forecast to stand can fail its first
-    step's check in the world as it is (T2 with motion: the hand-over has no motion from
-    where the person stopped). It must not take over again from the same start: before the
-    fix it did so 16 times in one tick, each counted as a replan."""
-    planner = RecordingPlanner()
-    ex = Executor(cell, _spec(CHIPS_TO_A), MockDriver(duration=0.6), planner=planner)
-    _episode_start(ex, cell)
-    obs = initial_world(cell)
-    ex.update(0.0, obs)  # r2 picks the chips
+def _picked_with_forecast(scene: Scene, first: Action, driver: MockDriver) -> Executor:
+    """CHIPS_TO_A with r2's pick of the chips under way, and a predicted plan whose one step is
+    ``first`` cached for the start the pick will end in (what a background plan for a forecast
+    world leaves there), as if the forecast had been made at t = 0."""
+    ex = Executor(scene, _spec(CHIPS_TO_A), driver)
+    _episode_start(ex, scene)
+    ex.update(0.0, initial_world(scene))
     after = ex._after_running()
     assert after is not None
     w, q = after
+    ctx = ex.semantics.context(w)
+    plan = PlanResult(PlanStatus.SOLVED, (PlanStep(0.0, 0.5, (first,)),), 0.5)
+    ex._predicted.put(ex._key(ctx, w, q), Predicted(plan, 0.0, ctx))
+    return ex
+
+
+def test_a_predicted_plan_that_cannot_start_does_not_take_over(cell: Scene) -> None:
+    """A predicted plan made for where a person was forecast to stand can fail its first
+    step's check in the world as it is (T2 with motion: the hand-over has no motion from
+    where the person stopped). It is not taken over; the planner plans from the real world.
+    Before the fix it took over, failed the check, and took over again, 16 times a tick."""
     # r1 does not hold the chips after the pick: this first step fails its precondition
-    stale = PlanResult(
-        PlanStatus.SOLVED,
-        (PlanStep(0.0, 0.5, (Action("handover_r2h", ("r1",), "chips", "A"),)),),
-        0.5,
-    )
-    key = ex._key(ex.semantics.context(w), w, q)
-    ex._predicted.put(key, Predicted(stale, 0.0, ex.semantics.context(w)))
-    calls = len(planner.calls)
+    stale = Action("handover_r2h", ("r1",), "chips", "A")
+    ex = _picked_with_forecast(cell, stale, MockDriver(duration=0.6))
+    obs = initial_world(cell)
     _run(ex, obs, 3.0)
     assert ex.status is ExecStatus.DONE
     records = ex.log.records
-    assert len([r for r in records if r.type == "takeover"]) == 1
+    assert [r for r in records if r.type == "takeover"] == []
     after_pick = [r for r in records if r.type == "replan" and r.t == 0.6]
-    # the takeover, then one planner call from the real world
-    assert [r.source for r in after_pick] == ["predicted", "planner"]
-    assert len(planner.calls) > calls
+    assert [(r.source, r.trigger) for r in after_pick] == [("planner", "progress")]
     assert check_invariants(records) == []
+
+
+def test_a_predicted_plan_takes_over_once(cell: Scene) -> None:
+    """A taken-over plan leaves the cache: when the executor comes back to the same start
+    (T2#4 with motion: a place, then a pick of the same object), the planner decides, not the
+    old forecast. Before the fix the cached plan's place was taken over after every pick,
+    until the time limit."""
+    # a side table only r2 reaches: after a place there, only r2 can pick the chips again
+    scene = dataclasses.replace(cell, surfaces=(Surface("side", (1.7, 0.3, 0.0), (0.2, 0.2)),))
+    driver = MockDriver(duration=0.6)
+    # a detour that puts the chips down on the side table: the start after its place and the
+    # planner's pick is the same discrete start again
+    ex = _picked_with_forecast(scene, Action("place", ("r2",), "chips", surface="side"), driver)
+    obs = initial_world(scene)
+    _run(ex, obs, 6.0)
+    assert ex.status is ExecStatus.DONE
+    takeovers = [r for r in ex.log.records if r.type == "takeover"]
+    assert len(takeovers) == 1
+    assert [a.skill for _, a in driver.started].count("place") == 1
+    assert check_invariants(ex.log.records) == []
 
 
 def test_a_predicted_plan_equal_to_the_plan_in_hand_is_not_a_takeover(cell: Scene) -> None:

@@ -693,10 +693,6 @@ class Executor(TickTemplate):
             if self._plan_fresh:
                 self._give_up(f"the planner's first step is not executable: {blocked[0].reason}")
                 return False
-            # a cached predicted plan that cannot start from here must not take over again
-            # from the same start (it would, at once: the start's key has not changed)
-            ctx = self.semantics.context(self.world)
-            self._predicted.discard(self._key(ctx, self.world, self.q), self._plan)
             self._plan = None
             self._trigger.add(Trigger.PRECONDITION)
             return True
@@ -774,11 +770,19 @@ class Executor(TickTemplate):
         key = self._key(ctx, self.world, self.q)
         pred = self._predicted.get(key) if self.config.predict else None
         done = sorted(self.done_formulas())
+        if pred is not None:
+            # a predicted plan is used once: were it kept, a later return to the same discrete
+            # start (a place, then a pick of the same object) would take it over again
+            self._predicted.discard(key, pred.result)
         if pred is not None and self._plan is not None and same_plan(pred.result, self._plan):
             # a takeover must change the plan in hand: this one already is the predicted plan,
             # so it stays, now for the new context; nothing is taken over or replanned
             self._adopt(self._plan, ctx)
             return True
+        if pred is not None and pred.result.solved and self._check_step(pred.result.steps[0])[2]:
+            # made for where people were forecast to stand, its first step cannot start from
+            # where they are (with motion-timed costs: no motion to the person's real place)
+            pred = None
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
             model = self.config.latency
