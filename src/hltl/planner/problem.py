@@ -123,9 +123,11 @@ class Problem:
         self.by_obj_pre: list[list[list[Instance]]] = [
             [[] for _ in range(n_locs)] for _ in self.objects
         ]
-        self._transitions: dict[Action, Transition] = {}
+        # per instance its own transition: one action can have several (a pick from where the
+        # object rests and one from a surface), and a duration depends on which
+        self.transitions: list[Transition] = []
         for action, trans in self.semantics.instances(self.world):
-            self._transitions[action] = trans
+            self.transitions.append(trans)
             oi = self.obj_index[trans.obj]
             inst = Instance(
                 index=len(self.instances),
@@ -247,7 +249,7 @@ class Problem:
                 t = max(t, self.travel(hands[r], p) / self.speeds[r])
             return to_ticks(t + inst.const)
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
-        d = self.cost.duration(inst.action, self._transitions[inst.action], start)
+        d = self.cost.duration(inst.action, self.transitions[inst.index], start)
         return to_ticks(d) if math.isfinite(d) else None
 
 
