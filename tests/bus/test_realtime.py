@@ -6,8 +6,8 @@ the node exactly once and ends once, faults are survived, and a silent or broken
 
 from __future__ import annotations
 
+import threading
 import time
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -19,11 +19,13 @@ from hltl.bus.node import CellNode
 from hltl.bus.realtime import RealtimeBusCell, realtime_bus_cell
 from hltl.cli.main import main
 from hltl.errors import BusError
+from hltl.execution.drivers import Handle
 from hltl.execution.log import EventLog, LogRecord
 from hltl.sim import scenarios
 from hltl.sim.episode import Episode, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, load_events
 from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.skills.library import Action
 from hltl.world.scene import Scene, load_scene
 from tests.bus.helpers import Loopback
 
@@ -163,49 +165,83 @@ def test_realtime_node_killed_mid_action_gives_up(loopback: Loopback) -> None:
     assert all(n == 1 for n in node.stats.starts.values())
 
 
-class _Hangs(Simulator):
-    """A cell that stops answering for a while at t = 0.3 s (its step blocks the node)."""
-
-    def advance(self, t: float) -> None:
-        if t > 0.3 and not getattr(self, "_hung", False):
-            self._hung = True
-            time.sleep(2.0)
-        super().advance(t)
+# How long the executor may take to give up on a silent or broken cell before the test calls
+# it a hang: far above what giving up needs (timeout x (retries + 1) + patience ~ 1 s, below).
+HANG = 30.0
 
 
-class _Breaks(Simulator):
-    """A cell whose step fails at t = 0.3 s: the node's clock stops, with the reason."""
+def _faulty(fault: str, release: threading.Event) -> type[Simulator]:
+    """A cell that goes wrong once its first action has started (so mid-action, however long
+    planning took): it "hangs" (every step blocks until the test releases it — silence that
+    outlasts any timeout, rather than a pause that a slow machine could outlast) or "breaks"
+    (every step fails, with a reason)."""
 
-    def advance(self, t: float) -> None:
-        if t > 0.3:
-            raise RuntimeError("joint 3 encoder fault")
-        super().advance(t)
+    class Faulty(Simulator):
+        started = False
+
+        def start(self, action: Action, t: float, *, motion: Any = None) -> Handle:
+            handle = super().start(action, t, motion=motion)
+            self.started = True
+            return handle
+
+        def advance(self, t: float) -> None:
+            if self.started:
+                if fault == "breaks":
+                    raise RuntimeError("joint 3 encoder fault")
+                release.wait()
+            super().advance(t)
+
+    return Faulty
 
 
 @pytest.mark.parametrize(
-    ("factory", "reason"),
+    ("fault", "reason"),
     # a hung or broken node is silent to commands: the clock query (which names a failure) or
     # a command's acknowledgement gives up first, whichever the loop is waiting on (timing)
     [
-        (_Hangs, ("stopped answering", "did not acknowledge")),
-        (_Breaks, ("joint 3 encoder fault", "did not acknowledge")),
+        ("hangs", ("stopped answering", "did not acknowledge")),
+        ("breaks", ("joint 3 encoder fault", "did not acknowledge")),
     ],
-    ids=["hangs", "breaks"],
 )
 def test_a_silent_or_broken_cell_is_down_not_a_hang(
-    loopback: Loopback, factory: Callable[..., Any], reason: tuple[str, ...]
+    loopback: Loopback, fault: str, reason: tuple[str, ...]
 ) -> None:
+    # The timeouts only set how soon the executor gives up on a cell that never answers again;
+    # they are wide (a loaded machine stalls a thread for tens of milliseconds, not 0.25 s), so
+    # that before the fault a slow answer is not taken for a dead node.
     scene, episode = _case("fig1")
-    t0 = time.monotonic()
-    ep, node, _ = _run(
-        loopback,
-        scene,
-        factory=factory,
-        timing=BusTiming(timeout=0.05, retries=1, patience=0.2),
-        config=EpisodeConfig(max_time=30.0),
-        **episode,
-    )
-    downs = _all_down(ep, scene, t0)
+    release = threading.Event()
+    timing = BusTiming(timeout=0.25, retries=1, patience=0.5)
+    out: dict[str, Any] = {}
+    opened: list[BusCell] = []
+
+    def executor() -> None:
+        make = realtime_bus_cell(
+            loopback._exec_session, factor=FACTOR, timing=timing, opened=opened
+        )
+        try:
+            out["episode"] = run_episode(
+                scene, simulator=make, config=EpisodeConfig(max_time=30.0), **episode
+            )
+        except BaseException as exc:  # re-raised on the test's thread
+            out["error"] = exc
+        finally:
+            for bc in opened:
+                bc.close()
+
+    with CellNode(loopback._node_session, scene, factory=_faulty(fault, release)) as node:
+        thread = threading.Thread(target=executor, name="executor", daemon=True)
+        thread.start()
+        thread.join(HANG)
+        hung = thread.is_alive()
+        release.set()  # (a hung cell holds the node's lock, which closing the node takes)
+    assert not hung, f"the executor did not give up on a cell that {fault} within {HANG} s"
+    if "error" in out:
+        raise out["error"]
+    ep: Episode = out["episode"]
+    assert not ep.success
+    downs = [r for r in ep.records if r.type == "robot_down"]
+    assert {r.robot for r in downs} == set(scene.robot_ids)
     assert any(why in downs[0].reason for why in reason), downs[0].reason
     failed = [r for r in ep.records if r.type == "action_failed"]
     assert failed and all("down" in r.reason for r in failed)

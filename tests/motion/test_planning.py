@@ -19,8 +19,9 @@ from hltl.motion.planning import (
     r2r_candidates,
 )
 from hltl.planner import plan
+from hltl.skills.cost import executed_duration
 from hltl.skills.library import Action, Transition
-from hltl.skills.semantics import ActionSemantics, apply
+from hltl.skills.semantics import ActionSemantics, apply, apply_all
 from hltl.spec.hierarchy import load_spec
 from hltl.world.scene import Scene
 from hltl.world.state import initial_world
@@ -96,6 +97,37 @@ def test_fig1_planned_with_motion_durations(fig1: Scene, fig1_cell: Any) -> None
     assert all(s.duration > 1.0 for s in steps)
 
 
+def test_planned_durations_are_the_dispatched_ones(fig1: Scene, fig1_cell: Any) -> None:
+    """The planner searches from where the arms are and through the joints each motion leaves
+    them in, as the executor dispatches: replaying the plan, every motion from where the
+    previous one left the arm, gives each step the duration the plan gave it."""
+    spec = load_spec(ROOT / "examples" / "specs" / "fig1.yaml")
+    cost = MotionCostModel(fig1_cell)
+    result = plan(fig1, spec, kinematics=fig1_cell.kinematics, cost=cost, timeout=120)
+    assert result.solved, result.reason
+    ep = cost.for_episode()
+    sem = ActionSemantics.of(fig1, kinematics=fig1_cell.kinematics, cost=ep)
+    world = initial_world(fig1)
+    acted: dict[str, int] = {}
+    for step in result.steps:
+        hands = dict(world.hands)
+        transitions = []
+        longest = 0.0
+        for a in step.actions:
+            tr = sem.transition(a, world)
+            assert isinstance(tr, Transition)
+            motion = ep.motion_plan(a, tr, hands)
+            assert motion is not None
+            longest = max(longest, executed_duration(ep, a, tr, motion.duration))
+            transitions.append(tr)
+            for r in a.robots:
+                acted[r] = acted.get(r, 0) + 1
+        assert step.duration == pytest.approx(longest, abs=1e-6), step
+        world = apply_all(world, transitions)
+    # some arm moved again from where its previous motion left it (a chained start)
+    assert max(acted.values()) >= 2
+
+
 def test_motion_cli_handover_json(fig1_cell: Any, capsys: pytest.CaptureFixture[str]) -> None:
     scene = str(ROOT / "examples" / "scenes" / "fig1.yaml")
     code = main(
@@ -157,8 +189,8 @@ def test_dispatched_motions_chain_through_the_arms_joints_within_an_episode(
     fig1: Scene, fig1_cell: Any
 ) -> None:
     """The executor's motions start where the episode's previous dispatched plan left the arm
-    (so the 3D simulator plays them as given); the planner's durations stay a function of the
-    hands; a new episode starts from scratch."""
+    (so the 3D simulator plays them as given), and so do the durations asked of the model then;
+    a new episode starts from scratch."""
     sem = ActionSemantics.of(fig1, kinematics=fig1_cell.kinematics)
     w0 = initial_world(fig1)
     pick = Action("pick", ("r1",), "bottle")
@@ -177,13 +209,14 @@ def test_dispatched_motions_chain_through_the_arms_joints_within_an_episode(
     assert first is not None
     end = first.trajectory("r1")
     assert end is not None
+    now = ep.duration(give, tr1, h1)  # from where the pick left the arm
     second = ep.motion_plan(give, tr1, h1)
     assert second is not None and (t := second.trajectory("r1")) is not None
     assert np.allclose(t.positions[0], end.positions[-1], atol=1e-9)
-    # the planner's view did not move: same duration as before the dispatch, as a fresh model's
-    assert (
-        ep.duration(give, tr1, h1) == planned == MotionCostModel(fig1_cell).duration(give, tr1, h1)
-    )
+    # the duration from where the arm is is the dispatched motion's; a fresh model, whose arm
+    # is at rest, times it from an IK nearest the rest pose, as the episode did before the pick
+    assert now == executed_duration(ep, give, tr1, second.duration) != planned
+    assert MotionCostModel(fig1_cell).duration(give, tr1, h1) == planned
     # the arm reporting its real tool position (not the transition's point) is recognised too
     ep2 = cost.for_episode()
     assert ep2.motion_plan(pick, tr0, h0) is not None

@@ -20,11 +20,17 @@ from hltl.motion.planning import (
 )
 from hltl.motion.trajectory import MotionPlan
 from hltl.motion.workspace import MapKinematics
-from hltl.skills.cost import DEFAULT_SPEED, INFEASIBLE, AnalyticCostModel, executed_duration
+from hltl.skills.cost import (
+    DEFAULT_SPEED,
+    INFEASIBLE,
+    AnalyticCostModel,
+    Joints,
+    executed_duration,
+)
 from hltl.skills.library import Action, Transition
 from hltl.world.scene import Scene, Vec3
 
-Config = tuple[float, ...]  # joint positions
+Config = Joints
 # a hand this close to where the last dispatched plan left the tool is that arm's (m)
 AT_TOLERANCE = 0.01
 KEY_DIGITS = 3  # hand positions are compared to the millimetre when reusing a motion plan
@@ -36,19 +42,23 @@ class MotionInfeasibleError(HltlError, ValueError):
 
 @dataclass(slots=True)
 class MotionCostModel:
-    """The planner's CostModel from real motion plans (``hltl plan --motion``).
+    """The planner's cost model from real motion plans (``hltl plan --motion``).
 
-    For the search, each executor's hand starts where ``hands`` says and a position-only IK
-    nearest the arm's home pose turns it into a configuration: a duration is a function of the
-    hands, so successive plans agree on what the rest of a task costs (a search that chained
-    through guessed configurations made the receding-horizon loop hand an object back and
-    forth on the realworld T6 cell). The motion the executor dispatches (:meth:`motion_plan`)
-    starts where the arms really are: where the plan this episode dispatched last left the arm,
-    when the hand is still there; the driver then plays it as given. Plans are cached by action,
-    start configurations and end hands; that cache may outlive an episode (it is a function of
-    its key), the dispatch state may not: the executor works on :meth:`for_episode`, a copy
-    without it. :func:`~hltl.motion.planning.plan_action` plans each instance. ``lower_bound``
-    is the instance's dwell time (closing, opening or exchanging), which no motion can beat.
+    Durations depend on the arms' joints (a :class:`~hltl.skills.cost.ChainedCostModel`): the
+    planner searches from where the arms are (:meth:`arm_state`) and through where each motion
+    leaves them (:meth:`timed`), so its durations are the ones the executor dispatches. Where
+    an arm is: where the plan this episode dispatched last (:meth:`motion_plan`) left it, while
+    its hand is still there (the transition's point, or the tool's reported position within
+    ``AT_TOLERANCE``); otherwise (a fresh episode, an arm that was halted or moved) a
+    position-only IK nearest the arm's home pose turns the hand point into a configuration.
+    :meth:`duration` times an instance from where the arms are now (the executor's and the
+    simulator's question); the driver plays the dispatched plan as given.
+
+    Plans are cached by action, start configurations and end hands; that cache may outlive an
+    episode (it is a function of its key), the dispatch state may not: the executor works on
+    :meth:`for_episode`, a copy without it. :func:`~hltl.motion.planning.plan_action` plans
+    each instance. ``lower_bound`` is the instance's dwell time (closing, opening or
+    exchanging), which no motion can beat.
 
     An instance with no motion plan from the given hands (the maps say reachable, but IK or
     collisions disagree) lasts ``math.inf`` (:data:`~hltl.skills.cost.INFEASIBLE`): the planner
@@ -91,22 +101,40 @@ class MotionCostModel:
         return RELEASE_DWELL
 
     def duration(self, action: Action, transition: Transition, hands: Mapping[str, Vec3]) -> float:
+        """The instance's duration from the hands, the arms where they are now."""
+        return self.timed(action, transition, hands, {})[0]
+
+    def arm_state(self, robot: str, hand: Vec3) -> Config | None:
+        """The joints of ``robot``'s arm now, its hand at ``hand`` (see the class docstring)."""
+        if robot not in self.cell.arms:
+            return None
+        return self._start(robot, _round(hand))
+
+    def timed(
+        self,
+        action: Action,
+        transition: Transition,
+        hands: Mapping[str, Vec3],
+        joints: Mapping[str, Config],
+    ) -> tuple[float, Mapping[str, Config]]:
+        """Duration from the hands, each arm in ``joints`` from its joints there (the others
+        from where they are now), and the joints the motion leaves the arms in."""
         if any(rid not in self.cell.arms for rid in action.robots):
-            return self._fallback.duration(action, transition, hands)
-        motion = self.motion(action, transition, hands)
+            return self._fallback.duration(action, transition, hands), {}
+        motion = self.motion(action, transition, hands, joints)
         if motion.plan is None:
-            return INFEASIBLE
-        return executed_duration(self, action, transition, motion.plan.duration)
+            return INFEASIBLE, {}
+        return executed_duration(self, action, transition, motion.plan.duration), dict(motion.final)
 
     def motion_plan(
         self, action: Action, transition: Transition, hands: Mapping[str, Vec3]
     ) -> MotionPlan | None:
-        """The joint trajectories of an instance (the executor passes them to the driver). The
-        executor calls this as it dispatches: later plans of the episode start where this one
-        leaves the arms."""
+        """The joint trajectories of an instance from where the arms are (the executor passes
+        them to the driver). The executor calls this as it dispatches: the arms are then where
+        this plan leaves them."""
         if any(rid not in self.cell.arms for rid in action.robots):
             return None
-        motion = self.motion(action, transition, hands, dispatch=True)
+        motion = self.motion(action, transition, hands)
         if motion.plan is not None:
             ends = dict(transition.hands)
             for rid, q in motion.final:
@@ -120,16 +148,18 @@ class MotionCostModel:
         action: Action,
         transition: Transition,
         hands: Mapping[str, Vec3],
-        *,
-        dispatch: bool = False,
+        joints: Mapping[str, Config] | None = None,
     ) -> SkillMotion:
-        """The (cached) motion plan of an instance from the given start hands; with
-        ``dispatch``, from where the arms really are (see the class docstring)."""
-        start = {
-            rid: _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base))
+        """The (cached) motion plan of an instance from the given start hands, each arm from
+        its ``joints`` when given, else from where it is now (see the class docstring)."""
+        q = {
+            rid: joints[rid]
+            if joints is not None and rid in joints
+            else self._start(
+                rid, _round(hands.get(rid, self.cell.kinematics.scene.robot(rid).base))
+            )
             for rid in action.robots
         }
-        q = {rid: self._start(rid, p, dispatch) for rid, p in start.items()}
         # where the person stands now (the transition's), not where the scene put them first
         human_at = transition.human_at
         if human_at is None and action.human is not None and self.humans is not None:
@@ -152,18 +182,16 @@ class MotionCostModel:
             self.plans[key] = motion
         return motion
 
-    def _start(self, rid: str, point: Vec3, dispatch: bool) -> Config:
+    def _start(self, rid: str, point: Vec3) -> Config:
         """The arm's configuration when its hand is at ``point`` (see the class docstring)."""
-        q = None
-        at = self._at.get(rid) if dispatch else None
+        at = self._at.get(rid)
         # the executor's world says where the hand is either by the transition's point or, once
         # the arm reports, by the tool's real position
         if at is not None and (point == at[0] or math.dist(point, at[1]) < AT_TOLERANCE):
-            q = at[2]
+            return at[2]
+        q = self.configs.get((rid, point))
         if q is None:
-            q = self.configs.get((rid, point))
-            if q is None:
-                q = self.configs[(rid, point)] = self._config(rid, point)
+            q = self.configs[(rid, point)] = self._config(rid, point)
         return q
 
     def _config(self, rid: str, point: Vec3) -> Config:

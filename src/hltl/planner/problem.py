@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from hltl.errors import UnknownEntityError
-from hltl.skills.cost import AnalyticCostModel, CostModel
+from hltl.skills.cost import AnalyticCostModel, ChainedCostModel, CostModel, Joints
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import DEFAULT_SKILLS, Action, Skill, Transition, state_atoms
 from hltl.skills.semantics import ActionSemantics
@@ -19,8 +19,9 @@ from hltl.world.geometry import distance
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import REST, Loc, WorldState, initial_world
 
-# A search node x = (s, q): object places (codes), hand poses (point ids, or None when durations
-# are fixed and poses cannot change a cost), and the monitor state. η is derived (docs/model.md).
+# A search node x = (s, q): object places (codes), hand poses (hand-state ids, or None when
+# durations are fixed and poses cannot change a cost), and the monitor state. η is derived
+# (docs/model.md). A hand state is a point, and with a ChainedCostModel the arm's joints there.
 Node = tuple[tuple[int, ...], tuple[int, ...] | None, MonitorState]
 
 # Search costs are integers in these units (microseconds): sums of integers do not depend on the
@@ -106,10 +107,17 @@ class Problem:
         self.held_code = {i: self.loc_code[Loc("held", r)] for i, r in enumerate(self.robots)}
         self.code_holder = {c: i for i, c in self.held_code.items()}
 
-        # hand poses (analytic model only)
+        # hand states when durations depend on hand poses: a point and, when they depend on the
+        # arms' joints (ChainedCostModel), the joints the arm has there (None: no arm model)
         self.points: list[Vec3] = []
-        self._point_index: dict[Vec3, int] = {}
+        self.joints: list[Joints | None] = []
+        self._point_index: dict[tuple[Vec3, Joints | None], int] = {}
         self.track_hands = not self.cost.fixed
+        self.chained: ChainedCostModel | None = (
+            self.cost if isinstance(self.cost, ChainedCostModel) else None
+        )
+        # (instance, its executors' start states) -> (ticks or None, executors' end states)
+        self._timed: dict[tuple[int, ...], tuple[int | None, tuple[tuple[int, int], ...]]] = {}
         # Objects no open formula mentions are never picked up only under fixed durations: when
         # durations depend on hand poses, moving such an object can bring a hand closer to where
         # it is needed next (docs/planner.md, "Exactness"), so every object stays in play.
@@ -200,12 +208,14 @@ class Problem:
             i += 1
         return frozenset(out)
 
-    def _point(self, p: Vec3) -> int:
-        idx = self._point_index.get(p)
+    def _point(self, p: Vec3, joints: Joints | None = None) -> int:
+        key = (p, joints)
+        idx = self._point_index.get(key)
         if idx is None:
             idx = len(self.points)
             self.points.append(p)
-            self._point_index[p] = idx
+            self.joints.append(joints)
+            self._point_index[key] = idx
         return idx
 
     def start(self) -> Node:
@@ -215,7 +225,7 @@ class Problem:
         if self.track_hands:
             home = self.semantics.kinematics.home_point
             hands = tuple(
-                self._point(self.world.hand_position(r) or home(self.scene.robot(r)))
+                self._start_state(r, self.world.hand_position(r) or home(self.scene.robot(r)))
                 for r in self.robots
             )
         return (locs, hands, self.q0)
@@ -248,9 +258,42 @@ class Problem:
             for r, p in inst.hands:
                 t = max(t, self.travel(hands[r], p) / self.speeds[r])
             return to_ticks(t + inst.const)
+        if self.chained is not None:
+            return self._chain(inst, hands)[0]
         start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
         d = self.cost.duration(inst.action, self.transitions[inst.index], start)
         return to_ticks(d) if math.isfinite(d) else None
+
+    def ends(self, inst: Instance, hands: tuple[int, ...]) -> tuple[tuple[int, int], ...]:
+        """Where the instance leaves its executors' hands from ``hands``: (robot index, hand
+        state); with a ChainedCostModel the state carries the joints its motion ends in."""
+        return inst.hands if self.chained is None else self._chain(inst, hands)[1]
+
+    def _start_state(self, robot: str, point: Vec3) -> int:
+        """The hand state of ``robot`` in the start node: its hand point, and its arm's joints
+        now when durations depend on them."""
+        joints = None if self.chained is None else self.chained.arm_state(robot, point)
+        return self._point(point, joints)
+
+    def _chain(
+        self, inst: Instance, hands: tuple[int, ...]
+    ) -> tuple[int | None, tuple[tuple[int, int], ...]]:
+        """Duration (ticks, None: no motion) and end states of ``inst`` from ``hands`` under
+        the ChainedCostModel, computed once per instance and start states."""
+        key = (inst.index, *(hands[r] for r, _ in inst.hands))
+        hit = self._timed.get(key)
+        if hit is None:
+            assert self.chained is not None
+            start = {self.robots[r]: self.points[hands[r]] for r, _ in inst.hands}
+            joints = {
+                self.robots[r]: q for r, _ in inst.hands if (q := self.joints[hands[r]]) is not None
+            }
+            d, after = self.chained.timed(inst.action, self.transitions[inst.index], start, joints)
+            ends = tuple(
+                (r, self._point(self.points[p], after.get(self.robots[r]))) for r, p in inst.hands
+            )
+            hit = self._timed[key] = (to_ticks(d) if math.isfinite(d) else None, ends)
+        return hit
 
 
 # An instance up to its object: what it needs, what it does, who does it and how long it takes.

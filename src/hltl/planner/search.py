@@ -274,6 +274,7 @@ class _Search:
                 events |= p.state_bits[o][new_locs[o]]
             return cost, (tuple(new_locs), None, self.monitor_step(q, events))  # type: ignore[return-value]
         new_hands = list(hands)
+        chained = p.chained is not None
         for inst in U:
             new_locs[inst.obj] = inst.post
             events |= inst.event_bits
@@ -282,7 +283,7 @@ class _Search:
                 return None
             if d > cost:
                 cost = d
-            for r, pt in inst.hands:
+            for r, pt in p.ends(inst, hands) if chained else inst.hands:
                 new_hands[r] = pt
         state_bits = p.state_bits
         for o in p.state_atom_objects:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 from hltl.errors import SceneError
 from hltl.skills.library import Action, Transition
@@ -16,6 +16,7 @@ DEFAULT_SPEED = 0.5  # m/s, hand speed of a collaborative arm near people
 # d(s, a) of an instance that cannot be executed from the given hands (a motion model found no
 # motion): the planner drops such a step, the executor does not dispatch it, the simulator fails it
 INFEASIBLE = math.inf
+Joints = tuple[float, ...]  # an arm's joint positions
 
 
 def executed_duration(
@@ -40,6 +41,32 @@ class CostModel(Protocol):
 
     def lower_bound(self, action: Action, transition: Transition) -> float:
         """A duration no start pose can beat (used by the planner's admissible heuristic)."""
+        ...
+
+
+@runtime_checkable
+class ChainedCostModel(CostModel, Protocol):
+    """A cost model whose durations depend on the arms' joint states, not only on where the
+    hands are (the motion layer's model). The planner then searches over hand states, a hand
+    point with the joints the arm has there: the start's from :meth:`arm_state` (where the arms
+    really are), each successor's from where the instance's motion leaves the arm
+    (:meth:`timed`). So the durations it searches with are the ones the executor dispatches,
+    whose motions start where the previous ones ended (docs/motion.md, *Chaining*)."""
+
+    def arm_state(self, robot: str, hand: Vec3) -> Joints | None:
+        """The joints of ``robot``'s arm now, its hand at ``hand``; ``None`` without an arm."""
+        ...
+
+    def timed(
+        self,
+        action: Action,
+        transition: Transition,
+        hands: Mapping[str, Vec3],
+        joints: Mapping[str, Joints],
+    ) -> tuple[float, Mapping[str, Joints]]:
+        """The instance's duration from these hands, each arm in ``joints`` starting from its
+        joints there (:data:`INFEASIBLE` without a motion), and the joints its motion leaves
+        each executor's arm in (robots without an arm are left out)."""
         ...
 
 
