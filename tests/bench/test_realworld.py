@@ -16,6 +16,7 @@ from hltl.bench.realworld import (
     WORDING,
     Result3D,
     World3D,
+    _bars,
     _replans,
     _world,
     format_t16,
@@ -259,3 +260,11 @@ def test_a_trial_with_an_unplanned_motion_fails(monkeypatch: pytest.MonkeyPatch)
     assert not bad.success and bad.unplanned == 1
     assert bad.reason == "no motion plan: pick(x) …"
     assert summarise3d([bad])[0].time is None
+
+
+def test_error_bars_stay_on_the_axis() -> None:
+    """A std larger than the mean is not drawn below 0, and a mean off the replanning axis
+    (T4's Greedy-R trial with 923 replans) gets no bar at all."""
+    lo, hi = _bars([(1.0, 3.0), (47.1, 206.2), (math.nan, 0.0), (2.0, 0.5)], top=6.0)
+    assert lo == [1.0, 0.0, 0.0, 0.5]
+    assert hi == [3.0, 0.0, 0.0, 0.5]

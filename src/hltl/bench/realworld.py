@@ -467,6 +467,15 @@ def _time_of(s: Summary3D | None) -> tuple[float, float]:
     return (math.nan, 0.0) if s is None or s.time is None else s.time
 
 
+def _bars(values: Sequence[tuple[float, float]], top: float = math.inf) -> list[list[float]]:
+    """Error bars of (mean, std) pairs: one std each way, never below 0 nor above ``top``;
+    none on a mean that is off the scale (above ``top``) or missing."""
+    shown = [math.isfinite(m) and m <= top for m, _ in values]
+    lo = [min(sd, m) if ok else 0.0 for (m, sd), ok in zip(values, shown, strict=True)]
+    hi = [min(sd, top - m) if ok else 0.0 for (m, sd), ok in zip(values, shown, strict=True)]
+    return [lo, hi]
+
+
 def plot_t16(rows: Sequence[Summary3D], path: Path) -> Path:
     """Fig. (exp_result)-like: execution time and replanning count per task, one bar per method."""
     try:
@@ -490,8 +499,16 @@ def plot_t16(rows: Sequence[Summary3D], path: Path) -> Path:
         c = colours.get(m, "#777777")
         label = LABELS.get(m, m)
         axes[0].bar(xs, succ, width, color=c, label=label)
-        axes[1].bar(xs, [v[0] for v in tm], width, yerr=[v[1] for v in tm], color=c, capsize=2)
-        axes[2].bar(xs, [v[0] for v in rp], width, yerr=[v[1] for v in rp], color=c, capsize=2)
+        axes[1].bar(xs, [v[0] for v in tm], width, yerr=_bars(tm), color=c, capsize=2)
+        # a trial that loops replans thousands of times would flatten the rest: the axis stops
+        # at twice the failure threshold and an off-scale mean is written above its bar
+        top = 2 * MAX_REPLANS
+        shown = [min(v[0], top) for v in rp]
+        axes[2].bar(xs, shown, width, yerr=_bars(rp, top), color=c, capsize=2)
+        for x, v in zip(xs, rp, strict=True):
+            if v[0] > top:
+                axes[2].text(x, top, f"{v[0]:.0f}", ha="center", va="bottom", fontsize=7)
+    axes[2].set_ylim(0, 2 * MAX_REPLANS + 1)
     for ax, title in zip(
         axes, ("Success rate (%)", "Execution time (s)", "Avg. replanning count"), strict=True
     ):
