@@ -939,6 +939,7 @@ class Executor(TickTemplate):
                     self.t,
                     self.config.horizon,
                     self.config.predict_dt,
+                    self.semantics.kinematics,
                 )
             except KeyError:  # never observed yet
                 continue

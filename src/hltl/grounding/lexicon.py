@@ -74,6 +74,7 @@ for _lemma, _forms in {
     "take": ("takes", "taking", "took", "taken"),
     "carry": ("carries", "carrying", "carried"),
     "move": ("moves", "moving", "moved"),
+    "pop": ("pops", "popping", "popped"),  # "pop the apple over to Carol"
     "go": ("goes", "going", "went", "gone"),
 }.items():
     _verb(_lemma, "bring", *_forms)
@@ -272,8 +273,8 @@ RETRACTIONS = frozenset(
 for _p in RETRACTIONS:
     PHRASES[tuple(_p.split())] = "correct"
 
-# The speaker asking politely before the request: "I was wondering if you could …", "I'd
-# appreciate it if you could …", "It would be great if you could …": the request follows.
+# The speaker asking politely before the request: "I was wondering if you could …": the request
+# follows ("I'd appreciate it if …" and "It would be great if …" are below).
 _YOU_COULD = ("you could", "you would", "you can", "you might", "you 'd")
 for _open in (
     "i was wondering",
@@ -285,21 +286,39 @@ for _open in (
     for _if in ("if", "whether"):
         for _you in _YOU_COULD:
             PHRASES[tuple(f"{_open} {_if} {_you}".split())] = "filler"
-for _who in ("i 'd", "i would", "we 'd", "we would"):
-    for _feel in ("appreciate it", "really appreciate it", "be grateful", "be very grateful"):
-        for _you in _YOU_COULD:
-            PHRASES[tuple(f"{_who} {_feel} if {_you}".split())] = "filler"
-for _it in ("it would be", "it 'd be", "it will be"):
-    for _good in ("great", "nice", "lovely", "good", "helpful", "brilliant", "perfect", "awesome"):
-        for _you in _YOU_COULD:
-            PHRASES[tuple(f"{_it} {_good} if {_you}".split())] = "filler"
-for _p in ("do you think you could", "any chance you could", "is there any chance you could"):
+for _p in (
+    "do you think you could",
+    "any chance you could",
+    "is there any chance you could",
+):
     PHRASES[tuple(_p.split())] = "filler"
 # "…, if that's ok": asking leave, not a condition on the task
 for _that in ("that 's", "that is", "that would be"):
     for _ok in ("ok", "okay", "alright", "all right", "fine", "cool"):
         PHRASES[tuple(f"if {_that} {_ok}".split())] = "filler"
 PHRASES[("if", "that", "works")] = "filler"
+# "It would be great if Carol could have the cup", "I'd be grateful if Bob could have …": the
+# speaker's framing; what follows 'if' is the request (a person having it, or 'you' doing it)
+for _it in ("it would be", "it 'd be", "it will be"):
+    for _good in (
+        "great",
+        "nice",
+        "lovely",
+        "good",
+        "helpful",
+        "brilliant",
+        "perfect",
+        "awesome",
+    ):
+        PHRASES[tuple(f"{_it} {_good} if".split())] = "filler"
+for _who in ("i 'd", "i would", "we 'd", "we would"):
+    for _feel in (
+        "appreciate it",
+        "really appreciate it",
+        "be grateful",
+        "be very grateful",
+    ):
+        PHRASES[tuple(f"{_who} {_feel} if".split())] = "filler"
 # "Bob's after the chips, can you sort that out?": asking for what was just said
 for _do in (
     "sort that out",
@@ -325,8 +344,88 @@ for _who in ("i", "we", ""):
         for _which in ("which", "which one", "which it is"):
             PHRASES[tuple(f"{_who} do n't {_mind} {_which}".split())] = "whichever"
 # "Start by giving Carol the apple, then …": the first step
-for _p in ("start by", "begin by", "start off by", "start with", "begin with", "first of all"):
+for _p in (
+    "start by",
+    "begin by",
+    "start off by",
+    "start with",
+    "begin with",
+    "first of all",
+    "first off",
+    "first things first",
+    "to start with",
+    "to begin with",
+    "before anything else",
+    "before you do anything else",
+    "before doing anything else",
+):
     PHRASES[tuple(_p.split())] = "first"
+# "Carol asked for the bottle", "Bob is asking for the cup": a want, when an object follows
+# (hltl.grounding.phrasing; "she asked for it earlier" stays a remark)
+for _ask in ("asked", "asks", "asking", "ask"):
+    PHRASES[(_ask, "for")] = "ask_for"
+# "Put the cup on the table and only then hand Carol the apple": then
+PHRASES[("only", "then")] = "then"
+PHRASES[("and", "only", "then")] = "then"
+# "she's got a meeting", "once Bob has got the cup": has
+for _has in ("'s", "has", "have", "'ve", "had"):
+    PHRASES[(_has, "got")] = "verb:have"
+# Greetings opening a request ("Good morning! Alice could do with the red mug.")
+for _p in (
+    "good morning",
+    "good afternoon",
+    "good evening",
+    "hi there",
+    "hey there",
+    "hello there",
+    "morning all",
+    "hi all",
+    "hello all",
+):
+    PHRASES[tuple(_p.split())] = "filler"
+# The speaker on what they think or ask ("I think Bob wants the bottle", "Can I ask you to put
+# …"): the request follows. Any other 'I' is still refused (the speaker is nobody in the scene)
+for _p in (
+    "i think",
+    "i guess",
+    "i believe",
+    "i reckon",
+    "i suppose",
+    "i 'm sure",
+    "i am sure",
+    "i 'm pretty sure",
+    "i am pretty sure",
+):
+    PHRASES[tuple(_p.split())] = "filler"
+    PHRASES[(*_p.split(), "that")] = "filler"
+for _can in ("can", "could", "may", "might"):
+    for _ask in ("ask", "get"):
+        PHRASES[(_can, "i", _ask, "you", "to")] = "filler"
+# "…, if it's not too much trouble": asking leave, not a condition
+for _it in ("it 's", "it is", "that 's", "that is"):
+    for _much in ("not too much", "no", "n't too much"):
+        for _trouble in ("trouble", "bother", "hassle"):
+            PHRASES[tuple(f"if {_it} {_much} {_trouble}".split())] = "filler"
+# "his choice", "up to you", "either one is fine": the choice is already an "or"
+for _p in (
+    "his choice",
+    "her choice",
+    "their choice",
+    "your choice",
+    "your call",
+    "up to you",
+    "it 's up to you",
+    "either way",
+    "either one is fine",
+    "any one is fine",
+    "either one will do",
+    "any one will do",
+    "either is ok",
+    "any is ok",
+    "either one is ok",
+    "any one is ok",
+):
+    PHRASES[tuple(_p.split())] = "whichever"
 
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
@@ -376,7 +475,13 @@ for _p, _q in {
 
 # one category said in other words (British and American English): a scene that names only
 # one of them is understood in the other, unless the other names something else there
-SYNONYMS: dict[str, tuple[str, ...]] = {"chips": ("crisps",), "crisps": ("chips",)}
+SYNONYMS: dict[str, tuple[str, ...]] = {
+    "chips": ("crisps",),
+    "crisps": ("chips",),
+    "bottle": ("water", "water bottle"),  # "could Person A have the water"
+}
+# words naming any person: "give the person the bottle" (with one person; else ambiguous)
+GENERIC_PEOPLE = ("person", "human")
 
 # words naming any object: "the two things", "all four objects" ("the thing" is ambiguous)
 GENERIC_NOUNS = ("thing", "object", "item")
@@ -505,6 +610,14 @@ WORDS: dict[str, str] = {
     "hey": "filler",
     "hi": "filler",
     "hello": "filler",
+    "hiya": "filler",
+    "possibly": "filler",
+    "howdy": "filler",
+    "yo": "filler",
+    # a hedge opening the request ("Maybe give Carol the chips?"): hltl.grounding.phrasing drops
+    # it there and refuses it anywhere else ("the cup and maybe the apple": is the apple asked?)
+    "maybe": "hedge",
+    "perhaps": "hedge",
     "um": "filler",
     "uh": "filler",
     "umm": "filler",
@@ -518,8 +631,11 @@ WORDS: dict[str, str] = {
     "sure": "filler",
     "again": "filler",
     "whichever": "whichever",
+    "whatever": "whatever",  # like whichever, or "whatever's left", "whatever is nearest to …"
+    "apiece": "all",  # "a mug apiece", like "each"
     # corrections (only after a comma or dash; see hltl.grounding.phrasing)
     "sorry": "correct",
+    "correction": "correct",
     "actually": "correct",
     "rather": "correct",
     "oops": "correct",
@@ -563,6 +679,7 @@ WORDS: dict[str, str] = {
     "can": "aux",
     "must": "aux",
     "may": "aux",
+    "might": "aux",
     "did": "aux",
     "does": "aux",
     "'ve": "aux",
@@ -702,6 +819,8 @@ class Lexicon:
         for h in scene.humans:
             for name in dict.fromkeys((h.id, h.name, *h.aliases, f"person {h.id}")):
                 self._add(Ref("human", h.id), name, plurals=False)
+            for noun in GENERIC_PEOPLE:
+                self._add(Ref("human", h.id), noun, plurals=False, strong=False)
         for s in scene.surfaces:
             for name in dict.fromkeys((s.id, *s.aliases)):
                 self._add(Ref("surface", s.id), name, plurals=False)
@@ -715,12 +834,14 @@ class Lexicon:
 
     @staticmethod
     def of(scene: Scene) -> Lexicon:
-        """The lexicon of ``scene``, shared by scenes with the same names (it is read-only, and
-        building it is most of a grounding's time)."""
+        """The lexicon of ``scene``, shared by scenes with the same names and positions (it is
+        read-only, and building it is most of a grounding's time). Positions are part of the
+        key: descriptions ("the mug nearest to Carol") are measured in ``lexicon.scene``, and
+        two layouts with the same names (4-4-square, 4-4-line) must not share one."""
         key = (
-            tuple((o.id, o.category, tuple(o.aliases)) for o in scene.objects),
-            tuple((h.id, h.name, tuple(h.aliases)) for h in scene.humans),
-            tuple((s.id, tuple(s.aliases)) for s in scene.surfaces),
+            tuple((o.id, o.category, tuple(o.aliases), o.position) for o in scene.objects),
+            tuple((h.id, h.name, tuple(h.aliases), h.position) for h in scene.humans),
+            tuple((s.id, tuple(s.aliases), s.center, s.size) for s in scene.surfaces),
             tuple(r.id for r in scene.robots),
         )
         return _lexicon(key, scene)
@@ -903,7 +1024,12 @@ def _correctable(word: str) -> bool:
 def _close_word(word: str, right: str) -> bool:
     """Whether a typed word is a typo of ``right`` inside a longer name (see _misspelt_phrase):
     as for a name of one word (see Lexicon.misspelt), and not a real word."""
-    return _correctable(word) and word not in common_words() and _one_edit(word, right)
+    if word in common_words() or not _one_edit(word, right):
+        return False
+    if len(word) == 3:  # "red mgu": beside an exact word, a short word by a swap of neighbours
+        plain = word.isalpha() and word not in WORDS and word not in VERBS
+        return plain and word not in PHRASE_WORDS and sorted(word) == sorted(right)
+    return _correctable(word)
 
 
 def _one_edit(a: str, b: str) -> bool:
@@ -985,8 +1111,11 @@ def _near_keywords(word: str) -> list[str]:
     if len(word) < 3 or not word.isalpha():
         return []
     near = [k for k in _keywords() if _one_edit(word, k)]
-    if len(word) == 3:  # a short word: only two neighbours swapped ("teh", "adn")
-        near = [k for k in near if len(k) == 3 and sorted(k) == sorted(word)]
+    if len(word) == 3:
+        # a short word: two neighbours swapped ("teh", "adn"), or a keyword of four letters
+        # with one left out ("giv", "gve"); a substitution ("hat" for "had") is too likely a
+        # different word
+        near = [k for k in near if (len(k) == 3 and sorted(k) == sorted(word)) or len(k) == 4]
     return near
 
 
@@ -995,7 +1124,10 @@ def _keyword_typo(word: str) -> str | None:
     if word in common_words() or word in PHRASE_WORDS:
         return None
     near = _near_keywords(word)
-    if len(near) != 1 or _lemma_of(near[0]) in _SKIPPED_LEMMAS:
+    # forms of one verb are one word here ("gve": give or gave); other keywords are not ("thae":
+    # "the" or "that", both determiners, but "that" may stand for "it")
+    said = {_lemma_of(k) if k in VERBS else k for k in near}
+    if len(said) != 1 or _lemma_of(near[0]) in _SKIPPED_LEMMAS:
         return None  # "thae": "the" or "that"? no guess
     return near[0]
 
@@ -1032,6 +1164,18 @@ def _merge_unknown(items: list[Item]) -> list[Item]:
     out: list[Item] = []
     for it in items:
         prev = out[-1] if out else None
+        if (
+            prev is not None
+            and prev.kind == "unknown"
+            and " " not in prev.lemma
+            and len(out) >= 2
+            and out[-2].kind == "word"
+            and out[-2].text.lower() in ("my", "our", "your")
+            and it.kind == "ent"
+            and all(r.kind == "human" for r in it.refs)
+        ):
+            out[-1] = it  # "my colleague Carol": a word saying who she is to the speaker
+            continue
         joinable = it.kind in ("unknown", "ent")
         if (
             prev is not None

@@ -9,7 +9,7 @@ from typing import Literal
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, foreign_words, lex
-from hltl.grounding.phrasing import first_refs, refine
+from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -72,6 +72,7 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
         )
     items = refine(items, lexicon)
     items, first = first_refs(items)
+    items, dropped = dropped_refs(items)
     _refuse(items, lexicon)
     parser = _Parser(lexicon)
     raw = parser.instruction(items)
@@ -81,6 +82,8 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     node = _dedupe(normalise(parser.expand(node, frozenset())))
     if first:
         node = _move_first(node, first, lexicon)
+    if dropped:
+        node = _without(node, dropped)
     check_deliveries(node, {h.id: h.name for h in scene.humans})
     return node
 
@@ -317,6 +320,7 @@ class _Parser:
                 continue
             current.append(it)
         segments.append((conn, current))
+        extra = self._added_after_steps(segments, items)
         result: _Raw | None = None
         for conn, seg in segments:
             seg = _strip_separators(seg)
@@ -362,7 +366,56 @@ class _Parser:
             else:  # then, before
                 result = _RawGroup("seq", [result, node])
         assert result is not None
+        if extra:
+            self._segment += 1
+            result = _RawGroup("and", [result, self.coord(extra)])
         return result
+
+    def _added_after_steps(
+        self, segments: list[tuple[str, list[Item]]], items: list[Item]
+    ) -> list[Item]:
+        """'First X, then Y, and also Z': a clause added with ', (and) also' after the last step
+        of a sequence adds to the whole request, not to that step (Z is not ordered after X).
+
+        Cuts Z off the last segment and returns it (empty when there is none). Z must open a
+        clause (a verb, a subject, or a person before the objects); objects alone after ', also'
+        ("then give B the chips, and also the cup") could be B's in that step or a new task, and
+        an added clause before a later step could belong to either: both are refused.
+        """
+        for n, (conn, seg) in enumerate(segments):
+            if n == 0 or conn != "then":
+                continue
+            cut = next(
+                (
+                    k
+                    for k in range(1, len(seg))
+                    if _is(seg[k - 1], ",")
+                    and _is(seg[k], "and", "also")
+                    and "also" in seg[k].text.lower().split()
+                ),
+                None,
+            )
+            if cut is None:
+                continue
+            added = _strip_separators(seg[cut:])
+            head = [it for it in added if not _is(it, *_SKIP, "det")]
+            opens = bool(head) and (
+                _is_verb(head[0])
+                or (
+                    len(head) > 1
+                    and head[0].kind == "ent"
+                    and all(r.kind == "human" for r in head[0].refs)
+                    and (_is_verb(head[1]) or head[1].kind == "ent")
+                )
+            )
+            if not opens or n != len(segments) - 1:
+                raise GroundingError(
+                    f"in {_text(items)!r}, {_text(added)!r} could belong to the step before it or "
+                    "to the whole request: say it in its own sentence ('… . Also …')"
+                )
+            segments[n] = (conn, seg[: cut - 1])
+            return added
+        return []
 
     # -- coordination ---------------------------------------------------------------------------
     def coord(self, items: list[Item]) -> _Raw:
@@ -667,6 +720,14 @@ class _Parser:
                 return
             if np.quant != "all" and len(ids) > 1 and not all(r.plural for r in np.refs):
                 raise ambiguous(np, self.lex)
+            typed = self.lex.lookup(np.text) if not np.quant and len(ids) == 1 else None
+            if typed is not None and len({r.id for r in typed}) == 1 and typed[0].plural:
+                # "give Alice the cups" with one cup: a plural asks for more than the scene has
+                # (a plural narrowed to one by a description, "the mugs that aren't red", is not)
+                raise GroundingError(
+                    f"{np.text!r} in {frag.text!r}: the scene has only one ({ids[0]}); say "
+                    f"'the {ids[0]}'; {self.lex.listing('object')}"
+                )
             frag.objects = ids
             return
         if np.kind == "ent":
@@ -993,6 +1054,33 @@ def _move_first(node: Node, first: tuple[str, ...], lexicon: Lexicon) -> Node:
     return normalise(Group("seq", (join(head), join(rest))))
 
 
+def _without(node: Node, dropped: tuple[str, ...]) -> Node:
+    """The instruction with the tasks of the dropped objects taken out ('…. Forget the chips.').
+
+    Refused when a dropped task is one of a choice (was the choice dropped, or that option?)
+    or nothing would be left."""
+    names = ", ".join(dropped)
+
+    def keep(n: Node, in_or: bool) -> Node | None:
+        if isinstance(n, Task):
+            if n.obj not in dropped:
+                return n
+            if in_or:
+                raise GroundingError(
+                    f"forgetting {names} drops an option of a choice: say the request again"
+                )
+            return None
+        kids = [k for k in (keep(c, in_or or n.op == "or") for c in n.children) if k is not None]
+        if not kids:
+            return None
+        return kids[0] if len(kids) == 1 else Group(n.op, tuple(kids))
+
+    kept = keep(node, False)
+    if kept is None:
+        raise GroundingError(f"forgetting {names} leaves nothing to do")
+    return normalise(kept)
+
+
 def _substitute(node: Node, chosen: dict[str, str]) -> Node:
     if isinstance(node, Task):
         obj = chosen.get(node.obj)
@@ -1056,7 +1144,9 @@ def _required(node: Node) -> set[Task]:
 
 def _only_fillers(items: list[Item]) -> bool:
     """A sentence or list part of politeness alone ('Thanks!', ', please')."""
-    return all(_is(it, "filler", ",", "and", "also", "then", "subject", "aux") for it in items)
+    return all(
+        _is(it, "filler", ",", "and", "also", "then", "subject", "aux", "first") for it in items
+    )
 
 
 def _tidy_pieces(
@@ -1095,9 +1185,10 @@ def _trailing_order(items: list[Item]) -> list[Item]:
     core = list(items)
     while core and _is(core[-1], ",", "filler"):
         core.pop()
-    if len(core) < 3 or not _is(core[-1], "then", "first"):
+    if len(core) < 3 or not _is(core[-1], "then", "first", "after", "prior"):
         return items
-    lemma = "then" if core[-1].lemma == "then" else "prior"
+    # "… after" / "… after that" at the end is "afterwards"; "… before that" is "first"
+    lemma = "then" if core[-1].lemma in ("then", "after") else "prior"
     body = core[:-1]
     seps = [k for k, it in enumerate(body) if _is(it, "and", ",")]
     for k in reversed(seps):
@@ -1114,6 +1205,7 @@ def _trailing_order(items: list[Item]) -> list[Item]:
                     and {r.kind for r in body[j].refs} == {"human"}
                     and next((x.kind for x in body[j + 1 :] if not _is(x, "det")), "") == "ent"
                 )
+                or _own_target(body, j)  # "… and the chips to Person A after that"
             )
         )
         if starts_clause:
@@ -1129,6 +1221,21 @@ def _trailing_order(items: list[Item]) -> list[Item]:
             )
         return body  # "Carol needs the bottle first": already first
     return items
+
+
+def _own_target(body: list[Item], j: int) -> bool:
+    """Whether objects at ``j`` come with their own recipient or place before the next
+    separator ('the chips to Person A'): a clause without its verb."""
+    while j < len(body) and _is(body[j], "det"):
+        j += 1
+    if j >= len(body) or body[j].kind != "ent" or {r.kind for r in body[j].refs} != {"object"}:
+        return False
+    for k in range(j + 1, len(body) - 1):
+        if _is(body[k], "and", ",", "or"):
+            return False
+        if _is(body[k], "to", "for", "on") and body[k + 1].kind == "ent":
+            return True
+    return False
 
 
 def _edge(node: _Raw, last: bool) -> _Frag:

@@ -263,6 +263,7 @@ def _opens_remark(items: list[Item], k: int) -> bool:
     verb = nxt.lemma.split()[0] if nxt.kind == "unknown" else ""
     return (
         nxt.text.lower() in ("'s", "is", "was", "'re", "are", "has", "had", "'ve", "have")
+        or nxt.lemma == "verb:have"  # "she's got a meeting in five"
         or verb in _REMARK_VERBS
         or verb.endswith("ed")
         or (nxt.lemma in _WANTS and _something(items, j + 1))
@@ -295,7 +296,20 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
     'have' only as 'has been …'. Outside a reason, one unknown word at least."""
     if not words:
         return False
-    glue = ("aux", "filler", "det", "subject", "not", "to", "for", "on", "it", "them", "and")
+    glue = (
+        "aux",
+        "filler",
+        "det",
+        "subject",
+        "not",
+        "to",
+        "for",
+        "on",
+        "it",
+        "them",
+        "and",
+        "num",
+    )
     for n, x in enumerate(words):
         nxt = words[n + 1] if n + 1 < len(words) else None
         if _humans(x) or _is(x, *glue):
@@ -304,13 +318,14 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             if _hides_name(x, lexicon):
                 return False
             continue
+        after = next((y for y in words[n + 1 :] if not _is(y, "det")), None)
         if x.lemma in _HAS and (
             reason
             or _something(words, n + 1)
             or (
                 x.lemma == "verb:have"
                 and nxt is not None
-                and (_is(nxt, "aux") or nxt.kind == "unknown")
+                and (_is(nxt, "aux") or (after is not None and after.kind == "unknown"))
             )
         ):
             continue
@@ -428,7 +443,7 @@ def _whichever(items: list[Item]) -> list[Item]:
     out: list[Item] = []
     skipping = False
     for k, it in enumerate(items):
-        if _is(it, "whichever"):
+        if _is(it, "whichever", "whatever"):
             if k + 1 < len(items) and _objects(items[k + 1]):
                 out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
                 continue
@@ -731,6 +746,11 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             if prev is None:
                 prev = _choice_of_two(out, k)  # "A the cup or the bottle and B the other"
             if prev is None:
+                other = _other_than(out, lexicon)  # "Carol the red mug and Bob the other one"
+                if other is not None:
+                    out.append(replace(other, text=f"the other ({other.text})"))
+                    k += 1
+                    continue
                 raise GroundingError(
                     f"{it.text!r} needs a choice before it, as in 'one of the mugs … the other'"
                 )
@@ -774,12 +794,23 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 continue
             if it.text.lower() in ("each", "every", "all", "either") and quant != "num":
                 pass  # left for the parser ("either … or", "each" as a filler below)
+            elif _one_each(items, k):  # "give Alice and Bob one each": one object each
+                ids = [o.id for o in lexicon.scene.objects]
+                refs = tuple(Ref("object", i) for i in ids)
+                out.append(Item("ent", "one", it.text, refs, quant="some", group=k))
+                k += 1
+                continue
             elif quant == "num" or (quant == "some" and it.text.lower() in ("one", "any")):
                 out.append(Item("unknown", it.text.lower(), it.text))
                 k += 1
                 continue
-        if it.kind == "word" and it.text.lower() == "each":
+        if it.kind == "word" and it.text.lower() in ("each", "apiece"):
             k += 1  # "a mug each", "would each like": distribution is how shared mentions work
+            continue
+        either = _either_one(items, k, out, lexicon)
+        if either is not None:  # "Person A wants either one"
+            out.append(either)
+            k += 1
             continue
         if it.kind == "word" and it.text.lower() in ("a", "an"):
             out.append(it)
@@ -984,7 +1015,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                 )
             )
             said_no = any(
-                x.text.lower() in ("no", "instead") or x.text.lower() in RETRACTIONS
+                x.text.lower() in ("no", "instead", "never mind") or x.text.lower() in RETRACTIONS
                 for x in items[k:j]
             )
             if said_no and not alone and _clause_opens(after, r):
@@ -1169,6 +1200,7 @@ def _nobody(items: list[Item]) -> list[Item]:
     """
     out: list[Item] = []
     none: list[Item] = []
+    untouched: list[Item] = []  # objects nobody gets
     k = 0
     while k < len(items):
         it = items[k]
@@ -1189,6 +1221,29 @@ def _nobody(items: list[Item]) -> list[Item]:
                     out.pop()
                 k = j + 2
                 while k < len(items) and _is(items[k], ",", "and"):
+                    k += 1
+                continue
+        # "Nobody gets the apple; give Bob the cup": the objects go to nobody
+        if _nobody_at(items, k) and (k == 0 or _is(items[k - 1], ",", "and", *_END)):
+            j = k + (1 if it.kind == "unknown" else 2)
+            while j < len(items) and _is(items[j], "aux", "filler"):
+                j += 1
+            n = j + 1
+            while n < len(items) and (_objects(items[n]) or _is(items[n], "det", "and")):
+                n += 1
+            objs = [x for x in items[j + 1 : n] if _objects(x)]
+            if (
+                j < len(items)
+                and items[j].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
+                and objs
+                and _clause_end(items, n)
+                and any(x.kind == "ent" for x in items[:k] + items[n:])
+            ):
+                untouched.extend(objs)
+                while out and _is(out[-1], ",", "and"):
+                    out.pop()
+                k = n
+                while k < len(items) and _is(items[k], ",", "and", *_END):
                     k += 1
                 continue
         # ", not (to|for) P" after a request naming another person (the contrast after a
@@ -1214,7 +1269,12 @@ def _nobody(items: list[Item]) -> list[Item]:
         out.append(it)
         k += 1
     refused = {r.id for x in none for r in x.refs}
+    kept = {r.id for x in untouched for r in x.refs}
     for x in out:
+        if _objects(x) and {r.id for r in x.refs} & kept:
+            raise GroundingError(
+                f"{x.text!r} is to go to nobody and to someone in the same instruction: say which"
+            )
         if _humans(x) and {r.id for r in x.refs} & refused:
             raise GroundingError(
                 f"{x.text!r} is to get nothing and something in the same instruction: say which"
@@ -1480,6 +1540,16 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     # "I need the cup to go to Alice" → "the cup go to Alice"
                     items[k:end] = [*clause[: n + 1], *clause[n + 2 :]]
                     continue
+                if (
+                    n == 1
+                    and clause[0].text.lower() == "that"
+                    and len(clause) > 2
+                    and _humans(clause[1])
+                    and _is_verb_item(clause[2])
+                ):
+                    # "I would like that Alice gets the bottle": the clause after 'that'
+                    items[k:end] = clause[1:]
+                    continue
                 if any(_is(x, "to", "for", "on") for x in clause):
                     # drop "I need" and the participle: "the apple and the cup to Carol"
                     rest = [
@@ -1666,6 +1736,11 @@ def _last(items: list[Item]) -> list[Item]:
     after = list(items[k + 1 :])
     while after and (_is(after[0], *_SEPARATORS, "filler", "first")):
         after.pop(0)
+    end = len(after)
+    while end > 0 and (after[end - 1].kind == "punct" or _is(after[end - 1], "filler")):
+        end -= 1
+    if end > 0 and _is(after[end - 1], "prior"):
+        del after[end - 1]  # "X last, and Y before that": 'last' has put Y first already
     rest = before + ([Item("punct", ".", ".")] if before and after else []) + after
     while rest and rest[-1].kind == "punct":
         rest.pop()
@@ -1687,18 +1762,436 @@ def _datives(items: list[Item]) -> list[Item]:
     return out
 
 
+# -- session 6 -------------------------------------------------------------------------------------
+
+
+def _opening(items: list[Item], k: int) -> bool:
+    """Whether only fillers, separators or ordering words stand between a sentence start and k."""
+    n = k - 1
+    while n >= 0 and _is(items[n], "filler", ",", "and", "then", "first", "correct"):
+        n -= 1
+    return n < 0 or (items[n].kind == "punct" and items[n].lemma in _END)
+
+
+def _hedges(items: list[Item]) -> list[Item]:
+    """'Maybe give Carol the chips?': a hedge opening a request is politeness; anywhere else
+    ('the cup and maybe the apple') it leaves open whether to do something, so it is refused."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        if _is(it, "hedge"):
+            if not _opening(items, k):
+                raise GroundingError(f"{it.text!r} leaves open whether to do it: say what to do")
+            continue
+        out.append(it)
+    return out
+
+
+def _asked_for(items: list[Item]) -> list[Item]:
+    """'Carol asked for the bottle', 'Bob's asking for the cup': a want, when objects follow;
+    otherwise ('she asked for it earlier') the words stay what they were, a remark."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        if not _is(it, "ask_for"):
+            out.append(it)
+            continue
+        if (
+            _starts_objects(items, k + 1)
+            and k > 0
+            and (
+                _humans(items[k - 1]) or _is(items[k - 1], "aux", "filler", "verb:have", "pronoun")
+            )
+        ):
+            out.append(Item("word", "verb:want", it.text))
+            continue
+        ask, _, prep = it.text.rpartition(" ")
+        out += [Item("unknown", ask.lower(), ask), Item("word", "for", prep)]
+    return out
+
+
+def _infinitives(items: list[Item]) -> list[Item]:
+    """'Please to give the apple for Bob': a 'to' opening a clause before its verb is no
+    preposition."""
+    return [
+        it
+        for k, it in enumerate(items)
+        if not (
+            _is(it, "to")
+            and k + 1 < len(items)
+            and _is_verb_item(items[k + 1])
+            and _opening(items, k)
+        )
+    ]
+
+
+def _do_for(items: list[Item]) -> list[Item]:
+    """'Do the cup for Alice first': 'do' opening a clause, then objects and 'for'/'to' a
+    person in that clause, is a hand-over."""
+    return [
+        Item("word", "verb:give", it.text)
+        if _is(it, "do")
+        and _opening(items, k)
+        and _starts_objects(items, k + 1)
+        and _for_person(items, k + 1)
+        else it
+        for k, it in enumerate(items)
+    ]
+
+
+def _for_person(items: list[Item], k: int) -> bool:
+    """Whether 'for'/'to' and a person follow ``k`` before the clause ends."""
+    while k + 1 < len(items) and not _is(items[k], ",", "and", "then", *_END):
+        if _is(items[k], "for", "to") and _humans(items[k + 1]):
+            return True
+        k += 1
+    return False
+
+
+def _choices(items: list[Item]) -> bool:
+    """Whether the instruction leaves a choice of objects open ('or', 'a mug', 'whichever')."""
+    for k, x in enumerate(items):
+        if _is(x, "or", "either", "q:some", "whichever"):
+            return True
+        several = _objects(x) and len({r.id for r in x.refs}) > 1
+        if several and k > 0 and items[k - 1].text.lower() in ("a", "an", "any", "one", "either"):
+            return True
+    return False
+
+
+def _rest_at(items: list[Item], k: int) -> tuple[int, int] | None:
+    """'the rest (of them)', 'what's left', 'everything else', 'the other three', 'the others',
+    'the remaining two' at ``k``: (words, the number said or 0), else None."""
+    it = items[k]
+    low = it.lemma if it.kind == "unknown" else it.text.lower()
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    if it.kind == "unknown" and low.split()[0] in ("rest", "others"):
+        n = 1
+        if low == "rest of" and nxt is not None and (_is(nxt, "it") or nxt.lemma == "pronoun"):
+            n = 2  # "the rest of them"
+        return (n, 0) if low in ("rest", "others", "rest of") else None
+    if _is(it, "wh", "whatever") and low in ("what", "whatever") and k + 2 < len(items):
+        be = items[k + 1].text.lower() in ("'s", "is")
+        if be and items[k + 2].kind == "unknown" and items[k + 2].lemma == "left":
+            return 3, 0
+    if (
+        _is(it, "q:everything")
+        and nxt is not None
+        and nxt.kind == "unknown"
+        and nxt.lemma == "else"
+    ):
+        return 2, 0
+    if _is(it, "other") and nxt is not None and nxt.kind == "word":
+        count = NUMBERS.get(nxt.text.lower()) or (int(nxt.text) if nxt.text.isdigit() else 0)
+        if count >= 2:  # "the other one" is _other_than's
+            n = 2
+            if (
+                k + 2 < len(items)
+                and _objects(items[k + 2])
+                and items[k + 2].lemma in ("things", "objects", "items")
+            ):
+                n = 3
+            return n, count
+    return None
+
+
+def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Give Alice the chips and Bob the rest': every object of the scene no other part of the
+    instruction names (a number said must match). Refused when the instruction leaves a choice
+    open (what is left would depend on it) or nothing is left."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        found = _rest_at(items, k)
+        if found is None:
+            out.append(items[k])
+            k += 1
+            continue
+        n, count = found
+        words = " ".join(x.text for x in items[k : k + n])
+        others = items[:k] + items[k + n :]
+        if _choices(others) or any(_rest_at(items, j) for j in range(k + n, len(items))):
+            raise GroundingError(
+                f"{words!r}: what is left depends on a choice or another 'rest'; name the objects"
+            )
+        named = {r.id for x in others if _objects(x) for r in x.refs}
+        left = [o.id for o in lexicon.scene.objects if o.id not in named]
+        if not named:
+            raise GroundingError(f"{words!r}: left after what? nothing else is named")
+        if not left:
+            raise GroundingError(f"{words!r}: nothing is left; {lexicon.listing('object')}")
+        if count and count != len(left):
+            raise GroundingError(f"{words!r}: {len(left)} left ({', '.join(left)}), not {count}")
+        refs = tuple(Ref("object", i, plural=True) for i in left)
+        out.append(Item("ent", words.lower(), words, refs, quant="all"))
+        k += n
+    return out
+
+
+def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'whatever is closest to Person B': the object nearest to them (read by _places)."""
+    out: list[Item] = []
+    k = 0
+    everything = tuple(Ref("object", o.id) for o in lexicon.scene.objects)
+    while k < len(items):
+        it = items[k]
+        if (
+            _is(it, "whatever")
+            and k + 2 < len(items)
+            and items[k + 1].text.lower() in ("'s", "is")
+            and _is(items[k + 2], "near", "nearest")
+        ):
+            out.append(Item("ent", "whatever", it.text, everything))
+            k += 2
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
+def _other_than(out: list[Item], lexicon: Lexicon) -> Item | None:
+    """'the other (one)' after one object named without a choice: the one other object of its
+    category ('the red mug … the other one': the blue mug), or, when it is the only one of its
+    kind, the one other object of the scene; else None (refused as unclear)."""
+    last = next((x for x in reversed(out) if _objects(x)), None)
+    if last is None or last.quant or len({r.id for r in last.refs}) != 1:
+        return None
+    named = {r.id for x in out if _objects(x) for r in x.refs}
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    one = last.refs[0].id
+    kind = [i for i, c in cats.items() if c == cats[one] and i != one]
+    if kind:
+        left = [i for i in kind if i not in named]
+    else:
+        left = [i for i in cats if i not in named] if len(cats) == 2 else []
+    if len(left) != 1:
+        return None
+    return Item("ent", left[0], left[0], (Ref("object", left[0]),))
+
+
+def _one_each(items: list[Item], k: int) -> bool:
+    """'one each' / 'one apiece' with no object named anywhere: any object, a different one
+    for each (like 'one item each')."""
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    return (
+        items[k].text.lower() == "one"
+        and nxt is not None
+        and nxt.text.lower() in ("each", "apiece")
+        and not any(_objects(x) for x in items)
+    )
+
+
+def _either_one(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> Item | None:
+    """'Person A wants either one', 'give Bob any one' (right after the verb or the person, no
+    object named anywhere): one of the scene's objects, 'either' only when there are two."""
+    it = items[k]
+    low = it.text.lower()
+    if not (_is(it, "filler") and low in ("either one", "any one")):
+        return None
+    n = len(out)
+    while n > 0 and _is(out[n - 1], "det"):
+        n -= 1
+    if n == 0 or not (_is_verb_item(out[n - 1]) or _humans(out[n - 1])):
+        return None
+    if any(_objects(x) for x in items):
+        return None
+    ids = [o.id for o in lexicon.scene.objects]
+    if low.startswith("either") and len(ids) != 2:
+        raise GroundingError(
+            f"{it.text!r}: the scene has {len(ids)} objects, not two; name them; "
+            f"{lexicon.listing('object')}"
+        )
+    return Item("ent", low, it.text, tuple(Ref("object", i) for i in ids), quant="some", group=k)
+
+
+_RANKS = {"first": 1, "second": 2, "secondly": 2, "third": 3, "thirdly": 3, "last": 99}
+_ORDERING = frozenset({"then", "after", "before", "once", "prior", "in_order", "first", "last"})
+
+
+def _ordinals(items: list[Item]) -> list[Item]:
+    """'Give Carol the apple second and Alice the cup first': parts of a sentence that each end
+    with an ordinal are steps in that order. A later part said without its verb (or person)
+    takes it from the first part ('the chips first and the bottle second')."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        out.extend(_ranked(sent) or sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _ranked(sent: list[Item]) -> list[Item] | None:
+    stop = len(sent)
+    while stop > 0 and _is(sent[stop - 1], "filler", ","):
+        stop -= 1
+    ends = [
+        p
+        for p in range(1, stop)
+        if sent[p].text.lower() in _RANKS
+        and (p + 1 == stop or _is(sent[p + 1], ",", "and"))
+        and not _is(sent[p - 1], ",", "and", "filler")
+    ]
+    if len(ends) < 2 or ends[-1] != stop - 1:
+        return None
+    if any(_is(x, *_ORDERING) for n, x in enumerate(sent[:stop]) if n not in ends):
+        return None
+    chunks: list[list[Item]] = []
+    begin = 0
+    for p in ends:
+        while begin < p and _is(sent[begin], ",", "and"):
+            begin += 1
+        chunks.append(sent[begin:p])
+        begin = p + 1
+    ranks = [_RANKS[sent[p].text.lower()] for p in ends]
+    if len(set(ranks)) != len(ranks):
+        said = " and ".join(repr(sent[p].text) for p in ends)
+        raise GroundingError(f"{said} in one sentence give two parts the same place: say the order")
+    if not all(chunks):
+        return None
+    head = chunks[0]
+    verb = next((n for n, x in enumerate(head) if _is_verb_item(x)), None)
+    obj = next((n for n, x in enumerate(head) if _objects(x)), None)
+    filled = [head]
+    for chunk in chunks[1:]:
+        first = next((x for x in chunk if not _is(x, "det", "filler")), None)
+        if first is None or _is_verb_item(first) or verb is None:
+            filled.append(chunk)
+        elif _humans(first) or obj is None:
+            filled.append([*head[: verb + 1], *chunk])  # "… and Alice the cup first"
+        else:
+            cut = obj
+            while cut > 0 and _is(head[cut - 1], "det"):
+                cut -= 1
+            filled.append([*head[:cut], *chunk])  # "… and the bottle second"
+    order = sorted(range(len(filled)), key=lambda n: ranks[n])
+    result: list[Item] = []
+    for n in order:
+        if result:
+            result += [Item("punct", ",", ","), Item("word", "then", "then")]
+        result += filled[n]
+    return result + sent[stop:]
+
+
+def _never_mind(items: list[Item]) -> list[Item]:
+    """'Hand Bob the apple. Never mind, give it to Carol instead.': taking back the sentence
+    before, like 'scratch that' (without a comma after it, 'never mind X' cancels X)."""
+    return [
+        Item("word", "correct", it.text)
+        if _is(it, "cancel")
+        and it.text.lower() == "never mind"
+        and k > 0
+        and _opening(items, k)
+        and k + 1 < len(items)
+        and _is(items[k + 1], ",")
+        else it
+        for k, it in enumerate(items)
+    ]
+
+
+def _i_mean_after(items: list[Item]) -> list[Item]:
+    """'Give Carol the red mug, er, the blue one I mean': a correction marker said after the
+    name it brings is read before it ('…, I mean the blue one')."""
+    for k, it in enumerate(items):
+        if not (_is(it, "correct") and it.text.lower() in ("i mean", "i meant")):
+            continue
+        if k + 1 < len(items) and not (items[k + 1].kind == "punct" and items[k + 1].lemma in _END):
+            continue
+        if k < 2 or items[k - 1].kind != "ent":
+            continue
+        s = k - 1
+        while s > 0 and _is(items[s - 1], "det"):
+            s -= 1
+        if s > 0 and _is(items[s - 1], ",", "-"):
+            return [*items[:s], it, *items[s:k], *items[k + 1 :]]
+    return items
+
+
+def _not_after(items: list[Item]) -> list[Item]:
+    """'Give Carol the chips, but don't give her the apple': a negated clause ending the
+    sentence, after a request, adds no task; dropped when nothing else in the instruction names
+    its objects and it says no 'it'/'them' (else refused as a negation)."""
+    for start, end in _sentences(items):
+        commas = [n for n in range(start + 1, end) if _is(items[n], ",")]
+        if not commas:
+            continue
+        c = commas[-1]
+        head = [x for x in items[c + 1 : end] if not _is(x, "filler", "det")]
+        while head and _is(head[0], "and"):
+            head = head[1:]
+        objs = _unwanted(head)
+        if objs is None:
+            continue
+        if not any(x.kind == "ent" for x in items[start:c]):
+            continue
+        rest = items[:c] + items[end:]
+        if any(_is(x, "it", "them") for x in items[c:end]) or any(
+            _objects(x) and {r.id for r in x.refs} & objs for x in rest
+        ):
+            continue
+        return _not_after(items[:c] + items[end:])
+    return items
+
+
+def dropped_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
+    """'Give Alice the chips and Bob the cup. Oh, and forget the chips.': a later sentence that
+    only cancels objects named before drops their tasks from the instruction (without a running
+    spec there is nothing else it could cancel). Returns the items without it and the ids."""
+    spans = _sentences(items)
+    for start, end in spans[1:]:
+        k = start
+        while k < end and _is(items[k], "filler", "and", "also", ","):
+            k += 1
+        if k >= end or not _is(items[k], "cancel"):
+            continue
+        j = k + 1
+        if j < end and items[j].kind == "unknown" and items[j].lemma == "about":
+            j += 1
+        names = items[j:end]
+        if not names or not all(_objects(x) or _is(x, "det", "and", ",", "filler") for x in names):
+            continue
+        ids = tuple(dict.fromkeys(r.id for x in names if _objects(x) for r in x.refs))
+        said = {r.id for x in items[:start] if _objects(x) for r in x.refs}
+        if not ids or not set(ids) <= said:
+            continue
+        cut = end + 1 if end < len(items) else end
+        rest, more = dropped_refs(items[:start] + items[cut:])
+        return rest, tuple(dict.fromkeys((*ids, *more)))
+    return items, ()
+
+
+def _nobody_at(items: list[Item], k: int) -> bool:
+    """Whether 'nobody' / 'no one' / 'no-one' opens a clause at ``k``."""
+    it = items[k]
+    if it.kind == "unknown" and it.lemma in ("nobody", "no-one"):
+        return True
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    return (
+        _is(it, "not")
+        and it.text.lower() == "no"
+        and nxt is not None
+        and (nxt.text.lower() == "one")
+    )
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _preambles,
+    _plain(_hedges),
+    _plain(_infinitives),
     _plain(_is_after),
+    _plain(_asked_for),
     _plain(_questions),
+    _plain(_do_for),
     _plain(_after_all),
+    _rest,
+    _whatever_near,
     _plain(_whichever),
     _relatives,
     _one_anaphora,
     _plain(_demonstratives),
     _quantifiers,
+    _plain(_never_mind),
+    _plain(_i_mean_after),
     _plain(_corrections),
     _plain(_nobody),
     _plain(_instead_of),
@@ -1707,9 +2200,11 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _speaker,
     _persons,
     _plain(_not_wanted),
+    _plain(_not_after),
     _places,
     _plain(_there),
     _remarks,
+    _plain(_ordinals),
     _plain(_last),
     _plain(_datives),
 )
