@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import math
+import time
+
 import pytest
 
-from hltl.bench.cells import delivery_cell
+from hltl.bench.cells import FAMILIES, delivery_cell, mixed_cell
 from hltl.planner import PlanResult, PlanStatus, plan
-from hltl.planner.anytime import _Neighbourhood, _OrderWalk, construct, goals
+from hltl.planner.anytime import _jointly, _Neighbourhood, _OrderWalk, construct, goals
 from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.search import _Search, plan_steps
 from hltl.sim.scenarios import Scenario, generate
@@ -137,3 +140,72 @@ def test_exact_timeout_plan_is_no_worse_than_the_first_prioritized_one() -> None
     assert res.makespan <= to_seconds(first[0])
     assert res.lower_bound is not None and res.lower_bound <= res.makespan
     check_plan(cell.scene, cell.spec, {**res.to_dict(), "status": "solved"})
+
+
+@pytest.mark.parametrize(
+    ("family", "n", "seed"),
+    # the walk's plans are longer than the optimum on each (by up to 1.7 s)
+    [
+        ("line", 3, 0),
+        ("grid", 3, 5),
+        ("line", 4, 0),
+        ("square", 4, 0),
+        ("grid", 4, 1),
+        ("ordered", 4, 1),
+        ("ordered", 4, 7),
+        ("ordered", 4, 9),
+        ("place-deliver", 4, 0),
+        ("place-deliver", 4, 3),
+    ],
+)
+def test_joint_replanning_finds_the_exact_optimum_with_room(family: str, n: int, seed: int) -> None:
+    # with every place allowed and enough steps for any optimal plan (each lasts at least the
+    # shortest duration), the joint model's optimum is the exact search's; "first A, then B"
+    # and "put it on the shelf, then deliver the other" too
+    if family in FAMILIES:
+        cell = mixed_cell(family, n, seed)
+        scene, spec = cell.scene, cell.spec
+    else:
+        sc = generate(n, n, family, seed)
+        scene, spec = sc.scene, sc.spec
+    problem = Problem(scene, spec)
+    s = _Search(problem)
+    gls = goals(s, problem.start())
+    assert gls
+    walk = _OrderWalk(s, problem.start(), gls)
+    assert walk.best is not None
+    exact = plan(scene, spec, timeout=120)
+    assert exact.status is PlanStatus.SOLVED and exact.makespan is not None
+    assert to_seconds(walk.best[0]) > exact.makespan
+    shortest = min(i.lower for i in problem.instances)
+    room = walk.best[0] // shortest - len(walk.best[1])
+    found = _jointly(
+        problem,
+        s,
+        walk.router,
+        walk.best,
+        time.perf_counter() + 60,
+        detour=math.inf,
+        slack=max(0, room),
+    )
+    assert found is not None
+    assert to_seconds(found[0]) == pytest.approx(exact.makespan, abs=1e-9)
+    res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
+    check_plan(scene, spec, res.to_dict())
+
+
+@pytest.mark.parametrize(("layout", "seed"), [("grid", 2), ("random", 1)])
+def test_joint_replanning_never_returns_a_longer_plan_than_its_hint(layout: str, seed: int) -> None:
+    cell = delivery_cell(layout, 10, seed)
+    problem = Problem(cell.scene, cell.spec)
+    s = _Search(problem)
+    walk = _OrderWalk(s, problem.start(), goals(s, problem.start()) or [])
+    assert walk.best is not None
+    # a tiny time limit: whatever CP-SAT returns starts from the hint, a valid plan
+    for seconds in (0.05, 3.0):
+        found = _jointly(problem, s, walk.router, walk.best, time.perf_counter() + seconds)
+        if found is None:
+            continue
+        assert found[0] <= walk.best[0]
+        res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
+        check_plan(cell.scene, cell.spec, res.to_dict())

@@ -117,12 +117,14 @@ class Report:
         return dumps(self.to_dict())
 
     @classmethod
-    def from_dict(cls, d: Mapping[str, Any]) -> Report:
+    def from_dict(cls, d: Mapping[str, Any], episode: str | None = None) -> Report:
+        """A report from its JSON form; one that leaves out its episode (a tick ahead: it is
+        the request's) and an empty reason is of ``episode``."""
         try:
-            status = ActionStatus(
-                ActionState(d["state"]), float(d["progress"]), float(d["t"]), str(d["reason"])
-            )
-            return cls(str(d["episode"]), int(d["seq"]), int(d["handle"]), status)
+            state, reason = ActionState(d["state"]), str(d.get("reason", ""))
+            status = ActionStatus(state, float(d["progress"]), float(d["t"]), reason)
+            ep = d["episode"] if episode is None or "episode" in d else episode
+            return cls(str(ep), int(d["seq"]), int(d["handle"]), status)
         except (KeyError, TypeError, ValueError) as exc:
             raise BusError(f"malformed action report on the bus: {exc}") from None
 
@@ -145,27 +147,57 @@ def world_to_wire(w: WorldState) -> dict[str, Any]:
     }
 
 
+def world_changes(wire: dict[str, Any], before: dict[str, Any]) -> dict[str, Any]:
+    """A world state (:func:`world_to_wire`) as it differs from ``before``: its time and the
+    parts that changed (people, objects, hands, unavailable robots); the rest is taken from
+    the state before by :func:`world_from_wire` (``like``)."""
+    return {k: v for k, v in wire.items() if k == "t" or before.get(k) != v}
+
+
 def _v3(p: Sequence[Any]) -> Vec3:
     if len(p) != 3:
         raise ValueError(f"expected a point [x, y, z], got {p!r:.60}")
     return (float(p[0]), float(p[1]), float(p[2]))
 
 
-def world_from_wire(d: Mapping[str, Any]) -> WorldState:
-    """Inverse of :func:`world_to_wire`."""
+def world_from_wire(d: Mapping[str, Any], like: WorldState | None = None) -> WorldState:
+    """Inverse of :func:`world_to_wire`. With ``like``, the parts ``d`` leaves out (all but
+    its time) are those of ``like``: a tick ahead carries only what changed since the tick
+    before."""
     try:
+        if like is not None and len(d) < 5:
+            return WorldState(
+                t=float(d["t"]),
+                humans=_humans(d["humans"]) if "humans" in d else like.humans,
+                objects=_objects(d["objects"]) if "objects" in d else like.objects,
+                hands=_hands(d["hands"]) if "hands" in d else like.hands,
+                unavailable=(
+                    frozenset(str(r) for r in d["unavailable"])
+                    if "unavailable" in d
+                    else like.unavailable
+                ),
+            )
         return WorldState(
             t=float(d["t"]),
-            humans=tuple((str(h), _v3(p)) for h, p in d["humans"]),
-            objects=tuple(
-                (str(o), ObjectStatus(_v3(p), Loc(kind, str(ref))))
-                for o, p, kind, ref in d["objects"]
-            ),
-            hands=tuple((str(r), _v3(p)) for r, p in d["hands"]),
+            humans=_humans(d["humans"]),
+            objects=_objects(d["objects"]),
+            hands=_hands(d["hands"]),
             unavailable=frozenset(str(r) for r in d["unavailable"]),
         )
     except (KeyError, TypeError, ValueError) as exc:
         raise BusError(f"malformed world state on the bus: {exc}") from None
+
+
+def _humans(items: Any) -> tuple[tuple[str, Vec3], ...]:
+    return tuple((str(h), _v3(p)) for h, p in items)
+
+
+def _objects(items: Any) -> tuple[tuple[str, ObjectStatus], ...]:
+    return tuple((str(o), ObjectStatus(_v3(p), Loc(kind, str(ref)))) for o, p, kind, ref in items)
+
+
+def _hands(items: Any) -> tuple[tuple[str, Vec3], ...]:
+    return tuple((str(r), _v3(p)) for r, p in items)
 
 
 def finite_or_none(x: float) -> float | None:

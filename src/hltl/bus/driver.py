@@ -24,6 +24,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.bus.perception import PerceptionClient
+from hltl.bus.session import zenoh
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
@@ -90,6 +91,7 @@ class DriverStats:
     recoveries: int = 0
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
+    waited: float = 0.0  # wall seconds waiting for the node's answers
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -147,6 +149,7 @@ class BusCell:
         self.episode = uuid.uuid4().hex
         self.stats = DriverStats()
         self.link = Link(session, self.faults, name=f"executor-{cell}")
+        self._each = zenoh().ConsolidationMode.NONE
         self._cond = threading.Condition()
         self._latest: dict[int, Report] = {}
         self._local: dict[int, ActionStatus] = {}  # outcomes decided here (robot down)
@@ -269,6 +272,8 @@ class BusCell:
 
     def _confirm(self) -> None:
         """Settle suspicions from liveliness: a robot whose token nobody holds is down."""
+        if not self._suspect:  # (the common case, without the lock: one is seen next time)
+            return
         with self._cond:
             suspects, self._suspect = sorted(self._suspect), set()
         for r in suspects:
@@ -336,10 +341,18 @@ class BusCell:
                     list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
             t0 = time.perf_counter()
             try:
-                replies = list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
+                # unconsolidated: a reply is delivered as soon as it comes, not when the node's
+                # handler returns (what the node does after answering is off the critical path)
+                replies = self.session.get(
+                    key, payload=payload, timeout=self.timing.timeout, consolidation=self._each
+                )
             except Exception as exc:  # the session closed under us
                 raise BusError(f"the bus failed while asking {key}: {exc}") from None
+            answered, w0 = False, t0
             for reply in replies:
+                answered, now = True, time.perf_counter()
+                self.stats.waited += now - w0
+                w0 = now
                 if reply.ok is not None:
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
@@ -347,7 +360,7 @@ class BusCell:
                 if refusal is not None:
                     raise BusError(f"{key}: {refusal}")
                 # anything else is Zenoh's own error (the query timed out): no answer yet
-            if not replies:
+            if not answered:
                 # no queryable matched: if the node is gone entirely, waiting again is pointless
                 # unless its answer was lost; a short pause lets a restarting route settle
                 time.sleep(min(0.01, self.timing.timeout))
@@ -365,14 +378,15 @@ class BusCell:
         clock."""
         for rec in d.get("records", ()):
             self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
-        if "observation" in d:
-            self._obs = world_from_wire(d["observation"])
+        if "observation" in d:  # (a tick ahead: what changed since the one before)
+            self._obs = world_from_wire(d["observation"], like=self._obs)
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
-        reports = [Report.from_dict(item) for item in d.get("status", ())]
-        with self._cond:
-            for rep in reports:
-                if rep.episode == self.episode:
-                    self._accept(rep)
+        reports = [Report.from_dict(item, self.episode) for item in d.get("status", ())]
+        if reports:
+            with self._cond:
+                for rep in reports:
+                    if rep.episode == self.episode:
+                        self._accept(rep)
         self._clock(d)
 
     def _clock(self, d: dict[str, Any]) -> None:
@@ -436,6 +450,8 @@ class BusCell:
     def _log_down(self) -> None:
         """Log robots newly found down (liveliness callbacks only note them: the log is not
         thread-safe, so records are written from the executor's thread)."""
+        if len(self._logged) == len(self._down):  # (none new: the robots logged are down)
+            return
         with self._cond:
             new = [(r, why) for r, why in self._down.items() if r not in self._logged]
             self._logged.update(r for r, _ in new)

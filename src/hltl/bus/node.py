@@ -25,6 +25,7 @@ from hltl.bus.codec import (
     encode_pose,
     finite_or_none,
     loads,
+    world_changes,
     world_to_wire,
 )
 from hltl.bus.faults import FaultModel, Link
@@ -157,6 +158,11 @@ class _Ahead:
         return cls(count, tick, max_time)
 
 
+# a tick simulated ahead: its time, the observation, the actions' reports, and the observation
+# as the answer carries it (world_to_wire)
+_Ticked = tuple[float, WorldState, list["Report"], dict[str, Any]]
+
+
 @dataclass(slots=True)
 class _Batch:
     """Ticks simulated ahead of the executor, not yet confirmed: the executor consumes them
@@ -166,13 +172,25 @@ class _Batch:
     function of its inputs)."""
 
     id: int
-    restore: Callable[[], None]
+    restore: Callable[[], None] | None  # saved before the first tick ahead
     seq0: int
     latest0: dict[int, Report]
-    # (t, observation, reports, the observation as the answer carries it) of each tick
-    ticks: list[tuple[float, WorldState, list[Report], dict[str, Any]]]
+    ticks: list[_Ticked]
     latest: dict[int, Report]
     seq: int
+
+
+@dataclass(slots=True)
+class _Stretch:
+    """Where simulating ahead has got to (the next tick follows ``t``), and what to stop at."""
+
+    batch: _Batch
+    ahead: _Ahead
+    t: float
+    next: float | None
+    unavailable: list[str]
+    limit: int
+    done: bool = False
 
 
 class CellNode:
@@ -206,6 +224,7 @@ class CellNode:
         self.period = period
         self.session = session
         self.scene = scene
+        self._scene_wire = loads(dumps(scene.to_dict()), "scene")
         self.keys = Keys(cell)
         self.factory = factory
         self.faults = FaultModel() if faults is None else faults
@@ -261,7 +280,9 @@ class CellNode:
         with self._guard(query):
             d = loads(_payload(query), "reset request")
             try:
-                scene = scene_from_dict(d["scene"])
+                # (the scene this node serves, as it travels, needs no parsing again)
+                wire = d["scene"]
+                scene = self.scene if wire == self._scene_wire else scene_from_dict(wire)
                 events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
                 perception = PerceptionModel(**d["perception"])
                 episode, seed = str(d["episode"]), int(d["seed"])
@@ -338,7 +359,7 @@ class CellNode:
             if n != ep.last_step + 1:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
             commands = self._parse_commands(ep, d.get("commands", []))
-            self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
+            committed = self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
             # the step's commands, in order, before the clock: as the in-process loop calls them
             acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
             status = [a.to_dict() for a in acks if a is not None]
@@ -353,6 +374,7 @@ class CellNode:
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
+            self._publish_ticks(ep, committed)  # observers: once the executor has its answer
             if obs is not None:
                 self._publish_world(ep.cell, obs, t, answer["observation"])
 
@@ -473,61 +495,75 @@ class CellNode:
     ) -> None:
         """Simulate the ticks the executor will ask for next, until something happens that it
         may act on (an action ends, an instruction, a robot's availability changes) or
-        ``ahead.count`` ticks; they go in ``answer["ahead"]`` and wait in a batch for the
-        executor to say how many it used. Only cells whose state can be saved and restored
-        (the discrete-event simulator) are run ahead; others are stepped one tick per query."""
-        if ahead is None or ep.batch is not None:
+        ``ahead.count`` ticks; they go in ``answer["ahead"]`` (compact: :func:`_compact`) and
+        wait in a batch for the executor to say how many it used. Only cells whose state can
+        be saved and restored (the discrete-event simulator, the 3D one) are run ahead; others
+        are stepped one tick per query."""
+        if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return
-        restore = _saver(ep.cell)
-        if restore is None:
-            return
-        batch = _Batch(n, restore, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
-        out: list[dict[str, Any]] = []
-        try:
-            nxt, unavailable = answer["next"], answer["unavailable"]
-            while len(out) < min(ahead.count, ep.span):
-                due = math.inf if nxt is None else max(t, float(nxt))
-                t_next = min(t + ahead.tick, due, ahead.max_time)
-                if not t_next > t:
-                    break
-                obs, tick, reports = self._tick(ep, t_next, batch.latest, publish=False)
-                out.append(tick)
-                batch.ticks.append((t_next, obs, reports, tick["observation"]))
-                t, nxt = t_next, tick["next"]
-                if (
-                    _may_act(reports, batch.latest)
-                    or tick["instructions"]
-                    or tick["unavailable"] != unavailable
-                    or t >= ahead.max_time - 1e-9
-                ):
-                    break
-        except BaseException:
-            restore()
-            raise
-        finally:
-            # nothing is committed until the executor says so
-            batch.seq, self._seq = self._seq, batch.seq0
+        batch = _Batch(n, None, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
+        s = _Stretch(
+            batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
+        )
+        out = []
+        while (tick := self._ahead_tick(ep, s)) is not None:
+            out.append(tick)
         if out:
             ep.batch = batch
             answer["ahead"] = out
-            self.stats.ahead += len(out)
 
-    def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> None:
-        """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest."""
+    def _ahead_tick(self, ep: _Episode, s: _Stretch) -> dict[str, Any] | None:
+        """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
+        on from the batch's, not committed until the executor says so. The simulator is saved
+        before the first one."""
+        b, ahead = s.batch, s.ahead
+        due = math.inf if s.next is None else max(s.t, float(s.next))
+        t_next = min(s.t + ahead.tick, due, ahead.max_time)
+        if s.done or len(b.ticks) >= s.limit or not t_next > s.t:
+            s.done = True
+            return None
+        if b.restore is None:
+            b.restore = _saver(ep.cell)
+            assert b.restore is not None  # (_look_ahead checked the cell can be saved)
+        self._seq = b.seq
+        try:
+            obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
+        except BaseException:  # the cell failed: back to before the stretch, none of it kept
+            b.restore()  # (set above)
+            raise
+        finally:
+            b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
+        wire = tick["observation"]
+        s.done = (
+            _may_act(reports, b.latest)
+            or bool(tick["instructions"])
+            or tick["unavailable"] != s.unavailable
+            or t_next >= ahead.max_time - 1e-9
+        )
+        if b.ticks:  # the world as it differs from the tick before (the first one in full)
+            tick["observation"] = world_changes(wire, b.ticks[-1][3])
+        b.ticks.append((t_next, obs, reports, wire))
+        self.stats.ahead += 1
+        s.t, s.next = t_next, tick["next"]
+        return _compact(tick)
+
+    def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> list[_Ticked]:
+        """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest. The
+        committed ticks are returned, for observers (:meth:`_publish_ticks`)."""
         b = ep.batch
         if b is None:
-            return
+            return []
         if batch_id != b.id:
             raise BusError(f"look-ahead batch {batch_id!r} is not this node's ({b.id})")
-        self._commit(ep, consumed)
+        return self._commit(ep, consumed)
 
     def _settle_at(self, ep: _Episode, t: float) -> None:
         """A new command at time ``t``: the executor consumed every tick up to ``t``."""
         b = ep.batch
         if b is not None:
-            self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t))
+            self._publish_ticks(ep, self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t)))
 
-    def _commit(self, ep: _Episode, consumed: int) -> None:
+    def _commit(self, ep: _Episode, consumed: int) -> list[_Ticked]:
         b = ep.batch
         assert b is not None
         ep.batch = None
@@ -543,14 +579,18 @@ class CellNode:
         if consumed == len(b.ticks):  # all of it: the cell is already there
             ep.latest, self._seq = b.latest, b.seq
         else:
+            assert b.restore is not None  # saved before the first tick ahead
             b.restore()
             self.stats.undone += len(b.ticks) - consumed
             ep.latest, self._seq = dict(b.latest0), b.seq0
             for t, *_ in b.ticks[:consumed]:  # the same calls again give the same results
                 self._tick(ep, t, ep.latest, publish=False)
-        # the executor has had these ticks' reports in the answer; observers get the outcomes
-        # (every report stays in the state queryable) and the world
-        for t, obs, reports, wire in b.ticks[:consumed]:
+        return b.ticks[:consumed]
+
+    def _publish_ticks(self, ep: _Episode, ticks: list[_Ticked]) -> None:
+        """The executor has had these ticks' reports in the answer; observers get the outcomes
+        (every report stays in the state queryable) and the world."""
+        for t, obs, reports, wire in ticks:
             for rep in reports:
                 if rep.status.terminal:
                     self._publish(ep, rep)
@@ -794,10 +834,12 @@ class CellNode:
     def _reply(self, query: Any, data: dict[str, Any], key: str | None = None) -> None:
         self._reply_bytes(query, dumps(data), key)
 
-    def _reply_bytes(self, query: Any, payload: bytes, key: str | None = None) -> None:
+    def _reply_bytes(self, query: Any, payload: bytes, key: str | None = None) -> bool:
+        """Answer ``query``; ``False`` when the answer was lost (an injected fault)."""
         if self.link.reply_lost():
-            return
+            return False
         query.reply(key or str(query.key_expr), payload)
+        return True
 
 
 # What look-ahead keeps as it is in the 3D simulator: the posed MuJoCo model (``stage``: its
@@ -817,13 +859,10 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
     holds nothing but the pose of the rest, so advancing the restored simulator to its own
     time poses it again.
     """
-    shared: frozenset[str]
-    if type(cell) is Simulator:
-        shared = frozenset()
-    elif type(cell) is MujocoSimulator and not cell.on_pose:
-        shared = _MUJOCO_SHARED
-    else:
+    shared = _kept(cell)
+    if shared is None:
         return None
+    assert isinstance(cell, Simulator)
     sim: Simulator = cell
     kept: dict[str, Any] = {}
     rngs: dict[str, tuple[random.Random, Any]] = {}
@@ -854,6 +893,32 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
+
+
+# what a tick ahead leaves out when empty (or false): the executor reads their absence so
+_QUIET = ("instructions", "status", "records", "unavailable", "pending")
+
+
+def _compact(tick: dict[str, Any]) -> dict[str, Any]:
+    """A tick ahead as it travels: no empty lists, and its reports without their episode (the
+    request's) and empty reasons (see ``Report.from_dict``)."""
+    for k in _QUIET:
+        if not tick[k]:
+            del tick[k]
+    for item in tick.get("status", ()):
+        del item["episode"]
+        if not item["reason"]:
+            del item["reason"]
+    return tick
+
+
+def _kept(cell: Cell) -> frozenset[str] | None:
+    """What :func:`_saver` keeps as it is in ``cell``, or ``None`` when it cannot save it."""
+    if type(cell) is Simulator:
+        return frozenset()
+    if type(cell) is MujocoSimulator and not cell.on_pose:
+        return _MUJOCO_SHARED
+    return None
 
 
 def _may_act(reports: list[Report], latest: dict[int, Report]) -> bool:

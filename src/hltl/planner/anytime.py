@@ -8,6 +8,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from hltl.planner import lns
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
@@ -28,6 +29,16 @@ LNS_STEPS = 2
 PAIRS_TRIAL = 8
 # pair tables cost about a millisecond each; beyond this many goal atoms they wait for A*
 PAIRS_UP_TO = 8
+# CP-SAT re-plans every goal jointly (``_jointly``) when the plan phase has this many seconds,
+# after the walk over priority orders has had this share of them
+CP_MIN_SECONDS = 2.0
+CP_WALK_SHARE = 0.2
+# ... and has at most this many goals: with 32, CP-SAT's presolve alone takes about 3 s of the
+# budget, and the 10 s benchmark runs lost more on 32-robot lines (the walk's time) than they
+# gained on grids (docs/planner.md, "Anytime mode")
+CP_UP_TO = 16
+# ... keeping each object to places on routes at most this much slower than its quickest (s)
+CP_DETOUR = 0.6
 
 
 @dataclass(frozen=True, slots=True)
@@ -491,26 +502,103 @@ def _pairs_at_start(
 
 
 def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
-    """More plans until ``until``: a walk over priority orders for the first half of the time,
-    then large-neighbourhood search from the best of them (see ``_OrderWalk``, ``_Neighbourhood``);
-    the best plan found."""
+    """More plans until ``until``: a walk over priority orders, each new order followed by
+    large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
+    there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
+    the walk stops after
+    ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
+    (``_jointly``), then the walk goes on if time is left. The best plan found."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
         return None
     walk = _OrderWalk(s, node, gls)
     lns: _Neighbourhood | None = None
-    while time.perf_counter() < until:
+    best = walk.best
+    now = time.perf_counter()
+    joint = (
+        3 <= len(gls) <= CP_UP_TO
+        and until - now >= CP_MIN_SECONDS
+        and _joint_possible(problem, gls)
+    )
+    walk_until = now + CP_WALK_SHARE * (until - now) if joint else until
+
+    def better(found: _Found | None) -> None:
+        nonlocal best
+        if found is not None and (best is None or found[0] < best[0]):
+            best = found
+
+    while True:
+        now = time.perf_counter()
+        if now >= walk_until:
+            if not joint or best is None:
+                break
+            joint = False
+            better(_jointly(problem, s, walk.router, best, until))
+            walk_until = until
+            continue
         walk.step()
+        better(walk.best)
         if walk.best is None or len(gls) < 3:
             continue
         if lns is None or walk.best[0] < lns.cost:
             lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
         for _ in range(LNS_STEPS):
             lns.step()
-    if lns is not None and walk.best is not None and lns.best[0] < walk.best[0]:
-        return lns.best
-    return walk.best
+        better(lns.best)
+    return best
+
+
+def _joint_possible(problem: Problem, gls: Sequence[Goal]) -> bool:
+    """The joint model applies: fixed durations, goals that are events, CP-SAT installed."""
+    return (
+        problem.cost.fixed
+        and not problem.state_atom_objects
+        and all(g.atom.name in ("delivered", "placed", "picked") for g in gls)
+        and lns.available()
+    )
+
+
+def _jointly(
+    problem: Problem,
+    s: _Search,
+    router: _Router,
+    best: _Found,
+    until: float,
+    *,
+    detour: float = CP_DETOUR,
+    slack: int = 0,
+) -> _Found | None:
+    """``best`` re-planned by CP-SAT with every goal free (``lns.replan_jointly``), in at
+    most ``slack`` more steps, each object kept to places on routes at most ``detour`` seconds
+    slower than its quickest (and to those ``best`` uses); the plan is replayed through the
+    monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``)."""
+    node = router.node
+    graph = s.heuristic.graph
+    steps = [list(U) for _, U, _ in best[1]]
+    used: dict[int, set[int]] = {}
+    for U in steps:
+        for inst in U:
+            used.setdefault(inst.obj, set()).update((inst.pre, inst.post))
+    specs = []
+    for gi, g in enumerate(router.goals):
+        o = g.obj
+        here = node[0][o]
+        fires = frozenset(
+            i.index for row in problem.by_obj_pre[o] for i in row if g.atom in i.events
+        )
+        quickest = graph.event_time[o][here].get(g.atom, math.inf)
+        places = {
+            loc
+            for loc in range(len(problem.locs))
+            if router.alive[gi][loc]
+            and graph.place_time[o][here][loc] + graph.event_time[o][loc].get(g.atom, math.inf)
+            <= quickest + detour * TICKS_PER_SECOND
+        }
+        places |= {here, *used.get(o, ()), *(problem.instances[i].post for i in fires)}
+        specs.append(lns.GoalSpec(o, fires, frozenset(places), g.after))
+    new = lns.replan_jointly(problem, specs, node[0], steps, slack=slack, deadline=until)
+    return None if new is None else router.replay(new)
 
 
 class _Neighbourhood:

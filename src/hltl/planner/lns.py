@@ -1,0 +1,180 @@
+"""Anytime improvement by CP-SAT: every goal's route re-planned jointly, step by step."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from hltl.planner.problem import Instance, Problem
+
+# a plan as the model sees it: per step its instances
+Steps = list[list[Instance]]
+
+
+@dataclass(frozen=True, slots=True)
+class GoalSpec:
+    """A goal as the model needs it: its object, the instances that make its atom happen, the
+    places its object may pass through, and the goals whose atom must not happen later."""
+
+    obj: int
+    fires: frozenset[int]  # instance indices
+    places: frozenset[int]
+    after: tuple[int, ...]
+
+
+def available() -> bool:
+    """CP-SAT (the ``ortools`` package) can be imported."""
+    try:
+        import ortools.sat.python.cp_model  # noqa: F401
+    except ImportError:  # pragma: no cover - ortools is part of the dev and anytime extras
+        return False
+    return True
+
+
+def replan_jointly(
+    problem: Problem,
+    goals: Sequence[GoalSpec],
+    start: Sequence[int],
+    steps: Steps,
+    *,
+    slack: int = 0,
+    deadline: float,
+    seed: int = 0,
+) -> Steps | None:
+    """A plan for ``goals`` in at most ``len(steps) + slack`` steps, as short as CP-SAT finds
+    before ``deadline`` (``time.perf_counter()``; building the model counts), starting from
+    ``steps`` (its hint); None when it found none.
+
+    The model is time-indexed: where each goal's object is before each step (one of its
+    ``places``), and which instance it undergoes in each step. Under the step semantics of
+    docs/model.md: an instance needs its object where it starts and leaves it where it ends;
+    a robot does at most one instance per step and holds at most one object; it must hold
+    nothing to pick or receive; an object nothing acts on stays put. Each goal's atom happens
+    in exactly one step, no earlier than the atoms of the goals it must follow. Objects no goal
+    is about do not move (a robot holding one at the start holds it throughout). A step lasts
+    its longest instance, an empty one nothing, and the objective is their sum: the makespan.
+    The plan returned is not checked here: replay it through the monitors before using it.
+    """
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
+    p = problem
+    n_robots = len(p.robots)
+    T = len(steps) + slack
+    goal_objs = {g.obj for g in goals}
+    taken = 0  # robots holding an object no goal is about: out of play
+    for o, code in enumerate(start):
+        r = p.code_holder.get(code)
+        if r is not None and o not in goal_objs:
+            taken |= 1 << r
+    # the hint, complete: each instance's step, each object's place before each step, each
+    # step's longest duration
+    hint = {(inst.index, t) for t, step in enumerate(steps) for inst in step}
+    where = [list(start)]
+    for step in steps:
+        now = list(where[-1])
+        for inst in step:
+            now[inst.obj] = inst.post
+        where.append(now)
+    where += [where[-1]] * slack
+    longest = [max((i.lower for i in step), default=0) for step in steps] + [0] * slack
+
+    m = cp_model.CpModel()
+    x: dict[tuple[int, int], Any] = {}  # (instance, step) -> it runs in that step
+    loc: dict[tuple[int, int, int], Any] = {}  # (goal, step, place) -> the object is there
+    by_robot: list[list[list[Any]]] = [[[] for _ in range(n_robots)] for _ in range(T)]
+    by_length: list[dict[int, list[Any]]] = [{} for _ in range(T)]
+    held: list[list[list[Any]]] = [[[] for _ in range(n_robots)] for _ in range(T + 1)]
+    fire_step: list[Any] = []
+    chosen: list[list[tuple[int, Instance, Any]]] = []
+    for gi, g in enumerate(goals):
+        places = sorted(g.places)
+        for t in range(T + 1):
+            for code in places:
+                lit = m.new_bool_var("")
+                loc[(gi, t, code)] = lit
+                m.add_hint(lit, where[t][g.obj] == code)
+                r = p.code_holder.get(code)
+                if r is not None:
+                    held[t][r].append(lit)
+            m.add_exactly_one(loc[(gi, t, code)] for code in places)
+        for code in places:
+            m.add(loc[(gi, 0, code)] == int(code == start[g.obj]))
+        candidates = [
+            i
+            for row in p.by_obj_pre[g.obj]
+            for i in row
+            if i.pre in g.places
+            and (i.post in g.places or i.index in g.fires)
+            and not i.executors & taken
+        ]
+        fires = []
+        mine = []
+        for t in range(T):
+            acted = []
+            for inst in candidates:
+                lit = m.new_bool_var("")
+                x[(inst.index, t)] = lit
+                m.add_hint(lit, (inst.index, t) in hint)
+                m.add_implication(lit, loc[(gi, t, inst.pre)])
+                m.add_implication(lit, loc[(gi, t + 1, inst.post)])
+                for r in range(n_robots):
+                    if inst.executors >> r & 1:
+                        by_robot[t][r].append(lit)
+                by_length[t].setdefault(inst.lower, []).append(lit)
+                acted.append(lit)
+                mine.append((t, inst, lit))
+                if inst.index in g.fires:
+                    fires.append((t, lit))
+            for code in places:  # nothing done to the object: it stays
+                m.add(loc[(gi, t + 1, code)] >= loc[(gi, t, code)] - sum(acted))
+        chosen.append(mine)
+        m.add_exactly_one(lit for _, lit in fires)
+        fire_step.append(sum(t * lit for t, lit in fires))
+    # the free-robot preconditions: nothing held by a robot that picks or receives
+    for mine in chosen:
+        for t, inst, lit in mine:
+            for r in inst.free:
+                for h in held[t][r]:
+                    m.add_implication(lit, ~h)
+    for t in range(T + 1):
+        for r in range(n_robots):
+            if len(held[t][r]) > 1:
+                m.add_at_most_one(held[t][r])
+            if t < T and len(by_robot[t][r]) > 1:
+                m.add_at_most_one(by_robot[t][r])
+    for gi, g in enumerate(goals):
+        for j in g.after:
+            m.add(fire_step[gi] >= fire_step[j])
+    # each step lasts its longest instance: one indicator per duration level
+    objective = []
+    for t in range(T):
+        prev = 0
+        for d in sorted(by_length[t]):
+            y = m.new_bool_var("")
+            m.add_hint(y, longest[t] >= d)
+            for dd, lits in by_length[t].items():
+                if dd >= d:
+                    for lit in lits:
+                        m.add_implication(lit, y)
+            objective.append((d - prev) * y)
+            prev = d
+    m.minimize(sum(objective))
+
+    left = deadline - time.perf_counter()
+    if left <= 0:
+        return None
+    solver = cp_model.CpSolver()
+    solver.parameters.max_time_in_seconds = left
+    solver.parameters.num_workers = 1
+    solver.parameters.random_seed = seed
+    status = solver.solve(m)
+    if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+        return None
+    out: Steps = [[] for _ in range(T)]
+    for mine in chosen:
+        for t, inst, lit in mine:
+            if solver.value(lit):
+                out[t].append(inst)
+    return [step for step in out if step]
