@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import importlib.util
+import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +16,7 @@ from hltl.bench.realworld import (
     WORDING,
     Result3D,
     World3D,
+    _bars,
     _replans,
     _world,
     format_t16,
@@ -216,11 +217,6 @@ def test_motion_mode_plans_with_the_durations_the_arms_take() -> None:
         assert (first < 1e-5) if motion else (first > 1.0)
 
 
-@dataclass
-class _FakeCost:
-    infeasible_cost: float = 1e3
-
-
 class _FakeSim:
     """Answers motion_of like the 3D simulator: one handle's motion came from its IK fallback."""
 
@@ -241,17 +237,16 @@ def test_actions_without_a_motion_plan_are_found_from_both_sides() -> None:
 
     recs: list[LogRecord] = [
         start(1, "pick", 4.0),
-        start(2, "handover_r2r", 1000.0),  # hltl's motion model charged its sentinel
+        start(2, "handover_r2r", math.inf),  # hltl's motion model had no plan (INFEASIBLE)
         start(3, "handover_r2h", 3.0),  # the simulator's planner failed: IK waypoints
     ]
-    world = World3D(lambda: None, None, _FakeCost(), [_FakeSim(3)])  # type: ignore[arg-type]
+    world = World3D(lambda: None, None, None, [_FakeSim(3)])  # type: ignore[arg-type]
     found = unplanned_motions(recs, world)
     assert len(found) == 2
     assert found[0].startswith("handover_r2r(chips) by r2→r1 at 2.00 s: hltl's motion model")
     assert "simulator has no motion plan, ran IK waypoints (IK found no pose)" in found[1]
-    # without --motion only the simulator's side counts (no sentinel to compare with)
-    plain = World3D(lambda: None, None, None, [_FakeSim(0)])  # type: ignore[arg-type]
-    assert unplanned_motions(recs, plain) == []
+    # a finite expectation is a planned motion, whatever its length
+    assert unplanned_motions([start(4, "handover_r2r", 1000.0)], world) == []
 
 
 @needs_mujoco
@@ -265,3 +260,11 @@ def test_a_trial_with_an_unplanned_motion_fails(monkeypatch: pytest.MonkeyPatch)
     assert not bad.success and bad.unplanned == 1
     assert bad.reason == "no motion plan: pick(x) …"
     assert summarise3d([bad])[0].time is None
+
+
+def test_error_bars_stay_on_the_axis() -> None:
+    """A std larger than the mean is not drawn below 0, and a mean off the replanning axis
+    (T4's Greedy-R trial with 923 replans) gets no bar at all."""
+    lo, hi = _bars([(1.0, 3.0), (47.1, 206.2), (math.nan, 0.0), (2.0, 0.5)], top=6.0)
+    assert lo == [1.0, 0.0, 0.0, 0.5]
+    assert hi == [3.0, 0.0, 0.0, 0.5]

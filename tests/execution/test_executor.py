@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pytest
 
 from hltl.execution.executor import MAX_FAILURES, ExecStatus, Executor, ExecutorConfig
 from hltl.execution.log import EpisodeStart
+from hltl.execution.predicted import Predicted
 from hltl.grounding.offline import OfflineGrounder
 from hltl.planner import PlanResult, PlanStatus, PlanStep
 from hltl.sim.instruct import ground_instruction
@@ -15,7 +17,7 @@ from hltl.sim.invariants import check_invariants
 from hltl.skills.library import Action
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.spec.syntax import Atom
-from hltl.world.scene import Scene, load_scene
+from hltl.world.scene import Scene, Surface, load_scene
 from hltl.world.state import WorldState, initial_world
 
 from .mocks import MockDriver, RecordingPlanner
@@ -240,3 +242,85 @@ def test_new_instruction_carries_monitor_state_over(cell: Scene) -> None:
     grounding = [r for r in ex.log.records if r.type == "grounding"]
     assert grounding[-1].update["kind"] == "add"
     assert check_invariants(ex.log.records) == []
+
+
+def _picked_with_forecast(scene: Scene, first: Action, driver: MockDriver) -> Executor:
+    """CHIPS_TO_A with r2's pick of the chips under way, and a predicted plan whose one step is
+    ``first`` cached for the start the pick will end in (what a background plan for a forecast
+    world leaves there), as if the forecast had been made at t = 0."""
+    ex = Executor(scene, _spec(CHIPS_TO_A), driver)
+    _episode_start(ex, scene)
+    ex.update(0.0, initial_world(scene))
+    after = ex._after_running()
+    assert after is not None
+    w, q = after
+    ctx = ex.semantics.context(w)
+    plan = PlanResult(PlanStatus.SOLVED, (PlanStep(0.0, 0.5, (first,)),), 0.5)
+    ex._predicted.put(ex._key(ctx, w, q), Predicted(plan, 0.0, ctx))
+    return ex
+
+
+def test_a_predicted_plan_that_cannot_start_does_not_take_over(cell: Scene) -> None:
+    """A predicted plan made for where a person was forecast to stand can fail its first
+    step's check in the world as it is (T2 with motion: the hand-over has no motion from
+    where the person stopped). It is not taken over; the planner plans from the real world.
+    Before the fix it took over, failed the check, and took over again, 16 times a tick."""
+    # r1 does not hold the chips after the pick: this first step fails its precondition
+    stale = Action("handover_r2h", ("r1",), "chips", "A")
+    ex = _picked_with_forecast(cell, stale, MockDriver(duration=0.6))
+    obs = initial_world(cell)
+    _run(ex, obs, 3.0)
+    assert ex.status is ExecStatus.DONE
+    records = ex.log.records
+    assert [r for r in records if r.type == "takeover"] == []
+    after_pick = [r for r in records if r.type == "replan" and r.t == 0.6]
+    assert [(r.source, r.trigger) for r in after_pick] == [("planner", "progress")]
+    assert check_invariants(records) == []
+
+
+def test_a_predicted_plan_takes_over_once(cell: Scene) -> None:
+    """A taken-over plan leaves the cache: when the executor comes back to the same start
+    (T2#4 with motion: a place, then a pick of the same object), the planner decides, not the
+    old forecast. Before the fix the cached plan's place was taken over after every pick,
+    until the time limit."""
+    # a side table only r2 reaches: after a place there, only r2 can pick the chips again
+    scene = dataclasses.replace(cell, surfaces=(Surface("side", (1.7, 0.3, 0.0), (0.2, 0.2)),))
+    driver = MockDriver(duration=0.6)
+    # a detour that puts the chips down on the side table: the start after its place and the
+    # planner's pick is the same discrete start again
+    ex = _picked_with_forecast(scene, Action("place", ("r2",), "chips", surface="side"), driver)
+    obs = initial_world(scene)
+    _run(ex, obs, 6.0)
+    assert ex.status is ExecStatus.DONE
+    takeovers = [r for r in ex.log.records if r.type == "takeover"]
+    assert len(takeovers) == 1
+    assert [a.skill for _, a in driver.started].count("place") == 1
+    assert check_invariants(ex.log.records) == []
+
+
+def test_a_predicted_plan_equal_to_the_plan_in_hand_is_not_a_takeover(cell: Scene) -> None:
+    """B, who takes no part in the task, walks out of every workspace while the first plan's
+    computation is charged (1 s): the context changes, and the plan predicted for B's new
+    context is the plan in hand. It stays; no takeover, no replan (before the fix: a takeover
+    and a replan with trigger "context", which the T1–T6 benchmark counts)."""
+    planner = RecordingPlanner()
+    config = ExecutorConfig(plan_latency=1.0)
+    ex = Executor(cell, _spec(CHIPS_TO_A), MockDriver(duration=0.6), planner=planner, config=config)
+    _episode_start(ex, cell)
+    obs = initial_world(cell)
+    b0 = obs.human_position("B")
+    t = 0.0
+    while t < 8.0 and not ex.finished:
+        s = max(0.0, t - 0.05)
+        ex.update(t, obs.with_human("B", (b0[0] + 1.5 * min(s, 0.8), b0[1], 0.0)).with_time(t))
+        t = round(t + 0.05, 9)
+    assert ex.status is ExecStatus.DONE
+    records = ex.log.records
+    predicts = [r for r in records if r.type == "predict"]
+    replans = [r for r in records if r.type == "replan"]
+    assert predicts and predicts[0].context != replans[0].context  # B's leaving was forecast
+    assert [r for r in records if r.type == "takeover"] == []
+    assert [r.trigger for r in replans] == ["initial", "progress", "progress"]
+    first = next(r for r in records if r.type == "dispatch")
+    assert first.t == pytest.approx(1.0)  # the plan in hand went once its computation was paid
+    assert check_invariants(records) == []

@@ -165,6 +165,24 @@ def test_anticipation_relays_toward_the_forecast_and_saves_time() -> None:
     assert ahead.metrics.time_cost < plain.metrics.time_cost - 0.5
 
 
+@pytest.mark.parametrize("votes", [0.6, 1.0])
+def test_anticipation_waits_for_a_confident_forecast(votes: float) -> None:
+    """The gate: an anticipatory dispatch happens only when at least ``anticipate_votes`` of
+    every moving person's forecast samples agree on the label; a stricter gate dispatches no
+    earlier (and on 2-4-line#2 later: the relay waits until the whole horizon agrees)."""
+    ep = _episode("2-4-line", 2, anticipate=True, anticipate_votes=votes)
+    antic = [r for r in ep.records if r.type == "anticipate"]
+    assert antic
+    for r in antic:
+        for forecast in r.humans.values():
+            assert forecast["votes"] >= votes * forecast["samples"]
+    loose = _episode("2-4-line", 2, anticipate=True, anticipate_votes=0.6)
+    first = min(r.t for r in loose.records if r.type == "anticipate")
+    assert antic[0].t >= first
+    if votes == 1.0:
+        assert antic[0].t > first
+
+
 def test_anticipation_needs_prediction_and_valid_votes() -> None:
     with pytest.raises(ValueError, match="anticipate_votes"):
         ExecutorConfig(anticipate_votes=1.5)

@@ -35,14 +35,19 @@ KNOWN_MISSES = frozenset(
         "Hnad Alice the red mug please",
         # blind3: steps after the 'or' of an 'either' could belong to it or come after it
         "Either put the cup on the shelf, or give it to Bob and then give Carol the apple",
+        # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
+        "Give Alice something to drink: the cup or the bottle",
+        # blind4: "<objects> will do for <person>"
+        "Any mug will do for Carol",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
 # groundings included, are the measurement, and the grounder is not tuned on it
 # ("blind" was measured once in session 2, then its misses were fixed in session 3; "blind2"
 # measured once in session 3, its misses fixed in session 4; "blind3" measured once in session
-# 4, its misses fixed in session 5: all asserted now)
-MEASURED_ONLY = frozenset({"blind4"})
+# 4, its misses fixed in session 5; "blind4" measured once in session 5, its misses fixed in
+# session 6: all asserted now)
+MEASURED_ONLY = frozenset({"blind5"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -57,6 +62,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind3"].entries}) >= 4
     assert len(CORPORA["blind4"].entries) >= 150
     assert len({e.scene for e in CORPORA["blind4"].entries}) >= 8
+    assert len(CORPORA["blind5"].entries) >= 180
+    assert len({e.scene for e in CORPORA["blind5"].entries}) >= 12
     for corpus in CORPORA.values():
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)

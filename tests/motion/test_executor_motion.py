@@ -64,3 +64,32 @@ def test_dispatched_actions_carry_their_motion_plans(fig1: Scene, fig1_cell: Any
     assert motion is not None
     assert [tr.robot for tr in motion.trajectories] == ["r1"]
     assert any(kind == "grasp" for _, kind, _ in motion.events)
+
+
+def test_the_forecast_workspace_comes_from_the_maps(fig1: Scene, fig1_cell: Any) -> None:
+    """W_j of eq. (ws_predict) is the maps' when the arms have models: a person standing where
+    r1's map reaches their comfort zone but its reach sphere does not is forecast in r1's
+    workspace (by the executor too), in nobody's by the spheres."""
+    from hltl.execution.predict import predict_workspace
+    from hltl.perception.predict import ConstantVelocityPredictor
+    from hltl.world.geometry import context_label
+
+    kin = fig1_cell.kinematics
+    spot = (-0.9, 0.6, 0.0)
+    assert kin.context_label(fig1, {"A": spot}).robots_serving("A") == frozenset({"r1"})
+    assert context_label(fig1, {"A": spot}).robots_serving("A") == frozenset()
+    still = ConstantVelocityPredictor()
+    for k in range(6):
+        still.observe(0.1 * k, [("A", spot)])
+    assert predict_workspace(fig1, still, "A", 0.5, 1.5, 0.1, kin).robots == {"r1"}
+    assert predict_workspace(fig1, still, "A", 0.5, 1.5, 0.1).robots == frozenset()
+
+    spec = spec_from_dict(
+        {"root": "p0", "formulas": {"p0": "F p100", "p100": "F delivered(bottle, A)"}}
+    )
+    world = initial_world(fig1).with_human("A", spot)
+    ex = Executor(fig1, spec, RecordingDriver(), kinematics=kin, config=ExecutorConfig())
+    ex.update(0.0, world)
+    assert ex.busy, "the pick was dispatched"
+    ex.update(0.1, world)  # forecasts run while a step executes
+    assert ex.predictions["A"].robots == frozenset({"r1"})

@@ -114,3 +114,29 @@ def test_unknown_models_keep_the_sphere() -> None:
     assert not has_model("xarm6")
     with pytest.raises(SceneError, match="unknown robot model 'xarm6'"):
         arm_spec("xarm6")
+
+
+def test_elfin3_mjcf_is_the_urdf_model() -> None:
+    """hltl's Elfin-3 MJCF (for MuJoCo) has the URDF's joints, limits and masses, and its tool0
+    site moves exactly as the URDF's tool frame (Pinocchio) at random configurations."""
+    mujoco = pytest.importorskip("mujoco")
+    from hltl.motion.robots import MODELS_DIR
+
+    m = mujoco.MjModel.from_xml_path(str(MODELS_DIR / "elfin3.xml"))
+    d = mujoco.MjData(m)
+    arm = Arm("r", "elfin3")
+    names = [m.joint(i).name for i in range(m.njnt)]
+    assert names == [f"joint{i}" for i in range(1, 7)]
+    assert np.allclose(m.jnt_range[:, 0], arm.lower) and np.allclose(m.jnt_range[:, 1], arm.upper)
+    urdf = ET.parse(ELFIN3_URDF).getroot()
+    masses = [float(e.get("value", "nan")) for e in urdf.iter("mass")]
+    assert m.body_mass.sum() == pytest.approx(sum(masses), abs=1e-9)
+    tool = m.site("tool0").id
+    rng = np.random.default_rng(0)
+    for _ in range(50):
+        q = rng.uniform(arm.lower, arm.upper)
+        d.qpos[:] = q
+        mujoco.mj_kinematics(m, d)
+        p, r = arm.fk(q)
+        assert np.allclose(d.site_xpos[tool], p, atol=1e-9)
+        assert np.allclose(d.site_xmat[tool].reshape(3, 3), r, atol=1e-9)

@@ -7,6 +7,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from hltl.motion.kinematics import Arm
 from hltl.motion.reach import _cache_file, load_or_build
@@ -109,3 +111,59 @@ def test_refined_boundary_cells_answer_from_their_fine_grid() -> None:
     # the fine grid's corners are the coarse points, so the two agree on the cell's corners
     corners = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, h], [h, 0.0, 0.0]])
     assert np.allclose(m.occupancy(corners), [1.0, 1.0, 0.0])
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    dims=st.sampled_from([2, 3]),
+    cells_per_axis=st.lists(st.integers(1, 3), min_size=3, max_size=3),
+    seed=st.integers(0, 2**32 - 1),
+)
+def test_refined_maps_interpolate_their_fine_grid(
+    dims: int, cells_per_axis: list[int], seed: int
+) -> None:
+    """One code path for profiles (2-D) and grids (3-D): inside a refined cell the occupancy is
+    the fine grid's multilinear interpolation, elsewhere the coarse grid's. Oracle: scipy's
+    RegularGridInterpolator on the whole fine grid (whose every REFINE-th point is the coarse
+    grid) and on the coarse grid."""
+    from scipy.interpolate import RegularGridInterpolator
+
+    from hltl.motion.reach import REFINE, ReachMap
+
+    n, h = REFINE, 0.1
+    rng = np.random.default_rng(seed)
+    shape = tuple(c * n + 1 for c in cells_per_axis[:dims])
+    full = rng.random(shape) < 0.5
+    coarse = full[tuple(slice(None, None, n) for _ in shape)]
+    every = np.argwhere(np.ones(tuple(s - 1 for s in coarse.shape), dtype=bool))
+    cells = every[rng.random(len(every)) < 0.5]
+    fine = np.array(
+        [full[tuple(slice(c * n, c * n + n + 1) for c in cell)] for cell in cells], dtype=bool
+    ).reshape(len(cells), *([n + 1] * dims))
+    # fractional coarse indices inside the grid, and a few on cell faces and corners
+    g = rng.uniform(0, np.array(coarse.shape) - 1, (300, dims))
+    g[:20] = np.round(g[:20] * n) / n
+    if dims == 3:
+        m = ReachMap("x", "", (0.0, 0.0, 0.0), h, coarse, fine_cells=cells, fine=fine)
+        pts = g * h
+    else:
+        m = ReachMap(
+            "x", "", (0.0, 0.0, 0.0), h, np.zeros((1, 1, 1), bool), coarse, 0.0, h, cells, fine
+        )
+        pts = np.stack([g[:, 0] * h, np.zeros(len(g)), g[:, 1] * h], axis=1)
+    axes_fine = [np.arange(s) / n for s in shape]
+    axes_coarse = [np.arange(s, dtype=float) for s in coarse.shape]
+    want_fine = RegularGridInterpolator(axes_fine, full.astype(float))(g)
+    want_coarse = RegularGridInterpolator(axes_coarse, coarse.astype(float))(g)
+    cell_of = np.minimum(np.floor(g).astype(int), np.array(coarse.shape) - 2)
+    refined = {tuple(c) for c in cells}
+    in_refined = np.array([tuple(c) in refined for c in cell_of])
+    got = m.occupancy(pts)
+    # on a face shared by a refined and an unrefined cell both interpolations agree only at the
+    # coarse points; off the faces the cell is unambiguous
+    on_face = np.any(np.abs(g - np.round(g)) < 1e-9, axis=1)
+    sure = ~on_face
+    assert np.allclose(got[sure & in_refined], want_fine[sure & in_refined], atol=1e-9)
+    assert np.allclose(got[sure & ~in_refined], want_coarse[sure & ~in_refined], atol=1e-9)
+    # outside the grid: unreachable
+    assert m.occupancy(pts[:1] + 100.0)[0] == 0.0

@@ -20,6 +20,7 @@ from hltl.perception.learned import (
     SHIPPED,
     SIZES,
     LearnedBackend,
+    PixelProbabilities,
     downsample_labels,
     load_segmenter,
     train,
@@ -146,15 +147,15 @@ def _standing(category: str, plane: float, seen: float, rng: np.random.Generator
     return np.concatenate([side, top])
 
 
-def _network(truth: int, share: float, split: float) -> np.ndarray:
-    """A 4×4 probability map over the classes giving the true red category ``share``, the
-    other two the rest in the ratio ``split``."""
+def _network(truth: int, share: float, split: float) -> PixelProbabilities:
+    """A 4×4 (half-resolution) probability map over the classes giving the true red category
+    ``share``, the other two the rest in the ratio ``split``."""
     prob = np.zeros((len(CLASSES), 4, 4), np.float32)
     others = [c for c in CONFUSED if CONFUSED.index(c) != truth]
     prob[CLASSES.index(CONFUSED[truth])] = share
     prob[CLASSES.index(others[0])] = (1 - share) * split
     prob[CLASSES.index(others[1])] = (1 - share) * (1 - split)
-    return prob
+    return PixelProbabilities(prob)
 
 
 @settings(max_examples=40, deadline=None)
@@ -163,10 +164,9 @@ def _network(truth: int, share: float, split: float) -> np.ndarray:
     plane=st.floats(-0.05, 0.3),
     share=st.floats(0.05, 1.0),
     split=st.floats(0.0, 1.0),
-    # the 98th-percentile top reads about two noise sigmas high: up to 2 mm of depth noise the
-    # height outweighs a 19:1 network; at 3 mm only about 6:1 (hypothesis found apple -> mug
-    # at 15:1, 2.9 mm). The renderer's depth has no noise.
-    noise=st.floats(0.0, 0.002),
+    # depth noise up to 5 mm: the top is fitted unbiased (geometry.top_height); the 98th
+    # percentile read ~2 noise sigmas high and lost to a 15:1 network at 2.9 mm
+    noise=st.floats(0.0, 0.005),
     seed=st.integers(0, 2**16),
 )
 def test_a_red_object_seen_whole_is_named_by_its_height(
@@ -230,3 +230,126 @@ def test_apple_can_and_mug_on_one_table_are_told_apart() -> None:
     for oid, o in found.items():
         assert o.label == oid
         assert math.dist(o.position, truth[oid]) < 0.03, oid
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    h=st.integers(2, 9),
+    w=st.integers(2, 9),
+    box=st.tuples(st.integers(0, 8), st.integers(0, 8), st.integers(0, 8), st.integers(0, 8)),
+    seed=st.integers(0, 2**16),
+)
+def test_pixel_probabilities_take_the_zoomed_pass_where_it_is_far(
+    h: int, w: int, box: tuple[int, int, int, int], seed: int
+) -> None:
+    # oracle: the full-resolution map written out pixel by pixel
+    rng = np.random.default_rng(seed)
+    half = rng.dirichlet(np.ones(len(CLASSES)), size=(h // 2, w // 2)).transpose(2, 0, 1)
+    v0, v1 = sorted((min(box[0], h), min(box[1], h)))
+    u0, u1 = sorted((min(box[2], w), min(box[3], w)))
+    zoom = rng.dirichlet(np.ones(len(CLASSES)), size=(v1 - v0, u1 - u0)).transpose(2, 0, 1)
+    far = rng.random((v1 - v0, u1 - u0)) < 0.5
+    prob = PixelProbabilities(
+        half.astype(np.float32), (v0, v1, u0, u1), zoom.astype(np.float32), far
+    )
+    want = np.zeros((len(CLASSES), h, w))
+    want[0] = 1.0
+    for v in range(h):
+        for u in range(w):
+            if v0 <= v < v1 and u0 <= u < u1 and far[v - v0, u - u0]:
+                want[:, v, u] = zoom[:, v - v0, u - u0]
+            elif v < 2 * (h // 2) and u < 2 * (w // 2):
+                want[:, v, u] = half[:, v // 2, u // 2]
+    red = [CLASSES.index(c) for c in CONFUSED]
+    merged = want.copy()
+    merged[red[0]] = want[red].sum(axis=0)
+    merged[red[1:]] = 0.0
+    cls, conf = prob.labels((h, w))
+    assert (cls == merged.argmax(axis=0)).all()
+    assert conf == pytest.approx(merged.max(axis=0), abs=1e-5)
+    mask = rng.random((h, w)) < 0.5
+    inside = mask & ~((np.arange(h)[:, None] >= 2 * (h // 2)) | (np.arange(w) >= 2 * (w // 2)))
+    inside |= mask & _far_mask(h, w, (v0, v1, u0, u1), far)
+    if inside.any():
+        k = int(rng.integers(len(CLASSES)))
+        assert prob.mean(k, inside) == pytest.approx(float(want[k][inside].mean()), abs=1e-5)
+
+
+def _far_mask(h: int, w: int, box: tuple[int, int, int, int], far: np.ndarray) -> np.ndarray:
+    out = np.zeros((h, w), dtype=bool)
+    v0, v1, u0, u1 = box
+    out[v0:v1, u0:u1] = far
+    return out
+
+
+def _cylinder_points(
+    category: str, x: float, y: float, plane: float, rng: np.random.Generator
+) -> np.ndarray:
+    """The near half of a category's cylinder standing at (x, y) on ``plane``, and its top."""
+    out: np.ndarray = _standing(category, plane, 1.0, rng) + np.array([x, y, 0.0])
+    return out
+
+
+def _region(*clouds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A one-row 'image' holding the clouds' points and the mask of all of them."""
+    q = np.concatenate(clouds)
+    return q[None], np.ones((1, len(q)), dtype=bool)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    first=st.sampled_from(CONFUSED),
+    second=st.sampled_from(CONFUSED),
+    angle=st.floats(0.0, 2 * math.pi),
+    gap=st.floats(0.0, 0.02),
+    seed=st.integers(0, 2**16),
+)
+def test_two_red_objects_side_by_side_in_one_region_are_two_objects(
+    first: str, second: str, angle: float, gap: float, seed: int
+) -> None:
+    # touching in the image with no depth edge between: one region of the merged red class
+    rng = np.random.default_rng(seed)
+    backend = _backend()
+    backend.planes = [-0.75, 0.0]
+    d = SIZES[first][0] + SIZES[second][0] + gap
+    a = _cylinder_points(first, 0.0, 0.0, 0.0, rng)
+    b = _cylinder_points(second, d * math.cos(angle), d * math.sin(angle), 0.0, rng)
+    pts, mask = _region(a, b)
+    r = max(SIZES[c][0] for c in CONFUSED)
+    hgt = max(SIZES[c][1] for c in CONFUSED)
+    found = backend._shaped(mask, pts, r, hgt)
+    assert len(found) == 2
+    truth = np.arange(len(a) + len(b)) >= len(a)
+    # each is mostly one of the two objects: 2-means draws the boundary between the clouds'
+    # means, which sit on the visible sides, so up to ~1/6 of a touching pair's points go to
+    # the other object (worst 0.83 over all pairs at 5° steps, no gap)
+    for m in found:
+        purity = max(float(np.mean(truth[m[0]])), float(np.mean(~truth[m[0]])))
+        assert purity >= 0.75
+
+
+@settings(max_examples=30, deadline=None)
+@given(share=st.floats(0.02, 0.15), seed=st.integers(0, 2**16))
+def test_stray_pixels_around_an_object_are_dropped_not_the_object(share: float, seed: int) -> None:
+    # a few pixels of a link or a neighbour 10-25 cm off, joined to a cup's region
+    rng = np.random.default_rng(seed)
+    backend = _backend()
+    backend.planes = [-0.75, -0.015]
+    cup = _cylinder_points("cup", 0.3, 0.2, 0.0, rng)
+    n = int(share * len(cup) / (1 - share)) + 1
+    ang, dist = rng.uniform(0, 2 * math.pi, n), rng.uniform(0.1, 0.25, n)
+    z = rng.uniform(0.0, 0.1, n)
+    fringe = np.stack([0.3 + dist * np.cos(ang), 0.2 + dist * np.sin(ang), z], axis=1)
+    pts, mask = _region(cup, fringe)
+    found = backend._shaped(mask, pts, *SIZES["cup"])
+    assert len(found) == 1
+    assert (found[0][0] == (np.arange(len(cup) + n) < len(cup))).all()
+
+
+def test_three_in_a_row_are_not_guessed_into_one() -> None:
+    rng = np.random.default_rng(0)
+    backend = _backend()
+    backend.planes = [0.0]
+    clouds = [_cylinder_points("can", 0.07 * i, 0.0, 0.0, rng) for i in range(3)]
+    pts, mask = _region(*clouds)
+    assert backend._shaped(mask, pts, *SIZES["can"]) == []

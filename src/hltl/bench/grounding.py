@@ -28,9 +28,11 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # once in session 3, then tuned on in session 4), blind3 (written in session 4 before any grounder
 # change of that session and before running the grounder on it; measured once, then tuned on in
 # session 5), blind4 (written in session 5 before any grounder change of that session and before
-# running the grounder on it; measured once; tests do not assert it).
+# running the grounder on it; measured once, then tuned on in session 6), blind5 (written in
+# session 6 before any grounder change of that session and before running the grounder on it;
+# measured once; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
-PARTS = ("tuning", "heldout", "fresh", "blind", "blind2", "blind3", "blind4")
+PARTS = ("tuning", "heldout", "fresh", "blind", "blind2", "blind3", "blind4", "blind5")
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
 

@@ -243,14 +243,13 @@ def _world(scene: Scene, timing: str, motion: bool = False) -> World3D:
 def unplanned_motions(records: Sequence[LogRecord], world: World3D) -> list[str]:
     """Actions that ran without a checked motion plan, each with who failed to plan it.
 
-    Two ways: hltl's motion cost model found none and charged its sentinel
-    (``infeasible_cost``), so the plan hltl chose was optimal for a made-up duration; or the
-    3D simulator's own motion planner found none and the arms followed unchecked IK waypoints
-    (``MotionInfo.source == "ik"``), so the time is not a collision-checked motion's. Either
-    makes the trial's execution time meaningless: the benchmark counts such a trial as failed.
+    Two ways: hltl's executor started an action its motion cost model has no plan for (an
+    infinite expected duration, ``INFEASIBLE``; the executor refuses to, so this is a guard),
+    or the 3D simulator's own motion planner found none and the arms followed unchecked IK
+    waypoints (``MotionInfo.source == "ik"``), so the time is not a collision-checked motion's.
+    Either makes the trial's execution time meaningless: the benchmark counts such a trial as
+    failed.
     """
-    # a sentinel duration (a finite ``infeasible_cost``) or an infinite one both mean "no plan"
-    limit = math.inf if world.cost is None else getattr(world.cost, "infeasible_cost", math.inf)
     sim = world.made[-1] if world.made else None
     out: list[str] = []
     for r in records:
@@ -258,8 +257,8 @@ def unplanned_motions(records: Sequence[LogRecord], world: World3D) -> list[str]
             continue
         act = Action.from_dict(r.action)
         what = f"{act.skill}({act.object}) by {'→'.join(act.robots)} at {r.t:.2f} s"
-        if r.expected is not None and (r.expected >= limit or not math.isfinite(r.expected)):
-            out.append(f"{what}: hltl's motion model has no plan (charged {r.expected:.0f} s)")
+        if r.expected is not None and not math.isfinite(r.expected):
+            out.append(f"{what}: hltl's motion model has no plan")
         info = None if sim is None else sim.motion_of(Handle(r.handle, act, r.t))
         if info is not None and info.source == "ik":
             why = f" ({info.note[:60]})" if info.note else ""
@@ -468,6 +467,15 @@ def _time_of(s: Summary3D | None) -> tuple[float, float]:
     return (math.nan, 0.0) if s is None or s.time is None else s.time
 
 
+def _bars(values: Sequence[tuple[float, float]], top: float = math.inf) -> list[list[float]]:
+    """Error bars of (mean, std) pairs: one std each way, never below 0 nor above ``top``;
+    none on a mean that is off the scale (above ``top``) or missing."""
+    shown = [math.isfinite(m) and m <= top for m, _ in values]
+    lo = [min(sd, m) if ok else 0.0 for (m, sd), ok in zip(values, shown, strict=True)]
+    hi = [min(sd, top - m) if ok else 0.0 for (m, sd), ok in zip(values, shown, strict=True)]
+    return [lo, hi]
+
+
 def plot_t16(rows: Sequence[Summary3D], path: Path) -> Path:
     """Fig. (exp_result)-like: execution time and replanning count per task, one bar per method."""
     try:
@@ -491,8 +499,16 @@ def plot_t16(rows: Sequence[Summary3D], path: Path) -> Path:
         c = colours.get(m, "#777777")
         label = LABELS.get(m, m)
         axes[0].bar(xs, succ, width, color=c, label=label)
-        axes[1].bar(xs, [v[0] for v in tm], width, yerr=[v[1] for v in tm], color=c, capsize=2)
-        axes[2].bar(xs, [v[0] for v in rp], width, yerr=[v[1] for v in rp], color=c, capsize=2)
+        axes[1].bar(xs, [v[0] for v in tm], width, yerr=_bars(tm), color=c, capsize=2)
+        # a trial that loops replans thousands of times would flatten the rest: the axis stops
+        # at twice the failure threshold and an off-scale mean is written above its bar
+        top = 2 * MAX_REPLANS
+        shown = [min(v[0], top) for v in rp]
+        axes[2].bar(xs, shown, width, yerr=_bars(rp, top), color=c, capsize=2)
+        for x, v in zip(xs, rp, strict=True):
+            if v[0] > top:
+                axes[2].text(x, top, f"{v[0]:.0f}", ha="center", va="bottom", fontsize=7)
+    axes[2].set_ylim(0, 2 * MAX_REPLANS + 1)
     for ax, title in zip(
         axes, ("Success rate (%)", "Execution time (s)", "Avg. replanning count"), strict=True
     ):

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import datetime
 import json
+import os
 import shlex
 import sys
 import time
@@ -573,24 +574,29 @@ def run_motion(args: argparse.Namespace) -> int:
     if min(args.ik_solves, args.probes, args.runs) < 1 or args.workers < 0:
         raise HltlError("--ik-solves, --probes and --runs must be >= 1, --workers >= 0")
     quick = args.quick
+    wall0, cpu0 = time.perf_counter(), time.process_time()
     result = bench_motion(
         models=("elfin3",) if quick else ("elfin3", "ur5", "panda"),
         ik_solves=10 if quick else args.ik_solves,
-        map_models=("elfin3",) if quick else ("elfin3", "ur5"),
+        map_models=("elfin3",) if quick else ("elfin3", "ur5", "panda"),
         probes=20 if quick else args.probes,
         runs=1 if quick else args.runs,
         candidates=(2,) if quick else (8, 16),
         workers=0 if quick else args.workers,
         resolution=0.1 if quick else None,
     )
+    wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
     table = format_motion(result)
     print(table)
+    stamp = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    print(f"{wall:.0f} s wall, {cpu:.0f} s CPU (this process)", file=sys.stderr)
     if args.write is not None:
         body = (
             f"Command: `hltl bench motion --write {shlex.quote(str(args.write))}`  \n"
-            f"Date: {datetime.date.today().isoformat()}. Machine: {machine()} (shared with "
-            f"other jobs){' (quick run)' if quick else ''}. Targets and how to read them: "
-            "docs/motion.md.\n\n" + table
+            f"Date: {stamp}. Machine: {machine()}, load {os.getloadavg()[0]:.1f} at the end"
+            f"{' (quick run)' if quick else ''}; the run took {wall:.0f} s wall, {cpu:.0f} s "
+            "CPU in this process (the pool's workers not counted). Targets and how to read "
+            "them: docs/motion.md.\n\n" + table
         )
         write_section(args.write, "motion", body)
         print(f"wrote {args.write}", file=sys.stderr)

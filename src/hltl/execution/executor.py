@@ -44,7 +44,7 @@ from hltl.execution.predict import (
     predict_workspace,
     predicted_world,
 )
-from hltl.execution.predicted import PlanKey, Predicted, PredictedPlans, plan_key
+from hltl.execution.predicted import PlanKey, Predicted, PredictedPlans, plan_key, same_plan
 from hltl.execution.safety import (
     Hazard,
     grasp_hazard,
@@ -184,6 +184,16 @@ class ExecutorConfig:
 
 # an infeasible world: context, robots down, spec version, people standing still
 _BlockedKey = tuple[Context, frozenset[str], int, tuple[tuple[str, Vec3], ...]]
+
+
+@dataclass(frozen=True, slots=True)
+class _Timed:
+    """An action checked for dispatch: its transition in the world as it is now and its
+    duration d(s, a) from where the hands are (computed once, for the checks and the start)."""
+
+    action: Action
+    transition: Transition
+    duration: float
 
 
 @dataclass(slots=True)
@@ -561,18 +571,14 @@ class Executor(TickTemplate):
     def _intrusion_on(self) -> bool:
         return self.config.intrusion and self.predictor is not None
 
-    def _dispatch(self, actions: Sequence[Action], step: PlanStep) -> None:
+    def _dispatch(self, timed: Sequence[_Timed], step: PlanStep) -> None:
+        """Start ``timed`` (checked by :meth:`_check_step`) as the plan's first step."""
+        actions = [t.action for t in timed]
         conflict = step_conflict(actions)
         if conflict is not None:  # the planner never does this; refuse rather than collide
             self._give_up(f"the plan's step is not executable: {conflict}")
             return
         world = self.world
-        transitions = []
-        for a in actions:
-            tr = self.semantics.transition(a, world)
-            if isinstance(tr, Infeasible):  # unreachable: _decide filtered these out
-                raise RuntimeError(f"refusing to dispatch {a}: {tr.reason}")
-            transitions.append(tr)
         self.log.emit(
             Dispatch(
                 t=self.t,
@@ -585,14 +591,14 @@ class Executor(TickTemplate):
             )
         )
         hands = dict(world.hands)
-        for a, tr in zip(actions, transitions, strict=True):
+        for a, tr, expected in ((t.action, t.transition, t.duration) for t in timed):
             motion = (
                 self.cost.motion_plan(a, tr, hands) if isinstance(self.cost, MotionSource) else None
             )
             if motion is None:
                 handle = self.driver.start(a, self.t)
-                expected = self.cost.duration(a, tr, hands)
-            else:  # the driver executes the trajectories the motion layer planned and timed
+            else:  # the driver executes the trajectories the motion layer planned and timed,
+                # from where the arms really are (which may differ from the hands' points)
                 handle = self.driver.start(a, self.t, motion=motion)
                 expected = executed_duration(self.cost, a, tr, motion.duration)
             fast = hand_speed(tr, hands, expected) >= self.config.intrusion_speed
@@ -680,23 +686,10 @@ class Executor(TickTemplate):
             self._give_up("the planner returned an empty plan for an unfinished task")
             return False
         step = self._plan.steps[0]
-        ok: list[Action] = []
-        risky: list[Hazard] = []
-        blocked: list[Hazard] = []
-        for a in step.actions:
-            h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
-            if h is None:
-                h = self._no_motion(a)
-            if h is not None:
-                blocked.append(h)
-                continue
-            h = self._dispatch_risk(a)
-            if h is not None:
-                risky.append(h)
-            else:
-                ok.append(a)
+        ok, risky, blocked = self._check_step(step)
         if blocked:
-            # the plan is stale (e.g. a predicted plan whose objects moved): plan afresh
+            # the plan is stale (e.g. a predicted plan made for where a person was forecast to
+            # stand, whose hand-over has no motion from where they are): plan afresh
             if self._plan_fresh:
                 self._give_up(f"the planner's first step is not executable: {blocked[0].reason}")
                 return False
@@ -710,30 +703,46 @@ class Executor(TickTemplate):
         self._dispatch(ok, step)
         return not self._running
 
-    def _no_motion(self, action: Action) -> Hazard | None:
-        """The cost model has no motion for ``action`` from where the hands are (INFEASIBLE):
-        it must not be dispatched."""
-        tr = self._transition(action, self.world)
-        if math.isfinite(self.cost.duration(action, tr, dict(self.world.hands))):
-            return None
-        return Hazard(action, "precondition", f"{action}: no motion plan from where the hands are")
+    def _check_step(self, step: PlanStep) -> tuple[list[_Timed], list[Hazard], list[Hazard]]:
+        """The step's actions that can go now (each timed once), those an intrusion forecast
+        holds back, and those that cannot run now: a failed precondition, or no motion from
+        where the hands are (the cost model's INFEASIBLE), which must never be dispatched."""
+        ok: list[_Timed] = []
+        risky: list[Hazard] = []
+        blocked: list[Hazard] = []
+        hands = dict(self.world.hands)
+        for a in step.actions:
+            h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
+            if h is not None:
+                blocked.append(h)
+                continue
+            tr = self._transition(a, self.world)
+            timed = _Timed(a, tr, self.cost.duration(a, tr, hands))
+            if not math.isfinite(timed.duration):
+                blocked.append(
+                    Hazard(a, "precondition", f"{a}: no motion plan from where the hands are")
+                )
+                continue
+            h = self._dispatch_risk(timed, hands)
+            if h is not None:
+                risky.append(h)
+            else:
+                ok.append(timed)
+        return ok, risky, blocked
 
-    def _dispatch_risk(self, action: Action) -> Hazard | None:
+    def _dispatch_risk(self, timed: _Timed, hands: Mapping[str, Vec3]) -> Hazard | None:
         if not self._intrusion_on():
             return None
-        tr = self._transition(action, self.world)
-        hands = dict(self.world.hands)
-        d = self.cost.duration(action, tr, hands)
-        if hand_speed(tr, hands, d) < self.config.intrusion_speed:
+        if hand_speed(timed.transition, hands, timed.duration) < self.config.intrusion_speed:
             return None
         assert self.predictor is not None
         return intrusion_hazard(
-            action,
+            timed.action,
             self.scene,
             self.world,
             self.predictor,
             self.t,
-            self.t + d,
+            self.t + timed.duration,
             self.config.predict_dt,
             semantics=self.semantics,
         )
@@ -761,6 +770,19 @@ class Executor(TickTemplate):
         key = self._key(ctx, self.world, self.q)
         pred = self._predicted.get(key) if self.config.predict else None
         done = sorted(self.done_formulas())
+        if pred is not None:
+            # a predicted plan is used once: were it kept, a later return to the same discrete
+            # start (a place, then a pick of the same object) would take it over again
+            self._predicted.discard(key, pred.result)
+        if pred is not None and self._plan is not None and same_plan(pred.result, self._plan):
+            # a takeover must change the plan in hand: this one already is the predicted plan,
+            # so it stays, now for the new context; nothing is taken over or replanned
+            self._adopt(self._plan, ctx)
+            return True
+        if pred is not None and pred.result.solved and self._check_step(pred.result.steps[0])[2]:
+            # made for where people were forecast to stand, its first step cannot start from
+            # where they are (with motion-timed costs: no motion to the person's real place)
+            pred = None
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
             model = self.config.latency
@@ -917,6 +939,7 @@ class Executor(TickTemplate):
                     self.t,
                     self.config.horizon,
                     self.config.predict_dt,
+                    self.semantics.kinematics,
                 )
             except KeyError:  # never observed yet
                 continue
@@ -981,11 +1004,9 @@ class Executor(TickTemplate):
         if pred is None or not pred.result.solved or not pred.result.steps:
             return False
         step = pred.result.steps[0]
-        for a in step.actions:
-            if precondition_hazard(a, self.scene, self.world, semantics=self.semantics):
-                return False
-            if self._dispatch_risk(a) is not None:
-                return False
+        ok, risky, blocked = self._check_step(step)
+        if risky or blocked:
+            return False
         model = self.config.latency
         if model is not None:
             remaining = takeover_charge(
@@ -1009,7 +1030,7 @@ class Executor(TickTemplate):
                 humans={h: p.to_dict() for h, p in moving.items()},
             )
         )
-        self._dispatch(list(step.actions), step)
+        self._dispatch(ok, step)
         return True
 
     def _survives_forecast(self, plan: PlanResult, moving: Mapping[str, object]) -> bool:

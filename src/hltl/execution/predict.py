@@ -7,7 +7,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from hltl.perception.predict import ConstantVelocityPredictor, TrajectoryPredictor
-from hltl.world.geometry import workspace_of
+from hltl.skills.kinematics import REACH_SPHERES, Kinematics
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import WorldState
 
@@ -62,16 +62,18 @@ def predict_workspace(
     t: float,
     horizon: float,
     dt: float,
+    kinematics: Kinematics = REACH_SPHERES,
 ) -> WorkspacePrediction:
     """Paper eq. (ws_predict): the workspace label the forecast is in most often over the horizon.
 
     Workspaces overlap, so a point's "workspace" is the set of robots whose workspace holds it
-    (the value ℓ assigns a person); the vote is over those labels. Ties go to the label reached
-    later, which is where a walking person is heading.
+    (the value ℓ assigns a person, by ``kinematics``: the reach spheres, or the reachability
+    maps when the arms have models); the vote is over those labels. Ties go to the label
+    reached later, which is where a walking person is heading.
     """
     times = horizon_times(t, horizon, dt)
     points = predictor.predict(human, times)
-    labels = [frozenset(workspace_of(scene, p)) for p in points]
+    labels = [kinematics.context_label(scene, ((human, p),)).robots_serving(human) for p in points]
     counts = Counter(labels)
     last_index = {lab: i for i, lab in enumerate(labels)}
     best = max(counts, key=lambda lab: (counts[lab], last_index[lab]))

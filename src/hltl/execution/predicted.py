@@ -30,6 +30,12 @@ class Predicted:
     wall_s: float = 0.0
 
 
+def same_plan(a: PlanResult, b: PlanResult) -> bool:
+    """Whether two plans do the same thing: the same actions in the same steps (their
+    durations may differ, when they were timed for different places of the people)."""
+    return [s.actions for s in a.steps] == [s.actions for s in b.steps]
+
+
 class PredictedPlans:
     """At most ``size`` predicted plans, the oldest dropped first."""
 
@@ -47,6 +53,13 @@ class PredictedPlans:
         self._plans[key] = plan
         while len(self._plans) > self.size:
             self._plans.popitem(last=False)
+
+    def discard(self, key: PlanKey, result: PlanResult) -> None:
+        """Forget the plan at ``key`` if it does what ``result`` does (found not executable
+        from there, so it must not take over from there)."""
+        held = self._plans.get(key)
+        if held is not None and same_plan(held.result, result):
+            del self._plans[key]
 
     def clear(self) -> None:
         self._plans.clear()

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -14,11 +16,14 @@ from hltl.motion.kinematics import Arm, FloatArray
 from hltl.motion.robots import load_model, model_hash
 
 # Bumped when the way a map is built changes, so stale cache files are not read.
-MAP_FORMAT_VERSION = 2  # 2: boundary cells of the revolved profile refined
-# Profile cells on the reachable region's boundary (corners that disagree, and their neighbours)
-# are sampled again REFINE times finer: the interpolated boundary of the coarse profile cuts
-# corners where the region is ragged (the table and the self-collision tests make it so).
+MAP_FORMAT_VERSION = 3  # 2: profile boundary refined; 3: every map's boundary refined (3D too)
+# Cells on the reachable region's boundary (corners that disagree) are sampled again REFINE
+# times finer: the interpolated boundary of the coarse grid cuts corners where the region is
+# ragged (the table and the self-collision tests make it so). On the 2-D profile of a revolving
+# arm the boundary cells' neighbours are refined too (GROW), so a boundary that bends between
+# coarse points is followed; on a 3-D grid that would triple the IK solves for little gain.
 REFINE = 3
+GROW = {2: True, 3: False}  # grid dimension -> refine the boundary cells' neighbours too
 DEFAULT_RESOLUTION = 0.03  # metres between grid points (IK runs at half of it on the profile)
 COARSE_RESOLUTION = 0.06  # for arms whose first joint does not turn fully: IK on the 3D grid
 FK_SAMPLES_PER_CELL = 2.0  # random configurations per grid point, before IK fills the gaps
@@ -36,9 +41,13 @@ class ReachMap:
     """Which tool positions an arm reaches, on a grid in the arm's base frame.
 
     A grid point is reachable when position IK (any hand orientation, joint limits, every link
-    above the mounting plane) finds a configuration for it. Between grid points the occupancy is
-    interpolated trilinearly and thresholded at one half, so the boundary falls between a
-    reachable and an unreachable point instead of snapping to cells.
+    above the mounting plane, no self-collision) finds a configuration for it. Between grid
+    points the occupancy is interpolated (multilinearly) and thresholded at one half, so the
+    boundary falls between a reachable and an unreachable point instead of snapping to cells.
+
+    The sampled grid is either the 3-D grid itself or, for an arm whose first joint turns a
+    full revolution, a (radius, height) profile revolved about the base's axis. Either way its
+    boundary cells carry a REFINE-times finer sub-grid that answers inside them.
 
     Attributes:
         model: the registry name of the arm.
@@ -46,6 +55,11 @@ class ReachMap:
         origin: base-frame coordinates of grid point (0, 0, 0).
         resolution: spacing of the grid (m).
         reachable: boolean occupancy, indexed [ix, iy, iz].
+        profile: the (radius, height) occupancy of a revolving arm, else ``None``.
+        profile_origin_z, profile_resolution: height of profile row 0 and the profile spacing.
+        fine_cells: refined cells of the sampled grid (m×d, d = 2 for a profile, 3 for the
+            grid): the cell between points ``c`` and ``c + 1`` on every axis.
+        fine: their occupancy on a (REFINE + 1)^d sub-grid whose corners are the coarse points.
     """
 
     model: str
@@ -53,11 +67,9 @@ class ReachMap:
     origin: tuple[float, float, float]
     resolution: float
     reachable: np.ndarray
-    profile: np.ndarray | None = None  # (radius, height) occupancy of a revolving arm
+    profile: np.ndarray | None = None
     profile_origin_z: float = 0.0
     profile_resolution: float = 0.0
-    # Refined boundary cells of the profile: fine_cells[k] = (i, j) is the cell between profile
-    # points (i, j) and (i + 1, j + 1); fine[k] its occupancy on a (REFINE + 1)² sub-grid.
     fine_cells: np.ndarray | None = None
     fine: np.ndarray | None = None
 
@@ -65,31 +77,16 @@ class ReachMap:
         """Interpolated occupancy (0…1) at base-frame ``points`` (n×3); 0 outside the grid."""
         pts = np.atleast_2d(np.asarray(points, dtype=float))
         if self.profile is not None:
-            u = np.hypot(pts[:, 0], pts[:, 1]) / self.profile_resolution
-            v = (pts[:, 2] - self.profile_origin_z) / self.profile_resolution
-            occ = _bilinear(self.profile, u, v)
-            if self.fine is not None and self.fine_cells is not None and len(self.fine):
-                _refined(occ, u, v, self.profile.shape, self.fine_cells, self.fine)
-            return occ
-        g = (pts - np.asarray(self.origin)) / self.resolution
-        shape = np.array(self.reachable.shape)
-        i0 = np.floor(g).astype(int)
-        f = g - i0
-        inside = np.all((i0 >= 0) & (i0 + 1 < shape), axis=1)
-        occ = np.zeros(len(pts))
-        if not np.any(inside):
-            return occ
-        i0, f = i0[inside], f[inside]
-        grid = self.reachable.astype(float)
-        acc = np.zeros(len(i0))
-        for dx in (0, 1):
-            wx = f[:, 0] if dx else 1.0 - f[:, 0]
-            for dy in (0, 1):
-                wy = f[:, 1] if dy else 1.0 - f[:, 1]
-                for dz in (0, 1):
-                    wz = f[:, 2] if dz else 1.0 - f[:, 2]
-                    acc += wx * wy * wz * grid[i0[:, 0] + dx, i0[:, 1] + dy, i0[:, 2] + dz]
-        occ[inside] = acc
+            grid = self.profile
+            g = np.empty((len(pts), 2))
+            g[:, 0] = np.hypot(pts[:, 0], pts[:, 1]) / self.profile_resolution
+            g[:, 1] = (pts[:, 2] - self.profile_origin_z) / self.profile_resolution
+        else:
+            grid = self.reachable
+            g = (pts - np.asarray(self.origin)) / self.resolution
+        occ = _multilinear(grid, g)
+        if self.fine is not None and self.fine_cells is not None and len(self.fine):
+            _refined(occ, g, grid.shape, self.fine_cells, self.fine)
         return occ
 
     def contains(self, points: FloatArray) -> np.ndarray:
@@ -109,56 +106,60 @@ class ReachMap:
         return float(self.reachable.mean())
 
 
-def _bilinear(grid: np.ndarray, u: FloatArray, v: FloatArray) -> FloatArray:
-    """Bilinear interpolation of ``grid`` at fractional indices (u, v); 0 outside."""
-    out = np.zeros(len(u))
-    inside = (u >= 0) & (v >= 0) & (u < grid.shape[0] - 1) & (v < grid.shape[1] - 1)
-    if not np.any(inside):
-        return out
-    u, v = u[inside], v[inside]
-    i, j = np.floor(u).astype(int), np.floor(v).astype(int)
-    fu, fv = u - i, v - j
-    g = grid.astype(float)
-    out[inside] = (
-        (1 - fu) * (1 - fv) * g[i, j]
-        + fu * (1 - fv) * g[i + 1, j]
-        + (1 - fu) * fv * g[i, j + 1]
-        + fu * fv * g[i + 1, j + 1]
-    )
+# The 2^d corner offsets of a d-dimensional cell (2^d × d), for profiles (2) and grids (3).
+_CORNERS = {d: np.array(list(itertools.product((0, 1), repeat=d)), dtype=int) for d in (2, 3)}
+
+
+def _lerp(
+    table: np.ndarray, lead: tuple[np.ndarray, ...], i0: np.ndarray, f: FloatArray
+) -> FloatArray:
+    """Multilinear interpolation in the cells whose lower corners are ``i0`` (n×d) at the
+    fractions ``f`` (n×d) of ``table[*lead, corner indices]`` (boolean)."""
+    c = _CORNERS[f.shape[1]]
+    idx = i0[:, None, :] + c[None, :, :]  # n × 2^d × d
+    values = table[(*lead, *(idx[:, :, j] for j in range(idx.shape[2])))]
+    weights = np.where(c[None, :, :] == 1, f[:, None, :], 1.0 - f[:, None, :]).prod(axis=2)
+    return np.asarray((values * weights).sum(axis=1), dtype=float)
+
+
+def _multilinear(grid: np.ndarray, g: FloatArray) -> FloatArray:
+    """Multilinear interpolation of the boolean d-dimensional ``grid`` at fractional indices
+    ``g`` (n×d); 0 outside."""
+    i0 = np.floor(g).astype(int)
+    inside = ((i0 >= 0) & (i0 + 1 < np.asarray(grid.shape))).all(axis=1)
+    out = np.zeros(len(g))
+    if inside.any():
+        i0 = i0[inside]
+        out[inside] = _lerp(grid, (), i0, g[inside] - i0)
     return out
 
 
 def _refined(
     occ: FloatArray,
-    u: FloatArray,
-    v: FloatArray,
+    g: FloatArray,
     shape: tuple[int, ...],
     cells: np.ndarray,
     fine: np.ndarray,
 ) -> None:
-    """Replace ``occ`` (in place) inside refined profile cells by the fine sub-grid's bilinear
-    interpolation; (u, v) are fractional profile indices."""
-    index = np.full((shape[0] - 1, shape[1] - 1), -1, dtype=int)
-    index[cells[:, 0], cells[:, 1]] = np.arange(len(cells))
-    i, j = np.floor(u).astype(int), np.floor(v).astype(int)
-    inside = (i >= 0) & (j >= 0) & (i < shape[0] - 1) & (j < shape[1] - 1)
-    k = np.full(len(u), -1)
-    k[inside] = index[i[inside], j[inside]]
-    sel = np.flatnonzero(k >= 0)
+    """Replace ``occ`` (in place) inside refined cells by their fine sub-grid's multilinear
+    interpolation; ``g`` (n×d) are fractional indices of the sampled grid of ``shape``."""
+    cell_shape = tuple(s - 1 for s in shape)
+    i = np.floor(g).astype(int)
+    inside = ((i >= 0) & (i < np.asarray(cell_shape))).all(axis=1)
+    if not inside.any():
+        return
+    # cells come from argwhere: sorted in C order, so their flat indices are sorted too
+    keys = np.ravel_multi_index(tuple(cells.T), cell_shape)
+    query = np.ravel_multi_index(tuple(i[inside].T), cell_shape)
+    pos = np.minimum(np.searchsorted(keys, query), len(keys) - 1)
+    hit = keys[pos] == query
+    sel = np.flatnonzero(inside)[hit]
     if not len(sel):
         return
     n = fine.shape[1] - 1
-    fu, fv = (u[sel] - i[sel]) * n, (v[sel] - j[sel]) * n
-    a, b = np.minimum(np.floor(fu).astype(int), n - 1), np.minimum(np.floor(fv).astype(int), n - 1)
-    du, dv = fu - a, fv - b
-    g = fine[k[sel]].astype(float)
-    rows = np.arange(len(sel))
-    occ[sel] = (
-        (1 - du) * (1 - dv) * g[rows, a, b]
-        + du * (1 - dv) * g[rows, a + 1, b]
-        + (1 - du) * dv * g[rows, a, b + 1]
-        + du * dv * g[rows, a + 1, b + 1]
-    )
+    f = (g[sel] - i[sel]) * n
+    a = np.minimum(np.floor(f).astype(int), n - 1)
+    occ[sel] = _lerp(fine, (pos[hit][:, None],), a, f - a)
 
 
 def _grid(arm: Arm, resolution: float) -> tuple[FloatArray, tuple[int, int, int]]:
@@ -178,7 +179,8 @@ def build_map(
     When the first joint turns a full revolution about the base's vertical axis, the reachable
     set is a solid of revolution: IK then runs on a half-plane (radius, height) at half the
     grid spacing and the 3D grid is filled by revolving it. Other arms get IK on every 3D grid
-    point within their span. Random configurations seed the IK starts near each point.
+    point within their span. Random configurations seed the IK starts near each point. Either
+    sampled grid then has its boundary cells refined (:func:`_refine`).
     """
     if arm.base.any():
         arm = Arm(arm.robot, arm.spec.name)  # maps live in the base frame
@@ -187,18 +189,23 @@ def build_map(
     digest = model_hash(arm.spec.name)
     if arm.lower[0] <= -np.pi + 0.02 and arm.upper[0] >= np.pi - 0.02:
         h = resolution / 2.0
-        prof = _profile(
-            arm, float(lo[2]), float(lo[2] + (shape[2] - 1) * resolution), h, seed, ik_starts
-        )
-        cells, fine = _refine_profile(arm, prof, float(lo[2]), h, seed, ik_starts)
+        z_lo = float(lo[2])
+        r_max = float(np.hypot(arm.shoulder_offset[0], arm.shoulder_offset[1]) + arm.max_extent)
+        n_r = len(np.arange(0.0, r_max + 2 * h, h))
+        n_z = len(np.arange(z_lo, z_lo + (shape[2] - 1) * resolution + 2 * h, h))
+
+        def on_profile(g: FloatArray) -> FloatArray:
+            return np.stack([g[:, 0] * h, np.zeros(len(g)), z_lo + g[:, 1] * h], axis=1)
+
+        prof, cells, fine = _sample(arm, (n_r, n_z), on_profile, h, seed, ik_starts)
         flat = ReachMap(
             arm.spec.name,
             digest,
             origin,
             resolution,
-            np.zeros(shape, dtype=bool),
+            np.zeros(shape, bool),
             prof,
-            float(lo[2]),
+            z_lo,
             h,
             cells,
             fine,
@@ -206,10 +213,30 @@ def build_map(
         idx = np.array(list(np.ndindex(*shape)))
         reach = flat.contains(lo + idx * resolution).reshape(shape)
         return ReachMap(
-            arm.spec.name, digest, origin, resolution, reach, prof, float(lo[2]), h, cells, fine
+            arm.spec.name, digest, origin, resolution, reach, prof, z_lo, h, cells, fine
         )
-    reach = _full_grid(arm, lo, shape, resolution, seed, ik_starts)
-    return ReachMap(arm.spec.name, digest, origin, resolution, reach)
+
+    def on_grid(g: FloatArray) -> FloatArray:
+        return np.asarray(lo + g * resolution, dtype=float)
+
+    reach, cells, fine = _sample(arm, shape, on_grid, resolution, seed, ik_starts)
+    return ReachMap(arm.spec.name, digest, origin, resolution, reach, fine_cells=cells, fine=fine)
+
+
+def _sample(
+    arm: Arm,
+    shape: tuple[int, ...],
+    at: Callable[[FloatArray], FloatArray],
+    spacing: float,
+    seed: int,
+    ik_starts: int,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """IK on every point of a grid of ``shape`` (``at`` maps fractional grid indices to
+    base-frame points), then on the boundary cells' sub-grids: (grid, cells, fine)."""
+    idx = np.array(list(np.ndindex(*shape)), dtype=float)
+    grid = _ik_grid(arm, at(idx), spacing, seed, ik_starts).reshape(shape)
+    cells, fine = _refine(arm, grid, at, spacing, seed + 1, ik_starts)
+    return grid, cells, fine
 
 
 def _ik_grid(
@@ -235,63 +262,50 @@ def _ik_grid(
     return out
 
 
-def _full_grid(
+def _refine(
     arm: Arm,
-    lo: FloatArray,
-    shape: tuple[int, int, int],
-    resolution: float,
+    grid: np.ndarray,
+    at: Callable[[FloatArray], FloatArray],
+    spacing: float,
     seed: int,
     ik_starts: int,
-) -> np.ndarray:
-    idx = np.array(list(np.ndindex(*shape)))
-    pts = lo + idx * resolution
-    return _ik_grid(arm, pts, resolution, seed, ik_starts).reshape(shape)
-
-
-def _profile(arm: Arm, z_lo: float, z_hi: float, h: float, seed: int, ik_starts: int) -> np.ndarray:
-    """Reachability on the half-plane (radius ≥ 0, height) of a revolving arm, spacing ``h``."""
-    r_max = float(np.hypot(arm.shoulder_offset[0], arm.shoulder_offset[1]) + arm.max_extent)
-    rs = np.arange(0.0, r_max + 2 * h, h)
-    zs = np.arange(z_lo, z_hi + 2 * h, h)
-    rr, zz = np.meshgrid(rs, zs, indexing="ij")
-    pts = np.stack([rr.ravel(), np.zeros(rr.size), zz.ravel()], axis=1)
-    return _ik_grid(arm, pts, h, seed, ik_starts).reshape(rr.shape)
-
-
-def _refine_profile(
-    arm: Arm, prof: np.ndarray, z_lo: float, h: float, seed: int, ik_starts: int
 ) -> tuple[np.ndarray, np.ndarray]:
-    """IK on a REFINE-times finer sub-grid of every boundary cell of the profile.
+    """IK on a REFINE-times finer sub-grid of every boundary cell of the d-dimensional ``grid``.
 
-    A boundary cell has corners that disagree; its eight neighbours are refined too, so a
-    boundary that bends between coarse points is followed. Returns the cells (m×2) and their
-    sub-grids (m × (REFINE+1) × (REFINE+1)); the sub-grid corners are the coarse points.
+    A boundary cell has corners that disagree; with ``GROW[d]`` its 3^d − 1 neighbours are
+    refined too. Returns the cells (m×d, sorted) and their sub-grids (m × (REFINE+1)^d); a
+    sub-grid's corners are the coarse points, and neighbouring cells share their faces' points
+    (each solved once).
     """
-    n = REFINE
-    g = prof.astype(np.int8)
-    corners = g[:-1, :-1] + g[1:, :-1] + g[:-1, 1:] + g[1:, 1:]
-    mixed = (corners > 0) & (corners < 4)
+    n, d = REFINE, grid.ndim
+    corners = sum(
+        (grid[tuple(slice(c, s - 1 + c) for c, s in zip(off, grid.shape, strict=True))]).astype(
+            np.int8
+        )
+        for off in _CORNERS[d]
+    )
+    mixed = (corners > 0) & (corners < 2**d)
     grown = mixed.copy()
-    grown[1:, :] |= mixed[:-1, :]
-    grown[:-1, :] |= mixed[1:, :]
-    grown[:, 1:] |= grown[:, :-1].copy()
-    grown[:, :-1] |= grown[:, 1:].copy()
+    if GROW[d]:
+        for axis in range(d):
+            before = grown.copy()
+            lead = [slice(None)] * d
+            lag = [slice(None)] * d
+            lead[axis], lag[axis] = slice(1, None), slice(None, -1)
+            grown[tuple(lead)] |= before[tuple(lag)]
+            grown[tuple(lag)] |= before[tuple(lead)]
     cells = np.argwhere(grown)
     if not len(cells):
-        return np.zeros((0, 2), dtype=int), np.zeros((0, n + 1, n + 1), dtype=bool)
-    # every fine point once (neighbouring cells share their edges), coarse points from prof
-    sub = np.arange(n + 1)
-    keys = cells[:, None, None, :] * n + np.stack(np.meshgrid(sub, sub, indexing="ij"), -1)
-    flat = keys.reshape(-1, 2)
-    uniq, inverse = np.unique(flat, axis=0, return_inverse=True)
+        return np.zeros((0, d), dtype=int), np.zeros((0, *([n + 1] * d)), dtype=bool)
+    sub = np.array(list(np.ndindex(*([n + 1] * d))), dtype=int)  # (n+1)^d × d, C order
+    keys = (cells[:, None, :] * n + sub[None, :, :]).reshape(-1, d)
+    uniq, inverse = np.unique(keys, axis=0, return_inverse=True)
     on_coarse = (uniq % n == 0).all(axis=1)
     values = np.zeros(len(uniq), dtype=bool)
-    coarse = uniq[on_coarse] // n
-    values[on_coarse] = prof[coarse[:, 0], coarse[:, 1]]
+    values[on_coarse] = grid[tuple((uniq[on_coarse] // n).T)]
     todo = uniq[~on_coarse]
-    pts = np.stack([todo[:, 0] * h / n, np.zeros(len(todo)), z_lo + todo[:, 1] * h / n], axis=1)
-    values[~on_coarse] = _ik_grid(arm, pts, h / n, seed + 1, ik_starts)
-    fine = values[inverse.ravel()].reshape(len(cells), n + 1, n + 1)
+    values[~on_coarse] = _ik_grid(arm, at(todo / n), spacing / n, seed, ik_starts)
+    fine = values[inverse.ravel()].reshape(len(cells), *([n + 1] * d))
     return cells.astype(int), fine
 
 
@@ -331,6 +345,7 @@ def load_or_build(
     if use_cache and path.exists():
         with np.load(path) as f:
             prof = f["profile"].astype(bool) if f["profile"].ndim == 2 else None
+            fine = f["fine"].astype(bool)
             return ReachMap(
                 model,
                 str(f["digest"]),
@@ -340,8 +355,8 @@ def load_or_build(
                 prof,
                 float(f["profile_meta"][0]),
                 float(f["profile_meta"][1]),
-                f["fine_cells"] if prof is not None else None,
-                f["fine"].astype(bool) if prof is not None else None,
+                f["fine_cells"] if len(fine) else None,
+                fine if len(fine) else None,
             )
     m = build_map(Arm("map", model), resolution)
     if use_cache:

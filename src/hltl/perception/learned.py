@@ -26,7 +26,7 @@ from hltl.perception.detection import (
     support_planes,
 )
 from hltl.perception.frames import Camera, Frame
-from hltl.perception.geometry import backproject
+from hltl.perception.geometry import backproject, top_height
 from hltl.world.scene import Scene
 
 CLASSES = ("background", "person", "bottle", "chips", "cup", "mug", "can", "apple", "box", "book")
@@ -57,6 +57,11 @@ LOOSE: dict[str, tuple[float, float]] = {c: (0.15, 0.3) for c in ("box", "book")
 # the room is ~1-3 % of them (the default cameras of the 1-, 2- and 4-arm cells; at 4 % no
 # table was found there and nothing on it counted as standing)
 PLANE_SHARE = 0.01
+# beyond this range (m) the network also looks at full resolution (LearnedBackend._probabilities)
+FAR = 2.5
+ZOOM_PAD = 16  # pixels of context around the far band
+SPLIT_HEIGHT = 0.03  # each of two objects split apart is at least this tall (m)
+STRAY = 0.2  # at most this share of a region's pixels are dropped as strays around an object
 HEIGHT_SIGMA = 0.006  # spread of a measured height about the true one when the top is seen (m)
 HIDDEN_TOP = 0.01  # chance that a shorter measured height is a taller object with its top hidden
 
@@ -94,6 +99,18 @@ def inputs(frame: Frame, camera: Camera, height: F64 | None = None) -> F32:
     out[3] = np.clip(depth, 0.0, 8.0) / 4.0 - 0.5
     out[4] = np.clip(z, -1.0, 2.5)
     out[5] = valid
+    return out
+
+
+def zoomed_inputs(rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32], z: F64) -> F32:
+    """The network's input at full resolution with the depth halved: what a camera at half the
+    distance would see at half resolution (colour of each pixel, its depth / 2, its world
+    height — heights do not change with the distance)."""
+    out = np.empty((CHANNELS, *depth.shape), np.float32)
+    out[:3] = rgb.astype(np.float32).transpose(2, 0, 1) / 255.0 - 0.5
+    out[3] = np.clip(depth.astype(np.float32) / 2.0, 0.0, 8.0) / 4.0 - 0.5
+    out[4] = np.clip(z, -1.0, 2.5)
+    out[5] = depth > 0
     return out
 
 
@@ -180,6 +197,59 @@ def _shared(path: Path) -> SegmenterModel:
     return _MODELS[path]
 
 
+@dataclass(frozen=True, slots=True)
+class PixelProbabilities:
+    """Class probabilities over a frame: ``half`` (classes × H/2 × W/2, each value covering its
+    2×2 block) and, where ``box`` (v0, v1, u0, u1) says, ``zoom`` (classes × the box, full
+    resolution) for the box's pixels ``far`` marks."""
+
+    half: F32
+    box: tuple[int, int, int, int] | None = None
+    zoom: F32 | None = None
+    far: Mask | None = None
+
+    def _merged(self, p: F32) -> tuple[npt.NDArray[np.int64], F32]:
+        """Class and confidence of each pixel of ``p``, the confused categories counted as one
+        class (their summed probability decides; the class is the first of them)."""
+        group = [CLASSES.index(c) for c in CONFUSED]
+        merged = p.copy()
+        merged[group[0]] = p[group].sum(axis=0)
+        merged[group[1:]] = 0.0
+        return merged.argmax(axis=0), merged.max(axis=0)
+
+    def labels(self, shape: tuple[int, ...]) -> tuple[npt.NDArray[np.int64], F32]:
+        """(class, confidence) of every pixel of a frame of ``shape``; a last odd row or column
+        the half-resolution pass did not cover is background."""
+        cls, conf = self._merged(self.half)
+        full = np.zeros(shape[:2], dtype=np.int64)
+        fconf = np.ones(shape[:2], dtype=np.float32)
+        h2, w2 = cls.shape
+        full[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
+        fconf[: 2 * h2, : 2 * w2] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
+        if self.box is not None and self.zoom is not None and self.far is not None:
+            v0, v1, u0, u1 = self.box
+            zc, zf = self._merged(self.zoom)
+            full[v0:v1, u0:u1] = np.where(self.far, zc, full[v0:v1, u0:u1])
+            fconf[v0:v1, u0:u1] = np.where(self.far, zf, fconf[v0:v1, u0:u1])
+        return full, fconf
+
+    def mean(self, k: int, mask: Mask) -> float:
+        """Mean probability of class ``k`` over the pixels of ``mask``."""
+        v, u = np.nonzero(mask)
+        if len(v) == 0:
+            return 0.0
+        vals = self.half[k][
+            np.minimum(v // 2, self.half.shape[1] - 1), np.minimum(u // 2, self.half.shape[2] - 1)
+        ]
+        if self.box is not None and self.zoom is not None and self.far is not None:
+            v0, v1, u0, u1 = self.box
+            inside = (v >= v0) & (v < v1) & (u >= u0) & (u < u1)
+            vi, ui = v[inside] - v0, u[inside] - u0
+            far = self.far[vi, ui]
+            vals[np.flatnonzero(inside)[far]] = self.zoom[k][vi[far], ui[far]]
+        return float(vals.mean())
+
+
 class LearnedBackend(DepthBackend):
     """Objects (and people) from the trained segmenter; labels are categories."""
 
@@ -190,6 +260,7 @@ class LearnedBackend(DepthBackend):
     ) -> None:
         super().__init__(scene, edge)
         self.model = _shared(SHIPPED if weights is None else Path(weights))
+        self._depth: npt.NDArray[np.float32] = np.zeros((0, 0), np.float32)  # the last frame's
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         from scipy import ndimage
@@ -197,21 +268,11 @@ class LearnedBackend(DepthBackend):
         depth = frame.depth
         view = self.view(depth, camera)
         valid, pts, z = view.valid, view.points, view.z
-        prob = self.model.probabilities(inputs(frame, camera, z))
-        # the confused categories count as one class: their summed probability decides a pixel
-        group = [CLASSES.index(c) for c in CONFUSED]
-        merged = prob.copy()
-        merged[group[0]] = prob[group].sum(axis=0)
-        merged[group[1:]] = 0.0
-        cls = merged.argmax(axis=0)
-        conf = merged.max(axis=0)
-        h, w = frame.depth.shape
-        # back to full resolution (each half-resolution label covers its 2×2 block)
-        full = np.zeros((h, w), dtype=np.int64)
-        full[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(cls, 2, 0), 2, 1)
-        fconf = np.zeros((h, w), dtype=np.float32)
-        fconf[: 2 * cls.shape[0], : 2 * cls.shape[1]] = np.repeat(np.repeat(conf, 2, 0), 2, 1)
         self.planes = support_planes(z[valid][::16], share=PLANE_SHARE)
+        self._depth = depth
+        prob = self.probabilities(frame, camera, z)
+        full, fconf = prob.labels(depth.shape)
+        group = [CLASSES.index(c) for c in CONFUSED]
         keep = valid & (full > 0) & (fconf >= MIN_CONFIDENCE)
         for p in self.planes:  # a table's pixels at an object's foot are not the object
             keep &= np.abs(z - p) > 0.01
@@ -237,6 +298,43 @@ class LearnedBackend(DepthBackend):
                 score = float(fconf[mask].mean())
                 out.append(Detection("object", label, mask, score, box_of(mask)))
         return out
+
+    def probabilities(self, frame: Frame, camera: Camera, z: F64) -> PixelProbabilities:
+        """The network's class probabilities for ``frame``: on the half-resolution frame, and
+        again at full resolution with the depth halved — the view of a camera at half the
+        distance — over the box of the far pixels (:data:`FAR` and beyond) in the band where
+        objects stand on the support planes: a cup 4 m away is a handful of half-resolution
+        pixels, too few for the network (docs/perception.md)."""
+        half = self.model.probabilities(inputs(frame, camera, z))
+        box = self._far_box(frame.depth, z)
+        if box is None:
+            return PixelProbabilities(half)
+        v0, v1, u0, u1 = box
+        zoom = self.model.probabilities(
+            zoomed_inputs(frame.rgb[v0:v1, u0:u1], frame.depth[v0:v1, u0:u1], z[v0:v1, u0:u1])
+        )
+        return PixelProbabilities(half, box, zoom, frame.depth[v0:v1, u0:u1] >= FAR)
+
+    def _far_box(self, depth: npt.NDArray[np.float32], z: F64) -> tuple[int, int, int, int] | None:
+        """(v0, v1, u0, u1): the box around the far pixels where objects can stand — up to the
+        tallest category above a support plane, the lowest plane (the floor) left out when there
+        are others — padded by :data:`ZOOM_PAD` pixels; None when there are none."""
+        planes = self.planes[1:] if len(self.planes) > 1 else self.planes
+        tallest = max(hgt for _, hgt in SIZES.values())
+        band = np.zeros(depth.shape, dtype=bool)
+        for p in planes:
+            band |= (z > p + 0.01) & (z < p + tallest + 0.03)
+        band &= depth >= FAR
+        rows, cols = np.flatnonzero(band.any(axis=1)), np.flatnonzero(band.any(axis=0))
+        if len(rows) == 0:
+            return None
+        h, w = depth.shape
+        return (
+            max(int(rows[0]) - ZOOM_PAD, 0),
+            min(int(rows[-1]) + 1 + ZOOM_PAD, h),
+            max(int(cols[0]) - ZOOM_PAD, 0),
+            min(int(cols[-1]) + 1 + ZOOM_PAD, w),
+        )
 
     def _objects(
         self,
@@ -273,32 +371,29 @@ class LearnedBackend(DepthBackend):
             # (a piece of an arm's base next to the object must not sink it)
             tries = [members] if len(members) == 1 else [members] + [[i] for i in members]
             for group_ in tries:
-                q = np.concatenate([clouds[i] for i in group_])
-                if self._plausible(q, r, hgt):
-                    mask = np.zeros(shape, dtype=bool)
-                    for i in group_:
-                        mask[parts[i][0]] |= parts[i][1]
-                    out.append(mask)
-                    if group_ is members:
-                        break
+                mask = np.zeros(shape, dtype=bool)
+                for i in group_:
+                    mask[parts[i][0]] |= parts[i][1]
+                shaped = self._shaped(mask, pts, r, hgt)
+                out += shaped
+                if shaped and group_ is members:
+                    break
         return out
 
-    def _name(self, categories: Sequence[str], q: F64, prob: F32, mask: Mask) -> str:
-        """The one of ``categories`` an object is: its measured height — its top (98th
-        percentile of its points' heights) above the support plane under it — against each
-        category's, weighed with the network's mean probability over its pixels. A top can be
-        hidden (the height then reads low) but an object cannot read taller than it is, so a
-        category shorter than the measurement by more than 2 cm is out, one taller keeps a
-        small chance (HIDDEN_TOP) and the network decides between those."""
+    def _name(self, categories: Sequence[str], q: F64, prob: PixelProbabilities, mask: Mask) -> str:
+        """The one of ``categories`` an object is: its measured height — its top surface
+        (:func:`~hltl.perception.geometry.top_height`, unbiased by depth noise) above the support
+        plane under it — against each category's, weighed with the network's mean probability
+        over its pixels. A top can be hidden (the height then reads low) but an object cannot
+        read taller than it is, so a category shorter than the measurement by more than 2 cm is
+        out, one taller keeps a small chance (HIDDEN_TOP) and the network decides between
+        those."""
         zmin = float(q[:, 2].min())
         below = [p for p in self.planes if p <= zmin + 0.01]
-        tall = float(np.percentile(q[:, 2], 98)) - (max(below) if below else zmin)
-        v, u = np.nonzero(mask)
-        v = np.minimum(v // 2, prob.shape[1] - 1)
-        u = np.minimum(u // 2, prob.shape[2] - 1)
+        tall = top_height(q[:, 2]) - (max(below) if below else zmin)
 
         def score(c: str) -> float:
-            net = float(prob[CLASSES.index(c)][v, u].mean())
+            net = prob.mean(CLASSES.index(c), mask)
             fit = math.exp(-0.5 * ((tall - SIZES[c][1]) / HEIGHT_SIGMA) ** 2)
             if tall < SIZES[c][1]:
                 fit += HIDDEN_TOP
@@ -306,19 +401,99 @@ class LearnedBackend(DepthBackend):
 
         return max(categories, key=score)
 
-    def _plausible(self, q: F64, r: float, hgt: float) -> bool:
+    def _shaped(self, mask: Mask, pts: F64, r: float, hgt: float) -> list[Mask]:
+        """The objects a region of one class is: itself if it is plausible (:meth:`_plausible`);
+        else, when it is too wide, two objects side by side (touching in the image with no
+        depth edge between them: 2-means on the floor plan, both halves plausible and at least
+        :data:`SPLIT_HEIGHT` tall); else the one object left when stray pixels around it — a
+        table's fringe, the edge of a link — are dropped (those farther than its radius + 2 cm
+        from the median position; at most :data:`STRAY` of the region); else none."""
+        q = pts[mask]
+        if self._plausible(q, r, hgt, mask):
+            return [mask]
+        v, u = np.nonzero(mask)
+        if max(np.ptp(q[:, 0]), np.ptp(q[:, 1])) > 2 * r + 0.03 and len(q) >= 2 * MIN_PIXELS:
+            side = two_means(q[:, :2])
+            halves = []
+            for k in (False, True):
+                sub = np.zeros_like(mask)
+                sub[v[side == k], u[side == k]] = True
+                qk = q[side == k]
+                if (
+                    len(qk) >= MIN_PIXELS
+                    and np.ptp(qk[:, 2]) >= SPLIT_HEIGHT
+                    and self._plausible(qk, r, hgt, sub)
+                ):
+                    halves.append(sub)
+            if len(halves) == 2:
+                return halves
+        near = np.hypot(*(q[:, :2] - np.median(q[:, :2], axis=0)).T) <= r + 0.02
+        if near.sum() >= (1.0 - STRAY) * len(q):
+            sub = np.zeros_like(mask)
+            sub[v[near], u[near]] = True
+            if self._plausible(q[near], r, hgt, sub):
+                return [sub]
+        return []
+
+    def _plausible(self, q: F64, r: float, hgt: float, mask: Mask | None = None) -> bool:
+        """Can points ``q`` be one object of radius ``r`` and height ``hgt``: no wider or
+        taller (+3 cm), standing on a support plane — its lowest point at most 12 cm above it,
+        or, when something nearer hides its foot (:meth:`_foot_hidden`, needs ``mask``), its
+        top at most the height (+3 cm) above it — and not centred on a registered arm's base."""
         span = np.ptp(q, axis=0)
         if max(span[0], span[1]) > 2 * r + 0.03 or span[2] > hgt + 0.03:
             return False
         zmin = float(q[:, 2].min())
         below = [p for p in self.planes if p <= zmin + 0.01]
-        if not below or zmin - max(below) > 0.12:
+        if not below:
+            return False
+        if zmin - max(below) > 0.12 and not (
+            mask is not None
+            and float(q[:, 2].max()) - max(below) <= hgt + 0.03
+            and self._foot_hidden(mask)
+        ):
             return False
         c = q.mean(axis=0)
         return self.scene is None or all(
             math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) >= BASE_CLEARANCE
             for rb in self.scene.robots
         )
+
+    def _foot_hidden(self, mask: Mask) -> bool:
+        """Is the bottom of ``mask`` hidden by something nearer: in at least half of its
+        columns, the pixel 3 rows below its lowest one is at least 5 cm nearer the camera."""
+        depth = self._depth
+        v, u = np.nonzero(mask)
+        if len(v) == 0:
+            return False
+        bottom = np.full(depth.shape[1], -1)
+        np.maximum.at(bottom, u, v)
+        cols = np.flatnonzero((bottom >= 0) & (bottom + 3 < depth.shape[0]))
+        if len(cols) == 0:
+            return False
+        here = depth[bottom[cols], cols]
+        below = depth[bottom[cols] + 3, cols]
+        return bool(np.mean((below > 0) & (below < here - 0.05)) >= 0.5)
+
+
+def two_means(xy: F64, iterations: int = 10) -> npt.NDArray[np.bool_]:
+    """Split points (n × 2) in two by 2-means, started from the two points farthest apart
+    along the points' main axis; True marks the second group."""
+    c = xy.mean(axis=0)
+    d = xy - c
+    axis = np.linalg.svd(d, full_matrices=False)[2][0]
+    t = d @ axis
+    a, b = xy[int(np.argmin(t))], xy[int(np.argmax(t))]
+    side = np.zeros(len(xy), dtype=bool)
+    for _ in range(iterations):
+        side = np.sum((xy - b) ** 2, axis=1) < np.sum((xy - a) ** 2, axis=1)
+        if side.all() or not side.any():
+            break
+        a2, b2 = xy[~side].mean(axis=0), xy[side].mean(axis=0)
+        if np.allclose(a2, a) and np.allclose(b2, b):
+            break
+        a, b = a2, b2
+    return side
 
 
 def _full(shape: tuple[int, ...], sl: tuple[slice, ...], local: Mask) -> Mask:
