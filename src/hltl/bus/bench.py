@@ -99,7 +99,7 @@ class ApartBench:
     node_cpu_s: float  # CPU time of the node's process over the whole suite
     same_logs: int
     main_cpu_s: float = 0.0  # CPU time of the executor's thread (the loop), without Zenoh's
-    waited_s: float = 0.0  # wall time the loop waited for the node (answers, streamed ticks)
+    waited_s: float = 0.0  # wall time the loop waited for the node's answers
     inproc_main_cpu_s: float = 0.0  # the loop's thread's CPU time in-process, for comparison
 
 
