@@ -24,7 +24,7 @@ OBJECTS = ["cup", "bottle", "chips", "apple"]
 PEOPLE = {"A": "Alice", "B": "Bob", "C": "Carol"}
 
 
-def _refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
+def assert_refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
     with pytest.raises(GroundingError, match=match):
         parse_instruction(text, scene)
 
@@ -168,11 +168,12 @@ def test_both_and_all_n_need_that_many() -> None:
     )
     assert_means("Hand Alice one of the two mugs", "mug_red>A | mug_blue>A")
     assert_means("Give each person one item", "(bottle>A & chips>B) | (chips>A & bottle>B)", DUO)
-    _refused("Give Alice both", match="does not say which 2 objects")  # six objects, none named
-    _refused("Give Person A all three", SQUARE, match="which 3 objects")
-    _refused("Hand Alice one of the three mugs", match="not 3")
-    _refused("Give everyone a mug", match="the scene has only 2")
-    _refused("Give each person the apple", match="handed over only once")
+    # six objects, none named
+    assert_refused("Give Alice both", match="does not say which 2 objects")
+    assert_refused("Give Person A all three", SQUARE, match="which 3 objects")
+    assert_refused("Hand Alice one of the three mugs", match="not 3")
+    assert_refused("Give everyone a mug", match="the scene has only 2")
+    assert_refused("Give each person the apple", match="handed over only once")
 
 
 @settings(max_examples=30, deadline=None)
@@ -194,9 +195,9 @@ def test_respectively_pairs_the_lists(objs: list[str], people: list[str], n: int
 
 
 def test_respectively_refusals() -> None:
-    _refused("Give Alice and Bob the cup respectively", match="respectively")
-    _refused("Give Alice and Bob a mug and the apple respectively", match="respectively")
-    _refused("Give Bob the cup and the apple respectively", match="respectively")
+    assert_refused("Give Alice and Bob the cup respectively", match="respectively")
+    assert_refused("Give Alice and Bob a mug and the apple respectively", match="respectively")
+    assert_refused("Give Bob the cup and the apple respectively", match="respectively")
 
 
 # -- order -----------------------------------------------------------------------------------------
@@ -217,8 +218,8 @@ def test_x_last_comes_after_the_rest(objs: list[str], people: list[str]) -> None
 
 
 def test_last_that_could_order_objects_is_refused() -> None:
-    _refused("Give Alice the cup and the apple last", match="last")
-    _refused("Give Bob the last mug", match="last")
+    assert_refused("Give Alice the cup and the apple last", match="last")
+    assert_refused("Give Bob the last mug", match="last")
 
 
 @settings(max_examples=30, deadline=None)
@@ -250,7 +251,7 @@ def test_she_in_a_trailing_once_is_not_who_waits() -> None:
     assert_means("Give Bob the cup and the apple, and Carol the chips once he has them",
            "(cup>B & apple>B) ; chips>C")  # fmt: skip
     # two people it could be, besides the one who waits
-    _refused(
+    assert_refused(
         "Give Alice the cup and Carol the chips, and Bob the apple once she has it", match="'she'"
     )
 
@@ -269,9 +270,9 @@ def test_either_with_a_list_before_its_or() -> None:
 def test_there_is_the_surface_named_before() -> None:
     assert_means("Put the apple on the shelf and the cup there too", "apple@shelf & cup@shelf")
     assert_means("Put the apple on the shelf, then put the cup there", "apple@shelf ; cup@shelf")
-    _refused("Give the cup to Bob and the apple there too", match="there")
-    _refused("Put the apple on the shelf and the cup on the table and the bottle there")
-    _refused("There's the cup, give it to Bob")
+    assert_refused("Give the cup to Bob and the apple there too", match="there")
+    assert_refused("Put the apple on the shelf and the cup on the table and the bottle there")
+    assert_refused("There's the cup, give it to Bob")
 
 
 ALIASES = [("blue mug", "mug_blue"), ("red mug", "mug_red"), ("water bottle", "bottle")]
@@ -294,10 +295,10 @@ def test_two_word_typo_examples_and_limits() -> None:
     assert_means("Give Carol the bleu mug", "mug_blue>C")
     assert_means("give Carol the wter bottle", "bottle>C")
     assert "rad" in common_words()
-    _refused("give Carol the rad mug", match="rad mug")  # a real word is no typo
+    assert_refused("give Carol the rad mug", match="rad mug")  # a real word is no typo
     # three letters: beside the exact other word, by a swap of neighbours only (session 6)
     assert_means("Give Carol the rde mug", "mug_red>C")
-    _refused("Give Carol the rdd mug")
+    assert_refused("Give Carol the rdd mug")
     assert Lexicon.of(CELL).match(tokenize("bleu mug"), 0) is not None
 
 

@@ -24,7 +24,7 @@ LINE44 = load_scene(ROOT / "examples/scenes/4-4-line.yaml")
 ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
 
 
-def _refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
+def assert_refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
     with pytest.raises(GroundingError, match=match):
         parse_instruction(text, scene)
 
@@ -51,7 +51,7 @@ def _plural(word: str) -> str:
 )
 def test_a_plural_of_one_object_is_refused(word: str, frame: str) -> None:
     """'the cups' with one cup in the scene asks for more than there is: refused, never cup."""
-    _refused(frame.format(_plural(word)), match="only one")
+    assert_refused(frame.format(_plural(word)), match="only one")
 
 
 @pytest.mark.parametrize(
@@ -69,8 +69,8 @@ def test_plural_names_that_fit_the_scene_still_ground(text: str, want: str) -> N
 
 
 def test_the_refusal_of_a_plural_says_what_the_scene_has() -> None:
-    _refused("Give Alice the cups", match=r"'cups'.*only one \(cup\)")
-    _refused("Give Person A the bottles", ONE, match="only one")
+    assert_refused("Give Alice the cups", match=r"'cups'.*only one \(cup\)")
+    assert_refused("Give Person A the bottles", ONE, match="only one")
 
 
 # -- ', and also …' after the steps of a sequence -------------------------------------------------
@@ -126,7 +126,7 @@ def test_the_blind4_sentence_reads_as_intended() -> None:
     ],
 )
 def test_an_unclear_addition_is_refused(text: str) -> None:
-    _refused(text, F42, match="its own sentence")
+    assert_refused(text, F42, match="its own sentence")
 
 
 def test_also_inside_one_step_is_still_that_step() -> None:
@@ -223,7 +223,7 @@ def test_speakers_and_remarks(text: str, want: str) -> None:
     ],
 )
 def test_hedges_and_speaker_words_elsewhere_are_refused(text: str) -> None:
-    _refused(text)
+    assert_refused(text)
 
 
 # -- names: 'the person', 'the water', keyword and short typos -----------------------------------
@@ -312,12 +312,13 @@ def test_the_other_n(text: str, want: str) -> None:
     ],
 )
 def test_an_unclear_rest_is_refused(text: str, scene: Scene) -> None:
-    _refused(text, scene)
+    assert_refused(text, scene)
 
 
 def test_the_other_one_after_a_named_object() -> None:
     assert_means("Hand Carol the red mug and give Bob the other one", "mug_red>C & mug_blue>B")
-    _refused("Give Carol the cup and Bob the other one")  # the cup is the only cup: which other?
+    # the cup is the only cup: which other?
+    assert_refused("Give Carol the cup and Bob the other one")
 
 
 def test_one_each_and_either_one() -> None:
@@ -329,8 +330,8 @@ def test_one_each_and_either_one() -> None:
         two,
     )
     assert_means("Person A wants either one", "bottle>A | chips>A", duo)
-    _refused("Person A wants either one", SQUARE)  # four objects: 'either' means one of two
-    _refused("Alice wants either one and the cup")
+    assert_refused("Person A wants either one", SQUARE)  # four objects: 'either' means one of two
+    assert_refused("Alice wants either one and the cup")
 
 
 def test_whatever_is_nearest() -> None:
@@ -411,7 +412,7 @@ def test_orders(text: str, want: str, scene: Scene | None) -> None:
 
 
 def test_ordinals_that_clash_are_not_reordered() -> None:
-    _refused("Give Alice the cup first and Bob the apple first")
+    assert_refused("Give Alice the cup first and Bob the apple first")
 
 
 # -- corrections, cancellations and negations ------------------------------------------------------
@@ -445,7 +446,7 @@ def test_corrections_and_negations(text: str, want: str) -> None:
     ],
 )
 def test_unclear_cancellations_and_negations_are_refused(text: str) -> None:
-    _refused(text)
+    assert_refused(text)
 
 
 @settings(max_examples=30, deadline=None)
