@@ -768,12 +768,10 @@ class Executor(TickTemplate):
         assert self.spec is not None and self.monitor is not None
         t0 = time.perf_counter()
         key = self._key(ctx, self.world, self.q)
-        pred = self._predicted.get(key) if self.config.predict else None
+        # a predicted plan is used once: were it kept, a later return to the same discrete
+        # start (a place, then a pick of the same object) would take it over again
+        pred = self._predicted.pop(key) if self.config.predict else None
         done = sorted(self.done_formulas())
-        if pred is not None:
-            # a predicted plan is used once: were it kept, a later return to the same discrete
-            # start (a place, then a pick of the same object) would take it over again
-            self._predicted.discard(key, pred.result)
         if pred is not None and self._plan is not None and same_plan(pred.result, self._plan):
             # a takeover must change the plan in hand: this one already is the predicted plan,
             # so it stays, now for the new context; nothing is taken over or replanned

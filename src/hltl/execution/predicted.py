@@ -54,12 +54,9 @@ class PredictedPlans:
         while len(self._plans) > self.size:
             self._plans.popitem(last=False)
 
-    def discard(self, key: PlanKey, result: PlanResult) -> None:
-        """Forget the plan at ``key`` if it does what ``result`` does (found not executable
-        from there, so it must not take over from there)."""
-        held = self._plans.get(key)
-        if held is not None and same_plan(held.result, result):
-            del self._plans[key]
+    def pop(self, key: PlanKey) -> Predicted | None:
+        """The plan at ``key``, forgotten: a predicted plan is used once."""
+        return self._plans.pop(key, None)
 
     def clear(self) -> None:
         self._plans.clear()
