@@ -205,6 +205,13 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("grab", "hold", "of"): "verb:pick",
 }
 
+
+def _phrases(label: str, *texts: str) -> None:
+    """Each of ``texts`` (words separated by spaces) is a phrase read as ``label``."""
+    for text in texts:
+        PHRASES[tuple(text.split())] = label
+
+
 # Politeness and hedges: skipped wherever they occur (docs/grounding.md lists them).
 FILLER_PHRASES: tuple[str, ...] = (
     "thank you",
@@ -240,8 +247,7 @@ FILLER_PHRASES: tuple[str, ...] = (
     "is it possible for you to",
     "would it be possible to",
 )
-for _p in FILLER_PHRASES:
-    PHRASES[tuple(_p.split())] = "filler"
+_phrases("filler", *FILLER_PHRASES)
 # "when you get a sec", "if you have a minute", "whenever you've got time": when, not a condition
 for _sub in ("when", "whenever", "once", "if"):
     for _you in ("you get", "you have", "you 've got", "you got", "you 've", "you find"):
@@ -261,8 +267,9 @@ for _sub in ("once", "when", "after", "as soon as", "and once", "and when"):
                 PHRASES[tuple(f"{_sub} {_you} {_done}{_with}".split())] = "then"
 
 # Corrections: "the bottle, no, the cup", "— sorry, I mean the table", "actually the shelf".
-for _p in ("i mean", "i meant", "sorry i mean", "no wait", "no sorry", "or rather", "no no"):
-    PHRASES[tuple(_p.split())] = "correct"
+_phrases(
+    "correct", "i mean", "i meant", "sorry i mean", "no wait", "no sorry", "or rather", "no no"
+)
 # A correction that takes back what was said before it ("Give Alice the chips. Scratch that, …"):
 # at the start of a sentence it replaces the sentence before (hltl.grounding.phrasing)
 RETRACTIONS = frozenset(
@@ -270,8 +277,7 @@ RETRACTIONS = frozenset(
     for _verb_word in ("scratch", "strike", "scrap", "forget", "ignore", "disregard")
     for _what in ("that", "this", "it")
 )
-for _p in RETRACTIONS:
-    PHRASES[tuple(_p.split())] = "correct"
+_phrases("correct", *RETRACTIONS)
 
 # The speaker asking politely before the request: "I was wondering if you could …": the request
 # follows ("I'd appreciate it if …" and "It would be great if …" are below).
@@ -286,12 +292,12 @@ for _open in (
     for _if in ("if", "whether"):
         for _you in _YOU_COULD:
             PHRASES[tuple(f"{_open} {_if} {_you}".split())] = "filler"
-for _p in (
+_phrases(
+    "filler",
     "do you think you could",
     "any chance you could",
     "is there any chance you could",
-):
-    PHRASES[tuple(_p.split())] = "filler"
+)
 # "…, if that's ok": asking leave, not a condition on the task
 for _that in ("that 's", "that is", "that would be"):
     for _ok in ("ok", "okay", "alright", "all right", "fine", "cool"):
@@ -335,8 +341,7 @@ for _do in (
 ):
     PHRASES[tuple(_do.split())] = "filler"
 # "Be a dear and bring …", "Do me a favour and …": an opening that asks kindly
-for _p in ("be a dear and", "be a love and", "be a star and", "do me a favour and"):
-    PHRASES[tuple(_p.split())] = "filler"
+_phrases("filler", "be a dear and", "be a love and", "be a star and", "do me a favour and")
 PHRASES[("do", "me", "a", "favor", "and")] = "filler"
 # "a mug, I don't mind which": any of them will do
 for _who in ("i", "we", ""):
@@ -344,7 +349,8 @@ for _who in ("i", "we", ""):
         for _which in ("which", "which one", "which it is"):
             PHRASES[tuple(f"{_who} do n't {_mind} {_which}".split())] = "whichever"
 # "Start by giving Carol the apple, then …": the first step
-for _p in (
+_phrases(
+    "first",
     "start by",
     "begin by",
     "start off by",
@@ -358,8 +364,7 @@ for _p in (
     "before anything else",
     "before you do anything else",
     "before doing anything else",
-):
-    PHRASES[tuple(_p.split())] = "first"
+)
 # "Carol asked for the bottle", "Bob is asking for the cup": a want, when an object follows
 # (hltl.grounding.phrasing; "she asked for it earlier" stays a remark)
 for _ask in ("asked", "asks", "asking", "ask"):
@@ -371,7 +376,8 @@ PHRASES[("and", "only", "then")] = "then"
 for _has in ("'s", "has", "have", "'ve", "had"):
     PHRASES[(_has, "got")] = "verb:have"
 # Greetings opening a request ("Good morning! Alice could do with the red mug.")
-for _p in (
+_phrases(
+    "filler",
     "good morning",
     "good afternoon",
     "good evening",
@@ -381,8 +387,7 @@ for _p in (
     "morning all",
     "hi all",
     "hello all",
-):
-    PHRASES[tuple(_p.split())] = "filler"
+)
 # The speaker on what they think or ask ("I think Bob wants the bottle", "Can I ask you to put
 # …"): the request follows. Any other 'I' is still refused (the speaker is nobody in the scene)
 for _p in (
@@ -407,7 +412,8 @@ for _it in ("it 's", "it is", "that 's", "that is"):
         for _trouble in ("trouble", "bother", "hassle"):
             PHRASES[tuple(f"if {_it} {_much} {_trouble}".split())] = "filler"
 # "his choice", "up to you", "either one is fine": the choice is already an "or"
-for _p in (
+_phrases(
+    "whichever",
     "his choice",
     "her choice",
     "their choice",
@@ -424,8 +430,7 @@ for _p in (
     "any is ok",
     "either one is ok",
     "any one is ok",
-):
-    PHRASES[tuple(_p.split())] = "whichever"
+)
 
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
