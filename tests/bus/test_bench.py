@@ -14,6 +14,9 @@ def test_bench_bus_small() -> None:
     # the executor's loop: its CPU time on both sides, and it waited for the node's answers
     assert 0 < b.apart.main_cpu_s <= b.apart.cpu_s and b.apart.inproc_main_cpu_s > 0
     assert 0 < b.apart.waited_s < b.apart.bus_s
+    # and with each stretch in one answer instead of streamed: the same log, queries counted
+    assert b.whole.same_logs == 1 and 0 < b.whole.waited_s < b.whole.bus_s
+    assert b.apart.queries > 0 and b.whole.queries > 0
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
@@ -24,4 +27,20 @@ def test_bench_bus_small() -> None:
     assert 0 <= r.lag_ms[0] <= r.lag_ms[1] <= r.lag_ms[2]
     text = format_bus(b, "hltl bench bus", "2026-01-01", "test")
     assert "## Bus" in text and "1/1" in text and "### Real time" in text
-    assert "process of its own" in text and "waits" in text
+    assert "process of its own" in text and "waits" in text and "in one answer" in text
+
+
+def test_bench_bus_suite_with_the_3d_simulator() -> None:
+    """``hltl bench bus --sim mujoco``: the suite simulated in 3D, in-process and on a node in
+    a process of its own, with the same log."""
+    import pytest
+
+    pytest.importorskip("mujoco")
+    from hltl.bus.bench import bench_bus_suite, format_bus_suite
+
+    b = bench_bus_suite(1, "mujoco")
+    assert b.sim == "mujoco" and b.episodes == 1 and b.same_logs == 1
+    assert b.inproc_s > 0 and b.bus_s > 0 and b.node_cpu_s > 0 and b.inproc_cpu_s > 0
+    assert 0 < b.waited_s < b.bus_s and 0 < b.queries < b.ticks
+    text = format_bus_suite(b, "hltl bench bus --sim mujoco --episodes 1", "2026-01-01", "test")
+    assert "3D simulator" in text and "1/1" in text and "within 10 %" in text

@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -15,6 +16,7 @@ from hltl.sim import scenarios
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
+from hltl.world.scene import Scene
 from tests.bus.helpers import BusRun, Loopback, without_wall_clock
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -22,9 +24,11 @@ EVENTS = ROOT / "examples" / "events"
 HLTL = (sys.executable, "-m", "hltl.cli.main")
 
 
-def _assert_same(loopback: Loopback, scene, ahead: int = 64, **episode) -> BusRun:  # type: ignore[no-untyped-def]
+def _assert_same(
+    loopback: Loopback, scene: Scene, ahead: int = 64, stream: bool = True, **episode: Any
+) -> BusRun:
     local = run_episode(scene, **episode)
-    remote = loopback.run(scene, ahead=ahead, **episode)
+    remote = loopback.run(scene, ahead=ahead, stream=stream, **episode)
     assert without_wall_clock(list(remote.episode.records)) == without_wall_clock(
         list(local.records)
     )
@@ -63,16 +67,33 @@ def test_fig1_episode_in_lockstep(loopback: Loopback) -> None:
     assert run.cell.stats.queries >= run.node.stats.steps
 
 
-def test_look_ahead_is_used_and_undone_when_a_command_comes_first(loopback: Loopback) -> None:
+@pytest.mark.parametrize("stream", [True, False], ids=["streamed", "one-answer"])
+def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
+    loopback: Loopback, stream: bool
+) -> None:
     """2-1 #1: the executor commands in the middle of a quiet stretch the node had simulated
-    ahead; those ticks are undone and the consumed ones replayed, and the log is unchanged."""
+    ahead; those ticks are undone and the consumed ones replayed, and the log is unchanged.
+    Streamed, the stretch comes as further replies after the answer's first tick, and the
+    node saves the simulator every few ticks of it: a cut replays fewer than that many."""
+    from hltl.bus.node import CHECKPOINT
+
     trial = make_trial("2-1", 1)
     run = _assert_same(
-        loopback, trial.scene, instruction=trial.instruction, events=trial.events, seed=trial.seed
+        loopback,
+        trial.scene,
+        stream=stream,
+        instruction=trial.instruction,
+        events=trial.events,
+        seed=trial.seed,
     )
     stats = run.node.stats
-    assert stats.ahead > 0 and stats.undone > 0
+    assert stats.ahead > 0 and stats.undone > 0 and stats.cuts > 0
     assert run.cell.stats.queries * 3 < stats.steps  # far fewer round trips than ticks
+    if stream:
+        assert run.cell.stats.streamed > 0
+        assert stats.replayed < CHECKPOINT * stats.cuts
+    else:
+        assert run.cell.stats.streamed == 0
 
 
 @pytest.mark.parametrize("config", ["2-2", "2-4-line", "4-4-square"])

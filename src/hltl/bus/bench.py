@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import multiprocessing
 import statistics
 import time
@@ -18,10 +19,10 @@ from hltl.bus.session import BusConfig, free_endpoint, open_session
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import ActionDone, ActionStart, EpisodeEnd, EventLog, LogRecord
 from hltl.sim.dynamic import Trial, make_trial
-from hltl.sim.episode import Episode, run_episode
+from hltl.sim.episode import CellFactory, Episode, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.scenarios import get
-from hltl.sim.simulator import PerceptionModel
+from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.skills.library import Action
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -77,6 +78,7 @@ class BusBench:
     inproc_cpu_s: float  # process CPU time (the node shares the process: both sides counted)
     bus_cpu_s: float
     apart: ApartBench  # the same suite with the node in a process of its own
+    whole: ApartBench  # the same, each stretch in one answer rather than streamed
     ticks: int  # simulated ticks the executor consumed over the bus
     queries: int  # reset/step/peek queries (round trips) for those ticks
     undone: int  # ticks simulated ahead and undone because a command came first
@@ -101,6 +103,7 @@ class ApartBench:
     main_cpu_s: float = 0.0  # CPU time of the executor's thread (the loop), without Zenoh's
     waited_s: float = 0.0  # wall time the loop waited for the node's answers
     inproc_main_cpu_s: float = 0.0  # the loop's thread's CPU time in-process, for comparison
+    queries: int = 0  # queries the executor sent
 
 
 @dataclass(frozen=True, slots=True)
@@ -148,12 +151,27 @@ def _trials(episodes: int) -> list[Trial]:
     return [make_trial(CONFIGS[i % len(CONFIGS)], i // len(CONFIGS)) for i in range(episodes)]
 
 
-def _serve_suite(endpoint: str, episodes: int, ready: Any, stop: Any, cpu: Any) -> None:
-    """In a process of its own: a cell node for every trial of the suite (cell ``suite<i>``)
-    until ``stop``; ``cpu`` gets the process's CPU seconds from ``ready`` on."""
+def suite_factory(sim: str, scene: Scene) -> CellFactory:
+    """What simulates a trial of the suite: the discrete-event simulator (``discrete``) or the
+    3D one (``mujoco``: actions timed by their arm motions, the model compiled up front)."""
+    if sim == "discrete":
+        return Simulator
+    from hltl.sim3d.driver import MujocoSimulator
+    from hltl.sim3d.model import compile_scene
+
+    return functools.partial(MujocoSimulator, timing="motion", model=compile_scene(scene))
+
+
+def _serve_suite(
+    endpoint: str, episodes: int, ready: Any, stop: Any, cpu: Any, sim: str = "discrete"
+) -> None:
+    """In a process of its own: a cell node for every trial of the suite (cell ``suite<i>``,
+    simulated by ``sim``) until ``stop``; ``cpu`` gets the process's CPU seconds from ``ready``
+    on."""
     with open_session(BusConfig(listen=(endpoint,))) as session:
         nodes = [
-            CellNode(session, tr.scene, cell=f"suite{i}") for i, tr in enumerate(_trials(episodes))
+            CellNode(session, tr.scene, cell=f"suite{i}", factory=suite_factory(sim, tr.scene))
+            for i, tr in enumerate(_trials(episodes))
         ]
         c0 = time.process_time()
         ready.set()
@@ -164,14 +182,14 @@ def _serve_suite(endpoint: str, episodes: int, ready: Any, stop: Any, cpu: Any) 
 
 
 @contextmanager
-def _node_process(episodes: int) -> Iterator[tuple[Any, Any]]:
+def _node_process(episodes: int, sim: str = "discrete") -> Iterator[tuple[Any, Any]]:
     """The suite's nodes in a child process; yields an executor session connected to them and
     the child's CPU-seconds cell (filled when the block ends)."""
     ctx = multiprocessing.get_context("spawn")  # no fork of a process running Zenoh threads
     ready, stop, cpu = ctx.Event(), ctx.Event(), ctx.Value("d", 0.0)
     endpoint = free_endpoint()
     child = ctx.Process(
-        target=_serve_suite, args=(endpoint, episodes, ready, stop, cpu), daemon=True
+        target=_serve_suite, args=(endpoint, episodes, ready, stop, cpu, sim), daemon=True
     )
     child.start()
     try:
@@ -224,10 +242,10 @@ def bench_bus(
         say(f"round trip median {rt[0]:.3f} ms")
         # 2. the suite, in-process and over the bus, alternating
         trials = _trials(episodes)
-        inproc = bus = inproc_cpu = bus_cpu = apart = apart_cpu = 0.0
-        main_cpu = inproc_main = waited = 0.0
-        same = ticks = queries = undone = apart_same = 0
+        inproc = bus = inproc_cpu = bus_cpu = inproc_main = 0.0
+        same = ticks = queries = undone = 0
         steps: list[float] = []
+        runs: dict[bool, list[_Apart]] = {True: [], False: []}  # streamed, whole
         with _node_process(episodes) as (apart_session, node_cpu):
             for i, tr in enumerate(trials):
                 kw: dict[str, Any] = {
@@ -240,18 +258,9 @@ def bench_bus(
                 inproc += time.perf_counter() - t0
                 inproc_cpu += time.process_time() - c0
                 inproc_main += time.thread_time() - m0
-                # the node in a process of its own
-                opened: list[BusCell] = []
-                make = bus_cell(apart_session, cell=f"suite{i}", opened=opened)
-                t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
-                b = run_episode(tr.scene, simulator=make, **kw)
-                apart += time.perf_counter() - t0
-                apart_cpu += time.process_time() - c0
-                main_cpu += time.thread_time() - m0
-                waited += opened[0].stats.waited
-                opened[0].end()
-                opened[0].close()
-                apart_same += _strip(list(a.records)) == _strip(list(b.records))
+                # the node in a process of its own: the stretch streamed, and in one answer
+                for stream in (True, False):
+                    runs[stream].append(_apart_episode(apart_session, i, tr, kw, a, stream))
                 # the node in this process
                 b, stats = _suite_episode(ns, cs, tr, kw)
                 bus += stats.wall
@@ -261,9 +270,22 @@ def bench_bus(
                 queries += stats.queries
                 undone += stats.undone
                 same += _strip(list(a.records)) == _strip(list(b.records))
-                say(f"{tr.config}#{tr.index}: same log {same}, node apart {apart_same}")
-        apart_bench = ApartBench(
-            apart, apart_cpu, float(node_cpu.value), apart_same, main_cpu, waited, inproc_main
+                say(
+                    f"{tr.config}#{tr.index}: same log {same}, node apart "
+                    f"{sum(r.same for r in runs[True])}"
+                )
+        apart_bench, whole = (
+            ApartBench(
+                sum(r.wall for r in runs[stream]),
+                sum(r.cpu for r in runs[stream]),
+                float(node_cpu.value),
+                sum(r.same for r in runs[stream]),
+                sum(r.main_cpu for r in runs[stream]),
+                sum(r.waited for r in runs[stream]),
+                inproc_main,
+                sum(r.queries for r in runs[stream]),
+            )
+            for stream in (True, False)
         )
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
@@ -273,7 +295,7 @@ def bench_bus(
         for i, tr in enumerate(trials):
             kw = {"instruction": tr.instruction, "events": tr.events, "seed": tr.seed}
             a = run_episode(tr.scene, **kw)
-            opened = []
+            opened: list[BusCell] = []
             with CellNode(ns, tr.scene, faults=replace(faults, seed=i)) as node:
                 b = run_episode(
                     tr.scene,
@@ -301,6 +323,7 @@ def bench_bus(
         inproc_cpu,
         bus_cpu,
         apart_bench,
+        whole,
         ticks,
         queries,
         undone,
@@ -312,6 +335,120 @@ def bench_bus(
         dup,
         rt_bench,
     )
+
+
+@dataclass(frozen=True, slots=True)
+class SuiteBench:
+    """The suite in-process and over the bus with its nodes in a process of their own, with
+    one simulator (``hltl bench bus --sim mujoco``: the 3D one)."""
+
+    sim: str
+    episodes: int
+    inproc_s: float  # wall time of the episodes in-process
+    bus_s: float  # over the bus, node apart
+    inproc_cpu_s: float  # CPU time of the process in-process (the simulator in it)
+    bus_cpu_s: float  # CPU time of the executor's process over the bus
+    node_cpu_s: float  # CPU time of the node's process
+    waited_s: float  # wall time the executor's loop waited for the node's answers
+    ticks: int
+    queries: int
+    same_logs: int
+
+
+def bench_bus_suite(
+    episodes: int, sim: str, on_progress: Callable[[str], None] | None = None
+) -> SuiteBench:
+    """The suite simulated by ``sim``, trial by trial in-process and over the bus with the
+    nodes in a process of their own (no round-trip, fault or real-time runs)."""
+    say = on_progress or (lambda _: None)
+    trials = _trials(episodes)
+    factories = [suite_factory(sim, tr.scene) for tr in trials]  # (models compiled up front)
+    inproc = bus = inproc_cpu = bus_cpu = waited = 0.0
+    same = ticks = queries = 0
+    with _node_process(episodes, sim) as (session, node_cpu):
+        for i, tr in enumerate(trials):
+            kw: dict[str, Any] = {
+                "instruction": tr.instruction,
+                "events": tr.events,
+                "seed": tr.seed,
+            }
+            t0, c0 = time.perf_counter(), time.process_time()
+            a = run_episode(tr.scene, simulator=factories[i], **kw)
+            inproc += time.perf_counter() - t0
+            inproc_cpu += time.process_time() - c0
+            opened: list[BusCell] = []
+            make = bus_cell(session, cell=f"suite{i}", opened=opened)
+            t0, c0 = time.perf_counter(), time.process_time()
+            b = run_episode(tr.scene, simulator=make, **kw)
+            bus += time.perf_counter() - t0
+            bus_cpu += time.process_time() - c0
+            st = opened[0].stats
+            waited, ticks, queries = waited + st.waited, ticks + st.ticks, queries + st.queries
+            opened[0].end()
+            opened[0].close()
+            same += _strip(list(a.records)) == _strip(list(b.records))
+            say(f"{sim} {tr.config}#{tr.index}: same log {same}")
+    return SuiteBench(
+        sim, episodes, inproc, bus, inproc_cpu, bus_cpu, float(node_cpu.value), waited, ticks,
+        queries, same,
+    )  # fmt: skip
+
+
+def format_bus_suite(b: SuiteBench, command: str, date: str, machine: str) -> str:
+    over = _pct(b.bus_s, b.inproc_s)
+    n = max(1, b.episodes)
+    return "\n".join(
+        [
+            f"### The suite over the bus with the 3D simulator (`--sim {b.sim}`)",
+            "",
+            f"Command: `{command}`  ",
+            f"Date: {date}. Machine: {machine} (shared with other jobs: wall times are noisy).",
+            "",
+            "| measure | value | target |",
+            "|---|---|---|",
+            f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s "
+            f"({b.inproc_s / n * 1000:.0f} ms an episode) | — |",
+            f"| same suite over the bus, node in a process of its own | {b.bus_s:.2f} s "
+            f"({over:+.1f} %) | within 10 % |",
+            f"| CPU time in-process / executor's process over the bus / node's process | "
+            f"{b.inproc_cpu_s:.2f} s / {b.bus_cpu_s:.2f} s / {b.node_cpu_s:.2f} s | — |",
+            f"| time the executor's loop waited for the node | {b.waited_s:.2f} s | — |",
+            f"| ticks / queries over the bus | {b.ticks} / {b.queries} | — |",
+            f"| episodes whose log equals the in-process one | {b.same_logs}/{b.episodes} | all |",
+            "",
+            f"The same trials as above, each simulated by the 3D simulator (MuJoCo, actions "
+            f"timed by their arm motions) in-process and on a node in a process of its own. "
+            f"The wall-time target is {'met' if over <= 10 else '**not met**'} on this run: "
+            f"the bus adds {(b.bus_s - b.inproc_s) / n * 1000:+.0f} ms an episode.",
+        ]
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class _Apart:
+    """One trial over the bus with its node in the node process."""
+
+    wall: float
+    cpu: float  # the executor's process
+    main_cpu: float  # the executor's thread
+    waited: float
+    queries: int
+    same: bool
+
+
+def _apart_episode(
+    session: Any, i: int, tr: Trial, kw: dict[str, Any], local: Episode, stream: bool
+) -> _Apart:
+    opened: list[BusCell] = []
+    make = bus_cell(session, cell=f"suite{i}", opened=opened, stream=stream)
+    t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
+    b = run_episode(tr.scene, simulator=make, **kw)
+    wall, cpu, main = time.perf_counter() - t0, time.process_time() - c0, time.thread_time() - m0
+    st = opened[0].stats
+    opened[0].end()
+    opened[0].close()
+    same = _strip(list(local.records)) == _strip(list(b.records))
+    return _Apart(wall, cpu, main, st.waited, st.queries, same)
 
 
 @dataclass(frozen=True, slots=True)
@@ -395,7 +532,7 @@ def _pct(x: float, base: float) -> float:
 def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
     over = _pct(b.bus_s, b.inproc_s)
     cpu_over = _pct(b.bus_cpu_s, b.inproc_cpu_s)
-    ap = b.apart
+    ap, wh = b.apart, b.whole
     apart_over = _pct(ap.bus_s, b.inproc_s)
     # the extra wall time that is neither the loop's extra CPU nor its waiting for the node
     rest = ap.bus_s - b.inproc_s - (ap.main_cpu_s - ap.inproc_main_cpu_s) - ap.waited_s
@@ -416,7 +553,11 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s | — |",
             f"| same suite over the bus, node in a process of its own (as deployed) | "
             f"{ap.bus_s:.2f} s ({apart_over:+.1f} %) | within 10 % |",
-            f"| CPU time, executor's process / node's process (whole suite) | "
+            f"| the same, each stretch in one answer instead of streamed: wall; time the loop "
+            f"waited for the node; queries | {wh.bus_s:.2f} s ({_pct(wh.bus_s, b.inproc_s):+.1f} "
+            f"%); {wh.waited_s:.2f} s (streamed: {ap.waited_s:.2f} s); {wh.queries} (streamed: "
+            f"{ap.queries}) | — |",
+            f"| CPU time, executor's process / node's process (both runs of the suite) | "
             f"{ap.cpu_s:.2f} s ({_pct(ap.cpu_s, b.inproc_cpu_s):+.1f} %) / "
             f"{ap.node_cpu_s:.2f} s | — |",
             f"| the executor's loop (its thread), node apart: CPU time in-process / over the bus; "
@@ -428,8 +569,9 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"{b.inproc_cpu_s:.2f} s / {b.bus_cpu_s:.2f} s ({cpu_over:+.1f} %) | — |",
             f"| simulated ticks / queries over the bus / ticks undone | "
             f"{b.ticks} / {b.queries} / {b.undone} | — |",
-            f"| episodes whose log equals the in-process one, node apart / in the process | "
-            f"{ap.same_logs}/{b.episodes} / {b.same_logs}/{b.episodes} | all |",
+            f"| episodes whose log equals the in-process one, node apart (streamed / one answer) "
+            f"/ in the process | {ap.same_logs}/{b.episodes} ({wh.same_logs}/{b.episodes}) / "
+            f"{b.same_logs}/{b.episodes} | all |",
             f"| under faults (10 % loss, 20 % duplicates, 20 % reordered, 1 ms delay, 10 % lost "
             f"replies, slow subscriber): logs equal | {b.fault_same_logs}/{b.fault_episodes} | — |",
             f"| under those faults: dispatches / lost / started twice | "
@@ -444,11 +586,12 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "The suite alternates, trial by trial, the in-process run, the run over the bus "
             "with the cell node in a process of its own (how the bus is deployed: `hltl node "
             "sim` in one terminal, `hltl run --bus` in another; one node per trial, started "
-            "once before the suite) and the run with the node in the executor's process. The "
+            "once before the suite), the same with each stretch in one answer (as before "
+            "streaming), and the run with the node in the executor's process. The "
             "target is judged on the first: that is what a user sees. With two processes the "
             "node simulates on the other core, but the executor still waits for every answer, "
-            "so the wall time counts the node's work on the bus too; with one process the two "
-            "sides also take turns on one interpreter.",
+            "so the wall time counts the node's work before it answers; with one process the "
+            "two sides also take turns on one interpreter.",
             "",
             f"The wall-time target is {'met' if apart_over <= 10 else '**not met**'} on this "
             f"run: the bus adds {_per(ap.bus_s - b.inproc_s, b)} ms wall per episode with the "
@@ -466,9 +609,11 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "The node simulates the ticks the executor will ask for next (until an action "
             "ends, an instruction arrives or a robot's availability changes, doubling the "
             "stretch while the executor uses all of it) and sends them, with the actions' "
-            "reports and each tick's world as it changed, in one answer; the executor consumes "
-            "them without a round trip, and a command in the middle makes the node undo the "
-            "rest (the simulator's state saved before the stretch) and replay the ticks used, "
+            "reports and each tick's world as it changed: the first in its answer, the rest "
+            "as further replies to the query while it simulates them (1, 2, 4, 8 ticks a "
+            "reply); the executor consumes them without a round trip, and a command in the "
+            "middle makes the node undo the rest (the simulator's state saved before the "
+            "stretch and every 8 ticks of it) and replay the ticks used since the last save, "
             "so the log is unchanged. A step's starts and halts ride the query that follows "
             f"them. Hence {b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % "

@@ -91,6 +91,7 @@ class DriverStats:
     recoveries: int = 0
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
+    streamed: int = 0  # ticks received as further replies (the node streaming a stretch)
     waited: float = 0.0  # wall seconds waiting for the node's answers
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
@@ -113,6 +114,9 @@ class BusCell:
         tick, max_time: the loop's period and time limit, so that the node can simulate the
             next ticks ahead (a wrong guess only costs a round trip).
         ahead: most ticks the node may simulate ahead per answer (0: one query per tick).
+        stream: ask the node to answer with the first tick ahead and stream the rest of the
+            stretch as further replies, simulating while the executor works on what it has
+            (else the answer carries the whole stretch).
         perceived: a perception node's observations to fuse into what the executor sees.
 
     Raises:
@@ -138,6 +142,7 @@ class BusCell:
         max_time: float | None = None,
         ahead: int = 64,
         perceived: PerceptionClient | None = None,
+        stream: bool = True,
     ) -> None:
         self.session = session
         self.perceived = perceived
@@ -171,8 +176,10 @@ class BusCell:
         self._unavailable: frozenset[str] = frozenset()
         self._obs: WorldState | None = None
         # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
-        self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time}
+        self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time, "stream": stream}
         self._ahead: list[dict[str, Any]] = []
+        self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
+        self._streamed = 0  # ticks of the current stretch received so far
         self._batch = 0
         self._consumed = 0
         self.now = 0.0
@@ -320,15 +327,19 @@ class BusCell:
         data: dict[str, Any],
         retries: int | None = None,
         robots: Sequence[str] = (),
+        keep: bool = False,
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
         (A query carrying commands is subject to the executor's message faults, like one.)
+        With ``keep``, an answer that says more ticks follow leaves the query's further replies
+        to :meth:`_pull`.
 
         Raises:
             BusError: the node answered with an error (it refuses the request).
         """
         payload = dumps(data)
         commands = bool(data.get("commands"))
+        self._stream = None  # (a new query ends the node's stream of the last one)
         for attempt in self._attempts(self.timing.retries if retries is None else retries, robots):
             if attempt:
                 self.stats.retransmits += 1
@@ -354,8 +365,13 @@ class BusCell:
                 self.stats.waited += now - w0
                 w0 = now
                 if reply.ok is not None:
+                    d = loads(reply.ok.payload.to_bytes(), f"answer from {key}")
+                    if "from" in d:  # streamed ticks after an answer that was lost: the
+                        continue  # query's end is waited for and it is asked again
                     self.stats.round_trips.append(time.perf_counter() - t0)
-                    return loads(reply.ok.payload.to_bytes(), f"answer from {key}")
+                    if keep and d.get("more"):
+                        self._stream, self._streamed = replies, len(d.get("ahead", ()))
+                    return d
                 refusal = _refusal(reply.err.payload.to_bytes())
                 if refusal is not None:
                     raise BusError(f"{key}: {refusal}")
@@ -477,6 +493,8 @@ class BusCell:
     def _follow(self, t: float) -> None:
         """Bring what the executor knows of the cell to time ``t``: here the node steps to it
         (or already did, ahead of the loop) and every report up to then is in."""
+        if not self._ahead and not self._dirty and self._stream is not None:
+            self._pull()
         if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
             # the node already simulated this tick: no round trip
             d = self._ahead.pop(0)
@@ -490,6 +508,33 @@ class BusCell:
             d = d_
             self._take(d)
         self._sync(int(d["reports"]))
+
+    def _pull(self) -> None:
+        """Wait for the next ticks the node streams (further replies to the last query), up
+        to the query's timeout. The stream is left when it ends, a part of it is missing (a
+        reply lost) or something else comes: the next tick is then asked for."""
+        stream, self._stream = self._stream, None
+        assert stream is not None
+        w0 = time.perf_counter()
+        try:
+            while not self._ahead:
+                reply = next(stream, None)
+                if reply is None or reply.ok is None:  # the query's end, or its timeout
+                    return
+                d = loads(reply.ok.payload.to_bytes(), "streamed ticks")
+                ticks = d.get("ahead")
+                if d.get("from") != self._streamed or not isinstance(ticks, list):
+                    return
+                self._ahead.extend(ticks)
+                self._streamed += len(ticks)
+                self.stats.streamed += len(ticks)
+                if not d.get("more"):
+                    return
+            self._stream = stream
+        except Exception:  # the session closed under us: the next query says so
+            return
+        finally:
+            self.stats.waited += time.perf_counter() - w0
 
     def _request(self, t: float, peek: bool = False) -> dict[str, Any] | None:
         """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands), with
@@ -508,7 +553,7 @@ class BusCell:
         if self._queued:
             req["commands"] = [c.to_dict() for c in self._queued]
             self.stats.commands += len(self._queued)
-        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids)
+        d = self._ask(self.keys.sim_step, req, robots=self.scene.robot_ids, keep=True)
         if d is not None:
             self._step += 1
             self._queued = []
@@ -729,6 +774,7 @@ def bus_cell(
     ahead: int = 64,
     perceived: PerceptionClient | None = None,
     make_cell: Callable[..., BusCell] | None = None,
+    stream: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -758,6 +804,7 @@ def bus_cell(
             max_time=max_time,
             ahead=ahead,
             perceived=perceived,
+            stream=stream,
         )
         if opened is not None:
             opened.append(c)

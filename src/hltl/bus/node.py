@@ -45,6 +45,10 @@ from hltl.world.state import WorldState
 MAX_AHEAD = 256
 # the first look-ahead span, and the least after a command cut one
 SPAN0 = 16
+# most ticks of a stretch streamed in one further reply (chunks double from one up to this)
+MAX_CHUNK = 8
+# a streamed stretch saves the cell every this many ticks (a command then replays fewer)
+CHECKPOINT = 8
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -73,6 +77,8 @@ class NodeStats:
     steps: int = 0
     ahead: int = 0  # ticks simulated ahead of the executor
     undone: int = 0  # of those, ticks undone because a command came first
+    replayed: int = 0  # ticks simulated again after an undo (to where the command came)
+    cuts: int = 0  # stretches a command cut (each undone, then replayed)
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -142,6 +148,7 @@ class _Ahead:
     count: int
     tick: float
     max_time: float
+    stream: bool = False  # answer with the first tick, stream the rest as further replies
 
     @classmethod
     def parse(cls, d: Any) -> _Ahead | None:
@@ -155,7 +162,7 @@ class _Ahead:
             raise BusError(f"malformed look-ahead request: {exc}") from None
         if count <= 0 or not (math.isfinite(tick) and tick > 0):
             return None
-        return cls(count, tick, max_time)
+        return cls(count, tick, max_time, d.get("stream") is True)
 
 
 # a tick simulated ahead: its time, the observation, the actions' reports, and the observation
@@ -169,7 +176,8 @@ class _Batch:
     without a round trip each, and the node commits those it consumed (a command, or the next
     request, says how many). The rest are undone: ``restore`` takes the cell back to before the
     batch and the consumed ticks are replayed, which gives the same results (the cell is a pure
-    function of its inputs)."""
+    function of its inputs). A streamed batch also saves the cell every ``CHECKPOINT`` ticks
+    (``marks``), so that only the ticks since the last save before the command are replayed."""
 
     id: int
     restore: Callable[[], None] | None  # saved before the first tick ahead
@@ -178,6 +186,10 @@ class _Batch:
     ticks: list[_Ticked]
     latest: dict[int, Report]
     seq: int
+    # (i, restore, seq, latest): the cell saved before tick i, and the reports then
+    marks: list[tuple[int, Callable[[], None], int, dict[int, Report]]] = field(
+        default_factory=list
+    )
 
 
 @dataclass(slots=True)
@@ -239,9 +251,12 @@ class CellNode:
         if publish_poses:  # rosbags builds its CDR code on first use (~1 s): not mid-episode
             encode_pose(StampedPose("world", 0.0, (0.0, 0.0, 0.0)))
         k = self.keys
+        # step queries wait in a channel for the node's own thread (_serve_steps), which can
+        # look in it between the ticks it streams
+        self._steps = session.declare_queryable(k.sim_step)
         self._entities: list[Any] = [
             session.declare_queryable(k.sim_reset, self._on_reset),
-            session.declare_queryable(k.sim_step, self._on_step),
+            self._steps,
             session.declare_queryable(k.sim_clock, self._on_clock),
             session.declare_queryable(k.all_states, self._on_state),
             session.declare_subscriber(k.all_actions, self._on_command),
@@ -258,6 +273,10 @@ class CellNode:
                 *(k.joint_states(r.id) for r in scene.robots),
             ):
                 self._publisher(key)
+        self._server = threading.Thread(
+            target=self._serve_steps, name="hltl-node-steps", daemon=True
+        )
+        self._server.start()
 
     # -- lifetime ----------------------------------------------------------------------------------
 
@@ -275,6 +294,10 @@ class CellNode:
             ):  # the session is already closed: nothing left to withdraw
                 e.undeclare()
         self.link.close()
+        # the step server sees its queryable withdrawn and ends: wait for it, so that it never
+        # outlives the interpreter (a thread still in Zenoh's code then aborts the process)
+        if self._server is not threading.current_thread():
+            self._server.join(5.0)
 
     def __enter__(self) -> CellNode:
         return self
@@ -337,13 +360,65 @@ class CellNode:
                     target=self._run_clock, args=(ep,), name="hltl-node-clock", daemon=True
                 ).start()
 
-    def _on_step(self, query: Any) -> None:
+    def _serve_steps(self) -> None:
+        """Answer step queries one at a time until the node closes (its queryable is withdrawn);
+        after an answer that starts a stretch, stream the stretch on (:meth:`_stream`)."""
+        query: Any = None
+        while True:
+            if query is None:
+                try:
+                    query = self._steps.recv()
+                except Exception:  # withdrawn: the node closed
+                    return
+            try:
+                stretch = self._on_step(query)
+                query = None if stretch is None else self._stream(query, *stretch)
+            except Exception:  # (a refusal is answered as such: anything else goes unanswered,
+                query = None  # and the executor asks again or gives up, as with a lost answer)
+
+    def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> Any:
+        """Simulate the rest of a stretch and send it as further replies to ``query`` (chunks
+        of 1, 2, 4, … ticks, each saying the index of its first tick in the batch and whether
+        more follow) while the executor works on the ticks it has. Stop at the stretch's end,
+        or as soon as the next step query waits (the executor has moved on: returned, to be
+        answered next; looked for before every tick), a command settled the batch, or the
+        episode ended."""
+        size, ticks, first = 1, list[dict[str, Any]](), 0
+        while True:
+            time.sleep(0)  # (an executor in this process gets the interpreter lock in between)
+            nxt = self._steps.try_recv()
+            if nxt is not None:
+                return nxt
+            with self._lock:
+                b = s.batch
+                if self._closed or self._ep is not ep or ep.batch is not b:
+                    return None
+                if not ticks:
+                    first = len(b.ticks)
+                tick = self._ahead_tick(ep, s)
+                if tick is not None:
+                    ticks.append(tick)
+                more = tick is not None and not s.done
+                if len(ticks) < size and more:
+                    continue
+                chunk = dumps({"from": first, "ahead": ticks, "more": more})
+                try:
+                    self._reply_bytes(query, chunk)
+                except Exception:  # the query timed out at the executor: it asks again
+                    return None
+            if not more:
+                return None
+            size, ticks = min(2 * size, MAX_CHUNK), []
+
+    def _on_step(self, query: Any) -> tuple[_Episode, _Stretch] | None:
+        """Answer a step query; a stretch to stream on after the answer, if any."""
+        stretch = None
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
                 self.stats.duplicates += 1  # ended already: a copy of the request
                 self._reply(query, {"episode": d.get("episode"), "ended": True})
-                return
+                return None
             ep = self._episode(d.get("episode"))
             if d.get("end"):
                 if ep.clock is not None:
@@ -352,10 +427,10 @@ class CellNode:
                 self.stats.finished += 1
                 self._reply(query, {"episode": ep.id, "ended": True})
                 self.finished.set()
-                return
+                return None
             if d.get("peek") and "step" not in d:  # an unnumbered peek: the clock only
                 self._reply(query, {"episode": ep.id, **self._clock(ep.cell, float(d["t"]))})
-                return
+                return None
             if ep.clock is not None:
                 raise BusError(
                     f"episode {ep.id[:12]} runs in real time on the node's clock: it takes no steps"
@@ -364,7 +439,7 @@ class CellNode:
             if n == ep.last_step and ep.last_reply:  # a retransmitted request: same answer
                 self.stats.duplicates += 1  # its commands are not acted on again
                 self._reply_bytes(query, ep.last_reply)
-                return
+                return None
             if n != ep.last_step + 1:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
             commands = self._parse_commands(ep, d.get("commands", []))
@@ -379,13 +454,16 @@ class CellNode:
                 obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
-            self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
+            s = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
             self._publish_ticks(ep, committed)  # observers: once the executor has its answer
             if obs is not None:
                 self._publish_world(ep.cell, obs, t, answer["observation"])
+            if s is not None and not s.done:
+                stretch = (ep, s)
+        return stretch
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -501,15 +579,16 @@ class CellNode:
 
     def _look_ahead(
         self, ep: _Episode, n: int, t: float, answer: dict[str, Any], ahead: _Ahead | None
-    ) -> None:
+    ) -> _Stretch | None:
         """Simulate the ticks the executor will ask for next, until something happens that it
         may act on (an action ends, an instruction, a robot's availability changes) or
         ``ahead.count`` ticks; they go in ``answer["ahead"]`` (compact: :func:`_compact`) and
-        wait in a batch for the executor to say how many it used. Only cells whose state can
-        be saved and restored (the discrete-event simulator, the 3D one) are run ahead; others
-        are stepped one tick per query."""
+        wait in a batch for the executor to say how many it used. Asked to stream, only the
+        first tick goes in the answer (``"more"``: the stretch, returned, goes on).
+        Only cells whose state can be saved and restored (the discrete-event simulator, the
+        3D one) are run ahead; others are stepped one tick per query."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
-            return
+            return None
         batch = _Batch(n, None, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
         s = _Stretch(
             batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
@@ -517,9 +596,14 @@ class CellNode:
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
+            if ahead.stream:
+                break
         if out:
             ep.batch = batch
             answer["ahead"] = out
+            if ahead.stream and not s.done:
+                answer["more"] = True
+        return s
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> dict[str, Any] | None:
         """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
@@ -534,6 +618,10 @@ class CellNode:
         if b.restore is None:
             b.restore = _saver(ep.cell)
             assert b.restore is not None  # (_look_ahead checked the cell can be saved)
+        elif ahead.stream and len(b.ticks) % CHECKPOINT == 0:  # (streamed: off the critical path)
+            mark = _saver(ep.cell)
+            assert mark is not None
+            b.marks.append((len(b.ticks), mark, b.seq, dict(b.latest)))
         self._seq = b.seq
         try:
             obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
@@ -589,10 +677,18 @@ class CellNode:
             ep.latest, self._seq = b.latest, b.seq
         else:
             assert b.restore is not None  # saved before the first tick ahead
-            b.restore()
+            # back to the last save before the command, then the same calls again give the
+            # same results
+            i, restore, seq, latest = next(
+                (m for m in reversed(b.marks) if m[0] <= consumed),
+                (0, b.restore, b.seq0, b.latest0),
+            )
+            restore()
             self.stats.undone += len(b.ticks) - consumed
-            ep.latest, self._seq = dict(b.latest0), b.seq0
-            for t, *_ in b.ticks[:consumed]:  # the same calls again give the same results
+            self.stats.replayed += consumed - i
+            self.stats.cuts += 1
+            ep.latest, self._seq = dict(latest), seq
+            for t, *_ in b.ticks[i:consumed]:
                 self._tick(ep, t, ep.latest, publish=False)
         return b.ticks[:consumed]
 

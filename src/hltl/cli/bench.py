@@ -74,7 +74,7 @@ from hltl.bench.suite import (
     run_suite_command,
 )
 from hltl.bench.sweep import SweepExecutor
-from hltl.bus.bench import bench_bus, format_bus
+from hltl.bus.bench import bench_bus, bench_bus_suite, format_bus, format_bus_suite
 from hltl.cli.bench_perception import run
 from hltl.errors import HltlError
 from hltl.fileio import open_output, write_output
@@ -332,6 +332,13 @@ def register(sub: Any) -> None:
     bu.add_argument("--round-trips", type=int, default=1000, help="action round trips to time")
     bu.add_argument("--episodes", type=int, default=20, help="episodes in the suite")
     bu.add_argument("--endpoint", default="tcp/127.0.0.1:7448", help="loopback endpoint to use")
+    bu.add_argument(
+        "--sim",
+        choices=("discrete", "mujoco"),
+        default="discrete",
+        help="simulate the suite with the 3D simulator (mujoco: the suite only, in its own "
+        "section)",
+    )
     bu.add_argument("--write", type=Path, help="update this Markdown file's bus section")
     bu.set_defaults(func=run_bus)
 
@@ -340,6 +347,18 @@ def run_bus(args: argparse.Namespace) -> int:
     if args.round_trips < 1 or args.episodes < 1:
         raise HltlError("--round-trips and --episodes must be at least 1")
     console = Console(stderr=True)
+    if args.sim != "discrete":
+        suite = bench_bus_suite(
+            args.episodes, args.sim, on_progress=lambda m: console.print(f"  {m}")
+        )
+        command = f"hltl bench bus --sim {args.sim} --episodes {args.episodes}"
+        if args.write is not None:
+            command += f" --write {shlex.quote(str(args.write))}"
+        body = format_bus_suite(suite, command, datetime.date.today().isoformat(), machine())
+        print(body)
+        if args.write is not None:
+            write_section(args.write, f"bus-{args.sim}", body)
+        return 0
     b = bench_bus(
         args.endpoint,
         round_trips=args.round_trips,
