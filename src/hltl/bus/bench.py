@@ -394,18 +394,30 @@ def bench_bus_suite(
     )  # fmt: skip
 
 
+def _heading(title: str, command: str, date: str, machine: str) -> list[str]:
+    """A bus section's title, command, date and machine, and its table's head."""
+    return [
+        title,
+        "",
+        f"Command: `{command}`  ",
+        f"Date: {date}. Machine: {machine} (shared with other jobs: wall times are noisy).",
+        "",
+        "| measure | value | target |",
+        "|---|---|---|",
+    ]
+
+
 def format_bus_suite(b: SuiteBench, command: str, date: str, machine: str) -> str:
     over = _pct(b.bus_s, b.inproc_s)
     n = max(1, b.episodes)
     return "\n".join(
         [
-            f"### The suite over the bus with the 3D simulator (`--sim {b.sim}`)",
-            "",
-            f"Command: `{command}`  ",
-            f"Date: {date}. Machine: {machine} (shared with other jobs: wall times are noisy).",
-            "",
-            "| measure | value | target |",
-            "|---|---|---|",
+            *_heading(
+                f"### The suite over the bus with the 3D simulator (`--sim {b.sim}`)",
+                command,
+                date,
+                machine,
+            ),
             f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s "
             f"({b.inproc_s / n * 1000:.0f} ms an episode) | — |",
             f"| same suite over the bus, node in a process of its own | {b.bus_s:.2f} s "
@@ -538,13 +550,7 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
     rest = ap.bus_s - b.inproc_s - (ap.main_cpu_s - ap.inproc_main_cpu_s) - ap.waited_s
     return "\n".join(
         [
-            "## Bus (Zenoh, loopback)",
-            "",
-            f"Command: `{command}`  ",
-            f"Date: {date}. Machine: {machine} (shared with other jobs: wall times are noisy).",
-            "",
-            "| measure | value | target |",
-            "|---|---|---|",
+            *_heading("## Bus (Zenoh, loopback)", command, date, machine),
             f"| action → completion round trip, median / p95 / max | "
             f"{b.round_trip_ms[0]:.3f} / {b.round_trip_ms[1]:.3f} / {b.round_trip_ms[2]:.3f} ms"
             " | ≤ 5 ms median |",

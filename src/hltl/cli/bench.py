@@ -9,7 +9,9 @@ import os
 import shlex
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import asdict
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -352,13 +354,7 @@ def run_bus(args: argparse.Namespace) -> int:
             args.episodes, args.sim, on_progress=lambda m: console.print(f"  {m}")
         )
         command = f"hltl bench bus --sim {args.sim} --episodes {args.episodes}"
-        if args.write is not None:
-            command += f" --write {shlex.quote(str(args.write))}"
-        body = format_bus_suite(suite, command, datetime.date.today().isoformat(), machine())
-        print(body)
-        if args.write is not None:
-            write_section(args.write, f"bus-{args.sim}", body)
-        return 0
+        return _emit(args, command, f"bus-{args.sim}", partial(format_bus_suite, suite))
     b = bench_bus(
         args.endpoint,
         round_trips=args.round_trips,
@@ -366,12 +362,19 @@ def run_bus(args: argparse.Namespace) -> int:
         on_progress=lambda m: console.print(f"  {m}"),
     )
     command = f"hltl bench bus --round-trips {args.round_trips} --episodes {args.episodes}"
+    return _emit(args, command, "bus", partial(format_bus, b))
+
+
+def _emit(
+    args: argparse.Namespace, command: str, section: str, fmt: Callable[[str, str, str], str]
+) -> int:
+    """Print a bus section (``fmt(command, date, machine)``) and write it with ``--write``."""
     if args.write is not None:
         command += f" --write {shlex.quote(str(args.write))}"
-    body = format_bus(b, command, datetime.date.today().isoformat(), machine())
+    body = fmt(command, datetime.date.today().isoformat(), machine())
     print(body)
     if args.write is not None:
-        write_section(args.write, "bus", body)
+        write_section(args.write, section, body)
     return 0
 
 
