@@ -326,3 +326,13 @@ def test_a_steps_commands_ride_its_query(loopback: Loopback) -> None:
     starts = [r for r in run.episode.records if r.type == "action_start"]
     assert len(starts) > len(dispatches)  # some step started several actions at once
     assert run.node.stats.commands == run.cell.stats.commands >= len(starts)
+
+
+def test_closing_a_node_ends_its_step_server(loopback: Loopback) -> None:
+    """Step queries are served by a thread of the node's own; closing the node withdraws their
+    queryable and the thread ends (it used to keep the queryable borrowed while it waited, so
+    the node could not withdraw it)."""
+    with loopback.node(scenarios.get("fig1").scene) as node:
+        assert node._server.is_alive()
+    node._server.join(5.0)
+    assert not node._server.is_alive()

@@ -253,10 +253,13 @@ class CellNode:
         k = self.keys
         # step queries wait in a channel for the node's own thread (_serve_steps), which can
         # look in it between the ticks it streams
-        self._steps = session.declare_queryable(k.sim_step)
+        steps = session.declare_queryable(k.sim_step)
+        # (read from its handler: a query waited for through the queryable itself keeps it
+        # borrowed, and closing the node could not withdraw it)
+        self._steps = steps.handler
         self._entities: list[Any] = [
             session.declare_queryable(k.sim_reset, self._on_reset),
-            self._steps,
+            steps,
             session.declare_queryable(k.sim_clock, self._on_clock),
             session.declare_queryable(k.all_states, self._on_state),
             session.declare_subscriber(k.all_actions, self._on_command),
