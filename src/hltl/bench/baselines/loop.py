@@ -33,6 +33,7 @@ from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
 from hltl.sim.simulator import Simulator
+from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -136,6 +137,11 @@ class BaselineAgent(TickTemplate):
             self.status = ExecStatus.RUNNING
             self.reason = ""
             self.accepted_at = None
+
+    @property
+    def kinematics(self) -> Kinematics:
+        """The reach the dispatch checks use (the reach spheres)."""
+        return self.semantics.kinematics
 
     def world(self) -> WorldState:
         w = self.sim.observe(self.t) if self._obs is None else self._obs
