@@ -18,6 +18,13 @@ _TOKEN = re.compile(
 )
 
 
+_ELLIPSIS_CORRECTION = re.compile(
+    r"\.{2,}(?=\s*(?:actually|sorry|no|wait|i mean|i meant|rather|or rather|oops|correction|"
+    r"make that|make it)\b)",
+    re.IGNORECASE,
+)
+
+
 @dataclass(frozen=True, slots=True)
 class Token:
     text: str  # as typed
@@ -26,7 +33,10 @@ class Token:
 
 def tokenize(text: str) -> list[Token]:
     """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
-    text = text.replace("\u2019", "'").replace("\u2018", "'")
+    text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u2026", "...")
+    # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
+    # word is the pause of a correction (a comma); any other "..." ends a sentence
+    text = _ELLIPSIS_CORRECTION.sub(",", text)
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
     out = []
     for m in _TOKEN.finditer(text):
@@ -432,6 +442,117 @@ _phrases(
     "any one is ok",
 )
 
+# Session 7 (issue 12): whole families of politeness around a request, not single sentences.
+# Thanks with any intensifier ("thank you so much", "thanks a million", "many thanks").
+for _thanks in ("thank you", "thanks", "thank u", "ty", "thx"):
+    for _much in (
+        "so much",
+        "very much",
+        "so very much",
+        "a lot",
+        "a bunch",
+        "a million",
+        "a ton",
+        "loads",
+        "heaps",
+        "kindly",
+        "in advance",
+        "again",
+    ):
+        PHRASES[tuple(f"{_thanks} {_much}".split())] = "filler"
+_phrases(
+    "filler",
+    "many thanks",
+    "much appreciated",
+    "much obliged",
+    "i appreciate it",
+    "appreciate it",
+    "i 'd appreciate it",
+    "i would appreciate it",
+    "you 're a star",
+    "you 're the best",
+    "you are a star",
+    "you are the best",
+    "no rush",
+    "no hurry",
+    "take your time",
+    "when you 're ready",
+    "when you are ready",
+    "whenever you 're ready",
+    "whenever you are ready",
+    "whenever you can",
+    "at your convenience",
+    "if you please",
+    "by the way",
+    "of course",
+    "as usual",
+    "as always",
+    "for now",
+    "all the way",
+    "the whole way",
+    "all day",
+    "all morning",
+    "all afternoon",
+    "all evening",
+    "all week",
+    "for ages",
+    "for a while",
+    "help me out and",
+    "help us out and",
+    "help me out by",
+    "help us out by",
+    "help me out ,",
+    "help me by",
+    "help us by",
+)
+# "that would be great" / "that'd be lovely" closing a request (without the "if" of the
+# framing "It would be great if …", which is a longer phrase and matched first)
+for _that in ("that would be", "that 'd be", "that will be", "it would be", "it 'd be"):
+    for _good in ("great", "lovely", "nice", "perfect", "brilliant", "awesome", "helpful", "ideal"):
+        PHRASES[tuple(f"{_that} {_good}".split())] = "filler"
+# "Would it be ok to give Bob the mug?", "Is it alright if you hand …": asking leave to ask
+for _it in ("would it be", "is it", "will it be", "would that be", "is that"):
+    for _ok in ("ok", "okay", "alright", "all right", "fine", "possible", "cool"):
+        for _to in ("to", "for you to", "if you", "if you could", "if you would"):
+            PHRASES[tuple(f"{_it} {_ok} {_to}".split())] = "filler"
+# A greeting said alone before the request ("Morning! …", "Afternoon, …"), and an opening that
+# only urges ("Go on, pass …", "Come on, …"): always followed by punctuation, so "the cup
+# should go on the shelf" keeps its verb
+for _hello in ("morning", "afternoon", "evening", "good day", "greetings", "go on", "come on"):
+    for _mark in ("!", ",", ".", "-"):
+        PHRASES[(*_hello.split(), _mark)] = "filler"
+# "Make sure Carol ends up with the apple": she has it
+for _end in ("end", "ends", "ended", "ending", "wind", "winds"):
+    PHRASES[(_end, "up", "with")] = "verb:have"
+
+# "Give Alice the apple, but only after Bob has the cup", "… but not until …": the condition
+# orders, 'only' stresses it
+for _only in ("only", "but only", "and only"):
+    for _after, _lemma in (("after", "after"), ("once", "once"), ("when", "once")):
+        PHRASES[(*_only.split(), _after)] = _lemma
+_phrases("once", "not until", "but not until", "and not until")
+# "Bob or Alice, doesn't matter who, should get the apple": either person will do
+for _it in ("", "it "):
+    for _who in ("who", "which person", "who gets it", "which of them"):
+        PHRASES[tuple(f"{_it}does n't matter {_who}".split())] = "whichever"
+_phrases("whichever", "no matter who", "i do n't mind who", "i do n't care who")
+# "Give Person A everything there is": every object
+_phrases("q:everything", "everything there is", "everything you have", "everything you 've got")
+# A change of mind at the start of a sentence takes back the sentence before, like "no, …"
+# (hltl.grounding.phrasing CHANGES_OF_MIND)
+CHANGES_OF_MIND = frozenset(
+    {
+        "on second thought",
+        "on second thoughts",
+        "second thoughts",
+        "on reflection",
+        "change of plan",
+        "change of plans",
+        "having thought about it",
+    }
+)
+_phrases("correct", *CHANGES_OF_MIND)
+
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
     "one of the": "q:some",
@@ -519,6 +640,8 @@ WORDS: dict[str, str] = {
     "but": "and",
     "respectively": "respectively",
     "both": "both",
+    "let": "let",  # "Let Carol have the cup" (hltl.grounding.phrasing)
+    "as": "as",  # "… as she hasn't eaten": a reason (hltl.grounding.phrasing)
     # sequencing
     "then": "then",
     "afterwards": "then",
@@ -617,6 +740,27 @@ WORDS: dict[str, str] = {
     "hello": "filler",
     "hiya": "filler",
     "possibly": "filler",
+    # intensifiers and softeners ("Bob really needs …", "…, not the red one though")
+    "really": "filler",
+    "though": "filler",
+    "anyway": "filler",
+    "anyways": "filler",
+    "honestly": "filler",
+    "definitely": "filler",
+    "certainly": "filler",
+    "seriously": "filler",
+    "desperately": "filler",
+    "badly": "filler",
+    "truly": "filler",
+    "totally": "filler",
+    "absolutely": "filler",
+    "simply": "filler",
+    "still": "filler",
+    "mate": "filler",
+    "buddy": "filler",
+    "pal": "filler",
+    "folks": "filler",
+    "guys": "filler",
     "howdy": "filler",
     "yo": "filler",
     # a hedge opening the request ("Maybe give Carol the chips?"): hltl.grounding.phrasing drops
@@ -751,6 +895,48 @@ WORDS: dict[str, str] = {
     "job": "task",
     "request": "task",
 }
+
+
+# Single-word politeness, intensifiers and softeners that never carry meaning here: they are
+# taken out when lexing, so the patterns of the passes (hltl.grounding.phrasing) see the words
+# around them side by side ("everything please but the mugs" is "everything but the mugs", not
+# everything). Other fillers stay as items: some passes read them ("each of", "either one").
+DROPPED_FILLERS = frozenset(
+    {
+        "please",
+        "pls",
+        "plz",
+        "kindly",
+        "just",
+        "really",
+        "though",
+        "honestly",
+        "definitely",
+        "certainly",
+        "seriously",
+        "desperately",
+        "badly",
+        "truly",
+        "totally",
+        "absolutely",
+        "simply",
+        "still",
+        "anyway",
+        "anyways",
+        "quickly",
+        "carefully",
+        "gently",
+        "immediately",
+        "asap",
+        "possibly",
+        "mate",
+        "buddy",
+        "pal",
+        "folks",
+        "guys",
+    }
+)
+assert all(WORDS[w] == "filler" for w in DROPPED_FILLERS)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1087,7 +1273,9 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("word", lemma, _text(tokens, i, n)))
             i += n
             continue
-        if tok.low in VERBS:
+        if tok.low in DROPPED_FILLERS:
+            pass
+        elif tok.low in VERBS:
             items.append(Item("word", "verb:" + VERBS[tok.low], tok.text))
         elif tok.low in WORDS:
             items.append(Item("word", WORDS[tok.low], tok.text))

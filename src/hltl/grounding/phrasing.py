@@ -8,7 +8,15 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, RETRACTIONS, Item, Lexicon, Ref, near_keyword
+from hltl.grounding.lexicon import (
+    CHANGES_OF_MIND,
+    NUMBERS,
+    RETRACTIONS,
+    Item,
+    Lexicon,
+    Ref,
+    near_keyword,
+)
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -202,6 +210,12 @@ def _reason_length(items: list[Item], k: int) -> int:
     it = items[k]
     if _is(it, "reason"):
         return 1
+    if _is(it, "as") and k + 2 < len(items):
+        # "… as she hasn't eaten": 'as', someone, then a verb or auxiliary is a reason
+        nxt = items[k + 1]
+        who = _humans(nxt) or _is(nxt, "it", "subject") or nxt.lemma == "pronoun"
+        if who and (_is(items[k + 2], "aux", "not") or items[k + 2].text.lower() in _HAS_WORDS):
+            return 1
     if it.kind == "word" and it.text.lower() == "so" and k + 2 < len(items):
         nxt = items[k + 1]
         if nxt.kind == "unknown" and nxt.lemma == "that":
@@ -209,6 +223,9 @@ def _reason_length(items: list[Item], k: int) -> int:
         if (_humans(nxt) or _is(nxt, "it", "subject")) and _is(items[k + 2], "aux"):
             return 1  # "so she can have some tea"; "so give her the cup" is a request
     return 0
+
+
+_HAS_WORDS = frozenset({"has", "had", "'s", "is", "was", "wants", "needs", "likes"})
 
 
 def _clause_stop(items: list[Item], k: int, to_comma: bool) -> int:
@@ -451,6 +468,18 @@ def _whichever(items: list[Item]) -> list[Item]:
             continue
         if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
             skipping = False
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if (
+                _is(it, ",")
+                and out
+                and _is(out[-1], ",")
+                and nxt is not None
+                and (_is(nxt, "aux") or _is_verb_item(nxt))
+            ):
+                # "Bob or Alice, doesn't matter who, should get the apple": an aside between
+                # the subject and its verb, commas and all
+                out.pop()
+                continue
         if not skipping:
             out.append(it)
     return out
@@ -1015,7 +1044,9 @@ def _corrections(items: list[Item]) -> list[Item]:
                 )
             )
             said_no = any(
-                x.text.lower() in ("no", "instead", "never mind") or x.text.lower() in RETRACTIONS
+                x.text.lower() in ("no", "instead", "never mind")
+                or x.text.lower() in RETRACTIONS
+                or x.text.lower() in CHANGES_OF_MIND
                 for x in items[k:j]
             )
             if said_no and not alone and _clause_opens(after, r):
@@ -1024,6 +1055,17 @@ def _corrections(items: list[Item]) -> list[Item]:
                     raise GroundingError(
                         f"{it.text!r} could take back the whole sentence before it or only its "
                         "last part: say the whole request again"
+                    )
+            changed = any(x.text.lower() in CHANGES_OF_MIND for x in items[k:j])
+            if changed and not alone:
+                last = _sentences(before[:-1])[-1][0]
+                named = [x for x in before[last:] if x.kind == "ent"]
+                if len(named) > 2:
+                    # "Give Alice the cup and Bob the chips. On second thought, give Alice the
+                    # apple": a change of mind about one of several tasks, or about all?
+                    raise GroundingError(
+                        f"{it.text!r} could change the whole sentence before it or only a part "
+                        "of it: say the whole request again"
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
@@ -2172,9 +2214,163 @@ def _nobody_at(items: list[Item], k: int) -> bool:
     )
 
 
+# -- session 7 -------------------------------------------------------------------------------------
+
+# verbs a run-on may start a new request with, in the form people command with ("give", "put")
+_COMMANDS = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
+
+
+def _run_ons(items: list[Item]) -> list[Item]:
+    """'give bob the chips give alice the apple': a request that runs into the next without
+    'and' is two requests. Only where the first is complete (its verb, then a name right before
+    the second verb) and the second starts like a command (the plain verb, typed as its lemma
+    or a put/bring/give verb, then an article or a name): "the cup given to Bob" and "the cup
+    Bob gave me" are no run-ons."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        nxt = items[k + 1] if k + 1 < len(items) else None
+        if (
+            _is_verb_item(it)
+            and it.text.lower() == it.lemma.removeprefix("verb:")
+            and (it.lemma in _COMMANDS or it.lemma in ("verb:put", "verb:place", "verb:fetch"))
+            and out
+            and out[-1].kind == "ent"
+            and nxt is not None
+            and (nxt.kind == "ent" or _is(nxt, "det"))
+            and _clause_has_verb(out)
+        ):
+            out.append(Item("word", "and", "and"))
+        out.append(it)
+    return out
+
+
+def _clause_has_verb(before: list[Item]) -> bool:
+    """Whether the clause ending ``before`` has a verb of the grammar after its last separator."""
+    for x in reversed(before):
+        if x.kind == "punct" or _is(x, "and", "then", "or", "prior", "once", "after", "before"):
+            return False
+        if _is_verb_item(x):
+            return True
+    return False
+
+
+def _telegraphic(items: list[Item]) -> list[Item]:
+    """'Alice. Cup. Please.', 'Bob first: the chips. Then Alice: the bottle.': a sentence that is
+    only a person (after ordering words) and the sentence after it, only objects, are one
+    hand-over ('Alice the cup', as 'Alice: the cup' is). 'first'/'last' after the person moves
+    after the objects ('Bob the chips first')."""
+    spans = _sentences(items)
+    out: list[Item] = []
+    rank: list[Item] = []  # 'first'/'last' said after the person, for the end of the objects
+    for n, (start, end) in enumerate(spans):
+        sent = items[start:end]
+        nxt = items[spans[n + 1][0] : spans[n + 1][1]] if n + 1 < len(spans) else []
+        core = [x for x in sent if not _is(x, "filler", ",")]
+        lead = 0
+        while lead < len(core) and _is(core[lead], "then", "and", "first"):
+            lead += 1
+        person = core[lead:]
+        said = person[1:] if len(person) == 2 and _is(person[1], "first", "last") else []
+        things = [x for x in nxt if not _is(x, "filler", ",")]
+        if (
+            not rank
+            and len(person) == 1 + len(said)
+            and _humans(person[0])
+            and end < len(items)
+            and any(_objects(x) for x in things)
+            and all(_objects(x) or _is(x, "det", "and") for x in things)
+        ):
+            out.extend(core[:lead] + person[:1])  # the full stop after the person goes
+            rank = said or [Item("word", "filler", "")]
+            continue
+        out.extend(sent)
+        if rank:
+            out.extend(x for x in rank if not _is(x, "filler"))
+            rank = []
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _let(items: list[Item]) -> list[Item]:
+    """'Let Carol have the cup': the person is to have it; 'let' before anything but a person
+    is refused (it may be the speaker's 'let me')."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        if _is(it, "let"):
+            if k + 1 < len(items) and _humans(items[k + 1]):
+                continue
+            raise GroundingError(
+                f"cannot read {_words_of(items[k : k + 3])!r}: say who gets what, e.g. "
+                "'let Carol have the cup'"
+            )
+        out.append(it)
+    return out
+
+
+def _both_people(items: list[Item]) -> list[Item]:
+    """'Give both Alice and Bob a mug': 'both' before two people joined by 'and' only stresses
+    them (the bracket 'both … and …' is for objects)."""
+    return [
+        it
+        for k, it in enumerate(items)
+        if not (
+            _is(it, "both")
+            and k + 3 < len(items)
+            and _humans(items[k + 1])
+            and _is(items[k + 2], "and")
+            and _humans(items[k + 3])
+        )
+    ]
+
+
+def _then_inside(items: list[Item]) -> list[Item]:
+    """'Give Person A the apple. Person B should then get the chips.': 'then' after the person
+    opening a clause and before its verb orders the whole clause, as 'Then Person B should get
+    the chips'."""
+    out = list(items)
+    k = 0
+    while k < len(out):
+        opens = k == 0 or out[k - 1].kind == "punct" or _is(out[k - 1], "and")
+        if not (opens and _humans(out[k])):
+            k += 1
+            continue
+        j = k + 1
+        while j < len(out) and _is(out[j], "aux", "filler"):
+            j += 1
+        if j + 1 < len(out) and _is(out[j], "then") and _is_verb_item(out[j + 1]):
+            out.insert(k, out.pop(j))
+            k = j + 1
+            continue
+        k += 1
+    return out
+
+
+def _do_whose(items: list[Item]) -> list[Item]:
+    """'Do Carol's bottle first and then Bob's chips': 'do' opening a clause before a person's
+    possessive is the hand-over of what follows to that person ('Carol the bottle first')."""
+    return [
+        it
+        for k, it in enumerate(items)
+        if not (
+            _is(it, "do")
+            and _opening(items, k)
+            and k + 2 < len(items)
+            and _humans(items[k + 1])
+            and items[k + 2].text.lower() == "'s"
+        )
+    ]
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_telegraphic),
+    _plain(_run_ons),
+    _plain(_let),
+    _plain(_both_people),
+    _plain(_then_inside),
+    _plain(_do_whose),
     _preambles,
     _plain(_hedges),
     _plain(_infinitives),
