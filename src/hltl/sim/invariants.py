@@ -110,7 +110,7 @@ def log_kinematics(start: EpisodeStart, scene: Scene) -> Kinematics | str:
             f"episode_start names unknown kinematics {str(name)[:40]!r}; expected spheres or maps"
         )
     try:
-        # why here: the motion layer loads numpy and the maps; spheres logs need neither
+        # why: the motion extra (numpy, the maps) is needed only for a log run with the maps
         from hltl.motion.workspace import MapKinematics
     except ImportError as exc:
         raise BackendUnavailableError(
