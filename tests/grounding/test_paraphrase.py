@@ -39,22 +39,11 @@ KNOWN_MISSES = frozenset(
         "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
         "Any mug will do for Carol",
-        # blind5 (tuned on in session 7): "belongs on" says where it is kept
-        "The red mug belongs on the shelf",
-        # blind5: three letters two edits from "bob" as typed
-        "pass bbo the chips",
-        # blind5: "swap them" after a correction
-        "Give Carol the chips and Bob the apple; no, swap them",
-        # blind5: 'it' after a negated clause
-        "Don't put the apple on the shelf, put it on the counter",
-        # blind5: a remark naming a surface
+        # blind5 (tuned on in session 7): a remark naming a surface ("it's cluttering the
+        # counter") could be asking for something there
         "Put the cup on the shelf, it's cluttering the counter",
-        # blind5: a surface name as the verb
+        # blind5: a surface name used as the verb
         "Shelf the bottle please",
-        # blind5: "the two people" for everyone
-        "Give the two people the cup and the apple, one each",
-        # blind5: "either of the two" with no noun
-        "Give Person A either of the two",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

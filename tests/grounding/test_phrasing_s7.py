@@ -79,6 +79,13 @@ def test_a_filler_anywhere_never_changes_the_reading(
 
 
 @pytest.mark.parametrize("filler", ["really", "honestly", "definitely", "still", "just"])
+def test_a_filler_inside_a_keyword_of_several_words_is_dropped(filler: str) -> None:
+    """'after anyway that' is 'after that': the filler goes before keywords are matched."""
+    assert_means(f"Give Bob the chips, and after {filler} that Alice the cup", "chips>B ; cup>A")
+    assert_means(f"Give Bob the chips, if you please, and {filler} then the cup", "chips>B ; cup>B")
+
+
+@pytest.mark.parametrize("filler", ["really", "honestly", "definitely", "still", "just"])
 def test_a_filler_between_whole_phrases_is_dropped(filler: str) -> None:
     assert_means(f"Bob {filler} needs the chips", "chips>B")
     assert_means(
@@ -295,3 +302,152 @@ def test_a_change_of_mind_after_several_tasks_is_refused() -> None:
         "Give Alice the cup and Bob the chips. On second thought, give Alice the apple.",
         match="whole sentence",
     )
+
+
+# -- second batch: verbs, wants, suggestions, counts of people, swaps, 'not there but here' ------
+
+SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
+LINE24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Transfer the cup to the shelf", "cup@shelf"),
+        ("Return the cup to Alice", "cup>A"),
+        ("Slide the cup over to Bob", "cup>B"),
+        ("Lay the apple on the table", "apple@table"),
+        ("Stick the cup on the shelf", "cup@shelf"),
+        ("Stow the bottle on the shelf", "bottle@shelf"),
+        ("Lend Bob the red mug", "mug_red>B"),
+        ("The red mug belongs on the shelf", "mug_red@shelf"),
+        ("Bob fancies the apple", "apple>B"),
+        ("Carol requested the cup", "cup>C"),
+        ("Alice would appreciate the chips", "chips>A"),
+        ("Bob is waiting for the cup", "cup>B"),
+        ("How about giving Bob the chips?", "chips>B"),
+        ("Why don't you give Bob the chips?", "chips>B"),
+        ("Why not hand Carol the apple?", "apple>C"),
+        ("Please ensure Alice receives the apple", "apple>A"),
+        ("Give the cup to Bob, yeah?", "cup>B"),
+    ],
+)
+def test_more_verbs_wants_and_suggestions(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The red mug belongs to Alice",  # whose it is, not where it goes
+        "Throw the cup to Bob",  # no throwing
+        "How about the cup?",
+        "Bob is waiting for it",
+    ],
+)
+def test_what_those_verbs_do_not_cover_is_refused(text: str) -> None:
+    assert_refused(text)
+
+
+@pytest.mark.parametrize(
+    ("people", "n"), [("the two people", 2), ("both people", 2), ("all two people", 2)]
+)
+def test_counted_people_are_everyone_when_the_scene_has_that_many(people: str, n: int) -> None:
+    assert n == len(SQUARE.humans)
+    assert_means(
+        f"Give {people} the cup and the apple, one each",
+        "(cup>A & apple>B) | (apple>A & cup>B)",
+        SQUARE,
+    )
+    assert_refused(
+        "Give the three people the cup, the apple and the chips, one each",
+        SQUARE,
+        match="has 2 people",
+    )
+    assert_refused("Give the two people the cup and the apple, one each", CELL, match="has 3")
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.permutations(["cup", "apple", "chips", "bottle"]).map(lambda p: p[:3]))
+def test_one_each_hands_the_named_objects_out_one_to_a_person(objs: list[str]) -> None:
+    """Every way of giving three named objects to three people, one each (an independent
+    enumeration of the permutations)."""
+    import itertools
+
+    named = ", ".join(f"the {o}" for o in objs[:-1]) + f" and the {objs[-1]}"
+    ways = [
+        "(" + " & ".join(f"{o}>{p}" for o, p in zip(perm, "ABC", strict=True)) + ")"
+        for perm in itertools.permutations(objs)
+    ]
+    assert_means(f"Give Alice, Bob and Carol {named}, one each", " | ".join(ways))
+    assert_refused(f"Give Alice and Bob {named}, one each", match="3 objects")
+
+
+def test_one_of_the_count_alone() -> None:
+    assert_means("Give Person A either of the two", "bottle>A | chips>A", LINE24)
+    assert_refused("Give Person A one of the three", LINE24, match="which 3")
+    assert_refused("Give Alice one of the two", match="which 2")
+
+
+@pytest.mark.parametrize(("typed", "pid"), [("bbo", "B"), ("obb", "B"), ("Bbo", "B")])
+def test_a_three_letter_name_with_neighbours_swapped(typed: str, pid: str) -> None:
+    assert_means(f"pass {typed} the chips", f"chips>{pid}")
+
+
+@pytest.mark.parametrize("typed", ["bob", "box", "bib", "bo", "b"])
+def test_other_short_words_are_not_taken_for_bob(typed: str) -> None:
+    """Only a swap of neighbours of an unknown word: a real word or another edit is refused."""
+    if typed == "bob":
+        assert_means("pass bob the chips", "chips>B")
+    else:
+        assert_refused(f"pass {typed} the chips")
+
+
+@pytest.mark.parametrize(
+    "swap", ["; no, swap them", ". Actually, the other way round.", ", no wait, switch them around"]
+)
+def test_swap_them_exchanges_the_two_objects(swap: str) -> None:
+    assert_means(f"Give Carol the chips and Bob the apple{swap}", "apple>C & chips>B")
+    assert_means(
+        f"Put the cup on the shelf and the apple on the table{swap}", "apple@shelf & cup@table"
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Carol the chips, then Bob the apple; no, swap them",  # the order, or the objects?
+        "Give Carol the chips; no, swap them",
+        "Swap them",
+        "Give Carol the chips and Bob the apple; no, swap them and give Alice the cup",
+        "Give Carol the chips and Bob the mugs; no, swap them",
+    ],
+)
+def test_a_swap_that_is_not_two_objects_is_refused(text: str) -> None:
+    assert_refused(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Don't put the apple on the shelf, put it on the counter", "apple@table"),
+        ("Don't give the apple to Bob, give it to Carol", "apple>C"),
+        ("Never hand Bob the cup, hand it to Alice", "cup>A"),
+        ("Don't put the apple on the shelf, give it to Bob", "apple>B"),
+    ],
+)
+def test_not_there_but_here(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Don't put the apple on the shelf, put it on the shelf",
+        "Don't put the apple on the shelf, put it and the cup on the counter",
+        "Don't put the apple on the shelf",
+        "Don't give the apple or the cup to Bob, give it to Carol",
+    ],
+)
+def test_not_there_but_here_refuses_what_is_unclear(text: str) -> None:
+    assert_refused(text)

@@ -72,6 +72,7 @@ for _lemma, _forms in {
     "pass": ("passes", "passing", "passed"),
     "offer": ("offers", "offering", "offered"),
     "serve": ("serves", "serving", "served"),
+    "lend": ("lends", "lending", "lent"),
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -86,6 +87,11 @@ for _lemma, _forms in {
     "move": ("moves", "moving", "moved"),
     "pop": ("pops", "popping", "popped"),  # "pop the apple over to Carol"
     "go": ("goes", "going", "went", "gone"),
+    "transfer": ("transfers", "transferring", "transferred"),
+    "shift": ("shifts", "shifting", "shifted"),
+    "return": ("returns", "returning", "returned"),
+    "slide": ("slides", "sliding", "slid"),
+    "relocate": ("relocates", "relocating", "relocated"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -96,6 +102,13 @@ for _lemma, _forms in {
     "leave": ("leaves", "leaving"),
     "store": ("stores", "storing", "stored"),
     "stack": ("stacks", "stacking", "stacked"),
+    "lay": ("lays", "laying", "laid"),
+    "stick": ("sticks", "sticking", "stuck"),
+    "stow": ("stows", "stowing", "stowed"),
+    "park": ("parks", "parking", "parked"),
+    "plonk": ("plonks", "plonking", "plonked"),
+    "position": ("positions", "positioning", "positioned"),
+    "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)
 # pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")
@@ -106,7 +119,23 @@ for _lemma, _forms in {
     _verb(_lemma, "pick", *_forms)
 # possession, with the person as subject ("A wants the bottle", "once A has the bottle")
 for _lemma, _forms in {
-    "want": ("wants", "wanted"),
+    "want": (
+        "wants",
+        "wanted",
+        "fancy",
+        "fancies",
+        "fancied",
+        "request",
+        "requests",
+        "requested",
+        "require",
+        "requires",
+        "required",
+        "crave",
+        "craves",
+        "craving",
+        "craved",
+    ),
     "need": ("needs", "needed"),
     "have": ("has", "having", "had"),
     "receive": ("receives", "receiving", "received"),
@@ -482,7 +511,6 @@ _phrases(
     "whenever you are ready",
     "whenever you can",
     "at your convenience",
-    "if you please",
     "by the way",
     "of course",
     "as usual",
@@ -553,6 +581,28 @@ CHANGES_OF_MIND = frozenset(
 )
 _phrases("correct", *CHANGES_OF_MIND)
 
+# "Please ensure Alice receives the apple", "see to it that …": the request follows
+_phrases(
+    "filler",
+    "ensure that",
+    "see to it that",
+    "make certain that",
+    "make certain",
+    "why do n't you",
+    "why not",
+    "how about",
+)
+_phrases("verb:like", "would appreciate", "'d appreciate", "would welcome")
+# "Bob is waiting for the cup": a want when objects follow, like "asking for"
+for _wait in ("waiting", "waits", "waited", "hoping", "hopes", "dying", "looking"):
+    PHRASES[(_wait, "for")] = "ask_for"
+
+# "Give Carol the chips and Bob the apple; no, swap them": the two objects change places
+for _swap in ("swap", "switch", "swap round", "switch round", "swap around", "switch around"):
+    for _them in ("them", "those", "these", "the two", "the objects", "them round", "them around"):
+        PHRASES[(*_swap.split(), *_them.split())] = "swap"
+_phrases("swap", "the other way round", "the other way around", "other way round")
+
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
     "one of the": "q:some",
@@ -584,6 +634,9 @@ for _p, _q in {
     "every person": "q:everyone",
     "each of the people": "q:everyone",
     "all the people": "q:everyone",
+    "both people": "q:people:2",
+    "both persons": "q:people:2",
+    "both of the people": "q:people:2",
     # exclusions
     "except for": "except",
     "apart from": "except",
@@ -598,6 +651,12 @@ for _p, _q in {
     "the same goes for": "same",
 }.items():
     PHRASES[tuple(_p.split())] = _q
+
+# "the two people", "all three people": everyone, when the scene has that many
+for _n, _word in ((2, "two"), (3, "three"), (4, "four"), (5, "five")):
+    for _the in ("the", "all", "all the", "all of the"):
+        for _people in ("people", "persons"):
+            PHRASES[(*_the.split(), _word, _people)] = f"q:people:{_n}"
 
 # one category said in other words (British and American English): a scene that names only
 # one of them is understood in the other, unless the other names something else there
@@ -719,6 +778,7 @@ WORDS: dict[str, str] = {
     "arms": "filler",
     "'s": "filler",
     "quickly": "filler",
+    "quick": "filler",  # "Hand Alice the cup, quick!"
     "carefully": "filler",
     "gently": "filler",
     "immediately": "filler",
@@ -762,6 +822,11 @@ WORDS: dict[str, str] = {
     "folks": "filler",
     "guys": "filler",
     "howdy": "filler",
+    "ensure": "filler",  # "Please ensure Alice receives the apple"
+    "yeah": "filler",
+    "yep": "filler",
+    "yup": "filler",
+    "aye": "filler",
     "yo": "filler",
     # a hedge opening the request ("Maybe give Carol the chips?"): hltl.grounding.phrasing drops
     # it there and refuses it anywhere else ("the cup and maybe the apple": is the apple asked?)
@@ -1109,6 +1174,8 @@ class Lexicon:
         "Alcie"). A keyword or a common English word ("hugs", "Carl") is never a misspelling,
         and two names within one edit ("chps": chips or cups) mean the word is not corrected.
         """
+        if len(word) == 3 and word.isalpha():
+            return self._swapped(word)
         if not _correctable(word):
             return None
         keys = [
@@ -1125,6 +1192,23 @@ class Lexicon:
             return None  # several names within one edit ("chps": chips or cups): no guess
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
+
+    def _swapped(self, word: str) -> tuple[Ref, ...] | None:
+        """A name of three letters typed with two neighbours swapped ("bbo" for "Bob"), when the
+        word is no keyword, no word of a known phrase and no common English word, and only one
+        entity is named that way."""
+        if word in WORDS or word in VERBS or word in PHRASE_WORDS or word in common_words():
+            return None
+        found = [
+            e
+            for key, entries in self._phrases.items()
+            if len(key) == 1 and len(key[0]) == 3 and _one_edit(word, key[0])
+            if sorted(word) == sorted(key[0])
+            for e in entries
+        ]
+        if len({r.id for r, _, _ in found}) != 1:
+            return None
+        return (found[0][0],)
 
     def _misspelt_phrase(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
         """A name of several words with one of them mistyped ("bleu mug"): (length, refs).
@@ -1251,7 +1335,7 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
-    tokens = _keyword_typos(tokenize(text), lexicon)
+    tokens = _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon)
     items: list[Item] = []
     i = 0
     while i < len(tokens):
@@ -1273,9 +1357,7 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("word", lemma, _text(tokens, i, n)))
             i += n
             continue
-        if tok.low in DROPPED_FILLERS:
-            pass
-        elif tok.low in VERBS:
+        if tok.low in VERBS:
             items.append(Item("word", "verb:" + VERBS[tok.low], tok.text))
         elif tok.low in WORDS:
             items.append(Item("word", WORDS[tok.low], tok.text))
@@ -1285,6 +1367,28 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
     return _merge_unknown(items)
+
+
+def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
+    """The tokens without DROPPED_FILLERS (and "if you please"), before names and multi-word
+    keywords are matched, so "after anyway that" is still "after that"; a filler word inside a
+    scene name of several words ("still water") stays."""
+    keep = [True] * len(tokens)
+    for i, tok in enumerate(tokens):
+        if [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
+            keep[i] = keep[i + 1] = keep[i + 2] = False
+        elif tok.low in DROPPED_FILLERS and not _in_name(tokens, i, lexicon):
+            keep[i] = False
+    return [t for t, k in zip(tokens, keep, strict=True) if k]
+
+
+def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:
+    """Whether a scene name of several words starting at or before token ``i`` holds it."""
+    for j in range(max(0, i - lexicon.max_len + 1), i + 1):
+        found = lexicon.match(tokens, j)
+        if found is not None and found[0] > 1 and j + found[0] > i:
+            return True
+    return False
 
 
 @functools.cache

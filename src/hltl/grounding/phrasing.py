@@ -28,6 +28,7 @@ _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "als
 # a person wanting something ("Alice doesn't want the cup"); a verb handing something over
 _WANTS = frozenset({"verb:want", "verb:need", "verb:like"})
 _MOVES = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
+_PUTS = frozenset({"verb:put", "verb:place", "verb:set", "verb:leave", "verb:move"})
 
 
 def _is(item: Item, *lemmas: str) -> bool:
@@ -680,6 +681,11 @@ def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if it.kind == "word" and it.text.lower() == "one" and out:
             prev = out[-1]
             if prev.kind == "unknown":
+                alone = _described_one(prev, lexicon) if last_objects is None else None
+                if alone is not None:  # "Give Carol the blue one": the one blue object
+                    out[-1] = Item("ent", f"{prev.lemma} one", f"{prev.text} one", alone)
+                    last_objects = out[-1]
+                    continue
                 if last_objects is None:
                     raise GroundingError(
                         f"'{prev.text} one' refers to no object named before it; "
@@ -706,6 +712,17 @@ def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
             last_objects = it
         out.append(it)
     return out
+
+
+def _described_one(word: Item, lexicon: Lexicon) -> tuple[Ref, ...] | None:
+    """The one object of the scene called '<word> <its category>' ('the blue one' with one blue
+    thing), else None (none, or several: 'the red one' with a red mug and a red cup)."""
+    found: dict[str, Ref] = {}
+    for o in lexicon.scene.objects:
+        refs = lexicon.lookup(f"{word.lemma} {o.category}")
+        for r in refs or ():
+            found.setdefault(r.id, r)
+    return tuple(found.values()) if len(found) == 1 else None
 
 
 def _demonstratives(items: list[Item]) -> list[Item]:
@@ -754,12 +771,27 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.append(Item("ent", it.lemma, it.text, everything, quant="all"))
             k += 1
             continue
-        if _is(it, "q:everyone"):  # "give each person one item": every person in the scene
+        if _is(it, "q:everyone") or it.lemma.startswith("q:people:"):
+            # "give each person one item", "the two people": every person in the scene (a
+            # count must be the scene's)
             people = [Item("ent", it.lemma, it.text, (Ref("human", h.id),)) for h in humans]
             if not people:
                 raise GroundingError(f"{it.text!r}: the scene has no people")
+            counted = it.lemma.removeprefix("q:people:")
+            if counted.isdigit() and int(counted) != len(people):
+                raise GroundingError(
+                    f"{it.text!r}, but the scene has {len(people)} "
+                    f"{'person' if len(people) == 1 else 'people'}; {lexicon.listing('human')}"
+                )
             out.extend(_joined(people))
             k += 1
+            continue
+        one_of = _one_of_the_count(items, k)
+        if one_of is not None:  # "either of the two", "one of the three": one of that many
+            refs = _the_objects(out, one_of, _words_of(items[k : k + 2]), lexicon)
+            words = _words_of(items[k : k + 2])
+            out.append(Item("ent", words.lower(), words, refs, quant="some", group=k))
+            k += 2
             continue
         alone = _counted_alone(items, k)
         if alone:  # "give Alice both", "Person B gets all four": that many objects
@@ -855,6 +887,20 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
 _AFTER_ALONE = frozenset(
     {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to"}
 )
+
+
+def _one_of_the_count(items: list[Item], k: int) -> int | None:
+    """'either of the two', 'one of the three' with no name after: how many to choose from."""
+    it = items[k]
+    if not (_is(it, "q:some") and it.text.lower().endswith(" the")) or k + 1 >= len(items):
+        return None
+    kind, count = _quant_word(items[k + 1])
+    if kind != "num" or count < 2:
+        return None
+    nxt = items[k + 2] if k + 2 < len(items) else None
+    if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
+        return None
+    return count
 
 
 def _counted_alone(items: list[Item], k: int) -> tuple[int, int] | None:
@@ -1345,12 +1391,37 @@ def _not_wanted(items: list[Item]) -> list[Item]:
             rest = rest[1:]  # ", but she wants …"
         if objs is None or not any(x.kind == "ent" for x in rest):
             continue
+        moved = _elsewhere(head, rest, objs)
+        if moved is not None:
+            # "Don't put the apple on the shelf, put it on the counter": 'it' is the apple, and
+            # only its place (or person) changes
+            return _not_wanted([*items[:start], *moved, *items[end:]])
         if any(_is(x, "it", "them") for x in items[comma:]) or any(
             x.kind == "ent" and {r.id for r in x.refs} & objs for x in items[comma:]
         ):
             continue
         return _not_wanted([*items[:start], *rest, *items[end:]])
     return items
+
+
+def _elsewhere(head: list[Item], rest: list[Item], objs: set[str]) -> list[Item] | None:
+    """The request after 'don't <verb> X <to P / on S>,' with its one 'it' read as X, when the
+    negated clause names one object and one person or surface, the request names no object and
+    one other person or surface, and its verb moves things too; else None."""
+    said = [x for x in head if _objects(x)]
+    places = [x for x in head if x.kind == "ent" and not _objects(x)]
+    its = [n for n, x in enumerate(rest) if _is(x, "it")]
+    there = [x for x in rest if x.kind == "ent"]
+    if len(objs) != 1 or len(said) != 1 or len(places) != 1 or len(its) != 1 or len(there) != 1:
+        return None
+    if _objects(there[0]) or {r.id for r in there[0].refs} & {r.id for r in places[0].refs}:
+        return None
+    verb = next((x for x in rest if _is_verb_item(x)), None)
+    if verb is None or verb.lemma not in _MOVES | _PUTS or not _is_verb_item(rest[0]):
+        return None
+    out = list(rest)
+    out[its[0]] = said[0]
+    return out
 
 
 def _unwanted(head: list[Item]) -> set[str] | None:
@@ -1362,7 +1433,7 @@ def _unwanted(head: list[Item]) -> set[str] | None:
         k += 1
     if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
         return None
-    verbs = _WANTS if person else _MOVES
+    verbs = _WANTS if person else _MOVES | _PUTS
     if head[k + 1].lemma not in verbs:
         return None
     k += 2
@@ -1370,9 +1441,14 @@ def _unwanted(head: list[Item]) -> set[str] | None:
     for x in head[k:]:
         if _objects(x):
             objs |= {r.id for r in x.refs}
-        elif not (_humans(x) or _is(x, "and", "to", "for")):
+        elif not (_humans(x) or _is(x, "and", "to", "for") or _places_on(x)):
             return None
     return objs or None
+
+
+def _places_on(x: Item) -> bool:
+    """'on' or a surface: 'Don't put the apple on the shelf'."""
+    return _is(x, "on") or (x.kind == "ent" and all(r.kind == "surface" for r in x.refs))
 
 
 def _instead_of(items: list[Item]) -> list[Item]:
@@ -2362,6 +2438,92 @@ def _do_whose(items: list[Item]) -> list[Item]:
     ]
 
 
+def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Give the two people the cup and the apple, one each': the named objects go one to each
+    of the people named in the clause, a different one each (as 'a mug each' with two mugs).
+    The numbers must match; each object is named alone ('the cup', not 'the mugs')."""
+    k = 0
+    while k + 1 < len(items):
+        said = items[k].text.lower() == "one" and items[k + 1].text.lower() in ("each", "apiece")
+        end = k + 2
+        if not said or (end < len(items) and items[end].kind != "punct"):
+            k += 1
+            continue
+        j = k - 1 if k > 0 and _is(items[k - 1], ",") else k
+        stop = j
+        names: list[Item] = []
+        while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
+            j -= 1
+            if _objects(items[j]):
+                names.insert(0, items[j])
+        while j < stop and not _objects(items[j]):
+            j += 1  # the separators before the first object belong to the clause before it
+        while j > 0 and _is(items[j - 1], "det"):
+            j -= 1
+        people = 0
+        n = j - 1
+        while n >= 0 and not (items[n].kind == "punct" and items[n].lemma in _END):
+            if _humans(items[n]):
+                people += len(items[n].refs)
+            elif items[n].lemma == "q:everyone":
+                people += len(lexicon.scene.humans)
+            elif items[n].lemma.startswith("q:people:"):
+                people += int(items[n].lemma.removeprefix("q:people:"))
+            n -= 1
+        single = all(len(x.refs) == 1 and not x.refs[0].plural for x in names)
+        if len(names) < 2 or not single or people < 2:
+            k += 1
+            continue
+        if people != len(names):
+            raise GroundingError(
+                f"'one each' for {people} people, but {len(names)} objects are named: "
+                "name one for each person"
+            )
+        refs = tuple(x.refs[0] for x in names)
+        words = _words_of(items[j:stop])
+        choice = Item("ent", words.lower(), words, refs, quant="some", group=j)
+        items = [*items[:j], choice, Item("word", "all", "each"), *items[end:]]
+        k = j + 2
+    return items
+
+
+def _swaps(items: list[Item]) -> list[Item]:
+    """'Give Carol the chips and Bob the apple; no, swap them' ('the other way round'): the two
+    objects of the sentence before change places. Only as the last words, after two objects
+    (one each) and two people or two surfaces and nothing else named; refused where the
+    sentence orders its steps (the order could be what is swapped)."""
+    at = next((k for k, x in enumerate(items) if _is(x, "swap")), None)
+    if at is None:
+        return items
+    if any(not (x.kind == "punct" or _is(x, "filler")) for x in items[at + 1 :]):
+        raise GroundingError(f"cannot read {items[at].text!r} before more words: say it again")
+    start = at
+    while start > 0 and (
+        items[start - 1].kind == "punct" or _is(items[start - 1], "correct", "not", "filler")
+    ):
+        start -= 1
+    head = items[:start]
+    objects = [k for k, x in enumerate(head) if _objects(x)]
+    targets = [x for x in head if x.kind == "ent" and not _objects(x)]
+    kinds = {r.kind for x in targets for r in x.refs}
+    ordered = any(_is(x, *_ORDERING, "or") for x in head)
+    if (
+        len(objects) != 2
+        or any(len(head[k].refs) != 1 or head[k].quant for k in objects)
+        or len(targets) != 2
+        or any(len(x.refs) != 1 for x in targets)
+        or len(kinds) != 1
+        or ordered
+    ):
+        raise GroundingError(
+            f"cannot tell what {items[at].text!r} swaps: say the whole request again"
+        )
+    a, b = objects
+    out = list(head)
+    out[a], out[b] = head[b], head[a]
+    return out
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -2385,9 +2547,11 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _relatives,
     _one_anaphora,
     _plain(_demonstratives),
+    _one_each_of,
     _quantifiers,
     _plain(_never_mind),
     _plain(_i_mean_after),
+    _plain(_swaps),
     _plain(_corrections),
     _plain(_nobody),
     _plain(_instead_of),
