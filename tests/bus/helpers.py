@@ -56,14 +56,19 @@ class Loopback:
         factory: Any = None,
         ahead: int = 64,
         realtime: float | None = None,
+        node: CellNode | None = None,
         **episode: Any,
     ) -> BusRun:
         """One episode over the bus (``realtime``: the node runs it on its own clock, that
-        many times faster than real time)."""
+        many times faster than real time), served by a node of its own or by ``node`` (from
+        :meth:`node`, left open)."""
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
         make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
-        with CellNode(self._node_session, scene, cell=cell, faults=node_faults, **served) as node:
+        own = node is None
+        if node is None:
+            node = self.node(scene, cell=cell, faults=node_faults, **served)
+        try:
             ep = run_episode(
                 scene,
                 simulator=make(
@@ -80,7 +85,14 @@ class Loopback:
             (bc,) = opened
             bc.end()
             bc.close()
+        finally:
+            if own:
+                node.close()
         return BusRun(ep, node, bc)
+
+    def node(self, scene: Scene, **kw: Any) -> CellNode:
+        """A cell node on the node's session (close it when done)."""
+        return CellNode(self._node_session, scene, **kw)
 
     def kill_node_session(self) -> None:
         """The node's process dies: its session goes away without a word."""

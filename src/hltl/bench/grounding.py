@@ -30,7 +30,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 5), blind4 (written in session 5 before any grounder change of that session and before
 # running the grounder on it; measured once, then tuned on in session 6), blind5 (written in
 # session 6 before any grounder change of that session and before running the grounder on it;
-# measured once; tests do not assert it).
+# measured once, then tuned on in session 7).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = ("tuning", "heldout", "fresh", "blind", "blind2", "blind3", "blind4", "blind5")
 

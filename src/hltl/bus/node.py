@@ -250,6 +250,14 @@ class CellNode:
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
         self._matched: set[str] = set()  # keys some subscriber listens to
+        if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
+            for key in (
+                k.observation,
+                *(k.human_pose(h.id) for h in scene.humans),
+                *(k.tool_pose(r.id) for r in scene.robots),
+                *(k.joint_states(r.id) for r in scene.robots),
+            ):
+                self._publisher(key)
 
     # -- lifetime ----------------------------------------------------------------------------------
 
@@ -304,6 +312,7 @@ class CellNode:
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = ep = _Episode(episode, cell, records)
+            self._seq = 0  # reports are numbered per episode (the executor counts from 0)
             self.stats.episodes += 1
             self.stats.starts = {}
             obs = cell.observe(0.0)
@@ -801,16 +810,22 @@ class CellNode:
 
     def _put(self, key: str, payload: Callable[[], bytes]) -> None:
         pub = self._publishers.get(key)
-        if pub is None:
-            pub = self._publishers[key] = self.session.declare_publisher(key)
-            # whether anyone listens is kept up to date by Zenoh (asking it every tick costs
-            # more than the rest of an unheard publication)
-            listener = pub.declare_matching_listener(partial(self._on_matching, key))
-            self._entities += [listener, pub]
-            if pub.matching_status.matching:
-                self._matched.add(key)
+        if pub is None:  # (a person the scene does not name)
+            pub = self._publisher(key)
         if key in self._matched:
             pub.put(payload())
+
+    def _publisher(self, key: str) -> Any:
+        """The publisher of ``key``, declared with a listener that tells whether anyone
+        listens: Zenoh keeps that up to date (asking it every tick costs more than the rest of
+        an unheard publication). Declaring one takes milliseconds (the listener's thread
+        starts), so the node declares the scene's keys when it starts, not mid-episode."""
+        pub = self._publishers[key] = self.session.declare_publisher(key)
+        listener = pub.declare_matching_listener(partial(self._on_matching, key))
+        self._entities += [listener, pub]
+        if pub.matching_status.matching:
+            self._matched.add(key)
+        return pub
 
     def _on_matching(self, key: str, status: Any) -> None:
         if status.matching:
