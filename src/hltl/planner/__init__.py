@@ -4,12 +4,11 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import replace
 
-from hltl.planner.anytime import CERTIFY_SHARE, certify, plan_anytime, with_fallback_plan
-from hltl.planner.problem import Instance, Node, Problem, to_seconds
+from hltl.planner.anytime import plan_anytime, with_fallback_plan
+from hltl.planner.problem import Problem
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
-from hltl.planner.search import ALGORITHMS, _Search, plan_steps, search
+from hltl.planner.search import ALGORITHMS, search
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import DEFAULT_SKILLS, Skill
@@ -93,12 +92,6 @@ def plan(
         )
     # a share of the time is kept for a better plan to return should the search time out
     reserve = 0.0 if timeout is None or timeout < 2.0 else min(1.0, FALLBACK_SHARE * timeout)
-    if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
-        t0 = time.perf_counter()
-        s = _Search(problem)
-        pre = certify(problem, s, t0 + CERTIFY_SHARE * timeout)
-        if pre is not None:
-            return _exact_after(problem, s, pre, t0, t0 + timeout - reserve, on_progress)
     result = search(
         problem,
         algorithm=algorithm,
@@ -110,43 +103,3 @@ def plan(
         # the walk checks the clock between routings: leave room for the last one
         return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve)
     return result
-
-
-def _exact_after(
-    problem: Problem,
-    s: _Search,
-    pre: tuple[tuple[int, list[tuple[Node, tuple[Instance, ...], int]]], int],
-    t0: float,
-    deadline: float,
-    on_progress: Callable[[int, float], None] | None,
-) -> PlanResult:
-    """Exact mode after ``certify`` (started at ``t0``): the plan when it meets the bound
-    (proved optimal), else A* for a shorter plan until ``deadline``; when A* proves there is
-    none, the plan is optimal. The stats count the time since ``t0``."""
-    (ticks, chain), lb = pre
-    makespan = to_seconds(ticks)
-    steps = plan_steps(problem, chain)
-    if ticks <= lb:
-        stats = SearchStats(0, 0, time.perf_counter() - t0, "astar")
-        return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, "", makespan)
-    res = search(
-        problem,
-        timeout=max(0.0, deadline - time.perf_counter()),
-        upper=ticks,
-        state=s,
-        on_progress=on_progress,
-    )
-    stats = replace(res.stats, seconds=time.perf_counter() - t0)
-    if res.status is PlanStatus.SOLVED:
-        return replace(res, stats=stats)
-    if res.status is PlanStatus.INFEASIBLE:  # nothing shorter than the plan: it is optimal
-        return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, "", makespan)
-    bound = max(to_seconds(lb), res.lower_bound or 0.0)
-    return PlanResult(
-        PlanStatus.TIMEOUT,
-        steps,
-        makespan,
-        stats,
-        res.reason + f"; best plan found: {makespan:.3f} s",
-        min(bound, makespan),
-    )

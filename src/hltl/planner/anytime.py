@@ -43,9 +43,6 @@ CP_DETOUR = 0.6
 # until this share of the budget
 SCHEDULE_UP_TO = 16
 SCHEDULE_SHARE = 0.25
-# exact mode, cells of more goals than PAIRS_UP_TO (at most SCHEDULE_UP_TO): the share of the
-# timeout spent first on the scheduling bound and plans; when they meet, the plan is optimal
-CERTIFY_SHARE = 0.2
 
 
 @dataclass(frozen=True, slots=True)
@@ -504,32 +501,6 @@ def _schedule_at_start(
     return res.ticks
 
 
-def certify(problem: Problem, s: _Search, until: float) -> tuple[_Found, int] | None:
-    """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
-    ``SCHEDULE_UP_TO`` event goals under fixed durations: a prioritized plan and the
-    scheduling bound, then more plans until one meets the bound or ``until`` passes. (best
-    plan, proven lower bound in ticks); None when the cell is outside that class."""
-    start = problem.start()
-    heur = s.heuristic
-    if problem.monitor.accepted(start[2]) or not (lns.available() and schedule.applicable(problem)):
-        return None
-    n_goals = len(heur.required_atoms(start[2]))
-    if not PAIRS_UP_TO < n_goals <= SCHEDULE_UP_TO:
-        return None
-    lb = heur(start)
-    if math.isinf(lb):
-        return None
-    best = construct(problem, s)
-    if best is None:
-        return None
-    lb = max(round(lb), _schedule_at_start(problem, s, start, round(lb), best[0], until))
-    if best[0] > lb and time.perf_counter() < until:
-        more = _more(problem, s, until, target=lb)
-        if more is not None and more[0] < best[0]:
-            best = more
-    return best, lb
-
-
 def _pairs_at_start(
     problem: Problem, s: _Search, start: Node, until: float, floor: float = 0.0
 ) -> float:
@@ -556,14 +527,13 @@ def _pairs_at_start(
     return best
 
 
-def _more(problem: Problem, s: _Search, until: float, target: float = -1) -> _Found | None:
+def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
     there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
     the walk stops after
     ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
-    (``_jointly``), then the walk goes on if time is left. The best plan found (as soon as
-    one costs at most ``target`` ticks)."""
+    (``_jointly``), then the walk goes on if time is left. The best plan found."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -584,7 +554,7 @@ def _more(problem: Problem, s: _Search, until: float, target: float = -1) -> _Fo
         if found is not None and (best is None or found[0] < best[0]):
             best = found
 
-    while best is None or best[0] > target:
+    while True:
         now = time.perf_counter()
         if now >= walk_until:
             if not joint or best is None:
