@@ -459,14 +459,20 @@ def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
 def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
-    skipping = False
+    skipping, start = False, 0
     for k, it in enumerate(items):
         if _is(it, "whichever", "whatever"):
             if k + 1 < len(items) and _objects(items[k + 1]):
                 out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
                 continue
-            skipping = True
+            skipping, start = True, k
             continue
+        if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
+            # "…, whichever give Bob the mugs": a request run on after the remark
+            raise GroundingError(
+                f"{_words_of(items[k : k + 4])!r} after {items[start].text!r}: say it as a "
+                "request of its own ('…, whichever. Give …')"
+            )
         if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
             skipping = False
             nxt = items[k + 1] if k + 1 < len(items) else None
@@ -2297,37 +2303,61 @@ _COMMANDS = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "ver
 
 
 def _run_ons(items: list[Item]) -> list[Item]:
-    """'give bob the chips give alice the apple': a request that runs into the next without
-    'and' is two requests. Only where the first is complete (its verb, then a name right before
-    the second verb) and the second starts like a command (the plain verb, typed as its lemma
-    or a put/bring/give verb, then an article or a name): "the cup given to Bob" and "the cup
-    Bob gave me" are no run-ons."""
+    """'give bob the chips give alice the apple': requests that run into each other without
+    'and' are each done. Only in a sentence of plain requests (nothing that joins, orders,
+    chooses, corrects or negates: how a run-on would attach to those is unclear), where each
+    request but the first starts like a command (the plain verb, then an article or a name)
+    right after a name: "the cup Bob gave me" and "the cup given to Bob" are no run-ons."""
     out: list[Item] = []
-    for k, it in enumerate(items):
-        nxt = items[k + 1] if k + 1 < len(items) else None
-        if (
-            _is_verb_item(it)
-            and it.text.lower() == it.lemma.removeprefix("verb:")
-            and (it.lemma in _COMMANDS or it.lemma in ("verb:put", "verb:place", "verb:fetch"))
-            and out
-            and out[-1].kind == "ent"
-            and nxt is not None
-            and (nxt.kind == "ent" or _is(nxt, "det"))
-            and _clause_has_verb(out)
-        ):
-            out.append(Item("word", "and", "and"))
-        out.append(it)
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        splits = [
+            k
+            for k in range(1, len(sent) - 1)
+            if _is_verb_item(sent[k])
+            and sent[k].text.lower() == sent[k].lemma.removeprefix("verb:")
+            and sent[k].lemma in _COMMANDS | _PUTS
+            and sent[k - 1].kind == "ent"
+            and (sent[k + 1].kind == "ent" or _is(sent[k + 1], "det"))
+        ]
+        plain = not any(x.kind == "punct" or _is(x, *_RUN_ON_STOPS) for x in sent)
+        if splits and plain and _is_verb_item(sent[0]):
+            for k in reversed(splits):
+                sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
     return out
 
 
-def _clause_has_verb(before: list[Item]) -> bool:
-    """Whether the clause ending ``before`` has a verb of the grammar after its last separator."""
-    for x in reversed(before):
-        if x.kind == "punct" or _is(x, "and", "then", "or", "prior", "once", "after", "before"):
-            return False
-        if _is_verb_item(x):
-            return True
-    return False
+# words that make a run-on unclear: joining, ordering, choosing, correcting, negating
+_RUN_ON_STOPS = frozenset(
+    {
+        "and",
+        "or",
+        "then",
+        "prior",
+        "once",
+        "after",
+        "before",
+        "first",
+        "last",
+        "either",
+        "both",
+        "whichever",
+        "whatever",
+        "correct",
+        "not",
+        "instead",
+        "instead_of",
+        "except",
+        "same",
+        "also",
+        "meanwhile",
+        "in_order",
+        "if",
+    }
+)
 
 
 def _telegraphic(items: list[Item]) -> list[Item]:
@@ -2524,6 +2554,35 @@ def _swaps(items: list[Item]) -> list[Item]:
     return out
 
 
+def _sources(items: list[Item]) -> list[Item]:
+    """'Take the apple off the shelf and give it to Bob', 'Move the cup from the table to the
+    shelf': where a named object is now says nothing new about it and is dropped. Only right
+    after a mention of one object ('the mug from the shelf', with two mugs, is refused as
+    before: the place may be what tells them apart)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        source = _is(it, "from") or (it.kind == "word" and it.text.lower() == "off")
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        prev = next((x for x in reversed(out) if not _is(x, "filler")), None)
+        if (
+            source
+            and j < len(items)
+            and _is_surface(items[j])
+            and prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) == 1
+        ):
+            k = j + 1
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -2531,6 +2590,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_run_ons),
     _plain(_let),
     _plain(_both_people),
+    _plain(_sources),
     _plain(_then_inside),
     _plain(_do_whose),
     _preambles,
