@@ -529,3 +529,45 @@ def test_three_plain_requests_run_on() -> None:
         "give bob the chips hand alice the apple put the cup on the shelf",
         "chips>B & apple>A & cup@shelf",
     )
+
+
+@pytest.mark.parametrize(
+    "again",
+    [", any mug", ", any of them", " - any mug will do", ", any mug is fine", ", any one"],
+)
+def test_any_said_again_after_a_choice_is_the_same_choice(again: str) -> None:
+    """'Alice needs a mug, any mug' is one mug, either one (it was read as both mugs)."""
+    assert_means(f"Alice needs a mug{again}", "mug_red>A | mug_blue>A")
+    assert_means(
+        f"Give Alice a mug{again}, and Bob the chips", "(mug_red>A | mug_blue>A) & chips>B"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup. She is thirsty.", "cup>A"),
+        ("Give Alice the cup. Alice has been waiting all day.", "cup>A"),
+        ("Give Bob the chips he asked for", "chips>B"),
+        ("Give Bob the chips that he wanted", "chips>B"),
+        ("Give Carol the apple she wanted, and Alice the cup", "apple>C & cup>A"),
+        (
+            "Put all but the apple on the shelf",
+            "cup@shelf & bottle@shelf & chips@shelf & mug_red@shelf & mug_blue@shelf",
+        ),
+        ("Give Alice the cup straight away", "cup>A"),
+    ],
+)
+def test_remarks_and_descriptions_that_add_no_task(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice the cup. Bob is thirsty.",  # about someone else: may ask for something
+        "Give Bob the mug he wanted",  # which mug: the description may be what tells them apart
+    ],
+)
+def test_remarks_and_descriptions_that_may_matter_are_refused(text: str) -> None:
+    assert_refused(text)

@@ -43,6 +43,7 @@ def tokenize(text: str) -> list[Token]:
     # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
     text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
     text = re.sub(r"\s[&+]\s", " and ", text)
+    text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
     text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
     out = []
@@ -531,6 +532,13 @@ _phrases(
     "all evening",
     "all week",
     "for ages",
+    "straight away",
+    "at once",
+    "this instant",
+    "right this minute",
+    "in a minute",
+    "in a moment",
+    "in a sec",
     "for a while",
     "help me out and",
     "help us out and",

@@ -202,6 +202,18 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 if after_comma and ends:
                     items = items[: k - 1] + rest
                     continue
+            after_stop = k > 1 and items[k - 1].lemma in _END and _has_request(items[: k - 1])
+            whole = _clause_stop(items, k, False)
+            named = _people(items[:k])
+            if (
+                after_stop
+                and _people(items[k:whole]) <= named
+                and _remark_words(items[k:whole], lexicon, named, reason=False)
+            ):
+                # "Give Alice the cup. She is thirsty.": a sentence of remark after the request,
+                # about someone it names (about anyone else it may ask for something)
+                items = items[:k] + items[whole + 1 :]
+                continue
         k += 1
     return items
 
@@ -2583,6 +2595,83 @@ def _sources(items: list[Item]) -> list[Item]:
     return out
 
 
+# what may close "…, any mug": 'will do', 'is fine', 'works', 'is ok'
+_ANY_TAIL = frozenset({"will", "would", "is", "'s", "do", "does", "fine", "ok", "okay", "works"})
+
+
+def _any_restated(items: list[Item]) -> list[Item]:
+    """'Alice needs a mug, any mug', 'Give Alice a mug - any of them will do': after a choice
+    ('a mug', 'one of the mugs'), ', any <the same name>' / ', any of them' says again that any
+    will do; it is dropped (before, 'any mug' was read as a second mug). Only with the same
+    objects, at the end of the clause."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        before = out[-2] if len(out) > 1 else None
+        pause = _is(it, ",", "-")
+        chose = (
+            prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) > 1
+            and before is not None
+            and (
+                before.text.lower() in ("a", "an", "any", "either", "one") or _is(before, "q:some")
+            )
+        )
+        if pause and chose and prev is not None and k + 1 < len(items):
+            nxt = items[k + 1]
+            j = k + 2
+            named = j < len(items) and (
+                (_objects(items[j]) and {r.id for r in items[j].refs} == {r.id for r in prev.refs})
+                or (items[j].lemma == "pronoun" and items[j].text.lower() == "them")
+                or items[j].text.lower() == "one"
+            )
+            if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
+                j += 1
+                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                    j += 1
+                if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
+                    k = j
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
+_WISHED = frozenset({"verb:want", "verb:need", "verb:like", "ask_for"})
+
+
+def _wished_for(items: list[Item]) -> list[Item]:
+    """'Give Bob the chips he asked for', 'Carol the apple (that) she wanted': a clause saying
+    who wanted an object that is named already (one object) describes it and is dropped."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        j = k + 1 if it.text.lower() in ("that", "which") else k
+        who = items[j] if j < len(items) else None
+        person = who is not None and (
+            _humans(who) or (who.lemma == "pronoun" and who.text.lower() in _PERSON_PRONOUNS)
+        )
+        if prev is not None and _objects(prev) and len({r.id for r in prev.refs}) == 1 and person:
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if n < len(items) and items[n].lemma in _WISHED:
+                n += 1
+                if n < len(items) and _is(items[n], "for"):
+                    n += 1
+                if n == len(items) or items[n].kind == "punct" or _is(items[n], "and", "then"):
+                    k = n
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -2593,6 +2682,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_sources),
     _plain(_then_inside),
     _plain(_do_whose),
+    _plain(_wished_for),
     _preambles,
     _plain(_hedges),
     _plain(_infinitives),
@@ -2603,6 +2693,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_after_all),
     _rest,
     _whatever_near,
+    _plain(_any_restated),
     _plain(_whichever),
     _relatives,
     _one_anaphora,
