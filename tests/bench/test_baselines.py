@@ -22,9 +22,11 @@ from hltl.bench.baselines.smart_llm import (
     run_script,
 )
 from hltl.bench.suite import run_baseline_trial
+from hltl.execution.executor import MAX_FAILURES
+from hltl.execution.log import ActionStart, GiveUp
 from hltl.planner import plan
 from hltl.sim.dynamic import full_spec, make_trial
-from hltl.sim.events import EventSchedule, HumanMove, Instruction
+from hltl.sim.events import EventSchedule, HumanMove, Instruction, SkillFailure
 from hltl.sim.invariants import check_invariants
 from hltl.sim.scenarios import generate, get
 from hltl.skills.library import Action
@@ -198,6 +200,32 @@ def test_a_step_made_stale_by_a_moving_person_is_replanned_not_blamed() -> None:
     )
     assert ep.stale >= 1 and ep.kinematic == 0 and ep.conflicts == 0
     assert ep.goals_met and ep.metrics.success
+
+
+@pytest.mark.parametrize("max_failures", [None, 3])
+def test_greedy_gives_up_on_a_skill_that_always_fails_as_hltl_does(
+    max_failures: int | None,
+) -> None:
+    """T4#9 with --motion: the cell failed Greedy-R's hand-over every time and it retried until
+    the time limit (922 replans). The loop now gives up after hltl's number of failures in a
+    row on one object, with hltl's reason."""
+    sc = get("1-1")
+    events = EventSchedule(failures=(SkillFailure("pick", 1.0),))
+    cfg = (
+        LoopConfig(max_time=60.0)
+        if max_failures is None
+        else LoopConfig(max_time=60.0, max_failures=max_failures)
+    )
+    n = MAX_FAILURES if max_failures is None else max_failures
+    ep = run_baseline_episode(GreedyPolicy(), sc.scene, sc.instruction, events=events, config=cfg)
+    assert not ep.goals_met
+    give_up = [r for r in ep.records if isinstance(r, GiveUp)]
+    assert len(give_up) == 1
+    assert give_up[0].reason.startswith(f"{n} consecutive failed actions on bottle (last: ")
+    started = [r.action["skill"] for r in ep.records if isinstance(r, ActionStart)]
+    assert started == ["pick"] * n
+    assert give_up[0].t < 60.0
+    assert check_invariants(ep.records) == []
 
 
 def test_a_new_instruction_makes_the_loop_replan() -> None:

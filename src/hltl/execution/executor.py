@@ -369,6 +369,11 @@ class Executor(TickTemplate):
         self._charge(cost)
         return round(cost, 6)
 
+    @property
+    def kinematics(self) -> Kinematics:
+        """The reach and poses the plans and the precondition checks use."""
+        return self.semantics.kinematics
+
     def give_up(self, reason: str) -> None:
         """Stop the episode from outside (e.g. a time limit): halt everything, log why."""
         if self.status is not ExecStatus.GAVE_UP:

@@ -100,9 +100,14 @@ def _field_names(cls: type[LogRecord]) -> tuple[str, ...]:
 
 @record
 class EpisodeStart(LogRecord):
-    """Everything needed to re-run or re-score the episode."""
+    """Everything needed to re-run or re-score the episode.
+
+    ``kinematics`` names the reach the agent checked preconditions with when it is not the
+    reach spheres (``maps``: the scene's arms' reachability maps); absent means spheres.
+    """
 
     TYPE: ClassVar[str] = "episode_start"
+    OPTIONAL: ClassVar[frozenset[str]] = frozenset({"kinematics"})
     scene: JsonObject = field(default_factory=dict)
     scene_source: str | None = None
     spec: JsonObject | None = None
@@ -110,6 +115,7 @@ class EpisodeStart(LogRecord):
     events: list[Any] = field(default_factory=list)
     seed: int = 0
     config: JsonObject = field(default_factory=dict)
+    kinematics: str | None = None
 
 
 @record

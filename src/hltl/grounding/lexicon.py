@@ -18,6 +18,16 @@ _TOKEN = re.compile(
 )
 
 
+_ELLIPSIS_CORRECTION = re.compile(
+    r"\.{2,}(?=\s*(?:actually|sorry|no|wait|i mean|i meant|rather|or rather|oops|correction|"
+    r"make that|make it)\b)",
+    re.IGNORECASE,
+)
+
+
+_ORDINAL_DIGITS = {"1st": "first", "2nd": "second", "3rd": "third"}
+
+
 @dataclass(frozen=True, slots=True)
 class Token:
     text: str  # as typed
@@ -26,7 +36,15 @@ class Token:
 
 def tokenize(text: str) -> list[Token]:
     """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
-    text = text.replace("\u2019", "'").replace("\u2018", "'")
+    text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u2026", "...")
+    # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
+    # word is the pause of a correction (a comma); any other "..." ends a sentence
+    text = _ELLIPSIS_CORRECTION.sub(",", text)
+    # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
+    text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
+    text = re.sub(r"\s[&+]\s", " and ", text)
+    text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
+    text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
     out = []
     for m in _TOKEN.finditer(text):
@@ -62,6 +80,7 @@ for _lemma, _forms in {
     "pass": ("passes", "passing", "passed"),
     "offer": ("offers", "offering", "offered"),
     "serve": ("serves", "serving", "served"),
+    "lend": ("lends", "lending", "lent"),
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -76,6 +95,11 @@ for _lemma, _forms in {
     "move": ("moves", "moving", "moved"),
     "pop": ("pops", "popping", "popped"),  # "pop the apple over to Carol"
     "go": ("goes", "going", "went", "gone"),
+    "transfer": ("transfers", "transferring", "transferred"),
+    "shift": ("shifts", "shifting", "shifted"),
+    "return": ("returns", "returning", "returned"),
+    "slide": ("slides", "sliding", "slid"),
+    "relocate": ("relocates", "relocating", "relocated"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -86,6 +110,13 @@ for _lemma, _forms in {
     "leave": ("leaves", "leaving"),
     "store": ("stores", "storing", "stored"),
     "stack": ("stacks", "stacking", "stacked"),
+    "lay": ("lays", "laying", "laid"),
+    "stick": ("sticks", "sticking", "stuck"),
+    "stow": ("stows", "stowing", "stowed"),
+    "park": ("parks", "parking", "parked"),
+    "plonk": ("plonks", "plonking", "plonked"),
+    "position": ("positions", "positioning", "positioned"),
+    "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)
 # pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")
@@ -96,7 +127,23 @@ for _lemma, _forms in {
     _verb(_lemma, "pick", *_forms)
 # possession, with the person as subject ("A wants the bottle", "once A has the bottle")
 for _lemma, _forms in {
-    "want": ("wants", "wanted"),
+    "want": (
+        "wants",
+        "wanted",
+        "fancy",
+        "fancies",
+        "fancied",
+        "request",
+        "requests",
+        "requested",
+        "require",
+        "requires",
+        "required",
+        "crave",
+        "craves",
+        "craving",
+        "craved",
+    ),
     "need": ("needs", "needed"),
     "have": ("has", "having", "had"),
     "receive": ("receives", "receiving", "received"),
@@ -432,6 +479,153 @@ _phrases(
     "any one is ok",
 )
 
+# Session 7 (issue 12): whole families of politeness around a request, not single sentences.
+# Thanks with any intensifier ("thank you so much", "thanks a million", "many thanks").
+for _thanks in ("thank you", "thanks", "thank u", "ty", "thx"):
+    for _much in (
+        "so much",
+        "very much",
+        "so very much",
+        "a lot",
+        "a bunch",
+        "a million",
+        "a ton",
+        "loads",
+        "heaps",
+        "kindly",
+        "in advance",
+        "again",
+    ):
+        PHRASES[tuple(f"{_thanks} {_much}".split())] = "filler"
+_phrases(
+    "filler",
+    "many thanks",
+    "much appreciated",
+    "much obliged",
+    "i appreciate it",
+    "appreciate it",
+    "i 'd appreciate it",
+    "i would appreciate it",
+    "you 're a star",
+    "you 're the best",
+    "you are a star",
+    "you are the best",
+    "no rush",
+    "no hurry",
+    "take your time",
+    "when you 're ready",
+    "when you are ready",
+    "whenever you 're ready",
+    "whenever you are ready",
+    "whenever you can",
+    "at your convenience",
+    "by the way",
+    "of course",
+    "as usual",
+    "as always",
+    "for now",
+    "all the way",
+    "the whole way",
+    "all day",
+    "all morning",
+    "all afternoon",
+    "all evening",
+    "all week",
+    "for ages",
+    "straight away",
+    "at once",
+    "this instant",
+    "right this minute",
+    "in a minute",
+    "in a moment",
+    "in a sec",
+    "for a while",
+    "help me out and",
+    "help us out and",
+    "help me out by",
+    "help us out by",
+    "help me out ,",
+    "help me by",
+    "help us by",
+)
+# "that would be great" / "that'd be lovely" closing a request (without the "if" of the
+# framing "It would be great if …", which is a longer phrase and matched first)
+for _that in ("that would be", "that 'd be", "that will be", "it would be", "it 'd be"):
+    for _good in ("great", "lovely", "nice", "perfect", "brilliant", "awesome", "helpful", "ideal"):
+        PHRASES[tuple(f"{_that} {_good}".split())] = "filler"
+# "Would it be ok to give Bob the mug?", "Is it alright if you hand …": asking leave to ask
+for _it in ("would it be", "is it", "will it be", "would that be", "is that"):
+    for _ok in ("ok", "okay", "alright", "all right", "fine", "possible", "cool"):
+        for _to in ("to", "for you to", "if you", "if you could", "if you would"):
+            PHRASES[tuple(f"{_it} {_ok} {_to}".split())] = "filler"
+# A greeting said alone before the request ("Morning! …", "Afternoon, …"), and an opening that
+# only urges ("Go on, pass …", "Come on, …"): always followed by punctuation, so "the cup
+# should go on the shelf" keeps its verb
+for _hello in ("morning", "afternoon", "evening", "good day", "greetings", "go on", "come on"):
+    for _mark in ("!", ",", ".", "-"):
+        PHRASES[(*_hello.split(), _mark)] = "filler"
+# "Make sure Carol ends up with the apple": she has it
+for _end in ("end", "ends", "ended", "ending", "wind", "winds"):
+    PHRASES[(_end, "up", "with")] = "verb:have"
+
+# "Give Alice the apple, but only after Bob has the cup", "… but not until …": the condition
+# orders, 'only' stresses it
+for _only in ("only", "but only", "and only"):
+    for _after, _lemma in (("after", "after"), ("once", "once"), ("when", "once")):
+        PHRASES[(*_only.split(), _after)] = _lemma
+_phrases("once", "not until", "but not until", "and not until")
+# "Bob or Alice, doesn't matter who, should get the apple": either person will do
+for _it in ("", "it "):
+    for _who in ("who", "which person", "who gets it", "which of them"):
+        PHRASES[tuple(f"{_it}does n't matter {_who}".split())] = "whichever"
+_phrases("whichever", "no matter who", "i do n't mind who", "i do n't care who")
+# "Give Person A everything there is": every object
+_phrases("q:everything", "everything there is", "everything you have", "everything you 've got")
+# A change of mind at the start of a sentence takes back the sentence before, like "no, …"
+# (hltl.grounding.phrasing CHANGES_OF_MIND)
+CHANGES_OF_MIND = frozenset(
+    {
+        "on second thought",
+        "on second thoughts",
+        "second thoughts",
+        "on reflection",
+        "change of plan",
+        "change of plans",
+        "having thought about it",
+    }
+)
+_phrases("correct", *CHANGES_OF_MIND)
+
+# "Please ensure Alice receives the apple", "see to it that …": the request follows
+_phrases(
+    "filler",
+    "ensure that",
+    "see to it that",
+    "make certain that",
+    "make certain",
+    "why do n't you",
+    "why not",
+    "how about",
+)
+_phrases("verb:like", "would appreciate", "'d appreciate", "would welcome")
+# "Bob is waiting for the cup": a want when objects follow, like "asking for"
+for _wait in ("waiting", "waits", "waited", "hoping", "hopes", "dying", "looking"):
+    PHRASES[(_wait, "for")] = "ask_for"
+
+# "Give Carol the chips and Bob the apple; no, swap them": the two objects change places
+for _swap in ("swap", "switch", "swap round", "switch round", "swap around", "switch around"):
+    for _them in ("them", "those", "these", "the two", "the objects", "them round", "them around"):
+        PHRASES[(*_swap.split(), *_them.split())] = "swap"
+_phrases("swap", "the other way round", "the other way around", "other way round")
+
+_phrases("from", "off of")
+
+# "…, and once done, give Bob the cup", "after which": what follows comes after
+for _sub in ("once", "when", "and once", "and when"):
+    for _done in ("done", "finished", "complete"):
+        PHRASES[(*_sub.split(), _done)] = "then"
+_phrases("then", "after which", "and after which", "then after that")
+
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
     "one of the": "q:some",
@@ -463,6 +657,9 @@ for _p, _q in {
     "every person": "q:everyone",
     "each of the people": "q:everyone",
     "all the people": "q:everyone",
+    "both people": "q:people:2",
+    "both persons": "q:people:2",
+    "both of the people": "q:people:2",
     # exclusions
     "except for": "except",
     "apart from": "except",
@@ -477,6 +674,12 @@ for _p, _q in {
     "the same goes for": "same",
 }.items():
     PHRASES[tuple(_p.split())] = _q
+
+# "the two people", "all three people": everyone, when the scene has that many
+for _n, _word in ((2, "two"), (3, "three"), (4, "four"), (5, "five")):
+    for _the in ("the", "all", "all the", "all of the"):
+        for _people in ("people", "persons"):
+            PHRASES[(*_the.split(), _word, _people)] = f"q:people:{_n}"
 
 # one category said in other words (British and American English): a scene that names only
 # one of them is understood in the other, unless the other names something else there
@@ -519,6 +722,9 @@ WORDS: dict[str, str] = {
     "but": "and",
     "respectively": "respectively",
     "both": "both",
+    "let": "let",  # "Let Carol have the cup" (hltl.grounding.phrasing)
+    "as": "as",  # "… as she hasn't eaten": a reason (hltl.grounding.phrasing)
+    "from": "from",  # "Take the apple off / from the shelf": where it is (phrasing)
     # sequencing
     "then": "then",
     "afterwards": "then",
@@ -596,6 +802,7 @@ WORDS: dict[str, str] = {
     "arms": "filler",
     "'s": "filler",
     "quickly": "filler",
+    "quick": "filler",  # "Hand Alice the cup, quick!"
     "carefully": "filler",
     "gently": "filler",
     "immediately": "filler",
@@ -617,7 +824,33 @@ WORDS: dict[str, str] = {
     "hello": "filler",
     "hiya": "filler",
     "possibly": "filler",
+    # intensifiers and softeners ("Bob really needs …", "…, not the red one though")
+    "really": "filler",
+    "though": "filler",
+    "anyway": "filler",
+    "anyways": "filler",
+    "honestly": "filler",
+    "definitely": "filler",
+    "certainly": "filler",
+    "seriously": "filler",
+    "desperately": "filler",
+    "badly": "filler",
+    "truly": "filler",
+    "totally": "filler",
+    "absolutely": "filler",
+    "simply": "filler",
+    "still": "filler",
+    "mate": "filler",
+    "buddy": "filler",
+    "pal": "filler",
+    "folks": "filler",
+    "guys": "filler",
     "howdy": "filler",
+    "ensure": "filler",  # "Please ensure Alice receives the apple"
+    "yeah": "filler",
+    "yep": "filler",
+    "yup": "filler",
+    "aye": "filler",
     "yo": "filler",
     # a hedge opening the request ("Maybe give Carol the chips?"): hltl.grounding.phrasing drops
     # it there and refuses it anywhere else ("the cup and maybe the apple": is the apple asked?)
@@ -751,6 +984,48 @@ WORDS: dict[str, str] = {
     "job": "task",
     "request": "task",
 }
+
+
+# Single-word politeness, intensifiers and softeners that never carry meaning here: they are
+# taken out when lexing, so the patterns of the passes (hltl.grounding.phrasing) see the words
+# around them side by side ("everything please but the mugs" is "everything but the mugs", not
+# everything). Other fillers stay as items: some passes read them ("each of", "either one").
+DROPPED_FILLERS = frozenset(
+    {
+        "please",
+        "pls",
+        "plz",
+        "kindly",
+        "just",
+        "really",
+        "though",
+        "honestly",
+        "definitely",
+        "certainly",
+        "seriously",
+        "desperately",
+        "badly",
+        "truly",
+        "totally",
+        "absolutely",
+        "simply",
+        "still",
+        "anyway",
+        "anyways",
+        "quickly",
+        "carefully",
+        "gently",
+        "immediately",
+        "asap",
+        "possibly",
+        "mate",
+        "buddy",
+        "pal",
+        "folks",
+        "guys",
+    }
+)
+assert all(WORDS[w] == "filler" for w in DROPPED_FILLERS)
 
 
 @dataclass(frozen=True, slots=True)
@@ -923,6 +1198,8 @@ class Lexicon:
         "Alcie"). A keyword or a common English word ("hugs", "Carl") is never a misspelling,
         and two names within one edit ("chps": chips or cups) mean the word is not corrected.
         """
+        if len(word) == 3 and word.isalpha():
+            return self._swapped(word)
         if not _correctable(word):
             return None
         keys = [
@@ -939,6 +1216,23 @@ class Lexicon:
             return None  # several names within one edit ("chps": chips or cups): no guess
         singular = [r for r, _, _ in found if not r.plural]
         return (singular[0] if singular else found[0][0],)
+
+    def _swapped(self, word: str) -> tuple[Ref, ...] | None:
+        """A name of three letters typed with two neighbours swapped ("bbo" for "Bob"), when the
+        word is no keyword, no word of a known phrase and no common English word, and only one
+        entity is named that way."""
+        if word in WORDS or word in VERBS or word in PHRASE_WORDS or word in common_words():
+            return None
+        found = [
+            e
+            for key, entries in self._phrases.items()
+            if len(key) == 1 and len(key[0]) == 3 and _one_edit(word, key[0])
+            if sorted(word) == sorted(key[0])
+            for e in entries
+        ]
+        if len({r.id for r, _, _ in found}) != 1:
+            return None
+        return (found[0][0],)
 
     def _misspelt_phrase(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
         """A name of several words with one of them mistyped ("bleu mug"): (length, refs).
@@ -1065,7 +1359,7 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
-    tokens = _keyword_typos(tokenize(text), lexicon)
+    tokens = _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon)
     items: list[Item] = []
     i = 0
     while i < len(tokens):
@@ -1097,6 +1391,36 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
     return _merge_unknown(items)
+
+
+def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
+    """The tokens without DROPPED_FILLERS (and "if you please"), before names and multi-word
+    keywords are matched, so "after anyway that" is still "after that"; a filler word inside a
+    scene name of several words ("still water") stays."""
+    keep = [True] * len(tokens)
+    for i, tok in enumerate(tokens):
+        if [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
+            keep[i] = keep[i + 1] = keep[i + 2] = False
+        elif tok.low in DROPPED_FILLERS and not _in_name(tokens, i, lexicon):
+            keep[i] = False
+        elif tok.low in TITLES and i + 1 < len(tokens) and lexicon.match(tokens, i) is None:
+            after = lexicon.match(tokens, i + 1)
+            if after is not None and all(r.kind == "human" for r in after[1]):
+                keep[i] = False  # "Dr Smith": the title of a person the scene names
+    return [t for t, k in zip(tokens, keep, strict=True) if k]
+
+
+# a title before a person's name ("Dr Smith", "Ms. Carol"), when the name is the scene's
+TITLES = frozenset({"dr", "mr", "mrs", "ms", "miss", "mx", "prof", "professor", "doctor"})
+
+
+def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:
+    """Whether a scene name of several words starting at or before token ``i`` holds it."""
+    for j in range(max(0, i - lexicon.max_len + 1), i + 1):
+        found = lexicon.match(tokens, j)
+        if found is not None and found[0] > 1 and j + found[0] > i:
+            return True
+    return False
 
 
 @functools.cache

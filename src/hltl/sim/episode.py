@@ -24,6 +24,7 @@ from hltl.sim.events import EventSchedule
 from hltl.sim.instruct import ground_all
 from hltl.sim.metrics import Metrics, compute_metrics
 from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.skills.kinematics import Kinematics
 from hltl.spec.hierarchy import HSpec, spec_to_dict
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -137,6 +138,12 @@ class Agent(Protocol):
         updates: Iterable[SpecUpdate] = (),
     ) -> None: ...
 
+    @property
+    def kinematics(self) -> Kinematics:
+        """The reach its precondition checks use (``episode_start`` names it, and the log
+        checker judges dispatches with it)."""
+        ...
+
     def give_up(self, reason: str) -> None: ...
 
     def done_formulas(self) -> frozenset[str]:
@@ -240,6 +247,7 @@ def run_episode(
             if agent is None
             else agent(sim, log)
         )
+        reach = executor.kinematics.name
         log.emit(
             EpisodeStart(
                 t=0.0,
@@ -250,6 +258,7 @@ def run_episode(
                 events=schedule.to_list(),
                 seed=seed,
                 config=cfg.to_dict() if start_config is None else dict(start_config),
+                kinematics=None if reach == "spheres" else reach,
             )
         )
         said = [] if instruction is None else [instruction]

@@ -28,6 +28,12 @@ class Reachability(Protocol):
 class Kinematics(Reachability, Protocol):
     """Reachability plus the poses an instance uses (metres, scene frame)."""
 
+    @property
+    def name(self) -> str:
+        """What a log calls these kinematics (``episode_start.kinematics``, so that the log
+        checker judges with the same reach): ``spheres`` or ``maps``."""
+        ...
+
     def rendezvous_point(self, giver: Robot, receiver: Robot) -> Vec3:
         """Where the two hands meet for a robot-to-robot handover."""
         ...
@@ -50,6 +56,10 @@ class Kinematics(Reachability, Protocol):
 @dataclass(frozen=True, slots=True)
 class ReachSpheres:
     """The paper's geometry: each arm reaches a sphere around its base (world/geometry.py)."""
+
+    @property
+    def name(self) -> str:
+        return "spheres"
 
     def reaches(self, robot: Robot, point: Vec3) -> bool:
         return geometry.reaches(robot, point)

@@ -10,6 +10,7 @@ from hltl.bench.baselines.model import Violation, apply_step, check_step
 from hltl.bench.baselines.policy import PlanContext, Policy, Script
 from hltl.execution import log as elog
 from hltl.execution.drivers import ActionState, Handle
+from hltl.execution.executor import MAX_FAILURES
 from hltl.execution.instructions import SpecUpdate
 from hltl.execution.log import (
     ActionDone,
@@ -33,6 +34,7 @@ from hltl.sim.episode import Cell, CellFactory, EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.metrics import Metrics
 from hltl.sim.simulator import Simulator
+from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action, Transition, step_symbol
 from hltl.skills.semantics import ActionSemantics, Infeasible
 from hltl.spec.hierarchy import HSpec, spec_to_dict
@@ -44,12 +46,19 @@ from hltl.world.state import WorldState
 
 @dataclass(frozen=True, slots=True)
 class LoopConfig:
-    """Parameters shared with :class:`hltl.sim.episode.EpisodeConfig` (same defaults)."""
+    """Parameters shared with :class:`hltl.sim.episode.EpisodeConfig` (same defaults).
+
+    ``max_failures``: failed actions on one object in a row after which the baseline gives up,
+    hltl's rule (:class:`~hltl.execution.executor.ExecutorConfig`); without it a deterministic
+    policy retries an action the cell always fails until the time limit (T4#9 with
+    ``--motion``: Greedy-R's hand-over of the cup failed 922 times).
+    """
 
     tick: float = 0.05
     max_time: float = 120.0
     max_wait: float = 10.0
     max_queries: int = 8
+    max_failures: int = MAX_FAILURES
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,6 +120,9 @@ class BaselineAgent(TickTemplate):
         self.tokens = self.queries = 0
         self.kinematic = self.conflicts = self.stale = 0
         self.violation_notes: list[str] = []
+        # failed actions in a row per object (a success on it resets the count), as hltl's
+        self.failures: dict[str, int] = {}
+        self.last_failure = ""
 
     # -- task (the referee) ---------------------------------------------------------------------
 
@@ -136,6 +148,11 @@ class BaselineAgent(TickTemplate):
             self.status = ExecStatus.RUNNING
             self.reason = ""
             self.accepted_at = None
+
+    @property
+    def kinematics(self) -> Kinematics:
+        """The reach the dispatch checks use (the reach spheres)."""
+        return self.semantics.kinematics
 
     def world(self) -> WorldState:
         w = self.sim.observe(self.t) if self._obs is None else self._obs
@@ -174,9 +191,13 @@ class BaselineAgent(TickTemplate):
                 continue
             run.state = st.state
             handle, action, end = run.handle.id, run.action.to_dict(), round(st.t, 6)
+            obj = run.action.object
             if st.state is ActionState.DONE:
+                self.failures.pop(obj, None)
                 self.log.emit(ActionDone(t=self.t, handle=handle, action=action, end=end))
             elif st.state is ActionState.FAILED:
+                self.failures[obj] = self.failures.get(obj, 0) + 1
+                self.last_failure = st.reason
                 self.log.emit(
                     ActionFailed(t=self.t, handle=handle, action=action, reason=st.reason, end=end)
                 )
@@ -197,6 +218,12 @@ class BaselineAgent(TickTemplate):
             if self.monitor.accepted(self.q):
                 self.accepted_at = self.t
         self.steps += 1
+        stuck = sorted(o for o, n in self.failures.items() if n >= self.cfg.max_failures)
+        if stuck:
+            self.give_up(
+                f"{self.failures[stuck[0]]} consecutive failed actions on {stuck[0]} "
+                f"(last: {self.last_failure})"
+            )
 
     def _check_safety(self) -> None:
         world = self.world()
