@@ -23,6 +23,8 @@ from hltl.sim.episode import CellFactory, Episode, run_episode
 from hltl.sim.events import EventSchedule
 from hltl.sim.scenarios import get
 from hltl.sim.simulator import PerceptionModel, Simulator
+from hltl.sim3d.driver import MujocoSimulator
+from hltl.sim3d.model import compile_scene
 from hltl.skills.library import Action
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
@@ -156,9 +158,6 @@ def suite_factory(sim: str, scene: Scene) -> CellFactory:
     3D one (``mujoco``: actions timed by their arm motions, the model compiled up front)."""
     if sim == "discrete":
         return Simulator
-    from hltl.sim3d.driver import MujocoSimulator
-    from hltl.sim3d.model import compile_scene
-
     return functools.partial(MujocoSimulator, timing="motion", model=compile_scene(scene))
 
 
