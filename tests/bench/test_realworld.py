@@ -19,6 +19,7 @@ from hltl.bench.realworld import (
     _bars,
     _replans,
     _world,
+    contacts,
     format_t16,
     make_task,
     run_task,
@@ -31,6 +32,7 @@ from hltl.execution.drivers import Handle
 from hltl.execution.log import (
     ActionDone,
     ActionStart,
+    Contact,
     Dispatch,
     LogRecord,
     PolicyReplan,
@@ -111,13 +113,29 @@ def test_summary_and_table() -> None:
     ]
     assert "not run" not in format_t16(rows)
     table = format_t16(rows, {"smart-llm": "no LLM configured"})
-    assert "| T1 | hltl | 2 | 50 | 10.00 ± 0.00 | 2.00 ± 2.83 | 0 |" in table
+    assert "| T1 | hltl | 2 | 50 | 10.00 ± 0.00 | 2.00 ± 2.83 | 0 | 0 |" in table
     assert "| T1 | Greedy-R | 1 | 0 | – |" in table
-    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured | – | – | – |" in table
+    assert "| T1–T6 | SMART-LLM-R | – | not run: no LLM configured | – | – | – | – |" in table
     # a trial that ran an action without a motion plan is failed and counted in its column
     rows = summarise3d([Result3D("T2", 0, "hltl", True, False, 9.0, 1, "no motion plan", 1.0, 1)])
     assert rows[0].unplanned == 1 and rows[0].time is None
-    assert format_t16(rows).splitlines()[-1].endswith("| 1 |")
+    assert format_t16(rows).splitlines()[-1].endswith("| 1 | 0 |")
+
+
+def test_contacts_are_counted_per_trial_and_reported_without_failing_it() -> None:
+    touch = [
+        Contact(t=1.0, robot="r2", human="A", position=[0.7, 0.3, 0.3], depth=0.01),
+        Contact(t=1.5, robot="r1", human="A", position=[0.2, 0.3, 0.3], depth=0.02),
+    ]
+    assert contacts([Dispatch(t=0.0, step=0, actions=[]), *touch]) == 2
+    assert contacts([Dispatch(t=0.0, step=0, actions=[])]) == 0
+    rs = [
+        Result3D("T2", 0, "hltl", True, True, 9.0, 1, "", 1.0, contacts=2),
+        Result3D("T2", 1, "hltl", True, True, 11.0, 1, "", 1.0),
+    ]
+    (row,) = summarise3d(rs)
+    assert row.contacts == 1 and row.success == 100.0 and row.time == (10.0, 1.4142135623730951)
+    assert format_t16([row]).splitlines()[-1].endswith("| 0 | 1 |")
 
 
 @needs_mujoco

@@ -51,8 +51,9 @@ KNOWN_MISSES = frozenset(
 # ("blind" was measured once in session 2, then its misses were fixed in session 3; "blind2"
 # measured once in session 3, its misses fixed in session 4; "blind3" measured once in session
 # 4, its misses fixed in session 5; "blind4" measured once in session 5, its misses fixed in
-# session 6; "blind5" measured once in session 6, its misses fixed in session 7: all asserted now)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# session 6; "blind5" measured once in session 6, its misses fixed in session 7: all asserted
+# now; "blind6" written in session 7 by another engineer, measured once)
+MEASURED_ONLY = frozenset({"blind6"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -69,7 +70,9 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind4"].entries}) >= 8
     assert len(CORPORA["blind5"].entries) >= 180
     assert len({e.scene for e in CORPORA["blind5"].entries}) >= 12
-    for corpus in CORPORA.values():
+    for part, corpus in CORPORA.items():
+        if part in MEASURED_ONLY:
+            continue  # a held-back part is measured, not asserted
         assert len({e.scene for e in corpus.entries}) >= 3
         assert any(e.want is None for e in corpus.entries)
         assert any(e.readings for e in corpus.entries)

@@ -451,3 +451,123 @@ def test_not_there_but_here(text: str, want: str) -> None:
 )
 def test_not_there_but_here_refuses_what_is_unclear(text: str) -> None:
     assert_refused(text)
+
+
+# -- third batch: where an object is now, titles, symbols, 'once done', run-ons kept plain ---------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Take the apple off the shelf and give it to Bob", "apple>B"),
+        ("Move the cup from the table to the shelf", "cup@shelf"),
+        ("Bring Bob the bottle from the table", "bottle>B"),
+        ("Grab the apple off of the table for Carol", "apple>C"),
+    ],
+)
+def test_where_a_named_object_is_now_is_dropped(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+def test_where_an_ambiguous_object_is_may_tell_them_apart_so_it_is_refused() -> None:
+    assert_refused("Give Alice the mug from the shelf")
+    assert_refused("Give Alice the cup from Bob")
+
+
+@pytest.mark.parametrize("title", ["Dr.", "Dr", "Ms", "Mrs.", "Prof.", "Doctor"])
+def test_a_title_before_a_name(title: str) -> None:
+    assert_means(f"Give {title} Carol the cup. Then hand Bob the chips.", "cup>C ; chips>B")
+
+
+def test_a_title_before_no_name_is_refused() -> None:
+    assert_refused("Give the doctor the cup")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup & the apple", "cup>A & apple>A"),
+        ("Give Alice the cup + the apple", "cup>A & apple>A"),
+        ("Give Alice the cup 1st, then Bob the chips", "cup>A ; chips>B"),
+        ("Hand Bob the chips, and once done, give Alice the cup", "chips>B ; cup>A"),
+        ("Give Alice the cup, after which Bob gets the chips", "cup>A ; chips>B"),
+        ("Hand Alice the cup, quick!", "cup>A"),
+        ("Give Carol the blue one", "mug_blue>C"),
+    ],
+)
+def test_symbols_ordinals_and_done(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+def test_the_one_described_must_be_one_object() -> None:
+    assert_refused("Give Carol the green one")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # how a run-on attaches to a sequence, a choice or an exclusion is unclear
+        "Put the apple on the shelf, then the cup on the table give Bob the chips",
+        "Give Alice the apple or the chips give Bob the cup",
+        # a request run on after 'whichever …' was silently swallowed before
+        "Give Alice the apple or the chips, whichever give Bob the cup",
+    ],
+)
+def test_a_run_on_beside_other_structure_is_refused(text: str) -> None:
+    assert_refused(text)
+
+
+def test_a_run_on_after_an_exclusion_keeps_both() -> None:
+    assert_means(
+        "Put the chips on the shelf, not the bottle give Alice the bottle",
+        "chips@shelf & bottle>A",
+    )
+
+
+def test_three_plain_requests_run_on() -> None:
+    assert_means(
+        "give bob the chips hand alice the apple put the cup on the shelf",
+        "chips>B & apple>A & cup@shelf",
+    )
+
+
+@pytest.mark.parametrize(
+    "again",
+    [", any mug", ", any of them", " - any mug will do", ", any mug is fine", ", any one"],
+)
+def test_any_said_again_after_a_choice_is_the_same_choice(again: str) -> None:
+    """'Alice needs a mug, any mug' is one mug, either one (it was read as both mugs)."""
+    assert_means(f"Alice needs a mug{again}", "mug_red>A | mug_blue>A")
+    assert_means(
+        f"Give Alice a mug{again}, and Bob the chips", "(mug_red>A | mug_blue>A) & chips>B"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup. She is thirsty.", "cup>A"),
+        ("Give Alice the cup. Alice has been waiting all day.", "cup>A"),
+        ("Give Bob the chips he asked for", "chips>B"),
+        ("Give Bob the chips that he wanted", "chips>B"),
+        ("Give Carol the apple she wanted, and Alice the cup", "apple>C & cup>A"),
+        (
+            "Put all but the apple on the shelf",
+            "cup@shelf & bottle@shelf & chips@shelf & mug_red@shelf & mug_blue@shelf",
+        ),
+        ("Give Alice the cup straight away", "cup>A"),
+    ],
+)
+def test_remarks_and_descriptions_that_add_no_task(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice the cup. Bob is thirsty.",  # about someone else: may ask for something
+        "Give Bob the mug he wanted",  # which mug: the description may be what tells them apart
+    ],
+)
+def test_remarks_and_descriptions_that_may_matter_are_refused(text: str) -> None:
+    assert_refused(text)

@@ -25,6 +25,7 @@ from hltl.execution.log import (
     REPLANS,
     ActionDone,
     ActionStart,
+    Contact,
     EpisodeEnd,
     EventLog,
     LogRecord,
@@ -281,6 +282,18 @@ class Result3D:
     wall_s: float
     unplanned: int = 0  # actions run without a checked motion plan (unplanned_motions)
     cpu_s: float = 0.0  # CPU seconds of the worker for this trial (with T2's dry run)
+    contacts: int = 0  # robot–person contacts the 3D simulator logged (reported, not failed)
+
+
+def contacts(records: Sequence[LogRecord]) -> int:
+    """Robot–person contacts in a 3D episode's log: each time a robot's collision geometry
+    starts touching a person (``contact`` records of :class:`~hltl.sim3d.driver.MujocoSimulator`).
+
+    The benchmark reports them beside success without failing the trial: success stays the
+    paper's (the task done, no precondition broken, at most 3 replans), and a contact of the
+    arms' and the body's capsule models is a different, geometric measure.
+    """
+    return sum(1 for r in records if isinstance(r, Contact))
 
 
 def _replans(records: Sequence[LogRecord]) -> int:
@@ -361,6 +374,7 @@ def run_task(
         reason,
         round(wall, 3),
         len(unplanned),
+        contacts=contacts(records),
     )
 
 
@@ -403,8 +417,9 @@ def run_all(
 
 @dataclass(frozen=True, slots=True)
 class Summary3D:
-    """One (task, method) cell: success rate, execution time and replans (mean, std), and how
-    many trials ran an action without a checked motion plan (counted as failed)."""
+    """One (task, method) cell: success rate, execution time and replans (mean, std), how many
+    trials ran an action without a checked motion plan (counted as failed) and in how many a
+    robot touched a person (reported, not failed)."""
 
     task: str
     method: str
@@ -413,6 +428,7 @@ class Summary3D:
     time: tuple[float, float] | None
     replans: tuple[float, float]
     unplanned: int = 0
+    contacts: int = 0
 
 
 def _ms(v: list[float]) -> tuple[float, float]:
@@ -436,6 +452,7 @@ def summarise3d(results: Sequence[Result3D]) -> list[Summary3D]:
                     _ms(times) if times else None,
                     _ms([float(r.replans) for r in rs]),
                     sum(1 for r in rs if r.unplanned),
+                    sum(1 for r in rs if r.contacts),
                 )
             )
     return out
@@ -449,17 +466,18 @@ def format_t16(rows: Sequence[Summary3D], not_run: dict[str, str] | None = None)
     ``not_run`` names methods that could not run, with why (SMART-LLM-R without an LLM)."""
     lines = [
         "| task | method | trials | success % | execution time s (mean ± std) "
-        "| replans (mean ± std) | trials without a motion plan |",
-        "|---|---|---:|---:|---:|---:|---:|",
+        "| replans (mean ± std) | trials without a motion plan "
+        "| trials with a robot–person contact |",
+        "|---|---|---:|---:|---:|---:|---:|---:|",
     ]
     for s in rows:
         time_s = "–" if s.time is None else f"{s.time[0]:.2f} ± {s.time[1]:.2f}"
         lines.append(
             f"| {s.task} | {LABELS.get(s.method, s.method)} | {s.n} | {s.success:.0f} | "
-            f"{time_s} | {s.replans[0]:.2f} ± {s.replans[1]:.2f} | {s.unplanned} |"
+            f"{time_s} | {s.replans[0]:.2f} ± {s.replans[1]:.2f} | {s.unplanned} | {s.contacts} |"
         )
     for m, why in (not_run or {}).items():
-        lines.append(f"| T1–T6 | {LABELS.get(m, m)} | – | not run: {why} | – | – | – |")
+        lines.append(f"| T1–T6 | {LABELS.get(m, m)} | – | not run: {why} | – | – | – | – |")
     return "\n".join(lines)
 
 

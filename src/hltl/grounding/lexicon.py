@@ -25,6 +25,9 @@ _ELLIPSIS_CORRECTION = re.compile(
 )
 
 
+_ORDINAL_DIGITS = {"1st": "first", "2nd": "second", "3rd": "third"}
+
+
 @dataclass(frozen=True, slots=True)
 class Token:
     text: str  # as typed
@@ -37,6 +40,11 @@ def tokenize(text: str) -> list[Token]:
     # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
     # word is the pause of a correction (a comma); any other "..." ends a sentence
     text = _ELLIPSIS_CORRECTION.sub(",", text)
+    # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
+    text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
+    text = re.sub(r"\s[&+]\s", " and ", text)
+    text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
+    text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
     out = []
     for m in _TOKEN.finditer(text):
@@ -524,6 +532,13 @@ _phrases(
     "all evening",
     "all week",
     "for ages",
+    "straight away",
+    "at once",
+    "this instant",
+    "right this minute",
+    "in a minute",
+    "in a moment",
+    "in a sec",
     "for a while",
     "help me out and",
     "help us out and",
@@ -602,6 +617,14 @@ for _swap in ("swap", "switch", "swap round", "switch round", "swap around", "sw
     for _them in ("them", "those", "these", "the two", "the objects", "them round", "them around"):
         PHRASES[(*_swap.split(), *_them.split())] = "swap"
 _phrases("swap", "the other way round", "the other way around", "other way round")
+
+_phrases("from", "off of")
+
+# "…, and once done, give Bob the cup", "after which": what follows comes after
+for _sub in ("once", "when", "and once", "and when"):
+    for _done in ("done", "finished", "complete"):
+        PHRASES[(*_sub.split(), _done)] = "then"
+_phrases("then", "after which", "and after which", "then after that")
 
 # Quantified object mentions (hltl.grounding.phrasing folds them into the name after them).
 for _p, _q in {
@@ -701,6 +724,7 @@ WORDS: dict[str, str] = {
     "both": "both",
     "let": "let",  # "Let Carol have the cup" (hltl.grounding.phrasing)
     "as": "as",  # "… as she hasn't eaten": a reason (hltl.grounding.phrasing)
+    "from": "from",  # "Take the apple off / from the shelf": where it is (phrasing)
     # sequencing
     "then": "then",
     "afterwards": "then",
@@ -1379,7 +1403,15 @@ def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
             keep[i] = keep[i + 1] = keep[i + 2] = False
         elif tok.low in DROPPED_FILLERS and not _in_name(tokens, i, lexicon):
             keep[i] = False
+        elif tok.low in TITLES and i + 1 < len(tokens) and lexicon.match(tokens, i) is None:
+            after = lexicon.match(tokens, i + 1)
+            if after is not None and all(r.kind == "human" for r in after[1]):
+                keep[i] = False  # "Dr Smith": the title of a person the scene names
     return [t for t, k in zip(tokens, keep, strict=True) if k]
+
+
+# a title before a person's name ("Dr Smith", "Ms. Carol"), when the name is the scene's
+TITLES = frozenset({"dr", "mr", "mrs", "ms", "miss", "mx", "prof", "professor", "doctor"})
 
 
 def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:

@@ -202,6 +202,18 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 if after_comma and ends:
                     items = items[: k - 1] + rest
                     continue
+            after_stop = k > 1 and items[k - 1].lemma in _END and _has_request(items[: k - 1])
+            whole = _clause_stop(items, k, False)
+            named = _people(items[:k])
+            if (
+                after_stop
+                and _people(items[k:whole]) <= named
+                and _remark_words(items[k:whole], lexicon, named, reason=False)
+            ):
+                # "Give Alice the cup. She is thirsty.": a sentence of remark after the request,
+                # about someone it names (about anyone else it may ask for something)
+                items = items[:k] + items[whole + 1 :]
+                continue
         k += 1
     return items
 
@@ -459,14 +471,20 @@ def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
 def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
-    skipping = False
+    skipping, start = False, 0
     for k, it in enumerate(items):
         if _is(it, "whichever", "whatever"):
             if k + 1 < len(items) and _objects(items[k + 1]):
                 out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
                 continue
-            skipping = True
+            skipping, start = True, k
             continue
+        if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
+            # "…, whichever give Bob the mugs": a request run on after the remark
+            raise GroundingError(
+                f"{_words_of(items[k : k + 4])!r} after {items[start].text!r}: say it as a "
+                "request of its own ('…, whichever. Give …')"
+            )
         if skipping and (it.kind == "punct" or _is(it, "then", "and", "meanwhile")):
             skipping = False
             nxt = items[k + 1] if k + 1 < len(items) else None
@@ -2297,37 +2315,61 @@ _COMMANDS = frozenset({"verb:give", "verb:hand", "verb:pass", "verb:bring", "ver
 
 
 def _run_ons(items: list[Item]) -> list[Item]:
-    """'give bob the chips give alice the apple': a request that runs into the next without
-    'and' is two requests. Only where the first is complete (its verb, then a name right before
-    the second verb) and the second starts like a command (the plain verb, typed as its lemma
-    or a put/bring/give verb, then an article or a name): "the cup given to Bob" and "the cup
-    Bob gave me" are no run-ons."""
+    """'give bob the chips give alice the apple': requests that run into each other without
+    'and' are each done. Only in a sentence of plain requests (nothing that joins, orders,
+    chooses, corrects or negates: how a run-on would attach to those is unclear), where each
+    request but the first starts like a command (the plain verb, then an article or a name)
+    right after a name: "the cup Bob gave me" and "the cup given to Bob" are no run-ons."""
     out: list[Item] = []
-    for k, it in enumerate(items):
-        nxt = items[k + 1] if k + 1 < len(items) else None
-        if (
-            _is_verb_item(it)
-            and it.text.lower() == it.lemma.removeprefix("verb:")
-            and (it.lemma in _COMMANDS or it.lemma in ("verb:put", "verb:place", "verb:fetch"))
-            and out
-            and out[-1].kind == "ent"
-            and nxt is not None
-            and (nxt.kind == "ent" or _is(nxt, "det"))
-            and _clause_has_verb(out)
-        ):
-            out.append(Item("word", "and", "and"))
-        out.append(it)
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        splits = [
+            k
+            for k in range(1, len(sent) - 1)
+            if _is_verb_item(sent[k])
+            and sent[k].text.lower() == sent[k].lemma.removeprefix("verb:")
+            and sent[k].lemma in _COMMANDS | _PUTS
+            and sent[k - 1].kind == "ent"
+            and (sent[k + 1].kind == "ent" or _is(sent[k + 1], "det"))
+        ]
+        plain = not any(x.kind == "punct" or _is(x, *_RUN_ON_STOPS) for x in sent)
+        if splits and plain and _is_verb_item(sent[0]):
+            for k in reversed(splits):
+                sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
     return out
 
 
-def _clause_has_verb(before: list[Item]) -> bool:
-    """Whether the clause ending ``before`` has a verb of the grammar after its last separator."""
-    for x in reversed(before):
-        if x.kind == "punct" or _is(x, "and", "then", "or", "prior", "once", "after", "before"):
-            return False
-        if _is_verb_item(x):
-            return True
-    return False
+# words that make a run-on unclear: joining, ordering, choosing, correcting, negating
+_RUN_ON_STOPS = frozenset(
+    {
+        "and",
+        "or",
+        "then",
+        "prior",
+        "once",
+        "after",
+        "before",
+        "first",
+        "last",
+        "either",
+        "both",
+        "whichever",
+        "whatever",
+        "correct",
+        "not",
+        "instead",
+        "instead_of",
+        "except",
+        "same",
+        "also",
+        "meanwhile",
+        "in_order",
+        "if",
+    }
+)
 
 
 def _telegraphic(items: list[Item]) -> list[Item]:
@@ -2524,6 +2566,112 @@ def _swaps(items: list[Item]) -> list[Item]:
     return out
 
 
+def _sources(items: list[Item]) -> list[Item]:
+    """'Take the apple off the shelf and give it to Bob', 'Move the cup from the table to the
+    shelf': where a named object is now says nothing new about it and is dropped. Only right
+    after a mention of one object ('the mug from the shelf', with two mugs, is refused as
+    before: the place may be what tells them apart)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        source = _is(it, "from") or (it.kind == "word" and it.text.lower() == "off")
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        prev = next((x for x in reversed(out) if not _is(x, "filler")), None)
+        if (
+            source
+            and j < len(items)
+            and _is_surface(items[j])
+            and prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) == 1
+        ):
+            k = j + 1
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
+# what may close "…, any mug": 'will do', 'is fine', 'works', 'is ok'
+_ANY_TAIL = frozenset({"will", "would", "is", "'s", "do", "does", "fine", "ok", "okay", "works"})
+
+
+def _any_restated(items: list[Item]) -> list[Item]:
+    """'Alice needs a mug, any mug', 'Give Alice a mug - any of them will do': after a choice
+    ('a mug', 'one of the mugs'), ', any <the same name>' / ', any of them' says again that any
+    will do; it is dropped (before, 'any mug' was read as a second mug). Only with the same
+    objects, at the end of the clause."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        before = out[-2] if len(out) > 1 else None
+        pause = _is(it, ",", "-")
+        chose = (
+            prev is not None
+            and _objects(prev)
+            and len({r.id for r in prev.refs}) > 1
+            and before is not None
+            and (
+                before.text.lower() in ("a", "an", "any", "either", "one") or _is(before, "q:some")
+            )
+        )
+        if pause and chose and prev is not None and k + 1 < len(items):
+            nxt = items[k + 1]
+            j = k + 2
+            named = j < len(items) and (
+                (_objects(items[j]) and {r.id for r in items[j].refs} == {r.id for r in prev.refs})
+                or (items[j].lemma == "pronoun" and items[j].text.lower() == "them")
+                or items[j].text.lower() == "one"
+            )
+            if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
+                j += 1
+                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                    j += 1
+                if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
+                    k = j
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
+_WISHED = frozenset({"verb:want", "verb:need", "verb:like", "ask_for"})
+
+
+def _wished_for(items: list[Item]) -> list[Item]:
+    """'Give Bob the chips he asked for', 'Carol the apple (that) she wanted': a clause saying
+    who wanted an object that is named already (one object) describes it and is dropped."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        prev = out[-1] if out else None
+        j = k + 1 if it.text.lower() in ("that", "which") else k
+        who = items[j] if j < len(items) else None
+        person = who is not None and (
+            _humans(who) or (who.lemma == "pronoun" and who.text.lower() in _PERSON_PRONOUNS)
+        )
+        if prev is not None and _objects(prev) and len({r.id for r in prev.refs}) == 1 and person:
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if n < len(items) and items[n].lemma in _WISHED:
+                n += 1
+                if n < len(items) and _is(items[n], "for"):
+                    n += 1
+                if n == len(items) or items[n].kind == "punct" or _is(items[n], "and", "then"):
+                    k = n
+                    continue
+        out.append(it)
+        k += 1
+    return out
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -2531,8 +2679,10 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_run_ons),
     _plain(_let),
     _plain(_both_people),
+    _plain(_sources),
     _plain(_then_inside),
     _plain(_do_whose),
+    _plain(_wished_for),
     _preambles,
     _plain(_hedges),
     _plain(_infinitives),
@@ -2543,6 +2693,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_after_all),
     _rest,
     _whatever_near,
+    _plain(_any_restated),
     _plain(_whichever),
     _relatives,
     _one_anaphora,

@@ -8,7 +8,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from hltl.planner import lns
+from hltl.planner import lns, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
@@ -39,6 +39,10 @@ CP_WALK_SHARE = 0.2
 CP_UP_TO = 16
 # ... keeping each object to places on routes at most this much slower than its quickest (s)
 CP_DETOUR = 0.6
+# big cells of at most this many goals: the relaxed-schedule bound (``schedule``) runs first,
+# until this share of the budget
+SCHEDULE_UP_TO = 16
+SCHEDULE_SHARE = 0.25
 
 
 @dataclass(frozen=True, slots=True)
@@ -418,6 +422,10 @@ def plan_anytime(
     # bounds at the start node (most promising pairs first) instead of the first exact slice,
     # whose very first expansion would enumerate more step sets than there is time for
     big = n_goals > PAIRS_UP_TO
+    if big and not good_enough() and best is not None:
+        until = t0 + SCHEDULE_SHARE * timeout
+        lb = max(lb, _schedule_at_start(problem, s, start, round(lb), best[0], until))
+        note()
     phases = (
         (PAIRS_SHARE, BIG_RESTART_SHARE, 1.0) if big else (EXACT_FIRST_SHARE, RESTART_SHARE, 1.0)
     )
@@ -473,6 +481,24 @@ def plan_anytime(
     return PlanResult(
         PlanStatus.SOLVED, steps, to_seconds(best[0]), stats, "", to_seconds(min(lb, best[0]))
     )
+
+
+def _schedule_at_start(
+    problem: Problem, s: _Search, start: Node, floor: int, upper: int, until: float
+) -> int:
+    """The relaxed-schedule bound at the start node (``schedule.schedule_bound``) when it
+    applies (fixed durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals);
+    ``floor`` otherwise or when it proves nothing more before ``until``."""
+    if not (lns.available() and schedule.applicable(problem)):
+        return floor
+    heur = s.heuristic
+    tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
+    if not tgts or len(tgts) > SCHEDULE_UP_TO:
+        return floor
+    res = schedule.schedule_bound(
+        problem, heur.graph, start, tgts, floor=floor, upper=upper, deadline=until
+    )
+    return res.ticks
 
 
 def _pairs_at_start(
