@@ -181,7 +181,7 @@ def _object_sized(span: npt.NDArray[np.float64]) -> bool:
 def _open_vocab(scene: Scene | None) -> ObjectBackend:
     """Grounding DINO / OWL-ViT from the local weights ``$HLTL_OPEN_VOCAB_WEIGHTS`` names
     (imported here: it needs transformers, an optional extra)."""
-    from hltl.perception.openvocab import OpenVocabBackend
+    from hltl.perception.openvocab import OpenVocabBackend  # why: an optional extra's backend
 
     return OpenVocabBackend(scene)
 

@@ -1,18 +1,4 @@
-"""Open-vocabulary object detection from user-supplied local weights (paper §III-A).
-
-No package here ships Grounding DINO, OWL-ViT, SAM 2 or CLIP weights (DESIGN.md §5), so this
-backend runs only when the user points ``HLTL_OPEN_VOCAB_WEIGHTS`` at a local directory holding
-a zero-shot detector in the ``transformers`` format (``config.json``, the weights and the
-processor files: Grounding DINO or OWL-ViT/OWLv2). It is loaded with ``local_files_only`` and
-the hub switched off: nothing is downloaded. Without ``transformers`` or the directory,
-building the backend raises :class:`~hltl.errors.BackendUnavailableError` naming what is
-missing.
-
-The detector gives boxes with the query each matches; the queries are the scene's object
-categories and aliases (or the category names the simulator renders when there is no scene).
-Each box becomes a mask from depth — the pixels of the box on the nearest surface in it, above
-the support planes — which 3D localisation and fusion take as from any other backend.
-"""
+"""Open-vocabulary object detection from user-supplied local weights (paper §III-A)."""
 
 from __future__ import annotations
 
