@@ -257,7 +257,13 @@ def _feasible(
                 for u, st, d, _ in ends:
                     per_robot[r].append(m.new_optional_fixed_size_interval_var(st, d, u, ""))
                 continue
-            per_robot[r].extend(_session(m, H, starts, ends))
+            # the quickest ways out of r's hand (not firing: a loop goes on) and back in, over
+            # every instance, so that no way a plan may take is missed
+            hand = p.held_code[r]
+            leave = [i.lower for i in p.by_obj_pre[o][hand] if i.index not in t.fires]
+            back = [i.lower for row in p.by_obj_pre[o] for i in row if i.post == hand]
+            quickest = (min(leave) // unit, min(back) // unit) if leave and back else None
+            per_robot[r].extend(_session(m, H, starts, ends, quickest))
     for k, t in enumerate(tgts):
         for j in t.after:
             m.add(fire_start[k] >= fire_start[j])
@@ -284,11 +290,13 @@ def _session(
     H: int,
     starts: list[tuple[Any, Any, int]],
     ends: list[tuple[Any, Any, int, bool]],
+    quickest: tuple[int, int] | None,
 ) -> list[Any]:
     """Robot r's time with the object in hand, as intervals for r's no-overlap: whole, from the
     instance that brings it to the one that takes it away; or, when the object leaves r and
     comes back (a loop the path does not show), split into the arrival plus the quickest way
-    out, and the quickest way back in plus the departure."""
+    out, and the quickest way back in plus the departure (``quickest``: those two durations;
+    None when the object cannot leave r without its atom happening, or never come back)."""
     present = m.new_bool_var("")
     m.add(present == sum(u for u, _, _ in starts))
     begin, end = m.new_int_var(0, H, ""), m.new_int_var(0, H, "")
@@ -301,15 +309,14 @@ def _session(
         m.add(start_out == st).only_enforce_if(u)
     whole = m.new_bool_var("")
     out: list[Any] = [m.new_optional_interval_var(begin, m.new_int_var(0, H, ""), end, whole, "")]
-    leave = [d for _, _, d, fires in ends if not fires]
-    if not leave:
+    if quickest is None:
         m.add(whole == present)
         return out
+    leave, back = quickest
     split = m.new_bool_var("")
     m.add(whole + split == present)
-    back = min(d for _, _, d in starts)
     e1, s2 = m.new_int_var(0, H, ""), m.new_int_var(-H, H, "")
-    m.add(e1 == end_in + min(leave)).only_enforce_if(split)
+    m.add(e1 == end_in + leave).only_enforce_if(split)
     m.add(s2 == start_out - back).only_enforce_if(split)
     m.add(e1 <= s2).only_enforce_if(split)
     out.append(m.new_optional_interval_var(begin, m.new_int_var(0, H, ""), e1, split, ""))
