@@ -94,3 +94,52 @@ def test_perceive_skeleton_without_its_environment_or_people_is_one_error_line(
     assert main(["perceive", str(root), "--scene", str(scene), "--skeleton"]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ") and "pose environment" in err[0]
+
+
+def test_a_recorded_sequence_without_segmentation_and_png_depth_runs_unchanged(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The layout a RealSense recording comes in: 16-bit millimetre PNG depth, no seg/ —
+    the defaults switch to the depth-clusters backend and the depth person detector."""
+    import shutil
+
+    cam = make_camera((0.5, -1.4, 1.2), (0.5, 0.3, 0.0), SOLIDS)
+    frames = [render(cam, SOLIDS, t=0.1 * k, index=k) for k in range(2)]
+    root = write_frames(tmp_path / "rec", cam, frames, depth_format="png")
+    shutil.rmtree(root / "seg")
+    meta = json.loads((root / "camera.json").read_text())
+    meta.pop("segments", None)  # a recording knows nothing of the scene's entities
+    for entry in meta["frames"]:
+        entry.pop("seg", None)
+    (root / "camera.json").write_text(json.dumps(meta))
+    assert sorted(p.suffix for p in (root / "depth").iterdir()) == [".png", ".png"]
+    scene = tmp_path / "scene.yaml"
+    scene.write_text(yaml.safe_dump(SCENE))
+    assert main(["perceive", str(root), "--scene", str(scene), "--json"]) == 0
+    last = json.loads(capsys.readouterr().out)["frames"][-1]
+    by_id = {o["id"]: o for o in last["objects"]}
+    assert {"bottle", "chips"} <= set(by_id)
+    assert abs(by_id["bottle"]["position"][0] - 0.3) < 0.03
+    # the same frames with seg/ and npz depth give the same objects within a few mm
+    ref = write_frames(tmp_path / "ref", cam, frames)
+    assert (
+        main(
+            [
+                "perceive",
+                str(ref),
+                "--scene",
+                str(scene),
+                "--json",
+                "--backend",
+                "depth-clusters",
+                "--people",
+                "depth",
+            ]
+        )
+        == 0
+    )
+    ref_last = json.loads(capsys.readouterr().out)["frames"][-1]
+    for o in ref_last["objects"]:
+        if o["id"] in by_id:
+            d = [a - b for a, b in zip(o["position"], by_id[o["id"]]["position"], strict=True)]
+            assert max(abs(x) for x in d) < 0.005

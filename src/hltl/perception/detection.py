@@ -104,6 +104,7 @@ class DepthBackend:
         self.scene = scene
         self.edge = edge
         self.planes: list[float] = []
+        self.doubts: list[str] = []  # the last frame's regions the backend could not decide
 
     def view(self, frame_depth: npt.NDArray[np.float32], camera: Camera) -> DepthView:
         """The frame's depth as world points and depth edges."""

@@ -29,10 +29,12 @@ from hltl.world.scene import Scene
 
 class ObjectBackend(Protocol):
     """Turns a frame into detections; ``planes`` are the support heights it found in the last
-    frame (empty when it does not look for them)."""
+    frame (empty when it does not look for them), ``doubts`` what it saw there but could not
+    decide (reported by the observation as ambiguous, never guessed)."""
 
     name: str
     planes: list[float]
+    doubts: list[str]
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]: ...
 
@@ -45,6 +47,7 @@ class SegmentationBackend:
     def __init__(self, scene: Scene | None = None) -> None:
         self.scene = scene
         self.planes: list[float] = []
+        self.doubts: list[str] = []
 
     def detect(self, frame: Frame, camera: Camera) -> list[Detection]:
         if frame.seg is None:
@@ -175,10 +178,19 @@ def _object_sized(span: npt.NDArray[np.float64]) -> bool:
     return bool(span[0] < 0.3 and span[1] < 0.3 and span[2] < 0.4)
 
 
+def _open_vocab(scene: Scene | None) -> ObjectBackend:
+    """Grounding DINO / OWL-ViT from the local weights ``$HLTL_OPEN_VOCAB_WEIGHTS`` names
+    (imported here: it needs transformers, an optional extra)."""
+    from hltl.perception.openvocab import OpenVocabBackend  # why: an optional extra's backend
+
+    return OpenVocabBackend(scene)
+
+
 BACKENDS: dict[str, Callable[[Scene | None], ObjectBackend]] = {
     "segmentation": SegmentationBackend,
     "depth-clusters": DepthClusterBackend,
     "learned": LearnedBackend,
+    "open-vocab": _open_vocab,
 }
 
 

@@ -182,6 +182,7 @@ class Perceiver:
         dets = self.backend.detect(frame, self.camera)
         located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
         objects, unmatched, ambiguous = match_objects(self.scene, located)
+        ambiguous += self.backend.doubts  # regions the backend could not call person or object
         if self.smooth:  # a matched object's position over frames, gated (filtering.py)
             objects = [
                 o

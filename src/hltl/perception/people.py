@@ -19,7 +19,14 @@ from hltl.perception.bodies import ColorEmbedder, DepthPersonDetector
 from hltl.perception.filtering import WalkerFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import backproject
-from hltl.perception.skeleton import PoseWorker, Skeleton, drop_implausible, orient_sides
+from hltl.perception.skeleton import (
+    JointGate,
+    PoseWorker,
+    Skeleton,
+    drop_broken_bones,
+    drop_implausible,
+    orient_sides,
+)
 from hltl.world.scene import Scene
 
 F64 = npt.NDArray[np.float64]
@@ -423,8 +430,10 @@ class PeopleTracker:
         self.added = 0  # fused: YOLO boxes with no depth body, kept
         self.frames = 0
         self.smooth = smooth
+        self.gate_joints = smooth  # hold back joints that jump (JointGate) with the filters
         self.filters: dict[str, WalkerFilter] = {}
         self.skeletons: dict[str, Skeleton] = {}  # each track's last skeleton
+        self.joint_gates: dict[str, JointGate] = {}  # each track's joints over time
         self.pose: PoseWorker | None = None
         if skeleton:
             self.pose = PoseWorker()
@@ -548,6 +557,8 @@ class PeopleTracker:
             del self.filters[t]
         for t in [t for t in self.skeletons if t not in alive]:
             del self.skeletons[t]
+        for t in [t for t in self.joint_gates if t not in alive]:
+            del self.joint_gates[t]
         people = self.binder.bind({t: (p[0], p[1]) for t, (p, _, _, _) in live.items()})
         out = []
         for t, (pos, box, score, mask) in sorted(live.items()):
@@ -558,7 +569,11 @@ class PeopleTracker:
                     walker = self.filters.get(t)
                     vel = walker.velocity if walker is not None else None
                     sk = drop_implausible(sk, (pos[0], pos[1]))
+                    sk = drop_broken_bones(sk, (pos[0], pos[1]))
                     sk = orient_sides(sk, (pos[0], pos[1]), vel, self.skeletons.get(t))
                     self.skeletons[t] = sk
+                    if self.gate_joints:
+                        gate = self.joint_gates.setdefault(t, JointGate())
+                        sk = gate.update(sk, (pos[0], pos[1]), frame.t)
             out.append(PersonObservation(t, people[t], pos, box, score, sk))
         return out

@@ -6,7 +6,7 @@ import json
 import math
 import os
 import subprocess
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
 
@@ -187,6 +187,85 @@ def orient_sides(
     return Skeleton(
         tuple((k, joints[k]) for k, _ in sk.joints), tuple((k, pixels[k]) for k, _ in sk.pixels)
     )
+
+
+# m: longest upper arm (shoulder to elbow) and forearm (elbow to wrist) a lifted skeleton may
+# have, with room for lifting error (the simulator's: 0.29 and 0.23 m; people: ~0.25-0.33)
+BONES = (("shoulder", "elbow", 0.40), ("elbow", "wrist", 0.36))
+MAX_SHOULDER_SPAN = 0.55  # m: shoulders farther apart than this are not one body's
+# m/s: how fast a joint can move relative to the body's axis (arm swing and reach), and the
+# slack (m) a frame's lifting error adds; a faster jump is held back until a second agrees
+JOINT_SPEED = {"shoulder": 0.8, "elbow": 2.0, "wrist": 3.0}
+JUMP_SLACK = 0.08
+
+
+def drop_broken_bones(sk: Skeleton, centre: tuple[float, float]) -> Skeleton:
+    """The skeleton without joints that would stretch a bone past a human's length: a wrist
+    farther than a forearm from its elbow, an elbow farther than an upper arm from its
+    shoulder (the outer joint goes: its pixel's depth was the background's or the other
+    arm's), and of two shoulders wider apart than a body, the one farther from the body axis
+    through ``centre``."""
+    joints = dict(sk.joints)
+    ls, rs = joints.get("l_shoulder"), joints.get("r_shoulder")
+    if ls is not None and rs is not None and math.dist(ls, rs) > MAX_SHOULDER_SPAN:
+        far = max(
+            ("l", "r"),
+            key=lambda k: math.hypot(
+                joints[f"{k}_shoulder"][0] - centre[0],  # type: ignore[index]
+                joints[f"{k}_shoulder"][1] - centre[1],  # type: ignore[index]
+            ),
+        )
+        joints[f"{far}_shoulder"] = None
+    for side in ("l", "r"):
+        for inner, outer, length in BONES:
+            a, b = joints.get(f"{side}_{inner}"), joints.get(f"{side}_{outer}")
+            if a is not None and b is not None and math.dist(a, b) > length:
+                joints[f"{side}_{outer}"] = None
+    return Skeleton(
+        tuple((k, joints[k]) for k, _ in sk.joints),
+        tuple((k, p if joints[k] is not None else None) for k, p in sk.pixels),
+    )
+
+
+@dataclass(slots=True)
+class JointGate:
+    """One track's joints over time: a joint that jumps, relative to the body axis, farther
+    than it can move since it was last accepted (:data:`JOINT_SPEED` × the time +
+    :data:`JUMP_SLACK`) is reported unseen for that frame — a left/right mix-up or a depth
+    sample off the arm — unless the next frame confirms it (the arm really moved there)."""
+
+    last: dict[str, tuple[float, Vec3]] = field(default_factory=dict)  # joint -> (t, offset)
+    pending: dict[str, tuple[float, Vec3]] = field(default_factory=dict)
+    held: int = 0  # joints held back so far
+
+    def update(self, sk: Skeleton, centre: tuple[float, float], t: float) -> Skeleton:
+        out = dict(sk.joints)
+        for k, p in sk.joints:
+            if p is None:
+                continue
+            rel = (p[0] - centre[0], p[1] - centre[1], p[2])
+            allowed = JOINT_SPEED[k[2:]]
+            prev = self.last.get(k)
+            if prev is None or t - prev[0] > 1.0 or _within(rel, prev[1], allowed, t - prev[0]):
+                self.last[k] = (t, rel)
+                self.pending.pop(k, None)
+                continue
+            seen = self.pending.get(k)
+            if seen is not None and _within(rel, seen[1], allowed, t - seen[0]):
+                self.last[k] = (t, rel)  # two frames agree: the joint moved
+                self.pending.pop(k, None)
+                continue
+            self.pending[k] = (t, rel)
+            out[k] = None
+            self.held += 1
+        return Skeleton(
+            tuple((k, out[k]) for k, _ in sk.joints),
+            tuple((k, p if out[k] is not None else None) for k, p in sk.pixels),
+        )
+
+
+def _within(a: Vec3, b: Vec3, speed: float, dt: float) -> bool:
+    return math.dist(a, b) <= speed * max(dt, 0.0) + JUMP_SLACK
 
 
 class PoseWorker:
