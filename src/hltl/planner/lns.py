@@ -33,6 +33,21 @@ def available() -> bool:
     return True
 
 
+def solve_until(model: Any, deadline: float, seed: int) -> tuple[Any, Any] | None:
+    """Solve a CP-SAT ``model`` on one worker with ``seed`` until ``deadline``
+    (``time.perf_counter()``); the solver and its status, or None when no time is left."""
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
+    left = deadline - time.perf_counter()
+    if left <= 0:
+        return None
+    solver = cp_model.CpSolver()
+    solver.parameters.max_time_in_seconds = left
+    solver.parameters.num_workers = 1
+    solver.parameters.random_seed = seed
+    return solver, solver.solve(model)
+
+
 def replan_jointly(
     problem: Problem,
     goals: Sequence[GoalSpec],
@@ -162,14 +177,10 @@ def replan_jointly(
             prev = d
     m.minimize(sum(objective))
 
-    left = deadline - time.perf_counter()
-    if left <= 0:
+    solved = solve_until(m, deadline, seed)
+    if solved is None:
         return None
-    solver = cp_model.CpSolver()
-    solver.parameters.max_time_in_seconds = left
-    solver.parameters.num_workers = 1
-    solver.parameters.random_seed = seed
-    status = solver.solve(m)
+    solver, status = solved
     if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
         return None
     out: Steps = [[] for _ in range(T)]

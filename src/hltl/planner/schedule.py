@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import reduce
 from typing import Any
 
+from hltl.planner.lns import solve_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.hierarchy import HSpec
@@ -270,14 +270,10 @@ def _feasible(
     for ivs in per_robot:
         if len(ivs) > 1:
             m.add_no_overlap(ivs)
-    left = deadline - time.perf_counter()
-    if left <= 0:
+    solved = solve_until(m, deadline, seed)
+    if solved is None:
         return None
-    solver = cp_model.CpSolver()
-    solver.parameters.max_time_in_seconds = left
-    solver.parameters.num_workers = 1
-    solver.parameters.random_seed = seed
-    status = solver.solve(m)
+    status = solved[1]
     if status == cp_model.INFEASIBLE:
         return False
     if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
