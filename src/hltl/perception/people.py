@@ -428,6 +428,8 @@ class PeopleTracker:
         self.rejected = 0
         self.confirmed = 0  # fused: depth bodies a YOLO box agreed with
         self.added = 0  # fused: YOLO boxes with no depth body, kept
+        self.displaced = 0  # fused, asynchronous: boxes partly over a body seen now, not added
+        self._yolo_age = 0.0  # fused: age (s) of the YOLO boxes this frame uses
         self.frames = 0
         self.smooth = smooth
         self.gate_joints = smooth  # hold back joints that jump (JointGate) with the filters
@@ -473,10 +475,16 @@ class PeopleTracker:
                     key=lambda i: _overlap(found[i][0].box, y.box),
                     default=None,
                 )
-                if best is not None and _overlap(found[best][0].box, y.box) >= 0.5:
+                overlap = _overlap(found[best][0].box, y.box) if best is not None else 0.0
+                if best is not None and overlap >= 0.5:
                     b, m = found[best]
                     found[best] = (PersonBox(b.box, min(1.0, 0.6 + y.score)), m)
                     self.confirmed += 1
+                elif overlap > 0.0 and self._yolo_age > 0.0:
+                    # an older frame's box partly over a body the depth columns see now: the
+                    # person walked since (0.3-0.5 s at 10 Hz), so it is that body displaced;
+                    # adding it made a second, unbound track of one person
+                    self.displaced += 1
                 else:  # a person the depth columns missed (head hidden, not standing)
                     found.append((y, None))
                     self.added += 1
@@ -505,6 +513,7 @@ class PeopleTracker:
         the worker this frame when it is free and ``yolo_every`` frames have passed."""
         if self.detector is None:
             return []
+        self._yolo_age = 0.0
         if self.async_yolo is None:
             return self._yolo(frame, camera) if self.frames % self.yolo_every == 0 else []
         done = self.async_yolo.poll()
@@ -519,6 +528,7 @@ class PeopleTracker:
             self.stale += 1
             return []
         self.yolo_ages.append(age)
+        self._yolo_age = age
         return self._checked(done.boxes, frame, camera)
 
     def update(self, frame: Frame, camera: Camera) -> list[PersonObservation]:
