@@ -429,7 +429,6 @@ class PeopleTracker:
         self.confirmed = 0  # fused: depth bodies a YOLO box agreed with
         self.added = 0  # fused: YOLO boxes with no depth body, kept
         self.displaced = 0  # fused, asynchronous: boxes partly over a body seen now, not added
-        self._yolo_age = 0.0  # fused: age (s) of the YOLO boxes this frame uses
         self.frames = 0
         self.smooth = smooth
         self.gate_joints = smooth  # hold back joints that jump (JointGate) with the filters
@@ -469,7 +468,8 @@ class PeopleTracker:
         if self.bodies is not None:
             bodies = self.bodies.detect(frame.depth, camera)
             found: list[tuple[PersonBox, Any]] = [(PersonBox(b, 0.6), m) for b, m in bodies]
-            for y in self._fused_yolo(frame, camera):
+            boxes, age = self._fused_yolo(frame, camera)
+            for y in boxes:
                 best = max(
                     range(len(found)),
                     key=lambda i: _overlap(found[i][0].box, y.box),
@@ -480,7 +480,7 @@ class PeopleTracker:
                     b, m = found[best]
                     found[best] = (PersonBox(b.box, min(1.0, 0.6 + y.score)), m)
                     self.confirmed += 1
-                elif overlap > 0.0 and self._yolo_age > 0.0:
+                elif overlap > 0.0 and age > 0.0:
                     # an older frame's box partly over a body the depth columns see now: the
                     # person walked since (0.3-0.5 s at 10 Hz), so it is that body displaced;
                     # adding it made a second, unbound track of one person
@@ -507,29 +507,29 @@ class PeopleTracker:
             out.append((PersonBox(box, 1.0), mask))
         return out
 
-    def _fused_yolo(self, frame: Frame, camera: Camera) -> list[PersonBox]:
-        """YOLO's boxes for this frame of ``fused``: inline every ``yolo_every``-th frame, or
-        (asynchronous) those of the run that finished since the last frame, after handing
-        the worker this frame when it is free and ``yolo_every`` frames have passed."""
+    def _fused_yolo(self, frame: Frame, camera: Camera) -> tuple[list[PersonBox], float]:
+        """YOLO's boxes for this frame of ``fused`` and their age (s): inline every
+        ``yolo_every``-th frame (age 0), or (asynchronous) those of the run that finished since
+        the last frame, after handing the worker this frame when it is free and ``yolo_every``
+        frames have passed."""
         if self.detector is None:
-            return []
-        self._yolo_age = 0.0
+            return [], 0.0
         if self.async_yolo is None:
-            return self._yolo(frame, camera) if self.frames % self.yolo_every == 0 else []
+            inline = self.frames % self.yolo_every == 0
+            return (self._yolo(frame, camera) if inline else []), 0.0
         done = self.async_yolo.poll()
         if self.frames - self._submitted >= self.yolo_every and self.async_yolo.submit(
             frame.index, frame.t, frame.rgb
         ):
             self._submitted = self.frames
         if done is None:
-            return []
+            return [], 0.0
         age = frame.t - done.t
         if age > MAX_YOLO_AGE:
             self.stale += 1
-            return []
+            return [], 0.0
         self.yolo_ages.append(age)
-        self._yolo_age = age
-        return self._checked(done.boxes, frame, camera)
+        return self._checked(done.boxes, frame, camera), age
 
     def update(self, frame: Frame, camera: Camera) -> list[PersonObservation]:
         found = self._boxes(frame, camera)
