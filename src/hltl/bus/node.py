@@ -269,6 +269,9 @@ class CellNode:
         self._tokens = [session.liveliness().declare_token(k.alive(r.id)) for r in scene.robots]
         self._publishers: dict[str, Any] = {}
         self._matched: set[str] = set()  # keys some subscriber listens to
+        # committed lockstep ticks not yet published to observers (the step thread publishes
+        # them when no query waits: off the executor's critical path)
+        self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -371,7 +374,10 @@ class CellNode:
         while True:
             if query is None:
                 try:
-                    query = self._steps.recv()
+                    query = self._steps.try_recv()
+                    if query is None:  # idle: now observers get what the executor has had
+                        self._publish_later()
+                        query = self._steps.recv()
                 except Exception:  # withdrawn: the node closed
                     return
             try:
@@ -456,16 +462,18 @@ class CellNode:
             if d.get("peek"):  # after commands: the clock now, and what follows
                 answer = {"episode": ep.id, "step": n, "status": status, **self._clock(ep.cell, t)}
             else:
-                obs, tick, _ = self._tick(ep, t, ep.latest, publish=True)
+                obs, tick, reports = self._tick(ep, t, ep.latest, publish=False)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
             s = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
-            self._publish_ticks(ep, committed)  # observers: once the executor has its answer
+            # observers get the committed ticks (and this one, every report of it) once the
+            # executor has its answer, when the node is idle
+            self._later.append((ep, committed, False))
             if obs is not None:
-                self._publish_world(ep.cell, obs, t, answer["observation"])
+                self._later.append((ep, [(t, obs, reports, answer["observation"])], True))
             if s is not None and not s.done:
                 stretch = (ep, s)
         return stretch
@@ -697,14 +705,23 @@ class CellNode:
                 self._tick(ep, t, ep.latest, publish=False)
         return b.ticks[:consumed]
 
-    def _publish_ticks(self, ep: _Episode, ticks: list[_Ticked]) -> None:
+    def _publish_ticks(self, ep: _Episode, ticks: list[_Ticked], every: bool = False) -> None:
         """The executor has had these ticks' reports in the answer; observers get the outcomes
-        (every report stays in the state queryable) and the world."""
+        (``every`` report with it; all of them stay in the state queryable) and the world."""
         for t, obs, reports, wire in ticks:
             for rep in reports:
-                if rep.status.terminal:
+                if every or rep.status.terminal:
                     self._publish(ep, rep)
             self._publish_world(ep.cell, obs, t, wire)
+
+    def _publish_later(self) -> None:
+        """Publish the lockstep ticks committed since the last time, in order."""
+        with self._lock:
+            later, self._later = self._later, []
+            if self._closed:
+                return
+            for ep, ticks, every in later:
+                self._publish_ticks(ep, ticks, every)
 
     def _clock(self, cell: Cell, t: float) -> dict[str, Any]:
         return {
@@ -896,7 +913,7 @@ class CellNode:
         Each key has a declared publisher; a message is encoded only when some subscriber
         matches it, so nobody listening costs nothing.
         """
-        if not self.publish_poses:
+        if not self.publish_poses or not self._matched:  # (nobody listens: nothing to build)
             return
         k = self.keys
         self._put(k.observation, lambda: dumps(world_to_wire(obs) if wire is None else wire))
