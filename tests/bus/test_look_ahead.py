@@ -8,7 +8,8 @@ from typing import Any
 import pytest
 
 from hltl.bus.bench import _InstantCell
-from hltl.bus.node import _saver
+from hltl.bus.node import _again, _call, _Episode, _saver
+from hltl.errors import BusError
 from hltl.execution.drivers import ActionState
 from hltl.execution.log import EventLog
 from hltl.sim.dynamic import make_trial
@@ -52,6 +53,37 @@ def test_restored_simulator_replays_the_same_future() -> None:
     again = _future(sim, log, 0.5, 60)
     assert first[:-1] == again[:-1]
     assert first[-1] == again[-1] and first[-1]  # the same log records, and there were some
+
+
+def test_a_save_before_commands_and_the_commands_made_again_replay_the_same_future() -> None:
+    """The node saves the cell while it waits for the executor; a stretch after the next
+    query's commands is then undone with that save and the commands made again (``_again``):
+    the same future as from the cell right after the commands."""
+    trial = make_trial("2-4-line", 1)
+    log = EventLog()
+    sim = Simulator(
+        trial.scene, trial.events, seed=5, perception=PerceptionModel(noise=0.05), log=log
+    )
+    sim.advance(0.5)
+    idle = _saver(sim)  # (the node, idle)
+    assert idle is not None
+    ep = _Episode("e", sim, [])
+    ep.calls = []
+    r0, r1 = trial.scene.robot_ids[:2]
+    h = _call(ep, lambda: sim.start(Action("pick", (r0,), trial.scene.objects[0].id), 0.5))
+    assert h is not None
+    _call(ep, lambda: sim.start(Action("pick", (r1,), trial.scene.objects[1].id), 0.5))
+    _call(ep, lambda: sim.halt(h, 0.5, "a person came near"))
+    assert len(ep.calls) == 3 and ep.version == 3
+    first = _future(sim, log, 0.5, 60)
+    _again(idle, ep.calls)()
+    again = _future(sim, log, 0.5, 60)
+    assert first[:-1] == again[:-1]
+    assert first[-1] == again[-1] and first[-1]
+    # a start that gives another handle the second time is an error, never a silent mix-up
+    ep.calls[0] = (ep.calls[0][0], None)
+    with pytest.raises(BusError, match="another handle"):
+        _again(idle, ep.calls)()
 
 
 def test_cells_that_cannot_be_saved_are_stepped_in_lockstep() -> None:

@@ -72,7 +72,9 @@ def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
     loopback: Loopback, stream: bool
 ) -> None:
     """2-1 #1: the executor commands in the middle of a quiet stretch the node had simulated
-    ahead; those ticks are undone and the consumed ones replayed, and the log is unchanged.
+    ahead; those ticks are undone and the consumed ones replayed (from a save, or from the save
+    made before the commands that began the stretch, and those commands made again), and the
+    log is unchanged.
     Streamed, the stretch comes as further replies after the answer's first tick, and the
     node saves the simulator every few ticks of it: a cut replays fewer than that many."""
     from hltl.bus.node import CHECKPOINT
@@ -89,6 +91,8 @@ def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
     stats = run.node.stats
     assert stats.ahead > 0 and stats.undone > 0 and stats.cuts > 0
     assert run.cell.stats.queries * 3 < stats.steps  # far fewer round trips than ticks
+    # stretches after commands start from the save made while the node waited (no save then)
+    assert stats.based > 0
     if stream:
         assert run.cell.stats.streamed > 0
         assert stats.replayed < CHECKPOINT * stats.cuts

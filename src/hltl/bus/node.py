@@ -80,6 +80,7 @@ class NodeStats:
     undone: int = 0  # of those, ticks undone because a command came first
     replayed: int = 0  # ticks simulated again after an undo (to where the command came)
     cuts: int = 0  # stretches a command cut (each undone, then replayed)
+    based: int = 0  # stretches after commands undone with the save made while idle (no save)
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -101,6 +102,12 @@ class _Episode:
     trajectories: dict[int, dict[str, JointTrajectory]] = field(default_factory=dict)
     plans: dict[int, tuple[tuple[tuple[float, str, str], ...], float]] = field(default_factory=dict)
     clock: _Clock | None = None  # a real-time episode's clock (None: the executor steps it)
+    # the cell changes (a tick, a start or halt, a restore) counted: what a save is valid for
+    version: int = 0
+    # the cell saved while the node waited for the executor, at ``version`` (see _save_idle)
+    idle: tuple[int, Callable[[], None]] | None = None
+    # while a step's commands run: the calls they made on the cell, to make them again
+    calls: list[tuple[Callable[[], Handle | None], Handle | None]] | None = None
 
 
 @dataclass(slots=True)
@@ -375,8 +382,9 @@ class CellNode:
             if query is None:
                 try:
                     query = self._steps.try_recv()
-                    if query is None:  # idle: now observers get what the executor has had
-                        self._publish_later()
+                    if query is None:  # idle: now observers get what the executor has had,
+                        self._publish_later()  # and the cell is saved for the next commands
+                        self._save_idle()
                         query = self._steps.recv()
                 except Exception:  # withdrawn: the node closed
                     return
@@ -455,17 +463,26 @@ class CellNode:
                 raise BusError(f"step {n} out of order; expected {ep.last_step + 1}")
             commands = self._parse_commands(ep, d.get("commands", []))
             committed = self._settle(ep, d.get("batch"), int(d.get("consumed", 0)))
+            idle = ep.idle if ep.idle is not None and ep.idle[0] == ep.version else None
             # the step's commands, in order, before the clock: as the in-process loop calls them
-            acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
+            ep.calls = []
+            try:
+                acks = [self._execute(ep, cmd, t, publish=False) for cmd in commands]
+            finally:
+                calls, ep.calls = ep.calls, None
             status = [a.to_dict() for a in acks if a is not None]
             obs = None
+            base = None
             if d.get("peek"):  # after commands: the clock now, and what follows
                 answer = {"episode": ep.id, "step": n, "status": status, **self._clock(ep.cell, t)}
+                if idle is not None:  # the cell as it was before them, and them again
+                    base = _again(idle[1], calls)
+                    self.stats.based += 1
             else:
                 obs, tick, reports = self._tick(ep, t, ep.latest, publish=False)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
-            s = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")))
+            s = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")), base)
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
@@ -497,6 +514,7 @@ class CellNode:
         """One tick of the loop on the cell, as the in-process loop calls it: advance, observe,
         instructions, then the actions' reports (also carried in the answer) and the clock."""
         cell = ep.cell
+        ep.version += 1
         cell.advance(t)
         obs = cell.observe(t)
         instructions = cell.take_instructions()
@@ -591,7 +609,13 @@ class CellNode:
     # -- ticks ahead of the executor -----------------------------------------------------------
 
     def _look_ahead(
-        self, ep: _Episode, n: int, t: float, answer: dict[str, Any], ahead: _Ahead | None
+        self,
+        ep: _Episode,
+        n: int,
+        t: float,
+        answer: dict[str, Any],
+        ahead: _Ahead | None,
+        base: Callable[[], None] | None = None,
     ) -> _Stretch | None:
         """Simulate the ticks the executor will ask for next, until something happens that it
         may act on (an action ends, an instruction, a robot's availability changes) or
@@ -599,10 +623,11 @@ class CellNode:
         wait in a batch for the executor to say how many it used. Asked to stream, only the
         first tick goes in the answer (``"more"``: the stretch, returned, goes on).
         Only cells whose state can be saved and restored (the discrete-event simulator, the
-        3D one) are run ahead; others are stepped one tick per query."""
+        3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
+        puts the cell back to now (else it is saved before the first tick)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None
-        batch = _Batch(n, None, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
+        batch = _Batch(n, base, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
         s = _Stretch(
             batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
         )
@@ -639,6 +664,7 @@ class CellNode:
         try:
             obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
         except BaseException:  # the cell failed: back to before the stretch, none of it kept
+            ep.version += 1
             b.restore()  # (set above)
             raise
         finally:
@@ -696,6 +722,7 @@ class CellNode:
                 (m for m in reversed(b.marks) if m[0] <= consumed),
                 (0, b.restore, b.seq0, b.latest0),
             )
+            ep.version += 1
             restore()
             self.stats.undone += len(b.ticks) - consumed
             self.stats.replayed += consumed - i
@@ -713,6 +740,22 @@ class CellNode:
                 if every or rep.status.terminal:
                     self._publish(ep, rep)
             self._publish_world(ep.cell, obs, t, wire)
+
+    def _save_idle(self) -> None:
+        """While the executor decides what to do next (no query waits), save the cell: when the
+        next query brings commands, the stretch after them is undone with this save and the
+        commands made again, instead of a save after them, before the answer (the executor
+        waits for that one). Only the discrete-event simulator: a start in the 3D one plans
+        the arms' motion, which costs more to make again than a save."""
+        with self._lock:
+            ep = self._ep
+            if ep is None or self._closed or ep.clock is not None or type(ep.cell) is not Simulator:
+                return
+            if ep.idle is not None and ep.idle[0] == ep.version:  # (saved already)
+                return
+            save = _saver(ep.cell)
+            if save is not None:
+                ep.idle = (ep.version, save)
 
     def _publish_later(self) -> None:
         """Publish the lockstep ticks committed since the last time, in order."""
@@ -770,6 +813,7 @@ class CellNode:
             t = cmd.t
             if ep.clock is not None:  # real time: the robots act now, on the node's clock
                 t = ep.clock.now()
+                ep.version += 1
                 ep.cell.advance(t)
             self._execute(ep, cmd, t, publish=True)
 
@@ -790,9 +834,10 @@ class CellNode:
                 if plan is None:  # not all here yet: no acknowledgement, so it comes again
                     self.stats.waiting += 1
                     return None
-                h = ep.cell.start(cmd.action, t, motion=plan)
+                h = _call(ep, partial(ep.cell.start, cmd.action, t, motion=plan))
             else:
-                h = ep.cell.start(cmd.action, t)
+                h = _call(ep, partial(ep.cell.start, cmd.action, t))
+            assert h is not None
             ep.handles[cmd.handle] = h
             ep.by_cell_id[h.id] = cmd.handle
             self.stats.starts[cmd.handle] = self.stats.starts.get(cmd.handle, 0) + 1
@@ -805,7 +850,7 @@ class CellNode:
         if prev.status.terminal:
             self.stats.duplicates += 1
             return self._acknowledge(ep, prev, publish)
-        ep.cell.halt(h, t, cmd.reason)
+        _call(ep, partial(ep.cell.halt, h, t, cmd.reason))
         return self._report(ep, cmd.handle, ep.cell.poll(h, t), publish)
 
     def _acknowledge(self, ep: _Episode, rep: Report, publish: bool) -> Report:
@@ -1043,6 +1088,30 @@ def _compact(tick: dict[str, Any]) -> dict[str, Any]:
         if not item["reason"]:
             del item["reason"]
     return tick
+
+
+def _call(ep: _Episode, call: Callable[[], Handle | None]) -> Handle | None:
+    """Make a start or halt on the episode's cell (noted, while a step's commands run)."""
+    ep.version += 1
+    out = call()
+    if ep.calls is not None:
+        ep.calls.append((call, out))
+    return out
+
+
+def _again(
+    restore: Callable[[], None], calls: list[tuple[Callable[[], Handle | None], Handle | None]]
+) -> Callable[[], None]:
+    """``restore``, then ``calls`` made again: the same calls on the same state give the same
+    results (checked: a start must give the same handle)."""
+
+    def again() -> None:
+        restore()
+        for call, out in calls:
+            if call() != out:
+                raise BusError(f"a start made again gave another handle than {out!r:.80}")
+
+    return again
 
 
 def _kept(cell: Cell) -> frozenset[str] | None:
