@@ -162,6 +162,44 @@ def test_node_refuses_another_scene(loopback: Loopback) -> None:
         )
 
 
+def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) -> None:
+    """A streaming node yields the interpreter between ticks only while an executor drives a
+    cell from the same process (``executor_here``): a cell counts from when it is built until
+    it is closed, also when its node refuses it."""
+    from hltl.bus.driver import BusCell
+    from hltl.bus.node import CellNode
+    from hltl.bus.session import open_executors
+    from hltl.errors import BusError
+    from hltl.execution.log import EventLog
+    from hltl.sim.events import EventSchedule
+    from hltl.sim.simulator import PerceptionModel
+    from hltl.world.scene import load_scene
+
+    sc = scenarios.get("fig1")
+    before = open_executors()  # (another test's cell left open would count here)
+    seen: list[int] = []
+
+    class Hook:
+        def on_tick(self, t: float, sim: object, executor: object) -> None:
+            seen.append(open_executors())
+
+    run = loopback.run(sc.scene, instruction=sc.instruction, seed=0, hooks=[Hook()])
+    assert run.episode.success and seen and set(seen) == {before + 1}
+    assert open_executors() == before  # closed
+    other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
+    with CellNode(loopback._node_session, sc.scene), pytest.raises(BusError, match="serves"):
+        BusCell(
+            loopback._exec_session,
+            other,
+            EventSchedule(),
+            0,
+            PerceptionModel(),
+            EventLog(),
+            timing=BusTiming(timeout=0.5, connect=1.0),
+        )
+    assert open_executors() == before  # refused: closed too
+
+
 def test_no_node_is_an_error_not_a_hang(loopback: Loopback) -> None:
     from hltl.bus.driver import bus_cell
     from hltl.errors import BusError

@@ -28,6 +28,11 @@ def executor_opened(delta: int) -> None:
         _executors += delta
 
 
+def open_executors() -> int:
+    """How many executors' bus cells are open in this process."""
+    return _executors
+
+
 def executor_here() -> bool:
     """Whether an executor drives a cell over the bus from this process. A node streaming from
     the same interpreter then yields it between ticks (the executor waits for the interpreter
