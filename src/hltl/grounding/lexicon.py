@@ -20,7 +20,7 @@ _TOKEN = re.compile(
 
 _ELLIPSIS_CORRECTION = re.compile(
     r"\.{2,}(?=\s*(?:actually|sorry|no|wait|i mean|i meant|rather|or rather|oops|correction|"
-    r"make that|make it)\b)",
+    r"make that|make it|hold on|hang on|hold up)\b)",
     re.IGNORECASE,
 )
 
@@ -45,6 +45,10 @@ def tokenize(text: str) -> list[Token]:
     text = re.sub(r"\s[&+]\s", " and ", text)
     text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
     text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
+    # "won't" -> "will n't", "can't" -> "can n't" (else "wo"/"ca" are words nobody reads)
+    text = re.sub(r"(?i)\b(w)on't\b", r"\1ill n't", text)
+    text = re.sub(r"(?i)\b(c)an't\b", r"\1an n't", text)
+    text = re.sub(r"(?i)\b(s)han't\b", r"\1hall n't", text)
     text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
     out = []
     for m in _TOKEN.finditer(text):
@@ -186,7 +190,7 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("in", "this", "order"): "in_order",
     ("in", "the", "order", "given"): "in_order",
     ("one", "after", "the", "other"): "in_order",
-    ("in", "any", "order"): "filler",
+    ("in", "any", "order"): "any_order",
     ("in", "whatever", "order"): "filler",
     ("in", "the", "meantime"): "meanwhile",
     ("would", "like"): "verb:like",
@@ -634,12 +638,16 @@ _phrases("swap", "vice versa", "the reverse", "the opposite way round")
 # Session 8 (issue 12): vocabulary families, each read one way wherever it occurs.
 # Order said not to matter ("…, either order", "in no particular order"): no order, like
 # "in any order"
+# (hltl.grounding.phrasing drops them, and refuses them beside words that order: "First give
+# Bob the chips, then Alice the cup, in either order" says two things)
 for _in in ("in ", ""):
     for _any in ("either", "any", "whatever", "whichever", "no particular", "random"):
-        PHRASES[tuple(f"{_in}{_any} order".split())] = "filler"
+        PHRASES[tuple(f"{_in}{_any} order".split())] = "any_order"
+        for _fine in ("is fine", "is ok", "is okay", "works", "will do", "is good"):
+            PHRASES[tuple(f"{_in}{_any} order {_fine}".split())] = "any_order"
 for _order in ("order", "the order"):
     for _matter in ("does n't matter", "does not matter", "is not important", "is n't important"):
-        PHRASES[tuple(f"{_order} {_matter}".split())] = "filler"
+        PHRASES[tuple(f"{_order} {_matter}".split())] = "any_order"
 # A closing that says the request is complete ("…, and that's it", "that's everything")
 for _that in ("that 's", "that is", "and that 's", "and that is"):
     for _it in ("it", "everything", "all for now", "all i need", "all we need"):
