@@ -1391,9 +1391,13 @@ def _main_clause_start(items: list[Item]) -> int | None:
             n = j + 1
             while n < len(items) and _is(items[n], "aux", "filler"):
                 n += 1
-            if j + 1 < len(items) and items[j].kind == "ent" and n < len(items):
-                if _is_verb(items[n]):
-                    return k
+            if (
+                j + 1 < len(items)
+                and items[j].kind == "ent"
+                and n < len(items)
+                and _is_verb(items[n])
+            ):
+                return k
     if len(commas) == 1:
         return commas[0]
     if commas:
