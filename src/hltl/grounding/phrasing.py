@@ -540,6 +540,16 @@ def _whichever(items: list[Item]) -> list[Item]:
                 continue
             skipping, start = True, k
             continue
+        narrows = _is(it, "nearest", "near", "farthest", "not", "from") or (
+            it.lemma == "pronoun" and it.text.lower() in _PERSON_PRONOUNS
+        )
+        if skipping and (narrows or it.kind == "ent"):
+            # "…, whichever is further ok from her": a choice the clause narrows, which was
+            # not read; dropping it would widen the choice
+            raise GroundingError(
+                f"cannot read {_words_of(items[start : k + 2])!r}: say which one, e.g. 'the mug "
+                "nearest to Carol'"
+            )
         if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
             # "…, whichever give Bob the mugs": a request run on after the remark
             raise GroundingError(
@@ -1318,6 +1328,19 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
             continue
+        changed = any(x.text.lower() in CHANGES_OF_MIND for x in items[k:j])
+        if (
+            changed
+            and not whole
+            and sum(x.kind == "ent" for x in before[_sentences(before)[-1][0] :]) > 2
+        ):
+            # "give A the bottle and B the chips — on second thought, give them to B": a change of
+            # mind inside a sentence of several tasks, about one of them or all? (as across a
+            # full stop)
+            raise GroundingError(
+                f"{it.text!r} could change the whole sentence before it or only a part of it: "
+                "say the whole request again"
+            )
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
@@ -2903,11 +2926,19 @@ def _any_restated(items: list[Item]) -> list[Item]:
             )
             if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
                 j += 1
-                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                while j < len(items) and (
+                    items[j].text.lower() in _ANY_TAIL or _is(items[j], "filler")
+                ):
                     j += 1
                 if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
                     k = j
                     continue
+                # "a pen, any pen <words>": a second pen, or the same said again? (a fuzz found
+                # "…, any pen real quick" read as two pens)
+                raise GroundingError(
+                    f"'{prev.text}, {_words_of(items[k + 1 : j + 1])}': one of them or "
+                    "another one? say it once"
+                )
         out.append(it)
         k += 1
     return out
@@ -3189,10 +3220,16 @@ def _whichever_near_at(items: list[Item], k: int, out: list[Item], lexicon: Lexi
     if not (k + 2 < len(items) and _is(items[k], ",")):
         return k
     j = k + 1
-    if items[j].text.lower() not in _WHICHEVER_ONE:
+    while (
+        j < len(items)
+        and _is(items[j], "filler", ",")
+        and items[j].text.lower() not in _WHICHEVER_ONE
+    ):
+        j += 1
+    if j >= len(items) or items[j].text.lower() not in _WHICHEVER_ONE:
         return k
     j += 1
-    while j < len(items) and items[j].text.lower() in _BE:
+    while j < len(items) and (items[j].text.lower() in _BE or _is(items[j], "filler")):
         j += 1
     return j if j < len(items) and _is(items[j], "nearest", "farthest") else k
 
