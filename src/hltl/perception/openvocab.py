@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -37,6 +38,27 @@ class BoxModel(Protocol):
     def boxes(self, rgb: npt.NDArray[np.uint8], queries: Sequence[str]) -> list[BoxHit]: ...
 
 
+def hf_modules() -> tuple[Any, Any]:
+    """``transformers`` and ``torch``, imported on first use, with the hub switched off.
+
+    Imported by name (typed as Any): transformers' own annotations leave most of its loaders
+    untyped, and the package is an optional extra.
+
+    Raises:
+        BackendUnavailableError: either is not installed.
+    """
+    os.environ["HF_HUB_OFFLINE"] = "1"  # before the hub's client reads it: never reach for it
+    try:
+        torch = importlib.import_module("torch")
+        transformers = importlib.import_module("transformers")
+    except ImportError as exc:
+        raise BackendUnavailableError(
+            "the open-vocabulary backends need transformers and torch: "
+            "pip install 'hltl[openvocab]'"
+        ) from exc
+    return transformers, torch
+
+
 def weights_dir(path: str | Path | None = None) -> Path:
     """The local weights directory: ``path`` or ``$HLTL_OPEN_VOCAB_WEIGHTS``.
 
@@ -62,15 +84,7 @@ class TransformersBoxModel:
     """A zero-shot detector (Grounding DINO, OWL-ViT, OWLv2) loaded from a local directory."""
 
     def __init__(self, path: Path) -> None:
-        try:
-            import torch
-            import transformers  # type: ignore[import-not-found]
-        except ImportError as exc:
-            raise BackendUnavailableError(
-                "the open-vocabulary backend needs transformers and torch: "
-                "pip install 'hltl[openvocab,predict]'"
-            ) from exc
-        os.environ["HF_HUB_OFFLINE"] = "1"  # never reach for the hub, whatever the files say
+        transformers, torch = hf_modules()
         try:
             self.processor = transformers.AutoProcessor.from_pretrained(
                 str(path), local_files_only=True
