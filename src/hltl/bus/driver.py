@@ -24,7 +24,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.bus.perception import PerceptionClient
-from hltl.bus.session import zenoh
+from hltl.bus.session import executor_opened, zenoh
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
@@ -183,6 +183,8 @@ class BusCell:
         self._batch = 0
         self._consumed = 0
         self.now = 0.0
+        executor_opened(1)  # (a node serving from this process yields to it: see executor_here)
+        self._here = True
         self._entities: list[Any] = [
             session.declare_subscriber(self.keys.all_status, self._on_report),
             session.liveliness().declare_subscriber(
@@ -199,10 +201,14 @@ class BusCell:
             **self._mode(),
         }
         deadline = time.monotonic() + self.timing.connect
-        d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
-        while d is None and time.monotonic() < deadline:  # the node may still be starting
-            time.sleep(0.05)
-            d = self._ask(self.keys.sim_reset, reset, retries=0)
+        try:
+            d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
+            while d is None and time.monotonic() < deadline:  # the node may still be starting
+                time.sleep(0.05)
+                d = self._ask(self.keys.sim_reset, reset, retries=0)
+        except BaseException:  # refused: nothing is left declared
+            self.close()
+            raise
         if d is None:
             self.close()
             raise BusError(
@@ -226,6 +232,9 @@ class BusCell:
                 e.undeclare()
         self._entities = []
         self.link.close()
+        if self._here:
+            self._here = False
+            executor_opened(-1)
 
     def end(self) -> None:
         """Tell the node the episode is over (it may then serve the next one)."""

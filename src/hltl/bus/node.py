@@ -30,6 +30,7 @@ from hltl.bus.codec import (
 )
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
+from hltl.bus.session import executor_here
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import HANDLED, EventLog, LogRecord
@@ -388,7 +389,8 @@ class CellNode:
         episode ended."""
         size, ticks, first = 1, list[dict[str, Any]](), 0
         while True:
-            time.sleep(0)  # (an executor in this process gets the interpreter lock in between)
+            if executor_here():  # (an executor in this process gets the interpreter lock)
+                time.sleep(0)
             nxt = self._steps.try_recv()
             if nxt is not None:
                 return nxt

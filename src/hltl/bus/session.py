@@ -6,6 +6,7 @@ import importlib
 import json
 import re
 import socket
+import threading
 from dataclasses import dataclass
 from typing import Any
 
@@ -14,6 +15,26 @@ from hltl.errors import BackendUnavailableError, BusError
 DEFAULT_ENDPOINT = "tcp/127.0.0.1:7447"
 PERCEPTION_ENDPOINT = "tcp/127.0.0.1:7448"  # hltl node perception's default
 _ENDPOINT = re.compile(r"(tcp|udp|quic|tls|ws|unixsock-stream)/\S+")
+
+
+_executors = 0  # executors' cells driven over the bus from this process (see executor_here)
+_executors_lock = threading.Lock()
+
+
+def executor_opened(delta: int) -> None:
+    """An executor's bus cell opened (``+1``) or closed (``-1``) in this process."""
+    global _executors
+    with _executors_lock:
+        _executors += delta
+
+
+def executor_here() -> bool:
+    """Whether an executor drives a cell over the bus from this process. A node streaming from
+    the same interpreter then yields it between ticks (the executor waits for the interpreter
+    lock otherwise, up to Python's 5 ms switch interval); a node in a process of its own does
+    not, since a yield of the interpreter is also one of the CPU (``time.sleep(0)``: on a busy
+    machine, a millisecond or more)."""
+    return _executors > 0
 
 
 def zenoh() -> Any:

@@ -27,7 +27,7 @@ from hltl.sim3d.stage import DOWN, Contact, Stage
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import Action
-from hltl.world.scene import Scene, Vec3
+from hltl.world.scene import OBJECT_LIFT, Scene, Vec3
 
 TIMINGS = ("motion", "cost")
 # seconds the hand dwells at the target to close or open the fingers (the analytic cost model's)
@@ -293,9 +293,9 @@ class MujocoSimulator(Simulator):
                 del self._frozen[oid]
             else:
                 return frozen
-        if kind == "on":
+        if kind == "on":  # the log puts the object's point OBJECT_LIFT above the surface
             lift = st.object_lift(oid)
-            return (s.position[0], s.position[1], s.position[2] + lift)
+            return (s.position[0], s.position[1], s.position[2] - OBJECT_LIFT + lift)
         return s.position
 
     def _running_on(self, oid: str) -> bool:
