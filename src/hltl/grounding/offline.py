@@ -1386,7 +1386,17 @@ def _main_clause_start(items: list[Item]) -> int | None:
                 j += 1
             if j < len(items) and _is_verb(items[j]):
                 return k
-            if j + 1 < len(items) and items[j].kind == "ent" and _is_verb(items[j + 1]):
+            if j + 1 < len(items) and _is(items[j], "det") and _is_person(items[j + 1]):
+                j += 1  # "…, the doctor should get the banana": a person by role
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if (
+                j + 1 < len(items)
+                and items[j].kind == "ent"
+                and n < len(items)
+                and _is_verb(items[n])
+            ):
                 return k
     if len(commas) == 1:
         return commas[0]
