@@ -1,5 +1,4 @@
-"""People walk around the work table, not through it: the shortest walk that keeps a clearance
-from a rectangle on the floor (the table the arms stand on)."""
+"""People walk round the work table: the shortest walk keeping clear of a floor rectangle."""
 
 from __future__ import annotations
 
