@@ -2628,10 +2628,33 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if splits and plain and _is_verb_item(sent[0]):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        elif splits and _run_on_unclear(sent):
+            # "Give Dana the bowl put the cup on the tray, no wait, give it to Emma": how far
+            # back a correction or an order reaches across requests run together is unclear
+            # (session 8: a run-on fuzz read such corrections as taking back both)
+            k = splits[0]
+            raise GroundingError(
+                f"{_words_of(sent[max(0, k - 2) : k + 2])!r}: two requests run together; "
+                "join them with 'and' or a full stop"
+            )
         out.extend(sent)
         if end < len(items):
             out.append(items[end])
     return out
+
+
+def _run_on_unclear(sent: list[Item]) -> bool:
+    """Whether requests run together in ``sent`` meet a correction or an ordering word, which
+    could reach one request or both; a sentence opened by a subordinate clause ('as soon as
+    the cup is on the shelf give Carol the apple') is no run-on."""
+    n = 0
+    while n < len(sent) and _is(sent[n], "filler", ","):
+        n += 1
+    if n < len(sent) and _is(sent[n], "after", "before", "once", "prior"):
+        return False
+    return any(
+        _is(x, "correct", *_ORDERING) or (_is(x, "not") and x.text.lower() == "no") for x in sent
+    )
 
 
 # words that make a run-on unclear: joining, ordering, choosing, correcting, negating
