@@ -589,3 +589,19 @@ def test_a_subordinate_clause_without_a_comma_is_no_run_on() -> None:
 def test_an_order_or_a_no_across_requests_run_together_is_refused(text: str) -> None:
     scene = load_scene(ROOT / "examples/scenes/two_arms.yaml") if "chips and" in text else CELL
     assert_refused(text, scene)
+
+
+def test_what_causes8s_second_batch_showed() -> None:
+    # "would"/"should" after a person is a guess, not the verb phrase again
+    assert_refused("Dana doesn't need the bowl, Omar would", LAB)
+    assert_refused("Dana doesn't need the bowl, Omar should", LAB)
+    assert_means(
+        "drop both the notebook and the stapler in the box", "notebook@box & stapler@box", OFFICE
+    )
+    assert_means("Drop the red pen off with the intern", "pen_red>B", OFFICE)
+    two = load_scene(ROOT / "examples/scenes/two_arms.yaml")
+    assert_means(
+        "Alice the bottle and Bob the crisps, or the other way around",
+        either_way(["bottle>A", "chips>B"], ["chips>A", "bottle>B"]),
+        two,
+    )

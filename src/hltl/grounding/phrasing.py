@@ -3038,7 +3038,7 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             continue
         j = k + 1
         while j < len(items) and (
-            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",")
+            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",", "both")
         ):
             j += 1
         off = any(x.text.lower() == "off" for x in items[k + 1 : j])
@@ -3054,15 +3054,18 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             off
             and j + 1 < len(items)
             and _is(items[j], "with", "to", "for")
-            and _humans(items[j + 1])
-        ):  # "Drop the sponge off with Emma": a hand-over
+            and (
+                _humans(items[j + 1])
+                or (j + 2 < len(items) and _is(items[j + 1], "det") and _humans(items[j + 2]))
+            )
+        ):  # "Drop the sponge off with Emma", "… with the intern": a hand-over
             out[k] = Item("word", "verb:give", it.text)
             out[j] = Item("word", "to", items[j].text)
     return out
 
 
 # an auxiliary standing for the verb phrase said before it ("…, Bob does")
-_ELLIPTIC = frozenset({"does", "do", "will", "can", "would", "should"})
+_ELLIPTIC = frozenset({"does", "do", "will", "can"})  # not "would": "Omar would" is a guess
 
 
 def _elliptic_at(items: list[Item], k: int) -> bool:
