@@ -51,6 +51,9 @@ KNOWN_MISSES = frozenset(
         "Give Person B the thing nearest to Person B, and the other one to Person A",
         # blind6: a description per person ("the thing closest to them", 'them' each person)
         "Give each person the thing closest to them",
+        # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
+        # way round, and Carol the apple"): the swap is read only as the last words
+        "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

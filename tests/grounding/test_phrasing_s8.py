@@ -559,3 +559,49 @@ def test_a_change_of_mind_inside_a_sentence_of_several_tasks_is_refused() -> Non
     assert_means(
         "give Person A the chips — on second thought, give them to Person B", "chips>B", DUO
     )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Dana the bowl put the white cup on the tray, no wait, give it to Emma",
+        "give Omar the banana give Emma the bowl, sorry, the spoon",
+    ],
+)
+def test_a_correction_after_requests_run_together_is_refused(text: str) -> None:
+    """How far back the correction reaches across a run-on is unclear (a run-on fuzz read
+    'give it to Emma' as taking back both requests)."""
+    assert_refused(text, LAB, match="run together")
+
+
+def test_a_subordinate_clause_without_a_comma_is_no_run_on() -> None:
+    assert_means("as soon as the cup is on the shelf give carol the apple", "cup@shelf ; apple>C")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Can you hand the bottle to Alice put the bottle on the shelf, no, give it to Bob",
+        "Give Bob the chips and Alice the bottle afterwards give Alice the cup",
+        "Give Alice the cup first give Bob the chips",
+    ],
+)
+def test_an_order_or_a_no_across_requests_run_together_is_refused(text: str) -> None:
+    scene = load_scene(ROOT / "examples/scenes/two_arms.yaml") if "chips and" in text else CELL
+    assert_refused(text, scene)
+
+
+def test_what_causes8s_second_batch_showed() -> None:
+    # "would"/"should" after a person is a guess, not the verb phrase again
+    assert_refused("Dana doesn't need the bowl, Omar would", LAB)
+    assert_refused("Dana doesn't need the bowl, Omar should", LAB)
+    assert_means(
+        "drop both the notebook and the stapler in the box", "notebook@box & stapler@box", OFFICE
+    )
+    assert_means("Drop the red pen off with the intern", "pen_red>B", OFFICE)
+    two = load_scene(ROOT / "examples/scenes/two_arms.yaml")
+    assert_means(
+        "Alice the bottle and Bob the crisps, or the other way around",
+        either_way(["bottle>A", "chips>B"], ["chips>A", "bottle>B"]),
+        two,
+    )

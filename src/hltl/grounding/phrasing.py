@@ -2628,10 +2628,33 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if splits and plain and _is_verb_item(sent[0]):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        elif splits and _run_on_unclear(sent):
+            # "Give Dana the bowl put the cup on the tray, no wait, give it to Emma": how far
+            # back a correction or an order reaches across requests run together is unclear
+            # (session 8: a run-on fuzz read such corrections as taking back both)
+            k = splits[0]
+            raise GroundingError(
+                f"{_words_of(sent[max(0, k - 2) : k + 2])!r}: two requests run together; "
+                "join them with 'and' or a full stop"
+            )
         out.extend(sent)
         if end < len(items):
             out.append(items[end])
     return out
+
+
+def _run_on_unclear(sent: list[Item]) -> bool:
+    """Whether requests run together in ``sent`` meet a correction or an ordering word, which
+    could reach one request or both; a sentence opened by a subordinate clause ('as soon as
+    the cup is on the shelf give Carol the apple') is no run-on."""
+    n = 0
+    while n < len(sent) and _is(sent[n], "filler", ","):
+        n += 1
+    if n < len(sent) and _is(sent[n], "after", "before", "once", "prior"):
+        return False
+    return any(
+        _is(x, "correct", *_ORDERING) or (_is(x, "not") and x.text.lower() == "no") for x in sent
+    )
 
 
 # words that make a run-on unclear: joining, ordering, choosing, correcting, negating
@@ -3015,7 +3038,7 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             continue
         j = k + 1
         while j < len(items) and (
-            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",")
+            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",", "both")
         ):
             j += 1
         off = any(x.text.lower() == "off" for x in items[k + 1 : j])
@@ -3031,15 +3054,18 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             off
             and j + 1 < len(items)
             and _is(items[j], "with", "to", "for")
-            and _humans(items[j + 1])
-        ):  # "Drop the sponge off with Emma": a hand-over
+            and (
+                _humans(items[j + 1])
+                or (j + 2 < len(items) and _is(items[j + 1], "det") and _humans(items[j + 2]))
+            )
+        ):  # "Drop the sponge off with Emma", "… with the intern": a hand-over
             out[k] = Item("word", "verb:give", it.text)
             out[j] = Item("word", "to", items[j].text)
     return out
 
 
 # an auxiliary standing for the verb phrase said before it ("…, Bob does")
-_ELLIPTIC = frozenset({"does", "do", "will", "can", "would", "should"})
+_ELLIPTIC = frozenset({"does", "do", "will", "can"})  # not "would": "Omar would" is a guess
 
 
 def _elliptic_at(items: list[Item], k: int) -> bool:
