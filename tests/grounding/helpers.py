@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction, spec_of
@@ -21,6 +23,28 @@ def assert_means(text: str, want: str, scene: Scene = CELL) -> None:
     assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
         f"{text!r} -> {show_tree(got)}, want {want}"
     )
+
+
+def assert_reads(text: str, want: str, scene: Scene = CELL) -> None:
+    """As assert_means, with the same tree taken as equal without the language check."""
+    got = parse_instruction(text, scene)
+    if show_tree(got) != show_tree(parse_expectation(want)):
+        assert_means(text, want, scene)
+
+
+def assert_refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
+    """``text`` is refused (with a message matching ``match``)."""
+    with pytest.raises(GroundingError, match=match):
+        parse_instruction(text, scene)
+
+
+def assert_same_or_refused(text: str, want: str, scene: Scene = CELL) -> None:
+    """``text`` is read as ``want`` or refused: never as something else."""
+    got = tree(text, scene)
+    if got is not None and show_tree(got) != show_tree(parse_expectation(want)):
+        assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
+            f"{text!r} -> {show_tree(got)}, want {want} or a refusal"
+        )
 
 
 def tree(text: str, scene: Scene = CELL) -> Node | None:

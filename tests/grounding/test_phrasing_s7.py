@@ -9,39 +9,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hltl.bench.grounding import parse_expectation, show_tree
-from hltl.errors import GroundingError
 from hltl.grounding.lexicon import DROPPED_FILLERS
-from hltl.grounding.offline import parse_instruction, spec_of
-from hltl.spec.equivalence import counterexample
-from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT
-from tests.grounding.helpers import assert_means as _assert_means
-from tests.grounding.helpers import tree as _tree
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import CELL, ROOT, assert_refused, assert_same_or_refused
+from tests.grounding.helpers import assert_reads as assert_means
 
 F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")
 ONE4 = load_scene(ROOT / "examples/scenes/1-4-square.yaml")
-
-
-def assert_means(text: str, want: str, scene: Scene = CELL) -> None:
-    """As helpers.assert_means, with the same tree taken as equal without the language check."""
-    got = parse_instruction(text, scene)
-    if show_tree(got) != show_tree(parse_expectation(want)):
-        _assert_means(text, want, scene)
-
-
-def assert_refused(text: str, scene: Scene = CELL, match: str | None = None) -> None:
-    with pytest.raises(GroundingError, match=match):
-        parse_instruction(text, scene)
-
-
-def assert_same_or_refused(text: str, want: str, scene: Scene = CELL) -> None:
-    """``text`` is read as ``want`` or refused: never as something else."""
-    got = _tree(text, scene)
-    if got is not None and show_tree(got) != show_tree(parse_expectation(want)):
-        assert counterexample(spec_of(got), spec_of(parse_expectation(want))) is None, (
-            f"{text!r} -> {show_tree(got)}, want {want} or a refusal"
-        )
 
 
 # sentences the grammar reads, with what they mean (the cell scene)

@@ -23,7 +23,7 @@ from .brute_force import (
     apply_step,
     step_sets,
 )
-from .model import REST, Location
+from .model import REST, Location, surface_point
 
 HANDOVER_HEIGHT = 0.3
 DEFAULT_SPEED = 0.5
@@ -63,10 +63,10 @@ def hand_targets(
     if a.skill == "pick":
         index = [o.id for o in scene.objects].index(a.object)
         kind, where = locs[index]
-        point = scene.object(a.object).position if kind == "rest" else scene.surface(where).center
+        point = scene.object(a.object).position if kind == "rest" else surface_point(scene, where)
         return ((a.robots[0], point),)
     if a.skill == "place":
-        return ((a.robots[0], scene.surface(a.target).center),)
+        return ((a.robots[0], surface_point(scene, a.target)),)
     if a.skill == "handover_r2r":
         p = rendezvous(scene.robot(a.robots[0]), scene.robot(a.robots[1]))
         return ((a.robots[0], p), (a.robots[1], p))

@@ -32,6 +32,7 @@ from .model import (
     point_of,
     reaches,
     state_atoms,
+    surface_point,
 )
 
 
@@ -93,7 +94,7 @@ def applicable(scene: Scene, locs: Sequence[Location]) -> list[Instance]:
         out += [
             Instance("place", (holder.id,), obj.id, s.id)
             for s in scene.surfaces
-            if reaches(holder, s.center)
+            if reaches(holder, surface_point(scene, s.id))
         ]
         out += [
             Instance("handover_r2r", (holder.id, r.id), obj.id)

@@ -45,7 +45,16 @@ from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 from hltl.world.scene import Scene
 
 from .brute_force import Instance, fixed_durations
-from .model import REST, Hierarchy, Location, can_hand_over, hierarchy, human_inside, reaches
+from .model import (
+    REST,
+    Hierarchy,
+    Location,
+    can_hand_over,
+    hierarchy,
+    human_inside,
+    reaches,
+    surface_point,
+)
 
 SCALE = 1000  # durations in integer milliseconds
 
@@ -175,14 +184,14 @@ def _ground(scene: Scene) -> list[tuple[Instance, Location, Location]]:
     out: list[tuple[Instance, Location, Location]] = []
     for o in scene.objects:
         sources: list[tuple[Location, tuple[float, float, float]]] = [(REST, o.position)]
-        sources += [(("on", s.id), s.center) for s in scene.surfaces]
+        sources += [(("on", s.id), surface_point(scene, s.id)) for s in scene.surfaces]
         for r in scene.robots:
             held: Location = ("held", r.id)
             for loc, point in sources:
                 if reaches(r, point):
                     out.append((Instance("pick", (r.id,), o.id), loc, held))
             for s in scene.surfaces:
-                if reaches(r, s.center):
+                if reaches(r, surface_point(scene, s.id)):
                     out.append((Instance("place", (r.id,), o.id, s.id), held, ("on", s.id)))
             for r2 in scene.robots:
                 if can_hand_over(scene, r, r2):

@@ -58,13 +58,23 @@ def can_hand_over(scene: Scene, giver: Robot, receiver: Robot) -> bool:
     return can_meet(giver, receiver) and not rendezvous_blocked(scene, giver, receiver)
 
 
+# docs/model.md: an object on a surface has its point this high above the surface's centre
+SURFACE_LIFT = 0.05
+
+
+def surface_point(scene: Scene, sid: str) -> tuple[float, float, float]:
+    """Where a hand places an object on surface ``sid`` or picks one from it."""
+    x, y, z = scene.surface(sid).center
+    return (x, y, z + SURFACE_LIFT)
+
+
 def point_of(scene: Scene, oid: str, loc: Location) -> tuple[float, float, float] | None:
     """The point a robot must reach to pick ``oid`` at ``loc``; None when it cannot be picked."""
     kind, where = loc
     if kind == "rest":
         return scene.object(oid).position
     if kind == "on":
-        return scene.surface(where).center
+        return surface_point(scene, where)
     return None
 
 

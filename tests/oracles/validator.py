@@ -27,6 +27,7 @@ from .model import (
     reaches,
     rendezvous_blocked,
     state_atoms,
+    surface_point,
 )
 
 TOL = 1e-6
@@ -219,7 +220,7 @@ def _precondition_errors(
         r, s = scene.robot(robots[0]), scene.surface(a["surface"])
         if loc != ("held", r.id):
             errors.append(f"{r.id} does not hold {oid} (it is {_where(loc)})")
-        if not reaches(r, s.center):
+        if not reaches(r, surface_point(scene, s.id)):
             errors.append(f"surface {s.id} is out of {r.id}'s reach")
     elif skill == "handover_r2r":
         g, r = scene.robot(robots[0]), scene.robot(robots[1])

@@ -27,7 +27,8 @@ DETOUR = {
         {"id": "x", "category": "box", "position": [0.5, 0.0, 0.3]},
     ],
     "humans": [{"id": "A", "name": "Person A", "position": [1.8, 0.0, 0.0]}],
-    "surfaces": [{"id": "s", "center": [0.5, 0.0, 0.3], "size": [0.3, 0.3]}],
+    # x stands on s: an object on it has its point 0.05 m above the top (docs/model.md)
+    "surfaces": [{"id": "s", "center": [0.5, 0.0, 0.25], "size": [0.3, 0.3]}],
 }
 DETOUR_SPEC = {"root": "p0", "formulas": {"p0": "F p100", "p100": "F delivered(o1, A)"}}
 

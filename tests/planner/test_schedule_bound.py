@@ -10,14 +10,18 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
-from hltl.planner import schedule
+from hltl.planner import PlanResult, PlanStatus, SearchStats, plan, schedule
+from hltl.planner.anytime import replay
 from hltl.planner.problem import Problem, to_seconds, to_ticks
-from hltl.planner.search import _Search
+from hltl.planner.search import _Search, plan_steps
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
+from tests.oracles.cpsat import cpsat_makespan
 from tests.oracles.random_instances import random_instance
+from tests.oracles.validator import check_plan
 
 pytest.importorskip("ortools")
 
@@ -26,17 +30,17 @@ DEADLINE_S = 60.0
 
 
 def _bound_and_optimum(
-    seed: int, robots: int = 3, objects: int = 3
+    seed: int, robots: int = 3, objects: int = 3, *, steps: bool = False
 ) -> tuple[int, float, float | None] | None:
     """(bound in ticks, start heuristic in ticks, oracle optimum in s); None when the instance
-    is outside the bound's class or has no event goal."""
+    is outside the bound's class or has no event goal. ``steps``: the step-indexed bound."""
     scene_d, spec_d = random_instance(seed, max_robots=robots, max_objects=objects)
     try:
         scene, spec = scene_from_dict(scene_d), spec_from_dict(spec_d)
     except HltlError:
         return None  # the generator's rare spec with an unreachable formula
     problem = Problem(scene, spec)
-    if not schedule.applicable(problem):
+    if not (schedule.steps_applicable(problem) if steps else schedule.applicable(problem)):
         return None
     s = _Search(problem)
     node = problem.start()
@@ -54,6 +58,7 @@ def _bound_and_optimum(
         floor=0,
         upper=None,
         deadline=time.perf_counter() + DEADLINE_S,
+        steps=steps,
     )
     return res.ticks, h0, optimal_makespan(scene, spec)
 
@@ -69,9 +74,10 @@ def test_bound_never_exceeds_the_optimum(seed: int) -> None:
     assert ticks <= to_ticks(optimum)
 
 
+@pytest.mark.parametrize("steps", [False, True])
 @pytest.mark.parametrize("seed", range(1000, 1040))
-def test_bound_never_exceeds_the_optimum_with_four_robots(seed: int) -> None:
-    got = _bound_and_optimum(seed, robots=4, objects=4)
+def test_bound_never_exceeds_the_optimum_with_four_robots(seed: int, steps: bool) -> None:
+    got = _bound_and_optimum(seed, robots=4, objects=4, steps=steps)
     if got is None:
         return
     ticks, _, optimum = got
@@ -81,9 +87,10 @@ def test_bound_never_exceeds_the_optimum_with_four_robots(seed: int) -> None:
 
 # instances where the start heuristic is far below the optimum (e.g. 1.1 s against 2.2 s: one
 # robot must carry two objects one after the other) and the relaxed schedule sees it
+@pytest.mark.parametrize("steps", [False, True])
 @pytest.mark.parametrize("seed", [28, 71, 105, 259, 291])
-def test_bound_is_tight_where_the_heuristic_is_not(seed: int) -> None:
-    got = _bound_and_optimum(seed)
+def test_bound_is_tight_where_the_heuristic_is_not(seed: int, steps: bool) -> None:
+    got = _bound_and_optimum(seed, steps=steps)
     assert got is not None
     ticks, h0, optimum = got
     assert optimum is not None
@@ -97,3 +104,94 @@ def test_cells_with_other_skills_are_outside_the_class() -> None:
     del scene_d["durations"]
     problem = Problem(scene_from_dict(scene_d), spec_from_dict(spec_d))
     assert not schedule.applicable(problem)
+
+
+# -- the step-indexed bound (docs/planner.md, "Step bound") --------------------------------------
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 10**6))
+def test_step_bound_never_exceeds_the_optimum(seed: int) -> None:
+    got = _bound_and_optimum(seed, steps=True)
+    if got is None:
+        return
+    ticks, _, optimum = got
+    assert optimum is not None
+    assert ticks <= to_ticks(optimum)
+
+
+def _cell_bounds(layout: str, n: int, seed: int) -> tuple[Problem, int, int, int]:
+    """(problem, unit, interval bound, step bound) at the start of a delivery cell."""
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    node = problem.start()
+    tgts = schedule.targets(problem, s.heuristic.graph, node, s.heuristic.required_atoms(node[2]))
+    deadline = time.perf_counter() + DEADLINE_S
+    h0 = round(s.heuristic(node))
+    by = [
+        schedule.schedule_bound(
+            problem,
+            s.heuristic.graph,
+            node,
+            tgts,
+            floor=h0,
+            upper=None,
+            deadline=deadline,
+            steps=steps,
+        )
+        for steps in (False, True)
+    ]
+    assert all(b.solved for b in by)  # else the machine is too slow for DEADLINE_S
+    return problem, schedule.time_unit(problem), by[0].ticks, by[1].ticks
+
+
+def test_step_bound_sees_that_a_step_lasts_its_longest_instance() -> None:
+    # a 4-robot grid cell whose optimum (3.3 s, by the independent CP-SAT oracle) needs a 0.5 s
+    # action to share a step with a 0.6 s handover: intervals of their own durations give 3.2 s
+    c = delivery_cell("grid", 4, 1)
+    optimum = cpsat_makespan(c.scene, c.spec, time_limit=DEADLINE_S)
+    assert optimum is not None
+    _, _, by_intervals, by_steps = _cell_bounds("grid", 4, 1)
+    assert by_intervals < to_ticks(optimum)
+    assert by_steps == to_ticks(optimum)
+
+
+@pytest.mark.parametrize(("layout", "n", "seed"), [("grid", 4, 1), ("grid", 5, 0), ("grid", 3, 0)])
+def test_relaxed_steps_at_the_bound_are_an_optimal_plan(layout: str, n: int, seed: int) -> None:
+    # where the relaxation is tight its schedule (sessions whole) is a plan: the independent
+    # validator accepts it, and its makespan is the bound, so it is optimal
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    node = problem.start()
+    graph = s.heuristic.graph
+    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    bound = schedule.schedule_bound(
+        problem,
+        graph,
+        node,
+        tgts,
+        floor=round(s.heuristic(node)),
+        upper=None,
+        deadline=time.perf_counter() + DEADLINE_S,
+        steps=True,
+    )
+    level = bound.ticks // schedule.time_unit(problem)
+    got = schedule.relaxed_steps(
+        problem, graph, node, tgts, level, time.perf_counter() + DEADLINE_S, whole=True
+    )
+    assert isinstance(got, tuple)
+    found = replay(s, node, got)
+    assert found is not None
+    assert found[0] == bound.ticks
+    result = PlanResult(
+        PlanStatus.SOLVED,
+        plan_steps(problem, found[1]),
+        to_seconds(found[0]),
+        SearchStats(0, 0, 0.0, "astar"),
+        "",
+        to_seconds(bound.ticks),
+    )
+    check_plan(c.scene, c.spec, result.to_dict())
+    assert result.makespan == pytest.approx(plan(c.scene, c.spec, timeout=DEADLINE_S).makespan)

@@ -988,8 +988,6 @@ def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | N
         k += 1
     if k >= len(items) or not _is(items[k], "either"):
         return None
-    if not any(_is(it, *_ORDER) for it in items[k + 1 :]):
-        return None
     ors = []
     for n in range(k + 1, len(items)):
         if _is(items[n], "or"):
@@ -998,6 +996,15 @@ def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | N
                 j += 1
             if j < len(items) and _is_verb(items[j]):
                 ors.append(n)
+            elif j + 1 < len(items) and _is_person(items[j]) and _is_verb(items[j + 1]):
+                ors.append(n)  # "…, or Person A gets the cup and …"
+            elif (
+                j + 1 < len(items)
+                and _is_person(items[j])
+                and (_is(items[j + 1], "det") or items[j + 1].kind == "ent")
+                and not any(_is_verb(x) for x in items[k + 1 : n])
+            ):
+                ors.append(n)  # notes without verbs: "either Alice the cup and …, or Alice …"
     if len(ors) != 1:
         return None
     at = ors[0]
@@ -1006,10 +1013,18 @@ def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | N
             f"in {_text(items)!r} the steps after 'or' could belong to the last alternative or "
             "come after either: say it in two sentences ('Either … or …. Then …')"
         )
+    # a sequence before the 'or', or clauses joined by 'and' ("Either give A the chips and B
+    # the cup, or give …"): the 'either' and the 'or' opening a clause bound the alternatives
+    if not any(_is(it, *_ORDER, "and") for it in items[k + 1 : at]):
+        return None
     left = items[k + 1 : at]
     while left and _is(left[-1], ","):
         left.pop()
     return left, items[at + 1 :]
+
+
+def _is_person(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "human" for r in item.refs)
 
 
 def _one_condition(conn: str, seg: list[Item], items: list[Item]) -> None:
@@ -1378,7 +1393,17 @@ def _main_clause_start(items: list[Item]) -> int | None:
                 j += 1
             if j < len(items) and _is_verb(items[j]):
                 return k
-            if j + 1 < len(items) and items[j].kind == "ent" and _is_verb(items[j + 1]):
+            if j + 1 < len(items) and _is(items[j], "det") and _is_person(items[j + 1]):
+                j += 1  # "…, the doctor should get the banana": a person by role
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if (
+                j + 1 < len(items)
+                and items[j].kind == "ent"
+                and n < len(items)
+                and _is_verb(items[n])
+            ):
                 return k
     if len(commas) == 1:
         return commas[0]

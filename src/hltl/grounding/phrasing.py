@@ -190,13 +190,22 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     items = items[:cut] + items[end:]
                     k = cut
                 continue
+        if (
+            (k == 0 or (items[k - 1].kind == "punct" and items[k - 1].lemma in _END))
+            and _is(items[k], "det")
+            and k + 1 < len(items)
+            and _humans(items[k + 1])
+            and _opens_remark(items, k + 1)
+        ):
+            items = items[:k] + items[k + 1 :]  # "The doctor's running late, …": the person
+            continue
         if (at_start or after_comma) and _opens_remark(items, k):
             end = _clause_stop(items, k, at_start)
             rest = items[end:]
             if _remark_words(items[k:end], lexicon, _people(items[:k] + rest), reason=False):
                 leads = at_start and end < len(items) and items[end].kind == "punct"
                 if leads and any(x.kind == "ent" for x in rest[1:]):
-                    items = items[:k] + rest[1:]
+                    items = items[:k] + _addressed(items[k:end], rest[1:]) + rest[1:]
                     continue
                 ends = end == len(items) or items[end].lemma in _END
                 if after_comma and ends:
@@ -216,6 +225,36 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 continue
         k += 1
     return items
+
+
+def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
+    """'Person A is thirsty - bottle please': a remark about one person before objects alone
+    (no verb, person, surface or pronoun before the end of the sentence or the next part with
+    its own person: '…, and Bob the chips') names who gets them, as 'Person A: bottle'. Before
+    a request with a verb or a person it only goes; before anything else ('the bottle on the
+    shelf': Bob's, or a placement?) it is refused."""
+    people = [x for x in remark if _humans(x)]
+    stop = next((n for n, x in enumerate(rest) if x.kind == "punct" and x.lemma in _END), None)
+    sent = rest[:stop]
+    head = sent
+    for n, x in enumerate(sent):
+        if n and _humans(x) and _is(sent[n - 1], ",", "and"):
+            head = sent[: n - 1]
+            break
+    bare = all(_objects(x) or _is(x, "det", "and", "or", ",", "filler") for x in head)
+    if bare and any(_objects(x) for x in head):
+        if len(people) != 1:
+            raise GroundingError(
+                f"who gets {_words_of(head)!r}? the remark before it names "
+                f"{len(people)} people: say 'give <person> …'"
+            )
+        return [people[0], Item("punct", ",", ",")]
+    if not any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
+        raise GroundingError(
+            f"after a remark about {', '.join(x.text for x in people) or 'someone'}, "
+            f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
+        )
+    return []
 
 
 def _reason_length(items: list[Item], k: int) -> int:
@@ -246,7 +285,7 @@ def _clause_stop(items: list[Item], k: int, to_comma: bool) -> int:
     n = k
     while n < len(items) and not (
         items[n].kind == "punct"
-        and (items[n].lemma in _END or (to_comma and items[n].lemma == ","))
+        and (items[n].lemma in _END or (to_comma and items[n].lemma in (",", "-")))
     ):
         n += 1
     return n
@@ -348,6 +387,8 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             if _hides_name(x, lexicon):
                 return False
             continue
+        if _progressive(words, n):
+            continue  # "Emma's leaving soon": a verb with nothing to move
         after = next((y for y in words[n + 1 :] if not _is(y, "det")), None)
         if x.lemma in _HAS and (
             reason
@@ -366,13 +407,28 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
         wants = any(x.lemma in _HAS and not _something(words, n + 1) for n, x in enumerate(words))
         if wants or any(_is(x, "it", "them") for x in words):
             return False
-    return reason or any(x.kind == "unknown" for x in words)
+    return reason or any(x.kind == "unknown" or _progressive(words, n) for n, x in enumerate(words))
+
+
+def _progressive(words: list[Item], n: int) -> bool:
+    """Whether words[n] is a verb in -ing right after 'is'/''s' in words that name no object,
+    surface, 'it' or 'them' ('Emma's leaving soon'): it moves nothing."""
+    x = words[n]
+    return (
+        _is_verb_item(x)
+        and x.text.lower().endswith("ing")
+        and n > 0
+        and words[n - 1].text.lower() in _BE
+        and not any(y.kind == "ent" and not _humans(y) for y in words)
+        and not any(_is(y, "it", "them") or y.lemma == "pronoun" for y in words)
+    )
 
 
 def _speaker_opens(head: list[Item]) -> bool:
-    """An apology or the speaker about themselves: 'Sorry …', 'Excuse me …', 'I know …'."""
+    """An apology or the speaker about themselves: 'Sorry …', 'Excuse me …', 'I know …'; or
+    who is to do it: 'Whoever is free, …' (the robots are never named)."""
     first = head[0].text.lower()
-    return first in ("sorry", "excuse", "i", "we", "apologies", "pardon")
+    return first in ("sorry", "excuse", "i", "we", "apologies", "pardon", "whoever")
 
 
 def _hides_name(item: Item, lexicon: Lexicon) -> bool:
@@ -421,8 +477,13 @@ def _preambles(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 for x in head
             )
             rest = sent[comma + 1 :]
+            # "Whoever is closest, …": about which robot does it; no name, verb or keyword
+            # that negates, conditions, orders or chooses
+            who = head[0].text.lower() == "whoever" and all(
+                x.kind == "unknown" or _is(x, *_REMARK_WORDS, "nearest", "near") for x in head[1:]
+            )
             if (
-                plain
+                (plain or who)
                 and any(x.kind == "unknown" for x in head)
                 and not any(_hides_name(x, lexicon) for x in head)
                 and _speaker_opens(head)
@@ -479,6 +540,16 @@ def _whichever(items: list[Item]) -> list[Item]:
                 continue
             skipping, start = True, k
             continue
+        narrows = _is(it, "nearest", "near", "farthest", "not", "from") or (
+            it.lemma == "pronoun" and it.text.lower() in _PERSON_PRONOUNS
+        )
+        if skipping and (narrows or it.kind == "ent"):
+            # "…, whichever is further ok from her": a choice the clause narrows, which was
+            # not read; dropping it would widen the choice
+            raise GroundingError(
+                f"cannot read {_words_of(items[start : k + 2])!r}: say which one, e.g. 'the mug "
+                "nearest to Carol'"
+            )
         if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
             # "…, whichever give Bob the mugs": a request run on after the remark
             raise GroundingError(
@@ -544,7 +615,7 @@ def _relative(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> i
     if items[j].text.lower() not in _BE:
         return k
     j += 1
-    if _is(items[j], "near", "nearest"):
+    if _is(items[j], "near", "nearest", "farthest"):
         return j  # "the mug that's nearest to Carol": a place, read by _places
     negated = j < len(items) and _is(items[j], "not") and items[j].text.lower() in ("n't", "not")
     if negated:
@@ -590,7 +661,7 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
         return _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
-    if k >= len(items) or not _is(items[k], "near", "nearest"):
+    if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
     j = k + 1
     while j < len(items) and _is(items[j], "det"):
@@ -606,12 +677,17 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     if not ids:
         raise GroundingError(f"{it.text!r} {items[k].text} itself names nothing else")
     if len(ids) > 1:
-        dist = sorted((math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids)
+        far = _is(items[k], "farthest")
+        dist = sorted(
+            ((math.dist(_position("object", i, lexicon)[:2], where[:2]), i) for i in ids),
+            reverse=far,
+        )
         (d1, best), (d2, second) = dist[0], dist[1]
-        if d1 >= _CLEARLY_NEARER * d2:
+        # the nearest within 3/4 of the next one's distance; the farthest as clearly farther
+        if (d2 >= _CLEARLY_NEARER * d1) if far else (d1 >= _CLEARLY_NEARER * d2):
             raise GroundingError(
                 f"'{it.text} {items[k].text} {items[j].text}': {best} and {second} are about "
-                "as near; name the object"
+                f"as {'far' if far else 'near'}; name the object"
             )
         ids = [best]
     refs = tuple(r for r in it.refs if r.id in ids)
@@ -811,7 +887,17 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.append(Item("ent", words.lower(), words, refs, quant="some", group=k))
             k += 2
             continue
+        some = _some_of(items, k, lexicon)
+        if some is not None:  # "two of the pens": any two of them
+            out.extend(some)
+            k += 4
+            continue
         alone = _counted_alone(items, k)
+        if alone and _picked_both(out, alone[1]):
+            # "Pick up the cup and the apple and put both on the table": what was picked up
+            out.append(Item("word", "them", _words_of(items[k : k + alone[0]])))
+            k += alone[0]
+            continue
         if alone:  # "give Alice both", "Person B gets all four": that many objects
             n, count = alone
             said = items[k : k + n]
@@ -821,25 +907,31 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             k += n
             continue
         if _is(it, "other"):
+            another = it.text.lower() == "another"
             prev = next((x for x in reversed(out) if x.quant == "some"), None)
             if prev is None:
                 prev = _choice_of_two(out, k)  # "A the cup or the bottle and B the other"
             if prev is None:
-                other = _other_than(out, lexicon)  # "Carol the red mug and Bob the other one"
+                # "Carol the red mug and Bob the other one"; "… the pen and Sam another"
+                other = _other_than(out, lexicon, some=another)
                 if other is not None:
-                    out.append(replace(other, text=f"the other ({other.text})"))
-                    k += 1
+                    out.append(replace(other, text=f"{it.text} ({other.text})"))
+                    k += 1 + _same_noun(items, k, other)
                     continue
                 raise GroundingError(
                     f"{it.text!r} needs a choice before it, as in 'one of the mugs … the other'"
                 )
-            if len({r.id for r in prev.refs}) != 2:
+            taken = len(
+                {n for n, x in enumerate(out) if x.quant == "some" and x.group == prev.group}
+            )
+            if len({r.id for r in prev.refs}) != taken + 1 and not another:
                 raise GroundingError(
                     f"'the other' after {prev.text!r} is ambiguous: there are "
                     f"{len({r.id for r in prev.refs})} to choose from; name the object"
                 )
-            out.append(replace(prev, text="the other"))
-            k += 1
+            # "a mug … the other mug", "one pen … another": a different one of the same choice
+            out.append(replace(prev, text=it.text))
+            k += 1 + _same_noun(items, k, prev)
             continue
         if (
             it.kind == "word"
@@ -879,12 +971,23 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 out.append(Item("ent", "one", it.text, refs, quant="some", group=k))
                 k += 1
                 continue
+            elif _one_then_other(items, k, lexicon):
+                # "Give Alice one and Bob the other" in a scene of two objects
+                refs = tuple(Ref("object", o.id) for o in lexicon.scene.objects)
+                out.append(Item("ent", "one", it.text, refs, quant="some", group=k))
+                k += 1
+                continue
             elif quant == "num" or (quant == "some" and it.text.lower() in ("one", "any")):
                 out.append(Item("unknown", it.text.lower(), it.text))
                 k += 1
                 continue
         if it.kind == "word" and it.text.lower() in ("each", "apiece"):
             k += 1  # "a mug each", "would each like": distribution is how shared mentions work
+            continue
+        if _something_given(items, k):  # "Give both people something": any object each
+            refs = tuple(Ref("object", o.id) for o in lexicon.scene.objects)
+            out.append(Item("ent", "something", it.text, refs, quant="some", group=k))
+            k += 1
             continue
         either = _either_one(items, k, out, lexicon)
         if either is not None:  # "Person A wants either one"
@@ -903,7 +1006,7 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
 
 # what may follow 'both' or 'all four' used alone, as the objects of a clause
 _AFTER_ALONE = frozenset(
-    {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to"}
+    {",", ".", ";", "!", "?", ":", "-", "and", "or", "then", "filler", "once", "after", "to", "on"}
 )
 
 
@@ -919,6 +1022,88 @@ def _one_of_the_count(items: list[Item], k: int) -> int | None:
     if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
         return None
     return count
+
+
+def _some_of(items: list[Item], k: int, lexicon: Lexicon) -> list[Item] | None:
+    """'two of the pens' (a number, 'of the', a name of more objects than that) at ``k``: that
+    many different ones of them, as 'a pen and a pen' in one group; None if not that form. As
+    many as there are is all of them ('two of the mugs' with two mugs); more is refused."""
+    kind, count = _quant_word(items[k])
+    if kind != "num" or count < 2 or k + 3 >= len(items):
+        return None
+    of, the, noun = items[k + 1], items[k + 2], items[k + 3]
+    if not (
+        of.kind == "unknown"
+        and of.lemma == "of"
+        and _is(the, "det")
+        and the.text.lower() in ("the", "those", "these", "my", "our", "your")
+        and _objects(noun)
+    ):
+        return None
+    words = _words_of(items[k : k + 4])
+    ids = list(dict.fromkeys(r.id for r in noun.refs))
+    if count >= len(ids):
+        return [_quantify(noun, "num", count, words, lexicon, k)]
+    one = replace(noun, text=words, quant="some", group=k)
+    out = [one]
+    for _ in range(count - 1):
+        out += [Item("word", "and", "and"), one]
+    return out
+
+
+def _something_given(items: list[Item], k: int) -> bool:
+    """Whether 'something' at ``k`` is what a give/bring verb hands the people right before it
+    ('Give both people something'), ending its clause: any one object of the scene each.
+    Elsewhere ('she wants something to drink') it stays a word the grammar does not read."""
+    it = items[k]
+    if not (it.kind == "unknown" and it.lemma == "something"):
+        return False
+
+    def people(x: Item) -> bool:
+        return _humans(x) or _is(x, "q:everyone") or x.lemma.startswith("q:people:")
+
+    n = k - 1
+    while n >= 0 and (people(items[n]) or _is(items[n], "and", ",")):
+        n -= 1
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    return (
+        n < k - 1
+        and people(items[k - 1])
+        and n >= 0
+        and items[n].lemma in _COMMANDS
+        and (nxt is None or nxt.kind == "punct" or _is(nxt, "and", "filler"))
+    )
+
+
+def _one_then_other(items: list[Item], k: int, lexicon: Lexicon) -> bool:
+    """Whether 'one' at ``k``, with no name after it, is answered by 'the other' later in its
+    sentence in a scene of exactly two objects: one of them, and the other one."""
+    if items[k].text.lower() != "one" or len(lexicon.scene.objects) != 2:
+        return False
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    if nxt is not None and (_objects(nxt) or _is(nxt, "det")):
+        return False
+    for x in items[k + 1 :]:
+        if x.kind == "punct" and x.lemma in _END:
+            return False
+        if _is(x, "other"):
+            return True
+    return False
+
+
+def _picked_both(out: list[Item], count: int) -> bool:
+    """Whether every object named so far (``count`` of them, one mention each) is what a
+    'pick up' opening the instruction picked up, and a later verb follows it: 'both' is then
+    'them', the objects of that clause."""
+    verbs = [n for n, x in enumerate(out) if _is_verb_item(x)]
+    named = [n for n, x in enumerate(out) if _objects(x)]
+    return (
+        len(verbs) == 2
+        and out[verbs[0]].lemma == "verb:pick"
+        and len(named) == count
+        and all(verbs[0] < n < verbs[1] for n in named)
+        and all(len({r.id for r in out[n].refs}) == 1 and not out[n].quant for n in named)
+    )
 
 
 def _counted_alone(items: list[Item], k: int) -> tuple[int, int] | None:
@@ -1143,6 +1328,19 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
             continue
+        changed = any(x.text.lower() in CHANGES_OF_MIND for x in items[k:j])
+        if (
+            changed
+            and not whole
+            and sum(x.kind == "ent" for x in before[_sentences(before)[-1][0] :]) > 2
+        ):
+            # "give A the bottle and B the chips — on second thought, give them to B": a change of
+            # mind inside a sentence of several tasks, about one of them or all? (as across a
+            # full stop)
+            raise GroundingError(
+                f"{it.text!r} could change the whole sentence before it or only a part of it: "
+                "say the whole request again"
+            )
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
@@ -1721,6 +1919,10 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             ):
                 continue  # "give Alice her cup": a possessive after the person
             candidates = [p for p in seen if p not in _waiting(out, items, k)]
+            own = _own_person(out)
+            if own is not None:
+                # "… and Carol the mug nearest to her": the one person of that part
+                candidates = [own]
             if len(candidates) == 1:
                 out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
@@ -1757,6 +1959,30 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _own_person(out: list[Item]) -> str | None:
+    """The person a pronoun after 'nearest to' / 'farthest from' is measured from when its part
+    (back to a comma, 'and', 'then' or the sentence start) names exactly one person: 'Give
+    Alice the cup and Carol the mug nearest to her' is Carol's nearest mug. Else None."""
+    if not out or not _is(out[-1], "nearest", "near", "farthest"):
+        return None
+    people: set[str] = set()
+    n = len(out) - 2
+    while n >= 0:
+        if out[n].kind == "punct" or _is(out[n], "and", "then", "or"):
+            listed = (
+                0 < n < len(out) - 1
+                and _humans(out[n - 1])
+                and out[n - 1].lemma not in _PERSON_PRONOUNS  # "… nearest to her and Carol"
+                and _humans(out[n + 1])
+            )
+            if not listed:  # "Alice and Carol the mug nearest to her": a list of people
+                break
+        if _humans(out[n]):
+            people |= {r.id for r in out[n].refs}
+        n -= 1
+    return next(iter(people)) if len(people) == 1 else None
 
 
 def _waiting(out: list[Item], items: list[Item], k: int) -> set[str]:
@@ -2052,6 +2278,9 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         left = [o.id for o in lexicon.scene.objects if o.id not in named]
         if not named:
             raise GroundingError(f"{words!r}: left after what? nothing else is named")
+        if _is(items[k], "other") and count:
+            left, n = _other_kind(items, k, n, count, named, left, lexicon)
+            words = " ".join(x.text for x in items[k : k + n])
         if not left:
             raise GroundingError(f"{words!r}: nothing is left; {lexicon.listing('object')}")
         if count and count != len(left):
@@ -2060,6 +2289,45 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(Item("ent", words.lower(), words, refs, quant="all"))
         k += n
     return out
+
+
+def _other_kind(
+    items: list[Item],
+    k: int,
+    n: int,
+    count: int,
+    named: set[str],
+    left: list[str],
+    lexicon: Lexicon,
+) -> tuple[list[str], int]:
+    """'the other two (pens)': the objects not named of what is counted: of the name after it
+    when there is one ('pens'), else of the categories of the objects named before it ('Sam
+    gets the blue pen, Priya the other two': the two other pens) or of the whole scene, which
+    ever has that many left; refused when both have and they differ. Returns the objects and
+    how many words were read."""
+    noun = items[k + n] if k + n < len(items) and _objects(items[k + n]) else None
+    if noun is not None and noun.lemma not in ("things", "objects", "items"):
+        said = {r.id for x in items[:k] + items[k + n + 1 :] if _objects(x) for r in x.refs}
+        pool = [r.id for r in noun.refs if r.id not in said]
+        if len(dict.fromkeys(pool)) != count:
+            raise GroundingError(
+                f"{_words_of(items[k : k + n + 1])!r}: {len(set(pool))} left, not {count}"
+            )
+        return list(dict.fromkeys(pool)), n + 1
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    before = [r.id for x in items[:k] if _objects(x) for r in x.refs]
+    kinds = {cats[i] for i in before}
+    of_kind = [i for i, c in cats.items() if c in kinds and i not in named]
+    if len(kinds) != 1:
+        of_kind = left  # objects of several kinds named before: what is left of the scene
+    fits = [ids for ids in (of_kind, left) if len(ids) == count]
+    if not fits or (len(fits) == 2 and set(fits[0]) != set(fits[1])):
+        raise GroundingError(
+            f"{_words_of(items[k : k + n])!r}: {len(left)} left ({', '.join(left)})"
+            + (f", {len(of_kind)} of the same kind" if len(kinds) == 1 else "")
+            + f", not {count}"
+        )
+    return fits[0], n
 
 
 def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
@@ -2073,7 +2341,7 @@ def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
             _is(it, "whatever")
             and k + 2 < len(items)
             and items[k + 1].text.lower() in ("'s", "is")
-            and _is(items[k + 2], "near", "nearest")
+            and _is(items[k + 2], "near", "nearest", "farthest")
         ):
             out.append(Item("ent", "whatever", it.text, everything))
             k += 2
@@ -2083,24 +2351,48 @@ def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
     return out
 
 
-def _other_than(out: list[Item], lexicon: Lexicon) -> Item | None:
+def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Item | None:
     """'the other (one)' after one object named without a choice: the one other object of its
     category ('the red mug … the other one': the blue mug), or, when it is the only one of its
-    kind, the one other object of the scene; else None (refused as unclear)."""
+    kind, the one other object of the scene; else None (refused as unclear). Objects named
+    elsewhere are not it, except a name that was ambiguous ('the cup, the green one … no, the
+    other one': 'the cup' names no one cup). With ``some`` ('another'), any other one of its
+    category: a choice when several are left."""
     last = next((x for x in reversed(out) if _objects(x)), None)
     if last is None or last.quant or len({r.id for r in last.refs}) != 1:
         return None
-    named = {r.id for x in out if _objects(x) for r in x.refs}
+    named = {
+        r.id
+        for x in out
+        if _objects(x) and (x.quant == "all" or len({r.id for r in x.refs}) == 1)
+        for r in x.refs
+    }
     cats = {o.id: o.category for o in lexicon.scene.objects}
     one = last.refs[0].id
     kind = [i for i, c in cats.items() if c == cats[one] and i != one]
     if kind:
         left = [i for i in kind if i not in named]
     else:
-        left = [i for i in cats if i not in named] if len(cats) == 2 else []
+        left = [i for i in cats if i not in named] if len(cats) == 2 and not some else []
+    if some and len(left) > 1:
+        refs = tuple(Ref("object", i) for i in left)
+        return Item("ent", "another", "another", refs, quant="some", group=len(out))
     if len(left) != 1:
         return None
     return Item("ent", left[0], left[0], (Ref("object", left[0]),))
+
+
+def _same_noun(items: list[Item], k: int, other: Item) -> int:
+    """1 when 'other' at ``k`` is followed by a name of what it picks ('the other mug'), else 0."""
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    if nxt is not None and _objects(nxt):
+        if {r.id for r in other.refs} <= {r.id for r in nxt.refs}:
+            return 1
+        raise GroundingError(
+            f"'{items[k].text} {nxt.text}' does not name what '{items[k].text}' picks "
+            f"({', '.join(sorted({r.id for r in other.refs}))})"
+        )
+    return 0
 
 
 def _one_each(items: list[Item], k: int) -> bool:
@@ -2336,10 +2628,33 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if splits and plain and _is_verb_item(sent[0]):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        elif splits and _run_on_unclear(sent):
+            # "Give Dana the bowl put the cup on the tray, no wait, give it to Emma": how far
+            # back a correction or an order reaches across requests run together is unclear
+            # (session 8: a run-on fuzz read such corrections as taking back both)
+            k = splits[0]
+            raise GroundingError(
+                f"{_words_of(sent[max(0, k - 2) : k + 2])!r}: two requests run together; "
+                "join them with 'and' or a full stop"
+            )
         out.extend(sent)
         if end < len(items):
             out.append(items[end])
     return out
+
+
+def _run_on_unclear(sent: list[Item]) -> bool:
+    """Whether requests run together in ``sent`` meet a correction or an ordering word, which
+    could reach one request or both; a sentence opened by a subordinate clause ('as soon as
+    the cup is on the shelf give Carol the apple') is no run-on."""
+    n = 0
+    while n < len(sent) and _is(sent[n], "filler", ","):
+        n += 1
+    if n < len(sent) and _is(sent[n], "after", "before", "once", "prior"):
+        return False
+    return any(
+        _is(x, "correct", *_ORDERING) or (_is(x, "not") and x.text.lower() == "no") for x in sent
+    )
 
 
 # words that make a run-on unclear: joining, ordering, choosing, correcting, negating
@@ -2541,14 +2856,14 @@ def _swaps(items: list[Item]) -> list[Item]:
         raise GroundingError(f"cannot read {items[at].text!r} before more words: say it again")
     start = at
     while start > 0 and (
-        items[start - 1].kind == "punct" or _is(items[start - 1], "correct", "not", "filler")
+        items[start - 1].kind == "punct" or _is(items[start - 1], "correct", "not", "filler", "or")
     ):
         start -= 1
     head = items[:start]
     objects = [k for k, x in enumerate(head) if _objects(x)]
     targets = [x for x in head if x.kind == "ent" and not _objects(x)]
     kinds = {r.kind for x in targets for r in x.refs}
-    ordered = any(_is(x, *_ORDERING, "or") for x in head)
+    ordered = any(_is(x, *_ORDERING, "or", "either") for x in head)
     if (
         len(objects) != 2
         or any(len(head[k].refs) != 1 or head[k].quant for k in objects)
@@ -2563,6 +2878,10 @@ def _swaps(items: list[Item]) -> list[Item]:
     a, b = objects
     out = list(head)
     out[a], out[b] = head[b], head[a]
+    said = [x for x in items[start:at] if _is(x, "or")]
+    if said:
+        # "…, or the other way round", "…. Or vice versa.": either way, not a correction
+        return [Item("word", "either", "either"), *head, Item("punct", ",", ","), said[0], *out]
     return out
 
 
@@ -2630,11 +2949,19 @@ def _any_restated(items: list[Item]) -> list[Item]:
             )
             if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
                 j += 1
-                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                while j < len(items) and (
+                    items[j].text.lower() in _ANY_TAIL or _is(items[j], "filler")
+                ):
                     j += 1
                 if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
                     k = j
                     continue
+                # "a pen, any pen <words>": a second pen, or the same said again? (a fuzz found
+                # "…, any pen real quick" read as two pens)
+                raise GroundingError(
+                    f"'{prev.text}, {_words_of(items[k + 1 : j + 1])}': one of them or "
+                    "another one? say it once"
+                )
         out.append(it)
         k += 1
     return out
@@ -2674,7 +3001,287 @@ def _wished_for(items: list[Item]) -> list[Item]:
 
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
+# -- session 8 -------------------------------------------------------------------------------------
+
+# what may stand between the parts of a note without a verb ("person a bottle person b chips")
+_NOTE_WORDS = frozenset({"det", "and", "filler", ",", "then", "first", "last"})
+
+
+def _bare_notes(items: list[Item]) -> list[Item]:
+    """'person a bottle person b chips': a sentence of only people and objects (no verb, no
+    other keyword) is a list of notes, each person receiving the objects after it; where an
+    object runs into the next person, that person starts a new note (as after a comma)."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        note = (
+            sum(_humans(x) for x in sent) >= 2
+            and all(_humans(x) or _objects(x) or _is(x, *_NOTE_WORDS) for x in sent)
+            and bool(sent)
+            and _humans(sent[0])
+        )
+        for k, x in enumerate(sent):
+            if note and k and _humans(x) and _objects(sent[k - 1]):
+                out.append(Item("punct", ",", ","))
+            out.append(x)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _drop_onto(items: list[Item]) -> list[Item]:
+    """'drop it in the sink': 'drop' with a place after its objects (in, into, on, onto) puts
+    them there; any other 'drop' stays a cancel ('drop the cup')."""
+    out = list(items)
+    for k, it in enumerate(items):
+        if not (_is(it, "cancel") and it.text.lower() == "drop"):
+            continue
+        j = k + 1
+        while j < len(items) and (
+            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",", "both")
+        ):
+            j += 1
+        off = any(x.text.lower() == "off" for x in items[k + 1 : j])
+        if (
+            j > k + 1
+            and j + 1 < len(items)
+            and _is(items[j], "on")
+            and items[j].text.lower() in ("in", "into", "on", "onto")
+            and (_is_surface(items[j + 1]) or _is(items[j + 1], "det"))
+        ):
+            out[k] = Item("word", "verb:put", it.text)
+        elif (
+            off
+            and j + 1 < len(items)
+            and _is(items[j], "with", "to", "for")
+            and (
+                _humans(items[j + 1])
+                or (j + 2 < len(items) and _is(items[j + 1], "det") and _humans(items[j + 2]))
+            )
+        ):  # "Drop the sponge off with Emma", "… with the intern": a hand-over
+            out[k] = Item("word", "verb:give", it.text)
+            out[j] = Item("word", "to", items[j].text)
+    return out
+
+
+# an auxiliary standing for the verb phrase said before it ("…, Bob does")
+_ELLIPTIC = frozenset({"does", "do", "will", "can"})  # not "would": "Omar would" is a guess
+
+
+def _elliptic_at(items: list[Item], k: int) -> bool:
+    """Whether items[k] is a person followed by an auxiliary that ends its clause."""
+    return (
+        _humans(items[k])
+        and k + 1 < len(items)
+        and _is(items[k + 1], "aux")
+        and items[k + 1].text.lower() in _ELLIPTIC
+        and (k + 2 == len(items) or items[k + 2].kind == "punct" or _is(items[k + 2], "and"))
+    )
+
+
+def _ellipsis(items: list[Item]) -> list[Item]:
+    """'Alice doesn't need the chips, Bob does': the auxiliary stands for the verb phrase said
+    before it. After a correction word ('… Actually Bob does.') it is the correction naming the
+    person; after a sentence opening with a negated possession ('Q doesn't need X,') it is that
+    possession with the new person ('Bob needs the chips'), the negated clause adding nothing.
+    Any other such auxiliary is left to be refused."""
+    out = list(items)
+    k = len(out) - 2
+    while k >= 0:
+        if not _elliptic_at(out, k):
+            k -= 1
+            continue
+        before = k - 1
+        while before >= 0 and _is(out[before], ",", "filler"):
+            before -= 1
+        if before >= 0 and (_is(out[before], "correct") or out[before].text.lower() == "no"):
+            del out[k + 1]  # "actually Bob does" is "actually Bob"
+        else:
+            before = k - 1
+            while before >= 0 and _is(out[before], "filler", "det"):
+                before -= 1  # "…, the visitor does"
+            but = before >= 0 and _is(out[before], "and") and out[before].text.lower() == "but"
+            if but:
+                before -= 1
+            if before >= 0 and _is(out[before], ","):
+                out[: k + 2] = _contrasted(out[:before], out[k]) or out[: k + 2]
+            elif but and before >= 0:  # "Sam doesn't need the stapler but Priya does"
+                out[: k + 2] = _contrasted(out[: before + 1], out[k]) or out[: k + 2]
+        k = min(k - 1, len(out) - 2)
+    return out
+
+
+def _contrasted(head: list[Item], person: Item) -> list[Item] | None:
+    """'Q doesn't V X' opening a sentence (``head`` runs to its end), restated for
+    ``person``: the sentence before it unchanged, then 'person V X'; None if not that form."""
+    start = len(head)
+    while start > 0 and not (head[start - 1].kind == "punct" and head[start - 1].lemma in _END):
+        start -= 1
+    clause = [x for x in head[start:] if not _is(x, "filler")]
+    if clause and _is(clause[0], "det"):
+        clause = clause[1:]  # "The doctor doesn't need …"
+    if not (
+        len(clause) >= 5
+        and _humans(clause[0])
+        and clause[0].refs != person.refs
+        and _is(clause[1], "aux")
+        and clause[1].text.lower() in _ELLIPTIC  # not a report: "Alice didn't get the cup"
+        and _is(clause[2], "not")
+        and clause[3].lemma in (*_WANTS, "verb:have", "verb:receive", "verb:get")
+        and all(_objects(x) or _is(x, "det", "and", ",") for x in clause[4:])
+        and any(_objects(x) for x in clause[4:])
+    ):
+        return None
+    return [*head[:start], person, clause[3], *clause[4:]]
+
+
+def _appositions(items: list[Item]) -> list[Item]:
+    """'Give Emma the cup, the green one': a singular name that is ambiguous, a comma, then a
+    name of exactly one of the objects it could mean, narrows it to that one (a list never
+    names the same object twice, so the second name is not a further object)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        it = items[k]
+        ids = {r.id for r in it.refs}
+        j = k + 2
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        narrows = (
+            k + 1 < len(items)
+            and _is(items[k + 1], ",")
+            and j > k + 2
+            and j < len(items)
+            and _objects(items[j])
+            and {r.id for r in items[j].refs} < ids
+        )
+        if _objects(it) and any(r.plural for r in it.refs) and narrows:
+            raise GroundingError(
+                f"'{it.text}, {_words_of(items[k + 2 : j + 1])}': all of them, or only that one?"
+            )
+        if (
+            _objects(it)
+            and not it.quant
+            and len(ids) > 1
+            and not any(r.plural for r in it.refs)
+            and k + 1 < len(items)
+            and _is(items[k + 1], ",")
+            and j > k + 2
+            and j < len(items)
+            and _objects(items[j])
+            and len({r.id for r in items[j].refs}) == 1
+            and {r.id for r in items[j].refs} < ids
+        ):
+            out.extend(items[k + 2 : j + 1])
+            k = j + 1
+            continue
+        out.append(it)
+        k += 1
+    return out
+
+
+def _floating_all(items: list[Item]) -> list[Item]:
+    """'The cup, the bottle and the chips all go on the shelf': 'all'/'both' between objects
+    named as the subject and their verb only stresses that each of them goes."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        j = k + 1
+        while j < len(items) and _is(items[j], "aux", "filler"):
+            j += 1
+        n = len(out) - 1
+        while n >= 0 and _is(out[n], "aux", "filler"):
+            n -= 1  # "the cup and the mug should both go"
+        if (
+            it.kind == "word"
+            and it.text.lower() in ("all", "both")
+            and n >= 0
+            and _objects(out[n])
+            and j < len(items)
+            and _is_verb_item(items[j])
+        ):
+            continue
+        out.append(it)
+    return out
+
+
+def _listed_subjects(items: list[Item]) -> list[Item]:
+    """'The cup, the bottle and the chips go on the shelf': objects listed (joined by commas and
+    'and') as the subject of 'go'/'belong' opening a sentence are that verb's objects ('go the
+    cup, the bottle and the chips on the shelf'), as one object before it is."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        j = 0
+        while j < len(sent) and (_objects(sent[j]) or _is(sent[j], "det", "and", "or", ",")):
+            j += 1
+        names = [x for x in sent[:j] if _objects(x)]
+        v = j
+        while v < len(sent) and _is(sent[v], "aux", "filler"):
+            v += 1
+        if (
+            len(names) >= 2
+            and _objects(sent[j - 1])
+            and v + 1 < len(sent)
+            and sent[v].lemma in ("verb:go", "verb:belong")
+            and _is(sent[v + 1], "on", "to")
+        ):
+            sent = [sent[v], *sent[:j], *sent[v + 1 :]]
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+# "whichever one's closer to her" after a mention: words standing for the objects it names
+_WHICHEVER_ONE = frozenset({"whichever", "whichever one", "whatever", "whichever of them"})
+
+
+def _whichever_nearer(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Bring Alice a mug, whichever one's closer to her': after objects, ', whichever (one)
+    is nearer/farther to/from X' picks among them as 'the mug nearest to X' does."""
+    return _after_objects(items, lexicon, _whichever_near_at)
+
+
+def _whichever_near_at(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    if not (k + 2 < len(items) and _is(items[k], ",")):
+        return k
+    j = k + 1
+    while (
+        j < len(items)
+        and _is(items[j], "filler", ",")
+        and items[j].text.lower() not in _WHICHEVER_ONE
+    ):
+        j += 1
+    if j >= len(items) or items[j].text.lower() not in _WHICHEVER_ONE:
+        return k
+    j += 1
+    while j < len(items) and (items[j].text.lower() in _BE or _is(items[j], "filler")):
+        j += 1
+    return j if j < len(items) and _is(items[j], "nearest", "farthest") else k
+
+
+def _any_order(items: list[Item]) -> list[Item]:
+    """'…, in either order', 'the order doesn't matter': no order is asked for, so the words go;
+    beside words that order ('First give Bob the chips, then Alice the cup, in any order') the
+    instruction says two things and is refused."""
+    said = [x for x in items if _is(x, "any_order")]
+    if not said:
+        return items
+    ordering = next((x for x in items if _is(x, *_ORDERING) and not _is(x, "any_order")), None)
+    if ordering is not None:
+        raise GroundingError(
+            f"{said[0].text!r} and {ordering.text!r} in one instruction: is there an order or not?"
+        )
+    return [x for x in items if not _is(x, "any_order")]
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_any_order),
+    _plain(_bare_notes),
+    _plain(_floating_all),
+    _plain(_listed_subjects),
+    _plain(_ellipsis),
+    _plain(_drop_onto),
     _plain(_telegraphic),
     _plain(_run_ons),
     _plain(_let),
@@ -2694,9 +3301,11 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _rest,
     _whatever_near,
     _plain(_any_restated),
+    _whichever_nearer,
     _plain(_whichever),
     _relatives,
     _one_anaphora,
+    _plain(_appositions),
     _plain(_demonstratives),
     _one_each_of,
     _quantifiers,

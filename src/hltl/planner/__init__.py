@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 
-from hltl.planner.anytime import plan_anytime, with_fallback_plan
-from hltl.planner.problem import Problem
+from hltl.planner.anytime import certified, plan_anytime, with_fallback_plan
+from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
-from hltl.planner.search import ALGORITHMS, search
+from hltl.planner.search import ALGORITHMS, _Search, plan_steps, search
 from hltl.skills.cost import CostModel
 from hltl.skills.kinematics import Kinematics
 from hltl.skills.library import DEFAULT_SKILLS, Skill
@@ -20,6 +21,9 @@ from hltl.world.state import WorldState
 # exact mode: the share of ``timeout`` (at most 1 s) kept for improving the plan that a
 # timed-out search returns (prioritized routing, docs/planner.md "Anytime mode")
 FALLBACK_SHARE = 0.05
+# exact mode, cells of 9-16 event goals: the share of ``timeout`` the step bound may take first
+# to find a plan it proves optimal (docs/planner.md, "Step bound"); A* gets the rest
+CERTIFY_SHARE = 0.4
 
 __all__ = [
     "ALGORITHMS",
@@ -92,13 +96,26 @@ def plan(
         )
     # a share of the time is kept for a better plan to return should the search time out
     reserve = 0.0 if timeout is None or timeout < 2.0 else min(1.0, FALLBACK_SHARE * timeout)
+    t0 = time.perf_counter()
+    state = None
+    if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
+        state = _Search(problem)
+        found = certified(problem, state, t0 + CERTIFY_SHARE * timeout)
+        if found is not None:
+            makespan = to_seconds(found[0])
+            stats = SearchStats(0, 0, time.perf_counter() - t0, "astar")
+            steps = plan_steps(problem, found[1])
+            return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, "", makespan)
     result = search(
         problem,
         algorithm=algorithm,
-        timeout=None if timeout is None else timeout - reserve,
+        timeout=None if timeout is None else timeout - reserve - (time.perf_counter() - t0),
         max_expansions=max_expansions,
         on_progress=on_progress,
+        state=state,
     )
+    if state is not None:
+        result = replace(result, stats=replace(result.stats, seconds=time.perf_counter() - t0))
     if result.status is PlanStatus.TIMEOUT:
         # the walk checks the clock between routings: leave room for the last one
         return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve)

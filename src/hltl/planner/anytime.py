@@ -43,6 +43,10 @@ CP_DETOUR = 0.6
 # until this share of the budget
 SCHEDULE_UP_TO = 16
 SCHEDULE_SHARE = 0.25
+# the step bound (``step_bound``) only where the start bound is at most this many of the
+# shortest steps: its model has a variable per instance and step, and on 10-robot lines (start
+# bound 11.7 s, 23 steps) it proved nothing in 7.6 s of CPU where A* alone finishes in about 5 s
+STEPS_UP_TO = 16
 
 
 @dataclass(frozen=True, slots=True)
@@ -290,27 +294,37 @@ class _Router:
     def replay(self, steps: Sequence[Sequence[Instance]]) -> _Found | None:
         """Check the plan step by step (preconditions, monitors); its cost and chain, cut at the
         step in which the root fires; None if it is not a plan."""
-        s, p = self.s, self.p
-        node = self.node
-        total = 0
-        chain: list[tuple[Node, tuple[Instance, ...], int]] = []
-        for U in steps:
-            locs = node[0]
-            held = {p.code_holder[c] for c in locs if c in p.code_holder}
-            for inst in U:
-                if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
-                    return None
-            step = tuple(sorted(U, key=lambda i: i.index))
-            applied = s.apply(node, step)
-            if applied is None:  # an instance has no motion from these hands
+        return replay(self.s, self.node, steps)
+
+
+def replay(s: _Search, node: Node, steps: Sequence[Sequence[Instance]]) -> _Found | None:
+    """Check ``steps`` from ``node`` step by step (robots disjoint within a step, objects where
+    the instances need them, receiving robots free, monitors); the plan's cost and chain, cut at
+    the step in which the root fires; None if it is not a plan."""
+    p = s.p
+    total = 0
+    chain: list[tuple[Node, tuple[Instance, ...], int]] = []
+    for U in steps:
+        locs = node[0]
+        held = {p.code_holder[c] for c in locs if c in p.code_holder}
+        busy = 0
+        for inst in U:
+            if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
                 return None
-            cost, child = applied
-            chain.append((node, step, cost))
-            total += cost
-            node = child
-            if p.monitor.accepted(node[2]):
-                return total, chain
-        return None
+            if busy & inst.executors or len({i.obj for i in U}) != len(U):
+                return None
+            busy |= inst.executors
+        step = tuple(sorted(U, key=lambda i: i.index))
+        applied = s.apply(node, step)
+        if applied is None:  # an instance has no motion from these hands
+            return None
+        cost, child = applied
+        chain.append((node, step, cost))
+        total += cost
+        node = child
+        if p.monitor.accepted(node[2]):
+            return total, chain
+    return None
 
 
 def _with(locs: tuple[int, ...], o: int, loc: int) -> tuple[int, ...]:
@@ -424,7 +438,13 @@ def plan_anytime(
     big = n_goals > PAIRS_UP_TO
     if big and not good_enough() and best is not None:
         until = t0 + SCHEDULE_SHARE * timeout
-        lb = max(lb, _schedule_at_start(problem, s, start, round(lb), best[0], until))
+        if schedule.steps_applicable(problem):
+            ticks, found = step_bound(problem, s, start, round(lb), best[0], until)
+            if found is not None and found[0] < best[0]:
+                best = found
+        else:
+            ticks = _schedule_at_start(problem, s, start, round(lb), best[0], until)
+        lb = max(lb, ticks)
         note()
     phases = (
         (PAIRS_SHARE, BIG_RESTART_SHARE, 1.0) if big else (EXACT_FIRST_SHARE, RESTART_SHARE, 1.0)
@@ -499,6 +519,56 @@ def _schedule_at_start(
         problem, heur.graph, start, tgts, floor=floor, upper=upper, deadline=until
     )
     return res.ticks
+
+
+def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
+    """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
+    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed): the step bound
+    at the start node until ``until``, and the plan its schedule gives when that plan meets it,
+    which is then optimal (``step_bound``); None otherwise."""
+    start = problem.start()
+    heur = s.heuristic
+    if problem.monitor.accepted(start[2]):
+        return None
+    if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
+        return None
+    h0 = heur(start)
+    if math.isinf(h0):
+        return None
+    return step_bound(problem, s, start, round(h0), None, until)[1]
+
+
+def step_bound(
+    problem: Problem, s: _Search, start: Node, floor: int, upper: int | None, until: float
+) -> tuple[int, _Found | None]:
+    """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
+    (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
+    ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and
+    a plan of exactly that makespan when the relaxation's schedule at the bound is one (or the
+    schedule with sessions whole is): then that plan is optimal. (``floor``, None) when the
+    bound does not apply; it is never below ``floor``."""
+    if not (lns.available() and schedule.steps_applicable(problem)):
+        return floor, None
+    heur = s.heuristic
+    graph = heur.graph
+    tgts = schedule.targets(problem, graph, start, heur.required_atoms(start[2]))
+    if not tgts or len(tgts) > SCHEDULE_UP_TO:
+        return floor, None
+    if floor > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        return floor, None
+    res = schedule.schedule_bound(
+        problem, graph, start, tgts, floor=floor, upper=upper, deadline=until, steps=True
+    )
+    if res.steps is None:
+        return res.ticks, None
+    found = replay(s, start, res.steps)
+    if found is None:
+        level = res.ticks // schedule.time_unit(problem)
+        again = schedule.relaxed_steps(problem, graph, start, tgts, level, until, whole=True)
+        found = replay(s, start, again) if isinstance(again, tuple) else None
+    if found is None or found[0] > res.ticks:
+        return res.ticks, None
+    return found[0], found
 
 
 def _pairs_at_start(

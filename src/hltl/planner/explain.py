@@ -106,7 +106,7 @@ def _why(problem: Problem, g: RelaxedGraph, atom: Atom, locs: tuple[int, ...]) -
             {
                 r.id
                 for r in problem.situation.available
-                if distance(r.base, scene.surface(sid).center) <= r.reach
+                if problem.situation.kinematics.reaches(r, scene.surface(sid).object_point)
             }
         )
         if not placers:

@@ -6,6 +6,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import reduce
+from itertools import pairwise
 from typing import Any
 
 from hltl.planner.lns import solve_until
@@ -38,6 +39,9 @@ class ScheduleBound:
     ticks: int
     solved: bool
     targets: int
+    # the step relaxation's schedule at ``ticks`` when it was solved there: per non-empty step
+    # its instances (a plan of makespan ``ticks`` once a replay accepts it: then it is optimal)
+    steps: tuple[tuple[Instance, ...], ...] | None = None
 
 
 def applicable(problem: Problem) -> bool:
@@ -137,6 +141,7 @@ def schedule_bound(
     upper: int | None,
     deadline: float,
     seed: int = 0,
+    steps: bool = False,
 ) -> ScheduleBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen, from a relaxed schedule (docs/planner.md, "Scheduling bound").
@@ -146,18 +151,30 @@ def schedule_bound(
     CP-SAT proves that no relaxed schedule ends by the current value, until it finds one
     (then the value is the relaxation's optimum), the value reaches ``upper``, or ``deadline``
     (``time.perf_counter()`` time; building counts) passes. Never below ``floor``.
+
+    With ``steps`` (only where ``steps_applicable``) the relaxation is the step-indexed one
+    (``_feasible_steps``), which also sees that a step lasts its longest instance.
     """
-    durations = [i.lower for i in problem.instances if i.lower > 0]
-    unit = reduce(math.gcd, durations, 0) or 1
+    unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
     while upper is None or level * unit < upper:
-        found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
+        if steps:
+            found = relaxed_steps(problem, graph, node, tgts, level, deadline, seed=seed)
+        else:
+            found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
         if found is None:  # out of time
             return ScheduleBound(max(floor, level * unit), False, len(tgts))
-        if found:
-            return ScheduleBound(max(floor, level * unit), True, len(tgts))
+        if found is not False:
+            got = None if found is True else found
+            return ScheduleBound(max(floor, level * unit), True, len(tgts), got)
         level += 1
     return ScheduleBound(max(floor, upper), True, len(tgts))
+
+
+def time_unit(problem: Problem) -> int:
+    """The durations' common divisor in ticks: every makespan is a multiple of it."""
+    durations = [i.lower for i in problem.instances if i.lower > 0]
+    return reduce(math.gcd, durations, 0) or 1
 
 
 def _feasible(
@@ -238,18 +255,7 @@ def _feasible(
                 closes.setdefault(r_out, []).append((u, st, d, fires))
         if not fired:
             return False
-        # a path from s0: leaves s0 once, enters and leaves every other place at most once;
-        # cycles apart from it are impossible (each instance starts after the last ended)
-        m.add(sum(outs[s0]) == 1)
-        for c in places:
-            if c != s0:
-                m.add(sum(ins[c]) <= 1)
-                m.add(sum(outs[c]) == sum(ins[c]))
-        m.add_exactly_one(u for u, _ in fired)
-        fs = m.new_int_var(0, H, "")
-        for u, st in fired:
-            m.add(fs == st).only_enforce_if(u)
-        fire_start.append(fs)
+        fire_start.append(_path(m, s0, places, outs, ins, fired, H))
         for r, ends in closes.items():
             starts = opens.get(r)
             if not starts:
@@ -257,12 +263,8 @@ def _feasible(
                 for u, st, d, _ in ends:
                     per_robot[r].append(m.new_optional_fixed_size_interval_var(st, d, u, ""))
                 continue
-            # the quickest ways out of r's hand (not firing: a loop goes on) and back in, over
-            # every instance, so that no way a plan may take is missed
-            hand = p.held_code[r]
-            leave = [i.lower for i in p.by_obj_pre[o][hand] if i.index not in t.fires]
-            back = [i.lower for row in p.by_obj_pre[o] for i in row if i.post == hand]
-            quickest = (min(leave) // unit, min(back) // unit) if leave and back else None
+            loop = _quickest_loop(p, t, r)
+            quickest = None if loop is None else (loop[0] // unit, loop[1] // unit)
             per_robot[r].extend(_session(m, H, starts, ends, quickest))
     for k, t in enumerate(tgts):
         for j in t.after:
@@ -281,18 +283,270 @@ def _feasible(
     return None
 
 
+def steps_applicable(problem: Problem) -> bool:
+    """The step-indexed relaxation's proof holds: that of ``applicable``, and every instance
+    takes time, so a plan ending by M has at most M / (shortest duration) non-empty steps."""
+    return applicable(problem) and all(i.lower > 0 for i in problem.instances)
+
+
+def relaxed_steps(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    deadline: float,
+    *,
+    seed: int = 0,
+    whole: bool = False,
+) -> tuple[tuple[Instance, ...], ...] | bool | None:
+    """A step-indexed relaxed schedule that makes every target happen by ``level`` time units
+    (``time_unit``), as its non-empty steps; False when CP-SAT proved there is none, None when
+    it could not tell before ``deadline``. docs/planner.md, "Step bound".
+
+    With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
+    nothing, but its schedules are more often plans).
+
+    The paths and sessions of ``_feasible``, on a global sequence of K steps instead of a time
+    line: every instance on a path is in one step, the next instance on its path in a later
+    one; a robot's sessions cover runs of steps that never share a step; a step lasts at least
+    its longest instance (0 when empty; the empty steps come last), and the steps last at most
+    ``level`` units in all. K = ``level`` // (shortest duration): no plan ending by ``level``
+    has more non-empty steps. Where a plan runs a 0.5 s pick beside a 0.6 s handover, the pick's
+    step costs 0.6 s here too, which intervals of their own durations do not see.
+    """
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
+    p = problem
+    locs = node[0]
+    unit = time_unit(p)
+    cap = level * unit
+    shortest = min(i.lower for i in p.instances)
+    K = cap // shortest
+    if K == 0:
+        return False
+    d_min = shortest // unit
+    lengths = sorted({i.lower // unit for i in p.instances if i.lower > shortest})
+    m = cp_model.CpModel()
+    # step k is non-empty (at least d_min long), and lasts at least each longer duration
+    busy = [m.new_bool_var("") for _ in range(K)]
+    for k in range(K - 1):
+        m.add_implication(busy[k + 1], busy[k])
+    at_least: list[dict[int, Any]] = []
+    for k in range(K):
+        row = {d: m.new_bool_var("") for d in lengths}
+        for a, b in pairwise(lengths):
+            m.add_implication(row[b], row[a])
+        if lengths:
+            m.add_implication(row[lengths[0]], busy[k])
+        at_least.append(row)
+    start = [m.new_int_var(0, level, "") for _ in range(K + 1)]  # when step k starts
+    m.add(start[0] == 0)
+    for k in range(K):
+        prev = d_min
+        length = d_min * busy[k]
+        for d in lengths:
+            length += (d - prev) * at_least[k][d]
+            prev = d
+        m.add(start[k + 1] == start[k] + length)
+    per_robot: list[list[Any]] = [[] for _ in p.robots]
+    per_robot_step: dict[tuple[int, int], list[Any]] = {}
+    fire_step: list[Any] = []
+    every: list[tuple[Instance, list[tuple[int, Any]]]] = []
+    for t in tgts:
+        o, s0 = t.obj, locs[t.obj]
+        reach = graph.place_time[o][s0]
+        togo = graph.event_time[o]
+        if togo[s0].get(t.atom, math.inf) > cap:
+            return False
+        hops_in = _hops(p, o, [s0], forward=True)
+        hops_out = _hops(
+            p, o, [i.pre for row in p.by_obj_pre[o] for i in row if i.index in t.fires], False
+        )
+        cand: list[tuple[Instance, int, int]] = []
+        chosen: list[tuple[Instance, list[tuple[int, Any]]]] = []
+        for i in (i for row in p.by_obj_pre[o] for i in row):
+            fires = i.index in t.fires
+            rest = 0 if fires else togo[i.post].get(t.atom, math.inf)
+            if reach[i.pre] + i.lower + rest > cap or (not fires and i.post == s0):
+                continue
+            # steps it may run in: after the hops that bring the object to it, early enough
+            # for the hops after it, and (each step lasting at least d_min) for the time after it
+            first = hops_in.get(i.pre)
+            after = 0 if fires else hops_out.get(i.post, K) + 1
+            if first is None:
+                continue
+            slack = level - i.lower // unit - math.ceil(rest / unit)
+            last = min(K - 1 - after, slack // d_min)
+            if first <= last:
+                cand.append((i, first, last))
+        places = {s0} | {i.pre for i, _, _ in cand}
+        places |= {i.post for i, _, _ in cand if i.index not in t.fires}
+        arrive = {c: m.new_int_var(0, K, "") for c in places}
+        m.add(arrive[s0] == 0)
+        outs: dict[int, list[Any]] = {c: [] for c in places}
+        ins: dict[int, list[Any]] = {c: [] for c in places}
+        fired: list[tuple[Any, Any]] = []
+        opens: dict[int, list[tuple[Any, Any, int]]] = {}
+        closes: dict[int, list[tuple[Any, Any, int, bool]]] = {}
+        arrivals: dict[int, list[tuple[Any, Any]]] = {}  # robot -> (used, time the arrival ends)
+        departures: dict[int, list[tuple[Any, Any]]] = {}  # ... (used, time it starts)
+        for i, first, last in cand:
+            d = i.lower // unit
+            early = math.ceil(reach[i.pre] / unit)
+            fires = i.index in t.fires
+            late = level - d - (0 if fires else math.ceil(togo[i.post][t.atom] / unit))
+            xs = []
+            for k in range(first, last + 1):
+                x = m.new_bool_var("")
+                xs.append((k, x))
+                m.add(start[k] >= early).only_enforce_if(x)
+                m.add(start[k] <= late).only_enforce_if(x)
+                m.add_implication(x, at_least[k][d] if d > d_min else busy[k])
+                for r in range(len(p.robots)):
+                    if i.executors >> r & 1:
+                        per_robot_step.setdefault((r, k), []).append(x)
+            chosen.append((i, xs))
+            u = m.new_bool_var("")
+            m.add(u == sum(x for _, x in xs))
+            st = m.new_int_var(first, last, "")
+            tm = m.new_int_var(0, level, "")  # when its step starts
+            for k, x in xs:
+                m.add(st == k).only_enforce_if(x)
+                m.add(tm == start[k]).only_enforce_if(x)
+            m.add(st >= arrive[i.pre]).only_enforce_if(u)
+            outs[i.pre].append(u)
+            if fires:
+                fired.append((u, st))
+            else:
+                ins[i.post].append(u)
+                m.add(arrive[i.post] == st + 1).only_enforce_if(u)
+                r_in = p.code_holder.get(i.post)
+                if r_in is not None:
+                    opens.setdefault(r_in, []).append((u, st, 1))
+                    arrivals.setdefault(r_in, []).append((u, tm + d))
+            r_out = p.code_holder.get(i.pre)
+            if r_out is not None:
+                closes.setdefault(r_out, []).append((u, st, 1, fires))
+                departures.setdefault(r_out, []).append((u, tm))
+        if not fired:
+            return False
+        fire_step.append(_path(m, s0, places, outs, ins, fired, K))
+        for r, ends in closes.items():
+            starts = opens.get(r)
+            if not starts:
+                for u, st, _, _ in ends:
+                    per_robot[r].append(m.new_optional_fixed_size_interval_var(st, 1, u, ""))
+                continue
+            # a loop through r's hand: it leaves in a later step and comes back in a later one
+            loop = _quickest_loop(p, t, r)
+            if loop is None or whole:
+                per_robot[r].extend(_session(m, K, starts, ends, None))
+                continue
+            arrived, leaves = m.new_int_var(0, level, ""), m.new_int_var(0, level, "")
+            for u, when in arrivals[r]:
+                m.add(arrived == when).only_enforce_if(u)
+            for u, when in departures[r]:
+                m.add(leaves == when).only_enforce_if(u)
+            timed = (arrived, leaves, (loop[0] + loop[1]) // unit)
+            per_robot[r].extend(_session(m, K, starts, ends, (1, 1), timed))
+        every.extend(chosen)
+    for k, t in enumerate(tgts):
+        for j in t.after:
+            m.add(fire_step[k] >= fire_step[j])
+    for ivs in per_robot:
+        if len(ivs) > 1:
+            m.add_no_overlap(ivs)
+    for lits in per_robot_step.values():
+        if len(lits) > 1:
+            m.add_at_most_one(lits)
+    solved = solve_until(m, deadline, seed)
+    if solved is None:
+        return None
+    solver, status = solved
+    if status == cp_model.INFEASIBLE:
+        return False
+    if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+        return None
+    out: list[list[Instance]] = [[] for _ in range(K)]
+    for i, xs in every:
+        for k, x in xs:
+            if solver.value(x):
+                out[k].append(i)
+    return tuple(tuple(step) for step in out if step)
+
+
+def _quickest_loop(problem: Problem, t: Target, r: int) -> tuple[int, int] | None:
+    """The quickest way (ticks) for ``t``'s object out of robot ``r``'s hand without its atom
+    happening (a loop goes on) and the quickest way back in, over every instance, so that no
+    way a plan may take is missed; None when either does not exist."""
+    hand = problem.held_code[r]
+    o = t.obj
+    leave = [i.lower for i in problem.by_obj_pre[o][hand] if i.index not in t.fires]
+    back = [i.lower for row in problem.by_obj_pre[o] for i in row if i.post == hand]
+    return (min(leave), min(back)) if leave and back else None
+
+
+def _path(
+    m: Any,
+    s0: int,
+    places: set[int],
+    outs: dict[int, list[Any]],
+    ins: dict[int, list[Any]],
+    fired: list[tuple[Any, Any]],
+    H: int,
+) -> Any:
+    """One object's path from ``s0`` to exactly one instance of ``fired`` (used, start): it
+    leaves s0 once, enters and leaves every other place at most once (cycles apart from it are
+    impossible: each instance starts after the last one ended). The firing instance's start."""
+    m.add(sum(outs[s0]) == 1)
+    for c in places:
+        if c != s0:
+            m.add(sum(ins[c]) <= 1)
+            m.add(sum(outs[c]) == sum(ins[c]))
+    m.add_exactly_one(u for u, _ in fired)
+    fs = m.new_int_var(0, H, "")
+    for u, st in fired:
+        m.add(fs == st).only_enforce_if(u)
+    return fs
+
+
+def _hops(problem: Problem, obj: int, sources: Sequence[int], forward: bool) -> dict[int, int]:
+    """The fewest instances that take ``obj`` from one of ``sources`` to each place (forward)
+    or from each place to one of ``sources`` (backward)."""
+    edges: dict[int, list[int]] = {}
+    for row in problem.by_obj_pre[obj]:
+        for i in row:
+            a, b = (i.pre, i.post) if forward else (i.post, i.pre)
+            edges.setdefault(a, []).append(b)
+    dist = {s: 0 for s in sources}
+    frontier = list(dict.fromkeys(sources))
+    while frontier:
+        nxt = []
+        for a in frontier:
+            for b in edges.get(a, ()):
+                if b not in dist:
+                    dist[b] = dist[a] + 1
+                    nxt.append(b)
+        frontier = nxt
+    return dist
+
+
 def _session(
     m: Any,
     H: int,
     starts: list[tuple[Any, Any, int]],
     ends: list[tuple[Any, Any, int, bool]],
     quickest: tuple[int, int] | None,
+    timed: tuple[Any, Any, int] | None = None,
 ) -> list[Any]:
     """Robot r's time with the object in hand, as intervals for r's no-overlap: whole, from the
     instance that brings it to the one that takes it away; or, when the object leaves r and
     comes back (a loop the path does not show), split into the arrival plus the quickest way
     out, and the quickest way back in plus the departure (``quickest``: those two durations;
-    None when the object cannot leave r without its atom happening, or never come back)."""
+    None when the object cannot leave r without its atom happening, or never come back).
+    ``timed`` (the step model): the time the arrival ends, the time the departure starts and
+    the quickest loop's duration, which a split session must leave between them."""
     present = m.new_bool_var("")
     m.add(present == sum(u for u, _, _ in starts))
     begin, end = m.new_int_var(0, H, ""), m.new_int_var(0, H, "")
@@ -317,4 +571,8 @@ def _session(
     m.add(e1 <= s2).only_enforce_if(split)
     out.append(m.new_optional_interval_var(begin, m.new_int_var(0, H, ""), e1, split, ""))
     out.append(m.new_optional_interval_var(s2, m.new_int_var(0, 2 * H, ""), end, split, ""))
+    if timed is not None:
+        # steps: the loop also takes time, from the arrival's end to the departure's start
+        arrived, leaves, loop = timed
+        m.add(arrived + loop <= leaves).only_enforce_if(split)
     return out

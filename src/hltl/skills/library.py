@@ -181,7 +181,7 @@ class Pick(Skill):
         (r,) = robots
         oid = action.object
         sources: list[tuple[Loc, Vec3]] = [(REST, sit.rest_position(oid))]
-        sources += [(Loc("on", s.id), s.center) for s in sit.scene.surfaces]
+        sources += [(Loc("on", s.id), s.object_point) for s in sit.scene.surfaces]
         for loc, point in sources:
             if sit.kinematics.reaches(r, point):
                 yield Transition(
@@ -214,14 +214,15 @@ class Place(Skill):
         if robots is None or surface is None:
             return
         (r,) = robots
-        if sit.kinematics.reaches(r, surface.center):
+        point = surface.object_point  # where the held object is let go, not the surface's top
+        if sit.kinematics.reaches(r, point):
             yield Transition(
                 action.object,
                 Loc("held", r.id),
                 Loc("on", surface.id),
                 (),
                 frozenset({Atom("placed", (action.object, surface.id))}),
-                ((r.id, surface.center),),
+                ((r.id, point),),
             )
 
 

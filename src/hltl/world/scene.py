@@ -15,6 +15,10 @@ Vec3 = tuple[float, float, float]
 _T = TypeVar("_T")
 
 DEFAULT_HUMAN_REACH = 0.3
+# An object's point stands this high above what it rests on: scenes put objects on the table
+# (z = 0) at z = 0.05, and a hand picks or places an object at its point (the motion layer
+# grasps it there, or higher for a tall object).
+OBJECT_LIFT = 0.05
 # the skills of DESIGN.md §4, the keys a scene's ``durations`` may give
 SKILL_NAMES = ("pick", "place", "handover_r2r", "handover_r2h")
 UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
@@ -59,6 +63,14 @@ class Surface:
     center: Vec3
     size: tuple[float, float]
     aliases: tuple[str, ...] = ()
+
+    @property
+    def object_point(self) -> Vec3:
+        """Where an object standing at the surface's centre has its point (``OBJECT_LIFT``
+        above the top, as objects on the table stand at z = 0.05): where a hand places an
+        object on the surface or picks one from it, so where reach is judged."""
+        x, y, z = self.center
+        return (x, y, z + OBJECT_LIFT)
 
 
 @dataclass(frozen=True, slots=True)

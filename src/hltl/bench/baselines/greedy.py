@@ -41,7 +41,7 @@ def chain(
     if st.loc.kind == "held":
         starts = [r for r in avail if r.id == st.loc.ref]
     elif st.loc.kind in ("rest", "on"):
-        point = st.position if st.loc.kind == "rest" else scene.surface(st.loc.ref).center
+        point = st.position if st.loc.kind == "rest" else scene.surface(st.loc.ref).object_point
         starts = sorted(
             (r for r in avail if reaches(r, point)), key=lambda r: (distance(r.base, point), r.id)
         )
@@ -52,7 +52,7 @@ def chain(
         serving = context.robots_serving(ref)
         goal = {r.id for r in avail if r.id in serving}
     else:
-        goal = {r.id for r in avail if reaches(r, scene.surface(ref).center)}
+        goal = {r.id for r in avail if reaches(r, scene.surface(ref).object_point)}
     previous: dict[str, str | None] = {r.id: None for r in starts}
     queue: deque[Robot] = deque(starts)
     while queue:

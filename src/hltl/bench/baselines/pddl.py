@@ -223,7 +223,7 @@ def build_problem(scene: Scene, spec: HSpec, world: WorldState | None = None) ->
     holders = {st.loc.ref for _, st in w.objects if st.loc.kind == "held"}
     init += [free(R[x.id]) for x in avail if x.id not in holders]
     for x in avail:
-        init += [reach_s(R[x.id], S[sf.id]) for sf in scene.surfaces if reaches(x, sf.center)]
+        init += [reach_s(R[x.id], S[sf.id]) for sf in scene.surfaces if reaches(x, sf.object_point)]
         init += [
             meet(R[x.id], R[y.id]) for y in avail if can_meet(x, y) and not ctx.blocked(x.id, y.id)
         ]

@@ -1,0 +1,42 @@
+"""Exact mode's first phase (docs/planner.md, "Step bound"): a plan the step bound proves optimal
+is returned without A*; it must be exactly as short as plain A*'s, and valid."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.bench.cells import delivery_cell
+from hltl.planner import anytime, plan
+from hltl.planner.problem import Problem
+from hltl.planner.search import search
+from tests.oracles.validator import check_plan
+
+pytest.importorskip("ortools")
+
+
+@pytest.mark.parametrize(
+    ("layout", "n", "seed"),
+    [("grid", 4, 1), ("grid", 5, 0), ("grid", 3, 0), ("grid", 3, 4), ("random", 4, 0)],
+)
+def test_certified_plans_are_optimal(
+    layout: str, n: int, seed: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the phase runs on cells of more than PAIRS_UP_TO goals; let it run on small ones, where
+    # plain A* is quick and exact
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    c = delivery_cell(layout, n, seed)
+    got = plan(c.scene, c.spec, timeout=120)
+    expected = search(Problem(c.scene, c.spec), timeout=120)
+    assert got.solved and expected.solved
+    assert got.makespan == pytest.approx(expected.makespan)
+    check_plan(c.scene, c.spec, got.to_dict())
+
+
+def test_a_certified_plan_skips_the_search(monkeypatch: pytest.MonkeyPatch) -> None:
+    # grid 4 seed 1: the step bound is the optimum (3.3 s) and its schedule is a plan
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    c = delivery_cell("grid", 4, 1)
+    got = plan(c.scene, c.spec, timeout=120)
+    assert got.makespan == pytest.approx(3.3)
+    assert got.stats.expanded == 0
+    assert got.lower_bound == pytest.approx(3.3)
