@@ -28,15 +28,17 @@ HLTL = (sys.executable, "-m", "hltl.cli.main")
 # short waits so that recovering from a lost message costs little wall time
 FAST = BusTiming(timeout=0.1, retries=6)
 
+# (seeds whose first draws hit: the first message the node publishes is lost under "loss" and
+# "everything", so that the checks below that a fault really happened do not depend on chance)
 FAULTS = {
-    "loss": FaultModel(loss=0.25, seed=1),
+    "loss": FaultModel(loss=0.25, seed=14),
     "duplicates": FaultModel(duplicate=0.5, seed=2),
     "out_of_order": FaultModel(reorder=0.5, seed=3),
     "delay": FaultModel(delay=0.003, seed=4),
     "lost_replies": FaultModel(reply_loss=0.25, seed=5),
     "slow_subscriber": FaultModel(slow=0.004, seed=6),
     "everything": FaultModel(
-        loss=0.1, duplicate=0.2, reorder=0.2, delay=0.001, reply_loss=0.1, slow=0.001, seed=7
+        loss=0.1, duplicate=0.2, reorder=0.2, delay=0.001, reply_loss=0.1, slow=0.001, seed=14
     ),
 }
 

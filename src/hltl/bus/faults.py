@@ -62,7 +62,11 @@ class Link:
     def __init__(self, session: Any, faults: FaultModel | None = None, name: str = "") -> None:
         self.session = session
         self.faults = FaultModel() if faults is None else faults
-        self._rng = random.Random(f"hltl-bus-{name}-{self.faults.seed}")
+        # one random stream per kind of message, so that which messages a fault hits does not
+        # depend on how the node's publications and replies interleave in time
+        self._rng = random.Random(f"hltl-bus-{name}-{self.faults.seed}")  # published messages
+        self._rng_query = random.Random(f"hltl-bus-{name}-{self.faults.seed}-query")
+        self._rng_reply = random.Random(f"hltl-bus-{name}-{self.faults.seed}-reply")
         self._lock = threading.Lock()
         self._queue: list[tuple[float, int, str, bytes, bytes | None]] = []
         self._wake = threading.Condition(self._lock)
@@ -81,25 +85,26 @@ class Link:
     def reply_lost(self) -> bool:
         """Whether the next query reply is to be dropped."""
         with self._lock:
-            return self._chance(self.faults.reply_loss)
+            return self._chance(self.faults.reply_loss, self._rng_reply)
 
     def lost(self) -> bool:
         """Whether the next request (a query carrying commands) is to be dropped."""
         with self._lock:
-            return self._drop()
+            return self._drop(self._rng_query)
 
     def duplicated(self) -> bool:
         """Whether the next query is to be sent twice."""
         with self._lock:
-            return self._chance(self.faults.duplicate)
+            return self._chance(self.faults.duplicate, self._rng_query)
 
-    def _chance(self, p: float) -> bool:
-        """One draw of a fault of probability ``p`` (none when ``p`` is 0; under the lock)."""
-        return p > 0 and self._rng.random() < p
+    def _chance(self, p: float, rng: random.Random | None = None) -> bool:
+        """One draw of a fault of probability ``p`` (none when ``p`` is 0; under the lock), from
+        ``rng`` (default: the published messages' stream)."""
+        return p > 0 and (self._rng if rng is None else rng).random() < p
 
-    def _drop(self) -> bool:
+    def _drop(self, rng: random.Random | None = None) -> bool:
         """Whether the next message is lost (counted; under the lock)."""
-        if self._chance(self.faults.loss):
+        if self._chance(self.faults.loss, rng):
             self.dropped += 1
             return True
         return False
