@@ -30,12 +30,21 @@ from hltl.perception.openvocab import (
     WEIGHTS_ENV,
     OpenVocabBackend,
     Sam2Masker,
+    TransformersBoxModel,
     box_mask,
     label_of,
 )
 from hltl.perception.synthetic import make_camera, render
 from tests.perception.test_openvocab import SCENE, SOLIDS
-from tests.perception.tiny_hf import SAM_SIDE, save_clip, save_owlv2, save_sam2, torch, transformers
+from tests.perception.tiny_hf import (
+    SAM_SIDE,
+    save_clip,
+    save_grounding_dino,
+    save_owlv2,
+    save_sam2,
+    torch,
+    transformers,
+)
 
 
 @pytest.fixture(scope="module")
@@ -45,6 +54,7 @@ def weights(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         "owl": save_owlv2(root / "owlv2"),
         "sam": save_sam2(root / "sam2"),
         "clip": save_clip(root / "clip"),
+        "dino": save_grounding_dino(root / "grounding-dino"),
     }
 
 
@@ -234,3 +244,40 @@ def test_bad_weight_directories_are_one_clear_error(
     monkeypatch.setenv(SAM_ENV, str(tmp_path))
     with pytest.raises(BackendUnavailableError, match=SAM_ENV):
         make_backend("open-vocab", SCENE)
+
+
+def test_grounding_dino_boxes_are_named_by_the_query_whose_token_scores_highest(
+    weights: dict[str, Path],
+) -> None:
+    model = TransformersBoxModel(weights["dino"], threshold=-1.0)  # keep every box
+    assert model.grounding
+    queries = ("bottle", "chips", "crisps")
+    rgb = render(make_camera((0.5, -1.4, 1.2), (0.5, 0.3, 0.0), SOLIDS, 160, 120), SOLIDS).rgb
+    hits = model.boxes(rgb, queries)
+    # the oracle: the model and transformers' own post-processing called directly
+    proc = model.processor
+    inputs = proc(images=rgb, text="bottle . chips . crisps .", return_tensors="pt")
+    with torch.no_grad():
+        out = model.model(**inputs)
+    ref = proc.post_process_grounded_object_detection(
+        out, inputs.input_ids, threshold=0.0, text_threshold=0.0, target_sizes=[(120, 160)]
+    )[0]
+    assert len(hits) <= len(ref["boxes"]) == 20
+    clipped = [
+        (
+            min(max(b[0], 0), 160),
+            min(max(b[1], 0), 120),
+            min(max(b[2], 0), 160),
+            min(max(b[3], 0), 120),
+        )
+        for b in ref["boxes"].tolist()
+    ]
+    kept = [b for b in clipped if b[2] > b[0] and b[3] > b[1]]
+    np.testing.assert_allclose(sorted(h.box for h in hits), sorted(kept), atol=1e-3)
+    tokens = proc.tokenizer.convert_ids_to_tokens(inputs.input_ids[0].tolist())
+    at = [tokens.index(q) for q in queries]  # one token per query in the tiny vocabulary
+    probs = torch.sigmoid(out.logits[0])[:, at]
+    for hit in hits:
+        i = next(k for k, b in enumerate(clipped) if np.allclose(b, hit.box, atol=1e-3))
+        assert hit.query == queries[int(probs[i].argmax())]
+        assert hit.score == pytest.approx(float(probs[i].max()), abs=1e-5)

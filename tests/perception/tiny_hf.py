@@ -123,3 +123,51 @@ def save_sam2(path: Path, seed: int = 0) -> Path:
     torch.manual_seed(seed)
     t.Sam2Model(config).save_pretrained(path)
     return path
+
+
+GD_WORDS = ("[PAD]", "[UNK]", "[CLS]", "[SEP]", "[MASK]", ".", "bottle", "chips", "crisps", "cup")
+
+
+def save_grounding_dino(path: Path, seed: int = 0) -> Path:
+    """Grounding DINO with a one-stage-per-level Swin of 8–64 channels, a one-layer BERT over a
+    word-level vocabulary (each query word one token) and 20 box queries."""
+    t = transformers
+    tok = t.BertTokenizer(vocab={w: i for i, w in enumerate(GD_WORDS)})
+    swin = t.SwinConfig(
+        image_size=IMAGE,
+        patch_size=4,
+        embed_dim=8,
+        depths=[1, 1, 1, 1],
+        num_heads=[1, 1, 1, 1],
+        window_size=2,
+        out_features=["stage2", "stage3", "stage4"],
+    )
+    bert = t.BertConfig(
+        vocab_size=len(GD_WORDS),
+        hidden_size=WIDTH,
+        num_hidden_layers=1,
+        num_attention_heads=2,
+        intermediate_size=2 * WIDTH,
+        max_position_embeddings=64,
+    )
+    config = t.GroundingDinoConfig(
+        backbone_config=swin,
+        text_config=bert,
+        num_queries=20,
+        encoder_layers=1,
+        decoder_layers=2,  # its box heads are tied across decoder layers: at least two
+        encoder_ffn_dim=2 * WIDTH,
+        decoder_ffn_dim=2 * WIDTH,
+        encoder_attention_heads=2,
+        decoder_attention_heads=2,
+        d_model=WIDTH,
+        max_text_len=32,
+        encoder_n_points=2,
+        decoder_n_points=2,
+    )
+    torch.manual_seed(seed)
+    model = t.GroundingDinoForObjectDetection(config)
+    images = t.GroundingDinoImageProcessor(size={"shortest_edge": IMAGE, "longest_edge": 2 * IMAGE})
+    t.GroundingDinoProcessor(image_processor=images, tokenizer=tok).save_pretrained(path)
+    model.save_pretrained(path)
+    return path

@@ -140,27 +140,51 @@ class TransformersBoxModel:
         with torch.no_grad():
             out = self.model(**inputs)
         if self.grounding:
-            res = self.processor.post_process_grounded_object_detection(
-                out,
-                inputs.input_ids,
-                threshold=self.threshold,
-                text_threshold=self.threshold,
-                target_sizes=[(h, w)],
-            )[0]
-            labels = [str(x) for x in res.get("text_labels") or res.get("labels") or []]
+            rows = self._grounded(out, inputs.input_ids[0], queries, w, h)
         else:
             side = (max(h, w), max(h, w)) if self.square else (h, w)
             res = self.processor.image_processor.post_process_object_detection(
                 out, threshold=self.threshold, target_sizes=[side]
             )[0]
             labels = [queries[int(i)] for i in res["labels"]]
+            rows = list(zip(res["boxes"].tolist(), labels, res["scores"].tolist(), strict=True))
         hits = []
-        for b, lab, sc in zip(res["boxes"].tolist(), labels, res["scores"].tolist(), strict=True):
+        for b, lab, sc in rows:
             u0, v0 = min(max(b[0], 0.0), w), min(max(b[1], 0.0), h)
             u1, v1 = min(max(b[2], 0.0), w), min(max(b[3], 0.0), h)
             if u1 > u0 and v1 > v0:  # a box wholly outside the image (the padding) is dropped
                 hits.append(BoxHit((u0, v0, u1, v1), lab, float(sc)))
         return hits
+
+    def _grounded(
+        self, out: Any, ids: Any, queries: Sequence[str], w: int, h: int
+    ) -> list[tuple[list[float], str, float]]:
+        """Grounding DINO's boxes, each named by the query whose tokens it scores highest (its
+        post-processing names a box by every token over a threshold, joined: a phrase that
+        need not be one query). The prompt's tokens between the separating dots are the
+        queries' in order."""
+        torch = self._torch
+        dot = self.processor.tokenizer.convert_tokens_to_ids(".")
+        spans: list[tuple[int, int]] = []
+        start = 1  # after [CLS]
+        for k, tid in enumerate(ids.tolist()):
+            if tid == dot and k > start:
+                spans.append((start, k))
+                start = k + 1
+        if len(spans) != len(queries):
+            raise BackendUnavailableError(
+                f"the detector's tokenizer split {len(queries)} queries into {len(spans)} "
+                "phrases: cannot tell which query a box matches"
+            )
+        probs = torch.sigmoid(out.logits[0])  # (boxes, text tokens)
+        per = torch.stack([probs[:, a:b].max(dim=-1).values for a, b in spans], dim=-1)
+        score, best = per.max(dim=-1)
+        cx, cy, bw, bh = out.pred_boxes[0].unbind(-1)
+        corners = torch.stack(
+            [(cx - bw / 2) * w, (cy - bh / 2) * h, (cx + bw / 2) * w, (cy + bh / 2) * h], dim=-1
+        )
+        keep = torch.nonzero(score > self.threshold).flatten().tolist()
+        return [(corners[i].tolist(), queries[int(best[i])], float(score[i])) for i in keep]
 
 
 class Sam2Masker:
