@@ -50,6 +50,8 @@ SPAN0 = 16
 MAX_CHUNK = 8
 # a streamed stretch saves the cell every this many ticks (a command then replays fewer)
 CHECKPOINT = 8
+# most answered steps whose ticks wait for the node to be idle before going to observers
+LATER = 8
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -382,8 +384,10 @@ class CellNode:
             if query is None:
                 try:
                     query = self._steps.try_recv()
-                    if query is None:  # idle: now observers get what the executor has had,
-                        self._publish_later()  # and the cell is saved for the next commands
+                    # idle (or much waits): now observers get what the executor has had
+                    if query is None or len(self._later) >= LATER:
+                        self._publish_later()
+                    if query is None:  # and the cell is saved for the next commands
                         self._save_idle()
                         query = self._steps.recv()
                 except Exception:  # withdrawn: the node closed
@@ -440,6 +444,7 @@ class CellNode:
                 return None
             ep = self._episode(d.get("episode"))
             if d.get("end"):
+                self._publish_later()  # observers get the whole episode before its end
                 if ep.clock is not None:
                     ep.clock.stop.set()
                 self._ep = None
