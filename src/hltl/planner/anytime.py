@@ -523,9 +523,10 @@ def _schedule_at_start(
 
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
-    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed): the step bound
-    at the start node until ``until``, and the plan its schedule gives when that plan meets it,
-    which is then optimal (``step_bound``); None otherwise."""
+    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed): a prioritized
+    plan, then the step bound at the start node until ``until`` (bisected up to the plan's
+    makespan); a plan that meets the bound (the relaxation's schedule there, or the first
+    plan) is optimal and returned; None otherwise."""
     start = problem.start()
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
@@ -535,7 +536,15 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     h0 = heur(start)
     if math.isinf(h0):
         return None
-    return step_bound(problem, s, start, round(h0), None, until)[1]
+    best = construct(problem, s)
+    # levels shaved one by one (no upper): certification pays where the optimum is at or just
+    # above the start bound, where galloping's extra feasible questions cost most
+    ticks, found = step_bound(problem, s, start, round(h0), None, until)
+    if found is not None:
+        return found
+    if best is not None and ticks >= best[0]:
+        return best  # no relaxed schedule is shorter
+    return None
 
 
 def step_bound(
@@ -543,18 +552,19 @@ def step_bound(
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
-    ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and
-    a plan of exactly that makespan when the relaxation's schedule at the bound is one (or the
-    schedule with sessions whole is): then that plan is optimal. (``floor``, None) when the
-    bound does not apply; it is never below ``floor``."""
+    ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and a plan of exactly that makespan
+    when the relaxation's schedule at the bound is one (or the schedule with sessions whole
+    is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
+    bisect, without it they are shaved one by one (``schedule.schedule_bound``). (``floor``,
+    None) when the bound does not apply; it is never below ``floor``."""
     if not (lns.available() and schedule.steps_applicable(problem)):
         return floor, None
     heur = s.heuristic
     graph = heur.graph
     tgts = schedule.targets(problem, graph, start, heur.required_atoms(start[2]))
-    if not tgts or len(tgts) > SCHEDULE_UP_TO:
-        return floor, None
     if floor > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        return floor, None
+    if not tgts or len(tgts) > SCHEDULE_UP_TO:
         return floor, None
     res = schedule.schedule_bound(
         problem, graph, start, tgts, floor=floor, upper=upper, deadline=until, steps=True

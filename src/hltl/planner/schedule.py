@@ -153,10 +153,14 @@ def schedule_bound(
     (``time.perf_counter()`` time; building counts) passes. Never below ``floor``.
 
     With ``steps`` (only where ``steps_applicable``) the relaxation is the step-indexed one
-    (``_feasible_steps``), which also sees that a step lasts its longest instance.
+    (``relaxed_steps``), which also sees that a step lasts its longest instance; with an
+    ``upper`` too, the levels gallop up from ``floor`` and are then bisected below the first
+    feasible one (``_bisect``; a plan ends by ``upper``, so the relaxation is feasible there).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
+    if steps and upper is not None:
+        return _bisect(problem, graph, node, tgts, level, upper // unit, deadline, seed, floor)
     while upper is None or level * unit < upper:
         if steps:
             found = relaxed_steps(problem, graph, node, tgts, level, deadline, seed=seed)
@@ -169,6 +173,37 @@ def schedule_bound(
             return ScheduleBound(max(floor, level * unit), True, len(tgts), got)
         level += 1
     return ScheduleBound(max(floor, upper), True, len(tgts))
+
+
+def _bisect(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    lo: int,
+    hi: int,
+    deadline: float,
+    seed: int,
+    floor: int,
+) -> ScheduleBound:
+    """The step relaxation's optimum in [lo, hi] units (feasible at ``hi``): a "no" at a level
+    raises ``lo`` above it, a schedule lowers ``hi`` to it. The levels asked gallop up from
+    ``lo`` (lo, lo+1, lo+3, lo+7, ...: the optimum is often at or just above the known bound)
+    until one is feasible, then bisect. Most levels far below the optimum are never asked."""
+    unit = time_unit(problem)
+    at_hi: tuple[tuple[Instance, ...], ...] | None = None
+    gallop: int | None = 0
+    while lo < hi:
+        mid = (lo + hi) // 2 if gallop is None else min(lo + gallop, hi - 1)
+        found = relaxed_steps(problem, graph, node, tgts, mid, deadline, seed=seed)
+        if found is None:
+            return ScheduleBound(max(floor, lo * unit), False, len(tgts))
+        if found is False:
+            lo = mid + 1
+            gallop = None if gallop is None else 2 * gallop + 1
+        else:
+            hi, at_hi, gallop = mid, None if found is True else found, None
+    return ScheduleBound(max(floor, lo * unit), True, len(tgts), at_hi)
 
 
 def time_unit(problem: Problem) -> int:
