@@ -542,8 +542,19 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     ticks, found = step_bound(problem, s, start, round(h0), None, until)
     if found is not None:
         return found
-    if best is not None and ticks >= best[0]:
+    if best is None:
+        return None
+    if ticks >= best[0]:
         return best  # no relaxed schedule is shorter
+    gls = goals(s, start)
+    if gls and time.perf_counter() < until and _joint_possible(problem, gls):
+        # the relaxation's schedule was no plan: CP-SAT re-plans every goal jointly from the
+        # prioritized plan (any path, loops too), in as many steps as a plan of the bound has
+        shortest = min(i.lower for i in problem.instances)
+        slack = max(0, ticks // shortest - len(best[1]))
+        joint = _jointly(problem, s, _Router(s, start, gls), best, until, slack=slack)
+        if joint is not None and joint[0] <= ticks:
+            return joint
     return None
 
 

@@ -386,6 +386,7 @@ def relaxed_steps(
         m.add(start[k + 1] == start[k] + length)
     per_robot: list[list[Any]] = [[] for _ in p.robots]
     per_robot_step: dict[tuple[int, int], list[Any]] = {}
+    work: list[list[tuple[int, Any]]] = [[] for _ in p.robots]  # (duration, used) per robot
     fire_step: list[Any] = []
     every: list[tuple[Instance, list[tuple[int, Any]]]] = []
     for t in tgts:
@@ -444,6 +445,9 @@ def relaxed_steps(
             chosen.append((i, xs))
             u = m.new_bool_var("")
             m.add(u == sum(x for _, x in xs))
+            for r in range(len(p.robots)):
+                if i.executors >> r & 1:
+                    work[r].append((d, u))
             st = m.new_int_var(first, last, "")
             tm = m.new_int_var(0, level, "")  # when its step starts
             for k, x in xs:
@@ -495,6 +499,11 @@ def relaxed_steps(
     for lits in per_robot_step.values():
         if len(lits) > 1:
             m.add_at_most_one(lits)
+    # implied (each of a robot's instances fills a step of its own, lasting at least it), but
+    # stated: it gives CP-SAT's linear relaxation the per-robot load
+    for jobs in work:
+        if len(jobs) > 1:
+            m.add(sum(d * u for d, u in jobs) <= level)
     solved = solve_until(m, deadline, seed)
     if solved is None:
         return None
