@@ -523,19 +523,22 @@ def _schedule_at_start(
 
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
-    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed): a prioritized
-    plan, then the step bound at the start node until ``until`` (bisected up to the plan's
-    makespan); a plan that meets the bound (the relaxation's schedule there, or the first
-    plan) is optimal and returned; None otherwise."""
+    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
+    bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
+    the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
+    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal
+    and returned; None otherwise."""
     start = problem.start()
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
         return None
+    if not (lns.available() and schedule.steps_applicable(problem)):
+        return None
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
         return None
     h0 = heur(start)
-    if math.isinf(h0):
-        return None
+    if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        return None  # (lines: A* alone; the joint re-plan below would take the phase's time)
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
