@@ -311,9 +311,11 @@ def replay(s: _Search, node: Node, steps: Sequence[Sequence[Instance]]) -> _Foun
         for inst in U:
             if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
                 return None
-            if busy & inst.executors or len({i.obj for i in U}) != len(U):
+            if busy & inst.executors:
                 return None
             busy |= inst.executors
+        if len({i.obj for i in U}) != len(U):
+            return None
         step = tuple(sorted(U, key=lambda i: i.index))
         applied = s.apply(node, step)
         if applied is None:  # an instance has no motion from these hands
@@ -532,9 +534,10 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
         return None
-    if not (lns.available() and schedule.steps_applicable(problem)):
-        return None
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
+        return None
+    # in this order: importing CP-SAT (and pandas with it) costs a small plan its start-up
+    if not (schedule.steps_applicable(problem) and lns.available()):
         return None
     h0 = heur(start)
     if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
