@@ -44,16 +44,16 @@ KNOWN_MISSES = frozenset(
         "Put the cup on the shelf, it's cluttering the counter",
         # blind5: a surface name used as the verb
         "Shelf the bottle please",
-        # blind6 (tuned on in session 8): a leading 'after' clause whose main clause is a list
-        # of a clause and a gapped part ("…, the doctor should get X, and finally the visitor Y")
-        "After the technician has the bowl, the doctor should get the banana, and finally the "
-        "visitor the spoon",
-        # blind6: "whichever one <person> doesn't get" (a choice defined by a negated clause)
+        # blind6 (tuned on in session 8): "whichever one <person> doesn't get" (a choice
+        # defined by a negated clause)
         "Give Bob whichever one Alice doesn't get, and give Alice the bottle",
         # blind6: 'the other one' after a relative description, which is read later
         "Give Person B the thing nearest to Person B, and the other one to Person A",
         # blind6: a description per person ("the thing closest to them", 'them' each person)
         "Give each person the thing closest to them",
+        # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
+        # way round, and Carol the apple"): the swap is read only as the last words
+        "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -63,8 +63,8 @@ KNOWN_MISSES = frozenset(
 # 4, its misses fixed in session 5; "blind4" measured once in session 5, its misses fixed in
 # session 6; "blind5" measured once in session 6, its misses fixed in session 7; "blind6"
 # written in session 7 by another engineer, measured once, its misses fixed in session 8: all
-# asserted now)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# asserted now; "blind7" written in session 8 by another engineer, measured once)
+MEASURED_ONLY = frozenset({"blind7"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -83,6 +83,7 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind5"].entries}) >= 12
     assert len(CORPORA["blind6"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind6"].entries}) >= 12
+    assert len(CORPORA["causes8"].entries) >= 150
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

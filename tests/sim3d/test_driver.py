@@ -9,16 +9,17 @@ from typing import Any
 
 import pytest
 
+from hltl.execution.log import HumanMove as HumanMoveRecord
 from hltl.execution.log import LogRecord
 from hltl.sim import scenarios
 from hltl.sim.episode import Episode, EpisodeConfig, run_episode
-from hltl.sim.events import EventSchedule, events_from_dict, load_events
+from hltl.sim.events import EventSchedule, HumanMove, events_from_dict, load_events
 from hltl.spec.hierarchy import HSpec, load_spec, spec_from_dict
-from hltl.world.scene import Scene, load_scene, scene_from_dict
+from hltl.world.scene import Scene, Vec3, load_scene, scene_from_dict
 
 pytest.importorskip("mujoco")
 
-from hltl.sim3d.driver import MujocoSimulator
+from hltl.sim3d.driver import WALK_CLEARANCE, MujocoSimulator
 from hltl.sim3d.model import compile_scene
 
 SMALL_CELLS = ("1-1", "1-2", "2-1", "2-2")
@@ -81,7 +82,8 @@ def test_fig1_episode(examples_dir: Path) -> None:
     scene = load_scene(examples_dir / "scenes" / "fig1.yaml")
     spec = load_spec(examples_dir / "specs" / "fig1.yaml")
     events = load_events(examples_dir / "events" / "fig1.yaml", scene)
-    flat, deep = _both(scene, spec, events, "cost")
+    # people walking straight (as in the discrete simulator): the same episode, exactly
+    flat, deep = _both(scene, spec, events, "cost", walk_round_table=False)
     assert flat.success and deep.success
     assert _timed(deep) == _timed(flat)
     # with arm motions timing the actions, the person's walk meets a different stage of the
@@ -258,3 +260,43 @@ def test_fk_matches_the_motion_layer(examples_dir: Path) -> None:
             assert math.dist(tuple(p), stage.hand(robot.id)) < 1e-6
             z = stage.data.site_xmat[rig.hand_site].reshape(3, 3)[:, 2]
             assert np.allclose(rot[:, 2], z, atol=1e-6)
+
+
+class _StraightWalks(MujocoSimulator):
+    """The 3D simulator as it was until session 8: people walk straight, over the table."""
+
+    def _route(self, start: Vec3, to: Vec3) -> list[Vec3]:
+        return [to]
+
+
+def _walk_past_the_ur5(simulator: type[MujocoSimulator]) -> tuple[MujocoSimulator, list[Vec3]]:
+    """T6#0's cell with nobody else moving and no task: A walks from beside the Elfin-3 to
+    where the old T6 sent them, 0.25 m in front of B's spot, straight past the UR5's base."""
+    from hltl.bench.realworld import make_task
+
+    scene = make_task("T6", 0).scene
+    a, b = scene.human("A").position, scene.human("B").position
+    to = (b[0], b[1] - 0.25, 0.0)
+    sim = simulator(scene, EventSchedule(timed=(HumanMove(0.0, "A", to),)), seed=0)
+    path = []
+    for k in range(1, 81):
+        sim.advance(k * 0.05)
+        path.append(sim.human_position("A"))
+    assert path[-1] == pytest.approx(to) and a != to
+    return sim, path
+
+
+def test_people_walk_round_the_table_and_do_not_walk_into_the_arms() -> None:
+    straight, _ = _walk_past_the_ur5(_StraightWalks)
+    assert [(r, h) for _, r, h in straight.contacts] == [("r2", "A")]  # the old walk's contact
+    sim, path = _walk_past_the_ur5(MujocoSimulator)
+    assert sim.contacts == []
+    table = sim.stage.table_rect()
+    start, to = sim.scene.human("A").position, path[-1]
+    room = min(WALK_CLEARANCE, *(table.margin(p) for p in (start, to)))
+    assert room > 0.2
+    # every sampled position is outside the table grown by the clearance the two ends allow
+    assert min(table.margin(p) for p in path) >= room - 1e-6
+    (move,) = [r for r in sim.log.records if isinstance(r, HumanMoveRecord)]
+    assert move.wander is not None and len(move.wander) >= 2
+    assert move.wander[-1] == pytest.approx(list(to), abs=1e-6)

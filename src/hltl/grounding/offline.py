@@ -998,6 +998,13 @@ def _either_of_sequences(items: list[Item]) -> tuple[list[Item], list[Item]] | N
                 ors.append(n)
             elif j + 1 < len(items) and _is_person(items[j]) and _is_verb(items[j + 1]):
                 ors.append(n)  # "…, or Person A gets the cup and …"
+            elif (
+                j + 1 < len(items)
+                and _is_person(items[j])
+                and (_is(items[j + 1], "det") or items[j + 1].kind == "ent")
+                and not any(_is_verb(x) for x in items[k + 1 : n])
+            ):
+                ors.append(n)  # notes without verbs: "either Alice the cup and …, or Alice …"
     if len(ors) != 1:
         return None
     at = ors[0]
@@ -1386,7 +1393,17 @@ def _main_clause_start(items: list[Item]) -> int | None:
                 j += 1
             if j < len(items) and _is_verb(items[j]):
                 return k
-            if j + 1 < len(items) and items[j].kind == "ent" and _is_verb(items[j + 1]):
+            if j + 1 < len(items) and _is(items[j], "det") and _is_person(items[j + 1]):
+                j += 1  # "…, the doctor should get the banana": a person by role
+            n = j + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if (
+                j + 1 < len(items)
+                and items[j].kind == "ent"
+                and n < len(items)
+                and _is_verb(items[n])
+            ):
                 return k
     if len(commas) == 1:
         return commas[0]

@@ -190,6 +190,15 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     items = items[:cut] + items[end:]
                     k = cut
                 continue
+        if (
+            (k == 0 or (items[k - 1].kind == "punct" and items[k - 1].lemma in _END))
+            and _is(items[k], "det")
+            and k + 1 < len(items)
+            and _humans(items[k + 1])
+            and _opens_remark(items, k + 1)
+        ):
+            items = items[:k] + items[k + 1 :]  # "The doctor's running late, …": the person
+            continue
         if (at_start or after_comma) and _opens_remark(items, k):
             end = _clause_stop(items, k, at_start)
             rest = items[end:]
@@ -220,14 +229,31 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
 
 def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
     """'Person A is thirsty - bottle please': a remark about one person before objects alone
-    (no verb, person, surface or pronoun up to the end of the sentence) names who gets them,
-    as 'Person A: bottle'; before anything else it only goes."""
+    (no verb, person, surface or pronoun before the end of the sentence or the next part with
+    its own person: '…, and Bob the chips') names who gets them, as 'Person A: bottle'. Before
+    a request with a verb or a person it only goes; before anything else ('the bottle on the
+    shelf': Bob's, or a placement?) it is refused."""
     people = [x for x in remark if _humans(x)]
     stop = next((n for n, x in enumerate(rest) if x.kind == "punct" and x.lemma in _END), None)
-    head = rest[:stop]
-    bare = all(_objects(x) or _is(x, "det", "and", ",", "filler") for x in head)
-    if len(people) == 1 and bare and any(_objects(x) for x in head):
+    sent = rest[:stop]
+    head = sent
+    for n, x in enumerate(sent):
+        if n and _humans(x) and _is(sent[n - 1], ",", "and"):
+            head = sent[: n - 1]
+            break
+    bare = all(_objects(x) or _is(x, "det", "and", "or", ",", "filler") for x in head)
+    if bare and any(_objects(x) for x in head):
+        if len(people) != 1:
+            raise GroundingError(
+                f"who gets {_words_of(head)!r}? the remark before it names "
+                f"{len(people)} people: say 'give <person> …'"
+            )
         return [people[0], Item("punct", ",", ",")]
+    if not any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
+        raise GroundingError(
+            f"after a remark about {', '.join(x.text for x in people) or 'someone'}, "
+            f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
+        )
     return []
 
 
@@ -451,8 +477,13 @@ def _preambles(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 for x in head
             )
             rest = sent[comma + 1 :]
+            # "Whoever is closest, …": about which robot does it; no name, verb or keyword
+            # that negates, conditions, orders or chooses
+            who = head[0].text.lower() == "whoever" and all(
+                x.kind == "unknown" or _is(x, *_REMARK_WORDS, "nearest", "near") for x in head[1:]
+            )
             if (
-                plain
+                (plain or who)
                 and any(x.kind == "unknown" for x in head)
                 and not any(_hides_name(x, lexicon) for x in head)
                 and _speaker_opens(head)
@@ -509,6 +540,16 @@ def _whichever(items: list[Item]) -> list[Item]:
                 continue
             skipping, start = True, k
             continue
+        narrows = _is(it, "nearest", "near", "farthest", "not", "from") or (
+            it.lemma == "pronoun" and it.text.lower() in _PERSON_PRONOUNS
+        )
+        if skipping and (narrows or it.kind == "ent"):
+            # "…, whichever is further ok from her": a choice the clause narrows, which was
+            # not read; dropping it would widen the choice
+            raise GroundingError(
+                f"cannot read {_words_of(items[start : k + 2])!r}: say which one, e.g. 'the mug "
+                "nearest to Carol'"
+            )
         if skipping and _is_verb_item(it) and it.lemma in _COMMANDS | _PUTS:
             # "…, whichever give Bob the mugs": a request run on after the remark
             raise GroundingError(
@@ -852,6 +893,11 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             k += 4
             continue
         alone = _counted_alone(items, k)
+        if alone and _picked_both(out, alone[1]):
+            # "Pick up the cup and the apple and put both on the table": what was picked up
+            out.append(Item("word", "them", _words_of(items[k : k + alone[0]])))
+            k += alone[0]
+            continue
         if alone:  # "give Alice both", "Person B gets all four": that many objects
             n, count = alone
             said = items[k : k + n]
@@ -922,6 +968,12 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             elif _one_each(items, k):  # "give Alice and Bob one each": one object each
                 ids = [o.id for o in lexicon.scene.objects]
                 refs = tuple(Ref("object", i) for i in ids)
+                out.append(Item("ent", "one", it.text, refs, quant="some", group=k))
+                k += 1
+                continue
+            elif _one_then_other(items, k, lexicon):
+                # "Give Alice one and Bob the other" in a scene of two objects
+                refs = tuple(Ref("object", o.id) for o in lexicon.scene.objects)
                 out.append(Item("ent", "one", it.text, refs, quant="some", group=k))
                 k += 1
                 continue
@@ -1020,6 +1072,37 @@ def _something_given(items: list[Item], k: int) -> bool:
         and n >= 0
         and items[n].lemma in _COMMANDS
         and (nxt is None or nxt.kind == "punct" or _is(nxt, "and", "filler"))
+    )
+
+
+def _one_then_other(items: list[Item], k: int, lexicon: Lexicon) -> bool:
+    """Whether 'one' at ``k``, with no name after it, is answered by 'the other' later in its
+    sentence in a scene of exactly two objects: one of them, and the other one."""
+    if items[k].text.lower() != "one" or len(lexicon.scene.objects) != 2:
+        return False
+    nxt = items[k + 1] if k + 1 < len(items) else None
+    if nxt is not None and (_objects(nxt) or _is(nxt, "det")):
+        return False
+    for x in items[k + 1 :]:
+        if x.kind == "punct" and x.lemma in _END:
+            return False
+        if _is(x, "other"):
+            return True
+    return False
+
+
+def _picked_both(out: list[Item], count: int) -> bool:
+    """Whether every object named so far (``count`` of them, one mention each) is what a
+    'pick up' opening the instruction picked up, and a later verb follows it: 'both' is then
+    'them', the objects of that clause."""
+    verbs = [n for n, x in enumerate(out) if _is_verb_item(x)]
+    named = [n for n, x in enumerate(out) if _objects(x)]
+    return (
+        len(verbs) == 2
+        and out[verbs[0]].lemma == "verb:pick"
+        and len(named) == count
+        and all(verbs[0] < n < verbs[1] for n in named)
+        and all(len({r.id for r in out[n].refs}) == 1 and not out[n].quant for n in named)
     )
 
 
@@ -1245,6 +1328,19 @@ def _corrections(items: list[Item]) -> list[Item]:
             items = before + after  # "Sorry, give Bob the cup": nothing to correct
             k = len(before)
             continue
+        changed = any(x.text.lower() in CHANGES_OF_MIND for x in items[k:j])
+        if (
+            changed
+            and not whole
+            and sum(x.kind == "ent" for x in before[_sentences(before)[-1][0] :]) > 2
+        ):
+            # "give A the bottle and B the chips — on second thought, give them to B": a change of
+            # mind inside a sentence of several tasks, about one of them or all? (as across a
+            # full stop)
+            raise GroundingError(
+                f"{it.text!r} could change the whole sentence before it or only a part of it: "
+                "say the whole request again"
+            )
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
@@ -1823,6 +1919,10 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             ):
                 continue  # "give Alice her cup": a possessive after the person
             candidates = [p for p in seen if p not in _waiting(out, items, k)]
+            own = _own_person(out)
+            if own is not None:
+                # "… and Carol the mug nearest to her": the one person of that part
+                candidates = [own]
             if len(candidates) == 1:
                 out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
@@ -1859,6 +1959,30 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _own_person(out: list[Item]) -> str | None:
+    """The person a pronoun after 'nearest to' / 'farthest from' is measured from when its part
+    (back to a comma, 'and', 'then' or the sentence start) names exactly one person: 'Give
+    Alice the cup and Carol the mug nearest to her' is Carol's nearest mug. Else None."""
+    if not out or not _is(out[-1], "nearest", "near", "farthest"):
+        return None
+    people: set[str] = set()
+    n = len(out) - 2
+    while n >= 0:
+        if out[n].kind == "punct" or _is(out[n], "and", "then", "or"):
+            listed = (
+                0 < n < len(out) - 1
+                and _humans(out[n - 1])
+                and out[n - 1].lemma not in _PERSON_PRONOUNS  # "… nearest to her and Carol"
+                and _humans(out[n + 1])
+            )
+            if not listed:  # "Alice and Carol the mug nearest to her": a list of people
+                break
+        if _humans(out[n]):
+            people |= {r.id for r in out[n].refs}
+        n -= 1
+    return next(iter(people)) if len(people) == 1 else None
 
 
 def _waiting(out: list[Item], items: list[Item], k: int) -> set[str]:
@@ -2504,10 +2628,33 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if splits and plain and _is_verb_item(sent[0]):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
+        elif splits and _run_on_unclear(sent):
+            # "Give Dana the bowl put the cup on the tray, no wait, give it to Emma": how far
+            # back a correction or an order reaches across requests run together is unclear
+            # (session 8: a run-on fuzz read such corrections as taking back both)
+            k = splits[0]
+            raise GroundingError(
+                f"{_words_of(sent[max(0, k - 2) : k + 2])!r}: two requests run together; "
+                "join them with 'and' or a full stop"
+            )
         out.extend(sent)
         if end < len(items):
             out.append(items[end])
     return out
+
+
+def _run_on_unclear(sent: list[Item]) -> bool:
+    """Whether requests run together in ``sent`` meet a correction or an ordering word, which
+    could reach one request or both; a sentence opened by a subordinate clause ('as soon as
+    the cup is on the shelf give Carol the apple') is no run-on."""
+    n = 0
+    while n < len(sent) and _is(sent[n], "filler", ","):
+        n += 1
+    if n < len(sent) and _is(sent[n], "after", "before", "once", "prior"):
+        return False
+    return any(
+        _is(x, "correct", *_ORDERING) or (_is(x, "not") and x.text.lower() == "no") for x in sent
+    )
 
 
 # words that make a run-on unclear: joining, ordering, choosing, correcting, negating
@@ -2733,9 +2880,7 @@ def _swaps(items: list[Item]) -> list[Item]:
     out[a], out[b] = head[b], head[a]
     said = [x for x in items[start:at] if _is(x, "or")]
     if said:
-        # "…, or the other way round", "or vice versa": either way, not a correction
-        if any(x.kind == "punct" and x.lemma in _END for x in items[start:at]):
-            raise GroundingError(f"cannot read 'or {items[at].text}' after a full stop")
+        # "…, or the other way round", "…. Or vice versa.": either way, not a correction
         return [Item("word", "either", "either"), *head, Item("punct", ",", ","), said[0], *out]
     return out
 
@@ -2804,11 +2949,19 @@ def _any_restated(items: list[Item]) -> list[Item]:
             )
             if _is(nxt, "q:some") and nxt.text.lower().startswith("any") and named:
                 j += 1
-                while j < len(items) and items[j].text.lower() in _ANY_TAIL:
+                while j < len(items) and (
+                    items[j].text.lower() in _ANY_TAIL or _is(items[j], "filler")
+                ):
                     j += 1
                 if j == len(items) or items[j].kind == "punct" or _is(items[j], "and", "then"):
                     k = j
                     continue
+                # "a pen, any pen <words>": a second pen, or the same said again? (a fuzz found
+                # "…, any pen real quick" read as two pens)
+                raise GroundingError(
+                    f"'{prev.text}, {_words_of(items[k + 1 : j + 1])}': one of them or "
+                    "another one? say it once"
+                )
         out.append(it)
         k += 1
     return out
@@ -2885,9 +3038,10 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             continue
         j = k + 1
         while j < len(items) and (
-            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",")
+            _objects(items[j]) or _is(items[j], "det", "it", "filler", "and", ",", "both")
         ):
             j += 1
+        off = any(x.text.lower() == "off" for x in items[k + 1 : j])
         if (
             j > k + 1
             and j + 1 < len(items)
@@ -2896,11 +3050,22 @@ def _drop_onto(items: list[Item]) -> list[Item]:
             and (_is_surface(items[j + 1]) or _is(items[j + 1], "det"))
         ):
             out[k] = Item("word", "verb:put", it.text)
+        elif (
+            off
+            and j + 1 < len(items)
+            and _is(items[j], "with", "to", "for")
+            and (
+                _humans(items[j + 1])
+                or (j + 2 < len(items) and _is(items[j + 1], "det") and _humans(items[j + 2]))
+            )
+        ):  # "Drop the sponge off with Emma", "… with the intern": a hand-over
+            out[k] = Item("word", "verb:give", it.text)
+            out[j] = Item("word", "to", items[j].text)
     return out
 
 
 # an auxiliary standing for the verb phrase said before it ("…, Bob does")
-_ELLIPTIC = frozenset({"does", "do", "did", "will", "can", "would", "should"})
+_ELLIPTIC = frozenset({"does", "do", "will", "can"})  # not "would": "Omar would" is a guess
 
 
 def _elliptic_at(items: list[Item], k: int) -> bool:
@@ -2933,12 +3098,15 @@ def _ellipsis(items: list[Item]) -> list[Item]:
             del out[k + 1]  # "actually Bob does" is "actually Bob"
         else:
             before = k - 1
-            while before >= 0 and _is(out[before], "filler"):
-                before -= 1
-            if before >= 0 and _is(out[before], "and") and out[before].text.lower() == "but":
+            while before >= 0 and _is(out[before], "filler", "det"):
+                before -= 1  # "…, the visitor does"
+            but = before >= 0 and _is(out[before], "and") and out[before].text.lower() == "but"
+            if but:
                 before -= 1
             if before >= 0 and _is(out[before], ","):
                 out[: k + 2] = _contrasted(out[:before], out[k]) or out[: k + 2]
+            elif but and before >= 0:  # "Sam doesn't need the stapler but Priya does"
+                out[: k + 2] = _contrasted(out[: before + 1], out[k]) or out[: k + 2]
         k = min(k - 1, len(out) - 2)
     return out
 
@@ -2950,11 +3118,14 @@ def _contrasted(head: list[Item], person: Item) -> list[Item] | None:
     while start > 0 and not (head[start - 1].kind == "punct" and head[start - 1].lemma in _END):
         start -= 1
     clause = [x for x in head[start:] if not _is(x, "filler")]
+    if clause and _is(clause[0], "det"):
+        clause = clause[1:]  # "The doctor doesn't need …"
     if not (
         len(clause) >= 5
         and _humans(clause[0])
         and clause[0].refs != person.refs
         and _is(clause[1], "aux")
+        and clause[1].text.lower() in _ELLIPTIC  # not a report: "Alice didn't get the cup"
         and _is(clause[2], "not")
         and clause[3].lemma in (*_WANTS, "verb:have", "verb:receive", "verb:get")
         and all(_objects(x) or _is(x, "det", "and", ",") for x in clause[4:])
@@ -2976,6 +3147,18 @@ def _appositions(items: list[Item]) -> list[Item]:
         j = k + 2
         while j < len(items) and _is(items[j], "det"):
             j += 1
+        narrows = (
+            k + 1 < len(items)
+            and _is(items[k + 1], ",")
+            and j > k + 2
+            and j < len(items)
+            and _objects(items[j])
+            and {r.id for r in items[j].refs} < ids
+        )
+        if _objects(it) and any(r.plural for r in it.refs) and narrows:
+            raise GroundingError(
+                f"'{it.text}, {_words_of(items[k + 2 : j + 1])}': all of them, or only that one?"
+            )
         if (
             _objects(it)
             and not it.quant
@@ -3005,11 +3188,14 @@ def _floating_all(items: list[Item]) -> list[Item]:
         j = k + 1
         while j < len(items) and _is(items[j], "aux", "filler"):
             j += 1
+        n = len(out) - 1
+        while n >= 0 and _is(out[n], "aux", "filler"):
+            n -= 1  # "the cup and the mug should both go"
         if (
             it.kind == "word"
             and it.text.lower() in ("all", "both")
-            and out
-            and _objects(out[-1])
+            and n >= 0
+            and _objects(out[n])
             and j < len(items)
             and _is_verb_item(items[j])
         ):
@@ -3026,7 +3212,7 @@ def _listed_subjects(items: list[Item]) -> list[Item]:
     for start, end in _sentences(items):
         sent = items[start:end]
         j = 0
-        while j < len(sent) and (_objects(sent[j]) or _is(sent[j], "det", "and", ",")):
+        while j < len(sent) and (_objects(sent[j]) or _is(sent[j], "det", "and", "or", ",")):
             j += 1
         names = [x for x in sent[:j] if _objects(x)]
         v = j
@@ -3060,15 +3246,37 @@ def _whichever_near_at(items: list[Item], k: int, out: list[Item], lexicon: Lexi
     if not (k + 2 < len(items) and _is(items[k], ",")):
         return k
     j = k + 1
-    if items[j].text.lower() not in _WHICHEVER_ONE:
+    while (
+        j < len(items)
+        and _is(items[j], "filler", ",")
+        and items[j].text.lower() not in _WHICHEVER_ONE
+    ):
+        j += 1
+    if j >= len(items) or items[j].text.lower() not in _WHICHEVER_ONE:
         return k
     j += 1
-    while j < len(items) and items[j].text.lower() in _BE:
+    while j < len(items) and (items[j].text.lower() in _BE or _is(items[j], "filler")):
         j += 1
     return j if j < len(items) and _is(items[j], "nearest", "farthest") else k
 
 
+def _any_order(items: list[Item]) -> list[Item]:
+    """'…, in either order', 'the order doesn't matter': no order is asked for, so the words go;
+    beside words that order ('First give Bob the chips, then Alice the cup, in any order') the
+    instruction says two things and is refused."""
+    said = [x for x in items if _is(x, "any_order")]
+    if not said:
+        return items
+    ordering = next((x for x in items if _is(x, *_ORDERING) and not _is(x, "any_order")), None)
+    if ordering is not None:
+        raise GroundingError(
+            f"{said[0].text!r} and {ordering.text!r} in one instruction: is there an order or not?"
+        )
+    return [x for x in items if not _is(x, "any_order")]
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_any_order),
     _plain(_bare_notes),
     _plain(_floating_all),
     _plain(_listed_subjects),

@@ -309,7 +309,8 @@ class Simulator:
         if isinstance(ev, HumanMove):
             start = self.human_position(ev.human)
             self._walkers[ev.human].wander = None
-            eta = self._walk(ev.human, [ev.to], ev.speed)
+            points = self._route(start, ev.to)
+            eta = self._walk(ev.human, points, ev.speed)
             self.log.emit(
                 elog.HumanMove(
                     t=now,
@@ -318,6 +319,7 @@ class Simulator:
                     to=vec(ev.to),
                     speed=ev.speed,
                     eta=round(eta, 6),
+                    wander=[vec(p) for p in points] if len(points) > 1 else None,
                 )
             )
         elif isinstance(ev, HumanWander):
@@ -359,6 +361,11 @@ class Simulator:
             hid = self._busy.get(ev.robot)
             if hid is not None:
                 self._fail(self._actions[hid], f"robot {ev.robot} went down", "stay")
+
+    def _route(self, start: Vec3, to: Vec3) -> list[Vec3]:
+        """The points a person walking from ``start`` to ``to`` passes through (``to`` last):
+        straight here; the 3D simulator walks them around its table."""
+        return [to]
 
     def _walk(self, hid: str, points: Sequence[Vec3], speed: float) -> float:
         """Replace the person's future motion by a walk through ``points``; returns the arrival."""

@@ -21,6 +21,7 @@ from hltl.motion.planning import Cell, plan_action
 from hltl.motion.robots import has_model
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.events import EventSchedule
+from hltl.sim.route import route_around
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.model import SceneModel, compile_scene
 from hltl.sim3d.stage import DOWN, Contact, Stage
@@ -43,6 +44,8 @@ _APPROACH = 0.08  # pick and place come down onto the target from this far above
 _MEET_GAP = 0.05  # at a robot-to-robot handover each hand stops this short of the meeting point
 # rad: a given motion plan whose start is farther than this from an arm's joints is replanned
 START_TOLERANCE = 1e-3
+# m a walking person keeps from the table's edge (a shoulder's half-width and a hand's margin)
+WALK_CLEARANCE = 0.3
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,6 +72,9 @@ class MujocoSimulator(Simulator):
             the motion layer's rest pose (``Arm.home``), where its motion plans start.
         kinematics: reach, workspaces and ℓ(w) (e.g. the reachability maps of ``--motion``);
             None keeps the scene's spheres.
+        walk_round_table: people walk round the table (:meth:`_route`); False walks them
+            straight as the discrete simulator does (with ``cost`` timing, episodes are then
+            the discrete simulator's exactly).
 
     A motion plan given to :meth:`start` (the executor's, from its motion cost model) is played
     as it is when it starts where the arms are (within START_TOLERANCE); otherwise the instance
@@ -89,6 +95,7 @@ class MujocoSimulator(Simulator):
         contact_dt: float = 0.02,
         use_motion_layer: bool = True,
         kinematics: Kinematics | None = None,
+        walk_round_table: bool = True,
     ) -> None:
         if timing not in TIMINGS:
             raise ValueError(f"timing must be one of {', '.join(TIMINGS)}, got {timing!r}")
@@ -106,6 +113,7 @@ class MujocoSimulator(Simulator):
         self.timing = timing
         self.contact_dt = contact_dt
         self.stage = Stage(model if model is not None else compile_scene(scene))
+        self._table = self.stage.table_rect() if walk_round_table else None
         self._arms = _motion_arms(scene) if use_motion_layer else {}
         for rid, arm in self._arms.items():
             self.stage.rehome(rid, tuple(float(v) for v in arm.home))
@@ -166,6 +174,15 @@ class MujocoSimulator(Simulator):
 
     def motion_of(self, handle: Handle) -> MotionInfo | None:
         return self._plans.get(handle.id)
+
+    # -- people ----------------------------------------------------------------------------
+
+    def _route(self, start: Vec3, to: Vec3) -> list[Vec3]:
+        """People walk around the table the arms stand on, WALK_CLEARANCE from its edge (or
+        as far as where they start and stop allow), not through the arms above it."""
+        if self._table is None:
+            return [to]
+        return route_around(self._table, start, to, WALK_CLEARANCE)
 
     # -- time ----------------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from hltl.sim.route import Rect
 from hltl.sim3d.gl import mujoco
 from hltl.sim3d.model import TABLE_HEIGHT, RobotRig, SceneModel
 from hltl.world.geometry import home_point
@@ -75,6 +76,14 @@ class Stage:
     def robot_q(self, rid: str) -> tuple[float, ...]:
         rig = self.sm.robots[rid]
         return tuple(float(v) for v in self.data.qpos[list(rig.qpos_adr)])
+
+    def table_rect(self) -> Rect:
+        """The work table's top on the floor plan (its box geom in the compiled model)."""
+        m = self.model
+        body = int(self.mj.mj_name2id(m, self.mj.mjtObj.mjOBJ_BODY, "table"))
+        g = int(m.body_geomadr[body])
+        (cx, cy, _), (hx, hy) = m.body_pos[body], m.geom_size[g][:2]
+        return Rect(float(cx - hx), float(cx + hx), float(cy - hy), float(cy + hy))
 
     def object_lift(self, oid: str) -> float:
         """Height of an object's grasp point above its bottom (to stand it on a surface)."""

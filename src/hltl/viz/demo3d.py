@@ -300,8 +300,15 @@ def run_demo3d(
     model = compile_scene(cell)
 
     def make(*args: Any, **kw: Any) -> MujocoSimulator:
+        # Fig. 1's walk is the 2D demo's, straight across the cell's middle (through both
+        # workspaces, which is the story's halt), not round the table
         sim = MujocoSimulator(
-            *args, timing="cost", model=model, contact_dt=min(0.02, speed / fps), **kw
+            *args,
+            timing="cost",
+            model=model,
+            contact_dt=min(0.02, speed / fps),
+            walk_round_table=False,
+            **kw,
         )
         snaps.attach(sim)
         return sim
