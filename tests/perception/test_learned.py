@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from hltl.perception.frames import Frame
@@ -169,6 +169,8 @@ def _network(truth: int, share: float, split: float) -> PixelProbabilities:
     noise=st.floats(0.0, 0.005),
     seed=st.integers(0, 2**16),
 )
+# the lowest of 600 noisy points 1.3 cm under the table: the floor was taken as the plane under it
+@example(truth=0, plane=0.0, share=0.25, split=0.0, noise=0.004391391253862464, seed=11025)
 def test_a_red_object_seen_whole_is_named_by_its_height(
     truth: int, plane: float, share: float, split: float, noise: float, seed: int
 ) -> None:

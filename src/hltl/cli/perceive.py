@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 from typing import Any
 
 from hltl.errors import HltlError
+from hltl.perception.clipselect import CLIP_ENV, clip_embedder, crop_box, select_visual
 from hltl.perception.frames import FrameFolder
 from hltl.perception.language import Candidate, select
 from hltl.perception.objects import BACKENDS
@@ -47,7 +49,19 @@ def register(sub: Any) -> None:
         "depth confirmed by YOLO every 10th frame (default: segmentation when the folder has "
         "seg/, else depth)",
     )
-    p.add_argument("--select", metavar="WORDS", help="pick the object these words name (MiniLM)")
+    p.add_argument(
+        "--select",
+        metavar="WORDS",
+        help="pick the object these words name: by its label and the scene's words (MiniLM), "
+        "or by what it looks like in the last frame with --clip",
+    )
+    p.add_argument(
+        "--clip",
+        type=Path,
+        metavar="DIR",
+        help=f"local CLIP weights (transformers format; default ${CLIP_ENV}): --select compares "
+        "the words with each object's image crop",
+    )
     p.add_argument("--predictor", choices=("cv", "goal", "gru"), default="gru",
                    help="forecast drawn by --viz (default: gru)")  # fmt: skip
     p.add_argument("--json", action="store_true", help="print every frame's observation as JSON")
@@ -85,6 +99,7 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
     if args.viz is not None and scene is not None:
         predictor = make_predictor(args.predictor, scene)
     observations = []
+    frame = None
     for frame in folder:
         obs = perceiver.process(frame)
         observations.append(obs)
@@ -96,7 +111,17 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
                 args.viz / f"{frame.index:06d}.png"
             )
     selection = None
-    if args.select:
+    clip = args.clip or os.environ.get(CLIP_ENV)
+    by = "clip" if clip else "minilm"
+    if args.select and clip and frame is not None:
+        crops = []
+        for k, o in enumerate(observations[-1].objects):
+            box = crop_box(o.cylinder, folder.camera)
+            if box is not None:
+                u0, v0, u1, v1 = box
+                crops.append((o.id or f"{o.label}#{k}", frame.rgb[v0:v1, u0:u1]))
+        selection = select_visual(args.select, crops, clip_embedder(clip))
+    elif args.select:
         selection = _select(args.select, observations[-1], scene)
     if args.json:
         out: dict[str, Any] = {"frames": [o.to_dict() for o in observations]}
@@ -106,13 +131,15 @@ def _run(args: argparse.Namespace, folder: Any, scene: Any, backend: str, people
                 "id": selection.key,
                 "similarity": round(selection.similarity, 3),
                 "ambiguous": selection.ambiguous,
+                "by": by,
                 "message": selection.describe(),
             }
         print(json.dumps(out))
     else:
         _print(observations, backend, people, perceiver)
         if selection is not None:
-            print(f"select: {selection.describe()}")
+            how = " (CLIP, by appearance)" if by == "clip" else ""
+            print(f"select{how}: {selection.describe()}")
         if args.viz is not None:
             print(f"overlays: {args.viz}/")
     return 0

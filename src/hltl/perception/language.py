@@ -106,6 +106,7 @@ class Selection:
     word: str | None
     runner_up: str | None
     runner_up_similarity: float
+    threshold: float = THRESHOLD
 
     @property
     def ambiguous(self) -> bool:
@@ -120,7 +121,7 @@ class Selection:
         if self.key is None:
             near = f"; closest {self.runner_up!r} at {self.runner_up_similarity:.2f}"
             return (
-                f"nothing in view matches {self.query!r} (similarity < {THRESHOLD}"
+                f"nothing in view matches {self.query!r} (similarity < {self.threshold:g}"
                 f"{near if self.runner_up else ''})"
             )
         text = f"{self.query!r} → {self.key} (via {self.word!r}, similarity {self.similarity:.2f})"
@@ -138,7 +139,7 @@ def select(
     """The candidate whose words are most similar to ``query`` (cosine of MiniLM embeddings)."""
     emb = default_embedder() if embedder is None else embedder
     if not candidates:
-        return Selection(query, None, 0.0, None, None, 0.0)
+        return Selection(query, None, 0.0, None, None, 0.0, threshold)
     words = [w for c in candidates for w in c.words]
     owner = [c.key for c in candidates for _ in c.words]
     vecs = emb.embed([query, *words])
@@ -151,5 +152,5 @@ def select(
     (k1, (s1, w1)) = ranked[0]
     k2, s2 = (ranked[1][0], ranked[1][1][0]) if len(ranked) > 1 else (None, 0.0)
     if s1 < threshold:
-        return Selection(query, None, s1, None, k1, s1)
-    return Selection(query, k1, s1, w1, k2, s2)
+        return Selection(query, None, s1, None, k1, s1, threshold)
+    return Selection(query, k1, s1, w1, k2, s2, threshold)
