@@ -51,3 +51,20 @@ def test_command_table_help_matches_each_module() -> None:
         sub = next(a for a in parser._actions if a.dest == "command")
         shown = {c.dest: c.help for c in sub._choices_actions}  # type: ignore[attr-defined]
         assert shown[name] == help_, name
+
+
+def test_planning_a_small_cell_imports_no_heavy_module() -> None:
+    # exact mode's first phase is for 9-16-goal cells: a small plan (the paper's Fig. 1) must
+    # not pay for importing CP-SAT (and pandas with it) at start-up
+    code = (
+        "import sys\n"
+        "from hltl.planner import plan\n"
+        "from hltl.spec.hierarchy import load_spec\n"
+        "from hltl.world.scene import load_scene\n"
+        "scene = load_scene('examples/scenes/two_arms.yaml')\n"
+        "r = plan(scene, load_spec('examples/specs/fig1.yaml'), timeout=30)\n"
+        "assert r.solved\n"
+        f"print(','.join(m for m in {HEAVY!r} + ('pandas',) if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""

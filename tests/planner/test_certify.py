@@ -3,12 +3,14 @@ is returned without A*; it must be exactly as short as plain A*'s, and valid."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from hltl.bench.cells import delivery_cell
 from hltl.planner import anytime, plan
 from hltl.planner.problem import Problem
-from hltl.planner.search import search
+from hltl.planner.search import _Search, search
 from tests.oracles.validator import check_plan
 
 pytest.importorskip("ortools")
@@ -40,3 +42,16 @@ def test_a_certified_plan_skips_the_search(monkeypatch: pytest.MonkeyPatch) -> N
     assert got.makespan == pytest.approx(3.3)
     assert got.stats.expanded == 0
     assert got.lower_bound == pytest.approx(3.3)
+
+
+def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
+    # a 10-robot line's start bound (11.7 s) is more than STEPS_UP_TO shortest steps: neither
+    # the step bound nor CP-SAT's joint re-plan may take the phase's time from A*
+    def never(*_: object, **__: object) -> None:
+        raise AssertionError("called on a line")
+
+    monkeypatch.setattr(anytime, "_jointly", never)
+    monkeypatch.setattr(anytime, "step_bound", never)
+    c = delivery_cell("line", 10, 3)
+    problem = Problem(c.scene, c.spec)
+    assert anytime.certified(problem, _Search(problem), math.inf) is None

@@ -311,9 +311,11 @@ def replay(s: _Search, node: Node, steps: Sequence[Sequence[Instance]]) -> _Foun
         for inst in U:
             if locs[inst.obj] != inst.pre or any(r in held for r in inst.free):
                 return None
-            if busy & inst.executors or len({i.obj for i in U}) != len(U):
+            if busy & inst.executors:
                 return None
             busy |= inst.executors
+        if len({i.obj for i in U}) != len(U):
+            return None
         step = tuple(sorted(U, key=lambda i: i.index))
         applied = s.apply(node, step)
         if applied is None:  # an instance has no motion from these hands
@@ -523,19 +525,43 @@ def _schedule_at_start(
 
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
-    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed): the step bound
-    at the start node until ``until``, and the plan its schedule gives when that plan meets it,
-    which is then optimal (``step_bound``); None otherwise."""
+    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
+    bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
+    the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
+    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal
+    and returned; None otherwise."""
     start = problem.start()
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
         return None
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
         return None
-    h0 = heur(start)
-    if math.isinf(h0):
+    # in this order: importing CP-SAT (and pandas with it) costs a small plan its start-up
+    if not (schedule.steps_applicable(problem) and lns.available()):
         return None
-    return step_bound(problem, s, start, round(h0), None, until)[1]
+    h0 = heur(start)
+    if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        return None  # (lines: A* alone; the joint re-plan below would take the phase's time)
+    best = construct(problem, s)
+    # levels shaved one by one (no upper): certification pays where the optimum is at or just
+    # above the start bound, where galloping's extra feasible questions cost most
+    ticks, found = step_bound(problem, s, start, round(h0), None, until)
+    if found is not None:
+        return found
+    if best is None:
+        return None
+    if ticks >= best[0]:
+        return best  # no relaxed schedule is shorter
+    gls = goals(s, start)
+    if gls and time.perf_counter() < until and _joint_possible(problem, gls):
+        # the relaxation's schedule was no plan: CP-SAT re-plans every goal jointly from the
+        # prioritized plan (any path, loops too), in as many steps as a plan of the bound has
+        shortest = min(i.lower for i in problem.instances)
+        slack = max(0, ticks // shortest - len(best[1]))
+        joint = _jointly(problem, s, _Router(s, start, gls), best, until, slack=slack)
+        if joint is not None and joint[0] <= ticks:
+            return joint
+    return None
 
 
 def step_bound(
@@ -543,18 +569,19 @@ def step_bound(
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
-    ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and
-    a plan of exactly that makespan when the relaxation's schedule at the bound is one (or the
-    schedule with sessions whole is): then that plan is optimal. (``floor``, None) when the
-    bound does not apply; it is never below ``floor``."""
+    ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and a plan of exactly that makespan
+    when the relaxation's schedule at the bound is one (or the schedule with sessions whole
+    is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
+    bisect, without it they are shaved one by one (``schedule.schedule_bound``). (``floor``,
+    None) when the bound does not apply; it is never below ``floor``."""
     if not (lns.available() and schedule.steps_applicable(problem)):
         return floor, None
     heur = s.heuristic
     graph = heur.graph
     tgts = schedule.targets(problem, graph, start, heur.required_atoms(start[2]))
-    if not tgts or len(tgts) > SCHEDULE_UP_TO:
-        return floor, None
     if floor > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        return floor, None
+    if not tgts or len(tgts) > SCHEDULE_UP_TO:
         return floor, None
     res = schedule.schedule_bound(
         problem, graph, start, tgts, floor=floor, upper=upper, deadline=until, steps=True

@@ -153,10 +153,14 @@ def schedule_bound(
     (``time.perf_counter()`` time; building counts) passes. Never below ``floor``.
 
     With ``steps`` (only where ``steps_applicable``) the relaxation is the step-indexed one
-    (``_feasible_steps``), which also sees that a step lasts its longest instance.
+    (``relaxed_steps``), which also sees that a step lasts its longest instance; with an
+    ``upper`` too, the levels gallop up from ``floor`` and are then bisected below the first
+    feasible one (``_bisect``; a plan ends by ``upper``, so the relaxation is feasible there).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
+    if steps and upper is not None:
+        return _bisect(problem, graph, node, tgts, level, upper // unit, deadline, seed, floor)
     while upper is None or level * unit < upper:
         if steps:
             found = relaxed_steps(problem, graph, node, tgts, level, deadline, seed=seed)
@@ -169,6 +173,37 @@ def schedule_bound(
             return ScheduleBound(max(floor, level * unit), True, len(tgts), got)
         level += 1
     return ScheduleBound(max(floor, upper), True, len(tgts))
+
+
+def _bisect(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    lo: int,
+    hi: int,
+    deadline: float,
+    seed: int,
+    floor: int,
+) -> ScheduleBound:
+    """The step relaxation's optimum in [lo, hi] units (feasible at ``hi``): a "no" at a level
+    raises ``lo`` above it, a schedule lowers ``hi`` to it. The levels asked gallop up from
+    ``lo`` (lo, lo+1, lo+3, lo+7, ...: the optimum is often at or just above the known bound)
+    until one is feasible, then bisect. Most levels far below the optimum are never asked."""
+    unit = time_unit(problem)
+    at_hi: tuple[tuple[Instance, ...], ...] | None = None
+    gallop: int | None = 0
+    while lo < hi:
+        mid = (lo + hi) // 2 if gallop is None else min(lo + gallop, hi - 1)
+        found = relaxed_steps(problem, graph, node, tgts, mid, deadline, seed=seed)
+        if found is None:
+            return ScheduleBound(max(floor, lo * unit), False, len(tgts))
+        if found is False:
+            lo = mid + 1
+            gallop = None if gallop is None else 2 * gallop + 1
+        else:
+            hi, at_hi, gallop = mid, None if found is True else found, None
+    return ScheduleBound(max(floor, lo * unit), True, len(tgts), at_hi)
 
 
 def time_unit(problem: Problem) -> int:
@@ -351,6 +386,7 @@ def relaxed_steps(
         m.add(start[k + 1] == start[k] + length)
     per_robot: list[list[Any]] = [[] for _ in p.robots]
     per_robot_step: dict[tuple[int, int], list[Any]] = {}
+    work: list[list[tuple[int, Any]]] = [[] for _ in p.robots]  # (duration, used) per robot
     fire_step: list[Any] = []
     every: list[tuple[Instance, list[tuple[int, Any]]]] = []
     for t in tgts:
@@ -409,6 +445,9 @@ def relaxed_steps(
             chosen.append((i, xs))
             u = m.new_bool_var("")
             m.add(u == sum(x for _, x in xs))
+            for r in range(len(p.robots)):
+                if i.executors >> r & 1:
+                    work[r].append((d, u))
             st = m.new_int_var(first, last, "")
             tm = m.new_int_var(0, level, "")  # when its step starts
             for k, x in xs:
@@ -460,6 +499,11 @@ def relaxed_steps(
     for lits in per_robot_step.values():
         if len(lits) > 1:
             m.add_at_most_one(lits)
+    # implied (each of a robot's instances fills a step of its own, lasting at least it), but
+    # stated: it gives CP-SAT's linear relaxation the per-robot load
+    for jobs in work:
+        if len(jobs) > 1:
+            m.add(sum(d * u for d, u in jobs) <= level)
     solved = solve_until(m, deadline, seed)
     if solved is None:
         return None
