@@ -2999,8 +2999,6 @@ def _wished_for(items: list[Item]) -> list[Item]:
     return out
 
 
-# the passes of refine, in order (each may refuse): openings and questions first, then
-# quantities and corrections, then people and places, then remarks and the order of clauses
 # -- session 8 -------------------------------------------------------------------------------------
 
 # what may stand between the parts of a note without a verb ("person a bottle person b chips")
@@ -3275,6 +3273,8 @@ def _any_order(items: list[Item]) -> list[Item]:
     return [x for x in items if not _is(x, "any_order")]
 
 
+# the passes of refine, in order (each may refuse): openings and questions first, then
+# quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_any_order),
     _plain(_bare_notes),
