@@ -1602,8 +1602,22 @@ def _text(tokens: list[Token], i: int, n: int) -> str:
 
 
 def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
+    """A name that fits several entities; people are named as a person names them."""
     ids = sorted({r.id for r in item.refs})
+    if all(r.kind == "human" for r in item.refs):
+        names = [person_name(pid, lexicon) for pid in ids]
+        return GroundingError(
+            f"{item.text!r} is ambiguous: it could be {', '.join(names[:-1])} or {names[-1]}; "
+            "name the person"
+        )
     return GroundingError(
         f"{item.text!r} is ambiguous: it could be {', '.join(ids[:-1])} or {ids[-1]}; "
         "use the id or an alias, or say 'one of the …' if any will do"
     )
+
+
+def person_name(pid: str, lexicon: Lexicon) -> str:
+    """'Person B (Mr Lee, patient)': the label, then the other names the scene gives."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    extra = [a for a in human.aliases if a != human.name]
+    return f"{human.name} ({', '.join(extra)})" if extra else human.name

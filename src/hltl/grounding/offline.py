@@ -8,7 +8,15 @@ from typing import Literal
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
-from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, foreign_words, lex
+from hltl.grounding.lexicon import (
+    VERB_CLASS,
+    Item,
+    Lexicon,
+    ambiguous,
+    foreign_words,
+    lex,
+    person_name,
+)
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -56,6 +64,8 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     """
     lexicon = lexicon or Lexicon.of(scene)
     items = lex(text, lexicon)
+    # "again" said to repeat a task: read exactly (twice) or refused, never once
+    again = next((it for it in items if it.lemma == "filler" and it.text.lower() == "again"), None)
     shown = text.strip() if len(text.strip()) <= 60 else text.strip()[:57] + "..."
     if not [it for it in items if it.kind != "punct"]:
         if text.strip():
@@ -79,13 +89,28 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     node = parser.resolve(raw)
     if node is None:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
-    node = _dedupe(normalise(parser.expand(node, frozenset())))
+    node = normalise(parser.expand(node, frozenset()))
+    once = _dedupe(node)
+    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)):
+        twice = next(t for t in tasks(node) if sum(1 for u in tasks(node) if u == t) > 1)
+        raise GroundingError(
+            f"{again.text!r} asks for {_task_words(twice, lexicon)} a second time: an object "
+            "is handed over or placed only once; say each task once"
+        )
+    node = once
     if first:
         node = _move_first(node, first, lexicon)
     if dropped:
         node = _without(node, dropped)
     check_deliveries(node, {h.id: h.name for h in scene.humans})
     return node
+
+
+def _task_words(task: Task, lexicon: Lexicon) -> str:
+    """'the apple to Person A (Alice)' / 'the cup on shelf': a task as a refusal names it."""
+    if task.kind == "deliver":
+        return f"the {task.obj} to {person_name(task.target, lexicon)}"
+    return f"the {task.obj} on {task.target}"
 
 
 def _refuse(items: list[Item], lexicon: Lexicon) -> None:

@@ -16,6 +16,7 @@ from hltl.grounding.lexicon import (
     Lexicon,
     Ref,
     near_keyword,
+    person_name,
 )
 
 _END = frozenset({".", ";", "!", "?", ":"})
@@ -2040,11 +2041,7 @@ def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
 
 
 def _or(ids: list[str], lexicon: Lexicon) -> str:
-    names = []
-    for pid in ids:
-        h = next(h for h in lexicon.scene.humans if h.id == pid)
-        extra = [a for a in h.aliases if a != h.name]
-        names.append(f"{h.name} ({', '.join(extra)})" if extra else h.name)
+    names = [person_name(pid, lexicon) for pid in ids]
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
 
 
