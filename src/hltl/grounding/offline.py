@@ -894,7 +894,11 @@ class _Parser:
             given = [
                 n
                 for n, g in enumerate(frags[:k])
-                if g.target is not None and g.target.id == f.target.id and not g.subject
+                if g.target is not None
+                and g.target.id == f.target.id
+                # "Carol would like the cup, and Alice the bottle once Carol has it": a want
+                # naming its objects says what Carol is given, as "give Carol the cup" does
+                and (not g.subject or (g.objects is not None and not g.it and not g.them))
             ]
             if given:
                 heads = [frags[given[-1]]]
@@ -1273,7 +1277,10 @@ def _own_target(body: list[Item], j: int) -> bool:
     for k in range(j + 1, len(body) - 1):
         if _is(body[k], "and", ",", "or"):
             return False
-        if _is(body[k], "to", "for", "on") and body[k + 1].kind == "ent":
+        if _is(body[k], "to", "for", "on") and (
+            body[k + 1].kind == "ent"
+            or (_is(body[k + 1], "det") and k + 2 < len(body) and body[k + 2].kind == "ent")
+        ):
             return True
     return False
 

@@ -15,6 +15,7 @@ from hltl.grounding.lexicon import (
     Item,
     Lexicon,
     Ref,
+    common_words,
     near_keyword,
     person_name,
 )
@@ -336,6 +337,7 @@ def _opens_remark(items: list[Item], k: int) -> bool:
         or nxt.lemma == "verb:have"  # "she's got a meeting in five"
         or verb in _REMARK_VERBS
         or verb.endswith("ed")
+        or (verb.endswith("s") and not verb.endswith("ss") and verb in common_words())
         or (nxt.lemma in _WANTS and _something(items, j + 1))
     )
 
@@ -390,7 +392,11 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             continue
         if _progressive(words, n):
             continue  # "Emma's leaving soon": a verb with nothing to move
-        after = next((y for y in words[n + 1 :] if not _is(y, "det")), None)
+        if _is(x, "ask_for") and nxt is not None and nxt.kind == "unknown":
+            continue  # "keeps asking for water" (no scene name): nothing to bring
+        after = next((y for y in words[n + 1 :] if not _is(y, "det", "not")), None)
+        if x.lemma == "verb:have" and nxt is not None and _is(nxt, "not"):
+            nxt = after  # "Carol hasn't eaten": 'has' as an auxiliary, negated
         if x.lemma in _HAS and (
             reason
             or _something(words, n + 1)
@@ -662,6 +668,14 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
         return _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
+    if (
+        k + 2 < len(items)
+        and items[k].text.lower() in ("that", "which")
+        and items[k + 1].text.lower() in _BE
+        and _is(items[k + 2], "on")
+    ):  # "the pen that's on the desk": a relative clause describes, wherever it stands
+        j = _on_surface(items, k + 2, out, lexicon)
+        return k if j == k + 2 else j
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
     j = k + 1
@@ -709,7 +723,10 @@ def _given(before: list[Item]) -> bool:
         n -= 1
     if n < 2 or not _humans(before[n - 1]):
         return False
-    verb = before[n - 2]
+    n -= 1
+    while n > 1 and _is(before[n - 1], "det"):  # "give the intern the pen on the desk"
+        n -= 1
+    verb = before[n - 1]
     return verb.kind == "word" and verb.lemma in ("verb:give", "verb:hand", "verb:pass")
 
 
@@ -2086,9 +2103,15 @@ def _last(items: list[Item]) -> list[Item]:
     head = start
     while head < k and _is(items[head], "filler", "first", "subject", "aux"):
         head += 1
-    if head >= k or not (_is_verb_item(items[head]) or _humans(items[head])):
-        return items
     clause = items[start:k]
+    if head < k and not (_is_verb_item(items[head]) or _humans(items[head])):
+        part = _part_last(items[:start], clause)
+        if part is not None:
+            return part
+        if not (_starts_objects(items, head) and _own_clause(clause)):
+            return items  # "the cup and the apple last": both last, or the apple after the cup?
+    if head >= k:
+        return items
     before = list(items[:start])
     while before and _is(before[-1], ",", "and"):
         before.pop()
@@ -2106,6 +2129,60 @@ def _last(items: list[Item]) -> list[Item]:
     if not rest:
         return clause
     return [*rest, Item("punct", ".", "."), Item("word", "then", items[k].text), *clause]
+
+
+def _own_clause(clause: list[Item]) -> bool:
+    """Whether objects opening ``clause`` come with a verb or their own recipient or place
+    ('the jug goes on the locker', 'the apple to Carol'): then the clause is one step."""
+    for n, x in enumerate(clause):
+        if _is_verb_item(x):
+            return True
+        if _is(x, "to", "for", "on") and _starts_target(clause, n + 1):
+            return True
+    return False
+
+
+def _starts_target(items: list[Item], k: int) -> bool:
+    while k < len(items) and _is(items[k], "det"):
+        k += 1
+    return k < len(items) and items[k].kind == "ent" and not _objects(items[k])
+
+
+def _part_last(before: list[Item], clause: list[Item]) -> list[Item] | None:
+    """'Put the boxes on the conveyor, the big one last': the one named last is one of the
+    objects of the clause before, said without a verb or a place: that clause for the others,
+    then for it."""
+    named = [x for x in clause if not _is(x, "det", "filler")]
+    if len(named) != 1 or not _objects(named[0]):
+        return None
+    part = {r.id for r in named[0].refs}
+    body = list(before)
+    while body and _is(body[-1], ",", "and", "filler"):
+        body.pop()
+    start = max(
+        (n + 1 for n, x in enumerate(body) if x.kind == "punct" and x.lemma in _END), default=0
+    )
+    whole = [n for n in range(start, len(body)) if _objects(body[n])]
+    if len(whole) != 1 or any(_is(x, *_ORDERING, "or", "either", "and", ",") for x in body[start:]):
+        return None
+    w = body[whole[0]]
+    ids = {r.id for r in w.refs}
+    if w.quant == "some" or not part < ids:
+        return None
+    rest = replace(w, refs=tuple(r for r in w.refs if r.id not in part))
+    again = replace(named[0], refs=tuple(r for r in w.refs if r.id in part))
+    head = body[:start]
+    return [
+        *head,
+        *body[start : whole[0]],
+        rest,
+        *body[whole[0] + 1 :],
+        Item("punct", ".", "."),
+        Item("word", "then", "last"),
+        *body[start : whole[0]],
+        again,
+        *body[whole[0] + 1 :],
+    ]
 
 
 def _datives(items: list[Item]) -> list[Item]:
@@ -2621,8 +2698,15 @@ def _run_ons(items: list[Item]) -> list[Item]:
             and sent[k - 1].kind == "ent"
             and (sent[k + 1].kind == "ent" or _is(sent[k + 1], "det"))
         ]
+        # "alice needs the bottle bob needs the chips": a person and a possession verb
+        # after an object start a request as the sentence's first one does
+        said = _subject_run_on(sent, 0)
+        if said or (sent and _is_verb_item(sent[0])):
+            splits = sorted(
+                {*splits, *(k for k in range(2, len(sent) - 2) if _subject_run_on(sent, k))}
+            )
         plain = not any(x.kind == "punct" or _is(x, *_RUN_ON_STOPS) for x in sent)
-        if splits and plain and _is_verb_item(sent[0]):
+        if splits and plain and (_is_verb_item(sent[0]) or said):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
         elif splits and _run_on_unclear(sent):
@@ -2638,6 +2722,21 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if end < len(items):
             out.append(items[end])
     return out
+
+
+_POSSESSION = frozenset({"verb:want", "verb:need", "verb:have", "verb:receive", "verb:get"})
+
+
+def _subject_run_on(sent: list[Item], k: int) -> bool:
+    """Whether a request with its own subject starts at sent[k]: a person, then a possession
+    verb ('needs', 'wants', 'gets'), then an article or a name; after an object unless k is 0."""
+    return (
+        k + 2 < len(sent)
+        and _humans(sent[k])
+        and sent[k + 1].lemma in _POSSESSION
+        and (sent[k + 2].kind == "ent" or _is(sent[k + 2], "det"))
+        and (k == 0 or _objects(sent[k - 1]))
+    )
 
 
 def _run_on_unclear(sent: list[Item]) -> bool:
@@ -3270,10 +3369,393 @@ def _any_order(items: list[Item]) -> list[Item]:
     return [x for x in items if not _is(x, "any_order")]
 
 
+# -- session 9 -------------------------------------------------------------------------------------
+
+
+def _closing_also(items: list[Item]) -> list[Item]:
+    """'Alice wants the apple also': 'also' ending a clause after a name is 'too' (nothing),
+    not a join; ', whoever' ending a clause is 'whichever' ('Mr Lee or Mrs Khan can have the
+    magazine, whoever'; elsewhere, as in 'whoever wants it', it stays unknown)."""
+    out = list(items)
+    for k, x in enumerate(items):
+        ends = k + 1 == len(items) or items[k + 1].kind == "punct"
+        if ends and _is(x, "also") and x.text.lower() == "also" and items[k - 1].kind == "ent":
+            out[k] = Item("word", "filler", x.text)
+        if ends and x.kind == "unknown" and x.lemma == "whoever" and _is(items[k - 1], ","):
+            out[k] = Item("word", "whichever", x.text)
+    return out
+
+
+def _people_named(items: list[Item]) -> list[Item]:
+    """'Nurse Ruth', 'the patient Mr Lee': a name right after another name of the same person
+    (or of people including them) is that one person; 'the patients' (an alias several people
+    share, in the plural) is each of them, joined by 'and'."""
+    out: list[Item] = []
+    for x in items:
+        prev = out[-1] if out else None
+        if (
+            _humans(x)
+            and prev is not None
+            and _humans(prev)
+            and not any(r.plural for r in (*prev.refs, *x.refs))
+            and len({r.id for r in x.refs}) == 1
+            and x.refs[0].id in {r.id for r in prev.refs}
+        ):
+            out[-1] = replace(x, text=f"{prev.text} {x.text}")
+            continue
+        if _humans(x) and len(x.refs) > 1 and all(r.plural for r in x.refs):
+            for n, r in enumerate(x.refs):
+                if n:
+                    out.append(
+                        Item("word", "and", "and")
+                        if n == len(x.refs) - 1
+                        else Item("punct", ",", ",")
+                    )
+                out.append(Item("ent", x.lemma, x.text, (Ref("human", r.id),)))
+            continue
+        out.append(x)
+    return out
+
+
+def _superlatives(items: list[Item]) -> list[Item]:
+    """'the closest item to him' is 'the item closest to him'; 'whatever/whichever item is
+    nearest to him' is 'the item nearest to him' (one object, measured as _places measures)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            _is(x, "nearest", "farthest")
+            and " " not in x.text
+            and k + 2 < len(items)
+            and _objects(items[k + 1])
+            and (_is(items[k + 2], "to") or (_is(x, "farthest") and _is(items[k + 2], "from")))
+            and out
+            and _is(out[-1], "det")
+        ):
+            out += [items[k + 1], Item("word", x.lemma, f"{x.text} {items[k + 2].text}")]
+            k += 3
+            continue
+        if (
+            _is(x, "whichever", "whatever")
+            and x.text.lower() in ("whichever", "whatever")
+            and k + 3 < len(items)
+            and _objects(items[k + 1])
+            and items[k + 2].text.lower() in _BE
+            and _is(items[k + 3], "nearest", "farthest")
+        ):
+            out += [Item("word", "det", "the"), items[k + 1]]
+            k += 3
+            continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _notes(items: list[Item]) -> list[Item]:
+    """Notes without a verb, read as the notes the grammar knows ('the apple to Carol',
+    'Carol the apple', 'the cup on the shelf'):
+
+    - 'for Carol the apple, for Bob the bottle': 'for' opening a note before a person and
+      the objects goes;
+    - 'Pallet: the small box and the medium box': a surface, a colon or dash, then only
+      objects, is 'the small box and the medium box on the pallet';
+    - 'bottle to alice crisps to bob': in a sentence without a verb, a note's person or
+      surface after 'to'/'for'/'on' followed by an object ends the note (a comma).
+    """
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        verbless = not any(_is_verb_item(x) for x in sent)
+        sent = [
+            x
+            for k, x in enumerate(sent)
+            if not (
+                _is(x, "for")
+                and _note_start(sent, k)
+                and k + 2 < len(sent)
+                and _humans(sent[k + 1])
+                and any(_objects(y) for y in sent[k + 2 : k + 4])
+                and all(_objects(y) or _is(y, "det") for y in sent[k + 2 : k + 4])
+            )
+        ]
+        if verbless:
+            cut = [
+                k
+                for k in range(2, len(sent) - 1)
+                if sent[k].kind == "ent"
+                and not _objects(sent[k])
+                and _is(sent[k - 1], "to", "for", "on")
+                and (
+                    _objects(sent[k + 1])
+                    or (_is(sent[k + 1], "det") and k + 2 < len(sent) and _objects(sent[k + 2]))
+                )
+            ]
+            for k in reversed(cut):
+                sent.insert(k + 1, Item("punct", ",", ","))
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _note_start(sent: list[Item], k: int) -> bool:
+    """Whether only fillers, separators or ordering words stand before sent[k] in its clause."""
+    n = k - 1
+    while n >= 0 and _is(sent[n], "filler", "then", "first"):
+        n -= 1
+    return n < 0 or _is(sent[n], ",", "and")
+
+
+def _surface_notes(items: list[Item]) -> list[Item]:
+    """'Pallet: small box and medium box.', 'then the belt - the tape': a surface opening a
+    clause, a colon or dash, then only objects up to the end of the sentence, is 'the small box
+    and the medium box on the pallet'."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        opens = _note_start(items, k - 1 if k and _is(items[k - 1], "det") else k) or (
+            _opening(items, k - 1 if k and _is(items[k - 1], "det") else k)
+        )
+        if _is_surface(x) and opens and k + 2 < len(items) and _is(items[k + 1], ":", "-"):
+            end = k + 2
+            while end < len(items) and not (
+                (items[end].kind == "punct" and items[end].lemma in _END)
+                or (_is(items[end], ",") and not _starts_objects(items, end + 1))
+            ):
+                end += 1
+            things = items[k + 2 : end]
+            while things and _is(things[-1], ",", "filler"):
+                things.pop()
+            if any(_objects(y) for y in things) and all(
+                _objects(y) or _is(y, "det", "and", ",", "or", "either", "both", "filler")
+                for y in things
+            ):
+                if out and _is(out[-1], "det"):
+                    out.pop()
+                out += [*things, Item("word", "on", "on"), x]
+                k = end
+                continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _in_between(items: list[Item]) -> list[Item]:
+    """'First X, last Y, and in between Z': three parts of a sentence, opened by 'first',
+    'last' and 'in between' (in any order), are the steps X, Z, Y."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        out.extend(_between(sent) or sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _between(sent: list[Item]) -> list[Item] | None:
+    cuts = [n for n, x in enumerate(sent) if _is(x, ",")]
+    parts: list[list[Item]] = []
+    begin = 0
+    for n in [*cuts, len(sent)]:
+        part = sent[begin:n]
+        while part and _is(part[0], "and", "filler"):
+            part = part[1:]
+        parts.append(part)
+        begin = n + 1
+    rank: dict[int, list[Item]] = {}
+    for part in parts:
+        if len(part) > 2 and part[0].text.lower() == "in" and part[1].lemma == "between":
+            rank.setdefault(2, []).append(part)
+            parts_body = part[2:]
+        elif len(part) > 1 and part[0].text.lower() in ("first", "firstly", "last", "lastly"):
+            rank.setdefault(1 if part[0].text.lower().startswith("first") else 3, []).append(part)
+            parts_body = part[1:]
+        else:
+            return None
+        if any(_is(x, *_ORDERING) for x in parts_body):
+            return None
+    if sorted(rank) != [1, 2, 3] or any(len(v) != 1 for v in rank.values()):
+        return None
+    steps = [rank[1][0][1:], rank[2][0][2:], rank[3][0][1:]]
+    return [
+        *steps[0],
+        Item("punct", ",", ","),
+        Item("word", "then", "then"),
+        *steps[1],
+        Item("punct", ",", ","),
+        Item("word", "then", "then"),
+        *steps[2],
+    ]
+
+
+def _last_opening(items: list[Item]) -> list[Item]:
+    """'First X, last Y': 'last' opening the final clause of the instruction is 'lastly'."""
+    out = list(items)
+    for k, x in enumerate(items):
+        opens = _opening(items, k) or _note_start(items, k)
+        if not (_is(x, "last") and x.text.lower() == "last" and opens and k):
+            continue
+        after = items[k + 1 :]
+        while after and _is(after[0], ",", "filler"):
+            after = after[1:]
+        while after and (after[-1].kind == "punct" or _is(after[-1], "filler")):
+            after = after[:-1]
+        if after and not any(y.kind == "punct" or _is(y, *_ORDERING, "meanwhile") for y in after):
+            out[k] = Item("word", "then", x.text)
+    return out
+
+
+def _so_after_remark(items: list[Item]) -> list[Item]:
+    """'Tom's loading the truck so he needs the gloves': a remark opening a sentence, then
+    'so' and a request, is the remark, a comma, and the request (_remarks then reads it)."""
+    out = list(items)
+    for k, x in enumerate(items):
+        if not (x.kind == "word" and x.text.lower() == "so" and 0 < k < len(items) - 1):
+            continue
+        start = k - 1
+        while start > 0 and items[start - 1].kind != "punct":
+            start -= 1
+        if not (_opening(items, start) or start == 0) or not _opens_remark(items, start):
+            continue
+        nxt = items[k + 1]
+        if _is_verb_item(nxt) or _humans(nxt) or nxt.lemma == "pronoun" or _is(nxt, "aux"):
+            out[k] = Item("punct", ",", x.text)
+    return out
+
+
+def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Ruth wants the blue blanket on the bedside table': a person wanting objects on a
+    surface wants them put there (the person gets nothing), as 'put the blue blanket on the
+    bedside table'. Not when one of them starts on that surface ('Alice wants the mug on the
+    shelf' may describe which mug she wants) or more words follow the surface."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if _humans(x) and (_opening(items, k) or _note_start(items, k)):
+            n = k + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if n < len(items) and items[n].lemma in _WANTS:
+                j = n + 1
+                while j < len(items) and (
+                    _objects(items[j]) or _is(items[j], "det", "and", ",", "or")
+                ):
+                    j += 1
+                things = items[n + 1 : j]
+                m = j + 1
+                while m < len(items) and _is(items[m], "det"):
+                    m += 1
+                if (
+                    any(_objects(y) for y in things)
+                    and j + 1 < len(items)
+                    and _is(items[j], "on")
+                    and _starts_surface(items, j + 1)
+                    and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
+                    and not _lying_on(things, items[m], lexicon)
+                ):
+                    out.append(Item("word", "verb:put", items[n].text))
+                    k = n + 1
+                    continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _lying_on(things: list[Item], surface: Item, lexicon: Lexicon) -> bool:
+    """Whether one of the objects ``things`` name starts on ``surface``."""
+    ids = {r.id for y in things if _objects(y) for r in y.refs}
+    for s in lexicon.scene.surfaces:
+        if s.id in {r.id for r in surface.refs}:
+            (cx, cy), (sx, sy) = s.center[:2], s.size
+            for o in lexicon.scene.objects:
+                if (
+                    o.id in ids
+                    and abs(o.position[0] - cx) <= sx / 2
+                    and abs(o.position[1] - cy) <= sy / 2
+                ):
+                    return True
+    return False
+
+
+def _starts_surface(items: list[Item], k: int) -> bool:
+    while k < len(items) and _is(items[k], "det"):
+        k += 1
+    return k < len(items) and _is_surface(items[k])
+
+
+def _restated(items: list[Item]) -> list[Item]:
+    """Words said again in another order or form:
+
+    - 'the cup and the bottle, both of them to Carol': 'both/all (of) them' right after a list
+      of objects and a comma says again that it is every one of them ('both' must still count
+      two);
+    - 'Please you give to Tom the gloves': 'give to <person> <objects>' is 'give <person>
+      <objects>';
+    - 'give person a the apple the chips and the cup': objects said one after the other
+      without commas, before an 'and'/'or' that ends the list, are a list.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        nxt = items[k + 1] if k + 1 < len(items) else None
+        if (
+            nxt is not None
+            and _is(nxt, "pronoun")
+            and nxt.text.lower() == "them"
+            and x.text.lower() in ("both of", "all of", "both", "all")
+            and len(out) > 1
+            and _is(out[-1], ",")
+            and _objects(out[-2])
+        ):
+            if x.text.lower().startswith("both"):
+                out.append(Item("word", "both", "both"))
+            else:
+                out.pop()  # 'all of them': every one of the list, as it says already
+            k += 2
+            continue
+        if (
+            x.kind == "word"
+            and x.lemma in ("verb:give", "verb:hand", "verb:pass")
+            and nxt is not None
+            and _is(nxt, "to")
+            and k + 2 < len(items)
+            and _humans(items[k + 2])
+            and _starts_objects(items, k + 3)
+        ):
+            out += [x, items[k + 2]]
+            k += 3
+            continue
+        out.append(x)
+        if _objects(x) and _starts_objects(items, k + 1) and _list_ahead(items, k + 1):
+            out.append(Item("punct", ",", ","))
+        k += 1
+    return out
+
+
+def _list_ahead(items: list[Item], k: int) -> bool:
+    """Whether objects from ``k`` run, without other words, to an 'and'/'or' and one more."""
+    n = k
+    while n < len(items) and (_objects(items[n]) or _is(items[n], "det")):
+        n += 1
+    return n + 1 < len(items) and _is(items[n], "and", "or") and _starts_objects(items, n + 1)
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_any_order),
+    _plain(_closing_also),
+    _plain(_people_named),
+    _plain(_restated),
+    _plain(_notes),
+    _plain(_surface_notes),
+    _plain(_in_between),
+    _plain(_last_opening),
+    _wanted_on,
     _plain(_bare_notes),
     _plain(_floating_all),
     _plain(_listed_subjects),
@@ -3295,6 +3777,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_questions),
     _plain(_do_for),
     _plain(_after_all),
+    _plain(_superlatives),
     _rest,
     _whatever_near,
     _plain(_any_restated),
@@ -3314,6 +3797,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_instead_of),
     _plain(_exclusions),
     _plain(_respectively),
+    _plain(_so_after_remark),
     _speaker,
     _persons,
     _plain(_not_wanted),
