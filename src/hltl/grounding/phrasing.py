@@ -3564,21 +3564,20 @@ def _between(sent: list[Item]) -> list[Item] | None:
             part = part[1:]
         parts.append(part)
         begin = n + 1
-    rank: dict[int, list[Item]] = {}
+    rank: dict[int, list[list[Item]]] = {}
     for part in parts:
         if len(part) > 2 and part[0].text.lower() == "in" and part[1].lemma == "between":
-            rank.setdefault(2, []).append(part)
-            parts_body = part[2:]
+            place, body = 2, part[2:]
         elif len(part) > 1 and part[0].text.lower() in ("first", "firstly", "last", "lastly"):
-            rank.setdefault(1 if part[0].text.lower().startswith("first") else 3, []).append(part)
-            parts_body = part[1:]
+            place, body = (1 if part[0].text.lower().startswith("first") else 3), part[1:]
         else:
             return None
-        if any(_is(x, *_ORDERING) for x in parts_body):
+        if any(_is(x, *_ORDERING) for x in body):
             return None
+        rank.setdefault(place, []).append(body)
     if sorted(rank) != [1, 2, 3] or any(len(v) != 1 for v in rank.values()):
         return None
-    steps = [rank[1][0][1:], rank[2][0][2:], rank[3][0][1:]]
+    steps = [rank[1][0], rank[2][0], rank[3][0]]
     return [
         *steps[0],
         Item("punct", ",", ","),
