@@ -190,6 +190,10 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("but", "before", "that"): "prior",
     ("but", "before", "this"): "prior",
     ("before", "that"): "prior",
+    ("prior", "to"): "before",  # formal: "… prior to Bob receiving the chips"
+    ("is", "due"): "verb:need",  # "Mrs Khan is due her tablets": she needs them
+    ("'s", "due"): "verb:need",
+    ("are", "due"): "verb:need",
     ("before", "this"): "prior",
     ("in", "that", "order"): "in_order",
     ("in", "this", "order"): "in_order",
@@ -741,6 +745,10 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "chips": ("crisps",),
     "crisps": ("chips",),
     "bottle": ("water", "water bottle"),  # "could Person A have the water"
+    # medicine said in the words of a ward ("Meds to Mr Lee first")
+    "pills": ("meds", "medication", "medicine", "tablets"),
+    "medication": ("meds", "medicine", "pills", "tablets"),
+    "medicine": ("meds", "medication", "pills", "tablets"),
 }
 # words naming any person: "give the person the bottle" (with one person; else ambiguous)
 GENERIC_PEOPLE = ("person", "human")

@@ -372,14 +372,16 @@ class _Parser:
                 result is not None
                 and conn in ("after", "once")
                 and split is not None
-                and _is(seg[split - 1], ",")  # only a comma ends the condition mid-sentence
+                # a comma ends the condition mid-sentence, or a command in its plain form
+                # ("…, and once it's there give Tom the scanner")
+                and (_is(seg[split - 1], ",") or _plain_command(seg, split))
             ):
                 # "A and, once X, Y": Y waits for X; A stands beside them
                 cut = split - 1
                 self._segment += 1
                 sub = self.coord(seg[:cut])
                 self._segment += 1
-                main = self.coord(seg[cut + 1 :])
+                main = self.coord(seg[cut + 1 :] if _is(seg[cut], ",") else seg[cut:])
                 result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
                 continue
             self._segment += 1
@@ -1413,6 +1415,16 @@ def _strip_separators(items: list[Item]) -> list[Item]:
     return items[k:]
 
 
+_PLAIN_COMMANDS = frozenset({"give", "hand", "pass", "bring", "take", "put", "place", "fetch"})
+
+
+def _plain_command(seg: list[Item], split: int) -> bool:
+    """Whether the main clause found at ``split`` of [conn, *seg] opens with a command in its
+    plain form ('hand him the jug'), which ends a condition said without a comma."""
+    it = seg[split - 1]
+    return _is_verb(it) and it.text.lower() in _PLAIN_COMMANDS
+
+
 def _main_clause_start(items: list[Item]) -> int | None:
     """Where the main clause of 'after X, Y' starts: at 'then', or a comma before a clause."""
     commas = [k for k, it in enumerate(items) if _is(it, ",")]
@@ -1446,9 +1458,9 @@ def _main_clause_start(items: list[Item]) -> int | None:
     predicate = named = False
     for k in range(1, len(items)):
         it = items[k]
-        if it.kind == "ent":
+        if it.kind == "ent" or _is(it, "it"):  # "once it's there give Tom the scanner"
             named = True
-        elif _is(it, "aux") and it.text.lower() in ("is", "are", "was", "were", "'s"):
+        elif _is(it, "aux", "filler") and it.text.lower() in ("is", "are", "was", "were", "'s"):
             predicate = True
         elif _is_verb(it):
             if _is(items[k - 1], "aux", "subject", "to") or _is_verb(items[k - 1]):

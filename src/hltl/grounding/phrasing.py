@@ -394,6 +394,16 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             continue  # "Emma's leaving soon": a verb with nothing to move
         if _is(x, "ask_for") and nxt is not None and nxt.kind == "unknown":
             continue  # "keeps asking for water" (no scene name): nothing to bring
+        if (
+            x.lemma in _WANTS
+            and n > 0
+            and _humans(words[n - 1])
+            and {r.id for r in words[n - 1].refs} <= said
+            and nxt is not None
+            and _is(nxt, "it", "them")
+            and n + 2 == len(words)
+        ):
+            continue  # "… to Carol, she said she wants it": the request, said again
         after = next((y for y in words[n + 1 :] if not _is(y, "det", "not")), None)
         if x.lemma == "verb:have" and nxt is not None and _is(nxt, "not"):
             nxt = after  # "Carol hasn't eaten": 'has' as an auxiliary, negated
@@ -1531,6 +1541,14 @@ def _nobody(items: list[Item]) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "aux", "filler"):
                 j += 1
+            if (  # "<P> doesn't get anything": nothing
+                j + 2 < len(items)
+                and _is(items[j], "not")
+                and items[j].text.lower() in ("n't", "not")
+                and items[j + 1].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
+                and items[j + 2].text.lower() == "anything"
+            ):
+                items = [*items[:j], items[j + 1], Item("word", "not", "nothing"), *items[j + 3 :]]
             if (
                 j + 1 < len(items)
                 and items[j].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
@@ -2344,6 +2362,13 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         n, count = found
         words = " ".join(x.text for x in items[k : k + n])
         others = items[:k] + items[k + n :]
+        each = _others_of_one(items, k, n, count)
+        if each is not None:  # "one pen for Sam and the other two for Priya"
+            if out and _is(out[-1], "det"):
+                out.pop()
+            out += each[0]
+            k += each[1]
+            continue
         if _choices(others) or any(_rest_at(items, j) for j in range(k + n, len(items))):
             raise GroundingError(
                 f"{words!r}: what is left depends on a choice or another 'rest'; name the objects"
@@ -2363,6 +2388,48 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(Item("ent", words.lower(), words, refs, quant="all"))
         k += n
     return out
+
+
+def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[Item], int] | None:
+    """'One pen for Sam and the other two for Priya': 'the other N' after the one choice of the
+    instruction ('one pen', 'a pen'), of a kind the scene has N + 1 of, is every pen but the
+    one chosen: N more choices of that kind, each a different one ('another pen and another
+    pen'), and how many words that reads. None when it is not that."""
+    if not (_is(items[k], "other") and count):
+        return None
+    chosen = [
+        j
+        for j in range(len(items))
+        if _objects(items[j])
+        and j
+        and items[j - 1].text.lower() in ("a", "an", "one")
+        and len({r.id for r in items[j].refs}) > 1
+    ]
+    rest = items[:k] + items[k + n :]
+    if (
+        len(chosen) != 1
+        or chosen[0] > k
+        or any(_is(x, "or", "either", "q:some", "whichever") for x in rest)
+    ):
+        return None
+    noun = items[chosen[0]]
+    kind = {r.id for r in noun.refs}
+    named = [
+        x
+        for j, x in enumerate(rest)
+        if _objects(x) and j != chosen[0] and {r.id for r in x.refs} & kind
+    ]
+    tail = items[k + n] if k + n < len(items) else None
+    if named and not (len(named) == 1 and tail is named[0]):
+        return None
+    if len(kind) != count + 1:
+        return None
+    out: list[Item] = []
+    for m in range(count):
+        if m:
+            out.append(Item("word", "and", "and"))
+        out += [Item("word", "other", "another"), noun]
+    return out, n + (1 if named else 0)
 
 
 def _other_kind(
@@ -2603,6 +2670,15 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
         while s > 0 and _is(items[s - 1], "det"):
             s -= 1
         if s > 0 and _is(items[s - 1], ",", "-"):
+            head = items[: s - 1]
+            its = [n for n, x in enumerate(head) if _is(x, "it") and x.text.lower() == "it"]
+            if (
+                _objects(items[k - 1])
+                and len(its) == 1
+                and not any(_objects(x) for x in head)
+                and all(x.kind != "punct" or x.lemma not in _END for x in head)
+            ):  # "Person A needs it, the bottle I mean": 'it' said before its name
+                return [*head[: its[0]], items[k - 1], *head[its[0] + 1 :], *items[k + 1 :]]
             return [*items[:s], it, *items[s:k], *items[k + 1 :]]
     return items
 
@@ -3518,6 +3594,14 @@ def _surface_notes(items: list[Item]) -> list[Item]:
         opens = _note_start(items, k - 1 if k and _is(items[k - 1], "det") else k) or (
             _opening(items, k - 1 if k and _is(items[k - 1], "det") else k)
         )
+        there = _there_after(items, k) if opens and _is_surface(x) else None
+        if there is not None:  # "Shelf first: the chips go up there."
+            if out and _is(out[-1], "det"):
+                out.pop()
+            rank, at = there
+            out += [*rank, *items[k + 2 + len(rank) : at], Item("word", "on", "on"), x]
+            k = at + 1
+            continue
         if _is_surface(x) and opens and k + 2 < len(items) and _is(items[k + 1], ":", "-"):
             end = k + 2
             while end < len(items) and not (
@@ -3540,6 +3624,24 @@ def _surface_notes(items: list[Item]) -> list[Item]:
         out.append(x)
         k += 1
     return out
+
+
+def _there_after(items: list[Item], k: int) -> tuple[list[Item], int] | None:
+    """For a surface at ``k`` said before 'first'/'last' (or nothing) and a colon, with a
+    'there' in the sentence after it and no other surface: (the ordering word, where 'there'
+    is)."""
+    j = k + 1
+    rank = [items[j]] if j < len(items) and _is(items[j], "first", "last") else []
+    j += len(rank)
+    if not (j < len(items) and _is(items[j], ":")):
+        return None
+    end = j + 1
+    while end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
+        end += 1
+    at = [n for n in range(j + 1, end) if _is(items[n], "there")]
+    if len(at) != 1 or any(_is_surface(y) for y in items[j + 1 : end]):
+        return None
+    return rank, at[0]
 
 
 def _in_between(items: list[Item]) -> list[Item]:
@@ -3603,6 +3705,28 @@ def _last_opening(items: list[Item]) -> list[Item]:
             after = after[:-1]
         if after and not any(y.kind == "punct" or _is(y, *_ORDERING, "meanwhile") for y in after):
             out[k] = Item("word", "then", x.text)
+    return out
+
+
+_SAYING = frozenset({"said", "says", "told", "mentioned", "asked"})
+
+
+def _said_after(items: list[Item]) -> list[Item]:
+    """'give the apple to carol she said she wants it': a person (or he/she) and a verb of
+    saying right after a request's last name start a remark: a comma goes before them."""
+    out: list[Item] = []
+    for k, x in enumerate(items):
+        if (
+            out
+            and out[-1].kind == "ent"
+            and k + 1 < len(items)
+            and (_humans(x) or (x.lemma == "pronoun" and x.text.lower() in ("he", "she")))
+            and items[k + 1].kind == "unknown"
+            and items[k + 1].lemma.split()[0] in _SAYING
+            and any(_is_verb_item(y) for y in out)
+        ):
+            out.append(Item("punct", ",", ","))
+        out.append(x)
     return out
 
 
@@ -3743,6 +3867,107 @@ def _list_ahead(items: list[Item], k: int) -> bool:
     return n + 1 < len(items) and _is(items[n], "and", "or") and _starts_objects(items, n + 1)
 
 
+_HAS_AUX = frozenset({"'s", "has", "have", "'ve", "had", "'d"})
+
+
+def _has_taken(items: list[Item]) -> list[Item]:
+    """'when he's taken them', 'once Bob has taken the cup': a person who has taken objects
+    (with no place or person after them) has them, as in 'once he has them'."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            out
+            and _humans(out[-1])
+            and x.text.lower() in _HAS_AUX
+            and k + 2 < len(items)
+            and items[k + 1].lemma == "verb:take"
+            and items[k + 1].text.lower() in ("taken", "took")
+        ):
+            n = k + 2
+            while n < len(items) and (_objects(items[n]) or _is(items[n], "det", "it", "and")):
+                n += 1
+            them = items[k + 2].text.lower() == "them" and items[k + 2].lemma in ("pronoun", "them")
+            if them:
+                n += 1
+            if n > k + 2 and not (n < len(items) and _is(items[n], "to", "for", "on")):
+                out.append(Item("word", "verb:have", f"{x.text} {items[k + 1].text}"))
+                k += 2
+                continue
+        out.append(x)
+        k += 1
+    return out
+
+
+# what a person does with a thing they are given ("the magazine to read"): a verb of use, never
+# a name ("to Dave" may be a person the scene lacks)
+_USES = frozenset(
+    {
+        "read",
+        "drink",
+        "eat",
+        "use",
+        "wear",
+        "keep",
+        "share",
+        "write",
+        "sign",
+        "check",
+        "study",
+        "borrow",
+        "play",
+        "try",
+        "taste",
+        "hold",
+        "snack",
+        "sip",
+        "open",
+        "fix",
+        "clean",
+        "label",
+        "scan",
+        "pack",
+    }
+)
+
+
+def _purpose(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Mrs Khan would like the magazine to read': 'to' and a verb of use (_USES; no scene name,
+    none near one) after the objects of a clause that names its person says what the objects
+    are for, and goes."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            _is(x, "to")
+            and out
+            and _objects(out[-1])
+            and k + 1 < len(items)
+            and items[k + 1].kind == "unknown"
+            and " " not in items[k + 1].lemma
+            and items[k + 1].lemma in _USES
+            and not _hides_name(items[k + 1], lexicon)
+            and not lexicon.suggest(items[k + 1].text)
+            and (k + 2 == len(items) or _is(items[k + 2], *_SEPARATORS, "filler"))
+            and any(_humans(y) for y in _clause_before(out))
+        ):
+            k += 2
+            continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _clause_before(out: list[Item]) -> list[Item]:
+    """The words of the clause that ``out`` ends with (back to a separator)."""
+    n = len(out)
+    while n > 0 and not _is(out[n - 1], *_SEPARATORS):
+        n -= 1
+    return out[n:]
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -3755,6 +3980,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_in_between),
     _plain(_last_opening),
     _wanted_on,
+    _purpose,
     _plain(_bare_notes),
     _plain(_floating_all),
     _plain(_listed_subjects),
@@ -3797,8 +4023,10 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_exclusions),
     _plain(_respectively),
     _plain(_so_after_remark),
+    _plain(_said_after),
     _speaker,
     _persons,
+    _plain(_has_taken),
     _plain(_not_wanted),
     _plain(_not_after),
     _places,
