@@ -190,6 +190,7 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("but", "before", "that"): "prior",
     ("but", "before", "this"): "prior",
     ("before", "that"): "prior",
+    ("in", "between"): "between",  # "First X, last Y, and in between Z" (phrasing)
     ("prior", "to"): "before",  # formal: "… prior to Bob receiving the chips"
     ("is", "due"): "verb:need",  # "Mrs Khan is due her tablets": she needs them
     ("'s", "due"): "verb:need",

@@ -407,6 +407,8 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
         after = next((y for y in words[n + 1 :] if not _is(y, "det", "not")), None)
         if x.lemma == "verb:have" and nxt is not None and _is(nxt, "not"):
             nxt = after  # "Carol hasn't eaten": 'has' as an auxiliary, negated
+            if after is not None and after.lemma == "verb:have":
+                continue  # "Bob hasn't had lunch": 'had' is read next
         if x.lemma in _HAS and (
             reason
             or _something(words, n + 1)
@@ -677,6 +679,16 @@ def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
+        if _wanted(out[:-1]) and (
+            len({r.id for r in it.refs}) == 1 or any(r.plural for r in it.refs)
+        ):
+            j = _on_surface(items, k, out, lexicon)
+            if j != k:  # "Tom wants the large box on the pallet", where it is already
+                raise GroundingError(
+                    f"'{it.text} {_words_of(items[k:j])}': the one there, or put there? say "
+                    f"'give … the {it.text}' or 'put the {it.text} on …'"
+                )
+            return k
         return _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
     if (
         k + 2 < len(items)
@@ -726,11 +738,26 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     return j + 1
 
 
+def _wanted(before: list[Item]) -> bool:
+    """Whether the words before an object are '<person> wants/needs/would like [the]'."""
+    n = len(before)
+    while n > 0 and _is(before[n - 1], "det"):
+        n -= 1
+    if n < 2 or before[n - 1].lemma not in _WANTS:
+        return False
+    m = n - 1
+    while m > 0 and _is(before[m - 1], "aux", "filler"):
+        m -= 1
+    return m > 0 and _humans(before[m - 1])
+
+
 def _given(before: list[Item]) -> bool:
     """Whether the words before an object are 'give/hand/pass … <person> [the]'."""
     n = len(before)
     while n > 0 and _is(before[n - 1], "det"):
         n -= 1
+    if _wanted(before):
+        return True
     if n < 2 or not _humans(before[n - 1]):
         return False
     n -= 1
@@ -1562,6 +1589,8 @@ def _nobody(items: list[Item]) -> list[Item]:
                 k = j + 2
                 while k < len(items) and _is(items[k], ",", "and"):
                     k += 1
+                if out and k < len(items) and items[k].kind != "punct":
+                    out.append(Item("word", "and", "and"))  # "A, Bob gets nothing, and C": A and C
                 continue
         # "Nobody gets the apple; give Bob the cup": the objects go to nobody
         if _nobody_at(items, k) and (k == 0 or _is(items[k - 1], ",", "and", *_END)):
@@ -2128,12 +2157,24 @@ def _last(items: list[Item]) -> list[Item]:
             return part
         if not (_starts_objects(items, head) and _own_clause(clause)):
             return items  # "the cup and the apple last": both last, or the apple after the cup?
+        # objects with their own place or person: the clause is their whole list, back to a
+        # comma ("…, and the cup and the apple to Alice last": both to Alice, last)
+        start = max((n + 1 for n in range(k) if _is(items[n], ",", "then", *_END)), default=0)
+        while start < k and _is(items[start], "and", "filler"):
+            start += 1
+        clause = items[start:k]
+        if not _starts_objects(items, start) or any(_is(x, "or", "either") for x in clause):
+            return items
     if head >= k:
         return items
     before = list(items[:start])
-    while before and _is(before[-1], ",", "and"):
-        before.pop()
+    ordered = False
+    while before and _is(before[-1], ",", "and", "then"):
+        ordered = ordered or _is(before[-1], "then")
+        before.pop()  # "X, then Y last": Y after X, as 'last' says
     after = list(items[k + 1 :])
+    if ordered and any(not _is(x, *_SEPARATORS, "filler") and x.kind != "punct" for x in after):
+        return items  # "X, then Y last, and Z": is Z in the step after X, or beside it?
     while after and (_is(after[0], *_SEPARATORS, "filler", "first")):
         after.pop(0)
     end = len(after)
@@ -3325,7 +3366,8 @@ def _appositions(items: list[Item]) -> list[Item]:
             and _objects(items[j])
             and {r.id for r in items[j].refs} < ids
         )
-        if _objects(it) and any(r.plural for r in it.refs) and narrows:
+        ranked = j + 1 < len(items) and _is(items[j + 1], "first", "last")
+        if _objects(it) and any(r.plural for r in it.refs) and narrows and not ranked:
             raise GroundingError(
                 f"'{it.text}, {_words_of(items[k + 2 : j + 1])}': all of them, or only that one?"
             )
@@ -3668,8 +3710,8 @@ def _between(sent: list[Item]) -> list[Item] | None:
         begin = n + 1
     rank: dict[int, list[list[Item]]] = {}
     for part in parts:
-        if len(part) > 2 and part[0].text.lower() == "in" and part[1].lemma == "between":
-            place, body = 2, part[2:]
+        if len(part) > 1 and _is(part[0], "between"):
+            place, body = 2, part[1:]
         elif len(part) > 1 and part[0].text.lower() in ("first", "firstly", "last", "lastly"):
             place, body = (1 if part[0].text.lower().startswith("first") else 3), part[1:]
         else:
