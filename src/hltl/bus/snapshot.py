@@ -1,23 +1,4 @@
-"""Copies of a simulator's mutable state that share what cannot change (the look-ahead's saves).
-
-A node simulating ahead of the executor saves its simulator before each stretch (and every few
-ticks of it) and puts it back when a command cuts the stretch (``hltl.bus.node._saver``). A
-pickle of the state did this in about 0.3 ms, most of it spent on the frozen dataclasses the
-state is made of (an object's pose history, a walk's segments, an action's handle and status),
-which pickle takes apart and builds again one by one. They cannot change, so :func:`freeze`
-keeps them as they are and copies only the containers and the mutable objects holding them.
-
-What is copied and what is kept:
-
-* kept as it is (a value): numbers, strings, bytes, ``None``, enumerations, ``frozenset`` and
-  frozen dataclasses (treated as values throughout hltl: nothing mutates what they hold);
-  tuples whose items are all values;
-* copied: lists, dicts (their keys kept), sets, tuples holding something mutable, mutable
-  dataclasses with slots (field by field), random generators (by their state), NumPy arrays;
-* anything else is pickled at the save and unpickled at each restore, as before.
-
-Objects reached twice stay one object in the copy (a memo, as ``copy.deepcopy`` keeps).
-"""
+"""Copies of a simulator's mutable state that share what cannot change (the look-ahead's saves)."""
 
 from __future__ import annotations
 
