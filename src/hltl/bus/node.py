@@ -52,11 +52,6 @@ MAX_CHUNK = 8
 CHECKPOINT = 8
 # most answered steps whose ticks wait for the node to be idle before going to observers
 LATER = 8
-# seconds a node waits after answering a step before it simulates the rest of the stretch: the
-# answer's way to the executor (the node's and the executor's Zenoh threads, then the executor's
-# own) needs CPU too, and with the node simulating at once on a two-core machine it reached the
-# executor 0.96 ms after the reply instead of 0.38 ms (median, docs/bus.md "Where the time goes")
-PAUSE = 0.0003
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -399,8 +394,6 @@ class CellNode:
                     return
             try:
                 stretch = self._on_step(query)
-                if stretch is not None:
-                    time.sleep(PAUSE)
                 query = None if stretch is None else self._stream(query, *stretch)
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
