@@ -8,8 +8,6 @@ answer, and the executor reading it. Prints the table docs/bus.md ("Where the ti
 
     PYTHONPATH=src .venv/bin/python docs/tools/bus_account.py [EPISODES] [REPEATS]
 
-(``ACCT_PAUSE=SECONDS`` sets the node's pause after an answer, ``hltl.bus.node.PAUSE``.)
-
 The wrappers cost a little CPU on both sides (a few percent): the wall times are the suite's
 under instrumentation, not the benchmark's.
 """
@@ -19,7 +17,6 @@ from __future__ import annotations
 import bisect
 import collections
 import multiprocessing
-import os
 import pickle
 import statistics
 import sys
@@ -61,8 +58,6 @@ def _serve(endpoint: str, episodes: int, ready: Any, stop: Any, out: str) -> Non
     ev: list[Event] = []
     acct: dict[str, float] = {}
     local = threading.local()
-    if "ACCT_PAUSE" in os.environ:  # (to compare: the node's pause after an answer, seconds)
-        N.PAUSE = float(os.environ["ACCT_PAUSE"])
     loads = N.loads
 
     def timed_loads(b: bytes, what: str) -> Any:
@@ -166,6 +161,14 @@ def main(episodes: int, repeats: int) -> None:
         ev.append(("pull", t0, time.perf_counter()))
 
     D.BusCell._pull = timed_pull  # type: ignore[method-assign]
+    init = D.BusCell.__init__
+
+    def timed_init(self: Any, *a: Any, **k: Any) -> None:
+        t0 = time.perf_counter()
+        init(self, *a, **k)
+        ev.append(("ctor", t0, time.perf_counter()))
+
+    D.BusCell.__init__ = timed_init  # type: ignore[method-assign]
     trials = B._trials(episodes)
     rows = []
     with open_session(BusConfig(connect=(endpoint,))) as session:
@@ -233,6 +236,11 @@ def _report(
         cols = list(zip(*v, strict=True))
         med = " | ".join(f"{statistics.median(c) * 1e3:.3f}" for c in cols)
         print(f"| {kind} | {len(v) / n:.2f} | {med} | {per_ep(sum(cols[4]))} |")
+    ctor = [e[2] - e[1] for e in ev if e[0] == "ctor"]
+    print(
+        f"\nBusCell() (its subscriptions and the reset): {per_ep(sum(ctor))} ms an episode, "
+        f"median {statistics.median(ctor) * 1e3:.3f} ms"
+    )
     pulls = [e[2] - e[1] for e in ev if e[0] == "pull"]
     if pulls:
         print(
