@@ -54,6 +54,9 @@ KNOWN_MISSES = frozenset(
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
         "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
+        # causes9 (session 9): a remark that names objects ("keeps losing pens") may ask for
+        # them, so it is not dropped
+        "Priya keeps losing pens so give her the stapler",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -62,9 +65,10 @@ KNOWN_MISSES = frozenset(
 # measured once in session 3, its misses fixed in session 4; "blind3" measured once in session
 # 4, its misses fixed in session 5; "blind4" measured once in session 5, its misses fixed in
 # session 6; "blind5" measured once in session 6, its misses fixed in session 7; "blind6"
-# written in session 7 by another engineer, measured once, its misses fixed in session 8: all
-# asserted now; "blind7" written in session 8 by another engineer, measured once)
-MEASURED_ONLY = frozenset({"blind7"})
+# written in session 7 by another engineer, measured once, its misses fixed in session 8;
+# "blind7" written in session 8 by another engineer, measured once, its misses fixed in
+# session 9: all asserted now)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -84,6 +88,9 @@ def test_corpus_sizes() -> None:
     assert len(CORPORA["blind6"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind6"].entries}) >= 12
     assert len(CORPORA["causes8"].entries) >= 150
+    assert len(CORPORA["blind7"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind7"].entries}) >= 12
+    assert len(CORPORA["causes9"].entries) >= 100
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 from dataclasses import dataclass
 from importlib import resources
@@ -45,6 +46,8 @@ def tokenize(text: str) -> list[Token]:
     # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
     text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
     text = re.sub(r"\s[&+]\s", " and ", text)
+    # "all the stuff": a mass noun for every object ("the stuff" alone stays unknown)
+    text = re.sub(r"(?i)\ball (of )?(the |your |this |that )?stuff\b", "all the things", text)
     text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
     text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
     # "won't" -> "will n't", "can't" -> "can n't" (else "wo"/"ca" are words nobody reads)
@@ -187,6 +190,11 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("but", "before", "that"): "prior",
     ("but", "before", "this"): "prior",
     ("before", "that"): "prior",
+    ("in", "between"): "between",  # "First X, last Y, and in between Z" (phrasing)
+    ("prior", "to"): "before",  # formal: "… prior to Bob receiving the chips"
+    ("is", "due"): "verb:need",  # "Mrs Khan is due her tablets": she needs them
+    ("'s", "due"): "verb:need",
+    ("are", "due"): "verb:need",
     ("before", "this"): "prior",
     ("in", "that", "order"): "in_order",
     ("in", "this", "order"): "in_order",
@@ -380,6 +388,11 @@ for _it in ("it would be", "it 'd be", "it will be"):
         "brilliant",
         "perfect",
         "awesome",
+        "appreciated",  # formal: "It would be appreciated if the apple were placed …"
+        "much appreciated",
+        "ideal",
+        "wonderful",
+        "fantastic",
     ):
         PHRASES[tuple(f"{_it} {_good} if".split())] = "filler"
 for _who in ("i 'd", "i would", "we 'd", "we would"):
@@ -597,6 +610,10 @@ for _it in ("", "it "):
     for _who in ("who", "which person", "who gets it", "which of them"):
         PHRASES[tuple(f"{_it}does n't matter {_who}".split())] = "whichever"
 _phrases("whichever", "no matter who", "i do n't mind who", "i do n't care who")
+# "Person A: chips or apple, I'm not fussy": the speaker says any of them will do
+for _who in ("i 'm", "i am", "we 're", "we are", "she 's", "she is", "he 's", "he is"):
+    for _easy in ("not fussy", "not picky", "not bothered", "easy", "easy either way"):
+        PHRASES[tuple(f"{_who} {_easy}".split())] = "whichever"
 # "Give Person A everything there is": every object
 _phrases("q:everything", "everything there is", "everything you have", "everything you 've got")
 # A change of mind at the start of a sentence takes back the sentence before, like "no, …"
@@ -729,6 +746,10 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "chips": ("crisps",),
     "crisps": ("chips",),
     "bottle": ("water", "water bottle"),  # "could Person A have the water"
+    # medicine said in the words of a ward ("Meds to Mr Lee first")
+    "pills": ("meds", "medication", "medicine", "tablets"),
+    "medication": ("meds", "medicine", "pills", "tablets"),
+    "medicine": ("meds", "medication", "pills", "tablets"),
 }
 # words naming any person: "give the person the bottle" (with one person; else ambiguous)
 GENERIC_PEOPLE = ("person", "human")
@@ -809,6 +830,7 @@ WORDS: dict[str, str] = {
     "inside": "on",
     "at": "on",
     "atop": "on",
+    "upon": "on",  # formal: "place the apple upon the shelf"
     "instead": "instead",
     "nearest": "nearest",
     "closest": "nearest",
@@ -1161,6 +1183,12 @@ class Lexicon:
                 self._add(Ref("human", h.id), name, plurals=False)
             for noun in GENERIC_PEOPLE:
                 self._add(Ref("human", h.id), noun, plurals=False, strong=False)
+        for alias in {a for h in scene.humans for a in h.aliases}:
+            sharing = [h for h in scene.humans if alias in h.aliases]
+            if len(sharing) > 1 and len(alias) > 1:  # "the patients": everyone called 'patient'
+                for form in _plural_forms(_words(alias)):
+                    for h in sharing:
+                        self._put(form, Ref("human", h.id, plural=True), alias, False)
         for s in scene.surfaces:
             for name in dict.fromkeys((s.id, *s.aliases)):
                 self._add(Ref("surface", s.id), name, plurals=False)
@@ -1419,7 +1447,9 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
-    tokens = _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon)
+    tokens = _shared_nouns(
+        _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon), lexicon
+    )
     items: list[Item] = []
     i = 0
     while i < len(tokens):
@@ -1451,6 +1481,32 @@ def lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
     return _merge_unknown(items)
+
+
+def _shared_nouns(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
+    """'the black or the red pen', 'the small, the medium and the large box': a word before
+    'or'/'and'/',' that names nothing alone takes the noun of the name after it, when the two
+    words are a scene name ('black pen'), as the words after are ('red pen')."""
+    out = list(tokens)
+    for i in range(len(out) - 2, 0, -1):
+        if out[i].low not in ("or", "and", ","):
+            continue
+        word = out[i - 1]
+        if not word.low.isalpha() or word.low in WORDS or word.low in VERBS:
+            continue
+        if lexicon.match(out, i - 1) is not None:
+            continue
+        j = i + 1
+        while j < len(out) and out[j].low in ("the", "a", "an"):
+            j += 1
+        named = lexicon.match(out, j) if j < len(out) else None
+        if named is None or named[0] < 2:
+            continue
+        noun = out[j + 1 : j + named[0]]
+        if lexicon.lookup(" ".join([word.low, *(t.low for t in noun)])) is None:
+            continue
+        out[i:i] = noun
+    return out
 
 
 def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
@@ -1539,10 +1595,29 @@ def _keyword_typos(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
             continue
         if lexicon.match(tokens, i) is not None:
             continue
+        plain = _unstretched(low, lexicon)
+        if plain is not None:  # "pleeease", "thaaanks": a word said long
+            out[i] = Token(plain, plain)
+            continue
         key = lexicon.misspelt_keyword(low)
         if key is not None:
             out[i] = Token(key, key)  # read (and quoted) as the keyword it stands for
     return out
+
+
+def _unstretched(word: str, lexicon: Lexicon) -> str | None:
+    """'pleeease' → 'please': a word with a letter said three or more times that is, with each
+    such run cut to one or two letters, exactly one keyword or scene word (and no common word:
+    'zzz' stays unknown)."""
+    runs = [(m.group(1), len(m.group(0))) for m in re.finditer(r"(.)\1*", word)]
+    if all(n < 3 for _, n in runs):
+        return None
+    options: set[str] = set()
+    for cut in itertools.product(*[(1, 2) if n >= 3 else (n,) for _, n in runs]):
+        cand = "".join(c * k for (c, _), k in zip(runs, cut, strict=True))
+        if cand in WORDS or cand in VERBS or lexicon.lookup(cand) is not None:
+            options.add(cand)
+    return options.pop() if len(options) == 1 else None
 
 
 def _merge_unknown(items: list[Item]) -> list[Item]:
@@ -1573,11 +1648,25 @@ def _merge_unknown(items: list[Item]) -> list[Item]:
             and joinable
             and prev.kind in ("unknown", "ent")
             and "unknown" in (prev.kind, it.kind)
+            and not _verb_after_person(prev, it)
         ):
             out[-1] = Item("unknown", f"{prev.lemma} {it.lemma}", f"{prev.text} {it.text}")
             continue
         out.append(it)
     return out
+
+
+def _verb_after_person(prev: Item, it: Item) -> bool:
+    """'Carol keeps asking', 'Tom loaded the truck': a common English word in a verb's form
+    (-s, -ed, -ing) right after a person is what they do, not part of their name."""
+    return (
+        prev.kind == "ent"
+        and all(r.kind == "human" for r in prev.refs)
+        and it.kind == "unknown"
+        and it.lemma.endswith(("s", "ed", "ing"))
+        and not it.lemma.endswith("ss")
+        and it.lemma in common_words()
+    )
 
 
 def _in_phrase(tokens: list[Token], i: int) -> bool:
@@ -1602,8 +1691,22 @@ def _text(tokens: list[Token], i: int, n: int) -> str:
 
 
 def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
+    """A name that fits several entities; people are named as a person names them."""
     ids = sorted({r.id for r in item.refs})
+    if all(r.kind == "human" for r in item.refs):
+        names = [person_name(pid, lexicon) for pid in ids]
+        return GroundingError(
+            f"{item.text!r} is ambiguous: it could be {', '.join(names[:-1])} or {names[-1]}; "
+            "name the person"
+        )
     return GroundingError(
         f"{item.text!r} is ambiguous: it could be {', '.join(ids[:-1])} or {ids[-1]}; "
         "use the id or an alias, or say 'one of the …' if any will do"
     )
+
+
+def person_name(pid: str, lexicon: Lexicon) -> str:
+    """'Person B (Mr Lee, patient)': the label, then the other names the scene gives."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    extra = [a for a in human.aliases if a != human.name]
+    return f"{human.name} ({', '.join(extra)})" if extra else human.name

@@ -8,7 +8,15 @@ from typing import Literal
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
-from hltl.grounding.lexicon import VERB_CLASS, Item, Lexicon, ambiguous, foreign_words, lex
+from hltl.grounding.lexicon import (
+    VERB_CLASS,
+    Item,
+    Lexicon,
+    ambiguous,
+    foreign_words,
+    lex,
+    person_name,
+)
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -56,6 +64,8 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     """
     lexicon = lexicon or Lexicon.of(scene)
     items = lex(text, lexicon)
+    # "again" said to repeat a task: read exactly (twice) or refused, never once
+    again = next((it for it in items if it.lemma == "filler" and it.text.lower() == "again"), None)
     shown = text.strip() if len(text.strip()) <= 60 else text.strip()[:57] + "..."
     if not [it for it in items if it.kind != "punct"]:
         if text.strip():
@@ -79,13 +89,28 @@ def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -
     node = parser.resolve(raw)
     if node is None:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
-    node = _dedupe(normalise(parser.expand(node, frozenset())))
+    node = normalise(parser.expand(node, frozenset()))
+    once = _dedupe(node)
+    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)):
+        twice = next(t for t in tasks(node) if sum(1 for u in tasks(node) if u == t) > 1)
+        raise GroundingError(
+            f"{again.text!r} asks for {_task_words(twice, lexicon)} a second time: an object "
+            "is handed over or placed only once; say each task once"
+        )
+    node = once
     if first:
         node = _move_first(node, first, lexicon)
     if dropped:
         node = _without(node, dropped)
     check_deliveries(node, {h.id: h.name for h in scene.humans})
     return node
+
+
+def _task_words(task: Task, lexicon: Lexicon) -> str:
+    """'the apple to Person A (Alice)' / 'the cup on shelf': a task as a refusal names it."""
+    if task.kind == "deliver":
+        return f"the {task.obj} to {person_name(task.target, lexicon)}"
+    return f"the {task.obj} on {task.target}"
 
 
 def _refuse(items: list[Item], lexicon: Lexicon) -> None:
@@ -347,14 +372,16 @@ class _Parser:
                 result is not None
                 and conn in ("after", "once")
                 and split is not None
-                and _is(seg[split - 1], ",")  # only a comma ends the condition mid-sentence
+                # a comma ends the condition mid-sentence, or a command in its plain form
+                # ("…, and once it's there give Tom the scanner")
+                and (_is(seg[split - 1], ",") or _plain_command(seg, split))
             ):
                 # "A and, once X, Y": Y waits for X; A stands beside them
                 cut = split - 1
                 self._segment += 1
                 sub = self.coord(seg[:cut])
                 self._segment += 1
-                main = self.coord(seg[cut + 1 :])
+                main = self.coord(seg[cut + 1 :] if _is(seg[cut], ",") else seg[cut:])
                 result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
                 continue
             self._segment += 1
@@ -869,7 +896,11 @@ class _Parser:
             given = [
                 n
                 for n, g in enumerate(frags[:k])
-                if g.target is not None and g.target.id == f.target.id and not g.subject
+                if g.target is not None
+                and g.target.id == f.target.id
+                # "Carol would like the cup, and Alice the bottle once Carol has it": a want
+                # naming its objects says what Carol is given, as "give Carol the cup" does
+                and (not g.subject or (g.objects is not None and not g.it and not g.them))
             ]
             if given:
                 heads = [frags[given[-1]]]
@@ -1248,7 +1279,10 @@ def _own_target(body: list[Item], j: int) -> bool:
     for k in range(j + 1, len(body) - 1):
         if _is(body[k], "and", ",", "or"):
             return False
-        if _is(body[k], "to", "for", "on") and body[k + 1].kind == "ent":
+        if _is(body[k], "to", "for", "on") and (
+            body[k + 1].kind == "ent"
+            or (_is(body[k + 1], "det") and k + 2 < len(body) and body[k + 2].kind == "ent")
+        ):
             return True
     return False
 
@@ -1381,6 +1415,16 @@ def _strip_separators(items: list[Item]) -> list[Item]:
     return items[k:]
 
 
+_PLAIN_COMMANDS = frozenset({"give", "hand", "pass", "bring", "take", "put", "place", "fetch"})
+
+
+def _plain_command(seg: list[Item], split: int) -> bool:
+    """Whether the main clause found at ``split`` of [conn, *seg] opens with a command in its
+    plain form ('hand him the jug'), which ends a condition said without a comma."""
+    it = seg[split - 1]
+    return _is_verb(it) and it.text.lower() in _PLAIN_COMMANDS
+
+
 def _main_clause_start(items: list[Item]) -> int | None:
     """Where the main clause of 'after X, Y' starts: at 'then', or a comma before a clause."""
     commas = [k for k, it in enumerate(items) if _is(it, ",")]
@@ -1414,9 +1458,9 @@ def _main_clause_start(items: list[Item]) -> int | None:
     predicate = named = False
     for k in range(1, len(items)):
         it = items[k]
-        if it.kind == "ent":
+        if it.kind == "ent" or _is(it, "it"):  # "once it's there give Tom the scanner"
             named = True
-        elif _is(it, "aux") and it.text.lower() in ("is", "are", "was", "were", "'s"):
+        elif _is(it, "aux", "filler") and it.text.lower() in ("is", "are", "was", "were", "'s"):
             predicate = True
         elif _is_verb(it):
             if _is(items[k - 1], "aux", "subject", "to") or _is_verb(items[k - 1]):

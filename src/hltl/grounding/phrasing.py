@@ -15,7 +15,9 @@ from hltl.grounding.lexicon import (
     Item,
     Lexicon,
     Ref,
+    common_words,
     near_keyword,
+    person_name,
 )
 
 _END = frozenset({".", ";", "!", "?", ":"})
@@ -335,6 +337,7 @@ def _opens_remark(items: list[Item], k: int) -> bool:
         or nxt.lemma == "verb:have"  # "she's got a meeting in five"
         or verb in _REMARK_VERBS
         or verb.endswith("ed")
+        or (verb.endswith("s") and not verb.endswith("ss") and verb in common_words())
         or (nxt.lemma in _WANTS and _something(items, j + 1))
     )
 
@@ -389,7 +392,23 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
             continue
         if _progressive(words, n):
             continue  # "Emma's leaving soon": a verb with nothing to move
-        after = next((y for y in words[n + 1 :] if not _is(y, "det")), None)
+        if _is(x, "ask_for") and nxt is not None and nxt.kind == "unknown":
+            continue  # "keeps asking for water" (no scene name): nothing to bring
+        if (
+            x.lemma in _WANTS
+            and n > 0
+            and _humans(words[n - 1])
+            and {r.id for r in words[n - 1].refs} <= said
+            and nxt is not None
+            and _is(nxt, "it", "them")
+            and n + 2 == len(words)
+        ):
+            continue  # "… to Carol, she said she wants it": the request, said again
+        after = next((y for y in words[n + 1 :] if not _is(y, "det", "not")), None)
+        if x.lemma == "verb:have" and nxt is not None and _is(nxt, "not"):
+            nxt = after  # "Carol hasn't eaten": 'has' as an auxiliary, negated
+            if after is not None and after.lemma == "verb:have":
+                continue  # "Bob hasn't had lunch": 'had' is read next
         if x.lemma in _HAS and (
             reason
             or _something(words, n + 1)
@@ -660,7 +679,25 @@ def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
+        if _wanted(out[:-1]) and (
+            len({r.id for r in it.refs}) == 1 or any(r.plural for r in it.refs)
+        ):
+            j = _on_surface(items, k, out, lexicon)
+            if j != k:  # "Tom wants the large box on the pallet", where it is already
+                raise GroundingError(
+                    f"'{it.text} {_words_of(items[k:j])}': the one there, or put there? say "
+                    f"'give … the {it.text}' or 'put the {it.text} on …'"
+                )
+            return k
         return _on_surface(items, k, out, lexicon)  # "give Bob the cup on the shelf"
+    if (
+        k + 2 < len(items)
+        and items[k].text.lower() in ("that", "which")
+        and items[k + 1].text.lower() in _BE
+        and _is(items[k + 2], "on")
+    ):  # "the pen that's on the desk": a relative clause describes, wherever it stands
+        j = _on_surface(items, k + 2, out, lexicon)
+        return k if j == k + 2 else j
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
     j = k + 1
@@ -701,14 +738,32 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     return j + 1
 
 
+def _wanted(before: list[Item]) -> bool:
+    """Whether the words before an object are '<person> wants/needs/would like [the]'."""
+    n = len(before)
+    while n > 0 and _is(before[n - 1], "det"):
+        n -= 1
+    if n < 2 or before[n - 1].lemma not in _WANTS:
+        return False
+    m = n - 1
+    while m > 0 and _is(before[m - 1], "aux", "filler"):
+        m -= 1
+    return m > 0 and _humans(before[m - 1])
+
+
 def _given(before: list[Item]) -> bool:
     """Whether the words before an object are 'give/hand/pass … <person> [the]'."""
     n = len(before)
     while n > 0 and _is(before[n - 1], "det"):
         n -= 1
+    if _wanted(before):
+        return True
     if n < 2 or not _humans(before[n - 1]):
         return False
-    verb = before[n - 2]
+    n -= 1
+    while n > 1 and _is(before[n - 1], "det"):  # "give the intern the pen on the desk"
+        n -= 1
+    verb = before[n - 1]
     return verb.kind == "word" and verb.lemma in ("verb:give", "verb:hand", "verb:pass")
 
 
@@ -1513,6 +1568,14 @@ def _nobody(items: list[Item]) -> list[Item]:
             j = k + 1
             while j < len(items) and _is(items[j], "aux", "filler"):
                 j += 1
+            if (  # "<P> doesn't get anything": nothing
+                j + 2 < len(items)
+                and _is(items[j], "not")
+                and items[j].text.lower() in ("n't", "not")
+                and items[j + 1].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
+                and items[j + 2].text.lower() == "anything"
+            ):
+                items = [*items[:j], items[j + 1], Item("word", "not", "nothing"), *items[j + 3 :]]
             if (
                 j + 1 < len(items)
                 and items[j].lemma in ("verb:get", "verb:have", "verb:want", "verb:need")
@@ -1526,6 +1589,8 @@ def _nobody(items: list[Item]) -> list[Item]:
                 k = j + 2
                 while k < len(items) and _is(items[k], ",", "and"):
                     k += 1
+                if out and k < len(items) and items[k].kind != "punct":
+                    out.append(Item("word", "and", "and"))  # "A, Bob gets nothing, and C": A and C
                 continue
         # "Nobody gets the apple; give Bob the cup": the objects go to nobody
         if _nobody_at(items, k) and (k == 0 or _is(items[k - 1], ",", "and", *_END)):
@@ -2040,11 +2105,7 @@ def _people_list(before: list[Item]) -> tuple[list[Item], bool] | None:
 
 
 def _or(ids: list[str], lexicon: Lexicon) -> str:
-    names = []
-    for pid in ids:
-        h = next(h for h in lexicon.scene.humans if h.id == pid)
-        extra = [a for a in h.aliases if a != h.name]
-        names.append(f"{h.name} ({', '.join(extra)})" if extra else h.name)
+    names = [person_name(pid, lexicon) for pid in ids]
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
 
 
@@ -2089,13 +2150,31 @@ def _last(items: list[Item]) -> list[Item]:
     head = start
     while head < k and _is(items[head], "filler", "first", "subject", "aux"):
         head += 1
-    if head >= k or not (_is_verb_item(items[head]) or _humans(items[head])):
-        return items
     clause = items[start:k]
+    if head < k and not (_is_verb_item(items[head]) or _humans(items[head])):
+        part = _part_last(items[:start], clause)
+        if part is not None:
+            return part
+        if not (_starts_objects(items, head) and _own_clause(clause)):
+            return items  # "the cup and the apple last": both last, or the apple after the cup?
+        # objects with their own place or person: the clause is their whole list, back to a
+        # comma ("…, and the cup and the apple to Alice last": both to Alice, last)
+        start = max((n + 1 for n in range(k) if _is(items[n], ",", "then", *_END)), default=0)
+        while start < k and _is(items[start], "and", "filler"):
+            start += 1
+        clause = items[start:k]
+        if not _starts_objects(items, start) or any(_is(x, "or", "either") for x in clause):
+            return items
+    if head >= k:
+        return items
     before = list(items[:start])
-    while before and _is(before[-1], ",", "and"):
-        before.pop()
+    ordered = False
+    while before and _is(before[-1], ",", "and", "then"):
+        ordered = ordered or _is(before[-1], "then")
+        before.pop()  # "X, then Y last": Y after X, as 'last' says
     after = list(items[k + 1 :])
+    if ordered and any(not _is(x, *_SEPARATORS, "filler") and x.kind != "punct" for x in after):
+        return items  # "X, then Y last, and Z": is Z in the step after X, or beside it?
     while after and (_is(after[0], *_SEPARATORS, "filler", "first")):
         after.pop(0)
     end = len(after)
@@ -2109,6 +2188,60 @@ def _last(items: list[Item]) -> list[Item]:
     if not rest:
         return clause
     return [*rest, Item("punct", ".", "."), Item("word", "then", items[k].text), *clause]
+
+
+def _own_clause(clause: list[Item]) -> bool:
+    """Whether objects opening ``clause`` come with a verb or their own recipient or place
+    ('the jug goes on the locker', 'the apple to Carol'): then the clause is one step."""
+    for n, x in enumerate(clause):
+        if _is_verb_item(x):
+            return True
+        if _is(x, "to", "for", "on") and _starts_target(clause, n + 1):
+            return True
+    return False
+
+
+def _starts_target(items: list[Item], k: int) -> bool:
+    while k < len(items) and _is(items[k], "det"):
+        k += 1
+    return k < len(items) and items[k].kind == "ent" and not _objects(items[k])
+
+
+def _part_last(before: list[Item], clause: list[Item]) -> list[Item] | None:
+    """'Put the boxes on the conveyor, the big one last': the one named last is one of the
+    objects of the clause before, said without a verb or a place: that clause for the others,
+    then for it."""
+    named = [x for x in clause if not _is(x, "det", "filler")]
+    if len(named) != 1 or not _objects(named[0]):
+        return None
+    part = {r.id for r in named[0].refs}
+    body = list(before)
+    while body and _is(body[-1], ",", "and", "filler"):
+        body.pop()
+    start = max(
+        (n + 1 for n, x in enumerate(body) if x.kind == "punct" and x.lemma in _END), default=0
+    )
+    whole = [n for n in range(start, len(body)) if _objects(body[n])]
+    if len(whole) != 1 or any(_is(x, *_ORDERING, "or", "either", "and", ",") for x in body[start:]):
+        return None
+    w = body[whole[0]]
+    ids = {r.id for r in w.refs}
+    if w.quant == "some" or not part < ids:
+        return None
+    rest = replace(w, refs=tuple(r for r in w.refs if r.id not in part))
+    again = replace(named[0], refs=tuple(r for r in w.refs if r.id in part))
+    head = body[:start]
+    return [
+        *head,
+        *body[start : whole[0]],
+        rest,
+        *body[whole[0] + 1 :],
+        Item("punct", ".", "."),
+        Item("word", "then", "last"),
+        *body[start : whole[0]],
+        again,
+        *body[whole[0] + 1 :],
+    ]
 
 
 def _datives(items: list[Item]) -> list[Item]:
@@ -2270,6 +2403,13 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         n, count = found
         words = " ".join(x.text for x in items[k : k + n])
         others = items[:k] + items[k + n :]
+        each = _others_of_one(items, k, n, count)
+        if each is not None:  # "one pen for Sam and the other two for Priya"
+            if out and _is(out[-1], "det"):
+                out.pop()
+            out += each[0]
+            k += each[1]
+            continue
         if _choices(others) or any(_rest_at(items, j) for j in range(k + n, len(items))):
             raise GroundingError(
                 f"{words!r}: what is left depends on a choice or another 'rest'; name the objects"
@@ -2289,6 +2429,48 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(Item("ent", words.lower(), words, refs, quant="all"))
         k += n
     return out
+
+
+def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[Item], int] | None:
+    """'One pen for Sam and the other two for Priya': 'the other N' after the one choice of the
+    instruction ('one pen', 'a pen'), of a kind the scene has N + 1 of, is every pen but the
+    one chosen: N more choices of that kind, each a different one ('another pen and another
+    pen'), and how many words that reads. None when it is not that."""
+    if not (_is(items[k], "other") and count):
+        return None
+    chosen = [
+        j
+        for j in range(len(items))
+        if _objects(items[j])
+        and j
+        and items[j - 1].text.lower() in ("a", "an", "one")
+        and len({r.id for r in items[j].refs}) > 1
+    ]
+    rest = items[:k] + items[k + n :]
+    if (
+        len(chosen) != 1
+        or chosen[0] > k
+        or any(_is(x, "or", "either", "q:some", "whichever") for x in rest)
+    ):
+        return None
+    noun = items[chosen[0]]
+    kind = {r.id for r in noun.refs}
+    named = [
+        x
+        for j, x in enumerate(rest)
+        if _objects(x) and j != chosen[0] and {r.id for r in x.refs} & kind
+    ]
+    tail = items[k + n] if k + n < len(items) else None
+    if named and not (len(named) == 1 and tail is named[0]):
+        return None
+    if len(kind) != count + 1:
+        return None
+    out: list[Item] = []
+    for m in range(count):
+        if m:
+            out.append(Item("word", "and", "and"))
+        out += [Item("word", "other", "another"), noun]
+    return out, n + (1 if named else 0)
 
 
 def _other_kind(
@@ -2529,6 +2711,15 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
         while s > 0 and _is(items[s - 1], "det"):
             s -= 1
         if s > 0 and _is(items[s - 1], ",", "-"):
+            head = items[: s - 1]
+            its = [n for n, x in enumerate(head) if _is(x, "it") and x.text.lower() == "it"]
+            if (
+                _objects(items[k - 1])
+                and len(its) == 1
+                and not any(_objects(x) for x in head)
+                and all(x.kind != "punct" or x.lemma not in _END for x in head)
+            ):  # "Person A needs it, the bottle I mean": 'it' said before its name
+                return [*head[: its[0]], items[k - 1], *head[its[0] + 1 :], *items[k + 1 :]]
             return [*items[:s], it, *items[s:k], *items[k + 1 :]]
     return items
 
@@ -2624,8 +2815,15 @@ def _run_ons(items: list[Item]) -> list[Item]:
             and sent[k - 1].kind == "ent"
             and (sent[k + 1].kind == "ent" or _is(sent[k + 1], "det"))
         ]
+        # "alice needs the bottle bob needs the chips": a person and a possession verb
+        # after an object start a request as the sentence's first one does
+        said = _subject_run_on(sent, 0)
+        if said or (sent and _is_verb_item(sent[0])):
+            splits = sorted(
+                {*splits, *(k for k in range(2, len(sent) - 2) if _subject_run_on(sent, k))}
+            )
         plain = not any(x.kind == "punct" or _is(x, *_RUN_ON_STOPS) for x in sent)
-        if splits and plain and _is_verb_item(sent[0]):
+        if splits and plain and (_is_verb_item(sent[0]) or said):
             for k in reversed(splits):
                 sent = [*sent[:k], Item("word", "and", "and"), *sent[k:]]
         elif splits and _run_on_unclear(sent):
@@ -2641,6 +2839,21 @@ def _run_ons(items: list[Item]) -> list[Item]:
         if end < len(items):
             out.append(items[end])
     return out
+
+
+_POSSESSION = frozenset({"verb:want", "verb:need", "verb:have", "verb:receive", "verb:get"})
+
+
+def _subject_run_on(sent: list[Item], k: int) -> bool:
+    """Whether a request with its own subject starts at sent[k]: a person, then a possession
+    verb ('needs', 'wants', 'gets'), then an article or a name; after an object unless k is 0."""
+    return (
+        k + 2 < len(sent)
+        and _humans(sent[k])
+        and sent[k + 1].lemma in _POSSESSION
+        and (sent[k + 2].kind == "ent" or _is(sent[k + 2], "det"))
+        and (k == 0 or _objects(sent[k - 1]))
+    )
 
 
 def _run_on_unclear(sent: list[Item]) -> bool:
@@ -3153,7 +3366,8 @@ def _appositions(items: list[Item]) -> list[Item]:
             and _objects(items[j])
             and {r.id for r in items[j].refs} < ids
         )
-        if _objects(it) and any(r.plural for r in it.refs) and narrows:
+        ranked = j + 1 < len(items) and _is(items[j + 1], "first", "last")
+        if _objects(it) and any(r.plural for r in it.refs) and narrows and not ranked:
             raise GroundingError(
                 f"'{it.text}, {_words_of(items[k + 2 : j + 1])}': all of them, or only that one?"
             )
@@ -3273,10 +3487,542 @@ def _any_order(items: list[Item]) -> list[Item]:
     return [x for x in items if not _is(x, "any_order")]
 
 
+# -- session 9 -------------------------------------------------------------------------------------
+
+
+def _closing_also(items: list[Item]) -> list[Item]:
+    """'Alice wants the apple also': 'also' ending a clause after a name is 'too' (nothing),
+    not a join; ', whoever' ending a clause is 'whichever' ('Mr Lee or Mrs Khan can have the
+    magazine, whoever'; elsewhere, as in 'whoever wants it', it stays unknown)."""
+    out = list(items)
+    for k, x in enumerate(items):
+        ends = k + 1 == len(items) or items[k + 1].kind == "punct"
+        if ends and _is(x, "also") and x.text.lower() == "also" and items[k - 1].kind == "ent":
+            out[k] = Item("word", "filler", x.text)
+        if ends and x.kind == "unknown" and x.lemma == "whoever" and _is(items[k - 1], ","):
+            out[k] = Item("word", "whichever", x.text)
+    return out
+
+
+def _people_named(items: list[Item]) -> list[Item]:
+    """'Nurse Ruth', 'the patient Mr Lee': a name right after another name of the same person
+    (or of people including them) is that one person; 'the patients' (an alias several people
+    share, in the plural) is each of them, joined by 'and'."""
+    out: list[Item] = []
+    for x in items:
+        prev = out[-1] if out else None
+        if (
+            _humans(x)
+            and prev is not None
+            and _humans(prev)
+            and not any(r.plural for r in (*prev.refs, *x.refs))
+            and len({r.id for r in x.refs}) == 1
+            and x.refs[0].id in {r.id for r in prev.refs}
+        ):
+            out[-1] = replace(x, text=f"{prev.text} {x.text}")
+            continue
+        if _humans(x) and len(x.refs) > 1 and all(r.plural for r in x.refs):
+            for n, r in enumerate(x.refs):
+                if n:
+                    out.append(
+                        Item("word", "and", "and")
+                        if n == len(x.refs) - 1
+                        else Item("punct", ",", ",")
+                    )
+                out.append(Item("ent", x.lemma, x.text, (Ref("human", r.id),)))
+            continue
+        out.append(x)
+    return out
+
+
+def _superlatives(items: list[Item]) -> list[Item]:
+    """'the closest item to him' is 'the item closest to him'; 'whatever/whichever item is
+    nearest to him' is 'the item nearest to him' (one object, measured as _places measures)."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            _is(x, "nearest", "farthest")
+            and " " not in x.text
+            and k + 2 < len(items)
+            and _objects(items[k + 1])
+            and (_is(items[k + 2], "to") or (_is(x, "farthest") and _is(items[k + 2], "from")))
+            and out
+            and _is(out[-1], "det")
+        ):
+            out += [items[k + 1], Item("word", x.lemma, f"{x.text} {items[k + 2].text}")]
+            k += 3
+            continue
+        if (
+            _is(x, "whichever", "whatever")
+            and x.text.lower() in ("whichever", "whatever")
+            and k + 3 < len(items)
+            and _objects(items[k + 1])
+            and items[k + 2].text.lower() in _BE
+            and _is(items[k + 3], "nearest", "farthest")
+        ):
+            out += [Item("word", "det", "the"), items[k + 1]]
+            k += 3
+            continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _notes(items: list[Item]) -> list[Item]:
+    """Notes without a verb, read as the notes the grammar knows ('the apple to Carol',
+    'Carol the apple', 'the cup on the shelf'):
+
+    - 'for Carol the apple, for Bob the bottle': 'for' opening a note before a person and
+      the objects goes;
+    - 'Pallet: the small box and the medium box': a surface, a colon or dash, then only
+      objects, is 'the small box and the medium box on the pallet';
+    - 'bottle to alice crisps to bob': in a sentence without a verb, a note's person or
+      surface after 'to'/'for'/'on' followed by an object ends the note (a comma).
+    """
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        verbless = not any(_is_verb_item(x) for x in sent)
+        sent = [
+            x
+            for k, x in enumerate(sent)
+            if not (
+                _is(x, "for")
+                and _note_start(sent, k)
+                and k + 2 < len(sent)
+                and _humans(sent[k + 1])
+                and any(_objects(y) for y in sent[k + 2 : k + 4])
+                and all(_objects(y) or _is(y, "det") for y in sent[k + 2 : k + 4])
+            )
+        ]
+        if verbless:
+            cut = [
+                k
+                for k in range(2, len(sent) - 1)
+                if sent[k].kind == "ent"
+                and not _objects(sent[k])
+                and _is(sent[k - 1], "to", "for", "on")
+                and (
+                    _objects(sent[k + 1])
+                    or (_is(sent[k + 1], "det") and k + 2 < len(sent) and _objects(sent[k + 2]))
+                )
+            ]
+            for k in reversed(cut):
+                sent.insert(k + 1, Item("punct", ",", ","))
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _note_start(sent: list[Item], k: int) -> bool:
+    """Whether only fillers, separators or ordering words stand before sent[k] in its clause."""
+    n = k - 1
+    while n >= 0 and _is(sent[n], "filler", "then", "first"):
+        n -= 1
+    return n < 0 or _is(sent[n], ",", "and")
+
+
+def _surface_notes(items: list[Item]) -> list[Item]:
+    """'Pallet: small box and medium box.', 'then the belt - the tape': a surface opening a
+    clause, a colon or dash, then only objects up to the end of the sentence, is 'the small box
+    and the medium box on the pallet'."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        opens = _note_start(items, k - 1 if k and _is(items[k - 1], "det") else k) or (
+            _opening(items, k - 1 if k and _is(items[k - 1], "det") else k)
+        )
+        there = _there_after(items, k) if opens and _is_surface(x) else None
+        if there is not None:  # "Shelf first: the chips go up there."
+            if out and _is(out[-1], "det"):
+                out.pop()
+            rank, at = there
+            out += [*rank, *items[k + 2 + len(rank) : at], Item("word", "on", "on"), x]
+            k = at + 1
+            continue
+        if _is_surface(x) and opens and k + 2 < len(items) and _is(items[k + 1], ":", "-"):
+            end = k + 2
+            while end < len(items) and not (
+                (items[end].kind == "punct" and items[end].lemma in _END)
+                or (_is(items[end], ",") and not _starts_objects(items, end + 1))
+            ):
+                end += 1
+            things = items[k + 2 : end]
+            while things and _is(things[-1], ",", "filler"):
+                things.pop()
+            if any(_objects(y) for y in things) and all(
+                _objects(y) or _is(y, "det", "and", ",", "or", "either", "both", "filler")
+                for y in things
+            ):
+                if out and _is(out[-1], "det"):
+                    out.pop()
+                out += [*things, Item("word", "on", "on"), x]
+                k = end
+                continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _there_after(items: list[Item], k: int) -> tuple[list[Item], int] | None:
+    """For a surface at ``k`` said before 'first'/'last' (or nothing) and a colon, with a
+    'there' in the sentence after it and no other surface: (the ordering word, where 'there'
+    is)."""
+    j = k + 1
+    rank = [items[j]] if j < len(items) and _is(items[j], "first", "last") else []
+    j += len(rank)
+    if not (j < len(items) and _is(items[j], ":")):
+        return None
+    end = j + 1
+    while end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
+        end += 1
+    at = [n for n in range(j + 1, end) if _is(items[n], "there")]
+    if len(at) != 1 or any(_is_surface(y) for y in items[j + 1 : end]):
+        return None
+    return rank, at[0]
+
+
+def _in_between(items: list[Item]) -> list[Item]:
+    """'First X, last Y, and in between Z': three parts of a sentence, opened by 'first',
+    'last' and 'in between' (in any order), are the steps X, Z, Y."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        out.extend(_between(sent) or sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
+def _between(sent: list[Item]) -> list[Item] | None:
+    cuts = [n for n, x in enumerate(sent) if _is(x, ",")]
+    parts: list[list[Item]] = []
+    begin = 0
+    for n in [*cuts, len(sent)]:
+        part = sent[begin:n]
+        while part and _is(part[0], "and", "filler"):
+            part = part[1:]
+        parts.append(part)
+        begin = n + 1
+    rank: dict[int, list[list[Item]]] = {}
+    for part in parts:
+        if len(part) > 1 and _is(part[0], "between"):
+            place, body = 2, part[1:]
+        elif len(part) > 1 and part[0].text.lower() in ("first", "firstly", "last", "lastly"):
+            place, body = (1 if part[0].text.lower().startswith("first") else 3), part[1:]
+        else:
+            return None
+        if any(_is(x, *_ORDERING) for x in body):
+            return None
+        rank.setdefault(place, []).append(body)
+    if sorted(rank) != [1, 2, 3] or any(len(v) != 1 for v in rank.values()):
+        return None
+    steps = [rank[1][0], rank[2][0], rank[3][0]]
+    return [
+        *steps[0],
+        Item("punct", ",", ","),
+        Item("word", "then", "then"),
+        *steps[1],
+        Item("punct", ",", ","),
+        Item("word", "then", "then"),
+        *steps[2],
+    ]
+
+
+def _last_opening(items: list[Item]) -> list[Item]:
+    """'First X, last Y': 'last' opening the final clause of the instruction is 'lastly'."""
+    out = list(items)
+    for k, x in enumerate(items):
+        opens = _opening(items, k) or _note_start(items, k)
+        if not (_is(x, "last") and x.text.lower() == "last" and opens and k):
+            continue
+        after = items[k + 1 :]
+        while after and _is(after[0], ",", "filler"):
+            after = after[1:]
+        while after and (after[-1].kind == "punct" or _is(after[-1], "filler")):
+            after = after[:-1]
+        if after and not any(y.kind == "punct" or _is(y, *_ORDERING, "meanwhile") for y in after):
+            out[k] = Item("word", "then", x.text)
+    return out
+
+
+_SAYING = frozenset({"said", "says", "told", "mentioned", "asked"})
+
+
+def _said_after(items: list[Item]) -> list[Item]:
+    """'give the apple to carol she said she wants it': a person (or he/she) and a verb of
+    saying right after a request's last name start a remark: a comma goes before them."""
+    out: list[Item] = []
+    for k, x in enumerate(items):
+        if (
+            out
+            and out[-1].kind == "ent"
+            and k + 1 < len(items)
+            and (_humans(x) or (x.lemma == "pronoun" and x.text.lower() in ("he", "she")))
+            and items[k + 1].kind == "unknown"
+            and items[k + 1].lemma.split()[0] in _SAYING
+            and any(_is_verb_item(y) for y in out)
+        ):
+            out.append(Item("punct", ",", ","))
+        out.append(x)
+    return out
+
+
+def _so_after_remark(items: list[Item]) -> list[Item]:
+    """'Tom's loading the truck so he needs the gloves': a remark opening a sentence, then
+    'so' and a request, is the remark, a comma, and the request (_remarks then reads it)."""
+    out = list(items)
+    for k, x in enumerate(items):
+        if not (x.kind == "word" and x.text.lower() == "so" and 0 < k < len(items) - 1):
+            continue
+        start = k - 1
+        while start > 0 and items[start - 1].kind != "punct":
+            start -= 1
+        if not (_opening(items, start) or start == 0) or not _opens_remark(items, start):
+            continue
+        nxt = items[k + 1]
+        if _is_verb_item(nxt) or _humans(nxt) or nxt.lemma == "pronoun" or _is(nxt, "aux"):
+            out[k] = Item("punct", ",", x.text)
+    return out
+
+
+def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Ruth wants the blue blanket on the bedside table': a person wanting objects on a
+    surface wants them put there (the person gets nothing), as 'put the blue blanket on the
+    bedside table'. Not when one of them starts on that surface ('Alice wants the mug on the
+    shelf' may describe which mug she wants) or more words follow the surface."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if _humans(x) and (_opening(items, k) or _note_start(items, k)):
+            n = k + 1
+            while n < len(items) and _is(items[n], "aux", "filler"):
+                n += 1
+            if n < len(items) and items[n].lemma in _WANTS:
+                j = n + 1
+                while j < len(items) and (
+                    _objects(items[j]) or _is(items[j], "det", "and", ",", "or")
+                ):
+                    j += 1
+                things = items[n + 1 : j]
+                m = j + 1
+                while m < len(items) and _is(items[m], "det"):
+                    m += 1
+                if (
+                    any(_objects(y) for y in things)
+                    and j + 1 < len(items)
+                    and _is(items[j], "on")
+                    and _starts_surface(items, j + 1)
+                    and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
+                    and not _lying_on(things, items[m], lexicon)
+                ):
+                    out.append(Item("word", "verb:put", items[n].text))
+                    k = n + 1
+                    continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _lying_on(things: list[Item], surface: Item, lexicon: Lexicon) -> bool:
+    """Whether one of the objects ``things`` name starts on ``surface``."""
+    ids = {r.id for y in things if _objects(y) for r in y.refs}
+    for s in lexicon.scene.surfaces:
+        if s.id in {r.id for r in surface.refs}:
+            (cx, cy), (sx, sy) = s.center[:2], s.size
+            for o in lexicon.scene.objects:
+                if (
+                    o.id in ids
+                    and abs(o.position[0] - cx) <= sx / 2
+                    and abs(o.position[1] - cy) <= sy / 2
+                ):
+                    return True
+    return False
+
+
+def _starts_surface(items: list[Item], k: int) -> bool:
+    while k < len(items) and _is(items[k], "det"):
+        k += 1
+    return k < len(items) and _is_surface(items[k])
+
+
+def _restated(items: list[Item]) -> list[Item]:
+    """Words said again in another order or form:
+
+    - 'the cup and the bottle, both of them to Carol': 'both/all (of) them' right after a list
+      of objects and a comma says again that it is every one of them ('both' must still count
+      two);
+    - 'Please you give to Tom the gloves': 'give to <person> <objects>' is 'give <person>
+      <objects>';
+    - 'give person a the apple the chips and the cup': objects said one after the other
+      without commas, before an 'and'/'or' that ends the list, are a list.
+    """
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        nxt = items[k + 1] if k + 1 < len(items) else None
+        if (
+            nxt is not None
+            and _is(nxt, "pronoun")
+            and nxt.text.lower() == "them"
+            and x.text.lower() in ("both of", "all of", "both", "all")
+            and len(out) > 1
+            and _is(out[-1], ",")
+            and _objects(out[-2])
+        ):
+            if x.text.lower().startswith("both"):
+                out.append(Item("word", "both", "both"))
+            else:
+                out.pop()  # 'all of them': every one of the list, as it says already
+            k += 2
+            continue
+        if (
+            x.kind == "word"
+            and x.lemma in ("verb:give", "verb:hand", "verb:pass")
+            and nxt is not None
+            and _is(nxt, "to")
+            and k + 2 < len(items)
+            and _humans(items[k + 2])
+            and _starts_objects(items, k + 3)
+        ):
+            out += [x, items[k + 2]]
+            k += 3
+            continue
+        out.append(x)
+        if _objects(x) and _starts_objects(items, k + 1) and _list_ahead(items, k + 1):
+            out.append(Item("punct", ",", ","))
+        k += 1
+    return out
+
+
+def _list_ahead(items: list[Item], k: int) -> bool:
+    """Whether objects from ``k`` run, without other words, to an 'and'/'or' and one more."""
+    n = k
+    while n < len(items) and (_objects(items[n]) or _is(items[n], "det")):
+        n += 1
+    return n + 1 < len(items) and _is(items[n], "and", "or") and _starts_objects(items, n + 1)
+
+
+_HAS_AUX = frozenset({"'s", "has", "have", "'ve", "had", "'d"})
+
+
+def _has_taken(items: list[Item]) -> list[Item]:
+    """'when he's taken them', 'once Bob has taken the cup': a person who has taken objects
+    (with no place or person after them) has them, as in 'once he has them'."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            out
+            and _humans(out[-1])
+            and x.text.lower() in _HAS_AUX
+            and k + 2 < len(items)
+            and items[k + 1].lemma == "verb:take"
+            and items[k + 1].text.lower() in ("taken", "took")
+        ):
+            n = k + 2
+            while n < len(items) and (_objects(items[n]) or _is(items[n], "det", "it", "and")):
+                n += 1
+            them = items[k + 2].text.lower() == "them" and items[k + 2].lemma in ("pronoun", "them")
+            if them:
+                n += 1
+            if n > k + 2 and not (n < len(items) and _is(items[n], "to", "for", "on")):
+                out.append(Item("word", "verb:have", f"{x.text} {items[k + 1].text}"))
+                k += 2
+                continue
+        out.append(x)
+        k += 1
+    return out
+
+
+# what a person does with a thing they are given ("the magazine to read"): a verb of use, never
+# a name ("to Dave" may be a person the scene lacks)
+_USES = frozenset(
+    {
+        "read",
+        "drink",
+        "eat",
+        "use",
+        "wear",
+        "keep",
+        "share",
+        "write",
+        "sign",
+        "check",
+        "study",
+        "borrow",
+        "play",
+        "try",
+        "taste",
+        "hold",
+        "snack",
+        "sip",
+        "open",
+        "fix",
+        "clean",
+        "label",
+        "scan",
+        "pack",
+    }
+)
+
+
+def _purpose(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """'Mrs Khan would like the magazine to read': 'to' and a verb of use (_USES; no scene name,
+    none near one) after the objects of a clause that names its person says what the objects
+    are for, and goes."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        if (
+            _is(x, "to")
+            and out
+            and _objects(out[-1])
+            and k + 1 < len(items)
+            and items[k + 1].kind == "unknown"
+            and " " not in items[k + 1].lemma
+            and items[k + 1].lemma in _USES
+            and not _hides_name(items[k + 1], lexicon)
+            and not lexicon.suggest(items[k + 1].text)
+            and (k + 2 == len(items) or _is(items[k + 2], *_SEPARATORS, "filler"))
+            and any(_humans(y) for y in _clause_before(out))
+        ):
+            k += 2
+            continue
+        out.append(x)
+        k += 1
+    return out
+
+
+def _clause_before(out: list[Item]) -> list[Item]:
+    """The words of the clause that ``out`` ends with (back to a separator)."""
+    n = len(out)
+    while n > 0 and not _is(out[n - 1], *_SEPARATORS):
+        n -= 1
+    return out[n:]
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_any_order),
+    _plain(_closing_also),
+    _plain(_people_named),
+    _plain(_restated),
+    _plain(_notes),
+    _plain(_surface_notes),
+    _plain(_in_between),
+    _plain(_last_opening),
+    _wanted_on,
+    _purpose,
     _plain(_bare_notes),
     _plain(_floating_all),
     _plain(_listed_subjects),
@@ -3298,6 +4044,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_questions),
     _plain(_do_for),
     _plain(_after_all),
+    _plain(_superlatives),
     _rest,
     _whatever_near,
     _plain(_any_restated),
@@ -3317,8 +4064,11 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_instead_of),
     _plain(_exclusions),
     _plain(_respectively),
+    _plain(_so_after_remark),
+    _plain(_said_after),
     _speaker,
     _persons,
+    _plain(_has_taken),
     _plain(_not_wanted),
     _plain(_not_after),
     _places,

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import reduce
 from itertools import pairwise
@@ -225,97 +225,22 @@ def _feasible(
     """Whether some relaxed schedule makes every target happen by ``level`` units (None: CP-SAT
     could not tell before ``deadline``).
 
-    The relaxation: each target's object follows a path of instances from where it is to an
-    instance that makes the atom happen, each instance an interval of its duration starting
-    after the previous one ends; a robot's *sessions* (from the instance that gives it an
-    object to the one that takes it away) never overlap, because a robot holds one object at
-    a time and acts only on what it holds or, with an empty hand, picks or receives. Where the
-    object leaves a robot and comes back (a loop, cut out of the path) the session may be
-    split into its two ends. Places the object cannot pass through and still make its atom
-    happen by ``level`` are left out.
+    The relaxation (``_relaxation`` on a time line, ``_Times``): each target's object follows a
+    path of instances from where it is to an instance that makes the atom happen, each
+    instance an interval of its duration starting after the previous one ends; a robot's
+    *sessions* (from the instance that gives it an object to the one that takes it away) never
+    overlap, because a robot holds one object at a time and acts only on what it holds or, with
+    an empty hand, picks or receives. Where the object leaves a robot and comes back (a loop,
+    cut out of the path) the session may be split into its two ends. Places the object cannot
+    pass through and still make its atom happen by ``level`` are left out.
     """
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
-    p = problem
-    locs = node[0]
-    H = level
-    cap = level * unit
-    m = cp_model.CpModel()
-    per_robot: list[list[Any]] = [[] for _ in p.robots]
-    fire_start: list[Any] = []
-    for t in tgts:
-        o, s0 = t.obj, locs[t.obj]
-        reach = graph.place_time[o][s0]
-        togo = graph.event_time[o]
-        if togo[s0].get(t.atom, math.inf) > cap:
-            return False
-        cand: list[Instance] = [
-            i
-            for row in p.by_obj_pre[o]
-            for i in row
-            if reach[i.pre] + i.lower <= cap
-            and (
-                i.index in t.fires
-                or (
-                    i.post != s0
-                    and reach[i.pre] + i.lower + togo[i.post].get(t.atom, math.inf) <= cap
-                )
-            )
-        ]
-        places = {s0} | {i.pre for i in cand} | {i.post for i in cand if i.index not in t.fires}
-        arrive = {c: m.new_int_var(0, H, "") for c in places}
-        m.add(arrive[s0] == 0)
-        outs: dict[int, list[Any]] = {c: [] for c in places}
-        ins: dict[int, list[Any]] = {c: [] for c in places}
-        fired: list[tuple[Any, Any]] = []
-        opens: dict[int, list[tuple[Any, Any, int]]] = {}  # robot -> (used, start, duration)
-        closes: dict[int, list[tuple[Any, Any, int, bool]]] = {}  # ... and whether it fires
-        for i in cand:
-            u = m.new_bool_var("")
-            d = i.lower // unit
-            st = m.new_int_var(0, H - d, "")
-            m.add(st >= arrive[i.pre]).only_enforce_if(u)
-            outs[i.pre].append(u)
-            fires = i.index in t.fires
-            if fires:
-                fired.append((u, st))
-            else:
-                ins[i.post].append(u)
-                m.add(arrive[i.post] == st + d).only_enforce_if(u)
-                r_in = p.code_holder.get(i.post)
-                if r_in is not None:
-                    opens.setdefault(r_in, []).append((u, st, d))
-            r_out = p.code_holder.get(i.pre)
-            if r_out is not None:
-                closes.setdefault(r_out, []).append((u, st, d, fires))
-        if not fired:
-            return False
-        fire_start.append(_path(m, s0, places, outs, ins, fired, H))
-        for r, ends in closes.items():
-            starts = opens.get(r)
-            if not starts:
-                # the object is in r's hand at the start: its leaving is plain work of r
-                for u, st, d, _ in ends:
-                    per_robot[r].append(m.new_optional_fixed_size_interval_var(st, d, u, ""))
-                continue
-            loop = _quickest_loop(p, t, r)
-            quickest = None if loop is None else (loop[0] // unit, loop[1] // unit)
-            per_robot[r].extend(_session(m, H, starts, ends, quickest))
-    for k, t in enumerate(tgts):
-        for j in t.after:
-            m.add(fire_start[k] >= fire_start[j])
-    for ivs in per_robot:
-        if len(ivs) > 1:
-            m.add_no_overlap(ivs)
-    solved = solve_until(m, deadline, seed)
-    if solved is None:
-        return None
-    status = solved[1]
-    if status == cp_model.INFEASIBLE:
+    axis = _Times(cp_model.CpModel(), level, unit)
+    if not _relaxation(problem, graph, node, tgts, axis):
         return False
-    if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
-        return True
-    return None
+    solver = _solve(axis, deadline, seed)
+    return solver if solver is None or solver is False else True
 
 
 def steps_applicable(problem: Problem) -> bool:
@@ -342,169 +267,42 @@ def relaxed_steps(
     With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
     nothing, but its schedules are more often plans).
 
-    The paths and sessions of ``_feasible``, on a global sequence of K steps instead of a time
-    line: every instance on a path is in one step, the next instance on its path in a later
-    one; a robot's sessions cover runs of steps that never share a step; a step lasts at least
-    its longest instance (0 when empty; the empty steps come last), and the steps last at most
-    ``level`` units in all. K = ``level`` // (shortest duration): no plan ending by ``level``
-    has more non-empty steps. Where a plan runs a 0.5 s pick beside a 0.6 s handover, the pick's
-    step costs 0.6 s here too, which intervals of their own durations do not see.
+    The paths and sessions of ``_feasible`` (``_relaxation`` on a sequence of steps,
+    ``_Steps``): every instance on a path is in one step, the next instance on its path in a
+    later one; a robot's sessions cover runs of steps that never share a step; a step lasts at
+    least its longest instance (0 when empty; the empty steps come last), and the steps last at
+    most ``level`` units in all. K = ``level`` // (shortest duration): no plan ending by
+    ``level`` has more non-empty steps. Where a plan runs a 0.5 s pick beside a 0.6 s
+    handover, the pick's step costs 0.6 s here too, which intervals of their own durations do
+    not see.
     """
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     p = problem
-    locs = node[0]
     unit = time_unit(p)
-    cap = level * unit
     shortest = min(i.lower for i in p.instances)
-    K = cap // shortest
-    if K == 0:
+    if level * unit // shortest == 0:
         return False
-    d_min = shortest // unit
-    lengths = sorted({i.lower // unit for i in p.instances if i.lower > shortest})
-    m = cp_model.CpModel()
-    # step k is non-empty (at least d_min long), and lasts at least each longer duration
-    busy = [m.new_bool_var("") for _ in range(K)]
-    for k in range(K - 1):
-        m.add_implication(busy[k + 1], busy[k])
-    at_least: list[dict[int, Any]] = []
-    for k in range(K):
-        row = {d: m.new_bool_var("") for d in lengths}
-        for a, b in pairwise(lengths):
-            m.add_implication(row[b], row[a])
-        if lengths:
-            m.add_implication(row[lengths[0]], busy[k])
-        at_least.append(row)
-    start = [m.new_int_var(0, level, "") for _ in range(K + 1)]  # when step k starts
-    m.add(start[0] == 0)
-    for k in range(K):
-        prev = d_min
-        length = d_min * busy[k]
-        for d in lengths:
-            length += (d - prev) * at_least[k][d]
-            prev = d
-        m.add(start[k + 1] == start[k] + length)
-    per_robot: list[list[Any]] = [[] for _ in p.robots]
-    per_robot_step: dict[tuple[int, int], list[Any]] = {}
-    work: list[list[tuple[int, Any]]] = [[] for _ in p.robots]  # (duration, used) per robot
-    fire_step: list[Any] = []
-    every: list[tuple[Instance, list[tuple[int, Any]]]] = []
-    for t in tgts:
-        o, s0 = t.obj, locs[t.obj]
-        reach = graph.place_time[o][s0]
-        togo = graph.event_time[o]
-        if togo[s0].get(t.atom, math.inf) > cap:
-            return False
-        hops_in = _hops(p, o, [s0], forward=True)
-        hops_out = _hops(
-            p, o, [i.pre for row in p.by_obj_pre[o] for i in row if i.index in t.fires], False
-        )
-        cand: list[tuple[Instance, int, int]] = []
-        chosen: list[tuple[Instance, list[tuple[int, Any]]]] = []
-        for i in (i for row in p.by_obj_pre[o] for i in row):
-            fires = i.index in t.fires
-            rest = 0 if fires else togo[i.post].get(t.atom, math.inf)
-            if reach[i.pre] + i.lower + rest > cap or (not fires and i.post == s0):
-                continue
-            # steps it may run in: after the hops that bring the object to it, early enough
-            # for the hops after it, and (each step lasting at least d_min) for the time after it
-            first = hops_in.get(i.pre)
-            after = 0 if fires else hops_out.get(i.post, K) + 1
-            if first is None:
-                continue
-            slack = level - i.lower // unit - math.ceil(rest / unit)
-            last = min(K - 1 - after, slack // d_min)
-            if first <= last:
-                cand.append((i, first, last))
-        places = {s0} | {i.pre for i, _, _ in cand}
-        places |= {i.post for i, _, _ in cand if i.index not in t.fires}
-        arrive = {c: m.new_int_var(0, K, "") for c in places}
-        m.add(arrive[s0] == 0)
-        outs: dict[int, list[Any]] = {c: [] for c in places}
-        ins: dict[int, list[Any]] = {c: [] for c in places}
-        fired: list[tuple[Any, Any]] = []
-        opens: dict[int, list[tuple[Any, Any, int]]] = {}
-        closes: dict[int, list[tuple[Any, Any, int, bool]]] = {}
-        arrivals: dict[int, list[tuple[Any, Any]]] = {}  # robot -> (used, time the arrival ends)
-        departures: dict[int, list[tuple[Any, Any]]] = {}  # ... (used, time it starts)
-        for i, first, last in cand:
-            d = i.lower // unit
-            early = math.ceil(reach[i.pre] / unit)
-            fires = i.index in t.fires
-            late = level - d - (0 if fires else math.ceil(togo[i.post][t.atom] / unit))
-            xs = []
-            for k in range(first, last + 1):
-                x = m.new_bool_var("")
-                xs.append((k, x))
-                m.add(start[k] >= early).only_enforce_if(x)
-                m.add(start[k] <= late).only_enforce_if(x)
-                m.add_implication(x, at_least[k][d] if d > d_min else busy[k])
-                for r in range(len(p.robots)):
-                    if i.executors >> r & 1:
-                        per_robot_step.setdefault((r, k), []).append(x)
-            chosen.append((i, xs))
-            u = m.new_bool_var("")
-            m.add(u == sum(x for _, x in xs))
-            for r in range(len(p.robots)):
-                if i.executors >> r & 1:
-                    work[r].append((d, u))
-            st = m.new_int_var(first, last, "")
-            tm = m.new_int_var(0, level, "")  # when its step starts
-            for k, x in xs:
-                m.add(st == k).only_enforce_if(x)
-                m.add(tm == start[k]).only_enforce_if(x)
-            m.add(st >= arrive[i.pre]).only_enforce_if(u)
-            outs[i.pre].append(u)
-            if fires:
-                fired.append((u, st))
-            else:
-                ins[i.post].append(u)
-                m.add(arrive[i.post] == st + 1).only_enforce_if(u)
-                r_in = p.code_holder.get(i.post)
-                if r_in is not None:
-                    opens.setdefault(r_in, []).append((u, st, 1))
-                    arrivals.setdefault(r_in, []).append((u, tm + d))
-            r_out = p.code_holder.get(i.pre)
-            if r_out is not None:
-                closes.setdefault(r_out, []).append((u, st, 1, fires))
-                departures.setdefault(r_out, []).append((u, tm))
-        if not fired:
-            return False
-        fire_step.append(_path(m, s0, places, outs, ins, fired, K))
-        for r, ends in closes.items():
-            starts = opens.get(r)
-            if not starts:
-                for u, st, _, _ in ends:
-                    per_robot[r].append(m.new_optional_fixed_size_interval_var(st, 1, u, ""))
-                continue
-            # a loop through r's hand: it leaves in a later step and comes back in a later one
-            loop = _quickest_loop(p, t, r)
-            if loop is None or whole:
-                per_robot[r].extend(_session(m, K, starts, ends, None))
-                continue
-            arrived, leaves = m.new_int_var(0, level, ""), m.new_int_var(0, level, "")
-            for u, when in arrivals[r]:
-                m.add(arrived == when).only_enforce_if(u)
-            for u, when in departures[r]:
-                m.add(leaves == when).only_enforce_if(u)
-            timed = (arrived, leaves, (loop[0] + loop[1]) // unit)
-            per_robot[r].extend(_session(m, K, starts, ends, (1, 1), timed))
-        every.extend(chosen)
-    for k, t in enumerate(tgts):
-        for j in t.after:
-            m.add(fire_step[k] >= fire_step[j])
-    for ivs in per_robot:
-        if len(ivs) > 1:
-            m.add_no_overlap(ivs)
-    for lits in per_robot_step.values():
-        if len(lits) > 1:
-            m.add_at_most_one(lits)
-    # implied (each of a robot's instances fills a step of its own, lasting at least it), but
-    # stated: it gives CP-SAT's linear relaxation the per-robot load
-    for jobs in work:
-        if len(jobs) > 1:
-            m.add(sum(d * u for d, u in jobs) <= level)
-    solved = solve_until(m, deadline, seed)
+    axis = _Steps(cp_model.CpModel(), p, level, unit, whole)
+    if not _relaxation(p, graph, node, tgts, axis):
+        return False
+    solver = _solve(axis, deadline, seed)
+    if solver is None or solver is False:
+        return solver
+    out: list[list[Instance]] = [[] for _ in range(axis.horizon)]
+    for i, xs in axis.chosen:
+        for k, x in xs:
+            if solver.value(x):
+                out[k].append(i)
+    return tuple(tuple(step) for step in out if step)
+
+
+def _solve(axis: _Axis, deadline: float, seed: int) -> Any:
+    """CP-SAT on the model built on ``axis``: its solver when it found a schedule, False when
+    it proved there is none, None when it could not tell before ``deadline``."""
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
+    solved = solve_until(axis.model, deadline, seed)
     if solved is None:
         return None
     solver, status = solved
@@ -512,12 +310,279 @@ def relaxed_steps(
         return False
     if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
         return None
-    out: list[list[Instance]] = [[] for _ in range(K)]
-    for i, xs in every:
+    return solver
+
+
+# per instance that makes the atom happen or not, and the least ticks from its end until the
+# atom can: the positions it may sit in on the axis (None: not on the path)
+_Window = Callable[[Instance, bool, float], tuple[int, int] | None]
+# (used, time in units) per instance that brings an object into a hand or takes it out
+_Stamps = list[tuple[Any, Any]]
+# a split session's ``quickest`` and ``timed`` (``_session``)
+_Split = tuple[tuple[int, int], tuple[Any, Any, int] | None]
+
+
+@dataclass(frozen=True, slots=True)
+class _Slot:
+    """An instance as the model places it on an object's path: whether the path uses it,
+    where it sits on the axis (a time in units, or a step), how far along the axis it reaches
+    (its duration, or one step), and the time (units) it starts."""
+
+    used: Any
+    at: Any
+    span: int
+    begins: Any
+
+
+class _Axis:
+    """What the two relaxations differ in: the axis instances are placed on (``horizon``
+    points), the window each instance may sit in, how a split session's loop is timed, and the
+    constraints over the whole axis. ``_relaxation`` builds the rest (paths and sessions)."""
+
+    def __init__(self, model: Any, level: int, unit: int, horizon: int) -> None:
+        self.model = model
+        self.level = level
+        self.unit = unit
+        self.horizon = horizon
+        self.whole = False  # no session is split
+
+    def windows(self, problem: Problem, t: Target, s0: int) -> _Window:
+        """For ``t``'s object at ``s0``: the positions an instance (that makes the atom happen
+        or not; the least time, ticks, from its end until the atom can) may sit in; None when
+        it cannot be on the path."""
+        raise NotImplementedError
+
+    def place(self, i: Instance, window: tuple[int, int], early: float, rest: float) -> _Slot:
+        """Variables for ``i`` on the path, in ``window``, starting no earlier than ``early``
+        ticks, and leaving ``rest`` ticks after its end."""
+        raise NotImplementedError
+
+    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
+        """A split session's ``quickest`` and ``timed`` (``_session``) from the quickest loop
+        (ticks out, ticks back) and the times the session's arrivals end and its departures
+        start (each with its instance's "used")."""
+        raise NotImplementedError
+
+    def finish(self) -> None:
+        """Constraints over the whole axis, once every path is built."""
+
+
+class _Times(_Axis):
+    """The time line of ``_feasible``: a position is a time in units, an instance spans its
+    duration."""
+
+    def __init__(self, model: Any, level: int, unit: int) -> None:
+        super().__init__(model, level, unit, level)
+
+    def windows(self, problem: Problem, t: Target, s0: int) -> _Window:
+        return lambda i, fires, rest: (0, self.level - i.lower // self.unit)
+
+    def place(self, i: Instance, window: tuple[int, int], early: float, rest: float) -> _Slot:
+        m = self.model
+        u = m.new_bool_var("")
+        st = m.new_int_var(*window, "")
+        return _Slot(u, st, i.lower // self.unit, st)
+
+    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
+        return (loop[0] // self.unit, loop[1] // self.unit), None
+
+
+class _Steps(_Axis):
+    """The step sequence of ``relaxed_steps``: a position is a step; step k starts at
+    ``start[k]`` units, is non-empty (``busy``, at least the shortest duration) or empty and
+    then last, and lasts at least each longer duration its instances have (``at_least``)."""
+
+    def __init__(self, model: Any, problem: Problem, level: int, unit: int, whole: bool) -> None:
+        shortest = min(i.lower for i in problem.instances)
+        super().__init__(model, level, unit, level * unit // shortest)
+        self.problem = problem
+        self.whole = whole
+        self.d_min = shortest // unit
+        K, m = self.horizon, model
+        lengths = sorted({i.lower // unit for i in problem.instances if i.lower > shortest})
+        self.busy = [m.new_bool_var("") for _ in range(K)]
+        for k in range(K - 1):
+            m.add_implication(self.busy[k + 1], self.busy[k])
+        self.at_least: list[dict[int, Any]] = []
+        for k in range(K):
+            row = {d: m.new_bool_var("") for d in lengths}
+            for a, b in pairwise(lengths):
+                m.add_implication(row[b], row[a])
+            if lengths:
+                m.add_implication(row[lengths[0]], self.busy[k])
+            self.at_least.append(row)
+        self.start = [m.new_int_var(0, level, "") for _ in range(K + 1)]  # when step k starts
+        m.add(self.start[0] == 0)
+        for k in range(K):
+            prev = self.d_min
+            length = self.d_min * self.busy[k]
+            for d in lengths:
+                length += (d - prev) * self.at_least[k][d]
+                prev = d
+            m.add(self.start[k + 1] == self.start[k] + length)
+        self.per_robot_step: dict[tuple[int, int], list[Any]] = {}
+        self.work: list[list[tuple[int, Any]]] = [[] for _ in problem.robots]  # (duration, used)
+        # every instance placed, with its step literals: the schedule is read from them
+        self.chosen: list[tuple[Instance, list[tuple[int, Any]]]] = []
+
+    def windows(self, problem: Problem, t: Target, s0: int) -> _Window:
+        o, K = t.obj, self.horizon
+        hops_in = _hops(problem, o, [s0], forward=True)
+        hops_out = _hops(
+            problem,
+            o,
+            [i.pre for row in problem.by_obj_pre[o] for i in row if i.index in t.fires],
+            False,
+        )
+
+        def window(i: Instance, fires: bool, rest: float) -> tuple[int, int] | None:
+            # after the hops that bring the object to it, early enough for the hops after it,
+            # and (each step lasting at least d_min) for the time after it
+            first = hops_in.get(i.pre)
+            after = 0 if fires else hops_out.get(i.post, K) + 1
+            if first is None:
+                return None
+            slack = self.level - i.lower // self.unit - math.ceil(rest / self.unit)
+            last = min(K - 1 - after, slack // self.d_min)
+            return (first, last) if first <= last else None
+
+        return window
+
+    def place(self, i: Instance, window: tuple[int, int], early: float, rest: float) -> _Slot:
+        m, unit = self.model, self.unit
+        d = i.lower // unit
+        lo = math.ceil(early / unit)
+        late = self.level - d - math.ceil(rest / unit)
+        first, last = window
+        xs = []
+        for k in range(first, last + 1):
+            x = m.new_bool_var("")
+            xs.append((k, x))
+            m.add(self.start[k] >= lo).only_enforce_if(x)
+            m.add(self.start[k] <= late).only_enforce_if(x)
+            m.add_implication(x, self.at_least[k][d] if d > self.d_min else self.busy[k])
+            for r in range(len(self.problem.robots)):
+                if i.executors >> r & 1:
+                    self.per_robot_step.setdefault((r, k), []).append(x)
+        self.chosen.append((i, xs))
+        u = m.new_bool_var("")
+        m.add(u == sum(x for _, x in xs))
+        for r in range(len(self.problem.robots)):
+            if i.executors >> r & 1:
+                self.work[r].append((d, u))
+        st = m.new_int_var(first, last, "")
+        tm = m.new_int_var(0, self.level, "")  # when its step starts
         for k, x in xs:
-            if solver.value(x):
-                out[k].append(i)
-    return tuple(tuple(step) for step in out if step)
+            m.add(st == k).only_enforce_if(x)
+            m.add(tm == self.start[k]).only_enforce_if(x)
+        return _Slot(u, st, 1, tm)
+
+    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
+        # it leaves in a later step and comes back in a later one, and the loop takes time
+        m = self.model
+        arrived, leaves = m.new_int_var(0, self.level, ""), m.new_int_var(0, self.level, "")
+        for u, when in arrivals:
+            m.add(arrived == when).only_enforce_if(u)
+        for u, when in departures:
+            m.add(leaves == when).only_enforce_if(u)
+        return (1, 1), (arrived, leaves, (loop[0] + loop[1]) // self.unit)
+
+    def finish(self) -> None:
+        m = self.model
+        for lits in self.per_robot_step.values():
+            if len(lits) > 1:
+                m.add_at_most_one(lits)
+        # implied (each of a robot's instances fills a step of its own, lasting at least it),
+        # but stated: it gives CP-SAT's linear relaxation the per-robot load
+        for jobs in self.work:
+            if len(jobs) > 1:
+                m.add(sum(d * u for d, u in jobs) <= self.level)
+
+
+def _relaxation(
+    problem: Problem, graph: RelaxedGraph, node: Node, tgts: Sequence[Target], axis: _Axis
+) -> bool:
+    """Build the relaxation's paths and hand sessions into ``axis.model`` on ``axis``: per
+    target, its object's path from where it is to an instance that makes the atom happen, and
+    per robot the sessions in which it holds that object (whole, or split around a loop), none
+    of a robot's overlapping; every "first A, then B" order. False (the model unfinished) when
+    some target cannot happen by ``axis.level``."""
+    p, m = problem, axis.model
+    locs = node[0]
+    cap = axis.level * axis.unit
+    H = axis.horizon
+    per_robot: list[list[Any]] = [[] for _ in p.robots]
+    fire_at: list[Any] = []
+    for t in tgts:
+        o, s0 = t.obj, locs[t.obj]
+        reach = graph.place_time[o][s0]
+        togo = graph.event_time[o]
+        if togo[s0].get(t.atom, math.inf) > cap:
+            return False
+        window = axis.windows(p, t, s0)
+        cand: list[tuple[Instance, tuple[int, int], float]] = []
+        for i in (i for row in p.by_obj_pre[o] for i in row):
+            fires = i.index in t.fires
+            rest = 0 if fires else togo[i.post].get(t.atom, math.inf)
+            if reach[i.pre] + i.lower + rest > cap or (not fires and i.post == s0):
+                continue
+            w = window(i, fires, rest)
+            if w is not None:
+                cand.append((i, w, rest))
+        places = {s0} | {i.pre for i, _, _ in cand}
+        places |= {i.post for i, _, _ in cand if i.index not in t.fires}
+        arrive = {c: m.new_int_var(0, H, "") for c in places}
+        m.add(arrive[s0] == 0)
+        outs: dict[int, list[Any]] = {c: [] for c in places}
+        ins: dict[int, list[Any]] = {c: [] for c in places}
+        fired: list[tuple[Any, Any]] = []
+        opens: dict[int, list[tuple[Any, Any, int]]] = {}  # robot -> (used, at, span)
+        closes: dict[int, list[tuple[Any, Any, int, bool]]] = {}  # ... and whether it fires
+        arrivals: dict[int, list[tuple[Any, Any]]] = {}  # robot -> (used, time the arrival ends)
+        departures: dict[int, list[tuple[Any, Any]]] = {}  # ... (used, time it starts)
+        for i, w, rest in cand:
+            slot = axis.place(i, w, reach[i.pre], rest)
+            u, st, span = slot.used, slot.at, slot.span
+            m.add(st >= arrive[i.pre]).only_enforce_if(u)
+            outs[i.pre].append(u)
+            fires = i.index in t.fires
+            if fires:
+                fired.append((u, st))
+            else:
+                ins[i.post].append(u)
+                m.add(arrive[i.post] == st + span).only_enforce_if(u)
+                r_in = p.code_holder.get(i.post)
+                if r_in is not None:
+                    opens.setdefault(r_in, []).append((u, st, span))
+                    arrivals.setdefault(r_in, []).append((u, slot.begins + i.lower // axis.unit))
+            r_out = p.code_holder.get(i.pre)
+            if r_out is not None:
+                closes.setdefault(r_out, []).append((u, st, span, fires))
+                departures.setdefault(r_out, []).append((u, slot.begins))
+        if not fired:
+            return False
+        fire_at.append(_path(m, s0, places, outs, ins, fired, H))
+        for r, ends in closes.items():
+            starts = opens.get(r)
+            if not starts:
+                # the object is in r's hand at the start: its leaving is plain work of r
+                for u, st, span, _ in ends:
+                    per_robot[r].append(m.new_optional_fixed_size_interval_var(st, span, u, ""))
+                continue
+            loop = _quickest_loop(p, t, r)
+            if loop is None or axis.whole:
+                per_robot[r].extend(_session(m, H, starts, ends, None))
+            else:
+                quickest, timed = axis.loop(loop, arrivals[r], departures[r])
+                per_robot[r].extend(_session(m, H, starts, ends, quickest, timed))
+    for k, t in enumerate(tgts):
+        for j in t.after:
+            m.add(fire_at[k] >= fire_at[j])
+    for ivs in per_robot:
+        if len(ivs) > 1:
+            m.add_no_overlap(ivs)
+    axis.finish()
+    return True
 
 
 def _quickest_loop(problem: Problem, t: Target, r: int) -> tuple[int, int] | None:
