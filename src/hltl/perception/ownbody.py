@@ -1,11 +1,10 @@
-"""The robots' own bodies in a frame: their link capsules placed by the frame's joint state.
+"""The robots' own bodies in a frame: their link capsules placed by the frame's joint state."""
 
-A learned segmenter takes a gripper's fingers or a link's end for a box now and then. The arm's
-joint positions are known to the robot itself (the 3D simulator's frames carry them; a recording
-may carry them per frame in ``camera.json``), so forward kinematics of the motion model's link
-geometry (:class:`hltl.motion.kinematics.LinkGeometry`, the capsules motion planning checks)
-says where the arm is, and a region lying mostly inside those capsules is the arm, not an object.
-"""
+# A learned segmenter takes a gripper's fingers or a link's end for a box now and then. The arm's
+# joint positions are known to the robot itself (the 3D simulator's frames carry them; a recording
+# may carry them per frame in camera.json), so forward kinematics of the motion model's link
+# geometry (hltl.motion.kinematics.LinkGeometry, the capsules motion planning checks) says where
+# the arm is, and a region lying mostly inside those capsules is the arm, not an object.
 
 from __future__ import annotations
 
@@ -50,8 +49,9 @@ class OwnBodies:
         self._geometry: dict[str, Any] = {}
 
     def _link_geometry(self, rid: str) -> Any:
+        # why: the motion layer needs Pinocchio (extra motion); frames without joints never do
         from hltl.motion.kinematics import LinkGeometry
-        from hltl.motion.robots import has_model
+        from hltl.motion.robots import has_model  # why: as above
 
         if rid not in self._geometry:
             assert self.scene is not None
