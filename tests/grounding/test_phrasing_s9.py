@@ -383,3 +383,51 @@ def test_whoever_after_people_is_either_of_them() -> None:
         "Mr Lee or Mrs Khan can have the magazine, whoever", "magazine>B | magazine>C", WARD
     )
     assert tree("Whoever wants it, give Bob the apple") is None
+
+
+# -- blind6's last three misses: descriptions per person, 'the other' after one, 'whichever one
+# <person> doesn't get' -----------------------------------------------------------------------
+
+L44 = load_scene(ROOT / "examples/scenes/4-4-line.yaml")
+
+
+@pytest.mark.parametrize(
+    "who", ["each person", "everyone", "every person", "Person A and Person B"]
+)
+def test_a_description_per_person(who: str) -> None:
+    # the oracle: the description said for each person by name
+    each = "Give Person A the thing closest to Person A and Person B the thing closest to Person B"
+    assert tree(each, L44) is not None
+    assert tree(f"Give {who} the thing closest to them", L44) == tree(each, L44)
+
+
+def test_a_description_per_person_needs_a_clear_nearest_for_each() -> None:
+    # Carol's nearest mug is clear, and so is Alice's; with 'the thing' Carol's is not
+    assert_means("give Alice and Carol the mug nearest to them", "mug_blue>A & mug_red>C")
+    assert tree("give everyone the thing nearest to them") is None
+
+
+def test_the_other_one_after_a_description_by_name() -> None:
+    t24s = load_scene(ROOT / "examples/scenes/2-4-square.yaml")
+    assert_means(
+        "Give Person B the thing nearest to Person B, and the other one to Person A",
+        "bottle>B & chips>A",
+        t24s,
+    )
+
+
+def test_whichever_one_someone_does_not_get() -> None:
+    assert_means(
+        "Give Bob whichever one Alice doesn't get, and give Alice the bottle",
+        "chips>B & bottle>A",
+        TWO,
+    )
+    # with more objects left, or no other part for Alice, or a choice: which one? refused
+    assert tree("Give Bob whichever one Alice doesn't get, and give Alice the bottle") is None
+    assert tree("Give Bob whichever one Alice doesn't get", TWO) is None
+    assert (
+        tree(
+            "Give Bob whichever one Alice doesn't want, and give Alice the bottle or the chips", TWO
+        )
+        is None
+    )

@@ -751,6 +751,24 @@ def _wanted(before: list[Item]) -> bool:
     return m > 0 and _humans(before[m - 1])
 
 
+def _places_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """_places for descriptions measured from a name ('the thing nearest to Person B'), early:
+    the quantity passes ('the other one') then see the one object it picks out. Descriptions
+    measured from a pronoun wait for _places, after the pronouns are resolved."""
+    return _after_objects(items, lexicon, _place_named)
+
+
+def _place_named(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
+        return k
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
+        return k
+    return _place(items, k, out, lexicon)
+
+
 def _given(before: list[Item]) -> bool:
     """Whether the words before an object are 'give/hand/pass … <person> [the]'."""
     n = len(before)
@@ -2396,6 +2414,11 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
     k = 0
     while k < len(items):
         found = _rest_at(items, k)
+        unwanted = _not_gotten(items, k) if found is None else 0
+        if unwanted:  # "Give Bob whichever one Alice doesn't get, and give Alice the bottle"
+            out.append(_the_one_left(items, k, unwanted, lexicon))
+            k += unwanted
+            continue
         if found is None:
             out.append(items[k])
             k += 1
@@ -2429,6 +2452,51 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(Item("ent", words.lower(), words, refs, quant="all"))
         k += n
     return out
+
+
+def _not_gotten(items: list[Item], k: int) -> int:
+    """How many words say 'whichever/whatever (one) <person> doesn't get/want/have' at ``k``,
+    else 0."""
+    if items[k].text.lower() not in ("whichever one", "whichever", "whatever", "the one"):
+        return 0
+    j = k + 1
+    if j < len(items) and items[j].text.lower() == "one":
+        j += 1
+    if j + 2 >= len(items) or not _humans(items[j]) or len({r.id for r in items[j].refs}) != 1:
+        return 0
+    n = j + 1
+    while n < len(items) and _is(items[n], "aux"):
+        n += 1
+    if not (
+        n + 1 < len(items) and _is(items[n], "not") and items[n].text.lower() in ("n't", "not")
+    ):
+        return 0
+    if items[n + 1].lemma not in ("verb:get", "verb:have", "verb:want", "verb:receive"):
+        return 0
+    return n + 2 - k
+
+
+def _the_one_left(items: list[Item], k: int, n: int, lexicon: Lexicon) -> Item:
+    """The one object 'whichever one <P> doesn't get' can be: in an instruction about two people
+    (P and the one who gets this) without a choice, the one object no other part names."""
+    words = _words_of(items[k : k + n])
+    others = items[:k] + items[k + n :]
+    person = next(x for x in items[k : k + n] if _humans(x))
+    people = {r.id for x in items if _humans(x) for r in x.refs}
+    if (
+        _choices(others)
+        or len(people) != 2
+        or not any(_humans(x) and x.refs == person.refs for x in others)
+    ):
+        raise GroundingError(f"{words!r}: which one is that? name the object")
+    named = {r.id for x in others if _objects(x) for r in x.refs}
+    left = [o.id for o in lexicon.scene.objects if o.id not in named]
+    if len(left) != 1:
+        raise GroundingError(
+            f"{words!r}: {len(left)} objects are left ({', '.join(left) or 'none'}); "
+            "name the object"
+        )
+    return Item("ent", words.lower(), words, (Ref("object", left[0]),))
 
 
 def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[Item], int] | None:
@@ -4010,6 +4078,41 @@ def _clause_before(out: list[Item]) -> list[Item]:
     return out[n:]
 
 
+def _each_nearest(items: list[Item]) -> list[Item]:
+    """'Give each person the thing closest to them': people listed as recipients (each person,
+    'Alice and Bob'), then one description measured from 'them', is that description for each
+    of them in turn ('Person A the thing closest to Person A and Person B the thing closest to
+    Person B')."""
+    for k, x in enumerate(items):
+        if not (x.text.lower() == "them" and k >= 2 and _is(items[k - 1], "nearest", "farthest")):
+            continue
+        o = k - 2
+        if not _objects(items[o]):
+            return items
+        d = o
+        while d > 0 and _is(items[d - 1], "det"):
+            d -= 1
+        people: list[Item] = []
+        n = d
+        while n > 0 and (_humans(items[n - 1]) or _is(items[n - 1], "and", ",")):
+            n -= 1
+            if _humans(items[n]):
+                people.insert(0, items[n])
+        if len(people) < 2 or any(len({r.id for r in p.refs}) != 1 for p in people):
+            return items
+        if n == 0 or not _is_verb_item(items[n - 1]):
+            return items
+        if k + 1 < len(items) and not _is(items[k + 1], *_SEPARATORS, "filler"):
+            return items
+        out = list(items[:n])
+        for m, p in enumerate(people):
+            if m:
+                out.append(Item("word", "and", "and"))
+            out += [p, *items[d:k], Item("ent", p.lemma, p.text, p.refs)]
+        return out + items[k + 1 :]
+    return items
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
@@ -4045,6 +4148,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_do_for),
     _plain(_after_all),
     _plain(_superlatives),
+    _places_named,
     _rest,
     _whatever_near,
     _plain(_any_restated),
@@ -4071,6 +4175,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_has_taken),
     _plain(_not_wanted),
     _plain(_not_after),
+    _plain(_each_nearest),
     _places,
     _plain(_there),
     _remarks,
