@@ -794,15 +794,7 @@ def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) ->
     kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
     if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
         return k  # not a surface: left to the grammar (which refuses a second recipient)
-    surface = next(x for x in lexicon.scene.surfaces if x.id == items[j].refs[0].id)
-    (cx, cy), (sx, sy) = surface.center[:2], surface.size
-    on = [
-        o.id
-        for o in lexicon.scene.objects
-        if o.id in {r.id for r in it.refs}
-        and abs(o.position[0] - cx) <= sx / 2
-        and abs(o.position[1] - cy) <= sy / 2
-    ]
+    on = _starting_on({r.id for r in it.refs}, items[j].refs[0].id, lexicon)
     if not on:
         raise GroundingError(
             f"no {it.text!r} is on the {items[j].text!r} in the scene (where the objects "
@@ -3572,10 +3564,12 @@ def _closing_also(items: list[Item]) -> list[Item]:
     return out
 
 
-def _people_named(items: list[Item]) -> list[Item]:
+def _people_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Nurse Ruth', 'the patient Mr Lee': a name right after another name of the same person
-    (or of people including them) is that one person; 'the patients' (an alias several people
-    share, in the plural) is each of them, joined by 'and'."""
+    (or of people including them) is that one person, when both are names the scene gives,
+    spelled out and different ('Alise alice' is a name said twice, not a title); 'the
+    patients' (an alias several people share, in the plural) is each of them, joined by
+    'and'."""
     out: list[Item] = []
     for x in items:
         prev = out[-1] if out else None
@@ -3586,6 +3580,9 @@ def _people_named(items: list[Item]) -> list[Item]:
             and not any(r.plural for r in (*prev.refs, *x.refs))
             and len({r.id for r in x.refs}) == 1
             and x.refs[0].id in {r.id for r in prev.refs}
+            and prev.lemma != x.lemma
+            and lexicon.lookup(prev.lemma) is not None
+            and lexicon.lookup(x.lemma) is not None
         ):
             out[-1] = replace(x, text=f"{prev.text} {x.text}")
             continue
@@ -3900,17 +3897,18 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _lying_on(things: list[Item], surface: Item, lexicon: Lexicon) -> bool:
     """Whether one of the objects ``things`` name starts on ``surface``."""
     ids = {r.id for y in things if _objects(y) for r in y.refs}
-    for s in lexicon.scene.surfaces:
-        if s.id in {r.id for r in surface.refs}:
-            (cx, cy), (sx, sy) = s.center[:2], s.size
-            for o in lexicon.scene.objects:
-                if (
-                    o.id in ids
-                    and abs(o.position[0] - cx) <= sx / 2
-                    and abs(o.position[1] - cy) <= sy / 2
-                ):
-                    return True
-    return False
+    return any(_starting_on(ids, r.id, lexicon) for r in surface.refs)
+
+
+def _starting_on(ids: set[str], surface: str, lexicon: Lexicon) -> list[str]:
+    """The objects of ``ids`` that start on ``surface`` (inside its footprint), in scene order."""
+    s = next(x for x in lexicon.scene.surfaces if x.id == surface)
+    (cx, cy), (sx, sy) = s.center[:2], s.size
+    return [
+        o.id
+        for o in lexicon.scene.objects
+        if o.id in ids and abs(o.position[0] - cx) <= sx / 2 and abs(o.position[1] - cy) <= sy / 2
+    ]
 
 
 def _starts_surface(items: list[Item], k: int) -> bool:
@@ -4118,7 +4116,7 @@ def _each_nearest(items: list[Item]) -> list[Item]:
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_any_order),
     _plain(_closing_also),
-    _plain(_people_named),
+    _people_named,
     _plain(_restated),
     _plain(_notes),
     _plain(_surface_notes),
