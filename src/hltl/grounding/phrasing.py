@@ -3961,10 +3961,30 @@ def _restated(items: list[Item]) -> list[Item]:
             k += 3
             continue
         out.append(x)
-        if _objects(x) and _starts_objects(items, k + 1) and _list_ahead(items, k + 1):
+        if (
+            _objects(x)
+            and _starts_objects(items, k + 1)
+            and _list_ahead(items, k + 1)
+            and _list_opens(out)
+        ):
             out.append(Item("punct", ",", ","))
         k += 1
     return out
+
+
+def _list_opens(out: list[Item]) -> bool:
+    """Whether the objects ``out`` ends with follow a verb or a person ('give person a the apple
+    the chips …'), so a list without commas is theirs; each object named once."""
+    n = len(out)
+    named: list[str] = []
+    while n > 0 and (_objects(out[n - 1]) or _is(out[n - 1], "det", ",")):
+        named += [r.id for r in out[n - 1].refs] if _objects(out[n - 1]) else []
+        n -= 1
+    return (
+        n > 0
+        and (_humans(out[n - 1]) or _is_verb_item(out[n - 1]))
+        and len(named) == len(set(named))
+    )
 
 
 def _list_ahead(items: list[Item], k: int) -> bool:
