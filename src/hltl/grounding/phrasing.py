@@ -12,6 +12,7 @@ from hltl.grounding.lexicon import (
     CHANGES_OF_MIND,
     NUMBERS,
     RETRACTIONS,
+    VERB_CLASS,
     Item,
     Lexicon,
     Ref,
@@ -678,6 +679,8 @@ def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
 
 def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
+    if k < len(items) and _is(items[k], "on") and _handed_on(items, k, out):
+        return _on_surface(items, k, out, lexicon)  # "give the cup on the shelf to Bob"
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
         if _wanted(out[:-1]) and (
             len({r.id for r in it.refs}) == 1 or any(r.plural for r in it.refs)
@@ -736,6 +739,27 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
         group=-1 if single else it.group,
     )
     return j + 1
+
+
+def _handed_on(items: list[Item], k: int, out: list[Item]) -> bool:
+    """Whether 'on <surface>' at ``k`` describes the object before it because a recipient
+    follows it ('give the cup on the shelf to Bob'), in a clause whose verb hands over or
+    brings (with 'put', 'for Bob' may only say whom it is for)."""
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    if not (j + 1 < len(items) and _is_surface(items[j]) and _is(items[j + 1], "to")):
+        return False
+    n = j + 2
+    while n < len(items) and _is(items[n], "det"):
+        n += 1
+    if n >= len(items) or not _humans(items[n]):
+        return False
+    verb = next((x for x in reversed(out) if _is_verb_item(x)), None)
+    return verb is not None and VERB_CLASS.get(verb.lemma.removeprefix("verb:")) in (
+        "give",
+        "bring",
+    )
 
 
 def _wanted(before: list[Item]) -> bool:
@@ -2284,7 +2308,9 @@ def _hedges(items: list[Item]) -> list[Item]:
     out: list[Item] = []
     for k, it in enumerate(items):
         if _is(it, "hedge"):
-            if not _opening(items, k):
+            # "Could Alice maybe get the cup?": after a question's auxiliary and its person
+            asked = k >= 2 and _humans(items[k - 1]) and _is(items[k - 2], "aux")
+            if not (_opening(items, k) or (asked and _opening(items, k - 2))):
                 raise GroundingError(f"{it.text!r} leaves open whether to do it: say what to do")
             continue
         out.append(it)
@@ -3080,6 +3106,15 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
             k += 1
             continue
         j = k - 1 if k > 0 and _is(items[k - 1], ",") else k
+        to = j
+        while to > 0 and (_humans(items[to - 1]) or _is(items[to - 1], "and", ",")):
+            to -= 1
+        if to < j and to > 0 and _is(items[to - 1], "to", "for"):
+            # "Give the mugs to Alice and Carol, one each": the objects before 'to'
+            moved = _one_each_to(items, to - 1, j, end)
+            if moved is not None:
+                items = moved
+                continue
         stop = j
         names: list[Item] = []
         while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
@@ -3101,20 +3136,51 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 people += int(items[n].lemma.removeprefix("q:people:"))
             n -= 1
         single = all(len(x.refs) == 1 and not x.refs[0].plural for x in names)
-        if len(names) < 2 or not single or people < 2:
+        # "Give Alice and Carol the mugs, one each": one plural name for all of its kind
+        plural = len(names) == 1 and len(names[0].refs) > 1 and all(r.plural for r in names[0].refs)
+        if not ((len(names) >= 2 and single) or plural) or people < 2:
             k += 1
             continue
-        if people != len(names):
+        refs = tuple(Ref("object", i) for i in dict.fromkeys(r.id for x in names for r in x.refs))
+        if people != len(refs):
             raise GroundingError(
-                f"'one each' for {people} people, but {len(names)} objects are named: "
+                f"'one each' for {people} people, but {len(refs)} objects are named: "
                 "name one for each person"
             )
-        refs = tuple(x.refs[0] for x in names)
         words = _words_of(items[j:stop])
         choice = Item("ent", words.lower(), words, refs, quant="some", group=j)
         items = [*items[:j], choice, Item("word", "all", "each"), *items[end:]]
         k = j + 2
     return items
+
+
+def _one_each_to(items: list[Item], to: int, stop: int, end: int) -> list[Item] | None:
+    """'Give the mugs to Alice and Carol, one each' as 'Give a mug each to Alice and Carol':
+    the objects right before 'to' (named one by one, or one plural name for all of its kind)
+    become one choice each of the people after it; None when there are no such objects."""
+    j = to
+    names: list[Item] = []
+    while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
+        j -= 1
+        if _objects(items[j]):
+            names.insert(0, items[j])
+    while j < to and not _objects(items[j]):
+        j += 1
+    while j > 0 and _is(items[j - 1], "det"):
+        j -= 1
+    people = sum(len(x.refs) for x in items[to:stop] if _humans(x))
+    refs = tuple(dict.fromkeys(r.id for x in names for r in x.refs))
+    plural = len(names) == 1 and all(r.plural for r in names[0].refs)
+    if not names or not (plural or all(len(x.refs) == 1 for x in names)) or len(refs) < 2:
+        return None
+    if people != len(refs):
+        raise GroundingError(
+            f"'one each' for {people} people, but {len(refs)} objects are named: "
+            "name one for each person"
+        )
+    words = _words_of(items[j:to])
+    choice = Item("ent", words.lower(), words, tuple(Ref("object", i) for i in refs), "some", j)
+    return [*items[:j], choice, Item("word", "all", "each"), *items[to:stop], *items[end:]]
 
 
 def _swaps(items: list[Item]) -> list[Item]:
@@ -3202,7 +3268,7 @@ def _any_restated(items: list[Item]) -> list[Item]:
         it = items[k]
         prev = out[-1] if out else None
         before = out[-2] if len(out) > 1 else None
-        pause = _is(it, ",", "-")
+        pause = _is(it, ",", "-", ".", "!", ";")  # "Carol needs a mug. Any mug."
         chose = (
             prev is not None
             and _objects(prev)
@@ -3849,7 +3915,10 @@ def _so_after_remark(items: list[Item]) -> list[Item]:
             start -= 1
         if not (_opening(items, start) or start == 0) or not _opens_remark(items, start):
             continue
-        nxt = items[k + 1]
+        n = k + 1
+        while n + 1 < len(items) and _is(items[n], "filler"):
+            n += 1  # "… so could you give him the chips"
+        nxt = items[n]
         if _is_verb_item(nxt) or _humans(nxt) or nxt.lemma == "pronoun" or _is(nxt, "aux"):
             out[k] = Item("punct", ",", x.text)
     return out
@@ -3960,6 +4029,22 @@ def _restated(items: list[Item]) -> list[Item]:
             out += [x, items[k + 2]]
             k += 3
             continue
+        if (
+            x.text.lower() == "one"
+            and _is(x, "task")
+            and (nxt is None or _is(nxt, "to", "for", ",", "and", *_END))
+            and out
+            and (_is(out[-1], "and", ",") or _humans(out[-1]))
+        ):
+            said = [
+                items[j + 1]
+                for j in range(k - 1)
+                if items[j].text.lower() == "one" and _objects(items[j + 1])
+            ]
+            if len(said) == 1:  # "Give one mug to Alice and one to Carol": another mug
+                out += [Item("word", "other", "another"), said[0]]
+                k += 1
+                continue
         out.append(x)
         if (
             _objects(x)
