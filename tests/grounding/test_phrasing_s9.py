@@ -486,3 +486,10 @@ def test_a_condition_without_a_comma_after_a_request_is_refused() -> None:
         "Give Bob the chips and once Alice has the bottle put the cup on the shelf",
         "chips>B & (bottle>A ; cup@shelf)",
     )
+
+
+def test_i_mean_after_a_new_name_then_more_words_is_refused() -> None:
+    # the run-on fuzz read this as the chips alone (Bob's task dropped)
+    assert tree("Give Bob the cup, the apple I mean give Alice the chips") is None
+    assert_means("Give Bob the cup, the apple I mean", "apple>B")
+    assert_means("give Bob the cup I mean the apple", "apple>B")

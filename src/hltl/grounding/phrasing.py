@@ -2790,6 +2790,18 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
         if not (_is(it, "correct") and it.text.lower() in ("i mean", "i meant")):
             continue
         if k + 1 < len(items) and not (items[k + 1].kind == "punct" and items[k + 1].lemma in _END):
+            said = k > 1 and items[k - 1].kind == "ent" and items[k + 1].kind != "punct"
+            if said and (
+                _is(items[k - 2], ",")
+                or (k > 2 and _is(items[k - 2], "det") and _is(items[k - 3], ","))
+            ):
+                # "Give Bob the cup, the apple I mean give Alice the chips": does 'I mean' take
+                # back what came before it, or bring what comes after? (the run-on fuzz read
+                # it as the chips alone)
+                raise GroundingError(
+                    f"cannot tell what {it.text!r} after {items[k - 1].text!r} corrects: end "
+                    "the sentence after it"
+                )
             continue
         if k < 2 or items[k - 1].kind != "ent":
             continue
@@ -3116,15 +3128,7 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 items = moved
                 continue
         stop = j
-        names: list[Item] = []
-        while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
-            j -= 1
-            if _objects(items[j]):
-                names.insert(0, items[j])
-        while j < stop and not _objects(items[j]):
-            j += 1  # the separators before the first object belong to the clause before it
-        while j > 0 and _is(items[j - 1], "det"):
-            j -= 1
+        j, names = _listed_before(items, stop)
         people = 0
         n = j - 1
         while n >= 0 and not (items[n].kind == "punct" and items[n].lemma in _END):
@@ -3154,20 +3158,27 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
     return items
 
 
-def _one_each_to(items: list[Item], to: int, stop: int, end: int) -> list[Item] | None:
-    """'Give the mugs to Alice and Carol, one each' as 'Give a mug each to Alice and Carol':
-    the objects right before 'to' (named one by one, or one plural name for all of its kind)
-    become one choice each of the people after it; None when there are no such objects."""
-    j = to
+def _listed_before(items: list[Item], stop: int) -> tuple[int, list[Item]]:
+    """The list of objects ending at ``stop``: where it starts (its article included) and the
+    object names in it."""
+    j = stop
     names: list[Item] = []
     while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
         j -= 1
         if _objects(items[j]):
             names.insert(0, items[j])
-    while j < to and not _objects(items[j]):
-        j += 1
+    while j < stop and not _objects(items[j]):
+        j += 1  # the separators before the first object belong to the clause before it
     while j > 0 and _is(items[j - 1], "det"):
         j -= 1
+    return j, names
+
+
+def _one_each_to(items: list[Item], to: int, stop: int, end: int) -> list[Item] | None:
+    """'Give the mugs to Alice and Carol, one each' as 'Give a mug each to Alice and Carol':
+    the objects right before 'to' (named one by one, or one plural name for all of its kind)
+    become one choice each of the people after it; None when there are no such objects."""
+    j, names = _listed_before(items, to)
     people = sum(len(x.refs) for x in items[to:stop] if _humans(x))
     refs = tuple(dict.fromkeys(r.id for x in names for r in x.refs))
     plural = len(names) == 1 and all(r.plural for r in names[0].refs)
