@@ -493,3 +493,9 @@ def test_i_mean_after_a_new_name_then_more_words_is_refused() -> None:
     assert tree("Give Bob the cup, the apple I mean give Alice the chips") is None
     assert_means("Give Bob the cup, the apple I mean", "apple>B")
     assert_means("give Bob the cup I mean the apple", "apple>B")
+
+
+def test_whatever_is_on_a_surface() -> None:
+    assert_means("Give Sam whatever is on the desk", "pen_blue>B", OFFICE)
+    assert_means("put whatever's on the desk in the box", "pen_blue@box", OFFICE)
+    assert tree("Hand Carol whatever is on the table") is None  # nothing starts there

@@ -2614,6 +2614,24 @@ def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
             out.append(Item("ent", "whatever", it.text, everything))
             k += 2
             continue
+        if (
+            _is(it, "whatever")
+            and k + 3 < len(items)
+            and items[k + 1].text.lower() in ("'s", "is")
+            and _is(items[k + 2], "on")
+            and _starts_surface(items, k + 3)
+        ):  # "Hand Carol whatever is on the table": every object that starts there
+            n = k + 3
+            while not _is_surface(items[n]):
+                n += 1
+            on = _starting_on({r.id for r in everything}, items[n].refs[0].id, lexicon)
+            if not on:
+                raise GroundingError(f"nothing is on the {items[n].text!r} in the scene")
+            words = _words_of(items[k : n + 1])
+            refs = tuple(Ref("object", i, plural=True) for i in on)
+            out.append(Item("ent", words.lower(), words, refs, quant="all"))
+            k = n + 1
+            continue
         out.append(it)
         k += 1
     return out
