@@ -499,3 +499,16 @@ def test_whatever_is_on_a_surface() -> None:
     assert_means("Give Sam whatever is on the desk", "pen_blue>B", OFFICE)
     assert_means("put whatever's on the desk in the box", "pen_blue@box", OFFICE)
     assert tree("Hand Carol whatever is on the table") is None  # nothing starts there
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("give alice the cup comma and bob the chips", "cup>A & chips>B"),
+        ("give alice the cup full stop then bob the chips period", "cup>A ; chips>B"),
+        ("cup -> Alice, chips -> Bob", "cup>A & chips>B"),
+        ("Carol needs a mug, any colour", "mug_red>C | mug_blue>C"),
+    ],
+)
+def test_dictated_punctuation_arrows_and_any_colour(text: str, want: str) -> None:
+    assert_means(text, want)
