@@ -10,6 +10,7 @@ import pytest
 from hltl.bench.pmp import DEFAULT_PMP, load_pmp_latency, write_pmp_latency
 from hltl.bench.suite import AblationOptions
 from hltl.cli.main import main
+from hltl.errors import HltlError
 from hltl.execution.latency import load_latency_model
 
 
@@ -55,21 +56,38 @@ def test_a_constant_latency_is_still_available_for_comparison() -> None:
     assert "--plan-latency 0.2" in opts.command()
 
 
-def test_no_pmp_charges_the_serial_candidate_planner(tmp_path: Path) -> None:
+def test_no_pmp_runs_the_serial_candidate_planner() -> None:
+    opts = AblationOptions(trials=1, variants_text="full,no-pp,no-pmp,antic-gru")
+    full, no_pp, no_pmp, antic = opts.variants()
+    assert full.motion == no_pp.motion == antic.motion == "parallel"
+    assert no_pmp.motion == "serial"
+    assert full.r2r_motion_s == no_pmp.r2r_motion_s == 0.0  # measured, not a fixed latency
+    assert full.latency == no_pmp.latency and no_pmp.predict
+    assert "--pmp" not in opts.command()
+
+
+def test_the_fixed_pmp_latency_model_is_still_available(tmp_path: Path) -> None:
     pmp = load_pmp_latency(DEFAULT_PMP)
     assert pmp.source.startswith("`hltl bench pmp") and pmp.candidates >= 8
     assert pmp.serial_cpu_s > 0 and pmp.parallel_s > 0
-    opts = AblationOptions(trials=1, variants_text="full,no-pp,no-pmp")
+    opts = AblationOptions(trials=1, variants_text="full,no-pp,no-pmp", pmp_mode="model")
     full, no_pp, no_pmp = opts.variants()
     assert full.r2r_motion_s == no_pp.r2r_motion_s == pmp.parallel_s
     assert no_pmp.r2r_motion_s == pmp.serial_s
-    assert full.latency == no_pmp.latency and no_pmp.predict
+    assert full.motion == no_pmp.motion == ""
+    assert "--pmp model" in opts.command()
     # another measurement file, named in the command
     other = tmp_path / "pmp.json"
     write_pmp_latency(other, replace(pmp, serial_s=2.0, parallel_s=1.0))
-    opts = AblationOptions(trials=1, variants_text="full,no-pmp", pmp_latency=other)
+    opts = AblationOptions(
+        trials=1, variants_text="full,no-pmp", pmp_latency=other, pmp_mode="model"
+    )
     assert [v.r2r_motion_s for v in opts.variants()] == [1.0, 2.0]
     assert f"--pmp-latency {other}" in opts.command()
+    with pytest.raises(HltlError, match="--pmp-latency"):
+        AblationOptions(pmp_latency=other)
+    with pytest.raises(HltlError, match="--pmp: unknown mode 'fast'"):
+        AblationOptions(pmp_mode="fast")
 
 
 @pytest.mark.parametrize(
@@ -81,7 +99,7 @@ def test_bad_pmp_files_are_one_error_line(
 ) -> None:
     bad = tmp_path / "pmp.json"
     bad.write_text(text)
-    argv = ["bench", "ablation", "--trials", "1", "--pmp-latency", str(bad)]
+    argv = ["bench", "ablation", "--trials", "1", "--pmp", "model", "--pmp-latency", str(bad)]
     assert main(argv) == 1
     line = _error_line(capsys)
     assert needle in line and "P.M.P. latency" in line

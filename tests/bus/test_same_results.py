@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -327,7 +328,18 @@ def test_observers_receive_ros2_poses(loopback: Loopback) -> None:
         loopback._exec_session.declare_subscriber(f"{keys.root}/humans/*/pose", on("humans")),
         loopback._exec_session.declare_subscriber(f"{keys.root}/robots/*/tool_pose", on("hands")),
     ]
-    run = loopback.run(sc.scene, instruction=sc.instruction, seed=0)
+    # a subscriber hears what is published after its declaration has reached the publisher (the
+    # node learns it through its matching listeners): wait for that, bounded, before the episode
+    node = loopback.node(sc.scene)
+    wanted = {keys.human_pose(h) for h in sc.scene.human_ids}
+    wanted |= {keys.tool_pose(r) for r in sc.scene.robot_ids}
+    deadline = time.monotonic() + 10.0
+    while not wanted <= node._matched and time.monotonic() < deadline:
+        time.sleep(0.01)
+    try:
+        run = loopback.run(sc.scene, instruction=sc.instruction, seed=0, node=node)
+    finally:
+        node.close()
     for s in subs:
         s.undeclare()
     assert run.episode.success

@@ -13,6 +13,7 @@ from hltl.motion.collision import capsule_distance, segment_distances
 from hltl.motion.kinematics import JOINT_LIMIT, OUT_OF_REACH, Arm, Capsule
 
 ARMS = {name: Arm("r", name, (0.3, -0.2, 0.0)) for name in ("elfin3", "ur5", "panda")}
+XARM6 = Arm("r", "xarm6", (0.3, -0.2, 0.0))
 
 
 # A local solver with restarts: IK is not complete (hltl bench motion measures 99.3-99.7 % solved
@@ -24,7 +25,17 @@ ARMS = {name: Arm("r", name, (0.3, -0.2, 0.0)) for name in ("elfin3", "ur5", "pa
     st.lists(st.floats(0.05, 0.95), min_size=7, max_size=7),
 )
 def test_ik_round_trip_respects_limits(name: str, u: list[float]) -> None:
-    arm = ARMS[name]
+    assert_ik_round_trip(ARMS[name], u)
+
+
+# the xArm6 (hltl's URDF from UFACTORY's published kinematics) on its own examples
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(st.lists(st.floats(0.05, 0.95), min_size=6, max_size=6))
+def test_xarm6_ik_round_trip_respects_limits(u: list[float]) -> None:
+    assert_ik_round_trip(XARM6, u)
+
+
+def assert_ik_round_trip(arm: Arm, u: list[float]) -> None:
     q = arm._seed_lo + np.asarray(u[: arm.nq]) * (arm._seed_hi - arm._seed_lo)
     if not arm.pose_clear(q):
         return  # not a pose the arm may take (table, self-collision)

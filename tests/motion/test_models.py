@@ -1,9 +1,12 @@
-"""Robot models: hltl's Elfin-3 against its published kinematics, the registry, tool frames."""
+"""Robot models: hltl's Elfin-3 and xArm6 against their published kinematics, the registry,
+tool frames."""
 
 from __future__ import annotations
 
 import math
 import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -12,7 +15,14 @@ pytest.importorskip("pinocchio")
 
 from hltl.errors import SceneError
 from hltl.motion.kinematics import Arm
-from hltl.motion.robots import ELFIN3_URDF, MODEL_NAMES, arm_spec, has_model, model_hash
+from hltl.motion.robots import (
+    ELFIN3_URDF,
+    MODEL_NAMES,
+    XARM6_URDF,
+    arm_spec,
+    has_model,
+    model_hash,
+)
 
 # The published chain (/work/shared/robots/elfin3.md), typed in again here as the oracle:
 # (origin xyz, origin rpy, lower, upper, max velocity).
@@ -26,6 +36,18 @@ PUBLISHED = [
 ]
 FLANGE = 0.1565
 HAND = 0.10
+# UFACTORY's published xArm6 (xArm-Developer/xarm_ros, xarm_description: xarm6.urdf.xacro with
+# its default, unlimited joint ranges, and xarm6_default_kinematics.yaml), typed in again here
+# as the oracle; its flange is link6's origin.
+TAU = 2 * math.pi
+XARM6 = [
+    ((0, 0, 0.267), (0, 0, 0), -TAU, TAU, 3.14),
+    ((0, 0, 0), (-1.5708, 0, 0), -2.059, 2.0944, 3.14),
+    ((0.0535, -0.2845, 0), (0, 0, 0), -3.927, 0.19198, 3.14),
+    ((0.0775, 0.3425, 0), (-1.5708, 0, 0), -TAU, TAU, 3.14),
+    ((0, 0, 0), (1.5708, 0, 0), -1.69297, math.pi, 3.14),
+    ((0.076, 0.097, 0), (-1.5708, 0, 0), -TAU, TAU, 3.14),
+]
 
 
 def _rpy(r: float, p: float, y: float) -> np.ndarray:
@@ -50,11 +72,13 @@ def _h(rot: np.ndarray, xyz: tuple[float, ...]) -> np.ndarray:
     return m
 
 
-def _published_fk(q: np.ndarray, tool: float) -> np.ndarray:
+def _published_fk(
+    q: np.ndarray, tool: float, chain: list[Any] = PUBLISHED, flange: float = FLANGE
+) -> np.ndarray:
     m = np.eye(4)
-    for (xyz, rpy, *_), qi in zip(PUBLISHED, q, strict=True):
+    for (xyz, rpy, *_), qi in zip(chain, q, strict=True):
         m = m @ _h(_rpy(*rpy), xyz) @ _h(_rpy(0, 0, qi), (0, 0, 0))
-    return m @ _h(np.eye(3), (0, 0, FLANGE + tool))
+    return m @ _h(np.eye(3), (0, 0, flange + tool))
 
 
 def test_elfin3_zero_pose_is_upright_at_published_height() -> None:
@@ -65,36 +89,48 @@ def test_elfin3_zero_pose_is_upright_at_published_height() -> None:
 
 
 @pytest.mark.parametrize("seed", range(6))
-def test_elfin3_fk_matches_published_chain(seed: int) -> None:
+@pytest.mark.parametrize(
+    ("name", "chain", "flange"), [("elfin3", PUBLISHED, FLANGE), ("xarm6", XARM6, 0.0)]
+)
+def test_fk_matches_published_chain(name: str, chain: list[Any], flange: float, seed: int) -> None:
     rng = np.random.default_rng(seed)
-    arm = Arm("r1", "elfin3", (0.5, -0.2, 0.1))
-    lo = np.array([p[2] for p in PUBLISHED])
-    hi = np.array([p[3] for p in PUBLISHED])
+    arm = Arm("r1", name, (0.5, -0.2, 0.1))
+    lo = np.array([p[2] for p in chain])
+    hi = np.array([p[3] for p in chain])
     q = rng.uniform(lo, hi)
-    expect = _published_fk(q, HAND)
+    expect = _published_fk(q, HAND, chain, flange)
     pos, rot = arm.fk(q)
     assert pos == pytest.approx(expect[:3, 3] + np.array([0.5, -0.2, 0.1]), abs=1e-6)
     assert rot == pytest.approx(expect[:3, :3], abs=1e-6)
 
 
-def test_elfin3_urdf_limits_are_the_published_ones() -> None:
-    root = ET.parse(ELFIN3_URDF).getroot()
+@pytest.mark.parametrize(("path", "chain"), [(ELFIN3_URDF, PUBLISHED), (XARM6_URDF, XARM6)])
+def test_urdf_chains_and_limits_are_the_published_ones(path: Path, chain: list[Any]) -> None:
+    root = ET.parse(path).getroot()
     joints = [j for j in root.iter("joint") if j.get("type") == "revolute"]
     assert [j.get("name") for j in joints] == [f"joint{i}" for i in range(1, 7)]
-    for j, (xyz, rpy, lo, hi, vel) in zip(joints, PUBLISHED, strict=True):
+    for j, (xyz, rpy, lo, hi, vel) in zip(joints, chain, strict=True):
         origin = j.find("origin")
         limit = j.find("limit")
         assert origin is not None and limit is not None
         assert [float(v) for v in origin.get("xyz", "").split()] == pytest.approx(xyz)
         assert [float(v) for v in origin.get("rpy", "").split()] == pytest.approx(rpy)
-        assert float(limit.get("lower", "nan")) == lo
-        assert float(limit.get("upper", "nan")) == hi
+        assert float(limit.get("lower", "nan")) == pytest.approx(lo, abs=1e-6)
+        assert float(limit.get("upper", "nan")) == pytest.approx(hi, abs=1e-6)
         assert float(limit.get("velocity", "nan")) == vel
     # every link that moves carries primitive collision geometry, no meshes
     for link in root.iter("link"):
         for geom in link.iter("geometry"):
             assert geom.find("mesh") is None
     assert any(link.get("name") == "tool0" for link in root.iter("link"))
+
+
+def test_xarm6_zero_pose_is_ufactorys() -> None:
+    # UFACTORY documents the xArm6's zero pose as the flange at (207, 0, 112) mm pointing down
+    arm = Arm("r1", "xarm6")
+    pos, rot = arm.fk(np.zeros(6))
+    assert pos == pytest.approx((0.207, 0.0, 0.112 - HAND), abs=1e-4)
+    assert rot[:, 2] == pytest.approx((0.0, 0.0, -1.0), abs=1e-4)
 
 
 @pytest.mark.parametrize("name", MODEL_NAMES)
@@ -110,10 +146,10 @@ def test_registry_models_load_with_tool_frames(name: str) -> None:
 
 
 def test_unknown_models_keep_the_sphere() -> None:
-    assert has_model("elfin3")
-    assert not has_model("xarm6")
-    with pytest.raises(SceneError, match="unknown robot model 'xarm6'"):
-        arm_spec("xarm6")
+    assert has_model("elfin3") and has_model("xarm6")
+    assert not has_model("kr6")
+    with pytest.raises(SceneError, match="unknown robot model 'kr6'"):
+        arm_spec("kr6")
 
 
 def test_elfin3_mjcf_is_the_urdf_model() -> None:

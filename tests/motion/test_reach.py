@@ -68,7 +68,7 @@ def test_robots_without_a_model_keep_the_sphere(coarse_maps: dict[str, Any]) -> 
     scene = scene_from_dict(
         {
             "robots": [
-                {"id": "a", "base": [0, 0, 0], "reach": 0.5, "model": "xarm6"},
+                {"id": "a", "base": [0, 0, 0], "reach": 0.5, "model": "kr6"},
                 {"id": "b", "base": [0.8, 0, 0], "reach": 0.5},
             ]
         }

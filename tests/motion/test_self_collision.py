@@ -17,7 +17,7 @@ from hltl.motion.paths import config_valid
 from hltl.motion.robots import load_model
 from hltl.motion.selfcollision import SELF_MARGIN, LinkPair, collision_geometry, raw_geometry
 
-MODELS = ("elfin3", "ur5", "panda")
+MODELS = ("elfin3", "ur5", "panda", "xarm6")
 SPACING = 0.005  # m between oracle surface samples
 # The oracle's points lie on the surfaces, at most ~0.6 SPACING from any surface point, so the
 # sampled distance overestimates the true one by at most about 1.2 SPACING.
@@ -195,6 +195,7 @@ FOLDED = {
     "elfin3": (-2.0, 2.0, 1.8, 1.8, -0.1, -1.5),  # upper arm down against the base
     "ur5": (-1.1, -0.4, -2.7, -2.1, 1.0, 0.8),  # hand folded back onto the upper arm
     "panda": (-0.3, 0.9, -1.4, -2.6, -0.5, 0.5, -2.1),  # hand against link 1
+    "xarm6": (-1.8, 0.6, -0.5, 2.9, -1.0, -0.1),  # hand folded back onto the base
 }
 
 

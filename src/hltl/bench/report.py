@@ -675,6 +675,25 @@ def suite_section(
     return "\n".join(parts)
 
 
+def _pmp_text(pmp: PmpLatency | None) -> str:
+    """How the ablation charged motion planning (docs/benchmarks.md's variants paragraph)."""
+    if pmp is None:
+        return (
+            "the motion layer's candidate planning of each robot-to-robot handover in the new "
+            "plan's first step, run there and then on the arms' models (Elfin-3, xArm6) from "
+            "where the believed world has their hands, 8 candidate goal sets on a pool of 2 "
+            "processes, one after the other w/o P.M.P., and charged as measured (wall clock; "
+            "*motion ms/trial*); a request repeated from the same arm configurations reuses its "
+            "plan"
+        )
+    return (
+        "the motion layer's measured candidate planning of each robot-to-robot handover in "
+        f"the new plan's first step — {pmp.parallel_s * 1e3:.0f} ms on {pmp.workers} "
+        f"processes, {pmp.serial_s * 1e3:.0f} ms serially (w/o P.M.P.) for {pmp.candidates} "
+        f"candidates (measured at load {pmp.load:.1f} by {pmp.source})"
+    )
+
+
 def ablation_section(
     *,
     command: str,
@@ -687,7 +706,7 @@ def ablation_section(
     variants: Sequence[Variant],
     latency: LatencyModel | None,
     plan_latency: float | None,
-    pmp: PmpLatency,
+    pmp: PmpLatency | None,
     groups: str = "",
 ) -> str:
     """The Markdown body of docs/benchmarks.md's ``ablation`` section."""
@@ -713,11 +732,7 @@ def ablation_section(
             f"Variants (see [evaluation.md](evaluation.md#ablations)): {charged}. *full*: "
             "predictive planning on (constant-velocity forecasts); *w/o P.P.*: prediction off; "
             "*w/o P.M.P.*: prediction on, candidate goal sets planned serially; every variant "
-            "charges, with a planner call, the motion layer's measured candidate planning of "
-            "each robot-to-robot handover in the new plan's first step — "
-            f"{pmp.parallel_s * 1e3:.0f} ms on {pmp.workers} processes, "
-            f"{pmp.serial_s * 1e3:.0f} ms serially (w/o P.M.P.) for {pmp.candidates} candidates "
-            f"(measured at load {pmp.load:.1f} by {pmp.source}); *goal-directed predictor*: "
+            f"charges, with a planner call, {_pmp_text(pmp)}; *goal-directed predictor*: "
             "full with the goal-directed forecasts; "
             "*+ anticipation*: anticipatory execution with the goal-directed or the learned "
             "(GRU) predictor. Fluency metrics over all trials (mean ± std, %), the paper's rows "

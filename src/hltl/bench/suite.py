@@ -21,9 +21,9 @@ from hltl.bench.latency import DEFAULT_MODEL as DEFAULT_LATENCY_MODEL
 from hltl.bench.pmp import DEFAULT_PMP, PmpLatency, load_pmp_latency
 from hltl.bench.sweep import SweepExecutor
 from hltl.errors import HltlError
-from hltl.execution.executor import ExecutorConfig
-from hltl.execution.latency import LatencyModel, load_latency_model
-from hltl.execution.log import Anticipate, EpisodeEnd, Grounding, LogRecord, Replan
+from hltl.execution.executor import Executor, ExecutorConfig
+from hltl.execution.latency import LatencyModel, MotionTimer, load_latency_model
+from hltl.execution.log import Anticipate, EpisodeEnd, EventLog, Grounding, LogRecord, Replan
 from hltl.execution.predict import TrajectoryPredictor
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tokens import estimate_grounding_tokens
@@ -40,7 +40,7 @@ from hltl.sim.dynamic import (
     make_trial,
     trial_seed,
 )
-from hltl.sim.episode import EpisodeConfig, run_episode
+from hltl.sim.episode import Cell, EpisodeConfig, run_episode
 from hltl.sim.invariants import check_invariants
 from hltl.sim.metrics import Metrics
 
@@ -129,7 +129,11 @@ class Variant:
         latency: computation charged where it occurs (:mod:`hltl.execution.latency`).
         r2r_motion_s: motion planning charged per robot-to-robot handover in a new plan's first
             step (``ExecutorConfig.r2r_motion_s``): the parallel candidate planner's measured
-            latency, the serial one's for ``no-pmp``.
+            latency, the serial one's for ``no-pmp``; used only without ``motion``.
+        motion: ``parallel`` or ``serial``: the motion layer plans each robot-to-robot
+            handover of a new plan's first step (its candidate goal sets on a pool of
+            PMP_WORKERS processes, or one after the other) and the call costs the measured
+            seconds (:class:`hltl.motion.pmp.HandoverMotionTimer`); ``""``: ``r2r_motion_s``.
         predictor: ``cv``, ``goal`` or ``gru`` (:func:`hltl.perception.predict.make_predictor`).
         anticipate: anticipatory execution.
     """
@@ -141,6 +145,11 @@ class Variant:
     predictor: str = "cv"
     anticipate: bool = False
     r2r_motion_s: float = 0.0
+    motion: str = ""
+
+
+MOTION_MODES = ("", "parallel", "serial")
+PMP_WORKERS = 2  # the parallel candidate planner's processes (the machine's two cores)
 
 
 @dataclass(frozen=True, slots=True)
@@ -238,6 +247,25 @@ def _scored(
 
 def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
     v = job.variant
+    if v.motion not in MOTION_MODES:
+        raise HltlError(f"variant {v.name}: unknown motion mode {v.motion[:40]!r}")
+    timer: Any = None
+    if v.motion:
+        # why: the motion extra (Pinocchio, coal, the maps) is needed only with real P.M.P.
+        from hltl.motion.pmp import HandoverMotionTimer
+
+        timer = HandoverMotionTimer(
+            trial.scene, workers=PMP_WORKERS if v.motion == "parallel" else 0
+        )
+    try:
+        return _run_hltl_episode(trial, job, timer)
+    finally:
+        if timer is not None:
+            timer.close()
+
+
+def _run_hltl_episode(trial: Trial, job: TrialJob, timer: MotionTimer | None) -> TrialResult:
+    v = job.variant
     cfg = EpisodeConfig(
         max_time=job.max_time,
         executor=ExecutorConfig(
@@ -248,6 +276,19 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
             anticipate=v.anticipate,
         ),
     )
+    predictor = _predictor(v.predictor, trial)
+
+    def agent(sim: Cell, log: EventLog) -> Executor:
+        return Executor(
+            trial.scene,
+            None,
+            sim,
+            log=log,
+            predictor=predictor,
+            config=cfg.executor,
+            motion=timer,
+        )
+
     ep = run_episode(
         trial.scene,
         instruction=trial.instruction,
@@ -255,10 +296,12 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
         seed=trial.seed,
         config=cfg,
         grounder=OfflineGrounder(),
-        predictor=_predictor(v.predictor, trial),
+        predictor=predictor,
+        agent=agent,
     )
     m = ep.metrics
     charged = [float(r.charged_s or 0.0) for r in ep.records if isinstance(r, Replan | Grounding)]
+    motion = [float(r.motion_s) for r in ep.records if isinstance(r, Replan) and r.motion_s]
     groundings = [r for r in ep.records if isinstance(r, Grounding) and r.error is None]
     est = sum(estimate_grounding_tokens(str(r.text), trial.scene) for r in groundings)
     return _scored(
@@ -275,6 +318,8 @@ def _run_hltl(trial: Trial, job: TrialJob) -> TrialResult:
             "planner_calls": m.planner_calls,
             "charged_s": round(sum(charged), 6),
             "charged_calls": sum(1 for c in charged if c > 0),
+            "motion_s": round(sum(motion), 6),
+            "motion_calls": len(motion),
             "anticipations": sum(1 for r in ep.records if isinstance(r, Anticipate) and r.differs),
         },
     )
@@ -588,6 +633,7 @@ def _check_walks(walks: str) -> None:
 
 
 ABLATION_VARIANTS = ("full", "no-pp", "no-pmp", "goal", "antic-goal", "antic-gru")
+PMP_MODES = ("measured", "model")
 
 
 @dataclass(frozen=True, slots=True)
@@ -597,9 +643,11 @@ class AblationOptions:
     ``plan_latency`` None charges the latency model (``latency_model``, default the shipped
     measurement) where computation occurs; a number charges that constant on every planner
     call instead (the old, assumed model, kept for comparison). Either way each robot-to-robot
-    handover in a new plan's first step adds the motion layer's measured candidate-planning
-    latency (``pmp_latency``, default the shipped ``hltl bench pmp`` measurement): parallel,
-    or serial for ``no-pmp``.
+    handover in a new plan's first step adds the motion layer's candidate planning: with
+    ``pmp`` ``measured`` (the default) the motion layer plans it there and then, on a process
+    pool, or serially for ``no-pmp``, and the measured seconds are charged; with ``model`` a
+    fixed latency per handover (``pmp_latency``, default the shipped ``hltl bench pmp``
+    measurement of the Fig. 1 handover), parallel or serial.
     """
 
     trials: int = 20
@@ -609,6 +657,7 @@ class AblationOptions:
     plan_latency: float | None = None
     pmp_latency: Path | None = None
     latency_model: Path | None = None
+    pmp_mode: str = "measured"
     variants_text: str = ",".join(ABLATION_VARIANTS)
     walks: str = "random"
     write: Path | None = None
@@ -622,6 +671,11 @@ class AblationOptions:
         if self.plan_latency is not None and self.plan_latency < 0:
             raise HltlError("--plan-latency must be >= 0")
         _check_walks(self.walks)
+        if self.pmp_mode not in PMP_MODES:
+            modes = ", ".join(PMP_MODES)
+            raise HltlError(f"--pmp: unknown mode {self.pmp_mode[:40]!r}; expected one of {modes}")
+        if self.pmp_latency is not None and self.pmp_mode != "model":
+            raise HltlError("--pmp-latency is the latency charged with --pmp model: give both")
         for name in self.variant_names:
             if name not in ABLATION_VARIANTS:
                 raise HltlError(
@@ -650,18 +704,23 @@ class AblationOptions:
         the predictor / anticipatory-execution rows (docs/evaluation.md#ablations)."""
         lat = self.latency()
         const = 0.0 if self.plan_latency is None else self.plan_latency
-        pmp = self.pmp()
-        par, ser = pmp.parallel_s, pmp.serial_s
+        if self.pmp_mode == "measured":
+            par = ser = 0.0
+            pm, sm = "parallel", "serial"
+        else:
+            pmp = self.pmp()
+            par, ser = pmp.parallel_s, pmp.serial_s
+            pm = sm = ""
         table = {
-            "full": Variant("full", True, const, lat, r2r_motion_s=par),
-            "no-pp": Variant("no-pp", False, const, lat, r2r_motion_s=par),
-            "no-pmp": Variant("no-pmp", True, const, lat, r2r_motion_s=ser),
-            "goal": Variant("goal", True, const, lat, "goal", r2r_motion_s=par),
+            "full": Variant("full", True, const, lat, r2r_motion_s=par, motion=pm),
+            "no-pp": Variant("no-pp", False, const, lat, r2r_motion_s=par, motion=pm),
+            "no-pmp": Variant("no-pmp", True, const, lat, r2r_motion_s=ser, motion=sm),
+            "goal": Variant("goal", True, const, lat, "goal", r2r_motion_s=par, motion=pm),
             "antic-goal": Variant(
-                "antic-goal", True, const, lat, "goal", anticipate=True, r2r_motion_s=par
+                "antic-goal", True, const, lat, "goal", True, r2r_motion_s=par, motion=pm
             ),
             "antic-gru": Variant(
-                "antic-gru", True, const, lat, "gru", anticipate=True, r2r_motion_s=par
+                "antic-gru", True, const, lat, "gru", True, r2r_motion_s=par, motion=pm
             ),
         }
         return [table[n] for n in self.variant_names]
@@ -684,6 +743,8 @@ class AblationOptions:
             parts.append(f"--plan-latency {self.plan_latency:g}")
         if self.latency_model is not None:
             parts.append(f"--latency-model {shlex.quote(str(self.latency_model))}")
+        if self.pmp_mode != "measured":
+            parts.append(f"--pmp {self.pmp_mode}")
         if self.pmp_latency is not None:
             parts.append(f"--pmp-latency {shlex.quote(str(self.pmp_latency))}")
         if self.executor != "local":
@@ -740,5 +801,6 @@ def ablation_extra(
             "takeovers/trial": mean("takeovers"),
             "anticip./trial": mean("anticipations"),
             "charged ms/trial": 1000.0 * mean("charged_s"),
+            "motion ms/trial": 1000.0 * mean("motion_s"),
         }
     return extra

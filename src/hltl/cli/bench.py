@@ -208,11 +208,19 @@ def register(sub: Any) -> None:
         "shipped measurement)",
     )
     ab.add_argument(
+        "--pmp",
+        choices=("measured", "model"),
+        default="measured",
+        help="measured (default): the motion layer plans each robot-to-robot handover in a new "
+        "plan's first step (candidates on a 2-process pool, serially w/o P.M.P.) and its "
+        "measured time is charged; model: a fixed latency per handover (--pmp-latency)",
+    )
+    ab.add_argument(
         "--pmp-latency",
         type=Path,
-        help="P.M.P. latencies from 'hltl bench pmp --write-model': each robot-to-robot "
-        "handover in a new plan's first step costs the parallel candidate planner's time, "
-        "w/o P.M.P. the serial one's (default: the shipped measurement)",
+        help="with --pmp model: P.M.P. latencies from 'hltl bench pmp --write-model': each "
+        "robot-to-robot handover in a new plan's first step costs the parallel candidate "
+        "planner's time, w/o P.M.P. the serial one's (default: the shipped measurement)",
     )
     ab.add_argument(
         "--variants",
@@ -775,6 +783,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
         plan_latency=args.plan_latency,
         pmp_latency=args.pmp_latency,
         latency_model=args.latency_model,
+        pmp_mode=args.pmp,
         variants_text=args.variants,
         walks=args.walks,
         write=args.write,
@@ -821,7 +830,7 @@ def run_ablation_cmd(args: argparse.Namespace) -> int:
             variants=variants,
             latency=opts.latency(),
             plan_latency=opts.plan_latency,
-            pmp=opts.pmp(),
+            pmp=opts.pmp() if opts.pmp_mode == "model" else None,
             groups=groups,
         )
         write_section(opts.write, "ablation", body)

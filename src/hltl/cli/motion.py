@@ -23,7 +23,7 @@ def register(sub: Any) -> None:
         "motion",
         help="arm kinematics: handover poses, comfort zones, skill motions, reachability maps",
         description="Motion planning on the scene's arm models (paper §IV). Robots whose model "
-        "is elfin3, ur5 or panda get real kinematics; others keep their reach sphere.",
+        "is elfin3, xarm6, ur5 or panda get real kinematics; others keep their reach sphere.",
     )
     msub = p.add_subparsers(dest="motion_command", metavar="WHAT", required=True)
 

@@ -61,7 +61,7 @@ def register(sub: Any) -> None:
         "--motion",
         action="store_true",
         help="reach from the arms' reachability maps and durations from motion plans "
-        "(robots with model elfin3, ur5 or panda; needs the motion extra)",
+        "(robots with model elfin3, xarm6, ur5 or panda; needs the motion extra)",
     )
     p.add_argument("-o", "--output", type=Path, help="also write the plan JSON to this file")
     p.set_defaults(func=run)

@@ -19,7 +19,7 @@ from hltl.execution.drivers import (
     RobotDriver,
 )
 from hltl.execution.instructions import SpecUpdate
-from hltl.execution.latency import LatencyModel, planner_charge, takeover_charge
+from hltl.execution.latency import LatencyModel, MotionTimer, planner_charge, takeover_charge
 from hltl.execution.log import (
     ActionDone,
     ActionFailed,
@@ -222,6 +222,8 @@ class Executor(TickTemplate):
         config: loop parameters.
         cost: the duration model used to time actions (default: the scene's).
         kinematics: reach and poses of the skills (default: the paper's reach spheres).
+        motion: plans the motions of a new plan's first step and measures it; its seconds are
+            charged with the planner call instead of ``config.r2r_motion_s`` per hand-over.
     """
 
     def __init__(
@@ -236,8 +238,10 @@ class Executor(TickTemplate):
         config: ExecutorConfig | None = None,
         cost: CostModel | None = None,
         kinematics: Kinematics | None = None,
+        motion: MotionTimer | None = None,
     ) -> None:
         self.scene = scene
+        self.motion = motion
         self.driver = driver
         self.log = EventLog() if log is None else log
         if isinstance(cost, MotionSource):
@@ -789,6 +793,7 @@ class Executor(TickTemplate):
         if pred is not None and pred.result.solved:
             ms = (time.perf_counter() - t0) * 1000.0
             model = self.config.latency
+            motion_s = self._motion_charge(pred.result)
             charge = (
                 0.0
                 if model is None
@@ -797,7 +802,7 @@ class Executor(TickTemplate):
                     pred.result.stats.expanded,
                     pred.wall_s,
                     self.t - pred.at,
-                    self._motion_charge(pred.result),
+                    motion_s,
                 )
             )
             self.log.emit(
@@ -825,6 +830,7 @@ class Executor(TickTemplate):
                     tokens=self._pending_tokens,
                     context=ctx.describe(),
                     done=done,
+                    motion_s=self._motion_logged(motion_s),
                 )
             )
             self._pending_tokens = 0
@@ -835,9 +841,8 @@ class Executor(TickTemplate):
             self.scene, self.spec, world=self.world, monitor=self.monitor, q0=self.q
         )
         ms = (time.perf_counter() - t0) * 1000.0
-        charge, basis = self._planner_charge(
-            trigger, result.stats.expanded, ms / 1000.0, self._motion_charge(result)
-        )
+        motion_s = self._motion_charge(result)
+        charge, basis = self._planner_charge(trigger, result.stats.expanded, ms / 1000.0, motion_s)
         self.log.emit(
             Replan(
                 t=self.t,
@@ -855,6 +860,7 @@ class Executor(TickTemplate):
                 tokens=self._pending_tokens,
                 context=ctx.describe(),
                 done=done,
+                motion_s=self._motion_logged(motion_s),
             )
         )
         self._pending_tokens = 0
@@ -897,12 +903,21 @@ class Executor(TickTemplate):
         return planner_charge(model, trigger, expanded, wall_s, since, motion_s)
 
     def _motion_charge(self, result: PlanResult) -> float:
-        """Motion planning a plan needs before dispatch: its first step's robot-to-robot
-        handovers (ExecutorConfig.r2r_motion_s each)."""
-        if not self.config.r2r_motion_s or not result.steps:
+        """Motion planning a plan needs before dispatch: its first step's, planned now and
+        measured by the motion timer when there is one; else ExecutorConfig.r2r_motion_s per
+        robot-to-robot handover in it."""
+        if not result.steps:
+            return 0.0
+        if self.motion is not None:
+            return self.motion(self.world, result.steps[0].actions)
+        if not self.config.r2r_motion_s:
             return 0.0
         n = sum(a.skill == "handover_r2r" for a in result.steps[0].actions)
         return n * self.config.r2r_motion_s
+
+    def _motion_logged(self, motion_s: float) -> float | None:
+        """The measured motion planning a replan record carries (None without a timer)."""
+        return None if self.motion is None else round(motion_s, 6)
 
     def _adopt(self, result: PlanResult, ctx: Context) -> None:
         self._plan = result

@@ -4,15 +4,26 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any, Protocol, TypeVar
 
 from hltl.errors import HltlError
+from hltl.skills.library import Action
+from hltl.world.state import WorldState
 
 T = TypeVar("T")
 
 PIPELINED = frozenset({"progress"})
+
+
+class MotionTimer(Protocol):
+    """Plans the motions a new plan's first step needs before it can be dispatched, and says
+    how long that took: measured wall-clock seconds, charged with the planner call (e.g.
+    :class:`hltl.motion.pmp.HandoverMotionTimer`, the paper's P.M.P. in the closed loop)."""
+
+    def __call__(self, world: WorldState, actions: Sequence[Action]) -> float: ...
 
 
 @dataclass(frozen=True, slots=True)

@@ -163,7 +163,7 @@ class Replan(LogRecord):
     """A planner call (``source`` planner) or a predicted plan taking over (``predicted``)."""
 
     TYPE: ClassVar[str] = "replan"
-    OPTIONAL: ClassVar[frozenset[str]] = frozenset({"reason", "charged_s", "charge"})
+    OPTIONAL: ClassVar[frozenset[str]] = frozenset({"reason", "charged_s", "charge", "motion_s"})
     source: str = "planner"
     status: str = ""
     latency_ms: float = 0.0
@@ -178,6 +178,8 @@ class Replan(LogRecord):
     tokens: int = 0
     context: str = ""
     done: list[str] = field(default_factory=list)
+    # measured motion planning of the first step, part of charged_s (a MotionTimer ran)
+    motion_s: float | None = None
 
 
 @record

@@ -6,7 +6,7 @@ import math
 import time
 from collections.abc import Mapping, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -56,7 +56,7 @@ class SkillMotion:
     plan: MotionPlan | None
     reason: str | None
     final: tuple[tuple[str, tuple[float, ...]], ...]  # robot → configuration at the end
-    seconds: float  # planning time
+    seconds: float  # planning time: wall-clock seconds of the whole call that produced it
 
     @property
     def duration(self) -> float:
@@ -64,13 +64,25 @@ class SkillMotion:
 
 
 class Cell:
-    """The arms of a scene (robots with a registered model) and their reachability."""
+    """The arms of a scene (robots with a registered model) and their reachability.
 
-    def __init__(self, scene: Scene, kinematics: MapKinematics | None = None) -> None:
+    ``arms`` may give some of them already built (an :class:`Arm` for the robot's id, model and
+    base), e.g. shared by the cells of several scenes with the same robots.
+    """
+
+    def __init__(
+        self,
+        scene: Scene,
+        kinematics: MapKinematics | None = None,
+        arms: Mapping[str, Arm] | None = None,
+    ) -> None:
         self.scene = scene
         self.kinematics = MapKinematics(scene) if kinematics is None else kinematics
+        given = arms or {}
         self.arms: dict[str, Arm] = {
-            r.id: Arm(r.id, r.model, r.base) for r in scene.robots if has_model(r.model)
+            r.id: given[r.id] if r.id in given else Arm(r.id, r.model, r.base)
+            for r in scene.robots
+            if has_model(r.model)
         }
 
     def arm(self, rid: str) -> Arm:
@@ -78,7 +90,7 @@ class Cell:
             model = self.scene.robot(rid).model
             raise SceneError(
                 f"robot {rid!r} has model {model!r}, which hltl has no kinematics for; "
-                "motion planning needs elfin3, ur5 or panda"
+                "motion planning needs elfin3, xarm6, ur5 or panda"
             )
         return self.arms[rid]
 
@@ -310,9 +322,11 @@ def evaluate_r2r(
 _WORKER_CELL: Cell | None = None
 
 
-def _init_worker(scene: Scene) -> None:
+def _init_worker(scene: Scene, cell: Cell | None = None) -> None:
+    """A worker's cell: the parent's own (inherited by fork, its models, maps and rest poses
+    already built) or, without one, built from the scene."""
     global _WORKER_CELL
-    _WORKER_CELL = Cell(scene)
+    _WORKER_CELL = cell if cell is not None else Cell(scene)
 
 
 def _work(action: Action, q: dict[str, tuple[float, ...]], cand: R2RCandidate) -> SkillMotion:
@@ -336,8 +350,10 @@ class CandidatePlanner:
             import multiprocessing
 
             ctx = multiprocessing.get_context("fork")
+            # forked workers inherit the cell (fork passes the initializer's arguments without
+            # pickling them), so starting the pool costs no model loading or IK
             self._pool = ProcessPoolExecutor(
-                workers, mp_context=ctx, initializer=_init_worker, initargs=(cell.scene,)
+                workers, mp_context=ctx, initializer=_init_worker, initargs=(cell.scene, cell)
             )
 
     def close(self) -> None:
@@ -406,6 +422,7 @@ def plan_r2r(
 ) -> SkillMotion:
     """The best of the ``k`` best goal sets; when none of them has a motion plan, the further
     goal sets of a larger sample (up to R2R_MAX_CANDIDATES), ``k`` at a time, until one does.
+    Its ``seconds`` are the whole call's wall-clock time (what P.M.P. shortens).
 
     The top-ranked goal sets sit near the centre of the shared region, where a hand orientation
     can put a wrist into a singularity on the approach line (the realworld T1 cell: the
@@ -415,7 +432,9 @@ def plan_r2r(
     t0 = time.perf_counter()
     cands = r2r_candidates(cell, action, q, k=k)
     if not cands:
-        return SkillMotion(action, None, "the two arms share no reachable region", (), 0.0)
+        return SkillMotion(
+            action, None, "the two arms share no reachable region", (), time.perf_counter() - t0
+        )
     cp = planner or CandidatePlanner(cell)
     tried = {(c.position, c.giver_grasp, c.receiver_grasp) for c in cands}
     best, results = cp.plan(action, q, cands)
@@ -440,7 +459,9 @@ def plan_r2r(
             (),
             time.perf_counter() - t0,
         )
-    return best
+    # the whole call's time (candidates, every goal set tried, the pool's round trips), not the
+    # winning goal set's own
+    return replace(best, seconds=time.perf_counter() - t0)
 
 
 # -- one action -----------------------------------------------------------------------------------

@@ -15,6 +15,9 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
 
 MODELS_DIR = Path(__file__).resolve().parent / "models"
 ELFIN3_URDF = MODELS_DIR / "elfin3.urdf"
+XARM6_URDF = MODELS_DIR / "xarm6.urdf"
+# the arms whose URDF hltl writes itself from published kinematics (the rest: example-robot-data)
+OWN_URDFS = {"elfin3": ELFIN3_URDF, "xarm6": XARM6_URDF}
 
 # Bumped whenever what a model means changes (tool offsets, capsule sizes): it feeds the model
 # hash that keys the reachability maps cached on disk.
@@ -57,6 +60,17 @@ ARMS: tuple[ArmSpec, ...] = (
         tool_frame="tool0",
         hand_length=0.10,
         link_radius=0.05,
+        hand_radius=0.045,
+        max_acceleration=3.0,
+        nominal_reach=0.7,
+        hand_bodies=("hand_0",),
+    ),
+    ArmSpec(
+        name="xarm6",
+        source="hltl's URDF from UFACTORY's published xArm6 kinematics (xArm-Developer/xarm_ros)",
+        tool_frame="tool0",
+        hand_length=0.10,
+        link_radius=0.045,
         hand_radius=0.045,
         max_acceleration=3.0,
         nominal_reach=0.7,
@@ -121,10 +135,11 @@ def _require_pinocchio() -> Any:
 
 
 def urdf_path(name: str) -> Path:
-    """The URDF file of a registered arm (hltl's own for the Elfin-3, example-robot-data's else)."""
+    """The URDF file of a registered arm (hltl's own for the Elfin-3 and the xArm6,
+    example-robot-data's else)."""
     arm_spec(name)
-    if name == "elfin3":
-        return ELFIN3_URDF
+    if name in OWN_URDFS:
+        return OWN_URDFS[name]
     try:
         import example_robot_data as erd
     except ImportError:
@@ -151,8 +166,8 @@ def load_model(name: str) -> pinocchio.Model:
     """
     pin = _require_pinocchio()
     spec = arm_spec(name)
-    if name == "elfin3":
-        return pin.buildModelFromUrdf(str(ELFIN3_URDF))
+    if name in OWN_URDFS:
+        return pin.buildModelFromUrdf(str(OWN_URDFS[name]))
     import example_robot_data as erd
 
     model = erd.load(name).model

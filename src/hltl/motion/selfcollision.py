@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from hltl.errors import BackendUnavailableError
-from hltl.motion.robots import ELFIN3_URDF, arm_spec, load_model
+from hltl.motion.robots import OWN_URDFS, arm_spec, load_model
 
 # Smallest allowed distance (m) between two links of one arm that can touch. Small: the UR5's
 # forearm and wrist-2 meshes pass within 5 mm of each other in ordinary wrist motions.
@@ -72,15 +72,16 @@ def raw_geometry(name: str) -> Any:
     """The arm's collision GeometryModel as its description ships it (meshes as meshes), for
     the joints of :func:`~hltl.motion.robots.load_model`.
 
-    Elfin-3: hltl's URDF primitives. UR5: example-robot-data's meshes plus a cylinder for the
-    hand hltl adds beyond ``tool0``. Panda: example-robot-data's meshes, reduced with the
-    fingers locked open exactly as the kinematic model is.
+    Elfin-3 and xArm6: hltl's URDF primitives. UR5: example-robot-data's meshes plus a cylinder
+    for the hand hltl adds beyond ``tool0``. Panda: example-robot-data's meshes, reduced with
+    the fingers locked open exactly as the kinematic model is.
     """
     pin, coal = _pin_coal()
     spec = arm_spec(name)
-    if name == "elfin3":
-        model = pin.buildModelFromUrdf(str(ELFIN3_URDF))
-        return pin.buildGeomFromUrdf(model, str(ELFIN3_URDF), pin.GeometryType.COLLISION)
+    if name in OWN_URDFS:
+        path = str(OWN_URDFS[name])
+        model = pin.buildModelFromUrdf(path)
+        return pin.buildGeomFromUrdf(model, path, pin.GeometryType.COLLISION)
     import example_robot_data as erd
 
     robot = erd.load(name)
