@@ -167,7 +167,7 @@ def object_bench(
             with CameraRenderer(stage.sm, cam, geometry="visual") as r:
                 f = r.render(stage.data)
             fcam = frame_camera(cam, stage.sm.segment_table())
-            frame = Frame(frames, 0.0, f.rgb, f.depth, f.seg)
+            frame = Frame(frames, 0.0, f.rgb, f.depth, f.seg, stage.joints())
             frames += 1
             visible = {
                 s.id
@@ -338,7 +338,7 @@ def _crossing(
             stage.forward()
             f = r.render(stage.data)
             truth = {a.id: (float(qa[0]), float(qa[1])), b.id: (float(qb[0]), float(qb[1]))}
-            rendered.append((Frame(k, 0.1 * k, f.rgb, f.depth, f.seg), truth))
+            rendered.append((Frame(k, 0.1 * k, f.rgb, f.depth, f.seg, stage.joints()), truth))
             joints.append({h.id: _true_joints(stage, h.id) for h in (a, b)})
     return scene, fcam, seg_of, rendered, joints
 

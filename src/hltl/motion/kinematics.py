@@ -150,25 +150,14 @@ class Arm:
     def joint_positions(self, q: Joints) -> list[FloatArray]:
         """Scene-frame origins of every joint, then the flange-side wrist and the tool point."""
         self._fk_all(_local(q))
-        pts = [
-            np.asarray(self.data.oMi[j].translation) + self.base
-            for j in range(1, self.model.njoints)
-        ]
-        pts.append(np.asarray(self.data.oMf[self.tool].translation) + self.base)
-        return pts
+        return _joint_points(self.model, self.data, self.tool, self.base)
 
     def capsules(self, q: Joints) -> list[Capsule]:
         """Collision capsules of the links and the hand at ``q`` (scene frame)."""
         pts = self.joint_positions(q)
-        tool_rot = np.asarray(self.data.oMf[self.tool].rotation)
-        out = [Capsule(_t(self.base), _t(pts[0]), self.spec.link_radius, "base")]
-        r = self.spec.link_radius
-        for i in range(len(pts) - 2):
-            out.append(Capsule(_t(pts[i]), _t(pts[i + 1]), r, f"link{i + 1}"))
-        # The hand ends short of the tool point: the fingers close around the object there.
-        palm = pts[-1] - tool_rot[:, 2] * (self.spec.hand_radius * 0.9)
-        out.append(Capsule(_t(pts[-2]), _t(palm), self.spec.hand_radius, "hand"))
-        return out
+        return link_capsules(
+            self.spec, self.base, pts, np.asarray(self.data.oMf[self.tool].rotation)
+        )
 
     def table_clearance(self, q: Joints) -> float:
         """Signed distance (m) from the table top to the lowest link surface (capsules beyond the
@@ -434,6 +423,59 @@ class Arm:
                 lifted, None, seed_q, starts=24, seed=7, prefer=seed_q, solutions=8, accept=roomy
             )
         return seed_q if res.q is None else np.asarray(res.q)
+
+
+class LinkGeometry:
+    """An arm's link capsules by forward kinematics alone — the same capsules as
+    :meth:`Arm.capsules` — without what makes an :class:`Arm` slow to build (its rest pose is an
+    IK search, its self-collision model loads meshes): what perception needs to tell the arm's
+    own pixels from objects.
+
+    Raises:
+        SceneError: an unknown model. BackendUnavailableError: no Pinocchio.
+    """
+
+    def __init__(self, model: str, base: Sequence[float] = (0.0, 0.0, 0.0)) -> None:
+        import pinocchio as pin
+
+        self._pin = pin
+        self.spec: ArmSpec = arm_spec(model)
+        self.model = load_model(model)
+        self.data = self.model.createData()
+        self.tool = self.model.getFrameId(self.spec.tool_frame)
+        self.base = np.asarray(base, dtype=float)
+        self.nq = int(self.model.nq)
+
+    def capsules(self, q: Joints) -> list[Capsule]:
+        """The links' and the hand's capsules at ``q`` (scene frame)."""
+        pin = self._pin
+        pin.forwardKinematics(self.model, self.data, _local(q))
+        pin.updateFramePlacements(self.model, self.data)
+        pts = _joint_points(self.model, self.data, self.tool, self.base)
+        return link_capsules(
+            self.spec, self.base, pts, np.asarray(self.data.oMf[self.tool].rotation)
+        )
+
+
+def _joint_points(model: Any, data: Any, tool: int, base: FloatArray) -> list[FloatArray]:
+    """Scene-frame joint origins and the tool point of ``data`` after forward kinematics."""
+    pts = [np.asarray(data.oMi[j].translation) + base for j in range(1, model.njoints)]
+    pts.append(np.asarray(data.oMf[tool].translation) + base)
+    return pts
+
+
+def link_capsules(
+    spec: ArmSpec, base: FloatArray, pts: Sequence[FloatArray], tool_rot: FloatArray
+) -> list[Capsule]:
+    """The base, link and hand capsules through joint points ``pts`` (tool point last)."""
+    out = [Capsule(_t(base), _t(pts[0]), spec.link_radius, "base")]
+    r = spec.link_radius
+    for i in range(len(pts) - 2):
+        out.append(Capsule(_t(pts[i]), _t(pts[i + 1]), r, f"link{i + 1}"))
+    # The hand ends short of the tool point: the fingers close around the object there.
+    palm = pts[-1] - tool_rot[:, 2] * (spec.hand_radius * 0.9)
+    out.append(Capsule(_t(pts[-2]), _t(palm), spec.hand_radius, "hand"))
+    return out
 
 
 def _q(q: FloatArray) -> tuple[float, ...]:

@@ -66,13 +66,16 @@ class Camera:
 @dataclass(frozen=True, slots=True)
 class Frame:
     """One RGB-D frame: ``rgb`` H×W×3 uint8, ``depth`` H×W float32 metres (0: no return),
-    ``seg`` H×W int32 segment ids or None."""
+    ``seg`` H×W int32 segment ids or None; ``joints``: each robot's joint positions (robot id →
+    radians, the motion model's joint order) when the frame was taken, if the source knows
+    them (the 3D simulator does; a recording may carry them in ``camera.json``)."""
 
     index: int
     t: float
     rgb: npt.NDArray[np.uint8]
     depth: npt.NDArray[np.float32]
     seg: npt.NDArray[np.int32] | None = None
+    joints: Mapping[str, tuple[float, ...]] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,6 +85,7 @@ class _FrameRef:
     rgb: str
     depth: str
     seg: str | None
+    joints: Mapping[str, tuple[float, ...]] | None = None
 
 
 def _image_module() -> Any:
@@ -131,6 +135,7 @@ class FrameFolder:
             _read_rgb(self.root / ref.rgb, self.camera),
             _read_depth(self.root / ref.depth, self.camera),
             None if ref.seg is None else _read_seg(self.root / ref.seg, self.camera),
+            ref.joints,
         )
 
     def __iter__(self) -> Iterator[Frame]:
@@ -238,8 +243,34 @@ def _parse_frames(data: Mapping[str, Any], src: str) -> list[_FrameRef]:
         idx = f.get("index", i)
         if isinstance(idx, bool) or not isinstance(idx, int):
             raise fail(f"frames[{i}].index", idx, "an integer")
-        refs.append(_FrameRef(idx, t, f["rgb"], f["depth"], seg))
+        refs.append(_FrameRef(idx, t, f["rgb"], f["depth"], seg, _joints(f, f"frames[{i}]", src)))
     return refs
+
+
+def _joints(f: Mapping[str, Any], where: str, src: str) -> dict[str, tuple[float, ...]] | None:
+    """A frame entry's optional ``joints``: robot id → list of joint positions (radians)."""
+    raw = f.get("joints")
+    if raw is None:
+        return None
+    expected = "an object mapping robot ids to lists of finite joint positions (radians)"
+    if not isinstance(raw, Mapping):
+        raise _fail(src, f"{where}.joints", raw, expected)
+    out: dict[str, tuple[float, ...]] = {}
+    for rid, q in raw.items():
+        ok = isinstance(q, list) and all(
+            not isinstance(v, bool) and isinstance(v, int | float) and math.isfinite(v) for v in q
+        )
+        if not ok:
+            raise _fail(src, f"{where}.joints.{rid}", q, expected)
+        out[str(rid)] = tuple(float(v) for v in q)
+    return out
+
+
+def joints_entry(joints: Mapping[str, Sequence[float]] | None) -> dict[str, list[float]]:
+    """``joints`` as a frame entry of ``camera.json`` writes them (empty when unknown)."""
+    if joints is None:
+        return {}
+    return {rid: [round(float(v), 6) for v in q] for rid, q in sorted(joints.items())}
 
 
 def _check_shape(path: Path, arr: npt.NDArray[Any], cam: Camera, what: str) -> None:
@@ -331,6 +362,8 @@ def write_frames(
         if f.seg is not None:
             image.fromarray(f.seg.astype(np.uint16)).save(root / "seg" / f"{name}.png")
             entry["seg"] = f"seg/{name}.png"
+        if f.joints is not None:
+            entry["joints"] = joints_entry(f.joints)
         entries.append(entry)
     data = camera.to_dict()
     data["frames"] = entries

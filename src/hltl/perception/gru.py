@@ -16,7 +16,7 @@ import numpy.typing as npt
 from hltl.errors import BackendUnavailableError
 from hltl.perception.detection import read_weights
 from hltl.perception.forecast import DT, F64, T_OBS, T_PRED, fit_velocity, goal_forecast
-from hltl.perception.walks import generate_walks
+from hltl.perception.walks import MIX, generate_walks
 
 K_STOPS = 6  # nearest stopping places the model sees
 STOP_RANGE = 4.0  # metres; farther places are left out
@@ -209,10 +209,13 @@ def train(
     seed: int = 0,
     walks: int = 600,
     epochs: int = 12,
+    mix: Sequence[float] = MIX,
     command: str = "",
     progress: Callable[[str, float], None] | None = None,
 ) -> TrainResult:
     """Train the GRU on ``walks`` seeded walks (90 % train, 10 % validation) and write weights.
+
+    ``mix`` weighs the leg kinds of :data:`hltl.perception.walks.KINDS` in the training walks.
 
     The loss is the mean Euclidean error over the 2 s forecast (ADE). ``progress`` is called
     with a phase name and a fraction done.
@@ -221,7 +224,7 @@ def train(
     t0 = time.perf_counter()
     torch.manual_seed(seed)
     rng = np.random.default_rng(seed)
-    all_walks = generate_walks(seed, walks)
+    all_walks = generate_walks(seed, walks, mix=mix)
     feats: list[Features] = []
     targets: list[F64] = []
     for k, w in enumerate(all_walks):
@@ -282,6 +285,7 @@ def train(
         "seed": seed,
         "walks": walks,
         "epochs": epochs,
+        "mix": [float(m) for m in mix],
         "samples": n,
         "dt": DT,
         "t_obs": T_OBS,

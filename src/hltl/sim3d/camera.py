@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -11,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from hltl.errors import HltlError
+from hltl.perception.frames import joints_entry
 from hltl.sim3d.gl import mujoco, require_renderer
 from hltl.sim3d.model import SceneModel, camera_axes
 from hltl.world.scene import Camera
@@ -186,7 +188,11 @@ class FrameWriter:
                 f"{self.folder}: cannot create the frame folder: {exc.strerror}"
             ) from None
 
-    def write(self, frame: Frame, t: float) -> None:
+    def write(
+        self, frame: Frame, t: float, joints: Mapping[str, Sequence[float]] | None = None
+    ) -> None:
+        """Write ``frame`` taken at ``t``; ``joints`` (robot id → joint positions) go into its
+        ``camera.json`` entry when given."""
         from PIL import Image
 
         i = len(self.frames)
@@ -204,6 +210,8 @@ class FrameWriter:
             if int(frame.seg.max(initial=0)) > 65535:
                 raise HltlError("more than 65535 segments do not fit a 16-bit PNG")
             Image.fromarray(frame.seg.astype(np.uint16)).save(self.folder / entry["seg"])
+        if joints is not None:
+            entry["joints"] = joints_entry(joints)
         self.frames.append(entry)
 
     def camera_json(self) -> dict[str, Any]:

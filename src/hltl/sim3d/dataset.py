@@ -181,7 +181,7 @@ def render_samples(
                     stage.forward()
                     f = r.render(stage.data)
                     fcam = frame_camera(cam, segments)
-                    frame = Frame(len(out), 0.0, f.rgb, f.depth, f.seg)
+                    frame = Frame(len(out), 0.0, f.rgb, f.depth, f.seg, stage.joints())
                     labels = class_labels(f.seg, fcam, sc)
                     out.append(Sample(frame, fcam, labels, sc, object_centres(stage)))
                     if progress:

@@ -61,7 +61,7 @@ class CameraSimulator(MujocoSimulator):
     def _frame(self, t: float) -> Observation:
         self._sync()
         f = self._renderer.render(self.stage.data)
-        frame = Frame(self._index, t, f.rgb, f.depth, f.seg)
+        frame = Frame(self._index, t, f.rgb, f.depth, f.seg, self.stage.joints())
         self._index += 1
         return self.perceiver.process(frame)
 

@@ -52,7 +52,7 @@ class FrameRecorder:
         if t + 1e-9 < self._next:
             return
         assert self._writer is not None
-        self._writer.write(self._renderer.render(sim.stage.data), t)
+        self._writer.write(self._renderer.render(sim.stage.data), t, sim.stage.joints())
         self._next = t + self._period
 
     @property

@@ -77,6 +77,10 @@ class Stage:
         rig = self.sm.robots[rid]
         return tuple(float(v) for v in self.data.qpos[list(rig.qpos_adr)])
 
+    def joints(self) -> dict[str, tuple[float, ...]]:
+        """Every robot's joint positions (what a frame of this pose carries as ``joints``)."""
+        return {rid: self.robot_q(rid) for rid in self.sm.robots}
+
     def table_rect(self) -> Rect:
         """The work table's top on the floor plan (its box geom in the compiled model)."""
         m = self.model
