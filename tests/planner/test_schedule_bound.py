@@ -157,6 +157,27 @@ def test_step_bound_sees_that_a_step_lasts_its_longest_instance() -> None:
     assert by_steps == to_ticks(optimum)
 
 
+def test_step_bound_sees_where_a_loop_takes_the_object() -> None:
+    # a 4-robot random cell whose optimum is 4.5 s (the independent CP-SAT oracle): a split
+    # session that parks its object for free (no holder in between, the loop's steps as short
+    # as any) let the step bound stop at 4.4 s (session 8's model)
+    c = delivery_cell("random", 4, 1)
+    optimum = cpsat_makespan(c.scene, c.spec, time_limit=DEADLINE_S)
+    assert optimum is not None
+    problem, unit, _, by_steps = _cell_bounds("random", 4, 1)
+    assert by_steps == to_ticks(optimum)
+    # one unit below it, session 8's model (holders=False) still finds a schedule
+    s = _Search(problem)
+    node = problem.start()
+    graph = s.heuristic.graph
+    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    below = by_steps // unit - 1
+    deadline = time.perf_counter() + DEADLINE_S
+    weak = schedule.relaxed_steps(problem, graph, node, tgts, below, deadline, holders=False)
+    assert isinstance(weak, tuple)
+    assert schedule.relaxed_steps(problem, graph, node, tgts, below, deadline) is False
+
+
 @pytest.mark.parametrize(("layout", "n", "seed"), [("grid", 4, 1), ("grid", 5, 0), ("grid", 3, 0)])
 def test_relaxed_steps_at_the_bound_are_an_optimal_plan(layout: str, n: int, seed: int) -> None:
     # where the relaxation is tight its schedule (sessions whole) is a plan: the independent

@@ -583,8 +583,22 @@ def step_bound(
         return floor, None
     if not tgts or len(tgts) > SCHEDULE_UP_TO:
         return floor, None
+
+    def is_plan(steps: tuple[tuple[Instance, ...], ...]) -> bool:
+        # a relaxed schedule at level L that replays is a plan of makespan at most L: the
+        # cheaper model's bound L is then proved optimal, and the full model need not be asked
+        return replay(s, start, steps) is not None
+
     res = schedule.schedule_bound(
-        problem, graph, start, tgts, floor=floor, upper=upper, deadline=until, steps=True
+        problem,
+        graph,
+        start,
+        tgts,
+        floor=floor,
+        upper=upper,
+        deadline=until,
+        steps=True,
+        accept=is_plan,
     )
     if res.steps is None:
         return res.ticks, None

@@ -142,6 +142,7 @@ def schedule_bound(
     deadline: float,
     seed: int = 0,
     steps: bool = False,
+    accept: Callable[[tuple[tuple[Instance, ...], ...]], bool] | None = None,
 ) -> ScheduleBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen, from a relaxed schedule (docs/planner.md, "Scheduling bound").
@@ -156,14 +157,50 @@ def schedule_bound(
     (``relaxed_steps``), which also sees that a step lasts its longest instance; with an
     ``upper`` too, the levels gallop up from ``floor`` and are then bisected below the first
     feasible one (``_bisect``; a plan ends by ``upper``, so the relaxation is feasible there).
+
+    With ``accept`` too (it says whether a relaxed schedule at the level found is a plan) the
+    levels are first asked with loops as session 8 modelled them (``relaxed_steps`` without
+    ``holders``: weaker, and cheaper); where that finds a schedule that is no plan, the levels
+    from there on are asked of the full model. Every "no" of the weaker model is one of the
+    full model's (it is a relaxation of it).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
+    weak = accept is not None
     if steps and upper is not None:
-        return _bisect(problem, graph, node, tgts, level, upper // unit, deadline, seed, floor)
+        res = _bisect(
+            problem, graph, node, tgts, level, upper // unit, deadline, seed, floor, not weak
+        )
+    else:
+        res = _shave(problem, graph, node, tgts, level, upper, deadline, seed, floor, steps, weak)
+    if accept is None or res.steps is None or accept(res.steps):
+        return res
+    return _shave(
+        problem, graph, node, tgts, res.ticks // unit, upper, deadline, seed, floor, True, False
+    )
+
+
+def _shave(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    upper: int | None,
+    deadline: float,
+    seed: int,
+    floor: int,
+    steps: bool,
+    weak: bool,
+) -> ScheduleBound:
+    """The relaxation's optimum from ``level`` units up, one level at a time (``steps``: the
+    step model, ``weak``: without ``holders``; else the interval model)."""
+    unit = time_unit(problem)
     while upper is None or level * unit < upper:
         if steps:
-            found = relaxed_steps(problem, graph, node, tgts, level, deadline, seed=seed)
+            found = relaxed_steps(
+                problem, graph, node, tgts, level, deadline, seed=seed, holders=not weak
+            )
         else:
             found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
         if found is None:  # out of time
@@ -185,6 +222,7 @@ def _bisect(
     deadline: float,
     seed: int,
     floor: int,
+    holders: bool,
 ) -> ScheduleBound:
     """The step relaxation's optimum in [lo, hi] units (feasible at ``hi``): a "no" at a level
     raises ``lo`` above it, a schedule lowers ``hi`` to it. The levels asked gallop up from
@@ -195,7 +233,7 @@ def _bisect(
     gallop: int | None = 0
     while lo < hi:
         mid = (lo + hi) // 2 if gallop is None else min(lo + gallop, hi - 1)
-        found = relaxed_steps(problem, graph, node, tgts, mid, deadline, seed=seed)
+        found = relaxed_steps(problem, graph, node, tgts, mid, deadline, seed=seed, holders=holders)
         if found is None:
             return ScheduleBound(max(floor, lo * unit), False, len(tgts))
         if found is False:
@@ -259,13 +297,16 @@ def relaxed_steps(
     *,
     seed: int = 0,
     whole: bool = False,
+    holders: bool = True,
 ) -> tuple[tuple[Instance, ...], ...] | bool | None:
     """A step-indexed relaxed schedule that makes every target happen by ``level`` time units
     (``time_unit``), as its non-empty steps; False when CP-SAT proved there is none, None when
     it could not tell before ``deadline``. docs/planner.md, "Step bound".
 
     With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
-    nothing, but its schedules are more often plans).
+    nothing, but its schedules are more often plans). Without ``holders`` a split session
+    keeps of its loop only the fixed runs and the time (session 8's model: a relaxation of this
+    one, docs/planner.md "Loops").
 
     The paths and sessions of ``_feasible`` (``_relaxation`` on a sequence of steps,
     ``_Steps``): every instance on a path is in one step, the next instance on its path in a
@@ -283,7 +324,7 @@ def relaxed_steps(
     shortest = min(i.lower for i in p.instances)
     if level * unit // shortest == 0:
         return False
-    axis = _Steps(cp_model.CpModel(), p, level, unit, whole)
+    axis = _Steps(cp_model.CpModel(), p, level, unit, whole, holders)
     if not _relaxation(p, graph, node, tgts, axis):
         return False
     solver = _solve(axis, deadline, seed)
@@ -318,8 +359,6 @@ def _solve(axis: _Axis, deadline: float, seed: int) -> Any:
 _Window = Callable[[Instance, bool, float], tuple[int, int] | None]
 # (used, time in units) per instance that brings an object into a hand or takes it out
 _Stamps = list[tuple[Any, Any]]
-# a split session's ``quickest`` and ``timed`` (``_session``)
-_Split = tuple[tuple[int, int], tuple[Any, Any, int] | None]
 
 
 @dataclass(frozen=True, slots=True)
@@ -357,10 +396,20 @@ class _Axis:
         ticks, and leaving ``rest`` ticks after its end."""
         raise NotImplementedError
 
-    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
-        """A split session's ``quickest`` and ``timed`` (``_session``) from the quickest loop
-        (ticks out, ticks back) and the times the session's arrivals end and its departures
-        start (each with its instance's "used")."""
+    def split(
+        self,
+        r: int,
+        t: Target,
+        loop: tuple[int, int],
+        hold: _Hold,
+        arrivals: _Stamps,
+        departures: _Stamps,
+    ) -> list[tuple[int, Any]]:
+        """Robot ``r``'s session with ``t``'s object split around a loop out of its hand and
+        back (at least ``loop``: ticks out, ticks back), present when ``hold.split``: its
+        pieces, and what the loop takes of other robots, as (robot, interval); ``arrivals``
+        and ``departures``: the times the session's first instance ends and its last starts
+        (each with its instance's "used")."""
         raise NotImplementedError
 
     def finish(self) -> None:
@@ -383,8 +432,26 @@ class _Times(_Axis):
         st = m.new_int_var(*window, "")
         return _Slot(u, st, i.lower // self.unit, st)
 
-    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
-        return (loop[0] // self.unit, loop[1] // self.unit), None
+    def split(
+        self,
+        r: int,
+        t: Target,
+        loop: tuple[int, int],
+        hold: _Hold,
+        arrivals: _Stamps,
+        departures: _Stamps,
+    ) -> list[tuple[int, Any]]:
+        # the arrival plus the quickest way out, the quickest way back in plus the departure
+        m, H, split = self.model, self.horizon, hold.split
+        leave, back = loop[0] // self.unit, loop[1] // self.unit
+        e1, s2 = m.new_int_var(0, H, ""), m.new_int_var(-H, H, "")
+        m.add(e1 == hold.end_in + leave).only_enforce_if(split)
+        m.add(s2 == hold.start_out - back).only_enforce_if(split)
+        m.add(e1 <= s2).only_enforce_if(split)
+        return [
+            (r, m.new_optional_interval_var(hold.begin, m.new_int_var(0, H, ""), e1, split, "")),
+            (r, m.new_optional_interval_var(s2, m.new_int_var(0, 2 * H, ""), hold.end, split, "")),
+        ]
 
 
 class _Steps(_Axis):
@@ -392,11 +459,14 @@ class _Steps(_Axis):
     ``start[k]`` units, is non-empty (``busy``, at least the shortest duration) or empty and
     then last, and lasts at least each longer duration its instances have (``at_least``)."""
 
-    def __init__(self, model: Any, problem: Problem, level: int, unit: int, whole: bool) -> None:
+    def __init__(
+        self, model: Any, problem: Problem, level: int, unit: int, whole: bool, holders: bool
+    ) -> None:
         shortest = min(i.lower for i in problem.instances)
         super().__init__(model, level, unit, level * unit // shortest)
         self.problem = problem
         self.whole = whole
+        self.holders = holders
         self.d_min = shortest // unit
         K, m = self.horizon, model
         lengths = sorted({i.lower // unit for i in problem.instances if i.lower > shortest})
@@ -477,15 +547,76 @@ class _Steps(_Axis):
             m.add(tm == self.start[k]).only_enforce_if(x)
         return _Slot(u, st, 1, tm)
 
-    def loop(self, loop: tuple[int, int], arrivals: _Stamps, departures: _Stamps) -> _Split:
-        # it leaves in a later step and comes back in a later one, and the loop takes time
-        m = self.model
+    def split(
+        self,
+        r: int,
+        t: Target,
+        loop: tuple[int, int],
+        hold: _Hold,
+        arrivals: _Stamps,
+        departures: _Stamps,
+    ) -> list[tuple[int, Any]]:
+        # the object first leaves r's hand in step e (after the arrival's step a) and last
+        # comes back in step f (e < f, before the departure's step b): r holds it in [a, e]
+        # and in [f, b] (docs/planner.md, "Step bound")
+        p, m, K, unit, split = self.problem, self.model, self.horizon, self.unit, hold.split
+        if self.holders:
+            e, f = m.new_int_var(0, K, ""), m.new_int_var(0, K, "")
+            m.add(e >= hold.end_in).only_enforce_if(split)
+            m.add(f + 1 <= hold.start_out).only_enforce_if(split)
+        else:  # session 8's runs, [a, a+2) and [b-1, b+1)
+            e, f = hold.end_in, hold.start_out - 1
+        m.add(f >= e + 1).only_enforce_if(split)
+        out = [
+            (r, m.new_optional_interval_var(hold.begin, m.new_int_var(0, K, ""), e + 1, split, "")),
+            (r, m.new_optional_interval_var(f, m.new_int_var(0, K, ""), hold.end, split, "")),
+        ]
+        # the loop takes time, from the arrival's end to the departure's start
         arrived, leaves = m.new_int_var(0, self.level, ""), m.new_int_var(0, self.level, "")
         for u, when in arrivals:
             m.add(arrived == when).only_enforce_if(u)
         for u, when in departures:
             m.add(leaves == when).only_enforce_if(u)
-        return (1, 1), (arrived, leaves, (loop[0] + loop[1]) // self.unit)
+        m.add(arrived + (loop[0] + loop[1]) // unit <= leaves).only_enforce_if(split)
+        if not self.holders:
+            return out
+        # and the steps e and f last at least the quickest way out and the quickest way back
+        for at, d in ((e, loop[0] // unit), (f, loop[1] // unit)):
+            which = [m.new_bool_var("") for _ in range(K)]
+            m.add(sum(which) == split)
+            for k, b in enumerate(which):
+                m.add(at == k).only_enforce_if(b)
+                m.add_implication(b, self.at_least[k][d] if d > self.d_min else self.busy[k])
+        # the way out and the way back are two more instances of r's, each in a step of its
+        # own: r's load
+        self.work[r].append(((loop[0] + loop[1]) // unit, split))
+        # where the way out takes it (a robot's hand, or a place no robot holds), from where it
+        # can go on without its atom happening: a robot there holds it in step e and acts on
+        # it again in a later one, so it holds it in [e, e + 1], and does two instances on it
+        o = t.obj
+        on: dict[int, int] = {}  # place -> quickest way on from there
+        for i in p.by_obj_pre[o][p.held_code[r]]:
+            if i.index in t.fires or i.post in on:
+                continue
+            nxt = [j.lower for j in p.by_obj_pre[o][i.post] if j.index not in t.fires]
+            if nxt:
+                on[i.post] = min(nxt)
+        taken: dict[int | None, tuple[int, Any]] = {}  # robot (None: none) -> (work, literal)
+        for i in p.by_obj_pre[o][p.held_code[r]]:
+            if i.index in t.fires or i.post not in on:
+                continue
+            who = p.code_holder.get(i.post)
+            work = (i.lower + on[i.post]) // unit
+            if who in taken:
+                taken[who] = (min(work, taken[who][0]), taken[who][1])
+            else:
+                taken[who] = (work, m.new_bool_var(""))
+        m.add(sum(z for _, z in taken.values()) == split)
+        for who, (work, z) in taken.items():
+            if who is not None:
+                out.append((who, m.new_optional_fixed_size_interval_var(e, 2, z, "")))
+                self.work[who].append((work, z))
+        return out
 
     def finish(self) -> None:
         m = self.model
@@ -570,11 +701,11 @@ def _relaxation(
                     per_robot[r].append(m.new_optional_fixed_size_interval_var(st, span, u, ""))
                 continue
             loop = _quickest_loop(p, t, r)
-            if loop is None or axis.whole:
-                per_robot[r].extend(_session(m, H, starts, ends, None))
-            else:
-                quickest, timed = axis.loop(loop, arrivals[r], departures[r])
-                per_robot[r].extend(_session(m, H, starts, ends, quickest, timed))
+            ivs, hold = _session(m, H, starts, ends, loop is not None and not axis.whole)
+            per_robot[r].extend(ivs)
+            if loop is not None and hold is not None:
+                for who, iv in axis.split(r, t, loop, hold, arrivals[r], departures[r]):
+                    per_robot[who].append(iv)
     for k, t in enumerate(tgts):
         for j in t.after:
             m.add(fire_at[k] >= fire_at[j])
@@ -641,21 +772,30 @@ def _hops(problem: Problem, obj: int, sources: Sequence[int], forward: bool) -> 
     return dist
 
 
+@dataclass(frozen=True, slots=True)
+class _Hold:
+    """A robot's session with an object as the model sees it: where the instance that brings
+    the object starts and ends, where the one that takes it away starts and ends, and (when it
+    may be split around a loop) the literal "it is split"."""
+
+    begin: Any
+    end_in: Any
+    start_out: Any
+    end: Any
+    split: Any
+
+
 def _session(
     m: Any,
     H: int,
     starts: list[tuple[Any, Any, int]],
     ends: list[tuple[Any, Any, int, bool]],
-    quickest: tuple[int, int] | None,
-    timed: tuple[Any, Any, int] | None = None,
-) -> list[Any]:
+    may_split: bool,
+) -> tuple[list[Any], _Hold | None]:
     """Robot r's time with the object in hand, as intervals for r's no-overlap: whole, from the
-    instance that brings it to the one that takes it away; or, when the object leaves r and
-    comes back (a loop the path does not show), split into the arrival plus the quickest way
-    out, and the quickest way back in plus the departure (``quickest``: those two durations;
-    None when the object cannot leave r without its atom happening, or never come back).
-    ``timed`` (the step model): the time the arrival ends, the time the departure starts and
-    the quickest loop's duration, which a split session must leave between them."""
+    instance that brings it to the one that takes it away; or, when ``may_split`` (the object
+    may leave r and come back: a loop the path does not show), split, which the axis models
+    (``_Axis.split``) from the session returned."""
     present = m.new_bool_var("")
     m.add(present == sum(u for u, _, _ in starts))
     begin, end = m.new_int_var(0, H, ""), m.new_int_var(0, H, "")
@@ -668,20 +808,9 @@ def _session(
         m.add(start_out == st).only_enforce_if(u)
     whole = m.new_bool_var("")
     out: list[Any] = [m.new_optional_interval_var(begin, m.new_int_var(0, H, ""), end, whole, "")]
-    if quickest is None:
+    if not may_split:
         m.add(whole == present)
-        return out
-    leave, back = quickest
+        return out, None
     split = m.new_bool_var("")
     m.add(whole + split == present)
-    e1, s2 = m.new_int_var(0, H, ""), m.new_int_var(-H, H, "")
-    m.add(e1 == end_in + leave).only_enforce_if(split)
-    m.add(s2 == start_out - back).only_enforce_if(split)
-    m.add(e1 <= s2).only_enforce_if(split)
-    out.append(m.new_optional_interval_var(begin, m.new_int_var(0, H, ""), e1, split, ""))
-    out.append(m.new_optional_interval_var(s2, m.new_int_var(0, 2 * H, ""), end, split, ""))
-    if timed is not None:
-        # steps: the loop also takes time, from the arrival's end to the departure's start
-        arrived, leaves, loop = timed
-        m.add(arrived + loop <= leaves).only_enforce_if(split)
-    return out
+    return out, _Hold(begin, end_in, start_out, end, split)
