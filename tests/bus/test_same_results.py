@@ -390,3 +390,45 @@ def test_closing_a_node_ends_its_step_server(loopback: Loopback) -> None:
         assert node._server.is_alive()
     node._server.join(5.0)
     assert not node._server.is_alive()
+
+
+def test_one_sessions_cells_share_its_subscriptions_and_hear_only_their_own(
+    loopback: Loopback,
+) -> None:
+    """The reports and liveliness subscriptions are declared once per session, not per episode:
+    two cells' episodes on one session share them, each hears only its own cell's robots, and
+    a closed one nothing."""
+    from hltl.bus.driver import _listeners_of
+
+    trial = make_trial("1-1", 0)
+    heard: dict[str, list[str]] = {"a": [], "b": []}
+    nodes = [loopback.node(trial.scene, cell=c) for c in ("a", "b")]
+    try:
+        runs = [
+            loopback.run(trial.scene, instruction=trial.instruction, seed=0, cell=c, node=n)
+            for c, n in zip(("a", "b"), nodes, strict=True)
+        ]
+        session = loopback._exec_session
+        shared = _listeners_of(session)
+        assert _listeners_of(session) is shared  # one set per session
+        cells = [r.cell for r in runs]
+        assert all(c._listeners is shared for c in cells)  # (both episodes used it)
+
+        class Sample:
+            def __init__(self, key: str) -> None:
+                self.key_expr = key
+
+        for c, cell in zip(("a", "b"), cells, strict=True):
+            cell._on_report = lambda s, c=c: heard[c].append(str(s.key_expr))  # type: ignore[method-assign]
+        shared.add(cells[0])  # (closed after its episode: opened again to listen)
+        shared.add(cells[1])
+        shared._on_report(Sample("hltl/a/robots/r1/status"))
+        shared._on_report(Sample("hltl/b/robots/r1/status"))
+        shared.remove(cells[1])
+        shared._on_report(Sample("hltl/b/robots/r1/status"))
+        shared.remove(cells[0])
+        assert heard == {"a": ["hltl/a/robots/r1/status"], "b": ["hltl/b/robots/r1/status"]}
+        assert all(r.episode.success for r in runs)
+    finally:
+        for n in nodes:
+            n.close()

@@ -33,6 +33,35 @@ def test_train_then_evaluate_a_tiny_predictor(
         assert all(r["ade@1s"] <= r["ade@2s"] for r in rows)
 
 
+def test_a_training_mix_is_recorded_and_the_oracle_scores_a_test_set(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from hltl.perception.gru import load_model
+
+    out = tmp_path / "w.npz"
+    args = ["perception", "train-predictor", "--walks", "2", "--epochs", "1", "--out", str(out)]
+    assert main([*args, "--mix", "0,0,0,0,1"]) == 0
+    meta = load_model(out).meta
+    assert meta["mix"] == [0.0, 0.0, 0.0, 0.0, 1.0] and "--mix=0,0,0,0,1" in meta["command"]
+    capsys.readouterr()
+    orc = ["perception", "oracle-predictor", "--walks", "1", "--library", "2", "--k", "5"]
+    assert main([*orc, "--json"]) == 0
+    res = json.loads(capsys.readouterr().out)
+    assert res["set"] == "wandering" and res["library_windows"] > 5
+    rows = res["scores"]
+    assert [r["predictor"] for r in rows] == ["cv", "goal", "gru", "oracle"]
+    assert rows[0]["vs_cv"] == [0.0, 0.0, 0.0, 0.0]
+    for r in rows:  # the margins are the table's own numbers
+        assert r["vs_cv"][2] == pytest.approx(1 - r["ade@2s"] / rows[0]["ade@2s"], abs=1e-3)
+    for bad, what in (("1,2", "--mix"), ("0,0,0,0,0", "--mix"), ("a,b,c,d,e", "--mix")):
+        assert main([*args, "--mix", bad]) == 1
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and err[0].startswith(f"error: {what}")
+    assert main([*orc, "--k", "100000"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --k")
+
+
 def test_bad_arguments_give_one_error_line(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -44,13 +44,6 @@ KNOWN_MISSES = frozenset(
         "Put the cup on the shelf, it's cluttering the counter",
         # blind5: a surface name used as the verb
         "Shelf the bottle please",
-        # blind6 (tuned on in session 8): "whichever one <person> doesn't get" (a choice
-        # defined by a negated clause)
-        "Give Bob whichever one Alice doesn't get, and give Alice the bottle",
-        # blind6: 'the other one' after a relative description, which is read later
-        "Give Person B the thing nearest to Person B, and the other one to Person A",
-        # blind6: a description per person ("the thing closest to them", 'them' each person)
-        "Give each person the thing closest to them",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
         "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
@@ -67,8 +60,8 @@ KNOWN_MISSES = frozenset(
 # session 6; "blind5" measured once in session 6, its misses fixed in session 7; "blind6"
 # written in session 7 by another engineer, measured once, its misses fixed in session 8;
 # "blind7" written in session 8 by another engineer, measured once, its misses fixed in
-# session 9: all asserted now)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# session 9: all asserted now; "blind8" written in session 9 by another engineer, measured once)
+MEASURED_ONLY = frozenset({"blind8"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

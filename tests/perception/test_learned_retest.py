@@ -128,27 +128,3 @@ def test_only_regions_by_a_registered_arm_base_are_checked_for_being_a_piece_of_
     assert backend._near_base(pts[mask_of(frame, BASE)])
     assert not backend._near_base(pts[mask_of(frame, BOX)])  # 0.8 m away
     assert not LearnedBackend()._near_base(pts[mask_of(frame, BASE)])  # no scene: no arms known
-
-
-def test_a_piece_of_a_leg_beyond_the_table_is_leg_like_and_an_object_on_the_table_is_not() -> None:
-    from scipy import ndimage
-
-    _, frame, backend, pts = setup()
-    person = mask_of(frame, PERSON)
-    z = pts[..., 2]
-    # a band of the person's pixels at the table's height, seen beyond its edge (the thigh a
-    # network took for a box); the network calls the rest of the body a person
-    piece = person & (z > 0.85) & (z < 0.95)
-    assert piece.sum() > 20
-    people = person & ~piece
-    assert backend._beside(piece, frame.depth, people)
-    assert backend._leg_like(piece, pts, frame.depth, people)
-    full = np.where(people, CLASSES.index("person"), 0)
-    assert backend._continued(piece, frame.depth, z, full) >= CONTINUED
-    # the cup on the table is nowhere near the person's depth
-    cup = mask_of(frame, CUP)
-    assert not backend._beside(cup, frame.depth, people)
-    # even with person pixels all round it at its depth, it stands on the table: not a leg
-    around = ndimage.binary_dilation(cup, iterations=3) & ~cup
-    assert backend._beside(cup, frame.depth, around)
-    assert not backend._leg_like(cup, pts, frame.depth, around)

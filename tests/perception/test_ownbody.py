@@ -97,3 +97,18 @@ def test_an_arms_capsules_come_from_its_joints_as_the_motion_model_places_them()
     with pytest.raises(PerceptionError, match=r"robot r1 \(elfin3\) has 6 joints, got 2"):
         bodies.capsules({"r1": (0.0, 0.0)})
     assert bodies.capsules(None) == [] and OwnBodies(None).capsules({"r1": tuple(q)}) == []
+
+
+def test_the_simulator_reports_joints_only_of_arms_drawn_as_their_motion_model() -> None:
+    pytest.importorskip("mujoco")
+    pytest.importorskip("pinocchio")
+    from hltl.sim.scenarios import get
+    from hltl.sim3d.model import compile_scene
+    from hltl.sim3d.stage import Stage
+
+    scene = get("4-4-square").scene  # three xArm6 (drawn as the primitive arm) and an Elfin-3
+    joints = Stage(compile_scene(scene)).joints()
+    drawn = {r.id for r in scene.robots if r.model == "elfin3"}
+    assert set(joints) == drawn and all(len(q) == 6 for q in joints.values())
+    caps = OwnBodies(scene).capsules(joints)  # every reported arm is placed, none refused
+    assert len(caps) == 7 * len(drawn)

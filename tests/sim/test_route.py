@@ -85,6 +85,9 @@ def outside(draw: st.DrawFn) -> Vec3:
 @settings(max_examples=150, deadline=None)
 @given(outside(), outside(), st.floats(0.0, 0.5))
 @example((-2.0, 0.0, 0.0), (-0.34375, 0.39999999999999997, 0.0), 0.5)  # the sampled judge's miss
+@example((2.75, 2.625, 0.0), (-1.25, -0.09375, 0.0), 0.125)  # the sampled judge, 2.8e-5 m short
+@example((0.0, 0.4, 0.0), (0.0, -1.0, 0.0), 0.0002)  # a tiny clearance once walked straight over
+@example((0.0, 0.4, 0.0), (0.0, -1.0, 0.0), 0.0)
 def test_the_walk_keeps_its_clearance_and_is_shortest(
     start: Vec3, to: Vec3, clearance: float
 ) -> None:

@@ -22,7 +22,7 @@ from hltl.bus.codec import (
     world_from_wire,
 )
 from hltl.bus.faults import FaultModel, Link
-from hltl.bus.keys import Keys, robot_of
+from hltl.bus.keys import PREFIX, Keys, robot_of
 from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, zenoh
 from hltl.errors import BusError
@@ -96,6 +96,61 @@ class DriverStats:
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
+
+
+class _Listeners:
+    """One session's subscriptions to every cell's robot reports and liveliness tokens, shared by
+    the :class:`BusCell` s driven over it (one per episode). Declared once per session: a
+    subscription with a Python callback starts a thread and is announced to the node, which cost
+    an episode milliseconds on a loaded machine (docs/bus.md, "Where the time goes"). Samples go
+    to the open cells of the cell their key names; each cell filters by its episode as before."""
+
+    def __init__(self, session: Any) -> None:
+        self.session = session
+        self._lock = threading.Lock()
+        self._open: dict[str, list[BusCell]] = {}  # by cell name
+        self._entities = [
+            session.declare_subscriber(f"{PREFIX}/*/robots/*/status", self._on_report),
+            session.liveliness().declare_subscriber(
+                f"{PREFIX}/*/robots/*/alive", self._on_alive, history=False
+            ),
+        ]
+
+    def add(self, cell: BusCell) -> None:
+        with self._lock:
+            self._open.setdefault(cell.keys.cell, []).append(cell)
+
+    def remove(self, cell: BusCell) -> None:
+        with self._lock:
+            cells = self._open.get(cell.keys.cell, [])
+            if cell in cells:
+                cells.remove(cell)
+
+    def _cells(self, sample: Any) -> list[BusCell]:
+        parts = str(sample.key_expr).split("/")
+        with self._lock:
+            return list(self._open.get(parts[1], ())) if len(parts) > 1 else []
+
+    def _on_report(self, sample: Any) -> None:
+        for cell in self._cells(sample):
+            cell._on_report(sample)
+
+    def _on_alive(self, sample: Any) -> None:
+        for cell in self._cells(sample):
+            cell._on_alive(sample)
+
+
+# each session's shared subscriptions (the session is kept: its id is not reused meanwhile)
+_listeners: dict[int, _Listeners] = {}
+_listeners_lock = threading.Lock()
+
+
+def _listeners_of(session: Any) -> _Listeners:
+    with _listeners_lock:
+        got = _listeners.get(id(session))
+        if got is None or got.session is not session:
+            got = _listeners[id(session)] = _Listeners(session)
+        return got
 
 
 class BusCell:
@@ -185,13 +240,9 @@ class BusCell:
         self.now = 0.0
         executor_opened(1)  # (a node serving from this process yields to it: see executor_here)
         self._here = True
-        self._entities: list[Any] = [
-            session.declare_subscriber(self.keys.all_status, self._on_report),
-            session.liveliness().declare_subscriber(
-                self.keys.all_alive, self._on_alive, history=False
-            ),
-            *self._subscribe(),
-        ]
+        self._listeners = _listeners_of(session)
+        self._listeners.add(self)
+        self._entities: list[Any] = self._subscribe()
         reset = {
             "episode": self.episode,
             "scene": scene.to_dict(),
@@ -227,6 +278,7 @@ class BusCell:
         return []
 
     def close(self) -> None:
+        self._listeners.remove(self)
         for e in self._entities:
             with contextlib.suppress(Exception):  # the session is already closed
                 e.undeclare()

@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
     with CameraRenderer(sm, cam, geometry=args.geometry) as renderer:
         frame = renderer.render(stage.data)
     writer = FrameWriter(args.output, sm, cam)
-    writer.write(frame, 0.0)
+    writer.write(frame, 0.0, stage.joints())
     writer.close()
     k = intrinsics(cam)
     seen = sorted({int(v) for v in frame.seg.reshape(-1)} - {0})

@@ -46,6 +46,12 @@ def tokenize(text: str) -> list[Token]:
     # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
     text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
     text = re.sub(r"\s[&+]\s", " and ", text)
+    text = re.sub(r"\s*(?:->|=>|\u2192)\s*", " to ", text)  # a note: "cup -> Alice"
+    # punctuation said aloud to a phone: "give alice the cup comma and bob the chips"
+    text = re.sub(r"(?i)\s+comma\b", ",", text)
+    text = re.sub(r"(?i)\s+(?:full stop|period)\b", ".", text)
+    text = re.sub(r"(?i)\s+question mark\b", "?", text)
+    text = re.sub(r"(?i)\s+exclamation (?:mark|point)\b", "!", text)
     # "all the stuff": a mass noun for every object ("the stuff" alone stays unknown)
     text = re.sub(r"(?i)\ball (of )?(the |your |this |that )?stuff\b", "all the things", text)
     text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
@@ -610,6 +616,10 @@ for _it in ("", "it "):
     for _who in ("who", "which person", "who gets it", "which of them"):
         PHRASES[tuple(f"{_it}does n't matter {_who}".split())] = "whichever"
 _phrases("whichever", "no matter who", "i do n't mind who", "i do n't care who")
+# "Priya needs a pen, any colour": any of them will do
+_phrases(
+    "whichever", "any colour", "any color", "any kind", "any type", "any size", "any one of them"
+)
 # "Person A: chips or apple, I'm not fussy": the speaker says any of them will do
 for _who in ("i 'm", "i am", "we 're", "we are", "she 's", "she is", "he 's", "he is"):
     for _easy in ("not fussy", "not picky", "not bothered", "easy", "easy either way"):

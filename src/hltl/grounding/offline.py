@@ -328,8 +328,11 @@ class _Parser:
         segments: list[tuple[str, list[Item]]] = []
         current: list[Item] = []
         conn = "then"
+        opened: set[int] = set()  # segments whose connector follows 'and' or a comma
         for it in items:
             if _is(it, "then", "after", "before", "once", "prior"):
+                if current and _is(current[-1], ",", "and", "also"):
+                    opened.add(len(segments) + 1)
                 while current and _is(current[-1], ",", "and", "also"):
                     current.pop()  # ", and then": the separator belongs to the connector
                 if not current and segments and conn == "then" and it.lemma == "then":
@@ -347,7 +350,7 @@ class _Parser:
         segments.append((conn, current))
         extra = self._added_after_steps(segments, items)
         result: _Raw | None = None
-        for conn, seg in segments:
+        for index, (conn, seg) in enumerate(segments):
             seg = _strip_separators(seg)
             if not [it for it in seg if not _is(it, *_SKIP)]:
                 raise GroundingError(f"nothing to do after {conn!r} in {_text(items)!r}")
@@ -374,7 +377,12 @@ class _Parser:
                 and split is not None
                 # a comma ends the condition mid-sentence, or a command in its plain form
                 # ("…, and once it's there give Tom the scanner")
-                and (_is(seg[split - 1], ",") or _plain_command(seg, split))
+                and (
+                    _is(seg[split - 1], ",")
+                    # "Give Bob the chips once Alice has the bottle put …": without 'and' or a
+                    # comma before it the condition may belong to the clause before
+                    or (_plain_command(seg, split) and index in opened)
+                )
             ):
                 # "A and, once X, Y": Y waits for X; A stands beside them
                 cut = split - 1

@@ -12,6 +12,7 @@ from hltl.grounding.lexicon import (
     CHANGES_OF_MIND,
     NUMBERS,
     RETRACTIONS,
+    VERB_CLASS,
     Item,
     Lexicon,
     Ref,
@@ -678,6 +679,8 @@ def _places(items: list[Item], lexicon: Lexicon) -> list[Item]:
 
 def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     it = out[-1]
+    if k < len(items) and _is(items[k], "on") and _handed_on(items, k, out):
+        return _on_surface(items, k, out, lexicon)  # "give the cup on the shelf to Bob"
     if k < len(items) and _is(items[k], "on") and _given(out[:-1]):
         if _wanted(out[:-1]) and (
             len({r.id for r in it.refs}) == 1 or any(r.plural for r in it.refs)
@@ -738,6 +741,27 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     return j + 1
 
 
+def _handed_on(items: list[Item], k: int, out: list[Item]) -> bool:
+    """Whether 'on <surface>' at ``k`` describes the object before it because a recipient
+    follows it ('give the cup on the shelf to Bob'), in a clause whose verb hands over or
+    brings (with 'put', 'for Bob' may only say whom it is for)."""
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    if not (j + 1 < len(items) and _is_surface(items[j]) and _is(items[j + 1], "to")):
+        return False
+    n = j + 2
+    while n < len(items) and _is(items[n], "det"):
+        n += 1
+    if n >= len(items) or not _humans(items[n]):
+        return False
+    verb = next((x for x in reversed(out) if _is_verb_item(x)), None)
+    return verb is not None and VERB_CLASS.get(verb.lemma.removeprefix("verb:")) in (
+        "give",
+        "bring",
+    )
+
+
 def _wanted(before: list[Item]) -> bool:
     """Whether the words before an object are '<person> wants/needs/would like [the]'."""
     n = len(before)
@@ -749,6 +773,24 @@ def _wanted(before: list[Item]) -> bool:
     while m > 0 and _is(before[m - 1], "aux", "filler"):
         m -= 1
     return m > 0 and _humans(before[m - 1])
+
+
+def _places_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """_places for descriptions measured from a name ('the thing nearest to Person B'), early:
+    the quantity passes ('the other one') then see the one object it picks out. Descriptions
+    measured from a pronoun wait for _places, after the pronouns are resolved."""
+    return _after_objects(items, lexicon, _place_named)
+
+
+def _place_named(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
+    if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
+        return k
+    j = k + 1
+    while j < len(items) and _is(items[j], "det"):
+        j += 1
+    if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
+        return k
+    return _place(items, k, out, lexicon)
 
 
 def _given(before: list[Item]) -> bool:
@@ -776,15 +818,7 @@ def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) ->
     kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
     if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
         return k  # not a surface: left to the grammar (which refuses a second recipient)
-    surface = next(x for x in lexicon.scene.surfaces if x.id == items[j].refs[0].id)
-    (cx, cy), (sx, sy) = surface.center[:2], surface.size
-    on = [
-        o.id
-        for o in lexicon.scene.objects
-        if o.id in {r.id for r in it.refs}
-        and abs(o.position[0] - cx) <= sx / 2
-        and abs(o.position[1] - cy) <= sy / 2
-    ]
+    on = _starting_on({r.id for r in it.refs}, items[j].refs[0].id, lexicon)
     if not on:
         raise GroundingError(
             f"no {it.text!r} is on the {items[j].text!r} in the scene (where the objects "
@@ -2274,7 +2308,9 @@ def _hedges(items: list[Item]) -> list[Item]:
     out: list[Item] = []
     for k, it in enumerate(items):
         if _is(it, "hedge"):
-            if not _opening(items, k):
+            # "Could Alice maybe get the cup?": after a question's auxiliary and its person
+            asked = k >= 2 and _humans(items[k - 1]) and _is(items[k - 2], "aux")
+            if not (_opening(items, k) or (asked and _opening(items, k - 2))):
                 raise GroundingError(f"{it.text!r} leaves open whether to do it: say what to do")
             continue
         out.append(it)
@@ -2396,6 +2432,11 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
     k = 0
     while k < len(items):
         found = _rest_at(items, k)
+        unwanted = _not_gotten(items, k) if found is None else 0
+        if unwanted:  # "Give Bob whichever one Alice doesn't get, and give Alice the bottle"
+            out.append(_the_one_left(items, k, unwanted, lexicon))
+            k += unwanted
+            continue
         if found is None:
             out.append(items[k])
             k += 1
@@ -2429,6 +2470,51 @@ def _rest(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(Item("ent", words.lower(), words, refs, quant="all"))
         k += n
     return out
+
+
+def _not_gotten(items: list[Item], k: int) -> int:
+    """How many words say 'whichever/whatever (one) <person> doesn't get/want/have' at ``k``,
+    else 0."""
+    if items[k].text.lower() not in ("whichever one", "whichever", "whatever", "the one"):
+        return 0
+    j = k + 1
+    if j < len(items) and items[j].text.lower() == "one":
+        j += 1
+    if j + 2 >= len(items) or not _humans(items[j]) or len({r.id for r in items[j].refs}) != 1:
+        return 0
+    n = j + 1
+    while n < len(items) and _is(items[n], "aux"):
+        n += 1
+    if not (
+        n + 1 < len(items) and _is(items[n], "not") and items[n].text.lower() in ("n't", "not")
+    ):
+        return 0
+    if items[n + 1].lemma not in ("verb:get", "verb:have", "verb:want", "verb:receive"):
+        return 0
+    return n + 2 - k
+
+
+def _the_one_left(items: list[Item], k: int, n: int, lexicon: Lexicon) -> Item:
+    """The one object 'whichever one <P> doesn't get' can be: in an instruction about two people
+    (P and the one who gets this) without a choice, the one object no other part names."""
+    words = _words_of(items[k : k + n])
+    others = items[:k] + items[k + n :]
+    person = next(x for x in items[k : k + n] if _humans(x))
+    people = {r.id for x in items if _humans(x) for r in x.refs}
+    if (
+        _choices(others)
+        or len(people) != 2
+        or not any(_humans(x) and x.refs == person.refs for x in others)
+    ):
+        raise GroundingError(f"{words!r}: which one is that? name the object")
+    named = {r.id for x in others if _objects(x) for r in x.refs}
+    left = [o.id for o in lexicon.scene.objects if o.id not in named]
+    if len(left) != 1:
+        raise GroundingError(
+            f"{words!r}: {len(left)} objects are left ({', '.join(left) or 'none'}); "
+            "name the object"
+        )
+    return Item("ent", words.lower(), words, (Ref("object", left[0]),))
 
 
 def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[Item], int] | None:
@@ -2527,6 +2613,24 @@ def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
         ):
             out.append(Item("ent", "whatever", it.text, everything))
             k += 2
+            continue
+        if (
+            _is(it, "whatever")
+            and k + 3 < len(items)
+            and items[k + 1].text.lower() in ("'s", "is")
+            and _is(items[k + 2], "on")
+            and _starts_surface(items, k + 3)
+        ):  # "Hand Carol whatever is on the table": every object that starts there
+            n = k + 3
+            while not _is_surface(items[n]):
+                n += 1
+            on = _starting_on({r.id for r in everything}, items[n].refs[0].id, lexicon)
+            if not on:
+                raise GroundingError(f"nothing is on the {items[n].text!r} in the scene")
+            words = _words_of(items[k : n + 1])
+            refs = tuple(Ref("object", i, plural=True) for i in on)
+            out.append(Item("ent", words.lower(), words, refs, quant="all"))
+            k = n + 1
             continue
         out.append(it)
         k += 1
@@ -2704,6 +2808,18 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
         if not (_is(it, "correct") and it.text.lower() in ("i mean", "i meant")):
             continue
         if k + 1 < len(items) and not (items[k + 1].kind == "punct" and items[k + 1].lemma in _END):
+            said = k > 1 and items[k - 1].kind == "ent" and items[k + 1].kind != "punct"
+            if said and (
+                _is(items[k - 2], ",")
+                or (k > 2 and _is(items[k - 2], "det") and _is(items[k - 3], ","))
+            ):
+                # "Give Bob the cup, the apple I mean give Alice the chips": does 'I mean' take
+                # back what came before it, or bring what comes after? (the run-on fuzz read
+                # it as the chips alone)
+                raise GroundingError(
+                    f"cannot tell what {it.text!r} after {items[k - 1].text!r} corrects: end "
+                    "the sentence after it"
+                )
             continue
         if k < 2 or items[k - 1].kind != "ent":
             continue
@@ -3020,16 +3136,17 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
             k += 1
             continue
         j = k - 1 if k > 0 and _is(items[k - 1], ",") else k
+        to = j
+        while to > 0 and (_humans(items[to - 1]) or _is(items[to - 1], "and", ",")):
+            to -= 1
+        if to < j and to > 0 and _is(items[to - 1], "to", "for"):
+            # "Give the mugs to Alice and Carol, one each": the objects before 'to'
+            moved = _one_each_to(items, to - 1, j, end)
+            if moved is not None:
+                items = moved
+                continue
         stop = j
-        names: list[Item] = []
-        while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
-            j -= 1
-            if _objects(items[j]):
-                names.insert(0, items[j])
-        while j < stop and not _objects(items[j]):
-            j += 1  # the separators before the first object belong to the clause before it
-        while j > 0 and _is(items[j - 1], "det"):
-            j -= 1
+        j, names = _listed_before(items, stop)
         people = 0
         n = j - 1
         while n >= 0 and not (items[n].kind == "punct" and items[n].lemma in _END):
@@ -3041,20 +3158,58 @@ def _one_each_of(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 people += int(items[n].lemma.removeprefix("q:people:"))
             n -= 1
         single = all(len(x.refs) == 1 and not x.refs[0].plural for x in names)
-        if len(names) < 2 or not single or people < 2:
+        # "Give Alice and Carol the mugs, one each": one plural name for all of its kind
+        plural = len(names) == 1 and len(names[0].refs) > 1 and all(r.plural for r in names[0].refs)
+        if not ((len(names) >= 2 and single) or plural) or people < 2:
             k += 1
             continue
-        if people != len(names):
+        refs = tuple(Ref("object", i) for i in dict.fromkeys(r.id for x in names for r in x.refs))
+        if people != len(refs):
             raise GroundingError(
-                f"'one each' for {people} people, but {len(names)} objects are named: "
+                f"'one each' for {people} people, but {len(refs)} objects are named: "
                 "name one for each person"
             )
-        refs = tuple(x.refs[0] for x in names)
         words = _words_of(items[j:stop])
         choice = Item("ent", words.lower(), words, refs, quant="some", group=j)
         items = [*items[:j], choice, Item("word", "all", "each"), *items[end:]]
         k = j + 2
     return items
+
+
+def _listed_before(items: list[Item], stop: int) -> tuple[int, list[Item]]:
+    """The list of objects ending at ``stop``: where it starts (its article included) and the
+    object names in it."""
+    j = stop
+    names: list[Item] = []
+    while j > 0 and (_objects(items[j - 1]) or _is(items[j - 1], "det", "and", ",")):
+        j -= 1
+        if _objects(items[j]):
+            names.insert(0, items[j])
+    while j < stop and not _objects(items[j]):
+        j += 1  # the separators before the first object belong to the clause before it
+    while j > 0 and _is(items[j - 1], "det"):
+        j -= 1
+    return j, names
+
+
+def _one_each_to(items: list[Item], to: int, stop: int, end: int) -> list[Item] | None:
+    """'Give the mugs to Alice and Carol, one each' as 'Give a mug each to Alice and Carol':
+    the objects right before 'to' (named one by one, or one plural name for all of its kind)
+    become one choice each of the people after it; None when there are no such objects."""
+    j, names = _listed_before(items, to)
+    people = sum(len(x.refs) for x in items[to:stop] if _humans(x))
+    refs = tuple(dict.fromkeys(r.id for x in names for r in x.refs))
+    plural = len(names) == 1 and all(r.plural for r in names[0].refs)
+    if not names or not (plural or all(len(x.refs) == 1 for x in names)) or len(refs) < 2:
+        return None
+    if people != len(refs):
+        raise GroundingError(
+            f"'one each' for {people} people, but {len(refs)} objects are named: "
+            "name one for each person"
+        )
+    words = _words_of(items[j:to])
+    choice = Item("ent", words.lower(), words, tuple(Ref("object", i) for i in refs), "some", j)
+    return [*items[:j], choice, Item("word", "all", "each"), *items[to:stop], *items[end:]]
 
 
 def _swaps(items: list[Item]) -> list[Item]:
@@ -3142,7 +3297,7 @@ def _any_restated(items: list[Item]) -> list[Item]:
         it = items[k]
         prev = out[-1] if out else None
         before = out[-2] if len(out) > 1 else None
-        pause = _is(it, ",", "-")
+        pause = _is(it, ",", "-", ".", "!", ";")  # "Carol needs a mug. Any mug."
         chose = (
             prev is not None
             and _objects(prev)
@@ -3504,10 +3659,12 @@ def _closing_also(items: list[Item]) -> list[Item]:
     return out
 
 
-def _people_named(items: list[Item]) -> list[Item]:
+def _people_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Nurse Ruth', 'the patient Mr Lee': a name right after another name of the same person
-    (or of people including them) is that one person; 'the patients' (an alias several people
-    share, in the plural) is each of them, joined by 'and'."""
+    (or of people including them) is that one person, when both are names the scene gives,
+    spelled out and different ('Alise alice' is a name said twice, not a title); 'the
+    patients' (an alias several people share, in the plural) is each of them, joined by
+    'and'."""
     out: list[Item] = []
     for x in items:
         prev = out[-1] if out else None
@@ -3518,6 +3675,9 @@ def _people_named(items: list[Item]) -> list[Item]:
             and not any(r.plural for r in (*prev.refs, *x.refs))
             and len({r.id for r in x.refs}) == 1
             and x.refs[0].id in {r.id for r in prev.refs}
+            and prev.lemma != x.lemma
+            and lexicon.lookup(prev.lemma) is not None
+            and lexicon.lookup(x.lemma) is not None
         ):
             out[-1] = replace(x, text=f"{prev.text} {x.text}")
             continue
@@ -3784,7 +3944,10 @@ def _so_after_remark(items: list[Item]) -> list[Item]:
             start -= 1
         if not (_opening(items, start) or start == 0) or not _opens_remark(items, start):
             continue
-        nxt = items[k + 1]
+        n = k + 1
+        while n + 1 < len(items) and _is(items[n], "filler"):
+            n += 1  # "… so could you give him the chips"
+        nxt = items[n]
         if _is_verb_item(nxt) or _humans(nxt) or nxt.lemma == "pronoun" or _is(nxt, "aux"):
             out[k] = Item("punct", ",", x.text)
     return out
@@ -3832,17 +3995,18 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _lying_on(things: list[Item], surface: Item, lexicon: Lexicon) -> bool:
     """Whether one of the objects ``things`` name starts on ``surface``."""
     ids = {r.id for y in things if _objects(y) for r in y.refs}
-    for s in lexicon.scene.surfaces:
-        if s.id in {r.id for r in surface.refs}:
-            (cx, cy), (sx, sy) = s.center[:2], s.size
-            for o in lexicon.scene.objects:
-                if (
-                    o.id in ids
-                    and abs(o.position[0] - cx) <= sx / 2
-                    and abs(o.position[1] - cy) <= sy / 2
-                ):
-                    return True
-    return False
+    return any(_starting_on(ids, r.id, lexicon) for r in surface.refs)
+
+
+def _starting_on(ids: set[str], surface: str, lexicon: Lexicon) -> list[str]:
+    """The objects of ``ids`` that start on ``surface`` (inside its footprint), in scene order."""
+    s = next(x for x in lexicon.scene.surfaces if x.id == surface)
+    (cx, cy), (sx, sy) = s.center[:2], s.size
+    return [
+        o.id
+        for o in lexicon.scene.objects
+        if o.id in ids and abs(o.position[0] - cx) <= sx / 2 and abs(o.position[1] - cy) <= sy / 2
+    ]
 
 
 def _starts_surface(items: list[Item], k: int) -> bool:
@@ -3894,11 +4058,47 @@ def _restated(items: list[Item]) -> list[Item]:
             out += [x, items[k + 2]]
             k += 3
             continue
+        if (
+            x.text.lower() == "one"
+            and _is(x, "task")
+            and (nxt is None or _is(nxt, "to", "for", ",", "and", *_END))
+            and out
+            and (_is(out[-1], "and", ",") or _humans(out[-1]))
+        ):
+            said = [
+                items[j + 1]
+                for j in range(k - 1)
+                if items[j].text.lower() == "one" and _objects(items[j + 1])
+            ]
+            if len(said) == 1:  # "Give one mug to Alice and one to Carol": another mug
+                out += [Item("word", "other", "another"), said[0]]
+                k += 1
+                continue
         out.append(x)
-        if _objects(x) and _starts_objects(items, k + 1) and _list_ahead(items, k + 1):
+        if (
+            _objects(x)
+            and _starts_objects(items, k + 1)
+            and _list_ahead(items, k + 1)
+            and _list_opens(out)
+        ):
             out.append(Item("punct", ",", ","))
         k += 1
     return out
+
+
+def _list_opens(out: list[Item]) -> bool:
+    """Whether the objects ``out`` ends with follow a verb or a person ('give person a the apple
+    the chips …'), so a list without commas is theirs; each object named once."""
+    n = len(out)
+    named: list[str] = []
+    while n > 0 and (_objects(out[n - 1]) or _is(out[n - 1], "det", ",")):
+        named += [r.id for r in out[n - 1].refs] if _objects(out[n - 1]) else []
+        n -= 1
+    return (
+        n > 0
+        and (_humans(out[n - 1]) or _is_verb_item(out[n - 1]))
+        and len(named) == len(set(named))
+    )
 
 
 def _list_ahead(items: list[Item], k: int) -> bool:
@@ -4010,12 +4210,47 @@ def _clause_before(out: list[Item]) -> list[Item]:
     return out[n:]
 
 
+def _each_nearest(items: list[Item]) -> list[Item]:
+    """'Give each person the thing closest to them': people listed as recipients (each person,
+    'Alice and Bob'), then one description measured from 'them', is that description for each
+    of them in turn ('Person A the thing closest to Person A and Person B the thing closest to
+    Person B')."""
+    for k, x in enumerate(items):
+        if not (x.text.lower() == "them" and k >= 2 and _is(items[k - 1], "nearest", "farthest")):
+            continue
+        o = k - 2
+        if not _objects(items[o]):
+            return items
+        d = o
+        while d > 0 and _is(items[d - 1], "det"):
+            d -= 1
+        people: list[Item] = []
+        n = d
+        while n > 0 and (_humans(items[n - 1]) or _is(items[n - 1], "and", ",")):
+            n -= 1
+            if _humans(items[n]):
+                people.insert(0, items[n])
+        if len(people) < 2 or any(len({r.id for r in p.refs}) != 1 for p in people):
+            return items
+        if n == 0 or not _is_verb_item(items[n - 1]):
+            return items
+        if k + 1 < len(items) and not _is(items[k + 1], *_SEPARATORS, "filler"):
+            return items
+        out = list(items[:n])
+        for m, p in enumerate(people):
+            if m:
+                out.append(Item("word", "and", "and"))
+            out += [p, *items[d:k], Item("ent", p.lemma, p.text, p.refs)]
+        return out + items[k + 1 :]
+    return items
+
+
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_any_order),
     _plain(_closing_also),
-    _plain(_people_named),
+    _people_named,
     _plain(_restated),
     _plain(_notes),
     _plain(_surface_notes),
@@ -4045,6 +4280,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_do_for),
     _plain(_after_all),
     _plain(_superlatives),
+    _places_named,
     _rest,
     _whatever_near,
     _plain(_any_restated),
@@ -4071,6 +4307,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_has_taken),
     _plain(_not_wanted),
     _plain(_not_after),
+    _plain(_each_nearest),
     _places,
     _plain(_there),
     _remarks,

@@ -39,7 +39,7 @@ class Features:
     rot: F64  # (B, 2, 2) world-to-frame rotation
 
 
-def _frame(obs: F64) -> tuple[F64, F64]:
+def frame_of(obs: F64) -> tuple[F64, F64]:
     v = fit_velocity(obs)
     s = float(np.hypot(*v))
     if s == 0:
@@ -52,7 +52,7 @@ def _frame(obs: F64) -> tuple[F64, F64]:
 
 def features(obs: F64, stops: F64, prior: F64 | None = None) -> Features:
     """The model's input for one observed grid track ``obs`` (T_OBS, 2)."""
-    origin, rot = _frame(obs)
+    origin, rot = frame_of(obs)
     local = (obs - origin) @ rot.T
     steps = np.diff(local, axis=0, prepend=local[:1])
     seq = np.concatenate([local, steps], axis=1)

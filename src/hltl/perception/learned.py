@@ -70,9 +70,6 @@ HIDDEN_TOP = 0.01  # chance that a shorter measured height is a taller object wi
 # 5000, where 42 of 52 false detections lay on arms' bases)
 CONTINUED = 0.4
 NEAR_BASE = 0.25  # m: where a piece of an arm's base or first link can be taken for an object
-# an object region whose ring meets a person's pixels at its depth over this share is tested for
-# continuity too (a piece of a leg; LearnedBackend._beside)
-BESIDE_PERSON = 0.05
 # a table-top sized "person" standing on a table is relabelled as the object class the network
 # gives at least this mean probability over it (LearnedBackend._retest_person)
 RETEST_MIN = 0.1
@@ -295,7 +292,6 @@ class LearnedBackend(DepthBackend):
         self.dropped = 0
         self.own = 0
         arms = self.bodies.capsules(frame.joints)
-        people = keep & (full == CLASSES.index("person"))
         out: list[Detection] = []
         for k in np.unique(full[keep]).tolist():
             labels, _ = ndimage.label(keep & (full == k) & ~view.edges)
@@ -327,9 +323,10 @@ class LearnedBackend(DepthBackend):
                     self.own += 1  # a gripper or a link's end, placed by the arm's joints
                     continue
                 if (
-                    self._near_base(pts[mask]) or self._leg_like(mask, pts, depth, people)
-                ) and self._continued(mask, depth, z, full) >= CONTINUED:
-                    self.dropped += 1  # a piece of an arm's base, or of a person's leg
+                    self._near_base(pts[mask])
+                    and self._continued(mask, depth, z, full) >= CONTINUED
+                ):
+                    self.dropped += 1  # a piece of an arm's base (or its first link)
                     continue
                 label = cats[0] if len(cats) == 1 else self._name(cats, pts[mask], prob, mask)
                 score = float(fconf[mask].mean())
@@ -345,33 +342,6 @@ class LearnedBackend(DepthBackend):
         return any(
             math.hypot(rb.base[0] - c[0], rb.base[1] - c[1]) < NEAR_BASE for rb in self.scene.robots
         )
-
-    def _leg_like(self, mask: Mask, pts: F64, depth: npt.NDArray[np.float32], people: Mask) -> bool:
-        """Could region ``mask`` be a piece of a person's leg: beside a person's pixels at its
-        depth (:meth:`_beside`) and not touching the surface under it (a leg seen beyond a
-        table's edge is at the table's height in the image but does not stand on it; an object
-        in front of a person does)?"""
-        if not self._beside(mask, depth, people):
-            return False
-        zmin = float(np.percentile(pts[mask][:, 2], 1))
-        below = [p for p in self.planes if p <= zmin + 0.01]
-        return not (below and self._on_surface(mask, pts, max(below)))
-
-    def _beside(self, mask: Mask, depth: npt.NDArray[np.float32], people: Mask) -> bool:
-        """Does the ring of pixels around ``mask`` (2 pixels wide) meet pixels the network
-        calls a person at the region's depth (within 3 % + 2 cm) over at least
-        :data:`BESIDE_PERSON` of it? A piece of a leg taken for a box is such a region."""
-        from scipy import ndimage
-
-        sl = _grown(box_of(mask), 3, depth.shape)
-        local = mask[sl]
-        ring = ndimage.binary_dilation(local, iterations=2) & ~local
-        if not ring.any():
-            return False
-        here = float(np.median(depth[sl][local]))
-        d = depth[sl][ring]
-        near = people[sl][ring] & (np.abs(d - here) < 0.03 * here + 0.02)
-        return float(near.mean()) >= BESIDE_PERSON
 
     def _continued(
         self, mask: Mask, depth: npt.NDArray[np.float32], z: F64, full: npt.NDArray[np.int64]

@@ -71,12 +71,14 @@ def route_around(table: Rect, start: Vec3, to: Vec3, clearance: float) -> list[V
     ``clearance`` from ``table``: straight when that is clear, else around the corners of the
     table grown by the clearance. The clearance shrinks to what the two ends allow (the most
     the table can grow without covering them: a person standing closer to the table than
-    ``clearance`` keeps that much); an end on or in the table gets the straight walk."""
+    ``clearance`` keeps that much); an end on or against the table (within 1 mm) gets the straight
+    walk, and a clearance of 0 walks along the table's edges."""
     if not math.isfinite(clearance) or clearance < 0:
         raise ValueError(f"clearance must be a finite number >= 0, got {clearance!r}")
-    room = min(clearance, table.margin(start), table.margin(to))
-    if room <= 1e-3:
+    ends = min(table.margin(start), table.margin(to))
+    if ends <= 1e-3:  # an end on or against the table: nothing to keep clear of
         return [to]
+    room = min(clearance, ends)  # a small clearance still walks round, keeping that much
     keep = table.grown(room * (1.0 - 1e-6))  # the walk may run along keep's edges
     if not keep.crosses(start, to):
         return [to]

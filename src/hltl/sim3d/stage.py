@@ -78,8 +78,14 @@ class Stage:
         return tuple(float(v) for v in self.data.qpos[list(rig.qpos_adr)])
 
     def joints(self) -> dict[str, tuple[float, ...]]:
-        """Every robot's joint positions (what a frame of this pose carries as ``joints``)."""
-        return {rid: self.robot_q(rid) for rid in self.sm.robots}
+        """The joint positions of every arm drawn as its motion model (what a frame of this pose
+        carries as ``joints``). A primitive arm is left out: its joints (e.g. an xArm6 drawn
+        with four) are not its motion model's, so they would place nothing."""
+        return {
+            rid: self.robot_q(rid)
+            for rid, rig in self.sm.robots.items()
+            if rig.model != "primitive"
+        }
 
     def table_rect(self) -> Rect:
         """The work table's top on the floor plan (its box geom in the compiled model)."""
