@@ -69,6 +69,20 @@ def _sentences(items: list[Item]) -> list[tuple[int, int]]:
     return spans
 
 
+def _each_sentence(
+    items: list[Item], rewrite: Callable[[list[Item]], list[Item] | None]
+) -> list[Item]:
+    """Each sentence rewritten by ``rewrite`` (kept as it is where that returns None), the
+    punctuation between sentences kept."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        out.extend(rewrite(sent) or sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
 def _questions(items: list[Item]) -> list[Item]:
     """A sentence opening with 'where', 'is', 'does', 'has' … asks; it does not request."""
     for start, end in _sentences(items):
@@ -2724,13 +2738,7 @@ def _ordinals(items: list[Item]) -> list[Item]:
     """'Give Carol the apple second and Alice the cup first': parts of a sentence that each end
     with an ordinal are steps in that order. A later part said without its verb (or person)
     takes it from the first part ('the chips first and the bottle second')."""
-    out: list[Item] = []
-    for start, end in _sentences(items):
-        sent = items[start:end]
-        out.extend(_ranked(sent) or sent)
-        if end < len(items):
-            out.append(items[end])
-    return out
+    return _each_sentence(items, _ranked)
 
 
 def _ranked(sent: list[Item]) -> list[Item] | None:
@@ -3849,13 +3857,7 @@ def _there_after(items: list[Item], k: int) -> tuple[list[Item], int] | None:
 def _in_between(items: list[Item]) -> list[Item]:
     """'First X, last Y, and in between Z': three parts of a sentence, opened by 'first',
     'last' and 'in between' (in any order), are the steps X, Z, Y."""
-    out: list[Item] = []
-    for start, end in _sentences(items):
-        sent = items[start:end]
-        out.extend(_between(sent) or sent)
-        if end < len(items):
-            out.append(items[end])
-    return out
+    return _each_sentence(items, _between)
 
 
 def _between(sent: list[Item]) -> list[Item] | None:
