@@ -26,14 +26,6 @@ OWN_MARGIN = 0.03
 OWN_SHARE = 0.5
 
 
-def _segment_distance(p: F64, a: F64, b: F64) -> F64:
-    """Distance of each point of ``p`` (n, 3) to the segment ``a``–``b``."""
-    ab = b - a
-    den = float(ab @ ab)
-    t = np.zeros(len(p)) if den <= 0 else np.clip((p - a) @ ab / den, 0.0, 1.0)
-    return np.asarray(np.linalg.norm(p - (a + t[:, None] * ab), axis=1), dtype=float)
-
-
 class OwnBodies:
     """The scene's arms with a motion model (UR5, Panda, Elfin-3); arms drawn without one (the
     simulator's primitive arm) have no link geometry here and are never masked.
@@ -91,7 +83,11 @@ class OwnBodies:
         """The share of ``points`` (n, 3) inside any of ``capsules`` (0 when there are none)."""
         if len(points) == 0 or not capsules:
             return 0.0
-        inside = np.zeros(len(points), dtype=bool)
-        for a, b, r in capsules:
-            inside |= _segment_distance(points, a, b) <= r
+        from hltl.motion.collision import segment_distances  # why: motion loads only to mask arms
+
+        a = np.array([c[0] for c in capsules], dtype=float)
+        b = np.array([c[1] for c in capsules], dtype=float)
+        r = np.array([c[2] for c in capsules], dtype=float)
+        # each point a zero-length segment: its distance to every capsule's axis at once
+        inside = (segment_distances(points, points, a, b) <= r[None, :]).any(axis=1)
         return float(inside.mean())
