@@ -26,7 +26,7 @@ HLTL = (sys.executable, "-m", "hltl.cli.main")
 
 
 def _assert_same(
-    loopback: Loopback, scene: Scene, ahead: int = 64, stream: bool = True, **episode: Any
+    loopback: Loopback, scene: Scene, ahead: int = 64, stream: bool | None = None, **episode: Any
 ) -> BusRun:
     local = run_episode(scene, **episode)
     remote = loopback.run(scene, ahead=ahead, stream=stream, **episode)
@@ -104,9 +104,11 @@ def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
 @pytest.mark.parametrize("config", ["2-2", "2-4-line", "4-4-square"])
 def test_catalogue_cells_with_dynamic_events(loopback: Loopback, config: str) -> None:
     trial = make_trial(config, 0)
-    _assert_same(
+    run = _assert_same(
         loopback, trial.scene, instruction=trial.instruction, events=trial.events, seed=trial.seed
     )
+    # left to the node, the discrete simulator's stretches (cheap ticks) go in one answer
+    assert run.node.stats.ahead > 0 and run.cell.stats.streamed == 0
 
 
 @pytest.mark.parametrize("events", ["res.yaml", "fail.yaml"])
@@ -283,6 +285,8 @@ def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
     # it was run ahead (restored and replayed where a command cut a stretch), not tick by tick
     stats = remote.node.stats
     assert stats.ahead > 0 and remote.cell.stats.queries < remote.cell.stats.ticks / 2
+    # left to the node, the 3D simulator's stretches (costly ticks) are streamed
+    assert remote.cell.stats.streamed > 0
 
 
 def test_mujoco_node_looks_ahead_through_a_dynamic_trial(loopback: Loopback) -> None:

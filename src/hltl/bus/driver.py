@@ -171,7 +171,8 @@ class BusCell:
         ahead: most ticks the node may simulate ahead per answer (0: one query per tick).
         stream: ask the node to answer with the first tick ahead and stream the rest of the
             stretch as further replies, simulating while the executor works on what it has
-            (else the answer carries the whole stretch).
+            (``False``: the answer carries the whole stretch; ``None``, the default: the node
+            chooses by what its ticks cost, see :func:`hltl.bus.node.streams`).
         perceived: a perception node's observations to fuse into what the executor sees.
 
     Raises:
@@ -197,7 +198,7 @@ class BusCell:
         max_time: float | None = None,
         ahead: int = 64,
         perceived: PerceptionClient | None = None,
-        stream: bool = True,
+        stream: bool | None = None,
     ) -> None:
         self.session = session
         self.perceived = perceived
@@ -835,7 +836,7 @@ def bus_cell(
     ahead: int = 64,
     perceived: PerceptionClient | None = None,
     make_cell: Callable[..., BusCell] | None = None,
-    stream: bool = True,
+    stream: bool | None = None,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.

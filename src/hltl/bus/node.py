@@ -158,7 +158,9 @@ class _Ahead:
     count: int
     tick: float
     max_time: float
-    stream: bool = False  # answer with the first tick, stream the rest as further replies
+    # answer with the first tick, stream the rest as further replies (None: as the cell's
+    # ticks cost, see streams)
+    stream: bool | None = False
 
     @classmethod
     def parse(cls, d: Any) -> _Ahead | None:
@@ -172,7 +174,8 @@ class _Ahead:
             raise BusError(f"malformed look-ahead request: {exc}") from None
         if count <= 0 or not (math.isfinite(tick) and tick > 0):
             return None
-        return cls(count, tick, max_time, d.get("stream") is True)
+        stream = d.get("stream")
+        return cls(count, tick, max_time, stream if isinstance(stream, bool) else None)
 
 
 # a tick simulated ahead: its time, the observation, the actions' reports, and the observation
@@ -632,6 +635,8 @@ class CellNode:
         puts the cell back to now (else it is saved before the first tick)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None
+        if ahead.stream is None:  # the executor leaves it to the node
+            ahead = replace(ahead, stream=streams(ep.cell))
         batch = _Batch(n, base, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
         s = _Stretch(
             batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
@@ -1118,6 +1123,17 @@ def _again(
                 raise BusError(f"a start made again gave another handle than {out!r:.80}")
 
     return again
+
+
+def streams(cell: Cell) -> bool:
+    """Whether a node streams ``cell``'s stretches (when the executor leaves it to the node):
+    only a cell whose ticks cost more than the executor's work on them, the 3D simulator
+    (milliseconds a tick: the node is the critical path, and the executor works on the first
+    ticks while the node simulates the rest). The discrete simulator's ticks cost a tenth of a
+    millisecond: each further reply would cost both sides more than the ticks it carries (a
+    message, wake-ups, the node taking a core from the executor while it simulates), so its
+    stretch goes whole in one answer (docs/bus.md, "Where the time goes")."""
+    return type(cell) is MujocoSimulator
 
 
 def _kept(cell: Cell) -> frozenset[str] | None:
