@@ -190,8 +190,8 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
     assert run.episode.success and seen and set(seen) == {before + 1}
     assert open_executors() == before  # closed
     other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
-    with CellNode(loopback._node_session, sc.scene), pytest.raises(BusError, match="serves"):
-        BusCell(
+    with CellNode(loopback._node_session, sc.scene):
+        cell = BusCell(
             loopback._exec_session,
             other,
             EventSchedule(),
@@ -200,6 +200,9 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
             EventLog(),
             timing=BusTiming(timeout=0.5, connect=1.0),
         )
+        assert open_executors() == before + 1  # its reset asked, the answer not yet taken in
+        with pytest.raises(BusError, match="serves"):  # the refusal, when the cell is first used
+            cell.observe(0.0)
     assert open_executors() == before  # refused: closed too
 
 
@@ -436,3 +439,41 @@ def test_one_sessions_cells_share_its_subscriptions_and_hear_only_their_own(
     finally:
         for n in nodes:
             n.close()
+
+
+def test_the_reset_is_answered_while_the_executor_goes_on(loopback: Loopback) -> None:
+    """``BusCell()`` sends the reset and returns; the answer is taken in when the cell is first
+    used (the episode grounds its instruction meanwhile). Here the node cannot answer until
+    the test, after ``BusCell()`` returned, lets it build the cell."""
+    import threading
+
+    from hltl.bus.driver import BusCell
+    from hltl.execution.log import EventLog
+    from hltl.sim.events import EventSchedule
+    from hltl.sim.simulator import PerceptionModel, Simulator
+
+    sc = scenarios.get("fig1")
+    gate = threading.Event()
+    released: list[bool] = []
+
+    def held(*args: Any, **kwargs: Any) -> Simulator:
+        released.append(gate.wait(10.0))
+        return Simulator(*args, **kwargs)
+
+    with loopback.node(sc.scene, factory=held):
+        cell = BusCell(
+            loopback._exec_session,
+            sc.scene,
+            EventSchedule(),
+            0,
+            PerceptionModel(),
+            EventLog(),
+            timing=BusTiming(timeout=20.0),
+        )
+        gate.set()
+        try:
+            assert cell.observe(0.0).t == 0.0
+            assert released == [True]  # the node answered only after BusCell() returned
+            cell.end()
+        finally:
+            cell.close()

@@ -52,6 +52,10 @@ MAX_CHUNK = 8
 CHECKPOINT = 8
 # most answered steps whose ticks wait for the node to be idle before going to observers
 LATER = 8
+# after an answer, the node waits this long (wall seconds, looking for the next query every
+# PAUSE_SLICE) before its idle work: the cores go to the answer's way back and to the executor
+PAUSE = 0.002
+PAUSE_SLICE = 0.0001
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -398,8 +402,26 @@ class CellNode:
             try:
                 stretch = self._on_step(query)
                 query = None if stretch is None else self._stream(query, *stretch)
+                if query is None:
+                    query = self._pause()
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
+
+    def _pause(self) -> Any:
+        """After an answer (or the end of a streamed stretch), keep off the cores for up to
+        ``PAUSE`` before the idle work (publishing to observers, the save for the next
+        commands): the answer's way back (the node's Zenoh thread, then the executor's) and the
+        executor working on it need them, and on two cores the node's idle work made the answer
+        wait (docs/bus.md, "Where the time goes"). The next query, should it come meanwhile, is
+        returned at once: it is served without the idle work (the save is then made after its
+        commands, as for a cell saved no other way)."""
+        deadline = time.perf_counter() + PAUSE
+        while time.perf_counter() < deadline:
+            time.sleep(PAUSE_SLICE)
+            query = self._steps.try_recv()
+            if query is not None:
+                return query
+        return None
 
     def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> Any:
         """Simulate the rest of a stretch and send it as further replies to ``query`` (chunks
