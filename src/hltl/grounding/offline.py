@@ -17,6 +17,7 @@ from hltl.grounding.lexicon import (
     lex,
     person_name,
 )
+from hltl.grounding.normalise import canonical
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -56,13 +57,35 @@ def spec_of(node: Node) -> HSpec:
     return spec_from_dict({"root": "p0", "formulas": formulas}, source="<grounding>")
 
 
-def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -> Node:
+def parse_instruction(
+    text: str, scene: Scene, lexicon: Lexicon | None = None, *, normalise: bool = True
+) -> Node:
     """Parse ``text`` into a task tree over ``scene``'s ids.
+
+    What the grammar refuses is rewritten by the normaliser (normalise.py: wrappers, asides,
+    remarks, notes, order said apart) and read again; if that is refused too, the first refusal
+    stands (``normalise=False`` reads the text as it is only).
 
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
     """
     lexicon = lexicon or Lexicon.of(scene)
+    try:
+        return _read(text, scene, lexicon)
+    except GroundingError as refused:
+        if not normalise:
+            raise
+        plain = canonical(text, lexicon)
+        if plain == " ".join(text.split()):
+            raise
+        try:
+            return _read(plain, scene, lexicon)
+        except GroundingError:
+            raise refused from None
+
+
+def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
+    """The grammar's reading of ``text`` as it is said."""
     items = lex(text, lexicon)
     # "again" said to repeat a task: read exactly (twice) or refused, never once
     again = next((it for it in items if it.lemma == "filler" and it.text.lower() == "again"), None)
