@@ -41,9 +41,10 @@ import re
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import Item, Lexicon, lex
+from hltl.grounding.lexicon import VERBS, WORDS, Item, Lexicon, common_words, lex
 
 _F = re.IGNORECASE
+_TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
 
 
 def canonical(text: str, lexicon: Lexicon) -> str:
@@ -67,7 +68,8 @@ def _names(text: str, lexicon: Lexicon) -> list[Item]:
         if it.kind == "ent":
             out.append(it)
         elif it.kind == "unknown" and " " in it.text:
-            out += [x for w in it.text.split() for x in _names(w, lexicon)]
+            head, rest = it.text.split(" ", 1)  # "important Mrs Khan", "plates out"
+            out += [*_names(head, lexicon), *_names(rest, lexicon)]
     return out
 
 
@@ -212,10 +214,19 @@ def _people(text: str, lexicon: Lexicon) -> str:
     for role, names in roles.items():
         if len(names) < 2:
             continue
-        pattern = rf"\beach (?:of the )?{re.escape(role)}s?\b"
-        if re.search(pattern, text, _F) and len(re.split(r"[.;!?]", text.strip(" .!?"))) == 1:
-            joined = " and ".join(names)
-            text = _sub(pattern, joined, text).rstrip(" .!?") + " each"
+        # only as the one request of the text: "(please) give each student <objects>"
+        m = re.match(
+            rf"^((?:please |could you |can you )?(?:give|hand|bring|pass|get)) each (?:of the )?"
+            rf"{re.escape(role)}s? ((?:a|an|one of the|one|the) [\w ]+?)(?: please)?[.!?]?$",
+            text,
+            _F,
+        )
+        if (
+            m is not None
+            and not re.search(_TASK_WORDS + r"|\band\b|,", m.group(2), _F)
+            and not _ids(m.group(2), lexicon, "human")
+        ):
+            text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
     text = _gendered_header(text, lexicon)
     # "Person B wants the chips, and after that Person A for the bottle": the want again
     if re.search(r"\b(?:wants?|needs?|would like|'d like)\b", text, _F):
@@ -369,9 +380,7 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         try:
             parse_instruction(clause, lexicon.scene, lexicon, normalise=False)
         except GroundingError as e:
-            verb = re.search(
-                r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b", clause, _F
-            )
+            verb = re.search(_TASK_WORDS, clause, _F)
             return ("is not resolved" in str(e) and verb is not None) or _opens_request(clause)
         return True
 
@@ -379,6 +388,10 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     said = [c for c, r in zip(clauses, remark, strict=True) if r]
     if not said or len(said) == len(clauses) or asked & set(said):
         return text  # a question ("u there? give …") is not a remark
+    if any(not _plain_words(c, lexicon) for c in said):
+        return text  # a word neither common nor the scene's may be a name it does not know
+    if any(re.search(_TASK_WORDS, c, _F) and not _ids(c, lexicon, "object") for c in said):
+        return text  # "Bob gets what's left" asks without naming: not a remark
     people = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "human"]
     things = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "object"]
     person = {r.id for it in people for r in it.refs}
@@ -426,6 +439,28 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
     else:
         rest = words[m.end() :]
     return bool(re.match(r"^(?:'s|'re|'ll|'d)?\s*\w+", rest))
+
+
+def _plain_words(clause: str, lexicon: Lexicon) -> bool:
+    """Whether every word of ``clause`` is a common English word, a word the grammar knows or a
+    word of a name in the scene."""
+    known = _known_words(lexicon)
+    words = re.findall(r"[a-z]+", clause.lower().replace("'s", " "))
+    return all(w in known for w in words)
+
+
+def _known_words(lexicon: Lexicon) -> frozenset[str]:
+    scene = lexicon.scene
+    names = [
+        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *(n for s in scene.surfaces for n in (s.id, *s.aliases)),
+    ]
+    own = {w for n in names for w in re.findall(r"[a-z]+", n.lower())}
+    return _COMMON | own
+
+
+_COMMON = common_words() | frozenset(WORDS) | frozenset(VERBS)
 
 
 def _opens_request(clause: str) -> bool:

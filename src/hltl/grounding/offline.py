@@ -310,10 +310,27 @@ class _Parser:
                 f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
             )
         result: _Raw | None = None
+        final = False  # the first sentence opens with 'finally' / 'lastly'
         for sent in sentences:
             body, conn = _leading_connector(sent)
             if not body:
                 raise GroundingError(f"no task in {_text(sent)!r}")
+            if conn == "?":
+                raise GroundingError(
+                    f"{_text(sent)!r} says 'first' and another order word: say the order once"
+                )
+            opener = next((it.text.lower() for it in sent if not _is(it, ",", "filler")), "")
+            if result is not None and final and conn in ("then", "and"):
+                raise GroundingError(
+                    f"{_text(sent)!r} comes after a step said to be the last: say the order once"
+                )
+            final = final or (result is None and opener in ("finally", "lastly"))
+            if conn == "then" and any(_is(it, "first") for it in body):
+                # "Finally X and first Y": a 'first' after an opening 'finally' would be lost
+                raise GroundingError(
+                    f"cannot tell what 'first' in {_text(body)!r} puts first: say it at the start "
+                    "of its sentence, or use 'before'"
+                )
             node = self.sentence(body)
             if result is None:
                 result = node
@@ -1432,9 +1449,11 @@ def _leading_connector(items: list[Item]) -> tuple[list[Item], str]:
     """Strip 'Then', 'Also', 'And' … from the start of a sentence; return how it attaches."""
     conn = "and"
     k = 0
-    while k < len(items) and _is(items[k], "then", "prior", "also", "and", ",", "filler"):
+    while k < len(items) and _is(items[k], "then", "prior", "also", "and", ",", "filler", "first"):
         if items[k].lemma in ("then", "prior"):
             conn = items[k].lemma
+        elif items[k].lemma == "first":  # "X. First, (though,) Y.": Y comes before X
+            conn = "prior" if conn == "and" else "?"
         k += 1
     return items[k:], conn
 
