@@ -1,39 +1,40 @@
-"""A normaliser ahead of the offline grammar: an utterance the grammar refuses is rewritten into
-plain imperative clauses, and read again.
+"""Ahead of the offline grammar: what it refuses, rewritten as plain requests and read again."""
 
-The grammar (offline.py, phrasing.py) reads requests said the ways it was built for. People wrap
-requests in formal or indirect frames, give reasons and remarks around them, add relative clauses
-and appositions about the people and objects, write notes, and order steps with words said far
-from the steps. Each of these is a *general* rewrite here, on the text, and each either keeps the
-meaning exactly or leaves the text alone (the grammar's refusal then stands):
-
-- wrappers: "is there any chance …", "would it be possible for P to …", "I would be grateful if
-  …", "please ensure that …", "kindly arrange for X to be placed on S", "P would be grateful for
-  X", "P asked whether she could have X", "could someone …" are taken off, leaving the request;
-- asides: ", who …,", ", which …,", an apposition after a person (", the gentleman at the end,")
-  and a restrictive "who …" after a person the scene names once are dropped when they name no
-  object, person or surface of the scene (one that does might select or ask: left alone);
-  "our manager, Priya," (two names of one person) keeps one;
-- remarks and reasons: a clause the grammar cannot read ("Tom is about to leave", "it's urgent",
-  "Mr Novak's plate is the blue one") around a request is dropped, its people and objects standing
-  in for the request's pronouns ("… so hand him the scanner" → "hand Tom the scanner"); every
-  person and object the remark names must then be in the request, else nothing is rewritten;
-- order said apart: "Last, X. Before that, Y." / "Last, X. First, though, Y." → "Y. Finally, X.";
-  "after both are done" → "then";
-- notes: "Plates: white one to the counter, blue one to Lena" (a header naming the kind),
-  "Mug, red one, to Carol", "Carol: nothing" / "large stays" (no task), "X; Bob, for Y" (a
-  clause said again without its verb);
-- people: a title said another way ("Miss Ortiz" for "Mrs Ortiz"), "each <role two people
-  share>" (each of them), a locator before a person ("Bed 2, Mr Lee: …"), a pronoun repeating
-  the subject ("Mr Novak he want …"), "you bring for P the X";
-- words: "end up with" (go to), "is waiting for" (wants), "sharpish" (a filler), a description
-  "that's sitting on S" (on S), "whichever box is on S" (the box on S), "whatever P doesn't"
-  (the rest), "both items" in a scene of two objects.
-
-Each rewrite's result is read by the same grammar, so nothing here can ground what the grammar
-would not read in its plain form; a rewrite that cannot be made exactly returns the text as it
-was.
-"""
+# A normaliser ahead of the offline grammar: an utterance the grammar refuses is rewritten into
+# plain imperative clauses, and read again.
+#
+# The grammar (offline.py, phrasing.py) reads requests said the ways it was built for. People wrap
+# requests in formal or indirect frames, give reasons and remarks around them, add relative clauses
+# and appositions about the people and objects, write notes, and order steps with words said far
+# from the steps. Each of these is a *general* rewrite here, on the text, and each either keeps the
+# meaning exactly or leaves the text alone (the grammar's refusal then stands):
+#
+# - wrappers: "is there any chance …", "would it be possible for P to …", "I would be grateful if
+#   …", "please ensure that …", "kindly arrange for X to be placed on S", "P would be grateful for
+#   X", "P asked whether she could have X", "could someone …" are taken off, leaving the request;
+# - asides: ", who …,", ", which …,", an apposition after a person (", the gentleman at the end,")
+#   and a restrictive "who …" after a person the scene names once are dropped when they name no
+#   object, person or surface of the scene (one that does might select or ask: left alone);
+#   "our manager, Priya," (two names of one person) keeps one;
+# - remarks and reasons: a clause the grammar cannot read ("Tom is about to leave", "it's urgent",
+#   "Mr Novak's plate is the blue one") around a request is dropped, its people and objects standing
+#   in for the request's pronouns ("… so hand him the scanner" → "hand Tom the scanner"); every
+#   person and object the remark names must then be in the request, else nothing is rewritten;
+# - order said apart: "Last, X. Before that, Y." / "Last, X. First, though, Y." → "Y. Finally, X.";
+#   "after both are done" → "then";
+# - notes: "Plates: white one to the counter, blue one to Lena" (a header naming the kind),
+#   "Mug, red one, to Carol", "Carol: nothing" / "large stays" (no task), "X; Bob, for Y" (a
+#   clause said again without its verb);
+# - people: a title said another way ("Miss Ortiz" for "Mrs Ortiz"), "each <role two people
+#   share>" (each of them), a locator before a person ("Bed 2, Mr Lee: …"), a pronoun repeating
+#   the subject ("Mr Novak he want …"), "you bring for P the X";
+# - words: "end up with" (go to), "is waiting for" (wants), "sharpish" (a filler), a description
+#   "that's sitting on S" (on S), "whichever box is on S" (the box on S), "whatever P doesn't"
+#   (the rest), "both items" in a scene of two objects.
+#
+# Each rewrite's result is read by the same grammar, so nothing here can ground what the grammar
+# would not read in its plain form; a rewrite that cannot be made exactly returns the text as it
+# was.
 
 from __future__ import annotations
 
@@ -366,6 +367,7 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     """Clauses the grammar cannot read around a request are remarks: dropped, their people and
     objects standing in for the request's pronouns; every one of them must then be in the
     request, else the text is left as it is."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
     from hltl.grounding.offline import parse_instruction
 
     pieces = _CLAUSE.split(text)
