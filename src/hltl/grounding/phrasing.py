@@ -3959,7 +3959,8 @@ def _wanted_list(items: list[Item], k: int, *also: str) -> tuple[int, int] | Non
     """At a person opening a clause with a want ('Ruth (would) want(s) the X and the Y …'): the
     index of the want and the end of the list of objects after it (words of ``also`` may join
     it too); None elsewhere."""
-    if not (_humans(items[k]) and (_opening(items, k) or _note_start(items, k))):
+    at = k - 1 if k > 0 and _is(items[k - 1], "det") else k  # "the supervisor wants …"
+    if not (_humans(items[k]) and (_opening(items, at) or _note_start(items, at))):
         return None
     n = k + 1
     while n < len(items) and _is(items[n], "aux", "filler"):
@@ -4043,7 +4044,10 @@ def _wanted_done(items: list[Item]) -> list[Item]:
                     or _is(items[gap + 1], "to", "on", "for", *_SEPARATORS, "filler")
                 )
             ):
-                m = min(gap + 2, len(items))
+                at = gap + 1  # "brought over to Mia"
+                while at < len(items) and _is(items[at], "filler"):
+                    at += 1
+                m = min(at + 1, len(items))
                 while m < len(items) and _is(items[m], "det"):
                     m += 1
                 target = m < len(items) and (
@@ -4054,7 +4058,7 @@ def _wanted_done(items: list[Item]) -> list[Item]:
                 if (
                     any(_is(y, ",") for y in items[j:gap])  # "… the apple, put on …"
                     or any(_is(y, "then") for y in things)  # "the cup, then the apple put …"
-                    or not (target and ends and _is(items[gap + 1], "to", "on", "for"))
+                    or not (target and ends and _is(items[at], "to", "on", "for"))
                     # "the cup, and the apple put …": the comma may end the want
                     or (count == 2 and any(_is(y, ",") for y in things))
                 ):
@@ -4064,7 +4068,7 @@ def _wanted_done(items: list[Item]) -> list[Item]:
                         f"{words!r}: say it per object, e.g. 'put the … and the … on …'"
                     )
                 verb = Item("word", items[gap].lemma, items[gap].text)
-                out += [verb, *things, *items[gap + 1 : m + 1]]
+                out += [verb, *things, *items[at : m + 1]]
                 k = m + 1
                 continue
         out.append(x)
