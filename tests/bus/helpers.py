@@ -55,7 +55,7 @@ class Loopback:
         cell: str = "default",
         factory: Any = None,
         ahead: int = 64,
-        stream: bool = True,
+        stream: bool | None = None,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,

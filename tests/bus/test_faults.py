@@ -29,13 +29,14 @@ HLTL = (sys.executable, "-m", "hltl.cli.main")
 FAST = BusTiming(timeout=0.1, retries=6)
 
 # (seeds whose first draws hit: the first message the node publishes is lost under "loss" and
-# "everything", so that the checks below that a fault really happened do not depend on chance)
+# "everything", and its first reply under "lost_replies", so that the checks below that a fault
+# really happened do not depend on chance)
 FAULTS = {
     "loss": FaultModel(loss=0.25, seed=14),
     "duplicates": FaultModel(duplicate=0.5, seed=2),
     "out_of_order": FaultModel(reorder=0.5, seed=3),
     "delay": FaultModel(delay=0.003, seed=4),
-    "lost_replies": FaultModel(reply_loss=0.25, seed=5),
+    "lost_replies": FaultModel(reply_loss=0.25, seed=13),
     "slow_subscriber": FaultModel(slow=0.004, seed=6),
     "everything": FaultModel(
         loss=0.1, duplicate=0.2, reorder=0.2, delay=0.001, reply_loss=0.1, slow=0.001, seed=14
@@ -60,12 +61,24 @@ def _starts_once(run: BusRun) -> None:
     assert sorted(run.node.stats.starts) == sorted(dispatched)
 
 
-@pytest.mark.parametrize("fault", sorted(FAULTS))
-def test_faulty_links_change_nothing(loopback: Loopback, fault: str) -> None:
+# every fault with the stretches as the node chooses (in one answer for the discrete simulator),
+# and the faults that hit replies also with the stretches streamed (a lost chunk, a query that
+# ends before its last chunk)
+CASES = [
+    *((f, None) for f in sorted(FAULTS)),
+    ("lost_replies", True),
+    ("everything", True),
+]
+
+
+@pytest.mark.parametrize(("fault", "stream"), CASES)
+def test_faulty_links_change_nothing(loopback: Loopback, fault: str, stream: bool | None) -> None:
     sc = scenarios.get("fig1")
     local = run_episode(sc.scene, **_fig1())
     faults = FAULTS[fault]
-    run = loopback.run(sc.scene, node_faults=faults, exec_faults=faults, timing=FAST, **_fig1())
+    run = loopback.run(
+        sc.scene, node_faults=faults, exec_faults=faults, timing=FAST, stream=stream, **_fig1()
+    )
     assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
     _starts_once(run)
     stats, node = run.cell.stats, run.node.stats
@@ -77,6 +90,7 @@ def test_faulty_links_change_nothing(loopback: Loopback, fault: str) -> None:
         assert run.cell.link.held + run.node.link.held > 0
     if fault == "lost_replies":
         assert stats.retransmits > 0
+    assert (stats.streamed > 0) is bool(stream)
 
 
 def test_node_killed_mid_action_halts_and_gives_up(loopback: Loopback) -> None:

@@ -26,7 +26,7 @@ HLTL = (sys.executable, "-m", "hltl.cli.main")
 
 
 def _assert_same(
-    loopback: Loopback, scene: Scene, ahead: int = 64, stream: bool = True, **episode: Any
+    loopback: Loopback, scene: Scene, ahead: int = 64, stream: bool | None = None, **episode: Any
 ) -> BusRun:
     local = run_episode(scene, **episode)
     remote = loopback.run(scene, ahead=ahead, stream=stream, **episode)
@@ -104,9 +104,11 @@ def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
 @pytest.mark.parametrize("config", ["2-2", "2-4-line", "4-4-square"])
 def test_catalogue_cells_with_dynamic_events(loopback: Loopback, config: str) -> None:
     trial = make_trial(config, 0)
-    _assert_same(
+    run = _assert_same(
         loopback, trial.scene, instruction=trial.instruction, events=trial.events, seed=trial.seed
     )
+    # left to the node, the discrete simulator's stretches (cheap ticks) go in one answer
+    assert run.node.stats.ahead > 0 and run.cell.stats.streamed == 0
 
 
 @pytest.mark.parametrize("events", ["res.yaml", "fail.yaml"])
@@ -188,8 +190,8 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
     assert run.episode.success and seen and set(seen) == {before + 1}
     assert open_executors() == before  # closed
     other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
-    with CellNode(loopback._node_session, sc.scene), pytest.raises(BusError, match="serves"):
-        BusCell(
+    with CellNode(loopback._node_session, sc.scene):
+        cell = BusCell(
             loopback._exec_session,
             other,
             EventSchedule(),
@@ -198,6 +200,9 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
             EventLog(),
             timing=BusTiming(timeout=0.5, connect=1.0),
         )
+        assert open_executors() == before + 1  # its reset asked, the answer not yet taken in
+        with pytest.raises(BusError, match="serves"):  # the refusal, when the cell is first used
+            cell.observe(0.0)
     assert open_executors() == before  # refused: closed too
 
 
@@ -283,6 +288,8 @@ def test_mujoco_simulator_served_as_a_node(loopback: Loopback) -> None:
     # it was run ahead (restored and replayed where a command cut a stretch), not tick by tick
     stats = remote.node.stats
     assert stats.ahead > 0 and remote.cell.stats.queries < remote.cell.stats.ticks / 2
+    # left to the node, the 3D simulator's stretches (costly ticks) are streamed
+    assert remote.cell.stats.streamed > 0
 
 
 def test_mujoco_node_looks_ahead_through_a_dynamic_trial(loopback: Loopback) -> None:
@@ -432,3 +439,41 @@ def test_one_sessions_cells_share_its_subscriptions_and_hear_only_their_own(
     finally:
         for n in nodes:
             n.close()
+
+
+def test_the_reset_is_answered_while_the_executor_goes_on(loopback: Loopback) -> None:
+    """``BusCell()`` sends the reset and returns; the answer is taken in when the cell is first
+    used (the episode grounds its instruction meanwhile). Here the node cannot answer until
+    the test, after ``BusCell()`` returned, lets it build the cell."""
+    import threading
+
+    from hltl.bus.driver import BusCell
+    from hltl.execution.log import EventLog
+    from hltl.sim.events import EventSchedule
+    from hltl.sim.simulator import PerceptionModel, Simulator
+
+    sc = scenarios.get("fig1")
+    gate = threading.Event()
+    released: list[bool] = []
+
+    def held(*args: Any, **kwargs: Any) -> Simulator:
+        released.append(gate.wait(10.0))
+        return Simulator(*args, **kwargs)
+
+    with loopback.node(sc.scene, factory=held):
+        cell = BusCell(
+            loopback._exec_session,
+            sc.scene,
+            EventSchedule(),
+            0,
+            PerceptionModel(),
+            EventLog(),
+            timing=BusTiming(timeout=20.0),
+        )
+        gate.set()
+        try:
+            assert cell.observe(0.0).t == 0.0
+            assert released == [True]  # the node answered only after BusCell() returned
+            cell.end()
+        finally:
+            cell.close()

@@ -50,6 +50,15 @@ KNOWN_MISSES = frozenset(
         # causes9 (session 9): a remark that names objects ("keeps losing pens") may ask for
         # them, so it is not dropped
         "Priya keeps losing pens so give her the stapler",
+        # blind8 (tuned on in session 10): "the third" after "one box each" is the box the two
+        # do not get; read as a share of the three it is not said which goes where
+        "Tom and Mia, one box each; the third goes on the belt",
+        # causes10 (session 10): 'left' is not read as a verb ("the one on the left")
+        "The chef wants the knife and the tongs left on the counter",
+        # causes10: a remark or an aside naming an object ("upset about the cup", "who has the
+        # knife") may ask for it or pick someone out by it, so it is not dropped
+        "Bob is upset about the cup, so give him the apple",
+        "Lena, who has the knife, wants the lemon",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -60,8 +69,9 @@ KNOWN_MISSES = frozenset(
 # session 6; "blind5" measured once in session 6, its misses fixed in session 7; "blind6"
 # written in session 7 by another engineer, measured once, its misses fixed in session 8;
 # "blind7" written in session 8 by another engineer, measured once, its misses fixed in
-# session 9: all asserted now; "blind8" written in session 9 by another engineer, measured once)
-MEASURED_ONLY = frozenset({"blind8"})
+# session 9; "blind8" written in session 9 by another engineer, measured once, its misses met
+# in session 10: all asserted now)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -84,6 +94,9 @@ def test_corpus_sizes() -> None:
     assert len(CORPORA["blind7"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind7"].entries}) >= 12
     assert len(CORPORA["causes9"].entries) >= 100
+    assert len(CORPORA["blind8"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind8"].entries}) >= 12
+    assert len(CORPORA["causes10"].entries) >= 80
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -80,7 +80,7 @@ class BusBench:
     inproc_cpu_s: float  # process CPU time (the node shares the process: both sides counted)
     bus_cpu_s: float
     apart: ApartBench  # the same suite with the node in a process of its own
-    whole: ApartBench  # the same, each stretch in one answer rather than streamed
+    streamed: ApartBench  # the same, each stretch streamed (the node chooses one answer)
     ticks: int  # simulated ticks the executor consumed over the bus
     queries: int  # reset/step/peek queries (round trips) for those ticks
     undone: int  # ticks simulated ahead and undone because a command came first
@@ -244,7 +244,7 @@ def bench_bus(
         inproc = bus = inproc_cpu = bus_cpu = inproc_main = 0.0
         same = ticks = queries = undone = 0
         steps: list[float] = []
-        runs: dict[bool, list[_Apart]] = {True: [], False: []}  # streamed, whole
+        runs: dict[bool | None, list[_Apart]] = {None: [], True: []}  # as chosen, streamed
         with _node_process(episodes) as (apart_session, node_cpu):
             for i, tr in enumerate(trials):
                 kw: dict[str, Any] = {
@@ -257,8 +257,9 @@ def bench_bus(
                 inproc += time.perf_counter() - t0
                 inproc_cpu += time.process_time() - c0
                 inproc_main += time.thread_time() - m0
-                # the node in a process of its own: the stretch streamed, and in one answer
-                for stream in (True, False):
+                # the node in a process of its own: the stretch as the node chooses (in one
+                # answer for the discrete simulator), and streamed
+                for stream in (None, True):
                     runs[stream].append(_apart_episode(apart_session, i, tr, kw, a, stream))
                 # the node in this process
                 b, stats = _suite_episode(ns, cs, tr, kw)
@@ -273,7 +274,7 @@ def bench_bus(
                     f"{tr.config}#{tr.index}: same log {same}, node apart "
                     f"{sum(r.same for r in runs[True])}"
                 )
-        apart_bench, whole = (
+        apart_bench, streamed = (
             ApartBench(
                 sum(r.wall for r in runs[stream]),
                 sum(r.cpu for r in runs[stream]),
@@ -284,7 +285,7 @@ def bench_bus(
                 inproc_main,
                 sum(r.queries for r in runs[stream]),
             )
-            for stream in (True, False)
+            for stream in (None, True)
         )
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
@@ -322,7 +323,7 @@ def bench_bus(
         inproc_cpu,
         bus_cpu,
         apart_bench,
-        whole,
+        streamed,
         ticks,
         queries,
         undone,
@@ -448,7 +449,7 @@ class _Apart:
 
 
 def _apart_episode(
-    session: Any, i: int, tr: Trial, kw: dict[str, Any], local: Episode, stream: bool
+    session: Any, i: int, tr: Trial, kw: dict[str, Any], local: Episode, stream: bool | None
 ) -> _Apart:
     opened: list[BusCell] = []
     make = bus_cell(session, cell=f"suite{i}", opened=opened, stream=stream)
@@ -543,7 +544,7 @@ def _pct(x: float, base: float) -> float:
 def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
     over = _pct(b.bus_s, b.inproc_s)
     cpu_over = _pct(b.bus_cpu_s, b.inproc_cpu_s)
-    ap, wh = b.apart, b.whole
+    ap, st = b.apart, b.streamed
     apart_over = _pct(ap.bus_s, b.inproc_s)
     # the extra wall time that is neither the loop's extra CPU nor its waiting for the node
     rest = ap.bus_s - b.inproc_s - (ap.main_cpu_s - ap.inproc_main_cpu_s) - ap.waited_s
@@ -558,10 +559,10 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s | — |",
             f"| same suite over the bus, node in a process of its own (as deployed) | "
             f"{ap.bus_s:.2f} s ({apart_over:+.1f} %) | within 10 % |",
-            f"| the same, each stretch in one answer instead of streamed: wall; time the loop "
-            f"waited for the node; queries | {wh.bus_s:.2f} s ({_pct(wh.bus_s, b.inproc_s):+.1f} "
-            f"%); {wh.waited_s:.2f} s (streamed: {ap.waited_s:.2f} s); {wh.queries} (streamed: "
-            f"{ap.queries}) | — |",
+            f"| the same, each stretch streamed instead of in one answer: wall; time the loop "
+            f"waited for the node; queries | {st.bus_s:.2f} s ({_pct(st.bus_s, b.inproc_s):+.1f} "
+            f"%); {st.waited_s:.2f} s (one answer: {ap.waited_s:.2f} s); {st.queries} (one "
+            f"answer: {ap.queries}) | — |",
             f"| CPU time, executor's process / node's process (both runs of the suite) | "
             f"{ap.cpu_s:.2f} s ({_pct(ap.cpu_s, b.inproc_cpu_s):+.1f} %) / "
             f"{ap.node_cpu_s:.2f} s | — |",
@@ -574,8 +575,8 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"{b.inproc_cpu_s:.2f} s / {b.bus_cpu_s:.2f} s ({cpu_over:+.1f} %) | — |",
             f"| simulated ticks / queries over the bus / ticks undone | "
             f"{b.ticks} / {b.queries} / {b.undone} | — |",
-            f"| episodes whose log equals the in-process one, node apart (streamed / one answer) "
-            f"/ in the process | {ap.same_logs}/{b.episodes} ({wh.same_logs}/{b.episodes}) / "
+            f"| episodes whose log equals the in-process one, node apart (one answer / streamed) "
+            f"/ in the process | {ap.same_logs}/{b.episodes} ({st.same_logs}/{b.episodes}) / "
             f"{b.same_logs}/{b.episodes} | all |",
             f"| under faults (10 % loss, 20 % duplicates, 20 % reordered, 1 ms delay, 10 % lost "
             f"replies, slow subscriber): logs equal | {b.fault_same_logs}/{b.fault_episodes} | — |",
@@ -591,8 +592,9 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "The suite alternates, trial by trial, the in-process run, the run over the bus "
             "with the cell node in a process of its own (how the bus is deployed: `hltl node "
             "sim` in one terminal, `hltl run --bus` in another; one node per trial, started "
-            "once before the suite), the same with each stretch in one answer (as before "
-            "streaming), and the run with the node in the executor's process. The "
+            "once before the suite; the node chooses how to send a stretch: in one answer for "
+            "the discrete simulator), the same with each stretch streamed (the executor asks "
+            "for it), and the run with the node in the executor's process. The "
             "target is judged on the first: that is what a user sees. With two processes the "
             "node simulates on the other core, but the executor still waits for every answer, "
             "so the wall time counts the node's work before it answers; with one process the "
@@ -614,12 +616,13 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "The node simulates the ticks the executor will ask for next (until an action "
             "ends, an instruction arrives or a robot's availability changes, doubling the "
             "stretch while the executor uses all of it) and sends them, with the actions' "
-            "reports and each tick's world as it changed: the first in its answer, the rest "
-            "as further replies to the query while it simulates them (1, 2, 4, 8 ticks a "
-            "reply); the executor consumes them without a round trip, and a command in the "
-            "middle makes the node undo the rest (the simulator's state saved before the "
-            "stretch and every 8 ticks of it) and replay the ticks used since the last save, "
-            "so the log is unchanged. A step's starts and halts ride the query that follows "
+            "reports and each tick's world as it changed, in its answer (streamed: the first "
+            "in its answer, the rest as further replies to the query while it simulates them, "
+            "1, 2, 4, 8 ticks a reply); the executor consumes them without a round trip, and a "
+            "command in the middle makes the node undo the rest (the simulator's state saved "
+            "before the stretch, and every 8 ticks of a streamed one) and replay the ticks "
+            "used since the last save, so the log is unchanged. A step's starts and halts ride "
+            "the query that follows "
             f"them. Hence {b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % "
             "wall).",

@@ -171,7 +171,8 @@ class BusCell:
         ahead: most ticks the node may simulate ahead per answer (0: one query per tick).
         stream: ask the node to answer with the first tick ahead and stream the rest of the
             stretch as further replies, simulating while the executor works on what it has
-            (else the answer carries the whole stretch).
+            (``False``: the answer carries the whole stretch; ``None``, the default: the node
+            chooses by what its ticks cost, see :func:`hltl.bus.node.streams`).
         perceived: a perception node's observations to fuse into what the executor sees.
 
     Raises:
@@ -197,7 +198,7 @@ class BusCell:
         max_time: float | None = None,
         ahead: int = 64,
         perceived: PerceptionClient | None = None,
-        stream: bool = True,
+        stream: bool | None = None,
     ) -> None:
         self.session = session
         self.perceived = perceived
@@ -251,22 +252,49 @@ class BusCell:
             "perception": {"noise": perception.noise, "latency": perception.latency},
             **self._mode(),
         }
-        deadline = time.monotonic() + self.timing.connect
+        self._reset: dict[str, Any] | None = reset
+        self._deadline = time.monotonic() + self.timing.connect
+        # the reset goes out now; its answer is waited for when the cell is first used (the
+        # episode grounds its instruction meanwhile: see _ready)
+        self._resetting: tuple[Any, float] | None = None
         try:
-            d = self._ask(self.keys.sim_reset, reset, robots=scene.robot_ids)
-            while d is None and time.monotonic() < deadline:  # the node may still be starting
-                time.sleep(0.05)
-                d = self._ask(self.keys.sim_reset, reset, retries=0)
-        except BaseException:  # refused: nothing is left declared
+            self._resetting = self._query(self.keys.sim_reset, dumps(reset), commands=False)
+        except BaseException:  # the bus failed: nothing is left declared
             self.close()
             raise
-        if d is None:
+        if self._eager:
+            self._ready()
+
+    # a real-time cell's clock starts with its reset: it waits for the answer at once
+    _eager = False
+
+    def _ready(self) -> None:
+        """Take in the reset's answer (sent when the cell was built, retried on silence), the
+        first time the cell is used: what the executor does meanwhile (grounding its
+        instruction) overlaps the round trip.
+
+        Raises:
+            BusError: no node serves the cell, or it refuses the episode (another scene).
+        """
+        if self._reset is None:
+            return
+        reset, self._reset = self._reset, None
+        sent, self._resetting = self._resetting, None
+        try:
+            d = self._ask(self.keys.sim_reset, reset, robots=self.scene.robot_ids, sent=sent)
+            while d is None and time.monotonic() < self._deadline:  # the node may be starting
+                time.sleep(0.05)
+                d = self._ask(self.keys.sim_reset, reset, retries=0)
+            if d is None:
+                raise BusError(
+                    f"no simulator node answers on {self.keys.sim_reset}; start one with "
+                    f"'hltl node sim --scene SCENE --cell {self.keys.cell}'"
+                )
+            self._take(d)
+        except BaseException:  # refused, or nobody answers: nothing is left declared
+            self._dead = True
             self.close()
-            raise BusError(
-                f"no simulator node answers on {self.keys.sim_reset}; start one with "
-                f"'hltl node sim --scene SCENE --cell {cell}'"
-            )
-        self._take(d)
+            raise
 
     def _mode(self) -> dict[str, Any]:
         """How the node is to run the episode (the reset request's part that says so): here
@@ -278,6 +306,7 @@ class BusCell:
         return []
 
     def close(self) -> None:
+        self._resetting = None  # (an answer still to come is not waited for)
         self._listeners.remove(self)
         for e in self._entities:
             with contextlib.suppress(Exception):  # the session is already closed
@@ -290,6 +319,9 @@ class BusCell:
 
     def end(self) -> None:
         """Tell the node the episode is over (it may then serve the next one)."""
+        if self._reset is not None:  # never used: its reset is answered first
+            with contextlib.suppress(BusError):
+                self._ready()
         if not self._dead:
             self._ask(self.keys.sim_step, {"episode": self.episode, "end": True}, retries=0)
 
@@ -382,6 +414,28 @@ class BusCell:
             yield attempt
             attempt += 1
 
+    def _query(self, key: str, payload: bytes, commands: bool) -> tuple[Any, float] | None:
+        """Send one query (its replies, and when it went), or ``None`` when an injected fault
+        lost it (a query carrying commands is subject to the executor's message faults, like
+        one: then its silence is waited out here)."""
+        self.stats.queries += 1
+        if commands and self.link.lost():
+            time.sleep(self.timing.timeout)
+            return None
+        if self.link.duplicated():  # the node must answer a copy without acting twice
+            with contextlib.suppress(Exception):
+                list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
+        t0 = time.perf_counter()
+        try:
+            # unconsolidated: a reply is delivered as soon as it comes, not when the node's
+            # handler returns (what the node does after answering is off the critical path)
+            replies = self.session.get(
+                key, payload=payload, timeout=self.timing.timeout, consolidation=self._each
+            )
+        except Exception as exc:  # the session closed under us
+            raise BusError(f"the bus failed while asking {key}: {exc}") from None
+        return replies, t0
+
     def _ask(
         self,
         key: str,
@@ -389,11 +443,11 @@ class BusCell:
         retries: int | None = None,
         robots: Sequence[str] = (),
         keep: bool = False,
+        sent: tuple[Any, float] | None = None,
     ) -> dict[str, Any] | None:
         """The node's answer to a query, retried on silence; ``None`` when it never answers.
-        (A query carrying commands is subject to the executor's message faults, like one.)
         With ``keep``, an answer that says more ticks follow leaves the query's further replies
-        to :meth:`_pull`.
+        to :meth:`_pull`; ``sent`` is the first attempt, already sent (:meth:`_query`).
 
         Raises:
             BusError: the node answered with an error (it refuses the request).
@@ -404,23 +458,13 @@ class BusCell:
         for attempt in self._attempts(self.timing.retries if retries is None else retries, robots):
             if attempt:
                 self.stats.retransmits += 1
-            self.stats.queries += 1
-            if commands and self.link.lost():  # it never reaches the node: silence, waited out
-                time.sleep(self.timing.timeout)
+            early = attempt == 0 and sent is not None
+            got = sent if early else self._query(key, payload, commands)
+            if got is None:  # it never reached the node: silence, waited out
                 continue
-            if self.link.duplicated():  # the node must answer a copy without acting twice
-                with contextlib.suppress(Exception):
-                    list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
-            t0 = time.perf_counter()
-            try:
-                # unconsolidated: a reply is delivered as soon as it comes, not when the node's
-                # handler returns (what the node does after answering is off the critical path)
-                replies = self.session.get(
-                    key, payload=payload, timeout=self.timing.timeout, consolidation=self._each
-                )
-            except Exception as exc:  # the session closed under us
-                raise BusError(f"the bus failed while asking {key}: {exc}") from None
-            answered, w0 = False, t0
+            replies, t0 = got
+            # (waiting for an answer sent earlier starts now: the time between was not waited)
+            answered, w0 = False, time.perf_counter() if early else t0
             for reply in replies:
                 answered, now = True, time.perf_counter()
                 self.stats.waited += now - w0
@@ -543,6 +587,7 @@ class BusCell:
     # -- the clock (Cell) --------------------------------------------------------------------------
 
     def advance(self, t: float) -> None:
+        self._ready()
         self.now = t
         if self._dead:
             return
@@ -631,6 +676,7 @@ class BusCell:
             self._take(d)
 
     def observe(self, t: float | None = None) -> WorldState:
+        self._ready()
         if self._obs is None:
             raise BusError("no observation from the simulator node yet")
         if self._dead:
@@ -642,6 +688,7 @@ class BusCell:
         return self._obs
 
     def next_event_time(self) -> float:
+        self._ready()
         if self._dead:
             return math.inf
         if self._dirty:
@@ -655,18 +702,21 @@ class BusCell:
         return bool(self._instructions) or self._pending
 
     def take_instructions(self) -> list[str]:
+        self._ready()
         out, self._instructions = self._instructions, []
         return out
 
     # -- the robots (RobotDriver) ------------------------------------------------------------------
 
     def unavailable(self, t: float) -> frozenset[str]:
+        self._ready()
         self._confirm()
         self._log_down()
         with self._cond:
             return self._unavailable | frozenset(self._down)
 
     def start(self, action: Action, t: float, *, motion: MotionLike | None = None) -> Handle:
+        self._ready()
         hid = self._next_handle
         self._next_handle += 1
         handle = Handle(hid, action, t)
@@ -715,6 +765,7 @@ class BusCell:
         return handle
 
     def poll(self, handle: Handle, t: float) -> ActionStatus:
+        self._ready()
         hid = handle.id
         if any(c.handle == hid for c in self._queued):  # its command has not gone yet
             self._flush()
@@ -736,6 +787,7 @@ class BusCell:
         return ActionStatus(ActionState.RUNNING, 0.0, t) if st is None else st
 
     def halt(self, handle: Handle, t: float, reason: str) -> None:
+        self._ready()
         if self._status_terminal(handle.id):
             return
         self._dirty = True
@@ -835,7 +887,7 @@ def bus_cell(
     ahead: int = 64,
     perceived: PerceptionClient | None = None,
     make_cell: Callable[..., BusCell] | None = None,
-    stream: bool = True,
+    stream: bool | None = None,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.

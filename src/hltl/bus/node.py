@@ -52,6 +52,10 @@ MAX_CHUNK = 8
 CHECKPOINT = 8
 # most answered steps whose ticks wait for the node to be idle before going to observers
 LATER = 8
+# after an answer, the node waits this long (wall seconds, looking for the next query every
+# PAUSE_SLICE) before its idle work: the cores go to the answer's way back and to the executor
+PAUSE = 0.002
+PAUSE_SLICE = 0.0001
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -158,7 +162,9 @@ class _Ahead:
     count: int
     tick: float
     max_time: float
-    stream: bool = False  # answer with the first tick, stream the rest as further replies
+    # answer with the first tick, stream the rest as further replies (None: as the cell's
+    # ticks cost, see streams)
+    stream: bool | None = False
 
     @classmethod
     def parse(cls, d: Any) -> _Ahead | None:
@@ -172,7 +178,8 @@ class _Ahead:
             raise BusError(f"malformed look-ahead request: {exc}") from None
         if count <= 0 or not (math.isfinite(tick) and tick > 0):
             return None
-        return cls(count, tick, max_time, d.get("stream") is True)
+        stream = d.get("stream")
+        return cls(count, tick, max_time, stream if isinstance(stream, bool) else None)
 
 
 # a tick simulated ahead: its time, the observation, the actions' reports, and the observation
@@ -395,8 +402,26 @@ class CellNode:
             try:
                 stretch = self._on_step(query)
                 query = None if stretch is None else self._stream(query, *stretch)
+                if query is None:
+                    query = self._pause()
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
+
+    def _pause(self) -> Any:
+        """After an answer (or the end of a streamed stretch), keep off the cores for up to
+        ``PAUSE`` before the idle work (publishing to observers, the save for the next
+        commands): the answer's way back (the node's Zenoh thread, then the executor's) and the
+        executor working on it need them, and on two cores the node's idle work made the answer
+        wait (docs/bus.md, "Where the time goes"). The next query, should it come meanwhile, is
+        returned at once: it is served without the idle work (the save is then made after its
+        commands, as for a cell saved no other way)."""
+        deadline = time.perf_counter() + PAUSE
+        while time.perf_counter() < deadline:
+            time.sleep(PAUSE_SLICE)
+            query = self._steps.try_recv()
+            if query is not None:
+                return query
+        return None
 
     def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> Any:
         """Simulate the rest of a stretch and send it as further replies to ``query`` (chunks
@@ -632,6 +657,8 @@ class CellNode:
         puts the cell back to now (else it is saved before the first tick)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None
+        if ahead.stream is None:  # the executor leaves it to the node
+            ahead = replace(ahead, stream=streams(ep.cell))
         batch = _Batch(n, base, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
         s = _Stretch(
             batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
@@ -1118,6 +1145,17 @@ def _again(
                 raise BusError(f"a start made again gave another handle than {out!r:.80}")
 
     return again
+
+
+def streams(cell: Cell) -> bool:
+    """Whether a node streams ``cell``'s stretches (when the executor leaves it to the node):
+    only a cell whose ticks cost more than the executor's work on them, the 3D simulator
+    (milliseconds a tick: the node is the critical path, and the executor works on the first
+    ticks while the node simulates the rest). The discrete simulator's ticks cost a tenth of a
+    millisecond: each further reply would cost both sides more than the ticks it carries (a
+    message, wake-ups, the node taking a core from the executor while it simulates), so its
+    stretch goes whole in one answer (docs/bus.md, "Where the time goes")."""
+    return type(cell) is MujocoSimulator
 
 
 def _kept(cell: Cell) -> frozenset[str] | None:

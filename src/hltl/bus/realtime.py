@@ -37,6 +37,7 @@ class RealtimeBusCell(BusCell):
     """
 
     _defer = False  # no step queries: every command goes to the robots at once
+    _eager = True  # the node's clock starts with the reset: its answer is taken in at once
 
     def __init__(self, *args: Any, factor: float = 1.0, **kwargs: Any) -> None:
         self.factor = check_factor(factor)

@@ -17,6 +17,7 @@ from hltl.grounding.lexicon import (
     lex,
     person_name,
 )
+from hltl.grounding.normalise import canonical
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -56,13 +57,35 @@ def spec_of(node: Node) -> HSpec:
     return spec_from_dict({"root": "p0", "formulas": formulas}, source="<grounding>")
 
 
-def parse_instruction(text: str, scene: Scene, lexicon: Lexicon | None = None) -> Node:
+def parse_instruction(
+    text: str, scene: Scene, lexicon: Lexicon | None = None, *, normalise: bool = True
+) -> Node:
     """Parse ``text`` into a task tree over ``scene``'s ids.
+
+    What the grammar refuses is rewritten by the normaliser (normalise.py: wrappers, asides,
+    remarks, notes, order said apart) and read again; if that is refused too, the first refusal
+    stands (``normalise=False`` reads the text as it is only).
 
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
     """
     lexicon = lexicon or Lexicon.of(scene)
+    try:
+        return _read(text, scene, lexicon)
+    except GroundingError as refused:
+        if not normalise:
+            raise
+        plain = canonical(text, lexicon)
+        if plain == " ".join(text.split()):
+            raise
+        try:
+            return _read(plain, scene, lexicon)
+        except GroundingError:
+            raise refused from None
+
+
+def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
+    """The grammar's reading of ``text`` as it is said."""
     items = lex(text, lexicon)
     # "again" said to repeat a task: read exactly (twice) or refused, never once
     again = next((it for it in items if it.lemma == "filler" and it.text.lower() == "again"), None)
@@ -287,10 +310,27 @@ class _Parser:
                 f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
             )
         result: _Raw | None = None
+        final = False  # the first sentence opens with 'finally' / 'lastly'
         for sent in sentences:
             body, conn = _leading_connector(sent)
             if not body:
                 raise GroundingError(f"no task in {_text(sent)!r}")
+            if conn == "?":
+                raise GroundingError(
+                    f"{_text(sent)!r} says 'first' and another order word: say the order once"
+                )
+            opener = next((it.text.lower() for it in sent if not _is(it, ",", "filler")), "")
+            if result is not None and final and conn in ("then", "and"):
+                raise GroundingError(
+                    f"{_text(sent)!r} comes after a step said to be the last: say the order once"
+                )
+            final = final or (result is None and opener in ("finally", "lastly"))
+            if conn == "then" and any(_is(it, "first") for it in body):
+                # "Finally X and first Y": a 'first' after an opening 'finally' would be lost
+                raise GroundingError(
+                    f"cannot tell what 'first' in {_text(body)!r} puts first: say it at the start "
+                    "of its sentence, or use 'before'"
+                )
             node = self.sentence(body)
             if result is None:
                 result = node
@@ -1409,9 +1449,11 @@ def _leading_connector(items: list[Item]) -> tuple[list[Item], str]:
     """Strip 'Then', 'Also', 'And' … from the start of a sentence; return how it attaches."""
     conn = "and"
     k = 0
-    while k < len(items) and _is(items[k], "then", "prior", "also", "and", ",", "filler"):
+    while k < len(items) and _is(items[k], "then", "prior", "also", "and", ",", "filler", "first"):
         if items[k].lemma in ("then", "prior"):
             conn = items[k].lemma
+        elif items[k].lemma == "first":  # "X. First, (though,) Y.": Y comes before X
+            conn = "prior" if conn == "and" else "?"
         k += 1
     return items[k:], conn
 

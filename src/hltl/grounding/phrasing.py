@@ -3955,6 +3955,24 @@ def _so_after_remark(items: list[Item]) -> list[Item]:
     return out
 
 
+def _wanted_list(items: list[Item], k: int, *also: str) -> tuple[int, int] | None:
+    """At a person opening a clause with a want ('Ruth (would) want(s) the X and the Y …'): the
+    index of the want and the end of the list of objects after it (words of ``also`` may join
+    it too); None elsewhere."""
+    at = k - 1 if k > 0 and _is(items[k - 1], "det") else k  # "the supervisor wants …"
+    if not (_humans(items[k]) and (_opening(items, at) or _note_start(items, at))):
+        return None
+    n = k + 1
+    while n < len(items) and _is(items[n], "aux", "filler"):
+        n += 1
+    if n == len(items) or items[n].lemma not in _WANTS:
+        return None
+    j = n + 1
+    while j < len(items) and (_objects(items[j]) or _is(items[j], "det", "and", ",", "or", *also)):
+        j += 1
+    return n, j
+
+
 def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'Ruth wants the blue blanket on the bedside table': a person wanting objects on a
     surface wants them put there (the person gets nothing), as 'put the blue blanket on the
@@ -3964,31 +3982,95 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
     k = 0
     while k < len(items):
         x = items[k]
-        if _humans(x) and (_opening(items, k) or _note_start(items, k)):
-            n = k + 1
-            while n < len(items) and _is(items[n], "aux", "filler"):
-                n += 1
-            if n < len(items) and items[n].lemma in _WANTS:
-                j = n + 1
-                while j < len(items) and (
-                    _objects(items[j]) or _is(items[j], "det", "and", ",", "or")
-                ):
-                    j += 1
-                things = items[n + 1 : j]
-                m = j + 1
+        wanted = _wanted_list(items, k)
+        if wanted is not None:
+            n, j = wanted
+            things = items[n + 1 : j]
+            m = j + 1
+            while m < len(items) and _is(items[m], "det"):
+                m += 1
+            if (
+                any(_objects(y) for y in things)
+                and j + 1 < len(items)
+                and _is(items[j], "on")
+                and _starts_surface(items, j + 1)
+                and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
+                and not _lying_on(things, items[m], lexicon)
+            ):
+                out.append(Item("word", "verb:put", items[n].text))
+                k = n + 1
+                continue
+        out.append(x)
+        k += 1
+    return out
+
+
+# the forms of a moving or placing verb that can follow its object ("the cup put on the shelf")
+_PARTICIPLES = frozenset(
+    {"put", "placed", "set", "left", "moved", "given", "handed", "passed", "brought", "taken"}
+    | {"delivered", "carried", "sent", "fetched", "dropped"}
+)
+
+
+def _wanted_done(items: list[Item]) -> list[Item]:
+    """'Ruth wants the thermometer and the tablets put on the cart': a want whose objects (two
+    or more) a participle follows wants them all moved there, as 'put the thermometer and the
+    tablets on the cart' (the person who wants it gets nothing). The participle ends the list,
+    so it cannot be read as the last object's only; where the participle is not followed by
+    exactly one recipient or place and the end of the clause, it is refused, never half read."""
+    out: list[Item] = []
+    k = 0
+    while k < len(items):
+        x = items[k]
+        wanted = _wanted_list(items, k, "then")
+        if wanted is not None:
+            n, j = wanted
+            while j > n + 1 and not _objects(items[j - 1]):
+                j -= 1  # the list ends with its last object
+            things = items[n + 1 : j]
+            count = sum(1 for y in things if _objects(y))
+            gap = j  # "the cup and the apple, put …", "… both put …", "… all put …"
+            while gap < len(items) and _is(items[gap], ",", "both", "all"):
+                gap += 1
+            if (
+                count >= 2
+                and gap < len(items)
+                and _objects(items[j - 1])
+                and _is_verb_item(items[gap])
+                and items[gap].text.lower() in _PARTICIPLES
+                # "…, put (both) the apple on the table": a verb with its own object commands
+                and (
+                    gap + 1 == len(items)
+                    or _is(items[gap + 1], "to", "on", "for", *_SEPARATORS, "filler")
+                )
+            ):
+                at = gap + 1  # "brought over to Mia"
+                while at < len(items) and _is(items[at], "filler"):
+                    at += 1
+                m = min(at + 1, len(items))
                 while m < len(items) and _is(items[m], "det"):
                     m += 1
+                target = m < len(items) and (
+                    (items[m].kind == "ent" and not _objects(items[m]))
+                    or (items[m].kind == "word" and items[m].text.lower() in _PERSON_PRONOUNS)
+                )
+                ends = m + 1 >= len(items) or _is(items[m + 1], *_SEPARATORS, "filler")
                 if (
-                    any(_objects(y) for y in things)
-                    and j + 1 < len(items)
-                    and _is(items[j], "on")
-                    and _starts_surface(items, j + 1)
-                    and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
-                    and not _lying_on(things, items[m], lexicon)
+                    any(_is(y, ",") for y in items[j:gap])  # "… the apple, put on …"
+                    or any(_is(y, "then") for y in things)  # "the cup, then the apple put …"
+                    or not (target and ends and _is(items[at], "to", "on", "for"))
+                    # "the cup, and the apple put …": the comma may end the want
+                    or (count == 2 and any(_is(y, ",") for y in things))
                 ):
-                    out.append(Item("word", "verb:put", items[n].text))
-                    k = n + 1
-                    continue
+                    words = " ".join(y.text for y in items[k : min(m + 2, len(items))])
+                    raise GroundingError(
+                        f"cannot tell which objects {items[gap].text!r} applies to in "
+                        f"{words!r}: say it per object, e.g. 'put the … and the … on …'"
+                    )
+                verb = Item("word", items[gap].lemma, items[gap].text)
+                out += [verb, *things, *items[at : m + 1]]
+                k = m + 1
+                continue
         out.append(x)
         k += 1
     return out
@@ -4258,6 +4340,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_surface_notes),
     _plain(_in_between),
     _plain(_last_opening),
+    _plain(_wanted_done),
     _wanted_on,
     _purpose,
     _plain(_bare_notes),

@@ -115,6 +115,26 @@ def check_deliveries(node: Node, describe: Mapping[str, str] | None = None) -> N
 
     walk(node)
 
+    def ordered(n: Node) -> None:
+        """In a sequence, an object handed over in one step cannot be placed in a later one."""
+        if isinstance(n, Task):
+            return
+        if n.op == "seq":
+            for i, early in enumerate(n.children):
+                given = {t.obj: t for t in tasks(early) if t.kind == "deliver"}
+                for late in n.children[i + 1 :]:
+                    for t in tasks(late):
+                        if t.kind == "place" and t.obj in given:
+                            who = given[t.obj].target
+                            raise GroundingError(
+                                f"the {t.obj} would be handed to {name.get(who, who)} and then "
+                                f"placed on {t.target}; a handed-over object is gone: say one"
+                            )
+        for c in n.children:
+            ordered(c)
+
+    ordered(node)
+
 
 class Names:
     """Fresh formula names: leaves p100, p200, …; groups p1, p2, …; never one in ``taken``."""

@@ -262,7 +262,9 @@ def run_episode(
             )
         )
         said = [] if instruction is None else [instruction]
-        executor.update(0.0, sim.observe(0.0), ground(said, executor))
+        # grounded before the first observation: a cell on the bus answers its reset meanwhile
+        first = ground(said, executor)
+        executor.update(0.0, sim.observe(0.0), first)
         paced = sim if isinstance(sim, PacedCell) else None
         t = 0.0
         while True:

@@ -1,0 +1,607 @@
+"""Ahead of the offline grammar: what it refuses, rewritten as plain requests and read again."""
+
+# A normaliser ahead of the offline grammar: an utterance the grammar refuses is rewritten into
+# plain imperative clauses, and read again.
+#
+# The grammar (offline.py, phrasing.py) reads requests said the ways it was built for. People wrap
+# requests in formal or indirect frames, give reasons and remarks around them, add relative clauses
+# and appositions about the people and objects, write notes, and order steps with words said far
+# from the steps. Each of these is a *general* rewrite here, on the text, and each either keeps the
+# meaning exactly or leaves the text alone (the grammar's refusal then stands):
+#
+# - wrappers: "is there any chance …", "would it be possible for P to …", "I would be grateful if
+#   …", "please ensure that …", "kindly arrange for X to be placed on S", "P would be grateful for
+#   X", "P asked whether she could have X", "could someone …" are taken off, leaving the request;
+# - asides: ", who …,", ", which …,", an apposition after a person (", the gentleman at the end,")
+#   and a restrictive "who …" after a person the scene names once are dropped when they name no
+#   object, person or surface of the scene (one that does might select or ask: left alone);
+#   "our manager, Priya," (two names of one person) keeps one;
+# - remarks and reasons: a clause the grammar cannot read ("Tom is about to leave", "it's urgent",
+#   "Mr Novak's plate is the blue one") around a request is dropped, its people and objects standing
+#   in for the request's pronouns ("… so hand him the scanner" → "hand Tom the scanner"); every
+#   person and object the remark names must then be in the request, else nothing is rewritten;
+# - order said apart: "Last, X. Before that, Y." / "Last, X. First, though, Y." → "Y. Finally, X.";
+#   "after both are done" → "then";
+# - notes: "Plates: white one to the counter, blue one to Lena" (a header naming the kind),
+#   "Mug, red one, to Carol", "Carol: nothing" / "large stays" (no task), "X; Bob, for Y" (a
+#   clause said again without its verb);
+# - people: a title said another way ("Miss Ortiz" for "Mrs Ortiz"), "each <role two people
+#   share>" (each of them), a locator before a person ("Bed 2, Mr Lee: …"), a pronoun repeating
+#   the subject ("Mr Novak he want …"), "you bring for P the X";
+# - words: "end up with" (go to), "is waiting for" (wants), "sharpish" (a filler), a description
+#   "that's sitting on S" (on S), "whichever box is on S" (the box on S), "whatever P doesn't"
+#   (the rest), "both items" in a scene of two objects.
+#
+# Each rewrite's result is read by the same grammar, so nothing here can ground what the grammar
+# would not read in its plain form; a rewrite that cannot be made exactly returns the text as it
+# was.
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from hltl.errors import GroundingError
+from hltl.grounding.lexicon import VERBS, WORDS, Item, Lexicon, common_words, lex
+
+_F = re.IGNORECASE
+_TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
+
+
+def canonical(text: str, lexicon: Lexicon) -> str:
+    """``text`` rewritten by every mechanism in turn (each returns its input where it does not
+    apply or cannot rewrite exactly)."""
+    out = " ".join(text.split())
+    for step in _STEPS:
+        out = step(out, lexicon)
+    return out
+
+
+def _names(text: str, lexicon: Lexicon) -> list[Item]:
+    """The scene's objects, people and surfaces ``text`` names, in order (also inside words the
+    lexer joins to an unknown word: 'the plates out')."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return []
+    out: list[Item] = []
+    for it in items:
+        if it.kind == "ent":
+            out.append(it)
+        elif it.kind == "unknown" and " " in it.text:
+            head, rest = it.text.split(" ", 1)  # "important Mrs Khan", "plates out"
+            out += [*_names(head, lexicon), *_names(rest, lexicon)]
+    return out
+
+
+def _ids(text: str, lexicon: Lexicon, kind: str | None = None) -> set[str]:
+    return {r.id for it in _names(text, lexicon) for r in it.refs if kind in (None, r.kind)}
+
+
+def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
+    return re.sub(pattern, repl, text, flags=_F)
+
+
+# -- wrappers ----------------------------------------------------------------------------------
+
+_OPEN = r"(^|(?<=[.;!?:])\s*|(?<=,)\s*(?:and\s+)?)"
+_WRAPPERS: tuple[tuple[str, str], ...] = (
+    (_OPEN + r"(?:so,?\s+)?is there any (?:chance|way|possibility) (?:that )?", r"\1"),
+    (
+        _OPEN + r"would it be (?:possible|ok|okay|alright) for (.+?) to (?:borrow|have|get|take) ",
+        r"\1\2 could have ",
+    ),
+    (_OPEN + r"(?:i|we) (?:was|were|am|are) (?:just )?wondering (?:if|whether) ", r"\1"),
+    (
+        _OPEN + r"(?:i|we) (?:would|'d|should) be (?:most |very |really |so |extremely )?"
+        r"(?:grateful|thankful|obliged) if ",
+        r"\1",
+    ),
+    (_OPEN + r"(?:please |kindly )?(?:ensure|make sure|see to it) that ", r"\1"),
+    (r",\s*and that ", ", and "),
+    (_OPEN + r"(?:please |kindly )?arrange for (.+?) to be ", r"\1\2 is "),
+    (r"\bupon\b", "on"),
+    (
+        r"\b(would|'d|will) be (?:most |very |really |so |extremely )?(?:grateful|thankful) "
+        r"for\b",
+        r"\1 like",
+    ),
+    (r"\b(?:could|can|should|might|will) be (?:provided|supplied|furnished) with\b", "could get"),
+    (r"\b(?:could|can|should|might|will) be (?:given|handed|passed|brought)\b", "could get"),
+    (r"\b(could|can|may|might) borrow\b", r"\1 have"),
+    (
+        r"\basked (?:whether|if) (?:she|he|they) (?:could|might|can|may) (?:have|get)\b",
+        "wants",
+    ),
+    (r"\b(could|can|would|will) (?:someone|somebody|anyone|anybody)\b", r"\1 you"),
+)
+
+
+def _wrappers(text: str, _lexicon: Lexicon) -> str:
+    for pattern, repl in _WRAPPERS:
+        text = _sub(pattern, repl, text)
+    return text
+
+
+# -- words -------------------------------------------------------------------------------------
+
+_WORDS: tuple[tuple[str, str], ...] = (
+    (r",?\s*\b(?:sharpish|pronto|asap|chop chop|on the double)\b", ""),
+    (
+        r"\s*(?:\bis|'s|\bare|'re|\bwas|\bhas been|'s been|\bhave been|'ve been) (?:still )?"
+        r"waiting(?: ages| forever| a while| so long)? for\b",
+        " wants",
+    ),
+    (r"\s*(?:\bwas|\bwere|\bis|\bare|'s|\bhas been|'s been) asking for\b", " wants"),
+    (r"\s*(?:\bhas|\bhave|\bhad|'s|'ve) asked for\b", " wants"),
+    # "Mr Novak's plate is the blue one": the blue plate is his
+    (r"^(.+?)'s (\w+) is the (\w+) one\b", r"the \3 \2 is for \1."),
+    # "Give all three of them an item: Alice the cup, …": the list says it
+    (
+        r"^(give|hand|pass|bring) (?:all (?:two|three|four|five) of them|each of them|them all|"
+        r"everyone|everybody|all of them) (?:an? (?:item|thing|object)|something)(?: each)?:\s*",
+        r"\1 ",
+    ),
+    # "Sorry, I mean the lemon. No, actually the salt was right.": the correction taken back
+    (
+        r"(?:^|(?<=[.!?;])\s*)(?:sorry,? )?i mean(?:t)? [^.!?;]*[.!?;]\s*no,? (?:actually,? )?"
+        r"(?:the )?\w+(?: \w+)? (?:was|is) (?:right|correct|fine|ok)[.!?]?",
+        "",
+    ),
+    # "Carol wants the apple; Bob, for the bottle": the want said again without its verb
+    (r"([;,]\s*(?:and )?[A-Z][\w ]*?),\s*for (?=the |a |an )", r"\1 "),
+    # "give lena the knife no the tongs": a correction said without its commas
+    (r"(?<=\w) no,? (?=the |a |an )", ", no, "),
+    # "…, chips last": an object named alone before an ordering word
+    (r",\s*(?!the |a |an )(\w+) (last|first)\b", r", the \1 \2"),
+    # "whichever box is on the pallet": the box that is on it
+    (r"\bwhichever (\w+) (?:is|'s) (on|in) ", r"the \1 that is \2 "),
+    (
+        r"\b(?:that|which)(?:'s| is| are|'re)? (?:sitting|lying|standing|resting|kept) (on|in)\b",
+        r"\1",
+    ),
+    (r"\blast of all\b", "finally"),
+    # "Person B has to get the bottle": should get it
+    (r"\b(?:has|have|had)(?: got)? to (?:get|have|receive)\b", "should get"),
+    # "Bob gets whatever Alice doesn't: Alice gets the bottle": Bob gets the rest
+    (
+        r"^(.+?) (gets|can have|should get|takes) whatever (.+?) (?:doesn't|does not|don't|"
+        r"won't|isn't)(?: get| take| have| want)?\s*[:;,-]\s*(.+?)[.!]?$",
+        r"\4. \1 \2 the rest",
+    ),
+    (
+        r",?\s*(?:and )?after (?:both|all|those|these|them|both of them|all of them) "
+        r"(?:are|have been|were) (?:done|finished|complete|completed),?",
+        ", then",
+    ),
+)
+
+
+def _words(text: str, _lexicon: Lexicon) -> str:
+    for pattern, repl in _WORDS:
+        text = _sub(pattern, repl, text)
+    # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
+    sentences = re.split(r"(?<=[.;!?])\s+", text)
+    for n, s in enumerate(sentences):
+        if re.search(r"\bends? up with\b", s, _F):
+            s = _sub(r"\bends? up with\b", "go to", s)
+            sentences[n] = _sub(r"\bwith\b", "to", s)
+    return " ".join(sentences)
+
+
+# -- people ------------------------------------------------------------------------------------
+
+_TITLES = {"mrs": "f", "ms": "f", "miss": "f", "mr": "m"}
+
+
+def _people(text: str, lexicon: Lexicon) -> str:
+    humans = lexicon.scene.humans
+    for h in humans:
+        for alias in h.aliases:
+            words = alias.split()
+            if len(words) < 2 or words[0].lower().rstrip(".") not in _TITLES:
+                continue
+            sex, rest = _TITLES[words[0].lower().rstrip(".")], " ".join(words[1:])
+            others = [t for t, s in _TITLES.items() if s == sex and t != words[0].lower()]
+            for t in others:  # "Miss Ortiz" for "Mrs Ortiz": the same woman, if no other
+                taken = any(a.lower() == f"{t} {rest}".lower() for g in humans for a in g.aliases)
+                if not taken:
+                    text = _sub(rf"\b{t}\.? {re.escape(rest)}\b", alias, text)
+    # "each student": every person of a role two or more share
+    roles: dict[str, list[str]] = {}
+    for h in humans:
+        for alias in h.aliases:
+            roles.setdefault(alias.lower(), []).append(_name(h.id, lexicon))
+    for role, names in roles.items():
+        if len(names) < 2:
+            continue
+        # only as the one request of the text: "(please) give each student <objects>"
+        m = re.match(
+            rf"^((?:please |could you |can you )?(?:give|hand|bring|pass|get)) each (?:of the )?"
+            rf"{re.escape(role)}s? ((?:a|an|one of the|one|the) [\w ]+?)(?: please)?[.!?]?$",
+            text,
+            _F,
+        )
+        if (
+            m is not None
+            and not re.search(_TASK_WORDS + r"|\band\b|,", m.group(2), _F)
+            and not _ids(m.group(2), lexicon, "human")
+        ):
+            text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
+    text = _gendered_header(text, lexicon)
+    # "Person B wants the chips, and after that Person A for the bottle": the want again
+    if re.search(r"\b(?:wants?|needs?|would like|'d like)\b", text, _F):
+        for h in humans:
+            for alias in (*h.aliases, h.name):
+                text = _sub(
+                    r"(,\s*(?:and )?(?:then |after that |afterwards |next )?)"
+                    rf"({re.escape(alias)}),?\s+for (?=the |a |an )",
+                    r"\1\2 ",
+                    text,
+                )
+    # "Bed 2, Mr Lee: …": a place said before the person
+    text = _sub(r"^(?:bed|room|table|seat|desk|bay|cubicle) \d+\s*[,:-]\s*", "", text)
+    # "Mr Novak he want lemon": a pronoun repeating the subject
+    for h in humans:
+        for alias in (*h.aliases, h.name):
+            text = _sub(rf"^({re.escape(alias)}),? (?:he|she|they) ", r"\1 ", text)
+    # "You bring for the doctor the bowl"
+    text = _sub(r"^you (?=give|bring|hand|pass|take|put|place|fetch)", "", text)
+    return _sub(
+        r"\b(give|bring|hand|pass|take|fetch) for ((?:the |our |my )?[\w' ]+?) (?=the |a |an )",
+        lambda m: (
+            f"{m.group(1)} {m.group(2)} "
+            if _ids(m.group(2), lexicon, "human") and len(_ids(m.group(2), lexicon)) == 1
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+def _gendered_header(text: str, lexicon: Lexicon) -> str:
+    """'Mrs Khan, then Mr Lee: the magazine for her, the grey blanket for him': the people said
+    first, each pronoun after the colon the one whose title fits it, in the order said."""
+    m = re.match(r"^([^,:]+?),? (then|and) ([^,:]+?)\s*:\s*([^,]+), ([^,]+?)[.!]?$", text)
+    if m is None:
+        return text
+    sexes = []
+    for who in (m.group(1), m.group(3)):
+        title = who.split()[0].lower().rstrip(".")
+        if title not in _TITLES or not _only(who, lexicon, "human"):
+            return text
+        sexes.append(_TITLES[title])
+    if sexes[0] == sexes[1]:
+        return text
+    parts = []
+    for n, part in enumerate((m.group(4), m.group(5))):
+        pron = re.findall(r"\b(?:him|her)\b", part, _F)
+        if len(pron) != 1:
+            return text
+        sex = {"her": "f", "him": "m"}[pron[0].lower()]
+        if m.group(2).lower() == "then" and sex != sexes[n]:
+            return text  # after 'then' each pronoun must be the person said at its place
+        parts.append(_sub(r"\b(?:him|her)\b", m.group(1 if sex == sexes[0] else 3), part))
+    return f"{parts[0]}, {m.group(2)} {parts[1]}"
+
+
+def _name(pid: str, lexicon: Lexicon) -> str:
+    h = next(x for x in lexicon.scene.humans if x.id == pid)
+    unique = [a for a in h.aliases if sum(a in g.aliases for g in lexicon.scene.humans) == 1]
+    return unique[0] if unique else h.name
+
+
+# -- asides ------------------------------------------------------------------------------------
+
+
+def _asides(text: str, lexicon: Lexicon) -> str:
+    """', who is at the front,' and ', the gentleman at the end,' said about someone or
+    something: dropped when they name nothing of the scene; two names of one person keep one."""
+    parts = text.split(",")
+    out = [parts[0]]
+    k = 1
+    while k < len(parts):
+        seg = parts[k]
+        words = seg.strip()
+        last = k == len(parts) - 1
+        before = _names(out[-1], lexicon)
+        here = _names(words, lexicon)
+        rel = re.match(r"(?:who|which)\b", words, _F)
+        if rel and not here and not re.search(r"\b(?:it|them|him|her|he|she)\b", words, _F):
+            # a relative clause ending at the next comma (which goes with it), or at the end
+            if not last:
+                out[-1] += parts[k + 1]
+            k += 2
+            continue
+        if (
+            not last
+            and before
+            and all(r.kind == "human" for r in before[-1].refs)
+            and out[-1].rstrip().endswith(before[-1].text)
+        ):
+            same = (
+                len(here) == 1
+                and {r.id for r in here[0].refs} == {r.id for r in before[-1].refs}
+                and words.lower().removeprefix("the ").strip() == here[0].text.lower()
+            )
+            described = not here and re.match(r"(?:the|a|an|our|my|your)\b", words, _F)
+            if same or described:  # "our manager, Priya," / "Mr Novak, the gentleman …,"
+                out[-1] += parts[k + 1]
+                k += 2
+                continue
+        out.append(seg)
+        k += 1
+    text = ",".join(out)
+    # a restrictive 'who …' after a person the scene names once: "The guest who ordered the
+    # fish wants a lemon"
+    m = re.search(
+        r"\bwho (?P<rel>(?:\w+'?\w* ){1,8}?)(?=(?:wants|needs|would like|'d like|should|gets|"
+        r"could|can|is after)\b)",
+        text,
+        _F,
+    )
+    if m is not None:
+        head = _names(text[: m.start()], lexicon)
+        if (
+            head
+            and len(head[-1].refs) == 1
+            and head[-1].refs[0].kind == "human"
+            and text[: m.start()].rstrip().endswith(head[-1].text)
+            and not _names(m.group("rel"), lexicon)
+            and not re.search(r"\b(?:it|them|him|her|he|she)\b", m.group("rel"), _F)
+        ):
+            text = text[: m.start()] + text[m.end() :]
+    return text
+
+
+# -- remarks -----------------------------------------------------------------------------------
+
+_CLAUSE = re.compile(
+    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|,(?=\s*(?:could|can|would|will)\b)|"
+    r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b))\s*",
+    _F,
+)
+_PRONOUNS = {"he": "h", "him": "h", "she": "h", "her": "h", "his": "p", "it": "o", "them": "os"}
+
+
+def _remarks(text: str, lexicon: Lexicon) -> str:
+    """Clauses the grammar cannot read around a request are remarks: dropped, their people and
+    objects standing in for the request's pronouns; every one of them must then be in the
+    request, else the text is left as it is."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    pieces = _CLAUSE.split(text)
+    seps = [*(m.group(0) for m in _CLAUSE.finditer(text)), ""]
+    clauses = [c for c in pieces if c and c.strip(" ,:")]
+    if len(clauses) < 2:
+        return text
+    asked = {c for c, sep in zip(pieces, seps, strict=True) if "?" in sep}
+
+    def request(clause: str) -> bool:
+        """Read alone, or refused only for a pronoun another clause may resolve."""
+        try:
+            parse_instruction(clause, lexicon.scene, lexicon, normalise=False)
+        except GroundingError as e:
+            verb = re.search(_TASK_WORDS, clause, _F)
+            return ("is not resolved" in str(e) and verb is not None) or _opens_request(clause)
+        return True
+
+    remark = [_statement(c, lexicon) and not request(c) for c in clauses]
+    said = [c for c, r in zip(clauses, remark, strict=True) if r]
+    if not said or len(said) == len(clauses) or asked & set(said):
+        return text  # a question ("u there? give …") is not a remark
+    if any(not _plain_words(c, lexicon) for c in said):
+        return text  # a word neither common nor the scene's may be a name it does not know
+    if any(re.search(_TASK_WORDS, c, _F) and not _ids(c, lexicon, "object") for c in said):
+        return text  # "Bob gets what's left" asks without naming: not a remark
+    people = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "human"]
+    things = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "object"]
+    person = {r.id for it in people for r in it.refs}
+    thing = {r.id for it in things for r in it.refs}
+    requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
+    body = ". ".join(c.strip(" ,:") for c in requests)
+    if len(person) == 1:
+        name = people[0].text
+        body = _sub(r"\b(?:him|her|he|she)\b", name, body)
+        body = _sub(r"\bhis\b", "the", body)
+    if thing and len(things) == 1:
+        words = things[0].text
+        body = _sub(r"\bboth of them\b", f"both {words}", body)
+        body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
+    named = _ids(body, lexicon)
+    if not {r.id for c in said for it in _names(c, lexicon) for r in it.refs} <= named:
+        return text  # the remark names something the request does not: it may ask for it
+    return body
+
+
+_NEGATIONS = re.compile(
+    r"\b(?:no|not|never|nobody|no one|nothing|none|forget|cancel|instead|swap|skip|drop|"
+    r"except|without|but|rather|only|neither|nor)\b|n't\b",
+    _F,
+)
+
+
+def _statement(clause: str, lexicon: Lexicon) -> bool:
+    """Whether ``clause`` says something about someone or something ('Tom is about to leave',
+    "it's urgent", 'Bob wants the chips earlier') with no word that could cancel, negate or
+    restrict a task: only such a clause can be a remark."""
+    words = clause.strip(" ,:").lower()
+    if _NEGATIONS.search(words):
+        return False
+    words = re.sub(r"^(?:and|so|because|since|as|anyway|well),?\s+", "", words)
+    m = re.match(r"^(?:it'?s|its|it|he|she|they|that|this|there)\b", words)
+    if m is None:
+        names = _names(words, lexicon)
+        if not names or names[0].refs[0].kind != "human":
+            return False
+        at = words.find(names[0].text.lower())
+        if at < 0 or words[:at].strip() not in ("", "the", "our", "my"):
+            return False
+        rest = words[at + len(names[0].text) :]
+    else:
+        rest = words[m.end() :]
+    return bool(re.match(r"^(?:'s|'re|'ll|'d)?\s*\w+", rest))
+
+
+def _plain_words(clause: str, lexicon: Lexicon) -> bool:
+    """Whether every word of ``clause`` is a common English word, a word the grammar knows or a
+    word of a name in the scene."""
+    known = _known_words(lexicon)
+    words = re.findall(r"[a-z]+", clause.lower().replace("'s", " "))
+    return all(w in known for w in words)
+
+
+def _known_words(lexicon: Lexicon) -> frozenset[str]:
+    scene = lexicon.scene
+    names = [
+        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *(n for s in scene.surfaces for n in (s.id, *s.aliases)),
+    ]
+    own = {w for n in names for w in re.findall(r"[a-z]+", n.lower())}
+    return _COMMON | own
+
+
+_COMMON = common_words() | frozenset(WORDS) | frozenset(VERBS)
+
+
+def _opens_request(clause: str) -> bool:
+    return bool(
+        re.match(
+            r"\s*(?:please |so |and |then )*(?:could|can|would|will|give|hand|pass|bring|take|"
+            r"put|place|fetch|get)\b",
+            clause,
+            _F,
+        )
+    )
+
+
+# -- order said apart --------------------------------------------------------------------------
+
+
+def _order(text: str, lexicon: Lexicon) -> str:
+    """'Last, X. Before that, Y.' / 'Last, X. First, though, Y.' → 'Y. Finally, X.';
+    'the bottle and the chips to Bob, the chips last' → 'the bottle to Bob, then the chips to
+    Bob' (one of the two objects of a clause said last or first)."""
+    m = re.match(
+        r"^(?P<head>(?:please )?(?:(?:give|hand|pass|bring|take|put|place) [\w ]*?)?)"
+        r"(?P<a>the [\w ]+?) and (?P<b>the [\w ]+?)(?P<tail> (?:to|on|onto) [^,]+)?, "
+        r"(?P<one>the [\w ]+?) (?P<w>last|first)[.!]?$",
+        text,
+        _F,
+    )
+    if m is not None:
+        a, b, one = (_ids(m.group(g), lexicon) for g in ("a", "b", "one"))
+        if one and one in (a, b) and a != b and len(a) == len(b) == 1:
+            late = (one == b) == (m.group("w").lower() == "last")
+            x, y = (m.group("a"), m.group("b")) if late else (m.group("b"), m.group("a"))
+            head, tail = m.group("head"), m.group("tail") or ""
+            return f"{head}{x}{tail}, then {head}{y}{tail}"
+    sentences = [s for s in re.split(r"(?<=[.;!?])\s+", text.strip()) if s]
+    if len(sentences) != 2:
+        return text
+    last = re.match(r"(?:last|lastly|finally|last of all),?\s+(.*)$", sentences[0], _F)
+    first = re.match(
+        r"(?:before that|first|first of all|but first)(?:,?\s*though)?,?\s+(.*)$",
+        sentences[1],
+        _F,
+    )
+    if last is None or first is None:
+        return text
+    before = first.group(1).rstrip(" .;!?")
+    return f"{before}. Finally, {last.group(1)}"
+
+
+# -- notes -------------------------------------------------------------------------------------
+
+
+def _notes(text: str, lexicon: Lexicon) -> str:
+    kinds: dict[str, list[list[str]]] = {}
+    for o in lexicon.scene.objects:
+        names = [o.id.replace("_", " "), *o.aliases]
+        kinds.setdefault(o.category.lower(), []).append(
+            [w for n in names for w in n.lower().split() if w != o.category.lower()]
+        )
+    # "Plates: white one to the counter, blue one to Lena" / "Boxes: small and medium on …"
+    m = re.match(r"^(\w+)\s*:\s*(.*)$", text)
+    if m is not None:
+        head = m.group(1).lower()
+        cat = next((c for c in kinds if head in (c + "s", c + "es")), None)
+        if cat is not None:
+            adjs = {w for ws in kinds[cat] for w in ws}
+            rest = _sub(
+                rf"\b({'|'.join(map(re.escape, sorted(adjs)))}) ones?\b", rf"\1 {cat}", m.group(2)
+            )
+            rest = _sub(
+                rf"\b(?<!the )({'|'.join(map(re.escape, sorted(adjs)))})\b(?! {cat})",
+                rf"the \1 {cat}",
+                rest,
+            )
+            text = rest
+    # "Both items to Bob" in a scene of two objects
+    if len(lexicon.scene.objects) == 2:
+        both = " and ".join(f"the {_said(o.id, lexicon)}" for o in lexicon.scene.objects)
+        text = _sub(r"\bboth (?:items|things|objects)\b", both, text)
+    # "Mug, red one, to Carol"
+    for cat, lists in kinds.items():
+        adjs = {w for ws in lists for w in ws}
+        if adjs:
+            alt = "|".join(map(re.escape, sorted(adjs)))
+            text = _sub(rf"\b{cat},\s*(?:the )?({alt}) one,?", rf"the \1 {cat}", text)
+    # "Carol: nothing." / "nothing for Carol" / "the large box stays": no task
+    clauses = re.split(r"(?<=[.;,])\s+", text)
+    kept = []
+    for c in clauses:
+        bare = c.strip(" .;,")
+        nothing = re.match(r"^(?:and )?(.+?):?\s+(?:gets |wants |needs )?nothing$", bare, _F)
+        stays = re.match(r"^(?:and )?(?:the )?(.+?) stays(?: put| where it is| there)?$", bare, _F)
+        # (only if nobody else's clause names them: "Alice gets nothing, Alice gets the cup"
+        # contradicts itself)
+        others = " ".join(x for x in clauses if x is not c)
+        if (
+            nothing is not None
+            and _only(nothing.group(1), lexicon, "human")
+            and not _ids(nothing.group(1), lexicon) & _ids(others, lexicon)
+        ):
+            continue
+        if (
+            stays is not None
+            and _only(stays.group(1), lexicon, "object")
+            and not _ids(stays.group(1), lexicon) & _ids(others, lexicon)
+        ):
+            continue
+        kept.append(c)
+    if len(kept) < len(clauses) and kept:
+        text = " ".join(kept).rstrip(" ,;")
+    return text
+
+
+def _said(oid: str, lexicon: Lexicon) -> str:
+    """A name of object ``oid`` that names it alone."""
+    o = next(x for x in lexicon.scene.objects if x.id == oid)
+    for name in (*o.aliases, o.id.replace("_", " "), o.category):
+        if _only(name, lexicon, "object") and _ids(name, lexicon) == {oid}:
+            return name
+    return o.id
+
+
+def _only(words: str, lexicon: Lexicon, kind: str) -> bool:
+    """Whether ``words`` is one name of one thing of ``kind`` in the scene."""
+    names = _names(words, lexicon)
+    return (
+        len(names) == 1
+        and len({r.id for r in names[0].refs}) == 1
+        and names[0].refs[0].kind == kind
+        and words.lower().removeprefix("the ").strip() == names[0].text.lower()
+    )
+
+
+_STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _wrappers,
+    _words,
+    _people,
+    _notes,
+    _asides,
+    _order,
+    _remarks,
+)
