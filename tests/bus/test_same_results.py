@@ -70,7 +70,7 @@ def test_fig1_episode_in_lockstep(loopback: Loopback) -> None:
 
 @pytest.mark.parametrize("stream", [True, False], ids=["streamed", "one-answer"])
 def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
-    loopback: Loopback, stream: bool
+    loopback: Loopback, stream: bool, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """2-1 #1: the executor commands in the middle of a quiet stretch the node had simulated
     ahead; those ticks are undone and the consumed ones replayed (from a save, or from the save
@@ -80,6 +80,9 @@ def test_look_ahead_is_used_and_undone_when_a_command_comes_first(
     node saves the simulator every few ticks of it: a cut replays fewer than that many."""
     from hltl.bus.node import CHECKPOINT
 
+    # the node saves while idle at once after an answer, not after its pause (a next query that
+    # comes within the pause, as it may on a loaded machine, finds no save made while idle)
+    monkeypatch.setattr("hltl.bus.node.PAUSE", 0.0)
     trial = make_trial("2-1", 1)
     run = _assert_same(
         loopback,
@@ -477,3 +480,30 @@ def test_the_reset_is_answered_while_the_executor_goes_on(loopback: Loopback) ->
             cell.end()
         finally:
             cell.close()
+
+
+def test_an_update_that_halts_cuts_the_stretch_it_came_in(loopback: Loopback) -> None:
+    """An instruction does not end the node's stretch; when its update halts the hand-over it
+    undoes (test_update_episodes), the ticks simulated after it are undone and the log is the
+    in-process one (before, the stretch ended at the instruction: nothing was cut). Another
+    instruction, which halts nothing, is taken in with its stretch: nothing cut."""
+    from hltl.sim.events import EventSchedule, Instruction
+    from hltl.world.scene import load_scene
+
+    scene = load_scene(ROOT / "examples" / "scenes" / "two_arms.yaml")
+    halting = _assert_same(
+        loopback,
+        scene,
+        instruction="Give Person A the bottle",
+        events=EventSchedule((Instruction(0.7, "give Person B the bottle instead"),)),
+    )
+    assert [r.kind for r in halting.episode.records if r.type == "halt"] == ["update"]
+    assert halting.node.stats.cuts > 0 and halting.node.stats.undone > 0
+    also = _assert_same(
+        loopback,
+        scene,
+        instruction="Give Person A the bottle",
+        events=EventSchedule((Instruction(0.7, "also give Person B the chips"),)),
+    )
+    # the instruction came inside a stretch: taken with its ticks, nothing cut
+    assert also.node.stats.cuts == 0

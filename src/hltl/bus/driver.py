@@ -140,6 +140,8 @@ class _Listeners:
             cell._on_alive(sample)
 
 
+_NONE: frozenset[str] = frozenset()
+
 # each session's shared subscriptions (the session is kept: its id is not reused meanwhile)
 _listeners: dict[int, _Listeners] = {}
 _listeners_lock = threading.Lock()
@@ -514,11 +516,14 @@ class BusCell:
         nxt = d.get("next")
         self._next = math.inf if nxt is None else float(nxt)
         self._pending = bool(d.get("pending"))
-        self._unavailable = frozenset(str(r) for r in d.get("unavailable", ()))
+        u = d.get("unavailable")  # (a tick ahead leaves it out when empty)
+        self._unavailable = frozenset(str(r) for r in u) if u else _NONE
         self._dirty = False
 
     def _sync(self, upto: int) -> None:
         """Wait (bounded) for every report up to ``upto``; fill a gap by asking the robots."""
+        if self._contiguous >= upto:  # (the common case, every tick: the answer carried them)
+            return
         deadline = time.monotonic() + self.timing.timeout
         with self._cond:
             while self._contiguous < upto:
@@ -712,6 +717,8 @@ class BusCell:
         self._ready()
         self._confirm()
         self._log_down()
+        if not self._down:  # (the common case, every tick: no robot down)
+            return self._unavailable
         with self._cond:
             return self._unavailable | frozenset(self._down)
 

@@ -648,9 +648,13 @@ class CellNode:
         base: Callable[[], None] | None = None,
     ) -> _Stretch | None:
         """Simulate the ticks the executor will ask for next, until something happens that it
-        may act on (an action ends, an instruction, a robot's availability changes) or
-        ``ahead.count`` ticks; they go in ``answer["ahead"]`` (compact: :func:`_compact`) and
-        wait in a batch for the executor to say how many it used. Asked to stream, only the
+        is likely to act on (an action fails, is halted or ends its step, a robot's availability
+        changes) or ``ahead.count`` ticks. An instruction does not end a stretch: with a step
+        running the executor grounds it and waits for the step, and on the rare update that
+        halts what it undoes, the ticks after it are undone like any a command cuts (it cost a
+        round trip in most episodes of the suite). They go in ``answer["ahead"]`` (compact:
+        :func:`_compact`) and wait in a batch for the executor to say how many it used. Asked
+        to stream, only the
         first tick goes in the answer (``"more"``: the stretch, returned, goes on).
         Only cells whose state can be saved and restored (the discrete-event simulator, the
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
@@ -704,7 +708,6 @@ class CellNode:
         wire = tick["observation"]
         s.done = (
             _may_act(reports, b.latest)
-            or bool(tick["instructions"])
             or tick["unavailable"] != s.unavailable
             or t_next >= ahead.max_time - 1e-9
         )
