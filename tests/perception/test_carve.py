@@ -180,3 +180,22 @@ def test_the_simulator_renders_clutter_objects_within_the_targets() -> None:
             sil = cylinder_silhouette(s.centres[seg.id], r, h, s.camera)
             assert int(((s.frame.seg == sid) & ~sil).sum()) <= 3
     assert placed >= 20
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(-0.6, 0.6), st.floats(-0.45, 0.45))
+def test_hidden_share_counts_what_the_image_border_cuts_off(du: float, dv: float) -> None:
+    """Nothing in front: the hidden share is the part of the silhouette outside the image."""
+    solid = Solid("object", "x", (0.0, 0.0, 0.0), 0.05, 0.18, (255, 0, 0))
+    # the camera looks past the object, so that it sits anywhere from the centre to off-image
+    eye = np.array([0.0, -1.0, 0.5])
+    aim = np.array([du, 0.0, 0.09 + dv])
+    cam = make_camera(tuple(eye), tuple(aim), (solid,), width=640, height=480)
+    frame = render(cam, (solid,))
+    assert frame.seg is not None
+    hull = cylinder_outline(solid.center, solid.radius, solid.height, cam)
+    assert hull is not None
+    shown = int((frame.seg == 1).sum())
+    expected = 1.0 - shown / polygon_area(hull)
+    got = hidden_share(frame.depth, cam, solid.center, solid.radius, solid.height)
+    assert got == pytest.approx(max(expected, 0.0), abs=0.05)
