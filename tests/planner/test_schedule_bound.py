@@ -22,6 +22,7 @@ from tests.oracles.brute_force import optimal_makespan
 from tests.oracles.cpsat import cpsat_makespan
 from tests.oracles.random_instances import random_instance
 from tests.oracles.validator import check_plan
+from tests.planner import test_symmetry as twins
 
 pytest.importorskip("ortools")
 
@@ -216,3 +217,89 @@ def test_relaxed_steps_at_the_bound_are_an_optimal_plan(layout: str, n: int, see
     )
     check_plan(c.scene, c.spec, result.to_dict())
     assert result.makespan == pytest.approx(plan(c.scene, c.spec, timeout=DEADLINE_S).makespan)
+
+
+# -- twins in the relaxation (docs/planner.md, "Twins in the relaxation") ------------------------
+
+
+def _twin_bounds(seed: int) -> tuple[int, int, float, int] | None:
+    """(step bound with the twins' order, without it, oracle optimum, twin pairs) on the
+    symmetry tests' instance ``seed`` (objects cloned beside their originals); None outside
+    the step bound's class."""
+    scene_d, spec_d = twins.twins_instance(seed)
+    scene, spec = scene_from_dict(scene_d), spec_from_dict(spec_d)
+    problem = Problem(scene, spec)
+    if not schedule.steps_applicable(problem):
+        return None
+    s = _Search(problem)
+    node = problem.start()
+    h0 = s.heuristic(node)
+    if math.isinf(h0):
+        return None
+    graph = s.heuristic.graph
+    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    pairs = schedule.twin_pairs(problem, tgts, node[0])
+
+    def bound() -> int:
+        res = schedule.schedule_bound(
+            problem,
+            graph,
+            node,
+            tgts,
+            floor=0,
+            upper=None,
+            deadline=time.perf_counter() + DEADLINE_S,
+            steps=True,
+        )
+        assert res.solved  # else the machine is too slow for DEADLINE_S
+        return res.ticks
+
+    ordered = bound()
+    real = schedule.twin_pairs
+    try:
+        schedule.twin_pairs = lambda *_: []
+        plain = bound()
+    finally:
+        schedule.twin_pairs = real
+    optimum = optimal_makespan(scene, spec, max_nodes=1_000_000)
+    assert optimum is not None  # a finite heuristic: the instance is feasible
+    return ordered, plain, optimum, len(pairs)
+
+
+def test_twin_order_keeps_the_step_bound() -> None:
+    # swapping two twins maps relaxed schedules onto relaxed schedules, so "the first twin's
+    # atom happens no later than the second's" changes no level's answer: the bound with the
+    # order equals the bound without it, and stays at most the exhaustive search's optimum
+    with_pairs = 0
+    for seed in range(16):
+        got = _twin_bounds(seed)
+        if got is None:
+            continue
+        ordered, plain, optimum, pairs = got
+        assert ordered == plain
+        assert ordered <= to_ticks(optimum)
+        with_pairs += pairs > 0
+    assert with_pairs >= 8  # the check is only worth something where there are twins
+
+
+def test_an_order_between_objects_that_are_not_twins_can_raise_the_bound() -> None:
+    # the mutation check of the test above: on a 4-robot grid cell (no twins; step bound and
+    # optimum 3.3 s), making target 0's atom happen no later than target 2's leaves no relaxed
+    # schedule at 3.3 s, so an order the symmetry does not allow would show up there
+    c = delivery_cell("grid", 4, 0)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    node = problem.start()
+    graph = s.heuristic.graph
+    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    assert schedule.twin_pairs(problem, tgts, node[0]) == []
+    level = to_ticks(3.3) // schedule.time_unit(problem)
+    deadline = time.perf_counter() + DEADLINE_S
+    assert isinstance(schedule.relaxed_steps(problem, graph, node, tgts, level, deadline), tuple)
+    real = schedule.twin_pairs
+    try:
+        schedule.twin_pairs = lambda *_: [(0, 2)]
+        got = schedule.relaxed_steps(problem, graph, node, tgts, level, deadline)
+    finally:
+        schedule.twin_pairs = real
+    assert got is False

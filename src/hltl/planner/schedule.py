@@ -160,9 +160,10 @@ def schedule_bound(
 
     With ``accept`` too (it says whether a relaxed schedule at the level found is a plan) the
     levels are first asked with loops as session 8 modelled them (``relaxed_steps`` without
-    ``holders``: weaker, and cheaper); where that finds a schedule that is no plan, the levels
-    from there on are asked of the full model. Every "no" of the weaker model is one of the
-    full model's (it is a relaxation of it).
+    ``holders``: weaker, and cheaper); where that finds a schedule that is no plan, the same
+    level is asked with every session whole (a plan from it is optimal: the schedule
+    returned), and failing that the levels from there on are asked of the full model. Every
+    "no" of the weaker model is one of the full model's (it is a relaxation of it).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
@@ -175,6 +176,14 @@ def schedule_bound(
         res = _shave(problem, graph, node, tgts, level, upper, deadline, seed, floor, steps, weak)
     if accept is None or res.steps is None or accept(res.steps):
         return res
+    # its schedule is no plan: first the same level with every session whole (a restriction:
+    # its "no" proves nothing, but where its schedule is a plan, that plan meets the bound and
+    # is optimal), which costs far less than the full model there
+    again = relaxed_steps(
+        problem, graph, node, tgts, res.ticks // unit, deadline, seed=seed, whole=True
+    )
+    if isinstance(again, tuple) and accept(again):
+        return ScheduleBound(res.ticks, True, len(tgts), again)
     return _shave(
         problem, graph, node, tgts, res.ticks // unit, upper, deadline, seed, floor, True, False
     )
@@ -709,11 +718,34 @@ def _relaxation(
     for k, t in enumerate(tgts):
         for j in t.after:
             m.add(fire_at[k] >= fire_at[j])
+    for k, j in twin_pairs(p, tgts, locs):
+        m.add(fire_at[k] <= fire_at[j])
     for ivs in per_robot:
         if len(ivs) > 1:
             m.add_no_overlap(ivs)
     axis.finish()
     return True
+
+
+def twin_pairs(
+    problem: Problem, tgts: Sequence[Target], locs: Sequence[int]
+) -> list[tuple[int, int]]:
+    """Pairs (k, j) of targets whose atoms may be made to happen in this order (k's step no
+    later than j's) without changing whether a relaxed schedule exists: the objects of each
+    class of ``Problem.symmetry`` (interchangeable objects) that rest at the same place, in
+    class order, when no target has an order (docs/planner.md, "Twins in the relaxation")."""
+    if any(t.after for t in tgts):
+        return []
+    index = {t.obj: k for k, t in enumerate(tgts)}
+    out: list[tuple[int, int]] = []
+    for cls in problem.symmetry.classes:
+        by_place: dict[int, list[int]] = {}
+        for o, _ in cls:
+            if o in index:
+                by_place.setdefault(locs[o], []).append(index[o])
+        for ks in by_place.values():
+            out += pairwise(ks)
+    return out
 
 
 def _quickest_loop(problem: Problem, t: Target, r: int) -> tuple[int, int] | None:
