@@ -343,3 +343,48 @@ def test_normaliser_near_misses_stay_refused(text: str, scene: str) -> None:
     from tests.grounding.test_phrasing_s9 import TWO
 
     assert_refused(text, {"two": TWO, "ward": WARD}[scene])
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("I'd love it if Carol got the apple", "apple>C"),
+        ("See that Carol gets the apple", "apple>C"),
+        ("It's Carol who needs the apple", "apple>C"),
+        ("Carol's the one who wants the apple", "apple>C"),
+        ("What Carol needs is the apple", "apple>C"),
+        ("Give Bob the chips. To finish, hand Carol the apple.", "chips>B ; apple>C"),
+        ("For Bob: chips. For Carol: apple.", "chips>B & apple>C"),
+        ("Bob's been after the chips all day", "chips>B"),
+        ("Bob is needing the chips", "chips>B"),
+        ("Bob is supposed to get the chips", "chips>B"),
+        ("Give Bob the chips, thanks, he'll be pleased", "chips>B"),
+    ],
+)
+def test_more_frames_around_a_request(text: str, want: str) -> None:
+    assert_means(text, want)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Mister Lee needs the jug", "jug>B"),
+        ("Lee needs the jug", "jug>B"),  # the one name of the scene with that word
+        ("Sister Ruth wants the thermometer", "thermometer>A"),
+    ],
+)
+def test_titles_and_surnames(text: str, want: str) -> None:
+    assert_means(text, want, WARD)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mrs Lee needs the jug",  # a title of the other sex
+        "Missus Lee needs the jug",
+        "What does Carol need?",
+    ],
+)
+def test_titles_and_clefts_that_do_not_fit_are_refused(text: str) -> None:
+    scene = CELL if "Carol" in text else WARD
+    assert_refused(text, scene)

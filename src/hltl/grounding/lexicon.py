@@ -1537,7 +1537,11 @@ def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
 
 
 # a title before a person's name ("Dr Smith", "Ms. Carol"), when the name is the scene's
-TITLES = frozenset({"dr", "mr", "mrs", "ms", "miss", "mx", "prof", "professor", "doctor"})
+TITLES = frozenset(
+    {"dr", "mr", "mrs", "ms", "miss", "mx", "prof", "professor", "doctor"}
+    | {"sister", "brother", "sir", "madam", "officer", "coach", "captain", "aunt", "auntie"}
+    | {"uncle"}
+)
 
 
 def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:

@@ -114,6 +114,8 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
         "wants",
     ),
     (r"\b(could|can|would|will) (?:someone|somebody|anyone|anybody)\b", r"\1 you"),
+    (_OPEN + r"(?:i|we)(?:'d| would) (?:love|like|prefer) it if ", r"\1"),
+    (_OPEN + r"(?:please )?see (?:to it )?that ", r"\1"),
 )
 
 
@@ -161,6 +163,11 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"\1",
     ),
     (r"\blast of all\b", "finally"),
+    (r"(^|(?<=[.;!?])\s*)(?:to finish|to end with|at the end|to close|to wrap up),", r"\1finally,"),
+    (r"\s*(?:\bhas|'s) been after\b", " wants"),
+    (r"\s*(?:\bis|\bare|'s|'re) needing\b", " needs"),
+    (r"\s*(?:\bis|\bare|'s|'re) wanting\b", " wants"),
+    (r"\s*(?:\bis|\bare|'s|'re) (?:supposed|meant|due) to (?:get|have|receive)\b", " should get"),
     # "Person B has to get the bottle": should get it
     (r"\b(?:has|have|had)(?: got)? to (?:get|have|receive)\b", "should get"),
     # "Bob gets whatever Alice doesn't: Alice gets the bottle": Bob gets the rest
@@ -203,6 +210,19 @@ def _people(text: str, lexicon: Lexicon) -> str:
                 continue
             sex, rest = _TITLES[words[0].lower().rstrip(".")], " ".join(words[1:])
             others = [t for t, s in _TITLES.items() if s == sex and t != words[0].lower()]
+            said = {"m": "mister", "f": "missus"}[sex]  # "Mister Lee" for "Mr Lee"
+            text = _sub(rf"\b{said} {re.escape(rest)}\b", alias, text)
+            # "Lee" alone for "Mr Lee", when no other name of the scene has that word
+            everyone = [
+                *(a for g in humans for a in (*g.aliases, g.name)),
+                *(n for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)),
+                *(n for x in lexicon.scene.surfaces for n in (x.id, *x.aliases)),
+            ]
+            if len(words) == 2 and sum(rest.lower() in n.lower().split() for n in everyone) == 1:
+                after_title = "".join(
+                    rf"(?<!{t} )(?<!{t}\. )" for t in ("Mr", "Mrs", "Ms", "Miss", "Dr")
+                )
+                text = re.sub(rf"{after_title}\b{re.escape(rest)}\b", alias, text)
             for t in others:  # "Miss Ortiz" for "Mrs Ortiz": the same woman, if no other
                 taken = any(a.lower() == f"{t} {rest}".lower() for g in humans for a in g.aliases)
                 if not taken:
@@ -229,6 +249,22 @@ def _people(text: str, lexicon: Lexicon) -> str:
         ):
             text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
     text = _gendered_header(text, lexicon)
+    for h in humans:
+        for alias in (*h.aliases, h.name):
+            p = re.escape(alias)
+            # clefts: "It's Carol who needs …", "Carol's the one who wants …", "What Carol
+            # needs is the apple"
+            text = _sub(rf"^it(?:'s| is) ({p}) (?:who|that) ", r"\1 ", text)
+            text = _sub(rf"^({p})(?:'s| is) the one (?:who|that) ", r"\1 ", text)
+            text = _sub(rf"^what ({p}) (needs|wants|would like|'d like) is ", r"\1 \2 ", text)
+            # a note headed "For Bob:" / "To Bob:"
+            text = _sub(rf"(^|(?<=[.;])\s*)(?:for|to) ({p})\s*:", r"\1\2:", text)
+            # "once Bob has had his chips": his is Bob's
+            text = _sub(
+                rf"\b({p}) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ",
+                r"\1 \2 the ",
+                text,
+            )
     # "Person B wants the chips, and after that Person A for the bottle": the want again
     if re.search(r"\b(?:wants?|needs?|would like|'d like)\b", text, _F):
         for h in humans:
@@ -357,7 +393,8 @@ def _asides(text: str, lexicon: Lexicon) -> str:
 
 _CLAUSE = re.compile(
     r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|,(?=\s*(?:could|can|would|will)\b)|"
-    r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b))\s*",
+    r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b)|"
+    r",(?=\s*(?:he|she|they|it)(?:'s|'re|'ll|'d| is| are| was| were| will)\b))\s*",
     _F,
 )
 _PRONOUNS = {"he": "h", "him": "h", "she": "h", "her": "h", "his": "p", "it": "o", "them": "os"}
@@ -447,7 +484,7 @@ def _plain_words(clause: str, lexicon: Lexicon) -> bool:
     """Whether every word of ``clause`` is a common English word, a word the grammar knows or a
     word of a name in the scene."""
     known = _known_words(lexicon)
-    words = re.findall(r"[a-z]+", clause.lower().replace("'s", " "))
+    words = re.findall(r"[a-z]+", re.sub(r"'(?:s|ll|re|d|ve|m)\b|n't\b", " ", clause.lower()))
     return all(w in known for w in words)
 
 
