@@ -64,3 +64,30 @@ def test_crossing_people_keep_identities_with_segmentation_and_depth() -> None:
         assert row.switches == 0 and row.wrong == 0 and row.false == 0
         assert statistics.median(row.errors) < 0.05
     assert "| depth |" in format_people([seg, depth])
+
+
+def test_outliers_list_every_found_object_over_its_backends_target() -> None:
+    from hltl.bench.perception import ObjectRow, SeenObject, format_outliers
+
+    seen = (
+        SeenObject(3, "o1", "cup", 40, 0.12, (0.0, 0.011, 0.0), 40),  # 1.1 cm: over 1 cm
+        SeenObject(4, "o2", "box", 900, 1.0, (0.0, 0.0, 0.009), 900),  # 0.9 cm: within
+        SeenObject(5, "o3", "mug", 20, 0.05),  # not found: not an outlier
+    )
+    seg = ObjectRow("segmentation", 2, 3, 2, (), (), seen=seen)
+    learned = ObjectRow("learned", 2, 3, 2, (), (), seen=seen)
+    text = format_outliers([seg, learned])
+    rows = [line for line in text.splitlines() if line.startswith("| segmentation")]
+    assert rows[0].startswith("| segmentation (1 cm) | 3 | o1 cup | 40 (12 %) | 40 | 1.10 |")
+    assert (
+        rows[1] == "| segmentation (1 cm) | all | 1 of 2 found over the target (3 shown) | | | | |"
+    )
+    assert len(rows) == 2
+    assert "| learned (3 cm) | all | 0 of 2 found over the target (3 shown) | | | | |" in text
+
+
+def test_outliers_write_nothing(capsys: pytest.CaptureFixture[str]) -> None:
+    from hltl.cli.main import main
+
+    assert main(["bench", "perception", "--outliers", "--write", "x.md"]) == 1
+    assert capsys.readouterr().err.strip().startswith("error: --outliers writes nothing")

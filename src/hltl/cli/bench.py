@@ -335,6 +335,12 @@ def register(sub: Any) -> None:
         help="also run each closed-loop trial through the camera without temporal filters",
     )
     pe.add_argument("--quick", action="store_true", help="a small run (docs and tests)")
+    pe.add_argument(
+        "--outliers",
+        action="store_true",
+        help="only the clutter renders: list every object whose centroid error exceeds its "
+        "backend's target (frame, pixels, share of it shown, error vector); writes nothing",
+    )
     pe.add_argument("--write", type=Path, help="update this Markdown file's perception section")
     pe.set_defaults(func=run_perception)
 

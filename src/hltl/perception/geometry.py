@@ -40,6 +40,64 @@ def pixel_of(point: F64, camera: Camera) -> tuple[float, float, float]:
     )
 
 
+def cylinder_outline(
+    center: tuple[float, float, float], radius: float, height: float, camera: Camera
+) -> F64 | None:
+    """The image outline (k × 2 pixel coordinates u, v, counter-clockwise) of an upright
+    cylinder: the convex hull of its two rims' projections (a convex solid projects to the hull
+    of its outline), unclipped by the image's border. None when any of it is behind the camera."""
+    from scipy.spatial import ConvexHull  # why: scipy costs start-up; only benchmarks need it
+
+    ang = np.linspace(0.0, 2.0 * math.pi, 96, endpoint=False)
+    ring = np.stack([np.cos(ang), np.sin(ang)], axis=1) * radius + np.asarray(center[:2])
+    rims = np.concatenate(
+        [
+            np.column_stack([ring, np.full(len(ring), center[2] + dz)])
+            for dz in (-height / 2, height / 2)
+        ]
+    )
+    pose = camera.pose
+    cam = (rims - pose[:3, 3]) @ pose[:3, :3]
+    if float(cam[:, 2].min()) <= 1e-6:
+        return None
+    uv = np.stack(
+        [
+            camera.fx * cam[:, 0] / cam[:, 2] + camera.cx,
+            camera.fy * cam[:, 1] / cam[:, 2] + camera.cy,
+        ],
+        axis=1,
+    )
+    return np.asarray(uv[ConvexHull(uv).vertices], dtype=float)
+
+
+def polygon_area(poly: F64) -> float:
+    """Area of a simple polygon (k × 2 vertices in order), by the shoelace formula."""
+    x, y = poly[:, 0], poly[:, 1]
+    return float(abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) / 2.0)
+
+
+def cylinder_silhouette(
+    center: tuple[float, float, float], radius: float, height: float, camera: Camera
+) -> Mask:
+    """The pixels (height × width) an upright cylinder covers in ``camera``'s image when
+    nothing hides it (:func:`cylinder_outline`; a pixel is inside when its centre is). All False
+    when any of it is behind the camera."""
+    out = np.zeros((camera.height, camera.width), dtype=bool)
+    hull = cylinder_outline(center, radius, height, camera)
+    if hull is None:
+        return out
+    lo = np.maximum(np.floor(hull.min(axis=0)).astype(int), 0)
+    hi = np.minimum(np.ceil(hull.max(axis=0)).astype(int), [camera.width - 1, camera.height - 1])
+    if np.any(hi < lo):
+        return out
+    u, v = np.meshgrid(np.arange(lo[0], hi[0] + 1), np.arange(lo[1], hi[1] + 1))
+    inside = np.ones(u.shape, dtype=bool)
+    for a, b in zip(hull, np.roll(hull, -1, axis=0), strict=True):
+        inside &= (b[0] - a[0]) * (v - a[1]) - (b[1] - a[1]) * (u - a[0]) >= 0
+    out[lo[1] : hi[1] + 1, lo[0] : hi[0] + 1] = inside
+    return out
+
+
 @dataclass(frozen=True, slots=True)
 class Cylinder:
     """An upright cylinder: ``center`` is the axis point at mid-height (world frame)."""

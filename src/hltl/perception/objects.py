@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
 
 from hltl.errors import PerceptionError
-from hltl.motion.grasps import CATEGORY_CYLINDERS
+from hltl.perception.carve import carve, hidden_share
 from hltl.perception.detection import (
     BASE_CLEARANCE,
     MIN_PIXELS,
@@ -23,8 +23,14 @@ from hltl.perception.detection import (
 )
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder, backproject, fit_cylinder
-from hltl.perception.learned import LearnedBackend
+from hltl.perception.learned import SIZES, LearnedBackend
 from hltl.world.scene import Scene
+
+# an object of known size with more than this share of its silhouette hidden (behind something
+# nearer, or outside the image) is placed by carving (hltl.perception.carve)
+PARTLY = 0.1
+# a partly hidden object whose axis the frame leaves more uncertain than this (m) is not reported
+MAX_SPREAD = 0.01
 
 
 class ObjectBackend(Protocol):
@@ -216,12 +222,14 @@ class Located:
     detection: Detection
     cylinder: Cylinder
     pixels: int
+    spread: float = 0.0  # a partly hidden object: how far its axis may be from the estimate (m)
 
 
 def size_prior(scene: Scene | None, label: str) -> tuple[float, float] | None:
     """(radius, height) of the object a label names, when its category has a known cylinder
-    (the motion layer's grasp model, which the 3D simulator also renders): a scene id names its
-    object's category, any other label is taken as a category. None when unknown."""
+    (:data:`hltl.perception.learned.SIZES`: the motion layer's grasp model where it has one,
+    else the size the 3D simulator renders the category at): a scene id names its object's
+    category, any other label is taken as a category. None when unknown."""
 
     category = label
     if scene is not None:
@@ -229,7 +237,7 @@ def size_prior(scene: Scene | None, label: str) -> tuple[float, float] | None:
             if o.id == label:
                 category = o.category
                 break
-    return CATEGORY_CYLINDERS.get(category.lower())
+    return SIZES.get(category.lower())
 
 
 def localize(
@@ -239,6 +247,7 @@ def localize(
     planes: Sequence[float] = (),
     scene: Scene | None = None,
     priors: bool = True,
+    max_spread: float | None = MAX_SPREAD,
 ) -> list[Located]:
     """Back-project each object detection and fit its cylinder (people are skipped here).
     ``planes`` are support heights: an object stands on the highest one just below its lowest
@@ -259,6 +268,19 @@ def localize(
             floor = max(below) if below else None
         size = size_prior(scene, det.label) if priors else None
         cyl = fit_cylinder(pts, floor, size, view)
-        if cyl is not None:
-            out.append(Located(det, cyl, len(pts)))
+        if cyl is None:
+            continue
+        spread = 0.0
+        if size is not None and hidden_share(frame.depth, camera, cyl.center, *size) > PARTLY:
+            # partly hidden: the axis from what is seen and what is seen past it
+            seen = det.mask & (frame.depth > 0)
+            bottom = cyl.center[2] - size[1] / 2
+            c = carve(frame.depth, seen, pts, camera, size[0], bottom, size[1], cyl.center[:2])
+            if c is None:
+                spread = math.inf
+            else:
+                cyl = replace(cyl, center=(*c.centre, cyl.center[2]))
+                spread = c.spread
+        if max_spread is None or spread <= max_spread:
+            out.append(Located(det, cyl, len(pts), spread))
     return out

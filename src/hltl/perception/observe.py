@@ -12,7 +12,7 @@ import numpy as np
 from hltl.perception.filtering import RestingFilter
 from hltl.perception.frames import Camera, Frame
 from hltl.perception.geometry import Cylinder
-from hltl.perception.objects import Located, ObjectBackend, localize, make_backend
+from hltl.perception.objects import MAX_SPREAD, Located, ObjectBackend, localize, make_backend
 from hltl.perception.people import DETECTORS, PeopleTracker, PersonObservation
 from hltl.world.scene import Scene, Vec3
 from hltl.world.state import ObjectStatus, WorldState
@@ -64,7 +64,8 @@ class Observation:
     latency: float  # seconds spent on this frame
     missing: tuple[str, ...] = ()  # scene objects not seen
     unmatched: tuple[str, ...] = ()  # labels of detections no scene object matches
-    ambiguous: tuple[str, ...] = ()  # "label: a or b" descriptions
+    # "label: a or b" descriptions, regions the backend could not decide, objects seen too little
+    ambiguous: tuple[str, ...] = ()
     lost: tuple[str, ...] = ()  # scene people without a live track
     notes: tuple[str, ...] = field(default=())
 
@@ -180,9 +181,20 @@ class Perceiver:
     def process(self, frame: Frame) -> Observation:
         t0 = time.perf_counter()
         dets = self.backend.detect(frame, self.camera)
-        located = localize(frame, self.camera, dets, self.backend.planes, self.scene)
+        located = localize(
+            frame, self.camera, dets, self.backend.planes, self.scene, max_spread=None
+        )
+        # a partly hidden object the frame cannot place within MAX_SPREAD is reported, not placed:
+        # it stays where the world last had it
+        unsure = [loc for loc in located if loc.spread > MAX_SPREAD]
+        located = [loc for loc in located if loc.spread <= MAX_SPREAD]
         objects, unmatched, ambiguous = match_objects(self.scene, located)
         ambiguous += self.backend.doubts  # regions the backend could not call person or object
+        ambiguous += [
+            f"{loc.detection.label}: seen too little to place ({loc.pixels} px, axis uncertain "
+            + ("beyond its size)" if math.isinf(loc.spread) else f"by {100 * loc.spread:.1f} cm)")
+            for loc in unsure
+        ]
         if self.smooth:  # a matched object's position over frames, gated (filtering.py)
             objects = [
                 o

@@ -526,9 +526,9 @@ class _Builder:
         radius, height, rgba = object_look(obj)
         body = self.spec.worldbody.add_body(name=f"object:{obj.id}", pos=list(obj.position))
         body.mocap = True
-        # the body is the grasp point; the cylinder stands on whatever is under it at the start
-        z0 = obj.position[2] - self._support_z(obj.position[0], obj.position[1])
-        below = min(max(z0, 0.0), height)
+        # the body is the grasp point; the cylinder stands on whatever is under it at the start,
+        # even when the point is above its top (a 4 cm book held at 5 cm used to float 1 cm up)
+        below = max(obj.position[2] - self._support_z(obj.position[0], obj.position[1]), 0.0)
         self.geom(
             body,
             type=mj.mjtGeom.mjGEOM_CYLINDER,
