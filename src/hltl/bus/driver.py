@@ -178,7 +178,8 @@ class BusCell:
         perceived: a perception node's observations to fuse into what the executor sees.
 
     Raises:
-        BusError: no node serves the cell, or it refuses the episode (another scene).
+        BusError: no node serves the cell, or it refuses the episode (another scene): when the
+            cell is first used (the reset's answer is read then), or at once in real time.
     """
 
     # commands ride the next step query (lockstep); a real-time cell sends each at once

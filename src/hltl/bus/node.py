@@ -288,6 +288,7 @@ class CellNode:
         # committed lockstep ticks not yet published to observers (the step thread publishes
         # them when no query waits: off the executor's critical path)
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
+        self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -400,21 +401,24 @@ class CellNode:
                 except Exception:  # withdrawn: the node closed
                     return
             try:
+                self._ahead_sent = False
                 stretch = self._on_step(query)
                 query = None if stretch is None else self._stream(query, *stretch)
-                if query is None:
+                if query is None and self._ahead_sent:
                     query = self._pause()
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
 
     def _pause(self) -> Any:
-        """After an answer (or the end of a streamed stretch), keep off the cores for up to
+        """After an answer with ticks ahead (or the end of a streamed stretch), while the
+        executor works on them, keep off the cores for up to
         ``PAUSE`` before the idle work (publishing to observers, the save for the next
         commands): the answer's way back (the node's Zenoh thread, then the executor's) and the
         executor working on it need them, and on two cores the node's idle work made the answer
         wait (docs/bus.md, "Where the time goes"). The next query, should it come meanwhile, is
         returned at once: it is served without the idle work (the save is then made after its
-        commands, as for a cell saved no other way)."""
+        commands, as for a cell saved no other way). After an answer without ticks ahead the
+        executor is soon back (the bare round trip: no pause)."""
         deadline = time.perf_counter() + PAUSE
         while time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
@@ -516,6 +520,7 @@ class CellNode:
             reply = dumps(answer)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
+            self._ahead_sent = "ahead" in answer
             # observers get the committed ticks (and this one, every report of it) once the
             # executor has its answer, when the node is idle
             self._later.append((ep, committed, False))
