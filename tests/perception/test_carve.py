@@ -199,3 +199,22 @@ def test_hidden_share_counts_what_the_image_border_cuts_off(du: float, dv: float
     expected = 1.0 - shown / polygon_area(hull)
     got = hidden_share(frame.depth, cam, solid.center, solid.radius, solid.height)
     assert got == pytest.approx(max(expected, 0.0), abs=0.05)
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.lists(st.tuples(st.floats(-10, 10), st.floats(-10, 10)), min_size=3, max_size=60))
+def test_convex_hull_holds_every_point_and_has_scipys_area(pts: list[tuple[float, float]]) -> None:
+    from scipy.spatial import ConvexHull, QhullError
+
+    from hltl.perception.geometry import convex_hull
+
+    p = np.asarray(pts, dtype=float)
+    try:
+        expected = float(ConvexHull(p).volume)
+    except QhullError:  # collinear or repeated points: no area
+        expected = 0.0
+    hull = convex_hull(p)
+    assert polygon_area(hull) == pytest.approx(expected, rel=1e-9, abs=1e-9)
+    for a, b in zip(hull, np.roll(hull, -1, axis=0), strict=True):  # every point on the left
+        cross = (b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])
+        assert cross.min() >= -1e-9
