@@ -348,6 +348,15 @@ def test_observers_receive_ros2_poses(loopback: Loopback) -> None:
         time.sleep(0.01)
     try:
         run = loopback.run(sc.scene, instruction=sc.instruction, seed=0, node=node)
+        # the node publishes every tick before it answers the episode's end, but delivery to the
+        # subscribers is asynchronous: wait for it, bounded, before withdrawing the node
+        deadline = time.monotonic() + 10.0
+        while time.monotonic() < deadline:
+            with lock:
+                heard = {k for k, _ in got["humans"] + got["hands"]}
+            if wanted <= heard:
+                break
+            time.sleep(0.01)
     finally:
         node.close()
     for s in subs:
