@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from hltl.errors import GroundingError
@@ -36,6 +36,13 @@ _PUTS = frozenset({"verb:put", "verb:place", "verb:set", "verb:leave", "verb:mov
 
 def _is(item: Item, *lemmas: str) -> bool:
     return item.kind in ("word", "punct") and item.lemma in lemmas
+
+
+def _past_dets(items: Sequence[Item], i: int) -> int:
+    """The first index from ``i`` on in ``items`` that is not a determiner."""
+    while i < len(items) and _is(items[i], "det"):
+        i += 1
+    return i
 
 
 def _objects(item: Item) -> bool:
@@ -718,8 +725,7 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
     j = k + 1
-    while j < len(items) and _is(items[j], "det"):
-        j += 1
+    j = _past_dets(items, j)
     if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
         what = items[j].text if j < len(items) else "nothing"
         raise GroundingError(
@@ -760,13 +766,11 @@ def _handed_on(items: list[Item], k: int, out: list[Item]) -> bool:
     follows it ('give the cup on the shelf to Bob'), in a clause whose verb hands over or
     brings (with 'put', 'for Bob' may only say whom it is for)."""
     j = k + 1
-    while j < len(items) and _is(items[j], "det"):
-        j += 1
+    j = _past_dets(items, j)
     if not (j + 1 < len(items) and _is_surface(items[j]) and _is(items[j + 1], "to")):
         return False
     n = j + 2
-    while n < len(items) and _is(items[n], "det"):
-        n += 1
+    n = _past_dets(items, n)
     if n >= len(items) or not _humans(items[n]):
         return False
     verb = next((x for x in reversed(out) if _is_verb_item(x)), None)
@@ -800,8 +804,7 @@ def _place_named(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
     j = k + 1
-    while j < len(items) and _is(items[j], "det"):
-        j += 1
+    j = _past_dets(items, j)
     if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
         return k
     return _place(items, k, out, lexicon)
@@ -827,8 +830,7 @@ def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) ->
     """'give Bob the cup on the shelf': the objects of the mention that start on the surface."""
     it = out[-1]
     j = k + 1
-    while j < len(items) and _is(items[j], "det"):
-        j += 1
+    j = _past_dets(items, j)
     kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
     if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
         return k  # not a surface: left to the grammar (which refuses a second recipient)
@@ -1052,8 +1054,7 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 quant = ""  # "either … or …" is the parser's
         if quant:
             j = k + 1
-            while j < len(items) and _is(items[j], "det"):
-                j += 1
+            j = _past_dets(items, j)
             if quant == "some" and j + 1 < len(items) and _objects(items[j + 1]):
                 kind, many = _quant_word(items[j])
                 if kind == "num":  # "one of the two mugs": there must be two
@@ -1555,8 +1556,7 @@ def _person_and_object(
     """'… and Carol the apple, actually no, Carol the cup': a person said before, with a new
     object, replaces the object that person was given (in the clause naming them last)."""
     o = r + 1
-    while o < len(after) and _is(after[o], "det"):
-        o += 1
+    o = _past_dets(after, o)
     if not _humans(after[r]) or o >= len(after) or not _objects(after[o]):
         return None
     tail = after[o + 1 :]
@@ -1574,8 +1574,7 @@ def _person_and_object(
     if at is None:
         return None
     n = at + 1
-    while n < len(before) and _is(before[n], "det"):
-        n += 1
+    n = _past_dets(before, n)
     if n >= len(before) or not _objects(before[n]):
         return None
     if n + 1 < len(before) and (
@@ -1951,8 +1950,7 @@ def _respectively(items: list[Item]) -> list[Item]:
 
 
 def _starts_objects(items: list[Item], k: int) -> bool:
-    while k < len(items) and _is(items[k], "det"):
-        k += 1
+    k = _past_dets(items, k)
     return k < len(items) and _objects(items[k])
 
 
@@ -1974,8 +1972,7 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     end += 1
                 clause = items[j + 1 : end]
                 n = 0
-                while n < len(clause) and _is(clause[n], "det"):
-                    n += 1
+                n = _past_dets(clause, n)
                 if (
                     len(clause) > n + 2
                     and clause[n].kind == "ent"
@@ -2250,8 +2247,7 @@ def _own_clause(clause: list[Item]) -> bool:
 
 
 def _starts_target(items: list[Item], k: int) -> bool:
-    while k < len(items) and _is(items[k], "det"):
-        k += 1
+    k = _past_dets(items, k)
     return k < len(items) and items[k].kind == "ent" and not _objects(items[k])
 
 
@@ -3272,8 +3268,7 @@ def _sources(items: list[Item]) -> list[Item]:
         it = items[k]
         source = _is(it, "from") or (it.kind == "word" and it.text.lower() == "off")
         j = k + 1
-        while j < len(items) and _is(items[j], "det"):
-            j += 1
+        j = _past_dets(items, j)
         prev = next((x for x in reversed(out) if not _is(x, "filler")), None)
         if (
             source
@@ -3519,8 +3514,7 @@ def _appositions(items: list[Item]) -> list[Item]:
         it = items[k]
         ids = {r.id for r in it.refs}
         j = k + 2
-        while j < len(items) and _is(items[j], "det"):
-            j += 1
+        j = _past_dets(items, j)
         narrows = (
             k + 1 < len(items)
             and _is(items[k + 1], ",")
@@ -3987,8 +3981,7 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
             n, j = wanted
             things = items[n + 1 : j]
             m = j + 1
-            while m < len(items) and _is(items[m], "det"):
-                m += 1
+            m = _past_dets(items, m)
             if (
                 any(_objects(y) for y in things)
                 and j + 1 < len(items)
@@ -4048,8 +4041,7 @@ def _wanted_done(items: list[Item]) -> list[Item]:
                 while at < len(items) and _is(items[at], "filler"):
                     at += 1
                 m = min(at + 1, len(items))
-                while m < len(items) and _is(items[m], "det"):
-                    m += 1
+                m = _past_dets(items, m)
                 target = m < len(items) and (
                     (items[m].kind == "ent" and not _objects(items[m]))
                     or (items[m].kind == "word" and items[m].text.lower() in _PERSON_PRONOUNS)
@@ -4094,8 +4086,7 @@ def _starting_on(ids: set[str], surface: str, lexicon: Lexicon) -> list[str]:
 
 
 def _starts_surface(items: list[Item], k: int) -> bool:
-    while k < len(items) and _is(items[k], "det"):
-        k += 1
+    k = _past_dets(items, k)
     return k < len(items) and _is_surface(items[k])
 
 
