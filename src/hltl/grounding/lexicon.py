@@ -1695,9 +1695,22 @@ def _in_phrase(tokens: list[Token], i: int) -> bool:
 def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
     for n in range(min(MAX_PHRASE, len(tokens) - i), 1, -1):
         lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
-        if lemma is not None:
+        if lemma is not None and not _pronoun_subject(tokens, i + n):
             return n, lemma
     return None
+
+
+_BE_NEXT = frozenset({"'s", "is", "was", "has", "'re", "are", "were", "had"})
+
+
+def _pronoun_subject(tokens: list[Token], end: int) -> bool:
+    """'… after that's there': 'that' before a verb is the subject of the clause (what the
+    condition is about), not the end of 'after that' (then)."""
+    return (
+        end < len(tokens)
+        and tokens[end - 1].low in ("that", "this")
+        and tokens[end].low in _BE_NEXT
+    )
 
 
 def _text(tokens: list[Token], i: int, n: int) -> str:
