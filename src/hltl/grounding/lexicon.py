@@ -1732,6 +1732,22 @@ def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
     )
 
 
+TITLE_SEX = {"mr": "m", "mister": "m", "mrs": "f", "ms": "f", "miss": "f", "missus": "f"}
+PRONOUN_SEX = {"he": "m", "him": "m", "his": "m", "she": "f", "her": "f", "hers": "f"}
+
+
+def title_sex(pid: str, lexicon: Lexicon) -> str | None:
+    """'m' or 'f' when the scene names person ``pid`` with a title ('Mr Lee'), else None (a
+    name alone says nothing the grounder may rely on)."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    sexes = {
+        TITLE_SEX[a.split()[0].lower().rstrip(".")]
+        for a in (human.name, *human.aliases)
+        if len(a.split()) > 1 and a.split()[0].lower().rstrip(".") in TITLE_SEX
+    }
+    return next(iter(sexes)) if len(sexes) == 1 else None
+
+
 def person_name(pid: str, lexicon: Lexicon) -> str:
     """'Person B (Mr Lee, patient)': the label, then the other names the scene gives."""
     human = next(h for h in lexicon.scene.humans if h.id == pid)

@@ -64,7 +64,8 @@ def parse_instruction(
 
     What the grammar refuses is rewritten by the normaliser (normalise.py: wrappers, asides,
     remarks, notes, order said apart) and read again; if that is refused too, the first refusal
-    stands (``normalise=False`` reads the text as it is only).
+    stands, unless only the second names the readings of an unclear name or pronoun
+    (``normalise=False`` reads the text as it is only).
 
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
@@ -80,8 +81,17 @@ def parse_instruction(
             raise
         try:
             return _read(plain, scene, lexicon)
-        except GroundingError:
+        except GroundingError as rewritten:
+            if _readings(rewritten) and not _readings(refused):
+                # "The patient is to be given the jug": the rewrite got as far as the name, and
+                # its refusal says which readings there are (the first only that it cannot parse)
+                raise rewritten from None
             raise refused from None
+
+
+def _readings(error: GroundingError) -> bool:
+    """Whether a refusal lists the readings of an unclear name or pronoun."""
+    return any(w in str(error) for w in ("it could be ", "it could mean ", "it cannot mean "))
 
 
 def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
@@ -443,6 +453,18 @@ class _Parser:
                 main = self.coord(seg[cut + 1 :] if _is(seg[cut], ",") else seg[cut:])
                 result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
                 continue
+            if (
+                result is not None
+                and conn in ("after", "once")
+                and split is None
+                and any(_is(x, ",") and not _only_fillers(seg[n + 1 :]) for n, x in enumerate(seg))
+            ):
+                # "…, and once Bob has it, Alice the apple, Carol the chips": the condition would
+                # swallow the request after it (read as one more thing to wait for)
+                raise GroundingError(
+                    f"in {_text(items)!r} it is unclear where the {conn!r} part ends: put it "
+                    f"first ('{conn} …, …') or split the sentence"
+                )
             self._segment += 1
             start = len(self.frags)
             node = self.coord(seg)
@@ -1559,7 +1581,8 @@ def _plain_command(seg: list[Item], split: int) -> bool:
 
 def _main_clause_start(items: list[Item]) -> int | None:
     """Where the main clause of 'after X, Y' starts: at 'then', or a comma before a clause."""
-    commas = [k for k, it in enumerate(items) if _is(it, ",")]
+    # a comma before politeness alone (", thanks" at the end) starts no clause
+    commas = [k for k, it in enumerate(items) if _is(it, ",") and not _only_fillers(items[k + 1 :])]
     for k in range(1, len(items)):
         if _is(items[k], "then"):
             return k
