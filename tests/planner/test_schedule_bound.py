@@ -161,13 +161,15 @@ def test_step_bound_sees_that_a_step_lasts_its_longest_instance() -> None:
 def test_step_bound_sees_where_a_loop_takes_the_object() -> None:
     # a 4-robot random cell whose optimum is 4.5 s (the independent CP-SAT oracle): a split
     # session that parks its object for free (no holder in between, the loop's steps as short
-    # as any) let the step bound stop at 4.4 s (session 8's model)
+    # as any) let the step bound stop at 4.4 s (session 8's model). Both the full model (the
+    # holder, the loop's step lengths) and, since session 12, the counting rows (the loop's
+    # two instances fill steps of the robot's own, and count in its load) rule that out
     c = delivery_cell("random", 4, 1)
     optimum = cpsat_makespan(c.scene, c.spec, time_limit=DEADLINE_S)
     assert optimum is not None
     problem, unit, _, by_steps = _cell_bounds("random", 4, 1)
     assert by_steps == to_ticks(optimum)
-    # one unit below it, session 8's model (holders=False) still finds a schedule
+    # one unit below it, neither model finds a schedule
     s = _Search(problem)
     node = problem.start()
     graph = s.heuristic.graph
@@ -175,7 +177,7 @@ def test_step_bound_sees_where_a_loop_takes_the_object() -> None:
     below = by_steps // unit - 1
     deadline = time.perf_counter() + DEADLINE_S
     weak = schedule.relaxed_steps(problem, graph, node, tgts, below, deadline, holders=False)
-    assert isinstance(weak, tuple)
+    assert weak is False
     assert schedule.relaxed_steps(problem, graph, node, tgts, below, deadline) is False
 
 

@@ -379,6 +379,17 @@ _Stamps = list[tuple[Any, Any]]
 
 
 @dataclass(frozen=True, slots=True)
+class _Job:
+    """Instances of one robot (or on one object's path) that the model counts together: their
+    least summed duration (ticks, in time units), a lower bound on each one's, and the literal
+    "they happen"."""
+
+    total: int
+    each: tuple[int, ...]
+    used: Any
+
+
+@dataclass(frozen=True, slots=True)
 class _Slot:
     """An instance as the model places it on an object's path: whether the path uses it,
     where it sits on the axis (a time in units, or a step), how far along the axis it reaches
@@ -508,7 +519,10 @@ class _Steps(_Axis):
                 prev = d
             m.add(self.start[k + 1] == self.start[k] + length)
         self.per_robot_step: dict[tuple[int, int], list[Any]] = {}
-        self.work: list[list[tuple[int, Any]]] = [[] for _ in problem.robots]  # (duration, used)
+        self.lengths = lengths
+        # each robot's instances, and each target object's path (``finish``)
+        self.work: list[list[_Job]] = [[] for _ in problem.robots]
+        self.paths: dict[int, list[_Job]] = {}
         # every instance placed, with its step literals: the schedule is read from them
         self.chosen: list[tuple[Instance, list[tuple[int, Any]]]] = []
 
@@ -556,7 +570,8 @@ class _Steps(_Axis):
         m.add(u == sum(x for _, x in xs))
         for r in range(len(self.problem.robots)):
             if i.executors >> r & 1:
-                self.work[r].append((d, u))
+                self.work[r].append(_Job(d, (d,), u))
+        self.paths.setdefault(i.obj, []).append(_Job(d, (d,), u))
         st = m.new_int_var(first, last, "")
         tm = m.new_int_var(0, self.level, "")  # when its step starts
         for k, x in xs:
@@ -595,6 +610,11 @@ class _Steps(_Axis):
         for u, when in departures:
             m.add(leaves == when).only_enforce_if(u)
         m.add(arrived + (loop[0] + loop[1]) // unit <= leaves).only_enforce_if(split)
+        # the way out and the way back are two more instances of r's, each in a step of its
+        # own: r's load, and its steps (``finish``)
+        self.work[r].append(
+            _Job((loop[0] + loop[1]) // unit, (loop[0] // unit, loop[1] // unit), split)
+        )
         if not self.holders:
             return out
         # and the steps e and f last at least the quickest way out and the quickest way back
@@ -604,9 +624,6 @@ class _Steps(_Axis):
             for k, b in enumerate(which):
                 m.add(at == k).only_enforce_if(b)
                 m.add_implication(b, self.at_least[k][d] if d > self.d_min else self.busy[k])
-        # the way out and the way back are two more instances of r's, each in a step of its
-        # own: r's load
-        self.work[r].append(((loop[0] + loop[1]) // unit, split))
         # where the way out takes it (a robot's hand, or a place no robot holds), from where it
         # can go on without its atom happening: a robot there holds it in step e and acts on
         # it again in a later one, so it holds it in [e, e + 1], and does two instances on it
@@ -632,7 +649,7 @@ class _Steps(_Axis):
         for who, (work, z) in taken.items():
             if who is not None:
                 out.append((who, m.new_optional_fixed_size_interval_var(e, 2, z, "")))
-                self.work[who].append((work, z))
+                self.work[who].append(_Job(work, (self.d_min, self.d_min), z))
         return out
 
     def finish(self) -> None:
@@ -640,11 +657,28 @@ class _Steps(_Axis):
         for lits in self.per_robot_step.values():
             if len(lits) > 1:
                 m.add_at_most_one(lits)
-        # implied (each of a robot's instances fills a step of its own, lasting at least it),
-        # but stated: it gives CP-SAT's linear relaxation the per-robot load
-        for jobs in self.work:
-            if len(jobs) > 1:
-                m.add(sum(d * u for d, u in jobs) <= self.level)
+        # Counting rows (docs/planner.md, "Counting rows"): a robot's instances, and the
+        # instances of one object's path, each fill a non-empty step of their own that lasts at
+        # least the instance, and every other non-empty step lasts at least d_min. So, with B
+        # the non-empty steps and A_d the steps of at least d: they are at most B, those of at
+        # least d at most A_d, and their durations plus d_min per other non-empty step at most
+        # the level. Mostly implied by the step literals, but CP-SAT's linear relaxation sees
+        # them only when stated (and a loop's two instances have no step literals of their own)
+        dm = self.d_min
+        steps = sum(self.busy)
+        longer = {d: sum(row[d] for row in self.at_least) for d in self.lengths}
+        for jobs in [*self.work, *self.paths.values()]:
+            if not jobs:
+                continue
+            m.add(sum(j.total * j.used for j in jobs) <= self.level)
+            m.add(sum(len(j.each) * j.used for j in jobs) <= steps)
+            m.add(
+                sum((j.total - len(j.each) * dm) * j.used for j in jobs) + dm * steps <= self.level
+            )
+            for d in self.lengths:
+                at_least_d = [(sum(e >= d for e in j.each), j.used) for j in jobs]
+                if any(n for n, _ in at_least_d):
+                    m.add(sum(n * u for n, u in at_least_d if n) <= longer[d])
 
 
 def _relaxation(
