@@ -131,6 +131,13 @@ def _orders(spec: HSpec) -> list[tuple[Atom, Atom]]:
     return out
 
 
+# the step model's climb skips levels while CP-SAT proves their "no"s in less than this many
+# deterministic seconds (a load-independent measure: 0.25 is about 0.4 s of CPU on an idle
+# core), at most MAX_SKIP at a time (``_shave``)
+CHEAP_NO = 0.25
+MAX_SKIP = 4
+
+
 def schedule_bound(
     problem: Problem,
     graph: RelaxedGraph,
@@ -203,9 +210,23 @@ def _shave(
     whole: a restriction of the full model (its "no" proves nothing) that finds a schedule far
     more cheaply where there is one. Where it finds one the full model has it too, so the level
     is the full model's optimum without asking it (and where that schedule replays as a plan,
-    the plan is optimal); only where it finds none is the full model asked."""
+    the plan is optimal); only where it finds none is the full model asked.
+
+    Without it, the step model skips levels while its "no"s are cheap: after a "no" that took
+    CP-SAT less than ``CHEAP_NO`` deterministic seconds the next level asked is twice as far
+    up as the last step (at most ``MAX_SKIP`` levels), after a dearer one the next level.
+    A "no" at a level is a "no" at every level below it, so the skipped ones need no asking
+    unless a schedule turns up above them: then they are asked one at a time from the lowest,
+    and the first schedule found is the optimum (docs/planner.md, "Which levels are asked")."""
     unit = time_unit(problem)
-    while upper is None or level * unit < upper:
+    top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
+    proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
+    skip = 1 if steps and not whole_first else 0  # 0: one level at a time
+    above: tuple[int, ScheduleBound] | None = None  # a schedule found past skipped levels
+    spent: list[float] = []
+    while top is None or level < top:
+        if above is not None and level == above[0]:
+            return above[1]
         if whole_first:
             whole = relaxed_steps(
                 problem, graph, node, tgts, level, deadline, seed=seed, whole=True
@@ -214,19 +235,38 @@ def _shave(
                 return ScheduleBound(max(floor, level * unit), False, len(tgts))
             if isinstance(whole, tuple):
                 return ScheduleBound(max(floor, level * unit), True, len(tgts), whole)
+        asked = len(spent)
         if steps:
             found = relaxed_steps(
-                problem, graph, node, tgts, level, deadline, seed=seed, holders=not weak
+                problem,
+                graph,
+                node,
+                tgts,
+                level,
+                deadline,
+                seed=seed,
+                holders=not weak,
+                spent=spent,
             )
         else:
             found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
         if found is None:  # out of time
-            return ScheduleBound(max(floor, level * unit), False, len(tgts))
+            return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
         if found is not False:
             got = None if found is True else found
-            return ScheduleBound(max(floor, level * unit), True, len(tgts), got)
-        level += 1
-    return ScheduleBound(max(floor, upper), True, len(tgts))
+            res = ScheduleBound(max(floor, level * unit), True, len(tgts), got)
+            if level == proved + 1:
+                return res
+            # levels were skipped below this one: ask them, one at a time from the lowest
+            above, level, skip = (level, res), proved + 1, 0
+            continue
+        proved = level
+        if skip:
+            skip = min(2 * skip, MAX_SKIP) if sum(spent[asked:]) < CHEAP_NO else 1
+        level = proved + max(1, skip)
+        if top is not None and level >= top:
+            level = max(proved + 1, top - 1)
+    return ScheduleBound(max(floor, upper or 0), True, len(tgts))
 
 
 def _bisect(
@@ -315,13 +355,15 @@ def relaxed_steps(
     seed: int = 0,
     whole: bool = False,
     holders: bool = True,
+    spent: list[float] | None = None,
 ) -> tuple[tuple[Instance, ...], ...] | bool | None:
     """A step-indexed relaxed schedule that makes every target happen by ``level`` time units
     (``time_unit``), as its non-empty steps; False when CP-SAT proved there is none, None when
     it could not tell before ``deadline``. docs/planner.md, "Step bound".
 
     With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
-    nothing, but its schedules are more often plans). Without ``holders`` a split session
+    nothing, but its schedules are more often plans). CP-SAT's deterministic time is appended
+    to ``spent``. Without ``holders`` a split session
     keeps of its loop only the fixed runs and the time (session 8's model: a relaxation of this
     one, docs/planner.md "Loops").
 
@@ -344,7 +386,7 @@ def relaxed_steps(
     axis = _Steps(cp_model.CpModel(), p, level, unit, whole, holders)
     if not _relaxation(p, graph, node, tgts, axis):
         return False
-    solver = _solve(axis, deadline, seed)
+    solver = _solve(axis, deadline, seed, spent)
     if solver is None or solver is False:
         return solver
     out: list[list[Instance]] = [[] for _ in range(axis.horizon)]
@@ -355,15 +397,18 @@ def relaxed_steps(
     return tuple(tuple(step) for step in out if step)
 
 
-def _solve(axis: _Axis, deadline: float, seed: int) -> Any:
+def _solve(axis: _Axis, deadline: float, seed: int, spent: list[float] | None = None) -> Any:
     """CP-SAT on the model built on ``axis``: its solver when it found a schedule, False when
-    it proved there is none, None when it could not tell before ``deadline``."""
+    it proved there is none, None when it could not tell before ``deadline``. CP-SAT's
+    deterministic time is appended to ``spent``."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     solved = solve_until(axis.model, deadline, seed)
     if solved is None:
         return None
     solver, status = solved
+    if spent is not None:
+        spent.append(solver.deterministic_time)
     if status == cp_model.INFEASIBLE:
         return False
     if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
