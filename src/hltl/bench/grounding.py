@@ -47,7 +47,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # of each cause of blind9's misses and of its wrong reading, written after the changes for them
 # and measured once before the fixes it motivated; a tuning part), blind10 (written in session 11
 # by another engineer and committed alone, never opened by the engineer who changed the grounder
-# before its one measurement in session 12; tests do not assert it).
+# before its one measurement in session 12; tuned on in session 12), causes12 (session 12: fresh
+# variants of each cause of blind10's misses and of its wrong reading, written after the changes
+# for them and measured once before the fixes it motivated; a tuning part).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -67,6 +69,7 @@ PARTS = (
     "blind9",
     "causes11",
     "blind10",
+    "causes12",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

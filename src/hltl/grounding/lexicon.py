@@ -917,6 +917,8 @@ WORDS: dict[str, str] = {
     "totally": "filler",
     "absolutely": "filler",
     "simply": "filler",
+    "basically": "filler",  # "Okay so basically just give Alice the bottle"
+    "literally": "filler",
     "still": "filler",
     "mate": "filler",
     "buddy": "filler",
@@ -1089,6 +1091,8 @@ DROPPED_FILLERS = frozenset(
         "totally",
         "absolutely",
         "simply",
+        "basically",
+        "literally",
         "still",
         "anyway",
         "anyways",
@@ -1259,7 +1263,8 @@ class Lexicon:
                 found = [e for e in found if e[1] == tokens[i].text]
                 if not found:
                     continue
-            return n, _best(found)
+            longer = self._typo_after(tokens, i, n, found)
+            return longer if longer is not None else (n, _best(found))
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
@@ -1270,6 +1275,23 @@ class Lexicon:
         if typo is not None:
             return 1, typo
         return None
+
+    def _typo_after(
+        self, tokens: list[Token], i: int, n: int, found: list[tuple[Ref, str, bool]]
+    ) -> tuple[int, tuple[Ref, ...]] | None:
+        """A longer name of the same entity with its next word mistyped ("water bottlle": not
+        'water' and then 'bottlle', two names of the bottle), else None."""
+        if i + n >= len(tokens) or n >= self.max_len:
+            return None
+        nxt = tokens[i + n].low
+        if len(nxt) < 3 or not nxt.isalpha() or nxt in WORDS or nxt in VERBS:
+            return None
+        phrase = self._misspelt_phrase(tokens, i)
+        if phrase is None or phrase[0] <= n:
+            return None
+        if not {r.id for r in phrase[1]} <= {r.id for r, _, _ in found}:
+            return None
+        return phrase
 
     def lookup(self, phrase: str) -> tuple[Ref, ...] | None:
         """The entities a whole phrase names ("blue mug"), else None."""
