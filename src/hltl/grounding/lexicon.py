@@ -1182,6 +1182,11 @@ class Lexicon:
 
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
+        # texts lexed while one instruction is read (the normaliser looks at the same words in
+        # many of its steps); emptied by forget() when a new instruction starts
+        self._lexed: dict[str, tuple[Item, ...]] = {}
+        self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
+        self._index: dict[tuple[int, str], list[int]] = {}
         self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
         # phrase -> (ref, spelling, strong): strong for ids, names and aliases, weak for categories
         self._phrases: dict[tuple[str, ...], list[tuple[Ref, str, bool]]] = {}
@@ -1293,6 +1298,16 @@ class Lexicon:
             return None
         return phrase
 
+    def forget(self) -> None:
+        """Drop the texts lexed so far (called when a new instruction starts)."""
+        self._lexed.clear()
+
+    def lexed(self, text: str) -> tuple[Item, ...] | None:
+        return self._lexed.get(text)
+
+    def remember(self, text: str, items: tuple[Item, ...]) -> None:
+        self._lexed[text] = items
+
     def lookup(self, phrase: str) -> tuple[Ref, ...] | None:
         """The entities a whole phrase names ("blue mug"), else None."""
         found = self._phrases.get(_words(phrase))
@@ -1363,9 +1378,13 @@ class Lexicon:
         """
         found: list[tuple[int, tuple[Ref, ...]]] = []
         typed = [t.low for t in tokens[i : i + self.max_len]]  # once, not per name
-        for key, entries in self._phrases.items():
+        # a name with one word mistyped has its other words exact: only names sharing a word
+        # at its place with what was typed are candidates (in the order the names were added)
+        index = self._by_word()
+        near = sorted({n for k, w in enumerate(typed) for n in index.get((k, w), ())})
+        for key, entries in (self._multi[n] for n in near):
             n = len(key)
-            if n < 2 or n > len(typed):
+            if n > len(typed):
                 continue
             diff = [k for k in range(n) if typed[k] != key[k]]
             if len(diff) != 1:
@@ -1378,6 +1397,15 @@ class Lexicon:
         if len(ids) != 1 or len({n for n, _ in found}) != 1:
             return None
         return found[0]
+
+    def _by_word(self) -> dict[tuple[int, str], list[int]]:
+        """The names of several words, each under (place, word) for each of its words."""
+        if not self._index:
+            self._multi = [(k, e) for k, e in self._phrases.items() if len(k) >= 2]
+            for n, (key, _) in enumerate(self._multi):
+                for k, w in enumerate(key):
+                    self._index.setdefault((k, w), []).append(n)
+        return self._index
 
     def misspelt_keyword(self, word: str) -> str | None:
         """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
@@ -1479,6 +1507,14 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
+    known = lexicon.lexed(text)
+    if known is None:
+        known = tuple(_lex(text, lexicon))
+        lexicon.remember(text, known)
+    return list(known)
+
+
+def _lex(text: str, lexicon: Lexicon) -> list[Item]:
     tokens = _shared_nouns(
         _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon), lexicon
     )
