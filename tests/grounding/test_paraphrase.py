@@ -13,6 +13,9 @@ from hltl.bench.grounding import (
     PARTS,
     Corpus,
     Entry,
+    Outcome,
+    Score,
+    format_scores,
     judge,
     load_corpus,
     offline_tree,
@@ -264,3 +267,15 @@ def test_a_common_word_is_not_a_typo_but_the_refusal_suggests_the_name() -> None
 def test_questions_are_not_requests() -> None:
     with pytest.raises(GroundingError, match="is a question, not a request"):
         parse_instruction("Is the apple on the shelf?", _cell())
+
+
+def test_the_table_reports_wall_and_cpu_medians() -> None:
+    entry = Entry("cell", "give Bob the chips", parse_expectation("chips>B"))
+    outs = (
+        Outcome(entry, "exact", 3.0, "", 1.0),
+        Outcome(entry, "wrong", 9.0, "chips>A", 2.0),
+        Outcome(entry, "refused", 30.0, "error", 5.0),
+    )
+    table = format_scores([Score("part", outs)])
+    assert table.splitlines()[0].endswith("| median ms | median CPU ms |")
+    assert table.splitlines()[2] == "| part | 3 | 33.3 % (1) | 1 | 0 | 1 | 9.00 | 2.00 |"
