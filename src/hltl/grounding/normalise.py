@@ -1006,9 +1006,25 @@ def _fronted(text: str, lexicon: Lexicon) -> str:
     if not _ids(rest, lexicon, "object") and not re.search(r"\b(?:everything|all)\b", rest, _F):
         return text
     word = m.group(1).lower()
-    if word in ("not", "but not"):
-        return f"{rest}, not {left}{m.group(4)}"
-    return f"{rest} {word} {left}{m.group(4)}"
+    contrast = word in ("not", "but not")
+    said = f"{rest}, not {left}{m.group(4)}" if contrast else f"{rest} {word} {left}{m.group(4)}"
+    # the words put after the request must be read as leaving out of it, and nothing else ('…
+    # Jess after all except for the small spanner' would leave it out of 'all')
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        whole = set(tasks(parse_instruction(rest, lexicon.scene, lexicon)))
+        kept = set(tasks(parse_instruction(said, lexicon.scene, lexicon)))
+    except GroundingError:
+        return text
+    dropped = {t.obj for t in whole - kept}
+    named = _ids(left, lexicon, "object")
+    if not kept <= whole or (contrast and dropped):
+        return text
+    if not contrast and (not dropped or (dropped - named if named else len(dropped) != 1)):
+        return text
+    return said
 
 
 def _keeps_out(text: str, ids: set[str], lexicon: Lexicon) -> bool:
