@@ -448,3 +448,44 @@ def test_wrong_readings_on_main_found_by_the_filler_fuzz(
 
 def test_a_reason_with_so_still_reads() -> None:
     assert_means("Give Bob the chips so he can eat", "chips>B", CELL)
+
+
+# -- how more people type and talk (session-12 probes across scenes, not from any corpus) --------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("give the chips 2 bob", "chips>B", CELL),  # '2' / '4' before a person: to / for
+        ("cup 4 alice pls", "cup>A", CELL),
+        ("give 2 mugs 2 carol", "mug_red>C & mug_blue>C", CELL),  # the first '2' counts
+        ("Mind passing Carol the bottle?", "bottle>C", CELL),
+        ("Alice would like to have the cup", "cup>A", CELL),
+        ("Bob has asked for the chips twice now", "chips>B", CELL),
+        ("Chuck the wipes over to Grandad", "wipes>B", NURSERY),
+        ("Shove the small box onto the belt", "box_small@conveyor", DEPOT),
+        ("Can Sam borrow the blue pen?", "pen_blue>B", OFFICE),
+        ("Lena, the tongs are for you", "tongs>B", KITCHEN),
+        ("Lena, you can have the tongs", "tongs>B", KITCHEN),
+        ("Miss, Zoe needs the glue", "glue>C", CLASSROOM),
+        ("Zoe hasn't got a ruler, can she have one", "ruler>C", CLASSROOM),
+        ("Noah can't find his book, give him the red one", "book_red>B", CLASSROOM),
+        ("Zoe has lost her glue, can she have it", "glue>C", CLASSROOM),
+    ],
+)
+def test_how_more_people_ask(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Could you borrow the blue pen for Sam", OFFICE),  # the robot borrowing: not read
+        ("Lena, Marco, the tongs are for you", KITCHEN),  # which of them?
+        ("Alice would like to get the cup to Bob", CELL),  # who gets it?
+        ("Zoe hasn't got a ruler, give her the glue", CLASSROOM),  # the lack asks nothing said
+        ("Bob hasn't got the cup, give it to Carol", CELL),  # it: the cup, but for Carol?
+    ],
+)
+def test_near_forms_of_how_more_people_ask_are_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

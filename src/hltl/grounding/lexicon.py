@@ -109,6 +109,8 @@ for _lemma, _forms in {
     "carry": ("carries", "carrying", "carried"),
     "move": ("moves", "moving", "moved"),
     "pop": ("pops", "popping", "popped"),  # "pop the apple over to Carol"
+    "chuck": ("chucks", "chucking", "chucked"),  # "chuck the wipes over to Grandad"
+    "toss": ("tosses", "tossing", "tossed"),
     "go": ("goes", "going", "went", "gone"),
     "transfer": ("transfers", "transferring", "transferred"),
     "shift": ("shifts", "shifting", "shifted"),
@@ -130,6 +132,7 @@ for _lemma, _forms in {
     "stow": ("stows", "stowing", "stowed"),
     "park": ("parks", "parking", "parked"),
     "plonk": ("plonks", "plonking", "plonked"),
+    "shove": ("shoves", "shoving", "shoved"),  # "shove the small box onto the belt"
     "position": ("positions", "positioning", "positioned"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():

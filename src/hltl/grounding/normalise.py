@@ -171,6 +171,12 @@ def _wrappers(text: str, _lexicon: Lexicon) -> str:
 # -- words -------------------------------------------------------------------------------------
 
 _WORDS: tuple[tuple[str, str], ...] = (
+    # "Bob has asked for the chips twice now": how often he asked, not how often to hand over
+    (
+        r"\b(asked for [^.;!?]*?) (?:twice|three times|several times|a few times|again|already)"
+        r"(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
+        r"\1",
+    ),
     (r",?\s*\b(?:sharpish|pronto|asap|chop chop|on the double)\b", ""),
     (
         r"\s*(?:\bis|'s|\bare|'re|\bwas|\bhas been|'s been|\bhave been|'ve been) (?:still )?"
@@ -323,6 +329,19 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"because |as )?(?:she|he|they)(?:'s| is| has|'ve| have| are|'re| already)\b[^,;.!?]*?,\s*"
         r"(?=(?:take|give|hand|bring|put|place|pass|send)\b)",
         r"\1, ",
+    ),
+    # "Can Sam borrow the blue pen?": may he have it
+    (r"\b(can|could|may|might) (?!(?:you|we|i|u)\b)(\w+(?: \w+)?) borrow\b", r"\1 \2 have"),
+    # "Miss, Zoe needs the glue": the one spoken to by a title alone (when no scene name)
+    (r"^(?:miss|sir|madam|ma'am|mister|missus)\s*[,:]\s*", ""),
+    # "Mind passing Carol the bottle?": would you mind
+    (r"(^|(?<=[.;!?])\s*)mind (?=\w+ing\b)", r"\1would you mind "),
+    # "Alice would like to have the cup": would like the cup (no place or person after it)
+    (
+        r"\b(would like|'d like|would love|'d love|wants|want|needs|need) to (?:have|get|receive) "
+        r"(?=(?:the|a|an|some|both|one|all|either|any)\b(?:(?!\b(?:to|on|onto|in|into|for)\b)"
+        r"[^.;!?])*(?:[.;!?]|$))",
+        r"\1 ",
     ),
     # "Noah is wanting the ruler for his maths": what it is for, when no name is in it
     (
@@ -1311,6 +1330,56 @@ def _run_on(text: str, _lexicon: Lexicon) -> str:
     return f"{before}. {m.group(1)} {text[m.end() :]}"
 
 
+def _texting(text: str, lexicon: Lexicon) -> str:
+    """'give the chips 2 bob', 'cup 4 alice': '2' and '4' typed for 'to' and 'for', only right
+    before the name of a person (a number before an object counts it)."""
+    if not re.search(r"\b[24] ", text):
+        return text
+    for h in lexicon.scene.humans:
+        for alias in (*h.aliases, h.name):
+            text = _sub(rf"\b2 (?={re.escape(alias)}\b)", "to ", text)
+            text = _sub(rf"\b4 (?={re.escape(alias)}\b)", "for ", text)
+    return text
+
+
+def _vocative(text: str, lexicon: Lexicon) -> str:
+    """'Lena, the tongs are for you': the person spoken to first is the 'you' of the request
+    ('for you', 'you can have'), when the words before the comma name that person only."""
+    m = re.match(r"^([^,;:.!?]+?),\s*(.+)$", text.strip())
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    rest = m.group(2)
+    if not re.search(r"\bfor you\b|\byou (?:can|could|may) have\b", rest, _F):
+        return text
+    who = m.group(1)
+    rest = _sub(r"\bfor you\b", f"for {who}", rest)
+    return _sub(r"\byou (can|could|may) have\b", rf"{who} \1 have", rest)
+
+
+def _lacks(text: str, lexicon: Lexicon) -> str:
+    """'Zoe hasn't got a ruler, can she have one', "Noah can't find his book, give him the red
+    one": what a person lacks, then a request whose 'one' / 'it' / 'the red one' is that kind
+    of object and whose pronoun is that person: the request with them said."""
+    m = re.match(
+        r"^([^,;.!?]+?) (?:hasn't got|has not got|hasn't|has no|doesn't have|does not have|can't "
+        r"find|cannot find|can not find|has lost|lost|forgot|has forgotten) (?:his |her |their |a "
+        r"|an |any |the )?([\w ]+?),\s*(?:so\s+)?(.+)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    who, kind, rest = m.group(1), m.group(2), m.group(3)
+    if not _only_kind(kind, lexicon, "object") or not re.search(r"\b(?:one|it)\b", rest, _F):
+        return text
+    if _ids(rest, lexicon, "human") - _ids(who, lexicon, "human"):
+        return text  # "Bob hasn't got the cup, give it to Carol": the lack is not why
+    rest = _sub(r"\bthe (\w+) one\b", rf"the \1 {kind}", rest)
+    rest = _sub(r"(?<!\bthe )\bone\b", f"a {kind}", rest)
+    rest = _sub(r"\bit\b", f"the {kind}", rest)
+    return _sub(r"\b(?:he|she|him|her|they|them)\b", who, rest)
+
+
 def _thanks(text: str, _lexicon: Lexicon) -> str:
     """'Ruler. Zoe. Thanks.': a last sentence of thanks asks nothing (taken off first, so that
     what stands before it is read as said)."""
@@ -1447,6 +1516,9 @@ def _ranked(text: str, _lexicon: Lexicon) -> str:
 
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _thanks,
+    _lacks,
+    _texting,
+    _vocative,
     _run_on,
     _leave_it,
     _reordered,
