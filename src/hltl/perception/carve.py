@@ -194,24 +194,13 @@ def carve(
 
     free, ok = consistent(cost, res)
     # the region refined on the FINE lattice through the caller's fit: seeded with the caller's
-    # fit, the consistent grid axes and the fine neighbourhood of the best one, then grown from
-    # every consistent axis to its eight neighbours until none is left unscored; the best, hence
-    # the region, is that of every axis scored (grid and lattice)
+    # fit and the consistent grid axes, then grown from every consistent axis to its eight
+    # neighbours until none is left unscored; the best, hence the region, is that of every axis
+    # scored (grid and lattice)
     st = np.asarray(start, dtype=float)
-    best = cands[int(np.argmin(np.where(free, res, np.inf)))]
-    box = np.arange(-round(STEP / FINE), round(STEP / FINE) + 1)
-    bx, by = np.meshgrid(box, box)
-    around = np.column_stack([bx.ravel(), by.ravel()])
-    ring = around[np.abs(around).max(axis=1) == 1]
+    ring = np.asarray([(i, j) for i in (-1, 0, 1) for j in (-1, 0, 1) if i or j], dtype=np.int64)
     todo = np.unique(
-        np.vstack(
-            [
-                np.zeros((1, 2)),
-                np.rint((cands[ok] - st) / FINE),
-                np.rint((best - st) / FINE) + around,
-            ]
-        ).astype(np.int64),
-        axis=0,
+        np.vstack([np.zeros((1, 2)), np.rint((cands[ok] - st) / FINE)]).astype(np.int64), axis=0
     )
     # every axis scored: the grid's, then the lattice's (``lattice``: their indices)
     axes, lattice = cands, np.zeros((0, 2), dtype=np.int64)
