@@ -90,7 +90,7 @@ def _serve(endpoint: str, episodes: int, ready: Any, stop: Any, out: str) -> Non
         "_serve_steps",
     ):
         setattr(N.CellNode, name, _exclusive(acct, local, getattr(N.CellNode, name), name))
-    for name in ("_saver", "world_to_wire", "world_changes", "dumps", "loads", "_compact"):
+    for name in ("_saver", "world_to_wire", "encode_answer", "dumps", "loads"):
         setattr(N, name, _exclusive(acct, local, getattr(N, name), name))
     with open_session(BusConfig(listen=(endpoint,))) as session:
         nodes = [
