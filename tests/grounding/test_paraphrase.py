@@ -59,6 +59,24 @@ KNOWN_MISSES = frozenset(
         # knife") may ask for it or pick someone out by it, so it is not dropped
         "Bob is upset about the cup, so give him the apple",
         "Lena, who has the knife, wants the lemon",
+        # blind9 (tuned on in session 11): corrections said three times over ("No wait, … Actually
+        # no, grandpa's right, …"; "Jess - no, Kofi - no, Jess after all"): which one stands is
+        # not read
+        "Give grandpa the teddy. No wait, give Lily the teddy. Actually no, grandpa's right, give "
+        "it to him.",
+        "the drill goes to Jess - no, Kofi - no, Jess after all",
+        # blind9: a long dictated run-on of remarks naming the people again and again ('her' is
+        # Lily or Grandad?); "So the thing is Jess is up a ladder …" (a remark of several clauses)
+        "ok so Lily's just woken up from her nap and she's starving and Grandad's going to feed "
+        "her so if you could bring Grandad the bib and the beaker that would be amazing thanks",
+        "So the thing is Jess is up a ladder fixing the light and she's going to need the "
+        "flashlight and honestly the screws too so could you get both of those over to her",
+        # blind9: 'him' and 'her' after two names without titles: the grounder knows no one's sex
+        "Bob, then Alice: chips for him, bottle for her",
+        # causes11 (session 11): a remark naming a role two people share ("our new patient"); a
+        # plan naming an object the request does not ("to move the large box") may ask for it
+        "Mrs Khan is our new patient: the blue blanket for her, please",
+        "Tom wants to move the large box, can he have the gloves?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -70,9 +88,9 @@ KNOWN_MISSES = frozenset(
 # written in session 7 by another engineer, measured once, its misses fixed in session 8;
 # "blind7" written in session 8 by another engineer, measured once, its misses fixed in
 # session 9; "blind8" written in session 9 by another engineer, measured once, its misses met
-# in session 10: all asserted now; "blind9" written in session 10 by another engineer, measured
-# once)
-MEASURED_ONLY = frozenset({"blind9"})
+# in session 10; "blind9" written in session 10 by another engineer, measured once, its misses
+# met in session 11: all asserted now)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -98,6 +116,9 @@ def test_corpus_sizes() -> None:
     assert len(CORPORA["blind8"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind8"].entries}) >= 12
     assert len(CORPORA["causes10"].entries) >= 80
+    assert len(CORPORA["blind9"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind9"].entries}) >= 12
+    assert len(CORPORA["causes11"].entries) >= 80
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -8,8 +8,8 @@ import math
 import pytest
 
 from hltl.bench.cells import delivery_cell
-from hltl.planner import anytime, plan
-from hltl.planner.problem import Problem
+from hltl.planner import anytime, plan, schedule
+from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, search
 from tests.oracles.validator import check_plan
 
@@ -18,7 +18,15 @@ pytest.importorskip("ortools")
 
 @pytest.mark.parametrize(
     ("layout", "n", "seed"),
-    [("grid", 4, 1), ("grid", 5, 0), ("grid", 3, 0), ("grid", 3, 4), ("random", 4, 0)],
+    [
+        ("grid", 4, 1),
+        ("grid", 5, 0),
+        ("grid", 3, 0),
+        ("grid", 3, 4),
+        ("random", 4, 0),
+        ("random", 4, 1),
+        ("grid", 5, 4),
+    ],
 )
 def test_certified_plans_are_optimal(
     layout: str, n: int, seed: int, monkeypatch: pytest.MonkeyPatch
@@ -55,3 +63,39 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
     assert anytime.certified(problem, _Search(problem), math.inf) is None
+
+
+@pytest.mark.parametrize(
+    ("layout", "n", "seed", "level"), [("random", 4, 1, 44), ("grid", 5, 4, 55)]
+)
+def test_the_climb_asks_sessions_whole_before_the_full_model(
+    layout: str, n: int, seed: int, level: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # here the cheaper model's schedule at ``level`` is no plan, and neither sessions whole nor
+    # the full model have a schedule there; one level up, sessions whole give a plan, which is
+    # optimal without the full model being asked there (schedule._shave, whole_first)
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    asked: list[tuple[int, bool, bool, bool]] = []  # level, holders, whole, found
+    real = schedule.relaxed_steps
+
+    def logged(*args: object, **kwargs: object) -> object:
+        got = real(*args, **kwargs)  # type: ignore[arg-type]
+        level_ = args[4]
+        assert isinstance(level_, int)
+        holders, whole = kwargs.get("holders", True), kwargs.get("whole", False)
+        asked.append((level_, bool(holders), bool(whole), isinstance(got, tuple)))
+        return got
+
+    monkeypatch.setattr(schedule, "relaxed_steps", logged)
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    found = anytime.certified(problem, _Search(problem), math.inf)
+    expected = search(Problem(c.scene, c.spec), timeout=120)
+    assert found is not None and expected.makespan is not None
+    assert found[0] == to_ticks(expected.makespan) == to_ticks((level + 1) / 10)
+    assert asked[-4:] == [
+        (level, False, False, True),
+        (level, True, True, False),
+        (level, True, False, False),
+        (level + 1, True, True, True),
+    ]

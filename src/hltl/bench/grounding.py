@@ -43,7 +43,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # fresh variants of each cause of blind8's misses, written after the changes for them and
 # measured once before the fixes it motivated; a tuning part), blind9 (written in session 10 by
 # another engineer and committed alone while this engineer changed the grounder, never opened by
-# him before its one measurement; tests do not assert it).
+# him before its one measurement; tuned on in session 11), causes11 (session 11: fresh variants
+# of each cause of blind9's misses and of its wrong reading, written after the changes for them
+# and measured once before the fixes it motivated; a tuning part).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -61,6 +63,7 @@ PARTS = (
     "blind8",
     "causes10",
     "blind9",
+    "causes11",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

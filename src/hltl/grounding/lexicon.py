@@ -1695,9 +1695,22 @@ def _in_phrase(tokens: list[Token], i: int) -> bool:
 def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
     for n in range(min(MAX_PHRASE, len(tokens) - i), 1, -1):
         lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
-        if lemma is not None:
+        if lemma is not None and not _pronoun_subject(tokens, i + n):
             return n, lemma
     return None
+
+
+_BE_NEXT = frozenset({"'s", "is", "was", "has", "'re", "are", "were", "had"})
+
+
+def _pronoun_subject(tokens: list[Token], end: int) -> bool:
+    """'… after that's there': 'that' before a verb is the subject of the clause (what the
+    condition is about), not the end of 'after that' (then)."""
+    return (
+        end < len(tokens)
+        and tokens[end - 1].low in ("that", "this")
+        and tokens[end].low in _BE_NEXT
+    )
 
 
 def _text(tokens: list[Token], i: int, n: int) -> str:
@@ -1717,6 +1730,22 @@ def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
         f"{item.text!r} is ambiguous: it could be {', '.join(ids[:-1])} or {ids[-1]}; "
         "use the id or an alias, or say 'one of the …' if any will do"
     )
+
+
+TITLE_SEX = {"mr": "m", "mister": "m", "mrs": "f", "ms": "f", "miss": "f", "missus": "f"}
+PRONOUN_SEX = {"he": "m", "him": "m", "his": "m", "she": "f", "her": "f", "hers": "f"}
+
+
+def title_sex(pid: str, lexicon: Lexicon) -> str | None:
+    """'m' or 'f' when the scene names person ``pid`` with a title ('Mr Lee'), else None (a
+    name alone says nothing the grounder may rely on)."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    sexes = {
+        TITLE_SEX[a.split()[0].lower().rstrip(".")]
+        for a in (human.name, *human.aliases)
+        if len(a.split()) > 1 and a.split()[0].lower().rstrip(".") in TITLE_SEX
+    }
+    return next(iter(sexes)) if len(sexes) == 1 else None
 
 
 def person_name(pid: str, lexicon: Lexicon) -> str:

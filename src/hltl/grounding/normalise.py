@@ -42,7 +42,17 @@ import re
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
-from hltl.grounding.lexicon import VERBS, WORDS, Item, Lexicon, common_words, lex
+from hltl.grounding.lexicon import (
+    PRONOUN_SEX,
+    VERBS,
+    WORDS,
+    Item,
+    Lexicon,
+    common_words,
+    lex,
+    title_sex,
+)
+from hltl.grounding.phrasing import starting_on
 
 _F = re.IGNORECASE
 _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
@@ -86,6 +96,14 @@ def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) ->
 
 _OPEN = r"(^|(?<=[.;!?:])\s*|(?<=,)\s*(?:and\s+)?)"
 _WRAPPERS: tuple[tuple[str, str], ...] = (
+    # session 11: "is to be given", "ought to" (an obligation is a request, as "should")
+    (r"\b(?:is|are|was|were|am) to be\b", "should be"),
+    (r"\bought to\b", "should"),
+    (
+        r"\bwould it be (?:at all |even )?(?:possible|ok|okay|alright) for (.+?) to be "
+        r"(taken|brought|given|handed|put|placed|moved|delivered|sent|passed)\b",
+        r"\1 should be \2",
+    ),
     (_OPEN + r"(?:so,?\s+)?is there any (?:chance|way|possibility) (?:that )?", r"\1"),
     (
         _OPEN + r"would it be (?:possible|ok|okay|alright) for (.+?) to (?:borrow|have|get|take) ",
@@ -107,7 +125,22 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
         r"\1 like",
     ),
     (r"\b(?:could|can|should|might|will) be (?:provided|supplied|furnished) with\b", "could get"),
-    (r"\b(?:could|can|should|might|will) be (?:given|handed|passed|brought)\b", "could get"),
+    (
+        r"\b(?:could|can|should|might|will|must) (?:please )?be (?:given|handed|passed|brought|"
+        r"sent)\b(?!\s+(?:to|over|across|back|on|onto)\b)",  # "the cup should be handed to Carol"
+        "could get",
+    ),
+    (
+        r"^(could|can|would|will|might|must|should) ((?:the )?[\w ]+?) (?:please )?be (?:given|"
+        r"handed|passed|brought|sent)\b(?!\s+(?:to|over|across|back|on|onto)\b)",
+        r"\1 \2 get",
+    ),
+    # "after Bob has been given the chips": once Bob has them
+    (
+        r"\b(?:has|have|had|'s|'ve) been (?:given|handed|passed|brought|sent)\b"
+        r"(?!\s+(?:to|over|across|back|on|onto)\b)",
+        "has",
+    ),
     (r"\b(could|can|may|might) borrow\b", r"\1 have"),
     (
         r"\basked (?:whether|if) (?:she|he|they) (?:could|might|can|may) (?:have|get)\b",
@@ -136,6 +169,7 @@ _WORDS: tuple[tuple[str, str], ...] = (
     ),
     (r"\s*(?:\bwas|\bwere|\bis|\bare|'s|\bhas been|'s been) asking for\b", " wants"),
     (r"\s*(?:\bhas|\bhave|\bhad|'s|'ve) asked for\b", " wants"),
+    (r"(?<=\w) asked for\b(?= (?:the|a|an|some)\b)", " wants"),
     # "Mr Novak's plate is the blue one": the blue plate is his
     (r"^(.+?)'s (\w+) is the (\w+) one\b", r"the \3 \2 is for \1."),
     # "Give all three of them an item: Alice the cup, …": the list says it
@@ -181,10 +215,67 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"(?:are|have been|were) (?:done|finished|complete|completed),?",
         ", then",
     ),
+    # session 11
+    (r"(^|(?<=[.;!?])\s*)(?:is there )?any chance (?:of|for) ", r"\1"),
+    (r",?\s*\b(?:as soon as (?:possible|you can)|when(?:ever)? possible)\b", ""),
+    (r",?\s*\bby the end(?: of (?:the |this |today's |your )?\w+)?\b", ""),
+    (r",\s*like,", ","),
+    (r",?\s*\bright now\b,?", ""),
+    (r",?\s*\bif (?:that's|that is|it's|it is) (?:easier|simpler|better|quicker)\b", ""),
+    (r",?\s*\b(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b\s*[:,]?", ":"),
+    (
+        r",\s*(?:very |so |quite |really |rather |most |extremely )?(?:politely|nicely|kindly|"
+        r"sweetly)\s*,",
+        "",
+    ),
+    (
+        r"\s*(?:\bhas |\bhave |\bhad |'s |'ve )?asked,? (?:whether|if) (?:she|he|they) "
+        r"(?:could|might|may|can) (?:have|get)\b",
+        " wants",
+    ),
+    (r"(?<=\w) (?:himself|herself)\b", ""),
+    # "Give Bob the chips and then when he's got them give Alice the cup": the condition ends
+    # at the command
+    (
+        r"\b((?:once|when|after) (?:he|she|they)(?:'s| has| have|'ve)? (?:got|had|taken|"
+        r"received|gotten) (?:them|it|those|that))\s+(?=(?:give|hand|pass|bring|put|place)\b)",
+        r"\1, ",
+    ),
+    (r"\b(?:back )?(?:in|into|onto) (?=the )", "on "),
+    (r"\bback on (?=the )", "on "),
+    (r"\s*(?:\bis|'s|\bare|'re) due (?:his|her|their|the)?\b", " should get the"),
+    (
+        r"(?<=\w) also (?=(?:wants|needs|would like|'d like|gets|should get|could have|can "
+        r"have)\b)",
+        " ",
+    ),
+    # "Leave the mugs alone and give Bob everything else"
+    (
+        r"^(?:please )?(?:leave|don't touch|do not touch) (the [\w ]+?)(?: alone| where they are| "
+        r"be)?,? (?:and|but) (give|hand|bring) ([\w ]+?) everything else\b",
+        r"\2 \3 everything except \1",
+    ),
+    # "Omar said he needs the sponge": the one who said it
+    (
+        r"^([A-Z][\w ]*?) (?:said|says|mentioned|told me|tells me)(?: that)? (?:he|she|they) "
+        r"(?=(?:needs|wants|would like|'d like|could use|'s after)\b)",
+        r"\1 ",
+    ),
+    # "Lily and Ava both want a block, so one each"
+    (r"\bboth (want|need|would like)s? (a|an|one) ([\w ]+?),? so one each\b", r"\1 \2 \3 each"),
+    # "What I need is for the blue mug to be on the table …"
+    (r"^what (?:i|we) (?:need|want|would like|'d like) is for ", ""),
+    (r"(?<!needs )(?<!need )(?<!has )(?<!have )\bto be (on|in|onto)\b", "on"),
+    (r"\b(?:has to|have to|should|must|needs? to) end up (on|in|onto)\b", "should go on"),
+    # "the white plate, then the blue one, both to Lena"
+    (
+        r"^(the [\w ]+?), then (the [\w ]+?),? both (to|on|onto) ([\w ]+?)[.!]?$",
+        r"\1 \3 \4, then \2 \3 \4",
+    ),
 )
 
 
-def _words(text: str, _lexicon: Lexicon) -> str:
+def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
     # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
@@ -193,7 +284,20 @@ def _words(text: str, _lexicon: Lexicon) -> str:
         if re.search(r"\bends? up with\b", s, _F):
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
-    return " ".join(sentences)
+    text = " ".join(sentences)
+    # "…, and the apple with Carol": an object left with a person goes to that person
+    for h in lexicon.scene.humans:
+        for alias in (*h.aliases, h.name):
+            text = _sub(
+                rf"\b(the \w+(?: \w+)?) with ({re.escape(alias)})(?=\s*(?:[.,;!?]|\band\b|$))",
+                lambda m: (
+                    f"{m.group(1)} to {m.group(2)}"
+                    if _only(m.group(1), lexicon, "object")
+                    else m.group(0)
+                ),
+                text,
+            )
+    return text
 
 
 # -- people ------------------------------------------------------------------------------------
@@ -242,12 +346,17 @@ def _people(text: str, lexicon: Lexicon) -> str:
             text,
             _F,
         )
-        if (
-            m is not None
-            and not re.search(_TASK_WORDS + r"|\band\b|,", m.group(2), _F)
-            and not _ids(m.group(2), lexicon, "human")
-        ):
+        if m is not None and _one_thing(m.group(2), lexicon):
             text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
+        # "Each patient should receive one blanket"
+        m = re.match(
+            rf"^each (?:of the )?{re.escape(role)}s? (?:should|could|can|must|will|is to|are to) "
+            rf"(?:receive|get|have|be given) ((?:a|an|one) [\w ]+?)[.!]?$",
+            text,
+            _F,
+        )
+        if m is not None and _one_thing(m.group(1), lexicon):
+            text = f"{' and '.join(names)} should get {m.group(1)} each"
     text = _gendered_header(text, lexicon)
     for h in humans:
         for alias in (*h.aliases, h.name):
@@ -291,6 +400,13 @@ def _people(text: str, lexicon: Lexicon) -> str:
             else m.group(0)
         ),
         text,
+    )
+
+
+def _one_thing(words: str, lexicon: Lexicon) -> bool:
+    """Whether what 'each <role>' gets is one thing said plainly: no list, task or person."""
+    return not re.search(_TASK_WORDS + r"|\band\b|,", words, _F) and not _ids(
+        words, lexicon, "human"
     )
 
 
@@ -359,7 +475,9 @@ def _asides(text: str, lexicon: Lexicon) -> str:
                 and {r.id for r in here[0].refs} == {r.id for r in before[-1].refs}
                 and words.lower().removeprefix("the ").strip() == here[0].text.lower()
             )
-            described = not here and re.match(r"(?:the|a|an|our|my|your)\b", words, _F)
+            # "Mrs Ortiz, the class teacher,": a description naming nobody else
+            himself = all({r.id for r in x.refs} == {r.id for r in before[-1].refs} for x in here)
+            described = himself and re.match(r"(?:the|a|an|our|my|your)\b", words, _F)
             if same or described:  # "our manager, Priya," / "Mr Novak, the gentleman …,"
                 out[-1] += parts[k + 1]
                 k += 2
@@ -391,8 +509,9 @@ def _asides(text: str, lexicon: Lexicon) -> str:
 
 # -- remarks -----------------------------------------------------------------------------------
 
+_MAY_HAVE = r"|\b(?:can|could|may|might|should) (?:have|get)\b"
 _CLAUSE = re.compile(
-    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|,(?=\s*(?:could|can|would|will)\b)|"
+    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|:(?=\s)|,(?=\s*(?:could|can|would|will)\b)|"
     r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b)|"
     r",(?=\s*(?:he|she|they|it)(?:'s|'re|'ll|'d| is| are| was| were| will)\b))\s*",
     _F,
@@ -419,7 +538,7 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         try:
             parse_instruction(clause, lexicon.scene, lexicon, normalise=False)
         except GroundingError as e:
-            verb = re.search(_TASK_WORDS, clause, _F)
+            verb = re.search(_TASK_WORDS + _MAY_HAVE, clause, _F)
             return ("is not resolved" in str(e) and verb is not None) or _opens_request(clause)
         return True
 
@@ -438,6 +557,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     body = ". ".join(c.strip(" ,:") for c in requests)
     if len(person) == 1:
+        if not _fits(next(iter(person)), body, lexicon):
+            return text  # "Mr Lee is cold, give her …": not him
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
@@ -633,9 +754,436 @@ def _only(words: str, lexicon: Lexicon, kind: str) -> bool:
     )
 
 
+# -- session 11: labels, descriptions, contrasts, counts, answered questions ---------------------
+
+_ORDER_WORDS = re.compile(
+    r"\b(?:first|last|then|next|finally|before|after|once|when|only|each|both|all|either|or|"
+    r"every|except|instead|if|unless|until)\b",
+    _F,
+)
+
+
+def _labels(text: str, lexicon: Lexicon) -> str:
+    """'Tidy-up time: …', 'Night shift note - …', 'Handover, bay 3: …': a label before a colon
+    or a dash that names nothing of the scene, negates, orders or chooses nothing is dropped."""
+    m = re.match(r"^([\w' ,-]{1,40}?)\s*(?::|\s-\s)\s*(\S.*)$", text)
+    if m is None:
+        return text
+    label = m.group(1)
+    if (
+        len(label.split()) > 5
+        or _names(label, lexicon)
+        or (_NEGATIONS.search(label) and len(label.split()) < 2)  # "Not urgent:" is a label
+        or _ORDER_WORDS.search(label)
+        or re.search(_TASK_WORDS, label, _F)
+        or not _plain_words(_NOTE_WORDS.sub(" ", label), lexicon)
+    ):
+        return text
+    return m.group(2)
+
+
+# words that head a note and are in no list of common words
+_NOTE_WORDS = re.compile(r"\b(?:handover|hand-over|fyi|memo|todo|to-do|reminder|ps|nb|re)\b", _F)
+
+
+def _heads(text: str, lexicon: Lexicon) -> str:
+    """'the bear' for the object called 'teddy bear': the last word of an object's or a
+    surface's name of two or more words, when no other name of the scene has that word, no name
+    is that word alone, and it is no word the grammar knows."""
+    scene = lexicon.scene
+    names = [
+        *((o.id, n) for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *((h.id, n) for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *((x.id, n) for x in scene.surfaces for n in (x.id, *x.aliases)),
+    ]
+    said = [(i, n.lower().replace("_", " ").split()) for i, n in names]
+    people = {h.id for h in scene.humans}  # a surname is a person's (see _people)
+    for oid, name in names:
+        words = name.lower().split()
+        if len(words) < 2 or name == oid or oid in people:
+            continue
+        head = words[-1]
+        owners = {i for i, ws in said if head in ws}
+        alone = any(ws == [head] for _, ws in said)  # a name of its own already
+        if owners != {oid} or alone or head in WORDS or head in VERBS:
+            continue
+        text = _sub(rf"(?<!{re.escape(words[-2])} )\b{re.escape(head)}\b", name, text)
+    return text
+
+
+def _described(text: str, lexicon: Lexicon) -> str:
+    """'The plate on the rack goes to the guest': the object of that name that stands on that
+    surface (one, else left alone); 'The block on the mat, that one's for Grandad' / 'the mug
+    closest to Alice, give her that one': the object said first is what 'that one' is."""
+    text = _sub(r"^(the [^,]+?),\s*that one(?:'s| is)\b", r"\1 is", text)
+    m = re.match(r"^(the [^,]+?),\s*(.*)\bthat one\b(.*)$", text, _F)
+    if (
+        m is not None
+        and _ids(m.group(1), lexicon, "object")
+        and not re.search(r"\b(?:it|them|that)\b", m.group(2), _F)
+    ):
+        text = f"{m.group(2)}{m.group(1)}{m.group(3)}"
+
+    def on(m: re.Match[str]) -> str:
+        things, place = m.group(2), m.group(3)
+        ids = _ids(things, lexicon, "object")
+        if not _only_kind(things, lexicon, "object") or not _only(place, lexicon, "surface"):
+            return m.group(0)
+        (surface,) = _ids(place, lexicon, "surface")
+        there = starting_on(ids, surface, lexicon)
+        if len(there) != 1:
+            return m.group(0)
+        return f"{m.group(1)}the {_said(there[0], lexicon)}"
+
+    return _sub(
+        r"(^|(?<=[.;!?])\s*|(?<=,)\s*(?:and )?)(the [\w ]+?) (?:that's |that is |which is )?"
+        r"(?:on|in) (the [\w ]+?)(?= (?:goes|go|is for|are for|should go|needs to go|has to go)\b)",
+        on,
+        text,
+    )
+
+
+def _only_kind(words: str, lexicon: Lexicon, kind: str) -> bool:
+    """Whether ``words`` is one name, of things of ``kind`` only (one or several)."""
+    names = _names(words, lexicon)
+    return (
+        len(names) == 1
+        and all(r.kind == kind for r in names[0].refs)
+        and words.lower().removeprefix("the ").strip() == names[0].text.lower()
+    )
+
+
+def _contrast(text: str, lexicon: Lexicon) -> str:
+    """'Not the red block, the green one, for Lily' / 'not the green book the red one for
+    noah': the second object, of the same kind as the first and another one of it;
+    'Give the waitress the blue plate. Not the white one.': the last sentence only stresses."""
+    m = re.match(
+        r"^not (the [\w ]+?),? (the [\w ]+?)(,\s*.*|\s+(?:for|to|and)\b.*|[.!]?)$", text, _F
+    )
+    if m is not None:
+        no, yes = m.group(1), m.group(2)
+        yes_ids = _ids(_one(yes, no, lexicon), lexicon, "object")
+        no_ids = _ids(no, lexicon, "object")
+        if (
+            len(yes_ids) == 1
+            and no_ids
+            and not yes_ids & no_ids
+            and _only_kind(no, lexicon, "object")
+        ):
+            rest = m.group(3)
+            return f"{_one(yes, no, lexicon)}{rest}"
+    sentences = [x for x in re.split(r"(?<=[.;!?])\s+", text.strip()) if x]
+    if len(sentences) >= 2:
+        last = re.match(r"^not (the \w+ one|the [\w ]+?)[.!]?$", sentences[-1], _F)
+        before = " ".join(sentences[:-1])
+        named = _ids(before, lexicon, "object")
+        if last is not None and len(named) >= 1:
+            said = last.group(1)
+            if said.lower().endswith(" one"):
+                kinds = _kinds(named, lexicon)
+                if len(kinds) != 1:
+                    return text
+                said = said[: -len("one")] + next(iter(kinds))
+            no_ids = _ids(said, lexicon, "object")
+            if no_ids and not no_ids & named:
+                return before  # leaving out what is not asked for adds nothing
+    return text
+
+
+def _one(said: str, other: str, lexicon: Lexicon) -> str:
+    """'the green one' after 'the red block': 'the green block'."""
+    if not said.lower().endswith(" one"):
+        return said
+    kinds = _kinds(_ids(other, lexicon, "object"), lexicon)
+    return said[: -len("one")] + next(iter(kinds)) if len(kinds) == 1 else said
+
+
+def _kinds(ids: set[str], lexicon: Lexicon) -> set[str]:
+    return {o.category for o in lexicon.scene.objects if o.id in ids}
+
+
+def _same_kind(ids: set[str], lexicon: Lexicon) -> bool:
+    return len(_kinds(ids, lexicon)) == 1
+
+
+_COUNTS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+
+def _counted(text: str, lexicon: Lexicon) -> str:
+    """'Two things for Ava: the beaker and the wipes' → 'Ava: the beaker and the wipes' when
+    the list names that many objects; 'One thing each: bottle for A, chips for B' and 'All three
+    of them want something to drink: Alice the bottle, …' → the list, when it names one object
+    for each of that many people."""
+    m = re.match(
+        r"^(one|two|three|four|five|six) (?:things?|items?|objects?) for ([^:]+?)\s*:\s*(.+)$",
+        text,
+        _F,
+    )
+    if m is not None and _only(m.group(2), lexicon, "human"):
+        listed = [it for it in _names(m.group(3), lexicon) if it.refs[0].kind == "object"]
+        if len(listed) == _COUNTS[m.group(1).lower()] == len(_ids(m.group(3), lexicon)):
+            return f"{m.group(2)}: {m.group(3)}"
+        return text
+    m = re.match(
+        r"^(?:(one) (?:thing|item) each|all (two|three|four|five|six) of them (?:want|need|would "
+        r"like) (?:something|one thing|an item)(?: to (?:drink|eat|read|use))?)\s*:\s*(.+)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    parts = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(3).rstrip(".!")) if x]
+    people = [_ids(x, lexicon, "human") for x in parts]
+    things = [_ids(x, lexicon, "object") for x in parts]
+    if not all(len(p) == 1 and len(t) == 1 for p, t in zip(people, things, strict=True)):
+        return text
+    who = {next(iter(p)) for p in people}
+    if len(who) != len(parts) or (m.group(2) and len(who) != _COUNTS[m.group(2).lower()]):
+        return text
+    return m.group(3)
+
+
+def _answered(text: str, lexicon: Lexicon) -> str:
+    """'Which block? The green one. It's for Ava.' / 'You asked which book: the green one, and
+    it's for Zoe': the question answered is the object; 'it' after it is that object."""
+    m = re.match(
+        r"^(?:you asked |you wanted to know )?which (\w+)\s*[?:]\s*(the \w+ one)\s*(.*)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    noun, rest = m.group(1).lower(), m.group(3)
+    kinds = {o.category.lower() for o in lexicon.scene.objects}
+    if noun not in kinds and noun.rstrip("s") not in kinds:
+        return text
+    thing = m.group(2)[: -len("one")] + (noun if noun in kinds else noun.rstrip("s"))
+    if len(_ids(thing, lexicon, "object")) != 1:
+        return text
+    tail = re.match(
+        r"^[.,]?\s*(?:and )?(?:it'?s|it is|that'?s|that is)?\s*(for|to) (.+)$", rest, _F
+    )
+    if tail is not None:
+        return f"{thing} {tail.group(1)} {tail.group(2)}"
+    tail = re.match(r"^[.,]\s*(.*)\b(it)\b(.*)$", rest, _F)
+    if tail is not None and not re.search(r"\b(?:it|them)\b", tail.group(1) + tail.group(3), _F):
+        return f"{tail.group(1)}{thing}{tail.group(3)}"
+    return text
+
+
+_PARTICIPLES = {
+    "delivered": "deliver",
+    "handed": "hand",
+    "given": "give",
+    "brought": "bring",
+    "taken": "take",
+    "put": "put",
+    "placed": "place",
+    "moved": "move",
+    "passed": "pass",
+    "sent": "send",
+}
+
+
+def _passive(text: str, lexicon: Lexicon) -> str:
+    """'The apple and the chips should be delivered to Person B': deliver them to Person B (a
+    passive whose subject names objects only, before 'to'/'on' and its target)."""
+
+    def active(m: re.Match[str]) -> str:
+        things = m.group(2)
+        names = _names(things, lexicon)
+        if not names or any(r.kind != "object" for it in names for r in it.refs):
+            return m.group(0)
+        return f"{m.group(1)}{_PARTICIPLES[m.group(3).lower()]} {things}"
+
+    return _sub(
+        r"(^|(?<=[.;!?])\s*|(?<=,)\s*(?:and )?)((?:the |a |an )[\w ]+?) (?:should|must|has to|"
+        r"have to|needs to|need to) be (" + "|".join(_PARTICIPLES) + r")\b(?=\s+(?:over |across "
+        r"|back )?(?:to|on|onto)\b)",
+        active,
+        text,
+    )
+
+
+def _fits(pid: str, text: str, lexicon: Lexicon) -> bool:
+    """Whether every he/she/him/her in ``text`` may be person ``pid`` (a title says which; a
+    name alone does not)."""
+    sex = title_sex(pid, lexicon)
+    said = {
+        PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    }
+    return sex is None or said <= {sex}
+
+
+def _possessed(text: str, lexicon: Lexicon) -> str:
+    """ "Carol's chips, Bob's apple, Alice's cup. Go.": a list of what is whose is who gets
+    what; "Mr Lee's medication is to be handed to him": the object, and the one pronoun that
+    fits his title is him."""
+    body = _sub(r"(?:[.!]\s*(?:go|thanks|thank you|cheers|ta|please)[.!]*)+$", "", text.strip())
+    parts = [x.strip() for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", body.rstrip(" .!"))]
+    pairs = [re.match(r"^(.+?)'s (.+)$", x) for x in parts]
+    if len(parts) > 1 and all(
+        m is not None
+        and _only(m.group(1), lexicon, "human")
+        and _only_kind(m.group(2), lexicon, "object")
+        for m in pairs
+    ):
+        return ", ".join(f"the {m.group(2)} for {m.group(1)}" for m in pairs if m is not None)
+    for h in lexicon.scene.humans:
+        for alias in h.aliases:
+            m = re.search(
+                rf"\b({re.escape(alias)})'s ([\w ]+?)\b(?= (?:is|are|should|must|has|have)\b)",
+                text,
+                _F,
+            )
+            if m is None or not _only(m.group(2), lexicon, "object"):
+                continue  # "Mr Novak's plate is the blue one" says which (_words)
+            pron = re.findall(r"\b(?:him|her)\b", text, _F)
+            if title_sex(h.id, lexicon) is None or len(pron) != 1 or not _fits(h.id, text, lexicon):
+                continue
+            text = text[: m.start()] + f"the {m.group(2)}" + text[m.end() :]
+            return _sub(r"\b(?:him|her)\b", alias, text)
+    return text
+
+
+def _bare_pair(text: str, lexicon: Lexicon) -> str:
+    """'Wipes. Grandad.': an object said alone, then a person said alone: the object for them."""
+    m = re.match(r"^(?:the )?([\w ]+?)[.,]\s*([\w ]+?)[.!]?$", text.strip(), _F)
+    if m is None or not _only_kind(m.group(1), lexicon, "object"):
+        return text
+    if not _only(m.group(2), lexicon, "human"):
+        return text
+    return f"the {m.group(1)} for {m.group(2)}"
+
+
+def _one_person(text: str, lexicon: Lexicon) -> str | None:
+    """The name of the one person ``text`` names (several names of one person count once),
+    when every he/she/him/her of ``text`` may be them."""
+    people = [it for it in _names(text, lexicon) if all(r.kind == "human" for r in it.refs)]
+    ids = {r.id for it in people for r in it.refs}
+    if len(ids) != 1 or not _fits(next(iter(ids)), text, lexicon):
+        return None
+    return people[0].text
+
+
+def _told_apart(text: str, lexicon: Lexicon) -> str:
+    """'The red mug, which Bob has been asking about all morning, should go to him.', 'the mug
+    closest to Alice, give her that one': the one person the text names is the pronoun (the
+    aside naming only them is then dropped); 'Bob's on his break and asked for …', 'Ava wants
+    to build a tower, can she have …': a state or a plan before the request is a remark."""
+    who = _one_person(text, lexicon)
+    pron = re.findall(r"\b(?:him|her|he|she)\b", text, _F)
+    m = re.search(r",\s*(?:which|who)\b([^,]+),", text, _F)
+    if m is not None and who is not None and len(pron) == 1 and _one_person(m.group(1), lexicon):
+        aside = m.group(1)
+        if not _NEGATIONS.search(aside) and not _ids(aside, lexicon, "object"):
+            rest = text[: m.start()] + text[m.end() - 1 :]
+            if _one_person(rest, lexicon) is None:
+                rest = rest.replace(",,", ",")
+                return _sub(r"\b(?:him|her)\b", who, rest.replace(", should", " should"))
+    m = re.match(r"^(the [^,]+?),\s*(give|hand|pass|bring) (him|her) that one\b(.*)$", text, _F)
+    if m is not None and who is not None and _ids(m.group(1), lexicon, "object"):
+        return f"{m.group(2)} {who} {m.group(1)}{m.group(4)}"
+    m = re.match(
+        r"^(.+?)(?:'s| is| was) ([a-z' ]+?),? and "
+        r"(?=(?:wants|needs|asked for|would like|'d like)\b)",
+        text,
+    )
+    if m is not None and _only(m.group(1), lexicon, "human"):
+        state = m.group(2)
+        if (
+            not _names(state, lexicon)
+            and not _NEGATIONS.search(state)
+            and not _ORDER_WORDS.search(state)
+            and _plain_words(state, lexicon)
+        ):
+            return f"{m.group(1)} {text[m.end() :]}"
+    m = re.match(
+        r"^(.+?) (?:wants|would like|'d like|needs|is going|'s going|is trying|'s trying|has) "
+        r"to (?!have\b|get\b|receive\b|keep\b|borrow\b|use\b)([a-z]+(?: [a-z]+){0,4}),\s*"
+        r"(?:so )?(can|could|would|will|please)\b(.*)$",
+        text,
+    )
+    if m is not None and _only(m.group(1), lexicon, "human") and _one_person(text, lexicon):
+        plan, rest = m.group(2), f"{m.group(3)}{m.group(4)}"
+        things = [it for it in _names(plan, lexicon) if it.refs[0].kind == "object"]
+        if len(things) == 1 and re.search(r"\bit\b", rest, _F):
+            rest = _sub(r"\bit\b", f"the {things[0].text}", rest)  # "…, can he have it?"
+        if (
+            len(things) == len(_names(plan, lexicon))
+            and _ids(plan, lexicon) <= _ids(rest, lexicon)  # else the plan may ask for them
+            and not _NEGATIONS.search(plan)
+            and _plain_words(plan, lexicon)
+        ):
+            return _sub(r"\b(?:he|she)\b", m.group(1), rest)
+    return text
+
+
+def _both_kind(text: str, lexicon: Lexicon) -> str:
+    """'Both books on the desk, green first': 'both <kind>s' when the scene has two of that kind
+    names them; '<word> first/last' after them names the one of that kind the word picks."""
+    kinds: dict[str, list[str]] = {}
+    for o in lexicon.scene.objects:
+        kinds.setdefault(o.category.lower(), []).append(o.id)
+    for cat, ids in kinds.items():
+        if len(ids) != 2:
+            continue
+        m = re.search(rf"\bboth (?:the )?{re.escape(cat)}s\b", text, _F)
+        if m is None:
+            continue
+        a, b = (_said(i, lexicon) for i in ids)
+        text = text[: m.start()] + f"the {a} and the {b}" + text[m.end() :]
+        words = {w for i in ids for w in _said(i, lexicon).lower().split() if w != cat}
+        alt = "|".join(map(re.escape, sorted(words)))
+        if alt:
+            text = _sub(
+                rf",\s*(?:the )?({alt})(?: one)? (first|last)\b", rf", the \1 {cat} \2", text
+            )
+    return text
+
+
+_RANKS = (
+    (r"first(?: of all)?|firstly|to start(?: with)?|start with", 0),
+    (r"in between|in the middle|between those|second|secondly|after that|next|then", 1),
+    (r"last(?: of all)?|lastly|finally|at the end", 2),
+)
+
+
+def _ranked(text: str, _lexicon: Lexicon) -> str:
+    """'Last, the apple to Alice. First the chips to Bob. In between, the cup to Carol.': three
+    sentences each opening with its place in the order, said in another order."""
+    sentences = [x for x in re.split(r"(?<=[.;!?])\s+", text.strip()) if x]
+    if len(sentences) != 3:
+        return text
+    placed: dict[int, str] = {}
+    for x in sentences:
+        for words, rank in _RANKS:
+            m = re.match(rf"^(?:{words}),?\s+(.+?)[.;!]?$", x, _F)
+            if m is not None:
+                if rank in placed or _ORDER_WORDS.search(m.group(1)):
+                    return text
+                placed[rank] = m.group(1)
+                break
+        else:
+            return text
+    return f"{placed[0]}. Then {placed[1]}. Finally, {placed[2]}."
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _labels,
+    _ranked,
+    _bare_pair,
+    _possessed,
+    _told_apart,
+    _both_kind,
     _wrappers,
     _words,
+    _passive,
+    _heads,
+    _answered,
+    _counted,
+    _contrast,
+    _described,
     _people,
     _notes,
     _asides,

@@ -64,7 +64,8 @@ def parse_instruction(
 
     What the grammar refuses is rewritten by the normaliser (normalise.py: wrappers, asides,
     remarks, notes, order said apart) and read again; if that is refused too, the first refusal
-    stands (``normalise=False`` reads the text as it is only).
+    stands, unless only the second names the readings of an unclear name or pronoun
+    (``normalise=False`` reads the text as it is only).
 
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
@@ -80,8 +81,17 @@ def parse_instruction(
             raise
         try:
             return _read(plain, scene, lexicon)
-        except GroundingError:
+        except GroundingError as rewritten:
+            if _readings(rewritten) and not _readings(refused):
+                # "The patient is to be given the jug": the rewrite got as far as the name, and
+                # its refusal says which readings there are (the first only that it cannot parse)
+                raise rewritten from None
             raise refused from None
+
+
+def _readings(error: GroundingError) -> bool:
+    """Whether a refusal lists the readings of an unclear name or pronoun."""
+    return any(w in str(error) for w in ("it could be ", "it could mean ", "it cannot mean "))
 
 
 def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
@@ -207,6 +217,9 @@ class _Frag:
     join: int = 0  # how strongly it is joined to the part before it (_join_levels)
     comma: bool = False  # a comma before it (", the chips")
     pause: bool = False  # a comma and a word before it (", and the chips to Bob")
+    condition: bool = False  # said after 'once' / 'after' / 'when': what another step waits on
+    trails: bool = False  # a condition said after the clause it holds back
+    choice: int = -1  # 'it' for a chosen object ('a block … it'): the fragment that chose it
 
 
 @dataclass(slots=True)
@@ -244,6 +257,7 @@ class _Parser:
         self.frags: list[_Frag] = []
         self._segment = 0
         self._slots: dict[str, tuple[int, tuple[str, ...]]] = {}  # placeholder -> group, options
+        self._chosen: dict[int, str] = {}  # fragment that made a choice -> its placeholder
 
     # -- choices ---------------------------------------------------------------------------------
     def expand(self, node: Node, pending: frozenset[int]) -> Node:
@@ -351,7 +365,10 @@ class _Parser:
                     f"cannot tell where the {first.text!r} part of {_text(items)!r} ends: put a "
                     "comma before the main instruction"
                 )
+            start = len(self.frags)
             sub = self.seq(items[1:split])
+            if first.lemma != "before":
+                self._waited_on(start)
             main = self.seq(items[split + 1 :] if _is(items[split], ",") else items[split:])
             if first.lemma == "before":
                 return _RawGroup("seq", [main, sub])
@@ -406,7 +423,9 @@ class _Parser:
                 # "A, then, once X, Y": Y waits for A and for X (X is often A said again)
                 assert result is not None
                 self._segment += 1
+                start = len(self.frags)
                 sub = self.coord(seg[: split - 1])
+                self._waited_on(start)
                 self._segment += 1
                 main = self.coord(seg[split:])
                 result = _RawGroup("seq", [_RawGroup("and", [result, sub]), main])
@@ -427,13 +446,30 @@ class _Parser:
                 # "A and, once X, Y": Y waits for X; A stands beside them
                 cut = split - 1
                 self._segment += 1
+                start = len(self.frags)
                 sub = self.coord(seg[:cut])
+                self._waited_on(start)
                 self._segment += 1
                 main = self.coord(seg[cut + 1 :] if _is(seg[cut], ",") else seg[cut:])
                 result = _RawGroup("and", [result, _RawGroup("seq", [sub, main])])
                 continue
+            if (
+                result is not None
+                and conn in ("after", "once")
+                and split is None
+                and any(_is(x, ",") and not _only_fillers(seg[n + 1 :]) for n, x in enumerate(seg))
+            ):
+                # "…, and once Bob has it, Alice the apple, Carol the chips": the condition would
+                # swallow the request after it (read as one more thing to wait for)
+                raise GroundingError(
+                    f"in {_text(items)!r} it is unclear where the {conn!r} part ends: put it "
+                    f"first ('{conn} …, …') or split the sentence"
+                )
             self._segment += 1
+            start = len(self.frags)
             node = self.coord(seg)
+            if result is not None and conn in ("after", "once"):
+                self._waited_on(start, trails=True)
             if result is None:
                 result = node
             elif conn in ("after", "once", "prior"):
@@ -445,6 +481,12 @@ class _Parser:
             self._segment += 1
             result = _RawGroup("and", [result, self.coord(extra)])
         return result
+
+    def _waited_on(self, start: int, *, trails: bool = False) -> None:
+        """The fragments from ``start`` on are a condition ('once it's there'), not a request;
+        ``trails``: said after the clause it holds back ('give Lily the beaker once …')."""
+        for f in self.frags[start:]:
+            f.condition, f.trails = True, trails
 
     def _added_after_steps(
         self, segments: list[tuple[str, list[Item]]], items: list[Item]
@@ -866,8 +908,9 @@ class _Parser:
                     frags[k - 1].objects is None and not frags[k - 1].it and not frags[k - 1].them
                 ):
                     raise GroundingError(f"{word!r} in {f.text!r} refers to nothing before it")
-                for g in self._antecedents(k):
-                    g.antecedent = True
+                if not _waits_at(f):  # what a condition waits at was put there, not picked up
+                    for g in self._antecedents(k):
+                        g.antecedent = True
         for k, f in enumerate(frags):
             if f.same:
                 self._same(k, f)
@@ -880,6 +923,7 @@ class _Parser:
                 if prev is None or (len(prev) != 1 and ante.group < 0):
                     raise GroundingError(f"'it' in {f.text!r} could mean several objects")
                 f.objects, f.group = list(prev), ante.group
+                f.choice = ante.choice if ante.choice >= 0 else ante.index
             elif f.them:
                 antes = self._antecedents(k)
                 f.objects = [o for g in antes for o in (g.objects or [])]
@@ -887,6 +931,16 @@ class _Parser:
                 if groups and len(antes) > 1:
                     raise GroundingError(f"'them' in {f.text!r} mixes a choice with other objects")
                 f.group = antes[0].group if len(antes) == 1 else -1
+                f.choice = antes[0].choice if antes[0].choice >= 0 else antes[0].index
+            elif f.objects is None and _waits_at(f):
+                # "… and give Lily the beaker once they're there": 'they' is not a word the
+                # grammar keeps, so a condition naming no object is read as 'them'
+                antes = self._placed(k)
+                if len({g.group for g in antes if g.group >= 0}) > 1:
+                    raise GroundingError(f"'they' in {f.text!r} mixes several choices")
+                f.objects = [o for g in antes for o in (g.objects or [])]
+                f.group = antes[0].group if len(antes) == 1 else -1
+                f.choice = antes[0].choice if antes[0].choice >= 0 else antes[0].index
             elif f.objects is None:
                 source = self._objects_from_right(k) or next(
                     (g for g in reversed(frags[:k]) if g.objects and not g.pick), None
@@ -963,6 +1017,8 @@ class _Parser:
                         f"'it' in {f.text!r} could mean any of {names}: name the object"
                     )
                 return heads
+        if (f.it or f.them) and _waits_at(f):
+            return self._placed(k)
         if f.it:
             return [frags[k - 1]]
         out: list[_Frag] = []
@@ -973,6 +1029,45 @@ class _Parser:
             if g.verb_text or g.subject:
                 break
         return [g for g in out if g.objects is not None or g.it or g.them]
+
+    def _placed(self, k: int) -> list[_Frag]:
+        """'Put the bib on the high chair and give Lily the beaker once it's there': what a
+        condition finds at a place (or with a person) is what a step before put there (the step
+        the condition waits on), not the nearest object, nor the clause a trailing condition
+        holds back. Several such steps are several readings for 'it' (refused); 'they' / 'them'
+        are all of them."""
+        f = self.frags[k]
+        assert f.target is not None
+        before = k
+        while before > 0 and self.frags[before - 1].condition:
+            before -= 1
+        if f.trails:
+            # "put the bib on the mat once it's there": the clause a trailing condition holds
+            # back does not wait for itself (its own object is not what it waits for)
+            while before > 0 and not (
+                self.frags[before - 1].verb_text or self.frags[before - 1].subject
+            ):
+                before -= 1
+            before = max(before - 1, 0)
+        placed = [
+            g
+            for g in self.frags[:before]
+            if g.target is not None
+            and g.target.id == f.target.id
+            and not g.condition
+            and (g.objects is not None or g.it or g.them)
+        ]
+        if not placed:
+            # "give Lily the beaker once it's on the mat": a step of its own, or something
+            # someone else does first? nothing before takes anything there
+            raise GroundingError(
+                f"{f.text!r} waits for something at {self.lex.display(f.target.id)}, and no step "
+                "before it takes anything there: name the object it waits for"
+            )
+        if f.it and len(placed) > 1:
+            names = ", ".join(o for g in placed for o in g.objects or ("it",))
+            raise GroundingError(f"'it' in {f.text!r} could mean any of {names}: name the object")
+        return placed
 
     def _same(self, k: int, f: _Frag) -> None:
         """'… and the same for the apple': copy the task before, with the new name in place."""
@@ -1038,7 +1133,10 @@ class _Parser:
             assert raw.target is not None and raw.objects is not None
             kind: Literal["deliver", "place"] = "deliver" if raw.target.kind == "human" else "place"
             if raw.group >= 0 and len(raw.objects) > 1:
-                slot = f"?{len(self._slots)}"  # a placeholder the choice is expanded into
+                # a placeholder the choice is expanded into; 'it' for the chosen object is the
+                # same placeholder (the same object), not another choice from the same group
+                key = raw.choice if raw.choice >= 0 else raw.index
+                slot = self._chosen.setdefault(key, f"?{len(self._slots)}")
                 self._slots[slot] = (raw.group, tuple(raw.objects))
                 return Task(kind, slot, raw.target.id)
             leaves: list[Node] = [Task(kind, o, raw.target.id) for o in raw.objects]
@@ -1335,6 +1433,12 @@ def _own_target(body: list[Item], j: int) -> bool:
     return False
 
 
+def _waits_at(f: _Frag) -> bool:
+    """A condition naming a place or person and no subject: 'once it's there', 'after they're
+    on the shelf' (not 'once Bob has it', which _antecedents reads by the person)."""
+    return f.condition and f.target is not None and not f.subject
+
+
 def _edge(node: _Raw, last: bool) -> _Frag:
     while isinstance(node, _RawGroup):
         node = node.children[-1 if last else 0]
@@ -1477,7 +1581,8 @@ def _plain_command(seg: list[Item], split: int) -> bool:
 
 def _main_clause_start(items: list[Item]) -> int | None:
     """Where the main clause of 'after X, Y' starts: at 'then', or a comma before a clause."""
-    commas = [k for k, it in enumerate(items) if _is(it, ",")]
+    # a comma before politeness alone (", thanks" at the end) starts no clause
+    commas = [k for k, it in enumerate(items) if _is(it, ",") and not _only_fillers(items[k + 1 :])]
     for k in range(1, len(items)):
         if _is(items[k], "then"):
             return k

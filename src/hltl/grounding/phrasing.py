@@ -11,6 +11,7 @@ from hltl.errors import GroundingError
 from hltl.grounding.lexicon import (
     CHANGES_OF_MIND,
     NUMBERS,
+    PRONOUN_SEX,
     RETRACTIONS,
     VERB_CLASS,
     Item,
@@ -19,6 +20,7 @@ from hltl.grounding.lexicon import (
     common_words,
     near_keyword,
     person_name,
+    title_sex,
 )
 
 _END = frozenset({".", ";", "!", "?", ":"})
@@ -834,7 +836,7 @@ def _on_surface(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) ->
     kinds = {r.kind for r in items[j].refs} if j < len(items) and items[j].kind == "ent" else set()
     if kinds != {"surface"} or len({r.id for r in items[j].refs}) != 1:
         return k  # not a surface: left to the grammar (which refuses a second recipient)
-    on = _starting_on({r.id for r in it.refs}, items[j].refs[0].id, lexicon)
+    on = starting_on({r.id for r in it.refs}, items[j].refs[0].id, lexicon)
     if not on:
         raise GroundingError(
             f"no {it.text!r} is on the {items[j].text!r} in the scene (where the objects "
@@ -2033,6 +2035,17 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             if own is not None:
                 # "… and Carol the mug nearest to her": the one person of that part
                 candidates = [own]
+            sex = PRONOUN_SEX.get(low)
+            if any(title_sex(p, lexicon) not in (None, sex) for p in candidates):
+                # "Mr Lee is cold, give her the blanket": not Mr Lee (a title says who is who)
+                fits = [p for p in candidates if title_sex(p, lexicon) in (None, sex)]
+                if len(fits) != 1 or title_sex(fits[0], lexicon) != sex:
+                    raise GroundingError(
+                        f"{it.text!r} is not resolved: it cannot mean "
+                        f"{_or([p for p in candidates if p not in fits], lexicon)} (by title), and "
+                        "no one else fits for certain; name the person"
+                    )
+                candidates = fits
             if len(candidates) == 1:
                 out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
@@ -2634,7 +2647,7 @@ def _whatever_near(items: list[Item], lexicon: Lexicon) -> list[Item]:
             n = k + 3
             while not _is_surface(items[n]):
                 n += 1
-            on = _starting_on({r.id for r in everything}, items[n].refs[0].id, lexicon)
+            on = starting_on({r.id for r in everything}, items[n].refs[0].id, lexicon)
             if not on:
                 raise GroundingError(f"nothing is on the {items[n].text!r} in the scene")
             words = _words_of(items[k : n + 1])
@@ -4071,10 +4084,10 @@ def _wanted_done(items: list[Item]) -> list[Item]:
 def _lying_on(things: list[Item], surface: Item, lexicon: Lexicon) -> bool:
     """Whether one of the objects ``things`` name starts on ``surface``."""
     ids = {r.id for y in things if _objects(y) for r in y.refs}
-    return any(_starting_on(ids, r.id, lexicon) for r in surface.refs)
+    return any(starting_on(ids, r.id, lexicon) for r in surface.refs)
 
 
-def _starting_on(ids: set[str], surface: str, lexicon: Lexicon) -> list[str]:
+def starting_on(ids: set[str], surface: str, lexicon: Lexicon) -> list[str]:
     """The objects of ``ids`` that start on ``surface`` (inside its footprint), in scene order."""
     s = next(x for x in lexicon.scene.surfaces if x.id == surface)
     (cx, cy), (sx, sy) = s.center[:2], s.size

@@ -602,11 +602,8 @@ def step_bound(
     )
     if res.steps is None:
         return res.ticks, None
+    # (where it is no plan, the level was asked with every session whole already)
     found = replay(s, start, res.steps)
-    if found is None:
-        level = res.ticks // schedule.time_unit(problem)
-        again = schedule.relaxed_steps(problem, graph, start, tgts, level, until, whole=True)
-        found = replay(s, start, again) if isinstance(again, tuple) else None
     if found is None or found[0] > res.ticks:
         return res.ticks, None
     return found[0], found

@@ -160,10 +160,10 @@ def schedule_bound(
 
     With ``accept`` too (it says whether a relaxed schedule at the level found is a plan) the
     levels are first asked with loops as session 8 modelled them (``relaxed_steps`` without
-    ``holders``: weaker, and cheaper); where that finds a schedule that is no plan, the same
-    level is asked with every session whole (a plan from it is optimal: the schedule
-    returned), and failing that the levels from there on are asked of the full model. Every
-    "no" of the weaker model is one of the full model's (it is a relaxation of it).
+    ``holders``: weaker, and cheaper); where that finds a schedule that is no plan, the levels
+    from there on are asked of the full model, each first with every session whole
+    (``_shave`` with ``whole_first``; a plan from it is optimal: the schedule returned).
+    Every "no" of the weaker model is one of the full model's (it is a relaxation of it).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
@@ -176,16 +176,9 @@ def schedule_bound(
         res = _shave(problem, graph, node, tgts, level, upper, deadline, seed, floor, steps, weak)
     if accept is None or res.steps is None or accept(res.steps):
         return res
-    # its schedule is no plan: first the same level with every session whole (a restriction:
-    # its "no" proves nothing, but where its schedule is a plan, that plan meets the bound and
-    # is optimal), which costs far less than the full model there
-    again = relaxed_steps(
-        problem, graph, node, tgts, res.ticks // unit, deadline, seed=seed, whole=True
-    )
-    if isinstance(again, tuple) and accept(again):
-        return ScheduleBound(res.ticks, True, len(tgts), again)
+    level = res.ticks // unit
     return _shave(
-        problem, graph, node, tgts, res.ticks // unit, upper, deadline, seed, floor, True, False
+        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True
     )
 
 
@@ -201,11 +194,26 @@ def _shave(
     floor: int,
     steps: bool,
     weak: bool,
+    whole_first: bool = False,
 ) -> ScheduleBound:
     """The relaxation's optimum from ``level`` units up, one level at a time (``steps``: the
-    step model, ``weak``: without ``holders``; else the interval model)."""
+    step model, ``weak``: without ``holders``; else the interval model).
+
+    With ``whole_first`` (the full step model) each level is asked first with every session
+    whole: a restriction of the full model (its "no" proves nothing) that finds a schedule far
+    more cheaply where there is one. Where it finds one the full model has it too, so the level
+    is the full model's optimum without asking it (and where that schedule replays as a plan,
+    the plan is optimal); only where it finds none is the full model asked."""
     unit = time_unit(problem)
     while upper is None or level * unit < upper:
+        if whole_first:
+            whole = relaxed_steps(
+                problem, graph, node, tgts, level, deadline, seed=seed, whole=True
+            )
+            if whole is None:
+                return ScheduleBound(max(floor, level * unit), False, len(tgts))
+            if isinstance(whole, tuple):
+                return ScheduleBound(max(floor, level * unit), True, len(tgts), whole)
         if steps:
             found = relaxed_steps(
                 problem, graph, node, tgts, level, deadline, seed=seed, holders=not weak
