@@ -1,25 +1,4 @@
-"""Ticks simulated ahead of the executor, as a step answer carries them: one binary block.
-
-A step answer with ticks ahead is ``MAGIC``, the length of its JSON part (``<I``), the JSON
-part (the answer itself, as before) and then the block (docs/bus.md, "The ticks block"):
-
-* ``<I`` the number of ticks, then each tick:
-* ``<ddIBB``: its time, the next event time (NaN: never), the number of reports the node has
-  published so far, flags (``PENDING``, ``EXTRA``, ``LAYOUT``) and the number of its reports;
-* with ``LAYOUT`` (the block's first tick, and any tick whose people, objects or hands are
-  other ones): ``<I`` and JSON ``{"humans", "objects", "hands"}``, the ids in order;
-* the positions, ``3 × (people + objects + hands)`` doubles in the layout's order;
-* each report: ``<IIBdd``, its number, handle, state (``STATES``' index), progress and time;
-* with ``EXTRA``: ``<I`` and JSON with what is not empty or changed: the objects' places
-  ``"loc"`` (``[[kind, ref]…]``, in the layout's order: on the block's first tick and when one
-  changed), the robots the world marks unavailable ``"seen"`` and those the clock does
-  ``"unavailable"``, ``"instructions"``, the cell's log ``"records"`` and the reports'
-  non-empty ``"reasons"`` (``{index: reason}``).
-
-Floats travel as IEEE doubles, so they arrive bit for bit. The block is read tick by tick, as
-the executor's loop consumes them (:class:`TickReader`): ticks a command cuts off are never
-decoded, and a group of positions equal, byte for byte, to the tick before's reuses its values.
-"""
+"""Ticks simulated ahead of the executor, as a step answer carries them: one binary block."""
 
 from __future__ import annotations
 
