@@ -90,7 +90,7 @@ def _serve(endpoint: str, episodes: int, ready: Any, stop: Any, out: str) -> Non
         "_serve_steps",
     ):
         setattr(N.CellNode, name, _exclusive(acct, local, getattr(N.CellNode, name), name))
-    for name in ("_saver", "world_to_wire", "world_changes", "dumps", "loads", "_compact"):
+    for name in ("_saver", "world_to_wire", "encode_answer", "dumps", "loads"):
         setattr(N, name, _exclusive(acct, local, getattr(N, name), name))
     with open_session(BusConfig(listen=(endpoint,))) as session:
         nodes = [
@@ -146,13 +146,13 @@ def main(episodes: int, repeats: int) -> None:
             ev.append(("sent", time.perf_counter(), kind))
             return r
 
-    loads = D.loads
+    decode = D.decode_answer
 
-    def timed_loads(b: bytes, what: str) -> Any:
+    def timed_decode(b: bytes, what: str, episode: str = "") -> Any:
         ev.append(("arrive", time.perf_counter(), what))
-        return loads(b, what)
+        return decode(b, what, episode)
 
-    D.loads = timed_loads  # type: ignore[assignment]
+    D.decode_answer = timed_decode  # type: ignore[assignment]
     pull = D.BusCell._pull
 
     def timed_pull(self: Any) -> None:

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from hypothesis import given
+from hypothesis import strategies as st
+
 from hltl.bus.bench import bench_bus, format_bus
 from hltl.bus.session import free_endpoint
 
@@ -44,3 +47,30 @@ def test_bench_bus_suite_with_the_3d_simulator() -> None:
     assert 0 < b.waited_s < b.bus_s and 0 < b.queries < b.ticks
     text = format_bus_suite(b, "hltl bench bus --sim mujoco --episodes 1", "2026-01-01", "test")
     assert "3D simulator" in text and "1/1" in text and "within 10 %" in text
+
+
+def test_the_verdict_is_judged_only_with_a_core_for_the_in_process_run() -> None:
+    """An in-process yardstick that waited for a core (a loaded machine) judges nothing."""
+    from hltl.bus.bench import verdict
+
+    assert verdict(5.0, 1.0, 0.98) == "met on this run"
+    assert verdict(51.1, 1.23, 1.20) == "**not met** on this run"  # session 10's official run
+    text = verdict(5.5, 3.67, 1.72)  # session 12's: the in-process runs 47 % on a core
+    assert text.startswith("**not judged**") and "47%" in text
+
+
+@given(
+    over=st.floats(-50, 200),
+    wall=st.floats(0.01, 100),
+    share=st.floats(0, 1),
+)
+def test_the_verdict_follows_the_share_on_a_core_and_the_target(
+    over: float, wall: float, share: float
+) -> None:
+    from hltl.bus.bench import ON_CORE, verdict
+
+    text = verdict(over, wall, share * wall)
+    if share * wall / wall < ON_CORE:
+        assert text.startswith("**not judged**")
+    else:
+        assert text == ("met on this run" if over <= 10 else "**not met** on this run")

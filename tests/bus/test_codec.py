@@ -22,7 +22,6 @@ from hltl.bus.codec import (
     encode_joint_state,
     encode_pose,
     encode_trajectory,
-    world_changes,
     world_from_wire,
     world_to_wire,
 )
@@ -50,45 +49,6 @@ def test_world_states_cross_the_bus_bit_for_bit(p: tuple, q: tuple, t: float, ki
     import json
 
     assert world_from_wire(json.loads(json.dumps(world_to_wire(w)))) == w
-
-
-def _world(t: float, a: tuple, b: tuple, kind: str, down: bool) -> WorldState:
-    return WorldState(
-        t=t,
-        humans=(("A", a),),
-        objects=(("bottle", ObjectStatus(b, Loc(kind, "" if kind == "rest" else "r1"))),),  # type: ignore[arg-type]
-        hands=(("r1", b), ("r2", a)),
-        unavailable=frozenset({"r2"} if down else ()),
-    )
-
-
-worlds = st.builds(_world, floats, points, points, st.sampled_from(["rest", "held"]), st.booleans())
-
-
-@settings(max_examples=60, deadline=None)
-@given(worlds, worlds, st.data())
-def test_a_tick_ahead_carries_only_what_changed(before: WorldState, w: WorldState, data) -> None:  # type: ignore[no-untyped-def]
-    import json
-
-    # often only some parts change (a hand moves, a person walks): take those from ``w``
-    parts = data.draw(st.sets(st.sampled_from(["humans", "objects", "hands", "unavailable"])))
-    now = WorldState(
-        t=w.t,
-        humans=w.humans if "humans" in parts else before.humans,
-        objects=w.objects if "objects" in parts else before.objects,
-        hands=w.hands if "hands" in parts else before.hands,
-        unavailable=w.unavailable if "unavailable" in parts else before.unavailable,
-    )
-    changes = world_changes(world_to_wire(now), world_to_wire(before))
-    # only the time and what differs travels
-    assert set(changes) - {"t"} <= parts
-    for part in parts - set(changes):
-        assert getattr(now, part) == getattr(before, part)
-    wire = json.loads(json.dumps(changes))
-    assert world_from_wire(wire, like=before) == now
-    if len(changes) < 5:  # without the state before, a partial world is malformed
-        with pytest.raises(BusError, match="malformed world state"):
-            world_from_wire(wire)
 
 
 def test_a_tick_ahead_leaves_out_its_reports_episode_and_empty_reason() -> None:

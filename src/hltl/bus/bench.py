@@ -430,8 +430,10 @@ def format_bus_suite(b: SuiteBench, command: str, date: str, machine: str) -> st
             "",
             f"The same trials as above, each simulated by the 3D simulator (MuJoCo, actions "
             f"timed by their arm motions) in-process and on a node in a process of its own. "
-            f"The wall-time target is {'met' if over <= 10 else '**not met**'} on this run: "
-            f"the bus adds {(b.bus_s - b.inproc_s) / n * 1000:+.0f} ms an episode.",
+            f"The wall-time target is {verdict(over, b.inproc_s, b.inproc_cpu_s)}: "
+            f"the bus adds {(b.bus_s - b.inproc_s) / n * 1000:+.0f} ms an episode (the "
+            f"in-process runs on a core {_share(b.inproc_cpu_s, b.inproc_s)} of their wall "
+            "time).",
         ]
     )
 
@@ -541,6 +543,32 @@ def _pct(x: float, base: float) -> float:
     return (x / base - 1) * 100 if base else 0.0
 
 
+def _share(cpu: float, wall: float) -> str:
+    return f"{cpu / wall:.0%}" if wall > 0 else "—"
+
+
+# The in-process run is the yardstick: a single-threaded loop that only computes, so on a machine
+# with a core to spare it runs on one nearly all its wall time (97.6 % in session 10's official
+# run). Below this share it waited for a core for much of its time, and the percentage compares
+# the machine's load on the two runs, not the bus (session 12: 47-62 % on a core, and session
+# 10's code then measured from -17.5 % to +32.0 % in one lock hold).
+ON_CORE = 0.9
+
+
+def verdict(over: float, inproc_wall: float, inproc_cpu: float, target: float = 10.0) -> str:
+    """The wall-time target's verdict for a run ``over`` percent slower over the bus: judged
+    only when the in-process runs were on a core for at least :data:`ON_CORE` of their wall
+    time (their CPU time ``inproc_cpu`` against their wall time ``inproc_wall``)."""
+    on_core = inproc_cpu / inproc_wall if inproc_wall > 0 else 0.0
+    if on_core < ON_CORE:
+        return (
+            f"**not judged** on this run (the in-process runs were on a core {on_core:.0%} of "
+            f"their wall time, under {ON_CORE:.0%}: the machine's load, not the bus, decides "
+            "the percentage)"
+        )
+    return "met on this run" if over <= target else "**not met** on this run"
+
+
 def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
     over = _pct(b.bus_s, b.inproc_s)
     cpu_over = _pct(b.bus_cpu_s, b.inproc_cpu_s)
@@ -556,7 +584,10 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             " | ≤ 5 ms median |",
             f"| `sim/step` (and start/halt) round trip during the suite, median | "
             f"{b.step_ms:.3f} ms | — |",
-            f"| {b.episodes}-episode suite, in-process wall time | {b.inproc_s:.2f} s | — |",
+            f"| {b.episodes}-episode suite, in-process wall time; the loop's CPU time in it "
+            f"| {b.inproc_s:.2f} s; {ap.inproc_main_cpu_s:.2f} s "
+            f"({_share(ap.inproc_main_cpu_s, b.inproc_s)} on a core) | ≥ {ON_CORE:.0%} on a core "
+            "to judge the target |",
             f"| same suite over the bus, node in a process of its own (as deployed) | "
             f"{ap.bus_s:.2f} s ({apart_over:+.1f} %) | within 10 % |",
             f"| the same, each stretch streamed instead of in one answer: wall; time the loop "
@@ -600,8 +631,8 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "so the wall time counts the node's work before it answers; with one process the "
             "two sides also take turns on one interpreter.",
             "",
-            f"The wall-time target is {'met' if apart_over <= 10 else '**not met**'} on this "
-            f"run: the bus adds {_per(ap.bus_s - b.inproc_s, b)} ms wall per episode with the "
+            f"The wall-time target is {verdict(apart_over, b.inproc_s, ap.inproc_main_cpu_s)}: "
+            f"the bus adds {_per(ap.bus_s - b.inproc_s, b)} ms wall per episode with the "
             "node apart. Where it goes, per episode: the executor's loop's CPU time differs by "
             f"{_per(ap.main_cpu_s - ap.inproc_main_cpu_s, b, '+')} ms from in-process "
             "(it no longer simulates, but decodes every tick, asks and is told) and waits "
@@ -613,16 +644,16 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             f"{_per(ap.cpu_s - ap.main_cpu_s, b)} ms CPU). With the node in the process: "
             f"{_per(b.bus_s - b.inproc_s, b)} ms wall and "
             f"{_per(b.bus_cpu_s - b.inproc_cpu_s, b)} ms CPU. "
-            "The node simulates the ticks the executor will ask for next (until an action "
-            "fails, is halted or ends its step, or a robot's availability changes, doubling "
-            "the stretch while the executor uses all of it) and sends them, with the actions' "
-            "reports and each tick's world as it changed, in its answer (streamed: the first "
-            "in its answer, the rest as further replies to the query while it simulates them, "
-            "1, 2, 4, 8 ticks a reply); the executor consumes them without a round trip, and a "
-            "command in the middle makes the node undo the rest (the simulator's state saved "
-            "before the stretch, and every 8 ticks of a streamed one) and replay the ticks "
-            "used since the last save, so the log is unchanged. A step's starts and halts ride "
-            "the query that follows "
+            "The node simulates the ticks the executor will ask for next (until an action fails, is"
+            " halted or ends its step, or a robot's availability changes, doubling the stretch "
+            "while the executor uses all of it) and sends them, with the actions' reports and each "
+            "tick's world (a binary block after the answer's JSON), in its answer (streamed: the "
+            "first in its answer, the rest as further replies to the query while it simulates them,"
+            " 1, 2, 4, 8 ticks a reply); the executor consumes them without a round trip, and a "
+            "command in the middle makes the node undo the rest (the simulator's state saved before"
+            " the stretch, and every 8 ticks of a streamed one) and replay the ticks used since the"
+            " last save, so the log is unchanged. A step's starts and halts ride the query that "
+            "follows "
             f"them. Hence {b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % "
             "wall).",

@@ -147,36 +147,15 @@ def world_to_wire(w: WorldState) -> dict[str, Any]:
     }
 
 
-def world_changes(wire: dict[str, Any], before: dict[str, Any]) -> dict[str, Any]:
-    """A world state (:func:`world_to_wire`) as it differs from ``before``: its time and the
-    parts that changed (people, objects, hands, unavailable robots); the rest is taken from
-    the state before by :func:`world_from_wire` (``like``)."""
-    return {k: v for k, v in wire.items() if k == "t" or before.get(k) != v}
-
-
 def _v3(p: Sequence[Any]) -> Vec3:
     if len(p) != 3:
         raise ValueError(f"expected a point [x, y, z], got {p!r:.60}")
     return (float(p[0]), float(p[1]), float(p[2]))
 
 
-def world_from_wire(d: Mapping[str, Any], like: WorldState | None = None) -> WorldState:
-    """Inverse of :func:`world_to_wire`. With ``like``, the parts ``d`` leaves out (all but
-    its time) are those of ``like``: a tick ahead carries only what changed since the tick
-    before."""
+def world_from_wire(d: Mapping[str, Any]) -> WorldState:
+    """Inverse of :func:`world_to_wire`."""
     try:
-        if like is not None and len(d) < 5:
-            return WorldState(
-                t=float(d["t"]),
-                humans=_humans(d["humans"]) if "humans" in d else like.humans,
-                objects=_objects(d["objects"]) if "objects" in d else like.objects,
-                hands=_hands(d["hands"]) if "hands" in d else like.hands,
-                unavailable=(
-                    frozenset(str(r) for r in d["unavailable"])
-                    if "unavailable" in d
-                    else like.unavailable
-                ),
-            )
         return WorldState(
             t=float(d["t"]),
             humans=_humans(d["humans"]),

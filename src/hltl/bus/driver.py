@@ -25,6 +25,7 @@ from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import PREFIX, Keys, robot_of
 from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, zenoh
+from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
@@ -236,7 +237,7 @@ class BusCell:
         self._obs: WorldState | None = None
         # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
         self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time, "stream": stream}
-        self._ahead: list[dict[str, Any]] = []
+        self._ahead: list[TickReader] = []  # their blocks, read as the loop consumes them
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
         self._streamed = 0  # ticks of the current stretch received so far
         self._batch = 0
@@ -473,12 +474,16 @@ class BusCell:
                 self.stats.waited += now - w0
                 w0 = now
                 if reply.ok is not None:
-                    d = loads(reply.ok.payload.to_bytes(), f"answer from {key}")
+                    d, ticks = decode_answer(
+                        reply.ok.payload.to_bytes(), f"answer from {key}", self.episode
+                    )
                     if "from" in d:  # streamed ticks after an answer that was lost: the
                         continue  # query's end is waited for and it is asked again
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     if keep and d.get("more"):
-                        self._stream, self._streamed = replies, len(d.get("ahead", ()))
+                        self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
+                    if ticks is not None:
+                        d["ahead"] = ticks
                     return d
                 refusal = _refusal(reply.err.payload.to_bytes())
                 if refusal is not None:
@@ -493,17 +498,27 @@ class BusCell:
     def _take(self, d: dict[str, Any]) -> None:
         """Take in a reset, step or peek answer, and the ticks simulated after it."""
         self._absorb(d)
-        self._ahead = list(d.get("ahead", ()))
+        ticks = d.get("ahead")
+        self._ahead = [ticks] if isinstance(ticks, TickReader) else []
         self._batch = int(d.get("step", 0))
         self._consumed = 0
+
+    def _ahead_time(self) -> float | None:
+        """The time of the next tick the node simulated ahead (``None``: none left)."""
+        while self._ahead:
+            t = self._ahead[0].peek_time()
+            if t is not None:
+                return t
+            self._ahead.pop(0)
+        return None
 
     def _absorb(self, d: dict[str, Any]) -> None:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
         clock."""
         for rec in d.get("records", ()):
             self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
-        if "observation" in d:  # (a tick ahead: what changed since the one before)
-            self._obs = world_from_wire(d["observation"], like=self._obs)
+        if "observation" in d:
+            self._obs = world_from_wire(d["observation"])
         self._instructions.extend(str(s) for s in d.get("instructions", ()))
         reports = [Report.from_dict(item, self.episode) for item in d.get("status", ())]
         if reports:
@@ -512,6 +527,21 @@ class BusCell:
                     if rep.episode == self.episode:
                         self._accept(rep)
         self._clock(d)
+
+    def _absorb_tick(self, tick: Tick) -> None:
+        """Take in one tick simulated ahead, as :meth:`_absorb` an answer's."""
+        for rec in tick.records:
+            self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
+        self._obs = tick.world
+        self._instructions.extend(tick.instructions)
+        if tick.reports:
+            with self._cond:
+                for rep in tick.reports:
+                    self._accept(rep)
+        self._next = math.inf if tick.next is None else tick.next
+        self._pending = tick.pending
+        self._unavailable = frozenset(tick.unavailable) if tick.unavailable else _NONE
+        self._dirty = False
 
     def _clock(self, d: dict[str, Any]) -> None:
         nxt = d.get("next")
@@ -605,21 +635,26 @@ class BusCell:
     def _follow(self, t: float) -> None:
         """Bring what the executor knows of the cell to time ``t``: here the node steps to it
         (or already did, ahead of the loop) and every report up to then is in."""
-        if not self._ahead and not self._dirty and self._stream is not None:
-            self._pull()
-        if self._ahead and not self._dirty and self._ahead[0]["t"] == t:
-            # the node already simulated this tick: no round trip
-            d = self._ahead.pop(0)
-            self._consumed += 1
-            self._absorb(d)
+        if self._dirty:
+            nxt = None
         else:
-            d_ = self._request(t)
-            if d_ is None:
+            nxt = self._ahead_time()
+            if nxt is None and self._stream is not None:
+                self._pull()
+                nxt = self._ahead_time()
+        if nxt == t:  # the node already simulated this tick: no round trip
+            tick = self._ahead[0].take()
+            self._consumed += 1
+            self._absorb_tick(tick)
+            upto = tick.count
+        else:
+            d = self._request(t)
+            if d is None:
                 self._lose_all(f"the simulator node stopped answering at t={t:.2f}")
                 return
-            d = d_
             self._take(d)
-        self._sync(int(d["reports"]))
+            upto = int(d["reports"])
+        self._sync(upto)
 
     def _pull(self) -> None:
         """Wait for the next ticks the node streams (further replies to the last query), up
@@ -633,13 +668,14 @@ class BusCell:
                 reply = next(stream, None)
                 if reply is None or reply.ok is None:  # the query's end, or its timeout
                     return
-                d = loads(reply.ok.payload.to_bytes(), "streamed ticks")
-                ticks = d.get("ahead")
-                if d.get("from") != self._streamed or not isinstance(ticks, list):
+                d, ticks = decode_answer(
+                    reply.ok.payload.to_bytes(), "streamed ticks", self.episode
+                )
+                if d.get("from") != self._streamed or ticks is None:
                     return
-                self._ahead.extend(ticks)
-                self._streamed += len(ticks)
-                self.stats.streamed += len(ticks)
+                self._ahead.append(ticks)
+                self._streamed += ticks.size
+                self.stats.streamed += ticks.size
                 if not d.get("more"):
                     return
             self._stream = stream

@@ -24,13 +24,13 @@ from hltl.bus.codec import (
     encode_pose,
     finite_or_none,
     loads,
-    world_changes,
     world_to_wire,
 )
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.bus.session import executor_here
 from hltl.bus.snapshot import freeze, thaw
+from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import HANDLED, EventLog, LogRecord
@@ -182,9 +182,9 @@ class _Ahead:
         return cls(count, tick, max_time, stream if isinstance(stream, bool) else None)
 
 
-# a tick simulated ahead: its time, the observation, the actions' reports, and the observation
-# as the answer carries it (world_to_wire)
-_Ticked = tuple[float, WorldState, list["Report"], dict[str, Any]]
+# a tick simulated: its time, the observation, the actions' reports, and the observation as
+# JSON (world_to_wire) when an answer carried it so (None: ticks ahead travel in binary)
+_Ticked = tuple[float, WorldState, list["Report"], dict[str, Any] | None]
 
 
 @dataclass(slots=True)
@@ -434,7 +434,7 @@ class CellNode:
         or as soon as the next step query waits (the executor has moved on: returned, to be
         answered next; looked for before every tick), a command settled the batch, or the
         episode ended."""
-        size, ticks, first = 1, list[dict[str, Any]](), 0
+        size, ticks, first = 1, list[Tick](), 0
         while True:
             if executor_here():  # (an executor in this process gets the interpreter lock)
                 time.sleep(0)
@@ -453,7 +453,7 @@ class CellNode:
                 more = tick is not None and not s.done
                 if len(ticks) < size and more:
                     continue
-                chunk = dumps({"from": first, "ahead": ticks, "more": more})
+                chunk = encode_answer({"from": first, "more": more}, ticks)
                 try:
                     self._reply_bytes(query, chunk)
                 except Exception:  # the query timed out at the executor: it asks again
@@ -516,11 +516,11 @@ class CellNode:
                 obs, tick, reports = self._tick(ep, t, ep.latest, publish=False)
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
-            s = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")), base)
-            reply = dumps(answer)
+            s, ahead = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")), base)
+            reply = encode_answer(answer, ahead)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
-            self._ahead_sent = "ahead" in answer
+            self._ahead_sent = bool(ahead)
             # observers get the committed ticks (and this one, every report of it) once the
             # executor has its answer, when the node is idle
             self._later.append((ep, committed, False))
@@ -549,12 +549,7 @@ class CellNode:
         """One tick of the loop on the cell, as the in-process loop calls it: advance, observe,
         instructions, then the actions' reports (also carried in the answer) and the clock."""
         cell = ep.cell
-        ep.version += 1
-        cell.advance(t)
-        obs = cell.observe(t)
-        instructions = cell.take_instructions()
-        reports = self._feedback(ep, t, latest, publish=publish)
-        self.stats.steps += 1
+        obs, instructions, reports = self._step_cell(ep, t, latest, publish=publish)
         return (
             obs,
             {
@@ -567,6 +562,20 @@ class CellNode:
             },
             reports,
         )
+
+    def _step_cell(
+        self, ep: _Episode, t: float, latest: dict[int, Report], *, publish: bool
+    ) -> tuple[WorldState, list[str], list[Report]]:
+        """Advance the cell to ``t``, observe it, take its instructions, then the actions'
+        reports, in the in-process loop's order."""
+        cell = ep.cell
+        ep.version += 1
+        cell.advance(t)
+        obs = cell.observe(t)
+        instructions = cell.take_instructions()
+        reports = self._feedback(ep, t, latest, publish=publish)
+        self.stats.steps += 1
+        return obs, instructions, reports
 
     # -- real time -------------------------------------------------------------------------------
 
@@ -651,21 +660,21 @@ class CellNode:
         answer: dict[str, Any],
         ahead: _Ahead | None,
         base: Callable[[], None] | None = None,
-    ) -> _Stretch | None:
+    ) -> tuple[_Stretch | None, list[Tick]]:
         """Simulate the ticks the executor will ask for next, until something happens that it
         is likely to act on (an action fails, is halted or ends its step, a robot's availability
         changes) or ``ahead.count`` ticks. An instruction does not end a stretch: with a step
         running the executor grounds it and waits for the step, and on the rare update that
         halts what it undoes, the ticks after it are undone like any a command cuts (it cost a
-        round trip in most episodes of the suite). They go in ``answer["ahead"]`` (compact:
-        :func:`_compact`) and wait in a batch for the executor to say how many it used. Asked
-        to stream, only the
-        first tick goes in the answer (``"more"``: the stretch, returned, goes on).
+        round trip in most episodes of the suite). They are returned, to go with ``answer`` as
+        a binary block (:func:`hltl.bus.ticks.encode_answer`), and wait in a batch for the
+        executor to say how many it used. Asked to stream, only the first tick is returned
+        (``answer["more"]``: the stretch, returned, goes on).
         Only cells whose state can be saved and restored (the discrete-event simulator, the
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
         puts the cell back to now (else it is saved before the first tick)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
-            return None
+            return None, []
         if ahead.stream is None:  # the executor leaves it to the node
             ahead = replace(ahead, stream=streams(ep.cell))
         batch = _Batch(n, base, self._seq, dict(ep.latest), [], dict(ep.latest), self._seq)
@@ -679,12 +688,11 @@ class CellNode:
                 break
         if out:
             ep.batch = batch
-            answer["ahead"] = out
             if ahead.stream and not s.done:
                 answer["more"] = True
-        return s
+        return s, out
 
-    def _ahead_tick(self, ep: _Episode, s: _Stretch) -> dict[str, Any] | None:
+    def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
         """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
         on from the batch's, not committed until the executor says so. The simulator is saved
         before the first one."""
@@ -702,26 +710,35 @@ class CellNode:
             assert mark is not None
             b.marks.append((len(b.ticks), mark, b.seq, dict(b.latest)))
         self._seq = b.seq
-        try:
-            obs, tick, reports = self._tick(ep, t_next, b.latest, publish=False)
+        cell = ep.cell
+        try:  # as _tick, the calls in the same order
+            obs, instructions, reports = self._step_cell(ep, t_next, b.latest, publish=False)
+            tick = Tick(
+                t=t_next,
+                world=obs,
+                reports=tuple(reports),
+                next=finite_or_none(cell.next_event_time()),
+                pending=cell.pending_instructions(),
+                unavailable=tuple(sorted(cell.unavailable(t_next))),
+                count=self._seq,
+                instructions=tuple(instructions),
+                records=tuple(self._flush()),
+            )
         except BaseException:  # the cell failed: back to before the stretch, none of it kept
             ep.version += 1
             b.restore()  # (set above)
             raise
         finally:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
-        wire = tick["observation"]
         s.done = (
             _may_act(reports, b.latest)
-            or tick["unavailable"] != s.unavailable
+            or list(tick.unavailable) != s.unavailable
             or t_next >= ahead.max_time - 1e-9
         )
-        if b.ticks:  # the world as it differs from the tick before (the first one in full)
-            tick["observation"] = world_changes(wire, b.ticks[-1][3])
-        b.ticks.append((t_next, obs, reports, wire))
+        b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
-        s.t, s.next = t_next, tick["next"]
-        return _compact(tick)
+        s.t, s.next = t_next, tick.next
+        return tick
 
     def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> list[_Ticked]:
         """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest. The
@@ -1112,23 +1129,6 @@ def _saver(cell: Cell) -> Callable[[], None] | None:
             sim.advance(sim.now)
 
     return restore
-
-
-# what a tick ahead leaves out when empty (or false): the executor reads their absence so
-_QUIET = ("instructions", "status", "records", "unavailable", "pending")
-
-
-def _compact(tick: dict[str, Any]) -> dict[str, Any]:
-    """A tick ahead as it travels: no empty lists, and its reports without their episode (the
-    request's) and empty reasons (see ``Report.from_dict``)."""
-    for k in _QUIET:
-        if not tick[k]:
-            del tick[k]
-    for item in tick.get("status", ()):
-        del item["episode"]
-        if not item["reason"]:
-            del item["reason"]
-    return tick
 
 
 def _call(ep: _Episode, call: Callable[[], Handle | None]) -> Handle | None:
