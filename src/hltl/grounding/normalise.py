@@ -53,6 +53,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.tree import tasks
 
 _F = re.IGNORECASE
 _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
@@ -222,7 +223,17 @@ _WORDS: tuple[tuple[str, str], ...] = (
     (r",\s*like,", ","),
     (r",?\s*\bright now\b,?", ""),
     (r",?\s*\bif (?:that's|that is|it's|it is) (?:easier|simpler|better|quicker)\b", ""),
-    (r",?\s*\b(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b\s*[:,]?", ":"),
+    # "be quick and give Bob the chips": said first, it asks nothing; later, "…, so be nice: give
+    # her the cup" keeps the request apart from the remark before it
+    (
+        r"(^|(?<=[.;!?])\s*)(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b"
+        r"(?:\s*[:,]|\s+and\b)?\s*",
+        r"\1",
+    ),
+    (
+        r",?\s*\b(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b(?:\s*[:,])?",
+        ", so",
+    ),
     (
         r",\s*(?:very |so |quite |really |rather |most |extremely )?(?:politely|nicely|kindly|"
         r"sweetly)\s*,",
@@ -285,8 +296,10 @@ def _words(text: str, lexicon: Lexicon) -> str:
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
     text = " ".join(sentences)
-    # "…, and the apple with Carol": an object left with a person goes to that person
-    for h in lexicon.scene.humans:
+    # "…, and the apple with Carol": an object left with a person goes to that person (in a
+    # list of what goes where; after 'give P' it could be a second recipient or company)
+    given = re.search(r"\b(?:give|hand|pass|bring|take|fetch|get)\b", text, _F)
+    for h in [] if given else lexicon.scene.humans:
         for alias in (*h.aliases, h.name):
             text = _sub(
                 rf"\b(the \w+(?: \w+)?) with ({re.escape(alias)})(?=\s*(?:[.,;!?]|\band\b|$))",
@@ -511,7 +524,7 @@ def _asides(text: str, lexicon: Lexicon) -> str:
 
 _MAY_HAVE = r"|\b(?:can|could|may|might|should) (?:have|get)\b"
 _CLAUSE = re.compile(
-    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|:(?=\s)|,(?=\s*(?:could|can|would|will)\b)|"
+    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|,(?=\s*(?:could|can|would|will)\b)|"
     r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b)|"
     r",(?=\s*(?:he|she|they|it)(?:'s|'re|'ll|'d| is| are| was| were| will)\b))\s*",
     _F,
@@ -569,7 +582,29 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     named = _ids(body, lexicon)
     if not {r.id for c in said for it in _names(c, lexicon) for r in it.refs} <= named:
         return text  # the remark names something the request does not: it may ask for it
+    wanting = [c for c in said if re.search(_TASK_WORDS + _MAY_HAVE, c, _F)]
+    if wanting and not _agrees(wanting, body, lexicon):
+        return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _agrees(remarks: list[str], body: str, lexicon: Lexicon) -> bool:
+    """Whether every object a remark with a want names goes, in the request, to a person that
+    remark names ('Mr Novak wants his lemon earlier, so …': the lemon is Mr Novak's)."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        node = parse_instruction(body, lexicon.scene, lexicon, normalise=False)
+    except GroundingError:
+        return False
+    given = {t.obj: t.target for t in tasks(node)}
+    for remark in remarks:
+        people = _ids(remark, lexicon, "human")
+        for obj in _ids(remark, lexicon, "object"):
+            if given.get(obj) not in people:
+                return False
+    return True
 
 
 _NEGATIONS = re.compile(
@@ -584,8 +619,8 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
     "it's urgent", 'Bob wants the chips earlier') with no word that could cancel, negate or
     restrict a task: only such a clause can be a remark."""
     words = clause.strip(" ,:").lower()
-    if _NEGATIONS.search(words):
-        return False
+    if _NEGATIONS.search(words) or _ORDER_WORDS.search(words):
+        return False  # "Bob first, please" orders: no remark
     words = re.sub(r"^(?:and|so|because|since|as|anyway|well),?\s+", "", words)
     m = re.match(r"^(?:it'?s|its|it|he|she|they|that|this|there)\b", words)
     if m is None:
@@ -773,7 +808,8 @@ def _labels(text: str, lexicon: Lexicon) -> str:
     if (
         len(label.split()) > 5
         or _names(label, lexicon)
-        or (_NEGATIONS.search(label) and len(label.split()) < 2)  # "Not urgent:" is a label
+        # "Not urgent:" / "No rush -" are labels; "Cancel this:" is not
+        or (_NEGATIONS.search(label) and not re.match(r"^(?:not|no) [a-z]+$", label, _F))
         or _ORDER_WORDS.search(label)
         or re.search(_TASK_WORDS, label, _F)
         or not _plain_words(_NOTE_WORDS.sub(" ", label), lexicon)
@@ -870,8 +906,9 @@ def _contrast(text: str, lexicon: Lexicon) -> str:
             and not yes_ids & no_ids
             and _only_kind(no, lexicon, "object")
         ):
-            rest = m.group(3)
-            return f"{_one(yes, no, lexicon)}{rest}"
+            said = f"{_one(yes, no, lexicon)}{m.group(3)}"
+            if _keeps_out(said, no_ids, lexicon):
+                return said
     sentences = [x for x in re.split(r"(?<=[.;!?])\s+", text.strip()) if x]
     if len(sentences) >= 2:
         last = re.match(r"^not (the \w+ one|the [\w ]+?)[.!]?$", sentences[-1], _F)
@@ -885,9 +922,22 @@ def _contrast(text: str, lexicon: Lexicon) -> str:
                     return text
                 said = said[: -len("one")] + next(iter(kinds))
             no_ids = _ids(said, lexicon, "object")
-            if no_ids and not no_ids & named:
+            if no_ids and not no_ids & named and _keeps_out(before, no_ids, lexicon):
                 return before  # leaving out what is not asked for adds nothing
     return text
+
+
+def _keeps_out(text: str, ids: set[str], lexicon: Lexicon) -> bool:
+    """Whether the grammar reads ``text`` with none of the objects ``ids`` in any task ('Give
+    Carol everything except the mugs. Not the crisps.': the crisps are in 'everything')."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        node = parse_instruction(text, lexicon.scene, lexicon)
+    except GroundingError:
+        return False  # not read: the negation is left to be refused with it
+    return not any(t.obj in ids for t in tasks(node))
 
 
 def _one(said: str, other: str, lexicon: Lexicon) -> str:
@@ -1144,7 +1194,7 @@ def _both_kind(text: str, lexicon: Lexicon) -> str:
 
 _RANKS = (
     (r"first(?: of all)?|firstly|to start(?: with)?|start with", 0),
-    (r"in between|in the middle|between those|second|secondly|after that|next|then", 1),
+    (r"in between|in the middle|second|secondly", 1),
     (r"last(?: of all)?|lastly|finally|at the end", 2),
 )
 

@@ -1876,6 +1876,14 @@ def _exclusions(items: list[Item]) -> list[Item]:
             raise GroundingError(
                 f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
             )
+        named = {r.id for x in out[start:target] if _objects(x) for r in x.refs}
+        if not ids <= {r.id for r in out[target].refs} and ids & named:
+            # "the small box and the medium box on the belt, not the small box": another name
+            # before has it, and nothing would be left out (the small box kept, read wrong)
+            raise GroundingError(
+                f"{it.text!r} leaves out the {', '.join(sorted(ids))}, which "
+                f"{out[target].text!r} does not name: say what to leave out of what"
+            )
         kept = tuple(r for r in out[target].refs if r.id not in ids)
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
