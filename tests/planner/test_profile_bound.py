@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
-from hltl.planner import PlanStatus, plan, profile, schedule
+from hltl.planner import PlanStatus, anytime, plan, profile, schedule
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.search import _Search
 from hltl.spec.hierarchy import HSpec, spec_from_dict
@@ -172,6 +172,8 @@ def test_anytime_gives_its_last_share_to_the_profile_bound(monkeypatch: pytest.M
         return got
 
     monkeypatch.setattr(profile, "profile_bound", spy)
+    # a share of 4 s long enough for the profile bound (10 s budgets give it 1 s)
+    monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.makespan is not None
