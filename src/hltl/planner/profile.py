@@ -1,5 +1,4 @@
-"""A lower bound that sees step synchrony cheaply: routes as flows, and how many steps of each
-length every robot and every route needs (docs/planner.md, "Profile bound")."""
+"""A lower bound that sees step synchrony cheaply: routes as flows, steps counted by length."""
 
 from __future__ import annotations
 
