@@ -1,0 +1,251 @@
+"""A lower bound that sees step synchrony cheaply: routes as flows, steps counted by length."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from hltl.planner.lns import solve_until
+from hltl.planner.problem import Instance, Node, Problem
+from hltl.planner.relaxed import RelaxedGraph, _dijkstra
+from hltl.planner.schedule import Target, time_unit
+
+_FAR = 1 << 30  # "no route" in instance counts
+
+
+@dataclass(frozen=True, slots=True)
+class ProfileBound:
+    """What the relaxation proved: ``ticks`` is a lower bound on the optimal makespan from the
+    node (never below the ``floor`` it was given); ``solved`` says the relaxation has a solution
+    at ``ticks`` (more time cannot raise it); ``questions`` is how many levels were asked."""
+
+    ticks: int
+    solved: bool
+    questions: int
+
+
+def applicable(problem: Problem) -> bool:
+    """The proof holds: durations are fixed (a step lasts exactly its longest instance) and
+    every instance takes time (a plan ending by M has at most M / shortest non-empty steps)."""
+    return problem.cost.fixed and all(i.lower > 0 for i in problem.instances)
+
+
+def feasible(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    deadline: float,
+    *,
+    seed: int = 0,
+) -> bool | None:
+    """Whether the profile relaxation has a solution ending by ``level`` ticks: False when
+    CP-SAT proved it has none (then every plan from ``node`` that makes every target happen is
+    longer than ``level``), True when it found one, None when it could not tell before
+    ``deadline`` (``time.perf_counter()``; building the model counts).
+
+    The relaxation: each target's object follows a route of instances from where it is to an
+    instance that makes its atom happen (a unit flow; places too far for ``level`` left out);
+    for each duration level d, c_d is the number of steps lasting at least d, and the makespan
+    is sum_j (d_j - d_(j-1)) c_(d_j) <= level; every robot's route instances lasting at least d
+    fit into the c_d steps (one instance per robot and step), as do every route's own; and
+    before a robot's first route instance and after its last there are as many such steps as
+    the objects it handles need at least (counted in instances lasting at least d, guarded by
+    "the robot handles one of these objects").
+    """
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
+    durations = sorted({i.lower for i in problem.instances})
+    unit = time_unit(problem)
+    most_steps = level // durations[0]
+    locs = node[0]
+    m = cp_model.CpModel()
+    count = {d: m.new_int_var(0, most_steps, "") for d in durations}
+    for shorter, longer in itertools.pairwise(durations):
+        m.add(count[longer] <= count[shorter])
+    prev = 0
+    makespan = []
+    for d in durations:
+        makespan.append(((d - prev) // unit) * count[d])
+        prev = d
+    m.add(sum(makespan) <= level // unit)
+    # per robot: its candidate route instances, by object
+    by_robot: list[dict[int, list[tuple[Instance, Any]]]] = [{} for _ in problem.robots]
+    fires_of: dict[int, frozenset[int]] = {}
+    for t in tgts:
+        o = t.obj
+        here = locs[o]
+        reach = graph.place_time[o][here]
+        togo = graph.event_time[o]
+        fires_of[o] = t.fires
+        out: dict[int, list[Any]] = {}
+        into: dict[int, list[Any]] = {}
+        fired: list[Any] = []
+        mine: list[tuple[Instance, Any]] = []
+        for inst in (i for row in problem.by_obj_pre[o] for i in row):
+            fires = inst.index in t.fires
+            rest = 0.0 if fires else togo[inst.post].get(t.atom, math.inf)
+            # a loop-erased route never comes back to where it starts, and a plan ending by
+            # ``level`` uses no instance it cannot reach, do and finish after by then
+            if (not fires and inst.post == here) or reach[inst.pre] + inst.lower + rest > level:
+                continue
+            x = m.new_bool_var("")
+            out.setdefault(inst.pre, []).append(x)
+            if fires:
+                fired.append(x)
+            else:
+                into.setdefault(inst.post, []).append(x)
+            mine.append((inst, x))
+            for r in range(len(problem.robots)):
+                if inst.executors >> r & 1:
+                    by_robot[r].setdefault(o, []).append((inst, x))
+        if not fired:
+            return False
+        for place in set(out) | set(into):
+            supply = 1 if place == here else 0
+            m.add(sum(out.get(place, [])) - sum(into.get(place, [])) == supply)
+        m.add(sum(fired) == 1)
+        for d in durations:
+            rows = [x for inst, x in mine if inst.lower >= d]
+            if rows:
+                m.add(sum(rows) <= count[d])
+    counts = {
+        (t.obj, d): _counts(problem, locs[t.obj], t.obj, t.fires, d)
+        for t in tgts
+        for d in durations
+    }
+    for jobs in by_robot:
+        for d in durations:
+            _robot_rows(m, jobs, d, counts, fires_of, count[d])
+    solved = solve_until(m, deadline, seed)
+    if solved is None:
+        return None
+    _, status = solved
+    if status == cp_model.INFEASIBLE:
+        return False
+    if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+        return True
+    return None
+
+
+def _robot_rows(
+    m: Any,
+    jobs: dict[int, list[tuple[Instance, Any]]],
+    d: int,
+    counts: dict[tuple[int, int], tuple[list[int], list[int]]],
+    fires_of: dict[int, frozenset[int]],
+    steps: Any,
+) -> None:
+    """One robot's rows at duration level ``d``: for a set J of the objects it may handle, its
+    route instances on J lasting at least d, plus (when it handles one of J at all) the fewest
+    such instances any object of J needs before the robot can act on it and after, fit into the
+    ``steps`` lasting at least d. J: all its objects, and those whose head (tail) is at least
+    each value, as the one-machine bound takes them."""
+    if not jobs:
+        return
+    head: dict[int, int] = {}
+    tail: dict[int, int] = {}
+    for o, lst in jobs.items():
+        before, after = counts[(o, d)]
+        head[o] = min(before[inst.pre] for inst, _ in lst)
+        tail[o] = min(0 if inst.index in fires_of[o] else after[inst.post] for inst, _ in lst)
+    objs = sorted(jobs)
+    subsets = [objs]
+    subsets += [[o for o in objs if head[o] >= h] for h in sorted(set(head.values()))]
+    subsets += [[o for o in objs if tail[o] >= h] for h in sorted(set(tail.values()))]
+    seen: set[tuple[int, ...]] = set()
+    for subset in subsets:
+        key = tuple(subset)
+        if not subset or key in seen:
+            continue
+        seen.add(key)
+        xs = [x for o in subset for inst, x in jobs[o] if inst.lower >= d]
+        extra = min(head[o] for o in subset) + min(tail[o] for o in subset)
+        if extra >= _FAR:
+            continue  # (cannot happen for candidate instances; kept safe)
+        if extra == 0:
+            if xs:
+                m.add(sum(xs) <= steps)
+            continue
+        handles = m.new_bool_var("")
+        for o in subset:
+            for _, x in jobs[o]:
+                m.add_implication(x, handles)
+        m.add(sum(xs) + extra * handles <= steps)
+
+
+def _counts(
+    problem: Problem, here: int, o: int, fires: frozenset[int], d: int
+) -> tuple[list[int], list[int]]:
+    """For object ``o`` at ``here``: per place, the fewest instances lasting at least ``d`` on
+    any route from ``here`` to it, and on any route from it to an instance of ``fires``
+    (that instance included); ``_FAR`` where there is none."""
+    n = len(problem.locs)
+    forward: list[list[tuple[int, float]]] = [[] for _ in range(n)]
+    back: list[list[tuple[int, float]]] = [[] for _ in range(n + 1)]  # n: "the atom happened"
+    for v in range(n):
+        for inst in problem.by_obj_pre[o][v]:
+            w = float(inst.lower >= d)
+            forward[v].append((inst.post, w))
+            back[n if inst.index in fires else inst.post].append((v, w))
+    before = _dijkstra(forward, here)
+    after = _dijkstra(back, n)[:n]
+    return _whole(before), _whole(after)
+
+
+def _whole(dist: list[float]) -> list[int]:
+    return [_FAR if math.isinf(k) else int(k) for k in dist]
+
+
+def profile_bound(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    *,
+    floor: int,
+    upper: int | None,
+    deadline: float,
+    seed: int = 0,
+) -> ProfileBound:
+    """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
+    target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
+    ``upper`` a known plan's makespan (None: none). Levels are asked from ``floor`` up in
+    doubling strides while CP-SAT proves "no" (each "no" proves every level below it); a level
+    above the next one gets a few times what the last "no" took, and where it has a relaxed
+    solution or no answer the climb goes on one time unit at a time below it. The next level's
+    solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
+    next level gets all the time left). Never below ``floor``."""
+    if not tgts:
+        return ProfileBound(floor, False, 0)
+    unit = time_unit(problem)
+    proven = -(-floor // unit)  # the least level (units) not ruled out
+    # the least level known (or feared) to have a relaxed solution: a plan's makespan has one
+    cap = math.inf if upper is None else upper // unit
+    cap_solved = upper is not None
+    stride = 1
+    questions = 0
+    last = 0.0  # seconds the last "no" took
+    while proven < cap and (now := time.perf_counter()) < deadline:
+        ask = int(min(proven + stride - 1, cap - 1))
+        # a level far up may be much harder than the ones below it: it gets a few times what the
+        # last "no" took, the next level up all the time left
+        until = deadline if ask == proven else min(deadline, now + max(4 * last, 0.5))
+        questions += 1
+        answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed)
+        if answer is False:
+            proven = ask + 1
+            stride *= 2
+            last = time.perf_counter() - now
+        elif answer is None and ask > proven:
+            stride = 1  # no answer far up: climb one level at a time again
+        else:  # a solution there (or no answer at the next level): nothing below it is known
+            cap = ask
+            cap_solved = answer is True
+            stride = 1
+    return ProfileBound(max(floor, proven * unit), proven == cap and cap_solved, questions)
