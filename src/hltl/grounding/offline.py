@@ -222,6 +222,7 @@ class _Frag:
     condition: bool = False  # said after 'once' / 'after' / 'when': what another step waits on
     trails: bool = False  # a condition said after the clause it holds back
     choice: int = -1  # 'it' for a chosen object ('a block … it'): the fragment that chose it
+    bare: bool = False  # a person's name alone: no verb, object or preposition ('…, then Lily')
 
 
 @dataclass(slots=True)
@@ -805,6 +806,7 @@ class _Parser:
                     raise GroundingError(f"cannot parse {frag.text!r}: two recipients")
                 tid, kind = self._target(np, frag, "")
                 frag.target = _Target(kind, tid, "to", np.text)
+                frag.bare = frag.verb is None and kind == "human"
             else:
                 if not allow_object:
                     raise GroundingError(f"cannot parse {frag.text!r}: two objects")
@@ -948,6 +950,19 @@ class _Parser:
                     (g for g in reversed(frags[:k]) if g.objects and not g.pick), None
                 )
                 if source is not None and source.objects is not None:
+                    if (
+                        f.bare
+                        and f.target is not None
+                        and source.target is not None
+                        and source.target.kind == "surface"
+                    ):
+                        # "The bib goes on the high chair. Then Lily.": a name alone does not
+                        # take over an object said to be put somewhere; what Lily gets is unsaid
+                        raise GroundingError(
+                            f"{f.text!r} names no object, and the {', '.join(source.objects)} "
+                            f"{'is' if len(source.objects) == 1 else 'are'} put on the "
+                            f"{source.target.text}: say what {f.target.text} gets"
+                        )
                     f.objects, f.group = list(source.objects), source.group
                 if f.objects is None:
                     raise GroundingError(

@@ -1866,9 +1866,10 @@ def _exclusions(items: list[Item]) -> list[Item]:
             if j < len(items) and _objects(items[j]):
                 excluded.append(items[j])
                 j += 1
+                # "not the red one or the green one" leaves out both, as 'and' does
                 if (
                     j + 1 < len(items)
-                    and _is(items[j], "and", ",")
+                    and _is(items[j], "and", ",", "or")
                     and _starts_objects(items, j + 1)
                 ):
                     j += 1
