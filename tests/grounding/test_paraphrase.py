@@ -13,6 +13,9 @@ from hltl.bench.grounding import (
     PARTS,
     Corpus,
     Entry,
+    Outcome,
+    Score,
+    format_scores,
     judge,
     load_corpus,
     offline_tree,
@@ -89,8 +92,10 @@ KNOWN_MISSES = frozenset(
 # "blind7" written in session 8 by another engineer, measured once, its misses fixed in
 # session 9; "blind8" written in session 9 by another engineer, measured once, its misses met
 # in session 10; "blind9" written in session 10 by another engineer, measured once, its misses
-# met in session 11: all asserted now)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# met in session 11; "blind10" written in session 11 by another engineer, measured once in
+# session 12, its misses met in session 12: all asserted now; "blind11" written in session 12 by
+# another engineer, measured once at the end of session 12)
+MEASURED_ONLY = frozenset({"blind11"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -119,6 +124,11 @@ def test_corpus_sizes() -> None:
     assert len(CORPORA["blind9"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind9"].entries}) >= 12
     assert len(CORPORA["causes11"].entries) >= 80
+    assert len(CORPORA["blind10"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind10"].entries}) >= 12
+    assert len(CORPORA["causes12"].entries) >= 60
+    assert len(CORPORA["blind11"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind11"].entries}) >= 12
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted
@@ -260,3 +270,15 @@ def test_a_common_word_is_not_a_typo_but_the_refusal_suggests_the_name() -> None
 def test_questions_are_not_requests() -> None:
     with pytest.raises(GroundingError, match="is a question, not a request"):
         parse_instruction("Is the apple on the shelf?", _cell())
+
+
+def test_the_table_reports_wall_and_cpu_medians() -> None:
+    entry = Entry("cell", "give Bob the chips", parse_expectation("chips>B"))
+    outs = (
+        Outcome(entry, "exact", 3.0, "", 1.0),
+        Outcome(entry, "wrong", 9.0, "chips>A", 2.0),
+        Outcome(entry, "refused", 30.0, "error", 5.0),
+    )
+    table = format_scores([Score("part", outs)])
+    assert table.splitlines()[0].endswith("| median ms | median CPU ms |")
+    assert table.splitlines()[2] == "| part | 3 | 33.3 % (1) | 1 | 0 | 1 | 9.00 | 2.00 |"

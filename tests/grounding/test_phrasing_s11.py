@@ -512,3 +512,52 @@ def test_politeness_after_a_condition_keeps_the_order(end: str) -> None:
 )
 def test_a_condition_that_cannot_be_split_is_refused(text: str) -> None:
     assert_refused(text, CELL, match="unclear where")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Cancel this: give Bob the cup",  # a label that takes something back is no label
+        "give Bob the chips and the apple with Carol",  # 'with Carol' after 'give Bob'
+    ],
+)
+def test_near_forms_of_labels_and_with_are_refused(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # each was read wrongly on main before this change (an exclusion or an order lost, a
+        # remark's want dropped while the request gave its object to someone else)
+        "Give Carol everything except the mugs. Not the chips.",  # the chips are in everything
+        "the cup and the bottle on the shelf, not the cup",
+        "Give Bob the cup and the apple, not the cup",
+        "Bob first, please: give Alice the cup and Bob the chips",  # an order, not a remark
+        "Alice first: the cup to her and the chips to Bob",
+        "Bob wants the bottle earlier, so give it to Carol first and then give Bob the chips",
+        # 'then' / 'next' after 'last' is said relative to the sentence before, not 'in between'
+        "Last, the apple to Alice. Then the chips to Bob. First the cup to Carol.",
+        "Finally, the apple to Alice. Next, the chips to Bob. First, the cup to Carol.",
+    ],
+)
+def test_exclusions_orders_and_wants_that_would_be_lost_are_refused(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("be nice and give Bob the chips", "chips>B"),  # 'be nice' said first asks nothing
+        ("Be careful: put the cup on the shelf", "cup@shelf"),
+        ("Give Bob the chips. Be gentle and give Alice the cup.", "chips>B & cup>A"),
+        ("give Bob the chips and be quick, then give Alice the cup", "chips>B ; cup>A"),
+        ("Alice is new, be nice, give her the cup", "cup>A"),
+        (
+            "Last, the apple to Alice. In between, the chips to Bob. First the cup to Carol.",
+            "cup>C ; chips>B ; apple>A",
+        ),
+    ],
+)
+def test_manners_and_ranks_still_read(text: str, want: str) -> None:
+    assert_means(text, want, CELL)

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from hltl.perception.carve import hidden_share, ray_depths
@@ -61,6 +61,11 @@ def _frame(  # type: ignore[no-untyped-def]
     st.floats(0.15, 0.9),  # camera elevation (rad)
     st.floats(0.0, 0.1),  # gap between the object and the occluder (m)
 )
+# found before the region was refined on the 1 mm lattice (session 12): a grazing view whose
+# only free 4 mm grid axis was 9 mm off (spread 1.13 cm, 62 % shown), and a random sweep's
+# bottle (1.07 cm, 74 % shown)
+@example("apple", 0.0703125, 0.1875, 0.15625, 0.0)
+@example("bottle", -0.075293774591477, 1.2262243281213854, 0.3689770145604052, 0.04949412602503114)
 def test_a_partly_hidden_object_is_placed_within_a_centimetre_or_not_reported(
     category: str, offset: float, azimuth: float, elevation: float, gap: float
 ) -> None:

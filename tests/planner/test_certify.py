@@ -66,14 +66,16 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 @pytest.mark.parametrize(
-    ("layout", "n", "seed", "level"), [("random", 4, 1, 44), ("grid", 5, 4, 55)]
+    ("layout", "n", "seed", "level"), [("random", 5, 0, 57), ("random", 5, 1, 57)]
 )
 def test_the_climb_asks_sessions_whole_before_the_full_model(
     layout: str, n: int, seed: int, level: int, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     # here the cheaper model's schedule at ``level`` is no plan, and neither sessions whole nor
     # the full model have a schedule there; one level up, sessions whole give a plan, which is
-    # optimal without the full model being asked there (schedule._shave, whole_first)
+    # optimal without the full model being asked there (schedule._shave, whole_first). (Random
+    # 4 seed 1 and grid 5 seed 4 were such cells until session 12's counting rows: the cheaper
+    # model now proves their optimum itself.)
     monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
     asked: list[tuple[int, bool, bool, bool]] = []  # level, holders, whole, found
     real = schedule.relaxed_steps

@@ -595,7 +595,8 @@ def run_grounding(args: argparse.Namespace) -> int:
     if args.write is not None:
         body = (
             f"Command: `hltl bench grounding --write {shlex.quote(str(args.write))}`  \n"
-            f"Date: {datetime.date.today().isoformat()}. Machine: {machine()} (shared). "
+            f"Date: {datetime.date.today().isoformat()}. Machine: {machine()} (shared; load "
+            f"{os.getloadavg()[0]:.1f} at the end). "
             "Exact = a spec language-equivalent to the expected one, or "
             "a refusal (listing the readings when the corpus names them); wrong = a spec that "
             "differs, or a grounding where a refusal was expected. Parts: docs/grounding.md.\n\n"

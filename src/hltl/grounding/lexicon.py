@@ -109,6 +109,8 @@ for _lemma, _forms in {
     "carry": ("carries", "carrying", "carried"),
     "move": ("moves", "moving", "moved"),
     "pop": ("pops", "popping", "popped"),  # "pop the apple over to Carol"
+    "chuck": ("chucks", "chucking", "chucked"),  # "chuck the wipes over to Grandad"
+    "toss": ("tosses", "tossing", "tossed"),
     "go": ("goes", "going", "went", "gone"),
     "transfer": ("transfers", "transferring", "transferred"),
     "shift": ("shifts", "shifting", "shifted"),
@@ -130,6 +132,7 @@ for _lemma, _forms in {
     "stow": ("stows", "stowing", "stowed"),
     "park": ("parks", "parking", "parked"),
     "plonk": ("plonks", "plonking", "plonked"),
+    "shove": ("shoves", "shoving", "shoved"),  # "shove the small box onto the belt"
     "position": ("positions", "positioning", "positioned"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
@@ -917,6 +920,8 @@ WORDS: dict[str, str] = {
     "totally": "filler",
     "absolutely": "filler",
     "simply": "filler",
+    "basically": "filler",  # "Okay so basically just give Alice the bottle"
+    "literally": "filler",
     "still": "filler",
     "mate": "filler",
     "buddy": "filler",
@@ -1089,6 +1094,8 @@ DROPPED_FILLERS = frozenset(
         "totally",
         "absolutely",
         "simply",
+        "basically",
+        "literally",
         "still",
         "anyway",
         "anyways",
@@ -1178,6 +1185,11 @@ class Lexicon:
 
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
+        # texts lexed while one instruction is read (the normaliser looks at the same words in
+        # many of its steps); emptied by forget() when a new instruction starts
+        self._lexed: dict[str, tuple[Item, ...]] = {}
+        self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
+        self._index: dict[tuple[int, str], list[int]] = {}
         self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
         # phrase -> (ref, spelling, strong): strong for ids, names and aliases, weak for categories
         self._phrases: dict[tuple[str, ...], list[tuple[Ref, str, bool]]] = {}
@@ -1259,7 +1271,8 @@ class Lexicon:
                 found = [e for e in found if e[1] == tokens[i].text]
                 if not found:
                     continue
-            return n, _best(found)
+            longer = self._typo_after(tokens, i, n, found)
+            return longer if longer is not None else (n, _best(found))
         exact = self._exact.get(tokens[i].text)
         if exact:
             return 1, tuple(exact)
@@ -1270,6 +1283,33 @@ class Lexicon:
         if typo is not None:
             return 1, typo
         return None
+
+    def _typo_after(
+        self, tokens: list[Token], i: int, n: int, found: list[tuple[Ref, str, bool]]
+    ) -> tuple[int, tuple[Ref, ...]] | None:
+        """A longer name of the same entity with its next word mistyped ("water bottlle": not
+        'water' and then 'bottlle', two names of the bottle), else None."""
+        if i + n >= len(tokens) or n >= self.max_len:
+            return None
+        nxt = tokens[i + n].low
+        if len(nxt) < 3 or not nxt.isalpha() or nxt in WORDS or nxt in VERBS:
+            return None
+        phrase = self._misspelt_phrase(tokens, i)
+        if phrase is None or phrase[0] <= n:
+            return None
+        if not {r.id for r in phrase[1]} <= {r.id for r, _, _ in found}:
+            return None
+        return phrase
+
+    def forget(self) -> None:
+        """Drop the texts lexed so far (called when a new instruction starts)."""
+        self._lexed.clear()
+
+    def lexed(self, text: str) -> tuple[Item, ...] | None:
+        return self._lexed.get(text)
+
+    def remember(self, text: str, items: tuple[Item, ...]) -> None:
+        self._lexed[text] = items
 
     def lookup(self, phrase: str) -> tuple[Ref, ...] | None:
         """The entities a whole phrase names ("blue mug"), else None."""
@@ -1341,9 +1381,13 @@ class Lexicon:
         """
         found: list[tuple[int, tuple[Ref, ...]]] = []
         typed = [t.low for t in tokens[i : i + self.max_len]]  # once, not per name
-        for key, entries in self._phrases.items():
+        # a name with one word mistyped has its other words exact: only names sharing a word
+        # at its place with what was typed are candidates (in the order the names were added)
+        index = self._by_word()
+        near = sorted({n for k, w in enumerate(typed) for n in index.get((k, w), ())})
+        for key, entries in (self._multi[n] for n in near):
             n = len(key)
-            if n < 2 or n > len(typed):
+            if n > len(typed):
                 continue
             diff = [k for k in range(n) if typed[k] != key[k]]
             if len(diff) != 1:
@@ -1356,6 +1400,15 @@ class Lexicon:
         if len(ids) != 1 or len({n for n, _ in found}) != 1:
             return None
         return found[0]
+
+    def _by_word(self) -> dict[tuple[int, str], list[int]]:
+        """The names of several words, each under (place, word) for each of its words."""
+        if not self._index:
+            self._multi = [(k, e) for k, e in self._phrases.items() if len(k) >= 2]
+            for n, (key, _) in enumerate(self._multi):
+                for k, w in enumerate(key):
+                    self._index.setdefault((k, w), []).append(n)
+        return self._index
 
     def misspelt_keyword(self, word: str) -> str | None:
         """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
@@ -1457,6 +1510,14 @@ def _best(found: list[tuple[Ref, str, bool]]) -> tuple[Ref, ...]:
 
 def lex(text: str, lexicon: Lexicon) -> list[Item]:
     """Turn ``text`` into items: entity mentions first, then multi-word keywords, then words."""
+    known = lexicon.lexed(text)
+    if known is None:
+        known = tuple(_lex(text, lexicon))
+        lexicon.remember(text, known)
+    return list(known)
+
+
+def _lex(text: str, lexicon: Lexicon) -> list[Item]:
     tokens = _shared_nouns(
         _without_fillers(_keyword_typos(tokenize(text), lexicon), lexicon), lexicon
     )

@@ -38,6 +38,7 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable
 
@@ -53,6 +54,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.tree import tasks
 
 _F = re.IGNORECASE
 _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
@@ -88,8 +90,16 @@ def _ids(text: str, lexicon: Lexicon, kind: str | None = None) -> set[str]:
     return {r.id for it in _names(text, lexicon) for r in it.refs if kind in (None, r.kind)}
 
 
+@functools.lru_cache(maxsize=8192)
+def _rx(pattern: str) -> re.Pattern[str]:
+    """``pattern`` compiled (case-insensitive) once: re's own cache keeps 512 patterns, fewer than
+    the rewrites build over a scene's names, and recompiling them was a third of a rewrite's
+    time."""
+    return re.compile(pattern, _F)
+
+
 def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
-    return re.sub(pattern, repl, text, flags=_F)
+    return _rx(pattern).sub(repl, text)
 
 
 # -- wrappers ----------------------------------------------------------------------------------
@@ -161,6 +171,12 @@ def _wrappers(text: str, _lexicon: Lexicon) -> str:
 # -- words -------------------------------------------------------------------------------------
 
 _WORDS: tuple[tuple[str, str], ...] = (
+    # "Bob has asked for the chips twice now": how often he asked, not how often to hand over
+    (
+        r"\b(asked for [^.;!?]*?) (?:twice|three times|several times|a few times|again|already)"
+        r"(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
+        r"\1",
+    ),
     (r",?\s*\b(?:sharpish|pronto|asap|chop chop|on the double)\b", ""),
     (
         r"\s*(?:\bis|'s|\bare|'re|\bwas|\bhas been|'s been|\bhave been|'ve been) (?:still )?"
@@ -222,7 +238,17 @@ _WORDS: tuple[tuple[str, str], ...] = (
     (r",\s*like,", ","),
     (r",?\s*\bright now\b,?", ""),
     (r",?\s*\bif (?:that's|that is|it's|it is) (?:easier|simpler|better|quicker)\b", ""),
-    (r",?\s*\b(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b\s*[:,]?", ":"),
+    # "be quick and give Bob the chips": said first, it asks nothing; later, "…, so be nice: give
+    # her the cup" keeps the request apart from the remark before it
+    (
+        r"(^|(?<=[.;!?])\s*)(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b"
+        r"(?:\s*[:,]|\s+and\b)?\s*",
+        r"\1",
+    ),
+    (
+        r",?\s*\b(?:so |and )?be (?:nice|quick|careful|gentle|polite|kind|quiet)\b(?:\s*[:,])?",
+        ", so",
+    ),
     (
         r",\s*(?:very |so |quite |really |rather |most |extremely )?(?:politely|nicely|kindly|"
         r"sweetly)\s*,",
@@ -264,9 +290,67 @@ _WORDS: tuple[tuple[str, str], ...] = (
     # "Lily and Ava both want a block, so one each"
     (r"\bboth (want|need|would like)s? (a|an|one) ([\w ]+?),? so one each\b", r"\1 \2 \3 each"),
     # "What I need is for the blue mug to be on the table …"
-    (r"^what (?:i|we) (?:need|want|would like|'d like) is for ", ""),
+    # "… all I need is for Marco to get the knife": Marco should get it
+    (
+        r"^(?:(?:ok|okay|so|well|right|literally|basically|honestly|just),?\s+)*(?:what|all) "
+        r"(?:i|we) (?:need|want|would like|'d like) is for ([A-Z][\w ]*?) to (get|have|receive)\b"
+        r"(?= (?:the|a|an|both|all|one)\b)",
+        r"\1 should \2",
+    ),
+    (
+        r"^(?:(?:ok|okay|so|well|right|literally|basically|honestly|just),?\s+)*(?:what|all) "
+        r"(?:i|we) (?:need|want|would like|'d like) is for ",
+        "",
+    ),
+    # "Lena can take whichever she likes, …": may have (not carry it anywhere: no 'to'/'on')
+    (
+        r"^([A-Z][\w ]*?) (can|may|could) take\b(?=(?:(?!\b(?:to|on|onto|in|into|over)\b)"
+        r"[^.;!?])*[.!?]?$)",
+        r"\1 \2 have",
+    ),
     (r"(?<!needs )(?<!need )(?<!has )(?<!have )\bto be (on|in|onto)\b", "on"),
     (r"\b(?:has to|have to|should|must|needs? to) end up (on|in|onto)\b", "should go on"),
+    # session 12
+    # "Alice can have whichever she likes, the bottle or the crisps": the choice said after it
+    (
+        r"\bwhichever ((?:she|he|they|you) (?:likes?|wants?|prefers?|fancies|fancy)),\s+"
+        r"((?:the |a |an |either )?[^,.;!?]+?\bor\b[^,.;!?]+)",
+        r"\2, whichever \1",
+    ),
+    # "Every object here is for Person B": 'here' is the scene
+    (
+        r"\b(everything|(?:all the|every|each) (?:objects?|things?|items?)) (?:here|in here)\b",
+        r"\1",
+    ),
+    # "…, oh hang on, she's got water already, take it to Mr Lee": the reason for a correction,
+    # between its marker and the new request, asks nothing
+    (
+        r"\b((?:hang on|hold on|no wait|wait|actually|sorry|oops)(?:,? (?:no|wait))?),\s+(?:since |"
+        r"because |as )?(?:she|he|they)(?:'s| is| has|'ve| have| are|'re| already)\b[^,;.!?]*?,\s*"
+        r"(?=(?:take|give|hand|bring|put|place|pass|send)\b)",
+        r"\1, ",
+    ),
+    # "Can Sam borrow the blue pen?": may he have it
+    (r"\b(can|could|may|might) (?!(?:you|we|i|u)\b)(\w+(?: \w+)?) borrow\b", r"\1 \2 have"),
+    # "Miss, Zoe needs the glue": the one spoken to by a title alone (when no scene name)
+    (r"^(?:miss|sir|madam|ma'am|mister|missus)\s*[,:]\s*", ""),
+    # "Mind passing Carol the bottle?": would you mind
+    (r"(^|(?<=[.;!?])\s*)mind (?=\w+ing\b)", r"\1would you mind "),
+    # "Alice would like to have the cup": would like the cup (no place or person after it)
+    (
+        r"\b(would like|'d like|would love|'d love|wants|want|needs|need) to (?:have|get|receive) "
+        r"(?=(?:the|a|an|some|both|one|all|either|any)\b(?:(?!\b(?:to|on|onto|in|into|for)\b)"
+        r"[^.;!?])*(?:[.;!?]|$))",
+        r"\1 ",
+    ),
+    # "Noah is wanting the ruler for his maths": what it is for, when no name is in it
+    (
+        r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
+        r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))",
+        "",
+    ),
+    # "The magazine, Mrs Khan asked it, please bring to her": 'asked it' is asked for it
+    (r"\basked (it|them|that)(?=\s*[,;.])", r"asked for \1"),
     # "the white plate, then the blue one, both to Lena"
     (
         r"^(the [\w ]+?), then (the [\w ]+?),? both (to|on|onto) ([\w ]+?)[.!]?$",
@@ -285,8 +369,10 @@ def _words(text: str, lexicon: Lexicon) -> str:
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
     text = " ".join(sentences)
-    # "…, and the apple with Carol": an object left with a person goes to that person
-    for h in lexicon.scene.humans:
+    # "…, and the apple with Carol": an object left with a person goes to that person (in a
+    # list of what goes where; after 'give P' it could be a second recipient or company)
+    given = re.search(r"\b(?:give|hand|pass|bring|take|fetch|get)\b", text, _F)
+    for h in [] if given else lexicon.scene.humans:
         for alias in (*h.aliases, h.name):
             text = _sub(
                 rf"\b(the \w+(?: \w+)?) with ({re.escape(alias)})(?=\s*(?:[.,;!?]|\band\b|$))",
@@ -323,8 +409,10 @@ def _people(text: str, lexicon: Lexicon) -> str:
                 *(n for x in lexicon.scene.surfaces for n in (x.id, *x.aliases)),
             ]
             if len(words) == 2 and sum(rest.lower() in n.lower().split() for n in everyone) == 1:
-                after_title = "".join(
-                    rf"(?<!{t} )(?<!{t}\. )" for t in ("Mr", "Mrs", "Ms", "Miss", "Dr")
+                after_title = "".join(  # "mr Khan" is no "Mrs Khan" either
+                    rf"(?<!{t} )(?<!{t}\. )"
+                    for title in ("Mr", "Mrs", "Ms", "Miss", "Dr")
+                    for t in (title, title.lower(), title.upper())
                 )
                 text = re.sub(rf"{after_title}\b{re.escape(rest)}\b", alias, text)
             for t in others:  # "Miss Ortiz" for "Mrs Ortiz": the same woman, if no other
@@ -348,10 +436,11 @@ def _people(text: str, lexicon: Lexicon) -> str:
         )
         if m is not None and _one_thing(m.group(2), lexicon):
             text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
-        # "Each patient should receive one blanket"
+        # "Each patient should receive one blanket", "Every student gets a book"
         m = re.match(
-            rf"^each (?:of the )?{re.escape(role)}s? (?:should|could|can|must|will|is to|are to) "
-            rf"(?:receive|get|have|be given) ((?:a|an|one) [\w ]+?)[.!]?$",
+            rf"^(?:each|every) (?:of the )?{re.escape(role)}s? (?:(?:should|could|can|must|will|"
+            rf"is to|are to) (?:receive|get|have|be given)|gets|receives|wants|needs|is getting|"
+            rf"is given|has to get) ((?:a|an|one) [\w ]+?)[.!]?$",
             text,
             _F,
         )
@@ -511,7 +600,7 @@ def _asides(text: str, lexicon: Lexicon) -> str:
 
 _MAY_HAVE = r"|\b(?:can|could|may|might|should) (?:have|get)\b"
 _CLAUSE = re.compile(
-    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|:(?=\s)|,(?=\s*(?:could|can|would|will)\b)|"
+    r"\s*(?:[.;!?]+|,\s*so\b:?|\bso\b:|\s-\s|,(?=\s*(?:could|can|would|will)\b)|"
     r",(?=\s*(?:it'?s|its)\b)|\s(?=its\b)|"
     r",(?=\s*(?:he|she|they|it)(?:'s|'re|'ll|'d| is| are| was| were| will)\b))\s*",
     _F,
@@ -569,7 +658,29 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     named = _ids(body, lexicon)
     if not {r.id for c in said for it in _names(c, lexicon) for r in it.refs} <= named:
         return text  # the remark names something the request does not: it may ask for it
+    wanting = [c for c in said if re.search(_TASK_WORDS + _MAY_HAVE, c, _F)]
+    if wanting and not _agrees(wanting, body, lexicon):
+        return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _agrees(remarks: list[str], body: str, lexicon: Lexicon) -> bool:
+    """Whether every object a remark with a want names goes, in the request, to a person that
+    remark names ('Mr Novak wants his lemon earlier, so …': the lemon is Mr Novak's)."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        node = parse_instruction(body, lexicon.scene, lexicon, normalise=False)
+    except GroundingError:
+        return False
+    given = {t.obj: t.target for t in tasks(node)}
+    for remark in remarks:
+        people = _ids(remark, lexicon, "human")
+        for obj in _ids(remark, lexicon, "object"):
+            if given.get(obj) not in people:
+                return False
+    return True
 
 
 _NEGATIONS = re.compile(
@@ -584,9 +695,9 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
     "it's urgent", 'Bob wants the chips earlier') with no word that could cancel, negate or
     restrict a task: only such a clause can be a remark."""
     words = clause.strip(" ,:").lower()
-    if _NEGATIONS.search(words):
-        return False
-    words = re.sub(r"^(?:and|so|because|since|as|anyway|well),?\s+", "", words)
+    if _NEGATIONS.search(words) or _ORDER_WORDS.search(words):
+        return False  # "Bob first, please" orders: no remark
+    words = re.sub(r"^(?:(?:and|so|because|since|as|anyway|well|ok|okay|right),?\s+)+", "", words)
     m = re.match(r"^(?:it'?s|its|it|he|she|they|that|this|there)\b", words)
     if m is None:
         names = _names(words, lexicon)
@@ -598,6 +709,8 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
         rest = words[at + len(names[0].text) :]
     else:
         rest = words[m.end() :]
+    if re.match(r"^\s*(?:does|did|do|is|was|will|has|had|can|could|would|should)\s*[.!?]*$", rest):
+        return False  # "Bob does, give him the chips": an answer to a question not asked
     return bool(re.match(r"^(?:'s|'re|'ll|'d)?\s*\w+", rest))
 
 
@@ -773,7 +886,8 @@ def _labels(text: str, lexicon: Lexicon) -> str:
     if (
         len(label.split()) > 5
         or _names(label, lexicon)
-        or (_NEGATIONS.search(label) and len(label.split()) < 2)  # "Not urgent:" is a label
+        # "Not urgent:" / "No rush -" are labels; "Cancel this:" is not
+        or (_NEGATIONS.search(label) and not re.match(r"^(?:not|no) [a-z]+$", label, _F))
         or _ORDER_WORDS.search(label)
         or re.search(_TASK_WORDS, label, _F)
         or not _plain_words(_NOTE_WORDS.sub(" ", label), lexicon)
@@ -870,8 +984,9 @@ def _contrast(text: str, lexicon: Lexicon) -> str:
             and not yes_ids & no_ids
             and _only_kind(no, lexicon, "object")
         ):
-            rest = m.group(3)
-            return f"{_one(yes, no, lexicon)}{rest}"
+            said = f"{_one(yes, no, lexicon)}{m.group(3)}"
+            if _keeps_out(said, no_ids, lexicon):
+                return said
     sentences = [x for x in re.split(r"(?<=[.;!?])\s+", text.strip()) if x]
     if len(sentences) >= 2:
         last = re.match(r"^not (the \w+ one|the [\w ]+?)[.!]?$", sentences[-1], _F)
@@ -885,9 +1000,63 @@ def _contrast(text: str, lexicon: Lexicon) -> str:
                     return text
                 said = said[: -len("one")] + next(iter(kinds))
             no_ids = _ids(said, lexicon, "object")
-            if no_ids and not no_ids & named:
+            if no_ids and not no_ids & named and _keeps_out(before, no_ids, lexicon):
                 return before  # leaving out what is not asked for adds nothing
     return text
+
+
+def _fronted(text: str, lexicon: Lexicon) -> str:
+    """'Except for the small one, all the boxes go on the pallet' and 'Not the bottle, Bob wants
+    the crisps': what is left out, said before the request, goes after it ('… except for the
+    small one'; '…, not the bottle'), where the grammar reads it against what the request names.
+    Only before a clause with its own verb ('Not the hammer, the drill, to Kofi' is a contrast)."""
+    m = re.match(
+        r"^(except(?: for)?|apart from|other than|not|but not)\s+((?:the |a |an )?[^,;:.!?]+?),"
+        r"\s*(.+?)\s*([.!?]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not re.search(_TASK_WORDS + r"|\b(?:goes?|go|should)\b", m.group(3), _F):
+        return text
+    left = m.group(2)
+    if not _only_kind(left, lexicon, "object") and not re.match(r"^the \w+ one$", left, _F):
+        return text
+    rest = m.group(3)
+    if not _ids(rest, lexicon, "object") and not re.search(r"\b(?:everything|all)\b", rest, _F):
+        return text
+    word = m.group(1).lower()
+    contrast = word in ("not", "but not")
+    said = f"{rest}, not {left}{m.group(4)}" if contrast else f"{rest} {word} {left}{m.group(4)}"
+    # the words put after the request must be read as leaving out of it, and nothing else ('…
+    # Jess after all except for the small spanner' would leave it out of 'all')
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        whole = set(tasks(parse_instruction(rest, lexicon.scene, lexicon)))
+        kept = set(tasks(parse_instruction(said, lexicon.scene, lexicon)))
+    except GroundingError:
+        return text
+    dropped = {t.obj for t in whole - kept}
+    named = _ids(left, lexicon, "object")
+    if not kept <= whole or (contrast and dropped):
+        return text
+    if not contrast and (not dropped or (dropped - named if named else len(dropped) != 1)):
+        return text
+    return said
+
+
+def _keeps_out(text: str, ids: set[str], lexicon: Lexicon) -> bool:
+    """Whether the grammar reads ``text`` with none of the objects ``ids`` in any task ('Give
+    Carol everything except the mugs. Not the crisps.': the crisps are in 'everything')."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        node = parse_instruction(text, lexicon.scene, lexicon)
+    except GroundingError:
+        return False  # not read: the negation is left to be refused with it
+    return not any(t.obj in ids for t in tasks(node))
 
 
 def _one(said: str, other: str, lexicon: Lexicon) -> str:
@@ -910,37 +1079,51 @@ _COUNTS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 
 
 def _counted(text: str, lexicon: Lexicon) -> str:
-    """'Two things for Ava: the beaker and the wipes' → 'Ava: the beaker and the wipes' when
-    the list names that many objects; 'One thing each: bottle for A, chips for B' and 'All three
-    of them want something to drink: Alice the bottle, …' → the list, when it names one object
-    for each of that many people."""
+    """'Two things for Ava: the beaker and the wipes' and 'Person A takes two things: the cup
+    and the apple' → 'Ava: the beaker and the wipes' when the list names that many objects; 'One
+    thing each: bottle for A, chips for B', 'All three of them want something to drink: Alice
+    the bottle, …' and 'The three people each get one thing: knife for Marco, …' → the list,
+    when it names one object for each of that many people."""
     m = re.match(
         r"^(one|two|three|four|five|six) (?:things?|items?|objects?) for ([^:]+?)\s*:\s*(.+)$",
         text,
         _F,
     )
-    if m is not None and _only(m.group(2), lexicon, "human"):
-        listed = [it for it in _names(m.group(3), lexicon) if it.refs[0].kind == "object"]
-        if len(listed) == _COUNTS[m.group(1).lower()] == len(_ids(m.group(3), lexicon)):
-            return f"{m.group(2)}: {m.group(3)}"
+    said = None if m is None else (m.group(1), m.group(2), m.group(3))
+    m = re.match(  # "Person A takes two things: the cup and the apple"
+        r"^([^:]+?) (?:takes|gets|wants|needs|should get|is getting|can have|receives) "
+        r"(one|two|three|four|five|six) (?:things?|items?|objects?)\s*:\s*(.+)$",
+        text,
+        _F,
+    )
+    said = said or (None if m is None else (m.group(2), m.group(1), m.group(3)))
+    if said is not None and _only(said[1], lexicon, "human"):
+        count, who, listed = said
+        named = [it for it in _names(listed, lexicon) if it.refs[0].kind == "object"]
+        if len(named) == _COUNTS[count.lower()] == len(_ids(listed, lexicon)):
+            return f"{who}: {listed}"
         return text
     m = re.match(
-        r"^(?:(one) (?:thing|item) each|all (two|three|four|five|six) of them (?:want|need|would "
-        r"like) (?:something|one thing|an item)(?: to (?:drink|eat|read|use))?)\s*:\s*(.+)$",
+        r"^(?:(one) (?:thing|item) each|(?:all (two|three|four|five|six) of them|the "
+        r"(two|three|four|five|six) (?:people|of them)(?: each)?) (?:want|need|would like|get|"
+        r"should get|each get|each want|each need) (?:something|one thing|an item|one item|a "
+        r"thing)(?: each)?(?: to (?:drink|eat|read|use))?)\s*:\s*(.+)$",
         text,
         _F,
     )
     if m is None:
         return text
-    parts = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(3).rstrip(".!")) if x]
+    listed = m.group(4)
+    count = m.group(2) or m.group(3)
+    parts = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", listed.rstrip(".!")) if x]
     people = [_ids(x, lexicon, "human") for x in parts]
     things = [_ids(x, lexicon, "object") for x in parts]
     if not all(len(p) == 1 and len(t) == 1 for p, t in zip(people, things, strict=True)):
         return text
     who = {next(iter(p)) for p in people}
-    if len(who) != len(parts) or (m.group(2) and len(who) != _COUNTS[m.group(2).lower()]):
+    if len(who) != len(parts) or (count and len(who) != _COUNTS[count.lower()]):
         return text
-    return m.group(3)
+    return listed
 
 
 def _answered(text: str, lexicon: Lexicon) -> str:
@@ -1031,11 +1214,9 @@ def _possessed(text: str, lexicon: Lexicon) -> str:
         return ", ".join(f"the {m.group(2)} for {m.group(1)}" for m in pairs if m is not None)
     for h in lexicon.scene.humans:
         for alias in h.aliases:
-            m = re.search(
-                rf"\b({re.escape(alias)})'s ([\w ]+?)\b(?= (?:is|are|should|must|has|have)\b)",
-                text,
-                _F,
-            )
+            m = _rx(
+                rf"\b({re.escape(alias)})'s ([\w ]+?)\b(?= (?:is|are|should|must|has|have)\b)"
+            ).search(text)
             if m is None or not _only(m.group(2), lexicon, "object"):
                 continue  # "Mr Novak's plate is the blue one" says which (_words)
             pron = re.findall(r"\b(?:him|her)\b", text, _F)
@@ -1044,6 +1225,170 @@ def _possessed(text: str, lexicon: Lexicon) -> str:
             text = text[: m.start()] + f"the {m.group(2)}" + text[m.end() :]
             return _sub(r"\b(?:him|her)\b", alias, text)
     return text
+
+
+def _there(text: str, lexicon: Lexicon) -> str:
+    """'Put the notebook on the desk. Actually no, put the stapler there instead.': 'there' after
+    a placement is the one surface named before it (none, or two, and it is left to be refused)."""
+    m = re.search(
+        r"\b((?:put|place|set|leave|stack|store|move)s? (?:the |a |an |it\b|them\b)[\w ]*?)"
+        r"(?<! over)(?<! right)(?<! out)(?<! up)(?<! down)(?<! back)(?<! in) there\b",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    said = text[: m.end() - len("there")]
+    before = [it for it in _names(said, lexicon) if it.refs[0].kind == "surface"]
+    if len({r.id for it in before for r in it.refs}) != 1:
+        return text
+    return f"{text[: m.start()]}{m.group(1)} on the {before[-1].text}{text[m.end() :]}"
+
+
+def _topic(text: str, lexicon: Lexicon) -> str:
+    """'The magazine, (…,) please bring to her': an object said first as the topic, and a verb
+    later with no object of its own before 'to'/'on': the verb's object is the topic ('it')."""
+    m = re.match(r"^(?:the |a |an )?([\w ]+?),", text, _F)
+    if m is None or not _only_kind(m.group(1), lexicon, "object"):
+        return text
+    rest = text[m.end() :]
+    gap = re.search(
+        r"\b(bring|give|hand|take|pass|send|carry|deliver|put|place|get)\s+((?:over|back|across|"
+        r"round) )?(to|on|onto|in|into)\b",
+        rest,
+        _F,
+    )
+    if gap is None or _ids(rest[: gap.start()], lexicon, "object"):
+        return text
+    verb = f"{gap.group(1)} it {gap.group(2) or ''}{gap.group(3)}"
+    return f"{text[: m.end()]}{rest[: gap.start()]}{verb}{rest[gap.end() :]}"
+
+
+def _reordered(text: str, lexicon: Lexicon) -> str:
+    """'Tongs to Marco then the knife to Lena, wait, no, knife first then tongs': a correction
+    of only names and an order, after two steps said in order, says them the other way round.
+    Each name must pick out one of the two steps (by its object or its person)."""
+    m = re.match(
+        r"^(.+?)\s*,?\s+then\s+(.+?)(?:,|[.;!])\s*(?:(?:wait|hang on|hold on),?\s+)?"
+        r"(?:no|sorry|actually|oops)(?:,? (?:wait|sorry))?,?\s+(?:the )?([\w ]+?) first"
+        r"(?:,?\s*(?:and )?then (?:the )?([\w ]+?))?[.!]?$",
+        text.strip(),
+        _F,
+    )
+    if m is None:
+        return text
+    early, late = m.group(1), m.group(2)
+    first = _ids(m.group(3), lexicon)
+    if not first or not first <= _ids(late, lexicon) or first & _ids(early, lexicon):
+        return text
+    if m.group(4) is not None:
+        second = _ids(m.group(4), lexicon)
+        if not second or not second <= _ids(early, lexicon) or second & _ids(late, lexicon):
+            return text
+    return f"{late}, then {early}"
+
+
+def _leave_it(text: str, _lexicon: Lexicon) -> str:
+    """'Actually no, leave it, put the stapler there (instead)': 'leave it' in a correction takes
+    back the request before, so the new one stands instead of it."""
+    m = re.search(
+        r"\b((?:actually|no|wait|sorry|oops)(?:,? (?:no|wait))?),?\s+(?:leave it|leave that|forget "
+        r"(?:it|that)|scrap that|never mind(?: that)?)\s*,\s*((?:put|place|give|hand|bring|take|"
+        r"pass|set)\b[^.;!?]*?)(\s+instead)?([.;!?]?)\s*$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m.group(1)}, {m.group(2)} instead{m.group(4)}"
+
+
+_JOINS = frozenset(
+    {
+        *("if", "when", "because", "and", "so", "as", "since", "that", "once", "before"),
+        *("after", "until", "but", "or", "whether", "unless", "then", "while", "though"),
+    }
+)
+
+
+def _run_on(text: str, _lexicon: Lexicon) -> str:
+    """'Marco is on grill tonight he needs the tongs': a statement run into a want with no stop
+    between them; the stop is put back ('… tonight. he needs …') when the word before the
+    pronoun joins nothing, so that the statement can be read as a remark."""
+    m = re.search(
+        r"(?<=[a-z]) (he|she|they) (?=(?:needs|wants|would like|'d like|could use|will need|is "
+        r"going to need|'s going to need|'ll need)\b)",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    before = text[: m.start()]
+    last = before.split()[-1].lower() if before.split() else ""
+    if last in _JOINS or not re.search(r"\b(?:is|are|was|were)\b|'s\b|'re\b", before, _F):
+        return text
+    return f"{before}. {m.group(1)} {text[m.end() :]}"
+
+
+def _texting(text: str, lexicon: Lexicon) -> str:
+    """'give the chips 2 bob', 'cup 4 alice': '2' and '4' typed for 'to' and 'for', only right
+    before the name of a person (a number before an object counts it)."""
+    if not re.search(r"\b[24] ", text):
+        return text
+    for h in lexicon.scene.humans:
+        for alias in (*h.aliases, h.name):
+            text = _sub(rf"\b2 (?={re.escape(alias)}\b)", "to ", text)
+            text = _sub(rf"\b4 (?={re.escape(alias)}\b)", "for ", text)
+    return text
+
+
+def _vocative(text: str, lexicon: Lexicon) -> str:
+    """'Lena, the tongs are for you': the person spoken to first is the 'you' of the request
+    ('for you', 'you can have'), when the words before the comma name that person only."""
+    m = re.match(r"^([^,;:.!?]+?),\s*(.+)$", text.strip())
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    rest = m.group(2)
+    if not re.search(r"\bfor you\b|\byou (?:can|could|may) have\b", rest, _F):
+        return text
+    who = m.group(1)
+    rest = _sub(r"\bfor you\b", f"for {who}", rest)
+    return _sub(r"\byou (can|could|may) have\b", rf"{who} \1 have", rest)
+
+
+def _lacks(text: str, lexicon: Lexicon) -> str:
+    """'Zoe hasn't got a ruler, can she have one', "Noah can't find his book, give him the red
+    one": what a person lacks, then a request whose 'one' / 'it' / 'the red one' is that kind
+    of object and whose pronoun is that person: the request with them said."""
+    m = re.match(
+        r"^([^,;.!?]+?) (?:hasn't got|has not got|hasn't|has no|doesn't have|does not have|can't "
+        r"find|cannot find|can not find|has lost|lost|forgot|has forgotten) (?:his |her |their |a "
+        r"|an |any |the )?([\w ]+?),\s*(?:so\s+)?(.+)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    who, kind, rest = m.group(1), m.group(2), m.group(3)
+    if not _only_kind(kind, lexicon, "object") or not re.search(r"\b(?:one|it)\b", rest, _F):
+        return text
+    if _ids(rest, lexicon, "human") - _ids(who, lexicon, "human"):
+        return text  # "Bob hasn't got the cup, give it to Carol": the lack is not why
+    rest = _sub(r"\bthe (\w+) one\b", rf"the \1 {kind}", rest)
+    rest = _sub(r"(?<!\bthe )\bone\b", f"a {kind}", rest)
+    rest = _sub(r"\bit\b", f"the {kind}", rest)
+    return _sub(r"\b(?:he|she|him|her|they|them)\b", who, rest)
+
+
+def _thanks(text: str, _lexicon: Lexicon) -> str:
+    """'Ruler. Zoe. Thanks.': a last sentence of thanks asks nothing (taken off first, so that
+    what stands before it is read as said)."""
+    return _sub(
+        r"(?<=[.!?])\s+(?:thanks|thank you|cheers|ta|thx|many thanks)(?: (?:so|very) much| a lot|"
+        r" again)?\s*[.!]*\s*$",
+        "",
+        text,
+    )
 
 
 def _bare_pair(text: str, lexicon: Lexicon) -> str:
@@ -1128,7 +1473,7 @@ def _both_kind(text: str, lexicon: Lexicon) -> str:
     for cat, ids in kinds.items():
         if len(ids) != 2:
             continue
-        m = re.search(rf"\bboth (?:the )?{re.escape(cat)}s\b", text, _F)
+        m = _rx(rf"\bboth (?:the )?{re.escape(cat)}s\b").search(text)
         if m is None:
             continue
         a, b = (_said(i, lexicon) for i in ids)
@@ -1144,7 +1489,7 @@ def _both_kind(text: str, lexicon: Lexicon) -> str:
 
 _RANKS = (
     (r"first(?: of all)?|firstly|to start(?: with)?|start with", 0),
-    (r"in between|in the middle|between those|second|secondly|after that|next|then", 1),
+    (r"in between|in the middle|second|secondly", 1),
     (r"last(?: of all)?|lastly|finally|at the end", 2),
 )
 
@@ -1170,6 +1515,13 @@ def _ranked(text: str, _lexicon: Lexicon) -> str:
 
 
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _thanks,
+    _lacks,
+    _texting,
+    _vocative,
+    _run_on,
+    _leave_it,
+    _reordered,
     _labels,
     _ranked,
     _bare_pair,
@@ -1178,10 +1530,13 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_kind,
     _wrappers,
     _words,
+    _topic,
     _passive,
     _heads,
     _answered,
     _counted,
+    _there,
+    _fronted,
     _contrast,
     _described,
     _people,

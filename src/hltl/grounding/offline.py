@@ -71,6 +71,8 @@ def parse_instruction(
         GroundingError: the words, what was expected, and what the scene has.
     """
     lexicon = lexicon or Lexicon.of(scene)
+    if normalise:
+        lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
     try:
         return _read(text, scene, lexicon)
     except GroundingError as refused:

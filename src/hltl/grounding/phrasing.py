@@ -298,8 +298,11 @@ def _reason_length(items: list[Item], k: int) -> int:
         nxt = items[k + 1]
         if nxt.kind == "unknown" and nxt.lemma == "that":
             return 2
-        if (_humans(nxt) or _is(nxt, "it", "subject")) and _is(items[k + 2], "aux"):
-            return 1  # "so she can have some tea"; "so give her the cup" is a request
+        said = k + 3 < len(items) and items[k + 3].kind != "punct"
+        if (_humans(nxt) or _is(nxt, "it", "subject")) and _is(items[k + 2], "aux") and said:
+            # "so she can have some tea"; "so give her the cup" is a request, and "So Bob does,
+            # give him the chips" answers a question nobody asked
+            return 1
     return 0
 
 
@@ -572,6 +575,11 @@ def first_refs(items: list[Item]) -> tuple[list[Item], tuple[str, ...]]:
     return before, ids
 
 
+_CHOOSES = frozenset(
+    {"likes", "like", "wants", "want", "prefers", "prefer", "fancies", "fancy", "chooses"}
+)
+
+
 def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
@@ -583,9 +591,10 @@ def _whichever(items: list[Item]) -> list[Item]:
                 continue
             skipping, start = True, k
             continue
+        chooses = k + 1 < len(items) and items[k + 1].text.lower() in _CHOOSES
         narrows = _is(it, "nearest", "near", "farthest", "not", "from") or (
-            it.lemma == "pronoun" and it.text.lower() in _PERSON_PRONOUNS
-        )
+            it.lemma == "pronoun" and it.text.lower() in _PERSON_PRONOUNS and not chooses
+        )  # "whichever she likes": she chooses; "whichever is nearer to her" narrows
         if skipping and (narrows or it.kind == "ent"):
             # "…, whichever is further ok from her": a choice the clause narrows, which was
             # not read; dropping it would widen the choice
@@ -1875,6 +1884,14 @@ def _exclusions(items: list[Item]) -> list[Item]:
         if target is None:
             raise GroundingError(
                 f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
+            )
+        named = {r.id for x in out[start:target] if _objects(x) for r in x.refs}
+        if not ids <= {r.id for r in out[target].refs} and ids & named:
+            # "the small box and the medium box on the belt, not the small box": another name
+            # before has it, and nothing would be left out (the small box kept, read wrong)
+            raise GroundingError(
+                f"{it.text!r} leaves out the {', '.join(sorted(ids))}, which "
+                f"{out[target].text!r} does not name: say what to leave out of what"
             )
         kept = tuple(r for r in out[target].refs if r.id not in ids)
         if not kept:

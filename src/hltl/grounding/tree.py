@@ -84,10 +84,12 @@ def entities(node: Node) -> tuple[str, ...]:
 
 
 def check_deliveries(node: Node, describe: Mapping[str, str] | None = None) -> None:
-    """Reject a tree that must hand one object over twice (a delivered object is gone for good).
+    """Reject a tree that must hand one object over twice (a delivered object is gone for good)
+    or place it on two surfaces at once.
 
     Two deliveries of the same object conflict unless an ``or`` separates them (their lowest
-    common group is an ``or``).
+    common group is an ``or``); two placements on different surfaces conflict when their lowest
+    common group is an ``and`` (a sequence says one after the other).
     """
     name = dict(describe or {})
 
@@ -114,6 +116,28 @@ def check_deliveries(node: Node, describe: Mapping[str, str] | None = None) -> N
         return [t for lst in per_child for t in lst]
 
     walk(node)
+
+    def placed(n: Node) -> list[Task]:
+        """One object placed on two surfaces with no order and no 'or' between: it cannot be on
+        both, and which one stands is not said ('The magazine goes on the cart. It goes on the
+        bedside table too.')."""
+        if isinstance(n, Task):
+            return [n] if n.kind == "place" else []
+        per_child = [placed(c) for c in n.children]
+        if n.op == "and":
+            for i, a_list in enumerate(per_child):
+                for b_list in per_child[i + 1 :]:
+                    for a in a_list:
+                        for b in b_list:
+                            if a.obj == b.obj and a.target != b.target:
+                                raise GroundingError(
+                                    f"the {a.obj} would be placed on {a.target} and on "
+                                    f"{b.target}; an object is in one place: say which, or "
+                                    "the order ('then')"
+                                )
+        return [t for lst in per_child for t in lst]
+
+    placed(node)
 
     def ordered(n: Node) -> None:
         """In a sequence, an object handed over in one step cannot be placed in a later one."""

@@ -15,9 +15,10 @@ F64 = npt.NDArray[np.float64]
 Mask = npt.NDArray[np.bool_]
 
 DEPTH_TOL = 0.01  # m: a seen depth this close to the candidate's surface agrees with it
-STEP = 0.004  # m: the coarse grid of candidate axes
-FINE = 0.001  # m: the fine grid around the best coarse candidate
+STEP = 0.004  # m: the grid of candidate axes (an 8 mm pass first)
+FINE = 0.001  # m: the lattice on which the consistent region is refined
 MAX_PIXELS = 4000  # a larger window is scored on every k-th pixel (both directions)
+BATCH = 256  # candidate axes scored at once
 SLACK = 0.02  # consistent: cost within max(2, SLACK × the object's pixels) of the best
 INSIDE = 0.95  # this share of the object's points at least lies within the candidate (+1 cm)
 POINTS = 200  # at most this many of the object's points prune the candidates
@@ -29,7 +30,8 @@ CHI2_99 = 9.21  # the chi-square 99 % quantile with two degrees of freedom (the 
 @dataclass(frozen=True, slots=True)
 class Carved:
     """The axis (x, y) where the cylinder most likely stands, ``spread`` the farthest
-    consistent axis from it (m), ``candidates`` how many grid axes are consistent."""
+    consistent axis from it plus half a FINE cell's diagonal (m), ``candidates`` how many axes
+    (of the grid and the lattice) are consistent."""
 
     centre: tuple[float, float]
     spread: float
@@ -104,9 +106,10 @@ def carve(
     """The axes where an upright cylinder (``radius``, standing at ``bottom``, ``height``
     tall) agrees with the object's pixels ``mask``, its world ``points`` and the depth image
     around them. ``start`` (the caller's own fit) is kept when it is consistent. Searched on an
-    8 mm grid, then on a 4 mm grid within 8 mm of the axes the camera allows (STEP). None when
-    no candidate holds 95 % of the points within the radius (+1 cm) or the cylinder is behind
-    the camera."""
+    8 mm grid, then on a 4 mm grid within 8 mm of the axes the camera allows (STEP); the
+    consistent region is then refined on a 1 mm lattice (FINE) through ``start``, grown from
+    the consistent axes until its every neighbour is scored. None when no candidate holds 95 %
+    of the points within the radius (+1 cm) or the cylinder is behind the camera."""
     top = bottom + height
     # every point of the object lies in the cylinder (+1 cm): the axis is within that of the
     # points' mean, and a cheap first cut of the grid
@@ -116,13 +119,16 @@ def carve(
         pts = pts[np.linspace(0, len(pts) - 1, POINTS).astype(int)]
     mid = pts.mean(axis=0)
 
+    def within(c: F64) -> Mask:
+        dist = np.sqrt(((c[:, None, :] - pts[None, :, :]) ** 2).sum(axis=2))
+        # a few strays (a learned mask's pixels on what is behind) may lie outside
+        return np.asarray(np.quantile(dist, INSIDE, axis=1) <= reach)
+
     def grid(step: float) -> F64:
         g = np.arange(-reach, reach + step / 2, step)
         gx, gy = np.meshgrid(g + mid[0], g + mid[1])
         c = np.column_stack([gx.ravel(), gy.ravel()])
-        dist = np.sqrt(((c[:, None, :] - pts[None, :, :]) ** 2).sum(axis=2))
-        # a few strays (a learned mask's pixels on what is behind) may lie outside
-        return np.asarray(c[np.quantile(dist, INSIDE, axis=1) <= reach], dtype=float)
+        return np.asarray(c[within(c)], dtype=float)
 
     coarse = grid(2 * STEP)
     if len(coarse) == 0:
@@ -157,43 +163,65 @@ def carve(
     side = points[points[:, 2] < top - SIDE_MARGIN, :2]
 
     def score(c: F64) -> tuple[npt.NDArray[np.int64], F64]:
+        if len(c) > BATCH:  # a bounded working set: candidates × pixels
+            parts = [score(c[k : k + BATCH]) for k in range(0, len(c), BATCH)]
+            return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
         cost = _costs(origin, dirs, seen, d, c, radius, bottom, top)
         if len(side) < 3:  # only the top is seen: no arc to fit
             return cost, np.zeros(len(c))
         dist = np.sqrt(((c[:, None, :] - side[None, :, :]) ** 2).sum(axis=2))
         return cost, np.sqrt(((dist - radius) ** 2).mean(axis=1))
 
+    cut = max(2, int(SLACK * int(seen.sum())))  # the violations allowed above the best's
     # a coarse pass first: the fine grid only near the coarse axes the camera allows
     c_cost = _costs(origin, dirs, seen, d, coarse, radius, bottom, top)
-    seeds = coarse[c_cost <= int(c_cost.min()) + max(2, int(SLACK * int(seen.sum())))]
+    seeds = coarse[c_cost <= int(c_cost.min()) + cut]
     cands = grid(STEP)
     near = np.sqrt(((cands[:, None, :] - seeds[None, :, :]) ** 2).sum(axis=2)).min(axis=1)
     cands = cands[near <= 2 * STEP]
     if len(cands) == 0:
         cands = seeds
     cost, res = score(cands)
-    limit = int(cost.min()) + max(2, int(SLACK * int(seen.sum())))
-    free = cost <= limit  # what the camera sees allows the axis there
-    # ... and the visible arc fits it: a likelihood-ratio region (99 %, two unknowns) about the
-    # best fit, the depth noise taken as the best fit's own residual (at least NOISE)
-    best_res = float(res[free].min())
-    sigma2 = max(best_res, NOISE) ** 2
-    ok = free & (res**2 <= best_res**2 + CHI2_99 * sigma2 / max(len(side), 1))
-    st = np.asarray([start], dtype=float)
-    s_cost, s_res = score(st)
-    if int(s_cost[0]) <= limit and float(s_res[0] ** 2) <= best_res**2 + CHI2_99 * sigma2 / max(
-        len(side), 1
-    ):
-        centre = st[0]  # the caller's own fit is allowed: keep it
-    else:  # refine the best coarse candidate on a fine grid
-        best = cands[int(np.argmin(np.where(free, res, np.inf)))]
-        f = np.arange(-STEP, STEP + FINE / 2, FINE)
-        fx, fy = np.meshgrid(f + best[0], f + best[1])
-        fine = np.column_stack([fx.ravel(), fy.ravel()])
-        fcost, fres = score(fine)
-        fres = np.where(fcost <= limit, fres, np.inf)
-        centre = fine[int(np.argmin(fres))] if np.isfinite(fres.min()) else best
-    spread = float(np.sqrt(((cands[ok] - centre) ** 2).sum(axis=1)).max()) + STEP / 2
+
+    def consistent(cost: npt.NDArray[np.int64], res: F64) -> tuple[Mask, Mask]:
+        """Free (what the camera sees allows the axis there) and consistent (... and the
+        visible arc fits it: a likelihood-ratio region, 99 %, two unknowns, about the best
+        fit, the depth noise taken as the best fit's own residual, at least NOISE)."""
+        free = cost <= int(cost.min()) + cut
+        best_res = float(res[free].min())
+        sigma2 = max(best_res, NOISE) ** 2
+        return free, free & (res**2 <= best_res**2 + CHI2_99 * sigma2 / max(len(side), 1))
+
+    free, ok = consistent(cost, res)
+    # the region refined on the FINE lattice through the caller's fit: seeded with the caller's
+    # fit and the consistent grid axes, then grown from every consistent axis to its eight
+    # neighbours until none is left unscored; the best, hence the region, is that of every axis
+    # scored (grid and lattice)
+    st = np.asarray(start, dtype=float)
+    ring = np.asarray([(i, j) for i in (-1, 0, 1) for j in (-1, 0, 1) if i or j], dtype=np.int64)
+    todo = np.unique(
+        np.vstack([np.zeros((1, 2)), np.rint((cands[ok] - st) / FINE)]).astype(np.int64), axis=0
+    )
+    # every axis scored: the grid's, then the lattice's (``lattice``: their indices)
+    axes, lattice = cands, np.zeros((0, 2), dtype=np.int64)
+    scored: set[tuple[int, int]] = set()
+    while len(todo):
+        scored.update((int(i), int(j)) for i, j in todo)
+        new = st + todo * FINE
+        c, r = score(new)
+        c[~within(new)] = len(dirs) + 1  # not a candidate: never free
+        axes, lattice = np.vstack([axes, new]), np.vstack([lattice, todo])
+        cost, res = np.concatenate([cost, c]), np.concatenate([res, r])
+        free, ok = consistent(cost, res)
+        grown = (lattice[ok[len(cands) :]][:, None, :] + ring).reshape(-1, 2)
+        fresh = {(int(i), int(j)) for i, j in grown} - scored
+        todo = np.asarray(sorted(fresh), dtype=np.int64).reshape(-1, 2)
+    if ok[len(cands) + int(np.flatnonzero((lattice == 0).all(axis=1))[0])]:
+        centre = st  # the caller's own fit is consistent: keep it
+    else:  # the best fit of the free axes
+        centre = axes[int(np.argmin(np.where(free, res, np.inf)))]
+    # the farthest consistent axis, and half a lattice cell's diagonal beyond it
+    spread = float(np.sqrt(((axes[ok] - centre) ** 2).sum(axis=1)).max()) + FINE * math.sqrt(0.5)
     return Carved((float(centre[0]), float(centre[1])), spread, int(ok.sum()))
 
 

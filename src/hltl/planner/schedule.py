@@ -131,6 +131,13 @@ def _orders(spec: HSpec) -> list[tuple[Atom, Atom]]:
     return out
 
 
+# the step model's climb skips levels while CP-SAT proves their "no"s in less than this many
+# deterministic seconds (a load-independent measure: 0.25 is about 0.4 s of CPU on an idle
+# core), at most MAX_SKIP at a time (``_shave``)
+CHEAP_NO = 0.25
+MAX_SKIP = 4
+
+
 def schedule_bound(
     problem: Problem,
     graph: RelaxedGraph,
@@ -203,9 +210,23 @@ def _shave(
     whole: a restriction of the full model (its "no" proves nothing) that finds a schedule far
     more cheaply where there is one. Where it finds one the full model has it too, so the level
     is the full model's optimum without asking it (and where that schedule replays as a plan,
-    the plan is optimal); only where it finds none is the full model asked."""
+    the plan is optimal); only where it finds none is the full model asked.
+
+    Without it, the step model skips levels while its "no"s are cheap: after a "no" that took
+    CP-SAT less than ``CHEAP_NO`` deterministic seconds the next level asked is twice as far
+    up as the last step (at most ``MAX_SKIP`` levels), after a dearer one the next level.
+    A "no" at a level is a "no" at every level below it, so the skipped ones need no asking
+    unless a schedule turns up above them: then they are asked one at a time from the lowest,
+    and the first schedule found is the optimum (docs/planner.md, "Which levels are asked")."""
     unit = time_unit(problem)
-    while upper is None or level * unit < upper:
+    top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
+    proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
+    skip = 1 if steps and not whole_first else 0  # 0: one level at a time
+    above: tuple[int, ScheduleBound] | None = None  # a schedule found past skipped levels
+    spent: list[float] = []
+    while top is None or level < top:
+        if above is not None and level == above[0]:
+            return above[1]
         if whole_first:
             whole = relaxed_steps(
                 problem, graph, node, tgts, level, deadline, seed=seed, whole=True
@@ -214,19 +235,38 @@ def _shave(
                 return ScheduleBound(max(floor, level * unit), False, len(tgts))
             if isinstance(whole, tuple):
                 return ScheduleBound(max(floor, level * unit), True, len(tgts), whole)
+        asked = len(spent)
         if steps:
             found = relaxed_steps(
-                problem, graph, node, tgts, level, deadline, seed=seed, holders=not weak
+                problem,
+                graph,
+                node,
+                tgts,
+                level,
+                deadline,
+                seed=seed,
+                holders=not weak,
+                spent=spent,
             )
         else:
             found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
         if found is None:  # out of time
-            return ScheduleBound(max(floor, level * unit), False, len(tgts))
+            return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
         if found is not False:
             got = None if found is True else found
-            return ScheduleBound(max(floor, level * unit), True, len(tgts), got)
-        level += 1
-    return ScheduleBound(max(floor, upper), True, len(tgts))
+            res = ScheduleBound(max(floor, level * unit), True, len(tgts), got)
+            if level == proved + 1:
+                return res
+            # levels were skipped below this one: ask them, one at a time from the lowest
+            above, level, skip = (level, res), proved + 1, 0
+            continue
+        proved = level
+        if skip:
+            skip = min(2 * skip, MAX_SKIP) if sum(spent[asked:]) < CHEAP_NO else 1
+        level = proved + max(1, skip)
+        if top is not None and level >= top:
+            level = max(proved + 1, top - 1)
+    return ScheduleBound(max(floor, upper or 0), True, len(tgts))
 
 
 def _bisect(
@@ -315,13 +355,15 @@ def relaxed_steps(
     seed: int = 0,
     whole: bool = False,
     holders: bool = True,
+    spent: list[float] | None = None,
 ) -> tuple[tuple[Instance, ...], ...] | bool | None:
     """A step-indexed relaxed schedule that makes every target happen by ``level`` time units
     (``time_unit``), as its non-empty steps; False when CP-SAT proved there is none, None when
     it could not tell before ``deadline``. docs/planner.md, "Step bound".
 
     With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
-    nothing, but its schedules are more often plans). Without ``holders`` a split session
+    nothing, but its schedules are more often plans). CP-SAT's deterministic time is appended
+    to ``spent``. Without ``holders`` a split session
     keeps of its loop only the fixed runs and the time (session 8's model: a relaxation of this
     one, docs/planner.md "Loops").
 
@@ -344,7 +386,7 @@ def relaxed_steps(
     axis = _Steps(cp_model.CpModel(), p, level, unit, whole, holders)
     if not _relaxation(p, graph, node, tgts, axis):
         return False
-    solver = _solve(axis, deadline, seed)
+    solver = _solve(axis, deadline, seed, spent)
     if solver is None or solver is False:
         return solver
     out: list[list[Instance]] = [[] for _ in range(axis.horizon)]
@@ -355,15 +397,18 @@ def relaxed_steps(
     return tuple(tuple(step) for step in out if step)
 
 
-def _solve(axis: _Axis, deadline: float, seed: int) -> Any:
+def _solve(axis: _Axis, deadline: float, seed: int, spent: list[float] | None = None) -> Any:
     """CP-SAT on the model built on ``axis``: its solver when it found a schedule, False when
-    it proved there is none, None when it could not tell before ``deadline``."""
+    it proved there is none, None when it could not tell before ``deadline``. CP-SAT's
+    deterministic time is appended to ``spent``."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     solved = solve_until(axis.model, deadline, seed)
     if solved is None:
         return None
     solver, status = solved
+    if spent is not None:
+        spent.append(solver.deterministic_time)
     if status == cp_model.INFEASIBLE:
         return False
     if status not in (cp_model.OPTIMAL, cp_model.FEASIBLE):
@@ -376,6 +421,17 @@ def _solve(axis: _Axis, deadline: float, seed: int) -> Any:
 _Window = Callable[[Instance, bool, float], tuple[int, int] | None]
 # (used, time in units) per instance that brings an object into a hand or takes it out
 _Stamps = list[tuple[Any, Any]]
+
+
+@dataclass(frozen=True, slots=True)
+class _Job:
+    """Instances of one robot (or on one object's path) that the model counts together: their
+    least summed duration (ticks, in time units), a lower bound on each one's, and the literal
+    "they happen"."""
+
+    total: int
+    each: tuple[int, ...]
+    used: Any
 
 
 @dataclass(frozen=True, slots=True)
@@ -508,7 +564,10 @@ class _Steps(_Axis):
                 prev = d
             m.add(self.start[k + 1] == self.start[k] + length)
         self.per_robot_step: dict[tuple[int, int], list[Any]] = {}
-        self.work: list[list[tuple[int, Any]]] = [[] for _ in problem.robots]  # (duration, used)
+        self.lengths = lengths
+        # each robot's instances, and each target object's path (``finish``)
+        self.work: list[list[_Job]] = [[] for _ in problem.robots]
+        self.paths: dict[int, list[_Job]] = {}
         # every instance placed, with its step literals: the schedule is read from them
         self.chosen: list[tuple[Instance, list[tuple[int, Any]]]] = []
 
@@ -556,7 +615,8 @@ class _Steps(_Axis):
         m.add(u == sum(x for _, x in xs))
         for r in range(len(self.problem.robots)):
             if i.executors >> r & 1:
-                self.work[r].append((d, u))
+                self.work[r].append(_Job(d, (d,), u))
+        self.paths.setdefault(i.obj, []).append(_Job(d, (d,), u))
         st = m.new_int_var(first, last, "")
         tm = m.new_int_var(0, self.level, "")  # when its step starts
         for k, x in xs:
@@ -595,6 +655,11 @@ class _Steps(_Axis):
         for u, when in departures:
             m.add(leaves == when).only_enforce_if(u)
         m.add(arrived + (loop[0] + loop[1]) // unit <= leaves).only_enforce_if(split)
+        # the way out and the way back are two more instances of r's, each in a step of its
+        # own: r's load, and its steps (``finish``)
+        self.work[r].append(
+            _Job((loop[0] + loop[1]) // unit, (loop[0] // unit, loop[1] // unit), split)
+        )
         if not self.holders:
             return out
         # and the steps e and f last at least the quickest way out and the quickest way back
@@ -604,9 +669,6 @@ class _Steps(_Axis):
             for k, b in enumerate(which):
                 m.add(at == k).only_enforce_if(b)
                 m.add_implication(b, self.at_least[k][d] if d > self.d_min else self.busy[k])
-        # the way out and the way back are two more instances of r's, each in a step of its
-        # own: r's load
-        self.work[r].append(((loop[0] + loop[1]) // unit, split))
         # where the way out takes it (a robot's hand, or a place no robot holds), from where it
         # can go on without its atom happening: a robot there holds it in step e and acts on
         # it again in a later one, so it holds it in [e, e + 1], and does two instances on it
@@ -632,7 +694,7 @@ class _Steps(_Axis):
         for who, (work, z) in taken.items():
             if who is not None:
                 out.append((who, m.new_optional_fixed_size_interval_var(e, 2, z, "")))
-                self.work[who].append((work, z))
+                self.work[who].append(_Job(work, (self.d_min, self.d_min), z))
         return out
 
     def finish(self) -> None:
@@ -640,11 +702,28 @@ class _Steps(_Axis):
         for lits in self.per_robot_step.values():
             if len(lits) > 1:
                 m.add_at_most_one(lits)
-        # implied (each of a robot's instances fills a step of its own, lasting at least it),
-        # but stated: it gives CP-SAT's linear relaxation the per-robot load
-        for jobs in self.work:
-            if len(jobs) > 1:
-                m.add(sum(d * u for d, u in jobs) <= self.level)
+        # Counting rows (docs/planner.md, "Counting rows"): a robot's instances, and the
+        # instances of one object's path, each fill a non-empty step of their own that lasts at
+        # least the instance, and every other non-empty step lasts at least d_min. So, with B
+        # the non-empty steps and A_d the steps of at least d: they are at most B, those of at
+        # least d at most A_d, and their durations plus d_min per other non-empty step at most
+        # the level. Mostly implied by the step literals, but CP-SAT's linear relaxation sees
+        # them only when stated (and a loop's two instances have no step literals of their own)
+        dm = self.d_min
+        steps = sum(self.busy)
+        longer = {d: sum(row[d] for row in self.at_least) for d in self.lengths}
+        for jobs in [*self.work, *self.paths.values()]:
+            if not jobs:
+                continue
+            m.add(sum(j.total * j.used for j in jobs) <= self.level)
+            m.add(sum(len(j.each) * j.used for j in jobs) <= steps)
+            m.add(
+                sum((j.total - len(j.each) * dm) * j.used for j in jobs) + dm * steps <= self.level
+            )
+            for d in self.lengths:
+                at_least_d = [(sum(e >= d for e in j.each), j.used) for j in jobs]
+                if any(n for n, _ in at_least_d):
+                    m.add(sum(n * u for n, u in at_least_d if n) <= longer[d])
 
 
 def _relaxation(
