@@ -12,13 +12,13 @@ from hypothesis import strategies as st
 
 from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
-from hltl.planner import PlanStatus, anytime, plan, profile, schedule
+from hltl.planner import PlanStatus, anytime, plan, profile
 from hltl.planner.problem import Problem, to_seconds, to_ticks
-from hltl.planner.search import _Search
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
 from tests.oracles.random_instances import random_instance
+from tests.planner.start import start_targets
 
 pytest.importorskip("ortools")
 
@@ -32,13 +32,10 @@ def _bound(scene: Scene, spec: HSpec) -> tuple[int, float, bool] | None:
     problem = Problem(scene, spec)
     if not profile.applicable(problem):
         return None
-    s = _Search(problem)
-    node = problem.start()
+    s, node, graph, tgts = start_targets(problem)
     h0 = s.heuristic(node)
     if math.isinf(h0):
         return None
-    graph = s.heuristic.graph
-    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
     if not tgts:
         return None
     res = profile.profile_bound(
@@ -138,10 +135,7 @@ def test_a_level_the_relaxation_rules_out_has_no_plan() -> None:
     # plan is a relaxed solution); a level is asked at a whole number of time units
     c = delivery_cell("grid", 4, 1)
     problem = Problem(c.scene, c.spec)
-    s = _Search(problem)
-    node = problem.start()
-    graph = s.heuristic.graph
-    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    _, node, graph, tgts = start_targets(problem)
     deadline = time.perf_counter() + DEADLINE_S
     assert profile.feasible(problem, graph, node, tgts, to_ticks(3.2), deadline) is False
     assert profile.feasible(problem, graph, node, tgts, to_ticks(3.3), deadline) is True

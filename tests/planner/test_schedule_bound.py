@@ -23,6 +23,7 @@ from tests.oracles.cpsat import cpsat_makespan
 from tests.oracles.random_instances import random_instance
 from tests.oracles.validator import check_plan
 from tests.planner import test_symmetry as twins
+from tests.planner.start import start_targets
 
 pytest.importorskip("ortools")
 
@@ -170,10 +171,7 @@ def test_step_bound_sees_where_a_loop_takes_the_object() -> None:
     problem, unit, _, by_steps = _cell_bounds("random", 4, 1)
     assert by_steps == to_ticks(optimum)
     # one unit below it, neither model finds a schedule
-    s = _Search(problem)
-    node = problem.start()
-    graph = s.heuristic.graph
-    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    _, node, graph, tgts = start_targets(problem)
     below = by_steps // unit - 1
     deadline = time.perf_counter() + DEADLINE_S
     weak = schedule.relaxed_steps(problem, graph, node, tgts, below, deadline, holders=False)
@@ -241,13 +239,10 @@ def _twin_bounds(seed: int) -> tuple[int, int, float, int] | None:
     problem = Problem(scene, spec)
     if not schedule.steps_applicable(problem):
         return None
-    s = _Search(problem)
-    node = problem.start()
+    s, node, graph, tgts = start_targets(problem)
     h0 = s.heuristic(node)
     if math.isinf(h0):
         return None
-    graph = s.heuristic.graph
-    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
     pairs = schedule.twin_pairs(problem, tgts, node[0])
 
     def bound() -> int:
@@ -298,10 +293,7 @@ def test_an_order_between_objects_that_are_not_twins_can_raise_the_bound() -> No
     # schedule at 3.3 s, so an order the symmetry does not allow would show up there
     c = delivery_cell("grid", 4, 0)
     problem = Problem(c.scene, c.spec)
-    s = _Search(problem)
-    node = problem.start()
-    graph = s.heuristic.graph
-    tgts = schedule.targets(problem, graph, node, s.heuristic.required_atoms(node[2]))
+    _, node, graph, tgts = start_targets(problem)
     assert schedule.twin_pairs(problem, tgts, node[0]) == []
     level = to_ticks(3.3) // schedule.time_unit(problem)
     deadline = time.perf_counter() + DEADLINE_S
