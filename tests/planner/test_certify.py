@@ -95,9 +95,12 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     expected = search(Problem(c.scene, c.spec), timeout=120)
     assert found is not None and expected.makespan is not None
     assert found[0] == to_ticks(expected.makespan) == to_ticks((level + 1) / 10)
-    assert asked[-4:] == [
-        (level, False, False, True),
-        (level, True, True, False),
-        (level, True, False, False),
-        (level + 1, True, True, True),
-    ]
+    # (the climbs ask two levels at once on two cores, so compare what was asked, not in
+    # which order the answers came; a question stopped because another answer implies its
+    # own is logged as not found)
+    assert (level, False, False, True) in asked  # the cheaper model's schedule: no plan
+    assert not any(h and lv < level for lv, h, _, _ in asked)  # the full model from there
+    assert (level, True, True, False) in asked  # sessions whole: none
+    assert (level, True, False, False) in asked  # the full model: none
+    assert (level + 1, True, True, True) in asked  # sessions whole: a plan
+    assert (level + 1, True, False, True) not in asked  # the full model not needed there
