@@ -820,6 +820,9 @@ class CellNode:
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
         s.next, s.unavailable = clock["next"], clock["unavailable"]
+        # each guessed step gets a span of its own: the ticks after it go as further replies
+        # (off the executor's critical path), and a wrong guess is undone from its save
+        s.limit = len(b.ticks) + min(s.ahead.count, ep.span)
         return Tick(
             t=t,
             world=world,
