@@ -1387,12 +1387,20 @@ def _corrections(items: list[Item]) -> list[Item]:
         while before and _is(before[-1], ",", "-", "filler"):
             before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
         after = _without_trailing_markers(items[j:])
-        if it.text.lower() in ("sorry", "oops") and (
-            not after or (after[0].kind == "punct" and after[0].lemma in _END)
-        ):
+        cut_off = not after or (after[0].kind == "punct" and after[0].lemma in _END)
+        apology = all(
+            x.text.lower() in ("sorry", "oops", "whoops") or _is(x, ",", "-") for x in items[k:j]
+        )
+        if it.text.lower() in ("sorry", "oops") and cut_off and apology:
             items = before + after  # "Give Bob the cup, sorry.": an apology, not a correction
             k = len(before)
             continue
+        if cut_off and before and not apology:
+            # "Salt to Marco, oops, I meant": the correction is cut off before what it names
+            marker = " ".join(x.text for x in items[k:j] if x.kind != "punct")
+            raise GroundingError(
+                f"{marker!r} starts a correction that names nothing: say what to change it to"
+            )
         whole = False  # correcting the sentence before, across its full stop
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
@@ -2230,7 +2238,17 @@ def _last(items: list[Item]) -> list[Item]:
     if head < k and not (_is_verb_item(items[head]) or _humans(items[head])):
         part = _part_last(items[:start], clause)
         if part is not None:
-            return part
+            # what is said after it stays ('…, the red one last. Give Sam …'); more of the same
+            # sentence ('…, the red one last, and Sam the stapler') could be in the order or not
+            tail = items[k + 1 :]
+            ends = [n for n, x in enumerate(tail) if x.kind == "punct" and x.lemma in _END]
+            cut = ends[0] if ends else len(tail)
+            if any(not _is(x, ",", "filler") for x in tail[:cut]):
+                raise GroundingError(
+                    "what is said after 'last' in its sentence could be in the order or not: "
+                    "say it in a sentence of its own"
+                )
+            return [*part, *tail]
         if not (_starts_objects(items, head) and _own_clause(clause)):
             return items  # "the cup and the apple last": both last, or the apple after the cup?
         # objects with their own place or person: the clause is their whole list, back to a
