@@ -95,14 +95,27 @@ def _each_sentence(
 def _questions(items: list[Item]) -> list[Item]:
     """A sentence opening with 'where', 'is', 'does', 'has' … asks; it does not request."""
     for start, end in _sentences(items):
-        k = start
-        while k < end and (_is(items[k], ",", "filler", "correct")):
-            k += 1
-        if k >= end:
-            continue
+        mark = end < len(items) and items[end].lemma == "?"
+        # "But is the apple on the shelf?", and with a question mark a clause after ", but" /
+        # ", and" ("No hurry, but would Bob like the cup?")
+        opens = [start]
+        if mark:
+            opens += [n + 1 for n in range(start, end - 1) if _is(items[n], ",")]
+            opens += [n for n in range(start + 1, end) if _is(items[n], "and")]
+        for k in opens:
+            _not_a_question(items, k, end, mark, start)
+    return items
+
+
+def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int) -> None:
+    """Refuse the sentence ``items[start:end]`` when the clause at ``k`` opens as a question."""
+    if k != start and not _is(items[k], "and"):
+        return  # after a comma only ", but …" / ", and …" opens a clause of its own
+    while k < end and (_is(items[k], ",", "filler", "correct", "and")):
+        k += 1
+    if k < end:
         first = items[k]
         nxt = items[k + 1] if k + 1 < end else None
-        mark = end < len(items) and items[end].lemma == "?"
         low = first.text.lower()
         # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
         offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
@@ -122,7 +135,6 @@ def _questions(items: list[Item]) -> list[Item]:
                 f"{words!r} is a question, not a request: say what to do, e.g. "
                 "'give Bob the chips' or 'put the cup on the shelf'"
             )
-    return items
 
 
 def _is_after(items: list[Item]) -> list[Item]:
