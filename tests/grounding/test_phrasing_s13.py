@@ -408,3 +408,25 @@ def test_a_negated_command_never_drops_a_task_of_the_request() -> None:
                 else f"{text}. Don't {verb} the {o} on the {t.target}."
             )
             assert tree(said, scene) is None, f"{said!r} -> {show_tree(tree(said, scene))}"
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # on main 'but the small one' after the place was read as 'and the small one': every box
+        (
+            "Put every box on the pallet but the small one",
+            "box_medium@pallet & box_large@pallet",
+            DEPOT,
+        ),
+        ("Put the mugs on the shelf but the red one", "mug_blue@shelf", CELL),
+        ("Give the mugs to Bob, but the red one", "mug_blue>B", CELL),
+        ("Give all the mugs to Bob but the red one, please", "mug_blue>B", CELL),
+        ("Give Bob the mugs but the red one", "mug_blue>B", CELL),
+        # not one of them: 'but' adds, as before
+        ("Give Bob the mugs but the apple", "mug_red>B & mug_blue>B & apple>B", CELL),
+        ("Give Bob the chips but the apple to Carol", "chips>B & apple>C", CELL),
+    ],
+)
+def test_but_one_of_them_after_the_place_leaves_it_out(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)

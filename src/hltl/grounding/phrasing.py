@@ -1862,8 +1862,39 @@ def _is_verb_item(item: Item) -> bool:
     return item.kind == "word" and item.lemma.startswith("verb:")
 
 
+def _but_after_place(items: list[Item]) -> list[Item]:
+    """'Put every box on the pallet but the small one': 'but' + objects ending the clause, after
+    the place or person of all the objects of a kind, leaves them out of those (it was read as
+    'and the small one', so every box): said right after them, as 'every box but the small one'
+    is read."""
+    for k, it in enumerate(items):
+        if not (_is(it, "and") and it.text.lower() == "but") or not _starts_objects(items, k + 1):
+            continue
+        m = k - 1
+        while m >= 0 and (
+            _is(items[m], "det", "filler", "on", "to", "for", ",")
+            or (items[m].kind == "ent" and not _objects(items[m]))
+        ):
+            m -= 1
+        if m < 0 or m == k - 1 or not _objects(items[m]) or len(items[m].refs) < 2:
+            continue
+        j = _past_dets(items, k + 1)
+        left = {r.id for r in items[j].refs}
+        if not left < {r.id for r in items[m].refs}:
+            continue  # not one of them
+        end = j + 1
+        while end < len(items) and _is(items[end], ",", "filler"):
+            end += 1
+        if end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
+            continue  # 'but the small one to Carol': a clause of its own
+        place = [x for x in items[m + 1 : k] if not _is(x, ",")]
+        return [*items[: m + 1], *items[k : j + 1], *place, *items[j + 1 :]]
+    return items
+
+
 def _exclusions(items: list[Item]) -> list[Item]:
     """'everything except the mugs', 'a mug, not the red one': remove them from the last name."""
+    items = _but_after_place(items)
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -1874,6 +1905,16 @@ def _exclusions(items: list[Item]) -> list[Item]:
         )
         if _is(it, "and") and low == "but" and out and out[-1].quant == "all":
             starts = _starts_objects(items, k + 1)  # "everything but the mugs"
+        elif (
+            _is(it, "and")
+            and low == "but"
+            and out
+            and _objects(out[-1])
+            and _starts_objects(items, k + 1)
+        ):
+            # "the mugs but the red one": one of those named, left out of them
+            said = {r.id for r in items[_past_dets(items, k + 1)].refs}
+            starts = len(out[-1].refs) > 1 and said < {r.id for r in out[-1].refs}
         if not starts:
             out.append(it)
             k += 1
