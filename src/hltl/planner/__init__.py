@@ -6,7 +6,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
-from hltl.planner.anytime import certified, plan_anytime, with_fallback_plan
+from hltl.planner.anytime import _Found, certify, plan_anytime, with_fallback_plan
 from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.planner.search import ALGORITHMS, _Search, plan_steps, search
@@ -100,25 +100,36 @@ def plan(
     reserve = 0.0 if timeout is None or timeout < 2.0 else min(1.0, FALLBACK_SHARE * timeout)
     t0 = time.perf_counter()
     state = None
+    best: _Found | None = None  # a plan found before A*: A* looks only for shorter ones
     if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
         state = _Search(problem)
-        found = certified(problem, state, t0 + CERTIFY_SHARE * timeout)
-        if found is not None:
-            makespan = to_seconds(found[0])
-            stats = SearchStats(0, 0, time.perf_counter() - t0, "astar")
-            steps = plan_steps(problem, found[1])
-            return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, "", makespan)
+        cert = certify(problem, state, t0 + CERTIFY_SHARE * timeout)
+        if cert.optimal is not None:
+            return _solved(
+                problem, cert.optimal, SearchStats(0, 0, time.perf_counter() - t0, "astar")
+            )
+        best = cert.best
     result = search(
         problem,
         algorithm=algorithm,
         timeout=None if timeout is None else timeout - reserve - (time.perf_counter() - t0),
         max_expansions=max_expansions,
         on_progress=on_progress,
+        upper=None if best is None else best[0],
         state=state,
     )
     if state is not None:
         result = replace(result, stats=replace(result.stats, seconds=time.perf_counter() - t0))
+    if best is not None and result.status is PlanStatus.INFEASIBLE:
+        return _solved(problem, best, result.stats)  # A* proved no plan is shorter
     if result.status is PlanStatus.TIMEOUT:
         # the walk checks the clock between routings: leave room for the last one
-        return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve)
+        return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve, best)
     return result
+
+
+def _solved(problem: Problem, found: _Found, stats: SearchStats) -> PlanResult:
+    """A plan proved optimal as a result."""
+    makespan = to_seconds(found[0])
+    steps = plan_steps(problem, found[1])
+    return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, "", makespan)

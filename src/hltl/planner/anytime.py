@@ -163,6 +163,18 @@ class _Router:
             ]
             for g in gls
         ]
+        # per goal: the instances that make its atom happen (event atoms), or per place whether
+        # the atom holds there (state atoms): integer look-ups in the routing loop
+        self.fires: list[frozenset[int]] = [
+            frozenset(i.index for row in p.by_obj_pre[g.obj] for i in row if g.atom in i.events)
+            for g in gls
+        ]
+        self.holds_at: list[list[bool] | None] = [
+            None
+            if g.atom.name in ("delivered", "placed", "picked")
+            else [g.atom in atoms_ for atoms_ in p.state_atoms[g.obj]]
+            for g in gls
+        ]
 
     def route_all(
         self, order: Sequence[int], fixed: dict[int, _Route] | None = None
@@ -173,7 +185,9 @@ class _Router:
         p = self.p
         locs = self.node[0]
         n_robots = len(p.robots)
-        busy: list[set[int]] = [set() for _ in range(n_robots)]
+        # per step, the robots busy in it as a bit mask; per robot, the step from which it keeps
+        # an object for good
+        busy: dict[int, int] = {}
         forever = [math.inf] * n_robots
         for o, code in enumerate(locs):
             r = p.code_holder.get(code)
@@ -187,11 +201,9 @@ class _Router:
             route, holds, end, keep = found
             for t, inst in route:
                 steps.setdefault(t, []).append(inst)
-                for r in range(n_robots):
-                    if inst.executors >> r & 1:
-                        busy[r].add(t)
+                busy[t] = busy.get(t, 0) | inst.executors
             for r, t in holds:
-                busy[r].add(t)
+                busy[t] = busy.get(t, 0) | 1 << r
             if keep is not None:
                 forever[keep] = min(forever[keep], end + 1)
             finish[gi] = end
@@ -216,47 +228,45 @@ class _Router:
         gi: int,
         start: int,
         earliest: int,
-        busy: list[set[int]],
+        busy: dict[int, int],
         forever: list[float],
     ) -> _Route | None:
         """Earliest step at which the goal's atom happens, routing its object around the
-        reservations: (actions by step, (robot, step) holds, final step, robot that keeps the
-        object afterwards or None)."""
+        reservations (``busy``: per step the robots reserved in it, a bit mask; ``forever``: per
+        robot the step from which it is taken): (actions by step, (robot, step) holds, final
+        step, robot that keeps the object afterwards or None)."""
         p = self.p
         holder = p.code_holder
         alive = self.alive[gi]
-        atom = g.atom
-        state_target = None if atom.name in ("delivered", "placed", "picked") else True
-
-        def free(r: int, t: int) -> bool:
-            return t not in busy[r] and t < forever[r]
-
-        horizon = max((max(b, default=0) for b in busy), default=0) + 4 * len(p.locs) + earliest
+        fires = self.fires[gi]
+        holds_at = self.holds_at[gi]
+        by_pre = p.by_obj_pre[g.obj]
+        # robots taken for good, as (from step, bit), earliest first
+        taken = sorted((f, 1 << r) for r, f in enumerate(forever) if f < math.inf)
+        gone = 0  # robots taken for good by the current step
+        k = 0
+        horizon = max(busy, default=0) + 4 * len(p.locs) + earliest
         horizon += 8
         back: dict[tuple[int, int], tuple[int, Instance | None]] = {}
         frontier = [start]
         for t in range(horizon):
+            while k < len(taken) and taken[k][0] <= t:
+                gone |= taken[k][1]
+                k += 1
+            blocked = busy.get(t, 0) | gone
             nxt: list[int] = []
             seen: set[int] = set()
             for loc in frontier:
                 r_hold = holder.get(loc)
-                if r_hold is not None and not free(r_hold, t):
+                if r_hold is not None and blocked >> r_hold & 1:
                     continue  # the holder is needed elsewhere in this step: impossible state
-                for inst in p.by_obj_pre[g.obj][loc]:
-                    if not alive[inst.post] and atom not in inst.events:
+                for inst in by_pre[loc]:
+                    fired = inst.index in fires
+                    if not alive[inst.post] and not fired:
                         continue
-                    ok = True
-                    for r in range(len(p.robots)):
-                        if inst.executors >> r & 1 and not free(r, t):
-                            ok = False
-                            break
-                    if not ok:
+                    if inst.executors & blocked:
                         continue
-                    reached = (
-                        atom in inst.events
-                        if state_target is None
-                        else atom in p.state_atoms[g.obj][inst.post]
-                    )
+                    reached = fired if holds_at is None else holds_at[inst.post]
                     if reached and t >= earliest:
                         return self._unwind(back, start, loc, t, inst)
                     if inst.post not in seen:
@@ -551,35 +561,51 @@ def _schedule_at_start(
     return res.ticks
 
 
+@dataclass(frozen=True, slots=True)
+class Certificate:
+    """What exact mode's first phase found (``certify``): a plan it proved optimal, and the
+    shortest plan it knows (the same one when proved; either may be None)."""
+
+    optimal: _Found | None
+    best: _Found | None
+
+
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
+    """The plan ``certify`` proves optimal, or None."""
+    return certify(problem, s, until).optimal
+
+
+def certify(problem: Problem, s: _Search, until: float) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
     bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
     the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
-    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal
-    and returned; None otherwise."""
+    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal.
+    Where none is proved, the shortest of those plans is handed back too (A* then looks only
+    for shorter ones)."""
+    none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
-        return None
+        return none
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
-        return None
+        return none
     # in this order: importing CP-SAT (and pandas with it) costs a small plan its start-up
     if not (schedule.steps_applicable(problem) and lns.available()):
-        return None
+        return none
     h0 = heur(start)
     if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
-        return None  # (lines: A* alone; the joint re-plan below would take the phase's time)
+        return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
     ticks, found = step_bound(problem, s, start, round(h0), None, until)
     if found is not None:
-        return found
+        return Certificate(found, found)
     if best is None:
-        return None
+        return none
     if ticks >= best[0]:
-        return best  # no relaxed schedule is shorter
+        return Certificate(best, best)  # no relaxed schedule is shorter
     gls = goals(s, start)
     if gls and time.perf_counter() < until and _joint_possible(problem, gls):
         # the relaxation's schedule was no plan: CP-SAT re-plans every goal jointly from the
@@ -588,8 +614,10 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
         slack = max(0, ticks // shortest - len(best[1]))
         joint = _jointly(problem, s, _Router(s, start, gls), best, until, slack=slack)
         if joint is not None and joint[0] <= ticks:
-            return joint
-    return None
+            return Certificate(joint, joint)
+        if joint is not None and joint[0] < best[0]:
+            best = joint
+    return Certificate(None, best)
 
 
 def step_bound(
@@ -876,12 +904,15 @@ class _OrderWalk:
 
 
 def with_fallback_plan(
-    problem: Problem, result: PlanResult, until: float | None = None
+    problem: Problem, result: PlanResult, until: float | None = None, known: _Found | None = None
 ) -> PlanResult:
     """A timed-out exact result with a prioritized plan attached (status unchanged): the first
-    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``)."""
+    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``),
+    or ``known`` (a plan found before) where that is shorter."""
     s = _Search(problem)
     found = construct(problem, s)
+    if found is None or (known is not None and known[0] < found[0]):
+        found = known
     if found is None:
         return result
     if until is not None and time.perf_counter() < until:
