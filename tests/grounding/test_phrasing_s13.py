@@ -159,6 +159,8 @@ def test_courtesy_the_speaker_purpose_and_time_change_nothing(
         ("Give Omar the spoon after he finishes his lunch", LAB),
         ("Give Mrs Khan the jug when she gets back", WARD),
         ("Give Bob the apple tomorrow", CELL),
+        ("give bob three things: the cup and the apple", CELL),  # the count does not fit
+        ("a cup for bob and one for carol", CELL),  # one cup
         # 'something to eat' is what is asked, not what it is for
     ],
 )
@@ -430,3 +432,57 @@ def test_a_negated_command_never_drops_a_task_of_the_request() -> None:
 )
 def test_but_one_of_them_after_the_place_leaves_it_out(text: str, want: str, scene: Scene) -> None:
     assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Hand the glue to Zoe or Noah, whoever wants it", "glue>C | glue>B", CLASSROOM),
+        ("Could you, um, give the, uh, banana to Emma?", "banana>C", LAB),
+        ("Is it possible for Emma to have the banana?", "banana>C", LAB),
+        ("Would it be ok if Emma had the banana?", "banana>C", LAB),
+        ("I was hoping Emma could have the banana", "banana>C", LAB),
+        ("Don't forget to give Bob the chips", "chips>B", CELL),
+        ("Make sure you don't give Bob the apple. Give Bob the chips.", "chips>B", CELL),
+        (
+            "Lily and Ava both want a block",
+            "(block_red>A & block_green>C) | (block_green>A & block_red>C)",
+            NURSERY,
+        ),
+        ("Sam's run out of pens, give him the black one", "pen_black>B", OFFICE),
+        ("Mr Novak asked for the lemon ages ago", "lemon>C", KITCHEN),
+        ("Bob is desperate for the chips", "chips>B", CELL),
+        ("The only thing Bob wants is the chips", "chips>B", CELL),
+        (
+            "give bob three things: the cup, the apple and the chips",
+            "cup>B & apple>B & chips>B",
+            CELL,
+        ),
+        ("bob gets 2 things, the cup and the apple", "cup>B & apple>B", CELL),
+        ("Bob needs a couple of things: the cup and the apple", "cup>B & apple>B", CELL),
+        (
+            "a mug for bob and one for carol",
+            "(mug_red>B & mug_blue>C) | (mug_blue>B & mug_red>C)",
+            CELL,
+        ),
+    ],
+)
+def test_how_more_people_ask(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Hand the glue to Zoe, whoever wants it", CLASSROOM),  # no choice to leave to them
+        ("Priya and Sam both need the stapler", OFFICE),  # one stapler for two
+        ("Make sure you don't give Bob the chips. Give Bob the chips.", CELL),
+        ("Give Bob the apple tomorrow", CELL),
+        ("give bob three things: the cup and the apple", CELL),  # the count does not fit
+        ("a cup for bob and one for carol", CELL),  # one cup
+        # 'to eat' is what is asked (which of them is to eat?), not what it is for
+        ("Give Bob something to eat", CELL),
+    ],
+)
+def test_near_forms_of_how_people_ask_are_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
