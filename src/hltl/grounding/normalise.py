@@ -1565,9 +1565,9 @@ _COURTESY: tuple[tuple[str, str], ...] = (
     (r"(^|(?<=[.;!?])\s*)(?:whenever|when) (?:you'?re|you are) (?:ready|free)\s*[,.]?\s*", r"\1"),
     # "Be an angel and hand …": a request for a favour, not a name
     (
-        r"(^|(?<=[.;!?,])\s*)(?:so |and |please |now )?be (?:an? )?(?:angel|dear|star|love|"
-        r"darling|gem|sweetheart|sweetie|pal|treasure|doll|lamb|good (?:robot|lad|girl|boy))"
-        r"(?:\s+and\b|\s*[,:])\s*",
+        r"(^|(?<=[.;!?,])\s*)(?:(?:could|would|can|will) you |so |and |please |now )*be (?:an? )?("
+        r"?:angel|dear|star|love|darling|gem|sweetheart|sweetie|pal|treasure|doll|lamb|good (?:rob"
+        r"ot|lad|girl|boy))(?:\s+and\b|\s*[,:])\s*",
         r"\1",
     ),
     # "would you be ever so kind and pass …", "if you'd be so good, …"
@@ -1674,6 +1674,23 @@ _COURTESY: tuple[tuple[str, str], ...] = (
 
 # requests asked as a possibility or a choice, rewritten with their names kept
 _ASKED: tuple[tuple[str, str], ...] = (
+    # "I request you to give …", "I'd ask you to …"
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i|we)(?:'d| would)? (?:request|ask|beg) (?:you |that you )?(?:to )?"
+        r"(?=(?:give|hand|pass|bring|take|put|place|move|fetch|send|get)\b)",
+        r"\1",
+    ),
+    # "Mrs Khan is requesting the magazine"
+    (r"\s*(?:\bis|'s|\bare|'re) (?:requesting|asking for)\b", " wants"),
+    # "The thermometer needs to get to Ruth": goes to her
+    (r"\b(?:needs?|has|have) to get (?:over )?to\b", "should go to"),
+    # "The guest hasn't had his salt yet": he wants it (the whole sentence)
+    (
+        r"^((?:the )?[\w ]+?) (?:still )?(?:hasn't|has not|hasn't yet|has not yet|still hasn't) "
+        r"(?:had|got|gotten|received) (?![^.!]*\b(?:or|nor|and|any|either|neither|all|both)\b)"
+        r"((?:his|her|their|the|a|an) [\w ]+?)(?: yet)?\s*[.!]?$",
+        r"\1 wants \2",
+    ),
     # "Hand the glue to Zoe or Noah, whoever wants it": the choice the 'or' already gives
     (
         r"(\bor\b[^.;!?]*?),\s*whoever (?:wants|needs|likes|would like|prefers) (?:it|them|one)\b",
@@ -1704,6 +1721,16 @@ def _courtesy(text: str, lexicon: Lexicon) -> str:
         text = _drop(pattern, text, lexicon, repl)
     for pattern, repl in _ASKED:
         text = _sub(pattern, repl, text)
+    # "Mia's on the phone but she needs the tape": a remark naming no object, then the want
+    text = _sub(
+        r"^([^,;.!?]+?) but (he|she|they) (needs|wants|would like|'d like|could use)\b",
+        lambda m: (
+            f"{m.group(1)}. {m.group(2)} {m.group(3)}"
+            if not _ids(m.group(1), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
     return " ".join(text.split())
 
 
@@ -1890,7 +1917,8 @@ def _wants(text: str, lexicon: Lexicon) -> str:
         return m.group(0)
 
     return _sub(
-        r"(^|(?<=[.;!?,])\s*)for ((?:the )?[\w ]+?) (?:the |a |an )([\w ]+?)(?=\s*(?:[,.;!?]|$))",
+        r"(^|(?<=[.;!?,])\s*)for ((?:the )?[\w ]+?),? (?:the |a |an )([\w ]+?)(?=\s*(?:[,.;!?]|$|p"
+        r"lease\b))",
         fronted,
         text,
     )
