@@ -1824,7 +1824,8 @@ def _speaker(text: str, lexicon: Lexicon) -> str:
 _KEEP_WORDS = re.compile(
     r"\b(?:all|everything|everyone|everybody|each|every|both|either|neither|any|anything|anyone|"
     r"rest|other|others|another|one|ones|first|last|second|third|next|previous|same|that|this|"
-    r"those|these|it|them|then|him|her|me|us|you|none|nothing|nobody|no|not|or|and|nor|only|"
+    r"those|these|it|them|then|him|her|me|us|you|his|hers|theirs|mine|yours|ours|its|none|"
+    r"nothing|nobody|no|not|or|and|nor|only|"
     r"instead|except|without|twice|again|once|[0-9]+|two|three|four|five|six|ten|dozen|half)\b|"
     r"n't\b",
     _F,
