@@ -9,7 +9,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tree import tasks
+from hltl.grounding.update import ground_update
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import CELL, ROOT, assert_refused, tree
 from tests.grounding.helpers import assert_reads as assert_means
@@ -492,3 +495,21 @@ def test_how_more_people_ask(text: str, want: str, scene: Scene) -> None:
 )
 def test_near_forms_of_how_people_ask_are_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Bob the chips. Don't give him the apple.",
+        "Give Carol the cup, but do not give the apple to Bob",
+        "Not to Bob, the apple goes to Carol",
+    ],
+)
+def test_an_update_with_a_negated_command_beside_a_new_task_is_refused(text: str) -> None:
+    # without a running spec the negated command leaves the apple alone; in an update it could
+    # be cancelling the running apple for Bob, so it is refused instead of dropped
+    grounder = OfflineGrounder()
+    running = grounder.ground("Give Bob the apple", CELL).spec
+    with pytest.raises(GroundingError, match="cancel"):
+        ground_update(text, CELL, running, grounder)
+    assert tree(text) is not None
