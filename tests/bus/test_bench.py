@@ -23,7 +23,6 @@ def test_bench_bus_small() -> None:
     # and without the executor's hints: the same log, every step's commands in a query
     u = b.unhinted
     assert u is not None and u.same_logs == 1 and u.guessed == 0 and b.apart.guessed > 0
-    assert u.queries > b.apart.queries
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
