@@ -112,6 +112,8 @@ def test_a_wrong_guess_never_shows(loopback: Loopback, monkeypatch: pytest.Monke
     stats = run.node.stats
     assert stats.guessed > 0 and stats.guesses_kept == 0 and stats.undone > 0
     assert run.cell.stats.guessed == 0
+    # the executor knew each guess wrong from its own commands: it never waited for one
+    assert run.cell.stats.guessed_ahead == 0
     ends = {
         (r.handle, kind, r.end)
         for r in run.episode.records

@@ -260,6 +260,7 @@ class BusCell:
         self._guessed = 0
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
+        self._guess_next = False  # the stream's next reply starts with a guessed step
         self._streamed = 0  # ticks of the current stretch received so far
         self._batch = 0
         self._consumed = 0
@@ -510,6 +511,7 @@ class BusCell:
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     if keep and d.get("more"):
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
+                        self._guess_next = bool(d.get("guessed"))
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -557,17 +559,20 @@ class BusCell:
         queued = self._queued
         if not queued or self._guessed >= len(self._guesses):
             return False
+        guess = self._guesses[self._guessed]
+        if len(queued) != len(guess) or any(
+            c.op != "start" or c.reason or c.motion or (c.seq, c.handle, c.action) != g
+            for c, g in zip(queued, guess, strict=True)
+        ):
+            return False  # (known here: the node's guess, still to come, is not waited for)
         front = self._front()
         if front is None and self._stream is not None:  # the node streams the guess: wait
             self._pull()
             front = self._front()
         if front is None or not front.peek_guess():
             return False
-        guess, t = self._guesses[self._guessed], front.peek_time()
-        if len(queued) != len(guess) or any(
-            c.op != "start" or c.t != t or c.reason or c.motion or (c.seq, c.handle, c.action) != g
-            for c, g in zip(queued, guess, strict=True)
-        ):
+        t = front.peek_time()
+        if any(c.t != t for c in queued):
             return False
         tick = front.take()
         self._guessed += 1
@@ -709,7 +714,8 @@ class BusCell:
             self._ahead = []  # simulated without these commands: the node undoes them
         else:
             nxt = self._ahead_time()
-            if nxt is None and self._stream is not None:
+            if nxt is None and self._stream is not None and not self._guess_next:
+                # (no commands: a guessed step, next in the stream, is not waited for)
                 self._pull()
                 nxt = self._ahead_time()
         if nxt == t:  # the node already simulated this tick: no round trip
@@ -743,6 +749,8 @@ class BusCell:
                 )
                 if d.get("from") != self._streamed or ticks is None:
                     return
+                # (a guessed step's reply ends where the next guessed step would start)
+                self._guess_next = bool(d.get("guessed"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
                 if d.get("guessed"):

@@ -57,6 +57,8 @@ LATER = 8
 # PAUSE_SLICE) before its idle work: the cores go to the answer's way back and to the executor
 PAUSE = 0.002
 PAUSE_SLICE = 0.0001
+# after an answer that guessed steps follow, the node waits this long before simulating them
+GUESS_PAUSE = 0.002
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -425,13 +427,21 @@ class CellNode:
             try:
                 self._ahead_sent = False
                 stretch = self._on_step(query)
+                if stretch is not None and stretch[1].guess_due:
+                    # guessed steps follow: the answer's way back and the executor's work on
+                    # it get the cores first (the executor needs the next step only once it
+                    # has used the ticks it has)
+                    nxt = self._pause(GUESS_PAUSE)
+                    if nxt is not None:
+                        query = nxt
+                        continue
                 query = None if stretch is None else self._stream(query, *stretch)
                 if query is None and self._ahead_sent:
-                    query = self._pause()
+                    query = self._pause(PAUSE)
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
 
-    def _pause(self) -> Any:
+    def _pause(self, seconds: float) -> Any:
         """After an answer with ticks ahead (or the end of a streamed stretch), while the
         executor works on them, keep off the cores for up to
         ``PAUSE`` before the idle work (publishing to observers, the save for the next
@@ -441,7 +451,7 @@ class CellNode:
         returned at once: it is served without the idle work (the save is then made after its
         commands, as for a cell saved no other way). After an answer without ticks ahead the
         executor is soon back (the bare round trip: no pause)."""
-        deadline = time.perf_counter() + PAUSE
+        deadline = time.perf_counter() + seconds
         while time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
             query = self._steps.try_recv()
@@ -726,6 +736,8 @@ class CellNode:
             ep.batch = batch
             if (ahead.stream or s.guess_due) and not s.done:
                 answer["more"] = True
+                if s.guess_due:  # (what follows starts with a guessed step)
+                    answer["guessed"] = True
         return s, out
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
@@ -820,6 +832,9 @@ class CellNode:
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
         s.next, s.unavailable = clock["next"], clock["unavailable"]
+        # each guessed step gets a span of its own: the ticks after it go as further replies
+        # (off the executor's critical path), and a wrong guess is undone from its save
+        s.limit = len(b.ticks) + min(s.ahead.count, ep.span)
         return Tick(
             t=t,
             world=world,
