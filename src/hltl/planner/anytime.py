@@ -575,14 +575,21 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     return certify(problem, s, until).optimal
 
 
-def certify(problem: Problem, s: _Search, until: float) -> Certificate:
+def certify(
+    problem: Problem,
+    s: _Search,
+    until: float,
+    beside: Callable[[_Found | None], None] | None = None,
+) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
     bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
     the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
     relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal.
     Where none is proved, the shortest of those plans is handed back too (A* then looks only
-    for shorter ones)."""
+    for shorter ones). ``beside`` is called (with the prioritized plan) when the cheaper
+    model's schedule is no plan and the full model is to be asked: the caller may start A*
+    on the second core then, and the full model's levels are asked one at a time."""
     none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
@@ -599,7 +606,15 @@ def certify(problem: Problem, s: _Search, until: float) -> Certificate:
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
-    ticks, found = step_bound(problem, s, start, round(h0), None, until)
+    ticks, found = step_bound(
+        problem,
+        s,
+        start,
+        round(h0),
+        None,
+        until,
+        None if beside is None else lambda: beside(best),
+    )
     if found is not None:
         return Certificate(found, found)
     if best is None:
@@ -621,15 +636,22 @@ def certify(problem: Problem, s: _Search, until: float) -> Certificate:
 
 
 def step_bound(
-    problem: Problem, s: _Search, start: Node, floor: int, upper: int | None, until: float
+    problem: Problem,
+    s: _Search,
+    start: Node,
+    floor: int,
+    upper: int | None,
+    until: float,
+    before_full: Callable[[], None] | None = None,
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
     ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and a plan of exactly that makespan
     when the relaxation's schedule at the bound is one (or the schedule with sessions whole
     is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
-    bisect, without it they are shaved one by one (``schedule.schedule_bound``). (``floor``,
-    None) when the bound does not apply; it is never below ``floor``."""
+    bisect, without it they are shaved one by one (``schedule.schedule_bound``, which calls
+    ``before_full`` before it asks the full model). (``floor``, None) when the bound does not
+    apply; it is never below ``floor``."""
     if not (lns.available() and schedule.steps_applicable(problem)):
         return floor, None
     heur = s.heuristic
@@ -655,6 +677,7 @@ def step_bound(
         deadline=until,
         steps=True,
         accept=is_plan,
+        before_full=before_full,
     )
     if res.steps is None:
         return res.ticks, None
