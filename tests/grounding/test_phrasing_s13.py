@@ -513,3 +513,37 @@ def test_an_update_with_a_negated_command_beside_a_new_task_is_refused(text: str
     with pytest.raises(GroundingError, match="cancel"):
         ground_update(text, CELL, running, grounder)
     assert tree(text) is not None
+
+
+# -- blind12's wrong readings (fixed after its one measurement, which stands) ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Priya the stapler. Put the stapler in the box.", None, OFFICE),
+        ("Give Bob the cup and put it on the shelf", None, CELL),
+        ("Hand Lily the bib, and the bib goes on the high chair", None, NURSERY),
+        # placed first, then handed over, can be done as said
+        ("Put the cup on the shelf and give it to Bob", "cup@shelf & cup>B", CELL),
+        ("Give Bob the chips and put the cup on the shelf", "chips>B & cup@shelf", CELL),
+        # ', any plate' says again that any will do
+        (
+            "Stick a plate on the worktop, any plate",
+            "plate_white@counter | plate_blue@counter",
+            KITCHEN,
+        ),
+        ("Give Lena a plate, either plate", "plate_white>B | plate_blue>B", KITCHEN),
+        (
+            "Give Bob a mug, any mug, and Carol the apple",
+            "(mug_red>B | mug_blue>B) & apple>C",
+            CELL,
+        ),
+        ("Give Lena the blue plate, any plate", None, KITCHEN),
+    ],
+)
+def test_blind12_wrong_readings_as_families(text: str, want: str | None, scene: Scene) -> None:
+    if want is None:
+        assert_refused(text, scene)
+    else:
+        assert_means(text, want, scene)
