@@ -120,6 +120,13 @@ def _wrong(self: BusCell, steps: Sequence[Expected]) -> None:
     _expect(self, [Expected(s.actions + s.actions, s.at) for s in steps])
 
 
+def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make nodes send guessed steps in the answer itself, not as further replies: every guess
+    the node makes is then made before the executor can answer it (streamed, an executor that
+    knows a guess wrong may ask before the node has made it, on a fast machine always)."""
+    monkeypatch.setattr("hltl.bus.node.GUESS_STREAM", False)
+
+
 def wrong_hints(monkeypatch: pytest.MonkeyPatch) -> None:
     """Make every hint the executor gives a bus cell wrong (:func:`_wrong`)."""
     monkeypatch.setattr(BusCell, "expect", _wrong)

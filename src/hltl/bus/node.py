@@ -59,6 +59,9 @@ PAUSE = 0.002
 PAUSE_SLICE = 0.0001
 # after an answer that guessed steps follow, the node waits this long before simulating them
 GUESS_PAUSE = 0.002
+# guessed steps go as further replies after the answer (False: in the answer itself, every
+# guess made before the executor can answer it; slower, but what tests of wrong guesses need)
+GUESS_STREAM = True
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -730,7 +733,7 @@ class CellNode:
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
-            if ahead.stream or s.guess_due:
+            if ahead.stream or (s.guess_due and GUESS_STREAM):
                 break
         if out:
             ep.batch = batch
