@@ -9,7 +9,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tree import tasks
+from hltl.grounding.update import ground_update
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import CELL, ROOT, assert_refused, tree
 from tests.grounding.helpers import assert_reads as assert_means
@@ -159,7 +162,6 @@ def test_courtesy_the_speaker_purpose_and_time_change_nothing(
         ("Give Omar the spoon after he finishes his lunch", LAB),
         ("Give Mrs Khan the jug when she gets back", WARD),
         ("Give Bob the apple tomorrow", CELL),
-        # 'something to eat' is what is asked, not what it is for
     ],
 )
 def test_near_forms_of_words_that_change_nothing_are_refused(text: str, scene: Scene) -> None:
@@ -430,3 +432,118 @@ def test_a_negated_command_never_drops_a_task_of_the_request() -> None:
 )
 def test_but_one_of_them_after_the_place_leaves_it_out(text: str, want: str, scene: Scene) -> None:
     assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Hand the glue to Zoe or Noah, whoever wants it", "glue>C | glue>B", CLASSROOM),
+        ("Could you, um, give the, uh, banana to Emma?", "banana>C", LAB),
+        ("Is it possible for Emma to have the banana?", "banana>C", LAB),
+        ("Would it be ok if Emma had the banana?", "banana>C", LAB),
+        ("I was hoping Emma could have the banana", "banana>C", LAB),
+        ("Don't forget to give Bob the chips", "chips>B", CELL),
+        ("Make sure you don't give Bob the apple. Give Bob the chips.", "chips>B", CELL),
+        (
+            "Lily and Ava both want a block",
+            "(block_red>A & block_green>C) | (block_green>A & block_red>C)",
+            NURSERY,
+        ),
+        ("Sam's run out of pens, give him the black one", "pen_black>B", OFFICE),
+        ("Mr Novak asked for the lemon ages ago", "lemon>C", KITCHEN),
+        ("Bob is desperate for the chips", "chips>B", CELL),
+        ("The only thing Bob wants is the chips", "chips>B", CELL),
+        (
+            "give bob three things: the cup, the apple and the chips",
+            "cup>B & apple>B & chips>B",
+            CELL,
+        ),
+        ("bob gets 2 things, the cup and the apple", "cup>B & apple>B", CELL),
+        ("Bob needs a couple of things: the cup and the apple", "cup>B & apple>B", CELL),
+        (
+            "a mug for bob and one for carol",
+            "(mug_red>B & mug_blue>C) | (mug_blue>B & mug_red>C)",
+            CELL,
+        ),
+        ("I request you to give Tom the gloves", "gloves>B", DEPOT),
+        ("For Mr Lee, the jug please", "jug>B", WARD),
+        ("Mrs Khan is requesting the magazine", "magazine>C", WARD),
+        ("Could you be a darling and bring Ruth the thermometer", "thermometer>A", WARD),
+        ("Thermometer needs to get to Ruth asap", "thermometer>A", WARD),
+        ("The guest hasn't had his salt yet", "salt>C", KITCHEN),
+        ("Mia's on the phone but she needs the tape", "tape>A", DEPOT),
+    ],
+)
+def test_how_more_people_ask(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Hand the glue to Zoe, whoever wants it", CLASSROOM),  # no choice to leave to them
+        ("Priya and Sam both need the stapler", OFFICE),  # one stapler for two
+        ("Make sure you don't give Bob the chips. Give Bob the chips.", CELL),
+        ("Give Bob the apple tomorrow", CELL),
+        ("give bob three things: the cup and the apple", CELL),  # the count does not fit
+        ("a cup for bob and one for carol", CELL),  # one cup
+        ("The guest hasn't had the salt or the lemon yet", KITCHEN),  # neither: both, or one?
+        ("The guest hasn't had his salt yet, give him the lemon", KITCHEN),
+        # 'to eat' is what is asked (which of them is to eat?), not what it is for
+        ("Give Bob something to eat", CELL),
+    ],
+)
+def test_near_forms_of_how_people_ask_are_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Bob the chips. Don't give him the apple.",
+        "Give Carol the cup, but do not give the apple to Bob",
+        "Not to Bob, the apple goes to Carol",
+    ],
+)
+def test_an_update_with_a_negated_command_beside_a_new_task_is_refused(text: str) -> None:
+    # without a running spec the negated command leaves the apple alone; in an update it could
+    # be cancelling the running apple for Bob, so it is refused instead of dropped
+    grounder = OfflineGrounder()
+    running = grounder.ground("Give Bob the apple", CELL).spec
+    with pytest.raises(GroundingError, match="cancel"):
+        ground_update(text, CELL, running, grounder)
+    assert tree(text) is not None
+
+
+# -- blind12's wrong readings (fixed after its one measurement, which stands) ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Priya the stapler. Put the stapler in the box.", None, OFFICE),
+        ("Give Bob the cup and put it on the shelf", None, CELL),
+        ("Hand Lily the bib, and the bib goes on the high chair", None, NURSERY),
+        # placed first, then handed over, can be done as said
+        ("Put the cup on the shelf and give it to Bob", "cup@shelf & cup>B", CELL),
+        ("Give Bob the chips and put the cup on the shelf", "chips>B & cup@shelf", CELL),
+        # ', any plate' says again that any will do
+        (
+            "Stick a plate on the worktop, any plate",
+            "plate_white@counter | plate_blue@counter",
+            KITCHEN,
+        ),
+        ("Give Lena a plate, either plate", "plate_white>B | plate_blue>B", KITCHEN),
+        (
+            "Give Bob a mug, any mug, and Carol the apple",
+            "(mug_red>B | mug_blue>B) & apple>C",
+            CELL,
+        ),
+        ("Give Lena the blue plate, any plate", None, KITCHEN),
+    ],
+)
+def test_blind12_wrong_readings_as_families(text: str, want: str | None, scene: Scene) -> None:
+    if want is None:
+        assert_refused(text, scene)
+    else:
+        assert_means(text, want, scene)

@@ -53,7 +53,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 12 by another engineer and committed alone, never opened by the engineer who changed the
 # grounder before its one measurement at the end of session 12; tuned on in session 13), causes13
 # (session 13: fresh variants of each cause of blind11's refusals, written BEFORE the changes for
-# them and before running the grounder on them; measured once, then tuned on).
+# them and before running the grounder on them; measured once, then tuned on), blind12 (written
+# in session 13 by another engineer and committed alone, reviewed by a second engineer, never
+# opened by the engineer who changed the grounder before its one measurement at the end of
+# session 13; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -76,6 +79,7 @@ PARTS = (
     "causes12",
     "blind11",
     "causes13",
+    "blind12",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

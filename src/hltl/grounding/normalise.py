@@ -1565,9 +1565,9 @@ _COURTESY: tuple[tuple[str, str], ...] = (
     (r"(^|(?<=[.;!?])\s*)(?:whenever|when) (?:you'?re|you are) (?:ready|free)\s*[,.]?\s*", r"\1"),
     # "Be an angel and hand …": a request for a favour, not a name
     (
-        r"(^|(?<=[.;!?,])\s*)(?:so |and |please |now )?be (?:an? )?(?:angel|dear|star|love|"
-        r"darling|gem|sweetheart|sweetie|pal|treasure|doll|lamb|good (?:robot|lad|girl|boy))"
-        r"(?:\s+and\b|\s*[,:])\s*",
+        r"(^|(?<=[.;!?,])\s*)(?:(?:could|would|can|will) you |so |and |please |now )*be (?:an? )?("
+        r"?:angel|dear|star|love|darling|gem|sweetheart|sweetie|pal|treasure|doll|lamb|good (?:rob"
+        r"ot|lad|girl|boy))(?:\s+and\b|\s*[,:])\s*",
         r"\1",
     ),
     # "would you be ever so kind and pass …", "if you'd be so good, …"
@@ -1656,17 +1656,81 @@ _COURTESY: tuple[tuple[str, str], ...] = (
         r"]|,\s*(?:please|thanks)\b|$|\s+please\b))",
         "",
     ),
+    # "give the, uh, banana": a hesitation between commas
+    (r",\s*(?:um+|uh+|erm*|er|hmm+|ah+)\s*,", ""),
+    # "I was hoping Emma could have …", "Don't forget to give …": asking, reminding
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i was|i'm|i am|we were|we're|we are) (?:just |really )?hoping"
+        r"(?: that)? ",
+        r"\1",
+    ),
+    (r"(^|(?<=[.;!?,])\s*)(?:please )?(?:don't|do not) forget to ", r"\1"),
+    (r"\bmake sure (?:that )?(?:you )?(don't|do not|never)\b", r"\1"),
+    (r"\bmake sure not to\b", "don't"),
     # "… on the tray for us": the speaker's benefit, as "for me"
     (r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))", ""),
+)
+
+
+# requests asked as a possibility or a choice, rewritten with their names kept
+_ASKED: tuple[tuple[str, str], ...] = (
+    # "I request you to give …", "I'd ask you to …"
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i|we)(?:'d| would)? (?:request|ask|beg) (?:you |that you )?(?:to )?"
+        r"(?=(?:give|hand|pass|bring|take|put|place|move|fetch|send|get)\b)",
+        r"\1",
+    ),
+    # "Mrs Khan is requesting the magazine"
+    (r"\s*(?:\bis|'s|\bare|'re) (?:requesting|asking for)\b", " wants"),
+    # "The thermometer needs to get to Ruth": goes to her
+    (r"\b(?:needs?|has|have) to get (?:over )?to\b", "should go to"),
+    # "The guest hasn't had his salt yet": he wants it (the whole sentence)
+    (
+        r"^((?:the )?[\w ]+?) (?:still )?(?:hasn't|has not|hasn't yet|has not yet|still hasn't) "
+        r"(?:had|got|gotten|received) (?![^.!]*\b(?:or|nor|and|any|either|neither|all|both)\b)"
+        r"((?:his|her|their|the|a|an) [\w ]+?)(?: yet)?\s*[.!]?$",
+        r"\1 wants \2",
+    ),
+    # "Hand the glue to Zoe or Noah, whoever wants it": the choice the 'or' already gives
+    (
+        r"(\bor\b[^.;!?]*?),\s*whoever (?:wants|needs|likes|would like|prefers) (?:it|them|one)\b",
+        r"\1",
+    ),
+    # "Is it possible for Emma to have …", "Would it be ok if Emma had …": may she have it
+    (
+        r"(^|(?<=[.;!?])\s*)(?:is it|would it be|will it be) (?:at all )?(?:possible|ok|okay|"
+        r"alright|all right|fine) (?:for|if) ((?:the )?[\w ]+?) (?:to have|to get|had|got|could "
+        r"have|could get|has|gets) ",
+        r"\1could \2 have ",
+    ),
+    # "Priya and Sam both need a pen": each of them one
+    (
+        r"\bboth (need|want|would like|get|should get|could use)s? (a|an|one) ([a-z]+(?: [a-z]+)?)"
+        r"(?=\s*(?:[.,;!?]|$|please))(?!,?\s*so one each)",
+        r"\1 \2 \3 each",
+    ),
 )
 
 
 def _courtesy(text: str, lexicon: Lexicon) -> str:
     """Courtesy said around a request: favours asked ('be an angel and'), 'if you wouldn't
     mind', 'no rush, but', thanks said every way, 'for us'. Taken off only where it names
-    nothing in the scene."""
+    nothing in the scene. Then requests asked as a possibility ('Is it possible for Emma to have
+    …'), a choice left to them ('…, whoever wants it') or shared ('both need a pen')."""
     for pattern, repl in _COURTESY:
         text = _drop(pattern, text, lexicon, repl)
+    for pattern, repl in _ASKED:
+        text = _sub(pattern, repl, text)
+    # "Mia's on the phone but she needs the tape": a remark naming no object, then the want
+    text = _sub(
+        r"^([^,;.!?]+?) but (he|she|they) (needs|wants|would like|'d like|could use)\b",
+        lambda m: (
+            f"{m.group(1)}. {m.group(2)} {m.group(3)}"
+            if not _ids(m.group(1), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
     return " ".join(text.split())
 
 
@@ -1760,7 +1824,8 @@ def _speaker(text: str, lexicon: Lexicon) -> str:
 _KEEP_WORDS = re.compile(
     r"\b(?:all|everything|everyone|everybody|each|every|both|either|neither|any|anything|anyone|"
     r"rest|other|others|another|one|ones|first|last|second|third|next|previous|same|that|this|"
-    r"those|these|it|them|then|him|her|me|us|you|none|nothing|nobody|no|not|or|and|nor|only|"
+    r"those|these|it|them|then|him|her|me|us|you|his|hers|theirs|mine|yours|ours|its|none|"
+    r"nothing|nobody|no|not|or|and|nor|only|"
     r"instead|except|without|twice|again|once|[0-9]+|two|three|four|five|six|ten|dozen|half)\b|"
     r"n't\b",
     _F,
@@ -1853,7 +1918,8 @@ def _wants(text: str, lexicon: Lexicon) -> str:
         return m.group(0)
 
     return _sub(
-        r"(^|(?<=[.;!?,])\s*)for ((?:the )?[\w ]+?) (?:the |a |an )([\w ]+?)(?=\s*(?:[,.;!?]|$))",
+        r"(^|(?<=[.;!?,])\s*)for ((?:the )?[\w ]+?),? (?:the |a |an )([\w ]+?)(?=\s*(?:[,.;!?]|$|p"
+        r"lease\b))",
         fronted,
         text,
     )
@@ -1945,6 +2011,16 @@ def _choice(text: str, lexicon: Lexicon) -> str:
         "",
         text,
     )
+    # "a mug for Bob and one for Carol": 'one' is another of that kind
+    text = _sub(
+        r"\b(a|an) ([a-z]+) (for|to) ([\w ]+?),? and one (for|to) ",
+        lambda m: (
+            f"{m.group(1)} {m.group(2)} {m.group(3)} {m.group(4)} and a {m.group(2)} {m.group(5)} "
+            if _only_kind(m.group(2), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
     text = _sub(
         r",\s*any (?:one )?(?:except|but|apart from|other than|besides|bar) (?=the )",
         " except ",
@@ -1954,8 +2030,9 @@ def _choice(text: str, lexicon: Lexicon) -> str:
     def listed(m: re.Match[str]) -> str:
         items = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(2)) if x]
         ids = [_ids(x, lexicon, "object") for x in items]
+        count = int(m.group(1)) if m.group(1).isdigit() else _COUNTS[m.group(1).lower()]
         if (
-            len(items) == _COUNTS[m.group(1).lower()]
+            len(items) == count
             and all(
                 len(x) == 1 and _only_kind(y.removeprefix("the "), lexicon, "object")
                 for x, y in zip(ids, items, strict=True)
@@ -1965,9 +2042,10 @@ def _choice(text: str, lexicon: Lexicon) -> str:
             return m.group(2)
         return m.group(0)
 
+    text = _sub(r"\ba couple of (?=(?:things|items|objects)\b)", "two ", text)
     text = _sub(
-        r"\b(one|two|three|four|five|six) (?:things?|items?|objects?),\s+((?:the |a |an )[a-z]"
-        r"[\w ]*?(?:(?:,\s*|\s+and\s+)(?:the |a |an )[a-z][\w ]*?)*)(?=,|\s*[.;!?]|$)",
+        r"\b(one|two|three|four|five|six|[1-6]) (?:things?|items?|objects?)\s*[,:]\s*((?:the |a |a"
+        r"n )[a-z][\w ]*?(?:(?:,\s*|\s+and\s+)(?:the |a |an )[a-z][\w ]*?)*)(?=,|\s*[.;!?]|$)",
         listed,
         text,
     )

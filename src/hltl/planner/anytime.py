@@ -234,7 +234,13 @@ class _Router:
         """Earliest step at which the goal's atom happens, routing its object around the
         reservations (``busy``: per step the robots reserved in it, a bit mask; ``forever``: per
         robot the step from which it is taken): (actions by step, (robot, step) holds, final
-        step, robot that keeps the object afterwards or None)."""
+        step, robot that keeps the object afterwards or None).
+
+        Of the routes that make the atom happen at that step, the one that takes the fewest
+        robot-steps: an instance counts each of its robots, a step the object waits in a hand
+        counts its holder. Without that, a route would as soon move its object through idle
+        robots as let it wait, and those robots are then busy for the goals routed after it
+        (docs/planner.md, "Anytime mode")."""
         p = self.p
         holder = p.code_holder
         alive = self.alive[gi]
@@ -248,15 +254,16 @@ class _Router:
         horizon = max(busy, default=0) + 4 * len(p.locs) + earliest
         horizon += 8
         back: dict[tuple[int, int], tuple[int, Instance | None]] = {}
-        frontier = [start]
+        # per place the object can be in at step t: the fewest robot-steps that bring it there
+        frontier = {start: 0}
         for t in range(horizon):
             while k < len(taken) and taken[k][0] <= t:
                 gone |= taken[k][1]
                 k += 1
             blocked = busy.get(t, 0) | gone
-            nxt: list[int] = []
-            seen: set[int] = set()
-            for loc in frontier:
+            nxt: dict[int, int] = {}
+            done: tuple[int, int, Instance] | None = None  # (robot-steps, place, last instance)
+            for loc, cost in frontier.items():
                 r_hold = holder.get(loc)
                 if r_hold is not None and blocked >> r_hold & 1:
                     continue  # the holder is needed elsewhere in this step: impossible state
@@ -266,17 +273,21 @@ class _Router:
                         continue
                     if inst.executors & blocked:
                         continue
+                    c = cost + inst.executors.bit_count()
                     reached = fired if holds_at is None else holds_at[inst.post]
                     if reached and t >= earliest:
-                        return self._unwind(back, start, loc, t, inst)
-                    if inst.post not in seen:
-                        seen.add(inst.post)
+                        if done is None or c < done[0]:
+                            done = (c, loc, inst)
+                        continue
+                    if c < nxt.get(inst.post, math.inf):
+                        nxt[inst.post] = c
                         back[(inst.post, t + 1)] = (loc, inst)
-                        nxt.append(inst.post)
-                if loc not in seen:  # wait
-                    seen.add(loc)
+                c = cost + (r_hold is not None)  # wait (in a hand: its holder's step)
+                if c < nxt.get(loc, math.inf):
+                    nxt[loc] = c
                     back[(loc, t + 1)] = (loc, None)
-                    nxt.append(loc)
+            if done is not None:
+                return self._unwind(back, start, done[1], t, done[2])
             frontier = nxt
         return None
 
