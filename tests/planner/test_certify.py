@@ -64,6 +64,8 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
 
     monkeypatch.setattr(anytime, "_jointly", never)
     monkeypatch.setattr(anytime, "step_bound", never)
+    # nor need CP-SAT be imported (0.5-1.5 s in a fresh process)
+    monkeypatch.setattr(anytime.lns, "available", never)
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
     assert anytime.certified(problem, _Search(problem), math.inf) is None

@@ -608,12 +608,15 @@ def certify(
         return none
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
         return none
-    # in this order: importing CP-SAT (and pandas with it) costs a small plan its start-up
-    if not (schedule.steps_applicable(problem) and lns.available()):
+    if not schedule.steps_applicable(problem):
         return none
-    h0 = heur(start)
+    h0 = heur(start)  # (A* needs it too: memoised)
     if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
         return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
+    # last: importing CP-SAT (and pandas with it) takes 0.5-1.5 s, which a cell left to A*
+    # need not pay
+    if not lns.available():
+        return none
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
