@@ -2,16 +2,19 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import partial
 from typing import Any
+
+import pytest
 
 from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.node import CellNode
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, open_session
+from hltl.execution.drivers import Expected
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import Episode, run_episode
 from hltl.world.scene import Scene
@@ -56,6 +59,7 @@ class Loopback:
         factory: Any = None,
         ahead: int = 64,
         stream: bool | None = None,
+        guess: bool = True,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -80,6 +84,7 @@ class Loopback:
                     opened=opened,
                     ahead=ahead,
                     stream=stream,
+                    guess=guess,
                 ),
                 on_record=on_record,
                 **episode,
@@ -104,3 +109,17 @@ class Loopback:
         for s in (self._exec_session, self._node_session):
             if not s.is_closed():
                 s.close()
+
+
+_expect = BusCell.expect
+
+
+def _wrong(self: BusCell, steps: Sequence[Expected]) -> None:
+    """A hint that is always wrong: every action twice (the second start fails at once on the
+    node, its robot busy), so the executor's commands never match it."""
+    _expect(self, [Expected(s.actions + s.actions, s.at) for s in steps])
+
+
+def wrong_hints(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make every hint the executor gives a bus cell wrong (:func:`_wrong`)."""
+    monkeypatch.setattr(BusCell, "expect", _wrong)

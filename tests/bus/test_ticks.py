@@ -73,6 +73,7 @@ def ticks(draw: st.DrawFn) -> list[Tick]:
                 records=tuple(
                     draw(st.lists(st.fixed_dictionaries({"kind": names, "t": floats}), max_size=2))
                 ),
+                guess=draw(st.booleans()),
             )
         )
         del i
@@ -105,6 +106,7 @@ def test_ticks_cross_the_bus_bit_for_bit(stretch: list[Tick]) -> None:
     assert d == answer and reader is not None and reader.size == len(stretch)
     for want in stretch:
         assert reader.peek_time() == want.t
+        assert reader.peek_guess() is want.guess  # (a guessed step's starts, not a tick)
         assert_same_tick(reader.take(), want)
     assert reader.peek_time() is None
     with pytest.raises(BusError, match="no tick left"):

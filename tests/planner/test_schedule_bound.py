@@ -357,3 +357,40 @@ def test_skipping_levels_finds_the_same_bound(
         assert max(asked[math.inf]) > best  # it went past the optimum and came back
     else:
         assert not got[0.0][1] or got[0.0][0] == upper * schedule.time_unit(problem)
+
+
+@pytest.mark.parametrize(
+    ("layout", "n", "seed"), [("grid", 4, 1), ("random", 4, 1), ("line", 4, 0)]
+)
+@pytest.mark.parametrize("weak", [True, False])
+def test_asking_two_levels_at_once_changes_no_answer(
+    layout: str, n: int, seed: int, weak: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the climb asks WORKERS levels at once and stops a question whose answer another one
+    # implies: the bound, whether it is solved, and the schedule at the bound are those of
+    # asking one level at a time (and of asking at once again)
+    _, problem, s, node, tgts = _at_start(layout, n, seed)
+    graph = s.heuristic.graph
+    # a few levels below the start bound, so that the climbs ask several rounds
+    level = max(0, round(s.heuristic(node)) // schedule.time_unit(problem) - 4)
+    got: dict[tuple[int, bool, int], schedule.ScheduleBound] = {}
+    for workers, run in ((1, 0), (2, 0), (2, 1)):
+        monkeypatch.setattr(schedule, "WORKERS", workers)
+        for whole_first in (False, True) if not weak else (False,):
+            got[workers, whole_first, run] = schedule._shave(
+                problem,
+                graph,
+                node,
+                tgts,
+                level,
+                None,
+                time.perf_counter() + DEADLINE_S,
+                0,
+                0,
+                True,
+                weak,
+                whole_first,
+            )
+    for (_, whole_first, _), res in got.items():
+        assert res == got[1, whole_first, 0]
+        assert res.solved and res.steps is not None

@@ -51,7 +51,12 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # variants of each cause of blind10's misses and of its wrong reading, written after the changes
 # for them and measured once before the fixes it motivated; a tuning part), blind11 (written in
 # session 12 by another engineer and committed alone, never opened by the engineer who changed the
-# grounder before its one measurement at the end of session 12; tests do not assert it).
+# grounder before its one measurement at the end of session 12; tuned on in session 13), causes13
+# (session 13: fresh variants of each cause of blind11's refusals, written BEFORE the changes for
+# them and before running the grounder on them; measured once, then tuned on), blind12 (written
+# in session 13 by another engineer and committed alone, reviewed by a second engineer, never
+# opened by the engineer who changed the grounder before its one measurement at the end of
+# session 13; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -73,6 +78,8 @@ PARTS = (
     "blind10",
     "causes12",
     "blind11",
+    "causes13",
+    "blind12",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -27,7 +27,7 @@ from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
-from hltl.execution.drivers import ActionState, ActionStatus, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Expected, Handle
 from hltl.execution.log import EventLog, LogRecord, RobotDown
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
@@ -93,7 +93,11 @@ class DriverStats:
     queries: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
     streamed: int = 0  # ticks received as further replies (the node streaming a stretch)
+    # ticks and guessed steps received as further replies after a step's end (the node ran on
+    # with the executor's hint)
+    guessed_ahead: int = 0
     waited: float = 0.0  # wall seconds waiting for the node's answers
+    guessed: int = 0  # commands the node had started on the executor's hint (no round trip)
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -177,6 +181,10 @@ class BusCell:
             (``False``: the answer carries the whole stretch; ``None``, the default: the node
             chooses by what its ticks cost, see :func:`hltl.bus.node.streams`).
         perceived: a perception node's observations to fuse into what the executor sees.
+        guess: send the executor's hint (:meth:`expect`: its plan's next steps) with each step
+            request, for the node to start each step when the one before ends and simulate
+            on, so that one answer carries several steps (``False``: the node stops at each
+            step's end, and the executor's next commands cost a round trip).
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -203,8 +211,10 @@ class BusCell:
         ahead: int = 64,
         perceived: PerceptionClient | None = None,
         stream: bool | None = None,
+        guess: bool = True,
     ) -> None:
         self.session = session
+        self.guess = guess
         self.perceived = perceived
         self.scene = scene
         self.log = log
@@ -236,9 +246,21 @@ class BusCell:
         self._unavailable: frozenset[str] = frozenset()
         self._obs: WorldState | None = None
         # ticks the node simulated ahead, assuming no command (see CellNode._look_ahead)
-        self._ahead_req = {"count": ahead, "tick": tick, "max_time": max_time, "stream": stream}
+        self._ahead_req: dict[str, Any] = {
+            "count": ahead,
+            "tick": tick,
+            "max_time": max_time,
+            "stream": stream,
+        }
         self._ahead: list[TickReader] = []  # their blocks, read as the loop consumes them
+        # the executor's hint (its plan's next steps), sent with every step request; the
+        # commands the node guessed from the last one sent, and how many of them were taken
+        self._hint: tuple[tuple[Action, ...], ...] = ()
+        self._guesses: list[list[tuple[int, int, Action]]] = []
+        self._guessed = 0
+        self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
+        self._guess_next = False  # the stream's next reply starts with a guessed step
         self._streamed = 0  # ticks of the current stretch received so far
         self._batch = 0
         self._consumed = 0
@@ -327,7 +349,14 @@ class BusCell:
             with contextlib.suppress(BusError):
                 self._ready()
         if not self._dead:
-            self._ask(self.keys.sim_step, {"episode": self.episode, "end": True}, retries=0)
+            # (with the ticks ahead it used: the node commits them, a guessed step's starts too)
+            end = {
+                "episode": self.episode,
+                "end": True,
+                "batch": self._batch,
+                "consumed": self._consumed,
+            }
+            self._ask(self.keys.sim_step, end, retries=0)
 
     # -- messages in -------------------------------------------------------------------------------
 
@@ -482,6 +511,7 @@ class BusCell:
                     self.stats.round_trips.append(time.perf_counter() - t0)
                     if keep and d.get("more"):
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
+                        self._guess_next = bool(d.get("guessed"))
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -503,14 +533,54 @@ class BusCell:
         self._batch = int(d.get("step", 0))
         self._consumed = 0
 
-    def _ahead_time(self) -> float | None:
-        """The time of the next tick the node simulated ahead (``None``: none left)."""
+    def _front(self) -> TickReader | None:
+        """The block whose next item the loop reads next (``None``: nothing ahead)."""
         while self._ahead:
-            t = self._ahead[0].peek_time()
-            if t is not None:
-                return t
+            if self._ahead[0].left:
+                return self._ahead[0]
             self._ahead.pop(0)
         return None
+
+    def _ahead_time(self) -> float | None:
+        """The time of the next tick the node simulated ahead (``None``: none left, or the
+        next item is a guessed step that no commands of the executor matched)."""
+        front = self._front()
+        if front is None or front.peek_guess():
+            return None
+        return front.peek_time()
+
+    def _guessed_right(self) -> bool:
+        """Whether the commands queued since the last tick are exactly the step the node
+        guessed from the hint, next in the ticks ahead: the same starts (numbers, handles,
+        actions) at that tick's time, nothing else. Then the node's answer to them is taken
+        from there (the starts' acknowledgements, the clock after them) and the ticks after
+        them are the loop's next, without a round trip. Otherwise the guess and every tick
+        after it are dropped (the caller asks the node, which undoes them)."""
+        queued = self._queued
+        if not queued or self._guessed >= len(self._guesses):
+            return False
+        guess = self._guesses[self._guessed]
+        if len(queued) != len(guess) or any(
+            c.op != "start" or c.reason or c.motion or (c.seq, c.handle, c.action) != g
+            for c, g in zip(queued, guess, strict=True)
+        ):
+            return False  # (known here: the node's guess, still to come, is not waited for)
+        front = self._front()
+        if front is None and self._stream is not None:  # the node streams the guess: wait
+            self._pull()
+            front = self._front()
+        if front is None or not front.peek_guess():
+            return False
+        t = front.peek_time()
+        if any(c.t != t for c in queued):
+            return False
+        tick = front.take()
+        self._guessed += 1
+        self._consumed += 1
+        self.stats.guessed += len(queued)
+        self._queued = []
+        self._tick_clock(tick)  # (the starts' acknowledgements, the clock after them)
+        return True
 
     def _absorb(self, d: dict[str, Any]) -> None:
         """Take in one tick: the cell's log records, the observation, the actions' reports, the
@@ -534,6 +604,10 @@ class BusCell:
             self.log.emit(LogRecord.from_json(rec, "the cell's log record"))
         self._obs = tick.world
         self._instructions.extend(tick.instructions)
+        self._tick_clock(tick)
+
+    def _tick_clock(self, tick: Tick) -> None:
+        """Take in a tick's reports and clock."""
         if tick.reports:
             with self._cond:
                 for rep in tick.reports:
@@ -635,11 +709,13 @@ class BusCell:
     def _follow(self, t: float) -> None:
         """Bring what the executor knows of the cell to time ``t``: here the node steps to it
         (or already did, ahead of the loop) and every report up to then is in."""
-        if self._dirty:
+        if self._dirty and not self._guessed_right():
             nxt = None
+            self._ahead = []  # simulated without these commands: the node undoes them
         else:
             nxt = self._ahead_time()
-            if nxt is None and self._stream is not None:
+            if nxt is None and self._stream is not None and not self._guess_next:
+                # (no commands: a guessed step, next in the stream, is not waited for)
                 self._pull()
                 nxt = self._ahead_time()
         if nxt == t:  # the node already simulated this tick: no round trip
@@ -673,9 +749,14 @@ class BusCell:
                 )
                 if d.get("from") != self._streamed or ticks is None:
                     return
+                # (a guessed step's reply ends where the next guessed step would start)
+                self._guess_next = bool(d.get("guessed"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
-                self.stats.streamed += ticks.size
+                if d.get("guessed"):
+                    self.stats.guessed_ahead += ticks.size
+                else:
+                    self.stats.streamed += ticks.size
                 if not d.get("more"):
                     return
             self._stream = stream
@@ -687,14 +768,33 @@ class BusCell:
     def _request(self, t: float, peek: bool = False) -> dict[str, Any] | None:
         """Step the node to ``t`` (or, with ``peek``, ask for its clock after commands), with
         the commands queued since the last request; both say how many look-ahead ticks were
-        used and ask for the next ones."""
+        used and ask for the next ones, with the executor's hint (:meth:`expect`) as the
+        commands the node may guess: numbered as they would be, their times left to it."""
+        ahead = self._ahead_req
+        guesses: list[list[tuple[int, int, Action]]] = []
+        if self._hint and self.guess and not self._motion:
+            h, seq = self._next_handle, self._seq
+            for actions in self._hint:
+                step = []
+                for a in actions:
+                    seq += 1
+                    step.append((seq, h, a))
+                    h += 1
+                guesses.append(step)
+            ahead = {
+                **ahead,
+                "next": [
+                    [{"seq": q, "handle": h, "action": a.to_dict()} for q, h, a in step]
+                    for step in guesses
+                ],
+            }
         req: dict[str, Any] = {
             "episode": self.episode,
             "step": self._step + 1,
             "t": t,
             "batch": self._batch,
             "consumed": self._consumed,
-            "ahead": self._ahead_req,
+            "ahead": ahead,
         }
         if peek:
             req["peek"] = True
@@ -705,10 +805,15 @@ class BusCell:
         if d is not None:
             self._step += 1
             self._queued = []
+            self._guesses, self._guessed = guesses, 0
         return d
 
     def _flush(self) -> None:
-        """Ask for the clock after commands, sending the queued ones."""
+        """Ask for the clock after commands, sending the queued ones (unless they are the
+        node's guess, next in the ticks ahead: then no round trip)."""
+        if self._guessed_right():
+            return
+        self._ahead = []  # simulated without these commands: the node undoes them
         sent = bool(self._queued)
         d = self._request(self.now, peek=True)
         if d is None:
@@ -750,6 +855,13 @@ class BusCell:
 
     # -- the robots (RobotDriver) ------------------------------------------------------------------
 
+    def expect(self, steps: Sequence[Expected]) -> None:
+        """The executor's hint (:class:`~hltl.execution.drivers.Lookahead`): sent with the next
+        step requests, for the node to start each step, numbered as the executor would, when
+        the one before ends with every action done, and to simulate on (one answer carries
+        several steps; a wrong guess costs the round trip it would have cost anyway)."""
+        self._hint = tuple(s.actions for s in steps)
+
     def unavailable(self, t: float) -> frozenset[str]:
         self._ready()
         self._confirm()
@@ -790,11 +902,12 @@ class BusCell:
                     sends.append(
                         (self.keys.trajectory(traj.robot), encode_trajectory(traj, t), meta)
                     )
-        self._dirty = True
-        self._ahead = []  # simulated without this command: the node undoes them
+        self._dirty = True  # (the ticks ahead are dropped unless this is the node's guess)
         if not sends and self._defer:
             self._queue("start", handle, t)
             return handle
+        self._motion = bool(sends)
+        self._ahead = []  # simulated without this command: the node undoes them
         if self._queued:  # the trajectories' start goes on its own: what came first, first
             self._flush()
         if not self._command(
@@ -815,10 +928,13 @@ class BusCell:
             self._flush()
         with self._cond:
             st = self._status(hid)
-            if st is not None and st.terminal:
-                return st
             down = [r for r in handle.action.robots if r in self._down]
+        if st is not None and st.terminal:
+            if st.state is not ActionState.DONE:
+                self._hint = ()  # the executor replans: its plan's next steps are off
+            return st
         if down:
+            self._hint = ()
             r = down[0]
             status = ActionStatus(
                 ActionState.FAILED,
@@ -836,6 +952,7 @@ class BusCell:
             return
         self._dirty = True
         self._ahead = []
+        self._hint = ()  # the executor replans: its plan's next steps are off
         if self._defer:
             self._queue("halt", handle, t, reason)
             return
@@ -932,6 +1049,7 @@ def bus_cell(
     perceived: PerceptionClient | None = None,
     make_cell: Callable[..., BusCell] | None = None,
     stream: bool | None = None,
+    guess: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -962,6 +1080,7 @@ def bus_cell(
             ahead=ahead,
             perceived=perceived,
             stream=stream,
+            guess=guess,
         )
         if opened is not None:
             opened.append(c)

@@ -39,6 +39,7 @@ from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.driver import MujocoSimulator
+from hltl.skills.library import Action
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
 
@@ -56,6 +57,8 @@ LATER = 8
 # PAUSE_SLICE) before its idle work: the cores go to the answer's way back and to the executor
 PAUSE = 0.002
 PAUSE_SLICE = 0.0001
+# after an answer that guessed steps follow, the node waits this long before simulating them
+GUESS_PAUSE = 0.002
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -87,6 +90,8 @@ class NodeStats:
     replayed: int = 0  # ticks simulated again after an undo (to where the command came)
     cuts: int = 0  # stretches a command cut (each undone, then replayed)
     based: int = 0  # stretches after commands undone with the save made while idle (no save)
+    guessed: int = 0  # steps started ahead on the executor's hint
+    guesses_kept: int = 0  # of those, steps the executor did command so (the rest undone)
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -165,6 +170,9 @@ class _Ahead:
     # answer with the first tick, stream the rest as further replies (None: as the cell's
     # ticks cost, see streams)
     stream: bool | None = False
+    # the executor's hint: the steps it will start next if nothing happens, each as its
+    # starts (command number, handle, action), in order
+    guesses: tuple[tuple[_Start, ...], ...] = ()
 
     @classmethod
     def parse(cls, d: Any) -> _Ahead | None:
@@ -174,17 +182,28 @@ class _Ahead:
             count, tick = min(int(d["count"]), MAX_AHEAD), float(d["tick"])
             mt = d.get("max_time")
             max_time = math.inf if mt is None else float(mt)
-        except (KeyError, TypeError, ValueError) as exc:
+            guesses = tuple(
+                tuple(
+                    (int(c["seq"]), int(c["handle"]), Action.from_dict(c["action"])) for c in step
+                )
+                for step in d.get("next", ())
+            )
+        except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed look-ahead request: {exc}") from None
         if count <= 0 or not (math.isfinite(tick) and tick > 0):
             return None
         stream = d.get("stream")
-        return cls(count, tick, max_time, stream if isinstance(stream, bool) else None)
+        return cls(count, tick, max_time, stream if isinstance(stream, bool) else None, guesses)
+
+
+# one start of a guessed step: its command number, the executor's handle, the action
+_Start = tuple[int, int, Action]
 
 
 # a tick simulated: its time, the observation, the actions' reports, and the observation as
-# JSON (world_to_wire) when an answer carried it so (None: ticks ahead travel in binary)
-_Ticked = tuple[float, WorldState, list["Report"], dict[str, Any] | None]
+# JSON (world_to_wire) when an answer carried it so (None: ticks ahead travel in binary); a
+# guessed step's starts in a batch have no observation (their reports acknowledge them)
+_Ticked = tuple[float, WorldState | None, list["Report"], dict[str, Any] | None]
 
 
 @dataclass(slots=True)
@@ -207,6 +226,8 @@ class _Batch:
     marks: list[tuple[int, Callable[[], None], int, dict[int, Report]]] = field(
         default_factory=list
     )
+    # the guessed steps started in the batch, by their index in ``ticks``
+    started: dict[int, tuple[_Start, ...]] = field(default_factory=dict)
 
 
 @dataclass(slots=True)
@@ -220,6 +241,9 @@ class _Stretch:
     unavailable: list[str]
     limit: int
     done: bool = False
+    # the executor's hint still to guess, and whether the next item is its first step's starts
+    guesses: list[tuple[_Start, ...]] = field(default_factory=list)
+    guess_due: bool = False
 
 
 class CellNode:
@@ -403,13 +427,21 @@ class CellNode:
             try:
                 self._ahead_sent = False
                 stretch = self._on_step(query)
+                if stretch is not None and stretch[1].guess_due:
+                    # guessed steps follow: the answer's way back and the executor's work on
+                    # it get the cores first (the executor needs the next step only once it
+                    # has used the ticks it has)
+                    nxt = self._pause(GUESS_PAUSE)
+                    if nxt is not None:
+                        query = nxt
+                        continue
                 query = None if stretch is None else self._stream(query, *stretch)
                 if query is None and self._ahead_sent:
-                    query = self._pause()
+                    query = self._pause(PAUSE)
             except Exception:  # (a refusal is answered as such: anything else goes unanswered,
                 query = None  # and the executor asks again or gives up, as with a lost answer)
 
-    def _pause(self) -> Any:
+    def _pause(self, seconds: float) -> Any:
         """After an answer with ticks ahead (or the end of a streamed stretch), while the
         executor works on them, keep off the cores for up to
         ``PAUSE`` before the idle work (publishing to observers, the save for the next
@@ -419,7 +451,7 @@ class CellNode:
         returned at once: it is served without the idle work (the save is then made after its
         commands, as for a cell saved no other way). After an answer without ticks ahead the
         executor is soon back (the bare round trip: no pause)."""
-        deadline = time.perf_counter() + PAUSE
+        deadline = time.perf_counter() + seconds
         while time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
             query = self._steps.try_recv()
@@ -451,9 +483,13 @@ class CellNode:
                 if tick is not None:
                     ticks.append(tick)
                 more = tick is not None and not s.done
-                if len(ticks) < size and more:
+                # (past a step's end on a guess: the next step, up to its own end, in one reply)
+                if more and (len(ticks) < size if s.ahead.stream else not s.guess_due):
                     continue
-                chunk = encode_answer({"from": first, "more": more}, ticks)
+                head: dict[str, Any] = {"from": first, "more": more}
+                if not s.ahead.stream:
+                    head["guessed"] = True  # (a guessed step and its ticks, not a stream)
+                chunk = encode_answer(head, ticks)
                 try:
                     self._reply_bytes(query, chunk)
                 except Exception:  # the query timed out at the executor: it asks again
@@ -474,6 +510,9 @@ class CellNode:
             ep = self._episode(d.get("episode"))
             if d.get("end"):
                 self._publish_later()  # observers get the whole episode before its end
+                if ep.batch is not None and ep.batch.id == d.get("batch"):
+                    # the ticks ahead the executor used (a guessed step's starts counted)
+                    self._publish_ticks(ep, self._commit(ep, int(d.get("consumed", 0))))
                 if ep.clock is not None:
                     ep.clock.stop.set()
                 self._ep = None
@@ -670,6 +709,11 @@ class CellNode:
         a binary block (:func:`hltl.bus.ticks.encode_answer`), and wait in a batch for the
         executor to say how many it used. Asked to stream, only the first tick is returned
         (``answer["more"]``: the stretch, returned, goes on).
+        With the executor's hint (``ahead.guesses``: its plan's next steps) a stretch that is
+        not streamed runs on past a step that ends with every action done: the node starts
+        the hinted step then (:meth:`_guess`) and simulates on; the answer goes at the first
+        such step's end (``answer["more"]``), and each further step, up to its own end, follows
+        as a further reply (:meth:`_stream`) while the executor works on what it has.
         Only cells whose state can be saved and restored (the discrete-event simulator, the
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
         puts the cell back to now (else it is saved before the first tick)."""
@@ -681,15 +725,19 @@ class CellNode:
         s = _Stretch(
             batch, ahead, t, answer["next"], answer["unavailable"], min(ahead.count, ep.span)
         )
+        if not ahead.stream:  # (a streamed stretch is never run past a step's end)
+            s.guesses = list(ahead.guesses)
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
-            if ahead.stream:
+            if ahead.stream or s.guess_due:
                 break
         if out:
             ep.batch = batch
-            if ahead.stream and not s.done:
+            if (ahead.stream or s.guess_due) and not s.done:
                 answer["more"] = True
+                if s.guess_due:  # (what follows starts with a guessed step)
+                    answer["guessed"] = True
         return s, out
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
@@ -697,6 +745,12 @@ class CellNode:
         on from the batch's, not committed until the executor says so. The simulator is saved
         before the first one."""
         b, ahead = s.batch, s.ahead
+        if s.guess_due:
+            s.guess_due = False
+            if len(b.ticks) < s.limit:
+                return self._guess(ep, s)
+            s.done = True
+            return None
         due = math.inf if s.next is None else max(s.t, float(s.next))
         t_next = min(s.t + ahead.tick, due, ahead.max_time)
         if s.done or len(b.ticks) >= s.limit or not t_next > s.t:
@@ -725,20 +779,96 @@ class CellNode:
                 records=tuple(self._flush()),
             )
         except BaseException:  # the cell failed: back to before the stretch, none of it kept
+            self._forget(ep, b, 0)
             ep.version += 1
             b.restore()  # (set above)
             raise
         finally:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
-        s.done = (
-            _may_act(reports, b.latest)
-            or list(tick.unavailable) != s.unavailable
-            or t_next >= ahead.max_time - 1e-9
-        )
+        steady = list(tick.unavailable) == s.unavailable and t_next < ahead.max_time - 1e-9
+        s.done = _may_act(reports, b.latest) or not steady
+        if s.done and steady and s.guesses and _step_done(reports, b.latest):
+            s.done, s.guess_due = False, True  # the executor's next step starts now, it says
         b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
         return tick
+
+    def _guess(self, ep: _Episode, s: _Stretch) -> Tick | None:
+        """Start the executor's next step on its hint, at the time of the tick that ended the
+        step before (as its loop would: the starts in order, each acknowledged, then the
+        clock), and count it as an item of the batch: the executor takes it if it commands
+        exactly that step then, else it is undone with the ticks after it. Not committed (the
+        starts counted, the reports published) until the executor says so."""
+        b = s.batch
+        step = s.guesses.pop(0)
+        if any(h in ep.handles or h in ep.cancelled for _, h, _ in step):
+            s.done, s.guesses = True, []  # (a hint out of date: handles taken)
+            return None
+        t = s.t
+        i = len(b.ticks)
+        world = b.ticks[-1][1]
+        assert world is not None  # (a guess follows the tick that ended the step)
+        # saved first: a wrong guess is undone to here, nothing replayed, and the save is then
+        # the base of the stretch after the executor's own commands (see _commit)
+        mark = _saver(ep.cell)
+        assert mark is not None  # (_look_ahead checked the cell can be saved)
+        b.marks.append((i, mark, b.seq, dict(b.latest)))
+        self._seq = b.seq
+        acks = []
+        b.started[i] = step
+        try:
+            for _, h, action in step:
+                acks.append(self._start_guessed(ep, h, action, t, b.latest))
+            clock = self._clock(ep.cell, t)
+        except BaseException:  # the cell failed: back to before the stretch, none of it kept
+            self._forget(ep, b, 0)
+            ep.version += 1
+            assert b.restore is not None
+            b.restore()
+            raise
+        finally:
+            b.seq, self._seq = self._seq, b.seq0
+        b.ticks.append((t, None, acks, None))
+        self.stats.guessed += 1
+        s.next, s.unavailable = clock["next"], clock["unavailable"]
+        # each guessed step gets a span of its own: the ticks after it go as further replies
+        # (off the executor's critical path), and a wrong guess is undone from its save
+        s.limit = len(b.ticks) + min(s.ahead.count, ep.span)
+        return Tick(
+            t=t,
+            world=world,
+            reports=tuple(acks),
+            next=clock["next"],
+            pending=clock["pending"],
+            count=b.seq,
+            unavailable=tuple(clock["unavailable"]),
+            guess=True,
+        )
+
+    def _start_guessed(
+        self, ep: _Episode, h: int, action: Action, t: float, latest: dict[int, Report]
+    ) -> Report:
+        """Start ``action`` as the executor's handle ``h`` on a guess (or again, replaying
+        one), as :meth:`_execute` would; its acknowledgement, in ``latest``, not published."""
+        cell_handle = _call(ep, partial(ep.cell.start, action, t))
+        assert cell_handle is not None
+        ep.handles[h] = cell_handle
+        ep.by_cell_id[cell_handle.id] = h
+        self._seq += 1
+        rep = Report(ep.id, self._seq, h, ep.cell.poll(cell_handle, t))
+        latest[h] = rep
+        return rep
+
+    @staticmethod
+    def _forget(ep: _Episode, b: _Batch, i: int) -> None:
+        """Take back the handles of the batch's guessed steps from its item ``i`` on."""
+        for j, step in b.started.items():
+            if j >= i:
+                for _, h, _ in step:
+                    got = ep.handles.pop(h, None)
+                    if got is not None:
+                        ep.by_cell_id.pop(got.id, None)
 
     def _settle(self, ep: _Episode, batch_id: Any, consumed: int) -> list[_Ticked]:
         """Commit the first ``consumed`` ticks of the batch ``batch_id``; undo the rest. The
@@ -754,7 +884,14 @@ class CellNode:
         """A new command at time ``t``: the executor consumed every tick up to ``t``."""
         b = ep.batch
         if b is not None:
-            self._publish_ticks(ep, self._commit(ep, sum(1 for tt, *_ in b.ticks if tt <= t)))
+            # (up to a guessed step's starts: a command the executor sends on its own is
+            # never one of them)
+            n = 0
+            for tt, obs, *_ in b.ticks:
+                if obs is None or tt > t:
+                    break
+                n += 1
+            self._publish_ticks(ep, self._commit(ep, n))
 
     def _commit(self, ep: _Episode, consumed: int) -> list[_Ticked]:
         b = ep.batch
@@ -779,14 +916,31 @@ class CellNode:
                 (m for m in reversed(b.marks) if m[0] <= consumed),
                 (0, b.restore, b.seq0, b.latest0),
             )
+            self._forget(ep, b, i)  # the guessed starts undone (those kept are made again)
             ep.version += 1
             restore()
             self.stats.undone += len(b.ticks) - consumed
             self.stats.replayed += consumed - i
             self.stats.cuts += 1
             ep.latest, self._seq = dict(latest), seq
-            for t, *_ in b.ticks[i:consumed]:
-                self._tick(ep, t, ep.latest, publish=False)
+            if i == consumed and i in b.started and type(ep.cell) is Simulator:
+                # back to the save before a wrong guess: as good as one made while idle for
+                # the executor's own commands, which follow (see _save_idle)
+                ep.idle = (ep.version, restore)
+            for j, (t, obs, *_) in enumerate(b.ticks[i:consumed], i):
+                if obs is not None:
+                    self._tick(ep, t, ep.latest, publish=False)
+                    continue
+                for _, h, action in b.started[j]:
+                    self._start_guessed(ep, h, action, t, ep.latest)
+                self._clock(ep.cell, t)  # (as the guess: the same calls)
+        # the guessed steps the executor took are its commands now: counted as they would be
+        for j, step in b.started.items():
+            if j < consumed:
+                self.stats.guesses_kept += 1
+                for q, h, _ in step:
+                    self.stats.starts[h] = self.stats.starts.get(h, 0) + 1
+                    ep.max_cmd = max(ep.max_cmd, q)
         return b.ticks[:consumed]
 
     def _publish_ticks(self, ep: _Episode, ticks: list[_Ticked], every: bool = False) -> None:
@@ -796,7 +950,8 @@ class CellNode:
             for rep in reports:
                 if every or rep.status.terminal:
                     self._publish(ep, rep)
-            self._publish_world(ep.cell, obs, t, wire)
+            if obs is not None:  # (a guessed step's starts: their reports only)
+                self._publish_world(ep.cell, obs, t, wire)
 
     def _save_idle(self) -> None:
         """While the executor decides what to do next (no query waits), save the cell: when the
@@ -1186,6 +1341,18 @@ def _may_act(reports: list[Report], latest: dict[int, Report]) -> bool:
     if any(r.status.state is not ActionState.DONE for r in ended):
         return True
     return all(r.status.terminal for r in latest.values())
+
+
+def _step_done(reports: list[Report], latest: dict[int, Report]) -> bool:
+    """Whether these reports end the step with every action that ended in them done: the
+    executor then starts its next step at once, when nothing else happens (its hint's
+    guess). A step some action of which failed or was halted is replanned instead."""
+    ended = [r for r in reports if r.status.terminal]
+    return (
+        bool(ended)
+        and all(r.status.state is ActionState.DONE for r in ended)
+        and all(r.status.terminal for r in latest.values())
+    )
 
 
 def _payload(query: Any) -> bytes:

@@ -16,7 +16,7 @@ from hltl.world.scene import Vec3
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
 MAGIC = b"HLT1"
-PENDING, EXTRA, LAYOUT = 1, 2, 4
+PENDING, EXTRA, LAYOUT, GUESS = 1, 2, 4, 8
 STATES = (ActionState.RUNNING, ActionState.DONE, ActionState.FAILED, ActionState.HALTED)
 _STATE_INDEX = {s: i for i, s in enumerate(STATES)}
 _U32 = struct.Struct("<I")
@@ -38,6 +38,9 @@ class Tick:
     unavailable: tuple[str, ...] = ()  # the robots unavailable now (the cell's clock)
     instructions: tuple[str, ...] = ()
     records: tuple[dict[str, Any], ...] = ()
+    # not a tick: the executor's expected next step, started by the node at ``t`` (the tick
+    # before's time) on a guess; ``reports`` acknowledge its starts, the clock is after them
+    guess: bool = False
 
 
 def encode_answer(answer: dict[str, Any], ticks: Sequence[Tick] = ()) -> bytes:
@@ -83,6 +86,8 @@ def encode_ticks(ticks: Sequence[Tick]) -> bytes:
         )
         extra: dict[str, Any] = {}
         flags = PENDING if tick.pending else 0
+        if tick.guess:
+            flags |= GUESS
         if ids != layout:
             flags |= LAYOUT
             layout, locs = ids, None
@@ -148,6 +153,13 @@ class TickReader:
         try:
             return float(struct.unpack_from("<d", self._b, self._at)[0])
         except struct.error as exc:
+            raise BusError(f"malformed {self._what} on the bus: {exc}") from None
+
+    def peek_guess(self) -> bool:
+        """Whether the next item is a guessed step's start, not a tick (there is one left)."""
+        try:
+            return bool(self._b[self._at + 20] & GUESS)
+        except IndexError as exc:
             raise BusError(f"malformed {self._what} on the bus: {exc}") from None
 
     def take(self) -> Tick:
@@ -230,6 +242,7 @@ class TickReader:
             tuple(map(str, extra["unavailable"])) if "unavailable" in extra else (),
             tuple(map(str, extra["instructions"])) if "instructions" in extra else (),
             tuple(extra["records"]) if "records" in extra else (),
+            bool(flags & GUESS),
         )
 
     def _world(

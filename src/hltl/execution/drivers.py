@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import enum
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol, Self, runtime_checkable
 
@@ -92,4 +92,39 @@ class RobotDriver(Protocol):
 
     def unavailable(self, t: float) -> frozenset[str]:
         """Robots that cannot take actions at time ``t`` (faults, maintenance, another job)."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class Expected:
+    """A step the executor expects to dispatch next if nothing happens: its plan's next step.
+
+    Attributes:
+        actions: the step's actions, in the order the executor will start them.
+        at: when the plan expects the step to start (seconds since the episode started).
+    """
+
+    actions: tuple[Action, ...]
+    at: float
+
+
+@runtime_checkable
+class Lookahead(Protocol):
+    """A driver that can use what the executor will command next (optional, besides
+    :class:`RobotDriver`): like an action server's goal queued behind the current one, or a
+    trajectory controller's queued segments, except that nothing is committed.
+
+    The executor calls :meth:`expect` right after it starts a step. A driver may run on with
+    the guess (the bus's cell node simulates the next step's start when the current one ends,
+    so one answer carries both); when the executor then commands something else (a halt, a
+    replan, another step, a start at another time), the driver must undo the guess so that
+    nothing of it shows: the executor's ``start``, ``poll`` and ``halt`` calls and their results
+    are exactly what they would be without the hint. A driver that ignores hints (the in-process
+    simulators) simply does not implement this.
+    """
+
+    def expect(self, steps: Sequence[Expected]) -> None:
+        """The steps the executor will start next, in order, each once the step before it
+        (first: the step just started) has ended with all its actions done; replaces any
+        earlier hint (empty: no guess)."""
         ...

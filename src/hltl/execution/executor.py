@@ -14,7 +14,9 @@ from hltl.execution.decision import Phase, Trigger, Triggers
 from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
+    Expected,
     Handle,
+    Lookahead,
     MotionSource,
     RobotDriver,
 )
@@ -243,6 +245,9 @@ class Executor(TickTemplate):
         self.scene = scene
         self.motion = motion
         self.driver = driver
+        # a driver that takes hints is told the plan's next steps at each dispatch (checked
+        # once: isinstance against a Protocol is slow)
+        self._expect = driver.expect if isinstance(driver, Lookahead) else None
         self.log = EventLog() if log is None else log
         if isinstance(cost, MotionSource):
             # motions chain through where this episode's plans leave the arms, and only this
@@ -580,8 +585,11 @@ class Executor(TickTemplate):
     def _intrusion_on(self) -> bool:
         return self.config.intrusion and self.predictor is not None
 
-    def _dispatch(self, timed: Sequence[_Timed], step: PlanStep) -> None:
-        """Start ``timed`` (checked by :meth:`_check_step`) as the plan's first step."""
+    def _dispatch(
+        self, timed: Sequence[_Timed], step: PlanStep, following: Sequence[PlanStep] = ()
+    ) -> None:
+        """Start ``timed`` (checked by :meth:`_check_step`) as the plan's first step; a driver
+        that takes hints is told ``following``, the plan's steps after it."""
         actions = [t.action for t in timed]
         conflict = step_conflict(actions)
         if conflict is not None:  # the planner never does this; refuse rather than collide
@@ -623,12 +631,25 @@ class Executor(TickTemplate):
                     expected=round(expected, 6),
                 )
             )
+        if self._expect is not None and self._running:
+            self._hint(step, following)
         self._plan = None  # the suffix is replanned when this step ends
         self._step_started = self.t
         self._waiting = None
         self._wait_since = None
         if not self._running:
             self._end_step()
+
+    def _hint(self, step: PlanStep, following: Sequence[PlanStep]) -> None:
+        """Tell the driver what the plan dispatches next if nothing happens (a guess it may run
+        on with; :class:`~hltl.execution.drivers.Lookahead`): nothing here depends on it."""
+        assert self._expect is not None
+        at = self.t + step.duration
+        expected = []
+        for s in following:
+            expected.append(Expected(tuple(s.actions), round(at, 6)))
+            at += s.duration
+        self._expect(expected)
 
     # -- deciding --------------------------------------------------------------------------------
 
@@ -709,7 +730,7 @@ class Executor(TickTemplate):
             self._wait(f"intrusion risk to {risky[0].action}")
             self._wait_or_give_up(check_only=True)
             return False
-        self._dispatch(ok, step)
+        self._dispatch(ok, step, self._plan.steps[1:])
         return not self._running
 
     def _check_step(self, step: PlanStep) -> tuple[list[_Timed], list[Hazard], list[Hazard]]:
@@ -1048,7 +1069,7 @@ class Executor(TickTemplate):
                 humans={h: p.to_dict() for h, p in moving.items()},
             )
         )
-        self._dispatch(ok, step)
+        self._dispatch(ok, step, pred.result.steps[1:])
         return True
 
     def _survives_forecast(self, plan: PlanResult, moving: Mapping[str, object]) -> bool:

@@ -55,6 +55,7 @@ from hltl.grounding.lexicon import (
 )
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import tasks
+from hltl.world.scene import Scene
 
 _F = re.IGNORECASE
 _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
@@ -173,8 +174,10 @@ def _wrappers(text: str, _lexicon: Lexicon) -> str:
 _WORDS: tuple[tuple[str, str], ...] = (
     # "Bob has asked for the chips twice now": how often he asked, not how often to hand over
     (
-        r"\b(asked for [^.;!?]*?) (?:twice|three times|several times|a few times|again|already)"
-        r"(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
+        r"\b(ask(?:ed|ing) for [^.;!?]*?) (?:twice|three times|several times|a few times|again|"
+        r"already|ages ago|a while ago|a bit ago|earlier|this morning|this afternoon|yesterday|"
+        r"last night|(?:an|one|two|ten|twenty|half an) (?:minutes?|hours?) ago|just now|all day|"
+        r"all morning|all afternoon)(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
         r"\1",
     ),
     (r",?\s*\b(?:sharpish|pronto|asap|chop chop|on the double)\b", ""),
@@ -1361,9 +1364,10 @@ def _lacks(text: str, lexicon: Lexicon) -> str:
     one": what a person lacks, then a request whose 'one' / 'it' / 'the red one' is that kind
     of object and whose pronoun is that person: the request with them said."""
     m = re.match(
-        r"^([^,;.!?]+?) (?:hasn't got|has not got|hasn't|has no|doesn't have|does not have|can't "
-        r"find|cannot find|can not find|has lost|lost|forgot|has forgotten) (?:his |her |their |a "
-        r"|an |any |the )?([\w ]+?),\s*(?:so\s+)?(.+)$",
+        r"^([^,;.!?]+?)(?: (?=[a-z])|(?='s ))(?:hasn't got|has not got|hasn't|has no|doesn't have|"
+        r"does not have|can't find|cannot find|can not find|has lost|lost|forgot|has forgotten|has"
+        r" run out of|'s run out of|ran out of|is out of|'s out of) (?:his |her |their |a |an |any"
+        r" |the )?([\w ]+?),\s*(?:so\s+)?(.+)$",
         text.strip(),
         _F,
     )
@@ -1374,6 +1378,8 @@ def _lacks(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(rest, lexicon, "human") - _ids(who, lexicon, "human"):
         return text  # "Bob hasn't got the cup, give it to Carol": the lack is not why
+    if kind.endswith("s") and _only_kind(kind[:-1], lexicon, "object"):
+        kind = kind[:-1]  # "Sam's run out of pens, give him the black one": the black pen
     rest = _sub(r"\bthe (\w+) one\b", rf"the \1 {kind}", rest)
     rest = _sub(r"(?<!\bthe )\bone\b", f"a {kind}", rest)
     rest = _sub(r"\bit\b", f"the {kind}", rest)
@@ -1401,7 +1407,7 @@ def _bare_pair(text: str, lexicon: Lexicon) -> str:
     return f"the {m.group(1)} for {m.group(2)}"
 
 
-def _one_person(text: str, lexicon: Lexicon) -> str | None:
+def one_person(text: str, lexicon: Lexicon) -> str | None:
     """The name of the one person ``text`` names (several names of one person count once),
     when every he/she/him/her of ``text`` may be them."""
     people = [it for it in _names(text, lexicon) if all(r.kind == "human" for r in it.refs)]
@@ -1416,14 +1422,14 @@ def _told_apart(text: str, lexicon: Lexicon) -> str:
     closest to Alice, give her that one': the one person the text names is the pronoun (the
     aside naming only them is then dropped); 'Bob's on his break and asked for …', 'Ava wants
     to build a tower, can she have …': a state or a plan before the request is a remark."""
-    who = _one_person(text, lexicon)
+    who = one_person(text, lexicon)
     pron = re.findall(r"\b(?:him|her|he|she)\b", text, _F)
     m = re.search(r",\s*(?:which|who)\b([^,]+),", text, _F)
-    if m is not None and who is not None and len(pron) == 1 and _one_person(m.group(1), lexicon):
+    if m is not None and who is not None and len(pron) == 1 and one_person(m.group(1), lexicon):
         aside = m.group(1)
         if not _NEGATIONS.search(aside) and not _ids(aside, lexicon, "object"):
             rest = text[: m.start()] + text[m.end() - 1 :]
-            if _one_person(rest, lexicon) is None:
+            if one_person(rest, lexicon) is None:
                 rest = rest.replace(",,", ",")
                 return _sub(r"\b(?:him|her)\b", who, rest.replace(", should", " should"))
     m = re.match(r"^(the [^,]+?),\s*(give|hand|pass|bring) (him|her) that one\b(.*)$", text, _F)
@@ -1449,7 +1455,7 @@ def _told_apart(text: str, lexicon: Lexicon) -> str:
         r"(?:so )?(can|could|would|will|please)\b(.*)$",
         text,
     )
-    if m is not None and _only(m.group(1), lexicon, "human") and _one_person(text, lexicon):
+    if m is not None and _only(m.group(1), lexicon, "human") and one_person(text, lexicon):
         plan, rest = m.group(2), f"{m.group(3)}{m.group(4)}"
         things = [it for it in _names(plan, lexicon) if it.refs[0].kind == "object"]
         if len(things) == 1 and re.search(r"\bit\b", rest, _F):
@@ -1514,7 +1520,681 @@ def _ranked(text: str, _lexicon: Lexicon) -> str:
     return f"{placed[0]}. Then {placed[1]}. Finally, {placed[2]}."
 
 
+# -- session 13: what a request carries that cannot change who gets what ------------------------
+#
+# Each rewrite below takes off a listed class of words or clauses, and only where the words taken
+# off name nothing in the scene (no object, person or surface, also not by a typo) and hold no
+# negation, quantifier, number, 'or', 'then' or 'before' of the request: courtesy and closings,
+# the speaker talking about themselves, what a thing is for, when (a time clause about no task),
+# a negated command about objects the request leaves alone, a confirmation of a correction.
+
+
+def _names_nothing(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` names no object, person or surface of the scene (nor a typo of one)."""
+    return not _names(words, lexicon)
+
+
+def _drop(pattern: str, text: str, lexicon: Lexicon, repl: str = "") -> str:
+    """``text`` without each match of ``pattern`` that names nothing in the scene ('thing', as in
+    'poor thing', is not a name)."""
+    return _sub(
+        pattern,
+        lambda m: (
+            m.expand(repl)
+            if _names_nothing(re.sub(r"\bthings?\b", "", m.group(0), flags=_F), lexicon)
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+_COURTESY: tuple[tuple[str, str], ...] = (
+    # "No rush at all, but at some point could Priya get …": when, not what
+    (
+        r"(^|(?<=[.;!?])\s*)(?:there'?s )?no (?:rush|hurry)(?: at all)?(?:\s*[,.!;]\s*|\s+)"
+        r"(?:but\s+)?",
+        r"\1",
+    ),
+    # "Hi, yes, hello, could you …": greetings and 'yes' opening the request, each before a comma
+    (
+        r"^(?:(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening)(?: there)?"
+        r"\s*[,!]\s*)+",
+        "",
+    ),
+    (r",?\s*\bat some (?:point|stage)(?: today| later)?\b", ""),
+    (r"(^|(?<=[.;!?])\s*)(?:whenever|when) (?:you'?re|you are) (?:ready|free)\s*[,.]?\s*", r"\1"),
+    # "Be an angel and hand …": a request for a favour, not a name
+    (
+        r"(^|(?<=[.;!?,])\s*)(?:(?:could|would|can|will) you |so |and |please |now )*be (?:an? )?("
+        r"?:angel|dear|star|love|darling|gem|sweetheart|sweetie|pal|treasure|doll|lamb|good (?:rob"
+        r"ot|lad|girl|boy))(?:\s+and\b|\s*[,:])\s*",
+        r"\1",
+    ),
+    # "would you be ever so kind and pass …", "if you'd be so good, …"
+    (
+        r"\b(?:(?:would|could|will) you )?(?:please )?be (?:ever |so |very )*(?:so )?(?:kind|good|"
+        r"nice|sweet)(?: as to| and| enough to)\b,?\s*",
+        "",
+    ),
+    (r",?\s*\bif you(?:'d| would| could)? (?:be )?(?:ever )?so (?:kind|good)\b\s*,?", ""),
+    # "if you wouldn't mind", "if you would not mind": a courtesy, not a negated task
+    (r",?\s*\bif you (?:wouldn't|would not|don't|do not|didn't|did not) mind\b\s*,?", ""),
+    # thanks said every way: "thank you ever so much", "thanks a million", "ta very much"
+    (
+        r"\b(?:thank you|thanks|ta|thx)(?:\s+(?:ever|so|very|really|most|kindly))*\s+"
+        r"(?:much|kindly)\b",
+        "thanks",
+    ),
+    (r"\bthanks (?:a (?:million|bunch|lot|ton|heap)|loads|heaps|again|in advance)\b", "thanks"),
+    (r"\b(?:many|big|huge) thanks\b", "thanks"),
+    (
+        r",?\s*\b(?:much appreciated|(?:i |really )*appreciate it|you'?re (?:a star|an angel|a gem|"
+        r"a lifesaver|the best))\b",
+        "",
+    ),
+    # "Just so you know, Ava wants …", "Heads up, …", "By the way, …": a note on the request
+    (
+        r"(^|(?<=[.;!?])\s*)(?:just so (?:you know|ya know)|heads up|by the way|for the record|"
+        r"for your information|as (?:i said|mentioned|discussed)|like i said)\s*[,:!-]?\s*",
+        r"\1",
+    ),
+    # "…, bless him", "…, poor thing": sympathy said after the request
+    (
+        r",\s*(?:bless (?:him|her|them|'?em)|(?:the )?poor (?:thing|dear|love|lamb|soul|mite|"
+        r"guy|man|woman|kid|pet|sausage)s?)(?=\s*(?:[.,;!?]|$))",
+        "",
+    ),
+    # "…, would be great", "…, if that's alright with you", "Much obliged."
+    (
+        r",?\s*\b(?:that |it )?(?:would|'d|will) be (?:great|lovely|brilliant|perfect|wonderful|"
+        r"amazing|fab|fantastic|ideal|helpful|super|awesome|appreciated|much appreciated)\b",
+        "",
+    ),
+    (
+        r",?\s*\bif (?:that's|that is|it's|it is|that'd be|that would be) (?:ok|okay|alright|all "
+        r"right|fine)(?: with you| by you)?\b",
+        "",
+    ),
+    (r"(^|(?<=[.;!?])\s*)much obliged\b[.!]*", r"\1"),
+    # "Could I get the robot to give Bob the chips?": the speaker asks through the robot
+    (
+        r"\b(?:could|can|may|might) (?:i|we) (?:get|ask|have) (?:you|the robots?|the arms?|it) "
+        r"(?:to )?(?=(?:give|hand|pass|bring|take|put|place|move|fetch|send)\b)",
+        "please ",
+    ),
+    # "…, where it belongs": where a placement puts it back, said again
+    (r",?\s+where (?:it|they) (?:belongs?|lives?|goes|go|should be)\b", ""),
+    # "… for later", "… for a sec": for how long or for when
+    (
+        r"\s+for (?:later|now|a (?:sec|second|minute|moment|bit|while)|the (?:moment|time being|"
+        r"day|night|week|weekend)|tonight|tomorrow|today)\b(?=\s*(?:[.,;!?]|$|please|thanks))",
+        "",
+    ),
+    # "…, you know", "…, over and out": said to close, not to ask
+    (
+        r",\s*(?:you know|you see|over and out|and that's (?:it|that)|that's it)(?=\s*(?:[.!?]|$))",
+        "",
+    ),
+    (r",?\s*\b(?:whenever|when) (?:you're|you are) (?:ready|free|able)\b", ""),
+    # "I'd say Dana needs the spoon", "If I'm not mistaken, …": how sure the speaker is
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i'd say|i would say|if i'm not mistaken|if i remember (?:right|"
+        r"rightly|correctly)|as far as i know|i suppose|i imagine|i'm (?:pretty |fairly )?sure|i "
+        r"am (?:pretty |fairly )?sure|i think|i believe|i reckon|i guess)(?: that)?\s*,?\s*",
+        r"\1",
+    ),
+    # "… so that he has something to eat", "… to soak": what it is for, naming nothing
+    (
+        r",?\s+so (?:that )?(?:he|she|they|it) (?:can|could|has|have|will|'ll|won't|doesn't|"
+        r"don't|isn't|is|are|gets?) [a-z' ]{2,40}?(?=\s*(?:[.;!?]|,\s*(?:please|thanks)\b|$))",
+        "",
+    ),
+    (
+        r"(?<!thing)(?<!stuff)\s+(?:so as )?to (?:soak|dry|cool|cool down|warm up|eat|drink|use|re"
+        r"ad|charge|share|keep|wash|clean|play with|play|sign|fix|cut|write|write with|work|work w"
+        r"ith|snack on|look at|finish|study|sort|pack|label|scan)\b(?: [a-z]+){0,3}?(?=\s*(?:[.;!?"
+        r"]|,\s*(?:please|thanks)\b|$|\s+please\b))",
+        "",
+    ),
+    # "give the, uh, banana": a hesitation between commas
+    (r",\s*(?:um+|uh+|erm*|er|hmm+|ah+)\s*,", ""),
+    # "I was hoping Emma could have …", "Don't forget to give …": asking, reminding
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i was|i'm|i am|we were|we're|we are) (?:just |really )?hoping"
+        r"(?: that)? ",
+        r"\1",
+    ),
+    (r"(^|(?<=[.;!?,])\s*)(?:please )?(?:don't|do not) forget to ", r"\1"),
+    (r"\bmake sure (?:that )?(?:you )?(don't|do not|never)\b", r"\1"),
+    (r"\bmake sure not to\b", "don't"),
+    # "… on the tray for us": the speaker's benefit, as "for me"
+    (r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))", ""),
+)
+
+
+# requests asked as a possibility or a choice, rewritten with their names kept
+_ASKED: tuple[tuple[str, str], ...] = (
+    # "I request you to give …", "I'd ask you to …"
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i|we)(?:'d| would)? (?:request|ask|beg) (?:you |that you )?(?:to )?"
+        r"(?=(?:give|hand|pass|bring|take|put|place|move|fetch|send|get)\b)",
+        r"\1",
+    ),
+    # "Mrs Khan is requesting the magazine"
+    (r"\s*(?:\bis|'s|\bare|'re) (?:requesting|asking for)\b", " wants"),
+    # "The thermometer needs to get to Ruth": goes to her
+    (r"\b(?:needs?|has|have) to get (?:over )?to\b", "should go to"),
+    # "The guest hasn't had his salt yet": he wants it (the whole sentence)
+    (
+        r"^((?:the )?[\w ]+?) (?:still )?(?:hasn't|has not|hasn't yet|has not yet|still hasn't) "
+        r"(?:had|got|gotten|received) (?![^.!]*\b(?:or|nor|and|any|either|neither|all|both)\b)"
+        r"((?:his|her|their|the|a|an) [\w ]+?)(?: yet)?\s*[.!]?$",
+        r"\1 wants \2",
+    ),
+    # "Hand the glue to Zoe or Noah, whoever wants it": the choice the 'or' already gives
+    (
+        r"(\bor\b[^.;!?]*?),\s*whoever (?:wants|needs|likes|would like|prefers) (?:it|them|one)\b",
+        r"\1",
+    ),
+    # "Is it possible for Emma to have …", "Would it be ok if Emma had …": may she have it
+    (
+        r"(^|(?<=[.;!?])\s*)(?:is it|would it be|will it be) (?:at all )?(?:possible|ok|okay|"
+        r"alright|all right|fine) (?:for|if) ((?:the )?[\w ]+?) (?:to have|to get|had|got|could "
+        r"have|could get|has|gets) ",
+        r"\1could \2 have ",
+    ),
+    # "Priya and Sam both need a pen": each of them one
+    (
+        r"\bboth (need|want|would like|get|should get|could use)s? (a|an|one) ([a-z]+(?: [a-z]+)?)"
+        r"(?=\s*(?:[.,;!?]|$|please))(?!,?\s*so one each)",
+        r"\1 \2 \3 each",
+    ),
+)
+
+
+def _courtesy(text: str, lexicon: Lexicon) -> str:
+    """Courtesy said around a request: favours asked ('be an angel and'), 'if you wouldn't
+    mind', 'no rush, but', thanks said every way, 'for us'. Taken off only where it names
+    nothing in the scene. Then requests asked as a possibility ('Is it possible for Emma to have
+    …'), a choice left to them ('…, whoever wants it') or shared ('both need a pen')."""
+    for pattern, repl in _COURTESY:
+        text = _drop(pattern, text, lexicon, repl)
+    for pattern, repl in _ASKED:
+        text = _sub(pattern, repl, text)
+    # "Mia's on the phone but she needs the tape": a remark naming no object, then the want
+    text = _sub(
+        r"^([^,;.!?]+?) but (he|she|they) (needs|wants|would like|'d like|could use)\b",
+        lambda m: (
+            f"{m.group(1)}. {m.group(2)} {m.group(3)}"
+            if not _ids(m.group(1), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
+    return " ".join(text.split())
+
+
+# The words of a closing or greeting said as a sentence of its own ("Lovely, thanks.", "That
+# would be lovely.", "Thank you, dear."): none can name, count, negate or order a task.
+_CLOSING_WORDS = frozenset(
+    {
+        *("lovely", "brilliant", "perfect", "great", "super", "superb", "wonderful"),
+        *("fantastic", "excellent", "marvellous", "marvelous", "splendid", "awesome", "amazing"),
+        *("fab", "fabulous", "cool", "nice", "grand", "ace", "sweet", "smashing", "cheers"),
+        *("thanks", "thank", "you", "ta", "thx", "dear", "love", "darling", "mate", "pal"),
+        *("hun", "hon", "buddy", "so", "much", "very", "really", "a", "lot", "that", "would"),
+        *("be", "that'd", "that's", "it", "it'd", "i'd", "appreciate", "appreciated", "many"),
+        *("ever", "kindly", "bye", "goodbye", "good", "stuff", "job", "helpful", "kind"),
+        *("oh", "ah", "well", "ok", "okay", "hello", "hi", "hey", "hiya", "morning"),
+        *("afternoon", "evening", "there", "robot", "robots", "everyone", "folks", "all"),
+        *("again", "too", "and", "just", "again", "bunch", "million", "loads", "yes", "yeah"),
+        *("right", "sure", "great", "top", "legend", "star", "sir", "madam", "please"),
+    }
+)
+
+
+def _closing(text: str, lexicon: Lexicon) -> str:
+    """'… to the waitress. Lovely, thanks.' / 'Good evening. …': a sentence only of greeting,
+    praise and thanks asks nothing (the first and the last ones are taken off)."""
+    sentences = [x for x in re.split(r"(?<=[.;!?])\s+", text.strip()) if x]
+    if len(sentences) < 2:
+        return text
+
+    def closing(sentence: str) -> bool:
+        words = re.findall(r"[a-z']+", sentence.lower())
+        return (
+            bool(words)
+            and all(w in _CLOSING_WORDS for w in words)
+            and _names_nothing(sentence, lexicon)
+        )
+
+    while len(sentences) > 1 and closing(sentences[-1]):
+        sentences.pop()
+    while len(sentences) > 1 and closing(sentences[0]):
+        sentences.pop(0)
+    return " ".join(sentences)
+
+
+_SELF = re.compile(
+    r"(^|(?<=[.;!?])\s*|(?<=,)\s*)(?:(?:(?:hi|hello|hey|hiya)(?: there)?|sorry|excuse me|good "
+    r"(?:morning|afternoon|evening)|morning|evening)\s*[,!.]?\s*)*"
+    r"(?:i'm|i am|im|we're|we are)\s+(?P<said>[^.;!?,]*?)"
+    r"(?:\s*[.;!?]+\s*|\s*,\s*(?:(?:so|but|and)\b,?\s*)?|\s+(?:so|but)\s+)",
+    _F,
+)
+# what the speaker says of themselves must be a state, not an act on a task: no verb of giving,
+# placing or wanting, no negation of a task and no order
+_SELF_ACTS = re.compile(
+    r"\b(?:giv\w*|hand\w*|pass\w*|bring\w*|brought|tak\w*|took|put\w*|plac\w*|send\w*|sent|"
+    r"deliver\w*|mov\w*|fetch\w*|want\w*|need\w*|ask\w*|after|before|then|first|last|only "
+    r"(?:getting|having)|getting|having|going to|about to)\b",
+    _F,
+)
+
+_SELF_CHANGES = re.compile(
+    r"\b(?:except|instead|rather|cancel|forget|skip|drop|swap|without|or|either|neither|nor|"
+    r"each|every|all|both|any)\b",
+    _F,
+)
+
+
+def _speaker(text: str, lexicon: Lexicon) -> str:
+    """ "I'm only visiting, but …", "Sorry, I'm just here for the cooking class. …", "I'm
+    covering for the day nurse, so …": the speaker saying who they are is not a request, and
+    not a recipient. Taken off when it names no object or surface of the scene, does nothing to
+    a task, and (if it names a person) the request has no he/she/him/her that could be them."""
+    for m in _SELF.finditer(text):
+        said = m.group("said")
+        if _SELF_ACTS.search(said) or _SELF_CHANGES.search(said):
+            continue
+        named = _names(said, lexicon)
+        if any(r.kind != "human" for it in named for r in it.refs):
+            continue
+        rest = text[: m.start()] + m.group(1) + text[m.end() :]
+        if named and re.search(r"\b(?:he|she|him|her|his|they|them)\b", rest, _F):
+            continue
+        if not rest.strip() or not _names(rest, lexicon):
+            continue
+        return _speaker(" ".join(rest.split()), lexicon)
+    return text
+
+
+# Words that count, choose, order or point back: a phrase holding one is never taken off as what
+# a thing is for or when it is wanted ('before the rest', 'for the other one', 'after that').
+_KEEP_WORDS = re.compile(
+    r"\b(?:all|everything|everyone|everybody|each|every|both|either|neither|any|anything|anyone|"
+    r"rest|other|others|another|one|ones|first|last|second|third|next|previous|same|that|this|"
+    r"those|these|it|them|then|him|her|me|us|you|his|hers|theirs|mine|yours|ours|its|none|"
+    r"nothing|nobody|no|not|or|and|nor|only|"
+    r"instead|except|without|twice|again|once|[0-9]+|two|three|four|five|six|ten|dozen|half)\b|"
+    r"n't\b",
+    _F,
+)
+
+
+def _purpose(text: str, lexicon: Lexicon) -> str:
+    """'The technician needs a sponge for the spill', 'Put the cup on the table for the
+    meeting': what it is for, a phrase after 'for' that names nothing in the scene and holds no
+    word that counts, chooses or points back, said at the end of a clause."""
+    return _sub(
+        r"\s+for (?:the|a|an|this|that|some) ([a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.,;!?]|$|\bplease\b|"
+        r"\bthanks\b))",
+        lambda m: (
+            ""
+            if _names_nothing(m.group(0), lexicon) and not _KEEP_WORDS.search(m.group(1))
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+def _when(text: str, lexicon: Lexicon) -> str:
+    """'… before he heads off', '… before the lesson starts': a deadline about no task (it names
+    nothing in the scene, and no word in it counts, chooses or points back to a task) is met by
+    doing the task now; 'before he gets the apple' names an object and orders the tasks, so it
+    stays. A delay ('after he finishes his lunch', 'when she gets back', 'tomorrow') is not met
+    by doing it now: left to be refused."""
+
+    def timed(m: re.Match[str]) -> str:
+        said = m.group("said")
+        if (
+            _names_nothing(said, lexicon)
+            and not _KEEP_WORDS.search(said)
+            and not re.search(r"\b(?:done|finished|complete|completed)\b", said, _F)
+        ):
+            return ""
+        return m.group(0)
+
+    return _sub(
+        r",?\s+(?:before|by the time) (?:he|she|they|the|his|"
+        r"her|their|my|our)\b(?P<said>(?:'s|'re| [a-z']+){1,5})(?=\s*(?:[.;!?]|,\s*(?:please|"
+        r"thanks|thank you|cheers|ta)\b|$))",
+        timed,
+        text,
+    )
+
+
+def _wants(text: str, lexicon: Lexicon) -> str:
+    """'Mrs Khan would quite like the grey blanket', 'What Mia really needs is the gloves', 'For
+    the foreman the hammer': wants said with a degree, as a cleft, or with the person first."""
+    text = _sub(
+        r"\b(would|'d) (?:quite|really|rather|very much|so much|dearly|much|so|truly|actually|"
+        r"just|also) (like|love)\b",
+        r"\1 \2",
+        text,
+    )
+
+    def cleft(m: re.Match[str]) -> str:
+        return (
+            f"{m.group(1)}{m.group(2)} {m.group(3)} "
+            if _only(m.group(2), lexicon, "human")
+            else m.group(0)
+        )
+
+    # "Bob is desperate for the chips": wants them
+    text = _sub(
+        r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been) (?:really |so |just )?(?:desperate|dying|"
+        r"gasping|longing|itching|crying out|keen|gagging) (?:for|to have|to get)\b",
+        " wants",
+        text,
+    )
+    text = _sub(
+        r"(^|(?<=[.;!?])\s*)(?:all (?:i'm|i am|we're|we are) asking(?: for)? is for|all (?:i|we) "
+        r"ask is for|what (?:i'm|i am|we're|we are) asking(?: for)? is for) (.+?) to (get|have)\b",
+        r"\1\2 should \3",
+        text,
+    )
+    text = _sub(
+        r"(^|(?<=[.;!?])\s*)(?:what|all|the only thing) ((?:the )?[\w ]+?) (?:really |actually |mo"
+        r"st |honestly |truly |definitely |absolutely )?(needs|wants|would like|'d like|could use|"
+        r"is after|asked for) (?:most |really )?is (?=(?:the|a|an|some|both|one|either)\b)",
+        cleft,
+        text,
+    )
+
+    def fronted(m: re.Match[str]) -> str:
+        if _only(m.group(2), lexicon, "human") and _only_kind(m.group(3), lexicon, "object"):
+            return f"{m.group(1)}the {m.group(3)} for {m.group(2)}"
+        return m.group(0)
+
+    return _sub(
+        r"(^|(?<=[.;!?,])\s*)for ((?:the )?[\w ]+?),? (?:the |a |an )([\w ]+?)(?=\s*(?:[,.;!?]|$|p"
+        r"lease\b))",
+        fronted,
+        text,
+    )
+
+
+def _adjectives(lexicon: Lexicon) -> dict[str, frozenset[str]]:
+    """Each first word of a two-word object name that is no name alone ('red' of 'red pen', 'big'
+    of 'big box'), with the kinds of objects it tells apart."""
+    return _scene_adjectives(lexicon.scene)
+
+
+@functools.lru_cache(maxsize=64)
+def _scene_adjectives(scene: Scene) -> dict[str, frozenset[str]]:
+    single = {
+        w.lower()
+        for n in (
+            *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+            *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+            *(n for x in scene.surfaces for n in (x.id, *x.aliases)),
+        )
+        for w in ([n] if " " not in n else n.split()[1:])
+    }
+    out: dict[str, set[str]] = {}
+    for o in scene.objects:
+        for name in o.aliases:
+            words = name.lower().split()
+            if len(words) == 2 and words[0] not in single and words[0] not in WORDS:
+                out.setdefault(words[0], set()).add(o.category)
+    return {k: frozenset(v) for k, v in out.items()}
+
+
+def _people_only(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` are only names of people of the scene ('Mia', 'the driver', 'Mia and
+    Tom'), each naming one person."""
+    named = _names(words, lexicon)
+    if not named or any(
+        len({r.id for r in it.refs}) != 1 or it.refs[0].kind != "human" for it in named
+    ):
+        return False
+    left = words.lower()
+    for it in named:
+        left = left.replace(it.text.lower(), " ", 1)
+    return not re.sub(r"\b(?:the|and|our|my)\b|,", " ", left).strip()
+
+
+def _elided(text: str, lexicon: Lexicon) -> str:
+    """'Priya wants the blue pen; Sam, the red' / 'Zoe the green': a colour or size said alone
+    after 'the', at the end of a clause, is 'the red one' (the grammar then finds which one by
+    the object said before it, or refuses); 'Mia takes the small box; …' (no place or person
+    after it) is 'Mia gets the small box'."""
+    adjectives = _adjectives(lexicon)
+    if adjectives:
+        text = _sub(
+            r"\bthe (" + "|".join(sorted(map(re.escape, adjectives))) + r")(?=\s*(?:[.,;!?]|$|"
+            r"\band\b|\bplease\b))",
+            r"the \1 one",
+            text,
+        )
+
+    def takes(m: re.Match[str]) -> str:
+        if not _people_only(m.group(1), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} {m.group(2) or ''}{'get' if m.group(2) else 'gets'}"
+
+    return _sub(
+        r"(?<![\w,] )(?:^|(?<=[.;!?]\s)|(?<=[;]))\s*([A-Z][\w ]*?) ((?:can |will |should |may |"
+        r"could )?(?:each )?)takes?\b(?=(?:(?!\b(?:to|on|onto|in|into|over|for|from|out|off|"
+        r"away|back|it|them|him|her)\b)[^.;!?])*(?:[.;!?]|$))",
+        takes,
+        text,
+    )
+
+
+def _choice(text: str, lexicon: Lexicon) -> str:
+    """'Put any box you like on the belt' (any box), 'Both the knife and the tongs go to Marco'
+    (the knife and the tongs), 'a plate, any except the blue one' (a plate except the blue
+    one), 'Give P two things, the bottle and the apple, and …' (the bottle and the apple, when
+    the list names that many objects), 'the only bottle' (the bottle, when it is one)."""
+    # (one chosen object, so only in a clause of one task: no 'and' after it)
+    text = _sub(
+        r"\b((?:any|either|whichever) [a-z]+) (?:that |which )?(?:you|she|he|they|we) (?:like|"
+        r"likes|want|wants|prefer|prefers|fancy|fancies|choose|chooses|pick|picks)\b"
+        r"(?![^.;!?]*\band\b)",
+        r"\1",
+        text,
+    )
+    text = _sub(
+        r"\bboth (?=(?:the |a |an )?[a-z][\w ]*? and (?:the |a |an )?[a-z])(?![^.;!?,]*\bboth\b)",
+        "",
+        text,
+    )
+    # "a mug for Bob and one for Carol": 'one' is another of that kind
+    text = _sub(
+        r"\b(a|an) ([a-z]+) (for|to) ([\w ]+?),? and one (for|to) ",
+        lambda m: (
+            f"{m.group(1)} {m.group(2)} {m.group(3)} {m.group(4)} and a {m.group(2)} {m.group(5)} "
+            if _only_kind(m.group(2), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
+    text = _sub(
+        r",\s*any (?:one )?(?:except|but|apart from|other than|besides|bar) (?=the )",
+        " except ",
+        text,
+    )
+
+    def listed(m: re.Match[str]) -> str:
+        items = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(2)) if x]
+        ids = [_ids(x, lexicon, "object") for x in items]
+        count = int(m.group(1)) if m.group(1).isdigit() else _COUNTS[m.group(1).lower()]
+        if (
+            len(items) == count
+            and all(
+                len(x) == 1 and _only_kind(y.removeprefix("the "), lexicon, "object")
+                for x, y in zip(ids, items, strict=True)
+            )
+            and len(set().union(*ids)) == len(items)
+        ):
+            return m.group(2)
+        return m.group(0)
+
+    text = _sub(r"\ba couple of (?=(?:things|items|objects)\b)", "two ", text)
+    text = _sub(
+        r"\b(one|two|three|four|five|six|[1-6]) (?:things?|items?|objects?)\s*[,:]\s*((?:the |a |a"
+        r"n )[a-z][\w ]*?(?:(?:,\s*|\s+and\s+)(?:the |a |an )[a-z][\w ]*?)*)(?=,|\s*[.;!?]|$)",
+        listed,
+        text,
+    )
+
+    def only(m: re.Match[str]) -> str:
+        words = m.group(1).split()
+        for n in (2, 1):
+            said = " ".join(words[:n])
+            if len(words) >= n and _only(said, lexicon, "object"):
+                return f"the {said}{m.group(1)[len(said) :]}"
+        return m.group(0)
+
+    return _sub(r"\bthe only ([a-z]+(?: [a-z]+)?)\b", only, text)
+
+
+def _tasks_of(text: str, lexicon: Lexicon) -> set[tuple[str, str, str]] | None:
+    """The (kind, object, target) of every task the grammar reads in ``text``; None if refused."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        node = parse_instruction(text, lexicon.scene, lexicon)
+    except GroundingError:
+        return None
+    return {(t.kind, t.obj, t.target) for t in tasks(node)}
+
+
+_DONT = r"(?:please |just |and |but |so |also )*(?:don't|do not|dont|never)\s+"
+_DO_VERBS = r"(?:give|hand|pass|bring|take|send|put|place|move|leave|set|drop|deliver)\b"
+
+
+def _negated(text: str, lexicon: Lexicon) -> str:
+    """A negated command beside a request: 'Give Bob the chips. Don't give him the apple.' and
+    "Don't put the crisps on the shelf, give them to Alice". The negated command is read as if
+    it were asked (its he/she being the one person of the request), and dropped only when none
+    of its tasks is among the request's (with 'it'/'them' in the request being its object, when
+    it comes first); else the negation stays, and is refused."""
+    # "Don't put the lemon on the rack, give it to Marco"
+    m = re.match(
+        rf"^{_DONT}({_DO_VERBS}[^,;.!?]*?)\s*[,;.]\s*(?:(?:but|instead|and|rather|just|please),?"
+        r"\s+)*(.+?)$",
+        text.strip(),
+        _F,
+    )
+    if m is not None:
+        said, rest = m.group(1), m.group(2)
+        objects = [it for it in _names(said, lexicon) if it.refs[0].kind == "object"]
+        own = [it for it in _names(rest, lexicon) if it.refs[0].kind == "object"]
+        if len(objects) == 1 and not own and re.search(r"\b(?:it|them)\b", rest, _F):
+            rest = _sub(r"\b(?:it|them)\b", f"the {objects[0].text}", rest)
+        return _unless_asked(said, rest, rest, lexicon) or text
+    # "Give Bob the chips. Don't give him the apple." / "…, but don't hand her the bib"
+    m = re.match(
+        rf"^(.+?)\s*(?:[.;!]|,)\s*{_DONT}({_DO_VERBS}[^.;!?]*?)\s*[.!]?$", text.strip(), _F
+    )
+    if m is not None:
+        rest, said = m.group(1), m.group(2)
+        who = one_person(rest, lexicon)
+        if who is not None:
+            said = _sub(r"\b(?:he|she|him|her)\b", who, said)
+        return _unless_asked(said, rest, rest, lexicon) or text
+    # "Not to Mrs Khan, the magazine goes to Mr Lee": a place or person left out, said first
+    m = re.match(r"^not (?:to|for|on|onto|in|into) ([^,;.!?]+?)\s*,\s*(.+)$", text.strip(), _F)
+    if m is not None:
+        named = _names(m.group(1), lexicon)
+        if not named or any(r.kind == "object" for it in named for r in it.refs):
+            return text
+        if m.group(1).lower().removeprefix("the ") != named[0].text.lower() or len(named) > 1:
+            return text
+        kept = _tasks_of(m.group(2), lexicon)
+        if kept is None:
+            return m.group(2)  # refused either way; its refusal may list readings
+        if not kept or any(t[2] in {r.id for r in named[0].refs} for t in kept):
+            return text
+        return m.group(2)
+    return text
+
+
+def _unless_asked(said: str, request: str, result: str, lexicon: Lexicon) -> str | None:
+    """``result`` when the grammar reads both ``said`` (a negated command, read as if asked) and
+    ``request``, and no task of the first is one of the second's; else None."""
+    if _KEEP_WORDS.search(re.sub(r"\b(?:the|and|them|it|him|her)\b", " ", said)) and re.search(
+        r"\b(?:all|everything|any|anything|each|every|either|or|rest|other|others)\b", said, _F
+    ):
+        return None  # "don't give him anything else": not a task that can be left out
+    negated = _tasks_of(said, lexicon)
+    asked = _tasks_of(request, lexicon)
+    if not negated or not asked or negated & asked:
+        return None
+    return result
+
+
+def _confirmed(text: str, lexicon: Lexicon) -> str:
+    """'Give the bottle to Person B, wait, Person A, yes Person A': the correction said again
+    after 'yes' confirms it; 'Knife to Lena, oops, I meant tongs to Lena': a correction that is
+    a whole task (an object and where it goes) after a request of one task replaces it."""
+    text = _sub(
+        r"(\b(?:wait|no|sorry|oops|actually|i mean|i meant|hang on|hold on),?\s+([\w ]+?)),?\s+"
+        r"(?:yes|yeah|yep|yup)\b,?\s+\2(?=\s*[.!]?\s*$)",
+        r"\1",
+        text,
+    )
+    m = re.match(
+        r"^(.+?),?\s+(?:(?:oops|whoops|sorry|no|wait),?\s+)+i (?:meant|mean)\s+(.+?)"
+        r"\s*[.!]?$",
+        text.strip(),
+        _F,
+    )
+    if m is None:
+        return text
+    before, after = m.group(1), m.group(2)
+    old = _tasks_of(before, lexicon)
+    new = _tasks_of(after, lexicon)
+    said = _names(after, lexicon)
+    if (
+        old is None
+        or new is None
+        or len(old) != 1
+        or len(new) != 1
+        or not any(r.kind == "object" for it in said for r in it.refs)
+        or not any(r.kind != "object" for it in said for r in it.refs)
+    ):
+        return text
+    return after
+
+
+def _chance(text: str, _lexicon: Lexicon) -> str:
+    """'Any chance Lena could get the knife?': a request asked as a chance, when a modal follows
+    the person ('Any chance Lena has the knife?' asks whether she has it: left alone)."""
+    return _sub(
+        r"(^|(?<=[.;!?])\s*)(?:(?:so|and|hey|hi),?\s+)*(?:is there )?any (?:chance|way|possibility)"
+        r"(?: at all)?,? (?:that )?(?=(?:[\w ]+? )?(?:could|can|might|may|would|will)\b)",
+        r"\1",
+        text,
+    )
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _closing,
+    _courtesy,
+    _speaker,
+    _wants,
+    _purpose,
+    _when,
+    _elided,
+    _choice,
+    _negated,
+    _confirmed,
+    _chance,
     _thanks,
     _lacks,
     _texting,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import re
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -17,7 +18,7 @@ from hltl.grounding.lexicon import (
     lex,
     person_name,
 )
-from hltl.grounding.normalise import canonical
+from hltl.grounding.normalise import canonical, one_person
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -74,7 +75,10 @@ def parse_instruction(
     if normalise:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
     try:
-        return _read(text, scene, lexicon)
+        node = _read(text, scene, lexicon)
+        if normalise:
+            _not_before_itself(text, node, scene, lexicon)
+        return node
     except GroundingError as refused:
         if not normalise:
             raise
@@ -82,13 +86,43 @@ def parse_instruction(
         if plain == " ".join(text.split()):
             raise
         try:
-            return _read(plain, scene, lexicon)
+            node = _read(plain, scene, lexicon)
+            _not_before_itself(plain, node, scene, lexicon)
+            return node
         except GroundingError as rewritten:
             if _readings(rewritten) and not _readings(refused):
                 # "The patient is to be given the jug": the rewrite got as far as the name, and
                 # its refusal says which readings there are (the first only that it cannot parse)
                 raise rewritten from None
             raise refused from None
+
+
+_BEFORE = re.compile(r"^(.+?)\s+before\s+(?!that\b|this\b|then\b|now\b|[,.;!?])(.+)$", re.I)
+
+
+def _not_before_itself(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> None:
+    """'Marco needs the knife before he gets the knife': a task said to come before itself is
+    refused (the sequence would read as the task once). Each side of the first 'before' is read
+    alone (its he/she being the one person of the side before it)."""
+    m = _BEFORE.match(" ".join(text.split()))
+    if m is None or sum(1 for _ in tasks(node)) == 0:
+        return
+    first, then = m.group(1), m.group(2)
+    who = one_person(first, lexicon)
+    if who is not None:
+        then = re.sub(r"\b(?:he|she|him|her)\b", who, then, flags=re.I)
+    try:
+        early = set(tasks(parse_instruction(first, scene, lexicon)))
+        late = set(tasks(parse_instruction(then, scene, lexicon)))
+    except GroundingError:
+        return
+    both = early & late
+    if both:
+        task = min(both, key=lambda t: t.atom)
+        raise GroundingError(
+            f"{_task_words(task, lexicon)} is said to come before itself: an object is handed "
+            "over or placed only once; say each task once"
+        )
 
 
 def _readings(error: GroundingError) -> bool:
@@ -138,7 +172,30 @@ def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     if dropped:
         node = _without(node, dropped)
     check_deliveries(node, {h.id: h.name for h in scene.humans})
+    _not_given_then_placed(node, lexicon)
     return node
+
+
+def _not_given_then_placed(node: Node, lexicon: Lexicon) -> None:
+    """'Give Priya the stapler. Put the stapler in the box.': an object handed over in one part of
+    an 'and' and placed in a later one is said in an order that cannot be done (a handed-over
+    object is gone), and the other order is not what was said: refused, as in a sequence
+    (tree.check_deliveries). 'Put the cup on the shelf and give it to Bob' can be done as said."""
+    if isinstance(node, Task):
+        return
+    if node.op == "and":
+        for i, early in enumerate(node.children):
+            given = {t.obj: t for t in tasks(early) if t.kind == "deliver"}
+            for late in node.children[i + 1 :]:
+                for t in tasks(late):
+                    if t.kind == "place" and t.obj in given:
+                        first, then = _task_words(given[t.obj], lexicon), _task_words(t, lexicon)
+                        raise GroundingError(
+                            f"{first} and then {then}: a handed-over object is gone, so it cannot "
+                            "be placed after; say one, or place it first"
+                        )
+    for c in node.children:
+        _not_given_then_placed(c, lexicon)
 
 
 def _task_words(task: Task, lexicon: Lexicon) -> str:

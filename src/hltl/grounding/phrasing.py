@@ -95,14 +95,27 @@ def _each_sentence(
 def _questions(items: list[Item]) -> list[Item]:
     """A sentence opening with 'where', 'is', 'does', 'has' … asks; it does not request."""
     for start, end in _sentences(items):
-        k = start
-        while k < end and (_is(items[k], ",", "filler", "correct")):
-            k += 1
-        if k >= end:
-            continue
+        mark = end < len(items) and items[end].lemma == "?"
+        # "But is the apple on the shelf?", and with a question mark a clause after ", but" /
+        # ", and" ("No hurry, but would Bob like the cup?")
+        opens = [start]
+        if mark:
+            opens += [n + 1 for n in range(start, end - 1) if _is(items[n], ",")]
+            opens += [n for n in range(start + 1, end) if _is(items[n], "and")]
+        for k in opens:
+            _not_a_question(items, k, end, mark, start)
+    return items
+
+
+def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int) -> None:
+    """Refuse the sentence ``items[start:end]`` when the clause at ``k`` opens as a question."""
+    if k != start and not _is(items[k], "and"):
+        return  # after a comma only ", but …" / ", and …" opens a clause of its own
+    while k < end and (_is(items[k], ",", "filler", "correct", "and")):
+        k += 1
+    if k < end:
         first = items[k]
         nxt = items[k + 1] if k + 1 < end else None
-        mark = end < len(items) and items[end].lemma == "?"
         low = first.text.lower()
         # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
         offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
@@ -122,7 +135,6 @@ def _questions(items: list[Item]) -> list[Item]:
                 f"{words!r} is a question, not a request: say what to do, e.g. "
                 "'give Bob the chips' or 'put the cup on the shelf'"
             )
-    return items
 
 
 def _is_after(items: list[Item]) -> list[Item]:
@@ -1387,12 +1399,20 @@ def _corrections(items: list[Item]) -> list[Item]:
         while before and _is(before[-1], ",", "-", "filler"):
             before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
         after = _without_trailing_markers(items[j:])
-        if it.text.lower() in ("sorry", "oops") and (
-            not after or (after[0].kind == "punct" and after[0].lemma in _END)
-        ):
+        cut_off = not after or (after[0].kind == "punct" and after[0].lemma in _END)
+        apology = all(
+            x.text.lower() in ("sorry", "oops", "whoops") or _is(x, ",", "-") for x in items[k:j]
+        )
+        if it.text.lower() in ("sorry", "oops") and cut_off and apology:
             items = before + after  # "Give Bob the cup, sorry.": an apology, not a correction
             k = len(before)
             continue
+        if cut_off and before and not apology:
+            # "Salt to Marco, oops, I meant": the correction is cut off before what it names
+            marker = " ".join(x.text for x in items[k:j] if x.kind != "punct")
+            raise GroundingError(
+                f"{marker!r} starts a correction that names nothing: say what to change it to"
+            )
         whole = False  # correcting the sentence before, across its full stop
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
@@ -1842,8 +1862,39 @@ def _is_verb_item(item: Item) -> bool:
     return item.kind == "word" and item.lemma.startswith("verb:")
 
 
+def _but_after_place(items: list[Item]) -> list[Item]:
+    """'Put every box on the pallet but the small one': 'but' + objects ending the clause, after
+    the place or person of all the objects of a kind, leaves them out of those (it was read as
+    'and the small one', so every box): said right after them, as 'every box but the small one'
+    is read."""
+    for k, it in enumerate(items):
+        if not (_is(it, "and") and it.text.lower() == "but") or not _starts_objects(items, k + 1):
+            continue
+        m = k - 1
+        while m >= 0 and (
+            _is(items[m], "det", "filler", "on", "to", "for", ",")
+            or (items[m].kind == "ent" and not _objects(items[m]))
+        ):
+            m -= 1
+        if m < 0 or m == k - 1 or not _objects(items[m]) or len(items[m].refs) < 2:
+            continue
+        j = _past_dets(items, k + 1)
+        left = {r.id for r in items[j].refs}
+        if not left < {r.id for r in items[m].refs}:
+            continue  # not one of them
+        end = j + 1
+        while end < len(items) and _is(items[end], ",", "filler"):
+            end += 1
+        if end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
+            continue  # 'but the small one to Carol': a clause of its own
+        place = [x for x in items[m + 1 : k] if not _is(x, ",")]
+        return [*items[: m + 1], *items[k : j + 1], *place, *items[j + 1 :]]
+    return items
+
+
 def _exclusions(items: list[Item]) -> list[Item]:
     """'everything except the mugs', 'a mug, not the red one': remove them from the last name."""
+    items = _but_after_place(items)
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -1854,6 +1905,16 @@ def _exclusions(items: list[Item]) -> list[Item]:
         )
         if _is(it, "and") and low == "but" and out and out[-1].quant == "all":
             starts = _starts_objects(items, k + 1)  # "everything but the mugs"
+        elif (
+            _is(it, "and")
+            and low == "but"
+            and out
+            and _objects(out[-1])
+            and _starts_objects(items, k + 1)
+        ):
+            # "the mugs but the red one": one of those named, left out of them
+            said = {r.id for r in items[_past_dets(items, k + 1)].refs}
+            starts = len(out[-1].refs) > 1 and said < {r.id for r in out[-1].refs}
         if not starts:
             out.append(it)
             k += 1
@@ -2230,7 +2291,17 @@ def _last(items: list[Item]) -> list[Item]:
     if head < k and not (_is_verb_item(items[head]) or _humans(items[head])):
         part = _part_last(items[:start], clause)
         if part is not None:
-            return part
+            # what is said after it stays ('…, the red one last. Give Sam …'); more of the same
+            # sentence ('…, the red one last, and Sam the stapler') could be in the order or not
+            tail = items[k + 1 :]
+            ends = [n for n, x in enumerate(tail) if x.kind == "punct" and x.lemma in _END]
+            cut = ends[0] if ends else len(tail)
+            if any(not _is(x, ",", "filler") for x in tail[:cut]):
+                raise GroundingError(
+                    "what is said after 'last' in its sentence could be in the order or not: "
+                    "say it in a sentence of its own"
+                )
+            return [*part, *tail]
         if not (_starts_objects(items, head) and _own_clause(clause)):
             return items  # "the cup and the apple last": both last, or the apple after the cup?
         # objects with their own place or person: the clause is their whole list, back to a
@@ -4353,7 +4424,41 @@ def _each_nearest(items: list[Item]) -> list[Item]:
 
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
+def _choice_restated(items: list[Item]) -> list[Item]:
+    """'Stick a plate on the worktop, any plate': ', any <kind>' ending a sentence whose object
+    is already 'a/any <kind>' of the same objects says again that any will do (it was read as a
+    second plate)."""
+    out: list[Item] = []
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        k = len(sent)
+        while k > 0 and _is(sent[k - 1], "filler"):
+            k -= 1
+        if (
+            k >= 4
+            and _objects(sent[k - 1])
+            and _is(sent[k - 2], "q:some", "either")
+            and _is(sent[k - 3], ",")
+        ):
+            said = {r.id for r in sent[k - 1].refs}
+            before = [
+                n
+                for n in range(1, k - 3)
+                if _objects(sent[n])
+                and {r.id for r in sent[n].refs} == said
+                and _is(sent[n - 1], "det", "q:some", "either")
+                and sent[n - 1].text.lower() in ("a", "an", "any", "either")
+            ]
+            if len(said) > 1 and len(before) == 1:
+                sent = sent[: k - 3] + sent[k:]
+        out.extend(sent)
+        if end < len(items):
+            out.append(items[end])
+    return out
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_choice_restated),
     _plain(_any_order),
     _plain(_closing_also),
     _people_named,

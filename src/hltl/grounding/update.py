@@ -43,6 +43,7 @@ _CANCEL = re.compile(
     r"never\s*mind|no\s+longer|don'?t|do\s+not)\b[\s,]*",
     re.IGNORECASE,
 )
+_NEGATED = re.compile(r"\b(?:don'?t|do\s+not|never|not\s+(?:to|for|on|in|into|onto))\b", re.I)
 _INSTEAD_OF = re.compile(r"\binstead\s+of\s+(?P<x>[^,.;]+)", re.IGNORECASE)
 _INSTEAD = re.compile(r"\binstead\b", re.IGNORECASE)
 _FIRST = re.compile(
@@ -373,6 +374,14 @@ def _apply(
 ) -> Grounding:
     lexicon = Lexicon.of(scene)
     cmd = classify(instruction, lexicon)
+    if cmd.kind != "cancel" and _NEGATED.search(instruction):
+        # "Give Bob the chips. Don't give him the apple." grounds as the chips alone (the
+        # negated command leaves the apple alone), but in an update it could be cancelling a
+        # running task: which is meant is not said
+        raise GroundingError(
+            f"{quote(instruction.strip())} says what not to do beside a new task: to drop a "
+            "running task say 'cancel …', and give the new task on its own"
+        )
     if cmd.kind in ("add", "then", "first"):
         if not cmd.text.strip():
             raise GroundingError(f"no task in {quote(instruction.strip())}")

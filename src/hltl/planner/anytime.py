@@ -572,35 +572,66 @@ def _schedule_at_start(
     return res.ticks
 
 
+@dataclass(frozen=True, slots=True)
+class Certificate:
+    """What exact mode's first phase found (``certify``): a plan it proved optimal, and the
+    shortest plan it knows (the same one when proved; either may be None)."""
+
+    optimal: _Found | None
+    best: _Found | None
+
+
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
+    """The plan ``certify`` proves optimal, or None."""
+    return certify(problem, s, until).optimal
+
+
+def certify(
+    problem: Problem,
+    s: _Search,
+    until: float,
+    beside: Callable[[_Found | None], None] | None = None,
+) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
     bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
     the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
-    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal
-    and returned; None otherwise."""
+    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal.
+    Where none is proved, the shortest of those plans is handed back too (A* then looks only
+    for shorter ones). ``beside`` is called (with the prioritized plan) when the cheaper
+    model's schedule is no plan and the full model is to be asked: the caller may start A*
+    on the second core then, and the full model's levels are asked one at a time."""
+    none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
     if problem.monitor.accepted(start[2]):
-        return None
+        return none
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
-        return None
+        return none
     # in this order: importing CP-SAT (and pandas with it) costs a small plan its start-up
     if not (schedule.steps_applicable(problem) and lns.available()):
-        return None
+        return none
     h0 = heur(start)
     if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
-        return None  # (lines: A* alone; the joint re-plan below would take the phase's time)
+        return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
-    ticks, found = step_bound(problem, s, start, round(h0), None, until)
+    ticks, found = step_bound(
+        problem,
+        s,
+        start,
+        round(h0),
+        None,
+        until,
+        None if beside is None else lambda: beside(best),
+    )
     if found is not None:
-        return found
+        return Certificate(found, found)
     if best is None:
-        return None
+        return none
     if ticks >= best[0]:
-        return best  # no relaxed schedule is shorter
+        return Certificate(best, best)  # no relaxed schedule is shorter
     gls = goals(s, start)
     if gls and time.perf_counter() < until and _joint_possible(problem, gls):
         # the relaxation's schedule was no plan: CP-SAT re-plans every goal jointly from the
@@ -609,20 +640,29 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
         slack = max(0, ticks // shortest - len(best[1]))
         joint = _jointly(problem, s, _Router(s, start, gls), best, until, slack=slack)
         if joint is not None and joint[0] <= ticks:
-            return joint
-    return None
+            return Certificate(joint, joint)
+        if joint is not None and joint[0] < best[0]:
+            best = joint
+    return Certificate(None, best)
 
 
 def step_bound(
-    problem: Problem, s: _Search, start: Node, floor: int, upper: int | None, until: float
+    problem: Problem,
+    s: _Search,
+    start: Node,
+    floor: int,
+    upper: int | None,
+    until: float,
+    before_full: Callable[[], None] | None = None,
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
     ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and a plan of exactly that makespan
     when the relaxation's schedule at the bound is one (or the schedule with sessions whole
     is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
-    bisect, without it they are shaved one by one (``schedule.schedule_bound``). (``floor``,
-    None) when the bound does not apply; it is never below ``floor``."""
+    bisect, without it they are shaved one by one (``schedule.schedule_bound``, which calls
+    ``before_full`` before it asks the full model). (``floor``, None) when the bound does not
+    apply; it is never below ``floor``."""
     if not (lns.available() and schedule.steps_applicable(problem)):
         return floor, None
     heur = s.heuristic
@@ -648,6 +688,7 @@ def step_bound(
         deadline=until,
         steps=True,
         accept=is_plan,
+        before_full=before_full,
     )
     if res.steps is None:
         return res.ticks, None
@@ -897,12 +938,15 @@ class _OrderWalk:
 
 
 def with_fallback_plan(
-    problem: Problem, result: PlanResult, until: float | None = None
+    problem: Problem, result: PlanResult, until: float | None = None, known: _Found | None = None
 ) -> PlanResult:
     """A timed-out exact result with a prioritized plan attached (status unchanged): the first
-    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``)."""
+    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``),
+    or ``known`` (a plan found before) where that is shorter."""
     s = _Search(problem)
     found = construct(problem, s)
+    if found is None or (known is not None and known[0] < found[0]):
+        found = known
     if found is None:
         return result
     if until is not None and time.perf_counter() < until:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -33,9 +34,38 @@ def available() -> bool:
     return True
 
 
-def solve_until(model: Any, deadline: float, seed: int) -> tuple[Any, Any] | None:
+class Stop:
+    """A way to stop, from another thread, the CP-SAT solves of one question
+    (``solve_until``'s ``stop``): once ``stop`` is called, a solve not yet started returns
+    None and a running one ends soon with an unknown status."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._solver: Any = None
+        self.stopped = False
+
+    def attach(self, solver: Any) -> bool:
+        """``solver`` is about to solve; False when the question is stopped already."""
+        with self._lock:
+            self._solver = solver
+            return not self.stopped
+
+    def stop(self) -> None:
+        """Stop the question. A solve that had not yet begun when this was called may miss it:
+        call it again until the question has ended."""
+        with self._lock:
+            self.stopped = True
+            solver = self._solver
+        if solver is not None:
+            solver.stop_search()
+
+
+def solve_until(
+    model: Any, deadline: float, seed: int, stop: Stop | None = None
+) -> tuple[Any, Any] | None:
     """Solve a CP-SAT ``model`` on one worker with ``seed`` until ``deadline``
-    (``time.perf_counter()``); the solver and its status, or None when no time is left."""
+    (``time.perf_counter()``); the solver and its status, or None when no time is left (or
+    ``stop`` stopped the question before the solve began)."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     left = deadline - time.perf_counter()
@@ -45,6 +75,8 @@ def solve_until(model: Any, deadline: float, seed: int) -> tuple[Any, Any] | Non
     solver.parameters.max_time_in_seconds = left
     solver.parameters.num_workers = 1
     solver.parameters.random_seed = seed
+    if stop is not None and not stop.attach(solver):
+        return None
     return solver, solver.solve(model)
 
 

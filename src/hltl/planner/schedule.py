@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from functools import reduce
 from itertools import pairwise
 from typing import Any
 
-from hltl.planner.lns import solve_until
+from hltl.planner.lns import Stop, solve_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.hierarchy import HSpec
@@ -136,6 +138,8 @@ def _orders(spec: HSpec) -> list[tuple[Atom, Atom]]:
 # core), at most MAX_SKIP at a time (``_shave``)
 CHEAP_NO = 0.25
 MAX_SKIP = 4
+# levels the climbs ask at once (``_shave``), one thread each: two cores, when there are two
+WORKERS = min(2, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1)
 
 
 def schedule_bound(
@@ -150,6 +154,7 @@ def schedule_bound(
     seed: int = 0,
     steps: bool = False,
     accept: Callable[[tuple[tuple[Instance, ...], ...]], bool] | None = None,
+    before_full: Callable[[], None] | None = None,
 ) -> ScheduleBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen, from a relaxed schedule (docs/planner.md, "Scheduling bound").
@@ -171,6 +176,8 @@ def schedule_bound(
     from there on are asked of the full model, each first with every session whole
     (``_shave`` with ``whole_first``; a plan from it is optimal: the schedule returned).
     Every "no" of the weaker model is one of the full model's (it is a relaxation of it).
+    ``before_full`` is called before the full model's levels are asked, and they are then
+    asked one at a time (the caller has other work for the second core).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
@@ -184,8 +191,12 @@ def schedule_bound(
     if accept is None or res.steps is None or accept(res.steps):
         return res
     level = res.ticks // unit
+    workers = None
+    if before_full is not None:
+        before_full()
+        workers = 1
     return _shave(
-        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True
+        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True, workers
     )
 
 
@@ -202,9 +213,10 @@ def _shave(
     steps: bool,
     weak: bool,
     whole_first: bool = False,
+    workers: int | None = None,
 ) -> ScheduleBound:
-    """The relaxation's optimum from ``level`` units up, one level at a time (``steps``: the
-    step model, ``weak``: without ``holders``; else the interval model).
+    """The relaxation's optimum from ``level`` units up (``steps``: the step model, ``weak``:
+    without ``holders``; else the interval model).
 
     With ``whole_first`` (the full step model) each level is asked first with every session
     whole: a restriction of the full model (its "no" proves nothing) that finds a schedule far
@@ -216,57 +228,101 @@ def _shave(
     CP-SAT less than ``CHEAP_NO`` deterministic seconds the next level asked is twice as far
     up as the last step (at most ``MAX_SKIP`` levels), after a dearer one the next level.
     A "no" at a level is a "no" at every level below it, so the skipped ones need no asking
-    unless a schedule turns up above them: then they are asked one at a time from the lowest,
-    and the first schedule found is the optimum (docs/planner.md, "Which levels are asked")."""
+    unless a schedule turns up above them: then they are asked from the lowest, and the first
+    schedule found is the optimum (docs/planner.md, "Which levels are asked").
+
+    ``workers`` (default ``WORKERS``) levels are asked at once, each on a thread of its own
+    (CP-SAT leaves Python's lock while it solves): the level the climb would ask next and the
+    ones just above it. A
+    "no" answers every level below it and a schedule every level above it, so a question whose
+    answer another one implies is stopped, and its answer is never used: the optimum found,
+    its schedule (one CP-SAT worker with a fixed seed at a fixed level) and the levels asked
+    are the same whichever question ends first."""
     unit = time_unit(problem)
     top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
     proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
     skip = 1 if steps and not whole_first else 0  # 0: one level at a time
-    above: tuple[int, ScheduleBound] | None = None  # a schedule found past skipped levels
-    spent: list[float] = []
-    while top is None or level < top:
-        if above is not None and level == above[0]:
-            return above[1]
+    workers = WORKERS if workers is None else workers
+    lowest: tuple[int, ScheduleBound] | None = None  # the lowest level with a schedule found
+
+    def ask(at: int, stop: Stop) -> tuple[tuple[tuple[Instance, ...], ...] | bool | None, float]:
+        """One level's answer (a schedule, True: one exists, False, None: unknown) and the
+        deterministic seconds CP-SAT took to find it."""
         if whole_first:
             whole = relaxed_steps(
-                problem, graph, node, tgts, level, deadline, seed=seed, whole=True
+                problem, graph, node, tgts, at, deadline, seed=seed, whole=True, stop=stop
             )
-            if whole is None:
-                return ScheduleBound(max(floor, level * unit), False, len(tgts))
-            if isinstance(whole, tuple):
-                return ScheduleBound(max(floor, level * unit), True, len(tgts), whole)
-        asked = len(spent)
-        if steps:
-            found = relaxed_steps(
-                problem,
-                graph,
-                node,
-                tgts,
-                level,
-                deadline,
-                seed=seed,
-                holders=not weak,
-                spent=spent,
-            )
-        else:
-            found = _feasible(problem, graph, node, tgts, level, unit, deadline, seed)
-        if found is None:  # out of time
-            return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
-        if found is not False:
-            got = None if found is True else found
-            res = ScheduleBound(max(floor, level * unit), True, len(tgts), got)
-            if level == proved + 1:
-                return res
-            # levels were skipped below this one: ask them, one at a time from the lowest
-            above, level, skip = (level, res), proved + 1, 0
-            continue
-        proved = level
-        if skip:
-            skip = min(2 * skip, MAX_SKIP) if sum(spent[asked:]) < CHEAP_NO else 1
-        level = proved + max(1, skip)
-        if top is not None and level >= top:
-            level = max(proved + 1, top - 1)
-    return ScheduleBound(max(floor, upper or 0), True, len(tgts))
+            if whole is None or isinstance(whole, tuple):
+                return whole, 0.0
+        if not steps:
+            return _feasible(problem, graph, node, tgts, at, unit, deadline, seed, stop), 0.0
+        spent: list[float] = []
+        found = relaxed_steps(
+            problem,
+            graph,
+            node,
+            tgts,
+            at,
+            deadline,
+            seed=seed,
+            holders=not weak,
+            spent=spent,
+            stop=stop,
+        )
+        return found, sum(spent)
+
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        while True:
+            if lowest is not None and lowest[0] == proved + 1:
+                return lowest[1]
+            if top is not None and proved + 1 >= top:
+                return ScheduleBound(max(floor, upper or 0), True, len(tgts))
+            if lowest is not None:  # levels were skipped below it: ask them from the lowest
+                first = proved + 1
+            else:
+                first = proved + max(1, skip)
+                if top is not None and first >= top:
+                    first = max(proved + 1, top - 1)
+            levels = [
+                at
+                for at in range(first, first + workers)
+                if (top is None or at < top) and (lowest is None or at < lowest[0])
+            ]
+            asked = {at: Stop() for at in levels}
+            running = {pool.submit(ask, at, asked[at]): at for at in levels}
+            out_of_time = False
+            dear = 0.0  # CP-SAT's time for the highest "no" of this round
+            while running:
+                stopping = [stop for stop in asked.values() if stop.stopped]
+                done, _ = wait(
+                    running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
+                )
+                for stop in stopping:
+                    stop.stop()  # again: a solve may have begun after the first call
+                for future in sorted(done, key=running.__getitem__):
+                    at = running.pop(future)
+                    if asked[at].stopped:
+                        continue  # another answer implies this one
+                    found, dt = future.result()
+                    if found is None:
+                        out_of_time = True
+                    elif found is False:
+                        if at > proved:
+                            proved, dear = at, dt
+                    else:
+                        got = None if found is True else found
+                        res = ScheduleBound(max(floor, at * unit), True, len(tgts), got)
+                        if lowest is None or at < lowest[0]:
+                            lowest = (at, res)
+                    for other in running.values():
+                        if out_of_time or other <= proved or (lowest and other >= lowest[0]):
+                            asked[other].stop()
+            if out_of_time:
+                return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
+            if skip and lowest is None:
+                skip = min(2 * skip, MAX_SKIP) if dear < CHEAP_NO else 1
+            elif lowest is not None:
+                skip = 0
 
 
 def _bisect(
@@ -316,9 +372,10 @@ def _feasible(
     unit: int,
     deadline: float,
     seed: int,
+    stop: Stop | None = None,
 ) -> bool | None:
     """Whether some relaxed schedule makes every target happen by ``level`` units (None: CP-SAT
-    could not tell before ``deadline``).
+    could not tell before ``deadline``, or ``stop`` stopped it).
 
     The relaxation (``_relaxation`` on a time line, ``_Times``): each target's object follows a
     path of instances from where it is to an instance that makes the atom happen, each
@@ -334,7 +391,7 @@ def _feasible(
     axis = _Times(cp_model.CpModel(), level, unit)
     if not _relaxation(problem, graph, node, tgts, axis):
         return False
-    solver = _solve(axis, deadline, seed)
+    solver = _solve(axis, deadline, seed, stop=stop)
     return solver if solver is None or solver is False else True
 
 
@@ -356,10 +413,12 @@ def relaxed_steps(
     whole: bool = False,
     holders: bool = True,
     spent: list[float] | None = None,
+    stop: Stop | None = None,
 ) -> tuple[tuple[Instance, ...], ...] | bool | None:
     """A step-indexed relaxed schedule that makes every target happen by ``level`` time units
     (``time_unit``), as its non-empty steps; False when CP-SAT proved there is none, None when
-    it could not tell before ``deadline``. docs/planner.md, "Step bound".
+    it could not tell before ``deadline`` (or ``stop`` stopped it). docs/planner.md, "Step
+    bound".
 
     With ``whole`` no session is split (a restriction, not a relaxation: its "no" proves
     nothing, but its schedules are more often plans). CP-SAT's deterministic time is appended
@@ -386,7 +445,7 @@ def relaxed_steps(
     axis = _Steps(cp_model.CpModel(), p, level, unit, whole, holders)
     if not _relaxation(p, graph, node, tgts, axis):
         return False
-    solver = _solve(axis, deadline, seed, spent)
+    solver = _solve(axis, deadline, seed, spent, stop)
     if solver is None or solver is False:
         return solver
     out: list[list[Instance]] = [[] for _ in range(axis.horizon)]
@@ -397,13 +456,19 @@ def relaxed_steps(
     return tuple(tuple(step) for step in out if step)
 
 
-def _solve(axis: _Axis, deadline: float, seed: int, spent: list[float] | None = None) -> Any:
+def _solve(
+    axis: _Axis,
+    deadline: float,
+    seed: int,
+    spent: list[float] | None = None,
+    stop: Stop | None = None,
+) -> Any:
     """CP-SAT on the model built on ``axis``: its solver when it found a schedule, False when
-    it proved there is none, None when it could not tell before ``deadline``. CP-SAT's
-    deterministic time is appended to ``spent``."""
+    it proved there is none, None when it could not tell before ``deadline`` (or ``stop``
+    stopped it). CP-SAT's deterministic time is appended to ``spent``."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
-    solved = solve_until(axis.model, deadline, seed)
+    solved = solve_until(axis.model, deadline, seed, stop)
     if solved is None:
         return None
     solver, status = solved

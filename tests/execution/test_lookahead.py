@@ -1,0 +1,87 @@
+"""The executor tells a driver that takes hints its plan's next steps, and nothing else changes."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any, ClassVar
+
+import pytest
+
+from hltl.execution.drivers import Expected, Lookahead, RobotDriver
+from hltl.sim import scenarios
+from hltl.sim.dynamic import make_trial
+from hltl.sim.episode import run_episode
+from hltl.sim.events import load_events
+from hltl.sim.simulator import Simulator
+
+EVENTS = Path(__file__).resolve().parents[2] / "examples" / "events"
+
+
+class _Hinted(Simulator):
+    """The discrete simulator, also taking the executor's hints (and ignoring them)."""
+
+    made: ClassVar[list[_Hinted]] = []
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.hints: list[tuple[float, tuple[Expected, ...]]] = []
+        _Hinted.made.append(self)
+
+    def expect(self, steps: Sequence[Expected]) -> None:
+        self.hints.append((self.now, tuple(steps)))
+
+
+def _no_wall_clock(records: Sequence[Any]) -> list[dict[str, Any]]:
+    return [{k: v for k, v in r.to_json().items() if not k.endswith("_ms")} for r in records]
+
+
+def test_the_in_process_simulator_takes_no_hints() -> None:
+    sim, hinted = Simulator.__new__(Simulator), _Hinted.__new__(_Hinted)
+    assert isinstance(sim, RobotDriver) and not isinstance(sim, Lookahead)
+    assert isinstance(hinted, Lookahead)
+
+
+def _episodes() -> list[tuple[str, Any, dict[str, Any]]]:
+    sc = scenarios.get("fig1")
+    fig1 = {
+        "instruction": sc.instruction,
+        "events": load_events(EVENTS / "fig1.yaml", sc.scene),
+        "seed": 3,
+    }
+    out = [("fig1", sc.scene, fig1)]
+    for config, index in (("4-1", 0), ("4-4-square", 0), ("2-1", 1)):
+        tr = make_trial(config, index)
+        kw = {"instruction": tr.instruction, "events": tr.events, "seed": tr.seed}
+        out.append((f"{config}#{index}", tr.scene, kw))
+    return out
+
+
+@pytest.mark.parametrize(("name", "scene", "kw"), _episodes(), ids=[e[0] for e in _episodes()])
+def test_hints_are_the_plans_next_steps_and_change_nothing(
+    name: str, scene: Any, kw: dict[str, Any]
+) -> None:
+    """A driver that takes hints gets, at each dispatch, the rest of the plan the step came
+    from (with when the plan expects each step to start); the episode is the one a driver
+    without hints gives, record for record."""
+    plain = run_episode(scene, **kw)
+    _Hinted.made.clear()
+    hinted = run_episode(scene, simulator=_Hinted, **kw)
+    assert _no_wall_clock(hinted.records) == _no_wall_clock(plain.records)
+    (sim,) = _Hinted.made
+    dispatches = [r for r in plain.records if r.type == "dispatch"]
+    assert [t for t, _ in sim.hints] == pytest.approx([r.t for r in dispatches], abs=1e-6)
+    # each hint is the plan's steps after the one dispatched, as the last plan logged says
+    for (t, hint), d in zip(sim.hints, dispatches, strict=True):
+        plans = [
+            r
+            for r in plain.records
+            if r.type == "replan" and r.t <= d.t and r.status == "solved" and r.steps
+        ]
+        steps = plans[-1].steps
+        assert steps[0]["actions"] == d.planned
+        assert [[a.to_dict() for a in e.actions] for e in hint] == [s["actions"] for s in steps[1:]]
+        at = t + steps[0]["duration"]
+        for e, s in zip(hint, steps[1:], strict=True):
+            assert e.at == pytest.approx(at, abs=1e-5)
+            at += s["duration"]
