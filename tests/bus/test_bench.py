@@ -20,6 +20,9 @@ def test_bench_bus_small() -> None:
     # and with each stretch streamed instead of in one answer: the same log, queries counted
     assert b.streamed.same_logs == 1 and 0 < b.streamed.waited_s < b.streamed.bus_s
     assert b.apart.queries > 0 and b.streamed.queries > 0
+    # and without the executor's hints: the same log, every step's commands in a query
+    u = b.unhinted
+    assert u is not None and u.same_logs == 1 and u.guessed == 0 and b.apart.guessed > 0
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
@@ -31,6 +34,7 @@ def test_bench_bus_small() -> None:
     text = format_bus(b, "hltl bench bus", "2026-01-01", "test")
     assert "## Bus" in text and "1/1" in text and "### Real time" in text
     assert "process of its own" in text and "waits" in text and "streamed instead" in text
+    assert "without the executor's hints" in text
 
 
 def test_bench_bus_suite_with_the_3d_simulator() -> None:

@@ -66,7 +66,9 @@ def test_guessed_steps_save_round_trips(loopback: Loopback) -> None:
     assert off.node.stats.guessed == off.cell.stats.guessed == 0
     # a step whose guess was kept needs no query for its commands (a stretch still ends at
     # its span: then a plain step query)
-    assert on.cell.stats.queries * 2 < off.cell.stats.queries
+    # (retransmissions aside: a loaded machine may stall an answer past the timeout)
+    sent = [r.cell.stats.queries - r.cell.stats.retransmits for r in (on, off)]
+    assert sent[0] * 2 < sent[1]
     assert on.cell.stats.streamed == 0  # (guessed steps come as further replies, not a stream)
 
 
@@ -102,10 +104,28 @@ def test_a_wrong_guess_never_shows(loopback: Loopback, monkeypatch: pytest.Monke
         with lock:
             heard.append(rep)
 
+    def outcomes(episode: str) -> set[tuple[int, str, float]]:
+        with lock:
+            return {
+                (r.handle, r.status.state.value, round(r.status.t, 6))
+                for r in heard
+                if r.status.terminal and r.episode == episode
+            }
+
     sub = loopback._exec_session.declare_subscriber(Keys("default").all_status, on_status)
     try:
         run = loopback.run(scene, **kw)
-        time.sleep(0.3)  # (the reports published before the episode's end, still in flight)
+        ends = {
+            (r.handle, kind, r.end)
+            for r in run.episode.records
+            for kind in [_ended(r)]
+            if kind is not None
+        }
+        # (the reports published before the episode's end may still be in flight)
+        deadline = time.monotonic() + 5.0
+        while not ends <= outcomes(run.cell.episode) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        time.sleep(0.1)  # (and anything a guess would have published, after them)
     finally:
         sub.undeclare()
     _same(local, run)
@@ -114,19 +134,7 @@ def test_a_wrong_guess_never_shows(loopback: Loopback, monkeypatch: pytest.Monke
     assert run.cell.stats.guessed == 0
     # the executor knew each guess wrong from its own commands: it never waited for one
     assert run.cell.stats.guessed_ahead == 0
-    ends = {
-        (r.handle, kind, r.end)
-        for r in run.episode.records
-        for kind in [_ended(r)]
-        if kind is not None
-    }
-    with lock:
-        outcomes = {
-            (r.handle, r.status.state.value, round(r.status.t, 6))
-            for r in heard
-            if r.status.terminal and r.episode == run.cell.episode
-        }
-    assert outcomes == ends
+    assert outcomes(run.cell.episode) == ends
 
 
 def _ended(rec: LogRecord) -> str | None:

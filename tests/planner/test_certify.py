@@ -4,9 +4,12 @@ is returned without A*; it must be exactly as short as plain A*'s, and valid."""
 from __future__ import annotations
 
 import math
+import threading
+from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 
+from hltl import planner
 from hltl.bench.cells import delivery_cell
 from hltl.planner import anytime, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
@@ -26,6 +29,7 @@ pytest.importorskip("ortools")
         ("random", 4, 0),
         ("random", 4, 1),
         ("grid", 5, 4),
+        ("random", 5, 0),  # A* starts beside the full model, which proves the optimum first
     ],
 )
 def test_certified_plans_are_optimal(
@@ -117,7 +121,7 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
     # prioritized plan's makespan as ``upper``: it finds a shorter plan, which is optimal, or
     # proves there is none, and then that plan is optimal
     monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
-    monkeypatch.setattr(anytime, "step_bound", lambda _p, _s, _n, floor, _u, _t: (floor, None))
+    monkeypatch.setattr(anytime, "step_bound", lambda _p, _s, _n, floor, *_: (floor, None))
     monkeypatch.setattr(anytime, "_jointly", lambda *_, **__: None)
     c = delivery_cell(layout, n, seed)
     problem = Problem(c.scene, c.spec)
@@ -135,3 +139,48 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
         assert got.steps == plan_steps(problem, cert.best[1])
     else:
         assert cert.best[0] > to_ticks(got.makespan)
+
+
+def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # line 6 seed 5: the cheaper model's schedule is no plan, so A* starts beside the full
+    # model's climb (planner._Beside), which proves nothing here; the phase's joint re-plan is
+    # optimal, so A* finds a plan as short when it runs first, and none shorter when it runs
+    # last: either way the plan returned is the phase's (a mutation check: returning A*'s
+    # own plan when it is no shorter makes the two differ)
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    real_start, real_finish = planner._Beside.start, planner._Beside.finish
+    order = {"mode": ""}
+    release = threading.Event()
+    started: list[str] = []
+
+    def start(self: planner._Beside, pool: ThreadPoolExecutor, first: object) -> None:
+        started.append(order["mode"])
+        if order["mode"] == "phase first":
+            # the pool has one thread: A* waits behind this until the phase has ended
+            pool.submit(release.wait)
+        real_start(self, pool, first)  # type: ignore[arg-type]
+        if order["mode"] == "astar first":
+            assert self.future is not None
+            self.future.result()
+
+    def finish(self: planner._Beside, cert: anytime.Certificate) -> object:
+        assert cert.optimal is None
+        release.set()
+        return real_finish(self, cert)
+
+    monkeypatch.setattr(planner._Beside, "start", start)
+    monkeypatch.setattr(planner._Beside, "finish", finish)
+    c = delivery_cell("line", 6, 5)
+    expected = search(Problem(c.scene, c.spec), timeout=120)
+    steps = []
+    for mode in ("astar first", "phase first"):
+        order["mode"] = mode
+        release.clear()
+        got = plan(c.scene, c.spec, timeout=120)
+        assert got.solved and got.makespan == pytest.approx(expected.makespan)
+        check_plan(c.scene, c.spec, got.to_dict())
+        steps.append(got.steps)
+    assert started == ["astar first", "phase first"]
+    assert steps[0] == steps[1]

@@ -91,6 +91,8 @@ class BusBench:
     lost: int
     duplicated: int
     realtime: RealtimeBench
+    # the suite, node apart, without the executor's hints (each step's commands cost a query)
+    unhinted: ApartBench | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -106,6 +108,7 @@ class ApartBench:
     waited_s: float = 0.0  # wall time the loop waited for the node's answers
     inproc_main_cpu_s: float = 0.0  # the loop's thread's CPU time in-process, for comparison
     queries: int = 0  # queries the executor sent
+    guessed: int = 0  # the executor's starts taken from the node's guesses (no query)
 
 
 @dataclass(frozen=True, slots=True)
@@ -244,7 +247,8 @@ def bench_bus(
         inproc = bus = inproc_cpu = bus_cpu = inproc_main = 0.0
         same = ticks = queries = undone = 0
         steps: list[float] = []
-        runs: dict[bool | None, list[_Apart]] = {None: [], True: []}  # as chosen, streamed
+        # as chosen, streamed, and as chosen without the executor's hints
+        runs: dict[bool | str | None, list[_Apart]] = {None: [], True: [], "unhinted": []}
         with _node_process(episodes) as (apart_session, node_cpu):
             for i, tr in enumerate(trials):
                 kw: dict[str, Any] = {
@@ -261,6 +265,9 @@ def bench_bus(
                 # answer for the discrete simulator), and streamed
                 for stream in (None, True):
                     runs[stream].append(_apart_episode(apart_session, i, tr, kw, a, stream))
+                runs["unhinted"].append(
+                    _apart_episode(apart_session, i, tr, kw, a, None, guess=False)
+                )
                 # the node in this process
                 b, stats = _suite_episode(ns, cs, tr, kw)
                 bus += stats.wall
@@ -274,7 +281,7 @@ def bench_bus(
                     f"{tr.config}#{tr.index}: same log {same}, node apart "
                     f"{sum(r.same for r in runs[True])}"
                 )
-        apart_bench, streamed = (
+        apart_bench, streamed, unhinted = (
             ApartBench(
                 sum(r.wall for r in runs[stream]),
                 sum(r.cpu for r in runs[stream]),
@@ -284,8 +291,9 @@ def bench_bus(
                 sum(r.waited for r in runs[stream]),
                 inproc_main,
                 sum(r.queries for r in runs[stream]),
+                sum(r.guessed for r in runs[stream]),
             )
-            for stream in (None, True)
+            for stream in (None, True, "unhinted")
         )
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
@@ -334,6 +342,7 @@ def bench_bus(
         lost,
         dup,
         rt_bench,
+        unhinted,
     )
 
 
@@ -448,13 +457,20 @@ class _Apart:
     waited: float
     queries: int
     same: bool
+    guessed: int = 0
 
 
 def _apart_episode(
-    session: Any, i: int, tr: Trial, kw: dict[str, Any], local: Episode, stream: bool | None
+    session: Any,
+    i: int,
+    tr: Trial,
+    kw: dict[str, Any],
+    local: Episode,
+    stream: bool | None,
+    guess: bool = True,
 ) -> _Apart:
     opened: list[BusCell] = []
-    make = bus_cell(session, cell=f"suite{i}", opened=opened, stream=stream)
+    make = bus_cell(session, cell=f"suite{i}", opened=opened, stream=stream, guess=guess)
     t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
     b = run_episode(tr.scene, simulator=make, **kw)
     wall, cpu, main = time.perf_counter() - t0, time.process_time() - c0, time.thread_time() - m0
@@ -462,7 +478,7 @@ def _apart_episode(
     opened[0].end()
     opened[0].close()
     same = _strip(list(local.records)) == _strip(list(b.records))
-    return _Apart(wall, cpu, main, st.waited, st.queries, same)
+    return _Apart(wall, cpu, main, st.waited, st.queries, same, st.guessed)
 
 
 @dataclass(frozen=True, slots=True)
@@ -590,6 +606,7 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "to judge the target |",
             f"| same suite over the bus, node in a process of its own (as deployed) | "
             f"{ap.bus_s:.2f} s ({apart_over:+.1f} %) | within 10 % |",
+            *_format_unhinted(b),
             f"| the same, each stretch streamed instead of in one answer: wall; time the loop "
             f"waited for the node; queries | {st.bus_s:.2f} s ({_pct(st.bus_s, b.inproc_s):+.1f} "
             f"%); {st.waited_s:.2f} s (one answer: {ap.waited_s:.2f} s); {st.queries} (one "
@@ -625,7 +642,8 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "sim` in one terminal, `hltl run --bus` in another; one node per trial, started "
             "once before the suite; the node chooses how to send a stretch: in one answer for "
             "the discrete simulator), the same with each stretch streamed (the executor asks "
-            "for it), and the run with the node in the executor's process. The "
+            "for it), the same without the executor's hints (docs/bus.md, \"The executor's "
+            "hint\"), and the run with the node in the executor's process. The "
             "target is judged on the first: that is what a user sees. With two processes the "
             "node simulates on the other core, but the executor still waits for every answer, "
             "so the wall time counts the node's work before it answers; with one process the "
@@ -653,14 +671,33 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "command in the middle makes the node undo the rest (the simulator's state saved before"
             " the stretch, and every 8 ticks of a streamed one) and replay the ticks used since the"
             " last save, so the log is unchanged. A step's starts and halts ride the query that "
-            "follows "
-            f"them. Hence {b.queries / b.episodes:.0f} queries per episode for "
+            "follows them; with the executor's hint of its plan's next steps the node runs on "
+            "past a step's end, starting the next step on a guess (undone when the executor "
+            "commands something else), and sends each further step as a further reply, so a "
+            "step whose guess holds costs no query. "
+            f"Hence {b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % "
             "wall).",
             "",
             *_format_realtime(b.realtime),
         ]
     )
+
+
+def _format_unhinted(b: BusBench) -> list[str]:
+    """The rows comparing the suite with and without the executor's hints (node apart)."""
+    ap, un = b.apart, b.unhinted
+    if un is None:
+        return []
+    starts = ap.guessed
+    return [
+        f"| the executor's starts taken from the node's guesses (no query); queries, with / "
+        f"without the executor's hints | {starts}; {ap.queries} / {un.queries} | — |",
+        f"| the same suite without the executor's hints (each step's commands cost a query): "
+        f"wall; time the loop waited for the node | {un.bus_s:.2f} s "
+        f"({_pct(un.bus_s, b.inproc_s):+.1f} %); {un.waited_s:.2f} s (with hints: "
+        f"{ap.waited_s:.2f} s) | — |",
+    ]
 
 
 def _format_realtime(r: RealtimeBench) -> list[str]:

@@ -234,7 +234,13 @@ class _Router:
         """Earliest step at which the goal's atom happens, routing its object around the
         reservations (``busy``: per step the robots reserved in it, a bit mask; ``forever``: per
         robot the step from which it is taken): (actions by step, (robot, step) holds, final
-        step, robot that keeps the object afterwards or None)."""
+        step, robot that keeps the object afterwards or None).
+
+        Of the routes that make the atom happen at that step, the one that takes the fewest
+        robot-steps: an instance counts each of its robots, a step the object waits in a hand
+        counts its holder. Without that, a route would as soon move its object through idle
+        robots as let it wait, and those robots are then busy for the goals routed after it
+        (docs/planner.md, "Anytime mode")."""
         p = self.p
         holder = p.code_holder
         alive = self.alive[gi]
@@ -248,15 +254,16 @@ class _Router:
         horizon = max(busy, default=0) + 4 * len(p.locs) + earliest
         horizon += 8
         back: dict[tuple[int, int], tuple[int, Instance | None]] = {}
-        frontier = [start]
+        # per place the object can be in at step t: the fewest robot-steps that bring it there
+        frontier = {start: 0}
         for t in range(horizon):
             while k < len(taken) and taken[k][0] <= t:
                 gone |= taken[k][1]
                 k += 1
             blocked = busy.get(t, 0) | gone
-            nxt: list[int] = []
-            seen: set[int] = set()
-            for loc in frontier:
+            nxt: dict[int, int] = {}
+            done: tuple[int, int, Instance] | None = None  # (robot-steps, place, last instance)
+            for loc, cost in frontier.items():
                 r_hold = holder.get(loc)
                 if r_hold is not None and blocked >> r_hold & 1:
                     continue  # the holder is needed elsewhere in this step: impossible state
@@ -266,17 +273,21 @@ class _Router:
                         continue
                     if inst.executors & blocked:
                         continue
+                    c = cost + inst.executors.bit_count()
                     reached = fired if holds_at is None else holds_at[inst.post]
                     if reached and t >= earliest:
-                        return self._unwind(back, start, loc, t, inst)
-                    if inst.post not in seen:
-                        seen.add(inst.post)
+                        if done is None or c < done[0]:
+                            done = (c, loc, inst)
+                        continue
+                    if c < nxt.get(inst.post, math.inf):
+                        nxt[inst.post] = c
                         back[(inst.post, t + 1)] = (loc, inst)
-                        nxt.append(inst.post)
-                if loc not in seen:  # wait
-                    seen.add(loc)
+                c = cost + (r_hold is not None)  # wait (in a hand: its holder's step)
+                if c < nxt.get(loc, math.inf):
+                    nxt[loc] = c
                     back[(loc, t + 1)] = (loc, None)
-                    nxt.append(loc)
+            if done is not None:
+                return self._unwind(back, start, done[1], t, done[2])
             frontier = nxt
         return None
 
@@ -575,14 +586,21 @@ def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
     return certify(problem, s, until).optimal
 
 
-def certify(problem: Problem, s: _Search, until: float) -> Certificate:
+def certify(
+    problem: Problem,
+    s: _Search,
+    until: float,
+    beside: Callable[[_Found | None], None] | None = None,
+) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
     bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
     the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
     relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal.
     Where none is proved, the shortest of those plans is handed back too (A* then looks only
-    for shorter ones)."""
+    for shorter ones). ``beside`` is called (with the prioritized plan) when the cheaper
+    model's schedule is no plan and the full model is to be asked: the caller may start A*
+    on the second core then, and the full model's levels are asked one at a time."""
     none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
@@ -599,7 +617,15 @@ def certify(problem: Problem, s: _Search, until: float) -> Certificate:
     best = construct(problem, s)
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
-    ticks, found = step_bound(problem, s, start, round(h0), None, until)
+    ticks, found = step_bound(
+        problem,
+        s,
+        start,
+        round(h0),
+        None,
+        until,
+        None if beside is None else lambda: beside(best),
+    )
     if found is not None:
         return Certificate(found, found)
     if best is None:
@@ -621,15 +647,22 @@ def certify(problem: Problem, s: _Search, until: float) -> Certificate:
 
 
 def step_bound(
-    problem: Problem, s: _Search, start: Node, floor: int, upper: int | None, until: float
+    problem: Problem,
+    s: _Search,
+    start: Node,
+    floor: int,
+    upper: int | None,
+    until: float,
+    before_full: Callable[[], None] | None = None,
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
     ``floor`` of at most ``STEPS_UP_TO`` shortest steps), and a plan of exactly that makespan
     when the relaxation's schedule at the bound is one (or the schedule with sessions whole
     is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
-    bisect, without it they are shaved one by one (``schedule.schedule_bound``). (``floor``,
-    None) when the bound does not apply; it is never below ``floor``."""
+    bisect, without it they are shaved one by one (``schedule.schedule_bound``, which calls
+    ``before_full`` before it asks the full model). (``floor``, None) when the bound does not
+    apply; it is never below ``floor``."""
     if not (lns.available() and schedule.steps_applicable(problem)):
         return floor, None
     heur = s.heuristic
@@ -655,6 +688,7 @@ def step_bound(
         deadline=until,
         steps=True,
         accept=is_plan,
+        before_full=before_full,
     )
     if res.steps is None:
         return res.ticks, None

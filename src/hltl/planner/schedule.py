@@ -154,6 +154,7 @@ def schedule_bound(
     seed: int = 0,
     steps: bool = False,
     accept: Callable[[tuple[tuple[Instance, ...], ...]], bool] | None = None,
+    before_full: Callable[[], None] | None = None,
 ) -> ScheduleBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen, from a relaxed schedule (docs/planner.md, "Scheduling bound").
@@ -175,6 +176,8 @@ def schedule_bound(
     from there on are asked of the full model, each first with every session whole
     (``_shave`` with ``whole_first``; a plan from it is optimal: the schedule returned).
     Every "no" of the weaker model is one of the full model's (it is a relaxation of it).
+    ``before_full`` is called before the full model's levels are asked, and they are then
+    asked one at a time (the caller has other work for the second core).
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
@@ -188,8 +191,12 @@ def schedule_bound(
     if accept is None or res.steps is None or accept(res.steps):
         return res
     level = res.ticks // unit
+    workers = None
+    if before_full is not None:
+        before_full()
+        workers = 1
     return _shave(
-        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True
+        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True, workers
     )
 
 
@@ -206,6 +213,7 @@ def _shave(
     steps: bool,
     weak: bool,
     whole_first: bool = False,
+    workers: int | None = None,
 ) -> ScheduleBound:
     """The relaxation's optimum from ``level`` units up (``steps``: the step model, ``weak``:
     without ``holders``; else the interval model).
@@ -223,8 +231,9 @@ def _shave(
     unless a schedule turns up above them: then they are asked from the lowest, and the first
     schedule found is the optimum (docs/planner.md, "Which levels are asked").
 
-    ``WORKERS`` levels are asked at once, each on a thread of its own (CP-SAT leaves Python's
-    lock while it solves): the level the climb would ask next and the ones just above it. A
+    ``workers`` (default ``WORKERS``) levels are asked at once, each on a thread of its own
+    (CP-SAT leaves Python's lock while it solves): the level the climb would ask next and the
+    ones just above it. A
     "no" answers every level below it and a schedule every level above it, so a question whose
     answer another one implies is stopped, and its answer is never used: the optimum found,
     its schedule (one CP-SAT worker with a fixed seed at a fixed level) and the levels asked
@@ -233,6 +242,7 @@ def _shave(
     top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
     proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
     skip = 1 if steps and not whole_first else 0  # 0: one level at a time
+    workers = WORKERS if workers is None else workers
     lowest: tuple[int, ScheduleBound] | None = None  # the lowest level with a schedule found
 
     def ask(at: int, stop: Stop) -> tuple[tuple[tuple[Instance, ...], ...] | bool | None, float]:
@@ -261,7 +271,7 @@ def _shave(
         )
         return found, sum(spent)
 
-    with ThreadPoolExecutor(max_workers=WORKERS) as pool:
+    with ThreadPoolExecutor(max_workers=workers) as pool:
         while True:
             if lowest is not None and lowest[0] == proved + 1:
                 return lowest[1]
@@ -275,7 +285,7 @@ def _shave(
                     first = max(proved + 1, top - 1)
             levels = [
                 at
-                for at in range(first, first + WORKERS)
+                for at in range(first, first + workers)
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
             asked = {at: Stop() for at in levels}

@@ -33,6 +33,16 @@ Tag = tuple[int, int, int]
 Perm = tuple[int, ...] | None
 
 
+class Live:
+    """What another thread may tell a running ``search`` (its ``live``): a smaller ``upper``
+    (only plans cheaper than it are wanted from then on) or to stop (``stopped``: the search
+    returns ``timeout`` at its next expansion)."""
+
+    def __init__(self, upper: int | None = None) -> None:
+        self.upper = upper
+        self.stopped = False
+
+
 class _Search:
     """One search run; kept as an object so successor generation can reuse its memo tables."""
 
@@ -303,6 +313,7 @@ def search(
     pairs_after: int = PAIRS_AFTER,
     upper: int | None = None,
     state: _Search | None = None,
+    live: Live | None = None,
 ) -> PlanResult:
     """Minimum-makespan path from the problem's start node to the accepting set F.
 
@@ -319,6 +330,10 @@ def search(
             makespan); when none exists the result is ``infeasible`` with ``lower_bound`` equal
             to it, which proves the incumbent optimal.
         state: a search object to reuse (its heuristic tables and memos).
+        live: read at every expansion: another thread's smaller ``upper``, or its order to
+            stop. Nodes whose f reaches ``upper`` are dropped, which changes no expansion
+            below it: the plan found, when it is cheaper than every ``upper`` given, is the
+            one found without them.
     """
     if algorithm not in ALGORITHMS:
         raise ValueError(
@@ -385,6 +400,8 @@ def search(
         node_tags = tags[node]
         if seen_tags.get(node) == len(node_tags):
             continue  # already expanded with this g and these tags
+        if upper is not None and f >= upper:
+            continue  # (pushed before a smaller ``upper`` came: ``live``)
         if f > bound:
             bound = f  # every key on the open list is a lower bound on its node's f
         if heur is not None:
@@ -406,6 +423,11 @@ def search(
         now = time.perf_counter()
         if now > deadline or (max_expansions is not None and expanded > max_expansions):
             return stop(now - t0)
+        if live is not None:
+            if live.stopped:
+                return stop(now - t0)
+            if live.upper is not None and (upper is None or live.upper < upper):
+                upper = live.upper
         if on_progress is not None and expanded % 1024 == 0:
             on_progress(expanded, to_seconds(bound))
         n_children = 0
