@@ -540,6 +540,14 @@ def test_an_update_with_a_negated_command_beside_a_new_task_is_refused(text: str
             CELL,
         ),
         ("Give Lena the blue plate, any plate", None, KITCHEN),
+        # found by the last fuzz run: the restated choice before more of the sentence, and an
+        # apposition with 'one' after a person (it picks out an object: not dropped)
+        (
+            "Stick a plate on the worktop, any plate, but do not give the lemon to Marco",
+            "plate_white@counter | plate_blue@counter",
+            KITCHEN,
+        ),
+        ("Just the one cup for Omar, the green one, thanks so so much", None, LAB),
     ],
 )
 def test_blind12_wrong_readings_as_families(text: str, want: str | None, scene: Scene) -> None:

@@ -537,6 +537,13 @@ def _name(pid: str, lexicon: Lexicon) -> str:
 # -- asides ------------------------------------------------------------------------------------
 
 
+def _picks_object(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` is 'the <colour or size of an object> one' ('the green one'), which
+    picks out an object, unlike 'the one at the end'."""
+    m = re.search(r"\bthe (\w+) ones?\b", words, _F)
+    return m is not None and m.group(1).lower() in _adjectives(lexicon)
+
+
 def _asides(text: str, lexicon: Lexicon) -> str:
     """', who is at the front,' and ', the gentleman at the end,' said about someone or
     something: dropped when they name nothing of the scene; two names of one person keep one."""
@@ -569,7 +576,12 @@ def _asides(text: str, lexicon: Lexicon) -> str:
             )
             # "Mrs Ortiz, the class teacher,": a description naming nobody else
             himself = all({r.id for r in x.refs} == {r.id for r in before[-1].refs} for x in here)
-            described = himself and re.match(r"(?:the|a|an|our|my|your)\b", words, _F)
+            # "… for Omar, the green one, …": 'one' picks out an object, not the person
+            described = (
+                himself
+                and re.match(r"(?:the|a|an|our|my|your)\b", words, _F) is not None
+                and not _picks_object(words, lexicon)
+            )
             if same or described:  # "our manager, Priya," / "Mr Novak, the gentleman …,"
                 out[-1] += parts[k + 1]
                 k += 2

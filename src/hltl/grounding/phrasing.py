@@ -4425,32 +4425,33 @@ def _each_nearest(items: list[Item]) -> list[Item]:
 # the passes of refine, in order (each may refuse): openings and questions first, then
 # quantities and corrections, then people and places, then remarks and the order of clauses
 def _choice_restated(items: list[Item]) -> list[Item]:
-    """'Stick a plate on the worktop, any plate': ', any <kind>' ending a sentence whose object
-    is already 'a/any <kind>' of the same objects says again that any will do (it was read as a
+    """'Stick a plate on the worktop, any plate': ', any <kind>' ending a clause whose object is
+    already 'a/any <kind>' of the same objects says again that any will do (it was read as a
     second plate)."""
     out: list[Item] = []
     for start, end in _sentences(items):
         sent = items[start:end]
-        k = len(sent)
-        while k > 0 and _is(sent[k - 1], "filler"):
-            k -= 1
-        if (
-            k >= 4
-            and _objects(sent[k - 1])
-            and _is(sent[k - 2], "q:some", "either")
-            and _is(sent[k - 3], ",")
-        ):
-            said = {r.id for r in sent[k - 1].refs}
-            before = [
-                n
-                for n in range(1, k - 3)
-                if _objects(sent[n])
-                and {r.id for r in sent[n].refs} == said
-                and _is(sent[n - 1], "det", "q:some", "either")
-                and sent[n - 1].text.lower() in ("a", "an", "any", "either")
-            ]
-            if len(said) > 1 and len(before) == 1:
-                sent = sent[: k - 3] + sent[k:]
+        k = 3
+        while k < len(sent):
+            ends = k + 1 == len(sent) or _is(sent[k + 1], ",", "filler")
+            if (
+                ends
+                and _objects(sent[k])
+                and _is(sent[k - 1], "q:some", "either")
+                and _is(sent[k - 2], ",")
+            ):
+                said = {r.id for r in sent[k].refs}
+                before = [
+                    n
+                    for n in range(1, k - 2)
+                    if _objects(sent[n])
+                    and {r.id for r in sent[n].refs} == said
+                    and sent[n - 1].text.lower() in ("a", "an", "any", "either")
+                ]
+                if len(said) > 1 and len(before) == 1:
+                    sent = sent[: k - 2] + sent[k + 1 :]
+                    continue
+            k += 1
         out.extend(sent)
         if end < len(items):
             out.append(items[end])
