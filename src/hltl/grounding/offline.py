@@ -28,6 +28,7 @@ from hltl.grounding.tree import (
     check_deliveries,
     encode,
     entities,
+    given_then_placed,
     normalise,
     tasks,
 )
@@ -181,21 +182,13 @@ def _not_given_then_placed(node: Node, lexicon: Lexicon) -> None:
     an 'and' and placed in a later one is said in an order that cannot be done (a handed-over
     object is gone), and the other order is not what was said: refused, as in a sequence
     (tree.check_deliveries). 'Put the cup on the shelf and give it to Bob' can be done as said."""
-    if isinstance(node, Task):
-        return
-    if node.op == "and":
-        for i, early in enumerate(node.children):
-            given = {t.obj: t for t in tasks(early) if t.kind == "deliver"}
-            for late in node.children[i + 1 :]:
-                for t in tasks(late):
-                    if t.kind == "place" and t.obj in given:
-                        first, then = _task_words(given[t.obj], lexicon), _task_words(t, lexicon)
-                        raise GroundingError(
-                            f"{first} and then {then}: a handed-over object is gone, so it cannot "
-                            "be placed after; say one, or place it first"
-                        )
-    for c in node.children:
-        _not_given_then_placed(c, lexicon)
+    pair = given_then_placed(node, "and")
+    if pair is not None:
+        first, then = (_task_words(t, lexicon) for t in pair)
+        raise GroundingError(
+            f"{first} and then {then}: a handed-over object is gone, so it cannot "
+            "be placed after; say one, or place it first"
+        )
 
 
 def _task_words(task: Task, lexicon: Lexicon) -> str:

@@ -139,25 +139,33 @@ def check_deliveries(node: Node, describe: Mapping[str, str] | None = None) -> N
 
     placed(node)
 
-    def ordered(n: Node) -> None:
-        """In a sequence, an object handed over in one step cannot be placed in a later one."""
-        if isinstance(n, Task):
-            return
-        if n.op == "seq":
-            for i, early in enumerate(n.children):
-                given = {t.obj: t for t in tasks(early) if t.kind == "deliver"}
-                for late in n.children[i + 1 :]:
-                    for t in tasks(late):
-                        if t.kind == "place" and t.obj in given:
-                            who = given[t.obj].target
-                            raise GroundingError(
-                                f"the {t.obj} would be handed to {name.get(who, who)} and then "
-                                f"placed on {t.target}; a handed-over object is gone: say one"
-                            )
-        for c in n.children:
-            ordered(c)
+    # in a sequence, an object handed over in one step cannot be placed in a later one
+    pair = given_then_placed(node, "seq")
+    if pair is not None:
+        given, t = pair
+        raise GroundingError(
+            f"the {t.obj} would be handed to {name.get(given.target, given.target)} and then "
+            f"placed on {t.target}; a handed-over object is gone: say one"
+        )
 
-    ordered(node)
+
+def given_then_placed(node: Node, op: Op) -> tuple[Task, Task] | None:
+    """The first object handed over in one child of an ``op`` group and placed in a later child
+    (the hand-over task and the placement), searching groups outside in; None without one."""
+    if isinstance(node, Task):
+        return None
+    if node.op == op:
+        for i, early in enumerate(node.children):
+            given = {t.obj: t for t in tasks(early) if t.kind == "deliver"}
+            for late in node.children[i + 1 :]:
+                for t in tasks(late):
+                    if t.kind == "place" and t.obj in given:
+                        return given[t.obj], t
+    for c in node.children:
+        pair = given_then_placed(c, op)
+        if pair is not None:
+            return pair
+    return None
 
 
 class Names:
