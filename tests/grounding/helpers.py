@@ -17,6 +17,17 @@ ROOT = Path(__file__).resolve().parents[2]
 CELL = load_scene(ROOT / "examples/scenes/grounding_cell.yaml")
 
 
+def paraphrase_scene(name: str) -> Scene:
+    """A scene of the paraphrase corpus (tests/grounding/paraphrase/scenes/<name>.yaml)."""
+    return load_scene(ROOT / f"tests/grounding/paraphrase/scenes/{name}.yaml")
+
+
+LAB, OFFICE, WARD, DEPOT = (paraphrase_scene(n) for n in ("lab", "office", "ward", "depot"))
+KITCHEN, CLASSROOM, NURSERY, WORKSHOP = (
+    paraphrase_scene(n) for n in ("kitchen", "classroom", "nursery", "workshop")
+)
+
+
 def assert_means(text: str, want: str, scene: Scene = CELL) -> None:
     """Assert that ``text`` grounds to a spec language-equivalent to ``want`` (corpus notation)."""
     got = parse_instruction(text, scene)

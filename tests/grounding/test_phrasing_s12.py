@@ -10,21 +10,23 @@ from hypothesis import strategies as st
 from hltl.errors import GroundingError
 from hltl.grounding.tree import Group, Task, check_deliveries
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT, assert_refused, one_edits, tree
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_refused,
+    one_edits,
+    tree,
+)
 from tests.grounding.helpers import assert_reads as assert_means
 
-
-def _scene(name: str) -> Scene:
-    return load_scene(ROOT / f"tests/grounding/paraphrase/scenes/{name}.yaml")
-
-
-LAB, OFFICE, WARD, DEPOT = _scene("lab"), _scene("office"), _scene("ward"), _scene("depot")
-KITCHEN, CLASSROOM, NURSERY, WORKSHOP = (
-    _scene("kitchen"),
-    _scene("classroom"),
-    _scene("nursery"),
-    _scene("workshop"),
-)
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 SCENES = {
     "cell": CELL,

@@ -14,21 +14,22 @@ from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tree import tasks
 from hltl.grounding.update import ground_update
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT, assert_refused, tree
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_refused,
+    tree,
+)
 from tests.grounding.helpers import assert_reads as assert_means
 
-
-def _scene(name: str) -> Scene:
-    return load_scene(ROOT / f"tests/grounding/paraphrase/scenes/{name}.yaml")
-
-
-LAB, OFFICE, WARD, DEPOT = _scene("lab"), _scene("office"), _scene("ward"), _scene("depot")
-KITCHEN, CLASSROOM, NURSERY, WORKSHOP = (
-    _scene("kitchen"),
-    _scene("classroom"),
-    _scene("nursery"),
-    _scene("workshop"),
-)
 F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")
 SCENES = [CELL, LAB, OFFICE, WARD, DEPOT, KITCHEN, CLASSROOM, NURSERY, WORKSHOP]
 
