@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+import threading
 import time
 
 import pytest
@@ -222,3 +223,56 @@ def test_cells_beyond_the_step_bound_skip_importing_cp_sat(
         floor,
         None,
     )
+
+
+def test_a_stopped_bound_asks_nothing_more(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the anytime run stops the bound beside the walk when it is no longer wanted: a stopped
+    # question builds nothing, and the climb asks no level
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    stop = anytime.lns.Stop()
+    stop.stop()
+    rows: list[object] = []
+    real = profile._robot_rows
+    monkeypatch.setattr(profile, "_robot_rows", lambda *a: rows.append(a) or real(*a))
+    later = time.perf_counter() + DEADLINE_S
+    assert profile.feasible(problem, graph, node, tgts, to_ticks(3.3), later, stop=stop) is None
+    got = profile.profile_bound(
+        problem, graph, node, tgts, floor=to_ticks(3.0), upper=None, deadline=later, stop=stop
+    )
+    assert got == profile.ProfileBound(to_ticks(3.0), False, 0)
+    assert rows == []
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_on_two_cores_the_bound_runs_beside_the_walk(
+    monkeypatch: pytest.MonkeyPatch, workers: int
+) -> None:
+    # two cores: the profile bound runs on a thread of its own until the deadline, and the walk
+    # keeps going until the deadline too; one core: the walk stops for the bound's last share
+    seen: dict[str, object] = {}
+    real_bound, real_more = profile.profile_bound, anytime._more
+
+    def bound(*args: object, **kwargs: object) -> profile.ProfileBound:
+        seen["main"] = threading.current_thread() is threading.main_thread()
+        seen["deadline"] = kwargs["deadline"]
+        return real_bound(*args, **kwargs)  # type: ignore[arg-type]
+
+    def more(problem: Problem, s: object, until: float) -> object:
+        seen["until"] = until
+        return real_more(problem, s, until)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(profile, "profile_bound", bound)
+    monkeypatch.setattr(anytime, "_more", more)
+    monkeypatch.setattr(anytime.schedule, "WORKERS", workers)
+    monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # a share of 1.2 s at a 4 s budget
+    c = delivery_cell("grid", 17, 0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
+    assert seen["main"] is (workers == 1)
+    assert isinstance(seen["until"], float) and isinstance(seen["deadline"], float)
+    if workers == 2:
+        assert seen["until"] == seen["deadline"]
+    else:
+        assert seen["until"] < seen["deadline"]

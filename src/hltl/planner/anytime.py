@@ -6,6 +6,7 @@ import math
 import random
 import time
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
 
 from hltl.planner import lns, profile, schedule
@@ -482,65 +483,88 @@ def plan_anytime(
     )
     expanded = 0
     profiled = False  # the last share goes to the profile bound instead of A*
-    for k, until in enumerate(phases):
-        if good_enough():
-            break
-        end = min(deadline, t0 + until * timeout)
-        if big and k == 0:
-            paired = _pairs_at_start(problem, s, start, end, lb)
-            profiled = (
-                best is not None
-                and paired <= lb
-                and n_goals > SCHEDULE_UP_TO
-                and _profile_fits(timeout)
-                and profile.applicable(problem)
-                and lns.available()
-            )
-            lb = max(lb, paired)
-            note()
-            continue
-        if profiled and k == 1:
-            end = min(deadline, t0 + (1.0 - PROFILE_SHARE) * timeout)
-        if profiled and k == 2:
-            assert best is not None
-            tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
-            bound = profile.profile_bound(
-                problem, heur.graph, start, tgts, floor=round(lb), upper=best[0], deadline=end
-            )
-            lb = max(lb, bound.ticks)
-            note()
-            continue
-        if k == 1:
-            if best is not None:
-                cand = _more(problem, s, end)
-                if cand is not None and cand[0] < best[0]:
-                    best = cand
+    beside: _ProfileBeside | None = None  # ... or, on two cores, a thread beside the walk
+    try:
+        for k, until in enumerate(phases):
+            if good_enough():
+                break
+            end = min(deadline, t0 + until * timeout)
+            if big and k == 0:
+                paired = _pairs_at_start(problem, s, start, end, lb)
+                profiled = (
+                    best is not None
+                    and paired <= lb
+                    and n_goals > SCHEDULE_UP_TO
+                    and _profile_fits(timeout)
+                    and profile.applicable(problem)
+                    and lns.installed()
+                )
+                lb = max(lb, paired)
+                note()
+                if profiled and schedule.WORKERS >= 2:
+                    assert best is not None
+                    beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
+                continue
+            if profiled and k == 1:
+                end = deadline if beside else min(deadline, t0 + (1 - PROFILE_SHARE) * timeout)
+            if profiled and k == 2:
+                if beside is None:
+                    assert best is not None
+                    tgts = schedule.targets(
+                        problem, heur.graph, start, heur.required_atoms(start[2])
+                    )
+                    bound = profile.profile_bound(
+                        problem,
+                        heur.graph,
+                        start,
+                        tgts,
+                        floor=round(lb),
+                        upper=best[0],
+                        deadline=end,
+                    )
+                    lb = max(lb, bound.ticks)
                     note()
-            continue
-        remaining = end - time.perf_counter()
-        if remaining <= 0:
-            continue
-        res = search(
-            problem,
-            timeout=remaining,
-            upper=None if best is None else best[0],
-            state=s,
-            pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
-        )
-        expanded += res.stats.expanded
-        if res.status is PlanStatus.SOLVED and res.makespan is not None:
-            stats = SearchStats(
-                expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+                continue
+            if k == 1:
+                if best is not None:
+                    cand = _more(problem, s, end)
+                    if cand is not None and cand[0] < best[0]:
+                        best = cand
+                        note()
+                continue
+            remaining = end - time.perf_counter()
+            if remaining <= 0:
+                continue
+            res = search(
+                problem,
+                timeout=remaining,
+                upper=None if best is None else best[0],
+                state=s,
+                pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
             )
-            return PlanResult(PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan)
-        if res.status is PlanStatus.INFEASIBLE and best is None:
-            return res
-        if res.status is PlanStatus.INFEASIBLE:
-            assert best is not None
-            lb = best[0]  # nothing shorter exists: the incumbent is optimal
-        elif res.lower_bound is not None:
-            lb = max(lb, round(res.lower_bound * TICKS_PER_SECOND))
-        note()
+            expanded += res.stats.expanded
+            if res.status is PlanStatus.SOLVED and res.makespan is not None:
+                stats = SearchStats(
+                    expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+                )
+                return PlanResult(
+                    PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan
+                )
+            if res.status is PlanStatus.INFEASIBLE and best is None:
+                return res
+            if res.status is PlanStatus.INFEASIBLE:
+                assert best is not None
+                lb = best[0]  # nothing shorter exists: the incumbent is optimal
+            elif res.lower_bound is not None:
+                lb = max(lb, round(res.lower_bound * TICKS_PER_SECOND))
+            note()
+        if beside is not None:
+            # (not wanted when the plan already meets the bound: stopped at once)
+            lb = max(lb, beside.finish(wanted=not good_enough()))
+            note()
+    finally:
+        if beside is not None:
+            beside.close()  # (when something raised: stopped, and waited for)
     stats = SearchStats(expanded, 0, time.perf_counter() - t0, "anytime", first)
     if best is None:
         return PlanResult(
@@ -553,6 +577,57 @@ def plan_anytime(
     return PlanResult(
         PlanStatus.SOLVED, steps, to_seconds(best[0]), stats, "", to_seconds(min(lb, best[0]))
     )
+
+
+class _ProfileBeside:
+    """The profile bound on a thread of its own beside the walk, from the end of the pair
+    bounds to the deadline, where two cores are there (``schedule.WORKERS``): CP-SAT leaves
+    Python's lock while it solves, so the walk keeps its core and the bound gets the other for
+    most of the budget instead of the walk's last ``PROFILE_SHARE`` (only building each
+    question's model, 0.3-0.5 s of CPU on 32 goals, takes turns with the walk)."""
+
+    def __init__(
+        self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
+    ) -> None:
+        heur = s.heuristic
+        tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
+        self.stop = lns.Stop()
+        self.pool = ThreadPoolExecutor(max_workers=1)
+
+        def bound() -> int:
+            # CP-SAT is imported here, beside the walk, not before it
+            if not lns.available():
+                return floor
+            return profile.profile_bound(
+                problem,
+                heur.graph,
+                start,
+                tgts,
+                floor=floor,
+                upper=upper,
+                deadline=deadline,
+                stop=self.stop,
+            ).ticks
+
+        self.future = self.pool.submit(bound)
+
+    def finish(self, *, wanted: bool) -> int:
+        """The bound it proved (ticks, never below its floor), once it has ended; when not
+        ``wanted`` (the plan meets the bound already) it is stopped first."""
+        if not wanted:
+            self._halt()
+        return self.future.result()
+
+    def close(self) -> None:
+        """Stop it if it still runs, and wait for its thread."""
+        self._halt()
+        self.pool.shutdown(wait=True)
+
+    def _halt(self) -> None:
+        # a solve about to begin may miss one stop: ask until the question has ended
+        while not self.future.done():
+            self.stop.stop()
+            wait([self.future], timeout=0.05)
 
 
 def _schedule_at_start(
@@ -760,9 +835,12 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
         if found is not None and (best is None or found[0] < best[0]):
             best = found
 
+    took = 0.0  # how long the last round (an order and its moves) took
     while True:
         now = time.perf_counter()
-        if now >= walk_until:
+        # a round is not cut short: none starts that would end past ``walk_until`` if it took
+        # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)
+        if now + took >= walk_until:
             if not joint or best is None:
                 break
             joint = False
@@ -771,13 +849,13 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
             continue
         walk.step()
         better(walk.best)
-        if walk.best is None or len(gls) < 3:
-            continue
-        if lns is None or walk.best[0] < lns.cost:
-            lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
-        for _ in range(LNS_STEPS):
-            lns.step()
-        better(lns.best)
+        if walk.best is not None and len(gls) >= 3:
+            if lns is None or walk.best[0] < lns.cost:
+                lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
+            for _ in range(LNS_STEPS):
+                lns.step()
+            better(lns.best)
+        took = time.perf_counter() - now
     return best
 
 

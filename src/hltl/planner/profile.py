@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from hltl.planner.lns import solve_until
+from hltl.planner.lns import Stop, solve_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph, _dijkstra
 from hltl.planner.schedule import Target, time_unit
@@ -43,11 +43,13 @@ def feasible(
     deadline: float,
     *,
     seed: int = 0,
+    stop: Stop | None = None,
 ) -> bool | None:
     """Whether the profile relaxation has a solution ending by ``level`` ticks: False when
     CP-SAT proved it has none (then every plan from ``node`` that makes every target happen is
     longer than ``level``), True when it found one, None when it could not tell before
-    ``deadline`` (``time.perf_counter()``; building the model counts).
+    ``deadline`` (``time.perf_counter()``; building the model counts) or once ``stop`` was
+    called (from another thread).
 
     The relaxation: each target's object follows a route of instances from where it is to an
     instance that makes its atom happen (a unit flow; places too far for ``level`` left out);
@@ -78,7 +80,7 @@ def feasible(
     by_robot: list[dict[int, list[tuple[Instance, Any]]]] = [{} for _ in problem.robots]
     fires_of: dict[int, frozenset[int]] = {}
     for t in tgts:
-        if time.perf_counter() > deadline:
+        if time.perf_counter() > deadline or (stop is not None and stop.stopped):
             return None  # (building a 32-goal model takes 0.3-0.5 s of CPU)
         o = t.obj
         here = locs[o]
@@ -122,11 +124,11 @@ def feasible(
         for d in durations
     }
     for jobs in by_robot:
-        if time.perf_counter() > deadline:
+        if time.perf_counter() > deadline or (stop is not None and stop.stopped):
             return None
         for d in durations:
             _robot_rows(m, jobs, d, counts, fires_of, count[d])
-    solved = solve_until(m, deadline, seed)
+    solved = solve_until(m, deadline, seed, stop)
     if solved is None:
         return None
     _, status = solved
@@ -216,6 +218,7 @@ def profile_bound(
     upper: int | None,
     deadline: float,
     seed: int = 0,
+    stop: Stop | None = None,
 ) -> ProfileBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
@@ -224,7 +227,8 @@ def profile_bound(
     above the next one gets a few times what the last "no" took, and where it has a relaxed
     solution or no answer the climb goes on one time unit at a time below it. The next level's
     solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
-    next level gets all the time left). Never below ``floor``."""
+    next level gets all the time left), and ``stop`` (another thread calls it when the bound is
+    no longer wanted). Never below ``floor``."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
@@ -236,12 +240,14 @@ def profile_bound(
     questions = 0
     last = 0.0  # seconds the last "no" took
     while proven < cap and (now := time.perf_counter()) < deadline:
+        if stop is not None and stop.stopped:
+            break
         ask = int(min(proven + stride - 1, cap - 1))
         # a level far up may be much harder than the ones below it: it gets a few times what the
         # last "no" took, the next level up all the time left
         until = deadline if ask == proven else min(deadline, now + max(4 * last, 0.5))
         questions += 1
-        answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed)
+        answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed, stop=stop)
         if answer is False:
             proven = ask + 1
             stride *= 2
