@@ -527,7 +527,7 @@ def plan_anytime(
                 continue
             if k == 1:
                 if best is not None:
-                    cand = _more(problem, s, end)
+                    cand = _more(problem, s, end, enough=lb)
                     if cand is not None and cand[0] < best[0]:
                         best = cand
                         note()
@@ -808,13 +808,16 @@ def _pairs_at_start(
     return best
 
 
-def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
+def _more(
+    problem: Problem, s: _Search, until: float, *, enough: float = -math.inf
+) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
     there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
     the walk stops after
     ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
-    (``_jointly``), then the walk goes on if time is left. The best plan found."""
+    (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
+    stops early once it is no longer than ``enough`` (a lower bound: it is optimal)."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -837,6 +840,8 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
 
     took = 0.0  # how long the last round (an order and its moves) took
     while True:
+        if best is not None and best[0] <= enough:
+            break
         now = time.perf_counter()
         # a round is not cut short: none starts that would end past ``walk_until`` if it took
         # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)
