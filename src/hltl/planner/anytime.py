@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import random
+import threading
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor, wait
@@ -59,6 +60,9 @@ PROFILE_MIN_SECONDS = 1.0
 # on two cores the profile bound runs beside the walk (``_ProfileBeside``); at the deadline it
 # is waited for this much longer (its last CP-SAT solve ends at the deadline), then given up
 BESIDE_GRACE = 0.2
+# ... and the walk waits at most this long (s) for CP-SAT's import on that thread (0.5-1.5 s
+# alone; at load 7, sharing Python's lock with the walk, 8 s of wall time)
+IMPORT_WAIT = 2.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -507,6 +511,9 @@ def plan_anytime(
                 if profiled and schedule.WORKERS >= 2:
                     assert best is not None
                     beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
+                    # the import holds Python's lock as the walk does: alone it ends sooner and
+                    # the bound starts; under load the walk does not wait for it for long
+                    beside.imported.wait(max(0.0, min(IMPORT_WAIT, deadline - time.perf_counter())))
                 continue
             if profiled and k == 1:
                 end = deadline if beside else min(deadline, t0 + (1 - PROFILE_SHARE) * timeout)
@@ -597,12 +604,15 @@ class _ProfileBeside:
         self.stop = lns.Stop()
         self.floor = floor
         self.deadline = deadline
+        self.imported = threading.Event()  # CP-SAT's import (on the thread) has ended
         self.pool = ThreadPoolExecutor(max_workers=1)
 
         def bound() -> int:
-            # CP-SAT is imported here, beside the walk, not before it
-            if not lns.available():
-                return floor
+            try:
+                if not lns.available():
+                    return floor
+            finally:
+                self.imported.set()
             return profile.profile_bound(
                 problem,
                 heur.graph,
@@ -619,8 +629,8 @@ class _ProfileBeside:
     def finish(self, *, wanted: bool) -> int:
         """The bound it proved (ticks, never below its floor); when not ``wanted`` (the plan
         meets the bound already) it is stopped first. It is not waited for beyond its deadline
-        (and ``BESIDE_GRACE``): CP-SAT's import, on its thread, does not look at the clock
-        (7 s of wall time once under load), and then the floor is all it has proved."""
+        (and ``BESIDE_GRACE``: a question that overruns, under load, is left to end alone),
+        and then the floor is all it has proved."""
         if wanted:
             self._wait(self.deadline + BESIDE_GRACE, stopping=False)
         else:
