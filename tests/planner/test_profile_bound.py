@@ -4,8 +4,9 @@
 from __future__ import annotations
 
 import math
-import threading
+import os
 import time
+from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -227,38 +228,73 @@ def test_cells_beyond_the_step_bound_skip_importing_cp_sat(
     )
 
 
-def test_a_stopped_bound_asks_nothing_more(monkeypatch: pytest.MonkeyPatch) -> None:
-    # the anytime run stops the bound beside the walk when it is no longer wanted: a stopped
-    # question builds nothing, and the climb asks no level
+def test_each_level_proved_is_told_as_it_is_proved() -> None:
+    # the process beside the walk sends these, so that stopping it loses nothing proved: they
+    # rise, and the last is the bound (grid 4 x 4 seed 1: 3.3 s, the exact optimum)
     c = delivery_cell("grid", 4, 1)
     problem = Problem(c.scene, c.spec)
     _, node, graph, tgts = start_targets(problem)
-    stop = anytime.lns.Stop()
-    stop.stop()
-    rows: list[object] = []
-    real = profile._robot_rows
-    monkeypatch.setattr(profile, "_robot_rows", lambda *a: rows.append(a) or real(*a))
-    later = time.perf_counter() + DEADLINE_S
-    assert profile.feasible(problem, graph, node, tgts, to_ticks(3.3), later, stop=stop) is None
+    told: list[int] = []
     got = profile.profile_bound(
-        problem, graph, node, tgts, floor=to_ticks(3.0), upper=None, deadline=later, stop=stop
+        problem,
+        graph,
+        node,
+        tgts,
+        floor=to_ticks(3.0),
+        upper=None,
+        deadline=time.perf_counter() + DEADLINE_S,
+        on_proven=told.append,
     )
-    assert got == profile.ProfileBound(to_ticks(3.0), False, 0)
-    assert rows == []
+    assert got.ticks == to_ticks(3.3)
+    assert told and told == sorted(told) and told[-1] == got.ticks
+
+
+def _beside(floor: float, deadline: float) -> anytime._ProfileBeside:
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    s, node, _, _ = start_targets(problem)
+    return anytime._ProfileBeside(problem, s, node, to_ticks(floor), to_ticks(4.0), deadline)
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+def test_the_bound_beside_the_walk_is_what_the_bound_proves() -> None:
+    beside = _beside(3.0, time.perf_counter() + DEADLINE_S)
+    assert beside.finish(wanted=True) == to_ticks(3.3)
+    assert not beside.proc.is_alive()
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+def test_the_bound_beside_the_walk_is_not_waited_for_past_its_deadline(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # whatever keeps its process past the deadline (here a slow "is CP-SAT there", copied into
+    # the process; in runs under load CP-SAT's import or a question's solve): the run takes
+    # what was proved (here nothing: the floor) and stops the process
+    monkeypatch.setattr(anytime.lns, "available", lambda: time.sleep(DEADLINE_S) or True)
+    beside = _beside(3.0, time.perf_counter())
+    assert beside.finish(wanted=True) == to_ticks(3.0)
+    assert not beside.proc.is_alive()
+    # not wanted (the plan meets the bound): stopped at once, whatever it was doing
+    beside = _beside(3.0, time.perf_counter() + DEADLINE_S)
+    assert beside.finish(wanted=False) >= to_ticks(3.0)
+    assert not beside.proc.is_alive()
 
 
 @pytest.mark.parametrize("workers", [1, 2])
 def test_on_two_cores_the_bound_runs_beside_the_walk(
-    monkeypatch: pytest.MonkeyPatch, workers: int
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, workers: int
 ) -> None:
-    # two cores: the profile bound runs on a thread of its own until the deadline, and the walk
+    # two cores: the profile bound runs in a process of its own until the deadline, and the walk
     # keeps going until the deadline too; one core: the walk stops for the bound's last share
-    seen: dict[str, object] = {}
+    if workers == 2 and not anytime.beside_possible():
+        pytest.skip("one core, or no fork")
+    where = tmp_path / "bound"
+    seen: dict[str, float] = {}
     real_bound, real_more = profile.profile_bound, anytime._more
 
     def bound(*args: object, **kwargs: object) -> profile.ProfileBound:
-        seen["main"] = threading.current_thread() is threading.main_thread()
-        seen["deadline"] = kwargs["deadline"]
+        deadline = kwargs["deadline"]
+        where.write_text(f"{os.getpid()} {deadline!r}")  # (from the bound's process)
         return real_bound(*args, **kwargs)  # type: ignore[arg-type]
 
     def more(problem: Problem, s: object, until: float, **kwargs: float) -> object:
@@ -269,43 +305,15 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
     monkeypatch.setattr(anytime, "_more", more)
     monkeypatch.setattr(anytime.schedule, "WORKERS", workers)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # a share of 1.2 s at a 4 s budget
-    # CP-SAT imported already: under load its import on the bound's thread could outlast this
-    # 4 s run, and the bound would (rightly) never be asked
+    # CP-SAT imported here already, so the forked process has it too: under load its own
+    # import could outlast this 4 s run, and the bound would (rightly) never be asked
     assert anytime.lns.available()
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
-    assert seen["main"] is (workers == 1)
-    assert isinstance(seen["until"], float) and isinstance(seen["deadline"], float)
+    pid, deadline = where.read_text().split()
+    assert (int(pid) == os.getpid()) is (workers == 1)
     if workers == 2:
-        assert seen["until"] == seen["deadline"]
+        assert seen["until"] == float(deadline)
     else:
-        assert seen["until"] < seen["deadline"]
-
-
-def test_the_bound_beside_the_walk_is_not_waited_for_past_its_deadline(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    # whatever keeps the bound's thread past its deadline (here a slow "is CP-SAT there"; in
-    # runs under load a question's building or solving): the run takes the floor at the
-    # deadline and leaves the thread to end alone
-    importing = threading.Event()
-    release = threading.Event()
-
-    def slow_import() -> bool:
-        importing.set()
-        release.wait()
-        return True
-
-    monkeypatch.setattr(anytime.lns, "available", slow_import)
-    c = delivery_cell("grid", 4, 1)
-    problem = Problem(c.scene, c.spec)
-    s, node, _, _ = start_targets(problem)
-    floor = to_ticks(3.0)
-    beside = anytime._ProfileBeside(problem, s, node, floor, to_ticks(4.0), time.perf_counter())
-    assert importing.wait(DEADLINE_S)
-    assert beside.finish(wanted=True) == floor
-    assert not beside.future.done()  # (still importing: it was not waited for)
-    beside.close()
-    release.set()
-    assert beside.future.result(timeout=DEADLINE_S) == floor  # (past its deadline: no question)
+        assert seen["until"] < float(deadline)

@@ -3,16 +3,17 @@
 from __future__ import annotations
 
 import math
+import multiprocessing
 import random
-import threading
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
+from multiprocessing.connection import Connection
 
 from hltl.planner import lns, profile, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
+from hltl.planner.relaxed import RelaxedGraph
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import _infeasible, _Search, plan_steps, search
 from hltl.spec.monitor import DONE
@@ -58,11 +59,8 @@ STEPS_UP_TO = 16
 PROFILE_SHARE = 1.0 - BIG_RESTART_SHARE
 PROFILE_MIN_SECONDS = 1.0
 # on two cores the profile bound runs beside the walk (``_ProfileBeside``); at the deadline it
-# is waited for this much longer (its last CP-SAT solve ends at the deadline), then given up
+# is waited for this much longer (its last CP-SAT solve ends at the deadline), then stopped
 BESIDE_GRACE = 0.2
-# ... and the walk waits at most this long (s) for CP-SAT's import on that thread (0.5-1.5 s
-# alone; at load 7, sharing Python's lock with the walk, 8 s of wall time)
-IMPORT_WAIT = 2.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -508,12 +506,9 @@ def plan_anytime(
                 )
                 lb = max(lb, paired)
                 note()
-                if profiled and schedule.WORKERS >= 2:
+                if profiled and beside_possible():
                     assert best is not None
                     beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
-                    # the import holds Python's lock as the walk does: alone it ends sooner and
-                    # the bound starts; under load the walk does not wait for it for long
-                    beside.imported.wait(max(0.0, min(IMPORT_WAIT, deadline - time.perf_counter())))
                 continue
             if profiled and k == 1:
                 end = deadline if beside else min(deadline, t0 + (1 - PROFILE_SHARE) * timeout)
@@ -589,66 +584,89 @@ def plan_anytime(
     )
 
 
+def beside_possible() -> bool:
+    """The profile bound can run in a process of its own beside the walk: two cores
+    (``schedule.WORKERS``) and processes started by ``fork`` (which copies the compiled
+    problem instead of pickling it)."""
+    return schedule.WORKERS >= 2 and "fork" in multiprocessing.get_all_start_methods()
+
+
 class _ProfileBeside:
-    """The profile bound on a thread of its own beside the walk, from the end of the pair
-    bounds to the deadline, where two cores are there (``schedule.WORKERS``): CP-SAT leaves
-    Python's lock while it solves, so the walk keeps its core and the bound gets the other for
-    most of the budget instead of the walk's last ``PROFILE_SHARE`` (only building each
-    question's model, 0.3-0.5 s of CPU on 32 goals, takes turns with the walk)."""
+    """The profile bound in a process of its own beside the walk (``beside_possible``), from
+    the end of the pair bounds to the deadline, instead of the walk's last ``PROFILE_SHARE``:
+    the walk keeps its core and Python's lock (a thread would take turns with it on both, for
+    CP-SAT's import and each question's model: 0.5-1.5 s and 0.3-0.5 s of CPU on 32 goals),
+    and the bound gets the other core. The process sends each level it proves as it goes, so
+    stopping it, at the deadline or when the plan meets the bound, loses nothing proved."""
 
     def __init__(
         self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
     ) -> None:
         heur = s.heuristic
         tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
-        self.stop = lns.Stop()
-        self.floor = floor
+        self.bound = floor
         self.deadline = deadline
-        self.imported = threading.Event()  # CP-SAT's import (on the thread) has ended
-        self.pool = ThreadPoolExecutor(max_workers=1)
+        ctx = multiprocessing.get_context("fork")
+        self.conn, send = ctx.Pipe(duplex=False)
+        self.proc = ctx.Process(
+            target=_profile_child,
+            args=(send, problem, heur.graph, start, tgts, floor, upper, deadline),
+            daemon=True,
+        )
+        self.proc.start()
+        send.close()  # (the child's copy stays open: its end is the end of the pipe)
 
-        def bound() -> int:
+    def finish(self, *, wanted: bool) -> int:
+        """The bound it proved (ticks, never below its floor). When ``wanted`` it is waited
+        for until it ends or until its deadline and ``BESIDE_GRACE`` have passed; when not
+        (the plan meets the bound already) it is stopped at once."""
+        if wanted:
+            self._read(self.deadline + BESIDE_GRACE)
+        self.close()
+        return self.bound
+
+    def close(self) -> None:
+        """Stop the process (if it still runs) and keep what it sent."""
+        if self.proc.is_alive():
+            self.proc.terminate()
+        self.proc.join()
+        self._read(0.0)
+        self.conn.close()
+
+    def _read(self, until: float) -> None:
+        # the levels proved, until the process ends (the pipe's end) or ``until``
+        while not self.conn.closed and self.conn.poll(max(0.0, until - time.perf_counter())):
             try:
-                if not lns.available():
-                    return floor
-            finally:
-                self.imported.set()
-            return profile.profile_bound(
+                self.bound = max(self.bound, self.conn.recv())
+            except EOFError:
+                return
+
+
+def _profile_child(
+    send: Connection,
+    problem: Problem,
+    graph: RelaxedGraph,
+    start: Node,
+    tgts: list[schedule.Target],
+    floor: int,
+    upper: int,
+    deadline: float,
+) -> None:
+    """The profile bound's process (``_ProfileBeside``): every level it proves is sent."""
+    try:
+        if lns.available():
+            profile.profile_bound(
                 problem,
-                heur.graph,
+                graph,
                 start,
                 tgts,
                 floor=floor,
                 upper=upper,
                 deadline=deadline,
-                stop=self.stop,
-            ).ticks
-
-        self.future = self.pool.submit(bound)
-
-    def finish(self, *, wanted: bool) -> int:
-        """The bound it proved (ticks, never below its floor); when not ``wanted`` (the plan
-        meets the bound already) it is stopped first. It is not waited for beyond its deadline
-        (and ``BESIDE_GRACE``: a question that overruns, under load, is left to end alone),
-        and then the floor is all it has proved."""
-        if wanted:
-            self._wait(self.deadline + BESIDE_GRACE, stopping=False)
-        else:
-            self._wait(time.perf_counter() + BESIDE_GRACE, stopping=True)
-        return self.future.result() if self.future.done() else self.floor
-
-    def close(self) -> None:
-        """Stop it. Its thread is not waited for: a stopped climb asks no more levels, and a
-        solve ends by the deadline at the latest."""
-        self.stop.stop()
-        self.pool.shutdown(wait=False)
-
-    def _wait(self, until: float, *, stopping: bool) -> None:
-        # a solve about to begin may miss one stop: ask again until it has ended
-        while not self.future.done() and (left := until - time.perf_counter()) > 0:
-            if stopping:
-                self.stop.stop()
-            wait([self.future], timeout=min(0.05, left))
+                on_proven=send.send,
+            )
+    finally:
+        send.close()
 
 
 def _schedule_at_start(

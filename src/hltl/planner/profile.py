@@ -5,11 +5,11 @@ from __future__ import annotations
 import itertools
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from hltl.planner.lns import Stop, solve_until
+from hltl.planner.lns import solve_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph, _dijkstra
 from hltl.planner.schedule import Target, time_unit
@@ -43,13 +43,11 @@ def feasible(
     deadline: float,
     *,
     seed: int = 0,
-    stop: Stop | None = None,
 ) -> bool | None:
     """Whether the profile relaxation has a solution ending by ``level`` ticks: False when
     CP-SAT proved it has none (then every plan from ``node`` that makes every target happen is
     longer than ``level``), True when it found one, None when it could not tell before
-    ``deadline`` (``time.perf_counter()``; building the model counts) or once ``stop`` was
-    called (from another thread).
+    ``deadline`` (``time.perf_counter()``; building the model counts).
 
     The relaxation: each target's object follows a route of instances from where it is to an
     instance that makes its atom happen (a unit flow; places too far for ``level`` left out);
@@ -80,7 +78,7 @@ def feasible(
     by_robot: list[dict[int, list[tuple[Instance, Any]]]] = [{} for _ in problem.robots]
     fires_of: dict[int, frozenset[int]] = {}
     for t in tgts:
-        if time.perf_counter() > deadline or (stop is not None and stop.stopped):
+        if time.perf_counter() > deadline:
             return None  # (building a 32-goal model takes 0.3-0.5 s of CPU)
         o = t.obj
         here = locs[o]
@@ -124,11 +122,11 @@ def feasible(
         for d in durations
     }
     for jobs in by_robot:
-        if time.perf_counter() > deadline or (stop is not None and stop.stopped):
+        if time.perf_counter() > deadline:
             return None
         for d in durations:
             _robot_rows(m, jobs, d, counts, fires_of, count[d])
-    solved = solve_until(m, deadline, seed, stop)
+    solved = solve_until(m, deadline, seed)
     if solved is None:
         return None
     _, status = solved
@@ -218,7 +216,7 @@ def profile_bound(
     upper: int | None,
     deadline: float,
     seed: int = 0,
-    stop: Stop | None = None,
+    on_proven: Callable[[int], None] | None = None,
 ) -> ProfileBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
@@ -227,8 +225,8 @@ def profile_bound(
     above the next one gets a few times what the last "no" took, and where it has a relaxed
     solution or no answer the climb goes on one time unit at a time below it. The next level's
     solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
-    next level gets all the time left), and ``stop`` (another thread calls it when the bound is
-    no longer wanted). Never below ``floor``."""
+    next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
+    proved. Never below ``floor``."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
@@ -240,16 +238,16 @@ def profile_bound(
     questions = 0
     last = 0.0  # seconds the last "no" took
     while proven < cap and (now := time.perf_counter()) < deadline:
-        if stop is not None and stop.stopped:
-            break
         ask = int(min(proven + stride - 1, cap - 1))
         # a level far up may be much harder than the ones below it: it gets a few times what the
         # last "no" took, the next level up all the time left
         until = deadline if ask == proven else min(deadline, now + max(4 * last, 0.5))
         questions += 1
-        answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed, stop=stop)
+        answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed)
         if answer is False:
             proven = ask + 1
+            if on_proven is not None:
+                on_proven(max(floor, proven * unit))
             stride *= 2
             last = time.perf_counter() - now
         elif answer is None and ask > proven:
