@@ -292,3 +292,77 @@ def test_slip_costs() -> None:
     assert slip_cost("bxttle", "bottle") == 2.5  # any other letter
     assert slip_cost("cup", "cup") is None
     assert slip_cost("cup", "apple") is None
+
+
+# -- classes a new writer brings (the session's own probes, across scenes) -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Can you do me a kindness and bring Mr Lee his tablets", "pills>B", WARD),
+        ("do us a favour and put the bowl in the sink", "bowl@sink", LAB),
+        ("Mia could really do with the scanner right about now", "scanner>A", DEPOT),
+        ("new line give omar the spoon full stop", "spoon>B", LAB),
+        (
+            "would you be a darling and load the small box onto the pallet",
+            "box_small@pallet",
+            DEPOT,
+        ),
+        ("Ruth will be wanting the thermometer", "thermometer>A", WARD),
+        ("Zoe would be wanting the green book", "book_green>C", CLASSROOM),
+        (
+            "Marco gets the knife, Lena gets the tongs, and that's the lot",
+            "knife>A & tongs>B",
+            KITCHEN,
+        ),
+        ("Right then, jug to Mrs Khan, and Bob's your uncle", "jug>C", WARD),
+        ("Give Bob the cup, eh", "cup>B", CELL),
+        ("Put the cup on the shelf, there you go", "cup@shelf", CELL),
+        ("Could you slip Bob the chips", "chips>B", CELL),
+        ("Bung the cup over to Bob", "cup>B", CELL),
+        ("Pile the mugs on the table", "mug_red@table & mug_blue@table", CELL),
+        ("Bob wants the cup, if I remember right", "cup>B", CELL),
+        ("Bob mentioned he'd like the cup", "cup>B", CELL),
+        ("Like I said before, give Bob the cup", "cup>B", CELL),
+        ("Per Bob's request, give him the cup", "cup>B", CELL),
+        ("Bob's request: the cup", "cup>B", CELL),
+        ("Order for Bob: one cup", "cup>B", CELL),
+        ("Bob ordered the cup", "cup>B", CELL),
+        ("The cup is Bob's", "cup>B", CELL),
+        ("Carol, the apple is yours", "apple>C", CELL),
+        ("OK Google, give Lena the salt", "salt>B", KITCHEN),
+        ("Would you mind awfully passing Mrs Khan the water jug", "jug>C", WARD),
+        ("Mrs Khan was wondering if she might have the water jug", "jug>C", WARD),
+        ("Mrs Khan would be ever so grateful for the water jug", "jug>C", WARD),
+        ("The plan is to give Mrs Khan the water jug", "jug>C", WARD),
+        ("Give the jug to her, Mrs Khan I mean", "jug>C", WARD),
+        ("Give her the jug - Mrs Khan", "jug>C", WARD),
+        ("Mrs Khan (bed 3) wants the jug", "jug>C", WARD),
+        ("Mrs Khan, bed 3, wants the jug", "jug>C", WARD),
+        ("Give Mrs Khan (bed 2) the jug and Mr Lee (bed 3) the pills", "jug>C & pills>B", WARD),
+    ],
+)
+def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give him the jug - Mrs Khan", WARD),  # the title does not fit
+        ("Give her the jug, Mr Lee", WARD),
+        ("Give her the jug and him the pills - Mrs Khan", WARD),
+        ("Give Bob (two) the cup", CELL),
+        ("Bob ordered the cup for Carol", CELL),
+        ("Carol, the apple is Bob's", CELL),
+        ("Do me a favour and give me the cup", CELL),
+        ("The plan is to give me the cup", CELL),
+        ("Give Bob the cup, like I said, and the apple", CELL),
+        # asked for one thing, given another (causes9): 'keeps asking for' is not rewritten
+        ("Carol keeps asking for the apple, give her the cup", CELL),
+    ],
+)
+def test_near_forms_of_the_new_classes_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+

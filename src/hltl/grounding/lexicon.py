@@ -96,6 +96,7 @@ for _lemma, _forms in {
     "offer": ("offers", "offering", "offered"),
     "serve": ("serves", "serving", "served"),
     "lend": ("lends", "lending", "lent"),
+    "slip": ("slips", "slipping", "slipped"),  # "slip Bob the chips"
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -117,6 +118,8 @@ for _lemma, _forms in {
     "return": ("returns", "returning", "returned"),
     "slide": ("slides", "sliding", "slid"),
     "relocate": ("relocates", "relocating", "relocated"),
+    "bung": ("bungs", "bunging", "bunged"),  # "bung the cup over to Bob"
+    "ferry": ("ferries", "ferrying", "ferried"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -134,6 +137,8 @@ for _lemma, _forms in {
     "plonk": ("plonks", "plonking", "plonked"),
     "shove": ("shoves", "shoving", "shoved"),  # "shove the small box onto the belt"
     "position": ("positions", "positioning", "positioned"),
+    "load": ("loads", "loading", "loaded"),  # "load the small box onto the pallet"
+    "pile": ("piles", "piling", "piled"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)

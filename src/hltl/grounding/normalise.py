@@ -131,7 +131,8 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
     (_OPEN + r"(?:please |kindly )?arrange for (.+?) to be ", r"\1\2 is "),
     (r"\bupon\b", "on"),
     (
-        r"\b(would|'d|will) be (?:most |very |really |so |extremely )?(?:grateful|thankful) "
+        r"\b(would|'d|will) be (?:(?:most|very|really|so|extremely|ever|awfully|terribly) )*(?:gra"
+        r"teful|thankful) "
         r"for\b",
         r"\1 like",
     ),
@@ -2897,7 +2898,171 @@ def _i_mean_it(text: str, lexicon: Lexicon) -> str:
     return f"{before}, I meant the {obj} goes {goes}{m.group(3)}"
 
 
+# -- session 14, generalised: classes a new writer brings, probed across scenes --------------------
+
+_SAID14: tuple[tuple[str, str], ...] = (
+    # "Could you do me a favour and …": the favour is the request ('me' is not a recipient)
+    (
+        r"(^|(?<=[.;!?,])\s*)(?:(?:could|would|can|will) you |please )?do (?:me|us) a (?:(?:big|"
+        r"quick|small|huge) )?(?:favou?r|kindness|solid)(?:\s+and\b|\s*[,:!.]|\s+please\b,?)\s*",
+        r"\1",
+    ),
+    # "…, eh", "…, there you go", "… and Bob's your uncle", "…, that's the lot", "job done"
+    (
+        r",?\s*(?:\band\s+)?\b(?:there you go|there we go|there you are|bob's your uncle|that's th"
+        r"e lot|that's your lot|that's the lot of them|job done|job's a good 'un|sorted|innit|eh|"
+        r"right\?|ok\?|okay\?|alright\?|yeah\?|got it\?|understood\?|if i remember (?:right|"
+        r"rightly|correctly)|(?:just )?like i said(?: before| earlier)?|as i said(?: before| earl"
+        r"ier)?|as i mentioned)(?=\s*(?:[.!]|$))",
+        "",
+    ),
+    (
+        r"(^|(?<=[.;!?])\s*)(?:(?:just )?like i said(?: before| earlier)?|as i said(?: before| "
+        r"earlier)?|as i mentioned(?: before| earlier)?)\s*,\s*",
+        r"\1",
+    ),
+    # "…, bless her" at the end, with or without a comma
+    (
+        r",?\s+bless (?:him|her|them|'?em)(?:,? the (?:poor )?(?:thing|dear|love|lamb))?"
+        r"(?=\s*(?:[.!]|$))",
+        "",
+    ),
+    # "The plan is to give …", "What I need you to do is …": the task said as a plan
+    (
+        r"(^|(?<=[.;!?])\s*)(?:the (?:plan|idea|task|job|thing)|your (?:job|task)|what (?:i|we) "
+        r"(?:need|want|'d like) you to do) (?:is|will be|for now is) (?:to |that you |just )?",
+        r"\1",
+    ),
+    # "Alexa, …", "OK Google, …", "Hey Siri, …", "Computer, …": the device addressed
+    (
+        r"^(?:(?:ok|okay|hey|hi)\s+)?(?:alexa|google|siri|computer|robots?|cortana|assistant)"
+        r"\s*[,!.:]\s*",
+        "",
+    ),
+    # "Would you mind awfully passing …": how much the hearer might mind
+    (r"\b(you mind) (?:awfully|terribly|very much|at all|too much)\b", r"\1"),
+    # "Mrs Khan (bed 3) wants …", "Mrs Khan, bed 3, wants …": where a person is, in brackets
+    # or after a comma (a bed, a room, a bay: a number of a place, not a count)
+    (
+        r"\s*\((?:in )?(?:bed|room|bay|seat|desk|table|station|row|cubicle|ward|chair) ?\w{1,4}\)",
+        "",
+    ),
+    (
+        r",\s*(?:in )?(?:bed|room|bay|seat|station|row|cubicle|chair) (?:\d{1,3}|one|two|three|"
+        r"four|five|six)\s*,",
+        " ",
+    ),
+    # "right about now"
+    (r"\s+(?:right )?about now\b(?=\s*(?:[.,;!?]|$))", ""),
+    # dictated: "new line give Omar the spoon", "… new paragraph …"
+    (r"(^|\s+)(?:new line|next line|new paragraph)\b\s*", r"\1. "),
+)
+_WANTS14: tuple[tuple[str, str], ...] = (
+    # "Mrs Khan was wondering if she might have the water jug"
+    (
+        r"^((?:the )?[\w ]+?) (?:was|is|'s|were|are|has been) (?:just )?wondering (?:if|whether) "
+        r"(?:he|she|they) (?:could|might|can|may) (?:have|get|borrow)\b",
+        r"\1 would like",
+    ),
+    # "Mia could really do with the scanner": she would like it
+    (r"\b(?:could|can) (?:really |certainly |definitely |probably |just )?do with\b", "would like"),
+    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"
+    (r"\b(?:will|would|'ll|'d) be wanting\b", "wants"),
+    (r"\b(?:will|would|'ll|'d) be needing\b", "needs"),
+    # "Bob mentioned he'd like the cup", "Bob told me she wants …"
+    (
+        r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
+        r"let (?:me|us) know|was telling (?:me|us))(?: that)? (he|she|they)(?:'d| would) like\b",
+        r"\1 would like",
+    ),
+    (
+        r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
+        r"let (?:me|us) know|was telling (?:me|us))(?: that)? (?:he|she|they) (wants|needs)\b",
+        r"\1 \2",
+    ),
+    # "Bob ordered the cup", "Bob's order is the cup", "Bob's request: the cup", "Request from
+    # Bob: the cup", "Order for Bob: one cup"
+    (r"^((?:the )?[\w ]+?) (?:has )?(?:ordered|requested)\b", r"\1 wants"),
+    (r"^((?:the )?[\w ]+?)'s (?:order|request)(?: is|:)\s*", r"\1 wants "),
+    (r"^(?:request|order) (?:from|for) ((?:the )?[\w ]+?)\s*:\s*(?:one )?", r"\1 wants the "),
+)
+
+
+def _said14(text: str, lexicon: Lexicon) -> str:
+    """Ways people close, favour, hedge and dictate that session 14's probes showed ('do me a
+    favour and', '…, eh', '… and Bob's your uncle', 'like I said', 'new line'), taken off where
+    they name nothing; and wants said another way ('could do with', 'will be wanting', 'Bob
+    mentioned he'd like', 'ordered', "Bob's request: …"), rewritten when their subject is one
+    person of the scene."""
+    for pattern, repl in _SAID14:
+        text = _drop(pattern, text, lexicon, repl)
+    text = " ".join(text.split()).strip()
+    text = re.sub(r"^[.\s]+", "", text)
+    for pattern, repl in _WANTS14:
+        m = re.search(pattern, text, _F)
+        if m is None:
+            continue
+        if pattern.startswith("^((?:the )") and not _only(m.group(1), lexicon, "human"):
+            continue
+        text = text[: m.start()] + m.expand(repl) + text[m.end() :]
+    text = re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
+    return _pronoun_said(_possessed14(text, lexicon), lexicon)
+
+
+def _pronoun_said(text: str, lexicon: Lexicon) -> str:
+    """'Give the jug to her, Mrs Khan I mean', 'Give her the jug - Mrs Khan': a person said after
+    the request says who its one 'him'/'her' is (when the title fits and nobody else is named)."""
+    m = re.match(
+        r"^(.+?)(?:,\s*|\s+[-—–]+\s*|\s*\(\s*)((?:i mean |i meant |that's |that is |meaning )?"
+        r"(?:the )?[\w ]+?)(?: i mean| i meant)?\s*\)?\s*([.!]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is None:
+        return text
+    said = re.sub(r"^(?:i mean|i meant|that's|that is|meaning)\s+", "", m.group(2), flags=_F)
+    if not _only(said, lexicon, "human"):
+        return text
+    head = m.group(1)
+    pronouns = re.findall(r"\b(?:him|her|he|she)\b", head, _F)
+    if len(pronouns) != 1 or _ids(head, lexicon, "human"):
+        return text
+    if not _fits(next(iter(_ids(said, lexicon, "human"))), head, lexicon):
+        return text
+    return _sub(r"\b(?:him|her|he|she)\b", said, head) + m.group(3)
+
+
+def _possessed14(text: str, lexicon: Lexicon) -> str:
+    """ "The cup is Bob's", "Carol, the apple is yours", "Per Bob's request, give him the cup":
+    whose an object is said to be, as 'the cup is for Bob'."""
+    m = re.match(r"^((?:the|that|this) [\w ]+?) (?:is|'s) ([\w ]+?)'s\s*([.!]?)$", text.strip(), _F)
+    if (
+        m is not None
+        and _only(m.group(2), lexicon, "human")
+        and _ids(m.group(1), lexicon, "object")
+    ):
+        return f"{m.group(1)} is for {m.group(2)}{m.group(3)}"
+    m = re.match(
+        r"^([\w ]+?),\s*((?:the|that|this) [\w ]+?) (?:is|are) yours\s*([.!]?)$", text.strip(), _F
+    )
+    if (
+        m is not None
+        and _only(m.group(1), lexicon, "human")
+        and _ids(m.group(2), lexicon, "object")
+    ):
+        return f"{m.group(2)} is for {m.group(1)}{m.group(3)}"
+    m = re.match(r"^(?:per|at|by|on) ([\w ]+?)'s request,?\s*(.+)$", text.strip(), _F)
+    if (
+        m is not None
+        and _only(m.group(1), lexicon, "human")
+        and _fits(next(iter(_ids(m.group(1), lexicon))), m.group(2), lexicon)
+    ):
+        return _sub(r"\b(?:him|her)\b", m.group(1), m.group(2))
+    return text
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _said14,
     _spoken,
     _me_again,
     _courtesy14,
