@@ -341,6 +341,30 @@ def test_slip_costs() -> None:
         ("Mrs Khan (bed 3) wants the jug", "jug>C", WARD),
         ("Mrs Khan, bed 3, wants the jug", "jug>C", WARD),
         ("Give Mrs Khan (bed 2) the jug and Mr Lee (bed 3) the pills", "jug>C & pills>B", WARD),
+        # said by someone learning English, by someone older, in other Englishes
+        ("Is possible to give Emma the white cup?", "cup_white>C", LAB),
+        ("I am asking you to put the bowl in sink", "bowl@sink", LAB),
+        ("The sponge, please to put in the sink", "sponge@sink", LAB),
+        ("Emma is wanting that you give her the white cup", "cup_white>C", LAB),
+        ("Dana must to have the banana", "banana>A", LAB),
+        (
+            "Now then dear, I'd like the water jug to go to Mrs Khan if that's no trouble",
+            "jug>C",
+            WARD,
+        ),
+        ("My dear, would you kindly see that Mr Lee gets his magazine", "magazine>B", WARD),
+        ("Would you see Mrs Khan gets the jug", "jug>C", WARD),
+        ("Now, where was I? Oh yes, the jug to Mrs Khan", "jug>C", WARD),
+        ("What was it... ah, the jug for Mrs Khan", "jug>C", WARD),
+        ("The jug. For Mrs Khan. Thank you, dear.", "jug>C", WARD),
+        ("Reckon Lena wants the lemon", "lemon>B", KITCHEN),
+        ("Lena reckons she wants the lemon", "lemon>B", KITCHEN),
+        ("Howay, the salt to Lena", "salt>B", KITCHEN),
+        ("G'day, could the knife go to Marco", "knife>A", KITCHEN),
+        ("No worries, knife to Marco", "knife>A", KITCHEN),
+        ("Knife to Marco, no dramas", "knife>A", KITCHEN),
+        ("Can I get the salt for Lena", "salt>B", KITCHEN),
+        ("I'll have the salt for Lena", "salt>B", KITCHEN),
     ],
 )
 def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None:
@@ -359,10 +383,16 @@ def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None
         ("Do me a favour and give me the cup", CELL),
         ("The plan is to give me the cup", CELL),
         ("Give Bob the cup, like I said, and the apple", CELL),
+        ("Can I get the salt for me", KITCHEN),
+        ("Can I get the salt", KITCHEN),
+        ("Can I get the salt for the counter", KITCHEN),
+        ("No worries, don't give Marco the knife", KITCHEN),
+        ("Emma is wanting that you give me the white cup", LAB),
+        ("Mr Lee is wanting that you give her the magazine", WARD),
+        ("Now, where was I? Is the jug on the trolley?", WARD),
         # asked for one thing, given another (causes9): 'keeps asking for' is not rewritten
         ("Carol keeps asking for the apple, give her the cup", CELL),
     ],
 )
 def test_near_forms_of_the_new_classes_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
-

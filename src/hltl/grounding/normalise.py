@@ -1436,7 +1436,7 @@ def _thanks(text: str, _lexicon: Lexicon) -> str:
 
 def _bare_pair(text: str, lexicon: Lexicon) -> str:
     """'Wipes. Grandad.': an object said alone, then a person said alone: the object for them."""
-    m = re.match(r"^(?:the )?([\w ]+?)[.,]\s*([\w ]+?)[.!]?$", text.strip(), _F)
+    m = re.match(r"^(?:the )?([\w ]+?)[.,]\s*(?:for )?([\w ]+?)[.!]?$", text.strip(), _F)
     if m is None or not _only_kind(m.group(1), lexicon, "object"):
         return text
     if not _only(m.group(2), lexicon, "human"):
@@ -2952,6 +2952,39 @@ _SAID14: tuple[tuple[str, str], ...] = (
         r"four|five|six)\s*,",
         " ",
     ),
+    # "No worries, knife to Marco", "…, no dramas": set phrases of ease, not a negation
+    (
+        r"(^|(?<=[.;!?])\s*|,\s*)(?:no (?:worries|dramas|problem|probs|bother|biggie|sweat|stress"
+        r")(?: at all)?(?: mate| love)?)(?:\s*[,.!]+\s*|\s*$)",
+        r"\1",
+    ),
+    # "G'day", "Howay", "Ey up", "Wotcha": greetings
+    (
+        r"^(?:g'?day|howay|ey up|eh up|hey up|wotcha|watcha|oi|cooee|yo|aye|ahoy|howdy|hiya|sup|wa"
+        r"ssup|now then|well then|right then|morning all|evening all|hello all|hi all)(?: (?:mate"
+        r"|love|pet|folks|guys|all|there|dear))?\s*[,!.:]+\s*",
+        "",
+    ),
+    # "Now, where was I? Oh yes, …", "What was it... ah, …": the speaker thinking aloud
+    (
+        r"^(?:(?:now|so|right|ok|okay|um+|er+m?|hmm+),?\s+)?(?:where was i|what was it|what else|w"
+        r"hat was i saying|what did i want|let me think|let me see|let's see|what's next|now then)"
+        r"\s*[?.!,…]+\s*(?:(?:oh|ah|ahh|yes|yeah|right|that's it|that's right)[,!.]*\s+)*",
+        "",
+    ),
+    # "Reckon Lena wants the lemon", "I am asking you to put …"
+    (r"^(?:i )?reckon,?\s+", ""),
+    (r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) asking (?:you )?(?:to )?(?=[a-z])", r"\1"),
+    # "Is possible to give …", "please to put", "must to have": said by someone learning English
+    (r"^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", ""),
+    (r"\bplease to\b", "please"),
+    (r"\b(must|should|can|could) to (?=have|get|give|put|bring|take)\b", r"\1 "),
+    # "Would you see Mrs Khan gets the jug", "see to it that …"
+    (
+        r"(?:\b(?:would|could|can|will) you )?(?:kindly |please )*\bsee (?:to it )?(?:that )?(?=(?:"
+        r"the )?[a-z][\w ]*? (?:gets?|receives?|has)\b)",
+        "make sure ",
+    ),
     # "right about now"
     (r"\s+(?:right )?about now\b(?=\s*(?:[.,;!?]|$))", ""),
     # dictated: "new line give Omar the spoon", "… new paragraph …"
@@ -2969,15 +3002,24 @@ _WANTS14: tuple[tuple[str, str], ...] = (
     # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"
     (r"\b(?:will|would|'ll|'d) be wanting\b", "wants"),
     (r"\b(?:will|would|'ll|'d) be needing\b", "needs"),
+    # "Can I get the salt for Lena", "I'll have the salt for Lena": asked for someone else
+    (
+        r"^(?:(?:can|could|may) (?:i|we) (?:get|have|grab|please have|please get)|(?:i|we)'ll have"
+        r"|(?:i|we)'d like|(?:i|we) would like)((?: the| a| an| some) [\w ]+?) for ((?:the )?[\w "
+        r"]+?)(\s*,?\s*please)?\s*([.!?]?)$",
+        r"give\1 to \2\3\4",
+    ),
     # "Bob mentioned he'd like the cup", "Bob told me she wants …"
     (
         r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
-        r"let (?:me|us) know|was telling (?:me|us))(?: that)? (he|she|they)(?:'d| would) like\b",
+        r"let (?:me|us) know|was telling (?:me|us)|reckons|thinks)(?: that)? (he|she|they)(?:'d| wo"
+        r"uld) like\b",
         r"\1 would like",
     ),
     (
         r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
-        r"let (?:me|us) know|was telling (?:me|us))(?: that)? (?:he|she|they) (wants|needs)\b",
+        r"let (?:me|us) know|was telling (?:me|us)|reckons|thinks)(?: that)? (?:he|she|they) (wants"
+        r"|needs)\b",
         r"\1 \2",
     ),
     # "Bob ordered the cup", "Bob's order is the cup", "Bob's request: the cup", "Request from
@@ -3004,9 +3046,31 @@ def _said14(text: str, lexicon: Lexicon) -> str:
             continue
         if pattern.startswith("^((?:the )") and not _only(m.group(1), lexicon, "human"):
             continue
+        if pattern.startswith("^(?:(?:can|could|may)") and not (
+            _only(m.group(2), lexicon, "human")
+            and _only_kind(m.group(1).strip(), lexicon, "object")
+        ):
+            continue
         text = text[: m.start()] + m.expand(repl) + text[m.end() :]
     text = re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
-    return _pronoun_said(_possessed14(text, lexicon), lexicon)
+    return _pronoun_said(_possessed14(_wanting_that(text, lexicon), lexicon), lexicon)
+
+
+def _wanting_that(text: str, lexicon: Lexicon) -> str:
+    """'Emma is wanting that you give her the white cup': the request she wants, her pronoun
+    her (when the title fits)."""
+    m = re.match(
+        r"^((?:the )?[\w ]+?) (?:is wanting|wants|would like|would want|is asking|asks|asked) (?:t"
+        r"hat )?you (?:to )?((?:give|hand|pass|bring|take|put|place|fetch)\b.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    who = next(iter(_ids(m.group(1), lexicon, "human")))
+    if not _fits(who, m.group(2), lexicon):
+        return text
+    return _sub(r"\b(?:him|her)\b", m.group(1), m.group(2))
 
 
 def _pronoun_said(text: str, lexicon: Lexicon) -> str:
