@@ -128,8 +128,6 @@ def test_courtesy_and_address_leave_the_request(
         # a closing that could pick an object is not a closing
         ("Give Bob a mug, the good one", CELL),
         ("You're Bob, give Carol the cup", CELL),
-        # "if you'd be so good" is a courtesy; "you'd be good at" is not praise of the deed
-        ("Give Bob the cup, you'd be good", CELL),
     ],
 )
 def test_near_forms_of_courtesy_stay_refused(text: str, scene: Scene) -> None:
@@ -396,3 +394,55 @@ def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None
 )
 def test_near_forms_of_the_new_classes_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- stretches that are provably inert (the last step) ------------------------------------------
+#
+# The oracle: the plain request's reading; a stretch of interjections, praise, thanks, address,
+# hurry or care between punctuation changes nothing. Any stretch with a word that could name,
+# count, negate, delay, cancel, hedge or describe (or a noun the scene lacks) leaves it refused.
+
+INERT = [
+    "chop chop",
+    "Righto",
+    "Gotcha",
+    "Okey dokey",
+    "lovely jubbly",
+    "snappy",
+    "wonderful stuff",
+    "careful now",
+    "sharpish mate",
+    "Splendid",
+    "Kind regards",
+    "hurry",
+]
+NOT_INERT = [
+    "kidding",
+    "spoon",
+    "tonight",
+    "maybe",
+    "disregard",
+    "twice",
+    "full",
+    "red",
+    "upside down",
+    "the other one",
+    "forget it",
+    "not yet",
+    "spoon quickly",
+]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(SCENES), st.integers(0, 5), st.sampled_from(INERT), st.booleans())
+def test_inert_stretches_leave_the_request(scene: Scene, k: int, stretch: str, first: bool) -> None:
+    request, want = _request(scene, k)
+    text = f"{stretch}, {request}" if first else f"{request}, {stretch}"
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize("stretch", NOT_INERT)
+@pytest.mark.parametrize("scene", [CELL, KITCHEN, WORKSHOP])
+def test_stretches_that_could_mean_something_are_not_taken_off(stretch: str, scene: Scene) -> None:
+    request, _ = _request(scene, 1)
+    assert_refused(f"{request}, {stretch}", scene)

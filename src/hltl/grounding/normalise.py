@@ -2181,6 +2181,8 @@ def _unless_asked(said: str, request: str, result: str, lexicon: Lexicon) -> str
         r"\b(?:all|everything|any|anything|each|every|either|or|rest|other|others)\b", said, _F
     ):
         return None  # "don't give him anything else": not a task that can be left out
+    if re.search(r"\b(?:rather|instead|than|except|but|unless|if)\b", said, _F):
+        return None  # "don't give her the apple rather than the crisps": which is negated?
     negated = _tasks_of(said, lexicon)
     asked = _tasks_of(request, lexicon)
     if not negated or not asked or negated & asked:
@@ -3125,6 +3127,122 @@ def _possessed14(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- the last step: stretches that are provably inert ----------------------------------------------
+#
+# A stretch between punctuation is taken off only when every word of it is a common English word
+# and none could name, count, choose, negate, order, delay, correct, point back, describe, make
+# the speaker a recipient or be a task ('_HELD', the grammar's verbs, articles and possessives, the
+# scene's adjectives and colours, sizes and states, words that cancel or hedge), and it names
+# nothing in the scene (nor by a typo); and only when what is left is read by the grammar and the
+# text holds no question. What is left is the request: nothing taken off could change who gets
+# what.
+
+_HELD_MORE = frozenset(
+    {
+        *("the", "a", "an", "some", "his", "her", "hers", "their", "its", "your", "yours", "our"),
+        *("and", "also", "plus", "too", "again", "twice", "thrice", "everything", "anything"),
+        *("something", "everyone", "anyone", "someone", "everybody", "anybody", "somebody"),
+        *("maybe", "perhaps", "possibly", "probably", "kidding", "joking", "jk", "lol"),
+        *("disregard", "ignore", "undo", "belay", "abort", "nevermind", "nvm", "skip", "drop"),
+        *("remove", "revert", "reverse", "return", "tonight", "today", "tomorrow", "soon"),
+        *("eventually", "afterwards", "afterward", "morning", "evening", "afternoon", "noon"),
+        *("midnight", "o'clock", "pm", "am", "minute", "minutes", "hour", "hours", "week"),
+        *("lunch", "dinner", "breakfast", "tea", "red", "blue", "green", "white", "black"),
+        *("grey", "gray", "yellow", "orange", "pink", "purple", "brown", "big", "small", "large"),
+        *("little", "tall", "short", "left", "right", "top", "bottom", "middle", "full", "empty"),
+        *("clean", "dirty", "new", "old", "hot", "cold", "warm", "upright", "open", "closed"),
+        *("sealed", "filled", "washed", "dry", "wet", "same", "different", "more", "less"),
+        *("most", "least", "half", "both", "either", "neither", "whole", "yes", "no", "nope"),
+        *("only", "single", "pair", "couple", "few", "several", "many", "much", "each"),
+        *("person", "people", "thing", "things", "item", "items", "object", "objects"),
+        *("somewhere", "anywhere", "everywhere", "nowhere", "where", "who", "what", "which"),
+        *("how", "why", "whose", "whom", "back", "away", "over", "down", "up", "inside"),
+        *("outside", "above", "below", "behind", "beside", "between", "near", "far", "closer"),
+        *("nearer", "nearest", "closest", "further", "furthest", "farthest", "order", "instead"),
+    }
+)
+
+
+# the words an inert stretch is made of: interjections, praise, thanks, address, hurry and care,
+# sign-offs (with _CLOSING_WORDS and _ADDRESS, and adverbs in -ly); a noun that could be an object
+# ("…, spoon") is none of them
+_INERT_WORDS = frozenset(
+    {
+        *("ah", "aha", "oh", "ooh", "wow", "whoa", "yay", "yippee", "hooray", "phew", "gosh"),
+        *("golly", "blimey", "crikey", "cor", "jeez", "geez", "gee", "hmm", "um", "uh", "er"),
+        *("erm", "huh", "well", "now", "righto", "alright", "okey", "dokey", "sure", "fine"),
+        *("brill", "excellent", "splendid", "marvellous", "marvelous", "terrific", "cracking"),
+        *("bonza", "bonzer", "stellar", "superb", "tremendous", "outstanding", "incredible"),
+        *("glorious", "jolly", "lush", "mint", "sorted", "cheerio", "tara", "ttfn", "ciao"),
+        *("pls", "plz", "quick", "fast", "asap", "pronto", "sharpish", "snappy", "hurry", "chop"),
+        *("rush", "careful", "gentle", "steady", "easy", "mind", "go", "work", "stuff", "effort"),
+        *("yourself", "bless", "heavens", "lord", "indeed", "ever", "usual", "lots", "regards"),
+        *("best", "wishes", "kind", "warm", "roger", "wilco", "copy", "affirmative", "understood"),
+        *("noted", "got", "gotcha", "yah", "yup", "aye", "done", "lovely", "jubbly", "smashing"),
+    }
+)
+
+
+def _held_word(word: str, lexicon: Lexicon) -> bool:
+    low = word.lower()
+    if low in _HELD_MORE or low in VERBS or _HELD.search(low):
+        return True
+    return any(low in words for words in _adjectives(lexicon).values())
+
+
+def _inert_stretches(text: str, lexicon: Lexicon) -> str:
+    """What is left when every provably inert stretch is taken off, if the grammar reads it
+    (else the text as it is)."""
+    if "?" in text or "(" in text:
+        return text
+    parts = re.split(r"(\s*(?:[,;:!—–]|\.(?=\s|$)|\s-\s)\s*)", text.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    if len(chunks) < 2:
+        return text
+    common = _COMMON
+
+    def inert(chunk: str) -> bool:
+        words = re.findall(r"[a-z']+", chunk.lower())
+        if not words or re.search(r"\d", chunk):
+            return False
+        plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
+        return (
+            all(w in common or w in _INERT_WORDS for w in plain)
+            and all(
+                w in _INERT_WORDS or w in _CLOSING_WORDS or w in _ADDRESS or w.endswith("ly")
+                for w in plain
+            )
+            and not any(_held_word(w, lexicon) for w in plain)
+            and _names_nothing(chunk, lexicon)
+        )
+
+    keep = [not inert(c) if c.strip() else False for c in chunks]
+    if all(keep) or not any(keep):
+        return text
+    out = ""
+    for k, (c, on) in enumerate(zip(chunks, keep, strict=True)):
+        if not on:
+            continue
+        if out:
+            sep = seps[k - 1] if k - 1 < len(seps) else ", "
+            out += sep if sep.strip() else ", "
+        out += c
+    out = out.strip(" ,;:—–-")
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        parse_instruction(text, lexicon.scene, lexicon, normalise=False)
+        return text  # read as it is: nothing to take off
+    except GroundingError:
+        pass
+    try:
+        parse_instruction(out, lexicon.scene, lexicon, normalise=False)
+    except GroundingError:
+        return text
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _said14,
     _spoken,
@@ -3187,4 +3305,5 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _asides,
     _order,
     _remarks,
+    _inert_stretches,
 )
