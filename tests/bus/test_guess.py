@@ -14,14 +14,13 @@ from hltl.bus.keys import Keys
 from hltl.execution.log import LogRecord
 from hltl.sim import scenarios
 from hltl.sim.dynamic import make_trial
-from hltl.sim.episode import Episode, run_episode
+from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
 from hltl.world.scene import Scene
 from tests.bus.helpers import (
-    BusRun,
     Loopback,
     guesses_in_the_answer,
-    without_wall_clock,
+    same_as_local,
     wrong_hints,
 )
 
@@ -30,16 +29,6 @@ from tests.bus.helpers import (
 MODES = pytest.mark.parametrize("inline", [False, True], ids=["streamed", "in-the-answer"])
 
 EVENTS = Path(__file__).resolve().parents[2] / "examples" / "events"
-
-
-def _same(local: Episode, run: BusRun) -> None:
-    """The same log and metrics as in-process, and every action started once by the node."""
-    assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
-    assert without_wall_clock(run.episode.metrics.to_dict()) == without_wall_clock(
-        local.metrics.to_dict()
-    )
-    starts = [r.handle for r in local.records if r.type == "action_start"]
-    assert run.node.stats.starts == dict.fromkeys(starts, 1)
 
 
 def _fig1() -> tuple[Scene, dict[str, Any]]:
@@ -60,7 +49,7 @@ def test_fig1_a_step_held_back_undoes_the_guess(
     scene, kw = _fig1()
     local = run_episode(scene, **kw)
     run = loopback.run(scene, **kw)
-    _same(local, run)
+    same_as_local(local, run)
     stats = run.node.stats
     assert stats.guesses_kept == 0
     if inline:
@@ -76,8 +65,8 @@ def test_guessed_steps_save_round_trips(loopback: Loopback) -> None:
     local = run_episode(trial.scene, **kw)
     on = loopback.run(trial.scene, **kw)
     off = loopback.run(trial.scene, guess=False, **kw)
-    _same(local, on)
-    _same(local, off)
+    same_as_local(local, on)
+    same_as_local(local, off)
     assert on.node.stats.guesses_kept > 0
     assert on.cell.stats.guessed > 0 and on.cell.stats.guessed_ahead > 0
     assert off.node.stats.guessed == off.cell.stats.guessed == 0
@@ -103,7 +92,7 @@ def test_catalogue_cells_with_right_and_wrong_guesses(
     kw = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
     local = run_episode(trial.scene, **kw)
     run = loopback.run(trial.scene, **kw)
-    _same(local, run)
+    same_as_local(local, run)
     stats = run.node.stats
     assert stats.guesses_kept > 0  # (the executor waits for a guess its commands match)
     if inline:
@@ -154,7 +143,7 @@ def test_a_wrong_guess_never_shows(
         time.sleep(0.1)  # (and anything a guess would have published, after them)
     finally:
         sub.undeclare()
-    _same(local, run)
+    same_as_local(local, run)
     stats = run.node.stats
     assert stats.guesses_kept == 0 and run.cell.stats.guessed == 0
     if inline:

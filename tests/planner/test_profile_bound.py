@@ -176,3 +176,49 @@ def test_anytime_gives_its_last_share_to_the_profile_bound(monkeypatch: pytest.M
     assert upper is not None and floor <= ticks <= upper
     assert res.lower_bound is not None
     assert to_ticks(res.lower_bound) >= ticks
+
+
+def test_a_ten_second_budget_gives_the_profile_bound_its_share() -> None:
+    # 1.0 - 0.9 is 0.09999999999999998: compared as floats, 10 s budgets gave the profile bound
+    # nothing, and the benchmark's 10 s runs never asked it (sessions 12-13)
+    assert anytime.PROFILE_SHARE * 10.0 < anytime.PROFILE_MIN_SECONDS  # the trap is real
+    assert anytime._profile_fits(10.0)
+    assert anytime._profile_fits(30.0)
+    assert not anytime._profile_fits(9.0)
+    assert not anytime._profile_fits(1.0)
+
+
+def test_building_the_model_stops_at_the_deadline(monkeypatch: pytest.MonkeyPatch) -> None:
+    # building a 32-goal model takes 0.3-0.5 s of CPU: past the deadline it is not built (the
+    # 10 s anytime runs' last question ran over the budget by that much)
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    rows: list[object] = []
+    real = profile._robot_rows
+    monkeypatch.setattr(profile, "_robot_rows", lambda *a: rows.append(a) or real(*a))
+    level = to_ticks(3.3)
+    assert profile.feasible(problem, graph, node, tgts, level, time.perf_counter() - 1) is None
+    assert rows == []
+    answer = profile.feasible(problem, graph, node, tgts, level, time.perf_counter() + DEADLINE_S)
+    assert answer is True and rows  # (the spy is wired: with time left the rows are built)
+
+
+def test_cells_beyond_the_step_bound_skip_importing_cp_sat(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # 17 goals: the step bound does not apply, so it must not pay CP-SAT's import (0.5-1.5 s),
+    # which a 32-robot line (that never uses CP-SAT) would take from its plans
+    def no_import() -> bool:
+        raise AssertionError("CP-SAT asked for")
+
+    monkeypatch.setattr(anytime.lns, "available", no_import)
+    c = delivery_cell("grid", 17, 0)
+    problem = Problem(c.scene, c.spec)
+    s, node, _, tgts = start_targets(problem)
+    assert len(tgts) > anytime.SCHEDULE_UP_TO
+    floor = round(s.heuristic(node))
+    assert anytime.step_bound(problem, s, node, floor, None, time.perf_counter() + 5) == (
+        floor,
+        None,
+    )

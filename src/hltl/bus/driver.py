@@ -27,12 +27,14 @@ from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
-from hltl.execution.drivers import ActionState, ActionStatus, Expected, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Basis, Expected, Handle
+from hltl.execution.executor import ExactPlanner
 from hltl.execution.log import EventLog, LogRecord, RobotDown
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
 from hltl.skills.library import Action
+from hltl.spec.hierarchy import spec_to_dict
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
 
@@ -258,6 +260,10 @@ class BusCell:
         self._hint: tuple[tuple[Action, ...], ...] = ()
         self._guesses: list[list[tuple[int, int, Action]]] = []
         self._guessed = 0
+        # the executor's basis (see foresee) as it travels, its spec's version when built
+        self._basis: dict[str, Any] | None = None
+        self._spec_wire: tuple[int, dict[str, Any]] | None = None
+        self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
         self._guess_next = False  # the stream's next reply starts with a guessed step
@@ -512,6 +518,7 @@ class BusCell:
                     if keep and d.get("more"):
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
                         self._guess_next = bool(d.get("guessed"))
+                        self._foresee_next = bool(d.get("foresee"))
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -557,22 +564,21 @@ class BusCell:
         them are the loop's next, without a round trip. Otherwise the guess and every tick
         after it are dropped (the caller asks the node, which undoes them)."""
         queued = self._queued
-        if not queued or self._guessed >= len(self._guesses):
+        if not queued:
             return False
-        guess = self._guesses[self._guessed]
-        if len(queued) != len(guess) or any(
-            c.op != "start" or c.reason or c.motion or (c.seq, c.handle, c.action) != g
-            for c, g in zip(queued, guess, strict=True)
-        ):
-            return False  # (known here: the node's guess, still to come, is not waited for)
         front = self._front()
-        if front is None and self._stream is not None:  # the node streams the guess: wait
+        if front is None and self._stream is not None:  # the node streams the guess
+            hinted = self._guessed < len(self._guesses) and _same(
+                queued, self._guesses[self._guessed]
+            )
+            if not (hinted or self._foresee_next):
+                return False  # (known here: the node's guess, still to come, is not waited for)
             self._pull()
             front = self._front()
         if front is None or not front.peek_guess():
             return False
-        t = front.peek_time()
-        if any(c.t != t for c in queued):
+        guess = front.peek()
+        if not _same(queued, guess.starts) or any(c.t != guess.t for c in queued):
             return False
         tick = front.take()
         self._guessed += 1
@@ -751,6 +757,7 @@ class BusCell:
                     return
                 # (a guessed step's reply ends where the next guessed step would start)
                 self._guess_next = bool(d.get("guessed"))
+                self._foresee_next = bool(d.get("foresee"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
                 if d.get("guessed"):
@@ -772,7 +779,7 @@ class BusCell:
         commands the node may guess: numbered as they would be, their times left to it."""
         ahead = self._ahead_req
         guesses: list[list[tuple[int, int, Action]]] = []
-        if self._hint and self.guess and not self._motion:
+        if self.guess and not self._motion:
             h, seq = self._next_handle, self._seq
             for actions in self._hint:
                 step = []
@@ -781,13 +788,14 @@ class BusCell:
                     step.append((seq, h, a))
                     h += 1
                 guesses.append(step)
-            ahead = {
-                **ahead,
-                "next": [
+            ahead = {**ahead, "numbers": [self._seq + 1, self._next_handle]}
+            if guesses:
+                ahead["next"] = [
                     [{"seq": q, "handle": h, "action": a.to_dict()} for q, h, a in step]
                     for step in guesses
-                ],
-            }
+                ]
+            if self._basis is not None:
+                ahead["basis"] = self._basis
         req: dict[str, Any] = {
             "episode": self.episode,
             "step": self._step + 1,
@@ -861,6 +869,24 @@ class BusCell:
         the one before ends with every action done, and to simulate on (one answer carries
         several steps; a wrong guess costs the round trip it would have cost anyway)."""
         self._hint = tuple(s.actions for s in steps)
+
+    def foresee(self, basis: Basis) -> None:
+        """The executor's basis (:class:`~hltl.execution.drivers.Foresight`): sent with the
+        next step requests, for the node to plan the executor's next step itself where the
+        hint is stale (after a walk), with the executor's planner when it is one the node
+        can run (the exact planner with the scene's kinematics and costs)."""
+        p = basis.planner
+        if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
+            self._basis = None
+            return
+        if self._spec_wire is None or self._spec_wire[0] != basis.version:
+            self._spec_wire = (basis.version, spec_to_dict(basis.spec))
+        self._basis = {
+            "version": basis.version,
+            "spec": self._spec_wire[1],
+            "q": list(basis.q),
+            "planner": {"algorithm": p.algorithm, "timeout": p.timeout},
+        }
 
     def unavailable(self, t: float) -> frozenset[str]:
         self._ready()
@@ -1026,6 +1052,14 @@ class BusCell:
         cancel = Command(self.episode, self._seq, "halt", handle.id, handle.action, t, why)
         for r in handle.action.robots:
             self.link.put(self.keys.action(r), cancel.encode())
+
+
+def _same(queued: Sequence[Command], starts: Sequence[tuple[int, int, Action]]) -> bool:
+    """Whether the queued commands are exactly these starts (numbers, handles, actions)."""
+    return len(queued) == len(starts) and all(
+        c.op == "start" and not c.reason and not c.motion and (c.seq, c.handle, c.action) == g
+        for c, g in zip(queued, starts, strict=True)
+    )
 
 
 def _refusal(payload: bytes) -> str | None:

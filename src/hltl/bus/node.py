@@ -32,7 +32,9 @@ from hltl.bus.session import executor_here
 from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
-from hltl.execution.drivers import ActionState, ActionStatus, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Basis, Handle
+from hltl.execution.executor import ExactPlanner
+from hltl.execution.foresee import after_step, foresee_steps
 from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.sim.episode import Cell, CellFactory
@@ -40,6 +42,9 @@ from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.skills.library import Action
+from hltl.skills.semantics import ActionSemantics
+from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
 
@@ -62,6 +67,9 @@ GUESS_PAUSE = 0.002
 # guessed steps go as further replies after the answer (False: in the answer itself, every
 # guess made before the executor can answer it; slower, but what tests of wrong guesses need)
 GUESS_STREAM = True
+# a step the node foresees itself (its planner run on the executor's basis) gives up past this
+# many wall seconds: the node's step thread answers nothing meanwhile
+FORESEE_TIMEOUT = 0.05
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -95,6 +103,8 @@ class NodeStats:
     based: int = 0  # stretches after commands undone with the save made while idle (no save)
     guessed: int = 0  # steps started ahead on the executor's hint
     guesses_kept: int = 0  # of those, steps the executor did command so (the rest undone)
+    foreseen: int = 0  # of the guessed steps, those the node planned itself (not the hint)
+    foreseen_kept: int = 0  # of those, steps the executor did command so
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -122,6 +132,47 @@ class _Episode:
     idle: tuple[int, Callable[[], None]] | None = None
     # while a step's commands run: the calls they made on the cell, to make them again
     calls: list[tuple[Callable[[], Handle | None], Handle | None]] | None = None
+    # what the executor decides its next step from (its spec, monitor state, planner), and
+    # the last world it has seen (the one its latest plan was made in)
+    basis: _Basis | None = None
+    seen: WorldState | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class _Basis:
+    """The executor's :class:`~hltl.execution.drivers.Basis` as the node holds it: with the
+    monitor of its spec, and a planner only when the executor's is one the node can run."""
+
+    basis: Basis
+    monitor: HierarchyMonitor
+
+    @classmethod
+    def parse(cls, d: Any, known: _Basis | None) -> _Basis | None:
+        """The basis a request carries (``{"version", "spec", "q", "planner"}``); ``known``'s
+        spec is kept when the version is the same."""
+        if not isinstance(d, dict):
+            return known
+        try:
+            version, q = int(d["version"]), tuple(int(x) for x in d["q"])
+            p = d.get("planner")
+            planner = (
+                None
+                if not isinstance(p, dict)
+                else ExactPlanner(
+                    algorithm=str(p["algorithm"]),
+                    timeout=min(float(p["timeout"]), FORESEE_TIMEOUT),
+                )
+            )
+            if known is not None and known.basis.version == version:
+                spec, monitor = known.basis.spec, known.monitor
+            else:
+                spec = spec_from_dict(d["spec"], "<the executor's spec>")
+                monitor = HierarchyMonitor(spec)
+        except (KeyError, TypeError, ValueError, HltlError) as exc:
+            raise BusError(f"malformed basis: {exc}") from None
+        if len(q) != len(monitor.initial):
+            raise BusError(f"malformed basis: {len(q)} monitor states for {len(monitor.initial)}")
+        return cls(Basis(spec, version, q, planner), monitor)
 
 
 @dataclass(slots=True)
@@ -176,6 +227,8 @@ class _Ahead:
     # the executor's hint: the steps it will start next if nothing happens, each as its
     # starts (command number, handle, action), in order
     guesses: tuple[tuple[_Start, ...], ...] = ()
+    # the command number and handle the executor gives its next start
+    numbers: tuple[int, int] | None = None
 
     @classmethod
     def parse(cls, d: Any) -> _Ahead | None:
@@ -191,12 +244,16 @@ class _Ahead:
                 )
                 for step in d.get("next", ())
             )
+            nb = d.get("numbers")
+            numbers = None if nb is None else (int(nb[0]), int(nb[1]))
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed look-ahead request: {exc}") from None
         if count <= 0 or not (math.isfinite(tick) and tick > 0):
             return None
         stream = d.get("stream")
-        return cls(count, tick, max_time, stream if isinstance(stream, bool) else None, guesses)
+        return cls(
+            count, tick, max_time, stream if isinstance(stream, bool) else None, guesses, numbers
+        )
 
 
 # one start of a guessed step: its command number, the executor's handle, the action
@@ -229,8 +286,10 @@ class _Batch:
     marks: list[tuple[int, Callable[[], None], int, dict[int, Report]]] = field(
         default_factory=list
     )
-    # the guessed steps started in the batch, by their index in ``ticks``
+    # the guessed steps started in the batch, by their index in ``ticks``, and which of them
+    # the node planned itself
     started: dict[int, tuple[_Start, ...]] = field(default_factory=dict)
+    foreseen: set[int] = field(default_factory=set)
 
 
 @dataclass(slots=True)
@@ -247,6 +306,17 @@ class _Stretch:
     # the executor's hint still to guess, and whether the next item is its first step's starts
     guesses: list[tuple[_Start, ...]] = field(default_factory=list)
     guess_due: bool = False
+    # foresight: the executor's basis, the monitor state once the step simulated now ends
+    # as planned, the context the guesses to come were planned in, whether they are the
+    # node's own plan's, and whether the next guessed step is to be planned here
+    basis: _Basis | None = None
+    q: MonitorState = ()
+    ctx: Any = None
+    own: bool = False
+    foresee: bool = False
+    # the command number and handle of the next guessed start (foresight numbers its own)
+    numbers: tuple[int, int] | None = None
+    said: bool = False  # an instruction came during the stretch (a new spec is coming)
 
 
 class CellNode:
@@ -316,6 +386,7 @@ class CellNode:
         # them when no query waits: off the executor's critical path)
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
+        self._semantics: ActionSemantics | None = None  # (foresight: contexts, transitions)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -390,6 +461,7 @@ class CellNode:
             self.stats.episodes += 1
             self.stats.starts = {}
             obs = cell.observe(0.0)
+            ep.seen = obs
             answer = {
                 "episode": episode,
                 "observation": world_to_wire(obs),
@@ -492,6 +564,8 @@ class CellNode:
                 head: dict[str, Any] = {"from": first, "more": more}
                 if not s.ahead.stream:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
+                    if s.guess_due and s.foresee:
+                        head["foresee"] = True  # (the next one planned here)
                 chunk = encode_answer(head, ticks)
                 try:
                     self._reply_bytes(query, chunk)
@@ -556,8 +630,10 @@ class CellNode:
                     self.stats.based += 1
             else:
                 obs, tick, reports = self._tick(ep, t, ep.latest, publish=False)
+                ep.seen = obs
                 answer = {"episode": ep.id, "step": n, **tick}
                 answer["status"] = status + answer["status"]
+            self._take_basis(ep, d.get("ahead"))
             s, ahead = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")), base)
             reply = encode_answer(answer, ahead)
             ep.last_step, ep.last_reply = n, reply
@@ -571,6 +647,17 @@ class CellNode:
             if s is not None and not s.done:
                 stretch = (ep, s)
         return stretch
+
+    def _take_basis(self, ep: _Episode, ahead: Any) -> None:
+        """The executor's basis, as a step request carries it (a malformed one is dropped:
+        the node then only takes hints)."""
+        if not isinstance(ahead, dict) or "basis" not in ahead:
+            return
+        try:
+            ep.basis = _Basis.parse(ahead["basis"], ep.basis)
+        except BusError:
+            self.stats.malformed += 1
+            ep.basis = None
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -730,6 +817,7 @@ class CellNode:
         )
         if not ahead.stream:  # (a streamed stretch is never run past a step's end)
             s.guesses = list(ahead.guesses)
+            self._foresight(ep, s)
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
@@ -741,7 +829,36 @@ class CellNode:
                 answer["more"] = True
                 if s.guess_due:  # (what follows starts with a guessed step)
                     answer["guessed"] = True
+                    if s.foresee:  # (planned here: the executor cannot know it from its hint)
+                        answer["foresee"] = True
         return s, out
+
+    def _foresight(self, ep: _Episode, s: _Stretch) -> None:
+        """Let the stretch foresee the executor's next steps itself, when the executor sent
+        its basis (with a planner the node can run) and how it numbers its next start."""
+        bs = ep.basis
+        if bs is None or bs.basis.planner is None or s.ahead.numbers is None:
+            return
+        s.basis, s.q, s.numbers = bs, bs.basis.q, s.ahead.numbers
+        if ep.seen is not None:
+            s.ctx = self._context(ep.seen)
+
+    def _semantics_of(self) -> ActionSemantics:
+        if self._semantics is None:
+            self._semantics = ActionSemantics.of(self.scene)
+        return self._semantics
+
+    def _context(self, world: WorldState) -> Any:
+        return self._semantics_of().context(world)
+
+    def _stale(self, s: _Stretch, world: WorldState) -> bool:
+        """Whether the node plans the next step itself rather than take the hint: the world's
+        context changed since the hint's plan was made (a walk), the hint is used up, or the
+        guesses are already the node's own. Not after an instruction: the executor's spec
+        changes with it."""
+        if s.basis is None or s.said:
+            return False
+        return s.own or not s.guesses or self._context(world) != s.ctx
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
         """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
@@ -790,8 +907,16 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
         steady = list(tick.unavailable) == s.unavailable and t_next < ahead.max_time - 1e-9
         s.done = _may_act(reports, b.latest) or not steady
-        if s.done and steady and s.guesses and _step_done(reports, b.latest):
-            s.done, s.guess_due = False, True  # the executor's next step starts now, it says
+        s.said = s.said or bool(instructions)
+        if (
+            s.done
+            and steady
+            and (s.guesses or s.basis is not None)
+            and _step_done(reports, b.latest)
+        ):
+            s.foresee = self._stale(s, obs)
+            if s.guesses or s.foresee:  # the executor's next step starts now, it says
+                s.done, s.guess_due = False, True
         b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
@@ -804,14 +929,15 @@ class CellNode:
         exactly that step then, else it is undone with the ticks after it. Not committed (the
         starts counted, the reports published) until the executor says so."""
         b = s.batch
-        step = s.guesses.pop(0)
-        if any(h in ep.handles or h in ep.cancelled for _, h, _ in step):
-            s.done, s.guesses = True, []  # (a hint out of date: handles taken)
-            return None
-        t = s.t
-        i = len(b.ticks)
         world = b.ticks[-1][1]
         assert world is not None  # (a guess follows the tick that ended the step)
+        got = self._foreseen(s, world) if s.foresee else s.guesses.pop(0)
+        if got is None or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
+            s.done, s.guesses = True, []  # (nothing to start, or a hint out of date)
+            return None
+        step = got
+        t = s.t
+        i = len(b.ticks)
         # saved first: a wrong guess is undone to here, nothing replayed, and the save is then
         # the base of the stretch after the executor's own commands (see _commit)
         mark = _saver(ep.cell)
@@ -834,6 +960,17 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
+        if s.foresee:
+            b.foreseen.add(i)
+        s.numbers = (step[-1][0] + 1, step[-1][1] + 1)
+        if s.basis is not None:  # the monitor state once this step ends as planned
+            q = after_step(
+                self._semantics_of(), s.basis.monitor, s.q, world, [a for _, _, a in step]
+            )
+            if q is None:
+                s.basis = None
+            else:
+                s.q = q
         s.next, s.unavailable = clock["next"], clock["unavailable"]
         # each guessed step gets a span of its own: the ticks after it go as further replies
         # (off the executor's critical path), and a wrong guess is undone from its save
@@ -847,7 +984,33 @@ class CellNode:
             count=b.seq,
             unavailable=tuple(clock["unavailable"]),
             guess=True,
+            starts=step,
         )
+
+    def _foreseen(self, s: _Stretch, world: WorldState) -> tuple[_Start, ...] | None:
+        """The executor's next step as its replan at this step's end will make it: its
+        planner, its spec and monitor state, on the world as the executor will see it; the
+        plan's later steps are the guesses after it, numbered on (``None``: no plan, or the
+        spec is accepted)."""
+        bs, numbers = s.basis, s.numbers
+        assert bs is not None and numbers is not None
+        w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
+        basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
+        steps = foresee_steps(self.scene, basis, bs.monitor, w)
+        s.own, s.ctx = True, self._context(world)
+        if not steps:
+            return None
+        seq, h = numbers
+        numbered = []
+        for actions in steps:
+            step = []
+            for a in actions:
+                step.append((seq, h, a))
+                seq, h = seq + 1, h + 1
+            numbered.append(tuple(step))
+        s.guesses = numbered[1:]
+        self.stats.foreseen += 1
+        return numbered[0]
 
     def _start_guessed(
         self, ep: _Episode, h: int, action: Action, t: float, latest: dict[int, Report]
@@ -937,10 +1100,15 @@ class CellNode:
                 for _, h, action in b.started[j]:
                     self._start_guessed(ep, h, action, t, ep.latest)
                 self._clock(ep.cell, t)  # (as the guess: the same calls)
+        for _, obs, *_ in reversed(b.ticks[:consumed]):
+            if obs is not None:  # (the last world the executor has seen)
+                ep.seen = obs
+                break
         # the guessed steps the executor took are its commands now: counted as they would be
         for j, step in b.started.items():
             if j < consumed:
                 self.stats.guesses_kept += 1
+                self.stats.foreseen_kept += j in b.foreseen
                 for q, h, _ in step:
                     self.stats.starts[h] = self.stats.starts.get(h, 0) + 1
                     ep.max_cmd = max(ep.max_cmd, q)

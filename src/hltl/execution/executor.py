@@ -14,7 +14,9 @@ from hltl.execution.decision import Phase, Trigger, Triggers
 from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
+    Basis,
     Expected,
+    Foresight,
     Handle,
     Lookahead,
     MotionSource,
@@ -248,6 +250,8 @@ class Executor(TickTemplate):
         # a driver that takes hints is told the plan's next steps at each dispatch (checked
         # once: isinstance against a Protocol is slow)
         self._expect = driver.expect if isinstance(driver, Lookahead) else None
+        # one that foresees the next step is told the spec and monitor state it follows from
+        self._foresee = driver.foresee if isinstance(driver, Foresight) else None
         self.log = EventLog() if log is None else log
         if isinstance(cost, MotionSource):
             # motions chain through where this episode's plans leave the arms, and only this
@@ -294,6 +298,7 @@ class Executor(TickTemplate):
         if spec is not None:
             self._set_spec(spec, None)
             self._trigger.add(Trigger.INITIAL)
+            self._tell_basis()
 
     # -- public ----------------------------------------------------------------------------------
 
@@ -340,6 +345,7 @@ class Executor(TickTemplate):
         if self.status is ExecStatus.DONE:
             self.status = ExecStatus.RUNNING
             self.reason = ""
+        self._tell_basis()
 
     # -- the tick's steps (TickTemplate.update runs them in order) -------------------------------
 
@@ -633,6 +639,8 @@ class Executor(TickTemplate):
             )
         if self._expect is not None and self._running:
             self._hint(step, following)
+        if self._foresee is not None and self._running:
+            self._tell_basis()
         self._plan = None  # the suffix is replanned when this step ends
         self._step_started = self.t
         self._waiting = None
@@ -650,6 +658,15 @@ class Executor(TickTemplate):
             expected.append(Expected(tuple(s.actions), round(at, 6)))
             at += s.duration
         self._expect(expected)
+
+    def _tell_basis(self) -> None:
+        """Tell a driver that foresees the next step what the executor will decide it from
+        (:class:`~hltl.execution.drivers.Foresight`): nothing here depends on it."""
+        if self._foresee is None or self.spec is None or self.monitor is None:
+            return
+        after = self._after_running()
+        q = self.q if after is None else after[1]
+        self._foresee(Basis(self.spec, self._spec_version, q, self.planner))
 
     # -- deciding --------------------------------------------------------------------------------
 
