@@ -736,6 +736,8 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
     words = clause.strip(" ,:").lower()
     if _NEGATIONS.search(words) or _ORDER_WORDS.search(words):
         return False  # "Bob first, please" orders: no remark
+    if "," in words:
+        return False  # "he's hungry, just kidding": a remark is one clause
     words = re.sub(r"^(?:(?:and|so|because|since|as|anyway|well|ok|okay|right),?\s+)+", "", words)
     m = re.match(r"^(?:it'?s|its|it|he|she|they|that|this|there)\b", words)
     if m is None:
