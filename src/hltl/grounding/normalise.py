@@ -2266,10 +2266,21 @@ def _inert(words: str, lexicon: Lexicon) -> bool:
 
 # the hearer addressed as a group ("y'all", "you guys", "yous", "ye"): 'you'
 _HEARERS = (
-    (r"\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\b", "you"),
+    # (before a verb of the request, 'mind', a modal or a stop: "You guys is the bottle …?" is
+    # not rewritten)
+    (
+        r"\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\b(?=\s*(?:[,.!:;]|$|"
+        r"(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please|could|can|would|w"
+        r"ill|need|have|should|must|go|just)\b))",
+        "you",
+    ),
     (r"\bye\b(?=\s+(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please)\b)", "you"),
     (r"\b(could|would|can|will|do|did|have|are|were) ye\b", r"\1 you"),
-    (r"\byou all\b(?!\s+(?:the|of|your|my|these|those)\b)", "you"),
+    (
+        r"\byou all\b(?=\s*(?:[,.!:;]|$|(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|"
+        r"please|could|can|would|will|need|have|should|must|just)\b))",
+        "you",
+    ),
 )
 # apostrophes left out ("thats it", "isnt"): the contraction ('its' and 'were' are words)
 _UNAPOSTROPHED = {
@@ -3185,6 +3196,20 @@ _INERT_WORDS = frozenset(
 )
 
 
+# adverbs of manner, hurry and stance only ('lastly', 'respectively', 'preferably', 'separately'
+# order, pair, choose or split, so an adverb is inert only when it is one of these)
+_MANNER = frozenset(
+    {
+        *("quickly", "carefully", "gently", "slowly", "swiftly", "promptly", "urgently"),
+        *("immediately", "kindly", "nicely", "safely", "softly", "quietly", "calmly", "smoothly"),
+        *("speedily", "hastily", "rapidly", "steadily", "politely", "gladly", "happily"),
+        *("really", "truly", "honestly", "seriously", "genuinely", "absolutely", "totally"),
+        *("literally", "basically", "certainly", "definitely", "obviously", "clearly", "simply"),
+        *("surely", "cheerfully", "warmly", "delicately", "neatly", "tidily", "properly"),
+    }
+)
+
+
 def _held_word(word: str, lexicon: Lexicon) -> bool:
     low = word.lower()
     if low in _HELD_MORE or low in VERBS or _HELD.search(low):
@@ -3211,7 +3236,7 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
         return (
             all(w in common or w in _INERT_WORDS for w in plain)
             and all(
-                w in _INERT_WORDS or w in _CLOSING_WORDS or w in _ADDRESS or w.endswith("ly")
+                w in _INERT_WORDS or w in _CLOSING_WORDS or w in _ADDRESS or w in _MANNER
                 for w in plain
             )
             and not any(_held_word(w, lexicon) for w in plain)

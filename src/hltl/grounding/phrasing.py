@@ -2792,14 +2792,8 @@ def _not_appended_other(items: list[Item], k: int) -> None:
         j -= 1
     if j < 0 or items[j].kind != "punct" or items[j].text != ",":
         return
-    if j >= 1 and items[j - 1].text.lower() in (
-        "no",
-        "wait",
-        "actually",
-        "sorry",
-        "mean",
-        "rather",
-    ):
+    said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
+    if said & {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}:
         return  # "the green one... no, the other one": a correction, read as one
     n = k + 1
     if n < len(items) and items[n].kind == "word" and items[n].text.lower() in ("one", "ones"):
