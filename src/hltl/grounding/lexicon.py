@@ -1448,6 +1448,8 @@ class Lexicon:
         if len(typed) != len(name) + 1 or slip_cost(typed, name) == 1.0:
             return None
         own = self._own_words()
+        if typed in own:
+            return None  # "pens": the plural of a scene word, not a typo
         common = common_words()
         return next(
             (
