@@ -363,6 +363,17 @@ def test_slip_costs() -> None:
         ("Knife to Marco, no dramas", "knife>A", KITCHEN),
         ("Can I get the salt for Lena", "salt>B", KITCHEN),
         ("I'll have the salt for Lena", "salt>B", KITCHEN),
+        # notes of a kind for a person, 'the lot', 'any old', 'when you're done' at the end
+        ("Any old pen for Sam", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("A pen for Sam, any colour", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("A pen for Sam, the red one", "pen_red>B", OFFICE),
+        ("Stapler in the box when you're done", "stapler@box", OFFICE),
+        (
+            "Give Priya the lot",
+            "pen_black>A & notebook>A & pen_blue>A & stapler>A & pen_red>A",
+            OFFICE,
+        ),
+        ("Priya can have the lot apart from the pens", "notebook>A & stapler>A", OFFICE),
     ],
 )
 def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None:
@@ -381,6 +392,9 @@ def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None
         ("Do me a favour and give me the cup", CELL),
         ("The plan is to give me the cup", CELL),
         ("Give Bob the cup, like I said, and the apple", CELL),
+        ("A ruler for Sam", OFFICE),
+        ("A pen for the box", OFFICE),
+        ("Give Priya a lot of pens", OFFICE),
         ("Can I get the salt for me", KITCHEN),
         ("Can I get the salt", KITCHEN),
         ("Can I get the salt for the counter", KITCHEN),

@@ -3000,6 +3000,18 @@ _SAID14: tuple[tuple[str, str], ...] = (
         r"the )?[a-z][\w ]*? (?:gets?|receives?|has)\b)",
         "make sure ",
     ),
+    # "Give Priya the lot", "All of it to Priya bar the pens": everything (but)
+    (r"\bthe (?:whole )?lot\b(?! of)", "everything"),
+    (r"^all of it\b", "everything"),
+    (r"\b(everything|everything else)\s+bar\s+(?=the\b)", r"\1 except "),
+    # "Any old pen for Sam": any pen
+    (r"\bany old\b", "any"),
+    # "Stapler in the box when you're done": when, with nothing after it
+    (
+        r",?\s+when (?:you're|you are|you've|you have) (?:done|finished|free|ready|got a (?:sec|m"
+        r"inute|moment|mo))\s*([.!]?)\s*$",
+        r"\1",
+    ),
     # "right about now"
     (r"\s+(?:right )?about now\b(?=\s*(?:[.,;!?]|$))", ""),
     # dictated: "new line give Omar the spoon", "… new paragraph …"
@@ -3068,6 +3080,7 @@ def _said14(text: str, lexicon: Lexicon) -> str:
             continue
         text = text[: m.start()] + m.expand(repl) + text[m.end() :]
     text = re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
+    text = _a_kind_for(text, lexicon)
     return _pronoun_said(_possessed14(_wanting_that(text, lexicon), lexicon), lexicon)
 
 
@@ -3109,6 +3122,22 @@ def _pronoun_said(text: str, lexicon: Lexicon) -> str:
     if not _fits(next(iter(_ids(said, lexicon, "human"))), head, lexicon):
         return text
     return _sub(r"\b(?:him|her|he|she)\b", said, head) + m.group(3)
+
+
+def _a_kind_for(text: str, lexicon: Lexicon) -> str:
+    """'A pen for Sam, any colour', 'One cup for Omar': a note giving one of a kind to a person,
+    as 'give Sam a pen' (whatever is said after it is read with it)."""
+    m = re.match(
+        r"^(?:just |only )?(?:a|an|any|one) ([a-z]+) (?:for|to) ([^,.;!?]+?)(?=\s*(?:[,.;!]|$))"
+        r"(.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(2), lexicon, "human"):
+        return text
+    if _kind_of(m.group(1), lexicon) != m.group(1).lower():
+        return text
+    return f"give {m.group(2)} a {m.group(1)}{m.group(3)}"
 
 
 def _possessed14(text: str, lexicon: Lexicon) -> str:
