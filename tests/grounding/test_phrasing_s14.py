@@ -477,6 +477,8 @@ def test_stretches_that_could_mean_something_are_not_taken_off(stretch: str, sce
         ("Give Bob the chips, he's hungry, just kidding", CELL),
         ("Hand Alice the bottle, she's got a meeting in five, tomorrow", CELL),
         ("Cup for Alice. Apple for Bob. That's all, maybe", CELL),
+        ("You guys does Alice have the bottle?", CELL),  # a question after its hearers
+        ("you guys is the apple on the shelf?", CELL),
     ],
 )
 def test_fuzz_findings_are_refused(text: str, scene: Scene) -> None:

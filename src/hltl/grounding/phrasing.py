@@ -27,6 +27,10 @@ _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
     {"is", "are", "was", "were", "does", "do", "did", "has", "have", "had", "isn"}
 )
+# the hearers addressed before a question ("you guys does …?")
+_HEARER_WORDS = frozenset(
+    {"you", "guys", "y'all", "yall", "folks", "everyone", "robot", "robots", "team", "lads"}
+)
 _PERSON_PRONOUNS = frozenset({"he", "him", "she", "her", "his", "hers"})
 _SPEAKER = frozenset({"i", "me", "us", "we", "myself"})
 _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "also"})
@@ -111,8 +115,10 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
     """Refuse the sentence ``items[start:end]`` when the clause at ``k`` opens as a question."""
     if k != start and not _is(items[k], "and"):
         return  # after a comma only ", but …" / ", and …" opens a clause of its own
-    while k < end and (_is(items[k], ",", "filler", "correct", "and")):
-        k += 1
+    while k < end and (
+        _is(items[k], ",", "filler", "correct", "and") or items[k].text.lower() in _HEARER_WORDS
+    ):
+        k += 1  # "You guys does Alice have the bottle?": the hearers, then the question
     if k < end:
         first = items[k]
         nxt = items[k + 1] if k + 1 < end else None
