@@ -128,8 +128,6 @@ def test_courtesy_and_address_leave_the_request(
         # a closing that could pick an object is not a closing
         ("Give Bob a mug, the good one", CELL),
         ("You're Bob, give Carol the cup", CELL),
-        # "if you'd be so good" is a courtesy; "you'd be good at" is not praise of the deed
-        ("Give Bob the cup, you'd be good", CELL),
     ],
 )
 def test_near_forms_of_courtesy_stay_refused(text: str, scene: Scene) -> None:
@@ -292,3 +290,218 @@ def test_slip_costs() -> None:
     assert slip_cost("bxttle", "bottle") == 2.5  # any other letter
     assert slip_cost("cup", "cup") is None
     assert slip_cost("cup", "apple") is None
+
+
+# -- classes a new writer brings (the session's own probes, across scenes) -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Can you do me a kindness and bring Mr Lee his tablets", "pills>B", WARD),
+        ("do us a favour and put the bowl in the sink", "bowl@sink", LAB),
+        ("Mia could really do with the scanner right about now", "scanner>A", DEPOT),
+        ("new line give omar the spoon full stop", "spoon>B", LAB),
+        (
+            "would you be a darling and load the small box onto the pallet",
+            "box_small@pallet",
+            DEPOT,
+        ),
+        ("Ruth will be wanting the thermometer", "thermometer>A", WARD),
+        ("Zoe would be wanting the green book", "book_green>C", CLASSROOM),
+        (
+            "Marco gets the knife, Lena gets the tongs, and that's the lot",
+            "knife>A & tongs>B",
+            KITCHEN,
+        ),
+        ("Right then, jug to Mrs Khan, and Bob's your uncle", "jug>C", WARD),
+        ("Give Bob the cup, eh", "cup>B", CELL),
+        ("Put the cup on the shelf, there you go", "cup@shelf", CELL),
+        ("Could you slip Bob the chips", "chips>B", CELL),
+        ("Bung the cup over to Bob", "cup>B", CELL),
+        ("Pile the mugs on the table", "mug_red@table & mug_blue@table", CELL),
+        ("Bob wants the cup, if I remember right", "cup>B", CELL),
+        ("Bob mentioned he'd like the cup", "cup>B", CELL),
+        ("Like I said before, give Bob the cup", "cup>B", CELL),
+        ("Per Bob's request, give him the cup", "cup>B", CELL),
+        ("Bob's request: the cup", "cup>B", CELL),
+        ("Order for Bob: one cup", "cup>B", CELL),
+        ("Bob ordered the cup", "cup>B", CELL),
+        ("The cup is Bob's", "cup>B", CELL),
+        ("Carol, the apple is yours", "apple>C", CELL),
+        ("OK Google, give Lena the salt", "salt>B", KITCHEN),
+        ("Would you mind awfully passing Mrs Khan the water jug", "jug>C", WARD),
+        ("Mrs Khan was wondering if she might have the water jug", "jug>C", WARD),
+        ("Mrs Khan would be ever so grateful for the water jug", "jug>C", WARD),
+        ("The plan is to give Mrs Khan the water jug", "jug>C", WARD),
+        ("Give the jug to her, Mrs Khan I mean", "jug>C", WARD),
+        ("Give her the jug - Mrs Khan", "jug>C", WARD),
+        ("Mrs Khan (bed 3) wants the jug", "jug>C", WARD),
+        ("Mrs Khan, bed 3, wants the jug", "jug>C", WARD),
+        ("Give Mrs Khan (bed 2) the jug and Mr Lee (bed 3) the pills", "jug>C & pills>B", WARD),
+        # said by someone learning English, by someone older, in other Englishes
+        ("Is possible to give Emma the white cup?", "cup_white>C", LAB),
+        ("I am asking you to put the bowl in sink", "bowl@sink", LAB),
+        ("The sponge, please to put in the sink", "sponge@sink", LAB),
+        ("Emma is wanting that you give her the white cup", "cup_white>C", LAB),
+        ("Dana must to have the banana", "banana>A", LAB),
+        (
+            "Now then dear, I'd like the water jug to go to Mrs Khan if that's no trouble",
+            "jug>C",
+            WARD,
+        ),
+        ("My dear, would you kindly see that Mr Lee gets his magazine", "magazine>B", WARD),
+        ("Would you see Mrs Khan gets the jug", "jug>C", WARD),
+        ("Now, where was I? Oh yes, the jug to Mrs Khan", "jug>C", WARD),
+        ("What was it... ah, the jug for Mrs Khan", "jug>C", WARD),
+        ("The jug. For Mrs Khan. Thank you, dear.", "jug>C", WARD),
+        ("Reckon Lena wants the lemon", "lemon>B", KITCHEN),
+        ("Lena reckons she wants the lemon", "lemon>B", KITCHEN),
+        ("Howay, the salt to Lena", "salt>B", KITCHEN),
+        ("G'day, could the knife go to Marco", "knife>A", KITCHEN),
+        ("No worries, knife to Marco", "knife>A", KITCHEN),
+        ("Knife to Marco, no dramas", "knife>A", KITCHEN),
+        ("Can I get the salt for Lena", "salt>B", KITCHEN),
+        ("I'll have the salt for Lena", "salt>B", KITCHEN),
+        # notes of a kind for a person, 'the lot', 'any old', 'when you're done' at the end
+        ("Any old pen for Sam", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("A pen for Sam, any colour", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("A pen for Sam, the red one", "pen_red>B", OFFICE),
+        ("Stapler in the box when you're done", "stapler@box", OFFICE),
+        (
+            "Give Priya the lot",
+            "pen_black>A & notebook>A & pen_blue>A & stapler>A & pen_red>A",
+            OFFICE,
+        ),
+        ("Priya can have the lot apart from the pens", "notebook>A & stapler>A", OFFICE),
+    ],
+)
+def test_classes_a_new_writer_brings(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give him the jug - Mrs Khan", WARD),  # the title does not fit
+        ("Give her the jug, Mr Lee", WARD),
+        ("Give her the jug and him the pills - Mrs Khan", WARD),
+        ("Give Bob (two) the cup", CELL),
+        ("Bob ordered the cup for Carol", CELL),
+        ("Carol, the apple is Bob's", CELL),
+        ("Do me a favour and give me the cup", CELL),
+        ("The plan is to give me the cup", CELL),
+        ("Give Bob the cup, like I said, and the apple", CELL),
+        ("A ruler for Sam", OFFICE),
+        ("A pen for the box", OFFICE),
+        ("Give Priya a lot of pens", OFFICE),
+        ("Can I get the salt for me", KITCHEN),
+        ("Can I get the salt", KITCHEN),
+        ("Can I get the salt for the counter", KITCHEN),
+        ("No worries, don't give Marco the knife", KITCHEN),
+        ("Emma is wanting that you give me the white cup", LAB),
+        ("Mr Lee is wanting that you give her the magazine", WARD),
+        ("Now, where was I? Is the jug on the trolley?", WARD),
+        # asked for one thing, given another (causes9): 'keeps asking for' is not rewritten
+        ("Carol keeps asking for the apple, give her the cup", CELL),
+    ],
+)
+def test_near_forms_of_the_new_classes_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- stretches that are provably inert (the last step) ------------------------------------------
+#
+# The oracle: the plain request's reading; a stretch of interjections, praise, thanks, address,
+# hurry or care between punctuation changes nothing. Any stretch with a word that could name,
+# count, negate, delay, cancel, hedge or describe (or a noun the scene lacks) leaves it refused.
+
+INERT = [
+    "chop chop",
+    "Righto",
+    "Gotcha",
+    "Okey dokey",
+    "lovely jubbly",
+    "snappy",
+    "wonderful stuff",
+    "careful now",
+    "sharpish mate",
+    "Splendid",
+    "Kind regards",
+    "hurry",
+]
+NOT_INERT = [
+    "kidding",
+    "spoon",
+    "tonight",
+    "maybe",
+    "disregard",
+    "twice",
+    "full",
+    "red",
+    "upside down",
+    "the other one",
+    "forget it",
+    "not yet",
+    "spoon quickly",
+]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(SCENES), st.integers(0, 5), st.sampled_from(INERT), st.booleans())
+def test_inert_stretches_leave_the_request(scene: Scene, k: int, stretch: str, first: bool) -> None:
+    request, want = _request(scene, k)
+    text = f"{stretch}, {request}" if first else f"{request}, {stretch}"
+    assert_means(text, want, scene)
+
+
+@pytest.mark.parametrize("stretch", NOT_INERT)
+@pytest.mark.parametrize("scene", [CELL, KITCHEN, WORKSHOP])
+def test_stretches_that_could_mean_something_are_not_taken_off(stretch: str, scene: Scene) -> None:
+    request, _ = _request(scene, 1)
+    assert_refused(f"{request}, {stretch}", scene)
+
+
+# -- wrong readings found by this session's fuzz (most already on main), now refused ---------------
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("You're Carol, bob wants a mug.", CELL),  # was: a mug each for Carol and Bob
+        ("You're Alice, I need the bottle and the chips brought to Person B.", CELL),
+        ("Give Alice the mug closest to her rather than the blue mug", CELL),
+        ("Give Carol the chips, but don't give her the apple rather than the crisps", CELL),
+        ("Bob wants a mug, the other one", CELL),  # was: both mugs
+        ("Give Alice the cup, thanks, the other one", CELL),
+        ("Give Bob the chips, he's hungry, just kidding", CELL),
+        ("Hand Alice the bottle, she's got a meeting in five, tomorrow", CELL),
+        ("Cup for Alice. Apple for Bob. That's all, maybe", CELL),
+        ("You guys does Alice have the bottle?", CELL),  # a question after its hearers
+        ("you guys is the apple on the shelf?", CELL),
+    ],
+)
+def test_fuzz_findings_are_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_fuzz_findings_keep_their_neighbours() -> None:
+    # was: the two at once ('after thats it' lost its 'after')
+    assert_means(
+        "Give Person A the chips, and Person B gets the bottle after thats it",
+        "chips>A ; bottle>B",
+        CELL,
+    )
+    assert_means(
+        "Give Person A the chips, and Person B gets the bottle after, thanks",
+        "chips>A ; bottle>B",
+        CELL,
+    )
+    assert_means("Give Alice the mug closest to her rather than the red mug", "mug_blue>A", CELL)
+    assert_means("Give Bob the mug, the red one... no, the other one", "mug_blue>B", CELL)
+    assert_means(
+        "Give one mug to Alice, the other to Carol",
+        "(mug_red>A & mug_blue>C) | (mug_blue>A & mug_red>C)",
+        CELL,
+    )
+    assert_means("Give Bob the chips, he's hungry", "chips>B", CELL)

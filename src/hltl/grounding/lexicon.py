@@ -96,6 +96,7 @@ for _lemma, _forms in {
     "offer": ("offers", "offering", "offered"),
     "serve": ("serves", "serving", "served"),
     "lend": ("lends", "lending", "lent"),
+    "slip": ("slips", "slipping", "slipped"),  # "slip Bob the chips"
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -117,6 +118,8 @@ for _lemma, _forms in {
     "return": ("returns", "returning", "returned"),
     "slide": ("slides", "sliding", "slid"),
     "relocate": ("relocates", "relocating", "relocated"),
+    "bung": ("bungs", "bunging", "bunged"),  # "bung the cup over to Bob"
+    "ferry": ("ferries", "ferrying", "ferried"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -134,6 +137,8 @@ for _lemma, _forms in {
     "plonk": ("plonks", "plonking", "plonked"),
     "shove": ("shoves", "shoving", "shoved"),  # "shove the small box onto the belt"
     "position": ("positions", "positioning", "positioned"),
+    "load": ("loads", "loading", "loaded"),  # "load the small box onto the pallet"
+    "pile": ("piles", "piling", "piled"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)
@@ -1336,14 +1341,21 @@ class Lexicon:
     def suggest(self, text: str) -> str:
         """' (did you mean …?)' naming scene names one edit from a word of ``text``, else ''."""
         near: dict[str, None] = {}
+        also: dict[str, None] = {}
         for word in _words(text):
             for key, entries in self._phrases.items():
                 if len(key) == 1 and len(word) >= 3 and _one_edit(word, key[0]):
                     for _, spelling, _ in entries:
                         near.setdefault(spelling)
+                    other = self._likelier(word, key[0])
+                    if other is not None:
+                        also.setdefault(other)
         if not near:
             return ""
         names = [repr(n) for n in near]
+        if also:  # "pillws": 'pills' with a stray letter, or 'pillows' with one left out
+            others = " or ".join(repr(n) for n in also)
+            return f" (did you mean {' or '.join(names)}? it is as near to {others})"
         return f" (did you mean {' or '.join(names)}?)"
 
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
@@ -1429,13 +1441,25 @@ class Lexicon:
         both are one slip away, so correcting it to ``name`` is a guess. A doubled letter
         ("bottlle") is a stray letter of the scene's word only; substitutions and swaps
         ("sheld", "crips") are not weighed (they need the meaning of the sentence)."""
+        return self._likelier(typed, name) is not None
+
+    def _likelier(self, typed: str, name: str) -> str | None:
+        """The common word of _likelier_word, else None."""
         if len(typed) != len(name) + 1 or slip_cost(typed, name) == 1.0:
-            return False
+            return None
         own = self._own_words()
+        if typed in own:
+            return None  # "pens": the plural of a scene word, not a typo
         common = common_words()
-        return any(
-            other in common and other not in own and slip_cost(typed, other) is not None
-            for other in (typed[:k] + c + typed[k:] for k in range(len(typed) + 1) for c in _ABC)
+        return next(
+            (
+                other
+                for other in (
+                    typed[:k] + c + typed[k:] for k in range(len(typed) + 1) for c in _ABC
+                )
+                if other in common and other not in own and slip_cost(typed, other) is not None
+            ),
+            None,
         )
 
     def _own_words(self) -> frozenset[str]:

@@ -131,7 +131,8 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
     (_OPEN + r"(?:please |kindly )?arrange for (.+?) to be ", r"\1\2 is "),
     (r"\bupon\b", "on"),
     (
-        r"\b(would|'d|will) be (?:most |very |really |so |extremely )?(?:grateful|thankful) "
+        r"\b(would|'d|will) be (?:(?:most|very|really|so|extremely|ever|awfully|terribly) )*(?:gra"
+        r"teful|thankful) "
         r"for\b",
         r"\1 like",
     ),
@@ -735,6 +736,8 @@ def _statement(clause: str, lexicon: Lexicon) -> bool:
     words = clause.strip(" ,:").lower()
     if _NEGATIONS.search(words) or _ORDER_WORDS.search(words):
         return False  # "Bob first, please" orders: no remark
+    if "," in words:
+        return False  # "he's hungry, just kidding": a remark is one clause
     words = re.sub(r"^(?:(?:and|so|because|since|as|anyway|well|ok|okay|right),?\s+)+", "", words)
     m = re.match(r"^(?:it'?s|its|it|he|she|they|that|this|there)\b", words)
     if m is None:
@@ -1435,7 +1438,7 @@ def _thanks(text: str, _lexicon: Lexicon) -> str:
 
 def _bare_pair(text: str, lexicon: Lexicon) -> str:
     """'Wipes. Grandad.': an object said alone, then a person said alone: the object for them."""
-    m = re.match(r"^(?:the )?([\w ]+?)[.,]\s*([\w ]+?)[.!]?$", text.strip(), _F)
+    m = re.match(r"^(?:the )?([\w ]+?)[.,]\s*(?:for )?([\w ]+?)[.!]?$", text.strip(), _F)
     if m is None or not _only_kind(m.group(1), lexicon, "object"):
         return text
     if not _only(m.group(2), lexicon, "human"):
@@ -2180,6 +2183,8 @@ def _unless_asked(said: str, request: str, result: str, lexicon: Lexicon) -> str
         r"\b(?:all|everything|any|anything|each|every|either|or|rest|other|others)\b", said, _F
     ):
         return None  # "don't give him anything else": not a task that can be left out
+    if re.search(r"\b(?:rather|instead|than|except|but|unless|if)\b", said, _F):
+        return None  # "don't give her the apple rather than the crisps": which is negated?
     negated = _tasks_of(said, lexicon)
     asked = _tasks_of(request, lexicon)
     if not negated or not asked or negated & asked:
@@ -2261,10 +2266,21 @@ def _inert(words: str, lexicon: Lexicon) -> bool:
 
 # the hearer addressed as a group ("y'all", "you guys", "yous", "ye"): 'you'
 _HEARERS = (
-    (r"\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\b", "you"),
+    # (before a verb of the request, 'mind', a modal or a stop: "You guys is the bottle …?" is
+    # not rewritten)
+    (
+        r"\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\b(?=\s*(?:[,.!:;]|$|"
+        r"(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please|could|can|would|w"
+        r"ill|need|have|should|must|go|just)\b))",
+        "you",
+    ),
     (r"\bye\b(?=\s+(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please)\b)", "you"),
     (r"\b(could|would|can|will|do|did|have|are|were) ye\b", r"\1 you"),
-    (r"\byou all\b(?!\s+(?:the|of|your|my|these|those)\b)", "you"),
+    (
+        r"\byou all\b(?=\s*(?:[,.!:;]|$|(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|"
+        r"please|could|can|would|will|need|have|should|must|just)\b))",
+        "you",
+    ),
 )
 # apostrophes left out ("thats it", "isnt"): the contraction ('its' and 'were' are words)
 _UNAPOSTROPHED = {
@@ -2897,7 +2913,394 @@ def _i_mean_it(text: str, lexicon: Lexicon) -> str:
     return f"{before}, I meant the {obj} goes {goes}{m.group(3)}"
 
 
+# -- session 14, generalised: classes a new writer brings, probed across scenes --------------------
+
+_SAID14: tuple[tuple[str, str], ...] = (
+    # "Could you do me a favour and …": the favour is the request ('me' is not a recipient)
+    (
+        r"(^|(?<=[.;!?,])\s*)(?:(?:could|would|can|will) you |please )?do (?:me|us) a (?:(?:big|"
+        r"quick|small|huge) )?(?:favou?r|kindness|solid)(?:\s+and\b|\s*[,:!.]|\s+please\b,?)\s*",
+        r"\1",
+    ),
+    # "…, eh", "…, there you go", "… and Bob's your uncle", "…, that's the lot", "job done"
+    (
+        r",?\s*(?:\band\s+)?\b(?:there you go|there we go|there you are|bob's your uncle|that's th"
+        r"e lot|that's your lot|that's the lot of them|job done|job's a good 'un|sorted|innit|eh|"
+        r"right\?|ok\?|okay\?|alright\?|yeah\?|got it\?|understood\?|if i remember (?:right|"
+        r"rightly|correctly)|(?:just )?like i said(?: before| earlier)?|as i said(?: before| earl"
+        r"ier)?|as i mentioned)(?=\s*(?:[.!]|$))",
+        "",
+    ),
+    (
+        r"(^|(?<=[.;!?])\s*)(?:(?:just )?like i said(?: before| earlier)?|as i said(?: before| "
+        r"earlier)?|as i mentioned(?: before| earlier)?)\s*,\s*",
+        r"\1",
+    ),
+    # "…, bless her" at the end, with or without a comma
+    (
+        r",?\s+bless (?:him|her|them|'?em)(?:,? the (?:poor )?(?:thing|dear|love|lamb))?"
+        r"(?=\s*(?:[.!]|$))",
+        "",
+    ),
+    # "The plan is to give …", "What I need you to do is …": the task said as a plan
+    (
+        r"(^|(?<=[.;!?])\s*)(?:the (?:plan|idea|task|job|thing)|your (?:job|task)|what (?:i|we) "
+        r"(?:need|want|'d like) you to do) (?:is|will be|for now is) (?:to |that you |just )?",
+        r"\1",
+    ),
+    # "Alexa, …", "OK Google, …", "Hey Siri, …", "Computer, …": the device addressed
+    (
+        r"^(?:(?:ok|okay|hey|hi)\s+)?(?:alexa|google|siri|computer|robots?|cortana|assistant)"
+        r"\s*[,!.:]\s*",
+        "",
+    ),
+    # "Would you mind awfully passing …": how much the hearer might mind
+    (r"\b(you mind) (?:awfully|terribly|very much|at all|too much)\b", r"\1"),
+    # "Mrs Khan (bed 3) wants …", "Mrs Khan, bed 3, wants …": where a person is, in brackets
+    # or after a comma (a bed, a room, a bay: a number of a place, not a count)
+    (
+        r"\s*\((?:in )?(?:bed|room|bay|seat|desk|table|station|row|cubicle|ward|chair) ?\w{1,4}\)",
+        "",
+    ),
+    (
+        r",\s*(?:in )?(?:bed|room|bay|seat|station|row|cubicle|chair) (?:\d{1,3}|one|two|three|"
+        r"four|five|six)\s*,",
+        " ",
+    ),
+    # "No worries, knife to Marco", "…, no dramas": set phrases of ease, not a negation
+    (
+        r"(^|(?<=[.;!?])\s*|,\s*)(?:no (?:worries|dramas|problem|probs|bother|biggie|sweat|stress"
+        r")(?: at all)?(?: mate| love)?)(?:\s*[,.!]+\s*|\s*$)",
+        r"\1",
+    ),
+    # "G'day", "Howay", "Ey up", "Wotcha": greetings
+    (
+        r"^(?:g'?day|howay|ey up|eh up|hey up|wotcha|watcha|oi|cooee|yo|aye|ahoy|howdy|hiya|sup|wa"
+        r"ssup|now then|well then|right then|morning all|evening all|hello all|hi all)(?: (?:mate"
+        r"|love|pet|folks|guys|all|there|dear))?\s*[,!.:]+\s*",
+        "",
+    ),
+    # "Now, where was I? Oh yes, …", "What was it... ah, …": the speaker thinking aloud
+    (
+        r"^(?:(?:now|so|right|ok|okay|um+|er+m?|hmm+),?\s+)?(?:where was i|what was it|what else|w"
+        r"hat was i saying|what did i want|let me think|let me see|let's see|what's next|now then)"
+        r"\s*[?.!,…]+\s*(?:(?:oh|ah|ahh|yes|yeah|right|that's it|that's right)[,!.]*\s+)*",
+        "",
+    ),
+    # "Reckon Lena wants the lemon", "I am asking you to put …"
+    (r"^(?:i )?reckon,?\s+", ""),
+    (r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) asking (?:you )?(?:to )?(?=[a-z])", r"\1"),
+    # "Is possible to give …", "please to put", "must to have": said by someone learning English
+    (r"^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", ""),
+    (r"\bplease to\b", "please"),
+    (r"\b(must|should|can|could) to (?=have|get|give|put|bring|take)\b", r"\1 "),
+    # "Would you see Mrs Khan gets the jug", "see to it that …"
+    (
+        r"(?:\b(?:would|could|can|will) you )?(?:kindly |please )*\bsee (?:to it )?(?:that )?(?=(?:"
+        r"the )?[a-z][\w ]*? (?:gets?|receives?|has)\b)",
+        "make sure ",
+    ),
+    # "Give Priya the lot", "All of it to Priya bar the pens": everything (but)
+    (r"\bthe (?:whole )?lot\b(?! of)", "everything"),
+    (r"^all of it\b", "everything"),
+    (r"\b(everything|everything else)\s+bar\s+(?=the\b)", r"\1 except "),
+    # "Any old pen for Sam": any pen
+    (r"\bany old\b", "any"),
+    # "Stapler in the box when you're done": when, with nothing after it
+    (
+        r",?\s+when (?:you're|you are|you've|you have) (?:done|finished|free|ready|got a (?:sec|m"
+        r"inute|moment|mo))\s*([.!]?)\s*$",
+        r"\1",
+    ),
+    # "right about now"
+    (r"\s+(?:right )?about now\b(?=\s*(?:[.,;!?]|$))", ""),
+    # dictated: "new line give Omar the spoon", "… new paragraph …"
+    (r"(^|\s+)(?:new line|next line|new paragraph)\b\s*", r"\1. "),
+)
+_WANTS14: tuple[tuple[str, str], ...] = (
+    # "Mrs Khan was wondering if she might have the water jug"
+    (
+        r"^((?:the )?[\w ]+?) (?:was|is|'s|were|are|has been) (?:just )?wondering (?:if|whether) "
+        r"(?:he|she|they) (?:could|might|can|may) (?:have|get|borrow)\b",
+        r"\1 would like",
+    ),
+    # "Mia could really do with the scanner": she would like it
+    (r"\b(?:could|can) (?:really |certainly |definitely |probably |just )?do with\b", "would like"),
+    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"
+    (r"\b(?:will|would|'ll|'d) be wanting\b", "wants"),
+    (r"\b(?:will|would|'ll|'d) be needing\b", "needs"),
+    # "Can I get the salt for Lena", "I'll have the salt for Lena": asked for someone else
+    (
+        r"^(?:(?:can|could|may) (?:i|we) (?:get|have|grab|please have|please get)|(?:i|we)'ll have"
+        r"|(?:i|we)'d like|(?:i|we) would like)((?: the| a| an| some) [\w ]+?) for ((?:the )?[\w "
+        r"]+?)(\s*,?\s*please)?\s*([.!?]?)$",
+        r"give\1 to \2\3\4",
+    ),
+    # "Bob mentioned he'd like the cup", "Bob told me she wants …"
+    (
+        r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
+        r"let (?:me|us) know|was telling (?:me|us)|reckons|thinks)(?: that)? (he|she|they)(?:'d| wo"
+        r"uld) like\b",
+        r"\1 would like",
+    ),
+    (
+        r"^((?:the )?[\w ]+?) (?:mentioned|was saying|has said|has mentioned|says|told (?:me|us)|"
+        r"let (?:me|us) know|was telling (?:me|us)|reckons|thinks)(?: that)? (?:he|she|they) (wants"
+        r"|needs)\b",
+        r"\1 \2",
+    ),
+    # "Bob ordered the cup", "Bob's order is the cup", "Bob's request: the cup", "Request from
+    # Bob: the cup", "Order for Bob: one cup"
+    (r"^((?:the )?[\w ]+?) (?:has )?(?:ordered|requested)\b", r"\1 wants"),
+    (r"^((?:the )?[\w ]+?)'s (?:order|request)(?: is|:)\s*", r"\1 wants "),
+    (r"^(?:request|order) (?:from|for) ((?:the )?[\w ]+?)\s*:\s*(?:one )?", r"\1 wants the "),
+)
+
+
+def _said14(text: str, lexicon: Lexicon) -> str:
+    """Ways people close, favour, hedge and dictate that session 14's probes showed ('do me a
+    favour and', '…, eh', '… and Bob's your uncle', 'like I said', 'new line'), taken off where
+    they name nothing; and wants said another way ('could do with', 'will be wanting', 'Bob
+    mentioned he'd like', 'ordered', "Bob's request: …"), rewritten when their subject is one
+    person of the scene."""
+    for pattern, repl in _SAID14:
+        text = _drop(pattern, text, lexicon, repl)
+    text = " ".join(text.split()).strip()
+    text = re.sub(r"^[.\s]+", "", text)
+    for pattern, repl in _WANTS14:
+        m = re.search(pattern, text, _F)
+        if m is None:
+            continue
+        if pattern.startswith("^((?:the )") and not _only(m.group(1), lexicon, "human"):
+            continue
+        if pattern.startswith("^(?:(?:can|could|may)") and not (
+            _only(m.group(2), lexicon, "human")
+            and _only_kind(m.group(1).strip(), lexicon, "object")
+        ):
+            continue
+        text = text[: m.start()] + m.expand(repl) + text[m.end() :]
+    text = re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
+    text = _a_kind_for(text, lexicon)
+    return _pronoun_said(_possessed14(_wanting_that(text, lexicon), lexicon), lexicon)
+
+
+def _wanting_that(text: str, lexicon: Lexicon) -> str:
+    """'Emma is wanting that you give her the white cup': the request she wants, her pronoun
+    her (when the title fits)."""
+    m = re.match(
+        r"^((?:the )?[\w ]+?) (?:is wanting|wants|would like|would want|is asking|asks|asked) (?:t"
+        r"hat )?you (?:to )?((?:give|hand|pass|bring|take|put|place|fetch)\b.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(1), lexicon, "human"):
+        return text
+    who = next(iter(_ids(m.group(1), lexicon, "human")))
+    if not _fits(who, m.group(2), lexicon):
+        return text
+    return _sub(r"\b(?:him|her)\b", m.group(1), m.group(2))
+
+
+def _pronoun_said(text: str, lexicon: Lexicon) -> str:
+    """'Give the jug to her, Mrs Khan I mean', 'Give her the jug - Mrs Khan': a person said after
+    the request says who its one 'him'/'her' is (when the title fits and nobody else is named)."""
+    m = re.match(
+        r"^(.+?)(?:,\s*|\s+[-—–]+\s*|\s*\(\s*)((?:i mean |i meant |that's |that is |meaning )?"
+        r"(?:the )?[\w ]+?)(?: i mean| i meant)?\s*\)?\s*([.!]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is None:
+        return text
+    said = re.sub(r"^(?:i mean|i meant|that's|that is|meaning)\s+", "", m.group(2), flags=_F)
+    if not _only(said, lexicon, "human"):
+        return text
+    head = m.group(1)
+    pronouns = re.findall(r"\b(?:him|her|he|she)\b", head, _F)
+    if len(pronouns) != 1 or _ids(head, lexicon, "human"):
+        return text
+    if not _fits(next(iter(_ids(said, lexicon, "human"))), head, lexicon):
+        return text
+    return _sub(r"\b(?:him|her|he|she)\b", said, head) + m.group(3)
+
+
+def _a_kind_for(text: str, lexicon: Lexicon) -> str:
+    """'A pen for Sam, any colour', 'One cup for Omar': a note giving one of a kind to a person,
+    as 'give Sam a pen' (whatever is said after it is read with it)."""
+    m = re.match(
+        r"^(?:just |only )?(?:a|an|any|one) ([a-z]+) (?:for|to) ([^,.;!?]+?)(?=\s*(?:[,.;!]|$))"
+        r"(.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only(m.group(2), lexicon, "human"):
+        return text
+    if _kind_of(m.group(1), lexicon) != m.group(1).lower():
+        return text
+    return f"give {m.group(2)} a {m.group(1)}{m.group(3)}"
+
+
+def _possessed14(text: str, lexicon: Lexicon) -> str:
+    """ "The cup is Bob's", "Carol, the apple is yours", "Per Bob's request, give him the cup":
+    whose an object is said to be, as 'the cup is for Bob'."""
+    m = re.match(r"^((?:the|that|this) [\w ]+?) (?:is|'s) ([\w ]+?)'s\s*([.!]?)$", text.strip(), _F)
+    if (
+        m is not None
+        and _only(m.group(2), lexicon, "human")
+        and _ids(m.group(1), lexicon, "object")
+    ):
+        return f"{m.group(1)} is for {m.group(2)}{m.group(3)}"
+    m = re.match(
+        r"^([\w ]+?),\s*((?:the|that|this) [\w ]+?) (?:is|are) yours\s*([.!]?)$", text.strip(), _F
+    )
+    if (
+        m is not None
+        and _only(m.group(1), lexicon, "human")
+        and _ids(m.group(2), lexicon, "object")
+    ):
+        return f"{m.group(2)} is for {m.group(1)}{m.group(3)}"
+    m = re.match(r"^(?:per|at|by|on) ([\w ]+?)'s request,?\s*(.+)$", text.strip(), _F)
+    if (
+        m is not None
+        and _only(m.group(1), lexicon, "human")
+        and _fits(next(iter(_ids(m.group(1), lexicon))), m.group(2), lexicon)
+    ):
+        return _sub(r"\b(?:him|her)\b", m.group(1), m.group(2))
+    return text
+
+
+# -- the last step: stretches that are provably inert ----------------------------------------------
+#
+# A stretch between punctuation is taken off only when every word of it is a common English word
+# and none could name, count, choose, negate, order, delay, correct, point back, describe, make
+# the speaker a recipient or be a task ('_HELD', the grammar's verbs, articles and possessives, the
+# scene's adjectives and colours, sizes and states, words that cancel or hedge), and it names
+# nothing in the scene (nor by a typo); and only when what is left is read by the grammar and the
+# text holds no question. What is left is the request: nothing taken off could change who gets
+# what.
+
+_HELD_MORE = frozenset(
+    {
+        *("the", "a", "an", "some", "his", "her", "hers", "their", "its", "your", "yours", "our"),
+        *("and", "also", "plus", "too", "again", "twice", "thrice", "everything", "anything"),
+        *("something", "everyone", "anyone", "someone", "everybody", "anybody", "somebody"),
+        *("maybe", "perhaps", "possibly", "probably", "kidding", "joking", "jk", "lol"),
+        *("disregard", "ignore", "undo", "belay", "abort", "nevermind", "nvm", "skip", "drop"),
+        *("remove", "revert", "reverse", "return", "tonight", "today", "tomorrow", "soon"),
+        *("eventually", "afterwards", "afterward", "morning", "evening", "afternoon", "noon"),
+        *("midnight", "o'clock", "pm", "am", "minute", "minutes", "hour", "hours", "week"),
+        *("lunch", "dinner", "breakfast", "tea", "red", "blue", "green", "white", "black"),
+        *("grey", "gray", "yellow", "orange", "pink", "purple", "brown", "big", "small", "large"),
+        *("little", "tall", "short", "left", "right", "top", "bottom", "middle", "full", "empty"),
+        *("clean", "dirty", "new", "old", "hot", "cold", "warm", "upright", "open", "closed"),
+        *("sealed", "filled", "washed", "dry", "wet", "same", "different", "more", "less"),
+        *("most", "least", "half", "both", "either", "neither", "whole", "yes", "no", "nope"),
+        *("only", "single", "pair", "couple", "few", "several", "many", "much", "each"),
+        *("person", "people", "thing", "things", "item", "items", "object", "objects"),
+        *("somewhere", "anywhere", "everywhere", "nowhere", "where", "who", "what", "which"),
+        *("how", "why", "whose", "whom", "back", "away", "over", "down", "up", "inside"),
+        *("outside", "above", "below", "behind", "beside", "between", "near", "far", "closer"),
+        *("nearer", "nearest", "closest", "further", "furthest", "farthest", "order", "instead"),
+    }
+)
+
+
+# the words an inert stretch is made of: interjections, praise, thanks, address, hurry and care,
+# sign-offs (with _CLOSING_WORDS and _ADDRESS, and adverbs in -ly); a noun that could be an object
+# ("…, spoon") is none of them
+_INERT_WORDS = frozenset(
+    {
+        *("ah", "aha", "oh", "ooh", "wow", "whoa", "yay", "yippee", "hooray", "phew", "gosh"),
+        *("golly", "blimey", "crikey", "cor", "jeez", "geez", "gee", "hmm", "um", "uh", "er"),
+        *("erm", "huh", "well", "now", "righto", "alright", "okey", "dokey", "sure", "fine"),
+        *("brill", "excellent", "splendid", "marvellous", "marvelous", "terrific", "cracking"),
+        *("bonza", "bonzer", "stellar", "superb", "tremendous", "outstanding", "incredible"),
+        *("glorious", "jolly", "lush", "mint", "sorted", "cheerio", "tara", "ttfn", "ciao"),
+        *("pls", "plz", "quick", "fast", "asap", "pronto", "sharpish", "snappy", "hurry", "chop"),
+        *("rush", "careful", "gentle", "steady", "easy", "mind", "go", "work", "stuff", "effort"),
+        *("yourself", "bless", "heavens", "lord", "indeed", "ever", "usual", "lots", "regards"),
+        *("best", "wishes", "kind", "warm", "roger", "wilco", "copy", "affirmative", "understood"),
+        *("noted", "got", "gotcha", "yah", "yup", "aye", "done", "lovely", "jubbly", "smashing"),
+    }
+)
+
+
+# adverbs of manner, hurry and stance only ('lastly', 'respectively', 'preferably', 'separately'
+# order, pair, choose or split, so an adverb is inert only when it is one of these)
+_MANNER = frozenset(
+    {
+        *("quickly", "carefully", "gently", "slowly", "swiftly", "promptly", "urgently"),
+        *("immediately", "kindly", "nicely", "safely", "softly", "quietly", "calmly", "smoothly"),
+        *("speedily", "hastily", "rapidly", "steadily", "politely", "gladly", "happily"),
+        *("really", "truly", "honestly", "seriously", "genuinely", "absolutely", "totally"),
+        *("literally", "basically", "certainly", "definitely", "obviously", "clearly", "simply"),
+        *("surely", "cheerfully", "warmly", "delicately", "neatly", "tidily", "properly"),
+    }
+)
+
+
+def _held_word(word: str, lexicon: Lexicon) -> bool:
+    low = word.lower()
+    if low in _HELD_MORE or low in VERBS or _HELD.search(low):
+        return True
+    return any(low in words for words in _adjectives(lexicon).values())
+
+
+def _inert_stretches(text: str, lexicon: Lexicon) -> str:
+    """What is left when every provably inert stretch is taken off, if the grammar reads it
+    (else the text as it is)."""
+    if "?" in text or "(" in text:
+        return text
+    parts = re.split(r"(\s*(?:[,;:!—–]|\.(?=\s|$)|\s-\s)\s*)", text.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    if len(chunks) < 2:
+        return text
+    common = _COMMON
+
+    def inert(chunk: str) -> bool:
+        words = re.findall(r"[a-z']+", chunk.lower())
+        if not words or re.search(r"\d", chunk):
+            return False
+        plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
+        return (
+            all(w in common or w in _INERT_WORDS for w in plain)
+            and all(
+                w in _INERT_WORDS or w in _CLOSING_WORDS or w in _ADDRESS or w in _MANNER
+                for w in plain
+            )
+            and not any(_held_word(w, lexicon) for w in plain)
+            and _names_nothing(chunk, lexicon)
+        )
+
+    keep = [not inert(c) if c.strip() else False for c in chunks]
+    if all(keep) or not any(keep):
+        return text
+    out = ""
+    for k, (c, on) in enumerate(zip(chunks, keep, strict=True)):
+        if not on:
+            continue
+        if out:
+            sep = seps[k - 1] if k - 1 < len(seps) else ", "
+            out += sep if sep.strip() else ", "
+        out += c
+    out = out.strip(" ,;:—–-")
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        parse_instruction(text, lexicon.scene, lexicon, normalise=False)
+        return text  # read as it is: nothing to take off
+    except GroundingError:
+        pass
+    try:
+        parse_instruction(out, lexicon.scene, lexicon, normalise=False)
+    except GroundingError:
+        return text
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _said14,
     _spoken,
     _me_again,
     _courtesy14,
@@ -2958,4 +3361,5 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _asides,
     _order,
     _remarks,
+    _inert_stretches,
 )
