@@ -129,8 +129,6 @@ def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr("hltl.bus.node.GUESS_STREAM", False)
 
 
-
-
 def _wrong_steps(*args: Any, **kwargs: Any) -> tuple[tuple[Action, ...], ...]:
     """The node's foresight, always wrong: every action of the plan's steps twice (as
     :func:`_wrong`)."""

@@ -51,7 +51,8 @@ def test_fig1_a_step_held_back_undoes_the_guess(
     run = loopback.run(scene, **kw)
     same_as_local(local, run)
     stats = run.node.stats
-    assert stats.guesses_kept == 0
+    # (the first step, foreseen by the node, is kept; the hinted hand-overs are not)
+    assert stats.guesses_kept == stats.foreseen_kept
     if inline:
         assert stats.guessed > 0 and stats.undone > 0
 
@@ -103,9 +104,9 @@ def test_catalogue_cells_with_right_and_wrong_guesses(
 def test_a_wrong_guess_never_shows(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
 ) -> None:
-    """Every hint wrong: the node starts them (a start that fails at once among them) and
-    undoes them; the log is the in-process one, no guessed start is counted, and observers of
-    the robots' reports hear only outcomes the log has."""
+    """Every guess wrong (hinted or foreseen): the node starts them (a start that fails at
+    once among them) and undoes them; the log is the in-process one, no guessed start is
+    counted, and observers of the robots' reports hear only outcomes the log has."""
     scene, kw = _fig1()
     local = run_episode(scene, **kw)
     wrong_hints(monkeypatch)
@@ -148,8 +149,9 @@ def test_a_wrong_guess_never_shows(
     assert stats.guesses_kept == 0 and run.cell.stats.guessed == 0
     if inline:
         assert stats.guessed > 0 and stats.undone > 0
-    # the executor knew each guess wrong from its own commands: it never waited for one
-    assert run.cell.stats.guessed_ahead == 0
+    # the executor knew each hinted guess wrong from its own commands: it never waited for
+    # one (only for the steps the node planned itself, which it cannot know)
+    assert run.cell.stats.awaited_hinted == 0
     assert outcomes(run.cell.episode) == ends
 
 

@@ -100,6 +100,9 @@ class DriverStats:
     guessed_ahead: int = 0
     waited: float = 0.0  # wall seconds waiting for the node's answers
     guessed: int = 0  # commands the node had started on the executor's hint (no round trip)
+    # guessed steps waited for: matching the hint, and planned by the node (foresight)
+    awaited_hinted: int = 0
+    awaited_foreseen: int = 0
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -264,6 +267,11 @@ class BusCell:
         self._basis: dict[str, Any] | None = None
         self._spec_wire: tuple[int, dict[str, Any]] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
+        # the replies to the request that asks the node to foresee the first step (sent with
+        # the first basis, taken up once the reset's answer is in), and whether it went
+        self._first: Any = None
+        self._first_sent = False
+        self._sent_version = 0  # the last spec version whose basis went to the node
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
         self._guess_next = False  # the stream's next reply starts with a guessed step
@@ -327,6 +335,16 @@ class BusCell:
             self._dead = True
             self.close()
             raise
+        self._take_first()
+
+    def _take_first(self) -> None:
+        """Once the reset's answer is in: the node's foresight of the first step, if asked
+        for, is what the loop's first commands are compared with (its replies, still to come,
+        are waited for then, like a guessed step's)."""
+        if self._first is None or self._reset is not None or self._step:
+            return
+        self._stream, self._first = self._first, None
+        self._streamed, self._guess_next, self._foresee_next = 0, True, True
 
     def _mode(self) -> dict[str, Any]:
         """How the node is to run the episode (the reset request's part that says so): here
@@ -573,6 +591,10 @@ class BusCell:
             )
             if not (hinted or self._foresee_next):
                 return False  # (known here: the node's guess, still to come, is not waited for)
+            if hinted:
+                self.stats.awaited_hinted += 1
+            else:
+                self.stats.awaited_foreseen += 1
             self._pull()
             front = self._front()
         if front is None or not front.peek_guess():
@@ -887,6 +909,55 @@ class BusCell:
             "q": list(basis.q),
             "planner": {"algorithm": p.algorithm, "timeout": p.timeout},
         }
+        if not self.guess or self._motion or self._dead or not self._defer:
+            return
+        if not (self._first_sent or self._step):
+            self._foresee_first()
+        elif basis.version != self._sent_version:
+            self._foresee_spec()
+        self._sent_version = basis.version
+
+    def _foresee_spec(self) -> None:
+        """A new spec (an instruction grounded while the node runs ahead): its basis goes to
+        the node at once, for it to foresee the step the executor replans when the running
+        one ends (not answered, and not waited for)."""
+        req = {
+            "episode": self.episode,
+            "foresee": True,
+            "ahead": {"numbers": [self._seq + 1, self._next_handle], "basis": self._basis},
+        }
+        if self.link.lost():  # (an injected fault: the node uses the hint)
+            return
+        with contextlib.suppress(BusError):
+            self._query(self.keys.sim_step, dumps(req), commands=False)
+
+    def _foresee_first(self) -> None:
+        """Ask the node to foresee the episode's first step from the executor's first basis
+        (its commands otherwise cost a round trip): the node plans it on the first world,
+        starts it on a guess and simulates on, and answers with the guessed step and the
+        ticks after it, like a step query's guessed replies. Not waited for here (the loop
+        plans meanwhile)."""
+        self._first_sent = True
+        req = {
+            "episode": self.episode,
+            "foresee": True,
+            "t": self.now,
+            "batch": self._batch,
+            "ahead": {
+                **self._ahead_req,
+                "numbers": [self._seq + 1, self._next_handle],
+                "basis": self._basis,
+            },
+        }
+        if self.link.lost():  # (an injected fault: the first commands are asked about)
+            return
+        try:
+            got = self._query(self.keys.sim_step, dumps(req), commands=False)
+        except BusError:  # the bus failed: the loop's first query says so
+            return
+        if got is not None:
+            self._first = got[0]
+            self._take_first()
 
     def unavailable(self, t: float) -> frozenset[str]:
         self._ready()

@@ -70,6 +70,9 @@ GUESS_STREAM = True
 # a step the node foresees itself (its planner run on the executor's basis) gives up past this
 # many wall seconds: the node's step thread answers nothing meanwhile
 FORESEE_TIMEOUT = 0.05
+# after a step during which an instruction came, the node waits this long (wall seconds) for
+# the executor's new basis before it foresees the next step (the hint is then used)
+FORESEE_WAIT = 0.02
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -105,6 +108,7 @@ class NodeStats:
     guesses_kept: int = 0  # of those, steps the executor did command so (the rest undone)
     foreseen: int = 0  # of the guessed steps, those the node planned itself (not the hint)
     foreseen_kept: int = 0  # of those, steps the executor did command so
+    specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -316,7 +320,9 @@ class _Stretch:
     foresee: bool = False
     # the command number and handle of the next guessed start (foresight numbers its own)
     numbers: tuple[int, int] | None = None
-    said: bool = False  # an instruction came during the stretch (a new spec is coming)
+    said: bool = False  # an instruction came during the step (a new spec is coming)
+    # until when (perf_counter) the node waits for the new spec's basis before it foresees
+    awaiting: float | None = None
 
 
 class CellNode:
@@ -529,9 +535,30 @@ class CellNode:
         deadline = time.perf_counter() + seconds
         while time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
-            query = self._steps.try_recv()
+            query = self._next_query()
             if query is not None:
                 return query
+        return None
+
+    def _next_query(self) -> Any:
+        """The next step query waiting, if any; a request carrying the executor's new basis
+        (see :meth:`_foresee_first`) is taken in on the way, not returned: it does not stop
+        what the node is streaming."""
+        query = self._steps.try_recv()
+        if query is None:
+            return None
+        payload = _payload(query)
+        if b'"foresee"' not in payload:
+            return query
+        try:
+            d = loads(payload, "step request")
+        except BusError:
+            return query
+        with self._lock:
+            ep = self._ep
+            if ep is None or ep.id != d.get("episode") or not (ep.last_step or ep.batch):
+                return query  # (the first step's: served as a query)
+            self._take_basis(ep, d.get("ahead"))
         return None
 
     def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> Any:
@@ -545,9 +572,12 @@ class CellNode:
         while True:
             if executor_here():  # (an executor in this process gets the interpreter lock)
                 time.sleep(0)
-            nxt = self._steps.try_recv()
+            nxt = self._next_query()
             if nxt is not None:
                 return nxt
+            if s.guess_due and s.awaiting is not None and not self._new_basis(ep, s):
+                time.sleep(PAUSE_SLICE)  # (the executor grounds the instruction meanwhile)
+                continue
             with self._lock:
                 b = s.batch
                 if self._closed or self._ep is not ep or ep.batch is not b:
@@ -597,6 +627,8 @@ class CellNode:
                 self._reply(query, {"episode": ep.id, "ended": True})
                 self.finished.set()
                 return None
+            if d.get("foresee"):  # the executor's first basis: its first step foreseen
+                return self._foresee_first(query, ep, d)
             if d.get("peek") and "step" not in d:  # an unnumbered peek: the clock only
                 self._reply(query, {"episode": ep.id, **self._clock(ep.cell, float(d["t"]))})
                 return None
@@ -648,16 +680,58 @@ class CellNode:
                 stretch = (ep, s)
         return stretch
 
+    def _foresee_first(
+        self, query: Any, ep: _Episode, d: dict[str, Any]
+    ) -> tuple[_Episode, _Stretch] | None:
+        """Foresee the executor's first step from its first basis (before it has sent any
+        command): start it on a guess at once, simulate on to its end, and answer with that
+        (``"from": 0``), as a step query's guessed replies; the steps after it follow as
+        further replies. Only before the first step query (later, or a copy of the request:
+        the query is left unanswered, and the executor asks)."""
+        self._take_basis(ep, d.get("ahead"))
+        if ep.clock is not None or ep.last_step or ep.batch is not None:
+            return None  # (a new spec's basis: taken in, for the next stretches)
+        ahead = _Ahead.parse(d.get("ahead"))
+        if ahead is None or ahead.stream or ep.basis is None:
+            return None
+        t = float(d["t"])
+        answer: dict[str, Any] = {"from": 0, **self._clock(ep.cell, t)}
+        s, ticks = self._look_ahead(ep, 0, t, answer, replace(ahead, guesses=()), first=True)
+        if s is None or not ticks:
+            return None
+        del answer["next"], answer["pending"], answer["unavailable"], answer["reports"]
+        answer["guessed"] = True
+        answer.setdefault("more", False)
+        self._reply_bytes(query, encode_answer(answer, ticks))
+        self._ahead_sent = True
+        return None if s.done else (ep, s)
+
+    def _new_basis(self, ep: _Episode, s: _Stretch) -> bool:
+        """Whether the stretch has waited enough for the basis of the spec an instruction
+        made: it came (foresight goes on from it), or the wait is over (the hint is used)."""
+        bs = ep.basis
+        assert s.awaiting is not None
+        if bs is not None and s.basis is not None and bs.basis.version > s.basis.basis.version:
+            s.basis, s.q, s.awaiting = bs, bs.basis.q, None
+            return True
+        if time.perf_counter() < s.awaiting:
+            return False
+        s.awaiting, s.foresee = None, False
+        return True
+
     def _take_basis(self, ep: _Episode, ahead: Any) -> None:
         """The executor's basis, as a step request carries it (a malformed one is dropped:
         the node then only takes hints)."""
         if not isinstance(ahead, dict) or "basis" not in ahead:
             return
+        known = ep.basis
         try:
-            ep.basis = _Basis.parse(ahead["basis"], ep.basis)
+            ep.basis = _Basis.parse(ahead["basis"], known)
         except BusError:
             self.stats.malformed += 1
             ep.basis = None
+        if ep.basis is not None and (known is None or known.basis.version < ep.basis.basis.version):
+            self.stats.specs += 1
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -789,6 +863,7 @@ class CellNode:
         answer: dict[str, Any],
         ahead: _Ahead | None,
         base: Callable[[], None] | None = None,
+        first: bool = False,
     ) -> tuple[_Stretch | None, list[Tick]]:
         """Simulate the ticks the executor will ask for next, until something happens that it
         is likely to act on (an action fails, is halted or ends its step, a robot's availability
@@ -806,7 +881,9 @@ class CellNode:
         as a further reply (:meth:`_stream`) while the executor works on what it has.
         Only cells whose state can be saved and restored (the discrete-event simulator, the
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
-        puts the cell back to now (else it is saved before the first tick)."""
+        puts the cell back to now (else it is saved before the first tick). With ``first``
+        the stretch starts with the executor's next step, foreseen (see
+        :meth:`_foresee_first`)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None, []
         if ahead.stream is None:  # the executor leaves it to the node
@@ -818,6 +895,8 @@ class CellNode:
         if not ahead.stream:  # (a streamed stretch is never run past a step's end)
             s.guesses = list(ahead.guesses)
             self._foresight(ep, s)
+            if first:
+                s.guess_due = s.foresee = s.basis is not None
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
@@ -856,8 +935,13 @@ class CellNode:
         context changed since the hint's plan was made (a walk), the hint is used up, or the
         guesses are already the node's own. Not after an instruction: the executor's spec
         changes with it."""
-        if s.basis is None or s.said:
+        if s.basis is None:
             return False
+        if s.said:  # (streamed, the node can wait for the new spec's basis; not in the answer)
+            if not GUESS_STREAM:
+                return False
+            s.awaiting = time.perf_counter() + FORESEE_WAIT
+            return True
         return s.own or not s.guesses or self._context(world) != s.ctx
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
@@ -929,9 +1013,11 @@ class CellNode:
         exactly that step then, else it is undone with the ticks after it. Not committed (the
         starts counted, the reports published) until the executor says so."""
         b = s.batch
-        world = b.ticks[-1][1]
+        world = b.ticks[-1][1] if b.ticks else ep.seen
         assert world is not None  # (a guess follows the tick that ended the step)
-        got = self._foreseen(s, world) if s.foresee else s.guesses.pop(0)
+        s.said = False
+        hinted = s.guesses.pop(0) if s.guesses and not s.foresee else None
+        got = self._foreseen(s, world) if s.foresee else hinted
         if got is None or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
             s.done, s.guesses = True, []  # (nothing to start, or a hint out of date)
             return None
@@ -943,6 +1029,8 @@ class CellNode:
         mark = _saver(ep.cell)
         assert mark is not None  # (_look_ahead checked the cell can be saved)
         b.marks.append((i, mark, b.seq, dict(b.latest)))
+        if b.restore is None:  # (the stretch starts with it)
+            b.restore = mark
         self._seq = b.seq
         acks = []
         b.started[i] = step
