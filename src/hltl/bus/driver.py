@@ -782,7 +782,7 @@ class BusCell:
                 self._foresee_next = bool(d.get("foresee"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
-                if d.get("guessed"):
+                if d.get("guessed") or d.get("foreseen"):
                     self.stats.guessed_ahead += ticks.size
                 else:
                     self.stats.streamed += ticks.size

@@ -106,7 +106,7 @@ class NodeStats:
     based: int = 0  # stretches after commands undone with the save made while idle (no save)
     guessed: int = 0  # steps started ahead on the executor's hint
     guesses_kept: int = 0  # of those, steps the executor did command so (the rest undone)
-    foreseen: int = 0  # of the guessed steps, those the node planned itself (not the hint)
+    foreseen: int = 0  # of the guessed steps, those the node planned itself (not hinted)
     foreseen_kept: int = 0  # of those, steps the executor did command so
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
@@ -170,7 +170,8 @@ class _Basis:
             if known is not None and known.basis.version == version:
                 spec, monitor = known.basis.spec, known.monitor
             else:
-                spec = spec_from_dict(d["spec"], "<the executor's spec>")
+                # (grounded and checked by the executor: its automata are not checked again)
+                spec = spec_from_dict(d["spec"], "<the executor's spec>", check_automata=False)
                 monitor = HierarchyMonitor(spec)
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed basis: {exc}") from None
@@ -554,6 +555,8 @@ class CellNode:
             d = loads(payload, "step request")
         except BusError:
             return query
+        if not d.get("foresee"):
+            return query
         with self._lock:
             ep = self._ep
             if ep is None or ep.id != d.get("episode") or not (ep.last_step or ep.batch):
@@ -594,7 +597,7 @@ class CellNode:
                 head: dict[str, Any] = {"from": first, "more": more}
                 if not s.ahead.stream:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
-                    if s.guess_due and s.foresee:
+                    if s.guess_due and (s.foresee or s.own):
                         head["foresee"] = True  # (the next one planned here)
                 chunk = encode_answer(head, ticks)
                 try:
@@ -692,15 +695,18 @@ class CellNode:
         if ep.clock is not None or ep.last_step or ep.batch is not None:
             return None  # (a new spec's basis: taken in, for the next stretches)
         ahead = _Ahead.parse(d.get("ahead"))
-        if ahead is None or ahead.stream or ep.basis is None:
+        if ahead is None or ep.basis is None:
             return None
+        if ahead.stream or (ahead.stream is None and streams(ep.cell)):
+            return None  # (a streamed stretch is never run past a step's end)
         t = float(d["t"])
         answer: dict[str, Any] = {"from": 0, **self._clock(ep.cell, t)}
         s, ticks = self._look_ahead(ep, 0, t, answer, replace(ahead, guesses=()), first=True)
         if s is None or not ticks:
             return None
         del answer["next"], answer["pending"], answer["unavailable"], answer["reports"]
-        answer["guessed"] = True
+        answer["guessed"] = s.guess_due  # (whether the next reply starts with a guessed step)
+        answer["foreseen"] = True  # (a guessed step's starts, as a guessed reply's)
         answer.setdefault("more", False)
         self._reply_bytes(query, encode_answer(answer, ticks))
         self._ahead_sent = True
@@ -900,15 +906,17 @@ class CellNode:
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
-            if ahead.stream or (s.guess_due and GUESS_STREAM):
+            # (the first step's starts go at once: the executor waits for them, and the ticks
+            # after them are simulated while it works on them)
+            if ahead.stream or (s.guess_due and GUESS_STREAM) or (first and GUESS_STREAM):
                 break
         if out:
             ep.batch = batch
-            if (ahead.stream or s.guess_due) and not s.done:
+            if (ahead.stream or s.guess_due or first) and not s.done:
                 answer["more"] = True
                 if s.guess_due:  # (what follows starts with a guessed step)
                     answer["guessed"] = True
-                    if s.foresee:  # (planned here: the executor cannot know it from its hint)
+                    if s.foresee or s.own:  # (planned here: not the executor's hint)
                         answer["foresee"] = True
         return s, out
 
@@ -931,10 +939,10 @@ class CellNode:
         return self._semantics_of().context(world)
 
     def _stale(self, s: _Stretch, world: WorldState) -> bool:
-        """Whether the node plans the next step itself rather than take the hint: the world's
-        context changed since the hint's plan was made (a walk), the hint is used up, or the
-        guesses are already the node's own. Not after an instruction: the executor's spec
-        changes with it."""
+        """Whether the node plans the next step itself rather than take the next of its
+        guesses (the hint, or the node's own plan's): the world's context changed since that
+        plan was made (a walk), the guesses are used up, or an instruction came (streamed, the
+        node waits for the executor's new spec)."""
         if s.basis is None:
             return False
         if s.said:  # (streamed, the node can wait for the new spec's basis; not in the answer)
@@ -942,7 +950,7 @@ class CellNode:
                 return False
             s.awaiting = time.perf_counter() + FORESEE_WAIT
             return True
-        return s.own or not s.guesses or self._context(world) != s.ctx
+        return not s.guesses or self._context(world) != s.ctx
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
         """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
@@ -1048,8 +1056,9 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
-        if s.foresee:
+        if s.own:  # (planned here, now or at an earlier step's end)
             b.foreseen.add(i)
+            self.stats.foreseen += 1
         s.numbers = (step[-1][0] + 1, step[-1][1] + 1)
         if s.basis is not None:  # the monitor state once this step ends as planned
             q = after_step(
@@ -1097,7 +1106,6 @@ class CellNode:
                 seq, h = seq + 1, h + 1
             numbered.append(tuple(step))
         s.guesses = numbered[1:]
-        self.stats.foreseen += 1
         return numbered[0]
 
     def _start_guessed(
