@@ -190,6 +190,9 @@ class BusCell:
             request, for the node to start each step when the one before ends and simulate
             on, so that one answer carries several steps (``False``: the node stops at each
             step's end, and the executor's next commands cost a round trip).
+        foresee: with ``guess``, also send the executor's basis (:meth:`foresee`), for the
+            node to plan the executor's next step itself where the hint is stale and the first
+            step (``False``: hints only).
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -217,9 +220,11 @@ class BusCell:
         perceived: PerceptionClient | None = None,
         stream: bool | None = None,
         guess: bool = True,
+        foresee: bool = True,
     ) -> None:
         self.session = session
         self.guess = guess
+        self.foresight = guess and foresee
         self.perceived = perceived
         self.scene = scene
         self.log = log
@@ -898,6 +903,8 @@ class BusCell:
         hint is stale (after a walk), with the executor's planner when it is one the node
         can run (the exact planner with the scene's kinematics and costs)."""
         p = basis.planner
+        if not self.foresight:
+            return
         if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
             self._basis = None
             return
@@ -1155,6 +1162,7 @@ def bus_cell(
     make_cell: Callable[..., BusCell] | None = None,
     stream: bool | None = None,
     guess: bool = True,
+    foresee: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1186,6 +1194,7 @@ def bus_cell(
             perceived=perceived,
             stream=stream,
             guess=guess,
+            foresee=foresee,
         )
         if opened is not None:
             opened.append(c)
