@@ -62,6 +62,7 @@ class Loopback:
         ahead: int = 64,
         stream: bool | None = None,
         guess: bool = True,
+        foresee: bool = True,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -71,7 +72,11 @@ class Loopback:
         :meth:`node`, left open)."""
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
-        make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
+        make: Any = (
+            partial(bus_cell, foresee=foresee)
+            if realtime is None
+            else partial(realtime_bus_cell, factor=realtime)
+        )
         own = node is None
         if node is None:
             node = self.node(scene, cell=cell, faults=node_faults, **served)

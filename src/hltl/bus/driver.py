@@ -28,8 +28,9 @@ from hltl.bus.session import executor_opened, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Basis, Expected, Handle
-from hltl.execution.executor import ExactPlanner
+from hltl.execution.executor import ExactPlanner, ExecutorConfig
 from hltl.execution.log import EventLog, LogRecord, RobotDown
+from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
@@ -747,8 +748,13 @@ class BusCell:
             self._ahead = []  # simulated without these commands: the node undoes them
         else:
             nxt = self._ahead_time()
-            if nxt is None and self._stream is not None and not self._guess_next:
-                # (no commands: a guessed step, next in the stream, is not waited for)
+            if (
+                nxt is None
+                and self._stream is not None
+                and (not self._guess_next or self._foresee_next)
+            ):
+                # (no commands: a guessed step, next in the stream, is not waited for, unless
+                # the node decides it itself: it may hold the step back and simulate on)
                 self._pull()
                 nxt = self._ahead_time()
         if nxt == t:  # the node already simulated this tick: no round trip
@@ -916,6 +922,14 @@ class BusCell:
             "q": list(basis.q),
             "planner": {"algorithm": p.algorithm, "timeout": p.timeout},
         }
+        c, f = basis.config, basis.predictor
+        if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
+            # the executor's check before a dispatch, for the node to hold back what it holds
+            self._basis["check"] = {
+                "intrusion_speed": c.intrusion_speed,
+                "predict_dt": c.predict_dt,
+                "forecast": None if f is None else {"window": f.window, "min_speed": f.min_speed},
+            }
         if not self.guess or self._motion or self._dead or not self._defer:
             return
         if not (self._first_sent or self._step):

@@ -33,10 +33,11 @@ from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus, Basis, Handle
-from hltl.execution.executor import ExactPlanner
+from hltl.execution.executor import ExactPlanner, ExecutorConfig, check_step
 from hltl.execution.foresee import after_step, foresee_steps
 from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
+from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
@@ -109,6 +110,7 @@ class NodeStats:
     foreseen: int = 0  # of the guessed steps, those the node planned itself (not hinted)
     foreseen_kept: int = 0  # of those, steps the executor did command so
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
+    checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -140,6 +142,9 @@ class _Episode:
     # the last world it has seen (the one its latest plan was made in)
     basis: _Basis | None = None
     seen: WorldState | None = None
+    # the observations along the cell's path, the last second of them (for the forecast the
+    # executor's check makes: its forecaster has seen the same ones)
+    recent: list[WorldState] = field(default_factory=list)
 
 
 @dataclass(frozen=True, slots=True)
@@ -149,6 +154,10 @@ class _Basis:
 
     basis: Basis
     monitor: HierarchyMonitor
+    # the executor's check before a dispatch (its config), and its forecaster's window and
+    # least speed (None: no intrusion check); None: the node does not check
+    check: ExecutorConfig | None = None
+    forecast: tuple[float, float] | None = None
 
     @classmethod
     def parse(cls, d: Any, known: _Basis | None) -> _Basis | None:
@@ -167,6 +176,16 @@ class _Basis:
                     timeout=min(float(p["timeout"]), FORESEE_TIMEOUT),
                 )
             )
+            c = d.get("check")
+            check = (
+                None
+                if not isinstance(c, dict)
+                else ExecutorConfig(
+                    intrusion_speed=float(c["intrusion_speed"]), predict_dt=float(c["predict_dt"])
+                )
+            )
+            f = c.get("forecast") if isinstance(c, dict) else None
+            forecast = None if f is None else (float(f["window"]), float(f["min_speed"]))
             if known is not None and known.basis.version == version:
                 spec, monitor = known.basis.spec, known.monitor
             else:
@@ -177,7 +196,7 @@ class _Basis:
             raise BusError(f"malformed basis: {exc}") from None
         if len(q) != len(monitor.initial):
             raise BusError(f"malformed basis: {len(q)} monitor states for {len(monitor.initial)}")
-        return cls(Basis(spec, version, q, planner), monitor)
+        return cls(Basis(spec, version, q, planner), monitor, check, forecast)
 
 
 @dataclass(slots=True)
@@ -318,10 +337,15 @@ class _Stretch:
     q: MonitorState = ()
     ctx: Any = None
     own: bool = False
+    planned: bool = False  # the guesses come from the node's own plan
     foresee: bool = False
     # the command number and handle of the next guessed start (foresight numbers its own)
     numbers: tuple[int, int] | None = None
     said: bool = False  # an instruction came during the step (a new spec is coming)
+    # a step the executor's check holds back (an intrusion risk), and the context then: the
+    # node simulates on and starts it at the first tick it passes the check
+    held: tuple[_Start, ...] | None = None
+    held_ctx: Any = None
     # until when (perf_counter) the node waits for the new spec's basis before it foresees
     awaiting: float | None = None
 
@@ -469,6 +493,7 @@ class CellNode:
             self.stats.starts = {}
             obs = cell.observe(0.0)
             ep.seen = obs
+            _remember(ep.recent, obs)
             answer = {
                 "episode": episode,
                 "observation": world_to_wire(obs),
@@ -781,6 +806,7 @@ class CellNode:
         ep.version += 1
         cell.advance(t)
         obs = cell.observe(t)
+        _remember(ep.recent, obs)
         instructions = cell.take_instructions()
         reports = self._feedback(ep, t, latest, publish=publish)
         self.stats.steps += 1
@@ -938,6 +964,52 @@ class CellNode:
     def _context(self, world: WorldState) -> Any:
         return self._semantics_of().context(world)
 
+    def _hold_or_start(
+        self, ep: _Episode, s: _Stretch, world: WorldState, t: float, step: tuple[_Start, ...]
+    ) -> None:
+        """The next guess is ``step`` as the executor's check lets it go now (:meth:`_check`):
+        whole or in part (started next, numbered as the executor will), held back (simulate
+        on, and check again each tick), or not at all (the stretch ends there)."""
+        got = self._check(ep, s, world, t, step)
+        if got is None:
+            s.done, s.held = True, None
+        elif not got:
+            if s.held is None:
+                s.held, s.held_ctx, s.own = step, self._context(world), True
+        else:
+            if len(got) < len(step) or s.held is not None:
+                s.own = True  # (not the hint: the executor cannot know it)
+            s.held = None
+            s.guesses.insert(0, got)
+            s.guess_due = True
+
+    def _check(
+        self, ep: _Episode, s: _Stretch, world: WorldState, t: float, step: tuple[_Start, ...]
+    ) -> tuple[_Start, ...] | None:
+        """``step`` as the executor's check before a dispatch lets it go now
+        (:func:`~hltl.execution.executor.check_step`, its forecaster fed the same
+        observations): the actions that pass, numbered from the step's first (empty: every
+        one held back by an intrusion risk; ``None``: one cannot run, the executor replans)."""
+        bs = s.basis
+        if bs is None or bs.check is None:
+            return step
+        predictor = None
+        if bs.forecast is not None:
+            predictor = ConstantVelocityPredictor(*bs.forecast)
+            for obs in ep.recent:
+                predictor.observe(obs.t, obs.humans)
+        w = world.with_unavailable(frozenset(s.unavailable)).with_time(t)
+        try:
+            ok, _, blocked = check_step(
+                [a for _, _, a in step], self.scene, w, self._semantics_of(), predictor, bs.check, t
+            )
+        except LookupError:
+            return None
+        if blocked:
+            return None
+        seq, h = step[0][0], step[0][1]
+        return tuple((seq + k, h + k, timed.action) for k, timed in enumerate(ok))
+
     def _stale(self, s: _Stretch, world: WorldState) -> bool:
         """Whether the node plans the next step itself rather than take the next of its
         guesses (the hint, or the node's own plan's): the world's context changed since that
@@ -1007,8 +1079,16 @@ class CellNode:
             and _step_done(reports, b.latest)
         ):
             s.foresee = self._stale(s, obs)
-            if s.guesses or s.foresee:  # the executor's next step starts now, it says
+            if s.foresee:  # the executor's next step starts now, planned here
                 s.done, s.guess_due = False, True
+            elif s.guesses:  # the hint's, as the executor's check lets it go
+                s.done = False
+                self._hold_or_start(ep, s, obs, t_next, s.guesses.pop(0))
+        elif not s.done and s.held is not None and steady:
+            if self._context(obs) != s.held_ctx:  # the executor replans: planned here
+                s.held, s.foresee, s.guess_due = None, True, True
+            else:
+                self._hold_or_start(ep, s, obs, t_next, s.held)
         b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
@@ -1026,7 +1106,13 @@ class CellNode:
         s.said = False
         hinted = s.guesses.pop(0) if s.guesses and not s.foresee else None
         got = self._foreseen(s, world) if s.foresee else hinted
-        if got is None or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
+        if got is not None and s.foresee:
+            checked = self._check(ep, s, world, s.t, got)
+            if checked is not None and not checked:  # held back: simulate on, check each tick
+                s.held, s.held_ctx, s.foresee = got, self._context(world), False
+                return self._ahead_tick(ep, s)
+            got = checked
+        if not got or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
             s.done, s.guesses = True, []  # (nothing to start, or a hint out of date)
             return None
         step = got
@@ -1056,9 +1142,11 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
-        if s.own:  # (planned here, now or at an earlier step's end)
+        if s.planned:  # (planned here, now or at an earlier step's end)
             b.foreseen.add(i)
             self.stats.foreseen += 1
+        elif s.own:
+            self.stats.checked += 1
         s.numbers = (step[-1][0] + 1, step[-1][1] + 1)
         if s.basis is not None:  # the monitor state once this step ends as planned
             q = after_step(
@@ -1094,7 +1182,7 @@ class CellNode:
         w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
         basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
         steps = foresee_steps(self.scene, basis, bs.monitor, w)
-        s.own, s.ctx = True, self._context(world)
+        s.own, s.planned, s.ctx = True, True, self._context(world)
         if not steps:
             return None
         seq, h = numbers
@@ -1620,6 +1708,16 @@ def _step_done(reports: list[Report], latest: dict[int, Report]) -> bool:
         and all(r.status.state is ActionState.DONE for r in ended)
         and all(r.status.terminal for r in latest.values())
     )
+
+
+def _remember(recent: list[WorldState], obs: WorldState) -> None:
+    """Add an observation to the cell's path (a restored cell goes back in time: what came
+    after is no longer on it), keeping the last second."""
+    while recent and recent[-1].t >= obs.t:
+        recent.pop()
+    recent.append(obs)
+    if recent[0].t < obs.t - 1.0:
+        del recent[: next(i for i, o in enumerate(recent) if o.t >= obs.t - 1.0)]
 
 
 def _payload(query: Any) -> bytes:
