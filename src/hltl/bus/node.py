@@ -915,7 +915,9 @@ class CellNode:
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
         puts the cell back to now (else it is saved before the first tick). With ``first``
         the stretch starts with the executor's next step, foreseen (see
-        :meth:`_foresee_first`)."""
+        :meth:`_foresee_first`), and the answer goes at that step's end, as a guessed step's
+        reply (its starts alone first, then the ticks after a pause, was slower: measured with
+        docs/tools/bus_account.py, the loop then waited for the ticks)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None, []
         if ahead.stream is None:  # the executor leaves it to the node
@@ -932,13 +934,11 @@ class CellNode:
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
-            # (the first step's starts go at once: the executor waits for them, and the ticks
-            # after them are simulated while it works on them)
-            if ahead.stream or (s.guess_due and GUESS_STREAM) or (first and GUESS_STREAM):
+            if ahead.stream or (s.guess_due and GUESS_STREAM):
                 break
         if out:
             ep.batch = batch
-            if (ahead.stream or s.guess_due or first) and not s.done:
+            if (ahead.stream or s.guess_due) and not s.done:
                 answer["more"] = True
                 if s.guess_due:  # (what follows starts with a guessed step)
                     answer["guessed"] = True
