@@ -127,6 +127,13 @@ def _wrong(self: BusCell, steps: Sequence[Expected]) -> None:
     _expect(self, [Expected(s.actions + s.actions, s.at) for s in steps])
 
 
+def patient_foresight(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Let a node's planner take its time when it foresees a step (the default gives up
+    after 50 ms of wall time, which a loaded machine may take): what tests count then does
+    not depend on timing."""
+    monkeypatch.setattr("hltl.bus.node.FORESEE_TIMEOUT", 60.0)
+
+
 def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
     """Make nodes send guessed steps in the answer itself, not as further replies: every guess
     the node makes is then made before the executor can answer it (streamed, an executor that

@@ -12,6 +12,7 @@ from tests.bus.helpers import (
     BusRun,
     Loopback,
     guesses_in_the_answer,
+    patient_foresight,
     same_as_local,
     wrong_foresight,
 )
@@ -40,6 +41,7 @@ def test_the_node_foresees_replans_after_walks(
     hint) is stale when a step ends: the node plans the executor's next step itself from its
     basis on the world it simulated, the executor takes it without a query, and the log is the
     in-process one."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     run = _both(loopback, config, index)
@@ -56,6 +58,7 @@ def test_a_wrong_foresight_never_shows(
 ) -> None:
     """Every step the node foresees is wrong (each action twice: the second start fails at
     once): it is undone, no start of it is counted, and the log is the in-process one."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     wrong_foresight(monkeypatch)
@@ -80,6 +83,7 @@ def test_the_first_step_is_foreseen(
     plans the first step on the first world and starts it on a guess, and the executor's first
     commands are taken from there, without a query (the executor waits for that answer
     whenever it asked for it, so this holds however the two are scheduled)."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     run = _both(loopback, "4-1", 0)
@@ -97,6 +101,7 @@ def test_a_new_request_sends_its_basis(
     takes it in (streamed, it waits for it before it foresees the step after the one the
     request came in; whether it comes in time is a matter of timing), and the log is the
     in-process one."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     run = _both(loopback, config, index)

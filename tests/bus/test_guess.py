@@ -20,6 +20,7 @@ from hltl.world.scene import Scene
 from tests.bus.helpers import (
     Loopback,
     guesses_in_the_answer,
+    patient_foresight,
     same_as_local,
     wrong_hints,
 )
@@ -46,6 +47,7 @@ def test_fig1_a_step_held_back_undoes_the_guess(
     With hints only (no basis: the node cannot make the executor's check) the node's guess is
     undone; with the basis the node holds r1's back too and its guess holds. The log is the
     in-process one either way."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     scene, kw = _fig1()

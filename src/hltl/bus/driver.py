@@ -271,6 +271,7 @@ class BusCell:
         self._guessed = 0
         # the executor's basis (see foresee) as it travels, its spec's version when built
         self._basis: dict[str, Any] | None = None
+        self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, dict[str, Any]] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         # the replies to the request that asks the node to foresee the first step (sent with
@@ -605,8 +606,8 @@ class BusCell:
             front = self._front()
         if front is None or not front.peek_guess():
             return False
-        guess = front.peek()
-        if not _same(queued, guess.starts) or any(c.t != guess.t for c in queued):
+        t, starts = front.peek_starts()
+        if not _same(queued, starts) or any(c.t != t for c in queued):
             return False
         tick = front.take()
         self._guessed += 1
@@ -828,7 +829,7 @@ class BusCell:
                     for step in guesses
                 ]
             if self._basis is not None:
-                ahead["basis"] = self._basis
+                ahead["basis"] = self._basis_out()
         req: dict[str, Any] = {
             "episode": self.episode,
             "step": self._step + 1,
@@ -938,6 +939,16 @@ class BusCell:
             self._foresee_spec()
         self._sent_version = basis.version
 
+    def _basis_out(self) -> dict[str, Any]:
+        """The basis as it goes out: with its spec the first time (the node keeps it by its
+        version), without it after that."""
+        assert self._basis is not None
+        version = self._basis["version"]
+        if version == self._spec_sent:
+            return {k: v for k, v in self._basis.items() if k != "spec"}
+        self._spec_sent = version
+        return self._basis
+
     def _foresee_spec(self) -> None:
         """A new spec (an instruction grounded while the node runs ahead): its basis goes to
         the node at once, for it to foresee the step the executor replans when the running
@@ -945,7 +956,7 @@ class BusCell:
         req = {
             "episode": self.episode,
             "foresee": True,
-            "ahead": {"numbers": [self._seq + 1, self._next_handle], "basis": self._basis},
+            "ahead": {"numbers": [self._seq + 1, self._next_handle], "basis": self._basis_out()},
         }
         if self.link.lost():  # (an injected fault: the node uses the hint)
             return
@@ -967,7 +978,7 @@ class BusCell:
             "ahead": {
                 **self._ahead_req,
                 "numbers": [self._seq + 1, self._next_handle],
-                "basis": self._basis,
+                "basis": self._basis_out(),
             },
         }
         if self.link.lost():  # (an injected fault: the first commands are asked about)

@@ -74,6 +74,9 @@ FORESEE_TIMEOUT = 0.05
 # after a step during which an instruction came, the node waits this long (wall seconds) for
 # the executor's new basis before it foresees the next step (the hint is then used)
 FORESEE_WAIT = 0.02
+# a request to foresee the first step waits at most this long for its episode's reset, which
+# the node handles on another thread (it was sent first)
+RESET_WAIT = 1.0
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -636,6 +639,7 @@ class CellNode:
     def _on_step(self, query: Any) -> tuple[_Episode, _Stretch] | None:
         """Answer a step query; a stretch to stream on after the answer, if any."""
         stretch = None
+        self._await_reset(query)
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
@@ -749,6 +753,21 @@ class CellNode:
             return False
         s.awaiting, s.foresee = None, False
         return True
+
+    def _await_reset(self, query: Any) -> None:
+        """A request to foresee the first step is sent right after the reset, which another
+        thread of the node handles: if its episode is not here yet, wait for it (at most
+        ``RESET_WAIT``, outside the node's lock)."""
+        payload = _payload(query)
+        if b'"foresee"' not in payload:
+            return
+        try:
+            episode = loads(payload, "step request").get("episode")
+        except BusError:
+            return
+        deadline = time.perf_counter() + RESET_WAIT
+        while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
+            time.sleep(PAUSE_SLICE)
 
     def _take_basis(self, ep: _Episode, ahead: Any) -> None:
         """The executor's basis, as a step request carries it (a malformed one is dropped:
