@@ -225,7 +225,8 @@ class BusCell:
     ) -> None:
         self.session = session
         self.guess = guess
-        self.foresight = guess and foresee
+        # (a streamed stretch is never run past a step's end: nothing to foresee)
+        self.foresight = guess and foresee and stream is not True
         self.perceived = perceived
         self.scene = scene
         self.log = log

@@ -762,7 +762,7 @@ class CellNode:
         if b'"foresee"' not in payload:
             return
         try:
-            episode = loads(payload, "step request").get("episode")
+            episode = loads(payload, "foresee request").get("episode")
         except BusError:
             return
         deadline = time.perf_counter() + RESET_WAIT
