@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import collections
 import contextlib
 import math
 import random
@@ -421,6 +422,8 @@ class CellNode:
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
         self._semantics: ActionSemantics | None = None  # (foresight: contexts, transitions)
+        # the episodes reset here lately (a request to foresee waits only for one not yet)
+        self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -491,6 +494,7 @@ class CellNode:
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = ep = _Episode(episode, cell, records)
+            self._reset_ids.append(episode)
             self._seq = 0  # reports are numbered per episode (the executor counts from 0)
             self.stats.episodes += 1
             self.stats.starts = {}
@@ -762,8 +766,11 @@ class CellNode:
         if b'"foresee"' not in payload:
             return
         try:
-            episode = loads(payload, "foresee request").get("episode")
+            d = loads(payload, "foresee request")
         except BusError:
+            return
+        episode = d.get("episode")
+        if "t" not in d or episode in self._reset_ids:  # (only the first step's, once)
             return
         deadline = time.perf_counter() + RESET_WAIT
         while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
