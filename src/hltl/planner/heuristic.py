@@ -20,13 +20,9 @@ INF = math.inf
 _Rows = list[tuple[tuple[int, float, float, float], ...]]
 # a pair lookup (``pairs.Lookup``) and the monitor state it was made for
 _HotPair = tuple[int, int, int, list[float], MonitorState]
-# (monitor state, robot, its places getter, memo, rows): see ``Heuristic._robot_entry``
+# (monitor state, robot, rows): see ``Heuristic._robot_entry``
 _RobotEntry = tuple[
-    MonitorState,
-    int,
-    Callable[[tuple[int, ...]], object],
-    dict[object, float],
-    tuple[tuple[int, list[tuple[float, float, float] | None]], ...],
+    MonitorState, int, tuple[tuple[int, list[tuple[float, float, float] | None]], ...]
 ]
 # what ``cheap`` bounds besides the critical path: some robots' loads and a pair's bound
 Hot = tuple[tuple[_RobotEntry, ...], _HotPair | None]
@@ -301,8 +297,7 @@ class Heuristic:
         return groups
 
     def _robot_entry(self, q: MonitorState, robot: int) -> _RobotEntry:
-        """What ``_robot_load`` needs for ``robot`` in ``q``: the places its jobs depend on
-        (an ``itemgetter`` over ``locs``), a memo over them, and per object the robot's job
+        """What ``_robot_load`` needs for ``robot`` in ``q``: per object the robot's job
         (head, work, tail) at each of its places (None: no job there)."""
         entry = self._robot_entries.get((q, robot))
         if entry is None:
@@ -312,28 +307,20 @@ class Heuristic:
                 for o, by_place in groups
                 if any(r == robot for row in by_place for r, *_ in row)
             )
-            getter = operator.itemgetter(*(o for o, _ in rows)) if rows else _nothing
-            entry = (q, robot, getter, {}, rows)
+            entry = (q, robot, rows)
             self._robot_entries[(q, robot)] = entry
         return entry
 
     def _robot_load(self, locs: tuple[int, ...], entry: _RobotEntry) -> float:
-        """One robot's part of ``_load_bound`` (the same value), memoised by the places of the
-        objects it may have jobs on."""
-        _, _, getter, memo, rows = entry
-        places = getter(locs)
-        t = memo.get(places)
+        """One robot's part of ``_load_bound`` (the same value)."""
+        jobs = [job for o, by_place in entry[2] if (job := by_place[locs[o]]) is not None]
+        if not jobs:
+            return 0.0
+        key = tuple(jobs)
+        t = self._machine_memo.get(key)
         if t is None:
-            jobs = [job for o, by_place in rows if (job := by_place[locs[o]]) is not None]
-            if not jobs:
-                t = 0.0
-            else:
-                key = tuple(jobs)
-                t = self._machine_memo.get(key)
-                if t is None:
-                    t = _one_machine_bound(jobs)
-                    self._machine_memo[key] = t
-            memo[places] = t
+            t = _one_machine_bound(jobs)
+            self._machine_memo[key] = t
         return t
 
     def _rows_by_place(self, o: int, atoms_: tuple[Atom, ...]) -> _Rows:
@@ -534,10 +521,6 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
 
 
 _TAIL = operator.itemgetter(2)
-
-
-def _nothing(_: tuple[int, ...]) -> object:
-    return None
 
 
 def _job_of(
