@@ -15,8 +15,10 @@ from hltl.bus.node import CellNode
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, open_session
 from hltl.execution.drivers import Expected
+from hltl.execution.foresee import foresee_steps as _foresee_steps
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import Episode, run_episode
+from hltl.skills.library import Action
 from hltl.world.scene import Scene
 
 
@@ -60,6 +62,7 @@ class Loopback:
         ahead: int = 64,
         stream: bool | None = None,
         guess: bool = True,
+        foresee: bool = True,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -69,7 +72,11 @@ class Loopback:
         :meth:`node`, left open)."""
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
-        make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
+        make: Any = (
+            partial(bus_cell, foresee=foresee)
+            if realtime is None
+            else partial(realtime_bus_cell, factor=realtime)
+        )
         own = node is None
         if node is None:
             node = self.node(scene, cell=cell, faults=node_faults, **served)
@@ -120,6 +127,13 @@ def _wrong(self: BusCell, steps: Sequence[Expected]) -> None:
     _expect(self, [Expected(s.actions + s.actions, s.at) for s in steps])
 
 
+def patient_foresight(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Let a node's planner take its time when it foresees a step (the default gives up
+    after 50 ms of wall time, which a loaded machine may take): what tests count then does
+    not depend on timing."""
+    monkeypatch.setattr("hltl.bus.node.FORESEE_TIMEOUT", 60.0)
+
+
 def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
     """Make nodes send guessed steps in the answer itself, not as further replies: every guess
     the node makes is then made before the executor can answer it (streamed, an executor that
@@ -127,6 +141,29 @@ def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr("hltl.bus.node.GUESS_STREAM", False)
 
 
+def _wrong_steps(*args: Any, **kwargs: Any) -> tuple[tuple[Action, ...], ...]:
+    """The node's foresight, always wrong: every action of the plan's steps twice (as
+    :func:`_wrong`)."""
+    return tuple(s + s for s in _foresee_steps(*args, **kwargs))
+
+
+def wrong_foresight(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make every step a node foresees itself wrong (:func:`_wrong_steps`)."""
+    monkeypatch.setattr("hltl.bus.node.foresee_steps", _wrong_steps)
+
+
+def same_as_local(local: Episode, run: BusRun) -> None:
+    """The same log and metrics as in-process, and every action started once by the node."""
+    assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
+    assert without_wall_clock(run.episode.metrics.to_dict()) == without_wall_clock(
+        local.metrics.to_dict()
+    )
+    starts = [r.handle for r in local.records if r.type == "action_start"]
+    assert run.node.stats.starts == dict.fromkeys(starts, 1)
+
+
 def wrong_hints(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Make every hint the executor gives a bus cell wrong (:func:`_wrong`)."""
+    """Make every guess wrong: each hint the executor gives a bus cell (:func:`_wrong`) and
+    each step a node foresees itself (:func:`wrong_foresight`)."""
     monkeypatch.setattr(BusCell, "expect", _wrong)
+    wrong_foresight(monkeypatch)

@@ -8,12 +8,13 @@ from typing import Any, ClassVar
 
 import pytest
 
-from hltl.execution.drivers import Expected, Lookahead, RobotDriver
+from hltl.execution.drivers import Basis, Expected, Foresight, Lookahead, RobotDriver
 from hltl.sim import scenarios
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
 from hltl.sim.simulator import Simulator
+from hltl.spec.monitor import HierarchyMonitor
 
 EVENTS = Path(__file__).resolve().parents[2] / "examples" / "events"
 
@@ -85,3 +86,56 @@ def test_hints_are_the_plans_next_steps_and_change_nothing(
         for e, s in zip(hint, steps[1:], strict=True):
             assert e.at == pytest.approx(at, abs=1e-5)
             at += s["duration"]
+
+
+class _Foreseeing(Simulator):
+    """The discrete simulator, also taking the executor's basis (and ignoring it)."""
+
+    made: ClassVar[list[_Foreseeing]] = []
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.bases: list[tuple[float, Basis]] = []
+        _Foreseeing.made.append(self)
+
+    def foresee(self, basis: Basis) -> None:
+        self.bases.append((self.now, basis))
+
+
+@pytest.mark.parametrize(("name", "scene", "kw"), _episodes(), ids=[e[0] for e in _episodes()])
+def test_the_basis_is_the_state_after_the_step_and_changes_nothing(
+    name: str, scene: Any, kw: dict[str, Any]
+) -> None:
+    """A driver that foresees gets the executor's basis when its spec is set and at each
+    dispatch: the monitor state it names is the one the step's end reaches when the step ends
+    as planned (the next monitor record's formulas done and acceptance), its spec's version
+    counts the groundings, and the episode is the one a driver without it gives."""
+    plain = run_episode(scene, **kw)
+    _Foreseeing.made.clear()
+    run = run_episode(scene, simulator=_Foreseeing, **kw)
+    assert _no_wall_clock(run.records) == _no_wall_clock(plain.records)
+    (sim,) = _Foreseeing.made
+    assert isinstance(sim, Foresight)
+    groundings = [r for r in plain.records if r.type == "grounding" and r.spec is not None]
+    assert sorted({b.version for _, b in sim.bases}) == list(range(1, len(groundings) + 1))
+    dispatches = [r for r in plain.records if r.type == "dispatch"]
+    assert len(sim.bases) == len(dispatches) + len(groundings)
+    records = list(plain.records)
+    checked = 0
+    for t, basis in sim.bases:
+        i = next(
+            (k for k, r in enumerate(records) if r.type == "dispatch" and abs(r.t - t) < 1e-9),
+            None,
+        )
+        if i is None:
+            continue  # (a grounding's basis)
+        after = records[i + 1 :]
+        mon = next(r for r in after if r.type == "monitor")
+        between = {r.type for r in after[: after.index(mon)]}
+        if between & {"action_failed", "action_halted", "grounding"}:
+            continue  # (not ended as planned, or under another spec)
+        monitor = HierarchyMonitor(basis.spec)
+        assert sorted(monitor.done(basis.q)) == sorted(mon.done)
+        assert monitor.accepted(basis.q) == mon.accepted
+        checked += 1
+    assert checked > 0

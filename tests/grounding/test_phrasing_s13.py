@@ -548,7 +548,9 @@ def test_an_update_with_a_negated_command_beside_a_new_task_is_refused(text: str
             "plate_white@counter | plate_blue@counter",
             KITCHEN,
         ),
-        ("Just the one cup for Omar, the green one, thanks so so much", None, LAB),
+        # (refused in session 13; read in session 14, when "just the one cup …, the green one"
+        # became the green cup)
+        ("Just the one cup for Omar, the green one, thanks so so much", "cup_green>B", LAB),
     ],
 )
 def test_blind12_wrong_readings_as_families(text: str, want: str | None, scene: Scene) -> None:

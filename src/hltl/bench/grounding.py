@@ -80,6 +80,7 @@ PARTS = (
     "blind11",
     "causes13",
     "blind12",
+    "causes14",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

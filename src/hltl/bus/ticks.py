@@ -10,8 +10,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from hltl.bus.codec import Report, dumps, loads
-from hltl.errors import BusError
+from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus
+from hltl.skills.library import Action
 from hltl.world.scene import Vec3
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
@@ -41,6 +42,8 @@ class Tick:
     # not a tick: the executor's expected next step, started by the node at ``t`` (the tick
     # before's time) on a guess; ``reports`` acknowledge its starts, the clock is after them
     guess: bool = False
+    # a guessed step's starts: (command number, handle, action) each, in order
+    starts: tuple[tuple[int, int, Action], ...] = ()
 
 
 def encode_answer(answer: dict[str, Any], ticks: Sequence[Tick] = ()) -> bytes:
@@ -105,6 +108,8 @@ def encode_ticks(ticks: Sequence[Tick]) -> bytes:
         reasons = {str(i): r.status.reason for i, r in enumerate(tick.reports) if r.status.reason}
         if reasons:
             extra["reasons"] = reasons
+        if tick.starts:
+            extra["starts"] = [[q, h, a.to_dict()] for q, h, a in tick.starts]
         if extra:
             flags |= EXTRA
         nxt = math.nan if tick.next is None else tick.next
@@ -162,6 +167,36 @@ class TickReader:
         except IndexError as exc:
             raise BusError(f"malformed {self._what} on the bus: {exc}") from None
 
+    def peek_starts(self) -> tuple[float, tuple[tuple[int, int, Action], ...]]:
+        """The next item's time and, for a guessed step, its starts, without decoding its
+        world or taking it (there is one left).
+
+        Raises:
+            BusError: the block is malformed.
+        """
+        b = self._b
+        try:
+            t, _, _, flags, nrep = _HEAD.unpack_from(b, self._at)
+            at = self._at + _HEAD.size
+            ids: Any = self._ids
+            if flags & LAYOUT:
+                (n,) = _U32.unpack_from(b, at)
+                d = json.loads(b[at + 4 : at + 4 + n])
+                ids, at = (d["humans"], d["objects"], d["hands"]), at + 4 + n
+            if ids is None:
+                raise ValueError("its first tick has no layout")
+            at += 24 * sum(len(g) for g in ids) + _REPORT.size * nrep
+            if not flags & EXTRA:
+                return float(t), ()
+            (n,) = _U32.unpack_from(b, at)
+            extra = json.loads(b[at + 4 : at + 4 + n])
+            starts = tuple(
+                (int(q), int(h), Action.from_dict(a)) for q, h, a in extra.get("starts", ())
+            )
+        except (struct.error, ValueError, KeyError, TypeError, IndexError, HltlError) as exc:
+            raise BusError(f"malformed {self._what} on the bus: {exc}") from None
+        return float(t), starts
+
     def take(self) -> Tick:
         """Decode the next tick.
 
@@ -172,7 +207,7 @@ class TickReader:
             raise BusError(f"malformed {self._what} on the bus: no tick left in the block")
         try:
             tick = self._take()
-        except (struct.error, ValueError, KeyError, TypeError, IndexError) as exc:
+        except (struct.error, ValueError, KeyError, TypeError, IndexError, HltlError) as exc:
             self.left = 0
             raise BusError(f"malformed {self._what} on the bus: {exc}") from None
         self.left -= 1
@@ -243,6 +278,7 @@ class TickReader:
             tuple(map(str, extra["instructions"])) if "instructions" in extra else (),
             tuple(extra["records"]) if "records" in extra else (),
             bool(flags & GUESS),
+            tuple((int(q), int(h), Action.from_dict(a)) for q, h, a in extra.get("starts", ())),
         )
 
     def _world(

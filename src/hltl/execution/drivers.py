@@ -9,6 +9,8 @@ from typing import Protocol, Self, runtime_checkable
 
 from hltl.motion.trajectory import MotionPlan
 from hltl.skills.library import Action, Transition
+from hltl.spec.hierarchy import HSpec
+from hltl.spec.monitor import MonitorState
 from hltl.world.scene import Vec3
 
 
@@ -127,4 +129,46 @@ class Lookahead(Protocol):
         """The steps the executor will start next, in order, each once the step before it
         (first: the step just started) has ended with all its actions done; replaces any
         earlier hint (empty: no guess)."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class Basis:
+    """What the executor decides its next step from once the running step has ended with all
+    its actions done (or now, with no step running): its spec and monitor state then, and
+    its planner. A driver that runs ahead can plan from it on the world it simulates, as the
+    executor will (:class:`Foresight`).
+
+    Attributes:
+        spec: the running specification.
+        version: counts the executor's specs (a new request makes a new one).
+        q: the monitor state once the running step ends as planned (now, with none running).
+        planner: the executor's planner (a driver plans with it only if it knows how).
+        config: the executor's configuration (its checks before a dispatch), if any.
+        predictor: the executor's forecaster of people (for the intrusion check), if any.
+    """
+
+    spec: HSpec
+    version: int
+    q: MonitorState
+    planner: object
+    config: object = None
+    predictor: object = None
+
+
+@runtime_checkable
+class Foresight(Protocol):
+    """A driver that can foresee the executor's next step itself (optional, besides
+    :class:`Lookahead`): after a walk or a new request the plan's next step is no longer what
+    the executor dispatches, but the executor's replan is a function of the world and its
+    :class:`Basis`, so a driver simulating the world ahead (the bus's cell node) can run the
+    same planner there and start its first step on a guess. As with hints, nothing is
+    committed and nothing in the executor depends on it.
+
+    The executor calls :meth:`foresee` whenever its spec changes (an instruction grounded)
+    and right after it starts a step (with the monitor state the step will leave).
+    """
+
+    def foresee(self, basis: Basis) -> None:
+        """The executor's basis for its next decision (replaces any earlier one)."""
         ...

@@ -96,6 +96,7 @@ for _lemma, _forms in {
     "offer": ("offers", "offering", "offered"),
     "serve": ("serves", "serving", "served"),
     "lend": ("lends", "lending", "lent"),
+    "slip": ("slips", "slipping", "slipped"),  # "slip Bob the chips"
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -117,6 +118,8 @@ for _lemma, _forms in {
     "return": ("returns", "returning", "returned"),
     "slide": ("slides", "sliding", "slid"),
     "relocate": ("relocates", "relocating", "relocated"),
+    "bung": ("bungs", "bunging", "bunged"),  # "bung the cup over to Bob"
+    "ferry": ("ferries", "ferrying", "ferried"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -134,6 +137,8 @@ for _lemma, _forms in {
     "plonk": ("plonks", "plonking", "plonked"),
     "shove": ("shoves", "shoving", "shoved"),  # "shove the small box onto the belt"
     "position": ("positions", "positioning", "positioned"),
+    "load": ("loads", "loading", "loaded"),  # "load the small box onto the pallet"
+    "pile": ("piles", "piling", "piled"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)
@@ -1206,6 +1211,7 @@ class Lexicon:
         self._lexed: dict[str, tuple[Item, ...]] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
+        self._own: frozenset[str] = frozenset()
         self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
         # phrase -> (ref, spelling, strong): strong for ids, names and aliases, weak for categories
         self._phrases: dict[tuple[str, ...], list[tuple[Ref, str, bool]]] = {}
@@ -1335,14 +1341,21 @@ class Lexicon:
     def suggest(self, text: str) -> str:
         """' (did you mean …?)' naming scene names one edit from a word of ``text``, else ''."""
         near: dict[str, None] = {}
+        also: dict[str, None] = {}
         for word in _words(text):
             for key, entries in self._phrases.items():
                 if len(key) == 1 and len(word) >= 3 and _one_edit(word, key[0]):
                     for _, spelling, _ in entries:
                         near.setdefault(spelling)
+                    other = self._likelier(word, key[0])
+                    if other is not None:
+                        also.setdefault(other)
         if not near:
             return ""
         names = [repr(n) for n in near]
+        if also:  # "pillws": 'pills' with a stray letter, or 'pillows' with one left out
+            others = " or ".join(repr(n) for n in also)
+            return f" (did you mean {' or '.join(names)}? it is as near to {others})"
         return f" (did you mean {' or '.join(names)}?)"
 
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
@@ -1363,6 +1376,8 @@ class Lexicon:
         ]
         if keys and word in common_words():
             return None  # a real word ("hugs", "Carl") is not a misspelt "mugs" or "Carol"
+        if keys and self._likelier_word(word, keys[0][0]):
+            return None  # "pillws": 'pillows' with a letter left out, or 'pills' with one added
         if len(keys) == 1:  # one name within one edit: "mgus" is "mugs" (both mugs)
             return _best(self._phrases[keys[0]])
         found = [e for key in keys for e in self._phrases[key]]
@@ -1409,13 +1424,50 @@ class Lexicon:
             if len(diff) != 1:
                 continue
             word, right = typed[diff[0]], key[diff[0]]
-            if not _close_word(word, right):
+            if not _close_word(word, right) and not _swapped_surname(word, right, key, diff[0]):
+                continue
+            if self._likelier_word(word, right):
                 continue
             found.append((n, _best(entries)))
         ids = {r.id for _, refs in found for r in refs}
         if len(ids) != 1 or len({n for n, _ in found}) != 1:
             return None
         return found[0]
+
+    def _likelier_word(self, typed: str, name: str) -> bool:
+        """Whether the typo ``typed`` has a letter the scene's word ``name`` lacks that a common
+        English word (not a form of a scene word) has in that place, the typo being that word
+        with a letter left out ("pillws": the 'w' of 'pillows', or a stray letter in 'pills'):
+        both are one slip away, so correcting it to ``name`` is a guess. A doubled letter
+        ("bottlle") is a stray letter of the scene's word only; substitutions and swaps
+        ("sheld", "crips") are not weighed (they need the meaning of the sentence)."""
+        return self._likelier(typed, name) is not None
+
+    def _likelier(self, typed: str, name: str) -> str | None:
+        """The common word of _likelier_word, else None."""
+        if len(typed) != len(name) + 1 or slip_cost(typed, name) == 1.0:
+            return None
+        own = self._own_words()
+        if typed in own:
+            return None  # "pens": the plural of a scene word, not a typo
+        common = common_words()
+        return next(
+            (
+                other
+                for other in (
+                    typed[:k] + c + typed[k:] for k in range(len(typed) + 1) for c in _ABC
+                )
+                if other in common and other not in own and slip_cost(typed, other) is not None
+            ),
+            None,
+        )
+
+    def _own_words(self) -> frozenset[str]:
+        """Every word of the scene's names, with its plural and singular."""
+        if not self._own:
+            words = {w for key in self._phrases for w in key}
+            self._own = frozenset(f for w in words for f in _word_forms(w))
+        return self._own
 
     def _by_word(self) -> dict[tuple[int, str], list[int]]:
         """The names of several words, each under (place, word) for each of its words."""
@@ -1496,6 +1548,82 @@ def _close_word(word: str, right: str) -> bool:
         plain = word.isalpha() and word not in WORDS and word not in VERBS
         return plain and word not in PHRASE_WORDS and sorted(word) == sorted(right)
     return _correctable(word)
+
+
+def _word_forms(word: str) -> set[str]:
+    """A word with its plural and singular ('knife': 'knives'; 'pills': 'pill')."""
+    out = {word, word + "s", word + "es"}
+    if word.endswith("s"):
+        out.add(word[:-1])
+    if word.endswith("es"):
+        out.add(word[:-2])
+    if word.endswith("fe"):
+        out.add(word[:-2] + "ves")
+    elif word.endswith("f"):
+        out.add(word[:-1] + "ves")
+    if word.endswith("y"):
+        out.add(word[:-1] + "ies")
+    return out
+
+
+def _swapped_surname(word: str, right: str, key: tuple[str, ...], at: int) -> bool:
+    """ "Mrs Kahn" for the scene's "Mrs Khan": after an exact title, a surname typed with two
+    neighbouring letters swapped, even when the result is a common word (a surname too)."""
+    return (
+        at == len(key) - 1
+        and at >= 1
+        and key[at - 1] in TITLES
+        and len(word) >= 4
+        and len(word) == len(right)
+        and sorted(word) == sorted(right)
+        and _one_edit(word, right)
+    )
+
+
+_ABC = "abcdefghijklmnopqrstuvwxyz"
+# QWERTY neighbours: a letter typed for its neighbour is a likelier slip than for any other
+_ROWS = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+
+
+@functools.cache
+def _neighbours(c: str) -> frozenset[str]:
+    for r, row in enumerate(_ROWS):
+        k = row.find(c)
+        if k < 0:
+            continue
+        near = {row[j] for j in (k - 1, k + 1) if 0 <= j < len(row)}
+        for other in (r - 1, r + 1):
+            if 0 <= other < len(_ROWS):
+                near |= {_ROWS[other][j] for j in (k - 1, k, k + 1) if 0 <= j < len(_ROWS[other])}
+        return frozenset(near)
+    return frozenset()
+
+
+def slip_cost(typed: str, meant: str) -> float | None:
+    """How unlikely a slip turns ``meant`` into ``typed`` when they are one edit apart (None
+    otherwise): a letter left out 1 (a doubled letter typed once 0.5), two neighbours swapped 1,
+    a neighbouring key 1.5 (as a substitution, or put in beside its neighbour), a letter typed
+    twice 1, any other letter 2.5."""
+    if typed == meant or not _one_edit(typed, meant):
+        return None
+    if len(typed) < len(meant):  # a letter left out
+        k = next((j for j in range(len(typed)) if typed[j] != meant[j]), len(typed))
+        doubled = (k > 0 and meant[k - 1] == meant[k]) or (
+            k + 1 < len(meant) and meant[k + 1] == meant[k]
+        )
+        return 0.5 if doubled else 1.0
+    if len(typed) > len(meant):  # a letter put in
+        k = next((j for j in range(len(meant)) if typed[j] != meant[j]), len(meant))
+        c = typed[k]
+        beside = {typed[j] for j in (k - 1, k + 1) if 0 <= j < len(typed)}
+        if c in beside:
+            return 1.0
+        return 1.5 if beside & _neighbours(c) else 2.5
+    diff = [j for j in range(len(typed)) if typed[j] != meant[j]]
+    if len(diff) == 2:
+        return 1.0  # two neighbours swapped
+    k = diff[0]
+    return 1.5 if typed[k] in _neighbours(meant[k]) else 2.5
 
 
 def _one_edit(a: str, b: str) -> bool:

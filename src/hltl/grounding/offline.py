@@ -18,7 +18,7 @@ from hltl.grounding.lexicon import (
     lex,
     person_name,
 )
-from hltl.grounding.normalise import canonical, one_person
+from hltl.grounding.normalise import apostrophes, canonical, hearer_named, one_person
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -75,6 +75,13 @@ def parse_instruction(
     lexicon = lexicon or Lexicon.of(scene)
     if normalise:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
+        text = apostrophes(text)
+        hearer = hearer_named(text, lexicon)
+        if hearer is not None:
+            raise GroundingError(
+                f"'you' is said to be {hearer!r}: the instruction is spoken to the robots, so "
+                "who gets what is unclear; name each person who gets something"
+            )
     try:
         node = _read(text, scene, lexicon)
         if normalise:

@@ -27,6 +27,10 @@ _END = frozenset({".", ";", "!", "?", ":"})
 _QUESTION_VERBS = frozenset(
     {"is", "are", "was", "were", "does", "do", "did", "has", "have", "had", "isn"}
 )
+# the hearers addressed before a question ("you guys does …?")
+_HEARER_WORDS = frozenset(
+    {"you", "guys", "y'all", "yall", "folks", "everyone", "robot", "robots", "team", "lads"}
+)
 _PERSON_PRONOUNS = frozenset({"he", "him", "she", "her", "his", "hers"})
 _SPEAKER = frozenset({"i", "me", "us", "we", "myself"})
 _SKIPPABLE = frozenset({"filler", "subject", "aux", "then", "and", "prior", "also"})
@@ -111,8 +115,10 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
     """Refuse the sentence ``items[start:end]`` when the clause at ``k`` opens as a question."""
     if k != start and not _is(items[k], "and"):
         return  # after a comma only ", but …" / ", and …" opens a clause of its own
-    while k < end and (_is(items[k], ",", "filler", "correct", "and")):
-        k += 1
+    while k < end and (
+        _is(items[k], ",", "filler", "correct", "and") or items[k].text.lower() in _HEARER_WORDS
+    ):
+        k += 1  # "You guys does Alice have the bottle?": the hearers, then the question
     if k < end:
         first = items[k]
         nxt = items[k + 1] if k + 1 < end else None
@@ -1035,6 +1041,7 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             k += n
             continue
         if _is(it, "other"):
+            _not_appended_other(items, k)
             another = it.text.lower() == "another"
             prev = next((x for x in reversed(out) if x.quant == "some"), None)
             if prev is None:
@@ -2422,7 +2429,9 @@ def _hedges(items: list[Item]) -> list[Item]:
         if _is(it, "hedge"):
             # "Could Alice maybe get the cup?": after a question's auxiliary and its person
             asked = k >= 2 and _humans(items[k - 1]) and _is(items[k - 2], "aux")
-            if not (_opening(items, k) or (asked and _opening(items, k - 2))):
+            rest = [x for x in items[k + 1 :] if not _is(x, "filler", ",")]
+            closing = not rest or (rest[0].kind == "punct" and rest[0].lemma in _END)
+            if closing or not (_opening(items, k) or (asked and _opening(items, k - 2))):
                 raise GroundingError(f"{it.text!r} leaves open whether to do it: say what to do")
             continue
         out.append(it)
@@ -2778,6 +2787,30 @@ def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Ite
     if len(left) != 1:
         return None
     return Item("ent", left[0], left[0], (Ref("object", left[0]),))
+
+
+def _not_appended_other(items: list[Item], k: int) -> None:
+    """'Bob wants a mug, the other one', 'Give Alice the bottle, thanks, the other one': 'the
+    other' said after a comma and ending the clause, with nobody or nowhere of its own, could add
+    the other or correct the one named: refused ('…, and the other one to Carol' reads)."""
+    j = k - 1
+    if j >= 0 and items[j].kind == "word" and items[j].text.lower() == "the":
+        j -= 1
+    if j < 0 or items[j].kind != "punct" or items[j].text != ",":
+        return
+    said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
+    if said & {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}:
+        return  # "the green one... no, the other one": a correction, read as one
+    n = k + 1
+    if n < len(items) and items[n].kind == "word" and items[n].text.lower() in ("one", "ones"):
+        n += 1
+    if n < len(items) and _objects(items[n]):
+        n += 1
+    if n >= len(items) or (items[n].kind == "punct" and items[n].text in _END | {","}):
+        raise GroundingError(
+            f"'{items[k].text}' after a comma could add the other one or correct the one "
+            "named: say 'and the other one' or name it"
+        )
 
 
 def _same_noun(items: list[Item], k: int, other: Item) -> int:
