@@ -20,13 +20,14 @@ INF = math.inf
 _Rows = list[tuple[tuple[int, float, float, float], ...]]
 # a pair lookup (``pairs.Lookup``) and the monitor state it was made for
 _HotPair = tuple[int, int, int, list[float], MonitorState]
-# (monitor state, robot, its places getter, memo, rows): see ``Heuristic._robot_entry``
+# (monitor state, robot, rows, places getter, digit tables, memo): ``Heuristic._robot_entry``
 _RobotEntry = tuple[
     MonitorState,
     int,
-    Callable[[tuple[int, ...]], object],
-    dict[object, float],
     tuple[tuple[int, list[tuple[float, float, float] | None]], ...],
+    Callable[[tuple[int, ...]], tuple[int, ...]],
+    tuple[list[int], ...],
+    dict[int, float],
 ]
 # what ``cheap`` bounds besides the critical path: some robots' loads and a pair's bound
 Hot = tuple[tuple[_RobotEntry, ...], _HotPair | None]
@@ -64,6 +65,7 @@ class Heuristic:
         self._machine_memo: dict[tuple[tuple[float, float, float], ...], float] = {}
         self._hot: dict[object, Hot] = {}
         self._robot_entries: dict[tuple[MonitorState, int], _RobotEntry] = {}
+        self._all_entries: dict[MonitorState, tuple[_RobotEntry, ...]] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
@@ -262,31 +264,24 @@ class Heuristic:
     def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> tuple[float, tuple[int, int]]:
         """max over robots of the time it must spend on objects every accepting run needs, and
         the two robots that need the most (-1: none)."""
-        groups = self._groups(q)
-        if not groups:
-            return 0.0, (-1, -1)
-        # per robot, its jobs: (head, work, tail) of each object it must handle
-        jobs: list[list[tuple[float, float, float]]] = [[] for _ in range(self.n_robots)]
-        for o, by_place in groups:
-            for r, hd, v, tl in by_place[locs[o]]:
-                jobs[r].append((hd, v, tl))
-        # most robots' jobs are the same as in the parent node: one memo lookup each
+        entries = self._all_entries.get(q)
+        if entries is None:
+            groups = self._groups(q)
+            robots = sorted({r for _, by_place in groups for row in by_place for r, *_ in row})
+            entries = self._all_entries[q] = tuple(self._robot_entry(q, r) for r in robots)
         best = 0.0
         hot = -1
         second = -1
         memo2 = -1.0
-        memo = self._machine_memo
-        for r, js in enumerate(jobs):
-            if js:
-                key = tuple(js)
-                t = memo.get(key)
-                if t is None:
-                    t = _one_machine_bound(js)
-                    memo[key] = t
-                if t > best:
-                    best, hot, second, memo2 = t, r, hot, best
-                elif t > memo2:
-                    second, memo2 = r, t
+        robot_load = self._robot_load
+        for entry in entries:
+            t = robot_load(locs, entry)
+            if t <= 0.0:
+                continue  # no job here
+            if t > best:
+                best, hot, second, memo2 = t, entry[1], hot, best
+            elif t > memo2:
+                second, memo2 = entry[1], t
         return best, (hot, second)
 
     def _groups(self, q: MonitorState) -> tuple[tuple[int, _Rows], ...]:
@@ -301,39 +296,47 @@ class Heuristic:
         return groups
 
     def _robot_entry(self, q: MonitorState, robot: int) -> _RobotEntry:
-        """What ``_robot_load`` needs for ``robot`` in ``q``: the places its jobs depend on
-        (an ``itemgetter`` over ``locs``), a memo over them, and per object the robot's job
-        (head, work, tail) at each of its places (None: no job there)."""
+        """What ``_robot_load`` needs for ``robot`` in ``q``: per object the robot's job
+        (head, work, tail) at each of its places (None: no job there), and a key that names
+        the robot's job list at a node: one digit per object, the index of its job there
+        among that object's distinct jobs for the robot (0: none), read off ``locs`` through
+        an ``itemgetter`` and one table per object."""
         entry = self._robot_entries.get((q, robot))
         if entry is None:
-            groups = self._groups(q)
-            rows = tuple(
-                (o, [_job_of(row, robot) for row in by_place])
-                for o, by_place in groups
-                if any(r == robot for row in by_place for r, *_ in row)
-            )
-            getter = operator.itemgetter(*(o for o, _ in rows)) if rows else _nothing
-            entry = (q, robot, getter, {}, rows)
+            rows = []
+            tables = []
+            scale = 1
+            for o, by_place in self._groups(q):
+                mine = [_job_of(row, robot) for row in by_place]
+                jobs = sorted({j for j in mine if j is not None})
+                if not jobs:
+                    continue
+                digit = {j: k + 1 for k, j in enumerate(jobs)}
+                rows.append((o, mine))
+                tables.append([0 if j is None else digit[j] * scale for j in mine])
+                scale *= len(jobs) + 1
+            objs = [o for o, _ in rows]
+            places = operator.itemgetter(*objs) if len(objs) > 1 else _one_place(objs)
+            entry = (q, robot, tuple(rows), places, tuple(tables), {})
             self._robot_entries[(q, robot)] = entry
         return entry
 
     def _robot_load(self, locs: tuple[int, ...], entry: _RobotEntry) -> float:
-        """One robot's part of ``_load_bound`` (the same value), memoised by the places of the
-        objects it may have jobs on."""
-        _, _, getter, memo, rows = entry
-        places = getter(locs)
-        t = memo.get(places)
+        """One robot's part of ``_load_bound``, memoised by its job list's key."""
+        key = sum(map(_getitem, entry[4], entry[3](locs)))
+        memo = entry[5]
+        t = memo.get(key)
         if t is None:
-            jobs = [job for o, by_place in rows if (job := by_place[locs[o]]) is not None]
+            jobs = [job for o, by_place in entry[2] if (job := by_place[locs[o]]) is not None]
             if not jobs:
                 t = 0.0
             else:
-                key = tuple(jobs)
-                t = self._machine_memo.get(key)
+                jkey = tuple(jobs)
+                t = self._machine_memo.get(jkey)
                 if t is None:
                     t = _one_machine_bound(jobs)
-                    self._machine_memo[key] = t
-            memo[places] = t
+                    self._machine_memo[jkey] = t
+            memo[key] = t
         return t
 
     def _rows_by_place(self, o: int, atoms_: tuple[Atom, ...]) -> _Rows:
@@ -534,10 +537,16 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
 
 
 _TAIL = operator.itemgetter(2)
+_getitem = operator.getitem
 
 
-def _nothing(_: tuple[int, ...]) -> object:
-    return None
+def _one_place(objs: list[int]) -> Callable[[tuple[int, ...]], tuple[int, ...]]:
+    """``locs`` -> the places of ``objs`` as a tuple (``itemgetter`` returns a bare value for
+    one index, and nothing for none)."""
+    if not objs:
+        return lambda _: ()
+    o = objs[0]
+    return lambda locs: (locs[o],)
 
 
 def _job_of(

@@ -7,6 +7,7 @@ import itertools
 import math
 import time
 from collections.abc import Callable, Iterator, Sequence
+from typing import Any
 
 from hltl.planner.bindings import derive_bindings
 from hltl.planner.explain import explain_infeasible
@@ -50,6 +51,7 @@ class _Search:
         self.p = problem
         self.monitor = problem.monitor
         self._step_memo: dict[tuple[object, int], object] = {}
+        self._after: dict[object, dict[int, object]] = {}
         self._done_memo: dict[object, frozenset[str]] = {}
         self.heuristic = Heuristic(problem, self.done)
         self._dead_memo: dict[object, frozenset[int]] = {}
@@ -210,6 +212,11 @@ class _Search:
         sym = self._sym_objects
         # fixed durations and no state atoms: the step is applied inline (the hot path)
         inline = hands is None and not self.p.state_atom_objects
+        # the monitor's next state per step symbol, from this node's state: one lookup per
+        # successor by the symbol alone
+        after = self._after.get(q)
+        if after is None:
+            after = self._after[q] = {}
         monitor_step = self.monitor_step
         n = len(opts)
         # depth-first over the objects, "leave it" before each of its instances (iterative: a
@@ -249,7 +256,10 @@ class _Search:
                 new_locs = list(locs)
                 for inst in chosen:
                     new_locs[inst.obj] = inst.post
-                child: Node = (tuple(new_locs), None, monitor_step(q, events))  # type: ignore[assignment]
+                nq = after.get(events)
+                if nq is None:
+                    nq = after[events] = monitor_step(q, events)
+                child: Node = (tuple(new_locs), None, nq)  # type: ignore[assignment]
             else:
                 applied = self.apply(node, chosen)
                 if applied is None:  # a chosen instance has no motion from these hands
@@ -374,8 +384,10 @@ def search(
         return _infeasible(problem, s, algorithm, t0, 0, 1)
 
     counter = itertools.count()
-    g_best: dict[Node, int] = {start: 0}
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], int, Perm]] = {}
+    # per node reached: [g, tags of its equally cheap ways in (see ``Tag``), how many of them
+    # it had when it was last expanded (-1: not expanded since its g was set), the way in
+    # (parent, step, duration, relabelling; None at the start)]: one dict lookup per child
+    recs: dict[Node, list[Any]] = {start: [0, [], -1, None]}
     # costs are integer ticks, so ties and the order of expansion are the same in every run
     heap: list[tuple[float, int, int, Node]] = [(h0, 0, next(counter), start)]
     expanded = generated = 0
@@ -392,17 +404,16 @@ def search(
             lower_bound=lb,
         )
 
-    tags: dict[Node, list[Tag]] = {start: []}
-    seen_tags: dict[Node, int] = {}  # how many tags a node had when it was last expanded
     while heap:
         f, neg_g, _, node = heapq.heappop(heap)
         g = -neg_g
+        rec = recs[node]
         # stale entry: a cheaper path to this node was found after it was pushed (the heuristic
         # need not be consistent, so a node may be expanded again with a smaller g)
-        if g > g_best[node]:
+        if g > rec[0]:
             continue
-        node_tags = tags[node]
-        if seen_tags.get(node) == len(node_tags):
+        node_tags = rec[1]
+        if rec[2] == len(node_tags):
             continue  # already expanded with this g and these tags
         if upper is not None and f >= upper:
             continue  # (pushed before a smaller ``upper`` came: ``live``)
@@ -414,9 +425,9 @@ def search(
                 if not (math.isinf(full) or (upper is not None and full >= upper)):
                     heapq.heappush(heap, (full, neg_g, next(counter), node))
                 continue
-        seen_tags[node] = len(node_tags)
+        rec[2] = len(node_tags)
         if problem.monitor.accepted(node[2]):
-            steps = _reconstruct(s, parent, node, start_perm)
+            steps = _reconstruct(s, recs, node, start_perm)
             stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
             makespan = to_seconds(g)
             return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, lower_bound=makespan)
@@ -444,26 +455,26 @@ def search(
             ng = g + cost
             if upper is not None and ng >= upper:
                 continue
-            old = g_best.get(child)
-            if old is not None and ng > old:
+            crec = recs.get(child)
+            if crec is not None and ng > crec[0]:
                 continue
-            if old is not None and ng == old:
+            if crec is not None and ng == crec[0]:
                 # an equally cheap way in: its tag may allow what the others forbid
-                child_tags = tags[child]
+                child_tags = crec[1]
                 if tag in child_tags:
                     continue
                 child_tags.append(tag)
-                if child not in seen_tags:
+                if crec[2] < 0:
                     continue  # not expanded yet: it will see this tag when it is
                 hc = cheap(child, hot)
             else:
                 hc = cheap(child, hot)
                 if math.isinf(hc) or (upper is not None and ng + hc >= upper):
                     continue
-                g_best[child] = ng
-                tags[child] = [tag]
-                seen_tags.pop(child, None)
-                parent[child] = (node, U, cost, perm)
+                if crec is None:
+                    recs[child] = [ng, [tag], -1, (node, U, cost, perm)]
+                else:
+                    crec[:] = (ng, [tag], -1, (node, U, cost, perm))
                 generated += 1
             heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
     if upper is not None:
@@ -509,14 +520,14 @@ def _relabel(mask: int, perm: tuple[int, ...]) -> int:
 
 def _reconstruct(
     s: _Search,
-    parent: dict[Node, tuple[Node, tuple[Instance, ...], int, Perm]],
+    recs: dict[Node, list[Any]],
     node: Node,
     start_perm: Perm = None,
 ) -> tuple[PlanStep, ...]:
     chain: list[tuple[Node, tuple[Instance, ...], int, Perm]] = []
-    while node in parent:
-        chain.append(parent[node])
-        node = chain[-1][0]
+    while (way := recs[node][3]) is not None:
+        chain.append(way)
+        node = way[0]
     chain.reverse()
     problem = s.p
     if start_perm is None and all(perm is None for *_, perm in chain):
