@@ -88,6 +88,8 @@ def _serve(endpoint: str, episodes: int, ready: Any, stop: Any, out: str) -> Non
         "_feedback",
         "_reply_bytes",
         "_serve_steps",
+        "_foreseen",
+        "_next_query",
     ):
         setattr(N.CellNode, name, _exclusive(acct, local, getattr(N.CellNode, name), name))
     for name in ("_saver", "world_to_wire", "encode_answer", "dumps", "loads"):
@@ -133,7 +135,9 @@ def main(episodes: int, repeats: int) -> None:
         def get(self, key: Any, **kw: Any) -> Any:
             p = bytes(kw.get("payload") or b"")
             kind = (
-                "end"
+                ("foresee: the first step" if b'"t"' in p else "foresee: a new spec's basis")
+                if b'"foresee"' in p
+                else "end"
                 if b'"end"' in p
                 else "reset"
                 if "reset" in str(key)
@@ -156,9 +160,18 @@ def main(episodes: int, repeats: int) -> None:
     pull = D.BusCell._pull
 
     def timed_pull(self: Any) -> None:
+        kind = (
+            "the first step, foreseen"
+            if not self._step and not self._streamed
+            else "a step foreseen"
+            if self._foresee_next and self._dirty
+            else "a hinted step"
+            if self._dirty
+            else "ticks"
+        )
         t0 = time.perf_counter()
         pull(self)
-        ev.append(("pull", t0, time.perf_counter()))
+        ev.append(("pull", t0, time.perf_counter(), kind))
 
     D.BusCell._pull = timed_pull  # type: ignore[method-assign]
     init = D.BusCell.__init__
@@ -171,6 +184,7 @@ def main(episodes: int, repeats: int) -> None:
     D.BusCell.__init__ = timed_init  # type: ignore[method-assign]
     trials = B._trials(episodes)
     rows = []
+    awaited = [0, 0]  # guessed steps waited for: foreseen by the node, hinted
     with open_session(BusConfig(connect=(endpoint,))) as session:
         timed = Timed(session)
         for _ in range(repeats):
@@ -192,10 +206,17 @@ def main(episodes: int, repeats: int) -> None:
                 opened[0].close()
                 same = B._strip(list(a.records)) == B._strip(list(b.records))
                 rows.append((wi, ci, wb, cb, pb, st.waited, same))
+                awaited[0] += st.awaited_foreseen
+                awaited[1] += st.awaited_hinted
     stop.set()
     child.join(60)
     nev, acct, node_cpu = pickle.loads(Path(out).read_bytes())
     _report(rows, ev, nev, acct, node_cpu)
+    n = len(rows)
+    print(
+        f"\nguessed steps the loop waited for, an episode: foreseen by the node "
+        f"{awaited[0] / n:.2f}, matching the hint {awaited[1] / n:.2f}"
+    )
 
 
 def _report(
@@ -244,9 +265,16 @@ def _report(
     pulls = [e[2] - e[1] for e in ev if e[0] == "pull"]
     if pulls:
         print(
-            f"\nstreamed chunks waited for: {len(pulls) / n:.1f} an episode, "
+            f"\nfurther replies waited for: {len(pulls) / n:.1f} an episode, "
             f"{per_ep(sum(pulls))} ms, median {statistics.median(pulls) * 1e3:.3f} ms"
         )
+        kinds = sorted({e[3] for e in ev if e[0] == "pull"})
+        for k in kinds:
+            ds = [e[2] - e[1] for e in ev if e[0] == "pull" and e[3] == k]
+            print(
+                f"  {k}: {len(ds) / n:.2f} an episode, {per_ep(sum(ds))} ms, "
+                f"median {statistics.median(ds) * 1e3:.3f} ms"
+            )
     print("\nthe node's step thread, CPU ms per episode (each part without the parts it calls):")
     for k, v in sorted(acct.items(), key=lambda kv: -kv[1]):
         print(f"  {k} {per_ep(v)}")

@@ -62,6 +62,7 @@ class Loopback:
         ahead: int = 64,
         stream: bool | None = None,
         guess: bool = True,
+        foresee: bool = True,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -71,7 +72,11 @@ class Loopback:
         :meth:`node`, left open)."""
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
-        make = bus_cell if realtime is None else partial(realtime_bus_cell, factor=realtime)
+        make: Any = (
+            partial(bus_cell, foresee=foresee)
+            if realtime is None
+            else partial(realtime_bus_cell, factor=realtime)
+        )
         own = node is None
         if node is None:
             node = self.node(scene, cell=cell, faults=node_faults, **served)
@@ -122,13 +127,18 @@ def _wrong(self: BusCell, steps: Sequence[Expected]) -> None:
     _expect(self, [Expected(s.actions + s.actions, s.at) for s in steps])
 
 
+def patient_foresight(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Let a node's planner take its time when it foresees a step (the default gives up
+    after 50 ms of wall time, which a loaded machine may take): what tests count then does
+    not depend on timing."""
+    monkeypatch.setattr("hltl.bus.node.FORESEE_TIMEOUT", 60.0)
+
+
 def guesses_in_the_answer(monkeypatch: pytest.MonkeyPatch) -> None:
     """Make nodes send guessed steps in the answer itself, not as further replies: every guess
     the node makes is then made before the executor can answer it (streamed, an executor that
     knows a guess wrong may ask before the node has made it, on a fast machine always)."""
     monkeypatch.setattr("hltl.bus.node.GUESS_STREAM", False)
-
-
 
 
 def _wrong_steps(*args: Any, **kwargs: Any) -> tuple[tuple[Action, ...], ...]:

@@ -23,6 +23,9 @@ def test_bench_bus_small() -> None:
     # and without the executor's hints: the same log, every step's commands in a query
     u = b.unhinted
     assert u is not None and u.same_logs == 1 and u.guessed == 0 and b.apart.guessed > 0
+    # and with hints but without the node's foresight: the same log
+    h = b.hinted
+    assert h is not None and h.same_logs == 1
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
@@ -35,6 +38,7 @@ def test_bench_bus_small() -> None:
     assert "## Bus" in text and "1/1" in text and "### Real time" in text
     assert "process of its own" in text and "waits" in text and "streamed instead" in text
     assert "without the executor's hints" in text
+    assert "without the node's foresight" in text
 
 
 def test_bench_bus_suite_with_the_3d_simulator() -> None:

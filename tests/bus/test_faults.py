@@ -102,8 +102,8 @@ def test_faulty_links_change_nothing(loopback: Loopback, fault: str, stream: boo
         assert node.guessed == 0
 
 
-# (a cell whose plan changes mid-episode: some guesses kept, some undone; each fault with
-# the hints as the executor gives them, and with every hint wrong)
+# (a cell whose plan changes mid-episode; each fault with the hints and the basis as the
+# executor gives them, guesses kept, and with every guess wrong, all undone)
 GUESS_CASES = [(f, w) for f in ("loss", "duplicates", "lost_replies", "everything") for w in (0, 1)]
 
 
@@ -126,7 +126,7 @@ def test_guessed_steps_under_faults(
     assert without_wall_clock(list(run.episode.records)) == without_wall_clock(list(local.records))
     _starts_once(run)
     node = run.node.stats
-    assert node.guessed > node.guesses_kept
+    assert node.guessed > 0
     assert (node.guesses_kept > 0) is not wrong
 
 

@@ -12,6 +12,7 @@ from tests.bus.helpers import (
     BusRun,
     Loopback,
     guesses_in_the_answer,
+    patient_foresight,
     same_as_local,
     wrong_foresight,
 )
@@ -40,6 +41,7 @@ def test_the_node_foresees_replans_after_walks(
     hint) is stale when a step ends: the node plans the executor's next step itself from its
     basis on the world it simulated, the executor takes it without a query, and the log is the
     in-process one."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     run = _both(loopback, config, index)
@@ -56,6 +58,7 @@ def test_a_wrong_foresight_never_shows(
 ) -> None:
     """Every step the node foresees is wrong (each action twice: the second start fails at
     once): it is undone, no start of it is counted, and the log is the in-process one."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     wrong_foresight(monkeypatch)
@@ -70,3 +73,38 @@ def test_no_foresight_without_the_basis(loopback: Loopback) -> None:
     """With hints off the executor sends no basis either: the node guesses nothing."""
     run = _both(loopback, "4-2", 1, guess=False)
     assert run.node.stats.guessed == run.node.stats.foreseen == 0
+
+
+@MODES
+def test_the_first_step_is_foreseen(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
+) -> None:
+    """The executor sends its first basis as soon as it has grounded the instruction; the node
+    plans the first step on the first world and starts it on a guess, and the executor's first
+    commands are taken from there, without a query (the executor waits for that answer
+    whenever it asked for it, so this holds however the two are scheduled)."""
+    patient_foresight(monkeypatch)
+    if inline:
+        guesses_in_the_answer(monkeypatch)
+    run = _both(loopback, "4-1", 0)
+    first = next(r for r in run.episode.records if r.type == "dispatch")
+    assert run.node.stats.foreseen_kept >= 1
+    assert run.cell.stats.guessed >= len(first.actions)
+
+
+@MODES
+@pytest.mark.parametrize(("config", "index"), [("2-2", 0), ("4-4-line", 1)])
+def test_a_new_request_sends_its_basis(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, config: str, index: int, inline: bool
+) -> None:
+    """A second request mid-episode: the executor sends the new spec's basis at once, the node
+    takes it in (streamed, it waits for it before it foresees the step after the one the
+    request came in; whether it comes in time is a matter of timing), and the log is the
+    in-process one."""
+    patient_foresight(monkeypatch)
+    if inline:
+        guesses_in_the_answer(monkeypatch)
+    run = _both(loopback, config, index)
+    specs = [r for r in run.episode.records if r.type == "grounding" and r.spec is not None]
+    assert len(specs) == 2
+    assert run.node.stats.specs == len(specs)

@@ -20,6 +20,7 @@ from hltl.world.scene import Scene
 from tests.bus.helpers import (
     Loopback,
     guesses_in_the_answer,
+    patient_foresight,
     same_as_local,
     wrong_hints,
 )
@@ -42,18 +43,24 @@ def test_fig1_a_step_held_back_undoes_the_guess(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
 ) -> None:
     """Fig. 1: when the picks end, the plan's next step is both hand-overs (the hint), but
-    Person A walks and the executor holds r1's back (intrusion risk) and starts r2's alone:
-    the node's guess is undone, and the log is the in-process one."""
+    Person A walks and the executor holds r1's back (intrusion risk) and starts r2's alone.
+    With hints only (no basis: the node cannot make the executor's check) the node's guess is
+    undone; with the basis the node holds r1's back too and its guess holds. The log is the
+    in-process one either way."""
+    patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
     scene, kw = _fig1()
     local = run_episode(scene, **kw)
+    hinted = loopback.run(scene, foresee=False, **kw)
+    same_as_local(local, hinted)
+    assert hinted.node.stats.guesses_kept == 0
+    if inline:
+        assert hinted.node.stats.guessed > 0 and hinted.node.stats.undone > 0
     run = loopback.run(scene, **kw)
     same_as_local(local, run)
-    stats = run.node.stats
-    assert stats.guesses_kept == 0
     if inline:
-        assert stats.guessed > 0 and stats.undone > 0
+        assert run.node.stats.checked > 0 and run.node.stats.guesses_kept > 0
 
 
 def test_guessed_steps_save_round_trips(loopback: Loopback) -> None:
@@ -84,14 +91,14 @@ def test_catalogue_cells_with_right_and_wrong_guesses(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, config: str, index: int, inline: bool
 ) -> None:
     """Catalogue cells with walks and new requests: the plan changes mid-episode (the executor
-    replans), so some guesses are wrong (undone at the node) and some right (kept): the same
-    log either way."""
+    replans), so with hints only some guesses are wrong (undone at the node) and some right
+    (kept): the same log either way (with foresight too: tests/bus/test_foresee.py)."""
     if inline:
         guesses_in_the_answer(monkeypatch)
     trial = make_trial(config, index)
     kw = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
     local = run_episode(trial.scene, **kw)
-    run = loopback.run(trial.scene, **kw)
+    run = loopback.run(trial.scene, foresee=False, **kw)
     same_as_local(local, run)
     stats = run.node.stats
     assert stats.guesses_kept > 0  # (the executor waits for a guess its commands match)
@@ -103,9 +110,9 @@ def test_catalogue_cells_with_right_and_wrong_guesses(
 def test_a_wrong_guess_never_shows(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
 ) -> None:
-    """Every hint wrong: the node starts them (a start that fails at once among them) and
-    undoes them; the log is the in-process one, no guessed start is counted, and observers of
-    the robots' reports hear only outcomes the log has."""
+    """Every guess wrong (hinted or foreseen): the node starts them (a start that fails at
+    once among them) and undoes them; the log is the in-process one, no guessed start is
+    counted, and observers of the robots' reports hear only outcomes the log has."""
     scene, kw = _fig1()
     local = run_episode(scene, **kw)
     wrong_hints(monkeypatch)
@@ -148,8 +155,9 @@ def test_a_wrong_guess_never_shows(
     assert stats.guesses_kept == 0 and run.cell.stats.guessed == 0
     if inline:
         assert stats.guessed > 0 and stats.undone > 0
-    # the executor knew each guess wrong from its own commands: it never waited for one
-    assert run.cell.stats.guessed_ahead == 0
+    # the executor knew each hinted guess wrong from its own commands: it never waited for
+    # one (only for the steps the node planned itself, which it cannot know)
+    assert run.cell.stats.awaited_hinted == 0
     assert outcomes(run.cell.episode) == ends
 
 

@@ -14,6 +14,7 @@ from hltl.bus.codec import Report
 from hltl.bus.ticks import MAGIC, STATES, Tick, decode_answer, encode_answer, encode_ticks
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionStatus
+from hltl.skills.library import Action
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
 floats = st.floats(allow_nan=False, min_value=-1e6, max_value=1e6) | st.sampled_from(
@@ -56,6 +57,11 @@ def ticks(draw: st.DrawFn) -> list[Tick]:
             ActionStatus, st.sampled_from(STATES), floats, floats, st.text(max_size=8)
         )
         u32 = st.integers(0, 2**32 - 1)
+        guess = draw(st.booleans())
+        starts = tuple(
+            (draw(u32), draw(u32), Action("pick", (draw(names),), draw(names)))
+            for _ in range(draw(st.integers(0, 2) if guess else st.just(0)))
+        )
         reports = tuple(
             Report("ep", draw(u32), draw(u32), draw(statuses))
             for _ in range(draw(st.integers(0, 3)))
@@ -73,7 +79,8 @@ def ticks(draw: st.DrawFn) -> list[Tick]:
                 records=tuple(
                     draw(st.lists(st.fixed_dictionaries({"kind": names, "t": floats}), max_size=2))
                 ),
-                guess=draw(st.booleans()),
+                guess=guess,
+                starts=starts,
             )
         )
         del i
@@ -107,6 +114,7 @@ def test_ticks_cross_the_bus_bit_for_bit(stretch: list[Tick]) -> None:
     for want in stretch:
         assert reader.peek_time() == want.t
         assert reader.peek_guess() is want.guess  # (a guessed step's starts, not a tick)
+        assert reader.peek_starts() == (want.t, want.starts)  # (without decoding the world)
         assert_same_tick(reader.take(), want)
     assert reader.peek_time() is None
     with pytest.raises(BusError, match="no tick left"):

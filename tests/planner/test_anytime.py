@@ -15,6 +15,7 @@ from hltl.bench.cells import FAMILIES, delivery_cell, mixed_cell
 from hltl.planner import PlanResult, PlanStatus, plan
 from hltl.planner.anytime import (
     _jointly,
+    _more,
     _Neighbourhood,
     _OrderWalk,
     _Router,
@@ -324,3 +325,18 @@ def test_joint_replanning_never_returns_a_longer_plan_than_its_hint(layout: str,
         assert found[0] <= walk.best[0]
         res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
         check_plan(cell.scene, cell.spec, res.to_dict())
+
+
+def test_the_walk_stops_once_its_plan_meets_the_bound(monkeypatch: pytest.MonkeyPatch) -> None:
+    # a plan no longer than a lower bound is optimal: the walk (which on two cores runs to the
+    # deadline beside the profile bound) stops there instead of using up the budget
+    c = delivery_cell("grid", 6, 0)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    rounds: list[int] = []
+    real = _OrderWalk.step
+    monkeypatch.setattr(_OrderWalk, "step", lambda self: rounds.append(1) or real(self))
+    found = _more(problem, s, time.perf_counter() + 2.0, enough=math.inf)
+    assert found is not None and rounds == []
+    found = _more(problem, s, time.perf_counter() + 0.2)
+    assert found is not None and rounds  # (without a bound it walks)

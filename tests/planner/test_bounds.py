@@ -102,6 +102,39 @@ def test_cheap_bound_never_exceeds_the_full_one_or_the_optimum(seed: int) -> Non
         assert to_seconds(s.heuristic(start)) <= expected + 1e-9
 
 
+@pytest.mark.parametrize(("layout", "seed"), [("line", 0), ("line", 3), ("grid", 1)])
+def test_cheap_bound_with_the_parents_hot_parts_stays_below_the_full_one(
+    layout: str, seed: int
+) -> None:
+    # the search passes each expanded node's ``hot`` (its two most loaded robots and its
+    # largest pair) to the cheap bound of its children: on every child of a random walk that
+    # bound must stay at or below the full value, computed by a heuristic of its own
+    sc = generate(5, 5, layout, seed, ordered=False)
+    problem = Problem(sc.scene, sc.spec)
+    s, ref = _Search(problem), _Search(problem)
+    s.heuristic.enable_pairs()
+    ref.heuristic.enable_pairs()
+    rng = random.Random(seed)
+    node = problem.start()
+    checked = raised = 0
+    for _ in range(30):
+        s.heuristic(node)
+        hot = s.heuristic.hot(node)
+        alive = []
+        for _, _, child, _, _ in s.steps(node):
+            cheap, full = s.heuristic.cheap(child, hot), ref.heuristic(child)
+            assert cheap <= full
+            raised += cheap > ref.heuristic._critical(child[0], child[2])
+            checked += 1
+            if not math.isinf(full):
+                alive.append(child)
+        if not alive:
+            break
+        node = rng.choice(alive)
+    # not vacuous: the parent's parts raise the cheap bound above the critical path
+    assert checked > 50 and raised > 0
+
+
 @pytest.mark.parametrize(("layout", "seed"), [("grid", 0), ("line", 1), ("grid", 2)])
 def test_conjunction_critical_path_equals_the_general_one(layout: str, seed: int) -> None:
     # delivery cells take the short way (largest table value over the open leaves): it must

@@ -4,7 +4,9 @@
 from __future__ import annotations
 
 import math
+import os
 import time
+from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -166,8 +168,10 @@ def test_anytime_gives_its_last_share_to_the_profile_bound(monkeypatch: pytest.M
         return got
 
     monkeypatch.setattr(profile, "profile_bound", spy)
-    # a share of 4 s long enough for the profile bound (10 s budgets give it 1 s)
+    # a share of 4 s long enough for the profile bound (10 s budgets give it 1 s), on one core
+    # (on two it runs beside the walk: the next test)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
+    monkeypatch.setattr(anytime.schedule, "WORKERS", 1)
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.makespan is not None
@@ -222,3 +226,94 @@ def test_cells_beyond_the_step_bound_skip_importing_cp_sat(
         floor,
         None,
     )
+
+
+def test_each_level_proved_is_told_as_it_is_proved() -> None:
+    # the process beside the walk sends these, so that stopping it loses nothing proved: they
+    # rise, and the last is the bound (grid 4 x 4 seed 1: 3.3 s, the exact optimum)
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    told: list[int] = []
+    got = profile.profile_bound(
+        problem,
+        graph,
+        node,
+        tgts,
+        floor=to_ticks(3.0),
+        upper=None,
+        deadline=time.perf_counter() + DEADLINE_S,
+        on_proven=told.append,
+    )
+    assert got.ticks == to_ticks(3.3)
+    assert told and told == sorted(told) and told[-1] == got.ticks
+
+
+def _beside(floor: float, deadline: float) -> anytime._ProfileBeside:
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    s, node, _, _ = start_targets(problem)
+    return anytime._ProfileBeside(problem, s, node, to_ticks(floor), to_ticks(4.0), deadline)
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+def test_the_bound_beside_the_walk_is_what_the_bound_proves() -> None:
+    beside = _beside(3.0, time.perf_counter() + DEADLINE_S)
+    assert beside.finish(wanted=True) == to_ticks(3.3)
+    assert not beside.proc.is_alive()
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+def test_the_bound_beside_the_walk_is_not_waited_for_past_its_deadline(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # whatever keeps its process past the deadline (here a slow "is CP-SAT there", copied into
+    # the process; in runs under load CP-SAT's import or a question's solve): the run takes
+    # what was proved (here nothing: the floor) and stops the process
+    monkeypatch.setattr(anytime.lns, "available", lambda: time.sleep(DEADLINE_S) or True)
+    beside = _beside(3.0, time.perf_counter())
+    assert beside.finish(wanted=True) == to_ticks(3.0)
+    assert not beside.proc.is_alive()
+    # not wanted (the plan meets the bound): stopped at once, whatever it was doing
+    beside = _beside(3.0, time.perf_counter() + DEADLINE_S)
+    assert beside.finish(wanted=False) >= to_ticks(3.0)
+    assert not beside.proc.is_alive()
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_on_two_cores_the_bound_runs_beside_the_walk(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, workers: int
+) -> None:
+    # two cores: the profile bound runs in a process of its own until the deadline, and the walk
+    # keeps going until the deadline too; one core: the walk stops for the bound's last share
+    if workers == 2 and not anytime.beside_possible():
+        pytest.skip("one core, or no fork")
+    where = tmp_path / "bound"
+    seen: dict[str, float] = {}
+    real_bound, real_more = profile.profile_bound, anytime._more
+
+    def bound(*args: object, **kwargs: object) -> profile.ProfileBound:
+        deadline = kwargs["deadline"]
+        where.write_text(f"{os.getpid()} {deadline!r}")  # (from the bound's process)
+        return real_bound(*args, **kwargs)  # type: ignore[arg-type]
+
+    def more(problem: Problem, s: object, until: float, **kwargs: float) -> object:
+        seen["until"] = until
+        return real_more(problem, s, until, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(profile, "profile_bound", bound)
+    monkeypatch.setattr(anytime, "_more", more)
+    monkeypatch.setattr(anytime.schedule, "WORKERS", workers)
+    monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # a share of 1.2 s at a 4 s budget
+    # CP-SAT imported here already, so the forked process has it too: under load its own
+    # import could outlast this 4 s run, and the bound would (rightly) never be asked
+    assert anytime.lns.available()
+    c = delivery_cell("grid", 17, 0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
+    pid, deadline = where.read_text().split()
+    assert (int(pid) == os.getpid()) is (workers == 1)
+    if workers == 2:
+        assert seen["until"] == float(deadline)
+    else:
+        assert seen["until"] < float(deadline)

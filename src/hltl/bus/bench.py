@@ -93,6 +93,8 @@ class BusBench:
     realtime: RealtimeBench
     # the suite, node apart, without the executor's hints (each step's commands cost a query)
     unhinted: ApartBench | None = None
+    # the same with hints but without the node's foresight (the executor's basis not sent)
+    hinted: ApartBench | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -248,7 +250,12 @@ def bench_bus(
         same = ticks = queries = undone = 0
         steps: list[float] = []
         # as chosen, streamed, and as chosen without the executor's hints
-        runs: dict[bool | str | None, list[_Apart]] = {None: [], True: [], "unhinted": []}
+        runs: dict[bool | str | None, list[_Apart]] = {
+            None: [],
+            True: [],
+            "unhinted": [],
+            "hinted": [],
+        }
         with _node_process(episodes) as (apart_session, node_cpu):
             for i, tr in enumerate(trials):
                 kw: dict[str, Any] = {
@@ -268,6 +275,9 @@ def bench_bus(
                 runs["unhinted"].append(
                     _apart_episode(apart_session, i, tr, kw, a, None, guess=False)
                 )
+                runs["hinted"].append(
+                    _apart_episode(apart_session, i, tr, kw, a, None, foresee=False)
+                )
                 # the node in this process
                 b, stats = _suite_episode(ns, cs, tr, kw)
                 bus += stats.wall
@@ -281,7 +291,7 @@ def bench_bus(
                     f"{tr.config}#{tr.index}: same log {same}, node apart "
                     f"{sum(r.same for r in runs[True])}"
                 )
-        apart_bench, streamed, unhinted = (
+        apart_bench, streamed, unhinted, hinted = (
             ApartBench(
                 sum(r.wall for r in runs[stream]),
                 sum(r.cpu for r in runs[stream]),
@@ -293,7 +303,7 @@ def bench_bus(
                 sum(r.queries for r in runs[stream]),
                 sum(r.guessed for r in runs[stream]),
             )
-            for stream in (None, True, "unhinted")
+            for stream in (None, True, "unhinted", "hinted")
         )
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
@@ -343,6 +353,7 @@ def bench_bus(
         dup,
         rt_bench,
         unhinted,
+        hinted,
     )
 
 
@@ -468,9 +479,12 @@ def _apart_episode(
     local: Episode,
     stream: bool | None,
     guess: bool = True,
+    foresee: bool = True,
 ) -> _Apart:
     opened: list[BusCell] = []
-    make = bus_cell(session, cell=f"suite{i}", opened=opened, stream=stream, guess=guess)
+    make = bus_cell(
+        session, cell=f"suite{i}", opened=opened, stream=stream, guess=guess, foresee=foresee
+    )
     t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
     b = run_episode(tr.scene, simulator=make, **kw)
     wall, cpu, main = time.perf_counter() - t0, time.process_time() - c0, time.thread_time() - m0
@@ -674,7 +688,9 @@ def format_bus(b: BusBench, command: str, date: str, machine: str) -> str:
             "follows them; with the executor's hint of its plan's next steps the node runs on "
             "past a step's end, starting the next step on a guess (undone when the executor "
             "commands something else), and sends each further step as a further reply, so a "
-            "step whose guess holds costs no query. "
+            "step whose guess holds costs no query; with the executor's basis (its spec and "
+            "monitor state) the node plans the first step, and the next step after a walk or "
+            'a new request, itself, with the executor\'s planner (docs/bus.md, "Foresight"). '
             f"Hence {b.queries / b.episodes:.0f} queries per episode for "
             f"{b.ticks / b.episodes:.0f} ticks (lockstep: one per tick, +108 % "
             "wall).",
@@ -690,7 +706,18 @@ def _format_unhinted(b: BusBench) -> list[str]:
     if un is None:
         return []
     starts = ap.guessed
+    hinted = b.hinted
+    rows = []
+    if hinted is not None:
+        rows.append(
+            "| the same with the executor's hints but without the node's foresight (the "
+            "executor's basis not sent: session 13): wall; time the loop waited for the node; "
+            f"queries; starts taken from guesses | {hinted.bus_s:.2f} s "
+            f"({_pct(hinted.bus_s, b.inproc_s):+.1f} %); {hinted.waited_s:.2f} s; "
+            f"{hinted.queries}; {hinted.guessed} | — |"
+        )
     return [
+        *rows,
         f"| the executor's starts taken from the node's guesses (no query); queries, with / "
         f"without the executor's hints | {starts}; {ap.queries} / {un.queries} | — |",
         f"| the same suite without the executor's hints (each step's commands cost a query): "

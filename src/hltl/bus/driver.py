@@ -28,8 +28,9 @@ from hltl.bus.session import executor_opened, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
 from hltl.execution.drivers import ActionState, ActionStatus, Basis, Expected, Handle
-from hltl.execution.executor import ExactPlanner
+from hltl.execution.executor import ExactPlanner, ExecutorConfig
 from hltl.execution.log import EventLog, LogRecord, RobotDown
+from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory, EpisodeConfig
 from hltl.sim.events import EventSchedule
 from hltl.sim.simulator import PerceptionModel
@@ -100,6 +101,9 @@ class DriverStats:
     guessed_ahead: int = 0
     waited: float = 0.0  # wall seconds waiting for the node's answers
     guessed: int = 0  # commands the node had started on the executor's hint (no round trip)
+    # guessed steps waited for: matching the hint, and planned by the node (foresight)
+    awaited_hinted: int = 0
+    awaited_foreseen: int = 0
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -187,6 +191,9 @@ class BusCell:
             request, for the node to start each step when the one before ends and simulate
             on, so that one answer carries several steps (``False``: the node stops at each
             step's end, and the executor's next commands cost a round trip).
+        foresee: with ``guess``, also send the executor's basis (:meth:`foresee`), for the
+            node to plan the executor's next step itself where the hint is stale and the first
+            step (``False``: hints only).
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -214,9 +221,12 @@ class BusCell:
         perceived: PerceptionClient | None = None,
         stream: bool | None = None,
         guess: bool = True,
+        foresee: bool = True,
     ) -> None:
         self.session = session
         self.guess = guess
+        # (a streamed stretch is never run past a step's end: nothing to foresee)
+        self.foresight = guess and foresee and stream is not True
         self.perceived = perceived
         self.scene = scene
         self.log = log
@@ -262,8 +272,14 @@ class BusCell:
         self._guessed = 0
         # the executor's basis (see foresee) as it travels, its spec's version when built
         self._basis: dict[str, Any] | None = None
+        self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, dict[str, Any]] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
+        # the replies to the request that asks the node to foresee the first step (sent with
+        # the first basis, taken up once the reset's answer is in), and whether it went
+        self._first: Any = None
+        self._first_sent = False
+        self._sent_version = 0  # the last spec version whose basis went to the node
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
         self._guess_next = False  # the stream's next reply starts with a guessed step
@@ -327,6 +343,16 @@ class BusCell:
             self._dead = True
             self.close()
             raise
+        self._take_first()
+
+    def _take_first(self) -> None:
+        """Once the reset's answer is in: the node's foresight of the first step, if asked
+        for, is what the loop's first commands are compared with (its replies, still to come,
+        are waited for then, like a guessed step's)."""
+        if self._first is None or self._reset is not None or self._step:
+            return
+        self._stream, self._first = self._first, None
+        self._streamed, self._guess_next, self._foresee_next = 0, True, True
 
     def _mode(self) -> dict[str, Any]:
         """How the node is to run the episode (the reset request's part that says so): here
@@ -573,12 +599,16 @@ class BusCell:
             )
             if not (hinted or self._foresee_next):
                 return False  # (known here: the node's guess, still to come, is not waited for)
+            if hinted:
+                self.stats.awaited_hinted += 1
+            else:
+                self.stats.awaited_foreseen += 1
             self._pull()
             front = self._front()
         if front is None or not front.peek_guess():
             return False
-        guess = front.peek()
-        if not _same(queued, guess.starts) or any(c.t != guess.t for c in queued):
+        t, starts = front.peek_starts()
+        if not _same(queued, starts) or any(c.t != t for c in queued):
             return False
         tick = front.take()
         self._guessed += 1
@@ -720,8 +750,13 @@ class BusCell:
             self._ahead = []  # simulated without these commands: the node undoes them
         else:
             nxt = self._ahead_time()
-            if nxt is None and self._stream is not None and not self._guess_next:
-                # (no commands: a guessed step, next in the stream, is not waited for)
+            if (
+                nxt is None
+                and self._stream is not None
+                and (not self._guess_next or self._foresee_next)
+            ):
+                # (no commands: a guessed step, next in the stream, is not waited for, unless
+                # the node decides it itself: it may hold the step back and simulate on)
                 self._pull()
                 nxt = self._ahead_time()
         if nxt == t:  # the node already simulated this tick: no round trip
@@ -760,7 +795,7 @@ class BusCell:
                 self._foresee_next = bool(d.get("foresee"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
-                if d.get("guessed"):
+                if d.get("guessed") or d.get("foreseen"):
                     self.stats.guessed_ahead += ticks.size
                 else:
                     self.stats.streamed += ticks.size
@@ -795,7 +830,7 @@ class BusCell:
                     for step in guesses
                 ]
             if self._basis is not None:
-                ahead["basis"] = self._basis
+                ahead["basis"] = self._basis_out()
         req: dict[str, Any] = {
             "episode": self.episode,
             "step": self._step + 1,
@@ -876,6 +911,8 @@ class BusCell:
         hint is stale (after a walk), with the executor's planner when it is one the node
         can run (the exact planner with the scene's kinematics and costs)."""
         p = basis.planner
+        if not self.foresight:
+            return
         if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
             self._basis = None
             return
@@ -887,6 +924,73 @@ class BusCell:
             "q": list(basis.q),
             "planner": {"algorithm": p.algorithm, "timeout": p.timeout},
         }
+        c, f = basis.config, basis.predictor
+        if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
+            # the executor's check before a dispatch, for the node to hold back what it holds
+            self._basis["check"] = {
+                "intrusion_speed": c.intrusion_speed,
+                "predict_dt": c.predict_dt,
+                "forecast": None if f is None else {"window": f.window, "min_speed": f.min_speed},
+            }
+        if not self.guess or self._motion or self._dead or not self._defer:
+            return
+        if not (self._first_sent or self._step):
+            self._foresee_first()
+        elif basis.version != self._sent_version:
+            self._foresee_spec()
+        self._sent_version = basis.version
+
+    def _basis_out(self) -> dict[str, Any]:
+        """The basis as it goes out: with its spec the first time (the node keeps it by its
+        version), without it after that."""
+        assert self._basis is not None
+        version = self._basis["version"]
+        if version == self._spec_sent:
+            return {k: v for k, v in self._basis.items() if k != "spec"}
+        self._spec_sent = version
+        return self._basis
+
+    def _foresee_spec(self) -> None:
+        """A new spec (an instruction grounded while the node runs ahead): its basis goes to
+        the node at once, for it to foresee the step the executor replans when the running
+        one ends (not answered, and not waited for)."""
+        req = {
+            "episode": self.episode,
+            "foresee": True,
+            "ahead": {"numbers": [self._seq + 1, self._next_handle], "basis": self._basis_out()},
+        }
+        if self.link.lost():  # (an injected fault: the node uses the hint)
+            return
+        with contextlib.suppress(BusError):
+            self._query(self.keys.sim_step, dumps(req), commands=False)
+
+    def _foresee_first(self) -> None:
+        """Ask the node to foresee the episode's first step from the executor's first basis
+        (its commands otherwise cost a round trip): the node plans it on the first world,
+        starts it on a guess and simulates on, and answers with the guessed step and the
+        ticks after it, like a step query's guessed replies. Not waited for here (the loop
+        plans meanwhile)."""
+        self._first_sent = True
+        req = {
+            "episode": self.episode,
+            "foresee": True,
+            "t": self.now,
+            "batch": self._batch,
+            "ahead": {
+                **self._ahead_req,
+                "numbers": [self._seq + 1, self._next_handle],
+                "basis": self._basis_out(),
+            },
+        }
+        if self.link.lost():  # (an injected fault: the first commands are asked about)
+            return
+        try:
+            got = self._query(self.keys.sim_step, dumps(req), commands=False)
+        except BusError:  # the bus failed: the loop's first query says so
+            return
+        if got is not None:
+            self._first = got[0]
+            self._take_first()
 
     def unavailable(self, t: float) -> frozenset[str]:
         self._ready()
@@ -1084,6 +1188,7 @@ def bus_cell(
     make_cell: Callable[..., BusCell] | None = None,
     stream: bool | None = None,
     guess: bool = True,
+    foresee: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1115,6 +1220,7 @@ def bus_cell(
             perceived=perceived,
             stream=stream,
             guess=guess,
+            foresee=foresee,
         )
         if opened is not None:
             opened.append(c)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import collections
 import contextlib
 import math
 import random
@@ -33,10 +34,11 @@ from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus, Basis, Handle
-from hltl.execution.executor import ExactPlanner
+from hltl.execution.executor import ExactPlanner, ExecutorConfig, check_step
 from hltl.execution.foresee import after_step, foresee_steps
 from hltl.execution.log import HANDLED, EventLog, LogRecord
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
+from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.simulator import PerceptionModel, Simulator
@@ -70,6 +72,12 @@ GUESS_STREAM = True
 # a step the node foresees itself (its planner run on the executor's basis) gives up past this
 # many wall seconds: the node's step thread answers nothing meanwhile
 FORESEE_TIMEOUT = 0.05
+# after a step during which an instruction came, the node waits this long (wall seconds) for
+# the executor's new basis before it foresees the next step (the hint is then used)
+FORESEE_WAIT = 0.02
+# a request to foresee the first step waits at most this long for its episode's reset, which
+# the node handles on another thread (it was sent first)
+RESET_WAIT = 1.0
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -103,8 +111,10 @@ class NodeStats:
     based: int = 0  # stretches after commands undone with the save made while idle (no save)
     guessed: int = 0  # steps started ahead on the executor's hint
     guesses_kept: int = 0  # of those, steps the executor did command so (the rest undone)
-    foreseen: int = 0  # of the guessed steps, those the node planned itself (not the hint)
+    foreseen: int = 0  # of the guessed steps, those the node planned itself (not hinted)
     foreseen_kept: int = 0  # of those, steps the executor did command so
+    specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
+    checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
 
@@ -136,6 +146,9 @@ class _Episode:
     # the last world it has seen (the one its latest plan was made in)
     basis: _Basis | None = None
     seen: WorldState | None = None
+    # the observations along the cell's path, the last second of them (for the forecast the
+    # executor's check makes: its forecaster has seen the same ones)
+    recent: list[WorldState] = field(default_factory=list)
 
 
 @dataclass(frozen=True, slots=True)
@@ -145,6 +158,10 @@ class _Basis:
 
     basis: Basis
     monitor: HierarchyMonitor
+    # the executor's check before a dispatch (its config), and its forecaster's window and
+    # least speed (None: no intrusion check); None: the node does not check
+    check: ExecutorConfig | None = None
+    forecast: tuple[float, float] | None = None
 
     @classmethod
     def parse(cls, d: Any, known: _Basis | None) -> _Basis | None:
@@ -163,16 +180,27 @@ class _Basis:
                     timeout=min(float(p["timeout"]), FORESEE_TIMEOUT),
                 )
             )
+            c = d.get("check")
+            check = (
+                None
+                if not isinstance(c, dict)
+                else ExecutorConfig(
+                    intrusion_speed=float(c["intrusion_speed"]), predict_dt=float(c["predict_dt"])
+                )
+            )
+            f = c.get("forecast") if isinstance(c, dict) else None
+            forecast = None if f is None else (float(f["window"]), float(f["min_speed"]))
             if known is not None and known.basis.version == version:
                 spec, monitor = known.basis.spec, known.monitor
             else:
-                spec = spec_from_dict(d["spec"], "<the executor's spec>")
+                # (grounded and checked by the executor: its automata are not checked again)
+                spec = spec_from_dict(d["spec"], "<the executor's spec>", check_automata=False)
                 monitor = HierarchyMonitor(spec)
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed basis: {exc}") from None
         if len(q) != len(monitor.initial):
             raise BusError(f"malformed basis: {len(q)} monitor states for {len(monitor.initial)}")
-        return cls(Basis(spec, version, q, planner), monitor)
+        return cls(Basis(spec, version, q, planner), monitor, check, forecast)
 
 
 @dataclass(slots=True)
@@ -313,10 +341,17 @@ class _Stretch:
     q: MonitorState = ()
     ctx: Any = None
     own: bool = False
+    planned: bool = False  # the guesses come from the node's own plan
     foresee: bool = False
     # the command number and handle of the next guessed start (foresight numbers its own)
     numbers: tuple[int, int] | None = None
-    said: bool = False  # an instruction came during the stretch (a new spec is coming)
+    said: bool = False  # an instruction came during the step (a new spec is coming)
+    # a step the executor's check holds back (an intrusion risk), and the context then: the
+    # node simulates on and starts it at the first tick it passes the check
+    held: tuple[_Start, ...] | None = None
+    held_ctx: Any = None
+    # until when (perf_counter) the node waits for the new spec's basis before it foresees
+    awaiting: float | None = None
 
 
 class CellNode:
@@ -387,6 +422,8 @@ class CellNode:
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
         self._semantics: ActionSemantics | None = None  # (foresight: contexts, transitions)
+        # the episodes reset here lately (a request to foresee waits only for one not yet)
+        self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -457,11 +494,13 @@ class CellNode:
             log = EventLog(on_record=records.append)
             cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
             self._ep = ep = _Episode(episode, cell, records)
+            self._reset_ids.append(episode)
             self._seq = 0  # reports are numbered per episode (the executor counts from 0)
             self.stats.episodes += 1
             self.stats.starts = {}
             obs = cell.observe(0.0)
             ep.seen = obs
+            _remember(ep.recent, obs)
             answer = {
                 "episode": episode,
                 "observation": world_to_wire(obs),
@@ -529,9 +568,32 @@ class CellNode:
         deadline = time.perf_counter() + seconds
         while time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
-            query = self._steps.try_recv()
+            query = self._next_query()
             if query is not None:
                 return query
+        return None
+
+    def _next_query(self) -> Any:
+        """The next step query waiting, if any; a request carrying the executor's new basis
+        (see :meth:`_foresee_first`) is taken in on the way, not returned: it does not stop
+        what the node is streaming."""
+        query = self._steps.try_recv()
+        if query is None:
+            return None
+        payload = _payload(query)
+        if b'"foresee"' not in payload:
+            return query
+        try:
+            d = loads(payload, "step request")
+        except BusError:
+            return query
+        if not d.get("foresee"):
+            return query
+        with self._lock:
+            ep = self._ep
+            if ep is None or ep.id != d.get("episode") or not (ep.last_step or ep.batch):
+                return query  # (the first step's: served as a query)
+            self._take_basis(ep, d.get("ahead"))
         return None
 
     def _stream(self, query: Any, ep: _Episode, s: _Stretch) -> Any:
@@ -545,9 +607,12 @@ class CellNode:
         while True:
             if executor_here():  # (an executor in this process gets the interpreter lock)
                 time.sleep(0)
-            nxt = self._steps.try_recv()
+            nxt = self._next_query()
             if nxt is not None:
                 return nxt
+            if s.guess_due and s.awaiting is not None and not self._new_basis(ep, s):
+                time.sleep(PAUSE_SLICE)  # (the executor grounds the instruction meanwhile)
+                continue
             with self._lock:
                 b = s.batch
                 if self._closed or self._ep is not ep or ep.batch is not b:
@@ -564,7 +629,7 @@ class CellNode:
                 head: dict[str, Any] = {"from": first, "more": more}
                 if not s.ahead.stream:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
-                    if s.guess_due and s.foresee:
+                    if s.guess_due and (s.foresee or s.own):
                         head["foresee"] = True  # (the next one planned here)
                 chunk = encode_answer(head, ticks)
                 try:
@@ -578,6 +643,7 @@ class CellNode:
     def _on_step(self, query: Any) -> tuple[_Episode, _Stretch] | None:
         """Answer a step query; a stretch to stream on after the answer, if any."""
         stretch = None
+        self._await_reset(query)
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
@@ -597,6 +663,8 @@ class CellNode:
                 self._reply(query, {"episode": ep.id, "ended": True})
                 self.finished.set()
                 return None
+            if d.get("foresee"):  # the executor's first basis: its first step foreseen
+                return self._foresee_first(query, ep, d)
             if d.get("peek") and "step" not in d:  # an unnumbered peek: the clock only
                 self._reply(query, {"episode": ep.id, **self._clock(ep.cell, float(d["t"]))})
                 return None
@@ -648,16 +716,79 @@ class CellNode:
                 stretch = (ep, s)
         return stretch
 
+    def _foresee_first(
+        self, query: Any, ep: _Episode, d: dict[str, Any]
+    ) -> tuple[_Episode, _Stretch] | None:
+        """Foresee the executor's first step from its first basis (before it has sent any
+        command): start it on a guess at once, simulate on to its end, and answer with that
+        (``"from": 0``), as a step query's guessed replies; the steps after it follow as
+        further replies. Only before the first step query (later, or a copy of the request:
+        the query is left unanswered, and the executor asks)."""
+        self._take_basis(ep, d.get("ahead"))
+        if ep.clock is not None or ep.last_step or ep.batch is not None:
+            return None  # (a new spec's basis: taken in, for the next stretches)
+        ahead = _Ahead.parse(d.get("ahead"))
+        if ahead is None or ep.basis is None:
+            return None
+        if ahead.stream or (ahead.stream is None and streams(ep.cell)):
+            return None  # (a streamed stretch is never run past a step's end)
+        t = float(d["t"])
+        answer: dict[str, Any] = {"from": 0, **self._clock(ep.cell, t)}
+        s, ticks = self._look_ahead(ep, 0, t, answer, replace(ahead, guesses=()), first=True)
+        if s is None or not ticks:
+            return None
+        del answer["next"], answer["pending"], answer["unavailable"], answer["reports"]
+        answer["guessed"] = s.guess_due  # (whether the next reply starts with a guessed step)
+        answer["foreseen"] = True  # (a guessed step's starts, as a guessed reply's)
+        answer.setdefault("more", False)
+        self._reply_bytes(query, encode_answer(answer, ticks))
+        self._ahead_sent = True
+        return None if s.done else (ep, s)
+
+    def _new_basis(self, ep: _Episode, s: _Stretch) -> bool:
+        """Whether the stretch has waited enough for the basis of the spec an instruction
+        made: it came (foresight goes on from it), or the wait is over (the hint is used)."""
+        bs = ep.basis
+        assert s.awaiting is not None
+        if bs is not None and s.basis is not None and bs.basis.version > s.basis.basis.version:
+            s.basis, s.q, s.awaiting = bs, bs.basis.q, None
+            return True
+        if time.perf_counter() < s.awaiting:
+            return False
+        s.awaiting, s.foresee = None, False
+        return True
+
+    def _await_reset(self, query: Any) -> None:
+        """A request to foresee the first step is sent right after the reset, which another
+        thread of the node handles: if its episode is not here yet, wait for it (at most
+        ``RESET_WAIT``, outside the node's lock)."""
+        payload = _payload(query)
+        if b'"foresee"' not in payload:
+            return
+        try:
+            d = loads(payload, "foresee request")
+        except BusError:
+            return
+        episode = d.get("episode")
+        if "t" not in d or episode in self._reset_ids:  # (only the first step's, once)
+            return
+        deadline = time.perf_counter() + RESET_WAIT
+        while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
+            time.sleep(PAUSE_SLICE)
+
     def _take_basis(self, ep: _Episode, ahead: Any) -> None:
         """The executor's basis, as a step request carries it (a malformed one is dropped:
         the node then only takes hints)."""
         if not isinstance(ahead, dict) or "basis" not in ahead:
             return
+        known = ep.basis
         try:
-            ep.basis = _Basis.parse(ahead["basis"], ep.basis)
+            ep.basis = _Basis.parse(ahead["basis"], known)
         except BusError:
             self.stats.malformed += 1
             ep.basis = None
+        if ep.basis is not None and (known is None or known.basis.version < ep.basis.basis.version):
+            self.stats.specs += 1
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -701,6 +832,7 @@ class CellNode:
         ep.version += 1
         cell.advance(t)
         obs = cell.observe(t)
+        _remember(ep.recent, obs)
         instructions = cell.take_instructions()
         reports = self._feedback(ep, t, latest, publish=publish)
         self.stats.steps += 1
@@ -789,6 +921,7 @@ class CellNode:
         answer: dict[str, Any],
         ahead: _Ahead | None,
         base: Callable[[], None] | None = None,
+        first: bool = False,
     ) -> tuple[_Stretch | None, list[Tick]]:
         """Simulate the ticks the executor will ask for next, until something happens that it
         is likely to act on (an action fails, is halted or ends its step, a robot's availability
@@ -806,7 +939,11 @@ class CellNode:
         as a further reply (:meth:`_stream`) while the executor works on what it has.
         Only cells whose state can be saved and restored (the discrete-event simulator, the
         3D one) are run ahead; others are stepped one tick per query. ``base``, when given,
-        puts the cell back to now (else it is saved before the first tick)."""
+        puts the cell back to now (else it is saved before the first tick). With ``first``
+        the stretch starts with the executor's next step, foreseen (see
+        :meth:`_foresee_first`), and the answer goes at that step's end, as a guessed step's
+        reply (its starts alone first, then the ticks after a pause, was slower: measured with
+        docs/tools/bus_account.py, the loop then waited for the ticks)."""
         if ahead is None or ep.batch is not None or _kept(ep.cell) is None:
             return None, []
         if ahead.stream is None:  # the executor leaves it to the node
@@ -818,6 +955,8 @@ class CellNode:
         if not ahead.stream:  # (a streamed stretch is never run past a step's end)
             s.guesses = list(ahead.guesses)
             self._foresight(ep, s)
+            if first:
+                s.guess_due = s.foresee = s.basis is not None
         out = []
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
@@ -829,7 +968,7 @@ class CellNode:
                 answer["more"] = True
                 if s.guess_due:  # (what follows starts with a guessed step)
                     answer["guessed"] = True
-                    if s.foresee:  # (planned here: the executor cannot know it from its hint)
+                    if s.foresee or s.own:  # (planned here: not the executor's hint)
                         answer["foresee"] = True
         return s, out
 
@@ -851,14 +990,65 @@ class CellNode:
     def _context(self, world: WorldState) -> Any:
         return self._semantics_of().context(world)
 
+    def _hold_or_start(
+        self, ep: _Episode, s: _Stretch, world: WorldState, t: float, step: tuple[_Start, ...]
+    ) -> None:
+        """The next guess is ``step`` as the executor's check lets it go now (:meth:`_check`):
+        whole or in part (started next, numbered as the executor will), held back (simulate
+        on, and check again each tick), or not at all (the stretch ends there)."""
+        got = self._check(ep, s, world, t, step)
+        if got is None:
+            s.done, s.held = True, None
+        elif not got:
+            if s.held is None:
+                s.held, s.held_ctx, s.own = step, self._context(world), True
+        else:
+            if len(got) < len(step) or s.held is not None:
+                s.own = True  # (not the hint: the executor cannot know it)
+            s.held = None
+            s.guesses.insert(0, got)
+            s.guess_due = True
+
+    def _check(
+        self, ep: _Episode, s: _Stretch, world: WorldState, t: float, step: tuple[_Start, ...]
+    ) -> tuple[_Start, ...] | None:
+        """``step`` as the executor's check before a dispatch lets it go now
+        (:func:`~hltl.execution.executor.check_step`, its forecaster fed the same
+        observations): the actions that pass, numbered from the step's first (empty: every
+        one held back by an intrusion risk; ``None``: one cannot run, the executor replans)."""
+        bs = s.basis
+        if bs is None or bs.check is None:
+            return step
+        predictor = None
+        if bs.forecast is not None:
+            predictor = ConstantVelocityPredictor(*bs.forecast)
+            for obs in ep.recent:
+                predictor.observe(obs.t, obs.humans)
+        w = world.with_unavailable(frozenset(s.unavailable)).with_time(t)
+        try:
+            ok, _, blocked = check_step(
+                [a for _, _, a in step], self.scene, w, self._semantics_of(), predictor, bs.check, t
+            )
+        except LookupError:
+            return None
+        if blocked:
+            return None
+        seq, h = step[0][0], step[0][1]
+        return tuple((seq + k, h + k, timed.action) for k, timed in enumerate(ok))
+
     def _stale(self, s: _Stretch, world: WorldState) -> bool:
-        """Whether the node plans the next step itself rather than take the hint: the world's
-        context changed since the hint's plan was made (a walk), the hint is used up, or the
-        guesses are already the node's own. Not after an instruction: the executor's spec
-        changes with it."""
-        if s.basis is None or s.said:
+        """Whether the node plans the next step itself rather than take the next of its
+        guesses (the hint, or the node's own plan's): the world's context changed since that
+        plan was made (a walk), the guesses are used up, or an instruction came (streamed, the
+        node waits for the executor's new spec)."""
+        if s.basis is None:
             return False
-        return s.own or not s.guesses or self._context(world) != s.ctx
+        if s.said:  # (streamed, the node can wait for the new spec's basis; not in the answer)
+            if not GUESS_STREAM:
+                return False
+            s.awaiting = time.perf_counter() + FORESEE_WAIT
+            return True
+        return not s.guesses or self._context(world) != s.ctx
 
     def _ahead_tick(self, ep: _Episode, s: _Stretch) -> Tick | None:
         """The next tick of a stretch, or ``None`` when it has ended. Its reports are numbered
@@ -915,8 +1105,16 @@ class CellNode:
             and _step_done(reports, b.latest)
         ):
             s.foresee = self._stale(s, obs)
-            if s.guesses or s.foresee:  # the executor's next step starts now, it says
+            if s.foresee:  # the executor's next step starts now, planned here
                 s.done, s.guess_due = False, True
+            elif s.guesses:  # the hint's, as the executor's check lets it go
+                s.done = False
+                self._hold_or_start(ep, s, obs, t_next, s.guesses.pop(0))
+        elif not s.done and s.held is not None and steady:
+            if self._context(obs) != s.held_ctx:  # the executor replans: planned here
+                s.held, s.foresee, s.guess_due = None, True, True
+            else:
+                self._hold_or_start(ep, s, obs, t_next, s.held)
         b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
@@ -929,10 +1127,18 @@ class CellNode:
         exactly that step then, else it is undone with the ticks after it. Not committed (the
         starts counted, the reports published) until the executor says so."""
         b = s.batch
-        world = b.ticks[-1][1]
+        world = b.ticks[-1][1] if b.ticks else ep.seen
         assert world is not None  # (a guess follows the tick that ended the step)
-        got = self._foreseen(s, world) if s.foresee else s.guesses.pop(0)
-        if got is None or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
+        s.said = False
+        hinted = s.guesses.pop(0) if s.guesses and not s.foresee else None
+        got = self._foreseen(s, world) if s.foresee else hinted
+        if got is not None and s.foresee:
+            checked = self._check(ep, s, world, s.t, got)
+            if checked is not None and not checked:  # held back: simulate on, check each tick
+                s.held, s.held_ctx, s.foresee = got, self._context(world), False
+                return self._ahead_tick(ep, s)
+            got = checked
+        if not got or any(h in ep.handles or h in ep.cancelled for _, h, _ in got):
             s.done, s.guesses = True, []  # (nothing to start, or a hint out of date)
             return None
         step = got
@@ -943,6 +1149,8 @@ class CellNode:
         mark = _saver(ep.cell)
         assert mark is not None  # (_look_ahead checked the cell can be saved)
         b.marks.append((i, mark, b.seq, dict(b.latest)))
+        if b.restore is None:  # (the stretch starts with it)
+            b.restore = mark
         self._seq = b.seq
         acks = []
         b.started[i] = step
@@ -960,8 +1168,11 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0
         b.ticks.append((t, None, acks, None))
         self.stats.guessed += 1
-        if s.foresee:
+        if s.planned:  # (planned here, now or at an earlier step's end)
             b.foreseen.add(i)
+            self.stats.foreseen += 1
+        elif s.own:
+            self.stats.checked += 1
         s.numbers = (step[-1][0] + 1, step[-1][1] + 1)
         if s.basis is not None:  # the monitor state once this step ends as planned
             q = after_step(
@@ -997,7 +1208,7 @@ class CellNode:
         w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
         basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
         steps = foresee_steps(self.scene, basis, bs.monitor, w)
-        s.own, s.ctx = True, self._context(world)
+        s.own, s.planned, s.ctx = True, True, self._context(world)
         if not steps:
             return None
         seq, h = numbers
@@ -1009,7 +1220,6 @@ class CellNode:
                 seq, h = seq + 1, h + 1
             numbered.append(tuple(step))
         s.guesses = numbered[1:]
-        self.stats.foreseen += 1
         return numbered[0]
 
     def _start_guessed(
@@ -1524,6 +1734,16 @@ def _step_done(reports: list[Report], latest: dict[int, Report]) -> bool:
         and all(r.status.state is ActionState.DONE for r in ended)
         and all(r.status.terminal for r in latest.values())
     )
+
+
+def _remember(recent: list[WorldState], obs: WorldState) -> None:
+    """Add an observation to the cell's path (a restored cell goes back in time: what came
+    after is no longer on it), keeping the last second."""
+    while recent and recent[-1].t >= obs.t:
+        recent.pop()
+    recent.append(obs)
+    if recent[0].t < obs.t - 1.0:
+        del recent[: next(i for i, o in enumerate(recent) if o.t >= obs.t - 1.0)]
 
 
 def _payload(query: Any) -> bytes:

@@ -167,17 +167,35 @@ class TickReader:
         except IndexError as exc:
             raise BusError(f"malformed {self._what} on the bus: {exc}") from None
 
-    def peek(self) -> Tick:
-        """Decode the next tick without taking it (the next :meth:`take` decodes it again).
+    def peek_starts(self) -> tuple[float, tuple[tuple[int, int, Action], ...]]:
+        """The next item's time and, for a guessed step, its starts, without decoding its
+        world or taking it (there is one left).
 
         Raises:
-            BusError: as :meth:`take`.
+            BusError: the block is malformed.
         """
-        state = (self._at, self._ids, self._locs, self._raw, self._last, self.left)
+        b = self._b
         try:
-            return self.take()
-        finally:
-            self._at, self._ids, self._locs, self._raw, self._last, self.left = state
+            t, _, _, flags, nrep = _HEAD.unpack_from(b, self._at)
+            at = self._at + _HEAD.size
+            ids: Any = self._ids
+            if flags & LAYOUT:
+                (n,) = _U32.unpack_from(b, at)
+                d = json.loads(b[at + 4 : at + 4 + n])
+                ids, at = (d["humans"], d["objects"], d["hands"]), at + 4 + n
+            if ids is None:
+                raise ValueError("its first tick has no layout")
+            at += 24 * sum(len(g) for g in ids) + _REPORT.size * nrep
+            if not flags & EXTRA:
+                return float(t), ()
+            (n,) = _U32.unpack_from(b, at)
+            extra = json.loads(b[at + 4 : at + 4 + n])
+            starts = tuple(
+                (int(q), int(h), Action.from_dict(a)) for q, h, a in extra.get("starts", ())
+            )
+        except (struct.error, ValueError, KeyError, TypeError, IndexError, HltlError) as exc:
+            raise BusError(f"malformed {self._what} on the bus: {exc}") from None
+        return float(t), starts
 
     def take(self) -> Tick:
         """Decode the next tick.

@@ -144,12 +144,16 @@ class Basis:
         version: counts the executor's specs (a new request makes a new one).
         q: the monitor state once the running step ends as planned (now, with none running).
         planner: the executor's planner (a driver plans with it only if it knows how).
+        config: the executor's configuration (its checks before a dispatch), if any.
+        predictor: the executor's forecaster of people (for the intrusion check), if any.
     """
 
     spec: HSpec
     version: int
     q: MonitorState
     planner: object
+    config: object = None
+    predictor: object = None
 
 
 @runtime_checkable

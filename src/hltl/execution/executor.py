@@ -186,6 +186,61 @@ class ExecutorConfig:
             raise ValueError(f"anticipate_votes must be in [0, 1], got {self.anticipate_votes!r}")
 
 
+def check_step(
+    actions: Sequence[Action],
+    scene: Scene,
+    world: WorldState,
+    semantics: ActionSemantics,
+    predictor: TrajectoryPredictor | None,
+    config: ExecutorConfig,
+    t: float,
+) -> tuple[list[_Timed], list[Hazard], list[Hazard]]:
+    """A step's actions that can go now in ``world`` at time ``t`` (each timed once), those
+    an intrusion forecast by ``predictor`` holds back (``None``: no intrusion check), and
+    those that cannot run now: a failed precondition, or no motion from where the hands are
+    (the cost model's INFEASIBLE), which must never be dispatched. The executor's check
+    before each dispatch, also run by a driver that foresees it."""
+    ok: list[_Timed] = []
+    risky: list[Hazard] = []
+    blocked: list[Hazard] = []
+    hands = dict(world.hands)
+    cost = semantics.cost
+    for a in actions:
+        h = precondition_hazard(a, scene, world, semantics=semantics)
+        if h is not None:
+            blocked.append(h)
+            continue
+        tr = semantics.transition(a, world)
+        if isinstance(tr, Infeasible):
+            raise LookupError(tr.reason)
+        timed = _Timed(a, tr, cost.duration(a, tr, hands))
+        if not math.isfinite(timed.duration):
+            blocked.append(
+                Hazard(a, "precondition", f"{a}: no motion plan from where the hands are")
+            )
+            continue
+        h = None
+        if (
+            predictor is not None
+            and hand_speed(tr, hands, timed.duration) >= config.intrusion_speed
+        ):
+            h = intrusion_hazard(
+                a,
+                scene,
+                world,
+                predictor,
+                t,
+                t + timed.duration,
+                config.predict_dt,
+                semantics=semantics,
+            )
+        if h is not None:
+            risky.append(h)
+        else:
+            ok.append(timed)
+    return ok, risky, blocked
+
+
 # an infeasible world: context, robots down, spec version, people standing still
 _BlockedKey = tuple[Context, frozenset[str], int, tuple[tuple[str, Vec3], ...]]
 
@@ -666,7 +721,8 @@ class Executor(TickTemplate):
             return
         after = self._after_running()
         q = self.q if after is None else after[1]
-        self._foresee(Basis(self.spec, self._spec_version, q, self.planner))
+        predictor = self.predictor if self._intrusion_on() else None
+        self._foresee(Basis(self.spec, self._spec_version, q, self.planner, self.config, predictor))
 
     # -- deciding --------------------------------------------------------------------------------
 
@@ -752,46 +808,10 @@ class Executor(TickTemplate):
 
     def _check_step(self, step: PlanStep) -> tuple[list[_Timed], list[Hazard], list[Hazard]]:
         """The step's actions that can go now (each timed once), those an intrusion forecast
-        holds back, and those that cannot run now: a failed precondition, or no motion from
-        where the hands are (the cost model's INFEASIBLE), which must never be dispatched."""
-        ok: list[_Timed] = []
-        risky: list[Hazard] = []
-        blocked: list[Hazard] = []
-        hands = dict(self.world.hands)
-        for a in step.actions:
-            h = precondition_hazard(a, self.scene, self.world, semantics=self.semantics)
-            if h is not None:
-                blocked.append(h)
-                continue
-            tr = self._transition(a, self.world)
-            timed = _Timed(a, tr, self.cost.duration(a, tr, hands))
-            if not math.isfinite(timed.duration):
-                blocked.append(
-                    Hazard(a, "precondition", f"{a}: no motion plan from where the hands are")
-                )
-                continue
-            h = self._dispatch_risk(timed, hands)
-            if h is not None:
-                risky.append(h)
-            else:
-                ok.append(timed)
-        return ok, risky, blocked
-
-    def _dispatch_risk(self, timed: _Timed, hands: Mapping[str, Vec3]) -> Hazard | None:
-        if not self._intrusion_on():
-            return None
-        if hand_speed(timed.transition, hands, timed.duration) < self.config.intrusion_speed:
-            return None
-        assert self.predictor is not None
-        return intrusion_hazard(
-            timed.action,
-            self.scene,
-            self.world,
-            self.predictor,
-            self.t,
-            self.t + timed.duration,
-            self.config.predict_dt,
-            semantics=self.semantics,
+        holds back, and those that cannot run now (:func:`check_step`)."""
+        predictor = self.predictor if self._intrusion_on() else None
+        return check_step(
+            step.actions, self.scene, self.world, self.semantics, predictor, self.config, self.t
         )
 
     def _wait(self, reason: str) -> None:

@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 import math
+import multiprocessing
 import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from multiprocessing.connection import Connection
 
 from hltl.planner import lns, profile, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
+from hltl.planner.relaxed import RelaxedGraph
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import _infeasible, _Search, plan_steps, search
 from hltl.spec.monitor import DONE
@@ -55,6 +58,9 @@ STEPS_UP_TO = 16
 # gave bound (0.3 of 10 s under load: random 32 x 32 median gap 35.6 -> 38.7 %)
 PROFILE_SHARE = 1.0 - BIG_RESTART_SHARE
 PROFILE_MIN_SECONDS = 1.0
+# on two cores the profile bound runs beside the walk (``_ProfileBeside``); at the deadline it
+# is waited for this much longer (its last CP-SAT solve ends at the deadline), then stopped
+BESIDE_GRACE = 0.2
 
 
 @dataclass(frozen=True, slots=True)
@@ -482,65 +488,88 @@ def plan_anytime(
     )
     expanded = 0
     profiled = False  # the last share goes to the profile bound instead of A*
-    for k, until in enumerate(phases):
-        if good_enough():
-            break
-        end = min(deadline, t0 + until * timeout)
-        if big and k == 0:
-            paired = _pairs_at_start(problem, s, start, end, lb)
-            profiled = (
-                best is not None
-                and paired <= lb
-                and n_goals > SCHEDULE_UP_TO
-                and _profile_fits(timeout)
-                and profile.applicable(problem)
-                and lns.available()
-            )
-            lb = max(lb, paired)
-            note()
-            continue
-        if profiled and k == 1:
-            end = min(deadline, t0 + (1.0 - PROFILE_SHARE) * timeout)
-        if profiled and k == 2:
-            assert best is not None
-            tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
-            bound = profile.profile_bound(
-                problem, heur.graph, start, tgts, floor=round(lb), upper=best[0], deadline=end
-            )
-            lb = max(lb, bound.ticks)
-            note()
-            continue
-        if k == 1:
-            if best is not None:
-                cand = _more(problem, s, end)
-                if cand is not None and cand[0] < best[0]:
-                    best = cand
+    beside: _ProfileBeside | None = None  # ... or, on two cores, a thread beside the walk
+    try:
+        for k, until in enumerate(phases):
+            if good_enough():
+                break
+            end = min(deadline, t0 + until * timeout)
+            if big and k == 0:
+                paired = _pairs_at_start(problem, s, start, end, lb)
+                profiled = (
+                    best is not None
+                    and paired <= lb
+                    and n_goals > SCHEDULE_UP_TO
+                    and _profile_fits(timeout)
+                    and profile.applicable(problem)
+                    and lns.installed()
+                )
+                lb = max(lb, paired)
+                note()
+                if profiled and beside_possible():
+                    assert best is not None
+                    beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
+                continue
+            if profiled and k == 1:
+                end = deadline if beside else min(deadline, t0 + (1 - PROFILE_SHARE) * timeout)
+            if profiled and k == 2:
+                if beside is None:
+                    assert best is not None
+                    tgts = schedule.targets(
+                        problem, heur.graph, start, heur.required_atoms(start[2])
+                    )
+                    bound = profile.profile_bound(
+                        problem,
+                        heur.graph,
+                        start,
+                        tgts,
+                        floor=round(lb),
+                        upper=best[0],
+                        deadline=end,
+                    )
+                    lb = max(lb, bound.ticks)
                     note()
-            continue
-        remaining = end - time.perf_counter()
-        if remaining <= 0:
-            continue
-        res = search(
-            problem,
-            timeout=remaining,
-            upper=None if best is None else best[0],
-            state=s,
-            pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
-        )
-        expanded += res.stats.expanded
-        if res.status is PlanStatus.SOLVED and res.makespan is not None:
-            stats = SearchStats(
-                expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+                continue
+            if k == 1:
+                if best is not None:
+                    cand = _more(problem, s, end, enough=lb)
+                    if cand is not None and cand[0] < best[0]:
+                        best = cand
+                        note()
+                continue
+            remaining = end - time.perf_counter()
+            if remaining <= 0:
+                continue
+            res = search(
+                problem,
+                timeout=remaining,
+                upper=None if best is None else best[0],
+                state=s,
+                pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
             )
-            return PlanResult(PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan)
-        if res.status is PlanStatus.INFEASIBLE and best is None:
-            return res
-        if res.status is PlanStatus.INFEASIBLE:
-            assert best is not None
-            lb = best[0]  # nothing shorter exists: the incumbent is optimal
-        elif res.lower_bound is not None:
-            lb = max(lb, round(res.lower_bound * TICKS_PER_SECOND))
-        note()
+            expanded += res.stats.expanded
+            if res.status is PlanStatus.SOLVED and res.makespan is not None:
+                stats = SearchStats(
+                    expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+                )
+                return PlanResult(
+                    PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan
+                )
+            if res.status is PlanStatus.INFEASIBLE and best is None:
+                return res
+            if res.status is PlanStatus.INFEASIBLE:
+                assert best is not None
+                lb = best[0]  # nothing shorter exists: the incumbent is optimal
+            elif res.lower_bound is not None:
+                lb = max(lb, round(res.lower_bound * TICKS_PER_SECOND))
+            note()
+        if beside is not None:
+            # (not wanted when the plan already meets the bound: stopped at once)
+            lb = max(lb, beside.finish(wanted=not good_enough()))
+            note()
+    finally:
+        if beside is not None:
+            beside.close()
     stats = SearchStats(expanded, 0, time.perf_counter() - t0, "anytime", first)
     if best is None:
         return PlanResult(
@@ -553,6 +582,91 @@ def plan_anytime(
     return PlanResult(
         PlanStatus.SOLVED, steps, to_seconds(best[0]), stats, "", to_seconds(min(lb, best[0]))
     )
+
+
+def beside_possible() -> bool:
+    """The profile bound can run in a process of its own beside the walk: two cores
+    (``schedule.WORKERS``) and processes started by ``fork`` (which copies the compiled
+    problem instead of pickling it)."""
+    return schedule.WORKERS >= 2 and "fork" in multiprocessing.get_all_start_methods()
+
+
+class _ProfileBeside:
+    """The profile bound in a process of its own beside the walk (``beside_possible``), from
+    the end of the pair bounds to the deadline, instead of the walk's last ``PROFILE_SHARE``:
+    the walk keeps its core and Python's lock (a thread would take turns with it on both, for
+    CP-SAT's import and each question's model: 0.5-1.5 s and 0.3-0.5 s of CPU on 32 goals),
+    and the bound gets the other core. The process sends each level it proves as it goes, so
+    stopping it, at the deadline or when the plan meets the bound, loses nothing proved."""
+
+    def __init__(
+        self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
+    ) -> None:
+        heur = s.heuristic
+        tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
+        self.bound = floor
+        self.deadline = deadline
+        ctx = multiprocessing.get_context("fork")
+        self.conn, send = ctx.Pipe(duplex=False)
+        self.proc = ctx.Process(
+            target=_profile_child,
+            args=(send, problem, heur.graph, start, tgts, floor, upper, deadline),
+            daemon=True,
+        )
+        self.proc.start()
+        send.close()  # (the child's copy stays open: its end is the end of the pipe)
+
+    def finish(self, *, wanted: bool) -> int:
+        """The bound it proved (ticks, never below its floor). When ``wanted`` it is waited
+        for until it ends or until its deadline and ``BESIDE_GRACE`` have passed; when not
+        (the plan meets the bound already) it is stopped at once."""
+        if wanted:
+            self._read(self.deadline + BESIDE_GRACE)
+        self.close()
+        return self.bound
+
+    def close(self) -> None:
+        """Stop the process (if it still runs) and keep what it sent."""
+        if self.proc.is_alive():
+            self.proc.terminate()
+        self.proc.join()
+        self._read(0.0)
+        self.conn.close()
+
+    def _read(self, until: float) -> None:
+        # the levels proved, until the process ends (the pipe's end) or ``until``
+        while not self.conn.closed and self.conn.poll(max(0.0, until - time.perf_counter())):
+            try:
+                self.bound = max(self.bound, self.conn.recv())
+            except EOFError:
+                return
+
+
+def _profile_child(
+    send: Connection,
+    problem: Problem,
+    graph: RelaxedGraph,
+    start: Node,
+    tgts: list[schedule.Target],
+    floor: int,
+    upper: int,
+    deadline: float,
+) -> None:
+    """The profile bound's process (``_ProfileBeside``): every level it proves is sent."""
+    try:
+        if lns.available():
+            profile.profile_bound(
+                problem,
+                graph,
+                start,
+                tgts,
+                floor=floor,
+                upper=upper,
+                deadline=deadline,
+                on_proven=send.send,
+            )
+    finally:
+        send.close()
 
 
 def _schedule_at_start(
@@ -733,13 +847,16 @@ def _pairs_at_start(
     return best
 
 
-def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
+def _more(
+    problem: Problem, s: _Search, until: float, *, enough: float = -math.inf
+) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
     there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
     the walk stops after
     ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
-    (``_jointly``), then the walk goes on if time is left. The best plan found."""
+    (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
+    stops early once it is no longer than ``enough`` (a lower bound: it is optimal)."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -760,9 +877,14 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
         if found is not None and (best is None or found[0] < best[0]):
             best = found
 
+    took = 0.0  # how long the last round (an order and its moves) took
     while True:
+        if best is not None and best[0] <= enough:
+            break
         now = time.perf_counter()
-        if now >= walk_until:
+        # a round is not cut short: none starts that would end past ``walk_until`` if it took
+        # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)
+        if now + took >= walk_until:
             if not joint or best is None:
                 break
             joint = False
@@ -771,13 +893,13 @@ def _more(problem: Problem, s: _Search, until: float) -> _Found | None:
             continue
         walk.step()
         better(walk.best)
-        if walk.best is None or len(gls) < 3:
-            continue
-        if lns is None or walk.best[0] < lns.cost:
-            lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
-        for _ in range(LNS_STEPS):
-            lns.step()
-        better(lns.best)
+        if walk.best is not None and len(gls) >= 3:
+            if lns is None or walk.best[0] < lns.cost:
+                lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
+            for _ in range(LNS_STEPS):
+                lns.step()
+            better(lns.best)
+        took = time.perf_counter() - now
     return best
 
 

@@ -7,7 +7,7 @@ import math
 import operator
 from collections.abc import Callable
 
-from hltl.planner.pairs import Lookup, PairBound
+from hltl.planner.pairs import PairBound
 from hltl.planner.problem import Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.automata import DFA
@@ -18,6 +18,19 @@ INF = math.inf
 
 # per place of an object: (robot, head, work, tail) for each robot that must act on it
 _Rows = list[tuple[tuple[int, float, float, float], ...]]
+# a pair lookup (``pairs.Lookup``) and the monitor state it was made for
+_HotPair = tuple[int, int, int, list[float], MonitorState]
+# (monitor state, robot, its places getter, memo, rows): see ``Heuristic._robot_entry``
+_RobotEntry = tuple[
+    MonitorState,
+    int,
+    Callable[[tuple[int, ...]], object],
+    dict[object, float],
+    tuple[tuple[int, list[tuple[float, float, float] | None]], ...],
+]
+# what ``cheap`` bounds besides the critical path: some robots' loads and a pair's bound
+Hot = tuple[tuple[_RobotEntry, ...], _HotPair | None]
+NO_HOT: Hot = ((), None)
 
 
 class Heuristic:
@@ -49,6 +62,8 @@ class Heuristic:
         self._load_groups: dict[MonitorState, tuple[tuple[int, _Rows], ...]] = {}
         self._rows: dict[tuple[int, tuple[Atom, ...]], _Rows] = {}
         self._machine_memo: dict[tuple[tuple[float, float, float], ...], float] = {}
+        self._hot: dict[object, Hot] = {}
+        self._robot_entries: dict[tuple[MonitorState, int], _RobotEntry] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
@@ -70,7 +85,7 @@ class Heuristic:
         self._memo: dict[tuple[tuple[int, ...], MonitorState], float] = {}
         self._crit_memo: dict[tuple[tuple[int, ...], MonitorState], float] = {}
         self.pairs: PairBound | None = None
-        self._pair_lookups: dict[MonitorState, list[Lookup]] = {}
+        self._pair_lookups: dict[MonitorState, list[_HotPair]] = {}
         for name in problem.spec.composites:
             tree = _monotone(problem.spec.formula(name), names)
             if tree is not None:
@@ -91,14 +106,17 @@ class Heuristic:
         critical = self._crit_memo.pop(key, None)
         if critical is None:
             critical = self._critical(locs, q)
-        value = self._full(locs, q, critical)
+        value = self._full(locs, q, critical, key)
         self._memo[key] = value
         return value
 
-    def cheap(self, node: Node) -> float:
-        """The critical-path bound alone (no robot load, no pairs): admissible, and about a
-        third of the cost of the full value, which it never exceeds. The search orders fresh
-        nodes by it and computes the full value only for the nodes it pops."""
+    def cheap(self, node: Node, hot: Hot = NO_HOT) -> float:
+        """The critical-path bound, and the parts of the full value that ``hot`` names (the
+        loads of some robots, one pair's bound): admissible, a fraction of the cost of the
+        full value, which it never exceeds. The search orders fresh nodes by it and computes
+        the full value only for the nodes it pops; it passes the parent's ``hot``: the two
+        robots that need the most and the largest pair there mostly are at the child too,
+        so fewer children are popped only to go back under their full value."""
         locs, _, q = node
         key = (locs, q)
         hit = self._memo.get(key)
@@ -107,15 +125,42 @@ class Heuristic:
         hit = self._crit_memo.get(key)
         if hit is None:
             hit = self._critical(locs, q)
+            robots, pair = hot
+            if hit != INF:
+                for entry in robots:
+                    if entry[0] is not q:
+                        entry = self._robot_entry(q, entry[1])
+                    load = self._robot_load(locs, entry)
+                    if load > hit:
+                        hit = load
+                if pair is not None and pair[4] is q:
+                    v = pair[3][locs[pair[0]] * pair[2] + locs[pair[1]]]
+                    if v > hit:
+                        hit = v
             self._crit_memo[key] = hit
         return hit
 
-    def _full(self, locs: tuple[int, ...], q: MonitorState, critical: float) -> float:
+    def hot(self, node: Node) -> Hot:
+        """The two robots whose load bounds and the pair whose bound were the largest at
+        ``node`` when its full value was computed (none when it was not)."""
+        return self._hot.get((node[0], node[2]), NO_HOT)
+
+    def _full(
+        self, locs: tuple[int, ...], q: MonitorState, critical: float, key: object = None
+    ) -> float:
         if critical == INF or self.n_robots < 2:
             return critical
-        bound = max(critical, self._load_bound(locs, q, critical))
+        load, robots = self._load_bound(locs, q)
+        bound = max(critical, load)
+        pair = None
         if self.pairs is not None:
-            bound = max(bound, self._pair_bound(locs, q))
+            value, pair = self._pair_bound(locs, q)
+            bound = max(bound, value)
+        if key is not None:
+            self._hot[key] = (
+                tuple(self._robot_entry(q, r) for r in robots if r >= 0),
+                pair,
+            )
         return bound
 
     def _conjunction_tree(self) -> dict[str, tuple[str, ...]] | None:
@@ -199,41 +244,39 @@ class Heuristic:
             self.pairs = PairBound(self.p, self.graph)
             self._memo.clear()
 
-    def _pair_bound(self, locs: tuple[int, ...], q: MonitorState) -> float:
+    def _pair_bound(self, locs: tuple[int, ...], q: MonitorState) -> tuple[float, _HotPair | None]:
         assert self.pairs is not None
         lookups = self._pair_lookups.get(q)
         if lookups is None:
-            lookups = self.pairs.lookups(sorted(self.required_atoms(q)))
+            lookups = [(*lk, q) for lk in self.pairs.lookups(sorted(self.required_atoms(q)))]
             self._pair_lookups[q] = lookups
         best = 0.0
-        for o1, o2, n, flat in lookups:  # pair_value, inlined: called for every node
-            v = flat[locs[o1] * n + locs[o2]]
+        arg = None
+        for lk in lookups:  # pair_value, inlined: called for every node
+            v = lk[3][locs[lk[0]] * lk[2] + locs[lk[1]]]
             if v > best:
-                best = v
-        return best
+                best, arg = v, lk
+        return best, arg
 
     # -- robot load ------------------------------------------------------------------------------
-    def _load_bound(self, locs: tuple[int, ...], q: MonitorState, floor: float = 0.0) -> float:
-        """max over robots of the time it must spend on objects every accepting run needs (or
-        anything up to ``floor`` when it cannot exceed ``floor``)."""
-        groups = self._load_groups.get(q)
-        if groups is None:
-            groups = tuple(
-                (o, self._rows_by_place(o, atoms_))
-                for o, atoms_ in self._group_by_object(self.required_atoms(q))
-            )
-            self._load_groups[q] = groups
+    def _load_bound(self, locs: tuple[int, ...], q: MonitorState) -> tuple[float, tuple[int, int]]:
+        """max over robots of the time it must spend on objects every accepting run needs, and
+        the two robots that need the most (-1: none)."""
+        groups = self._groups(q)
         if not groups:
-            return 0.0
+            return 0.0, (-1, -1)
         # per robot, its jobs: (head, work, tail) of each object it must handle
         jobs: list[list[tuple[float, float, float]]] = [[] for _ in range(self.n_robots)]
         for o, by_place in groups:
             for r, hd, v, tl in by_place[locs[o]]:
                 jobs[r].append((hd, v, tl))
         # most robots' jobs are the same as in the parent node: one memo lookup each
-        best = floor
+        best = 0.0
+        hot = -1
+        second = -1
+        memo2 = -1.0
         memo = self._machine_memo
-        for js in jobs:
+        for r, js in enumerate(jobs):
             if js:
                 key = tuple(js)
                 t = memo.get(key)
@@ -241,8 +284,57 @@ class Heuristic:
                     t = _one_machine_bound(js)
                     memo[key] = t
                 if t > best:
-                    best = t
-        return best
+                    best, hot, second, memo2 = t, r, hot, best
+                elif t > memo2:
+                    second, memo2 = r, t
+        return best, (hot, second)
+
+    def _groups(self, q: MonitorState) -> tuple[tuple[int, _Rows], ...]:
+        """Per object with jobs in ``q``: its rows (``_rows_by_place``)."""
+        groups = self._load_groups.get(q)
+        if groups is None:
+            groups = tuple(
+                (o, self._rows_by_place(o, atoms_))
+                for o, atoms_ in self._group_by_object(self.required_atoms(q))
+            )
+            self._load_groups[q] = groups
+        return groups
+
+    def _robot_entry(self, q: MonitorState, robot: int) -> _RobotEntry:
+        """What ``_robot_load`` needs for ``robot`` in ``q``: the places its jobs depend on
+        (an ``itemgetter`` over ``locs``), a memo over them, and per object the robot's job
+        (head, work, tail) at each of its places (None: no job there)."""
+        entry = self._robot_entries.get((q, robot))
+        if entry is None:
+            groups = self._groups(q)
+            rows = tuple(
+                (o, [_job_of(row, robot) for row in by_place])
+                for o, by_place in groups
+                if any(r == robot for row in by_place for r, *_ in row)
+            )
+            getter = operator.itemgetter(*(o for o, _ in rows)) if rows else _nothing
+            entry = (q, robot, getter, {}, rows)
+            self._robot_entries[(q, robot)] = entry
+        return entry
+
+    def _robot_load(self, locs: tuple[int, ...], entry: _RobotEntry) -> float:
+        """One robot's part of ``_load_bound`` (the same value), memoised by the places of the
+        objects it may have jobs on."""
+        _, _, getter, memo, rows = entry
+        places = getter(locs)
+        t = memo.get(places)
+        if t is None:
+            jobs = [job for o, by_place in rows if (job := by_place[locs[o]]) is not None]
+            if not jobs:
+                t = 0.0
+            else:
+                key = tuple(jobs)
+                t = self._machine_memo.get(key)
+                if t is None:
+                    t = _one_machine_bound(jobs)
+                    self._machine_memo[key] = t
+            memo[places] = t
+        return t
 
     def _rows_by_place(self, o: int, atoms_: tuple[Atom, ...]) -> _Rows:
         key = (o, atoms_)
@@ -442,6 +534,20 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
 
 
 _TAIL = operator.itemgetter(2)
+
+
+def _nothing(_: tuple[int, ...]) -> object:
+    return None
+
+
+def _job_of(
+    row: tuple[tuple[int, float, float, float], ...], robot: int
+) -> tuple[float, float, float] | None:
+    """``robot``'s (head, work, tail) in one place's row (None: it has no job there)."""
+    for r, hd, v, tl in row:
+        if r == robot:
+            return (hd, v, tl)
+    return None
 
 
 # A monotone composite: ("F", child) | ("and", a, b) | ("or", a, b)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import threading
 import time
 from collections.abc import Sequence
@@ -32,6 +33,12 @@ def available() -> bool:
     except ImportError:  # pragma: no cover - ortools is part of the dev and anytime extras
         return False
     return True
+
+
+def installed() -> bool:
+    """CP-SAT (the ``ortools`` package) is installed, found without importing it (the import
+    takes 0.5-1.5 s of CPU, and much more wall time under load)."""
+    return importlib.util.find_spec("ortools") is not None
 
 
 class Stop:

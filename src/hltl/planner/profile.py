@@ -5,7 +5,7 @@ from __future__ import annotations
 import itertools
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -216,6 +216,7 @@ def profile_bound(
     upper: int | None,
     deadline: float,
     seed: int = 0,
+    on_proven: Callable[[int], None] | None = None,
 ) -> ProfileBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
@@ -224,7 +225,8 @@ def profile_bound(
     above the next one gets a few times what the last "no" took, and where it has a relaxed
     solution or no answer the climb goes on one time unit at a time below it. The next level's
     solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
-    next level gets all the time left). Never below ``floor``."""
+    next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
+    proved. Never below ``floor``."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
@@ -244,6 +246,8 @@ def profile_bound(
         answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed)
         if answer is False:
             proven = ask + 1
+            if on_proven is not None:
+                on_proven(max(floor, proven * unit))
             stride *= 2
             last = time.perf_counter() - now
         elif answer is None and ask > proven:

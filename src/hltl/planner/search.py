@@ -10,7 +10,7 @@ from collections.abc import Callable, Iterator, Sequence
 
 from hltl.planner.bindings import derive_bindings
 from hltl.planner.explain import explain_infeasible
-from hltl.planner.heuristic import Heuristic
+from hltl.planner.heuristic import NO_HOT, Heuristic, Hot
 from hltl.planner.problem import Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.spec.monitor import DONE
@@ -81,6 +81,8 @@ class _Search:
                 if stepped[parent] == DONE:
                     stepped[c] = DONE
             nq = tuple(stepped)
+            if nq == q:
+                nq = q  # the same object: the heuristic recognises its own state by identity
             self._step_memo[key] = nq
         return nq
 
@@ -343,17 +345,19 @@ def search(
     deadline = math.inf if timeout is None else t0 + timeout
     s = _Search(problem) if state is None else state
     h: Callable[[Node], float]
-    cheap: Callable[[Node], float]
+    cheap: Callable[[Node, Hot], float]
     heur: Heuristic | None = None
     if algorithm == "astar":
         heur = s.heuristic
         h = heur
         # lazy evaluation: a fresh node waits on the open list under its cheap bound; the full
         # one (robot load, pairs) is computed when the node comes to the top, and the node goes
-        # back under it if it is larger. Many generated nodes never reach the top.
+        # back under it if it is larger. Many generated nodes never reach the top. The cheap
+        # bound includes the load of the robot that needs the most at the parent.
         cheap = heur.cheap
     else:
-        h = cheap = _zero
+        h = _zero
+        cheap = _zero2
     start, start_perm = s.canonical(problem.start())
     if problem.monitor.accepted(start[2]):
         return PlanResult(
@@ -431,6 +435,7 @@ def search(
         if on_progress is not None and expanded % 1024 == 0:
             on_progress(expanded, to_seconds(bound))
         n_children = 0
+        hot = NO_HOT if heur is None else heur.hot(node)
         # the start node has no tag: nothing can be shifted into a step before it
         for U, cost, child, tag, perm in s.steps(node, node_tags):
             n_children += 1
@@ -450,9 +455,9 @@ def search(
                 child_tags.append(tag)
                 if child not in seen_tags:
                     continue  # not expanded yet: it will see this tag when it is
-                hc = cheap(child)
+                hc = cheap(child, hot)
             else:
-                hc = cheap(child)
+                hc = cheap(child, hot)
                 if math.isinf(hc) or (upper is not None and ng + hc >= upper):
                     continue
                 g_best[child] = ng
@@ -474,6 +479,10 @@ def search(
 
 
 def _zero(_: Node) -> float:
+    return 0.0
+
+
+def _zero2(_: Node, __: Hot) -> float:
     return 0.0
 
 
