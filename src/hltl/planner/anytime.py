@@ -3,12 +3,11 @@
 from __future__ import annotations
 
 import math
-import multiprocessing
 import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from multiprocessing.connection import Connection
+from typing import TYPE_CHECKING
 
 from hltl.planner import lns, profile, schedule
 from hltl.planner.pairs import PairBound, pair_value
@@ -18,6 +17,9 @@ from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import _infeasible, _Search, plan_steps, search
 from hltl.spec.monitor import DONE
 from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
+
+if TYPE_CHECKING:
+    from multiprocessing.connection import Connection
 
 # the share of the time budget by which more priority orders stop being tried
 RESTART_SHARE = 0.5
@@ -588,6 +590,8 @@ def beside_possible() -> bool:
     """The profile bound can run in a process of its own beside the walk: two cores
     (``schedule.WORKERS``) and processes started by ``fork`` (which copies the compiled
     problem instead of pickling it)."""
+    import multiprocessing  # why: only 32-goal anytime runs need it (start-up, docs/planner.md)
+
     return schedule.WORKERS >= 2 and "fork" in multiprocessing.get_all_start_methods()
 
 
@@ -606,6 +610,8 @@ class _ProfileBeside:
         tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
         self.bound = floor
         self.deadline = deadline
+        import multiprocessing  # why: only 32-goal anytime runs need it
+
         ctx = multiprocessing.get_context("fork")
         self.conn, send = ctx.Pipe(duplex=False)
         self.proc = ctx.Process(
@@ -864,12 +870,14 @@ def _more(
     walk = _OrderWalk(s, node, gls)
     lns: _Neighbourhood | None = None
     best = walk.best
-    now = time.perf_counter()
     joint = (
         3 <= len(gls) <= CP_UP_TO
-        and until - now >= CP_MIN_SECONDS
+        and until - time.perf_counter() >= CP_MIN_SECONDS
         and _joint_possible(problem, gls)
     )
+    # (after CP-SAT's import in ``_joint_possible``, 0.5-1.5 s: the walk's share is measured
+    # from here, or a 16-goal line, where the joint re-plan finds nothing, would get no walk)
+    now = time.perf_counter()
     walk_until = now + CP_WALK_SHARE * (until - now) if joint else until
 
     def better(found: _Found | None) -> None:
