@@ -175,7 +175,7 @@ def _wrappers(text: str, _lexicon: Lexicon) -> str:
 _WORDS: tuple[tuple[str, str], ...] = (
     # "Bob has asked for the chips twice now": how often he asked, not how often to hand over
     (
-        r"\b(ask(?:ed|ing) for [^.;!?]*?) (?:twice|three times|several times|a few times|again|"
+        r"\b(ask(?:ed|ing) for [^.;!?,]*?) (?:twice|three times|several times|a few times|again|"
         r"already|ages ago|a while ago|a bit ago|earlier|this morning|this afternoon|yesterday|"
         r"last night|(?:an|one|two|ten|twenty|half an) (?:minutes?|hours?) ago|just now|all day|"
         r"all morning|all afternoon)(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
