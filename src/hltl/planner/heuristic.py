@@ -18,6 +18,9 @@ INF = math.inf
 
 # per place of an object: (robot, head, work, tail) for each robot that must act on it
 _Rows = list[tuple[tuple[int, float, float, float], ...]]
+_Job = tuple[float, float, float]  # (head, work, tail)
+# a robot's job at each place of an object, each job's digit, the radix (``_robot_digits``)
+_Digits = tuple[list[_Job | None], list[int], int]
 # a pair lookup (``pairs.Lookup``) and the monitor state it was made for
 _HotPair = tuple[int, int, int, list[float], MonitorState]
 # (monitor state, robot, rows, places getter, digit tables, memo): ``Heuristic._robot_entry``
@@ -66,6 +69,9 @@ class Heuristic:
         self._hot: dict[object, Hot] = {}
         self._robot_entries: dict[tuple[MonitorState, int], _RobotEntry] = {}
         self._all_entries: dict[MonitorState, tuple[_RobotEntry, ...]] = {}
+        self._digits: dict[
+            tuple[int, tuple[Atom, ...], int], tuple[list[_Job | None], list[int], int]
+        ] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
@@ -306,20 +312,31 @@ class Heuristic:
             rows = []
             tables = []
             scale = 1
-            for o, by_place in self._groups(q):
-                mine = [_job_of(row, robot) for row in by_place]
-                jobs = sorted({j for j in mine if j is not None})
-                if not jobs:
+            for o, atoms_ in self._group_by_object(self.required_atoms(q)):
+                mine, digits, radix = self._robot_digits(o, atoms_, robot)
+                if radix == 1:
                     continue
-                digit = {j: k + 1 for k, j in enumerate(jobs)}
                 rows.append((o, mine))
-                tables.append([0 if j is None else digit[j] * scale for j in mine])
-                scale *= len(jobs) + 1
+                tables.append([d * scale for d in digits])
+                scale *= radix
             objs = [o for o, _ in rows]
             places = operator.itemgetter(*objs) if len(objs) > 1 else _one_place(objs)
             entry = (q, robot, tuple(rows), places, tuple(tables), {})
             self._robot_entries[(q, robot)] = entry
         return entry
+
+    def _robot_digits(self, o: int, atoms_: tuple[Atom, ...], robot: int) -> _Digits:
+        """``robot``'s job at each place of object ``o`` for ``atoms_`` (None: none), each
+        job's digit (0: none, else 1 + its index among the distinct jobs) and the radix."""
+        key = (o, atoms_, robot)
+        hit = self._digits.get(key)
+        if hit is None:
+            mine = [_job_of(row, robot) for row in self._rows_by_place(o, atoms_)]
+            jobs = sorted({j for j in mine if j is not None})
+            digit = {j: k + 1 for k, j in enumerate(jobs)}
+            hit = (mine, [0 if j is None else digit[j] for j in mine], len(jobs) + 1)
+            self._digits[key] = hit
+        return hit
 
     def _robot_load(self, locs: tuple[int, ...], entry: _RobotEntry) -> float:
         """One robot's part of ``_load_bound``, memoised by its job list's key."""
