@@ -140,6 +140,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes14"].entries}) >= 10
     assert len(CORPORA["blind13"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind13"].entries}) >= 3
+    assert len(CORPORA["causes15"].entries) >= 170
+    assert len({e.scene for e in CORPORA["causes15"].entries}) >= 10
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted
