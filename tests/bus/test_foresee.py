@@ -8,6 +8,7 @@ import pytest
 
 from hltl.bus import node as node_module
 from hltl.bus.codec import WireBriefing
+from hltl.errors import GroundingError
 from hltl.grounding import make_grounder
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
@@ -163,3 +164,36 @@ def test_a_new_request_sends_its_basis(
     specs = [r for r in run.episode.records if r.type == "grounding" and r.spec is not None]
     assert len(specs) == 2
     assert run.node.stats.specs == len(specs)
+
+
+class _FirstOnly:
+    """The offline grounder for the episode's first instruction; every later one fails."""
+
+    def __init__(self) -> None:
+        self.inner, self.calls = make_grounder("offline"), 0
+
+    def ground(self, instruction: str, scene: Any, running: Any = None) -> Any:
+        self.calls += 1
+        if self.calls > 1:
+            raise GroundingError("not understood (a test's grounder)")
+        return self.inner.ground(instruction, scene, running)
+
+
+def test_no_wait_for_a_basis_that_is_not_coming(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A second request the executor cannot ground makes no new spec, so no basis follows the
+    step it came in, which the node waits for before it foresees the next one: the executor,
+    told so (``"awaits"``), does not wait for that step but asks (counted: the node cannot
+    have answered, it waits), and the node's wait ends with the question, not its time limit
+    (made 30 s here). The log is the in-process one."""
+    patient_foresight(monkeypatch)
+    monkeypatch.setattr(node_module, "FORESEE_WAIT", 30.0)
+    trial = make_trial("2-2", 0)
+    ep = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, grounder=_FirstOnly(), **ep)
+    failed = [r for r in local.records if r.type == "grounding" and r.spec is None]
+    assert len(failed) == 1
+    run = loopback.run(trial.scene, grounder=_FirstOnly(), **ep)
+    same_as_local(local, run)
+    assert run.node.stats.waited_out == 0 and run.cell.stats.unawaited == 1

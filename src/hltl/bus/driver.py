@@ -114,6 +114,9 @@ class DriverStats:
     # guessed steps waited for: matching the hint, and planned by the node (foresight)
     awaited_hinted: int = 0
     awaited_foreseen: int = 0
+    # foresight replies not waited for: the node waits for a new spec's basis that this
+    # executor does not send (its instruction did not ground), so it asks instead
+    unawaited: int = 0
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -331,6 +334,9 @@ class BusCell:
         self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, Mapping[str, Any] | None] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
+        # it does so once the basis of a spec newer than this version comes (an instruction
+        # came in the step: None, it does not wait)
+        self._awaits: Any = None
         # the replies to the request that asks the node to foresee the first step (sent with
         # the first basis, taken up once the reset's answer is in), and whether it went
         self._first: Any = None
@@ -602,6 +608,7 @@ class BusCell:
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
                         self._guess_next = bool(d.get("guessed"))
                         self._foresee_next = bool(d.get("foresee"))
+                        self._awaits = d.get("awaits")
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -656,6 +663,9 @@ class BusCell:
             )
             if not (hinted or self._foresee_next):
                 return False  # (known here: the node's guess, still to come, is not waited for)
+            if not hinted and isinstance(self._awaits, int) and self._sent_version <= self._awaits:
+                self.stats.unawaited += 1  # (the node waits for a new spec's basis: none comes)
+                return False
             if hinted:
                 self.stats.awaited_hinted += 1
             else:
@@ -850,6 +860,7 @@ class BusCell:
                 # (a guessed step's reply ends where the next guessed step would start)
                 self._guess_next = bool(d.get("guessed"))
                 self._foresee_next = bool(d.get("foresee"))
+                self._awaits = d.get("awaits")
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
                 if d.get("guessed") or d.get("foreseen"):

@@ -79,8 +79,10 @@ GUESS_STREAM = True
 # many wall seconds: the node's step thread answers nothing meanwhile
 FORESEE_TIMEOUT = 0.05
 # after a step during which an instruction came, the node waits this long (wall seconds) for
-# the executor's new basis before it foresees the next step (the hint is then used)
-FORESEE_WAIT = 0.02
+# the executor's new basis before it foresees the next step (the hint is then used): the
+# executor, far behind in the cell's time, grounds the instruction only when its loop reaches
+# it (an update takes it ~10 ms); one that will send none does not wait (see "awaits")
+FORESEE_WAIT = 0.25
 # a request to foresee the first step waits at most this long for its episode's reset, which
 # the node handles on another thread (it was sent first)
 RESET_WAIT = 1.0
@@ -120,6 +122,8 @@ class NodeStats:
     foreseen: int = 0  # of the guessed steps, those the node planned itself (not hinted)
     foreseen_kept: int = 0  # of those, steps the executor did command so
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
+    new_bases: int = 0  # waits for a new spec's basis before foreseeing that it ended
+    waited_out: int = 0  # of those, ended by FORESEE_WAIT (the hint used)
     briefed: int = 0  # of those, first specs grounded here from the executor's briefing
     respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
@@ -657,6 +661,8 @@ class CellNode:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
                     if s.guess_due and (s.foresee or s.own):
                         head["foresee"] = True  # (the next one planned here)
+                    if s.guess_due and s.awaiting is not None and s.basis is not None:
+                        head["awaits"] = s.basis.basis.version  # (once a newer one's basis)
                 chunk = encode_answer(head, ticks)
                 try:
                     self._reply_bytes(query, chunk)
@@ -784,10 +790,13 @@ class CellNode:
         assert s.awaiting is not None
         if bs is not None and s.basis is not None and bs.basis.version > s.basis.basis.version:
             s.basis, s.q, s.awaiting = bs, bs.basis.q, None
+            self.stats.new_bases += 1
             return True
         if time.perf_counter() < s.awaiting:
             return False
         s.awaiting, s.foresee = None, False
+        self.stats.new_bases += 1
+        self.stats.waited_out += 1
         return True
 
     def _await_reset(self, query: Any) -> None:
@@ -1027,6 +1036,8 @@ class CellNode:
                     answer["guessed"] = True
                     if s.foresee or s.own:  # (planned here: not the executor's hint)
                         answer["foresee"] = True
+                    if s.awaiting is not None and s.basis is not None:
+                        answer["awaits"] = s.basis.basis.version  # (a newer one's basis)
         return s, out
 
     def _foresight(self, ep: _Episode, s: _Stretch) -> None:
