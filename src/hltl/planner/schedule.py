@@ -293,7 +293,7 @@ def _shave(
             out_of_time = False
             dear = 0.0  # CP-SAT's time for the highest "no" of this round
             while running:
-                note_busy(len(running))  # (planner._Apart waits while every core is asked)
+                note_busy(len(running))  # (planner._Apart pauses while every core is asked)
                 stopping = [stop for stop in asked.values() if stop.stopped]
                 done, _ = wait(
                     running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
