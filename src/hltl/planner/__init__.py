@@ -221,17 +221,17 @@ class _Beside:
 class _Apart:
     """A* in a forked process of its own (``anytime.beside_possible``: two cores, ``fork``)
     from the moment exact mode's first phase is known to run (``certify``'s ``ahead``). It is
-    paused (``SIGSTOP``, ``SIGCONT``) while the phase asks CP-SAT as many questions at once as
-    there are cores (``lns.share_busy``: the cheaper model's climb asks two levels in a
-    round), so it takes only the CPU the phase leaves (CP-SAT's import, the Python between
-    rounds, the second core while the full model's levels are asked one at a time,
-    ``certify``'s ``beside``) and all of it once the phase ends. A thread would take turns
-    with the phase on Python's lock. What it returns is decided as ``_Beside`` decides it,
-    so the plan does not depend on which ends first: the phase's proved plan (A* is
-    stopped), else A*'s, unless it is no shorter than the phase's best plan (whose makespan
-    A* is sent as its ``upper``, ``search.Live``). Where no process can be forked, or with
-    ``on_progress`` (called in this process), A* runs on a thread beside the full model
-    (``_Beside``)."""
+    paused (``SIGSTOP``, ``SIGCONT``) through each round in which the phase asks CP-SAT as
+    many questions at once as there are cores (``lns.share_busy``: the cheaper model's climb
+    asks two levels in a round), so it takes only the CPU the phase leaves (CP-SAT's import,
+    the Python between rounds, the second core while the full model's levels are asked one
+    at a time, ``certify``'s ``beside``) and all of it once the phase ends. A thread would
+    take turns with the phase on Python's lock. What it returns is decided as ``_Beside``
+    decides it, so the plan does not depend on which ends first: the phase's proved plan (A*
+    is stopped), else A*'s, unless it is no shorter than the phase's best plan (whose
+    makespan A* is sent as its ``upper``, ``search.Live``). Where no process can be forked,
+    or with ``on_progress`` (called in this process), A* runs on a thread beside the full
+    model (``_Beside``)."""
 
     def __init__(
         self,
@@ -311,7 +311,8 @@ class _Apart:
                 conn.close()
 
     def _busy(self, questions: int) -> None:
-        # the climb asks ``questions`` at once: A* pauses while they take every core
+        # a round of ``questions`` at once begins (0: ends): A* pauses through one that
+        # takes every core
         pause = questions >= schedule.WORKERS
         if self.proc is not None and self.proc.pid is not None and pause != self.paused:
             self.paused = pause

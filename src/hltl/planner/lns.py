@@ -73,14 +73,15 @@ _busy: Callable[[int], None] | None = None
 
 def share_busy(busy: Callable[[int], None] | None) -> None:
     """From now on, ``schedule``'s climb calls ``busy`` with how many questions it asks
-    CP-SAT at once (0 between its rounds; None: nobody is told). Exact mode's A* process
-    (``planner._Apart``) is paused while the climb keeps every core busy."""
+    CP-SAT in a round, at once (0 between its rounds; None: nobody is told). Exact mode's A*
+    process (``planner._Apart``) is paused through the rounds that ask one on every core."""
     global _busy
     _busy = busy
 
 
 def note_busy(n: int) -> None:
-    """``n`` questions run at once now (told to the ``share_busy`` callback, if any)."""
+    """A round of ``n`` questions at once begins (0: it has ended); told to the
+    ``share_busy`` callback, if any."""
     busy = _busy
     if busy is not None:
         busy(n)
