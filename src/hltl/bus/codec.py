@@ -133,6 +133,134 @@ class Report:
         return cls.from_dict(loads(payload, "action report"))
 
 
+# -- the executor's basis (foresight) ---------------------------------------------------------
+
+
+def _int(x: Any, what: str, least: int = 0) -> int:
+    if isinstance(x, bool) or not isinstance(x, int) or x < least:
+        raise ValueError(f"{what} must be an integer >= {least}, got {x!r:.40}")
+    return x
+
+
+def _number(x: Any, what: str, positive: bool = False) -> float:
+    if isinstance(x, bool) or not isinstance(x, int | float):
+        raise ValueError(f"{what} must be a number, got {x!r:.40}")
+    v = float(x)
+    if not math.isfinite(v) or v < 0 or (positive and v == 0):
+        raise ValueError(
+            f"{what} must be a finite {'positive' if positive else 'non-negative'} "
+            f"number, got {x!r:.40}"
+        )
+    return v
+
+
+@dataclass(frozen=True, slots=True)
+class WireCheck:
+    """The executor's check before a dispatch as a basis carries it: its configuration's
+    intrusion speed and forecast spacing, and its constant-velocity forecaster's window and
+    least speed (``None``: no intrusion check)."""
+
+    intrusion_speed: float
+    predict_dt: float
+    forecast: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class WireBasis:
+    """The executor's :class:`~hltl.execution.drivers.Basis` as it travels to the node (a step
+    request's ``"ahead": {"basis": …}``): its spec's version and monitor state, the exact
+    planner's algorithm and time limit, its check, and the spec itself (JSON, as
+    :func:`hltl.spec.hierarchy.spec_to_dict` writes it) the first time a version goes, ``None``
+    after that (the node keeps it by version).
+
+    Attributes:
+        version: counts the executor's specs (1 for the first).
+        q: the monitor state, one automaton state per formula of the spec.
+        algorithm: the exact planner's search algorithm.
+        timeout: its time limit, seconds.
+        check: the executor's check before a dispatch (``None``: the node does not check).
+        spec: the spec's JSON form, or ``None``: the one the node has for ``version``.
+    """
+
+    version: int
+    q: tuple[int, ...]
+    algorithm: str
+    timeout: float
+    check: WireCheck | None = None
+    spec: Mapping[str, Any] | None = None
+
+    def to_dict(self, with_spec: bool = True) -> dict[str, Any]:
+        d: dict[str, Any] = {
+            "version": self.version,
+            "q": list(self.q),
+            "planner": {"algorithm": self.algorithm, "timeout": self.timeout},
+        }
+        c = self.check
+        if c is not None:
+            f = c.forecast
+            d["check"] = {
+                "intrusion_speed": c.intrusion_speed,
+                "predict_dt": c.predict_dt,
+                "forecast": None if f is None else {"window": f[0], "min_speed": f[1]},
+            }
+        if with_spec and self.spec is not None:
+            d["spec"] = self.spec
+        return d
+
+    @classmethod
+    def from_dict(cls, d: Any) -> WireBasis:
+        """Inverse of :meth:`to_dict`, every field checked.
+
+        Raises:
+            BusError: the payload is not a basis (one line saying what is wrong).
+        """
+        try:
+            if not isinstance(d, Mapping):
+                raise ValueError(f"expected a JSON object, got {d!r:.40}")
+            q = d["q"]
+            if not isinstance(q, list) or not q:
+                raise ValueError(f"q must be a non-empty list of monitor states, got {q!r:.40}")
+            p = d["planner"]
+            if not isinstance(p, Mapping):
+                raise ValueError(f"planner must be an object, got {p!r:.40}")
+            algorithm = p["algorithm"]
+            if not isinstance(algorithm, str) or not algorithm:
+                raise ValueError(f"planner algorithm must be a name, got {algorithm!r:.40}")
+            c = d.get("check")
+            check = None
+            if c is not None:
+                if not isinstance(c, Mapping):
+                    raise ValueError(f"check must be an object, got {c!r:.40}")
+                f = c.get("forecast")
+                if f is not None and not isinstance(f, Mapping):
+                    raise ValueError(f"forecast must be an object, got {f!r:.40}")
+                check = WireCheck(
+                    _number(c["intrusion_speed"], "intrusion_speed"),
+                    _number(c["predict_dt"], "predict_dt", positive=True),
+                    None
+                    if f is None
+                    else (
+                        _number(f["window"], "forecast window", positive=True),
+                        _number(f["min_speed"], "forecast min_speed"),
+                    ),
+                )
+            spec = d.get("spec")
+            if spec is not None and not isinstance(spec, Mapping):
+                raise ValueError(f"spec must be an object, got {spec!r:.40}")
+            return cls(
+                _int(d["version"], "version", 1),
+                tuple(_int(x, "a monitor state") for x in q),
+                algorithm,
+                _number(p["timeout"], "planner timeout", positive=True),
+                check,
+                spec,
+            )
+        except KeyError as exc:
+            raise BusError(f"malformed basis on the bus: {exc.args[0]!r} missing") from None
+        except ValueError as exc:
+            raise BusError(f"malformed basis on the bus: {exc}") from None
+
+
 # -- world states, exact -------------------------------------------------------------------
 
 

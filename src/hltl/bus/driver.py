@@ -7,7 +7,7 @@ import math
 import threading
 import time
 import uuid
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -16,6 +16,8 @@ from hltl.bus.codec import (
     Op,
     Report,
     TrajectoryLike,
+    WireBasis,
+    WireCheck,
     dumps,
     encode_trajectory,
     loads,
@@ -166,6 +168,28 @@ def _listeners_of(session: Any) -> _Listeners:
         return got
 
 
+def wire_basis(
+    basis: Basis, known: tuple[int, Mapping[str, Any] | None] | None = None
+) -> WireBasis | None:
+    """The executor's basis as it goes to the node, or ``None`` when its planner is not one the
+    node can run (only the exact planner with the scene's kinematics and costs is); ``known``
+    is a spec version and its JSON form already made (not made again)."""
+    p = basis.planner
+    if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
+        return None
+    spec = known[1] if known is not None and known[0] == basis.version else None
+    if spec is None:
+        spec = spec_to_dict(basis.spec)
+    c, f = basis.config, basis.predictor
+    check = None
+    if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
+        # the executor's check before a dispatch, for the node to hold back what it holds
+        check = WireCheck(
+            c.intrusion_speed, c.predict_dt, None if f is None else (f.window, f.min_speed)
+        )
+    return WireBasis(basis.version, tuple(basis.q), p.algorithm, p.timeout, check, spec)
+
+
 class BusCell:
     """A cell served by a :class:`~hltl.bus.node.CellNode`, driven over Zenoh (lockstep time).
 
@@ -271,9 +295,9 @@ class BusCell:
         self._guesses: list[list[tuple[int, int, Action]]] = []
         self._guessed = 0
         # the executor's basis (see foresee) as it travels, its spec's version when built
-        self._basis: dict[str, Any] | None = None
+        self._basis: WireBasis | None = None
         self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
-        self._spec_wire: tuple[int, dict[str, Any]] | None = None
+        self._spec_wire: tuple[int, Mapping[str, Any] | None] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         # the replies to the request that asks the node to foresee the first step (sent with
         # the first basis, taken up once the reset's answer is in), and whether it went
@@ -910,28 +934,12 @@ class BusCell:
         next step requests, for the node to plan the executor's next step itself where the
         hint is stale (after a walk), with the executor's planner when it is one the node
         can run (the exact planner with the scene's kinematics and costs)."""
-        p = basis.planner
         if not self.foresight:
             return
-        if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
-            self._basis = None
+        self._basis = wire_basis(basis, self._spec_wire)
+        if self._basis is None:
             return
-        if self._spec_wire is None or self._spec_wire[0] != basis.version:
-            self._spec_wire = (basis.version, spec_to_dict(basis.spec))
-        self._basis = {
-            "version": basis.version,
-            "spec": self._spec_wire[1],
-            "q": list(basis.q),
-            "planner": {"algorithm": p.algorithm, "timeout": p.timeout},
-        }
-        c, f = basis.config, basis.predictor
-        if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
-            # the executor's check before a dispatch, for the node to hold back what it holds
-            self._basis["check"] = {
-                "intrusion_speed": c.intrusion_speed,
-                "predict_dt": c.predict_dt,
-                "forecast": None if f is None else {"window": f.window, "min_speed": f.min_speed},
-            }
+        self._spec_wire = (basis.version, self._basis.spec)
         if not self.guess or self._motion or self._dead or not self._defer:
             return
         if not (self._first_sent or self._step):
@@ -944,11 +952,11 @@ class BusCell:
         """The basis as it goes out: with its spec the first time (the node keeps it by its
         version), without it after that."""
         assert self._basis is not None
-        version = self._basis["version"]
+        version = self._basis.version
         if version == self._spec_sent:
-            return {k: v for k, v in self._basis.items() if k != "spec"}
+            return self._basis.to_dict(with_spec=False)
         self._spec_sent = version
-        return self._basis
+        return self._basis.to_dict()
 
     def _foresee_spec(self) -> None:
         """A new spec (an instruction grounded while the node runs ahead): its basis goes to

@@ -19,6 +19,7 @@ from hltl.bus.codec import (
     JointStateMsg,
     Report,
     StampedPose,
+    WireBasis,
     decode_trajectory,
     dumps,
     encode_joint_state,
@@ -164,43 +165,40 @@ class _Basis:
     forecast: tuple[float, float] | None = None
 
     @classmethod
-    def parse(cls, d: Any, known: _Basis | None) -> _Basis | None:
-        """The basis a request carries (``{"version", "spec", "q", "planner"}``); ``known``'s
-        spec is kept when the version is the same."""
-        if not isinstance(d, dict):
-            return known
-        try:
-            version, q = int(d["version"]), tuple(int(x) for x in d["q"])
-            p = d.get("planner")
-            planner = (
-                None
-                if not isinstance(p, dict)
-                else ExactPlanner(
-                    algorithm=str(p["algorithm"]),
-                    timeout=min(float(p["timeout"]), FORESEE_TIMEOUT),
-                )
-            )
-            c = d.get("check")
-            check = (
-                None
-                if not isinstance(c, dict)
-                else ExecutorConfig(
-                    intrusion_speed=float(c["intrusion_speed"]), predict_dt=float(c["predict_dt"])
-                )
-            )
-            f = c.get("forecast") if isinstance(c, dict) else None
-            forecast = None if f is None else (float(f["window"]), float(f["min_speed"]))
-            if known is not None and known.basis.version == version:
-                spec, monitor = known.basis.spec, known.monitor
-            else:
+    def parse(cls, d: Any, known: _Basis | None) -> _Basis:
+        """The basis a request carries (:class:`~hltl.bus.codec.WireBasis`); ``known``'s spec
+        is kept when the version is the same.
+
+        Raises:
+            BusError: a malformed basis, or one without the spec the node does not have.
+        """
+        w = WireBasis.from_dict(d)
+        planner = ExactPlanner(algorithm=w.algorithm, timeout=min(w.timeout, FORESEE_TIMEOUT))
+        c = w.check
+        check = (
+            None
+            if c is None
+            else ExecutorConfig(intrusion_speed=c.intrusion_speed, predict_dt=c.predict_dt)
+        )
+        if known is not None and known.basis.version == w.version:
+            spec, monitor = known.basis.spec, known.monitor
+        elif w.spec is None:
+            raise BusError(f"malformed basis on the bus: spec version {w.version} never sent")
+        else:
+            try:
                 # (grounded and checked by the executor: its automata are not checked again)
-                spec = spec_from_dict(d["spec"], "<the executor's spec>", check_automata=False)
+                spec = spec_from_dict(w.spec, "<the executor's spec>", check_automata=False)
                 monitor = HierarchyMonitor(spec)
-        except (KeyError, TypeError, ValueError, HltlError) as exc:
-            raise BusError(f"malformed basis: {exc}") from None
-        if len(q) != len(monitor.initial):
-            raise BusError(f"malformed basis: {len(q)} monitor states for {len(monitor.initial)}")
-        return cls(Basis(spec, version, q, planner), monitor, check, forecast)
+            except (KeyError, TypeError, ValueError, HltlError) as exc:
+                raise BusError(f"malformed basis on the bus: its spec: {exc}") from None
+        if len(w.q) != len(monitor.initial):
+            raise BusError(
+                f"malformed basis on the bus: {len(w.q)} monitor states for "
+                f"{len(monitor.initial)} formulas"
+            )
+        return cls(
+            Basis(spec, w.version, w.q, planner), monitor, check, None if c is None else c.forecast
+        )
 
 
 @dataclass(slots=True)
