@@ -26,6 +26,39 @@ LAB, OFFICE, WARD, DEPOT = (paraphrase_scene(n) for n in ("lab", "office", "ward
 KITCHEN, CLASSROOM, NURSERY, WORKSHOP = (
     paraphrase_scene(n) for n in ("kitchen", "classroom", "nursery", "workshop")
 )
+# the scenes the phrasing families range over
+SCENES = [CELL, LAB, OFFICE, WARD, DEPOT, KITCHEN, CLASSROOM, NURSERY, WORKSHOP]
+
+
+def name_of(scene: Scene, oid: str) -> str:
+    """A name of object or person ``oid`` that names it alone in ``scene``."""
+    for o in scene.objects:
+        if o.id == oid:
+            return next(
+                (a for a in o.aliases if len(a.split()) == 2), o.aliases[0] if o.aliases else o.id
+            )
+    h = next(h for h in scene.humans if h.id == oid)
+    shared = {a for x in scene.humans if x.id != oid for a in x.aliases}
+    return next(a for a in (*h.aliases, h.name) if a not in shared)
+
+
+def unique_objects(scene: Scene) -> list[str]:
+    """The objects of ``scene`` whose category no other object shares."""
+    cats = [o.category for o in scene.objects]
+    return [o.id for o in scene.objects if cats.count(o.category) == 1]
+
+
+def plain_request(scene: Scene, k: int) -> tuple[str, str]:
+    """A plain request of ``scene`` ('give <person> the <object>') and its reading, the object
+    one no other object shares a category with, the person one no other person shares a name
+    with."""
+    cats = [o.category for o in scene.objects]
+    objs = [o for o in scene.objects if cats.count(o.category) == 1]
+    o = objs[k % len(objs)]
+    h = scene.humans[k % len(scene.humans)]
+    shared = {a for x in scene.humans if x.id != h.id for a in x.aliases}
+    name = next(a for a in (*h.aliases, h.name) if a not in shared)
+    return f"give {name} the {o.aliases[0] if o.aliases else o.id}", f"{o.id}>{h.id}"
 
 
 def assert_means(text: str, want: str, scene: Scene = CELL) -> None:

@@ -23,33 +23,17 @@ from tests.grounding.helpers import (
     NURSERY,
     OFFICE,
     ROOT,
+    SCENES,
     WARD,
     WORKSHOP,
     assert_refused,
+    name_of,
     tree,
+    unique_objects,
 )
 from tests.grounding.helpers import assert_reads as assert_means
 
 F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")
-SCENES = [CELL, LAB, OFFICE, WARD, DEPOT, KITCHEN, CLASSROOM, NURSERY, WORKSHOP]
-
-
-def _name(scene: Scene, oid: str) -> str:
-    """A name of object or person ``oid`` that names it alone in ``scene``."""
-    for o in scene.objects:
-        if o.id == oid:
-            return next(
-                (a for a in o.aliases if len(a.split()) == 2), o.aliases[0] if o.aliases else o.id
-            )
-    h = next(h for h in scene.humans if h.id == oid)
-    shared = {a for x in scene.humans if x.id != oid for a in x.aliases}
-    return next(a for a in (*h.aliases, h.name) if a not in shared)
-
-
-def _unique_objects(scene: Scene) -> list[str]:
-    """The objects of ``scene`` whose category no other object shares."""
-    cats = [o.category for o in scene.objects]
-    return [o.id for o in scene.objects if cats.count(o.category) == 1]
 
 
 # -- words that cannot change who gets what ------------------------------------------------------
@@ -106,12 +90,12 @@ CLOSERS = [
 
 
 def _plain_requests(scene: Scene) -> list[tuple[str, str]]:
-    objs = _unique_objects(scene)
+    objs = unique_objects(scene)
     people = [h.id for h in scene.humans]
     out = []
     for n, oid in enumerate(objs):
         pid = people[n % len(people)]
-        o, p = _name(scene, oid), _name(scene, pid)
+        o, p = name_of(scene, oid), name_of(scene, pid)
         out.append((f"give {p} the {o}", f"{oid}>{pid}"))
         out.append((f"could {p} have the {o}", f"{oid}>{pid}"))
         if scene.surfaces:
@@ -200,13 +184,13 @@ def test_time_clauses_that_order_tasks_stay(text: str, want: str, scene: Scene) 
 def _negation_cases() -> list[tuple[Scene, str, str | None]]:
     out: list[tuple[Scene, str, str | None]] = []
     for scene in SCENES:
-        objs = _unique_objects(scene)
+        objs = unique_objects(scene)
         people = [h.id for h in scene.humans]
         if len(objs) < 2:
             continue
         a, b = objs[0], objs[1]
         p, q = people[0], people[1]
-        na, nb, np_, nq = _name(scene, a), _name(scene, b), _name(scene, p), _name(scene, q)
+        na, nb, np_, nq = name_of(scene, a), name_of(scene, b), name_of(scene, p), name_of(scene, q)
         out += [
             (scene, f"Give {np_} the {na}. Don't give {np_} the {nb}.", f"{a}>{p}"),
             (scene, f"Give {np_} the {na}, but do not give the {nb} to {nq}", f"{a}>{p}"),
@@ -277,7 +261,7 @@ def test_a_colour_or_size_said_alone_is_the_one_of_that_kind(
     scene: Scene, first: tuple[str, str, str], second: tuple[str, str, str]
 ) -> None:
     p, q = scene.humans[0].id, scene.humans[1].id
-    np_, nq = _name(scene, p), _name(scene, q)
+    np_, nq = name_of(scene, p), name_of(scene, q)
     text = f"{np_} wants the {first[0]} {first[2]}; {nq}, the {second[0]}"
     if first[1] == second[1]:
         assert_refused(text, scene)
@@ -404,9 +388,9 @@ def test_a_negated_command_never_drops_a_task_of_the_request() -> None:
         assert got is not None, text
         for t in tasks(got):
             verb = "give" if t.kind == "deliver" else "put"
-            o = _name(scene, t.obj)
+            o = name_of(scene, t.obj)
             said = (
-                f"{text}. Don't give {_name(scene, t.target)} the {o}."
+                f"{text}. Don't give {name_of(scene, t.target)} the {o}."
                 if t.kind == "deliver"
                 else f"{text}. Don't {verb} the {o} on the {t.target}."
             )

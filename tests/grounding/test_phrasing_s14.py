@@ -18,27 +18,13 @@ from tests.grounding.helpers import (
     LAB,
     NURSERY,
     OFFICE,
+    SCENES,
     WARD,
     WORKSHOP,
     assert_refused,
+    plain_request,
 )
 from tests.grounding.helpers import assert_reads as assert_means
-
-SCENES = [CELL, LAB, OFFICE, WARD, DEPOT, KITCHEN, CLASSROOM, NURSERY, WORKSHOP]
-
-
-def _request(scene: Scene, k: int) -> tuple[str, str]:
-    """A plain request of ``scene`` ('give <person> the <object>') and its reading, the object
-    one no other object shares a category with, the person one no other person shares a name
-    with."""
-    cats = [o.category for o in scene.objects]
-    objs = [o for o in scene.objects if cats.count(o.category) == 1]
-    o = objs[k % len(objs)]
-    h = scene.humans[k % len(scene.humans)]
-    shared = {a for x in scene.humans if x.id != h.id for a in x.aliases}
-    name = next(a for a in (*h.aliases, h.name) if a not in shared)
-    return f"give {name} the {o.aliases[0] if o.aliases else o.id}", f"{o.id}>{h.id}"
-
 
 # -- words that cannot change who gets what ------------------------------------------------------
 #
@@ -107,7 +93,7 @@ def _opened(opener: str, request: str) -> str:
 def test_courtesy_and_address_leave_the_request(
     scene: Scene, k: int, opener: str, closer: str
 ) -> None:
-    request, want = _request(scene, k)
+    request, want = plain_request(scene, k)
     assert_means(_opened(opener, request) + closer, want, scene)
 
 
@@ -450,7 +436,7 @@ NOT_INERT = [
 @settings(max_examples=60, deadline=None)
 @given(st.sampled_from(SCENES), st.integers(0, 5), st.sampled_from(INERT), st.booleans())
 def test_inert_stretches_leave_the_request(scene: Scene, k: int, stretch: str, first: bool) -> None:
-    request, want = _request(scene, k)
+    request, want = plain_request(scene, k)
     text = f"{stretch}, {request}" if first else f"{request}, {stretch}"
     assert_means(text, want, scene)
 
@@ -458,7 +444,7 @@ def test_inert_stretches_leave_the_request(scene: Scene, k: int, stretch: str, f
 @pytest.mark.parametrize("stretch", NOT_INERT)
 @pytest.mark.parametrize("scene", [CELL, KITCHEN, WORKSHOP])
 def test_stretches_that_could_mean_something_are_not_taken_off(stretch: str, scene: Scene) -> None:
-    request, _ = _request(scene, 1)
+    request, _ = plain_request(scene, 1)
     assert_refused(f"{request}, {stretch}", scene)
 
 

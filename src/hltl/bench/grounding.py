@@ -60,7 +60,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # blind12's misses, written BEFORE the changes for them; measured once, then tuned on), blind13
 # (written in session 14 by another engineer and committed alone, reviewed by a second engineer,
 # never opened by the engineer who changed the grounder before its one measurement at the end of
-# session 14; tests do not assert it).
+# session 14; tuned on in session 15), causes15 (session 15: fresh variants of each cause of
+# blind13's refusals, written BEFORE the changes for them; measured once, then tuned on).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -86,6 +87,7 @@ PARTS = (
     "blind12",
     "causes14",
     "blind13",
+    "causes15",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -3169,6 +3169,774 @@ def _possessed14(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- remarks read by kind: a clause that is provably inert ----------------------------------------
+#
+# One rule, not a list per frame: a clause between punctuation that says something about the
+# speaker, the hearer or the moment ("I know it's hectic", "I've been waiting here ten minutes",
+# "hope you're having a great day", "force of habit", "Have a great day") is taken off when it
+# opens with the speaker or the hearer (I, we, you, 'hope', 'have a'), names nothing in the scene
+# (nor by a typo), and no word of it could name, count, choose, negate, order, delay, condition,
+# correct, point back at a task or a person, describe, or make the speaker a recipient
+# (_REMARK_HELD, the grammar's verbs of giving, placing and wanting, the scene's adjectives).
+# Light verbs ('have', 'got', 'going'), words the word list lacks ('hectic') and the speaker's
+# own possessions ('my break') are allowed: a clause about the speaker or the hearer with no name,
+# no pointing word and no verb of giving or wanting cannot pick out anything in the scene. The
+# request must be left: a text that is all remark is not rewritten.
+
+_REMARK_HELD = re.compile(
+    r"\b(?:no|not|never|nobody|none|nothing|nor|neither|without|except|but|rather|instead|only|"
+    r"all|every|each|both|any|some|either|or|whichever|whatever|whoever|one|ones|two|three|"
+    r"four|five|six|first|last|then|next|finally|before|after|once|when|until|till|if|unless|"
+    r"later|tonight|tomorrow|soon|wait|hang|hold|actually|sorry|oops|mean|meant|mistake|scratch|"
+    r"forget|cancel|stop|swap|switch|reverse|other|another|else|rest|it|them|they|their|theirs|"
+    r"he|him|his|she|her|hers|this|that|these|those|me|us|mine|ours|myself|to|for|into|onto|"
+    r"from|under|off|out|near|nearest|closest|give|hand|pass|bring|take|put|place|keep|leave|"
+    r"move|send|want|need|like|love|fancy|prefer|after|same|too|also|again|instead|what|which|"
+    r"who|whom|whose|where|why|more|less|most|least|same|both|pair|couple|thing|things|item|"
+    r"items|object|objects|stuff|everything|anything|something|yes|yeah|okay|ok|done|n't)\b"
+    r"|n't\b|\d",
+    _F,
+)
+# the words that open a clause about the speaker, the hearer or the moment
+_REMARK_SUBJECT = re.compile(
+    r"^(?:(?:oh|ah|well|so|and|just|really)\s+)*(?:i|i'm|i've|i'd|im|ive|we|we're|we've|you|"
+    r"you're|you've|your|hope|hoping|have a|force of|old|chef|kitchen|workshop)\b",
+    _F,
+)
+# light verbs: without a name or a pointing word they cannot pick out anything in the scene
+_LIGHT_VERBS = frozenset(
+    {"have", "has", "had", "having", "got", "gotten", "go", "goes", "going", "gone", "went"}
+)
+
+
+def _remark_clause(chunk: str, lexicon: Lexicon) -> bool:
+    """Whether ``chunk`` is a clause about the speaker, the hearer or the moment that can change
+    nothing of who gets what (see above)."""
+    said = chunk.strip().lower()
+    if not said or not _REMARK_SUBJECT.match(said):
+        return False
+    said = re.sub(r"\b(?:good|great|nice|lovely) one\b", "", said)
+    # "I know it's hectic": a dummy 'it' before the last word or two; "for ages": how long
+    said = re.sub(r"\bit(?:'s| is) (?=(?:so |really |very |a bit |bit )?[a-z]+$)", "", said)
+    said = re.sub(r"\bfor (?:ages|a while|a bit|hours|(?:[a-z]+ )?minutes)$", "", said)
+    if _REMARK_HELD.search(said):
+        return False
+    words = re.findall(r"[a-z']+", said)
+    plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
+    adjectives = {w for ws in _adjectives(lexicon).values() for w in ws}
+    for w in plain:
+        if w in adjectives or (w in VERBS and w not in _LIGHT_VERBS):
+            return False
+    return _names_nothing(chunk, lexicon)
+
+
+def _call(chunk: str, lexicon: Lexicon) -> bool:
+    """Whether ``chunk`` is a call of one to three common words that names nothing and holds
+    no word of _REMARK_HELD ("Behind", "Hot behind", "Mind your backs")."""
+    words = re.findall(r"[a-z']+", chunk.lower())
+    return (
+        0 < len(words) <= 3
+        and not _REMARK_HELD.search(chunk)
+        and all(w in _COMMON and w not in VERBS for w in words)
+        and not any(w in ws for ws in _adjectives(lexicon).values() for w in words)
+        and _names_nothing(chunk, lexicon)
+    )
+
+
+def _remarks15(text: str, lexicon: Lexicon) -> str:
+    """Every clause of ``text`` that _remark_clause finds inert taken off, with the 'but' / 'so'
+    that joins it to the request ("Sorry sorry, I know it's hectic, but could …"), and an
+    apology that then stands alone ("Hot behind! Sorry, force of habit."); the text as it is when
+    nothing else would be left."""
+    parts = re.split(r"(\s*(?:[,;:!?—–]|\.(?=\s|$)|\.\.\.|\s-\s)\s*)", text.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    if len(chunks) < 2:
+        return text
+    drop = [_remark_clause(c, lexicon) for c in chunks]
+    # "Behind!", "Mind your backs!": a call of a few words opening the text, naming nothing
+    if seps[0].strip() == "!" and _call(chunks[0], lexicon):
+        drop[0] = True
+    # "Sorry, force of habit.": the apology for a remark goes with it
+    for k, c in enumerate(chunks):
+        near = (k and drop[k - 1]) or (k + 1 < len(chunks) and drop[k + 1])
+        if near and re.fullmatch(r"(?:oh |so )?sorry(?: sorry)?", c.strip(), _F):
+            drop[k] = True
+    if not any(drop) or all(drop):
+        return text
+    out: list[str] = []
+    for k, c in enumerate(chunks):
+        if drop[k]:
+            if out and k + 1 < len(chunks) and not drop[k + 1]:
+                # the stop after a remark ends a sentence the request may follow
+                sep = seps[k] if k < len(seps) else ""
+                if sep.strip() in (".", "!", "?", "...") and out[-1].strip() in (",", ";", ":"):
+                    out[-1] = ". "
+            continue
+        if k and drop[k - 1]:
+            c = re.sub(r"^(?:but|so|and)\b,?\s*", "", c, flags=_F)
+        out.append(c)
+        if k < len(seps):
+            out.append(seps[k])
+    said = "".join(out).strip(" ,;:—–-")
+    if not _names(said, lexicon):
+        return text
+    return said
+
+
+# -- the speaker, not a recipient: leaving, finishing, signing off ---------------------------------
+#
+# Said of the speaker, none of these asks anything for them: 'before I go' is now, 'from me' and
+# 'that's us done' close the request.
+_SPEAKER_SIGN_OFFS = (
+    (r"\s*,?\s*\bbefore (?:i|we) (?:go|leave|head off|head home|clock off|finish)\b", ""),
+    (r"\b(that's|that is) (everything|all|it) from (?:me|us)\b", r"\1 \2"),
+    (r"\b(and )?that's us (?:done|finished|sorted)\b", r"\1that's it"),
+)
+
+
+def _sign_offs(text: str, lexicon: Lexicon) -> str:
+    for pattern, repl in _SPEAKER_SIGN_OFFS:
+        text = _drop(pattern, text, lexicon, repl)
+    return " ".join(text.split())
+
+
+# -- corrections said in other words: each is 'no,' -----------------------------------------------
+#
+# A marker that takes back what was just said, in the words people use: what follows it is the
+# correction, read by the grammar's own 'no, …' (which refuses a correction it cannot place).
+_TAKE_BACKS = (
+    r",?\s*(?:\b(?:wait|hang on|hold on|um|er|hmm|oh),?\s*)*what am i (?:saying|on about|thinking)"
+    r"\s*[,!?]\s*",
+    r",?\s*(?:\b(?:um|er|hmm|oh|wait),?\s*)*(?:\bno,?\s*)?\bi tell a lie\s*,\s*",
+    r",?\s*(?:\b(?:um|er|hmm|oh|wait),?\s*)*\bscratch that\s*,\s*",
+    r",\s*or,\s*no\s*,\s*",
+)
+_SILLY = (
+    r"(?<=[.!])\s*(?:wait|hang on|hold on|oh|no)\s*,?\s*that's (?:silly|daft|wrong|not right|"
+    r"stupid|no good|mad)\s*,\s*"
+)
+
+
+def _take_backs(text: str, lexicon: Lexicon) -> str:
+    for pattern in _TAKE_BACKS:
+        text = _sub(pattern, ", no, ", text)
+    text = _sub(_SILLY, " No, ", text)
+    # "…, no, she wants the wipes": the want of the one named before
+    text = _sub(
+        r"(,\s*no,\s*)(?:he|she|they) (?:wants?|needs?|would like|'d like|'s after) (?=the )",
+        r"\1",
+        text,
+    )
+    text = _repeated_destination(text, lexicon)
+    # "Let me think... the bowl to Omar": the speaker thinking aloud first
+    text = _sub(r"^(?:hmm,?\s*|um,?\s*)?let me (?:think|see)\s*(?:\.\.\.|…|,|\.)\s*", "", text)
+    # "or was it Zoe... yes, Zoe": the one said last stands
+    text = _sub(
+        r",?\s*or was it ([^.,;!?]+?)\s*(?:\.\.\.|…)\s*(?:yes|yeah|yep|no|nope),?\s+([^.,;!?]+)$",
+        lambda m: f", no, {m.group(2)}" if _only_person(m.group(2), lexicon) else m.group(0),
+        text,
+    )
+    return " ".join(text.split())
+
+
+def _repeated_destination(text: str, lexicon: Lexicon) -> str:
+    """'Salt to Marco, no, lemon to Marco': the correction names the same person or place again;
+    the grammar's 'no, <object>' keeps them."""
+    m = re.search(
+        r"\b(to|on|in|onto|into) ([^,.;!?]+?),\s*no,\s*((?:the )?[a-z ]+?) (to|on|in|onto|into) "
+        r"([^,.;!?]+?)\s*([.!]?)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    there, again = _ids(m.group(2), lexicon), _ids(m.group(5), lexicon)
+    if not there or there != again or not _ids(m.group(3), lexicon, "object"):
+        return text
+    return f"{text[: m.start(3)]}{m.group(3)}{m.group(6)}"
+
+
+def _only_person(words: str, lexicon: Lexicon) -> bool:
+    return len(_ids(words, lexicon)) == 1 and _only(words, lexicon, "human")
+
+
+def _said_why(text: str, lexicon: Lexicon) -> str:
+    """After a correction, the reason for it restated: "…, no, on the trolley, that's nearer",
+    "…, no, Marco, it's Marco who wanted it", "…, sorry, red mug, she always has the red one",
+    "Hmm, actually, no, Sam needs it more." (the person the object goes to, said as a need). The
+    reason is taken off only when it names what the correction names (else it is left, and
+    refused)."""
+    m = re.search(r"^.*\b(?:no|sorry|actually),\s+(.+)$", text, _F)
+    if m is None:
+        return text
+    tail = m.group(1)
+    parts = re.split(r",\s*", tail)
+    if len(parts) < 2:
+        # "…. Hmm, actually, no, Sam needs it more.": the object goes to Sam after all
+        n = re.fullmatch(r"([^,]+?) (?:needs|wants) it more\s*([.!]?)", tail.strip(), _F)
+        if n is not None and _only_person(n.group(1), lexicon):
+            return text[: m.start(1)] + f"to {n.group(1)}{n.group(2)}"
+        return text
+    said, why = parts[0], ", ".join(parts[1:])
+    why_plain = why.strip().rstrip(".!")
+    if re.fullmatch(
+        r"(?:that's|that is|it's|it is|that one's) (?:nearer|closer|better|handier|easier|"
+        r"bigger|cleaner)(?: to (?:her|him|them))?",
+        why_plain,
+        _F,
+    ):
+        return text[: m.start(1)] + said + why[len(why.rstrip(".!")) :]
+    n = re.fullmatch(r"it's ([^,]+?) who (?:wanted|wants|asked for|needs|needed) it", why_plain, _F)
+    if (
+        n is not None
+        and _ids(n.group(1), lexicon) == _ids(said, lexicon)
+        and _only_person(said, lexicon)
+    ):
+        return text[: m.start(1)] + said
+    n = re.fullmatch(
+        r"(?:he|she|they) (?:always |usually )?(?:has|have|wants|likes|prefers|uses) the (\w+)"
+        r"(?: one)?",
+        why_plain,
+        _F,
+    )
+    if n is not None:
+        ids = _ids(said, lexicon, "object")
+        if len(ids) == 1 and re.search(rf"\b{re.escape(n.group(1))}\b", said, _F):
+            return text[: m.start(1)] + said
+    return text
+
+
+def _redone(text: str, lexicon: Lexicon) -> str:
+    """'…, and... no, leave the plate, put the tongs on the rack instead': the object left is the
+    one just said, and what follows replaces it; "…, oh, not the green, the white cup": the one
+    said after 'not the <word>' replaces the one that word named."""
+    m = re.search(
+        r"(?:,?\s*and)?\s*(?:\.\.\.|…)?\s*,?\s*\bno,\s*leave the ([a-z ]+?),\s*(.+?)\s+instead"
+        r"\s*([.!]?)$",
+        text,
+        _F,
+    )
+    if m is not None:
+        before = text[: m.start()]
+        left = _ids(m.group(1), lexicon, "object")
+        said_before = _names(before, lexicon)
+        objs = [it for it in said_before if all(r.kind == "object" for r in it.refs)]
+        if left and objs and {r.id for r in objs[-1].refs} <= left:
+            new = m.group(2)
+            n = re.match(
+                r"^(?:put|place|give|hand|pass|take|bring) (?:(him|her|them) )?(.+)$", new, _F
+            )
+            if n is not None:
+                if n.group(1) and one_person(before, lexicon) is None:
+                    return text
+                new = n.group(2)
+            return _repeated_destination(f"{before.rstrip(' ,.')}, no, {new}{m.group(3)}", lexicon)
+    m = re.search(r",\s*(?:oh,?\s*)?not the (\w+),\s*(?=the )", text, _F)
+    if m is not None:
+        before = text[: m.start()]
+        if re.search(rf"\bthe {re.escape(m.group(1))} \w+", before, _F):
+            return f"{before}, no, {text[m.end() :]}"
+    return text
+
+
+def _order_again(text: str, _lexicon: Lexicon) -> str:
+    """'Actually reverse that, apple first.', 'swap that round, bowl first': the order said again
+    is the one said after."""
+    return _sub(
+        r"\b((?:actually|no|sorry|wait),?\s*)(?:reverse that|swap that(?: round| around)?|the other"
+        r" way (?:round|around)|flip that)\s*,\s*(?=(?:the )?[a-z ]+ first\b)",
+        r"\1",
+        text,
+    )
+
+
+# -- counts said beside their list -----------------------------------------------------------------
+#
+# "Two things in the sink: the bowl and the spoon", "Lena's getting two things today, the lemon and
+# the knife", "Each of them gets two things: Mia the scanner and the tape, Tom …": a count of
+# things said before the list that names them is dropped when the list names exactly that many
+# (per person after 'each'); otherwise the text is left, and refused.
+
+_NUMBERS15 = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "both": 2}
+_THINGS = r"(?:things?|items?|bits?|objects?)"
+
+
+def _counted_things(text: str, lexicon: Lexicon) -> str:
+    s = text.strip()
+    # "Each person gets two things: Alice the cup, Bob the apple, Carol the chips"
+    m = re.match(
+        rf"^each (?:person|of them|one|of you)(?: gets?| will get| should get| needs?)? "
+        rf"(one|two|three|four|five|six) {_THINGS}\s*:\s*(.+)$",
+        s,
+        _F,
+    )
+    if m is not None:
+        n = _NUMBERS15[m.group(1).lower()]
+        shares = _shares(m.group(2), lexicon)
+        if shares and all(len(objs) == n for objs in shares.values()):
+            return m.group(2)
+        return text
+    # "Two things in the sink: the bowl and the spoon"
+    m = re.match(
+        rf"^(one|two|three|four|five|six) {_THINGS} ((?:in|on|onto|into|for|to) [^,:]+?)\s*[:,]\s*"
+        r"(.+?)\s*([.!]?)$",
+        s,
+        _F,
+    )
+    if m is not None:
+        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()]:
+            return f"{m.group(3)} {m.group(2)}{m.group(4)}"
+        return text
+    # "Lena's getting two things today, the lemon and the knife", "Sam wants two pens, the blue
+    # and the black", "Carol's taking the pair of them, the cup and the apple"
+    m = re.match(
+        r"^(.+?)(?:'s| is)? (getting|gets|wants|needs|taking|takes|would like|is having|'s having)"
+        r" (?:(one|two|three|four|five|six) ([a-z]+)|the pair of them|both of them)"
+        r"(?: (?:today|tonight|this week|now|here))?\s*[:,]\s*(.+?)\s*([.!]?)$",
+        s,
+        _F,
+    )
+    if m is not None and _only_person(m.group(1), lexicon):
+        n = _NUMBERS15[(m.group(3) or "two").lower()]
+        listed = m.group(5)
+        kind = m.group(4)
+        if kind and not re.fullmatch(_THINGS, kind, _F):
+            cat = _kind_of(kind, lexicon)
+            if cat is None:
+                return text
+            # "the blue and the black": each adjective names one of that kind
+            listed = re.sub(
+                r"\bthe (\w+)(?= and\b|,|$)", lambda x: f"the {x.group(1)} {cat}", listed
+            )
+            if not all(r == cat for r in _categories(listed, lexicon)):
+                return text
+        if len(_objects_listed(listed, lexicon)) == n:
+            verb = "wants" if m.group(2).lower() in ("wants", "needs", "would like") else "gets"
+            return f"{m.group(1)} {verb} {listed}{m.group(6)}"
+        return text
+    # "Both of the patients need a blanket: the blue one for Mr Lee and the grey one for …"
+    m = re.match(
+        r"^both (?:of )?(?:the )?([a-z]+)(?: here)? (?:need|want|get|should get) (?:a|an|one) "
+        r"([a-z]+)\s*:\s*(.+)$",
+        s,
+        _F,
+    )
+    if m is not None:
+        cat = _kind_of(m.group(2), lexicon)
+        listed = m.group(3)
+        if cat is not None:
+            listed = re.sub(r"\b(\w+) one\b", lambda x: f"{x.group(1)} {cat}", listed)
+            if (
+                len(_objects_listed(listed, lexicon)) == 2
+                and len(_ids(listed, lexicon, "human")) == 2
+            ):
+                return listed
+        return text
+    # "Person A gets all four things, every single one": the count said again
+    return _sub(r",\s*every (?:single )?one\b", "", text)
+
+
+def _shares(listed: str, lexicon: Lexicon) -> dict[str, list[str]]:
+    """The objects each person gets in 'Alice the cup, Bob the apple and the chips': person id →
+    object ids, in order; empty when the list is not of that shape."""
+    out: dict[str, list[str]] = {}
+    who: str | None = None
+    for it in _names(listed, lexicon):
+        kinds = {r.kind for r in it.refs}
+        ids = {r.id for r in it.refs}
+        if kinds == {"human"} and len(ids) == 1:
+            who = next(iter(ids))
+            if who in out:
+                return {}
+            out[who] = []
+        elif kinds == {"object"} and len(ids) == 1 and who is not None:
+            out[who].append(next(iter(ids)))
+        else:
+            return {}
+    return out
+
+
+def _objects_listed(listed: str, lexicon: Lexicon) -> list[str]:
+    out = []
+    for it in _names(listed, lexicon):
+        if all(r.kind != "object" for r in it.refs):
+            continue
+        ids = {r.id for r in it.refs if r.kind == "object"}
+        if len(ids) != 1 or len(ids) != len({r.id for r in it.refs}):
+            return []
+        out.append(next(iter(ids)))
+    return out
+
+
+def _categories(listed: str, lexicon: Lexicon) -> list[str]:
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    return [cats[i] for i in _objects_listed(listed, lexicon)]
+
+
+# -- choices said again in other words ------------------------------------------------------------
+#
+# Each of these says again that any one will do, after a request that already leaves the choice
+# (an 'a <kind>', 'one of the …', 'X or Y'); the rewrite keeps the request and the grammar reads
+# the choice.
+_ANY_WILL_DO = (
+    r"(?:(?:any|either) (?:one|of them|of those)(?: (?:will do|is fine|'s fine|is ok))?|"
+    r"not fussed which|(?:i )?don't mind which|doesn't matter which|(?:he|she|they) (?:doesn't|"
+    r"don't|does not|do not) mind|(?:he|she|they)(?:'s|'re| is| are) not fussy|(?:he|she|they) "
+    r"(?:isn't|aren't) fussy|whichever you reach first|whichever's (?:easier|handier|nearer|"
+    r"closer)(?: to (?:grab|reach|get))?)"
+)
+
+
+def _any_again(text: str, lexicon: Lexicon) -> str:
+    """'Can Priya have a pen? Any one, she doesn't mind', 'One of the pens in the box, not fussed
+    which', 'Person A, either the bottle or the chips, whichever you reach first': the choice said
+    again is taken off when a choice is already said before it."""
+    pattern = rf"(\s*[,.?!]\s*)(?:{_ANY_WILL_DO}(?:\s*,\s*)?)+\s*([.!]?)\s*$"
+    m = re.search(pattern, text, _F)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    if not re.search(r"\b(?:a|an|one of|any|either)\b|\bor\b", before, _F):
+        return text
+    if re.search(r"\b(?:the other|the rest)\b", before, _F):
+        return text
+    if m.group(1).strip() == "?":
+        return f"{before}?"
+    return f"{before}{m.group(2)}"
+
+
+def _either_of(text: str, lexicon: Lexicon) -> str:
+    """'Either of the students can have the globe, Noah or Zoe', 'Either of them can have the
+    lemon, Marco or Lena': the two named after (each must be one of the group named, if one is)
+    can have it; 'Either Alice or Carol, whoever's nearer, gets the apple': the choice is theirs."""
+    m = re.match(
+        r"^either of (?:the ([a-z]+)|them|the two|you two)( can have| could have| gets?| can get"
+        r"| should get| may have)( .+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is not None:
+        a, b = m.group(4), m.group(5)
+        if not (_only_person(a, lexicon) and _only_person(b, lexicon)):
+            return text
+        if m.group(1):
+            group = _ids(m.group(1), lexicon, "human") or _ids(
+                re.sub(r"s$", "", m.group(1)), lexicon, "human"
+            )
+            if not (_ids(a, lexicon) | _ids(b, lexicon)) <= group:
+                return text
+        return f"{a} or {b}{m.group(2)}{m.group(3)}{m.group(6)}"
+    text = _sub(
+        r"^(either )?([^,]+?) or ([^,]+?),\s*whoever(?:'s| is) (?:nearer|closer|nearest|closest|"
+        r"free|handier|quicker),\s*",
+        lambda n: (
+            f"{n.group(2)} or {n.group(3)} "
+            if _only_person(n.group(2), lexicon) and _only_person(n.group(3), lexicon)
+            else n.group(0)
+        ),
+        text,
+    )
+    # "Each of the students gets a book": each one of that group
+    return _sub(
+        r"^each of the ([a-z]+)s (gets?|needs?|wants?|should get|can have) (a|an|one) ",
+        lambda n: (
+            f"each {n.group(1)} {n.group(2)} {n.group(3)} "
+            if len(_ids(n.group(1), lexicon, "human")) >= 2
+            else n.group(0)
+        ),
+        text,
+    )
+
+
+def _either_fine(text: str, lexicon: Lexicon) -> str:
+    """ "…, either's fine" is "either is fine"; "Person B, either the apple or the cup" is "Person
+    B, the apple or the cup"."""
+    text = _sub(
+        r"^([^,]+?),\s*either (?=the )",
+        lambda m: f"{m.group(1)}, " if _only_person(m.group(1), lexicon) else m.group(0),
+        text,
+    )
+    return _sub(r",\s*either's (fine|ok|okay|good)\b", r", either is \1", text)
+
+
+# -- exclusions said first -------------------------------------------------------------------------
+
+
+def _not_first(text: str, lexicon: Lexicon) -> str:
+    """'No, not Lena, the knife's for Marco': the person left out first is not the one the request
+    names; 'Not the ruler, he wants the glue, give Noah the glue stick': the object left out is
+    not one the request names, and a want said before the request for the same object is the
+    request said twice; 'Not the pens, just the other bits, into the box': everything but them;
+    'Leave the blue pen, put the other two in the box': the others of its kind, as many as said."""
+    m = re.match(r"^(no,\s*)?not ([^,]+?),\s*(.+)$", text.strip(), _F)
+    if m is not None:
+        left, rest = m.group(2), m.group(3)
+        n = re.match(r"^just the other (?:bits|things|stuff|items|ones),?\s*(.+)$", rest, _F)
+        if n is not None and _ids(left, lexicon, "object"):
+            return f"everything except {left} {n.group(1)}"
+        said = _ids(left, lexicon)
+        if not said or said & _ids(rest, lexicon):
+            return text
+        # a person left out is read only after 'No,' ("No, not Lena, the knife's for Marco":
+        # the speaker answering who it is for); "Not Bob, give Alice the cup" is not read
+        if not (
+            (m.group(1) and _only_person(left, lexicon)) or _ids(left, lexicon, "object") == said
+        ):
+            return text
+        rest = _sub(
+            r"^(?:he|she|they) (?:wants?|needs?) (?:the|his|her|their) ([a-z ]+?),\s*(?=(?:give|"
+            r"hand|pass|bring) )",
+            lambda x: (
+                ""
+                if _ids(x.group(1), lexicon) <= _ids(x.string[x.end() :], lexicon)
+                else x.group(0)
+            ),
+            rest,
+        )
+        return rest
+    m = re.match(
+        r"^leave the ([a-z ]+?),\s*(put|give|hand|pass) (.*?)the other (one|two|three|four)\b(.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is not None:
+        left = _ids(m.group(1), lexicon, "object")
+        if len(left) != 1:
+            return text
+        cats = {o.id: o.category for o in lexicon.scene.objects}
+        cat = cats[next(iter(left))]
+        others = [o.id for o in lexicon.scene.objects if o.category == cat and o.id not in left]
+        if len(others) != _NUMBERS15[m.group(4).lower()]:
+            return text
+        named = " and ".join(f"the {_said(i, lexicon)}" for i in others)
+        return f"{m.group(2)} {m.group(3)}{named}{m.group(5)}"
+    return text
+
+
+# -- what a want is for, and wants said in other words -------------------------------------------
+_FOR_WHAT = (
+    # "a bit of salt with his dinner", "the jug with his lunch": what it goes with (naming nothing)
+    (r"\s+with (?:his|her|their|my|your) [a-z]+(?= *(?:[.,;!?]|$))", ""),
+    # "for these reports", "for his project", "for the next sample"
+    (
+        r"(?<!\bits)(?<!\bit's)(?<!\bis)\s+for (?:these|this|those|his|her|their|the next|the new|"
+        r"my|our) [a-z]+(?: [a-z]+)?"
+        r"(?= *(?:[.,;!?]|$))",
+        "",
+    ),
+    # "Omar says he needs", "Dana said she wants"
+    (r"\b(?:says|said|reckons|tells me) (?:he|she|they) (needs|wants|would like)\b", r"\1"),
+    # "… been wanting the drill for ages / all morning"
+    (r"(?:'s| has| have) been wanting\b", " wants"),
+    (r"\s+(?:for ages|all (?:morning|day|afternoon|week)|for a while|since this morning)\b", ""),
+    # "a bit of salt": the salt
+    (r"\b(?:a bit|a drop|a little|a spot) of (?:the )?", "the "),
+)
+
+
+def _wanted_for(text: str, lexicon: Lexicon) -> str:
+    if not re.search(r"\b(?:wants?|needs?|would like|wanting|says|said|after)\b", text, _F):
+        return text
+    for pattern, repl in _FOR_WHAT:
+        text = _drop(pattern, text, lexicon, repl)
+    # "Mrs Khan's after something to read, the magazine": the thing said after
+    text = _sub(
+        r"^([^,]+?)(?:'s| is) after something (?:to [a-z]+(?: with)?|for [a-z ]+?),\s*(?=the )",
+        lambda m: f"{m.group(1)} wants " if _only_person(m.group(1), lexicon) else m.group(0),
+        text,
+    )
+    # "Sam needs a pen, he hasn't got one": why, said after
+    text = _sub(
+        r"\b(a|an) ([a-z]+),\s*(?:he|she|they) (?:hasn't got|haven't got|doesn't have|don't "
+        r"have|has no|have no|hasn't any|needs|wants) (?:one|any)\b",
+        r"\1 \2",
+        text,
+    )
+    return " ".join(text.split())
+
+
+# -- remarks that carry the reason, about the one the request is for ------------------------------
+_STATE = (
+    r"(?:(?:'s|is|has|'s got|has got) (?:finishing|starting|ending|off on|going on|on) (?:her|his"
+    r"|their) (?:shift|break|lunch|rounds|round)|(?:'s|is) (?:off home|leaving|going home|off)|"
+    r"(?:'s|has) got (?:his|her|their) hands full|has (?:his|her|their) hands full|(?:'s|is) "
+    r"busy|(?:'s|is) back)"
+)
+
+
+def _why_said_first(text: str, lexicon: Lexicon) -> str:
+    """'Lena's finishing her shift, take the knife and hand it to her', 'Kofi's got his hands full,
+    put the drill on the bench for him': a remark about the state of the one person the request
+    is for, naming nothing else, is taken off (its he/she is theirs); 'Zoe dropped her book, the
+    green one, pick it up and give it back to her' / 'Marco hasn't had his knife, take it over':
+    the object the remark names is what 'it' is, and the person is who gets it."""
+    m = re.match(rf"^([^,]+?)\s*{_STATE}\s*,\s*(.+)$", text.strip(), _F)
+    if m is not None and _only_person(m.group(1), lexicon):
+        who, rest = m.group(1), m.group(2)
+        rest = re.sub(r"\s+for (?:him|her|them)\b", "", rest, flags=_F)
+        rest = re.sub(
+            r"\b(give|hand|pass|bring|take) it (?:back )?to (?:him|her|them)\b",
+            lambda x: f"{x.group(1)} it to {who}",
+            rest,
+            flags=_F,
+        )
+        rest = re.sub(
+            r"\b(give|hand|pass|bring|take) (?:him|her|them)\b",
+            lambda x: f"{x.group(1)} {who}",
+            rest,
+            flags=_F,
+        )
+        return rest
+    m = re.match(
+        r"^([^,]+?) (?:dropped|lost|has lost|'s lost|hasn't had|has not had|hasn't got|forgot|"
+        r"left|misplaced) (?:his|her|their) ([a-z ]+?)(?: again| yet)?(?:,\s*the ([a-z]+) one)?,\s*"
+        r"(?:(?:pick|grab|get) it(?: up)? and )?(?:give|hand|pass|bring|take) it (?:back )?(?:over"
+        r"|to (?:him|her|them))\s*(.*)$",
+        text.strip(),
+        _F,
+    )
+    if m is not None and _only_person(m.group(1), lexicon):
+        thing = f"the {m.group(3)} {m.group(2)}" if m.group(3) else f"the {m.group(2)}"
+        ids = _ids(thing, lexicon, "object")
+        if len(ids) != 1 or not _ids(m.group(2), lexicon):
+            return text
+        return f"give {m.group(1)} {thing}{(' ' + m.group(4)) if m.group(4) else ''}"
+    return text
+
+
+def _them_over(text: str, lexicon: Lexicon) -> str:
+    """'Priya wants the stapler and the notepad; hand them over': to the one person who wants
+    them."""
+    m = re.search(
+        r"[;.,]\s*(hand|pass|bring|take) (them|it) over\s*(,\s*please)?\s*([.!]?)$", text, _F
+    )
+    if m is None:
+        return text
+    before = text[: m.start()]
+    who = one_person(before, lexicon)
+    if who is None or not re.search(r"\b(?:wants?|needs?|would like)\b", before, _F):
+        return text
+    return f"{before}; give {m.group(2)} to {who}{m.group(4)}"
+
+
+def _likewise(text: str, lexicon: Lexicon) -> str:
+    """'Grey blanket on the locker, magazine likewise', '…, and the notepad, same thing': the
+    object said is done the same way ('too')."""
+    text = _sub(
+        r"(,\s*(?:and )?(?:the )?[a-z ]+?)\s*,?\s*(?:likewise|same thing|same again|the same)\s*"
+        r"([.!]?)$",
+        lambda m: (
+            f"{m.group(1)} too{m.group(2)}" if _ids(m.group(1), lexicon, "object") else m.group(0)
+        ),
+        text,
+    )
+    return text
+
+
+# -- run-ons and dictation ------------------------------------------------------------------------
+_LEADS = (
+    # "Order's up so …", "Truck's here so …": a remark naming nothing, then 'so'
+    r"^[a-z]+(?:'s| is) (?:up|in|here|ready|done|out|back|on)\s*,?\s*so\b\s*",
+    # "Right lads listen up …", "Ok team, listen up, …"
+    r"^(?:(?:right|ok|okay|oi|now)\s*,?\s*)?(?:(?:lads|team|everyone|folks|guys|all|people)\s*,?\s*)?"
+    r"listen up\s*[,!.]?\s*",
+)
+
+
+def _run_on_leads(text: str, lexicon: Lexicon) -> str:
+    for pattern in _LEADS:
+        text = _drop(pattern, text, lexicon)
+    return text
+
+
+def _dictated(text: str, lexicon: Lexicon) -> str:
+    """'apple on the table cup to alice done': a list dictated without stops; a stop goes after
+    each place or recipient that another object follows, and the closing 'done' goes. Each part
+    must then name one object and one place or recipient ('apple on the table cup done' is
+    left, and refused)."""
+    m = re.search(r"\s+done\s*[.!]?$", text, _F)
+    if m is None or re.search(r"[,.;:!?]", text[: m.start()]):
+        return text
+    words = text[: m.start()].split()
+    parts: list[list[str]] = [[]]
+    for k, w in enumerate(words):
+        head = " ".join(parts[-1])
+        named = _names(head, lexicon) if head else []
+        if (
+            named
+            and any(r.kind in ("human", "surface") for r in named[-1].refs)
+            and _names(" ".join(words[k : k + 2]), lexicon)
+            and all(r.kind == "object" for r in _names(" ".join(words[k : k + 2]), lexicon)[0].refs)
+            and head.lower().endswith(named[-1].text.lower())
+        ):
+            parts.append([])
+        parts[-1].append(w)
+    if len(parts) < 2:
+        return text
+    for part in parts:
+        kinds = [{r.kind for r in it.refs} for it in _names(" ".join(part), lexicon)]
+        if kinds[:1] != [{"object"}] or len(kinds) != 2 or kinds[1] == {"object"}:
+            return text
+    return ", ".join(" ".join(p) for p in parts)
+
+
+def _after_those(text: str, lexicon: Lexicon) -> str:
+    """'… And the cup to Carol, after those two.': after every task said before, when there are
+    that many."""
+    m = re.search(
+        r"\.\s*(?:and |then )?([^.]+?),\s*after (?:those|these|the) (two|three|four)\s*([.!]?)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    before = text[: m.start() + 1]
+    objs = [it for it in _names(before, lexicon) if all(r.kind == "object" for r in it.refs)]
+    if len(objs) != _NUMBERS15[m.group(2).lower()]:
+        return text
+    return f"{before} Then {m.group(1)}{m.group(3)}"
+
+
+def _can_wait(text: str, lexicon: Lexicon) -> str:
+    """'Priya wants the stapler and Sam wants the notepad but he can wait so do that last': the
+    want of the one who can wait comes after the other."""
+    m = re.match(
+        r"^(.+?) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
+        r"(?:that|his|hers|theirs|it|them) last\s*([.!]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is None or not _only_person(m.group(2), lexicon):
+        return text
+    if not _fits(next(iter(_ids(m.group(2), lexicon))), m.group(0), lexicon):
+        return text
+    return f"{m.group(1)}, then {m.group(2)} {m.group(3)} {m.group(4)}{m.group(5)}"
+
+
+# -- questions that end in a request -------------------------------------------------------------
+def _asked_then_told(text: str, lexicon: Lexicon) -> str:
+    """'How long would it take to get the bowl to Omar? Just do it, please.': the task asked
+    about, then 'do it', is the request; 'Is there a book for Zoe? Either one will do.': any one;
+    "Won't you pass Lena the knife?": a request."""
+    text = _sub(
+        r"^how long (?:does|would|will|might) it take to (.+?)\?\s*(?:just |please )?do it"
+        r"(?:,? please)?\s*[.!]?$",
+        r"\1.",
+        text,
+    )
+    text = _sub(
+        r"^is there (a|an|any) ([a-z ]+?) for ([^?]+?)\?\s*(?:either|any) (?:one|of them)"
+        r" (?:will do|is fine|'s fine|is ok)\s*[.!]?$",
+        lambda m: (
+            f"{m.group(1)} {m.group(2)} for {m.group(3)}."
+            if _only_person(m.group(3), lexicon)
+            else m.group(0)
+        ),
+        text,
+    )
+    return _sub(r"^won't you\b", "will you", text)
+
+
 # -- the last step: stretches that are provably inert ----------------------------------------------
 #
 # A stretch between punctuation is taken off only when every word of it is a common English word
@@ -3300,6 +4068,26 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
 
 
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _asked_then_told,
+    _run_on_leads,
+    _sign_offs,
+    _take_backs,
+    _order_again,
+    _redone,
+    _said_why,
+    _remarks15,
+    _either_of,
+    _either_fine,
+    _any_again,
+    _not_first,
+    _counted_things,
+    _wanted_for,
+    _why_said_first,
+    _them_over,
+    _likewise,
+    _dictated,
+    _after_those,
+    _can_wait,
     _said14,
     _spoken,
     _me_again,

@@ -115,6 +115,8 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
     """Refuse the sentence ``items[start:end]`` when the clause at ``k`` opens as a question."""
     if k != start and not _is(items[k], "and"):
         return  # after a comma only ", but …" / ", and …" opens a clause of its own
+    # "Bob and Carol have …?": an 'and' inside a list of names opens no clause
+    opens_clause = k == start or _is(items[k - 1], ",")
     while k < end and (
         _is(items[k], ",", "filler", "correct", "and") or items[k].text.lower() in _HEARER_WORDS
     ):
@@ -127,6 +129,7 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
         offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
         asks = (
             offers
+            or (mark and opens_clause and _said_as_a_question(items, k, end))
             or _is(first, "wh")
             or (
                 first.kind == "word"
@@ -141,6 +144,35 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
                 f"{words!r} is a question, not a request: say what to do, e.g. "
                 "'give Bob the chips' or 'put the cup on the shelf'"
             )
+
+
+# a person may ask for something in a statement said as a question ("Grandad can have the
+# wipes?"): with these, the clause is a request, as "Can Grandad have the wipes?" is
+_PERMISSIONS = frozenset({"can", "could", "may", "might"})
+
+
+def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
+    """'The cup is for Bob?', 'Bob wants the cup?': a statement with a question mark (someone,
+    or something, then its verb, in the clause the mark ends) asks whether it is so; it is not
+    a request, unless its verb asks leave ('Grandad can have the wipes?')."""
+    if any(_is(x, ",") for x in items[k:end]):
+        return False  # "Carol's thirsty, can you …?": the mark ends a later clause
+    n = _past_dets(items, k)
+    if n + 1 >= end:
+        return False
+    subject = items[n]
+    if not (subject.kind == "ent" or subject.lemma == "pronoun" or _is(subject, "it")):
+        return False
+    verb = items[n + 1]
+    said = verb.text.lower().split()
+    return (
+        verb.kind == "word"
+        and (_is_verb_item(verb) or _is(verb, "aux") or said[0] in _IS_WORDS)
+        and said[0] not in _PERMISSIONS
+    )
+
+
+_IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't"})
 
 
 def _is_after(items: list[Item]) -> list[Item]:
@@ -1963,6 +1995,14 @@ def _exclusions(items: list[Item]) -> list[Item]:
                 f"{out[target].text!r} does not name: say what to leave out of what"
             )
         kept = tuple(r for r in out[target].refs if r.id not in ids)
+        described = next((x for x in out[target + 1 :] if _is(x, *_MEASURES)), None)
+        if described is not None and len(kept) < len(out[target].refs):
+            # "the mug closest to her, not the blue mug": the description picks one mug before
+            # the exclusion is heard; leaving one out of the mugs first could pick the other
+            raise GroundingError(
+                f"{_words_of(items[k:j])!r} after '{out[target].text} {described.text} …': "
+                "the description picks one already; name the one meant"
+            )
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
         out[target] = replace(out[target], refs=kept)
@@ -1970,6 +2010,8 @@ def _exclusions(items: list[Item]) -> list[Item]:
     return out
 
 
+# descriptions that pick among the objects a name names, measured in the scene (_places)
+_MEASURES = ("nearest", "near", "farthest")
 _CLAUSE_OPENERS = frozenset({*_END, "then", "prior", "once", "after", "before"})
 
 
