@@ -10,10 +10,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from hltl.bench.cells import delivery_cell
 from hltl.planner import plan
 from hltl.planner.heuristic import _one_machine_bound
-from hltl.planner.problem import Problem, to_seconds
-from hltl.planner.search import _Search
+from hltl.planner.pairs import PairBound, pair_value
+from hltl.planner.problem import Problem, to_seconds, to_ticks
+from hltl.planner.search import _Search, search
 from hltl.sim.scenarios import generate
 from hltl.spec.hierarchy import spec_from_dict
 from hltl.world.scene import scene_from_dict
@@ -163,3 +165,19 @@ def test_conjunction_critical_path_equals_the_general_one(layout: str, seed: int
     assert checked > 100
     ordered = generate(3, 3, "line", 0, ordered=True)
     assert _Search(Problem(ordered.scene, ordered.spec)).heuristic._conj is None
+
+
+@pytest.mark.parametrize("layout", ["line", "grid", "random"])
+@pytest.mark.parametrize("seed", range(3))
+def test_a_pair_table_of_a_two_delivery_cell_is_its_optimum(layout: str, seed: int) -> None:
+    # with only two objects the pair's subproblem is the whole problem: the table at the start
+    # is A*'s optimum (a table too weak, e.g. one that drops a flag combination, is caught)
+    c = delivery_cell(layout, 2, seed)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    start = problem.start()
+    atoms = sorted(s.heuristic.required_atoms(start[2]))
+    lks = PairBound(problem, s.heuristic.graph).lookups(atoms)
+    expected = search(Problem(c.scene, c.spec), algorithm="dijkstra", timeout=60)
+    assert len(lks) == 1 and expected.makespan is not None
+    assert pair_value(lks[0], start[0]) == to_ticks(expected.makespan)

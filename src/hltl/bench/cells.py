@@ -202,6 +202,13 @@ def _group_parts(parts: Sequence[str]) -> dict[str, str]:
     return formulas
 
 
+def _cpu_with_children() -> float:
+    """This process's CPU time and its ended children's (exact mode's A* process, user +
+    system): what a plan costs on a shared machine."""
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + kids.ru_utime + kids.ru_stime
+
+
 def run_cells(
     cells: Sequence[Cell],
     *,
@@ -223,9 +230,9 @@ def run_cells(
         long: list[float] = []
         for c in group:
             if exact_timeout is not None:
-                cpu0 = time.process_time()
+                cpu0 = _cpu_with_children()
                 res = plan(c.scene, c.spec, timeout=exact_timeout)
-                exact_cpu.append(time.process_time() - cpu0)
+                exact_cpu.append(_cpu_with_children() - cpu0)
                 exact.append(res.stats.seconds)
                 solved += res.status is PlanStatus.SOLVED
                 if on_cell is not None:

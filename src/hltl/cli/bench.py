@@ -523,8 +523,8 @@ def run_planner_cells(args: argparse.Namespace) -> int:
         date = datetime.date.today().isoformat()
         body = (
             f"Command: `{command}`  \nDate: {date}. Machine: {machine()} (shared with other "
-            "jobs). Exact: `planner.seconds` (wall) and the process's CPU time, medians over "
-            "seeds, search stopped at --timeout (wall). "
+            "jobs). Exact: `planner.seconds` (wall) and the CPU time of the process and of "
+            "its A* process, medians over seeds, search stopped at --timeout (wall). "
             "Gap: (makespan − proven lower bound) / makespan, median over seeds.\n\n"
             + table
             + "\n\n"

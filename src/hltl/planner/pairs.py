@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import heapq
 import math
+from typing import Any
 
-from hltl.planner.problem import Instance, Problem
+from hltl.planner.problem import Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.syntax import Atom
 
 INF = math.inf
 
-# a subproblem state: (place of object 1, place of object 2, atom 1 done, atom 2 done)
-_State = tuple[int, int, bool, bool]
 # (object 1, object 2, number of places n, value at index place1 * n + place2)
 Lookup = tuple[int, int, int, list[float]]
 
@@ -29,8 +28,7 @@ class PairBound:
     def __init__(self, problem: Problem, graph: RelaxedGraph) -> None:
         self.p = problem
         self.graph = graph
-        self._tables: dict[tuple[Atom, Atom], dict[_State, float] | None] = {}
-        self._flat: dict[tuple[Atom, Atom], Lookup] = {}
+        self._flat: dict[tuple[Atom, Atom], Lookup | None] = {}
 
     def lookups(self, atoms: list[Atom]) -> list[Lookup]:
         """For every pair of the atoms on different objects: what :func:`pair_value` needs."""
@@ -38,32 +36,21 @@ class PairBound:
         for i, a in enumerate(atoms):
             for b in atoms[i + 1 :]:
                 key = (a, b) if a <= b else (b, a)
-                table = self._tables.get(key, False)
-                if table is False:
-                    table = self._solve(*key)
-                    self._tables[key] = table
-                if table is None:
-                    continue
-                assert isinstance(table, dict)
-                lk = self._flat.get(key)
-                if lk is None:
-                    lk = self._flatten(key, table)
-                    self._flat[key] = lk
-                out.append(lk)
+                if key in self._flat:
+                    lk = self._flat[key]
+                else:
+                    lk = self._flat[key] = self._solve(*key)
+                if lk is not None:
+                    out.append(lk)
         return out
 
-    def _flatten(self, key: tuple[Atom, Atom], table: dict[_State, float]) -> Lookup:
-        """The table read as it is used: one value per (place 1, place 2), the "has happened"
-        flags set as the search sees them (a state atom that already holds is met by the next
-        step, whatever it is; an event atom still needed has not happened)."""
-        g1, g2 = self.graph.goal(key[0]), self.graph.goal(key[1])
-        assert g1 is not None and g2 is not None
-        (o1, t1), (o2, t2) = g1, g2
-        n = len(self.p.locs)
-        flat = [table.get((l1, l2, l1 == t1, l2 == t2), INF) for l1 in range(n) for l2 in range(n)]
-        return (o1, o2, n, flat)
-
-    def _solve(self, a1: Atom, a2: Atom) -> dict[_State, float] | None:
+    def _solve(self, a1: Atom, a2: Atom) -> Lookup | None:
+        """The pair's table, read as it is used: one value per (place 1, place 2), the "has
+        happened" flags set as the search sees them (a state atom that already holds is met by
+        the next step, whatever it is; an event atom still needed has not happened). One
+        backward Dijkstra from every state where both atoms have happened, over states
+        numbered ((place 1 x n + place 2) x 4 + flags); a move of the two objects is stored
+        once per pair of places and read with every pair of flags it leads from."""
         g1, g2 = self.graph.goal(a1), self.graph.goal(a2)
         if g1 is None or g2 is None or g1[0] == g2[0]:
             return None
@@ -72,55 +59,71 @@ class PairBound:
         o2, t2 = g2
         n = len(p.locs)
         holder = p.code_holder
+        held = [holder.get(loc) for loc in range(n)]
 
-        def free(inst: Instance, l1: int, l2: int) -> bool:
-            busy = (holder.get(l1), holder.get(l2))
-            return not any(r in busy for r in inst.free)
+        def moves(o: int, atom: Atom, target: int | None) -> list[list[tuple[Any, ...]]]:
+            # per place: (robots that must be free, executors, duration, place after, whether
+            # the atom happens) of each instance of the object there
+            return [
+                [
+                    (
+                        i.free,
+                        i.executors,
+                        i.lower,
+                        i.post,
+                        atom in i.events if target is None else i.post == target,
+                    )
+                    for i in p.by_obj_pre[o][loc]
+                ]
+                for loc in range(n)
+            ]
 
-        def met(inst: Instance | None, atom: Atom, target: int | None, loc: int) -> bool:
-            if target is None:
-                return inst is not None and atom in inst.events
-            return loc == target
-
-        # forward edges of the whole subproblem, stored reversed
-        rev: dict[_State, list[tuple[_State, float]]] = {}
-        goals: list[_State] = []
+        moves1 = moves(o1, a1, t1)
+        moves2 = moves(o2, a2, t2)
+        # per pair of places after a move: (pair of places before, atom 1 happens, atom 2
+        # happens, duration)
+        rev: list[list[tuple[int, bool, bool, float]]] = [[] for _ in range(n * n)]
         for l1 in range(n):
+            stay1 = (None, 0, 0.0, l1, l1 == t1)
             for l2 in range(n):
-                opts1: list[Instance | None] = [None]
-                opts1 += [i for i in p.by_obj_pre[o1][l1] if free(i, l1, l2)]
-                opts2: list[Instance | None] = [None]
-                opts2 += [i for i in p.by_obj_pre[o2][l2] if free(i, l1, l2)]
-                for i1 in opts1:
-                    for i2 in opts2:
-                        if i1 is None and i2 is None:
+                busy = (held[l1], held[l2])
+                opts1 = [stay1] + [m for m in moves1[l1] if not any(r in busy for r in m[0])]
+                opts2 = [(None, 0, 0.0, l2, l2 == t2)]
+                opts2 += [m for m in moves2[l2] if not any(r in busy for r in m[0])]
+                src = l1 * n + l2
+                for k1, (_, e1, d1, n1, m1) in enumerate(opts1):
+                    base = n1 * n
+                    for k2, (_, e2, d2, n2, m2) in enumerate(opts2):
+                        if k1 == 0 and k2 == 0:
                             continue
-                        if i1 is not None and i2 is not None and i1.executors & i2.executors:
+                        if k1 and k2 and e1 & e2:
                             continue
-                        cost = max(i1.lower if i1 else 0.0, i2.lower if i2 else 0.0)
-                        n1 = i1.post if i1 else l1
-                        n2 = i2.post if i2 else l2
-                        m1 = met(i1, a1, t1, n1)
-                        m2 = met(i2, a2, t2, n2)
-                        for s1 in (False, True):
-                            for s2 in (False, True):
-                                dst = (n1, n2, s1 or m1, s2 or m2)
-                                rev.setdefault(dst, []).append(((l1, l2, s1, s2), cost))
-                for s1 in (False, True):
-                    for s2 in (False, True):
-                        if s1 and s2:
-                            goals.append((l1, l2, s1, s2))
-        dist: dict[_State, float] = {}
-        heap: list[tuple[float, _State]] = [(0.0, g) for g in goals]
-        for g in goals:
-            dist[g] = 0.0
+                        rev[base + n2].append((src, m1, m2, d1 if d1 > d2 else d2))
+        dist = [INF] * (4 * n * n)
+        heap: list[tuple[float, int]] = []
+        for pos in range(n * n):
+            dist[4 * pos + 3] = 0.0
+            heap.append((0.0, 4 * pos + 3))
         while heap:
             d, s = heapq.heappop(heap)
-            if d > dist.get(s, INF):
+            if d > dist[s]:
                 continue
-            for prev, w in rev.get(s, ()):
+            pos, flags = divmod(s, 4)
+            h1, h2 = flags >> 1, flags & 1
+            for src, m1, m2, w in rev[pos]:
+                # the flags before: a flag set after the move was set before it or by it
+                if (m1 and not h1) or (m2 and not h2):
+                    continue
                 nd = d + w
-                if nd < dist.get(prev, INF):
-                    dist[prev] = nd
-                    heapq.heappush(heap, (nd, prev))
-        return dist
+                for s1 in (0, 1) if m1 else (h1,):
+                    for s2 in (0, 1) if m2 else (h2,):
+                        prev = 4 * src + 2 * s1 + s2
+                        if nd < dist[prev]:
+                            dist[prev] = nd
+                            heapq.heappush(heap, (nd, prev))
+        flat = [
+            dist[4 * (l1 * n + l2) + 2 * (l1 == t1) + (l2 == t2)]
+            for l1 in range(n)
+            for l2 in range(n)
+        ]
+        return (o1, o2, n, flat)
