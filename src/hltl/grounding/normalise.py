@@ -660,7 +660,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     person = {r.id for it in people for r in it.refs}
     thing = {r.id for it in things for r in it.refs}
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
-    body = ". ".join(c.strip(" ,:") for c in requests)
+    # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
+    body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
@@ -1845,7 +1846,8 @@ _SELF_ACTS = re.compile(
 
 _SELF_CHANGES = re.compile(
     r"\b(?:except|instead|rather|cancel|forget|skip|drop|swap|without|or|either|neither|nor|"
-    r"each|every|all|both|any)\b",
+    r"each|every|all|both|any|not sure|unsure|not certain|maybe|perhaps|probably|torn|"
+    r"mistaken|confused)\b|n't sure\b",
     _F,
 )
 
@@ -3288,9 +3290,13 @@ def _remarks15(text: str, lexicon: Lexicon) -> str:
 # Said of the speaker, none of these asks anything for them: 'before I go' is now, 'from me' and
 # 'that's us done' close the request.
 _SPEAKER_SIGN_OFFS = (
-    (r"\s*,?\s*\bbefore (?:i|we) (?:go|leave|head off|head home|clock off|finish)\b", ""),
-    (r"\b(that's|that is) (everything|all|it) from (?:me|us)\b", r"\1 \2"),
-    (r"\b(and )?that's us (?:done|finished|sorted)\b", r"\1that's it"),
+    (
+        r"\s*,?\s*\bbefore (?:i|we) (?:go|leave|head off|head home|clock off|finish)"
+        r"(?=\s*(?:[.,;!?]|$))",
+        "",
+    ),
+    (r"\b(that's|that is) (everything|all|it) from (?:me|us)(?=\s*(?:[.!]|$))", r"\1 \2"),
+    (r"\b(and )?that's us (?:done|finished|sorted)(?=\s*(?:[.!]|$))", r"\1that's it"),
 )
 
 
@@ -3826,7 +3832,9 @@ def _likewise(text: str, lexicon: Lexicon) -> str:
         r"(,\s*(?:and )?(?:the )?[a-z ]+?)\s*,?\s*(?:likewise|same thing|same again|the same)\s*"
         r"([.!]?)$",
         lambda m: (
-            f"{m.group(1)} too{m.group(2)}" if _ids(m.group(1), lexicon, "object") else m.group(0)
+            f"{m.group(1)} too{m.group(2)}"
+            if _only(re.sub(r"^,\s*(?:and )?", "", m.group(1)), lexicon, "object")
+            else m.group(0)
         ),
         text,
     )

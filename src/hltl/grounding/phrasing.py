@@ -155,6 +155,8 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
     """'The cup is for Bob?', 'Bob wants the cup?': a statement with a question mark (someone,
     or something, then its verb, in the clause the mark ends) asks whether it is so; it is not
     a request, unless its verb asks leave ('Grandad can have the wipes?')."""
+    while end > k and (_is(items[end - 1], ",") or items[end - 1].text.lower() in _THANKS_WORDS):
+        end -= 1  # "The stapler is for Priya, thanks?"
     if any(_is(x, ",") for x in items[k:end]):
         return False  # "Carol's thirsty, can you …?": the mark ends a later clause
     n = _past_dets(items, k)
@@ -173,6 +175,7 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
 
 
 _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't"})
+_THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx", "pls"})
 
 
 def _is_after(items: list[Item]) -> list[Item]:
@@ -1492,6 +1495,8 @@ def _corrections(items: list[Item]) -> list[Item]:
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
+                while before and _is(before[-1], ",", "-", "filler"):
+                    before.pop()  # "Give Bob the bottle, please. Thanks, no, the crisps"
                 whole = True
             elif after:
                 raise GroundingError(
@@ -1515,9 +1520,39 @@ def _corrections(items: list[Item]) -> list[Item]:
                 f"{it.text!r} could change the whole sentence before it or only a part of it: "
                 "say the whole request again"
             )
+        _not_after_an_exclusion(before, after, it)
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
+
+
+def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item) -> None:
+    """'Ava can have any block except the green one, no, the bib': the last object said is one
+    left out; the correction could replace it or what it is left out of, so it is refused; so
+    is one after a choice said again ('One box for Mia, the small one, no, the scanner')."""
+    n = len(before)
+    while n > 0 and not _objects(before[n - 1]):
+        if before[n - 1].kind == "punct" and before[n - 1].lemma in _END:
+            return
+        n -= 1
+    m = n - 1
+    while m > 0 and _is(before[m - 1], "det"):
+        m -= 1
+    if m > 0 and (_is(before[m - 1], "except") or before[m - 1].text.lower() == "not"):
+        raise GroundingError(
+            f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}: does it change what is left "
+            f"out, or what {_words_of(after[:3])!r} replaces? say the whole request again"
+        )
+    if m > 1 and _is(before[m - 1], ","):
+        # "One box for Mia, the small one, scratch that, the scanner": the one named last says
+        # again which of a choice before it is meant; the correction could replace either
+        said = {r.id for r in before[n - 1].refs}
+        earlier = next((x for x in reversed(before[: m - 1]) if _objects(x) or _is(x, *_END)), None)
+        if earlier is not None and _objects(earlier) and said < {r.id for r in earlier.refs}:
+            raise GroundingError(
+                f"{marker.text!r} after '{earlier.text}, {_words_of(before[m:n])}': does it "
+                "change the choice, or the one picked? say the whole request again"
+            )
 
 
 def _words_of(items: list[Item]) -> str:
@@ -2099,6 +2134,14 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 while end < len(items) and not (
                     items[end].kind == "punct" and items[end].lemma in _END
                 ):
+                    placed = any(_is(x, "to", "for", "on") for x in items[j + 1 : end])
+                    if _is(items[end], ",") and not placed and not _listed_on(items, end + 1):
+                        # "I need the thermometer, put the jug …", "We need the bottle, first
+                        # the apple to Carol": what follows the comma is not more of the list
+                        raise GroundingError(
+                            f"{_words_of(items[k:end])!r}: the speaker is not a person in the "
+                            f"scene; name the person who gets it; {lexicon.listing('human')}"
+                        )
                     end += 1
                 clause = items[j + 1 : end]
                 n = 0
@@ -2138,6 +2181,26 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             )
         k += 1
     return items
+
+
+def _listed_on(items: list[Item], k: int) -> bool:
+    """Whether ``items[k:]`` goes on with a list of objects up to a participle ('the cup and the
+    chips brought to Bob'): objects, articles, 'and', commas, then the participle; or with
+    only the recipient ('…, please, for Bob')."""
+    seen = joined = False
+    while k < len(items) and not (items[k].kind == "punct" and items[k].lemma in _END):
+        it = items[k]
+        if _objects(it):
+            seen = True
+        elif _is(it, "and"):
+            joined = True
+        elif not _is(it, "det", ",", "filler"):
+            # "the apple, the cup and the chips brought to Bob"; "the apple, please, for Bob"
+            if seen:
+                return joined and _is_verb_item(it)
+            return _is(it, "to", "for")
+        k += 1
+    return False
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
