@@ -33,7 +33,7 @@ checks = st.none() | st.builds(
 @settings(max_examples=60, deadline=None)
 @given(
     st.integers(1, 10**6),
-    st.lists(st.integers(0, 10**6), min_size=1, max_size=8),
+    st.lists(st.integers(-1, 10**6), min_size=1, max_size=8),
     st.text(min_size=1, max_size=12),
     positive,
     checks,
@@ -127,7 +127,7 @@ def _with(path: tuple[str, ...], value: Any) -> dict[str, Any]:
         (_with(("version",), True), "version must be an integer"),
         (_with(("version",), "2"), "version must be an integer"),
         (_with(("q",), []), "q must be a non-empty list"),
-        (_with(("q",), [0, -1]), "a monitor state must be an integer >= 0"),
+        (_with(("q",), [0, -2]), "a monitor state must be an integer >= -1"),
         (_with(("q",), [0, 1.5]), "a monitor state must be an integer"),
         (_with(("planner",), "astar"), "planner must be an object"),
         (_with(("planner", "algorithm"), ""), "planner algorithm must be a name"),

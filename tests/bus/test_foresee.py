@@ -6,8 +6,13 @@ from typing import Any
 
 import pytest
 
+from hltl.bus import node as node_module
+from hltl.bus.codec import WireBriefing
+from hltl.errors import GroundingError
+from hltl.grounding import make_grounder
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
+from hltl.spec.hierarchy import spec_from_dict
 from tests.bus.helpers import (
     BusRun,
     Loopback,
@@ -29,6 +34,7 @@ def _both(loopback: Loopback, config: str, index: int, **kw: Any) -> BusRun:
     local = run_episode(trial.scene, **ep)
     run = loopback.run(trial.scene, **ep, **kw)
     same_as_local(local, run)
+    assert run.node.stats.malformed == 0  # (every basis and briefing the node could read)
     return run
 
 
@@ -90,6 +96,56 @@ def test_the_first_step_is_foreseen(
     first = next(r for r in run.episode.records if r.type == "dispatch")
     assert run.node.stats.foreseen_kept >= 1
     assert run.cell.stats.guessed >= len(first.actions)
+    # the node grounded the instruction itself from the executor's briefing, and the
+    # executor's first spec was the one it grounded
+    assert run.node.stats.briefed == 1 and run.node.stats.respecs == 0
+
+
+def test_no_briefing_without_the_offline_grounder(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An episode given its spec, or grounded with a grounder of its own, sends no briefing:
+    the first step is foreseen from the executor's first basis, as before."""
+    patient_foresight(monkeypatch)
+    trial = make_trial("4-1", 0)
+    ep = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **ep)
+    run = loopback.run(trial.scene, **ep, grounder=make_grounder("offline"))
+    same_as_local(local, run)
+    assert run.node.stats.briefed == 0 and run.node.stats.foreseen_kept >= 1
+    spec = next(r for r in local.records if r.type == "grounding").spec
+    given = {"spec": spec_from_dict(spec), "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **given)
+    run = loopback.run(trial.scene, **given)
+    same_as_local(local, run)
+    assert run.node.stats.briefed == 0 and run.node.stats.foreseen_kept >= 1
+
+
+def test_a_wrong_briefing_never_shows(loopback: Loopback, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The node grounds the briefing to another spec than the executor's (here: another
+    trial's instruction): its first guess is wrong and undone, the executor's own basis
+    replaces the node's spec, and the log is the in-process one."""
+    patient_foresight(monkeypatch)
+    guesses_in_the_answer(monkeypatch)
+    other = make_trial("4-2", 1).instruction
+    real = node_module.ground_instruction
+    monkeypatch.setattr(node_module, "ground_instruction", lambda g, _text, *a: real(g, other, *a))
+    run = _both(loopback, "4-1", 0)
+    assert run.node.stats.briefed == 1 and run.node.stats.respecs == 1
+
+
+def test_a_malformed_briefing_is_dropped(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A briefing the node cannot read is counted and dropped; the episode goes on (its first
+    commands asked about), the log the in-process one."""
+    monkeypatch.setattr(WireBriefing, "to_dict", lambda self: {"instruction": 3})
+    trial = make_trial("4-1", 0)
+    ep = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **ep)
+    run = loopback.run(trial.scene, **ep)
+    same_as_local(local, run)
+    assert run.node.stats.malformed == 1 and run.node.stats.briefed == 0
 
 
 @MODES
@@ -108,3 +164,36 @@ def test_a_new_request_sends_its_basis(
     specs = [r for r in run.episode.records if r.type == "grounding" and r.spec is not None]
     assert len(specs) == 2
     assert run.node.stats.specs == len(specs)
+
+
+class _FirstOnly:
+    """The offline grounder for the episode's first instruction; every later one fails."""
+
+    def __init__(self) -> None:
+        self.inner, self.calls = make_grounder("offline"), 0
+
+    def ground(self, instruction: str, scene: Any, running: Any = None) -> Any:
+        self.calls += 1
+        if self.calls > 1:
+            raise GroundingError("not understood (a test's grounder)")
+        return self.inner.ground(instruction, scene, running)
+
+
+def test_no_wait_for_a_basis_that_is_not_coming(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A second request the executor cannot ground makes no new spec, so no basis follows the
+    step it came in, which the node waits for before it foresees the next one: the executor,
+    told so (``"awaits"``), does not wait for that step but asks (counted: the node cannot
+    have answered, it waits), and the node's wait ends with the question, not its time limit
+    (made 30 s here). The log is the in-process one."""
+    patient_foresight(monkeypatch)
+    monkeypatch.setattr(node_module, "FORESEE_WAIT", 30.0)
+    trial = make_trial("2-2", 0)
+    ep = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, grounder=_FirstOnly(), **ep)
+    failed = [r for r in local.records if r.type == "grounding" and r.spec is None]
+    assert len(failed) == 1
+    run = loopback.run(trial.scene, grounder=_FirstOnly(), **ep)
+    same_as_local(local, run)
+    assert run.node.stats.waited_out == 0 and run.cell.stats.unawaited == 1

@@ -8,12 +8,22 @@ from typing import Any, ClassVar
 
 import pytest
 
-from hltl.execution.drivers import Basis, Expected, Foresight, Lookahead, RobotDriver
+from hltl.execution.drivers import (
+    Basis,
+    Briefed,
+    Briefing,
+    Expected,
+    Foresight,
+    Lookahead,
+    RobotDriver,
+)
+from hltl.grounding import make_grounder
 from hltl.sim import scenarios
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
 from hltl.sim.simulator import Simulator
+from hltl.spec.hierarchy import spec_from_dict
 from hltl.spec.monitor import HierarchyMonitor
 
 EVENTS = Path(__file__).resolve().parents[2] / "examples" / "events"
@@ -139,3 +149,41 @@ def test_the_basis_is_the_state_after_the_step_and_changes_nothing(
         assert monitor.accepted(basis.q) == mon.accepted
         checked += 1
     assert checked > 0
+
+
+class _Briefed(_Foreseeing):
+    """The discrete simulator, also taking the executor's briefing (and ignoring it)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.briefings: list[tuple[int, Briefing]] = []
+
+    def brief(self, briefing: Briefing) -> None:
+        self.briefings.append((len(self.bases), briefing))
+
+
+@pytest.mark.parametrize(
+    ("name", "scene", "kw"), _episodes()[:2], ids=[e[0] for e in _episodes()[:2]]
+)
+def test_the_briefing_is_the_instruction_before_any_basis_and_changes_nothing(
+    name: str, scene: Any, kw: dict[str, Any]
+) -> None:
+    """A driver that takes briefings is told the first instruction once, before the first
+    basis, with the planner and checks the executor plans and checks with; the episode is the
+    one a driver without it gives. Given a spec, or a grounder of its own, none is sent."""
+    plain = run_episode(scene, **kw)
+    _Foreseeing.made.clear()
+    run = run_episode(scene, simulator=_Briefed, **kw)
+    assert _no_wall_clock(run.records) == _no_wall_clock(plain.records)
+    (sim,) = _Foreseeing.made
+    assert isinstance(sim, _Briefed) and isinstance(sim, Briefed)
+    ((before, b),) = sim.briefings
+    assert before == 0 and b.instruction == kw["instruction"]
+    (_, first) = sim.bases[0]
+    assert (b.planner, b.config, b.predictor) == (first.planner, first.config, first.predictor)
+    _Foreseeing.made.clear()
+    run_episode(scene, simulator=_Briefed, grounder=make_grounder("offline"), **kw)
+    spec = next(r for r in plain.records if r.type == "grounding").spec
+    given = {k: v for k, v in kw.items() if k != "instruction"}
+    run_episode(scene, simulator=_Briefed, spec=spec_from_dict(spec), **given)
+    assert [s.briefings for s in _Foreseeing.made] == [[], []]  # type: ignore[attr-defined]

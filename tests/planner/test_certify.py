@@ -5,13 +5,15 @@ from __future__ import annotations
 
 import math
 import threading
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
+from typing import Any
 
 import pytest
 
 from hltl import planner
 from hltl.bench.cells import delivery_cell
-from hltl.planner import anytime, plan, schedule
+from hltl.planner import PlanResult, PlanStep, anytime, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, plan_steps, search
 from tests.oracles.validator import check_plan
@@ -172,10 +174,22 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
         release.set()
         return real_finish(self, cert)
 
+    # (the thread: without two cores or ``fork``, or with ``on_progress``: planner._Apart)
+    monkeypatch.setattr(planner, "beside_possible", lambda: False)
     monkeypatch.setattr(planner._Beside, "start", start)
     monkeypatch.setattr(planner._Beside, "finish", finish)
+    steps = _line_6_5_both_ways(order, release, search)
+    assert started == ["astar first", "phase first"]
+    assert steps[0] == steps[1]
+
+
+def _line_6_5_both_ways(
+    order: dict[str, str], release: threading.Event | Any, oracle: Callable[..., PlanResult]
+) -> list[tuple[PlanStep, ...]]:
+    """Line 6 seed 5's plans with ``order["mode"]`` "astar first", then "phase first" (the
+    patched A* waits for ``release`` in the second), each as short as ``oracle``'s and valid."""
     c = delivery_cell("line", 6, 5)
-    expected = search(Problem(c.scene, c.spec), timeout=120)
+    expected = oracle(Problem(c.scene, c.spec), timeout=120)
     steps = []
     for mode in ("astar first", "phase first"):
         order["mode"] = mode
@@ -184,5 +198,69 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
         assert got.solved and got.makespan == pytest.approx(expected.makespan)
         check_plan(c.scene, c.spec, got.to_dict())
         steps.append(got.steps)
-    assert started == ["astar first", "phase first"]
+    return steps
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="needs two cores and fork")
+def test_astar_in_its_own_process_returns_the_same_plan_whichever_ends_first(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # as above with A* in a forked process from the start of the phase (planner._Apart): held
+    # until the phase ends, or waited for before the phase goes on; the plan returned is the
+    # phase's joint re-plan either way, and as short as plain A*'s
+    import multiprocessing
+
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    ctx = multiprocessing.get_context("fork")
+    release = ctx.Event()
+    order = {"mode": ""}
+    real_ahead, real_finish, real_search = (
+        planner._Apart.ahead,
+        planner._Apart.finish,
+        planner.search,
+    )
+    apart: list[planner._Apart] = []
+
+    def ahead(self: planner._Apart) -> None:
+        apart.append(self)
+        real_ahead(self)
+        if order["mode"] == "astar first":
+            assert self.results is not None and self.results.poll(120)  # A* has ended
+
+    def held_search(*args: object, **kwargs: object) -> object:
+        # (runs in the child, forked after this patch)
+        if order["mode"] == "phase first":
+            release.wait(120)
+        return real_search(*args, **kwargs)  # type: ignore[arg-type]
+
+    def finish(self: planner._Apart, cert: anytime.Certificate) -> object:
+        assert cert.optimal is None
+        release.set()
+        return real_finish(self, cert)
+
+    monkeypatch.setattr(planner._Apart, "ahead", ahead)
+    monkeypatch.setattr(planner._Apart, "finish", finish)
+    monkeypatch.setattr(planner, "search", held_search)
+    steps = _line_6_5_both_ways(order, release, real_search)
+    assert len(apart) == 2 and all(a.proc is not None and not a.proc.is_alive() for a in apart)
     assert steps[0] == steps[1]
+
+
+def test_astar_in_its_own_process_is_stopped_by_a_proof(monkeypatch: pytest.MonkeyPatch) -> None:
+    # grid 4 seed 1: the step bound proves the optimum; A*'s process, started with the phase,
+    # is ended, and the plan is the phase's (no expansion counted)
+    if not anytime.beside_possible():
+        pytest.skip("needs two cores and fork")
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    apart: list[planner._Apart] = []
+    real_ahead = planner._Apart.ahead
+
+    def ahead(self: planner._Apart) -> None:
+        apart.append(self)
+        real_ahead(self)
+
+    monkeypatch.setattr(planner._Apart, "ahead", ahead)
+    c = delivery_cell("grid", 4, 1)
+    got = plan(c.scene, c.spec, timeout=120)
+    assert got.makespan == pytest.approx(3.3) and got.stats.expanded == 0
+    assert len(apart) == 1 and apart[0].proc is not None and not apart[0].proc.is_alive()

@@ -394,3 +394,47 @@ def test_asking_two_levels_at_once_changes_no_answer(
     for (_, whole_first, _), res in got.items():
         assert res == got[1, whole_first, 0]
         assert res.solved and res.steps is not None
+
+
+def test_the_climb_says_how_many_questions_it_asks_at_once(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # exact mode's A* process (planner._Apart) waits while the climb asks a level on every
+    # core: the climb writes how many questions run (2 in its rounds of two) and 0 when done
+    from hltl.planner import lns
+
+    class Cell:
+        def __init__(self) -> None:
+            self.seen: list[int] = []
+
+        @property
+        def value(self) -> int:
+            return self.seen[-1] if self.seen else 0
+
+        @value.setter
+        def value(self, n: int) -> None:
+            self.seen.append(n)
+
+    _, problem, s, node, tgts = _at_start("grid", 4, 1)
+    level = max(0, round(s.heuristic(node)) // schedule.time_unit(problem) - 4)
+    monkeypatch.setattr(schedule, "WORKERS", 2)
+    cell = Cell()
+    lns.share_busy(lns.Busy(cell))
+    try:
+        res = schedule._shave(
+            problem,
+            s.heuristic.graph,
+            node,
+            tgts,
+            level,
+            None,
+            time.perf_counter() + DEADLINE_S,
+            0,
+            0,
+            True,
+            True,
+        )
+    finally:
+        lns.share_busy(None)
+    assert res.solved
+    assert 2 in cell.seen and cell.seen[-1] == 0 and max(cell.seen) == 2

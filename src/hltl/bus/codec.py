@@ -5,7 +5,8 @@ from __future__ import annotations
 import importlib
 import json
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import cache
 from typing import Any, Literal, Protocol
@@ -13,6 +14,7 @@ from typing import Any, Literal, Protocol
 from hltl.errors import BackendUnavailableError, BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus
 from hltl.skills.library import Action
+from hltl.spec.monitor import DONE
 from hltl.world.scene import Vec3
 from hltl.world.state import Loc, ObjectStatus, WorldState
 
@@ -175,7 +177,8 @@ class WireBasis:
 
     Attributes:
         version: counts the executor's specs (1 for the first).
-        q: the monitor state, one automaton state per formula of the spec.
+        q: the monitor state, one automaton state per formula of the spec (``DONE``, -1, for
+            one done).
         algorithm: the exact planner's search algorithm.
         timeout: its time limit, seconds.
         check: the executor's check before a dispatch (``None``: the node does not check).
@@ -195,14 +198,8 @@ class WireBasis:
             "q": list(self.q),
             "planner": {"algorithm": self.algorithm, "timeout": self.timeout},
         }
-        c = self.check
-        if c is not None:
-            f = c.forecast
-            d["check"] = {
-                "intrusion_speed": c.intrusion_speed,
-                "predict_dt": c.predict_dt,
-                "forecast": None if f is None else {"window": f[0], "min_speed": f[1]},
-            }
+        if self.check is not None:
+            d["check"] = _check_to(self.check)
         if with_spec and self.spec is not None:
             d["spec"] = self.spec
         return d
@@ -214,51 +211,114 @@ class WireBasis:
         Raises:
             BusError: the payload is not a basis (one line saying what is wrong).
         """
-        try:
+        with _malformed("basis"):
             if not isinstance(d, Mapping):
                 raise ValueError(f"expected a JSON object, got {d!r:.40}")
             q = d["q"]
             if not isinstance(q, list) or not q:
                 raise ValueError(f"q must be a non-empty list of monitor states, got {q!r:.40}")
-            p = d["planner"]
-            if not isinstance(p, Mapping):
-                raise ValueError(f"planner must be an object, got {p!r:.40}")
-            algorithm = p["algorithm"]
-            if not isinstance(algorithm, str) or not algorithm:
-                raise ValueError(f"planner algorithm must be a name, got {algorithm!r:.40}")
-            c = d.get("check")
-            check = None
-            if c is not None:
-                if not isinstance(c, Mapping):
-                    raise ValueError(f"check must be an object, got {c!r:.40}")
-                f = c.get("forecast")
-                if f is not None and not isinstance(f, Mapping):
-                    raise ValueError(f"forecast must be an object, got {f!r:.40}")
-                check = WireCheck(
-                    _number(c["intrusion_speed"], "intrusion_speed"),
-                    _number(c["predict_dt"], "predict_dt", positive=True),
-                    None
-                    if f is None
-                    else (
-                        _number(f["window"], "forecast window", positive=True),
-                        _number(f["min_speed"], "forecast min_speed"),
-                    ),
-                )
+            algorithm, timeout = _planner_from(d["planner"])
             spec = d.get("spec")
             if spec is not None and not isinstance(spec, Mapping):
                 raise ValueError(f"spec must be an object, got {spec!r:.40}")
             return cls(
                 _int(d["version"], "version", 1),
-                tuple(_int(x, "a monitor state") for x in q),
+                tuple(_int(x, "a monitor state", DONE) for x in q),
                 algorithm,
-                _number(p["timeout"], "planner timeout", positive=True),
-                check,
+                timeout,
+                _check_from(d.get("check")),
                 spec,
             )
-        except KeyError as exc:
-            raise BusError(f"malformed basis on the bus: {exc.args[0]!r} missing") from None
-        except ValueError as exc:
-            raise BusError(f"malformed basis on the bus: {exc}") from None
+
+
+@dataclass(frozen=True, slots=True)
+class WireBriefing:
+    """The executor's :class:`~hltl.execution.drivers.Briefing` as it travels to the node (a
+    first-step request's ``"ahead": {"brief": …}``): the episode's first instruction, which
+    the executor grounds with the offline grounder, and the exact planner and check it will
+    plan and check the first step with (as in :class:`WireBasis`)."""
+
+    instruction: str
+    algorithm: str
+    timeout: float
+    check: WireCheck | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "instruction": self.instruction,
+            "grounder": "offline",
+            "planner": {"algorithm": self.algorithm, "timeout": self.timeout},
+            "check": _check_to(self.check),
+        }
+
+    @classmethod
+    def from_dict(cls, d: Any) -> WireBriefing:
+        """Inverse of :meth:`to_dict`, every field checked.
+
+        Raises:
+            BusError: the payload is not a briefing (one line saying what is wrong).
+        """
+        with _malformed("briefing"):
+            if not isinstance(d, Mapping):
+                raise ValueError(f"expected a JSON object, got {d!r:.40}")
+            text, grounder = d["instruction"], d["grounder"]
+            if not isinstance(text, str):
+                raise ValueError(f"instruction must be a string, got {text!r:.40}")
+            if grounder != "offline":
+                raise ValueError(f"grounder must be 'offline', got {grounder!r:.40}")
+            algorithm, timeout = _planner_from(d["planner"])
+            return cls(text, algorithm, timeout, _check_from(d.get("check")))
+
+
+@contextmanager
+def _malformed(what: str) -> Iterator[None]:
+    """A missing key or a bad value read inside is one :class:`BusError` line naming ``what``."""
+    try:
+        yield
+    except KeyError as exc:
+        raise BusError(f"malformed {what} on the bus: {exc.args[0]!r} missing") from None
+    except ValueError as exc:
+        raise BusError(f"malformed {what} on the bus: {exc}") from None
+
+
+def _planner_from(p: Any) -> tuple[str, float]:
+    if not isinstance(p, Mapping):
+        raise ValueError(f"planner must be an object, got {p!r:.40}")
+    algorithm = p["algorithm"]
+    if not isinstance(algorithm, str) or not algorithm:
+        raise ValueError(f"planner algorithm must be a name, got {algorithm!r:.40}")
+    return algorithm, _number(p["timeout"], "planner timeout", positive=True)
+
+
+def _check_to(c: WireCheck | None) -> dict[str, Any] | None:
+    if c is None:
+        return None
+    f = c.forecast
+    return {
+        "intrusion_speed": c.intrusion_speed,
+        "predict_dt": c.predict_dt,
+        "forecast": None if f is None else {"window": f[0], "min_speed": f[1]},
+    }
+
+
+def _check_from(c: Any) -> WireCheck | None:
+    if c is None:
+        return None
+    if not isinstance(c, Mapping):
+        raise ValueError(f"check must be an object, got {c!r:.40}")
+    f = c.get("forecast")
+    if f is not None and not isinstance(f, Mapping):
+        raise ValueError(f"forecast must be an object, got {f!r:.40}")
+    return WireCheck(
+        _number(c["intrusion_speed"], "intrusion_speed"),
+        _number(c["predict_dt"], "predict_dt", positive=True),
+        None
+        if f is None
+        else (
+            _number(f["window"], "forecast window", positive=True),
+            _number(f["min_speed"], "forecast min_speed"),
+        ),
+    )
 
 
 # -- world states, exact -------------------------------------------------------------------

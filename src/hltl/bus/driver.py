@@ -17,6 +17,7 @@ from hltl.bus.codec import (
     Report,
     TrajectoryLike,
     WireBasis,
+    WireBriefing,
     WireCheck,
     dumps,
     encode_trajectory,
@@ -29,7 +30,14 @@ from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
-from hltl.execution.drivers import ActionState, ActionStatus, Basis, Expected, Handle
+from hltl.execution.drivers import (
+    ActionState,
+    ActionStatus,
+    Basis,
+    Briefing,
+    Expected,
+    Handle,
+)
 from hltl.execution.executor import ExactPlanner, ExecutorConfig
 from hltl.execution.log import EventLog, LogRecord, RobotDown
 from hltl.perception.predict import ConstantVelocityPredictor
@@ -106,6 +114,9 @@ class DriverStats:
     # guessed steps waited for: matching the hint, and planned by the node (foresight)
     awaited_hinted: int = 0
     awaited_foreseen: int = 0
+    # foresight replies not waited for: the node waits for a new spec's basis that this
+    # executor does not send (its instruction did not ground), so it asks instead
+    unawaited: int = 0
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     round_trips: list[float] = field(default_factory=list)
@@ -168,26 +179,50 @@ def _listeners_of(session: Any) -> _Listeners:
         return got
 
 
+def _runnable(planner: object) -> ExactPlanner | None:
+    """The executor's planner if the node can run it (the exact planner with the scene's
+    kinematics and costs), else ``None``."""
+    p = planner
+    if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
+        return None
+    return p
+
+
+def _wire_check(config: object, predictor: object) -> WireCheck | None:
+    """The executor's check before a dispatch, for the node to hold back what it holds
+    (``None``: not one the node can make)."""
+    c, f = config, predictor
+    if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
+        return WireCheck(
+            c.intrusion_speed, c.predict_dt, None if f is None else (f.window, f.min_speed)
+        )
+    return None
+
+
 def wire_basis(
     basis: Basis, known: tuple[int, Mapping[str, Any] | None] | None = None
 ) -> WireBasis | None:
     """The executor's basis as it goes to the node, or ``None`` when its planner is not one the
-    node can run (only the exact planner with the scene's kinematics and costs is); ``known``
-    is a spec version and its JSON form already made (not made again)."""
-    p = basis.planner
-    if type(p) is not ExactPlanner or p.kinematics is not None or p.cost is not None:
+    node can run; ``known`` is a spec version and its JSON form already made (not made
+    again)."""
+    p = _runnable(basis.planner)
+    if p is None:
         return None
     spec = known[1] if known is not None and known[0] == basis.version else None
     if spec is None:
         spec = spec_to_dict(basis.spec)
-    c, f = basis.config, basis.predictor
-    check = None
-    if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
-        # the executor's check before a dispatch, for the node to hold back what it holds
-        check = WireCheck(
-            c.intrusion_speed, c.predict_dt, None if f is None else (f.window, f.min_speed)
-        )
+    check = _wire_check(basis.config, basis.predictor)
     return WireBasis(basis.version, tuple(basis.q), p.algorithm, p.timeout, check, spec)
+
+
+def wire_briefing(briefing: Briefing) -> WireBriefing | None:
+    """The executor's briefing as it goes to the node, or ``None`` when its planner is not
+    one the node can run."""
+    p = _runnable(briefing.planner)
+    if p is None:
+        return None
+    check = _wire_check(briefing.config, briefing.predictor)
+    return WireBriefing(briefing.instruction, p.algorithm, p.timeout, check)
 
 
 class BusCell:
@@ -299,10 +334,14 @@ class BusCell:
         self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, Mapping[str, Any] | None] | None = None
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
+        # it does so once the basis of a spec newer than this version comes (an instruction
+        # came in the step: None, it does not wait)
+        self._awaits: Any = None
         # the replies to the request that asks the node to foresee the first step (sent with
         # the first basis, taken up once the reset's answer is in), and whether it went
         self._first: Any = None
         self._first_sent = False
+        self._briefed = False  # the first request to foresee carried the executor's briefing
         self._sent_version = 0  # the last spec version whose basis went to the node
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
@@ -569,6 +608,7 @@ class BusCell:
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
                         self._guess_next = bool(d.get("guessed"))
                         self._foresee_next = bool(d.get("foresee"))
+                        self._awaits = d.get("awaits")
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -623,6 +663,9 @@ class BusCell:
             )
             if not (hinted or self._foresee_next):
                 return False  # (known here: the node's guess, still to come, is not waited for)
+            if not hinted and isinstance(self._awaits, int) and self._sent_version <= self._awaits:
+                self.stats.unawaited += 1  # (the node waits for a new spec's basis: none comes)
+                return False
             if hinted:
                 self.stats.awaited_hinted += 1
             else:
@@ -817,6 +860,7 @@ class BusCell:
                 # (a guessed step's reply ends where the next guessed step would start)
                 self._guess_next = bool(d.get("guessed"))
                 self._foresee_next = bool(d.get("foresee"))
+                self._awaits = d.get("awaits")
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
                 if d.get("guessed") or d.get("foreseen"):
@@ -944,9 +988,29 @@ class BusCell:
             return
         if not (self._first_sent or self._step):
             self._foresee_first()
-        elif basis.version != self._sent_version:
+        elif basis.version != self._sent_version and not (self._briefed and basis.version == 1):
+            # (a briefed node grounded the first spec itself: its basis rides the next request)
             self._foresee_spec()
         self._sent_version = basis.version
+
+    def brief(self, briefing: Briefing) -> None:
+        """The episode's first instruction (:class:`~hltl.execution.drivers.Briefed`), before
+        the executor grounds it: the node is asked at once to foresee the first step from it
+        (it grounds the instruction with the offline grounder itself, while the executor
+        does), instead of from the first basis, which comes only after the grounding."""
+        if (
+            not self.foresight
+            or self._motion
+            or self._dead
+            or not self._defer
+            or self._first_sent
+            or self._step
+        ):
+            return
+        wire = wire_briefing(briefing)
+        if wire is not None:
+            self._briefed = True
+            self._foresee_first({"brief": wire.to_dict()})
 
     def _basis_out(self) -> dict[str, Any]:
         """The basis as it goes out: with its spec the first time (the node keeps it by its
@@ -972,9 +1036,10 @@ class BusCell:
         with contextlib.suppress(BusError):
             self._query(self.keys.sim_step, dumps(req), commands=False)
 
-    def _foresee_first(self) -> None:
-        """Ask the node to foresee the episode's first step from the executor's first basis
-        (its commands otherwise cost a round trip): the node plans it on the first world,
+    def _foresee_first(self, start: dict[str, Any] | None = None) -> None:
+        """Ask the node to foresee the episode's first step from the executor's first basis,
+        or (``start``: ``{"brief": …}``) from its briefing (the first step's commands otherwise
+        cost a round trip): the node plans it on the first world,
         starts it on a guess and simulates on, and answers with the guessed step and the
         ticks after it, like a step query's guessed replies. Not waited for here (the loop
         plans meanwhile)."""
@@ -987,7 +1052,7 @@ class BusCell:
             "ahead": {
                 **self._ahead_req,
                 "numbers": [self._seq + 1, self._next_handle],
-                "basis": self._basis_out(),
+                **({"basis": self._basis_out()} if start is None else start),
             },
         }
         if self.link.lost():  # (an injected fault: the first commands are asked about)

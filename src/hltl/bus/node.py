@@ -20,6 +20,8 @@ from hltl.bus.codec import (
     Report,
     StampedPose,
     WireBasis,
+    WireBriefing,
+    WireCheck,
     decode_trajectory,
     dumps,
     encode_joint_state,
@@ -38,15 +40,18 @@ from hltl.execution.drivers import ActionState, ActionStatus, Basis, Handle
 from hltl.execution.executor import ExactPlanner, ExecutorConfig, check_step
 from hltl.execution.foresee import after_step, foresee_steps
 from hltl.execution.log import HANDLED, EventLog, LogRecord
+from hltl.grounding import make_grounder
+from hltl.grounding.base import Grounder
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
+from hltl.sim.instruct import ground_instruction
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.skills.library import Action
 from hltl.skills.semantics import ActionSemantics
-from hltl.spec.hierarchy import spec_from_dict
+from hltl.spec.hierarchy import spec_from_dict, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
@@ -74,8 +79,10 @@ GUESS_STREAM = True
 # many wall seconds: the node's step thread answers nothing meanwhile
 FORESEE_TIMEOUT = 0.05
 # after a step during which an instruction came, the node waits this long (wall seconds) for
-# the executor's new basis before it foresees the next step (the hint is then used)
-FORESEE_WAIT = 0.02
+# the executor's new basis before it foresees the next step (the hint is then used): the
+# executor, far behind in the cell's time, grounds the instruction only when its loop reaches
+# it (an update takes it ~10 ms); one that will send none does not wait (see "awaits")
+FORESEE_WAIT = 0.25
 # a request to foresee the first step waits at most this long for its episode's reset, which
 # the node handles on another thread (it was sent first)
 RESET_WAIT = 1.0
@@ -115,6 +122,10 @@ class NodeStats:
     foreseen: int = 0  # of the guessed steps, those the node planned itself (not hinted)
     foreseen_kept: int = 0  # of those, steps the executor did command so
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
+    new_bases: int = 0  # waits for a new spec's basis before foreseeing that it ended
+    waited_out: int = 0  # of those, ended by FORESEE_WAIT (the hint used)
+    briefed: int = 0  # of those, first specs grounded here from the executor's briefing
+    respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
 
@@ -163,24 +174,26 @@ class _Basis:
     # least speed (None: no intrusion check); None: the node does not check
     check: ExecutorConfig | None = None
     forecast: tuple[float, float] | None = None
+    # the spec's JSON form when the node grounded it itself (see CellNode._take_brief): the
+    # executor's own spec of the same version, compared with it, replaces it if different
+    wire: Any = None
 
     @classmethod
     def parse(cls, d: Any, known: _Basis | None) -> _Basis:
         """The basis a request carries (:class:`~hltl.bus.codec.WireBasis`); ``known``'s spec
-        is kept when the version is the same.
+        is kept when the version is the same (and, for one grounded here, the spec too).
 
         Raises:
             BusError: a malformed basis, or one without the spec the node does not have.
         """
         w = WireBasis.from_dict(d)
-        planner = ExactPlanner(algorithm=w.algorithm, timeout=min(w.timeout, FORESEE_TIMEOUT))
+        planner = _planner(w.algorithm, w.timeout)
         c = w.check
-        check = (
-            None
-            if c is None
-            else ExecutorConfig(intrusion_speed=c.intrusion_speed, predict_dt=c.predict_dt)
-        )
-        if known is not None and known.basis.version == w.version:
+        if (
+            known is not None
+            and known.basis.version == w.version
+            and (known.wire is None or w.spec is None or known.wire == w.spec)
+        ):
             spec, monitor = known.basis.spec, known.monitor
         elif w.spec is None:
             raise BusError(f"malformed basis on the bus: spec version {w.version} never sent")
@@ -197,8 +210,24 @@ class _Basis:
                 f"{len(monitor.initial)} formulas"
             )
         return cls(
-            Basis(spec, w.version, w.q, planner), monitor, check, None if c is None else c.forecast
+            Basis(spec, w.version, w.q, planner),
+            monitor,
+            _check(c),
+            None if c is None else c.forecast,
         )
+
+
+def _planner(algorithm: str, timeout: float) -> ExactPlanner:
+    """The executor's exact planner as the node runs it (never longer than
+    ``FORESEE_TIMEOUT``: the step thread answers nothing meanwhile)."""
+    return ExactPlanner(algorithm=algorithm, timeout=min(timeout, FORESEE_TIMEOUT))
+
+
+def _check(c: WireCheck | None) -> ExecutorConfig | None:
+    """The executor's check before a dispatch as the node makes it (None: no check)."""
+    if c is None:
+        return None
+    return ExecutorConfig(intrusion_speed=c.intrusion_speed, predict_dt=c.predict_dt)
 
 
 @dataclass(slots=True)
@@ -420,6 +449,9 @@ class CellNode:
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
         self._semantics: ActionSemantics | None = None  # (foresight: contexts, transitions)
+        # the executor's briefings are grounded here with the offline grounder (loaded now,
+        # about half a second once per process, not in an episode)
+        self._grounder: Grounder = make_grounder("offline")
         # the episodes reset here lately (a request to foresee waits only for one not yet)
         self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
@@ -629,6 +661,8 @@ class CellNode:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
                     if s.guess_due and (s.foresee or s.own):
                         head["foresee"] = True  # (the next one planned here)
+                    if s.guess_due and s.awaiting is not None and s.basis is not None:
+                        head["awaits"] = s.basis.basis.version  # (once a newer one's basis)
                 chunk = encode_answer(head, ticks)
                 try:
                     self._reply_bytes(query, chunk)
@@ -722,8 +756,14 @@ class CellNode:
         (``"from": 0``), as a step query's guessed replies; the steps after it follow as
         further replies. Only before the first step query (later, or a copy of the request:
         the query is left unanswered, and the executor asks)."""
-        self._take_basis(ep, d.get("ahead"))
-        if ep.clock is not None or ep.last_step or ep.batch is not None:
+        a = d.get("ahead")
+        first = ep.clock is None and not ep.last_step and ep.batch is None
+        if isinstance(a, dict) and "brief" in a:
+            if first and ep.basis is None:
+                self._take_brief(ep, a["brief"])
+        else:
+            self._take_basis(ep, a)
+        if not first or "t" not in d:
             return None  # (a new spec's basis: taken in, for the next stretches)
         ahead = _Ahead.parse(d.get("ahead"))
         if ahead is None or ep.basis is None:
@@ -750,10 +790,13 @@ class CellNode:
         assert s.awaiting is not None
         if bs is not None and s.basis is not None and bs.basis.version > s.basis.basis.version:
             s.basis, s.q, s.awaiting = bs, bs.basis.q, None
+            self.stats.new_bases += 1
             return True
         if time.perf_counter() < s.awaiting:
             return False
         s.awaiting, s.foresee = None, False
+        self.stats.new_bases += 1
+        self.stats.waited_out += 1
         return True
 
     def _await_reset(self, query: Any) -> None:
@@ -774,6 +817,29 @@ class CellNode:
         while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
 
+    def _take_brief(self, ep: _Episode, d: Any) -> None:
+        """The executor's briefing (:class:`~hltl.bus.codec.WireBriefing`): its first
+        instruction, grounded here with the offline grounder while the executor grounds it,
+        makes the basis of its first spec (version 1, the monitor's initial state), until the
+        executor's own basis comes (its spec, compared in JSON form, replaces this one if it
+        differs). A malformed briefing is counted and dropped, as is an instruction that does
+        not ground (the executor gives up on it)."""
+        try:
+            w = WireBriefing.from_dict(d)
+        except BusError:
+            self.stats.malformed += 1
+            return
+        spec = ground_instruction(self._grounder, w.instruction, self.scene, None).spec
+        if spec is None:
+            return
+        monitor = HierarchyMonitor(spec)
+        basis = Basis(spec, 1, monitor.initial, _planner(w.algorithm, w.timeout))
+        forecast = None if w.check is None else w.check.forecast
+        wire = loads(dumps(spec_to_dict(spec)), "spec")
+        ep.basis = _Basis(basis, monitor, _check(w.check), forecast, wire)
+        self.stats.specs += 1
+        self.stats.briefed += 1
+
     def _take_basis(self, ep: _Episode, ahead: Any) -> None:
         """The executor's basis, as a step request carries it (a malformed one is dropped:
         the node then only takes hints)."""
@@ -787,6 +853,8 @@ class CellNode:
             ep.basis = None
         if ep.basis is not None and (known is None or known.basis.version < ep.basis.basis.version):
             self.stats.specs += 1
+        elif ep.basis is not None and known is not None and ep.basis.monitor is not known.monitor:
+            self.stats.respecs += 1  # (the executor's spec differs from the one grounded here)
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
         """The commands a step request carries (lockstep: a step's starts and halts ride the
@@ -968,6 +1036,8 @@ class CellNode:
                     answer["guessed"] = True
                     if s.foresee or s.own:  # (planned here: not the executor's hint)
                         answer["foresee"] = True
+                    if s.awaiting is not None and s.basis is not None:
+                        answer["awaits"] = s.basis.basis.version  # (a newer one's basis)
         return s, out
 
     def _foresight(self, ep: _Episode, s: _Stretch) -> None:

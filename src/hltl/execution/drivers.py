@@ -172,3 +172,37 @@ class Foresight(Protocol):
     def foresee(self, basis: Basis) -> None:
         """The executor's basis for its next decision (replaces any earlier one)."""
         ...
+
+
+@dataclass(frozen=True, slots=True)
+class Briefing:
+    """The episode's first instruction as the executor is about to ground it with the offline
+    grounder (before its first observation), with the planner and checks it will plan and
+    check the first step with (as in :class:`Basis`): a driver that runs ahead can ground it
+    and plan that step meanwhile, instead of after the executor's grounding
+    (:class:`Briefed`).
+
+    Attributes:
+        instruction: the text, as said.
+        planner: the executor's planner (a driver plans with it only if it knows how).
+        config: the executor's configuration (its checks before a dispatch), if any.
+        predictor: the executor's forecaster of people (for the intrusion check), if any.
+    """
+
+    instruction: str
+    planner: object
+    config: object = None
+    predictor: object = None
+
+
+@runtime_checkable
+class Briefed(Protocol):
+    """A driver that foresees (:class:`Foresight`) and can start on the first instruction
+    before the executor has grounded it (optional). The executor calls :meth:`brief` once,
+    before its first spec, when it is told the instruction is grounded with the offline
+    grounder (which the driver can run too); its :class:`Basis` follows as usual. Nothing
+    is committed and nothing in the executor depends on it."""
+
+    def brief(self, briefing: Briefing) -> None:
+        """The first instruction and what the first step will be planned and checked with."""
+        ...

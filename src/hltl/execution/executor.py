@@ -15,6 +15,8 @@ from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
     Basis,
+    Briefed,
+    Briefing,
     Expected,
     Foresight,
     Handle,
@@ -374,6 +376,17 @@ class Executor(TickTemplate):
     @property
     def running_actions(self) -> tuple[Action, ...]:
         return tuple(r.action for r in self._running if r.status is None)
+
+    def brief(self, instruction: str) -> None:
+        """The episode's first instruction, about to be grounded with the offline grounder
+        (``run_episode`` says so before it grounds): a driver that foresees and takes
+        briefings (:class:`~hltl.execution.drivers.Briefed`) is told it, with the planner and
+        checks the first step will be planned and checked with, so it can ground and plan
+        that step meanwhile. Nothing here depends on it."""
+        if self._foresee is None or self.spec is not None or not isinstance(self.driver, Briefed):
+            return
+        predictor = self.predictor if self._intrusion_on() else None
+        self.driver.brief(Briefing(instruction, self.planner, self.config, predictor))
 
     def assign(self, t: float, update: SpecUpdate) -> None:
         """A grounded instruction: the running spec with it merged in (paper GOAL event).

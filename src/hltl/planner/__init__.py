@@ -2,12 +2,23 @@
 
 from __future__ import annotations
 
+import contextlib
+import threading
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
-from hltl.planner.anytime import Certificate, _Found, certify, plan_anytime, with_fallback_plan
+from hltl.planner import lns, schedule
+from hltl.planner.anytime import (
+    Certificate,
+    _Found,
+    beside_possible,
+    certify,
+    plan_anytime,
+    with_fallback_plan,
+)
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.planner.search import ALGORITHMS, Live, _Search, plan_steps, search
@@ -18,6 +29,10 @@ from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import HierarchyMonitor, MonitorState
 from hltl.world.scene import Scene
 from hltl.world.state import WorldState
+
+if TYPE_CHECKING:
+    from multiprocessing.connection import Connection
+    from multiprocessing.process import BaseProcess
 
 # exact mode: the share of ``timeout`` (at most 1 s) kept for improving the plan that a
 # timed-out search returns (prioritized routing, docs/planner.md "Anytime mode")
@@ -105,7 +120,8 @@ def plan(
     result: PlanResult | None = None
     if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
         state = _Search(problem)
-        beside = _Beside(problem, t0 + timeout - reserve, on_progress)
+        deadline = t0 + timeout - reserve
+        beside = _Apart(problem, state, deadline, on_progress)
         with ThreadPoolExecutor(max_workers=1) as pool:
             try:
                 cert = certify(
@@ -113,9 +129,10 @@ def plan(
                     state,
                     t0 + CERTIFY_SHARE * timeout,
                     lambda first: beside.start(pool, first),
+                    beside.ahead,
                 )
             except BaseException:
-                beside.live.stopped = True  # (the pool waits for A* on the way out)
+                beside.stop()  # (the pool waits for A* on the way out)
                 raise
             result = beside.finish(cert)
         if cert.optimal is not None:
@@ -170,6 +187,13 @@ class _Beside:
         self.live = Live()
         self.future: Future[PlanResult] | None = None
 
+    def ahead(self) -> None:
+        """(A* on a thread starts only beside the full model.)"""
+
+    def stop(self) -> None:
+        """Stop A* (when the phase fails)."""
+        self.live.stopped = True
+
     def start(self, pool: ThreadPoolExecutor, first: _Found | None) -> None:
         """Start A* (with the prioritized plan's makespan as ``upper``)."""
         self.live.upper = None if first is None else first[0]
@@ -190,6 +214,143 @@ class _Beside:
         elif cert.best is not None and (self.live.upper is None or cert.best[0] < self.live.upper):
             self.live.upper = cert.best[0]
         return self.future.result()
+
+
+class _Apart:
+    """A* in a forked process of its own (``anytime.beside_possible``: two cores, ``fork``)
+    from the moment exact mode's first phase is known to run (``certify``'s ``ahead``). It
+    waits before each expansion while the phase asks CP-SAT as many questions at once as
+    there are cores (``lns.Busy``: the cheaper model's climb asks two levels in a round), so
+    it takes only the CPU the phase leaves (CP-SAT's import, the Python between rounds, the
+    second core while the full model's levels are asked one at a time, ``certify``'s
+    ``beside``) and all of it once the phase ends. A thread would take turns with the phase
+    on Python's lock. What it returns is decided as ``_Beside`` decides it, so the plan does
+    not depend on which ends first: the phase's proved plan (A* is stopped), else A*'s,
+    unless it is no shorter than the phase's best plan (whose makespan A* is sent as its
+    ``upper``, ``search.Live``). Where no process can be forked, or with ``on_progress``
+    (called in this process), A* runs on a thread beside the full model (``_Beside``)."""
+
+    def __init__(
+        self,
+        problem: Problem,
+        state: _Search,
+        deadline: float,
+        on_progress: Callable[[int, float], None] | None,
+    ) -> None:
+        self.problem = problem
+        self.state = state
+        self.deadline = deadline
+        # A* on a thread beside the full model instead, where no process can be forked or
+        # ``on_progress`` wants to be called
+        self.thread = _Beside(problem, deadline, on_progress)
+        self.apart = on_progress is None
+        self.proc: BaseProcess | None = None
+        self.results: Connection | None = None  # A*'s result comes on this
+        self.uppers: Connection | None = None  # smaller ``upper``s go to A* on this
+        self.upper: int | None = None
+
+    def ahead(self) -> None:
+        """Fork the process and start A* in it."""
+        if not (self.apart and beside_possible()):
+            return
+        import multiprocessing  # why: only 9-16-goal cells in exact mode need it
+
+        ctx = multiprocessing.get_context("fork")
+        self.results, result_end = ctx.Pipe(duplex=False)
+        upper_end, self.uppers = ctx.Pipe(duplex=False)
+        busy = lns.Busy(ctx.RawValue("i", 0))
+        proc = ctx.Process(
+            target=_apart_child,
+            args=(result_end, upper_end, busy, self.problem, self.state, self.deadline),
+            daemon=True,
+        )
+        proc.start()
+        self.proc = proc
+        lns.share_busy(busy)
+        result_end.close()  # (the child's copies stay open: their ends are the pipes' ends)
+        upper_end.close()
+
+    def start(self, pool: ThreadPoolExecutor, first: _Found | None) -> None:
+        """The prioritized plan's makespan is A*'s ``upper`` (the process runs already)."""
+        if self.proc is None:
+            self.thread.start(pool, first)
+        elif first is not None:
+            self._tell(first[0])
+
+    def finish(self, cert: Certificate) -> PlanResult | None:
+        """A*'s result once the phase has ended with ``cert`` (None: A* was not started, was
+        stopped because the phase proved a plan optimal, or its process died)."""
+        if self.proc is None or self.results is None:
+            return self.thread.finish(cert)
+        if cert.optimal is not None:
+            self.stop()
+            return None
+        if cert.best is not None:
+            self._tell(cert.best[0])
+        try:
+            got: PlanResult = self.results.recv()
+        except EOFError:
+            got = None  # type: ignore[assignment]
+        self.stop()
+        return got
+
+    def stop(self) -> None:
+        """End the process (if it still runs) and close the pipes."""
+        self.thread.stop()
+        lns.share_busy(None)
+        if self.proc is not None:
+            if self.proc.is_alive():
+                self.proc.terminate()
+            self.proc.join()
+        for conn in (self.results, self.uppers):
+            if conn is not None:
+                conn.close()
+
+    def _tell(self, upper: int) -> None:
+        if self.uppers is not None and (self.upper is None or upper < self.upper):
+            self.upper = upper
+            with contextlib.suppress(OSError):  # (A* has ended already)
+                self.uppers.send(upper)
+
+
+# ``_Apart``'s A* looks this often (s) whether the phase has left it a core
+APART_POLL = 0.002
+
+
+def _apart_child(
+    results: Connection,
+    uppers: Connection,
+    busy: lns.Busy,
+    problem: Problem,
+    state: _Search,
+    deadline: float,
+) -> None:
+    """``_Apart``'s process: A* until ``deadline``, its result sent on ``results``; a thread
+    passes every smaller ``upper`` that comes on ``uppers`` to the search (``search.Live``),
+    and the search waits while the parent asks CP-SAT a question on every core."""
+    live = Live()
+    cell = busy.cell
+    cores = schedule.WORKERS
+
+    def hold() -> None:
+        while cell.value >= cores and time.perf_counter() < deadline:
+            time.sleep(APART_POLL)
+
+    live.hold = hold
+
+    def listen() -> None:
+        try:
+            while True:
+                live.upper = uppers.recv()
+        except (EOFError, OSError):
+            return
+
+    threading.Thread(target=listen, daemon=True).start()
+    try:
+        left = deadline - time.perf_counter()
+        results.send(search(problem, timeout=left, state=state, live=live))
+    finally:
+        results.close()
 
 
 def _solved(problem: Problem, found: _Found, stats: SearchStats) -> PlanResult:

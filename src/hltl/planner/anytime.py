@@ -712,6 +712,7 @@ def certify(
     s: _Search,
     until: float,
     beside: Callable[[_Found | None], None] | None = None,
+    ahead: Callable[[], None] | None = None,
 ) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
@@ -721,7 +722,9 @@ def certify(
     Where none is proved, the shortest of those plans is handed back too (A* then looks only
     for shorter ones). ``beside`` is called (with the prioritized plan) when the cheaper
     model's schedule is no plan and the full model is to be asked: the caller may start A*
-    on the second core then, and the full model's levels are asked one at a time."""
+    on the second core then, and the full model's levels are asked one at a time. ``ahead``
+    is called once the phase is sure to run, before CP-SAT's import (the caller may start A*
+    in a process of its own then: ``planner._Apart``)."""
     none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
@@ -734,6 +737,8 @@ def certify(
     h0 = heur(start)  # (A* needs it too: memoised)
     if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
         return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
+    if ahead is not None:
+        ahead()
     # last: importing CP-SAT (and pandas with it) takes 0.5-1.5 s, which a cell left to A*
     # need not pay
     if not lns.available():

@@ -67,6 +67,33 @@ class Stop:
             solver.stop_search()
 
 
+class Busy:
+    """How many questions this process asks CP-SAT at once (``schedule``'s climb, which asks
+    ``WORKERS`` levels in a round), in a shared memory cell (``cell``, a ``multiprocessing``
+    ``RawValue`` made before a fork) that a forked process can read: exact mode's A* process
+    (``planner._Apart``) waits while the climb keeps every core busy. Installed with
+    ``share_busy``; only the thread that runs the climb writes it."""
+
+    def __init__(self, cell: Any) -> None:
+        self.cell = cell
+
+
+_busy: Busy | None = None
+
+
+def share_busy(busy: Busy | None) -> None:
+    """Write the climb's questions at once into ``busy`` from now on (None: stop)."""
+    global _busy
+    _busy = busy
+
+
+def note_busy(n: int) -> None:
+    """``n`` questions run at once now (read where ``share_busy`` installed a cell)."""
+    busy = _busy
+    if busy is not None:
+        busy.cell.value = n
+
+
 def solve_until(
     model: Any, deadline: float, seed: int, stop: Stop | None = None
 ) -> tuple[Any, Any] | None:

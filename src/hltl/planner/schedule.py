@@ -11,7 +11,7 @@ from functools import reduce
 from itertools import pairwise
 from typing import Any
 
-from hltl.planner.lns import Stop, solve_until
+from hltl.planner.lns import Stop, note_busy, solve_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.hierarchy import HSpec
@@ -293,6 +293,7 @@ def _shave(
             out_of_time = False
             dear = 0.0  # CP-SAT's time for the highest "no" of this round
             while running:
+                note_busy(len(running))  # (planner._Apart waits while every core is asked)
                 stopping = [stop for stop in asked.values() if stop.stopped]
                 done, _ = wait(
                     running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
@@ -317,6 +318,7 @@ def _shave(
                     for other in running.values():
                         if out_of_time or other <= proved or (lowest and other >= lowest[0]):
                             asked[other].stop()
+            note_busy(0)
             if out_of_time:
                 return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
             if skip and lowest is None:

@@ -262,6 +262,8 @@ def run_episode(
             )
         )
         said = [] if instruction is None else [instruction]
+        if instruction is not None and grounder is None and isinstance(executor, Executor):
+            executor.brief(instruction)  # (a driver that runs ahead may ground it meanwhile)
         # grounded before the first observation: a cell on the bus answers its reset meanwhile
         first = ground(said, executor)
         executor.update(0.0, sim.observe(0.0), first)
