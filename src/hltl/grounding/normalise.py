@@ -1327,6 +1327,18 @@ def _reordered(text: str, lexicon: Lexicon) -> str:
         second = _ids(m.group(4), lexicon)
         if not second or not second <= _ids(early, lexicon) or second & _ids(late, lexicon):
             return text
+    if not (_ids(late, lexicon, "human") | _ids(late, lexicon, "surface")):
+        # "Give Bob the apple, then the cup. Actually, cup first.": the second step shares the
+        # first one's verb and person, so the two objects change places
+        objs = [it for it in _names(early, lexicon) if it.refs[0].kind == "object"]
+        said = [it for it in _names(late, lexicon) if it.refs[0].kind == "object"]
+        if len(objs) != 1 or len(said) != 1 or not re.fullmatch(
+            rf"(?:the )?{re.escape(said[0].text)}", late.strip(), _F
+        ):
+            return text
+        at = early.lower().rfind(objs[0].text.lower())
+        swapped = early[:at] + said[0].text + early[at + len(objs[0].text) :]
+        return f"{swapped}, then the {objs[0].text}"
     return f"{late}, then {early}"
 
 

@@ -2896,13 +2896,14 @@ def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Ite
 
 def _not_appended_other(items: list[Item], k: int) -> None:
     """'Bob wants a mug, the other one', 'Give Alice the bottle, thanks, the other one': 'the
-    other' said after a comma and ending the clause, with nobody or nowhere of its own, could add
-    the other or correct the one named: refused ('…, and the other one to Carol' reads)."""
+    other' said after a comma (or as a sentence of its own) and ending the clause, with nobody
+    or nowhere of its own, could add the other or correct the one named: refused ('…, and the
+    other one to Carol' reads)."""
     j = k - 1
     if j >= 0 and items[j].kind == "word" and items[j].text.lower() == "the":
         j -= 1
-    if j < 0 or items[j].kind != "punct" or items[j].text != ",":
-        return
+    if j < 0 or items[j].kind != "punct" or items[j].text not in (",", ".", "?", "!"):
+        return  # "Could Bob have a mug? The other one.": a sentence of it alone, as after a comma
     said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
     if said & {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}:
         return  # "the green one... no, the other one": a correction, read as one
@@ -2913,8 +2914,8 @@ def _not_appended_other(items: list[Item], k: int) -> None:
         n += 1
     if n >= len(items) or (items[n].kind == "punct" and items[n].text in _END | {","}):
         raise GroundingError(
-            f"'{items[k].text}' after a comma could add the other one or correct the one "
-            "named: say 'and the other one' or name it"
+            f"'{items[k].text}' said after the one named could add the other one or correct "
+            "it: say 'and the other one' or name it"
         )
 
 
