@@ -387,6 +387,7 @@ def test_near_forms_of_corrections_are_refused(text: str, scene: Scene) -> None:
             "stapler>A & notebook>A",
             OFFICE,
         ),
+        ("Mr Lee and Mrs Khan are both awake now, pass him the jug", "jug>B", WARD),
         # run-ons and dictation
         ("Truck's here so the tape goes to Tom", "tape>B", DEPOT),
         ("Right lads listen up the hammer goes on the bench", "hammer@bench", WORKSHOP),
@@ -460,6 +461,14 @@ def test_near_forms_of_the_frames_are_refused(text: str, scene: Scene) -> None:
         ("I'm not sure, give Omar the spoon", LAB),
         ("Jess wants the screws. That's all from me and Jess.", WORKSHOP),
         ("I'm just off on my break, so the spoon goes in the sink, likewise", LAB),
+        # a correction after what is left out, a description, or an object said twice
+        ("Give Carol the apple instead of the cup, no, the red mug", CELL),
+        ("Give the cup to Bob, not to Carol, or was it Carol... yes, Carol", CELL),
+        ("Hand Alice the mug that's by the bottle, no, the crisps", CELL),
+        ("Give Alice the mug nearest to Bob. No, to Carol.", CELL),
+        ("Give Priya the pen nearest to her, or was it Sam... yes, Sam", OFFICE),
+        ("Bob. Chips. Bob needs the chips, no, the apple", CELL),
+        ("Marco and Mr Novak are both in now, pass him the lemon", KITCHEN),
     ],
 )
 def test_fuzz_findings_are_refused(text: str, scene: Scene) -> None:

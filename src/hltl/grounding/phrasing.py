@@ -1531,19 +1531,33 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
     left out; the correction could replace it or what it is left out of, so it is refused; so
     is one after a choice said again ('One box for Mia, the small one, no, the scanner')."""
     n = len(before)
-    while n > 0 and not _objects(before[n - 1]):
+    while n > 0 and before[n - 1].kind != "ent":
         if before[n - 1].kind == "punct" and before[n - 1].lemma in _END:
             return
         n -= 1
     m = n - 1
-    while m > 0 and _is(before[m - 1], "det"):
+    while m > 0 and _is(before[m - 1], "det", "to", "for"):
         m -= 1
-    if m > 0 and (_is(before[m - 1], "except") or before[m - 1].text.lower() == "not"):
+    if m > 0 and (
+        _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
+    ):
+        # "… except the green one, no, …", "… instead of the cup, no, …", "… rather than the
+        # cup, no, …", "… to Bob, not to Carol, no, …"
         raise GroundingError(
             f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}: does it change what is left "
             f"out, or what {_words_of(after[:3])!r} replaces? say the whole request again"
         )
-    if m > 1 and _is(before[m - 1], ","):
+    if _objects(before[n - 1]) and any(
+        _objects(x) and {r.id for r in x.refs} == {r.id for r in before[n - 1].refs}
+        for x in before[: n - 1]
+    ):
+        # "Bob. Chips. Bob needs the chips, no, the apple": the object was said twice; the
+        # correction takes back one saying of it, or both?
+        raise GroundingError(
+            f"{marker.text!r} after {before[n - 1].text!r}, said twice: does it take back both? "
+            "say the whole request again"
+        )
+    if m > 1 and _is(before[m - 1], ",") and _objects(before[n - 1]):
         # "One box for Mia, the small one, scratch that, the scanner": the one named last says
         # again which of a choice before it is meant; the correction could replace either
         said = {r.id for r in before[n - 1].refs}
@@ -4597,7 +4611,27 @@ def _choice_restated(items: list[Item]) -> list[Item]:
     return out
 
 
+def _described_then_corrected(items: list[Item]) -> list[Item]:
+    """'Give Priya the pen nearest to her, no, Sam', 'Give Alice the mug nearest to Bob. No, to
+    Carol.': a correction after a description measured from someone or something could change
+    what it is measured from or what it picks (the description is read before corrections):
+    refused."""
+    described: Item | None = None
+    for k, it in enumerate(items):
+        if _is(it, *_MEASURES):
+            described = it
+        pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
+        no = it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and pause
+        if described is not None and (_is(it, "correct") or no):
+            raise GroundingError(
+                f"{it.text!r} after a description ('{described.text} …'): does it change what "
+                "it is measured from, or what is picked? say the whole request again"
+            )
+    return items
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_described_then_corrected),
     _plain(_choice_restated),
     _plain(_any_order),
     _plain(_closing_also),
