@@ -80,6 +80,39 @@ KNOWN_MISSES = frozenset(
         # plan naming an object the request does not ("to move the large box") may ask for it
         "Mrs Khan is our new patient: the blue blanket for her, please",
         "Tom wants to move the large box, can he have the gloves?",
+        # blind13 (tuned on in session 15): the speaker handing over to a named group ('to the
+        # night staff') is a remark the general rule does not take off ('to' may name a
+        # recipient); 'the wee box' ('wee' read as a size the scene does not have)
+        "Evening, I'm just handing over to the night staff, so if you'd be good enough to put "
+        "the thermometer on the cart, thanks ever so",
+        "Aye, if ye could put the wee box on the belt, that'd be magic, ta",
+        "Aye, if ye could give Grandad the wee teddy, that'd be magic",
+        # blind13: 'Sorry' after a call and before a remark of two words ("Behind! Sorry, chef
+        # habit.") could correct; 'chef habit' opens with no speaker or hearer
+        "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
+        # blind13: a remark with a negation about the object ('hasn't had his pills') and 'them'
+        # for the pills
+        "Mr Lee hasn't had his pills, take them over, then the jug after",
+        # blind13 / causes15: two people said in a remark, then 'him'/'her': the grounder knows
+        # no one's sex from a first name, and a remark of two people is not taken off
+        "Ruth and Mr Lee are both here now, pass him the magazine",
+        "Marco and Lena are both in now, pass her the lemon",
+        # blind13: a run-on of three wants with 'he' for the third person (said by role and
+        # name) and 'do that last'
+        "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
+        "wanted the bowl but he can wait so do that last",
+        # blind13 / causes15: 'she won't need it' after two people: whose, and which 'it'
+        "Priya's leaving, give her the notepad, and Sam can have the stapler, she won't need it",
+        "Lena's off home, give her the lemon, and Marco can have the knife, she won't need it",
+        # blind13 / causes15: 'one of …' and 'the other two' (the grammar reads 'the other' for
+        # two objects only)
+        "Give Sam one of the pens and put the other two in the box",
+        "Give Tom one of the boxes and put the other two on the pallet",
+        # blind13: 'the kids' is not a name of the students
+        "Each of the kids gets a book",
+        # causes15: 'after those two' after three sentences of which the first two are meant
+        "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after those "
+        "two.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -97,8 +130,8 @@ KNOWN_MISSES = frozenset(
 # measured once at the end of session 12, its misses met in session 13: all asserted now;
 # "blind12" written in session 13 by another engineer, measured once at the end of session 13,
 # its misses met in session 14: asserted now; "blind13" written in session 14 by another
-# engineer, measured once at the end of session 14)
-MEASURED_ONLY = frozenset({"blind13", "causes15"})
+# engineer, measured once at the end of session 14, its misses met in session 15: asserted now)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -660,7 +660,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     person = {r.id for it in people for r in it.refs}
     thing = {r.id for it in things for r in it.refs}
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
-    body = ". ".join(c.strip(" ,:") for c in requests)
+    # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
+    body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
@@ -1326,6 +1327,20 @@ def _reordered(text: str, lexicon: Lexicon) -> str:
         second = _ids(m.group(4), lexicon)
         if not second or not second <= _ids(early, lexicon) or second & _ids(late, lexicon):
             return text
+    if not (_ids(late, lexicon, "human") | _ids(late, lexicon, "surface")):
+        # "Give Bob the apple, then the cup. Actually, cup first.": the second step shares the
+        # first one's verb and person, so the two objects change places
+        objs = [it for it in _names(early, lexicon) if it.refs[0].kind == "object"]
+        said = [it for it in _names(late, lexicon) if it.refs[0].kind == "object"]
+        if (
+            len(objs) != 1
+            or len(said) != 1
+            or not re.fullmatch(rf"(?:the )?{re.escape(said[0].text)}", late.strip(), _F)
+        ):
+            return text
+        at = early.lower().rfind(objs[0].text.lower())
+        swapped = early[:at] + said[0].text + early[at + len(objs[0].text) :]
+        return f"{swapped}, then the {objs[0].text}"
     return f"{late}, then {early}"
 
 
@@ -1845,7 +1860,8 @@ _SELF_ACTS = re.compile(
 
 _SELF_CHANGES = re.compile(
     r"\b(?:except|instead|rather|cancel|forget|skip|drop|swap|without|or|either|neither|nor|"
-    r"each|every|all|both|any)\b",
+    r"each|every|all|both|any|not sure|unsure|not certain|maybe|perhaps|probably|torn|"
+    r"mistaken|confused)\b|n't sure\b",
     _F,
 )
 
@@ -3224,8 +3240,9 @@ def _remark_clause(chunk: str, lexicon: Lexicon) -> bool:
     words = re.findall(r"[a-z']+", said)
     plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
     adjectives = {w for ws in _adjectives(lexicon).values() for w in ws}
-    for w in plain:
-        if w in adjectives or (w in VERBS and w not in _LIGHT_VERBS):
+    for n, w in enumerate(plain):
+        noun = n > 0 and plain[n - 1] in ("your", "my", "our")  # "hope your shift's going well"
+        if w in adjectives or (w in VERBS and w not in _LIGHT_VERBS and not noun):
             return False
     return _names_nothing(chunk, lexicon)
 
@@ -3259,7 +3276,7 @@ def _remarks15(text: str, lexicon: Lexicon) -> str:
     # "Sorry, force of habit.": the apology for a remark goes with it
     for k, c in enumerate(chunks):
         near = (k and drop[k - 1]) or (k + 1 < len(chunks) and drop[k + 1])
-        if near and re.fullmatch(r"(?:oh |so )?sorry(?: sorry)?", c.strip(), _F):
+        if near and _rx(r"(?:oh |so )?sorry(?: sorry)?").fullmatch(c.strip()):
             drop[k] = True
     if not any(drop) or all(drop):
         return text
@@ -3273,7 +3290,7 @@ def _remarks15(text: str, lexicon: Lexicon) -> str:
                     out[-1] = ". "
             continue
         if k and drop[k - 1]:
-            c = re.sub(r"^(?:but|so|and)\b,?\s*", "", c, flags=_F)
+            c = _rx(r"^(?:but|so|and)\b,?\s*").sub("", c)
         out.append(c)
         if k < len(seps):
             out.append(seps[k])
@@ -3288,13 +3305,26 @@ def _remarks15(text: str, lexicon: Lexicon) -> str:
 # Said of the speaker, none of these asks anything for them: 'before I go' is now, 'from me' and
 # 'that's us done' close the request.
 _SPEAKER_SIGN_OFFS = (
-    (r"\s*,?\s*\bbefore (?:i|we) (?:go|leave|head off|head home|clock off|finish)\b", ""),
-    (r"\b(that's|that is) (everything|all|it) from (?:me|us)\b", r"\1 \2"),
-    (r"\b(and )?that's us (?:done|finished|sorted)\b", r"\1that's it"),
+    (
+        r"\s*,?\s*\bbefore (?:i|we) (?:go|leave|head off|head home|clock off|finish)"
+        r"(?=\s*(?:[.,;!?]|$))",
+        "",
+    ),
+    (r"\b(that's|that is) (everything|all|it) from (?:me|us)(?=\s*(?:[.!]|$))", r"\1 \2"),
+    (r"\b(and )?that's us (?:done|finished|sorted)(?=\s*(?:[.!]|$))", r"\1that's it"),
 )
 
 
+def _said_any(text: str, words: tuple[str, ...]) -> bool:
+    """Whether ``text`` holds any of ``words`` (lower case): a cheap test before a rewrite's
+    patterns are tried."""
+    low = text.lower()
+    return any(w in low for w in words)
+
+
 def _sign_offs(text: str, lexicon: Lexicon) -> str:
+    if not _said_any(text, ("before i", "before we", "from me", "from us", "that's us")):
+        return text
     for pattern, repl in _SPEAKER_SIGN_OFFS:
         text = _drop(pattern, text, lexicon, repl)
     return " ".join(text.split())
@@ -3318,6 +3348,20 @@ _SILLY = (
 
 
 def _take_backs(text: str, lexicon: Lexicon) -> str:
+    if not _said_any(
+        text,
+        (
+            "what am i",
+            "tell a lie",
+            "scratch that",
+            "or, no",
+            "that's",
+            "let me",
+            "or was it",
+            "no,",
+        ),
+    ):
+        return text
     for pattern in _TAKE_BACKS:
         text = _sub(pattern, ", no, ", text)
     text = _sub(_SILLY, " No, ", text)
@@ -3342,12 +3386,10 @@ def _take_backs(text: str, lexicon: Lexicon) -> str:
 def _repeated_destination(text: str, lexicon: Lexicon) -> str:
     """'Salt to Marco, no, lemon to Marco': the correction names the same person or place again;
     the grammar's 'no, <object>' keeps them."""
-    m = re.search(
+    m = _rx(
         r"\b(to|on|in|onto|into) ([^,.;!?]+?),\s*no,\s*((?:the )?[a-z ]+?) (to|on|in|onto|into) "
-        r"([^,.;!?]+?)\s*([.!]?)$",
-        text,
-        _F,
-    )
+        r"([^,.;!?]+?)\s*([.!]?)$"
+    ).search(text)
     if m is None:
         return text
     there, again = _ids(m.group(2), lexicon), _ids(m.group(5), lexicon)
@@ -3366,42 +3408,40 @@ def _said_why(text: str, lexicon: Lexicon) -> str:
     "Hmm, actually, no, Sam needs it more." (the person the object goes to, said as a need). The
     reason is taken off only when it names what the correction names (else it is left, and
     refused)."""
-    m = re.search(r"^.*\b(?:no|sorry|actually),\s+(.+)$", text, _F)
+    if not _said_any(text, ("no,", "sorry,", "actually,")):
+        return text
+    m = _rx(r"^.*\b(?:no|sorry|actually),\s+(.+)$").search(text)
     if m is None:
         return text
     tail = m.group(1)
     parts = re.split(r",\s*", tail)
     if len(parts) < 2:
         # "…. Hmm, actually, no, Sam needs it more.": the object goes to Sam after all
-        n = re.fullmatch(r"([^,]+?) (?:needs|wants) it more\s*([.!]?)", tail.strip(), _F)
+        n = _rx(r"([^,]+?) (?:needs|wants) it more\s*([.!]?)").fullmatch(tail.strip())
         if n is not None and _only_person(n.group(1), lexicon):
             return text[: m.start(1)] + f"to {n.group(1)}{n.group(2)}"
         return text
     said, why = parts[0], ", ".join(parts[1:])
     why_plain = why.strip().rstrip(".!")
-    if re.fullmatch(
+    if _rx(
         r"(?:that's|that is|it's|it is|that one's) (?:nearer|closer|better|handier|easier|"
-        r"bigger|cleaner)(?: to (?:her|him|them))?",
-        why_plain,
-        _F,
-    ):
+        r"bigger|cleaner)(?: to (?:her|him|them))?"
+    ).fullmatch(why_plain):
         return text[: m.start(1)] + said + why[len(why.rstrip(".!")) :]
-    n = re.fullmatch(r"it's ([^,]+?) who (?:wanted|wants|asked for|needs|needed) it", why_plain, _F)
+    n = _rx(r"it's ([^,]+?) who (?:wanted|wants|asked for|needs|needed) it").fullmatch(why_plain)
     if (
         n is not None
         and _ids(n.group(1), lexicon) == _ids(said, lexicon)
         and _only_person(said, lexicon)
     ):
         return text[: m.start(1)] + said
-    n = re.fullmatch(
+    n = _rx(
         r"(?:he|she|they) (?:always |usually )?(?:has|have|wants|likes|prefers|uses) the (\w+)"
-        r"(?: one)?",
-        why_plain,
-        _F,
-    )
+        r"(?: one)?"
+    ).fullmatch(why_plain)
     if n is not None:
         ids = _ids(said, lexicon, "object")
-        if len(ids) == 1 and re.search(rf"\b{re.escape(n.group(1))}\b", said, _F):
+        if len(ids) == 1 and _rx(rf"\b{re.escape(n.group(1))}\b").search(said):
             return text[: m.start(1)] + said
     return text
 
@@ -3410,12 +3450,12 @@ def _redone(text: str, lexicon: Lexicon) -> str:
     """'…, and... no, leave the plate, put the tongs on the rack instead': the object left is the
     one just said, and what follows replaces it; "…, oh, not the green, the white cup": the one
     said after 'not the <word>' replaces the one that word named."""
-    m = re.search(
+    if not _said_any(text, ("leave the", "not the")):
+        return text
+    m = _rx(
         r"(?:,?\s*and)?\s*(?:\.\.\.|…)?\s*,?\s*\bno,\s*leave the ([a-z ]+?),\s*(.+?)\s+instead"
-        r"\s*([.!]?)$",
-        text,
-        _F,
-    )
+        r"\s*([.!]?)$"
+    ).search(text)
     if m is not None:
         before = text[: m.start()]
         left = _ids(m.group(1), lexicon, "object")
@@ -3423,18 +3463,18 @@ def _redone(text: str, lexicon: Lexicon) -> str:
         objs = [it for it in said_before if all(r.kind == "object" for r in it.refs)]
         if left and objs and {r.id for r in objs[-1].refs} <= left:
             new = m.group(2)
-            n = re.match(
-                r"^(?:put|place|give|hand|pass|take|bring) (?:(him|her|them) )?(.+)$", new, _F
+            n = _rx(r"^(?:put|place|give|hand|pass|take|bring) (?:(him|her|them) )?(.+)$").match(
+                new
             )
             if n is not None:
                 if n.group(1) and one_person(before, lexicon) is None:
                     return text
                 new = n.group(2)
             return _repeated_destination(f"{before.rstrip(' ,.')}, no, {new}{m.group(3)}", lexicon)
-    m = re.search(r",\s*(?:oh,?\s*)?not the (\w+),\s*(?=the )", text, _F)
+    m = _rx(r",\s*(?:oh,?\s*)?not the (\w+),\s*(?=the )").search(text)
     if m is not None:
         before = text[: m.start()]
-        if re.search(rf"\bthe {re.escape(m.group(1))} \w+", before, _F):
+        if _rx(rf"\bthe {re.escape(m.group(1))} \w+").search(before):
             return f"{before}, no, {text[m.end() :]}"
     return text
 
@@ -3442,6 +3482,8 @@ def _redone(text: str, lexicon: Lexicon) -> str:
 def _order_again(text: str, _lexicon: Lexicon) -> str:
     """'Actually reverse that, apple first.', 'swap that round, bowl first': the order said again
     is the one said after."""
+    if not _said_any(text, ("first",)):
+        return text
     return _sub(
         r"\b((?:actually|no|sorry|wait),?\s*)(?:reverse that|swap that(?: round| around)?|the other"
         r" way (?:round|around)|flip that)\s*,\s*(?=(?:the )?[a-z ]+ first\b)",
@@ -3464,12 +3506,10 @@ _THINGS = r"(?:things?|items?|bits?|objects?)"
 def _counted_things(text: str, lexicon: Lexicon) -> str:
     s = text.strip()
     # "Each person gets two things: Alice the cup, Bob the apple, Carol the chips"
-    m = re.match(
+    m = _rx(
         rf"^each (?:person|of them|one|of you)(?: gets?| will get| should get| needs?)? "
-        rf"(one|two|three|four|five|six) {_THINGS}\s*:\s*(.+)$",
-        s,
-        _F,
-    )
+        rf"(one|two|three|four|five|six) {_THINGS}\s*:\s*(.+)$"
+    ).match(s)
     if m is not None:
         n = _NUMBERS15[m.group(1).lower()]
         shares = _shares(m.group(2), lexicon)
@@ -3477,30 +3517,26 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
             return m.group(2)
         return text
     # "Two things in the sink: the bowl and the spoon"
-    m = re.match(
+    m = _rx(
         rf"^(one|two|three|four|five|six) {_THINGS} ((?:in|on|onto|into|for|to) [^,:]+?)\s*[:,]\s*"
-        r"(.+?)\s*([.!]?)$",
-        s,
-        _F,
-    )
+        r"(.+?)\s*([.!]?)$"
+    ).match(s)
     if m is not None:
         if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()]:
             return f"{m.group(3)} {m.group(2)}{m.group(4)}"
         return text
     # "Lena's getting two things today, the lemon and the knife", "Sam wants two pens, the blue
     # and the black", "Carol's taking the pair of them, the cup and the apple"
-    m = re.match(
+    m = _rx(
         r"^(.+?)(?:'s| is)? (getting|gets|wants|needs|taking|takes|would like|is having|'s having)"
         r" (?:(one|two|three|four|five|six) ([a-z]+)|the pair of them|both of them)"
-        r"(?: (?:today|tonight|this week|now|here))?\s*[:,]\s*(.+?)\s*([.!]?)$",
-        s,
-        _F,
-    )
+        r"(?: (?:today|tonight|this week|now|here))?\s*[:,]\s*(.+?)\s*([.!]?)$"
+    ).match(s)
     if m is not None and _only_person(m.group(1), lexicon):
         n = _NUMBERS15[(m.group(3) or "two").lower()]
         listed = m.group(5)
         kind = m.group(4)
-        if kind and not re.fullmatch(_THINGS, kind, _F):
+        if kind and not _rx(_THINGS).fullmatch(kind):
             cat = _kind_of(kind, lexicon)
             if cat is None:
                 return text
@@ -3515,12 +3551,10 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
             return f"{m.group(1)} {verb} {listed}{m.group(6)}"
         return text
     # "Both of the patients need a blanket: the blue one for Mr Lee and the grey one for …"
-    m = re.match(
+    m = _rx(
         r"^both (?:of )?(?:the )?([a-z]+)(?: here)? (?:need|want|get|should get) (?:a|an|one) "
-        r"([a-z]+)\s*:\s*(.+)$",
-        s,
-        _F,
-    )
+        r"([a-z]+)\s*:\s*(.+)$"
+    ).match(s)
     if m is not None:
         cat = _kind_of(m.group(2), lexicon)
         listed = m.group(3)
@@ -3592,13 +3626,13 @@ def _any_again(text: str, lexicon: Lexicon) -> str:
     which', 'Person A, either the bottle or the chips, whichever you reach first': the choice said
     again is taken off when a choice is already said before it."""
     pattern = rf"(\s*[,.?!]\s*)(?:{_ANY_WILL_DO}(?:\s*,\s*)?)+\s*([.!]?)\s*$"
-    m = re.search(pattern, text, _F)
+    m = _rx(pattern).search(text)
     if m is None:
         return text
     before = text[: m.start()]
-    if not re.search(r"\b(?:a|an|one of|any|either)\b|\bor\b", before, _F):
+    if not _rx(r"\b(?:a|an|one of|any|either)\b|\bor\b").search(before):
         return text
-    if re.search(r"\b(?:the other|the rest)\b", before, _F):
+    if _rx(r"\b(?:the other|the rest)\b").search(before):
         return text
     if m.group(1).strip() == "?":
         return f"{before}?"
@@ -3609,12 +3643,10 @@ def _either_of(text: str, lexicon: Lexicon) -> str:
     """'Either of the students can have the globe, Noah or Zoe', 'Either of them can have the
     lemon, Marco or Lena': the two named after (each must be one of the group named, if one is)
     can have it; 'Either Alice or Carol, whoever's nearer, gets the apple': the choice is theirs."""
-    m = re.match(
+    m = _rx(
         r"^either of (?:the ([a-z]+)|them|the two|you two)( can have| could have| gets?| can get"
-        r"| should get| may have)( .+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$",
-        text.strip(),
-        _F,
-    )
+        r"| should get| may have)( .+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$"
+    ).match(text.strip())
     if m is not None:
         a, b = m.group(4), m.group(5)
         if not (_only_person(a, lexicon) and _only_person(b, lexicon)):
@@ -3668,10 +3700,10 @@ def _not_first(text: str, lexicon: Lexicon) -> str:
     not one the request names, and a want said before the request for the same object is the
     request said twice; 'Not the pens, just the other bits, into the box': everything but them;
     'Leave the blue pen, put the other two in the box': the others of its kind, as many as said."""
-    m = re.match(r"^(no,\s*)?not ([^,]+?),\s*(.+)$", text.strip(), _F)
+    m = _rx(r"^(no,\s*)?not ([^,]+?),\s*(.+)$").match(text.strip())
     if m is not None:
         left, rest = m.group(2), m.group(3)
-        n = re.match(r"^just the other (?:bits|things|stuff|items|ones),?\s*(.+)$", rest, _F)
+        n = _rx(r"^just the other (?:bits|things|stuff|items|ones),?\s*(.+)$").match(rest)
         if n is not None and _ids(left, lexicon, "object"):
             return f"everything except {left} {n.group(1)}"
         said = _ids(left, lexicon)
@@ -3694,11 +3726,9 @@ def _not_first(text: str, lexicon: Lexicon) -> str:
             rest,
         )
         return rest
-    m = re.match(
-        r"^leave the ([a-z ]+?),\s*(put|give|hand|pass) (.*?)the other (one|two|three|four)\b(.*)$",
-        text.strip(),
-        _F,
-    )
+    m = _rx(
+        r"^leave the ([a-z ]+?),\s*(put|give|hand|pass) (.*?)the other (one|two|three|four)\b(.*)$"
+    ).match(text.strip())
     if m is not None:
         left = _ids(m.group(1), lexicon, "object")
         if len(left) != 1:
@@ -3735,7 +3765,7 @@ _FOR_WHAT = (
 
 
 def _wanted_for(text: str, lexicon: Lexicon) -> str:
-    if not re.search(r"\b(?:wants?|needs?|would like|wanting|says|said|after)\b", text, _F):
+    if not _rx(r"\b(?:wants?|needs?|would like|wanting|says|said|after)\b").search(text):
         return text
     for pattern, repl in _FOR_WHAT:
         text = _drop(pattern, text, lexicon, repl)
@@ -3770,51 +3800,95 @@ def _why_said_first(text: str, lexicon: Lexicon) -> str:
     is for, naming nothing else, is taken off (its he/she is theirs); 'Zoe dropped her book, the
     green one, pick it up and give it back to her' / 'Marco hasn't had his knife, take it over':
     the object the remark names is what 'it' is, and the person is who gets it."""
-    m = re.match(rf"^([^,]+?)\s*{_STATE}\s*,\s*(.+)$", text.strip(), _F)
+    # "Mr Lee and Mrs Khan are both awake now, pass him the jug": a remark about two people,
+    # as a sentence of its own (its he/she is read among them, or refused with both)
+    text = _sub(
+        r"^([^,]+?) and ([^,]+?) are both ([a-z]+)((?: now| here| in| up)?),\s*",
+        lambda x: (
+            f"{x.group(1)} and {x.group(2)} are {x.group(3)}{x.group(4)}. "
+            if _only_person(x.group(1), lexicon) and _only_person(x.group(2), lexicon)
+            else x.group(0)
+        ),
+        text,
+    )
+    m = _rx(rf"^([^,]+?)\s*{_STATE}\s*,\s*(.+)$").match(text.strip())
     if m is not None and _only_person(m.group(1), lexicon):
         who, rest = m.group(1), m.group(2)
-        rest = re.sub(r"\s+for (?:him|her|them)\b", "", rest, flags=_F)
-        rest = re.sub(
-            r"\b(give|hand|pass|bring|take) it (?:back )?to (?:him|her|them)\b",
-            lambda x: f"{x.group(1)} it to {who}",
-            rest,
-            flags=_F,
+        rest = _rx(r"\s+for (?:him|her|them)\b").sub("", rest)
+        rest = _rx(r"\b(give|hand|pass|bring|take) it (?:back )?to (?:him|her|them)\b").sub(
+            lambda x: f"{x.group(1)} it to {who}", rest
         )
-        rest = re.sub(
-            r"\b(give|hand|pass|bring|take) (?:him|her|them)\b",
-            lambda x: f"{x.group(1)} {who}",
-            rest,
-            flags=_F,
+        rest = _rx(r"\b(give|hand|pass|bring|take) (?:him|her|them)\b").sub(
+            lambda x: f"{x.group(1)} {who}", rest
         )
         return rest
-    m = re.match(
+    m = _rx(
+        r"^([^,]+?)(?:'s| is) [a-z]+ing (?:with )?(both|the|all) ([a-z ]+?)(?: today| this week| "
+        r"now| again)?,\s*(?:give|hand|pass|bring) them to (?:him|her|them)\s*([.!]?)$"
+    ).match(text.strip())
+    if m is not None and _only_person(m.group(1), lexicon):
+        # "Zoe's reading both books today, give them to her": what the remark names is 'them'
+        said = f"{m.group(2)} {m.group(3)}"
+        if len(_ids(said, lexicon, "object")) >= 2 and _fits(
+            next(iter(_ids(m.group(1), lexicon))), text, lexicon
+        ):
+            return f"give {m.group(1)} {said}{m.group(4)}"
+        return text
+    m = _rx(
+        r"^([^,]+?)(?:'s| has) lost (?:his|her|their) ([a-z ]+?)(?: again)?,\s*(?:can you |could "
+        r"you |please )?(give|hand|pass|bring) (him|her|them) (.+?)(?:,? while you're (?:there|at "
+        r"it))?\s*([.!?]?)$"
+    ).match(text.strip())
+    if m is not None and _only_person(m.group(1), lexicon):
+        # "Zoe's lost her ruler again, can you give her the ruler, and the glue while you're
+        # there": the remark names what the request gives her
+        lost = _ids(m.group(2), lexicon, "object")
+        if (
+            lost
+            and lost <= _ids(m.group(5), lexicon)
+            and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
+        ):
+            return f"{m.group(3)} {m.group(1)} {m.group(5)}{m.group(6)}"
+        return text
+    m = _rx(
         r"^([^,]+?) (?:dropped|lost|has lost|'s lost|hasn't had|has not had|hasn't got|forgot|"
         r"left|misplaced) (?:his|her|their) ([a-z ]+?)(?: again| yet)?(?:,\s*the ([a-z]+) one)?,\s*"
         r"(?:(?:pick|grab|get) it(?: up)? and )?(?:give|hand|pass|bring|take) it (?:back )?(?:over"
-        r"|to (?:him|her|them))\s*(.*)$",
-        text.strip(),
-        _F,
-    )
+        r"|to (?:him|her|them))\s*(.*)$"
+    ).match(text.strip())
     if m is not None and _only_person(m.group(1), lexicon):
         thing = f"the {m.group(3)} {m.group(2)}" if m.group(3) else f"the {m.group(2)}"
         ids = _ids(thing, lexicon, "object")
         if len(ids) != 1 or not _ids(m.group(2), lexicon):
             return text
-        return f"give {m.group(1)} {thing}{(' ' + m.group(4)) if m.group(4) else ''}"
+        rest = _rx(r"^(,?\s*then .+?) after$").sub(r"\1", m.group(4) or "")
+        sep = "" if not rest or rest.startswith(",") else " "
+        return f"give {m.group(1)} {thing}{sep}{rest}"
     return text
+
+
+def _them_one(text: str, lexicon: Lexicon) -> str:
+    """'Alice wants the apple. When they've got it, give them the chips too.': 'them' handed
+    something, after 'they' said of the one person named, is that person."""
+    if not _said_any(text, ("they",)) or one_person(text, lexicon) is None:
+        return text
+    if not _rx(r"\b(?:when|once|after|as soon as) they(?:'ve| have)?\b").search(text):
+        return text
+    who = one_person(text, lexicon)
+    return _sub(r"\b(give|hand|pass|bring) them (?=the |a |an )", rf"\1 {who} ", text)
 
 
 def _them_over(text: str, lexicon: Lexicon) -> str:
     """'Priya wants the stapler and the notepad; hand them over': to the one person who wants
     them."""
-    m = re.search(
-        r"[;.,]\s*(hand|pass|bring|take) (them|it) over\s*(,\s*please)?\s*([.!]?)$", text, _F
+    m = _rx(r"[;.,]\s*(hand|pass|bring|take) (them|it) over\s*(,\s*please)?\s*([.!]?)$").search(
+        text
     )
     if m is None:
         return text
     before = text[: m.start()]
     who = one_person(before, lexicon)
-    if who is None or not re.search(r"\b(?:wants?|needs?|would like)\b", before, _F):
+    if who is None or not _rx(r"\b(?:wants?|needs?|would like)\b").search(before):
         return text
     return f"{before}; give {m.group(2)} to {who}{m.group(4)}"
 
@@ -3826,7 +3900,9 @@ def _likewise(text: str, lexicon: Lexicon) -> str:
         r"(,\s*(?:and )?(?:the )?[a-z ]+?)\s*,?\s*(?:likewise|same thing|same again|the same)\s*"
         r"([.!]?)$",
         lambda m: (
-            f"{m.group(1)} too{m.group(2)}" if _ids(m.group(1), lexicon, "object") else m.group(0)
+            f"{m.group(1)} too{m.group(2)}"
+            if _only(re.sub(r"^,\s*(?:and )?", "", m.group(1)), lexicon, "object")
+            else m.group(0)
         ),
         text,
     )
@@ -3843,7 +3919,43 @@ _LEADS = (
 )
 
 
+# courtesy said as a condition, in other words: "if you'd be good enough to", "if ye could",
+# "Kindly do the needful and": each is "could you"; a clause of 'while' about people the scene
+# does not name ("while everyone settles down") is when, not a condition on a task
+_COURTESY_IFS = (
+    (
+        r"\bif (?:you|ye|yous|u)(?:'d| would)? be (?:so )?(?:kind|good) enough(?: as)? to\s+",
+        "if you could ",
+    ),
+    (
+        r"\bif (?:you|ye|yous|u)(?:'d| would)\s+(?=(?:give|hand|pass|bring|take|put|pop)\b)",
+        "if you could ",
+    ),
+    (r"\bif (?:ye|yous|u) (could|would|can)\b", r"if you \1"),
+    (r"\b(?:kindly |please )?do the needful,?\s+and\s+", ""),
+    (
+        r"^(?:right,?\s*|ok,?\s*|okay,?\s*)?while (?:everyone|everybody|the [a-z]+|we|they) "
+        r"[^,.;!?]+,\s*",
+        "",
+    ),
+    (
+        r"^(?:right,?\s*|ok,?\s*|okay,?\s*)?(?:handover|hand-over|notes for today|notes)\s*[.:]\s*",
+        "",
+    ),
+)
+
+
+def _courtesy_ifs(text: str, lexicon: Lexicon) -> str:
+    if not _said_any(text, ("if ", "needful", "while ", "handover", "hand-over", "notes")):
+        return text
+    for pattern, repl in _COURTESY_IFS:
+        text = _drop(pattern, text, lexicon, repl)
+    return " ".join(text.split())
+
+
 def _run_on_leads(text: str, lexicon: Lexicon) -> str:
+    if not _said_any(text, ("listen up", " so ")):
+        return text
     for pattern in _LEADS:
         text = _drop(pattern, text, lexicon)
     return text
@@ -3854,7 +3966,7 @@ def _dictated(text: str, lexicon: Lexicon) -> str:
     each place or recipient that another object follows, and the closing 'done' goes. Each part
     must then name one object and one place or recipient ('apple on the table cup done' is
     left, and refused)."""
-    m = re.search(r"\s+done\s*[.!]?$", text, _F)
+    m = _rx(r"\s+done\s*[.!]?$").search(text)
     if m is None or re.search(r"[,.;:!?]", text[: m.start()]):
         return text
     words = text[: m.start()].split()
@@ -3883,11 +3995,9 @@ def _dictated(text: str, lexicon: Lexicon) -> str:
 def _after_those(text: str, lexicon: Lexicon) -> str:
     """'… And the cup to Carol, after those two.': after every task said before, when there are
     that many."""
-    m = re.search(
-        r"\.\s*(?:and |then )?([^.]+?),\s*after (?:those|these|the) (two|three|four)\s*([.!]?)$",
-        text,
-        _F,
-    )
+    m = _rx(
+        r"\.\s*(?:and |then )?([^.]+?),\s*after (?:those|these|the) (two|three|four)\s*([.!]?)$"
+    ).search(text)
     if m is None:
         return text
     before = text[: m.start() + 1]
@@ -3900,12 +4010,10 @@ def _after_those(text: str, lexicon: Lexicon) -> str:
 def _can_wait(text: str, lexicon: Lexicon) -> str:
     """'Priya wants the stapler and Sam wants the notepad but he can wait so do that last': the
     want of the one who can wait comes after the other."""
-    m = re.match(
+    m = _rx(
         r"^(.+?) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
-        r"(?:that|his|hers|theirs|it|them) last\s*([.!]?)$",
-        text.strip(),
-        _F,
-    )
+        r"(?:that|his|hers|theirs|it|them) last\s*([.!]?)$"
+    ).match(text.strip())
     if m is None or not _only_person(m.group(2), lexicon):
         return text
     if not _fits(next(iter(_ids(m.group(2), lexicon))), m.group(0), lexicon):
@@ -3918,6 +4026,8 @@ def _asked_then_told(text: str, lexicon: Lexicon) -> str:
     """'How long would it take to get the bowl to Omar? Just do it, please.': the task asked
     about, then 'do it', is the request; 'Is there a book for Zoe? Either one will do.': any one;
     "Won't you pass Lena the knife?": a request."""
+    if not _said_any(text, ("how long", "is there", "won't you")):
+        return text
     text = _sub(
         r"^how long (?:does|would|will|might) it take to (.+?)\?\s*(?:just |please )?do it"
         r"(?:,? please)?\s*[.!]?$",
@@ -4070,6 +4180,7 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _asked_then_told,
     _run_on_leads,
+    _courtesy_ifs,
     _sign_offs,
     _take_backs,
     _order_again,
@@ -4083,6 +4194,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_things,
     _wanted_for,
     _why_said_first,
+    _them_one,
     _them_over,
     _likewise,
     _dictated,

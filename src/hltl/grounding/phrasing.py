@@ -155,6 +155,8 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
     """'The cup is for Bob?', 'Bob wants the cup?': a statement with a question mark (someone,
     or something, then its verb, in the clause the mark ends) asks whether it is so; it is not
     a request, unless its verb asks leave ('Grandad can have the wipes?')."""
+    while end > k and (_is(items[end - 1], ",") or items[end - 1].text.lower() in _THANKS_WORDS):
+        end -= 1  # "The stapler is for Priya, thanks?"
     if any(_is(x, ",") for x in items[k:end]):
         return False  # "Carol's thirsty, can you …?": the mark ends a later clause
     n = _past_dets(items, k)
@@ -173,6 +175,7 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
 
 
 _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't"})
+_THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx", "pls"})
 
 
 def _is_after(items: list[Item]) -> list[Item]:
@@ -1492,6 +1495,8 @@ def _corrections(items: list[Item]) -> list[Item]:
                     )
             if alone or said_no:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
+                while before and _is(before[-1], ",", "-", "filler"):
+                    before.pop()  # "Give Bob the bottle, please. Thanks, no, the crisps"
                 whole = True
             elif after:
                 raise GroundingError(
@@ -1515,9 +1520,53 @@ def _corrections(items: list[Item]) -> list[Item]:
                 f"{it.text!r} could change the whole sentence before it or only a part of it: "
                 "say the whole request again"
             )
+        _not_after_an_exclusion(before, after, it)
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
+
+
+def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item) -> None:
+    """'Ava can have any block except the green one, no, the bib': the last object said is one
+    left out; the correction could replace it or what it is left out of, so it is refused; so
+    is one after a choice said again ('One box for Mia, the small one, no, the scanner')."""
+    n = len(before)
+    while n > 0 and before[n - 1].kind != "ent":
+        if before[n - 1].kind == "punct" and before[n - 1].lemma in _END:
+            return
+        n -= 1
+    m = n - 1
+    while m > 0 and _is(before[m - 1], "det", "to", "for"):
+        m -= 1
+    if m > 0 and (
+        _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
+    ):
+        # "… except the green one, no, …", "… instead of the cup, no, …", "… rather than the
+        # cup, no, …", "… to Bob, not to Carol, no, …"
+        raise GroundingError(
+            f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}: does it change what is left "
+            f"out, or what {_words_of(after[:3])!r} replaces? say the whole request again"
+        )
+    if _objects(before[n - 1]) and any(
+        _objects(x) and {r.id for r in x.refs} == {r.id for r in before[n - 1].refs}
+        for x in before[: n - 1]
+    ):
+        # "Bob. Chips. Bob needs the chips, no, the apple": the object was said twice; the
+        # correction takes back one saying of it, or both?
+        raise GroundingError(
+            f"{marker.text!r} after {before[n - 1].text!r}, said twice: does it take back both? "
+            "say the whole request again"
+        )
+    if m > 1 and _is(before[m - 1], ",") and _objects(before[n - 1]):
+        # "One box for Mia, the small one, scratch that, the scanner": the one named last says
+        # again which of a choice before it is meant; the correction could replace either
+        said = {r.id for r in before[n - 1].refs}
+        earlier = next((x for x in reversed(before[: m - 1]) if _objects(x) or _is(x, *_END)), None)
+        if earlier is not None and _objects(earlier) and said < {r.id for r in earlier.refs}:
+            raise GroundingError(
+                f"{marker.text!r} after '{earlier.text}, {_words_of(before[m:n])}': does it "
+                "change the choice, or the one picked? say the whole request again"
+            )
 
 
 def _words_of(items: list[Item]) -> str:
@@ -2099,6 +2148,14 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 while end < len(items) and not (
                     items[end].kind == "punct" and items[end].lemma in _END
                 ):
+                    placed = any(_is(x, "to", "for", "on") for x in items[j + 1 : end])
+                    if _is(items[end], ",") and not placed and not _listed_on(items, end + 1):
+                        # "I need the thermometer, put the jug …", "We need the bottle, first
+                        # the apple to Carol": what follows the comma is not more of the list
+                        raise GroundingError(
+                            f"{_words_of(items[k:end])!r}: the speaker is not a person in the "
+                            f"scene; name the person who gets it; {lexicon.listing('human')}"
+                        )
                     end += 1
                 clause = items[j + 1 : end]
                 n = 0
@@ -2138,6 +2195,26 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             )
         k += 1
     return items
+
+
+def _listed_on(items: list[Item], k: int) -> bool:
+    """Whether ``items[k:]`` goes on with a list of objects up to a participle ('the cup and the
+    chips brought to Bob'): objects, articles, 'and', commas, then the participle; or with
+    only the recipient ('…, please, for Bob')."""
+    seen = joined = False
+    while k < len(items) and not (items[k].kind == "punct" and items[k].lemma in _END):
+        it = items[k]
+        if _objects(it):
+            seen = True
+        elif _is(it, "and"):
+            joined = True
+        elif not _is(it, "det", ",", "filler"):
+            # "the apple, the cup and the chips brought to Bob"; "the apple, please, for Bob"
+            if seen:
+                return joined and _is_verb_item(it)
+            return _is(it, "to", "for")
+        k += 1
+    return False
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
@@ -2833,13 +2910,14 @@ def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Ite
 
 def _not_appended_other(items: list[Item], k: int) -> None:
     """'Bob wants a mug, the other one', 'Give Alice the bottle, thanks, the other one': 'the
-    other' said after a comma and ending the clause, with nobody or nowhere of its own, could add
-    the other or correct the one named: refused ('…, and the other one to Carol' reads)."""
+    other' said after a comma (or as a sentence of its own) and ending the clause, with nobody
+    or nowhere of its own, could add the other or correct the one named: refused ('…, and the
+    other one to Carol' reads)."""
     j = k - 1
     if j >= 0 and items[j].kind == "word" and items[j].text.lower() == "the":
         j -= 1
-    if j < 0 or items[j].kind != "punct" or items[j].text != ",":
-        return
+    if j < 0 or items[j].kind != "punct" or items[j].text not in (",", ".", "?", "!"):
+        return  # "Could Bob have a mug? The other one.": a sentence of it alone, as after a comma
     said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
     if said & {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}:
         return  # "the green one... no, the other one": a correction, read as one
@@ -2850,8 +2928,8 @@ def _not_appended_other(items: list[Item], k: int) -> None:
         n += 1
     if n >= len(items) or (items[n].kind == "punct" and items[n].text in _END | {","}):
         raise GroundingError(
-            f"'{items[k].text}' after a comma could add the other one or correct the one "
-            "named: say 'and the other one' or name it"
+            f"'{items[k].text}' said after the one named could add the other one or correct "
+            "it: say 'and the other one' or name it"
         )
 
 
@@ -4533,7 +4611,27 @@ def _choice_restated(items: list[Item]) -> list[Item]:
     return out
 
 
+def _described_then_corrected(items: list[Item]) -> list[Item]:
+    """'Give Priya the pen nearest to her, no, Sam', 'Give Alice the mug nearest to Bob. No, to
+    Carol.': a correction after a description measured from someone or something could change
+    what it is measured from or what it picks (the description is read before corrections):
+    refused."""
+    described: Item | None = None
+    for k, it in enumerate(items):
+        if _is(it, *_MEASURES):
+            described = it
+        pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
+        no = it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and pause
+        if described is not None and (_is(it, "correct") or no):
+            raise GroundingError(
+                f"{it.text!r} after a description ('{described.text} …'): does it change what "
+                "it is measured from, or what is picked? say the whole request again"
+            )
+    return items
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_described_then_corrected),
     _plain(_choice_restated),
     _plain(_any_order),
     _plain(_closing_also),
