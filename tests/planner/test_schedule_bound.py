@@ -399,27 +399,15 @@ def test_asking_two_levels_at_once_changes_no_answer(
 def test_the_climb_says_how_many_questions_it_asks_at_once(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    # exact mode's A* process (planner._Apart) waits while the climb asks a level on every
-    # core: the climb writes how many questions run (2 in its rounds of two) and 0 when done
+    # exact mode's A* process (planner._Apart) is paused through the climb's rounds that ask
+    # a level on every core: the climb tells how many a round asks (2) and 0 when it ends
     from hltl.planner import lns
-
-    class Cell:
-        def __init__(self) -> None:
-            self.seen: list[int] = []
-
-        @property
-        def value(self) -> int:
-            return self.seen[-1] if self.seen else 0
-
-        @value.setter
-        def value(self, n: int) -> None:
-            self.seen.append(n)
 
     _, problem, s, node, tgts = _at_start("grid", 4, 1)
     level = max(0, round(s.heuristic(node)) // schedule.time_unit(problem) - 4)
     monkeypatch.setattr(schedule, "WORKERS", 2)
-    cell = Cell()
-    lns.share_busy(lns.Busy(cell))
+    seen: list[int] = []
+    lns.share_busy(seen.append)
     try:
         res = schedule._shave(
             problem,
@@ -437,4 +425,5 @@ def test_the_climb_says_how_many_questions_it_asks_at_once(
     finally:
         lns.share_busy(None)
     assert res.solved
-    assert 2 in cell.seen and cell.seen[-1] == 0 and max(cell.seen) == 2
+    assert seen[-1] == 0 and max(seen) == 2
+    assert all(a == 0 for a in seen[1::2]) and all(a > 0 for a in seen[::2])  # round, end

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import contextlib
+import os
+import signal
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -218,17 +220,18 @@ class _Beside:
 
 class _Apart:
     """A* in a forked process of its own (``anytime.beside_possible``: two cores, ``fork``)
-    from the moment exact mode's first phase is known to run (``certify``'s ``ahead``). It
-    waits before each expansion while the phase asks CP-SAT as many questions at once as
-    there are cores (``lns.Busy``: the cheaper model's climb asks two levels in a round), so
-    it takes only the CPU the phase leaves (CP-SAT's import, the Python between rounds, the
-    second core while the full model's levels are asked one at a time, ``certify``'s
-    ``beside``) and all of it once the phase ends. A thread would take turns with the phase
-    on Python's lock. What it returns is decided as ``_Beside`` decides it, so the plan does
-    not depend on which ends first: the phase's proved plan (A* is stopped), else A*'s,
-    unless it is no shorter than the phase's best plan (whose makespan A* is sent as its
-    ``upper``, ``search.Live``). Where no process can be forked, or with ``on_progress``
-    (called in this process), A* runs on a thread beside the full model (``_Beside``)."""
+    from the moment exact mode's first phase is known to run (``certify``'s ``ahead``). It is
+    paused (``SIGSTOP``, ``SIGCONT``) through each round in which the phase asks CP-SAT as
+    many questions at once as there are cores (``lns.share_busy``: the cheaper model's climb
+    asks two levels in a round), so it takes only the CPU the phase leaves (CP-SAT's import,
+    the Python between rounds, the second core while the full model's levels are asked one
+    at a time, ``certify``'s ``beside``) and all of it once the phase ends. A thread would
+    take turns with the phase on Python's lock. What it returns is decided as ``_Beside``
+    decides it, so the plan does not depend on which ends first: the phase's proved plan (A*
+    is stopped), else A*'s, unless it is no shorter than the phase's best plan (whose
+    makespan A* is sent as its ``upper``, ``search.Live``). Where no process can be forked,
+    or with ``on_progress`` (called in this process), A* runs on a thread beside the full
+    model (``_Beside``)."""
 
     def __init__(
         self,
@@ -248,6 +251,7 @@ class _Apart:
         self.results: Connection | None = None  # A*'s result comes on this
         self.uppers: Connection | None = None  # smaller ``upper``s go to A* on this
         self.upper: int | None = None
+        self.paused = False
 
     def ahead(self) -> None:
         """Fork the process and start A* in it."""
@@ -258,15 +262,14 @@ class _Apart:
         ctx = multiprocessing.get_context("fork")
         self.results, result_end = ctx.Pipe(duplex=False)
         upper_end, self.uppers = ctx.Pipe(duplex=False)
-        busy = lns.Busy(ctx.RawValue("i", 0))
         proc = ctx.Process(
             target=_apart_child,
-            args=(result_end, upper_end, busy, self.problem, self.state, self.deadline),
+            args=(result_end, upper_end, self.problem, self.state, self.deadline),
             daemon=True,
         )
         proc.start()
         self.proc = proc
-        lns.share_busy(busy)
+        lns.share_busy(self._busy)
         result_end.close()  # (the child's copies stay open: their ends are the pipes' ends)
         upper_end.close()
 
@@ -285,6 +288,7 @@ class _Apart:
         if cert.optimal is not None:
             self.stop()
             return None
+        self._busy(0)
         if cert.best is not None:
             self._tell(cert.best[0])
         try:
@@ -300,11 +304,20 @@ class _Apart:
         lns.share_busy(None)
         if self.proc is not None:
             if self.proc.is_alive():
-                self.proc.terminate()
+                self.proc.kill()  # (a paused process ends too)
             self.proc.join()
         for conn in (self.results, self.uppers):
             if conn is not None:
                 conn.close()
+
+    def _busy(self, questions: int) -> None:
+        # a round of ``questions`` at once begins (0: ends): A* pauses through one that
+        # takes every core
+        pause = questions >= schedule.WORKERS
+        if self.proc is not None and self.proc.pid is not None and pause != self.paused:
+            self.paused = pause
+            with contextlib.suppress(OSError):  # (A* has ended already)
+                os.kill(self.proc.pid, signal.SIGSTOP if pause else signal.SIGCONT)
 
     def _tell(self, upper: int) -> None:
         if self.uppers is not None and (self.upper is None or upper < self.upper):
@@ -313,30 +326,12 @@ class _Apart:
                 self.uppers.send(upper)
 
 
-# ``_Apart``'s A* looks this often (s) whether the phase has left it a core
-APART_POLL = 0.002
-
-
 def _apart_child(
-    results: Connection,
-    uppers: Connection,
-    busy: lns.Busy,
-    problem: Problem,
-    state: _Search,
-    deadline: float,
+    results: Connection, uppers: Connection, problem: Problem, state: _Search, deadline: float
 ) -> None:
     """``_Apart``'s process: A* until ``deadline``, its result sent on ``results``; a thread
-    passes every smaller ``upper`` that comes on ``uppers`` to the search (``search.Live``),
-    and the search waits while the parent asks CP-SAT a question on every core."""
+    passes every smaller ``upper`` that comes on ``uppers`` to the search (``search.Live``)."""
     live = Live()
-    cell = busy.cell
-    cores = schedule.WORKERS
-
-    def hold() -> None:
-        while cell.value >= cores and time.perf_counter() < deadline:
-            time.sleep(APART_POLL)
-
-    live.hold = hold
 
     def listen() -> None:
         try:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import importlib.util
 import threading
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -67,31 +67,24 @@ class Stop:
             solver.stop_search()
 
 
-class Busy:
-    """How many questions this process asks CP-SAT at once (``schedule``'s climb, which asks
-    ``WORKERS`` levels in a round), in a shared memory cell (``cell``, a ``multiprocessing``
-    ``RawValue`` made before a fork) that a forked process can read: exact mode's A* process
-    (``planner._Apart``) waits while the climb keeps every core busy. Installed with
-    ``share_busy``; only the thread that runs the climb writes it."""
-
-    def __init__(self, cell: Any) -> None:
-        self.cell = cell
+# told how many questions this process asks CP-SAT at once (``share_busy``)
+_busy: Callable[[int], None] | None = None
 
 
-_busy: Busy | None = None
-
-
-def share_busy(busy: Busy | None) -> None:
-    """Write the climb's questions at once into ``busy`` from now on (None: stop)."""
+def share_busy(busy: Callable[[int], None] | None) -> None:
+    """From now on, ``schedule``'s climb calls ``busy`` with how many questions it asks
+    CP-SAT in a round, at once (0 between its rounds; None: nobody is told). Exact mode's A*
+    process (``planner._Apart``) is paused through the rounds that ask one on every core."""
     global _busy
     _busy = busy
 
 
 def note_busy(n: int) -> None:
-    """``n`` questions run at once now (read where ``share_busy`` installed a cell)."""
+    """A round of ``n`` questions at once begins (0: it has ended); told to the
+    ``share_busy`` callback, if any."""
     busy = _busy
     if busy is not None:
-        busy.cell.value = n
+        busy(n)
 
 
 def solve_until(

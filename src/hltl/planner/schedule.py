@@ -288,12 +288,13 @@ def _shave(
                 for at in range(first, first + workers)
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
+            # (planner._Apart pauses A* through a round that asks a level on every core)
+            note_busy(len(levels))
             asked = {at: Stop() for at in levels}
             running = {pool.submit(ask, at, asked[at]): at for at in levels}
             out_of_time = False
             dear = 0.0  # CP-SAT's time for the highest "no" of this round
             while running:
-                note_busy(len(running))  # (planner._Apart waits while every core is asked)
                 stopping = [stop for stop in asked.values() if stop.stopped]
                 done, _ = wait(
                     running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED

@@ -37,14 +37,11 @@ Perm = tuple[int, ...] | None
 class Live:
     """What another thread may tell a running ``search`` (its ``live``): a smaller ``upper``
     (only plans cheaper than it are wanted from then on) or to stop (``stopped``: the search
-    returns ``timeout`` at its next expansion); ``hold``, when set, is called before every
-    expansion and returns when the search may go on (it changes when, never what, the search
-    expands)."""
+    returns ``timeout`` at its next expansion)."""
 
     def __init__(self, upper: int | None = None) -> None:
         self.upper = upper
         self.stopped = False
-        self.hold: Callable[[], None] | None = None
 
 
 class _Search:
@@ -442,8 +439,6 @@ def search(
         if now > deadline or (max_expansions is not None and expanded > max_expansions):
             return stop(now - t0)
         if live is not None:
-            if live.hold is not None:
-                live.hold()
             if live.stopped:
                 return stop(now - t0)
             if live.upper is not None and (upper is None or live.upper < upper):
