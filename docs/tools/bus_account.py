@@ -90,6 +90,10 @@ def _serve(endpoint: str, episodes: int, ready: Any, stop: Any, out: str) -> Non
         "_serve_steps",
         "_foreseen",
         "_next_query",
+        "_check",
+        "_ground_ahead",
+        "_take_brief",
+        "_step_cell",
     ):
         setattr(N.CellNode, name, _exclusive(acct, local, getattr(N.CellNode, name), name))
     for name in ("_saver", "world_to_wire", "encode_answer", "dumps", "loads"):

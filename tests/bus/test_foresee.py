@@ -164,6 +164,29 @@ def test_a_new_request_sends_its_basis(
     specs = [r for r in run.episode.records if r.type == "grounding" and r.spec is not None]
     assert len(specs) == 2
     assert run.node.stats.specs == len(specs)
+    # the node grounded the request itself as it simulated it (the executor briefed it: the
+    # offline grounder), the same spec the executor grounded later
+    assert run.node.stats.respecs == 0
+    if inline:
+        assert run.node.stats.grounded == 1
+
+
+@MODES
+def test_a_request_grounded_wrong_ahead_never_shows(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
+) -> None:
+    """The node grounds a second request to another spec than the executor will (here: it
+    hears another sentence): its guesses after it are wrong and undone, the executor's spec
+    replaces the node's, and the log is the in-process one."""
+    patient_foresight(monkeypatch)
+    if inline:
+        guesses_in_the_answer(monkeypatch)
+    real = node_module.ground_all
+    other = ["Also give Person B the cup."]
+    monkeypatch.setattr(node_module, "ground_all", lambda g, _texts, *a: real(g, other, *a))
+    run = _both(loopback, "2-2", 0)
+    if inline:
+        assert run.node.stats.grounded == 1 and run.node.stats.respecs == 1
 
 
 class _FirstOnly:

@@ -46,13 +46,13 @@ from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.perception.predict import ConstantVelocityPredictor
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
-from hltl.sim.instruct import ground_instruction
+from hltl.sim.instruct import ground_all, ground_instruction
 from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.skills.library import Action
 from hltl.skills.semantics import ActionSemantics
 from hltl.spec.hierarchy import spec_from_dict, spec_to_dict
-from hltl.spec.monitor import HierarchyMonitor, MonitorState
+from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
 
@@ -124,6 +124,7 @@ class NodeStats:
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
     new_bases: int = 0  # waits for a new spec's basis before foreseeing that it ended
     waited_out: int = 0  # of those, ended by FORESEE_WAIT (the hint used)
+    grounded: int = 0  # instructions grounded here, ahead of the executor (after a briefing)
     briefed: int = 0  # of those, first specs grounded here from the executor's briefing
     respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
@@ -161,6 +162,10 @@ class _Episode:
     # the observations along the cell's path, the last second of them (for the forecast the
     # executor's check makes: its forecaster has seen the same ones)
     recent: list[WorldState] = field(default_factory=list)
+    # the executor grounds with the offline grounder (it briefed the node): the node grounds
+    # the instructions it simulates too, and keeps the specs it made by version
+    offline: bool = False
+    grounded: dict[int, _Basis] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -379,6 +384,10 @@ class _Stretch:
     held_ctx: Any = None
     # until when (perf_counter) the node waits for the new spec's basis before it foresees
     awaiting: float | None = None
+    # the monitor state when the step simulated now started (None: not known here), and
+    # whether the node grounded an instruction of it itself (the executor replans after it)
+    q_now: MonitorState | None = None
+    regrounded: bool = False
 
 
 class CellNode:
@@ -817,6 +826,33 @@ class CellNode:
         while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
 
+    def _ground_ahead(self, ep: _Episode, s: _Stretch, instructions: list[str]) -> bool:
+        """Ground the instructions of a tick the stretch simulated, as the executor will when
+        its loop reaches it (the offline grounder, against its spec and the formulas done when
+        the step started), and make the new spec the stretch's basis (its monitor state
+        carried over by formula name, as the executor's): the node then foresees the step
+        after this one without waiting for the executor's basis. Only after a briefing (the
+        executor grounds with the offline grounder); True when a new spec was made."""
+        bs = s.basis
+        if not ep.offline or bs is None:
+            return False
+        spec, monitor, version = bs.basis.spec, bs.monitor, bs.basis.version
+        q, q_now = s.q, s.q if s.q_now is None else s.q_now
+        done = monitor.done(q_now)
+        for u in ground_all(self._grounder, instructions, self.scene, spec, done):
+            if u.spec is None:
+                continue
+            q, q_now = carry_over(spec, q, u.spec), carry_over(spec, q_now, u.spec)
+            spec, monitor, version = u.spec, HierarchyMonitor(u.spec), version + 1
+        if version == bs.basis.version:
+            return False
+        wire = loads(dumps(spec_to_dict(spec)), "spec")
+        basis = Basis(spec, version, q, bs.basis.planner)
+        s.basis = ep.grounded[version] = _Basis(basis, monitor, bs.check, bs.forecast, wire)
+        s.q, s.q_now = q, q_now
+        self.stats.grounded += 1
+        return True
+
     def _take_brief(self, ep: _Episode, d: Any) -> None:
         """The executor's briefing (:class:`~hltl.bus.codec.WireBriefing`): its first
         instruction, grounded here with the offline grounder while the executor grounds it,
@@ -836,7 +872,8 @@ class CellNode:
         basis = Basis(spec, 1, monitor.initial, _planner(w.algorithm, w.timeout))
         forecast = None if w.check is None else w.check.forecast
         wire = loads(dumps(spec_to_dict(spec)), "spec")
-        ep.basis = _Basis(basis, monitor, _check(w.check), forecast, wire)
+        ep.basis = ep.grounded[1] = _Basis(basis, monitor, _check(w.check), forecast, wire)
+        ep.offline = True
         self.stats.specs += 1
         self.stats.briefed += 1
 
@@ -845,15 +882,25 @@ class CellNode:
         the node then only takes hints)."""
         if not isinstance(ahead, dict) or "basis" not in ahead:
             return
-        known = ep.basis
+        prev = known = ep.basis
+        v = ahead["basis"].get("version") if isinstance(ahead["basis"], dict) else None
+        if isinstance(v, int) and v in ep.grounded and (known is None or known.basis.version < v):
+            known = ep.grounded[v]  # (grounded here ahead of the executor: kept if the same)
         try:
             ep.basis = _Basis.parse(ahead["basis"], known)
         except BusError:
             self.stats.malformed += 1
             ep.basis = None
-        if ep.basis is not None and (known is None or known.basis.version < ep.basis.basis.version):
+        if ep.basis is None:
+            return
+        if prev is None or prev.basis.version < ep.basis.basis.version:
             self.stats.specs += 1
-        elif ep.basis is not None and known is not None and ep.basis.monitor is not known.monitor:
+        if (
+            known is not None
+            and known.wire is not None
+            and known.basis.version == ep.basis.basis.version
+            and ep.basis.monitor is not known.monitor
+        ):
             self.stats.respecs += 1  # (the executor's spec differs from the one grounded here)
 
     def _parse_commands(self, ep: _Episode, items: Any) -> list[Command]:
@@ -1111,6 +1158,9 @@ class CellNode:
         node waits for the executor's new spec)."""
         if s.basis is None:
             return False
+        if s.regrounded:  # (an instruction grounded here: the executor replans)
+            s.regrounded = False
+            return True
         if s.said:  # (streamed, the node can wait for the new spec's basis; not in the answer)
             if not GUESS_STREAM:
                 return False
@@ -1165,7 +1215,9 @@ class CellNode:
             b.seq, self._seq = self._seq, b.seq0  # nothing is committed until the executor says
         steady = list(tick.unavailable) == s.unavailable and t_next < ahead.max_time - 1e-9
         s.done = _may_act(reports, b.latest) or not steady
-        s.said = s.said or bool(instructions)
+        regrounded = bool(instructions) and self._ground_ahead(ep, s, instructions)
+        s.said = s.said or (bool(instructions) and not regrounded)
+        s.regrounded = s.regrounded or regrounded
         if (
             s.done
             and steady
@@ -1183,6 +1235,9 @@ class CellNode:
                 s.held, s.foresee, s.guess_due = None, True, True
             else:
                 self._hold_or_start(ep, s, obs, t_next, s.held)
+        elif regrounded and steady and all(r.status.terminal for r in b.latest.values()):
+            # nothing runs: the executor replans for the new spec now, planned here
+            s.done, s.regrounded, s.foresee, s.guess_due = False, False, True, True
         b.ticks.append((t_next, obs, reports, None))
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
@@ -1242,6 +1297,7 @@ class CellNode:
         elif s.own:
             self.stats.checked += 1
         s.numbers = (step[-1][0] + 1, step[-1][1] + 1)
+        s.q_now = s.q
         if s.basis is not None:  # the monitor state once this step ends as planned
             q = after_step(
                 self._semantics_of(), s.basis.monitor, s.q, world, [a for _, _, a in step]
