@@ -61,7 +61,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # (written in session 14 by another engineer and committed alone, reviewed by a second engineer,
 # never opened by the engineer who changed the grounder before its one measurement at the end of
 # session 14; tuned on in session 15), causes15 (session 15: fresh variants of each cause of
-# blind13's refusals, written BEFORE the changes for them; measured once, then tuned on).
+# blind13's refusals, written BEFORE the changes for them; measured once, then tuned on), blind14
+# (written in session 15 by another engineer and committed alone, reviewed by a second engineer,
+# never opened by the engineer who changed the grounder before its one measurement at the end of
+# session 15; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -88,6 +91,7 @@ PARTS = (
     "causes14",
     "blind13",
     "causes15",
+    "blind14",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
