@@ -385,8 +385,9 @@ class Executor(TickTemplate):
         that step meanwhile. Nothing here depends on it."""
         if self._foresee is None or self.spec is not None or not isinstance(self.driver, Briefed):
             return
-        predictor = self.predictor if self._intrusion_on() else None
-        self.driver.brief(Briefing(instruction, self.planner, self.config, predictor))
+        self.driver.brief(
+            Briefing(instruction, self.planner, self.config, self._check_forecaster())
+        )
 
     def assign(self, t: float, update: SpecUpdate) -> None:
         """A grounded instruction: the running spec with it merged in (paper GOAL event).
@@ -734,8 +735,21 @@ class Executor(TickTemplate):
             return
         after = self._after_running()
         q = self.q if after is None else after[1]
-        predictor = self.predictor if self._intrusion_on() else None
-        self._foresee(Basis(self.spec, self._spec_version, q, self.planner, self.config, predictor))
+        self._foresee(
+            Basis(
+                self.spec,
+                self._spec_version,
+                q,
+                self.planner,
+                self.config,
+                self._check_forecaster(),
+            )
+        )
+
+    def _check_forecaster(self) -> object:
+        """The forecaster of people a driver needs to run the executor's intrusion check (None
+        when that check is off): sent in a briefing and a basis."""
+        return self.predictor if self._intrusion_on() else None
 
     # -- deciding --------------------------------------------------------------------------------
 

@@ -189,9 +189,6 @@ class _Beside:
         self.live = Live()
         self.future: Future[PlanResult] | None = None
 
-    def ahead(self) -> None:
-        """(A* on a thread starts only beside the full model.)"""
-
     def stop(self) -> None:
         """Stop A* (when the phase fails)."""
         self.live.stopped = True

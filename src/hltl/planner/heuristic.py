@@ -69,9 +69,7 @@ class Heuristic:
         self._hot: dict[object, Hot] = {}
         self._robot_entries: dict[tuple[MonitorState, int], _RobotEntry] = {}
         self._all_entries: dict[MonitorState, tuple[_RobotEntry, ...]] = {}
-        self._digits: dict[
-            tuple[int, tuple[Atom, ...], int], tuple[list[_Job | None], list[int], int]
-        ] = {}
+        self._digits: dict[tuple[int, tuple[Atom, ...], int], _Digits] = {}
         self._contrib: dict[
             tuple[tuple[Atom, ...], int], tuple[tuple[int, float, float, float], ...]
         ] = {}
