@@ -16,6 +16,7 @@ from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
 from hltl.planner import PlanStatus, anytime, plan, profile
 from hltl.planner.problem import Problem, to_seconds, to_ticks
+from hltl.planner.schedule import time_unit
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
@@ -143,6 +144,28 @@ def test_a_level_the_relaxation_rules_out_has_no_plan() -> None:
     assert profile.feasible(problem, graph, node, tgts, to_ticks(3.3), deadline) is True
     exact = plan(c.scene, c.spec, timeout=DEADLINE_S)
     assert exact.makespan == pytest.approx(3.3)
+
+
+@pytest.mark.parametrize(
+    ("layout", "n", "seed"), [("grid", 4, 1), ("grid", 5, 0), ("random", 4, 0)]
+)
+def test_presolve_changes_how_fast_not_what_a_level_answers(layout: str, n: int, seed: int) -> None:
+    # the questions are asked without CP-SAT's presolve (session 16: the hard "no"s near the
+    # bound take 2-7 times less CPU): a solver setting, so at the bound and one unit below it
+    # the answers are those with presolve, and "no" below, "yes" at the relaxation's optimum
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    got = _bound(c.scene, c.spec)
+    assert got is not None and got[2]  # solved: "yes" at got[0], "no" one unit below
+    unit = time_unit(problem)
+    for level, expected in ((got[0] - unit, False), (got[0], True)):
+        for presolve in (False, True):
+            deadline = time.perf_counter() + DEADLINE_S
+            answer = profile.feasible(
+                problem, graph, node, tgts, level, deadline, presolve=presolve
+            )
+            assert answer is expected, (level, presolve)
 
 
 def test_cells_without_fixed_durations_are_outside_the_class() -> None:

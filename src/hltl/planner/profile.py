@@ -15,6 +15,9 @@ from hltl.planner.relaxed import RelaxedGraph, _dijkstra
 from hltl.planner.schedule import Target, time_unit
 
 _FAR = 1 << 30  # "no route" in instance counts
+# CP-SAT's presolve on the profile model's questions: off (docs/planner.md, "Profile bound",
+# session 16: the hard "no"s near the bound took 2-7 times less CPU without it)
+PRESOLVE = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +46,7 @@ def feasible(
     deadline: float,
     *,
     seed: int = 0,
+    presolve: bool = PRESOLVE,
 ) -> bool | None:
     """Whether the profile relaxation has a solution ending by ``level`` ticks: False when
     CP-SAT proved it has none (then every plan from ``node`` that makes every target happen is
@@ -126,7 +130,7 @@ def feasible(
             return None
         for d in durations:
             _robot_rows(m, jobs, d, counts, fires_of, count[d])
-    solved = solve_until(m, deadline, seed)
+    solved = solve_until(m, deadline, seed, presolve=presolve)
     if solved is None:
         return None
     _, status = solved
