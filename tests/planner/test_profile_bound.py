@@ -3,10 +3,12 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -270,6 +272,31 @@ def test_each_level_proved_is_told_as_it_is_proved() -> None:
     )
     assert got.ticks == to_ticks(3.3)
     assert told and told == sorted(told) and told[-1] == got.ticks
+
+
+def test_the_climb_skips_at_most_max_stride_levels(monkeypatch: pytest.MonkeyPatch) -> None:
+    # from a floor of 0 the climb gallops up to grid 4 x 4 seed 1's 3.3 s: the strides double
+    # to MAX_STRIDE and no further (a relaxed solution far up is dear without presolve), and
+    # the bound is the same as one level at a time would give
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    asked: list[int] = []
+    real = profile.feasible
+
+    def spy(*args: Any, **kwargs: Any) -> bool | None:
+        asked.append(args[4])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(profile, "feasible", spy)
+    got = profile.profile_bound(
+        problem, graph, node, tgts, floor=0, upper=None, deadline=time.perf_counter() + DEADLINE_S
+    )
+    assert got.ticks == to_ticks(3.3) and got.solved
+    unit = time_unit(problem)
+    steps = [(b - a) // unit for a, b in itertools.pairwise(asked) if b > a]
+    assert steps[:3] == [2, 4, 4]  # (from 0: "no"s far below the bound)
+    assert max(steps) == profile.MAX_STRIDE
 
 
 def _beside(floor: float, deadline: float) -> anytime._ProfileBeside:
