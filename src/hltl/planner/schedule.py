@@ -291,35 +291,41 @@ def _shave(
             # (planner._Apart pauses A* through a round that asks a level on every core)
             note_busy(len(levels))
             asked = {at: Stop() for at in levels}
-            running = {pool.submit(ask, at, asked[at]): at for at in levels}
-            out_of_time = False
-            dear = 0.0  # CP-SAT's time for the highest "no" of this round
-            while running:
-                stopping = [stop for stop in asked.values() if stop.stopped]
-                done, _ = wait(
-                    running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
-                )
-                for stop in stopping:
-                    stop.stop()  # again: a solve may have begun after the first call
-                for future in sorted(done, key=running.__getitem__):
-                    at = running.pop(future)
-                    if asked[at].stopped:
-                        continue  # another answer implies this one
-                    found, dt = future.result()
-                    if found is None:
-                        out_of_time = True
-                    elif found is False:
-                        if at > proved:
-                            proved, dear = at, dt
-                    else:
-                        got = None if found is True else found
-                        res = ScheduleBound(max(floor, at * unit), True, len(tgts), got)
-                        if lowest is None or at < lowest[0]:
-                            lowest = (at, res)
-                    for other in running.values():
-                        if out_of_time or other <= proved or (lowest and other >= lowest[0]):
-                            asked[other].stop()
-            note_busy(0)
+            try:
+                running = {pool.submit(ask, at, asked[at]): at for at in levels}
+                out_of_time = False
+                dear = 0.0  # CP-SAT's time for the highest "no" of this round
+                while running:
+                    stopping = [stop for stop in asked.values() if stop.stopped]
+                    done, _ = wait(
+                        running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
+                    )
+                    for stop in stopping:
+                        stop.stop()  # again: a solve may have begun after the first call
+                    for future in sorted(done, key=running.__getitem__):
+                        at = running.pop(future)
+                        if asked[at].stopped:
+                            continue  # another answer implies this one
+                        found, dt = future.result()
+                        if found is None:
+                            out_of_time = True
+                        elif found is False:
+                            if at > proved:
+                                proved, dear = at, dt
+                        else:
+                            got = None if found is True else found
+                            res = ScheduleBound(max(floor, at * unit), True, len(tgts), got)
+                            if lowest is None or at < lowest[0]:
+                                lowest = (at, res)
+                        for other in running.values():
+                            if out_of_time or other <= proved or (lowest and other >= lowest[0]):
+                                asked[other].stop()
+            finally:
+                # (also when a question raised: the others are stopped, so that the pool need
+                # not wait for them, and a paused A* is never left paused)
+                for stop in asked.values():
+                    stop.stop()
+                note_busy(0)
             if out_of_time:
                 return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
             if skip and lowest is None:
