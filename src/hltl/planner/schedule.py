@@ -188,49 +188,41 @@ def schedule_bound(
         if upper is not None or accept is None or not steps
         else _Whole(problem, graph, node, tgts, deadline, seed, accept)
     )
+
+    def shave(
+        at: int, steps: bool, weak: bool, whole_first: bool = False, workers: int | None = None
+    ) -> ScheduleBound:
+        return _shave(
+            problem,
+            graph,
+            node,
+            tgts,
+            at,
+            upper,
+            deadline,
+            seed,
+            floor,
+            steps,
+            weak,
+            whole_first,
+            workers,
+            whole,
+        )
+
     try:
         if steps and upper is not None:
             res = _bisect(
                 problem, graph, node, tgts, level, upper // unit, deadline, seed, floor, not weak
             )
         else:
-            res = _shave(
-                problem,
-                graph,
-                node,
-                tgts,
-                level,
-                upper,
-                deadline,
-                seed,
-                floor,
-                steps,
-                weak,
-                whole=whole,
-            )
+            res = shave(level, steps, weak)
         if accept is None or res.steps is None or accept(res.steps):
             return res
-        level = res.ticks // unit
         workers = None
         if before_full is not None:
             before_full()
             workers = 1
-        return _shave(
-            problem,
-            graph,
-            node,
-            tgts,
-            level,
-            upper,
-            deadline,
-            seed,
-            floor,
-            True,
-            False,
-            True,
-            workers,
-            whole=whole,
-        )
+        return shave(res.ticks // unit, True, False, True, workers)
     finally:
         if whole is not None:
             whole.close()
