@@ -8,6 +8,7 @@ from hltl.bench.cells import (
     CELL_LAYOUTS,
     FAMILIES,
     CellRow,
+    _stolen,
     delivery_cell,
     format_cells,
     mixed_cell,
@@ -54,3 +55,26 @@ def test_rows_and_table() -> None:
     assert "| deliveries | grid | 3 × 3 | 2 |" in table
     assert "| deliveries | line | 9 × 9 | 1 | – | – | – | – | – | – |" in table
     assert row.exact_cpu_median_s is not None and row.exact_cpu_median_s > 0
+
+
+def test_the_exact_line_tells_waiting_from_working(monkeypatch: pytest.MonkeyPatch) -> None:
+    # line 6 seed 5 with the first phase (more than PAIRS_UP_TO goals): A* runs in a process
+    # of its own, so the line shows that process's CPU, when the phase ended and the pause
+    from hltl.planner import anytime
+
+    if not anytime.beside_possible():
+        pytest.skip("needs two cores and fork")
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    c = delivery_cell("line", 6, 5)
+    seen: list[str] = []
+    run_cells([c], exact_timeout=120, anytime_budgets=None, on_cell=lambda _, s: seen.append(s))
+    assert len(seen) == 1
+    line = seen[0]
+    assert line.startswith("exact solved ") and "A*'s process " in line
+    assert "phase ended at " in line and "A* paused " in line
+    # a cell left to A* alone (the phase does not run below PAIRS_UP_TO goals) says neither
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 8)
+    run_cells([c], exact_timeout=120, anytime_budgets=None, on_cell=lambda _, s: seen.append(s))
+    assert "phase ended" not in seen[1] and "A*'s process" not in seen[1]
+    if (stolen := _stolen()) is not None:  # (Linux: the steal column of /proc/stat)
+        assert stolen >= 0 and "stolen by the host" in line

@@ -114,6 +114,65 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     assert (level + 1, True, False, True) not in asked  # the full model not needed there
 
 
+def test_sessions_whole_asked_ahead_give_the_same_bound_and_plan(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # random 5 seed 0 from 5.6 s: the cheaper model's first round asks 5.6 and 5.7 s at once;
+    # held until 5.7's schedule (no plan) has come, 5.6 leaves a core free, on which sessions
+    # whole at 5.7 are asked ahead (schedule._Whole); 5.6 says "no", so the full model's climb
+    # starts at 5.7 and takes that answer instead of asking again. Bound and plan are the
+    # ones found without asking ahead (a mutation that asks again, or takes another level's
+    # answer, is caught)
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    c = delivery_cell("random", 5, 0)
+    real = schedule.relaxed_steps
+    came, ahead_asked, low_done = threading.Event(), threading.Event(), threading.Event()
+    asked: list[tuple[int, bool, bool, bool]] = []  # level, holders, whole, 5.6 s still open
+
+    def held(*args: object, **kwargs: object) -> object:
+        level, holders, whole = args[4], kwargs.get("holders", True), kwargs.get("whole", False)
+        assert isinstance(level, int)
+        asked.append((level, bool(holders), bool(whole), not low_done.is_set()))
+        if (level, whole) == (57, True):
+            ahead_asked.set()
+        if (level, holders) == (56, False):
+            assert came.wait(120)
+            ahead_asked.wait(30)  # (never set without asking ahead)
+        got = real(*args, **kwargs)  # type: ignore[arg-type]
+        if (level, holders) == (57, False):
+            assert isinstance(got, tuple)
+            came.set()
+        if (level, holders) == (56, False):
+            assert got is False
+            low_done.set()
+        return got
+
+    def bound(ahead: bool) -> tuple[int, object]:
+        problem = Problem(c.scene, c.spec)
+        s = _Search(problem)
+        start = problem.start()
+        for event in (came, ahead_asked, low_done):
+            event.clear()
+        asked.clear()
+        if not ahead:
+            ahead_asked.set()
+        with monkeypatch.context() as m:
+            m.setattr(schedule, "relaxed_steps", held)
+            if not ahead:
+                m.setattr(schedule._Whole, "ahead", lambda *_: None)
+            floor = 56 * schedule.time_unit(problem)
+            return anytime.step_bound(problem, s, start, floor, None, math.inf)
+
+    with_ahead = bound(True)
+    first = list(asked)
+    without = bound(False)
+    assert with_ahead == without and with_ahead[0] == to_ticks(5.8)
+    # sessions whole at 5.7 s asked once, ahead, while 5.6 s was open; without asking ahead,
+    # asked by the full model's climb once 5.6 s had said "no"
+    assert [a for a in first if a[:3] == (57, True, True)] == [(57, True, True, True)]
+    assert [a for a in asked if a[:3] == (57, True, True)] == [(57, True, True, False)]
+
+
 @pytest.mark.parametrize(
     ("layout", "n", "seed"),
     [("grid", 4, 1), ("grid", 5, 0), ("grid", 3, 4), ("random", 4, 0), ("line", 4, 1)],

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from hltl.planner import PlanStatus, plan
+from hltl.planner import PlanResult, PlanStatus, plan
 from hltl.sim.scenarios import DURATIONS, SPACING, delivery_chain, generate
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, scene_from_dict
@@ -209,6 +209,38 @@ def _cpu_with_children() -> float:
     return time.process_time() + kids.ru_utime + kids.ru_stime
 
 
+def _children_cpu() -> float:
+    """The CPU time (user + system) of this process's ended children."""
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return kids.ru_utime + kids.ru_stime
+
+
+def _stolen() -> float | None:
+    """Seconds of CPU the host has taken from this (virtual) machine since it booted, summed
+    over its CPUs (``steal`` in /proc/stat; None where there is none)."""
+    try:
+        with open("/proc/stat") as f:
+            fields = f.readline().split()
+        return int(fields[8]) / os.sysconf("SC_CLK_TCK")
+    except (OSError, IndexError, ValueError):
+        return None
+
+
+def _exact_line(res: PlanResult, cpu: float, kids: float, stolen: float | None) -> str:
+    """One exact run as the benchmark shows it: status, wall and CPU time and, where A* ran in
+    a process of its own beside the first phase, that process's CPU, when the phase ended and
+    how long A* was paused, and the CPU time the host took from the machine meanwhile (what
+    tells a run that waited from one that worked)."""
+    line = f"exact {res.status.value} {res.stats.seconds:.2f} s ({cpu:.2f} s CPU"
+    if res.stats.phase is not None:
+        line += f", A*'s process {kids:.2f} s; phase ended at {res.stats.phase:.2f} s"
+    if res.stats.held is not None:
+        line += f", A* paused {res.stats.held:.2f} s"
+    if stolen is not None:
+        line += f"; {stolen:.2f} s stolen by the host"
+    return line + ")"
+
+
 def run_cells(
     cells: Sequence[Cell],
     *,
@@ -230,17 +262,17 @@ def run_cells(
         long: list[float] = []
         for c in group:
             if exact_timeout is not None:
-                cpu0 = _cpu_with_children()
+                cpu0, kids0, stolen0 = _cpu_with_children(), _children_cpu(), _stolen()
                 res = plan(c.scene, c.spec, timeout=exact_timeout)
                 exact_cpu.append(_cpu_with_children() - cpu0)
                 exact.append(res.stats.seconds)
                 solved += res.status is PlanStatus.SOLVED
                 if on_cell is not None:
-                    on_cell(
-                        c,
-                        f"exact {res.status.value} {res.stats.seconds:.2f} s "
-                        f"({exact_cpu[-1]:.2f} s CPU)",
-                    )
+                    stolen = _stolen()
+                    if stolen is not None and stolen0 is not None:
+                        stolen -= stolen0
+                    kids = _children_cpu() - kids0
+                    on_cell(c, _exact_line(res, exact_cpu[-1], kids, stolen))
             if anytime_budgets is not None:
                 for budget, out in zip(anytime_budgets, (short, long), strict=True):
                     res = plan(c.scene, c.spec, anytime=True, timeout=budget)

@@ -133,15 +133,21 @@ def plan(
                     lambda first: beside.start(pool, first),
                     beside.ahead,
                 )
-            except BaseException:
-                beside.stop()  # (the pool waits for A* on the way out)
-                raise
-            result = beside.finish(cert)
+                phase: float | None = time.perf_counter() - t0
+                result = beside.finish(cert)
+            finally:
+                # whatever happened (an exception in the phase, or while A* is awaited), no
+                # A* is left running, nor paused (the thread's pool waits for it on the way out)
+                beside.stop()
+        # (where A* ran in a process beside the phase: when the phase ended, how long A* waited)
+        phase, held = (None, None) if beside.proc is None else (phase, beside.held)
         if cert.optimal is not None:
             stats = SearchStats(0, 0, time.perf_counter() - t0, "astar")
             if result is not None:
                 stats = replace(result.stats, seconds=stats.seconds)
-            return _solved(problem, cert.optimal, stats)
+            return _solved(problem, cert.optimal, replace(stats, phase=phase, held=held))
+        if result is not None:
+            result = replace(result, stats=replace(result.stats, phase=phase, held=held))
         best = cert.best
     if result is None:
         result = search(
@@ -249,6 +255,8 @@ class _Apart:
         self.uppers: Connection | None = None  # smaller ``upper``s go to A* on this
         self.upper: int | None = None
         self.paused = False
+        self.held = 0.0  # seconds A*'s process has been paused (its last pause began at since)
+        self.since = 0.0
 
     def ahead(self) -> None:
         """Fork the process and start A* in it."""
@@ -299,6 +307,9 @@ class _Apart:
         """End the process (if it still runs) and close the pipes."""
         self.thread.stop()
         lns.share_busy(None)
+        if self.paused:  # (ended while paused)
+            self.paused = False
+            self.held += time.perf_counter() - self.since
         if self.proc is not None:
             if self.proc.is_alive():
                 self.proc.kill()  # (a paused process ends too)
@@ -313,6 +324,11 @@ class _Apart:
         pause = questions >= schedule.WORKERS
         if self.proc is not None and self.proc.pid is not None and pause != self.paused:
             self.paused = pause
+            now = time.perf_counter()
+            if pause:
+                self.since = now
+            else:
+                self.held += now - self.since
             with contextlib.suppress(OSError):  # (A* has ended already)
                 os.kill(self.proc.pid, signal.SIGSTOP if pause else signal.SIGCONT)
 

@@ -74,6 +74,11 @@ class SearchStats:
     algorithm: str = "astar"
     #: anytime mode: seconds until the first plan was found (None: none, or exact mode)
     first_plan: float | None = None
+    #: exact mode, where A* ran in a process of its own beside the first phase
+    #: (docs/planner.md, "A* in a process of its own"; else None): seconds until the phase
+    #: ended, and seconds A*'s process was paused through the phase's rounds
+    phase: float | None = None
+    held: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable, Sequence
-from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from functools import reduce
 from itertools import pairwise
@@ -182,22 +182,116 @@ def schedule_bound(
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
     weak = accept is not None
-    if steps and upper is not None:
-        res = _bisect(
-            problem, graph, node, tgts, level, upper // unit, deadline, seed, floor, not weak
-        )
-    else:
-        res = _shave(problem, graph, node, tgts, level, upper, deadline, seed, floor, steps, weak)
-    if accept is None or res.steps is None or accept(res.steps):
-        return res
-    level = res.ticks // unit
-    workers = None
-    if before_full is not None:
-        before_full()
-        workers = 1
-    return _shave(
-        problem, graph, node, tgts, level, upper, deadline, seed, floor, True, False, True, workers
+    # (the climb without ``upper`` asks the full model's first questions ahead: ``_Whole``)
+    whole = (
+        None
+        if upper is not None or accept is None or not steps
+        else _Whole(problem, graph, node, tgts, deadline, seed, accept)
     )
+
+    def shave(
+        at: int, steps: bool, weak: bool, whole_first: bool = False, workers: int | None = None
+    ) -> ScheduleBound:
+        return _shave(
+            problem,
+            graph,
+            node,
+            tgts,
+            at,
+            upper,
+            deadline,
+            seed,
+            floor,
+            steps,
+            weak,
+            whole_first,
+            workers,
+            whole,
+        )
+
+    try:
+        if steps and upper is not None:
+            res = _bisect(
+                problem, graph, node, tgts, level, upper // unit, deadline, seed, floor, not weak
+            )
+        else:
+            res = shave(level, steps, weak)
+        if accept is None or res.steps is None or accept(res.steps):
+            return res
+        workers = None
+        if before_full is not None:
+            before_full()
+            workers = 1
+        return shave(res.ticks // unit, True, False, True, workers)
+    finally:
+        if whole is not None:
+            whole.close()
+
+
+class _Whole:
+    """Questions "is there a schedule with every session whole at this level" asked ahead
+    (``schedule_bound`` with ``accept``, the full model's first question at a level): when the
+    cheaper model's climb finds a schedule that is no plan at a level while the levels between
+    the last "no" and it are still being asked, a core is free until they end, and if they all
+    say "no" the level is the bound and the full model's climb asks exactly this question
+    first. Asked on that core instead, its answer (one worker, the fixed seed: the same as
+    asked later) is taken when the full model's climb gets there; an answer not needed is
+    stopped. So the bound, the schedule and the plan are the same as without it."""
+
+    def __init__(
+        self,
+        problem: Problem,
+        graph: RelaxedGraph,
+        node: Node,
+        tgts: Sequence[Target],
+        deadline: float,
+        seed: int,
+        accept: Callable[[tuple[tuple[Instance, ...], ...]], bool],
+    ) -> None:
+        self.problem, self.graph, self.node, self.tgts = problem, graph, node, tgts
+        self.deadline, self.seed, self.accept = deadline, seed, accept
+        self.pool: ThreadPoolExecutor | None = None
+        self.asked: dict[
+            int, tuple[Future[tuple[tuple[Instance, ...], ...] | bool | None], Stop]
+        ] = {}
+
+    def ahead(self, at: int, found: tuple[tuple[Instance, ...], ...]) -> None:
+        """The cheaper model found ``found`` at level ``at``: ask the level with sessions
+        whole now, unless ``found`` is a plan (then the climb needs no full model)."""
+        if at in self.asked or self.accept(found):
+            return
+        if self.pool is None:
+            self.pool = ThreadPoolExecutor(max_workers=1)
+        stop = Stop()
+        future = self.pool.submit(
+            relaxed_steps,
+            self.problem,
+            self.graph,
+            self.node,
+            self.tgts,
+            at,
+            self.deadline,
+            seed=self.seed,
+            whole=True,
+            stop=stop,
+        )
+        self.asked[at] = (future, stop)
+
+    def take(self, at: int) -> tuple[tuple[tuple[Instance, ...], ...] | bool | None] | None:
+        """The answer at ``at`` (waited for) in a 1-tuple, or None when it was not asked."""
+        if at not in self.asked:
+            return None
+        future, _ = self.asked.pop(at)
+        return (future.result(),)
+
+    def close(self) -> None:
+        """Stop the answers not taken."""
+        for future, stop in self.asked.values():
+            while not future.done():
+                stop.stop()  # (again: a solve may begin after the first call)
+                wait([future], timeout=0.01)
+        if self.pool is not None:
+            self.pool.shutdown(wait=True)
 
 
 def _shave(
@@ -214,6 +308,7 @@ def _shave(
     weak: bool,
     whole_first: bool = False,
     workers: int | None = None,
+    whole: _Whole | None = None,
 ) -> ScheduleBound:
     """The relaxation's optimum from ``level`` units up (``steps``: the step model, ``weak``:
     without ``holders``; else the interval model).
@@ -249,11 +344,15 @@ def _shave(
         """One level's answer (a schedule, True: one exists, False, None: unknown) and the
         deterministic seconds CP-SAT took to find it."""
         if whole_first:
-            whole = relaxed_steps(
-                problem, graph, node, tgts, at, deadline, seed=seed, whole=True, stop=stop
-            )
-            if whole is None or isinstance(whole, tuple):
-                return whole, 0.0
+            known = None if whole is None else whole.take(at)
+            if known is not None:
+                whole_steps = known[0]  # (asked ahead: ``_Whole``)
+            else:
+                whole_steps = relaxed_steps(
+                    problem, graph, node, tgts, at, deadline, seed=seed, whole=True, stop=stop
+                )
+            if whole_steps is None or isinstance(whole_steps, tuple):
+                return whole_steps, 0.0
         if not steps:
             return _feasible(problem, graph, node, tgts, at, unit, deadline, seed, stop), 0.0
         spent: list[float] = []
@@ -291,35 +390,50 @@ def _shave(
             # (planner._Apart pauses A* through a round that asks a level on every core)
             note_busy(len(levels))
             asked = {at: Stop() for at in levels}
-            running = {pool.submit(ask, at, asked[at]): at for at in levels}
-            out_of_time = False
-            dear = 0.0  # CP-SAT's time for the highest "no" of this round
-            while running:
-                stopping = [stop for stop in asked.values() if stop.stopped]
-                done, _ = wait(
-                    running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
-                )
-                for stop in stopping:
-                    stop.stop()  # again: a solve may have begun after the first call
-                for future in sorted(done, key=running.__getitem__):
-                    at = running.pop(future)
-                    if asked[at].stopped:
-                        continue  # another answer implies this one
-                    found, dt = future.result()
-                    if found is None:
-                        out_of_time = True
-                    elif found is False:
-                        if at > proved:
-                            proved, dear = at, dt
-                    else:
-                        got = None if found is True else found
-                        res = ScheduleBound(max(floor, at * unit), True, len(tgts), got)
-                        if lowest is None or at < lowest[0]:
-                            lowest = (at, res)
-                    for other in running.values():
-                        if out_of_time or other <= proved or (lowest and other >= lowest[0]):
-                            asked[other].stop()
-            note_busy(0)
+            try:
+                running = {pool.submit(ask, at, asked[at]): at for at in levels}
+                out_of_time = False
+                dear = 0.0  # CP-SAT's time for the highest "no" of this round
+                while running:
+                    stopping = [stop for stop in asked.values() if stop.stopped]
+                    done, _ = wait(
+                        running, timeout=0.01 if stopping else None, return_when=FIRST_COMPLETED
+                    )
+                    for stop in stopping:
+                        stop.stop()  # again: a solve may have begun after the first call
+                    for future in sorted(done, key=running.__getitem__):
+                        at = running.pop(future)
+                        if asked[at].stopped:
+                            continue  # another answer implies this one
+                        found, dt = future.result()
+                        if found is None:
+                            out_of_time = True
+                        elif found is False:
+                            if at > proved:
+                                proved, dear = at, dt
+                        else:
+                            got = None if found is True else found
+                            res = ScheduleBound(max(floor, at * unit), True, len(tgts), got)
+                            if lowest is None or at < lowest[0]:
+                                lowest = (at, res)
+                                if (
+                                    whole is not None
+                                    and not whole_first
+                                    and isinstance(found, tuple)
+                                    and set(range(proved + 1, at)) <= set(running.values())
+                                ):
+                                    # the levels below are all being asked: if they say
+                                    # "no" this is the bound, and a core is free till then
+                                    whole.ahead(at, found)
+                        for other in running.values():
+                            if out_of_time or other <= proved or (lowest and other >= lowest[0]):
+                                asked[other].stop()
+            finally:
+                # (also when a question raised: the others are stopped, so that the pool need
+                # not wait for them, and a paused A* is never left paused)
+                for stop in asked.values():
+                    stop.stop()
+                note_busy(0)
             if out_of_time:
                 return ScheduleBound(max(floor, (proved + 1) * unit), False, len(tgts))
             if skip and lowest is None:
