@@ -51,6 +51,7 @@ from hltl.grounding.lexicon import (
     Lexicon,
     common_words,
     lex,
+    person_name,
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
@@ -83,7 +84,12 @@ def _names(text: str, lexicon: Lexicon) -> list[Item]:
             out.append(it)
         elif it.kind == "unknown" and " " in it.text:
             head, rest = it.text.split(" ", 1)  # "important Mrs Khan", "plates out"
-            out += [*_names(head, lexicon), *_names(rest, lexicon)]
+            found = [*_names(head, lexicon), *_names(rest, lexicon)]
+            if not found and " " in rest:
+                # "Mr Novak about": the name, then a word the lexer joined to it
+                head, last = it.text.rsplit(" ", 1)
+                found = [*_names(head, lexicon), *_names(last, lexicon)]
+            out += found
     return out
 
 
@@ -662,6 +668,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
     body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
+    if len(person) > 1:
+        _pronoun_among(said, body, person, lexicon)
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
@@ -679,6 +687,39 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if wanting and not _agrees(wanting, body, lexicon):
         return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _pronoun_among(said: list[str], body: str, person: set[str], lexicon: Lexicon) -> None:
+    """'Mrs Ortiz was talking to Zoe about the ruler, let her have it': a remark about several
+    people that wants nothing, before a request whose one person is a pronoun and which names
+    no one: the pronoun could mean any of them (a title may rule some out), so it is refused
+    listing them (not read as no one)."""
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", body, _F)}
+    if len(pronouns) != 1 or _ids(body, lexicon, "human"):
+        return
+    if any(re.search(_TASK_WORDS + _MAY_HAVE, c, _F) for c in said):
+        return  # a want in the remark may say whose it is
+    sex = PRONOUN_SEX.get(next(iter(pronouns)))
+    fits = [h.id for h in lexicon.scene.humans if h.id in person]
+    fits = [p for p in fits if title_sex(p, lexicon) in (None, sex)]
+    if len(fits) < 2:
+        return
+    names = [person_name(p, lexicon) for p in fits]
+    raise GroundingError(
+        f"{next(iter(pronouns))!r} is not resolved: it could mean {', '.join(names[:-1])} or "
+        f"{names[-1]} (each named before it); name the person"
+    )
+
+
+def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
+    """A clause naming several people and asking nothing, then after its comma a request whose
+    person is only a pronoun: refused listing them (see _pronoun_among)."""
+    m = _rx(r"^([^,.;!?]+),\s*([^.;!?]+)[.!]?$").match(text.strip())
+    if m is not None and not re.search(_TASK_WORDS, m.group(1), _F):
+        person = _ids(m.group(1), lexicon, "human")
+        if len(person) > 1:
+            _pronoun_among([m.group(1)], m.group(2), person, lexicon)
+    return text
 
 
 def _where_they_are(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
@@ -4178,6 +4219,7 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
 
 
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _people_then_pronoun,
     _asked_then_told,
     _run_on_leads,
     _courtesy_ifs,

@@ -1618,7 +1618,15 @@ def _apply_correction(
         # before it: its subject too); "it" keeps meaning what that clause moved
         verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
         if not verbs:
-            raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+            # "The cup to Alice, sorry, hand it to her instead": a clause without a verb (an
+            # object and whom it is for) is taken back from its start
+            cut = len(before)
+            while cut > start and not _is(before[cut - 1], *_SEPARATORS):
+                cut -= 1
+            said = before[cut:]
+            if not (any(_objects(x) for x in said) and any(_humans(x) for x in said)):
+                raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+            verbs = [cut]
         cut = verbs[-1]
         while cut > start and not _is(before[cut - 1], *_SEPARATORS):
             cut -= 1
@@ -1633,8 +1641,14 @@ def _apply_correction(
         rest = list(after)
         if len(people) == 1:
             (who,) = people.values()
-            for m in range(_clause_stop(rest, 0, to_comma=False)):
+            stop = _clause_stop(rest, 0, to_comma=False)
+            again = _moves_again(rest[:stop], moved)
+            for m in range(stop):
                 if rest[m].lemma == "pronoun" and rest[m].text.lower() in _PERSON_PRONOUNS:
+                    if again:
+                        # "Give Bob the apple, no wait, give it to her instead": the same object
+                        # again, so 'her' is someone other than the one taken back
+                        raise _SomeoneElse(rest[m].text, marker.text, who.refs[0].id)
                     rest[m] = replace(who, text=rest[m].text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
@@ -1667,6 +1681,59 @@ def _apply_correction(
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
             return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+
+
+class _SomeoneElse(GroundingError):
+    """A person pronoun in a correction that moves the same object again: it cannot mean the
+    person the correction takes the object from (the scene's names are added by
+    _corrections_named)."""
+
+    def __init__(self, pronoun: str, marker: str, taken_back: str) -> None:
+        super().__init__(f"{pronoun!r} after {marker!r} is not resolved")
+        self.pronoun, self.marker, self.taken_back = pronoun, marker, taken_back
+
+
+def _moves_again(clause: list[Item], moved: list[Item]) -> bool:
+    """Whether a correcting clause moves an object the clause it takes back moved: by 'it' or
+    'them', or by its name."""
+    ids = {r.id for x in moved for r in x.refs}
+    return bool(ids) and any(
+        _is(x, "it", "them")
+        or (x.lemma == "pronoun" and x.text.lower() == "them")
+        or (_objects(x) and {r.id for r in x.refs} <= ids)
+        for x in clause
+    )
+
+
+def _corrections_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """_corrections, with the people a pronoun of _SomeoneElse could mean: the one person left
+    is meant; with several, refused listing them (never dropped, never the one taken back)."""
+    try:
+        return _corrections(items)
+    except _SomeoneElse as other:
+        sex = PRONOUN_SEX.get(other.pronoun.lower())
+        left = [
+            h.id
+            for h in lexicon.scene.humans
+            if h.id != other.taken_back and title_sex(h.id, lexicon) in (None, sex)
+        ]
+        if len(left) == 1:
+            return _corrections(_named_for(items, other.pronoun, left[0]))
+        raise GroundingError(
+            f"{other.pronoun!r} after {other.marker!r} is not resolved: the same object goes to "
+            f"someone other than {person_name(other.taken_back, lexicon)}, so it could mean "
+            f"{_or(left or [h.id for h in lexicon.scene.humans], lexicon)}; name the person"
+        ) from None
+
+
+def _named_for(items: list[Item], pronoun: str, pid: str) -> list[Item]:
+    """``items`` with the last person pronoun ``pronoun`` standing for person ``pid``."""
+    out = list(items)
+    for k in range(len(out) - 1, -1, -1):
+        if out[k].lemma == "pronoun" and out[k].text == pronoun:
+            out[k] = Item("ent", pronoun.lower(), pronoun, (Ref("human", pid),))
+            break
+    return out
 
 
 def _person_and_object(
@@ -3066,7 +3133,8 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
     for k, it in enumerate(items):
         if not (_is(it, "correct") and it.text.lower() in ("i mean", "i meant")):
             continue
-        if k + 1 < len(items) and not (items[k + 1].kind == "punct" and items[k + 1].lemma in _END):
+        # "…, the red one I mean, no, the crisps": a pause after it ends what it brings too
+        if k + 1 < len(items) and not _is(items[k + 1], *_END, ",", "-"):
             said = k > 1 and items[k - 1].kind == "ent" and items[k + 1].kind != "punct"
             if said and (
                 _is(items[k - 2], ",")
@@ -3321,6 +3389,10 @@ def _let(items: list[Item]) -> list[Item]:
         if _is(it, "let"):
             if k + 1 < len(items) and _humans(items[k + 1]):
                 continue
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if nxt is not None and nxt.lemma == "pronoun" and nxt.text.lower() in ("him", "her"):
+                continue  # "…, let her have it": 'her' is resolved (or refused) as a person
+
             raise GroundingError(
                 f"cannot read {_words_of(items[k : k + 3])!r}: say who gets what, e.g. "
                 "'let Carol have the cup'"
@@ -4630,7 +4702,34 @@ def _described_then_corrected(items: list[Item]) -> list[Item]:
     return items
 
 
+def _any_described(items: list[Item]) -> list[Item]:
+    """'Any one of the pens in the box, please', 'Any cup on the tray': with no verb, a place
+    after 'any (one of) <objects>' can say which of them are meant (those in the box) as well as
+    where one goes: refused ('Put any one of the pens in the box' is a placement)."""
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        if any(_is_verb_item(x) for x in sent):
+            continue
+        for k in range(len(sent) - 2):
+            if not (_is(sent[k], "q:some") and sent[k].text.lower().startswith("any")):
+                continue
+            if not (_objects(sent[k + 1]) and len({r.id for r in sent[k + 1].refs}) > 1):
+                continue
+            if not _is(sent[k + 2], "on"):
+                continue
+            s = _past_dets(sent, k + 3)
+            if s < len(sent) and sent[s].kind == "ent" and sent[s].refs[0].kind == "surface":
+                said = f"{sent[k + 2].text} {' '.join(x.text for x in sent[k + 3 : s + 1])}"
+                raise GroundingError(
+                    f"{said!r} after '{sent[k].text} {sent[k + 1].text}' could say which of them "
+                    f"are meant or where one goes: say 'put {sent[k].text.lower()} "
+                    f"{sent[k + 1].text} {said}'"
+                )
+    return items
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_any_described),
     _plain(_described_then_corrected),
     _plain(_choice_restated),
     _plain(_any_order),
@@ -4681,7 +4780,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_never_mind),
     _plain(_i_mean_after),
     _plain(_swaps),
-    _plain(_corrections),
+    _corrections_named,
     _plain(_nobody),
     _plain(_instead_of),
     _plain(_exclusions),
