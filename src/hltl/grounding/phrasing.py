@@ -2087,6 +2087,7 @@ def _exclusions(items: list[Item]) -> list[Item]:
                     j + 1 < len(items)
                     and _is(items[j], "and", ",", "or")
                     and _starts_objects(items, j + 1)
+                    and (not _is(items[j], ",") or _listed_after(items, j + 1, out))
                 ):
                     j += 1
                     continue
@@ -2122,8 +2123,39 @@ def _exclusions(items: list[Item]) -> list[Item]:
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
         out[target] = replace(out[target], refs=kept)
+        p = _past_dets(items, j + 1)
+        if (
+            j < len(items)
+            and _is(items[j], ",")
+            and p < len(items)
+            and _objects(items[p])
+            and {r.id for r in items[p].refs} < {r.id for r in kept}
+        ):
+            # "the box, not the small one, the large one": the one said after it is meant
+            out[target] = replace(out[target], refs=items[p].refs)
+            j = p + 1
         k = j
     return out
+
+
+def _listed_after(items: list[Item], j: int, out: list[Item]) -> bool:
+    """Whether the object at ``items[j:]`` (after a comma) goes on a list with 'and', 'or' or
+    another comma of objects the last name said (``out``) has ('not the red one, the green one
+    or the blue one'); alone after the comma, or listed with something else, it says which is
+    meant ('the box, not the small one, the large one (and the tape)')."""
+    named = next((x for x in reversed(out) if _objects(x)), None)
+    p = _past_dets(items, j)
+    if named is None or not (p + 2 < len(items) and _objects(items[p])):
+        return False
+    q = _past_dets(items, p + 2)
+    has = {r.id for r in named.refs}
+    return (
+        _is(items[p + 1], "and", "or", ",")
+        and q < len(items)
+        and _objects(items[q])
+        and {r.id for r in items[p].refs} <= has
+        and {r.id for r in items[q].refs} <= has
+    )
 
 
 # descriptions that pick among the objects a name names, measured in the scene (_places)
