@@ -1775,9 +1775,29 @@ _COURTESY: tuple[tuple[str, str], ...] = (
     (r"(^|(?<=[.;!?,])\s*)(?:please )?(?:don't|do not) forget to ", r"\1"),
     (r"\bmake sure (?:that )?(?:you )?(don't|do not|never)\b", r"\1"),
     (r"\bmake sure not to\b", "don't"),
-    # "… on the tray for us": the speaker's benefit, as "for me"
-    (r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))", ""),
 )
+# "… on the tray for us": the speaker's benefit, as "for me" (not after a part naming only an
+# object: "…, and the apple for us" may make the speaker its recipient)
+_FOR_US = r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))"
+_VERB_WORDS = re.compile(
+    r"\b(?:give|hand|pass|bring|take|put|place|pop|stick|set|move|send|fetch|get|gets|leave|"
+    r"drop|deliver|wants?|needs?|like|have|has|goes|go|going)\b",
+    _F,
+)
+
+
+def _for_us(text: str, lexicon: Lexicon) -> str:
+    def drop(m: re.Match[str]) -> str:
+        part = re.split(r",|\band\b|[.;!?]", text[: m.start()])[-1]
+        if _ids(part, lexicon, "object") and not _ids(part, lexicon, "human"):
+            words = part
+            for it in _names(part, lexicon):  # "the glue stick": no verb
+                words = words.replace(it.text, " ")
+            if not _VERB_WORDS.search(words):
+                return m.group(0)
+        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
+
+    return _sub(_FOR_US, drop, text)
 
 
 # requests asked as a possibility or a choice, rewritten with their names kept
@@ -1827,6 +1847,7 @@ def _courtesy(text: str, lexicon: Lexicon) -> str:
     …'), a choice left to them ('…, whoever wants it') or shared ('both need a pen')."""
     for pattern, repl in _COURTESY:
         text = _drop(pattern, text, lexicon, repl)
+    text = _for_us(text, lexicon)
     for pattern, repl in _ASKED:
         text = _sub(pattern, repl, text)
     # "Mia's on the phone but she needs the tape": a remark naming no object, then the want

@@ -1426,7 +1426,12 @@ def _corrections(items: list[Item]) -> list[Item]:
         it = items[k]
         after_pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
         is_marker = _is(it, "correct") or (
-            it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and after_pause
+            it.kind == "word"
+            and it.lemma == "not"
+            and it.text.lower() == "no"
+            and after_pause
+            # "Good morning. No banana for Emma, …": 'no' before a name says none of it
+            and not (k + 1 < len(items) and _objects(items[k + 1]))
         )
         if not is_marker:
             k += 1
@@ -1538,6 +1543,27 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
     m = n - 1
     while m > 0 and _is(before[m - 1], "det", "to", "for"):
         m -= 1
+    left_out = next(
+        (
+            x
+            for x in reversed(before[: m - 1])
+            if _is(x, *_END) or _is_verb_item(x) or _is(x, "except", "instead_of", "not")
+        ),
+        None,
+    )
+    if (
+        m > 1
+        and _is(before[m - 1], ",")
+        and left_out is not None
+        and _is(left_out, "except", "instead_of", "not")
+        and left_out.text.lower() != "no"
+    ):
+        # "Kofi wants the spanner, not the small one, the big one, correction, the hammer": the
+        # one picked after what is left out, or the whole?
+        raise GroundingError(
+            f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}, said after "
+            f"{left_out.text!r}: what does it change? say the whole request again"
+        )
     if m > 0 and (
         _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
     ):
@@ -4760,7 +4786,32 @@ def _any_described(items: list[Item]) -> list[Item]:
     return items
 
 
+def _for_me_alone(items: list[Item]) -> list[Item]:
+    """'Give Noah the glue, and the globe for me': 'for me' (read as courtesy: 'do it for me')
+    ending a part that names an object and no one, with no verb of its own, may make the
+    speaker its recipient: refused ('Give Bob the cup for me' stays courtesy)."""
+    for k, it in enumerate(items):
+        if not (_is(it, "filler") and it.text.lower() in ("for me", "for us")):
+            continue
+        n = k
+        while n > 0 and not _is(items[n - 1], "and", ",", *_END) and not _is_verb_item(
+            items[n - 1]
+        ):
+            n -= 1
+        part = items[n:k]
+        if n > 0 and _is_verb_item(items[n - 1]):
+            continue
+        if any(_objects(x) for x in part) and not any(_humans(x) for x in part):
+            said = " ".join(x.text for x in part)
+            raise GroundingError(
+                f"{it.text!r} after {said!r} could make the speaker its recipient, and the "
+                "speaker is not a person in the scene: name the person who gets it"
+            )
+    return items
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_for_me_alone),
     _plain(_any_described),
     _plain(_described_then_corrected),
     _plain(_choice_restated),
