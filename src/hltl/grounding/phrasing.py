@@ -4794,8 +4794,8 @@ def _for_me_alone(items: list[Item]) -> list[Item]:
         if not (_is(it, "filler") and it.text.lower() in ("for me", "for us")):
             continue
         n = k
-        while n > 0 and not _is(items[n - 1], "and", ",", *_END) and not _is_verb_item(
-            items[n - 1]
+        while (
+            n > 0 and not _is(items[n - 1], "and", ",", *_END) and not _is_verb_item(items[n - 1])
         ):
             n -= 1
         part = items[n:k]
