@@ -24,6 +24,7 @@ from typing import Literal
 
 from hltl.bench.grounding import CORPUS_DIR, PARTS, Entry, load_corpus, show_tree
 from hltl.errors import GroundingError
+from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.grounding.tree import Node, Task, tasks
 from hltl.spec.equivalence import counterexample
@@ -117,6 +118,14 @@ def _unique_objects(scene: Scene) -> list[str]:
     return [o.id for o in scene.objects if cats.count(o.category) == 1]
 
 
+def _objects_named(text: str, scene: Scene) -> set[str]:
+    try:
+        items = lex(text, Lexicon.of(scene))
+    except GroundingError:
+        return set()
+    return {r.id for it in items if it.kind == "ent" for r in it.refs if r.kind == "object"}
+
+
 def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
     """The fuzz's variants of one entry (three openers, three closers, one of each together,
     three near openers, two near closers; corrections for an entry of one handover)."""
@@ -148,7 +157,14 @@ def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Itera
         for near in rng.sample(NEAR_CLOSERS, 2):
             yield Variant(part, entry.scene, bare + near.format(o=o, p=p), None, "refuse")
     want = entry.want
-    if plain_end and isinstance(want, Task) and want.kind == "deliver":
+    # a correction to another object (only where the entry names no other object, which the
+    # correction could replace instead: "… Do not give him the gloves, no, the scanner")
+    if (
+        plain_end
+        and isinstance(want, Task)
+        and want.kind == "deliver"
+        and _objects_named(text, scene) <= {want.obj}
+    ):
         others = [x for x in objects if x != want.obj]
         if others:
             other = rng.choice(others)

@@ -2136,9 +2136,17 @@ def _choice(text: str, lexicon: Lexicon) -> str:
         r"\1",
         text,
     )
+
+    def both(m: re.Match[str]) -> str:
+        # 'both' before two objects joined ("both the knife and the tongs"), not before one
+        # kind and a closing ("both boxes and that's it": 'both' counts them)
+        second = " ".join(m.group(1).split()[:3])
+        return "" if _ids(second, lexicon, "object") else m.group(0)
+
     text = _sub(
-        r"\bboth (?=(?:the |a |an )?[a-z][\w ]*? and (?:the |a |an )?[a-z])(?![^.;!?,]*\bboth\b)",
-        "",
+        r"\bboth (?=(?:the |a |an )?[a-z][\w ]*? and ((?:the |a |an )?[a-z][\w ]*))"
+        r"(?![^.;!?,]*\bboth\b)",
+        both,
         text,
     )
     # "a mug for Bob and one for Carol": 'one' is another of that kind
@@ -4255,7 +4263,8 @@ _SENTENCE_HELD = re.compile(
     r"forget|cancel|stop|swap|switch|other|another|else|rest|same|too|also|and|plus|it|them|"
     r"they|these|those|there|here|him|her|his|he|she|hers|theirs|mine|yours|something|anything|"
     r"everything|give|hand|pass|bring|take|put|place|want|need|keep|leave|move|send|drop|fetch|"
-    r"grab|deliver|have|has|had|more|again|well|as)\b|n't\b|\d",
+    r"grab|deliver|have|has|had|more|again|well|as|correction|correct|wrong|change|changed|"
+    r"mind|like|prefer|fancy|rather)\b|n't\b|\d",
     _F,
 )
 # 'this' / 'that' only as a statement's subject ("I hope this is okay"), or thanked for
@@ -4698,7 +4707,7 @@ def _correction_frames(text: str, lexicon: Lexicon) -> str:
     # ", no wait," ", correction," ", no, silly me," ", sorry, silly me,": no
     text = _sub(
         r",\s*(?:no,?\s*wait|correction|no,?\s*silly me|sorry,?\s*silly me|no,?\s*my mistake)"
-        r"\s*,\s*",
+        r"\s*,\s*(?=[a-z])",
         ", no, ",
         text,
     )

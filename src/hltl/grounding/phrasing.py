@@ -2322,6 +2322,9 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
     return items
 
 
+_BARE_PARTICIPLES = frozenset({"put", "set", "sent", "left", "brought", "handed", "passed"})
+
+
 def _listed_on(items: list[Item], k: int) -> bool:
     """Whether ``items[k:]`` goes on with a list of objects up to a participle ('the cup and the
     chips brought to Bob'): objects, articles, 'and', commas, then the participle; or with
@@ -2336,7 +2339,10 @@ def _listed_on(items: list[Item], k: int) -> bool:
         elif not _is(it, "det", ",", "filler"):
             # "the apple, the cup and the chips brought to Bob"; "the apple, please, for Bob"
             if seen:
-                return joined and _is_verb_item(it)
+                # a participle ("brought", "put"), not a verb of its own ("… all go on …")
+                low = it.text.lower()
+                participle = low.endswith(("ed", "en", "ught")) or low in _BARE_PARTICIPLES
+                return joined and _is_verb_item(it) and participle
             return _is(it, "to", "for")
         k += 1
     return False
