@@ -13,6 +13,7 @@ from hltl.errors import GroundingError
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name, title_sex
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
+from tests.grounding import fuzz
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -376,3 +377,10 @@ def test_no_before_a_name_after_a_stop_is_no_correction(text: str, scene: Scene)
 )
 def test_a_correction_after_a_pick_from_an_exclusion_is_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+def test_a_sample_of_the_wrapper_fuzz_reads_nothing_wrong() -> None:
+    """A sample of tests/grounding/fuzz.py (run whole by hand: docs/grounding.md, "Fuzz")."""
+    counts, wrong = fuzz.run(("causes16", "blind14", "causes15"), seed=16, every=12)
+    assert not wrong, [f"{v.text!r} -> {read}" for v, read in wrong]
+    assert counts["same:exact"] > 100 and counts["refuse:refused"] > 50
