@@ -151,8 +151,11 @@ def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Itera
             yield Variant(part, entry.scene, bare + closer, entry.want, "same")
         both = said(rng.choice(OPENERS), bare) + rng.choice(CLOSERS)
         yield Variant(part, entry.scene, both, entry.want, "same")
+    # (not before an entry that opens by taking back what came before: "Scratch that - …")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
     for near in rng.sample(NEAR_OPENERS, 3):
-        yield Variant(part, entry.scene, said(near.format(o=o, p=p), text), None, "refuse")
+        if not takes_back:
+            yield Variant(part, entry.scene, said(near.format(o=o, p=p), text), None, "refuse")
     if plain_end:
         for near in rng.sample(NEAR_CLOSERS, 2):
             yield Variant(part, entry.scene, bare + near.format(o=o, p=p), None, "refuse")

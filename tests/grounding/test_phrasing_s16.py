@@ -384,3 +384,30 @@ def test_a_sample_of_the_wrapper_fuzz_reads_nothing_wrong() -> None:
     counts, wrong = fuzz.run(("causes16", "blind14", "causes15"), seed=16, every=12)
     assert not wrong, [f"{v.text!r} -> {read}" for v, read in wrong]
     assert counts["same:exact"] > 100 and counts["refuse:refused"] > 50
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the complete fuzz pass (seed 16): 'instead' ending a sentence with its own 'no, …'
+        # was taken to correct the sentence before
+        ("I want the water bottle too. Give Bob the apple, no wait, give it to her instead", CELL),
+        ("I want the hammer too. Give Kofi the drill, no wait, give it to him instead", WORKSHOP),
+        # the object a correction replaces said before as well (on main)
+        (
+            "Alice gets the cup. Alice gets the cup! The cup to Alice, no, I tell a lie, the apple",
+            CELL,
+        ),
+        ("Give Alice the cup. The cup to Alice, no, the apple", CELL),
+        ("Give Alice the cup and Bob the cup, no, the apple", CELL),
+    ],
+)
+def test_complete_fuzz_findings_are_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_a_sentence_with_its_own_correction_keeps_the_one_before() -> None:
+    assert_means(
+        "Give Bob the chips. Give Bob the apple, no, give it to Carol instead", "chips>B & apple>C"
+    )
+    assert_means("Give Alice the cup, no, the apple", "apple>A")

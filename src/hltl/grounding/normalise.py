@@ -715,7 +715,11 @@ def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
     """A clause naming several people and asking nothing, then after its comma a request whose
     person is only a pronoun: refused listing them (see _pronoun_among)."""
     m = _rx(r"^([^,.;!?]+),\s*([^.;!?]+)[.!]?$").match(text.strip())
-    if m is not None and not re.search(_TASK_WORDS, m.group(1), _F):
+    if (
+        m is not None
+        and _rx(r"\b(?:he|him|she|her)\b").search(m.group(2))
+        and not re.search(_TASK_WORDS, m.group(1), _F)
+    ):
         person = _ids(m.group(1), lexicon, "human")
         if len(person) > 1:
             _pronoun_among([m.group(1)], m.group(2), person, lexicon)

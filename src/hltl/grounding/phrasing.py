@@ -1405,7 +1405,11 @@ def _instead(items: list[Item]) -> list[Item]:
             stop -= 1
         if stop <= start or not _is(items[stop - 1], "instead"):
             continue
-        marked = any(_is(x, "correct") for x in items[start : stop - 1])
+        marked = any(
+            _is(x, "correct")
+            or (x.text.lower() == "no" and _is(x, "not") and n > start and _is(items[n - 1], ","))
+            for n, x in enumerate(items[start : stop - 1], start)
+        )
         if not marked and start == 0:
             continue
         body = items[start : stop - 1]
@@ -1573,6 +1577,20 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
             f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}: does it change what is left "
             f"out, or what {_words_of(after[:3])!r} replaces? say the whole request again"
         )
+    replaced = next((x for x in reversed(before[:n]) if _objects(x)), None)
+    new = next((x for x in after if x.kind == "ent"), None)
+    if (
+        replaced is not None
+        and new is not None
+        and _objects(new)
+        and sum(1 for x in before if _objects(x) and _ids_of(x) == _ids_of(replaced)) > 1
+    ):
+        # "Alice gets the cup. Alice gets the cup! The cup to Alice, no, the apple": the object
+        # the correction replaces was said before too; does it take back each saying?
+        raise GroundingError(
+            f"{marker.text!r} after {replaced.text!r}, said more than once: does it take back "
+            "each? say the whole request again"
+        )
     if _objects(before[n - 1]) and any(
         _objects(x) and {r.id for r in x.refs} == {r.id for r in before[n - 1].refs}
         for x in before[: n - 1]
@@ -1593,6 +1611,10 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
                 f"{marker.text!r} after '{earlier.text}, {_words_of(before[m:n])}': does it "
                 "change the choice, or the one picked? say the whole request again"
             )
+
+
+def _ids_of(item: Item) -> frozenset[str]:
+    return frozenset(r.id for r in item.refs)
 
 
 def _words_of(items: list[Item]) -> str:
