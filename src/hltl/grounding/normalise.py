@@ -4277,6 +4277,8 @@ _THANKED = re.compile(r"\b(?:cheers|thanks|thank you|ta) for that\b", _F)
 
 
 def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
+    if sentence.rstrip().endswith("?"):
+        return False  # "Now, where was I? Oh yes, …": a question the next sentence answers
     plain = _THANKED.sub("thanks", sentence)
     plain = _rx(r"\bi'?m (?:only|just) [a-z]+ing\b").sub("i am", plain)
     plain = _rx(r"^(?:come|over) here\b").sub("", plain)
