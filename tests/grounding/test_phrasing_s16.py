@@ -411,3 +411,21 @@ def test_a_sentence_with_its_own_correction_keeps_the_one_before() -> None:
         "Give Bob the chips. Give Bob the apple, no, give it to Carol instead", "chips>B & apple>C"
     )
     assert_means("Give Alice the cup, no, the apple", "apple>A")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # a placement needs no recipient: 'for me' after it stays courtesy (blind15 found this
+        # session's 'for me' rule refusing it)
+        ("The magazine on the bedside table for me, please", "magazine@bedside", WARD),
+        (
+            "Put the cup on the shelf and the apple on the table for me",
+            "cup@shelf & apple@table",
+            CELL,
+        ),
+        ("The spoon in the sink for us, thanks", "spoon@sink", LAB),
+    ],
+)
+def test_for_me_after_a_placement_is_courtesy(text: str, want: str, scene: Scene) -> None:
+    assert_means(text, want, scene)

@@ -1793,7 +1793,11 @@ _VERB_WORDS = re.compile(
 def _for_us(text: str, lexicon: Lexicon) -> str:
     def drop(m: re.Match[str]) -> str:
         part = re.split(r",|\band\b|[.;!?]", text[: m.start()])[-1]
-        if _ids(part, lexicon, "object") and not _ids(part, lexicon, "human"):
+        if (
+            _ids(part, lexicon, "object")
+            and not _ids(part, lexicon, "human")
+            and not _ids(part, lexicon, "surface")
+        ):
             words = part
             for it in _names(part, lexicon):  # "the glue stick": no verb
                 words = words.replace(it.text, " ")

@@ -4816,8 +4816,9 @@ def _any_described(items: list[Item]) -> list[Item]:
 
 def _for_me_alone(items: list[Item]) -> list[Item]:
     """'Give Noah the glue, and the globe for me': 'for me' (read as courtesy: 'do it for me')
-    ending a part that names an object and no one, with no verb of its own, may make the
-    speaker its recipient: refused ('Give Bob the cup for me' stays courtesy)."""
+    ending a part that names an object and no one and nowhere, with no verb of its own, may make
+    the speaker its recipient: refused ('Give Bob the cup for me', 'the magazine on the bedside
+    table for me' stay courtesy)."""
     for k, it in enumerate(items):
         if not (_is(it, "filler") and it.text.lower() in ("for me", "for us")):
             continue
@@ -4829,7 +4830,8 @@ def _for_me_alone(items: list[Item]) -> list[Item]:
         part = items[n:k]
         if n > 0 and _is_verb_item(items[n - 1]):
             continue
-        if any(_objects(x) for x in part) and not any(_humans(x) for x in part):
+        placed = any(x.kind == "ent" and x.refs[0].kind == "surface" for x in part)
+        if any(_objects(x) for x in part) and not any(_humans(x) for x in part) and not placed:
             said = " ".join(x.text for x in part)
             raise GroundingError(
                 f"{it.text!r} after {said!r} could make the speaker its recipient, and the "
