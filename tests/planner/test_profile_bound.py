@@ -3,10 +3,12 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -16,6 +18,7 @@ from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
 from hltl.planner import PlanStatus, anytime, plan, profile
 from hltl.planner.problem import Problem, to_seconds, to_ticks
+from hltl.planner.schedule import time_unit
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene, scene_from_dict
 from tests.oracles.brute_force import optimal_makespan
@@ -145,6 +148,28 @@ def test_a_level_the_relaxation_rules_out_has_no_plan() -> None:
     assert exact.makespan == pytest.approx(3.3)
 
 
+@pytest.mark.parametrize(
+    ("layout", "n", "seed"), [("grid", 4, 1), ("grid", 5, 0), ("random", 4, 0)]
+)
+def test_presolve_changes_how_fast_not_what_a_level_answers(layout: str, n: int, seed: int) -> None:
+    # the questions are asked without CP-SAT's presolve (session 16: the hard "no"s near the
+    # bound take 2-7 times less CPU): a solver setting, so at the bound and one unit below it
+    # the answers are those with presolve, and "no" below, "yes" at the relaxation's optimum
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    got = _bound(c.scene, c.spec)
+    assert got is not None and got[2]  # solved: "yes" at got[0], "no" one unit below
+    unit = time_unit(problem)
+    for level, expected in ((got[0] - unit, False), (got[0], True)):
+        for presolve in (False, True):
+            deadline = time.perf_counter() + DEADLINE_S
+            answer = profile.feasible(
+                problem, graph, node, tgts, level, deadline, presolve=presolve
+            )
+            assert answer is expected, (level, presolve)
+
+
 def test_cells_without_fixed_durations_are_outside_the_class() -> None:
     # analytic durations depend on hand poses: a step's length is not one of a few levels
     scene_d, spec_d = random_instance(3)
@@ -247,6 +272,31 @@ def test_each_level_proved_is_told_as_it_is_proved() -> None:
     )
     assert got.ticks == to_ticks(3.3)
     assert told and told == sorted(told) and told[-1] == got.ticks
+
+
+def test_the_climb_skips_at_most_max_stride_levels(monkeypatch: pytest.MonkeyPatch) -> None:
+    # from a floor of 0 the climb gallops up to grid 4 x 4 seed 1's 3.3 s: the strides double
+    # to MAX_STRIDE and no further (a relaxed solution far up is dear without presolve), and
+    # the bound is the same as one level at a time would give
+    c = delivery_cell("grid", 4, 1)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    asked: list[int] = []
+    real = profile.feasible
+
+    def spy(*args: Any, **kwargs: Any) -> bool | None:
+        asked.append(args[4])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(profile, "feasible", spy)
+    got = profile.profile_bound(
+        problem, graph, node, tgts, floor=0, upper=None, deadline=time.perf_counter() + DEADLINE_S
+    )
+    assert got.ticks == to_ticks(3.3) and got.solved
+    unit = time_unit(problem)
+    steps = [(b - a) // unit for a, b in itertools.pairwise(asked) if b > a]
+    assert steps[:3] == [2, 4, 4]  # (from 0: "no"s far below the bound)
+    assert max(steps) == profile.MAX_STRIDE
 
 
 def _beside(floor: float, deadline: float) -> anytime._ProfileBeside:

@@ -88,11 +88,12 @@ def note_busy(n: int) -> None:
 
 
 def solve_until(
-    model: Any, deadline: float, seed: int, stop: Stop | None = None
+    model: Any, deadline: float, seed: int, stop: Stop | None = None, *, presolve: bool = True
 ) -> tuple[Any, Any] | None:
     """Solve a CP-SAT ``model`` on one worker with ``seed`` until ``deadline``
     (``time.perf_counter()``); the solver and its status, or None when no time is left (or
-    ``stop`` stopped the question before the solve began)."""
+    ``stop`` stopped the question before the solve began). ``presolve=False`` skips CP-SAT's
+    presolve (the profile bound's questions: docs/planner.md, "Profile bound")."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     left = deadline - time.perf_counter()
@@ -102,6 +103,8 @@ def solve_until(
     solver.parameters.max_time_in_seconds = left
     solver.parameters.num_workers = 1
     solver.parameters.random_seed = seed
+    if not presolve:
+        solver.parameters.cp_model_presolve = False
     if stop is not None and not stop.attach(solver):
         return None
     return solver, solver.solve(model)

@@ -15,6 +15,15 @@ from hltl.planner.relaxed import RelaxedGraph, _dijkstra
 from hltl.planner.schedule import Target, time_unit
 
 _FAR = 1 << 30  # "no route" in instance counts
+# CP-SAT's presolve on the profile model's questions: off (docs/planner.md, "Profile bound",
+# session 16: the hard "no"s near the bound took 2-7 times less CPU without it)
+PRESOLVE = False
+# the climb (``profile_bound``): a level above the next one gets FAR_SHARE times what the last "no"
+# took, and the levels skipped grow to at most MAX_STRIDE - 1 (session 16: without presolve a
+# relaxed solution far up is dear, and a stride of 8 or 16 levels landed there and lost the
+# rest of the budget on random 32 x 32 seeds 1 and 3; grid seed 0's level 8.1 s needs the time)
+FAR_SHARE = 2.0
+MAX_STRIDE = 4
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +52,7 @@ def feasible(
     deadline: float,
     *,
     seed: int = 0,
+    presolve: bool = PRESOLVE,
 ) -> bool | None:
     """Whether the profile relaxation has a solution ending by ``level`` ticks: False when
     CP-SAT proved it has none (then every plan from ``node`` that makes every target happen is
@@ -126,7 +136,7 @@ def feasible(
             return None
         for d in durations:
             _robot_rows(m, jobs, d, counts, fires_of, count[d])
-    solved = solve_until(m, deadline, seed)
+    solved = solve_until(m, deadline, seed, presolve=presolve)
     if solved is None:
         return None
     _, status = solved
@@ -221,8 +231,9 @@ def profile_bound(
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
     ``upper`` a known plan's makespan (None: none). Levels are asked from ``floor`` up in
-    doubling strides while CP-SAT proves "no" (each "no" proves every level below it); a level
-    above the next one gets a few times what the last "no" took, and where it has a relaxed
+    doubling strides of at most ``MAX_STRIDE`` levels while CP-SAT proves "no" (each "no"
+    proves every level below it); a level above the next one gets ``FAR_SHARE`` times what the
+    last "no" took (at least 0.5 s), and where it has a relaxed
     solution or no answer the climb goes on one time unit at a time below it. The next level's
     solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
     next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
@@ -241,14 +252,14 @@ def profile_bound(
         ask = int(min(proven + stride - 1, cap - 1))
         # a level far up may be much harder than the ones below it: it gets a few times what the
         # last "no" took, the next level up all the time left
-        until = deadline if ask == proven else min(deadline, now + max(4 * last, 0.5))
+        until = deadline if ask == proven else min(deadline, now + max(FAR_SHARE * last, 0.5))
         questions += 1
         answer = feasible(problem, graph, node, tgts, ask * unit, until, seed=seed)
         if answer is False:
             proven = ask + 1
             if on_proven is not None:
                 on_proven(max(floor, proven * unit))
-            stride *= 2
+            stride = min(2 * stride, MAX_STRIDE)
             last = time.perf_counter() - now
         elif answer is None and ask > proven:
             stride = 1  # no answer far up: climb one level at a time again
