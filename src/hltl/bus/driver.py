@@ -109,6 +109,9 @@ class DriverStats:
     # ticks and guessed steps received as further replies after a step's end (the node ran on
     # with the executor's hint)
     guessed_ahead: int = 0
+    # ticks received as the rest of a step whose first ticks came in a part of their own (the
+    # node splits its answers and guessed steps' replies: see hltl.bus.node.SPLIT)
+    split: int = 0
     waited: float = 0.0  # wall seconds waiting for the node's answers
     guessed: int = 0  # commands the node had started on the executor's hint (no round trip)
     # guessed steps waited for: matching the hint, and planned by the node (foresight)
@@ -336,7 +339,7 @@ class BusCell:
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         # it does so once the basis of a spec newer than this version comes (an instruction
         # came in the step: None, it does not wait)
-        self._awaits: Any = None
+        self._awaits: int | None = None
         # the replies to the request that asks the node to foresee the first step (sent with
         # the first basis, taken up once the reset's answer is in), and whether it went
         self._first: Any = None
@@ -346,6 +349,7 @@ class BusCell:
         self._motion = False  # starts go with trajectories: no hints (they are never deferred)
         self._stream: Iterator[Any] | None = None  # the replies still to come of a stretch
         self._guess_next = False  # the stream's next reply starts with a guessed step
+        self._rest = False  # the stream's next reply is the rest of a split step
         self._streamed = 0  # ticks of the current stretch received so far
         self._batch = 0
         self._consumed = 0
@@ -416,6 +420,7 @@ class BusCell:
             return
         self._stream, self._first = self._first, None
         self._streamed, self._guess_next, self._foresee_next = 0, True, True
+        self._rest = False
 
     def _mode(self) -> dict[str, Any]:
         """How the node is to run the episode (the reset request's part that says so): here
@@ -608,7 +613,8 @@ class BusCell:
                         self._stream, self._streamed = replies, 0 if ticks is None else ticks.size
                         self._guess_next = bool(d.get("guessed"))
                         self._foresee_next = bool(d.get("foresee"))
-                        self._awaits = d.get("awaits")
+                        self._awaits = _version(d.get("awaits"))
+                        self._rest = bool(d.get("split"))
                     if ticks is not None:
                         d["ahead"] = ticks
                     return d
@@ -663,7 +669,7 @@ class BusCell:
             )
             if not (hinted or self._foresee_next):
                 return False  # (known here: the node's guess, still to come, is not waited for)
-            if not hinted and isinstance(self._awaits, int) and self._sent_version <= self._awaits:
+            if not hinted and self._awaits is not None and self._sent_version <= self._awaits:
                 self.stats.unawaited += 1  # (the node waits for a new spec's basis: none comes)
                 return False
             if hinted:
@@ -860,10 +866,13 @@ class BusCell:
                 # (a guessed step's reply ends where the next guessed step would start)
                 self._guess_next = bool(d.get("guessed"))
                 self._foresee_next = bool(d.get("foresee"))
-                self._awaits = d.get("awaits")
+                self._awaits = _version(d.get("awaits"))
+                rest, self._rest = self._rest, bool(d.get("split"))
                 self._ahead.append(ticks)
                 self._streamed += ticks.size
-                if d.get("guessed") or d.get("foreseen"):
+                if rest:
+                    self.stats.split += ticks.size
+                elif d.get("guessed") or d.get("foreseen") or d.get("split"):
                     self.stats.guessed_ahead += ticks.size
                 else:
                     self.stats.streamed += ticks.size
@@ -1237,6 +1246,11 @@ def _same(queued: Sequence[Command], starts: Sequence[tuple[int, int, Action]]) 
         c.op == "start" and not c.reason and not c.motion and (c.seq, c.handle, c.action) == g
         for c, g in zip(queued, starts, strict=True)
     )
+
+
+def _version(x: Any) -> int | None:
+    """A spec version as a reply says it (``"awaits"``), or ``None`` (none, or not one)."""
+    return x if isinstance(x, int) and not isinstance(x, bool) else None
 
 
 def _refusal(payload: bytes) -> str | None:

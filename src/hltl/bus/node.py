@@ -75,6 +75,12 @@ GUESS_PAUSE = 0.002
 # guessed steps go as further replies after the answer (False: in the answer itself, every
 # guess made before the executor can answer it; slower, but what tests of wrong guesses need)
 GUESS_STREAM = True
+# a stretch that is not streamed goes in parts: an answer, and each guessed step's reply, go
+# once they hold this many items (a guessed step's starts count as one) and the rest of that
+# step follows as one further reply, so the executor works on the first ticks while the node
+# simulates the rest (0: each part whole, up to the step's end); see docs/bus.md, "Where the
+# time goes (session 16)"
+SPLIT = 4
 # a step the node foresees itself (its planner run on the executor's basis) gives up past this
 # many wall seconds: the node's step thread answers nothing meanwhile
 FORESEE_TIMEOUT = 0.05
@@ -427,6 +433,9 @@ class CellNode:
         self.faults = FaultModel() if faults is None else faults
         self.publish_poses = publish_poses
         self.stats = NodeStats()
+        # items after which an answer or a guessed step's reply goes, the rest following
+        # (:data:`SPLIT`, read when the node is made)
+        self.split = SPLIT
         self.finished = threading.Event()
         self._lock = threading.RLock()
         self._ep: _Episode | None = None
@@ -662,11 +671,19 @@ class CellNode:
                 if tick is not None:
                     ticks.append(tick)
                 more = tick is not None and not s.done
-                # (past a step's end on a guess: the next step, up to its own end, in one reply)
-                if more and (len(ticks) < size if s.ahead.stream else not s.guess_due):
+                # (past a step's end on a guess: the next step, up to its own end, in one reply;
+                # its starts and first ticks first, when split)
+                split = bool(ticks) and ticks[0].guess and self._splits(s, ticks)
+                if (
+                    more
+                    and not split
+                    and (len(ticks) < size if s.ahead.stream else not s.guess_due)
+                ):
                     continue
                 head: dict[str, Any] = {"from": first, "more": more}
-                if not s.ahead.stream:
+                if split:  # (the rest of the step follows: ticks, not a guessed step)
+                    head["guessed"], head["split"] = False, True
+                elif not s.ahead.stream:
                     head["guessed"] = True  # (a guessed step and its ticks, not a stream)
                     if s.guess_due and (s.foresee or s.own):
                         head["foresee"] = True  # (the next one planned here)
@@ -791,6 +808,18 @@ class CellNode:
         self._reply_bytes(query, encode_answer(answer, ticks))
         self._ahead_sent = True
         return None if s.done else (ep, s)
+
+    def _splits(self, s: _Stretch, items: list[Tick]) -> bool:
+        """Whether the part of a stretch (not streamed) holding ``items`` goes now, the rest
+        of its step following as one further reply: it has :attr:`split` items and the step
+        goes on (not at its end, where the part goes anyway)."""
+        return (
+            GUESS_STREAM
+            and 0 < self.split <= len(items)
+            and not s.ahead.stream
+            and not s.done
+            and not s.guess_due
+        )
 
     def _new_basis(self, ep: _Episode, s: _Stretch) -> bool:
         """Whether the stretch has waited enough for the basis of the spec an instruction
@@ -1071,13 +1100,19 @@ class CellNode:
             if first:
                 s.guess_due = s.foresee = s.basis is not None
         out = []
+        split = False
         while (tick := self._ahead_tick(ep, s)) is not None:
             out.append(tick)
             if ahead.stream or (s.guess_due and GUESS_STREAM):
                 break
+            if self._splits(s, out):
+                split = True
+                break
         if out:
             ep.batch = batch
-            if (ahead.stream or s.guess_due) and not s.done:
+            if split:  # (the rest of this step follows as a further reply)
+                answer["more"], answer["guessed"], answer["split"] = True, False, True
+            elif (ahead.stream or s.guess_due) and not s.done:
                 answer["more"] = True
                 if s.guess_due:  # (what follows starts with a guessed step)
                     answer["guessed"] = True

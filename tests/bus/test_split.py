@@ -1,0 +1,80 @@
+"""A stretch in parts (``hltl.bus.node.SPLIT``): an answer, and each guessed step's reply, go
+once they hold the first items of their step, the rest of the step following as one further
+reply. Nothing of it shows: the log is the in-process one, every action started once."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from hltl.bus.driver import BusTiming
+from hltl.bus.faults import FaultModel
+from hltl.bus.node import SPLIT
+from hltl.sim.dynamic import make_trial
+from hltl.sim.episode import run_episode
+from tests.bus.helpers import BusRun, Loopback, same_as_local, wrong_hints
+
+# a plan that holds (4-1 #0), walks that make the node plan steps itself (4-2 #1), a second
+# request (2-2 #0)
+CELLS = [("4-1", 0), ("4-2", 1), ("2-2", 0)]
+
+
+def _run(lb: Loopback, config: str, index: int, split: int, **kw: Any) -> tuple[Any, BusRun]:
+    trial = make_trial(config, index)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    node = lb.node(trial.scene, faults=kw.pop("node_faults", None))
+    node.split = split
+    try:
+        run = lb.run(trial.scene, node=node, **kw, **episode)
+    finally:
+        node.close()
+    return local, run
+
+
+def test_the_default_splits() -> None:
+    assert SPLIT > 0
+
+
+@pytest.mark.parametrize(("config", "index"), CELLS)
+def test_parts_give_the_in_process_log(loopback: Loopback, config: str, index: int) -> None:
+    """Not split, split after one item (a guessed step's starts alone, or a single tick), or
+    after three: the same log; the rest of a split step comes as a further reply (counted by
+    the executor, none without splitting), which the executor waits for rather than ask: no
+    more queries than whole (but for a guess a busy machine makes too late: a few)."""
+    local, whole = _run(loopback, config, index, 0)
+    same_as_local(local, whole)
+    assert whole.cell.stats.split == 0 and whole.cell.stats.guessed > 0
+    for split in (1, 3):
+        _, run = _run(loopback, config, index, split)
+        same_as_local(local, run)
+        assert run.cell.stats.split > 0 and run.cell.stats.guessed > 0
+        assert run.cell.stats.queries <= whole.cell.stats.queries + 3
+
+
+@pytest.mark.parametrize("split", [1, 3])
+def test_wrong_guesses_in_parts_are_undone(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, split: int
+) -> None:
+    """Every hint and every step the node foresees made wrong: the guesses, sent in parts,
+    are undone as whole ones are; the log is the in-process one."""
+    wrong_hints(monkeypatch)
+    local, run = _run(loopback, "4-2", 1, split)
+    same_as_local(local, run)
+    assert run.cell.stats.guessed == 0
+
+
+@pytest.mark.parametrize("seed", [13, 21])
+def test_a_lost_part_is_asked_for(loopback: Loopback, seed: int) -> None:
+    """Replies lost, among them parts of split steps: the executor asks for what it misses;
+    the same log, nothing started twice or lost."""
+    local, run = _run(
+        loopback,
+        "4-2",
+        1,
+        1,
+        node_faults=FaultModel(reply_loss=0.25, seed=seed),
+        timing=BusTiming(timeout=0.1, retries=6),
+    )
+    same_as_local(local, run)
