@@ -64,7 +64,11 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # blind13's refusals, written BEFORE the changes for them; measured once, then tuned on), blind14
 # (written in session 15 by another engineer and committed alone, reviewed by a second engineer,
 # never opened by the engineer who changed the grounder before its one measurement at the end of
-# session 15; tests do not assert it).
+# session 15; tuned on in session 16), causes16 (session 16: fresh variants of each cause of
+# blind14's misses, written BEFORE the changes for its refusals; measured once, then tuned on),
+# blind15 (written in session 16 by another engineer and committed alone, reviewed by a second
+# engineer, never opened by the engineer who changed the grounder before its one measurement at
+# the end of session 16; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -92,6 +96,8 @@ PARTS = (
     "blind13",
     "causes15",
     "blind14",
+    "causes16",
+    "blind15",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -1378,6 +1378,8 @@ class Lexicon:
             return None  # a real word ("hugs", "Carl") is not a misspelt "mugs" or "Carol"
         if keys and self._likelier_word(word, keys[0][0]):
             return None  # "pillws": 'pillows' with a letter left out, or 'pills' with one added
+        if any(_other_name(word, key[0], self._phrases[key]) for key in keys):
+            return None  # "Tess" for "Jess": a name in its own right, as "Carl" is
         if len(keys) == 1:  # one name within one edit: "mgus" is "mugs" (both mugs)
             return _best(self._phrases[keys[0]])
         found = [e for key in keys for e in self._phrases[key]]
@@ -1428,6 +1430,8 @@ class Lexicon:
                 continue
             if self._likelier_word(word, right):
                 continue
+            if _other_name(word, right, entries):
+                return None  # "Mrs Dhan" for "Mrs Khan": another person's name
             found.append((n, _best(entries)))
         ids = {r.id for _, refs in found for r in refs}
         if len(ids) != 1 or len({n for n, _ in found}) != 1:
@@ -1537,6 +1541,20 @@ def _correctable(word: str) -> bool:
     if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
         return False
     return word not in PHRASE_WORDS
+
+
+def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> bool:
+    """Whether ``typed`` differs from a person's name ``name`` at its first letter, by a letter
+    put in, left out or typed instead ("Tess", "Gemma", "Mma" for "Jess", "Emma", "Emma"; not
+    two neighbours swapped, "Lnea"): a name with another first letter is a name in its own
+    right, so it may be someone the scene does not have, and is not corrected (a slip of the
+    first letter of a name is rare; "Zoey", "Alise", "Lenna" keep theirs)."""
+    if not any(r.kind == "human" for r, _, _ in entries) or not typed or not name:
+        return False
+    if typed[0] == name[0]:
+        return False
+    swapped = len(typed) == len(name) >= 2 and typed[:2] == name[1::-1]
+    return not swapped
 
 
 def _close_word(word: str, right: str) -> bool:

@@ -51,6 +51,7 @@ from hltl.grounding.lexicon import (
     Lexicon,
     common_words,
     lex,
+    person_name,
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
@@ -83,7 +84,12 @@ def _names(text: str, lexicon: Lexicon) -> list[Item]:
             out.append(it)
         elif it.kind == "unknown" and " " in it.text:
             head, rest = it.text.split(" ", 1)  # "important Mrs Khan", "plates out"
-            out += [*_names(head, lexicon), *_names(rest, lexicon)]
+            found = [*_names(head, lexicon), *_names(rest, lexicon)]
+            if not found and " " in rest:
+                # "Mr Novak about": the name, then a word the lexer joined to it
+                head, last = it.text.rsplit(" ", 1)
+                found = [*_names(head, lexicon), *_names(last, lexicon)]
+            out += found
     return out
 
 
@@ -662,6 +668,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
     body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
+    if len(person) > 1:
+        _pronoun_among(said, body, person, lexicon)
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
@@ -679,6 +687,43 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if wanting and not _agrees(wanting, body, lexicon):
         return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _pronoun_among(said: list[str], body: str, person: set[str], lexicon: Lexicon) -> None:
+    """'Mrs Ortiz was talking to Zoe about the ruler, let her have it': a remark about several
+    people that wants nothing, before a request whose one person is a pronoun and which names
+    no one: the pronoun could mean any of them (a title may rule some out), so it is refused
+    listing them (not read as no one)."""
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", body, _F)}
+    if len(pronouns) != 1 or _ids(body, lexicon, "human"):
+        return
+    if any(re.search(_TASK_WORDS + _MAY_HAVE, c, _F) for c in said):
+        return  # a want in the remark may say whose it is
+    sex = PRONOUN_SEX.get(next(iter(pronouns)))
+    fits = [h.id for h in lexicon.scene.humans if h.id in person]
+    fits = [p for p in fits if title_sex(p, lexicon) in (None, sex)]
+    if len(fits) < 2:
+        return
+    names = [person_name(p, lexicon) for p in fits]
+    raise GroundingError(
+        f"{next(iter(pronouns))!r} is not resolved: it could mean {', '.join(names[:-1])} or "
+        f"{names[-1]} (each named before it); name the person"
+    )
+
+
+def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
+    """A clause naming several people and asking nothing, then after its comma a request whose
+    person is only a pronoun: refused listing them (see _pronoun_among)."""
+    m = _rx(r"^([^,.;!?]+),\s*([^.;!?]+)[.!]?$").match(text.strip())
+    if (
+        m is not None
+        and _rx(r"\b(?:he|him|she|her)\b").search(m.group(2))
+        and not re.search(_TASK_WORDS, m.group(1), _F)
+    ):
+        person = _ids(m.group(1), lexicon, "human")
+        if len(person) > 1:
+            _pronoun_among([m.group(1)], m.group(2), person, lexicon)
+    return text
 
 
 def _where_they_are(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
@@ -1734,9 +1779,33 @@ _COURTESY: tuple[tuple[str, str], ...] = (
     (r"(^|(?<=[.;!?,])\s*)(?:please )?(?:don't|do not) forget to ", r"\1"),
     (r"\bmake sure (?:that )?(?:you )?(don't|do not|never)\b", r"\1"),
     (r"\bmake sure not to\b", "don't"),
-    # "… on the tray for us": the speaker's benefit, as "for me"
-    (r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))", ""),
 )
+# "… on the tray for us": the speaker's benefit, as "for me" (not after a part naming only an
+# object: "…, and the apple for us" may make the speaker its recipient)
+_FOR_US = r"\s+for us\b(?=\s*(?:[,.;!?]|please|thanks|$))"
+_VERB_WORDS = re.compile(
+    r"\b(?:give|hand|pass|bring|take|put|place|pop|stick|set|move|send|fetch|get|gets|leave|"
+    r"drop|deliver|wants?|needs?|like|have|has|goes|go|going)\b",
+    _F,
+)
+
+
+def _for_us(text: str, lexicon: Lexicon) -> str:
+    def drop(m: re.Match[str]) -> str:
+        part = re.split(r",|\band\b|[.;!?]", text[: m.start()])[-1]
+        if (
+            _ids(part, lexicon, "object")
+            and not _ids(part, lexicon, "human")
+            and not _ids(part, lexicon, "surface")
+        ):
+            words = part
+            for it in _names(part, lexicon):  # "the glue stick": no verb
+                words = words.replace(it.text, " ")
+            if not _VERB_WORDS.search(words):
+                return m.group(0)
+        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
+
+    return _sub(_FOR_US, drop, text)
 
 
 # requests asked as a possibility or a choice, rewritten with their names kept
@@ -1786,6 +1855,7 @@ def _courtesy(text: str, lexicon: Lexicon) -> str:
     …'), a choice left to them ('…, whoever wants it') or shared ('both need a pen')."""
     for pattern, repl in _COURTESY:
         text = _drop(pattern, text, lexicon, repl)
+    text = _for_us(text, lexicon)
     for pattern, repl in _ASKED:
         text = _sub(pattern, repl, text)
     # "Mia's on the phone but she needs the tape": a remark naming no object, then the want
@@ -2074,9 +2144,17 @@ def _choice(text: str, lexicon: Lexicon) -> str:
         r"\1",
         text,
     )
+
+    def both(m: re.Match[str]) -> str:
+        # 'both' before two objects joined ("both the knife and the tongs"), not before one
+        # kind and a closing ("both boxes and that's it": 'both' counts them)
+        second = " ".join(m.group(1).split()[:3])
+        return "" if _ids(second, lexicon, "object") else m.group(0)
+
     text = _sub(
-        r"\bboth (?=(?:the |a |an )?[a-z][\w ]*? and (?:the |a |an )?[a-z])(?![^.;!?,]*\bboth\b)",
-        "",
+        r"\bboth (?=(?:the |a |an )?[a-z][\w ]*? and ((?:the |a |an )?[a-z][\w ]*))"
+        r"(?![^.;!?,]*\bboth\b)",
+        both,
         text,
     )
     # "a mug for Bob and one for Carol": 'one' is another of that kind
@@ -4177,7 +4255,537 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# -- session 16: blind14's kinds, each a general rewrite (courtesy and calls, wants, remarks,
+#    run-ons, choices, counts, exclusions, corrections) ----------------------------------------
+#
+# A sentence naming nothing in the scene and holding no word that could name, count, choose,
+# negate, order, delay, condition, correct, point back or hand over ('Good robot.', 'Regards.',
+# 'Right, eyes on me everyone.', "Okay darling, let's get you sorted.", 'Done.', 'Go.') is taken
+# off: the speaker and the hearer ('me', 'you', 'I') can be no recipient in it, as it has no verb
+# that gives.
+_SENTENCE_HELD = re.compile(
+    r"\b(?:no|not|never|nobody|none|nothing|nor|neither|without|except|but|rather|instead|only|"
+    r"all|every|each|both|any|some|either|or|whichever|whatever|whoever|one|ones|two|three|"
+    r"four|five|six|first|last|then|next|finally|before|after|once|when|until|till|if|unless|"
+    r"later|tomorrow|tonight|wait|hang|hold|actually|sorry|oops|mean|meant|mistake|scratch|"
+    r"forget|cancel|stop|swap|switch|other|another|else|rest|same|too|also|and|plus|it|them|"
+    r"they|these|those|there|here|him|her|his|he|she|hers|theirs|mine|yours|something|anything|"
+    r"everything|give|hand|pass|bring|take|put|place|want|need|keep|leave|move|send|drop|fetch|"
+    r"grab|deliver|have|has|had|more|again|well|as|correction|correct|wrong|change|changed|"
+    r"mind|like|prefer|fancy|rather)\b|n't\b|\d",
+    _F,
+)
+# 'this' / 'that' only as a statement's subject ("I hope this is okay"), or thanked for
+_POINTING = re.compile(r"\b(?:this|that)\b(?!\s*(?:'s|is|was|would|'d|will)\b)", _F)
+_THANKED = re.compile(r"\b(?:cheers|thanks|thank you|ta) for that\b", _F)
+
+
+def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
+    if sentence.rstrip().endswith("?"):
+        return False  # "Now, where was I? Oh yes, …": a question the next sentence answers
+    plain = _THANKED.sub("thanks", sentence)
+    plain = _rx(r"\bi'?m (?:only|just) [a-z]+ing\b").sub("i am", plain)
+    plain = _rx(r"^(?:come|over) here\b").sub("", plain)
+    return (
+        bool(re.search(r"[a-z]", plain, _F))
+        and not _SENTENCE_HELD.search(plain)
+        and not _POINTING.search(plain)
+        and _names_nothing(plain, lexicon)
+    )
+
+
+def _inert_sentences(text: str, lexicon: Lexicon) -> str:
+    """Every sentence of ``text`` that _inert_sentence finds inert taken off (when another is
+    left)."""
+    parts = re.split(r"(?<=[.!?])\s+", text.strip())
+    if len(parts) < 2:
+        return text
+    keep = [p for p in parts if not _inert_sentence(p, lexicon)]
+    if not keep or len(keep) == len(parts):
+        return text
+    return " ".join(keep)
+
+
+# courtesy in frames a held word is part of: each asks nothing of its own
+_COURTESY_FRAMES: tuple[tuple[str, str], ...] = (
+    # "would you be a dear / a love / an angel and give …": could you give
+    (r"\b(would|could|will|can) you be (?:a|an|my) [a-z]+ and\s+", r"\1 you "),
+    (r"^(?:be (?:a|an) [a-z]+ and|be a love,?)\s+", ""),
+    # "Pretty please (with sugar / a cherry on top)": please
+    (r"\bpretty please(?: with (?:sugar|a cherry|cherries|bells) on(?: top)?)?\b", "please"),
+    # "When convenient, …", "At your convenience, …", "When you get a chance, …"
+    (
+        r"(^|(?<=[.!?])\s*)(?:when (?:convenient|it's convenient|you can)|at your "
+        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec))\s*,\s*",
+        r"\1",
+    ),
+    # "I hope this is okay, …", "I hope that's alright, …"
+    (
+        r"(^|(?<=[.!?,])\s*)(?:um,?\s*|er,?\s*)?i hope (?:this|that|it)(?:'s| is) (?:okay|ok|"
+        r"alright|all right|fine)\s*,\s*",
+        r"\1",
+    ),
+    # "thank you so much for earlier, you were brilliant. Now, …"
+    (
+        r"(^|(?<=[.!?,])\s*)(?:oh,?\s*)?(?:thank you|thanks|cheers)(?: so much| very much| again)?"
+        r" for (?:earlier|before|this morning|yesterday|last time)\s*[,.!]\s*(?:you(?:'re| are| "
+        r"were) (?:very |so |really )?[a-z]+\s*[.!,]\s*)?(?:now,?\s*)?",
+        r"\1",
+    ),
+    # "One more favour, …", "Just one more thing, …"
+    (
+        r"(^|(?<=[.!?])\s*)(?:and |just )?one (?:more|last) (?:favour|favor|thing|job)(?: for me)?"
+        r"\s*[,:]\s*",
+        r"\1",
+    ),
+    # "…, if that's alright (with you)", "…, if that's okay": asked kindly
+    (
+        r",?\s*if that's (?:alright|all right|okay|ok|fine)(?: with you)?(?=\s*(?:[.!:]|$))",
+        "",
+    ),
+    (r",?\s*if you don't mind\s*(?=[,:])", ""),
+    # "Sorry, I know it's manic in here, but …"
+    (
+        r"(^|(?<=[.!?])\s*)(?:sorry,?\s*)?i know (?:it's|it is|you're|you are|things are|we're) "
+        r"(?:a bit |very |so |really )?[a-z]+(?: (?:in here|out there|today|right now|at the moment"
+        r"|this morning|tonight))?\s*,?\s*(?:but|so)\s+",
+        r"\1",
+    ),
+    # "Next order.", "New order:", "Two plates up!" said before the list (a kitchen call)
+    (r"^(?:next|new|another) (?:order|ticket|table)\s*[.!:]\s*", ""),
+    # "…, go go go", "…, go!": hurry
+    (r",?\s*(?:go,?\s*){2,}go[.!]*$|,?\s*go go[.!]*$", ""),
+)
+
+
+def _courtesy_frames(text: str, lexicon: Lexicon) -> str:
+    for pattern, repl in _COURTESY_FRAMES:
+        text = _drop(pattern, text, lexicon, repl)
+    # "Next one on my list: …", "Next item on the list: …" ('item' and 'one' name no object here)
+    text = _sub(
+        r"(^|(?<=[.!?])\s*)(?:(?:morning|right|ok|okay)\s*[!,.]?\s*)?next (?:one|item|job|thing|"
+        r"task) (?:on|from|off) (?:my|the) list\s*[:,]\s*(?=\S)",
+        r"\1",
+        text,
+    )
+    # "Yes chef!", "Yes boss!": an answer to a call (naming the one called is no request)
+    text = _sub(r"^yes,? (?:chef|boss|sir|madam|ma'am|captain|mate|love)\s*!\s*(?=\S)", "", text)
+    # "Two plates up! White plate to Marco, …": a call naming only objects the rest hands out
+    m = _rx(r"^(?:two|three|four|2|3|4) ([a-z]+) (?:up|coming up|ready)\s*!\s*").match(text)
+    if (
+        m is not None
+        and _ids(m.group(1), lexicon, "object")
+        and (_ids(m.group(1), lexicon) <= _ids(text[m.end() :], lexicon))
+    ):
+        text = text[m.end() :]
+    return " ".join(text.split())
+
+
+# -- wants and purposes --------------------------------------------------------------------------
+_WANT_FRAMES: tuple[tuple[str, str], ...] = (
+    # "Jess is gonna need", "Lena's going to want": needs, wants
+    (r"(?:'s| is) (?:gonna|going to|about to) (need|want)\b", r" \1s"),
+    # "Tom's happy with the tape or the gloves": wants (either)
+    (r"(?:'s| is) (?:happy|fine|okay|ok|good) with\b(?= the\b)", " wants"),
+    # "for cleaning up", "for washing up", "for cooking": what it is for, naming nothing
+    (r"\s+for [a-z]+ing(?: up| out| with)?(?= *(?:[.,;!?]|$))", ""),
+    # "for lunch", "for homework", "for her game", "for the repair", "for revision"
+    (
+        r"\s+for (?:(?:his|her|their|the|my|our) )?(?:lunch|dinner|breakfast|tea|supper|homework|"
+        r"revision|game|repair|meeting|class|lesson|trip|journey|shift|rounds|project|work)(?= *(?:"
+        r"[.,;!?]|$))",
+        "",
+    ),
+)
+
+
+def _want_frames(text: str, lexicon: Lexicon) -> str:
+    if not _rx(
+        r"\b(?:wants?|needs?|would like|'d like|gonna|going to|about to|happy with|fine with)\b"
+    ).search(text):
+        return text
+    for pattern, repl in _WANT_FRAMES:
+        text = _drop(pattern, text, lexicon, repl)
+    # "The gentleman there, Mr Lee I think it is, he'd like …": the name said again, then 'he'
+    m = _rx(
+        r"^(?:i'?m only visiting\.\s*)?the (?:lady|gentleman|man|woman|chap|guy|fella|girl|boy|"
+        r"kid|patient|child)(?: (?:there|over there|here|in the corner|by the window))?,\s*([^,]+?)"
+        r"(?: i think(?: it is| that is)?| i believe| i reckon| is it)?,\s*(?:he|she)(?:'d| would)"
+        r" like\b"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
+    ):
+        text = f"{m.group(1)} would like{text[m.end() :]}"
+    return " ".join(text.split())
+
+
+# -- remarks and pronouns ------------------------------------------------------------------------
+
+
+def _remark_owner(text: str, lexicon: Lexicon) -> str:
+    """'Lily's hungry, put her bib on the high chair', "Omar's doing the washing up. Put the bowl in
+    the sink for him": a remark about the one person named, naming nothing else, before a
+    placement: 'her <object>' is that object, 'for him' is said of a placement (no one gets it),
+    and the remark is taken off."""
+    m = _rx(r"^([^,.!?]+?)(?:'s| is| was)( [a-z]+(?: [a-z]+){0,3})\s*[,.!]\s*(.+)$").match(text)
+    if m is None or not _only_person(m.group(1), lexicon):
+        return text
+    remark, rest = m.group(2), m.group(3)
+    if _SENTENCE_HELD.search(remark) or not _names_nothing(remark, lexicon):
+        return text
+    who = next(iter(_ids(m.group(1), lexicon)))
+    if not _fits(who, rest, lexicon) or _ids(rest, lexicon, "human"):
+        return text
+    if not _rx(r"^(?:please\s+)?(?:put|place|set|pop|stick|leave)\b").match(rest):
+        return text  # a placement only: 'for him' hands nothing over
+    rest = _rx(r",?\s*for (?:him|her)\b").sub("", rest)
+    rest = _sub(
+        r"\b(?:his|her) ([a-z]+(?: [a-z]+)?)\b",
+        lambda x: (
+            f"the {x.group(1)}" if len(_ids(x.group(1), lexicon, "object")) == 1 else x.group(0)
+        ),
+        rest,
+    )
+    if re.search(r"\b(?:he|him|she|her|his)\b", rest, _F):
+        return text
+    return rest
+
+
+def _same_person(text: str, lexicon: Lexicon) -> str:
+    """'… After that, the cup goes to the same person.': the one person named before."""
+    m = _rx(r"\b(to|for) the same (?:person|one|guy|lady|man|woman)\b").search(text)
+    if m is None:
+        return text
+    before = _ids(text[: m.start()], lexicon, "human")
+    if len(before) != 1:
+        return text
+    name = one_person(text[: m.start()], lexicon)
+    if name is None:
+        return text
+    return text[: m.start()] + f"{m.group(1)} {name}" + text[m.end() :]
+
+
+# -- run-ons -------------------------------------------------------------------------------------
+
+
+def _both_got_theirs(text: str, lexicon: Lexicon) -> str:
+    """'Kofi wants the big spanner and Jess wants the torch and the drill goes in the locker when
+    they've both got theirs': the last clause after the two before it."""
+    m = _rx(
+        r"^(.+)\s+and\s+([^,]+?)\s+(?:when|once|after) they(?:'ve| have) both (?:got|had|"
+        r"received) theirs\s*([.!]?)$"
+    ).match(text)
+    if m is None or len(_ids(m.group(1), lexicon, "human")) != 2:
+        return text
+    return f"{m.group(1)}, then {m.group(2)}{m.group(3)}"
+
+
+def _run_on_remarks(text: str, lexicon: Lexicon) -> str:
+    """ "Ruth needs the thermometer she's doing rounds and Mrs Khan needs the jug she's thirsty": a
+    remark run on after 'P needs X' about P, naming nothing, is taken off."""
+
+    def drop(m: re.Match[str]) -> str:
+        clause, pronoun, remark = m.group(1), m.group(2), m.group(3)
+        if _SENTENCE_HELD.search(remark) or not _names_nothing(remark, lexicon):
+            return m.group(0)
+        subject = _ids(clause, lexicon, "human")
+        if len(subject) != 1:
+            return m.group(0)
+        if title_sex(next(iter(subject)), lexicon) not in (None, PRONOUN_SEX[pronoun.lower()]):
+            return m.group(0)
+        return clause
+
+    return _sub(
+        r"([^,]*?\b(?:needs?|wants?) the [a-z ]+?) (he|she)(?:'s| is) ([a-z]+(?: [a-z]+)?)"
+        r"(?=\s+and\b|\s*[.!]?$)",
+        drop,
+        text,
+    )
+
+
+# -- which / any / each / either -----------------------------------------------------------------
+_NOT_FUSSY = (
+    r"(?:'s|is|was) (?:not|n't|never) (?:fussy|bothered|picky|choosy|particular)|(?:isn't|wasn't)"
+    r" (?:fussy|bothered|picky|choosy|particular)|(?:'s|is) (?:easy|easygoing|easy-going|not "
+    r"fussed)"
+)
+
+
+def _choice_frames(text: str, lexicon: Lexicon) -> str:
+    """Choices said in other frames, each rewritten to the grammar's own choice."""
+    # "Marco's not fussy, any plate will do for him": give Marco any plate
+    m = _rx(
+        rf"^([^,]+?)\s*(?:{_NOT_FUSSY})\s*,\s*(?:any|either) ([a-z]+) (?:will do|is fine|'ll do|"
+        r"will be fine)(?: for (?:him|her))?\s*([.!]?)$"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
+    ):
+        return f"give {m.group(1)} any {m.group(2)}{m.group(3)}"
+    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar
+    m = _rx(
+        r"^whichever of ([^,]+?) or ([^,]+?) (?:is|'s) [a-z]+(?: [a-z]+)?\s*,\s*(give|hand|pass|"
+        r"bring|take) (?:them|him or her) (.+?)\s*([.!]?)$"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and _only_person(m.group(2), lexicon)
+        and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
+        and _ids(m.group(4), lexicon, "object")
+        and not _ids(m.group(4), lexicon, "human")
+    ):
+        return f"{m.group(3)} {m.group(4)} to {m.group(1)} or {m.group(2)}{m.group(5)}"
+    # "One of the two people should get the apple", "The cup should go to one of the two people"
+    people = [h for h in lexicon.scene.humans]
+    if len(people) == 2:
+        both = f"{people[0].name} or {people[1].name}"
+        text = _sub(
+            r"\b(?:one of the two people|one of the two of them|one of them two|either of the two "
+            r"people|one of you two)\b",
+            both,
+            text,
+        )
+        text = _sub(r"\b(or Person [A-Z]) should (?:get|have|receive)\b", r"\1 gets", text)
+        text = _sub(r"\bshould go to\b", "goes to", text)
+    # "…, either is fine", "…, either one is fine", "…, one or the other", "…, I don't mind which"
+    if _rx(r"\bor\b").search(text):
+        text = _drop(
+            r",\s*(?:either(?: one)? (?:is|'s) (?:fine|ok|okay|good)|one or the other|i don't mind "
+            r"which(?: one)?|not fussed which|whichever)(?=\s*(?:[.!,]|$))",
+            text,
+            lexicon,
+        )
+        # "…, whichever stops her crying", "…, whichever's nearest": the robots choose
+        text = _sub(
+            r",\s*whichever(?:'s| is)? ([a-z' ]+?)\s*([.!]?)$",
+            lambda x: (
+                x.group(2)
+                if _names_nothing(x.group(1), lexicon)
+                and not _rx(r"\b(?:to|from|than|of|by|on|in|next)\b").search(x.group(1))
+                and not _rx(r"\b(?:not|n't|no|never|only|first|last|before|after)\b").search(
+                    x.group(1)
+                )
+                else x.group(0)
+            ),
+            text,
+        )
+    # "… for Person A, and the chips and the apple both for Person B": both the chips and …
+    text = _sub(r"\b(the [a-z ]+? and the [a-z ]+?) both (for|to)\b", r"both \1 \2", text)
+    # "Each of them gets a spanner, Kofi and Jess": Kofi and Jess each get a spanner
+    m = _rx(
+        r"^each of (?:them|you|the two) (?:gets?|has|can have|should get) (an? [a-z]+),\s*([^,]+?) "
+        r"and ([^,]+?)\s*([.!]?)$"
+    ).match(text)
+    if m is not None and _only_person(m.group(2), lexicon) and _only_person(m.group(3), lexicon):
+        return f"{m.group(2)} and {m.group(3)} each get {m.group(1)}{m.group(4)}"
+    return " ".join(text.replace(",,", ",").split())
+
+
+# -- counts --------------------------------------------------------------------------------------
+
+
+def _singular(plural: str) -> str:
+    return plural[:-2] if plural.endswith(("xes", "ches", "shes")) else plural[:-1]
+
+
+def _count_frames(text: str, lexicon: Lexicon) -> str:
+    """Counts said with the ones they count: each rewritten to the objects themselves, when the
+    count is what the scene has (else left to be refused)."""
+    objects = len(lexicon.scene.objects)
+    # "two boxes, the medium and the big one": the medium box and the big box
+    m = _rx(
+        r"\b(?:two|2) ([a-z]+s)((?: (?:on|in|onto|into|to|for) [^,]+?)?),\s*the ([a-z]+)(?: one)? "
+        r"and the ([a-z]+) one\b"
+    ).search(text)
+    if m is not None:
+        one = _singular(m.group(1))
+        first, second = f"the {m.group(3)} {one}", f"the {m.group(4)} {one}"
+        a, b = _ids(first, lexicon, "object"), _ids(second, lexicon, "object")
+        if len(a) == 1 and len(b) == 1 and a != b and a | b <= _ids(m.group(1), lexicon):
+            text = f"{text[: m.start()]}{first} and {second}{m.group(2)}{text[m.end() :]}"
+    # "a single pen, the blue one", "just the one spanner, the big one": the blue pen
+    m = _rx(
+        r"\b(?:a single|just the one|just one|only one|the one) ([a-z]+),\s*the ([a-z]+) one\b"
+        r"(?!\s*(?:,|and\b|or\b|&))"
+    ).search(text)
+    if m is not None:
+        said = f"the {m.group(2)} {m.group(1)}"
+        if len(_ids(said, lexicon, "object")) == 1:
+            text = f"{text[: m.start()]}{said}{text[m.end() :]}"
+    # "the one and only bottle": the bottle (when there is one)
+    m = _rx(r"\bthe one and only ([a-z]+)\b").search(text)
+    if m is not None and len(_ids(m.group(1), lexicon, "object")) == 1:
+        text = f"{text[: m.start()]}the {m.group(1)}{text[m.end() :]}"
+    # "all four of the items": everything, when the scene has four
+    m = _rx(r"\ball (two|three|four|five|six) of the (?:items|things|objects)\b").search(text)
+    if m is not None and _COUNTS[m.group(1).lower()] == objects:
+        text = f"{text[: m.start()]}everything{text[m.end() :]}"
+    # "…, there's only the two things": a remark the scene bears out
+    m = _rx(
+        r",\s*there(?:'s| is| are) only (?:the )?(two|three|four|five|six) (?:things|items|objects)"
+        r"\s*([.!]?)$"
+    ).search(text)
+    if m is not None and _COUNTS[m.group(1).lower()] == objects:
+        text = text[: m.start()] + m.group(2)
+    # "Both cups need washing, into the sink with them": put both cups in the sink
+    m = _rx(
+        r"^both ([a-z]+) (?:need|needs|are|could do with|want) [a-z ]+?,\s*(into|in|onto|on) "
+        r"(the [a-z ]+?) with (?:them|'em)\s*([.!]?)$"
+    ).match(text)
+    if m is not None and len(_ids(m.group(1), lexicon, "object")) == 2:
+        text = f"put both {m.group(1)} {m.group(2)} {m.group(3)}{m.group(4)}"
+    # "Mrs Khan's getting the two blankets tonight, she's freezing": Mrs Khan gets them
+    m = _rx(
+        r"^([^,]+?)(?:'s| is) getting (the [a-z ]+?)(?: tonight| now| today| later)?(?:,\s*(?:she|"
+        r"he)(?:'s| is) [a-z]+)?\s*([.!]?)$"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
+    ):
+        text = f"{m.group(1)} gets {m.group(2)}{m.group(3)}"
+    return text
+
+
+# -- negation and exclusion ----------------------------------------------------------------------
+
+
+def _exclusion_frames(text: str, lexicon: Lexicon) -> str:
+    """Exclusions and negations said in other frames, each rewritten to the grammar's own."""
+    # "Not Alice, Bob is the one who wants the bottle": Bob wants the bottle
+    m = _rx(
+        r"^not ([^,]+?),\s*([^,]+?) is the one (?:who|that) (wants|needs|gets|should get) (.+)$"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and _only_person(m.group(2), lexicon)
+        and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
+        and not _ids(m.group(4), lexicon, "human")
+    ):
+        return f"{m.group(2)} {m.group(3)} {m.group(4)}"
+    # "the lot, minus the bottle", "everything, minus the cup": everything except
+    text = _sub(r"\bthe lot\b(?=,?\s*(?:minus|except|but|apart from|bar)\b)", "everything", text)
+    text = _sub(
+        r"\beverything,?\s*(?:minus|bar|apart from)\s+(?=the\b)", "everything except ", text
+    )
+    # "Only the cup for Person A, nothing else": the cup for Person A
+    m = _rx(r"^only (.+?),\s*nothing else\s*([.!]?)$").match(text)
+    if m is not None and not _rx(r"\b(?:and|or|,)\b").search(m.group(1)):
+        text = f"{m.group(1)}{m.group(2)}"
+    # "Leave the apple, give Person B the rest": everything except the apple
+    m = _rx(r"^leave (the [a-z ]+?),\s*(give|hand|pass) ([^,]+?) the rest\s*([.!]?)$").match(text)
+    if m is not None and _ids(m.group(1), lexicon, "object") and _only_person(m.group(3), lexicon):
+        text = f"{m.group(2)} {m.group(3)} everything except {m.group(1)}{m.group(4)}"
+    # "Don't bother with the magazine, just take Mrs Khan her tablets": the second
+    m = _rx(
+        r"^(?:don't|do not) (?:bother|worry)(?: with| about) (the [a-z ]+?),\s*just (.+)$"
+    ).match(text)
+    if m is not None:
+        left = _ids(m.group(1), lexicon, "object")
+        if left and not left & _ids(m.group(2), lexicon):
+            text = m.group(2)
+    # "No banana for Emma, she wants the white cup": Emma wants the white cup
+    m = _rx(
+        r"^no ([a-z ]+?) for ([^,]+?),\s*(?:she|he)(?:'d| would)? (?:wants?|needs?|like|prefers?|"
+        r"'d rather have) (the [a-z ]+?)\s*([.!]?)$"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m.group(2), lexicon)
+        and _fits(next(iter(_ids(m.group(2), lexicon))), text, lexicon)
+        and _ids(m.group(1), lexicon, "object")
+        and _ids(m.group(3), lexicon, "object")
+        and not _ids(m.group(1), lexicon) & _ids(m.group(3), lexicon)
+    ):
+        text = f"{m.group(2)} wants {m.group(3)}{m.group(4)}"
+    return text
+
+
+# -- corrections ---------------------------------------------------------------------------------
+
+
+def _correction_frames(text: str, lexicon: Lexicon) -> str:
+    """Corrections said in other frames, each rewritten to 'X, no, Y'."""
+    # ", no wait," ", correction," ", no, silly me," ", sorry, silly me,": no
+    text = _sub(
+        r",\s*(?:no,?\s*wait|correction|no,?\s*silly me|sorry,?\s*silly me|no,?\s*my mistake)"
+        r"\s*,\s*(?=[a-z])",
+        ", no, ",
+        text,
+    )
+    # "Spoon to Dana, no, spoon to Emma": the same object to another person
+    m = _rx(
+        r"^((?:the )?[a-z ]+?) (to|for) ([^,]+?),\s*no,\s*(?:the )?([a-z ]+?) (to|for) ([^,.!]+?)"
+        r"\s*([.!]?)$"
+    ).match(text)
+    if m is not None:
+        said, again = _ids(m.group(1), lexicon, "object"), _ids(m.group(4), lexicon, "object")
+        if said and said == again and _only_person(m.group(6), lexicon):
+            text = f"{m.group(1)} {m.group(2)} {m.group(3)}, no, to {m.group(6)}{m.group(7)}"
+    # "…, sorry, blue plate, the white one's chipped": the reason for the correction
+    text = _sub(
+        r"(,\s*(?:no|sorry),\s*[^,]+?),\s*the [a-z]+ one(?:'s| is) (?:chipped|cracked|dirty|broken|"
+        r"empty|wrong|used|wet|full|too [a-z]+)\s*([.!]?)$",
+        r"\1\2",
+        text,
+    )
+    # "…, or hang on, was it the crisps she wanted? Yes, the crisps.": no, the crisps
+    m = _rx(
+        r",?\s*or (?:hang on|hold on|wait),?\s*was it (the [a-z ]+?) (?:she|he|they) wanted\?\s*"
+        r"(?:yes|yeah|yep),?\s*(the [a-z ]+?)\s*([.!]?)$"
+    ).search(text)
+    if (
+        m is not None
+        and _ids(m.group(1), lexicon) == _ids(m.group(2), lexicon)
+        and _ids(m.group(1), lexicon, "object")
+    ):
+        text = f"{text[: m.start()]}, no, {m.group(2)}{m.group(3)}"
+    # "No, not bowl, I said spoon.": no, the spoon
+    text = _sub(
+        r"\bno,?\s*not (?:the )?([a-z ]+?),\s*i (?:said|meant|mean) (?:the )?([a-z ]+?)\s*([.!]?)$",
+        lambda x: (
+            f"No, the {x.group(2)}{x.group(3)}"
+            if _ids(x.group(1), lexicon, "object")
+            and _ids(x.group(2), lexicon, "object")
+            and _rx(rf"\b{re.escape(x.group(1))}\b").search(text[: x.start()])
+            else x.group(0)
+        ),
+        text,
+    )
+    # "… the red book on the desk. Wait, not the red book, the scissors.": said in its place
+    m = _rx(
+        r"(?<=[.!])\s*(?:wait|no|sorry|oh),?\s*not (the [a-z ]+?),\s*(the [a-z ]+?)\s*([.!]?)$"
+    ).search(text)
+    if m is not None:
+        before = text[: m.start()]
+        found = list(_rx(rf"\b{re.escape(m.group(1))}\b").finditer(before))
+        if len(found) == 1 and _ids(m.group(2), lexicon, "object") and _ids(m.group(1), lexicon):
+            at = found[0]
+            text = f"{before[: at.start()]}{m.group(2)}{before[at.end() :]}"
+    return text
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _people_then_pronoun,
+    _inert_sentences,
+    _courtesy_frames,
+    _want_frames,
+    _remark_owner,
+    _same_person,
+    _both_got_theirs,
+    _run_on_remarks,
+    _choice_frames,
+    _count_frames,
+    _exclusion_frames,
+    _correction_frames,
     _asked_then_told,
     _run_on_leads,
     _courtesy_ifs,

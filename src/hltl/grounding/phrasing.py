@@ -1405,7 +1405,11 @@ def _instead(items: list[Item]) -> list[Item]:
             stop -= 1
         if stop <= start or not _is(items[stop - 1], "instead"):
             continue
-        marked = any(_is(x, "correct") for x in items[start : stop - 1])
+        marked = any(
+            _is(x, "correct")
+            or (x.text.lower() == "no" and _is(x, "not") and n > start and _is(items[n - 1], ","))
+            for n, x in enumerate(items[start : stop - 1], start)
+        )
         if not marked and start == 0:
             continue
         body = items[start : stop - 1]
@@ -1426,7 +1430,12 @@ def _corrections(items: list[Item]) -> list[Item]:
         it = items[k]
         after_pause = k > 0 and _is(items[k - 1], ",", "-", *_END)
         is_marker = _is(it, "correct") or (
-            it.kind == "word" and it.lemma == "not" and it.text.lower() == "no" and after_pause
+            it.kind == "word"
+            and it.lemma == "not"
+            and it.text.lower() == "no"
+            and after_pause
+            # "Good morning. No banana for Emma, …": 'no' before a name says none of it
+            and not (k + 1 < len(items) and _objects(items[k + 1]))
         )
         if not is_marker:
             k += 1
@@ -1538,6 +1547,27 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
     m = n - 1
     while m > 0 and _is(before[m - 1], "det", "to", "for"):
         m -= 1
+    left_out = next(
+        (
+            x
+            for x in reversed(before[: m - 1])
+            if _is(x, *_END) or _is_verb_item(x) or _is(x, "except", "instead_of", "not")
+        ),
+        None,
+    )
+    if (
+        m > 1
+        and _is(before[m - 1], ",")
+        and left_out is not None
+        and _is(left_out, "except", "instead_of", "not")
+        and left_out.text.lower() != "no"
+    ):
+        # "Kofi wants the spanner, not the small one, the big one, correction, the hammer": the
+        # one picked after what is left out, or the whole?
+        raise GroundingError(
+            f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}, said after "
+            f"{left_out.text!r}: what does it change? say the whole request again"
+        )
     if m > 0 and (
         _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
     ):
@@ -1546,6 +1576,20 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
         raise GroundingError(
             f"{marker.text!r} after {_words_of(before[m - 1 : n])!r}: does it change what is left "
             f"out, or what {_words_of(after[:3])!r} replaces? say the whole request again"
+        )
+    replaced = next((x for x in reversed(before[:n]) if _objects(x)), None)
+    new = next((x for x in after if x.kind == "ent"), None)
+    if (
+        replaced is not None
+        and new is not None
+        and _objects(new)
+        and sum(1 for x in before if _objects(x) and _ids_of(x) == _ids_of(replaced)) > 1
+    ):
+        # "Alice gets the cup. Alice gets the cup! The cup to Alice, no, the apple": the object
+        # the correction replaces was said before too; does it take back each saying?
+        raise GroundingError(
+            f"{marker.text!r} after {replaced.text!r}, said more than once: does it take back "
+            "each? say the whole request again"
         )
     if _objects(before[n - 1]) and any(
         _objects(x) and {r.id for r in x.refs} == {r.id for r in before[n - 1].refs}
@@ -1567,6 +1611,10 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
                 f"{marker.text!r} after '{earlier.text}, {_words_of(before[m:n])}': does it "
                 "change the choice, or the one picked? say the whole request again"
             )
+
+
+def _ids_of(item: Item) -> frozenset[str]:
+    return frozenset(r.id for r in item.refs)
 
 
 def _words_of(items: list[Item]) -> str:
@@ -1618,7 +1666,15 @@ def _apply_correction(
         # before it: its subject too); "it" keeps meaning what that clause moved
         verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
         if not verbs:
-            raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+            # "The cup to Alice, sorry, hand it to her instead": a clause without a verb (an
+            # object and whom it is for) is taken back from its start
+            cut = len(before)
+            while cut > start and not _is(before[cut - 1], *_SEPARATORS):
+                cut -= 1
+            said = before[cut:]
+            if not (any(_objects(x) for x in said) and any(_humans(x) for x in said)):
+                raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+            verbs = [cut]
         cut = verbs[-1]
         while cut > start and not _is(before[cut - 1], *_SEPARATORS):
             cut -= 1
@@ -1633,8 +1689,14 @@ def _apply_correction(
         rest = list(after)
         if len(people) == 1:
             (who,) = people.values()
-            for m in range(_clause_stop(rest, 0, to_comma=False)):
+            stop = _clause_stop(rest, 0, to_comma=False)
+            again = _moves_again(rest[:stop], moved)
+            for m in range(stop):
                 if rest[m].lemma == "pronoun" and rest[m].text.lower() in _PERSON_PRONOUNS:
+                    if again:
+                        # "Give Bob the apple, no wait, give it to her instead": the same object
+                        # again, so 'her' is someone other than the one taken back
+                        raise _SomeoneElse(rest[m].text, marker.text, who.refs[0].id)
                     rest[m] = replace(who, text=rest[m].text)
         for m, x in enumerate(rest):
             if x.kind == "punct" and x.lemma in _END:
@@ -1667,6 +1729,59 @@ def _apply_correction(
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
             return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+
+
+class _SomeoneElse(GroundingError):
+    """A person pronoun in a correction that moves the same object again: it cannot mean the
+    person the correction takes the object from (the scene's names are added by
+    _corrections_named)."""
+
+    def __init__(self, pronoun: str, marker: str, taken_back: str) -> None:
+        super().__init__(f"{pronoun!r} after {marker!r} is not resolved")
+        self.pronoun, self.marker, self.taken_back = pronoun, marker, taken_back
+
+
+def _moves_again(clause: list[Item], moved: list[Item]) -> bool:
+    """Whether a correcting clause moves an object the clause it takes back moved: by 'it' or
+    'them', or by its name."""
+    ids = {r.id for x in moved for r in x.refs}
+    return bool(ids) and any(
+        _is(x, "it", "them")
+        or (x.lemma == "pronoun" and x.text.lower() == "them")
+        or (_objects(x) and {r.id for r in x.refs} <= ids)
+        for x in clause
+    )
+
+
+def _corrections_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """_corrections, with the people a pronoun of _SomeoneElse could mean: the one person left
+    is meant; with several, refused listing them (never dropped, never the one taken back)."""
+    try:
+        return _corrections(items)
+    except _SomeoneElse as other:
+        sex = PRONOUN_SEX.get(other.pronoun.lower())
+        left = [
+            h.id
+            for h in lexicon.scene.humans
+            if h.id != other.taken_back and title_sex(h.id, lexicon) in (None, sex)
+        ]
+        if len(left) == 1:
+            return _corrections(_named_for(items, other.pronoun, left[0]))
+        raise GroundingError(
+            f"{other.pronoun!r} after {other.marker!r} is not resolved: the same object goes to "
+            f"someone other than {person_name(other.taken_back, lexicon)}, so it could mean "
+            f"{_or(left or [h.id for h in lexicon.scene.humans], lexicon)}; name the person"
+        ) from None
+
+
+def _named_for(items: list[Item], pronoun: str, pid: str) -> list[Item]:
+    """``items`` with the last person pronoun ``pronoun`` standing for person ``pid``."""
+    out = list(items)
+    for k in range(len(out) - 1, -1, -1):
+        if out[k].lemma == "pronoun" and out[k].text == pronoun:
+            out[k] = Item("ent", pronoun.lower(), pronoun, (Ref("human", pid),))
+            break
+    return out
 
 
 def _person_and_object(
@@ -2020,6 +2135,7 @@ def _exclusions(items: list[Item]) -> list[Item]:
                     j + 1 < len(items)
                     and _is(items[j], "and", ",", "or")
                     and _starts_objects(items, j + 1)
+                    and (not _is(items[j], ",") or _listed_after(items, j + 1, out))
                 ):
                     j += 1
                     continue
@@ -2055,8 +2171,39 @@ def _exclusions(items: list[Item]) -> list[Item]:
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
         out[target] = replace(out[target], refs=kept)
+        p = _past_dets(items, j + 1)
+        if (
+            j < len(items)
+            and _is(items[j], ",")
+            and p < len(items)
+            and _objects(items[p])
+            and {r.id for r in items[p].refs} < {r.id for r in kept}
+        ):
+            # "the box, not the small one, the large one": the one said after it is meant
+            out[target] = replace(out[target], refs=items[p].refs)
+            j = p + 1
         k = j
     return out
+
+
+def _listed_after(items: list[Item], j: int, out: list[Item]) -> bool:
+    """Whether the object at ``items[j:]`` (after a comma) goes on a list with 'and', 'or' or
+    another comma of objects the last name said (``out``) has ('not the red one, the green one
+    or the blue one'); alone after the comma, or listed with something else, it says which is
+    meant ('the box, not the small one, the large one (and the tape)')."""
+    named = next((x for x in reversed(out) if _objects(x)), None)
+    p = _past_dets(items, j)
+    if named is None or not (p + 2 < len(items) and _objects(items[p])):
+        return False
+    q = _past_dets(items, p + 2)
+    has = {r.id for r in named.refs}
+    return (
+        _is(items[p + 1], "and", "or", ",")
+        and q < len(items)
+        and _objects(items[q])
+        and {r.id for r in items[p].refs} <= has
+        and {r.id for r in items[q].refs} <= has
+    )
 
 
 # descriptions that pick among the objects a name names, measured in the scene (_places)
@@ -2197,6 +2344,9 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
     return items
 
 
+_BARE_PARTICIPLES = frozenset({"put", "set", "sent", "left", "brought", "handed", "passed"})
+
+
 def _listed_on(items: list[Item], k: int) -> bool:
     """Whether ``items[k:]`` goes on with a list of objects up to a participle ('the cup and the
     chips brought to Bob'): objects, articles, 'and', commas, then the participle; or with
@@ -2211,7 +2361,10 @@ def _listed_on(items: list[Item], k: int) -> bool:
         elif not _is(it, "det", ",", "filler"):
             # "the apple, the cup and the chips brought to Bob"; "the apple, please, for Bob"
             if seen:
-                return joined and _is_verb_item(it)
+                # a participle ("brought", "put"), not a verb of its own ("… all go on …")
+                low = it.text.lower()
+                participle = low.endswith(("ed", "en", "ught")) or low in _BARE_PARTICIPLES
+                return joined and _is_verb_item(it) and participle
             return _is(it, "to", "for")
         k += 1
     return False
@@ -3066,7 +3219,8 @@ def _i_mean_after(items: list[Item]) -> list[Item]:
     for k, it in enumerate(items):
         if not (_is(it, "correct") and it.text.lower() in ("i mean", "i meant")):
             continue
-        if k + 1 < len(items) and not (items[k + 1].kind == "punct" and items[k + 1].lemma in _END):
+        # "…, the red one I mean, no, the crisps": a pause after it ends what it brings too
+        if k + 1 < len(items) and not _is(items[k + 1], *_END, ",", "-"):
             said = k > 1 and items[k - 1].kind == "ent" and items[k + 1].kind != "punct"
             if said and (
                 _is(items[k - 2], ",")
@@ -3321,6 +3475,10 @@ def _let(items: list[Item]) -> list[Item]:
         if _is(it, "let"):
             if k + 1 < len(items) and _humans(items[k + 1]):
                 continue
+            nxt = items[k + 1] if k + 1 < len(items) else None
+            if nxt is not None and nxt.lemma == "pronoun" and nxt.text.lower() in ("him", "her"):
+                continue  # "…, let her have it": 'her' is resolved (or refused) as a person
+
             raise GroundingError(
                 f"cannot read {_words_of(items[k : k + 3])!r}: say who gets what, e.g. "
                 "'let Carol have the cup'"
@@ -4630,7 +4788,61 @@ def _described_then_corrected(items: list[Item]) -> list[Item]:
     return items
 
 
+def _any_described(items: list[Item]) -> list[Item]:
+    """'Any one of the pens in the box, please', 'Any cup on the tray': with no verb, a place
+    after 'any (one of) <objects>' can say which of them are meant (those in the box) as well as
+    where one goes: refused ('Put any one of the pens in the box' is a placement)."""
+    for start, end in _sentences(items):
+        sent = items[start:end]
+        if any(_is_verb_item(x) for x in sent):
+            continue
+        for k in range(len(sent) - 2):
+            if not (_is(sent[k], "q:some") and sent[k].text.lower().startswith("any")):
+                continue
+            if not (_objects(sent[k + 1]) and len({r.id for r in sent[k + 1].refs}) > 1):
+                continue
+            if not _is(sent[k + 2], "on"):
+                continue
+            s = _past_dets(sent, k + 3)
+            if s < len(sent) and sent[s].kind == "ent" and sent[s].refs[0].kind == "surface":
+                said = f"{sent[k + 2].text} {' '.join(x.text for x in sent[k + 3 : s + 1])}"
+                raise GroundingError(
+                    f"{said!r} after '{sent[k].text} {sent[k + 1].text}' could say which of them "
+                    f"are meant or where one goes: say 'put {sent[k].text.lower()} "
+                    f"{sent[k + 1].text} {said}'"
+                )
+    return items
+
+
+def _for_me_alone(items: list[Item]) -> list[Item]:
+    """'Give Noah the glue, and the globe for me': 'for me' (read as courtesy: 'do it for me')
+    ending a part that names an object and no one and nowhere, with no verb of its own, may make
+    the speaker its recipient: refused ('Give Bob the cup for me', 'the magazine on the bedside
+    table for me' stay courtesy)."""
+    for k, it in enumerate(items):
+        if not (_is(it, "filler") and it.text.lower() in ("for me", "for us")):
+            continue
+        n = k
+        while (
+            n > 0 and not _is(items[n - 1], "and", ",", *_END) and not _is_verb_item(items[n - 1])
+        ):
+            n -= 1
+        part = items[n:k]
+        if n > 0 and _is_verb_item(items[n - 1]):
+            continue
+        placed = any(x.kind == "ent" and x.refs[0].kind == "surface" for x in part)
+        if any(_objects(x) for x in part) and not any(_humans(x) for x in part) and not placed:
+            said = " ".join(x.text for x in part)
+            raise GroundingError(
+                f"{it.text!r} after {said!r} could make the speaker its recipient, and the "
+                "speaker is not a person in the scene: name the person who gets it"
+            )
+    return items
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_for_me_alone),
+    _plain(_any_described),
     _plain(_described_then_corrected),
     _plain(_choice_restated),
     _plain(_any_order),
@@ -4681,7 +4893,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_never_mind),
     _plain(_i_mean_after),
     _plain(_swaps),
-    _plain(_corrections),
+    _corrections_named,
     _plain(_nobody),
     _plain(_instead_of),
     _plain(_exclusions),

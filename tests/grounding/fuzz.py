@@ -1,0 +1,238 @@
+"""The wrapper fuzz of the paraphrase corpus (issue 12; docs/grounding.md, "Fuzz").
+
+Every entry of every part is said again inside words that change nothing (openers, closers, both
+together), which must read as the entry does (or be refused); with remarks that name, hedge or ask
+for the speaker, or closers that delay or add, which must be refused; and, for an entry of one
+handover, corrected to another object (which must read as that object to that person, or be
+refused) or with a correction cut off or left open (refused).
+
+Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
+``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
+sample of it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import random
+import sys
+from collections import Counter
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+from hltl.bench.grounding import CORPUS_DIR, PARTS, Entry, load_corpus, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.lexicon import Lexicon, lex
+from hltl.grounding.offline import parse_instruction, spec_of
+from hltl.grounding.tree import Node, Task, tasks
+from hltl.spec.equivalence import counterexample
+from hltl.world.scene import Scene
+
+ROOT = Path(__file__).resolve().parents[2]
+
+# words around a request that ask nothing (each must leave the reading as it is)
+OPENERS = (
+    "Right, ",
+    "Okay, so, ",
+    "Hiya! ",
+    "Good morning. ",
+    "Let me think... ",
+    "Order's up so ",
+    "Robot, ",
+    "Hey robot, ",
+    "Morning! ",
+    "Sorry to bother you, but ",
+    "I know you're busy, but ",
+    "Okay darling, let's get you sorted. ",
+    "Yes chef! ",
+    "Good afternoon. When convenient, ",
+    "Pretty please, ",
+    "Cheers for that. One more favour, ",
+    "I hope this is okay, ",
+    "Oh, thank you so much for earlier. Now, ",
+    "Right, eyes on me everyone. ",
+)
+CLOSERS = (
+    ", before I go",
+    ". That's all from me.",
+    " and that's us done",
+    ". Have a great day.",
+    ". Good robot.",
+    ". Regards.",
+    ". Go.",
+    ", go go go",
+    ". Thanks!",
+    ", cheers",
+    ". Done.",
+    ", if that's alright with you.",
+)
+# remarks that name, hedge or ask for the speaker, and closers that delay or add: refused
+NEAR_OPENERS = (
+    "I want the {o} too. ",
+    "We need the {o}, ",
+    "I'm not sure, ",
+    "I'll need it back, so ",
+    "Give me the {o} as well. ",
+    "Not yet, ",
+    "If {p} is here, ",
+)
+NEAR_CLOSERS = (
+    ", before I go tomorrow",
+    ". That's all from me and {p}.",
+    ". I want one too.",
+    ", and the {o} for me",
+)
+CORRECTIONS = (
+    ", scratch that, the {o}",
+    ", no, I tell a lie, the {o}",
+    ", no wait, the {o}",
+    ", correction, the {o}",
+)
+CUT_OFF = (", scratch that", ", or was it {p}...", ", no wait", ", correction,")
+
+Must = Literal["same", "refuse"]
+
+
+@dataclass(frozen=True, slots=True)
+class Variant:
+    part: str
+    scene: str
+    text: str
+    want: Node | None  # what it must read as (None: refused); a refusal is always allowed
+    must: Must
+
+
+def _name(scene: Scene, oid: str) -> str:
+    for o in scene.objects:
+        if o.id == oid:
+            return o.aliases[0] if o.aliases else o.id
+    h = next(h for h in scene.humans if h.id == oid)
+    shared = {a for x in scene.humans if x.id != oid for a in x.aliases}
+    return next((a for a in (*h.aliases, h.name) if a not in shared), h.name)
+
+
+def _unique_objects(scene: Scene) -> list[str]:
+    cats = [o.category for o in scene.objects]
+    return [o.id for o in scene.objects if cats.count(o.category) == 1]
+
+
+def _objects_named(text: str, scene: Scene) -> set[str]:
+    try:
+        items = lex(text, Lexicon.of(scene))
+    except GroundingError:
+        return set()
+    return {r.id for it in items if it.kind == "ent" for r in it.refs if r.kind == "object"}
+
+
+def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The fuzz's variants of one entry (three openers, three closers, one of each together,
+    three near openers, two near closers; corrections for an entry of one handover)."""
+    text = entry.text.strip()
+    bare = text.rstrip(".!")
+    plain_end = not text.endswith("?")
+    objects = _unique_objects(scene)
+    # a near form names an object the entry does not (one it names may be only said again)
+    named = {t.obj for t in tasks(entry.want)} if entry.want is not None else set()
+    unnamed = [x for x in objects if x not in named] or objects
+    o = _name(scene, rng.choice(unnamed)) if unnamed else "thing"
+    p = _name(scene, rng.choice(scene.humans).id)
+
+    def said(opener: str, body: str) -> str:
+        if opener.endswith(("but ", "so ", ", ")) and body[:1].isupper() and body[1:2].islower():
+            body = body[:1].lower() + body[1:]
+        return opener + body
+
+    for opener in rng.sample(OPENERS, 3):
+        yield Variant(part, entry.scene, said(opener, text), entry.want, "same")
+    if plain_end:
+        for closer in rng.sample(CLOSERS, 3):
+            yield Variant(part, entry.scene, bare + closer, entry.want, "same")
+        both = said(rng.choice(OPENERS), bare) + rng.choice(CLOSERS)
+        yield Variant(part, entry.scene, both, entry.want, "same")
+    # (not before an entry that opens by taking back what came before: "Scratch that - …")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    for near in rng.sample(NEAR_OPENERS, 3):
+        if not takes_back:
+            yield Variant(part, entry.scene, said(near.format(o=o, p=p), text), None, "refuse")
+    if plain_end:
+        for near in rng.sample(NEAR_CLOSERS, 2):
+            yield Variant(part, entry.scene, bare + near.format(o=o, p=p), None, "refuse")
+    want = entry.want
+    # a correction to another object (only where the entry names no other object, which the
+    # correction could replace instead: "… Do not give him the gloves, no, the scanner")
+    if (
+        plain_end
+        and isinstance(want, Task)
+        and want.kind == "deliver"
+        and _objects_named(text, scene) <= {want.obj}
+    ):
+        others = [x for x in objects if x != want.obj]
+        if others:
+            other = rng.choice(others)
+            fixed = Task("deliver", other, want.target)
+            form = rng.choice(CORRECTIONS)
+            yield Variant(
+                part, entry.scene, bare + form.format(o=_name(scene, other)), fixed, "same"
+            )
+        cut = rng.choice(CUT_OFF)
+        yield Variant(part, entry.scene, bare + cut.format(p=p), None, "refuse")
+
+
+def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "wrong"]:
+    """How the grounder reads a variant: as it must, refused, or otherwise (wrong)."""
+    try:
+        got = parse_instruction(variant.text, scene)
+    except GroundingError:
+        return "refused"
+    if variant.must == "refuse" or variant.want is None:
+        return "wrong"
+    if show_tree(got) == show_tree(variant.want):
+        return "exact"
+    same = counterexample(spec_of(got), spec_of(variant.want)) is None
+    return "exact" if same else "wrong"
+
+
+def run(
+    parts: tuple[str, ...] = PARTS, seed: int = 16, every: int = 1
+) -> tuple[Counter[str], list[tuple[Variant, str]]]:
+    """Every ``every``-th entry of ``parts`` fuzzed with ``seed``: the counts by verdict and the
+    wrong readings (each with what was read)."""
+    rng = random.Random(seed)
+    counts: Counter[str] = Counter()
+    wrong: list[tuple[Variant, str]] = []
+    for part in parts:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        for n, entry in enumerate(corpus.entries):
+            if n % every:
+                continue
+            scene = corpus.scenes[entry.scene]
+            for v in variants(part, entry, scene, rng):
+                result = verdict(v, scene)
+                counts[f"{v.must}:{result}"] += 1
+                if result == "wrong":
+                    read = show_tree(parse_instruction(v.text, scene))
+                    wrong.append((v, read))
+    return counts, wrong
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seed", type=int, default=16)
+    parser.add_argument("--parts", default=",".join(PARTS))
+    parser.add_argument("--every", type=int, default=1, help="fuzz every n-th entry only")
+    args = parser.parse_args(argv)
+    parts = tuple(p for p in args.parts.split(",") if p)
+    counts, wrong = run(parts, args.seed, args.every)
+    for key in sorted(counts):
+        print(f"{key}: {counts[key]}")
+    print(f"variants: {sum(counts.values())}, wrong: {len(wrong)}")
+    for v, read in wrong:
+        want = show_tree(v.want) if v.want is not None else "a refusal"
+        print(f"WRONG [{v.part}] {v.scene}: {v.text!r} read {read}, want {want}")
+    return 1 if wrong else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
