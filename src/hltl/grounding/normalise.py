@@ -3480,6 +3480,12 @@ def _only_person(words: str, lexicon: Lexicon) -> bool:
     return len(_ids(words, lexicon)) == 1 and _only(words, lexicon, "human")
 
 
+def _the_person(words: str, text: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` name exactly one person and every he/she/him/her in ``text`` may be
+    that person."""
+    return _only_person(words, lexicon) and _fits(next(iter(_ids(words, lexicon))), text, lexicon)
+
+
 def _said_why(text: str, lexicon: Lexicon) -> str:
     """After a correction, the reason for it restated: "…, no, on the trolley, that's nearer",
     "…, no, Marco, it's Marco who wanted it", "…, sorry, red mug, she always has the red one",
@@ -4413,11 +4419,7 @@ def _want_frames(text: str, lexicon: Lexicon) -> str:
         r"(?: i think(?: it is| that is)?| i believe| i reckon| is it)?,\s*(?:he|she)(?:'d| would)"
         r" like\b"
     ).match(text)
-    if (
-        m is not None
-        and _only_person(m.group(1), lexicon)
-        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
-    ):
+    if m is not None and _the_person(m.group(1), text, lexicon):
         text = f"{m.group(1)} would like{text[m.end() :]}"
     return " ".join(text.split())
 
@@ -4521,11 +4523,7 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
         rf"^([^,]+?)\s*(?:{_NOT_FUSSY})\s*,\s*(?:any|either) ([a-z]+) (?:will do|is fine|'ll do|"
         r"will be fine)(?: for (?:him|her))?\s*([.!]?)$"
     ).match(text)
-    if (
-        m is not None
-        and _only_person(m.group(1), lexicon)
-        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
-    ):
+    if m is not None and _the_person(m.group(1), text, lexicon):
         return f"give {m.group(1)} any {m.group(2)}{m.group(3)}"
     # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar
     m = _rx(
@@ -4645,11 +4643,7 @@ def _count_frames(text: str, lexicon: Lexicon) -> str:
         r"^([^,]+?)(?:'s| is) getting (the [a-z ]+?)(?: tonight| now| today| later)?(?:,\s*(?:she|"
         r"he)(?:'s| is) [a-z]+)?\s*([.!]?)$"
     ).match(text)
-    if (
-        m is not None
-        and _only_person(m.group(1), lexicon)
-        and _fits(next(iter(_ids(m.group(1), lexicon))), text, lexicon)
-    ):
+    if m is not None and _the_person(m.group(1), text, lexicon):
         text = f"{m.group(1)} gets {m.group(2)}{m.group(3)}"
     return text
 
@@ -4699,8 +4693,7 @@ def _exclusion_frames(text: str, lexicon: Lexicon) -> str:
     ).match(text)
     if (
         m is not None
-        and _only_person(m.group(2), lexicon)
-        and _fits(next(iter(_ids(m.group(2), lexicon))), text, lexicon)
+        and _the_person(m.group(2), text, lexicon)
         and _ids(m.group(1), lexicon, "object")
         and _ids(m.group(3), lexicon, "object")
         and not _ids(m.group(1), lexicon) & _ids(m.group(3), lexicon)
