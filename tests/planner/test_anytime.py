@@ -380,3 +380,28 @@ def test_the_first_pair_is_tried_when_the_first_plan_came_after_the_pairs_share(
     late = _pairs_at_start(problem, s, start, over, lb, first_until=time.perf_counter() + 60)
     assert to_seconds(round(late)) == to_seconds(round(lb)) + 1.0
     assert _pairs_at_start(problem, s, start, over, lb, first_until=over) == 0.0
+
+
+def test_beyond_the_step_bound_without_the_profile_bound_the_walk_keeps_the_a_star_slice(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # a 17-robot line (a pair beats the start bound, so no profile bound): an A* slice at the
+    # end raised no bound on such cells, so the walk goes on to the deadline and A* never runs
+    seen: dict[str, float] = {}
+    real_more = anytime._more
+
+    def more(problem: Problem, s: _Search, until: float, **kwargs: float) -> object:
+        seen["until"] = until
+        return real_more(problem, s, until, **kwargs)
+
+    def no_search(*args: object, **kwargs: object) -> None:
+        raise AssertionError("A* ran")
+
+    monkeypatch.setattr(anytime, "_more", more)
+    monkeypatch.setattr(anytime, "search", no_search)
+    c = delivery_cell("line", 17, 0)
+    problem = Problem(c.scene, c.spec)
+    t0 = time.perf_counter()
+    res = anytime.plan_anytime(problem, timeout=2.0)
+    assert res.status is PlanStatus.SOLVED and res.gap is not None
+    assert seen["until"] >= t0 + 2.0  # (the deadline, not the walk's 90 %)
