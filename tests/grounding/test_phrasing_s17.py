@@ -8,8 +8,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from hltl.errors import GroundingError
 from hltl.grounding.lexicon import common_words, first_names
-from hltl.world.scene import Scene
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -17,13 +19,18 @@ from tests.grounding.helpers import (
     KITCHEN,
     LAB,
     NURSERY,
+    OFFICE,
+    ROOT,
     SCENES,
     WORKSHOP,
     assert_reads,
     assert_refused,
     name_of,
     plain_request,
+    unique_objects,
 )
+
+F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")
 
 # -- a typo that is another first name ("Give the banana to Dina": read as Dana in blind15) -------
 #
@@ -137,3 +144,147 @@ def test_a_later_letter_changed_into_another_name_is_refused(text: str, scene: S
 )
 def test_the_same_name_spelt_another_way_is_still_read(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+# -- refusals that say their readings (blind15's two refusals without readings) -----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "readings"),
+    [
+        ("Sam gets the blue pen, no wait, the other one I mean", OFFICE, ["pen_black", "pen_red"]),
+        ("Tom gets the small box, no wait, the other one", DEPOT, ["box_medium", "box_large"]),
+        (
+            "Ava keeps pointing at the blokc, can she have it?",
+            NURSERY,
+            ["block_red", "block_green"],
+        ),
+        (
+            "Jess keeps pointing at the spanenr, can she have it?",
+            WORKSHOP,
+            ["spanner_small", "spanner_large"],
+        ),
+        (
+            "Lena keeps asking about the plaet, can she have it?",
+            KITCHEN,
+            ["plate_white", "plate_blue"],
+        ),
+    ],
+)
+def test_a_refusal_names_what_the_other_or_a_typo_could_mean(
+    text: str, scene: Scene, readings: list[str]
+) -> None:
+    with pytest.raises(GroundingError) as err:
+        parse_instruction(text, scene)
+    for r in readings:
+        assert r in str(err.value)
+
+
+def test_the_other_of_two_is_still_read() -> None:
+    assert_reads("Omar gets the green cup, no wait, the other one I mean", "cup_white>B", LAB)
+
+
+# -- 'he' and 'she' are two people ---------------------------------------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(SCENES), st.integers(0, 12), st.sampled_from([("he", "she"), ("she", "he")]))
+def test_he_and_she_with_one_person_named_are_refused(
+    scene: Scene, k: int, pronouns: tuple[str, str]
+) -> None:
+    objs = unique_objects(scene)
+    if len(objs) < 2:
+        return
+    _, want = plain_request(scene, k)
+    pid = want.split(">")[1]
+    p = name_of(scene, pid)
+    a, b = objs[k % len(objs)], objs[(k + 1) % len(objs)]
+    one, other = pronouns
+    text = (
+        f"{p} wants the {name_of(scene, a)}, {one}'s busy, and {other} wants the "
+        f"{name_of(scene, b)}"
+    )
+    assert_refused(text, scene)
+
+
+# -- blind15's kinds: each frame over the scenes reads as the plain request ----------------------
+
+FRAMES = [
+    "Excuse me, sorry to interrupt, could you give {p} the {o}? Many thanks.",
+    "Could I trouble you to give {p} the {o}? Cheers.",
+    "Now then, dear, be a good helper and give {p} the {o}, won't you?",
+    "Be a dear and give {p} the {o}, there's a love.",
+    "{p} is hoping to get the {o}",
+    "{p} could do with the {o}",
+    "{p} is to have the {o}",
+    "See the {o}? Take it over to {p}.",
+    "You can give the {o} to {p}, yes?",
+    "Would you mind passing the {o} along to {p}?",
+    "Any chance of the {o} going to {p}?",
+    "Scene change. The {o} to {p}. Go.",
+    "The {o} to {p}, and that's your lot",
+]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.sampled_from(SCENES), st.integers(0, 12), st.sampled_from(FRAMES))
+def test_a_frame_of_blind15_reads_as_the_plain_request(scene: Scene, k: int, frame: str) -> None:
+    _, want = plain_request(scene, k)
+    oid, pid = want.split(">")
+    assert_reads(frame.format(p=name_of(scene, pid), o=name_of(scene, oid)), want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Bob the cup, and do the same for Carol but with the apple", "cup>B & apple>C", CELL),
+        ("The bowl and the spoon: put them both in the sink.", "bowl@sink & spoon@sink", LAB),
+        ("First the lemon to Lena. After, the salt to Marco. Finish.", "lemon>B ; salt>A", KITCHEN),
+        ("Spoon: Omar. Bowl: Dana. Sponge: sink.", "spoon>B & bowl>A & sponge@sink", LAB),
+        (
+            "Pens first: red pen in the box. Then the stapler goes to Sam.",
+            "pen_red@box ; stapler>B",
+            OFFICE,
+        ),
+        ("Either cup is fine for Omar", "cup_green>B | cup_white>B", LAB),
+        ("The knife can go to Marco or to Lena, whoever's nearer", "knife>A | knife>B", KITCHEN),
+        ("One of the pens for Priya: the red or the blue", "pen_red>A | pen_blue>A", OFFICE),
+        ("Put the pair of blocks on the play mat", "block_red@mat & block_green@mat", NURSERY),
+        ("Hand Person A the only bottle there is", "bottle>A", CELL),
+        (
+            "Bob is getting a couple of things, namely the cup and the apple",
+            "cup>B & apple>B",
+            CELL,
+        ),
+        ("Leave the bowl where it is and take Emma the spoon", "spoon>C", LAB),
+        ("Give Emma the spoon, no not the spoon, the banana!", "banana>C", LAB),
+        ("Torch to Kofi. No no, not Kofi. Torch to Jess.", "torch>B", WORKSHOP),
+        ("Apple to Carol. Actually no, cup to Carol.", "cup>C", CELL),
+        ("White plate to Mr Novak, whoops, I meant the blue one", "plate_blue>C", KITCHEN),
+        ("the white plate can sit on the rack", "plate_white@rack", KITCHEN),
+    ],
+)
+def test_a_kind_of_blind15_is_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Salt to Lena. Thanks chef, and the knife to you too.", KITCHEN),
+        ("I could do with the scanner", DEPOT),
+        ("See the scanner? Take it over to her.", DEPOT),
+        ("Do the same for Carol but with the apple", CELL),
+        ("Black pen: Sam. Blue pen:", OFFICE),
+        ("One of the drinks for Person A: the bottle or the chips", F42),
+        ("Bob is getting a couple of things, namely the cup, the apple and the chips", CELL),
+        ("Leave the bowl where it is and take Emma the bowl", LAB),
+        ("Person A, but not Person A, gets the cup", F42),
+        ("Bowl to Omar, whoops, I meant the blue one", LAB),
+        ("Torch to Kofi. No no, not Kofi.", WORKSHOP),
+        ("Did you give the lemon to Lena, yes?", KITCHEN),
+        ("Any chance of the drill going to Kofi's brother?", WORKSHOP),
+    ],
+)
+def test_a_near_form_of_blind15_is_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -1358,6 +1358,21 @@ class Lexicon:
             return f" (did you mean {' or '.join(names)}? it is as near to {others})"
         return f" (did you mean {' or '.join(names)}?)"
 
+    def unclear_typos(self, text: str) -> dict[str, list[str]]:
+        """Words of ``text`` that are a slip of a name several objects share ("blokc": the red
+        or the green block) and name nothing themselves: each with the objects it could mean."""
+        out: dict[str, list[str]] = {}
+        for word in _words(text):
+            if not _correctable(word) or word in common_words() or self._phrases.get((word,)):
+                continue
+            ids: dict[str, None] = {}
+            for key, entries in self._phrases.items():
+                if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0]):
+                    ids.update((r.id, None) for r, _, _ in entries if r.kind == "object")
+            if len(ids) > 1:
+                out[word] = list(ids)
+        return out
+
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
         """The entity (or category) a word of 4+ letters names within one edit, else None.
 
