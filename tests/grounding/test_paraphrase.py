@@ -114,11 +114,11 @@ KNOWN_MISSES = frozenset(
         "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after those "
         "two.",
         # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
-        # "blind15 tuned on"): a remark before a pronoun request, 'them' for one person, 'each'
-        # with a list after, 'one of the <description>', purposes ('to bang together', 'before
+        # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
+        # list after, 'one of the <description>', purposes ('to bang together', 'before
         # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
-        # 'Load … up with'), 'isn't the X one', 'one of the other two', 'leave X alone', a person
-        # corrected to a place, 'swap the people', '<placement> for washing'
+        # 'Load … up with'), 'one of the other two', a person corrected to a place, 'swap the
+        # people', "take P's X over to her"
         "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
         "The little one could do with her sippy cup",
         "Take the bottle to Person A. When that's done, the chips go to them too.",
@@ -134,14 +134,11 @@ KNOWN_MISSES = frozenset(
         "Tidy the three pens away in the box",
         "Mia wants the two smaller boxes",
         "Clear everything onto the belt, leave the boxes where they are",
-        "Carol can have whichever mug isn't the red one",
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
         "No red pen for Sam, one of the other two will do",
-        "Leave the crisps alone and put only the bottle on the shelf",
         "Load Tom up with the boxes, just not the small box",
         "Drill to Jess, correction, drill in the locker",
         "Lemon to Marco then knife to Lena, sorry, swap the people",
-        "Drop the spoon in the snik for washing",
         "Would you take Mrs Khan's tablets over to her?",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
         "Give Ava the teddy, won't you give Lily the bib too?",
@@ -153,19 +150,14 @@ KNOWN_MISSES = frozenset(
         "Emma and Omar each get one thing: the banana for Emma, the spoon for Omar",
         "One of the drinks for Person A: the bottle or the cup",
         "Both cups need to go in the sink before lunch",
-        "Sam wants the pair of pens, the black and the blue",
         "Tom wants the two bigger boxes",
         "Clear everything into the locker, leave the spanners where they are",
-        "Marco can have whichever plate isn't the white one",
-        "Omar can have whichever cup isn't the green one",
         "No black pen for Priya, one of the other two will do",
-        "Leave the chips alone and put only the apple on the shelf",
         "Load Jess up with the spanners, just not the small one",
         "Bowl to Omar, correction, bowl in the sink",
         "Stapler to Sam, correction, stapler on the desk",
         "Torch to Kofi then drill to Jess, sorry, swap the people",
         "Apple to Alice and chips to Bob, sorry, swap the people",
-        "Drop the bowl in the snik for washing",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

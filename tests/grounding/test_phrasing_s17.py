@@ -262,6 +262,21 @@ def test_a_frame_of_blind15_reads_as_the_plain_request(scene: Scene, k: int, fra
         ("Apple to Carol. Actually no, cup to Carol.", "cup>C", CELL),
         ("White plate to Mr Novak, whoops, I meant the blue one", "plate_blue>C", KITCHEN),
         ("the white plate can sit on the rack", "plate_white@rack", KITCHEN),
+        ("Marco can have whichever plate isn't the white one", "plate_blue>A", KITCHEN),
+        ("Leave the chips alone and put only the apple on the shelf", "apple@shelf", CELL),
+        ("Drop the spoon in the snik for washing", "spoon@sink", LAB),
+        ("Sam wants the pair of pens, the black and the blue", "pen_black>B & pen_blue>B", OFFICE),
+        ("Bob asked for his appl", "apple>B", CELL),
+        (
+            "Mrs Ortiz is borrowing two books, the red one and the green one",
+            "book_red>A & book_green>A",
+            CLASSROOM,
+        ),
+        (
+            "Okay two things, salt to Marco, lemon to Lena, and that's your lot",
+            "salt>A & lemon>B",
+            KITCHEN,
+        ),
     ],
 )
 def test_a_kind_of_blind15_is_read(text: str, want: str, scene: Scene) -> None:
@@ -284,6 +299,11 @@ def test_a_kind_of_blind15_is_read(text: str, want: str, scene: Scene) -> None:
         ("Torch to Kofi. No no, not Kofi.", WORKSHOP),
         ("Did you give the lemon to Lena, yes?", KITCHEN),
         ("Any chance of the drill going to Kofi's brother?", WORKSHOP),
+        ("Leave the chips alone and put only the chips on the shelf", CELL),
+        ("Okay three things, drill to Kofi, torch to Jess, and that's your lot", WORKSHOP),
+        ("Emma wants the pair of spoons", LAB),
+        ("Sam wants the pair of pens", OFFICE),
+        ("Omar can have whichever spoon isn't the green one", LAB),
     ],
 )
 def test_a_near_form_of_blind15_is_refused(text: str, scene: Scene) -> None:

@@ -4964,7 +4964,8 @@ def _counts17(text: str, lexicon: Lexicon) -> str:
     """'the pair of X' (the two X), '…, there's just the one', 'the only/single X there is',
     'every one of the four X' (all four of the X), 'a couple of things, namely A and B' (when
     two are named)."""
-    out = _sub(r"\bthe pair of ([a-z]+s)\b", r"the two \1", text)
+    out = _sub(r"\bthe pair of ([a-z]+s)(?=\s*,\s*the\b)", r"two \1", text)
+    out = _sub(r"\bthe pair of ([a-z]+s)\b", r"the two \1", out)
     out = _sub(r",\s*there(?:'s| is) (?:just |only )?the one\s*([.!]?)\s*$", r"\1", out)
     out = _sub(r"\bthe (?:only|single|one) ([a-z ]+?) there is\b", r"the \1", out)
     out = _sub(r"\bevery one of the (two|three|four|five|six) ", r"all \1 of the ", out)
@@ -4985,7 +4986,7 @@ def _exclusions17(text: str, lexicon: Lexicon) -> str:
     'P, but not Q, gets', 'Leave X where it is and …' (X not asked for after)."""
     out = _sub(
         r"\bwhichever ([a-z]+) (?:isn't|is not) the ([a-z]+) one\b",
-        r"the \1 that is not the \2 one",
+        r"any \1 except the \2 one",
         text,
     )
     out = _sub(r"\bbesides\b", "except", out)
@@ -5003,10 +5004,15 @@ def _exclusions17(text: str, lexicon: Lexicon) -> str:
         ids = _ids(m.group(1), lexicon, "object")
         if not ids or ids & _ids(m.group(2), lexicon, "object"):
             return m.group(0)
+        if re.search(r"\b(?:else|rest|other|others|everything|all)\b", m.group(2), _F):
+            return m.group(0)  # "Leave the mugs alone and give Bob everything else": said apart
         return m.group(2)
 
+    out = _sub(r"\b(put|give|hand|pass) only (the|a|an)\b", r"\1 \2", out)
     return _sub(
-        r"^leave (the [a-z ]+?) where (?:it is|they are)\s*,?\s*(?:and\s+)?(.+)$", left, out
+        r"^leave (the [a-z ]+?) (?:where (?:it is|they are)|alone)\s*,?\s*(?:and\s+)?(.+)$",
+        left,
+        out,
     )
 
 
@@ -5024,6 +5030,13 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     """'You can give X to P, yes?', 'passing X along to P', 'Any chance of X going to P?', 'the
     X can sit on S'."""
     out = _sub(r"^you can (.+?),\s*(?:yes|right|yeah|okay|ok)\s*\?$", r"\1", text)
+    # "Drop the bowl in the sink for washing": why it goes there asks nothing more
+    out = _sub(
+        r"(\b(?:in|on|into|onto) the [a-z ]+?) for (?:washing|washing up|drying|cleaning|charging)"
+        r"\s*([.!]?)\s*$",
+        r"\1\2",
+        out,
+    )
     out = _sub(
         r"\b(pass(?:ing)?|hand(?:ing)?|take|taking|bring(?:ing)?) (the [a-z ]+?) along to\b",
         r"\1 \2 to",
