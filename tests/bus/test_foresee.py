@@ -8,6 +8,7 @@ import pytest
 
 from hltl.bus import node as node_module
 from hltl.bus.codec import WireBriefing
+from hltl.bus.driver import BusCell
 from hltl.errors import GroundingError
 from hltl.grounding import make_grounder
 from hltl.sim.dynamic import make_trial
@@ -169,6 +170,21 @@ def test_a_new_request_sends_its_basis(
     assert run.node.stats.respecs == 0
     if inline:
         assert run.node.stats.grounded == 1
+
+
+def test_a_request_simulated_again_is_grounded_once(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The node simulates a request's tick ahead (grounding it), the executor uses none of
+    those ticks (here: it drops the node's foresight of its first step, as when the answer
+    comes too late on a loaded machine), and the node simulates the tick again: the request
+    is grounded once, its spec the same, and the log is the in-process one."""
+    patient_foresight(monkeypatch)
+    guesses_in_the_answer(monkeypatch)
+    monkeypatch.setattr(BusCell, "_take_first", lambda self: setattr(self, "_first", None))
+    run = _both(loopback, "4-4-line", 1)
+    assert run.node.stats.undone > 0  # (the first stretch, the request's tick in it)
+    assert run.node.stats.grounded == 1 and run.node.stats.respecs == 0
 
 
 @MODES
