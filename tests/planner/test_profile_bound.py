@@ -367,3 +367,51 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
         assert seen["until"] == float(deadline)
     else:
         assert seen["until"] < float(deadline)
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+@pytest.mark.parametrize(("layout", "kept"), [("grid", True), ("line", False)])
+def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
+    monkeypatch: pytest.MonkeyPatch, layout: str, kept: bool
+) -> None:
+    # on two cores the profile bound's process starts before the pair bounds (0.8-0.9 s of a
+    # 32-goal grid or random cell's 10 s run), and is stopped when a pair beats the start
+    # bound (a line: the pairs are the bound there), keeping what it proved; on a grid, where
+    # no pair does, it runs on beside the walk
+    started: list[anytime._ProfileBeside] = []
+    real_beside, real_pairs, real_more = (
+        anytime._ProfileBeside,
+        anytime._pairs_at_start,
+        anytime._more,
+    )
+    seen: dict[str, Any] = {}
+
+    class Spy(real_beside):  # type: ignore[valid-type,misc]
+        def __init__(self, *args: Any) -> None:
+            super().__init__(*args)
+            started.append(self)
+
+    def pairs(*args: Any, **kwargs: Any) -> float:
+        seen["started before the pairs"] = len(started)
+        got = real_pairs(*args, **kwargs)
+        seen["pair above the start bound"] = got > args[4]
+        return got
+
+    def more(*args: Any, **kwargs: Any) -> object:
+        # (closed: stopped and read for good)
+        seen["bound running beside the walk"] = not started[0].conn.closed
+        return real_more(*args, **kwargs)
+
+    monkeypatch.setattr(anytime, "_ProfileBeside", Spy)
+    monkeypatch.setattr(anytime, "_pairs_at_start", pairs)
+    monkeypatch.setattr(anytime, "_more", more)
+    monkeypatch.setattr(anytime.schedule, "WORKERS", 2)
+    monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # (a share long enough at 4 s)
+    assert anytime.lns.available()  # (imported here: the forked process has it at once)
+    c = delivery_cell(layout, 17, 0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
+    assert seen["started before the pairs"] == 1
+    assert seen["pair above the start bound"] is not kept
+    assert seen["bound running beside the walk"] is kept
+    assert not started[0].proc.is_alive()
