@@ -267,6 +267,9 @@ def test_a_frame_of_blind15_reads_as_the_plain_request(scene: Scene, k: int, fra
         ("Drop the spoon in the snik for washing", "spoon@sink", LAB),
         ("Sam wants the pair of pens, the black and the blue", "pen_black>B & pen_blue>B", OFFICE),
         ("Bob asked for his appl", "apple>B", CELL),
+        ("Drill to Jess, correction, drill in the locker", "drill@locker", WORKSHOP),
+        ("Lemon to Marco then knife to Lena, sorry, swap the people", "lemon>B ; knife>A", KITCHEN),
+        ("Apple to Alice and chips to Bob, sorry, swap the people", "apple>B & chips>A", CELL),
         (
             "Mrs Ortiz is borrowing two books, the red one and the green one",
             "book_red>A & book_green>A",
@@ -300,6 +303,8 @@ def test_a_kind_of_blind15_is_read(text: str, want: str, scene: Scene) -> None:
         ("Did you give the lemon to Lena, yes?", KITCHEN),
         ("Any chance of the drill going to Kofi's brother?", WORKSHOP),
         ("Leave the chips alone and put only the chips on the shelf", CELL),
+        ("Bowl to Omar, correction, spoon in the sink", LAB),
+        ("Apple to Alice and chips to Alice, sorry, swap the people", CELL),
         ("Okay three things, drill to Kofi, torch to Jess, and that's your lot", WORKSHOP),
         ("Emma wants the pair of spoons", LAB),
         ("Sam wants the pair of pens", OFFICE),
