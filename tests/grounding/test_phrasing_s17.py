@@ -22,6 +22,7 @@ from tests.grounding.helpers import (
     OFFICE,
     ROOT,
     SCENES,
+    WARD,
     WORKSHOP,
     assert_reads,
     assert_refused,
@@ -268,6 +269,7 @@ def test_a_frame_of_blind15_reads_as_the_plain_request(scene: Scene, k: int, fra
         ("Sam wants the pair of pens, the black and the blue", "pen_black>B & pen_blue>B", OFFICE),
         ("Bob asked for his appl", "apple>B", CELL),
         ("Drill to Jess, correction, drill in the locker", "drill@locker", WORKSHOP),
+        ("Would you take Mrs Khan's tablets over to her?", "pills>C", WARD),
         ("Lemon to Marco then knife to Lena, sorry, swap the people", "lemon>B ; knife>A", KITCHEN),
         ("Apple to Alice and chips to Bob, sorry, swap the people", "apple>B & chips>A", CELL),
         (
@@ -305,6 +307,7 @@ def test_a_kind_of_blind15_is_read(text: str, want: str, scene: Scene) -> None:
         ("Leave the chips alone and put only the chips on the shelf", CELL),
         ("Bowl to Omar, correction, spoon in the sink", LAB),
         ("Apple to Alice and chips to Alice, sorry, swap the people", CELL),
+        ("Would you take Mr Lee's jug over to her?", WARD),
         ("Okay three things, drill to Kofi, torch to Jess, and that's your lot", WORKSHOP),
         ("Emma wants the pair of spoons", LAB),
         ("Sam wants the pair of pens", OFFICE),

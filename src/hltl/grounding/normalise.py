@@ -5077,6 +5077,19 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     out = _sub(
         r"^any chance of (the [a-z ]+?) going (to|on|onto|in|into) (.+?)\?$", r"\1 \2 \3", out
     )
+
+    def theirs(m: re.Match[str]) -> str:
+        # "take Mrs Khan's tablets over to her": hers, to her
+        if not _only_person(m.group(2), lexicon) or not _only(m.group(3), lexicon, "object"):
+            return m.group(0)
+        pid = next(iter(_ids(m.group(2), lexicon, "human")))
+        if title_sex(pid, lexicon) != PRONOUN_SEX[m.group(4).lower()]:
+            return m.group(0)  # a name alone does not say who 'her' is
+        return f"{m.group(1)} the {m.group(3)} over to {m.group(2)}"
+
+    out = _sub(
+        r"\b(take|bring|pass|carry) ([a-z][\w ]*?)'s ([a-z ]+?) over to (him|her)\b", theirs, out
+    )
     return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
 
 
