@@ -415,3 +415,66 @@ def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
     assert seen["pair above the start bound"] is not kept
     assert seen["bound running beside the walk"] is kept
     assert not started[0].proc.is_alive()
+
+
+def _lp(scene: Scene, spec: HSpec, level: float) -> tuple[int | None, float]:
+    """(the LP bound at ``level`` s in ticks, the start heuristic in ticks)."""
+    problem = Problem(scene, spec)
+    s, node, graph, tgts = start_targets(problem)
+    deadline = time.perf_counter() + DEADLINE_S
+    got = profile.lp_bound(problem, graph, node, tgts, to_ticks(level), deadline)
+    return got, s.heuristic(node)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 10**6))
+def test_the_lp_bound_never_exceeds_the_optimum(seed: int) -> None:
+    # asked at the optimum (as the anytime run asks it at a plan's makespan): every plan that
+    # long satisfies the integer model's rows, hence the LP's
+    inst = _random(seed)
+    if inst is None or not profile.applicable(Problem(*inst)):
+        return
+    optimum = optimal_makespan(*inst)
+    if optimum is None:
+        return
+    got, _ = _lp(*inst, optimum)
+    assert got is None or got <= to_ticks(optimum)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+@pytest.mark.parametrize("seed", [28, 66, 91])
+def test_the_lp_bound_reaches_the_optimum_where_the_heuristic_is_half_of_it(seed: int) -> None:
+    inst = _random(seed)
+    assert inst is not None
+    optimum = optimal_makespan(*inst)
+    assert optimum is not None
+    got, h0 = _lp(*inst, optimum)
+    assert got == to_ticks(optimum) and 2 * h0 == got  # (e.g. 1.1 s -> 2.2 s)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_the_climb_starts_from_the_lp_bound() -> None:
+    # grid 5 seed 0: start bound 5.3 s, the LP at the optimum 5.4 s says 5.4 s, so the climb
+    # has nothing left to ask; without the LP it asks CP-SAT
+    c = delivery_cell("grid", 5, 0)
+    problem = Problem(c.scene, c.spec)
+    s, node, graph, tgts = start_targets(problem)
+    h0 = round(s.heuristic(node))
+    told: list[int] = []
+    asked = {}
+    for lp in (True, False):
+        res = profile.profile_bound(
+            problem,
+            graph,
+            node,
+            tgts,
+            floor=h0,
+            upper=to_ticks(5.4),
+            deadline=time.perf_counter() + DEADLINE_S,
+            on_proven=told.append if lp else None,
+            lp=lp,
+        )
+        assert res.ticks == to_ticks(5.4)
+        asked[lp] = res.questions
+    assert told == [to_ticks(5.4)] and asked == {True: 0, False: 1}

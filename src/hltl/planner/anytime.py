@@ -690,6 +690,7 @@ def _profile_child(
                 upper=upper,
                 deadline=deadline,
                 on_proven=send.send,
+                lp=True,
             )
     finally:
         send.close()
