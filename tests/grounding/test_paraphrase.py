@@ -113,6 +113,51 @@ KNOWN_MISSES = frozenset(
         # causes15: 'after those two' after three sentences of which the first two are meant
         "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after those "
         "two.",
+        # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
+        # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
+        # list after, 'one of the <description>', purposes ('to bang together', 'before
+        # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
+        # 'Load … up with'), 'one of the other two', a person corrected to a place, 'swap the
+        # people', "take P's X over to her"
+        "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
+        "The little one could do with her sippy cup",
+        "Take the bottle to Person A. When that's done, the chips go to them too.",
+        "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
+        "load",
+        "Stock room's a mess, grab whichever box you like and stick it on the belt",
+        "Give each of them a pen, Priya and Sam, any colour",
+        "Both people get an item each: the cup for Person A and the apple for Person B",
+        "One of the snacks for Person B: the chips or the apple",
+        "Tom and Mia each get one thing: the tape for Tom, the gloves for Mia",
+        "Lily wants the two blocks to bang together",
+        "Both plates need to go on the worktop before service",
+        "Tidy the three pens away in the box",
+        "Mia wants the two smaller boxes",
+        "Clear everything onto the belt, leave the boxes where they are",
+        "Everything goes to the sink for washing, except for the spoon and the banana of course",
+        "No red pen for Sam, one of the other two will do",
+        "Load Tom up with the boxes, just not the small box",
+        "Drill to Jess, correction, drill in the locker",
+        "Lemon to Marco then knife to Lena, sorry, swap the people",
+        "Would you take Mrs Khan's tablets over to her?",
+        "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
+        "Give Ava the teddy, won't you give Lily the bib too?",
+        "Take the cup to Person B. When that's done, the apple goes to them too.",
+        "Would you take Mr Lee's jug over to him?",
+        "Could you bring Grandad's beaker over to him?",
+        "Give each of them a spanner, Kofi and Jess, any size",
+        "Both people get an item each: the chips for Person B and the bottle for Person A",
+        "Emma and Omar each get one thing: the banana for Emma, the spoon for Omar",
+        "One of the drinks for Person A: the bottle or the cup",
+        "Both cups need to go in the sink before lunch",
+        "Tom wants the two bigger boxes",
+        "Clear everything into the locker, leave the spanners where they are",
+        "No black pen for Priya, one of the other two will do",
+        "Load Jess up with the spanners, just not the small one",
+        "Bowl to Omar, correction, bowl in the sink",
+        "Stapler to Sam, correction, stapler on the desk",
+        "Torch to Kofi then drill to Jess, sorry, swap the people",
+        "Apple to Alice and chips to Bob, sorry, swap the people",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -133,9 +178,10 @@ KNOWN_MISSES = frozenset(
 # engineer, measured once at the end of session 14, its misses met in session 15: asserted now;
 # "blind14" written in session 15 by another engineer, measured once at the end of session 15,
 # its misses met in session 16: asserted now; "blind15" written in session 16 by another
-# engineer, measured once at the end of session 16; "blind16" written in session 17 by another
-# engineer, reviewed by a second one, measured once at the end of session 17)
-MEASURED_ONLY = frozenset({"blind15", "blind16"})
+# engineer, measured once at the end of session 16, its wrong readings and most of its refusals
+# met in session 17: asserted now, the rest in KNOWN_MISSES; "blind16" written in session 17 by
+# another engineer, reviewed by a second one, measured once at the end of session 17)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind16"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -185,6 +231,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes16"].entries}) >= 10
     assert len(CORPORA["blind15"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind15"].entries}) >= 3
+    assert len(CORPORA["causes17"].entries) >= 140
+    assert len({e.scene for e in CORPORA["causes17"].entries}) >= 10
     assert len(CORPORA["blind16"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind16"].entries}) >= 3
     for part, corpus in CORPORA.items():

@@ -367,3 +367,114 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
         assert seen["until"] == float(deadline)
     else:
         assert seen["until"] < float(deadline)
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
+@pytest.mark.parametrize(("layout", "kept"), [("grid", True), ("line", False)])
+def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
+    monkeypatch: pytest.MonkeyPatch, layout: str, kept: bool
+) -> None:
+    # on two cores the profile bound's process starts before the pair bounds (0.8-0.9 s of a
+    # 32-goal grid or random cell's 10 s run), and is stopped when a pair beats the start
+    # bound (a line: the pairs are the bound there), keeping what it proved; on a grid, where
+    # no pair does, it runs on beside the walk
+    started: list[anytime._ProfileBeside] = []
+    real_beside, real_pairs, real_more = (
+        anytime._ProfileBeside,
+        anytime._pairs_at_start,
+        anytime._more,
+    )
+    seen: dict[str, Any] = {}
+
+    class Spy(real_beside):  # type: ignore[valid-type,misc]
+        def __init__(self, *args: Any) -> None:
+            super().__init__(*args)
+            started.append(self)
+
+    def pairs(*args: Any, **kwargs: Any) -> float:
+        seen["started before the pairs"] = len(started)
+        got = real_pairs(*args, **kwargs)
+        seen["pair above the start bound"] = got > args[4]
+        return got
+
+    def more(*args: Any, **kwargs: Any) -> object:
+        # (closed: stopped and read for good)
+        seen["bound running beside the walk"] = not started[0].conn.closed
+        return real_more(*args, **kwargs)
+
+    monkeypatch.setattr(anytime, "_ProfileBeside", Spy)
+    monkeypatch.setattr(anytime, "_pairs_at_start", pairs)
+    monkeypatch.setattr(anytime, "_more", more)
+    monkeypatch.setattr(anytime.schedule, "WORKERS", 2)
+    monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # (a share long enough at 4 s)
+    assert anytime.lns.available()  # (imported here: the forked process has it at once)
+    c = delivery_cell(layout, 17, 0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
+    assert seen["started before the pairs"] == 1
+    assert seen["pair above the start bound"] is not kept
+    assert seen["bound running beside the walk"] is kept
+    assert not started[0].proc.is_alive()
+
+
+def _lp(scene: Scene, spec: HSpec, level: float) -> tuple[int | None, float]:
+    """(the LP bound at ``level`` s in ticks, the start heuristic in ticks)."""
+    problem = Problem(scene, spec)
+    s, node, graph, tgts = start_targets(problem)
+    deadline = time.perf_counter() + DEADLINE_S
+    got = profile.lp_bound(problem, graph, node, tgts, to_ticks(level), deadline)
+    return got, s.heuristic(node)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 10**6))
+def test_the_lp_bound_never_exceeds_the_optimum(seed: int) -> None:
+    # asked at the optimum (as the anytime run asks it at a plan's makespan): every plan that
+    # long satisfies the integer model's rows, hence the LP's
+    inst = _random(seed)
+    if inst is None or not profile.applicable(Problem(*inst)):
+        return
+    optimum = optimal_makespan(*inst)
+    if optimum is None:
+        return
+    got, _ = _lp(*inst, optimum)
+    assert got is None or got <= to_ticks(optimum)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+@pytest.mark.parametrize("seed", [28, 66, 91])
+def test_the_lp_bound_reaches_the_optimum_where_the_heuristic_is_half_of_it(seed: int) -> None:
+    inst = _random(seed)
+    assert inst is not None
+    optimum = optimal_makespan(*inst)
+    assert optimum is not None
+    got, h0 = _lp(*inst, optimum)
+    assert got == to_ticks(optimum) and 2 * h0 == got  # (e.g. 1.1 s -> 2.2 s)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_the_climb_starts_from_the_lp_bound() -> None:
+    # grid 5 seed 0: start bound 5.3 s, the LP at the optimum 5.4 s says 5.4 s, so the climb
+    # has nothing left to ask; without the LP it asks CP-SAT
+    c = delivery_cell("grid", 5, 0)
+    problem = Problem(c.scene, c.spec)
+    s, node, graph, tgts = start_targets(problem)
+    h0 = round(s.heuristic(node))
+    told: list[int] = []
+    asked = {}
+    for lp in (True, False):
+        res = profile.profile_bound(
+            problem,
+            graph,
+            node,
+            tgts,
+            floor=h0,
+            upper=to_ticks(5.4),
+            deadline=time.perf_counter() + DEADLINE_S,
+            on_proven=told.append if lp else None,
+            lp=lp,
+        )
+        assert res.ticks == to_ticks(5.4)
+        asked[lp] = res.questions
+    assert told == [to_ticks(5.4)] and asked == {True: 0, False: 1}

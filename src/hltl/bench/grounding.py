@@ -68,9 +68,11 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # blind14's misses, written BEFORE the changes for its refusals; measured once, then tuned on),
 # blind15 (written in session 16 by another engineer and committed alone, reviewed by a second
 # engineer, never opened by the engineer who changed the grounder before its one measurement at
-# the end of session 16), blind16 (written in session 17 by another engineer and committed alone,
-# reviewed by a second engineer, never opened by the engineer who changed the grounder before its
-# one measurement at the end of session 17; tests do not assert it).
+# the end of session 16; tuned on in session 17), causes17 (session 17: fresh variants of each
+# kind of blind15's misses, written BEFORE the changes for its refusals; measured once, then tuned
+# on), blind16 (written in session 17 by another engineer and committed alone, reviewed by a
+# second engineer, never opened by the engineer who changed the grounder before its one
+# measurement at the end of session 17; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -100,6 +102,7 @@ PARTS = (
     "blind14",
     "causes16",
     "blind15",
+    "causes17",
     "blind16",
 )
 

@@ -1358,6 +1358,21 @@ class Lexicon:
             return f" (did you mean {' or '.join(names)}? it is as near to {others})"
         return f" (did you mean {' or '.join(names)}?)"
 
+    def unclear_typos(self, text: str) -> dict[str, list[str]]:
+        """Words of ``text`` that are a slip of a name several objects share ("blokc": the red
+        or the green block) and name nothing themselves: each with the objects it could mean."""
+        out: dict[str, list[str]] = {}
+        for word in _words(text):
+            if not _correctable(word) or word in common_words() or self._phrases.get((word,)):
+                continue
+            ids: dict[str, None] = {}
+            for key, entries in self._phrases.items():
+                if len(key) == 1 and len(key[0]) >= 3 and _one_edit(word, key[0]):
+                    ids.update((r.id, None) for r, _, _ in entries if r.kind == "object")
+            if len(ids) > 1:
+                out[word] = list(ids)
+        return out
+
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
         """The entity (or category) a word of 4+ letters names within one edit, else None.
 
@@ -1548,13 +1563,47 @@ def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> 
     put in, left out or typed instead ("Tess", "Gemma", "Mma" for "Jess", "Emma", "Emma"; not
     two neighbours swapped, "Lnea"): a name with another first letter is a name in its own
     right, so it may be someone the scene does not have, and is not corrected (a slip of the
-    first letter of a name is rare; "Zoey", "Alise", "Lenna" keep theirs)."""
+    first letter of a name is rare; "Zoey", "Alise", "Lenna" keep theirs). Nor is a name with a
+    later letter changed that is an English first name ("Dina" for "Dana", "Lana" for "Lena",
+    "Mila" for "Mia"), unless it is the same name spelt another way (see _same_name)."""
     if not any(r.kind == "human" for r, _, _ in entries) or not typed or not name:
         return False
     if typed[0] == name[0]:
-        return False
+        return typed in first_names() and not _same_name(typed, name)
     swapped = len(typed) == len(name) >= 2 and typed[:2] == name[1::-1]
     return not swapped
+
+
+@functools.cache
+def first_names() -> frozenset[str]:
+    """English first names of 4+ letters (data/first_names.txt says where from)."""
+    text = resources.files("hltl.grounding").joinpath("data/first_names.txt").read_text("utf-8")
+    return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
+
+
+_SOUNDS_ALIKE = ({"i", "y"}, {"c", "k"})
+
+
+def _same_name(typed: str, name: str) -> bool:
+    """Whether ``typed``, one edit from ``name``, is the same name spelt another way or slipped
+    in typing: two neighbours swapped ("Alcie"), a letter doubled or undoubled ("Lenna"), an 'h'
+    or 'y' after a closing vowel ("Zoey", "Sarah"), or a letter swapped for one that sounds the
+    same there ('i'/'y', 'c'/'k', 'c'/'s' before e, i or y: "Alise"). A vowel changed ("Dina",
+    "Lana") or a letter put in that is sounded ("Mila", "Diana") makes another name."""
+    if len(typed) == len(name):
+        diff = [k for k in range(len(name)) if typed[k] != name[k]]
+        if len(diff) != 1:
+            return True  # two neighbours swapped
+        k = diff[0]
+        pair = {typed[k], name[k]}
+        soft = pair == {"c", "s"} and name[k + 1 : k + 2] in ("e", "i", "y")
+        return soft or pair in _SOUNDS_ALIKE
+    short, long = (typed, name) if len(typed) < len(name) else (name, typed)
+    k = next((j for j in range(len(short)) if short[j] != long[j]), len(short))
+    extra = long[k]
+    if long[k - 1 : k] == extra or long[k + 1 : k + 2] == extra:
+        return True  # a letter doubled
+    return k == len(short) and extra in "hy" and short[-1] in "aeiou"
 
 
 def _close_word(word: str, right: str) -> bool:

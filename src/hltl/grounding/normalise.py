@@ -1519,6 +1519,11 @@ def hearer_named(text: str, lexicon: Lexicon) -> str | None:
     return None
 
 
+def people_named(text: str, lexicon: Lexicon) -> set[str]:
+    """The ids of the people ``text`` names (by name, title or role)."""
+    return _ids(text, lexicon, "human")
+
+
 def one_person(text: str, lexicon: Lexicon) -> str | None:
     """The name of the one person ``text`` names (several names of one person count once),
     when every he/she/him/her of ``text`` may be them."""
@@ -4766,7 +4771,295 @@ def _correction_frames(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 17: blind15's kinds, each a general rewrite (courtesy and address, wants, remarks,
+# run-ons and dictation, choices, counts, exclusions, corrections, questions) ----------------
+
+_ENDEARING = r"(?:love|dear|darling|pet|sweetheart|star|good (?:robot|lad|girl|boy|helper))"
+
+
+def _courtesy17(text: str, lexicon: Lexicon) -> str:
+    """Courtesy that asks nothing: 'sorry to interrupt', 'could I trouble you to' (the hearer
+    does it), 'Now then, dear,', 'be a good helper and', '…, won't you?', '…, there's a love',
+    'Oh dear,' opening a remark, and a person thanked by role after the request ('Thanks chef.':
+    said to the one who spoke, not asking anything for them)."""
+    out = _sub(r"\b(?:so |very )?sorry to (?:interrupt|butt in|bother you)\s*,\s*", "", text)
+    out = _sub(r"\bcould I (?:trouble|bother) you to\b", "could you", out)
+    out = _sub(r"^(?:now then|oh dear)\s*,\s*(?:dear\s*,\s*)?", "", out)
+    out = _sub(rf"\bbe an? (?:{_ENDEARING}|angel) and (?=[a-z])", "", out)
+    out = _sub(r",\s*won't you\s*([?.!]*)\s*$", r"\1", out)
+    out = _sub(rf",\s*there's an? {_ENDEARING}\s*([.!]*)\s*$", r"\1", out)
+
+    def thanked(m: re.Match[str]) -> str:
+        return m.group(1) if _only(m.group(2), lexicon, "human") else m.group(0)
+
+    # "Salt to Lena. Thanks chef.": the chef is thanked; "Thanks chef, and the knife to you" stays
+    return _sub(r"([.!])\s*(?:thanks|thank you|cheers|ta)\s+([a-z]+)\s*[.!]*\s*$", thanked, out)
+
+
+def _wants17(text: str, lexicon: Lexicon) -> str:
+    """'P is hoping to get X', 'P could do with X', 'P is to have X', 'P (in bed two) is due
+    (his) X': P wants X (the speaker's 'I could do with' stays refused: 'I' is no one here)."""
+
+    def wants(m: re.Match[str]) -> str:
+        return f"{m.group(1)} wants" if _only_person(m.group(1), lexicon) else m.group(0)
+
+    out = _sub(
+        r"^([a-z][\w ]*?)(?: in bed (?:one|two|three|four|five|six|\d+))?(?: is|'s) (?:hoping to "
+        r"get|to have|due|borrowing)\b",
+        wants,
+        text,
+    )
+    out = _sub(r"^([a-z][\w ]*?) could do with\b", wants, out)
+
+    def asked(m: re.Match[str]) -> str:
+        if not _the_person(m.group(1), text, lexicon):
+            return m.group(0)
+        return f"{m.group(1)} wants the "
+
+    # "Bob asked for his apple", "Lily's crying for her teddy": what they asked for is theirs
+    return _sub(
+        r"^([a-z][\w ]*?)(?:'s| is| has)? (?:asked|asking|crying|calling|begging) for (?:his|her) ",
+        asked,
+        out,
+    )
+
+
+def _see_it17(text: str, lexicon: Lexicon) -> str:
+    """'See the torch? Take it over to Kofi.', 'The red book's overdue. Put it back …': an object
+    pointed at or remarked on in a first sentence, then 'it' in the request: that object."""
+
+    def it_is(m: re.Match[str]) -> str:
+        # group 2 is the remark ("overdue"), or the space after a question: it names nothing
+        if not _only(m.group(1), lexicon, "object") or not _names_nothing(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(3)} {m.group(1)}"
+
+    out = _sub(r"^(?:see|you see) (the [a-z ]+?)\?(\s*)([a-z]+) it\b", it_is, text)
+    return _sub(
+        r"^(the [a-z ]+?)(?:'s| is) ([a-z]+)[.!]\s*((?:put|pop|take|bring|pass|hand|give) ?)it\b",
+        it_is,
+        out,
+    )
+
+
+def _same_but17(text: str, lexicon: Lexicon) -> str:
+    """'Give Bob the cup, and do the same for Carol but with the apple': the apple to Carol."""
+
+    def same(m: re.Match[str]) -> str:
+        if not _only_person(m.group(3), lexicon) or not _only(m.group(4), lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}, {m.group(2)} {m.group(4)} to {m.group(3)}{m.group(5)}"
+
+    return _sub(
+        r"^(.+?),?\s*(and|then) do the same for ([a-z][\w ]*?),? but with (the [a-z ]+?)"
+        r"\s*([.!]?)$",
+        same,
+        text,
+    )
+
+
+def _both_them17(text: str, lexicon: Lexicon) -> str:
+    """'The small box and the medium box: put them both on the pallet': those two there."""
+
+    def both(m: re.Match[str]) -> str:
+        if len(_ids(m.group(1), lexicon, "object")) != 2 or _ids(m.group(1), lexicon, "human"):
+            return m.group(0)
+        return f"{m.group(2)} {m.group(1)} {m.group(3)} "
+
+    return _sub(
+        r"^(the [a-z ]+? and the [a-z ]+?)\s*:\s*(put|pop|place|stick|move) them(?: both)? "
+        r"(on|onto|in|into) ",
+        both,
+        text,
+    )
+
+
+def _run_ons17(text: str, lexicon: Lexicon) -> str:
+    """Dictation and run-ons: 'Scene change.'/'New job.' opening, 'Pens first:' heading the
+    first step, 'After,' for 'Then', 'Finish.' closing, '…, and that's your lot', 'and, hang on,
+    yeah, and …, that's it', and a list dictated as 'Black pen: Sam. Red pen: box.'"""
+    out = _sub(r"^(?:scene change|new job|next job|new task)\s*[.!:]\s*", "", text)
+    out = _sub(r"^[a-z]+ first\s*:\s*(?=.+[.!;]\s*then\b)", "", out)
+    out = _sub(r"(?<=[.!])\s*after\s*,\s*", " Then ", out)
+    out = _sub(r"(?<=[.!])\s*(?:finish|finished|end)\s*[.!]*\s*$", "", out)
+    out = _sub(r",?\s*and that's your lot\s*([.!]?)\s*$", r"\1", out)
+
+    def counted(m: re.Match[str]) -> str:
+        steps = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(2)) if x.strip()]
+        return m.group(2) if len(steps) == _NUMBERS15[m.group(1).lower()] else m.group(0)
+
+    # "Okay two things, salt to Marco, lemon to Lena": the count is the steps that follow
+    out = _sub(
+        r"^(?:(?:okay|right|so)\s*,?\s*)?(two|three|four) (?:things|jobs)\s*,\s*(.+)$", counted, out
+    )
+    out = _sub(r"\band\s*,\s*hang on\s*,\s*(?:yeah|yes|yep)\s*,\s*and\b", "and", out)
+    out = _sub(r"(?<=\S),\s*that's it\s*([.!]?)\s*$", r"\1", out)
+    parts = [p.strip() for p in re.split(r"(?<=[.!])\s+", out.strip()) if p.strip()]
+    lines = [re.match(r"^([a-z][a-z ]*?)\s*:\s*([a-z][\w ]*?)\s*[.!]?$", p, _F) for p in parts]
+    if len(parts) < 2 or any(m is None for m in lines):
+        return out
+    said = []
+    for m in lines:
+        assert m is not None
+        if not _only(m.group(1), lexicon, "object"):
+            return out
+        if _only_person(m.group(2), lexicon):
+            said.append(f"the {m.group(1)} to {m.group(2)}")
+        elif _only(m.group(2), lexicon, "surface"):
+            said.append(f"the {m.group(1)} on the {m.group(2)}")
+        else:
+            return out
+    return ". ".join(said) + "."
+
+
+def _choices17(text: str, lexicon: Lexicon) -> str:
+    """'whichever X you like' (the robots choose), 'Either X is fine for P', '…, whoever's
+    nearer' after 'to P or (to) Q', 'One of the X for P: the A or the B'."""
+    out = _sub(r"\bwhichever ([a-z]+) you (?:like|want|fancy|prefer)\b", r"whichever \1", text)
+
+    def either(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"give {m.group(2)} either {m.group(1)}{m.group(3)}"
+
+    out = _sub(
+        r"^either ([a-z]+) is (?:fine|okay|ok|good) for ([a-z][\w ]*?)\s*([.!]?)$", either, out
+    )
+
+    def whoever(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon) or not _only_person(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} to {m.group(2)} or to {m.group(3)}{m.group(4)}"
+
+    out = _sub(
+        r"^(.+?) to ([a-z][\w ]*?) or (?:to )?([a-z][\w ]*?)\s*,\s*whoever(?:'s| is) (?:nearer|"
+        r"closer|nearest|closest|free)\s*([.!]?)$",
+        whoever,
+        out,
+    )
+
+    def one_of(m: re.Match[str]) -> str:
+        kind = m.group(1).removesuffix("s")
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        picks = []
+        for said in (m.group(3), m.group(4)):
+            name = said if said.endswith(f" {kind}") else f"{said} {kind}"
+            ids = _ids(name, lexicon, "object")
+            cats = {o.category for o in lexicon.scene.objects if o.id in ids}
+            if len(ids) != 1 or cats != {kind}:
+                return m.group(0)  # "One of the drinks …: the bottle or the chips": not read
+            picks.append(name)
+        return f"give {m.group(2)} {picks[0]} or {picks[1]}{m.group(5)}"
+
+    return _sub(
+        r"^one of the ([a-z]+) for ([a-z][\w ]*?)\s*:\s*(the [a-z ]+?) or (the [a-z ]+?)"
+        r"\s*([.!]?)$",
+        one_of,
+        out,
+    )
+
+
+def _counts17(text: str, lexicon: Lexicon) -> str:
+    """'the pair of X' (the two X), '…, there's just the one', 'the only/single X there is',
+    'every one of the four X' (all four of the X), 'a couple of things, namely A and B' (when
+    two are named)."""
+    out = _sub(r"\bthe pair of ([a-z]+s)(?=\s*,\s*the\b)", r"two \1", text)
+    out = _sub(r"\bthe pair of ([a-z]+s)\b", r"the two \1", out)
+    out = _sub(r",\s*there(?:'s| is) (?:just |only )?the one\s*([.!]?)\s*$", r"\1", out)
+    out = _sub(r"\bthe (?:only|single|one) ([a-z ]+?) there is\b", r"the \1", out)
+    out = _sub(r"\bevery one of the (two|three|four|five|six) ", r"all \1 of the ", out)
+
+    def namely(m: re.Match[str]) -> str:
+        if (
+            len(_ids(m.group(1), lexicon, "object")) != 2
+            or len(re.findall(r"\bthe\b", m.group(1), _F)) != 2
+        ):
+            return m.group(0)
+        return m.group(1)
+
+    return _sub(r"\ba couple of things\s*,?\s*namely\s+(.+?)(?=\s*[.!]?$)", namely, out)
+
+
+def _exclusions17(text: str, lexicon: Lexicon) -> str:
+    """'whichever X isn't the Y one' (any X but that one), 'everything besides', 'P's having',
+    'P, but not Q, gets', 'Leave X where it is and …' (X not asked for after)."""
+    out = _sub(
+        r"\bwhichever ([a-z]+) (?:isn't|is not) the ([a-z]+) one\b",
+        r"any \1 except the \2 one",
+        text,
+    )
+    out = _sub(r"\bbesides\b", "except", out)
+    out = _sub(r"^([a-z][\w ]*?)(?:'s| is) having\b", r"\1 gets", out)
+
+    def but_not(m: re.Match[str]) -> str:
+        a, b = _ids(m.group(1), lexicon, "human"), _ids(m.group(2), lexicon, "human")
+        if not _only_person(m.group(1), lexicon) or not _only_person(m.group(2), lexicon) or a == b:
+            return m.group(0)
+        return f"{m.group(1)} "
+
+    out = _sub(r"^([a-z][\w ]*?),\s*but not ([a-z][\w ]*?),\s*", but_not, out)
+
+    def left(m: re.Match[str]) -> str:
+        ids = _ids(m.group(1), lexicon, "object")
+        if not ids or ids & _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        if re.search(r"\b(?:else|rest|other|others|everything|all)\b", m.group(2), _F):
+            return m.group(0)  # "Leave the mugs alone and give Bob everything else": said apart
+        return m.group(2)
+
+    out = _sub(r"\b(put|give|hand|pass) only (the|a|an)\b", r"\1 \2", out)
+    return _sub(
+        r"^leave (the [a-z ]+?) (?:where (?:it is|they are)|alone)\s*,?\s*(?:and\s+)?(.+)$",
+        left,
+        out,
+    )
+
+
+def _corrections17(text: str, lexicon: Lexicon) -> str:
+    """'…, no not the X, the Y!' (no, the Y), 'X to P. No no, not P. X to Q.' (no, X to Q),
+    'X to P. Actually no, Y to P.', '…, whoops, I meant …', '…, correction, X in S' (no)."""
+    out = _sub(r",\s*no,? not (the [a-z ]+?),\s*(the [a-z ]+?)\s*([!.]?)$", r", no, \2\3", text)
+    out = _sub(r"([.!])\s*no,?(?: no,?)? not ([a-z][\w ]*?)[.!]\s*(?=\S)", ", no, ", out)
+    out = _sub(r"([.!])\s*actually,? no,?\s*(?=\S)", ", no, ", out)
+    out = _sub(r",\s*(?:whoops|oops|oh)\s*,\s*i meant\b", ", no, I meant", out)
+    return out
+
+
+def _questions17(text: str, lexicon: Lexicon) -> str:
+    """'You can give X to P, yes?', 'passing X along to P', 'Any chance of X going to P?', 'the
+    X can sit on S'."""
+    out = _sub(r"^you can (.+?),\s*(?:yes|right|yeah|okay|ok)\s*\?$", r"\1", text)
+    # "Drop the bowl in the sink for washing": why it goes there asks nothing more
+    out = _sub(
+        r"(\b(?:in|on|into|onto) the [a-z ]+?) for (?:washing|washing up|drying|cleaning|charging)"
+        r"\s*([.!]?)\s*$",
+        r"\1\2",
+        out,
+    )
+    out = _sub(
+        r"\b(pass(?:ing)?|hand(?:ing)?|take|taking|bring(?:ing)?) (the [a-z ]+?) along to\b",
+        r"\1 \2 to",
+        out,
+    )
+    out = _sub(
+        r"^any chance of (the [a-z ]+?) going (to|on|onto|in|into) (.+?)\?$", r"\1 \2 \3", out
+    )
+    return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _courtesy17,
+    _wants17,
+    _see_it17,
+    _same_but17,
+    _both_them17,
+    _run_ons17,
+    _choices17,
+    _counts17,
+    _exclusions17,
+    _corrections17,
+    _questions17,
     _people_then_pronoun,
     _inert_sentences,
     _courtesy_frames,

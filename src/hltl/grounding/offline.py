@@ -10,6 +10,7 @@ from typing import Literal
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
+    PRONOUN_SEX,
     VERB_CLASS,
     Item,
     Lexicon,
@@ -18,7 +19,13 @@ from hltl.grounding.lexicon import (
     lex,
     person_name,
 )
-from hltl.grounding.normalise import apostrophes, canonical, hearer_named, one_person
+from hltl.grounding.normalise import (
+    apostrophes,
+    canonical,
+    hearer_named,
+    one_person,
+    people_named,
+)
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
     Group,
@@ -73,6 +80,22 @@ def parse_instruction(
         GroundingError: the words, what was expected, and what the scene has.
     """
     lexicon = lexicon or Lexicon.of(scene)
+    if not normalise:
+        return _parse(text, scene, lexicon, normalise=False)
+    try:
+        return _parse(text, scene, lexicon, normalise=True)
+    except GroundingError as refused:
+        unclear = lexicon.unclear_typos(text)
+        said = [r for ids in unclear.values() for r in ids if r in str(refused)]
+        if not unclear or said:
+            raise
+        # "Ava keeps pointing at the blokc, can she have it?": refused for another reason, but
+        # the typo could mean either block, so the refusal says which objects it could mean
+        more = "; ".join(f"{w!r} could mean {' or '.join(ids)}" for w, ids in unclear.items())
+        raise GroundingError(f"{refused}; {more}") from None
+
+
+def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
         text = apostrophes(text)
@@ -86,6 +109,7 @@ def parse_instruction(
         node = _read(text, scene, lexicon)
         if normalise:
             _not_before_itself(text, node, scene, lexicon)
+            _two_sexes_one_person(text, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -96,6 +120,7 @@ def parse_instruction(
         try:
             node = _read(plain, scene, lexicon)
             _not_before_itself(plain, node, scene, lexicon)
+            _two_sexes_one_person(text, lexicon)
             return node
         except GroundingError as rewritten:
             if _readings(rewritten) and not _readings(refused):
@@ -103,6 +128,26 @@ def parse_instruction(
                 # its refusal says which readings there are (the first only that it cannot parse)
                 raise rewritten from None
             raise refused from None
+
+
+# a pronoun that is a person (not 'his'/'her' before what they own: "he's changing her nappy")
+_SEXED = re.compile(
+    r"\b(?:he|him|she|hers|her(?=\s*(?:$|[.,;!?]|the\b|a\b|an\b|too\b|instead\b|as well\b)))\b",
+    re.I,
+)
+
+
+def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
+    """'Marco wants the knife, he's prepping, and she wants the lemon': 'he' and 'she' in one
+    instruction are two people, so with fewer than two people named one of them is someone not
+    named (a remark taken off, or read as the one person, hid that): refused."""
+    said = {PRONOUN_SEX[w.lower()] for w in _SEXED.findall(text)}
+    if len(said) == 2 and len(people_named(text, lexicon)) < 2:
+        word = _SEXED.findall(text)[-1]
+        raise GroundingError(
+            f"{word!r} is not resolved: 'he' and 'she' are two people, and fewer are named; "
+            "name the person"
+        )
 
 
 _BEFORE = re.compile(r"^(.+?)\s+before\s+(?!that\b|this\b|then\b|now\b|[,.;!?])(.+)$", re.I)

@@ -1088,6 +1088,12 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     out.append(replace(other, text=f"{it.text} ({other.text})"))
                     k += 1 + _same_noun(items, k, other)
                     continue
+                left = _others_left(out, lexicon)
+                if len(left) > 1:  # "the blue pen, no wait, the other one": which other?
+                    raise GroundingError(
+                        f"{it.text!r} is unclear: it could mean {' or '.join(left)}; name the "
+                        "object"
+                    )
                 raise GroundingError(
                     f"{it.text!r} needs a choice before it, as in 'one of the mugs … the other'"
                 )
@@ -3037,9 +3043,21 @@ def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Ite
     elsewhere are not it, except a name that was ambiguous ('the cup, the green one … no, the
     other one': 'the cup' names no one cup). With ``some`` ('another'), any other one of its
     category: a choice when several are left."""
+    left = _others_left(out, lexicon, some=some)
+    if some and len(left) > 1:
+        refs = tuple(Ref("object", i) for i in left)
+        return Item("ent", "another", "another", refs, quant="some", group=len(out))
+    if len(left) != 1:
+        return None
+    return Item("ent", left[0], left[0], (Ref("object", left[0]),))
+
+
+def _others_left(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> list[str]:
+    """The objects 'the other (one)' may mean after one object named without a choice (see
+    _other_than): the others of its category not named elsewhere, in the scene's order."""
     last = next((x for x in reversed(out) if _objects(x)), None)
     if last is None or last.quant or len({r.id for r in last.refs}) != 1:
-        return None
+        return []
     named = {
         r.id
         for x in out
@@ -3053,12 +3071,7 @@ def _other_than(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> Ite
         left = [i for i in kind if i not in named]
     else:
         left = [i for i in cats if i not in named] if len(cats) == 2 and not some else []
-    if some and len(left) > 1:
-        refs = tuple(Ref("object", i) for i in left)
-        return Item("ent", "another", "another", refs, quant="some", group=len(out))
-    if len(left) != 1:
-        return None
-    return Item("ent", left[0], left[0], (Ref("object", left[0]),))
+    return left
 
 
 def _not_appended_other(items: list[Item], k: int) -> None:

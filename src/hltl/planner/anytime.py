@@ -497,23 +497,43 @@ def plan_anytime(
                 break
             end = min(deadline, t0 + until * timeout)
             if big and k == 0:
-                paired = _pairs_at_start(problem, s, start, end, lb)
                 profiled = (
                     best is not None
-                    and paired <= lb
                     and n_goals > SCHEDULE_UP_TO
                     and _profile_fits(timeout)
                     and profile.applicable(problem)
                     and lns.installed()
                 )
-                lb = max(lb, paired)
-                note()
                 if profiled and beside_possible():
+                    # on two cores the profile bound starts now, beside the pairs (0.8-0.9 s
+                    # on 32-goal grid and random cells), and is stopped if a pair beats the
+                    # start bound (lines: there the pairs are the bound)
                     assert best is not None
                     beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
+                # (the first pair even when the first plan came after this phase's end)
+                walk_end = min(deadline, t0 + phases[1] * timeout)
+                paired = _pairs_at_start(problem, s, start, end, lb, first_until=walk_end)
+                if paired > lb:
+                    profiled = False
+                    if beside is not None:
+                        beside.close()
+                        lb = max(lb, beside.bound)
+                        beside = None
+                lb = max(lb, paired)
+                note()
                 continue
             if profiled and k == 1:
                 end = deadline if beside else min(deadline, t0 + (1 - PROFILE_SHARE) * timeout)
+            # more goals than the step bound takes and no profile bound (a pair beat the start
+            # bound: lines; or a budget too short for it): the A* slice raised no bound there
+            # (32 x 32 line seed 0: 36.3 s from 4.5 s to the end of a 10 s run; grid seed 0 in
+            # session 10), so the walk keeps its time (at 1 s the walk's last 0.1 s found
+            # 32 x 32 line seed 1's 35.8 s plan in some runs and not in others)
+            if big and n_goals > SCHEDULE_UP_TO and not profiled:
+                if k == 1:
+                    end = deadline
+                elif k == 2:
+                    continue
             if profiled and k == 2:
                 if beside is None:
                     assert best is not None
@@ -670,6 +690,7 @@ def _profile_child(
                 upper=upper,
                 deadline=deadline,
                 on_proven=send.send,
+                lp=True,
             )
     finally:
         send.close()
@@ -833,14 +854,23 @@ def step_bound(
 
 
 def _pairs_at_start(
-    problem: Problem, s: _Search, start: Node, until: float, floor: float = 0.0
+    problem: Problem,
+    s: _Search,
+    start: Node,
+    until: float,
+    floor: float = 0.0,
+    *,
+    first_until: float | None = None,
 ) -> float:
     """The best pairwise bound at the start node from the pairs solved before ``until``, the
     pairs of the longest routes first (any subset of pairs gives a valid bound). When the first
     ``PAIRS_TRIAL`` pairs do not beat ``floor`` (the bound already known), the rest are skipped
     and their time goes to the plans: on grid and random cells, where two routes seldom meet,
     no pair beats the start bound (on lines, where every route crosses the middle, the first
-    ones do)."""
+    ones do). The first pair is tried until ``first_until`` (default ``until``) even when
+    ``until`` has passed: on 32-robot lines a 1 s budget's first plan came at 0.51-0.62 s in
+    some runs, after the pairs' 0.45 s, and no pair at all left the gap at 26-61 % where one
+    pair (about 0.1 s) gives 0.3-5 % (docs/planner.md, "Session 17")."""
     heur = s.heuristic
     graph = heur.graph
     locs = start[0]
@@ -851,7 +881,9 @@ def _pairs_at_start(
     bound = PairBound(problem, graph)
     best = 0.0
     for k, (a, b) in enumerate(pairs):
-        if time.perf_counter() > until or (k >= PAIRS_TRIAL and best <= floor):
+        if time.perf_counter() > (until if k or first_until is None else first_until) or (
+            k >= PAIRS_TRIAL and best <= floor
+        ):
             break
         for lk in bound.lookups([a, b]):
             best = max(best, pair_value(lk, locs))

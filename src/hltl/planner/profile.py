@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import itertools
 import math
 import time
@@ -24,6 +25,13 @@ PRESOLVE = False
 # rest of the budget on random 32 x 32 seeds 1 and 3; grid seed 0's level 8.1 s needs the time)
 FAR_SHARE = 2.0
 MAX_STRIDE = 4
+# "a robot handles one of these objects" built from one indicator per object (``_robot_rows``;
+# session 17: a 32-goal question's model built in about half the CPU, and solved in less)
+SHARED_HANDLES = True
+# the LP bound (``lp_bound``) rounds its optimum up to a whole time unit after taking this many
+# units off (the solver's tolerances: its optimum may be a little above the exact one)
+LP_SLACK = 0.01
+_HUGE = 1 << 60  # a row's bound beyond this is none
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,6 +78,122 @@ def feasible(
     """
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
+    built = _build(problem, graph, node, tgts, level, deadline)
+    if not isinstance(built, tuple):
+        return built  # (None, or False: a target without a route by ``level``)
+    m, _ = built
+    solved = solve_until(m, deadline, seed, presolve=presolve)
+    if solved is None:
+        return None
+    _, status = solved
+    if status == cp_model.INFEASIBLE:
+        return False
+    if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+        return True
+    return None
+
+
+def lp_available() -> bool:
+    """The LP bound's solver (scipy's HiGHS) is installed, found without importing it."""
+    return importlib.util.find_spec("scipy") is not None
+
+
+def lp_bound(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    deadline: float,
+) -> int | None:
+    """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
+    target happen and ends by ``level`` (with ``level`` a known plan's makespan: on the
+    optimum): the least makespan of the linear relaxation of ``feasible``'s model at ``level``,
+    every variable in [0, 1] or its integer range, each implication ``x => y`` as ``x <= y``,
+    rounded up to a whole time unit (less ``LP_SLACK`` units for the solver's tolerances).
+    One LP (scipy's HiGHS) instead of a climb of CP-SAT questions: on the 32-goal grid and
+    random cells it gives what the climb reaches in 10 s, in about 1 s of CPU (docs/planner.md,
+    "Session 17"). None: no scipy, not solved before ``deadline`` (``time.perf_counter()``),
+    or a model with a constraint of another kind."""
+    import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
+    from scipy.optimize import Bounds, LinearConstraint, milp
+    from scipy.sparse import csr_matrix
+
+    built = _build(problem, graph, node, tgts, level, deadline)
+    if not isinstance(built, tuple):
+        return None
+    m, objective = built
+    proto = m.Proto()
+    n = len(proto.variables)
+    # (``list``: the proto's repeated fields do not take negative indices)
+    domains = [list(v.domain) for v in proto.variables]
+    lo = [dom[0] for dom in domains]
+    hi = [dom[-1] for dom in domains]
+    cost = np.zeros(n)
+    rows: list[int] = []
+    cols: list[int] = []
+    vals: list[int] = []
+    low: list[float] = []
+    high: list[float] = []
+    for k, ct in enumerate(proto.constraints):
+        if list(ct.enforcement_literal) and not ct.has_bool_and():
+            return None
+        if ct.has_linear():
+            if k == objective:
+                for v, a in zip(ct.linear.vars, ct.linear.coeffs, strict=True):
+                    cost[v] = a
+            domain = list(ct.linear.domain)
+            if len(domain) != 2:
+                return None
+            r = len(low)
+            for v, a in zip(ct.linear.vars, ct.linear.coeffs, strict=True):
+                rows.append(r)
+                cols.append(v)
+                vals.append(a)
+            low.append(domain[0] if domain[0] > -_HUGE else -np.inf)
+            high.append(domain[1] if domain[1] < _HUGE else np.inf)
+        elif ct.has_bool_and():
+            for e in ct.enforcement_literal:
+                for lit in ct.bool_and.literals:
+                    if e < 0 or lit < 0:
+                        return None  # (the model has no negated literals)
+                    r = len(low)
+                    rows += [r, r]
+                    cols += [lit, e]
+                    vals += [1, -1]
+                    low.append(0.0)
+                    high.append(np.inf)
+        else:
+            return None
+    left = deadline - time.perf_counter()
+    if left <= 0:
+        return None
+    rows_ = csr_matrix((vals, (rows, cols)), shape=(len(low), n))
+    res = milp(
+        cost,
+        constraints=LinearConstraint(rows_, low, high),
+        bounds=Bounds(lo, hi),
+        options={"time_limit": left},
+    )
+    if res.status != 0 or res.fun is None:
+        return None
+    fun: float = res.fun
+    return math.ceil(fun - LP_SLACK) * time_unit(problem)
+
+
+def _build(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    deadline: float,
+) -> tuple[Any, int] | bool | None:
+    """``feasible``'s CP-SAT model at ``level`` and the index of its makespan row (the sum
+    over duration levels, in time units, at most ``level``); False when some target has no
+    route by ``level``; None when ``deadline`` passed while it was being built."""
+    from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
+
     durations = sorted({i.lower for i in problem.instances})
     unit = time_unit(problem)
     most_steps = level // durations[0]
@@ -83,6 +207,7 @@ def feasible(
     for d in durations:
         makespan.append(((d - prev) // unit) * count[d])
         prev = d
+    objective = len(m.Proto().constraints)  # (the makespan's row: the LP's objective)
     m.add(sum(makespan) <= level // unit)
     # per robot: its candidate route instances, by object
     by_robot: list[dict[int, list[tuple[Instance, Any]]]] = [{} for _ in problem.robots]
@@ -134,17 +259,10 @@ def feasible(
     for jobs in by_robot:
         if time.perf_counter() > deadline:
             return None
+        handles: dict[tuple[int, ...], Any] = {}  # shared by the duration levels
         for d in durations:
-            _robot_rows(m, jobs, d, counts, fires_of, count[d])
-    solved = solve_until(m, deadline, seed, presolve=presolve)
-    if solved is None:
-        return None
-    _, status = solved
-    if status == cp_model.INFEASIBLE:
-        return False
-    if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
-        return True
-    return None
+            _robot_rows(m, jobs, d, counts, fires_of, count[d], handles)
+    return m, objective
 
 
 def _robot_rows(
@@ -154,12 +272,19 @@ def _robot_rows(
     counts: dict[tuple[int, int], tuple[list[int], list[int]]],
     fires_of: dict[int, frozenset[int]],
     steps: Any,
+    handles: dict[tuple[int, ...], Any],
 ) -> None:
     """One robot's rows at duration level ``d``: for a set J of the objects it may handle, its
     route instances on J lasting at least d, plus (when it handles one of J at all) the fewest
     such instances any object of J needs before the robot can act on it and after, fit into the
     ``steps`` lasting at least d. J: all its objects, and those whose head (tail) is at least
-    each value, as the one-machine bound takes them."""
+    each value, as the one-machine bound takes them.
+
+    "It handles one of J" is an indicator per set (kept in ``handles``, shared by the duration
+    levels), implied by one indicator per object ("it handles o", ``handles[(o,)]`` when
+    ``SHARED_HANDLES``), each implied by the robot's route instances on o. The same solutions
+    as one implication per set and instance (``SHARED_HANDLES = False``: 48k implications on a
+    32-goal cell where this has about 6k), so the same answers."""
     if not jobs:
         return
     head: dict[int, int] = {}
@@ -186,11 +311,23 @@ def _robot_rows(
             if xs:
                 m.add(sum(xs) <= steps)
             continue
-        handles = m.new_bool_var("")
-        for o in subset:
-            for _, x in jobs[o]:
-                m.add_implication(x, handles)
-        m.add(sum(xs) + extra * handles <= steps)
+        some = handles.get(key) if SHARED_HANDLES else None
+        if some is None:
+            some = m.new_bool_var("")
+            for o in subset:
+                if not SHARED_HANDLES:
+                    for _, x in jobs[o]:
+                        m.add_implication(x, some)
+                    continue
+                one = handles.get((o,))
+                if one is None:
+                    one = handles[(o,)] = m.new_bool_var("")
+                    for _, x in jobs[o]:
+                        m.add_implication(x, one)
+                if one is not some:
+                    m.add_implication(one, some)
+            handles.setdefault(key, some)
+        m.add(sum(xs) + extra * some <= steps)
 
 
 def _counts(
@@ -227,6 +364,7 @@ def profile_bound(
     deadline: float,
     seed: int = 0,
     on_proven: Callable[[int], None] | None = None,
+    lp: bool = False,
 ) -> ProfileBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
@@ -237,11 +375,19 @@ def profile_bound(
     solution or no answer the climb goes on one time unit at a time below it. The next level's
     solution ends the climb, as do ``upper`` and ``deadline`` (``time.perf_counter()``; the
     next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
-    proved. Never below ``floor``."""
+    proved. Never below ``floor``. With ``lp`` (and ``upper`` and scipy), the climb starts
+    from the LP bound at ``upper`` (``lp_bound``: every plan no longer than ``upper``, the
+    optimum among them, is at least that long)."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
     proven = -(-floor // unit)  # the least level (units) not ruled out
+    if lp and upper is not None and lp_available():
+        got = lp_bound(problem, graph, node, tgts, upper, deadline)
+        if got is not None and got // unit > proven:
+            proven = got // unit
+            if on_proven is not None:
+                on_proven(max(floor, proven * unit))
     # the least level known (or feared) to have a relaxed solution: a plan's makespan has one
     cap = math.inf if upper is None else upper // unit
     cap_solved = upper is not None
