@@ -3,11 +3,22 @@
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 
-import pytest
+# This checkout's own code, first: the shared .venv installs hltl in editable mode from
+# /work/main/src, so without this a worktree's (or the landing train's) tests import main's code,
+# and so do the interpreters the tests start (they inherit PYTHONPATH).
+_SRC = str(Path(__file__).resolve().parents[1] / "src")
+if sys.path[:1] != [_SRC]:
+    sys.path.insert(0, _SRC)
+os.environ["PYTHONPATH"] = os.pathsep.join(
+    [_SRC, *(p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p)]
+)
 
-from hltl.sim3d.gl import choose_backend
+import pytest  # noqa: E402
+
+from hltl.sim3d.gl import choose_backend  # noqa: E402
 
 # MuJoCo picks its OpenGL backend once, when first imported (possibly by another test's import of
 # mink): choose the offscreen one for the whole session before anything imports it.

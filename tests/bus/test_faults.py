@@ -14,6 +14,7 @@ from typing import Any
 
 import pytest
 
+from hltl.bus import node as node_module
 from hltl.bus.driver import BusTiming
 from hltl.bus.faults import FaultModel
 from hltl.bus.session import free_endpoint
@@ -105,6 +106,29 @@ def test_faulty_links_change_nothing(loopback: Loopback, fault: str, stream: boo
 # (a cell whose plan changes mid-episode; each fault with the hints and the basis as the
 # executor gives them, guesses kept, and with every guess wrong, all undone)
 GUESS_CASES = [(f, w) for f in ("loss", "duplicates", "lost_replies", "everything") for w in (0, 1)]
+
+
+def test_a_node_slow_to_take_the_end_counts_every_start(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The episode's end commits the guessed starts the executor took, and the node counts
+    them then: a node that takes the end after the executor stopped waiting for its answer
+    (here 0.3 s late, with a 0.1 s timeout: a loaded machine) still counts every start, since
+    it is not closed before it has taken the end (it once was, and the count lost 7 starts)."""
+    real = node_module.CellNode._on_step
+
+    def slow_end(self: Any, query: Any) -> Any:
+        if b'"end":true' in node_module._payload(query):  # (the episode's end)
+            time.sleep(0.3)
+        return real(self, query)
+
+    monkeypatch.setattr(node_module.CellNode, "_on_step", slow_end)
+    guesses_in_the_answer(monkeypatch)
+    trial = make_trial("4-4-square", 0)
+    kw = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    run = loopback.run(trial.scene, timing=FAST, **kw)
+    assert run.node.stats.guesses_kept > 0 and run.node.stats.finished == 1
+    _starts_once(run)
 
 
 @pytest.mark.parametrize(("fault", "wrong"), GUESS_CASES)

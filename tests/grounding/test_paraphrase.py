@@ -117,8 +117,7 @@ KNOWN_MISSES = frozenset(
         # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
         # list after, 'one of the <description>', purposes ('to bang together', 'before
         # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
-        # 'Load … up with'), 'one of the other two', a person corrected to a place, 'swap the
-        # people', "take P's X over to her"
+        # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
         "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
         "The little one could do with her sippy cup",
         "Take the bottle to Person A. When that's done, the chips go to them too.",
@@ -137,13 +136,9 @@ KNOWN_MISSES = frozenset(
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
         "No red pen for Sam, one of the other two will do",
         "Load Tom up with the boxes, just not the small box",
-        "Drill to Jess, correction, drill in the locker",
-        "Lemon to Marco then knife to Lena, sorry, swap the people",
-        "Would you take Mrs Khan's tablets over to her?",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
         "Give Ava the teddy, won't you give Lily the bib too?",
         "Take the cup to Person B. When that's done, the apple goes to them too.",
-        "Would you take Mr Lee's jug over to him?",
         "Could you bring Grandad's beaker over to him?",
         "Give each of them a spanner, Kofi and Jess, any size",
         "Both people get an item each: the chips for Person B and the bottle for Person A",
@@ -154,10 +149,6 @@ KNOWN_MISSES = frozenset(
         "Clear everything into the locker, leave the spanners where they are",
         "No black pen for Priya, one of the other two will do",
         "Load Jess up with the spanners, just not the small one",
-        "Bowl to Omar, correction, bowl in the sink",
-        "Stapler to Sam, correction, stapler on the desk",
-        "Torch to Kofi then drill to Jess, sorry, swap the people",
-        "Apple to Alice and chips to Bob, sorry, swap the people",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -179,8 +170,9 @@ KNOWN_MISSES = frozenset(
 # "blind14" written in session 15 by another engineer, measured once at the end of session 15,
 # its misses met in session 16: asserted now; "blind15" written in session 16 by another
 # engineer, measured once at the end of session 16, its wrong readings and most of its refusals
-# met in session 17: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# met in session 17: asserted now, the rest in KNOWN_MISSES; "blind16" written in session 17 by
+# another engineer, reviewed by a second one, measured once at the end of session 17)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind16"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -232,6 +224,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind15"].entries}) >= 3
     assert len(CORPORA["causes17"].entries) >= 140
     assert len({e.scene for e in CORPORA["causes17"].entries}) >= 10
+    assert len(CORPORA["blind16"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind16"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -17,6 +17,7 @@ from hltl.planner import PlanResult, PlanStep, anytime, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, plan_steps, search
 from tests.oracles.validator import check_plan
+from tests.planner.start import step_levels
 
 pytest.importorskip("ortools")
 
@@ -71,6 +72,34 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
     assert anytime.certified(problem, _Search(problem), math.inf) is None
+
+
+@pytest.mark.parametrize(
+    ("seed", "floor", "optimum", "lowest"), [(0, 5.4, 5.4, 54), (1, 3.3, 3.3, None)]
+)
+def test_the_profile_bound_is_the_step_climbs_floor(
+    seed: int, floor: float, optimum: float, lowest: int | None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # grid 5 seed 0: start bound 5.3 s, profile bound 5.4 s (a few cheap questions), optimum
+    # 5.4 s: the step climb starts at 5.4 s, never below, and proves A*'s optimum. Grid 4 seed
+    # 1: the profile bound (3.3 s) meets the prioritized plan's makespan, which is then
+    # optimal without any step question
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    # (its 1 s may not be enough for the profile bound's questions on a loaded machine)
+    monkeypatch.setattr(anytime, "PROFILE_FLOOR_SECONDS", 120.0)
+    c = delivery_cell("grid", 5 if seed == 0 else 4, seed)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    start = problem.start()
+    h0 = round(s.heuristic(start))
+    got = anytime._profile_floor(problem, s, start, h0, None, math.inf)
+    assert h0 < got == to_ticks(floor)
+    levels = step_levels(monkeypatch)
+    found = anytime.certified(problem, _Search(problem), math.inf)
+    expected = search(Problem(c.scene, c.spec), timeout=120)
+    assert found is not None and expected.makespan is not None
+    assert found[0] == to_ticks(expected.makespan) == to_ticks(optimum)
+    assert min(levels, default=None) == lowest
 
 
 @pytest.mark.parametrize(
@@ -186,6 +215,8 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
     # prioritized plan's makespan as ``upper``: it finds a shorter plan, which is optimal, or
     # proves there is none, and then that plan is optimal
     monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    # (on grid 4 seed 1 and random 4 seed 0 the profile bound meets the first plan already)
+    monkeypatch.setattr(anytime, "_profile_floor", lambda _p, _s, _n, floor, *_: floor)
     monkeypatch.setattr(anytime, "step_bound", lambda _p, _s, _n, floor, *_: (floor, None))
     monkeypatch.setattr(anytime, "_jointly", lambda *_, **__: None)
     c = delivery_cell(layout, n, seed)

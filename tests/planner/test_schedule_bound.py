@@ -23,7 +23,7 @@ from tests.oracles.cpsat import cpsat_makespan
 from tests.oracles.random_instances import random_instance
 from tests.oracles.validator import check_plan
 from tests.planner import test_symmetry as twins
-from tests.planner.start import start_targets
+from tests.planner.start import start_targets, step_levels
 
 pytest.importorskip("ortools")
 
@@ -307,9 +307,7 @@ def test_an_order_between_objects_that_are_not_twins_can_raise_the_bound() -> No
     assert got is False
 
 
-@pytest.mark.parametrize(
-    ("layout", "n", "seed"), [("grid", 4, 1), ("random", 4, 1), ("grid", 5, 4)]
-)
+@pytest.mark.parametrize(("layout", "n", "seed"), [("grid", 4, 1), ("grid", 3, 4), ("grid", 5, 4)])
 @pytest.mark.parametrize("upper", [None, 31, 60])
 def test_skipping_levels_finds_the_same_bound(
     layout: str, n: int, seed: int, upper: int | None, monkeypatch: pytest.MonkeyPatch
@@ -357,6 +355,25 @@ def test_skipping_levels_finds_the_same_bound(
         assert max(asked[math.inf]) > best  # it went past the optimum and came back
     else:
         assert not got[0.0][1] or got[0.0][0] == upper * schedule.time_unit(problem)
+
+
+def test_a_skipping_round_asks_levels_as_far_apart_as_the_skip(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # grid 4 seed 1 from 0, skipping whenever it can: the first round asks 0 and 1, the next
+    # (a skip of 2) 3 and 5, the next (4) 9 and 13, not the levels just above the first
+    # (docs/planner.md, "Rounds as far apart as the skip"); the bound is the same
+    if schedule.WORKERS < 2:
+        pytest.skip("needs two cores (two levels asked at once)")
+    _, problem, s, node, tgts = _at_start("grid", 4, 1)
+    monkeypatch.setattr(schedule, "CHEAP_NO", math.inf)
+    levels = step_levels(monkeypatch)
+    graph = s.heuristic.graph
+    deadline = time.perf_counter() + DEADLINE_S
+    res = schedule._shave(problem, graph, node, tgts, 0, None, deadline, 0, 0, True, True)
+    assert res.ticks == 33 * schedule.time_unit(problem)
+    assert {0, 1, 3, 5, 9, 13} <= set(levels)
+    assert not {2, 4, 10, 14} & set(levels)
 
 
 @pytest.mark.parametrize(

@@ -70,7 +70,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineer, never opened by the engineer who changed the grounder before its one measurement at
 # the end of session 16; tuned on in session 17), causes17 (session 17: fresh variants of each
 # kind of blind15's misses, written BEFORE the changes for its refusals; measured once, then tuned
-# on).
+# on), blind16 (written in session 17 by another engineer and committed alone, reviewed by a
+# second engineer, never opened by the engineer who changed the grounder before its one
+# measurement at the end of session 17; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -101,6 +103,7 @@ PARTS = (
     "causes16",
     "blind15",
     "causes17",
+    "blind16",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -130,7 +130,9 @@ class NodeStats:
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
     new_bases: int = 0  # waits for a new spec's basis before foreseeing that it ended
     waited_out: int = 0  # of those, ended by FORESEE_WAIT (the hint used)
-    grounded: int = 0  # instructions grounded here, ahead of the executor (after a briefing)
+    # instructions grounded here, ahead of the executor (after a briefing; once each: a tick
+    # undone and simulated again takes the first grounding)
+    grounded: int = 0
     briefed: int = 0  # of those, first specs grounded here from the executor's briefing
     respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
@@ -172,6 +174,12 @@ class _Episode:
     # the instructions it simulates too, and keeps the specs it made by version
     offline: bool = False
     grounded: dict[int, _Basis] = field(default_factory=dict)
+    # what the node's grounding ahead made, by the instructions and the formulas done then:
+    # the spec grounded against, the specs made in turn, the last one's monitor and JSON form
+    # (a tick undone and simulated again grounds nothing again, see CellNode._ground_ahead)
+    ground_memo: dict[
+        tuple[tuple[str, ...], frozenset[str]], tuple[Any, list[Any], HierarchyMonitor, Any]
+    ] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -865,21 +873,28 @@ class CellNode:
         bs = s.basis
         if not ep.offline or bs is None:
             return False
-        spec, monitor, version = bs.basis.spec, bs.monitor, bs.basis.version
+        spec, version = bs.basis.spec, bs.basis.version
         q, q_now = s.q, s.q if s.q_now is None else s.q_now
-        done = monitor.done(q_now)
-        for u in ground_all(self._grounder, instructions, self.scene, spec, done):
-            if u.spec is None:
-                continue
-            q, q_now = carry_over(spec, q, u.spec), carry_over(spec, q_now, u.spec)
-            spec, monitor, version = u.spec, HierarchyMonitor(u.spec), version + 1
-        if version == bs.basis.version:
-            return False
-        wire = loads(dumps(spec_to_dict(spec)), "spec")
+        key = (tuple(instructions), bs.monitor.done(q_now))
+        memo = ep.ground_memo.get(key)
+        if memo is None or memo[0] is not spec:  # (not grounded yet against this spec)
+            made = [
+                u.spec
+                for u in ground_all(self._grounder, instructions, self.scene, spec, key[1])
+                if u.spec is not None
+            ]
+            if not made:
+                return False
+            wire = loads(dumps(spec_to_dict(made[-1])), "spec")
+            memo = ep.ground_memo[key] = (spec, made, HierarchyMonitor(made[-1]), wire)
+            self.stats.grounded += 1
+        _, made, monitor, wire = memo
+        for new in made:  # (the monitor state carried over by formula name, spec to spec)
+            q, q_now = carry_over(spec, q, new), carry_over(spec, q_now, new)
+            spec, version = new, version + 1
         basis = Basis(spec, version, q, bs.basis.planner)
         s.basis = ep.grounded[version] = _Basis(basis, monitor, bs.check, bs.forecast, wire)
         s.q, s.q_now = q, q_now
-        self.stats.grounded += 1
         return True
 
     def _take_brief(self, ep: _Episode, d: Any) -> None:

@@ -11,8 +11,12 @@ from typing import Any
 from hltl.bus.codec import Report, loads, world_from_wire
 from hltl.bus.driver import BusCell, bus_cell
 from hltl.errors import BusError
+from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import CellFactory, EpisodeConfig
+
+# how an action ends on its own (not halted)
+_ENDED = frozenset({ActionState.DONE, ActionState.FAILED})
 
 
 def check_factor(factor: float) -> float:
@@ -206,6 +210,16 @@ class RealtimeBusCell(BusCell):
         elif now - self._gap_since >= self.timing.timeout:
             self._gap_since = None
             self._recover(self._reports_upto)
+
+    def ended_first(self, handle: Handle) -> ActionStatus | None:
+        """After a halt: how the action ended if the node reports it ended on its own first
+        (done or failed; :class:`~hltl.execution.drivers.OwnClock`). The node acts on a halt
+        when it arrives, on its own clock: an action may end between the executor's decision
+        and then (the halt confirmed by a report of its end)."""
+        with self._cond:
+            rep = None if handle.id in self._local else self._latest.get(handle.id)
+        st = None if rep is None else rep.status
+        return st if st is not None and st.state in _ENDED else None
 
     def next_event_time(self) -> float:
         """When the node expects something to happen next; an expected time already past means

@@ -97,6 +97,19 @@ class RobotDriver(Protocol):
         ...
 
 
+@runtime_checkable
+class OwnClock(Protocol):
+    """A driver whose robots run on their own clock, not the executor's (real arms, or the
+    bus's real-time cell): an action may end before a halt sent for it arrives (optional).
+    The executor then takes in the end as it was (a hand-over done is done), instead of
+    believing the action halted."""
+
+    def ended_first(self, handle: Handle) -> ActionStatus | None:
+        """After :meth:`RobotDriver.halt`: how the action ended if it ended on its own before
+        the halt reached it (done or failed), else ``None`` (halted, or not known yet)."""
+        ...
+
+
 @dataclass(frozen=True, slots=True)
 class Expected:
     """A step the executor expects to dispatch next if nothing happens: its plan's next step.

@@ -22,6 +22,7 @@ from hltl.execution.drivers import (
     Handle,
     Lookahead,
     MotionSource,
+    OwnClock,
     RobotDriver,
 )
 from hltl.execution.instructions import SpecUpdate
@@ -575,9 +576,8 @@ class Executor(TickTemplate):
         # on and the step ends (and the suffix is replanned) when they finish.
         first = hazards[0]
         endangered = {h.action: h for h in hazards}
-        halted = [r for r in self._running if r.status is None and r.action in endangered]
-        for run in halted:
-            self._halt_run(run, endangered[run.action].reason)
+        live = [r for r in self._running if r.status is None and r.action in endangered]
+        halted = [run for run in live if self._halt_run(run, endangered[run.action].reason)]
         self.log.emit(
             Halt(
                 t=self.t,
@@ -634,23 +634,28 @@ class Executor(TickTemplate):
         result = self.planner(self.scene, self.spec, world=w, monitor=self.monitor, q0=q)
         return result.status is PlanStatus.SOLVED
 
-    def _halt_run(self, run: _Running, reason: str) -> None:
+    def _halt_run(self, run: _Running, reason: str) -> bool:
+        """Halt ``run``; False when it ended on its own before the halt reached its robots (a
+        driver on its own clock, :class:`~hltl.execution.drivers.OwnClock`): it is then left
+        to the next poll, which takes its end in as reported (a hand-over done is done)."""
         self.driver.halt(run.handle, self.t, reason)
+        if isinstance(self.driver, OwnClock) and self.driver.ended_first(run.handle) is not None:
+            return False
         run.status = ActionStatus(ActionState.HALTED, run.progress, self.t, reason)
         self.belief.touched(run.action.object, self.t)
         self.log.emit(
             ActionHalted(t=self.t, handle=run.handle.id, action=run.action.to_dict(), reason=reason)
         )
+        return True
 
     def _halt_runs(self, runs: Sequence[_Running], reason: str) -> None:
-        for run in runs:
-            self._halt_run(run, reason)
+        halted = [run for run in runs if self._halt_run(run, reason)]
         self.log.emit(
             Halt(
                 t=self.t,
                 kind="update",
                 reason=reason,
-                actions=[r.action.to_dict() for r in runs],
+                actions=[r.action.to_dict() for r in halted],
                 hazards=[],
                 done=sorted(self.done_formulas()),
             )

@@ -5023,7 +5023,39 @@ def _corrections17(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"([.!])\s*no,?(?: no,?)? not ([a-z][\w ]*?)[.!]\s*(?=\S)", ", no, ", out)
     out = _sub(r"([.!])\s*actually,? no,?\s*(?=\S)", ", no, ", out)
     out = _sub(r",\s*(?:whoops|oops|oh)\s*,\s*i meant\b", ", no, I meant", out)
-    return out
+
+    def placed(m: re.Match[str]) -> str:
+        # "Drill to Jess, correction, drill in the locker": the same object put somewhere instead
+        if not _only(m.group(1), lexicon, "object") or not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        if _ids(m.group(3), lexicon, "object") != _ids(m.group(1), lexicon, "object"):
+            return m.group(0)
+        if not _only(m.group(5), lexicon, "surface"):
+            return m.group(0)
+        return f"put the {m.group(3)} {m.group(4)} {m.group(5)}{m.group(6)}"
+
+    out = _sub(
+        r"^(?:the )?([a-z ]+?) to ([a-z][\w ]*?),\s*(?:correction|no|sorry),\s*(?:the )?([a-z ]+?) "
+        r"(in|on|into|onto) (the [a-z ]+?)\s*([.!]?)$",
+        placed,
+        out,
+    )
+
+    def swapped(m: re.Match[str]) -> str:
+        # "Lemon to Marco then knife to Lena, sorry, swap the people": lemon to Lena, knife to Marco
+        p, q = m.group(2), m.group(5)
+        if not _only_person(p, lexicon) or not _only_person(q, lexicon):
+            return m.group(0)
+        if _ids(p, lexicon, "human") == _ids(q, lexicon, "human"):
+            return m.group(0)
+        return f"{m.group(1)} to {q} {m.group(3)} {m.group(4)} to {p}{m.group(6)}"
+
+    return _sub(
+        r"^((?:the )?[a-z ]+?) to ([a-z][\w ]*?) (then|and) ((?:the )?[a-z ]+?) to ([a-z][\w ]*?)"
+        r",\s*(?:sorry|no|wait|oops)\s*,\s*swap the (?:people|names|two of them)\s*([.!]?)$",
+        swapped,
+        out,
+    )
 
 
 def _questions17(text: str, lexicon: Lexicon) -> str:
@@ -5044,6 +5076,19 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     )
     out = _sub(
         r"^any chance of (the [a-z ]+?) going (to|on|onto|in|into) (.+?)\?$", r"\1 \2 \3", out
+    )
+
+    def theirs(m: re.Match[str]) -> str:
+        # "take Mrs Khan's tablets over to her": hers, to her
+        if not _only_person(m.group(2), lexicon) or not _only(m.group(3), lexicon, "object"):
+            return m.group(0)
+        pid = next(iter(_ids(m.group(2), lexicon, "human")))
+        if title_sex(pid, lexicon) != PRONOUN_SEX[m.group(4).lower()]:
+            return m.group(0)  # a name alone does not say who 'her' is
+        return f"{m.group(1)} the {m.group(3)} over to {m.group(2)}"
+
+    out = _sub(
+        r"\b(take|bring|pass|carry) ([a-z][\w ]*?)'s ([a-z ]+?) over to (him|her)\b", theirs, out
     )
     return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
 

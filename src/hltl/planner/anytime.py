@@ -52,6 +52,11 @@ SCHEDULE_SHARE = 0.25
 # shortest steps: its model has a variable per instance and step, and on 10-robot lines (start
 # bound 11.7 s, 23 steps) it proved nothing in 7.6 s of CPU where A* alone finishes in about 5 s
 STEPS_UP_TO = 16
+# exact mode's first phase: the profile bound (``profile.profile_bound``) raises the step
+# climb's floor first, for at most this many seconds (docs/planner.md, "The profile bound as the
+# climb's floor": solved in 0.05-0.7 s on the 10 x 10 cells, grid seed 4 from 4.3 to 5.7 s,
+# where the step model's cheap rounds took about 3 s to get as far)
+PROFILE_FLOOR_SECONDS = 1.0
 # cells of more goals than SCHEDULE_UP_TO where no pair beats the start bound (grids and random
 # layouts: docs/planner.md, "Profile bound"): the last share of the budget goes to the profile
 # bound, when that share is at least PROFILE_MIN_SECONDS long (``_profile_fits``: 10 s budgets
@@ -760,18 +765,21 @@ def certify(
         return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
     if ahead is not None:
         ahead()
-    # last: importing CP-SAT (and pandas with it) takes 0.5-1.5 s, which a cell left to A*
-    # need not pay
+    # last: importing CP-SAT takes 0.2-0.5 s even without pandas (``lns._import_cp_sat``),
+    # which a cell left to A* need not pay
     if not lns.available():
         return none
     best = construct(problem, s)
+    floor = _profile_floor(problem, s, start, round(h0), best, until)
+    if best is not None and floor >= best[0]:
+        return Certificate(best, best)  # no plan is shorter
     # levels shaved one by one (no upper): certification pays where the optimum is at or just
     # above the start bound, where galloping's extra feasible questions cost most
     ticks, found = step_bound(
         problem,
         s,
         start,
-        round(h0),
+        floor,
         None,
         until,
         None if beside is None else lambda: beside(best),
@@ -794,6 +802,33 @@ def certify(
         if joint is not None and joint[0] < best[0]:
             best = joint
     return Certificate(None, best)
+
+
+def _profile_floor(
+    problem: Problem, s: _Search, start: Node, floor: int, best: _Found | None, until: float
+) -> int:
+    """The profile bound at the start node (``profile.profile_bound``, at most
+    ``PROFILE_FLOOR_SECONDS``), or ``floor`` where it does not apply or says no more: a lower
+    bound on every plan, so the step climb may start there. Its questions are cheap (no
+    presolve, one at a time: A*'s process runs beside them) and it is solved long before the
+    step model's hard levels, which it never reaches (docs/planner.md, "The profile bound as
+    the climb's floor")."""
+    if not profile.applicable(problem):
+        return floor
+    heur = s.heuristic
+    tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
+    if not tgts:
+        return floor
+    res = profile.profile_bound(
+        problem,
+        heur.graph,
+        start,
+        tgts,
+        floor=floor,
+        upper=None if best is None else best[0],
+        deadline=min(until, time.perf_counter() + PROFILE_FLOOR_SECONDS),
+    )
+    return res.ticks
 
 
 def step_bound(

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import importlib.util
+import sys
 import threading
 import time
+import types
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -27,12 +29,54 @@ class GoalSpec:
 
 
 def available() -> bool:
-    """CP-SAT (the ``ortools`` package) can be imported."""
+    """CP-SAT (the ``ortools`` package) can be imported (and is, once this says so: without
+    pandas where it can be, ``_import_cp_sat``)."""
     try:
-        import ortools.sat.python.cp_model  # noqa: F401
+        _import_cp_sat()
     except ImportError:  # pragma: no cover - ortools is part of the dev and anytime extras
         return False
     return True
+
+
+class _NotPandas(types.ModuleType):
+    """What CP-SAT's module sees as ``pandas`` while it is imported (``_import_cp_sat``):
+    every name it asks for is a class of its own, of which nothing the planner passes to
+    CP-SAT is an instance."""
+
+    def __getattr__(self, name: str) -> type:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        made = type(name, (), {})
+        setattr(self, name, made)
+        return made
+
+
+def _import_cp_sat() -> None:
+    """Import ``ortools.sat.python.cp_model`` without importing pandas. CP-SAT's module
+    imports pandas only for its pandas-series helpers (``pd.Index``, ``pd.Series`` in type
+    hints and ``isinstance`` checks), which the planner never calls; pandas is about two
+    thirds of that import's time (0.5-1.2 s of 0.8-1.8 s under load; docs/planner.md,
+    "CP-SAT without pandas"), paid by every cell whose first phase asks CP-SAT. While the
+    module is imported, ``sys.modules["pandas"]`` is a ``_NotPandas``, taken out again right
+    after, so a later ``import pandas`` anywhere gets the real one (CP-SAT's series helpers
+    then do not recognise its objects: nothing here uses them). Where pandas is imported
+    already, or the import fails this way (another ortools), CP-SAT is imported as usual."""
+    if "ortools.sat.python.cp_model" in sys.modules or "pandas" in sys.modules:
+        import ortools.sat.python.cp_model
+
+        return
+    sys.modules["pandas"] = _NotPandas("pandas")
+    try:
+        import ortools.sat.python.cp_model
+    except Exception:
+        # (a partly imported module would keep the stand-in: import it again, as usual)
+        for name in [m for m in sys.modules if m.startswith("ortools.sat.python.cp_model")]:
+            del sys.modules[name]
+        sys.modules.pop("pandas", None)
+        import ortools.sat.python.cp_model  # noqa: F401
+    finally:
+        if isinstance(sys.modules.get("pandas"), _NotPandas):
+            del sys.modules["pandas"]
 
 
 def installed() -> bool:

@@ -328,7 +328,9 @@ def _shave(
 
     ``workers`` (default ``WORKERS``) levels are asked at once, each on a thread of its own
     (CP-SAT leaves Python's lock while it solves): the level the climb would ask next and the
-    ones just above it. A
+    ones above it, as far apart as that level is from the last "no" while levels are skipped
+    (two "no"s then rule out twice as many levels: docs/planner.md, "Rounds as far apart as
+    the skip"), else the ones just above it. A
     "no" answers every level below it and a schedule every level above it, so a question whose
     answer another one implies is stopped, and its answer is never used: the optimum found,
     its schedule (one CP-SAT worker with a fixed seed at a fixed level) and the levels asked
@@ -376,15 +378,17 @@ def _shave(
                 return lowest[1]
             if top is not None and proved + 1 >= top:
                 return ScheduleBound(max(floor, upper or 0), True, len(tgts))
+            apart = 1  # how far apart the levels of a round are
             if lowest is not None:  # levels were skipped below it: ask them from the lowest
                 first = proved + 1
             else:
-                first = proved + max(1, skip)
+                apart = max(1, skip)
+                first = proved + apart
                 if top is not None and first >= top:
-                    first = max(proved + 1, top - 1)
+                    first, apart = max(proved + 1, top - 1), 1
             levels = [
                 at
-                for at in range(first, first + workers)
+                for at in range(first, first + workers * apart, apart)
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
             # (planner._Apart pauses A* through a round that asks a level on every core)
