@@ -141,11 +141,11 @@ def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
     """'Marco wants the knife, he's prepping, and she wants the lemon': 'he' and 'she' in one
     instruction are two people, so with fewer than two people named one of them is someone not
     named (a remark taken off, or read as the one person, hid that): refused."""
-    said = {PRONOUN_SEX[w.lower()] for w in _SEXED.findall(text)}
+    words = _SEXED.findall(text)
+    said = {PRONOUN_SEX[w.lower()] for w in words}
     if len(said) == 2 and len(people_named(text, lexicon)) < 2:
-        word = _SEXED.findall(text)[-1]
         raise GroundingError(
-            f"{word!r} is not resolved: 'he' and 'she' are two people, and fewer are named; "
+            f"{words[-1]!r} is not resolved: 'he' and 'she' are two people, and fewer are named; "
             "name the person"
         )
 

@@ -25,9 +25,6 @@ PRESOLVE = False
 # rest of the budget on random 32 x 32 seeds 1 and 3; grid seed 0's level 8.1 s needs the time)
 FAR_SHARE = 2.0
 MAX_STRIDE = 4
-# "a robot handles one of these objects" built from one indicator per object (``_robot_rows``;
-# session 17: a 32-goal question's model built in about half the CPU, and solved in less)
-SHARED_HANDLES = True
 # the LP bound (``lp_bound``) rounds its optimum up to a whole time unit after taking this many
 # units off (the solver's tolerances: its optimum may be a little above the exact one)
 LP_SLACK = 0.01
@@ -281,10 +278,10 @@ def _robot_rows(
     each value, as the one-machine bound takes them.
 
     "It handles one of J" is an indicator per set (kept in ``handles``, shared by the duration
-    levels), implied by one indicator per object ("it handles o", ``handles[(o,)]`` when
-    ``SHARED_HANDLES``), each implied by the robot's route instances on o. The same solutions
-    as one implication per set and instance (``SHARED_HANDLES = False``: 48k implications on a
-    32-goal cell where this has about 6k), so the same answers."""
+    levels), implied by one indicator per object ("it handles o", ``handles[(o,)]``), each
+    implied by the robot's route instances on o. The same solutions as one implication per set
+    and instance (session 16's model: 48k implications on a 32-goal cell where this has about
+    6k; its model is built in about half the CPU, and solved in less), so the same answers."""
     if not jobs:
         return
     head: dict[int, int] = {}
@@ -311,14 +308,10 @@ def _robot_rows(
             if xs:
                 m.add(sum(xs) <= steps)
             continue
-        some = handles.get(key) if SHARED_HANDLES else None
+        some = handles.get(key)
         if some is None:
             some = m.new_bool_var("")
             for o in subset:
-                if not SHARED_HANDLES:
-                    for _, x in jobs[o]:
-                        m.add_implication(x, some)
-                    continue
                 one = handles.get((o,))
                 if one is None:
                     one = handles[(o,)] = m.new_bool_var("")
