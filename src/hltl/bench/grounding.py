@@ -104,6 +104,7 @@ PARTS = (
     "blind15",
     "causes17",
     "blind16",
+    "causes18",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -50,6 +50,7 @@ from hltl.grounding.lexicon import (
     Item,
     Lexicon,
     common_words,
+    first_names,
     lex,
     person_name,
     title_sex,
@@ -5093,7 +5094,398 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
 
 
+
+# -- session 18: blind16's kinds, by mechanism: a speaker's own words around the request --------
+#
+# New speakers bring their own openers, closers, calls and tics ("Kia ora", "gg", "my bad",
+# "going once, going twice", "C-could", "the, the blue mug"). Rather than one frame per sentence,
+# three mechanisms: a stammer or a restart is read as the word said in full; an idiom of address,
+# sign-off, hurry or praise (a lexicon by kind, below) is said to no one about nothing; and a
+# stretch at either edge of the request made only of such words (or of short chat tokens that
+# are no English word, no first name and name nothing in the scene, not even by a typo) is
+# taken off. A stretch that could name a scene person or object, or holds a held word (a verb,
+# a number, a negation, 'or', 'then', a pronoun, a preposition), is never taken off.
+
+# "C-could", "g-give", "Th-thanks": the word said in full
+_STAMMER = re.compile(r"\b([a-z]{1,3})-(?=\1[a-z])", _F)
+# "the b-, the bottle", "the sc-, the scanner", "the h- the hammer": a word cut off and said again
+_RESTART = re.compile(
+    r"\b(?:(the|a|an|my|his|her|their) )?([a-z]{1,4})-\s*,?\s*(?=(?:(?:the|a|an|my|his|her|their) )"
+    r"?\2[a-z])",
+    _F,
+)
+# "the, the blue mug", "on the, on the high chair", "the, um, the the apple": a restart
+_FILLER = r"(?:\s*,?\s*\b(?:um+|uh+|er+|erm+|ah+)\b\s*,?\s*|\s*,\s*|\s+)"
+_REPEATED = re.compile(
+    rf"\b((?:(?:to|on|onto|in|into|for|at|of|with) )?(?:the|a|an|my|his|her|to|on|in|for)){_FILLER}"
+    r"\1\b",
+    _F,
+)
+
+
+def _stammers18(text: str, _lexicon: Lexicon) -> str:
+    """A stammered word ('C-could'), a word cut off and said again ('the b-, the bottle') and a
+    function word said twice ('the, the blue mug') read as said once. A word cut off and not said
+    again ('Give Jess the sp-') is left, and refused."""
+    out = _sub(r"\bmy bad\b", "my mistake", text)
+    if "-" not in out and not re.search(r"\b(\w+)\W+\1\b", out, _F):
+        return out
+    out = _STAMMER.sub("", out)
+    out = _RESTART.sub("", out)
+    for _ in range(3):
+        again = _REPEATED.sub(r"\1", out)
+        if again == out:
+            break
+        out = again
+    return out
+
+
+# Idioms said to no one about nothing, by kind; each is taken off wherever it stands as a stretch
+# of its own (between punctuation or at an edge), and only when it names nothing in the scene.
+_IDIOMS18: dict[str, tuple[str, ...]] = {
+    "address": (
+        "ladies and gentlemen", "boys and girls", "my friends?", "my good (?:man|woman|sir)",
+        "big (?:man|guy|fella)", "chat", "y'all", "you lot", "you guys", "everybody", "people",
+        "lads", "guys", "team", "bestie", "bruv", "matey?", "shipmate", "partner", "tower",
+        "good robot", "captain",
+    ),
+    "greeting": (
+        "kia ora(?: mate)?", "g'day(?: mate)?", "howdy(?: partner)?", "ahoy(?: there)?",
+        "ey up(?: love)?", "namaste", "hey there", "good evening and welcome", "yo",
+        "arr(?:,? matey)?", "prithee(?:,? good robot)?",
+    ),
+    "sign-off": (
+        "over and out", "over", "out", "sweet as", "no worries", "no cap", "fr", "gg", "ez",
+        "ez clap", "gg ez", "lol", "lmao", "tysm", "ty", "tbh", "innit", "safe", "slay",
+        "respect", "legend", "much obliged", "thank ya kindly", "thanks in advance",
+        "best regards", "kind regards", "cheerio", "anon", "encore", "bravo(?:,? bravo)?",
+        "checkmate", "yo ho ho", "and bob's your uncle", "bob's your uncle", "ta-da",
+        "appreciate it", "all done", "there we go", "job done",
+        "great (?:show|energy|work|job)(?: (?:tonight|today|everyone|team))?",
+        "good (?:hustle|work|job|show)(?:,? (?:team|everyone|folks))?",
+        "(?:nice|good) work", "totally stoked", "stoked", "gnarly", "dude", "zzz+", "yawn",
+        "good grief", "omg", "argh+", "ugh+", "ooh", "wow",
+    ),
+    "hurry": (
+        "let's (?:hustle|roll|go|move)", "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
+        "move(?: it)?", "chop chop", "hop to it", "on the double", "pronto", "rn", "asap",
+        "listen up(?:,? (?:people|everyone|team))?", "heads up(?:,? team)?",
+        "when (?:u|you) get a (?:chance|sec|minute|moment)", "when (?:ur|you're) free",
+        "no hurry", "no rush", "crack on", "right-o", "righty ho",
+    ),
+    "auction": ("going once", "going twice", "going once,? going twice", "sold"),
+}
+_IDIOM18 = re.compile(
+    r"^(?:"
+    + "|".join(sorted((i for kind in _IDIOMS18.values() for i in kind), key=len, reverse=True))
+    + r")$",
+    _F,
+)
+# said without punctuation at the very start or end: greetings, sign-offs and chat (not address,
+# which may be a subject, 'Everybody gets a cup', nor a call that may ask, 'move it')
+_WORD_IDIOM18 = re.compile(
+    r"^(?:"
+    + "|".join(
+        sorted(
+            (
+                i
+                for kind in ("greeting", "sign-off")
+                for i in _IDIOMS18[kind]
+                if i not in ("over", "out", "safe", "respect", "legend", "wow")
+            ),
+            key=len,
+            reverse=True,
+        )
+    )
+    + r"|when (?:u|you) get a (?:chance|sec|minute|moment)|when (?:ur|you're) free|asap|rn"
+    + r")$",
+    _F,
+)
+# a stretch of the text: between commas, sentence ends, colons, dashes and ellipses
+_STRETCH = re.compile(r"(\s*(?:[,;:!?—–]|\.{2,}|…|\.(?=\s|$)|\s-\s)\s*)")
+
+
+def _idiom_stretch(chunk: str, lexicon: Lexicon) -> bool:
+    plain = chunk.strip(" .!?,'\"").lower()
+    plain = re.sub(r"\s+", " ", plain)
+    return bool(plain) and bool(_IDIOM18.match(plain)) and _names_nothing(chunk, lexicon)
+
+
+@functools.lru_cache(maxsize=64)
+def _scene_words(scene: Scene) -> frozenset[str]:
+    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee')."""
+    names = [o.id for o in scene.objects] + [h.id for h in scene.humans]
+    names += [s.id for s in scene.surfaces] + [h.name for h in scene.humans]
+    for x in (*scene.objects, *scene.humans, *scene.surfaces):
+        names += list(getattr(x, "aliases", ()))
+    return frozenset(w for n in names for w in re.split(r"[\s_]+", n.lower()) if w)
+
+
+def _near_verb(word: str) -> bool:
+    """Whether ``word`` is one edit from a verb the grammar reads ('hnad' for 'hand')."""
+    for verb in VERBS:
+        if abs(len(verb) - len(word)) > 1 or " " in verb:
+            continue
+        if len(verb) == len(word):
+            diff = [k for k in range(len(word)) if verb[k] != word[k]]
+            if len(diff) == 1 or (
+                len(diff) == 2
+                and diff[1] == diff[0] + 1
+                and verb[diff[0]] == word[diff[1]]
+                and verb[diff[1]] == word[diff[0]]
+            ):
+                return True
+        else:
+            short, long_ = sorted((verb, word), key=len)
+            if any(long_[:k] + long_[k + 1 :] == short for k in range(len(long_))):
+                return True
+    return False
+
+
+def _word_idiom(words: str, lexicon: Lexicon) -> bool:
+    plain = re.sub(r"\s+", " ", words.strip(" .!?,'\"").lower())
+    return bool(plain) and bool(_WORD_IDIOM18.match(plain)) and _names_nothing(words, lexicon)
+
+
+def _chat_token(word: str, lexicon: Lexicon) -> bool:
+    """A short token that is no English word and no first name ('gg', 'rn', 'tysm'): chat, not a
+    thing asked for (an object the scene lacks has a name a dictionary holds)."""
+    low = word.lower()
+    return (
+        low.isalpha()
+        and 2 <= len(low) <= 4
+        and low not in _COMMON
+        and low not in _scene_words(lexicon.scene)
+        and not _near_verb(low)
+        and low not in first_names()
+        and not _held_word(low, lexicon)
+        and _names_nothing(word, lexicon)
+    )
+
+
+def _word_edges18(text: str, lexicon: Lexicon) -> str:
+    """Chat tokens and idioms said without punctuation at the very start or end ('lmao ok give
+    person b the bottle lol tysm', '… to person a rn', '… when ur free') taken off."""
+    words = text.split()
+    if len(words) < 3:
+        return text
+    start, stop = 0, len(words)
+    for _ in range(4):
+        moved = False
+        for n in (3, 2, 1):
+            if stop - start - n < 2:
+                continue
+            tail = " ".join(words[stop - n : stop])
+            bare = tail.strip(" .!?,").lower()
+            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(tail, lexicon):
+                stop -= n
+                moved = True
+                break
+        for n in (3, 2, 1):
+            if stop - start - n < 2:
+                continue
+            head = " ".join(words[start : start + n])
+            bare = head.strip(" .!?,").lower()
+            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(head, lexicon):
+                start += n
+                moved = True
+                break
+        if not moved:
+            break
+    if (start, stop) == (0, len(words)):
+        return text
+    end = words[-1][-1] if words[-1][-1] in ".!?" else ""
+    return " ".join(words[start:stop]).rstrip(",;:") + end
+
+
+def _edges18(text: str, lexicon: Lexicon) -> str:
+    """Stretches at either edge of the request (and whole sentences) that are idioms of address,
+    greeting, sign-off, hurry or an auctioneer's calls, or chat tokens only, taken off when
+    something is left."""
+    text = _word_edges18(text, lexicon)
+    parts = _STRETCH.split(text.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    if len(chunks) < 2:
+        return text
+
+    def inert(chunk: str) -> bool:
+        if not chunk.strip():
+            return True
+        if re.search(r"\d", chunk):
+            return False  # 'r2, …': a robot, a number
+        if _idiom_stretch(chunk, lexicon):
+            return True
+        words = re.findall(r"[a-z']+", chunk.lower())
+        return bool(words) and all(_chat_token(w, lexicon) for w in words)
+
+    drop = [inert(c) for c in chunks]
+    if all(drop) or not any(d and c.strip() for d, c in zip(drop, chunks, strict=True)):
+        return text
+    # only the edges: the stretches before the first and after the last one kept, and any
+    # stretch that is a whole sentence of its own
+    first = drop.index(False)
+    last = len(drop) - 1 - drop[::-1].index(False)
+    keep_idx = []
+    for k, c in enumerate(chunks):
+        if not drop[k] or not c.strip():
+            if c.strip():
+                keep_idx.append(k)
+            continue
+        before = seps[k - 1] if k else "."
+        after = seps[k] if k < len(seps) else "."
+        whole = before.strip()[-1:] in ".!?…" and after.strip()[:1] in (".", "!", "?", "…", "")
+        if first < k < last and not whole and not _idiom_stretch(c, lexicon):
+            keep_idx.append(k)
+    if len(keep_idx) == len([c for c in chunks if c.strip()]):
+        return text
+    out = chunks[keep_idx[0]]
+    for prev, k in zip(keep_idx, keep_idx[1:], strict=False):
+        between = seps[prev:k]
+        stop = next((x.strip() for x in between if x.strip()[:1] in ".!?…"), "")
+        out += f"{stop[:1]} " if stop else (between[-1] if between[-1].strip() else ", ")
+        out += chunks[k]
+    tail = seps[keep_idx[-1]].strip() if keep_idx[-1] < len(seps) else ""
+    return out.strip(" ,;:—–-") + (tail[:1] if tail[:1] in (".", "!", "?") else "")
+
+
+
+_P = r"([A-Za-z][\w ]*?)"  # a person's name (checked by the rewrite)
+_X = r"([A-Za-z][\w ,'-]*?)"  # what is asked for (checked by the rewrite)
+# what a thing is wanted for: an occasion, which names no one and nothing in the scene
+_OCCASION = (
+    r"(?:meeting|stand-up|standup|one-to-one|round|rounds|job|jobs|inspection|tour|trip|film|"
+    r"movie|show|party|class|lesson|lecture|presentation|demo|shift|service|match|game|test|exam|"
+    r"session|call|interview|break|picnic|journey|drive|ride|weekend|trick|rehearsal|practice|"
+    r"training|workout|walk|nap|bath|bedtime|story|project|review|audit|visit|week|day|night)"
+)
+_DEADLINE = (
+    r"(?:end of (?:the )?day|eod|close of play|lunch|lunchtime|noon|midday|tonight|this "
+    r"(?:evening|afternoon)|the end of the (?:day|shift))"
+)
+
+
+def _frames18(text: str, lexicon: Lexicon) -> str:
+    """blind16's frames of courtesy, wants, purposes and choices, each a general rewrite whose
+    people and objects are checked against the scene:
+
+    - asked of a person: 'Would P be so kind as to accept X (from you)?', 'Would P be able to
+      have X?', 'Is P able to get X, do you reckon?' (can P have X), 'What P really needs right
+      now is X' (P needs X), 'Might P be furnished with X?', 'might X be conveyed to P';
+    - conditions of courtesy: 'If it would not be too much trouble,', 'If it's no bother,', 'if
+      my lovely assistant would kindly …';
+    - wants: 'is keen on', 'would care for', 'has expressed a wish for / an interest in',
+      'requires', 'is going home with', 'takes home', 'should be furnished with';
+    - purposes and deadlines that name nothing in the scene: 'for the stand-up', 'for the next
+      part of the tour', 'by end of day', '… so he can clean up';
+    - choices: 'apiece' (each), 'dont' (don't), 'not a big deal / blocker', 'colours don't
+      matter', 'any colour will do' after a choice."""
+    low = text.lower()
+    out = text
+
+    def asked(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        if not _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        return f"give {m.group(1)} {m.group(2)}"
+
+    out = _sub(
+        rf"^(?:would|could|will) {_P} be (?:so kind|so good|good enough|kind enough) as to "
+        rf"(?:accept|take|receive|have) {_X}(?: from you)?\s*\?$",
+        asked,
+        out,
+    )
+    out = _sub(
+        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive) {_X}"
+        r"(?:,? do you (?:think|reckon))?\s*\?$",
+        asked,
+        out,
+    )
+    out = _sub(
+        rf"^might {_P} be (?:brought|given|handed|passed|furnished with|provided with) {_X}\s*\?$",
+        asked,
+        out,
+    )
+
+    def conveyed(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon) or _ids(m.group(1), lexicon, "human"):
+            return m.group(0)
+        return f"take {m.group(1)} to {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        rf"\b(?:might|could|may|can) {_X} be (?:conveyed|taken|brought|carried|delivered) to "
+        rf"{_P}(\s*[.!?]|$)",
+        conveyed,
+        out,
+    )
+
+    def what_needs(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        if _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        return f"{m.group(1)} needs {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        rf"^what {_P} (?:really |actually |most )?(?:needs|wants|could (?:really )?use|could do "
+        rf"with|would like)(?: right now| now| most)? is {_X}(\s*[,.!]|$)",
+        what_needs,
+        out,
+    )
+    if low.startswith("if "):
+        out = _sub(
+            r"^if (?:it(?:'s| is| would(?: not|n't) be| isn't| wouldn't be) (?:not )?(?:no|too "
+            r"much|any) (?:bother|trouble)|it (?:isn't|is not) too much (?:bother|trouble))\s*,\s*",
+            "",
+            out,
+        )
+        out = _sub(
+            r"^if my (?:[a-z]+ )?(?:assistant|helper|friend|robot) would (?:kindly |please )?", "", out
+        )
+    for frame, repl in (
+        (r"\b(?:is|'s) keen on\b", "wants"),
+        (r"\bwould care for\b", "would like"),
+        (r"\bhas expressed (?:a wish|an interest|a desire) (?:for|in)\b", "wants"),
+        (r"\brequires\b", "needs"),
+        (r"\b(?:is|'s) going home with\b", "gets"),
+        (r"\btakes home\b", "gets"),
+        (r"\b(?:should|must|is to) be (?:furnished|provided|supplied) with\b", "gets"),
+        (r"\bapiece\b", "each"),
+        (r"\bdont\b", "don't"),
+    ):
+        out = _sub(frame, repl, out)
+
+    def inert(m: re.Match[str]) -> str:
+        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
+
+    end = r"(?=\s*(?:[,.;!?]|\band\b|$))"
+    out = _sub(
+        rf",?\s+for (?:the|my|our|his|her|their|a|an|this|tonight's|today's) (?:next )?"
+        rf"(?:[a-z-]+ )?{_OCCASION}(?: of the [a-z]+)?{end}",
+        inert,
+        out,
+    )
+    out = _sub(rf"\s+by {_DEADLINE}{end}", inert, out)
+    out = _sub(
+        r",?\s+so (?:that )?(?:he|she|they|we|i) can [a-z]+(?: up| on| off| down)?(?=\s*(?:[.!]|$))",
+        inert,
+        out,
+    )
+    if re.search(r"\b(?:one of|either|any)\b", out, _F):
+        out = _sub(
+            r",\s*(?:(?:it's |that's )?not a (?:big deal|blocker|problem|biggie|big thing)|"
+            r"(?:colours|colors|sizes) don't matter|any (?:colour|color|size|one) will do)"
+            r"(?=\s*(?:[,.!]|$))",
+            "",
+            out,
+        )
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _stammers18,
+    _edges18,
+    _frames18,
     _courtesy17,
     _wants17,
     _see_it17,
