@@ -39,6 +39,7 @@
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 from collections.abc import Callable
 
@@ -5094,7 +5095,6 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
 
 
-
 # -- session 18: blind16's kinds, by mechanism: a speaker's own words around the request --------
 #
 # New speakers bring their own openers, closers, calls and tics ("Kia ora", "gg", "my bad",
@@ -5144,34 +5144,117 @@ def _stammers18(text: str, _lexicon: Lexicon) -> str:
 # of its own (between punctuation or at an edge), and only when it names nothing in the scene.
 _IDIOMS18: dict[str, tuple[str, ...]] = {
     "address": (
-        "ladies and gentlemen", "boys and girls", "my friends?", "my good (?:man|woman|sir)",
-        "big (?:man|guy|fella)", "chat", "y'all", "you lot", "you guys", "everybody", "people",
-        "lads", "guys", "team", "bestie", "bruv", "matey?", "shipmate", "partner", "tower",
-        "good robot", "captain",
+        "ladies and gentlemen",
+        "boys and girls",
+        "my friends?",
+        "my good (?:man|woman|sir)",
+        "big (?:man|guy|fella)",
+        "chat",
+        "y'all",
+        "you lot",
+        "you guys",
+        "everybody",
+        "people",
+        "lads",
+        "guys",
+        "team",
+        "bestie",
+        "bruv",
+        "matey?",
+        "shipmate",
+        "partner",
+        "tower",
+        "good robot",
+        "captain",
     ),
     "greeting": (
-        "kia ora(?: mate)?", "g'day(?: mate)?", "howdy(?: partner)?", "ahoy(?: there)?",
-        "ey up(?: love)?", "namaste", "hey there", "good evening and welcome", "yo",
-        "arr(?:,? matey)?", "prithee(?:,? good robot)?",
+        "kia ora(?: mate)?",
+        "g'day(?: mate)?",
+        "howdy(?: partner)?",
+        "ahoy(?: there)?",
+        "ey up(?: love)?",
+        "namaste",
+        "hey there",
+        "good evening and welcome",
+        "yo",
+        "arr(?:,? matey)?",
+        "prithee(?:,? good robot)?",
     ),
     "sign-off": (
-        "over and out", "over", "out", "sweet as", "no worries", "no cap", "fr", "gg", "ez",
-        "ez clap", "gg ez", "lol", "lmao", "tysm", "ty", "tbh", "innit", "safe", "slay",
-        "respect", "legend", "much obliged", "thank ya kindly", "thanks in advance",
-        "best regards", "kind regards", "cheerio", "anon", "encore", "bravo(?:,? bravo)?",
-        "checkmate", "yo ho ho", "and bob's your uncle", "bob's your uncle", "ta-da",
-        "appreciate it", "all done", "there we go", "job done",
+        "over and out",
+        "over",
+        "out",
+        "sweet as",
+        "no worries",
+        "no cap",
+        "fr",
+        "gg",
+        "ez",
+        "ez clap",
+        "gg ez",
+        "lol",
+        "lmao",
+        "tysm",
+        "ty",
+        "tbh",
+        "innit",
+        "safe",
+        "slay",
+        "respect",
+        "legend",
+        "much obliged",
+        "thank ya kindly",
+        "thanks in advance",
+        "best regards",
+        "kind regards",
+        "cheerio",
+        "anon",
+        "encore",
+        "bravo(?:,? bravo)?",
+        "checkmate",
+        "yo ho ho",
+        "and bob's your uncle",
+        "bob's your uncle",
+        "ta-da",
+        "appreciate it",
+        "all done",
+        "there we go",
+        "job done",
         "great (?:show|energy|work|job)(?: (?:tonight|today|everyone|team))?",
         "good (?:hustle|work|job|show)(?:,? (?:team|everyone|folks))?",
-        "(?:nice|good) work", "totally stoked", "stoked", "gnarly", "dude", "zzz+", "yawn",
-        "good grief", "omg", "argh+", "ugh+", "ooh", "wow",
+        "(?:nice|good) work",
+        "totally stoked",
+        "stoked",
+        "gnarly",
+        "dude",
+        "zzz+",
+        "yawn",
+        "good grief",
+        "omg",
+        "argh+",
+        "ugh+",
+        "ooh",
+        "wow",
     ),
     "hurry": (
-        "let's (?:hustle|roll|go|move)", "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
-        "move(?: it)?", "chop chop", "hop to it", "on the double", "pronto", "rn", "asap",
-        "listen up(?:,? (?:people|everyone|team))?", "heads up(?:,? team)?",
-        "when (?:u|you) get a (?:chance|sec|minute|moment)", "when (?:ur|you're) free",
-        "no hurry", "no rush", "crack on", "right-o", "righty ho",
+        "let's (?:hustle|roll|go|move)",
+        "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
+        "move(?: it)?",
+        "chop chop",
+        "hop to it",
+        "on the double",
+        "pronto",
+        "rn",
+        "asap",
+        "listen up(?:,? (?:people|everyone|team))?",
+        "heads up(?:,? team)?",
+        "when (?:u|you) get a (?:chance|sec|minute|moment)",
+        "when (?:ur|you're) free",
+        "no hurry",
+        "no rush",
+        "crack on",
+        "right-o",
+        "righty ho",
     ),
     "auction": ("going once", "going twice", "going once,? going twice", "sold"),
 }
@@ -5339,14 +5422,13 @@ def _edges18(text: str, lexicon: Lexicon) -> str:
     if len(keep_idx) == len([c for c in chunks if c.strip()]):
         return text
     out = chunks[keep_idx[0]]
-    for prev, k in zip(keep_idx, keep_idx[1:], strict=False):
+    for prev, k in itertools.pairwise(keep_idx):
         between = seps[prev:k]
         stop = next((x.strip() for x in between if x.strip()[:1] in ".!?…"), "")
         out += f"{stop[:1]} " if stop else (between[-1] if between[-1].strip() else ", ")
         out += chunks[k]
     tail = seps[keep_idx[-1]].strip() if keep_idx[-1] < len(seps) else ""
     return out.strip(" ,;:—–-") + (tail[:1] if tail[:1] in (".", "!", "?") else "")
-
 
 
 _P = r"([A-Za-z][\w ]*?)"  # a person's name (checked by the rewrite)
@@ -5440,7 +5522,9 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
             out,
         )
         out = _sub(
-            r"^if my (?:[a-z]+ )?(?:assistant|helper|friend|robot) would (?:kindly |please )?", "", out
+            r"^if my (?:[a-z]+ )?(?:assistant|helper|friend|robot) would (?:kindly |please )?",
+            "",
+            out,
         )
     for frame, repl in (
         (r"\b(?:is|'s) keen on\b", "wants"),
@@ -5467,7 +5551,8 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     )
     out = _sub(rf"\s+by {_DEADLINE}{end}", inert, out)
     out = _sub(
-        r",?\s+so (?:that )?(?:he|she|they|we|i) can [a-z]+(?: up| on| off| down)?(?=\s*(?:[.!]|$))",
+        r",?\s+so (?:that )?(?:he|she|they|we|i) can [a-z]+(?: up| on| off| down)?"
+        r"(?=\s*(?:[.!]|$))",
         inert,
         out,
     )
