@@ -2411,6 +2411,19 @@ def apostrophes(text: str) -> str:
     )
 
 
+_ORDER_COLON = re.compile(
+    r"(^|(?<=[.!?;])\s*)(then|next|after that|afterwards|finally|last|lastly|first|second|third|"
+    r"first things first)\s*:\s*",
+    _F,
+)
+
+
+def order_colons(text: str) -> str:
+    """'First: X. Then: Y. Last: Z.': an order word before a colon orders (as 'Then, Y'), it is
+    no header of a list (read so from the start: 'Then: Y' was read as 'and Y')."""
+    return _ORDER_COLON.sub(r"\1\2, ", text) if ":" in text else text
+
+
 def _spoken(text: str, lexicon: Lexicon) -> str:
     """How people speak to the robots: the hearer said as a group ("Y'all mind …", "Could ye
     hand …", "you guys"), which is 'you'; "(do) you mind handing"."""
@@ -5166,8 +5179,10 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
         "tower",
         "good robot",
         "captain",
+        *("hon", "hun", "love", "dear", "mate", "pal", "sweetie", "darling", "folks", "everyone"),
     ),
     "greeting": (
+        *("and now", "roger(?: that)?", "copy(?: that)?(?:,? copy)?", "mmm+", "eh", "right then"),
         "kia ora(?: mate)?",
         "g'day(?: mate)?",
         "howdy(?: partner)?",
@@ -5181,6 +5196,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
         "prithee(?:,? good robot)?",
     ),
     "sign-off": (
+        *("y'hear", "then we're (?:done|finished)", "let's hear it(?:,? everybody)?", "play on"),
         "over and out",
         "over",
         "out",
@@ -5256,6 +5272,22 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
         "right-o",
         "righty ho",
     ),
+    # the speaker's own aside about the request or the day, asking nothing
+    "aside": (
+        *("mark my words", "per my last email", "(?:just )?circling back", "quick one"),
+        *(
+            "(?:just )?a (?:gentle|quick|friendly) reminder",
+            "(?:sorry,? )?long (?:night|day|shift)",
+        ),
+        *("this is your captain speaking", "attention(?:,? please| please)?", "watch this"),
+        *("thank you for (?:flying with us|your patience)", "(?:ok )?chat,? watch this"),
+        *("for tonight's star prize", "(?:i'm|i am) half asleep(?: anyway)?", "whenever"),
+        *(
+            "whenever you're (?:fixin'?|fixing|ready)(?: to)?",
+            "crack on",
+            "let's (?:hustle|roll|go|move)(?: it)?",
+        ),
+    ),
     "auction": ("going once", "going twice", "going once,? going twice", "sold"),
 }
 _IDIOM18 = re.compile(
@@ -5291,7 +5323,12 @@ _STRETCH = re.compile(r"(\s*(?:[,;:!?—–]|\.{2,}|…|\.(?=\s|$)|\s-\s)\s*)")
 def _idiom_stretch(chunk: str, lexicon: Lexicon) -> bool:
     plain = chunk.strip(" .!?,'\"").lower()
     plain = re.sub(r"\s+", " ", plain)
-    return bool(plain) and bool(_IDIOM18.match(plain)) and _names_nothing(chunk, lexicon)
+    bare = re.sub(r"^(?:and|so) ", "", plain)  # "…, and bob's your uncle", "…, so crack on"
+    return (
+        bool(plain)
+        and bool(_IDIOM18.match(plain) or _IDIOM18.match(bare))
+        and _names_nothing(chunk, lexicon)
+    )
 
 
 @functools.lru_cache(maxsize=64)
@@ -5438,7 +5475,8 @@ _OCCASION = (
     r"(?:meeting|stand-up|standup|one-to-one|round|rounds|job|jobs|inspection|tour|trip|film|"
     r"movie|show|party|class|lesson|lecture|presentation|demo|shift|service|match|game|test|exam|"
     r"session|call|interview|break|picnic|journey|drive|ride|weekend|trick|rehearsal|practice|"
-    r"training|workout|walk|nap|bath|bedtime|story|project|review|audit|visit|week|day|night)"
+    r"training|workout|walk|nap|bath|bedtime|story|project|review|audit|visit|week|day|night|"
+    r"part)"
 )
 _DEADLINE = (
     r"(?:end of (?:the )?day|eod|close of play|lunch|lunchtime|noon|midday|tonight|this "
@@ -5527,25 +5565,39 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
             out,
         )
     for frame, repl in (
-        (r"\b(?:is|'s) keen on\b", "wants"),
+        (r"(?:\s+is|'s) keen on\b", " wants"),
         (r"\bwould care for\b", "would like"),
         (r"\bhas expressed (?:a wish|an interest|a desire) (?:for|in)\b", "wants"),
         (r"\brequires\b", "needs"),
-        (r"\b(?:is|'s) going home with\b", "gets"),
-        (r"\btakes home\b", "gets"),
+        (r"\bwill want\b", "wants"),
+        (r"\b(?:has |have )?been (?:wanting|asking for|after)\b", "wants"),
         (r"\b(?:should|must|is to) be (?:furnished|provided|supplied) with\b", "gets"),
         (r"\bapiece\b", "each"),
         (r"\bdont\b", "don't"),
     ):
         out = _sub(frame, repl, out)
 
+    def home(m: re.Match[str]) -> str:
+        # "Zoe is going home with the book" (she gets it); "Everything … is going home with P"
+        said = _names(m.group(1), lexicon)
+        if said and all(r.kind == "human" for r in said[-1].refs):
+            return f"{m.group(1)} gets"
+        return f"{m.group(1)} goes to"
+
+    out = _sub(r"([\w']+)(?:\s+is|'s) going home with\b", home, out)
+    out = _sub(r"([\w']+) takes home\b", home, out)
+
     def inert(m: re.Match[str]) -> str:
-        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
+        if not _names_nothing(m.group(0), lexicon):
+            return m.group(0)
+        return (
+            "," if m.group(0).strip().startswith(",") and m.group(0).rstrip().endswith(",") else ""
+        )
 
     end = r"(?=\s*(?:[,.;!?]|\band\b|$))"
     out = _sub(
         rf",?\s+for (?:the|my|our|his|her|their|a|an|this|tonight's|today's) (?:next )?"
-        rf"(?:[a-z-]+ )?{_OCCASION}(?: of the [a-z]+)?{end}",
+        rf"(?:[a-z-]+ )?{_OCCASION}(?: of the [a-z]+)?(?:\s*,(?=\s*(?:wants|needs|gets)\b))?{end}",
         inert,
         out,
     )
@@ -5556,10 +5608,11 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
         inert,
         out,
     )
-    if re.search(r"\b(?:one of|either|any)\b", out, _F):
+    if re.search(r"\b(?:one of|either|any|each)\b", out, _F):
         out = _sub(
             r",\s*(?:(?:it's |that's )?not a (?:big deal|blocker|problem|biggie|big thing)|"
-            r"(?:colours|colors|sizes) don't matter|any (?:colour|color|size|one) will do)"
+            r"(?:colours|colors|sizes) don't matter|any (?:colour|color|size|one) will do|"
+            r"whichever(?: one)?(?: is fine)?|just (?:the )?one|(?:i )?don't (?:mind|care) which)"
             r"(?=\s*(?:[,.!]|$))",
             "",
             out,
@@ -5567,10 +5620,384 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+_NUMBER18 = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+
+def _objects_only(words: str, lexicon: Lexicon) -> bool:
+    named = _names(words, lexicon)
+    return bool(named) and all(r.kind == "object" for it in named for r in it.refs)
+
+
+def _surface_only(words: str, lexicon: Lexicon) -> bool:
+    return _only(words, lexicon, "surface")
+
+
+def _pronouns18(text: str, lexicon: Lexicon) -> str:
+    """Pronouns and ellipsis said of one person: 'P wants X. Give it to them.' ('them' for the one
+    person the text names, who asked), '…, sort that out (for them)' after a want, 'Then the Y,
+    same person.', 'P the X, and the Y … the other one' (the other of two people), 'and P, she
+    needs Y' (the pronoun says P again), 'Find X and put it …'."""
+    out = text
+    people = _ids(out, lexicon, "human")
+    asked = re.match(
+        r"^(.+?) (?:wants|needs|has wanted|asked for|is after|has been asking for|would like)\b",
+        out,
+        _F,
+    )
+    if len(people) == 1 and asked and _only_person(asked.group(1), lexicon):
+        who = asked.group(1)
+        out = _sub(r"\b(to|for) them\b(?!\s+(?:both|all|each))", rf"\1 {who}", out)
+        out = _sub(
+            r",\s*(?:so\s+)?sort (?:it|that|this)(?: out)?(?: for [A-Za-z ]+?)?(?:,? please| pls)?"
+            r"\s*([.!]?)$",
+            r"\1",
+            out,
+        )
+    out = _sub(r",\s*same (?:person|one|guy|lady)\s*([.!]?)$", r" to the same person\1", out)
+    other = re.search(r"\b(to|for) the other (?:one|person)\b", out, _F)
+    if other and people:
+        # "… and the chips are for the other one": the one person not named
+        left = [h for h in lexicon.scene.humans if h.id not in people]
+        if len(left) == 1:
+            out = _sub(
+                r"\b(to|for) the other (?:one|person)\b", rf"\1 {_name(left[0].id, lexicon)}", out
+            )
+        elif len(left) > 1:
+            who = " or ".join(
+                f"{h.name} ({', '.join(h.aliases)})" if h.aliases else h.name for h in left
+            )
+            raise GroundingError(f"'the other one' could mean {who}: name the person")
+
+    def resumed(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} {m.group(2)}"
+
+    out = _sub(r"\b([A-Z][\w ]*?),\s*(?:she|he|they) (needs|wants|gets|would like)\b", resumed, out)
+
+    def found(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(1), lexicon):
+            return m.group(0)
+        return f"{m.group(2)} {m.group(1)}"
+
+    return _sub(
+        r"^(?:find|grab|fetch|get) (the [a-z ]+?) and (put|place|give|hand|take|bring) "
+        r"(?:it|them)\b",
+        found,
+        out,
+    )
+
+
+def _run_ons18(text: str, lexicon: Lexicon) -> str:
+    """Run-ons and dictation: 'Last:' (finally), 'Thereafter,' (then), 'X is to go on S' (goes on),
+    'S first, the X.' (the X on S), 'X. P. Done.' (X to P), 'P is waiting on X and Q on Y' (Q
+    wants Y), 'Those are the action items.' (a sentence that only names the list), 'Give each of
+    them one thing: P the X, Q the Y' and 'Give both people a snack: X for P and Y for Q' (the
+    list is the request)."""
+    out = _sub(r"(^|[.!]\s*)(?:last|lastly)\s*[:,]\s*", r"\1Finally, ", text)
+    out = _sub(r"(^|[.!]\s*)thereafter\s*,\s*", r"\1Then, ", out)
+    out = _sub(r"\b(?:is|are) to go (on|onto|in|into|to)\b", r"goes \1", out)
+    out = _sub(
+        r"(?:^|(?<=[.!]))\s*(?:those|these) are (?:the|today's|my|your|our) (?:action items|jobs|"
+        r"tasks|orders|instructions)\s*[.!]?\s*$",
+        "",
+        out,
+    ).strip()
+
+    def first(m: re.Match[str]) -> str:
+        if not _surface_only(m.group(2), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}Put {m.group(3)} on the {m.group(2)}{m.group(4)}"
+
+    out = _sub(r"(^|[.!]\s+)(?:the )?([a-z ]+?) first,\s*(the [a-z ]+?)([.!])", first, out)
+
+    def dictated(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(2), lexicon) or not _only_person(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)} to {m.group(3)}."
+
+    out = _sub(
+        r"((?:^|[.!?]\s+)(?:then,? )?)(the [a-z ]+?)\.\s+([A-Za-z][\w ]*?)\.(?:\s+(?:done|sold|"
+        r"next)\.)?",
+        dictated,
+        out,
+    )
+    out = _sub(r"\b(?:is|'s|are) waiting (?:on|for)\b", " wants", out).replace("  ", " ")
+
+    def gapped(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} and {m.group(2)} wants {m.group(3)}"
+
+    out = _sub(
+        r"(\bwants [^,.;]*?) and ([A-Za-z][\w ]*?) on (the [a-z ]+?)\b(?=\s*(?:[,.;!]|so\b|$))",
+        gapped,
+        out,
+    )
+
+    def listed(m: re.Match[str]) -> str:
+        if len(_ids(m.group(1), lexicon, "human")) < 2:
+            return m.group(0)
+        return f"give {m.group(1)}" if m.group(1)[:1].isupper() else m.group(1)
+
+    return _sub(
+        r"^give (?:each of them|both of them|both people|them both|everyone|each person) "
+        r"(?:a|an|one) [a-z]+(?: each)?\s*:\s*(.+)$",
+        listed,
+        out,
+    )
+
+
+def _counts18(text: str, lexicon: Lexicon) -> str:
+    """Counts: 'a (fine) pair of Xs' / 'that pair of Xs' (the two Xs), ', the two of them,' said
+    again, 'All three of the Xs, a, b and c,' (the three Xs), "S's for the two Xs, a and b" (the
+    two Xs on S), "There's only a single X, and it's for P" (the X to P), 'N of the Xs: the A one
+    and the B one' (the A X and the B X, when N are named), 'One X per <role>' / 'An X for each
+    of the two <role>s' / 'An X each for P and Q' (each gets one)."""
+
+    def pair(m: re.Match[str]) -> str:
+        if len(_ids(m.group(1), lexicon, "object")) != 2:
+            return m.group(0)
+        return f"the two {m.group(1)}"
+
+    out = _sub(r"\b(?:a|an|that|this) (?:[a-z]+ )?pair of ([a-z]+s)\b", pair, text)
+    out = _sub(r"\b(?:that|this) trio of ([a-z]+s)\b", r"the three \1", out)
+    out = _sub(r"(\bthe two [a-z]+s),\s*the two of them,", r"\1", out)
+
+    def all_of(m: re.Match[str]) -> str:
+        said = re.findall(r"[a-z]+", m.group(3).lower())
+        adjectives = {w for words in _adjectives(lexicon).values() for w in words}
+        adjectives |= set(_adjectives(lexicon))
+        if said and not all(w in adjectives or w == "and" for w in said):
+            return m.group(0)
+        return f"the {m.group(1)} {m.group(2)}"
+
+    out = _sub(
+        r"\ball (two|three|four|five|six) of the ([a-z]+s)((?:,\s*[a-z]+)+,? and [a-z]+)?(?=,)",
+        all_of,
+        out,
+    )
+
+    def for_s(m: re.Match[str]) -> str:
+        if not _surface_only(m.group(1), lexicon):
+            return m.group(0)
+        return f"Put the {m.group(2)} {m.group(3)} on the {m.group(1)}{m.group(4)}"
+
+    out = _sub(
+        r"^the ([a-z ]+?)'s for the (two|three|four) ([a-z]+s)(?:,\s*[a-z]+,? and [a-z]+)?"
+        r"(\s*[.!]?)$",
+        for_s,
+        out,
+    )
+
+    def single(m: re.Match[str]) -> str:
+        ids = _ids(m.group(1), lexicon, "object")
+        kind = _names(m.group(1), lexicon)
+        if len(ids) != 1 or not kind or not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"the {m.group(1)} to {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        r"^there's (?:only |just )?(?:a single|the one|one|just the one) ([a-z ]+?),\s*and it"
+        r"(?:'s| is| goes) (?:for|to) ([A-Za-z][\w ]*?)(\s*[.!]?)$",
+        single,
+        out,
+    )
+
+    def named_n(m: re.Match[str]) -> str:
+        n = _NUMBER18[m.group(1).lower()]
+        kind = _singular(m.group(2).lower())
+        listed = _sub(r"\b([a-z]+) ones?\b", rf"\1 {kind}", m.group(3))
+        objs = _ids(listed, lexicon, "object")
+        if len(objs) != n or _ids(listed, lexicon, "human"):
+            return m.group(0)
+        return listed
+
+    out = _sub(
+        r"\b(two|three|four) of the ([a-z]+s)\s*(?::|,\s*namely)\s*((?:the [a-z ]+?)(?:,\s*| and "
+        r")(?:the [a-z ]+?))(?=\s*[.!]?$)",
+        named_n,
+        out,
+    )
+
+    def per(m: re.Match[str]) -> str:
+        return f"{m.group(3)} each get {m.group(1)} {m.group(2)}{m.group(4)}"
+
+    out = _sub(
+        r"^(a|an|one) ([a-z]+) (?:each )?for ([A-Za-z][\w ]*? and [A-Za-z][\w ]*?)(?: each)?"
+        r"(\s*[.!]?)$",
+        lambda m: per(m) if len(_ids(m.group(3), lexicon, "human")) == 2 else m.group(0),
+        out,
+    )
+
+    def role_each(m: re.Match[str]) -> str:
+        role = m.group(3)
+        ids = _ids(role, lexicon, "human")
+        if len(ids) < 2:
+            return m.group(0)
+        names = [_name(pid, lexicon) for pid in sorted(ids)]
+        return f"{' and '.join(names)} each get {m.group(1)} {m.group(2)}{m.group(4)}"
+
+    return _sub(
+        r"^(a|an|one) ([a-z]+) (?:per|for each of the (?:two|three) |for each )([a-z]+?)s?"
+        r"(\s*[.!]?)$",
+        role_each,
+        out,
+    )
+
+
+def _negation18(text: str, lexicon: Lexicon) -> str:
+    """Negation: 'bar the X' (except), 'Give P the Y. Not the X, just the Y.' (the Y said again),
+    'P wants Y, no X for him' (X not asked), "Don't give P the X, give it to Q instead" (the X to
+    Q), 'the X that isn't on S' (the Xs not on S: one is that one; several are the X, whose
+    refusal names them)."""
+    out = _sub(r"\bbar the\b", "except the", text)
+
+    def not_just(m: re.Match[str]) -> str:
+        before = out[: m.start()]
+        if not _ids(m.group(2), lexicon) <= _ids(before, lexicon) or _ids(
+            m.group(1), lexicon
+        ) & _ids(before, lexicon):
+            return m.group(0)
+        return ""
+
+    out = _sub(r"(?<=[.!])\s*not the ([a-z ]+?),\s*just the ([a-z ]+?)\s*[.!]?$", not_just, out)
+
+    def none_for(m: re.Match[str]) -> str:
+        rest = out[: m.start()]
+        ids = _ids(m.group(1), lexicon, "object")
+        if not ids or ids & _ids(rest, lexicon) or len(_ids(rest, lexicon, "human")) != 1:
+            return m.group(0)
+        return ""
+
+    out = _sub(
+        r",\s*(?:but )?no ([a-z ]+?) for (?:him|her|them)(?: (?:tho|though))?(?=\s*[.!]?$)",
+        none_for,
+        out,
+    )
+
+    def instead(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _only_person(m.group(3), lexicon):
+            return m.group(0)
+        if not _objects_only(m.group(2), lexicon) or _ids(m.group(1), lexicon) == _ids(
+            m.group(3), lexicon
+        ):
+            return m.group(0)
+        return f"give {m.group(2)} to {m.group(3)}{m.group(4)}"
+
+    out = _sub(
+        r"^don't give ([A-Za-z][\w ]*?) (the [a-z ]+?),\s*give (?:it|them) to ([A-Za-z][\w ]*?)"
+        r" instead(\s*[.!]?)$",
+        instead,
+        out,
+    )
+
+    def not_on(m: re.Match[str]) -> str:
+        ids = _ids(m.group(1), lexicon, "object")
+        where = _ids(m.group(2), lexicon, "surface")
+        if len(ids) < 2 or len(where) != 1 or _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        off = ids - set(starting_on(ids, next(iter(where)), lexicon))
+        if len(off) == 1:
+            return _said(next(iter(off)), lexicon)
+        if off == ids:
+            return m.group(1)  # every one of them: the refusal names the readings
+        if off:
+            raise GroundingError(
+                f"{m.group(0)!r} could mean {' or '.join(sorted(off))}: name the one meant"
+            )
+        return m.group(0)
+
+    return _sub(
+        r"\b(the [a-z ]+?) that (?:isn't|is not|'s not) (?:on|in) (the [a-z ]+?)\b"
+        r"(?=\s*(?:[.,!]|to\b|$))",
+        not_on,
+        out,
+    )
+
+
+def _corrections18(text: str, lexicon: Lexicon) -> str:
+    """Corrections: 'P, no, Q needs X' (Q), 'X to P. Correction: to Q.' (no, to Q), 'X to P,
+    sorry, Y to P' (the Y), 'Give P X. Wait, not P, Q.' (no, to Q), 'No, make that Q, the <who>'
+    (no, to Q), '…, I mean the Y one, my mistake' (said of the correction), 'No, hang on, the Y to
+    P, leave the X where it is' (no, the Y to P)."""
+    out = text
+
+    def person_no(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(2)} {m.group(3)}"
+
+    out = _sub(
+        r"^([A-Za-z][\w ]*?),\s*no,\s*([A-Za-z][\w ]*?) (needs|wants|gets)\b", person_no, out
+    )
+
+    def to_q(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        if m.group(1) and (_ids(m.group(1), lexicon) - _ids(out[: m.start()], lexicon)):
+            return m.group(0)  # 'not P' names one the request did not
+        return f". No, to {m.group(2)}{m.group(3) or '.'}"
+
+    out = _sub(
+        r"\.\s*(?:correction\s*:\s*to|wait,\s*not ([A-Za-z][\w ]*?),|no,\s*make that)\s*"
+        r"([A-Za-z][\w ]*?)(?:,\s*the [a-z ]+?)?(\s*[.!])?$",
+        to_q,
+        out,
+    )
+
+    def swapped(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(1), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        if not _only_person(m.group(2), lexicon) or _ids(m.group(2), lexicon) != _ids(
+            m.group(4), lexicon
+        ):
+            return m.group(0)
+        return f"{m.group(3)} to {m.group(4)}{m.group(5)}"
+
+    out = _sub(
+        r"^([a-z ]+?) to ([A-Za-z][\w ]*?),\s*sorry,\s*([a-z ]+?) to ([A-Za-z][\w ]*?)(\s*[.!]?)$",
+        swapped,
+        out,
+    )
+    out = _sub(r"(\bi mean the [a-z ]+?),\s*my (?:mistake|bad)\s*([.!]?)$", r"\1\2", out)
+
+    def hang_on(m: re.Match[str]) -> str:
+        before = _ids(out[: m.start()], lexicon, "object")
+        left = _ids(m.group(3), lexicon, "object")
+        if not left or not left <= before or _ids(m.group(1), lexicon, "object") & left:
+            return m.group(0)
+        return f". No, {m.group(1)} to {m.group(2)}."
+
+    return _sub(
+        r"\.\s*no,\s*(?:hang on|hold on|wait),\s*(the [a-z ]+?) to ([A-Za-z][\w ]*?),\s*leave "
+        r"(the [a-z ]+?) (?:where it is|alone|be)\s*[.!]?$",
+        hang_on,
+        out,
+    )
+
+
+def _sold18(text: str, lexicon: Lexicon) -> str:
+    """An auctioneer's 'Sold to P, one X!' (the X to P)."""
+
+    def sold(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _objects_only(m.group(2), lexicon):
+            return m.group(0)
+        return f"the {m.group(2)} to {m.group(1)}{m.group(3)}"
+
+    return _sub(r"^sold to ([A-Za-z][\w ]*?),\s*(?:one|a|an|the) ([a-z ]+?)(\s*[.!]?)$", sold, text)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
     _frames18,
+    _pronouns18,
+    _run_ons18,
+    _counts18,
+    _negation18,
+    _corrections18,
+    _sold18,
     _courtesy17,
     _wants17,
     _see_it17,
