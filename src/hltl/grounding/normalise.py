@@ -5288,6 +5288,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
             "let's (?:hustle|roll|go|move)(?: it)?",
         ),
     ),
+    "filler": ("well", "um+", "uh+", "er+", "erm+", "hmm+", "you know", "like i said"),
     "auction": ("going once", "going twice", "going once,? going twice", "sold"),
 }
 _IDIOM18 = re.compile(
@@ -5640,7 +5641,8 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = text
     people = _ids(out, lexicon, "human")
     asked = re.match(
-        r"^(.+?) (?:wants|needs|has wanted|asked for|is after|has been asking for|would like)\b",
+        r"^(.+?) (?:wants|needs|has wanted|asked for|is after|has been asking for|would like|"
+        r"is due)\b",
         out,
         _F,
     )
@@ -5695,6 +5697,9 @@ def _run_ons18(text: str, lexicon: Lexicon) -> str:
     them one thing: P the X, Q the Y' and 'Give both people a snack: X for P and Y for Q' (the
     list is the request)."""
     out = _sub(r"(^|[.!]\s*)(?:last|lastly)\s*[:,]\s*", r"\1Finally, ", text)
+    out = _sub(r"\s+and then we're (?:done|finished|good)\s*([.!]?)$", r"\1", out)
+    # "Books. Red one to Zoe.": a heading said as a sentence of its own
+    out = _sub(r"^([a-z]+s)\.\s+(?=[a-z]+ ones? (?:to|for|on|in)\b)", r"\1: ", out)
     out = _sub(r"(^|[.!]\s*)thereafter\s*,\s*", r"\1Then, ", out)
     out = _sub(r"\b(?:is|are) to go (on|onto|in|into|to)\b", r"goes \1", out)
     out = _sub(
@@ -5717,8 +5722,8 @@ def _run_ons18(text: str, lexicon: Lexicon) -> str:
         return f"{m.group(1)}{m.group(2)} to {m.group(3)}."
 
     out = _sub(
-        r"((?:^|[.!?]\s+)(?:then,? )?)(the [a-z ]+?)\.\s+([A-Za-z][\w ]*?)\.(?:\s+(?:done|sold|"
-        r"next)\.)?",
+        r"((?:^|(?<=[.!?])\s+)(?:then,? )?)(the [a-z ]+?)\.\s+([A-Za-z][\w ]*?)\."
+        r"(?:\s+(?:done|sold|next)\.)?",
         dictated,
         out,
     )
@@ -5821,7 +5826,7 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
     )
 
     def per(m: re.Match[str]) -> str:
-        return f"{m.group(3)} each get {m.group(1)} {m.group(2)}{m.group(4)}"
+        return f"{m.group(3)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
 
     out = _sub(
         r"^(a|an|one) ([a-z]+) (?:each )?for ([A-Za-z][\w ]*? and [A-Za-z][\w ]*?)(?: each)?"
@@ -5836,7 +5841,7 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         if len(ids) < 2:
             return m.group(0)
         names = [_name(pid, lexicon) for pid in sorted(ids)]
-        return f"{' and '.join(names)} each get {m.group(1)} {m.group(2)}{m.group(4)}"
+        return f"{' and '.join(names)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
 
     return _sub(
         r"^(a|an|one) ([a-z]+) (?:per|for each of the (?:two|three) |for each )([a-z]+?)s?"
