@@ -5393,7 +5393,7 @@ def _word_edges18(text: str, lexicon: Lexicon) -> str:
     start, stop = 0, len(words)
     for _ in range(4):
         moved = False
-        for n in (3, 2, 1):
+        for n in (5, 4, 3, 2, 1):
             if stop - start - n < 2:
                 continue
             tail = " ".join(words[stop - n : stop])
@@ -5402,7 +5402,7 @@ def _word_edges18(text: str, lexicon: Lexicon) -> str:
                 stop -= n
                 moved = True
                 break
-        for n in (3, 2, 1):
+        for n in (5, 4, 3, 2, 1):
             if stop - start - n < 2:
                 continue
             head = " ".join(words[start : start + n])
@@ -5415,6 +5415,8 @@ def _word_edges18(text: str, lexicon: Lexicon) -> str:
             break
     if (start, stop) == (0, len(words)):
         return text
+    while stop - start > 2 and words[stop - 1].lower() in ("and", "so"):
+        stop -= 1  # "… to bob and then we're finished": the 'and' of what was taken off
     end = words[-1][-1] if words[-1][-1] in ".!?" else ""
     return " ".join(words[start:stop]).rstrip(",;:") + end
 
@@ -5589,11 +5591,7 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"([\w']+) takes home\b", home, out)
 
     def inert(m: re.Match[str]) -> str:
-        if not _names_nothing(m.group(0), lexicon):
-            return m.group(0)
-        return (
-            "," if m.group(0).strip().startswith(",") and m.group(0).rstrip().endswith(",") else ""
-        )
+        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
 
     end = r"(?=\s*(?:[,.;!?]|\band\b|$))"
     out = _sub(
@@ -5844,8 +5842,8 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         return f"{' and '.join(names)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
 
     return _sub(
-        r"^(a|an|one) ([a-z]+) (?:per|for each of the (?:two|three) |for each )([a-z]+?)s?"
-        r"(\s*[.!]?)$",
+        r"^(a|an|one) ([a-z]+) (?:per |for each of the (?:two|three) |for each )([a-z]+?)s?"
+        r"(?:,? please)?(\s*[.!]?)$",
         role_each,
         out,
     )
