@@ -152,9 +152,8 @@ KNOWN_MISSES = frozenset(
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
         # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
-        # wait a moment … is going to'), a restart after a preposition ('on the, on the'), 'the
-        # other one' after 'can keep' or 'well,', a remark then 'she' resumed, 'not a big deal'
-        # after 'either colour', 'the N things that aren't X' as a subject, 'namely', 'leave the
+        # wait a moment … is going to'), 'the other one' after 'can keep', a remark then 'she'
+        # resumed, 'the N things that aren't X' as a subject, 'namely', 'leave the
         # X where it is' after a correction, 'so hand it over' then another handover, gapping
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
@@ -162,10 +161,8 @@ KNOWN_MISSES = frozenset(
         "Prithee, good robot, bear the globe unto Mrs Ortiz. Anon!",
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
-        "Put the bib on the, on the high chair.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
         "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
-        "One of the books to Noah, either colour, not a big deal.",
         "Those three things that aren't the bottle, give them to Person A.",
         "Two of the pens for Priya, namely the red one and the blue one.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
@@ -176,7 +173,6 @@ KNOWN_MISSES = frozenset(
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
         "Alice needs the bottle, and Bob, for my next trick, wants the crisps.",
-        "Bottle's for Person A, and the chips, well, those go to the other one, mate.",
         "Person B asked for the apple, so hand it over, and the cup to Person A.",
         "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "

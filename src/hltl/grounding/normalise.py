@@ -46,6 +46,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
+    TITLES,
     VERBS,
     WORDS,
     Item,
@@ -5141,7 +5142,7 @@ def _stammers18(text: str, _lexicon: Lexicon) -> str:
     function word said twice ('the, the blue mug') read as said once. A word cut off and not said
     again ('Give Jess the sp-') is left, and refused."""
     out = _sub(r"\bmy bad\b", "my mistake", text)
-    if "-" not in out and not re.search(r"\b(\w+)\W+\1\b", out, _F):
+    if "-" not in out and not re.search(r"\b(\w+(?: \w+)?)\W+\1\b", out, _F):
         return out
     out = _STAMMER.sub("", out)
     out = _RESTART.sub("", out)
@@ -5288,7 +5289,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
             "let's (?:hustle|roll|go|move)(?: it)?",
         ),
     ),
-    "filler": ("well", "um+", "uh+", "er+", "erm+", "hmm+", "you know", "like i said"),
+    "filler": ("well", "you know", "um+", "uh+", "er+", "erm+", "hmm+"),
     "auction": ("going once", "going twice", "going once,? going twice", "sold"),
 }
 _IDIOM18 = re.compile(
@@ -5317,6 +5318,7 @@ _WORD_IDIOM18 = re.compile(
     + r")$",
     _F,
 )
+_HESITATION = re.compile(r"^(?:um+|uh+|er+|erm+|hmm+)$", _F)
 # a stretch of the text: between commas, sentence ends, colons, dashes and ellipses
 _STRETCH = re.compile(r"(\s*(?:[,;:!?—–]|\.{2,}|…|\.(?=\s|$)|\s-\s)\s*)")
 
@@ -5377,6 +5379,7 @@ def _chat_token(word: str, lexicon: Lexicon) -> bool:
         and 2 <= len(low) <= 4
         and low not in _COMMON
         and low not in _scene_words(lexicon.scene)
+        and low not in TITLES
         and not _near_verb(low)
         and low not in first_names()
         and not _held_word(low, lexicon)
@@ -5465,7 +5468,17 @@ def _edges18(text: str, lexicon: Lexicon) -> str:
     for prev, k in itertools.pairwise(keep_idx):
         between = seps[prev:k]
         stop = next((x.strip() for x in between if x.strip()[:1] in ".!?…"), "")
-        out += f"{stop[:1]} " if stop else (between[-1] if between[-1].strip() else ", ")
+        dropped = [c for c in chunks[prev + 1 : k] if c.strip()]
+        if (
+            not stop
+            and dropped
+            and all(_HESITATION.match(c.strip()) for c in dropped)
+            and not re.match(r"\s*(?:no|sorry|wait|actually|i mean|hang on)\b", chunks[k], _F)
+            and re.search(r"\b(?:the|a|an|to|on|in|into|onto|my|his|her|their)\s*$", out, _F)
+        ):
+            out += " "  # "give the, uh, banana": the words round a hesitation are one phrase
+        else:
+            out += f"{stop[:1]} " if stop else (between[-1] if between[-1].strip() else ", ")
         out += chunks[k]
     tail = seps[keep_idx[-1]].strip() if keep_idx[-1] < len(seps) else ""
     return out.strip(" ,;:—–-") + (tail[:1] if tail[:1] in (".", "!", "?") else "")
@@ -5607,13 +5620,20 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
         inert,
         out,
     )
-    if re.search(r"\b(?:one of|either|any|each)\b", out, _F):
+
+    def after_choice(m: re.Match[str]) -> str:
+        # only after a choice said before it ("Give Noah the red book, either colour" stays)
+        chose = re.search(r"\b(?:one of|either|any|each|apiece)\b", m.string[: m.start()], _F)
+        return "" if chose else m.group(0)
+
+    for _ in range(2):
         out = _sub(
             r",\s*(?:(?:it's |that's )?not a (?:big deal|blocker|problem|biggie|big thing)|"
             r"(?:colours|colors|sizes) don't matter|any (?:colour|color|size|one) will do|"
-            r"whichever(?: one)?(?: is fine)?|just (?:the )?one|(?:i )?don't (?:mind|care) which)"
+            r"whichever(?: one)?(?: is fine)?|just (?:the )?one|(?:i )?don't (?:mind|care) which|"
+            r"either (?:colour|color|size|one|way)|(?:any|whatever) (?:colour|color|size))"
             r"(?=\s*(?:[,.!]|$))",
-            "",
+            after_choice,
             out,
         )
     return out
@@ -5667,6 +5687,12 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
                 f"{h.name} ({', '.join(h.aliases)})" if h.aliases else h.name for h in left
             )
             raise GroundingError(f"'the other one' could mean {who}: name the person")
+
+    def fronted(m: re.Match[str]) -> str:
+        return f"{m.group(1)} {m.group(2)}" if _objects_only(m.group(1), lexicon) else m.group(0)
+
+    # "and the chips, those go to P": the pronoun says the fronted objects again
+    out = _sub(r"\b(the [a-z ]+?),\s*(?:those|these|they|it|that) (go|goes|are|is)\b", fronted, out)
 
     def resumed(m: re.Match[str]) -> str:
         if not _only_person(m.group(1), lexicon):
@@ -5823,13 +5849,21 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         out,
     )
 
-    def per(m: re.Match[str]) -> str:
-        return f"{m.group(3)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
+    def each_for(m: re.Match[str]) -> str:
+        if not (m.group(3) or m.group(6)):
+            return m.group(0)  # "a mug for bob and one for carol": no 'each'
+        if not (_only_person(m.group(4), lexicon) and _only_person(m.group(5), lexicon)):
+            return m.group(0)
+        if _ids(m.group(4), lexicon) == _ids(m.group(5), lexicon):
+            return m.group(0)
+        return (
+            f"{m.group(4)} and {m.group(5)} each get {m.group(1).lower()} {m.group(2)}{m.group(7)}"
+        )
 
     out = _sub(
-        r"^(a|an|one) ([a-z]+) (?:each )?for ([A-Za-z][\w ]*? and [A-Za-z][\w ]*?)(?: each)?"
+        r"^(a|an|one) ([a-z]+) (each )?for ([A-Za-z][\w ]*?) and ([A-Za-z][\w ]*?)( each)?"
         r"(\s*[.!]?)$",
-        lambda m: per(m) if len(_ids(m.group(3), lexicon, "human")) == 2 else m.group(0),
+        each_for,
         out,
     )
 
