@@ -132,6 +132,7 @@ class RealtimeBench:
     wall_s: float
     cell_s: float  # cell seconds the episodes lasted
     stepped_s: float  # cell seconds they lasted in-process (the executor stepping time)
+    guarded: int = 0  # actions the guard halted while the loop was busy (RealtimeBusCell.guard)
 
 
 def _dispatch_counts(
@@ -527,7 +528,7 @@ def _realtime(
 ) -> RealtimeBench:
     """Run ``trials`` in real time, ``factor`` times faster: what the guarantees and the
     executor's reaction time are when the cell does not wait for it."""
-    goals = same = violations = dispatched = lost = dup = late = ticks = missed = 0
+    goals = same = violations = dispatched = lost = dup = late = ticks = missed = guarded = 0
     lags: list[float] = []
     wall = cell_s = stepped_s = 0.0
     for tr in trials:
@@ -552,6 +553,7 @@ def _realtime(
         lags += [(r.t - r.ended) / factor * 1000 for r in b.records if isinstance(r, ActionDone)]
         stats = opened[0].stats
         late, ticks, missed = late + stats.late_ticks, ticks + stats.ticks, missed + stats.missed
+        guarded += stats.guarded
         cell_s += end_b.t
         stepped_s += end_a.t
         say(f"real time {tr.config}#{tr.index}: {end_b.reason}")
@@ -563,7 +565,7 @@ def _realtime(
     )
     return RealtimeBench(
         factor, len(trials), goals, same, violations, dispatched, lost, dup, lag, late, ticks,
-        missed, wall, cell_s, stepped_s,
+        missed, wall, cell_s, stepped_s, guarded,
     )  # fmt: skip
 
 
@@ -747,6 +749,7 @@ def _format_realtime(r: RealtimeBench) -> list[str]:
         f"| episodes with every goal met / the in-process run's formulas done | "
         f"{r.goals_met}/{r.episodes} / {r.same_done}/{r.episodes} |",
         f"| episodes with a safety violation (a reaction too late) | {r.violations} |",
+        f"| actions halted by the guard while the executor's loop was busy | {r.guarded} |",
         f"| dispatches / lost / started twice | {r.dispatched} / {r.lost} / {r.duplicated} |",
         f"| action end on the node → the executor logs it (wall), median / p95 / max | "
         f"{r.lag_ms[0]:.1f} / {r.lag_ms[1]:.1f} / {r.lag_ms[2]:.1f} ms |",

@@ -122,6 +122,8 @@ class DriverStats:
     unawaited: int = 0
     late_ticks: int = 0  # real time: ticks the loop reached after their time (it was busy)
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
+    # real time: actions the guard halted while the loop was busy (see RealtimeBusCell.guard)
+    guarded: int = 0
     round_trips: list[float] = field(default_factory=list)
 
 

@@ -8,15 +8,19 @@ import math
 import time
 from typing import Any
 
-from hltl.bus.codec import Report, loads, world_from_wire
+from hltl.bus.codec import Command, Report, loads, world_from_wire
 from hltl.bus.driver import BusCell, bus_cell
 from hltl.errors import BusError
-from hltl.execution.drivers import ActionState, ActionStatus, Handle
+from hltl.execution.drivers import ActionState, ActionStatus, Handle, SafetyCheck
 from hltl.execution.log import LogRecord
 from hltl.sim.episode import CellFactory, EpisodeConfig
 
 # how an action ends on its own (not halted)
 _ENDED = frozenset({ActionState.DONE, ActionState.FAILED})
+
+# the guard checks the executor's running actions once the loop has not been back for this
+# many ticks (a loop that keeps up is back every tick, and checks them itself)
+GUARD_AFTER = 2.0
 
 
 def check_factor(factor: float) -> float:
@@ -55,6 +59,12 @@ class RealtimeBusCell(BusCell):
         self._t_node = 0.0  # the node's clock, as last heard
         self._heard = self._epoch = time.monotonic()
         self._gap_since: float | None = None
+        # the executor's safety check, run on the ticks heard while its loop is busy; when
+        # the loop was last back; the newest tick checked; the halts sent (handle: when)
+        self._check: SafetyCheck | None = None
+        self._loop_at = time.monotonic()
+        self._guard_n = 0
+        self._guard_halts: dict[int, float] = {}
         try:
             super().__init__(*args, **{**kwargs, "ahead": 0})
         except BusError:
@@ -94,6 +104,59 @@ class RealtimeBusCell(BusCell):
         if d.get("episode") == self.episode:
             with self._cond:
                 self._inbox.append(d)
+            if self._check is not None and not self._dead:
+                self._guard_tick(d)
+
+    # -- the guard -----------------------------------------------------------------------------
+
+    def guard(self, check: SafetyCheck) -> None:
+        """The executor's safety check (:class:`~hltl.execution.drivers.Guarded`): while its
+        loop is busy (planning, grounding: not back for :data:`GUARD_AFTER` ticks), each new
+        tick's world is checked here, on the thread that hears it, and an action it endangers
+        is halted at once, without waiting for the loop (at 10×, a 60 ms replan on a loaded
+        machine is 0.6 s of the cell's, in which a hand-over can end with a person in its
+        way). The loop hears of the halt from the action's report, as of any."""
+        self._check = check
+
+    def _guard_tick(self, d: dict[str, Any]) -> None:
+        """Run the executor's safety check on a tick heard while the loop is busy; halt what
+        it names (again after ``timing.timeout`` if no report says it ended: the halt may
+        have been lost)."""
+        check = self._check
+        now = time.monotonic()
+        if check is None or now - self._loop_at < GUARD_AFTER * self.period / self.factor:
+            return
+        try:
+            n = int(d.get("n", 0))
+            world = world_from_wire(d["observation"])
+        except (KeyError, TypeError, ValueError, BusError):
+            return
+        if n <= self._guard_n:  # (an older tick than one checked already: its world is stale)
+            return
+        self._guard_n = n
+        for handle, reason in check(world):
+            hid = handle.id
+            with self._cond:
+                ended = self._status_terminal(hid)
+            sent = self._guard_halts.get(hid)
+            if ended or (sent is not None and now - sent < self.timing.timeout):
+                continue
+            if sent is None:
+                self.stats.guarded += 1
+            self._guard_halts[hid] = now
+            # (numbered as the last command: a halt starts nothing, the node halts by handle)
+            cmd = Command(
+                self.episode,
+                self._seq,
+                "halt",
+                hid,
+                handle.action,
+                self.clock(),
+                f"{reason} (halted by the guard while the executor's loop was busy)",
+            )
+            payload = cmd.encode()
+            for r in handle.action.robots:
+                self.link.put(self.keys.action(r), payload)
 
     # -- the clock -----------------------------------------------------------------------------
 
@@ -115,6 +178,7 @@ class RealtimeBusCell(BusCell):
     def _follow(self, t: float) -> None:
         """Take in the ticks the node published since the last call (asking for what was
         missed, or for the clock after a silence) and fetch reports that are late."""
+        self._loop_at = time.monotonic()  # (the loop is back: the guard stands down)
         with self._cond:
             inbox, self._inbox = self._inbox, []
         for d in sorted(inbox, key=lambda d: int(d.get("n", 0))):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import enum
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol, Self, runtime_checkable
 
@@ -12,6 +12,7 @@ from hltl.skills.library import Action, Transition
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.monitor import MonitorState
 from hltl.world.scene import Vec3
+from hltl.world.state import WorldState
 
 
 class ActionState(enum.Enum):
@@ -107,6 +108,27 @@ class OwnClock(Protocol):
     def ended_first(self, handle: Handle) -> ActionStatus | None:
         """After :meth:`RobotDriver.halt`: how the action ended if it ended on its own before
         the halt reached it (done or failed), else ``None`` (halted, or not known yet)."""
+        ...
+
+
+# the executor's safety check for a guard (:class:`Guarded`): the running actions that must
+# halt in a world, each with the reason
+SafetyCheck = Callable[[WorldState], Sequence[tuple[Handle, str]]]
+
+
+@runtime_checkable
+class Guarded(Protocol):
+    """A driver whose robots run on their own clock and that can keep the executor's safety
+    check running while the executor's loop is busy (planning, grounding) (optional). The
+    executor gives it :data:`SafetyCheck` once, when it is made: a pure check of its running
+    actions' preconditions against a world, safe to call from another thread. The driver
+    calls it with each new world it hears while the loop has not been back for a while, and
+    halts at once what it names; the executor hears of such a halt as of any (the action's
+    report says halted, with the reason) and replans. Nothing else in the executor depends
+    on it."""
+
+    def guard(self, check: SafetyCheck) -> None:
+        """The executor's safety check, to run while its loop is busy."""
         ...
 
 

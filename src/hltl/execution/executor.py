@@ -19,6 +19,7 @@ from hltl.execution.drivers import (
     Briefing,
     Expected,
     Foresight,
+    Guarded,
     Handle,
     Lookahead,
     MotionSource,
@@ -357,6 +358,8 @@ class Executor(TickTemplate):
             self._set_spec(spec, None)
             self._trigger.add(Trigger.INITIAL)
             self._tell_basis()
+        if isinstance(driver, Guarded):  # (its robots run on while the loop plans)
+            driver.guard(self._guard_check)
 
     # -- public ----------------------------------------------------------------------------------
 
@@ -594,6 +597,23 @@ class Executor(TickTemplate):
         self._trigger.add(Trigger(f"halt:{first.kind}"))
         if all(r.status is not None for r in self._running):
             self._end_step()
+
+    def _guard_check(self, world: WorldState) -> list[tuple[Handle, str]]:
+        """The running actions whose precondition ``world`` breaks (or whose grasp target it
+        moved), for a driver's guard (:class:`~hltl.execution.drivers.Guarded`), called on
+        another thread while the loop is busy: the reactive part of :meth:`_check_safety`,
+        which reads nothing the loop changes but the running actions (the intrusion forecast
+        needs the forecaster, the loop's own)."""
+        out = []
+        for run in tuple(self._running):
+            if run.status is not None:
+                continue
+            h = precondition_hazard(run.action, self.scene, world, semantics=self.semantics)
+            if h is None and run.aimed_at is not None:
+                h = grasp_hazard(run.action, run.aimed_at, world)
+            if h is not None:
+                out.append((run.handle, h.reason))
+        return out
 
     def _halt_undone(self, text: str) -> None:
         """After an update, halt the fewest running actions whose completion would leave no plan.
