@@ -115,6 +115,8 @@ def test_a_speakers_own_words_are_read_through(text: str, want: str, scene: Scen
         ("tom wants the gloves, no gloves for him though", DEPOT),
         ("Roger that, tower, the crisps, over.", CELL),  # nothing asked
         ("Going once, going twice, sold!", CELL),
+        # 'all three of the pens' with no list after it (a crash of the first session-18 rewrite)
+        ("Put all three of the pens in the box, cheers", OFFICE),
     ],
 )
 def test_what_could_name_ask_or_change_stays_refused(text: str, scene: Scene) -> None:
