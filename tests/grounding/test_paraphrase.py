@@ -166,8 +166,6 @@ KNOWN_MISSES = frozenset(
         "Those three things that aren't the bottle, give them to Person A.",
         "Two of the pens for Priya, namely the red one and the blue one.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
-        "Ladies and gentlemen, thank you for your patience. Robot, at your earliest convenience, "
-        "the water bottle to Bob, please.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "

@@ -5281,6 +5281,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
             "(?:sorry,? )?long (?:night|day|shift)",
         ),
         *("this is your captain speaking", "attention(?:,? please| please)?", "watch this"),
+        "at your (?:earliest )?convenience",
         *("thank you for (?:flying with us|your patience)", "(?:ok )?chat,? watch this"),
         *("for tonight's star prize", "(?:i'm|i am) half asleep(?: anyway)?", "whenever"),
         *(
@@ -5794,7 +5795,7 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(\bthe two [a-z]+s),\s*the two of them,", r"\1", out)
 
     def all_of(m: re.Match[str]) -> str:
-        said = re.findall(r"[a-z]+", m.group(3).lower())
+        said = re.findall(r"[a-z]+", (m.group(3) or "").lower())
         adjectives = {w for words in _adjectives(lexicon).values() for w in words}
         adjectives |= set(_adjectives(lexicon))
         if said and not all(w in adjectives or w == "and" for w in said):
