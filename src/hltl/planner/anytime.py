@@ -700,6 +700,7 @@ def _profile_child(
                 deadline=deadline,
                 on_proven=send.send,
                 lp=True,
+                mip=True,
             )
     finally:
         send.close()
