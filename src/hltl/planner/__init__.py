@@ -302,8 +302,7 @@ class _Apart:
             if got.status is PlanStatus.SOLVED and got.makespan is not None:
                 makespan = to_ticks(got.makespan)
             if end.hopeless(makespan):
-                while not self.phase_over.wait(0.01):
-                    end.stop.stop()  # (again: the solve may begin after the first call)
+                lns.stop_until(end.stop, self.phase_over.wait)
 
         self.watcher = threading.Thread(target=take, daemon=True)
         self.watcher.start()

@@ -111,6 +111,14 @@ class Stop:
             solver.stop_search()
 
 
+def stop_until(stop: Stop, ended: Callable[[float], bool]) -> None:
+    """Stop ``stop``'s question, again and again until ``ended`` (called with how long it may
+    wait, in seconds) says it has ended: a solve may begin after a call."""
+    stop.stop()
+    while not ended(0.01):
+        stop.stop()
+
+
 # told how many questions this process asks CP-SAT at once (``share_busy``)
 _busy: Callable[[int], None] | None = None
 

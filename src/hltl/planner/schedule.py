@@ -11,7 +11,7 @@ from functools import reduce
 from itertools import pairwise
 from typing import Any
 
-from hltl.planner.lns import Stop, note_busy, solve_until
+from hltl.planner.lns import Stop, note_busy, solve_until, stop_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.hierarchy import HSpec
@@ -277,21 +277,26 @@ class _Whole:
         )
         self.asked[at] = (future, stop)
 
-    def take(self, at: int) -> tuple[tuple[tuple[Instance, ...], ...] | bool | None] | None:
-        """The answer at ``at`` (waited for) in a 1-tuple, or None when it was not asked."""
-        if at not in self.asked:
-            return None
+    def has(self, at: int) -> bool:
+        """Whether the level ``at`` was asked ahead (and its answer not yet taken)."""
+        return at in self.asked
+
+    def take(self, at: int) -> tuple[tuple[Instance, ...], ...] | bool | None:
+        """The answer at ``at``, asked ahead (``has``), waited for."""
         future, _ = self.asked.pop(at)
-        return (future.result(),)
+        return future.result()
 
     def close(self) -> None:
         """Stop the answers not taken."""
         for future, stop in self.asked.values():
-            while not future.done():
-                stop.stop()  # (again: a solve may begin after the first call)
-                wait([future], timeout=0.01)
+            stop_until(stop, _ended(future))
         if self.pool is not None:
             self.pool.shutdown(wait=True)
+
+
+def _ended(future: Future[Any]) -> Callable[[float], bool]:
+    """Whether ``future`` has ended, waiting at most the seconds given (``stop_until``)."""
+    return lambda seconds: bool(wait([future], timeout=seconds).done)
 
 
 def _shave(
@@ -346,9 +351,8 @@ def _shave(
         """One level's answer (a schedule, True: one exists, False, None: unknown) and the
         deterministic seconds CP-SAT took to find it."""
         if whole_first:
-            known = None if whole is None else whole.take(at)
-            if known is not None:
-                whole_steps = known[0]  # (asked ahead: ``_Whole``)
+            if whole is not None and whole.has(at):
+                whole_steps = whole.take(at)  # (asked ahead: ``_Whole``)
             else:
                 whole_steps = relaxed_steps(
                     problem, graph, node, tgts, at, deadline, seed=seed, whole=True, stop=stop
