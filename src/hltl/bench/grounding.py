@@ -74,7 +74,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # second engineer, never opened by the engineer who changed the grounder before its one
 # measurement at the end of session 17; tuned on in session 18), causes18 (session 18: fresh
 # variants of each kind of blind16's refusals, written BEFORE any session-18 change; measured
-# once, then tuned on).
+# once, then tuned on), blind17 (written in session 18 by another engineer and committed alone,
+# reviewed by a second engineer, never opened by the engineer who changed the grounder before its
+# one measurement at the end of session 18; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -107,6 +109,7 @@ PARTS = (
     "causes17",
     "blind16",
     "causes18",
+    "blind17",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
