@@ -149,6 +149,39 @@ KNOWN_MISSES = frozenset(
         "Clear everything into the locker, leave the spanners where they are",
         "No black pen for Priya, one of the other two will do",
         "Load Jess up with the spanners, just not the small one",
+        # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
+        # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
+        # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
+        # wait a moment … is going to'), 'the other one' after 'can keep', a remark then 'she'
+        # resumed, 'the N things that aren't X' as a subject, 'namely', 'leave the
+        # X where it is' after a correction, 'so hand it over' then another handover, gapping
+        # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
+        # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
+        "omg bestie pls give Sam the stapler, slay",
+        "Prithee, good robot, bear the globe unto Mrs Ortiz. Anon!",
+        "Play on! Drill to Kofi, advantage played.",
+        "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
+        "Person B can keep the bottle, and the chips are for the other one, cheers.",
+        "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
+        "Those three things that aren't the bottle, give them to Person A.",
+        "Two of the pens for Priya, namely the red one and the blue one.",
+        "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
+        "Ladies and gentlemen, thank you for your patience. Robot, at your earliest convenience, "
+        "the water bottle to Bob, please.",
+        "Quick one, just circling back: can we action getting the stapler over to Priya? "
+        "Appreciate it, thanks team.",
+        "If everyone could just wait a moment, our robot here is going to place the globe on the "
+        "desk. Lovely, thank you all.",
+        "Alice needs the bottle, and Bob, for my next trick, wants the crisps.",
+        "Person B asked for the apple, so hand it over, and the cup to Person A.",
+        "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
+        "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
+        "you can have a rest",
+        "All three of the pens, black, blue and red, into the box, that's the deliverable.",
+        "Person B gets the three things that aren't the apple.",
+        "Everything except the apple is going home with Person B tonight, folks!",
+        "Don't give Person A the cup, give it to Person B instead, good!",
+        "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -171,8 +204,9 @@ KNOWN_MISSES = frozenset(
 # its misses met in session 16: asserted now; "blind15" written in session 16 by another
 # engineer, measured once at the end of session 16, its wrong readings and most of its refusals
 # met in session 17: asserted now, the rest in KNOWN_MISSES; "blind16" written in session 17 by
-# another engineer, reviewed by a second one, measured once at the end of session 17)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind16"})
+# another engineer, reviewed by a second one, measured once at the end of session 17, its
+# refusals met by kind in session 18: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -226,6 +260,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes17"].entries}) >= 10
     assert len(CORPORA["blind16"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind16"].entries}) >= 3
+    assert len(CORPORA["causes18"].entries) >= 150
+    assert len({e.scene for e in CORPORA["causes18"].entries}) >= 10
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

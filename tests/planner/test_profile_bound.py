@@ -429,9 +429,11 @@ def _lp(scene: Scene, spec: HSpec, level: float) -> tuple[int | None, float]:
 @pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.integers(0, 10**6))
-def test_the_lp_bound_never_exceeds_the_optimum(seed: int) -> None:
+def test_the_lp_and_mip_bounds_never_exceed_the_optimum(seed: int) -> None:
     # asked at the optimum (as the anytime run asks it at a plan's makespan): every plan that
-    # long satisfies the integer model's rows, hence the LP's
+    # long satisfies the integer model's rows, hence the LP's; so HiGHS's dual bound on the
+    # model kept integral (the MIP), like its least makespan, is at most the optimum too, and
+    # the LP's bound is at most the MIP's
     inst = _random(seed)
     if inst is None or not profile.applicable(Problem(*inst)):
         return
@@ -440,6 +442,12 @@ def test_the_lp_bound_never_exceeds_the_optimum(seed: int) -> None:
         return
     got, _ = _lp(*inst, optimum)
     assert got is None or got <= to_ticks(optimum)
+    if got is None:
+        return  # (no target: nothing to ask)
+    linear = _linear(*inst, optimum)
+    deadline = time.perf_counter() + DEADLINE_S
+    mip = linear.solve(deadline, integral=True)
+    assert mip is not None and got <= mip[0] <= to_ticks(optimum)
 
 
 @pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
@@ -453,28 +461,73 @@ def test_the_lp_bound_reaches_the_optimum_where_the_heuristic_is_half_of_it(seed
     assert got == to_ticks(optimum) and 2 * h0 == got  # (e.g. 1.1 s -> 2.2 s)
 
 
+def _climb(problem: Problem, upper: float, told: list[int], **how: bool) -> profile.ProfileBound:
+    """The profile bound from the start heuristic up, a plan of ``upper`` s known (as the
+    bound's process beside the walk asks it), each bound proved appended to ``told``."""
+    s, node, graph, tgts = start_targets(problem)
+    return profile.profile_bound(
+        problem,
+        graph,
+        node,
+        tgts,
+        floor=round(s.heuristic(node)),
+        upper=to_ticks(upper),
+        deadline=time.perf_counter() + DEADLINE_S,
+        on_proven=told.append,
+        **how,
+    )
+
+
 @pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
 def test_the_climb_starts_from_the_lp_bound() -> None:
     # grid 5 seed 0: start bound 5.3 s, the LP at the optimum 5.4 s says 5.4 s, so the climb
     # has nothing left to ask; without the LP it asks CP-SAT
     c = delivery_cell("grid", 5, 0)
     problem = Problem(c.scene, c.spec)
-    s, node, graph, tgts = start_targets(problem)
-    h0 = round(s.heuristic(node))
-    told: list[int] = []
     asked = {}
     for lp in (True, False):
-        res = profile.profile_bound(
-            problem,
-            graph,
-            node,
-            tgts,
-            floor=h0,
-            upper=to_ticks(5.4),
-            deadline=time.perf_counter() + DEADLINE_S,
-            on_proven=told.append if lp else None,
-            lp=lp,
-        )
-        assert res.ticks == to_ticks(5.4)
+        told: list[int] = []
+        res = _climb(problem, 5.4, told, lp=lp)
+        assert res.ticks == to_ticks(5.4) and told == [to_ticks(5.4)]
         asked[lp] = res.questions
-    assert told == [to_ticks(5.4)] and asked == {True: 0, False: 1}
+    assert asked == {True: 0, False: 1}
+
+
+def _linear(scene: Scene, spec: HSpec, level: float) -> Any:
+    """The profile model at ``level`` s from the start, as rows for HiGHS (``profile._Linear``)."""
+    problem = Problem(scene, spec)
+    _, node, graph, tgts = start_targets(problem)
+    deadline = time.perf_counter() + DEADLINE_S
+    linear = profile._linear(problem, graph, node, tgts, to_ticks(level), deadline)
+    assert linear is not None
+    return linear
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_the_mip_bound_sees_what_the_lp_does_not() -> None:
+    # generator seed 299: optimum 2.8 s, start heuristic 1.4 s; the LP's fractional routes and
+    # counts give 2.1 s, the model kept integral is solved at 2.8 s (the optimum)
+    inst = _random(299)
+    assert inst is not None
+    linear = _linear(*inst, 2.8)
+    deadline = time.perf_counter() + DEADLINE_S
+    assert linear.solve(deadline, integral=False) == (to_ticks(2.1), False)
+    assert linear.solve(deadline, integral=True) == (to_ticks(2.8), True)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_the_climb_starts_from_the_mip_bound() -> None:
+    # seed 299 again, as the bound's process beside the walk asks it (a plan of 2.8 s known):
+    # LP 2.1 s, then the MIP's 2.8 s, which meets the plan: CP-SAT is asked nothing. With the
+    # LP alone the climb asks CP-SAT from 2.1 s up
+    inst = _random(299)
+    assert inst is not None
+    asked = {}
+    for mip in (True, False):
+        told: list[int] = []
+        res = _climb(Problem(*inst), 2.8, told, lp=True, mip=mip)
+        assert res.ticks == to_ticks(2.8)
+        assert told[0] == to_ticks(2.1) and told[-1] == to_ticks(2.8)
+        assert (told == [to_ticks(2.1), to_ticks(2.8)]) is mip
+        asked[mip] = res.questions
+    assert asked[True] == 0 and asked[False] > 0

@@ -72,7 +72,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # kind of blind15's misses, written BEFORE the changes for its refusals; measured once, then tuned
 # on), blind16 (written in session 17 by another engineer and committed alone, reviewed by a
 # second engineer, never opened by the engineer who changed the grounder before its one
-# measurement at the end of session 17; tests do not assert it).
+# measurement at the end of session 17; tuned on in session 18), causes18 (session 18: fresh
+# variants of each kind of blind16's refusals, written BEFORE any session-18 change; measured
+# once, then tuned on).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -104,6 +106,7 @@ PARTS = (
     "blind15",
     "causes17",
     "blind16",
+    "causes18",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

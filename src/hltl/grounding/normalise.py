@@ -39,17 +39,20 @@
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
+    TITLES,
     VERBS,
     WORDS,
     Item,
     Lexicon,
     common_words,
+    first_names,
     lex,
     person_name,
     title_sex,
@@ -2407,6 +2410,19 @@ def apostrophes(text: str) -> str:
     return _sub(
         rf"\b({'|'.join(_UNAPOSTROPHED)})\b", lambda m: _UNAPOSTROPHED[m.group(1).lower()], text
     )
+
+
+_ORDER_COLON = re.compile(
+    r"(^|(?<=[.!?;])\s*)(then|next|after that|afterwards|finally|last|lastly|first|second|third|"
+    r"first things first)\s*:\s*",
+    _F,
+)
+
+
+def order_colons(text: str) -> str:
+    """'First: X. Then: Y. Last: Z.': an order word before a colon orders (as 'Then, Y'), it is
+    no header of a list (read so from the start: 'Then: Y' was read as 'and Y')."""
+    return _ORDER_COLON.sub(r"\1\2, ", text) if ":" in text else text
 
 
 def _spoken(text: str, lexicon: Lexicon) -> str:
@@ -5093,7 +5109,932 @@ def _questions17(text: str, lexicon: Lexicon) -> str:
     return _sub(r"^(the [a-z ]+?) can (?:sit|go|live|stay) (on|onto|in|into) ", r"put \1 \2 ", out)
 
 
+# -- session 18: blind16's kinds, by mechanism: a speaker's own words around the request --------
+#
+# New speakers bring their own openers, closers, calls and tics ("Kia ora", "gg", "my bad",
+# "going once, going twice", "C-could", "the, the blue mug"). Rather than one frame per sentence,
+# three mechanisms: a stammer or a restart is read as the word said in full; an idiom of address,
+# sign-off, hurry or praise (a lexicon by kind, below) is said to no one about nothing; and a
+# stretch at either edge of the request made only of such words (or of short chat tokens that
+# are no English word, no first name and name nothing in the scene, not even by a typo) is
+# taken off. A stretch that could name a scene person or object, or holds a held word (a verb,
+# a number, a negation, 'or', 'then', a pronoun, a preposition), is never taken off.
+
+# "C-could", "g-give", "Th-thanks": the word said in full
+_STAMMER = re.compile(r"\b([a-z]{1,3})-(?=\1[a-z])", _F)
+# "the b-, the bottle", "the sc-, the scanner", "the h- the hammer": a word cut off and said again
+_RESTART = re.compile(
+    r"\b(?:(the|a|an|my|his|her|their) )?([a-z]{1,4})-\s*,?\s*(?=(?:(?:the|a|an|my|his|her|their) )"
+    r"?\2[a-z])",
+    _F,
+)
+# "the, the blue mug", "on the, on the high chair", "the, um, the the apple": a restart
+_FILLER = r"(?:\s*,?\s*\b(?:um+|uh+|er+|erm+|ah+)\b\s*,?\s*|\s*,\s*|\s+)"
+_REPEATED = re.compile(
+    rf"\b((?:(?:to|on|onto|in|into|for|at|of|with) )?(?:the|a|an|my|his|her|to|on|in|for)){_FILLER}"
+    r"\1\b",
+    _F,
+)
+
+
+def _stammers18(text: str, _lexicon: Lexicon) -> str:
+    """A stammered word ('C-could'), a word cut off and said again ('the b-, the bottle') and a
+    function word said twice ('the, the blue mug') read as said once. A word cut off and not said
+    again ('Give Jess the sp-') is left, and refused."""
+    out = _sub(r"\bmy bad\b", "my mistake", text)
+    if "-" not in out and not re.search(r"\b(\w+(?: \w+)?)\W+\1\b", out, _F):
+        return out
+    out = _STAMMER.sub("", out)
+    out = _RESTART.sub("", out)
+    for _ in range(3):
+        again = _REPEATED.sub(r"\1", out)
+        if again == out:
+            break
+        out = again
+    return out
+
+
+# Idioms said to no one about nothing, by kind; each is taken off wherever it stands as a stretch
+# of its own (between punctuation or at an edge), and only when it names nothing in the scene.
+_IDIOMS18: dict[str, tuple[str, ...]] = {
+    "address": (
+        "ladies and gentlemen",
+        "boys and girls",
+        "my friends?",
+        "my good (?:man|woman|sir)",
+        "big (?:man|guy|fella)",
+        "chat",
+        "y'all",
+        "you lot",
+        "you guys",
+        "everybody",
+        "people",
+        "lads",
+        "guys",
+        "team",
+        "bestie",
+        "bruv",
+        "matey?",
+        "shipmate",
+        "partner",
+        "tower",
+        "good robot",
+        "captain",
+        *("hon", "hun", "love", "dear", "mate", "pal", "sweetie", "darling", "folks", "everyone"),
+    ),
+    "greeting": (
+        *("and now", "roger(?: that)?", "copy(?: that)?(?:,? copy)?", "mmm+", "eh", "right then"),
+        "kia ora(?: mate)?",
+        "g'day(?: mate)?",
+        "howdy(?: partner)?",
+        "ahoy(?: there)?",
+        "ey up(?: love)?",
+        "namaste",
+        "hey there",
+        "good evening and welcome",
+        "yo",
+        "arr(?:,? matey)?",
+        "prithee(?:,? good robot)?",
+    ),
+    "sign-off": (
+        *("y'hear", "then we're (?:done|finished)", "let's hear it(?:,? everybody)?", "play on"),
+        "over and out",
+        "over",
+        "out",
+        "sweet as",
+        "no worries",
+        "no cap",
+        "fr",
+        "gg",
+        "ez",
+        "ez clap",
+        "gg ez",
+        "lol",
+        "lmao",
+        "tysm",
+        "ty",
+        "tbh",
+        "innit",
+        "safe",
+        "slay",
+        "respect",
+        "legend",
+        "much obliged",
+        "thank ya kindly",
+        "thanks in advance",
+        "best regards",
+        "kind regards",
+        "cheerio",
+        "anon",
+        "encore",
+        "bravo(?:,? bravo)?",
+        "checkmate",
+        "yo ho ho",
+        "and bob's your uncle",
+        "bob's your uncle",
+        "ta-da",
+        "appreciate it",
+        "all done",
+        "there we go",
+        "job done",
+        "great (?:show|energy|work|job)(?: (?:tonight|today|everyone|team))?",
+        "good (?:hustle|work|job|show)(?:,? (?:team|everyone|folks))?",
+        "(?:nice|good) work",
+        "totally stoked",
+        "stoked",
+        "gnarly",
+        "dude",
+        "zzz+",
+        "yawn",
+        "good grief",
+        "omg",
+        "argh+",
+        "ugh+",
+        "ooh",
+        "wow",
+    ),
+    "hurry": (
+        "let's (?:hustle|roll|go|move)",
+        "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
+        "move(?: it)?",
+        "chop chop",
+        "hop to it",
+        "on the double",
+        "pronto",
+        "rn",
+        "asap",
+        "listen up(?:,? (?:people|everyone|team))?",
+        "heads up(?:,? team)?",
+        "when (?:u|you) get a (?:chance|sec|minute|moment)",
+        "when (?:ur|you're) free",
+        "no hurry",
+        "no rush",
+        "crack on",
+        "right-o",
+        "righty ho",
+    ),
+    # the speaker's own aside about the request or the day, asking nothing
+    "aside": (
+        *("mark my words", "per my last email", "(?:just )?circling back", "quick one"),
+        *(
+            "(?:just )?a (?:gentle|quick|friendly) reminder",
+            "(?:sorry,? )?long (?:night|day|shift)",
+        ),
+        *("this is your captain speaking", "attention(?:,? please| please)?", "watch this"),
+        *("thank you for (?:flying with us|your patience)", "(?:ok )?chat,? watch this"),
+        *("for tonight's star prize", "(?:i'm|i am) half asleep(?: anyway)?", "whenever"),
+        *(
+            "whenever you're (?:fixin'?|fixing|ready)(?: to)?",
+            "crack on",
+            "let's (?:hustle|roll|go|move)(?: it)?",
+        ),
+    ),
+    "filler": ("well", "you know", "um+", "uh+", "er+", "erm+", "hmm+"),
+    "auction": ("going once", "going twice", "going once,? going twice", "sold"),
+}
+_IDIOM18 = re.compile(
+    r"^(?:"
+    + "|".join(sorted((i for kind in _IDIOMS18.values() for i in kind), key=len, reverse=True))
+    + r")$",
+    _F,
+)
+# said without punctuation at the very start or end: greetings, sign-offs and chat (not address,
+# which may be a subject, 'Everybody gets a cup', nor a call that may ask, 'move it')
+_WORD_IDIOM18 = re.compile(
+    r"^(?:"
+    + "|".join(
+        sorted(
+            (
+                i
+                for kind in ("greeting", "sign-off")
+                for i in _IDIOMS18[kind]
+                if i not in ("over", "out", "safe", "respect", "legend", "wow")
+            ),
+            key=len,
+            reverse=True,
+        )
+    )
+    + r"|when (?:u|you) get a (?:chance|sec|minute|moment)|when (?:ur|you're) free|asap|rn"
+    + r")$",
+    _F,
+)
+_HESITATION = re.compile(r"^(?:um+|uh+|er+|erm+|hmm+)$", _F)
+# a stretch of the text: between commas, sentence ends, colons, dashes and ellipses
+_STRETCH = re.compile(r"(\s*(?:[,;:!?—–]|\.{2,}|…|\.(?=\s|$)|\s-\s)\s*)")
+
+
+def _idiom_stretch(chunk: str, lexicon: Lexicon) -> bool:
+    plain = chunk.strip(" .!?,'\"").lower()
+    plain = re.sub(r"\s+", " ", plain)
+    bare = re.sub(r"^(?:and|so) ", "", plain)  # "…, and bob's your uncle", "…, so crack on"
+    return (
+        bool(plain)
+        and bool(_IDIOM18.match(plain) or _IDIOM18.match(bare))
+        and _names_nothing(chunk, lexicon)
+    )
+
+
+@functools.lru_cache(maxsize=64)
+def _scene_words(scene: Scene) -> frozenset[str]:
+    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee')."""
+    names = [o.id for o in scene.objects] + [h.id for h in scene.humans]
+    names += [s.id for s in scene.surfaces] + [h.name for h in scene.humans]
+    for x in (*scene.objects, *scene.humans, *scene.surfaces):
+        names += list(getattr(x, "aliases", ()))
+    return frozenset(w for n in names for w in re.split(r"[\s_]+", n.lower()) if w)
+
+
+def _near_verb(word: str) -> bool:
+    """Whether ``word`` is one edit from a verb the grammar reads ('hnad' for 'hand')."""
+    for verb in VERBS:
+        if abs(len(verb) - len(word)) > 1 or " " in verb:
+            continue
+        if len(verb) == len(word):
+            diff = [k for k in range(len(word)) if verb[k] != word[k]]
+            if len(diff) == 1 or (
+                len(diff) == 2
+                and diff[1] == diff[0] + 1
+                and verb[diff[0]] == word[diff[1]]
+                and verb[diff[1]] == word[diff[0]]
+            ):
+                return True
+        else:
+            short, long_ = sorted((verb, word), key=len)
+            if any(long_[:k] + long_[k + 1 :] == short for k in range(len(long_))):
+                return True
+    return False
+
+
+def _word_idiom(words: str, lexicon: Lexicon) -> bool:
+    plain = re.sub(r"\s+", " ", words.strip(" .!?,'\"").lower())
+    return bool(plain) and bool(_WORD_IDIOM18.match(plain)) and _names_nothing(words, lexicon)
+
+
+def _chat_token(word: str, lexicon: Lexicon) -> bool:
+    """A short token that is no English word and no first name ('gg', 'rn', 'tysm'): chat, not a
+    thing asked for (an object the scene lacks has a name a dictionary holds)."""
+    low = word.lower()
+    return (
+        low.isalpha()
+        and 2 <= len(low) <= 4
+        and low not in _COMMON
+        and low not in _scene_words(lexicon.scene)
+        and low not in TITLES
+        and not _near_verb(low)
+        and low not in first_names()
+        and not _held_word(low, lexicon)
+        and _names_nothing(word, lexicon)
+    )
+
+
+def _word_edges18(text: str, lexicon: Lexicon) -> str:
+    """Chat tokens and idioms said without punctuation at the very start or end ('lmao ok give
+    person b the bottle lol tysm', '… to person a rn', '… when ur free') taken off."""
+    words = text.split()
+    if len(words) < 3:
+        return text
+    start, stop = 0, len(words)
+    for _ in range(4):
+        moved = False
+        for n in (5, 4, 3, 2, 1):
+            if stop - start - n < 2:
+                continue
+            tail = " ".join(words[stop - n : stop])
+            bare = tail.strip(" .!?,").lower()
+            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(tail, lexicon):
+                stop -= n
+                moved = True
+                break
+        for n in (5, 4, 3, 2, 1):
+            if stop - start - n < 2:
+                continue
+            head = " ".join(words[start : start + n])
+            bare = head.strip(" .!?,").lower()
+            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(head, lexicon):
+                start += n
+                moved = True
+                break
+        if not moved:
+            break
+    if (start, stop) == (0, len(words)):
+        return text
+    while stop - start > 2 and words[stop - 1].lower() in ("and", "so"):
+        stop -= 1  # "… to bob and then we're finished": the 'and' of what was taken off
+    end = words[-1][-1] if words[-1][-1] in ".!?" else ""
+    return " ".join(words[start:stop]).rstrip(",;:") + end
+
+
+def _edges18(text: str, lexicon: Lexicon) -> str:
+    """Stretches at either edge of the request (and whole sentences) that are idioms of address,
+    greeting, sign-off, hurry or an auctioneer's calls, or chat tokens only, taken off when
+    something is left."""
+    text = _word_edges18(text, lexicon)
+    parts = _STRETCH.split(text.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    if len(chunks) < 2:
+        return text
+
+    def inert(chunk: str) -> bool:
+        if not chunk.strip():
+            return True
+        if re.search(r"\d", chunk):
+            return False  # 'r2, …': a robot, a number
+        if _idiom_stretch(chunk, lexicon):
+            return True
+        words = re.findall(r"[a-z']+", chunk.lower())
+        return bool(words) and all(_chat_token(w, lexicon) for w in words)
+
+    drop = [inert(c) for c in chunks]
+    if all(drop) or not any(d and c.strip() for d, c in zip(drop, chunks, strict=True)):
+        return text
+    # only the edges: the stretches before the first and after the last one kept, and any
+    # stretch that is a whole sentence of its own
+    first = drop.index(False)
+    last = len(drop) - 1 - drop[::-1].index(False)
+    keep_idx = []
+    for k, c in enumerate(chunks):
+        if not drop[k] or not c.strip():
+            if c.strip():
+                keep_idx.append(k)
+            continue
+        before = seps[k - 1] if k else "."
+        after = seps[k] if k < len(seps) else "."
+        whole = before.strip()[-1:] in ".!?…" and after.strip()[:1] in (".", "!", "?", "…", "")
+        if first < k < last and not whole and not _idiom_stretch(c, lexicon):
+            keep_idx.append(k)
+    if len(keep_idx) == len([c for c in chunks if c.strip()]):
+        return text
+    out = chunks[keep_idx[0]]
+    for prev, k in itertools.pairwise(keep_idx):
+        between = seps[prev:k]
+        stop = next((x.strip() for x in between if x.strip()[:1] in ".!?…"), "")
+        dropped = [c for c in chunks[prev + 1 : k] if c.strip()]
+        if (
+            not stop
+            and dropped
+            and all(_HESITATION.match(c.strip()) for c in dropped)
+            and not re.match(r"\s*(?:no|sorry|wait|actually|i mean|hang on)\b", chunks[k], _F)
+            and re.search(r"\b(?:the|a|an|to|on|in|into|onto|my|his|her|their)\s*$", out, _F)
+        ):
+            out += " "  # "give the, uh, banana": the words round a hesitation are one phrase
+        else:
+            out += f"{stop[:1]} " if stop else (between[-1] if between[-1].strip() else ", ")
+        out += chunks[k]
+    tail = seps[keep_idx[-1]].strip() if keep_idx[-1] < len(seps) else ""
+    return out.strip(" ,;:—–-") + (tail[:1] if tail[:1] in (".", "!", "?") else "")
+
+
+_P = r"([A-Za-z][\w ]*?)"  # a person's name (checked by the rewrite)
+_X = r"([A-Za-z][\w ,'-]*?)"  # what is asked for (checked by the rewrite)
+# what a thing is wanted for: an occasion, which names no one and nothing in the scene
+_OCCASION = (
+    r"(?:meeting|stand-up|standup|one-to-one|round|rounds|job|jobs|inspection|tour|trip|film|"
+    r"movie|show|party|class|lesson|lecture|presentation|demo|shift|service|match|game|test|exam|"
+    r"session|call|interview|break|picnic|journey|drive|ride|weekend|trick|rehearsal|practice|"
+    r"training|workout|walk|nap|bath|bedtime|story|project|review|audit|visit|week|day|night|"
+    r"part)"
+)
+_DEADLINE = (
+    r"(?:end of (?:the )?day|eod|close of play|lunch|lunchtime|noon|midday|tonight|this "
+    r"(?:evening|afternoon)|the end of the (?:day|shift))"
+)
+
+
+def _frames18(text: str, lexicon: Lexicon) -> str:
+    """blind16's frames of courtesy, wants, purposes and choices, each a general rewrite whose
+    people and objects are checked against the scene:
+
+    - asked of a person: 'Would P be so kind as to accept X (from you)?', 'Would P be able to
+      have X?', 'Is P able to get X, do you reckon?' (can P have X), 'What P really needs right
+      now is X' (P needs X), 'Might P be furnished with X?', 'might X be conveyed to P';
+    - conditions of courtesy: 'If it would not be too much trouble,', 'If it's no bother,', 'if
+      my lovely assistant would kindly …';
+    - wants: 'is keen on', 'would care for', 'has expressed a wish for / an interest in',
+      'requires', 'is going home with', 'takes home', 'should be furnished with';
+    - purposes and deadlines that name nothing in the scene: 'for the stand-up', 'for the next
+      part of the tour', 'by end of day', '… so he can clean up';
+    - choices: 'apiece' (each), 'dont' (don't), 'not a big deal / blocker', 'colours don't
+      matter', 'any colour will do' after a choice."""
+    low = text.lower()
+    out = text
+
+    def asked(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        if not _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        return f"give {m.group(1)} {m.group(2)}"
+
+    out = _sub(
+        rf"^(?:would|could|will) {_P} be (?:so kind|so good|good enough|kind enough) as to "
+        rf"(?:accept|take|receive|have) {_X}(?: from you)?\s*\?$",
+        asked,
+        out,
+    )
+    out = _sub(
+        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive) {_X}"
+        r"(?:,? do you (?:think|reckon))?\s*\?$",
+        asked,
+        out,
+    )
+    out = _sub(
+        rf"^might {_P} be (?:brought|given|handed|passed|furnished with|provided with) {_X}\s*\?$",
+        asked,
+        out,
+    )
+
+    def conveyed(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon) or _ids(m.group(1), lexicon, "human"):
+            return m.group(0)
+        return f"take {m.group(1)} to {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        rf"\b(?:might|could|may|can) {_X} be (?:conveyed|taken|brought|carried|delivered) to "
+        rf"{_P}(\s*[.!?]|$)",
+        conveyed,
+        out,
+    )
+
+    def what_needs(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        if _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        return f"{m.group(1)} needs {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        rf"^what {_P} (?:really |actually |most )?(?:needs|wants|could (?:really )?use|could do "
+        rf"with|would like)(?: right now| now| most)? is {_X}(\s*[,.!]|$)",
+        what_needs,
+        out,
+    )
+    if low.startswith("if "):
+        out = _sub(
+            r"^if (?:it(?:'s| is| would(?: not|n't) be| isn't| wouldn't be) (?:not )?(?:no|too "
+            r"much|any) (?:bother|trouble)|it (?:isn't|is not) too much (?:bother|trouble))\s*,\s*",
+            "",
+            out,
+        )
+        out = _sub(
+            r"^if my (?:[a-z]+ )?(?:assistant|helper|friend|robot) would (?:kindly |please )?",
+            "",
+            out,
+        )
+    for frame, repl in (
+        (r"(?:\s+is|'s) keen on\b", " wants"),
+        (r"\bwould care for\b", "would like"),
+        (r"\bhas expressed (?:a wish|an interest|a desire) (?:for|in)\b", "wants"),
+        (r"\brequires\b", "needs"),
+        (r"\bwill want\b", "wants"),
+        (r"\b(?:has |have )?been (?:wanting|asking for|after)\b", "wants"),
+        (r"\b(?:should|must|is to) be (?:furnished|provided|supplied) with\b", "gets"),
+        (r"\bapiece\b", "each"),
+        (r"\bdont\b", "don't"),
+    ):
+        out = _sub(frame, repl, out)
+
+    def home(m: re.Match[str]) -> str:
+        # "Zoe is going home with the book" (she gets it); "Everything … is going home with P"
+        said = _names(m.group(1), lexicon)
+        if said and all(r.kind == "human" for r in said[-1].refs):
+            return f"{m.group(1)} gets"
+        return f"{m.group(1)} goes to"
+
+    out = _sub(r"([\w']+)(?:\s+is|'s) going home with\b", home, out)
+    out = _sub(r"([\w']+) takes home\b", home, out)
+
+    def inert(m: re.Match[str]) -> str:
+        return "" if _names_nothing(m.group(0), lexicon) else m.group(0)
+
+    end = r"(?=\s*(?:[,.;!?]|\band\b|$))"
+    out = _sub(
+        rf",?\s+for (?:the|my|our|his|her|their|a|an|this|tonight's|today's) (?:next )?"
+        rf"(?:[a-z-]+ )?{_OCCASION}(?: of the [a-z]+)?(?:\s*,(?=\s*(?:wants|needs|gets)\b))?{end}",
+        inert,
+        out,
+    )
+    out = _sub(rf"\s+by {_DEADLINE}{end}", inert, out)
+    out = _sub(
+        r",?\s+so (?:that )?(?:he|she|they|we|i) can [a-z]+(?: up| on| off| down)?"
+        r"(?=\s*(?:[.!]|$))",
+        inert,
+        out,
+    )
+
+    def after_choice(m: re.Match[str]) -> str:
+        # only after a choice said before it ("Give Noah the red book, either colour" stays)
+        chose = re.search(r"\b(?:one of|either|any|each|apiece)\b", m.string[: m.start()], _F)
+        return "" if chose else m.group(0)
+
+    for _ in range(2):
+        out = _sub(
+            r",\s*(?:(?:it's |that's )?not a (?:big deal|blocker|problem|biggie|big thing)|"
+            r"(?:colours|colors|sizes) don't matter|any (?:colour|color|size|one) will do|"
+            r"whichever(?: one)?(?: is fine)?|just (?:the )?one|(?:i )?don't (?:mind|care) which|"
+            r"either (?:colour|color|size|one|way)|(?:any|whatever) (?:colour|color|size))"
+            r"(?=\s*(?:[,.!]|$))",
+            after_choice,
+            out,
+        )
+    return out
+
+
+_NUMBER18 = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+
+def _objects_only(words: str, lexicon: Lexicon) -> bool:
+    named = _names(words, lexicon)
+    return bool(named) and all(r.kind == "object" for it in named for r in it.refs)
+
+
+def _surface_only(words: str, lexicon: Lexicon) -> bool:
+    return _only(words, lexicon, "surface")
+
+
+def _pronouns18(text: str, lexicon: Lexicon) -> str:
+    """Pronouns and ellipsis said of one person: 'P wants X. Give it to them.' ('them' for the one
+    person the text names, who asked), '…, sort that out (for them)' after a want, 'Then the Y,
+    same person.', 'P the X, and the Y … the other one' (the other of two people), 'and P, she
+    needs Y' (the pronoun says P again), 'Find X and put it …'."""
+    out = text
+    people = _ids(out, lexicon, "human")
+    asked = re.match(
+        r"^(.+?) (?:wants|needs|has wanted|asked for|is after|has been asking for|would like|"
+        r"is due)\b",
+        out,
+        _F,
+    )
+    if len(people) == 1 and asked and _only_person(asked.group(1), lexicon):
+        who = asked.group(1)
+        out = _sub(r"\b(to|for) them\b(?!\s+(?:both|all|each))", rf"\1 {who}", out)
+        out = _sub(
+            r",\s*(?:so\s+)?sort (?:it|that|this)(?: out)?(?: for [A-Za-z ]+?)?(?:,? please| pls)?"
+            r"\s*([.!]?)$",
+            r"\1",
+            out,
+        )
+    out = _sub(r",\s*same (?:person|one|guy|lady)\s*([.!]?)$", r" to the same person\1", out)
+    other = re.search(r"\b(to|for) the other (?:one|person)\b", out, _F)
+    if other and people:
+        # "… and the chips are for the other one": the one person not named
+        left = [h for h in lexicon.scene.humans if h.id not in people]
+        if len(left) == 1:
+            out = _sub(
+                r"\b(to|for) the other (?:one|person)\b", rf"\1 {_name(left[0].id, lexicon)}", out
+            )
+        elif len(left) > 1:
+            who = " or ".join(
+                f"{h.name} ({', '.join(h.aliases)})" if h.aliases else h.name for h in left
+            )
+            raise GroundingError(f"'the other one' could mean {who}: name the person")
+
+    def fronted(m: re.Match[str]) -> str:
+        return f"{m.group(1)} {m.group(2)}" if _objects_only(m.group(1), lexicon) else m.group(0)
+
+    # "and the chips, those go to P": the pronoun says the fronted objects again
+    out = _sub(r"\b(the [a-z ]+?),\s*(?:those|these|they|it|that) (go|goes|are|is)\b", fronted, out)
+
+    def resumed(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} {m.group(2)}"
+
+    out = _sub(r"\b([A-Z][\w ]*?),\s*(?:she|he|they) (needs|wants|gets|would like)\b", resumed, out)
+
+    def found(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(1), lexicon):
+            return m.group(0)
+        return f"{m.group(2)} {m.group(1)}"
+
+    return _sub(
+        r"^(?:find|grab|fetch|get) (the [a-z ]+?) and (put|place|give|hand|take|bring) "
+        r"(?:it|them)\b",
+        found,
+        out,
+    )
+
+
+def _run_ons18(text: str, lexicon: Lexicon) -> str:
+    """Run-ons and dictation: 'Last:' (finally), 'Thereafter,' (then), 'X is to go on S' (goes on),
+    'S first, the X.' (the X on S), 'X. P. Done.' (X to P), 'P is waiting on X and Q on Y' (Q
+    wants Y), 'Those are the action items.' (a sentence that only names the list), 'Give each of
+    them one thing: P the X, Q the Y' and 'Give both people a snack: X for P and Y for Q' (the
+    list is the request)."""
+    out = _sub(r"(^|[.!]\s*)(?:last|lastly)\s*[:,]\s*", r"\1Finally, ", text)
+    out = _sub(r"\s+and then we're (?:done|finished|good)\s*([.!]?)$", r"\1", out)
+    # "Books. Red one to Zoe.": a heading said as a sentence of its own
+    out = _sub(r"^([a-z]+s)\.\s+(?=[a-z]+ ones? (?:to|for|on|in)\b)", r"\1: ", out)
+    out = _sub(r"(^|[.!]\s*)thereafter\s*,\s*", r"\1Then, ", out)
+    out = _sub(r"\b(?:is|are) to go (on|onto|in|into|to)\b", r"goes \1", out)
+    out = _sub(
+        r"(?:^|(?<=[.!]))\s*(?:those|these) are (?:the|today's|my|your|our) (?:action items|jobs|"
+        r"tasks|orders|instructions)\s*[.!]?\s*$",
+        "",
+        out,
+    ).strip()
+
+    def first(m: re.Match[str]) -> str:
+        if not _surface_only(m.group(2), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}Put {m.group(3)} on the {m.group(2)}{m.group(4)}"
+
+    out = _sub(r"(^|[.!]\s+)(?:the )?([a-z ]+?) first,\s*(the [a-z ]+?)([.!])", first, out)
+
+    def dictated(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(2), lexicon) or not _only_person(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)} to {m.group(3)}."
+
+    out = _sub(
+        r"((?:^|(?<=[.!?])\s+)(?:then,? )?)(the [a-z ]+?)\.\s+([A-Za-z][\w ]*?)\."
+        r"(?:\s+(?:done|sold|next)\.)?",
+        dictated,
+        out,
+    )
+    out = _sub(r"\b(?:is|'s|are) waiting (?:on|for)\b", " wants", out).replace("  ", " ")
+
+    def gapped(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        return f"{m.group(1)} and {m.group(2)} wants {m.group(3)}"
+
+    out = _sub(
+        r"(\bwants [^,.;]*?) and ([A-Za-z][\w ]*?) on (the [a-z ]+?)\b(?=\s*(?:[,.;!]|so\b|$))",
+        gapped,
+        out,
+    )
+
+    def listed(m: re.Match[str]) -> str:
+        if len(_ids(m.group(1), lexicon, "human")) < 2:
+            return m.group(0)
+        return f"give {m.group(1)}" if m.group(1)[:1].isupper() else m.group(1)
+
+    return _sub(
+        r"^give (?:each of them|both of them|both people|them both|everyone|each person) "
+        r"(?:a|an|one) [a-z]+(?: each)?\s*:\s*(.+)$",
+        listed,
+        out,
+    )
+
+
+def _counts18(text: str, lexicon: Lexicon) -> str:
+    """Counts: 'a (fine) pair of Xs' / 'that pair of Xs' (the two Xs), ', the two of them,' said
+    again, 'All three of the Xs, a, b and c,' (the three Xs), "S's for the two Xs, a and b" (the
+    two Xs on S), "There's only a single X, and it's for P" (the X to P), 'N of the Xs: the A one
+    and the B one' (the A X and the B X, when N are named), 'One X per <role>' / 'An X for each
+    of the two <role>s' / 'An X each for P and Q' (each gets one)."""
+
+    def pair(m: re.Match[str]) -> str:
+        if len(_ids(m.group(1), lexicon, "object")) != 2:
+            return m.group(0)
+        return f"the two {m.group(1)}"
+
+    out = _sub(r"\b(?:a|an|that|this) (?:[a-z]+ )?pair of ([a-z]+s)\b", pair, text)
+    out = _sub(r"\b(?:that|this) trio of ([a-z]+s)\b", r"the three \1", out)
+    out = _sub(r"(\bthe two [a-z]+s),\s*the two of them,", r"\1", out)
+
+    def all_of(m: re.Match[str]) -> str:
+        said = re.findall(r"[a-z]+", m.group(3).lower())
+        adjectives = {w for words in _adjectives(lexicon).values() for w in words}
+        adjectives |= set(_adjectives(lexicon))
+        if said and not all(w in adjectives or w == "and" for w in said):
+            return m.group(0)
+        return f"the {m.group(1)} {m.group(2)}"
+
+    out = _sub(
+        r"\ball (two|three|four|five|six) of the ([a-z]+s)((?:,\s*[a-z]+)+,? and [a-z]+)?(?=,)",
+        all_of,
+        out,
+    )
+
+    def for_s(m: re.Match[str]) -> str:
+        if not _surface_only(m.group(1), lexicon):
+            return m.group(0)
+        return f"Put the {m.group(2)} {m.group(3)} on the {m.group(1)}{m.group(4)}"
+
+    out = _sub(
+        r"^the ([a-z ]+?)'s for the (two|three|four) ([a-z]+s)(?:,\s*[a-z]+,? and [a-z]+)?"
+        r"(\s*[.!]?)$",
+        for_s,
+        out,
+    )
+
+    def single(m: re.Match[str]) -> str:
+        ids = _ids(m.group(1), lexicon, "object")
+        kind = _names(m.group(1), lexicon)
+        if len(ids) != 1 or not kind or not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"the {m.group(1)} to {m.group(2)}{m.group(3)}"
+
+    out = _sub(
+        r"^there's (?:only |just )?(?:a single|the one|one|just the one) ([a-z ]+?),\s*and it"
+        r"(?:'s| is| goes) (?:for|to) ([A-Za-z][\w ]*?)(\s*[.!]?)$",
+        single,
+        out,
+    )
+
+    def named_n(m: re.Match[str]) -> str:
+        n = _NUMBER18[m.group(1).lower()]
+        kind = _singular(m.group(2).lower())
+        listed = _sub(r"\b([a-z]+) ones?\b", rf"\1 {kind}", m.group(3))
+        objs = _ids(listed, lexicon, "object")
+        if len(objs) != n or _ids(listed, lexicon, "human"):
+            return m.group(0)
+        return listed
+
+    out = _sub(
+        r"\b(two|three|four) of the ([a-z]+s)\s*(?::|,\s*namely)\s*((?:the [a-z ]+?)(?:,\s*| and "
+        r")(?:the [a-z ]+?))(?=\s*[.!]?$)",
+        named_n,
+        out,
+    )
+
+    def each_for(m: re.Match[str]) -> str:
+        if not (m.group(3) or m.group(6)):
+            return m.group(0)  # "a mug for bob and one for carol": no 'each'
+        if not (_only_person(m.group(4), lexicon) and _only_person(m.group(5), lexicon)):
+            return m.group(0)
+        if _ids(m.group(4), lexicon) == _ids(m.group(5), lexicon):
+            return m.group(0)
+        return (
+            f"{m.group(4)} and {m.group(5)} each get {m.group(1).lower()} {m.group(2)}{m.group(7)}"
+        )
+
+    out = _sub(
+        r"^(a|an|one) ([a-z]+) (each )?for ([A-Za-z][\w ]*?) and ([A-Za-z][\w ]*?)( each)?"
+        r"(\s*[.!]?)$",
+        each_for,
+        out,
+    )
+
+    def role_each(m: re.Match[str]) -> str:
+        role = m.group(3)
+        ids = _ids(role, lexicon, "human")
+        if len(ids) < 2:
+            return m.group(0)
+        names = [_name(pid, lexicon) for pid in sorted(ids)]
+        return f"{' and '.join(names)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
+
+    return _sub(
+        r"^(a|an|one) ([a-z]+) (?:per |for each of the (?:two|three) |for each )([a-z]+?)s?"
+        r"(?:,? please)?(\s*[.!]?)$",
+        role_each,
+        out,
+    )
+
+
+def _negation18(text: str, lexicon: Lexicon) -> str:
+    """Negation: 'bar the X' (except), 'Give P the Y. Not the X, just the Y.' (the Y said again),
+    'P wants Y, no X for him' (X not asked), "Don't give P the X, give it to Q instead" (the X to
+    Q), 'the X that isn't on S' (the Xs not on S: one is that one; several are the X, whose
+    refusal names them)."""
+    out = _sub(r"\bbar the\b", "except the", text)
+
+    def not_just(m: re.Match[str]) -> str:
+        before = out[: m.start()]
+        if not _ids(m.group(2), lexicon) <= _ids(before, lexicon) or _ids(
+            m.group(1), lexicon
+        ) & _ids(before, lexicon):
+            return m.group(0)
+        return ""
+
+    out = _sub(r"(?<=[.!])\s*not the ([a-z ]+?),\s*just the ([a-z ]+?)\s*[.!]?$", not_just, out)
+
+    def none_for(m: re.Match[str]) -> str:
+        rest = out[: m.start()]
+        ids = _ids(m.group(1), lexicon, "object")
+        if not ids or ids & _ids(rest, lexicon) or len(_ids(rest, lexicon, "human")) != 1:
+            return m.group(0)
+        return ""
+
+    out = _sub(
+        r",\s*(?:but )?no ([a-z ]+?) for (?:him|her|them)(?: (?:tho|though))?(?=\s*[.!]?$)",
+        none_for,
+        out,
+    )
+
+    def instead(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _only_person(m.group(3), lexicon):
+            return m.group(0)
+        if not _objects_only(m.group(2), lexicon) or _ids(m.group(1), lexicon) == _ids(
+            m.group(3), lexicon
+        ):
+            return m.group(0)
+        return f"give {m.group(2)} to {m.group(3)}{m.group(4)}"
+
+    out = _sub(
+        r"^don't give ([A-Za-z][\w ]*?) (the [a-z ]+?),\s*give (?:it|them) to ([A-Za-z][\w ]*?)"
+        r" instead(\s*[.!]?)$",
+        instead,
+        out,
+    )
+
+    def not_on(m: re.Match[str]) -> str:
+        ids = _ids(m.group(1), lexicon, "object")
+        where = _ids(m.group(2), lexicon, "surface")
+        if len(ids) < 2 or len(where) != 1 or _ids(m.group(2), lexicon, "object"):
+            return m.group(0)
+        off = ids - set(starting_on(ids, next(iter(where)), lexicon))
+        if len(off) == 1:
+            return _said(next(iter(off)), lexicon)
+        if off == ids:
+            return m.group(1)  # every one of them: the refusal names the readings
+        if off:
+            raise GroundingError(
+                f"{m.group(0)!r} could mean {' or '.join(sorted(off))}: name the one meant"
+            )
+        return m.group(0)
+
+    return _sub(
+        r"\b(the [a-z ]+?) that (?:isn't|is not|'s not) (?:on|in) (the [a-z ]+?)\b"
+        r"(?=\s*(?:[.,!]|to\b|$))",
+        not_on,
+        out,
+    )
+
+
+def _corrections18(text: str, lexicon: Lexicon) -> str:
+    """Corrections: 'P, no, Q needs X' (Q), 'X to P. Correction: to Q.' (no, to Q), 'X to P,
+    sorry, Y to P' (the Y), 'Give P X. Wait, not P, Q.' (no, to Q), 'No, make that Q, the <who>'
+    (no, to Q), '…, I mean the Y one, my mistake' (said of the correction), 'No, hang on, the Y to
+    P, leave the X where it is' (no, the Y to P)."""
+    out = text
+
+    def person_no(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(2)} {m.group(3)}"
+
+    out = _sub(
+        r"^([A-Za-z][\w ]*?),\s*no,\s*([A-Za-z][\w ]*?) (needs|wants|gets)\b", person_no, out
+    )
+
+    def to_q(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        if m.group(1) and (_ids(m.group(1), lexicon) - _ids(out[: m.start()], lexicon)):
+            return m.group(0)  # 'not P' names one the request did not
+        return f". No, to {m.group(2)}{m.group(3) or '.'}"
+
+    out = _sub(
+        r"\.\s*(?:correction\s*:\s*to|wait,\s*not ([A-Za-z][\w ]*?),|no,\s*make that)\s*"
+        r"([A-Za-z][\w ]*?)(?:,\s*the [a-z ]+?)?(\s*[.!])?$",
+        to_q,
+        out,
+    )
+
+    def swapped(m: re.Match[str]) -> str:
+        if not _objects_only(m.group(1), lexicon) or not _objects_only(m.group(3), lexicon):
+            return m.group(0)
+        if not _only_person(m.group(2), lexicon) or _ids(m.group(2), lexicon) != _ids(
+            m.group(4), lexicon
+        ):
+            return m.group(0)
+        return f"{m.group(3)} to {m.group(4)}{m.group(5)}"
+
+    out = _sub(
+        r"^([a-z ]+?) to ([A-Za-z][\w ]*?),\s*sorry,\s*([a-z ]+?) to ([A-Za-z][\w ]*?)(\s*[.!]?)$",
+        swapped,
+        out,
+    )
+    out = _sub(r"(\bi mean the [a-z ]+?),\s*my (?:mistake|bad)\s*([.!]?)$", r"\1\2", out)
+
+    def hang_on(m: re.Match[str]) -> str:
+        before = _ids(out[: m.start()], lexicon, "object")
+        left = _ids(m.group(3), lexicon, "object")
+        if not left or not left <= before or _ids(m.group(1), lexicon, "object") & left:
+            return m.group(0)
+        return f". No, {m.group(1)} to {m.group(2)}."
+
+    return _sub(
+        r"\.\s*no,\s*(?:hang on|hold on|wait),\s*(the [a-z ]+?) to ([A-Za-z][\w ]*?),\s*leave "
+        r"(the [a-z ]+?) (?:where it is|alone|be)\s*[.!]?$",
+        hang_on,
+        out,
+    )
+
+
+def _sold18(text: str, lexicon: Lexicon) -> str:
+    """An auctioneer's 'Sold to P, one X!' (the X to P)."""
+
+    def sold(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _objects_only(m.group(2), lexicon):
+            return m.group(0)
+        return f"the {m.group(2)} to {m.group(1)}{m.group(3)}"
+
+    return _sub(r"^sold to ([A-Za-z][\w ]*?),\s*(?:one|a|an|the) ([a-z ]+?)(\s*[.!]?)$", sold, text)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
+    _stammers18,
+    _edges18,
+    _frames18,
+    _pronouns18,
+    _run_ons18,
+    _counts18,
+    _negation18,
+    _corrections18,
+    _sold18,
     _courtesy17,
     _wants17,
     _see_it17,

@@ -24,6 +24,7 @@ from hltl.grounding.normalise import (
     canonical,
     hearer_named,
     one_person,
+    order_colons,
     people_named,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
@@ -98,7 +99,7 @@ def parse_instruction(
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
-        text = apostrophes(text)
+        text = order_colons(apostrophes(text))
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(

@@ -28,6 +28,9 @@ MAX_STRIDE = 4
 # the LP bound (``lp_bound``) rounds its optimum up to a whole time unit after taking this many
 # units off (the solver's tolerances: its optimum may be a little above the exact one)
 LP_SLACK = 0.01
+# the MIP after the LP (``profile_bound``'s ``mip``) stops this many seconds before the deadline:
+# HiGHS may overrun its time limit a little, and the bound's process is stopped soon after it
+MIP_MARGIN = 0.25
 _HUGE = 1 << 60  # a row's bound beyond this is none
 
 
@@ -112,8 +115,70 @@ def lp_bound(
     random cells it gives what the climb reaches in 10 s, in about 1 s of CPU (docs/planner.md,
     "Session 17"). None: no scipy, not solved before ``deadline`` (``time.perf_counter()``),
     or a model with a constraint of another kind."""
+    linear = _linear(problem, graph, node, tgts, level, deadline)
+    if linear is None:
+        return None
+    got = linear.solve(deadline, integral=False)
+    return None if got is None else got[0]
+
+
+@dataclass(frozen=True, slots=True)
+class _Linear:
+    """``feasible``'s model at a level as scipy's ``milp`` takes it: the makespan (in time
+    units) to minimise over the rows, each variable in its domain."""
+
+    cost: Any  # numpy arrays and a sparse matrix (numpy and scipy are optional: loaded late)
+    rows: Any
+    low: Any
+    high: Any
+    lo: Any
+    hi: Any
+    unit: int
+
+    def solve(self, deadline: float, *, integral: bool) -> tuple[int, bool] | None:
+        """(a lower bound in ticks on the model's least makespan, whether it is that least
+        makespan), solved by HiGHS until ``deadline`` (``time.perf_counter()``). Not
+        ``integral``: the LP relaxation's optimum (never said to be the least). ``integral``:
+        every variable kept integral (the model itself) and the bound HiGHS proved by the
+        deadline (its dual bound: its root LP, then its cuts and branching), the least makespan
+        itself when it closed the gap. Rounded up to a whole time unit (the model's makespan is
+        one) after ``LP_SLACK`` units are taken off. None: no bound by the deadline."""
+        import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
+        from scipy.optimize import Bounds, LinearConstraint, milp
+
+        left = deadline - time.perf_counter()
+        if left <= 0:
+            return None
+        res = milp(
+            self.cost,
+            integrality=np.ones(len(self.cost)) if integral else None,
+            constraints=LinearConstraint(self.rows, self.low, self.high),
+            bounds=Bounds(self.lo, self.hi),
+            options={"time_limit": left},
+        )
+        if not integral:
+            if res.status != 0 or res.fun is None:
+                return None
+            return math.ceil(res.fun - LP_SLACK) * self.unit, False
+        dual = getattr(res, "mip_dual_bound", None)
+        if dual is None or not math.isfinite(dual):
+            return None
+        units = math.ceil(dual - LP_SLACK)
+        return units * self.unit, res.fun is not None and units >= round(res.fun)
+
+
+def _linear(
+    problem: Problem,
+    graph: RelaxedGraph,
+    node: Node,
+    tgts: Sequence[Target],
+    level: int,
+    deadline: float,
+) -> _Linear | None:
+    """``feasible``'s model at ``level`` as rows for scipy's ``milp`` (``_Linear``); None: no
+    scipy, no time left, a target without a route by ``level``, or a constraint of a kind
+    not turned into rows."""
     import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
-    from scipy.optimize import Bounds, LinearConstraint, milp
     from scipy.sparse import csr_matrix
 
     built = _build(problem, graph, node, tgts, level, deadline)
@@ -162,20 +227,10 @@ def lp_bound(
                     high.append(np.inf)
         else:
             return None
-    left = deadline - time.perf_counter()
-    if left <= 0:
+    if time.perf_counter() > deadline:
         return None
-    rows_ = csr_matrix((vals, (rows, cols)), shape=(len(low), n))
-    res = milp(
-        cost,
-        constraints=LinearConstraint(rows_, low, high),
-        bounds=Bounds(lo, hi),
-        options={"time_limit": left},
-    )
-    if res.status != 0 or res.fun is None:
-        return None
-    fun: float = res.fun
-    return math.ceil(fun - LP_SLACK) * time_unit(problem)
+    matrix = csr_matrix((vals, (rows, cols)), shape=(len(low), n))
+    return _Linear(cost, matrix, low, high, lo, hi, time_unit(problem))
 
 
 def _build(
@@ -358,6 +413,7 @@ def profile_bound(
     seed: int = 0,
     on_proven: Callable[[int], None] | None = None,
     lp: bool = False,
+    mip: bool = False,
 ) -> ProfileBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen (docs/planner.md, "Profile bound"); ``floor`` is a bound known already,
@@ -370,17 +426,22 @@ def profile_bound(
     next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
     proved. Never below ``floor``. With ``lp`` (and ``upper`` and scipy), the climb starts
     from the LP bound at ``upper`` (``lp_bound``: every plan no longer than ``upper``, the
-    optimum among them, is at least that long)."""
+    optimum among them, is at least that long). With ``mip`` too, the same model with every
+    variable integral is then given to HiGHS until ``MIP_MARGIN`` before ``deadline``, and the
+    climb goes on from the bound it proved (its dual bound: ``_Linear.solve``)."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
     proven = -(-floor // unit)  # the least level (units) not ruled out
     if lp and upper is not None and lp_available():
-        got = lp_bound(problem, graph, node, tgts, upper, deadline)
-        if got is not None and got // unit > proven:
-            proven = got // unit
-            if on_proven is not None:
-                on_proven(max(floor, proven * unit))
+        linear = _linear(problem, graph, node, tgts, upper, deadline)
+        for integral in (False, True) if mip else (False,):
+            until = deadline - MIP_MARGIN if integral else deadline
+            got = None if linear is None else linear.solve(until, integral=integral)
+            if got is not None and got[0] // unit > proven:
+                proven = got[0] // unit
+                if on_proven is not None:
+                    on_proven(max(floor, proven * unit))
     # the least level known (or feared) to have a relaxed solution: a plan's makespan has one
     cap = math.inf if upper is None else upper // unit
     cap_solved = upper is not None
