@@ -21,14 +21,16 @@ import pytest
 from hltl.bus.codec import Command, world_to_wire
 from hltl.bus.driver import BusTiming
 from hltl.bus.realtime import RealtimeBusCell
+from hltl.execution.belief import Belief
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.executor import ExactPlanner, ExecutorConfig
 from hltl.execution.log import EventLog
 from hltl.sim.episode import EpisodeConfig, run_episode
 from hltl.sim.events import EventSchedule, load_events
 from hltl.sim.simulator import PerceptionModel
-from hltl.skills.library import Action
+from hltl.skills.library import Action, Transition
 from hltl.world.scene import load_scene
+from hltl.world.state import Loc
 from tests.bus.helpers import Loopback
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -189,3 +191,24 @@ def test_the_guard_acts_only_while_the_loop_is_away_and_says_it_again(
         finally:
             cell.end()
             cell.close()
+
+
+def test_the_guard_checks_the_belief_with_the_observation_merged_in() -> None:
+    """The guard's world is what the loop's next observation will make of its belief
+    (``Belief.merged``), taking nothing in: a person's new place is in it, and an object the
+    executor's own action moved stays where the belief has it even while the observation
+    lags (a lagging observation must not halt anything)."""
+    belief = Belief(SCENE)
+    start = belief.world
+    lagging = start.with_human("A", (0.3, 0.5, 0.0)).with_time(0.5)
+    chips = start.object_status("chips").loc
+    picked = Transition("chips", chips, Loc("held", "r2"), (), frozenset(), ())
+    belief.completed(picked, 0.4)  # r2 picked the chips at 0.4; the camera still shows them
+    belief.failed("bottle", 0.2)  # re-observed after a failure: the observation decides
+    merged = belief.merged(lagging)
+    assert merged.human_position("A") == (0.3, 0.5, 0.0)
+    assert merged.object_status("chips").loc == Loc("held", "r2")
+    assert belief.reobserving  # (merging took nothing in)
+    assert belief.world.human_position("A") == start.human_position("A")
+    belief.observe(lagging, 0.5)
+    assert belief.world == merged.with_time(0.5) and not belief.reobserving

@@ -22,7 +22,22 @@ class Belief:
         if obs.t < self._last_obs_t:
             return False  # out of order: an older observation adds nothing
         self._last_obs_t = obs.t
+        w, seen = self._merge(obs)
+        for oid in seen:
+            del self._reobserve[oid]
+        self.world = w.with_time(t)
+        return True
+
+    def merged(self, obs: WorldState) -> WorldState:
+        """The world as it would be with ``obs`` merged in (:meth:`observe`), nothing taken
+        in: read-only, so another thread may ask (the executor's guard, while its loop is
+        busy)."""
+        return self._merge(obs)[0]
+
+    def _merge(self, obs: WorldState) -> tuple[WorldState, list[str]]:
+        """The belief with ``obs`` merged in, and the objects re-observed after a failure."""
         w = self.world
+        seen = []
         for hid, pos in obs.humans:
             w = w.with_human(hid, pos)
         for oid, st in obs.objects:
@@ -30,13 +45,12 @@ class Belief:
                 continue  # sensed before our last action on it: stale
             if oid in self._reobserve:
                 w = w.with_object(oid, st)  # after a failure only perception knows where it is
-                del self._reobserve[oid]
+                seen.append(oid)
             elif w.object_status(oid).loc.kind in ("rest", "on") and st.loc.kind in ("rest", "on"):
                 w = w.with_object(oid, st)  # people move resting objects (O-MOVE)
         for rid, pos in obs.hands:
             w = w.with_hand(rid, pos)
-        self.world = w.with_time(t)
-        return True
+        return w, seen
 
     def set_unavailable(self, down: frozenset[str]) -> None:
         if down != self.world.unavailable:

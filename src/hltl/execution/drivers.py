@@ -112,7 +112,7 @@ class OwnClock(Protocol):
 
 
 # the executor's safety check for a guard (:class:`Guarded`): the running actions that must
-# halt in a world, each with the reason
+# halt given an observation, each with the reason
 SafetyCheck = Callable[[WorldState], Sequence[tuple[Handle, str]]]
 
 
@@ -120,9 +120,10 @@ SafetyCheck = Callable[[WorldState], Sequence[tuple[Handle, str]]]
 class Guarded(Protocol):
     """A driver whose robots run on their own clock and that can keep the executor's safety
     check running while the executor's loop is busy (planning, grounding) (optional). The
-    executor gives it :data:`SafetyCheck` once, when it is made: a pure check of its running
-    actions' preconditions against a world, safe to call from another thread. The driver
-    calls it with each new world it hears while the loop has not been back for a while, and
+    executor gives it :data:`SafetyCheck` once, when it is made: a check of its running
+    actions' preconditions against its belief with an observation merged in, which changes
+    nothing and is safe to call from another thread. The driver calls it with each new
+    observation it hears while the loop has not been back for a while, and
     halts at once what it names; the executor hears of such a halt as of any (the action's
     report says halted, with the reason) and replans. Nothing else in the executor depends
     on it."""

@@ -598,12 +598,15 @@ class Executor(TickTemplate):
         if all(r.status is not None for r in self._running):
             self._end_step()
 
-    def _guard_check(self, world: WorldState) -> list[tuple[Handle, str]]:
-        """The running actions whose precondition ``world`` breaks (or whose grasp target it
-        moved), for a driver's guard (:class:`~hltl.execution.drivers.Guarded`), called on
-        another thread while the loop is busy: the reactive part of :meth:`_check_safety`,
-        which reads nothing the loop changes but the running actions (the intrusion forecast
-        needs the forecaster, the loop's own)."""
+    def _guard_check(self, observation: WorldState) -> list[tuple[Handle, str]]:
+        """The running actions whose precondition breaks (or whose grasp target moved) in the
+        belief with ``observation`` merged in, for a driver's guard
+        (:class:`~hltl.execution.drivers.Guarded`), called on another thread while the loop is
+        busy: the reactive part of :meth:`_check_safety`, which changes nothing and reads
+        the loop's state only by reference (the running actions, the belief); the intrusion
+        forecast needs the forecaster, the loop's own. The belief, not the observation alone:
+        what the executor's own actions did is in it before perception shows it."""
+        world = self.belief.merged(observation)
         out = []
         for run in tuple(self._running):
             if run.status is not None:
