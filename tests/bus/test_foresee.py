@@ -84,6 +84,34 @@ def test_no_foresight_without_the_basis(loopback: Loopback) -> None:
 
 
 @MODES
+@pytest.mark.parametrize("held_on", [True, False], ids=["held-on", "dropped"])
+def test_a_step_held_back_past_its_stretch_is_held_on(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool, held_on: bool
+) -> None:
+    """1-1 #0: the executor holds its hand-over to A back while A walks (an intrusion risk)
+    longer than the node's stretch lasts, and starts it once A has stopped, at a time off the
+    tick grid. The node held the step in that stretch; the next one (the executor's plain
+    step query while it waits) holds it on, so the start is the node's guess and costs no
+    query. Dropped (as before session 18), the start is a guess missed: its commands go in a
+    query. The log is the in-process one either way."""
+    patient_foresight(monkeypatch)
+    if inline:
+        guesses_in_the_answer(monkeypatch)
+    if not held_on:
+        monkeypatch.setattr(node_module.CellNode, "_still_held", lambda self, ep, s: None)
+    run = _both(loopback, "1-1", 0)
+    late = [
+        r
+        for r in run.episode.records
+        if r.type == "action_start"
+        and r.action["skill"] == "handover_r2h"
+        and abs(round(r.t / 0.05) * 0.05 - r.t) > 1e-6
+    ]
+    assert late  # (the hand-over started at A's stop, off the tick grid)
+    assert (run.cell.stats.commands == 0) is held_on  # (commands in a query: a guess missed)
+
+
+@MODES
 def test_the_first_step_is_foreseen(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool
 ) -> None:

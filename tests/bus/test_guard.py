@@ -18,11 +18,16 @@ from typing import Any
 
 import pytest
 
+from hltl.bus.codec import Command, world_to_wire
 from hltl.bus.driver import BusTiming
 from hltl.bus.realtime import RealtimeBusCell
+from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.executor import ExactPlanner, ExecutorConfig
+from hltl.execution.log import EventLog
 from hltl.sim.episode import EpisodeConfig, run_episode
-from hltl.sim.events import load_events
+from hltl.sim.events import EventSchedule, load_events
+from hltl.sim.simulator import PerceptionModel
+from hltl.skills.library import Action
 from hltl.world.scene import load_scene
 from tests.bus.helpers import Loopback
 
@@ -128,3 +133,59 @@ def test_without_the_guard_the_slow_replan_is_a_violation(
     assert end.type == "action_failed" and "precondition false at completion" in end.reason
     assert [r for r in ep.records if r.type == "violation"]
     assert run.cell.stats.guarded == 0
+
+
+def test_the_guard_acts_only_while_the_loop_is_away_and_says_it_again(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The guard's rules, tick by tick (a check that names one running action): nothing while
+    the loop keeps up; a halt once it has been away for two ticks; not again for an older tick
+    or within the bus timeout (the halt may be on its way); again after it (it may have been
+    lost); never for an action whose report says it ended."""
+    scene = SCENE
+    with loopback.node(scene):
+        cell = RealtimeBusCell(
+            loopback._exec_session,
+            scene,
+            EventSchedule(),
+            0,
+            PerceptionModel(),
+            EventLog(),
+            factor=10.0,
+            timing=BusTiming(timeout=0.1, retries=6),
+        )
+        try:
+            sent: list[Command] = []
+            monkeypatch.setattr(
+                cell.link, "put", lambda key, data, **_: sent.append(Command.decode(data))
+            )
+            action = Action("pick", ("r2",), "chips")
+            handle = Handle(7, action, 0.0)
+            cell.guard(lambda world: [(handle, "chips out of reach")])
+            world = world_to_wire(cell.observe(0.0))
+            n = [0]
+
+            def tick() -> None:
+                n[0] += 1
+                cell._guard_tick({"n": n[0], "observation": world})
+
+            cell._loop_at = time.monotonic() + 3600.0  # the loop keeps up: it checks itself
+            tick()
+            assert sent == []
+            cell._loop_at = time.monotonic() - 1.0  # away for 1 s: 200 ticks at 10x
+            tick()
+            assert [(c.op, c.handle, c.seq) for c in sent] == [("halt", 7, cell._seq)]
+            assert "chips out of reach" in sent[0].reason and "guard" in sent[0].reason
+            cell._guard_tick({"n": n[0] - 1, "observation": world})  # an older tick
+            tick()  # within the timeout: the halt is on its way
+            assert len(sent) == 1 and cell.stats.guarded == 1
+            cell._guard_halts[7] -= 1.0  # the timeout passed, no report: said again
+            tick()
+            assert len(sent) == 2 and cell.stats.guarded == 1  # (one action halted)
+            cell._local[7] = ActionStatus(ActionState.HALTED, 0.0, 0.0, "halted")
+            cell._guard_halts[7] -= 1.0
+            tick()  # it ended: nothing more
+            assert len(sent) == 2
+        finally:
+            cell.end()
+            cell.close()

@@ -66,6 +66,7 @@ def _phase_calls(monkeypatch: pytest.MonkeyPatch, then: Callable[[], object]) ->
         until: float,
         beside: object = None,
         ahead: Callable[[], None] | None = None,
+        watch: object = None,
     ) -> object:
         before = set(_children())
         assert ahead is not None

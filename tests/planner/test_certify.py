@@ -60,8 +60,9 @@ def test_a_certified_plan_skips_the_search(monkeypatch: pytest.MonkeyPatch) -> N
 
 
 def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
-    # a 10-robot line's start bound (11.7 s) is more than STEPS_UP_TO shortest steps: neither
-    # the step bound nor CP-SAT's joint re-plan may take the phase's time from A*
+    # a 10-robot line's start bound (11.7 s) is more than STEPS_UP_TO shortest steps: where A*
+    # has no process of its own beside the phase (``certified``: no ``watch``), neither the
+    # step bound nor CP-SAT's joint re-plan may take the phase's time from A*
     def never(*_: object, **__: object) -> None:
         raise AssertionError("called on a line")
 
@@ -276,11 +277,15 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
 
 
 def _line_6_5_both_ways(
-    order: dict[str, str], release: threading.Event | Any, oracle: Callable[..., PlanResult]
+    order: dict[str, str],
+    release: threading.Event | Any,
+    oracle: Callable[..., PlanResult],
+    cell: tuple[str, int, int] = ("line", 6, 5),
 ) -> list[tuple[PlanStep, ...]]:
-    """Line 6 seed 5's plans with ``order["mode"]`` "astar first", then "phase first" (the
-    patched A* waits for ``release`` in the second), each as short as ``oracle``'s and valid."""
-    c = delivery_cell("line", 6, 5)
+    """Line 6 seed 5's (or ``cell``'s) plans with ``order["mode"]`` "astar first", then "phase
+    first" (the patched A* waits for ``release`` in the second), each as short as ``oracle``'s,
+    proved so and valid; ``oracle``'s plan last."""
+    c = delivery_cell(*cell)
     expected = oracle(Problem(c.scene, c.spec), timeout=120)
     steps = []
     for mode in ("astar first", "phase first"):
@@ -288,9 +293,10 @@ def _line_6_5_both_ways(
         release.clear()
         got = plan(c.scene, c.spec, timeout=120)
         assert got.solved and got.makespan == pytest.approx(expected.makespan)
+        assert got.lower_bound == pytest.approx(expected.makespan)
         check_plan(c.scene, c.spec, got.to_dict())
         steps.append(got.steps)
-    return steps
+    return [*steps, expected.steps]
 
 
 @pytest.mark.skipif(not anytime.beside_possible(), reason="needs two cores and fork")
@@ -356,3 +362,95 @@ def test_astar_in_its_own_process_is_stopped_by_a_proof(monkeypatch: pytest.Monk
     got = plan(c.scene, c.spec, timeout=120)
     assert got.makespan == pytest.approx(3.3) and got.stats.expanded == 0
     assert len(apart) == 1 and apart[0].proc is not None and not apart[0].proc.is_alive()
+
+
+def test_a_cell_left_to_astar_is_proved_at_its_start_bound() -> None:
+    # random 10 x 10 seed 4: the start bound (10.5 s) is above STEPS_UP_TO shortest steps, so
+    # no step bound; A* alone times out on its plateau at 10.5 s (20 s runs, sessions 8-17).
+    # The phase beside A* (anytime._beside_astar) has CP-SAT re-plan the prioritized plan
+    # (11.2 s) jointly, held at or above the start bound: 10.5 s, optimal, no expansion counted
+    if not anytime.beside_possible():
+        pytest.skip("needs two cores and fork")
+    c = delivery_cell("random", 10, 4)
+    problem = Problem(c.scene, c.spec)
+    s = _Search(problem)
+    h0 = round(s.heuristic(problem.start()))
+    assert h0 > anytime.STEPS_UP_TO * min(i.lower for i in problem.instances)
+    got = plan(c.scene, c.spec, timeout=60)
+    assert got.solved and got.makespan is not None
+    assert to_ticks(got.makespan) == h0 and got.lower_bound == got.makespan
+    assert got.stats.expanded == 0
+    check_plan(c.scene, c.spec, got.to_dict())
+
+
+def _beside_astar_both_ways(
+    monkeypatch: pytest.MonkeyPatch, layout: str, n: int, seed: int
+) -> tuple[list[tuple[PlanStep, ...]], list[anytime.AstarEnd]]:
+    """Plans of a small cell by ``anytime._beside_astar`` (every cell taken for one left to
+    A*), with A* ended before the phase goes on, then held until the phase ends, and plain
+    A*'s plan; what the phase told the watcher each time."""
+    import multiprocessing
+
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(anytime, "STEPS_UP_TO", 0)
+    ctx = multiprocessing.get_context("fork")
+    release = ctx.Event()
+    order = {"mode": ""}
+    real_ahead, real_watch, real_finish, real_search = (
+        planner._Apart.ahead,
+        planner._Apart.watch,
+        planner._Apart.finish,
+        planner.search,
+    )
+    ends: list[anytime.AstarEnd] = []
+
+    def ahead(self: planner._Apart) -> None:
+        real_ahead(self)
+        if order["mode"] == "astar first":
+            assert self.results is not None and self.results.poll(120)  # A* has ended
+
+    def watch(self: planner._Apart, end: anytime.AstarEnd) -> bool:
+        ends.append(end)
+        return real_watch(self, end)
+
+    def held_search(*args: object, **kwargs: object) -> object:
+        # (runs in the child, forked after this patch)
+        if order["mode"] == "phase first":
+            release.wait(120)
+        return real_search(*args, **kwargs)  # type: ignore[arg-type]
+
+    def finish(self: planner._Apart, cert: anytime.Certificate) -> object:
+        release.set()
+        return real_finish(self, cert)
+
+    monkeypatch.setattr(planner._Apart, "ahead", ahead)
+    monkeypatch.setattr(planner._Apart, "watch", watch)
+    monkeypatch.setattr(planner._Apart, "finish", finish)
+    monkeypatch.setattr(planner, "search", held_search)
+    steps = _line_6_5_both_ways(order, release, real_search, (layout, n, seed))
+    return steps, ends
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="needs two cores and fork")
+def test_a_plan_the_phase_beside_astar_proves_is_returned_whichever_ends_first(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # grid 4 seed 3: start bound 3.8 s, prioritized plan 4.5 s, optimum 3.8 s, which the joint
+    # re-plan finds (another plan than A*'s). When A* ends first its plan meets the start
+    # bound, so the phase goes on and proves its own: the phase's plan either way (a mutation
+    # check: stopping the phase whenever A* ends returns A*'s plan when it ends first)
+    steps, ends = _beside_astar_both_ways(monkeypatch, "grid", 4, 3)
+    assert steps[0] == steps[1] != steps[2]
+    assert len(ends) == 2 and not ends[0].stop.stopped
+
+
+@pytest.mark.skipif(not anytime.beside_possible(), reason="needs two cores and fork")
+def test_the_phase_beside_astar_stops_when_astar_ends_above_the_start_bound(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # line 5 seed 3: start bound 7.0 s, optimum 9.2 s: nothing the phase can prove. When A*
+    # ends first the phase's joint re-plan is stopped (lines A* solves in 0.5 s do not wait
+    # for CP-SAT), and the plan is A*'s either way
+    steps, ends = _beside_astar_both_ways(monkeypatch, "line", 5, 3)
+    assert steps[0] == steps[1] == steps[2]
+    assert len(ends) == 2 and ends[0].stop.stopped

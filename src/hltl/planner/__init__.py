@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from hltl.planner import lns, schedule
 from hltl.planner.anytime import (
+    AstarEnd,
     Certificate,
     _Found,
     beside_possible,
@@ -132,6 +133,7 @@ def plan(
                     t0 + CERTIFY_SHARE * timeout,
                     lambda first: beside.start(pool, first),
                     beside.ahead,
+                    beside.watch,
                 )
                 phase: float | None = time.perf_counter() - t0
                 result = beside.finish(cert)
@@ -257,6 +259,10 @@ class _Apart:
         self.paused = False
         self.held = 0.0  # seconds A*'s process has been paused (its last pause began at since)
         self.since = 0.0
+        # a thread that takes A*'s result as soon as it comes (``watch``), and what it took
+        self.watcher: threading.Thread | None = None
+        self.got: PlanResult | None = None
+        self.phase_over = threading.Event()
 
     def ahead(self) -> None:
         """Fork the process and start A* in it."""
@@ -278,6 +284,31 @@ class _Apart:
         result_end.close()  # (the child's copies stay open: their ends are the pipes' ends)
         upper_end.close()
 
+    def watch(self, end: AstarEnd) -> bool:
+        """Take A*'s result as soon as it comes, and stop the phase's question when A* has
+        ended with nothing the phase could still prove (``AstarEnd.hopeless``). False where
+        no process runs."""
+        if self.proc is None or self.results is None or self.watcher is not None:
+            return False
+        results = self.results
+
+        def take() -> None:
+            try:
+                self.got = results.recv()
+            except (EOFError, OSError):
+                return  # (ended: ``stop``)
+            got = self.got
+            makespan = None
+            if got.status is PlanStatus.SOLVED and got.makespan is not None:
+                makespan = to_ticks(got.makespan)
+            if end.hopeless(makespan):
+                while not self.phase_over.wait(0.01):
+                    end.stop.stop()  # (again: the solve may begin after the first call)
+
+        self.watcher = threading.Thread(target=take, daemon=True)
+        self.watcher.start()
+        return True
+
     def start(self, pool: ThreadPoolExecutor, first: _Found | None) -> None:
         """The prioritized plan's makespan is A*'s ``upper`` (the process runs already)."""
         if self.proc is None:
@@ -290,16 +321,21 @@ class _Apart:
         stopped because the phase proved a plan optimal, or its process died)."""
         if self.proc is None or self.results is None:
             return self.thread.finish(cert)
+        self.phase_over.set()
         if cert.optimal is not None:
             self.stop()
             return None
         self._busy(0)
         if cert.best is not None:
             self._tell(cert.best[0])
-        try:
-            got: PlanResult = self.results.recv()
-        except EOFError:
-            got = None  # type: ignore[assignment]
+        if self.watcher is not None:
+            self.watcher.join()  # (it has A*'s result once A* has ended)
+            got = self.got
+        else:
+            try:
+                got = self.results.recv()
+            except EOFError:
+                got = None
         self.stop()
         return got
 
@@ -310,10 +346,13 @@ class _Apart:
         if self.paused:  # (ended while paused)
             self.paused = False
             self.held += time.perf_counter() - self.since
+        self.phase_over.set()
         if self.proc is not None:
             if self.proc.is_alive():
                 self.proc.kill()  # (a paused process ends too)
             self.proc.join()
+        if self.watcher is not None:
+            self.watcher.join()  # (the pipe's end came with the process's)
         for conn in (self.results, self.uppers):
             if conn is not None:
                 conn.close()

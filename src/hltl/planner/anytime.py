@@ -52,6 +52,10 @@ SCHEDULE_SHARE = 0.25
 # shortest steps: its model has a variable per instance and step, and on 10-robot lines (start
 # bound 11.7 s, 23 steps) it proved nothing in 7.6 s of CPU where A* alone finishes in about 5 s
 STEPS_UP_TO = 16
+# exact mode's first phase on cells left to A* (``_beside_astar``): CP-SAT's joint re-plan
+# does at most this much deterministic work (random 10 x 10 seed 4 meets its start bound after
+# 0.7; line seed 4 never does, and its 15 s of CPU beside A* cost A* about 6 %)
+BESIDE_WORK = 4.0
 # exact mode's first phase: the profile bound (``profile.profile_bound``) raises the step
 # climb's floor first, for at most this many seconds (docs/planner.md, "The profile bound as the
 # climb's floor": solved in 0.05-0.7 s on the 10 x 10 cells, grid seed 4 from 4.3 to 5.7 s,
@@ -740,6 +744,7 @@ def certify(
     until: float,
     beside: Callable[[_Found | None], None] | None = None,
     ahead: Callable[[], None] | None = None,
+    watch: Callable[[AstarEnd], bool] | None = None,
 ) -> Certificate:
     """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
     ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
@@ -751,7 +756,12 @@ def certify(
     model's schedule is no plan and the full model is to be asked: the caller may start A*
     on the second core then, and the full model's levels are asked one at a time. ``ahead``
     is called once the phase is sure to run, before CP-SAT's import (the caller may start A*
-    in a process of its own then: ``planner._Apart``)."""
+    in a process of its own then: ``planner._Apart``).
+
+    Cells whose start bound is above ``STEPS_UP_TO`` shortest steps (lines, some random
+    cells) get no step bound; where A* runs in a process of its own (``watch`` says so),
+    the phase asks, on the other core, for a plan that meets the profile bound
+    (``_beside_astar``)."""
     none = Certificate(None, None)
     start = problem.start()
     heur = s.heuristic
@@ -762,8 +772,13 @@ def certify(
     if not schedule.steps_applicable(problem):
         return none
     h0 = heur(start)  # (A* needs it too: memoised)
-    if math.isinf(h0) or round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
-        return none  # (lines: A* alone; the joint re-plan below would take the phase's time)
+    if math.isinf(h0):
+        return none
+    if round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
+        # (lines: the step model proves nothing there; A* alone, or beside it on two cores)
+        if ahead is None or watch is None:
+            return none
+        return _beside_astar(problem, s, round(h0), until, beside, ahead, watch)
     if ahead is not None:
         ahead()
     # last: importing CP-SAT takes 0.2-0.5 s even without pandas (``lns._import_cp_sat``),
@@ -802,6 +817,73 @@ def certify(
             return Certificate(joint, joint)
         if joint is not None and joint[0] < best[0]:
             best = joint
+    return Certificate(None, best)
+
+
+class AstarEnd:
+    """What ``certify``'s phase beside A* (``_beside_astar``) tells whoever watches A*'s
+    process (``planner._Apart.watch``): the floor the phase proves plans at, and how to stop
+    its joint re-plan. When A* ends with no plan at or below the floor, the phase can prove
+    nothing more and is stopped; when A*'s plan meets the floor the phase goes on (it may
+    prove its own plan, which is then the one returned)."""
+
+    def __init__(self, floor: int) -> None:
+        self.floor = floor
+        self.stop = lns.Stop()
+
+    def hopeless(self, astar_makespan: int | None) -> bool:
+        """Whether the phase can prove nothing once A* has ended with a plan of
+        ``astar_makespan`` ticks (None: none shorter than its ``upper``, the prioritized plan,
+        which is then optimal, and longer than the floor, or the phase would have proved it)."""
+        return astar_makespan is None or astar_makespan > self.floor
+
+
+def _beside_astar(
+    problem: Problem,
+    s: _Search,
+    h0: int,
+    until: float,
+    beside: Callable[[_Found | None], None] | None,
+    ahead: Callable[[], None],
+    watch: Callable[[AstarEnd], bool],
+) -> Certificate:
+    """``certify`` on cells the step bound does not take (start bound ``h0`` above
+    ``STEPS_UP_TO`` shortest steps): A* starts at once in a process of its own (``ahead``)
+    and has a core to itself, and on the other one a prioritized plan and CP-SAT's joint
+    re-plan of it, held at or above the start bound: a plan that meets the start bound is
+    optimal (random 10 x 10 seed 4: 10.5 s, proved in about 1 s, where A* alone times out on
+    its plateau at 10.5 s). Where none is proved, the prioritized plan is the one handed back
+    (A* looks for shorter plans, and its own is returned: never the joint re-plan's, which
+    may or may not be there when A* ends). ``watch`` (``planner._Apart.watch``) stops the
+    phase when A* has ended with a plan longer than the start bound (nothing the phase could
+    prove), so the plan returned is the same whichever ends first and cells A* solves
+    quickly (most lines) do not wait for CP-SAT. The start bound, not the profile bound, is
+    the floor: it is known before CP-SAT's import, which A* often beats on lines (line
+    10 x 10 seed 3: 0.45 s), and on these cells the profile bound added nothing (random seed
+    4, lines 0 and 4: the start bound)."""
+    none = Certificate(None, None)
+    ahead()
+    end = AstarEnd(h0)
+    if not watch(end):
+        return none  # (no process: A* alone, at once)
+    best = construct(problem, s)
+    if best is None:
+        return none
+    if beside is not None:
+        beside(best)  # (A*'s ``upper``: it looks only for shorter plans)
+    if best[0] <= h0:
+        return Certificate(best, best)
+    # (A* may have ended before or during CP-SAT's import: then there is nothing to prove)
+    if end.stop.stopped or not lns.available() or end.stop.stopped:
+        return Certificate(None, best)
+    start = problem.start()
+    gls = goals(s, start)
+    if not gls or not _joint_possible(problem, gls):
+        return Certificate(None, best)
+    router = _Router(s, start, gls)
+    joint = _jointly(problem, s, router, best, until, floor=h0, stop=end.stop, work=BESIDE_WORK)
+    if joint is not None and joint[0] <= h0:
+        return Certificate(joint, joint)
     return Certificate(None, best)
 
 
@@ -1011,11 +1093,16 @@ def _jointly(
     *,
     detour: float = CP_DETOUR,
     slack: int = 0,
+    floor: int = 0,
+    stop: lns.Stop | None = None,
+    work: float | None = None,
 ) -> _Found | None:
     """``best`` re-planned by CP-SAT with every goal free (``lns.replan_jointly``), in at
     most ``slack`` more steps, each object kept to places on routes at most ``detour`` seconds
     slower than its quickest (and to those ``best`` uses); the plan is replayed through the
-    monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``)."""
+    monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``), or
+    ``stop`` stopped it. ``floor``: a lower bound on every plan (ticks), where the solve may
+    end; ``work``: at most this much of CP-SAT's deterministic time (``lns.replan_jointly``)."""
     node = router.node
     graph = s.heuristic.graph
     steps = [list(U) for _, U, _ in best[1]]
@@ -1040,7 +1127,17 @@ def _jointly(
         }
         places |= {here, *used.get(o, ()), *(problem.instances[i].post for i in fires)}
         specs.append(lns.GoalSpec(o, fires, frozenset(places), g.after))
-    new = lns.replan_jointly(problem, specs, node[0], steps, slack=slack, deadline=until)
+    new = lns.replan_jointly(
+        problem,
+        specs,
+        node[0],
+        steps,
+        slack=slack,
+        deadline=until,
+        floor=floor,
+        stop=stop,
+        work=work,
+    )
     return None if new is None else router.replay(new)
 
 
