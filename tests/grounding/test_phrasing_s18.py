@@ -18,6 +18,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     OFFICE,
     SCENES,
     WARD,
@@ -115,6 +116,15 @@ def test_a_speakers_own_words_are_read_through(text: str, want: str, scene: Scen
         ("tom wants the gloves, no gloves for him though", DEPOT),
         ("Roger that, tower, the crisps, over.", CELL),  # nothing asked
         ("Going once, going twice, sold!", CELL),
+        # the full fuzz's wrong readings on main (session 18, seed 19): a correction after a name
+        # said alone took back the speaker's remark with it; a count of steps counted a sign-off
+        ("I'll need it back, so omar, no, Emma needs the banana.", LAB),
+        ("I'll need it back, so marco, no, Lena needs the salt.", KITCHEN),
+        (
+            "Okay three things, drill to Kofi, torch to Jess, and that's your lot. "
+            "Have a great day.",
+            WORKSHOP,
+        ),
         # 'all three of the pens' with no list after it (a crash of the first session-18 rewrite)
         ("Put all three of the pens in the box, cheers", OFFICE),
     ],

@@ -4901,7 +4901,9 @@ def _run_ons17(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",?\s*and that's your lot\s*([.!]?)\s*$", r"\1", out)
 
     def counted(m: re.Match[str]) -> str:
-        steps = [x for x in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(2)) if x.strip()]
+        # a step names something: "and that's your lot. Have a great day." is none
+        pieces = re.split(r",\s*(?:and\s+)?|\s+and\s+|(?<=[.!?])\s+", m.group(2))
+        steps = [x for x in pieces if x.strip() and not _names_nothing(x, lexicon)]
         return m.group(2) if len(steps) == _NUMBERS15[m.group(1).lower()] else m.group(0)
 
     # "Okay two things, salt to Marco, lemon to Lena": the count is the steps that follow

@@ -1645,6 +1645,7 @@ def _clause_opens(after: list[Item], r: int) -> bool:
 
 
 _STRESS = frozenset({"actually", "instead", "please", "then"})
+_SPEAKER_WORDS = frozenset({"i", "me", "my", "we", "us", "our", "i'll", "i'm", "i'd", "we'll"})
 
 
 def _without_trailing_markers(after: list[Item]) -> list[Item]:
@@ -1684,6 +1685,14 @@ def _apply_correction(
         cut = verbs[-1]
         while cut > start and not _is(before[cut - 1], *_SEPARATORS):
             cut -= 1
+        last = max((k for k in range(cut, len(before)) if _is(before[k], ",")), default=cut - 1)
+        if not any(_is_verb_item(x) for x in before[last + 1 :]) and any(
+            x.text.lower() in _SPEAKER_WORDS for x in before[cut:]
+        ):
+            # "I'll need it back, so omar, no, Emma needs the banana": 'no' follows a name said
+            # alone, so taking back the whole clause would take back what the speaker said of
+            # themselves with it
+            raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         if any(_is(x, "instead", "instead_of", "correct") for x in before[cut:]):
             # "X. Give Bob the apple instead, no, Z": what the taken-back 'instead' replaced
             # is unclear
