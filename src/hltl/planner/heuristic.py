@@ -546,19 +546,28 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
         hd, v, tl = jobs[0]
         return hd + v + tl
     best = 0.0
-    for key in (None, _TAIL):
-        jobs.sort(key=key, reverse=True)
-        total = 0.0
-        least_head = least_tail = INF
-        for hd, v, tl in jobs:
-            total += v
-            if hd < least_head:
-                least_head = hd
-            if tl < least_tail:
-                least_tail = tl
-            t = least_head + total + least_tail
-            if t > best:
-                best = t
+    # by head, latest first: the least head so far is the job's own
+    jobs.sort(reverse=True)
+    total = 0.0
+    least_tail = INF
+    for hd, v, tl in jobs:
+        total += v
+        if tl < least_tail:
+            least_tail = tl
+        t = hd + total + least_tail
+        if t > best:
+            best = t
+    # by tail, largest first: the least tail so far is the job's own
+    jobs.sort(key=_TAIL, reverse=True)
+    total = 0.0
+    least_head = INF
+    for hd, v, tl in jobs:
+        total += v
+        if hd < least_head:
+            least_head = hd
+        t = least_head + total + tl
+        if t > best:
+            best = t
     return best
 
 
