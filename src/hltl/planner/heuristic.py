@@ -135,16 +135,19 @@ class Heuristic:
             hit = self._critical(locs, q)
             robots, pair = hot
             if hit != INF:
-                for entry in robots:
-                    if entry[0] is not q:
-                        entry = self._robot_entry(q, entry[1])
-                    load = self._robot_load(locs, entry)
-                    if load > hit:
-                        hit = load
+                # the pair first: where it is infinite (two objects that must cross each other
+                # both held, facing, on a line) the loads need not be computed
                 if pair is not None and pair[4] is q:
                     v = pair[3][locs[pair[0]] * pair[2] + locs[pair[1]]]
                     if v > hit:
                         hit = v
+                if hit != INF:
+                    for entry in robots:
+                        if entry[0] is not q:
+                            entry = self._robot_entry(q, entry[1])
+                        load = self._robot_load(locs, entry)
+                        if load > hit:
+                            hit = load
             self._crit_memo[key] = hit
         return hit
 
