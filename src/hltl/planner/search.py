@@ -515,9 +515,9 @@ def search(
             if upper is not None and ng >= upper:
                 continue
             crec = recs.get(child)
-            if crec is not None and ng > crec[0]:
-                continue
-            if crec is not None and ng == crec[0]:
+            if crec is not None and ng >= crec[0]:
+                if ng > crec[0]:
+                    continue
                 # an equally cheap way in: its tag may allow what the others forbid
                 child_tags = crec[1]
                 if tag in child_tags:
