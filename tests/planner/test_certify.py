@@ -266,6 +266,27 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
         assert cert.best[0] > to_ticks(got.makespan)
 
 
+@pytest.mark.parametrize("proved", [True, False])
+def test_a_timed_out_plan_carries_the_phases_bound(
+    proved: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # line 10 seed 0 (optimum 14.7 s, A* needs about 16 s): A* times out after about 2 s,
+    # its own bound well below 14.7 s; a first phase that proved 14.7 s (as the step
+    # climb's "no"s can) gives the timed-out result that bound, and says so
+    c = delivery_cell("line", 10, 0)
+    bound = to_ticks(14.7) if proved else 0
+    monkeypatch.setattr(planner, "certify", lambda *_: anytime.Certificate(None, None, bound))
+    got = plan(c.scene, c.spec, timeout=2.0)
+    assert got.status is planner.PlanStatus.TIMEOUT and got.lower_bound is not None
+    assert got.makespan is not None and got.makespan >= 14.7 - 1e-9
+    if proved:
+        assert got.lower_bound == pytest.approx(14.7)
+        assert "the first phase proved 14.700 s" in got.reason
+    else:
+        assert got.lower_bound < 14.7
+        assert "first phase" not in got.reason
+
+
 def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -731,10 +731,12 @@ def _schedule_at_start(
 @dataclass(frozen=True, slots=True)
 class Certificate:
     """What exact mode's first phase found (``certify``): a plan it proved optimal, and the
-    shortest plan it knows (the same one when proved; either may be None)."""
+    shortest plan it knows (the same one when proved; either may be None); and the lower
+    bound (ticks) it proved on every plan (0: none beyond the start bound's)."""
 
     optimal: _Found | None
     best: _Found | None
+    bound: int = 0
 
 
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
@@ -814,7 +816,7 @@ def certify(
     if found is not None:
         return Certificate(found, found)
     if best is None:
-        return none
+        return Certificate(None, None, ticks)
     if ticks >= best[0]:
         return Certificate(best, best)  # no relaxed schedule is shorter
     gls = goals(s, start)
@@ -828,7 +830,7 @@ def certify(
             return Certificate(joint, joint)
         if joint is not None and joint[0] < best[0]:
             best = joint
-    return Certificate(None, best)
+    return Certificate(None, best, ticks)
 
 
 class AstarEnd:
