@@ -8,6 +8,7 @@ the request to foresee the first step meanwhile."""
 
 from __future__ import annotations
 
+import threading
 from typing import Any
 
 import pytest
@@ -119,3 +120,48 @@ def test_the_reset_is_answered_out_of_the_node_lock(
     same_as_local(local, run)
     assert held["reset"] == [False]
     assert held["step"] and all(held["step"])
+
+
+def test_the_node_lets_go_before_it_plans_or_grounds(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A plan or a grounding ahead takes the node's thread milliseconds: it lets go first (a
+    reply the executor waits for may be queued on its core). The episode is the in-process
+    one."""
+    from hltl.bus import node as N
+
+    events: list[tuple[int, str]] = []  # (the thread, what it did)
+
+    def note(what: str) -> None:
+        events.append((threading.get_ident(), what))
+
+    monkeypatch.setattr(N, "let_go", lambda: note("let go"))
+    plan, ground = N.foresee_steps, N.ground_all
+
+    def planned(*a: Any, **k: Any) -> Any:
+        note("plan")
+        return plan(*a, **k)
+
+    def grounded(*a: Any, **k: Any) -> Any:
+        note("ground")
+        return ground(*a, **k)
+
+    reply = CellNode._reply_bytes
+
+    def replied(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
+        note("reply")
+        return reply(self, query, payload, key)
+
+    monkeypatch.setattr(N, "foresee_steps", planned)
+    monkeypatch.setattr(N, "ground_all", grounded)
+    monkeypatch.setattr(CellNode, "_reply_bytes", replied)
+    trial = make_trial("2-2", 0)  # (a second request, grounded ahead by the node)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    run = loopback.run(trial.scene, **episode)
+    same_as_local(local, run)
+    steps = [e for t, e in events if t == run.node._server.ident]  # (the step thread's)
+    long = [i for i, e in enumerate(steps) if e in ("plan", "ground")]
+    assert "plan" in steps and "ground" in steps
+    # (a let-go of its own, not the one after an answer)
+    assert all(steps[i - 1] == "let go" and steps[i - 2] != "reply" for i in long)

@@ -890,6 +890,7 @@ class CellNode:
         key = (tuple(instructions), bs.monitor.done(q_now))
         memo = ep.ground_memo.get(key)
         if memo is None or memo[0] is not spec:  # (not grounded yet against this spec)
+            let_go()  # (as before a plan: grounding takes milliseconds)
             made = [
                 u.spec
                 for u in ground_all(self._grounder, instructions, self.scene, spec, key[1])
@@ -1413,6 +1414,7 @@ class CellNode:
         assert bs is not None and numbers is not None
         w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
         basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
+        let_go()  # (a plan takes a millisecond or more: what waits for this core goes first)
         steps = foresee_steps(self.scene, basis, bs.monitor, w)
         s.own, s.planned, s.ctx = True, True, self._context(world)
         if not steps:
