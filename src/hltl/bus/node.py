@@ -890,7 +890,7 @@ class CellNode:
         key = (tuple(instructions), bs.monitor.done(q_now))
         memo = ep.ground_memo.get(key)
         if memo is None or memo[0] is not spec:  # (not grounded yet against this spec)
-            let_go()  # (as before a plan: grounding takes milliseconds)
+            self._let_go()  # (as before a plan: grounding takes milliseconds)
             made = [
                 u.spec
                 for u in ground_all(self._grounder, instructions, self.scene, spec, key[1])
@@ -1414,7 +1414,7 @@ class CellNode:
         assert bs is not None and numbers is not None
         w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
         basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
-        let_go()  # (a plan takes a millisecond or more: what waits for this core goes first)
+        self._let_go()  # (a plan takes a millisecond or more: what waits for this core first)
         steps = foresee_steps(self.scene, basis, bs.monitor, w)
         s.own, s.planned, s.ctx = True, True, self._context(world)
         if not steps:
@@ -1818,8 +1818,16 @@ class CellNode:
         if self.link.reply_lost():
             return False
         query.reply(key or str(query.key_expr), payload)
-        let_go()  # (the answer goes now, not once this thread next waits)
+        self._let_go()  # (the answer goes now, not once this thread next waits)
         return True
+
+    @staticmethod
+    def _let_go() -> None:
+        """:func:`~hltl.bus.session.let_go`, in a process of its own: with an executor in this
+        process one of the two waits for the other (the interpreter lock), which leaves the
+        other core to Zenoh's threads (and this node yields between ticks anyway)."""
+        if not executor_here():
+            let_go()
 
 
 # What look-ahead keeps as it is in the 3D simulator: the posed MuJoCo model (``stage``: its
