@@ -76,7 +76,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # variants of each kind of blind16's refusals, written BEFORE any session-18 change; measured
 # once, then tuned on), blind17 (written in session 18 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineer who changed the grounder before its
-# one measurement at the end of session 18; tests do not assert it).
+# one measurement at the end of session 18; tuned on in session 19), causes19 (session 19: fresh
+# variants of each kind of blind17's refusals and its refusal without readings, written BEFORE
+# any session-19 change; measured once, then tuned on).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -110,6 +112,7 @@ PARTS = (
     "blind16",
     "causes18",
     "blind17",
+    "causes19",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
