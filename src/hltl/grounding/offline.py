@@ -22,6 +22,7 @@ from hltl.grounding.lexicon import (
 from hltl.grounding.normalise import (
     apostrophes,
     canonical,
+    canonical19,
     hearer_named,
     one_person,
     order_colons,
@@ -100,6 +101,13 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
     if normalise:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
         text = order_colons(apostrophes(text))
+        cut = _CUT_OFF.search(text)
+        if cut is not None:
+            # "The cup to Alice, sorry, the.": the words stop before what they were to name
+            raise GroundingError(
+                f"{cut.group(1)!r} ends the instruction: it is cut off before what it names; "
+                "say the whole request"
+            )
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(
@@ -115,20 +123,31 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
     except GroundingError as refused:
         if not normalise:
             raise
-        plain = canonical(text, lexicon)
-        if plain == " ".join(text.split()):
-            raise
-        try:
-            node = _read(plain, scene, lexicon)
-            _not_before_itself(plain, node, scene, lexicon)
-            _two_sexes_one_person(text, lexicon)
-            return node
-        except GroundingError as rewritten:
-            if _readings(rewritten) and not _readings(refused):
-                # "The patient is to be given the jug": the rewrite got as far as the name, and
-                # its refusal says which readings there are (the first only that it cannot parse)
-                raise rewritten from None
-            raise refused from None
+        said = " ".join(text.split())
+        best: GroundingError = refused
+        tried = {said}
+        # the rewrites of every session, then (only where those are refused) the session-19
+        # ones ahead of them: what the first reads stays read as it was
+        for rewrite in (canonical, canonical19):
+            plain = rewrite(text, lexicon)
+            if plain in tried:
+                continue
+            tried.add(plain)
+            try:
+                node = _read(plain, scene, lexicon)
+                _not_before_itself(plain, node, scene, lexicon)
+                _two_sexes_one_person(text, lexicon)
+                return node
+            except GroundingError as rewritten:
+                if _readings(rewritten) and not _readings(best):
+                    # "The patient is to be given the jug": the rewrite got as far as the name,
+                    # and its refusal says which readings there are (the first only that it
+                    # cannot parse)
+                    best = rewritten
+        raise best from None
+
+
+_CUT_OFF = re.compile(r"\b(the|an|their|my|your|our)\s*[.!?…]*\s*$", re.I)
 
 
 # a pronoun that is a person (not 'his'/'her' before what they own: "he's changing her nappy")
@@ -1067,6 +1086,10 @@ class _Parser:
                             f"{source.target.text}: say what {f.target.text} gets"
                         )
                     f.objects, f.group = list(source.objects), source.group
+                    if f.target is not None and f.comma and source.target in (None, f.target):
+                        # "A plate, for Mr Novak": the objects said before take this target,
+                        # and the words are one task, so one choice, not two different plates
+                        f.choice = source.choice if source.choice >= 0 else source.index
                 if f.objects is None:
                     raise GroundingError(
                         f"{f.text!r} names no object; {self.lex.listing('object')}"

@@ -126,7 +126,9 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
         nxt = items[k + 1] if k + 1 < end else None
         low = first.text.lower()
         # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
-        offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
+        offers = (
+            mark and low in ("would", "does", "did", "should") and nxt is not None and _humans(nxt)
+        )
         asks = (
             offers
             or (mark and opens_clause and _said_as_a_question(items, k, end))
@@ -3976,6 +3978,19 @@ def _appositions(items: list[Item]) -> list[Item]:
             and len({r.id for r in items[j].refs}) == 1
             and {r.id for r in items[j].refs} < ids
         ):
+            more = _past_dets(items, j + 2) if j + 1 < len(items) else j
+            if (
+                j + 1 < len(items)
+                and _is(items[j + 1], "and", ",")
+                and more < len(items)
+                and _objects(items[more])
+                and {r.id for r in items[more].refs} < ids
+            ):
+                # "one pen, the red one and the blue one": a list after one thing
+                raise GroundingError(
+                    f"'{it.text}, {_words_of(items[k + 2 : more + 1])}': one thing, then "
+                    "several: which is meant?"
+                )
             out.extend(items[k + 2 : j + 1])
             k = j + 1
             continue
