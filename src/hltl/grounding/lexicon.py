@@ -97,6 +97,7 @@ for _lemma, _forms in {
     "serve": ("serves", "serving", "served"),
     "lend": ("lends", "lending", "lent"),
     "slip": ("slips", "slipping", "slipped"),  # "slip Bob the chips"
+    "present": ("presents", "presenting", "presented"),  # session 19
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -136,6 +137,7 @@ for _lemma, _forms in {
     "convey": ("conveys", "conveying", "conveyed"),
     "wheel": ("wheels", "wheeling", "wheeled"),
     "trundle": ("trundles", "trundling", "trundled"),
+    "slot": ("slots", "slotting", "slotted"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -211,7 +213,7 @@ _SAID_ONLY = frozenset(
     {
         *("haul", "hoist", "lug", "tote", "heave", "shuttle", "lob", "sling", "fling", "relay"),
         *("dispatch", "convey", "wheel", "trundle", "perch", "stash", "tuck", "deposit", "dump"),
-        *("find", "locate", "lift", "collect", "retrieve"),
+        *("find", "locate", "lift", "collect", "retrieve", "slot", "present"),
     }
 )
 

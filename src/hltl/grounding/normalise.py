@@ -6099,7 +6099,7 @@ _LY_HELD19 = frozenset(
 )
 _PARTICLES19 = frozenset({"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"})
 _NOW19 = re.compile(
-    r"\s*,?\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
+    r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
     r"forthwith|quick smart|this (?:morning|evening|afternoon)|tonight|today)\b",
     _F,
 )
@@ -6148,6 +6148,16 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
     return _manner(low, lexicon) or _unknown_word(low, lexicon)
 
 
+_SET_FILLERS19 = re.compile(
+    r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
+    r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
+    r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
+    r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
+    r"merging now|over and out)$",
+    _F,
+)
+
+
 def _filler_stretch(chunk: str, after_object: bool, lexicon: Lexicon) -> bool:
     """A stretch that is the speaker's own words: every word a filler by kind, at least one not
     a word of address alone, nothing named in the scene (nor by a typo), no digit; an unknown
@@ -6155,6 +6165,8 @@ def _filler_stretch(chunk: str, after_object: bool, lexicon: Lexicon) -> bool:
     words = re.findall(r"[a-z][a-z'-]*", chunk.lower())
     if not words or len(words) > 5 or re.search(r"\d", chunk):
         return False
+    if _SET_FILLERS19.match(chunk.strip(" .!?")) and _names_nothing(chunk, lexicon):
+        return True
     if not all(_filler_word(w, lexicon) for w in words):
         return False
     if words[0] in ("and", "so", "then", "just") and len(words) == 1:
@@ -6178,13 +6190,34 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     if not _TIMED19.search(out):
         out = _NOW19.sub("", out)
     words = out.split(" ")
+    # interjections said first without a comma ('aye aye the bottle's going …')
+    lead = 0
+    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION19 - _ADDRESS:
+        if _held_word(words[lead], lexicon) or words[lead].lower() in ("please", "and", "so"):
+            break
+        lead += 1
+    if lead and (words[lead].lower() in _DETERMINER19 or words[lead].lower() in VERBS):
+        words = words[lead:]
     kept: list[str] = []
     for k, w in enumerate(words):
         core = w.strip('.,;:!?"')
         low = core.lower()
         prev = words[k - 1].lower().strip(",;:") if k else ""
+        last = k + 1 == len(words) or w[-1:] in ",;:.!?"
         glued = low in _PARTICLES19 and k > 0 and prev[-1:] not in (",", ";", ":")
-        if core and (glued or _manner(core, lexicon)) and prev not in _DETERMINER19:
+        loose = (
+            _unknown_word(core, lexicon)
+            and 0 < k < len(words) - 1
+            and (
+                words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+                and _ends_object(" ".join(words[:k]), lexicon)
+            )
+        )  # 'the sippy cup aloft on the high chair': a word between a thing and where it goes
+        if (
+            core
+            and (glued or loose or _manner(core, lexicon))
+            and (prev not in _DETERMINER19 or last)
+        ):
             tail = w[len(w.rstrip('.,;:!?"')) :]
             if tail and kept:
                 kept[-1] = kept[-1].rstrip(",;:") + tail
@@ -6205,24 +6238,47 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
         drop.append(bool(c.strip()) and _filler_stretch(c, after_object, lexicon))
     if not any(drop) or all(d or not c.strip() for d, c in zip(drop, chunks, strict=True)):
         return _tidy19(out)
+    return _joined19(chunks, seps, drop)
+
+
+_VERB_NEXT19 = re.compile(
+    r"^(?:wants|needs|gets|receives|has|would|should|could|will|can|is|are|goes|go|takes|"
+    r"asked|likes|shall|must)\b",
+    _F,
+)
+
+
+def _joined19(chunks: list[str], seps: list[str], drop: list[bool]) -> str:
+    """The stretches kept, joined as they were said: a sentence end of a stretch taken off
+    stays, and an aside taken off between a subject and its verb ('Each patient, gently,
+    receives …') leaves no comma."""
     res = ""
+    pending = ""
     for k, c in enumerate(chunks):
+        sep = seps[k] if k < len(seps) else ""
+        end = sep.strip()[:1] if sep.strip()[:1] in (".", "!", "?") else ""
         if drop[k] or not c.strip():
-            if k < len(seps) and seps[k].strip()[:1] in (".", "!", "?") and res:
-                res = res.rstrip(" ,;:") + seps[k].strip()[:1] + " "
+            if end and res:
+                pending = end
+            elif res and not pending:
+                pending = ","
             continue
-        if res and not res.endswith(" "):
-            res += ", "
-        elif res.endswith(", "):
-            pass
+        if res:
+            if pending in (".", "!", "?"):
+                res = res.rstrip(" ,;:.!?") + pending + " "
+            elif pending == "," and _VERB_NEXT19.match(c.strip()):
+                res = res.rstrip(" ,;:") + " "
+            elif not res.endswith(" "):
+                res += " "
+        pending = ""
         res += c
-        if k < len(seps):
-            res += seps[k] if seps[k].strip() else " "
+        res += sep if sep.strip() else " "
     return _tidy19(res)
 
 
 def _tidy19(text: str) -> str:
-    out = re.sub(r"\s+([,;:.!?])", r"\1", text)
+    out = re.sub(r"([.!?])[.!?,;:]+", r"\1", text)
+    out = re.sub(r"\s+([,;:.!?])", r"\1", out)
     out = re.sub(r"([,;:])\s*([,;:.!?])", r"\2", out)
     out = re.sub(r"^[\s,;:.!]+", "", out)
     out = re.sub(r"\s{2,}", " ", out).strip()
@@ -6290,7 +6346,17 @@ def _speaker19(text: str, lexicon: Lexicon) -> str:
         out := text,
     )
     out = _sub(r"\bbless (?:her|him|them|'em|you|me)(?: (?:little )?(?:heart|socks))?\b", "", out)
-    out = _sub(r"\b(?:can |could |please )?help me (?=(?:to )?[a-z]+ (?:the|it|them|a)\b)", "", out)
+    out = _sub(
+        r"(?:^|(?<=[,.!?] ))(?:(?:i'm|i am) )?(?:so |very |really |terribly )?sorry to (?:bother|"
+        r"trouble|ask|interrupt|disturb|be a pain)(?: you)?(?: again)?,?(?: but,?)?\s*",
+        "",
+        out,
+    )
+    out = _sub(
+        r"\b(?:can |could |please )?help me (?:to )?(?=([a-z]+)\b)",
+        lambda m: "" if m.group(1).lower() in VERBS else m.group(0),
+        out,
+    )
     out = _sub(r"^(?:(?:and|so|oh|well),? )?let me (?:think|see)\s*[.,:;!]+\s*", "", out)
     out = _sub(
         r"^(?:may|might|can|could) (?:i|we) (?:ask|request) (?:that )?(.+?) be ",
@@ -6338,7 +6404,19 @@ _TAG19 = (
 
 
 def _hedges19(text: str, lexicon: Lexicon) -> str:
-    out = text
+    out = _sub(
+        r"(?:^|,\s*)(?:and )?if (?:it's|it is|it isn't|it's not|that's|that is) (?:not )?"
+        r"(?:too much |any |no )?(?:trouble|bother|okay|ok|alright|all right|fine|possible)"
+        r"\s*(?:,|(?=[.!?]|$))",
+        ", ",
+        text,
+    ).strip(" ,")
+    out = _sub(r"^(?:be (?:a|an|my) (?:[a-z']+ ){1,3}and) (?=[a-z]+ )", "", out)
+    out = _sub(r"\b(would|could|will) be so (?:good|kind) as to\b", r"\1", out)
+    out = _sub(r"\b(?:is|are) to (?:receive|get|have)\b", "gets", out)
+    out = _sub(r"(?<=[a-z]) only\s*([.!]?)$", r"\1", out)
+    out = _sub(r"(\bthen\b[^.!?]*?) (?:after|afterwards)\s*([.!?]|$)", r"\1\2", out)
+    out = _sub(r"^(can|could|will|would)\b(.+?)\s+or not\s*\?$", r"\1\2?", out)
     if not re.search(r"\b(?:or|not|n't|unless)\b", out, _F):
         out = _sub(r"(?:,\s*)?\b(?:maybe|perhaps|possibly)\b(?:\s*,)?\s*", " ", out)
         out = _sub(r"\bif at all possible\b\s*,?\s*", "", out)
@@ -6366,14 +6444,19 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
     )
     out = _sub(r",?\s*if (?:you|ye|thou) (?:please|will)\b", "", out)
     out = _sub(r"(?:^|(?<=[.!?])\s*)only if it's no (?:bother|trouble)\s*[.!]?", "", out)
-    m = _rx(rf",\s*{_TAG19}\s*\?+\s*$").search(out)
+    m = _rx(rf",\s*{_TAG19}\s*[?.!]*\s*$").search(out)
     if m is not None and m.start() > 0:
         out = out[: m.start()] + "."
     out = _tidy19(out)
     if out != text and out.endswith("?") and text.rstrip().endswith("?"):
-        # "Maybe pass Alice the bottle?": the hedge was the question
+        # "Maybe pass Alice the bottle?", "Is it alright if P has X?": the hedge was the
+        # question, and what is left is a request
         head = out.rstrip("?").strip()
-        if re.match(r"^(?:pass|give|hand|put|place|bring|take|send)\b", head, _F):
+        first = head.split(" ", 1)[0].lower()
+        stated = first in VERBS or re.match(
+            r"^[A-Z][\w ]*? gets\b|^the [a-z ]+ goes to\b", head, _F
+        )
+        if stated and first not in ("could", "can", "would", "will", "is", "are", "do", "does"):
             out = head + "."
     return out if out.strip() else text
 
@@ -6387,13 +6470,14 @@ _CLOSER19 = re.compile(
     r"^(?:and |so )?(?:that's|that is|thats|that'll be|those are|these are|them's|this is|"
     r"we're|we are|that concludes|that completes|end of|nothing (?:further|else|more)|no further|"
     r"so let it be|let it be|make it so|over to you|over and out|class dismissed|story over|"
-    r"job done|job's|jobs a|all done|all hands|what a|and scene|that be all|"
-    r"then (?:we|you|i) (?:can|could|'ll|will))\b",
+    r"job done|job's|jobs a|all done|all hands|what a|and scene|that be all|that would be|"
+    r"that'd be|there's|there you go|there we go|so be it|"
+    r"(?:and )?then (?:we|you|i) (?:can|could|'ll|will|are|'re)|we're|we are)\b",
     _F,
 )
 _CLOSER_HELD19 = re.compile(
     r"\b(?:not|n't|except|but|too|also|another|more(?! questions)|other|else(?=\s+(?:to|for|on)"
-    r")|and the|give|hand|pass|bring|take|put|place|send|it|them|him|her|he|she|they)\b",
+    r")|and the|give|hand|pass|bring|take|put|place|send|them|him|her|he|she|they)\b",
     _F,
 )
 
@@ -6408,15 +6492,39 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
         c = chunks[k].strip()
         if not c:
             continue
-        if _CLOSER19.match(c) and not _CLOSER_HELD19.search(c) and _names_nothing(c, lexicon):
+        opener = _CLOSER19.match(c)
+        if (
+            opener is not None
+            and not _CLOSER_HELD19.search(c[opener.end() :])
+            and _names_nothing(c, lexicon)
+        ):
             cut = k
         elif cut is not None and _filler_stretch(c, False, lexicon):
             continue
         else:
             break
     if cut is None:
-        return text
+        # a closer said on in the last stretch: '… and then we're lekker', '… then we can
+        # close the ticket'
+        last = chunks[-1]
+        m = _rx(
+            r"\s+(?:and )?(?:then )?(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
+            r" [^,.;!?]*$"
+        ).search(last)
+        if (
+            m is None
+            or _CLOSER_HELD19.search(m.group(0))
+            or not _names_nothing(m.group(0), lexicon)
+        ):
+            return text
+        if not _names(last[: m.start()], lexicon):
+            return text
+        chunks = [*chunks[:-1], last[: m.start()]]
+        return _tidy19(
+            "".join(p for k, c in enumerate(chunks) for p in (c, seps[k] if k < len(seps) else ""))
+        )
     head = "".join(p for k, c in enumerate(chunks[:cut]) for p in (c, seps[k]))
+    head = _sub(r"(?:[,.!]\s*)(?:sorry|so sorry)\s*[.!,]*\s*$", "", head)
     return _tidy19(head) + ("." if not head.rstrip().endswith(("?", "!", ".")) else "")
 
 
@@ -6442,10 +6550,31 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
     out = _sub(r",\s*(?:sorry|so sorry|apologies)\s*([.!]?)$", r"\1", out).strip()
+    # a cue after the correction ('…, my mistake, folks'): said of what came before it
+    out = _sub(
+        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?"
+        r"\s*([.!]?)$",
+        r"\1\2",
+        out,
+    )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]
+        after = _sub(r"^(?:no|sorry|i misspeak|i mean),?\s*", "", after)
+        if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
+            # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
+            return f"{before} {after}"
         if _names(before, lexicon) and _names(after, lexicon):
+            same = _rx(r"\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(after)
+            if same and before.rstrip(" .!").lower().endswith(same.group(1).lower()):
+                # "The hammer for Jess, no, the drill for Jess": the same person said again
+                after = after[: same.start()] + same.group(2)
+            instead = _rx(r"^(give|hand|pass) ([A-Z][\w ]*?)(?: instead)?\s*([.!]?)$").match(after)
+            said = _ids(before, lexicon, "object")
+            if instead and _only_person(instead.group(2), lexicon) and len(said) == 1:
+                # "Put bottle on shelf, no, give Alice instead": the same object
+                obj = _said(next(iter(said)), lexicon)
+                after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
             out = f"{before}, no, {after}"
     return out if out else text
 
@@ -6466,7 +6595,7 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         need = {"both": 2, "the two": 2, "the three": 3, "the four": 4, "all three": 3}.get(word)
         if not said or (need is not None and len(said) != need) or len(said) < 2:
             return m.group(0)
-        return m.group(2)
+        return "" if m.group(2) == "," else m.group(2)
 
     out = _sub(
         r",\s*(all|both|the two|the three|the four|every one|each one|all three) of them\b"
@@ -6474,7 +6603,7 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         counted,
         out,
     )
-    out = _sub(r"\bboth of the (?=[a-z]+s\b)", "both ", out)
+    out = _sub(r"\bboth of the (?=(?:[a-z]+ )?[a-z]+s\b)", "both ", out)
     out = _sub(r"\ball of the (?=[a-z]+s\b)", "all the ", out)
     out = _sub(r"\b(any|whichever|either) ([a-z]+) at all\b", r"\1 \2", out)
     out = _sub(r"\ba single (?=[a-z]+\b)", "one ", out)
@@ -6495,6 +6624,20 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         r"\b((?:things?|items?|ones?) that (?:aren't|are not|isn't|is not) the [a-z ]+?) or "
         r"(the [a-z ]+?)\b(?=[.!?,]|$)",
         r"\1 and \2",
+        out,
+    )
+
+    def rest_of(m: re.Match[str]) -> str:
+        n = _NUMBER18.get(m.group(1).lower())
+        left = _ids(m.group(2), lexicon, "object")
+        if n is None or not left or len(lexicon.scene.objects) - len(left) != n:
+            return m.group(0)
+        return f"everything except {m.group(2)}"
+
+    out = _sub(
+        r"\bthe (two|three|four|five) (?:things|items|objects) that (?:aren't|are not) "
+        r"(the [a-z ]+?(?: and the [a-z ]+?)*)(?=[.!?,]|$)",
+        rest_of,
         out,
     )
 
@@ -6519,7 +6662,7 @@ def _negation19(text: str, lexicon: Lexicon) -> str:
     <colour or size>' (the one X that is not: named when one is left, else its readings);
     'P, not Q,' and ', not Q' for a person Q said nowhere else (Q is no recipient: taken off)."""
     out = _sub(r"\bthat(?:'s| is) not\b", "that isn't", text)
-    out = _sub(r"(?<=[a-z]) save (?=the |for the )", " except ", out)
+    out = _sub(r"(?<=[a-z,]) save (?=the |for the )", " except ", out)
     out = _sub(
         r"\bexcept (?!the\b|for\b|a\b|an\b|that\b)([a-z]+)\b",
         lambda m: f"except the {m.group(1)}" if _ids(m.group(1), lexicon, "object") else m.group(0),
@@ -6555,7 +6698,7 @@ def _negation19(text: str, lexicon: Lexicon) -> str:
             r"\b(?:each|both|all|every|everyone|them|they)\b", rest, _F
         ):
             return m.group(0)
-        return m.group(2)
+        return " " if m.group(2) == "," else m.group(2)
 
     out = _sub(r",\s*not ([A-Z][\w ]*?)\s*(,|(?=[.!?]|$))", not_person, out)
     return out
@@ -6591,6 +6734,15 @@ def _telegraph19(text: str, lexicon: Lexicon) -> str:
     while k < len(sentences):
         s = sentences[k].rstrip(".!?").strip()
         nxt = sentences[k + 1].rstrip(".!?").strip() if k + 1 < len(sentences) else ""
+        to = _rx(r"^(?:and )?(to|on|onto|in) (.+)$").match(nxt) if nxt else None
+        if (
+            to
+            and _objects_only(s, lexicon)
+            and (_only_person(to.group(2), lexicon) or _surface_only(to.group(2), lexicon))
+        ):
+            res.append(f"{s} {to.group(1)} {to.group(2)}.")  # 'The cup. To Alice.'
+            k += 2
+            continue
         person = bool(nxt) and _only_person(nxt, lexicon)
         if (
             nxt
@@ -6624,6 +6776,9 @@ def _archaic19(text: str, _lexicon: Lexicon) -> str:
         (r"\bdoth (?:desire|want|crave|wish for)\b", "wants"),
         (r"\b(?:craveth|desireth|wanteth)\b", "wants"),
         (r"\bhath\b", "has"),
+        (r"\bshall be (given|handed|passed|brought|placed|put|taken)\b", r"should be \1"),
+        (r"\bshall (have|get|receive)\b", r"gets"),
+        (r"\b(?:thereafter|thereupon)\b", "then"),
         (r"\bunto\b", "to"),
         (r"\bprithee\b", "please"),
         (r"\bnay\b", "no"),
