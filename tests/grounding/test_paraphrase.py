@@ -180,6 +180,84 @@ KNOWN_MISSES = frozenset(
         "Everything except the apple is going home with Person B tonight, folks!",
         "Don't give Person A the cup, give it to Person B instead, good!",
         "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
+        # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
+        # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
+        # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
+        # grammar ('be wantin'', 'Bottle is what Alice want', 'Bob want one'), appositions of
+        # roles or things the scene lacks ('My client, Sam', 'the treasure, the teddy bear'),
+        # 'do likewise with', comparatives ('lesser', 'smaller'), 'N deliveries' said after the
+        # steps, fronted recipients ('Unto Person A the chips'), a surface alias used as a verb
+        # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
+        "Ahoy there, me hearty! Be a good shipmate and give the teddy bear to Ava, if ye "
+        "please, arr!",
+        "For the record, and with the greatest respect, would you kindly deliver the stapler "
+        "to Sam. Thank you, no further questions.",
+        "Good morning, good morning! Before the next track, could our robot friend pop the "
+        "lemon over to Mr Novak? Lovely stuff.",
+        "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
+        "maybe go to Carol? Sorry. Thank you.",
+        "Howzit, Jess. Robot, please pass the torch to Jess just now, shot, thanks hey.",
+        "Ooh, and if the robot could just slot the cup through to Person A, please, that would "
+        "be magnificent, absolutely magnificent!",
+        "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
+        "over to Mr Lee. Namaste.",
+        "Um, sorry, is it okay if, sorry, could you give Person B the bottle? Only if it's no "
+        "bother. Sorry!",
+        "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
+        "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
+        "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
+        "Sorry, Bob said he needs the red mug, I think, and Alice, sorry, wants the crisps.",
+        "Bottle is what Alice want, crisps is for Bob one, can or not?",
+        "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
+        "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
+        "Haul the medium box onto the belt, then do likewise with the small one, smartly.",
+        "Person A takes the cup, and then the apple follows it to the very same player!",
+        "Give Person B the bottle, and thereafter the chips unto the same.",
+        "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
+        "Tape on the belt. Gloves to Tom. Scanner to Mia. All hands, go.",
+        "Blue plate to Mr Novak and white plate to Lena and the salt shaker to Marco and "
+        "that's your lot, back after the break.",
+        "Ja, so the big spanner goes to Kofi and then the small one goes in the locker and "
+        "then we're lekker, shot.",
+        "Apple, Person A. Chips, Person B. Cup, Person A. Bottle, Person B. Four deliveries, "
+        "what a display!",
+        "First the apple to Person A then the cup to Person B then we can close the ticket",
+        "The bottle to Person B and then, sorry, the chips to Person A and that's everything I "
+        "think sorry",
+        "Either the notebook or the stapler shall be given to Priya, at your discretion.",
+        "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
+        "Any plate at all for Lena, folks, the white or the blue, whichever!",
+        "Bottle or crisps, any one also can, give Bob.",
+        "Person A and Person B each take one: bottle for Person A, chips for Person B!",
+        "Each patient, gently, receives one blanket, whichever colour.",
+        "Give unto Person B whichever thou wilt of the cup or the apple.",
+        "One apiece, aye: bottle to Person A, chips to Person B.",
+        "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
+        "The two blocks be Lily's treasure, arr, give her both!",
+        "Sorry, both mugs, the red and the blue, could they go to Alice?",
+        "Two items, both give Alice lah.",
+        "The four treasures, all of them, unto Person A.",
+        "Aye aye, Person A's to have both, bottle and chips alike.",
+        "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
+        "bottle and the chips.",
+        "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
+        "Ja, pack the locker with the lot, just not the two spanners.",
+        "Everything left on the pitch bar the bottle and the cup heads to Person A!",
+        "Teddy to Ava, arr! No wait, to Lily, the little pirate.",
+        "The knife to Marco, no, hold on, the tongs to Marco, my mistake, folks.",
+        "The hammer for Jess, eish, sorry, the drill for Jess.",
+        "The cup to Person B! No, it's been redirected, the cup to Person A!",
+        "Unto Person A the chips, nay, I misspeak, the bottle.",
+        "We reported the cup was going to Person A. Correction: it's the apple.",
+        "good evening, tonights order chips for person b plus the cup for person a",
+        "The crsps, Bob want one lah.",
+        "Can help me give Alice the crisps or not?",
+        "Could you see that the chips reach Person A?",
+        "Mia wants the scanner innit, proper sharpish.",
+        "Kofi wants the drill, straightaway like.",
+        "Cart the grey blanket over to Mr Lee.",
+        "If the robot would be so good as to give Ruth the jug.",
+        "Both of the smaller boxes to Tom.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -205,8 +283,8 @@ KNOWN_MISSES = frozenset(
 # another engineer, reviewed by a second one, measured once at the end of session 17, its
 # refusals met by kind in session 18: asserted now, the rest in KNOWN_MISSES; "blind17" written
 # in session 18 by another engineer, reviewed by a second one, measured once at the end of
-# session 18)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind17", "causes19"})
+# session 18, its refusals met by kind in session 19: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -264,6 +342,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes18"].entries}) >= 10
     assert len(CORPORA["blind17"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind17"].entries}) >= 3
+    assert len(CORPORA["causes19"].entries) >= 150
+    assert len({e.scene for e in CORPORA["causes19"].entries}) >= 10
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted
