@@ -27,7 +27,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import PREFIX, Keys, robot_of
 from hltl.bus.perception import PerceptionClient
-from hltl.bus.session import executor_opened, zenoh
+from hltl.bus.session import executor_opened, let_go, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
 from hltl.execution.drivers import (
@@ -376,6 +376,7 @@ class BusCell:
         self._resetting: tuple[Any, float] | None = None
         try:
             self._resetting = self._query(self.keys.sim_reset, dumps(reset), commands=False)
+            let_go()  # (its answer is waited for later: the request goes now)
         except BaseException:  # the bus failed: nothing is left declared
             self.close()
             raise
@@ -1046,6 +1047,7 @@ class BusCell:
             return
         with contextlib.suppress(BusError):
             self._query(self.keys.sim_step, dumps(req), commands=False)
+            let_go()  # (not waited for: the request goes now, not when the loop next waits)
 
     def _foresee_first(self, start: dict[str, Any] | None = None) -> None:
         """Ask the node to foresee the episode's first step from the executor's first basis,
@@ -1072,6 +1074,7 @@ class BusCell:
             got = self._query(self.keys.sim_step, dumps(req), commands=False)
         except BusError:  # the bus failed: the loop's first query says so
             return
+        let_go()  # (not waited for: the request goes now, not when the loop next waits)
         if got is not None:
             self._first = got[0]
             self._take_first()

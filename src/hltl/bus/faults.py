@@ -10,6 +10,8 @@ import time
 from dataclasses import dataclass
 from typing import Any
 
+from hltl.bus.session import let_go
+
 
 @dataclass(frozen=True, slots=True)
 class FaultModel:
@@ -134,6 +136,7 @@ class Link:
             self.session.put(key, payload)
         else:
             self.session.put(key, payload, attachment=attachment)
+        let_go()
 
     def _sender(self) -> None:
         with self._lock:

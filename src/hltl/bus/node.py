@@ -32,7 +32,7 @@ from hltl.bus.codec import (
 )
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
-from hltl.bus.session import executor_here
+from hltl.bus.session import executor_here, let_go
 from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
@@ -1806,6 +1806,7 @@ class CellNode:
         if self.link.reply_lost():
             return False
         query.reply(key or str(query.key_expr), payload)
+        let_go()  # (the answer goes now, not once this thread next waits)
         return True
 
 

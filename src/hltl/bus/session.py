@@ -7,6 +7,7 @@ import json
 import re
 import socket
 import threading
+import time
 from dataclasses import dataclass
 from typing import Any
 
@@ -40,6 +41,17 @@ def executor_here() -> bool:
     not, since a yield of the interpreter is also one of the CPU (``time.sleep(0)``: on a busy
     machine, a millisecond or more)."""
     return _executors > 0
+
+
+def let_go() -> None:
+    """Give this thread's core up for a moment right after handing Zenoh a message that someone
+    waits for, when this thread has more work to do at once (the node simulating on after an
+    answer, the executor grounding after its reset and briefing): Zenoh's sending thread,
+    woken on this core, otherwise waits for the scheduler to take the core from a thread that
+    keeps it busy, up to a scheduler tick (traced with strace: a reply's ``sendto`` about 4 ms
+    after the ``query.reply`` that woke it). A shorter interpreter switch interval did not do;
+    ``time.sleep(0)`` did (docs/bus.md, "Where the time goes (session 19)")."""
+    time.sleep(0)
 
 
 def zenoh() -> Any:
