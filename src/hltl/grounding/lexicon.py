@@ -1250,6 +1250,8 @@ class Lexicon:
         # texts lexed while one instruction is read (the normaliser looks at the same words in
         # many of its steps); emptied by forget() when a new instruction starts
         self._lexed: dict[str, tuple[Item, ...]] = {}
+        # the grammar's reading (a tree, or the refusal) of each text read for this instruction
+        self.readings: dict[str, object] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
         self._own: frozenset[str] = frozenset()
@@ -1367,6 +1369,7 @@ class Lexicon:
     def forget(self) -> None:
         """Drop the texts lexed so far (called when a new instruction starts)."""
         self._lexed.clear()
+        self.readings.clear()
 
     def lexed(self, text: str) -> tuple[Item, ...] | None:
         return self._lexed.get(text)

@@ -79,10 +79,16 @@ def canonical19(text: str, lexicon: Lexicon) -> str:
     stance, hedges, closers, corrections by cue, counts, exclusions, bare names), then by every
     other one: tried only where ``canonical`` alone is refused, so what that reads stays read as
     it was."""
+    return canonical(rewritten19(text, lexicon), lexicon)
+
+
+def rewritten19(text: str, lexicon: Lexicon) -> str:
+    """``text`` rewritten by the session-19 mechanisms alone (read first: when that reads, the
+    other rewrites need not run again)."""
     out = " ".join(text.split())
     for step in _STEPS19:
         out = step(out, lexicon)
-    return canonical(out, lexicon)
+    return out
 
 
 def _names(text: str, lexicon: Lexicon) -> list[Item]:
@@ -5361,6 +5367,7 @@ def _scene_words(scene: Scene) -> frozenset[str]:
     return frozenset(w for n in names for w in re.split(r"[\s_]+", n.lower()) if w)
 
 
+@functools.lru_cache(maxsize=4096)
 def _near_verb(word: str) -> bool:
     """Whether ``word`` is one edit from a verb the grammar reads ('hnad' for 'hand')."""
     for verb in VERBS:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import itertools
 import re
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Literal, cast
 
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
@@ -23,6 +23,7 @@ from hltl.grounding.normalise import (
     apostrophes,
     canonical,
     canonical19,
+    rewritten19,
     hearer_named,
     one_person,
     order_colons,
@@ -127,8 +128,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         best: GroundingError = refused
         tried = {said}
         # the rewrites of every session, then (only where those are refused) the session-19
-        # ones ahead of them: what the first reads stays read as it was
-        for rewrite in (canonical, canonical19):
+        # ones alone, then ahead of the others: what the first reads stays read as it was
+        for rewrite in (canonical, rewritten19, canonical19):
             plain = rewrite(text, lexicon)
             if plain in tried:
                 continue
@@ -204,7 +205,23 @@ def _readings(error: GroundingError) -> bool:
 
 
 def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
-    """The grammar's reading of ``text`` as it is said."""
+    """The grammar's reading of ``text`` as it is said (each text read once per instruction:
+    the rewrites try the same text more than once)."""
+    known = lexicon.readings.get(text)
+    if isinstance(known, GroundingError):
+        raise GroundingError(str(known))
+    if known is not None:
+        return cast(Node, known)
+    try:
+        node = _read_now(text, scene, lexicon)
+    except GroundingError as refused:
+        lexicon.readings[text] = refused
+        raise
+    lexicon.readings[text] = node
+    return node
+
+
+def _read_now(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     items = lex(text, lexicon)
     # "again" said to repeat a task: read exactly (twice) or refused, never once
     again = next((it for it in items if it.lemma == "filler" and it.text.lower() == "again"), None)
