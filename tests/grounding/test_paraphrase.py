@@ -196,9 +196,6 @@ KNOWN_MISSES = frozenset(
         "lemon over to Mr Novak? Lovely stuff.",
         "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
         "maybe go to Carol? Sorry. Thank you.",
-        "Howzit, Jess. Robot, please pass the torch to Jess just now, shot, thanks hey.",
-        "Ooh, and if the robot could just slot the cup through to Person A, please, that would "
-        "be magnificent, absolutely magnificent!",
         "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
         "over to Mr Lee. Namaste.",
         "Um, sorry, is it okay if, sorry, could you give Person B the bottle? Only if it's no "
@@ -243,8 +240,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Ja, pack the locker with the lot, just not the two spanners.",
         "Everything left on the pitch bar the bottle and the cup heads to Person A!",
-        "Teddy to Ava, arr! No wait, to Lily, the little pirate.",
-        "The knife to Marco, no, hold on, the tongs to Marco, my mistake, folks.",
         "The hammer for Jess, eish, sorry, the drill for Jess.",
         "The cup to Person B! No, it's been redirected, the cup to Person A!",
         "Unto Person A the chips, nay, I misspeak, the bottle.",
@@ -252,11 +247,7 @@ KNOWN_MISSES = frozenset(
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
         "Can help me give Alice the crisps or not?",
-        "Could you see that the chips reach Person A?",
-        "Mia wants the scanner innit, proper sharpish.",
-        "Kofi wants the drill, straightaway like.",
         "Cart the grey blanket over to Mr Lee.",
-        "If the robot would be so good as to give Ruth the jug.",
         "Both of the smaller boxes to Tom.",
     }
 )

@@ -23,6 +23,7 @@ from tests.grounding.helpers import (
     NURSERY,
     OFFICE,
     SCENES,
+    WARD,
     WORKSHOP,
     assert_reads,
     assert_refused,
@@ -112,8 +113,11 @@ def test_a_closer_changes_nothing(scene: Scene, k: int, closer: str) -> None:
         ("Omar, not Emma, needs the sponge.", "sponge>B", LAB),
         ("All the pens to Priya, save the black one.", "pen_blue>A & pen_red>A", OFFICE),
         ("Zoe gets the book that isn't red.", "book_green>C", CLASSROOM),
-        # bare names
+        # bare names, a greeting of the recipient, an apposition after a corrected person
         ("Bib. Highchair. Now.", "bib@highchair", NURSERY),
+        ("Howzit, Jess. Robot, please pass the torch to Jess, shot.", "torch>B", WORKSHOP),
+        ("Teddy to Ava! No wait, to Lily, the little pirate.", "teddy>A", NURSERY),
+        ("If the robot would be so good as to give Ruth the jug.", "jug>A", WARD),
     ],
 )
 def test_a_kind_is_read_through(text: str, want: str, scene: Scene) -> None:
@@ -137,6 +141,8 @@ def test_a_kind_is_read_through(text: str, want: str, scene: Scene) -> None:
         ("Put all three blocks on the mat.", NURSERY),
         ("Everything except the spatula to Alice.", CELL),
         ("Send it her way.", CELL),
+        ("Jess. Give Kofi the torch.", WORKSHOP),  # said to Jess: is she to get it?
+        ("Mia wants the scanner, stapler.", DEPOT),
         ("Wash the cup.", CELL),
         ("Chuck out the bib.", NURSERY),
         # wrong readings on main before session 19

@@ -6086,6 +6086,8 @@ _INTERJECTION19 = frozenset(
         *("smart", "sharpish", "chop", "lickety-split", "asap", "and", "just", "there"),
         *("whoa", "wow", "gosh", "golly", "blimey", "crikey", "cor", "heck", "hmm", "um", "uh"),
         *("er", "erm", "mighty", "fine", "proper", "like", "hands", "slow", "slowly", "magic"),
+        *("magnificent", "marvellous", "marvelous", "wonderful", "brilliant", "fantastic"),
+        *("superb", "excellent", "perfect", "great", "lovely", "splendid", "terrific", "amazing"),
     }
 )
 # words that order, count, choose, negate or time what is asked: an -ly word among them is no
@@ -6182,9 +6184,14 @@ def _filler_stretch(chunk: str, after_object: bool, lexicon: Lexicon) -> bool:
         return False
     held = [w for w in words if _held_word(w, lexicon)]
     allowed = ("me", "my", "our", "old", "little", "big", "good", "so", "just", "and")
+    if words == ["like"]:
+        return True  # "…, straightaway like": said after the request
     if any(w not in allowed for w in held):
         return False
-    if after_object and any(_unknown_word(w, lexicon) for w in words):
+    if after_object and any(
+        _unknown_word(w, lexicon) and w not in _INERT_WORDS and w not in _INTERJECTION19
+        for w in words
+    ):
         return False
     return _names_nothing(chunk, lexicon)
 
@@ -6429,8 +6436,8 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
         out = _sub(r"\bif at all possible\b\s*,?\s*", "", out)
     out = _sub(
         r"^(?:so,? |oh,? |and )?if (?:you|the robot|we|someone)(?:'d| would| could| can) "
-        r"(?:just |please |kindly )*(?=(?:[a-z]+) (?:the|it|them|a|an|[A-Z])\b)",
-        "",
+        r"(?:just |please |kindly )*(?=([a-z]+) )",
+        lambda m: "" if m.group(1).lower() in VERBS else m.group(0),
         out,
     )
     out = _sub(
@@ -6583,6 +6590,14 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
                 obj = _said(next(iter(said)), lexicon)
                 after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
             out = f"{before}, no, {after}"
+            out = _sub(
+                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?\s*([.!]?)$",
+                r"\1",
+                out,
+            )
+            same = _rx(r"(?<=, no, )(.+?)\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(out)
+            if same and out[: same.start()].rstrip(" ,no").lower().endswith(same.group(2).lower()):
+                out = out[: same.start()] + same.group(1) + same.group(3)
     return out if out else text
 
 
@@ -6733,9 +6748,22 @@ def _telegraph19(text: str, lexicon: Lexicon) -> str:
         ),
         out,
     )
+    out = _sub(
+        r"(,\s*(?:no,\s*)?to [A-Z][\w ]*?),\s*the (?:[a-z]+ ){0,2}[a-z]+\s*([.!]?)$",
+        lambda m: (
+            m.group(1) + m.group(2)
+            if _names_nothing(m.group(0)[len(m.group(1)) :], lexicon)
+            else m.group(0)
+        ),
+        out,
+    )
     sentences = re.split(r"(?<=[.!?])\s+", out.strip())
     if len(sentences) < 2:
         return out
+    first = sentences[0].rstrip(".!?").strip()
+    rest = " ".join(sentences[1:])
+    if _only_person(first, lexicon) and _ids(first, lexicon) <= _ids(rest, lexicon, "human"):
+        return rest  # "Howzit, Jess. Please pass the torch to Jess.": said to her first
     res: list[str] = []
     k = 0
     while k < len(sentences):
@@ -6768,6 +6796,23 @@ def _telegraph19(text: str, lexicon: Lexicon) -> str:
 
 
 def _archaic19(text: str, _lexicon: Lexicon) -> str:
+    out = _archaic19_words(text)
+    out = _sub(
+        r"\b(?:through|along|across|round|around|aloft)\s+(?=(?:to|on|onto|into)\b)", "", out
+    )
+    if out != text and text.rstrip().endswith("?"):
+        # "Could you see that the chips reach Person A?": a request once the frame is off
+        out = _sub(r"^(the [a-z ]+ goes to [A-Z][\w ]*?)\s*\?$", r"\1.", out)
+    out = _sub(
+        r"^((?:either )?(?:the )?[a-z ]+ or (?:the )?[a-z ]+) should be (?:given|handed|passed|"
+        r"brought|sent) to\b",
+        r"\1 goes to",
+        out,
+    )
+    return out
+
+
+def _archaic19_words(text: str) -> str:
     """Older English said as today's: thou/thee/ye (you), wouldst/wilt/doth/hath (would, will,
     does, has), unto (to), prithee (please), 'bear the X' (bring), nay (no), craveth/desireth
     (wants); 'supply / furnish / provide / equip P with X' (give P X); 'make sure X reaches P'

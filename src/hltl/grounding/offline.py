@@ -23,11 +23,11 @@ from hltl.grounding.normalise import (
     apostrophes,
     canonical,
     canonical19,
-    rewritten19,
     hearer_named,
     one_person,
     order_colons,
     people_named,
+    rewritten19,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine
 from hltl.grounding.tree import (
