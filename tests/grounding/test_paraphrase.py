@@ -130,7 +130,6 @@ KNOWN_MISSES = frozenset(
         "Tom and Mia each get one thing: the tape for Tom, the gloves for Mia",
         "Lily wants the two blocks to bang together",
         "Both plates need to go on the worktop before service",
-        "Tidy the three pens away in the box",
         "Mia wants the two smaller boxes",
         "Clear everything onto the belt, leave the boxes where they are",
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
@@ -158,13 +157,11 @@ KNOWN_MISSES = frozenset(
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
         "omg bestie pls give Sam the stapler, slay",
-        "Prithee, good robot, bear the globe unto Mrs Ortiz. Anon!",
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
         "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
         "Those three things that aren't the bottle, give them to Person A.",
-        "Two of the pens for Priya, namely the red one and the blue one.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
@@ -175,10 +172,6 @@ KNOWN_MISSES = frozenset(
         "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
-        "All three of the pens, black, blue and red, into the box, that's the deliverable.",
-        "Person B gets the three things that aren't the apple.",
-        "Everything except the apple is going home with Person B tonight, folks!",
-        "Don't give Person A the cup, give it to Person B instead, good!",
         "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
