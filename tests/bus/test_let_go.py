@@ -1,17 +1,21 @@
-"""Whoever hands Zenoh a message that someone waits for and then works on at once gives its core
-up for a moment (``hltl.bus.session.let_go``), so that Zenoh's sending thread, woken on that
-core, sends it now rather than at the next scheduler tick (docs/bus.md, "Where the time goes
-(session 19)"): the node after each answer, the executor after each request it does not wait
-for at once (the reset, the foresight requests), and every put through a :class:`Link`."""
+"""A message someone waits for goes at once (docs/bus.md, "Where the time goes (session 19)").
+Whoever hands Zenoh such a message and then works on at once gives its core up for a moment
+(``hltl.bus.session.let_go``), so that Zenoh's sending thread, woken on that core, sends it now
+rather than at the next scheduler tick: the node after each answer, the executor after each
+request it does not wait for at once (the reset, the foresight requests), and every put through
+a :class:`Link`. The node answers the reset out of its lock, so that its step thread takes up
+the request to foresee the first step meanwhile."""
 
 from __future__ import annotations
 
+import threading
 from typing import Any
 
 import pytest
 
 from hltl.bus.driver import BusCell
 from hltl.bus.faults import Link
+from hltl.bus.node import CellNode
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from tests.bus.helpers import Loopback, same_as_local
@@ -51,9 +55,13 @@ def test_the_node_lets_go_after_each_answer(
     try:
         assert node._reply_bytes(_Query(events), b"{}")
         assert node._reply_bytes(_Query(events), b"{}")
+        # with an executor in the node's process, one of the two waits for the interpreter:
+        # the other core is Zenoh's
+        monkeypatch.setattr("hltl.bus.node.executor_here", lambda: True)
+        assert node._reply_bytes(_Query(events), b"{}")
     finally:
         node.close()
-    assert events == ["reply", "let go", "reply", "let go"]
+    assert events == ["reply", "let go", "reply", "let go", "reply"]
 
 
 def test_a_put_lets_go() -> None:
@@ -92,3 +100,73 @@ def test_the_executor_lets_go_after_the_requests_it_does_not_wait_for(
     unwaited = [i for i, e in enumerate(events) if e in ("reset", "foresee")]
     assert events[0] == "reset" and sum(e == "foresee" for e in events) >= 2
     assert all(events[i + 1] == "let go" for i in unwaited)
+
+
+def test_the_reset_is_answered_out_of_the_node_lock(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The reset's answer goes out of the node's lock, so that the step thread takes up the
+    request to foresee the first step (sent right after the reset) while it goes; every other
+    answer, under it. The episode is the in-process one."""
+    held: dict[str, list[bool]] = {"reset": [], "step": []}
+    reply = CellNode._reply_bytes
+
+    def recorded(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
+        kind = "reset" if str(query.key_expr).endswith("reset") else "step"
+        held[kind].append(self._lock._is_owned())  # type: ignore[attr-defined]
+        return reply(self, query, payload, key)
+
+    monkeypatch.setattr(CellNode, "_reply_bytes", recorded)
+    trial = make_trial("1-1", 0)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    run = loopback.run(trial.scene, **episode)
+    same_as_local(local, run)
+    assert held["reset"] == [False]
+    assert held["step"] and all(held["step"])
+
+
+def test_the_node_lets_go_before_it_plans_or_grounds(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A plan or a grounding ahead takes the node's thread milliseconds: it lets go first (a
+    reply the executor waits for may be queued on its core). The episode is the in-process
+    one."""
+    from hltl.bus import node as N
+
+    events: list[tuple[int, str]] = []  # (the thread, what it did)
+
+    def note(what: str) -> None:
+        events.append((threading.get_ident(), what))
+
+    monkeypatch.setattr(N, "let_go", lambda: note("let go"))
+    monkeypatch.setattr(N, "executor_here", lambda: False)  # (a node in a process of its own)
+    plan, ground = N.foresee_steps, N.ground_all
+
+    def planned(*a: Any, **k: Any) -> Any:
+        note("plan")
+        return plan(*a, **k)
+
+    def grounded(*a: Any, **k: Any) -> Any:
+        note("ground")
+        return ground(*a, **k)
+
+    reply = CellNode._reply_bytes
+
+    def replied(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
+        note("reply")
+        return reply(self, query, payload, key)
+
+    monkeypatch.setattr(N, "foresee_steps", planned)
+    monkeypatch.setattr(N, "ground_all", grounded)
+    monkeypatch.setattr(CellNode, "_reply_bytes", replied)
+    trial = make_trial("2-2", 0)  # (a second request, grounded ahead by the node)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    run = loopback.run(trial.scene, **episode)
+    same_as_local(local, run)
+    steps = [e for t, e in events if t == run.node._server.ident]  # (the step thread's)
+    long = [i for i, e in enumerate(steps) if e in ("plan", "ground")]
+    assert "plan" in steps and "ground" in steps
+    # (a let-go of its own, not the one after an answer)
+    assert all(steps[i - 1] == "let go" and steps[i - 2] != "reply" for i in long)

@@ -113,8 +113,10 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     # the full model have a schedule there; one level up, sessions whole give a plan, which is
     # optimal without the full model being asked there (schedule._shave, whole_first). (Random
     # 4 seed 1 and grid 5 seed 4 were such cells until session 12's counting rows: the cheaper
-    # model now proves their optimum itself.)
+    # model now proves their optimum itself.) Without the roof: the walk's plan there is
+    # optimal, and the climb's first round below it proves it without the full model.
     monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(anytime, "ROOF_ROUNDS", 0)
     asked: list[tuple[int, bool, bool, bool]] = []  # level, holders, whole, found
     real = schedule.relaxed_steps
 
@@ -142,6 +144,32 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     assert (level, True, False, False) in asked  # the full model: none
     assert (level + 1, True, True, True) in asked  # sessions whole: a plan
     assert (level + 1, True, False, True) not in asked  # the full model not needed there
+
+
+@pytest.mark.parametrize("roof", [True, False])
+def test_the_walks_plan_is_the_climbs_roof(roof: bool, monkeypatch: pytest.MonkeyPatch) -> None:
+    # random 5 seed 0: the walk's plan (5.8 s) is optimal. As the roof (levels within 20 of
+    # the floor) the climb's first round asks 5.6 and 5.7 s; 5.7's schedule is no plan, nor
+    # has the full model one there, so the roof is the bound and the walk's plan is returned,
+    # no level from the floor (4.6 s) to 5.5 s is asked, nor any at or above 5.8 s. Without
+    # the roof (ROOF_ROUNDS 0) the climb starts at the floor and ends above 5.8 s
+    # (docs/planner.md, "The step model's roof")
+    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(schedule, "ROOF_SPAN", 20)
+    if not roof:
+        monkeypatch.setattr(anytime, "ROOF_ROUNDS", 0)
+    levels = step_levels(monkeypatch)
+    c = delivery_cell("random", 5, 0)
+    problem = Problem(c.scene, c.spec)
+    found = anytime.certified(problem, _Search(problem), math.inf)
+    expected = search(Problem(c.scene, c.spec), timeout=120)
+    assert found is not None and expected.makespan is not None
+    assert found[0] == to_ticks(expected.makespan) == to_ticks(5.8)
+    check_plan(c.scene, c.spec, planner._solved(problem, found, expected.stats).to_dict())
+    if roof:
+        assert set(levels) == {56, 57}
+    else:
+        assert min(levels) == 46 and max(levels) >= 58
 
 
 def test_sessions_whole_asked_ahead_give_the_same_bound_and_plan(
@@ -236,6 +264,27 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
         assert got.steps == plan_steps(problem, cert.best[1])
     else:
         assert cert.best[0] > to_ticks(got.makespan)
+
+
+@pytest.mark.parametrize("proved", [True, False])
+def test_a_timed_out_plan_carries_the_phases_bound(
+    proved: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # line 10 seed 0 (optimum 14.7 s, A* needs about 16 s): A* times out after about 2 s,
+    # its own bound well below 14.7 s; a first phase that proved 14.7 s (as the step
+    # climb's "no"s can) gives the timed-out result that bound, and says so
+    c = delivery_cell("line", 10, 0)
+    bound = to_ticks(14.7) if proved else 0
+    monkeypatch.setattr(planner, "certify", lambda *_: anytime.Certificate(None, None, bound))
+    got = plan(c.scene, c.spec, timeout=2.0)
+    assert got.status is planner.PlanStatus.TIMEOUT and got.lower_bound is not None
+    assert got.makespan is not None and got.makespan >= 14.7 - 1e-9
+    if proved:
+        assert got.lower_bound == pytest.approx(14.7)
+        assert "the first phase proved 14.700 s" in got.reason
+    else:
+        assert got.lower_bound < 14.7
+        assert "first phase" not in got.reason
 
 
 def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(

@@ -376,6 +376,55 @@ def test_a_skipping_round_asks_levels_as_far_apart_as_the_skip(
     assert not {2, 4, 10, 14} & set(levels)
 
 
+@pytest.mark.parametrize(("roof", "below"), [(33, False), (36, True), (42, True)])
+def test_a_roof_first_asks_the_levels_just_below_it(
+    roof: int, below: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # grid 4 seed 1, whose cheaper model's optimum is 33 units, from level 25. A roof (a plan's
+    # makespan) at 33: the first round asks 31 and 32, whose "no" proves it, and no level below
+    # them is asked (the bound is the roof, with no schedule). At 36 and 42: 34 and 35, 40 and
+    # 41 have schedules, and the climb goes on from 25 to the same bound and schedule as
+    # without a roof (docs/planner.md, "The step model's roof")
+    if schedule.WORKERS < 2:
+        pytest.skip("needs two cores (two levels asked at once)")
+    _, problem, s, node, tgts = _at_start("grid", 4, 1)
+    unit = schedule.time_unit(problem)
+    graph = s.heuristic.graph
+
+    def climb(upper: int | None, descend: bool) -> tuple[schedule.ScheduleBound, list[int]]:
+        monkeypatch.undo()
+        levels = step_levels(monkeypatch)
+        deadline = time.perf_counter() + DEADLINE_S
+        res = schedule._shave(
+            problem,
+            graph,
+            node,
+            tgts,
+            25,
+            None if upper is None else upper * unit,
+            deadline,
+            0,
+            0,
+            True,
+            True,
+            descend=descend,
+        )
+        return res, levels
+
+    plain, plain_levels = climb(None, False)
+    assert plain.ticks == 33 * unit and plain.steps is not None
+    res, levels = climb(roof, True)
+    assert {roof - 2, roof - 1} <= set(levels)
+    assert res.ticks == 33 * unit
+    if below:
+        assert res.steps == plain.steps  # (one worker, a fixed seed at a fixed level)
+        assert 25 in levels
+    else:
+        assert res.steps is None and res.solved
+        assert set(levels) == {31, 32}
+        assert 25 in plain_levels  # (without a roof the climb starts at the floor)
+
+
 @pytest.mark.parametrize(
     ("layout", "n", "seed"), [("grid", 4, 1), ("random", 4, 1), ("line", 4, 0)]
 )
@@ -417,7 +466,8 @@ def test_the_climb_says_how_many_questions_it_asks_at_once(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     # exact mode's A* process (planner._Apart) is paused through the climb's rounds that ask
-    # a level on every core: the climb tells how many a round asks (2) and 0 when it ends
+    # a level on every core: the climb tells how many a round asks (2), how many are still
+    # running as its questions end, and 0 when it ends
     from hltl.planner import lns
 
     _, problem, s, node, tgts = _at_start("grid", 4, 1)
@@ -443,4 +493,13 @@ def test_the_climb_says_how_many_questions_it_asks_at_once(
         lns.share_busy(None)
     assert res.solved
     assert seen[-1] == 0 and max(seen) == 2
-    assert all(a == 0 for a in seen[1::2]) and all(a > 0 for a in seen[::2])  # round, end
+    rounds: list[list[int]] = [[]]  # what each round told before its end
+    for told in seen:
+        if told:
+            rounds[-1].append(told)
+        else:
+            rounds.append([])
+    assert rounds.pop() == []
+    assert len(rounds) >= 2
+    # a round begins with its questions, then fewer are left
+    assert all(r and r == sorted(r, reverse=True) and len(set(r)) == len(r) for r in rounds)

@@ -525,60 +525,70 @@ class CellNode:
     # -- episodes ----------------------------------------------------------------------------------
 
     def _on_reset(self, query: Any) -> None:
+        out = None
         with self._guard(query):
-            d = loads(_payload(query), "reset request")
-            try:
-                # (the scene this node serves, as it travels, needs no parsing again)
-                wire = d["scene"]
-                scene = self.scene if wire == self._scene_wire else scene_from_dict(wire)
-                events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
-                perception = PerceptionModel(**d["perception"])
-                episode, seed = str(d["episode"]), int(d["seed"])
-            except (KeyError, TypeError, ValueError, HltlError) as exc:
-                raise BusError(f"malformed reset request: {exc}") from None
-            clock = _Clock.parse(d.get("realtime"), self.period)
-            cur = self._ep
-            if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
-                self._reply_bytes(query, cur.last_reply)  # a retransmission: same episode
-                return
-            if scene != self.scene:
-                raise BusError(
-                    f"this node serves the scene {self.scene.source} "
-                    f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
-                )
-            if cur is not None and cur.clock is not None:
-                cur.clock.stop.set()  # a new episode replaces the one running in real time
-            records: list[LogRecord] = []
-            log = EventLog(on_record=records.append)
-            cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
-            self._ep = ep = _Episode(episode, cell, records)
-            self._reset_ids.append(episode)
-            self._seq = 0  # reports are numbered per episode (the executor counts from 0)
-            self.stats.episodes += 1
-            self.stats.starts = {}
-            obs = cell.observe(0.0)
-            ep.seen = obs
-            _remember(ep.recent, obs)
-            answer = {
-                "episode": episode,
-                "observation": world_to_wire(obs),
-                **self._clock(cell, 0.0),
-                "records": self._flush(),
-            }
-            if clock is not None:
-                ep.clock = clock
-                clock.epoch = time.monotonic()  # cell time 0 is now: the cell was just built
-                clock.records.extend(answer["records"])
-                clock.last = {"episode": episode, "n": 0, "t": 0.0, **answer}
-                del clock.last["records"]
-                answer["realtime"] = {"t": 0.0, "factor": clock.factor, "period": clock.period}
-            reply = dumps(answer)
-            ep.last_reply = reply
-            self._reply_bytes(query, reply)
-            if clock is not None:
-                threading.Thread(
-                    target=self._run_clock, args=(ep,), name="hltl-node-clock", daemon=True
-                ).start()
+            out = self._reset(query)
+        if out is None:  # (refused: answered as such)
+            return
+        # (out of the lock: the step thread takes up the request to foresee the first step,
+        # sent right after the reset, while this answer goes)
+        self._reply_bytes(query, out[0])
+        if out[1] is not None:
+            threading.Thread(
+                target=self._run_clock, args=(out[1],), name="hltl-node-clock", daemon=True
+            ).start()
+
+    def _reset(self, query: Any) -> tuple[bytes, _Episode | None]:
+        """Start the episode a reset request asks for (under the node's lock): the answer, and
+        the episode if its clock is to start once the answer has gone (real time)."""
+        d = loads(_payload(query), "reset request")
+        try:
+            # (the scene this node serves, as it travels, needs no parsing again)
+            wire = d["scene"]
+            scene = self.scene if wire == self._scene_wire else scene_from_dict(wire)
+            events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
+            perception = PerceptionModel(**d["perception"])
+            episode, seed = str(d["episode"]), int(d["seed"])
+        except (KeyError, TypeError, ValueError, HltlError) as exc:
+            raise BusError(f"malformed reset request: {exc}") from None
+        clock = _Clock.parse(d.get("realtime"), self.period)
+        cur = self._ep
+        if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
+            return cur.last_reply, None  # a retransmission: same episode
+        if scene != self.scene:
+            raise BusError(
+                f"this node serves the scene {self.scene.source} "
+                f"(robots {', '.join(self.scene.robot_ids)}); the executor asked for another"
+            )
+        if cur is not None and cur.clock is not None:
+            cur.clock.stop.set()  # a new episode replaces the one running in real time
+        records: list[LogRecord] = []
+        log = EventLog(on_record=records.append)
+        cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
+        self._ep = ep = _Episode(episode, cell, records)
+        self._reset_ids.append(episode)
+        self._seq = 0  # reports are numbered per episode (the executor counts from 0)
+        self.stats.episodes += 1
+        self.stats.starts = {}
+        obs = cell.observe(0.0)
+        ep.seen = obs
+        _remember(ep.recent, obs)
+        answer = {
+            "episode": episode,
+            "observation": world_to_wire(obs),
+            **self._clock(cell, 0.0),
+            "records": self._flush(),
+        }
+        if clock is not None:
+            ep.clock = clock
+            clock.epoch = time.monotonic()  # cell time 0 is now: the cell was just built
+            clock.records.extend(answer["records"])
+            clock.last = {"episode": episode, "n": 0, "t": 0.0, **answer}
+            del clock.last["records"]
+            answer["realtime"] = {"t": 0.0, "factor": clock.factor, "period": clock.period}
+        reply = dumps(answer)
+        ep.last_reply = reply
+        return reply, None if clock is None else ep
 
     def _serve_steps(self) -> None:
         """Answer step queries one at a time until the node closes (its queryable is withdrawn);
@@ -880,6 +890,7 @@ class CellNode:
         key = (tuple(instructions), bs.monitor.done(q_now))
         memo = ep.ground_memo.get(key)
         if memo is None or memo[0] is not spec:  # (not grounded yet against this spec)
+            self._let_go()  # (as before a plan: grounding takes milliseconds)
             made = [
                 u.spec
                 for u in ground_all(self._grounder, instructions, self.scene, spec, key[1])
@@ -1403,6 +1414,7 @@ class CellNode:
         assert bs is not None and numbers is not None
         w = world.with_unavailable(frozenset(s.unavailable)).with_time(s.t)
         basis = Basis(bs.basis.spec, bs.basis.version, s.q, bs.basis.planner)
+        self._let_go()  # (a plan takes a millisecond or more: what waits for this core first)
         steps = foresee_steps(self.scene, basis, bs.monitor, w)
         s.own, s.planned, s.ctx = True, True, self._context(world)
         if not steps:
@@ -1806,8 +1818,16 @@ class CellNode:
         if self.link.reply_lost():
             return False
         query.reply(key or str(query.key_expr), payload)
-        let_go()  # (the answer goes now, not once this thread next waits)
+        self._let_go()  # (the answer goes now, not once this thread next waits)
         return True
+
+    @staticmethod
+    def _let_go() -> None:
+        """:func:`~hltl.bus.session.let_go`, in a process of its own: with an executor in this
+        process one of the two waits for the other (the interpreter lock), which leaves the
+        other core to Zenoh's threads (and this node yields between ticks anyway)."""
+        if not executor_here():
+            let_go()
 
 
 # What look-ahead keeps as it is in the 3D simulator: the posed MuJoCo model (``stage``: its

@@ -120,6 +120,7 @@ def plan(
     t0 = time.perf_counter()
     state = None
     best: _Found | None = None  # a plan found before A*: A* looks only for shorter ones
+    proved = 0  # a lower bound (ticks) the first phase proved on every plan
     result: PlanResult | None = None
     if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
         state = _Search(problem)
@@ -150,7 +151,7 @@ def plan(
             return _solved(problem, cert.optimal, replace(stats, phase=phase, held=held))
         if result is not None:
             result = replace(result, stats=replace(result.stats, phase=phase, held=held))
-        best = cert.best
+        best, proved = cert.best, cert.bound
     if result is None:
         result = search(
             problem,
@@ -171,6 +172,11 @@ def plan(
         # as short: the same plan is returned whichever came first)
         return _solved(problem, best, result.stats)
     if result.status is PlanStatus.TIMEOUT:
+        if proved and (result.lower_bound is None or to_ticks(result.lower_bound) < proved):
+            # (the step climb's "no"s may have proved more than A*'s open list)
+            lb = to_seconds(proved)
+            reason = f"{result.reason}; the first phase proved {lb:.3f} s"
+            result = replace(result, lower_bound=lb, reason=reason)
         # the walk checks the clock between routings: leave room for the last one
         return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve, best)
     return result

@@ -61,6 +61,10 @@ BESIDE_WORK = 4.0
 # climb's floor": solved in 0.05-0.7 s on the 10 x 10 cells, grid seed 4 from 4.3 to 5.7 s,
 # where the step model's cheap rounds took about 3 s to get as far)
 PROFILE_FLOOR_SECONDS = 1.0
+# exact mode's phase improves its prioritized plan by this many rounds of the walk (an order
+# and its moves, about 1 ms each on 10-goal cells) before the step climb, whose roof the plan
+# is (``schedule.schedule_bound``'s ``roof``; 0: no walk and no roof, the climb of session 18)
+ROOF_ROUNDS = 400
 # cells of more goals than SCHEDULE_UP_TO where no pair beats the start bound (grids and random
 # layouts: docs/planner.md, "Profile bound"): the last share of the budget goes to the profile
 # bound, when that share is at least PROFILE_MIN_SECONDS long (``_profile_fits``: 10 s budgets
@@ -727,10 +731,12 @@ def _schedule_at_start(
 @dataclass(frozen=True, slots=True)
 class Certificate:
     """What exact mode's first phase found (``certify``): a plan it proved optimal, and the
-    shortest plan it knows (the same one when proved; either may be None)."""
+    shortest plan it knows (the same one when proved; either may be None); and the lower
+    bound (ticks) it proved on every plan (0: none beyond the start bound's)."""
 
     optimal: _Found | None
     best: _Found | None
+    bound: int = 0
 
 
 def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
@@ -786,6 +792,12 @@ def certify(
     if not lns.available():
         return none
     best = construct(problem, s)
+    if ROOF_ROUNDS > 0 and best is not None and best[0] > h0:
+        # the step climb's roof: a fixed number of rounds (the plan does not depend on the
+        # machine's speed); A*'s process has the other core meanwhile
+        better = _more(problem, s, until, enough=h0, rounds=ROOF_ROUNDS)
+        if better is not None and better[0] < best[0]:
+            best = better
     floor = _profile_floor(problem, s, start, round(h0), best, until)
     if best is not None and floor >= best[0]:
         return Certificate(best, best)  # no plan is shorter
@@ -799,11 +811,12 @@ def certify(
         None,
         until,
         None if beside is None else lambda: beside(best),
+        None if best is None or ROOF_ROUNDS <= 0 else best[0],
     )
     if found is not None:
         return Certificate(found, found)
     if best is None:
-        return none
+        return Certificate(None, None, ticks)
     if ticks >= best[0]:
         return Certificate(best, best)  # no relaxed schedule is shorter
     gls = goals(s, start)
@@ -817,7 +830,7 @@ def certify(
             return Certificate(joint, joint)
         if joint is not None and joint[0] < best[0]:
             best = joint
-    return Certificate(None, best)
+    return Certificate(None, best, ticks)
 
 
 class AstarEnd:
@@ -922,6 +935,7 @@ def step_bound(
     upper: int | None,
     until: float,
     before_full: Callable[[], None] | None = None,
+    roof: int | None = None,
 ) -> tuple[int, _Found | None]:
     """The step bound at ``start`` (``schedule.schedule_bound`` with ``steps``) when it applies
     (fixed positive durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals, a
@@ -929,8 +943,9 @@ def step_bound(
     when the relaxation's schedule at the bound is one (or the schedule with sessions whole
     is): then that plan is optimal. With ``upper`` (a plan's makespan) the levels gallop and
     bisect, without it they are shaved one by one (``schedule.schedule_bound``, which calls
-    ``before_full`` before it asks the full model). (``floor``, None) when the bound does not
-    apply; it is never below ``floor``."""
+    ``before_full`` before it asks the full model, and asks first just below ``roof``, a
+    known plan's makespan). (``floor``, None) when the bound does not apply; it is never below
+    ``floor``."""
     if not schedule.steps_applicable(problem):
         return floor, None
     heur = s.heuristic
@@ -961,6 +976,7 @@ def step_bound(
         steps=True,
         accept=is_plan,
         before_full=before_full,
+        roof=roof,
     )
     if res.steps is None:
         return res.ticks, None
@@ -1009,7 +1025,12 @@ def _pairs_at_start(
 
 
 def _more(
-    problem: Problem, s: _Search, until: float, *, enough: float = -math.inf
+    problem: Problem,
+    s: _Search,
+    until: float,
+    *,
+    enough: float = -math.inf,
+    rounds: int | None = None,
 ) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
@@ -1017,7 +1038,9 @@ def _more(
     the walk stops after
     ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
     (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
-    stops early once it is no longer than ``enough`` (a lower bound: it is optimal)."""
+    stops early once it is no longer than ``enough`` (a lower bound: it is optimal). With
+    ``rounds``: at most that many rounds (an order and its moves) and no joint re-plan, so the
+    plan does not depend on the machine's speed (``until`` only as a safety net)."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -1026,7 +1049,8 @@ def _more(
     lns: _Neighbourhood | None = None
     best = walk.best
     joint = (
-        3 <= len(gls) <= CP_UP_TO
+        rounds is None
+        and 3 <= len(gls) <= CP_UP_TO
         and until - time.perf_counter() >= CP_MIN_SECONDS
         and _joint_possible(problem, gls)
     )
@@ -1044,6 +1068,10 @@ def _more(
     while True:
         if best is not None and best[0] <= enough:
             break
+        if rounds is not None:
+            if rounds <= 0:
+                break
+            rounds -= 1
         now = time.perf_counter()
         # a round is not cut short: none starts that would end past ``walk_until`` if it took
         # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)

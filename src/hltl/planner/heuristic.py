@@ -135,16 +135,19 @@ class Heuristic:
             hit = self._critical(locs, q)
             robots, pair = hot
             if hit != INF:
-                for entry in robots:
-                    if entry[0] is not q:
-                        entry = self._robot_entry(q, entry[1])
-                    load = self._robot_load(locs, entry)
-                    if load > hit:
-                        hit = load
+                # the pair first: where it is infinite (two objects that must cross each other
+                # both held, facing, on a line) the loads need not be computed
                 if pair is not None and pair[4] is q:
                     v = pair[3][locs[pair[0]] * pair[2] + locs[pair[1]]]
                     if v > hit:
                         hit = v
+                if hit != INF:
+                    for entry in robots:
+                        if entry[0] is not q:
+                            entry = self._robot_entry(q, entry[1])
+                        load = self._robot_load(locs, entry)
+                        if load > hit:
+                            hit = load
             self._crit_memo[key] = hit
         return hit
 
@@ -546,19 +549,28 @@ def _one_machine_bound(jobs: list[tuple[float, float, float]]) -> float:
         hd, v, tl = jobs[0]
         return hd + v + tl
     best = 0.0
-    for key in (None, _TAIL):
-        jobs.sort(key=key, reverse=True)
-        total = 0.0
-        least_head = least_tail = INF
-        for hd, v, tl in jobs:
-            total += v
-            if hd < least_head:
-                least_head = hd
-            if tl < least_tail:
-                least_tail = tl
-            t = least_head + total + least_tail
-            if t > best:
-                best = t
+    # by head, latest first: the least head so far is the job's own
+    jobs.sort(reverse=True)
+    total = 0.0
+    least_tail = INF
+    for hd, v, tl in jobs:
+        total += v
+        if tl < least_tail:
+            least_tail = tl
+        t = hd + total + least_tail
+        if t > best:
+            best = t
+    # by tail, largest first: the least tail so far is the job's own
+    jobs.sort(key=_TAIL, reverse=True)
+    total = 0.0
+    least_head = INF
+    for hd, v, tl in jobs:
+        total += v
+        if hd < least_head:
+            least_head = hd
+        t = least_head + total + tl
+        if t > best:
+            best = t
     return best
 
 

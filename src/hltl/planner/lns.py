@@ -147,13 +147,15 @@ def solve_until(
     *,
     presolve: bool = True,
     work: float | None = None,
+    linearization: int | None = None,
 ) -> tuple[Any, Any] | None:
     """Solve a CP-SAT ``model`` on one worker with ``seed`` until ``deadline``
     (``time.perf_counter()``); the solver and its status, or None when no time is left (or
     ``stop`` stopped the question before the solve began). ``presolve=False`` skips CP-SAT's
     presolve (the profile bound's questions: docs/planner.md, "Profile bound"); ``work``
     caps CP-SAT's deterministic time (a measure of its work that does not depend on the
-    machine's load)."""
+    machine's load); ``linearization`` sets CP-SAT's ``linearization_level`` (the step
+    model's questions: ``schedule.STEP_LINEARIZATION``)."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
     left = deadline - time.perf_counter()
@@ -167,6 +169,8 @@ def solve_until(
         solver.parameters.cp_model_presolve = False
     if work is not None:
         solver.parameters.max_deterministic_time = work
+    if linearization is not None:
+        solver.parameters.linearization_level = linearization
     if stop is not None and not stop.attach(solver):
         return None
     return solver, solver.solve(model)

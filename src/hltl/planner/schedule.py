@@ -138,6 +138,14 @@ def _orders(spec: HSpec) -> list[tuple[Atom, Atom]]:
 # core), at most MAX_SKIP at a time (``_shave``)
 CHEAP_NO = 0.25
 MAX_SKIP = 4
+# CP-SAT's ``linearization_level`` on the step model's questions (its default is 1): without
+# its LP the dear "no"s just below the optimum took 30-40 % less CPU (docs/planner.md, "The
+# step model's roof")
+STEP_LINEARIZATION = 0
+# ``schedule_bound``'s ``roof``: the first round asks the levels just below a known plan's
+# makespan when it is at most this many levels above the first level not ruled out (where
+# they are "yes"es far above the optimum, a round is lost)
+ROOF_SPAN = 10
 # levels the climbs ask at once (``_shave``), one thread each: two cores, when there are two
 WORKERS = min(2, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1)
 
@@ -155,6 +163,7 @@ def schedule_bound(
     steps: bool = False,
     accept: Callable[[tuple[tuple[Instance, ...], ...]], bool] | None = None,
     before_full: Callable[[], None] | None = None,
+    roof: int | None = None,
 ) -> ScheduleBound:
     """A lower bound (ticks) on the makespan of every plan from ``node`` that makes every
     target happen, from a relaxed schedule (docs/planner.md, "Scheduling bound").
@@ -178,6 +187,13 @@ def schedule_bound(
     Every "no" of the weaker model is one of the full model's (it is a relaxation of it).
     ``before_full`` is called before the full model's levels are asked, and they are then
     asked one at a time (the caller has other work for the second core).
+
+    ``roof`` (without ``upper``: the step model shaved) is the makespan of a known plan: no
+    level at or above it is asked (the relaxation is feasible there), and where it is at most
+    ``ROOF_SPAN`` units above the first level, the climb's first round asks the two levels
+    just below it (``_shave``'s ``descend``): where the plan is optimal, the "no" just below
+    it is the one question that proves it, and the levels between need no asking. Where the
+    climb proves every level below it "no", the bound is ``roof`` with no schedule.
     """
     unit = time_unit(problem)
     level = -(-floor // unit)  # the least makespan (in units) not yet ruled out
@@ -190,7 +206,12 @@ def schedule_bound(
     )
 
     def shave(
-        at: int, steps: bool, weak: bool, whole_first: bool = False, workers: int | None = None
+        at: int,
+        steps: bool,
+        weak: bool,
+        whole_first: bool = False,
+        workers: int | None = None,
+        descend: bool = False,
     ) -> ScheduleBound:
         return _shave(
             problem,
@@ -198,7 +219,7 @@ def schedule_bound(
             node,
             tgts,
             at,
-            upper,
+            upper if roof is None else roof,
             deadline,
             seed,
             floor,
@@ -207,6 +228,7 @@ def schedule_bound(
             whole_first,
             workers,
             whole,
+            descend,
         )
 
     try:
@@ -215,7 +237,8 @@ def schedule_bound(
                 problem, graph, node, tgts, level, upper // unit, deadline, seed, floor, not weak
             )
         else:
-            res = shave(level, steps, weak)
+            descend = roof is not None and upper is None and roof // unit - level <= ROOF_SPAN
+            res = shave(level, steps, weak, descend=descend)
         if accept is None or res.steps is None or accept(res.steps):
             return res
         workers = None
@@ -314,6 +337,7 @@ def _shave(
     whole_first: bool = False,
     workers: int | None = None,
     whole: _Whole | None = None,
+    descend: bool = False,
 ) -> ScheduleBound:
     """The relaxation's optimum from ``level`` units up (``steps``: the step model, ``weak``:
     without ``holders``; else the interval model).
@@ -339,7 +363,11 @@ def _shave(
     "no" answers every level below it and a schedule every level above it, so a question whose
     answer another one implies is stopped, and its answer is never used: the optimum found,
     its schedule (one CP-SAT worker with a fixed seed at a fixed level) and the levels asked
-    are the same whichever question ends first."""
+    are the same whichever question ends first.
+
+    With ``descend`` (and ``upper``) the first round asks the ``workers`` levels just below
+    ``upper`` instead (``schedule_bound``'s ``roof``); the climb then goes on from ``level``
+    below whatever they leave open."""
     unit = time_unit(problem)
     top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
     proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
@@ -383,7 +411,10 @@ def _shave(
             if top is not None and proved + 1 >= top:
                 return ScheduleBound(max(floor, upper or 0), True, len(tgts))
             apart = 1  # how far apart the levels of a round are
-            if lowest is not None:  # levels were skipped below it: ask them from the lowest
+            if descend and top is not None:  # (the first round: the levels below ``upper``)
+                first = max(proved + 1, top - workers)
+                descend = False
+            elif lowest is not None:  # levels were skipped below it: ask them from the lowest
                 first = proved + 1
             else:
                 apart = max(1, skip)
@@ -396,7 +427,7 @@ def _shave(
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
             # (planner._Apart pauses A* through a round that asks a level on every core)
-            note_busy(len(levels))
+            note_busy(told := len(levels))
             asked = {at: Stop() for at in levels}
             try:
                 running = {pool.submit(ask, at, asked[at]): at for at in levels}
@@ -428,14 +459,20 @@ def _shave(
                                     whole is not None
                                     and not whole_first
                                     and isinstance(found, tuple)
-                                    and set(range(proved + 1, at)) <= set(running.values())
+                                    and (at - 1 <= proved or at - 1 in running.values())
                                 ):
-                                    # the levels below are all being asked: if they say
-                                    # "no" this is the bound, and a core is free till then
+                                    # the level below is being asked: if it says "no" (and
+                                    # with it every level below) this is the bound, and a
+                                    # core is free till then
                                     whole.ahead(at, found)
                         for other in running.values():
                             if out_of_time or other <= proved or (lowest and other >= lowest[0]):
                                 asked[other].stop()
+                    if running and len(running) < told:
+                        # (a question left alone leaves a core to a paused A*: a round below a
+                        # roof waits for its dear "no" long after the other level's answer)
+                        told = len(running)
+                        note_busy(told)
             finally:
                 # (also when a question raised: the others are stopped, so that the pool need
                 # not wait for them, and a paused A* is never left paused)
@@ -593,7 +630,10 @@ def _solve(
     stopped it). CP-SAT's deterministic time is appended to ``spent``."""
     from ortools.sat.python import cp_model  # why: an optional extra, loaded on first use
 
-    solved = solve_until(axis.model, deadline, seed, stop)
+    steps = isinstance(axis, _Steps)
+    solved = solve_until(
+        axis.model, deadline, seed, stop, linearization=STEP_LINEARIZATION if steps else None
+    )
     if solved is None:
         return None
     solver, status = solved

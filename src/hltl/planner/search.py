@@ -60,6 +60,10 @@ class _Search:
         self._sym_memo: dict[object, tuple[tuple[int, ...], ...]] = {}
         self._classes = problem.symmetry.classes
         self._sym_objects = sum(1 << o for members in self._classes for o, _ in members)
+        # per instance, the robots that must hold nothing for it (``Instance.free``) as a mask
+        self._free_mask = [0] * len(problem.instances)
+        for inst in problem.instances:
+            self._free_mask[inst.index] = sum(1 << r for r in set(inst.free))
         # (child index, parent index), parents first: once a node is done its descendants can
         # no longer matter, so they are marked done too and equivalent states merge
         index = {n: i for i, n in enumerate(self.monitor.nodes)}
@@ -158,11 +162,19 @@ class _Search:
         dead = self.dead(q)
         shiftable = p.shiftable
         holder_of = p.code_holder
+        free_mask = self._free_mask
         busy = 0
         for code in locs:
             r = holder_of.get(code)
             if r is not None:
                 busy |= 1 << r
+        # an instance shifts into every step that reached the node when it shares no robot and
+        # no object with any of them, and fits the shortest
+        acting = moved = 0
+        for e, m, _ in tags:
+            acting |= e
+            moved |= m
+        shortest = min((d for _, _, d in tags), default=0)
         relevant = p.relevant(self.done(q))
         out: list[list[Instance]] = []
         late: set[int] = set()
@@ -172,18 +184,18 @@ class _Search:
                 continue
             cands: list[Instance] = []
             for inst in p.by_obj_pre[o][code]:
-                if inst.index in dead or any(busy >> f & 1 for f in inst.free):
+                if inst.index in dead or busy & free_mask[inst.index]:
                     continue
                 if (
                     tags
                     and shiftable[inst.index]
-                    and all(not inst.executors & e and not m >> inst.obj & 1 for e, m, _ in tags)
+                    and not inst.executors & acting
+                    and not moved >> inst.obj & 1
                 ):
                     if hands is None:
-                        fits = all(inst.lower <= d for _, _, d in tags)
+                        fits = inst.lower <= shortest
                     else:
-                        dur = p.duration(inst, hands)
-                        fits = all(_at_most(dur, d) for _, _, d in tags)
+                        fits = _at_most(p.duration(inst, hands), shortest)
                     if fits:
                         continue  # left-shiftable: some optimal plan ran it one step earlier
                     late.add(inst.index)
@@ -220,38 +232,56 @@ class _Search:
         if after is None:
             after = self._after[q] = {}
         monitor_step = self.monitor_step
-        n = len(opts)
-        # depth-first over the objects, "leave it" before each of its instances (iterative: a
-        # recursive generator passes every step set up through one frame per object); the
-        # robots acting, the objects moved, the events, the duration, and the longest chosen
-        # instance among the late ones and among the others (-1: none) are carried along
+        # every step set once, depth-first: a set is yielded before the sets that add
+        # instances of later objects to it, the last object's first (the order in which the
+        # sets come decides ties in the open list, so it is kept). The candidates are flat, per
+        # object in ascending order and each object's instances in reverse, so that a set's
+        # extensions are pushed in one pass over the candidates from its first free object on;
+        # each with where the next object's candidates begin. A stack entry per set (not per
+        # set and object) saves most of the tuples the search would build
+        flat: list[tuple[int, int, int, int, bool, Instance, int]] = []
+        for cands in opts:
+            nxt = len(flat) + len(cands)
+            for inst in reversed(cands):
+                flat.append(
+                    (
+                        inst.executors,
+                        inst.lower,
+                        1 << inst.obj,
+                        inst.event_bits,
+                        inst.index in late,
+                        inst,
+                        nxt,
+                    )
+                )
+        total = len(flat)
+        # the next candidate, the robots acting, the objects moved, the events, the duration,
+        # and the longest chosen instance among the late ones and among the others (-1: none)
         stack: list[tuple[int, int, int, int, int, int, int, tuple[Instance, ...]]] = [
             (0, 0, 0, 0, 0, -1, -1, ())
         ]
         while stack:
-            i, used, moved, events, cost, late_d, rest_d, chosen = stack.pop()
-            if i < n:
-                for inst in reversed(opts[i]):
-                    if not inst.executors & used:
-                        d = inst.lower
-                        if inst.index in late:
-                            nl, nr = (d if d > late_d else late_d), rest_d
-                        else:
-                            nl, nr = late_d, (d if d > rest_d else rest_d)
-                        stack.append(
-                            (
-                                i + 1,
-                                used | inst.executors,
-                                moved | 1 << inst.obj,
-                                events | inst.event_bits,
-                                d if d > cost else cost,
-                                nl,
-                                nr,
-                                (*chosen, inst),
-                            )
-                        )
-                stack.append((i + 1, used, moved, events, cost, late_d, rest_d, chosen))
-                continue
+            k, used, moved, events, cost, late_d, rest_d, chosen = stack.pop()
+            for j in range(k, total):
+                ex, d, bit, ev, is_late, inst, nxt = flat[j]
+                if ex & used:
+                    continue
+                if is_late:
+                    nl, nr = (d if d > late_d else late_d), rest_d
+                else:
+                    nl, nr = late_d, (d if d > rest_d else rest_d)
+                stack.append(
+                    (
+                        nxt,
+                        used | ex,
+                        moved | bit,
+                        events | ev,
+                        d if d > cost else cost,
+                        nl,
+                        nr,
+                        (*chosen, inst),
+                    )
+                )
             if late_d >= 0 and (rest_d < 0 or (rest_d <= before and rest_d <= late_d)):
                 continue
             if inline:
@@ -485,9 +515,9 @@ def search(
             if upper is not None and ng >= upper:
                 continue
             crec = recs.get(child)
-            if crec is not None and ng > crec[0]:
-                continue
-            if crec is not None and ng == crec[0]:
+            if crec is not None and ng >= crec[0]:
+                if ng > crec[0]:
+                    continue
                 # an equally cheap way in: its tag may allow what the others forbid
                 child_tags = crec[1]
                 if tag in child_tags:
