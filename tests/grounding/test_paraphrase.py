@@ -127,7 +127,6 @@ KNOWN_MISSES = frozenset(
         "Give each of them a pen, Priya and Sam, any colour",
         "Both people get an item each: the cup for Person A and the apple for Person B",
         "One of the snacks for Person B: the chips or the apple",
-        "Tom and Mia each get one thing: the tape for Tom, the gloves for Mia",
         "Lily wants the two blocks to bang together",
         "Both plates need to go on the worktop before service",
         "Mia wants the two smaller boxes",
@@ -141,7 +140,6 @@ KNOWN_MISSES = frozenset(
         "Could you bring Grandad's beaker over to him?",
         "Give each of them a spanner, Kofi and Jess, any size",
         "Both people get an item each: the chips for Person B and the bottle for Person A",
-        "Emma and Omar each get one thing: the banana for Emma, the spoon for Omar",
         "One of the drinks for Person A: the bottle or the cup",
         "Both cups need to go in the sink before lunch",
         "Tom wants the two bigger boxes",
@@ -181,8 +179,6 @@ KNOWN_MISSES = frozenset(
         # 'do likewise with', comparatives ('lesser', 'smaller'), 'N deliveries' said after the
         # steps, fronted recipients ('Unto Person A the chips'), a surface alias used as a verb
         # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
-        "Ahoy there, me hearty! Be a good shipmate and give the teddy bear to Ava, if ye "
-        "please, arr!",
         "For the record, and with the greatest respect, would you kindly deliver the stapler "
         "to Sam. Thank you, no further questions.",
         "Good morning, good morning! Before the next track, could our robot friend pop the "
@@ -204,24 +200,14 @@ KNOWN_MISSES = frozenset(
         "Person A takes the cup, and then the apple follows it to the very same player!",
         "Give Person B the bottle, and thereafter the chips unto the same.",
         "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
-        "Tape on the belt. Gloves to Tom. Scanner to Mia. All hands, go.",
-        "Blue plate to Mr Novak and white plate to Lena and the salt shaker to Marco and "
-        "that's your lot, back after the break.",
-        "Ja, so the big spanner goes to Kofi and then the small one goes in the locker and "
-        "then we're lekker, shot.",
         "Apple, Person A. Chips, Person B. Cup, Person A. Bottle, Person B. Four deliveries, "
         "what a display!",
-        "First the apple to Person A then the cup to Person B then we can close the ticket",
-        "The bottle to Person B and then, sorry, the chips to Person A and that's everything I "
-        "think sorry",
         "Either the notebook or the stapler shall be given to Priya, at your discretion.",
         "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
         "Any plate at all for Lena, folks, the white or the blue, whichever!",
         "Bottle or crisps, any one also can, give Bob.",
-        "Person A and Person B each take one: bottle for Person A, chips for Person B!",
         "Each patient, gently, receives one blanket, whichever colour.",
         "Give unto Person B whichever thou wilt of the cup or the apple.",
-        "One apiece, aye: bottle to Person A, chips to Person B.",
         "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
         "The two blocks be Lily's treasure, arr, give her both!",
         "Sorry, both mugs, the red and the blue, could they go to Alice?",
@@ -242,6 +228,13 @@ KNOWN_MISSES = frozenset(
         "Can help me give Alice the crisps or not?",
         "Cart the grey blanket over to Mr Lee.",
         "Both of the smaller boxes to Tom.",
+        "Both the cup and the apple go to Person A tonight.",
+        "Both plates are for Marco this morning!",
+        "Tonight the chipps go to Person A.",
+        "If at all possible, the notepad to Priya, maybe.",
+        "Everything except the apple is going home with Person B tonight, folks!",
+        "Forceps, sorry, I mean the spoon, to Omar.",
+        "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

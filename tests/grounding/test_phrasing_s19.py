@@ -118,6 +118,13 @@ def test_a_closer_changes_nothing(scene: Scene, k: int, closer: str) -> None:
         ("Howzit, Jess. Robot, please pass the torch to Jess, shot.", "torch>B", WORKSHOP),
         ("Teddy to Ava! No wait, to Lily, the little pirate.", "teddy>A", NURSERY),
         ("If the robot would be so good as to give Ruth the jug.", "jug>A", WARD),
+        (
+            "Marco and Lena each take one: knife for Marco, lemon for Lena",
+            "knife>A & lemon>B",
+            KITCHEN,
+        ),
+        ("Tape on the belt. Gloves to Tom. All hands, go.", "tape@conveyor & gloves>B", DEPOT),
+        ("Drill to Kofi and then we're lekker, shot.", "drill>A", WORKSHOP),
     ],
 )
 def test_a_kind_is_read_through(text: str, want: str, scene: Scene) -> None:
@@ -150,6 +157,15 @@ def test_a_kind_is_read_through(text: str, want: str, scene: Scene) -> None:
         ("The cup to Alice, sorry, the.", CELL),  # cut off
         ("Priya wants a single pen, the red one and the blue one", OFFICE),  # one, then two
         ("Priya wants one pen, the red one and the blue one", OFFICE),
+        ("The three people each get one thing: knife for Marco, lemon for Lena", KITCHEN),
+        # a list corrected by a list: the whole list, or its last name? (read as the last
+        # name only on main)
+        ("Give Priya the stapler and the red pen, no, the notepad and the blue pen.", OFFICE),
+        (
+            "Give Priya everything except the stapler and the red pen, no, the notepad and the "
+            "blue pen.",
+            OFFICE,
+        ),
     ],
 )
 def test_what_could_name_ask_or_change_stays_refused(text: str, scene: Scene) -> None:

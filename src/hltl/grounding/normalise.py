@@ -6104,12 +6104,14 @@ _LY_HELD19 = frozenset(
         *("holy", "silly", "jolly", "bully", "curly", "woolly", "friendly", "lonely", "costly"),
         *("instead", "together", "partially", "fully", "wholly", "entirely", "completely"),
         *("randomly", "personally", "directly", "straight", "later", "afterwards", "next"),
+        *("actually", "alternatively", "ideally", "preferably", "optionally", "possibly"),
+        *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
     }
 )
 _PARTICLES19 = frozenset({"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"})
 _NOW19 = re.compile(
     r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
-    r"forthwith|quick smart|this (?:morning|evening|afternoon)|tonight|today)\b",
+    r"forthwith|quick smart)\b",
     _F,
 )
 _TIMED19 = re.compile(
@@ -6162,7 +6164,7 @@ _SET_FILLERS19 = re.compile(
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
     r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
-    r"merging now|over and out)$",
+    r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
     _F,
 )
 
@@ -6240,7 +6242,11 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     out = " ".join(kept)
     parts = _STRETCH.split(out.strip())
     chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) < 2:
+    if len(chunks) < 2 or _rx(
+        r"\b(?:no|sorry|actually|wait|i mean|hang on|hold on|scratch|strike|correction|rather|"
+        r"oops|whoops|i tell a lie|my mistake|my bad)\b"
+    ).search(out):
+        # a stretch taken off next to a correction would change what the correction takes back
         return _tidy19(out)
     drop = []
     for k, c in enumerate(chunks):
@@ -6388,7 +6394,8 @@ def _speaker19(text: str, lexicon: Lexicon) -> str:
         out = out[m.end() :]
     parts = _STRETCH.split(out.strip())
     chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) >= 2:
+    negated = re.search(r"\b(?:not|never|no)\b|n't\b", out.replace("don't mind", ""), _F)
+    if len(chunks) >= 2 and not negated:  # 'Not yet, I'll leave it to you: …' stays refused
         drop = [bool(c.strip()) and _stance_stretch(c, lexicon) for c in chunks]
         if any(drop) and not all(d or not c.strip() for d, c in zip(drop, chunks, strict=True)):
             res = ""
@@ -6419,19 +6426,22 @@ _TAG19 = (
 
 def _hedges19(text: str, lexicon: Lexicon) -> str:
     out = _sub(
-        r"(?:^|,\s*)(?:and )?if (?:it's|it is|it isn't|it's not|that's|that is) (?:not )?"
+        r"(?:^|,\s*|\bbut\s+)(?:and )?if (?:it's|it is|it isn't|it's not|that's|that is) (?:not )?"
         r"(?:too much |any |no )?(?:trouble|bother|okay|ok|alright|all right|fine|possible)"
         r"\s*(?:,|(?=[.!?]|$))",
         ", ",
         text,
     ).strip(" ,")
-    out = _sub(r"^(?:be (?:a|an|my) (?:[a-z']+ ){1,3}and) (?=[a-z]+ )", "", out)
+    out = _sub(r"(?:^|(?<=[.!?] ))(?:be (?:a|an|my) (?:[a-z']+ ){1,3}and) (?=[a-z]+ )", "", out)
     out = _sub(r"\b(would|could|will) be so (?:good|kind) as to\b", r"\1", out)
     out = _sub(r"\b(?:is|are) to (?:receive|get|have)\b", "gets", out)
     out = _sub(r"(?<=[a-z]) only\s*([.!]?)$", r"\1", out)
     out = _sub(r"(\bthen\b[^.!?]*?) (?:after|afterwards)\s*([.!?]|$)", r"\1\2", out)
     out = _sub(r"^(can|could|will|would)\b(.+?)\s+or not\s*\?$", r"\1\2?", out)
-    if not re.search(r"\b(?:or|not|n't|unless)\b", out, _F):
+    asked = out.rstrip().endswith("?") or re.match(r"^(?:could|can|would|will|might)\b", out, _F)
+    if asked and not re.search(r"\b(?:or|not|n't|unless)\b", out, _F):
+        # a softener inside a polite question ('could the apple maybe go to Carol?'); a bare
+        # '…, maybe' after a request leaves it open and stays refused
         out = _sub(r"(?:,\s*)?\b(?:maybe|perhaps|possibly)\b(?:\s*,)?\s*", " ", out)
         out = _sub(r"\bif at all possible\b\s*,?\s*", "", out)
     out = _sub(
@@ -6498,46 +6508,48 @@ _CLOSER_HELD19 = re.compile(
 
 def _closers19(text: str, lexicon: Lexicon) -> str:
     parts = _STRETCH.split(text.strip())
-    chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) < 2:
-        return text
-    cut = None
+    chunks, seps = parts[0::2], [*parts[1::2], ""]
+    keep = len(chunks)
     for k in range(len(chunks) - 1, 0, -1):
         c = chunks[k].strip()
-        if not c:
-            continue
         opener = _CLOSER19.match(c)
+        go = re.match(r"^(?:go(?: go)*|let's go|off you go)$", c, _F)
+        if go and k > 0 and _CLOSER19.match(chunks[k - 1].strip()):
+            continue  # '… All hands, go.': said with the closer
+        if not c or _filler_stretch(c, False, lexicon):
+            continue
         if (
             opener is not None
             and not _CLOSER_HELD19.search(c[opener.end() :])
             and _names_nothing(c, lexicon)
         ):
-            cut = k
-        elif cut is not None and _filler_stretch(c, False, lexicon):
+            keep = k
             continue
-        else:
-            break
-    if cut is None:
-        # a closer said on in the last stretch: '… and then we're lekker', '… then we can
-        # close the ticket'
-        last = chunks[-1]
-        m = _rx(
-            r"\s+(?:and )?(?:then )?(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
-            r" [^,.;!?]*$"
-        ).search(last)
-        if (
-            m is None
-            or _CLOSER_HELD19.search(m.group(0))
-            or not _names_nothing(m.group(0), lexicon)
-        ):
-            return text
-        if not _names(last[: m.start()], lexicon):
-            return text
-        chunks = [*chunks[:-1], last[: m.start()]]
-        return _tidy19(
-            "".join(p for k, c in enumerate(chunks) for p in (c, seps[k] if k < len(seps) else ""))
-        )
-    head = "".join(p for k, c in enumerate(chunks[:cut]) for p in (c, seps[k]))
+        break
+    if keep < len(chunks) and all(
+        not c.strip() or _filler_stretch(c.strip(), False, lexicon) for c in chunks[keep:]
+    ):
+        keep = len(chunks)  # fillers only: _fillers19's to take off
+    chunks, seps = chunks[:keep], seps[:keep]
+    # a closer said on in the last stretch kept: '… and then we're lekker', '… then we can
+    # close the ticket', '… and that's your lot'
+    last = chunks[-1]
+    m = _rx(
+        r"\s+(?:and )?(?:then )?(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
+        r" [^,.;!?]*$"
+    ).search(last)
+    if (
+        m is not None
+        and not _CLOSER_HELD19.search(m.group(0))
+        and _names_nothing(m.group(0), lexicon)
+        and _names(last[: m.start()], lexicon)
+    ):
+        chunks[-1] = last[: m.start()]
+    head = "".join(
+        p for k, c in enumerate(chunks) for p in (c, seps[k] if k < len(chunks) - 1 else "")
+    )
+    if head.strip() == text.strip() or not head.strip():
+        return text
     head = _sub(r"(?:[,.!]\s*)(?:sorry|so sorry)\s*[.!,]*\s*$", "", head)
     return _tidy19(head) + ("." if not head.rstrip().endswith(("?", "!", ".")) else "")
 
@@ -6574,6 +6586,9 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]
+        if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
+            # "… and then, sorry, the chips to Person A": a pause after a conjunction
+            return f"{before} {after}"
         after = _sub(r"^(?:no|sorry|i misspeak|i mean),?\s*", "", after)
         if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
             # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
@@ -6625,6 +6640,21 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         counted,
         out,
     )
+    head = _rx(
+        r"^(?:(.+?) each (?:take|get|have|receive)s? one(?: thing| item)?|one (?:each|apiece))"
+        r"(?:,\s*(?:aye|yes|ok|okay))?\s*[:,]\s*"
+    ).match(out)
+    if head is not None:
+        rest = out[head.end() :]
+        people = _ids(rest, lexicon, "human")
+        said = _ids(head.group(1) or "", lexicon, "human")
+        numbered = re.search(r"\b(both|two|three|four|five)\b", head.group(1) or "", _F)
+        many = {"both": 2}.get(numbered.group(1).lower(), 0) if numbered else 0
+        many = many or (_NUMBER18.get(numbered.group(1).lower(), 0) if numbered else 0)
+        who = said == people if said else (many == len(people) if head.group(1) else True)
+        tasks_said = len(re.findall(r"\b(?:to|for)\b", rest))
+        if who and len(_ids(rest, lexicon, "object")) == len(people) == tasks_said:
+            out = rest  # "P and Q each take one: X for P, Y for Q"
     out = _sub(r"\bboth of the (?=(?:[a-z]+ )?[a-z]+s\b)", "both ", out)
     out = _sub(r"\ball of the (?=[a-z]+s\b)", "all the ", out)
     out = _sub(r"\b(any|whichever|either) ([a-z]+) at all\b", r"\1 \2", out)
@@ -6772,19 +6802,14 @@ def _telegraph19(text: str, lexicon: Lexicon) -> str:
         to = _rx(r"^(?:and )?(to|on|onto|in) (.+)$").match(nxt) if nxt else None
         if (
             to
-            and _objects_only(s, lexicon)
+            and _only(s, lexicon, "object")
             and (_only_person(to.group(2), lexicon) or _surface_only(to.group(2), lexicon))
         ):
             res.append(f"{s} {to.group(1)} {to.group(2)}.")  # 'The cup. To Alice.'
             k += 2
             continue
         person = bool(nxt) and _only_person(nxt, lexicon)
-        if (
-            nxt
-            and _objects_only(s, lexicon)
-            and len(_ids(s, lexicon)) == 1
-            and (person or _surface_only(nxt, lexicon))
-        ):
+        if nxt and _only(s, lexicon, "object") and (person or _surface_only(nxt, lexicon)):
             obj = s if s.lower().startswith("the ") else f"the {s}"
             where = f"to {nxt}" if person else f"on the {nxt.removeprefix('the ')}"
             res.append(f"{obj} {where}.")
@@ -6831,6 +6856,10 @@ def _archaic19_words(text: str) -> str:
         (r"\bshall be (given|handed|passed|brought|placed|put|taken)\b", r"should be \1"),
         (r"\bshall (have|get|receive)\b", r"gets"),
         (r"\b(?:thereafter|thereupon)\b", "then"),
+        (
+            r"\bto the (?:very )?same(?: (?:player|person|one|fellow|chap|lady|gentleman|guy))?\b",
+            "to the same person",
+        ),
         (r"\bunto\b", "to"),
         (r"\bprithee\b", "please"),
         (r"\bnay\b", "no"),

@@ -149,7 +149,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         raise best from None
 
 
-_CUT_OFF = re.compile(r"\b(the|an|their|my|your|our)\s*[.!?…]*\s*$", re.I)
+_CUT_OFF = re.compile(
+    r"\b(the|an|their|my|your|our)\s*(?:[.!?…]*\s*$|[.!?…]+\s|,\s*(?:cheers|thanks|thank you|"
+    r"ta|done|bye|please)\b)",
+    re.I,
+)
 
 
 # a pronoun that is a person (not 'his'/'her' before what they own: "he's changing her nappy")
