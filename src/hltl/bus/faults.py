@@ -136,7 +136,7 @@ class Link:
             self.session.put(key, payload)
         else:
             self.session.put(key, payload, attachment=attachment)
-        let_go()
+        let_go()  # (a command, a report: someone waits for it, and this thread works on)
 
     def _sender(self) -> None:
         with self._lock:
