@@ -235,6 +235,7 @@ KNOWN_MISSES = frozenset(
         "Everything except the apple is going home with Person B tonight, folks!",
         "Forceps, sorry, I mean the spoon, to Omar.",
         "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
+        "Pronto, the cup to Person A, capisce?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -6242,10 +6242,15 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     out = " ".join(kept)
     parts = _STRETCH.split(out.strip())
     chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) < 2 or _rx(
-        r"\b(?:no|sorry|actually|wait|i mean|hang on|hold on|scratch|strike|correction|rather|"
-        r"oops|whoops|i tell a lie|my mistake|my bad)\b"
-    ).search(out):
+    asks = "?" in out and not re.match(r"^(?:could|can|would|will|may|might|is it)\b", out, _F)
+    if (
+        len(chunks) < 2
+        or asks
+        or _rx(
+            r"\b(?:no|sorry|actually|wait|i mean|hang on|hold on|scratch|strike|correction|rather|"
+            r"oops|whoops|i tell a lie|my mistake|my bad)\b"
+        ).search(out)
+    ):
         # a stretch taken off next to a correction would change what the correction takes back
         return _tidy19(out)
     drop = []
@@ -6507,6 +6512,8 @@ _CLOSER_HELD19 = re.compile(
 
 
 def _closers19(text: str, lexicon: Lexicon) -> str:
+    if "?" in text:
+        return text  # "ava gets the teddy?. That's everything.": a question stays one
     parts = _STRETCH.split(text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
     keep = len(chunks)
@@ -6535,7 +6542,7 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
     # close the ticket', '… and that's your lot'
     last = chunks[-1]
     m = _rx(
-        r"\s+(?:and )?(?:then )?(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
+        r"\s+(?:and then |then |and )(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
         r" [^,.;!?]*$"
     ).search(last)
     if (
@@ -6593,6 +6600,11 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
             # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
             return f"{before} {after}"
+        last = re.split(r"[.!?;]", before.strip(" .!?"))[-1]
+        steps = sum(1 for w in re.findall(r"[a-z]+", last.lower()) if w in VERBS)
+        if steps > 1 or re.search(r"\bthen\b", last, _F):
+            # "Give Bob the cup, then give Alice the apple. Scratch that, …": which part?
+            return text
         if _names(before, lexicon) and _names(after, lexicon):
             same = _rx(r"\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(after)
             if same and before.rstrip(" .!").lower().endswith(same.group(1).lower()):
