@@ -84,12 +84,12 @@ def test_the_executor_lets_go_after_the_requests_it_does_not_wait_for(
     _recording(monkeypatch, "hltl.bus.driver", events)
     query = BusCell._query
 
-    def recorded(self: BusCell, key: str, payload: bytes, commands: bool) -> Any:
+    def recorded(self: BusCell, key: str, payload: bytes, commands: bool, **kw: Any) -> Any:
         kind = (
             "reset" if key.endswith("reset") else ("foresee" if b'"foresee"' in payload else "step")
         )
         events.append(kind)
-        return query(self, key, payload, commands)
+        return query(self, key, payload, commands, **kw)
 
     monkeypatch.setattr(BusCell, "_query", recorded)
     trial = make_trial("2-2", 0)  # (a second request: a new spec's basis goes to the node)

@@ -104,6 +104,8 @@ class DriverStats:
     stale_reports: int = 0
     recoveries: int = 0
     queries: int = 0
+    # numbered step requests an injected fault sent twice (the node must know the copy)
+    step_copies: int = 0
     ticks: int = 0  # ticks the loop advanced (from look-ahead or by a query)
     streamed: int = 0  # ticks received as further replies (the node streaming a stretch)
     # ticks and guessed steps received as further replies after a step's end (the node ran on
@@ -550,15 +552,19 @@ class BusCell:
             yield attempt
             attempt += 1
 
-    def _query(self, key: str, payload: bytes, commands: bool) -> tuple[Any, float] | None:
+    def _query(
+        self, key: str, payload: bytes, commands: bool, *, numbered: bool = False
+    ) -> tuple[Any, float] | None:
         """Send one query (its replies, and when it went), or ``None`` when an injected fault
         lost it (a query carrying commands is subject to the executor's message faults, like
-        one: then its silence is waited out here)."""
+        one: then its silence is waited out here). ``numbered``: a numbered step request
+        (a copy of one is counted in ``stats.step_copies``)."""
         self.stats.queries += 1
         if commands and self.link.lost():
             time.sleep(self.timing.timeout)
             return None
         if self.link.duplicated():  # the node must answer a copy without acting twice
+            self.stats.step_copies += numbered
             with contextlib.suppress(Exception):
                 list(self.session.get(key, payload=payload, timeout=self.timing.timeout))
         t0 = time.perf_counter()
@@ -595,7 +601,7 @@ class BusCell:
             if attempt:
                 self.stats.retransmits += 1
             early = attempt == 0 and sent is not None
-            got = sent if early else self._query(key, payload, commands)
+            got = sent if early else self._query(key, payload, commands, numbered="step" in data)
             if got is None:  # it never reached the node: silence, waited out
                 continue
             replies, t0 = got
