@@ -158,6 +158,9 @@ def test_a_kind_is_read_through(text: str, want: str, scene: Scene) -> None:
         ("Priya wants a single pen, the red one and the blue one", OFFICE),  # one, then two
         ("Priya wants one pen, the red one and the blue one", OFFICE),
         ("The three people each get one thing: knife for Marco, lemon for Lena", KITCHEN),
+        # the full fuzz on 01efc78: a near opener swallowed with the header of names
+        ("I'm not sure, Marco and Lena each take one: knife for Marco, lemon for Lena", KITCHEN),
+        ("Not yet, Marco and Lena each take one: knife for Marco, lemon for Lena", KITCHEN),
         # a list corrected by a list: the whole list, or its last name? (read as the last
         # name only on main)
         ("Give Priya the stapler and the red pen, no, the notepad and the blue pen.", OFFICE),

@@ -6664,6 +6664,14 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         many = {"both": 2}.get(numbered.group(1).lower(), 0) if numbered else 0
         many = many or (_NUMBER18.get(numbered.group(1).lower(), 0) if numbered else 0)
         who = said == people if said else (many == len(people) if head.group(1) else True)
+        words = re.sub(r"\bperson [ab]\b", "", (head.group(1) or "").lower())
+        for it in _names(head.group(1) or "", lexicon):
+            words = words.replace(it.text.lower(), " ")
+        # only names and words that count them: "I'm not sure, Tom and Mia each …" keeps its
+        # opener, and is refused
+        who = who and set(re.findall(r"[a-z']+", words)) <= {
+            *("and", "the", "both", "two", "three", "four", "of", "them", "people", "all"),
+        }
         tasks_said = len(re.findall(r"\b(?:to|for)\b", rest))
         if who and len(_ids(rest, lexicon, "object")) == len(people) == tasks_said:
             out = rest  # "P and Q each take one: X for P, Y for Q"
