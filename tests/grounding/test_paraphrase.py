@@ -127,10 +127,8 @@ KNOWN_MISSES = frozenset(
         "Give each of them a pen, Priya and Sam, any colour",
         "Both people get an item each: the cup for Person A and the apple for Person B",
         "One of the snacks for Person B: the chips or the apple",
-        "Tom and Mia each get one thing: the tape for Tom, the gloves for Mia",
         "Lily wants the two blocks to bang together",
         "Both plates need to go on the worktop before service",
-        "Tidy the three pens away in the box",
         "Mia wants the two smaller boxes",
         "Clear everything onto the belt, leave the boxes where they are",
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
@@ -142,7 +140,6 @@ KNOWN_MISSES = frozenset(
         "Could you bring Grandad's beaker over to him?",
         "Give each of them a spanner, Kofi and Jess, any size",
         "Both people get an item each: the chips for Person B and the bottle for Person A",
-        "Emma and Omar each get one thing: the banana for Emma, the spoon for Omar",
         "One of the drinks for Person A: the bottle or the cup",
         "Both cups need to go in the sink before lunch",
         "Tom wants the two bigger boxes",
@@ -158,13 +155,11 @@ KNOWN_MISSES = frozenset(
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
         "omg bestie pls give Sam the stapler, slay",
-        "Prithee, good robot, bear the globe unto Mrs Ortiz. Anon!",
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
         "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
         "Those three things that aren't the bottle, give them to Person A.",
-        "Two of the pens for Priya, namely the red one and the blue one.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
@@ -175,11 +170,72 @@ KNOWN_MISSES = frozenset(
         "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
-        "All three of the pens, black, blue and red, into the box, that's the deliverable.",
-        "Person B gets the three things that aren't the apple.",
-        "Everything except the apple is going home with Person B tonight, folks!",
-        "Don't give Person A the cup, give it to Person B instead, good!",
         "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
+        # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
+        # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
+        # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
+        # grammar ('be wantin'', 'Bottle is what Alice want', 'Bob want one'), appositions of
+        # roles or things the scene lacks ('My client, Sam', 'the treasure, the teddy bear'),
+        # 'do likewise with', comparatives ('lesser', 'smaller'), 'N deliveries' said after the
+        # steps, fronted recipients ('Unto Person A the chips'), a surface alias used as a verb
+        # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
+        "For the record, and with the greatest respect, would you kindly deliver the stapler "
+        "to Sam. Thank you, no further questions.",
+        "Good morning, good morning! Before the next track, could our robot friend pop the "
+        "lemon over to Mr Novak? Lovely stuff.",
+        "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
+        "maybe go to Carol? Sorry. Thank you.",
+        "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
+        "over to Mr Lee. Namaste.",
+        "Um, sorry, is it okay if, sorry, could you give Person B the bottle? Only if it's no "
+        "bother. Sorry!",
+        "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
+        "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
+        "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
+        "Sorry, Bob said he needs the red mug, I think, and Alice, sorry, wants the crisps.",
+        "Bottle is what Alice want, crisps is for Bob one, can or not?",
+        "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
+        "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
+        "Haul the medium box onto the belt, then do likewise with the small one, smartly.",
+        "Person A takes the cup, and then the apple follows it to the very same player!",
+        "Give Person B the bottle, and thereafter the chips unto the same.",
+        "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
+        "Apple, Person A. Chips, Person B. Cup, Person A. Bottle, Person B. Four deliveries, "
+        "what a display!",
+        "Either the notebook or the stapler shall be given to Priya, at your discretion.",
+        "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
+        "Any plate at all for Lena, folks, the white or the blue, whichever!",
+        "Bottle or crisps, any one also can, give Bob.",
+        "Each patient, gently, receives one blanket, whichever colour.",
+        "Give unto Person B whichever thou wilt of the cup or the apple.",
+        "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
+        "The two blocks be Lily's treasure, arr, give her both!",
+        "Sorry, both mugs, the red and the blue, could they go to Alice?",
+        "Two items, both give Alice lah.",
+        "The four treasures, all of them, unto Person A.",
+        "Aye aye, Person A's to have both, bottle and chips alike.",
+        "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
+        "bottle and the chips.",
+        "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
+        "Ja, pack the locker with the lot, just not the two spanners.",
+        "Everything left on the pitch bar the bottle and the cup heads to Person A!",
+        "The hammer for Jess, eish, sorry, the drill for Jess.",
+        "The cup to Person B! No, it's been redirected, the cup to Person A!",
+        "Unto Person A the chips, nay, I misspeak, the bottle.",
+        "We reported the cup was going to Person A. Correction: it's the apple.",
+        "good evening, tonights order chips for person b plus the cup for person a",
+        "The crsps, Bob want one lah.",
+        "Can help me give Alice the crisps or not?",
+        "Cart the grey blanket over to Mr Lee.",
+        "Both of the smaller boxes to Tom.",
+        "Both the cup and the apple go to Person A tonight.",
+        "Both plates are for Marco this morning!",
+        "Tonight the chipps go to Person A.",
+        "If at all possible, the notepad to Priya, maybe.",
+        "Everything except the apple is going home with Person B tonight, folks!",
+        "Forceps, sorry, I mean the spoon, to Omar.",
+        "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
+        "Pronto, the cup to Person A, capisce?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -205,9 +261,10 @@ KNOWN_MISSES = frozenset(
 # another engineer, reviewed by a second one, measured once at the end of session 17, its
 # refusals met by kind in session 18: asserted now, the rest in KNOWN_MISSES; "blind17" written
 # in session 18 by another engineer, reviewed by a second one, measured once at the end of
-# session 18; "blind18" written in session 19 by another engineer, reviewed by a second one,
-# measured once at the end of session 19)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind17", "blind18"})
+# session 18, its refusals met by kind in session 19: asserted now, the rest in KNOWN_MISSES;
+# "blind18" written in session 19 by another engineer, reviewed by a second one, measured once
+# at the end of session 19)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind18"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -265,6 +322,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes18"].entries}) >= 10
     assert len(CORPORA["blind17"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind17"].entries}) >= 3
+    assert len(CORPORA["causes19"].entries) >= 150
+    assert len({e.scene for e in CORPORA["causes19"].entries}) >= 10
     assert len(CORPORA["blind18"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind18"].entries}) >= 3
     for part, corpus in CORPORA.items():

@@ -76,10 +76,12 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # variants of each kind of blind16's refusals, written BEFORE any session-18 change; measured
 # once, then tuned on), blind17 (written in session 18 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineer who changed the grounder before its
-# one measurement at the end of session 18; tests do not assert it), blind18 (written in session
-# 19 by another engineer and committed alone, reviewed by a second engineer, never opened by the
-# engineer who changed the grounder before its one measurement at the end of session 19; tests do
-# not assert it).
+# one measurement at the end of session 18; tuned on in session 19), causes19 (session 19: fresh
+# variants of each kind of blind17's refusals and its refusal without readings, written BEFORE
+# any session-19 change; measured once, then tuned on), blind18 (written in session 19 by another
+# engineer and committed alone, reviewed by a second engineer, never opened by the engineer who
+# changed the grounder before its one measurement at the end of session 19; tests do not assert
+# it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -113,6 +115,7 @@ PARTS = (
     "blind16",
     "causes18",
     "blind17",
+    "causes19",
     "blind18",
 )
 

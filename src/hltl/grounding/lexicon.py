@@ -97,6 +97,7 @@ for _lemma, _forms in {
     "serve": ("serves", "serving", "served"),
     "lend": ("lends", "lending", "lent"),
     "slip": ("slips", "slipping", "slipped"),  # "slip Bob the chips"
+    "present": ("presents", "presenting", "presented"),  # session 19
 }.items():
     _verb(_lemma, "give", *_forms)
 # bring: a person ("bring A the cup", "bring the cup to A") or a surface ("… to the table")
@@ -120,6 +121,23 @@ for _lemma, _forms in {
     "relocate": ("relocates", "relocating", "relocated"),
     "bung": ("bungs", "bunging", "bunged"),  # "bung the cup over to Bob"
     "ferry": ("ferries", "ferrying", "ferried"),
+    # session 19: verbs of carrying by class, not one by one ("haul the box onto the pallet",
+    # "hoist the drill up to Kofi", "lob the crisps to Bob", "relay the cup to Person B")
+    "haul": ("hauls", "hauling", "hauled"),
+    "hoist": ("hoists", "hoisting", "hoisted"),
+    "lug": ("lugs", "lugging", "lugged"),
+    "tote": ("totes", "toting", "toted"),
+    "heave": ("heaves", "heaving", "heaved"),
+    "shuttle": ("shuttles", "shuttling", "shuttled"),
+    "lob": ("lobs", "lobbing", "lobbed"),
+    "sling": ("slings", "slinging", "slung"),
+    "fling": ("flings", "flinging", "flung"),
+    "relay": ("relays", "relaying", "relayed"),
+    "dispatch": ("dispatches", "dispatching", "dispatched"),
+    "convey": ("conveys", "conveying", "conveyed"),
+    "wheel": ("wheels", "wheeling", "wheeled"),
+    "trundle": ("trundles", "trundling", "trundled"),
+    "slot": ("slots", "slotting", "slotted"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -139,6 +157,13 @@ for _lemma, _forms in {
     "position": ("positions", "positioning", "positioned"),
     "load": ("loads", "loading", "loaded"),  # "load the small box onto the pallet"
     "pile": ("piles", "piling", "piled"),
+    # session 19: verbs of setting down by class ("perch the teddy on the mat", "stash the glue
+    # on the shelf", "tuck the bib in the highchair", "deposit the box on the pallet")
+    "perch": ("perches", "perching", "perched"),
+    "stash": ("stashes", "stashing", "stashed"),
+    "tuck": ("tucks", "tucking", "tucked"),
+    "deposit": ("deposits", "depositing", "deposited"),
+    "dump": ("dumps", "dumping", "dumped"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
 }.items():
     _verb(_lemma, "put", *_forms)
@@ -146,6 +171,13 @@ for _lemma, _forms in {
 for _lemma, _forms in {
     "pick": ("picks", "picking", "picked"),
     "grab": ("grabs", "grabbing", "grabbed"),
+    # session 19: finding and lifting, by class: no task alone ("find the ruler and get it to
+    # Zoe", "lift the lemon and rest it on the rack")
+    "find": ("finds", "finding", "found"),
+    "locate": ("locates", "locating", "located"),
+    "lift": ("lifts", "lifting", "lifted"),
+    "collect": ("collects", "collecting", "collected"),
+    "retrieve": ("retrieves", "retrieving", "retrieved"),
 }.items():
     _verb(_lemma, "pick", *_forms)
 # possession, with the person as subject ("A wants the bottle", "once A has the bottle")
@@ -175,6 +207,15 @@ for _lemma, _forms in {
     _verb(_lemma, "possess", *_forms)
 
 GIVE_VERBS = frozenset(lemma for lemma, c in VERB_CLASS.items() if c == "give")
+# verbs of session 19's classes are read as said, never as a typo's target: a rare verb one edit
+# from another word ('belay' → 'relay', 'mug' → 'lug') would read a word that is not one
+_SAID_ONLY = frozenset(
+    {
+        *("haul", "hoist", "lug", "tote", "heave", "shuttle", "lob", "sling", "fling", "relay"),
+        *("dispatch", "convey", "wheel", "trundle", "perch", "stash", "tuck", "deposit", "dump"),
+        *("find", "locate", "lift", "collect", "retrieve", "slot", "present"),
+    }
+)
 
 # Multi-word keywords, longest first when matching. Values are the lemma used by the parser.
 PHRASES: dict[tuple[str, ...], str] = {
@@ -1209,6 +1250,8 @@ class Lexicon:
         # texts lexed while one instruction is read (the normaliser looks at the same words in
         # many of its steps); emptied by forget() when a new instruction starts
         self._lexed: dict[str, tuple[Item, ...]] = {}
+        # the grammar's reading (a tree, or the refusal) of each text read for this instruction
+        self.readings: dict[str, object] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
         self._own: frozenset[str] = frozenset()
@@ -1326,6 +1369,7 @@ class Lexicon:
     def forget(self) -> None:
         """Drop the texts lexed so far (called when a new instruction starts)."""
         self._lexed.clear()
+        self.readings.clear()
 
     def lexed(self, text: str) -> tuple[Item, ...] | None:
         return self._lexed.get(text)
@@ -1827,7 +1871,11 @@ def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:
 
 @functools.cache
 def _keywords() -> tuple[str, ...]:
-    return tuple(k for k in dict.fromkeys([*WORDS, *VERBS]) if len(k) >= 3 and k.isalpha())
+    return tuple(
+        k
+        for k in dict.fromkeys([*WORDS, *VERBS])
+        if len(k) >= 3 and k.isalpha() and VERBS.get(k) not in _SAID_ONLY
+    )
 
 
 # keywords the grammar skips: a word corrected into one would vanish silently ("aer" → "are")

@@ -74,6 +74,23 @@ def canonical(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+def canonical19(text: str, lexicon: Lexicon) -> str:
+    """``text`` rewritten by the session-19 mechanisms (words by kind: fillers, the speaker's
+    stance, hedges, closers, corrections by cue, counts, exclusions, bare names), then by every
+    other one: tried only where ``canonical`` alone is refused, so what that reads stays read as
+    it was."""
+    return canonical(rewritten19(text, lexicon), lexicon)
+
+
+def rewritten19(text: str, lexicon: Lexicon) -> str:
+    """``text`` rewritten by the session-19 mechanisms alone (read first: when that reads, the
+    other rewrites need not run again)."""
+    out = " ".join(text.split())
+    for step in _STEPS19:
+        out = step(out, lexicon)
+    return out
+
+
 def _names(text: str, lexicon: Lexicon) -> list[Item]:
     """The scene's objects, people and surfaces ``text`` names, in order (also inside words the
     lexer joins to an unknown word: 'the plates out')."""
@@ -908,7 +925,10 @@ def _notes(text: str, lexicon: Lexicon) -> str:
         adjs = {w for ws in lists for w in ws}
         if adjs:
             alt = "|".join(map(re.escape, sorted(adjs)))
-            text = _sub(rf"\b{cat},\s*(?:the )?({alt}) one,?", rf"the \1 {cat}", text)
+            # (not before a list: "one pen, the red one and the blue one" is two, not one)
+            text = _sub(
+                rf"\b{cat},\s*(?:the )?({alt}) one(?!\s+(?:and|or)\b),?", rf"the \1 {cat}", text
+            )
     # "Carol: nothing." / "nothing for Carol" / "the large box stays": no task
     clauses = re.split(r"(?<=[.;,])\s+", text)
     kept = []
@@ -5347,6 +5367,7 @@ def _scene_words(scene: Scene) -> frozenset[str]:
     return frozenset(w for n in names for w in re.split(r"[\s_]+", n.lower()) if w)
 
 
+@functools.lru_cache(maxsize=4096)
 def _near_verb(word: str) -> bool:
     """Whether ``word`` is one edit from a verb the grammar reads ('hnad' for 'hand')."""
     for verb in VERBS:
@@ -6028,6 +6049,863 @@ def _sold18(text: str, lexicon: Lexicon) -> str:
     return _sub(r"^sold to ([A-Za-z][\w ]*?),\s*(?:one|a|an|the) ([a-z ]+?)(\s*[.!]?)$", sold, text)
 
 
+# -- session 19: blind17's kinds, as general mechanisms -----------------------------------------
+#
+# A word is taken as the speaker's own (a filler) by what KIND of word it is and WHERE it stands,
+# not by a list of sentences: a manner adverb (an -ly word whose stem is an English word:
+# 'smartly', 'gently'), a sentence particle ('lah', 'innit', 'ja'), a word of immediacy ('tonight',
+# 'right now'), a word of address or an interjection (by kind, _ADDRESS19 / _INTERJECTION19), or a
+# word that is no English word at all ('cariad', 'eish', 'lgtm': not among the 20,000 most
+# frequent words, no first name, no title, not one edit from a verb, a scene name or any word of
+# one). None of them is ever taken off where it could name a scene thing (nor by a typo), and an
+# unknown word is taken off only as a stretch of its own that does not follow an object (where
+# it could be one more object: "the knife, whisk" stays refused).
+
+_ADDRESS19 = frozenset(
+    {
+        *("sister", "sis", "brother", "bro", "sailor", "shipmate", "matey", "hearty", "hearties"),
+        *("captain", "cap'n", "skipper", "cobber", "hinny", "cher", "dawg", "doll", "cariad"),
+        *("bach", "boyo", "lads", "laddie", "lassie", "mucker", "marra", "kidda", "chum"),
+        *("amigo", "amiga", "compadre", "partner", "pardner", "sport", "fam", "bruv", "cuz"),
+        *("bredren", "boet", "bru", "bestie", "babes", "sweetness", "treasure", "angel"),
+        *("y'all", "yall", "everybody", "people", "gang", "crew", "troops", "kiddo", "buddy"),
+        *("boy", "boys", "girls", "gents", "ladies", "gentlemen", "colleagues", "friends"),
+        *("old", "me", "my", "our", "dear", "good", "young", "big", "little"),
+    }
+)
+_INTERJECTION19 = frozenset(
+    {
+        *("abeg", "o", "oya", "jor", "sha", "chur", "wahey", "woohoo", "whoopee", "arr", "ahoy"),
+        *("avast", "yarr", "oi", "oy", "howzit", "eish", "ja", "shot", "lekker", "tidy", "lush"),
+        *("ace", "sweet", "cool", "nice", "awesome", "wicked", "sound", "dope", "slay", "bet"),
+        *("innit", "lah", "la", "leh", "lor", "hor", "ah", "eh", "hey", "yo", "ey", "ayy"),
+        *("yeah", "yep", "yup", "aye", "ok", "okay", "alright", "right", "well", "so", "now"),
+        *("capisce", "capiche", "pronto", "presto", "voila", "bravo", "encore", "cheers", "ta"),
+        *("muchly", "diolch", "merci", "gracias", "grazie", "danke", "namaste", "aloha", "bless"),
+        *("please", "thanks", "thank", "you", "kindly", "steady", "easy", "careful", "quick"),
+        *("smart", "sharpish", "chop", "lickety-split", "asap", "and", "just", "there"),
+        *("whoa", "wow", "gosh", "golly", "blimey", "crikey", "cor", "heck", "hmm", "um", "uh"),
+        *("er", "erm", "mighty", "fine", "proper", "like", "hands", "slow", "slowly", "magic"),
+        *("magnificent", "marvellous", "marvelous", "wonderful", "brilliant", "fantastic"),
+        *("superb", "excellent", "perfect", "great", "lovely", "splendid", "terrific", "amazing"),
+    }
+)
+# words that order, count, choose, negate or time what is asked: an -ly word among them is no
+# filler ('lastly', 'separately', 'equally', 'only')
+_LY_HELD19 = frozenset(
+    {
+        *("only", "early", "firstly", "secondly", "thirdly", "lastly", "finally", "respectively"),
+        *("separately", "individually", "equally", "evenly", "alternately", "exclusively"),
+        *("solely", "merely", "previously", "subsequently", "initially", "eventually", "mostly"),
+        *("partly", "nearly", "mainly", "likely", "unlikely", "simultaneously", "jointly"),
+        *("collectively", "accordingly", "similarly", "additionally", "lately", "shortly"),
+        *("daily", "weekly", "monthly", "hourly", "nightly", "elderly", "family", "supply"),
+        *("apply", "reply", "rely", "ally", "rally", "belly", "jelly", "italy", "july", "ugly"),
+        *("holy", "silly", "jolly", "bully", "curly", "woolly", "friendly", "lonely", "costly"),
+        *("instead", "together", "partially", "fully", "wholly", "entirely", "completely"),
+        *("randomly", "personally", "directly", "straight", "later", "afterwards", "next"),
+        *("actually", "alternatively", "ideally", "preferably", "optionally", "possibly"),
+        *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
+    }
+)
+_PARTICLES19 = frozenset({"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"})
+_NOW19 = re.compile(
+    r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
+    r"forthwith|quick smart)\b",
+    _F,
+)
+_TIMED19 = re.compile(
+    r"\b(?:later|after|afterwards|before|then|first|next|tomorrow|soon|until|till|once|when|"
+    r"while|wait|yesterday|last)\b",
+    _F,
+)
+_DETERMINER19 = frozenset(
+    {"the", "a", "an", "this", "that", "his", "her", "their", "my", "your", "our", "its", "some"}
+)
+
+
+def _manner(word: str, lexicon: Lexicon) -> bool:
+    """An -ly adverb of manner or stance ('smartly', 'gently', 'nicely', 'happily'): its stem is
+    an English word, and it orders, counts, times or names nothing."""
+    low = word.lower()
+    if len(low) < 5 or not low.endswith("ly") or not low.isalpha() or low in _LY_HELD19:
+        return False
+    if low in _scene_words(lexicon.scene) or low in first_names() or low in VERBS:
+        return False
+    stems = {low[:-2], low[:-3] + "y", low[:-1] + "e", low[:-2] + "le", low[:-4] + "le"}
+    return bool(stems & _COMMON) or low in _MANNER
+
+
+def _unknown_word(word: str, lexicon: Lexicon) -> bool:
+    """A word that is no English word the grounder knows of ('cariad', 'eish', 'lgtm')."""
+    low = word.lower().strip("'")
+    return (
+        low.replace("-", "").replace("'", "").isalpha()
+        and low not in _COMMON
+        and low not in first_names()
+        and low not in TITLES
+        and low not in _scene_words(lexicon.scene)
+        and not _held_word(low, lexicon)
+        and not _near_verb(low)
+    )
+
+
+def _filler_word(word: str, lexicon: Lexicon) -> bool:
+    low = word.lower()
+    if low in _scene_words(lexicon.scene):
+        return False
+    if low in _ADDRESS19 or low in _INTERJECTION19 or low in _ADDRESS or low in _INERT_WORDS:
+        return True
+    return _manner(low, lexicon) or _unknown_word(low, lexicon)
+
+
+_SET_FILLERS19 = re.compile(
+    r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
+    r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
+    r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
+    r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
+    r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
+    _F,
+)
+
+
+def _filler_stretch(chunk: str, after_object: bool, lexicon: Lexicon) -> bool:
+    """A stretch that is the speaker's own words: every word a filler by kind, at least one not
+    a word of address alone, nothing named in the scene (nor by a typo), no digit; an unknown
+    word only where it cannot be one more object ('…, whisk' after an object stays)."""
+    words = re.findall(r"[a-z][a-z'-]*", chunk.lower())
+    if not words or len(words) > 5 or re.search(r"\d", chunk):
+        return False
+    if _SET_FILLERS19.match(chunk.strip(" .!?")) and _names_nothing(chunk, lexicon):
+        return True
+    if not all(_filler_word(w, lexicon) for w in words):
+        return False
+    if words[0] in ("and", "so", "then", "just") and len(words) == 1:
+        return False
+    if "then" in words or ("there" in words and words != ["there"]):
+        return False
+    held = [w for w in words if _held_word(w, lexicon)]
+    allowed = ("me", "my", "our", "old", "little", "big", "good", "so", "just", "and")
+    if words == ["like"]:
+        return True  # "…, straightaway like": said after the request
+    if any(w not in allowed for w in held):
+        return False
+    if after_object and any(
+        _unknown_word(w, lexicon) and w not in _INERT_WORDS and w not in _INTERJECTION19
+        for w in words
+    ):
+        return False
+    return _names_nothing(chunk, lexicon)
+
+
+def _fillers19(text: str, lexicon: Lexicon) -> str:
+    """The speaker's own words taken off by kind (above): manner adverbs, particles and words of
+    immediacy wherever they stand (not between a determiner and its noun: 'the woolly hat'), and
+    whole stretches between punctuation that are fillers only."""
+    out = text
+    if not _TIMED19.search(out):
+        out = _NOW19.sub("", out)
+    words = out.split(" ")
+    # interjections said first without a comma ('aye aye the bottle's going …')
+    lead = 0
+    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION19 - _ADDRESS:
+        if _held_word(words[lead], lexicon) or words[lead].lower() in ("please", "and", "so"):
+            break
+        lead += 1
+    if lead and (words[lead].lower() in _DETERMINER19 or words[lead].lower() in VERBS):
+        words = words[lead:]
+    kept: list[str] = []
+    for k, w in enumerate(words):
+        core = w.strip('.,;:!?"')
+        low = core.lower()
+        prev = words[k - 1].lower().strip(",;:") if k else ""
+        last = k + 1 == len(words) or w[-1:] in ",;:.!?"
+        glued = low in _PARTICLES19 and k > 0 and prev[-1:] not in (",", ";", ":")
+        loose = (
+            _unknown_word(core, lexicon)
+            and 0 < k < len(words) - 1
+            and (
+                words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+                and _ends_object(" ".join(words[:k]), lexicon)
+            )
+        )  # 'the sippy cup aloft on the high chair': a word between a thing and where it goes
+        if (
+            core
+            and (glued or loose or _manner(core, lexicon))
+            and (prev not in _DETERMINER19 or last)
+        ):
+            tail = w[len(w.rstrip('.,;:!?"')) :]
+            if tail and kept:
+                kept[-1] = kept[-1].rstrip(",;:") + tail
+            continue
+        kept.append(w)
+    out = " ".join(kept)
+    parts = _STRETCH.split(out.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    asks = "?" in out and not re.match(r"^(?:could|can|would|will|may|might|is it)\b", out, _F)
+    if (
+        len(chunks) < 2
+        or asks
+        or _rx(
+            r"\b(?:no|sorry|actually|wait|i mean|hang on|hold on|scratch|strike|correction|rather|"
+            r"oops|whoops|i tell a lie|my mistake|my bad)\b"
+        ).search(out)
+    ):
+        # a stretch taken off next to a correction would change what the correction takes back
+        return _tidy19(out)
+    drop = []
+    for k, c in enumerate(chunks):
+        prev = chunks[k - 1] if k else ""
+        prev_sep = seps[k - 1] if k else "."
+        after_object = (
+            k > 0 and prev_sep.strip()[:1] not in (".", "!", "?") and _ends_object(prev, lexicon)
+        )
+        drop.append(bool(c.strip()) and _filler_stretch(c, after_object, lexicon))
+    if not any(drop) or all(d or not c.strip() for d, c in zip(drop, chunks, strict=True)):
+        return _tidy19(out)
+    return _joined19(chunks, seps, drop)
+
+
+_VERB_NEXT19 = re.compile(
+    r"^(?:wants|needs|gets|receives|has|would|should|could|will|can|is|are|goes|go|takes|"
+    r"asked|likes|shall|must)\b",
+    _F,
+)
+
+
+def _joined19(chunks: list[str], seps: list[str], drop: list[bool]) -> str:
+    """The stretches kept, joined as they were said: a sentence end of a stretch taken off
+    stays, and an aside taken off between a subject and its verb ('Each patient, gently,
+    receives …') leaves no comma."""
+    res = ""
+    pending = ""
+    for k, c in enumerate(chunks):
+        sep = seps[k] if k < len(seps) else ""
+        end = sep.strip()[:1] if sep.strip()[:1] in (".", "!", "?") else ""
+        if drop[k] or not c.strip():
+            if end and res:
+                pending = end
+            elif res and not pending:
+                pending = ","
+            continue
+        if res:
+            if pending in (".", "!", "?"):
+                res = res.rstrip(" ,;:.!?") + pending + " "
+            elif pending == "," and _VERB_NEXT19.match(c.strip()):
+                res = res.rstrip(" ,;:") + " "
+            elif not res.endswith(" "):
+                res += " "
+        pending = ""
+        res += c
+        res += sep if sep.strip() else " "
+    return _tidy19(res)
+
+
+def _tidy19(text: str) -> str:
+    out = re.sub(r"([.!?])[.!?,;:]+", r"\1", text)
+    out = re.sub(r"\s+([,;:.!?])", r"\1", out)
+    out = re.sub(r"([,;:])\s*([,;:.!?])", r"\2", out)
+    out = re.sub(r"^[\s,;:.!]+", "", out)
+    out = re.sub(r"\s{2,}", " ", out).strip()
+    out = re.sub(r"[,;:]$", "", out).strip()
+    return out
+
+
+def _ends_object(chunk: str, lexicon: Lexicon) -> bool:
+    named = _names(chunk, lexicon)
+    if not named:
+        return False
+    last = named[-1]
+    tail = chunk.lower().rstrip(" .!?")
+    return any(r.kind == "object" for r in last.refs) and tail.endswith(last.text.lower())
+
+
+# The speaker's own stance said with 'I' or 'me' (not a recipient): a stretch whose verb is one of
+# thinking, hoping, begging, thanking, apologising or asking leave ('I reckon', 'I'm afraid', 'If I
+# may', 'I beg you', 'I thank thee', 'I hate to be a pain, but', 'Let me think', 'Mind you, I'm
+# no expert'), and 'help me' before a verb (Singapore English 'please'). Every word of the
+# stretch is of that closed set, and it names nothing; 'I need the cup' and 'Bring me the chips'
+# stay refused (a want and a recipient are not in the set).
+_STANCE19 = frozenset(
+    {
+        *("i", "i'm", "i'd", "i'll", "i've", "me", "my", "myself", "we", "we'd", "let", "if"),
+        *("think", "reckon", "suppose", "guess", "believe", "daresay", "dare", "say", "expect"),
+        *("imagine", "bet", "trust", "gather", "hope", "fear", "feel", "afraid", "sure", "must"),
+        *("may", "might", "beg", "begging", "thank", "thee", "thou", "you", "ye", "hate", "to"),
+        *("be", "a", "pain", "bother", "nuisance", "ask", "asking", "so", "very", "most"),
+        *("heartily", "kindly", "truly", "really", "just", "rest", "case", "the", "mind", "am"),
+        *("no", "expert", "leave", "it", "up", "honest", "honestly", "promise", "swear", "but"),
+        *("suspect", "see", "hear", "told", "understand", "grateful", "oh", "well", "bless"),
+        *("apologise", "apologize", "sorry", "confess", "admit", "again", "this", "once"),
+    }
+)
+_STANCE_VERB19 = re.compile(
+    r"\b(?:think|reckon|suppose|guess|believe|daresay|dare say|expect|imagine|bet|trust|gather|"
+    r"hope|fear|afraid|sure|must say|may|beg|begging|thank|hate to|rest my case|mind you|"
+    r"no expert|leave it (?:up )?to you|promise|swear|suspect|understand|am told|i'm told|"
+    r"grateful|bless)\b",
+    _F,
+)
+
+
+def _stance_stretch(chunk: str, lexicon: Lexicon) -> bool:
+    words = re.findall(r"[a-z][a-z']*", chunk.lower())
+    return (
+        bool(words)
+        and len(words) <= 8
+        and all(w in _STANCE19 for w in words)
+        and bool(_STANCE_VERB19.search(chunk))
+        and not re.search(r"\b(?:no|not|n't)\b(?! expert| bother)", chunk, _F)
+        and _names_nothing(chunk, lexicon)
+    )
+
+
+def _speaker19(text: str, lexicon: Lexicon) -> str:
+    """The speaker's stance taken off (above); 'me hearty', 'me lad', 'me old mucker' (address);
+    'help me <verb>' (please); 'I reckon P wants X' (P wants X); 'May I ask that X be placed …'
+    (X should be placed …); 'May I request X for P?' (X for P)."""
+    out = _sub(
+        r"\bme (?:old |dear |fine |young )?(?:hearty|hearties|lad|lads|lass|mucker|matey|"
+        r"darling|duck|beauty|beauties|friend|boy|boys|girl|son)\b",
+        "",
+        out := text,
+    )
+    out = _sub(r"\bbless (?:her|him|them|'em|you|me)(?: (?:little )?(?:heart|socks))?\b", "", out)
+    out = _sub(
+        r"(?:^|(?<=[,.!?] ))(?:(?:i'm|i am) )?(?:so |very |really |terribly )?sorry to (?:bother|"
+        r"trouble|ask|interrupt|disturb|be a pain)(?: you)?(?: again)?,?(?: but,?)?\s*",
+        "",
+        out,
+    )
+    out = _sub(
+        r"\b(?:can |could |please )?help me (?:to )?(?=([a-z]+)\b)",
+        lambda m: "" if m.group(1).lower() in VERBS else m.group(0),
+        out,
+    )
+    out = _sub(r"^(?:(?:and|so|oh|well),? )?let me (?:think|see)\s*[.,:;!]+\s*", "", out)
+    out = _sub(
+        r"^(?:may|might|can|could) (?:i|we) (?:ask|request) (?:that )?(.+?) be ",
+        r"\1 should be ",
+        out,
+    )
+    out = _sub(r"^(?:may|might|can|could) (?:i|we) (?:ask for|request) ", "", out)
+    m = _rx(
+        r"^((?:oh,? |well,? |and |so )?(?:(?:i|we) (?:do |really |honestly )?(?:think|reckon|"
+        r"suppose|guess|believe|daresay|dare say|expect|imagine|bet|trust|gather|hope|suspect|"
+        r"understand|must say|fear|feel)|(?:i'm|i am|we're|we are) (?:afraid|sure|told))"
+        r"(?: that)?,?) "
+    ).match(out)
+    if m is not None and _names_nothing(m.group(1), lexicon):
+        out = out[m.end() :]
+    parts = _STRETCH.split(out.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    negated = re.search(r"\b(?:not|never|no)\b|n't\b", out.replace("don't mind", ""), _F)
+    if len(chunks) >= 2 and not negated:  # 'Not yet, I'll leave it to you: …' stays refused
+        drop = [bool(c.strip()) and _stance_stretch(c, lexicon) for c in chunks]
+        if any(drop) and not all(d or not c.strip() for d, c in zip(drop, chunks, strict=True)):
+            res = ""
+            for k, c in enumerate(chunks):
+                if drop[k] or not c.strip():
+                    continue
+                if res:
+                    res += seps[k - 1] if k - 1 < len(seps) and seps[k - 1].strip() else ", "
+                res += c
+            tail = seps[-1].strip() if len(seps) >= len(chunks) else ""
+            out = res + (tail[:1] if tail[:1] in (".", "!", "?") else "")
+    return _tidy19(out) if out != text else text
+
+
+# A hedge or a condition of courtesy around one request leaves nothing open: 'maybe' /
+# 'perhaps' / 'possibly' (not with 'or' or 'not': "maybe give Bob the cup, or maybe not" stays
+# refused), 'if you could (just) VP', 'is it okay if you VP', 'is it alright if P has X' (P gets
+# X), 'would it be alright to VP', "if you'd be so good", 'if ye please', 'only if it's no
+# bother'; and a tag after a request ('…, yeah?', '…, right?', '…, isn't it?', '…, won't you?',
+# '…, can or not?', '…, innit?'), but not a tag about a person ("Tom has the gloves, doesn't
+# he?": a question of fact).
+_TAG19 = (
+    r"(?:isn't it|doesn't it|won't you|will you|would you|could you|can you|right|yeah|yes|yah|"
+    r"ya|okay|ok|eh|innit|can or not|can|alright|all right|aye|yeah\?? no|agreed|got it|"
+    r"understood|see)"
+)
+
+
+def _hedges19(text: str, lexicon: Lexicon) -> str:
+    out = _sub(
+        r"(?:^|,\s*|\bbut\s+)(?:and )?if (?:it's|it is|it isn't|it's not|that's|that is) (?:not )?"
+        r"(?:too much |any |no )?(?:trouble|bother|okay|ok|alright|all right|fine|possible)"
+        r"\s*(?:,|(?=[.!?]|$))",
+        ", ",
+        text,
+    ).strip(" ,")
+    out = _sub(r"(?:^|(?<=[.!?] ))(?:be (?:a|an|my) (?:[a-z']+ ){1,3}and) (?=[a-z]+ )", "", out)
+    out = _sub(r"\b(would|could|will) be so (?:good|kind) as to\b", r"\1", out)
+    out = _sub(r"\b(?:is|are) to (?:receive|get|have)\b", "gets", out)
+    out = _sub(r"(?<=[a-z]) only\s*([.!]?)$", r"\1", out)
+    out = _sub(r"(\bthen\b[^.!?]*?) (?:after|afterwards)\s*([.!?]|$)", r"\1\2", out)
+    out = _sub(r"^(can|could|will|would)\b(.+?)\s+or not\s*\?$", r"\1\2?", out)
+    asked = out.rstrip().endswith("?") or re.match(r"^(?:could|can|would|will|might)\b", out, _F)
+    if asked and not re.search(r"\b(?:or|not|n't|unless)\b", out, _F):
+        # a softener inside a polite question ('could the apple maybe go to Carol?'); a bare
+        # '…, maybe' after a request leaves it open and stays refused
+        out = _sub(r"(?:,\s*)?\b(?:maybe|perhaps|possibly)\b(?:\s*,)?\s*", " ", out)
+        out = _sub(r"\bif at all possible\b\s*,?\s*", "", out)
+    out = _sub(
+        r"^(?:so,? |oh,? |and )?if (?:you|the robot|we|someone)(?:'d| would| could| can) "
+        r"(?:just |please |kindly )*(?=([a-z]+) )",
+        lambda m: "" if m.group(1).lower() in VERBS else m.group(0),
+        out,
+    )
+    out = _sub(
+        r"^is it (?:okay|ok|alright|all right|fine) if (?:you|the robot|we) (?:just )?", "", out
+    )
+    out = _sub(
+        r"^(?:sorry,? )?is it (?:okay|ok|alright|all right|fine) if ([A-Za-z][\w ]*?) "
+        r"(?:has|gets|takes|could have|can have) ",
+        r"\1 gets ",
+        out,
+    )
+    out = _sub(r"^would it be (?:okay|ok|alright|all right|fine|possible) to ", "", out)
+    out = _sub(
+        r"^(?:,\s*)?if (?:you|ye|thou)(?:'d| would| wouldst)? (?:be so (?:good|kind)|"
+        r"please)\s*,\s*",
+        "",
+        out,
+    )
+    out = _sub(r",?\s*if (?:you|ye|thou) (?:please|will)\b", "", out)
+    out = _sub(r"(?:^|(?<=[.!?])\s*)only if it's no (?:bother|trouble)\s*[.!]?", "", out)
+    m = _rx(rf",\s*{_TAG19}\s*[?.!]*\s*$").search(out)
+    if m is not None and m.start() > 0:
+        out = out[: m.start()] + "."
+    out = _tidy19(out)
+    if out != text and out.endswith("?") and text.rstrip().endswith("?"):
+        # "Maybe pass Alice the bottle?", "Is it alright if P has X?": the hedge was the
+        # question, and what is left is a request
+        head = out.rstrip("?").strip()
+        first = head.split(" ", 1)[0].lower()
+        stated = first in VERBS or re.match(
+            r"^[A-Z][\w ]*? gets\b|^the [a-z ]+ goes to\b", head, _F
+        )
+        if stated and first not in ("could", "can", "would", "will", "is", "are", "do", "does"):
+            out = head + "."
+    return out if out.strip() else text
+
+
+# Closers after the request that ask nothing more ("That's all from me.", "End of list.", "Make
+# it so.", "Over to you.", "That concludes the briefing.", "them's the orders", "Nothing
+# further.", "and that's that", "Those are the headlines.", "I rest my case.", "… then we can
+# close the ticket"): a last stretch or sentence that opens as a closer does, names nothing in
+# the scene, and holds no word that adds, excepts, negates what was asked or points at a thing.
+_CLOSER19 = re.compile(
+    r"^(?:and |so )?(?:that's|that is|thats|that'll be|those are|these are|them's|this is|"
+    r"we're|we are|that concludes|that completes|end of|nothing (?:further|else|more)|no further|"
+    r"so let it be|let it be|make it so|over to you|over and out|class dismissed|story over|"
+    r"job done|job's|jobs a|all done|all hands|what a|and scene|that be all|that would be|"
+    r"that'd be|there's|there you go|there we go|so be it|"
+    r"(?:and )?then (?:we|you|i) (?:can|could|'ll|will|are|'re)|we're|we are)\b",
+    _F,
+)
+_CLOSER_HELD19 = re.compile(
+    r"\b(?:not|n't|except|but|too|also|another|more(?! questions)|other|else(?=\s+(?:to|for|on)"
+    r")|and the|give|hand|pass|bring|take|put|place|send|them|him|her|he|she|they)\b",
+    _F,
+)
+
+
+def _closers19(text: str, lexicon: Lexicon) -> str:
+    if "?" in text:
+        return text  # "ava gets the teddy?. That's everything.": a question stays one
+    parts = _STRETCH.split(text.strip())
+    chunks, seps = parts[0::2], [*parts[1::2], ""]
+    keep = len(chunks)
+    for k in range(len(chunks) - 1, 0, -1):
+        c = chunks[k].strip()
+        opener = _CLOSER19.match(c)
+        go = re.match(r"^(?:go(?: go)*|let's go|off you go)$", c, _F)
+        if go and k > 0 and _CLOSER19.match(chunks[k - 1].strip()):
+            continue  # '… All hands, go.': said with the closer
+        if not c or _filler_stretch(c, False, lexicon):
+            continue
+        if (
+            opener is not None
+            and not _CLOSER_HELD19.search(c[opener.end() :])
+            and _names_nothing(c, lexicon)
+        ):
+            keep = k
+            continue
+        break
+    if keep < len(chunks) and all(
+        not c.strip() or _filler_stretch(c.strip(), False, lexicon) for c in chunks[keep:]
+    ):
+        keep = len(chunks)  # fillers only: _fillers19's to take off
+    chunks, seps = chunks[:keep], seps[:keep]
+    # a closer said on in the last stretch kept: '… and then we're lekker', '… then we can
+    # close the ticket', '… and that's your lot'
+    last = chunks[-1]
+    m = _rx(
+        r"\s+(?:and then |then |and )(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
+        r" [^,.;!?]*$"
+    ).search(last)
+    if (
+        m is not None
+        and not _CLOSER_HELD19.search(m.group(0))
+        and _names_nothing(m.group(0), lexicon)
+        and _names(last[: m.start()], lexicon)
+    ):
+        chunks[-1] = last[: m.start()]
+    head = "".join(
+        p for k, c in enumerate(chunks) for p in (c, seps[k] if k < len(chunks) - 1 else "")
+    )
+    if head.strip() == text.strip() or not head.strip():
+        return text
+    head = _sub(r"(?:[,.!]\s*)(?:sorry|so sorry)\s*[.!,]*\s*$", "", head)
+    return _tidy19(head) + ("." if not head.rstrip().endswith(("?", "!", ".")) else "")
+
+
+# Corrections by cue, as one rule: a cue that takes back what was just said ('sorry', 'no sorry',
+# 'whoops', 'oops', 'my mistake', 'my bad', 'pardon me', 'I mean', 'I misspeak', 'let me
+# rephrase', 'or rather', 'strike that', 'scratch that', 'belay that (order)', 'revert that',
+# 'correction:', 'no wait', 'no, hold on', 'eh no', 'nay') is said as the grammar's one form of
+# correction (', no, '), which replaces what the words after it name in the request before it,
+# or the whole request when they are one. A cue that ends the text, or one that begins it, is no
+# correction ('Sorry, give Bob the cup' apologises; 'Give Bob the cup. Scratch that.' stays
+# refused: nothing is left to do). A sentence that only apologises ('Sorry.', 'Sorry!') is taken
+# off.
+_CUE19 = (
+    r"(?:(?:no,? |eh,? no,? |oh,? )?(?:sorry|so sorry)(?:,? no)?(?:,? i mean)?|whoops|oops|"
+    r"(?:no,? )?my (?:mistake|bad)|pardon me|i mean|i misspeak|i misspoke|let me rephrase|"
+    r"(?:or )?rather|(?:no,? )?(?:strike|scratch|belay|revert|cancel) that(?: order)?|"
+    r"(?:wait|no wait|no),? (?:revert|scratch|strike|cancel) that|correction|"
+    r"no,? (?:wait|hold on|hang on)|eh,? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)"
+)
+
+
+def _corrections19(text: str, lexicon: Lexicon) -> str:
+    out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
+    out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
+    out = _sub(r",\s*(?:sorry|so sorry|apologies)\s*([.!]?)$", r"\1", out).strip()
+    # a cue after the correction ('…, my mistake, folks'): said of what came before it
+    out = _sub(
+        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?"
+        r"\s*([.!]?)$",
+        r"\1\2",
+        out,
+    )
+    m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
+    if m is not None and m.start() > 0:
+        before, after = out[: m.start()], out[m.end() :]
+        if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
+            # "… and then, sorry, the chips to Person A": a pause after a conjunction
+            return f"{before} {after}"
+        after = _sub(r"^(?:no|sorry|i misspeak|i mean),?\s*", "", after)
+        if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
+            # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
+            return f"{before} {after}"
+        last = re.split(r"[.!?;]", before.strip(" .!?"))[-1]
+        steps = sum(1 for w in re.findall(r"[a-z]+", last.lower()) if w in VERBS)
+        if steps > 1 or re.search(r"\bthen\b", last, _F):
+            # "Give Bob the cup, then give Alice the apple. Scratch that, …": which part?
+            return text
+        if _names(before, lexicon) and _names(after, lexicon):
+            same = _rx(r"\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(after)
+            if same and before.rstrip(" .!").lower().endswith(same.group(1).lower()):
+                # "The hammer for Jess, no, the drill for Jess": the same person said again
+                after = after[: same.start()] + same.group(2)
+            instead = _rx(r"^(give|hand|pass) ([A-Z][\w ]*?)(?: instead)?\s*([.!]?)$").match(after)
+            said = _ids(before, lexicon, "object")
+            if instead and _only_person(instead.group(2), lexicon) and len(said) == 1:
+                # "Put bottle on shelf, no, give Alice instead": the same object
+                obj = _said(next(iter(said)), lexicon)
+                after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
+            out = f"{before}, no, {after}"
+            out = _sub(
+                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?\s*([.!]?)$",
+                r"\1",
+                out,
+            )
+            same = _rx(r"(?<=, no, )(.+?)\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(out)
+            if same and out[: same.start()].rstrip(" ,no").lower().endswith(same.group(2).lower()):
+                out = out[: same.start()] + same.group(1) + same.group(3)
+    return out if out else text
+
+
+def _counts19(text: str, lexicon: Lexicon) -> str:
+    """Counts and choices said another way: ', all of them' / ', both of them' / ', the two of
+    them' / ', every one of them' after the objects they count (the count checked against what
+    is named before); 'both of the Xs' (both Xs); 'any X at all' (any X); 'a single X' (one X);
+    'a X, either one,' (one X); choice tails after a choice ("doesn't matter which", 'no
+    preference', 'at your discretion'); 'the N things that aren't X or Y' (… X and Y); 'the Xs,
+    sorry, just the one' (the X: which one is not said, so its readings are named)."""
+    out = text
+
+    def counted(m: re.Match[str]) -> str:
+        before = out[: m.start()]
+        said = _ids(re.split(r"[.!?;]", before)[-1], lexicon, "object")
+        word = m.group(1).lower()
+        need = {"both": 2, "the two": 2, "the three": 3, "the four": 4, "all three": 3}.get(word)
+        if not said or (need is not None and len(said) != need) or len(said) < 2:
+            return m.group(0)
+        return "" if m.group(2) == "," else m.group(2)
+
+    out = _sub(
+        r",\s*(all|both|the two|the three|the four|every one|each one|all three) of them\b"
+        r"\s*(,|(?=[.!?]|$))",
+        counted,
+        out,
+    )
+    head = _rx(
+        r"^(?:(.+?) each (?:take|get|have|receive)s? one(?: thing| item)?|one (?:each|apiece))"
+        r"(?:,\s*(?:aye|yes|ok|okay))?\s*[:,]\s*"
+    ).match(out)
+    if head is not None:
+        rest = out[head.end() :]
+        people = _ids(rest, lexicon, "human")
+        said = _ids(head.group(1) or "", lexicon, "human")
+        numbered = re.search(r"\b(both|two|three|four|five)\b", head.group(1) or "", _F)
+        many = {"both": 2}.get(numbered.group(1).lower(), 0) if numbered else 0
+        many = many or (_NUMBER18.get(numbered.group(1).lower(), 0) if numbered else 0)
+        who = said == people if said else (many == len(people) if head.group(1) else True)
+        words = re.sub(r"\bperson [ab]\b", "", (head.group(1) or "").lower())
+        for it in _names(head.group(1) or "", lexicon):
+            words = words.replace(it.text.lower(), " ")
+        # only names and words that count them: "I'm not sure, Tom and Mia each …" keeps its
+        # opener, and is refused
+        who = who and set(re.findall(r"[a-z']+", words)) <= {
+            *("and", "the", "both", "two", "three", "four", "of", "them", "people", "all"),
+        }
+        tasks_said = len(re.findall(r"\b(?:to|for)\b", rest))
+        if who and len(_ids(rest, lexicon, "object")) == len(people) == tasks_said:
+            out = rest  # "P and Q each take one: X for P, Y for Q"
+    out = _sub(r"\bboth of the (?=(?:[a-z]+ )?[a-z]+s\b)", "both ", out)
+    out = _sub(r"\ball of the (?=[a-z]+s\b)", "all the ", out)
+    out = _sub(r"\b(any|whichever|either) ([a-z]+) at all\b", r"\1 \2", out)
+    out = _sub(r"\ba single (?=[a-z]+\b)", "one ", out)
+    out = _sub(r"\b(?:a|an) ([a-z]+),\s*(?:either|any) one\s*,?", r"one \1", out)
+    out = _sub(
+        r"\bwhichever ([a-z]+) you (?:like|want|fancy|choose|prefer|please)\b", r"one \1", out
+    )
+    chose = re.search(r"\b(?:one|any|either|whichever|each)\b", out, _F)
+    if chose:
+        out = _sub(
+            r",\s*(?:(?:it )?doesn't matter which(?: one)?|no preference|at your discretion|"
+            r"your (?:choice|call|pick)|dealer's choice|any (?:one )?will do|up to you)\s*"
+            r"(?=[,.!?]|$)",
+            "",
+            out,
+        )
+    out = _sub(
+        r"\b((?:things?|items?|ones?) that (?:aren't|are not|isn't|is not) the [a-z ]+?) or "
+        r"(the [a-z ]+?)\b(?=[.!?,]|$)",
+        r"\1 and \2",
+        out,
+    )
+
+    def rest_of(m: re.Match[str]) -> str:
+        n = _NUMBER18.get(m.group(1).lower())
+        left = _ids(m.group(2), lexicon, "object")
+        if n is None or not left or len(lexicon.scene.objects) - len(left) != n:
+            return m.group(0)
+        return f"everything except {m.group(2)}"
+
+    out = _sub(
+        r"\bthe (two|three|four|five) (?:things|items|objects) that (?:aren't|are not) "
+        r"(the [a-z ]+?(?: and the [a-z ]+?)*)(?=[.!?,]|$)",
+        rest_of,
+        out,
+    )
+
+    def just_one(m: re.Match[str]) -> str:
+        noun = m.group(2)
+        single = noun[:-1] if noun.endswith("s") and _ids(noun[:-1], lexicon, "object") else noun
+        if len(_ids(single, lexicon, "object")) < 2:
+            return m.group(0)
+        return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
+
+    out = _sub(
+        r"^(.*?\bthe )([a-z]+)( [^,]*?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one\s*([.!]?)$",
+        just_one,
+        out,
+    )
+    return out
+
+
+def _negation19(text: str, lexicon: Lexicon) -> str:
+    """Exclusion said another way: 'save the X' after what it is taken from (except the X);
+    'except X' with no article; 'that's not' / 'that is not' (that isn't); 'the X that isn't
+    <colour or size>' (the one X that is not: named when one is left, else its readings);
+    'P, not Q,' and ', not Q' for a person Q said nowhere else (Q is no recipient: taken off)."""
+    out = _sub(r"\bthat(?:'s| is) not\b", "that isn't", text)
+    out = _sub(r"(?<=[a-z,]) save (?=the |for the )", " except ", out)
+    out = _sub(
+        r"\bexcept (?!the\b|for\b|a\b|an\b|that\b)([a-z]+)\b",
+        lambda m: f"except the {m.group(1)}" if _ids(m.group(1), lexicon, "object") else m.group(0),
+        out,
+    )
+
+    def not_adj(m: re.Match[str]) -> str:
+        noun, adj = m.group(1), m.group(2).lower()
+        ids = _ids(noun, lexicon, "object")
+        if len(ids) < 2:
+            return m.group(0)
+        objs = [o for o in lexicon.scene.objects if o.id in ids]
+        marked = [o for o in objs if adj in " ".join([o.id, *o.aliases]).lower().replace("_", " ")]
+        rest = [o for o in objs if o not in marked]
+        if not marked or len(rest) != 1:
+            return m.group(0)
+        return f"the {rest[0].aliases[0] if rest[0].aliases else rest[0].id.replace('_', ' ')}"
+
+    out = _sub(
+        r"\bthe ([a-z]+) that isn't (?:the )?([a-z]+)(?: one)?\b(?! (?:on|in|at|by|near))",
+        not_adj,
+        out,
+    )
+
+    def not_person(m: re.Match[str]) -> str:
+        other = m.group(1)
+        if not _only_person(other, lexicon):
+            return m.group(0)
+        rest = out[: m.start()] + out[m.end() :]
+        if _ids(other, lexicon, "human") & _ids(rest, lexicon, "human"):
+            return m.group(0)
+        if len(_ids(rest, lexicon, "human")) != 1 or re.search(
+            r"\b(?:each|both|all|every|everyone|them|they)\b", rest, _F
+        ):
+            return m.group(0)
+        return " " if m.group(2) == "," else m.group(2)
+
+    out = _sub(r",\s*not ([A-Z][\w ]*?)\s*(,|(?=[.!?]|$))", not_person, out)
+    return out
+
+
+_OBJECT_CASE19 = {"his": "him", "her": "her", "their": "them"}
+
+
+def _telegraph19(text: str, lexicon: Lexicon) -> str:
+    """Requests said as bare names: 'Spoon. Doctor.' (the spoon to the doctor), 'Bib.
+    Highchair.' (the bib on the highchair); 'The Y also same.' / 'Y, same.' after a sentence
+    (the Y too); 'send X P's way' / 'send it his way' (to P, to him)."""
+    out = _sub(
+        r"\b(send|pass|pop|get) (it|them|the [a-z ]+?) ([A-Z][\w ]*?)'s way\b", r"\1 \2 to \3", text
+    )
+    out = _sub(
+        r"\b(send|pass|pop|get) (it|them|the [a-z ]+?) (his|her|their) way\b",
+        lambda m: f"{m.group(1)} {m.group(2)} to {_OBJECT_CASE19[m.group(3).lower()]}",
+        out,
+    )
+    out = _sub(
+        r"(?<=[.!?] )((?:the )?[a-z ]+?)(?:,)? (?:also |too )?same\s*([.!]?)$",
+        lambda m: (
+            f"{m.group(1)} too{m.group(2)}" if _objects_only(m.group(1), lexicon) else m.group(0)
+        ),
+        out,
+    )
+    out = _sub(
+        r"(,\s*(?:no,\s*)?to [A-Z][\w ]*?),\s*the (?:[a-z]+ ){0,2}[a-z]+\s*([.!]?)$",
+        lambda m: (
+            m.group(1) + m.group(2)
+            if _names_nothing(m.group(0)[len(m.group(1)) :], lexicon)
+            else m.group(0)
+        ),
+        out,
+    )
+    sentences = re.split(r"(?<=[.!?])\s+", out.strip())
+    if len(sentences) < 2:
+        return out
+    first = sentences[0].rstrip(".!?").strip()
+    rest = " ".join(sentences[1:])
+    if _only_person(first, lexicon) and _ids(first, lexicon) <= _ids(rest, lexicon, "human"):
+        return rest  # "Howzit, Jess. Please pass the torch to Jess.": said to her first
+    res: list[str] = []
+    k = 0
+    while k < len(sentences):
+        s = sentences[k].rstrip(".!?").strip()
+        nxt = sentences[k + 1].rstrip(".!?").strip() if k + 1 < len(sentences) else ""
+        to = _rx(r"^(?:and )?(to|on|onto|in) (.+)$").match(nxt) if nxt else None
+        if (
+            to
+            and _only(s, lexicon, "object")
+            and (_only_person(to.group(2), lexicon) or _surface_only(to.group(2), lexicon))
+        ):
+            res.append(f"{s} {to.group(1)} {to.group(2)}.")  # 'The cup. To Alice.'
+            k += 2
+            continue
+        person = bool(nxt) and _only_person(nxt, lexicon)
+        if nxt and _only(s, lexicon, "object") and (person or _surface_only(nxt, lexicon)):
+            obj = s if s.lower().startswith("the ") else f"the {s}"
+            where = f"to {nxt}" if person else f"on the {nxt.removeprefix('the ')}"
+            res.append(f"{obj} {where}.")
+            k += 2
+            continue
+        res.append(sentences[k])
+        k += 1
+    return " ".join(res)
+
+
+def _archaic19(text: str, _lexicon: Lexicon) -> str:
+    out = _archaic19_words(text)
+    out = _sub(
+        r"\b(?:through|along|across|round|around|aloft)\s+(?=(?:to|on|onto|into)\b)", "", out
+    )
+    if out != text and text.rstrip().endswith("?"):
+        # "Could you see that the chips reach Person A?": a request once the frame is off
+        out = _sub(r"^(the [a-z ]+ goes to [A-Z][\w ]*?)\s*\?$", r"\1.", out)
+    out = _sub(
+        r"^((?:either )?(?:the )?[a-z ]+ or (?:the )?[a-z ]+) should be (?:given|handed|passed|"
+        r"brought|sent) to\b",
+        r"\1 goes to",
+        out,
+    )
+    return out
+
+
+def _archaic19_words(text: str) -> str:
+    """Older English said as today's: thou/thee/ye (you), wouldst/wilt/doth/hath (would, will,
+    does, has), unto (to), prithee (please), 'bear the X' (bring), nay (no), craveth/desireth
+    (wants); 'supply / furnish / provide / equip P with X' (give P X); 'make sure X reaches P'
+    (X goes to P); 'rest it on S' / 'lift X and rest it on S' (put)."""
+    out = text
+    for a, b in (
+        (r"\bwouldst thou\b", "would you"),
+        (r"\bwilt thou\b", "will you"),
+        (r"\bcanst thou\b", "can you"),
+        (r"\b(?:thou|thee|ye)\b", "you"),
+        (r"\bwouldst\b", "would"),
+        (r"\bwilt\b(?! (?:flower|leaf))", "will"),
+        (r"\bdoth (?:desire|want|crave|wish for)\b", "wants"),
+        (r"\b(?:craveth|desireth|wanteth)\b", "wants"),
+        (r"\bhath\b", "has"),
+        (r"\bshall be (given|handed|passed|brought|placed|put|taken)\b", r"should be \1"),
+        (r"\bshall (have|get|receive)\b", r"gets"),
+        (r"\b(?:thereafter|thereupon)\b", "then"),
+        (
+            r"\bto the (?:very )?same(?: (?:player|person|one|fellow|chap|lady|gentleman|guy))?\b",
+            "to the same person",
+        ),
+        (r"\bunto\b", "to"),
+        (r"\bprithee\b", "please"),
+        (r"\bnay\b", "no"),
+        (r"(?<!teddy )\bbear (?=the |it\b|them\b)", "bring "),
+        (r"\b(?:supply|furnish|provide|equip|present) ([A-Z][\w ]*?) with\b", r"give \1"),
+        (
+            r"^(?:please )?(?:make sure|ensure|see to it that|see that) (.+?) (?:reaches|gets to|"
+            r"arrives (?:at|with)|ends up with) ",
+            r"\1 goes to ",
+        ),
+        (
+            r"^(?:could|can|would|will) you (?:please )?see that (.+?) "
+            r"(?:reach|reaches|get to|gets to) ",
+            r"\1 goes to ",
+        ),
+        (
+            r"\b(?:see to it that|make sure that|make sure) ([A-Z][\w ]*?) (?:receives|gets) ",
+            r"give \1 ",
+        ),
+        (r"(?<!the )\brest (it|them|the [a-z ]+?) (on|onto|in|into|upon|atop)\b", r"put \1 \2"),
+        (r"\btake delivery of\b", "receive"),
+    ):
+        out = _sub(a, b, out)
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -6145,4 +7023,17 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _order,
     _remarks,
     _inert_stretches,
+)
+
+
+_STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _archaic19,
+    _corrections19,
+    _speaker19,
+    _fillers19,
+    _hedges19,
+    _closers19,
+    _counts19,
+    _negation19,
+    _telegraph19,
 )

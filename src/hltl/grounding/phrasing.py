@@ -126,7 +126,9 @@ def _not_a_question(items: list[Item], k: int, end: int, mark: bool, start: int)
         nxt = items[k + 1] if k + 1 < end else None
         low = first.text.lower()
         # "Would Bob like the cup?" asks about Bob; "Could Alice have the apple?" requests
-        offers = mark and low in ("would", "does", "did") and nxt is not None and _humans(nxt)
+        offers = (
+            mark and low in ("would", "does", "did", "should") and nxt is not None and _humans(nxt)
+        )
         asks = (
             offers
             or (mark and opens_clause and _said_as_a_question(items, k, end))
@@ -1536,9 +1538,36 @@ def _corrections(items: list[Item]) -> list[Item]:
                 "say the whole request again"
             )
         _not_after_an_exclusion(before, after, it)
+        _not_a_list_for_a_list(before, after, it)
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
+
+
+def _not_a_list_for_a_list(before: list[Item], after: list[Item], marker: Item) -> None:
+    """'Give A the cup and the apple, no, the bottle and the chips': several objects said in
+    place of the last of a list; they could replace the whole list or its last name only, so it
+    is refused (session 19: read as the last name only, a wrong reading)."""
+    said = [x for x in after if x.kind == "ent" and _objects(x)]
+    if len(said) < 2:
+        return
+    n = len(before)
+    while n > 0 and before[n - 1].kind != "ent":
+        n -= 1
+    if n == 0 or not _objects(before[n - 1]):
+        return
+    m = _past_dets_back(before, n - 1)
+    if m > 0 and _is(before[m - 1], "and", ",", "or"):
+        raise GroundingError(
+            f"{marker.text!r} is followed by several things after a list: do they replace the "
+            "whole list or its last name? say the whole request again"
+        )
+
+
+def _past_dets_back(items: list[Item], k: int) -> int:
+    while k > 0 and _is(items[k - 1], "det"):
+        k -= 1
+    return k
 
 
 def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item) -> None:
@@ -3976,6 +4005,19 @@ def _appositions(items: list[Item]) -> list[Item]:
             and len({r.id for r in items[j].refs}) == 1
             and {r.id for r in items[j].refs} < ids
         ):
+            more = _past_dets(items, j + 2) if j + 1 < len(items) else j
+            if (
+                j + 1 < len(items)
+                and _is(items[j + 1], "and", ",")
+                and more < len(items)
+                and _objects(items[more])
+                and {r.id for r in items[more].refs} < ids
+            ):
+                # "one pen, the red one and the blue one": a list after one thing
+                raise GroundingError(
+                    f"'{it.text}, {_words_of(items[k + 2 : more + 1])}': one thing, then "
+                    "several: which is meant?"
+                )
             out.extend(items[k + 2 : j + 1])
             k = j + 1
             continue
