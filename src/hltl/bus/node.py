@@ -480,7 +480,8 @@ class CellNode:
         # the executor's briefings are grounded here with the offline grounder (loaded now,
         # about half a second once per process, not in an episode)
         self._grounder: Grounder = make_grounder("offline")
-        # the episodes reset here lately (a request to foresee waits only for one not yet)
+        # the episodes whose reset was answered here lately (a request to foresee the first
+        # step waits only for one not yet: see _await_reset)
         self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
@@ -530,17 +531,19 @@ class CellNode:
             out = self._reset(query)
         if out is None:  # (refused: answered as such)
             return
-        # (out of the lock: the step thread takes up the request to foresee the first step,
-        # sent right after the reset, while this answer goes)
+        # (out of the lock; the step thread takes up the request to foresee the first step,
+        # sent right after the reset, once this answer has gone: see _await_reset)
         self._reply_bytes(query, out[0])
-        if out[1] is not None:
+        self._reset_ids.append(out[1])
+        if out[2] is not None:
             threading.Thread(
-                target=self._run_clock, args=(out[1],), name="hltl-node-clock", daemon=True
+                target=self._run_clock, args=(out[2],), name="hltl-node-clock", daemon=True
             ).start()
 
-    def _reset(self, query: Any) -> tuple[bytes, _Episode | None]:
-        """Start the episode a reset request asks for (under the node's lock): the answer, and
-        the episode if its clock is to start once the answer has gone (real time)."""
+    def _reset(self, query: Any) -> tuple[bytes, str, _Episode | None]:
+        """Start the episode a reset request asks for (under the node's lock): the answer, the
+        episode's id, and the episode if its clock is to start once the answer has gone (real
+        time)."""
         d = loads(_payload(query), "reset request")
         try:
             # (the scene this node serves, as it travels, needs no parsing again)
@@ -554,7 +557,7 @@ class CellNode:
         clock = _Clock.parse(d.get("realtime"), self.period)
         cur = self._ep
         if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
-            return cur.last_reply, None  # a retransmission: same episode
+            return cur.last_reply, episode, None  # a retransmission: same episode
         if scene != self.scene:
             raise BusError(
                 f"this node serves the scene {self.scene.source} "
@@ -566,7 +569,6 @@ class CellNode:
         log = EventLog(on_record=records.append)
         cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
         self._ep = ep = _Episode(episode, cell, records)
-        self._reset_ids.append(episode)
         self._seq = 0  # reports are numbered per episode (the executor counts from 0)
         self.stats.episodes += 1
         self.stats.starts = {}
@@ -588,7 +590,7 @@ class CellNode:
             answer["realtime"] = {"t": 0.0, "factor": clock.factor, "period": clock.period}
         reply = dumps(answer)
         ep.last_reply = reply
-        return reply, None if clock is None else ep
+        return reply, episode, None if clock is None else ep
 
     def _serve_steps(self) -> None:
         """Answer step queries one at a time until the node closes (its queryable is withdrawn);
@@ -859,8 +861,12 @@ class CellNode:
 
     def _await_reset(self, query: Any) -> None:
         """A request to foresee the first step is sent right after the reset, which another
-        thread of the node handles: if its episode is not here yet, wait for it (at most
-        ``RESET_WAIT``, outside the node's lock)."""
+        thread of the node handles: if the reset's answer has not gone yet, wait for it (at
+        most ``RESET_WAIT``, outside the node's lock). Not only for the episode: the answer
+        needs the interpreter lock to go, and this thread, grounding the briefing and planning
+        the first step, held it for milliseconds while the executor waited for the answer (its
+        first observation) to plan that step itself (docs/bus.md, "Where the time goes
+        (session 20)")."""
         payload = _payload(query)
         if b'"foresee"' not in payload:
             return
@@ -872,7 +878,7 @@ class CellNode:
         if "t" not in d or episode in self._reset_ids:  # (only the first step's, once)
             return
         deadline = time.perf_counter() + RESET_WAIT
-        while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
+        while episode not in self._reset_ids and time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
 
     def _ground_ahead(self, ep: _Episode, s: _Stretch, instructions: list[str]) -> bool:
