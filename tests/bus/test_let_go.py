@@ -16,7 +16,7 @@ import pytest
 
 from hltl.bus.driver import BusCell
 from hltl.bus.faults import Link
-from hltl.bus.node import CellNode
+from hltl.bus.node import RESET_HEAD, CellNode, _payload
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from tests.bus.helpers import Loopback, same_as_local
@@ -87,7 +87,9 @@ def test_the_executor_lets_go_after_the_requests_it_does_not_wait_for(
 
     def recorded(self: BusCell, key: str, payload: bytes, commands: bool, **kw: Any) -> Any:
         kind = (
-            "reset" if key.endswith("reset") else ("foresee" if b'"foresee"' in payload else "step")
+            "reset"
+            if payload.startswith(RESET_HEAD)
+            else ("foresee" if b'"foresee"' in payload else "step")
         )
         events.append(kind)
         return query(self, key, payload, commands, **kw)
@@ -113,7 +115,7 @@ def test_the_reset_is_answered_out_of_the_node_lock(
     reply = CellNode._reply_bytes
 
     def recorded(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
-        kind = "reset" if str(query.key_expr).endswith("reset") else "step"
+        kind = "reset" if _payload(query).startswith(RESET_HEAD) else "step"
         held[kind].append(self._lock._is_owned())  # type: ignore[attr-defined]
         return reply(self, query, payload, key)
 
@@ -139,7 +141,7 @@ def test_the_first_step_is_foreseen_once_the_reset_is_answered(
     reply, brief = CellNode._reply_bytes, CellNode._take_brief
 
     def replied(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
-        if not str(query.key_expr).endswith("reset"):
+        if not _payload(query).startswith(RESET_HEAD):
             return reply(self, query, payload, key)
         time.sleep(0.05)
         try:
