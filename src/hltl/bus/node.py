@@ -410,6 +410,8 @@ class _Stretch:
     regrounded: bool = False
     # the last tick began a span of its own: the ticks so far go now (see _spans_on)
     spanned: bool = False
+    # while a stream simulates the next tick: sends the ticks it holds (see CellNode._early)
+    early: Callable[[], bool] | None = None
 
 
 class CellNode:
@@ -679,7 +681,7 @@ class CellNode:
         or as soon as the next step query waits (the executor has moved on: returned, to be
         answered next; looked for before every tick), a command settled the batch, or the
         episode ended."""
-        size, ticks, first = 1, list[Tick](), 0
+        size, ticks = 1, list[Tick]()
         while True:
             if executor_here():  # (an executor in this process gets the interpreter lock)
                 time.sleep(0)
@@ -693,9 +695,12 @@ class CellNode:
                 b = s.batch
                 if self._closed or self._ep is not ep or ep.batch is not b:
                     return None
-                if not ticks:
-                    first = len(b.ticks)
-                tick = self._ahead_tick(ep, s)
+                if self.split and not s.ahead.stream:  # (sent before a grounding ahead)
+                    s.early = partial(self._early, query, s, ticks)
+                try:
+                    tick = self._ahead_tick(ep, s)
+                finally:
+                    s.early = None
                 if tick is not None:
                     ticks.append(tick)
                 more = tick is not None and not s.done
@@ -713,7 +718,8 @@ class CellNode:
                     and (len(ticks) < size if s.ahead.stream else not s.guess_due)
                 ):
                     continue
-                head: dict[str, Any] = {"from": first, "more": more}
+                # (the ticks held are the batch's last: the index of the first)
+                head: dict[str, Any] = {"from": len(b.ticks) - len(ticks), "more": more}
                 if split:  # (the rest of the step follows: ticks, not a guessed step)
                     head["guessed"], head["split"] = False, True
                 elif not s.ahead.stream:
@@ -730,6 +736,23 @@ class CellNode:
             if not more:
                 return None
             size, ticks = min(2 * size, MAX_CHUNK), []
+
+    def _early(self, query: Any, s: _Stretch, ticks: list[Tick]) -> bool:
+        """Send the ticks a stretch's stream holds, not sent yet, as a part of their own (the
+        rest following, ``"split"``), before the node grounds an instruction ahead (see
+        :meth:`_ground_ahead`): that takes milliseconds, and the executor may have used up
+        what it has (the longest waits for the rest of a step, session 20). True when
+        sent. Not with parts whole (:attr:`split` 0)."""
+        if not ticks:
+            return False
+        head = {"from": len(s.batch.ticks) - len(ticks), "more": True}
+        head["guessed"], head["split"] = False, True
+        try:
+            self._reply_bytes(query, encode_answer(head, ticks))
+        except Exception:  # the query timed out at the executor: the stream's next reply says
+            return False
+        ticks.clear()
+        return True
 
     def _on_step(self, query: Any) -> tuple[_Episode, _Stretch] | None:
         """Answer a step query; a stretch to stream on after the answer, if any. A reset that
@@ -912,7 +935,10 @@ class CellNode:
         key = (tuple(instructions), bs.monitor.done(q_now))
         memo = ep.ground_memo.get(key)
         if memo is None or memo[0] is not spec:  # (not grounded yet against this spec)
-            self._let_go()  # (as before a plan: grounding takes milliseconds)
+            # (grounding takes milliseconds: what the stream holds goes first, or at least
+            # what waits for this core, as before a plan)
+            if s.early is None or not s.early():
+                self._let_go()
             made = [
                 u.spec
                 for u in ground_all(self._grounder, instructions, self.scene, spec, key[1])
