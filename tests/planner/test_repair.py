@@ -170,8 +170,9 @@ def test_each_route_has_the_fewest_weighted_clashes_then_robot_steps(
 
 
 def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.MonkeyPatch) -> None:
-    # beyond CP_UP_TO goals (no joint re-plan) the walk stops after REPAIR_WALK_SHARE of the
-    # time and the repair squeezes its best plan; the plan returned is valid and no longer
+    # beyond CP_UP_TO goals (no joint re-plan), when asked, the walk stops after
+    # REPAIR_WALK_SHARE of the time and the repair squeezes its best plan; the plan returned
+    # is valid and no longer
     events: list[str] = []
     real_step = _OrderWalk.step
     real_squeezed = anytime._squeezed
@@ -187,7 +188,9 @@ def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.Mo
     monkeypatch.setattr(_OrderWalk, "step", lambda self: events.append("walk") or real_step(self))
     c = delivery_cell("grid", 17, 2)
     problem = Problem(c.scene, c.spec)
-    found = _more(problem, _Search(problem), time.perf_counter() + 1.5)
+    assert _more(problem, _Search(problem), time.perf_counter() + 0.5) is not None
+    assert "repair" not in events  # (only when asked: not on lines, not at 1 s)
+    found = _more(problem, _Search(problem), time.perf_counter() + 1.5, squeeze=True)
     assert found is not None
     assert "repair" in events and events.index("repair") > 0
     assert got[0] is None or found[0] <= got[0][0]  # type: ignore[index]
@@ -195,7 +198,8 @@ def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.Mo
     check_plan(c.scene, c.spec, res.to_dict())
     # with rounds (exact mode's roof: a plan independent of the machine) no repair
     events.clear()
-    assert _more(problem, _Search(problem), time.perf_counter() + 5, rounds=3) is not None
+    more = _more(problem, _Search(problem), time.perf_counter() + 5, rounds=3, squeeze=True)
+    assert more is not None
     assert "repair" not in events
 
 

@@ -44,9 +44,10 @@ CP_WALK_SHARE = 0.2
 CP_UP_TO = 16
 # ... keeping each object to places on routes at most this much slower than its quickest (s)
 CP_DETOUR = 0.6
-# cells of more goals (no joint re-plan): after this share of the time the walk's best plan is
-# squeezed into fewer steps by conflict repair (``_squeezed``, ``repair.Repair``) until the
-# end; the walk plateaus within 2-4 s of a 10 s run (docs/planner.md, "Fewer steps by repair")
+# cells of more goals (no joint re-plan) where the profile bound runs (grids, random layouts,
+# 10 s budgets): after this share of the time the walk's best plan is squeezed into fewer steps
+# by conflict repair (``_squeezed``, ``repair.Repair``) until the end; the walk plateaus
+# within 2-4 s of a 10 s run (docs/planner.md, "Fewer steps by repair")
 REPAIR_WALK_SHARE = 0.3
 # big cells of at most this many goals: the relaxed-schedule bound (``schedule``) runs first,
 # until this share of the budget
@@ -571,7 +572,10 @@ def plan_anytime(
                 continue
             if k == 1:
                 if best is not None:
-                    cand = _more(problem, s, end, enough=lb)
+                    # (repair where the profile bound runs: grid and random layouts; on
+                    # 32-goal lines the walk's plans meet the pairs' bound within 0.5 %,
+                    # and at 1 s its whole phase is needed: 1 s gaps 0.5 -> 6.2 % with it)
+                    cand = _more(problem, s, end, enough=lb, squeeze=profiled)
                     if cand is not None and cand[0] < best[0]:
                         best = cand
                         note()
@@ -1035,6 +1039,7 @@ def _more(
     *,
     enough: float = -math.inf,
     rounds: int | None = None,
+    squeeze: bool = False,
 ) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
@@ -1044,7 +1049,10 @@ def _more(
     (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
     stops early once it is no longer than ``enough`` (a lower bound: it is optimal). With
     ``rounds``: at most that many rounds (an order and its moves) and no joint re-plan, so the
-    plan does not depend on the machine's speed (``until`` only as a safety net)."""
+    plan does not depend on the machine's speed (``until`` only as a safety net). With
+    ``squeeze``, on cells of more than ``CP_UP_TO`` goals the walk stops after
+    ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
+    steps until ``until`` (``_squeezed``)."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -1062,7 +1070,8 @@ def _more(
     # (after CP-SAT's import in ``_joint_possible``, 0.5-1.5 s: the walk's share is measured
     # from here, or a 16-goal line, where the joint re-plan finds nothing, would get no walk)
     squeeze = (
-        rounds is None
+        squeeze
+        and rounds is None
         and not joint
         and len(gls) > CP_UP_TO
         and repair.applicable(problem, [g.atom.name for g in gls], [g.after for g in gls])
