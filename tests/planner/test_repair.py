@@ -153,6 +153,8 @@ def test_each_route_has_the_fewest_weighted_clashes_then_robot_steps(
             rep.weight[t][r] = rng.choice((1, 1, 2, 3))
             if rep.count[t][r]:
                 rep.occ[t] |= 1 << r
+            if rep.weight[t][r] > 1:
+                rep.heavy[t] |= 1 << r
     for gi in range(len(gls)):
         found = rep.route(gi)
         want = _brute(rep, gi)

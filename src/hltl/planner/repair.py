@@ -1,23 +1,4 @@
-"""Plans in fewer steps by conflict repair: the routes of a plan squeezed into one step fewer,
-their clashes then taken out by rerouting a few goals at a time (docs/planner.md, "Anytime
-mode", *Fewer steps by repair*).
-
-A plan of the cells' step semantics is one route per goal: where its object is before each
-step and which instance it undergoes in it. Routes interact only through robots: in each step
-a robot does at most one instance, and a robot whose hand holds an object at the start of a
-step acts on that object or does nothing (so it cannot pick or receive another). Each route
-therefore *uses* a set of (robot, step) cells: an instance's executors in its step, and the
-holder in every step the object starts in its hand. Routes that use no cell twice make a plan.
-
-To find a plan of T steps, the routes that end past step T - 1 are routed again inside the
-horizon with clashes allowed, each by the fewest clashes with the other routes (then the
-fewest robot-steps, as the prioritized router), and the clashes are then repaired as in
-MAPF-LNS2 (Li et al., AAAI 2022): a goal in a clash and a few goals that use its robots are
-taken out and routed again, one after the other in a random order, each against all the
-others; the result is kept when it has no more clashes than before. No clashes left: the
-routes are a T-step plan (it is replayed through the monitors like every other plan), and the
-search goes on at T - 1.
-"""
+"""Plans in fewer steps: routes squeezed into one step fewer, then their clashes repaired."""
 
 from __future__ import annotations
 
@@ -70,6 +51,7 @@ class Repair:
         self.count: list[list[int]] = []
         self.occ: list[int] = []
         self.weight: list[list[int]] = []  # per step and robot, what a clash there costs
+        self.heavy: list[int] = []  # per step, the robots whose clashes cost more than 1
         self.clashes = 0  # cells used twice, counted once per extra use
         self.weighted = 0  # the same, each counted at its weight
         self.stuck = 0  # moves since the clashes last fell
@@ -108,6 +90,7 @@ class Repair:
         self.count = [[0] * len(self.p.robots) for _ in range(T)]
         self.occ = [0] * T
         self.weight = [[1] * len(self.p.robots) for _ in range(T)]
+        self.heavy = [0] * T
         self.clashes = 0
         self.weighted = 0
         for rt in self.routes.values():
@@ -153,6 +136,7 @@ class Repair:
         gone = self.gone
         occ = self.occ
         weight = self.weight
+        heavy = self.heavy
         start = self.start[self._obj(gi)]
         if left[start] > T:
             return None
@@ -163,6 +147,7 @@ class Repair:
         for t in range(T):
             busy = occ[t]
             w = weight[t]
+            hw = heavy[t]
             nxt: dict[int, int] = {}
             for loc, cost in frontier.items():
                 if done is not None and cost >= done[0]:
@@ -176,8 +161,11 @@ class Repair:
                     if used & gone:
                         continue
                     c = cost + used.bit_count()
-                    if used & busy:
-                        c += CLASH * sum(w[r] for r in _bits(used & busy))
+                    over = used & busy
+                    if over:
+                        c += CLASH * over.bit_count()
+                        if over & hw:  # (most cells weigh 1: their bits are not summed)
+                            c += CLASH * sum(w[r] - 1 for r in _bits(over & hw))
                     if inst.index in fires:
                         if done is None or c < done[0]:
                             done = (c, t, loc, inst, used)
@@ -314,6 +302,7 @@ class Repair:
             for r, n in enumerate(row):
                 if n > 1:
                     self.weight[t][r] += 1
+                    self.heavy[t] |= 1 << r
                     self.weighted += n - 1
 
     def _clashing(self) -> list[int]:
