@@ -228,14 +228,69 @@ KNOWN_MISSES = frozenset(
         "Can help me give Alice the crisps or not?",
         "Cart the grey blanket over to Mr Lee.",
         "Both of the smaller boxes to Tom.",
-        "Both the cup and the apple go to Person A tonight.",
         "Both plates are for Marco this morning!",
-        "Tonight the chipps go to Person A.",
-        "If at all possible, the notepad to Priya, maybe.",
         "Everything except the apple is going home with Person B tonight, folks!",
         "Forceps, sorry, I mean the spoon, to Omar.",
         "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
         "Pronto, the cup to Person A, capisce?",
+        # blind18 (tuned on in session 20): kinds not met yet (docs/grounding.md, "Session 20"):
+        # the speaker as 'me' inside a remark, corrections said with a remark ('hold on, Mummy's
+        # talking', 'I said that wrong', 'No. Bob.'), passives and 'is wanting', 'she' resumed after
+        # a name, sentences of a name or 'first' alone, 'any of … will do', 'both of them'
+        # after a list, 'Each of them' / 'Something for both of them' headers, 'the pair', 'the
+        # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
+        # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo in
+        # a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
+        "Hello there. I'm only visiting, so forgive me if I get this wrong, but would you be "
+        "able to give the banana to Emma? Thank you ever so much.",
+        "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
+        "the high chair? Thanks.",
+        "Hiya, it's only me. Would you mind popping the magazine on the bedside table for me, my "
+        "love? Ta.",
+        "Sorry, quick one, could Person B grab the chips off you? Cheers.",
+        "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
+        "What I need is the bottle over with Person B.",
+        "Right, Person A's asked for the cup and the apple, and the bottle's wanted by Person B.",
+        "Person B needs the chips, ugh, and after she's got them Person A's going to want the "
+        "bottle.",
+        "Person B is wanting the bottle only, kindly do the needful.",
+        "Bottle goes to Person A. And Person B, she gets the chips.",
+        "Bottle first. To Alice. After, chips to Bob.",
+        "Person B first, with the bottle. After that, the apple for Person A.",
+        "Bottle for Person A. Chips for Person B. Sorry, in that order.",
+        "Any of the pens will do for Sam.",
+        "Put the tape on the belt, and the gloves too, both of them, ready for the next shift.",
+        "Either mug's fine for Carol, the red or the blue, your call.",
+        "Each of them gets one thing: the bottle to Person A, the chips to Person B.",
+        "Give Person B any one of them, the bottle, the chips or the apple.",
+        "Something for both of them: the cup to Person A and the apple to Person B.",
+        "Either of the two things to Person B is fine.",
+        "Both of the blocks onto the high chair, please, before she throws them again.",
+        "Every one of the three pens goes in the box, the black, the blue and the red.",
+        "The small and medium boxes, the two little ones, onto the pallet.",
+        "Marco needs his tongs, just the one pair.",
+        "Both of the mugs are Alice's, give her the pair.",
+        "Poor Mr Lee is cold, pet, let him have the blue blanket and the grey one as well.",
+        "Two things each: the bottle and cup to Person A, the chips and apple to Person B.",
+        "Person A gets the two of them, bottle and chips both.",
+        "That one bottle, over to Person A, quick as you can.",
+        "Apart from the red one, Sam's to get the pens.",
+        "Bob gets the lot, just leave the two mugs where they are.",
+        "Put everything that isn't a book on the desk.",
+        "Jess wants the other spanner, not the big one on the workbench.",
+        "Apple to Person B. Not Person A, mind, Person B.",
+        "Teddy on the high chair, no, actually, give it to Lily.",
+        "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
+        "Chips to Alice. No. Bob. Chips to Bob.",
+        "Chips to Person A. Correction, chips to Person B, and the apple to Person A.",
+        "Chips to Person A, sorry, I said that wrong, chips to Person B.",
+        "tom wants the gloves and once hes got them mia wants the tape",
+        "apple n bottle both for person b pls",
+        "need the chips over with person b like right now",
+        "Ava's asking for her tedfy bear.",
+        "Give the sippy cup to Lilly.",
+        "Any chance the red book could go up on the shelf with the green one?",
+        "Is it okay to do the chips for Person A first and then the bottle for Person B?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -263,8 +318,9 @@ KNOWN_MISSES = frozenset(
 # in session 18 by another engineer, reviewed by a second one, measured once at the end of
 # session 18, its refusals met by kind in session 19: asserted now, the rest in KNOWN_MISSES;
 # "blind18" written in session 19 by another engineer, reviewed by a second one, measured once
-# at the end of session 19)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind18"})
+# at the end of session 19, its wrong readings and refusals met by kind in session 20: asserted
+# now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

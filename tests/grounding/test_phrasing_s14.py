@@ -419,8 +419,9 @@ INERT = [
 NOT_INERT = [
     "kidding",
     "spoon",
-    "tonight",
-    "maybe",
+    "tonight",  # the lead's decision (session 20): a time that puts the task off is refused
+    # (session 20, the lead's decision: a bare ', maybe' closing the whole request is a softener
+    # like 'please' and is read: test_phrasing_s20.py; it is no longer listed here)
     "disregard",
     "twice",
     "full",

@@ -352,6 +352,9 @@ FILLER_PHRASES: tuple[str, ...] = (
     "if you could",
     "if you would",
     "if possible",
+    "if at all possible",  # session 20: politeness, as "if possible"
+    "quick one",  # session 20: "Sorry, quick one, could …" (a request announced)
+    "next one",  # session 20: "Right, next one. Tape on the belt"
     "if you do n't mind",
     "would you mind",
     "do you mind",
@@ -382,12 +385,15 @@ for _sub in ("when", "whenever", "once", "if"):
         for _time in ("a sec", "a second", "a minute", "a moment", "a chance", "time", "a mo"):
             PHRASES[tuple(f"{_sub} {_you} {_time}".split())] = "filler"
 
+# session 20: other words for a task being complete ("when that's sorted", "once that's dealt
+# with", "after that's out of the way")
+_DONE20 = ("sorted", "sorted out", "dealt with", "handled", "taken care of", "out of the way")
 # "once that is done", "when you're done with that", "after that's finished": the task before
 # is complete, so what follows comes after it.
 for _sub in ("once", "when", "after", "as soon as", "and once", "and when"):
     for _what in ("that", "this", "it"):
         for _be in ("is", "'s", "has been", "was"):
-            for _done in ("done", "finished", "complete", "completed", "over"):
+            for _done in ("done", "finished", "complete", "completed", "over", *_DONE20):
                 PHRASES[tuple(f"{_sub} {_what} {_be} {_done}".split())] = "then"
     for _you in ("you 're", "you are", "you 've", "you have", "you 've been", "you have been"):
         for _done in ("done", "finished"):
@@ -937,6 +943,7 @@ WORDS: dict[str, str] = {
     "right": "filler",
     "away": "filler",
     "soon": "filler",
+    "today": "filler",  # session 20: immediacy words are read (the lead's decision)
     "thanks": "filler",
     "thank": "filler",
     "thx": "filler",

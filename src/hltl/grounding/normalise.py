@@ -6429,6 +6429,26 @@ _TAG19 = (
 )
 
 
+# session 20: requests asked as whether they can be done
+_ASKED20: tuple[tuple[str, str], ...] = (
+    # "Could the banana go across to Emma, do you think?": after a polite question that asks
+    # for something the tag asks nothing more ('Emma has it, do you think?' stays)
+    (
+        r"^((?:could|can|would|will|might)\b.+?),\s*(?:do|d'|don't) ?you (?:think|reckon|"
+        r"suppose)\s*\?$",
+        r"\1?",
+    ),
+    # "Is it possible that P gets X?", as 'is it okay if P gets X' is
+    (
+        r"^(?:sorry,? )?is it (?:possible|okay|ok|alright|all right|fine) (?:that|for) "
+        r"([A-Za-z][\w ]*?) (?:gets|has|could have|can have|to get|to have) ",
+        r"\1 gets ",
+    ),
+    # "Is possible you give the gloves to Tom?"
+    (r"^is (?:it )?possible (?:you|to|for you to) (?:just |please )*", ""),
+)
+
+
 def _hedges19(text: str, lexicon: Lexicon) -> str:
     out = _sub(
         r"(?:^|,\s*|\bbut\s+)(?:and )?if (?:it's|it is|it isn't|it's not|that's|that is) (?:not )?"
@@ -6465,6 +6485,8 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
         out,
     )
     out = _sub(r"^would it be (?:okay|ok|alright|all right|fine|possible) to ", "", out)
+    for pattern, repl in _ASKED20:
+        out = _sub(pattern, repl, out)
     out = _sub(
         r"^(?:,\s*)?if (?:you|ye|thou)(?:'d| would| wouldst)? (?:be so (?:good|kind)|"
         r"please)\s*,\s*",
@@ -6773,7 +6795,63 @@ def _negation19(text: str, lexicon: Lexicon) -> str:
         return " " if m.group(2) == "," else m.group(2)
 
     out = _sub(r",\s*not ([A-Z][\w ]*?)\s*(,|(?=[.!?]|$))", not_person, out)
-    return out
+    return _nothing_for20(out, lexicon)
+
+
+def _nothing_for20(text: str, lexicon: Lexicon) -> str:
+    """Session 20: a person said to get nothing ('…, and nothing for P', "Don't give anything to
+    P; …") is no recipient: the words are taken off when P is named nowhere else and the rest
+    names one person and no group ('each', 'both', 'everyone' …, where leaving P out would change
+    who is meant); an object said not to be the one ('Not the X, only the Y to P') likewise when
+    the X is named nowhere else."""
+
+    def drop(m: re.Match[str], words: str, kind: str) -> str:
+        if not (_only_person(words, lexicon) if kind == "human" else _only(words, lexicon, kind)):
+            return m.group(0)
+        rest = text[: m.start()] + " " + text[m.end() :]
+        if _ids(words, lexicon, kind) & _ids(rest, lexicon, kind):
+            return m.group(0)
+        if kind == "human" and len(_ids(rest, lexicon, "human")) != 1:
+            return m.group(0)
+        if re.search(r"\b(?:each|both|all|every|everyone|everybody|them|they|other)\b", rest, _F):
+            return m.group(0)
+        return m.group("keep") or ""
+
+    out = _sub(
+        r"(?P<keep>)\s*,?\s*(?:and|but)?\s*nothing (?:at all )?(?:for|to) (?P<who>[A-Z][\w ]*?)"
+        r"(?=\s*[.;!?]|$)",
+        lambda m: drop(m, m.group("who"), "human"),
+        text,
+    )
+    out = _sub(
+        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)(?:please )?(?:don't|do not) (?:give|hand|send) "
+        r"(?:anything|any of (?:it|them)) to (?P<who>[A-Z][\w ]*?)\s*[;,.]\s*",
+        lambda m: drop(m, m.group("who"), "human"),
+        out,
+    )
+    return _sub(
+        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)not (?P<what>the [a-z ]+?),\s*(?:only|just) ",
+        lambda m: drop(m, m.group("what"), "object"),
+        out,
+    )
+
+
+def _header_count20(text: str, lexicon: Lexicon) -> str:
+    """Session 20: 'Two things. Knife to Marco. Lemon to Lena.': a count of tasks said as a
+    header is taken off when the rest reads as exactly that many tasks (otherwise it stays,
+    and the count is read, or refused, as before)."""
+    m = re.match(
+        r"^(one|two|three|four|five|six|[1-6]) (?:things?|jobs?|tasks?|requests?|deliveries)"
+        r"(?: for you| to do| please)?\s*[.:!]\s*(.+)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    word = m.group(1).lower()
+    count = int(word) if word.isdigit() else _COUNTS[word]
+    done = _tasks_of(m.group(2), lexicon)
+    return m.group(2) if done is not None and len(done) == count else text
 
 
 _OBJECT_CASE19 = {"his": "him", "her": "her", "their": "them"}
@@ -7036,4 +7114,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _counts19,
     _negation19,
     _telegraph19,
+    _header_count20,
 )

@@ -146,7 +146,24 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                     # and its refusal says which readings there are (the first only that it
                     # cannot parse)
                     best = rewritten
+        deferred = _DEFERRED.search(text)
+        if deferred is not None:
+            # the lead's decision (session 20): a time that puts the task off is not read
+            raise GroundingError(
+                f"{best}; {deferred.group(0)!r} puts the task off: the cell acts now, so say "
+                "the request when it is to be done"
+            ) from None
         raise best from None
+
+
+# words that put a task off (session 20: refused, since acting now could be wrong; 'now',
+# 'today', 'soon', 'asap', 'right away' are read)
+_DEFERRED = re.compile(
+    r"\b(?:tonight|tomorrow|later on|after (?:lunch|dinner|breakfast|tea|school|work)|"
+    r"in (?:an?|one|two|three|five|ten|\d+) (?:hours?|minutes?|mins?)|this (?:evening|afternoon)|"
+    r"next week)\b",
+    re.I,
+)
 
 
 _CUT_OFF = re.compile(
@@ -465,6 +482,7 @@ class _Parser:
             current.pop()
         if current:
             sentences.append(current)
+        sentences = _order_carried(sentences)
         sentences = [s for s in sentences if not _only_fillers(s)]
         if not sentences:
             raise GroundingError(
@@ -1499,6 +1517,23 @@ def _required(node: Node) -> set[Task]:
     return set().union(*parts)
 
 
+def _order_carried(sentences: list[list[Item]]) -> list[list[Item]]:
+    """'Chips to B. Once that's done. Cup to A.': an order word said as a sentence of its own
+    ('Once that's done.', 'Then.', 'After that.') between two requests orders the one after it
+    (it is not politeness to drop); first or last ('Next up.', 'Done.') it orders nothing."""
+    out: list[list[Item]] = []
+    carried: list[Item] = []
+    for sent in sentences:
+        if _only_fillers(sent) and any(_is(it, "then") for it in sent):
+            if out:
+                carried = [it for it in sent if _is(it, "then")][:1]
+            out.append(sent)  # dropped with the other politeness
+            continue
+        out.append([*carried, *sent])
+        carried = []
+    return out
+
+
 def _only_fillers(items: list[Item]) -> bool:
     """A sentence or list part of politeness alone ('Thanks!', ', please')."""
     return all(
@@ -1563,6 +1598,17 @@ def _trailing_order(items: list[Item]) -> list[Item]:
                     and next((x.kind for x in body[j + 1 :] if not _is(x, "det")), "") == "ent"
                 )
                 or _own_target(body, j)  # "… and the chips to Person A after that"
+                # "Could A have the chips, and the bottle after that?": objects alone after the
+                # last separator take the task before them, after it (as '…, and then the bottle')
+                or (
+                    k == seps[-1]
+                    and lemma == "then"
+                    and all(
+                        _is(x, "det")
+                        or (x.kind == "ent" and all(r.kind == "object" for r in x.refs))
+                        for x in body[j:]
+                    )
+                )
             )
         )
         if starts_clause:

@@ -2747,11 +2747,28 @@ def _hedges(items: list[Item]) -> list[Item]:
             asked = k >= 2 and _humans(items[k - 1]) and _is(items[k - 2], "aux")
             rest = [x for x in items[k + 1 :] if not _is(x, "filler", ",")]
             closing = not rest or (rest[0].kind == "punct" and rest[0].lemma in _END)
+            if closing and _softens_all(items, k):
+                continue
             if closing or not (_opening(items, k) or (asked and _opening(items, k - 2))):
                 raise GroundingError(f"{it.text!r} leaves open whether to do it: say what to do")
             continue
         out.append(it)
     return out
+
+
+def _softens_all(items: list[Item], k: int) -> bool:
+    """'The notepad to Priya, maybe.': a bare ', maybe' (', perhaps') closing the whole request,
+    after a sentence that names something, is a softener like 'please' (the lead's decision in
+    session 20); closing one sentence of several, or after words naming nothing ('That's all,
+    maybe') it leaves open whether to do something."""
+    if k == 0 or not _is(items[k - 1], ","):
+        return False
+    if any(not _is(x, "filler", ",") and x.kind != "punct" for x in items[k + 1 :]):
+        return False
+    n = k - 1
+    while n >= 0 and not (items[n].kind == "punct" and items[n].lemma in _END):
+        n -= 1
+    return any(x.kind == "ent" for x in items[n + 1 : k])
 
 
 def _asked_for(items: list[Item]) -> list[Item]:
@@ -4072,10 +4089,52 @@ def _listed_subjects(items: list[Item]) -> list[Item]:
             and _is(sent[v + 1], "on", "to")
         ):
             sent = [sent[v], *sent[:j], *sent[v + 1 :]]
-        out.extend(sent)
+        out.extend(_listed_subjects_inside(sent))
         if end < len(items):
             out.append(items[end])
     return out
+
+
+def _listed_subjects_inside(sent: list[Item]) -> list[Item]:
+    """'… to Person B and the cup and the apple go to Person A': a list of objects opening a
+    later clause of a sentence (after 'and' or a comma that follows the recipient or place of a
+    clause with a verb) as the subject of a plural 'go'/'belong' is that verb's objects, all of
+    them ('go the cup and the apple to Person A'): the plural verb says the list is its subject,
+    so its first object is not the clause before's. A list right after a verb or a person
+    ('B gets the chips and the cup go to A') could end the clause before anywhere: refused."""
+    for v in range(len(sent) - 2, 0, -1):
+        verb = sent[v]
+        if not (
+            verb.lemma in ("verb:go", "verb:belong")
+            and verb.text.lower() in ("go", "belong")
+            and _is(sent[v + 1], "on", "to")
+            and _objects(sent[v - 1])
+        ):
+            continue
+        j = v
+        while j > 0 and (_objects(sent[j - 1]) or _is(sent[j - 1], "det", "and", ",")):
+            j -= 1
+        if j == 0:
+            return sent  # the sentence opens with the list: _listed_subjects reads it
+        start = j
+        while _is(sent[start], "and", ","):
+            start += 1
+        names = [x for x in sent[start:v] if _objects(x)]
+        if len(names) < 2:
+            return sent
+        said = " ".join(x.text for x in sent)
+        before = sent[j - 1]
+        opens = _is_verb_item(before) or (before.kind == "ent" and not _objects(before))
+        if start == j and opens:
+            raise GroundingError(
+                f"in {said!r}, the objects before the plural {verb.text!r} could end the clause "
+                "before it anywhere: repeat the verb ('… and give the … to …')"
+            )
+        closes = sent[j - 1].kind == "ent" and not _objects(sent[j - 1])
+        if closes and any(_is_verb_item(x) for x in sent[: j - 1]):
+            return [*sent[:start], verb, *sent[start:v], *sent[v + 1 :]]
+        return sent
+    return sent
 
 
 # "whichever one's closer to her" after a mention: words standing for the objects it names
