@@ -40,7 +40,7 @@ def test_run_without_a_node_says_so(capsys: pytest.CaptureFixture[str]) -> None:
     argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--json"]
     argv += ["--bus", f"zenoh:{free_endpoint()}", "--bus-timeout", "0.05"]
     code, err = _run(argv, capsys)
-    assert code == 1 and "error: no simulator node answers on hltl/default/sim/reset" in err
+    assert code == 1 and "error: no simulator node answers on hltl/default/sim/step" in err
 
 
 def test_node_rejects_bad_episode_count(capsys: pytest.CaptureFixture[str]) -> None:

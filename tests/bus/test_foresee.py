@@ -93,8 +93,11 @@ def test_a_step_held_back_past_its_stretch_is_held_on(
     tick grid. The node held the step in that stretch; the next one (the executor's plain
     step query while it waits) holds it on, so the start is the node's guess and costs no
     query. Dropped (as before session 18), the start is a guess missed: its commands go in a
-    query. The log is the in-process one either way."""
+    query. The log is the in-process one either way. (A stretch that has used up its span
+    while the node holds a step runs on into the next since session 20, where it holds the
+    step anyway: here every stretch ends at its span, as before.)"""
     patient_foresight(monkeypatch)
+    monkeypatch.setattr(node_module.CellNode, "_spans_on", staticmethod(lambda ep, s: False))
     if inline:
         guesses_in_the_answer(monkeypatch)
     if not held_on:
@@ -109,6 +112,20 @@ def test_a_step_held_back_past_its_stretch_is_held_on(
     ]
     assert late  # (the hand-over started at A's stop, off the tick grid)
     assert (run.cell.stats.commands == 0) is held_on  # (commands in a query: a guess missed)
+
+
+def test_a_step_held_back_past_its_span_is_held_in_the_stretch(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """1-1 #0 as above, the next stretch not taking the held step over (``_still_held``
+    dropped): the stretch that holds the step runs on past its span (session 20), so the
+    start at A's stop is still the node's guess, with no query of its commands; the log is
+    the in-process one."""
+    patient_foresight(monkeypatch)
+    monkeypatch.setattr(node_module.CellNode, "_still_held", lambda self, ep, s: None)
+    run = _both(loopback, "1-1", 0)
+    assert run.node.stats.spans > 0
+    assert run.cell.stats.commands == 0
 
 
 @MODES

@@ -9,13 +9,14 @@ the request to foresee the first step meanwhile."""
 from __future__ import annotations
 
 import threading
+import time
 from typing import Any
 
 import pytest
 
 from hltl.bus.driver import BusCell
 from hltl.bus.faults import Link
-from hltl.bus.node import CellNode
+from hltl.bus.node import RESET_HEAD, CellNode, _payload
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from tests.bus.helpers import Loopback, same_as_local
@@ -86,7 +87,9 @@ def test_the_executor_lets_go_after_the_requests_it_does_not_wait_for(
 
     def recorded(self: BusCell, key: str, payload: bytes, commands: bool, **kw: Any) -> Any:
         kind = (
-            "reset" if key.endswith("reset") else ("foresee" if b'"foresee"' in payload else "step")
+            "reset"
+            if payload.startswith(RESET_HEAD)
+            else ("foresee" if b'"foresee"' in payload else "step")
         )
         events.append(kind)
         return query(self, key, payload, commands, **kw)
@@ -112,7 +115,7 @@ def test_the_reset_is_answered_out_of_the_node_lock(
     reply = CellNode._reply_bytes
 
     def recorded(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
-        kind = "reset" if str(query.key_expr).endswith("reset") else "step"
+        kind = "reset" if _payload(query).startswith(RESET_HEAD) else "step"
         held[kind].append(self._lock._is_owned())  # type: ignore[attr-defined]
         return reply(self, query, payload, key)
 
@@ -124,6 +127,41 @@ def test_the_reset_is_answered_out_of_the_node_lock(
     same_as_local(local, run)
     assert held["reset"] == [False]
     assert held["step"] and all(held["step"])
+
+
+def test_the_first_step_is_foreseen_once_the_reset_is_answered(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The step thread takes up the request to foresee the first step only once the reset's
+    answer has gone: that answer needs the interpreter lock, which the step thread holds for
+    milliseconds while it grounds the briefing and plans, and the executor waits for it (its
+    first observation). Here the reset's answer is slow to go (50 ms): the briefing is still
+    grounded after it, and the episode is the in-process one."""
+    events: list[str] = []
+    reply, brief = CellNode._reply_bytes, CellNode._take_brief
+
+    def replied(self: CellNode, query: Any, payload: bytes, key: str | None = None) -> bool:
+        if not _payload(query).startswith(RESET_HEAD):
+            return reply(self, query, payload, key)
+        time.sleep(0.05)
+        try:
+            return reply(self, query, payload, key)
+        finally:
+            events.append("reset answered")
+
+    def briefed(self: CellNode, ep: Any, d: Any) -> None:
+        events.append("briefing")
+        brief(self, ep, d)
+
+    monkeypatch.setattr(CellNode, "_reply_bytes", replied)
+    monkeypatch.setattr(CellNode, "_take_brief", briefed)
+    trial = make_trial("1-1", 0)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    run = loopback.run(trial.scene, **episode)
+    same_as_local(local, run)
+    assert events == ["reset answered", "briefing"]
+    assert run.node.stats.briefed == 1 and run.cell.stats.guessed > 0
 
 
 def test_the_node_lets_go_before_it_plans_or_grounds(

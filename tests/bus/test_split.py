@@ -10,7 +10,7 @@ import pytest
 
 from hltl.bus.driver import BusTiming
 from hltl.bus.faults import FaultModel
-from hltl.bus.node import SPLIT
+from hltl.bus.node import SPLIT, CellNode
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from tests.bus.helpers import BusRun, Loopback, same_as_local, wrong_hints
@@ -80,3 +80,33 @@ def test_a_lost_part_is_asked_for(loopback: Loopback, seed: int) -> None:
     same_as_local(local, run)  # (the same log; every action started once)
     assert run.cell.stats.retransmits > 0  # (replies were lost, and asked for again)
     assert run.cell.stats.split > 0  # (steps did come in parts)
+
+
+@pytest.mark.parametrize(("config", "index"), CELLS)
+def test_a_stretch_runs_on_past_its_span(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, config: str, index: int
+) -> None:
+    """Spans of 4 ticks (``ahead=4``): a stretch that has used up its span while an action
+    runs goes on into the next, the ticks so far going at once as a part, so the executor
+    waits for the next span rather than ask for it with no commands: fewer queries than with
+    every such stretch ended (as before session 20), and the same log."""
+    local, run = _run(loopback, config, index, SPLIT, ahead=4)
+    same_as_local(local, run)
+    assert run.node.stats.spans > 0
+    monkeypatch.setattr(CellNode, "_spans_on", staticmethod(lambda ep, s: False))
+    _, ended = _run(loopback, config, index, SPLIT, ahead=4)
+    same_as_local(local, ended)
+    assert ended.node.stats.spans == 0
+    assert run.cell.stats.queries < ended.cell.stats.queries
+
+
+def test_wrong_guesses_past_a_span_are_undone(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every guess wrong, with spans of 4 ticks run on past: what a command cuts (a span's
+    save, or the stretch's) is undone as before; the log is the in-process one."""
+    wrong_hints(monkeypatch)
+    local, run = _run(loopback, "4-2", 1, SPLIT, ahead=4)
+    same_as_local(local, run)
+    assert run.node.stats.spans > 0 and run.node.stats.cuts > 0
+    assert run.cell.stats.guessed == 0

@@ -363,7 +363,9 @@ class BusCell:
         self._listeners = _listeners_of(session)
         self._listeners.add(self)
         self._entities: list[Any] = self._subscribe()
+        # (first: the node's step thread knows a reset by how its payload starts)
         reset = {
+            "reset": True,
             "episode": self.episode,
             "scene": scene.to_dict(),
             "events": events.to_list(),
@@ -377,7 +379,7 @@ class BusCell:
         # episode grounds its instruction meanwhile: see _ready)
         self._resetting: tuple[Any, float] | None = None
         try:
-            self._resetting = self._query(self.keys.sim_reset, dumps(reset), commands=False)
+            self._resetting = self._query(self._reset_key, dumps(reset), commands=False)
             let_go()  # (its answer is waited for later: the request goes now)
         except BaseException:  # the bus failed: nothing is left declared
             self.close()
@@ -387,6 +389,15 @@ class BusCell:
 
     # a real-time cell's clock starts with its reset: it waits for the answer at once
     _eager = False
+
+    @property
+    def _reset_key(self) -> str:
+        """Where the reset goes: with the step requests (``…/sim/step``), so that the node's
+        step thread starts the episode and then takes up the request to foresee its first
+        step, sent right after, in the order sent; a reset on ``…/sim/reset`` is taken by
+        another thread of the node, woken for it, and came after that request at times
+        (docs/bus.md, "Where the time goes (session 20)")."""
+        return self.keys.sim_step
 
     def _ready(self) -> None:
         """Take in the reset's answer (sent when the cell was built, retried on silence), the
@@ -401,13 +412,14 @@ class BusCell:
         reset, self._reset = self._reset, None
         sent, self._resetting = self._resetting, None
         try:
-            d = self._ask(self.keys.sim_reset, reset, robots=self.scene.robot_ids, sent=sent)
+            key = self._reset_key
+            d = self._ask(key, reset, robots=self.scene.robot_ids, sent=sent)
             while d is None and time.monotonic() < self._deadline:  # the node may be starting
                 time.sleep(0.05)
-                d = self._ask(self.keys.sim_reset, reset, retries=0)
+                d = self._ask(key, reset, retries=0)
             if d is None:
                 raise BusError(
-                    f"no simulator node answers on {self.keys.sim_reset}; start one with "
+                    f"no simulator node answers on {key}; start one with "
                     f"'hltl node sim --scene SCENE --cell {self.keys.cell}'"
                 )
             self._take(d)

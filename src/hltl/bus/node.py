@@ -92,6 +92,8 @@ FORESEE_WAIT = 0.25
 # a request to foresee the first step waits at most this long for its episode's reset, which
 # the node handles on another thread (it was sent first)
 RESET_WAIT = 1.0
+# how a reset sent with the step queries starts (see CellNode._on_step)
+RESET_HEAD = b'{"reset":true,'
 # fastest real-time factor a simulator node accepts (cell seconds per wall second)
 MAX_FACTOR = 1000.0
 
@@ -137,6 +139,8 @@ class NodeStats:
     respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
+    # spans a stretch ran on past, nothing having happened (the next one sent unasked)
+    spans: int = 0
 
 
 @dataclass(slots=True)
@@ -404,6 +408,8 @@ class _Stretch:
     # whether the node grounded an instruction of it itself (the executor replans after it)
     q_now: MonitorState | None = None
     regrounded: bool = False
+    # the last tick began a span of its own: the ticks so far go now (see _spans_on)
+    spanned: bool = False
 
 
 class CellNode:
@@ -480,7 +486,8 @@ class CellNode:
         # the executor's briefings are grounded here with the offline grounder (loaded now,
         # about half a second once per process, not in an episode)
         self._grounder: Grounder = make_grounder("offline")
-        # the episodes reset here lately (a request to foresee waits only for one not yet)
+        # the episodes whose reset was answered here lately (a request to foresee the first
+        # step waits only for one not yet: see _await_reset)
         self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
@@ -530,17 +537,19 @@ class CellNode:
             out = self._reset(query)
         if out is None:  # (refused: answered as such)
             return
-        # (out of the lock: the step thread takes up the request to foresee the first step,
-        # sent right after the reset, while this answer goes)
+        # (out of the lock; the step thread takes up the request to foresee the first step,
+        # sent right after the reset, once this answer has gone: see _await_reset)
         self._reply_bytes(query, out[0])
-        if out[1] is not None:
+        self._reset_ids.append(out[1])
+        if out[2] is not None:
             threading.Thread(
-                target=self._run_clock, args=(out[1],), name="hltl-node-clock", daemon=True
+                target=self._run_clock, args=(out[2],), name="hltl-node-clock", daemon=True
             ).start()
 
-    def _reset(self, query: Any) -> tuple[bytes, _Episode | None]:
-        """Start the episode a reset request asks for (under the node's lock): the answer, and
-        the episode if its clock is to start once the answer has gone (real time)."""
+    def _reset(self, query: Any) -> tuple[bytes, str, _Episode | None]:
+        """Start the episode a reset request asks for (under the node's lock): the answer, the
+        episode's id, and the episode if its clock is to start once the answer has gone (real
+        time)."""
         d = loads(_payload(query), "reset request")
         try:
             # (the scene this node serves, as it travels, needs no parsing again)
@@ -554,7 +563,7 @@ class CellNode:
         clock = _Clock.parse(d.get("realtime"), self.period)
         cur = self._ep
         if cur is not None and cur.id == episode and cur.last_step == 0 and cur.last_reply:
-            return cur.last_reply, None  # a retransmission: same episode
+            return cur.last_reply, episode, None  # a retransmission: same episode
         if scene != self.scene:
             raise BusError(
                 f"this node serves the scene {self.scene.source} "
@@ -566,7 +575,6 @@ class CellNode:
         log = EventLog(on_record=records.append)
         cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
         self._ep = ep = _Episode(episode, cell, records)
-        self._reset_ids.append(episode)
         self._seq = 0  # reports are numbered per episode (the executor counts from 0)
         self.stats.episodes += 1
         self.stats.starts = {}
@@ -588,7 +596,7 @@ class CellNode:
             answer["realtime"] = {"t": 0.0, "factor": clock.factor, "period": clock.period}
         reply = dumps(answer)
         ep.last_reply = reply
-        return reply, None if clock is None else ep
+        return reply, episode, None if clock is None else ep
 
     def _serve_steps(self) -> None:
         """Answer step queries one at a time until the node closes (its queryable is withdrawn);
@@ -692,8 +700,13 @@ class CellNode:
                     ticks.append(tick)
                 more = tick is not None and not s.done
                 # (past a step's end on a guess: the next step, up to its own end, in one reply;
-                # its starts and first ticks first, when split)
-                split = bool(ticks) and ticks[0].guess and self._splits(s, ticks)
+                # its starts and first ticks first, when split; and what a span holds when the
+                # stretch runs on into the next)
+                spanned, s.spanned = s.spanned, False
+                split = bool(ticks) and (
+                    (ticks[0].guess and self._splits(s, ticks))
+                    or (spanned and more and not s.guess_due)
+                )
                 if (
                     more
                     and not split
@@ -719,8 +732,13 @@ class CellNode:
             size, ticks = min(2 * size, MAX_CHUNK), []
 
     def _on_step(self, query: Any) -> tuple[_Episode, _Stretch] | None:
-        """Answer a step query; a stretch to stream on after the answer, if any."""
+        """Answer a step query; a stretch to stream on after the answer, if any. A reset that
+        comes with the step queries (a lockstep executor's) is answered as on ``…/sim/reset``,
+        by this thread, before the request to foresee the first step that follows it."""
         stretch = None
+        if _payload(query).startswith(RESET_HEAD):
+            self._on_reset(query)
+            return None
         self._await_reset(query)
         with self._guard(query):
             d = loads(_payload(query), "step request")
@@ -859,8 +877,12 @@ class CellNode:
 
     def _await_reset(self, query: Any) -> None:
         """A request to foresee the first step is sent right after the reset, which another
-        thread of the node handles: if its episode is not here yet, wait for it (at most
-        ``RESET_WAIT``, outside the node's lock)."""
+        thread of the node handles: if the reset's answer has not gone yet, wait for it (at
+        most ``RESET_WAIT``, outside the node's lock). Not only for the episode: the answer
+        needs the interpreter lock to go, and this thread, grounding the briefing and planning
+        the first step, held it for milliseconds while the executor waited for the answer (its
+        first observation) to plan that step itself (docs/bus.md, "Where the time goes
+        (session 20)")."""
         payload = _payload(query)
         if b'"foresee"' not in payload:
             return
@@ -872,7 +894,7 @@ class CellNode:
         if "t" not in d or episode in self._reset_ids:  # (only the first step's, once)
             return
         deadline = time.perf_counter() + RESET_WAIT
-        while (self._ep is None or self._ep.id != episode) and time.perf_counter() < deadline:
+        while episode not in self._reset_ids and time.perf_counter() < deadline:
             time.sleep(PAUSE_SLICE)
 
     def _ground_ahead(self, ep: _Episode, s: _Stretch, instructions: list[str]) -> bool:
@@ -1136,9 +1158,10 @@ class CellNode:
             out.append(tick)
             if ahead.stream or (s.guess_due and GUESS_STREAM):
                 break
-            if self._splits(s, out):
+            if self._splits(s, out) or (s.spanned and not s.done):
                 split = True
                 break
+        s.spanned = False  # (the answer goes now)
         if out:
             ep.batch = batch
             if split:  # (the rest of this step follows as a further reply)
@@ -1264,9 +1287,20 @@ class CellNode:
             return None
         due = math.inf if s.next is None else max(s.t, float(s.next))
         t_next = min(s.t + ahead.tick, due, ahead.max_time)
-        if s.done or len(b.ticks) >= s.limit or not t_next > s.t:
+        if s.done or not t_next > s.t:
             s.done = True
             return None
+        if len(b.ticks) >= s.limit:
+            if not self._spans_on(ep, s):
+                s.done = True
+                return None
+            s.limit = len(b.ticks) + min(ahead.count, ep.span)
+            s.spanned = True
+            self.stats.spans += 1
+            # (saved here: a command in the next span undoes back to here, not the whole)
+            mark = _saver(ep.cell)
+            assert mark is not None  # (_look_ahead checked the cell can be saved)
+            b.marks.append((len(b.ticks), mark, b.seq, dict(b.latest)))
         if b.restore is None:
             b.restore = _saver(ep.cell)
             assert b.restore is not None  # (_look_ahead checked the cell can be saved)
@@ -1325,6 +1359,26 @@ class CellNode:
         self.stats.ahead += 1
         s.t, s.next = t_next, tick.next
         return tick
+
+    @staticmethod
+    def _spans_on(ep: _Episode, s: _Stretch) -> bool:
+        """Whether a stretch that has used up its span runs on into the next one (a span of
+        its own), the ticks so far going at once as a part (``"split"``: more follow): nothing
+        happened in it that the executor is likely to act on, and an action runs (or a step is
+        held back), so the executor's loop ticks on as the node does; unasked, it would ask
+        for the next tick with no commands as soon as it had used the last, and wait for the
+        node to simulate it (5 of the 9 plain step queries in the discrete suite's 20 trials,
+        session 19). Not streamed stretches (they go tick by tick anyway), nor with the
+        guessed steps in the answer (``GUESS_STREAM`` off), and at most ``MAX_AHEAD`` ticks
+        a batch."""
+        b = s.batch
+        return (
+            GUESS_STREAM
+            and not s.ahead.stream
+            and s.ahead.count > 0
+            and len(b.ticks) < MAX_AHEAD
+            and (s.held is not None or any(not r.status.terminal for r in b.latest.values()))
+        )
 
     def _guess(self, ep: _Episode, s: _Stretch) -> Tick | None:
         """Start the executor's next step on its hint, at the time of the tick that ended the

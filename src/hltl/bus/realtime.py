@@ -47,6 +47,10 @@ class RealtimeBusCell(BusCell):
     _defer = False  # no step queries: every command goes to the robots at once
     _eager = True  # the node's clock starts with the reset: its answer is taken in at once
 
+    @property
+    def _reset_key(self) -> str:
+        return self.keys.sim_reset  # (no step queries: the reset has a queryable of its own)
+
     def __init__(self, *args: Any, factor: float = 1.0, **kwargs: Any) -> None:
         self.factor = check_factor(factor)
         self.period = float(kwargs.get("tick", EpisodeConfig().tick))
