@@ -235,12 +235,12 @@ KNOWN_MISSES = frozenset(
         "Pronto, the cup to Person A, capisce?",
         # blind18 (tuned on in session 20): kinds not met yet (docs/grounding.md, "Session 20"):
         # the speaker as 'me' inside a remark, corrections said with a remark ('hold on, Mummy's
-        # talking', 'I said that wrong', 'No. Bob.'), passives and 'is wanting', 'she' resumed after
-        # a name, sentences of a name or 'first' alone, 'any of … will do', 'both of them'
+        # talking', 'Hang on, not the lemon, the salt'), passives and 'is wanting', 'she' resumed
+        # after a name, sentences of a name or 'first' alone, 'any of … will do', 'both of them'
         # after a list, 'Each of them' / 'Something for both of them' headers, 'the pair', 'the
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
-        # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo in
-        # a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
+        # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
+        # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
         "Hello there. I'm only visiting, so forgive me if I get this wrong, but would you be "
         "able to give the banana to Emma? Thank you ever so much.",
         "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
@@ -279,11 +279,7 @@ KNOWN_MISSES = frozenset(
         "Put everything that isn't a book on the desk.",
         "Jess wants the other spanner, not the big one on the workbench.",
         "Apple to Person B. Not Person A, mind, Person B.",
-        "Teddy on the high chair, no, actually, give it to Lily.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
-        "Chips to Alice. No. Bob. Chips to Bob.",
-        "Chips to Person A. Correction, chips to Person B, and the apple to Person A.",
-        "Chips to Person A, sorry, I said that wrong, chips to Person B.",
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
         "need the chips over with person b like right now",
@@ -319,8 +315,9 @@ KNOWN_MISSES = frozenset(
 # session 18, its refusals met by kind in session 19: asserted now, the rest in KNOWN_MISSES;
 # "blind18" written in session 19 by another engineer, reviewed by a second one, measured once
 # at the end of session 19, its wrong readings and refusals met by kind in session 20: asserted
-# now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# now, the rest in KNOWN_MISSES; "blind19" written in session 20 by another engineer, reviewed
+# by a second one, measured once at the end of session 20)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind19"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -382,6 +379,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["causes19"].entries}) >= 10
     assert len(CORPORA["blind18"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind18"].entries}) >= 3
+    assert len(CORPORA["blind19"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind19"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -171,3 +171,30 @@ def test_blind18_kinds_are_read(text: str, want: str) -> None:
 )
 def test_blind18_near_forms_stay_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # a correction said as the whole request again replaces the clause before its cue
+        ("Chips to Alice. Correction, chips to Bob, and the apple to Alice.", "chips>B & apple>A"),
+        ("Chips to Alice, sorry, I said that wrong, chips to Bob.", "chips>B"),
+        ("The cup on the shelf, no, actually, give it to Carol.", "cup>C"),
+        ("Give Bob the cup. Chips to Alice. No, chips to Carol.", "cup>B & chips>C"),
+        ("Give Bob the apple. Hang on, give Bob the apple and the cup.", "apple>B & cup>B"),
+    ],
+)
+def test_a_correction_said_as_the_whole_request_replaces_it(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Chips to Alice. Correction: the apple to Bob.",  # the chips are left unsaid
+        "Chips to Alice. Sorry, the apple to Bob too.",  # adds, or corrects?
+        "Give Alice the cup and Bob the chips, no, give Carol the cup.",  # the chips left out
+    ],
+)
+def test_a_correction_that_leaves_something_out_stays_refused(text: str) -> None:
+    assert_refused(text, CELL)

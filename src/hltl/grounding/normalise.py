@@ -6601,6 +6601,41 @@ _CUE19 = (
 )
 
 
+_RESTATE20 = re.compile(
+    r"(?:(?<=[.!?])\s+|\s*,\s*)(?:(?:oh,? )?(?:no|sorry|correction|hang on|hold on|wait)"
+    r"(?:,? (?:actually|sorry|no|wait))?(?:,? i said that wrong| i got that wrong| that's wrong)?"
+    r"|sorry,? i (?:said|got) that wrong|actually,? no)\s*[,.:;!]\s*(?:actually\s*,\s*)?",
+    _F,
+)
+
+
+def _restated20(text: str, lexicon: Lexicon) -> str:
+    """Session 20: a correction said as the whole request again ('Chips to A. Correction, chips
+    to B, and the apple to A.', 'Chips to A, sorry, I said that wrong, chips to B.', 'Teddy on the
+    high chair, no, actually, give it to Lily.'): the clause before the cue is replaced when what
+    follows reads by itself and names every object that clause did ('it' standing for its one
+    object); one that adds ('too', 'also', 'as well') or leaves an object out stays refused."""
+    for m in reversed(list(_RESTATE20.finditer(text))):
+        head, after = text[: m.start()], text[m.end() :]
+        cut = max(head.rfind(". "), head.rfind("! "), head.rfind("? "), head.rfind("; "))
+        kept, before = (head[: cut + 1], head[cut + 2 :]) if cut >= 0 else ("", head)
+        if not before.strip() or re.search(r"\b(?:too|also|as well|instead of)\b", after, _F):
+            continue
+        said = _tasks_of(before, lexicon)
+        objects = {obj for _, obj, _ in said or ()}
+        if not said or any(o.startswith("?") for o in objects):
+            continue
+        if re.search(r"\bit\b", after, _F):
+            if len(objects) != 1:
+                continue
+            after = _sub(r"\bit\b", f"the {_said(next(iter(objects)), lexicon)}", after)
+        again = _tasks_of(after, lexicon)
+        if again is None or not objects <= {obj for _, obj, _ in again} or again == said:
+            continue
+        return f"{kept} {after}".strip()
+    return text
+
+
 def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
@@ -7105,6 +7140,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _restated20,
     _archaic19,
     _corrections19,
     _speaker19,

@@ -1727,6 +1727,7 @@ def _apply_correction(
             # is unclear
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
         moved = [it for it in before[cut:] if _objects(it)]
+        _takes_back_all(before[cut:], after, moved, marker)
         # "Give Alice the chips. Scratch that, give her the bottle.": 'her' is the one person of
         # the clause taken back (with several, the pronoun is left to be refused as unclear)
         people = {ref.id: x for x in before[cut:] if _humans(x) for ref in x.refs}
@@ -1773,6 +1774,26 @@ def _apply_correction(
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
             return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+
+
+def _takes_back_all(taken: list[Item], after: list[Item], moved: list[Item], marker: Item) -> None:
+    """'Give Alice the cup and Bob the chips, no, give Carol the cup': a clause of several tasks
+    taken back by a clause that names only some of its objects again could take back the whole
+    clause or only the task it names again (session 20: read as the whole, dropping Bob's
+    chips, a wrong reading): refused."""
+    people = {r.id for x in taken if _humans(x) for r in x.refs}
+    things = {r.id for x in moved for r in x.refs}
+    if len(people) < 2 and len(moved) < 2:
+        return
+    stop = _clause_stop(after, 0, to_comma=False)
+    again = {r.id for x in after[:stop] if _objects(x) for r in x.refs}
+    if any(_is(x, "it", "them") or x.text.lower() == "them" for x in after[:stop]):
+        return  # 'them' takes back what the clause moved; 'it' is refused where unclear
+    if not things <= again:
+        raise GroundingError(
+            f"{marker.text!r} could take back the whole clause before it or only the task it "
+            "names again: say the whole request again"
+        )
 
 
 class _SomeoneElse(GroundingError):
