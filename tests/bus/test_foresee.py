@@ -295,3 +295,21 @@ def test_no_wait_for_a_basis_that_is_not_coming(
     run = loopback.run(trial.scene, grounder=_FirstOnly(), **ep)
     same_as_local(local, run)
     assert run.node.stats.waited_out == 0 and run.cell.stats.unawaited == 1
+
+
+def test_a_context_change_while_the_executor_waits_is_foreseen(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """4-2 #0: the executor's hand-over is held back (an intrusion risk), then it finds no
+    plan in the world A walks into and waits; when A walks on, it takes over the plan it
+    predicted for that context and starts it. The node, nothing running, plans the next step
+    itself at that context change (and simulates on where it finds no plan, as the executor
+    waits): the start is its guess, with no query of its commands. Simulating on there (as
+    before session 20), the start was a guess missed; the log is the in-process one either
+    way."""
+    run = _both(loopback, "4-2", 0)
+    assert [r.trigger for r in run.episode.records if r.type == "takeover"]
+    assert run.cell.stats.commands == 0
+    monkeypatch.setattr(node_module.CellNode, "_replans_idle", lambda self, s, w, steady: False)
+    before = _both(loopback, "4-2", 0)
+    assert before.cell.stats.commands > 0

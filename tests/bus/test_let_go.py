@@ -208,5 +208,7 @@ def test_the_node_lets_go_before_it_plans_or_grounds(
     # (the node plans the first step itself; it grounds the second request ahead when it
     # simulates that tick ahead, which the executor's timing decides)
     assert "plan" in steps
-    # (a let-go of its own, not the one after an answer)
-    assert all(steps[i - 1] == "let go" and steps[i - 2] != "reply" for i in long)
+    # (before a plan, a let-go of its own, not the one after an answer; before a grounding
+    # ahead in a stream, the ticks it holds may go first: then the let-go after that reply)
+    assert all(steps[i - 1] == "let go" for i in long)
+    assert all(steps[i - 2] != "reply" for i in long if steps[i] == "plan")

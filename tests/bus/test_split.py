@@ -110,3 +110,43 @@ def test_wrong_guesses_past_a_span_are_undone(
     same_as_local(local, run)
     assert run.node.stats.spans > 0 and run.node.stats.cuts > 0
     assert run.cell.stats.guessed == 0
+
+
+@pytest.mark.parametrize(("config", "index"), [("2-2", 0), ("4-4-square", 0)])
+def test_a_stream_sends_what_it_holds_before_grounding_ahead(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, config: str, index: int
+) -> None:
+    """A request the node grounds ahead while it streams a stretch (milliseconds): the ticks
+    it holds, not sent yet, go first as a part of their own, so the executor works on them
+    meanwhile; the log is the in-process one."""
+    from hltl.bus import node as N
+
+    sent: dict[int, int] = {}  # by batch: the index after the last tick sent of it
+    held: list[int] = []  # at each grounding ahead in a stream: ticks simulated, not sent
+    encode, ground = N.encode_answer, N.ground_all
+
+    def encoded(answer: dict[str, Any], ticks: Any = ()) -> bytes:
+        ep = node._ep
+        if "from" in answer and ep is not None and ep.batch is not None:
+            sent[ep.batch.id] = max(sent.get(ep.batch.id, 0), int(answer["from"]) + len(ticks))
+        return encode(answer, ticks)
+
+    def grounded(*a: Any, **k: Any) -> Any:
+        ep = node._ep
+        s = None if ep is None else ep.stretch
+        if s is not None and getattr(s, "early", None) is not None:
+            held.append(len(s.batch.ticks) - sent.get(s.batch.id, 0))
+        return ground(*a, **k)
+
+    monkeypatch.setattr(N, "encode_answer", encoded)
+    monkeypatch.setattr(N, "ground_all", grounded)
+    trial = make_trial(config, index)
+    episode = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
+    local = run_episode(trial.scene, **episode)
+    node = loopback.node(trial.scene)
+    try:
+        run = loopback.run(trial.scene, node=node, **episode)
+    finally:
+        node.close()
+    same_as_local(local, run)
+    assert held and all(n == 0 for n in held), held

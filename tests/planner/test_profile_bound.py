@@ -531,3 +531,44 @@ def test_the_climb_starts_from_the_mip_bound() -> None:
         assert (told == [to_ticks(2.1), to_ticks(2.8)]) is mip
         asked[mip] = res.questions
     assert asked[True] == 0 and asked[False] > 0
+
+
+def _mip_at(layout: str, n: int, seed: int, level: float) -> Any:
+    """The profile model at ``level`` s from the start of a delivery cell, as rows for HiGHS."""
+    c = delivery_cell(layout, n, seed)
+    problem = Problem(c.scene, c.spec)
+    _, node, graph, tgts = start_targets(problem)
+    linear = profile._linear(
+        problem, graph, node, tgts, to_ticks(level), time.perf_counter() + DEADLINE_S
+    )
+    assert linear is not None
+    return linear
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_the_mip_tells_its_bound_as_highs_raises_it() -> None:
+    # grid 10 x 10 seed 2 at 10.0 s: HiGHS's dual bound rises from 6.0 to 6.3 s while it runs
+    # (6.3 s is the model's least makespan); each rise is told then, before the answer, which
+    # is the same as scipy's milp gives at the end
+    linear = _mip_at("grid", 10, 2, 10.0)
+    deadline = time.perf_counter() + DEADLINE_S
+    told: list[int] = []
+    got = linear.solve(deadline, integral=True, on_bound=told.append)
+    assert got == linear.solve(deadline, integral=True) == (to_ticks(6.3), True)
+    assert told and told == sorted(set(told)) and told[-1] <= got[0]
+    assert told[0] < got[0]  # (told while HiGHS still ran: a rise it went on from)
+
+
+@pytest.mark.skipif(not profile.lp_available(), reason="no scipy")
+def test_without_highs_own_interface_the_mip_answers_at_the_end(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # scipy's HiGHS interface is private: where it is not there, milp answers the same, told
+    # nothing on the way (profile_bound tells the answer itself)
+    from scipy.optimize._highspy import _core
+
+    linear = _mip_at("grid", 10, 2, 10.0)
+    monkeypatch.delattr(_core, "cb")  # (its callbacks; milp itself does not use them)
+    told: list[int] = []
+    got = linear.solve(time.perf_counter() + DEADLINE_S, integral=True, on_bound=told.append)
+    assert got == (to_ticks(6.3), True) and told == []

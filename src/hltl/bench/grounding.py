@@ -80,8 +80,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # variants of each kind of blind17's refusals and its refusal without readings, written BEFORE
 # any session-19 change; measured once, then tuned on), blind18 (written in session 19 by another
 # engineer and committed alone, reviewed by a second engineer, never opened by the engineer who
-# changed the grounder before its one measurement at the end of session 19; tests do not assert
-# it).
+# changed the grounder before its one measurement at the end of session 19; tuned on in session
+# 20), blind19 (written in session 20 by another engineer and committed alone, reviewed by a
+# second engineer, never opened by the engineer who changed the grounder before its one
+# measurement at the end of session 20; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -117,6 +119,7 @@ PARTS = (
     "blind17",
     "causes19",
     "blind18",
+    "blind19",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

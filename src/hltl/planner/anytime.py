@@ -9,7 +9,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from hltl.planner import lns, profile, schedule
+from hltl.planner import lns, profile, repair, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.relaxed import RelaxedGraph
@@ -44,6 +44,11 @@ CP_WALK_SHARE = 0.2
 CP_UP_TO = 16
 # ... keeping each object to places on routes at most this much slower than its quickest (s)
 CP_DETOUR = 0.6
+# cells of more goals (no joint re-plan) where the profile bound runs (grids, random layouts,
+# 10 s budgets): after this share of the time the walk's best plan is squeezed into fewer steps
+# by conflict repair (``_squeezed``, ``repair.Repair``) until the end; the walk plateaus
+# within 2-4 s of a 10 s run (docs/planner.md, "Fewer steps by repair")
+REPAIR_WALK_SHARE = 0.3
 # big cells of at most this many goals: the relaxed-schedule bound (``schedule``) runs first,
 # until this share of the budget
 SCHEDULE_UP_TO = 16
@@ -567,7 +572,10 @@ def plan_anytime(
                 continue
             if k == 1:
                 if best is not None:
-                    cand = _more(problem, s, end, enough=lb)
+                    # (repair where the profile bound runs: grid and random layouts; on
+                    # 32-goal lines the walk's plans meet the pairs' bound within 0.5 %,
+                    # and at 1 s its whole phase is needed: 1 s gaps 0.5 -> 6.2 % with it)
+                    cand = _more(problem, s, end, enough=lb, squeeze=profiled)
                     if cand is not None and cand[0] < best[0]:
                         best = cand
                         note()
@@ -1031,6 +1039,7 @@ def _more(
     *,
     enough: float = -math.inf,
     rounds: int | None = None,
+    squeeze: bool = False,
 ) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
@@ -1040,7 +1049,10 @@ def _more(
     (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
     stops early once it is no longer than ``enough`` (a lower bound: it is optimal). With
     ``rounds``: at most that many rounds (an order and its moves) and no joint re-plan, so the
-    plan does not depend on the machine's speed (``until`` only as a safety net)."""
+    plan does not depend on the machine's speed (``until`` only as a safety net). With
+    ``squeeze``, on cells of more than ``CP_UP_TO`` goals the walk stops after
+    ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
+    steps until ``until`` (``_squeezed``)."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -1048,6 +1060,7 @@ def _more(
     walk = _OrderWalk(s, node, gls)
     lns: _Neighbourhood | None = None
     best = walk.best
+    best_routes = walk.best_routes
     joint = (
         rounds is None
         and 3 <= len(gls) <= CP_UP_TO
@@ -1056,13 +1069,27 @@ def _more(
     )
     # (after CP-SAT's import in ``_joint_possible``, 0.5-1.5 s: the walk's share is measured
     # from here, or a 16-goal line, where the joint re-plan finds nothing, would get no walk)
+    squeeze = (
+        squeeze
+        and rounds is None
+        and not joint
+        and len(gls) > CP_UP_TO
+        and repair.applicable(problem, [g.atom.name for g in gls], [g.after for g in gls])
+    )
     now = time.perf_counter()
-    walk_until = now + CP_WALK_SHARE * (until - now) if joint else until
+    if joint:
+        walk_until = now + CP_WALK_SHARE * (until - now)
+    elif squeeze:
+        walk_until = now + REPAIR_WALK_SHARE * (until - now)
+    else:
+        walk_until = until
 
-    def better(found: _Found | None) -> None:
-        nonlocal best
+    def better(found: _Found | None, routes: dict[int, _Route] | None = None) -> None:
+        nonlocal best, best_routes
         if found is not None and (best is None or found[0] < best[0]):
             best = found
+            if routes is not None:
+                best_routes = routes
 
     took = 0.0  # how long the last round (an order and its moves) took
     while True:
@@ -1076,6 +1103,11 @@ def _more(
         # a round is not cut short: none starts that would end past ``walk_until`` if it took
         # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)
         if now + took >= walk_until:
+            if squeeze and best is not None:
+                squeeze = False
+                better(_squeezed(walk.router, best_routes, until, enough))
+                walk_until = until
+                continue
             if not joint or best is None:
                 break
             joint = False
@@ -1083,14 +1115,51 @@ def _more(
             walk_until = until
             continue
         walk.step()
-        better(walk.best)
+        better(walk.best, walk.best_routes)
         if walk.best is not None and len(gls) >= 3:
             if lns is None or walk.best[0] < lns.cost:
                 lns = _Neighbourhood(walk.router, walk.best, walk.best_routes)
             for _ in range(LNS_STEPS):
                 lns.step()
-            better(lns.best)
+            # (the neighbourhood's current routes: a plan as long as its best)
+            better(lns.best, lns.routes)
         took = time.perf_counter() - now
+    return best
+
+
+def _squeezed(
+    router: _Router, routes: dict[int, _Route], until: float, enough: float = -math.inf
+) -> _Found | None:
+    """The plan of ``routes`` in fewer steps, by conflict repair (``repair.Repair``) until
+    ``until``: squeezed into one step fewer, repaired, and again from each plan found, every
+    one replayed through the monitors. The shortest plan found (None: none); stops once it is
+    no longer than ``enough`` (a lower bound: it is optimal)."""
+    p = router.p
+    node = router.node
+    gone = 0
+    for o, code in enumerate(node[0]):
+        r = p.code_holder.get(code)
+        if r is not None and o not in router.targets:
+            gone |= 1 << r  # holds an object nobody asked for: out of play
+    rep = repair.Repair(p, node[0], [g.obj for g in router.goals], router.fires, router.alive, gone)
+    paths = repair.ranked({gi: rt[0] for gi, rt in routes.items()})
+    best: _Found | None = None
+    if not rep.squeeze(paths, repair.length(paths) - 1):
+        return None
+    while time.perf_counter() < until:
+        if rep.clashes:
+            rep.step()
+            continue
+        found = router.replay(rep.steps())
+        if found is None:  # (routes without clashes are a plan: not expected)
+            break
+        if best is None or found[0] < best[0]:
+            best = found
+        if found[0] <= enough:
+            break
+        paths = rep.paths()
+        if not rep.squeeze(paths, repair.length(paths) - 1):
+            break
     return best
 
 

@@ -135,20 +135,34 @@ class _Linear:
     hi: Any
     unit: int
 
-    def solve(self, deadline: float, *, integral: bool) -> tuple[int, bool] | None:
+    def solve(
+        self,
+        deadline: float,
+        *,
+        integral: bool,
+        on_bound: Callable[[int], None] | None = None,
+    ) -> tuple[int, bool] | None:
         """(a lower bound in ticks on the model's least makespan, whether it is that least
         makespan), solved by HiGHS until ``deadline`` (``time.perf_counter()``). Not
         ``integral``: the LP relaxation's optimum (never said to be the least). ``integral``:
         every variable kept integral (the model itself) and the bound HiGHS proved by the
         deadline (its dual bound: its root LP, then its cuts and branching), the least makespan
         itself when it closed the gap. Rounded up to a whole time unit (the model's makespan is
-        one) after ``LP_SLACK`` units are taken off. None: no bound by the deadline."""
+        one) after ``LP_SLACK`` units are taken off. None: no bound by the deadline.
+
+        With ``on_bound`` (``integral`` only) each rise of that rounded dual bound is told as
+        HiGHS proves it, while it still runs (``_mip_told``): its cut rounds raise it over
+        seconds on 32-goal cells, and scipy's ``milp`` gives it only when HiGHS stops."""
         import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
         from scipy.optimize import Bounds, LinearConstraint, milp
 
         left = deadline - time.perf_counter()
         if left <= 0:
             return None
+        if integral and on_bound is not None:
+            told = self._mip_told(left, on_bound)
+            if told is not None:
+                return told[0]
         res = milp(
             self.cost,
             integrality=np.ones(len(self.cost)) if integral else None,
@@ -165,6 +179,63 @@ class _Linear:
             return None
         units = math.ceil(dual - LP_SLACK)
         return units * self.unit, res.fun is not None and units >= round(res.fun)
+
+    def _mip_told(
+        self, left: float, on_bound: Callable[[int], None]
+    ) -> tuple[tuple[int, bool] | None] | None:
+        """``solve``'s MIP (its answer, in a 1-tuple) through HiGHS's own interface in scipy
+        (``scipy.optimize._highspy``, private: None when it is not there, and then ``milp``
+        is used instead), with a
+        callback on HiGHS's MIP interrupt points that tells ``on_bound`` each rise of the
+        rounded dual bound. The same model, options and rounding as ``milp``'s, so the same
+        answer; only when it is known changes."""
+        try:
+            import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
+            from scipy.optimize._highspy import _core as highs
+            from scipy.sparse import csc_matrix
+
+            interrupt = highs.cb.HighsCallbackType.kCallbackMipInterrupt
+            solver = highs._Highs()
+            model = highs.HighsLp()
+        except (ImportError, AttributeError):
+            return None
+        cols = csc_matrix(self.rows)
+        n_row, n_col = cols.shape
+        model.num_col_ = n_col
+        model.num_row_ = n_row
+        model.a_matrix_.num_col_ = n_col
+        model.a_matrix_.num_row_ = n_row
+        model.a_matrix_.format_ = highs.MatrixFormat.kColwise
+        model.a_matrix_.start_ = cols.indptr
+        model.a_matrix_.index_ = cols.indices
+        model.a_matrix_.value_ = cols.data.astype(np.float64)
+        model.col_cost_ = np.asarray(self.cost, dtype=np.float64)
+        model.col_lower_ = np.asarray(self.lo, dtype=np.float64)
+        model.col_upper_ = np.asarray(self.hi, dtype=np.float64)
+        model.row_lower_ = np.asarray(self.low, dtype=np.float64)
+        model.row_upper_ = np.asarray(self.high, dtype=np.float64)
+        model.integrality_ = [highs.HighsVarType.kInteger] * n_col
+        solver.setOptionValue("output_flag", False)
+        solver.setOptionValue("time_limit", left)
+        solver.passModel(model)
+        best = [-_HUGE]  # the last units told
+
+        def rose(_kind: Any, _message: Any, out: Any, _into: Any, _user: Any) -> None:
+            dual = out.mip_dual_bound
+            if math.isfinite(dual) and (units := math.ceil(dual - LP_SLACK)) > best[0]:
+                best[0] = units
+                on_bound(units * self.unit)
+
+        solver.setCallback(rose, None)
+        solver.startCallback(interrupt)
+        solver.run()
+        info = solver.getInfo()
+        dual = info.mip_dual_bound
+        if not math.isfinite(dual):
+            return (None,)
+        units = math.ceil(dual - LP_SLACK)
+        found = info.primal_solution_status == highs.SolutionStatus.kSolutionStatusFeasible
+        return ((units * self.unit, found and units >= round(info.objective_function_value)),)
 
 
 def _linear(
@@ -427,21 +498,28 @@ def profile_bound(
     proved. Never below ``floor``. With ``lp`` (and ``upper`` and scipy), the climb starts
     from the LP bound at ``upper`` (``lp_bound``: every plan no longer than ``upper``, the
     optimum among them, is at least that long). With ``mip`` too, the same model with every
-    variable integral is then given to HiGHS until ``MIP_MARGIN`` before ``deadline``, and the
-    climb goes on from the bound it proved (its dual bound: ``_Linear.solve``)."""
+    variable integral is then given to HiGHS until ``MIP_MARGIN`` before ``deadline``, each rise
+    of its dual bound told to ``on_proven`` as HiGHS proves it (``_Linear.solve``'s
+    ``on_bound``), and the climb goes on from the bound it proved."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
     proven = -(-floor // unit)  # the least level (units) not ruled out
     if lp and upper is not None and lp_available():
+
+        def told(ticks: int) -> None:  # (the MIP's dual bound, as HiGHS raises it, too)
+            nonlocal proven
+            if ticks // unit > proven:
+                proven = ticks // unit
+                if on_proven is not None:
+                    on_proven(max(floor, proven * unit))
+
         linear = _linear(problem, graph, node, tgts, upper, deadline)
         for integral in (False, True) if mip else (False,):
             until = deadline - MIP_MARGIN if integral else deadline
-            got = None if linear is None else linear.solve(until, integral=integral)
-            if got is not None and got[0] // unit > proven:
-                proven = got[0] // unit
-                if on_proven is not None:
-                    on_proven(max(floor, proven * unit))
+            got = None if linear is None else linear.solve(until, integral=integral, on_bound=told)
+            if got is not None:
+                told(got[0])
     # the least level known (or feared) to have a relaxed solution: a plan's makespan has one
     cap = math.inf if upper is None else upper // unit
     cap_solved = upper is not None

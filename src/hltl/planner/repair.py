@@ -1,0 +1,360 @@
+"""Plans in fewer steps: routes squeezed into one step fewer, then their clashes repaired."""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Sequence
+
+from hltl.planner.problem import Instance, Problem
+
+# (step, instance) per instance of a route, in step order
+Path = list[tuple[int, Instance]]
+# a goal's route here: its path, its (step, robots used) cells, the step its atom happens in
+Routed = tuple[Path, list[tuple[int, int]], int]
+
+# the cost of one clash against one robot-step (clashes first, robot-steps to break ties)
+CLASH = 1 << 16
+# goals taken out per repair move: the clashing one and up to this many more
+REPAIR_MORE = (1, 1, 2, 2, 3)
+# repair moves without fewer clashes before the clashing cells weigh more
+STUCK = 50
+
+
+class Repair:
+    """Conflict repair of one cell's goals inside a horizon of steps.
+
+    ``objs[gi]`` is goal ``gi``'s object, ``fires[gi]`` the instances that make its atom
+    happen, ``alive[gi][place]`` whether it still can from there; ``start[o]`` is where object
+    ``o`` is, ``gone`` the robots nothing may use (they hold an object for good)."""
+
+    def __init__(
+        self,
+        problem: Problem,
+        start: Sequence[int],
+        objs: Sequence[int],
+        fires: Sequence[frozenset[int]],
+        alive: Sequence[Sequence[bool]],
+        gone: int,
+        seed: int = 5,
+    ) -> None:
+        self.p = problem
+        self.start = list(start)
+        self.objs = list(objs)
+        self.fires = fires
+        self.gone = gone
+        self.rng = random.Random(seed)
+        self.n = len(fires)
+        # per goal and place: the fewest instances from there to one that fires (its atom)
+        self.left = [self._fewest(gi, alive[gi]) for gi in range(self.n)]
+        self.routes: dict[int, Routed] = {}
+        self.T = 0
+        self.count: list[list[int]] = []
+        self.occ: list[int] = []
+        self.weight: list[list[int]] = []  # per step and robot, what a clash there costs
+        self.heavy: list[int] = []  # per step, the robots whose clashes cost more than 1
+        self.clashes = 0  # cells used twice, counted once per extra use
+        self.weighted = 0  # the same, each counted at its weight
+        self.stuck = 0  # moves since the clashes last fell
+        self.least = 0  # the fewest clashes since the weights were last raised
+
+    def _fewest(self, gi: int, alive: Sequence[bool]) -> list[int]:
+        """Fewest instances from each place to the goal's atom (ignoring other routes)."""
+        p = self.p
+        big = 1 << 30
+        dist = [big] * len(p.locs)
+        fires = self.fires[gi]
+        by_pre = p.by_obj_pre[self.objs[gi]]
+        # Bellman-Ford over places (few places, few instances each)
+        for loc in range(len(p.locs)):
+            if any(i.index in fires and not i.executors & self.gone for i in by_pre[loc]):
+                dist[loc] = 1
+        changed = True
+        while changed:
+            changed = False
+            for loc in range(len(p.locs)):
+                if not alive[loc]:
+                    continue
+                for i in by_pre[loc]:
+                    if i.executors & self.gone or i.index in fires:
+                        continue
+                    d = dist[i.post] + 1
+                    if d < dist[loc]:
+                        dist[loc] = d
+                        changed = True
+        return dist
+
+    # --- the usage table -------------------------------------------------------------------
+
+    def _reset(self, T: int) -> None:
+        self.T = T
+        self.count = [[0] * len(self.p.robots) for _ in range(T)]
+        self.occ = [0] * T
+        self.weight = [[1] * len(self.p.robots) for _ in range(T)]
+        self.heavy = [0] * T
+        self.clashes = 0
+        self.weighted = 0
+        for rt in self.routes.values():
+            self._add(rt)
+
+    def _add(self, rt: Routed) -> None:
+        for t, used in rt[1]:
+            row = self.count[t]
+            self.occ[t] |= used
+            while used:
+                low = used & -used
+                r = low.bit_length() - 1
+                if row[r]:
+                    self.clashes += 1
+                    self.weighted += self.weight[t][r]
+                row[r] += 1
+                used ^= low
+
+    def _remove(self, rt: Routed) -> None:
+        for t, used in rt[1]:
+            row = self.count[t]
+            while used:
+                low = used & -used
+                r = low.bit_length() - 1
+                row[r] -= 1
+                if row[r]:
+                    self.clashes -= 1
+                    self.weighted -= self.weight[t][r]
+                else:
+                    self.occ[t] &= ~low
+                used ^= low
+
+    # --- routing against the table ---------------------------------------------------------
+
+    def route(self, gi: int) -> Routed | None:
+        """The goal's route inside the horizon with the fewest clashes with the routes in the
+        table (then the fewest robot-steps, then the earliest atom); None: none at all."""
+        p = self.p
+        T = self.T
+        holder = p.code_holder
+        left = self.left[gi]
+        fires = self.fires[gi]
+        gone = self.gone
+        occ = self.occ
+        weight = self.weight
+        heavy = self.heavy
+        start = self.start[self._obj(gi)]
+        if left[start] > T:
+            return None
+        by_pre = p.by_obj_pre[self._obj(gi)]
+        back: dict[tuple[int, int], tuple[int, Instance | None, int]] = {}
+        frontier = {start: 0}
+        done: tuple[int, int, int, Instance, int] | None = None  # cost, step, place, inst, used
+        for t in range(T):
+            busy = occ[t]
+            w = weight[t]
+            hw = heavy[t]
+            nxt: dict[int, int] = {}
+            for loc, cost in frontier.items():
+                if done is not None and cost >= done[0]:
+                    continue
+                h = holder.get(loc)
+                hb = 0 if h is None else 1 << h
+                if hb & gone:
+                    continue
+                for inst in by_pre[loc]:
+                    used = inst.executors | hb
+                    if used & gone:
+                        continue
+                    c = cost + used.bit_count()
+                    over = used & busy
+                    if over:
+                        c += CLASH * over.bit_count()
+                        if over & hw:  # (most cells weigh 1: their bits are not summed)
+                            c += CLASH * sum(w[r] - 1 for r in _bits(over & hw))
+                    if inst.index in fires:
+                        if done is None or c < done[0]:
+                            done = (c, t, loc, inst, used)
+                        continue
+                    if t + 1 + left[inst.post] > T:
+                        continue
+                    if c < nxt.get(inst.post, 1 << 62):
+                        nxt[inst.post] = c
+                        back[(inst.post, t + 1)] = (loc, inst, used)
+                if t + 1 + left[loc] <= T:
+                    c = cost + (CLASH * w[h] + 1 if hb & busy else 1) if h is not None else cost
+                    if c < nxt.get(loc, 1 << 62):
+                        nxt[loc] = c
+                        back[(loc, t + 1)] = (loc, None, hb)
+            frontier = nxt
+        if done is None:
+            return None
+        _, t_end, loc, last, used_last = done
+        path: Path = [(t_end, last)]
+        cells: list[tuple[int, int]] = [(t_end, used_last)]
+        cur, ct = loc, t_end
+        while ct > 0:
+            prev, act, used = back[(cur, ct)]
+            ct -= 1
+            if act is not None:
+                path.append((ct, act))
+            if used:
+                cells.append((ct, used))
+            cur = prev
+        path.reverse()
+        cells.reverse()
+        return path, cells, t_end
+
+    def _obj(self, gi: int) -> int:
+        return self.objs[gi]
+
+    # --- the search ------------------------------------------------------------------------
+
+    def squeeze(self, routes: dict[int, Path], T: int) -> bool:
+        """Start a search for a plan of ``T`` steps from ``routes`` (per goal its path, steps
+        counted from 0): the goals whose atom happens at step ``T`` or later are routed again
+        inside the horizon, clashes allowed. False: some goal has no route at all."""
+        self.routes = {}
+        for gi, path in routes.items():
+            if path[-1][0] < T:
+                self.routes[gi] = (path, self._cells(gi, path), path[-1][0])
+        self._reset(T)
+        self.least = 1 << 30
+        self.stuck = 0
+        late = [gi for gi in range(self.n) if gi not in self.routes]
+        self.rng.shuffle(late)
+        for gi in late:
+            rt = self.route(gi)
+            if rt is None:
+                return False
+            self.routes[gi] = rt
+            self._add(rt)
+        return True
+
+    def _cells(self, gi: int, path: Path) -> list[tuple[int, int]]:
+        """The (step, robots) cells a path uses: its instances' executors, and the holder in
+        every step its object starts in a hand."""
+        holder = self.p.code_holder
+        loc = self.start[self._obj(gi)]
+        cells: list[tuple[int, int]] = []
+        acts = dict(path)
+        for t in range(path[-1][0] + 1):
+            h = holder.get(loc)
+            used = 0 if h is None else 1 << h
+            inst = acts.get(t)
+            if inst is not None:
+                used |= inst.executors
+                loc = inst.post
+            if used:
+                cells.append((t, used))
+        return cells
+
+    def step(self) -> None:
+        """One repair move: a goal in a clash and a few that share its robots routed again,
+        kept when the clashes do not grow."""
+        rng = self.rng
+        clashing = self._clashing()
+        if not clashing:
+            return
+        g0 = rng.choice(clashing)
+        robots = 0
+        for _, used in self.routes[g0][1]:
+            robots |= used
+        near = [
+            gi
+            for gi, rt in self.routes.items()
+            if gi != g0 and any(used & robots for _, used in rt[1])
+        ]
+        k = min(len(near), rng.choice(REPAIR_MORE))
+        out = [g0, *rng.sample(near, k)]
+        rng.shuffle(out)
+        before = self.weighted
+        old = {gi: self.routes[gi] for gi in out}
+        for gi in out:
+            self._remove(old[gi])
+            del self.routes[gi]
+        new: dict[int, Routed] = {}
+        for gi in out:
+            rt = self.route(gi)
+            if rt is None:
+                break
+            new[gi] = rt
+            self.routes[gi] = rt
+            self._add(rt)
+        if len(new) == len(out) and self.weighted <= before:
+            self._progress()
+            return
+        for gi, rt in new.items():
+            self._remove(rt)
+            del self.routes[gi]
+        for gi in out:
+            self.routes[gi] = old[gi]
+            self._add(old[gi])
+        self._progress()
+
+    def _progress(self) -> None:
+        """Breakout (Morris 1993): after ``STUCK`` moves without fewer clashes, each cell
+        used twice costs one more from then on, so the moves leave the clashes that stay."""
+        if self.clashes < self.least:
+            self.least = self.clashes
+            self.stuck = 0
+            return
+        self.stuck += 1
+        if self.stuck < STUCK:
+            return
+        self.stuck = 0
+        self.least = self.clashes
+        for t, row in enumerate(self.count):
+            for r, n in enumerate(row):
+                if n > 1:
+                    self.weight[t][r] += 1
+                    self.heavy[t] |= 1 << r
+                    self.weighted += n - 1
+
+    def _clashing(self) -> list[int]:
+        out = []
+        for gi, rt in self.routes.items():
+            for t, used in rt[1]:
+                row = self.count[t]
+                if any(row[r] > 1 for r in _bits(used)):
+                    out.append(gi)
+                    break
+        return out
+
+    def steps(self) -> list[list[Instance]]:
+        """The routes as a plan's steps (empty steps dropped)."""
+        by_step: dict[int, list[Instance]] = {}
+        for path, _, _ in self.routes.values():
+            for t, inst in path:
+                by_step.setdefault(t, []).append(inst)
+        return [by_step[t] for t in sorted(by_step)]
+
+    def paths(self) -> dict[int, Path]:
+        """Per goal its path, with the empty steps of the plan taken out."""
+        return ranked({gi: rt[0] for gi, rt in self.routes.items()})
+
+
+def applicable(problem: Problem, atoms: Sequence[str], after: Sequence[Sequence[int]]) -> bool:
+    """Whether routes alone make the cell's plans: every goal an event that leaves its object
+    in no hand (``delivered``, ``placed``), no order between goals, fixed durations."""
+    return (
+        problem.cost.fixed
+        and not problem.state_atom_objects
+        and all(a in ("delivered", "placed") for a in atoms)
+        and not any(after)
+    )
+
+
+def ranked(routes: dict[int, Path]) -> dict[int, Path]:
+    """The paths with the steps no path acts in taken out (steps counted from 0)."""
+    used = sorted({t for path in routes.values() for t, _ in path})
+    rank = {t: k for k, t in enumerate(used)}
+    return {gi: [(rank[t], i) for t, i in path] for gi, path in routes.items()}
+
+
+def length(routes: dict[int, Path]) -> int:
+    """How many steps the paths act in."""
+    return len({t for path in routes.values() for t, _ in path})
+
+
+def _bits(mask: int) -> list[int]:
+    out = []
+    while mask:
+        low = mask & -mask
+        out.append(low.bit_length() - 1)
+        mask ^= low
+    return out
