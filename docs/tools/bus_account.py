@@ -247,12 +247,12 @@ def main(episodes: int, repeats: int) -> None:
         def get(self, key: Any, **kw: Any) -> Any:
             p = bytes(kw.get("payload") or b"")
             kind = (
-                ("foresee: the first step" if b'"t"' in p else "foresee: a new spec's basis")
+                "reset"  # (on sim/reset, or first in a request on sim/step: session 20)
+                if "reset" in str(key) or p.startswith(b'{"reset":true')
+                else ("foresee: the first step" if b'"t"' in p else "foresee: a new spec's basis")
                 if b'"foresee"' in p
                 else "end"
                 if b'"end"' in p
-                else "reset"
-                if "reset" in str(key)
                 else ("after commands" if b'"commands"' in p else "peek")
                 if b'"peek"' in p
                 else "step"
@@ -320,7 +320,7 @@ def main(episodes: int, repeats: int) -> None:
             "end"
             if data.get("end")
             else "reset"
-            if "reset" in key
+            if "reset" in key or data.get("reset") is True
             else "a step's commands"
             if data.get("commands")
             else "a step"
