@@ -74,8 +74,9 @@ def test_the_mip_run_asks_for_a_solution_at_its_bound_only_where_handovers_are_b
     monkeypatch: pytest.MonkeyPatch, layout: str, asked: bool
 ) -> None:
     # grids: a relaxed solution at the LP's bound ends the run there, the bound final (solved),
-    # with no MIP; random layouts (odd cycles of handovers): straight to the MIP, as before.
-    # Either way the bound is the relaxation's optimum (the MIP solves these small cells)
+    # with no MIP; random layouts (odd cycles of handovers): straight to the MIP, without the
+    # LP alone first when the MIP tells its bound as it rises. Either way the bound is the
+    # relaxation's optimum (the MIP solves these small cells)
     c = delivery_cell(layout, 8, 1)
     problem = Problem(c.scene, c.spec)
     assert profile._bipartite(problem) is asked
@@ -108,6 +109,7 @@ def test_the_mip_run_asks_for_a_solution_at_its_bound_only_where_handovers_are_b
         assert questions[-1] * time_unit(problem) == got.ticks  # (the solution's level)
         assert len(questions) <= profile.FITS_QUESTIONS
     assert (True in mips) is not asked
+    assert (False in mips) is (asked or not profile._streams())
 
 
 def test_bipartite_handovers() -> None:

@@ -277,6 +277,17 @@ class _Linear:
         return ((units * self.unit, found and units >= round(info.objective_function_value)),)
 
 
+def _streams() -> bool:
+    """HiGHS's own interface in scipy, with the MIP callback ``_Linear._mip_told`` uses, is
+    there (it is private to scipy: else ``milp``, which tells the bound only at its end)."""
+    try:
+        from scipy.optimize._highspy import _core as highs
+
+        return highs.cb.HighsCallbackType.kCallbackMipInterrupt is not None
+    except (ImportError, AttributeError):
+        return False
+
+
 def _bipartite(problem: Problem) -> bool:
     """Whether the robots, joined where an instance has two executors (a handover), form a
     bipartite graph (no odd cycle of handovers)."""
@@ -586,13 +597,17 @@ def profile_bound(
                     on_proven(max(floor, proven * unit))
 
         linear = _linear(problem, graph, node, tgts, upper, deadline)
-        got = None if linear is None else linear.solve(deadline, integral=False)
+        asks = FITS_QUESTIONS if mip and _bipartite(problem) else 0
+        # (the MIP's first dual bound is the LP's, or above it: where the MIP comes next and
+        # tells its bound as it rises, the LP alone is not solved first)
+        lp_first = not mip or asks > 0 or not _streams()
+        got = None if linear is None or not lp_first else linear.solve(deadline, integral=False)
         if got is not None:
             told(got[0])
         if mip and linear is not None:
             until = deadline - MIP_MARGIN
             fits: bool | None = False
-            for _ in range(FITS_QUESTIONS if _bipartite(problem) else 0):
+            for _ in range(asks):
                 fits = linear.fits(proven, min(until, time.perf_counter() + FITS_SECONDS))
                 if fits is not False:
                     break
