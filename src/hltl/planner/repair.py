@@ -20,7 +20,7 @@ CLASH = 1 << 16
 # goals taken out per repair move: the clashing one and up to this many more
 REPAIR_MORE = (1, 1, 2, 2, 3)
 # repair moves without fewer clashes before the clashing cells weigh more
-STUCK = 50
+STUCK = 20
 
 
 class Repair:
