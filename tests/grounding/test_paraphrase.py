@@ -41,7 +41,6 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
-        "Any mug will do for Carol",
         # blind5 (tuned on in session 7): a remark naming a surface ("it's cluttering the
         # counter") could be asking for something there
         "Put the cup on the shelf, it's cluttering the counter",
@@ -257,7 +256,6 @@ KNOWN_MISSES = frozenset(
         "Bottle goes to Person A. And Person B, she gets the chips.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Person B first, with the bottle. After that, the apple for Person A.",
-        "Bottle for Person A. Chips for Person B. Sorry, in that order.",
         "Any of the pens will do for Sam.",
         "Put the tape on the belt, and the gloves too, both of them, ready for the next shift.",
         "Either mug's fine for Carol, the red or the blue, your call.",
@@ -278,7 +276,6 @@ KNOWN_MISSES = frozenset(
         "Bob gets the lot, just leave the two mugs where they are.",
         "Put everything that isn't a book on the desk.",
         "Jess wants the other spanner, not the big one on the workbench.",
-        "Apple to Person B. Not Person A, mind, Person B.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
@@ -292,12 +289,8 @@ KNOWN_MISSES = frozenset(
         # ('Carol says she'd love'), passives, 'he'/'she' across clauses, fragments and run-ons,
         # choice and count words ('Either cup will do', 'big or small', 'one to Kofi and one to
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
-        "Porter coming through, sorry! When you've a moment, could you pop the water jug onto the"
-        " trolley? Ta very much.",
         "Chef, sorry, behind you... oh, it's the robot. Could you kindly give the salt to Mr "
         "Novak? Thank you, sir.",
-        "Oh, aren't you clever. Now, dear, would you give the teddy bear to Lily, there's a good "
-        "robot. Thank you.",
         "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
         "bottle. Thanks. Sorry Dave, go on.",
         "Carol says she'd love the blue mug, oh, and Bob fancies the apple.",
@@ -314,11 +307,9 @@ KNOWN_MISSES = frozenset(
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
         "okay so Person A's having the cup and the apple's going over to Person B off you go",
-        "Crisps on the shelf. Bottle to Alice. In that order.",
         "okay listen the chips are for Person A the bottle's for Person B got it",
         "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
         "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
-        "Either cup will do for Dana.",
         "Hand Jess a spanner, big or small, she's only tightening a bolt.",
         "Either book can go on the desk, I just need one out for the lesson.",
         "One of the smaller boxes onto the belt, the small or the medium, your pick.",
@@ -341,7 +332,6 @@ KNOWN_MISSES = frozenset(
         "Mr Novak wants a plate — the white one, mind, not the blue.",
         "The blanket on the trolley stays there; Mrs Khan gets the other one.",
         "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
-        "Not Person A, Person B should get the cup.",
         "Bob doesn't want the bottle at all, it's the crisps he's after.",
         "Alice doesn't want the crisps. The bottle's the one for her.",
         "Person A will take anything at all as long as it isn't the cup.",

@@ -13,6 +13,7 @@ from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.grounding.lexicon import Lexicon, _same_name, _touching
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
+    CELL,
     CLASSROOM,
     LAB,
     ROOT,
@@ -254,3 +255,44 @@ def test_the_speakers_next_step_after_the_request_is_taken_off() -> None:
         "drill@bench ; torch>B",
         workshop,
     )
+
+
+@settings(max_examples=30, deadline=None)
+@_requests_in(
+    [
+        "Porter coming through, sorry! {r}.",
+        "Oh, aren't you clever. {r}.",
+        "Mind your backs! {r}.",
+    ]
+)
+def test_calls_and_a_person_said_not_to_be_the_one(scene: Scene, k: int, frame: str) -> None:
+    request, want = plain_request(scene, k)
+    others = [h for h in scene.humans if h.id != want.split(">")[1]]
+    other = name_of(scene, others[0].id)
+    assert_reads(frame.format(r=request, other=other), want, scene)
+
+
+def test_a_person_said_not_to_be_the_one_but_named_again_stays_refused() -> None:
+    cell = CELL
+    assert_refused("Alice should get the mug. Not Alice, sorry, Carol.", cell, "mug_blue")
+    assert_refused("Not Alice, Carol and Bob get a mug each.", cell)
+    # said before a command it could be said to the hearer (session 12: refused)
+    assert_refused("Not Bob, give Alice the cup", cell)
+    assert_reads("Not Bob, Alice should get the cup.", "cup>A", cell)
+    assert_reads("Not Person A, Person B should get the bottle.", "bottle>B", T21)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(PAIRED), st.integers(0, 7), st.sampled_from(["", "Sorry, ", "And "]))
+def test_a_closing_in_that_order_orders_the_sentences(scene: Scene, k: int, lead: str) -> None:
+    (o1, o2), (p1, p2), (n1, n2) = _two(scene, k)
+    h1, h2 = name_of(scene, p1), name_of(scene, p2)
+    text = f"The {n1} to {h1}. The {n2} to {h2}. {lead}in that order."
+    assert_reads(text, f"{o1}>{p1} ; {o2}>{p2}", scene)
+    # an order said already is not said again
+    assert_refused(f"The {n1} to {h1}. Before that, the {n2} to {h2}. In that order.", scene)
+
+
+def test_either_will_do_for_one_person() -> None:
+    assert_reads("Either cup will do for Dana.", "cup_green>A | cup_white>A", LAB)
+    assert_refused("Either cup will do for Dana and Omar.", LAB)

@@ -6663,6 +6663,29 @@ _BOTHER19 = r"(?:to|for) (?:bother|interrupt|trouble|disturb|butt in|barge in)|f
 _BOTHER19 += r"(?:bother|trouble|interruption|intrusion)|for (?:bothering|interrupting|troubling)"
 
 
+# a call said as a sentence of its own before the request: 'Porter coming through, sorry!',
+# 'Oh, aren't you clever.'
+_CALLS21 = re.compile(
+    r"^(?:(?:oh|ooh|well),? )?(?:(?:[a-z]+ )?coming through|mind your backs?|(?:aren't|isn't) "
+    r"(?:you|he|she) (?:clever|good|lovely|kind|a star|a treasure|a love|a gem|helpful|"
+    r"wonderful|brilliant|marvellous|a good (?:robot|boy|girl|helper)))(?:,? sorry)?\s*[.!]+\s*"
+    r"(?=[a-z])",
+    _F,
+)
+
+
+def _in_that_order21(text: str) -> str:
+    """'Crisps on the shelf. Bottle to Alice. In that order.': a closing sentence of 'in that
+    order' orders the sentences before it (each after the one before)."""
+    m = _rx(r"\s*(?:sorry,? |oh,? |and )?in (?:that|this) order\s*[.!]*$").search(text)
+    if m is None or m.start() == 0 or text[m.start() - 1] not in ".!":
+        return text
+    parts = re.split(r"(?<=[.!])\s+", text[: m.start()].strip())
+    if len(parts) < 2 or any(re.match(r"(?:then|after|before|first|next)\b", p, _F) for p in parts):
+        return text
+    return " Then ".join(p.rstrip(".! ") + "." for p in parts).replace(". Then ", ". Then ")
+
+
 _ATTENTION21 = re.compile(
     r"^(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
     r"(?:,? (?:(?:so )?sorry )?(?:to|for) (?:bother|interrupt|trouble|disturb)(?:ing)?(?: you)?)?"
@@ -6674,8 +6697,10 @@ _ATTENTION21 = re.compile(
 def _attention21(text: str, _lexicon: Lexicon) -> str:
     """Session 21: 'Excuse me, sorry, …' opening the instruction asks for attention (its 'me' is
     no recipient and its 'sorry' corrects nothing): taken off. Later in the instruction it is
-    left as it is (_corrections19 does not read it as a correction)."""
-    return _ATTENTION21.sub("", text)
+    left as it is (_corrections19 does not read it as a correction). A call of its own
+    ('Porter coming through!', 'Oh, aren't you clever.') likewise; a closing 'In that order.'
+    orders the sentences before it."""
+    return _in_that_order21(_CALLS21.sub("", _ATTENTION21.sub("", text)))
 
 
 _SPEAKER21: tuple[tuple[str, str], ...] = (
@@ -6690,6 +6715,12 @@ _SPEAKER21: tuple[tuple[str, str], ...] = (
     ),
     # "very kindly", "ever so gently": the manner word with its intensifier
     (r"\b(?:very|so|ever so|most|really) (kindly|gently|quickly|carefully)\b", r"\1"),
+    # "Either cup will do for Dana.": either cup for Dana
+    (
+        r"^(either|any) ([a-z]+) (?:will do|would do|is fine|is okay|works) for "
+        r"([A-Z]\w*(?: [A-Z]\w*)?)(\s*[.!]?)$",  # one person
+        r"\1 \2 for \3\4",
+    ),
     # "…, before I start on this socket": the speaker's own next step, after the request
     (
         r"\s*,?\s+before (?:i|we) (?:start|begin|get going|get started|crack on|head off|go|"
@@ -6701,7 +6732,8 @@ _SPEAKER21: tuple[tuple[str, str], ...] = (
 
 def _speaker21(text: str, _lexicon: Lexicon) -> str:
     """Session 21: the speaker's remarks that ask nothing ('don't mind me', 'I would like to ask
-    you,', 'Can I ask you for something?', '…, before I start on this socket')."""
+    you,', 'Can I ask you for something?', '…, before I start on this socket'); 'Either X will
+    do for P' (either X for P)."""
     out = text
     for pattern, repl in _SPEAKER21:
         out = _sub(pattern, repl, out)
@@ -6980,6 +7012,14 @@ def _nothing_for20(text: str, lexicon: Lexicon) -> str:
     out = _sub(
         r"(?:^|(?<=[.;!?])\s*)(?P<keep>)(?:please )?(?:don't|do not) (?:give|hand|send) "
         r"(?:anything|any of (?:it|them)) to (?P<who>[A-Z][\w ]*?)\s*[;,.]\s*",
+        lambda m: drop(m, m.group("who"), "human"),
+        out,
+    )
+    # session 21: "Not Person A, Person B should get the cup.": the person said not to be the
+    # one, when named nowhere else
+    out = _sub(
+        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)not (?P<who>[A-Z][\w ]*?),\s*(?:mind,?\s*)?"
+        r"(?=(?-i:[A-Z]))(?!give|hand|pass|bring|put)",  # a name ('Not Bob, give …' stays)
         lambda m: drop(m, m.group("who"), "human"),
         out,
     )
