@@ -137,7 +137,7 @@ def test_a_plan_handed_over_is_taken_once_and_only_when_shorter() -> None:
 def test_the_squeeze_takes_the_other_sides_shorter_plan_replayed(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    # the walk's process squeezes its first plan; the bound's process has handed over a
+    # the bound's process squeezes the first plan; the walk's process has handed over a
     # shorter one (from a repair with another seed): it is replayed through the monitors and
     # returned (it meets ``enough``, so the squeeze stops there)
     c, problem, _, router, first = _cell(8, 2)
@@ -145,7 +145,7 @@ def test_the_squeeze_takes_the_other_sides_shorter_plan_replayed(
     theirs = _squeeze_paths(router, first, time.perf_counter() + DEADLINE_S, 10**12, seed=99)
     assert theirs is not None
     walk, bound = _pair(problem)
-    bound.offer(theirs[0], _paths(router, theirs))
+    walk.offer(theirs[0], _paths(router, theirs))
     monkeypatch.setattr(anytime, "NEWS_EVERY", 1)
     replayed: list[list[list[int]]] = []
     real = _Router.replay
@@ -156,7 +156,7 @@ def test_the_squeeze_takes_the_other_sides_shorter_plan_replayed(
 
     monkeypatch.setattr(_Router, "replay", replay)
     found = _squeeze_paths(
-        router, first, time.perf_counter() + DEADLINE_S, theirs[0], exchange=walk
+        router, first, time.perf_counter() + DEADLINE_S, theirs[0], exchange=bound
     )
     assert found is not None and found[0] == theirs[0]
     assert replayed[0] == _steps(theirs) == _steps(found)
@@ -171,17 +171,36 @@ def test_a_plan_handed_over_that_is_no_plan_is_not_taken(monkeypatch: pytest.Mon
     walk, bound = _pair(problem)
     broken = dict(first)
     broken.pop(0)
-    bound.offer(1, broken)
+    walk.offer(1, broken)
     monkeypatch.setattr(anytime, "NEWS_EVERY", 1)
     taken: list[bool] = []
     real_news = _Exchange.news
     monkeypatch.setattr(_Exchange, "news", lambda self: taken.append(True) or real_news(self))
     cost = repair.length(first)  # (stop at the first shorter plan: any is below this)
-    found = _squeeze_paths(router, first, time.perf_counter() + DEADLINE_S, 10**12, exchange=walk)
+    found = _squeeze_paths(router, first, time.perf_counter() + DEADLINE_S, 10**12, exchange=bound)
     assert taken and found is not None and found[0] > 1
     assert len(found[1]) < cost
     res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
     check_plan(c.scene, c.spec, res.to_dict())
+
+
+def test_the_walks_squeeze_does_not_take_the_other_sides_plans_as_they_come(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the walk's side does not listen: its squeeze goes its own way (the bound process's
+    # plans are taken at the end of the run only)
+    _, problem, _, router, first = _cell(8, 2)
+    ctx = multiprocessing.get_context()
+    one, two = _Slot(ctx), _Slot(ctx)
+    walk, bound = _Exchange(problem, one, two, listen=False), _Exchange(problem, two, one)
+    bound.offer(1, first)
+    monkeypatch.setattr(anytime, "NEWS_EVERY", 1)
+    taken: list[bool] = []
+    real_news = _Exchange.news
+    monkeypatch.setattr(_Exchange, "news", lambda self: taken.append(True) or real_news(self))
+    found = _squeeze_paths(router, first, time.perf_counter() + DEADLINE_S, 10**12, exchange=walk)
+    assert found is not None and not taken
+    assert walk.news() == first  # (there all the same, for the end)
 
 
 def test_the_bound_process_waits_for_a_plan_only_until_its_deadline() -> None:
@@ -212,7 +231,7 @@ def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyP
         exchange.offer(shorter[0], handed)  # type: ignore[index]
 
     def more(problem: Problem, s: _Search, until: float, **kwargs: Any) -> Any:
-        assert kwargs["exchange"] is not None  # (the walk's side of the exchange)
+        assert not kwargs["exchange"].listen  # (the walk's side of the exchange)
         return anytime.construct(problem, s)
 
     monkeypatch.setattr(profile, "profile_bound", bound)
