@@ -83,7 +83,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # changed the grounder before its one measurement at the end of session 19; tuned on in session
 # 20), blind19 (written in session 20 by another engineer and committed alone, reviewed by a
 # second engineer, never opened by the engineer who changed the grounder before its one
-# measurement at the end of session 20; tests do not assert it).
+# measurement at the end of session 20; tuned on in session 21).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
