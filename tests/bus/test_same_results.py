@@ -18,7 +18,7 @@ from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
 from hltl.sim.events import load_events
 from hltl.world.scene import Scene
-from tests.bus.helpers import BusRun, Loopback, without_wall_clock
+from tests.bus.helpers import BusRun, Loopback, patient_foresight, without_wall_clock
 
 ROOT = Path(__file__).resolve().parents[2]
 EVENTS = ROOT / "examples" / "events"
@@ -507,14 +507,19 @@ def test_the_reset_is_answered_while_the_executor_goes_on(loopback: Loopback) ->
             cell.close()
 
 
-def test_an_update_that_halts_cuts_the_stretch_it_came_in(loopback: Loopback) -> None:
+def test_an_update_that_halts_cuts_the_stretch_it_came_in(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """An instruction does not end the node's stretch; when its update halts the hand-over it
     undoes (test_update_episodes), the ticks simulated after it are undone and the log is the
     in-process one (before, the stretch ended at the instruction: nothing was cut). Another
-    instruction, which halts nothing, is taken in with its stretch: nothing cut."""
+    instruction, which halts nothing, is taken in with its stretch: nothing cut. The node's
+    planner takes its time (a step it gave up foreseeing under load, past its 50 ms, was a
+    guess missed: 2 cuts in the second episode, session 20, at load 8)."""
     from hltl.sim.events import EventSchedule, Instruction
     from hltl.world.scene import load_scene
 
+    patient_foresight(monkeypatch)
     scene = load_scene(ROOT / "examples" / "scenes" / "two_arms.yaml")
     halting = _assert_same(
         loopback,

@@ -41,7 +41,6 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
-        "Any mug will do for Carol",
         # blind5 (tuned on in session 7): a remark naming a surface ("it's cluttering the
         # counter") could be asking for something there
         "Put the cup on the shelf, it's cluttering the counter",
@@ -257,7 +256,6 @@ KNOWN_MISSES = frozenset(
         "Bottle goes to Person A. And Person B, she gets the chips.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Person B first, with the bottle. After that, the apple for Person A.",
-        "Bottle for Person A. Chips for Person B. Sorry, in that order.",
         "Any of the pens will do for Sam.",
         "Put the tape on the belt, and the gloves too, both of them, ready for the next shift.",
         "Either mug's fine for Carol, the red or the blue, your call.",
@@ -278,7 +276,6 @@ KNOWN_MISSES = frozenset(
         "Bob gets the lot, just leave the two mugs where they are.",
         "Put everything that isn't a book on the desk.",
         "Jess wants the other spanner, not the big one on the workbench.",
-        "Apple to Person B. Not Person A, mind, Person B.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
@@ -287,6 +284,73 @@ KNOWN_MISSES = frozenset(
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
+        # blind19 (tuned on in session 21): kinds not met yet (docs/grounding.md, "Session 21"):
+        # greetings and asides taken for names or corrections, wants said through another
+        # ('Carol says she'd love'), passives, 'he'/'she' across clauses, fragments and run-ons,
+        # choice and count words ('Either cup will do', 'big or small', 'one to Kofi and one to
+        # Jess'), exclusions and negation, corrections with remarks, typos in a remark
+        "Chef, sorry, behind you... oh, it's the robot. Could you kindly give the salt to Mr "
+        "Novak? Thank you, sir.",
+        "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
+        "bottle. Thanks. Sorry Dave, go on.",
+        "Carol says she'd love the blue mug, oh, and Bob fancies the apple.",
+        "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
+        " chips, he wants those.",
+        "Honestly, the thing Person B has been after all morning is the bottle.",
+        "Priority is Person A, she needs the cup; once she's sorted, Person B would like the "
+        "apple.",
+        "The chips are wanted by Person A and the bottle by Person B.",
+        "Small box onto the conveyor first, please, and the medium one straight after.",
+        "Hand the cup over to Bob and do likewise for Carol with the chips.",
+        "You see that bottle next to you? Person A needs it, give it her.",
+        "Right. That hammer. Back on the workbench. Ta.",
+        "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
+        "as well thanks",
+        "okay so Person A's having the cup and the apple's going over to Person B off you go",
+        "okay listen the chips are for Person A the bottle's for Person B got it",
+        "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
+        "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
+        "Hand Jess a spanner, big or small, she's only tightening a bolt.",
+        "Either book can go on the desk, I just need one out for the lesson.",
+        "One of the smaller boxes onto the belt, the small or the medium, your pick.",
+        "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
+        "They both want something. Bottle over to Person A please, and cup across to Person B.",
+        "The apple can go to either person, I'm not bothered which of them.",
+        "Everyone gets one thing: the cup for Alice, the apple for Bob and the crisps for Carol.",
+        "Those two mugs want to go on the counter, please.",
+        "Drop all three of the pens into the box, they keep rolling off.",
+        "Load the three boxes onto the belt, small, medium and large.",
+        "Two spanners, one to Kofi and one to Jess.",
+        "Person B is moving desks, so every last one of the four items goes across to her.",
+        "Person A's having the pair, bottle and chips together.",
+        "Person B only needs a single bottle, just the one.",
+        "Jess needs some screws, give her the tin.",
+        "The white cup, not the green one, goes to Omar.",
+        "Sam's after a pen. Red's no good for forms, so one of the others.",
+        "Everything that's a box goes on the conveyor, except the big one, leave that on the "
+        "pallet.",
+        "Mr Novak wants a plate — the white one, mind, not the blue.",
+        "The blanket on the trolley stays there; Mrs Khan gets the other one.",
+        "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
+        "Bob doesn't want the bottle at all, it's the crisps he's after.",
+        "Alice doesn't want the crisps. The bottle's the one for her.",
+        "Person A will take anything at all as long as it isn't the cup.",
+        "Bob wants the cup. Sorry, my mistake, it's the apple he wants.",
+        "Sponge on the tray... actually no, sink's better, put it in the sink.",
+        "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
+        "Give Ava the red block, oh silly me, she wants the green one.",
+        "Person A gets the bottle, correction, Person A gets the chips, the bottle stays put.",
+        "Hand the chips to Person A, whoops, wrong one, I meant Person B.",
+        "Give Person B the apple and the cup, well, not the cup, just the apple.",
+        "Bottle on the shelf, no wait, to Alice.",
+        "Crisps to Bob, ah, not Bob, Alice.",
+        "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
+        " Person B first and the cup after.",
+        "chuck the blue pen in the box its cluttering my desk",
+        "grandpa's asking for the teddy, give it him",
+        "cup to person a first please and once shes got it the apple goes to person b",
+        "Lenq needs the salt for table four.",
+        "Alixe said she's peckish, the crisps are for her.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -316,9 +380,10 @@ KNOWN_MISSES = frozenset(
 # "blind18" written in session 19 by another engineer, reviewed by a second one, measured once
 # at the end of session 19, its wrong readings and refusals met by kind in session 20: asserted
 # now, the rest in KNOWN_MISSES; "blind19" written in session 20 by another engineer, reviewed
-# by a second one, measured once at the end of session 20; "blind20" written in session 21 by
+# by a second one, measured once at the end of session 20, its wrong readings and refusals met by
+# kind in session 21: asserted now, the rest in KNOWN_MISSES; "blind20" written in session 21 by
 # another engineer, reviewed by a second one, measured once at the end of session 21)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind19", "blind20"})
+MEASURED_ONLY: frozenset[str] = frozenset({"blind20"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

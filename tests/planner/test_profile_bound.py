@@ -519,7 +519,8 @@ def test_the_mip_bound_sees_what_the_lp_does_not() -> None:
 def test_the_climb_starts_from_the_mip_bound() -> None:
     # seed 299 again, as the bound's process beside the walk asks it (a plan of 2.8 s known):
     # LP 2.1 s, then the MIP's 2.8 s, which meets the plan: CP-SAT is asked nothing. With the
-    # LP alone the climb asks CP-SAT from 2.1 s up
+    # LP alone the climb asks CP-SAT from 2.1 s up. (Before the MIP, HiGHS's "no solution at
+    # this level" may tell a level or two more on the way: ``profile.FITS_QUESTIONS``.)
     inst = _random(299)
     assert inst is not None
     asked = {}
@@ -528,7 +529,7 @@ def test_the_climb_starts_from_the_mip_bound() -> None:
         res = _climb(Problem(*inst), 2.8, told, lp=True, mip=mip)
         assert res.ticks == to_ticks(2.8)
         assert told[0] == to_ticks(2.1) and told[-1] == to_ticks(2.8)
-        assert (told == [to_ticks(2.1), to_ticks(2.8)]) is mip
+        assert told == sorted(set(told))
         asked[mip] = res.questions
     assert asked[True] == 0 and asked[False] > 0
 

@@ -33,8 +33,8 @@ def _first(layout: str, n: int, seed: int) -> tuple[Problem, _Router, dict[int, 
     return problem, router, repair.ranked({gi: rt[0] for gi, rt in router.routes.items()})
 
 
-def _recount(rep: repair.Repair) -> tuple[int, int]:
-    """Clashes and weighted clashes counted again from the routes."""
+def _recount(rep: repair.Repair) -> tuple[int, int, list[int]]:
+    """Clashes, weighted clashes and the goals in a clash, counted again from the routes."""
     count: dict[tuple[int, int], int] = {}
     for _, cells, _ in rep.routes.values():
         for t, used in cells:
@@ -43,7 +43,12 @@ def _recount(rep: repair.Repair) -> tuple[int, int]:
                     count[(t, r)] = count.get((t, r), 0) + 1
     clashes = sum(n - 1 for n in count.values())
     weighted = sum((n - 1) * rep.weight[t][r] for (t, r), n in count.items())
-    return clashes, weighted
+    clashing = [
+        gi
+        for gi, (_, cells, _) in rep.routes.items()
+        if any(used >> r & 1 and count[(t, r)] > 1 for t, used in cells for r in range(32))
+    ]
+    return clashes, weighted, clashing
 
 
 @pytest.mark.parametrize(
@@ -55,7 +60,8 @@ def test_repair_squeezes_the_first_plan_into_fewer_steps_and_every_plan_is_valid
 ) -> None:
     # from the first prioritized plan (grid 8 x 8 seed 2: 16 steps, 9.2 s), a few hundred
     # moves take out steps one at a time; each plan without clashes passes the validator,
-    # and the clash counts kept move by move are the ones counted from the routes
+    # and the clash counts (and the goals in a clash) kept move by move are the ones counted
+    # from the routes
     c = delivery_cell(layout, n, seed)
     problem, router, paths = _first(layout, n, seed)
     rep = repair.Repair(
@@ -68,7 +74,7 @@ def test_repair_squeezes_the_first_plan_into_fewer_steps_and_every_plan_is_valid
         if rep.clashes:
             rep.step()
             if n <= 12 or move % 20 == 0:
-                assert _recount(rep) == (rep.clashes, rep.weighted)
+                assert _recount(rep) == (rep.clashes, rep.weighted, rep._clashing())
             continue
         steps = rep.steps()
         plan_ = router.replay(steps)

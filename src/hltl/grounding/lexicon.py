@@ -1616,11 +1616,25 @@ def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> 
     right, so it may be someone the scene does not have, and is not corrected (a slip of the
     first letter of a name is rare; "Zoey", "Alise", "Lenna" keep theirs). Nor is a name with a
     later letter changed that is an English first name ("Dina" for "Dana", "Lana" for "Lena",
-    "Mila" for "Mia"), unless it is the same name spelt another way (see _same_name)."""
+    "Mila" for "Mia"), unless it is the same name spelt another way (see _same_name), nor one
+    with a later letter typed for a letter far from it on the keyboard ("Noam" for "Noah"; a
+    role such as 'doctor' is no name: "docter" is read)."""
     if not any(r.kind == "human" for r, _, _ in entries) or not typed or not name:
         return False
     if typed[0] == name[0]:
-        return typed in first_names() and not _same_name(typed, name)
+        if typed in first_names() and not _same_name(typed, name):
+            return True
+        # "Noam" for "Noah": a letter typed for one far from it on the keyboard (not a slip of
+        # the finger, nor a letter that sounds the same) makes another name, from a language
+        # the list of English names lacks
+        diff = [k for k in range(len(name)) if len(typed) == len(name) and typed[k] != name[k]]
+        proper = any(r.kind == "human" and s[:1].isupper() for r, s, _ in entries)
+        return (
+            proper  # a name, not a role ('docter' is a slip for 'doctor')
+            and len(diff) == 1
+            and typed[diff[0]] not in _touching(name[diff[0]])
+            and not _same_name(typed, name)
+        )
     swapped = len(typed) == len(name) >= 2 and typed[:2] == name[1::-1]
     return not swapped
 
@@ -1715,6 +1729,24 @@ def _neighbours(c: str) -> frozenset[str]:
                 near |= {_ROWS[other][j] for j in (k - 1, k, k + 1) if 0 <= j < len(_ROWS[other])}
         return frozenset(near)
     return frozenset()
+
+
+_OFFSETS = (0.0, 0.25, 0.75)  # how far each row of keys starts to the right of the one above
+
+
+@functools.cache
+def _touching(c: str) -> frozenset[str]:
+    """The keys that touch ``c``'s on a QWERTY keyboard, rows staggered as they are ('h' touches
+    'y', 'u', 'g', 'j', 'b', 'n'; not 'm'): a narrower neighbourhood than _neighbours."""
+    at = {ch: (r, k + _OFFSETS[r]) for r, row in enumerate(_ROWS) for k, ch in enumerate(row)}
+    if c not in at:
+        return frozenset()
+    r, x = at[c]
+    return frozenset(
+        ch
+        for ch, (r2, x2) in at.items()
+        if ch != c and ((r2 == r and abs(x2 - x) == 1) or (abs(r2 - r) == 1 and abs(x2 - x) < 1))
+    )
 
 
 def slip_cost(typed: str, meant: str) -> float | None:

@@ -2235,13 +2235,16 @@ def _choice(text: str, lexicon: Lexicon) -> str:
     return _sub(r"\bthe only ([a-z]+(?: [a-z]+)?)\b", only, text)
 
 
-def _tasks_of(text: str, lexicon: Lexicon) -> set[tuple[str, str, str]] | None:
-    """The (kind, object, target) of every task the grammar reads in ``text``; None if refused."""
+def _tasks_of(
+    text: str, lexicon: Lexicon, *, normalise: bool = True
+) -> set[tuple[str, str, str]] | None:
+    """The (kind, object, target) of every task the grammar reads in ``text``; None if refused
+    (``normalise=False``: the grammar alone, without the rewrites)."""
     # why: offline.py imports this module, so the grammar is imported where it is used
     from hltl.grounding.offline import parse_instruction
 
     try:
-        node = parse_instruction(text, lexicon.scene, lexicon)
+        node = parse_instruction(text, lexicon.scene, lexicon, normalise=normalise)
     except GroundingError:
         return None
     return {(t.kind, t.obj, t.target) for t in tasks(node)}
@@ -4333,6 +4336,8 @@ def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
     plain = _THANKED.sub("thanks", sentence)
     plain = _rx(r"\bi'?m (?:only|just) [a-z]+ing\b").sub("i am", plain)
     plain = _rx(r"^(?:come|over) here\b").sub("", plain)
+    # "Postdoc here.", "Night porter here!": who speaks, said as a sentence of its own
+    plain = _rx(r"^((?:it's |this is )?[a-z]+(?: [a-z]+)?) here(?=\s*[.!]*$)").sub(r"\1", plain)
     return (
         bool(re.search(r"[a-z]", plain, _F))
         and not _SENTENCE_HELD.search(plain)
@@ -4387,7 +4392,8 @@ _COURTESY_FRAMES: tuple[tuple[str, str], ...] = (
     ),
     # "…, if that's alright (with you)", "…, if that's okay": asked kindly
     (
-        r",?\s*if that's (?:alright|all right|okay|ok|fine)(?: with you)?(?=\s*(?:[.!:]|$))",
+        r",?\s*if that's (?:alright|all right|okay|ok|fine)(?: with (?:you|you all|everyone|"
+        r"everybody|all of you))?(?=\s*(?:[.!:]|$))",
         "",
     ),
     (r",?\s*if you don't mind\s*(?=[,:])", ""),
@@ -5557,7 +5563,7 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     )
     out = _sub(
         rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive) {_X}"
-        r"(?:,? do you (?:think|reckon))?\s*\?$",
+        r"(?: from you)?(?:,? do you (?:think|reckon))?\s*\?$",
         asked,
         out,
     )
@@ -6434,8 +6440,8 @@ _ASKED20: tuple[tuple[str, str], ...] = (
     # "Could the banana go across to Emma, do you think?": after a polite question that asks
     # for something the tag asks nothing more ('Emma has it, do you think?' stays)
     (
-        r"^((?:could|can|would|will|might)\b.+?),\s*(?:do|d'|don't) ?you (?:think|reckon|"
-        r"suppose)\s*\?$",
+        r"((?:^|[,.!]\s*)(?:could|can|would|will|might|shall)\b.+?),\s*(?:do|d'|don't) ?you "
+        r"(?:think|reckon|suppose)\s*\?$",
         r"\1?",
     ),
     # "Is it possible that P gets X?", as 'is it okay if P gets X' is
@@ -6443,6 +6449,19 @@ _ASKED20: tuple[tuple[str, str], ...] = (
         r"^(?:sorry,? )?is it (?:possible|okay|ok|alright|all right|fine) (?:that|for) "
         r"([A-Za-z][\w ]*?) (?:gets|has|could have|can have|to get|to have) ",
         r"\1 gets ",
+    ),
+    # session 21: "Would it be possible for P to have X, and for Q to get Y?": P gets X, …
+    (
+        r"^(?:would|could|will) it be (?:possible|okay|ok|alright|all right) for ([A-Za-z][\w ]*?)"
+        r" to (?:have|get|receive) (.+?),? and for ([A-Za-z][\w ]*?) to (?:have|get|receive)"
+        r" (.+?)\s*\?$",
+        r"\1 gets \2 and \3 gets \4",
+    ),
+    # "You couldn't give P the X, could you?": could you give P the X?
+    (
+        r"^you (?:couldn't|could not|can't|cannot|wouldn't|would not) (.+?),\s*(could|can|would)"
+        r" you\s*\?$",
+        r"\2 you \1?",
     ),
     # "Is possible you give the gloves to Tom?"
     (r"^is (?:it )?possible (?:you|to|for you to) (?:just |please )*", ""),
@@ -6621,7 +6640,9 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
         kept, before = (head[: cut + 1], head[cut + 2 :]) if cut >= 0 else ("", head)
         if not before.strip() or re.search(r"\b(?:too|also|as well|instead of)\b", after, _F):
             continue
-        said = _tasks_of(before, lexicon)
+        if not _names(before, lexicon) or not _names(after, lexicon):
+            continue  # each side must name what it is about (cheap: no reading)
+        said = _tasks_of(before, lexicon, normalise=False) or _tasks_of(before, lexicon)
         objects = {obj for _, obj, _ in said or ()}
         if not said or any(o.startswith("?") for o in objects):
             continue
@@ -6629,10 +6650,136 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
             if len(objects) != 1:
                 continue
             after = _sub(r"\bit\b", f"the {_said(next(iter(objects)), lexicon)}", after)
-        again = _tasks_of(after, lexicon)
+        # the grammar alone first; the rewrites only where that is refused ('Bob. Chips to Bob.')
+        again = _tasks_of(after, lexicon, normalise=False) or _tasks_of(after, lexicon)
         if again is None or not objects <= {obj for _, obj, _ in again} or again == said:
             continue
         return f"{kept} {after}".strip()
+    return text
+
+
+_APOLOGY19 = re.compile(r"\b(?:excuse|pardon) me\s*$", _F)
+_BOTHER19 = r"(?:to|for) (?:bother|interrupt|trouble|disturb|butt in|barge in)|for (?:the|any) "
+_BOTHER19 += r"(?:bother|trouble|interruption|intrusion)|for (?:bothering|interrupting|troubling)"
+
+
+# a call said as a sentence of its own before the request: 'Porter coming through, sorry!',
+# 'Oh, aren't you clever.'
+_CALLS21 = re.compile(
+    r"^(?:(?:oh|ooh|well),? )?(?:(?:[a-z]+ )?coming through|mind your backs?|(?:aren't|isn't) "
+    r"(?:you|he|she) (?:clever|good|lovely|kind|a star|a treasure|a love|a gem|helpful|"
+    r"wonderful|brilliant|marvellous|a good (?:robot|boy|girl|helper)))(?:,? sorry)?\s*[.!]+\s*"
+    r"(?=[a-z])",
+    _F,
+)
+
+
+def _in_that_order21(text: str) -> str:
+    """'Crisps on the shelf. Bottle to Alice. In that order.': a closing sentence of 'in that
+    order' orders the sentences before it (each after the one before)."""
+    m = _rx(r"\s*(?:sorry,? |oh,? |and )?in (?:that|this) order\s*[.!]*$").search(text)
+    if m is None or m.start() == 0 or text[m.start() - 1] not in ".!":
+        return text
+    parts = re.split(r"(?<=[.!])\s+", text[: m.start()].strip())
+    if len(parts) < 2 or any(re.match(r"(?:then|after|before|first|next)\b", p, _F) for p in parts):
+        return text
+    return " Then ".join(p.rstrip(".! ") + "." for p in parts).replace(". Then ", ". Then ")
+
+
+_ATTENTION21 = re.compile(
+    r"^(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
+    r"(?:,? (?:(?:so )?sorry )?(?:to|for) (?:bother|interrupt|trouble|disturb)(?:ing)?(?: you)?)?"
+    r"\s*[,.!]\s*(?=[a-z])",
+    _F,
+)
+
+
+def _attention21(text: str, _lexicon: Lexicon) -> str:
+    """Session 21: 'Excuse me, sorry, …' opening the instruction asks for attention (its 'me' is
+    no recipient and its 'sorry' corrects nothing): taken off. Later in the instruction it is
+    left as it is (_corrections19 does not read it as a correction). A call of its own
+    ('Porter coming through!', 'Oh, aren't you clever.') likewise; a closing 'In that order.'
+    orders the sentences before it."""
+    return _in_that_order21(_CALLS21.sub("", _ATTENTION21.sub("", text)))
+
+
+_SPEAKER21: tuple[tuple[str, str], ...] = (
+    # "don't mind me", "never mind me", "ignore me": the speaker excusing themself
+    (r"(?:^|\s*,\s*)(?:(?:oh,? )?(?:don't|do not|never) mind me|ignore me)\s*(?=[,.!?]|$)", ""),
+    # "I would like to ask you, …", "Can I ask you for something? …": a request announced
+    (
+        r"(?:^|(?<=[.!?] ))(?:(?:i would|i'd) like to|can i|could i|may i|let me) ask(?: you)?"
+        r"(?: for)?(?: (?:something|a favou?r|a (?:quick|small) (?:thing|favou?r)|one thing))?"
+        r"\s*[,.?!:]\s*(?=[a-z])",
+        "",
+    ),
+    # "very kindly", "ever so gently": the manner word with its intensifier
+    (r"\b(?:very|so|ever so|most|really) (kindly|gently|quickly|carefully)\b", r"\1"),
+    # "Either cup will do for Dana.": either cup for Dana
+    (
+        r"^(either|any) ([a-z]+) (?:will do|would do|is fine|is okay|works) for "
+        r"([A-Z]\w*(?: [A-Z]\w*)?)(\s*[.!]?)$",  # one person
+        r"\1 \2 for \3\4",
+    ),
+    # "…, before I start on this socket": the speaker's own next step, after the request
+    (
+        r"\s*,?\s+before (?:i|we) (?:start|begin|get going|get started|crack on|head off|go|"
+        r"leave)(?: on| with)?(?: (?:this|the|my|our|that) [a-z]+)?(?=\s*[.!]?$)",
+        "",
+    ),
+)
+
+
+def _speaker21(text: str, _lexicon: Lexicon) -> str:
+    """Session 21: the speaker's remarks that ask nothing ('don't mind me', 'I would like to ask
+    you,', 'Can I ask you for something?', '…, before I start on this socket'); 'Either X will
+    do for P' (either X for P)."""
+    out = text
+    for pattern, repl in _SPEAKER21:
+        out = _sub(pattern, repl, out)
+    return out.strip(" ,") or text
+
+
+# a clause giving a reason after the request: its subject, then a verb
+_REASON21 = re.compile(
+    r"(?:\s*[,;]\s*|\s+[—–-]\s+|\s+(?=its [a-z]+ing\b))"
+    r"((?:(?:oh|and|cos|coz|cause|because|as|since)\s+)?"
+    r"(?:(?:she|he|it|they|we|i)(?:'s|'re|'ve|'ll|'d|'m| is| are| was| were| has| have| had| "
+    r"keeps?| will| can| just)|its [a-z]+ing|(?:her|his|their|my|our|the) [a-z]+(?:'s| is| are| "
+    r"was| were| has| keeps?)|table (?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)"
+    r"(?:'s| is| are))\b[^,.;!?—–]*?)\s*(?=[.!?]|$)",
+    _F,
+)
+# words a reason must not hold: what would change who gets what, or which one
+_REASON_HELD21 = re.compile(
+    r"\b(?:no|not|never|nothing|none|only|just the|too|also|as well|instead|rather|first|then|"
+    r"before|once|when|until|unless|if|one|ones|both|each|either|every|another|other|rest|same|"
+    r"give|hand|pass|bring|take|put|place|want|wants|wanted|need|needs|needed|like|likes|love|"
+    r"loves|fancy|fancies|prefer|prefers|keep it|leave|send|move|them|those|these|that|this|"
+    r"wrong|mean|meant|sorry|actually|mistake|change|swap|cancel|instead|him|for him|for her|"
+    r"mine|yours|hers|his own|her own)\b|n't\b",
+    _F,
+)
+
+
+def _reasons21(text: str, lexicon: Lexicon) -> str:
+    """Session 21: a reason said after the request, closing its sentence (', she's getting
+    chilly after her exercises', ', her bench is a mess', ', table six is waiting on their
+    mains', ' its cluttering my desk'): a clause of a subject (a pronoun, 'her X', 'table six')
+    and a verb that names nothing in the scene, no other name, and no word that could change who
+    gets what or which one: taken off, when the request before it names something."""
+    for m in reversed(list(_REASON21.finditer(text))):
+        clause = m.group(1)
+        before = text[: m.start()]
+        words = re.findall(r"[A-Za-z']+", clause)
+        if (
+            _REASON_HELD21.search(clause)
+            or any(w[0].isupper() and w != "I" and not w.startswith("I'") for w in words[1:])
+            or not _names_nothing(clause, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
     return text
 
 
@@ -6650,6 +6797,10 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]
+        if _APOLOGY19.search(before) or _rx(_BOTHER19).match(after):
+            # "Excuse me, sorry, I'm covering today", "sorry to bother": an apology for the
+            # interruption, not a correction of what was said before it
+            return text
         if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
             # "… and then, sorry, the chips to Person A": a pause after a conjunction
             return f"{before} {after}"
@@ -6861,6 +7012,14 @@ def _nothing_for20(text: str, lexicon: Lexicon) -> str:
     out = _sub(
         r"(?:^|(?<=[.;!?])\s*)(?P<keep>)(?:please )?(?:don't|do not) (?:give|hand|send) "
         r"(?:anything|any of (?:it|them)) to (?P<who>[A-Z][\w ]*?)\s*[;,.]\s*",
+        lambda m: drop(m, m.group("who"), "human"),
+        out,
+    )
+    # session 21: "Not Person A, Person B should get the cup.": the person said not to be the
+    # one, when named nowhere else
+    out = _sub(
+        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)not (?P<who>[A-Z][\w ]*?),\s*(?:mind,?\s*)?"
+        r"(?=(?-i:[A-Z]))(?!give|hand|pass|bring|put)",  # a name ('Not Bob, give …' stays)
         lambda m: drop(m, m.group("who"), "human"),
         out,
     )
@@ -7140,6 +7299,9 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _attention21,
+    _speaker21,
+    _reasons21,
     _restated20,
     _archaic19,
     _corrections19,

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import re
+import threading
 from dataclasses import dataclass, field
 from typing import Literal, cast
 
@@ -85,22 +86,65 @@ def parse_instruction(
     lexicon = lexicon or Lexicon.of(scene)
     if not normalise:
         return _parse(text, scene, lexicon, normalise=False)
+    inside = _inside()
+    if not inside:
+        lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
+    inside.append(text)  # a rewrite reading a part again keeps what was lexed so far
     try:
         return _parse(text, scene, lexicon, normalise=True)
     except GroundingError as refused:
         unclear = lexicon.unclear_typos(text)
         said = [r for ids in unclear.values() for r in ids if r in str(refused)]
+        if not unclear and not _readings(refused) and len(inside) == 1:
+            named = _unclear_names(text, lexicon)
+            if named:
+                # "Alice should get the mug. Not Alice, sorry, Carol.": refused for the
+                # correction, and 'the mug' could be either mug: the refusal says which
+                raise GroundingError(f"{refused}; {named}") from None
         if not unclear or said:
             raise
         # "Ava keeps pointing at the blokc, can she have it?": refused for another reason, but
         # the typo could mean either block, so the refusal says which objects it could mean
         more = "; ".join(f"{w!r} could mean {' or '.join(ids)}" for w, ids in unclear.items())
         raise GroundingError(f"{refused}; {more}") from None
+    finally:
+        inside.pop()
+
+
+_READING = threading.local()
+
+
+def _unclear_names(text: str, lexicon: Lexicon) -> str:
+    """What each definite singular name of ``text`` that fits several objects could mean
+    ("'mug' could mean mug_blue or mug_red"), '' when there is none (or the text is not lexed)."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    out: dict[str, list[str]] = {}
+    for before, it in itertools.pairwise(items):
+        ids = sorted({r.id for r in it.refs})
+        if (
+            it.kind == "ent"
+            and len(ids) > 1
+            and all(r.kind == "object" and not r.plural for r in it.refs)
+            and before.kind == "word"
+            and before.text.lower() in ("the", "that", "this", "your", "my")
+        ):
+            out.setdefault(it.text, ids)
+    return "; ".join(f"{w!r} could mean {' or '.join(ids)}" for w, ids in out.items())
+
+
+def _inside() -> list[str]:
+    """The instructions this thread is reading, outermost first (a rewrite reads parts of one
+    again)."""
+    if not hasattr(_READING, "texts"):
+        _READING.texts = []
+    return cast(list[str], _READING.texts)
 
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
         text = order_colons(apostrophes(text))
         cut = _CUT_OFF.search(text)
         if cut is not None:
@@ -108,6 +152,14 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             raise GroundingError(
                 f"{cut.group(1)!r} ends the instruction: it is cut off before what it names; "
                 "say the whole request"
+            )
+        later = _NOT_YET.search(text)
+        if later is not None:
+            # "Not yet, …: the bowl to Dana": the task is put off, as a deferring time word
+            # puts it off (session 20), whatever the words around it
+            raise GroundingError(
+                f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
+                "when it is to be done"
             )
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
@@ -164,6 +216,9 @@ _DEFERRED = re.compile(
     r"next week)\b",
     re.I,
 )
+
+
+_NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
 
 
 _CUT_OFF = re.compile(
@@ -372,6 +427,7 @@ class _Frag:
     it: bool = False
     target: _Target | None = None
     pick: bool = False  # only picks up the antecedent of a later 'it'
+    taken: int = -1  # the fragment whose 'it' / 'them' names these objects again
     antecedent: bool = False
     them: bool = False  # 'them': the objects of the clause before
     group: int = -1  # a choice ('a mug') shared with other fragments: distinct objects each
@@ -490,7 +546,8 @@ class _Parser:
             )
         result: _Raw | None = None
         final = False  # the first sentence opens with 'finally' / 'lastly'
-        for sent in sentences:
+        held: tuple[_Raw, str] | None = None  # objects said alone, then named by a pronoun
+        for n, sent in enumerate(sentences):
             body, conn = _leading_connector(sent)
             if not body:
                 raise GroundingError(f"no task in {_text(sent)!r}")
@@ -511,6 +568,13 @@ class _Parser:
                     "of its sentence, or use 'before'"
                 )
             node = self.sentence(body)
+            if held is not None:
+                # "B gets the bottle. Then the chips. Those are for A.": the objects said alone
+                # and the sentence giving them are one step, ordered as the first is said
+                node, conn, held = _RawGroup("and", [held[0], node]), held[1], None
+            elif n + 1 < len(sentences) and _picked_up(body, sentences[n + 1]):
+                held = (node, conn)
+                continue
             if result is None:
                 result = node
             elif conn == "prior":  # "… Before that, Y.": Y first
@@ -1076,7 +1140,7 @@ class _Parser:
                     raise GroundingError(f"{word!r} in {f.text!r} refers to nothing before it")
                 if not _waits_at(f):  # what a condition waits at was put there, not picked up
                     for g in self._antecedents(k):
-                        g.antecedent = True
+                        g.antecedent, g.taken = True, k
         for k, f in enumerate(frags):
             if f.same:
                 self._same(k, f)
@@ -1156,7 +1220,26 @@ class _Parser:
                     f"{self.lex.listing('surface')}"
                 )
             self._check_verb(f)
+        self._order_kept(raw)
         return self._build(raw)
+
+    def _order_kept(self, raw: _Raw) -> None:
+        """'B gets the bottle, then the chips. A gets those.': objects said alone in an order
+        ('then the chips') and given in a step said apart from it ('A gets those'): the order
+        would be lost with the objects said alone, so it is refused (a sentence of its own,
+        'Then the chips.', is one step with the sentence giving them: ``instruction``)."""
+        if isinstance(raw, _Frag):
+            return
+        if raw.op == "seq":
+            inside = _frags_of(raw)
+            for f in inside:
+                if f.pick and f.taken >= 0 and self.frags[f.taken] not in inside:
+                    raise GroundingError(
+                        f"{f.text!r} is put in order, and who gets it is said apart "
+                        f"({self.frags[f.taken].text!r}): say the order in the step that gives it"
+                    )
+        for child in raw.children:
+            self._order_kept(child)
 
     def _objects_from_right(self, k: int) -> _Frag | None:
         """Objects shared from the right: 'give A and B the cup', 'A and B want a mug'."""
@@ -1532,6 +1615,34 @@ def _order_carried(sentences: list[list[Item]]) -> list[list[Item]]:
         out.append([*carried, *sent])
         carried = []
     return out
+
+
+def _frags_of(raw: _Raw) -> list[_Frag]:
+    if isinstance(raw, _Frag):
+        return [raw]
+    return [f for child in raw.children for f in _frags_of(child)]
+
+
+def _picked_up(body: list[Item], after: list[Item]) -> bool:
+    """Whether ``body`` names objects alone (no person or place, no verb but 'pick up': 'Then
+    the chips.') and
+    the sentence ``after`` opens with no order word of its own and takes them up by a pronoun
+    ('Those are for A.', 'A gets them.')."""
+    names = [it for it in body if it.kind == "ent"]
+    alone = all(
+        (it.kind == "ent" and all(r.kind == "object" for r in it.refs))
+        or _is(it, ",", "and", "det", "filler")
+        or (_is_verb(it) and VERB_CLASS[_lemma(it)] == "pick")  # 'Then pick up the chips.'
+        for it in body
+    )
+    rest, conn = _leading_connector(after)
+    return (
+        bool(names)
+        and alone
+        and conn == "and"
+        and len(rest) == len(after)
+        and any(_is(it, "it", "them") for it in rest)
+    )
 
 
 def _only_fillers(items: list[Item]) -> bool:

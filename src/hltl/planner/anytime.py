@@ -7,12 +7,11 @@ import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from hltl.planner import lns, profile, repair, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
-from hltl.planner.relaxed import RelaxedGraph
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import _infeasible, _Search, plan_steps, search
 from hltl.spec.monitor import DONE
@@ -83,6 +82,13 @@ PROFILE_MIN_SECONDS = 1.0
 # on two cores the profile bound runs beside the walk (``_ProfileBeside``); at the deadline it
 # is waited for this much longer (its last CP-SAT solve ends at the deadline), then stopped
 BESIDE_GRACE = 0.2
+# ... and once its bound is final it squeezes plans too (``_plans_beside``): the walk's best
+# plan, handed over in shared memory (``_Slot``: at most SLOT_INSTANCES instances), with this
+# seed for its conflict repair (the walk's process uses ``repair.Repair``'s default); each
+# process looks for a shorter plan from the other every NEWS_EVERY repair moves
+BESIDE_SEED = 11
+SLOT_INSTANCES = 4096
+NEWS_EVERY = 64
 
 
 @dataclass(frozen=True, slots=True)
@@ -577,7 +583,14 @@ def plan_anytime(
                     # (repair where the profile bound runs: grid and random layouts; on
                     # 32-goal lines the walk's plans meet the pairs' bound within 0.5 %,
                     # and at 1 s its whole phase is needed: 1 s gaps 0.5 -> 6.2 % with it)
-                    cand = _more(problem, s, end, enough=lb, squeeze=profiled)
+                    cand = _more(
+                        problem,
+                        s,
+                        end,
+                        enough=lb,
+                        squeeze=profiled,
+                        exchange=None if beside is None else beside.exchange,
+                    )
                     if cand is not None and cand[0] < best[0]:
                         best = cand
                         note()
@@ -611,6 +624,11 @@ def plan_anytime(
         if beside is not None:
             # (not wanted when the plan already meets the bound: stopped at once)
             lb = max(lb, beside.finish(wanted=not good_enough()))
+            # (the plan it squeezed last, if the walk did not take it yet: replayed here)
+            theirs = beside.exchange.news()
+            found = None if theirs is None else replay(s, start, _steps_of(theirs))
+            if found is not None and best is not None and found[0] < best[0]:
+                best = found
             note()
     finally:
         if beside is not None:
@@ -657,9 +675,13 @@ class _ProfileBeside:
 
         ctx = multiprocessing.get_context("fork")
         self.conn, send = ctx.Pipe(duplex=False)
+        walks, squeezes = _Slot(ctx), _Slot(ctx)
+        # (the walk's plans out, the process's in; the process's exchange the other way round)
+        self.exchange = _Exchange(problem, walks, squeezes)
         self.proc = ctx.Process(
             target=_profile_child,
-            args=(send, problem, heur.graph, start, tgts, floor, upper, deadline),
+            args=(send, problem, s, start, tgts, floor, upper, deadline),
+            kwargs={"exchange": _Exchange(problem, squeezes, walks)},
             daemon=True,
         )
         self.proc.start()
@@ -694,19 +716,23 @@ class _ProfileBeside:
 def _profile_child(
     send: Connection,
     problem: Problem,
-    graph: RelaxedGraph,
+    s: _Search,
     start: Node,
     tgts: list[schedule.Target],
     floor: int,
     upper: int,
     deadline: float,
+    *,
+    exchange: _Exchange | None = None,
 ) -> None:
-    """The profile bound's process (``_ProfileBeside``): every level it proves is sent."""
+    """The profile bound's process (``_ProfileBeside``): every level it proves is sent; once
+    the bound is final (the relaxation solved at it), it squeezes the walk's plans handed
+    over by ``exchange`` until ``deadline`` (``_plans_beside``)."""
     try:
         if lns.available():
-            profile.profile_bound(
+            got = profile.profile_bound(
                 problem,
-                graph,
+                s.heuristic.graph,
                 start,
                 tgts,
                 floor=floor,
@@ -716,8 +742,116 @@ def _profile_child(
                 lp=True,
                 mip=True,
             )
+            if got.solved and exchange is not None:
+                _plans_beside(s, start, exchange, got.ticks, deadline)
     finally:
         send.close()
+
+
+def _plans_beside(
+    s: _Search, start: Node, exchange: _Exchange, bound: int, deadline: float
+) -> None:
+    """The bound's process, its bound final: the walk's best plan (``exchange.news``; waited
+    for) squeezed by conflict repair with its own seed (``BESIDE_SEED``) until ``deadline``,
+    each shorter plan handed back; again from the walk's next plan when it is shorter than
+    any found here. Stops at a plan that meets ``bound``."""
+    gls = goals(s, start)
+    if not gls:
+        return
+    router = _Router(s, start, gls)
+    while time.perf_counter() < deadline:
+        theirs = exchange.news()
+        if theirs is None:
+            time.sleep(0.02)
+            continue
+        found = _squeeze_paths(
+            router, repair.ranked(theirs), deadline, bound, seed=BESIDE_SEED, exchange=exchange
+        )
+        if found is not None and found[0] <= bound:
+            return
+
+
+class _Slot:
+    """The last plan one process hands the other (``_Exchange``), in shared memory, so that
+    the writer never waits for the reader: a version (0: none yet), its cost (ticks), and per
+    goal its path, as (goal, step, instance index) triples."""
+
+    def __init__(self, ctx: Any) -> None:
+        # (a ``multiprocessing`` context; the array has a lock of its own)
+        self.arr: Any = ctx.Array("q", 3 + 3 * SLOT_INSTANCES)
+
+    def put(self, cost: int, paths: dict[int, repair.Path]) -> None:
+        """Hand over a plan (not when it has more than ``SLOT_INSTANCES`` instances)."""
+        flat = [v for gi, path in paths.items() for t, inst in path for v in (gi, t, inst.index)]
+        if len(flat) > 3 * SLOT_INSTANCES:
+            return
+        with self.arr.get_lock():
+            self.arr[1] = cost
+            self.arr[2] = len(flat) // 3
+            self.arr[3 : 3 + len(flat)] = flat
+            self.arr[0] += 1
+
+    def head(self) -> tuple[int, int]:
+        """(version, cost) of the plan handed over last."""
+        with self.arr.get_lock():
+            return self.arr[0], self.arr[1]
+
+    def get(self, problem: Problem) -> tuple[int, int, dict[int, repair.Path]]:
+        """(version, cost, paths) of the plan handed over last (version 0: none)."""
+        with self.arr.get_lock():
+            version, cost, n = self.arr[0], self.arr[1], self.arr[2]
+            flat = self.arr[3 : 3 + 3 * n]
+        paths: dict[int, repair.Path] = {}
+        for k in range(0, len(flat), 3):
+            paths.setdefault(flat[k], []).append((flat[k + 1], problem.instances[flat[k + 2]]))
+        return version, cost, paths
+
+
+class _Exchange:
+    """Plans handed between the walk's process and the bound's (``_ProfileBeside``): each
+    offers its shorter plans into one ``_Slot`` and takes the other's from another when they
+    are shorter than any it has. Whoever takes a plan replays it through the monitors before
+    it counts."""
+
+    def __init__(self, problem: Problem, out: _Slot, into: _Slot) -> None:
+        self.problem = problem
+        self.out = out
+        self.into = into
+        self.best = math.inf  # the shortest plan (ticks) this side has offered or taken
+
+    def offer(self, cost: int, paths: dict[int, repair.Path]) -> None:
+        """A plan this side found, handed over when shorter than any it had."""
+        if cost < self.best:
+            self.best = cost
+            self.out.put(cost, paths)
+
+    def news(self) -> dict[int, repair.Path] | None:
+        """The other side's last plan when it is shorter than any this side has (taken:
+        this side has it from now on); None otherwise."""
+        version, cost = self.into.head()
+        if version == 0 or cost >= self.best:
+            return None
+        _, cost, paths = self.into.get(self.problem)
+        self.best = min(self.best, cost)
+        return paths
+
+
+def _paths_of(routes: dict[int, _Route]) -> dict[int, repair.Path]:
+    """Per goal its route's path, with the steps no route acts in taken out."""
+    return repair.ranked({gi: rt[0] for gi, rt in routes.items()})
+
+
+def _steps_of(paths: dict[int, repair.Path]) -> list[list[Instance]]:
+    """The steps of a plan given as per-goal paths (steps counted from 0, none empty)."""
+    acts = sorted((t, inst.index, inst) for path in paths.values() for t, inst in path)
+    out: list[list[Instance]] = []
+    last = -1
+    for t, _, inst in acts:
+        if t != last:
+            out.append([])
+            last = t
+        out[-1].append(inst)
+    return out
 
 
 def _schedule_at_start(
@@ -1042,6 +1176,7 @@ def _more(
     enough: float = -math.inf,
     rounds: int | None = None,
     squeeze: bool = False,
+    exchange: _Exchange | None = None,
 ) -> _Found | None:
     """More plans until ``until``: a walk over priority orders, each new order followed by
     large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
@@ -1054,7 +1189,8 @@ def _more(
     plan does not depend on the machine's speed (``until`` only as a safety net). With
     ``squeeze``, on cells of more than ``CP_UP_TO`` goals the walk stops after
     ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
-    steps until ``until`` (``_squeezed``)."""
+    steps until ``until`` (``_squeezed``). With ``exchange``, each shorter plan is offered to
+    the bound's process, and the squeeze takes that process's shorter plans."""
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -1092,6 +1228,11 @@ def _more(
             best = found
             if routes is not None:
                 best_routes = routes
+                if exchange is not None:
+                    exchange.offer(found[0], _paths_of(routes))
+
+    if best is not None and exchange is not None:
+        exchange.offer(best[0], _paths_of(best_routes))
 
     took = 0.0  # how long the last round (an order and its moves) took
     while True:
@@ -1107,7 +1248,7 @@ def _more(
         if now + took >= walk_until:
             if squeeze and best is not None:
                 squeeze = False
-                better(_squeezed(walk.router, best_routes, until, enough))
+                better(_squeezed(walk.router, best_routes, until, enough, exchange=exchange))
                 walk_until = until
                 continue
             if not joint or best is None:
@@ -1130,12 +1271,34 @@ def _more(
 
 
 def _squeezed(
-    router: _Router, routes: dict[int, _Route], until: float, enough: float = -math.inf
+    router: _Router,
+    routes: dict[int, _Route],
+    until: float,
+    enough: float = -math.inf,
+    *,
+    exchange: _Exchange | None = None,
 ) -> _Found | None:
     """The plan of ``routes`` in fewer steps, by conflict repair (``repair.Repair``) until
     ``until``: squeezed into one step fewer, repaired, and again from each plan found, every
     one replayed through the monitors. The shortest plan found (None: none); stops once it is
-    no longer than ``enough`` (a lower bound: it is optimal)."""
+    no longer than ``enough`` (a lower bound: it is optimal). ``exchange``: see
+    ``_squeeze_paths``."""
+    return _squeeze_paths(router, _paths_of(routes), until, enough, exchange=exchange)
+
+
+def _squeeze_paths(
+    router: _Router,
+    paths: dict[int, repair.Path],
+    until: float,
+    enough: float = -math.inf,
+    *,
+    seed: int = 5,
+    exchange: _Exchange | None = None,
+) -> _Found | None:
+    """``_squeezed`` from per-goal paths (steps counted from 0, none empty), its repair with
+    ``seed``. With ``exchange`` each shorter plan is offered to the other process, and every
+    ``NEWS_EVERY`` moves a shorter plan from it is taken: replayed through the monitors, then
+    squeezed instead."""
     p = router.p
     node = router.node
     gone = 0
@@ -1143,12 +1306,25 @@ def _squeezed(
         r = p.code_holder.get(code)
         if r is not None and o not in router.targets:
             gone |= 1 << r  # holds an object nobody asked for: out of play
-    rep = repair.Repair(p, node[0], [g.obj for g in router.goals], router.fires, router.alive, gone)
-    paths = repair.ranked({gi: rt[0] for gi, rt in routes.items()})
+    rep = repair.Repair(
+        p, node[0], [g.obj for g in router.goals], router.fires, router.alive, gone, seed=seed
+    )
     best: _Found | None = None
     if not rep.squeeze(paths, repair.length(paths) - 1):
         return None
+    moves = 0
     while time.perf_counter() < until:
+        moves += 1
+        theirs = None if exchange is None or moves % NEWS_EVERY else exchange.news()
+        if theirs is not None:
+            found = router.replay(_steps_of(theirs))
+            if found is not None and (best is None or found[0] < best[0]):
+                best = found
+                if found[0] <= enough:
+                    break
+                if not rep.squeeze(theirs, repair.length(theirs) - 1):
+                    break
+            continue
         if rep.clashes:
             rep.step()
             continue
@@ -1157,9 +1333,11 @@ def _squeezed(
             break
         if best is None or found[0] < best[0]:
             best = found
+        paths = rep.paths()
+        if exchange is not None:
+            exchange.offer(found[0], paths)
         if found[0] <= enough:
             break
-        paths = rep.paths()
         if not rep.squeeze(paths, repair.length(paths) - 1):
             break
     return best

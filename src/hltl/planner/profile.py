@@ -31,6 +31,17 @@ LP_SLACK = 0.01
 # the MIP after the LP (``profile_bound``'s ``mip``) stops this many seconds before the deadline:
 # HiGHS may overrun its time limit a little, and the bound's process is stopped soon after it
 MIP_MARGIN = 0.25
+# ... and first, where the robots that hand over to each other form a bipartite graph
+# (``_bipartite``: grids), HiGHS looks for a relaxed solution at the bound for at most
+# FITS_SECONDS (``_Linear.fits``), up to FITS_QUESTIONS times: one there makes that bound
+# final, and "none" proves one time unit more. 32 x 32 grids 0 and 2: a solution at the LP's
+# bound in 1.1 and 3.3 s; grids 3 and 4: "no" in 2.0 and 1.8 s, then grid 3 a solution in
+# 1.1 s; the MIP found them only after 6-8 s. Not on random layouts: their handovers close odd
+# cycles, which the LP misses and the MIP's cut rounds find (docs/planner.md, "Session 20"),
+# so there the MIP raises the bound sooner than questions (each "no" 0.6-3.0 s), and a
+# question first cost random seed 2 its last rise (10.5 -> 10.2 s)
+FITS_SECONDS = 3.5
+FITS_QUESTIONS = 2
 _HUGE = 1 << 60  # a row's bound beyond this is none
 
 
@@ -180,6 +191,34 @@ class _Linear:
         units = math.ceil(dual - LP_SLACK)
         return units * self.unit, res.fun is not None and units >= round(res.fun)
 
+    def fits(self, units: int, deadline: float) -> bool | None:
+        """Whether the model (every variable integral) has a solution of makespan at most
+        ``units`` time units: True when HiGHS found one, False when it proved there is none
+        (then every plan the model covers is longer), None when it could not tell before
+        ``deadline`` (``time.perf_counter()``). A question without an objective: HiGHS's
+        heuristics look for a solution, and no cut rounds raise a bound first."""
+        import numpy as np  # why: the LP's solver is optional (scipy), loaded on first use
+        from scipy.optimize import Bounds, LinearConstraint, milp
+
+        left = deadline - time.perf_counter()
+        if left <= 0:
+            return None
+        res = milp(
+            np.zeros(len(self.cost)),
+            integrality=np.ones(len(self.cost)),
+            constraints=[
+                LinearConstraint(self.rows, self.low, self.high),
+                LinearConstraint(np.asarray(self.cost)[None, :], -np.inf, units),
+            ],
+            bounds=Bounds(self.lo, self.hi),
+            options={"time_limit": left},
+        )
+        if res.status == 0:
+            return True
+        if res.status == 2:
+            return False
+        return None
+
     def _mip_told(
         self, left: float, on_bound: Callable[[int], None]
     ) -> tuple[tuple[int, bool] | None] | None:
@@ -236,6 +275,44 @@ class _Linear:
         units = math.ceil(dual - LP_SLACK)
         found = info.primal_solution_status == highs.SolutionStatus.kSolutionStatusFeasible
         return ((units * self.unit, found and units >= round(info.objective_function_value)),)
+
+
+def _streams() -> bool:
+    """HiGHS's own interface in scipy, with the MIP callback ``_Linear._mip_told`` uses, is
+    there (it is private to scipy: else ``milp``, which tells the bound only at its end)."""
+    try:
+        from scipy.optimize._highspy import _core as highs
+
+        return highs.cb.HighsCallbackType.kCallbackMipInterrupt is not None
+    except (ImportError, AttributeError):
+        return False
+
+
+def _bipartite(problem: Problem) -> bool:
+    """Whether the robots, joined where an instance has two executors (a handover), form a
+    bipartite graph (no odd cycle of handovers)."""
+    side: dict[int, int] = {}
+    near: dict[int, set[int]] = {}
+    for inst in problem.instances:
+        if inst.executors.bit_count() == 2:
+            low = inst.executors & -inst.executors
+            a, b = low.bit_length() - 1, (inst.executors ^ low).bit_length() - 1
+            near.setdefault(a, set()).add(b)
+            near.setdefault(b, set()).add(a)
+    for root in near:
+        if root in side:
+            continue
+        side[root] = 0
+        todo = [root]
+        while todo:
+            r = todo.pop()
+            for q in near[r]:
+                if q not in side:
+                    side[q] = 1 - side[r]
+                    todo.append(q)
+                elif side[q] == side[r]:
+                    return False
+    return True
 
 
 def _linear(
@@ -497,10 +574,15 @@ def profile_bound(
     next level gets all the time left). ``on_proven`` is told each bound (ticks) as it is
     proved. Never below ``floor``. With ``lp`` (and ``upper`` and scipy), the climb starts
     from the LP bound at ``upper`` (``lp_bound``: every plan no longer than ``upper``, the
-    optimum among them, is at least that long). With ``mip`` too, the same model with every
-    variable integral is then given to HiGHS until ``MIP_MARGIN`` before ``deadline``, each rise
-    of its dual bound told to ``on_proven`` as HiGHS proves it (``_Linear.solve``'s
-    ``on_bound``), and the climb goes on from the bound it proved."""
+    optimum among them, is at least that long). With ``mip`` too, where handovers close no odd
+    cycle (``_bipartite``), HiGHS is asked for a solution of the model (every variable
+    integral) at that bound, for at most ``FITS_SECONDS`` (``_Linear.fits``): one ends the run
+    there, the bound final (``solved``); "none" proves a time unit more, and the next unit is
+    asked (at most ``FITS_QUESTIONS`` questions). Then (no solution found) the model is given
+    to HiGHS to minimise until ``MIP_MARGIN`` before ``deadline``, each rise of its dual bound
+    told to ``on_proven`` as HiGHS proves it (``_Linear.solve``'s ``on_bound``); solved to
+    optimality, that ends the run too (``solved``); else the climb goes on from the bound it
+    proved."""
     if not tgts:
         return ProfileBound(floor, False, 0)
     unit = time_unit(problem)
@@ -515,11 +597,27 @@ def profile_bound(
                     on_proven(max(floor, proven * unit))
 
         linear = _linear(problem, graph, node, tgts, upper, deadline)
-        for integral in (False, True) if mip else (False,):
-            until = deadline - MIP_MARGIN if integral else deadline
-            got = None if linear is None else linear.solve(until, integral=integral, on_bound=told)
+        asks = FITS_QUESTIONS if mip and _bipartite(problem) else 0
+        # (the MIP's first dual bound is the LP's, or above it: where the MIP comes next and
+        # tells its bound as it rises, the LP alone is not solved first)
+        lp_first = not mip or asks > 0 or not _streams()
+        got = None if linear is None or not lp_first else linear.solve(deadline, integral=False)
+        if got is not None:
+            told(got[0])
+        if mip and linear is not None:
+            until = deadline - MIP_MARGIN
+            fits: bool | None = False
+            for _ in range(asks):
+                fits = linear.fits(proven, min(until, time.perf_counter() + FITS_SECONDS))
+                if fits is not False:
+                    break
+                told((proven + 1) * unit)
+            got = None if fits else linear.solve(until, integral=True, on_bound=told)
             if got is not None:
                 told(got[0])
+            if fits or (got is not None and got[1]):
+                # (a relaxed solution at the bound: no level above it can be ruled out)
+                return ProfileBound(max(floor, proven * unit), True, 0)
     # the least level known (or feared) to have a relaxed solution: a plan's makespan has one
     cap = math.inf if upper is None else upper // unit
     cap_solved = upper is not None

@@ -11,13 +11,16 @@ from hltl.planner.problem import Instance, Problem
 Path = list[tuple[int, Instance]]
 # a goal's route here: its path, its (step, robots used) cells, the step its atom happens in
 Routed = tuple[Path, list[tuple[int, int]], int]
+# an instance from a place: its post, robots used (with the holder), their count, the fewest
+# instances from its post to the goal's atom (0 when it fires), whether it fires, the instance
+Arc = tuple[int, int, int, int, bool, Instance]
 
 # the cost of one clash against one robot-step (clashes first, robot-steps to break ties)
 CLASH = 1 << 16
 # goals taken out per repair move: the clashing one and up to this many more
 REPAIR_MORE = (1, 1, 2, 2, 3)
 # repair moves without fewer clashes before the clashing cells weigh more
-STUCK = 50
+STUCK = 20
 
 
 class Repair:
@@ -46,12 +49,16 @@ class Repair:
         self.n = len(fires)
         # per goal and place: the fewest instances from there to one that fires (its atom)
         self.left = [self._fewest(gi, alive[gi]) for gi in range(self.n)]
+        self.arcs = [self._arcs(gi) for gi in range(self.n)]
         self.routes: dict[int, Routed] = {}
         self.T = 0
         self.count: list[list[int]] = []
         self.occ: list[int] = []
         self.weight: list[list[int]] = []  # per step and robot, what a clash there costs
         self.heavy: list[int] = []  # per step, the robots whose clashes cost more than 1
+        self.multi: list[int] = []  # per step, the robots used more than once
+        # per step, what clashes on heavy robots cost beyond 1 each (by the robots' mask)
+        self.extra: list[dict[int, int]] = []
         self.clashes = 0  # cells used twice, counted once per extra use
         self.weighted = 0  # the same, each counted at its weight
         self.stuck = 0  # moves since the clashes last fell
@@ -83,6 +90,32 @@ class Repair:
                         changed = True
         return dist
 
+    def _arcs(self, gi: int) -> list[tuple[int, list[Arc]]]:
+        """Per place: its holder's bit (-1: a place nothing may use) and the goal's instances
+        from there as (post, robots used, their count, fewest instances after it, whether it
+        fires, the instance), those of robots out of play left out."""
+        p = self.p
+        left = self.left[gi]
+        fires = self.fires[gi]
+        out: list[tuple[int, list[Arc]]] = []
+        for loc in range(len(p.locs)):
+            h = p.code_holder.get(loc)
+            hb = 0 if h is None else 1 << h
+            if hb & self.gone:
+                out.append((-1, []))
+                continue
+            arcs: list[Arc] = []
+            for inst in p.by_obj_pre[self.objs[gi]][loc]:
+                used = inst.executors | hb
+                if used & self.gone:
+                    continue
+                fire = inst.index in fires
+                arcs.append(
+                    (inst.post, used, used.bit_count(), 0 if fire else left[inst.post], fire, inst)
+                )
+            out.append((hb, arcs))
+        return out
+
     # --- the usage table -------------------------------------------------------------------
 
     def _reset(self, T: int) -> None:
@@ -91,6 +124,8 @@ class Repair:
         self.occ = [0] * T
         self.weight = [[1] * len(self.p.robots) for _ in range(T)]
         self.heavy = [0] * T
+        self.multi = [0] * T
+        self.extra = [{} for _ in range(T)]
         self.clashes = 0
         self.weighted = 0
         for rt in self.routes.values():
@@ -106,6 +141,7 @@ class Repair:
                 if row[r]:
                     self.clashes += 1
                     self.weighted += self.weight[t][r]
+                    self.multi[t] |= low
                 row[r] += 1
                 used ^= low
 
@@ -119,6 +155,8 @@ class Repair:
                 if row[r]:
                     self.clashes -= 1
                     self.weighted -= self.weight[t][r]
+                    if row[r] == 1:
+                        self.multi[t] &= ~low
                 else:
                     self.occ[t] &= ~low
                 used ^= low
@@ -128,58 +166,65 @@ class Repair:
     def route(self, gi: int) -> Routed | None:
         """The goal's route inside the horizon with the fewest clashes with the routes in the
         table (then the fewest robot-steps, then the earliest atom); None: none at all."""
-        p = self.p
         T = self.T
-        holder = p.code_holder
         left = self.left[gi]
-        fires = self.fires[gi]
-        gone = self.gone
+        arcs = self.arcs[gi]
         occ = self.occ
         weight = self.weight
         heavy = self.heavy
         start = self.start[self._obj(gi)]
         if left[start] > T:
             return None
-        by_pre = p.by_obj_pre[self._obj(gi)]
-        back: dict[tuple[int, int], tuple[int, Instance | None, int]] = {}
+        # per step, per place: where from, by which instance (None: waited), robots used
+        back: list[dict[int, tuple[int, Instance | None, int]]] = [{} for _ in range(T + 1)]
         frontier = {start: 0}
         done: tuple[int, int, int, Instance, int] | None = None  # cost, step, place, inst, used
+        bound = 1 << 62  # done's cost
         for t in range(T):
             busy = occ[t]
             w = weight[t]
             hw = heavy[t]
+            extra = self.extra[t]
+            slack = T - t - 1  # steps left after this one
             nxt: dict[int, int] = {}
+            back_next = back[t + 1]
             for loc, cost in frontier.items():
-                if done is not None and cost >= done[0]:
+                if cost >= bound:
                     continue
-                h = holder.get(loc)
-                hb = 0 if h is None else 1 << h
-                if hb & gone:
+                hb, out = arcs[loc]
+                if hb < 0:
                     continue
-                for inst in by_pre[loc]:
-                    used = inst.executors | hb
-                    if used & gone:
+                for post, used, n, after, fire, inst in out:
+                    if after > slack:
                         continue
-                    c = cost + used.bit_count()
+                    c = cost + n
                     over = used & busy
                     if over:
                         c += CLASH * over.bit_count()
                         if over & hw:  # (most cells weigh 1: their bits are not summed)
-                            c += CLASH * sum(w[r] - 1 for r in _bits(over & hw))
-                    if inst.index in fires:
-                        if done is None or c < done[0]:
+                            key = over & hw
+                            more = extra.get(key)
+                            if more is None:
+                                more = extra[key] = CLASH * sum(w[r] - 1 for r in _bits(key))
+                            c += more
+                    if c + after >= bound:  # (each instance left uses a robot)
+                        continue
+                    if fire:
+                        if c < bound:
                             done = (c, t, loc, inst, used)
+                            bound = c
                         continue
-                    if t + 1 + left[inst.post] > T:
-                        continue
-                    if c < nxt.get(inst.post, 1 << 62):
-                        nxt[inst.post] = c
-                        back[(inst.post, t + 1)] = (loc, inst, used)
-                if t + 1 + left[loc] <= T:
-                    c = cost + (CLASH * w[h] + 1 if hb & busy else 1) if h is not None else cost
+                    if c < nxt.get(post, 1 << 62):
+                        nxt[post] = c
+                        back_next[post] = (loc, inst, used)
+                if left[loc] <= slack:
+                    if hb:
+                        c = cost + (CLASH * w[hb.bit_length() - 1] + 1 if hb & busy else 1)
+                    else:
+                        c = cost
                     if c < nxt.get(loc, 1 << 62):
                         nxt[loc] = c
-                        back[(loc, t + 1)] = (loc, None, hb)
+                        back_next[loc] = (loc, None, hb)
             frontier = nxt
         if done is None:
             return None
@@ -188,7 +233,7 @@ class Repair:
         cells: list[tuple[int, int]] = [(t_end, used_last)]
         cur, ct = loc, t_end
         while ct > 0:
-            prev, act, used = back[(cur, ct)]
+            prev, act, used = back[ct][cur]
             ct -= 1
             if act is not None:
                 path.append((ct, act))
@@ -275,6 +320,8 @@ class Repair:
             new[gi] = rt
             self.routes[gi] = rt
             self._add(rt)
+            if self.weighted > before:  # (more routes only add clashes: given up)
+                break
         if len(new) == len(out) and self.weighted <= before:
             self._progress()
             return
@@ -304,16 +351,11 @@ class Repair:
                     self.weight[t][r] += 1
                     self.heavy[t] |= 1 << r
                     self.weighted += n - 1
+                    self.extra[t].clear()
 
     def _clashing(self) -> list[int]:
-        out = []
-        for gi, rt in self.routes.items():
-            for t, used in rt[1]:
-                row = self.count[t]
-                if any(row[r] > 1 for r in _bits(used)):
-                    out.append(gi)
-                    break
-        return out
+        multi = self.multi
+        return [gi for gi, rt in self.routes.items() if any(used & multi[t] for t, used in rt[1])]
 
     def steps(self) -> list[list[Instance]]:
         """The routes as a plan's steps (empty steps dropped)."""
