@@ -83,7 +83,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # changed the grounder before its one measurement at the end of session 19; tuned on in session
 # 20), blind19 (written in session 20 by another engineer and committed alone, reviewed by a
 # second engineer, never opened by the engineer who changed the grounder before its one
-# measurement at the end of session 20; tuned on in session 21).
+# measurement at the end of session 20; tuned on in session 21), blind20 (written in session 21
+# by another engineer and committed alone, reviewed by a second engineer, never opened by the
+# engineer who changed the grounder before its one measurement at the end of session 21; tests
+# do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -120,6 +123,7 @@ PARTS = (
     "causes19",
     "blind18",
     "blind19",
+    "blind20",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
