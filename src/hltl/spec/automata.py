@@ -6,9 +6,6 @@ import hashlib
 import json
 import os
 import re
-import shutil
-import subprocess
-import tempfile
 import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from collections.abc import Set as AbstractSet
@@ -328,6 +325,11 @@ def mona_program(canonical: Formula) -> str:
 
 
 def _run_mona(program: str, mona: str, timeout: float, shown: str) -> str:
+    # (imported here: a warm disk cache runs no MONA, and these are ~8 ms of start-up)
+    import shutil
+    import subprocess
+    import tempfile
+
     exe = shutil.which(mona)
     if exe is None:
         raise BackendUnavailableError(

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from hltl.errors import SpecSyntaxError
 from hltl.fileio import quote
@@ -11,7 +12,6 @@ from hltl.spec.syntax import (
     Always,
     And,
     Atom,
-    Binary,
     Equiv,
     Eventually,
     FalseF,
@@ -22,7 +22,6 @@ from hltl.spec.syntax import (
     Or,
     Release,
     TrueF,
-    Unary,
     Until,
     WeakNext,
 )
@@ -42,19 +41,21 @@ MAX_FORMULA_DEPTH = 100
 # of `hltl plan`'s start-up, docs/benchmarks.md "Start-up").
 _SPACE = re.compile(r"\s*")
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_PREFIX_WORDS: dict[str, type[Unary]] = {
+_Prefix = Callable[[Formula], Formula]
+_Infix = Callable[[Formula, Formula], Formula]
+_PREFIX_WORDS: dict[str, _Prefix] = {
     "X": Next,
     "WX": WeakNext,
     "F": Eventually,
     "G": Always,
 }
-_PREFIX_SIGNS: tuple[tuple[str, type[Unary]], ...] = (
+_PREFIX_SIGNS: tuple[tuple[str, _Prefix], ...] = (
     ("!", Not),
     ("<>", Eventually),
     ("[]", Always),
 )
 # binary operators, loosest first: (sign, level, class); a longer sign before its prefix
-_BINARY: tuple[tuple[str, int, type[Binary]], ...] = (
+_BINARY: tuple[tuple[str, int, _Infix], ...] = (
     ("<->", 0, Equiv),
     ("->", 1, Implies),
     ("||", 2, Or),
@@ -76,7 +77,7 @@ class _Reader:
     """Precedence climbing over ``text``; each result comes with the depth of lark's parse tree
     for it (a group in parentheses is a level there), which ``MAX_FORMULA_DEPTH`` bounds."""
 
-    __slots__ = ("text", "pos", "nest")
+    __slots__ = ("nest", "pos", "text")
 
     def __init__(self, text: str) -> None:
         self.text = text
@@ -112,7 +113,7 @@ class _Reader:
         self.nest -= 1
         return left, depth
 
-    def _operator(self) -> tuple[str, int, type[Binary]] | None:
+    def _operator(self) -> tuple[str, int, _Infix] | None:
         pos = self._skip()
         text = self.text
         for op in _BINARY:
@@ -121,7 +122,7 @@ class _Reader:
         return None
 
     def _unary(self) -> tuple[Formula, int]:
-        ops: list[type[Unary]] = []
+        ops: list[_Prefix] = []
         text = self.text
         while True:
             pos = self._skip()
