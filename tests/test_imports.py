@@ -75,14 +75,16 @@ def test_planning_a_small_cell_imports_no_heavy_module() -> None:
 def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) -> None:
     # `hltl plan --spec FILE` on a small scene (docs/benchmarks.md, "Start-up"): no grounder,
     # no lark (a valid formula is read by the hand-written parser), no MONA helpers (the DFA
-    # comes from the disk cache), and, once the files were read before, no PyYAML
+    # comes from the disk cache), no thread pool (concurrent.futures, logging: no task is
+    # given to one on a small cell), and, once the files were read before, no PyYAML
     code = (
         "import contextlib, io, sys\n"
         "from hltl.cli.main import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"
         "    code = main(['plan', '--scene', 'examples/scenes/two_arms.yaml',\n"
         "                 '--spec', 'examples/specs/fig1.yaml'])\n"
-        "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'numpy',\n"
+        "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'concurrent',\n"
+        "            'logging', 'numpy',\n"
         "            'scipy', 'pandas') + " + repr(HEAVY) + "\n"
         "print(code, sorted(m for m in sys.modules if m.split('.')[0] in unwanted\n"
         "                   or m.startswith('hltl.grounding')))\n"
