@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 HEAVY = ("torch", "openai", "mujoco", "matplotlib", "ortools", "llama_cpp", "sympy")
 
 
@@ -84,7 +86,7 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
         "    code = main(['plan', '--scene', 'examples/scenes/two_arms.yaml',\n"
         "                 '--spec', 'examples/specs/fig1.yaml'])\n"
         "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'concurrent',\n"
-        "            'logging', 'numpy',\n"
+        "            'logging', 'shutil', 'numpy',\n"
         "            'scipy', 'pandas') + " + repr(HEAVY) + "\n"
         "print(code, sorted(m for m in sys.modules if m.split('.')[0] in unwanted\n"
         "                   or m.startswith('hltl.grounding')))\n"
@@ -97,3 +99,22 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
         for _ in range(2)
     ]
     assert runs[1] == "0 []", runs
+
+
+@pytest.mark.parametrize("columns", [None, "40", "132", "0", "-3", "wide"])
+def test_the_help_width_is_the_one_shutil_gives(
+    columns: str | None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # argparse sizes help with shutil.get_terminal_size(); hltl's parsers ask the same without
+    # importing shutil (tests/test_imports.py: `hltl plan` imports no shutil)
+    import shutil
+
+    import hltl.cli.main as m
+
+    if columns is None:
+        monkeypatch.delenv("COLUMNS", raising=False)
+    else:
+        monkeypatch.setenv("COLUMNS", columns)
+    assert m._columns() == shutil.get_terminal_size().columns
+    parser = m.build_parser()
+    assert parser._get_formatter()._width == shutil.get_terminal_size().columns - 2
