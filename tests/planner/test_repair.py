@@ -173,7 +173,10 @@ def test_each_route_has_the_fewest_weighted_clashes_then_robot_steps(
     # (and the same routes when each instance's robots are summed from its mask, the form of
     # instances of more than two robots)
     masks = [
-        [(hb, hr, [(*a[:5], -1, a[4].executors | max(hb, 0)) for a in out]) for hb, hr, out in per]
+        [
+            (hb, hr, [[(*a[:5], -1, a[4].executors | max(hb, 0)) for a in out] for out in by_left])
+            for hb, hr, by_left in per
+        ]
         for per in rep.arcs
     ]
     for gi in range(len(gls)):

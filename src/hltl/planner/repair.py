@@ -21,6 +21,8 @@ Arc = tuple[int, int, int, bool, Instance, int, int]
 CLASH = 1 << 16
 # goals taken out per repair move: the clashing one and up to this many more
 REPAIR_MORE = (1, 1, 2, 2, 3)
+# the fewest instances to a goal's atom from a place where it cannot happen
+UNREACHED = 1 << 30
 # repair moves without fewer clashes before the clashing cells weigh more
 STUCK = 20
 
@@ -69,8 +71,7 @@ class Repair:
     def _fewest(self, gi: int, alive: Sequence[bool]) -> list[int]:
         """Fewest instances from each place to the goal's atom (ignoring other routes)."""
         p = self.p
-        big = 1 << 30
-        dist = [big] * len(p.locs)
+        dist = [UNREACHED] * len(p.locs)
         fires = self.fires[gi]
         by_pre = p.by_obj_pre[self.objs[gi]]
         # Bellman-Ford over places (few places, few instances each)
@@ -92,20 +93,21 @@ class Repair:
                         changed = True
         return dist
 
-    def _arcs(self, gi: int) -> list[tuple[int, int, list[Arc]]]:
+    def _arcs(self, gi: int) -> list[tuple[int, int, list[list[Arc]]]]:
         """Per place: its holder's bit (-1: a place nothing may use), the holder's index (past
         the last robot when none), and the goal's instances from there (``Arc``), those of
-        robots out of play left out."""
+        robots out of play left out, by the steps left after them: entry ``k`` has those
+        with at most ``k`` instances after them, the last entry all of them."""
         p = self.p
         none = len(p.robots)
         left = self.left[gi]
         fires = self.fires[gi]
-        out: list[tuple[int, int, list[Arc]]] = []
+        out: list[tuple[int, int, list[list[Arc]]]] = []
         for loc in range(len(p.locs)):
             h = p.code_holder.get(loc)
             hb = 0 if h is None else 1 << h
             if hb & self.gone:
-                out.append((-1, none, []))
+                out.append((-1, none, [[]]))
                 continue
             arcs: list[Arc] = []
             for inst in p.by_obj_pre[self.objs[gi]][loc]:
@@ -116,8 +118,12 @@ class Repair:
                 rs = _bits(used)
                 r1, r2 = (-1, used) if len(rs) > 2 else [*rs, none, none][:2]
                 after = 0 if fire else left[inst.post]
+                if after >= UNREACHED:  # (its atom cannot happen from there)
+                    continue
                 arcs.append((inst.post, len(rs), after, fire, inst, r1, r2))
-            out.append((hb, none if h is None else h, arcs))
+            most = max((a[2] for a in arcs), default=0)
+            by_left = [[a for a in arcs if a[2] <= k] for k in range(most + 1)]
+            out.append((hb, none if h is None else h, by_left))
         return out
 
     # --- the usage table -------------------------------------------------------------------
@@ -201,12 +207,11 @@ class Repair:
                 cost = costs[loc]
                 if cost >= bound:
                     continue
-                hb, hr, out = arcs[loc]
+                hb, hr, by_left = arcs[loc]
                 if hb < 0:
                     continue
+                out = by_left[slack] if slack < len(by_left) else by_left[-1]
                 for post, n, after, fire, inst, r1, r2 in out:
-                    if after > slack:
-                        continue
                     if r1 >= 0:
                         c = cost + n + rc[r1] + rc[r2]
                     else:  # (more than two robots)
