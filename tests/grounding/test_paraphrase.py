@@ -325,7 +325,6 @@ KNOWN_MISSES = frozenset(
         "Person A's having the pair, bottle and chips together.",
         "Person B only needs a single bottle, just the one.",
         "Jess needs some screws, give her the tin.",
-        "The white cup, not the green one, goes to Omar.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
         "Everything that's a box goes on the conveyor, except the big one, leave that on the "
         "pallet.",
