@@ -146,7 +146,7 @@ def test_the_speakers_remarks_and_asides_ask_nothing(scene: Scene, k: int, frame
         "I've come for the {o}. {r}.",
         "My boots are filthy so leave it. {r}.",
         "I'm the farmer, not that one. {r}.",
-        "I'm next, then. {r}.",
+        "I'm the farmer, the {o} is for me. {r}.",
     ]
 )
 def test_a_remark_that_could_ask_for_something_is_not_taken_off(
