@@ -1259,6 +1259,8 @@ class Lexicon:
         self._lexed: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
+        # the normaliser's rewrite of each text (or its refusal), by rewrite, for this instruction
+        self.rewrites: dict[tuple[str, str], object] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
         self._own: frozenset[str] = frozenset()
@@ -1377,6 +1379,7 @@ class Lexicon:
         """Drop the texts lexed so far (called when a new instruction starts)."""
         self._lexed.clear()
         self.readings.clear()
+        self.rewrites.clear()
 
     def lexed(self, text: str) -> tuple[Item, ...] | None:
         return self._lexed.get(text)

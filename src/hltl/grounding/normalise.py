@@ -40,10 +40,13 @@ from __future__ import annotations
 
 import functools
 import itertools
-import re
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
+
+# re's functions behind a word gate (gate.py): a pattern is not run on a text lacking every word
+# a match of it must contain, and compiled patterns are kept past re's own cache
+from hltl.grounding import gate as re
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     TITLES,
@@ -68,10 +71,7 @@ _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
 def canonical(text: str, lexicon: Lexicon) -> str:
     """``text`` rewritten by every mechanism in turn (each returns its input where it does not
     apply or cannot rewrite exactly)."""
-    out = " ".join(text.split())
-    for step in _STEPS:
-        out = step(out, lexicon)
-    return out
+    return _rewritten("canonical", _STEPS, text, lexicon)
 
 
 def canonical19(text: str, lexicon: Lexicon) -> str:
@@ -85,9 +85,30 @@ def canonical19(text: str, lexicon: Lexicon) -> str:
 def rewritten19(text: str, lexicon: Lexicon) -> str:
     """``text`` rewritten by the session-19 mechanisms alone (read first: when that reads, the
     other rewrites need not run again)."""
+    return _rewritten("rewritten19", _STEPS19, text, lexicon)
+
+
+def _rewritten(
+    name: str, steps: tuple[Callable[[str, Lexicon], str], ...], text: str, lexicon: Lexicon
+) -> str:
+    """``text`` through ``steps`` in turn, once per instruction: the grounder tries
+    ``rewritten19``, ``canonical`` and ``canonical19`` in turn, and the last runs both of the
+    others again on the same text (``lexicon.rewrites`` keeps each result, or its refusal,
+    until the next instruction)."""
     out = " ".join(text.split())
-    for step in _STEPS19:
-        out = step(out, lexicon)
+    key = (name, out)
+    known = lexicon.rewrites.get(key)
+    if isinstance(known, GroundingError):
+        raise GroundingError(str(known))
+    if isinstance(known, str):
+        return known
+    try:
+        for step in steps:
+            out = step(out, lexicon)
+    except GroundingError as refused:
+        lexicon.rewrites[key] = refused
+        raise
+    lexicon.rewrites[key] = out
     return out
 
 
@@ -126,6 +147,8 @@ def _rx(pattern: str) -> re.Pattern[str]:
 
 
 def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
+    if not re.may_match(pattern, _F, text):
+        return text  # no match is possible: what sub returns for none
     return _rx(pattern).sub(repl, text)
 
 
