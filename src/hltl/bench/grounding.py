@@ -85,8 +85,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # second engineer, never opened by the engineer who changed the grounder before its one
 # measurement at the end of session 20; tuned on in session 21), blind20 (written in session 21
 # by another engineer and committed alone, reviewed by a second engineer, never opened by the
-# engineer who changed the grounder before its one measurement at the end of session 21; tests
-# do not assert it).
+# engineer who changed the grounder before its one measurement at the end of session 21; tuned
+# on in session 22).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
