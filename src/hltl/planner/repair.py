@@ -175,20 +175,29 @@ class Repair:
         start = self.start[self._obj(gi)]
         if left[start] > T:
             return None
+        big = 1 << 62
+        n_locs = len(arcs)
         # per step, per place: where from, by which instance (None: waited), robots used
-        back: list[dict[int, tuple[int, Instance | None, int]]] = [{} for _ in range(T + 1)]
-        frontier = {start: 0}
+        back: list[list[tuple[int, Instance | None, int] | None]] = [[]] * (T + 1)
+        # the places reached, in the order first reached (ties go to the first), and their costs
+        # (lists indexed by place: cheaper than dictionaries in this, the repair's inner loop)
+        order = [start]
+        costs = [big] * n_locs
+        costs[start] = 0
         done: tuple[int, int, int, Instance, int] | None = None  # cost, step, place, inst, used
-        bound = 1 << 62  # done's cost
+        bound = big  # done's cost
         for t in range(T):
             busy = occ[t]
             w = weight[t]
             hw = heavy[t]
             extra = self.extra[t]
             slack = T - t - 1  # steps left after this one
-            nxt: dict[int, int] = {}
-            back_next = back[t + 1]
-            for loc, cost in frontier.items():
+            nxt = [big] * n_locs
+            reached: list[int] = []
+            back_next: list[tuple[int, Instance | None, int] | None] = [None] * n_locs
+            back[t + 1] = back_next
+            for loc in order:
+                cost = costs[loc]
                 if cost >= bound:
                     continue
                 hb, out = arcs[loc]
@@ -214,7 +223,10 @@ class Repair:
                             done = (c, t, loc, inst, used)
                             bound = c
                         continue
-                    if c < nxt.get(post, 1 << 62):
+                    was = nxt[post]
+                    if c < was:
+                        if was == big:
+                            reached.append(post)
                         nxt[post] = c
                         back_next[post] = (loc, inst, used)
                 if left[loc] <= slack:
@@ -222,10 +234,14 @@ class Repair:
                         c = cost + (CLASH * w[hb.bit_length() - 1] + 1 if hb & busy else 1)
                     else:
                         c = cost
-                    if c < nxt.get(loc, 1 << 62):
+                    was = nxt[loc]
+                    if c < was:
+                        if was == big:
+                            reached.append(loc)
                         nxt[loc] = c
                         back_next[loc] = (loc, None, hb)
-            frontier = nxt
+            order = reached
+            costs = nxt
         if done is None:
             return None
         _, t_end, loc, last, used_last = done
@@ -233,7 +249,9 @@ class Repair:
         cells: list[tuple[int, int]] = [(t_end, used_last)]
         cur, ct = loc, t_end
         while ct > 0:
-            prev, act, used = back[ct][cur]
+            came = back[ct][cur]
+            assert came is not None  # (every place reached has where it came from)
+            prev, act, used = came
             ct -= 1
             if act is not None:
                 path.append((ct, act))
