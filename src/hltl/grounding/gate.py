@@ -6,7 +6,7 @@
 # itself (re's own parser), so a new rule is gated without anything said about it; where no such
 # words can be derived (a pattern that can match without any fixed word) it always runs. The text
 # is checked lower-cased for a case-blind pattern, and only when it is ASCII (re folds a few
-# other letters onto ASCII ones: 'K' Kelvin, 'ſ' long s), else the pattern runs.
+# other letters onto ASCII ones: 'ſ', the long s, is an 's'), else the pattern runs.
 #
 # Compiled patterns are also kept in a cache larger than re's own (512): the normaliser's
 # patterns overflowed it, and every overflow recompiled a pattern on its next use.
@@ -115,14 +115,42 @@ def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
     return _needed(parsed, fold), fold
 
 
+_Gate = tuple[tuple[str, ...], bool] | None
+_GATES: dict[tuple[str, int], _Gate] = {}
+_ONCE: set[tuple[str, int]] = set()
+
+
+def _gate(pattern: str, flags: int) -> _Gate:
+    """The words ``pattern`` needs and whether they are lower-cased, or None (always run). A
+    pattern met the first time runs ungated: many are built from the text at hand and never met
+    again, and deriving their words would cost more than running them."""
+    key = (pattern, flags)
+    if key not in _ONCE:
+        if len(_ONCE) > 16384:
+            _ONCE.clear()
+        _ONCE.add(key)
+        return None
+    words, fold = required(pattern, flags)
+    gate = None if words is None else (tuple(sorted(words)), fold)
+    if len(_GATES) > 16384:
+        _GATES.clear()
+    _GATES[key] = gate
+    return gate
+
+
 def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
-    words, fold = required(pattern, flags)
-    if words is None or not text.isascii():
+    key = (pattern, flags)
+    gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
+    if gate is None or not text.isascii():
         return True
+    words, fold = gate
     if fold:
         text = text.lower()
-    return any(w in text for w in words)
+    for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more, ~600 times an instruction
+        if word in text:
+            return True
+    return False
 
 
 @functools.lru_cache(maxsize=16384)
