@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
+from pathlib import Path
+
+import pytest
 
 HEAVY = ("torch", "openai", "mujoco", "matplotlib", "ortools", "llama_cpp", "sympy")
 
@@ -68,3 +72,49 @@ def test_planning_a_small_cell_imports_no_heavy_module() -> None:
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == ""
+
+
+def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) -> None:
+    # `hltl plan --spec FILE` on a small scene (docs/benchmarks.md, "Start-up"): no grounder,
+    # no lark (a valid formula is read by the hand-written parser), no MONA helpers (the DFA
+    # comes from the disk cache), no thread pool (concurrent.futures, logging: no task is
+    # given to one on a small cell), and, once the files were read before, no PyYAML
+    code = (
+        "import contextlib, io, sys\n"
+        "from hltl.cli.main import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        "    code = main(['plan', '--scene', 'examples/scenes/two_arms.yaml',\n"
+        "                 '--spec', 'examples/specs/fig1.yaml'])\n"
+        "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'concurrent',\n"
+        "            'logging', 'shutil', 'numpy',\n"
+        "            'scipy', 'pandas') + " + repr(HEAVY) + "\n"
+        "print(code, sorted(m for m in sys.modules if m.split('.')[0] in unwanted\n"
+        "                   or m.startswith('hltl.grounding')))\n"
+    )
+    env = {**os.environ, "HLTL_CACHE_DIR": str(tmp_path)}
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
+        ).stdout.strip()
+        for _ in range(2)
+    ]
+    assert runs[1] == "0 []", runs
+
+
+@pytest.mark.parametrize("columns", [None, "40", "132", "0", "-3", "wide"])
+def test_the_help_width_is_the_one_shutil_gives(
+    columns: str | None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # argparse sizes help with shutil.get_terminal_size(); hltl's parsers ask the same without
+    # importing shutil (tests/test_imports.py: `hltl plan` imports no shutil)
+    import shutil
+
+    import hltl.cli.main as m
+
+    if columns is None:
+        monkeypatch.delenv("COLUMNS", raising=False)
+    else:
+        monkeypatch.setenv("COLUMNS", columns)
+    assert m._columns() == shutil.get_terminal_size().columns
+    parser = m.build_parser()
+    assert parser._get_formatter()._width == shutil.get_terminal_size().columns - 2

@@ -2,18 +2,21 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import re
 import reprlib
+import threading
 from collections.abc import Callable
 from pathlib import Path
-from typing import IO, Any
-
-import yaml
-from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
+from typing import IO, TYPE_CHECKING, Any
 
 from hltl.errors import HltlError, OutputError
+
+if TYPE_CHECKING:
+    import yaml
+    from yaml.nodes import Node
 
 # Scenes, specs and events are a few kilobytes; a megabyte-sized one is a mistake or an attack,
 # and everything downstream (messages, the planner) scales with it. Logs grow with the episode.
@@ -100,9 +103,11 @@ def load_data(text: str, source: str, error: ErrorType, *, as_json: bool) -> Any
     """
     if as_json:
         return _load_json(text, source, error)
-    loader: _StrictLoader | None = None
+    import yaml  # (imported here: ~15 ms of start-up, and a cached file needs none, load_file)
+
+    loader: yaml.SafeLoader | None = None
     try:
-        loader = _StrictLoader(text)  # reads (and may refuse) the first characters already
+        loader = _strict_loader()(text)  # reads (and may refuse) the first characters already
         return loader.get_single_data()
     except _Refused as exc:
         raise error(f"{source}: {exc}") from None
@@ -114,10 +119,81 @@ def load_data(text: str, source: str, error: ErrorType, *, as_json: bool) -> Any
 
 
 def load_file(path: str | Path, what: str, error: ErrorType, limit: int = MAX_INPUT_BYTES) -> Any:
-    """:func:`read_text` then :func:`load_data` (JSON for ``.json`` files, else YAML)."""
+    """:func:`read_text` then :func:`load_data` (JSON for ``.json`` files, else YAML).
+
+    A YAML file read before is read from its JSON copy in ``cache_dir("yaml")`` (keyed by the
+    text), which neither imports nor runs PyYAML: :func:`yaml_cached`.
+    """
     p = Path(path)
     text = read_text(p, what, error, limit)
-    return load_data(text, str(p), error, as_json=p.suffix.lower() == ".json")
+    if p.suffix.lower() == ".json":
+        return load_data(text, str(p), error, as_json=True)
+    return yaml_cached(text, str(p), error)
+
+
+# A cached file's data must be what the YAML loader gives for its text: the key names this
+# format and hashes this module's own source (a change to the loader's rules starts afresh).
+YAML_CACHE_FORMAT = 1
+# Scenes and specs are a few kilobytes; a large YAML text is read as usual, not stored.
+YAML_CACHE_MAX_CHARS = 64 << 10
+_own_source: bytes | None = None
+
+
+def yaml_cached(text: str, source: str, error: ErrorType) -> Any:
+    """:func:`load_data` of a YAML ``text``, kept as JSON in ``cache_dir("yaml")``: a text read
+    before (by any process) is read back with ``json`` (a tenth of a millisecond against ~15 ms
+    to import PyYAML and ~3 ms to parse a scene). Only data JSON gives back unchanged is kept:
+    maps with string keys, lists, strings, numbers, booleans and null, without a shared part
+    (an alias); errors are never kept, so a refused text is refused again with its message.
+    """
+    global _own_source
+    folder = cache_dir("yaml")
+    if folder is None or len(text) > YAML_CACHE_MAX_CHARS:
+        return load_data(text, source, error, as_json=False)
+    if _own_source is None:
+        try:
+            _own_source = Path(__file__).read_bytes()
+        except OSError:
+            return load_data(text, source, error, as_json=False)
+    digest = hashlib.sha256(_own_source)
+    digest.update(f"\n{YAML_CACHE_FORMAT}\n{text}".encode())
+    path = folder / f"{digest.hexdigest()}.json"
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        pass  # not kept yet (or damaged: read and kept again)
+    data = load_data(text, source, error, as_json=False)
+    if _json_exact(data):
+        tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            tmp.write_text(json.dumps(data), encoding="utf-8")
+            os.replace(tmp, path)  # atomic: another process never reads half a file
+        except (OSError, ValueError):
+            tmp.unlink(missing_ok=True)  # a read-only cache only costs the next read the parse
+    return data
+
+
+def _json_exact(data: Any) -> bool:
+    """Whether ``json.loads(json.dumps(data)) == data`` with the same types, no part shared."""
+    seen: set[int] = set()
+    stack = [data]
+    while stack:
+        x = stack.pop()
+        t = type(x)
+        if t is dict:
+            if id(x) in seen or any(type(k) is not str for k in x):
+                return False
+            seen.add(id(x))
+            stack.extend(x.values())
+        elif t is list:
+            if id(x) in seen:
+                return False
+            seen.add(id(x))
+            stack.extend(x)
+        elif t not in (str, int, float, bool, type(None)):
+            return False
+    return True
 
 
 def open_output(path: str | Path, what: str) -> IO[str]:
@@ -206,97 +282,113 @@ def _max_bracket_depth(text: str) -> int:
 
 # -- strict YAML -----------------------------------------------------------------------------------
 
-# YAML 1.2's float syntax (JSON's, plus .inf/.nan): PyYAML follows YAML 1.1, which needs a dot
-# and a signed exponent, so it reads "1.0e300" and "1e3" as strings.
-_FLOAT_12 = re.compile(
-    r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
-    |[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
-    |\.[0-9_]+(?:[eE][-+]?[0-9]+)?
-    |[-+]?\.(?:inf|Inf|INF)
-    |\.(?:nan|NaN|NAN))$""",
-    re.X,
-)
+_loader_lock = threading.Lock()
+_loader: type[yaml.SafeLoader] | None = None
 
 
-class _StrictLoader(yaml.SafeLoader):
-    """SafeLoader that refuses duplicate keys, alias bombs and deep nesting."""
+def _strict_loader() -> type[yaml.SafeLoader]:
+    """SafeLoader that refuses duplicate keys, alias bombs and deep nesting, with YAML 1.2's
+    floats (built on first use: PyYAML is imported only to read a YAML text)."""
+    global _loader
+    with _loader_lock:
+        if _loader is None:
+            _loader = _build_strict_loader()
+        return _loader
 
-    def __init__(self, stream: str) -> None:
-        super().__init__(stream)
-        self._budget = MAX_YAML_NODES
-        self._depth = 0
-        self._sizes: dict[int, int] = {}
 
-    def compose_node(self, parent: Node | None, index: Any) -> Node | None:
-        alias = self.check_event(yaml.AliasEvent)
-        self._depth += 1
-        try:
-            if self._depth > MAX_NESTING:
-                raise _Refused(f"nested more than {MAX_NESTING} levels deep")
-            node = super().compose_node(parent, index)
-        finally:
-            self._depth -= 1
-        # an alias costs as many nodes as it expands to; anything else costs one
-        self._budget -= self._size(node) if alias and node is not None else 1
-        if self._budget < 0:
-            raise _Refused(
-                f"the document expands to more than {MAX_YAML_NODES:,} values (through "
-                "anchors and aliases); write it out or make it smaller"
-            )
-        return node
+def _build_strict_loader() -> type[yaml.SafeLoader]:
+    import yaml
+    from yaml.nodes import MappingNode, ScalarNode, SequenceNode
 
-    def _size(self, node: Node) -> int:
-        # iterative and memoised: an alias tree shares its sub-nodes
-        key = id(node)
-        if key in self._sizes:
-            return self._sizes[key]
-        stack: list[tuple[Node, bool]] = [(node, False)]
-        while stack:
-            cur, ready = stack.pop()
-            if id(cur) in self._sizes:
-                continue
-            kids = _children(cur)
-            if ready:
-                total = 1 + sum(self._sizes.get(id(k), 1) for k in kids)
-                self._sizes[id(cur)] = min(total, MAX_YAML_NODES + 1)
-                continue
-            stack.append((cur, True))
-            stack.extend((k, False) for k in kids if id(k) not in self._sizes)
-        return self._sizes[key]
+    # YAML 1.2's float syntax (JSON's, plus .inf/.nan): PyYAML follows YAML 1.1, which needs a dot
+    # and a signed exponent, so it reads "1.0e300" and "1e3" as strings.
+    float_12 = re.compile(
+        r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
+        |[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
+        |\.[0-9_]+(?:[eE][-+]?[0-9]+)?
+        |[-+]?\.(?:inf|Inf|INF)
+        |\.(?:nan|NaN|NAN))$""",
+        re.X,
+    )
 
-    def construct_mapping(self, node: MappingNode, deep: bool = False) -> dict[Any, Any]:
-        seen: set[Any] = set()
-        for key_node, _ in node.value:
-            if isinstance(key_node, ScalarNode) and key_node.tag != "tag:yaml.org,2002:merge":
-                key = self.construct_object(key_node, deep=deep)
-                try:
-                    fresh = key not in seen
-                    seen.add(key)
-                except TypeError:
+    def _children(node: Node) -> list[Node]:
+        if isinstance(node, SequenceNode):
+            return list(node.value)
+        if isinstance(node, MappingNode):
+            return [n for pair in node.value for n in pair]
+        return []
+
+    class _StrictLoader(yaml.SafeLoader):
+        """SafeLoader that refuses duplicate keys, alias bombs and deep nesting."""
+
+        def __init__(self, stream: str) -> None:
+            super().__init__(stream)
+            self._budget = MAX_YAML_NODES
+            self._depth = 0
+            self._sizes: dict[int, int] = {}
+
+        def compose_node(self, parent: Node | None, index: Any) -> Node | None:
+            alias = self.check_event(yaml.AliasEvent)
+            self._depth += 1
+            try:
+                if self._depth > MAX_NESTING:
+                    raise _Refused(f"nested more than {MAX_NESTING} levels deep")
+                node = super().compose_node(parent, index)
+            finally:
+                self._depth -= 1
+            # an alias costs as many nodes as it expands to; anything else costs one
+            self._budget -= self._size(node) if alias and node is not None else 1
+            if self._budget < 0:
+                raise _Refused(
+                    f"the document expands to more than {MAX_YAML_NODES:,} values (through "
+                    "anchors and aliases); write it out or make it smaller"
+                )
+            return node
+
+        def _size(self, node: Node) -> int:
+            # iterative and memoised: an alias tree shares its sub-nodes
+            key = id(node)
+            if key in self._sizes:
+                return self._sizes[key]
+            stack: list[tuple[Node, bool]] = [(node, False)]
+            while stack:
+                cur, ready = stack.pop()
+                if id(cur) in self._sizes:
                     continue
-                if not fresh:
-                    mark = key_node.start_mark
-                    raise _Refused(
-                        f"duplicate key {quote(key)} at line {mark.line + 1}; each key may "
-                        "appear once (the second would silently replace the first)"
-                    )
-        return super().construct_mapping(node, deep=deep)
+                kids = _children(cur)
+                if ready:
+                    total = 1 + sum(self._sizes.get(id(k), 1) for k in kids)
+                    self._sizes[id(cur)] = min(total, MAX_YAML_NODES + 1)
+                    continue
+                stack.append((cur, True))
+                stack.extend((k, False) for k in kids if id(k) not in self._sizes)
+            return self._sizes[key]
 
+        def construct_mapping(self, node: MappingNode, deep: bool = False) -> dict[Any, Any]:
+            seen: set[Any] = set()
+            for key_node, _ in node.value:
+                if isinstance(key_node, ScalarNode) and key_node.tag != "tag:yaml.org,2002:merge":
+                    key = self.construct_object(key_node, deep=deep)
+                    try:
+                        fresh = key not in seen
+                        seen.add(key)
+                    except TypeError:
+                        continue
+                    if not fresh:
+                        mark = key_node.start_mark
+                        raise _Refused(
+                            f"duplicate key {quote(key)} at line {mark.line + 1}; each key may "
+                            "appear once (the second would silently replace the first)"
+                        )
+            return super().construct_mapping(node, deep=deep)
 
-# the float resolver of YAML 1.1 replaced by 1.2's (copies: SafeLoader's own lists stay as they are)
-_StrictLoader.yaml_implicit_resolvers = {
-    key: [(tag, rx) for tag, rx in value if tag != "tag:yaml.org,2002:float"]
-    for key, value in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-_StrictLoader.add_implicit_resolver("tag:yaml.org,2002:float", _FLOAT_12, list("-+0123456789."))
-
-
-def _children(node: Node) -> list[Node]:
-    if isinstance(node, SequenceNode):
-        return list(node.value)
-    if isinstance(node, MappingNode):
-        return [n for pair in node.value for n in pair]
-    return []
+    # the float resolver of YAML 1.1 replaced by 1.2's (copies: SafeLoader's own lists stay)
+    _StrictLoader.yaml_implicit_resolvers = {
+        key: [(tag, rx) for tag, rx in value if tag != "tag:yaml.org,2002:float"]
+        for key, value in yaml.SafeLoader.yaml_implicit_resolvers.items()
+    }
+    _StrictLoader.add_implicit_resolver("tag:yaml.org,2002:float", float_12, list("-+0123456789."))
+    return _StrictLoader
 
 
 def _bounded_yaml_error(exc: yaml.YAMLError) -> str:

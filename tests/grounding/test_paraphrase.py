@@ -325,7 +325,6 @@ KNOWN_MISSES = frozenset(
         "Person A's having the pair, bottle and chips together.",
         "Person B only needs a single bottle, just the one.",
         "Jess needs some screws, give her the tin.",
-        "The white cup, not the green one, goes to Omar.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
         "Everything that's a box goes on the conveyor, except the big one, leave that on the "
         "pallet.",
@@ -351,6 +350,75 @@ KNOWN_MISSES = frozenset(
         "cup to person a first please and once shes got it the apple goes to person b",
         "Lenq needs the salt for table four.",
         "Alixe said she's peckish, the crisps are for her.",
+        # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
+        "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
+        "just, um, set the thermometer on the bedside table, that'd be grand.",
+        "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
+        "you are very kind.",
+        "Alright mate, bus driver here, I've got four minutes till my next run. Be a legend and "
+        "chuck the packing tape on the belt, cheers.",
+        "Hiya, lifeguard here, dripping all over your floor, sorry. Stick the crisps up on the "
+        "shelf, would you? Ta.",
+        "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
+        "thanks.",
+        "Dana's desperate for the banana, she hasn't eaten since six this morning.",
+        "Tom's after the barcode scanner, his own one has died on him.",
+        "The thermometer, Ruth keeps asking for it. Give it her, would you.",
+        "See the notepad by the phone? Drop it in the box.",
+        "Mia's got the scanner down on her checklist. Could you run it over to her?",
+        "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
+        "The bottle goes to Bob first. Then the crisps, same place.",
+        "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
+        "patient.",
+        "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because she "
+        "asked earlier and she's been very patient.",
+        "Give Jess the small spanner quick she's under the van and after that the hammer to Kofi "
+        "he's waiting.",
+        "Black pen to Sam. Also the notepad. Both of those to him.",
+        "For Person B, bottle, please give. Thank you.",
+        "Chips over to Person A then bottle across to Person B and then we're square, yeah?",
+        "Bob wants the bottle Alice wants the crisps that's all of it.",
+        "Hand Kofi a spanner, whichever's nearest your gripper.",
+        "Lily can have one of the blocks, either colour's fine.",
+        "One thing each: the chips to one of them, the bottle to the other, you pick who gets "
+        "what.",
+        "Both of them, bottle and chips, go to Person A, she's got the picnic.",
+        "Whichever of the two people is closer can have the bottle.",
+        "All three of the boxes want to go on the conveyor, in whatever order suits you.",
+        "All three pens in the box, please, I'm clearing the desk.",
+        "Two blankets for Mr Lee, the poor man's frozen.",
+        "For reading group, lay out both books on the desk, the two of them.",
+        "The pair of spanners to Jess, she'll need the two.",
+        "Person B's order is three things, namely the chips, the cup, and the apple.",
+        "The two things you drink from, the bottle and the cup, to Person A.",
+        "Both items to Person B, the pair of them.",
+        "Bob is to have the two of them, bottle and crisps.",
+        "Whichever cup isn't the green one, that's Omar's, hand it to him.",
+        "The guest on table five, Mr Novak, gets the white plate, not the blue.",
+        "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
+        "Lily wants a block to chew on. Not the red one, love, the other.",
+        "Kofi's after whichever spanner isn't already on the workbench.",
+        "Alice needs a mug, but the red one's got a crack, so not that one.",
+        "Person B can have anything except the apple.",
+        "The tape to Mia, no hang on, Tom, Mia's on her break.",
+        "The banana for Omar. Actually, change that to Dana.",
+        "Bib to Ava, oh no, she's too big for bibs, to Lily.",
+        "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
+        "The cup and then the apple to Person B, or rather the apple first and then the cup.",
+        "Chips for Person A, oops, wrong one, Person B.",
+        "Person A wants the bottle. Sorry, I misheard her, it's the chips she wants.",
+        "Shelf for the bottle, please, or no, better still, straight to Alice.",
+        "the apple over to person b when u can",
+        "the crisps r alice's, the bottle goes to bob",
+        "shelf for the chips, bob for the bottle, ta",
+        "Gardener here again, sorry, the globr wants moving onto the desk, please.",
+        "Person A's parched after the heat, run the botrle over to her.",
+        "Person B reckons she fancies the chilps now.",
+        "Over to Person B with the bpttle, please.",
+        "Would you mind awfully tidying the red pen away into the box?",
+        "Would Person B like the apple? Give it to her, yes?",
+        "What about taking the bottle across to Person A, eh?",
+        "D'you reckon you could get that bottle up on the shelf?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -382,10 +450,10 @@ KNOWN_MISSES = frozenset(
 # now, the rest in KNOWN_MISSES; "blind19" written in session 20 by another engineer, reviewed
 # by a second one, measured once at the end of session 20, its wrong readings and refusals met by
 # kind in session 21: asserted now, the rest in KNOWN_MISSES; "blind20" written in session 21 by
-# another engineer, reviewed by a second one, measured once at the end of session 21; "blind21"
-# written in session 22 by another engineer, reviewed by a second one, measured once at the end
-# of session 22)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind20", "blind21"})
+# another engineer, reviewed by a second one, measured once at the end of session 21, its
+# refusals met by kind in session 22: asserted now, the rest in KNOWN_MISSES; "blind21" written in
+# session 22 by another engineer, reviewed by a second one, measured once at the end of session 22)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind21"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

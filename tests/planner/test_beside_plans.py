@@ -12,7 +12,7 @@ import pytest
 
 from hltl.bench.cells import delivery_cell
 from hltl.planner import PlanResult, PlanStatus, anytime, plan, profile, repair
-from hltl.planner.anytime import _Exchange, _Router, _Slot, _squeeze_paths, goals
+from hltl.planner.anytime import _Exchange, _Router, _Slot, _squeeze_paths, _steps_of, goals
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.schedule import time_unit
 from hltl.planner.search import _Search, plan_steps
@@ -160,6 +160,44 @@ def test_the_squeeze_takes_the_other_sides_shorter_plan_replayed(
     )
     assert found is not None and found[0] == theirs[0]
     assert replayed[0] == _steps(theirs) == _steps(found)
+    res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
+    check_plan(c.scene, c.spec, res.to_dict())
+
+
+def test_the_squeeze_ignores_a_plan_handed_over_with_as_many_steps(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the walk's side hands over a plan of as many steps as the one being squeezed (said to
+    # be shorter): it is not replayed and the level's search goes on (each level is squeezed
+    # once: the levels' horizons fall)
+    c, problem, _, router, first = _cell(8, 2)
+    walk, bound = _pair(problem)
+    walk.offer(1, first)
+    monkeypatch.setattr(anytime, "NEWS_EVERY", 1)
+    taken: list[bool] = []
+    real_news = _Exchange.news
+    monkeypatch.setattr(_Exchange, "news", lambda self: taken.append(True) or real_news(self))
+    replayed: list[list[list[int]]] = []
+    real_replay = _Router.replay
+
+    def replay(self: _Router, steps: Any) -> Any:
+        replayed.append([sorted(i.index for i in step) for step in steps])
+        return real_replay(self, steps)
+
+    horizons: list[int] = []
+    real_squeeze = repair.Repair.squeeze
+
+    def squeeze(self: repair.Repair, routes: dict[int, repair.Path], T: int) -> bool:
+        horizons.append(T)
+        return real_squeeze(self, routes, T)
+
+    monkeypatch.setattr(_Router, "replay", replay)
+    monkeypatch.setattr(repair.Repair, "squeeze", squeeze)
+    found = _squeeze_paths(router, first, time.perf_counter() + DEADLINE_S, 10**12, exchange=bound)
+    assert taken and found is not None
+    assert horizons == [repair.length(first) - 1]
+    assert [sorted(i.index for i in step) for step in _steps_of(first)] not in replayed
+    assert len(found[1]) < repair.length(first)
     res = PlanResult(PlanStatus.SOLVED, plan_steps(problem, found[1]), to_seconds(found[0]))
     check_plan(c.scene, c.spec, res.to_dict())
 

@@ -51,6 +51,15 @@ def _recount(rep: repair.Repair) -> tuple[int, int, list[int]]:
     return clashes, weighted, clashing
 
 
+def _use_costs(rep: repair.Repair) -> list[list[int]]:
+    """What one more use of each robot in each step costs, from the table's counts and
+    weights (and a 0 past the last robot)."""
+    return [
+        [repair.CLASH * w if n else 0 for n, w in zip(row, weights, strict=True)] + [0]
+        for row, weights in zip(rep.count, rep.weight, strict=True)
+    ]
+
+
 @pytest.mark.parametrize(
     ("layout", "n", "seed", "fewer"),
     [("grid", 8, 2, 5), ("random", 12, 0, 2), ("line", 8, 2, 1), ("grid", 17, 1, 3)],
@@ -61,7 +70,7 @@ def test_repair_squeezes_the_first_plan_into_fewer_steps_and_every_plan_is_valid
     # from the first prioritized plan (grid 8 x 8 seed 2: 16 steps, 9.2 s), a few hundred
     # moves take out steps one at a time; each plan without clashes passes the validator,
     # and the clash counts (and the goals in a clash) kept move by move are the ones counted
-    # from the routes
+    # from the routes, as are what one more use of each robot costs
     c = delivery_cell(layout, n, seed)
     problem, router, paths = _first(layout, n, seed)
     rep = repair.Repair(
@@ -75,6 +84,7 @@ def test_repair_squeezes_the_first_plan_into_fewer_steps_and_every_plan_is_valid
             rep.step()
             if n <= 12 or move % 20 == 0:
                 assert _recount(rep) == (rep.clashes, rep.weighted, rep._clashing())
+                assert rep.rcost == _use_costs(rep)
             continue
         steps = rep.steps()
         plan_ = router.replay(steps)
@@ -159,11 +169,22 @@ def test_each_route_has_the_fewest_weighted_clashes_then_robot_steps(
             rep.weight[t][r] = rng.choice((1, 1, 2, 3))
             if rep.count[t][r]:
                 rep.occ[t] |= 1 << r
-            if rep.weight[t][r] > 1:
-                rep.heavy[t] |= 1 << r
+                rep.rcost[t][r] = repair.CLASH * rep.weight[t][r]
+    # (and the same routes when each instance's robots are summed from its mask, the form of
+    # instances of more than two robots)
+    masks = [
+        [
+            (hb, hr, [[(*a[:5], -1, a[4].executors | max(hb, 0)) for a in out] for out in by_left])
+            for hb, hr, by_left in per
+        ]
+        for per in rep.arcs
+    ]
     for gi in range(len(gls)):
         found = rep.route(gi)
         want = _brute(rep, gi)
+        kept, rep.arcs = rep.arcs, masks
+        assert rep.route(gi) == found
+        rep.arcs = kept
         if found is None:
             assert want is None
             continue

@@ -4,14 +4,15 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hltl.errors import HltlError
-from hltl.grounding import make_grounder
-from hltl.grounding.base import check_instruction
-from hltl.planner.result import PlanResult
-from hltl.skills.library import Action
 from hltl.spec.hierarchy import HSpec, load_spec
 from hltl.world.scene import Scene
+
+if TYPE_CHECKING:
+    # why: the annotation only; importing the planner is the plan command's to pay
+    from hltl.planner.result import PlanResult
 
 
 def check_option(name: str, value: float, *, positive: bool = False) -> float:
@@ -36,6 +37,9 @@ def load_spec_or_ground(
         return load_spec(spec_path)
     if instruction is None:
         raise HltlError("give --spec FILE or --instruction TEXT")
+    # why: a spec file needs no grounder (the grounding package is ~10 ms of start-up)
+    from hltl.grounding import make_grounder
+    from hltl.grounding.base import check_instruction  # why: as above
 
     check_instruction(instruction, "--instruction")
     spec: HSpec = make_grounder(grounder).ground(instruction, scene).spec
@@ -44,6 +48,8 @@ def load_spec_or_ground(
 
 def describe_action(scene: Scene, action: object) -> str:
     """One action in words: 'r1 hands bottle to Person A'."""
+    # why: the commands that print no plan need no skill library
+    from hltl.skills.library import Action
 
     assert isinstance(action, Action)
     rs = action.robots

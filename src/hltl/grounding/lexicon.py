@@ -1259,6 +1259,11 @@ class Lexicon:
         self._lexed: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
+        # the normaliser's rewrite of each text (or its refusal), by rewrite, for this instruction
+        self.rewrites: dict[tuple[str, str], object] = {}
+        # typed words and what they are a typo of (misspelt, misspelt_keyword): kept for good
+        self._misspelt_words: dict[str, tuple[Ref, ...] | None] = {}
+        self._keyword_typos: dict[str, str | None] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
         self._own: frozenset[str] = frozenset()
@@ -1377,6 +1382,7 @@ class Lexicon:
         """Drop the texts lexed so far (called when a new instruction starts)."""
         self._lexed.clear()
         self.readings.clear()
+        self.rewrites.clear()
 
     def lexed(self, text: str) -> tuple[Item, ...] | None:
         return self._lexed.get(text)
@@ -1425,6 +1431,13 @@ class Lexicon:
         return out
 
     def misspelt(self, word: str) -> tuple[Ref, ...] | None:
+        """The entity (or category) a word of 4+ letters names within one edit, else None
+        (kept per word: the lexicon does not change, and every rewrite lexes the same words)."""
+        if word not in self._misspelt_words:
+            self._misspelt_words[word] = self._misspelt(word)
+        return self._misspelt_words[word]
+
+    def _misspelt(self, word: str) -> tuple[Ref, ...] | None:
         """The entity (or category) a word of 4+ letters names within one edit, else None.
 
         One edit is an insertion, deletion, substitution or swap of neighbours ("botle",
@@ -1549,11 +1562,17 @@ class Lexicon:
         return self._index
 
     def misspelt_keyword(self, word: str) -> str | None:
-        """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None.
+        """The keyword ("the", "give", "hand" …) a word is a typo of ("teh", "gvie"), else None
+        (kept per word, as ``misspelt``).
 
         Like names: one edit (a short word: a swap of neighbours), never a common English word,
         only when one keyword is that near, and never when a scene name is that near too.
         """
+        if word not in self._keyword_typos:
+            self._keyword_typos[word] = self._misspelt_keyword(word)
+        return self._keyword_typos[word]
+
+    def _misspelt_keyword(self, word: str) -> str | None:
         key = _keyword_typo(word)
         if key is None or len(word) < 3:
             return None
@@ -1909,6 +1928,7 @@ def _in_name(tokens: list[Token], i: int, lexicon: Lexicon) -> bool:
 
 
 @functools.cache
+@functools.cache
 def _keywords() -> tuple[str, ...]:
     return tuple(
         k
@@ -1925,16 +1945,19 @@ def _lemma_of(key: str) -> str:
     return "verb:" + VERBS[key] if key in VERBS else WORDS[key]
 
 
-def _near_keywords(word: str) -> list[str]:
+@functools.lru_cache(maxsize=8192)
+def _near_keywords(word: str) -> tuple[str, ...]:
+    """The keywords one edit from ``word`` (kept per word: the lexer asks of the same words in
+    every rewrite of an instruction)."""
     if len(word) < 3 or not word.isalpha():
-        return []
+        return ()
     near = [k for k in _keywords() if _one_edit(word, k)]
     if len(word) == 3:
         # a short word: two neighbours swapped ("teh", "adn"), or a keyword of four letters
         # with one left out ("giv", "gve"); a substitution ("hat" for "had") is too likely a
         # different word
         near = [k for k in near if (len(k) == 3 and sorted(k) == sorted(word)) or len(k) == 4]
-    return near
+    return tuple(near)
 
 
 def _keyword_typo(word: str) -> str | None:

@@ -40,10 +40,13 @@ from __future__ import annotations
 
 import functools
 import itertools
-import re
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
+
+# re's functions behind a word gate (gate.py): a pattern is not run on a text lacking every word
+# a match of it must contain, and compiled patterns are kept past re's own cache
+from hltl.grounding import gate as re
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     TITLES,
@@ -68,10 +71,7 @@ _TASK_WORDS = r"\b(?:needs?|wants?|gets?|give|hand|bring|take|put|place)\b"
 def canonical(text: str, lexicon: Lexicon) -> str:
     """``text`` rewritten by every mechanism in turn (each returns its input where it does not
     apply or cannot rewrite exactly)."""
-    out = " ".join(text.split())
-    for step in _STEPS:
-        out = step(out, lexicon)
-    return out
+    return _rewritten("canonical", _STEPS, text, lexicon)
 
 
 def canonical19(text: str, lexicon: Lexicon) -> str:
@@ -85,9 +85,30 @@ def canonical19(text: str, lexicon: Lexicon) -> str:
 def rewritten19(text: str, lexicon: Lexicon) -> str:
     """``text`` rewritten by the session-19 mechanisms alone (read first: when that reads, the
     other rewrites need not run again)."""
+    return _rewritten("rewritten19", _STEPS19, text, lexicon)
+
+
+def _rewritten(
+    name: str, steps: tuple[Callable[[str, Lexicon], str], ...], text: str, lexicon: Lexicon
+) -> str:
+    """``text`` through ``steps`` in turn, once per instruction: the grounder tries
+    ``rewritten19``, ``canonical`` and ``canonical19`` in turn, and the last runs both of the
+    others again on the same text (``lexicon.rewrites`` keeps each result, or its refusal,
+    until the next instruction)."""
     out = " ".join(text.split())
-    for step in _STEPS19:
-        out = step(out, lexicon)
+    key = (name, out)
+    known = lexicon.rewrites.get(key)
+    if isinstance(known, GroundingError):
+        raise GroundingError(str(known))
+    if isinstance(known, str):
+        return known
+    try:
+        for step in steps:
+            out = step(out, lexicon)
+    except GroundingError as refused:
+        lexicon.rewrites[key] = refused
+        raise
+    lexicon.rewrites[key] = out
     return out
 
 
@@ -126,6 +147,8 @@ def _rx(pattern: str) -> re.Pattern[str]:
 
 
 def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
+    if not re.may_match(pattern, _F, text):
+        return text  # no match is possible: what sub returns for none
     return _rx(pattern).sub(repl, text)
 
 
@@ -1688,6 +1711,20 @@ def _drop(pattern: str, text: str, lexicon: Lexicon, repl: str = "") -> str:
     )
 
 
+# The opener rule: greetings, 'yes' and a call for attention ('excuse me', 'pardon me', 'sorry
+# to bother you', with or without 'sorry') opening the request, each before a comma (a call for
+# attention also before a full stop): the 'me' of 'excuse me' is no recipient and its 'sorry'
+# corrects nothing. Later in the instruction a call for attention is left (_corrections19 does not
+# read it as a correction).
+_GREETING = r"(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening)(?: there)?"
+_BOTHERING = r"(?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?"
+_ATTENTION = (
+    r"(?:(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
+    rf"(?:,? (?:(?:so )?sorry )?{_BOTHERING})?|(?:so )?sorry {_BOTHERING})"
+)
+_OPENERS = rf"^(?:{_GREETING}\s*[,!]\s*|{_ATTENTION}\s*[,.!]\s*(?=[a-z]))+"
+
+
 _COURTESY: tuple[tuple[str, str], ...] = (
     # "No rush at all, but at some point could Priya get …": when, not what
     (
@@ -1695,12 +1732,8 @@ _COURTESY: tuple[tuple[str, str], ...] = (
         r"(?:but\s+)?",
         r"\1",
     ),
-    # "Hi, yes, hello, could you …": greetings and 'yes' opening the request, each before a comma
-    (
-        r"^(?:(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening)(?: there)?"
-        r"\s*[,!]\s*)+",
-        "",
-    ),
+    # "Hi, yes, hello, could you …", "Excuse me, sorry to bother you, …": the opener rule
+    (_OPENERS, ""),
     (r",?\s*\bat some (?:point|stage)(?: today| later)?\b", ""),
     (r"(^|(?<=[.;!?])\s*)(?:whenever|when) (?:you'?re|you are) (?:ready|free)\s*[,.]?\s*", r"\1"),
     # "Be an angel and hand …": a request for a favour, not a name
@@ -2592,6 +2625,8 @@ def _courtesy14(text: str, lexicon: Lexicon) -> str:
             and ("one" not in words or re.fullmatch(_NICE_ONE, m.group(1), _F) is not None)
             and ("it" not in words or re.search(r"\bthat's it$", m.group(1), _F))
             and plain
+            # "…, sorry, the.": a determiner last is a word cut off, not address
+            and words[-1] not in ("the", "a", "my")
             and _names_nothing(m.group(1), lexicon)
         ):
             text = text[: m.start()] + m.group(2)
@@ -3433,7 +3468,12 @@ _SPEAKER_SIGN_OFFS = (
         "",
     ),
     (r"\b(that's|that is) (everything|all|it) from (?:me|us)(?=\s*(?:[.!]|$))", r"\1 \2"),
-    (r"\b(and )?that's us (?:done|finished|sorted)(?=\s*(?:[.!]|$))", r"\1that's it"),
+    # "… and that's me done for the shift": the speaker finishing, not a recipient
+    (
+        r"\b(and )?that's (?:us|me) (?:done|finished|sorted)(?: for (?:the (?:day|shift|week|"
+        r"morning)|today|now))?(?=\s*(?:[.!]|$))",
+        r"\1that's it",
+    ),
 )
 
 
@@ -3445,7 +3485,9 @@ def _said_any(text: str, words: tuple[str, ...]) -> bool:
 
 
 def _sign_offs(text: str, lexicon: Lexicon) -> str:
-    if not _said_any(text, ("before i", "before we", "from me", "from us", "that's us")):
+    if not _said_any(
+        text, ("before i", "before we", "from me", "from us", "that's us", "that's me")
+    ):
         return text
     for pattern, repl in _SPEAKER_SIGN_OFFS:
         text = _drop(pattern, text, lexicon, repl)
@@ -3742,7 +3784,8 @@ def _categories(listed: str, lexicon: Lexicon) -> list[str]:
 # the choice.
 _ANY_WILL_DO = (
     r"(?:(?:any|either) (?:one|of them|of those)(?: (?:will do|is fine|'s fine|is ok))?|"
-    r"not fussed which|(?:i )?don't mind which|doesn't matter which|(?:he|she|they) (?:doesn't|"
+    r"(?:(?:i'm|i am|we're|we are) )?not (?:fussed|bothered) which(?: one)?|"
+    r"(?:i )?don't mind which|doesn't matter which|(?:he|she|they) (?:doesn't|"
     r"don't|does not|do not) mind|(?:he|she|they)(?:'s|'re| is| are) not fussy|(?:he|she|they) "
     r"(?:isn't|aren't) fussy|whichever you reach first|whichever's (?:easier|handier|nearer|"
     r"closer)(?: to (?:grab|reach|get))?)"
@@ -6659,7 +6702,9 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
 
 
 _APOLOGY19 = re.compile(r"\b(?:excuse|pardon) me\s*$", _F)
-_BOTHER19 = r"(?:to|for) (?:bother|interrupt|trouble|disturb|butt in|barge in)|for (?:the|any) "
+_BOTHER19 = (
+    r"(?:to|for) (?:bother|interrupt|trouble|disturb|rush|butt in|barge in)|for (?:the|any) "
+)
 _BOTHER19 += r"(?:bother|trouble|interruption|intrusion)|for (?:bothering|interrupting|troubling)"
 
 
@@ -6686,21 +6731,12 @@ def _in_that_order21(text: str) -> str:
     return " Then ".join(p.rstrip(".! ") + "." for p in parts).replace(". Then ", ". Then ")
 
 
-_ATTENTION21 = re.compile(
-    r"^(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
-    r"(?:,? (?:(?:so )?sorry )?(?:to|for) (?:bother|interrupt|trouble|disturb)(?:ing)?(?: you)?)?"
-    r"\s*[,.!]\s*(?=[a-z])",
-    _F,
-)
-
-
-def _attention21(text: str, _lexicon: Lexicon) -> str:
-    """Session 21: 'Excuse me, sorry, …' opening the instruction asks for attention (its 'me' is
-    no recipient and its 'sorry' corrects nothing): taken off. Later in the instruction it is
-    left as it is (_corrections19 does not read it as a correction). A call of its own
-    ('Porter coming through!', 'Oh, aren't you clever.') likewise; a closing 'In that order.'
-    orders the sentences before it."""
-    return _in_that_order21(_CALLS21.sub("", _ATTENTION21.sub("", text)))
+def _attention21(text: str, lexicon: Lexicon) -> str:
+    """Session 21: the opener rule (greetings, 'yes', 'Excuse me, sorry, …': _OPENERS) said
+    first, before any other session-19 rewrite reads 'sorry' as a correction or 'me' as the
+    speaker. A call of its own ('Porter coming through!', 'Oh, aren't you clever.') likewise; a
+    closing 'In that order.' orders the sentences before it."""
+    return _in_that_order21(_CALLS21.sub("", _drop(_OPENERS, text, lexicon)))
 
 
 _SPEAKER21: tuple[tuple[str, str], ...] = (
@@ -6781,6 +6817,284 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
             continue
         text = before + text[m.end() :]
     return text
+
+
+# -- session 22: blind20's kinds -----------------------------------------------------------------
+
+# a clause of the speaker about themself: 'I've come straight from the hives', "I'm the farmer",
+# 'my boots are filthy', 'I won't come in'
+_SPEAKER_CLAUSE22 = re.compile(
+    r"^(?:(?:and|so|but|oh|well|look)\s+)?(?:i(?:'m|'ve|'ll|'d| am| have| was| will| won't| can't| "
+    r"don't| just| only)|my (?:[a-z]+ ){0,2}?(?:is|are|was|were|has|have|keeps?)\b|my [a-z]+'s)\b",
+    _F,
+)
+# what the speaker says of why they are here: 'only in to water the spider plants'
+_HERE_FOR22 = re.compile(
+    r"^(?:(?:i'm|i am) )?(?:only|just) (?:in|here|popping in|passing|dropping by)\b", _F
+)
+# a warning about the speaker's own things: 'mind the smoke on my jacket'
+_MIND_MINE22 = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
+# words a remark of the speaker's must not hold: what could ask for something, point back, count,
+# choose, order or correct
+_SPEAKER_HELD22 = re.compile(
+    r"\b(?:no|nothing|none|never|too|also|as well|instead|rather|first|then|next|before|after|"
+    r"once|when|until|unless|if|or|one|ones|both|each|either|any|all|every|another|other|else|"
+    r"rest|same|which|whichever|give|hand|pass|bring|take|put|place|get|want|wants|need|needs|"
+    r"like|love|fancy|prefer|keep|leave|send|move|fetch|grab|drop|it|them|those|these|that|this|"
+    r"him|her|his|she|he|they|wrong|mean|meant|sorry|actually|mistake|change|swap|cancel|wait|"
+    r"hang|hold|mine|yours|hers|for me|for us|to me|to us|me)\b|\d",
+    _F,
+)
+
+
+def _speaker_piece22(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
+    """Whether ``piece`` (a stretch between commas) is the speaker talking about themself (or
+    about why they are here, after such a stretch: ``spoke``), asking nothing."""
+    piece = piece.strip(" .!")
+    if _rx(rf"(?:so )?sorry {_BOTHERING}").fullmatch(piece):
+        return True  # "sorry to rush you": an apology for interrupting
+    if not piece or _SPEAKER_HELD22.search(piece) or not _names_nothing(piece, lexicon):
+        return False
+    return bool(
+        _SPEAKER_CLAUSE22.match(piece)
+        or _MIND_MINE22.match(piece)
+        or (spoke and _HERE_FOR22.match(piece))
+        or _inert_sentence(piece, lexicon)
+    )
+
+
+def _speaker_remarks22(text: str, lexicon: Lexicon) -> str:
+    """Session 22: a sentence before the request in which the speaker only talks about themself
+    ("I'm the farmer, my boots are filthy so I won't come in.", "Afternoon, mind the smoke on my
+    jacket, I've come straight from the hives.", "I'm the gardener, only in to water the spider
+    plants."): each stretch of it between commas (and 'so') a clause of 'I' or 'my X' about
+    the speaker, a greeting, or why they are here; naming nothing in the scene, and holding no
+    word that could ask for something, point back, count, choose, order or correct (not even
+    'me'): taken off, when a later sentence names something."""
+    parts = re.split(r"(?<=[.!])\s+", text.strip())
+    if len(parts) < 2 or not _rx(r"\b(?:i|i'[a-z]+|my)\b").search(" ".join(parts[:-1])):
+        return text
+    keep: list[str] = []
+    for n, part in enumerate(parts):
+        pieces = re.split(r"\s*,\s*|\s+so\s+", part.strip(" .!"))
+        spoke = False
+        inert = n < len(parts) - 1 and part.endswith((".", "!"))
+        if n == 0 and len(pieces) > 1 and _rx(r"(?:so )?sorry").fullmatch(pieces[0]):
+            pieces = pieces[1:]  # "Sorry, I'm the farmer, …": an apology for interrupting
+        for piece in pieces if inert else ():
+            if not _speaker_piece22(piece, spoke, lexicon):
+                inert = False
+                break
+            spoke = spoke or bool(_SPEAKER_CLAUSE22.match(piece.strip()))
+        if not (inert and spoke):
+            keep.append(part)
+    if len(keep) == len(parts) or not _names(" ".join(keep), lexicon):
+        return text
+    return " ".join(keep)
+
+
+# asides that ask nothing, after or inside the request
+_ASIDES22: tuple[tuple[str, str], ...] = (
+    # "…, since you're there", "and since you're going over there, …": the hearer is passing
+    (
+        r"\s*,?\s*(?:and )?since you're (?:there|here|at it|passing|up|going (?:over )?(?:there|"
+        r"that way))\s*(?=[,.!]|$)",
+        "",
+    ),
+    # "…, that's all she needs": nothing more for her
+    (r"\s*,\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\s*[.!]?\s*$)", ""),
+    # "…, go on", "…, go on then": urging
+    (r"\s*,\s*go on(?:,? then)?(?=\s*[.!]?\s*$)", ""),
+)
+# want frames said another way (rewritten whatever they name)
+_FRAMES22: tuple[tuple[str, str], ...] = (
+    # "What Carol's after is the crisps": what Carol is after is
+    (r"\b(what [a-z]+(?: [a-z]+)?)'s after is\b", r"\1 is after is"),
+    # "is shouting for", "is calling for", "is waiting for": wants
+    (
+        r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been) (?:shouting|calling|yelling|screaming|"
+        r"begging|clamou?ring|pleading|waiting|wanting) for\b",
+        " wants",
+    ),
+    (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
+)
+# a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
+_PURPOSE22 = re.compile(
+    r"\s+for (?:(?:his|her|their|my|our) [a-z]+(?: of (?:the |a |an |his |her |their )?[a-z]+"
+    r"(?: [a-z]+)?)?|[a-z]+ing(?: [a-z]+){0,4})(?=\s*(?:[.!;]|,\s*(?:please|thanks|ta)\b|$))",
+    _F,
+)
+# 'the one she was looking at earlier' after an object there is one of
+_THE_ONE22 = re.compile(
+    r"(\bthe ([a-z]+(?: [a-z]+)?)),\s*the one (?:that )?(?:she|he|they|i|we|you)(?:'s|'d| was| "
+    r"is| were| had| has)? [a-z ]+?(?=\s*[.!]?\s*$)",
+    _F,
+)
+_PURPOSE_HELD22 = re.compile(
+    r"\b(?:them|those|these|it|one|ones|other|another|rest|each|both|all|every|either|or|and|"
+    r"then|first|not|no|never|instead|too|also|me|us)\b|n't\b",
+    _F,
+)
+
+
+def _asides22(text: str, lexicon: Lexicon) -> str:
+    """Session 22: asides that ask nothing ("since you're there", "that's all she needs", "go
+    on", "after that walk" after being desperate for something), want frames ('is shouting
+    for', 'is wanting', "What Carol's after is"), a purpose after the object ('for marking up
+    his draft', 'for her collage of the solar system'), and a description that picks the one
+    object there is ('the apple, the one she was looking at earlier'). Taken off only where
+    they name nothing in the scene and hold no word that counts, chooses, points back or
+    negates."""
+    out = text
+    for pattern, repl in _ASIDES22:
+        out = _drop(pattern, out, lexicon, repl)
+    for pattern, repl in _FRAMES22:
+        out = _sub(pattern, repl, out)
+    # "is gasping for X after that walk": why they want it, a time past
+    out = _sub(
+        r"\b((?:gasping|dying|desperate|starving|parched|thirsty|famished|hungry)\b[^.!?,;]*?)(\s+"
+        r"after (?:that|all that|her|his|their) [a-z]+)(?=\s*[.!]?\s*$)",
+        lambda m: m.group(1) if _names_nothing(m.group(2), lexicon) else m.group(0),
+        out,
+    )
+
+    def purpose(m: re.Match[str]) -> str:
+        said = m.group(0)
+        before = _names(out[: m.start()].rsplit(",", 1)[-1], lexicon)
+        if (
+            not before
+            or not all(r.kind == "object" for r in before[-1].refs)
+            or _PURPOSE_HELD22.search(said)
+            or not _names_nothing(said, lexicon)
+        ):
+            return said
+        return ""
+
+    out = _PURPOSE22.sub(purpose, out)
+
+    def the_one(m: re.Match[str]) -> str:
+        said = m.group(0)[len(m.group(1)) :]
+        if _only(m.group(1), lexicon, "object") and (
+            not _PURPOSE_HELD22.search(said.replace("the one", ""))
+            and _names_nothing(said, lexicon)
+        ):
+            return m.group(1)
+        return m.group(0)
+
+    out = _THE_ONE22.sub(the_one, out)
+    return " ".join(out.split()) or text
+
+
+def _one_person22(text: str, lexicon: Lexicon) -> str:
+    """Session 22: a name and a role of the same one person said together ('emma the visitor',
+    'nurse ruth', 'the technician Omar') read as the name alone."""
+
+    def same(m: re.Match[str]) -> str:
+        first, second = m.group(1), m.group(2)
+        a, b = _ids(first, lexicon, "human"), _ids(second, lexicon, "human")
+        if (
+            len(a) == 1
+            and a == b
+            and _only(first, lexicon, "human")
+            and _only(second.removeprefix("the "), lexicon, "human")
+        ):
+            return first if m.group(0).lower().startswith(first.lower()) else second
+        return m.group(0)
+
+    if not _said_any(text, (" the ", "nurse ", "doctor ", "chef ", "mr ", "mrs ")):
+        return text
+    out = _sub(r"\b([a-z]+) (the [a-z]+)\b", same, text)
+    return _sub(r"\b((?:nurse|doctor|dr|chef|teacher|officer)) ([a-z]+)\b", same, out)
+
+
+# "Don't touch the crisps, they're fine where they are.": an object left where it is
+_LEFT_ALONE22 = re.compile(
+    r"^(?:please )?(?:(?:don't|do not|never) (?:touch|move|bother with)|leave) (the [a-z ]+?)"
+    r"(?: alone| where (?:it is|they are)| be)?(?:,\s*(?:it's|they're|it is|they are) (?:fine|ok|"
+    r"okay|good) (?:where (?:it is|they are)|as (?:it is|they are)))?\s*[.!]$",
+    _F,
+)
+_POINTS_BACK22 = re.compile(r"\b(?:it|them|those|these|that|everything|all|rest|other)\b", _F)
+
+
+def _negation22(text: str, lexicon: Lexicon) -> str:
+    """Session 22: exclusions that say nothing more than the request ('the white plate, not the
+    blue', where the blue plate is another plate; 'whichever cup isn't the green one', of two
+    cups), an object said to be left alone in a sentence of its own ("Don't touch the crisps,
+    they're fine where they are.") when no other sentence names it, and a person said to get
+    nothing with a reason ("Person A's had her lot, so nothing for her; …", 'Never mind Alice
+    for now, …'), for _nothing_for20 to take off when they are named nowhere else."""
+    out = text
+
+    def not_other(m: re.Match[str]) -> str:
+        kept = f"the {m.group(1)} {m.group(2)}"
+        other = _ids(f"the {m.group(4)} {m.group(2)}", lexicon, "object")
+        if _only(kept, lexicon, "object") and len(other) == 1 and other != _ids(kept, lexicon):
+            # "The red mug, not the blue, goes to Alice": the subject keeps no comma
+            before = out[: m.start()].lower().rstrip()
+            subject = before == "the" or before.endswith((". the", "! the", "; the"))
+            return f"{m.group(1)} {m.group(2)}{'' if subject else m.group(5)}"
+        return m.group(0)
+
+    # "the white plate, not the blue (one | plate)": the blue plate is another plate
+    out = _sub(
+        r"(?<=\bthe )([a-z]+) ([a-z]+)(\s*,\s*not the ([a-z]+)(?: one| \2)?)(\s*,|(?=\s*[.!;]|$))",
+        not_other,
+        out,
+    )
+
+    def whichever(m: re.Match[str]) -> str:
+        cat = m.group(1)
+        both = _ids(f"the {cat}s", lexicon, "object") | _ids(f"the {cat}", lexicon, "object")
+        not_it = _ids(f"the {m.group(2)} {cat}", lexicon, "object")
+        if len(both) == 2 and len(not_it) == 1 and not_it < both:
+            (left,) = both - not_it
+            return f"the {_said(left, lexicon)}"
+        return m.group(0)
+
+    # "Whichever cup isn't the green one", "the cup that isn't the green one" (of two cups)
+    out = _sub(
+        r"\b(?:whichever|the) ([a-z]+) (?:that )?(?:isn't|is not) the ([a-z]+)(?: one)?\b"
+        r"(?! (?:on|in|at|by|near))",
+        whichever,
+        out,
+    )
+    # "Don't touch the crisps, they're fine where they are. Bob gets the bottle."
+    parts = re.split(r"(?<=[.!])\s+", out.strip())
+    if len(parts) > 1:
+        keep = []
+        for n, part in enumerate(parts):
+            said = _LEFT_ALONE22.match(part)
+            rest = " ".join(parts[:n] + parts[n + 1 :])
+            if (
+                said is not None
+                and _only(said.group(1), lexicon, "object")
+                and not (
+                    _ids(said.group(1), lexicon, "object") & _ids(rest, lexicon, "object")
+                    or _POINTS_BACK22.search(rest)
+                )
+            ):
+                continue
+            keep.append(part)
+        if keep and len(keep) < len(parts):
+            out = " ".join(keep)
+    # "Person A's had her lot, so nothing for her": nothing for Person A
+    out = _sub(
+        r"(?:^|(?<=[.;!?] ))([A-Z][\w ]*?)(?:'s| has| is)(?: had| done| finished| sorted)?"
+        r" (?:her|his|their) (?:lot|share|fill|turn|bit)\s*,\s*so nothing (?:for|to) "
+        r"(?:her|him|them)\b",
+        lambda m: f"nothing for {m.group(1)}" if _only_person(m.group(1), lexicon) else m.group(0),
+        out,
+    )
+    # "Never mind Alice for now, …": not Alice
+    return _sub(
+        r"(?:^|(?<=[.;!?] ))never mind ([A-Z][\w ]*?)(?: for (?:now|the moment|today))?,\s*"
+        r"(?=(?-i:[a-z]|[A-Z]))",
+        lambda m: (
+            f"nothing for {m.group(1)}. " if _only_person(m.group(1), lexicon) else m.group(0)
+        ),
+        out,
+    )
 
 
 def _corrections19(text: str, lexicon: Lexicon) -> str:
@@ -6887,6 +7201,7 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"\ball of the (?=[a-z]+s\b)", "all the ", out)
     out = _sub(r"\b(any|whichever|either) ([a-z]+) at all\b", r"\1 \2", out)
     out = _sub(r"\ba single (?=[a-z]+\b)", "one ", out)
+    out = _sub(r"\bany single one of\b", "any one of", out)  # "any single one of the four things"
     out = _sub(r"\b(?:a|an) ([a-z]+),\s*(?:either|any) one\s*,?", r"one \1", out)
     out = _sub(
         r"\bwhichever ([a-z]+) you (?:like|want|fancy|choose|prefer|please)\b", r"one \1", out
@@ -7024,7 +7339,8 @@ def _nothing_for20(text: str, lexicon: Lexicon) -> str:
         out,
     )
     return _sub(
-        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)not (?P<what>the [a-z ]+?),\s*(?:only|just) ",
+        r"(?:^|(?<=[.;!?])\s*)(?P<keep>)not (?P<what>the [a-z ]+?),\s*(?:only|just|(?:no,\s*)?"
+        r"it's) ",
         lambda m: drop(m, m.group("what"), "object"),
         out,
     )
@@ -7302,6 +7618,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _attention21,
     _speaker21,
     _reasons21,
+    _speaker_remarks22,
+    _asides22,
+    _one_person22,
+    _negation22,
     _restated20,
     _archaic19,
     _corrections19,

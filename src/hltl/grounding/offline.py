@@ -146,13 +146,9 @@ def _inside() -> list[str]:
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         text = order_colons(apostrophes(text))
-        cut = _CUT_OFF.search(text)
+        cut = _cut_off(text)
         if cut is not None:
-            # "The cup to Alice, sorry, the.": the words stop before what they were to name
-            raise GroundingError(
-                f"{cut.group(1)!r} ends the instruction: it is cut off before what it names; "
-                "say the whole request"
-            )
+            raise cut
         later = _NOT_YET.search(text)
         if later is not None:
             # "Not yet, …: the bowl to Dana": the task is put off, as a deferring time word
@@ -187,10 +183,17 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             if plain in tried:
                 continue
             tried.add(plain)
+            # "The cup to Alice, sorry, the, before I go": the closer the rewrite took off hid
+            # that the words stop before what they were to name (or the rewrite dropped an
+            # unknown word after 'the'): such a rewrite is read only for the readings its
+            # refusal names, never taken
+            cut = _cut_off(plain)
             try:
                 node = _read(plain, scene, lexicon)
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
+                if cut is not None:
+                    raise cut
                 return node
             except GroundingError as rewritten:
                 if _readings(rewritten) and not _readings(best):
@@ -219,6 +222,18 @@ _DEFERRED = re.compile(
 
 
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
+
+
+def _cut_off(text: str) -> GroundingError | None:
+    """'The cup to Alice, sorry, the.': the words stop before what they were to name (the
+    refusal), or None."""
+    cut = _CUT_OFF.search(text)
+    if cut is None:
+        return None
+    return GroundingError(
+        f"{cut.group(1)!r} ends the instruction: it is cut off before what it names; "
+        "say the whole request"
+    )
 
 
 _CUT_OFF = re.compile(

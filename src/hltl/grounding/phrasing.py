@@ -1722,6 +1722,16 @@ def _apply_correction(
             # alone, so taking back the whole clause would take back what the speaker said of
             # themselves with it
             raise GroundingError(f"cannot tell what {marker.text!r} corrects")
+        if any(x.text.lower() in _SPEAKER_WORDS for x in before[cut:]) and not any(
+            _humans(x) for x in before[cut:]
+        ):
+            # "I want the banana too. Hey, sorry, … put the bowl in the sink": the clause taken
+            # back asks for the speaker (no one else is named in it), which no cue before
+            # another request takes back: it is the speaker's own request, refused as such
+            raise GroundingError(
+                f"{marker.text!r} would take back a request for the speaker: the speaker is not "
+                "a person in the scene; name the person who gets it"
+            )
         if any(_is(x, "instead", "instead_of", "correct") for x in before[cut:]):
             # "X. Give Bob the apple instead, no, Z": what the taken-back 'instead' replaced
             # is unclear

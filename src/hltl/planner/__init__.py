@@ -8,9 +8,8 @@ import signal
 import threading
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from hltl.planner import lns, schedule
 from hltl.planner.anytime import (
@@ -34,6 +33,7 @@ from hltl.world.scene import Scene
 from hltl.world.state import WorldState
 
 if TYPE_CHECKING:
+    from concurrent.futures import Future, ThreadPoolExecutor
     from multiprocessing.connection import Connection
     from multiprocessing.process import BaseProcess
 
@@ -126,7 +126,7 @@ def plan(
         state = _Search(problem)
         deadline = t0 + timeout - reserve
         beside = _Apart(problem, state, deadline, on_progress)
-        with ThreadPoolExecutor(max_workers=1) as pool:
+        with _OnePool() as pool:
             try:
                 cert = certify(
                     problem,
@@ -182,6 +182,32 @@ def plan(
     return result
 
 
+class _OnePool:
+    """A pool of one thread, made when its first task comes: most exact runs (cells left to
+    A* alone, as Fig. 1) give it none, and ``concurrent.futures`` (with ``logging``) is ~5 ms
+    of `hltl plan`'s start-up (docs/planner.md, "Start-up"). Leaving the ``with`` block waits
+    for the task, as ``ThreadPoolExecutor`` does."""
+
+    def __init__(self) -> None:
+        self.pool: ThreadPoolExecutor | None = None
+
+    def submit(
+        self, fn: Callable[..., PlanResult], /, *args: Any, **kwargs: Any
+    ) -> Future[PlanResult]:
+        if self.pool is None:
+            from concurrent.futures import ThreadPoolExecutor
+
+            self.pool = ThreadPoolExecutor(max_workers=1)
+        return self.pool.submit(fn, *args, **kwargs)
+
+    def __enter__(self) -> _OnePool:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if self.pool is not None:
+            self.pool.shutdown(wait=True)
+
+
 class _Beside:
     """A* on a thread of its own beside exact mode's first phase, once that phase reaches the
     full model (``certify``'s ``beside``): the phase's CP-SAT questions run one at a time and
@@ -207,7 +233,7 @@ class _Beside:
         """Stop A* (when the phase fails)."""
         self.live.stopped = True
 
-    def start(self, pool: ThreadPoolExecutor, first: _Found | None) -> None:
+    def start(self, pool: _OnePool, first: _Found | None) -> None:
         """Start A* (with the prioritized plan's makespan as ``upper``)."""
         self.live.upper = None if first is None else first[0]
         self.future = pool.submit(
@@ -314,7 +340,7 @@ class _Apart:
         self.watcher.start()
         return True
 
-    def start(self, pool: ThreadPoolExecutor, first: _Found | None) -> None:
+    def start(self, pool: _OnePool, first: _Found | None) -> None:
         """The prioritized plan's makespan is A*'s ``upper`` (the process runs already)."""
         if self.proc is None:
             self.thread.start(pool, first)

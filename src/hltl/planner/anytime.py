@@ -1302,8 +1302,10 @@ def _squeeze_paths(
 ) -> _Found | None:
     """``_squeezed`` from per-goal paths (steps counted from 0, none empty), its repair with
     ``seed``. With ``exchange`` each shorter plan is offered to the other process, and (when
-    it listens) every ``NEWS_EVERY`` moves a shorter plan from it is taken: replayed through
-    the monitors, then squeezed instead."""
+    it listens) every ``NEWS_EVERY`` moves a shorter plan from it is taken when it has fewer
+    steps than the plan being squeezed: replayed through the monitors, then squeezed instead.
+    (One with as many steps, shorter only by its steps' lengths, would restart the search for
+    the level this one has been repairing: engineer 11's diagnosis in session 21.)"""
     p = router.p
     node = router.node
     gone = 0
@@ -1322,7 +1324,7 @@ def _squeeze_paths(
         moves += 1
         listen = exchange is not None and exchange.listen and not moves % NEWS_EVERY
         theirs = exchange.news() if listen and exchange is not None else None
-        if theirs is not None:
+        if theirs is not None and repair.length(theirs) <= rep.T:
             found = router.replay(_steps_of(theirs))
             if found is not None and (best is None or found[0] < best[0]):
                 best = found

@@ -11,14 +11,18 @@ from hltl.planner.problem import Instance, Problem
 Path = list[tuple[int, Instance]]
 # a goal's route here: its path, its (step, robots used) cells, the step its atom happens in
 Routed = tuple[Path, list[tuple[int, int]], int]
-# an instance from a place: its post, robots used (with the holder), their count, the fewest
-# instances from its post to the goal's atom (0 when it fires), whether it fires, the instance
-Arc = tuple[int, int, int, int, bool, Instance]
+# an instance from a place: its post, how many robots it uses (with the holder), the fewest
+# instances from its post to the goal's atom (0 when it fires), whether it fires, the instance,
+# and the robots it uses as two indices (the second one past the last robot when it uses one;
+# the first -1 and the second their mask when it uses more than two)
+Arc = tuple[int, int, int, bool, Instance, int, int]
 
 # the cost of one clash against one robot-step (clashes first, robot-steps to break ties)
 CLASH = 1 << 16
 # goals taken out per repair move: the clashing one and up to this many more
 REPAIR_MORE = (1, 1, 2, 2, 3)
+# the fewest instances to a goal's atom from a place where it cannot happen
+UNREACHED = 1 << 30
 # repair moves without fewer clashes before the clashing cells weigh more
 STUCK = 20
 
@@ -55,10 +59,10 @@ class Repair:
         self.count: list[list[int]] = []
         self.occ: list[int] = []
         self.weight: list[list[int]] = []  # per step and robot, what a clash there costs
-        self.heavy: list[int] = []  # per step, the robots whose clashes cost more than 1
+        # per step and robot, what one more use costs in clashes (CLASH x its weight when
+        # the robot is used, else 0), and a 0 past the last robot (``Arc``)
+        self.rcost: list[list[int]] = []
         self.multi: list[int] = []  # per step, the robots used more than once
-        # per step, what clashes on heavy robots cost beyond 1 each (by the robots' mask)
-        self.extra: list[dict[int, int]] = []
         self.clashes = 0  # cells used twice, counted once per extra use
         self.weighted = 0  # the same, each counted at its weight
         self.stuck = 0  # moves since the clashes last fell
@@ -67,8 +71,7 @@ class Repair:
     def _fewest(self, gi: int, alive: Sequence[bool]) -> list[int]:
         """Fewest instances from each place to the goal's atom (ignoring other routes)."""
         p = self.p
-        big = 1 << 30
-        dist = [big] * len(p.locs)
+        dist = [UNREACHED] * len(p.locs)
         fires = self.fires[gi]
         by_pre = p.by_obj_pre[self.objs[gi]]
         # Bellman-Ford over places (few places, few instances each)
@@ -90,19 +93,21 @@ class Repair:
                         changed = True
         return dist
 
-    def _arcs(self, gi: int) -> list[tuple[int, list[Arc]]]:
-        """Per place: its holder's bit (-1: a place nothing may use) and the goal's instances
-        from there as (post, robots used, their count, fewest instances after it, whether it
-        fires, the instance), those of robots out of play left out."""
+    def _arcs(self, gi: int) -> list[tuple[int, int, list[list[Arc]]]]:
+        """Per place: its holder's bit (-1: a place nothing may use), the holder's index (past
+        the last robot when none), and the goal's instances from there (``Arc``), those of
+        robots out of play left out, by the steps left after them: entry ``k`` has those
+        with at most ``k`` instances after them, the last entry all of them."""
         p = self.p
+        none = len(p.robots)
         left = self.left[gi]
         fires = self.fires[gi]
-        out: list[tuple[int, list[Arc]]] = []
+        out: list[tuple[int, int, list[list[Arc]]]] = []
         for loc in range(len(p.locs)):
             h = p.code_holder.get(loc)
             hb = 0 if h is None else 1 << h
             if hb & self.gone:
-                out.append((-1, []))
+                out.append((-1, none, [[]]))
                 continue
             arcs: list[Arc] = []
             for inst in p.by_obj_pre[self.objs[gi]][loc]:
@@ -110,10 +115,15 @@ class Repair:
                 if used & self.gone:
                     continue
                 fire = inst.index in fires
-                arcs.append(
-                    (inst.post, used, used.bit_count(), 0 if fire else left[inst.post], fire, inst)
-                )
-            out.append((hb, arcs))
+                rs = _bits(used)
+                r1, r2 = (-1, used) if len(rs) > 2 else [*rs, none, none][:2]
+                after = 0 if fire else left[inst.post]
+                if after >= UNREACHED:  # (its atom cannot happen from there)
+                    continue
+                arcs.append((inst.post, len(rs), after, fire, inst, r1, r2))
+            most = max((a[2] for a in arcs), default=0)
+            by_left = [[a for a in arcs if a[2] <= k] for k in range(most + 1)]
+            out.append((hb, none if h is None else h, by_left))
         return out
 
     # --- the usage table -------------------------------------------------------------------
@@ -123,9 +133,8 @@ class Repair:
         self.count = [[0] * len(self.p.robots) for _ in range(T)]
         self.occ = [0] * T
         self.weight = [[1] * len(self.p.robots) for _ in range(T)]
-        self.heavy = [0] * T
+        self.rcost = [[0] * (len(self.p.robots) + 1) for _ in range(T)]
         self.multi = [0] * T
-        self.extra = [{} for _ in range(T)]
         self.clashes = 0
         self.weighted = 0
         for rt in self.routes.values():
@@ -142,6 +151,8 @@ class Repair:
                     self.clashes += 1
                     self.weighted += self.weight[t][r]
                     self.multi[t] |= low
+                else:
+                    self.rcost[t][r] = CLASH * self.weight[t][r]
                 row[r] += 1
                 used ^= low
 
@@ -159,6 +170,7 @@ class Repair:
                         self.multi[t] &= ~low
                 else:
                     self.occ[t] &= ~low
+                    self.rcost[t][r] = 0
                 used ^= low
 
     # --- routing against the table ---------------------------------------------------------
@@ -169,76 +181,81 @@ class Repair:
         T = self.T
         left = self.left[gi]
         arcs = self.arcs[gi]
-        occ = self.occ
-        weight = self.weight
-        heavy = self.heavy
+        rcost = self.rcost
         start = self.start[self._obj(gi)]
         if left[start] > T:
             return None
-        # per step, per place: where from, by which instance (None: waited), robots used
-        back: list[dict[int, tuple[int, Instance | None, int]]] = [{} for _ in range(T + 1)]
-        frontier = {start: 0}
-        done: tuple[int, int, int, Instance, int] | None = None  # cost, step, place, inst, used
-        bound = 1 << 62  # done's cost
+        big = 1 << 62
+        n_locs = len(arcs)
+        # per step, per place: where from, and by which instance (None: waited)
+        back: list[list[tuple[int, Instance | None] | None]] = [[]] * (T + 1)
+        # the places reached, in the order first reached (ties go to the first), and their costs
+        # (lists indexed by place: cheaper than dictionaries in this, the repair's inner loop)
+        order = [start]
+        costs = [big] * n_locs
+        costs[start] = 0
+        done: tuple[int, int, int, Instance] | None = None  # cost, step, place, instance
+        bound = big  # done's cost
         for t in range(T):
-            busy = occ[t]
-            w = weight[t]
-            hw = heavy[t]
-            extra = self.extra[t]
+            rc = rcost[t]
             slack = T - t - 1  # steps left after this one
-            nxt: dict[int, int] = {}
-            back_next = back[t + 1]
-            for loc, cost in frontier.items():
+            nxt = [big] * n_locs
+            reached: list[int] = []
+            back_next: list[tuple[int, Instance | None] | None] = [None] * n_locs
+            back[t + 1] = back_next
+            for loc in order:
+                cost = costs[loc]
                 if cost >= bound:
                     continue
-                hb, out = arcs[loc]
+                hb, hr, by_left = arcs[loc]
                 if hb < 0:
                     continue
-                for post, used, n, after, fire, inst in out:
-                    if after > slack:
-                        continue
-                    c = cost + n
-                    over = used & busy
-                    if over:
-                        c += CLASH * over.bit_count()
-                        if over & hw:  # (most cells weigh 1: their bits are not summed)
-                            key = over & hw
-                            more = extra.get(key)
-                            if more is None:
-                                more = extra[key] = CLASH * sum(w[r] - 1 for r in _bits(key))
-                            c += more
+                out = by_left[slack] if slack < len(by_left) else by_left[-1]
+                for post, n, after, fire, inst, r1, r2 in out:
+                    if r1 >= 0:
+                        c = cost + n + rc[r1] + rc[r2]
+                    else:  # (more than two robots)
+                        c = cost + n + sum(rc[r] for r in _bits(r2))
                     if c + after >= bound:  # (each instance left uses a robot)
                         continue
                     if fire:
                         if c < bound:
-                            done = (c, t, loc, inst, used)
+                            done = (c, t, loc, inst)
                             bound = c
                         continue
-                    if c < nxt.get(post, 1 << 62):
+                    was = nxt[post]
+                    if c < was:
+                        if was == big:
+                            reached.append(post)
                         nxt[post] = c
-                        back_next[post] = (loc, inst, used)
+                        back_next[post] = (loc, inst)
                 if left[loc] <= slack:
-                    if hb:
-                        c = cost + (CLASH * w[hb.bit_length() - 1] + 1 if hb & busy else 1)
-                    else:
-                        c = cost
-                    if c < nxt.get(loc, 1 << 62):
+                    c = cost + 1 + rc[hr] if hb else cost
+                    was = nxt[loc]
+                    if c < was:
+                        if was == big:
+                            reached.append(loc)
                         nxt[loc] = c
-                        back_next[loc] = (loc, None, hb)
-            frontier = nxt
+                        back_next[loc] = (loc, None)
+            order = reached
+            costs = nxt
         if done is None:
             return None
-        _, t_end, loc, last, used_last = done
+        _, t_end, loc, last = done
         path: Path = [(t_end, last)]
-        cells: list[tuple[int, int]] = [(t_end, used_last)]
+        cells: list[tuple[int, int]] = [(t_end, last.executors | arcs[loc][0])]
         cur, ct = loc, t_end
         while ct > 0:
-            prev, act, used = back[ct][cur]
+            came = back[ct][cur]
+            assert came is not None  # (every place reached has where it came from)
+            prev, act = came
             ct -= 1
+            hb = arcs[prev][0]
             if act is not None:
                 path.append((ct, act))
-            if used:
-                cells.append((ct, used))
+                cells.append((ct, act.executors | hb))
+            elif hb:
+                cells.append((ct, hb))
             cur = prev
         path.reverse()
         cells.reverse()
@@ -349,9 +366,8 @@ class Repair:
             for r, n in enumerate(row):
                 if n > 1:
                     self.weight[t][r] += 1
-                    self.heavy[t] |= 1 << r
+                    self.rcost[t][r] += CLASH
                     self.weighted += n - 1
-                    self.extra[t].clear()
 
     def _clashing(self) -> list[int]:
         multi = self.multi

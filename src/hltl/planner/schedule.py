@@ -5,17 +5,19 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass
 from functools import reduce
 from itertools import pairwise
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from hltl.planner.lns import Stop, note_busy, solve_until, stop_until
 from hltl.planner.problem import Instance, Node, Problem
 from hltl.planner.relaxed import RelaxedGraph
 from hltl.spec.hierarchy import HSpec
 from hltl.spec.syntax import And, Atom, Eventually, Formula
+
+if TYPE_CHECKING:
+    from concurrent.futures import Future, ThreadPoolExecutor
 
 # event atoms: they happen in the step of an instance (the relaxation schedules that instance)
 _EVENTS = frozenset({"delivered", "placed", "picked"})
@@ -284,6 +286,8 @@ class _Whole:
         if at in self.asked or self.accept(found):
             return
         if self.pool is None:
+            from concurrent.futures import ThreadPoolExecutor  # (start-up: planner/__init__.py)
+
             self.pool = ThreadPoolExecutor(max_workers=1)
         stop = Stop()
         future = self.pool.submit(
@@ -319,6 +323,8 @@ class _Whole:
 
 def _ended(future: Future[Any]) -> Callable[[float], bool]:
     """Whether ``future`` has ended, waiting at most the seconds given (``stop_until``)."""
+    from concurrent.futures import wait  # (start-up: planner/__init__.py)
+
     return lambda seconds: bool(wait([future], timeout=seconds).done)
 
 
@@ -403,6 +409,9 @@ def _shave(
             stop=stop,
         )
         return found, sum(spent)
+
+    # (imported here: start-up, planner/__init__.py)
+    from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
 
     with ThreadPoolExecutor(max_workers=workers) as pool:
         while True:

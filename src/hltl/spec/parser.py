@@ -2,14 +2,11 @@
 
 from __future__ import annotations
 
-import threading
-from typing import Any
-
-from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken, VisitError
+import re
+from collections.abc import Callable
 
 from hltl.errors import SpecSyntaxError
-from hltl.fileio import cache_dir, quote
+from hltl.fileio import quote
 from hltl.spec.syntax import (
     PREDICATES,
     Always,
@@ -32,223 +29,167 @@ from hltl.spec.syntax import (
 # Words that are operators or constants, hence never atom or formula names.
 KEYWORDS = frozenset({"X", "WX", "F", "G", "U", "R", "V", "true", "false"})
 
-# Precedence, loosest first (each level is one rule below):
-#   <->  left-associative
-#   ->   right-associative
-#   |    left-associative       (also ||)
-#   &    left-associative       (also &&)
-#   U R  right-associative, same level (ltl2ba's V is R)
-#   ! X WX F G  prefix, tightest (ltl2ba's <> is F, [] is G)
-# NAME refuses a keyword standing alone, so "F a" is eventually-a while "Fa" is an atom.
-GRAMMAR = r"""
-?start: equiv
-
-?equiv: implies
-      | equiv EQUIV implies          -> equiv
-
-?implies: or_
-        | or_ IMPLIES implies        -> implies
-
-?or_: and_
-    | or_ OR and_                    -> or_
-
-?and_: temporal
-     | and_ AND temporal             -> and_
-
-?temporal: unary
-         | unary UNTIL temporal      -> until
-         | unary RELEASE temporal    -> release
-
-?unary: primary
-      | NOT unary                    -> not_
-      | NEXT unary                   -> next_
-      | WEAK_NEXT unary              -> weak_next
-      | EVENTUALLY unary             -> eventually
-      | ALWAYS unary                 -> always
-
-?primary: TRUE                       -> true
-        | FALSE                      -> false
-        | NAME                       -> bare_atom
-        | NAME LPAR ARG (COMMA ARG)* RPAR -> predicate
-        | LPAR equiv RPAR            -> group
-
-EQUIV: "<->"
-IMPLIES: "->"
-OR: "||" | "|"
-AND: "&&" | "&"
-UNTIL: "U"
-RELEASE: "R" | "V"
-NOT: "!"
-NEXT: "X"
-WEAK_NEXT: "WX"
-EVENTUALLY: "F" | "<>"
-ALWAYS: "G" | "[]"
-TRUE: "true"
-FALSE: "false"
-LPAR: "("
-RPAR: ")"
-COMMA: ","
-NAME: /(?!(?:X|WX|F|G|U|R|V|true|false)(?![A-Za-z0-9_]))[A-Za-z_][A-Za-z0-9_]*/
-ARG: /[A-Za-z_][A-Za-z0-9_]*/
-
-%ignore /\s+/
-"""
-
-_OPERAND_START = frozenset({"NAME", "LPAR", "TRUE", "FALSE", "NOT", "EVENTUALLY"})
-
-_parser_lock = threading.Lock()
-_parser: Lark | None = None
-
-
-def _lark() -> Lark:
-    # Built on first use: a module-level parser would cost every ``import hltl``.
-    global _parser
-    with _parser_lock:
-        if _parser is None:
-            _parser = Lark(
-                GRAMMAR,
-                parser="lalr",
-                lexer="contextual",
-                propagate_positions=False,
-                cache=_cache_file(),
-            )
-        return _parser
-
-
-def _cache_file() -> str | bool:
-    """Lark keeps the analysed grammar here (keyed by the grammar's hash, so an edited grammar is
-    analysed again): a new process loads the parser in ~5 ms instead of building it in ~25 ms."""
-    folder = cache_dir("lark")
-    if folder is None:
-        return False
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError:
-        return False  # a read-only cache folder only costs the next process the build
-    return str(folder / "spec-grammar.lark")
-
-
-class _PredicateError(Exception):
-    """Raised inside the transformer; turned into a SpecSyntaxError with the token's position."""
-
-    def __init__(self, head: str, tail: str, token: Token) -> None:
-        super().__init__(head)
-        self.head, self.tail, self.token = head, tail, token
-
-
-@v_args(inline=True)
-class _ToFormula(Transformer[Token, Formula]):
-    def equiv(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return Equiv(left, right)
-
-    def implies(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return Implies(left, right)
-
-    def or_(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return Or(left, right)
-
-    def and_(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return And(left, right)
-
-    def until(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return Until(left, right)
-
-    def release(self, left: Formula, _op: Token, right: Formula) -> Formula:
-        return Release(left, right)
-
-    def not_(self, _op: Token, operand: Formula) -> Formula:
-        return Not(operand)
-
-    def next_(self, _op: Token, operand: Formula) -> Formula:
-        return Next(operand)
-
-    def weak_next(self, _op: Token, operand: Formula) -> Formula:
-        return WeakNext(operand)
-
-    def eventually(self, _op: Token, operand: Formula) -> Formula:
-        return Eventually(operand)
-
-    def always(self, _op: Token, operand: Formula) -> Formula:
-        return Always(operand)
-
-    def true(self, _tok: Token) -> Formula:
-        return TrueF()
-
-    def false(self, _tok: Token) -> Formula:
-        return FalseF()
-
-    def group(self, _lpar: Token, inner: Formula, _rpar: Token) -> Formula:
-        return inner
-
-    def bare_atom(self, name: Token) -> Formula:
-        return Atom(str(name))
-
-    def predicate(self, name: Token, *rest: Token) -> Formula:
-        args = tuple(str(t) for t in rest if t.type == "ARG")
-        arity = PREDICATES.get(str(name))
-        if arity is None:
-            known = ", ".join(sorted(PREDICATES))
-            head = f"unknown predicate {str(name)!r}"
-            raise _PredicateError(head, f"; predicates are: {known}", name)
-        if len(args) != arity:
-            noun = "argument" if arity == 1 else "arguments"
-            head = f"{name}() takes {arity} {noun}, got {len(args)} ({', '.join(args)})"
-            raise _PredicateError(head, "", name)
-        return Atom(str(name), args)
-
-
 # Far beyond any task a person states; the bounds keep parsing, printing and compiling (all
 # recursive over the tree) inside Python's recursion limit and error messages short.
 MAX_FORMULA_CHARS = 10_000
 MAX_FORMULA_DEPTH = 100
-_EXCERPT = 60
+
+# The grammar (hltl.spec.grammar, lark's LALR parser) is the reference. The hand-written parser
+# below reads what the grammar accepts the way lark's contextual lexer and parser read it, and
+# gives up on anything else (every error, and formulas nested too deep): lark then parses the
+# text again and words the error. A valid spec is read without importing lark at all (~30 ms
+# of `hltl plan`'s start-up, docs/benchmarks.md "Start-up").
+_SPACE = re.compile(r"\s*")
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_Prefix = Callable[[Formula], Formula]
+_Infix = Callable[[Formula, Formula], Formula]
+_PREFIX_WORDS: dict[str, _Prefix] = {
+    "X": Next,
+    "WX": WeakNext,
+    "F": Eventually,
+    "G": Always,
+}
+_PREFIX_SIGNS: tuple[tuple[str, _Prefix], ...] = (
+    ("!", Not),
+    ("<>", Eventually),
+    ("[]", Always),
+)
+# binary operators, loosest first: (sign, level, class); a longer sign before its prefix
+_BINARY: tuple[tuple[str, int, _Infix], ...] = (
+    ("<->", 0, Equiv),
+    ("->", 1, Implies),
+    ("||", 2, Or),
+    ("|", 2, Or),
+    ("&&", 3, And),
+    ("&", 3, And),
+    ("U", 4, Until),
+    ("R", 4, Release),
+    ("V", 4, Release),
+)
+_RIGHT_LEVELS = frozenset({1, 4})  # -> and U R are right-associative, the others left
 
 
-def _where(text: str, line: int, column: int) -> str:
-    if len(text) <= 2 * _EXCERPT:
-        return f'at line {line}, column {column} in "{text}"'
-    # a long formula is shown around the problem only
-    lines = text.split("\n")
-    row = lines[line - 1] if 0 < line <= len(lines) else text
-    lo = max(0, column - 1 - _EXCERPT // 2)
-    piece = row[lo : lo + _EXCERPT]
-    left = "…" if lo > 0 else ""
-    right = "…" if lo + _EXCERPT < len(row) else ""
-    return f'at line {line}, column {column} in "{left}{piece}{right}" ({len(text):,} characters)'
+class _LeftToLark(Exception):
+    """The hand-written parser does not decide this text: the grammar does (or refuses it)."""
 
 
-def _depth(tree: Any) -> int:
-    # iterative: the tree may be far deeper than the recursion limit
-    best = 0
-    stack: list[tuple[Any, int]] = [(tree, 1)]
-    while stack:
-        node, d = stack.pop()
-        best = max(best, d)
-        stack.extend((c, d + 1) for c in getattr(node, "children", ()) if not isinstance(c, Token))
-    return best
+class _Reader:
+    """Precedence climbing over ``text``; each result comes with the depth of lark's parse tree
+    for it (a group in parentheses is a level there), which ``MAX_FORMULA_DEPTH`` bounds."""
+
+    __slots__ = ("nest", "pos", "text")
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.pos = 0
+        self.nest = 0  # formulas being read inside each other: at most the tree's depth
+
+    def parse(self) -> tuple[Formula, int]:
+        formula, depth = self._formula(0)
+        if self._skip() != len(self.text) or depth > MAX_FORMULA_DEPTH:
+            raise _LeftToLark
+        return formula, depth
+
+    def _skip(self) -> int:
+        match = _SPACE.match(self.text, self.pos)
+        assert match is not None  # (\s* matches everywhere)
+        self.pos = match.end()
+        return self.pos
+
+    def _formula(self, least: int) -> tuple[Formula, int]:
+        # operands joined by binary operators of level ``least`` or tighter
+        self.nest += 1
+        if self.nest > MAX_FORMULA_DEPTH:
+            raise _LeftToLark  # (lark refuses it as too deep; this keeps off the recursion limit)
+        left, depth = self._unary()
+        while True:
+            op = self._operator()
+            if op is None or op[1] < least:
+                break
+            sign, level, cls = op
+            self.pos += len(sign)
+            right, right_depth = self._formula(level if level in _RIGHT_LEVELS else level + 1)
+            left, depth = cls(left, right), 1 + max(depth, right_depth)
+        self.nest -= 1
+        return left, depth
+
+    def _operator(self) -> tuple[str, int, _Infix] | None:
+        pos = self._skip()
+        text = self.text
+        for op in _BINARY:
+            if text.startswith(op[0], pos):
+                return op
+        return None
+
+    def _unary(self) -> tuple[Formula, int]:
+        ops: list[_Prefix] = []
+        text = self.text
+        while True:
+            pos = self._skip()
+            for sign, cls in _PREFIX_SIGNS:
+                if text.startswith(sign, pos):
+                    ops.append(cls)
+                    self.pos += len(sign)
+                    break
+            else:
+                match = _WORD.match(text, pos)
+                if match is None or match.group() not in _PREFIX_WORDS:
+                    break
+                ops.append(_PREFIX_WORDS[match.group()])
+                self.pos = match.end()
+        formula, depth = self._primary()
+        for cls in reversed(ops):
+            formula = cls(formula)
+        return formula, depth + len(ops)
+
+    def _primary(self) -> tuple[Formula, int]:
+        text, pos = self.text, self.pos
+        if text.startswith("(", pos):
+            self.pos += 1
+            inner, depth = self._formula(0)
+            if not text.startswith(")", self._skip()):
+                raise _LeftToLark
+            self.pos += 1
+            return inner, depth + 1
+        match = _WORD.match(text, pos)
+        if match is None:
+            raise _LeftToLark
+        name = match.group()
+        self.pos = match.end()
+        if name == "true":
+            return TrueF(), 1
+        if name == "false":
+            return FalseF(), 1
+        if name in KEYWORDS:
+            raise _LeftToLark
+        if not text.startswith("(", self._skip()):
+            return Atom(name), 1
+        args: list[str] = []
+        while True:
+            self.pos += 1  # the "(" or a ","
+            match = _WORD.match(text, self._skip())
+            if match is None:
+                raise _LeftToLark
+            args.append(match.group())
+            self.pos = match.end()
+            pos = self._skip()
+            if text.startswith(")", pos):
+                self.pos += 1
+                break
+            if not text.startswith(",", pos):
+                raise _LeftToLark
+        if PREDICATES.get(name) != len(args):
+            raise _LeftToLark  # (an unknown predicate, or the wrong number of arguments)
+        return Atom(name, tuple(args)), 1
 
 
-def _end_position(text: str) -> tuple[int, int]:
-    lines = text.split("\n")
-    return len(lines), len(lines[-1]) + 1
-
-
-def _hint(text: str, got: str, expected: Any) -> str:
-    # LALR's expected sets are merged across contexts, so they are only trusted where they are
-    # unambiguous: an operand is missing, an identifier is missing, or a '(' is left open.
-    names = set(expected or ())
-    if "NAME" in names:
-        return "; expected an atom, 'true', 'false', '(' or a unary operator (! X WX F G)"
-    if names == {"ARG"}:
-        return "; expected an identifier"
-    if got == "$END" and text.count("(") > text.count(")"):
-        return "; missing ')'"
-    if got == "RPAR" and text.count(")") > text.count("("):
-        return "; this ')' has no matching '('"
-    # ARG: a keyword where no operand may stand is lexed by the fallback lexer as an identifier
-    if got in _OPERAND_START or got in {"NEXT", "WEAK_NEXT", "ALWAYS", "ARG"}:
-        return "; expected a binary operator (& | -> <-> U R) between two formulas"
-    return ""
+def read_valid(text: str) -> tuple[Formula, int] | None:
+    """``text``'s formula and parse-tree depth when the hand-written parser reads it (a valid
+    formula of bounded depth), else ``None`` (``parse_formula`` asks the grammar then)."""
+    try:
+        return _Reader(text).parse()
+    except _LeftToLark:
+        return None
 
 
 def parse_formula(text: str) -> Formula:
@@ -281,42 +222,10 @@ def parse_formula(text: str) -> Formula:
             line=1,
             column=1,
         )
-    try:
-        tree = _lark().parse(text)
-    except UnexpectedCharacters as exc:
-        msg = f"unexpected character {exc.char!r} {_where(text, exc.line, exc.column)}"
-        raise SpecSyntaxError(msg, text=text, line=exc.line, column=exc.column) from None
-    except UnexpectedToken as exc:
-        if exc.token.type == "$END":
-            line, column = _end_position(text)
-            what = "end of formula"
-        else:
-            line, column = exc.token.line or 0, exc.token.column or 0
-            what = repr(str(exc.token))
-        hint = _hint(text, exc.token.type, exc.expected)
-        msg = f"unexpected {what} {_where(text, line, column)}{hint}"
-        raise SpecSyntaxError(msg, text=text, line=line, column=column) from None
-    except UnexpectedEOF:  # pragma: no cover - LALR reports end of input as UnexpectedToken
-        line, column = _end_position(text)
-        msg = f"unexpected end of formula {_where(text, line, column)}"
-        raise SpecSyntaxError(msg, text=text, line=line, column=column) from None
-    depth = _depth(tree)
-    if depth > MAX_FORMULA_DEPTH:
-        raise SpecSyntaxError(
-            f"formula nests {depth} levels deep (operators, parentheses or a long chain of "
-            f"binary operators; at most {MAX_FORMULA_DEPTH}): {quote(text, 40)}; split it into "
-            "named sub-formulas",
-            text=text,
-            line=1,
-            column=1,
-        )
-    try:
-        result: Formula = _ToFormula().transform(tree)
-    except VisitError as exc:
-        orig = exc.orig_exc
-        if isinstance(orig, _PredicateError):
-            line, column = orig.token.line or 0, orig.token.column or 0
-            msg = f"{orig.head} {_where(text, line, column)}{orig.tail}"
-            raise SpecSyntaxError(msg, text=text, line=line, column=column) from None
-        raise
-    return result
+    read = read_valid(text)
+    if read is not None:
+        return read[0]
+    # why: lark (30 ms to import) only for what the hand-written parser leaves: errors, deep nests
+    from hltl.spec import grammar
+
+    return grammar.parse(text)

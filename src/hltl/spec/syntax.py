@@ -61,59 +61,59 @@ class Binary:
     right: Formula
 
 
-@dataclass(frozen=True, slots=True)
+# The operators below are plain subclasses of Unary and Binary, not dataclasses of their own:
+# they inherit the dataclass's __init__, __eq__ (same class, same fields), __hash__, __repr__
+# (by the instance's class name), frozenness, pickling and fields, and ``__slots__ = ()`` keeps
+# them without a __dict__. Generating those methods for each of the 11 cost ~7 ms of every
+# start-up (docs/planner.md, "Start-up").
+
+
 class Not(Unary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class And(Binary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Or(Binary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Implies(Binary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Equiv(Binary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Next(Unary):
     """Strong next ``X f``: there is a next step and f holds there."""
 
+    __slots__ = ()
 
-@dataclass(frozen=True, slots=True)
+
 class WeakNext(Unary):
     """Weak next ``WX f``: if there is a next step, f holds there."""
 
+    __slots__ = ()
 
-@dataclass(frozen=True, slots=True)
+
 class Eventually(Unary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Always(Unary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Until(Binary):
-    pass
+    __slots__ = ()
 
 
-@dataclass(frozen=True, slots=True)
 class Release(Binary):
-    pass
+    __slots__ = ()
 
 
 Formula: TypeAlias = (

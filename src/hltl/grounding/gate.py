@@ -1,0 +1,230 @@
+"""re's functions behind a word gate: no pattern runs on a text lacking every word it needs."""
+
+# The normaliser runs some 1,500 regular expressions over each refused instruction, most of
+# which cannot match it: a rewrite for 'be grateful for' on a text without 'grateful'. Each
+# pattern's literal words, one of which every match contains, are derived once from the pattern
+# itself (re's own parser), so a new rule is gated without anything said about it; where no such
+# words can be derived (a pattern that can match without any fixed word) it always runs. The text
+# is checked lower-cased for a case-blind pattern, and only when it is ASCII (re folds a few
+# other letters onto ASCII ones: 'ſ', the long s, is an 's'), else the pattern runs.
+#
+# Compiled patterns are also kept in a cache larger than re's own (512): the normaliser's
+# patterns overflowed it, and every overflow recompiled a pattern on its next use.
+#
+# The functions take re's arguments and return what re returns; where the gate says no match is
+# possible they return what re returns for no match (the text unchanged, None, [], [text]).
+
+from __future__ import annotations
+
+import functools
+import re
+from collections.abc import Callable, Iterator
+from re import IGNORECASE as IGNORECASE
+from re import Match as Match
+from re import Pattern as Pattern
+from re import _parser  # re's own pattern parser
+from re import compile as compile  # re's name, for the module-level patterns
+from re import escape as escape
+from typing import Any
+
+__all__ = [
+    "IGNORECASE",
+    "Match",
+    "Pattern",
+    "compile",
+    "escape",
+    "findall",
+    "finditer",
+    "fullmatch",
+    "match",
+    "may_match",
+    "required",
+    "search",
+    "split",
+    "sub",
+]
+
+_Words = frozenset[str] | None
+
+_LITERAL = _parser.LITERAL
+_BRANCH = _parser.BRANCH
+_SUBPATTERN = _parser.SUBPATTERN
+_ATOMIC = getattr(_parser, "ATOMIC_GROUP", None)
+_REPEATS = {
+    op
+    for op in (_parser.MAX_REPEAT, _parser.MIN_REPEAT, getattr(_parser, "POSSESSIVE_REPEAT", None))
+    if op is not None
+}
+
+
+def _best(a: _Words, b: _Words) -> _Words:
+    """Of two sets of words each of which a match must contain one of, the more selective."""
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return a if (min(map(len, a)), -len(a)) >= (min(map(len, b)), -len(b)) else b
+
+
+def _needed(items: object, fold: bool) -> _Words:
+    """Words one of which every match of the parsed sequence ``items`` contains, or None."""
+    best: _Words = None
+    run: list[str] = []
+
+    def close() -> None:
+        nonlocal best
+        if run:
+            best = _best(best, frozenset({"".join(run)}))
+            run.clear()
+
+    for op, av in items:  # type: ignore[attr-defined]
+        if op is _LITERAL and av < 128:
+            run.append(chr(av).lower() if fold else chr(av))
+            continue
+        close()
+        if op is _BRANCH:
+            alts = [_needed(alt, fold) for alt in av[1]]
+            if all(alt is not None for alt in alts):
+                best = _best(best, frozenset().union(*alts))  # type: ignore[arg-type]
+        elif op is _SUBPATTERN:
+            _group, add, remove, sub = av
+            if not add and not remove:
+                best = _best(best, _needed(sub, fold))
+        elif op is _ATOMIC:
+            best = _best(best, _needed(av, fold))
+        elif op in _REPEATS:
+            low, _high, sub = av
+            if low >= 1:
+                best = _best(best, _needed(sub, fold))
+        # anything else (a class, a back reference, a look-around, an anchor) needs no word
+    close()
+    if best is not None and "" in best:
+        return None
+    return best
+
+
+@functools.lru_cache(maxsize=16384)
+def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
+    """The words one of which every match of ``pattern`` contains (None where none can be
+    derived), and whether the pattern is case-blind (the words are then lower-cased)."""
+    try:
+        parsed = _parser.parse(pattern, flags)
+    except re.error:
+        return None, True
+    fold = bool(parsed.state.flags & re.IGNORECASE)  # its flags or an inline '(?i)'
+    return _needed(parsed, fold), fold
+
+
+_Gate = tuple[tuple[str, ...], bool] | None
+_GATES: dict[tuple[str, int], _Gate] = {}
+_ONCE: set[tuple[str, int]] = set()
+
+
+def _gate(pattern: str, flags: int) -> _Gate:
+    """The words ``pattern`` needs and whether they are lower-cased, or None (always run). A
+    pattern met the first time runs ungated: many are built from the text at hand and never met
+    again, and deriving their words would cost more than running them."""
+    key = (pattern, flags)
+    if key not in _ONCE:
+        if len(_ONCE) > 16384:
+            _ONCE.clear()
+        _ONCE.add(key)
+        return None
+    words, fold = required(pattern, flags)
+    gate = None if words is None else (tuple(sorted(words)), fold)
+    if len(_GATES) > 16384:
+        _GATES.clear()
+    _GATES[key] = gate
+    return gate
+
+
+def may_match(pattern: str, flags: int, text: str) -> bool:
+    """False only where ``pattern`` cannot match anywhere in ``text``."""
+    key = (pattern, flags)
+    gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
+    if gate is None or not text.isascii():
+        return True
+    words, fold = gate
+    if fold:
+        text = text.lower()
+    for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more, ~600 times an instruction
+        if word in text:
+            return True
+    return False
+
+
+@functools.lru_cache(maxsize=16384)
+def _compiled(pattern: str, flags: int) -> re.Pattern[str]:
+    return re.compile(pattern, flags)
+
+
+def _source(pattern: str | re.Pattern[str], flags: int) -> tuple[str, int]:
+    if isinstance(pattern, re.Pattern):
+        return pattern.pattern, pattern.flags
+    return pattern, flags
+
+
+def sub(
+    pattern: str | re.Pattern[str],
+    repl: str | Callable[[re.Match[str]], str],
+    string: str,
+    count: int = 0,
+    flags: int = 0,
+) -> str:
+    """re.sub, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return string
+    return _compiled(source, flags).sub(repl, string, count)
+
+
+def search(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
+    """re.search, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return None
+    return _compiled(source, flags).search(string)
+
+
+def match(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
+    """re.match, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return None
+    return _compiled(source, flags).match(string)
+
+
+def fullmatch(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
+    """re.fullmatch, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return None
+    return _compiled(source, flags).fullmatch(string)
+
+
+def findall(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> list[Any]:
+    """re.findall, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return []
+    return _compiled(source, flags).findall(string)
+
+
+def finditer(
+    pattern: str | re.Pattern[str], string: str, flags: int = 0
+) -> Iterator[re.Match[str]]:
+    """re.finditer, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return iter(())
+    return _compiled(source, flags).finditer(string)
+
+
+def split(
+    pattern: str | re.Pattern[str], string: str, maxsplit: int = 0, flags: int = 0
+) -> list[str | Any]:
+    """re.split, gated."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return [string]
+    return _compiled(source, flags).split(string, maxsplit)

@@ -1,0 +1,48 @@
+"""`hltl plan` as a program: its objects are left to the OS at exit, its output is whole."""
+
+from __future__ import annotations
+
+import contextlib
+import gc
+import io
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from hltl.cli.main import FREEZE_AT_EXIT, main
+
+ARGS = ["plan", "--scene", "examples/scenes/two_arms.yaml", "--spec", "examples/specs/fig1.yaml"]
+
+
+def test_main_called_with_arguments_freezes_nothing() -> None:
+    # (a test, a notebook or another program calling main(argv) goes on living)
+    assert "plan" in FREEZE_AT_EXIT
+    before = gc.get_freeze_count()
+    with contextlib.redirect_stdout(io.StringIO()):
+        assert main(ARGS) == 0
+    assert gc.get_freeze_count() == before
+
+
+def test_the_program_writes_its_output_whole_and_exits_with_its_code(tmp_path: Path) -> None:
+    out = tmp_path / "plan.json"
+    code = "import sys; from hltl.cli.main import main; sys.exit(main())"
+    run = subprocess.run(
+        [sys.executable, "-c", code, *ARGS, "--json", "-o", str(out)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert run.returncode == 0, run.stderr
+    assert json.loads(run.stdout) == json.loads(out.read_text(encoding="utf-8"))
+    assert json.loads(run.stdout)["makespan"] == 1.0
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("root: t\nformulas:\n  t: F (a &\n", encoding="utf-8")
+    run = subprocess.run(
+        [sys.executable, "-c", code, *ARGS[:3], "--spec", str(bad)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert run.returncode == 1
+    assert run.stderr.startswith("error: ") and run.stderr.count("\n") == 1, run.stderr
