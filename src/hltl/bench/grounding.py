@@ -85,8 +85,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # second engineer, never opened by the engineer who changed the grounder before its one
 # measurement at the end of session 20; tuned on in session 21), blind20 (written in session 21
 # by another engineer and committed alone, reviewed by a second engineer, never opened by the
-# engineer who changed the grounder before its one measurement at the end of session 21; tuned
-# on in session 22).
+# engineer who changed the grounder before its one measurement at the end of session 21; tuned on
+# in session 22), blind21 (written in session 22 by another engineer and committed alone,
+# reviewed by a second engineer, never opened by the engineers who changed the grounder before
+# its one measurement at the end of session 22; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -124,6 +126,7 @@ PARTS = (
     "blind18",
     "blind19",
     "blind20",
+    "blind21",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
