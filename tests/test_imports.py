@@ -101,6 +101,28 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
     assert runs[1] == "0 []", runs
 
 
+def test_the_dfa_cache_imports_concurrent_futures_only_when_mona_runs(tmp_path: Path) -> None:
+    # a DFA read back from the disk folder needs no Future (docs/planner.md, "Start-up"); one
+    # MONA compiles does (the same process code, run twice: cold folder, then warm)
+    code = (
+        "import sys\n"
+        "from pathlib import Path\n"
+        "from hltl.spec.automata import AutomatonCache\n"
+        "from hltl.spec.parser import parse_formula\n"
+        "before = 'concurrent.futures' in sys.modules\n"
+        f"cache = AutomatonCache(disk=Path({str(tmp_path)!r}))\n"
+        "cache.to_dfa(parse_formula('F (a & X (b U picked(cup)))'))\n"
+        "print(before, 'concurrent.futures' in sys.modules)\n"
+    )
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, check=True
+        ).stdout.strip()
+        for _ in range(2)
+    ]
+    assert runs == ["False True", "False False"]
+
+
 @pytest.mark.parametrize("columns", [None, "40", "132", "0", "-3", "wide"])
 def test_the_help_width_is_the_one_shutil_gives(
     columns: str | None, monkeypatch: pytest.MonkeyPatch
