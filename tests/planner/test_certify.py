@@ -301,12 +301,14 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
     release = threading.Event()
     started: list[str] = []
 
-    def start(self: planner._Beside, pool: ThreadPoolExecutor, first: object) -> None:
+    def start(self: planner._Beside, first: object) -> None:
         started.append(order["mode"])
         if order["mode"] == "phase first":
-            # the pool has one thread: A* waits behind this until the phase has ended
-            pool.submit(release.wait)
-        real_start(self, pool, first)  # type: ignore[arg-type]
+            # A*'s pool (made here before A* makes it) has one thread: A* waits behind this
+            # until the phase has ended
+            self.pool = ThreadPoolExecutor(max_workers=1)
+            self.pool.submit(release.wait)
+        real_start(self, first)  # type: ignore[arg-type]
         if order["mode"] == "astar first":
             assert self.future is not None
             self.future.result()
