@@ -78,7 +78,9 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
     # `hltl plan --spec FILE` on a small scene (docs/benchmarks.md, "Start-up"): no grounder,
     # no lark (a valid formula is read by the hand-written parser), no MONA helpers (the DFA
     # comes from the disk cache), no thread pool (concurrent.futures, logging: no task is
-    # given to one on a small cell), and, once the files were read before, no PyYAML
+    # given to one on a small cell), no planner module only exact mode's first phase or
+    # anytime mode uses (CP-SAT's, the bounds', conflict repair), and, once the files were
+    # read before, no PyYAML
     code = (
         "import contextlib, io, sys\n"
         "from hltl.cli.main import main\n"
@@ -88,8 +90,10 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
         "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'concurrent',\n"
         "            'logging', 'shutil', 'numpy',\n"
         "            'scipy', 'pandas') + " + repr(HEAVY) + "\n"
+        "phase = ('hltl.planner.lns', 'hltl.planner.schedule', 'hltl.planner.profile',\n"
+        "         'hltl.planner.repair')\n"
         "print(code, sorted(m for m in sys.modules if m.split('.')[0] in unwanted\n"
-        "                   or m.startswith('hltl.grounding')))\n"
+        "                   or m.startswith('hltl.grounding') or m in phase))\n"
     )
     env = {**os.environ, "HLTL_CACHE_DIR": str(tmp_path)}
     runs = [

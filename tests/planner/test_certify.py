@@ -13,7 +13,7 @@ import pytest
 
 from hltl import planner
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStep, anytime, plan, schedule
+from hltl.planner import PlanResult, PlanStep, anytime, lns, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, plan_steps, search
 from tests.oracles.validator import check_plan
@@ -69,7 +69,7 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(anytime, "_jointly", never)
     monkeypatch.setattr(anytime, "step_bound", never)
     # nor need CP-SAT be imported (0.5-1.5 s in a fresh process)
-    monkeypatch.setattr(anytime.lns, "available", never)
+    monkeypatch.setattr(lns, "available", never)
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
     assert anytime.certified(problem, _Search(problem), math.inf) is None

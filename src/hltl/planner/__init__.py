@@ -11,7 +11,6 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
-from hltl.planner import lns, schedule
 from hltl.planner.anytime import (
     AstarEnd,
     Certificate,
@@ -285,6 +284,8 @@ class _Apart:
             return
         import multiprocessing  # why: only 9-16-goal cells in exact mode need it
 
+        from hltl.planner import lns  # why: as multiprocessing (start-up, docs/planner.md)
+
         ctx = multiprocessing.get_context("fork")
         self.results, result_end = ctx.Pipe(duplex=False)
         upper_end, self.uppers = ctx.Pipe(duplex=False)
@@ -317,6 +318,8 @@ class _Apart:
             if got.status is PlanStatus.SOLVED and got.makespan is not None:
                 makespan = to_ticks(got.makespan)
             if end.hopeless(makespan):
+                from hltl.planner import lns  # why: as in ``ahead``
+
                 lns.stop_until(end.stop, self.phase_over.wait)
 
         self.watcher = threading.Thread(target=take, daemon=True)
@@ -356,7 +359,10 @@ class _Apart:
     def stop(self) -> None:
         """End the process (if it still runs) and close the pipes."""
         self.thread.stop()
-        lns.share_busy(None)
+        if self.proc is not None:  # (``ahead`` gave lns its pause hook)
+            from hltl.planner import lns  # why: as in ``ahead``
+
+            lns.share_busy(None)
         if self.paused:  # (ended while paused)
             self.paused = False
             self.held += time.perf_counter() - self.since
@@ -374,6 +380,8 @@ class _Apart:
     def _busy(self, questions: int) -> None:
         # a round of ``questions`` at once begins (0: ends): A* pauses through one that
         # takes every core
+        from hltl.planner import schedule  # why: as in ``ahead``
+
         pause = questions >= schedule.WORKERS
         if self.proc is not None and self.proc.pid is not None and pause != self.paused:
             self.paused = pause
