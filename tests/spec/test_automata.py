@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import random
 import stat
 import threading
@@ -13,6 +14,7 @@ from ltlf_strategies import random_formula, random_trace
 from hltl.errors import AutomatonError, BackendUnavailableError
 from hltl.spec.automata import (
     DFA,
+    DISK_FORMAT,
     MAX_PROPS,
     AutomatonCache,
     canonical_form,
@@ -170,6 +172,17 @@ def test_disk_folder_answers_a_new_cache_without_mona(tmp_path: Path) -> None:
     with pytest.raises(BackendUnavailableError):
         warm.to_dfa(parse_formula("G a"))
     assert (warm.misses, len(warm)) == (2, 1)
+
+
+def test_disk_folder_names_a_table_by_the_sha256_of_its_format_and_formula(
+    tmp_path: Path,
+) -> None:
+    # (the name tables kept by earlier sessions were written under: they stay found)
+    f = parse_formula("F (a & X (b U picked(cup)))")
+    AutomatonCache(disk=tmp_path).to_dfa(f)
+    text = to_string(canonical_form(f)[0])
+    name = hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json"
+    assert [p.name for p in tmp_path.glob("*.json")] == [name]
 
 
 def test_disk_folder_read_once_under_concurrent_requests(tmp_path: Path) -> None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import re
@@ -14,7 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hltl.errors import AutomatonError, BackendUnavailableError
-from hltl.fileio import cache_dir
+from hltl.fileio import cache_dir, sha256
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import (
     Always,
@@ -363,9 +362,10 @@ def _run_mona(program: str, mona: str, timeout: float, shown: str) -> str:
     return proc.stdout
 
 
-_FREE = re.compile(r"DFA for formula with free variables:([^\n]*)")
-_ACCEPTING = re.compile(r"Accepting states:([^\n]*)")
-_STATE = re.compile(r"^State (\d+): ([01X]*) -> state (\d+)\s*$", re.MULTILINE)
+# MONA's output, read only where MONA ran (a warm disk cache compiles none of these at start-up)
+_FREE = r"DFA for formula with free variables:([^\n]*)"
+_ACCEPTING = r"Accepting states:([^\n]*)"
+_STATE = r"^State (\d+): ([01X]*) -> state (\d+)\s*$"
 
 
 def parse_mona_output(output: str, n_props: int) -> DFA:
@@ -375,7 +375,7 @@ def parse_mona_output(output: str, n_props: int) -> DFA:
     starts in that successor. ``X`` in a guard is a don't-care and is expanded; a placeholder
     that MONA dropped from its free variables is a don't-care everywhere.
     """
-    free_m, acc_m = _FREE.search(output), _ACCEPTING.search(output)
+    free_m, acc_m = re.search(_FREE, output), re.search(_ACCEPTING, output)
     if free_m is None or acc_m is None:
         raise AutomatonError(f"unexpected MONA output (no state table): {output[-300:]!r}")
     free = free_m.group(1).split()
@@ -388,7 +388,7 @@ def parse_mona_output(output: str, n_props: int) -> DFA:
     width = 1 << n_props
     accepting = {int(s) for s in acc_m.group(1).split()}
     raw: dict[int, list[int]] = {}
-    for m in _STATE.finditer(output):
+    for m in re.finditer(_STATE, output, re.MULTILINE):
         src, guard, dst = int(m.group(1)), m.group(2), int(m.group(3))
         if len(guard) != len(bits):
             raise AutomatonError(f"MONA guard {guard!r} does not match variables {free}")
@@ -621,7 +621,7 @@ DISK_FORMAT = 1
 
 def _table_path(disk: Path, text: str) -> Path:
     """Where the ``disk`` folder keeps the table of the canonical formula ``text``."""
-    return disk / (hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
+    return disk / (sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
 
 
 def disk_cache_dir() -> Path | None:
