@@ -346,7 +346,6 @@ KNOWN_MISSES = frozenset(
         "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
-        "grandpa's asking for the teddy, give it him",
         "cup to person a first please and once shes got it the apple goes to person b",
         "Lenq needs the salt for table four.",
         "Alixe said she's peckish, the crisps are for her.",
@@ -363,7 +362,6 @@ KNOWN_MISSES = frozenset(
         "thanks.",
         "Dana's desperate for the banana, she hasn't eaten since six this morning.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "The thermometer, Ruth keeps asking for it. Give it her, would you.",
         "See the notepad by the phone? Drop it in the box.",
         "Mia's got the scanner down on her checklist. Could you run it over to her?",
         "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
@@ -448,10 +446,8 @@ KNOWN_MISSES = frozenset(
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
         "Bob's thirsty from the ride, so take him over the bottle.",
-        "Grab that bottle and give it Person A, there's a good robot.",
         "Right, photographer here, we're losing the light. Person B, bottle. Person A, chips. "
         "Quick quick.",
-        "Sam's after the red pen. Could you give it him?",
         "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
@@ -504,7 +500,6 @@ KNOWN_MISSES = frozenset(
         "Hand the scissors to Zoe, sorry, Noah, I always mix the two of them up.",
         "bob's been on the bike all day give him the bottle thx",
         "sorry typing one handed, chips to person b",
-        "lily's crying for her teddy bear, give it her",
         "Pop the cjips up on the shelf before the kids find them.",
         "Sorry, cold hands, give Person A the applw.",
         "Person B wants a snack, the xhips please.",

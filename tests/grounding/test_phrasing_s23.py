@@ -115,3 +115,32 @@ def test_a_vowel_after_a_name_is_another_person(vowel: str, frame: str) -> None:
 def test_slips_of_a_name_are_still_read() -> None:
     for typed in ("Jesss", "Jsess", "Jesa"):
         assert_reads(f"Give {typed} the drill.", "drill>B", WORKSHOP)
+
+
+# -- 'give it him': British order, 'it' then the person -------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "The {o}, {p} wants it. Give it {p}, would you.",
+            "{p} wants the {o}, could you hand it {p}?",
+            "{p}'s asking for the {o}, pass it {p}.",
+        ]
+    ),
+)
+def test_it_before_the_person_is_what_the_person_gets(scene: Scene, k: int, frame: str) -> None:
+    # blind21: "Grab that bottle and give it Person A, …", "Sam's after the red pen. Could you
+    # give it him?"; blind19/20: "give it him", "Give it her, would you."
+    request, want = plain_request(scene, k)
+    said, thing = request.removeprefix("give ").split(" the ", 1)
+    assert_reads(frame.format(o=thing, p=said), want, scene)
+
+
+def test_it_before_a_person_is_refused_without_an_object_or_with_two_people() -> None:
+    assert_refused("Give it Person A.", F41)  # 'it' refers to nothing
+    assert_refused("The apple, give it him.", F41)  # 'him': Person A or Person B
+    assert_reads("Grab that bottle and give it Person A, there's a good robot.", "bottle>A", F41)
