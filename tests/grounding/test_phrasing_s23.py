@@ -34,7 +34,7 @@ F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")  # bottle, chips, cup, apple
             "{r} and then you can rest.",
             "{r}, and then you can have a rest",
             "{r}, then you can have a break.",
-            "{r} and afterwards you can take five.",
+            "{r} and afterwards you can have a breather.",
         ]
     ),
 )

@@ -6631,7 +6631,7 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
     m = _rx(
         r"\s+(?:and then |then |and )(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
         r" [^,.;!?]*$|\s+(?:and )?(?:then|after that|afterwards) you (?:can|could|may) "
-        r"(?:rest|relax|have a (?:rest|break|sit down|breather)|take (?:a break|five))\s*$"
+        r"(?:rest|relax|have a (?:rest|break|sit down|breather))\s*$"
     ).search(last)
     if (
         m is not None
