@@ -1643,6 +1643,11 @@ def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> 
     if typed[0] == name[0]:
         if typed in first_names() and not _same_name(typed, name):
             return True
+        ends = name[-1] not in "aeiouy" and typed[-1] in "aeio"
+        if ends and len(typed) == len(name) + 1 and typed.startswith(name):
+            # "Jessa", "Paula", "Erica" for "Jess", "Paul", "Eric": a vowel put after a name is
+            # how names are made from names (the list of first names is never complete)
+            return not _same_name(typed, name)
         # "Noam" for "Noah": a letter typed for one far from it on the keyboard (not a slip of
         # the finger, nor a letter that sounds the same) makes another name, from a language
         # the list of English names lacks
