@@ -19,9 +19,11 @@ from hltl.bus.codec import (
     WireBasis,
     WireBriefing,
     WireCheck,
+    WirePlan,
     dumps,
     encode_trajectory,
     loads,
+    spec_digest,
     world_from_wire,
 )
 from hltl.bus.faults import FaultModel, Link
@@ -30,6 +32,7 @@ from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, let_go, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
+from hltl.execution.background import Given, Problem, problem_digest
 from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
@@ -126,6 +129,11 @@ class DriverStats:
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     # real time: actions the guard halted while the loop was busy (see RealtimeBusCell.guard)
     guarded: int = 0
+    # the executor's background plans: asked for here, and given (made by the node for
+    # exactly that problem), and plans received that did not parse (dropped)
+    background_asked: int = 0
+    background_given: int = 0
+    bad_plans: int = 0
     round_trips: list[float] = field(default_factory=list)
 
 
@@ -201,7 +209,10 @@ def _wire_check(config: object, predictor: object) -> WireCheck | None:
     c, f = config, predictor
     if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
         return WireCheck(
-            c.intrusion_speed, c.predict_dt, None if f is None else (f.window, f.min_speed)
+            c.intrusion_speed,
+            c.predict_dt,
+            None if f is None else (f.window, f.min_speed),
+            c.horizon if c.predict and f is not None else None,
         )
     return None
 
@@ -340,6 +351,9 @@ class BusCell:
         self._basis: WireBasis | None = None
         self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, Mapping[str, Any] | None] | None = None
+        # background plans the node made, by problem digest, and each spec's digest by version
+        self._plans: dict[str, Given] = {}
+        self._spec_ids: dict[int, str] = {}
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         # it does so once the basis of a spec newer than this version comes (an instruction
         # came in the step: None, it does not wait)
@@ -627,6 +641,7 @@ class BusCell:
                     d, ticks = decode_answer(
                         reply.ok.payload.to_bytes(), f"answer from {key}", self.episode
                     )
+                    self._take_plans(d)
                     if "from" in d:  # streamed ticks after an answer that was lost: the
                         continue  # query's end is waited for and it is asked again
                     self.stats.round_trips.append(time.perf_counter() - t0)
@@ -648,6 +663,32 @@ class BusCell:
                 # unless its answer was lost; a short pause lets a restarting route settle
                 time.sleep(min(0.01, self.timing.timeout))
         return None
+
+    def _take_plans(self, d: dict[str, Any]) -> None:
+        """Keep the background plans an answer or reply carries (one that does not parse is
+        counted and dropped: the executor makes that plan itself)."""
+        for item in d.pop("plans", ()):
+            try:
+                wp = WirePlan.from_dict(item)
+            except BusError:
+                self.stats.bad_plans += 1
+                continue
+            self._plans[wp.digest] = Given(wp.result, wp.wall_s)
+
+    def planned(self, spec_version: int, problem: Problem) -> Given | None:
+        """The executor's background plan for ``problem`` if the node made it
+        (:class:`~hltl.execution.background.PlansAhead`): the node mirrors the executor's
+        state along the cell's path and plans for the forecast world as the executor's loop
+        will, sending each plan with the ticks it is for; taken only for exactly the same
+        problem (the spec, the monitor state, the whole forecast world)."""
+        self.stats.background_asked += 1
+        sid = self._spec_ids.get(spec_version)
+        if sid is None or not self._plans:
+            return None
+        got = self._plans.get(problem_digest(sid, problem))
+        if got is not None:
+            self.stats.background_given += 1
+        return got
 
     def _take(self, d: dict[str, Any]) -> None:
         """Take in a reset, step or peek answer, and the ticks simulated after it."""
@@ -882,6 +923,7 @@ class BusCell:
                 d, ticks = decode_answer(
                     reply.ok.payload.to_bytes(), "streamed ticks", self.episode
                 )
+                self._take_plans(d)
                 if d.get("from") != self._streamed or ticks is None:
                     return
                 # (a guessed step's reply ends where the next guessed step would start)
@@ -1014,6 +1056,8 @@ class BusCell:
         if self._basis is None:
             return
         self._spec_wire = (basis.version, self._basis.spec)
+        if basis.version not in self._spec_ids and self._basis.spec is not None:
+            self._spec_ids[basis.version] = spec_digest(self._basis.spec)
         if not self.guess or self._motion or self._dead or not self._defer:
             return
         if not (self._first_sent or self._step):
