@@ -1326,13 +1326,16 @@ class CellNode:
             known = ep.spec_ids[version] = (got[0], spec_digest(spec_to_dict(got[0])))
         return known[1]
 
-    def _background(self, ep: _Episode, bs: _Basis, mind: Mind, latest: dict[int, Report]) -> None:
+    def _background(
+        self, ep: _Episode, s: _Stretch, bs: _Basis, mind: Mind, latest: dict[int, Report]
+    ) -> None:
         """Make the executor's background plans for the tick ``mind`` is after, as its loop
         will when it gets there (:func:`~hltl.execution.background.background_forecast` on
         the executor's mind, its forecaster fed the same observations), each once (the keys
         the executor holds are in its mind), and put them in the next answer or reply: the
         executor takes a plan whose problem is exactly its own, and plans the others
-        itself."""
+        itself. A stream sends the ticks it holds first (as before a grounding): the executor
+        works on them while the node plans."""
         if not mind.known or mind.version < 1 or bs.horizon is None or bs.forecast is None:
             return
         got = self._spec_of(ep, mind.version)
@@ -1369,7 +1372,8 @@ class CellNode:
             keys.add(p.key)
             digest = problem_digest(sid, p)
             if digest not in ep.made:
-                self._let_go()  # (a plan takes a millisecond or more: what waits first)
+                if s.early is not None:
+                    s.early()
                 t0 = time.perf_counter()
                 result = planner(self.scene, spec, world=p.world, monitor=monitor, q0=p.q)
                 wall = time.perf_counter() - t0
@@ -1526,7 +1530,7 @@ class CellNode:
             ep, t_next, obs, reports, b.latest, version, bool(instructions) and not regrounded
         )
         if mind is not None and s.basis is not None and not ahead.stream:
-            self._background(ep, s.basis, mind, b.latest)
+            self._background(ep, s, s.basis, mind, b.latest)
         if (
             s.done
             and steady
