@@ -1345,6 +1345,8 @@ class CellNode:
         predictor = ConstantVelocityPredictor(*bs.forecast)
         for obs in ep.recent:
             predictor.observe(obs.t, obs.humans)
+        if not any(predictor.moving(h) for h, _ in mind.world.humans):
+            return  # (nobody walks: no forecast world)
         statuses = {h: r.status for h, r in latest.items()}
         fc = background_forecast(
             self.scene,
@@ -1357,6 +1359,7 @@ class CellNode:
             mind.q,
             mind.version,
             partial(mind.after, monitor, statuses),
+            moving_only=True,
         )
         if fc is None or not fc.problems:
             return
