@@ -1334,8 +1334,11 @@ class CellNode:
         the executor's mind, its forecaster fed the same observations), each once (the keys
         the executor holds are in its mind), and put them in the next answer or reply: the
         executor takes a plan whose problem is exactly its own, and plans the others
-        itself. A stream sends the ticks it holds first (as before a grounding): the executor
-        works on them while the node plans."""
+        itself. Only while the node streams the stretch's further parts, sending the ticks it
+        holds first (as before a grounding): the executor works on them while the node plans.
+        In an answer the executor waits for (the stretch's first part) the node only notes the
+        plans as the executor's own: planning them there would only make it wait longer, and
+        the node simulate less ahead meanwhile."""
         if not mind.known or mind.version < 1 or bs.horizon is None or bs.forecast is None:
             return
         got = self._spec_of(ep, mind.version)
@@ -1373,6 +1376,8 @@ class CellNode:
             if p.key in keys:
                 continue
             keys.add(p.key)
+            if s.early is None:
+                continue  # (the executor's to make: see above)
             digest = problem_digest(sid, p)
             if digest not in ep.made:
                 if s.early is not None:
