@@ -1335,10 +1335,11 @@ class CellNode:
         the executor holds are in its mind), and put them in the next answer or reply: the
         executor takes a plan whose problem is exactly its own, and plans the others
         itself. Only while the node streams the stretch's further parts, sending the ticks it
-        holds first (as before a grounding): the executor works on them while the node plans.
-        In an answer the executor waits for (the stretch's first part) the node only notes the
-        plans as the executor's own: planning them there would only make it wait longer, and
-        the node simulate less ahead meanwhile."""
+        holds first (as before a grounding): the executor works on them while the node plans;
+        this tick then goes with its plans as soon as they are made (a part of its own, as a
+        span's). In an answer the executor waits for (the stretch's first part) the node only
+        notes the plans as the executor's own: planning them there would only make it wait
+        longer, and the node simulate less ahead meanwhile."""
         if not mind.known or mind.version < 1 or bs.horizon is None or bs.forecast is None:
             return
         got = self._spec_of(ep, mind.version)
@@ -1380,8 +1381,8 @@ class CellNode:
                 continue  # (the executor's to make: see above)
             digest = problem_digest(sid, p)
             if digest not in ep.made:
-                if s.early is not None:
-                    s.early()
+                s.early()
+                s.spanned = True  # (this tick and its plans go as soon as they are made)
                 t0 = time.perf_counter()
                 result = planner(self.scene, spec, world=p.world, monitor=monitor, q0=p.q)
                 wall = time.perf_counter() - t0
