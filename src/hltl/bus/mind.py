@@ -6,7 +6,6 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 from hltl.execution.background import after_running
-from hltl.execution.belief import Belief
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
 from hltl.execution.predicted import PlanKey
 from hltl.skills.library import Transition, step_symbol
@@ -69,19 +68,11 @@ class Mirror:
     def __init__(self, scene: Scene, semantics: ActionSemantics) -> None:
         self.scene = scene
         self.semantics = semantics
-        self._scratch = Belief(scene)
 
     def first(self, obs: WorldState, unavailable: frozenset[str]) -> Mind:
         """The executor's mind after its first tick (time 0): the scene's initial world with
         the first observation merged."""
-        return Mind(0.0, self._merge(initial_world(self.scene), obs, 0.0, unavailable))
-
-    def _merge(
-        self, world: WorldState, obs: WorldState, t: float, unavailable: frozenset[str]
-    ) -> WorldState:
-        self._scratch.world = world
-        w = self._scratch.merged(obs).with_time(t)
-        return w if w.unavailable == unavailable else w.with_unavailable(unavailable)
+        return Mind(0.0, _merge(initial_world(self.scene), obs, 0.0, unavailable))
 
     def tick(
         self,
@@ -103,7 +94,7 @@ class Mirror:
         executor's ``assign``), and the step's end when every action of it has ended."""
         if not prev.known:
             return replace(prev, t=t)
-        world = self._merge(prev.world, obs, t, unavailable)
+        world = _merge(prev.world, obs, t, unavailable)
         trans = dict(prev.trans)
         for h in sorted(handles):
             if h <= prev.ended or h in trans:
@@ -140,6 +131,29 @@ class Mirror:
                 q = got[1].step(q, step_symbol(done, world))
             ended, trans = max(trans), {}
         return Mind(t, world, q, have, ended, trans, keys)
+
+
+def _merge(world: WorldState, obs: WorldState, t: float, unavailable: frozenset[str]) -> WorldState:
+    """:meth:`Belief.observe <hltl.execution.belief.Belief.observe>`'s merge in one go
+    (people and hands from ``obs``, resting objects that people moved), then the time and
+    the robots down, as the executor's tick takes them in. Its other two rules never apply
+    here: the cell's observations are of their tick (none older than the executor's last
+    touch of an object), and after a failed action (re-observed) the mind is given up."""
+    objects = dict(world.objects)
+    for oid, st in obs.objects:
+        cur = objects[oid]
+        if cur.loc.kind in _RESTING and st.loc.kind in _RESTING:
+            objects[oid] = st
+    return WorldState(
+        t,
+        tuple(sorted({**dict(world.humans), **dict(obs.humans)}.items())),
+        tuple(sorted(objects.items())),
+        tuple(sorted({**dict(world.hands), **dict(obs.hands)}.items())),
+        unavailable,
+    )
+
+
+_RESTING = ("rest", "on")
 
 
 def remember(history: list[Mind], mind: Mind) -> None:

@@ -200,6 +200,9 @@ class _Episode:
     made: dict[str, dict[str, Any] | None] = field(default_factory=dict)
     outbox: list[dict[str, Any]] = field(default_factory=list)
     spec_ids: dict[int, tuple[Any, str]] = field(default_factory=dict)
+    # the executor's forecaster as the node feeds it: after which observation, and its
+    # window and least speed
+    forecaster: tuple[WorldState, ConstantVelocityPredictor, tuple[float, float]] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -1288,7 +1291,7 @@ class CellNode:
         prev = before(ep.minds, t)
         if prev is None:
             return None
-        statuses = {h: r.status for h, r in latest.items()}
+        statuses = {h: latest[h].status for h in ep.handles if h > prev.ended}
         ended = [r.handle for r in reports if r.status.terminal]
         down = frozenset(ep.cell.unavailable(t))
         mind = self._mirror_of().tick(
@@ -1346,12 +1349,10 @@ class CellNode:
         if got is None or bs.check is None:
             return
         spec, monitor = got
-        predictor = ConstantVelocityPredictor(*bs.forecast)
-        for obs in ep.recent:
-            predictor.observe(obs.t, obs.humans)
+        predictor = self._forecaster(ep, bs.forecast)
         if not any(predictor.moving(h) for h, _ in mind.world.humans):
             return  # (nobody walks: no forecast world)
-        statuses = {h: r.status for h, r in latest.items()}
+        statuses = {h: latest[h].status for h in ep.handles if h > mind.ended}
         fc = background_forecast(
             self.scene,
             self._semantics_of(),
@@ -1394,6 +1395,26 @@ class CellNode:
             if made is not None:
                 ep.outbox.append(made)
         ep.minds[-1] = replace(mind, keys=frozenset(keys))
+
+    @staticmethod
+    def _forecaster(ep: _Episode, forecast: tuple[float, float]) -> ConstantVelocityPredictor:
+        """The executor's forecaster as it is after the cell's last observation (fed the same
+        ones): the one of the tick before fed this one, or made again from the last second
+        of them (after a restore, or another forecaster)."""
+        last = ep.recent[-1]
+        kept = ep.forecaster
+        if kept is not None and kept[2] == forecast:
+            if kept[0] is last:
+                return kept[1]
+            if len(ep.recent) > 1 and ep.recent[-2] is kept[0]:
+                kept[1].observe(last.t, last.humans)
+                ep.forecaster = (last, kept[1], forecast)
+                return kept[1]
+        predictor = ConstantVelocityPredictor(*forecast)
+        for obs in ep.recent:
+            predictor.observe(obs.t, obs.humans)
+        ep.forecaster = (last, predictor, forecast)
+        return predictor
 
     @staticmethod
     def _with_plans(ep: _Episode | None, head: dict[str, Any]) -> dict[str, Any]:
