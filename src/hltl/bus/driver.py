@@ -203,22 +203,25 @@ def _runnable(planner: object) -> ExactPlanner | None:
     return p
 
 
-def _wire_check(config: object, predictor: object) -> WireCheck | None:
+def _wire_check(config: object, predictor: object, background: bool = False) -> WireCheck | None:
     """The executor's check before a dispatch, for the node to hold back what it holds
-    (``None``: not one the node can make)."""
+    (``None``: not one the node can make); with ``background``, its forecast's horizon too
+    (the node then makes its background plans)."""
     c, f = config, predictor
     if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
         return WireCheck(
             c.intrusion_speed,
             c.predict_dt,
             None if f is None else (f.window, f.min_speed),
-            c.horizon if c.predict and f is not None else None,
+            c.horizon if background and c.predict and f is not None else None,
         )
     return None
 
 
 def wire_basis(
-    basis: Basis, known: tuple[int, Mapping[str, Any] | None] | None = None
+    basis: Basis,
+    known: tuple[int, Mapping[str, Any] | None] | None = None,
+    background: bool = False,
 ) -> WireBasis | None:
     """The executor's basis as it goes to the node, or ``None`` when its planner is not one the
     node can run; ``known`` is a spec version and its JSON form already made (not made
@@ -229,17 +232,17 @@ def wire_basis(
     spec = known[1] if known is not None and known[0] == basis.version else None
     if spec is None:
         spec = spec_to_dict(basis.spec)
-    check = _wire_check(basis.config, basis.predictor)
+    check = _wire_check(basis.config, basis.predictor, background)
     return WireBasis(basis.version, tuple(basis.q), p.algorithm, p.timeout, check, spec)
 
 
-def wire_briefing(briefing: Briefing) -> WireBriefing | None:
+def wire_briefing(briefing: Briefing, background: bool = False) -> WireBriefing | None:
     """The executor's briefing as it goes to the node, or ``None`` when its planner is not
     one the node can run."""
     p = _runnable(briefing.planner)
     if p is None:
         return None
-    check = _wire_check(briefing.config, briefing.predictor)
+    check = _wire_check(briefing.config, briefing.predictor, background)
     return WireBriefing(briefing.instruction, p.algorithm, p.timeout, check)
 
 
@@ -271,6 +274,11 @@ class BusCell:
         foresee: with ``guess``, also send the executor's basis (:meth:`foresee`), for the
             node to plan the executor's next step itself where the hint is stale and the first
             step (``False``: hints only).
+        background: with ``foresee``, also send the executor's forecast horizon, for the node
+            to make the executor's background plans for forecast worlds as it simulates ahead
+            (sent with the ticks; :meth:`planned`). Off by default: measured under load it
+            lengthened the executor's waits more than it saved (docs/bus.md, "Background
+            plans made by the node").
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -299,9 +307,11 @@ class BusCell:
         stream: bool | None = None,
         guess: bool = True,
         foresee: bool = True,
+        background: bool = False,
     ) -> None:
         self.session = session
         self.guess = guess
+        self.background = background
         # (a streamed stretch is never run past a step's end: nothing to foresee)
         self.foresight = guess and foresee and stream is not True
         self.perceived = perceived
@@ -1052,7 +1062,7 @@ class BusCell:
         can run (the exact planner with the scene's kinematics and costs)."""
         if not self.foresight:
             return
-        self._basis = wire_basis(basis, self._spec_wire)
+        self._basis = wire_basis(basis, self._spec_wire, self.background)
         if self._basis is None:
             return
         self._spec_wire = (basis.version, self._basis.spec)
@@ -1081,7 +1091,7 @@ class BusCell:
             or self._step
         ):
             return
-        wire = wire_briefing(briefing)
+        wire = wire_briefing(briefing, self.background)
         if wire is not None:
             self._briefed = True
             self._foresee_first({"brief": wire.to_dict()})
@@ -1343,6 +1353,7 @@ def bus_cell(
     stream: bool | None = None,
     guess: bool = True,
     foresee: bool = True,
+    background: bool = False,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1375,6 +1386,7 @@ def bus_cell(
             stream=stream,
             guess=guess,
             foresee=foresee,
+            **({"background": True} if background else {}),
         )
         if opened is not None:
             opened.append(c)

@@ -1064,9 +1064,11 @@ class CellNode:
         cell = ep.cell
         obs, instructions, reports = self._step_cell(ep, t, latest, publish=publish)
         bs = ep.basis
-        self._mind_tick(
+        mind = self._mind_tick(
             ep, t, obs, reports, latest, 0 if bs is None else bs.basis.version, bool(instructions)
         )
+        if mind is not None and bs is not None:  # (the executor's own to make: noted)
+            self._background(ep, None, bs, mind, latest)
         return (
             obs,
             {
@@ -1330,7 +1332,7 @@ class CellNode:
         return known[1]
 
     def _background(
-        self, ep: _Episode, s: _Stretch, bs: _Basis, mind: Mind, latest: dict[int, Report]
+        self, ep: _Episode, s: _Stretch | None, bs: _Basis, mind: Mind, latest: dict[int, Report]
     ) -> None:
         """Make the executor's background plans for the tick ``mind`` is after, as its loop
         will when it gets there (:func:`~hltl.execution.background.background_forecast` on
@@ -1340,9 +1342,10 @@ class CellNode:
         itself. Only while the node streams the stretch's further parts, sending the ticks it
         holds first (as before a grounding): the executor works on them while the node plans;
         this tick then goes with its plans as soon as they are made (a part of its own, as a
-        span's). In an answer the executor waits for (the stretch's first part) the node only
-        notes the plans as the executor's own: planning them there would only make it wait
-        longer, and the node simulate less ahead meanwhile."""
+        span's). In an answer the executor waits for (the stretch's first part, or the tick
+        it asked for: ``s`` None) the node only notes the plans as the executor's own:
+        planning them there would only make it wait longer, and the node simulate less ahead
+        meanwhile."""
         if not mind.known or mind.version < 1 or bs.horizon is None or bs.forecast is None:
             return
         got = self._spec_of(ep, mind.version)
@@ -1378,9 +1381,9 @@ class CellNode:
             if p.key in keys:
                 continue
             keys.add(p.key)
-            if s.early is None:
-                continue  # (the executor's to make: see above)
             digest = problem_digest(sid, p)
+            if s is None or s.early is None:
+                continue  # (the executor's to make: see above)
             if digest not in ep.made:
                 s.early()
                 s.spanned = True  # (this tick and its plans go as soon as they are made)
