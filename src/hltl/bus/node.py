@@ -1290,6 +1290,8 @@ class CellNode:
         """The executor's mind after its tick at ``t`` (see :class:`~hltl.bus.mind.Mirror`),
         kept along the cell's path; ``unheard``: an instruction came that the node did not
         ground (the executor's next spec is not known here)."""
+        if ep.basis is not None and ep.basis.horizon is None:
+            ep.minds.clear()  # (the executor wants no background plans: nothing to mirror)
         prev = before(ep.minds, t)
         if prev is None:
             return None
