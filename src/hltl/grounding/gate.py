@@ -25,7 +25,7 @@ from re import Pattern as Pattern
 from re import _parser  # re's own pattern parser
 from re import compile as compile  # re's name, for the module-level patterns
 from re import escape as escape
-from typing import Any
+from typing import Any, TypeVar
 
 __all__ = [
     "IGNORECASE",
@@ -164,6 +164,25 @@ def _source(pattern: str | re.Pattern[str], flags: int) -> tuple[str, int]:
     return pattern, flags
 
 
+_T = TypeVar("_T")
+
+
+def _gated(
+    pattern: str | re.Pattern[str],
+    flags: int,
+    string: str,
+    on_no_match: _T,
+    method: Callable[..., _T],
+    *args: Any,
+) -> _T:
+    """``method`` of the compiled ``pattern`` called with ``args``, or ``on_no_match`` (what re
+    returns for no match) where the gate says ``pattern`` cannot match ``string``."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return on_no_match
+    return method(_compiled(source, flags), *args)
+
+
 def sub(
     pattern: str | re.Pattern[str],
     repl: str | Callable[[re.Match[str]], str],
@@ -172,59 +191,38 @@ def sub(
     flags: int = 0,
 ) -> str:
     """re.sub, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return string
-    return _compiled(source, flags).sub(repl, string, count)
+    return _gated(pattern, flags, string, string, re.Pattern.sub, repl, string, count)
 
 
 def search(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.search, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).search(string)
+    return _gated(pattern, flags, string, None, re.Pattern.search, string)
 
 
 def match(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.match, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).match(string)
+    return _gated(pattern, flags, string, None, re.Pattern.match, string)
 
 
 def fullmatch(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.fullmatch, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).fullmatch(string)
+    return _gated(pattern, flags, string, None, re.Pattern.fullmatch, string)
 
 
 def findall(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> list[Any]:
     """re.findall, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return []
-    return _compiled(source, flags).findall(string)
+    return _gated(pattern, flags, string, [], re.Pattern.findall, string)
 
 
 def finditer(
     pattern: str | re.Pattern[str], string: str, flags: int = 0
 ) -> Iterator[re.Match[str]]:
     """re.finditer, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return iter(())
-    return _compiled(source, flags).finditer(string)
+    return _gated(pattern, flags, string, iter(()), re.Pattern.finditer, string)
 
 
 def split(
     pattern: str | re.Pattern[str], string: str, maxsplit: int = 0, flags: int = 0
 ) -> list[str | Any]:
     """re.split, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return [string]
-    return _compiled(source, flags).split(string, maxsplit)
+    return _gated(pattern, flags, string, [string], re.Pattern.split, string, maxsplit)
