@@ -72,6 +72,7 @@ class Loopback:
         stream: bool | None = None,
         guess: bool = True,
         foresee: bool = True,
+        background: bool = False,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -82,7 +83,7 @@ class Loopback:
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
         make: Any = (
-            partial(bus_cell, foresee=foresee)
+            partial(bus_cell, foresee=foresee, background=background)
             if realtime is None
             else partial(realtime_bus_cell, factor=realtime)
         )

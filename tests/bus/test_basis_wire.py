@@ -74,6 +74,10 @@ def test_the_node_holds_the_executors_basis() -> None:
     assert held.check is not None
     assert (held.check.intrusion_speed, held.check.predict_dt) == (0.3, cfg.predict_dt)
     assert held.forecast == (0.7, pred.min_speed)
+    assert held.horizon is None  # (no background plans asked for)
+    wb = wire_basis(Basis(spec, 1, q, planner, cfg, pred), background=True)
+    assert wb is not None and wb.check is not None and wb.check.horizon == cfg.horizon
+    assert _Basis.parse(json.loads(json.dumps(wb.to_dict())), None).horizon == cfg.horizon
     # a later basis of the same spec names it only; the node keeps the one it has
     later = _Basis.parse(json.loads(json.dumps(w.to_dict(with_spec=False))), held)
     assert later.basis.spec is held.basis.spec and later.monitor is held.monitor

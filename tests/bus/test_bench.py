@@ -26,6 +26,9 @@ def test_bench_bus_small() -> None:
     # and with hints but without the node's foresight: the same log
     h = b.hinted
     assert h is not None and h.same_logs == 1
+    # and with the node making the executor's background plans: the same log (1-1 #0 walks)
+    g = b.background
+    assert g is not None and g.same_logs == 1 and 0 <= g.given <= g.asked and g.asked > 0
     assert b.dispatched > 0 and b.lost == 0 and b.duplicated == 0
     assert 0 < b.round_trip_ms[0] <= b.round_trip_ms[1] <= b.round_trip_ms[2]
     r = b.realtime  # the same trial in real time: nothing lost or twice, the goals met
@@ -39,6 +42,7 @@ def test_bench_bus_small() -> None:
     assert "process of its own" in text and "waits" in text and "streamed instead" in text
     assert "without the executor's hints" in text
     assert "without the node's foresight" in text
+    assert "background plans" in text
 
 
 def test_bench_bus_suite_with_the_3d_simulator() -> None:

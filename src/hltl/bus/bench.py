@@ -95,6 +95,8 @@ class BusBench:
     unhinted: ApartBench | None = None
     # the same with hints but without the node's foresight (the executor's basis not sent)
     hinted: ApartBench | None = None
+    # the same with the node making the executor's background plans (session 23)
+    background: ApartBench | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,6 +113,8 @@ class ApartBench:
     inproc_main_cpu_s: float = 0.0  # the loop's thread's CPU time in-process, for comparison
     queries: int = 0  # queries the executor sent
     guessed: int = 0  # the executor's starts taken from the node's guesses (no query)
+    asked: int = 0  # the executor's background plans (it asked its driver for each)
+    given: int = 0  # of those, made by the node
 
 
 @dataclass(frozen=True, slots=True)
@@ -256,6 +260,7 @@ def bench_bus(
             True: [],
             "unhinted": [],
             "hinted": [],
+            "background": [],
         }
         with _node_process(episodes) as (apart_session, node_cpu):
             for i, tr in enumerate(trials):
@@ -279,6 +284,9 @@ def bench_bus(
                 runs["hinted"].append(
                     _apart_episode(apart_session, i, tr, kw, a, None, foresee=False)
                 )
+                runs["background"].append(
+                    _apart_episode(apart_session, i, tr, kw, a, None, background=True)
+                )
                 # the node in this process
                 b, stats = _suite_episode(ns, cs, tr, kw)
                 bus += stats.wall
@@ -292,7 +300,7 @@ def bench_bus(
                     f"{tr.config}#{tr.index}: same log {same}, node apart "
                     f"{sum(r.same for r in runs[True])}"
                 )
-        apart_bench, streamed, unhinted, hinted = (
+        apart_bench, streamed, unhinted, hinted, background = (
             ApartBench(
                 sum(r.wall for r in runs[stream]),
                 sum(r.cpu for r in runs[stream]),
@@ -303,8 +311,10 @@ def bench_bus(
                 inproc_main,
                 sum(r.queries for r in runs[stream]),
                 sum(r.guessed for r in runs[stream]),
+                sum(r.asked for r in runs[stream]),
+                sum(r.given for r in runs[stream]),
             )
-            for stream in (None, True, "unhinted", "hinted")
+            for stream in (None, True, "unhinted", "hinted", "background")
         )
         # 3. faults: every fault at once on both sides; count lost and duplicated dispatches
         faults = FaultModel(
@@ -358,6 +368,7 @@ def bench_bus(
         rt_bench,
         unhinted,
         hinted,
+        background,
     )
 
 
@@ -473,6 +484,8 @@ class _Apart:
     queries: int
     same: bool
     guessed: int = 0
+    asked: int = 0
+    given: int = 0
 
 
 def _apart_episode(
@@ -484,10 +497,17 @@ def _apart_episode(
     stream: bool | None,
     guess: bool = True,
     foresee: bool = True,
+    background: bool = False,
 ) -> _Apart:
     opened: list[BusCell] = []
     make = bus_cell(
-        session, cell=f"suite{i}", opened=opened, stream=stream, guess=guess, foresee=foresee
+        session,
+        cell=f"suite{i}",
+        opened=opened,
+        stream=stream,
+        guess=guess,
+        foresee=foresee,
+        background=background,
     )
     t0, c0, m0 = time.perf_counter(), time.process_time(), time.thread_time()
     b = run_episode(tr.scene, simulator=make, **kw)
@@ -496,7 +516,17 @@ def _apart_episode(
     opened[0].end()
     opened[0].close()
     same = _strip(list(local.records)) == _strip(list(b.records))
-    return _Apart(wall, cpu, main, st.waited, st.queries, same, st.guessed)
+    return _Apart(
+        wall,
+        cpu,
+        main,
+        st.waited,
+        st.queries,
+        same,
+        st.guessed,
+        st.background_asked,
+        st.background_given,
+    )
 
 
 @dataclass(frozen=True, slots=True)
@@ -721,6 +751,17 @@ def _format_unhinted(b: BusBench) -> list[str]:
             f"{hinted.bus_s:.2f} s ({_pct(hinted.bus_s, b.inproc_s):+.1f} %); "
             f"{hinted.waited_s:.2f} s; {hinted.main_cpu_s:.2f} s ({ap.main_cpu_s:.2f} s); "
             f"{hinted.queries}; {hinted.guessed} | — |"
+        )
+    bg = b.background
+    if bg is not None:
+        rows.append(
+            "| the same with the node making the executor's background plans (its forecast "
+            "worlds' plans, sent with the ticks: `bus_cell(background=True)`, session 23; off "
+            "by default): wall; time the loop waited for the node; the loop's CPU time "
+            "(without: as deployed); plans made by the node / the executor's; logs equal | "
+            f"{bg.bus_s:.2f} s ({_pct(bg.bus_s, b.inproc_s):+.1f} %); {bg.waited_s:.2f} s "
+            f"({ap.waited_s:.2f} s); {bg.main_cpu_s:.2f} s ({ap.main_cpu_s:.2f} s); "
+            f"{bg.given} / {bg.asked}; {bg.same_logs}/{b.episodes} | — |"
         )
     return [
         *rows,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import importlib
 import json
 import math
@@ -13,6 +14,7 @@ from typing import Any, Literal, Protocol
 
 from hltl.errors import BackendUnavailableError, BusError, HltlError
 from hltl.execution.drivers import ActionState, ActionStatus
+from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.skills.library import Action
 from hltl.spec.monitor import DONE
 from hltl.world.scene import Vec3
@@ -165,6 +167,9 @@ class WireCheck:
     intrusion_speed: float
     predict_dt: float
     forecast: tuple[float, float] | None = None
+    # the forecast's horizon when the executor plans for forecast worlds (None: it does not,
+    # or an executor from before session 23)
+    horizon: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -270,6 +275,95 @@ class WireBriefing:
             return cls(text, algorithm, timeout, _check_from(d.get("check")))
 
 
+@dataclass(frozen=True, slots=True)
+class WirePlan:
+    """One of the executor's background plans as the node made it (an answer's or reply's
+    ``"plans"``): the problem's digest (:func:`hltl.execution.background.problem_digest`),
+    the wall-clock seconds it took the node, and the planner's result, its floats exact
+    (steps' starts and durations, makespan, bound) so the executor's decisions on it are its
+    own plan's. A plan that does not parse is dropped by the executor (it plans itself).
+
+    Attributes:
+        digest: the problem planned.
+        wall_s: the node's wall-clock seconds for it.
+        result: what the planner returned (its stats carry only the nodes expanded and
+            generated).
+    """
+
+    digest: str
+    wall_s: float
+    result: PlanResult
+
+    def to_dict(self) -> dict[str, Any]:
+        r = self.result
+        return {
+            "id": self.digest,
+            "wall": self.wall_s,
+            "status": r.status.value,
+            "steps": [
+                {
+                    "start": st.start,
+                    "duration": st.duration,
+                    "actions": [a.to_dict() for a in st.actions],
+                    "bindings": [[b.robot, b.leaf, b.role] for b in st.bindings],
+                }
+                for st in r.steps
+            ],
+            "makespan": r.makespan,
+            "expanded": r.stats.expanded,
+            "generated": r.stats.generated,
+            "reason": r.reason,
+            "bound": r.lower_bound,
+        }
+
+    @classmethod
+    def from_dict(cls, d: Any) -> WirePlan:
+        """Inverse of :meth:`to_dict`, every field checked.
+
+        Raises:
+            BusError: the payload is not a plan (one line saying what is wrong).
+        """
+        with _malformed("background plan"):
+            if not isinstance(d, Mapping):
+                raise ValueError(f"expected a JSON object, got {d!r:.40}")
+            digest, reason = d["id"], d["reason"]
+            if not isinstance(digest, str) or not isinstance(reason, str):
+                raise ValueError(f"id and reason must be strings, got {digest!r:.40}")
+            try:
+                steps = tuple(
+                    PlanStep(
+                        float(st["start"]),
+                        float(st["duration"]),
+                        tuple(Action.from_dict(a) for a in st["actions"]),
+                        tuple(Binding(str(b[0]), str(b[1]), str(b[2])) for b in st["bindings"]),
+                    )
+                    for st in d["steps"]
+                )
+            except (TypeError, IndexError, HltlError) as exc:
+                raise ValueError(f"its steps: {exc}") from None
+            makespan, bound = d["makespan"], d["bound"]
+            result = PlanResult(
+                PlanStatus(d["status"]),
+                steps,
+                None if makespan is None else _number(makespan, "makespan"),
+                SearchStats(
+                    expanded=_int(d["expanded"], "expanded"),
+                    generated=_int(d["generated"], "generated"),
+                ),
+                reason,
+                None if bound is None else _number(bound, "bound"),
+            )
+            return cls(digest, _number(d["wall"], "wall"), result)
+
+
+def spec_digest(spec: Mapping[str, Any]) -> str:
+    """A spec's name in a background plan's digest: its JSON form (as
+    :func:`hltl.spec.hierarchy.spec_to_dict` writes it), keys sorted, hashed; the same on
+    the node and the executor's side for the same spec."""
+    text = json.dumps(spec, sort_keys=True, separators=(",", ":"))
+    return hashlib.blake2b(text.encode("utf-8"), digest_size=16).hexdigest()
+
+
 @contextmanager
 def _malformed(what: str) -> Iterator[None]:
     """A missing key or a bad value read inside is one :class:`BusError` line naming ``what``."""
@@ -294,11 +388,14 @@ def _check_to(c: WireCheck | None) -> dict[str, Any] | None:
     if c is None:
         return None
     f = c.forecast
-    return {
+    d: dict[str, Any] = {
         "intrusion_speed": c.intrusion_speed,
         "predict_dt": c.predict_dt,
         "forecast": None if f is None else {"window": f[0], "min_speed": f[1]},
     }
+    if c.horizon is not None:
+        d["horizon"] = c.horizon
+    return d
 
 
 def _check_from(c: Any) -> WireCheck | None:
@@ -318,6 +415,7 @@ def _check_from(c: Any) -> WireCheck | None:
             _number(f["window"], "forecast window", positive=True),
             _number(f["min_speed"], "forecast min_speed"),
         ),
+        None if c.get("horizon") is None else _number(c["horizon"], "horizon", positive=True),
     )
 
 

@@ -19,9 +19,11 @@ from hltl.bus.codec import (
     WireBasis,
     WireBriefing,
     WireCheck,
+    WirePlan,
     dumps,
     encode_trajectory,
     loads,
+    spec_digest,
     world_from_wire,
 )
 from hltl.bus.faults import FaultModel, Link
@@ -30,6 +32,7 @@ from hltl.bus.perception import PerceptionClient
 from hltl.bus.session import executor_opened, let_go, zenoh
 from hltl.bus.ticks import Tick, TickReader, decode_answer
 from hltl.errors import BusError
+from hltl.execution.background import Given, Problem, problem_digest
 from hltl.execution.drivers import (
     ActionState,
     ActionStatus,
@@ -126,6 +129,11 @@ class DriverStats:
     missed: int = 0  # real time: the node's ticks that never arrived (filled by asking)
     # real time: actions the guard halted while the loop was busy (see RealtimeBusCell.guard)
     guarded: int = 0
+    # the executor's background plans: asked for here, and given (made by the node for
+    # exactly that problem), and plans received that did not parse (dropped)
+    background_asked: int = 0
+    background_given: int = 0
+    bad_plans: int = 0
     round_trips: list[float] = field(default_factory=list)
 
 
@@ -195,19 +203,25 @@ def _runnable(planner: object) -> ExactPlanner | None:
     return p
 
 
-def _wire_check(config: object, predictor: object) -> WireCheck | None:
+def _wire_check(config: object, predictor: object, background: bool = False) -> WireCheck | None:
     """The executor's check before a dispatch, for the node to hold back what it holds
-    (``None``: not one the node can make)."""
+    (``None``: not one the node can make); with ``background``, its forecast's horizon too
+    (the node then makes its background plans)."""
     c, f = config, predictor
     if isinstance(c, ExecutorConfig) and (f is None or type(f) is ConstantVelocityPredictor):
         return WireCheck(
-            c.intrusion_speed, c.predict_dt, None if f is None else (f.window, f.min_speed)
+            c.intrusion_speed,
+            c.predict_dt,
+            None if f is None else (f.window, f.min_speed),
+            c.horizon if background and c.predict and f is not None else None,
         )
     return None
 
 
 def wire_basis(
-    basis: Basis, known: tuple[int, Mapping[str, Any] | None] | None = None
+    basis: Basis,
+    known: tuple[int, Mapping[str, Any] | None] | None = None,
+    background: bool = False,
 ) -> WireBasis | None:
     """The executor's basis as it goes to the node, or ``None`` when its planner is not one the
     node can run; ``known`` is a spec version and its JSON form already made (not made
@@ -218,17 +232,17 @@ def wire_basis(
     spec = known[1] if known is not None and known[0] == basis.version else None
     if spec is None:
         spec = spec_to_dict(basis.spec)
-    check = _wire_check(basis.config, basis.predictor)
+    check = _wire_check(basis.config, basis.predictor, background)
     return WireBasis(basis.version, tuple(basis.q), p.algorithm, p.timeout, check, spec)
 
 
-def wire_briefing(briefing: Briefing) -> WireBriefing | None:
+def wire_briefing(briefing: Briefing, background: bool = False) -> WireBriefing | None:
     """The executor's briefing as it goes to the node, or ``None`` when its planner is not
     one the node can run."""
     p = _runnable(briefing.planner)
     if p is None:
         return None
-    check = _wire_check(briefing.config, briefing.predictor)
+    check = _wire_check(briefing.config, briefing.predictor, background)
     return WireBriefing(briefing.instruction, p.algorithm, p.timeout, check)
 
 
@@ -260,6 +274,11 @@ class BusCell:
         foresee: with ``guess``, also send the executor's basis (:meth:`foresee`), for the
             node to plan the executor's next step itself where the hint is stale and the first
             step (``False``: hints only).
+        background: with ``foresee``, also send the executor's forecast horizon, for the node
+            to make the executor's background plans for forecast worlds as it simulates ahead
+            (sent with the ticks; :meth:`planned`). Off by default: measured under load it
+            lengthened the executor's waits more than it saved (docs/bus.md, "Background
+            plans made by the node").
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -288,9 +307,11 @@ class BusCell:
         stream: bool | None = None,
         guess: bool = True,
         foresee: bool = True,
+        background: bool = False,
     ) -> None:
         self.session = session
         self.guess = guess
+        self.background = background
         # (a streamed stretch is never run past a step's end: nothing to foresee)
         self.foresight = guess and foresee and stream is not True
         self.perceived = perceived
@@ -340,6 +361,9 @@ class BusCell:
         self._basis: WireBasis | None = None
         self._spec_sent = 0  # the last spec version sent whole (later bases name it only)
         self._spec_wire: tuple[int, Mapping[str, Any] | None] | None = None
+        # background plans the node made, by problem digest, and each spec's digest by version
+        self._plans: dict[str, Given] = {}
+        self._spec_ids: dict[int, str] = {}
         self._foresee_next = False  # the node plans the next guessed step itself: wait for it
         # it does so once the basis of a spec newer than this version comes (an instruction
         # came in the step: None, it does not wait)
@@ -627,6 +651,7 @@ class BusCell:
                     d, ticks = decode_answer(
                         reply.ok.payload.to_bytes(), f"answer from {key}", self.episode
                     )
+                    self._take_plans(d)
                     if "from" in d:  # streamed ticks after an answer that was lost: the
                         continue  # query's end is waited for and it is asked again
                     self.stats.round_trips.append(time.perf_counter() - t0)
@@ -648,6 +673,32 @@ class BusCell:
                 # unless its answer was lost; a short pause lets a restarting route settle
                 time.sleep(min(0.01, self.timing.timeout))
         return None
+
+    def _take_plans(self, d: dict[str, Any]) -> None:
+        """Keep the background plans an answer or reply carries (one that does not parse is
+        counted and dropped: the executor makes that plan itself)."""
+        for item in d.pop("plans", ()):
+            try:
+                wp = WirePlan.from_dict(item)
+            except BusError:
+                self.stats.bad_plans += 1
+                continue
+            self._plans[wp.digest] = Given(wp.result, wp.wall_s)
+
+    def planned(self, spec_version: int, problem: Problem) -> Given | None:
+        """The executor's background plan for ``problem`` if the node made it
+        (:class:`~hltl.execution.background.PlansAhead`): the node mirrors the executor's
+        state along the cell's path and plans for the forecast world as the executor's loop
+        will, sending each plan with the ticks it is for; taken only for exactly the same
+        problem (the spec, the monitor state, the whole forecast world)."""
+        self.stats.background_asked += 1
+        sid = self._spec_ids.get(spec_version)
+        if sid is None or not self._plans:
+            return None
+        got = self._plans.get(problem_digest(sid, problem))
+        if got is not None:
+            self.stats.background_given += 1
+        return got
 
     def _take(self, d: dict[str, Any]) -> None:
         """Take in a reset, step or peek answer, and the ticks simulated after it."""
@@ -882,6 +933,7 @@ class BusCell:
                 d, ticks = decode_answer(
                     reply.ok.payload.to_bytes(), "streamed ticks", self.episode
                 )
+                self._take_plans(d)
                 if d.get("from") != self._streamed or ticks is None:
                     return
                 # (a guessed step's reply ends where the next guessed step would start)
@@ -1010,10 +1062,12 @@ class BusCell:
         can run (the exact planner with the scene's kinematics and costs)."""
         if not self.foresight:
             return
-        self._basis = wire_basis(basis, self._spec_wire)
+        self._basis = wire_basis(basis, self._spec_wire, self.background)
         if self._basis is None:
             return
         self._spec_wire = (basis.version, self._basis.spec)
+        if basis.version not in self._spec_ids and self._basis.spec is not None:
+            self._spec_ids[basis.version] = spec_digest(self._basis.spec)
         if not self.guess or self._motion or self._dead or not self._defer:
             return
         if not (self._first_sent or self._step):
@@ -1037,7 +1091,7 @@ class BusCell:
             or self._step
         ):
             return
-        wire = wire_briefing(briefing)
+        wire = wire_briefing(briefing, self.background)
         if wire is not None:
             self._briefed = True
             self._foresee_first({"brief": wire.to_dict()})
@@ -1299,6 +1353,7 @@ def bus_cell(
     stream: bool | None = None,
     guess: bool = True,
     foresee: bool = True,
+    background: bool = False,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1331,6 +1386,7 @@ def bus_cell(
             stream=stream,
             guess=guess,
             foresee=foresee,
+            **({"background": True} if background else {}),
         )
         if opened is not None:
             opened.append(c)

@@ -22,20 +22,24 @@ from hltl.bus.codec import (
     WireBasis,
     WireBriefing,
     WireCheck,
+    WirePlan,
     decode_trajectory,
     dumps,
     encode_joint_state,
     encode_pose,
     finite_or_none,
     loads,
+    spec_digest,
     world_to_wire,
 )
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
+from hltl.bus.mind import Mind, Mirror, before, remember
 from hltl.bus.session import executor_here, let_go
 from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
+from hltl.execution.background import background_forecast, problem_digest
 from hltl.execution.drivers import ActionState, ActionStatus, Basis, Handle
 from hltl.execution.executor import ExactPlanner, ExecutorConfig, check_step
 from hltl.execution.foresee import after_step, foresee_steps
@@ -44,6 +48,7 @@ from hltl.grounding import make_grounder
 from hltl.grounding.base import Grounder
 from hltl.motion.trajectory import JointTrajectory, MotionPlan
 from hltl.perception.predict import ConstantVelocityPredictor
+from hltl.planner import PlanStatus
 from hltl.sim.episode import Cell, CellFactory
 from hltl.sim.events import events_from_dict
 from hltl.sim.instruct import ground_all, ground_instruction
@@ -51,7 +56,7 @@ from hltl.sim.simulator import PerceptionModel, Simulator
 from hltl.sim3d.driver import MujocoSimulator
 from hltl.skills.library import Action
 from hltl.skills.semantics import ActionSemantics
-from hltl.spec.hierarchy import spec_from_dict, spec_to_dict
+from hltl.spec.hierarchy import HSpec, spec_from_dict, spec_to_dict
 from hltl.spec.monitor import HierarchyMonitor, MonitorState, carry_over
 from hltl.world.scene import Scene, scene_from_dict
 from hltl.world.state import WorldState
@@ -141,6 +146,8 @@ class NodeStats:
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
     # spans a stretch ran on past, nothing having happened (the next one sent unasked)
     spans: int = 0
+    # the executor's background plans made here (for forecast worlds, sent with the ticks)
+    background: int = 0
 
 
 @dataclass(slots=True)
@@ -186,6 +193,16 @@ class _Episode:
     ] = field(default_factory=dict)
     # the last stretch simulated ahead (a step it held back is held on in the next one)
     stretch: Any = None
+    # the executor's state after each tick along the cell's path (for its background plans),
+    # the plans made (by problem digest), those to send with the next answer or reply, and
+    # each spec's digest by version (with the spec it was made of)
+    minds: list[Mind] = field(default_factory=list)
+    made: dict[str, dict[str, Any] | None] = field(default_factory=dict)
+    outbox: list[dict[str, Any]] = field(default_factory=list)
+    spec_ids: dict[int, tuple[Any, str]] = field(default_factory=dict)
+    # the executor's forecaster as the node feeds it: after which observation, and its
+    # window and least speed
+    forecaster: tuple[WorldState, ConstantVelocityPredictor, tuple[float, float]] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -202,6 +219,9 @@ class _Basis:
     # the spec's JSON form when the node grounded it itself (see CellNode._take_brief): the
     # executor's own spec of the same version, compared with it, replaces it if different
     wire: Any = None
+    # the executor's forecast horizon when it plans for forecast worlds (None: the node
+    # makes none of its background plans)
+    horizon: float | None = None
 
     @classmethod
     def parse(cls, d: Any, known: _Basis | None) -> _Basis:
@@ -239,6 +259,7 @@ class _Basis:
             monitor,
             _check(c),
             None if c is None else c.forecast,
+            horizon=None if c is None else c.horizon,
         )
 
 
@@ -253,6 +274,15 @@ def _check(c: WireCheck | None) -> ExecutorConfig | None:
     if c is None:
         return None
     return ExecutorConfig(intrusion_speed=c.intrusion_speed, predict_dt=c.predict_dt)
+
+
+@dataclass(frozen=True, slots=True)
+class _Forecasting:
+    """The executor's forecast settings as its background step reads them."""
+
+    horizon: float
+    predict_dt: float
+    predict: bool = True
 
 
 @dataclass(slots=True)
@@ -485,6 +515,7 @@ class CellNode:
         self._later: list[tuple[_Episode, list[_Ticked], bool]] = []
         self._ahead_sent = False  # the last answer carried ticks ahead (see _pause)
         self._semantics: ActionSemantics | None = None  # (foresight: contexts, transitions)
+        self._mirror: Mirror | None = None  # (background plans: the executor's mind)
         # the executor's briefings are grounded here with the offline grounder (loaded now,
         # about half a second once per process, not in an episode)
         self._grounder: Grounder = make_grounder("offline")
@@ -583,6 +614,7 @@ class CellNode:
         obs = cell.observe(0.0)
         ep.seen = obs
         _remember(ep.recent, obs)
+        ep.minds.append(self._mirror_of().first(obs, frozenset(cell.unavailable(0.0))))
         answer = {
             "episode": episode,
             "observation": world_to_wire(obs),
@@ -728,7 +760,7 @@ class CellNode:
                         head["foresee"] = True  # (the next one planned here)
                     if s.guess_due and s.awaiting is not None and s.basis is not None:
                         head["awaits"] = s.basis.basis.version  # (once a newer one's basis)
-                chunk = encode_answer(head, ticks)
+                chunk = encode_answer(self._with_plans(ep, head), ticks)
                 try:
                     self._reply_bytes(query, chunk)
                 except Exception:  # the query timed out at the executor: it asks again
@@ -748,7 +780,7 @@ class CellNode:
         head = {"from": len(s.batch.ticks) - len(ticks), "more": True}
         head["guessed"], head["split"] = False, True
         try:
-            self._reply_bytes(query, encode_answer(head, ticks))
+            self._reply_bytes(query, encode_answer(self._with_plans(self._ep, head), ticks))
         except Exception:  # the query timed out at the executor: the stream's next reply says
             return False
         ticks.clear()
@@ -822,7 +854,7 @@ class CellNode:
                 answer["status"] = status + answer["status"]
             self._take_basis(ep, d.get("ahead"))
             s, ahead = self._look_ahead(ep, n, t, answer, _Ahead.parse(d.get("ahead")), base)
-            reply = encode_answer(answer, ahead)
+            reply = encode_answer(self._with_plans(ep, answer), ahead)
             ep.last_step, ep.last_reply = n, reply
             self._reply_bytes(query, reply)
             self._ahead_sent = bool(ahead)
@@ -866,7 +898,7 @@ class CellNode:
         answer["guessed"] = s.guess_due  # (whether the next reply starts with a guessed step)
         answer["foreseen"] = True  # (a guessed step's starts, as a guessed reply's)
         answer.setdefault("more", False)
-        self._reply_bytes(query, encode_answer(answer, ticks))
+        self._reply_bytes(query, encode_answer(self._with_plans(ep, answer), ticks))
         self._ahead_sent = True
         return None if s.done else (ep, s)
 
@@ -954,7 +986,9 @@ class CellNode:
             q, q_now = carry_over(spec, q, new), carry_over(spec, q_now, new)
             spec, version = new, version + 1
         basis = Basis(spec, version, q, bs.basis.planner)
-        s.basis = ep.grounded[version] = _Basis(basis, monitor, bs.check, bs.forecast, wire)
+        s.basis = ep.grounded[version] = _Basis(
+            basis, monitor, bs.check, bs.forecast, wire, bs.horizon
+        )
         s.q, s.q_now = q, q_now
         return True
 
@@ -977,7 +1011,8 @@ class CellNode:
         basis = Basis(spec, 1, monitor.initial, _planner(w.algorithm, w.timeout))
         forecast = None if w.check is None else w.check.forecast
         wire = loads(dumps(spec_to_dict(spec)), "spec")
-        ep.basis = ep.grounded[1] = _Basis(basis, monitor, _check(w.check), forecast, wire)
+        horizon = None if w.check is None else w.check.horizon
+        ep.basis = ep.grounded[1] = _Basis(basis, monitor, _check(w.check), forecast, wire, horizon)
         ep.offline = True
         self.stats.specs += 1
         self.stats.briefed += 1
@@ -1028,6 +1063,12 @@ class CellNode:
         instructions, then the actions' reports (also carried in the answer) and the clock."""
         cell = ep.cell
         obs, instructions, reports = self._step_cell(ep, t, latest, publish=publish)
+        bs = ep.basis
+        mind = self._mind_tick(
+            ep, t, obs, reports, latest, 0 if bs is None else bs.basis.version, bool(instructions)
+        )
+        if mind is not None and bs is not None:  # (the executor's own to make: noted)
+            self._background(ep, None, bs, mind, latest)
         return (
             obs,
             {
@@ -1229,6 +1270,164 @@ class CellNode:
         if ep.seen is not None:
             s.ctx = self._context(ep.seen)
 
+    # -- the executor's background plans, made here --------------------------------------------
+
+    def _mirror_of(self) -> Mirror:
+        if self._mirror is None:
+            self._mirror = Mirror(self.scene, self._semantics_of())
+        return self._mirror
+
+    def _mind_tick(
+        self,
+        ep: _Episode,
+        t: float,
+        obs: WorldState,
+        reports: list[Report],
+        latest: dict[int, Report],
+        version: int,
+        unheard: bool,
+    ) -> Mind | None:
+        """The executor's mind after its tick at ``t`` (see :class:`~hltl.bus.mind.Mirror`),
+        kept along the cell's path; ``unheard``: an instruction came that the node did not
+        ground (the executor's next spec is not known here)."""
+        if ep.basis is not None and ep.basis.horizon is None:
+            ep.minds.clear()  # (the executor wants no background plans: nothing to mirror)
+        prev = before(ep.minds, t)
+        if prev is None:
+            return None
+        statuses = {h: latest[h].status for h in ep.handles if h > prev.ended}
+        ended = [r.handle for r in reports if r.status.terminal]
+        down = frozenset(ep.cell.unavailable(t))
+        mind = self._mirror_of().tick(
+            prev,
+            t,
+            obs,
+            down,
+            ep.handles,
+            statuses,
+            ended,
+            max(version, prev.version),
+            partial(self._spec_of, ep),
+        )
+        if unheard:
+            mind = replace(mind, known=False)
+        remember(ep.minds, mind)
+        return mind
+
+    @staticmethod
+    def _spec_of(ep: _Episode, version: int) -> tuple[HSpec, HierarchyMonitor] | None:
+        """The executor's spec of ``version`` as the node has it (grounded here, or its own)."""
+        bs = ep.grounded.get(version)
+        if ep.basis is not None and ep.basis.basis.version == version:
+            bs = ep.basis  # (the executor's own, when it came: it replaces one grounded here)
+        return None if bs is None else (bs.basis.spec, bs.monitor)
+
+    def _spec_id(self, ep: _Episode, version: int) -> str | None:
+        """The digest of the executor's spec of ``version`` as the node has it (made once a
+        spec)."""
+        got = self._spec_of(ep, version)
+        if got is None:
+            return None
+        known = ep.spec_ids.get(version)
+        if known is None or known[0] is not got[0]:
+            known = ep.spec_ids[version] = (got[0], spec_digest(spec_to_dict(got[0])))
+        return known[1]
+
+    def _background(
+        self, ep: _Episode, s: _Stretch | None, bs: _Basis, mind: Mind, latest: dict[int, Report]
+    ) -> None:
+        """Make the executor's background plans for the tick ``mind`` is after, as its loop
+        will when it gets there (:func:`~hltl.execution.background.background_forecast` on
+        the executor's mind, its forecaster fed the same observations), each once (the keys
+        the executor holds are in its mind), and put them in the next answer or reply: the
+        executor takes a plan whose problem is exactly its own, and plans the others
+        itself. Only while the node streams the stretch's further parts, sending the ticks it
+        holds first (as before a grounding): the executor works on them while the node plans;
+        this tick then goes with its plans as soon as they are made (a part of its own, as a
+        span's). In an answer the executor waits for (the stretch's first part, or the tick
+        it asked for: ``s`` None) the node only notes the plans as the executor's own:
+        planning them there would only make it wait longer, and the node simulate less ahead
+        meanwhile."""
+        if not mind.known or mind.version < 1 or bs.horizon is None or bs.forecast is None:
+            return
+        got = self._spec_of(ep, mind.version)
+        if got is None or bs.check is None:
+            return
+        spec, monitor = got
+        predictor = self._forecaster(ep, bs.forecast)
+        if not any(predictor.moving(h) for h, _ in mind.world.humans):
+            return  # (nobody walks: no forecast world)
+        statuses = {h: latest[h].status for h in ep.handles if h > mind.ended}
+        fc = background_forecast(
+            self.scene,
+            self._semantics_of(),
+            predictor,
+            _Forecasting(bs.horizon, bs.check.predict_dt),
+            mind.world,
+            mind.t,
+            monitor,
+            mind.q,
+            mind.version,
+            partial(mind.after, monitor, statuses),
+            moving_only=True,
+        )
+        if fc is None or not fc.problems:
+            return
+        sid = self._spec_id(ep, mind.version)
+        if sid is None:
+            return
+        keys = set(mind.keys)
+        planner = bs.basis.planner
+        assert isinstance(planner, ExactPlanner)  # (the node runs no other: see _Basis.parse)
+        for p in fc.problems:
+            if p.key in keys:
+                continue
+            keys.add(p.key)
+            digest = problem_digest(sid, p)
+            if s is None or s.early is None:
+                continue  # (the executor's to make: see above)
+            if digest not in ep.made:
+                s.early()
+                s.spanned = True  # (this tick and its plans go as soon as they are made)
+                t0 = time.perf_counter()
+                result = planner(self.scene, spec, world=p.world, monitor=monitor, q0=p.q)
+                wall = time.perf_counter() - t0
+                self.stats.background += 1
+                # (one the node's shorter time limit cut is the executor's to make)
+                timeout = result.status is PlanStatus.TIMEOUT
+                ep.made[digest] = None if timeout else WirePlan(digest, wall, result).to_dict()
+            made = ep.made[digest]
+            if made is not None:
+                ep.outbox.append(made)
+        ep.minds[-1] = replace(mind, keys=frozenset(keys))
+
+    @staticmethod
+    def _forecaster(ep: _Episode, forecast: tuple[float, float]) -> ConstantVelocityPredictor:
+        """The executor's forecaster as it is after the cell's last observation (fed the same
+        ones): the one of the tick before fed this one, or made again from the last second
+        of them (after a restore, or another forecaster)."""
+        last = ep.recent[-1]
+        kept = ep.forecaster
+        if kept is not None and kept[2] == forecast:
+            if kept[0] is last:
+                return kept[1]
+            if len(ep.recent) > 1 and ep.recent[-2] is kept[0]:
+                kept[1].observe(last.t, last.humans)
+                ep.forecaster = (last, kept[1], forecast)
+                return kept[1]
+        predictor = ConstantVelocityPredictor(*forecast)
+        for obs in ep.recent:
+            predictor.observe(obs.t, obs.humans)
+        ep.forecaster = (last, predictor, forecast)
+        return predictor
+
+    @staticmethod
+    def _with_plans(ep: _Episode | None, head: dict[str, Any]) -> dict[str, Any]:
+        """``head`` (an answer or reply) with the background plans made since the last one."""
+        if ep is not None and ep.outbox:
+            head["plans"], ep.outbox = ep.outbox, []
+        return head
+
     def _semantics_of(self) -> ActionSemantics:
         if self._semantics is None:
             self._semantics = ActionSemantics.of(self.scene)
@@ -1361,6 +1560,12 @@ class CellNode:
         regrounded = bool(instructions) and self._ground_ahead(ep, s, instructions)
         s.said = s.said or (bool(instructions) and not regrounded)
         s.regrounded = s.regrounded or regrounded
+        version = 0 if s.basis is None else s.basis.basis.version
+        mind = self._mind_tick(
+            ep, t_next, obs, reports, b.latest, version, bool(instructions) and not regrounded
+        )
+        if mind is not None and s.basis is not None and not ahead.stream:
+            self._background(ep, s, s.basis, mind, b.latest)
         if (
             s.done
             and steady

@@ -86,17 +86,22 @@ def background_forecast(
     q: MonitorState,
     spec_version: int,
     after: Callable[[], tuple[WorldState, MonitorState] | None],
+    moving_only: bool = False,
 ) -> Forecast | None:
     """The executor's background step at time ``t`` (``Executor._background``), as a pure
     function of its state: ``None`` when it forecasts nothing (prediction off, no
     forecaster, no spec, the spec accepted); else the forecast, with the plans to make for
     the forecast world from now (``world``, ``q``) and, when a step runs, from its end as
     planned (``after()``). The executor and a driver that simulates ahead (the bus's cell
-    node) compute the same problems and keys from the same state."""
+    node) compute the same problems and keys from the same state; ``moving_only`` leaves
+    out the predictions of people who stand still (the problems need none of them: a
+    driver's shortcut; the executor keeps them all, for anticipation)."""
     if not config.predict or predictor is None or monitor is None or monitor.accepted(q):
         return None
     preds: dict[str, WorkspacePrediction] = {}
     for hid, _ in world.humans:
+        if moving_only and not predictor.moving(hid):
+            continue
         try:
             preds[hid] = predict_workspace(
                 scene, predictor, hid, t, config.horizon, config.predict_dt, semantics.kinematics
