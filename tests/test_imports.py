@@ -78,7 +78,9 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
     # `hltl plan --spec FILE` on a small scene (docs/benchmarks.md, "Start-up"): no grounder,
     # no lark (a valid formula is read by the hand-written parser), no MONA helpers (the DFA
     # comes from the disk cache), no thread pool (concurrent.futures, logging: no task is
-    # given to one on a small cell), and, once the files were read before, no PyYAML
+    # given to one on a small cell), no planner module only exact mode's first phase or
+    # anytime mode uses (CP-SAT's, the bounds', conflict repair), and, once the files were
+    # read before, no PyYAML
     code = (
         "import contextlib, io, sys\n"
         "from hltl.cli.main import main\n"
@@ -86,10 +88,12 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
         "    code = main(['plan', '--scene', 'examples/scenes/two_arms.yaml',\n"
         "                 '--spec', 'examples/specs/fig1.yaml'])\n"
         "unwanted = ('lark', 'yaml', 'hltl.grounding', 'subprocess', 'tempfile', 'concurrent',\n"
-        "            'logging', 'shutil', 'numpy',\n"
+        "            'logging', 'shutil', 'hashlib', 'numpy',\n"
         "            'scipy', 'pandas') + " + repr(HEAVY) + "\n"
+        "phase = ('hltl.planner.lns', 'hltl.planner.schedule', 'hltl.planner.profile',\n"
+        "         'hltl.planner.repair')\n"
         "print(code, sorted(m for m in sys.modules if m.split('.')[0] in unwanted\n"
-        "                   or m.startswith('hltl.grounding')))\n"
+        "                   or m.startswith('hltl.grounding') or m in phase))\n"
     )
     env = {**os.environ, "HLTL_CACHE_DIR": str(tmp_path)}
     runs = [
@@ -99,6 +103,28 @@ def test_hltl_plan_with_a_spec_file_imports_only_what_it_uses(tmp_path: Path) ->
         for _ in range(2)
     ]
     assert runs[1] == "0 []", runs
+
+
+def test_the_dfa_cache_imports_concurrent_futures_only_when_mona_runs(tmp_path: Path) -> None:
+    # a DFA read back from the disk folder needs no Future (docs/planner.md, "Start-up"); one
+    # MONA compiles does (the same process code, run twice: cold folder, then warm)
+    code = (
+        "import sys\n"
+        "from pathlib import Path\n"
+        "from hltl.spec.automata import AutomatonCache\n"
+        "from hltl.spec.parser import parse_formula\n"
+        "before = 'concurrent.futures' in sys.modules\n"
+        f"cache = AutomatonCache(disk=Path({str(tmp_path)!r}))\n"
+        "cache.to_dfa(parse_formula('F (a & X (b U picked(cup)))'))\n"
+        "print(before, 'concurrent.futures' in sys.modules)\n"
+    )
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, check=True
+        ).stdout.strip()
+        for _ in range(2)
+    ]
+    assert runs == ["False True", "False False"]
 
 
 @pytest.mark.parametrize("columns", [None, "40", "132", "0", "-3", "wide"])

@@ -121,3 +121,17 @@ def test_a_cached_scene_and_spec_are_read_without_importing_yaml(tmp_path: Path)
         for _ in range(2)
     ]
     assert runs == ["True", "False"]
+
+
+@pytest.mark.parametrize("size", [0, 1, 55, 56, 64, 1000, 70_000])
+def test_the_cache_keys_are_hashlib_sha256_digests(size: int) -> None:
+    # fileio.sha256 (CPython's own SHA-256, no OpenSSL to load) keys the YAML and DFA caches:
+    # the digests hashlib gives, so files kept before stay found
+    import hashlib
+
+    data = bytes(range(256)) * (size // 256) + bytes(range(size % 256))
+    assert fileio.sha256(data).hexdigest() == hashlib.sha256(data).hexdigest()
+    mine, theirs = fileio.sha256(data), hashlib.sha256(data)
+    mine.update(b"\nmore")
+    theirs.update(b"\nmore")
+    assert mine.hexdigest() == theirs.hexdigest()

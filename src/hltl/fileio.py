@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import re
@@ -13,6 +12,17 @@ from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
 from hltl.errors import HltlError, OutputError
+
+# CPython's own SHA-256 (hashlib's fallback): the same digests without hashlib, which loads
+# OpenSSL's libcrypto (~3 ms of every start-up, docs/planner.md "Start-up"); `random` takes its
+# _sha512 the same way
+if TYPE_CHECKING:
+    from hashlib import sha256 as sha256
+else:
+    try:
+        from _sha256 import sha256
+    except ImportError:  # (Python 3.12 and later name it _sha2)
+        from hashlib import sha256
 
 if TYPE_CHECKING:
     import yaml
@@ -155,7 +165,7 @@ def yaml_cached(text: str, source: str, error: ErrorType) -> Any:
             _own_source = Path(__file__).read_bytes()
         except OSError:
             return load_data(text, source, error, as_json=False)
-    digest = hashlib.sha256(_own_source)
+    digest = sha256(_own_source)
     digest.update(f"\n{YAML_CACHE_FORMAT}\n{text}".encode())
     path = folder / f"{digest.hexdigest()}.json"
     try:

@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStatus, anytime, plan, profile, repair
+from hltl.planner import PlanResult, PlanStatus, anytime, lns, plan, profile, repair, schedule
 from hltl.planner.anytime import _Exchange, _Router, _Slot, _squeeze_paths, _steps_of, goals
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.schedule import time_unit
@@ -275,9 +275,9 @@ def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyP
     monkeypatch.setattr(profile, "profile_bound", bound)
     monkeypatch.setattr(anytime, "_plans_beside", plans)
     monkeypatch.setattr(anytime, "_more", more)
-    monkeypatch.setattr(anytime.schedule, "WORKERS", 2)
+    monkeypatch.setattr(schedule, "WORKERS", 2)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
-    assert anytime.lns.available()  # (imported here: the forked process has it at once)
+    assert lns.available()  # (imported here: the forked process has it at once)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.makespan == to_seconds(shorter[0])
     check_plan(c.scene, c.spec, res.to_dict())
@@ -298,9 +298,9 @@ def test_the_walk_offers_its_plans_only_when_the_bound_runs_beside(
         return real(problem, s, until, **kwargs)
 
     monkeypatch.setattr(anytime, "_more", more)
-    monkeypatch.setattr(anytime.schedule, "WORKERS", workers)
+    monkeypatch.setattr(schedule, "WORKERS", workers)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
-    assert anytime.lns.available()
+    assert lns.available()
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED

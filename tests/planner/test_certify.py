@@ -13,7 +13,7 @@ import pytest
 
 from hltl import planner
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStep, anytime, plan, schedule
+from hltl.planner import PlanResult, PlanStep, anytime, lns, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, plan_steps, search
 from tests.oracles.validator import check_plan
@@ -69,7 +69,7 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(anytime, "_jointly", never)
     monkeypatch.setattr(anytime, "step_bound", never)
     # nor need CP-SAT be imported (0.5-1.5 s in a fresh process)
-    monkeypatch.setattr(anytime.lns, "available", never)
+    monkeypatch.setattr(lns, "available", never)
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
     assert anytime.certified(problem, _Search(problem), math.inf) is None
@@ -301,12 +301,14 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
     release = threading.Event()
     started: list[str] = []
 
-    def start(self: planner._Beside, pool: ThreadPoolExecutor, first: object) -> None:
+    def start(self: planner._Beside, first: object) -> None:
         started.append(order["mode"])
         if order["mode"] == "phase first":
-            # the pool has one thread: A* waits behind this until the phase has ended
-            pool.submit(release.wait)
-        real_start(self, pool, first)  # type: ignore[arg-type]
+            # A*'s pool (made here before A* makes it) has one thread: A* waits behind this
+            # until the phase has ended
+            self.pool = ThreadPoolExecutor(max_workers=1)
+            self.pool.submit(release.wait)
+        real_start(self, first)  # type: ignore[arg-type]
         if order["mode"] == "astar first":
             assert self.future is not None
             self.future.result()

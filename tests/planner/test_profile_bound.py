@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
-from hltl.planner import PlanStatus, anytime, plan, profile
+from hltl.planner import PlanStatus, anytime, lns, plan, profile, schedule
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.schedule import time_unit
 from hltl.spec.hierarchy import HSpec, spec_from_dict
@@ -196,7 +196,7 @@ def test_anytime_gives_its_last_share_to_the_profile_bound(monkeypatch: pytest.M
     # a share of 4 s long enough for the profile bound (10 s budgets give it 1 s), on one core
     # (on two it runs beside the walk: the next test)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
-    monkeypatch.setattr(anytime.schedule, "WORKERS", 1)
+    monkeypatch.setattr(schedule, "WORKERS", 1)
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.makespan is not None
@@ -241,7 +241,7 @@ def test_cells_beyond_the_step_bound_skip_importing_cp_sat(
     def no_import() -> bool:
         raise AssertionError("CP-SAT asked for")
 
-    monkeypatch.setattr(anytime.lns, "available", no_import)
+    monkeypatch.setattr(lns, "available", no_import)
     c = delivery_cell("grid", 17, 0)
     problem = Problem(c.scene, c.spec)
     s, node, _, tgts = start_targets(problem)
@@ -320,7 +320,7 @@ def test_the_bound_beside_the_walk_is_not_waited_for_past_its_deadline(
     # whatever keeps its process past the deadline (here a slow "is CP-SAT there", copied into
     # the process; in runs under load CP-SAT's import or a question's solve): the run takes
     # what was proved (here nothing: the floor) and stops the process
-    monkeypatch.setattr(anytime.lns, "available", lambda: time.sleep(DEADLINE_S) or True)
+    monkeypatch.setattr(lns, "available", lambda: time.sleep(DEADLINE_S) or True)
     beside = _beside(3.0, time.perf_counter())
     assert beside.finish(wanted=True) == to_ticks(3.0)
     assert not beside.proc.is_alive()
@@ -353,11 +353,11 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
 
     monkeypatch.setattr(profile, "profile_bound", bound)
     monkeypatch.setattr(anytime, "_more", more)
-    monkeypatch.setattr(anytime.schedule, "WORKERS", workers)
+    monkeypatch.setattr(schedule, "WORKERS", workers)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # a share of 1.2 s at a 4 s budget
     # CP-SAT imported here already, so the forked process has it too: under load its own
     # import could outlast this 4 s run, and the bound would (rightly) never be asked
-    assert anytime.lns.available()
+    assert lns.available()
     c = delivery_cell("grid", 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
@@ -405,9 +405,9 @@ def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
     monkeypatch.setattr(anytime, "_ProfileBeside", Spy)
     monkeypatch.setattr(anytime, "_pairs_at_start", pairs)
     monkeypatch.setattr(anytime, "_more", more)
-    monkeypatch.setattr(anytime.schedule, "WORKERS", 2)
+    monkeypatch.setattr(schedule, "WORKERS", 2)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # (a share long enough at 4 s)
-    assert anytime.lns.available()  # (imported here: the forked process has it at once)
+    assert lns.available()  # (imported here: the forked process has it at once)
     c = delivery_cell(layout, 17, 0)
     res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
     assert res.status is PlanStatus.SOLVED and res.lower_bound is not None

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import random
 import stat
 import threading
@@ -13,6 +14,7 @@ from ltlf_strategies import random_formula, random_trace
 from hltl.errors import AutomatonError, BackendUnavailableError
 from hltl.spec.automata import (
     DFA,
+    DISK_FORMAT,
     MAX_PROPS,
     AutomatonCache,
     canonical_form,
@@ -153,6 +155,67 @@ def test_cache_compiles_once_under_concurrent_requests(cache: AutomatonCache) ->
         t.join()
     assert len(results) == 8 and all(r == results[0] for r in results)
     assert (cache.misses, cache.hits) == (1, 7)
+
+
+def test_disk_folder_answers_a_new_cache_without_mona(tmp_path: Path) -> None:
+    # a table MONA compiled is kept in the disk folder; a new cache (a new process) reads it
+    # back, counts the request as a miss, and needs no MONA for it (nor for another shape's atoms)
+    f = parse_formula("F (a & X (b U picked(cup)))")
+    compiled = AutomatonCache(disk=tmp_path).to_dfa(f)
+    assert len(list(tmp_path.glob("*.json"))) == 1
+    warm = AutomatonCache(mona="/nonexistent/mona", disk=tmp_path)
+    assert warm.to_dfa(f) == compiled
+    g = parse_formula("F (b & X (a U picked(plate)))")
+    assert warm.to_dfa(g) == to_dfa(g)
+    assert (warm.misses, warm.hits, len(warm)) == (1, 1, 1)
+    # another shape is not in the folder: MONA is asked (and missing)
+    with pytest.raises(BackendUnavailableError):
+        warm.to_dfa(parse_formula("G a"))
+    assert (warm.misses, len(warm)) == (2, 1)
+
+
+def test_disk_folder_names_a_table_by_the_sha256_of_its_format_and_formula(
+    tmp_path: Path,
+) -> None:
+    # (the name tables kept by earlier sessions were written under: they stay found)
+    f = parse_formula("F (a & X (b U picked(cup)))")
+    AutomatonCache(disk=tmp_path).to_dfa(f)
+    text = to_string(canonical_form(f)[0])
+    name = hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json"
+    assert [p.name for p in tmp_path.glob("*.json")] == [name]
+
+
+def test_disk_folder_read_once_under_concurrent_requests(tmp_path: Path) -> None:
+    f = parse_formula("F (a & X (b U picked(cup)))")
+    AutomatonCache(disk=tmp_path).to_dfa(f)
+    warm = AutomatonCache(mona="/nonexistent/mona", disk=tmp_path)
+    barrier = threading.Barrier(8)
+    results: list[DFA] = []
+
+    def work() -> None:
+        barrier.wait()
+        results.append(warm.to_dfa(f))
+
+    threads = [threading.Thread(target=work) for _ in range(8)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(results) == 8 and all(r == to_dfa(f) for r in results)
+    assert (warm.misses, warm.hits) == (1, 7)
+
+
+@pytest.mark.parametrize("garbage", ["", "{", '{"format": 1}', "[1, 2]"])
+def test_unreadable_disk_table_is_compiled_again_and_replaced(tmp_path: Path, garbage: str) -> None:
+    f = parse_formula("F (a & X (b U picked(cup)))")
+    AutomatonCache(disk=tmp_path).to_dfa(f)
+    (path,) = tmp_path.glob("*.json")
+    good = path.read_text()
+    path.write_text(garbage)
+    with pytest.raises(BackendUnavailableError):
+        AutomatonCache(mona="/nonexistent/mona", disk=tmp_path).to_dfa(f)
+    assert AutomatonCache(disk=tmp_path).to_dfa(f) == to_dfa(f)
+    assert path.read_text() == good
 
 
 def test_default_cache_is_one_instance() -> None:

@@ -9,6 +9,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
+from hltl.execution.background import PlansAhead, after_running, background_forecast
 from hltl.execution.belief import Belief
 from hltl.execution.decision import Phase, Trigger, Triggers
 from hltl.execution.drivers import (
@@ -49,7 +50,6 @@ from hltl.execution.predict import (
     ConstantVelocityPredictor,
     TrajectoryPredictor,
     WorkspacePrediction,
-    predict_workspace,
     predicted_world,
 )
 from hltl.execution.predicted import PlanKey, Predicted, PredictedPlans, plan_key, same_plan
@@ -311,6 +311,8 @@ class Executor(TickTemplate):
         self._expect = driver.expect if isinstance(driver, Lookahead) else None
         # one that foresees the next step is told the spec and monitor state it follows from
         self._foresee = driver.foresee if isinstance(driver, Foresight) else None
+        # one that plans ahead may have made the background plans (problem by problem)
+        self._given = driver.planned if isinstance(driver, PlansAhead) else None
         self.log = EventLog() if log is None else log
         if isinstance(cost, MotionSource):
             # motions chain through where this episode's plans leave the arms, and only this
@@ -1051,58 +1053,46 @@ class Executor(TickTemplate):
         without making episodes depend on thread scheduling; its wall-clock cost is logged as
         ``predict`` latency, off the critical path.
         """
-        if (
-            not self.config.predict
-            or self.predictor is None
-            or self.monitor is None
-            or self.spec is None
-            or self.status is not ExecStatus.RUNNING
-            or self.monitor.accepted(self.q)
-        ):
+        if self.spec is None or self.status is not ExecStatus.RUNNING:
             return
-        preds: dict[str, WorkspacePrediction] = {}
-        for hid, _ in self.world.humans:
-            try:
-                preds[hid] = predict_workspace(
-                    self.scene,
-                    self.predictor,
-                    hid,
-                    self.t,
-                    self.config.horizon,
-                    self.config.predict_dt,
-                    self.semantics.kinematics,
+        fc = background_forecast(
+            self.scene,
+            self.semantics,
+            self.predictor,
+            self.config,
+            self.world,
+            self.t,
+            self.monitor,
+            self.q,
+            self._spec_version,
+            self._after_running,
+        )
+        if fc is None:
+            return
+        assert self.monitor is not None  # (else no forecast)
+        self.predictions = fc.predictions
+        for p in fc.problems:
+            if p.key in self._predicted:
+                continue
+            given = None if self._given is None else self._given(self._spec_version, p)
+            if given is None:
+                t0 = time.perf_counter()
+                result = self.planner(
+                    self.scene, self.spec, world=p.world, monitor=self.monitor, q0=p.q
                 )
-            except KeyError:  # never observed yet
-                continue
-        self.predictions = preds
-        moving = {h: p for h, p in preds.items() if p.moving}
-        if not moving:
-            return
-        w_pred = predicted_world(self.world, moving)
-        ctx_pred = self.semantics.context(w_pred)
-        if ctx_pred == self.semantics.context(self.world):
-            return
-        bases: list[tuple[str, WorldState, MonitorState]] = [("now", self.world, self.q)]
-        after = self._after_running()
-        if after is not None:
-            bases.append(("after_step", *after))
-        for basis, w, q in bases:
-            wp = predicted_world(w, moving)
-            key = self._key(ctx_pred, wp, q)
-            if key in self._predicted:
-                continue
-            t0 = time.perf_counter()
-            result = self.planner(self.scene, self.spec, world=wp, monitor=self.monitor, q0=q)
-            ms = (time.perf_counter() - t0) * 1000.0
-            self._predicted.put(key, Predicted(result, self.t, ctx_pred, ms / 1000.0))
+                wall_s = time.perf_counter() - t0
+            else:  # made by the driver, for exactly this problem
+                result, wall_s = given.result, given.wall_s
+            assert fc.context is not None
+            self._predicted.put(p.key, Predicted(result, self.t, fc.context, wall_s))
             self.log.emit(
                 Predict(
                     t=self.t,
-                    basis=basis,
-                    humans={h: p.to_dict() for h, p in moving.items()},
-                    context=ctx_pred.describe(),
+                    basis=p.basis,
+                    humans={h: w.to_dict() for h, w in fc.moving.items()},
+                    context=fc.context.describe(),
                     status=result.status.value,
-                    latency_ms=round(ms, 3),
+                    latency_ms=round(wall_s * 1000.0, 3),
                     expanded=result.stats.expanded,
                     makespan=result.makespan,
                 )
@@ -1185,16 +1175,12 @@ class Executor(TickTemplate):
         """The expected world and monitor state once the running step completes as planned."""
         if not self._running or self.monitor is None:
             return None
-        w = self.world
-        for run in self._running:
-            if run.status is None:
-                w = apply(w, run.transition)
-        done = [
-            r.transition
+        runs = [
+            (r.transition, r.status is None)
             for r in self._running
             if r.status is None or r.status.state is ActionState.DONE
         ]
-        return w, self.monitor.step(self.q, step_symbol(done, w))
+        return after_running(self.monitor, self.q, self.world, runs)
 
     # -- ending ----------------------------------------------------------------------------------
 

@@ -25,7 +25,7 @@ from re import Pattern as Pattern
 from re import _parser  # re's own pattern parser
 from re import compile as compile  # re's name, for the module-level patterns
 from re import escape as escape
-from typing import Any
+from typing import Any, TypeVar
 
 __all__ = [
     "IGNORECASE",
@@ -138,15 +138,27 @@ def _gate(pattern: str, flags: int) -> _Gate:
     return gate
 
 
+# the last text checked and its lower case (None where it is not ASCII), replaced as one tuple
+# (threads may ground at once): the normaliser checks one text against some 600 patterns in turn
+_LAST: tuple[str, str | None] = ("", "")
+
+
 def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
+    global _LAST
     key = (pattern, flags)
     gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
-    if gate is None or not text.isascii():
+    if gate is None:
+        return True
+    last = _LAST
+    if last[0] is not text:
+        last = _LAST = (text, text.lower() if text.isascii() else None)
+    low = last[1]
+    if low is None:
         return True
     words, fold = gate
     if fold:
-        text = text.lower()
+        text = low
     for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more, ~600 times an instruction
         if word in text:
             return True
@@ -164,6 +176,25 @@ def _source(pattern: str | re.Pattern[str], flags: int) -> tuple[str, int]:
     return pattern, flags
 
 
+_T = TypeVar("_T")
+
+
+def _gated(
+    pattern: str | re.Pattern[str],
+    flags: int,
+    string: str,
+    on_no_match: _T,
+    method: Callable[..., _T],
+    *args: Any,
+) -> _T:
+    """``method`` of the compiled ``pattern`` called with ``args``, or ``on_no_match`` (what re
+    returns for no match) where the gate says ``pattern`` cannot match ``string``."""
+    source, flags = _source(pattern, flags)
+    if not may_match(source, flags, string):
+        return on_no_match
+    return method(_compiled(source, flags), *args)
+
+
 def sub(
     pattern: str | re.Pattern[str],
     repl: str | Callable[[re.Match[str]], str],
@@ -172,59 +203,38 @@ def sub(
     flags: int = 0,
 ) -> str:
     """re.sub, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return string
-    return _compiled(source, flags).sub(repl, string, count)
+    return _gated(pattern, flags, string, string, re.Pattern.sub, repl, string, count)
 
 
 def search(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.search, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).search(string)
+    return _gated(pattern, flags, string, None, re.Pattern.search, string)
 
 
 def match(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.match, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).match(string)
+    return _gated(pattern, flags, string, None, re.Pattern.match, string)
 
 
 def fullmatch(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> re.Match[str] | None:
     """re.fullmatch, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return None
-    return _compiled(source, flags).fullmatch(string)
+    return _gated(pattern, flags, string, None, re.Pattern.fullmatch, string)
 
 
 def findall(pattern: str | re.Pattern[str], string: str, flags: int = 0) -> list[Any]:
     """re.findall, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return []
-    return _compiled(source, flags).findall(string)
+    return _gated(pattern, flags, string, [], re.Pattern.findall, string)
 
 
 def finditer(
     pattern: str | re.Pattern[str], string: str, flags: int = 0
 ) -> Iterator[re.Match[str]]:
     """re.finditer, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return iter(())
-    return _compiled(source, flags).finditer(string)
+    return _gated(pattern, flags, string, iter(()), re.Pattern.finditer, string)
 
 
 def split(
     pattern: str | re.Pattern[str], string: str, maxsplit: int = 0, flags: int = 0
 ) -> list[str | Any]:
     """re.split, gated."""
-    source, flags = _source(pattern, flags)
-    if not may_match(source, flags, string):
-        return [string]
-    return _compiled(source, flags).split(string, maxsplit)
+    return _gated(pattern, flags, string, [string], re.Pattern.split, string, maxsplit)

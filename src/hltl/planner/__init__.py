@@ -9,9 +9,8 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
-from hltl.planner import lns, schedule
 from hltl.planner.anytime import (
     AstarEnd,
     Certificate,
@@ -126,22 +125,21 @@ def plan(
         state = _Search(problem)
         deadline = t0 + timeout - reserve
         beside = _Apart(problem, state, deadline, on_progress)
-        with _OnePool() as pool:
-            try:
-                cert = certify(
-                    problem,
-                    state,
-                    t0 + CERTIFY_SHARE * timeout,
-                    lambda first: beside.start(pool, first),
-                    beside.ahead,
-                    beside.watch,
-                )
-                phase: float | None = time.perf_counter() - t0
-                result = beside.finish(cert)
-            finally:
-                # whatever happened (an exception in the phase, or while A* is awaited), no
-                # A* is left running, nor paused (the thread's pool waits for it on the way out)
-                beside.stop()
+        try:
+            cert = certify(
+                problem,
+                state,
+                t0 + CERTIFY_SHARE * timeout,
+                beside.start,
+                beside.ahead,
+                beside.watch,
+            )
+            phase: float | None = time.perf_counter() - t0
+            result = beside.finish(cert)
+        finally:
+            # whatever happened (an exception in the phase, or while A* is awaited), no
+            # A* is left running, nor paused (``stop`` waits for A*'s thread, if it was started)
+            beside.stop()
         # (where A* ran in a process beside the phase: when the phase ended, how long A* waited)
         phase, held = (None, None) if beside.proc is None else (phase, beside.held)
         if cert.optimal is not None:
@@ -182,32 +180,6 @@ def plan(
     return result
 
 
-class _OnePool:
-    """A pool of one thread, made when its first task comes: most exact runs (cells left to
-    A* alone, as Fig. 1) give it none, and ``concurrent.futures`` (with ``logging``) is ~5 ms
-    of `hltl plan`'s start-up (docs/planner.md, "Start-up"). Leaving the ``with`` block waits
-    for the task, as ``ThreadPoolExecutor`` does."""
-
-    def __init__(self) -> None:
-        self.pool: ThreadPoolExecutor | None = None
-
-    def submit(
-        self, fn: Callable[..., PlanResult], /, *args: Any, **kwargs: Any
-    ) -> Future[PlanResult]:
-        if self.pool is None:
-            from concurrent.futures import ThreadPoolExecutor
-
-            self.pool = ThreadPoolExecutor(max_workers=1)
-        return self.pool.submit(fn, *args, **kwargs)
-
-    def __enter__(self) -> _OnePool:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        if self.pool is not None:
-            self.pool.shutdown(wait=True)
-
-
 class _Beside:
     """A* on a thread of its own beside exact mode's first phase, once that phase reaches the
     full model (``certify``'s ``beside``): the phase's CP-SAT questions run one at a time and
@@ -227,16 +199,26 @@ class _Beside:
         self.deadline = deadline
         self.on_progress = on_progress
         self.live = Live()
+        # A*'s thread, made when A* starts: most exact runs (cells left to A* alone, as Fig. 1)
+        # start none, and ``concurrent.futures`` (with ``logging``) is ~5 ms of `hltl plan`'s
+        # start-up (docs/planner.md, "Start-up")
+        self.pool: ThreadPoolExecutor | None = None
         self.future: Future[PlanResult] | None = None
 
     def stop(self) -> None:
-        """Stop A* (when the phase fails)."""
+        """Stop A* (when the phase fails, or has ended) and wait for its thread to end."""
         self.live.stopped = True
+        if self.pool is not None:
+            self.pool.shutdown(wait=True)
 
-    def start(self, pool: _OnePool, first: _Found | None) -> None:
+    def start(self, first: _Found | None) -> None:
         """Start A* (with the prioritized plan's makespan as ``upper``)."""
         self.live.upper = None if first is None else first[0]
-        self.future = pool.submit(
+        if self.pool is None:
+            from concurrent.futures import ThreadPoolExecutor  # why: see ``self.pool``
+
+            self.pool = ThreadPoolExecutor(max_workers=1)
+        self.future = self.pool.submit(
             search,
             self.problem,
             timeout=self.deadline - time.perf_counter(),
@@ -302,6 +284,8 @@ class _Apart:
             return
         import multiprocessing  # why: only 9-16-goal cells in exact mode need it
 
+        from hltl.planner import lns  # why: as multiprocessing (start-up, docs/planner.md)
+
         ctx = multiprocessing.get_context("fork")
         self.results, result_end = ctx.Pipe(duplex=False)
         upper_end, self.uppers = ctx.Pipe(duplex=False)
@@ -334,16 +318,18 @@ class _Apart:
             if got.status is PlanStatus.SOLVED and got.makespan is not None:
                 makespan = to_ticks(got.makespan)
             if end.hopeless(makespan):
+                from hltl.planner import lns  # why: as in ``ahead``
+
                 lns.stop_until(end.stop, self.phase_over.wait)
 
         self.watcher = threading.Thread(target=take, daemon=True)
         self.watcher.start()
         return True
 
-    def start(self, pool: _OnePool, first: _Found | None) -> None:
+    def start(self, first: _Found | None) -> None:
         """The prioritized plan's makespan is A*'s ``upper`` (the process runs already)."""
         if self.proc is None:
-            self.thread.start(pool, first)
+            self.thread.start(first)
         elif first is not None:
             self._tell(first[0])
 
@@ -373,7 +359,10 @@ class _Apart:
     def stop(self) -> None:
         """End the process (if it still runs) and close the pipes."""
         self.thread.stop()
-        lns.share_busy(None)
+        if self.proc is not None:  # (``ahead`` gave lns its pause hook)
+            from hltl.planner import lns  # why: as in ``ahead``
+
+            lns.share_busy(None)
         if self.paused:  # (ended while paused)
             self.paused = False
             self.held += time.perf_counter() - self.since
@@ -391,6 +380,8 @@ class _Apart:
     def _busy(self, questions: int) -> None:
         # a round of ``questions`` at once begins (0: ends): A* pauses through one that
         # takes every core
+        from hltl.planner import schedule  # why: as in ``ahead``
+
         pause = questions >= schedule.WORKERS
         if self.proc is not None and self.proc.pid is not None and pause != self.paused:
             self.paused = pause

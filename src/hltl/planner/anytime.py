@@ -3,13 +3,11 @@
 from __future__ import annotations
 
 import math
-import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from hltl.planner import lns, profile, repair, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
@@ -19,6 +17,8 @@ from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 
 if TYPE_CHECKING:
     from multiprocessing.connection import Connection
+
+    from hltl.planner import lns, repair, schedule  # why: start-up (docs/planner.md)
 
 # the share of the time budget by which more priority orders stop being tried
 RESTART_SHARE = 0.5
@@ -45,11 +45,12 @@ CP_UP_TO = 16
 CP_DETOUR = 0.6
 # cells of more goals (no joint re-plan) where the profile bound runs (grids, random layouts,
 # 10 s budgets): after this share of the time the walk's best plan is squeezed into fewer steps
-# by conflict repair (``_squeezed``, ``repair.Repair``) until the end; the walk plateaus
-# within 2-4 s of a 10 s run (docs/planner.md, "Fewer steps by repair"; 0.15 against 0.3 in
-# paired 10 s runs of the ten 32 x 32 grid and random cells: random 4 13.0 -> 12.4 s, the rest
-# the same)
-REPAIR_WALK_SHARE = 0.15
+# by conflict repair (``_squeezed``, ``repair.Repair``) until the end. 0: the repair
+# squeezes the walk's first plan (the critical-first order's) at once. The walk's 1.5 s took
+# 32 x 32 grid 3 from 27 to 25 steps, which the repair squeezes to 18 in about 1.2 s from
+# either; its last level (17 steps) is the one that needs the time (docs/planner.md, "Session
+# 23"; 0.15 against 0.3 in session 20: random 4 13.0 -> 12.4 s)
+REPAIR_WALK_SHARE = 0.0
 # big cells of at most this many goals: the relaxed-schedule bound (``schedule``) runs first,
 # until this share of the budget
 SCHEDULE_UP_TO = 16
@@ -400,6 +401,8 @@ def _with(locs: tuple[int, ...], o: int, loc: int) -> tuple[int, ...]:
 
 def _orders(s: _Search, node: Node, gls: Sequence[Goal], seed: int) -> Callable[[], list[int]]:
     """Priority orders: most critical goal first, then random ones; "after" goals keep order."""
+    import random  # why: start-up (docs/planner.md)
+
     graph = s.heuristic.graph
     crit = [graph.atom_time(g.atom, node[0]) for g in gls]
     rng = random.Random(seed)
@@ -465,6 +468,8 @@ def plan_anytime(
         ``solved`` with ``lower_bound`` and ``gap`` (0: proved optimal); ``infeasible`` when no
         plan exists; ``timeout`` when no plan was found in time (the bound is still reported).
     """
+    from hltl.planner import lns, profile, schedule  # why: start-up (docs/planner.md)
+
     t0 = time.perf_counter()
     deadline = t0 + timeout
     s = _Search(problem)
@@ -653,6 +658,8 @@ def beside_possible() -> bool:
     problem instead of pickling it)."""
     import multiprocessing  # why: only 32-goal anytime runs need it (start-up, docs/planner.md)
 
+    from hltl.planner import schedule  # why: start-up (docs/planner.md)
+
     return schedule.WORKERS >= 2 and "fork" in multiprocessing.get_all_start_methods()
 
 
@@ -667,6 +674,8 @@ class _ProfileBeside:
     def __init__(
         self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
     ) -> None:
+        from hltl.planner import schedule  # why: start-up (docs/planner.md)
+
         heur = s.heuristic
         tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
         self.bound = floor
@@ -729,6 +738,8 @@ def _profile_child(
     """The profile bound's process (``_ProfileBeside``): every level it proves is sent; once
     the bound is final (the relaxation solved at it), it squeezes the walk's plans handed
     over by ``exchange`` until ``deadline`` (``_plans_beside``)."""
+    from hltl.planner import lns, profile  # why: start-up (docs/planner.md)
+
     try:
         if lns.available():
             got = profile.profile_bound(
@@ -756,6 +767,8 @@ def _plans_beside(
     for) squeezed by conflict repair with its own seed (``BESIDE_SEED``) until ``deadline``,
     each shorter plan handed back; again from the walk's next plan when it is shorter than
     any found here. Stops at a plan that meets ``bound``."""
+    from hltl.planner import repair  # why: start-up (docs/planner.md)
+
     gls = goals(s, start)
     if not gls:
         return
@@ -843,6 +856,8 @@ class _Exchange:
 
 def _paths_of(routes: dict[int, _Route]) -> dict[int, repair.Path]:
     """Per goal its route's path, with the steps no route acts in taken out."""
+    from hltl.planner import repair  # why: start-up (docs/planner.md)
+
     return repair.ranked({gi: rt[0] for gi, rt in routes.items()})
 
 
@@ -865,6 +880,8 @@ def _schedule_at_start(
     """The relaxed-schedule bound at the start node (``schedule.schedule_bound``) when it
     applies (fixed durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals);
     ``floor`` otherwise or when it proves nothing more before ``until``."""
+    from hltl.planner import lns, schedule  # why: start-up (docs/planner.md)
+
     if not schedule.applicable(problem):
         return floor
     heur = s.heuristic
@@ -924,6 +941,9 @@ def certify(
         return none
     if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
         return none
+    # why: start-up (docs/planner.md): only cells of more than PAIRS_UP_TO goals get here
+    from hltl.planner import lns, schedule
+
     if not schedule.steps_applicable(problem):
         return none
     h0 = heur(start)  # (A* needs it too: memoised)
@@ -990,6 +1010,8 @@ class AstarEnd:
     prove its own plan, which is then the one returned)."""
 
     def __init__(self, floor: int) -> None:
+        from hltl.planner import lns  # why: start-up (docs/planner.md)
+
         self.floor = floor
         self.stop = lns.Stop()
 
@@ -1023,6 +1045,8 @@ def _beside_astar(
     the floor: it is known before CP-SAT's import, which A* often beats on lines (line
     10 x 10 seed 3: 0.45 s), and on these cells the profile bound added nothing (random seed
     4, lines 0 and 4: the start bound)."""
+    from hltl.planner import lns  # why: start-up (docs/planner.md)
+
     none = Certificate(None, None)
     ahead()
     end = AstarEnd(h0)
@@ -1058,6 +1082,8 @@ def _profile_floor(
     presolve, one at a time: A*'s process runs beside them) and it is solved long before the
     step model's hard levels, which it never reaches (docs/planner.md, "The profile bound as
     the climb's floor")."""
+    from hltl.planner import profile, schedule  # why: start-up (docs/planner.md)
+
     if not profile.applicable(problem):
         return floor
     heur = s.heuristic
@@ -1095,6 +1121,8 @@ def step_bound(
     ``before_full`` before it asks the full model, and asks first just below ``roof``, a
     known plan's makespan). (``floor``, None) when the bound does not apply; it is never below
     ``floor``."""
+    from hltl.planner import lns, schedule  # why: start-up (docs/planner.md)
+
     if not schedule.steps_applicable(problem):
         return floor, None
     heur = s.heuristic
@@ -1196,6 +1224,8 @@ def _more(
     ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
     steps until ``until`` (``_squeezed``). With ``exchange``, each shorter plan is offered to
     the bound's process."""
+    from hltl.planner import repair  # why: start-up (docs/planner.md)
+
     node = problem.start()
     gls = goals(s, node)
     if not gls:
@@ -1306,6 +1336,8 @@ def _squeeze_paths(
     steps than the plan being squeezed: replayed through the monitors, then squeezed instead.
     (One with as many steps, shorter only by its steps' lengths, would restart the search for
     the level this one has been repairing: engineer 11's diagnosis in session 21.)"""
+    from hltl.planner import repair  # why: start-up (docs/planner.md)
+
     p = router.p
     node = router.node
     gone = 0
@@ -1361,6 +1393,8 @@ def _profile_fits(timeout: float) -> bool:
 
 def _joint_possible(problem: Problem, gls: Sequence[Goal]) -> bool:
     """The joint model applies: fixed durations, goals that are events, CP-SAT installed."""
+    from hltl.planner import lns  # why: start-up (docs/planner.md)
+
     return (
         problem.cost.fixed
         and not problem.state_atom_objects
@@ -1388,6 +1422,8 @@ def _jointly(
     monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``), or
     ``stop`` stopped it. ``floor``: a lower bound on every plan (ticks), where the solve may
     end; ``work``: at most this much of CP-SAT's deterministic time (``lns.replan_jointly``)."""
+    from hltl.planner import lns  # why: start-up (docs/planner.md)
+
     node = router.node
     graph = s.heuristic.graph
     steps = [list(U) for _, U, _ in best[1]]
@@ -1435,6 +1471,8 @@ class _Neighbourhood:
     order can move into the room the others leave."""
 
     def __init__(self, router: _Router, best: _Found, routes: dict[int, _Route]) -> None:
+        import random  # why: start-up (docs/planner.md)
+
         self.router = router
         self.best = best
         self.cost = best[0]
@@ -1481,6 +1519,8 @@ class _OrderWalk:
     this finds shorter plans than random restarts alone (docs/planner.md, "Anytime mode")."""
 
     def __init__(self, s: _Search, node: Node, gls: Sequence[Goal]) -> None:
+        import random  # why: start-up (docs/planner.md)
+
         self.gls = gls
         self.router = _Router(s, node, gls)
         self.next_order = _orders(s, node, gls, seed=1)

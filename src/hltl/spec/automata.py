@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import re
@@ -11,10 +10,10 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from collections.abc import Set as AbstractSet
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from hltl.errors import AutomatonError, BackendUnavailableError
-from hltl.fileio import cache_dir
+from hltl.fileio import cache_dir, sha256
 from hltl.spec.printer import atoms_in_order, to_string
 from hltl.spec.syntax import (
     Always,
@@ -35,6 +34,9 @@ from hltl.spec.syntax import (
     Until,
     WeakNext,
 )
+
+if TYPE_CHECKING:
+    from concurrent.futures import Future
 
 # The transition table has 2**len(props) columns per state; past 16 propositions it stops being
 # a table one wants in memory (and MONA itself slows down near 20).
@@ -360,9 +362,10 @@ def _run_mona(program: str, mona: str, timeout: float, shown: str) -> str:
     return proc.stdout
 
 
-_FREE = re.compile(r"DFA for formula with free variables:([^\n]*)")
-_ACCEPTING = re.compile(r"Accepting states:([^\n]*)")
-_STATE = re.compile(r"^State (\d+): ([01X]*) -> state (\d+)\s*$", re.MULTILINE)
+# MONA's output, read only where MONA ran (a warm disk cache compiles none of these at start-up)
+_FREE = r"DFA for formula with free variables:([^\n]*)"
+_ACCEPTING = r"Accepting states:([^\n]*)"
+_STATE = r"^State (\d+): ([01X]*) -> state (\d+)\s*$"
 
 
 def parse_mona_output(output: str, n_props: int) -> DFA:
@@ -372,7 +375,7 @@ def parse_mona_output(output: str, n_props: int) -> DFA:
     starts in that successor. ``X`` in a guard is a don't-care and is expanded; a placeholder
     that MONA dropped from its free variables is a don't-care everywhere.
     """
-    free_m, acc_m = _FREE.search(output), _ACCEPTING.search(output)
+    free_m, acc_m = re.search(_FREE, output), re.search(_ACCEPTING, output)
     if free_m is None or acc_m is None:
         raise AutomatonError(f"unexpected MONA output (no state table): {output[-300:]!r}")
     free = free_m.group(1).split()
@@ -385,7 +388,7 @@ def parse_mona_output(output: str, n_props: int) -> DFA:
     width = 1 << n_props
     accepting = {int(s) for s in acc_m.group(1).split()}
     raw: dict[int, list[int]] = {}
-    for m in _STATE.finditer(output):
+    for m in re.finditer(_STATE, output, re.MULTILINE):
         src, guard, dst = int(m.group(1)), m.group(2), int(m.group(3))
         if len(guard) != len(bits):
             raise AutomatonError(f"MONA guard {guard!r} does not match variables {free}")
@@ -491,42 +494,15 @@ def to_dfa(f: Formula, *, mona: str = "mona", timeout: float = MONA_TIMEOUT) -> 
     return dfa.relabel(props)
 
 
-class _Pending:
-    """A DFA being compiled by one thread, which others wait for (``concurrent.futures.Future``'s
-    part the cache uses, without its import: ~5 ms of `hltl plan`'s start-up with logging)."""
-
-    __slots__ = ("_dfa", "_ended", "_error")
-
-    def __init__(self) -> None:
-        self._dfa: DFA | None = None
-        self._error: BaseException | None = None
-        self._ended = threading.Event()
-
-    def done(self) -> bool:
-        return self._ended.is_set()
-
-    def set_result(self, dfa: DFA) -> None:
-        self._dfa = dfa
-        self._ended.set()
-
-    def set_exception(self, error: BaseException) -> None:
-        self._error = error
-        self._ended.set()
-
-    def result(self) -> DFA:
-        self._ended.wait()
-        if self._error is not None:
-            raise self._error
-        assert self._dfa is not None
-        return self._dfa
-
-
 class AutomatonCache:
     """Thread-safe DFA cache keyed by formula shape (atoms renamed in first-occurrence order).
 
     ``F delivered(bottle, A)`` and ``F delivered(chips, B)`` share one MONA call; the cached DFA
     is re-labelled with each formula's atoms. Concurrent requests for the same shape wait for
-    the one compilation in flight. Failed compilations are not cached.
+    the one compilation in flight. Failed compilations are not cached. A table kept in the
+    ``disk`` folder is read under the cache's lock (a small JSON file), so a warm cache makes no
+    ``Future`` for it: ``concurrent.futures`` (with ``logging``, ~5 ms of `hltl plan`'s
+    start-up, docs/planner.md "Start-up") is imported only when MONA has to run.
     """
 
     def __init__(
@@ -537,7 +513,7 @@ class AutomatonCache:
         #: a folder that keeps compiled tables across processes (None: memory only)
         self.disk = disk
         self._lock = threading.Lock()
-        self._entries: dict[Formula, _Pending] = {}
+        self._entries: dict[Formula, DFA | Future[DFA]] = {}
         self._hits = 0
         self._misses = 0
 
@@ -553,7 +529,7 @@ class AutomatonCache:
 
     def __len__(self) -> int:
         with self._lock:
-            return sum(1 for fut in self._entries.values() if fut.done())
+            return sum(1 for e in self._entries.values() if isinstance(e, DFA) or e.done())
 
     def clear(self) -> None:
         """Forget every cached DFA and reset the counts."""
@@ -569,36 +545,41 @@ class AutomatonCache:
             AutomatonError: too many atoms, or MONA failed or timed out.
         """
         canonical, props = canonical_form(f)
+        owner: Future[DFA] | None = None  # (this request runs MONA; others wait for it)
         with self._lock:
-            fut = self._entries.get(canonical)
-            owner = fut is None
-            if fut is None:
-                fut = _Pending()
-                self._entries[canonical] = fut
-                self._misses += 1
-            else:
+            entry = self._entries.get(canonical)
+            if entry is not None:
                 self._hits += 1
-        if owner:
+            else:
+                self._misses += 1
+                entry = self._read(canonical, len(props))
+                if entry is None:
+                    from concurrent.futures import Future  # why: only when MONA runs
+
+                    entry = owner = Future()
+                self._entries[canonical] = entry
+        if owner is not None:
             try:
-                fut.set_result(self._compile(canonical, len(props)))
+                owner.set_result(self._compile(canonical, len(props)))
             except BaseException as exc:
                 with self._lock:
                     self._entries.pop(canonical, None)
-                fut.set_exception(exc)
+                owner.set_exception(exc)
+        if isinstance(entry, DFA):
+            return entry.relabel(props)
         try:
-            dfa = fut.result()
+            dfa = entry.result()
         except AutomatonError as exc:
             raise AutomatonError(str(exc).replace(to_string(canonical), to_string(f))) from None
         return dfa.relabel(props)
 
-    def _compile(self, canonical: Formula, n_props: int) -> DFA:
-        """MONA, unless the disk folder already holds this formula's table."""
+    def _read(self, canonical: Formula, n_props: int) -> DFA | None:
+        """The table the disk folder keeps for this formula (None: none, or unreadable)."""
         if self.disk is None:
-            return _compile_canonical(canonical, n_props, self.mona, self.timeout)
+            return None
         text = to_string(canonical)
-        path = self.disk / (hashlib.sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
         try:
-            data = json.loads(path.read_text(encoding="utf-8"))
+            data = json.loads(_table_path(self.disk, text).read_text(encoding="utf-8"))
             if data["formula"] == text and data["format"] == DISK_FORMAT:
                 return DFA(
                     tuple(_placeholder(i) for i in range(n_props)),
@@ -609,8 +590,14 @@ class AutomatonCache:
                 )
         except (OSError, ValueError, KeyError, TypeError, AutomatonError):
             pass  # absent or unreadable: compile it
+        return None
+
+    def _compile(self, canonical: Formula, n_props: int) -> DFA:
+        """MONA (``_read`` found no table), keeping the table in the disk folder if any."""
         dfa = _compile_canonical(canonical, n_props, self.mona, self.timeout)
-        if not isinstance(dfa, MonotoneDFA):
+        if self.disk is not None and not isinstance(dfa, MonotoneDFA):
+            text = to_string(canonical)
+            path = _table_path(self.disk, text)
             record = {
                 "format": DISK_FORMAT,
                 "formula": text,
@@ -630,6 +617,11 @@ class AutomatonCache:
 
 
 DISK_FORMAT = 1
+
+
+def _table_path(disk: Path, text: str) -> Path:
+    """Where the ``disk`` folder keeps the table of the canonical formula ``text``."""
+    return disk / (sha256(f"{DISK_FORMAT}\n{text}".encode()).hexdigest() + ".json")
 
 
 def disk_cache_dir() -> Path | None:
