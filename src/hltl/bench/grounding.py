@@ -88,7 +88,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineer who changed the grounder before its one measurement at the end of session 21; tuned on
 # in session 22), blind21 (written in session 22 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
-# its one measurement at the end of session 22; tuned on in session 23).
+# its one measurement at the end of session 22; tuned on in session 23), blind22 (written in
+# session 23 by another engineer and committed alone, reviewed by a second engineer, never opened
+# by the engineers who changed the grounder before its one measurement at the end of session 23;
+# tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -127,6 +130,7 @@ PARTS = (
     "blind19",
     "blind20",
     "blind21",
+    "blind22",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
