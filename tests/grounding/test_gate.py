@@ -139,3 +139,34 @@ def test_the_gated_functions_return_what_re_returns_for_no_match() -> None:
         assert gate.split(r"grateful", text) == [text]
         assert gate.sub(r"\bcup\b", "mug", text) == "the mug to Alice"
         assert gate.split(r"\s+to\s+", text) == ["the cup", "Alice"]
+
+
+def test_the_lower_case_kept_for_the_last_text_is_that_texts() -> None:
+    pattern = r"\bgrateful\b"
+    gate.may_match(pattern, re.I, "")  # met once: gated from now on
+    loud, plain, other = "I'd be GRATEFUL for the cup", "the cup to Alice", "ſo grateful"
+    for _ in range(2):  # texts alternating: each checked as itself, never as the one before
+        assert gate.may_match(pattern, re.I, loud)
+        assert not gate.may_match(pattern, re.I, plain)
+        assert gate.may_match(pattern, re.I, other)  # not ASCII: never gated
+        assert not gate.may_match(pattern, re.I, "".join(["the cup ", "to Alice"]))
+        assert gate.may_match(pattern, re.I, "".join(["I'd be ", "Grateful"]))
+
+
+def test_texts_lexed_are_kept_across_instructions_and_dropped_when_many(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from hltl.grounding import lexicon as lexicon_module
+
+    corpus = load_corpus(ROOT / CORPUS_DIR / "tuning.yaml", ROOT)
+    entry = corpus.entries[0]
+    lx = Lexicon.of(corpus.scenes[entry.scene])
+    first = lexicon_module.lex(entry.text, lx)
+    lx.forget()  # a new instruction: the lexed text is kept, and lexed the same
+    assert lx.lexed(entry.text) is not None
+    assert lexicon_module.lex(entry.text, lx) == first
+    assert lexicon_module.lex(entry.text, lx) == list(lexicon_module._lex(entry.text, lx))
+    monkeypatch.setattr(lexicon_module, "_LEXED_KEPT", 0)
+    lx.forget()  # over the bound: emptied
+    assert lx.lexed(entry.text) is None
+    assert lexicon_module.lex(entry.text, lx) == first

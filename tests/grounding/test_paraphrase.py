@@ -346,7 +346,6 @@ KNOWN_MISSES = frozenset(
         "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
-        "grandpa's asking for the teddy, give it him",
         "cup to person a first please and once shes got it the apple goes to person b",
         "Lenq needs the salt for table four.",
         "Alixe said she's peckish, the crisps are for her.",
@@ -363,7 +362,6 @@ KNOWN_MISSES = frozenset(
         "thanks.",
         "Dana's desperate for the banana, she hasn't eaten since six this morning.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "The thermometer, Ruth keeps asking for it. Give it her, would you.",
         "See the notepad by the phone? Drop it in the box.",
         "Mia's got the scanner down on her checklist. Could you run it over to her?",
         "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
@@ -376,7 +374,6 @@ KNOWN_MISSES = frozenset(
         "he's waiting.",
         "Black pen to Sam. Also the notepad. Both of those to him.",
         "For Person B, bottle, please give. Thank you.",
-        "Chips over to Person A then bottle across to Person B and then we're square, yeah?",
         "Bob wants the bottle Alice wants the crisps that's all of it.",
         "Hand Kofi a spanner, whichever's nearest your gripper.",
         "Lily can have one of the blocks, either colour's fine.",
@@ -419,6 +416,112 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
+        # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
+        "Morning! I've been up since four with the sourdough, so excuse the flour on "
+        "everything. Would you be a darling and bring Carol the red mug? Cheers, my love.",
+        "Evening. Um, sorry, only if it isn't too much trouble, the apple across to Person A, "
+        "please. Thanks awfully, you're a gem.",
+        "Hello po, good morning po. Kindly give the bottle to Person A po, if okay with you. "
+        "Thank you so much po, God bless.",
+        "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
+        "Right, I'm the midwife, I've been on since seven last night, so, um, bear with me. "
+        "Could you pop the bowl in the sink for us, pet? Ta.",
+        "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
+        "terribly passing Sam the notepad? Thanks a bunch.",
+        "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
+        "the magazine down on the bedside locker? Lovely, thank you.",
+        "Hiya, zookeeper here for the school visit, the penguins are still in the van. Could "
+        "you be a star and hand Mrs Ortiz the glue stick? Ta.",
+        "Oh, bless them. Sorry, I'm just the old pensioner from number six, popping in with a "
+        "casserole. Would you kindly put the teddy bear down on the play mat? Thanks ever so.",
+        "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
+        "be a good sort and hand Jess the torch? Much appreciated.",
+        "What Alice wants is the crisps, honestly nothing else will do for her.",
+        "Person A's gasping after her run, she really needs that bottle.",
+        "Person B wants the bottle and the chips both, he's off to watch the football.",
+        "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
+        "Mr Lee needs his tablets, the drug round's running late.",
+        "Noah desperately needs a ruler, his lines are all over the place.",
+        "The little one wants her teddy, she won't settle without it.",
+        "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
+        "See the blue mug? That's Bob's, give it to him.",
+        "Bob's thirsty from the ride, so take him over the bottle.",
+        "Right, photographer here, we're losing the light. Person B, bottle. Person A, chips. "
+        "Quick quick.",
+        "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
+        "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
+        "hands.",
+        "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
+        "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
+        "Alice wants the bottle. Bob wants the crisps. Sort the pair of them out.",
+        "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
+        "so she's got two.",
+        "The cup. Person B. The chips. Person A. Ready when you are.",
+        "Put the spoon on the tray and the green cup on the tray and then once they're both "
+        "there the sponge goes in the sink.",
+        "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
+        "Give Carol one of the mugs, she really doesn't care which.",
+        "Either of them can have the chips, Alice or Bob, makes no odds.",
+        "I'm closing up the bar, so the bottle and the crisps, both of them, up on the shelf "
+        "out of the way.",
+        "Anything at all for Person A, just the one item, whatever you grab first.",
+        "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
+        "having the cup.",
+        "Person A and Person B both want a drink, so the bottle to one and the cup to the "
+        "other, whichever way round.",
+        "Stick a cup in the sink to soak, green or white, I'm not bothered.",
+        "Marco and Lena want a plate each, so one apiece, any way round.",
+        "Each student gets a book, you choose who gets which.",
+        "Either spanner in the locker, whichever's closer to hand.",
+        "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
+        "Give the two people a single item each: Person A the bottle, Person B the apple.",
+        "We're clearing up for the professor's seminar, so both cups, green and white, onto the "
+        "tray.",
+        "The two smaller boxes onto the conveyor.",
+        "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
+        "chair.",
+        "Don't give Bob the bottle; he gets the crisps.",
+        "Nothing for Person A today; the chips go to Person B.",
+        "Give Person A something to eat, but not the apple, she's allergic.",
+        "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
+        "other.",
+        "Mr Novak's getting the plate that's sitting out, not the one up in the plate rack.",
+        "Zoe can have the red book, not the one on the bookshelf.",
+        "Not to Lily, she'll only chew it; give the teddy to Ava.",
+        "Chips for Bob, ah, no, wrong way round, Alice is the one wanting chips.",
+        "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
+        "Bottle to Person B. Hang on, I misspoke, chips to Person B.",
+        "Cup over to Person A... nope, I've read the ticket wrong, it's Person B's.",
+        "The apple for Person B, I mean the bottle, leave the apple.",
+        "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
+        "Black pen to Priya, oh, she marks in red, so the red one instead.",
+        "Magazine to Mr Lee, oh I've got that wrong, it was Mrs Khan who asked for it.",
+        "Scanner to Tom. No, not Tom, Mia's the one who asked.",
+        "Hand the scissors to Zoe, sorry, Noah, I always mix the two of them up.",
+        "bob's been on the bike all day give him the bottle thx",
+        "sorry typing one handed, chips to person b",
+        "Pop the cjips up on the shelf before the kids find them.",
+        "Sorry, cold hands, give Person A the applw.",
+        "Person B wants a snack, the xhips please.",
+        "The sponhe can go in the sink now it's been used.",
+        "The magazone can go back on the trolley, Mrs Khan's finished with it.",
+        "Put the globw on the desk ready for geography.",
+        "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
+        "killing me.",
+        "How about letting Person A have the bottle, seeing as she's the thirsty one?",
+        "Any way the apple could find its way to Person A?",
+        "Would you pop the notepad into the box so I can tape it up?",
+        "Could the middle-sized box go onto the pallet with the big one?",
+    }
+)
+# refused without all the readings the refusal should list (docs/grounding.md reports them)
+KNOWN_UNCLEAR = frozenset(
+    {
+        # blind21 (tuned on in session 23)
+        "Hand that over to Person A when you're ready.",
+        "Plate to Lena. The one she likes. You know the one I mean.",
+        "One of them gets the chips, no idea which, you'll have to ask.",
+        "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -452,8 +555,9 @@ KNOWN_MISSES = frozenset(
 # kind in session 21: asserted now, the rest in KNOWN_MISSES; "blind20" written in session 21 by
 # another engineer, reviewed by a second one, measured once at the end of session 21, its
 # refusals met by kind in session 22: asserted now, the rest in KNOWN_MISSES; "blind21" written in
-# session 22 by another engineer, reviewed by a second one, measured once at the end of session 22)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind21"})
+# session 22 by another engineer, reviewed by a second one, measured once at the end of session 22,
+# tuned on in session 23: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -537,6 +641,9 @@ def test_entry_is_grounded_exactly_or_refused(part: str, entry: Entry) -> None:
     assert out.verdict != "wrong", f"{entry.text!r} grounded as {out.detail}"
     if entry.text in KNOWN_MISSES:
         assert out.verdict == "refused", "a known miss now grounds: drop it from KNOWN_MISSES"
+        return
+    if entry.text in KNOWN_UNCLEAR:
+        assert out.verdict == "unclear", "a known refusal without readings changed: drop it"
         return
     assert out.verdict == "exact", f"{entry.text!r}: {out.verdict}: {out.detail}"
 

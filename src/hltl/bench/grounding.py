@@ -88,7 +88,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineer who changed the grounder before its one measurement at the end of session 21; tuned on
 # in session 22), blind21 (written in session 22 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
-# its one measurement at the end of session 22; tests do not assert it).
+# its one measurement at the end of session 22; tuned on in session 23).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -138,15 +138,27 @@ def _gate(pattern: str, flags: int) -> _Gate:
     return gate
 
 
+# the last text checked and its lower case (None where it is not ASCII), replaced as one tuple
+# (threads may ground at once): the normaliser checks one text against some 600 patterns in turn
+_LAST: tuple[str, str | None] = ("", "")
+
+
 def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
+    global _LAST
     key = (pattern, flags)
     gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
-    if gate is None or not text.isascii():
+    if gate is None:
+        return True
+    last = _LAST
+    if last[0] is not text:
+        last = _LAST = (text, text.lower() if text.isascii() else None)
+    low = last[1]
+    if low is None:
         return True
     words, fold = gate
     if fold:
-        text = text.lower()
+        text = low
     for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more, ~600 times an instruction
         if word in text:
             return True

@@ -1254,8 +1254,10 @@ class Lexicon:
 
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
-        # texts lexed while one instruction is read (the normaliser looks at the same words in
-        # many of its steps); emptied by forget() when a new instruction starts
+        # texts lexed (the normaliser looks at the same words in many of its steps, and at the
+        # same short stretches, 'the knife', 'please', in many instructions): lexing is a
+        # function of the text and this lexicon's names, so what is kept stays right; emptied
+        # when it holds _LEXED_KEPT texts
         self._lexed: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
@@ -1379,8 +1381,10 @@ class Lexicon:
         return phrase
 
     def forget(self) -> None:
-        """Drop the texts lexed so far (called when a new instruction starts)."""
-        self._lexed.clear()
+        """Drop what was read and rewritten for the instruction before (called when a new
+        instruction starts), and the texts lexed once they are many."""
+        if len(self._lexed) > _LEXED_KEPT:
+            self._lexed.clear()
         self.readings.clear()
         self.rewrites.clear()
 
@@ -1601,6 +1605,8 @@ class Lexicon:
 
 
 _LEXICONS: dict[object, Lexicon] = {}
+# texts a lexicon keeps lexed across instructions (a few hundred bytes each)
+_LEXED_KEPT = 20000
 
 
 def _lexicon(key: object, scene: Scene) -> Lexicon:
@@ -1643,6 +1649,11 @@ def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> 
     if typed[0] == name[0]:
         if typed in first_names() and not _same_name(typed, name):
             return True
+        ends = name[-1] not in "aeiouy" and typed[-1] in "aeio"
+        if ends and len(typed) == len(name) + 1 and typed.startswith(name):
+            # "Jessa", "Paula", "Erica" for "Jess", "Paul", "Eric": a vowel put after a name is
+            # how names are made from names (the list of first names is never complete)
+            return not _same_name(typed, name)
         # "Noam" for "Noah": a letter typed for one far from it on the keyboard (not a slip of
         # the finger, nor a letter that sounds the same) makes another name, from a language
         # the list of English names lacks

@@ -6585,7 +6585,8 @@ _CLOSER19 = re.compile(
     r"so let it be|let it be|make it so|over to you|over and out|class dismissed|story over|"
     r"job done|job's|jobs a|all done|all hands|what a|and scene|that be all|that would be|"
     r"that'd be|there's|there you go|there we go|so be it|"
-    r"(?:and )?then (?:we|you|i) (?:can|could|'ll|will|are|'re)|we're|we are)\b",
+    r"(?:and )?(?:then|after that|afterwards) (?:we|you|i) (?:can|could|'ll|will|are|'re)|"
+    r"we're|we are)\b",
     _F,
 )
 _CLOSER_HELD19 = re.compile(
@@ -6623,11 +6624,14 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
         keep = len(chunks)  # fillers only: _fillers19's to take off
     chunks, seps = chunks[:keep], seps[:keep]
     # a closer said on in the last stretch kept: '… and then we're lekker', '… then we can
-    # close the ticket', '… and that's your lot'
-    last = chunks[-1]
+    # close the ticket', '… and that's your lot', '… and then you can rest.' (the last stretch
+    # holding words: a full stop leaves an empty one after it)
+    at = max((k for k, c in enumerate(chunks) if c.strip()), default=len(chunks) - 1)
+    last = chunks[at]
     m = _rx(
         r"\s+(?:and then |then |and )(?:we're|we are|that's|that is|you're|we can|we'll|that'll be)"
-        r" [^,.;!?]*$"
+        r" [^,.;!?]*$|\s+(?:and )?(?:then|after that|afterwards) you (?:can|could|may) "
+        r"(?:rest|relax|have a (?:rest|break|sit down|breather))\s*$"
     ).search(last)
     if (
         m is not None
@@ -6635,7 +6639,7 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
         and _names_nothing(m.group(0), lexicon)
         and _names(last[: m.start()], lexicon)
     ):
-        chunks[-1] = last[: m.start()]
+        chunks[at] = last[: m.start()]
     head = "".join(
         p for k, c in enumerate(chunks) for p in (c, seps[k] if k < len(chunks) - 1 else "")
     )

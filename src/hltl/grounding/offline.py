@@ -1036,6 +1036,8 @@ class _Parser:
             raise GroundingError(f"{frag.text!r}: {prep.text} whom or where?")
         if len(nps) > 2 or (len(nps) == 2 and (prep is not None or not allow_object)):
             raise GroundingError(f"cannot parse {frag.text!r}: too many names in one clause")
+        if len(nps) == 2 and _it_to_person(nps, frag):
+            nps = [nps[1], nps[0]]  # "give it him", "give it Person A": British, 'it' to him
         if len(nps) == 2:  # "give A the bottle"
             tid, kind = self._target(nps[0], frag, "")
             frag.target = _Target(kind, tid, "", nps[0].text)
@@ -1750,6 +1752,20 @@ def _trailing_order(items: list[Item]) -> list[Item]:
             )
         return body  # "Carol needs the bottle first": already first
     return items
+
+
+def _it_to_person(nps: list[Item], frag: _Frag) -> bool:
+    """Whether two names after a verb of giving are 'it'/'them' then a person ("give it him",
+    "hand them Person A"): 'it' is never the recipient, so the person is."""
+    first, second = nps
+    return (
+        frag.verb is not None
+        and VERB_CLASS[frag.verb] == "give"
+        and _is(first, "it", "them")
+        and second.kind == "ent"
+        and bool(second.refs)
+        and all(r.kind == "human" for r in second.refs)
+    )
 
 
 def _own_target(body: list[Item], j: int) -> bool:

@@ -1086,6 +1086,8 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             if prev is None:
                 # "Carol the red mug and Bob the other one"; "… the pen and Sam another"
                 other = _other_than(out, lexicon, some=another)
+                if other is not None and not another:
+                    _other_person_too(items, k, out, other, lexicon)
                 if other is not None:
                     out.append(replace(other, text=f"{it.text} ({other.text})"))
                     k += 1 + _same_noun(items, k, other)
@@ -2880,6 +2882,8 @@ def _rest_at(items: list[Item], k: int) -> tuple[int, int] | None:
     low = it.lemma if it.kind == "unknown" else it.text.lower()
     nxt = items[k + 1] if k + 1 < len(items) else None
     if it.kind == "unknown" and low.split()[0] in ("rest", "others"):
+        if k == 0 or items[k - 1].text.lower() != "the":
+            return None  # 'you can rest', 'a rest', 'others': no determiner, not 'the rest'
         n = 1
         if low == "rest of" and nxt is not None and (_is(nxt, "it") or nxt.lemma == "pronoun"):
             n = 2  # "the rest of them"
@@ -3160,6 +3164,47 @@ def _others_left(out: list[Item], lexicon: Lexicon, *, some: bool = False) -> li
     return left
 
 
+def _other_person_too(
+    items: list[Item], k: int, out: list[Item], other: Item, lexicon: Lexicon
+) -> None:
+    """'Give Person A the bottle, or no, hang on, the other one': a correction's 'the other one'
+    after an object the only one of its kind names no other of that kind; when one other person
+    is left in the scene, it could as well correct the recipient: refused with both readings
+    ('… the red mug, no, the other one' of two mugs reads: the other mug)."""
+    if not _corrected_at(items, k):
+        return
+    last = next((x for x in reversed(out) if _objects(x)), None)
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    if last is None or any(
+        i != r.id and c == cats.get(r.id) for r in last.refs for i, c in cats.items()
+    ):
+        return
+    said = _people(out)
+    left = [h.id for h in lexicon.scene.humans if h.id not in said]
+    if said and len(left) == 1:
+        raise GroundingError(
+            f"{items[k].text!r} is unclear: it could mean {other.refs[0].id} or {left[0]}; name "
+            "the object or the person"
+        )
+
+
+def _corrected_at(items: list[Item], k: int) -> bool:
+    """Whether 'other' at ``k`` is said right after a correction cue ('no', 'wait', 'sorry', 'I
+    mean', 'hang on', …) and a comma."""
+    j = k - 1
+    if j >= 0 and items[j].kind == "word" and items[j].text.lower() == "the":
+        j -= 1
+    if j < 0 or items[j].kind != "punct" or items[j].text not in (",", ".", "?", "!"):
+        return False
+    said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
+    return bool(said & _OTHER_CUES)
+
+
+_OTHER_CUES = frozenset(
+    {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}
+)
+
+
 def _not_appended_other(items: list[Item], k: int) -> None:
     """'Bob wants a mug, the other one', 'Give Alice the bottle, thanks, the other one': 'the
     other' said after a comma (or as a sentence of its own) and ending the clause, with nobody
@@ -3170,8 +3215,7 @@ def _not_appended_other(items: list[Item], k: int) -> None:
         j -= 1
     if j < 0 or items[j].kind != "punct" or items[j].text not in (",", ".", "?", "!"):
         return  # "Could Bob have a mug? The other one.": a sentence of it alone, as after a comma
-    said = {w for n in (j - 1, j - 2) if n >= 0 for w in items[n].text.lower().split()}
-    if said & {"no", "wait", "actually", "sorry", "mean", "rather", "hold", "hang", "oops"}:
+    if _corrected_at(items, k):
         return  # "the green one... no, the other one": a correction, read as one
     n = k + 1
     if n < len(items) and items[n].kind == "word" and items[n].text.lower() in ("one", "ones"):

@@ -45,11 +45,12 @@ CP_UP_TO = 16
 CP_DETOUR = 0.6
 # cells of more goals (no joint re-plan) where the profile bound runs (grids, random layouts,
 # 10 s budgets): after this share of the time the walk's best plan is squeezed into fewer steps
-# by conflict repair (``_squeezed``, ``repair.Repair``) until the end; the walk plateaus
-# within 2-4 s of a 10 s run (docs/planner.md, "Fewer steps by repair"; 0.15 against 0.3 in
-# paired 10 s runs of the ten 32 x 32 grid and random cells: random 4 13.0 -> 12.4 s, the rest
-# the same)
-REPAIR_WALK_SHARE = 0.15
+# by conflict repair (``_squeezed``, ``repair.Repair``) until the end. 0: the repair
+# squeezes the walk's first plan (the critical-first order's) at once. The walk's 1.5 s took
+# 32 x 32 grid 3 from 27 to 25 steps, which the repair squeezes to 18 in about 1.2 s from
+# either; its last level (17 steps) is the one that needs the time (docs/planner.md, "Session
+# 23"; 0.15 against 0.3 in session 20: random 4 13.0 -> 12.4 s)
+REPAIR_WALK_SHARE = 0.0
 # big cells of at most this many goals: the relaxed-schedule bound (``schedule``) runs first,
 # until this share of the budget
 SCHEDULE_UP_TO = 16
