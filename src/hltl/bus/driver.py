@@ -1066,7 +1066,7 @@ class BusCell:
         if self._basis is None:
             return
         self._spec_wire = (basis.version, self._basis.spec)
-        if basis.version not in self._spec_ids and self._basis.spec is not None:
+        if self.background and basis.version not in self._spec_ids and self._basis.spec:
             self._spec_ids[basis.version] = spec_digest(self._basis.spec)
         if not self.guess or self._motion or self._dead or not self._defer:
             return
