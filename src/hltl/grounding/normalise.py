@@ -1716,7 +1716,10 @@ def _drop(pattern: str, text: str, lexicon: Lexicon, repl: str = "") -> str:
 # attention also before a full stop): the 'me' of 'excuse me' is no recipient and its 'sorry'
 # corrects nothing. Later in the instruction a call for attention is left (_corrections19 does not
 # read it as a correction).
-_GREETING = r"(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening)(?: there)?"
+_GREETING = (
+    r"(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening|afternoon|"
+    r"good (?:morning|afternoon|evening|day)|ah|oh)(?: there)?"  # session 24: 'Ah, good afternoon'
+)
 _BOTHERING = r"(?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?"
 _ATTENTION = (
     r"(?:(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
@@ -2085,7 +2088,7 @@ def _when(text: str, lexicon: Lexicon) -> str:
 
     return _sub(
         r",?\s+(?:before|by the time) (?:he|she|they|the|his|"
-        r"her|their|my|our)\b(?P<said>(?:'s|'re| [a-z']+){1,5})(?=\s*(?:[.;!?]|,\s*(?:please|"
+        r"her|their|my|our|i|we)\b(?P<said>(?:'s|'re| [a-z']+){1,5})(?=\s*(?:[.;!?]|,\s*(?:please|"
         r"thanks|thank you|cheers|ta)\b|$))",
         timed,
         text,
@@ -6177,7 +6180,11 @@ _LY_HELD19 = frozenset(
         *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
     }
 )
-_PARTICLES19 = frozenset({"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"})
+_PARTICLES19 = frozenset(
+    {"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"}
+    # session 24: Thai and Filipino polite particles ("bring cup to Person B, krap")
+    | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
+)
 _NOW19 = re.compile(
     r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
     r"forthwith|quick smart)\b",
@@ -6961,6 +6968,59 @@ _INTERJECTION24 = re.compile(
     r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there)",
     _F,
 )
+
+
+# Greetings, thanks, blessings and polite particles of other languages that speakers of English
+# as a second language (or of a faith) open and close requests with. The list is by KIND, one
+# line per kind, each word a courtesy in its language that asks for nothing; a stretch between
+# punctuation marks made only of them (with an address such as 'my friend', 'sir', 'boss') is
+# taken off when what is left names something. docs/grounding.md, "Session 24", lists them.
+_COURTESY24 = (
+    # greetings
+    r"habari(?: yako| gani)?|jambo|hujambo|sawasdee|sawatdee|sawasdi|dobryi den|dobryy den|"
+    r"dobry den|dobriy den|pryvit|vitayu|selamat (?:pagi|petang|siang|malam|datang)|apa khabar|"
+    r"merhaba|yassou|yassas|geia sou|xin chao|kumusta|kamusta|magandang (?:umaga|hapon|gabi)|"
+    r"namaste|namaskar|salaam|salam|as-?salaamu? alaikum|shalom|hola|bonjour|ciao|konnichiwa|"
+    r"ni hao|kia ora|sawubona|ahoj|"
+    # thanks
+    r"asante(?: sana)?|khop khun(?: mak)?|khob khun(?: mak)?|kop khun|diakuiu|dyakuyu|diakuyu|"
+    r"spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|"
+    r"dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|"
+    r"arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|"
+    # blessings and pace
+    r"amen(?: to that)?|inshallah|mashallah|pole pole|"
+    # polite particles said alone
+    r"krap|khrap|krub|khrub|kha|po|opo|lah|ah"
+)
+_COURTESY_STRETCH24 = re.compile(
+    rf"(?:{_COURTESY24})(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all))*",
+    _F,
+)
+
+
+def _courtesy24(text: str, lexicon: Lexicon) -> str:
+    """Session 24: stretches of greetings, thanks, blessings and polite particles of other
+    languages ("Sawasdee krap.", "…, asante.", "Habari, …", "Amen to that.", "Diakuiu, thank you
+    very much.") taken off (above)."""
+    if not re.search(rf"\b(?:{_COURTESY24})\b", text, _F):
+        return text
+    parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
+    chunks, seps = parts[0::2], [*parts[1::2], ""]
+    drop = [
+        bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(c, lexicon)
+        for c in chunks
+    ]
+    if not any(drop):
+        return text
+    out: list[str] = []
+    for c, sep, d in zip(chunks, seps, drop, strict=True):
+        if d:
+            if out and sep.strip()[:1] in (".", "!", "?") and out[-1].strip()[:1] in (",", ";"):
+                out[-1] = sep  # "…, asante." → "…."
+            continue
+        out.extend((c, sep))
+    said = "".join(out).strip(" ,;")
+    return said if _names(said, lexicon) else text
 
 
 def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
@@ -7747,6 +7807,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _courtesy24,
     _attention21,
     _speaker21,
     _reasons21,
