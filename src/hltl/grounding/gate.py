@@ -146,8 +146,10 @@ _LAST: tuple[str, str | None] = ("", "")
 def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
     global _LAST
-    key = (pattern, flags)
-    gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
+    try:
+        gate = _GATES[pattern, flags]
+    except KeyError:
+        gate = _gate(pattern, flags)
     if gate is None:
         return True
     last = _LAST
@@ -170,12 +172,6 @@ def _compiled(pattern: str, flags: int) -> re.Pattern[str]:
     return re.compile(pattern, flags)
 
 
-def _source(pattern: str | re.Pattern[str], flags: int) -> tuple[str, int]:
-    if isinstance(pattern, re.Pattern):
-        return pattern.pattern, pattern.flags
-    return pattern, flags
-
-
 _T = TypeVar("_T")
 
 
@@ -189,7 +185,10 @@ def _gated(
 ) -> _T:
     """``method`` of the compiled ``pattern`` called with ``args``, or ``on_no_match`` (what re
     returns for no match) where the gate says ``pattern`` cannot match ``string``."""
-    source, flags = _source(pattern, flags)
+    if isinstance(pattern, re.Pattern):
+        source, flags = pattern.pattern, pattern.flags
+    else:
+        source = pattern
     if not may_match(source, flags, string):
         return on_no_match
     return method(_compiled(source, flags), *args)
