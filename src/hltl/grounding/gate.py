@@ -18,11 +18,11 @@ from __future__ import annotations
 
 import functools
 import re
+import sys
 from collections.abc import Callable, Iterator
 from re import IGNORECASE as IGNORECASE
 from re import Match as Match
 from re import Pattern as Pattern
-from re import _parser  # re's own pattern parser
 from re import compile as compile  # re's name, for the module-level patterns
 from re import escape as escape
 from typing import Any, TypeVar
@@ -45,6 +45,10 @@ __all__ = [
 ]
 
 _Words = frozenset[str] | None
+
+# re's own pattern parser (imported by re itself; taken from sys.modules, as typeshed's re has no
+# _parser: mypy 2.4 refuses ``from re import _parser``)
+_parser = sys.modules["re._parser"]
 
 _LITERAL = _parser.LITERAL
 _BRANCH = _parser.BRANCH

@@ -42,7 +42,7 @@ class Token:
 # (for a case-blind one, a non-ASCII text always: re folds 'ſ' onto 's', 'K' onto 'k'): most
 # texts hold none, and the rewrites ran on every text lexed, some ten an instruction.
 _Rewrite: TypeAlias = tuple[re.Pattern[str], str | Callable[[re.Match[str]], str], tuple[str, ...]]
-_TOKEN_REWRITES: tuple[_Rewrite, ...] = (
+_TOKEN_SUBS: tuple[_Rewrite, ...] = (
     # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
     # word is the pause of a correction (a comma); any other "..." ends a sentence
     (_ELLIPSIS_CORRECTION, ",", ("..",)),
@@ -72,12 +72,16 @@ _TOKEN_REWRITES: tuple[_Rewrite, ...] = (
 )
 
 
+# with whether each pattern is case-blind (a flag test costs more than the word test)
+_TOKEN_REWRITES = tuple((*sub, bool(sub[0].flags & re.IGNORECASE)) for sub in _TOKEN_SUBS)
+
+
 def tokenize(text: str) -> list[Token]:
     """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u2026", "...")
     low, plain = text.lower(), text.isascii()
-    for pattern, repl, words in _TOKEN_REWRITES:
-        said = low if pattern.flags & re.IGNORECASE else text
+    for pattern, repl, words, fold in _TOKEN_REWRITES:
+        said = low if fold else text
         for word in words:
             if word in said:
                 break
@@ -849,6 +853,8 @@ GENERIC_PEOPLE = ("person", "human")
 GENERIC_NOUNS = ("thing", "object", "item")
 
 MAX_PHRASE = max(len(p) for p in PHRASES)
+# the first words of the multi-word keywords: a word that is none of them starts none
+_PHRASE_FIRST = frozenset(p[0] for p in PHRASES)
 # every word of a multi-word keyword: never taken for a misspelt scene name
 PHRASE_WORDS = frozenset(w for p in PHRASES for w in p)
 
@@ -1219,6 +1225,7 @@ assert all(WORDS[w] == "filler" for w in DROPPED_FILLERS)
 # "oh wait"): taken out when lexing only where no such keyword holds them (session 8: a fuzz
 # found "everything but, well, the mugs" read as everything)
 SOFT_FILLERS = frozenset({"well", "ok", "okay", "oh", "alright"})
+_FILLER_WORDS = DROPPED_FILLERS | SOFT_FILLERS  # _without_fillers tests each word against both
 assert all(WORDS[w] == "filler" for w in SOFT_FILLERS)
 
 
@@ -1954,9 +1961,9 @@ def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
     scene name of several words ("still water") stays."""
     keep = [True] * len(tokens)
     for i, tok in enumerate(tokens):
-        if [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
+        if tok.low == "if" and [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
             keep[i] = keep[i + 1] = keep[i + 2] = False
-        elif tok.low in DROPPED_FILLERS | SOFT_FILLERS and not _in_name(tokens, i, lexicon):
+        elif tok.low in _FILLER_WORDS and not _in_name(tokens, i, lexicon):
             keep[i] = tok.low in SOFT_FILLERS and _in_phrase(tokens, i)
         elif tok.low in TITLES and i + 1 < len(tokens) and lexicon.match(tokens, i) is None:
             after = lexicon.match(tokens, i + 1)
@@ -2130,8 +2137,11 @@ def _in_phrase(tokens: list[Token], i: int) -> bool:
 
 
 def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
-    for n in range(min(MAX_PHRASE, len(tokens) - i), 1, -1):
-        lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
+    if i >= len(tokens) or tokens[i].low not in _PHRASE_FIRST:
+        return None
+    lows = tuple([t.low for t in tokens[i : i + MAX_PHRASE]])
+    for n in range(len(lows), 1, -1):
+        lemma = PHRASES.get(lows[:n])
         if lemma is not None and not _pronoun_subject(tokens, i + n):
             return n, lemma
     return None
