@@ -2069,6 +2069,14 @@ def _purpose(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# a time later than now, said in a deadline ('before I go tomorrow', 'before she leaves tonight')
+_LATER24 = re.compile(
+    r"\b(?:tomorrow|tonight|later|next|week|weekend|month|evening|afternoon|morning|lunch|"
+    r"dinner|breakfast|tea|hours?|minutes?|mins?|days?|o'clock|\d)\b",
+    _F,
+)
+
+
 def _when(text: str, lexicon: Lexicon) -> str:
     """'… before he heads off', '… before the lesson starts': a deadline about no task (it names
     nothing in the scene, and no word in it counts, chooses or points back to a task) is met by
@@ -2082,6 +2090,8 @@ def _when(text: str, lexicon: Lexicon) -> str:
             _names_nothing(said, lexicon)
             and not _KEEP_WORDS.search(said)
             and not re.search(r"\b(?:done|finished|complete|completed)\b", said, _F)
+            # session 24: "before I go tomorrow" names a later time: the task is put off
+            and not _LATER24.search(said)
         ):
             return ""
         return m.group(0)
