@@ -285,3 +285,27 @@ def test_the_fuzz_doubts_are_refused() -> None:
     )
     # a hedge that is no doubt about the request still reads
     assert_reads("Give Bob the crisps, I'm sure of it.", "chips>B", TWO)
+
+
+def test_a_second_cue_of_one_correction_takes_back_nothing_before_it() -> None:
+    # the fuzz over blind22 (seed 24): "I want the bottle too. Crisps on the shelf, no, scratch
+    # that, the crisps to Alice, I misheard her." read chips>A: the correction restated after
+    # 'no' kept 'scratch that' at its head, which then took back the sentence before (the
+    # speaker's own want, which must be refused)
+    for text in (
+        "I want the bottle too. Crisps on the shelf, no, scratch that, the crisps to Alice, I "
+        "misheard her.",
+        "I want the bottle too. Crisps on the shelf, no, scratch that, the crisps to Alice.",
+        "I need the bottle. Crisps on the shelf, sorry, forget that, the crisps to Bob.",
+    ):
+        assert_refused(text, TWO)
+    assert_reads(
+        "Crisps on the shelf, no, scratch that, the crisps to Alice, I misheard her.",
+        "chips>A",
+        TWO,
+    )
+    assert_reads(
+        "Bottle to Bob. Crisps on the shelf, no, scratch that, the crisps to Alice.",
+        "bottle>B & chips>A",
+        TWO,
+    )

@@ -6725,6 +6725,11 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
     object); one that adds ('too', 'also', 'as well') or leaves an object out stays refused."""
     for m in reversed(list(_RESTATE20.finditer(text))):
         head, after = text[: m.start()], text[m.end() :]
+        # "…, no, scratch that, the crisps to Alice": the second cue is the same correction; left
+        # at the head of the restated words it would take back the sentence before (session 24)
+        after = _sub(
+            r"^(?:scratch|strike|forget|ignore|cancel) that\s*[,.:;!]\s*|^i mean\s*,?\s*", "", after
+        )
         cut = max(head.rfind(". "), head.rfind("! "), head.rfind("? "), head.rfind("; "))
         kept, before = (head[: cut + 1], head[cut + 2 :]) if cut >= 0 else ("", head)
         if not before.strip() or re.search(r"\b(?:too|also|as well|instead of)\b", after, _F):
@@ -7033,6 +7038,14 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     return said if _names(said, lexicon) else text
 
 
+# a correction cue: a remark of the speaker's before one is not taken off
+_CUE_AFTER24 = re.compile(
+    r"\b(?:no(?! (?:trouble|bother|rush|hurry|problem|worries|fuss))|nope|sorry|correction|"
+    r"actually|wait|hang on|hold on|i mean|rather|scratch|oops|whoops|make that|instead|not)\b",
+    _F,
+)
+
+
 def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
     """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
     ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
@@ -7070,7 +7083,14 @@ def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
         if _speaker_stretch24(tail, spoke, lexicon) and _speaker_stretch24(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
-        if _speaker_stretch24(tail, spoke, lexicon) and (not head or _names(head, lexicon)):
+        if (
+            _speaker_stretch24(tail, spoke, lexicon)
+            and (not head or _names(head, lexicon))
+            and not _CUE_AFTER24.search("".join(pieces[n + 1 :]))
+        ):
+            # (not before a correction: taken off, the remark would join what the speaker
+            # corrected to what they correct next: "… to Zoe, sorry, Noah, I always mix the two
+            # of them up, correction, the globe")
             dropped, spoke = True, True
             if head:
                 out.append(head)
