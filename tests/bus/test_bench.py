@@ -105,8 +105,8 @@ def test_the_verdict_follows_the_share_on_a_core_and_the_target(
 def test_the_repeats_are_judged_on_their_median_of_at_least_five(
     ratios: list[float], share: float
 ) -> None:
-    from hltl.bench.paired import MIN_REPEATS, Pair, paired_stats
     from hltl.bus.bench import ON_CORE, repeats_verdict
+    from hltl.bus.paired import MIN_REPEATS, Pair, paired_stats
 
     s = paired_stats([Pair(1.0, 1.0 + r / 100, False, share) for r in ratios])
     text = repeats_verdict(s)

@@ -11,7 +11,10 @@ from contextlib import contextmanager
 from dataclasses import dataclass, replace
 from typing import Any
 
-from hltl.bench.paired import (
+from hltl.bus.driver import BusCell, BusTiming, bus_cell
+from hltl.bus.faults import FaultModel
+from hltl.bus.node import CellNode
+from hltl.bus.paired import (
     MIN_REPEATS,
     Pair,
     PairedStats,
@@ -21,9 +24,6 @@ from hltl.bench.paired import (
     order_medians,
     paired_stats,
 )
-from hltl.bus.driver import BusCell, BusTiming, bus_cell
-from hltl.bus.faults import FaultModel
-from hltl.bus.node import CellNode
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, free_endpoint, open_session
 from hltl.execution.drivers import ActionState, ActionStatus, Handle
@@ -430,7 +430,7 @@ def _repeat_suite(
 ) -> tuple[_PairRun, ...]:
     """``repeats`` pairs of the suite: trial by trial in-process (simulated by ``factories``)
     and over the bus with the nodes in their process (``session`` is connected to them), the
-    bus first in every other pair (:func:`hltl.bench.paired.abba`)."""
+    bus first in every other pair (:func:`hltl.bus.paired.abba`)."""
     runs = []
     for k, bus_first in enumerate(abba(repeats)):
         a_s = a_cpu = b_s = b_cpu = waited = 0.0
@@ -711,7 +711,7 @@ def verdict(
 
 def repeats_verdict(s: PairedStats, target: float = 10.0) -> str:
     """The wall-time target's verdict on the median ratio of the paired repeats: judged only
-    on at least :data:`~hltl.bench.paired.MIN_REPEATS` pairs whose in-process runs were on a
+    on at least :data:`~hltl.bus.paired.MIN_REPEATS` pairs whose in-process runs were on a
     core (:func:`verdict`)."""
     pairs = f"{s.n} pair{'s' if s.n != 1 else ''}"
     if not s.judged:

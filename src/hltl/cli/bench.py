@@ -49,7 +49,6 @@ from hltl.bench.grounding import (
 from hltl.bench.latency import measure, write_model
 from hltl.bench.markdown import machine, write_section
 from hltl.bench.motion import bench_motion, format_motion, measure_pmp
-from hltl.bench.paired import MIN_REPEATS
 from hltl.bench.planner import PlannerRow, bench_planner, planner_section, planner_work
 from hltl.bench.pmp import write_pmp_latency
 from hltl.bench.realworld import (
@@ -78,6 +77,7 @@ from hltl.bench.suite import (
 )
 from hltl.bench.sweep import SweepExecutor
 from hltl.bus.bench import bench_bus, bench_bus_suite, format_bus, format_bus_suite
+from hltl.bus.paired import MIN_REPEATS
 from hltl.cli.bench_perception import run
 from hltl.errors import HltlError
 from hltl.fileio import open_output, write_output

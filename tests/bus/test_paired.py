@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hltl.bench.paired import (
+from hltl.bus.paired import (
     MIN_REPEATS,
     Pair,
     abba,
