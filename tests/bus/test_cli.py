@@ -58,3 +58,18 @@ def test_bad_bus_perception_endpoint(capsys: pytest.CaptureFixture[str]) -> None
     argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--bus", "zenoh"]
     code, err = _run([*argv, "--bus-perception", "zenoh:localhost"], capsys)
     assert code == 1 and "bad Zenoh endpoint 'localhost'" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["--repeats", "0"], "error: --repeats must be at least 1, got 0"),
+        (["--episodes", "-2"], "error: --episodes must be at least 1, got -2"),
+        (["--sim", "mujoco", "--repeats", "-1"], "error: --repeats must be at least 1, got -1"),
+    ],
+)
+def test_bench_bus_refuses_bad_counts(
+    capsys: pytest.CaptureFixture[str], argv: list[str], message: str
+) -> None:
+    code, err = _run(["bench", "bus", *argv], capsys)
+    assert code == 1 and message in err and err.count("\n") == 1
