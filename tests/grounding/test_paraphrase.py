@@ -82,8 +82,6 @@ KNOWN_MISSES = frozenset(
         # blind13 (tuned on in session 15): the speaker handing over to a named group ('to the
         # night staff') is a remark the general rule does not take off ('to' may name a
         # recipient); 'the wee box' ('wee' read as a size the scene does not have)
-        "Evening, I'm just handing over to the night staff, so if you'd be good enough to put "
-        "the thermometer on the cart, thanks ever so",
         "Aye, if ye could put the wee box on the belt, that'd be magic, ta",
         "Aye, if ye could give Grandad the wee teddy, that'd be magic",
         # blind13: 'Sorry' after a call and before a remark of two words ("Behind! Sorry, chef
@@ -244,8 +242,6 @@ KNOWN_MISSES = frozenset(
         "able to give the banana to Emma? Thank you ever so much.",
         "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
         "the high chair? Thanks.",
-        "Hiya, it's only me. Would you mind popping the magazine on the bedside table for me, my "
-        "love? Ta.",
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "What I need is the bottle over with Person B.",
@@ -432,8 +428,6 @@ KNOWN_MISSES = frozenset(
         "the magazine down on the bedside locker? Lovely, thank you.",
         "Hiya, zookeeper here for the school visit, the penguins are still in the van. Could "
         "you be a star and hand Mrs Ortiz the glue stick? Ta.",
-        "Oh, bless them. Sorry, I'm just the old pensioner from number six, popping in with a "
-        "casserole. Would you kindly put the teddy bear down on the play mat? Thanks ever so.",
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
@@ -497,7 +491,6 @@ KNOWN_MISSES = frozenset(
         "Black pen to Priya, oh, she marks in red, so the red one instead.",
         "Magazine to Mr Lee, oh I've got that wrong, it was Mrs Khan who asked for it.",
         "Scanner to Tom. No, not Tom, Mia's the one who asked.",
-        "Hand the scissors to Zoe, sorry, Noah, I always mix the two of them up.",
         "bob's been on the bike all day give him the bottle thx",
         "sorry typing one handed, chips to person b",
         "Pop the cjips up on the shelf before the kids find them.",
@@ -510,8 +503,123 @@ KNOWN_MISSES = frozenset(
         "killing me.",
         "How about letting Person A have the bottle, seeing as she's the thirsty one?",
         "Any way the apple could find its way to Person A?",
-        "Would you pop the notepad into the box so I can tape it up?",
         "Could the middle-sized box go onto the pallet with the big one?",
+        # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
+        "Ah, good afternoon, apologies, choir practice ran over again. Whenever you have a "
+        "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
+        "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
+        "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
+        'Habari, good afternoon my friend. Please, I am requesting you to give the apple to '
+        'Person A. Asante sana, you are very helpful.',
+        'Sawasdee krap. Excuse me, sorry, please you bring cup to Person B, krap. Khop khun krap, '
+        'very kind of you.',
+        'Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank '
+        'you ah, very good.',
+        "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
+        "Um, if it's all the same to you, the bottle over to Person B, please. Ta ever so.",
+        "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
+        "be a sweetheart and pass Person A that bottle? Cheers, you're a star.",
+        "Oh, sorry, I've got clay up to my elbows from the wheel. Would you mind awfully letting "
+        "Person B have the chips? You're a treasure.",
+        "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
+        "so good, pass Priya the red pen. Many thanks indeed.",
+        "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
+        "the packing tape go on the belt? Ta, mate, you're a legend.",
+        'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
+        'Person B wants the cup, and Person A is wanting the apple, please, pole pole, no hurry.',
+        'Person A want bottle, krap, and Person B want chips. Please you give both.',
+        'Person B want the apple lah, she hungry already since morning.',
+        "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
+        "the hinges here.",
+        "Person A's gasping after the last race, the bottle is what she's needing.",
+        'All Person A wants is her bottle back, she left it on the jetty.',
+        "The doctor's after the white cup, and the visitor would like that banana, she's had no "
+        "breakfast.",
+        'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
+        'pallet before he goes.',
+        'Zoe wants the ruler and Noah needs the glue stick, they told me while I was mopping.',
+        "Lily wants her teddy bear, she won't settle for the hymn practice without it.",
+        'You see the red mug by the window? Take it across to Alice, would you.',
+        'Alice was on about the crisps before the anthem, could you take them over to her?',
+        "That bottle by the door, up on the shelf with it, there's a good chap.",
+        'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
+        'Chips for Person B lah, and the cup, Person A can have that one.',
+        "Person A has been waiting ages for those chips. They're hers, take them over.",
+        "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
+        "Person A's over there mending the nets. Take her the bottle, will you.",
+        'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
+        'you?',
+        "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
+        "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
+        "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
+        "I'm off to put my feet up.",
+        'Please give bottle to Person B and the cup you give to Person A after that, then finish, '
+        'asante.',
+        'Apple give Person A first, then bottle give Person B, finish already lah.',
+        "Bottle. Person A. Quick as you like, she's weighing out in five.",
+        'Bowl in the sink. Spoon on the tray. The green cup on the tray too. Amen to that.',
+        'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
+        'tape measure out.',
+        "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
+        "see it.",
+        "Drill on the bench then hammer in the locker then torch to Jess and I'll give you a trim "
+        "after.",
+        "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
+        'Bob and Alice can have one each, the bottle and the crisps, any way round you like.',
+        'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
+        'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
+        'Give one of apple or chips to Person B, any, she does not care.',
+        "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
+        "Give Emma one of the cups, green or white, it's all the same to her, bless her.",
+        'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
+        "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
+        "Noah or Zoe can have the globe, either one, they're both doing the project.",
+        'The two things cluttering the floor, the bottle and the crisps, up on the shelf, please.',
+        'Person A gets all four things, the bottle, the chips, the cup and the apple, asante.',
+        'The two drinks, bottle and cup, go to Person B, krap.',
+        "Give Person A the apple, there is only one only, don't worry.",
+        'Both items over to Person A, the pair of them, before her next patient.',
+        "The two of them, bottle and chips, to Person B, she's holding the ladder.",
+        "Just the one bottle for Person A, that's all she's allowed before the race.",
+        'All three pens go in the box, I need the desk for my pattern paper.',
+        'Both plates onto the counter, Marco wants to plate up the goulash.',
+        "Both books on the teacher's desk, I need to do the shelves.",
+        "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
+        "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
+        'Everything except the cup goes to Person B, the cup stays, asante.',
+        'Not Person A ah, Person B is the one getting the apple.',
+        "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
+        'Person A, and nobody else mind, gets the bottle.',
+        "Give Person A whatever isn't the bottle, I've had my hands in the slip bucket.",
+        "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
+        "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
+        "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
+        "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
+        'Give Person A the chips, sorry, not chips, the cup, my mistake my friend.',
+        'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
+        'Apple to Person A, no, sorry, to Person B, I make mistake.',
+        'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
+        "Bottle to Person A, no, wait, yes, that's right, Person A, carry on.",
+        'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
+        "Gloves to Mia, no, Tom's the one loading my trailer.",
+        "Salt on the rack, no, on the counter, the rack's only for plates.",
+        "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
+        "crisps up on the shelf please love, out of the dog's reach",
+        'chips to person b and bottle to person a, cheers, back to the eye tests',
+        "new lock's in, so the bottle's for person a now and the chips can go over to person b",
+        "bottle to person a when you're ready, no rush, the race isn't for an hour",
+        'knife on the worktop please, the guests want it by their bread',
+        "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
+        'Vottle to Person A please krap, she is very thirsty.',
+        'chios for Person B lah, she asked me just now',
+        'Put the stspler in the box, I need the desk clear for the cloth.',
+        "Could Bob have the crisps before we go on, he's the only tenor we've got?",
+        'Boss, the bottle, can pass to Person B or not ah?',
+        "Could Person A get her bottle, she's been out on the water all day?",
+        'Could the bowl and the spoon both go on the tray, please?',
+        'Could you put the medium box on the belt before I back the lorry up?',
+        'Can Mr Novak have the salt, please, he says the soup needs it?',
+        'Will you take the drill to Kofi, please, he wants to hang a mirror?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -522,6 +630,15 @@ KNOWN_UNCLEAR = frozenset(
         "Plate to Lena. The one she likes. You know the one I mean.",
         "One of them gets the chips, no idea which, you'll have to ask.",
         "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
+        # blind22 (tuned on in session 24)
+        'Person B spoke of the cup and the apple. Please, give it to her now.',
+        'Priya came by looking for her pen. Could you take it back to her?',
+        'The student by the radiator wants the scissors, can you take them over?',
+        'Put one of the boxes on the belt, the one Mia put a red sticker on.',
+        "Give Lena a plate, but not the one she chipped last night, I can't remember which that "
+        "was.",
+        "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
+        "asked.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -558,9 +675,9 @@ KNOWN_UNCLEAR = frozenset(
 # session 22 by another engineer, reviewed by a second one, measured once at the end of session 22,
 # tuned on in session 23: asserted now, the rest in KNOWN_MISSES; "blind22" written in session 23
 # by another engineer, reviewed by a second one, measured once at the end of session 23, tuned on
-# in session 24; "blind23" written in session 24 by another engineer, reviewed by a second one,
-# measured once at the end of session 24)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind22", "blind23"})
+# in session 24: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind23" written in
+# session 24 by another engineer, reviewed by a second one, measured once at the end of session 24)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind23"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -124,6 +124,16 @@ def register(sub: Any) -> None:
         default="",
         help="with --cells: mixed-spec family sizes (ordered pairs, either/or, place-then-deliver)",
     )
+    pl.add_argument(
+        "--layouts",
+        default="",
+        help="with --cells: only these comma-separated layouts (line, grid, random; default all)",
+    )
+    pl.add_argument(
+        "--seed-list",
+        default="",
+        help="with --cells: these comma-separated seeds instead of 0 .. --seeds - 1, e.g. 2,3,4",
+    )
     pl.set_defaults(func=run_planner)
 
     su = bsub.add_parser(
@@ -475,6 +485,34 @@ def _sizes(text: str, option: str) -> list[int]:
     return out
 
 
+def _layouts(text: str) -> tuple[str, ...]:
+    """``--layouts``: the layouts named (in ``CELL_LAYOUTS``' order), all when empty."""
+    names = [x.strip() for x in text.split(",") if x.strip()]
+    for name in names:
+        if name not in CELL_LAYOUTS:
+            raise HltlError(
+                f"--layouts: {name!r} is not a layout (expected one of {', '.join(CELL_LAYOUTS)})"
+            )
+    return tuple(x for x in CELL_LAYOUTS if x in names) if names else CELL_LAYOUTS
+
+
+def _seed_list(text: str, seeds: int) -> list[int]:
+    """``--seed-list``: the seeds named (each once, in the order given), else 0 .. seeds - 1."""
+    if not text.strip():
+        if seeds < 1:
+            raise HltlError("--seeds must be at least 1")
+        return list(range(seeds))
+    out: list[int] = []
+    for part in (x.strip() for x in text.split(",")):
+        if not part.isdigit():
+            raise HltlError(
+                f"--seed-list: {part!r} is not a seed (expected whole numbers like 2,3,4)"
+            )
+        if int(part) not in out:
+            out.append(int(part))
+    return out
+
+
 def run_planner_cells(args: argparse.Namespace) -> int:
     try:
         short, long = (float(x) for x in args.budgets.split(","))
@@ -482,17 +520,16 @@ def run_planner_cells(args: argparse.Namespace) -> int:
         raise HltlError(
             f"--budgets: expected two numbers like 1,10, got {args.budgets!r}"
         ) from None
-    if args.seeds < 1:
-        raise HltlError("--seeds must be at least 1")
+    seeds = _seed_list(args.seed_list, args.seeds)
+    layouts = _layouts(args.layouts)
     console = Console(stderr=True)
 
     def show(cell: Any, what: str) -> None:
         console.print(f"  {cell.name} seed {cell.seed}: {what}")
 
-    seeds = range(args.seeds)
     rows = []
     for n in _sizes(args.cells, "--cells"):
-        cells = [delivery_cell(layout, n, s) for layout in CELL_LAYOUTS for s in seeds]
+        cells = [delivery_cell(layout, n, s) for layout in layouts for s in seeds]
         rows += run_cells(cells, exact_timeout=args.timeout, anytime_budgets=None, on_cell=show)
     for n in _sizes(args.mixed, "--mixed"):
         cells = [mixed_cell(f, n, s) for f in FAMILIES for s in seeds]
@@ -500,7 +537,7 @@ def run_planner_cells(args: argparse.Namespace) -> int:
             cells, exact_timeout=args.timeout, anytime_budgets=(short, long), on_cell=show
         )
     for n in _sizes(args.anytime_cells, "--anytime-cells"):
-        cells = [delivery_cell(layout, n, s) for layout in CELL_LAYOUTS for s in seeds]
+        cells = [delivery_cell(layout, n, s) for layout in layouts for s in seeds]
         rows += run_cells(cells, exact_timeout=None, anytime_budgets=(short, long), on_cell=show)
     table = format_cells(rows, (short, long))
     scene, spec = "examples/scenes/two_arms.yaml", "examples/specs/fig1.yaml"
@@ -518,6 +555,8 @@ def run_planner_cells(args: argparse.Namespace) -> int:
             + (f" --cells {args.cells}" if args.cells else "")
             + (f" --mixed {args.mixed}" if args.mixed else "")
             + (f" --anytime-cells {args.anytime_cells}" if args.anytime_cells else "")
+            + (f" --layouts {','.join(layouts)}" if args.layouts else "")
+            + (f" --seed-list {','.join(map(str, seeds))}" if args.seed_list else "")
             + f" --budgets {args.budgets} --write {shlex.quote(str(args.write))}"
         )
         date = datetime.date.today().isoformat()

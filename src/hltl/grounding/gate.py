@@ -18,11 +18,11 @@ from __future__ import annotations
 
 import functools
 import re
+import sys
 from collections.abc import Callable, Iterator
 from re import IGNORECASE as IGNORECASE
 from re import Match as Match
 from re import Pattern as Pattern
-from re import _parser  # re's own pattern parser
 from re import compile as compile  # re's name, for the module-level patterns
 from re import escape as escape
 from typing import Any, TypeVar
@@ -45,6 +45,10 @@ __all__ = [
 ]
 
 _Words = frozenset[str] | None
+
+# re's own pattern parser (imported by re itself; taken from sys.modules, as typeshed's re has no
+# _parser: mypy 2.4 refuses ``from re import _parser``)
+_parser = sys.modules["re._parser"]
 
 _LITERAL = _parser.LITERAL
 _BRANCH = _parser.BRANCH
@@ -146,8 +150,10 @@ _LAST: tuple[str, str | None] = ("", "")
 def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
     global _LAST
-    key = (pattern, flags)
-    gate = _GATES[key] if key in _GATES else _gate(pattern, flags)
+    try:
+        gate = _GATES[pattern, flags]
+    except KeyError:
+        gate = _gate(pattern, flags)
     if gate is None:
         return True
     last = _LAST
@@ -170,12 +176,6 @@ def _compiled(pattern: str, flags: int) -> re.Pattern[str]:
     return re.compile(pattern, flags)
 
 
-def _source(pattern: str | re.Pattern[str], flags: int) -> tuple[str, int]:
-    if isinstance(pattern, re.Pattern):
-        return pattern.pattern, pattern.flags
-    return pattern, flags
-
-
 _T = TypeVar("_T")
 
 
@@ -189,7 +189,10 @@ def _gated(
 ) -> _T:
     """``method`` of the compiled ``pattern`` called with ``args``, or ``on_no_match`` (what re
     returns for no match) where the gate says ``pattern`` cannot match ``string``."""
-    source, flags = _source(pattern, flags)
+    if isinstance(pattern, re.Pattern):
+        source, flags = pattern.pattern, pattern.flags
+    else:
+        source = pattern
     if not may_match(source, flags, string):
         return on_no_match
     return method(_compiled(source, flags), *args)

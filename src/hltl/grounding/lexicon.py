@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import itertools
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from importlib import resources
 from typing import Literal, TypeAlias
@@ -36,31 +37,60 @@ class Token:
     low: str  # lower case
 
 
+# tokenize's rewrites in order: (pattern, replacement, words one of which every match holds,
+# lower case for a case-blind pattern). A pattern runs only on a text holding one of its words
+# (for a case-blind one, a non-ASCII text always: re folds 'ſ' onto 's', 'K' onto 'k'): most
+# texts hold none, and the rewrites ran on every text lexed, some ten an instruction.
+_Rewrite: TypeAlias = tuple[re.Pattern[str], str | Callable[[re.Match[str]], str], tuple[str, ...]]
+_TOKEN_SUBS: tuple[_Rewrite, ...] = (
+    # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
+    # word is the pause of a correction (a comma); any other "..." ends a sentence
+    (_ELLIPSIS_CORRECTION, ",", ("..",)),
+    (re.compile(r"\.{2,}"), ".", ("..",)),  # any other trailing-off ends one sentence
+    # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
+    (re.compile(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\."), r"\1", (".",)),
+    (re.compile(r"\s[&+]\s"), " and ", ("&", "+")),
+    (re.compile(r"\s*(?:->|=>|\u2192)\s*"), " to ", (">", "\u2192")),  # a note: "cup -> Alice"
+    # punctuation said aloud to a phone: "give alice the cup comma and bob the chips"
+    (re.compile(r"(?i)\s+comma\b"), ",", ("comma",)),
+    (re.compile(r"(?i)\s+(?:full stop|period)\b"), ".", ("full stop", "period")),
+    (re.compile(r"(?i)\s+question mark\b"), "?", ("question mark",)),
+    (re.compile(r"(?i)\s+exclamation (?:mark|point)\b"), "!", ("exclamation ",)),
+    # "all the stuff": a mass noun for every object ("the stuff" alone stays unknown)
+    (re.compile(r"(?i)\ball (of )?(the |your |this |that )?stuff\b"), "all the things", ("stuff",)),
+    (re.compile(r"(?i)\ball (but|except)\b"), r"everything \1", ("all ",)),  # "all but the apple"
+    (
+        re.compile(r"(?i)\b(1st|2nd|3rd)\b"),
+        lambda m: _ORDINAL_DIGITS[m.group(1).lower()],
+        ("1st", "2nd", "3rd"),
+    ),
+    # "won't" -> "will n't", "can't" -> "can n't" (else "wo"/"ca" are words nobody reads)
+    (re.compile(r"(?i)\b(w)on't\b"), r"\1ill n't", ("on't",)),
+    (re.compile(r"(?i)\b(c)an't\b"), r"\1an n't", ("an't",)),
+    (re.compile(r"(?i)\b(s)han't\b"), r"\1hall n't", ("han't",)),
+    (re.compile(r"(?i)(\w)n't\b"), r"\1 n't", ("n't",)),  # "don't" -> "do n't"
+)
+
+
+# with whether each pattern is case-blind (a flag test costs more than the word test)
+_TOKEN_REWRITES = tuple((*sub, bool(sub[0].flags & re.IGNORECASE)) for sub in _TOKEN_SUBS)
+
+
 def tokenize(text: str) -> list[Token]:
     """Words, contractions (``n't``, ``'ve`` …) and punctuation; everything else is dropped."""
     text = text.replace("\u2019", "'").replace("\u2018", "'").replace("\u2026", "...")
-    # "Hand Carol the bottle... actually, hand it to Bob": a trailing-off before a correction
-    # word is the pause of a correction (a comma); any other "..." ends a sentence
-    text = _ELLIPSIS_CORRECTION.sub(",", text)
-    text = re.sub(r"\.{2,}", ".", text)  # any other trailing-off ends one sentence
-    # "Give Dr. Smith the beaker": a title's full stop ends no sentence; "the cup & the apple"
-    text = re.sub(r"(?i)\b(dr|mr|mrs|ms|prof|mx)\.", r"\1", text)
-    text = re.sub(r"\s[&+]\s", " and ", text)
-    text = re.sub(r"\s*(?:->|=>|\u2192)\s*", " to ", text)  # a note: "cup -> Alice"
-    # punctuation said aloud to a phone: "give alice the cup comma and bob the chips"
-    text = re.sub(r"(?i)\s+comma\b", ",", text)
-    text = re.sub(r"(?i)\s+(?:full stop|period)\b", ".", text)
-    text = re.sub(r"(?i)\s+question mark\b", "?", text)
-    text = re.sub(r"(?i)\s+exclamation (?:mark|point)\b", "!", text)
-    # "all the stuff": a mass noun for every object ("the stuff" alone stays unknown)
-    text = re.sub(r"(?i)\ball (of )?(the |your |this |that )?stuff\b", "all the things", text)
-    text = re.sub(r"(?i)\ball (but|except)\b", r"everything \1", text)  # "all but the apple"
-    text = re.sub(r"(?i)\b(1st|2nd|3rd)\b", lambda m: _ORDINAL_DIGITS[m.group(1).lower()], text)
-    # "won't" -> "will n't", "can't" -> "can n't" (else "wo"/"ca" are words nobody reads)
-    text = re.sub(r"(?i)\b(w)on't\b", r"\1ill n't", text)
-    text = re.sub(r"(?i)\b(c)an't\b", r"\1an n't", text)
-    text = re.sub(r"(?i)\b(s)han't\b", r"\1hall n't", text)
-    text = re.sub(r"(?i)(\w)n't\b", r"\1 n't", text)  # "don't" -> "do n't"
+    low, plain = text.lower(), text.isascii()
+    for pattern, repl, words, fold in _TOKEN_REWRITES:
+        said = low if fold else text
+        for word in words:
+            if word in said:
+                break
+        else:
+            if plain:
+                continue  # no match is possible: what sub returns for none
+        new = pattern.sub(repl, text)
+        if new != text:
+            text, low, plain = new, new.lower(), new.isascii()
     out = []
     for m in _TOKEN.finditer(text):
         word = m.group(0)
@@ -823,6 +853,8 @@ GENERIC_PEOPLE = ("person", "human")
 GENERIC_NOUNS = ("thing", "object", "item")
 
 MAX_PHRASE = max(len(p) for p in PHRASES)
+# the first words of the multi-word keywords: a word that is none of them starts none
+_PHRASE_FIRST = frozenset(p[0] for p in PHRASES)
 # every word of a multi-word keyword: never taken for a misspelt scene name
 PHRASE_WORDS = frozenset(w for p in PHRASES for w in p)
 
@@ -1193,6 +1225,7 @@ assert all(WORDS[w] == "filler" for w in DROPPED_FILLERS)
 # "oh wait"): taken out when lexing only where no such keyword holds them (session 8: a fuzz
 # found "everything but, well, the mugs" read as everything)
 SOFT_FILLERS = frozenset({"well", "ok", "okay", "oh", "alright"})
+_FILLER_WORDS = DROPPED_FILLERS | SOFT_FILLERS  # _without_fillers tests each word against both
 assert all(WORDS[w] == "filler" for w in SOFT_FILLERS)
 
 
@@ -1245,7 +1278,10 @@ def _singular_forms(words: tuple[str, ...]) -> list[tuple[str, ...]]:
     return [(*head, f) for f in out]
 
 
+@functools.lru_cache(maxsize=8192)
 def _words(name: str) -> tuple[str, ...]:
+    """The lower-case words of a name or phrase (kept per text: the rewrites look up the same
+    phrases in every instruction)."""
     return tuple(t.low for t in tokenize(name.replace("_", " ")) if t.low not in ",.;:!?")
 
 
@@ -1266,6 +1302,9 @@ class Lexicon:
         # typed words and what they are a typo of (misspelt, misspelt_keyword): kept for good
         self._misspelt_words: dict[str, tuple[Ref, ...] | None] = {}
         self._keyword_typos: dict[str, str | None] = {}
+        # what match found at a window of words (its lower case, the first word as typed):
+        # emptied with the lexed texts
+        self._matches: dict[tuple[tuple[str, ...], str], tuple[int, tuple[Ref, ...]] | None] = {}
         self._multi: list[tuple[tuple[str, ...], list[tuple[Ref, str, bool]]]] = []
         self._index: dict[tuple[int, str], list[int]] = {}
         self._own: frozenset[str] = frozenset()
@@ -1339,7 +1378,17 @@ class Lexicon:
         lst.append((ref, spelling, strong))
 
     def match(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
-        """The longest entity mention starting at token ``i``: (length, refs), else None."""
+        """The longest entity mention starting at token ``i``: (length, refs), else None (kept
+        per window of words: the rewrites lex the same words in many texts)."""
+        # what _match reads: the lower case of the next max_len tokens, the first as typed
+        key = (tuple([t.low for t in tokens[i : i + self.max_len]]), tokens[i].text)
+        try:
+            return self._matches[key]
+        except KeyError:
+            found = self._matches[key] = self._match(tokens, i)
+            return found
+
+    def _match(self, tokens: list[Token], i: int) -> tuple[int, tuple[Ref, ...]] | None:
         for n in range(min(self.max_len, len(tokens) - i), 0, -1):
             key = tuple(t.low for t in tokens[i : i + n])
             found = self._phrases.get(key)
@@ -1385,6 +1434,8 @@ class Lexicon:
         instruction starts), and the texts lexed once they are many."""
         if len(self._lexed) > _LEXED_KEPT:
             self._lexed.clear()
+        if len(self._matches) > _LEXED_KEPT:
+            self._matches.clear()
         self.readings.clear()
         self.rewrites.clear()
 
@@ -1910,9 +1961,9 @@ def _without_fillers(tokens: list[Token], lexicon: Lexicon) -> list[Token]:
     scene name of several words ("still water") stays."""
     keep = [True] * len(tokens)
     for i, tok in enumerate(tokens):
-        if [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
+        if tok.low == "if" and [t.low for t in tokens[i : i + 3]] == ["if", "you", "please"]:
             keep[i] = keep[i + 1] = keep[i + 2] = False
-        elif tok.low in DROPPED_FILLERS | SOFT_FILLERS and not _in_name(tokens, i, lexicon):
+        elif tok.low in _FILLER_WORDS and not _in_name(tokens, i, lexicon):
             keep[i] = tok.low in SOFT_FILLERS and _in_phrase(tokens, i)
         elif tok.low in TITLES and i + 1 < len(tokens) and lexicon.match(tokens, i) is None:
             after = lexicon.match(tokens, i + 1)
@@ -2086,8 +2137,11 @@ def _in_phrase(tokens: list[Token], i: int) -> bool:
 
 
 def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
-    for n in range(min(MAX_PHRASE, len(tokens) - i), 1, -1):
-        lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
+    if i >= len(tokens) or tokens[i].low not in _PHRASE_FIRST:
+        return None
+    lows = tuple([t.low for t in tokens[i : i + MAX_PHRASE]])
+    for n in range(len(lows), 1, -1):
+        lemma = PHRASES.get(lows[:n])
         if lemma is not None and not _pronoun_subject(tokens, i + n):
             return n, lemma
     return None

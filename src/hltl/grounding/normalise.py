@@ -2034,8 +2034,27 @@ _KEEP_WORDS = re.compile(
 def _purpose(text: str, lexicon: Lexicon) -> str:
     """'The technician needs a sponge for the spill', 'Put the cup on the table for the
     meeting': what it is for, a phrase after 'for' that names nothing in the scene and holds no
-    word that counts, chooses or points back, said at the end of a clause."""
+    word that counts, chooses or points back, said at the end of a clause.
+
+    Session 24: '…, the green one's for the communion wine' says what an object is kept for: the
+    clause is a remark, taken off whole (it never asks for the object); a 'for' phrase right
+    after 'is' / ''s' is what the clause says, so it is never taken off alone (that left "the
+    green one's", read as 'the green one too')."""
+    text = _sub(
+        r",\s+(?:and\s+)?(?:the|that|this|those|these) (?P<subj>[a-z]+(?: [a-z]+){0,2})"
+        r"(?:'s|'re| is| are) (?:only |just |all )?for (?:the|a|an|this|that|some|my|our) "
+        r"(?P<use>[a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.;!?]|$))",
+        lambda m: (
+            ""
+            if _names_nothing(m.group("use"), lexicon)
+            and not _KEEP_WORDS.search(m.group("use"))
+            and all(r.kind == "object" for n in _names(m.group("subj"), lexicon) for r in n.refs)
+            else m.group(0)
+        ),
+        text,
+    )
     return _sub(
+        r"(?<!'s)(?<! is)(?<! are)(?<!'re)(?<! was)(?<! were)"
         r"\s+for (?:the|a|an|this|that|some) ([a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.,;!?]|$|\bplease\b|"
         r"\bthanks\b))",
         lambda m: (
@@ -3362,6 +3381,7 @@ _REMARK_HELD = re.compile(
     r"four|five|six|first|last|then|next|finally|before|after|once|when|until|till|if|unless|"
     r"later|tonight|tomorrow|soon|wait|hang|hold|actually|sorry|oops|mean|meant|mistake|scratch|"
     r"forget|cancel|stop|swap|switch|reverse|other|another|else|rest|it|them|they|their|theirs|"
+    r"change|changed|ignore|scrap|"  # session 24: "…, I changed my mind" takes the request back
     r"he|him|his|she|her|hers|this|that|these|those|me|us|mine|ours|myself|to|for|into|onto|"
     r"from|under|off|out|near|nearest|closest|give|hand|pass|bring|take|put|place|keep|leave|"
     r"move|send|want|need|like|love|fancy|prefer|after|same|too|also|again|instead|what|which|"
@@ -6546,7 +6566,12 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
         r"\1 gets ",
         out,
     )
-    out = _sub(r"^would it be (?:okay|ok|alright|all right|fine|possible) to ", "", out)
+    # session 24: "Would it be at all possible to set the lemon on the worktop?"
+    out = _sub(
+        r"^(?:would|could) it be (?:at all |even )?(?:okay|ok|alright|all right|fine|possible) to ",
+        "",
+        out,
+    )
     for pattern, repl in _ASKED20:
         out = _sub(pattern, repl, out)
     out = _sub(
@@ -6895,6 +6920,109 @@ def _speaker_remarks22(text: str, lexicon: Lexicon) -> str:
     if len(keep) == len(parts) or not _names(" ".join(keep), lexicon):
         return text
     return " ".join(keep)
+
+
+# -- session 24: blind22's kinds -----------------------------------------------------------------
+
+# a stretch in which the speaker talks about themself: it opens (after a joining word) with 'I'
+# or 'my <thing>' as its subject ("I'm the vicar", "while I sort the rota", "then i'll start the
+# prayer", "and my head's still full of runways", "it's my day off")
+_SPEAKER_OPEN24 = re.compile(
+    r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now)\s+)*"
+    r"(?:i(?:'m|'ve|'ll|'d)?|my [a-z]+(?:'s| is| are| was| were| has| have| keeps?)|"
+    r"it's (?:my|only me|just me)|that's me)\b",
+    _F,
+)
+# what may follow such a stretch in the same sentence, still about the speaker ("I'm the
+# optician from the high street, just dropping the new frames round", "…, here to bless the new
+# wing")
+_SPEAKER_MORE24 = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
+# words a stretch of the speaker's must not hold to be taken off: what asks for something (a verb
+# of the grammar's tasks or of wanting), the speaker as a recipient, what chooses, orders,
+# corrects, doubts or puts off, and what takes something ('have it', 'keep')
+_SPEAKER_HELD24 = re.compile(
+    r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
+    r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
+    r"fancy|prefer|"
+    r"have (?:it|them|that|this|those|these|one|both|all)|for me|to me|me the|me that|me it|"
+    r"which|whichever|who|whoever|whom|whose|either|or|neither|nor|instead|rather|actually|"
+    r"first|next|last|before|after|once|when|until|till|unless|if|later|tomorrow|wrong|mean|"
+    r"meant|mistake|change|changed|swap|cancel|scratch|forget|forgot|remember|know|sure|"
+    r"track|ignore|wait|hang|hold|other|others|another|else|same|rest|each|every|too|also|"
+    r"as well|only one)\b|\d",
+    _F,
+)
+
+
+# what may open the sentence of such a stretch, taken off with it ("Oh, sorry, I've got clay up
+# to my elbows from the wheel.")
+_INTERJECTION24 = re.compile(
+    r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
+    r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there)",
+    _F,
+)
+
+
+def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
+    """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
+    ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
+    piece = piece.strip(" .!?")
+    if not piece or _SPEAKER_HELD24.search(piece) or not _names_nothing(piece, lexicon):
+        return False
+    return bool(_SPEAKER_OPEN24.match(piece) or (spoke and _SPEAKER_MORE24.match(piece)))
+
+
+def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
+    """Session 24: the speaker talking about themself anywhere in the instruction ("Then I'm off
+    to warm up my voice.", "…, I keep losing it", "Would you mind taking the blue mug over to
+    Carol while I sort the rota?", "I'm the vicar, here to bless the new wing."): a stretch
+    between punctuation marks, or from a joining word before 'I' / 'my' to the next mark, whose
+    subject is the speaker, that names nothing in the scene and holds no word that asks for
+    something (a task verb, a verb of wanting, 'for me'), chooses, orders, corrects, doubts or
+    puts off, is a remark: taken off, when what is left names something. 'I' or 'me' that is a
+    recipient ("give me the cup", "I need the cup", "I'd like it") stays, and is refused."""
+    if not _rx(r"\b(?:i|i'm|i've|i'll|i'd|my|me)\b").search(text):
+        return text
+    pieces = re.split(r"(\s*[,;.!?]+\s*)", text)
+    out: list[str] = []
+    dropped = False
+    spoke = False
+    opened = 0  # where the sentence being read starts in ``out``
+    for n in range(0, len(pieces), 2):
+        piece = pieces[n]
+        mark = pieces[n + 1] if n + 1 < len(pieces) else ""
+        # "… on the tray cheers, then i'll …" / "… the rota and I'll …": from a joining word
+        # before the speaker to the mark
+        cut = _rx(
+            r"\s+(?=(?:and then|and|so|then|while|whilst|as|because|cos|since)\s+"
+            r"(?:i|i'm|i've|i'll|i'd|my)\b)"
+        ).search(piece)
+        head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
+        if _speaker_stretch24(tail, spoke, lexicon) and _speaker_stretch24(head, False, lexicon):
+            head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
+        if _speaker_stretch24(tail, spoke, lexicon) and (not head or _names(head, lexicon)):
+            dropped, spoke = True, True
+            if head:
+                out.append(head)
+                out.append(mark)
+            elif all(_INTERJECTION24.fullmatch(x.strip()) for x in out[opened::2]):
+                del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
+            elif out and mark.strip() in (".", "!", "?") and out[-1].strip() == ",":
+                out[-1] = mark  # "…, I misheard her." → "…."
+            if any(c in mark for c in ".!?"):
+                opened = len(out)
+            continue
+        spoke = spoke and not any(c in mark for c in ".!?")
+        out.append(piece)
+        out.append(mark)
+        if any(c in mark for c in ".!?"):
+            opened = len(out)
+    if not dropped:
+        return text
+    said = "".join(out).strip(" ,;")
+    said = re.sub(r"^[,;.!?\s]+", "", said)
+    said = re.sub(r"\s*,\s*([.!?])", r"\1", said)
+    return said if _names(said, lexicon) else text
 
 
 # asides that ask nothing, after or inside the request
@@ -7623,6 +7751,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker21,
     _reasons21,
     _speaker_remarks22,
+    _speaker_remarks24,
     _asides22,
     _one_person22,
     _negation22,

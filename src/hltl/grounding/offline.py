@@ -183,6 +183,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             if plain in tried:
                 continue
             tried.add(plain)
+            if _stubs(plain, lexicon) > _stubs(text, lexicon):
+                # "…, the green one's for the communion wine." → "…, the green one's.": the
+                # rewrite took off what the clause said of the object, and what is left would
+                # read as 'the green one too' (session 24): not read
+                continue
             # "The cup to Alice, sorry, the, before I go": the closer the rewrite took off hid
             # that the words stop before what they were to name (or the rewrite dropped an
             # unknown word after 'the'): such a rewrite is read only for the readings its
@@ -219,6 +224,21 @@ _DEFERRED = re.compile(
     r"next week)\b",
     re.I,
 )
+
+
+# a clause that ends on its verb 'be' (what it said of its subject taken off)
+_STUB = re.compile(r"\b([a-z]+)(?:'s|'re| is| are)\s*(?:[.,;!?]|$)", re.I)
+
+
+def _stubs(text: str, lexicon: Lexicon) -> int:
+    """How many clauses of ``text`` end on 'is' / ''s' after an object ('the green one's.'; not
+    'the shelf is', where a place is said)."""
+    return sum(
+        1
+        for m in _STUB.finditer(text)
+        if m.group(1).lower() in ("one", "ones")
+        or any(r.kind == "object" for r in lexicon.lookup(m.group(1).lower()) or ())
+    )
 
 
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)

@@ -71,14 +71,28 @@ def _plain(step: Callable[[list[Item]], list[Item]]) -> Callable[[list[Item], Le
     return lambda items, _lexicon: step(items)
 
 
+# the last items split into sentences and their spans, replaced as one tuple (threads may ground
+# at once): the passes split the same items some fifteen times, and comparing a tuple of the same
+# items is cheaper than the split
+_SPLIT: tuple[tuple[Item, ...], tuple[tuple[int, int], ...]] = ((), ((0, 0),))
+
+
 def _sentences(items: list[Item]) -> list[tuple[int, int]]:
+    """The (start, end) of each sentence of ``items``: ``end`` is its closing punctuation (or the
+    end of the items)."""
+    global _SPLIT
+    key = tuple(items)
+    last = _SPLIT
+    if last[0] == key:
+        return list(last[1])
     spans = []
     start = 0
-    for k, it in enumerate(items):
+    for k, it in enumerate(key):
         if it.kind == "punct" and it.lemma in _END:
             spans.append((start, k))
             start = k + 1
-    spans.append((start, len(items)))
+    spans.append((start, len(key)))
+    _SPLIT = (key, tuple(spans))
     return spans
 
 
