@@ -58,13 +58,14 @@ def test_rows_and_table() -> None:
 
 
 def test_the_exact_line_tells_waiting_from_working(monkeypatch: pytest.MonkeyPatch) -> None:
-    # line 6 seed 5 with the first phase (more than PAIRS_UP_TO goals): A* runs in a process
+    # line 6 seed 5 with the first phase (more than PHASE_ABOVE goals): A* runs in a process
     # of its own, so the line shows that process's CPU, when the phase ended and the pause
+    from hltl import planner
     from hltl.planner import anytime
 
     if not anytime.beside_possible():
         pytest.skip("needs two cores and fork")
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell("line", 6, 5)
     seen: list[str] = []
     run_cells([c], exact_timeout=120, anytime_budgets=None, on_cell=lambda _, s: seen.append(s))
@@ -72,8 +73,8 @@ def test_the_exact_line_tells_waiting_from_working(monkeypatch: pytest.MonkeyPat
     line = seen[0]
     assert line.startswith("exact solved ") and "A*'s process " in line
     assert "phase ended at " in line and "A* paused " in line
-    # a cell left to A* alone (the phase does not run below PAIRS_UP_TO goals) says neither
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 8)
+    # a cell left to A* alone (the phase does not run below PHASE_ABOVE goals) says neither
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 8)
     run_cells([c], exact_timeout=120, anytime_budgets=None, on_cell=lambda _, s: seen.append(s))
     assert "phase ended" not in seen[1] and "A*'s process" not in seen[1]
     if (stolen := _stolen()) is not None:  # (Linux: the steal column of /proc/stat)

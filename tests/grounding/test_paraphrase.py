@@ -511,8 +511,6 @@ KNOWN_MISSES = frozenset(
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         'Habari, good afternoon my friend. Please, I am requesting you to give the apple to '
         'Person A. Asante sana, you are very helpful.',
-        'Sawasdee krap. Excuse me, sorry, please you bring cup to Person B, krap. Khop khun krap, '
-        'very kind of you.',
         'Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank '
         'you ah, very good.',
         "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
@@ -526,7 +524,6 @@ KNOWN_MISSES = frozenset(
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
         "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        'Person B wants the cup, and Person A is wanting the apple, please, pole pole, no hurry.',
         'Person A want bottle, krap, and Person B want chips. Please you give both.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
@@ -557,7 +554,6 @@ KNOWN_MISSES = frozenset(
         'asante.',
         'Apple give Person A first, then bottle give Person B, finish already lah.',
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
-        'Bowl in the sink. Spoon on the tray. The green cup on the tray too. Amen to that.',
         'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
         'tape measure out.',
         "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
@@ -575,7 +571,6 @@ KNOWN_MISSES = frozenset(
         "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Noah or Zoe can have the globe, either one, they're both doing the project.",
         'The two things cluttering the floor, the bottle and the crisps, up on the shelf, please.',
-        'Person A gets all four things, the bottle, the chips, the cup and the apple, asante.',
         'The two drinks, bottle and cup, go to Person B, krap.',
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
@@ -610,14 +605,12 @@ KNOWN_MISSES = frozenset(
         "bottle to person a when you're ready, no rush, the race isn't for an hour",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
-        'Vottle to Person A please krap, she is very thirsty.',
         'chios for Person B lah, she asked me just now',
         'Put the stspler in the box, I need the desk clear for the cloth.',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         'Boss, the bottle, can pass to Person B or not ah?',
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
-        'Could you put the medium box on the belt before I back the lorry up?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
         'Will you take the drill to Kofi, please, he wants to hang a mirror?',
     }

@@ -12,6 +12,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
@@ -25,6 +26,7 @@ from tests.grounding.helpers import (
     plain_request,
 )
 
+F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")  # bottle, chips, cup, apple; A, B
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips (crisps); Alice, Bob
 
 # scenes with exactly two objects of one kind: (scene, kind, (word, id) of each, a person's name
@@ -190,3 +192,120 @@ def test_the_blind22_speaker_remarks_read() -> None:
 )
 def test_a_remark_that_asks_or_changes_is_still_refused(text: str) -> None:
     assert_refused(text, TWO)
+
+
+# -- (c) greetings, thanks and particles of other languages; a real word is no typo -------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "Sawasdee krap. {r}, krap. Khop khun krap.",
+            "Habari, my friend. {r}. Asante sana.",
+            "Dobryi den. {r}. Diakuiu, thank you very much.",
+            "{r}. Amen to that.",
+            "{r}, asante.",
+            "{r}, pole pole, no hurry.",
+            "Salamat po. {r}.",
+            "Ah, good afternoon. {r}.",
+            "{r} please krap.",
+        ]
+    ),
+)
+def test_courtesies_of_other_languages_are_taken_off(scene: Scene, k: int, frame: str) -> None:
+    # blind22: "krap", "asante", "Amen to that", "Dobryi den", "Diakuiu" were read as names or
+    # clauses and refused
+    request, want = plain_request(scene, k)
+    assert_same_or_refused(frame.format(r=request[0].upper() + request[1:]), want, scene)
+
+
+def test_the_blind22_courtesies_read() -> None:
+    assert_reads(
+        "Sawasdee krap. Excuse me, sorry, please you bring cup to Person B, krap. Khop khun "
+        "krap, very kind of you.",
+        "cup>B",
+        F41,
+    )
+    assert_reads(
+        "Bowl in the sink. Spoon on the tray. The green cup on the tray too. Amen to that.",
+        "bowl@sink & spoon@tray & cup_green@tray",
+        LAB,
+    )
+    # a courtesy word that names something in the scene, or stands where a name is asked for,
+    # is not taken off
+    assert_refused("Give Person A the, asante.", F41)
+    assert_refused("Give asante the cup.", F41)
+
+
+def test_a_real_word_with_another_first_letter_is_no_typo_of_a_keyword() -> None:
+    # blind22: "before I back the lorry up" read 'lorry' as 'sorry' (one edit), a correction
+    assert_reads(
+        "Could you put the medium box on the belt before I back the lorry up?",
+        "box_medium@conveyor",
+        DEPOT,
+    )
+    # slips that keep the first letter, or swap the first two, are still read
+    assert_reads("gvie Bob the crisps", "chips>B", TWO)
+    assert_reads("give Bob hte crisps", "chips>B", TWO)
+
+
+# -- (d) the speaker's doubt is never taken off (12c's fuzz, seed 24) ----------------------------
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "I'm not sure, morning! {r}.",
+            "I'm not sure, thanks! Now {r}.",
+            "I'm not sure. {r}, please.",
+            "{r}. Ugh, I don't know. Good robot.",
+            "{r}, no idea really. Thanks!",
+            "Hello, I can't remember. {r}.",
+        ]
+    ),
+)
+def test_a_request_said_with_doubt_is_refused(scene: Scene, k: int, frame: str) -> None:
+    # 12c's fuzz (seed 24): "I'm not sure, morning! Would you mind passing Bob the crisps?" read
+    # chips>B, and "The big box to Tom. No, Mia. No, Tom. Ugh, I don't know. Good robot." read the
+    # last correction: a rewrite had taken the speaker's doubt off with the opener or closer
+    request, _want = plain_request(scene, k)
+    assert_refused(frame.format(r=request), scene)
+
+
+def test_the_fuzz_doubts_are_refused() -> None:
+    assert_refused("I'm not sure, morning! Would you mind passing Bob the crisps?")
+    assert_refused(
+        "The big box to Tom. No, Mia. No, Tom. Ugh, I don't know. That's all from me.", DEPOT
+    )
+    # a hedge that is no doubt about the request still reads
+    assert_reads("Give Bob the crisps, I'm sure of it.", "chips>B", TWO)
+
+
+def test_a_second_cue_of_one_correction_takes_back_nothing_before_it() -> None:
+    # the fuzz over blind22 (seed 24): "I want the bottle too. Crisps on the shelf, no, scratch
+    # that, the crisps to Alice, I misheard her." read chips>A: the correction restated after
+    # 'no' kept 'scratch that' at its head, which then took back the sentence before (the
+    # speaker's own want, which must be refused)
+    for text in (
+        "I want the bottle too. Crisps on the shelf, no, scratch that, the crisps to Alice, I "
+        "misheard her.",
+        "I want the bottle too. Crisps on the shelf, no, scratch that, the crisps to Alice.",
+        "I need the bottle. Crisps on the shelf, sorry, forget that, the crisps to Bob.",
+    ):
+        assert_refused(text, TWO)
+    assert_reads(
+        "Crisps on the shelf, no, scratch that, the crisps to Alice, I misheard her.",
+        "chips>A",
+        TWO,
+    )
+    assert_reads(
+        "Bottle to Bob. Crisps on the shelf, no, scratch that, the crisps to Alice.",
+        "bottle>B & chips>A",
+        TWO,
+    )

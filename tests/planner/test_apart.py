@@ -1,4 +1,4 @@
-"""Exact mode's A* process (``planner._Apart``, docs/planner.md "A* in a process of its own"):
+"""Exact mode's A* process (``phase._Apart``, docs/planner.md "A* in a process of its own"):
 whatever the first phase does — end normally, run out of time, raise, or leave a round open —
 no process of a plan outlives it, and A* is never left paused while its answer is awaited."""
 
@@ -15,7 +15,7 @@ import pytest
 
 from hltl import planner
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanStatus, anytime, lns, plan, schedule
+from hltl.planner import PlanStatus, anytime, lns, phase, plan, schedule
 from hltl.planner.problem import Problem
 from hltl.planner.search import _Search, search
 from tests.oracles.validator import check_plan
@@ -60,7 +60,7 @@ def _phase_calls(monkeypatch: pytest.MonkeyPatch, then: Callable[[], object]) ->
     round); the pids of the processes it started are returned in the list."""
     pids: list[int] = []
 
-    def phase(
+    def certify(
         problem: Problem,
         s: _Search,
         until: float,
@@ -77,13 +77,13 @@ def _phase_calls(monkeypatch: pytest.MonkeyPatch, then: Callable[[], object]) ->
         assert _until(lambda: all(_children().get(pid) == "T" for pid in pids))
         return then()
 
-    monkeypatch.setattr(planner, "certify", phase)
+    monkeypatch.setattr(phase, "certify", certify)
     return pids
 
 
 def _line_6_5(monkeypatch: pytest.MonkeyPatch) -> tuple[object, object]:
-    # the phase runs on cells of more than PAIRS_UP_TO goals; line 6 seed 5 is quick for A*
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    # the phase runs on cells of more than PHASE_ABOVE goals; line 6 seed 5 is quick for A*
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell("line", 6, 5)
     return c.scene, c.spec
 
@@ -92,14 +92,14 @@ def test_no_process_outlives_a_plan_the_phase_leaves_to_astar(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     scene, spec = _line_6_5(monkeypatch)
-    started: list[planner._Apart] = []
-    real_ahead = planner._Apart.ahead
+    started: list[phase._Apart] = []
+    real_ahead = phase._Apart.ahead
 
-    def ahead(self: planner._Apart) -> None:
+    def ahead(self: phase._Apart) -> None:
         real_ahead(self)
         started.append(self)
 
-    monkeypatch.setattr(planner._Apart, "ahead", ahead)
+    monkeypatch.setattr(phase._Apart, "ahead", ahead)
     before = set(_children())
     got = plan(scene, spec, timeout=120)
     assert got.solved and len(started) == 1 and started[0].proc is not None
@@ -139,7 +139,7 @@ def test_astar_is_resumed_when_a_phase_leaves_a_round_open(
     # the phase ends without closing the round that paused A*: its answer is still awaited and
     # given (a paused A* would never answer; the watchdog resumes it and the test fails)
     scene, spec = _line_6_5(monkeypatch)
-    pids = _phase_calls(monkeypatch, lambda: anytime.Certificate(None, None))
+    pids = _phase_calls(monkeypatch, lambda: phase.Certificate(None, None))
     rescued: list[int] = []
 
     def rescue() -> None:
@@ -165,7 +165,7 @@ def test_astar_is_resumed_when_a_phase_leaves_a_round_open(
 def test_a_round_whose_question_raises_is_closed(monkeypatch: pytest.MonkeyPatch) -> None:
     # schedule's climb tells ``note_busy`` when a round of questions begins and ends; a question
     # that raises ends the round too (else exact mode's A* would stay paused)
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell("grid", 4, 1)
     problem = Problem(c.scene, c.spec)
     s = _Search(problem)

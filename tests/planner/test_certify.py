@@ -13,7 +13,7 @@ import pytest
 
 from hltl import planner
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStep, anytime, lns, plan, schedule
+from hltl.planner import PlanResult, PlanStep, anytime, lns, phase, plan, schedule
 from hltl.planner.problem import Problem, to_ticks
 from hltl.planner.search import _Search, plan_steps, search
 from tests.oracles.validator import check_plan
@@ -38,9 +38,9 @@ pytest.importorskip("ortools")
 def test_certified_plans_are_optimal(
     layout: str, n: int, seed: int, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    # the phase runs on cells of more than PAIRS_UP_TO goals; let it run on small ones, where
+    # the phase runs on cells of more than PHASE_ABOVE goals; let it run on small ones, where
     # plain A* is quick and exact
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell(layout, n, seed)
     got = plan(c.scene, c.spec, timeout=120)
     expected = search(Problem(c.scene, c.spec), timeout=120)
@@ -51,7 +51,7 @@ def test_certified_plans_are_optimal(
 
 def test_a_certified_plan_skips_the_search(monkeypatch: pytest.MonkeyPatch) -> None:
     # grid 4 seed 1: the step bound is the optimum (3.3 s) and its schedule is a plan
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell("grid", 4, 1)
     got = plan(c.scene, c.spec, timeout=120)
     assert got.makespan == pytest.approx(3.3)
@@ -72,7 +72,7 @@ def test_lines_go_straight_to_astar(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(lns, "available", never)
     c = delivery_cell("line", 10, 3)
     problem = Problem(c.scene, c.spec)
-    assert anytime.certified(problem, _Search(problem), math.inf) is None
+    assert phase.certified(problem, _Search(problem), math.inf) is None
 
 
 @pytest.mark.parametrize(
@@ -85,18 +85,18 @@ def test_the_profile_bound_is_the_step_climbs_floor(
     # 5.4 s: the step climb starts at 5.4 s, never below, and proves A*'s optimum. Grid 4 seed
     # 1: the profile bound (3.3 s) meets the prioritized plan's makespan, which is then
     # optimal without any step question
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     # (its 1 s may not be enough for the profile bound's questions on a loaded machine)
-    monkeypatch.setattr(anytime, "PROFILE_FLOOR_SECONDS", 120.0)
+    monkeypatch.setattr(phase, "PROFILE_FLOOR_SECONDS", 120.0)
     c = delivery_cell("grid", 5 if seed == 0 else 4, seed)
     problem = Problem(c.scene, c.spec)
     s = _Search(problem)
     start = problem.start()
     h0 = round(s.heuristic(start))
-    got = anytime._profile_floor(problem, s, start, h0, None, math.inf)
+    got = phase._profile_floor(problem, s, start, h0, None, math.inf)
     assert h0 < got == to_ticks(floor)
     levels = step_levels(monkeypatch)
-    found = anytime.certified(problem, _Search(problem), math.inf)
+    found = phase.certified(problem, _Search(problem), math.inf)
     expected = search(Problem(c.scene, c.spec), timeout=120)
     assert found is not None and expected.makespan is not None
     assert found[0] == to_ticks(expected.makespan) == to_ticks(optimum)
@@ -115,8 +115,8 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     # 4 seed 1 and grid 5 seed 4 were such cells until session 12's counting rows: the cheaper
     # model now proves their optimum itself.) Without the roof: the walk's plan there is
     # optimal, and the climb's first round below it proves it without the full model.
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
-    monkeypatch.setattr(anytime, "ROOF_ROUNDS", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
+    monkeypatch.setattr(phase, "ROOF_ROUNDS", 0)
     asked: list[tuple[int, bool, bool, bool]] = []  # level, holders, whole, found
     real = schedule.relaxed_steps
 
@@ -131,7 +131,7 @@ def test_the_climb_asks_sessions_whole_before_the_full_model(
     monkeypatch.setattr(schedule, "relaxed_steps", logged)
     c = delivery_cell(layout, n, seed)
     problem = Problem(c.scene, c.spec)
-    found = anytime.certified(problem, _Search(problem), math.inf)
+    found = phase.certified(problem, _Search(problem), math.inf)
     expected = search(Problem(c.scene, c.spec), timeout=120)
     assert found is not None and expected.makespan is not None
     assert found[0] == to_ticks(expected.makespan) == to_ticks((level + 1) / 10)
@@ -154,18 +154,18 @@ def test_the_walks_plan_is_the_climbs_roof(roof: bool, monkeypatch: pytest.Monke
     # no level from the floor (4.6 s) to 5.5 s is asked, nor any at or above 5.8 s. Without
     # the roof (ROOF_ROUNDS 0) the climb starts at the floor and ends above 5.8 s
     # (docs/planner.md, "The step model's roof")
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     monkeypatch.setattr(schedule, "ROOF_SPAN", 20)
     if not roof:
-        monkeypatch.setattr(anytime, "ROOF_ROUNDS", 0)
+        monkeypatch.setattr(phase, "ROOF_ROUNDS", 0)
     levels = step_levels(monkeypatch)
     c = delivery_cell("random", 5, 0)
     problem = Problem(c.scene, c.spec)
-    found = anytime.certified(problem, _Search(problem), math.inf)
+    found = phase.certified(problem, _Search(problem), math.inf)
     expected = search(Problem(c.scene, c.spec), timeout=120)
     assert found is not None and expected.makespan is not None
     assert found[0] == to_ticks(expected.makespan) == to_ticks(5.8)
-    check_plan(c.scene, c.spec, planner._solved(problem, found, expected.stats).to_dict())
+    check_plan(c.scene, c.spec, phase._solved(problem, found, expected.stats).to_dict())
     if roof:
         assert set(levels) == {56, 57}
     else:
@@ -183,7 +183,7 @@ def test_sessions_whole_asked_ahead_give_the_same_bound_and_plan(
     # answer, is caught)
     if schedule.WORKERS < 2:
         pytest.skip("needs two cores (two levels asked at once)")
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     c = delivery_cell("random", 5, 0)
     real = schedule.relaxed_steps
     came, ahead_asked, low_done = threading.Event(), threading.Event(), threading.Event()
@@ -243,14 +243,14 @@ def test_astar_after_an_unproved_plan_finds_the_optimum(
     # the phase proves nothing here (no step bound, no joint re-plan), so A* runs with the
     # prioritized plan's makespan as ``upper``: it finds a shorter plan, which is optimal, or
     # proves there is none, and then that plan is optimal
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     # (on grid 4 seed 1 and random 4 seed 0 the profile bound meets the first plan already)
-    monkeypatch.setattr(anytime, "_profile_floor", lambda _p, _s, _n, floor, *_: floor)
+    monkeypatch.setattr(phase, "_profile_floor", lambda _p, _s, _n, floor, *_: floor)
     monkeypatch.setattr(anytime, "step_bound", lambda _p, _s, _n, floor, *_: (floor, None))
     monkeypatch.setattr(anytime, "_jointly", lambda *_, **__: None)
     c = delivery_cell(layout, n, seed)
     problem = Problem(c.scene, c.spec)
-    cert = anytime.certify(problem, _Search(problem), math.inf)
+    cert = phase.certify(problem, _Search(problem), math.inf)
     assert cert.optimal is None and cert.best is not None
     got = plan(c.scene, c.spec, timeout=120)
     expected = search(Problem(c.scene, c.spec), timeout=120)
@@ -275,7 +275,7 @@ def test_a_timed_out_plan_carries_the_phases_bound(
     # climb's "no"s can) gives the timed-out result that bound, and says so
     c = delivery_cell("line", 10, 0)
     bound = to_ticks(14.7) if proved else 0
-    monkeypatch.setattr(planner, "certify", lambda *_: anytime.Certificate(None, None, bound))
+    monkeypatch.setattr(phase, "certify", lambda *_: phase.Certificate(None, None, bound))
     got = plan(c.scene, c.spec, timeout=2.0)
     assert got.status is planner.PlanStatus.TIMEOUT and got.lower_bound is not None
     assert got.makespan is not None and got.makespan >= 14.7 - 1e-9
@@ -291,17 +291,17 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     # line 6 seed 5: the cheaper model's schedule is no plan, so A* starts beside the full
-    # model's climb (planner._Beside), which proves nothing here; the phase's joint re-plan is
+    # model's climb (phase._Beside), which proves nothing here; the phase's joint re-plan is
     # optimal, so A* finds a plan as short when it runs first, and none shorter when it runs
     # last: either way the plan returned is the phase's (a mutation check: returning A*'s
     # own plan when it is no shorter makes the two differ)
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
-    real_start, real_finish = planner._Beside.start, planner._Beside.finish
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
+    real_start, real_finish = phase._Beside.start, phase._Beside.finish
     order = {"mode": ""}
     release = threading.Event()
     started: list[str] = []
 
-    def start(self: planner._Beside, first: object) -> None:
+    def start(self: phase._Beside, first: object) -> None:
         started.append(order["mode"])
         if order["mode"] == "phase first":
             # A*'s pool (made here before A* makes it) has one thread: A* waits behind this
@@ -313,15 +313,15 @@ def test_astar_beside_the_full_model_returns_the_same_plan_whichever_ends_first(
             assert self.future is not None
             self.future.result()
 
-    def finish(self: planner._Beside, cert: anytime.Certificate) -> object:
+    def finish(self: phase._Beside, cert: phase.Certificate) -> object:
         assert cert.optimal is None
         release.set()
         return real_finish(self, cert)
 
-    # (the thread: without two cores or ``fork``, or with ``on_progress``: planner._Apart)
-    monkeypatch.setattr(planner, "beside_possible", lambda: False)
-    monkeypatch.setattr(planner._Beside, "start", start)
-    monkeypatch.setattr(planner._Beside, "finish", finish)
+    # (the thread: without two cores or ``fork``, or with ``on_progress``: phase._Apart)
+    monkeypatch.setattr(anytime, "beside_possible", lambda: False)
+    monkeypatch.setattr(phase._Beside, "start", start)
+    monkeypatch.setattr(phase._Beside, "finish", finish)
     steps = _line_6_5_both_ways(order, release, search)
     assert started == ["astar first", "phase first"]
     assert steps[0] == steps[1]
@@ -354,23 +354,23 @@ def _line_6_5_both_ways(
 def test_astar_in_its_own_process_returns_the_same_plan_whichever_ends_first(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    # as above with A* in a forked process from the start of the phase (planner._Apart): held
+    # as above with A* in a forked process from the start of the phase (phase._Apart): held
     # until the phase ends, or waited for before the phase goes on; the plan returned is the
     # phase's joint re-plan either way, and as short as plain A*'s
     import multiprocessing
 
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     ctx = multiprocessing.get_context("fork")
     release = ctx.Event()
     order = {"mode": ""}
     real_ahead, real_finish, real_search = (
-        planner._Apart.ahead,
-        planner._Apart.finish,
-        planner.search,
+        phase._Apart.ahead,
+        phase._Apart.finish,
+        phase.search,
     )
-    apart: list[planner._Apart] = []
+    apart: list[phase._Apart] = []
 
-    def ahead(self: planner._Apart) -> None:
+    def ahead(self: phase._Apart) -> None:
         apart.append(self)
         real_ahead(self)
         if order["mode"] == "astar first":
@@ -382,14 +382,14 @@ def test_astar_in_its_own_process_returns_the_same_plan_whichever_ends_first(
             release.wait(120)
         return real_search(*args, **kwargs)  # type: ignore[arg-type]
 
-    def finish(self: planner._Apart, cert: anytime.Certificate) -> object:
+    def finish(self: phase._Apart, cert: phase.Certificate) -> object:
         assert cert.optimal is None
         release.set()
         return real_finish(self, cert)
 
-    monkeypatch.setattr(planner._Apart, "ahead", ahead)
-    monkeypatch.setattr(planner._Apart, "finish", finish)
-    monkeypatch.setattr(planner, "search", held_search)
+    monkeypatch.setattr(phase._Apart, "ahead", ahead)
+    monkeypatch.setattr(phase._Apart, "finish", finish)
+    monkeypatch.setattr(phase, "search", held_search)
     steps = _line_6_5_both_ways(order, release, real_search)
     assert len(apart) == 2 and all(a.proc is not None and not a.proc.is_alive() for a in apart)
     assert steps[0] == steps[1]
@@ -400,15 +400,15 @@ def test_astar_in_its_own_process_is_stopped_by_a_proof(monkeypatch: pytest.Monk
     # is ended, and the plan is the phase's (no expansion counted)
     if not anytime.beside_possible():
         pytest.skip("needs two cores and fork")
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
-    apart: list[planner._Apart] = []
-    real_ahead = planner._Apart.ahead
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
+    apart: list[phase._Apart] = []
+    real_ahead = phase._Apart.ahead
 
-    def ahead(self: planner._Apart) -> None:
+    def ahead(self: phase._Apart) -> None:
         apart.append(self)
         real_ahead(self)
 
-    monkeypatch.setattr(planner._Apart, "ahead", ahead)
+    monkeypatch.setattr(phase._Apart, "ahead", ahead)
     c = delivery_cell("grid", 4, 1)
     got = plan(c.scene, c.spec, timeout=120)
     assert got.makespan == pytest.approx(3.3) and got.stats.expanded == 0
@@ -418,7 +418,7 @@ def test_astar_in_its_own_process_is_stopped_by_a_proof(monkeypatch: pytest.Monk
 def test_a_cell_left_to_astar_is_proved_at_its_start_bound() -> None:
     # random 10 x 10 seed 4: the start bound (10.5 s) is above STEPS_UP_TO shortest steps, so
     # no step bound; A* alone times out on its plateau at 10.5 s (20 s runs, sessions 8-17).
-    # The phase beside A* (anytime._beside_astar) has CP-SAT re-plan the prioritized plan
+    # The phase beside A* (phase._beside_astar) has CP-SAT re-plan the prioritized plan
     # (11.2 s) jointly, held at or above the start bound: 10.5 s, optimal, no expansion counted
     if not anytime.beside_possible():
         pytest.skip("needs two cores and fork")
@@ -436,31 +436,31 @@ def test_a_cell_left_to_astar_is_proved_at_its_start_bound() -> None:
 
 def _beside_astar_both_ways(
     monkeypatch: pytest.MonkeyPatch, layout: str, n: int, seed: int
-) -> tuple[list[tuple[PlanStep, ...]], list[anytime.AstarEnd]]:
-    """Plans of a small cell by ``anytime._beside_astar`` (every cell taken for one left to
+) -> tuple[list[tuple[PlanStep, ...]], list[phase.AstarEnd]]:
+    """Plans of a small cell by ``phase._beside_astar`` (every cell taken for one left to
     A*), with A* ended before the phase goes on, then held until the phase ends, and plain
     A*'s plan; what the phase told the watcher each time."""
     import multiprocessing
 
-    monkeypatch.setattr(anytime, "PAIRS_UP_TO", 0)
+    monkeypatch.setattr(planner, "PHASE_ABOVE", 0)
     monkeypatch.setattr(anytime, "STEPS_UP_TO", 0)
     ctx = multiprocessing.get_context("fork")
     release = ctx.Event()
     order = {"mode": ""}
     real_ahead, real_watch, real_finish, real_search = (
-        planner._Apart.ahead,
-        planner._Apart.watch,
-        planner._Apart.finish,
-        planner.search,
+        phase._Apart.ahead,
+        phase._Apart.watch,
+        phase._Apart.finish,
+        phase.search,
     )
-    ends: list[anytime.AstarEnd] = []
+    ends: list[phase.AstarEnd] = []
 
-    def ahead(self: planner._Apart) -> None:
+    def ahead(self: phase._Apart) -> None:
         real_ahead(self)
         if order["mode"] == "astar first":
             assert self.results is not None and self.results.poll(120)  # A* has ended
 
-    def watch(self: planner._Apart, end: anytime.AstarEnd) -> bool:
+    def watch(self: phase._Apart, end: phase.AstarEnd) -> bool:
         ends.append(end)
         return real_watch(self, end)
 
@@ -470,14 +470,14 @@ def _beside_astar_both_ways(
             release.wait(120)
         return real_search(*args, **kwargs)  # type: ignore[arg-type]
 
-    def finish(self: planner._Apart, cert: anytime.Certificate) -> object:
+    def finish(self: phase._Apart, cert: phase.Certificate) -> object:
         release.set()
         return real_finish(self, cert)
 
-    monkeypatch.setattr(planner._Apart, "ahead", ahead)
-    monkeypatch.setattr(planner._Apart, "watch", watch)
-    monkeypatch.setattr(planner._Apart, "finish", finish)
-    monkeypatch.setattr(planner, "search", held_search)
+    monkeypatch.setattr(phase._Apart, "ahead", ahead)
+    monkeypatch.setattr(phase._Apart, "watch", watch)
+    monkeypatch.setattr(phase._Apart, "finish", finish)
+    monkeypatch.setattr(phase, "search", held_search)
     steps = _line_6_5_both_ways(order, release, real_search, (layout, n, seed))
     return steps, ends
 

@@ -251,3 +251,36 @@ def test_squeezed_stops_at_a_plan_that_meets_the_bound(monkeypatch: pytest.Monke
     calls.clear()
     again = _squeezed(router, dict(router.routes), time.perf_counter() + 1.0)
     assert again is not None and again[0] < found[0] and len(calls) > 1
+
+
+def test_a_level_starts_again_from_its_plan_after_restart_moves(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # squeezed far below what the cell allows (grid 8 x 8 seed 2: 16 steps, the optimum 11),
+    # the clashes stay: after RESTART moves the repair starts again from the plan it squeezed
+    # (the goals done before the horizon on their old routes, the weights afresh), then after
+    # twice as many; a squeeze of another plan starts the count again
+    monkeypatch.setattr(repair, "RESTART", 25)
+    monkeypatch.setattr(repair, "STUCK", 3)  # (weights raised within the moves)
+    problem, router, paths = _first("grid", 8, 2)
+    rep = repair.Repair(
+        problem, problem.start()[0], [g.obj for g in router.goals], router.fires, router.alive, 0
+    )
+    T = 7
+    assert rep.squeeze(paths, T)
+    kept = {gi: path for gi, path in paths.items() if path[-1][0] < T}
+    assert kept and len(kept) < len(paths)
+    for restarts, moves in ((1, 25), (2, 50)):
+        for _ in range(moves):
+            assert rep.clashes
+            rep.step()
+        assert rep.moves == moves and rep.restarts == restarts - 1
+        assert any(w > 1 for row in rep.weight for w in row)  # (breakout raised some)
+        rep.step()
+        assert rep.moves == 0 and rep.restarts == restarts
+        assert all(w == 1 for row in rep.weight for w in row)
+        assert all(rep.routes[gi][0] == path for gi, path in kept.items())
+        assert _recount(rep) == (rep.clashes, rep.weighted, rep._clashing())
+        assert rep.rcost == _use_costs(rep)
+    assert rep.squeeze(dict(paths), T)
+    assert rep.moves == 0 and rep.restarts == 0

@@ -465,7 +465,7 @@ def test_asking_two_levels_at_once_changes_no_answer(
 def test_the_climb_says_how_many_questions_it_asks_at_once(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    # exact mode's A* process (planner._Apart) is paused through the climb's rounds that ask
+    # exact mode's A* process (phase._Apart) is paused through the climb's rounds that ask
     # a level on every core: the climb tells how many a round asks (2), how many are still
     # running as its questions end, and 0 when it ends
     from hltl.planner import lns

@@ -2026,7 +2026,12 @@ def _keyword_typo(word: str) -> str | None:
     """The one keyword a typed word is a typo of, else None (see Lexicon.misspelt_keyword)."""
     if word in common_words() or word in PHRASE_WORDS:
         return None
-    near = _near_keywords(word)
+    # session 24: a slip keeps the word's first letter, or swaps the first two ("hte"); a word
+    # with another first letter ("lorry" for "sorry", "krap" for "wrap") is more likely a word
+    # the list of common words lacks than a slip, so it is not corrected
+    near = tuple(
+        k for k in _near_keywords(word) if k[0] == word[0] or (len(k) > 1 and word[:2] == k[1::-1])
+    )
     # forms of one verb are one word here ("gve": give or gave); other keywords are not ("thae":
     # "the" or "that", both determiners, but "that" may stand for "it")
     said = {_lemma_of(k) if k in VERBS else k for k in near}

@@ -1716,7 +1716,10 @@ def _drop(pattern: str, text: str, lexicon: Lexicon, repl: str = "") -> str:
 # attention also before a full stop): the 'me' of 'excuse me' is no recipient and its 'sorry'
 # corrects nothing. Later in the instruction a call for attention is left (_corrections19 does not
 # read it as a correction).
-_GREETING = r"(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening)(?: there)?"
+_GREETING = (
+    r"(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening|afternoon|"
+    r"good (?:morning|afternoon|evening|day)|ah|oh)(?: there)?"  # session 24: 'Ah, good afternoon'
+)
 _BOTHERING = r"(?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?"
 _ATTENTION = (
     r"(?:(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
@@ -2066,6 +2069,14 @@ def _purpose(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# a time later than now, said in a deadline ('before I go tomorrow', 'before she leaves tonight')
+_LATER24 = re.compile(
+    r"\b(?:tomorrow|tonight|later|next|week|weekend|month|evening|afternoon|morning|lunch|"
+    r"dinner|breakfast|tea|hours?|minutes?|mins?|days?|o'clock|\d)\b",
+    _F,
+)
+
+
 def _when(text: str, lexicon: Lexicon) -> str:
     """'… before he heads off', '… before the lesson starts': a deadline about no task (it names
     nothing in the scene, and no word in it counts, chooses or points back to a task) is met by
@@ -2079,13 +2090,15 @@ def _when(text: str, lexicon: Lexicon) -> str:
             _names_nothing(said, lexicon)
             and not _KEEP_WORDS.search(said)
             and not re.search(r"\b(?:done|finished|complete|completed)\b", said, _F)
+            # session 24: "before I go tomorrow" names a later time: the task is put off
+            and not _LATER24.search(said)
         ):
             return ""
         return m.group(0)
 
     return _sub(
         r",?\s+(?:before|by the time) (?:he|she|they|the|his|"
-        r"her|their|my|our)\b(?P<said>(?:'s|'re| [a-z']+){1,5})(?=\s*(?:[.;!?]|,\s*(?:please|"
+        r"her|their|my|our|i|we)\b(?P<said>(?:'s|'re| [a-z']+){1,5})(?=\s*(?:[.;!?]|,\s*(?:please|"
         r"thanks|thank you|cheers|ta)\b|$))",
         timed,
         text,
@@ -6177,7 +6190,11 @@ _LY_HELD19 = frozenset(
         *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
     }
 )
-_PARTICLES19 = frozenset({"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"})
+_PARTICLES19 = frozenset(
+    {"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"}
+    # session 24: Thai and Filipino polite particles ("bring cup to Person B, krap")
+    | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
+)
 _NOW19 = re.compile(
     r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
     r"forthwith|quick smart)\b",
@@ -6708,6 +6725,11 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
     object); one that adds ('too', 'also', 'as well') or leaves an object out stays refused."""
     for m in reversed(list(_RESTATE20.finditer(text))):
         head, after = text[: m.start()], text[m.end() :]
+        # "…, no, scratch that, the crisps to Alice": the second cue is the same correction; left
+        # at the head of the restated words it would take back the sentence before (session 24)
+        after = _sub(
+            r"^(?:scratch|strike|forget|ignore|cancel) that\s*[,.:;!]\s*|^i mean\s*,?\s*", "", after
+        )
         cut = max(head.rfind(". "), head.rfind("! "), head.rfind("? "), head.rfind("; "))
         kept, before = (head[: cut + 1], head[cut + 2 :]) if cut >= 0 else ("", head)
         if not before.strip() or re.search(r"\b(?:too|also|as well|instead of)\b", after, _F):
@@ -6963,6 +6985,67 @@ _INTERJECTION24 = re.compile(
 )
 
 
+# Greetings, thanks, blessings and polite particles of other languages that speakers of English
+# as a second language (or of a faith) open and close requests with. The list is by KIND, one
+# line per kind, each word a courtesy in its language that asks for nothing; a stretch between
+# punctuation marks made only of them (with an address such as 'my friend', 'sir', 'boss') is
+# taken off when what is left names something. docs/grounding.md, "Session 24", lists them.
+_COURTESY24 = (
+    # greetings
+    r"habari(?: yako| gani)?|jambo|hujambo|sawasdee|sawatdee|sawasdi|dobryi den|dobryy den|"
+    r"dobry den|dobriy den|pryvit|vitayu|selamat (?:pagi|petang|siang|malam|datang)|apa khabar|"
+    r"merhaba|yassou|yassas|geia sou|xin chao|kumusta|kamusta|magandang (?:umaga|hapon|gabi)|"
+    r"namaste|namaskar|salaam|salam|as-?salaamu? alaikum|shalom|hola|bonjour|ciao|konnichiwa|"
+    r"ni hao|kia ora|sawubona|ahoj|"
+    # thanks
+    r"asante(?: sana)?|khop khun(?: mak)?|khob khun(?: mak)?|kop khun|diakuiu|dyakuyu|diakuyu|"
+    r"spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|"
+    r"dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|"
+    r"arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|"
+    # blessings and pace
+    r"amen(?: to that)?|inshallah|mashallah|pole pole|"
+    # polite particles said alone
+    r"krap|khrap|krub|khrub|kha|po|opo|lah|ah"
+)
+_COURTESY_STRETCH24 = re.compile(
+    rf"(?:{_COURTESY24})(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all))*",
+    _F,
+)
+
+
+def _courtesy24(text: str, lexicon: Lexicon) -> str:
+    """Session 24: stretches of greetings, thanks, blessings and polite particles of other
+    languages ("Sawasdee krap.", "…, asante.", "Habari, …", "Amen to that.", "Diakuiu, thank you
+    very much.") taken off (above)."""
+    if not re.search(rf"\b(?:{_COURTESY24})\b", text, _F):
+        return text
+    parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
+    chunks, seps = parts[0::2], [*parts[1::2], ""]
+    drop = [
+        bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(c, lexicon)
+        for c in chunks
+    ]
+    if not any(drop):
+        return text
+    out: list[str] = []
+    for c, sep, d in zip(chunks, seps, drop, strict=True):
+        if d:
+            if out and sep.strip()[:1] in (".", "!", "?") and out[-1].strip()[:1] in (",", ";"):
+                out[-1] = sep  # "…, asante." → "…."
+            continue
+        out.extend((c, sep))
+    said = "".join(out).strip(" ,;")
+    return said if _names(said, lexicon) else text
+
+
+# a correction cue: a remark of the speaker's before one is not taken off
+_CUE_AFTER24 = re.compile(
+    r"\b(?:no(?! (?:trouble|bother|rush|hurry|problem|worries|fuss))|nope|sorry|correction|"
+    r"actually|wait|hang on|hold on|i mean|rather|scratch|oops|whoops|make that|instead|not)\b",
+    _F,
+)
+
+
 def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
     """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
     ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
@@ -7000,7 +7083,14 @@ def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
         if _speaker_stretch24(tail, spoke, lexicon) and _speaker_stretch24(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
-        if _speaker_stretch24(tail, spoke, lexicon) and (not head or _names(head, lexicon)):
+        if (
+            _speaker_stretch24(tail, spoke, lexicon)
+            and (not head or _names(head, lexicon))
+            and not _CUE_AFTER24.search("".join(pieces[n + 1 :]))
+        ):
+            # (not before a correction: taken off, the remark would join what the speaker
+            # corrected to what they correct next: "… to Zoe, sorry, Noah, I always mix the two
+            # of them up, correction, the globe")
             dropped, spoke = True, True
             if head:
                 out.append(head)
@@ -7747,6 +7837,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _courtesy24,
     _attention21,
     _speaker21,
     _reasons21,

@@ -183,6 +183,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             if plain in tried:
                 continue
             tried.add(plain)
+            if len(_DOUBT.findall(plain)) < len(_DOUBT.findall(text)):
+                # "I'm not sure, morning! Would you mind passing Bob the crisps?", "… No, Tom.
+                # Ugh, I don't know. Good robot.": the speaker says they are unsure; a rewrite
+                # that takes that off would act on what they doubt (session 24: 12c's fuzz)
+                continue
             if _stubs(plain, lexicon) > _stubs(text, lexicon):
                 # "…, the green one's for the communion wine." → "…, the green one's.": the
                 # rewrite took off what the clause said of the object, and what is left would
@@ -222,6 +227,15 @@ _DEFERRED = re.compile(
     r"\b(?:tonight|tomorrow|later on|after (?:lunch|dinner|breakfast|tea|school|work)|"
     r"in (?:an?|one|two|three|five|ten|\d+) (?:hours?|minutes?|mins?)|this (?:evening|afternoon)|"
     r"next week)\b",
+    re.I,
+)
+
+
+# the speaker saying they are unsure of what they ask
+_DOUBT = re.compile(
+    r"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know|dunno|no idea|"
+    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|i forget|i forgot|"
+    r"lost track)\b",
     re.I,
 )
 

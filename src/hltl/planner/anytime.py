@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
+import multiprocessing
+import random
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from hltl.planner import lns, profile, repair, schedule
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
@@ -18,7 +21,6 @@ from hltl.spec.syntax import And, Atom, Eventually, Formula, Or
 if TYPE_CHECKING:
     from multiprocessing.connection import Connection
 
-    from hltl.planner import lns, repair, schedule  # why: start-up (docs/planner.md)
 
 # the share of the time budget by which more priority orders stop being tried
 RESTART_SHARE = 0.5
@@ -59,19 +61,6 @@ SCHEDULE_SHARE = 0.25
 # shortest steps: its model has a variable per instance and step, and on 10-robot lines (start
 # bound 11.7 s, 23 steps) it proved nothing in 7.6 s of CPU where A* alone finishes in about 5 s
 STEPS_UP_TO = 16
-# exact mode's first phase on cells left to A* (``_beside_astar``): CP-SAT's joint re-plan
-# does at most this much deterministic work (random 10 x 10 seed 4 meets its start bound after
-# 0.7; line seed 4 never does, and its 15 s of CPU beside A* cost A* about 6 %)
-BESIDE_WORK = 4.0
-# exact mode's first phase: the profile bound (``profile.profile_bound``) raises the step
-# climb's floor first, for at most this many seconds (docs/planner.md, "The profile bound as the
-# climb's floor": solved in 0.05-0.7 s on the 10 x 10 cells, grid seed 4 from 4.3 to 5.7 s,
-# where the step model's cheap rounds took about 3 s to get as far)
-PROFILE_FLOOR_SECONDS = 1.0
-# exact mode's phase improves its prioritized plan by this many rounds of the walk (an order
-# and its moves, about 1 ms each on 10-goal cells) before the step climb, whose roof the plan
-# is (``schedule.schedule_bound``'s ``roof``; 0: no walk and no roof, the climb of session 18)
-ROOF_ROUNDS = 400
 # cells of more goals than SCHEDULE_UP_TO where no pair beats the start bound (grids and random
 # layouts: docs/planner.md, "Profile bound"): the last share of the budget goes to the profile
 # bound, when that share is at least PROFILE_MIN_SECONDS long (``_profile_fits``: 10 s budgets
@@ -401,7 +390,6 @@ def _with(locs: tuple[int, ...], o: int, loc: int) -> tuple[int, ...]:
 
 def _orders(s: _Search, node: Node, gls: Sequence[Goal], seed: int) -> Callable[[], list[int]]:
     """Priority orders: most critical goal first, then random ones; "after" goals keep order."""
-    import random  # why: start-up (docs/planner.md)
 
     graph = s.heuristic.graph
     crit = [graph.atom_time(g.atom, node[0]) for g in gls]
@@ -468,7 +456,6 @@ def plan_anytime(
         ``solved`` with ``lower_bound`` and ``gap`` (0: proved optimal); ``infeasible`` when no
         plan exists; ``timeout`` when no plan was found in time (the bound is still reported).
     """
-    from hltl.planner import lns, profile, schedule  # why: start-up (docs/planner.md)
 
     t0 = time.perf_counter()
     deadline = t0 + timeout
@@ -656,9 +643,6 @@ def beside_possible() -> bool:
     """The profile bound can run in a process of its own beside the walk: two cores
     (``schedule.WORKERS``) and processes started by ``fork`` (which copies the compiled
     problem instead of pickling it)."""
-    import multiprocessing  # why: only 32-goal anytime runs need it (start-up, docs/planner.md)
-
-    from hltl.planner import schedule  # why: start-up (docs/planner.md)
 
     return schedule.WORKERS >= 2 and "fork" in multiprocessing.get_all_start_methods()
 
@@ -674,13 +658,11 @@ class _ProfileBeside:
     def __init__(
         self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
     ) -> None:
-        from hltl.planner import schedule  # why: start-up (docs/planner.md)
 
         heur = s.heuristic
         tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
         self.bound = floor
         self.deadline = deadline
-        import multiprocessing  # why: only 32-goal anytime runs need it
 
         ctx = multiprocessing.get_context("fork")
         self.conn, send = ctx.Pipe(duplex=False)
@@ -738,7 +720,6 @@ def _profile_child(
     """The profile bound's process (``_ProfileBeside``): every level it proves is sent; once
     the bound is final (the relaxation solved at it), it squeezes the walk's plans handed
     over by ``exchange`` until ``deadline`` (``_plans_beside``)."""
-    from hltl.planner import lns, profile  # why: start-up (docs/planner.md)
 
     try:
         if lns.available():
@@ -767,7 +748,6 @@ def _plans_beside(
     for) squeezed by conflict repair with its own seed (``BESIDE_SEED``) until ``deadline``,
     each shorter plan handed back; again from the walk's next plan when it is shorter than
     any found here. Stops at a plan that meets ``bound``."""
-    from hltl.planner import repair  # why: start-up (docs/planner.md)
 
     gls = goals(s, start)
     if not gls:
@@ -856,7 +836,6 @@ class _Exchange:
 
 def _paths_of(routes: dict[int, _Route]) -> dict[int, repair.Path]:
     """Per goal its route's path, with the steps no route acts in taken out."""
-    from hltl.planner import repair  # why: start-up (docs/planner.md)
 
     return repair.ranked({gi: rt[0] for gi, rt in routes.items()})
 
@@ -880,7 +859,6 @@ def _schedule_at_start(
     """The relaxed-schedule bound at the start node (``schedule.schedule_bound``) when it
     applies (fixed durations, CP-SAT installed, at most ``SCHEDULE_UP_TO`` event goals);
     ``floor`` otherwise or when it proves nothing more before ``until``."""
-    from hltl.planner import lns, schedule  # why: start-up (docs/planner.md)
 
     if not schedule.applicable(problem):
         return floor
@@ -890,214 +868,6 @@ def _schedule_at_start(
         return floor
     res = schedule.schedule_bound(
         problem, heur.graph, start, tgts, floor=floor, upper=upper, deadline=until
-    )
-    return res.ticks
-
-
-@dataclass(frozen=True, slots=True)
-class Certificate:
-    """What exact mode's first phase found (``certify``): a plan it proved optimal, and the
-    shortest plan it knows (the same one when proved; either may be None); and the lower
-    bound (ticks) it proved on every plan (0: none beyond the start bound's)."""
-
-    optimal: _Found | None
-    best: _Found | None
-    bound: int = 0
-
-
-def certified(problem: Problem, s: _Search, until: float) -> _Found | None:
-    """The plan ``certify`` proves optimal, or None."""
-    return certify(problem, s, until).optimal
-
-
-def certify(
-    problem: Problem,
-    s: _Search,
-    until: float,
-    beside: Callable[[_Found | None], None] | None = None,
-    ahead: Callable[[], None] | None = None,
-    watch: Callable[[AstarEnd], bool] | None = None,
-) -> Certificate:
-    """Exact mode's first phase for cells of more than ``PAIRS_UP_TO`` and at most
-    ``SCHEDULE_UP_TO`` event goals (fixed positive durations, CP-SAT installed) whose start
-    bound is at most ``STEPS_UP_TO`` shortest steps: a prioritized plan, then the step bound at
-    the start node until ``until`` (levels shaved one by one); a plan that meets the bound (the
-    relaxation's schedule there, the first plan, or CP-SAT's joint re-plan of it) is optimal.
-    Where none is proved, the shortest of those plans is handed back too (A* then looks only
-    for shorter ones). ``beside`` is called (with the prioritized plan) when the cheaper
-    model's schedule is no plan and the full model is to be asked: the caller may start A*
-    on the second core then, and the full model's levels are asked one at a time. ``ahead``
-    is called once the phase is sure to run, before CP-SAT's import (the caller may start A*
-    in a process of its own then: ``planner._Apart``).
-
-    Cells whose start bound is above ``STEPS_UP_TO`` shortest steps (lines, some random
-    cells) get no step bound; where A* runs in a process of its own (``watch`` says so),
-    the phase asks, on the other core, for a plan that meets the profile bound
-    (``_beside_astar``)."""
-    none = Certificate(None, None)
-    start = problem.start()
-    heur = s.heuristic
-    if problem.monitor.accepted(start[2]):
-        return none
-    if not PAIRS_UP_TO < len(heur.required_atoms(start[2])) <= SCHEDULE_UP_TO:
-        return none
-    # why: start-up (docs/planner.md): only cells of more than PAIRS_UP_TO goals get here
-    from hltl.planner import lns, schedule
-
-    if not schedule.steps_applicable(problem):
-        return none
-    h0 = heur(start)  # (A* needs it too: memoised)
-    if math.isinf(h0):
-        return none
-    if round(h0) > STEPS_UP_TO * min(i.lower for i in problem.instances):
-        # (lines: the step model proves nothing there; A* alone, or beside it on two cores)
-        if ahead is None or watch is None:
-            return none
-        return _beside_astar(problem, s, round(h0), until, beside, ahead, watch)
-    if ahead is not None:
-        ahead()
-    # last: importing CP-SAT takes 0.2-0.5 s even without pandas (``lns._import_cp_sat``),
-    # which a cell left to A* need not pay
-    if not lns.available():
-        return none
-    best = construct(problem, s)
-    if ROOF_ROUNDS > 0 and best is not None and best[0] > h0:
-        # the step climb's roof: a fixed number of rounds (the plan does not depend on the
-        # machine's speed); A*'s process has the other core meanwhile
-        better = _more(problem, s, until, enough=h0, rounds=ROOF_ROUNDS)
-        if better is not None and better[0] < best[0]:
-            best = better
-    floor = _profile_floor(problem, s, start, round(h0), best, until)
-    if best is not None and floor >= best[0]:
-        return Certificate(best, best)  # no plan is shorter
-    # levels shaved one by one (no upper): certification pays where the optimum is at or just
-    # above the start bound, where galloping's extra feasible questions cost most
-    ticks, found = step_bound(
-        problem,
-        s,
-        start,
-        floor,
-        None,
-        until,
-        None if beside is None else lambda: beside(best),
-        None if best is None or ROOF_ROUNDS <= 0 else best[0],
-    )
-    if found is not None:
-        return Certificate(found, found)
-    if best is None:
-        return Certificate(None, None, ticks)
-    if ticks >= best[0]:
-        return Certificate(best, best)  # no relaxed schedule is shorter
-    gls = goals(s, start)
-    if gls and time.perf_counter() < until and _joint_possible(problem, gls):
-        # the relaxation's schedule was no plan: CP-SAT re-plans every goal jointly from the
-        # prioritized plan (any path, loops too), in as many steps as a plan of the bound has
-        shortest = min(i.lower for i in problem.instances)
-        slack = max(0, ticks // shortest - len(best[1]))
-        joint = _jointly(problem, s, _Router(s, start, gls), best, until, slack=slack)
-        if joint is not None and joint[0] <= ticks:
-            return Certificate(joint, joint)
-        if joint is not None and joint[0] < best[0]:
-            best = joint
-    return Certificate(None, best, ticks)
-
-
-class AstarEnd:
-    """What ``certify``'s phase beside A* (``_beside_astar``) tells whoever watches A*'s
-    process (``planner._Apart.watch``): the floor the phase proves plans at, and how to stop
-    its joint re-plan. When A* ends with no plan at or below the floor, the phase can prove
-    nothing more and is stopped; when A*'s plan meets the floor the phase goes on (it may
-    prove its own plan, which is then the one returned)."""
-
-    def __init__(self, floor: int) -> None:
-        from hltl.planner import lns  # why: start-up (docs/planner.md)
-
-        self.floor = floor
-        self.stop = lns.Stop()
-
-    def hopeless(self, astar_makespan: int | None) -> bool:
-        """Whether the phase can prove nothing once A* has ended with a plan of
-        ``astar_makespan`` ticks (None: none shorter than its ``upper``, the prioritized plan,
-        which is then optimal, and longer than the floor, or the phase would have proved it)."""
-        return astar_makespan is None or astar_makespan > self.floor
-
-
-def _beside_astar(
-    problem: Problem,
-    s: _Search,
-    h0: int,
-    until: float,
-    beside: Callable[[_Found | None], None] | None,
-    ahead: Callable[[], None],
-    watch: Callable[[AstarEnd], bool],
-) -> Certificate:
-    """``certify`` on cells the step bound does not take (start bound ``h0`` above
-    ``STEPS_UP_TO`` shortest steps): A* starts at once in a process of its own (``ahead``)
-    and has a core to itself, and on the other one a prioritized plan and CP-SAT's joint
-    re-plan of it, held at or above the start bound: a plan that meets the start bound is
-    optimal (random 10 x 10 seed 4: 10.5 s, proved in about 1 s, where A* alone times out on
-    its plateau at 10.5 s). Where none is proved, the prioritized plan is the one handed back
-    (A* looks for shorter plans, and its own is returned: never the joint re-plan's, which
-    may or may not be there when A* ends). ``watch`` (``planner._Apart.watch``) stops the
-    phase when A* has ended with a plan longer than the start bound (nothing the phase could
-    prove), so the plan returned is the same whichever ends first and cells A* solves
-    quickly (most lines) do not wait for CP-SAT. The start bound, not the profile bound, is
-    the floor: it is known before CP-SAT's import, which A* often beats on lines (line
-    10 x 10 seed 3: 0.45 s), and on these cells the profile bound added nothing (random seed
-    4, lines 0 and 4: the start bound)."""
-    from hltl.planner import lns  # why: start-up (docs/planner.md)
-
-    none = Certificate(None, None)
-    ahead()
-    end = AstarEnd(h0)
-    if not watch(end):
-        return none  # (no process: A* alone, at once)
-    best = construct(problem, s)
-    if best is None:
-        return none
-    if beside is not None:
-        beside(best)  # (A*'s ``upper``: it looks only for shorter plans)
-    if best[0] <= h0:
-        return Certificate(best, best)
-    # (A* may have ended before or during CP-SAT's import: then there is nothing to prove)
-    if end.stop.stopped or not lns.available() or end.stop.stopped:
-        return Certificate(None, best)
-    start = problem.start()
-    gls = goals(s, start)
-    if not gls or not _joint_possible(problem, gls):
-        return Certificate(None, best)
-    router = _Router(s, start, gls)
-    joint = _jointly(problem, s, router, best, until, floor=h0, stop=end.stop, work=BESIDE_WORK)
-    if joint is not None and joint[0] <= h0:
-        return Certificate(joint, joint)
-    return Certificate(None, best)
-
-
-def _profile_floor(
-    problem: Problem, s: _Search, start: Node, floor: int, best: _Found | None, until: float
-) -> int:
-    """The profile bound at the start node (``profile.profile_bound``, at most
-    ``PROFILE_FLOOR_SECONDS``), or ``floor`` where it does not apply or says no more: a lower
-    bound on every plan, so the step climb may start there. Its questions are cheap (no
-    presolve, one at a time: A*'s process runs beside them) and it is solved long before the
-    step model's hard levels, which it never reaches (docs/planner.md, "The profile bound as
-    the climb's floor")."""
-    from hltl.planner import profile, schedule  # why: start-up (docs/planner.md)
-
-    if not profile.applicable(problem):
-        return floor
-    heur = s.heuristic
-    tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
-    if not tgts:
-        return floor
-    res = profile.profile_bound(
-        problem,
-        heur.graph,
-        start,
-        tgts,
-        floor=floor,
-        upper=None if best is None else best[0],
-        deadline=min(until, time.perf_counter() + PROFILE_FLOOR_SECONDS),
     )
     return res.ticks
 
@@ -1121,7 +891,6 @@ def step_bound(
     ``before_full`` before it asks the full model, and asks first just below ``roof``, a
     known plan's makespan). (``floor``, None) when the bound does not apply; it is never below
     ``floor``."""
-    from hltl.planner import lns, schedule  # why: start-up (docs/planner.md)
 
     if not schedule.steps_applicable(problem):
         return floor, None
@@ -1224,7 +993,6 @@ def _more(
     ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
     steps until ``until`` (``_squeezed``). With ``exchange``, each shorter plan is offered to
     the bound's process."""
-    from hltl.planner import repair  # why: start-up (docs/planner.md)
 
     node = problem.start()
     gls = goals(s, node)
@@ -1336,7 +1104,6 @@ def _squeeze_paths(
     steps than the plan being squeezed: replayed through the monitors, then squeezed instead.
     (One with as many steps, shorter only by its steps' lengths, would restart the search for
     the level this one has been repairing: engineer 11's diagnosis in session 21.)"""
-    from hltl.planner import repair  # why: start-up (docs/planner.md)
 
     p = router.p
     node = router.node
@@ -1393,7 +1160,6 @@ def _profile_fits(timeout: float) -> bool:
 
 def _joint_possible(problem: Problem, gls: Sequence[Goal]) -> bool:
     """The joint model applies: fixed durations, goals that are events, CP-SAT installed."""
-    from hltl.planner import lns  # why: start-up (docs/planner.md)
 
     return (
         problem.cost.fixed
@@ -1422,7 +1188,6 @@ def _jointly(
     monitors before it counts. None: nothing found by ``until`` (``time.perf_counter()``), or
     ``stop`` stopped it. ``floor``: a lower bound on every plan (ticks), where the solve may
     end; ``work``: at most this much of CP-SAT's deterministic time (``lns.replan_jointly``)."""
-    from hltl.planner import lns  # why: start-up (docs/planner.md)
 
     node = router.node
     graph = s.heuristic.graph
@@ -1471,7 +1236,6 @@ class _Neighbourhood:
     order can move into the room the others leave."""
 
     def __init__(self, router: _Router, best: _Found, routes: dict[int, _Route]) -> None:
-        import random  # why: start-up (docs/planner.md)
 
         self.router = router
         self.best = best
@@ -1519,7 +1283,6 @@ class _OrderWalk:
     this finds shorter plans than random restarts alone (docs/planner.md, "Anytime mode")."""
 
     def __init__(self, s: _Search, node: Node, gls: Sequence[Goal]) -> None:
-        import random  # why: start-up (docs/planner.md)
 
         self.gls = gls
         self.router = _Router(s, node, gls)

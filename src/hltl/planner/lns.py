@@ -126,7 +126,7 @@ _busy: Callable[[int], None] | None = None
 def share_busy(busy: Callable[[int], None] | None) -> None:
     """From now on, ``schedule``'s climb calls ``busy`` with how many questions it asks
     CP-SAT in a round, at once (0 between its rounds; None: nobody is told). Exact mode's A*
-    process (``planner._Apart``) is paused through the rounds that ask one on every core."""
+    process (``phase._Apart``) is paused through the rounds that ask one on every core."""
     global _busy
     _busy = busy
 

@@ -25,6 +25,9 @@ REPAIR_MORE = (1, 1, 2, 2, 3)
 UNREACHED = 1 << 30
 # repair moves without fewer clashes before the clashing cells weigh more
 STUCK = 20
+# repair moves at one level after which it starts again from the plan it squeezed (0: never),
+# twice as many after each such restart at the same level
+RESTART = 6000
 
 
 class Repair:
@@ -67,6 +70,9 @@ class Repair:
         self.weighted = 0  # the same, each counted at its weight
         self.stuck = 0  # moves since the clashes last fell
         self.least = 0  # the fewest clashes since the weights were last raised
+        self.moves = 0  # repair moves since the last squeeze
+        self.base: tuple[dict[int, Path], int] = ({}, 0)  # what the last squeeze started from
+        self.restarts = 0  # restarts from it
 
     def _fewest(self, gi: int, alive: Sequence[bool]) -> list[int]:
         """Fewest instances from each place to the goal's atom (ignoring other routes)."""
@@ -270,6 +276,10 @@ class Repair:
         """Start a search for a plan of ``T`` steps from ``routes`` (per goal its path, steps
         counted from 0): the goals whose atom happens at step ``T`` or later are routed again
         inside the horizon, clashes allowed. False: some goal has no route at all."""
+        if routes is not self.base[0] or self.base[1] != T:  # (not a restart)
+            self.base = (routes, T)
+            self.restarts = 0
+        self.moves = 0
         self.routes = {}
         for gi, path in routes.items():
             if path[-1][0] < T:
@@ -311,6 +321,11 @@ class Repair:
         rng = self.rng
         clashing = self._clashing()
         if not clashing:
+            return
+        self.moves += 1
+        if RESTART and self.moves > RESTART << self.restarts:
+            self.restarts += 1
+            self.squeeze(*self.base)
             return
         g0 = rng.choice(clashing)
         robots = 0

@@ -435,7 +435,7 @@ def _shave(
                 for at in range(first, first + workers * apart, apart)
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
-            # (planner._Apart pauses A* through a round that asks a level on every core)
+            # (phase._Apart pauses A* through a round that asks a level on every core)
             note_busy(told := len(levels))
             asked = {at: Stop() for at in levels}
             try:
