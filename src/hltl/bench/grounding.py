@@ -91,7 +91,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # its one measurement at the end of session 22; tuned on in session 23), blind22 (written in
 # session 23 by another engineer and committed alone, reviewed by a second engineer, never opened
 # by the engineers who changed the grounder before its one measurement at the end of session 23;
-# tests do not assert it).
+# tuned on in session 24), blind23 (written in session 24 by another engineer and committed alone,
+# reviewed by a second engineer, never opened by the engineers who changed the grounder before
+# its one measurement at the end of session 24; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -131,6 +133,7 @@ PARTS = (
     "blind20",
     "blind21",
     "blind22",
+    "blind23",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
