@@ -7007,6 +7007,7 @@ _COURTESY24 = (
     # polite particles said alone
     r"krap|khrap|krub|khrub|kha|po|opo|lah|ah"
 )
+_COURTESY_WORD24 = re.compile(rf"\b(?:{_COURTESY24})\b", _F)
 _COURTESY_STRETCH24 = re.compile(
     rf"(?:{_COURTESY24})(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all))*",
     _F,
@@ -7017,7 +7018,7 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     """Session 24: stretches of greetings, thanks, blessings and polite particles of other
     languages ("Sawasdee krap.", "…, asante.", "Habari, …", "Amen to that.", "Diakuiu, thank you
     very much.") taken off (above)."""
-    if not re.search(rf"\b(?:{_COURTESY24})\b", text, _F):
+    if not _COURTESY_WORD24.search(text):
         return text
     parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
@@ -7081,10 +7082,11 @@ def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
             r"(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
-        if _speaker_stretch24(tail, spoke, lexicon) and _speaker_stretch24(head, False, lexicon):
+        remark = _speaker_stretch24(tail, spoke, lexicon)
+        if remark and _speaker_stretch24(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
         if (
-            _speaker_stretch24(tail, spoke, lexicon)
+            remark
             and (not head or _names(head, lexicon))
             and not _CUE_AFTER24.search("".join(pieces[n + 1 :]))
         ):

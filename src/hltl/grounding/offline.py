@@ -175,6 +175,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         said = " ".join(text.split())
         best: GroundingError = refused
         tried = {said}
+        # what the session-24 guards compare each rewrite with (the speaker's doubts, clauses
+        # ending on 'is' after an object): the instruction's own, counted once
+        doubts, stubs = len(_DOUBT.findall(text)), _stubs(text, lexicon)
         # the session-19 rewrites alone (by word kind: cheap, and most of what a new speaker
         # wraps a request in), then those of every earlier session, then both (every corpus
         # entry reads as it did with the earlier ones first: docs/grounding.md, "Session 19")
@@ -183,12 +186,12 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             if plain in tried:
                 continue
             tried.add(plain)
-            if len(_DOUBT.findall(plain)) < len(_DOUBT.findall(text)):
+            if len(_DOUBT.findall(plain)) < doubts:
                 # "I'm not sure, morning! Would you mind passing Bob the crisps?", "… No, Tom.
                 # Ugh, I don't know. Good robot.": the speaker says they are unsure; a rewrite
                 # that takes that off would act on what they doubt (session 24: 12c's fuzz)
                 continue
-            if _stubs(plain, lexicon) > _stubs(text, lexicon):
+            if _stubs(plain, lexicon) > stubs:
                 # "…, the green one's for the communion wine." → "…, the green one's.": the
                 # rewrite took off what the clause said of the object, and what is left would
                 # read as 'the green one too' (session 24): not read
