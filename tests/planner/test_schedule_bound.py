@@ -381,24 +381,19 @@ def test_a_roof_first_asks_the_levels_just_below_it(
     roof: int, below: bool, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     # grid 4 seed 1, whose cheaper model's optimum is 33 units, from level 25. A roof (a plan's
-    # makespan) at 33: the first round asks 32 alone, whose "no" proves it, and no other level
-    # is asked (the bound is the roof, with no schedule), and A*'s process is never paused (a
-    # round of one question). At 36 and 42: 35 then 34, 41 then 40 have schedules, each asked
-    # alone, and the climb goes on from 25 to the same bound and schedule as without a roof
-    # (docs/planner.md, "The step model's roof")
+    # makespan) at 33: the first round asks 31 and 32, whose "no" proves it, and no level below
+    # them is asked (the bound is the roof, with no schedule). At 36 and 42: 34 and 35, 40 and
+    # 41 have schedules, and the climb goes on from 25 to the same bound and schedule as
+    # without a roof (docs/planner.md, "The step model's roof")
     if schedule.WORKERS < 2:
         pytest.skip("needs two cores (two levels asked at once)")
     _, problem, s, node, tgts = _at_start("grid", 4, 1)
     unit = schedule.time_unit(problem)
     graph = s.heuristic.graph
 
-    busy: list[int] = []
-
     def climb(upper: int | None, descend: bool) -> tuple[schedule.ScheduleBound, list[int]]:
         monkeypatch.undo()
         levels = step_levels(monkeypatch)
-        busy.clear()
-        monkeypatch.setattr(schedule, "note_busy", busy.append)
         deadline = time.perf_counter() + DEADLINE_S
         res = schedule._shave(
             problem,
@@ -419,16 +414,14 @@ def test_a_roof_first_asks_the_levels_just_below_it(
     plain, plain_levels = climb(None, False)
     assert plain.ticks == 33 * unit and plain.steps is not None
     res, levels = climb(roof, True)
+    assert {roof - 2, roof - 1} <= set(levels)
     assert res.ticks == 33 * unit
     if below:
-        assert levels[:2] == [roof - 1, roof - 2]  # (one at a time, from the top)
-        assert busy[:4] == [1, 0, 1, 0]
         assert res.steps == plain.steps  # (one worker, a fixed seed at a fixed level)
         assert 25 in levels
     else:
         assert res.steps is None and res.solved
-        assert levels == [32]
-        assert busy == [1, 0]  # (A*'s process keeps its core)
+        assert set(levels) == {31, 32}
         assert 25 in plain_levels  # (without a roof the climb starts at the floor)
 
 

@@ -371,20 +371,15 @@ def _shave(
     its schedule (one CP-SAT worker with a fixed seed at a fixed level) and the levels asked
     are the same whichever question ends first.
 
-    With ``descend`` (and ``upper``) the first rounds ask the ``workers`` levels just below
-    ``upper`` instead (``schedule_bound``'s ``roof``), one at a time from the top: the level
-    just below ``upper`` alone (its "no" proves ``upper`` and implies every other answer, and a
-    core is left to a paused A*), the next one only where it found a schedule; the climb then
-    goes on from ``level`` below whatever they leave open. The levels asked and the answers
-    taken are those of asking them in one round."""
+    With ``descend`` (and ``upper``) the first round asks the ``workers`` levels just below
+    ``upper`` instead (``schedule_bound``'s ``roof``); the climb then goes on from ``level``
+    below whatever they leave open."""
     unit = time_unit(problem)
     top = None if upper is None else -(-upper // unit)  # the least level ``upper`` reaches
     proved = level - 1  # no schedule ends by this level (nor, then, by any below it)
     skip = 1 if steps and not whole_first else 0  # 0: one level at a time
     workers = WORKERS if workers is None else workers
     lowest: tuple[int, ScheduleBound] | None = None  # the lowest level with a schedule found
-    # levels just below ``upper`` still to be asked alone, from the top (``descend``)
-    below = workers if descend and upper is not None else 0
 
     def ask(at: int, stop: Stop) -> tuple[tuple[tuple[Instance, ...], ...] | bool | None, float]:
         """One level's answer (a schedule, True: one exists, False, None: unknown) and the
@@ -425,15 +420,9 @@ def _shave(
             if top is not None and proved + 1 >= top:
                 return ScheduleBound(max(floor, upper or 0), True, len(tgts))
             apart = 1  # how far apart the levels of a round are
-            size = workers  # how many levels the round asks
-            if below and top is not None:  # (the first rounds: the levels below ``upper``)
-                first = (top if lowest is None else lowest[0]) - 1
-                below, size = below - 1, 1
-                if first <= proved:  # (nothing left below: the climb, as without them)
-                    first, below, size = proved + 1, 0, workers
-                elif lowest is not None and lowest[1].steps is not None and whole is not None:
-                    # the level below a schedule is asked: as in one round (``_Whole``)
-                    whole.ahead(lowest[0], lowest[1].steps)
+            if descend and top is not None:  # (the first round: the levels below ``upper``)
+                first = max(proved + 1, top - workers)
+                descend = False
             elif lowest is not None:  # levels were skipped below it: ask them from the lowest
                 first = proved + 1
             else:
@@ -443,7 +432,7 @@ def _shave(
                     first, apart = max(proved + 1, top - 1), 1
             levels = [
                 at
-                for at in range(first, first + size * apart, apart)
+                for at in range(first, first + workers * apart, apart)
                 if (top is None or at < top) and (lowest is None or at < lowest[0])
             ]
             # (phase._Apart pauses A* through a round that asks a level on every core)
