@@ -348,7 +348,8 @@ class _Search:
                 child, perm = self.canonical(child)
                 if perm is not None:
                     moved = _relabel(moved, perm)
-                    back = _relabel_places(back, perm, self._n_locs)
+                    if back:
+                        back = _relabel_places(back, perm, self._n_locs)
                 yield chosen, cost, child, (used, moved, cost, back), perm
             else:
                 yield chosen, cost, child, (used, moved, cost, back), None
