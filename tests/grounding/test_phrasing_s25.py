@@ -173,6 +173,44 @@ def test_a_person_getting_it_themself_is_no_delivery(text: str, scene: Scene) ->
     assert_refused(text, scene)
 
 
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "{req}, no, leave it, {q} can get it.",
+            "{req}, no, leave it.",
+            "{req}. Actually, no, forget it.",
+            "{req}, wait, never mind, {q} will sort it.",
+            "{req}, sorry, leave that, thanks.",
+        ]
+    ),
+)
+def test_a_request_taken_back_is_refused(scene: Scene, k: int, frame: str) -> None:
+    # 12c's take-back fuzz (session 25): "give Alice the cup please, no, leave it, Alice can get
+    # it" read cup>A
+    req, _ = plain_request(scene, k)
+    (_, _), (q, _) = _two_people(scene)
+    assert_refused(frame.format(req=req[0].upper() + req[1:], q=q), scene, match="takes back")
+
+
+def test_a_request_taken_back_and_replaced() -> None:
+    # one request taken back and a new one said: the new one is read
+    assert_reads(
+        "Put the cup on the table. Actually no, leave it, put the apple there instead.",
+        "apple@table",
+    )
+    assert_reads("Give Bob the cup, no, leave it, give Carol the apple instead.", "apple>C")
+    # two requests before it: which one is taken back is unclear
+    assert_refused(
+        "Bob wants the cup, hand it to him, no, leave it, give Alice the apple instead",
+        match="takes back",
+    )
+    # 'leave it on …' is a place, not a take-back
+    assert_reads("Give Bob the cup, no, leave it on the shelf.", "cup@shelf")
+
+
 def test_a_person_said_with_emphasis_still_reads() -> None:
     assert_reads(
         "Small spanner for the apprentice, big spanner for the foreman himself",

@@ -157,6 +157,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        _taken_back(text)
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(
@@ -259,6 +260,47 @@ def _stubs(text: str, lexicon: Lexicon) -> int:
 
 
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
+
+# a correction cue, then 'leave it' / 'forget it' / 'never mind': the request before is taken back
+_TAKEN_BACK = re.compile(
+    r"\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
+    r"(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|forget (?:it|that)|"
+    r"never mind(?: (?:it|that))?)\s*(?=[,.;!?]|$)",
+    re.I,
+)
+# what a new request said after it opens with: a verb of the grammar's tasks
+_NEW_REQUEST = re.compile(
+    r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
+    r"will you)[\s,]+)*(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|"
+    r"drop|deliver)\b|\binstead\b",
+    re.I,
+)
+# a request said before it (a verb of the grammar's tasks or of wanting)
+_REQUESTED = re.compile(
+    r"\b(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver|"
+    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have)\b",
+    re.I,
+)
+
+
+def _taken_back(text: str) -> None:
+    """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
+    cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
+    25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
+    verb, or 'instead') and what it replaces is one request ('Put the notebook on the desk.
+    Actually no, leave it, put the stapler there instead.' is read by the correction rules);
+    with two requests before it ('Bob wants the cup, hand it to him, no, leave it, …') which
+    one is taken back is unclear."""
+    m = _TAKEN_BACK.search(text)
+    if m is None:
+        return
+    rest = text[m.end() :].strip(" ,.;!?")
+    if rest and _NEW_REQUEST.search(rest) and len(_REQUESTED.findall(text[: m.start()])) <= 1:
+        return
+    raise GroundingError(
+        f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
+        "nothing"
+    )
 
 
 def _cut_off(text: str) -> GroundingError | None:
