@@ -262,12 +262,17 @@ def _stubs(text: str, lexicon: Lexicon) -> int:
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
 
 # a correction cue, then 'leave it' / 'forget it' / 'never mind': the request before is taken back
+# (or opening a sentence: 'Forget that, …', 'Never mind, …', 'Cancel that.')
 _TAKEN_BACK = re.compile(
-    r"\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
+    r"(?:\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
     r"(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|forget (?:it|that)|"
-    r"never mind(?: (?:it|that))?)\s*(?=[,.;!?]|$)",
+    r"never mind(?: (?:it|that))?)|(?<=[.!?] )(?:forget (?:it|that)|never mind(?: (?:it|that))?|"
+    r"cancel that))\s*(?=[,.;!?]|$)",
     re.I,
 )
+# a clause whose subject is a pronoun ("she's got a meeting in five", "he wants it with the
+# hake"): a remark, or a request said of someone named before; either way not one to replace
+_REMARK = re.compile(r"^(?:she|he|they|it|i|we)\b", re.I)
 # what a new request said after it opens with: a verb of the grammar's tasks
 _NEW_REQUEST = re.compile(
     r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
@@ -278,7 +283,7 @@ _NEW_REQUEST = re.compile(
 # a request said before it (a verb of the grammar's tasks or of wanting)
 _REQUESTED = re.compile(
     r"\b(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver|"
-    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have)\b",
+    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have|due)\b",
     re.I,
 )
 
@@ -295,7 +300,14 @@ def _taken_back(text: str) -> None:
     if m is None:
         return
     rest = text[m.end() :].strip(" ,.;!?")
-    if rest and _NEW_REQUEST.search(rest) and len(_REQUESTED.findall(text[: m.start()])) <= 1:
+    before = text[: m.start()]
+    last = next((p.strip() for p in reversed(re.split(r"[,.;!?]", before)) if p.strip()), "")
+    if (
+        rest
+        and _NEW_REQUEST.search(rest)
+        and len(_REQUESTED.findall(before)) <= 1
+        and not _REMARK.match(last)
+    ):
         return
     raise GroundingError(
         f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
