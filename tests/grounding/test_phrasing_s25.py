@@ -215,6 +215,8 @@ def test_a_request_taken_back_and_replaced() -> None:
         "Alice needs the chips. Give them to her quickly. Forget that, sorry. Could you give "
         "Alice the cup?",
         "Give Bob the apple, he wants it for lunch. Cancel that. Just hand Carol the cup.",
+        "Robot, give Alice the apple. Now. Forget that, sorry. Could you give Alice the cup?",
+        "Bottle on the shelf. That's all. Thank you, no, leave it, give Alice the cup instead",
     ):
         assert_refused(text, match="takes back")
     # a sentence that takes back one request, then a new one: the new one is read

@@ -270,9 +270,7 @@ _TAKEN_BACK = re.compile(
     r"cancel that))\s*(?=[,.;!?]|$)",
     re.I,
 )
-# a clause whose subject is a pronoun ("she's got a meeting in five", "he wants it with the
-# hake"): a remark, or a request said of someone named before; either way not one to replace
-_REMARK = re.compile(r"^(?:she|he|they|it|i|we)\b", re.I)
+
 # what a new request said after it opens with: a verb of the grammar's tasks
 _NEW_REQUEST = re.compile(
     r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
@@ -292,21 +290,20 @@ def _taken_back(text: str) -> None:
     """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
     cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
     25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
-    verb, or 'instead') and what it replaces is one request ('Put the notebook on the desk.
-    Actually no, leave it, put the stapler there instead.' is read by the correction rules);
-    with two requests before it ('Bob wants the cup, hand it to him, no, leave it, …') which
-    one is taken back is unclear."""
+    verb, or 'instead') and what it replaces is one request said in one stretch ('Put the
+    notebook on the desk. Actually no, leave it, put the stapler there instead.' is read by the
+    correction rules); with more before it ('Bob wants the cup, hand it to him, no, leave it, …',
+    'Give Alice the apple. Now. Forget that, …') which is taken back is unclear."""
     m = _TAKEN_BACK.search(text)
     if m is None:
         return
     rest = text[m.end() :].strip(" ,.;!?")
-    before = text[: m.start()]
-    last = next((p.strip() for p in reversed(re.split(r"[,.;!?]", before)) if p.strip()), "")
+    before = text[: m.start()].strip(" ,.;!?")
     if (
         rest
         and _NEW_REQUEST.search(rest)
         and len(_REQUESTED.findall(before)) <= 1
-        and not _REMARK.match(last)
+        and not re.search(r"[,.;!?]", before)
     ):
         return
     raise GroundingError(
