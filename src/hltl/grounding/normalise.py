@@ -6190,9 +6190,14 @@ _LY_HELD19 = frozenset(
         *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
     }
 )
-_PARTICLES19 = frozenset(
-    {"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"}
-    # session 24: Thai and Filipino polite particles ("bring cup to Person B, krap")
+# Sentence and polite particles, one list for both places they are said (session 25: sessions
+# 19 and 24 had one list each): glued to the word before ("… to Person B please krap", "Give
+# Bob the cup lah": _fillers19) or as a stretch of their own between punctuation marks ("…,
+# lah.", "Sawasdee krap.": _courtesy24). Malaysian and Singaporean English lah, la, leh, lor,
+# meh, hor, ah; London innit; Afrikaans ja; Nigerian o, sha; Thai krap, khrap, krub, khrub, kha;
+# Tagalog po, opo.
+_PARTICLES = frozenset(
+    {"lah", "la", "leh", "lor", "meh", "hor", "ah", "innit", "ja", "o", "sha"}
     | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
 )
 _NOW19 = re.compile(
@@ -6306,7 +6311,7 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
         low = core.lower()
         prev = words[k - 1].lower().strip(",;:") if k else ""
         last = k + 1 == len(words) or w[-1:] in ",;:.!?"
-        glued = low in _PARTICLES19 and k > 0 and prev[-1:] not in (",", ";", ":")
+        glued = low in _PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
         loose = (
             _unknown_word(core, lexicon)
             and 0 < k < len(words) - 1
@@ -6872,118 +6877,7 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
 
 # -- session 22: blind20's kinds -----------------------------------------------------------------
 
-# a clause of the speaker about themself: 'I've come straight from the hives', "I'm the farmer",
-# 'my boots are filthy', 'I won't come in'
-_SPEAKER_CLAUSE22 = re.compile(
-    r"^(?:(?:and|so|but|oh|well|look)\s+)?(?:i(?:'m|'ve|'ll|'d| am| have| was| will| won't| can't| "
-    r"don't| just| only)|my (?:[a-z]+ ){0,2}?(?:is|are|was|were|has|have|keeps?)\b|my [a-z]+'s)\b",
-    _F,
-)
-# what the speaker says of why they are here: 'only in to water the spider plants'
-_HERE_FOR22 = re.compile(
-    r"^(?:(?:i'm|i am) )?(?:only|just) (?:in|here|popping in|passing|dropping by)\b", _F
-)
-# a warning about the speaker's own things: 'mind the smoke on my jacket'
-_MIND_MINE22 = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
-# words a remark of the speaker's must not hold: what could ask for something, point back, count,
-# choose, order or correct
-_SPEAKER_HELD22 = re.compile(
-    r"\b(?:no|nothing|none|never|too|also|as well|instead|rather|first|then|next|before|after|"
-    r"once|when|until|unless|if|or|one|ones|both|each|either|any|all|every|another|other|else|"
-    r"rest|same|which|whichever|give|hand|pass|bring|take|put|place|get|want|wants|need|needs|"
-    r"like|love|fancy|prefer|keep|leave|send|move|fetch|grab|drop|it|them|those|these|that|this|"
-    r"him|her|his|she|he|they|wrong|mean|meant|sorry|actually|mistake|change|swap|cancel|wait|"
-    r"hang|hold|mine|yours|hers|for me|for us|to me|to us|me)\b|\d",
-    _F,
-)
-
-
-def _speaker_piece22(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
-    """Whether ``piece`` (a stretch between commas) is the speaker talking about themself (or
-    about why they are here, after such a stretch: ``spoke``), asking nothing."""
-    piece = piece.strip(" .!")
-    if _rx(rf"(?:so )?sorry {_BOTHERING}").fullmatch(piece):
-        return True  # "sorry to rush you": an apology for interrupting
-    if not piece or _SPEAKER_HELD22.search(piece) or not _names_nothing(piece, lexicon):
-        return False
-    return bool(
-        _SPEAKER_CLAUSE22.match(piece)
-        or _MIND_MINE22.match(piece)
-        or (spoke and _HERE_FOR22.match(piece))
-        or _inert_sentence(piece, lexicon)
-    )
-
-
-def _speaker_remarks22(text: str, lexicon: Lexicon) -> str:
-    """Session 22: a sentence before the request in which the speaker only talks about themself
-    ("I'm the farmer, my boots are filthy so I won't come in.", "Afternoon, mind the smoke on my
-    jacket, I've come straight from the hives.", "I'm the gardener, only in to water the spider
-    plants."): each stretch of it between commas (and 'so') a clause of 'I' or 'my X' about
-    the speaker, a greeting, or why they are here; naming nothing in the scene, and holding no
-    word that could ask for something, point back, count, choose, order or correct (not even
-    'me'): taken off, when a later sentence names something."""
-    parts = re.split(r"(?<=[.!])\s+", text.strip())
-    if len(parts) < 2 or not _rx(r"\b(?:i|i'[a-z]+|my)\b").search(" ".join(parts[:-1])):
-        return text
-    keep: list[str] = []
-    for n, part in enumerate(parts):
-        pieces = re.split(r"\s*,\s*|\s+so\s+", part.strip(" .!"))
-        spoke = False
-        inert = n < len(parts) - 1 and part.endswith((".", "!"))
-        if n == 0 and len(pieces) > 1 and _rx(r"(?:so )?sorry").fullmatch(pieces[0]):
-            pieces = pieces[1:]  # "Sorry, I'm the farmer, …": an apology for interrupting
-        for piece in pieces if inert else ():
-            if not _speaker_piece22(piece, spoke, lexicon):
-                inert = False
-                break
-            spoke = spoke or bool(_SPEAKER_CLAUSE22.match(piece.strip()))
-        if not (inert and spoke):
-            keep.append(part)
-    if len(keep) == len(parts) or not _names(" ".join(keep), lexicon):
-        return text
-    return " ".join(keep)
-
-
 # -- session 24: blind22's kinds -----------------------------------------------------------------
-
-# a stretch in which the speaker talks about themself: it opens (after a joining word) with 'I'
-# or 'my <thing>' as its subject ("I'm the vicar", "while I sort the rota", "then i'll start the
-# prayer", "and my head's still full of runways", "it's my day off")
-_SPEAKER_OPEN24 = re.compile(
-    r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now)\s+)*"
-    r"(?:i(?:'m|'ve|'ll|'d)?|my [a-z]+(?:'s| is| are| was| were| has| have| keeps?)|"
-    r"it's (?:my|only me|just me)|that's me)\b",
-    _F,
-)
-# what may follow such a stretch in the same sentence, still about the speaker ("I'm the
-# optician from the high street, just dropping the new frames round", "…, here to bless the new
-# wing")
-_SPEAKER_MORE24 = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
-# words a stretch of the speaker's must not hold to be taken off: what asks for something (a verb
-# of the grammar's tasks or of wanting), the speaker as a recipient, what chooses, orders,
-# corrects, doubts or puts off, and what takes something ('have it', 'keep')
-_SPEAKER_HELD24 = re.compile(
-    r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
-    r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
-    r"fancy|prefer|"
-    r"have (?:it|them|that|this|those|these|one|both|all)|for me|to me|me the|me that|me it|"
-    r"which|whichever|who|whoever|whom|whose|either|or|neither|nor|instead|rather|actually|"
-    r"first|next|last|before|after|once|when|until|till|unless|if|later|tomorrow|wrong|mean|"
-    r"meant|mistake|change|changed|swap|cancel|scratch|forget|forgot|remember|know|sure|"
-    r"track|ignore|wait|hang|hold|other|others|another|else|same|rest|each|every|too|also|"
-    r"as well|only one)\b|\d",
-    _F,
-)
-
-
-# what may open the sentence of such a stretch, taken off with it ("Oh, sorry, I've got clay up
-# to my elbows from the wheel.")
-_INTERJECTION24 = re.compile(
-    r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
-    r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there)",
-    _F,
-)
-
 
 # Greetings, thanks, blessings and polite particles of other languages that speakers of English
 # as a second language (or of a faith) open and close requests with. The list is by KIND, one
@@ -7004,8 +6898,8 @@ _COURTESY24 = (
     r"arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
-    # polite particles said alone
-    r"krap|khrap|krub|khrub|kha|po|opo|lah|ah"
+    # polite and sentence particles said alone (_PARTICLES)
+    + "|".join(sorted(_PARTICLES, key=lambda w: (-len(w), w)))
 )
 _COURTESY_WORD24 = re.compile(rf"\b(?:{_COURTESY24})\b", _F)
 _COURTESY_STRETCH24 = re.compile(
@@ -7039,32 +6933,91 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     return said if _names(said, lexicon) else text
 
 
-# a correction cue: a remark of the speaker's before one is not taken off
-_CUE_AFTER24 = re.compile(
+# -- the speaker's remarks: one rule (session 22's and session 24's, merged in session 25) ---------
+#
+# The speaker talking about themself asks nothing, wherever it is said ("I'm the farmer, my boots
+# are filthy so I won't come in.", "Then I'm off to warm up my voice.", "…, I keep losing it",
+# "Would you mind taking the blue mug over to Carol while I sort the rota?", "I'm the vicar, here to
+# bless the new wing."). A stretch is the text between punctuation marks, or from a joining word
+# before 'I' / 'my' to the next mark. It is a remark, taken off, when
+# - its subject is the speaker ('I', 'I'm', 'my back's', 'my new boots are', "it's my day off",
+#   "that's me"), after joining words ('and', 'so', 'then', 'while', 'because', 'look', …); or,
+#   right after such a stretch in its sentence, it says what the speaker is doing or why they are
+#   here ('just dropping the new frames round', 'only in to water the spider plants', 'here to
+#   bless the new wing'), warns of the speaker's own things ('mind the smoke on my jacket') or is
+#   a sentence that asks nothing by itself (_inert_sentence);
+# - it names nothing in the scene (nor by a typo);
+# - it holds no word that asks for something (a verb of the grammar's tasks or of wanting, 'for
+#   me', 'to me', 'have it'), chooses, orders, corrects, doubts or puts off (_SPEAKER_HELD).
+#   Pronouns are allowed ("I keep losing it", "I misheard her", "I could see him shaking"): with
+#   no verb of giving or wanting, a clause of the speaker's cannot ask for what the pronoun names;
+# - no correction cue follows it, unless nothing has been named before it: taken off between what
+#   the speaker corrects and the correction, it would join the two ("… to Zoe, sorry, Noah, I
+#   always mix the two of them up, correction, the globe");
+# and what is left names something. What opens its sentence goes with it when that asks nothing
+# either: interjections, greetings and apologies ('Oh, sorry, …', 'Sorry to bother you, …',
+# 'Afternoon, …'), a warning about the speaker's own things. 'I' or 'me' as a recipient stays, and
+# is refused ("give me the cup", "I need the cup", "I'd like it", "then I'll have it").
+_SPEAKER_OPEN = re.compile(
+    r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now|look)\s+)*"
+    r"(?:i(?:'m|'ve|'ll|'d)?|my (?:[a-z]+ ){1,2}(?:is|are|was|were|has|have|keeps?)|"
+    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me)\b",
+    _F,
+)
+# what may follow such a stretch in its sentence, still about the speaker
+_SPEAKER_MORE = re.compile(
+    r"^(?:just|only|still|here (?:to|for)|back|off)\b|^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F
+)
+_SPEAKER_HELD = re.compile(
+    r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
+    r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
+    r"fancy|prefer|"
+    r"have (?:it|them|that|this|those|these|one|both|all)|for me|to me|me the|me that|me it|"
+    r"which|whichever|who|whoever|whom|whose|either|or|neither|nor|instead|rather|actually|"
+    r"first|next|last|before|after|once|when|until|till|unless|if|later|tomorrow|wrong|mean|"
+    r"meant|mistake|change|changed|swap|cancel|scratch|forget|forgot|remember|know|sure|"
+    r"track|ignore|wait|hang|hold|other|others|another|else|same|rest|each|every|too|also|"
+    r"as well|only one)\b|\d",
+    _F,
+)
+# what may open the sentence of such a stretch, taken off with it
+_SPEAKER_OPENER = re.compile(
+    r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
+    r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there|"
+    rf"(?:so )?sorry {_BOTHERING}|mind (?:the|my) [a-z ]+\bmy [a-z]+)",
+    _F,
+)
+_SPEAKER_CUE = re.compile(
     r"\b(?:no(?! (?:trouble|bother|rush|hurry|problem|worries|fuss))|nope|sorry|correction|"
     r"actually|wait|hang on|hold on|i mean|rather|scratch|oops|whoops|make that|instead|not)\b",
     _F,
 )
 
 
-def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
+def _speaker_stretch(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
     """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
     ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _SPEAKER_HELD24.search(piece) or not _names_nothing(piece, lexicon):
+    if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
         return False
-    return bool(_SPEAKER_OPEN24.match(piece) or (spoke and _SPEAKER_MORE24.match(piece)))
+    return bool(
+        _SPEAKER_OPEN.match(piece)
+        or (spoke and (_SPEAKER_MORE.match(piece) or _inert_sentence(piece, lexicon)))
+    )
 
 
-def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
-    """Session 24: the speaker talking about themself anywhere in the instruction ("Then I'm off
-    to warm up my voice.", "…, I keep losing it", "Would you mind taking the blue mug over to
-    Carol while I sort the rota?", "I'm the vicar, here to bless the new wing."): a stretch
-    between punctuation marks, or from a joining word before 'I' / 'my' to the next mark, whose
-    subject is the speaker, that names nothing in the scene and holds no word that asks for
-    something (a task verb, a verb of wanting, 'for me'), chooses, orders, corrects, doubts or
-    puts off, is a remark: taken off, when what is left names something. 'I' or 'me' that is a
-    recipient ("give me the cup", "I need the cup", "I'd like it") stays, and is refused."""
+def _opener(piece: str, lexicon: Lexicon) -> bool:
+    """Whether ``piece`` opening a remark's sentence asks nothing (an interjection, a greeting, an
+    apology, a warning about the speaker's things, a sentence inert by itself)."""
+    piece = piece.strip()
+    if _SPEAKER_OPENER.fullmatch(piece):
+        return _names_nothing(piece, lexicon)
+    return _inert_sentence(piece, lexicon) and not _SPEAKER_HELD.search(piece)
+
+
+def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
+    """The speaker talking about themself, anywhere in the instruction, taken off (the rule
+    above), when what is left names something."""
     if not _rx(r"\b(?:i|i'm|i've|i'll|i'd|my|me)\b").search(text):
         return text
     pieces = re.split(r"(\s*[,;.!?]+\s*)", text)
@@ -7082,22 +7035,22 @@ def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
             r"(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
-        remark = _speaker_stretch24(tail, spoke, lexicon)
-        if remark and _speaker_stretch24(head, False, lexicon):
+        remark = _speaker_stretch(tail, spoke, lexicon)
+        if remark and _speaker_stretch(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
         if (
             remark
             and (not head or _names(head, lexicon))
-            and not _CUE_AFTER24.search("".join(pieces[n + 1 :]))
+            and (
+                not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
+                or not _names("".join(out) + head, lexicon)
+            )
         ):
-            # (not before a correction: taken off, the remark would join what the speaker
-            # corrected to what they correct next: "… to Zoe, sorry, Noah, I always mix the two
-            # of them up, correction, the globe")
             dropped, spoke = True, True
             if head:
                 out.append(head)
                 out.append(mark)
-            elif all(_INTERJECTION24.fullmatch(x.strip()) for x in out[opened::2]):
+            elif all(_opener(x, lexicon) for x in out[opened::2]):
                 del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
             elif out and mark.strip() in (".", "!", "?") and out[-1].strip() == ",":
                 out[-1] = mark  # "…, I misheard her." → "…."
@@ -7843,8 +7796,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _attention21,
     _speaker21,
     _reasons21,
-    _speaker_remarks22,
-    _speaker_remarks24,
+    _speaker_remarks,
     _asides22,
     _one_person22,
     _negation22,
