@@ -3450,46 +3450,6 @@ def _call(chunk: str, lexicon: Lexicon) -> bool:
     )
 
 
-def _remarks15(text: str, lexicon: Lexicon) -> str:
-    """Every clause of ``text`` that _remark_clause finds inert taken off, with the 'but' / 'so'
-    that joins it to the request ("Sorry sorry, I know it's hectic, but could …"), and an
-    apology that then stands alone ("Hot behind! Sorry, force of habit."); the text as it is when
-    nothing else would be left."""
-    parts = re.split(r"(\s*(?:[,;:!?—–]|\.(?=\s|$)|\.\.\.|\s-\s)\s*)", text.strip())
-    chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) < 2:
-        return text
-    drop = [_remark_clause(c, lexicon) for c in chunks]
-    # "Behind!", "Mind your backs!": a call of a few words opening the text, naming nothing
-    if seps[0].strip() == "!" and _call(chunks[0], lexicon):
-        drop[0] = True
-    # "Sorry, force of habit.": the apology for a remark goes with it
-    for k, c in enumerate(chunks):
-        near = (k and drop[k - 1]) or (k + 1 < len(chunks) and drop[k + 1])
-        if near and _rx(r"(?:oh |so )?sorry(?: sorry)?").fullmatch(c.strip()):
-            drop[k] = True
-    if not any(drop) or all(drop):
-        return text
-    out: list[str] = []
-    for k, c in enumerate(chunks):
-        if drop[k]:
-            if out and k + 1 < len(chunks) and not drop[k + 1]:
-                # the stop after a remark ends a sentence the request may follow
-                sep = seps[k] if k < len(seps) else ""
-                if sep.strip() in (".", "!", "?", "...") and out[-1].strip() in (",", ";", ":"):
-                    out[-1] = ". "
-            continue
-        if k and drop[k - 1]:
-            c = _rx(r"^(?:but|so|and)\b,?\s*").sub("", c)
-        out.append(c)
-        if k < len(seps):
-            out.append(seps[k])
-    said = "".join(out).strip(" ,;:—–-")
-    if not _names(said, lexicon):
-        return text
-    return said
-
-
 # -- the speaker, not a recipient: leaving, finishing, signing off ---------------------------------
 #
 # Said of the speaker, none of these asks anything for them: 'before I go' is now, 'from me' and
@@ -6994,6 +6954,19 @@ _SPEAKER_CUE = re.compile(
 )
 
 
+# a remark needs one of these words (its subject, or a call's '!')
+_REMARK_OPEN = re.compile(
+    r"\b(?:i|i'm|i've|i'll|i'd|im|ive|my|me|we|we're|we've|you|you're|you've|your|hope|hoping|"
+    r"have a|force of|old|chef|kitchen|workshop)\b|!",
+    _F,
+)
+# where a stretch ends: a punctuation mark (a full stop before a space or the end), a dash
+_REMARK_MARKS = re.compile(
+    r"(\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$))(?:\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$)))*\s*|\s+-\s+)"
+)
+_JOINS = (",", ";", ":", "—", "–", "-")
+
+
 def _speaker_stretch(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
     """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
     ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
@@ -7016,14 +6989,17 @@ def _opener(piece: str, lexicon: Lexicon) -> bool:
 
 
 def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
-    """The speaker talking about themself, anywhere in the instruction, taken off (the rule
-    above), when what is left names something."""
-    if not _rx(r"\b(?:i|i'm|i've|i'll|i'd|my|me)\b").search(text):
+    """The speaker's remarks (the rule above) and the session-15 clauses about the speaker, the
+    hearer or the moment (_remark_clause), anywhere in the instruction, taken off when what is
+    left names something; with a call of a few words opening the text ("Behind!"), an apology
+    next to a remark, and the 'but' / 'so' / 'and' that joins a remark to the request."""
+    if not _REMARK_OPEN.search(text):
         return text
-    pieces = re.split(r"(\s*[,;.!?]+\s*)", text)
+    pieces = _REMARK_MARKS.split(text)
     out: list[str] = []
     dropped = False
-    spoke = False
+    spoke = False  # the last piece read was a remark, in the same sentence
+    after = False  # the last piece read was taken off
     opened = 0  # where the sentence being read starts in ``out``
     for n in range(0, len(pieces), 2):
         piece = pieces[n]
@@ -7038,6 +7014,14 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
         remark = _speaker_stretch(tail, spoke, lexicon)
         if remark and _speaker_stretch(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
+        if not remark and (
+            _remark_clause(piece, lexicon)
+            # "Behind!", "Mind your backs!": a call opening the text
+            or (n == 0 and mark.strip() == "!" and _call(piece, lexicon))
+            # "Sorry, force of habit.": the apology for a remark goes with it
+            or (after and _rx(r"(?:oh |so )?sorry(?: sorry)?").fullmatch(piece.strip()))
+        ):
+            remark, head = True, ""
         if (
             remark
             and (not head or _names(head, lexicon))
@@ -7046,27 +7030,30 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
                 or not _names("".join(out) + head, lexicon)
             )
         ):
-            dropped, spoke = True, True
+            dropped, spoke, after = True, True, not head
             if head:
                 out.append(head)
                 out.append(mark)
             elif all(_opener(x, lexicon) for x in out[opened::2]):
                 del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
-            elif out and mark.strip() in (".", "!", "?") and out[-1].strip() == ",":
+            elif out and mark.strip() in (".", "!", "?", "...") and out[-1].strip() in _JOINS:
                 out[-1] = mark  # "…, I misheard her." → "…."
             if any(c in mark for c in ".!?"):
                 opened = len(out)
             continue
+        if after:
+            piece = _rx(r"^(?:but|so|and)\b,?\s*").sub("", piece)  # "…, but could you …"
         spoke = spoke and not any(c in mark for c in ".!?")
+        after = False
         out.append(piece)
         out.append(mark)
         if any(c in mark for c in ".!?"):
             opened = len(out)
     if not dropped:
         return text
-    said = "".join(out).strip(" ,;")
-    said = re.sub(r"^[,;.!?\s]+", "", said)
-    said = re.sub(r"\s*,\s*([.!?])", r"\1", said)
+    said = "".join(out).strip(" ,;:—–-")
+    said = re.sub(r"^[,;:.!?\s]+", "", said)
+    said = re.sub(r"\s*[,;:]\s*([.!?])", r"\1", said)
     return said if _names(said, lexicon) else text
 
 
@@ -7712,7 +7699,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _order_again,
     _redone,
     _said_why,
-    _remarks15,
+    _speaker_remarks,
     _either_of,
     _either_fine,
     _any_again,
