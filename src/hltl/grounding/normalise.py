@@ -6925,9 +6925,9 @@ _SPEAKER_OPEN = re.compile(
     _F,
 )
 # what may follow such a stretch in its sentence, still about the speaker
-_SPEAKER_MORE = re.compile(
-    r"^(?:just|only|still|here (?:to|for)|back|off)\b|^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F
-)
+_SPEAKER_MORE = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
+# a warning about the speaker's own things
+_MIND_MINE = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
 _SPEAKER_HELD = re.compile(
     r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
     r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
@@ -6944,7 +6944,7 @@ _SPEAKER_HELD = re.compile(
 _SPEAKER_OPENER = re.compile(
     r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
     r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there|"
-    rf"(?:so )?sorry {_BOTHERING}|mind (?:the|my) [a-z ]+\bmy [a-z]+)",
+    rf"(?:so )?sorry {_BOTHERING})",
     _F,
 )
 _SPEAKER_CUE = re.compile(
@@ -6967,15 +6967,20 @@ _REMARK_MARKS = re.compile(
 _JOINS = (",", ";", ":", "—", "–", "-")
 
 
-def _speaker_stretch(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
-    """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
-    ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
+def _speaker_stretch(
+    piece: str, spoke: bool, lexicon: Lexicon, *, right_after: bool = False
+) -> bool:
+    """Whether ``piece`` is the speaker talking about themself (or, after such a stretch in its
+    sentence, ``spoke``, what they are doing; right after one, ``right_after``, a warning about
+    their own things or a sentence that asks nothing), naming nothing in the scene and asking
+    nothing."""
     piece = piece.strip(" .!?")
     if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
-        or (spoke and (_SPEAKER_MORE.match(piece) or _inert_sentence(piece, lexicon)))
+        or (spoke and _SPEAKER_MORE.match(piece))
+        or (right_after and (_MIND_MINE.match(piece) or _inert_sentence(piece, lexicon)))
     )
 
 
@@ -6983,8 +6988,8 @@ def _opener(piece: str, lexicon: Lexicon) -> bool:
     """Whether ``piece`` opening a remark's sentence asks nothing (an interjection, a greeting, an
     apology, a warning about the speaker's things, a sentence inert by itself)."""
     piece = piece.strip()
-    if _SPEAKER_OPENER.fullmatch(piece):
-        return _names_nothing(piece, lexicon)
+    if _SPEAKER_OPENER.fullmatch(piece) or _MIND_MINE.match(piece):
+        return _names_nothing(piece, lexicon) and not _SPEAKER_HELD.search(piece)
     return _inert_sentence(piece, lexicon) and not _SPEAKER_HELD.search(piece)
 
 
@@ -7011,7 +7016,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
             r"(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
-        remark = _speaker_stretch(tail, spoke, lexicon)
+        remark = _speaker_stretch(tail, spoke, lexicon, right_after=after and not head)
         if remark and _speaker_stretch(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
         if not remark and (
