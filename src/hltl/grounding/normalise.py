@@ -6835,7 +6835,68 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# -- session 22: blind20's kinds -----------------------------------------------------------------
+# -- session 25 (engineer 12r): blind22's kinds ----------------------------------------------------
+
+# What a person wants or needs to do, said after the request as its reason ("Will you take the
+# drill to Kofi, please, he wants to hang a mirror?", "Both plates onto the counter, Marco wants to
+# plate up the goulash."): a clause closing its sentence whose subject is a person of the scene
+# (or he / she / they) and whose verb is 'wants / needs / has / is going / is about' + 'to' + a
+# verb that is neither one of the grammar's tasks nor of having or using, naming nothing else in
+# the scene and holding no word that points back, counts, chooses, negates or orders. It says what
+# the person will do themself, which asks the robots for nothing: taken off, when the request
+# before it names something. ("…, he wants to keep it", "…, she needs to have the cup", "…, Bob
+# wants to give it back" are not.)
+_DOING25 = re.compile(
+    r"\s*[,;]\s*(?:(?:and|as|because|cos|since)\s+)?((?:he|she|they|[A-Z][a-z]*(?: [A-Z][a-z]*)?)"
+    r"(?:'s| is| are|'re)? (?:wants|want|needs|need|has|have|going|about) to ([a-z]+)\b"
+    r"[^,.;!?]*?)\s*(?=[.!?]|$)",
+)
+_DOING_HELD25 = re.compile(
+    r"\b(?:it|them|that|this|those|these|one|ones|other|another|rest|each|both|all|every|either|"
+    r"or|and|then|first|before|after|until|once|when|if|not|no|never|nothing|instead|too|also|"
+    r"me|us|you|him|her|his|their|my|your|our|mine|yours|same|again|back)\b|n't\b|\d",
+    _F,
+)
+_DOING_VERBS25 = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "get", "have", "keep", "hold"),
+        *("use", "fetch", "grab", "move", "send", "carry", "deliver", "leave", "drop", "pop"),
+        *("set", "receive", "borrow", "eat", "drink", "try", "see", "check", "open", "be", "go"),
+        *("come", "wait", "stop", "cancel", "swap", "change", "choose", "pick", "share", "say"),
+        *("ask",),
+    }
+)
+
+
+def _doing25(text: str, lexicon: Lexicon) -> str:
+    """Session 25: what a person wants or needs to do, said as the request's reason, taken off
+    (above)."""
+    if not _rx(r"\b(?:wants?|needs?|has|have|going|about) to\b").search(text):
+        return text
+    for m in reversed(list(_DOING25.finditer(text))):
+        clause, verb = m.group(1), m.group(2).lower()
+        subject = clause[: clause.lower().index(" to ")].rsplit(" ", 1)[0]
+        subject = re.sub(r"(?:'s|'re| is| are)$", "", subject, flags=_F)
+        who = _names(subject, lexicon)
+        person = subject.lower() in ("he", "she", "they") or (
+            len(who) == 1
+            and all(r.kind == "human" for r in who[0].refs)
+            and who[0].text.lower() == subject.lower()
+        )
+        rest = clause[len(subject) :]
+        before = text[: m.start()]
+        if (
+            not person
+            or verb in _DOING_VERBS25
+            or verb in VERBS
+            or _DOING_HELD25.search(rest)
+            or not _names_nothing(rest, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
+    return text
+
 
 # -- session 24: blind22's kinds -----------------------------------------------------------------
 
@@ -6964,7 +7025,7 @@ _REMARK_OPEN = re.compile(
 _REMARK_MARKS = re.compile(
     r"(\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$))(?:\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$)))*\s*|\s+-\s+)"
 )
-_JOINS = (",", ";", ":", "—", "–", "-")
+_REMARK_JOINS = (",", ";", ":", "—", "–", "-")
 
 
 def _speaker_stretch(
@@ -7041,7 +7102,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
                 out.append(mark)
             elif all(_opener(x, lexicon) for x in out[opened::2]):
                 del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
-            elif out and mark.strip() in (".", "!", "?", "...") and out[-1].strip() in _JOINS:
+            elif out and mark.strip() in (".", "!", "?", "...") and out[-1].strip() in _REMARK_JOINS:
                 out[-1] = mark  # "…, I misheard her." → "…."
             if any(c in mark for c in ".!?"):
                 opened = len(out)
@@ -7788,6 +7849,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _attention21,
     _speaker21,
     _reasons21,
+    _doing25,
     _speaker_remarks,
     _asides22,
     _one_person22,
