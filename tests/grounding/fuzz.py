@@ -4,7 +4,11 @@ Every entry of every part is said again inside words that change nothing (opener
 together), which must read as the entry does (or be refused); with remarks that name, hedge or ask
 for the speaker, or closers that delay or add, which must be refused; and, for an entry of one
 handover, corrected to another object (which must read as that object to that person, or be
-refused) or with a correction cut off or left open (refused).
+refused) or with a correction cut off or left open (refused). A second family (session 25),
+take-backs: the request taken back after it ("…, no, leave it", "… Actually, never mind."; refused),
+taken back and replaced by another handover ("… Actually, never mind that. The <object> to
+<person> instead."; that handover, or refused), and an object of an earlier request let go before
+it ("Never mind the <object>, …"; as the entry, or refused).
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -20,13 +24,13 @@ from collections import Counter
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Literal, cast
 
 from hltl.bench.grounding import CORPUS_DIR, PARTS, Entry, load_corpus, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.offline import parse_instruction, spec_of
-from hltl.grounding.tree import Node, Task, tasks
+from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene
 
@@ -92,6 +96,35 @@ CORRECTIONS = (
 )
 CUT_OFF = (", scratch that", ", or was it {p}...", ", no wait", ", correction,")
 
+# take-backs (session 25; blind23's "no, leave it, Ava can get it herself", "Green book, leave it
+# on the shelf"): the whole request taken back, refused ("." forms also after a question)
+TAKEN_BACK = (
+    ", no, leave it",
+    ". Actually, never mind.",
+    ". On second thoughts, forget it.",
+    ", no, leave it, {p} can get it",
+    ". Sorry, cancel that.",
+    ". Oh, don't bother.",
+    ", actually, forget the whole thing",
+    ". No, wait, leave it, it's fine where it is.",
+)
+# taken back and replaced by another handover (after an entry of one task): that handover
+REPLACED = (
+    ". Actually, never mind that. The {o} to {p} instead.",
+    ", no, leave it, give {p} the {o} instead",
+    ". Forget that, sorry. Could you give {p} the {o}?",
+    ". Cancel that. Just hand {p} the {o}.",
+)
+# an object of an earlier request let go before the entry (one the entry does not name): the entry
+LET_GO = (
+    "Never mind the {o}, ",
+    "Forget the {o}. ",
+    "Don't worry about the {o}. ",
+    "Oh, never mind the {o}. ",
+)
+Family = Literal["wrappers", "takebacks"]
+FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks")
+
 Must = Literal["same", "refuse"]
 
 
@@ -102,6 +135,7 @@ class Variant:
     text: str
     want: Node | None  # what it must read as (None: refused); a refusal is always allowed
     must: Must
+    family: Family = "wrappers"
 
 
 def _name(scene: Scene, oid: str) -> str:
@@ -180,6 +214,65 @@ def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Itera
         yield Variant(part, entry.scene, bare + cut.format(p=p), None, "refuse")
 
 
+def _capitalised(scene: Scene) -> set[str]:
+    """Words that keep their capital after an opener: people's names and titles."""
+    words = {"Mr", "Mrs", "Ms", "Miss", "Dr", "Person", "Robot"}
+    for h in scene.humans:
+        for name in (h.name, *h.aliases):
+            words.update(w for w in name.split() if w[:1].isupper())
+    return words
+
+
+def _has_choice(node: Node) -> bool:
+    return isinstance(node, Group) and (
+        node.op == "or" or any(_has_choice(c) for c in node.children)
+    )
+
+
+def takebacks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The take-back variants of one entry: one taken back (refused); for a grounded entry of one
+    task naming one object, one taken back and replaced by a handover of another object (that
+    handover); for a grounded entry with no choice in it, one opener letting go of an object it
+    does not name (the entry)."""
+    text = entry.text.strip()
+    bare = text.rstrip(".!")
+    plain_end = not text.endswith("?")
+    objects = _unique_objects(scene)
+    p = _name(scene, rng.choice(scene.humans).id)
+    forms = [f for f in TAKEN_BACK if plain_end or f.startswith(". ")]
+    back = rng.choice(forms).format(p=p)
+    said = bare + back if plain_end else text + back[1:]
+    yield Variant(part, entry.scene, said, None, "refuse", "takebacks")
+    want = entry.want
+    if want is None:
+        return
+    named = _objects_named(text, scene) | {t.obj for t in tasks(want)}
+    if isinstance(want, Task) and _objects_named(text, scene) <= {want.obj}:
+        others = [x for x in objects if x != want.obj]
+        if others:
+            other = rng.choice(others)
+            target = rng.choice(scene.humans).id
+            forms = [f for f in REPLACED if plain_end or f.startswith(". ")]
+            form = rng.choice(forms).format(o=_name(scene, other), p=_name(scene, target))
+            said = bare + form if plain_end else text + form[1:]
+            fixed = Task("deliver", other, target)
+            yield Variant(part, entry.scene, said, fixed, "same", "takebacks")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    unnamed = [x for x in objects if x not in named]
+    if unnamed and not takes_back and not _has_choice(want):
+        opener = rng.choice(LET_GO).format(o=_name(scene, rng.choice(unnamed)))
+        body = text
+        first = body.split(" ", 1)[0].strip(",.!?:;")
+        if (
+            opener.endswith(", ")
+            and body[:1].isupper()
+            and body[1:2].islower()
+            and first not in _capitalised(scene)
+        ):
+            body = body[:1].lower() + body[1:]
+        yield Variant(part, entry.scene, opener + body, want, "same", "takebacks")
+
+
 def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "wrong"]:
     """How the grounder reads a variant: as it must, refused, or otherwise (wrong)."""
     try:
@@ -194,26 +287,46 @@ def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "wron
     return "exact" if same else "wrong"
 
 
-def run(
-    parts: tuple[str, ...] = PARTS, seed: int = 16, every: int = 1
-) -> tuple[Counter[str], list[tuple[Variant, str]]]:
-    """Every ``every``-th entry of ``parts`` fuzzed with ``seed``: the counts by verdict and the
-    wrong readings (each with what was read)."""
+def generated(
+    parts: tuple[str, ...] = PARTS,
+    seed: int = 16,
+    every: int = 1,
+    families: tuple[Family, ...] = FAMILIES,
+) -> Iterator[tuple[Variant, Scene]]:
+    """The variants of every ``every``-th entry of ``parts`` in ``families`` with ``seed``, each
+    with its scene. Each family draws from its own generator, so a seed gives the wrappers of
+    earlier sessions whatever else runs."""
     rng = random.Random(seed)
-    counts: Counter[str] = Counter()
-    wrong: list[tuple[Variant, str]] = []
+    rng_back = random.Random(f"takebacks:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
             if n % every:
                 continue
             scene = corpus.scenes[entry.scene]
-            for v in variants(part, entry, scene, rng):
-                result = verdict(v, scene)
-                counts[f"{v.must}:{result}"] += 1
-                if result == "wrong":
-                    read = show_tree(parse_instruction(v.text, scene))
-                    wrong.append((v, read))
+            if "wrappers" in families:
+                for v in variants(part, entry, scene, rng):
+                    yield v, scene
+            if "takebacks" in families:
+                for v in takebacks(part, entry, scene, rng_back):
+                    yield v, scene
+
+
+def run(
+    parts: tuple[str, ...] = PARTS,
+    seed: int = 16,
+    every: int = 1,
+    families: tuple[Family, ...] = FAMILIES,
+) -> tuple[Counter[str], list[tuple[Variant, str]]]:
+    """Every ``every``-th entry of ``parts`` fuzzed with ``seed`` in ``families``: the counts by
+    verdict and the wrong readings (each with what was read)."""
+    counts: Counter[str] = Counter()
+    wrong: list[tuple[Variant, str]] = []
+    for v, scene in generated(parts, seed, every, families):
+        result = verdict(v, scene)
+        counts[f"{v.must}:{result}"] += 1
+        if result == "wrong":
+            wrong.append((v, show_tree(parse_instruction(v.text, scene))))
     return counts, wrong
 
 
@@ -222,9 +335,17 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=16)
     parser.add_argument("--parts", default=",".join(PARTS))
     parser.add_argument("--every", type=int, default=1, help="fuzz every n-th entry only")
+    parser.add_argument(
+        "--families", default=",".join(FAMILIES), help=f"some of {', '.join(FAMILIES)}"
+    )
     args = parser.parse_args(argv)
     parts = tuple(p for p in args.parts.split(",") if p)
-    counts, wrong = run(parts, args.seed, args.every)
+    families: list[Family] = []
+    for name in (f for f in args.families.split(",") if f):
+        if name not in FAMILIES:
+            parser.error(f"--families: no family called {name!r}, expected some of {FAMILIES}")
+        families.append(cast(Family, name))
+    counts, wrong = run(parts, args.seed, args.every, tuple(families))
     for key in sorted(counts):
         print(f"{key}: {counts[key]}")
     print(f"variants: {sum(counts.values())}, wrong: {len(wrong)}")
