@@ -7026,6 +7026,7 @@ _REMARK_MARKS = re.compile(
     r"(\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$))(?:\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$)))*\s*|\s+-\s+)"
 )
 _REMARK_JOINS = (",", ";", ":", "—", "–", "-")
+_STOPS = (".", "!", "?", "...")
 
 
 def _speaker_stretch(
@@ -7094,6 +7095,8 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
             and (
                 not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
                 or not _names("".join(out) + head, lexicon)
+                # session 15's clause holds every pointing and correcting word: it joins nothing
+                or (not head and _remark_clause(piece, lexicon))
             )
         ):
             dropped, spoke, after = True, True, not head
@@ -7102,7 +7105,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
                 out.append(mark)
             elif all(_opener(x, lexicon) for x in out[opened::2]):
                 del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
-            elif out and mark.strip() in (".", "!", "?", "...") and out[-1].strip() in _REMARK_JOINS:
+            elif out and mark.strip() in _STOPS and out[-1].strip() in _REMARK_JOINS:
                 out[-1] = mark  # "…, I misheard her." → "…."
             if any(c in mark for c in ".!?"):
                 opened = len(out)
