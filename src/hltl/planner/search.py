@@ -23,14 +23,17 @@ PAIRS_AFTER = 300  # expansions before A* also uses the pairwise bound
 CHECK_EVERY = 64  # successors generated between two looks at the clock inside one expansion
 
 # The step that reached a node, as (robots acting: bit mask, objects moved: bit mask, duration in
-# ticks). Left-shift rule: an instance no monitor can see, whose robots were idle and whose object
-# stayed put in that step, and that would not have made it longer, could have run in it instead
-# (it was applicable then: only a step's own robots change what they hold). Moving it there keeps
-# every symbol, every later precondition and every later duration and makes no step longer, so
-# some optimal plan never delays such an instance, and the search need not generate it. A node
+# ticks, places left: bit mask over (object, place) pairs, see ``_Search.undoes``). Left-shift
+# rule: an instance no monitor can see, whose robots were idle and whose object stayed put in
+# that step, and that would not have made it longer, could have run in it instead (it was
+# applicable then: only a step's own robots change what they hold). Moving it there keeps every
+# symbol, every later precondition and every later duration and makes no step longer, so some
+# optimal plan never delays such an instance, and the search need not generate it. A node
 # reached by several equally cheap steps keeps all their tags; an instance is skipped only when
-# every tag allows it to shift.
-Tag = tuple[int, int, int]
+# every tag allows it to shift. Undone steps: an instance that takes an object straight back to
+# where an instance of the step before took it from (both invisible, fixed durations) is never
+# generated either (docs/planner.md, "Undone steps"), again only when every tag says so.
+Tag = tuple[int, int, int, int]
 # A node's labels as the search stores them, against the labels it had when a step reached it:
 # ``perm[o]`` is the object whose place canonical object ``o`` took (``None``: no relabelling).
 Perm = tuple[int, ...] | None
@@ -64,6 +67,17 @@ class _Search:
         self._free_mask = [0] * len(problem.instances)
         for inst in problem.instances:
             self._free_mask[inst.index] = sum(1 << r for r in set(inst.free))
+        # undone steps (see ``Tag``): per instance, the bit a step with it sets in its tag (its
+        # object's place before it) and the bit that, set in every tag of a node, means it would
+        # take its object straight back (its object's place after it); 0 where the rule does
+        # not hold (``undoes``)
+        self._n_locs = len(problem.locs)
+        self._back_bit = [0] * len(problem.instances)
+        self._undo_bit = [0] * len(problem.instances)
+        for inst in problem.instances:
+            if self.undoes(inst):
+                self._back_bit[inst.index] = 1 << (inst.obj * self._n_locs + inst.pre)
+                self._undo_bit[inst.index] = 1 << (inst.obj * self._n_locs + inst.post)
         # (child index, parent index), parents first: once a node is done its descendants can
         # no longer matter, so they are marked done too and equivalent states merge
         index = {n: i for i, n in enumerate(self.monitor.nodes)}
@@ -71,6 +85,25 @@ class _Search:
         self._links = tuple(
             (index[c], index[spec.parent[c]]) for c in self.monitor.nodes if c in spec.parent
         )
+
+    def undoes(self, inst: Instance) -> bool:
+        """Whether ``inst`` takes part in the undone-steps rule: with fixed durations, an
+        instance no monitor can see whose robots include whoever holds its object before it and
+        after it. If such an instance j moves an object from X to Y in a step and such an
+        instance i moves it from Y straight back to X in the next one, leaving both out keeps
+        every other instance of the two steps applicable (the robots holding the object at X
+        and Y act in i and j, so no other instance of those steps needs their hands), every
+        symbol (the steps stay, emptied or not), the node after them, and makes neither step
+        longer: an optimal plan has fewer instances, and so one without such a pair exists
+        (docs/planner.md, "Undone steps")."""
+        p = self.p
+        if p.track_hands or not p.invisible[inst.index]:
+            return False
+        for code in (inst.pre, inst.post):
+            r = p.code_holder.get(code)
+            if r is not None and not inst.executors >> r & 1:
+                return False
+        return True
 
     def done(self, q: object) -> frozenset[str]:
         d = self._done_memo.get(q)
@@ -171,10 +204,13 @@ class _Search:
         # an instance shifts into every step that reached the node when it shares no robot and
         # no object with any of them, and fits the shortest
         acting = moved = 0
-        for e, m, _ in tags:
+        back = -1 if tags else 0  # the places every way in took an object from
+        for e, m, _, b in tags:
             acting |= e
             moved |= m
-        shortest = min((d for _, _, d in tags), default=0)
+            back &= b
+        shortest = min((d for _, _, d, _ in tags), default=0)
+        undo_bit = self._undo_bit
         relevant = p.relevant(self.done(q))
         out: list[list[Instance]] = []
         late: set[int] = set()
@@ -186,6 +222,8 @@ class _Search:
             for inst in p.by_obj_pre[o][code]:
                 if inst.index in dead or busy & free_mask[inst.index]:
                     continue
+                if back & undo_bit[inst.index]:
+                    continue  # it would take its object straight back (see ``Tag``)
                 if (
                     tags
                     and shiftable[inst.index]
@@ -222,7 +260,7 @@ class _Search:
         locs, hands, q = node
         opts, late = self.options(node, tags)
         # the shortest step that reached the node (``late`` holds for every way in)
-        before = min((d for _, _, d in tags), default=0) if hands is None else -1
+        before = min((d for _, _, d, _ in tags), default=0) if hands is None else -1
         sym = self._sym_objects
         # fixed durations and no state atoms: the step is applied inline (the hot path)
         inline = hands is None and not self.p.state_atom_objects
@@ -232,6 +270,7 @@ class _Search:
         if after is None:
             after = self._after[q] = {}
         monitor_step = self.monitor_step
+        back_bits = self._back_bit
         # every step set once, depth-first: a set is yielded before the sets that add
         # instances of later objects to it, the last object's first (the order in which the
         # sets come decides ties in the open list, so it is kept). The candidates are flat, per
@@ -284,10 +323,12 @@ class _Search:
                 )
             if late_d >= 0 and (rest_d < 0 or (rest_d <= before and rest_d <= late_d)):
                 continue
+            back = 0  # the places its instances take objects from (undone steps: ``Tag``)
             if inline:
                 new_locs = list(locs)
                 for inst in chosen:
                     new_locs[inst.obj] = inst.post
+                    back |= back_bits[inst.index]
                 nq = after.get(events)
                 if nq is None:
                     nq = after[events] = monitor_step(q, events)
@@ -297,6 +338,8 @@ class _Search:
                 if applied is None:  # a chosen instance has no motion from these hands
                     continue
                 cost, child = applied
+                for inst in chosen:
+                    back |= back_bits[inst.index]
             if not chosen and child[2] == q:
                 continue
             # the node is canonical and a step that moves no twin keeps it so (a leaf firing
@@ -305,9 +348,11 @@ class _Search:
                 child, perm = self.canonical(child)
                 if perm is not None:
                     moved = _relabel(moved, perm)
-                yield chosen, cost, child, (used, moved, cost), perm
+                    if back:
+                        back = _relabel_places(back, perm, self._n_locs)
+                yield chosen, cost, child, (used, moved, cost, back), perm
             else:
-                yield chosen, cost, child, (used, moved, cost), None
+                yield chosen, cost, child, (used, moved, cost, back), None
 
     def apply(self, node: Node, U: Sequence[Instance]) -> tuple[int, Node] | None:
         """The step ``U`` from ``node`` (preconditions assumed): its duration in ticks and the
@@ -574,6 +619,18 @@ def _relabel(mask: int, perm: tuple[int, ...]) -> int:
     for o, src in enumerate(perm):
         if mask >> src & 1:
             out |= 1 << o
+    return out
+
+
+def _relabel_places(mask: int, perm: tuple[int, ...], n_locs: int) -> int:
+    """A bit mask over (object, place) pairs (bit ``object * n_locs + place``) in the labels
+    after ``perm``."""
+    out = 0
+    row = (1 << n_locs) - 1
+    for o, src in enumerate(perm):
+        bits = mask >> (src * n_locs) & row
+        if bits:
+            out |= bits << (o * n_locs)
     return out
 
 
