@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -41,6 +43,24 @@ def test_run_without_a_node_says_so(capsys: pytest.CaptureFixture[str]) -> None:
     argv += ["--bus", f"zenoh:{free_endpoint()}", "--bus-timeout", "0.05"]
     code, err = _run(argv, capsys)
     assert code == 1 and "error: no simulator node answers on hltl/default/sim/step" in err
+
+
+def test_run_without_a_node_exits() -> None:
+    """As a program, not only as a function: the session is closed after the failed episode,
+    so its subscriptions' callback threads end and the process exits (it printed the error
+    and then hung until session 25; in a test process it hung at the end of the run)."""
+    argv = ["run", "--scene", FIG1, "--instruction", "Give Person A the bottle", "--json"]
+    argv += ["--bus", f"zenoh:{free_endpoint()}", "--bus-timeout", "0.05"]
+    code = "import sys; from hltl.cli.main import main; sys.exit(main(sys.argv[1:]))"
+    try:  # (bounded: a hang is the failure this test is for)
+        out = subprocess.run(
+            [sys.executable, "-c", code, *argv], capture_output=True, text=True, timeout=120
+        )
+    except subprocess.TimeoutExpired:
+        pytest.fail("hltl run --bus with no node did not exit within 120 s")
+    err = out.stderr
+    assert out.returncode == 1 and "error: no simulator node answers" in err
+    assert err.count("\n") == 1
 
 
 def test_node_rejects_bad_episode_count(capsys: pytest.CaptureFixture[str]) -> None:

@@ -609,6 +609,91 @@ KNOWN_MISSES = frozenset(
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
+        # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
+        "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
+        'be tuning this thing for another hour.',
+        "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
+        'much.',
+        "Please could you just put the green cup on the tray, then I'll get the next patient "
+        'through, thanks.',
+        "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
+        'grateful.',
+        'Lovely, ta, the lemon to the chef please, he wants it with the hake.',
+        'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
+        'cheers.',
+        'Carol would like to have the blue mug, and Bob also the apple, he told me before.',
+        'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
+        "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
+        'for her.',
+        'Omar would like the sponge, and Dana wants the bowl brought over.',
+        "Priya wants the red pen left in the box, she'll sort it out later.",
+        "Kofi wants the hammer, mine's still in the forge.",
+        "Grab the apple, would you, and hand it to Carol, oh, and the cup too while you're over "
+        'there.',
+        'Pick up the cup and give it Person B, yeah, then the apple same way.',
+        'Person A gets the bottle, and the cup as well, give them to her together.',
+        "You see that bottle by your elbow? Person A's to have it.",
+        'The scanner, stick it on the belt, and the tape with it.',
+        "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
+        "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
+        'waiting.',
+        "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
+        "Give Person B the bottle I'm just going to check the hammers on this upright.",
+        "Bottle for Person A, and, honestly, that's the whole job today.",
+        'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
+        'Give Alice and Bob one thing each, the bottle and the crisps, any way round.',
+        'Any of the food to Person B, the apple or the chips, terserah.',
+        'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
+        "Either of them can have the chips, doesn't bother me which.",
+        'Give the bottle to one of them, Person A or Person B, it nuh matter which.',
+        "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
+        'Any pen to Sam, black or blue or red, all same for him.',
+        'Whichever box is smallest goes to Tom.',
+        'Lena and Mr Novak are to have one plate apiece, white or blue, makes no odds who gets '
+        'which colour.',
+        'Give one block to Ava and the other to Lily, any which way.',
+        "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
+        'The two things you can see, the bottle and the crisps, both to Alice.',
+        'All four items: cup and apple to Person A, bottle and chips to Person B.',
+        'Person A gets three of the four, the cup, the apple and the chips, and the bottle stays '
+        'put.',
+        "Hand over both items, chips and bottle alike, to Person B, she's earned them.",
+        'The single bottle we have, to Person A please.',
+        'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
+        'stop.',
+        "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
+        "B's.",
+        "Every one of the three boxes wants to end up with Mia, she's checking the labels.",
+        'The two blocks in the high chair for Lily to play with.',
+        "Give Person B everything you've got there but not the apple, she hates apples.",
+        "Everything on there bar the bottle goes to Person B, love, she's on seconds.",
+        'Give Person A the chips but not the apple, and not the cup either.',
+        'The chips are not for Person A, I tell you, they are for Person B.',
+        "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
+        'anyway.',
+        'Not to anyone else, just Person A: the bottle.',
+        "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
+        "Tom gets everything that isn't a box.",
+        'Give Ava the blocks, not the green one, only red.',
+        "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
+        'interval.',
+        'Bottle to Bob, eh sorry, wrong, to Alice I mean.',
+        "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
+        'Chips to Person B, oops, Person A, I mean, sorry, love.',
+        "Bottle to, no hang on, yes, Person A, it's only her.",
+        "Give Person A the bottle, no wait, yeah, that's right, the bottle.",
+        'stick the crisps up on the shelf out of reach and hand alice the bottle, ta muchly',
+        'person b gets the apple to start with, and then after it person a gets the chips',
+        'nothing fancy, just hand person a that bottle, ta, the strings can wait',
+        "sam's asked for the notepad and priya for the stapler, i'm just trimming the spines",
+        'the red book goes back up on the bookshelf with the others',
+        'Person A is hungry, please bring her the alple from the end.',
+        'The chips are meant for Peraon A, could you take them over.',
+        'Put the bnana on the tray next to the films, ta.',
+        'Drop the scnner on the belt before the next load comes down.',
+        "Will you run the bottle up to Person B for me, he's at the top of the field?",
+        'Would you put the black pen in the box for Priya?',
+        "Why don't you set the globe down on the desk where the class can see the dig site?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -665,8 +750,9 @@ KNOWN_UNCLEAR = frozenset(
 # tuned on in session 23: asserted now, the rest in KNOWN_MISSES; "blind22" written in session 23
 # by another engineer, reviewed by a second one, measured once at the end of session 23, tuned on
 # in session 24: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind23" written in
-# session 24 by another engineer, reviewed by a second one, measured once at the end of session 24)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind23"})
+# session 24 by another engineer, reviewed by a second one, measured once at the end of session 24,
+# tuned on in session 25: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

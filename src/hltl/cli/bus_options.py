@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 from functools import partial
 from typing import Any
@@ -11,7 +12,7 @@ from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.perception import PerceptionClient
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import PERCEPTION_ENDPOINT, BusConfig, open_session, parse_bus
-from hltl.errors import HltlError
+from hltl.errors import BusError, HltlError
 from hltl.sim.episode import Cell, CellFactory
 
 
@@ -106,10 +107,17 @@ class BusSimulator:
         self.factory: CellFactory = factory
 
     def close(self) -> None:
-        for c in self.opened:
-            c.end()
-            c.close()
-        if self.perception is not None:
-            self.perception.close()
-        if not self.session.is_closed():
-            self.session.close()
+        """Also after a failed episode (``hltl run`` calls it in a ``finally``): a session left
+        open keeps the process from exiting, since Zenoh runs each subscription's Python
+        callback on a thread of its own that ends only when the session closes (a node that
+        never answered made ``hltl run --bus`` print its error and then hang)."""
+        try:
+            for c in self.opened:
+                with contextlib.suppress(BusError):  # (the node is gone: nothing to tell)
+                    c.end()
+                c.close()
+            if self.perception is not None:
+                self.perception.close()
+        finally:
+            if not self.session.is_closed():
+                self.session.close()

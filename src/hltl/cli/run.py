@@ -162,21 +162,25 @@ def run(args: argparse.Namespace) -> int:
     if args.bus is not None:
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
-    episode = run_episode(
-        scene,
-        spec=spec,
-        instruction=args.instruction,
-        events=events,
-        seed=args.seed,
-        config=config,
-        grounder=grounder,
-        predictor=predictor,
-        log_path=args.log,
-        on_record=None if timeline is None else timeline,
-        **extra,
-    )
-    if bus is not None:
-        bus.close()
+    try:
+        episode = run_episode(
+            scene,
+            spec=spec,
+            instruction=args.instruction,
+            events=events,
+            seed=args.seed,
+            config=config,
+            grounder=grounder,
+            predictor=predictor,
+            log_path=args.log,
+            on_record=None if timeline is None else timeline,
+            **extra,
+        )
+    finally:
+        # also when the episode failed (no node answers): an open session's subscriptions run
+        # their callbacks on threads that keep the process from exiting
+        if bus is not None:
+            bus.close()
     if recorder is not None:
         recorder.close()
         if not args.json:

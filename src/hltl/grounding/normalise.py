@@ -312,7 +312,11 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"(?:could|might|may|can) (?:have|get)\b",
         " wants",
     ),
-    (r"(?<=\w) (?:himself|herself)\b", ""),
+)
+# "the foreman himself", "Bob herself": a person said with emphasis (after anything else, "Ava
+# can get it herself", the person does it themself: see _words)
+_REFLEXIVE = r"(?<=\w) (?:himself|herself)\b"
+_WORDS_LATE: tuple[tuple[str, str], ...] = (
     # "Give Bob the chips and then when he's got them give Alice the cup": the condition ends
     # at the command
     (
@@ -412,8 +416,26 @@ _WORDS: tuple[tuple[str, str], ...] = (
 )
 
 
+def _person_before(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether the words right before match ``m`` name a person of the scene ('the foreman',
+    'Person A')."""
+    tail = " ".join(m.string[: m.start()].split()[-3:])
+    said = _names(tail, lexicon)
+    return (
+        bool(said)
+        and all(r.kind == "human" for r in said[-1].refs)
+        and tail.lower().endswith(said[-1].text.lower())
+    )
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
+        text = _sub(pattern, repl, text)
+    # "the foreman himself": said of a person, taken off; after anything else ("Ava can get it
+    # herself") the person does it themself, which asks the robot for nothing: kept, so the
+    # clause is refused (session 25)
+    text = _sub(_REFLEXIVE, lambda m: "" if _person_before(m, lexicon) else m[0], text)
+    for pattern, repl in _WORDS_LATE:
         text = _sub(pattern, repl, text)
     # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
     sentences = re.split(r"(?<=[.;!?])\s+", text)
@@ -1723,7 +1745,10 @@ _GREETING = (
 _BOTHERING = r"(?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?"
 _ATTENTION = (
     r"(?:(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)"
-    rf"(?:,? (?:(?:so )?sorry )?{_BOTHERING})?|(?:so )?sorry {_BOTHERING})"
+    rf"(?:,? (?:(?:so )?sorry )?{_BOTHERING})?|(?:so )?sorry {_BOTHERING}|"
+    # session 25: a call to listen, and an opening 'so' / 'lovely' ("Right, listen. Person B:
+    # bottle.", "Come on then, love, chips to …", "So. Chips, …", "Lovely, ta, the lemon …")
+    r"listen(?: up)?|look|come on(?: then| now)?|lovely|so)"
 )
 _OPENERS = rf"^(?:{_GREETING}\s*[,!]\s*|{_ATTENTION}\s*[,.!]\s*(?=[a-z]))+"
 
@@ -6666,11 +6691,13 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
 # refused: nothing is left to do). A sentence that only apologises ('Sorry.', 'Sorry!') is taken
 # off.
 _CUE19 = (
-    r"(?:(?:no,? |eh,? no,? |oh,? )?(?:sorry|so sorry)(?:,? no)?(?:,? i mean)?|whoops|oops|"
+    # session 25: 'ah no', 'eh sorry', 'sorry, wrong'
+    r"(?:(?:no,? |(?:eh|ah),? no,? |(?:oh|eh|ah),? )?(?:sorry|so sorry)(?:,? (?:no|wrong))?"
+    r"(?:,? i mean)?|whoops|oops|"
     r"(?:no,? )?my (?:mistake|bad)|pardon me|i mean|i misspeak|i misspoke|let me rephrase|"
     r"(?:or )?rather|(?:no,? )?(?:strike|scratch|belay|revert|cancel) that(?: order)?|"
     r"(?:wait|no wait|no),? (?:revert|scratch|strike|cancel) that|correction|"
-    r"no,? (?:wait|hold on|hang on)|eh,? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)"
+    r"no,? (?:wait|hold on|hang on)|(?:eh|ah),? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)"
 )
 
 
@@ -6917,6 +6944,12 @@ _COURTESY24 = (
     r"spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|"
     r"dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|"
     r"arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|"
+    # session 25: Persian, Indonesian, Hungarian thanks and greetings, Indonesian 'that's all'
+    # and 'as you like' and its address 'Mas', Jamaican blessings ('please' and 'sorry' of
+    # other languages are read as those words: _translated25)
+    r"mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|"
+    r"köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|"
+    r"mas|mbak|bless up|big up|respect|one love|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -6952,6 +6985,90 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
         out.extend((c, sep))
     said = "".join(out).strip(" ,;")
     return said if _names(said, lexicon) else text
+
+
+# words of other languages that English says with one word, read as that word inside a clause:
+# 'please' (Indonesian 'tolong', 'bisa tolong' = could you please; Persian 'lotfan'; German
+# 'bitte'; Spanish 'por favor') and 'sorry' (Persian 'bebakhshid', Indonesian 'maaf'); and a
+# title of respect before a scene person's name (Indonesian 'Bu' / 'Ibu', 'Pak' / 'Bapak', 'Mas',
+# 'Mbak')
+_PLEASE25 = re.compile(r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor)\b", _F)
+_SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)
+# Jamaican English / Patois words for English function words ('di bottle' = the bottle, 'fi Bob'
+# = for Bob, 'mek Person A get' = let Person A get, 'mi mean' = I mean, 'it nuh matter' = it
+# doesn't matter; 'nuh' closing a clause asks 'won't you', as 'eh' does)
+_PATOIS25 = {
+    "di": "the",
+    "dat": "that",
+    "dis": "this",
+    "fi mi": "for me",
+    "fi": "for",
+    "jus": "just",
+    "mek": "let",
+    "pon": "on",
+    "wid": "with",
+    "mi mean": "I mean",
+    "nuh matter": "doesn't matter",
+}
+_PATOIS_WORD25 = re.compile(
+    r"\b(?:di|dat|dis|fi mi|fi|jus|mek|pon|wid|mi mean|nuh matter)\b(?=[\s',.;!?]|$)|"
+    r"\s*\bnuh\b(?=\s*[,.;!?])",
+    _F,
+)
+_HONORIFIC25 = re.compile(r"\b(?:[Bb]u|[Ii]bu|[Pp]ak|[Bb]apak|[Mm]as|[Mm]bak)\s+(?=[A-Z])")
+
+
+def _translated25(text: str, lexicon: Lexicon) -> str:
+    """Session 25: 'please' and 'sorry' said in another language are 'please' and 'sorry'
+    ("Permisi, tolong the bottle for Person A", "…, ah no, bebakhshid, the apple"), Patois
+    function words are their English ones ("Not di bottle, jus di crisps fi Bob"), and a title
+    of respect of another language before a person's name of the scene is taken off ("Stapler
+    to Bu Priya, then the notepad to Mas Sam"), as 'Mr' would be when the scene does not say
+    it."""
+    if _PLEASE25.search(text):
+        text = _PLEASE25.sub("please", text)
+    if _SORRY25.search(text):
+        text = _SORRY25.sub("sorry", text)
+    if _PATOIS_WORD25.search(text):
+        text = _PATOIS_WORD25.sub(lambda m: _PATOIS25.get(m[0].lower(), ""), text)
+    if not _HONORIFIC25.search(text):
+        return text
+    return _HONORIFIC25.sub(
+        lambda m: "" if _person_at(m.string[m.end() :], lexicon) else m[0], text
+    )
+
+
+def _person_at(rest: str, lexicon: Lexicon) -> bool:
+    """Whether ``rest`` starts with the name of a person of the scene."""
+    said = _names(" ".join(rest.split()[:2]), lexicon)
+    return (
+        bool(said)
+        and rest.lower().startswith(said[0].text.lower())
+        and all(r.kind == "human" for r in said[0].refs)
+    )
+
+
+# Session 25: closing stretches that ask for nothing (a house rule, a croupier's 'no more bets',
+# 'then we'll see', something else that 'can wait', a warning to 'mind' something not in the
+# scene), after the request, each after a comma at the end of the instruction
+_CLOSER25 = re.compile(
+    r"\s*,\s*(?:and\s+)?((?:house rules|no more bets(?: please)?|(?:and )?then we'll see|"
+    r"(?:the|my|your|his|her|their|our) [a-z' ]+? can wait|mind the [a-z' ]+?))\s*([.!]?)\s*$",
+    _F,
+)
+
+
+def _closers25(text: str, lexicon: Lexicon) -> str:
+    """Session 25: a closing stretch of _CLOSER25 that names nothing in the scene ("…, house
+    rules.", "…, no more bets", "…, then we'll see.", "…, the strings can wait", "…, mind the
+    pane on the floor") is taken off; one that names something ("…, the apple can wait") is
+    left, and refused."""
+    for _ in range(2):
+        m = _CLOSER25.search(text)
+        if m is None or m.start() == 0 or not _names_nothing(m.group(1), lexicon):
+            return text
+        text = text[: m.start()] + m.group(2)
+    return text
 
 
 # -- the speaker's remarks: one rule (session 22's and session 24's, merged in session 25) ---------
@@ -7848,6 +7965,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _translated25,
     _courtesy24,
     _attention21,
     _speaker21,
@@ -7864,6 +7982,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _fillers19,
     _hedges19,
     _closers19,
+    _closers25,
     _counts19,
     _negation19,
     _telegraph19,

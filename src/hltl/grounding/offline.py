@@ -30,7 +30,7 @@ from hltl.grounding.normalise import (
     people_named,
     rewritten19,
 )
-from hltl.grounding.phrasing import dropped_refs, first_refs, refine
+from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -157,6 +157,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        _taken_back(text)
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(
@@ -259,6 +260,47 @@ def _stubs(text: str, lexicon: Lexicon) -> int:
 
 
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
+
+# a correction cue, then 'leave it' / 'forget it' / 'never mind': the request before is taken back
+_TAKEN_BACK = re.compile(
+    r"\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
+    r"(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|forget (?:it|that)|"
+    r"never mind(?: (?:it|that))?)\s*(?=[,.;!?]|$)",
+    re.I,
+)
+# what a new request said after it opens with: a verb of the grammar's tasks
+_NEW_REQUEST = re.compile(
+    r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
+    r"will you)[\s,]+)*(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|"
+    r"drop|deliver)\b|\binstead\b",
+    re.I,
+)
+# a request said before it (a verb of the grammar's tasks or of wanting)
+_REQUESTED = re.compile(
+    r"\b(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver|"
+    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have)\b",
+    re.I,
+)
+
+
+def _taken_back(text: str) -> None:
+    """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
+    cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
+    25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
+    verb, or 'instead') and what it replaces is one request ('Put the notebook on the desk.
+    Actually no, leave it, put the stapler there instead.' is read by the correction rules);
+    with two requests before it ('Bob wants the cup, hand it to him, no, leave it, …') which
+    one is taken back is unclear."""
+    m = _TAKEN_BACK.search(text)
+    if m is None:
+        return
+    rest = text[m.end() :].strip(" ,.;!?")
+    if rest and _NEW_REQUEST.search(rest) and len(_REQUESTED.findall(text[: m.start()])) <= 1:
+        return
+    raise GroundingError(
+        f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
+        "nothing"
+    )
 
 
 def _cut_off(text: str) -> GroundingError | None:
@@ -1340,6 +1382,7 @@ class _Parser:
         if (f.it or f.them) and _waits_at(f):
             return self._placed(k)
         if f.it:
+            self._one_listed(k)
             return [frags[k - 1]]
         out: list[_Frag] = []
         for g in reversed(frags[:k]):
@@ -1349,6 +1392,30 @@ class _Parser:
             if g.verb_text or g.subject:
                 break
         return [g for g in out if g.objects is not None or g.it or g.them]
+
+    def _one_listed(self, k: int) -> None:
+        """'Give Priya the black pen and the notepad, and then give it to Sam': the clause just
+        before 'it' is one item of a list its verb heads, and 'it' could mean any object of
+        that list (session 25): refused with them, as 'them' would take them all. A choice in
+        the list ('a mug …') is the one object chosen, so that is left to the choice."""
+        frags = self.frags
+        prev = frags[k - 1]
+        if prev.verb_text or prev.subject or prev.objects is None:
+            return
+        listed = [prev]
+        for g in reversed(frags[: k - 1]):
+            if g.segment != prev.segment:
+                break
+            listed.insert(0, g)
+            if g.verb_text or g.subject:
+                break
+        if any(g.group >= 0 or g.it or g.them for g in listed):
+            return
+        named = list(dict.fromkeys(o for g in listed for o in g.objects or ()))
+        if len(named) > 1:
+            raise GroundingError(
+                f"'it' in {frags[k].text!r} could mean any of {', '.join(named)}: name the object"
+            )
 
     def _placed(self, k: int) -> list[_Frag]:
         """'Put the bib on the high chair and give Lily the beaker once it's there': what a
@@ -1452,6 +1519,8 @@ class _Parser:
                 return None
             assert raw.target is not None and raw.objects is not None
             kind: Literal["deliver", "place"] = "deliver" if raw.target.kind == "human" else "place"
+            if _left_where_it_is(raw, self.lex):
+                return None
             if raw.group >= 0 and len(raw.objects) > 1:
                 # a placeholder the choice is expanded into; 'it' for the chosen object is the
                 # same placeholder (the same object), not another choice from the same group
@@ -1468,6 +1537,21 @@ class _Parser:
 
 
 # -- helpers -------------------------------------------------------------------------------------
+
+
+def _left_where_it_is(f: _Frag, lexicon: Lexicon) -> bool:
+    """'Green book, leave it on the shelf', where the green book already lies (session 25): to
+    leave an object where it lies is to not move it, no task ('leave the stapler on the desk',
+    where it is not, still puts it there)."""
+    return (
+        f.verb == "leave"
+        and bool(f.verb_text)
+        and f.target is not None
+        and f.target.kind == "surface"
+        and f.objects is not None
+        and f.group < 0
+        and len(starting_on(set(f.objects), f.target.id, lexicon)) == len(f.objects)
+    )
 
 
 _ORDER = ("then", "after", "before", "once", "prior")
