@@ -189,7 +189,6 @@ KNOWN_MISSES = frozenset(
         "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
         "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
         "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
-        "Sorry, Bob said he needs the red mug, I think, and Alice, sorry, wants the crisps.",
         "Bottle is what Alice want, crisps is for Bob one, can or not?",
         "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
         "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
@@ -440,8 +439,6 @@ KNOWN_MISSES = frozenset(
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
         "Bob's thirsty from the ride, so take him over the bottle.",
-        "Right, photographer here, we're losing the light. Person B, bottle. Person A, chips. "
-        "Quick quick.",
         "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
@@ -612,7 +609,6 @@ KNOWN_MISSES = frozenset(
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
-        'Will you take the drill to Kofi, please, he wants to hang a mirror?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',

@@ -3475,46 +3475,6 @@ def _call(chunk: str, lexicon: Lexicon) -> bool:
     )
 
 
-def _remarks15(text: str, lexicon: Lexicon) -> str:
-    """Every clause of ``text`` that _remark_clause finds inert taken off, with the 'but' / 'so'
-    that joins it to the request ("Sorry sorry, I know it's hectic, but could …"), and an
-    apology that then stands alone ("Hot behind! Sorry, force of habit."); the text as it is when
-    nothing else would be left."""
-    parts = re.split(r"(\s*(?:[,;:!?—–]|\.(?=\s|$)|\.\.\.|\s-\s)\s*)", text.strip())
-    chunks, seps = parts[0::2], parts[1::2]
-    if len(chunks) < 2:
-        return text
-    drop = [_remark_clause(c, lexicon) for c in chunks]
-    # "Behind!", "Mind your backs!": a call of a few words opening the text, naming nothing
-    if seps[0].strip() == "!" and _call(chunks[0], lexicon):
-        drop[0] = True
-    # "Sorry, force of habit.": the apology for a remark goes with it
-    for k, c in enumerate(chunks):
-        near = (k and drop[k - 1]) or (k + 1 < len(chunks) and drop[k + 1])
-        if near and _rx(r"(?:oh |so )?sorry(?: sorry)?").fullmatch(c.strip()):
-            drop[k] = True
-    if not any(drop) or all(drop):
-        return text
-    out: list[str] = []
-    for k, c in enumerate(chunks):
-        if drop[k]:
-            if out and k + 1 < len(chunks) and not drop[k + 1]:
-                # the stop after a remark ends a sentence the request may follow
-                sep = seps[k] if k < len(seps) else ""
-                if sep.strip() in (".", "!", "?", "...") and out[-1].strip() in (",", ";", ":"):
-                    out[-1] = ". "
-            continue
-        if k and drop[k - 1]:
-            c = _rx(r"^(?:but|so|and)\b,?\s*").sub("", c)
-        out.append(c)
-        if k < len(seps):
-            out.append(seps[k])
-    said = "".join(out).strip(" ,;:—–-")
-    if not _names(said, lexicon):
-        return text
-    return said
-
-
 # -- the speaker, not a recipient: leaving, finishing, signing off ---------------------------------
 #
 # Said of the speaker, none of these asks anything for them: 'before I go' is now, 'from me' and
@@ -6215,9 +6175,14 @@ _LY_HELD19 = frozenset(
         *("probably", "presumably", "conditionally", "hopefully", "otherwise", "really"),
     }
 )
-_PARTICLES19 = frozenset(
-    {"lah", "la", "leh", "lor", "meh", "hor", "innit", "ja", "o", "sha"}
-    # session 24: Thai and Filipino polite particles ("bring cup to Person B, krap")
+# Sentence and polite particles, one list for both places they are said (session 25: sessions
+# 19 and 24 had one list each): glued to the word before ("… to Person B please krap", "Give
+# Bob the cup lah": _fillers19) or as a stretch of their own between punctuation marks ("…,
+# lah.", "Sawasdee krap.": _courtesy24). Malaysian and Singaporean English lah, la, leh, lor,
+# meh, hor, ah; London innit; Afrikaans ja; Nigerian o, sha; Thai krap, khrap, krub, khrub, kha;
+# Tagalog po, opo.
+_PARTICLES = frozenset(
+    {"lah", "la", "leh", "lor", "meh", "hor", "ah", "innit", "ja", "o", "sha"}
     | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
 )
 _NOW19 = re.compile(
@@ -6331,7 +6296,7 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
         low = core.lower()
         prev = words[k - 1].lower().strip(",;:") if k else ""
         last = k + 1 == len(words) or w[-1:] in ",;:.!?"
-        glued = low in _PARTICLES19 and k > 0 and prev[-1:] not in (",", ";", ":")
+        glued = low in _PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
         loose = (
             _unknown_word(core, lexicon)
             and 0 < k < len(words) - 1
@@ -6897,120 +6862,70 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# -- session 22: blind20's kinds -----------------------------------------------------------------
+# -- session 25 (engineer 12r): blind22's kinds ----------------------------------------------------
 
-# a clause of the speaker about themself: 'I've come straight from the hives', "I'm the farmer",
-# 'my boots are filthy', 'I won't come in'
-_SPEAKER_CLAUSE22 = re.compile(
-    r"^(?:(?:and|so|but|oh|well|look)\s+)?(?:i(?:'m|'ve|'ll|'d| am| have| was| will| won't| can't| "
-    r"don't| just| only)|my (?:[a-z]+ ){0,2}?(?:is|are|was|were|has|have|keeps?)\b|my [a-z]+'s)\b",
+# What a person wants or needs to do, said after the request as its reason ("Will you take the
+# drill to Kofi, please, he wants to hang a mirror?", "Both plates onto the counter, Marco wants to
+# plate up the goulash."): a clause closing its sentence whose subject is a person of the scene
+# (or he / she / they) and whose verb is 'wants / needs / has / is going / is about' + 'to' + a
+# verb that is neither one of the grammar's tasks nor of having or using, naming nothing else in
+# the scene and holding no word that points back, counts, chooses, negates or orders. It says what
+# the person will do themself, which asks the robots for nothing: taken off, when the request
+# before it names something. ("…, he wants to keep it", "…, she needs to have the cup", "…, Bob
+# wants to give it back" are not.)
+_DOING25 = re.compile(
+    r"\s*[,;]\s*(?:(?:and|as|because|cos|since)\s+)?((?:he|she|they|[A-Z][a-z]*(?: [A-Z][a-z]*)?)"
+    r"(?:'s| is| are|'re)? (?:wants|want|needs|need|has|have|going|about) to ([a-z]+)\b"
+    r"[^,.;!?]*?)\s*(?=[.!?]|$)",
+)
+_DOING_HELD25 = re.compile(
+    r"\b(?:it|them|that|this|those|these|one|ones|other|another|rest|each|both|all|every|either|"
+    r"or|and|then|first|before|after|until|once|when|if|not|no|never|nothing|instead|too|also|"
+    r"me|us|you|him|her|his|their|my|your|our|mine|yours|same|again|back)\b|n't\b|\d",
     _F,
 )
-# what the speaker says of why they are here: 'only in to water the spider plants'
-_HERE_FOR22 = re.compile(
-    r"^(?:(?:i'm|i am) )?(?:only|just) (?:in|here|popping in|passing|dropping by)\b", _F
-)
-# a warning about the speaker's own things: 'mind the smoke on my jacket'
-_MIND_MINE22 = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
-# words a remark of the speaker's must not hold: what could ask for something, point back, count,
-# choose, order or correct
-_SPEAKER_HELD22 = re.compile(
-    r"\b(?:no|nothing|none|never|too|also|as well|instead|rather|first|then|next|before|after|"
-    r"once|when|until|unless|if|or|one|ones|both|each|either|any|all|every|another|other|else|"
-    r"rest|same|which|whichever|give|hand|pass|bring|take|put|place|get|want|wants|need|needs|"
-    r"like|love|fancy|prefer|keep|leave|send|move|fetch|grab|drop|it|them|those|these|that|this|"
-    r"him|her|his|she|he|they|wrong|mean|meant|sorry|actually|mistake|change|swap|cancel|wait|"
-    r"hang|hold|mine|yours|hers|for me|for us|to me|to us|me)\b|\d",
-    _F,
+_DOING_VERBS25 = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "get", "have", "keep", "hold"),
+        *("use", "fetch", "grab", "move", "send", "carry", "deliver", "leave", "drop", "pop"),
+        *("set", "receive", "borrow", "eat", "drink", "try", "see", "check", "open", "be", "go"),
+        *("come", "wait", "stop", "cancel", "swap", "change", "choose", "pick", "share", "say"),
+        *("ask",),
+    }
 )
 
 
-def _speaker_piece22(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
-    """Whether ``piece`` (a stretch between commas) is the speaker talking about themself (or
-    about why they are here, after such a stretch: ``spoke``), asking nothing."""
-    piece = piece.strip(" .!")
-    if _rx(rf"(?:so )?sorry {_BOTHERING}").fullmatch(piece):
-        return True  # "sorry to rush you": an apology for interrupting
-    if not piece or _SPEAKER_HELD22.search(piece) or not _names_nothing(piece, lexicon):
-        return False
-    return bool(
-        _SPEAKER_CLAUSE22.match(piece)
-        or _MIND_MINE22.match(piece)
-        or (spoke and _HERE_FOR22.match(piece))
-        or _inert_sentence(piece, lexicon)
-    )
-
-
-def _speaker_remarks22(text: str, lexicon: Lexicon) -> str:
-    """Session 22: a sentence before the request in which the speaker only talks about themself
-    ("I'm the farmer, my boots are filthy so I won't come in.", "Afternoon, mind the smoke on my
-    jacket, I've come straight from the hives.", "I'm the gardener, only in to water the spider
-    plants."): each stretch of it between commas (and 'so') a clause of 'I' or 'my X' about
-    the speaker, a greeting, or why they are here; naming nothing in the scene, and holding no
-    word that could ask for something, point back, count, choose, order or correct (not even
-    'me'): taken off, when a later sentence names something."""
-    parts = re.split(r"(?<=[.!])\s+", text.strip())
-    if len(parts) < 2 or not _rx(r"\b(?:i|i'[a-z]+|my)\b").search(" ".join(parts[:-1])):
+def _doing25(text: str, lexicon: Lexicon) -> str:
+    """Session 25: what a person wants or needs to do, said as the request's reason, taken off
+    (above)."""
+    if not _rx(r"\b(?:wants?|needs?|has|have|going|about) to\b").search(text):
         return text
-    keep: list[str] = []
-    for n, part in enumerate(parts):
-        pieces = re.split(r"\s*,\s*|\s+so\s+", part.strip(" .!"))
-        spoke = False
-        inert = n < len(parts) - 1 and part.endswith((".", "!"))
-        if n == 0 and len(pieces) > 1 and _rx(r"(?:so )?sorry").fullmatch(pieces[0]):
-            pieces = pieces[1:]  # "Sorry, I'm the farmer, …": an apology for interrupting
-        for piece in pieces if inert else ():
-            if not _speaker_piece22(piece, spoke, lexicon):
-                inert = False
-                break
-            spoke = spoke or bool(_SPEAKER_CLAUSE22.match(piece.strip()))
-        if not (inert and spoke):
-            keep.append(part)
-    if len(keep) == len(parts) or not _names(" ".join(keep), lexicon):
-        return text
-    return " ".join(keep)
+    for m in reversed(list(_DOING25.finditer(text))):
+        clause, verb = m.group(1), m.group(2).lower()
+        subject = clause[: clause.lower().index(" to ")].rsplit(" ", 1)[0]
+        subject = re.sub(r"(?:'s|'re| is| are)$", "", subject, flags=_F)
+        who = _names(subject, lexicon)
+        person = subject.lower() in ("he", "she", "they") or (
+            len(who) == 1
+            and all(r.kind == "human" for r in who[0].refs)
+            and who[0].text.lower() == subject.lower()
+        )
+        rest = clause[len(subject) :]
+        before = text[: m.start()]
+        if (
+            not person
+            or verb in _DOING_VERBS25
+            or verb in VERBS
+            or _DOING_HELD25.search(rest)
+            or not _names_nothing(rest, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
+    return text
 
 
 # -- session 24: blind22's kinds -----------------------------------------------------------------
-
-# a stretch in which the speaker talks about themself: it opens (after a joining word) with 'I'
-# or 'my <thing>' as its subject ("I'm the vicar", "while I sort the rota", "then i'll start the
-# prayer", "and my head's still full of runways", "it's my day off")
-_SPEAKER_OPEN24 = re.compile(
-    r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now)\s+)*"
-    r"(?:i(?:'m|'ve|'ll|'d)?|my [a-z]+(?:'s| is| are| was| were| has| have| keeps?)|"
-    r"it's (?:my|only me|just me)|that's me)\b",
-    _F,
-)
-# what may follow such a stretch in the same sentence, still about the speaker ("I'm the
-# optician from the high street, just dropping the new frames round", "…, here to bless the new
-# wing")
-_SPEAKER_MORE24 = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
-# words a stretch of the speaker's must not hold to be taken off: what asks for something (a verb
-# of the grammar's tasks or of wanting), the speaker as a recipient, what chooses, orders,
-# corrects, doubts or puts off, and what takes something ('have it', 'keep')
-_SPEAKER_HELD24 = re.compile(
-    r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
-    r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
-    r"fancy|prefer|"
-    r"have (?:it|them|that|this|those|these|one|both|all)|for me|to me|me the|me that|me it|"
-    r"which|whichever|who|whoever|whom|whose|either|or|neither|nor|instead|rather|actually|"
-    r"first|next|last|before|after|once|when|until|till|unless|if|later|tomorrow|wrong|mean|"
-    r"meant|mistake|change|changed|swap|cancel|scratch|forget|forgot|remember|know|sure|"
-    r"track|ignore|wait|hang|hold|other|others|another|else|same|rest|each|every|too|also|"
-    r"as well|only one)\b|\d",
-    _F,
-)
-
-
-# what may open the sentence of such a stretch, taken off with it ("Oh, sorry, I've got clay up
-# to my elbows from the wheel.")
-_INTERJECTION24 = re.compile(
-    r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
-    r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there)",
-    _F,
-)
-
 
 # Greetings, thanks, blessings and polite particles of other languages that speakers of English
 # as a second language (or of a faith) open and close requests with. The list is by KIND, one
@@ -7037,8 +6952,8 @@ _COURTESY24 = (
     r"mas|mbak|bless up|big up|respect|one love|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
-    # polite particles said alone
-    r"krap|khrap|krub|khrub|kha|po|opo|lah|ah"
+    # polite and sentence particles said alone (_PARTICLES)
+    + "|".join(sorted(_PARTICLES, key=lambda w: (-len(w), w)))
 )
 _COURTESY_WORD24 = re.compile(rf"\b(?:{_COURTESY24})\b", _F)
 _COURTESY_STRETCH24 = re.compile(
@@ -7156,38 +7071,119 @@ def _closers25(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# a correction cue: a remark of the speaker's before one is not taken off
-_CUE_AFTER24 = re.compile(
+# -- the speaker's remarks: one rule (session 22's and session 24's, merged in session 25) ---------
+#
+# The speaker talking about themself asks nothing, wherever it is said ("I'm the farmer, my boots
+# are filthy so I won't come in.", "Then I'm off to warm up my voice.", "…, I keep losing it",
+# "Would you mind taking the blue mug over to Carol while I sort the rota?", "I'm the vicar, here to
+# bless the new wing."). A stretch is the text between punctuation marks, or from a joining word
+# before 'I' / 'my' to the next mark. It is a remark, taken off, when
+# - its subject is the speaker ('I', 'I'm', 'my back's', 'my new boots are', "it's my day off",
+#   "that's me"), after joining words ('and', 'so', 'then', 'while', 'because', 'look', …); or,
+#   right after such a stretch in its sentence, it says what the speaker is doing or why they are
+#   here ('just dropping the new frames round', 'only in to water the spider plants', 'here to
+#   bless the new wing'), warns of the speaker's own things ('mind the smoke on my jacket') or is
+#   a sentence that asks nothing by itself (_inert_sentence);
+# - it names nothing in the scene (nor by a typo);
+# - it holds no word that asks for something (a verb of the grammar's tasks or of wanting, 'for
+#   me', 'to me', 'have it'), chooses, orders, corrects, doubts or puts off (_SPEAKER_HELD).
+#   Pronouns are allowed ("I keep losing it", "I misheard her", "I could see him shaking"): with
+#   no verb of giving or wanting, a clause of the speaker's cannot ask for what the pronoun names;
+# - no correction cue follows it, unless nothing has been named before it: taken off between what
+#   the speaker corrects and the correction, it would join the two ("… to Zoe, sorry, Noah, I
+#   always mix the two of them up, correction, the globe");
+# and what is left names something. What opens its sentence goes with it when that asks nothing
+# either: interjections, greetings and apologies ('Oh, sorry, …', 'Sorry to bother you, …',
+# 'Afternoon, …'), a warning about the speaker's own things. 'I' or 'me' as a recipient stays, and
+# is refused ("give me the cup", "I need the cup", "I'd like it", "then I'll have it").
+_SPEAKER_OPEN = re.compile(
+    r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now|look)\s+)*"
+    r"(?:i(?:'m|'ve|'ll|'d)?|my (?:[a-z]+ ){1,2}(?:is|are|was|were|has|have|keeps?)|"
+    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me)\b",
+    _F,
+)
+# what may follow such a stretch in its sentence, still about the speaker
+_SPEAKER_MORE = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
+# a warning about the speaker's own things
+_MIND_MINE = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
+_SPEAKER_HELD = re.compile(
+    r"\b(?:give|gives|hand|pass|bring|take|put|place|set|get|send|move|fetch|grab|drop|pop|"
+    r"carry|deliver|leave|keep(?! [a-z]+ing\b)|want|wants|wanted|needs?(?! to\b)|needed|like|love|"
+    r"fancy|prefer|"
+    r"have (?:it|them|that|this|those|these|one|both|all)|for me|to me|me the|me that|me it|"
+    r"which|whichever|who|whoever|whom|whose|either|or|neither|nor|instead|rather|actually|"
+    r"first|next|last|before|after|once|when|until|till|unless|if|later|tomorrow|wrong|mean|"
+    r"meant|mistake|change|changed|swap|cancel|scratch|forget|forgot|remember|know|sure|"
+    r"track|ignore|wait|hang|hold|other|others|another|else|same|rest|each|every|too|also|"
+    r"as well|only one)\b|\d",
+    _F,
+)
+# what may open the sentence of such a stretch, taken off with it
+_SPEAKER_OPENER = re.compile(
+    r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
+    r"afternoon|evening|good (?:morning|afternoon|evening)|hi there|hello there|"
+    rf"(?:so )?sorry {_BOTHERING})",
+    _F,
+)
+_SPEAKER_CUE = re.compile(
     r"\b(?:no(?! (?:trouble|bother|rush|hurry|problem|worries|fuss))|nope|sorry|correction|"
     r"actually|wait|hang on|hold on|i mean|rather|scratch|oops|whoops|make that|instead|not)\b",
     _F,
 )
 
 
-def _speaker_stretch24(piece: str, spoke: bool, lexicon: Lexicon) -> bool:
-    """Whether ``piece`` is the speaker talking about themself (or, right after such a stretch,
-    ``spoke``, what they are doing), naming nothing in the scene and asking nothing."""
+# a remark needs one of these words (its subject, or a call's '!')
+_REMARK_OPEN = re.compile(
+    r"\b(?:i|i'm|i've|i'll|i'd|im|ive|my|me|we|we're|we've|you|you're|you've|your|hope|hoping|"
+    r"have a|force of|old|chef|kitchen|workshop)\b|!",
+    _F,
+)
+# where a stretch ends: a punctuation mark (a full stop before a space or the end), a dash
+_REMARK_MARKS = re.compile(
+    r"(\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$))(?:\s*(?:[,;:!?—–]|\.\.\.|\.(?=\s|$)))*\s*|\s+-\s+)"
+)
+_REMARK_JOINS = (",", ";", ":", "—", "–", "-")
+_STOPS = (".", "!", "?", "...")
+
+
+def _speaker_stretch(
+    piece: str, spoke: bool, lexicon: Lexicon, *, right_after: bool = False
+) -> bool:
+    """Whether ``piece`` is the speaker talking about themself (or, after such a stretch in its
+    sentence, ``spoke``, what they are doing; right after one, ``right_after``, a warning about
+    their own things or a sentence that asks nothing), naming nothing in the scene and asking
+    nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _SPEAKER_HELD24.search(piece) or not _names_nothing(piece, lexicon):
+    if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
         return False
-    return bool(_SPEAKER_OPEN24.match(piece) or (spoke and _SPEAKER_MORE24.match(piece)))
+    return bool(
+        _SPEAKER_OPEN.match(piece)
+        or (spoke and _SPEAKER_MORE.match(piece))
+        or (right_after and (_MIND_MINE.match(piece) or _inert_sentence(piece, lexicon)))
+    )
 
 
-def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
-    """Session 24: the speaker talking about themself anywhere in the instruction ("Then I'm off
-    to warm up my voice.", "…, I keep losing it", "Would you mind taking the blue mug over to
-    Carol while I sort the rota?", "I'm the vicar, here to bless the new wing."): a stretch
-    between punctuation marks, or from a joining word before 'I' / 'my' to the next mark, whose
-    subject is the speaker, that names nothing in the scene and holds no word that asks for
-    something (a task verb, a verb of wanting, 'for me'), chooses, orders, corrects, doubts or
-    puts off, is a remark: taken off, when what is left names something. 'I' or 'me' that is a
-    recipient ("give me the cup", "I need the cup", "I'd like it") stays, and is refused."""
-    if not _rx(r"\b(?:i|i'm|i've|i'll|i'd|my|me)\b").search(text):
+def _opener(piece: str, lexicon: Lexicon) -> bool:
+    """Whether ``piece`` opening a remark's sentence asks nothing (an interjection, a greeting, an
+    apology, a warning about the speaker's things, a sentence inert by itself)."""
+    piece = piece.strip()
+    if _SPEAKER_OPENER.fullmatch(piece) or _MIND_MINE.match(piece):
+        return _names_nothing(piece, lexicon) and not _SPEAKER_HELD.search(piece)
+    return _inert_sentence(piece, lexicon) and not _SPEAKER_HELD.search(piece)
+
+
+def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
+    """The speaker's remarks (the rule above) and the session-15 clauses about the speaker, the
+    hearer or the moment (_remark_clause), anywhere in the instruction, taken off when what is
+    left names something; with a call of a few words opening the text ("Behind!"), an apology
+    next to a remark, and the 'but' / 'so' / 'and' that joins a remark to the request."""
+    if not _REMARK_OPEN.search(text):
         return text
-    pieces = re.split(r"(\s*[,;.!?]+\s*)", text)
+    pieces = _REMARK_MARKS.split(text)
     out: list[str] = []
     dropped = False
-    spoke = False
+    spoke = False  # the last piece read was a remark, in the same sentence
+    after = False  # the last piece read was taken off
     opened = 0  # where the sentence being read starts in ``out``
     for n in range(0, len(pieces), 2):
         piece = pieces[n]
@@ -7199,38 +7195,51 @@ def _speaker_remarks24(text: str, lexicon: Lexicon) -> str:
             r"(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
-        remark = _speaker_stretch24(tail, spoke, lexicon)
-        if remark and _speaker_stretch24(head, False, lexicon):
+        remark = _speaker_stretch(tail, spoke, lexicon, right_after=after and not head)
+        if remark and _speaker_stretch(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
+        if not remark and (
+            _remark_clause(piece, lexicon)
+            # "Behind!", "Mind your backs!": a call opening the text
+            or (n == 0 and mark.strip() == "!" and _call(piece, lexicon))
+            # "Sorry, force of habit.": the apology for a remark goes with it
+            or (after and _rx(r"(?:oh |so )?sorry(?: sorry)?").fullmatch(piece.strip()))
+        ):
+            remark, head = True, ""
         if (
             remark
             and (not head or _names(head, lexicon))
-            and not _CUE_AFTER24.search("".join(pieces[n + 1 :]))
+            and (
+                not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
+                or not _names("".join(out) + head, lexicon)
+                # session 15's clause holds every pointing and correcting word: it joins nothing
+                or (not head and _remark_clause(piece, lexicon))
+            )
         ):
-            # (not before a correction: taken off, the remark would join what the speaker
-            # corrected to what they correct next: "… to Zoe, sorry, Noah, I always mix the two
-            # of them up, correction, the globe")
-            dropped, spoke = True, True
+            dropped, spoke, after = True, True, not head
             if head:
                 out.append(head)
                 out.append(mark)
-            elif all(_INTERJECTION24.fullmatch(x.strip()) for x in out[opened::2]):
+            elif all(_opener(x, lexicon) for x in out[opened::2]):
                 del out[opened:]  # "Oh, sorry, I've got clay up to my elbows." → ""
-            elif out and mark.strip() in (".", "!", "?") and out[-1].strip() == ",":
+            elif out and mark.strip() in _STOPS and out[-1].strip() in _REMARK_JOINS:
                 out[-1] = mark  # "…, I misheard her." → "…."
             if any(c in mark for c in ".!?"):
                 opened = len(out)
             continue
+        if after:
+            piece = _rx(r"^(?:but|so|and)\b,?\s*").sub("", piece)  # "…, but could you …"
         spoke = spoke and not any(c in mark for c in ".!?")
+        after = False
         out.append(piece)
         out.append(mark)
         if any(c in mark for c in ".!?"):
             opened = len(out)
     if not dropped:
         return text
-    said = "".join(out).strip(" ,;")
-    said = re.sub(r"^[,;.!?\s]+", "", said)
-    said = re.sub(r"\s*,\s*([.!?])", r"\1", said)
+    said = "".join(out).strip(" ,;:—–-")
+    said = re.sub(r"^[,;:.!?\s]+", "", said)
+    said = re.sub(r"\s*[,;:]\s*([.!?])", r"\1", said)
     return said if _names(said, lexicon) else text
 
 
@@ -7876,7 +7885,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _order_again,
     _redone,
     _said_why,
-    _remarks15,
+    _speaker_remarks,
     _either_of,
     _either_fine,
     _any_again,
@@ -7961,8 +7970,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _attention21,
     _speaker21,
     _reasons21,
-    _speaker_remarks22,
-    _speaker_remarks24,
+    _doing25,
+    _speaker_remarks,
     _asides22,
     _one_person22,
     _negation22,

@@ -262,12 +262,15 @@ def _stubs(text: str, lexicon: Lexicon) -> int:
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
 
 # a correction cue, then 'leave it' / 'forget it' / 'never mind': the request before is taken back
+# (or opening a sentence: 'Forget that, …', 'Never mind, …', 'Cancel that.')
 _TAKEN_BACK = re.compile(
-    r"\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
+    r"(?:\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
     r"(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|forget (?:it|that)|"
-    r"never mind(?: (?:it|that))?)\s*(?=[,.;!?]|$)",
+    r"never mind(?: (?:it|that))?)|(?<=[.!?] )(?:forget (?:it|that)|never mind(?: (?:it|that))?|"
+    r"cancel that))\s*(?=[,.;!?]|$)",
     re.I,
 )
+
 # what a new request said after it opens with: a verb of the grammar's tasks
 _NEW_REQUEST = re.compile(
     r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
@@ -278,7 +281,7 @@ _NEW_REQUEST = re.compile(
 # a request said before it (a verb of the grammar's tasks or of wanting)
 _REQUESTED = re.compile(
     r"\b(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver|"
-    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have)\b",
+    r"wants?|needs?|would like|'d like|gets?|should have|can have|could have|due)\b",
     re.I,
 )
 
@@ -287,15 +290,21 @@ def _taken_back(text: str) -> None:
     """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
     cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
     25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
-    verb, or 'instead') and what it replaces is one request ('Put the notebook on the desk.
-    Actually no, leave it, put the stapler there instead.' is read by the correction rules);
-    with two requests before it ('Bob wants the cup, hand it to him, no, leave it, …') which
-    one is taken back is unclear."""
+    verb, or 'instead') and what it replaces is one request said in one stretch ('Put the
+    notebook on the desk. Actually no, leave it, put the stapler there instead.' is read by the
+    correction rules); with more before it ('Bob wants the cup, hand it to him, no, leave it, …',
+    'Give Alice the apple. Now. Forget that, …') which is taken back is unclear."""
     m = _TAKEN_BACK.search(text)
     if m is None:
         return
     rest = text[m.end() :].strip(" ,.;!?")
-    if rest and _NEW_REQUEST.search(rest) and len(_REQUESTED.findall(text[: m.start()])) <= 1:
+    before = text[: m.start()].strip(" ,.;!?")
+    if (
+        rest
+        and _NEW_REQUEST.search(rest)
+        and len(_REQUESTED.findall(before)) <= 1
+        and not re.search(r"[,.;!?]", before)
+    ):
         return
     raise GroundingError(
         f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
