@@ -93,7 +93,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who changed the grounder before its one measurement at the end of session 23;
 # tuned on in session 24), blind23 (written in session 24 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
-# its one measurement at the end of session 24; tests do not assert it).
+# its one measurement at the end of session 24; tuned on in session 25), blind24 (written in
+# session 25 by another engineer and committed alone, reviewed by a second engineer, never opened
+# by the engineers who changed the grounder before its one measurement at the end of session 25;
+# tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -134,6 +137,7 @@ PARTS = (
     "blind21",
     "blind22",
     "blind23",
+    "blind24",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
