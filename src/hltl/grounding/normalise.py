@@ -7198,8 +7198,9 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
         remark = _speaker_stretch(tail, spoke, lexicon, right_after=after and not head)
         if remark and _speaker_stretch(head, False, lexicon):
             head = ""  # "my wife keeps tripping over it and I can't hear her shout": both
+        clause = None if remark else _remark_clause(piece, lexicon)  # (asked once a piece)
         if not remark and (
-            _remark_clause(piece, lexicon)
+            clause
             # "Behind!", "Mind your backs!": a call opening the text
             or (n == 0 and mark.strip() == "!" and _call(piece, lexicon))
             # "Sorry, force of habit.": the apology for a remark goes with it
@@ -7213,7 +7214,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
                 not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
                 or not _names("".join(out) + head, lexicon)
                 # session 15's clause holds every pointing and correcting word: it joins nothing
-                or (not head and _remark_clause(piece, lexicon))
+                or (not head and (_remark_clause(piece, lexicon) if clause is None else clause))
             )
         ):
             dropped, spoke, after = True, True, not head

@@ -271,19 +271,21 @@ _TAKEN_BACK = re.compile(
     re.I,
 )
 
+# the grammar's task verbs, as the two patterns below look for them
+_TASK_VERB = r"give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver"
 # what a new request said after it opens with: a verb of the grammar's tasks
 _NEW_REQUEST = re.compile(
     r"(?:^|[,.;!?]\s*)(?:(?:sorry|please|just|now|then|so|and|could you|can you|would you|"
-    r"will you)[\s,]+)*(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|"
-    r"drop|deliver)\b|\binstead\b",
+    rf"will you)[\s,]+)*(?:{_TASK_VERB})\b|\binstead\b",
     re.I,
 )
 # a request said before it (a verb of the grammar's tasks or of wanting)
 _REQUESTED = re.compile(
-    r"\b(?:give|hand|pass|bring|take|put|place|set|pop|stick|move|send|fetch|drop|deliver|"
+    rf"\b(?:{_TASK_VERB}|"
     r"wants?|needs?|would like|'d like|gets?|should have|can have|could have|due)\b",
     re.I,
 )
+_MARK = re.compile(r"[,.;!?]")
 
 
 def _taken_back(text: str) -> None:
@@ -303,7 +305,7 @@ def _taken_back(text: str) -> None:
         rest
         and _NEW_REQUEST.search(rest)
         and len(_REQUESTED.findall(before)) <= 1
-        and not re.search(r"[,.;!?]", before)
+        and not _MARK.search(before)
     ):
         return
     raise GroundingError(
