@@ -2333,6 +2333,12 @@ def _payload(query: Any) -> bytes:
     return b"" if p is None else bytes(p.to_bytes())
 
 
+def _relay(stop: threading.Event, wake: threading.Event) -> None:
+    """Set ``wake`` once ``stop`` is set."""
+    stop.wait()
+    wake.set()
+
+
 def serve(
     session: Any,
     scene: Scene,
@@ -2345,14 +2351,22 @@ def serve(
     on_ready: Callable[[CellNode], None] | None = None,
     period: float | None = None,
 ) -> NodeStats:
-    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set."""
+    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set.
+
+    This thread waits without a timeout (a thread waking ten times a second takes the
+    interpreter lock from the node's step thread as often: see :class:`_Inbox`); ``stop`` is
+    relayed to it by a thread of its own that waits on it alone."""
     stop = threading.Event() if stop is None else stop
     with CellNode(session, scene, cell=cell, factory=factory, faults=faults, period=period) as node:
         if on_ready is not None:
             on_ready(node)
+        wake = node.finished
+        threading.Thread(
+            target=_relay, args=(stop, wake), name="hltl-node-stop", daemon=True
+        ).start()
         while not stop.is_set():
-            if node.finished.wait(0.1):
-                node.finished.clear()
-                if episodes is not None and node.stats.finished >= episodes:
-                    break
+            wake.wait()
+            wake.clear()
+            if episodes is not None and node.stats.finished >= episodes:
+                break
         return node.stats
