@@ -310,3 +310,56 @@ def test_closing_remarks_that_ask_nothing() -> None:
     assert_refused("give the bottle to bob he's after it", TWO)
     assert_refused("give the bottle to bob she's got the crisps", TWO)
     assert_refused("The apple to Carol, while it's not busy.")
+
+
+# -- (i) one each of two objects, 'whoever', a header, 'clear … onto', a correction first -------
+
+
+def test_one_each_of_two_named_objects_any_way_round() -> None:
+    swap = "(bottle>A & chips>B) | (chips>A & bottle>B)"
+    assert_reads(
+        "Person A and Person B, one each, the bottle and the chips, I don't mind who gets what.",
+        swap,
+        DUO,
+    )
+    assert_reads(
+        "Give Alice and Bob one thing each, the bottle and the crisps, any way round.",
+        "(bottle>A & chips>B) | (chips>A & bottle>B)",
+        TWO,
+    )
+    # with no word that any way will do, 'one each' could be in the order said: refused
+    assert_refused("Person A and Person B, one each, the bottle and the chips.", DUO)
+    # one person twice, or three objects: refused
+    assert_refused("Person A and Person A, one each, the bottle and the chips, any way round.", DUO)
+    assert_refused(
+        "Person A and Person B, one each, the bottle, the cup and the chips, any way round.", F41
+    )
+
+
+def test_whoever_of_two_people_and_a_header() -> None:
+    kitchen = load_scene(ROOT / "tests/grounding/paraphrase/scenes/kitchen.yaml")
+    assert_reads(
+        "Lena or Marco, whoever, give one of them the tongs.", "tongs>B | tongs>A", kitchen
+    )
+    assert_reads("Give one of Lena or Marco the tongs.", "tongs>B | tongs>A", kitchen)
+    assert_refused("Lena or Dave, whoever, give one of them the tongs.", kitchen)
+    assert_reads(
+        "Both of them want feeding: chips for Person A, bottle for Person B.",
+        "chips>A & bottle>B",
+        DUO,
+    )
+    # the header's people not both named after it: refused
+    assert_refused("Both of them want feeding: chips for Person A.", DUO)
+
+
+def test_clear_onto_and_a_correction_before_the_recipient() -> None:
+    assert_reads(
+        "Clear the lot onto the shelf except for the two mugs.",
+        "cup@shelf & bottle@shelf & chips@shelf & apple@shelf",
+    )
+    assert_refused("Clear the shelf.")
+    assert_reads("The chips, no, the bottle, silly me, to Person A.", "bottle>A", ONE)
+    assert_reads("The chips, no, the bottle, to Person A.", "bottle>A", F41)
+    # a person where an object was, or an object the scene has twice: refused
+    assert_refused("The chips, no, Person B, to Person A.", F41)
+    assert_refused("The chips, no, the mug, to Person A.")

@@ -7373,6 +7373,100 @@ def _run_on_remark26(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + m.group(2)
 
 
+_PERSON26 = r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+)"
+_ANY_WAY26 = (
+    r"(?:either way round|either way around|any way round|any which way|whichever way(?: round)?|"
+    r"(?:i|we) don't mind who gets (?:what|which)|(?:it )?doesn't matter who gets (?:what|which))"
+)
+
+
+def _one_each26(text: str, lexicon: Lexicon) -> str:
+    """'P and Q, one (thing) each, the X and the Y, any way round' / '…, I don't mind who gets
+    what': P the X and Q the Y, or the other way round (two people, two objects; without a word
+    saying any way will do, 'one each' could be in the order said, so it is left)."""
+
+    def each(m: re.Match[str]) -> str:
+        p, q, x, y = m.group(1), m.group(2), m.group(3), m.group(4)
+        if _one_name(p, lexicon, "human") is None or _one_name(q, lexicon, "human") is None:
+            return m.group(0)
+        if _one_name(p, lexicon, "human") == _one_name(q, lexicon, "human"):
+            return m.group(0)
+        if len(_objects_listed(f"{x} and {y}", lexicon)) != 2:
+            return m.group(0)
+        x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
+        return f"Give {p} {x} and {q} {y}, or the other way round{m.group(5)}"
+
+    return _sub(
+        rf"^(?:give )?{_PERSON26} and {_PERSON26},?\s*(?:can have |get |each get )?"
+        r"(?:one|one thing|one item|a thing|an item) (?:each|apiece),\s*"
+        r"((?:the )?[a-z]+) and ((?:the )?[a-z]+),\s*" + _ANY_WAY26 + r"(?: you like)?\s*([.!]?)$",
+        each,
+        text,
+    )
+
+
+def _whoever26(text: str, lexicon: Lexicon) -> str:
+    """'P or Q, whoever, give one of them the X' / 'Give one of P or Q the X': the X to P or Q."""
+
+    def whoever(m: re.Match[str]) -> str:
+        if _one_name(m.group(1), lexicon, "human") is None:
+            return m.group(0)
+        if _one_name(m.group(2), lexicon, "human") is None:
+            return m.group(0)
+        return f"give {m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+
+    out = _sub(
+        rf"^{_PERSON26} or {_PERSON26},\s*(?:whoever|whichever|either(?: one| of them)?),\s*"
+        r"(?:give|hand|pass) one of them (the [a-z ]+?)\s*([.!]?)$",
+        whoever,
+        text,
+    )
+    return _sub(
+        rf"^(?:give|hand|pass) one of {_PERSON26} or {_PERSON26} (the [a-z ]+?)\s*([.!]?)$",
+        whoever,
+        out,
+    )
+
+
+def _headed26(text: str, lexicon: Lexicon) -> str:
+    """'Both of them want feeding: chips for Person A, bottle for Person B': a header saying that
+    the people named after it want something, before the colon, asks nothing by itself (taken off
+    when what follows names two people); 'Clear the lot onto the shelf' (put it all there)."""
+    m = re.match(
+        r"^(?:both of them|they both|the two of them|both) (?:want|need)s? [a-z]+ing\s*:\s*",
+        text,
+        _F,
+    )
+    if m is not None and len(_ids(text[m.end() :], lexicon, "human")) == 2:
+        text = text[m.end() :]
+    return _sub(
+        r"^clear (the lot|everything|it all|all of it|all the things) (onto|into|on|in)\b",
+        r"put \1 \2",
+        text,
+    )
+
+
+def _corrected_first26(text: str, lexicon: Lexicon) -> str:
+    """'The chips, no, the bottle, (silly me,) to Person A': the one object named (or a word
+    naming nothing of the scene), corrected before its recipient is said — the bottle to Person
+    A."""
+
+    def first(m: re.Match[str]) -> str:
+        said = _names(m.group(1), lexicon)
+        if said and _one_name(m.group(1), lexicon, "object") is None:
+            return m.group(0)  # what is corrected is an object, or nothing of the scene
+        if _one_name(m.group(2), lexicon, "object") is None:
+            return m.group(0)
+        return f"{m.group(2)} "
+
+    return _sub(
+        r"^(the [a-z]+),\s*(?:no|sorry|no wait|i mean|no,\s*sorry),\s*(the [a-z]+),\s*"
+        r"(?:(?:silly me|my mistake|my bad|my fault|sorry),\s*)?(?=(?:to|for) )",
+        first,
+        text,
+    )
+
+
 def _while26(text: str, lexicon: Lexicon) -> str:
     """A closing 'while it's quiet' / 'while you're there' / 'while you're at it': when to do it,
     now, asks for nothing more (taken off when it names nothing in the scene)."""
@@ -8321,4 +8415,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _choices26,
     _let_go26,
     _run_on_remark26,
+    _one_each26,
+    _whoever26,
+    _headed26,
+    _corrected_first26,
 )
