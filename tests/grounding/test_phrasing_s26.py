@@ -309,6 +309,9 @@ def test_closing_remarks_that_ask_nothing() -> None:
     assert_refused("give the bottle to bob he's not here", TWO)
     assert_refused("give the bottle to bob he's after it", TWO)
     assert_refused("give the bottle to bob she's got the crisps", TWO)
+    # joined to the request by 'after' / 'once' / 'when': a condition, not a remark
+    assert_refused("give Alice the cup and give Alice the apple after they're there")
+    assert_refused("give Alice the cup and give Alice the apple once she's ready")
     assert_refused("The apple to Carol, while it's not busy.")
 
 

@@ -7349,8 +7349,13 @@ def _let_go26(text: str, lexicon: Lexicon) -> str:
 _RUN_ON_HELD26 = re.compile(
     r"\b(?:not|n't|no|never|it|them|him|her|his|me|my|i|you|instead|first|then|later|after|before|"
     r"wants?|needs?|give|hand|bring|take|put|place|have|get|gets|one|other|both|all|each|too|also|"
-    r"only|just|either|or|and|but|if|when|once|two|three|four|five|six|several)\b",
+    r"only|just|either|or|and|but|if|when|once|two|three|four|five|six|several|there|here)\b",
     _F,
+)
+# a word before 'he's' / 'she's' that joins what follows to the request as a clause of it
+_JOINS26 = (
+    r"\b(?:after|before|once|when|whenever|until|till|if|unless|as|because|cos|since|so|and|but|"
+    r"or|while|whilst|that|which|who|where|then|than|though|although|in case)\s*$"
 )
 
 
@@ -7370,6 +7375,8 @@ def _run_on_remark26(text: str, lexicon: Lexicon) -> str:
     said = re.sub(r"^(?:he|she|they)(?:'s|'re|'ve)?", "", m.group(1).lower())
     if _RUN_ON_HELD26.search(said) or not _names(text[: m.start()], lexicon):
         return text
+    if re.search(_JOINS26, text[: m.start()], _F):
+        return text  # "… after they're there": a clause joined to the request, not a remark
     return text[: m.start()] + m.group(2)
 
 
