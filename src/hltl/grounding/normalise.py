@@ -7134,11 +7134,20 @@ def _brought26(text: str, lexicon: Lexicon) -> str:
 
     return _sub(
         r"\b(wants?|needs?|would like|'d like|is after) (the [a-z ]+?|it|them) "
-        r"(?:brought|fetched|taken|carried|sent|passed)(?: over| across| round| along| back)?"
+        r"(?:(?:brought|fetched)(?: over| across| round| along| back)?|"
+        r"(?:sent|passed)(?: over| across| round| along))"
         r"(?: from ((?:the |your |my |our |over )?[a-z' ]+?))?(?=\s*(?:[,.;!?]|$|\band\b))",
         brought,
         text,
     )
+
+
+# words of time after 'at the / in the / by the': when a task is done, not where a person is
+_WHEN26 = (
+    r"\b(?:end|start|beginning|moment|same time|last|first|time|minute|second|break|lunch|"
+    r"weekend|night|morning|evening|afternoon|day|meeting|interval|half|match|finish|close|"
+    r"latest|earliest|mo|sec|rush|shift|round)\b"
+)
 
 
 def _located26(text: str, lexicon: Lexicon) -> str:
@@ -7153,6 +7162,8 @@ def _located26(text: str, lexicon: Lexicon) -> str:
             r"\b(?:him|her|them|me|us|it|his|my|your|their)\b", m.group(3), _F
         ):
             return m.group(0)
+        if re.search(_WHEN26, m.group(3), _F):
+            return m.group(0)  # "… to Bob at the end": when, not where (an order)
         return f"{m.group(1)} {m.group(2)}"
 
     return _sub(
@@ -7167,7 +7178,9 @@ def _located26(text: str, lexicon: Lexicon) -> str:
 def _same_place26(text: str, lexicon: Lexicon) -> str:
     """'…, then the thermometer, same place': the one surface named before it (with the
     preposition said there); with none, or more than one, before it, it is left, and refused."""
-    m = re.search(r",?\s*\b(?:in |on |at |onto |into )?(?:the )?same place\b", text, _F)
+    m = re.search(
+        r",?\s*\b(?:in |on |at |onto |into )?(?:the )?same place\b(?=\s*(?:[,.;!?]|$))", text, _F
+    )
     if m is None:
         return text
     before = text[: m.start()]
@@ -7200,7 +7213,8 @@ def _subject_comma26(text: str, lexicon: Lexicon) -> str:
 
 def _phrasal26(text: str, lexicon: Lexicon) -> str:
     """Phrasal verbs of handing over: 'sort X out for P' (get X for P), 'sort P out with X'
-    (give P X); 'keep X away from P' (not X: said beside a request, P does not get it)."""
+    (give P X); ', but keep X away from him / her' after a request naming one person (', but not
+    X': that person does not get it)."""
     out = _sub(r"\bsort (the [a-z ]+?|it|them) out for\b", r"get \1 for", text)
 
     def sort_with(m: re.Match[str]) -> str:
@@ -7211,9 +7225,10 @@ def _phrasal26(text: str, lexicon: Lexicon) -> str:
         return f"{m.group(1)}give {m.group(2)}"
 
     out = _sub(r"(^|\s)sort ([a-z]+(?: [a-z]+)?) out with\b", sort_with, out)
+    if len(_ids(out, lexicon, "human")) != 1:
+        return out  # 'away from her' is the one person the request names, or unclear
     return _sub(
-        r",\s*but keep (the [a-z ]+?|it|them) away from (?:him|her|them|[a-z]+(?: [a-z]+)?)"
-        r"(?=\s*(?:[,.;!?]|$))",
+        r",\s*but keep (the [a-z ]+?|it|them) away from (?:him|her|them)(?=\s*(?:[,.;!?]|$))",
         r", but not \1",
         out,
     )
