@@ -171,6 +171,7 @@ def test_brought_over_with_no_place_is_the_wanter() -> None:
         LAB,
     )
     assert_reads("Mia needs the tape fetched across.", "tape>A", DEPOT)
+    assert_refused("Person B wants the bottle taken.", DUO)  # taken where?
     # from a person: whose it is, or where it is taken from, is not a remark
     assert_refused("Person B wants the bottle brought over from Person A.", DUO)
     assert_reads("Person B wants the bottle brought over to Person A.", "bottle>A", DUO)
@@ -183,8 +184,10 @@ def test_where_a_person_is_after_to_person() -> None:
     )
     assert_reads("The crisps go over to Carol at the till.", "chips>C")
     assert_reads("Take the apple to Bob in the staff room.", "apple>B")
-    # a place of the scene after the person could be where it goes: refused
+    # a place of the scene after the person could be where it goes, a time word says when:
+    # refused
     assert_refused("Give the cup to Bob on the shelf.")
+    assert_refused("Give Alice the apple, and the cup to Bob at the end.")
     assert_refused("Take the apple to Bob at the table.")
 
 
@@ -232,6 +235,8 @@ def test_sort_out_and_keep_away() -> None:
     assert_reads("Any chance you could sort Person B out with the cup?", "cup>B", F41)
     assert_reads("Could you sort Bob out with the crisps?", "chips>B", TWO)
     assert_reads("Alice can have the bottle, but keep the crisps away from her.", "bottle>A", TWO)
+    # away from someone else than the one person asked for: refused
+    assert_refused("Give Alice the bottle, but keep the crisps away from Bob.", TWO)
     # 'sort out' with no one to have it, or with an unknown name, stays refused
     assert_refused("Sort the chips out.", DUO)
     assert_refused("Could you sort Dave out with the cup?", F41)
