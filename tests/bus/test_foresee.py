@@ -10,7 +10,7 @@ import pytest
 from hltl.bus import node as node_module
 from hltl.bus.codec import WireBriefing
 from hltl.bus.driver import BusCell
-from hltl.errors import BusError, GroundingError
+from hltl.errors import GroundingError
 from hltl.grounding import make_grounder
 from hltl.sim.dynamic import make_trial
 from hltl.sim.episode import run_episode
@@ -146,9 +146,6 @@ def test_the_first_step_is_foreseen(
     # the node grounded the instruction itself from the executor's briefing, and the
     # executor's first spec was the one it grounded
     assert run.node.stats.briefed == 1 and run.node.stats.respecs == 0
-    # grounded as soon as the reset was answered (the reset carried the instruction): the
-    # briefing took that spec
-    assert run.node.stats.said_early == 1
 
 
 def test_no_briefing_without_the_offline_grounder(
@@ -163,7 +160,6 @@ def test_no_briefing_without_the_offline_grounder(
     run = loopback.run(trial.scene, **ep, grounder=make_grounder("offline"))
     same_as_local(local, run)
     assert run.node.stats.briefed == 0 and run.node.stats.foreseen_kept >= 1
-    assert run.node.stats.said_early == 0  # (nor the instruction with the reset)
     spec = next(r for r in local.records if r.type == "grounding").spec
     given = {"spec": spec_from_dict(spec), "events": trial.events, "seed": trial.seed}
     local = run_episode(trial.scene, **given)
@@ -183,41 +179,6 @@ def test_a_wrong_briefing_never_shows(loopback: Loopback, monkeypatch: pytest.Mo
     monkeypatch.setattr(node_module, "ground_instruction", lambda g, _text, *a: real(g, other, *a))
     run = _both(loopback, "4-1", 0)
     assert run.node.stats.briefed == 1 and run.node.stats.respecs == 1
-
-
-def test_a_reset_naming_another_instruction_is_not_taken(
-    loopback: Loopback, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """The node grounds the instruction its reset carried as soon as it has answered the reset,
-    and the briefing takes that spec only when it names the same instruction: a reset naming
-    another one (here another trial's) leaves the briefing to ground its own, and the log is
-    the in-process one."""
-    patient_foresight(monkeypatch)
-    other = make_trial("4-2", 1).instruction
-    init = BusCell.__init__
-
-    def told_another(self: BusCell, *a: Any, **kw: Any) -> None:
-        init(self, *a, **{**kw, "instruction": other})
-
-    monkeypatch.setattr(BusCell, "__init__", told_another)
-    run = _both(loopback, "4-1", 0)
-    assert run.node.stats.briefed == 1 and run.node.stats.said_early == 0
-    assert run.node.stats.respecs == 0 and run.node.stats.foreseen_kept >= 1
-
-
-def test_a_reset_with_a_malformed_instruction_is_refused(loopback: Loopback) -> None:
-    """An instruction on the reset that is not a string makes the reset malformed: the node
-    refuses it with one error naming the field, and the executor raises it."""
-    trial = make_trial("4-1", 0)
-    init = BusCell.__init__
-
-    def garbled(self: BusCell, *a: Any, **kw: Any) -> None:
-        init(self, *a, **{**kw, "instruction": 3})
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(BusCell, "__init__", garbled)
-        with pytest.raises(BusError, match="malformed reset request: instruction must be a string"):
-            loopback.run(trial.scene, instruction=trial.instruction, events=trial.events)
 
 
 def test_a_malformed_briefing_is_dropped(

@@ -279,11 +279,6 @@ class BusCell:
             (sent with the ticks; :meth:`planned`). Off by default: measured under load it
             lengthened the executor's waits more than it saved (docs/bus.md, "Background
             plans made by the node").
-        instruction: the episode's first instruction, when the executor will ground it with
-            the offline grounder and brief the driver (:meth:`brief`): with foresight it rides
-            the reset, for the node to ground it as soon as the reset is answered rather than
-            when the briefing's request comes (``run_episode`` passes it: see
-            :func:`bus_cell`).
 
     Raises:
         BusError: no node serves the cell, or it refuses the episode (another scene): when the
@@ -313,7 +308,6 @@ class BusCell:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
-        instruction: str | None = None,
     ) -> None:
         self.session = session
         self.guess = guess
@@ -403,8 +397,6 @@ class BusCell:
             "perception": {"noise": perception.noise, "latency": perception.latency},
             **self._mode(),
         }
-        if instruction is not None and self.foresight and self._defer:
-            reset["instruction"] = instruction  # (grounded by the node once it has answered)
         self._reset: dict[str, Any] | None = reset
         self._deadline = time.monotonic() + self.timing.connect
         # the reset goes out now; its answer is waited for when the cell is first used (the
@@ -1366,58 +1358,38 @@ def bus_cell(
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
     ``make_cell`` builds it (default :class:`BusCell`, lockstep; see
-    :func:`hltl.bus.realtime.realtime_bus_cell`). The factory takes the episode's first
-    instruction too (``takes_instruction``: ``run_episode`` passes it when its executor will
-    ground it with the offline grounder), which rides the reset (see :class:`BusCell`)."""
-    return _BusCellFactory(
-        BusCell if make_cell is None else make_cell,
-        session,
-        opened,
-        {
-            "cell": cell,
-            "timing": timing,
-            "faults": faults,
-            "tick": tick,
-            "max_time": max_time,
-            "ahead": ahead,
-            "perceived": perceived,
-            "stream": stream,
-            "guess": guess,
-            "foresee": foresee,
-            **({"background": True} if background else {}),
-        },
-    )
+    :func:`hltl.bus.realtime.realtime_bus_cell`)."""
+    build = BusCell if make_cell is None else make_cell
 
-
-class _BusCellFactory:
-    """What :func:`bus_cell` returns: builds a cell per episode, with the options given."""
-
-    # run_episode may pass the episode's first instruction (see bus_cell)
-    takes_instruction = True
-
-    def __init__(
-        self,
-        build: Callable[..., BusCell],
-        session: Any,
-        opened: list[BusCell] | None,
-        options: dict[str, Any],
-    ) -> None:
-        self._build, self._session, self._opened, self._options = build, session, opened, options
-
-    def __call__(
-        self,
+    def make(
         scene: Scene,
         events: EventSchedule,
         *,
         seed: int,
         perception: PerceptionModel,
         log: EventLog,
-        instruction: str | None = None,
     ) -> Cell:
-        said = {} if instruction is None else {"instruction": instruction}
-        c = self._build(
-            self._session, scene, events, seed, perception, log, **self._options, **said
+        c = build(
+            session,
+            scene,
+            events,
+            seed,
+            perception,
+            log,
+            cell=cell,
+            timing=timing,
+            faults=faults,
+            tick=tick,
+            max_time=max_time,
+            ahead=ahead,
+            perceived=perceived,
+            stream=stream,
+            guess=guess,
+            foresee=foresee,
+            **({"background": True} if background else {}),
         )
-        if self._opened is not None:
-            self._opened.append(c)
+        if opened is not None:
+            opened.append(c)
         return c
+
+    return make

@@ -141,9 +141,6 @@ class NodeStats:
     # undone and simulated again takes the first grounding)
     grounded: int = 0
     briefed: int = 0  # of those, first specs grounded here from the executor's briefing
-    # of those, grounded as soon as the reset was answered, from the instruction it carried
-    # (before the briefing came: see CellNode._ground_said)
-    said_early: int = 0
     respecs: int = 0  # of those, replaced by the executor's own (it grounded another spec)
     checked: int = 0  # hinted steps guessed in part, or later, as the executor's check says
     skipped: int = 0  # real-time ticks skipped because the node fell behind the wall clock
@@ -196,10 +193,6 @@ class _Episode:
     ] = field(default_factory=dict)
     # the last stretch simulated ahead (a step it held back is held on in the next one)
     stretch: Any = None
-    # the episode's first instruction as its reset carried it, and once grounded here (right
-    # after the reset's answer, before the briefing comes): its spec, monitor and JSON form
-    said: str | None = None
-    said_spec: tuple[Any, HierarchyMonitor, Any] | None = None
     # the executor's state after each tick along the cell's path (for its background plans),
     # the plans made (by problem digest), those to send with the next answer or reply, and
     # each spec's digest by version (with the spec it was made of)
@@ -598,9 +591,6 @@ class CellNode:
             events = events_from_dict({"events": d["events"]}, scene, "<bus events>")
             perception = PerceptionModel(**d["perception"])
             episode, seed = str(d["episode"]), int(d["seed"])
-            said = d.get("instruction")
-            if said is not None and not isinstance(said, str):
-                raise TypeError(f"instruction must be a string, got {type(said).__name__}")
         except (KeyError, TypeError, ValueError, HltlError) as exc:
             raise BusError(f"malformed reset request: {exc}") from None
         clock = _Clock.parse(d.get("realtime"), self.period)
@@ -618,7 +608,6 @@ class CellNode:
         log = EventLog(on_record=records.append)
         cell = self.factory(scene, events, seed=seed, perception=perception, log=log)
         self._ep = ep = _Episode(episode, cell, records)
-        ep.said = said
         self._seq = 0  # reports are numbered per episode (the executor counts from 0)
         self.stats.episodes += 1
         self.stats.starts = {}
@@ -804,7 +793,6 @@ class CellNode:
         stretch = None
         if _payload(query).startswith(RESET_HEAD):
             self._on_reset(query)
-            self._ground_said()
             return None
         self._await_reset(query)
         with self._guard(query):
@@ -1004,22 +992,6 @@ class CellNode:
         s.q, s.q_now = q, q_now
         return True
 
-    def _ground_said(self) -> None:
-        """Ground the episode's first instruction, when its reset carried it (a lockstep
-        executor that will brief the node sends it with the reset), once the reset's answer
-        has gone: the briefing's own request comes a delivery later (the executor sends it once
-        its executor is built), and the grounding is on the first step's critical path. The
-        briefing then takes this spec when it names the same instruction (:meth:`_take_brief`);
-        an instruction that does not ground is left to the briefing."""
-        with self._lock:
-            ep = self._ep
-            if ep is None or ep.said is None or ep.said_spec is not None or ep.basis is not None:
-                return
-            spec = ground_instruction(self._grounder, ep.said, self.scene, None).spec
-            if spec is not None:
-                wire = loads(dumps(spec_to_dict(spec)), "spec")
-                ep.said_spec = (spec, HierarchyMonitor(spec), wire)
-
     def _take_brief(self, ep: _Episode, d: Any) -> None:
         """The executor's briefing (:class:`~hltl.bus.codec.WireBriefing`): its first
         instruction, grounded here with the offline grounder while the executor grounds it,
@@ -1032,17 +1004,13 @@ class CellNode:
         except BusError:
             self.stats.malformed += 1
             return
-        if ep.said_spec is not None and ep.said == w.instruction:  # (grounded after the reset)
-            spec, monitor, wire = ep.said_spec
-            self.stats.said_early += 1
-        else:
-            spec = ground_instruction(self._grounder, w.instruction, self.scene, None).spec
-            if spec is None:
-                return
-            monitor = HierarchyMonitor(spec)
-            wire = loads(dumps(spec_to_dict(spec)), "spec")
+        spec = ground_instruction(self._grounder, w.instruction, self.scene, None).spec
+        if spec is None:
+            return
+        monitor = HierarchyMonitor(spec)
         basis = Basis(spec, 1, monitor.initial, _planner(w.algorithm, w.timeout))
         forecast = None if w.check is None else w.check.forecast
+        wire = loads(dumps(spec_to_dict(spec)), "spec")
         horizon = None if w.check is None else w.check.horizon
         ep.basis = ep.grounded[1] = _Basis(basis, monitor, _check(w.check), forecast, wire, horizon)
         ep.offline = True

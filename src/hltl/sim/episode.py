@@ -101,9 +101,7 @@ class PacedCell(Protocol):
         ...
 
 
-# Makes an episode's world, called as ``factory(scene, events, seed=, perception=, log=)``; a
-# factory whose ``takes_instruction`` is true is also passed ``instruction=`` (the episode's
-# first instruction, when hltl's executor grounds it with the offline grounder).
+# Makes an episode's world, called as ``factory(scene, events, seed=, perception=, log=)``.
 CellFactory = Callable[..., Cell]
 
 
@@ -234,19 +232,8 @@ def run_episode(
             grounders.append(make_grounder("offline"))
         return ground_all(grounders[0], texts, scene, agent.spec, agent.done_formulas())
 
-    # a factory that can start on the first instruction (a cell on the bus: its node grounds
-    # it as soon as it has started the episode) is told it when the executor will ground it
-    # with the offline grounder and brief its driver (below)
-    early = (
-        {"instruction": instruction}
-        if instruction is not None
-        and grounder is None
-        and agent is None
-        and getattr(simulator, "takes_instruction", False)
-        else {}
-    )
     with EventLog(log_path, on_record) as log:
-        sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log, **early)
+        sim = simulator(scene, schedule, seed=seed, perception=cfg.perception, log=log)
         executor: Agent = (
             Executor(
                 scene,
