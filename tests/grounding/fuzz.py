@@ -8,7 +8,12 @@ refused) or with a correction cut off or left open (refused). A second family (s
 take-backs: the request taken back after it ("…, no, leave it", "… Actually, never mind."; refused),
 taken back and replaced by another handover ("… Actually, never mind that. The <object> to
 <person> instead."; that handover, or refused), and an object of an earlier request let go before
-it ("Never mind the <object>, …"; as the entry, or refused).
+it ("Never mind the <object>, …"; as the entry, or refused). A third family (session 26),
+references: an entry's one object of a kind the scene has several of named by its kind alone ("the
+blue blanket" said as "the blanket", "the one blanket", "that blanket"), or its one person of a
+title two share by the title ("Mrs Khan" as "the patient"), refused with the readings; the same in
+short requests, wants and corrections of the scene; "the one <object>" of a one-of-a-kind object
+(that handover); and the speaker's own want joined to an entry ("We need the <object>, …"; refused).
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -19,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import random
+import re
 import sys
 from collections import Counter
 from collections.abc import Iterator
@@ -122,8 +128,79 @@ LET_GO = (
     "Don't worry about the {o}. ",
     "Oh, never mind the {o}. ",
 )
-Family = Literal["wrappers", "takebacks"]
-FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks")
+# references (session 26; blind24's "Ruth asked for the one blanket." read as either blanket, and
+# the wrapper fuzz's "We need the chips, for Person B, bottle, please give.") : a kind named alone
+# where the scene has several of it ({c}), with the readings; {u} a one-of-a-kind object's kind
+THE_KIND = ("the {c}", "the one {c}", "that {c}")
+KIND_FRAMES = (
+    "{P} asked for the one {c}.",
+    "{P} wants the {c}.",
+    "Give {p} the one {c}, please.",
+    "Could you take the {c} to {p}?",
+    "The one {c} for {p}.",
+    "Can {p} have the {c}?",
+    "{P} needs that {c}.",
+    "Pass {p} the {c}, would you.",
+    "Give {p} the {u}, no, the {c}.",
+    "The {u} to {p}, sorry, I mean the one {c}.",
+    "Hand {p} the {u}, scratch that, the {c}.",
+)
+# the speaker's own want joined to an entry: refused (every opener before an entry that opens
+# with "For <person>, …" or "To <person>, …")
+SPEAKER_OPENERS = (
+    "We need the {o}, ",
+    "I need the {o}, ",
+    "We'd like the {o}, ",
+    "The {o} for us, ",
+    "Bring me the {o}, and ",
+    "I'll take the {o}, ",
+)
+SPEAKER_CLOSERS = (
+    ", and we need the {o}",
+    ". We want the {o} as well.",
+    ", and the {o} for us",
+    ", then bring me the {o}",
+)
+# words that tell a person apart from another of the same title
+_GENDERED = frozenset(
+    [
+        "he",
+        "she",
+        "him",
+        "her",
+        "his",
+        "hers",
+        "himself",
+        "herself",
+        "mr",
+        "mrs",
+        "ms",
+        "miss",
+        "sir",
+        "madam",
+        "lady",
+        "gentleman",
+        "man",
+        "woman",
+        "boy",
+        "girl",
+        "grandpa",
+        "grandma",
+        "granny",
+        "grandad",
+        "lad",
+        "lass",
+        "mum",
+        "dad",
+        "mother",
+        "father",
+        "son",
+        "daughter",
+    ]
+)
+REFERENCE_FORMS = ("kind alone", "title", "frame", "one of a kind", "speaker")
+Family = Literal["wrappers", "takebacks", "references"]
+FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks", "references")
 
 Must = Literal["same", "refuse"]
 
@@ -136,6 +213,8 @@ class Variant:
     want: Node | None  # what it must read as (None: refused); a refusal is always allowed
     must: Must
     family: Family = "wrappers"
+    readings: tuple[str, ...] = ()  # ids a refusal must name (else it is "unclear")
+    form: str = ""  # which of its family's kinds (references: REFERENCE_FORMS)
 
 
 def _name(scene: Scene, oid: str) -> str:
@@ -152,12 +231,16 @@ def _unique_objects(scene: Scene) -> list[str]:
     return [o.id for o in scene.objects if cats.count(o.category) == 1]
 
 
-def _objects_named(text: str, scene: Scene) -> set[str]:
+def _named(text: str, scene: Scene, kind: Literal["object", "human"]) -> set[str]:
     try:
         items = lex(text, Lexicon.of(scene))
     except GroundingError:
         return set()
-    return {r.id for it in items if it.kind == "ent" for r in it.refs if r.kind == "object"}
+    return {r.id for it in items if it.kind == "ent" for r in it.refs if r.kind == kind}
+
+
+def _objects_named(text: str, scene: Scene) -> set[str]:
+    return _named(text, scene, "object")
 
 
 def variants(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
@@ -223,6 +306,20 @@ def _capitalised(scene: Scene) -> set[str]:
     return words
 
 
+def _after(opener: str, body: str, scene: Scene) -> str:
+    """``body`` after ``opener``: a first word in capitals only for the sentence (not a name or
+    title of the scene) in lower case after a comma."""
+    first = body.split(" ", 1)[0].strip(",.!?:;")
+    if (
+        opener.endswith((", ", "but ", "so ", "and "))
+        and body[:1].isupper()
+        and body[1:2].islower()
+        and first not in _capitalised(scene)
+    ):
+        body = body[:1].lower() + body[1:]
+    return opener + body
+
+
 def _has_choice(node: Node) -> bool:
     return isinstance(node, Group) and (
         node.op == "or" or any(_has_choice(c) for c in node.children)
@@ -261,24 +358,210 @@ def takebacks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
     unnamed = [x for x in objects if x not in named]
     if unnamed and not takes_back and not _has_choice(want):
         opener = rng.choice(LET_GO).format(o=_name(scene, rng.choice(unnamed)))
-        body = text
-        first = body.split(" ", 1)[0].strip(",.!?:;")
-        if (
-            opener.endswith(", ")
-            and body[:1].isupper()
-            and body[1:2].islower()
-            and first not in _capitalised(scene)
-        ):
-            body = body[:1].lower() + body[1:]
-        yield Variant(part, entry.scene, opener + body, want, "same", "takebacks")
+        yield Variant(part, entry.scene, _after(opener, text, scene), want, "same", "takebacks")
 
 
-def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "wrong"]:
-    """How the grounder reads a variant: as it must, refused, or otherwise (wrong)."""
+def _words(text: str) -> set[str]:
+    return set(re.findall(r"[a-z]+", text.lower()))
+
+
+def _shared(scene: Scene) -> tuple[dict[str, tuple[str, ...]], dict[str, tuple[str, ...]]]:
+    """The kinds the scene has several objects of and the titles several of its people share,
+    each with their ids, where the lexer reads "the <kind>" / "the <title>" as every one."""
+    kinds: dict[str, list[str]] = {}
+    for o in scene.objects:
+        kinds.setdefault(o.category, []).append(o.id)
+    titles: dict[str, list[str]] = {}
+    for h in scene.humans:
+        for a in h.aliases:
+            titles.setdefault(a, []).append(h.id)
+    return (
+        {
+            c: tuple(ids)
+            for c, ids in kinds.items()
+            if len(ids) > 1 and _named(f"the {c}", scene, "object") == set(ids)
+        },
+        {
+            t: tuple(ids)
+            for t, ids in titles.items()
+            if len(ids) > 1 and _named(f"the {t}", scene, "human") == set(ids)
+        },
+    )
+
+
+# words that may tell one object or person of a kind from another ("the one on the left")
+_TELLING = frozenset(
+    [
+        "other",
+        "another",
+        "else",
+        "rest",
+        "left",
+        "right",
+        "first",
+        "second",
+        "third",
+        "last",
+        "near",
+        "nearest",
+        "closest",
+        "far",
+        "furthest",
+        "end",
+        "middle",
+    ]
+)
+
+
+def _telling(scene: Scene, ids: tuple[str, ...], kind: str) -> set[str]:
+    """Words that tell the objects ``ids`` of ``kind`` apart, or point at a place."""
+    words = set(_TELLING)
+    for o in scene.objects:
+        if o.id in ids:
+            words |= _words(" ".join((o.id.replace("_", " "), *o.aliases)))
+    for s in scene.surfaces:
+        words |= _words(" ".join((s.id, *s.aliases)))
+    return words - _words(kind)
+
+
+def _said_by_kind(
+    text: str, scene: Scene, oid: str, kind: str, ids: tuple[str, ...], rng: random.Random
+) -> str | None:
+    """``text`` with its one naming of ``oid`` by a name that tells it apart ("the blue
+    blanket") said by its kind alone ("the blanket", "the one blanket", "that blanket"; "her
+    blanket"), or None where nothing else in it may tell which is meant."""
+    obj = next(o for o in scene.objects if o.id == oid)
+    names = sorted((a for a in obj.aliases if a.lower().endswith(" " + kind)), key=len)
+    for name in reversed(names):
+        m = re.search(rf"(?i)\b(the|that|this|her|his|their)( {re.escape(name)})\b", text)
+        if m is None:
+            continue
+        rest = text[: m.start()] + text[m.end() :]
+        if _named(rest, scene, "object") & set(ids) or _words(rest) & _telling(scene, ids, kind):
+            return None
+        if m[1].lower() in ("the", "that", "this"):
+            said = rng.choice(THE_KIND).format(c=kind)
+            said = said[:1].upper() + said[1:] if m[1][:1].isupper() else said
+        else:
+            said = f"{m[1]} {kind}"
+        return text[: m.start()] + said + text[m.end() :]
+    return None
+
+
+def _said_by_title(
+    text: str, scene: Scene, hid: str, title: str, ids: tuple[str, ...]
+) -> str | None:
+    """``text`` with its one naming of ``hid`` by a name ("Mrs Khan") said by a title another
+    shares ("the patient"), or None where anything else in it may tell which is meant."""
+    h = next(h for h in scene.humans if h.id == hid)
+    shared = {a for x in scene.humans if x.id != hid for a in x.aliases}
+    names = sorted((n for n in (h.name, *h.aliases) if n not in shared), key=len)
+    for name in reversed(names):
+        m = re.search(rf"(?<![\w'])(the |The )?{re.escape(name)}\b", text)
+        if m is None or m[1]:
+            continue
+        rest = text[: m.start()] + text[m.end() :]
+        if _named(rest, scene, "human") & set(ids) or _words(rest) & (_GENDERED | _TELLING):
+            return None
+        first = not text[: m.start()].strip() or text[: m.start()].rstrip()[-1] in ".!?"
+        said = ("The " if first else "the ") + title
+        return text[: m.start()] + said + text[m.end() :]
+    return None
+
+
+def references(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The reference variants of one entry: for a grounded entry with no choice in it naming
+    its one object of a kind the scene has several of by a name that tells it apart, that
+    object said by its kind alone (refused with every one of the kind as readings), and its one
+    person of a shared title said by the title (refused with the people who share it); a short
+    request, want or correction naming such a kind alone (refused with the readings) and one
+    naming a one-of-a-kind object by its kind (that handover); the speaker's own want joined to
+    the entry (refused; every opener before an entry that opens "For/To <person>, …")."""
+    text = entry.text.strip()
+    want = entry.want
+    kinds, titles = _shared(scene)
+    people = [(h.id, _name(scene, h.id)) for h in scene.humans]
+    if want is not None and not _has_choice(want):
+        objs = {t.obj for t in tasks(want)}
+        named = _named(text, scene, "object")
+        for kind, ids in kinds.items():
+            hits = objs & set(ids)
+            if len(hits) != 1 or named & set(ids) != hits:
+                continue
+            (oid,) = hits
+            said = _said_by_kind(text, scene, oid, kind, ids, rng)
+            if said is not None:
+                yield Variant(
+                    part, entry.scene, said, None, "refuse", "references", ids, "kind alone"
+                )
+        whom = {t.target for t in tasks(want) if t.target is not None}
+        met = _named(text, scene, "human")
+        for title, ids in titles.items():
+            hits = whom & set(ids)
+            if len(hits) != 1 or met & set(ids) != hits:
+                continue
+            said = _said_by_title(text, scene, next(iter(hits)), title, ids)
+            if said is not None:
+                yield Variant(part, entry.scene, said, None, "refuse", "references", ids, "title")
+    hid, p = rng.choice(people)
+    unique = _unique_objects(scene)
+    if kinds and unique:
+        kind, ids = rng.choice(sorted(kinds.items()))
+        form = rng.choice(KIND_FRAMES)
+        said = form.format(P=p[:1].upper() + p[1:], p=p, c=kind, u=_name(scene, rng.choice(unique)))
+        how = rng.randrange(3)
+        if how == 1:
+            said = _after(rng.choice(OPENERS), said, scene)
+        elif how == 2 and said.endswith("."):
+            said = said[:-1] + rng.choice(CLOSERS)
+        yield Variant(part, entry.scene, said, None, "refuse", "references", ids, "frame")
+    alone = [  # (a kind said in the plural, "the one chips", is left out)
+        (u, o.category)
+        for u in unique
+        for o in scene.objects
+        if o.id == u
+        and not o.category.endswith("s")
+        and _named(f"the {o.category}", scene, "object") == {u}
+    ]
+    if len(alone) > 1:
+        (u, kind), (other, _) = rng.sample(alone, 2)
+        form = rng.choice(KIND_FRAMES)
+        said = form.format(P=p[:1].upper() + p[1:], p=p, c=kind, u=_name(scene, other))
+        fixed = Task("deliver", u, hid)
+        yield Variant(part, entry.scene, said, fixed, "same", "references", (), "one of a kind")
+    # the speaker's own want
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    named = _named(text, scene, "object") | (
+        {t.obj for t in tasks(want)} if want is not None else set()
+    )
+    unnamed = [x for x in unique if x not in named] or unique
+    if not unnamed or takes_back:
+        return
+    o = _name(scene, rng.choice(unnamed))
+    if text.lower().startswith(("for ", "to ")):
+        for form in SPEAKER_OPENERS:
+            said = _after(form.format(o=o), text, scene)
+            yield Variant(part, entry.scene, said, None, "refuse", "references", (), "speaker")
+        return
+    plain_end = not text.endswith("?")
+    forms = [*SPEAKER_OPENERS, *(f for f in SPEAKER_CLOSERS if plain_end or f.startswith(". "))]
+    form = rng.choice(forms)
+    if form in SPEAKER_OPENERS:
+        said = _after(form.format(o=o), text, scene)
+    elif plain_end:
+        said = text.rstrip(".!") + form.format(o=o)
+    else:
+        said = text + form.format(o=o)[1:]
+    yield Variant(part, entry.scene, said, None, "refuse", "references", (), "speaker")
+
+
+def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "unclear", "wrong"]:
+    """How the grounder reads a variant: as it must, refused (without a reading it must name:
+    unclear), or otherwise (wrong)."""
     try:
         got = parse_instruction(variant.text, scene)
-    except GroundingError:
-        return "refused"
+    except GroundingError as exc:
+        return "unclear" if any(r not in str(exc) for r in variant.readings) else "refused"
     if variant.must == "refuse" or variant.want is None:
         return "wrong"
     if show_tree(got) == show_tree(variant.want):
@@ -298,6 +581,7 @@ def generated(
     earlier sessions whatever else runs."""
     rng = random.Random(seed)
     rng_back = random.Random(f"takebacks:{seed}")
+    rng_refs = random.Random(f"references:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -309,6 +593,9 @@ def generated(
                     yield v, scene
             if "takebacks" in families:
                 for v in takebacks(part, entry, scene, rng_back):
+                    yield v, scene
+            if "references" in families:
+                for v in references(part, entry, scene, rng_refs):
                     yield v, scene
 
 
@@ -324,7 +611,9 @@ def run(
     wrong: list[tuple[Variant, str]] = []
     for v, scene in generated(parts, seed, every, families):
         result = verdict(v, scene)
-        counts[f"{v.must}:{result}"] += 1
+        counts[
+            f"{v.must}:{result}" if v.family == "wrappers" else f"{v.family}:{v.must}:{result}"
+        ] += 1
         if result == "wrong":
             wrong.append((v, show_tree(parse_instruction(v.text, scene))))
     return counts, wrong

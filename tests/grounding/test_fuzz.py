@@ -1,6 +1,9 @@
 """The fuzz's generator (tests/grounding/fuzz.py) makes what it says: the take-back family of
 session 25 (taken back: refused; taken back and replaced: the new handover; an earlier object let
-go before the entry: the entry), and the wrappers of a seed unchanged by it."""
+go before the entry: the entry), the reference family of session 26 (one of several objects of a
+kind named by its kind alone, one of two people sharing a title named by the title: refused with
+the readings; a one-of-a-kind object by its kind: that handover; the speaker's own want joined to
+an entry: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -12,9 +15,9 @@ import pytest
 from hltl.bench.grounding import Entry, parse_expectation
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.tree import Task, tasks
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding import fuzz
-from tests.grounding.helpers import CELL, CLASSROOM, OFFICE
+from tests.grounding.helpers import CELL, CLASSROOM, DEPOT, OFFICE, ROOT, WARD
 
 PARTS = ("tuning", "blind21", "blind23")
 
@@ -157,11 +160,12 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
     assert min(kinds.values()) > 20, kinds
 
 
-def test_the_wrappers_of_a_seed_do_not_change_with_the_takebacks() -> None:
-    alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=("wrappers",))]
-    both = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
-    assert [v for v in both if v.family == "wrappers"] == alone
-    assert len(both) > len(alone) and {v.family for v in both} == set(fuzz.FAMILIES)
+@pytest.mark.parametrize("family", ["wrappers", "takebacks"])
+def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
+    alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
+    every = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
+    assert [v for v in every if v.family == family] == alone
+    assert len(every) > len(alone) and {v.family for v in every} == set(fuzz.FAMILIES)
 
 
 def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> None:
@@ -170,4 +174,142 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
-    assert "expected some of ('wrappers', 'takebacks')" in err
+    assert "expected some of ('wrappers', 'takebacks', 'references')" in err
+
+
+# -- references (session 26) ----------------------------------------------------------------------
+
+
+def _references(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.references("t", entry, scene, random.Random(seed)))
+
+
+def _objects(text: str, scene: Scene) -> set[str]:
+    return fuzz._objects_named(text, scene)
+
+
+MUGS = ("mug_red", "mug_blue")
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_one_of_two_mugs_named_by_its_colour_is_said_by_its_kind(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the red mug, please, he's thirsty.", "mug_red>B")
+    made = _references(entry, CELL, seed)
+    said = made[0]
+    assert said.must == "refuse" and said.want is None and said.readings == MUGS
+    assert said.family == "references"
+    assert said.text in {
+        f"Give Bob {the} mug, please, he's thirsty." for the in ("the", "the one", "that")
+    }
+    assert _objects(said.text, CELL) == set(MUGS)
+    # the rest: a short request naming the mugs alone, one naming a one-of-a-kind object by its
+    # kind, and the speaker's own want
+    frame, alone, speaker = made[1:]
+    assert frame.readings == MUGS and frame.must == "refuse"
+    assert set(MUGS) <= _objects(frame.text, CELL)
+    assert isinstance(alone.want, Task) and alone.must == "same" and not alone.readings
+    assert alone.want.obj in fuzz._unique_objects(CELL) and alone.want.obj in _objects(
+        alone.text, CELL
+    )
+    assert alone.want.target in _people_named(alone.text, CELL)
+    assert speaker.must == "refuse" and not speaker.readings
+    assert "ive Bob the red mug, please, he" in speaker.text
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the red mug, not the blue one.", "mug_red>B"),  # a word tells which
+        ("Give Bob the red mug and Carol the blue mug.", "mug_red>B & mug_blue>C"),  # both named
+        ("Give Bob a red mug or a blue mug.", "mug_red>B | mug_blue>B"),  # a choice
+        ("Put the red mug on the shelf.", "mug_red@shelf"),  # a place may tell which
+        ("Give Bob a mug.", "mug_red>B | mug_blue>B"),  # not named by colour
+        ("Give Bob the crisps.", "chips>B"),  # no kind the scene has several of
+    ],
+)
+def test_nothing_else_may_tell_which_of_the_kind_is_meant(text: str, want: str) -> None:
+    for seed in range(10):
+        made = _references(_entry("cell", text, want), CELL, seed)
+        assert [v.form for v in made][-3:] == ["frame", "one of a kind", "speaker"]
+        assert "kind alone" not in [v.form for v in made]
+
+
+def test_a_possessive_keeps_its_owner_and_three_boxes_are_all_readings() -> None:
+    entry = _entry("ward", "Mrs Khan is cold, bring over her grey blanket.", "blanket_grey>C")
+    (said, *_) = _references(entry, WARD, 0)
+    assert said.text == "Mrs Khan is cold, bring over her blanket."
+    assert said.readings == ("blanket_blue", "blanket_grey")
+    boxes = _entry("depot", "Tom needs the large box.", "box_large>B")
+    (said, *_) = _references(boxes, DEPOT, 1)
+    assert said.readings == ("box_small", "box_medium", "box_large")
+    assert _objects(said.text, DEPOT) == set(said.readings)
+
+
+def test_one_of_two_people_sharing_a_title_is_said_by_the_title() -> None:
+    entry = _entry("classroom", "Noah needs the ruler for maths.", "ruler>B")
+    made = _references(entry, CLASSROOM, 2)
+    (titled,) = [v for v in made if v.form == "title"]
+    assert titled.text == "The student needs the ruler for maths."
+    assert titled.must == "refuse" and titled.readings == ("B", "C")
+    assert _people_named(titled.text, CLASSROOM) == {"B", "C"}
+    # the whole name goes ("Mrs Khan"): nothing is left to tell her from Mr Lee
+    (titled,) = [
+        v
+        for v in _references(_entry("ward", "Mrs Khan needs the magazine.", "magazine>C"), WARD, 2)
+        if v.form == "title"
+    ]
+    assert titled.text == "The patient needs the magazine."
+    # not where a word may tell which ("his"), nor where both are named
+    for text, want in [
+        ("Noah needs his ruler.", "ruler>B"),
+        ("Give Noah the ruler and Zoe the globe.", "ruler>B & globe>C"),
+    ]:
+        made = _references(_entry("classroom", text, want), CLASSROOM, 2)
+        assert "title" not in [v.form for v in made]
+
+
+def test_every_speaker_opener_goes_before_an_entry_opening_for_a_person() -> None:
+    entry = _entry("two", "For Bob, the crisps, please.", "chips>B")
+    made = [v for v in _references(entry, TWO, 0) if v.must == "refuse" and not v.readings]
+    assert len(made) == len(fuzz.SPEAKER_OPENERS)
+    for v, form in zip(made, fuzz.SPEAKER_OPENERS, strict=True):
+        m = _match((form,), v.text, "start")
+        assert _objects(m["o"], TWO) == {"bottle"}  # the object the entry does not name
+        assert v.text[m.end() :] == "for Bob, the crisps, please."
+
+
+def test_a_refusal_without_the_readings_is_unclear() -> None:
+    v = fuzz.Variant("t", "cell", "Give Bob the mug.", None, "refuse", "references", MUGS)
+    assert fuzz.verdict(v, CELL) == "refused"  # the refusal names both mugs
+    blunt = fuzz.Variant("t", "cell", "Give her the cup.", None, "refuse", "references", MUGS)
+    assert fuzz.verdict(blunt, CELL) == "unclear"
+    read = fuzz.Variant("t", "cell", "Give Bob the red mug.", None, "refuse", "references", MUGS)
+    assert fuzz.verdict(read, CELL) == "wrong"
+
+
+def test_over_the_corpus_each_reference_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.REFERENCE_FORMS, 0)
+    parts = ("blind21", "blind22", "causes19")  # with titles said by name in them
+    for v, scene in fuzz.generated(parts, seed=26, families=("references",)):
+        assert v.family == "references"
+        kinds[v.form] += 1
+        if v.form == "title":
+            assert v.must == "refuse" and len(v.readings) > 1
+            assert set(v.readings) <= _people_named(v.text, scene)
+        elif v.form in ("kind alone", "frame"):
+            assert v.must == "refuse" and len(v.readings) > 1
+            assert set(v.readings) <= _objects(v.text, scene)
+            assert {o.category for o in scene.objects if o.id in v.readings} == {
+                next(o.category for o in scene.objects if o.id == v.readings[0])
+            }
+        elif v.form == "one of a kind":
+            assert v.must == "same" and isinstance(v.want, Task) and v.want.kind == "deliver"
+            assert v.want.obj in _objects(v.text, scene)
+            assert v.want.target in _people_named(v.text, scene)
+        else:
+            assert v.form == "speaker" and v.want is None and v.must == "refuse"
+            opener = _found(fuzz.SPEAKER_OPENERS, v.text, "start")
+            closer = _found(fuzz.SPEAKER_CLOSERS, v.text, "end")
+            assert (opener or closer) is not None, v.text
+    assert min(kinds.values()) >= 5, kinds
