@@ -696,13 +696,11 @@ KNOWN_MISSES = frozenset(
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
-        "The bottle, Person A's been waiting on it since the meeting finished.",
         "Give Person B the chips and Person A the bottle and be quick about it as I'm off to "
         'the next job.',
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
         'not bothered which.',
-        'Person A is doing the drinks round, so give her both drinks, the cup and the bottle.',
         'Wash-up time: both cups into the sink, green and white alike.',
         "Both spanners to Kofi, he can't find his set.",
         "The chips aren't for Person A, they're for Person B, she's the one who paid.",

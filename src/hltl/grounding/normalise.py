@@ -7330,6 +7330,21 @@ def _choices26(text: str, lexicon: Lexicon) -> str:
         out,
     )
 
+    def described(m: re.Match[str]) -> str:
+        if not _names_nothing(m.group(1), lexicon):
+            return m.group(0)  # 'both cups, …' names them: read as said
+        if len(_objects_listed(m.group(2), lexicon)) != 2 or _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        return m.group(2)
+
+    # "give her both drinks, the cup and the bottle": a description the scene does not name,
+    # then the two objects it describes
+    out = _sub(
+        r"\bboth ([a-z]+s),\s*((?:the )?[a-z]+ and (?:the )?[a-z]+)(?=\s*(?:[,.;!?]|$))",
+        described,
+        out,
+    )
+
     def both(m: re.Match[str]) -> str:
         if len(_objects_listed(m.group(1), lexicon)) != 2 or _ids(m.group(1), lexicon, "human"):
             return m.group(0)
@@ -7701,6 +7716,8 @@ _FRAMES22: tuple[tuple[str, str], ...] = (
         " wants",
     ),
     (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
+    # session 26: "Person A's been waiting on it" (waiting for it)
+    (r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) waiting on\b", " wants"),
 )
 # a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
 _PURPOSE22 = re.compile(
