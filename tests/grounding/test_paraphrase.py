@@ -686,11 +686,7 @@ KNOWN_MISSES = frozenset(
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
-        'Dobrý den! Please, give to Bob bottle, yes? Děkuji.',
-        "Vanakkam! Please give the crisps to Alice ma'am, nandri.",
-        'Chale, please give Person A the bottle, eh? Thank you paa.',
         'Quick one before the school bell: bottle to Person B, please and thank you.',
-        'Bună ziua, please, the bottle to Person A, yes? Mersi mult, you are very kind.',
         "Person A has asked me twice now for the chips, she's starving after the tyre change.",
         "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
         'furnace.',
