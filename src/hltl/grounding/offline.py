@@ -97,6 +97,8 @@ def parse_instruction(
         said = [r for ids in unclear.values() for r in ids if r in str(refused)]
         if not unclear and not _readings(refused) and len(inside) == 1:
             named = _unclear_names(text, lexicon)
+            if not named and "could mean" not in str(refused):
+                named = _unclear_it(text, lexicon)
             if named:
                 # "Alice should get the mug. Not Alice, sorry, Carol.": refused for the
                 # correction, and 'the mug' could be either mug: the refusal says which
@@ -133,6 +135,40 @@ def _unclear_names(text: str, lexicon: Lexicon) -> str:
         ):
             out.setdefault(it.text, ids)
     return "; ".join(f"{w!r} could mean {' or '.join(ids)}" for w, ids in out.items())
+
+
+# what may stand between two objects of one list ("the tape and the gloves", "cup, bottle or apple")
+_IN_A_LIST = frozenset({",", "and", "or", "the", "a", "an", "both", "either"})
+
+
+def _unclear_it(text: str, lexicon: Lexicon) -> str:
+    """What the first 'it' of ``text`` could mean when the last thing named before it is a list of
+    objects ("The tape and the gloves are done with, so take it over to Tom": "'it' could mean tape
+    or gloves"), '' otherwise (session 26: refused for another reason, the refusal still says
+    which objects 'it' could mean; it never makes a reading)."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    listed: list[str] = []
+    joined = True  # nothing but list words since the last object
+    for it in items:
+        if it.kind == "word" and it.text.lower() == "it":
+            said = list(dict.fromkeys(listed))
+            return f"'it' could mean {' or '.join(said)}" if len(said) > 1 else ""
+        if it.kind == "ent":
+            ids = {r.id for r in it.refs}
+            if len(ids) != 1 or it.refs[0].kind != "object":
+                listed = []  # a person, a place or a choice: not a list of objects
+                joined = False
+                continue
+            if not joined:
+                listed = []
+            listed.append(it.refs[0].id)
+            joined = True
+        elif it.text.lower() not in _IN_A_LIST:
+            joined = False
+    return ""
 
 
 def _inside() -> list[str]:
@@ -403,6 +439,27 @@ def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     return node
 
 
+def _echoed(raw: _Raw) -> int:
+    """The tasks ``raw`` holds twice only because a bare name repeats the piece before it
+    ("Bottle, Person A": 'Person A' says whom the bottle is for, once) — not a task the speaker
+    asks for twice, so an 'again' after it ("Bottle, Person A again": Person A gets something
+    again) asks for nothing a second time (session 26)."""
+    if isinstance(raw, _Frag):
+        return 0
+    n = sum(_echoed(c) for c in raw.children)
+    for a, b in itertools.pairwise(raw.children):
+        if (
+            isinstance(a, _Frag)
+            and isinstance(b, _Frag)
+            and b.bare
+            and b.objects
+            and b.objects == a.objects
+            and b.target == a.target
+        ):
+            n += len(b.objects)
+    return n
+
+
 def _read_now(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     items = lex(text, lexicon)
     # "again" said to repeat a task: read exactly (twice) or refused, never once
@@ -432,7 +489,9 @@ def _read_now(text: str, scene: Scene, lexicon: Lexicon) -> Node:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
     node = normalise(parser.expand(node, frozenset()))
     once = _dedupe(node)
-    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)):
+    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)) - _echoed(
+        raw
+    ):
         twice = next(t for t in tasks(node) if sum(1 for u in tasks(node) if u == t) > 1)
         raise GroundingError(
             f"{again.text!r} asks for {_task_words(twice, lexicon)} a second time: an object "
