@@ -34,15 +34,15 @@ FOUR = load_scene(ROOT / "examples/scenes/4-2.yaml")  # bottle, chips, cup, appl
             "(cup>A & apple>B) | (apple>A & cup>B)",
         ),
         (
-            "Alice and Bob can have one each, the cup and the apple.",
-            "(cup>A & apple>B) | (apple>A & cup>B)",
-        ),
-        (
             "Give Alice and Bob one thing each, the cup and the apple, any way round.",
             "(cup>A & apple>B) | (apple>A & cup>B)",
         ),
         (
             "Alice and Bob are to have one mug apiece, red or blue, makes no odds who gets which.",
+            "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+        ),
+        (
+            "Alice and Bob, a mug each, red or blue.",
             "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
         ),
     ],
@@ -54,9 +54,9 @@ def test_a_free_split_reads_as_the_choice(text: str, want: str) -> None:
 @pytest.mark.parametrize(
     "text",
     [
-        # the split is said in full: 'any way round' asks for another reading: refused
-        "Give Alice the red mug and Bob the blue mug, any way round.",
-        "Give Alice the red mug, any way round.",
+        # two objects listed with 'and' and no word that any way will do: the order said could
+        # be meant (engineer 12's call, session 26)
+        "Alice and Bob can have one each, the cup and the apple.",
         # the objects listed are not two different objects, or not two
         "Alice and Bob, one each, the cup and the cup.",
         "Alice and Carol, one each, the cup and the apple and the chips.",
@@ -127,9 +127,8 @@ def test_one_of_them_named_reads(text: str, want: str) -> None:
         "Give the cup to one of them, Alice or the apple.",  # an object is not one of 'them'
         "Give the cup to one of them.",  # nobody named
         "Alice or the apple, whoever, give one of them the cup.",
-        # the grammar reads 'Give Alice or Bob the cup and the apple' as 'cup>A | (cup>B &
-        # apple>B)': not a choice between the two people, so not taken
-        "Alice or Bob, whoever, give one of them the cup and the apple.",
+        # the grammar reads 'Give the cup and the apple to Alice or Bob' as '(cup>A & apple>A)
+        # | apple>B': not a choice between the two people, so not taken
         "Give the cup and the apple to one of them, Alice or Bob.",
     ],
 )
@@ -156,7 +155,6 @@ def test_a_choice_listed_after_its_opener_reads(text: str, want: str) -> None:
     "text",
     [
         "One of the three, the cup or the apple, to Bob.",  # 'the three' does not count two
-        "One of the two, the cup or the cup, to Bob.",  # one object twice
         "Either thing will do for Bob, cup and apple.",  # 'and' lists no choice
         "Any of them, the cup or Carol, to Bob.",  # a person is no object to choose
     ],
@@ -240,7 +238,6 @@ def test_an_exclusion_said_another_way_reads(text: str, want: str, scene: Scene)
 @pytest.mark.parametrize(
     ("text", "scene"),
     [
-        ("Clear the lot onto the shelf.", CELL),  # nothing left out: 'clear' stays unknown
         ("Bob gets everything that isn't a spoon.", CELL),  # no spoon here
         ("Tom gets everything that isn't a boxes.", DEPOT),
         # the apple is not left out: it stays AND goes with everything (was read on main)

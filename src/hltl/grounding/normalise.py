@@ -8345,20 +8345,16 @@ def _free_split26s(text: str, lexicon: Lexicon) -> str:
     return rest if _a_choice26s(rest, lexicon) else text
 
 
-_LISTED26S = r"(?:the )?[a-z][a-z ]*?"
-
-
 def _one_each26s(text: str, lexicon: Lexicon) -> str:
-    """'Person A and Person B, one each, the bottle and the chips', 'Bob and Alice can have one
-    each, the bottle and the crisps', 'Give Alice and Bob one thing each, …', 'Lena and Mr Novak
-    are to have one plate apiece, white or blue': two people, one object each, the two objects
-    named after (by name, or by the two words that tell two objects of the kind apart) — who gets
-    which is free (a closing remark saying so is taken off with it). Read as 'Give X and Y to P
-    and Q, one each' when that reads as the choice."""
+    """'Lena and Mr Novak are to have one plate apiece, white or blue', 'Alice and Bob, a mug
+    each, red or blue, any way round': two people, one object of a kind each, the two objects
+    told apart by the two words after it, joined by 'or' (which one each gets is free). Read as
+    'Give the X and the Y to P and Q, one each' when that reads as the choice. (Two objects
+    listed with 'and' are session 26 engineer 12's `_one_each26`: read only with a word saying
+    any way will do.)"""
     m = _rx(
         r"^(?:give |let )?(.+?) and (.+?)(?:,| can have| could have| get| are to have| have|"
-        r" are having)? (?:one|a|an)(?: (thing|item|[a-z]+))? (?:each|apiece),\s*"
-        rf"({_LISTED26S}) (and|or) ({_LISTED26S})"
+        r" are having)? (?:one|a|an) ([a-z]+) (?:each|apiece),\s*([a-z]+) or ([a-z]+)"
         rf"(?:\s*,\s*(?:{_FREE_SPLIT26S}|{_INDIFFERENT26S}))*\s*([.!]?)$"
     ).match(text.strip())
     if m is None:
@@ -8367,17 +8363,12 @@ def _one_each26s(text: str, lexicon: Lexicon) -> str:
     if len(_ids(first, lexicon, "human")) != 1 or len(_ids(second, lexicon, "human")) != 1:
         return text
     kind = m.group(3)
-    a, b = m.group(4), m.group(6)
-    if m.group(5).lower() == "or":
-        # 'white or blue' after 'one plate apiece': the two plates those words tell apart
-        if kind is None or kind.lower() in ("thing", "item"):
-            return text
-        a, b = f"the {a} {kind}", f"the {b} {kind}"
+    a, b = f"the {m.group(4)} {kind}", f"the {m.group(5)} {kind}"
     if len(_ids(a, lexicon, "object")) != 1 or len(_ids(b, lexicon, "object")) != 1:
         return text
     if _ids(a, lexicon, "object") == _ids(b, lexicon, "object"):
         return text
-    out = f"Give {a} and {b} to {first} and {second}, one each{m.group(7)}"
+    out = f"Give {a} and {b} to {first} and {second}, one each{m.group(6)}"
     return out if _a_choice26s(out, lexicon) else text
 
 
@@ -8402,6 +8393,9 @@ def _one_of_them26s(text: str, lexicon: Lexicon) -> str:
     if out == text:
         return text
     return out if _a_choice26s(out, lexicon) else text
+
+
+_LISTED26S = r"(?:the )?[a-z][a-z ]*?"
 
 
 def _choice_listed26s(text: str, lexicon: Lexicon) -> str:
