@@ -269,7 +269,6 @@ KNOWN_MISSES = frozenset(
         "That one bottle, over to Person A, quick as you can.",
         "Apart from the red one, Sam's to get the pens.",
         "Bob gets the lot, just leave the two mugs where they are.",
-        "Put everything that isn't a book on the desk.",
         "Jess wants the other spanner, not the big one on the workbench.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
         "tom wants the gloves and once hes got them mia wants the tape",
