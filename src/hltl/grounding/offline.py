@@ -193,7 +193,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
-        _taken_back(text)
+        replaced = _taken_back(text, scene, lexicon)
+        if replaced is not None:
+            return replaced
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(
@@ -324,17 +326,26 @@ _REQUESTED = re.compile(
 _MARK = re.compile(r"[,.;!?]")
 
 
-def _taken_back(text: str) -> None:
+def _taken_back(text: str, scene: Scene, lexicon: Lexicon) -> Node | None:
     """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
     cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
     25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
-    verb, or 'instead') and what it replaces is one request said in one stretch ('Put the
-    notebook on the desk. Actually no, leave it, put the stapler there instead.' is read by the
-    correction rules); with more before it ('Bob wants the cup, hand it to him, no, leave it, …',
-    'Give Alice the apple. Now. Forget that, …') which is taken back is unclear."""
+    verb, or 'instead'). That new request is the instruction (session 26, _replaced) when what it
+    replaces reads as one task and the new one reads alone ('Could you, please, give Bob the cup,
+    no, leave it, give Carol the apple instead'); else (None) it is read by the correction rules
+    when what it replaces is one request said in one stretch ('Put the notebook on the desk.
+    Actually no, leave it, put the stapler there instead.'); with more before it ('Bob wants the
+    cup, hand it to him and the apple too, no, leave it, …') which is taken back is unclear."""
     m = _TAKEN_BACK.search(text)
     if m is None:
-        return
+        return None
+    # the last take-back: what it replaces may hold an earlier one, read as corrected
+    last = list(_TAKEN_BACK.finditer(text))[-1]
+    new = text[last.end() :].lstrip(" ,.;!?")
+    if _NEW_REQUEST.search(new):
+        node = _replaced(text[: last.start()].strip(" ,.;!?"), new, scene, lexicon)
+        if node is not None:
+            return node
     rest = text[m.end() :].strip(" ,.;!?")
     before = text[: m.start()].strip(" ,.;!?")
     if (
@@ -343,11 +354,38 @@ def _taken_back(text: str) -> None:
         and len(_REQUESTED.findall(before)) <= 1
         and not _MARK.search(before)
     ):
-        return
+        return None
     raise GroundingError(
         f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
         "nothing"
     )
+
+
+# what points back at the request taken back, adds to it or orders itself after it: a new request
+# holding one of these is not read alone
+_POINTS_BACK = re.compile(
+    r"\b(?:it|its|them|they|him|her|his|he|she|there|that|those|these|this|same|other|another|"
+    r"too|also|as well|again|still|both|each|rest|either|whichever|first|next|later|afterwards|"
+    r"after that|before that)\b",
+    re.I,
+)
+_INSTEAD = re.compile(r"\s*\binstead\b(?!\s+of\b)", re.I)
+
+
+def _replaced(before: str, new: str, scene: Scene, lexicon: Lexicon) -> Node | None:
+    """The new request said after a take-back, read alone ('instead' taken off), when the words
+    before the take-back read as exactly one task, so that 'leave it' takes back all of them
+    whatever commas they hold ('Could you, please, give Bob the cup', 'Give Bob the cup, no,
+    Alice'), and the new request points back at nothing and adds to nothing (no 'it', 'her',
+    'there', 'too', 'the other'); else None."""
+    if _POINTS_BACK.search(new):
+        return None
+    try:
+        if not isinstance(parse_instruction(before, scene, lexicon), Task):
+            return None
+        return parse_instruction(_INSTEAD.sub("", new), scene, lexicon)
+    except GroundingError:
+        return None
 
 
 def _cut_off(text: str) -> GroundingError | None:

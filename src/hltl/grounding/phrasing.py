@@ -2523,9 +2523,24 @@ def _listed_on(items: list[Item], k: int) -> bool:
                 low = it.text.lower()
                 participle = low.endswith(("ed", "en", "ught")) or low in _BARE_PARTICIPLES
                 return joined and _is_verb_item(it) and participle
-            return _is(it, "to", "for")
+            return _is(it, "to", "for") and not _verb_later(items, k + 1)
         k += 1
     return False
+
+
+def _verb_later(items: list[Item], k: int) -> bool:
+    """Whether a verb with no person of its own comes in ``items[k:]`` (after the recipient)
+    before the sentence ends: in "We need the chips, for Person B, bottle, please give" (session
+    26) the recipient may open that clause rather than close the speaker's want before it ("…,
+    for Person B, then give Person A the bottle" has its own)."""
+    while k < len(items) and (_humans(items[k]) or _is(items[k], "det", "and")):
+        k += 1  # the recipient itself
+    verb = human = False
+    while k < len(items) and not (items[k].kind == "punct" and items[k].lemma in _END):
+        verb = verb or _is_verb_item(items[k])
+        human = human or _humans(items[k])
+        k += 1
+    return verb and not human
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
