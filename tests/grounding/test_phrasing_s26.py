@@ -172,6 +172,7 @@ def test_brought_over_with_no_place_is_the_wanter() -> None:
     )
     assert_reads("Mia needs the tape fetched across.", "tape>A", DEPOT)
     assert_refused("Person B wants the bottle taken.", DUO)  # taken where?
+    assert_refused("Bob wants the cup brought back.")  # back where it was, or to Bob?
     # from a person: whose it is, or where it is taken from, is not a remark
     assert_refused("Person B wants the bottle brought over from Person A.", DUO)
     assert_reads("Person B wants the bottle brought over to Person A.", "bottle>A", DUO)
@@ -188,6 +189,7 @@ def test_where_a_person_is_after_to_person() -> None:
     # refused
     assert_refused("Give the cup to Bob on the shelf.")
     assert_refused("Give Alice the apple, and the cup to Bob at the end.")
+    assert_refused("Take the apple to Bob in the next five minutes.")  # a time: put off
     assert_refused("Take the apple to Bob at the table.")
 
 

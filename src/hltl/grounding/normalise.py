@@ -7169,7 +7169,7 @@ def _brought26(text: str, lexicon: Lexicon) -> str:
 
     return _sub(
         r"\b(wants?|needs?|would like|'d like|is after) (the [a-z ]+?|it|them) "
-        r"(?:(?:brought|fetched)(?: over| across| round| along| back)?|"
+        r"(?:(?:brought|fetched)(?: over| across| round| along)?|"
         r"(?:sent|passed)(?: over| across| round| along))"
         r"(?: from ((?:the |your |my |our |over )?[a-z' ]+?))?(?=\s*(?:[,.;!?]|$|\band\b))",
         brought,
@@ -7181,7 +7181,8 @@ def _brought26(text: str, lexicon: Lexicon) -> str:
 _WHEN26 = (
     r"\b(?:end|start|beginning|moment|same time|last|first|time|minute|second|break|lunch|"
     r"weekend|night|morning|evening|afternoon|day|meeting|interval|half|match|finish|close|"
-    r"latest|earliest|mo|sec|rush|shift|round)\b"
+    r"latest|earliest|mo|sec|rush|shift|round|hour|week|month|next|tomorrow|tonight|later|"
+    r"soon|dinner|breakfast|tea|service|game)s?\b"
 )
 
 
