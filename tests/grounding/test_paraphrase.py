@@ -672,23 +672,17 @@ KNOWN_MISSES = frozenset(
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
-        'Dobrý den! Please, give to Bob bottle, yes? Děkuji.',
-        "Vanakkam! Please give the crisps to Alice ma'am, nandri.",
-        'Chale, please give Person A the bottle, eh? Thank you paa.',
         'Quick one before the school bell: bottle to Person B, please and thank you.',
-        'Bună ziua, please, the bottle to Person A, yes? Mersi mult, you are very kind.',
         "Person A has asked me twice now for the chips, she's starving after the tyre change.",
         "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
-        "The bottle, Person A's been waiting on it since the meeting finished.",
         "Give Person B the chips and Person A the bottle and be quick about it as I'm off to "
         'the next job.',
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
         'not bothered which.',
-        'Person A is doing the drinks round, so give her both drinks, the cup and the bottle.',
         'Wash-up time: both cups into the sink, green and white alike.',
         "Both spanners to Kofi, he can't find his set.",
         "The chips aren't for Person A, they're for Person B, she's the one who paid.",

@@ -6185,10 +6185,11 @@ _LY_HELD19 = frozenset(
 # Bob the cup lah": _fillers19) or as a stretch of their own between punctuation marks ("…,
 # lah.", "Sawasdee krap.": _courtesy24). Malaysian and Singaporean English lah, la, leh, lor,
 # meh, hor, ah; London innit; Afrikaans ja; Nigerian o, sha; Thai krap, khrap, krub, khrub, kha;
-# Tagalog po, opo.
+# Tagalog po, opo; Ghanaian paa.
 _PARTICLES = frozenset(
     {"lah", "la", "leh", "lor", "meh", "hor", "ah", "innit", "ja", "o", "sha"}
     | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
+    | {"paa"}  # Ghanaian English: 'thank you paa' (very much), session 26
 )
 _NOW19 = re.compile(
     r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
@@ -6955,6 +6956,10 @@ _COURTESY24 = (
     r"mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|"
     r"köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|"
     r"mas|mbak|bless up|big up|respect|one love|"
+    # session 26: Czech, Romanian, Tamil and Ghanaian greetings, thanks and the address 'chale'
+    # (friend), with and without their letters' marks ('please' in them: _translated25)
+    r"dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|"
+    r"mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -6997,7 +7002,9 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
 # 'bitte'; Spanish 'por favor') and 'sorry' (Persian 'bebakhshid', Indonesian 'maaf'); and a
 # title of respect before a scene person's name (Indonesian 'Bu' / 'Ibu', 'Pak' / 'Bapak', 'Mas',
 # 'Mbak')
-_PLEASE25 = re.compile(r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor)\b", _F)
+_PLEASE25 = re.compile(
+    r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog)(?!\w)", _F
+)
 _SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)
 # Jamaican English / Patois words for English function words ('di bottle' = the bottle, 'fi Bob'
 # = for Bob, 'mek Person A get' = let Person A get, 'mi mean' = I mean, 'it nuh matter' = it
@@ -7041,6 +7048,31 @@ def _translated25(text: str, lexicon: Lexicon) -> str:
     return _HONORIFIC25.sub(
         lambda m: "" if _person_at(m.string[m.end() :], lexicon) else m[0], text
     )
+
+
+# an address of respect said right after a person's name ('to Alice ma'am', 'Bob sir': Indian,
+# Tamil and Ghanaian English) before a mark or the end (session 26)
+_ADDRESS_AFTER26 = re.compile(r"\s+(?:ma'am|ma’am|maam|madam|sir)(?=\s*[,.;!?]|$)", _F)
+
+
+def _address_after26r(text: str, lexicon: Lexicon) -> str:
+    """Session 26: 'ma'am' / 'madam' / 'sir' right after a person's name of the scene ("Please give
+    the crisps to Alice ma'am") is said of that person, as 'Mrs' before it would be: taken off.
+    After anything else ('the bottle, sir', 'Madam Curie ma'am' not in the scene) it is left."""
+    if not _ADDRESS_AFTER26.search(text):
+        return text
+
+    def after_person(m: re.Match[str]) -> str:
+        words = m.string[: m.start()].split()[-3:]
+        said = _names(" ".join(words), lexicon)
+        named = (
+            bool(said)
+            and m.string[: m.start()].lower().endswith(said[-1].text.lower())
+            and all(r.kind == "human" for r in said[-1].refs)
+        )
+        return "" if named else m[0]
+
+    return _ADDRESS_AFTER26.sub(after_person, text)
 
 
 def _person_at(rest: str, lexicon: Lexicon) -> bool:
@@ -7330,6 +7362,21 @@ def _choices26(text: str, lexicon: Lexicon) -> str:
         r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+),\s*((?:the )?[a-z]+ or (?:the )?[a-z]+)"
         r"\s*([.!]?)$",
         chosen,
+        out,
+    )
+
+    def described(m: re.Match[str]) -> str:
+        if not _names_nothing(m.group(1), lexicon):
+            return m.group(0)  # 'both cups, …' names them: read as said
+        if len(_objects_listed(m.group(2), lexicon)) != 2 or _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        return m.group(2)
+
+    # "give her both drinks, the cup and the bottle": a description the scene does not name,
+    # then the two objects it describes
+    out = _sub(
+        r"\bboth ([a-z]+s),\s*((?:the )?[a-z]+ and (?:the )?[a-z]+)(?=\s*(?:[,.;!?]|$))",
+        described,
         out,
     )
 
@@ -7704,6 +7751,8 @@ _FRAMES22: tuple[tuple[str, str], ...] = (
         " wants",
     ),
     (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
+    # session 26: "Person A's been waiting on it" (waiting for it)
+    (r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) waiting on\b", " wants"),
 )
 # a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
 _PURPOSE22 = re.compile(
@@ -8691,6 +8740,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _translated25,
+    _address_after26r,
     _courtesy24,
     _attention21,
     _speaker21,
