@@ -269,7 +269,6 @@ KNOWN_MISSES = frozenset(
         "That one bottle, over to Person A, quick as you can.",
         "Apart from the red one, Sam's to get the pens.",
         "Bob gets the lot, just leave the two mugs where they are.",
-        "Put everything that isn't a book on the desk.",
         "Jess wants the other spanner, not the big one on the workbench.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
         "tom wants the gloves and once hes got them mia wants the tape",
@@ -559,7 +558,6 @@ KNOWN_MISSES = frozenset(
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
-        'Give one of apple or chips to Person B, any, she does not care.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         "Give Emma one of the cups, green or white, it's all the same to her, bless her.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
@@ -575,10 +573,8 @@ KNOWN_MISSES = frozenset(
         "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
-        'Everything except the cup goes to Person B, the cup stays, asante.',
         'Not Person A ah, Person B is the one getting the apple.',
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        'Person A, and nobody else mind, gets the bottle.',
         "Give Person A whatever isn't the bottle, I've had my hands in the slip bucket.",
         "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
@@ -635,20 +631,14 @@ KNOWN_MISSES = frozenset(
         "Give Person B the bottle I'm just going to check the hammers on this upright.",
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
-        'Any of the food to Person B, the apple or the chips, terserah.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Either of them can have the chips, doesn't bother me which.",
-        'Give the bottle to one of them, Person A or Person B, it nuh matter which.',
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',
-        'Lena and Mr Novak are to have one plate apiece, white or blue, makes no odds who gets '
-        'which colour.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'The two things you can see, the bottle and the crisps, both to Alice.',
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
-        'Person A gets three of the four, the cup, the apple and the chips, and the bottle stays '
-        'put.',
         "Hand over both items, chips and bottle alike, to Person B, she's earned them.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
@@ -657,14 +647,11 @@ KNOWN_MISSES = frozenset(
         "Every one of the three boxes wants to end up with Mia, she's checking the labels.",
         'The two blocks in the high chair for Lily to play with.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
-        "Everything on there bar the bottle goes to Person B, love, she's on seconds.",
         'Give Person A the chips but not the apple, and not the cup either.',
         'The chips are not for Person A, I tell you, they are for Person B.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
-        'Not to anyone else, just Person A: the bottle.',
         "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
-        "Tom gets everything that isn't a box.",
         'Give Ava the blocks, not the green one, only red.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
@@ -686,11 +673,7 @@ KNOWN_MISSES = frozenset(
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
-        'Dobrý den! Please, give to Bob bottle, yes? Děkuji.',
-        "Vanakkam! Please give the crisps to Alice ma'am, nandri.",
-        'Chale, please give Person A the bottle, eh? Thank you paa.',
         'Quick one before the school bell: bottle to Person B, please and thank you.',
-        'Bună ziua, please, the bottle to Person A, yes? Mersi mult, you are very kind.',
         "Person A has asked me twice now for the chips, she's starving after the tyre change.",
         "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
         'furnace.',
@@ -715,7 +698,6 @@ KNOWN_MISSES = frozenset(
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
         "Put the appoe on the shelf, the fruit bowl's full.",
-        'Pdrson A gets the bottle, nobody else is here.',
         "Could the apple go on the table, I've got puppets all over the shelf?",
     }
 )

@@ -155,3 +155,60 @@ def test_a_recipient_between_a_want_and_a_request_is_refused(
 )
 def test_a_recipient_that_closes_the_want_reads(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# -- (c) greetings, thanks and addresses of other languages --------------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "Dobrý den! {Req}, please. Děkuji.",
+            "Dobry den, prosím, {req}.",
+            "Bună ziua, please, {req}. Mersi mult, you are very kind.",
+            "Buna ziua, {req}, vă rog. Mulțumesc.",
+            "Vanakkam! {Req}, nandri.",
+            "Chale, {req}, eh? Thank you paa.",
+            "Akwaaba! {Req}. Medaase.",
+        ]
+    ),
+)
+def test_courtesies_of_other_languages_read(scene: Scene, k: int, frame: str) -> None:
+    # blind24: Czech, Romanian, Tamil and Ghanaian openers and closers were refused ('Dobrý' is
+    # not a word the offline grounder reads; no person called 'Vanakkam' / 'Chale')
+    req, want = plain_request(scene, k)
+    assert_reads(frame.format(req=req, Req=req[0].upper() + req[1:]), want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Please give the crisps to Alice ma'am.", "chips>A"),
+        ("Vanakkam! Please give the crisps to Bob sir, nandri.", "chips>B"),
+        ("Give the cup to Carol madam, then the apple to Bob.", "cup>C ; apple>B"),
+    ],
+)
+def test_an_address_after_a_persons_name_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the courtesy word stands for no one: the request still needs its person
+        "Dobrý den! Please, give the bottle. Děkuji.",
+        "Vanakkam, nandri.",
+        # other words of those languages are still not read
+        "Dobrý den! Dejte Bobovi láhev.",
+        # an address after no person is no one
+        "Give the crisps, ma'am.",
+        "Give the crisps to Dana ma'am.",
+        # courtesies around an object alone: no one to give it to
+        "Chale, the bottle, nandri.",
+    ],
+)
+def test_near_forms_of_courtesies_stay_refused(text: str) -> None:
+    assert_refused(text, CELL)
