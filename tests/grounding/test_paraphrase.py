@@ -559,7 +559,6 @@ KNOWN_MISSES = frozenset(
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
-        "Give Emma one of the cups, green or white, it's all the same to her, bless her.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Noah or Zoe can have the globe, either one, they're both doing the project.",

@@ -250,3 +250,35 @@ def test_an_exclusion_said_another_way_reads(text: str, want: str, scene: Scene)
 )
 def test_an_exclusion_not_said_as_one_is_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- the words telling every object of the chosen kind apart, said after the choice -------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Give Alice one of the mugs, red or blue, it's all the same to her.",
+            "mug_red>A | mug_blue>A",
+        ),
+        (
+            "Give Alice one of the mugs, red or blue, and the apple to Bob.",
+            "(mug_red>A | mug_blue>A) & apple>B",
+        ),
+    ],
+)
+def test_a_choice_told_apart_again_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice one of the mugs, red or green.",  # no green mug
+        "Give Alice one of the mugs, red or red.",  # one mug twice
+        "Give Alice the cup, red or blue.",  # no choice of a kind before it
+    ],
+)
+def test_a_choice_not_told_apart_is_refused(text: str) -> None:
+    assert_refused(text, CELL)

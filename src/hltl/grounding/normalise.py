@@ -8378,8 +8378,33 @@ _INDIFFERENT26S = (
     r"any|(?:(?:she|he|they|i|we)(?:'s|'re|'m| is| are| am) )?not (?:fussed|bothered)(?: which)?|"
     r"(?:she|he|they|i|we) (?:doesn't|don't|does not|do not) (?:care|mind)(?: which)?|"
     r"(?:it )?(?:doesn't|does not) bother (?:me|her|him|them|us)(?: which)?|"
-    r"(?:it's|it is) all the same to (?:me|her|him|them|us)|(?:it )?makes no odds(?: which)?"
+    r"(?:(?:it's|it is) )?all (?:the )?same (?:to|for) (?:me|her|him|them|us)|"
+    r"(?:it )?makes no odds(?: which)?"
 )
+
+
+def _kinds_named26s(text: str, lexicon: Lexicon) -> str:
+    """'Give Emma one of the cups, green or white, …', 'Any pen to Sam, black or blue or red, …':
+    the words after a choice of a kind ('one / either / any of the Xs', 'any X') that tell apart
+    every object of that kind, joined by 'or', say the choice again: taken off. Each word must
+    name one object of the kind, all different, and together every object of it ('green or blue'
+    with no blue cup, or 'green' alone of three, is left, and refused)."""
+    m = _rx(r",\s*([a-z]+(?:(?:,| or)\s*[a-z]+)*,? or [a-z]+)\s*(?=,|[.!?]?\s*$)").search(text)
+    if m is None:
+        return text
+    words = [w for w in re.split(r"\s*,\s*|\s+or\s+", m.group(1), flags=_F) if w]
+    for chose in _rx(r"\b(?:one|either|any) (?:of (?:the|those) )?([a-z]+)\b").finditer(
+        text[: m.start()]
+    ):
+        said = chose.group(1).lower()
+        for kind in {said, said.removesuffix("s"), said.removesuffix("es")}:
+            of_kind = {o.id for o in lexicon.scene.objects if o.category == kind}
+            if len(of_kind) != len(words) or len(of_kind) < 2:
+                continue
+            named = [_ids(f"the {w} {kind}", lexicon, "object") for w in words]
+            if all(len(n) == 1 for n in named) and set().union(*named) == of_kind:
+                return text[: m.start()] + text[m.end() :]
+    return text
 
 
 def _free_split26s(text: str, lexicon: Lexicon) -> str:
@@ -8705,6 +8730,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _remarks,
     _inert_stretches,
     _subject_comma26,
+    _kinds_named26s,
     _free_split26s,
     _one_each26s,
     _one_of_them26s,
