@@ -212,3 +212,33 @@ def test_an_address_after_a_persons_name_reads(text: str, want: str) -> None:
 )
 def test_near_forms_of_courtesies_stay_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- (d) the speaker's own want after a request -------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # 12c's fuzz (session 26): read as more for the last person named
+        "Alice should get the cup, and we need the crisps",
+        "Give Alice the cup, please. We want the water bottle as well.",
+        "Hand Bob the apple, and I need the crisps.",
+        "Carol's cold, so give her the cup, and we'd like the apple",
+    ],
+)
+def test_the_speakers_own_want_after_a_request_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="the speaker is not a person")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # the speaker's want that names its recipient reads as before
+        ("Give Alice the cup, and we need the crisps for Bob.", "cup>A & chips>B"),
+        ("I need the apple and the cup brought to Carol", "apple>C & cup>C"),
+        ("We need Bob to have the chips", "chips>B"),
+    ],
+)
+def test_the_speakers_want_naming_its_recipient_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

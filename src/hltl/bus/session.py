@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import importlib
 import json
-import os
 import re
 import socket
 import threading
@@ -17,13 +16,6 @@ from hltl.errors import BackendUnavailableError, BusError
 DEFAULT_ENDPOINT = "tcp/127.0.0.1:7447"
 PERCEPTION_ENDPOINT = "tcp/127.0.0.1:7448"  # hltl node perception's default
 _ENDPOINT = re.compile(r"(tcp|udp|quic|tls|ws|unixsock-stream)/\S+")
-# Zenoh's own threads in each process: its receiving, network and sending work handed over to
-# its application runtime (one worker), instead of runtimes of their own (two receiving
-# threads, a network one, a sending one). Every message then wakes one Zenoh thread in each
-# process, not three or four, on a host with two cores shared by the executor and the node
-# (docs/bus.md, "Where the time goes (session 26, the discrete suite: 16b)"). Read by Zenoh when
-# its first session opens; a ZENOH_RUNTIME set by the user is kept.
-ZENOH_RUNTIME = "(rx: (handover: app), net: (handover: app), tx: (handover: app))"
 
 
 _executors = 0  # executors' cells driven over the bus from this process (see executor_here)
@@ -63,9 +55,7 @@ def let_go() -> None:
 
 
 def zenoh() -> Any:
-    """The ``zenoh`` module, or :class:`BackendUnavailableError` naming the extra (with
-    :data:`ZENOH_RUNTIME` in the environment unless one is set)."""
-    os.environ.setdefault("ZENOH_RUNTIME", ZENOH_RUNTIME)
+    """The ``zenoh`` module, or :class:`BackendUnavailableError` naming the extra."""
     try:
         return importlib.import_module("zenoh")
     except ImportError:
