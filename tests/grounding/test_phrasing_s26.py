@@ -406,3 +406,27 @@ def test_a_correction_cue_closing_the_instruction_is_refused(text: str) -> None:
 def test_a_correction_cue_followed_by_the_correction_still_reads() -> None:
     assert_reads("Give Person A the chips, hang on, Person B.", "chips>B", DUO)
     assert_reads("Give Person A the chips, no wait, the bottle.", "bottle>A", DUO)
+
+
+# -- (l) readings that dropped a choice the words say (wrong readings 12s found on main) --------
+
+
+def test_a_choice_the_words_say_is_not_dropped() -> None:
+    # 'any way round' after two handovers had read the one way only; a choice of two people
+    # given several objects had read cup>A | (cup>B & apple>B)
+    assert_refused("Give Alice the red mug and Bob the blue mug, any way round.", match="way")
+    assert_refused("Give Alice or Bob the cup and the apple.", match="say who gets which")
+    assert_refused("Give the cup and the apple to Alice or Bob.", match="say who gets which")
+    assert_refused("Alice or Bob, whoever, give one of them the cup and the apple.")
+    # the choice kept: read
+    assert_reads(
+        "Give Alice the cup and Bob the apple, or the other way round.",
+        "(cup>A & apple>B) | (apple>A & cup>B)",
+    )
+    assert_reads("Give Alice or Bob the cup.", "cup>A | cup>B")
+    assert_reads(
+        "Emma and Omar, a cup each, any way round.",
+        "(cup_green>C & cup_white>B) | (cup_white>C & cup_green>B)",
+        LAB,
+    )
+    assert_reads("Is there any way Bob could have the chips?", "chips>B")

@@ -91,7 +91,10 @@ def parse_instruction(
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
     inside.append(text)  # a rewrite reading a part again keeps what was lexed so far
     try:
-        return _parse(text, scene, lexicon, normalise=True)
+        node = _parse(text, scene, lexicon, normalise=True)
+        if len(inside) == 1:
+            _choices_kept(text, node, lexicon)
+        return node
     except GroundingError as refused:
         unclear = lexicon.unclear_typos(text)
         said = [r for ids in unclear.values() for r in ids if r in str(refused)]
@@ -111,6 +114,57 @@ def parse_instruction(
         raise GroundingError(f"{refused}; {more}") from None
     finally:
         inside.pop()
+
+
+# 'either way round': the speaker allows the other distribution too
+_ANY_WAY = re.compile(
+    r"\b(?:(?:either|any|whichever) way (?:round|around)(?: you like)?|any which way)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+
+
+def _has_choice(node: Node) -> bool:
+    return isinstance(node, Group) and (
+        node.op == "or" or any(_has_choice(c) for c in node.children)
+    )
+
+
+def _choices_kept(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Refuse a reading that drops a choice the words say (session 26, wrong readings 12s found):
+    'either / any way round' with no 'or' in the reading ("Give Alice the red mug and Bob the blue
+    mug, any way round" had read the one way only); a choice of two people given several objects
+    ("Give Alice or Bob the cup and the apple" had read cup>A | (cup>B & apple>B))."""
+    way = _ANY_WAY.search(text)
+    if way is not None and not _has_choice(node):
+        raise GroundingError(
+            f"{way.group(0)!r} allows another way round, but the reading has only one: say who "
+            "gets which, and 'or the other way round'"
+        )
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for k in range(len(items) - 2):
+        a, o, b = items[k], items[k + 1], items[k + 2]
+        if not (
+            a.kind == "ent"
+            and b.kind == "ent"
+            and all(r.kind == "human" for r in (*a.refs, *b.refs))
+            and o.kind == "word"
+            and o.text.lower() == "or"
+        ):
+            continue
+        objects = [
+            n for n, it in enumerate(items) if it.kind == "ent" and it.refs[0].kind == "object"
+        ]
+        for m, n in itertools.pairwise(objects):
+            between = {it.text.lower() for it in items[m + 1 : n]}
+            if "and" in between and between <= {"and", ",", "the", "a", "an", "both"}:
+                raise GroundingError(
+                    f"'{a.text} or {b.text}' with several objects: say who gets which "
+                    "(each object to one person, or all of them to one)"
+                )
 
 
 _READING = threading.local()
