@@ -461,7 +461,6 @@ KNOWN_MISSES = frozenset(
         "Person A and Person B both want a drink, so the bottle to one and the cup to the "
         "other, whichever way round.",
         "Stick a cup in the sink to soak, green or white, I'm not bothered.",
-        "Marco and Lena want a plate each, so one apiece, any way round.",
         "Each student gets a book, you choose who gets which.",
         "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
@@ -558,7 +557,6 @@ KNOWN_MISSES = frozenset(
         "Drill on the bench then hammer in the locker then torch to Jess and I'll give you a trim "
         "after.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
-        'Bob and Alice can have one each, the bottle and the crisps, any way round you like.',
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         'Give one of apple or chips to Person B, any, she does not care.',
@@ -571,7 +569,6 @@ KNOWN_MISSES = frozenset(
         'The two drinks, bottle and cup, go to Person B, krap.',
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
-        "The two of them, bottle and chips, to Person B, she's holding the ladder.",
         "Just the one bottle for Person A, that's all she's allowed before the race.",
         'All three pens go in the box, I need the desk for my pattern paper.',
         'Both plates onto the counter, Marco wants to plate up the goulash.',
@@ -625,11 +622,8 @@ KNOWN_MISSES = frozenset(
         'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        'Omar would like the sponge, and Dana wants the bowl brought over.',
         "Priya wants the red pen left in the box, she'll sort it out later.",
         "Kofi wants the hammer, mine's still in the forge.",
-        "Grab the apple, would you, and hand it to Carol, oh, and the cup too while you're over "
-        'there.',
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
         'Person A gets the bottle, and the cup as well, give them to her together.',
         "You see that bottle by your elbow? Person A's to have it.",
@@ -641,7 +635,6 @@ KNOWN_MISSES = frozenset(
         "Give Person B the bottle I'm just going to check the hammers on this upright.",
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
-        'Give Alice and Bob one thing each, the bottle and the crisps, any way round.',
         'Any of the food to Person B, the apple or the chips, terserah.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Either of them can have the chips, doesn't bother me which.",
@@ -651,14 +644,12 @@ KNOWN_MISSES = frozenset(
         'Whichever box is smallest goes to Tom.',
         'Lena and Mr Novak are to have one plate apiece, white or blue, makes no odds who gets '
         'which colour.',
-        'Give one block to Ava and the other to Lily, any which way.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'The two things you can see, the bottle and the crisps, both to Alice.',
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
         'Person A gets three of the four, the cup, the apple and the chips, and the bottle stays '
         'put.',
         "Hand over both items, chips and bottle alike, to Person B, she's earned them.",
-        'The single bottle we have, to Person A please.',
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
@@ -694,6 +685,40 @@ KNOWN_MISSES = frozenset(
         "Will you run the bottle up to Person B for me, he's at the top of the field?",
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
+        # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
+        'Dobrý den! Please, give to Bob bottle, yes? Děkuji.',
+        "Vanakkam! Please give the crisps to Alice ma'am, nandri.",
+        'Chale, please give Person A the bottle, eh? Thank you paa.',
+        'Quick one before the school bell: bottle to Person B, please and thank you.',
+        'Bună ziua, please, the bottle to Person A, yes? Mersi mult, you are very kind.',
+        "Person A has asked me twice now for the chips, she's starving after the tyre change.",
+        "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
+        'furnace.',
+        "It's Person B who ordered the cup, so hand it over to them, would you.",
+        "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
+        "The bottle, Person A's been waiting on it since the meeting finished.",
+        "Give Person B the chips and Person A the bottle and be quick about it as I'm off to "
+        'the next job.',
+        "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
+        "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
+        'not bothered which.',
+        'Person A is doing the drinks round, so give her both drinks, the cup and the bottle.',
+        'Wash-up time: both cups into the sink, green and white alike.',
+        "Both spanners to Kofi, he can't find his set.",
+        "The chips aren't for Person A, they're for Person B, she's the one who paid.",
+        'Mr Lee said the blue blanket itches, so give him the other one.',
+        'Crisps to Alice, sorry, I mean Bob, Alice is off crisps.',
+        "Cup for Person B, no, sorry, the apple, the cup's got a crack.",
+        "Chips to Person A, hang on, make it Person B, A's gone on break.",
+        "Spoon to Omar, nope, to Dana, she's stirring the samples.",
+        'The white plate on the rack, no, the counter, we need it for service.',
+        'can you put the red mug on the counter for me please my hands are all plaster',
+        'start off with crisps for alice and after that bob needs his bottle',
+        'chale pls the chips to person a eh',
+        "oh person b's been on about the bottle again hand it over",
+        "Put the appoe on the shelf, the fruit bowl's full.",
+        'Pdrson A gets the bottle, nobody else is here.',
+        "Could the apple go on the table, I've got puppets all over the shelf?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -752,8 +777,9 @@ KNOWN_UNCLEAR = frozenset(
 # in session 24: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind23" written in
 # session 24 by another engineer, reviewed by a second one, measured once at the end of session 24,
 # tuned on in session 25: asserted now, the rest in KNOWN_MISSES; "blind24" written in session 25
-# by another engineer, reviewed by a second one, measured once at the end of session 25)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind24"})
+# by another engineer, reviewed by a second one, measured once at the end of session 25, tuned on
+# in session 26: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

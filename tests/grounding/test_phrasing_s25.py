@@ -204,21 +204,42 @@ def test_a_request_taken_back_and_replaced() -> None:
     assert_reads("Give Bob the cup, no, leave it, give Carol the apple instead.", "apple>C")
     # two requests before it: which one is taken back is unclear
     assert_refused(
-        "Bob wants the cup, hand it to him, no, leave it, give Alice the apple instead",
+        "Bob wants the cup, hand it to him, and the apple to Alice, no, leave it, give Carol the "
+        "chips instead",
         match="takes back",
     )
-    # the clause before the cue is a remark (a pronoun's clause), or two requests stand before
-    # a sentence that takes back: which is taken back is unclear (12c's fuzz, session 25)
-    for text in (
-        "Hand Alice the bottle, she's got a meeting in five, no, leave it, give Carol the apple "
-        "instead",
-        "Alice needs the chips. Give them to her quickly. Forget that, sorry. Could you give "
-        "Alice the cup?",
-        "Give Bob the apple, he wants it for lunch. Cancel that. Just hand Carol the cup.",
-        "Robot, give Alice the apple. Now. Forget that, sorry. Could you give Alice the cup?",
-        "Bottle on the shelf. That's all. Thank you, no, leave it, give Alice the cup instead",
+    # what it replaces is one task said in several stretches (a want and its handover, a remark,
+    # a sentence of its own): since session 26 (test_phrasing_s26r.py) all of it is taken back
+    # and the new request is read
+    for text, want in (
+        (
+            "Bob wants the cup, hand it to him, no, leave it, give Alice the apple instead",
+            "apple>A",
+        ),
+        (
+            "Hand Alice the bottle, she's got a meeting in five, no, leave it, give Carol the "
+            "apple instead",
+            "apple>C",
+        ),
+        (
+            "Alice needs the chips. Give them to her quickly. Forget that, sorry. Could you give "
+            "Alice the cup?",
+            "cup>A",
+        ),
+        (
+            "Give Bob the apple, he wants it for lunch. Cancel that. Just hand Carol the cup.",
+            "cup>C",
+        ),
+        (
+            "Robot, give Alice the apple. Now. Forget that, sorry. Could you give Alice the cup?",
+            "cup>A",
+        ),
+        (
+            "Bottle on the shelf. That's all. Thank you, no, leave it, give Alice the cup instead",
+            "cup>A",
+        ),
     ):
-        assert_refused(text, match="takes back")
+        assert_reads(text, want)
     # a sentence that takes back one request, then a new one: the new one is read
     assert_reads("Give Alice the cup. Forget that, give her the bottle.", "bottle>A")
     assert_reads("Hand Bob the apple. Never mind, give it to Carol instead.", "apple>C")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import collections
 import contextlib
 import math
+import queue
 import random
 import threading
 import time
@@ -35,7 +36,7 @@ from hltl.bus.codec import (
 from hltl.bus.faults import FaultModel, Link
 from hltl.bus.keys import Keys, robot_of
 from hltl.bus.mind import Mind, Mirror, before, remember
-from hltl.bus.session import executor_here, let_go
+from hltl.bus.session import executor_here, let_go, zenoh
 from hltl.bus.snapshot import freeze, thaw
 from hltl.bus.ticks import Tick, encode_answer
 from hltl.errors import BusError, HltlError
@@ -71,9 +72,10 @@ MAX_CHUNK = 8
 CHECKPOINT = 8
 # most answered steps whose ticks wait for the node to be idle before going to observers
 LATER = 8
-# after an answer, the node waits this long (wall seconds, looking for the next query every
-# PAUSE_SLICE) before its idle work: the cores go to the answer's way back and to the executor
+# after an answer, the node waits this long (wall seconds; the next query ends the wait) before
+# its idle work: the cores go to the answer's way back and to the executor
 PAUSE = 0.002
+# how often a node waiting for another thread (a reset's answer) looks again
 PAUSE_SLICE = 0.0001
 # after an answer that guessed steps follow, the node waits this long before simulating them
 GUESS_PAUSE = 0.002
@@ -402,6 +404,50 @@ class _Batch:
     foreseen: set[int] = field(default_factory=set)
 
 
+class _Inbox:
+    """The step queries for a node's step thread, handed over by the queryable's callback.
+
+    Not Zenoh's own channel: a thread waiting in its ``recv`` wakes every 100 ms to look for
+    signals and takes the interpreter lock to do so, and its ``try_recv`` lets go of the lock
+    and takes it again. A process serving many cells (the bus benchmark's node holds one per
+    trial) had every idle step thread take the lock ten times a second from the one
+    simulating, and that one hand it over at every look between ticks, each time to a thread
+    woken on the other core (docs/bus.md, "Where the time goes (session 26)"). Here waiting
+    blocks without waking, looking does not let go of the lock, and a wait with a timeout
+    ends when a query comes (not polled)."""
+
+    _CLOSED = object()
+
+    def __init__(self) -> None:
+        self._items: queue.SimpleQueue[Any] = queue.SimpleQueue()
+
+    def put(self, query: Any) -> None:
+        """A query came (Zenoh's callback)."""
+        self._items.put(query)
+
+    def close(self) -> None:
+        """The queryable was withdrawn (Zenoh's drop callback): waiting ends in BusError."""
+        self._items.put(self._CLOSED)
+
+    def try_recv(self, wait: float = 0.0) -> Any:
+        """The next query, waiting up to ``wait`` seconds for one; None if none came."""
+        try:
+            item = self._items.get(timeout=wait) if wait > 0 else self._items.get_nowait()
+        except queue.Empty:
+            return None
+        return self._check(item)
+
+    def recv(self) -> Any:
+        """The next query, waiting as long as it takes."""
+        return self._check(self._items.get())
+
+    def _check(self, item: Any) -> Any:
+        if item is self._CLOSED:
+            self._items.put(item)  # (every later look says so too)
+            raise BusError("the node's step queryable was withdrawn")
+        return item
+
+
 @dataclass(slots=True)
 class _Stretch:
     """Where simulating ahead has got to (the next tick follows ``t``), and what to stop at."""
@@ -493,12 +539,12 @@ class CellNode:
         if publish_poses:  # rosbags builds its CDR code on first use (~1 s): not mid-episode
             encode_pose(StampedPose("world", 0.0, (0.0, 0.0, 0.0)))
         k = self.keys
-        # step queries wait in a channel for the node's own thread (_serve_steps), which can
+        # step queries wait in an inbox for the node's own thread (_serve_steps), which can
         # look in it between the ticks it streams
-        steps = session.declare_queryable(k.sim_step)
-        # (read from its handler: a query waited for through the queryable itself keeps it
-        # borrowed, and closing the node could not withdraw it)
-        self._steps = steps.handler
+        self._steps = _Inbox()
+        steps = session.declare_queryable(
+            k.sim_step, zenoh().handlers.Callback(self._steps.put, self._steps.close)
+        )
         self._entities: list[Any] = [
             session.declare_queryable(k.sim_reset, self._on_reset),
             steps,
@@ -550,6 +596,7 @@ class CellNode:
                 Exception
             ):  # the session is already closed: nothing left to withdraw
                 e.undeclare()
+        self._steps.close()  # (Zenoh's drop callback says so too; this is not left to it)
         self.link.close()
         # the step server sees its queryable withdrawn and ends: wait for it, so that it never
         # outlives the interpreter (a thread still in Zenoh's code then aborts the process)
@@ -676,18 +723,17 @@ class CellNode:
         commands, as for a cell saved no other way). After an answer without ticks ahead the
         executor is soon back (the bare round trip: no pause)."""
         deadline = time.perf_counter() + seconds
-        while time.perf_counter() < deadline:
-            time.sleep(PAUSE_SLICE)
-            query = self._next_query()
+        while (left := deadline - time.perf_counter()) > 0:
+            query = self._next_query(left)
             if query is not None:
                 return query
         return None
 
-    def _next_query(self) -> Any:
-        """The next step query waiting, if any; a request carrying the executor's new basis
-        (see :meth:`_foresee_first`) is taken in on the way, not returned: it does not stop
-        what the node is streaming."""
-        query = self._steps.try_recv()
+    def _next_query(self, wait: float = 0.0) -> Any:
+        """The next step query waiting (or coming within ``wait`` seconds), if any; a request
+        carrying the executor's new basis (see :meth:`_foresee_first`) is taken in on the way,
+        not returned (None is, at once): it does not stop what the node is streaming."""
+        query = self._steps.try_recv(wait)
         if query is None:
             return None
         payload = _payload(query)
@@ -721,7 +767,11 @@ class CellNode:
             if nxt is not None:
                 return nxt
             if s.guess_due and s.awaiting is not None and not self._new_basis(ep, s):
-                time.sleep(PAUSE_SLICE)  # (the executor grounds the instruction meanwhile)
+                # (the executor grounds the instruction meanwhile: its basis, or another query,
+                # ends the wait)
+                nxt = self._next_query(max(0.0, s.awaiting - time.perf_counter()))
+                if nxt is not None:
+                    return nxt
                 continue
             with self._lock:
                 b = s.batch
@@ -2283,6 +2333,12 @@ def _payload(query: Any) -> bytes:
     return b"" if p is None else bytes(p.to_bytes())
 
 
+def _relay(stop: threading.Event, wake: threading.Event) -> None:
+    """Set ``wake`` once ``stop`` is set."""
+    stop.wait()
+    wake.set()
+
+
 def serve(
     session: Any,
     scene: Scene,
@@ -2295,14 +2351,22 @@ def serve(
     on_ready: Callable[[CellNode], None] | None = None,
     period: float | None = None,
 ) -> NodeStats:
-    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set."""
+    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set.
+
+    This thread waits without a timeout (a thread waking ten times a second takes the
+    interpreter lock from the node's step thread as often: see :class:`_Inbox`); ``stop`` is
+    relayed to it by a thread of its own that waits on it alone."""
     stop = threading.Event() if stop is None else stop
     with CellNode(session, scene, cell=cell, factory=factory, faults=faults, period=period) as node:
         if on_ready is not None:
             on_ready(node)
+        wake = node.finished
+        threading.Thread(
+            target=_relay, args=(stop, wake), name="hltl-node-stop", daemon=True
+        ).start()
         while not stop.is_set():
-            if node.finished.wait(0.1):
-                node.finished.clear()
-                if episodes is not None and node.stats.finished >= episodes:
-                    break
+            wake.wait()
+            wake.clear()
+            if episodes is not None and node.stats.finished >= episodes:
+                break
         return node.stats

@@ -3755,7 +3755,7 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
                 return listed
         return text
     # "Person A gets all four things, every single one": the count said again
-    return _sub(r",\s*every (?:single )?one\b", "", text)
+    return _sub(r",\s*every (?:single |last )?one\b", "", text)
 
 
 def _shares(listed: str, lexicon: Lexicon) -> dict[str, list[str]]:
@@ -5890,6 +5890,8 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         adjectives |= set(_adjectives(lexicon))
         if said and not all(w in adjectives or w == "and" for w in said):
             return m.group(0)
+        if said and len([w for w in said if w != "and"]) != _COUNTS[m.group(1).lower()]:
+            return m.group(0)  # "all three of the boxes, small and large": which three? (s26)
         return f"the {m.group(1)} {m.group(2)}"
 
     out = _sub(
@@ -7071,6 +7073,437 @@ def _closers25(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 26 (engineer 12): blind24's refusals by kind ------------------------------------------
+
+
+def _one_name(words: str, lexicon: Lexicon, kind: str) -> str | None:
+    """The id ``words`` names when they are, whole, one name of one ``kind`` of the scene ('the
+    bottle', 'Bob', 'the loading bay' is None where no surface is called that)."""
+    names = _names(words, lexicon)
+    if len(names) != 1 or {r.kind for r in names[0].refs} != {kind}:
+        return None
+    ids = {r.id for r in names[0].refs}
+    said = re.sub(r"^(?:the|a|an|my|our|your)\s+", "", words.strip(), flags=_F).lower()
+    if len(ids) != 1 or said != names[0].text.lower():
+        return None
+    return next(iter(ids))
+
+
+def _restated26(text: str, lexicon: Lexicon) -> str:
+    """'the (one / single / only) X we've got / we have / you've got': the X (a clause saying
+    that it is there picks nothing out; with several X the name stays unclear and is refused
+    naming each)."""
+
+    def restated(m: re.Match[str]) -> str:
+        names = _names(m.group(2), lexicon)
+        if len(names) != 1 or any(r.kind != "object" for r in names[0].refs):
+            return m.group(0)
+        if m.group(2).lower() != names[0].text.lower():
+            return m.group(0)
+        return f"{m.group(1)} {m.group(2)}"
+
+    return _sub(
+        r"\b(the)(?: (?:one|single|only))? ([a-z][a-z ]*?) (?:that |which )?"
+        r"(?:we(?:'ve| have)(?: got)?|you(?:'ve| have) got)(?: here| there)?(?=\s*(?:[,.;!?]|$))",
+        restated,
+        text,
+    )
+
+
+def _brought26(text: str, lexicon: Lexicon) -> str:
+    """'P wants the X brought over (from your side)': P wants the X — a participle of bringing
+    with no place of its own says how, not where; a 'from' naming nothing in the scene says
+    where it comes from. 'brought over from Alice' (a person) or 'brought to the shelf' are
+    left."""
+
+    def brought(m: re.Match[str]) -> str:
+        source = m.group(3) or ""
+        if source and (
+            not _names_nothing(source, lexicon)
+            or re.search(r"\b(?:him|her|them|me|us|it|his|hers)\b", source, _F)
+        ):
+            return m.group(0)
+        if _one_name(m.group(2), lexicon, "object") is None and m.group(2).lower() not in (
+            "it",
+            "them",
+        ):
+            names = _names(m.group(2), lexicon)
+            if len(names) != 1 or any(r.kind != "object" for r in names[0].refs):
+                return m.group(0)
+        return f"{m.group(1)} {m.group(2)}"
+
+    return _sub(
+        r"\b(wants?|needs?|would like|'d like|is after) (the [a-z ]+?|it|them) "
+        r"(?:(?:brought|fetched)(?: over| across| round| along| back)?|"
+        r"(?:sent|passed)(?: over| across| round| along))"
+        r"(?: from ((?:the |your |my |our |over )?[a-z' ]+?))?(?=\s*(?:[,.;!?]|$|\band\b))",
+        brought,
+        text,
+    )
+
+
+# words of time after 'at the / in the / by the': when a task is done, not where a person is
+_WHEN26 = (
+    r"\b(?:end|start|beginning|moment|same time|last|first|time|minute|second|break|lunch|"
+    r"weekend|night|morning|evening|afternoon|day|meeting|interval|half|match|finish|close|"
+    r"latest|earliest|mo|sec|rush|shift|round)\b"
+)
+
+
+def _located26(text: str, lexicon: Lexicon) -> str:
+    """'… to Bob on the loading bay', 'go over to Carol at the till': where the person is, when
+    it names nothing in the scene, is taken off (to Bob); a place of the scene after the person
+    ('to Bob on the shelf') could be where the object goes, so it is left, and refused."""
+
+    def located(m: re.Match[str]) -> str:
+        if _one_name(m.group(2), lexicon, "human") is None:
+            return m.group(0)
+        if not _names_nothing(m.group(3), lexicon) or re.search(
+            r"\b(?:him|her|them|me|us|it|his|my|your|their)\b", m.group(3), _F
+        ):
+            return m.group(0)
+        if re.search(_WHEN26, m.group(3), _F):
+            return m.group(0)  # "… to Bob at the end": when, not where (an order)
+        return f"{m.group(1)} {m.group(2)}"
+
+    return _sub(
+        r"\b(to) ((?:person |mr |mrs |ms |miss |dr )?[a-z]+) "
+        r"((?:on|at|in|by|over by|down at|up at|out at|out on) the [a-z][a-z' -]*?)"
+        r"(?=\s*(?:[,.;!?]|$|\band\b|\bthen\b))",
+        located,
+        text,
+    )
+
+
+def _same_place26(text: str, lexicon: Lexicon) -> str:
+    """'…, then the thermometer, same place': the one surface named before it (with the
+    preposition said there); with none, or more than one, before it, it is left, and refused."""
+    m = re.search(
+        r",?\s*\b(?:in |on |at |onto |into )?(?:the )?same place\b(?=\s*(?:[,.;!?]|$))", text, _F
+    )
+    if m is None:
+        return text
+    before = text[: m.start()]
+    places = [it for it in _names(before, lexicon) if it.refs[0].kind == "surface"]
+    if len({r.id for it in places for r in it.refs}) != 1 or len(places[-1].refs) != 1:
+        return text
+    last = places[-1].text
+    prep = re.findall(rf"\b(on|onto|in|into|at)\s+(?:the\s+)?{re.escape(last)}\b", before, _F)
+    return f"{before} {prep[-1] if prep else 'on'} the {last}{text[m.end() :]}"
+
+
+def _counted26(text: str, lexicon: Lexicon) -> str:
+    """'put them both in the box', 'take them all to Bob': 'both' (said to be two, and checked) /
+    'them' — before a place or a person, so 'them' is the objects, not the people."""
+    out = _sub(r"\bthem both(?= (?:in|on|into|onto|to|over|across|back|up)\b)", "both", text)
+    return _sub(r"\bthem all(?= (?:in|on|into|onto|to|over|across|back|up)\b)", "them", out)
+
+
+def _subject_comma26(text: str, lexicon: Lexicon) -> str:
+    """'the three boxes, go on the belt' (what is left of 'All three of the boxes, small, medium
+    and large, go on the belt' when the list naming them is taken off): the subject and its verb
+    'go', with no comma between."""
+    return _sub(
+        r"^(the (?:two|three|four|five|six) [a-z]+),\s*(go|goes)\b"
+        r"(?= (?:on|onto|in|into|to|over)\b)",
+        r"\1 \2",
+        text,
+    )
+
+
+def _phrasal26(text: str, lexicon: Lexicon) -> str:
+    """Phrasal verbs of handing over: 'sort X out for P' (get X for P), 'sort P out with X'
+    (give P X); ', but keep X away from him / her' after a request naming one person (', but not
+    X': that person does not get it)."""
+    out = _sub(r"\bsort (the [a-z ]+?|it|them) out for\b", r"get \1 for", text)
+
+    def sort_with(m: re.Match[str]) -> str:
+        if m.group(2).lower() not in ("him", "her", "them") and (
+            _one_name(m.group(2), lexicon, "human") is None
+        ):
+            return m.group(0)
+        return f"{m.group(1)}give {m.group(2)}"
+
+    out = _sub(r"(^|\s)sort ([a-z]+(?: [a-z]+)?) out with\b", sort_with, out)
+    if len(_ids(out, lexicon, "human")) != 1:
+        return out  # 'away from her' is the one person the request names, or unclear
+    return _sub(
+        r",\s*but keep (the [a-z ]+?|it|them) away from (?:him|her|them)(?=\s*(?:[,.;!?]|$))",
+        r", but not \1",
+        out,
+    )
+
+
+def _this_time26(text: str, lexicon: Lexicon) -> str:
+    """'… gets the scissors this time (round)': which time it is asks for nothing more; 'this
+    time tomorrow' (a time to wait for) is left, and refused."""
+    return _sub(r"\s+this time(?: round| around)?(?=\s*(?:[,.;!?]|$))", "", text)
+
+
+def _questions26(text: str, lexicon: Lexicon) -> str:
+    """'Could you let P have X?' (could P have X?); 'Is it okay for X to go in S?' (can X go in
+    S?), 'Is it okay for P to have X?' (can P have X?)."""
+
+    def let(m: re.Match[str]) -> str:
+        who = m.group(2)
+        if who.lower() not in ("him", "her") and _one_name(who, lexicon, "human") is None:
+            return m.group(0)
+        return f"{m.group(1)} {who} have"
+
+    out = _sub(
+        r"\b(could|can|would|will) you (?:please |just |kindly )?let "
+        r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+) have\b",
+        let,
+        text,
+    )
+    return _sub(
+        r"^(?:so |and )?is it (?:ok|okay|alright|all right|fine) for (.+?) to (go|have|get)\b",
+        r"can \1 \2",
+        out,
+    )
+
+
+def _rather26(text: str, lexicon: Lexicon) -> str:
+    """'she'd rather have the chips', 'Bob would prefer the cup': she wants the chips (a want, read
+    as wants are); 'would rather not' is left."""
+    return _sub(
+        r"\b(he|she|they|[a-z]+)(?:'d| would) (?:rather have|prefer to have|prefer)\b(?! not)",
+        r"\1 wants",
+        text,
+    )
+
+
+def _apology26(text: str, lexicon: Lexicon) -> str:
+    """'Ever so sorry, but …' opening a request: 'So sorry, but …' (an apology before anything
+    is said corrects nothing)."""
+    return _sub(r"^(?:ever so|terribly|awfully|really|very) sorry\b", "so sorry", text)
+
+
+def _made_it26(text: str, lexicon: Lexicon) -> str:
+    """'…, no wait, he's already had his, make it the cup instead': a remark about a person
+    between the cue and 'make it / make that', naming nothing in the scene, says why; the
+    correction is 'make it …'."""
+
+    def made(m: re.Match[str]) -> str:
+        if not _names_nothing(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}, {m.group(3)}"
+
+    return _sub(
+        r"(,\s*(?:no wait|no|wait|sorry|actually|oh no|hang on))\s*,\s*"
+        r"((?:he|she|they)(?:'s|'ve| has| have| is| are)(?: already| just)? [a-z' ]+?)\s*,\s*"
+        r"(make (?:it|that)\b)",
+        made,
+        text,
+    )
+
+
+def _choices26(text: str, lexicon: Lexicon) -> str:
+    """Choices said another way: 'any way round' / 'any which way' (either way round); 'One of the
+    two, the cup or the bottle, …' (the cup or the bottle, …: the two are named after it); 'Either
+    thing (will do) for P, X or Y' (X or Y for P) and 'the cup or the bottle will do for P' (… for
+    P); 'The pair of them, bottle and chips, …' / 'Both of them, …' (both, …)."""
+    out = _sub(
+        r"\bany (?:which )?way(?: round| around)?(?=\s*(?:[,.;!?]|$))", "either way round", text
+    )
+
+    def two(m: re.Match[str]) -> str:
+        if len(_objects_listed(m.group(1), lexicon)) != 2:
+            return m.group(0)
+        return m.group(1)
+
+    out = _sub(r"^(?:one|either) of the two,\s*(the [a-z ]+? or the [a-z ]+?)(?=,)", two, out)
+    out = _sub(r"^((?:the )?[a-z]+ or (?:the )?[a-z]+) will do for\b", r"\1 for", out)
+
+    def chosen(m: re.Match[str]) -> str:
+        if len(_objects_listed(m.group(3), lexicon)) != 2:
+            return m.group(0)
+        if _one_name(m.group(2), lexicon, "human") is None:
+            return m.group(0)
+        return f"{m.group(3)} {m.group(1)} {m.group(2)}{m.group(4)}"
+
+    out = _sub(
+        r"^(?:either|any|one)(?: one| thing| item)?(?: will do)? (for|to) "
+        r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+),\s*((?:the )?[a-z]+ or (?:the )?[a-z]+)"
+        r"\s*([.!]?)$",
+        chosen,
+        out,
+    )
+
+    def both(m: re.Match[str]) -> str:
+        if len(_objects_listed(m.group(1), lexicon)) != 2 or _ids(m.group(1), lexicon, "human"):
+            return m.group(0)
+        return f"Both, {m.group(1)}"
+
+    return _sub(
+        r"^(?:the pair of them|both of them|the two of them),\s*"
+        r"((?:the )?[a-z]+ and (?:the )?[a-z]+)(?=\s*,)",
+        both,
+        out,
+    )
+
+
+def _let_go26(text: str, lexicon: Lexicon) -> str:
+    """'…, but not the chips, leave those': leaving what was just left out says it again; ',
+    it's the last one' / 'it's the only one' after a request: a remark about the object asked
+    for, asking nothing more."""
+    out = _sub(
+        r"(\bnot (?:the [a-z ]+?|those|that|them|it))\s*,\s*leave (?:those|them|that|it|that one)"
+        r"(?: be| alone| there| where (?:they are|it is))?(?=\s*(?:[,.;!?]|$))",
+        r"\1",
+        text,
+    )
+    return _sub(
+        r",\s*(?:it's|it is|that's|that is) the (?:last|only) one(?: left)?\s*([.!]?)\s*$",
+        r"\1",
+        out,
+    )
+
+
+# what a remark run on without a comma may not hold: it could ask, point back, negate or order
+_RUN_ON_HELD26 = re.compile(
+    r"\b(?:not|n't|no|never|it|them|him|her|his|me|my|i|you|instead|first|then|later|after|before|"
+    r"wants?|needs?|give|hand|bring|take|put|place|have|get|gets|one|other|both|all|each|too|also|"
+    r"only|just|either|or|and|but|if|when|once|two|three|four|five|six|several|there|here)\b",
+    _F,
+)
+# a word before 'he's' / 'she's' that joins what follows to the request as a clause of it
+_JOINS26 = (
+    r"\b(?:after|before|once|when|whenever|until|till|if|unless|as|because|cos|since|so|and|but|"
+    r"or|while|whilst|that|which|who|where|then|than|though|although|in case)\s*$"
+)
+
+
+def _run_on_remark26(text: str, lexicon: Lexicon) -> str:
+    """A remark about a person run on after a request with no mark ("give the bottle to bob would
+    you ta mate he's round the back", "chuck the bottle over to person a she's gasping thx"): from
+    'he's' / 'she's' / 'they're' to the end, naming nothing in the scene and holding no word that
+    could ask, point back, negate or order (_RUN_ON_HELD26), it is taken off when what is left
+    names something."""
+    m = re.search(
+        r"(?<![,.;:!?])\s+((?:he|she|they)(?:'s|'re| is| are| has| have|'ve) [a-z' ]+?)\s*([.!]?)$",
+        text,
+        _F,
+    )
+    if m is None or not _names_nothing(m.group(1), lexicon):
+        return text
+    said = re.sub(r"^(?:he|she|they)(?:'s|'re|'ve)?", "", m.group(1).lower())
+    if _RUN_ON_HELD26.search(said) or not _names(text[: m.start()], lexicon):
+        return text
+    if re.search(_JOINS26, text[: m.start()], _F):
+        return text  # "… after they're there": a clause joined to the request, not a remark
+    return text[: m.start()] + m.group(2)
+
+
+_PERSON26 = r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+)"
+_ANY_WAY26 = (
+    r"(?:either way round|either way around|any way round|any which way|whichever way(?: round)?|"
+    r"(?:i|we) don't mind who gets (?:what|which)|(?:it )?doesn't matter who gets (?:what|which))"
+)
+
+
+def _one_each26(text: str, lexicon: Lexicon) -> str:
+    """'P and Q, one (thing) each, the X and the Y, any way round' / '…, I don't mind who gets
+    what': P the X and Q the Y, or the other way round (two people, two objects; without a word
+    saying any way will do, 'one each' could be in the order said, so it is left)."""
+
+    def each(m: re.Match[str]) -> str:
+        p, q, x, y = m.group(1), m.group(2), m.group(3), m.group(4)
+        if _one_name(p, lexicon, "human") is None or _one_name(q, lexicon, "human") is None:
+            return m.group(0)
+        if _one_name(p, lexicon, "human") == _one_name(q, lexicon, "human"):
+            return m.group(0)
+        if len(_objects_listed(f"{x} and {y}", lexicon)) != 2:
+            return m.group(0)
+        x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
+        return f"Give {p} {x} and {q} {y}, or the other way round{m.group(5)}"
+
+    return _sub(
+        rf"^(?:give )?{_PERSON26} and {_PERSON26},?\s*(?:can have |get |each get )?"
+        r"(?:one|one thing|one item|a thing|an item) (?:each|apiece),\s*"
+        r"((?:the )?[a-z]+) and ((?:the )?[a-z]+),\s*" + _ANY_WAY26 + r"(?: you like)?\s*([.!]?)$",
+        each,
+        text,
+    )
+
+
+def _whoever26(text: str, lexicon: Lexicon) -> str:
+    """'P or Q, whoever, give one of them the X' / 'Give one of P or Q the X': the X to P or Q."""
+
+    def whoever(m: re.Match[str]) -> str:
+        if _one_name(m.group(1), lexicon, "human") is None:
+            return m.group(0)
+        if _one_name(m.group(2), lexicon, "human") is None:
+            return m.group(0)
+        return f"give {m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+
+    out = _sub(
+        rf"^{_PERSON26} or {_PERSON26},\s*(?:whoever|whichever|either(?: one| of them)?),\s*"
+        r"(?:give|hand|pass) one of them (the [a-z ]+?)\s*([.!]?)$",
+        whoever,
+        text,
+    )
+    return _sub(
+        rf"^(?:give|hand|pass) one of {_PERSON26} or {_PERSON26} (the [a-z ]+?)\s*([.!]?)$",
+        whoever,
+        out,
+    )
+
+
+def _headed26(text: str, lexicon: Lexicon) -> str:
+    """'Both of them want feeding: chips for Person A, bottle for Person B': a header saying that
+    the people named after it want something, before the colon, asks nothing by itself (taken off
+    when what follows names two people); 'Clear the lot onto the shelf' (put it all there)."""
+    m = re.match(
+        r"^(?:both of them|they both|the two of them|both) (?:want|need)s? [a-z]+ing\s*:\s*",
+        text,
+        _F,
+    )
+    if m is not None and len(_ids(text[m.end() :], lexicon, "human")) == 2:
+        text = text[m.end() :]
+    return _sub(
+        r"^clear (the lot|everything|it all|all of it|all the things) (onto|into|on|in)\b",
+        r"put \1 \2",
+        text,
+    )
+
+
+def _corrected_first26(text: str, lexicon: Lexicon) -> str:
+    """'The chips, no, the bottle, (silly me,) to Person A': the one object named (or a word
+    naming nothing of the scene), corrected before its recipient is said — the bottle to Person
+    A."""
+
+    def first(m: re.Match[str]) -> str:
+        said = _names(m.group(1), lexicon)
+        if said and _one_name(m.group(1), lexicon, "object") is None:
+            return m.group(0)  # what is corrected is an object, or nothing of the scene
+        if _one_name(m.group(2), lexicon, "object") is None:
+            return m.group(0)
+        return f"{m.group(2)} "
+
+    return _sub(
+        r"^(the [a-z]+),\s*(?:no|sorry|no wait|i mean|no,\s*sorry),\s*(the [a-z]+),\s*"
+        r"(?:(?:silly me|my mistake|my bad|my fault|sorry),\s*)?(?=(?:to|for) )",
+        first,
+        text,
+    )
+
+
+def _while26(text: str, lexicon: Lexicon) -> str:
+    """A closing 'while it's quiet' / 'while you're there' / 'while you're at it': when to do it,
+    now, asks for nothing more (taken off when it names nothing in the scene)."""
+    m = re.search(
+        r"(?:,\s*|\s+)while (?:it's|it is|you're|you are|we're|we are) ([a-z' ]+?)\s*([.!]?)$",
+        text,
+        _F,
+    )
+    if m is None or m.start() == 0 or not _names_nothing(m.group(1), lexicon):
+        return text
+    if re.search(r"\b(?:not|n't|him|her|them|me|later|tomorrow|done|finished)\b", m.group(1), _F):
+        return text
+    return text[: m.start()] + m.group(2)
+
+
 # -- the speaker's remarks: one rule (session 22's and session 24's, merged in session 25) ---------
 #
 # The speaker talking about themself asks nothing, wherever it is said ("I'm the farmer, my boots
@@ -7962,6 +8395,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _order,
     _remarks,
     _inert_stretches,
+    _subject_comma26,
 )
 
 
@@ -7988,4 +8422,23 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _negation19,
     _telegraph19,
     _header_count20,
+    _restated26,
+    _brought26,
+    _located26,
+    _same_place26,
+    _counted26,
+    _phrasal26,
+    _this_time26,
+    _questions26,
+    _rather26,
+    _apology26,
+    _made_it26,
+    _while26,
+    _choices26,
+    _let_go26,
+    _run_on_remark26,
+    _one_each26,
+    _whoever26,
+    _headed26,
+    _corrected_first26,
 )

@@ -97,6 +97,8 @@ def parse_instruction(
         said = [r for ids in unclear.values() for r in ids if r in str(refused)]
         if not unclear and not _readings(refused) and len(inside) == 1:
             named = _unclear_names(text, lexicon)
+            if not named and "could mean" not in str(refused):
+                named = _unclear_it(text, lexicon)
             if named:
                 # "Alice should get the mug. Not Alice, sorry, Carol.": refused for the
                 # correction, and 'the mug' could be either mug: the refusal says which
@@ -135,6 +137,40 @@ def _unclear_names(text: str, lexicon: Lexicon) -> str:
     return "; ".join(f"{w!r} could mean {' or '.join(ids)}" for w, ids in out.items())
 
 
+# what may stand between two objects of one list ("the tape and the gloves", "cup, bottle or apple")
+_IN_A_LIST = frozenset({",", "and", "or", "the", "a", "an", "both", "either"})
+
+
+def _unclear_it(text: str, lexicon: Lexicon) -> str:
+    """What the first 'it' of ``text`` could mean when the last thing named before it is a list of
+    objects ("The tape and the gloves are done with, so take it over to Tom": "'it' could mean tape
+    or gloves"), '' otherwise (session 26: refused for another reason, the refusal still says
+    which objects 'it' could mean; it never makes a reading)."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    listed: list[str] = []
+    joined = True  # nothing but list words since the last object
+    for it in items:
+        if it.kind == "word" and it.text.lower() == "it":
+            said = list(dict.fromkeys(listed))
+            return f"'it' could mean {' or '.join(said)}" if len(said) > 1 else ""
+        if it.kind == "ent":
+            ids = {r.id for r in it.refs}
+            if len(ids) != 1 or it.refs[0].kind != "object":
+                listed = []  # a person, a place or a choice: not a list of objects
+                joined = False
+                continue
+            if not joined:
+                listed = []
+            listed.append(it.refs[0].id)
+            joined = True
+        elif it.text.lower() not in _IN_A_LIST:
+            joined = False
+    return ""
+
+
 def _inside() -> list[str]:
     """The instructions this thread is reading, outermost first (a rewrite reads parts of one
     again)."""
@@ -157,7 +193,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
-        _taken_back(text)
+        replaced = _taken_back(text, scene, lexicon)
+        if replaced is not None:
+            return replaced
         hearer = hearer_named(text, lexicon)
         if hearer is not None:
             raise GroundingError(
@@ -288,17 +326,26 @@ _REQUESTED = re.compile(
 _MARK = re.compile(r"[,.;!?]")
 
 
-def _taken_back(text: str) -> None:
+def _taken_back(text: str, scene: Scene, lexicon: Lexicon) -> Node | None:
     """'The bib to Ava, no, leave it, Ava can get it herself', '…, no, leave it': a correction
     cue with 'leave it' / 'forget it' / 'never mind' takes back the request before it (session
     25: blind23 and 12c's take-back fuzz). Refused, unless what follows is a new request (a task
-    verb, or 'instead') and what it replaces is one request said in one stretch ('Put the
-    notebook on the desk. Actually no, leave it, put the stapler there instead.' is read by the
-    correction rules); with more before it ('Bob wants the cup, hand it to him, no, leave it, …',
-    'Give Alice the apple. Now. Forget that, …') which is taken back is unclear."""
+    verb, or 'instead'). That new request is the instruction (session 26, _replaced) when what it
+    replaces reads as one task and the new one reads alone ('Could you, please, give Bob the cup,
+    no, leave it, give Carol the apple instead'); else (None) it is read by the correction rules
+    when what it replaces is one request said in one stretch ('Put the notebook on the desk.
+    Actually no, leave it, put the stapler there instead.'); with more before it ('Bob wants the
+    cup, hand it to him and the apple too, no, leave it, …') which is taken back is unclear."""
     m = _TAKEN_BACK.search(text)
     if m is None:
-        return
+        return None
+    # the last take-back: what it replaces may hold an earlier one, read as corrected
+    last = list(_TAKEN_BACK.finditer(text))[-1]
+    new = text[last.end() :].lstrip(" ,.;!?")
+    if _NEW_REQUEST.search(new):
+        node = _replaced(text[: last.start()].strip(" ,.;!?"), new, scene, lexicon)
+        if node is not None:
+            return node
     rest = text[m.end() :].strip(" ,.;!?")
     before = text[: m.start()].strip(" ,.;!?")
     if (
@@ -307,11 +354,38 @@ def _taken_back(text: str) -> None:
         and len(_REQUESTED.findall(before)) <= 1
         and not _MARK.search(before)
     ):
-        return
+        return None
     raise GroundingError(
         f"{m.group(0).strip()!r} takes back the request before it: say what to do instead, or "
         "nothing"
     )
+
+
+# what points back at the request taken back, adds to it or orders itself after it: a new request
+# holding one of these is not read alone
+_POINTS_BACK = re.compile(
+    r"\b(?:it|its|them|they|him|her|his|he|she|there|that|those|these|this|same|other|another|"
+    r"too|also|as well|again|still|both|each|rest|either|whichever|first|next|later|afterwards|"
+    r"after that|before that)\b",
+    re.I,
+)
+_INSTEAD = re.compile(r"\s*\binstead\b(?!\s+of\b)", re.I)
+
+
+def _replaced(before: str, new: str, scene: Scene, lexicon: Lexicon) -> Node | None:
+    """The new request said after a take-back, read alone ('instead' taken off), when the words
+    before the take-back read as exactly one task, so that 'leave it' takes back all of them
+    whatever commas they hold ('Could you, please, give Bob the cup', 'Give Bob the cup, no,
+    Alice'), and the new request points back at nothing and adds to nothing (no 'it', 'her',
+    'there', 'too', 'the other'); else None."""
+    if _POINTS_BACK.search(new):
+        return None
+    try:
+        if not isinstance(parse_instruction(before, scene, lexicon), Task):
+            return None
+        return parse_instruction(_INSTEAD.sub("", new), scene, lexicon)
+    except GroundingError:
+        return None
 
 
 def _cut_off(text: str) -> GroundingError | None:
@@ -403,6 +477,27 @@ def _read(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     return node
 
 
+def _echoed(raw: _Raw) -> int:
+    """The tasks ``raw`` holds twice only because a bare name repeats the piece before it
+    ("Bottle, Person A": 'Person A' says whom the bottle is for, once) — not a task the speaker
+    asks for twice, so an 'again' after it ("Bottle, Person A again": Person A gets something
+    again) asks for nothing a second time (session 26)."""
+    if isinstance(raw, _Frag):
+        return 0
+    n = sum(_echoed(c) for c in raw.children)
+    for a, b in itertools.pairwise(raw.children):
+        if (
+            isinstance(a, _Frag)
+            and isinstance(b, _Frag)
+            and b.bare
+            and b.objects
+            and b.objects == a.objects
+            and b.target == a.target
+        ):
+            n += len(b.objects)
+    return n
+
+
 def _read_now(text: str, scene: Scene, lexicon: Lexicon) -> Node:
     items = lex(text, lexicon)
     # "again" said to repeat a task: read exactly (twice) or refused, never once
@@ -432,7 +527,9 @@ def _read_now(text: str, scene: Scene, lexicon: Lexicon) -> Node:
         raise GroundingError(f"no delivery or placement in {text.strip()!r}")
     node = normalise(parser.expand(node, frozenset()))
     once = _dedupe(node)
-    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)):
+    if again is not None and sum(1 for _ in tasks(once)) < sum(1 for _ in tasks(node)) - _echoed(
+        raw
+    ):
         twice = next(t for t in tasks(node) if sum(1 for u in tasks(node) if u == t) > 1)
         raise GroundingError(
             f"{again.text!r} asks for {_task_words(twice, lexicon)} a second time: an object "

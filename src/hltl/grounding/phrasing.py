@@ -1136,6 +1136,9 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         ):
             k += 1  # "all four objects": the number says how many, and is checked
             continue
+        if _definite_one(items, k, out):
+            k += 1  # "the one blanket": 'the blanket' (with two blankets: refused, naming both)
+            continue
         quant, count = _quant_word(it)
         if quant and it.text.lower() == "either":
             nxt = items[k + 1] if k + 1 < len(items) else None
@@ -1153,6 +1156,10 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
             if j < len(items) and _objects(items[j]):
                 target = items[j]
                 words = " ".join(x.text for x in items[k : j + 1])
+                named = _named_after_generic(items, j, quant, words)
+                if named:
+                    k = named  # "either thing, bottle or chips": the bottle or the chips
+                    continue
                 out.append(_quantify(target, quant, count, words, lexicon, k))
                 k = j + 1
                 continue
@@ -1266,6 +1273,66 @@ def _something_given(items: list[Item], k: int) -> bool:
         and items[n].lemma in _COMMANDS
         and (nxt is None or nxt.kind == "punct" or _is(nxt, "and", "filler"))
     )
+
+
+def _named_after_generic(items: list[Item], j: int, quant: str, words: str) -> int:
+    """Where to go on when the choice of a generic noun at ``j`` ('either thing', 'one item')
+    is followed by a comma and the objects it chooses from, joined by 'or' ("Give Person B either
+    thing, bottle or chips": the bottle or the chips, not any object or those two): after the
+    comma, so only the objects named are read; 0 when it is not so. Joined by 'and' instead it
+    is unclear which are chosen from: refused (session 26)."""
+    if quant != "some" or items[j].text.lower() not in ("thing", "item", "object"):
+        return 0
+    m = j + 1
+    if m + 1 < len(items) and items[m].text.lower() in ("to", "for") and _humans(items[m + 1]):
+        m += 2  # "Either thing to Person B, bottle or chips"
+    if m + 1 >= len(items) or not _is(items[m], ","):
+        return 0
+    n, named, joins = m + 1, 0, set()
+    while n < len(items) and not (items[n].kind == "punct" and items[n].lemma in (*_END, ",")):
+        x = items[n]
+        if _objects(x) and len({r.id for r in x.refs}) == 1:
+            named += 1
+        elif _is(x, "det"):
+            pass
+        elif x.kind == "word" and x.text.lower() in ("or", "and"):
+            joins.add(x.text.lower())
+        else:
+            return 0
+        n += 1
+    if named < 2 or not joins:
+        return 0
+    if joins != {"or"} or m > j + 1:
+        # with a person between ("Either thing to Person B, bottle or chips") the objects
+        # after the comma are not next to the choice they restrict: refused, naming them
+        raise GroundingError(
+            f"{words!r} is one object, then {named} are named after it: say the one to choose "
+            "from, as in 'the bottle or the chips to Person B'"
+        )
+    return j + 2
+
+
+def _definite_one(items: list[Item], k: int, out: list[Item]) -> bool:
+    """Whether 'one' at ``k`` is the 'one' of a definite singular, 'the one blanket' (session 26,
+    blind24's wrong reading): the speaker presumes there is a single blanket, so it means what
+    'the blanket' means — that blanket, or, with several, a refusal naming each — never "either
+    blanket". 'one blanket', 'just / only the one blanket' (a count: only one, any) and 'the one
+    … the other' (one of the two) keep their readings."""
+    if items[k].text.lower() != "one" or not out or out[-1].kind != "word":
+        return False
+    if out[-1].text.lower() != "the" or (
+        len(out) > 1 and out[-2].kind == "word" and out[-2].text.lower() in ("just", "only")
+    ):
+        return False
+    j = _past_dets(items, k + 1)
+    if j >= len(items) or not _objects(items[j]):
+        return False
+    for x in items[j + 1 :]:
+        if x.kind == "punct" and x.lemma in _END:
+            break
+        if _is(x, "other"):
+            return False  # "give Alice the one mug and Bob the other"
+    return True
 
 
 def _one_then_other(items: list[Item], k: int, lexicon: Lexicon) -> bool:
@@ -2456,9 +2523,24 @@ def _listed_on(items: list[Item], k: int) -> bool:
                 low = it.text.lower()
                 participle = low.endswith(("ed", "en", "ught")) or low in _BARE_PARTICIPLES
                 return joined and _is_verb_item(it) and participle
-            return _is(it, "to", "for")
+            return _is(it, "to", "for") and not _verb_later(items, k + 1)
         k += 1
     return False
+
+
+def _verb_later(items: list[Item], k: int) -> bool:
+    """Whether a verb with no person of its own comes in ``items[k:]`` (after the recipient)
+    before the sentence ends: in "We need the chips, for Person B, bottle, please give" (session
+    26) the recipient may open that clause rather than close the speaker's want before it ("…,
+    for Person B, then give Person A the bottle" has its own)."""
+    while k < len(items) and (_humans(items[k]) or _is(items[k], "det", "and")):
+        k += 1  # the recipient itself
+    verb = human = False
+    while k < len(items) and not (items[k].kind == "punct" and items[k].lemma in _END):
+        verb = verb or _is_verb_item(items[k])
+        human = human or _humans(items[k])
+        k += 1
+    return verb and not human
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
