@@ -172,6 +172,7 @@ def test_brought_over_with_no_place_is_the_wanter() -> None:
     )
     assert_reads("Mia needs the tape fetched across.", "tape>A", DEPOT)
     assert_refused("Person B wants the bottle taken.", DUO)  # taken where?
+    assert_refused("Bob wants the cup brought back.")  # back where it was, or to Bob?
     # from a person: whose it is, or where it is taken from, is not a remark
     assert_refused("Person B wants the bottle brought over from Person A.", DUO)
     assert_reads("Person B wants the bottle brought over to Person A.", "bottle>A", DUO)
@@ -188,6 +189,7 @@ def test_where_a_person_is_after_to_person() -> None:
     # refused
     assert_refused("Give the cup to Bob on the shelf.")
     assert_refused("Give Alice the apple, and the cup to Bob at the end.")
+    assert_refused("Take the apple to Bob in the next five minutes.")  # a time: put off
     assert_refused("Take the apple to Bob at the table.")
 
 
@@ -371,3 +373,36 @@ def test_clear_onto_and_a_correction_before_the_recipient() -> None:
     # a person where an object was, or an object the scene has twice: refused
     assert_refused("The chips, no, Person B, to Person A.", F41)
     assert_refused("The chips, no, the mug, to Person A.")
+
+
+# -- (j) 'waiting on', 'both <a word the scene does not name>, X and Y' ---------------------------
+
+
+def test_waiting_on_and_both_described() -> None:
+    assert_reads("The bottle, Person A's been waiting on it.", "bottle>A", ONE)
+    assert_reads("Person B has been waiting on the chips.", "chips>B", DUO)
+    assert_reads("Give Person A both drinks, the cup and the bottle.", "cup>A & bottle>A", F41)
+    # three named for 'both', or 'both cups' where the scene has one cup: refused
+    assert_refused("Give Person A both drinks, the cup, the apple and the bottle.", F41)
+    assert_refused("Give Person A both cups, the cup and the bottle.", F41)
+
+
+# -- (k) a correction cue closing the instruction (12c's wrapper fuzz, seed 26) -----------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Person A, no, sorry, Person B gets the chips, sorry, correction,",
+        "Give Person A the chips, no wait.",
+        "Give Person A the chips. Hang on.",
+        "The chips to Person B, I mean...",
+    ],
+)
+def test_a_correction_cue_closing_the_instruction_is_refused(text: str) -> None:
+    assert_refused(text, DUO, match="correction that names nothing")
+
+
+def test_a_correction_cue_followed_by_the_correction_still_reads() -> None:
+    assert_reads("Give Person A the chips, hang on, Person B.", "chips>B", DUO)
+    assert_reads("Give Person A the chips, no wait, the bottle.", "bottle>A", DUO)

@@ -155,3 +155,90 @@ def test_a_recipient_between_a_want_and_a_request_is_refused(
 )
 def test_a_recipient_that_closes_the_want_reads(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# -- (c) greetings, thanks and addresses of other languages --------------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(SCENES),
+    st.integers(0, 20),
+    st.sampled_from(
+        [
+            "Dobrý den! {Req}, please. Děkuji.",
+            "Dobry den, prosím, {req}.",
+            "Bună ziua, please, {req}. Mersi mult, you are very kind.",
+            "Buna ziua, {req}, vă rog. Mulțumesc.",
+            "Vanakkam! {Req}, nandri.",
+            "Chale, {req}, eh? Thank you paa.",
+            "Akwaaba! {Req}. Medaase.",
+        ]
+    ),
+)
+def test_courtesies_of_other_languages_read(scene: Scene, k: int, frame: str) -> None:
+    # blind24: Czech, Romanian, Tamil and Ghanaian openers and closers were refused ('Dobrý' is
+    # not a word the offline grounder reads; no person called 'Vanakkam' / 'Chale')
+    req, want = plain_request(scene, k)
+    assert_reads(frame.format(req=req, Req=req[0].upper() + req[1:]), want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Please give the crisps to Alice ma'am.", "chips>A"),
+        ("Vanakkam! Please give the crisps to Bob sir, nandri.", "chips>B"),
+        ("Give the cup to Carol madam, then the apple to Bob.", "cup>C ; apple>B"),
+    ],
+)
+def test_an_address_after_a_persons_name_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the courtesy word stands for no one: the request still needs its person
+        "Dobrý den! Please, give the bottle. Děkuji.",
+        "Vanakkam, nandri.",
+        # other words of those languages are still not read
+        "Dobrý den! Dejte Bobovi láhev.",
+        # an address after no person is no one
+        "Give the crisps, ma'am.",
+        "Give the crisps to Dana ma'am.",
+        # courtesies around an object alone: no one to give it to
+        "Chale, the bottle, nandri.",
+    ],
+)
+def test_near_forms_of_courtesies_stay_refused(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+# -- (d) the speaker's own want after a request -------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # 12c's fuzz (session 26): read as more for the last person named
+        "Alice should get the cup, and we need the crisps",
+        "Give Alice the cup, please. We want the water bottle as well.",
+        "Hand Bob the apple, and I need the crisps.",
+        "Carol's cold, so give her the cup, and we'd like the apple",
+    ],
+)
+def test_the_speakers_own_want_after_a_request_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="the speaker is not a person")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # the speaker's want that names its recipient reads as before
+        ("Give Alice the cup, and we need the crisps for Bob.", "cup>A & chips>B"),
+        ("I need the apple and the cup brought to Carol", "apple>C & cup>C"),
+        ("We need Bob to have the chips", "chips>B"),
+    ],
+)
+def test_the_speakers_want_naming_its_recipient_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

@@ -61,7 +61,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
-from hltl.grounding.tree import Group, tasks
+from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene
 
 _F = re.IGNORECASE
@@ -994,6 +994,9 @@ def _notes(text: str, lexicon: Lexicon) -> str:
             stays is not None
             and _only(stays.group(1), lexicon, "object")
             and not _ids(stays.group(1), lexicon) & _ids(others, lexicon)
+            # nor when another clause counts every object: "Everything except the cup goes to
+            # Bob, the apple stays" hands over the apple with the rest (session 26, 12s)
+            and not _rx(r"\b(?:everything|anything|all|the lot|the rest|every)\b").search(others)
         ):
             continue
         kept.append(c)
@@ -6182,10 +6185,11 @@ _LY_HELD19 = frozenset(
 # Bob the cup lah": _fillers19) or as a stretch of their own between punctuation marks ("…,
 # lah.", "Sawasdee krap.": _courtesy24). Malaysian and Singaporean English lah, la, leh, lor,
 # meh, hor, ah; London innit; Afrikaans ja; Nigerian o, sha; Thai krap, khrap, krub, khrub, kha;
-# Tagalog po, opo.
+# Tagalog po, opo; Ghanaian paa.
 _PARTICLES = frozenset(
     {"lah", "la", "leh", "lor", "meh", "hor", "ah", "innit", "ja", "o", "sha"}
     | {"krap", "khrap", "krub", "khrub", "kha", "po", "opo"}
+    | {"paa"}  # Ghanaian English: 'thank you paa' (very much), session 26
 )
 _NOW19 = re.compile(
     r"\s*\b(?:right now|just now|now in a minute|in a minute|straight ?away|at once|"
@@ -6952,6 +6956,10 @@ _COURTESY24 = (
     r"mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|"
     r"köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|"
     r"mas|mbak|bless up|big up|respect|one love|"
+    # session 26: Czech, Romanian, Tamil and Ghanaian greetings, thanks and the address 'chale'
+    # (friend), with and without their letters' marks ('please' in them: _translated25)
+    r"dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|"
+    r"mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -6994,7 +7002,9 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
 # 'bitte'; Spanish 'por favor') and 'sorry' (Persian 'bebakhshid', Indonesian 'maaf'); and a
 # title of respect before a scene person's name (Indonesian 'Bu' / 'Ibu', 'Pak' / 'Bapak', 'Mas',
 # 'Mbak')
-_PLEASE25 = re.compile(r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor)\b", _F)
+_PLEASE25 = re.compile(
+    r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog)(?!\w)", _F
+)
 _SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)
 # Jamaican English / Patois words for English function words ('di bottle' = the bottle, 'fi Bob'
 # = for Bob, 'mek Person A get' = let Person A get, 'mi mean' = I mean, 'it nuh matter' = it
@@ -7038,6 +7048,31 @@ def _translated25(text: str, lexicon: Lexicon) -> str:
     return _HONORIFIC25.sub(
         lambda m: "" if _person_at(m.string[m.end() :], lexicon) else m[0], text
     )
+
+
+# an address of respect said right after a person's name ('to Alice ma'am', 'Bob sir': Indian,
+# Tamil and Ghanaian English) before a mark or the end (session 26)
+_ADDRESS_AFTER26 = re.compile(r"\s+(?:ma'am|ma’am|maam|madam|sir)(?=\s*[,.;!?]|$)", _F)
+
+
+def _address_after26r(text: str, lexicon: Lexicon) -> str:
+    """Session 26: 'ma'am' / 'madam' / 'sir' right after a person's name of the scene ("Please give
+    the crisps to Alice ma'am") is said of that person, as 'Mrs' before it would be: taken off.
+    After anything else ('the bottle, sir', 'Madam Curie ma'am' not in the scene) it is left."""
+    if not _ADDRESS_AFTER26.search(text):
+        return text
+
+    def after_person(m: re.Match[str]) -> str:
+        words = m.string[: m.start()].split()[-3:]
+        said = _names(" ".join(words), lexicon)
+        named = (
+            bool(said)
+            and m.string[: m.start()].lower().endswith(said[-1].text.lower())
+            and all(r.kind == "human" for r in said[-1].refs)
+        )
+        return "" if named else m[0]
+
+    return _ADDRESS_AFTER26.sub(after_person, text)
 
 
 def _person_at(rest: str, lexicon: Lexicon) -> bool:
@@ -7134,7 +7169,7 @@ def _brought26(text: str, lexicon: Lexicon) -> str:
 
     return _sub(
         r"\b(wants?|needs?|would like|'d like|is after) (the [a-z ]+?|it|them) "
-        r"(?:(?:brought|fetched)(?: over| across| round| along| back)?|"
+        r"(?:(?:brought|fetched)(?: over| across| round| along)?|"
         r"(?:sent|passed)(?: over| across| round| along))"
         r"(?: from ((?:the |your |my |our |over )?[a-z' ]+?))?(?=\s*(?:[,.;!?]|$|\band\b))",
         brought,
@@ -7146,7 +7181,8 @@ def _brought26(text: str, lexicon: Lexicon) -> str:
 _WHEN26 = (
     r"\b(?:end|start|beginning|moment|same time|last|first|time|minute|second|break|lunch|"
     r"weekend|night|morning|evening|afternoon|day|meeting|interval|half|match|finish|close|"
-    r"latest|earliest|mo|sec|rush|shift|round)\b"
+    r"latest|earliest|mo|sec|rush|shift|round|hour|week|month|next|tomorrow|tonight|later|"
+    r"soon|dinner|breakfast|tea|service|game)s?\b"
 )
 
 
@@ -7327,6 +7363,21 @@ def _choices26(text: str, lexicon: Lexicon) -> str:
         r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+),\s*((?:the )?[a-z]+ or (?:the )?[a-z]+)"
         r"\s*([.!]?)$",
         chosen,
+        out,
+    )
+
+    def described(m: re.Match[str]) -> str:
+        if not _names_nothing(m.group(1), lexicon):
+            return m.group(0)  # 'both cups, …' names them: read as said
+        if len(_objects_listed(m.group(2), lexicon)) != 2 or _ids(m.group(2), lexicon, "human"):
+            return m.group(0)
+        return m.group(2)
+
+    # "give her both drinks, the cup and the bottle": a description the scene does not name,
+    # then the two objects it describes
+    out = _sub(
+        r"\bboth ([a-z]+s),\s*((?:the )?[a-z]+ and (?:the )?[a-z]+)(?=\s*(?:[,.;!?]|$))",
+        described,
         out,
     )
 
@@ -7701,6 +7752,8 @@ _FRAMES22: tuple[tuple[str, str], ...] = (
         " wants",
     ),
     (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
+    # session 26: "Person A's been waiting on it" (waiting for it)
+    (r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) waiting on\b", " wants"),
 )
 # a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
 _PURPOSE22 = re.compile(
@@ -8278,6 +8331,287 @@ def _archaic19_words(text: str) -> str:
     return out
 
 
+# -- session 26 (engineer 12s): choices, splits, exclusivity and exclusions said around a request --
+#
+# Each rewrite below is taken only when the grammar (no rewrites) reads what it leaves as the
+# kind of request its words say: a free split or a choice must read as an 'or', one person alone
+# as tasks for that one person; anything else is left as it was (and refused as before).
+
+
+def _reading26s(text: str, lexicon: Lexicon) -> Node | None:
+    """What the grammar alone reads ``text`` as, or None where it refuses."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        return parse_instruction(text, lexicon.scene, lexicon, normalise=False)
+    except GroundingError:
+        return None
+
+
+def _a_choice26s(text: str, lexicon: Lexicon) -> bool:
+    """Whether the grammar reads ``text`` as one choice: an 'or' of single tasks, or an 'or'
+    whose alternatives hand over the same objects to the same people (who gets which is free).
+    An 'or' mixing both ('Give Alice or Bob the cup and the apple' is read 'cup>A | (cup>B &
+    apple>B)' by the grammar) is not such a choice."""
+    node = _reading26s(text, lexicon)
+    if not isinstance(node, Group) or node.op != "or":
+        return False
+    if all(isinstance(c, Task) for c in node.children):
+        return True
+    said = {
+        (frozenset(t.obj for t in tasks(c)), frozenset(t.target for t in tasks(c)))
+        for c in node.children
+    }
+    return len(said) == 1
+
+
+# who gets which said to be free ("any way round", "I don't mind who gets what")
+_FREE_SPLIT26S = (
+    r"(?:any|either) (?:which )?way(?: round| around)?(?: you (?:like|want|fancy|please))?|"
+    r"(?:i )?(?:don't|do not) mind who gets (?:what|which)(?: one)?|"
+    r"(?:it )?makes no odds who gets (?:what|which)(?: [a-z]+)?|"
+    r"(?:it )?(?:doesn't|does not) matter who gets (?:what|which)(?: [a-z]+)?"
+)
+# the chooser's indifference after a choice ("she's not fussed which", "she does not care")
+_INDIFFERENT26S = (
+    r"any|(?:(?:she|he|they|i|we)(?:'s|'re|'m| is| are| am) )?not (?:fussed|bothered)(?: which)?|"
+    r"(?:she|he|they|i|we) (?:doesn't|don't|does not|do not) (?:care|mind)(?: which)?|"
+    r"(?:it )?(?:doesn't|does not) bother (?:me|her|him|them|us)(?: which)?|"
+    r"(?:(?:it's|it is) )?all (?:the )?same (?:to|for) (?:me|her|him|them|us)|"
+    r"(?:it )?makes no odds(?: which)?"
+)
+
+
+def _kinds_named26s(text: str, lexicon: Lexicon) -> str:
+    """'Give Emma one of the cups, green or white, …', 'Any pen to Sam, black or blue or red, …':
+    the words after a choice of a kind ('one / either / any of the Xs', 'any X') that tell apart
+    every object of that kind, joined by 'or', say the choice again: taken off. Each word must
+    name one object of the kind, all different, and together every object of it ('green or blue'
+    with no blue cup, or 'green' alone of three, is left, and refused)."""
+    m = _rx(r",\s*([a-z]+(?:(?:,| or)\s*[a-z]+)*,? or [a-z]+)\s*(?=,|[.!?]?\s*$)").search(text)
+    if m is None:
+        return text
+    words = [w for w in re.split(r"\s*,\s*|\s+or\s+", m.group(1), flags=_F) if w]
+    for chose in _rx(r"\b(?:one|either|any) (?:of (?:the|those) )?([a-z]+)\b").finditer(
+        text[: m.start()]
+    ):
+        said = chose.group(1).lower()
+        for kind in {said, said.removesuffix("s"), said.removesuffix("es")}:
+            of_kind = {o.id for o in lexicon.scene.objects if o.category == kind}
+            if len(of_kind) != len(words) or len(of_kind) < 2:
+                continue
+            named = [_ids(f"the {w} {kind}", lexicon, "object") for w in words]
+            if all(len(n) == 1 for n in named) and set().union(*named) == of_kind:
+                return text[: m.start()] + text[m.end() :]
+    return text
+
+
+def _free_split26s(text: str, lexicon: Lexicon) -> str:
+    """'Emma and Omar, a cup each, any way round', 'Give one block to Ava and the other to Lily,
+    any which way', '…, one each, …, I don't mind who gets what'; 'one of apple or chips to
+    Person B, any, she does not care': a closing remark that who gets which, or which one, is
+    free is taken off when what is left already reads as that choice (an 'or'). After a split
+    said in full ('Alice the bottle and Bob the chips, any way round') it is kept, and refused."""
+    m = _rx(rf"(?:\s*,\s*(?:{_FREE_SPLIT26S}|{_INDIFFERENT26S}))+\s*([.!]?)\s*$").search(text)
+    if m is None or m.start() == 0:
+        return text
+    rest = text[: m.start()] + m.group(1)
+    return rest if _a_choice26s(rest, lexicon) else text
+
+
+def _one_each26s(text: str, lexicon: Lexicon) -> str:
+    """'Lena and Mr Novak are to have one plate apiece, white or blue', 'Alice and Bob, a mug
+    each, red or blue, any way round': two people, one object of a kind each, the two objects
+    told apart by the two words after it, joined by 'or' (which one each gets is free). Read as
+    'Give the X and the Y to P and Q, one each' when that reads as the choice. (Two objects
+    listed with 'and' are session 26 engineer 12's `_one_each26`: read only with a word saying
+    any way will do.)"""
+    m = _rx(
+        r"^(?:give |let )?(.+?) and (.+?)(?:,| can have| could have| get| are to have| have|"
+        r" are having)? (?:one|a|an) ([a-z]+) (?:each|apiece),\s*([a-z]+) or ([a-z]+)"
+        rf"(?:\s*,\s*(?:{_FREE_SPLIT26S}|{_INDIFFERENT26S}))*\s*([.!]?)$"
+    ).match(text.strip())
+    if m is None:
+        return text
+    first, second = m.group(1), m.group(2)
+    if len(_ids(first, lexicon, "human")) != 1 or len(_ids(second, lexicon, "human")) != 1:
+        return text
+    kind = m.group(3)
+    a, b = f"the {m.group(4)} {kind}", f"the {m.group(5)} {kind}"
+    if len(_ids(a, lexicon, "object")) != 1 or len(_ids(b, lexicon, "object")) != 1:
+        return text
+    if _ids(a, lexicon, "object") == _ids(b, lexicon, "object"):
+        return text
+    out = f"Give {a} and {b} to {first} and {second}, one each{m.group(6)}"
+    return out if _a_choice26s(out, lexicon) else text
+
+
+def _one_of_them26s(text: str, lexicon: Lexicon) -> str:
+    """'Give the bottle to one of them, Person A or Person B': 'one of them' is the people named
+    after it; 'Lena or Marco, whoever, give one of them the tongs': the people named before it.
+    Read only when the people are named and what is left reads as a choice between them."""
+    out = text
+    m = _rx(r"\bone of them,\s*([^,.!?]+? or [^,.!?]+?)(?=\s*(?:[,.!?]|$))").search(out)
+    if m is not None:
+        who = m.group(1)
+        if _ids(who, lexicon) and _ids(who, lexicon) == _ids(who, lexicon, "human"):
+            out = out[: m.start()] + who + out[m.end() :]
+    m = _rx(
+        r"^([^,]+? or [^,]+?),\s*(?:whoever|whichever|either)(?: of them| one)?,\s*"
+        r"(give|hand|pass|take|bring) one of them\b"
+    ).match(out)
+    if m is not None:
+        who = m.group(1)
+        if _ids(who, lexicon) and _ids(who, lexicon) == _ids(who, lexicon, "human"):
+            out = f"{m.group(2)} {who}{out[m.end() :]}"
+    if out == text:
+        return text
+    return out if _a_choice26s(out, lexicon) else text
+
+
+_LISTED26S = r"(?:the )?[a-z][a-z ]*?"
+
+
+def _choice_listed26s(text: str, lexicon: Lexicon) -> str:
+    """'One of the two, the cup or the bottle, to Person B', 'Any of the food to Person B, the
+    apple or the chips', 'Either thing will do for Person B, bottle or chips': a choice opener
+    whose objects are listed with 'or' is read as that list ('the two' must count the list).
+    Read only when what is left reads as a choice."""
+    opener = (
+        r"(?:one|any|either) of (?:the|them|those)(?: (two|three|four|[a-z]+))?|"
+        r"(?:either|any) (?:thing|one|item)"
+    )
+    listed = rf"({_LISTED26S}(?: or {_LISTED26S})+)"
+    m = _rx(rf"^({opener}),\s*{listed},\s*((?:to|for|on|onto|in|into) .+)$").match(text.strip())
+    if m is not None:
+        count, items, rest = m.group(2), m.group(3), m.group(4)
+    else:
+        m = _rx(
+            rf"^({opener})(?: (?:will|would) do)? ((?:to|for) [^,]+?),\s*{listed}\s*([.!]?)$"
+        ).match(text.strip())
+        if m is None:
+            return text
+        count, items, rest = m.group(2), m.group(4), m.group(3) + m.group(5)
+    parts = re.split(r"\s+or\s+", items, flags=_F)
+    named = [_ids(p, lexicon, "object") for p in parts]
+    if any(len(n) != 1 for n in named) or len({next(iter(n)) for n in named}) != len(parts):
+        return text
+    need = _NUMBER18.get((count or "").lower())
+    if need is not None and need != len(parts):
+        return text
+    out = f"{items[0].upper()}{items[1:]} {rest}"
+    return out if _a_choice26s(out, lexicon) else text
+
+
+def _nobody_else26s(text: str, lexicon: Lexicon) -> str:
+    """'Person A, and nobody else mind, gets the bottle', 'Not to anyone else, just Person A: the
+    bottle', '…, nobody else is here', '… to Alice and no one else': that no one else gets it
+    says nothing more when every task goes to one person: taken off then."""
+    nobody = r"(?:nobody|no one|no-one|not anyone|not to anyone|no other person)"
+    out = _sub(rf"^{nobody} else,\s*(?=(?:just|only)\b)", "", text)
+    out = _sub(rf",\s*(?:and |but )?{nobody} else(?: mind)?\s*,\s*", " ", out)
+    out = _sub(
+        rf",?\s*(?:and |but )?{nobody} else(?: mind| is here| is around| at all)?\s*(?=[.!?]|$)",
+        "",
+        out,
+    )
+    if out == text:
+        return text
+    node = _reading26s(out, lexicon)
+    if node is None or len({t.target for t in tasks(node)}) != 1:
+        return text
+    if not {t.target for t in tasks(node)} <= _ids(text, lexicon, "human"):
+        return text
+    return out
+
+
+_EXCEPT26S = r"(?:except(?: for)?|bar|but(?: not)?|apart from|other than|not)"
+
+
+def _everything26s(text: str, lexicon: Lexicon) -> str:
+    """Exclusions said another way: 'everything on there / you've got there / in front of you'
+    (everything), 'Clear the lot onto the shelf except …' (put everything onto it), 'everything
+    that isn't a box' (everything except the boxes: the plural must name every object of that
+    kind), 'three of the four, the cup, the apple and the chips' (the list: the count must be the
+    list's, the four the scene's objects), and the left-out object said again after its exclusion
+    ('…, the cup stays', '… but not the chips, leave those'). Read only when what is left reads
+    and hands over or places no object the words leave out."""
+    out = _sub(
+        r"\beverything (?:on there|over there|there|here|you(?:'ve| have) got(?: there| here)?|"
+        r"you have(?: there| here)?|in front of you)\b",
+        "everything",
+        text,
+    )
+    out = _sub(
+        r"^clear (?:the lot|everything|it all) (onto|on to|into|in|on)\b(?=.*\b"
+        + _EXCEPT26S
+        + r"\b)",
+        r"Put everything \1",
+        out,
+    )
+
+    def kind_left(m: re.Match[str]) -> str:
+        kind = m.group(1).lower()
+        of_kind = {o.id for o in lexicon.scene.objects if o.category == kind}
+        plural = kind + ("es" if kind.endswith(("s", "x", "ch", "sh")) else "s")
+        if not of_kind or _ids(f"the {plural}", lexicon, "object") != of_kind:
+            return m.group(0)
+        return f"everything except the {plural}"
+
+    out = _sub(
+        r"\beverything (?:that|which) (?:isn't|is not|'s not|ain't) an? ([a-z]+)\b", kind_left, out
+    )
+
+    def counted(m: re.Match[str]) -> str:
+        n, of = _NUMBER18.get(m.group(1).lower()), _NUMBER18.get(m.group(2).lower())
+        listed = m.group(3)
+        said = _ids(listed, lexicon, "object")
+        if n is None or of != len(lexicon.scene.objects) or len(said) != n:
+            return m.group(0)
+        if len(re.findall(r",|\band\b", listed)) != n - 1:
+            return m.group(0)  # each object its own item
+        return listed
+
+    out = _sub(
+        r"\b(two|three|four|five) of the (two|three|four|five|six),\s*((?:the )?[a-z ]+?"
+        r"(?:,\s*(?:the )?[a-z ]+?)*,? and (?:the )?[a-z ]+?)(?=\s*(?:[,.!?]|$))",
+        counted,
+        out,
+    )
+
+    def left_out(before: str) -> set[str]:
+        found: set[str] = set()
+        for e in _rx(rf"\b{_EXCEPT26S} ((?:the )?[a-z ]+?)(?=\s*(?:[,.!?]|$|\bgoes?\b))").finditer(
+            before
+        ):
+            found |= _ids(e.group(1), lexicon, "object")
+        return found
+
+    def said_again(m: re.Match[str]) -> str:
+        left = _ids(m.group(1), lexicon, "object")
+        return "" if left and left <= left_out(out[: m.start()]) else m.group(0)
+
+    out = _sub(
+        r",\s*(?:and )?(the [a-z ]+?) (?:stays?|can stay|remains?)"
+        r"(?: put| here| there| where it is| behind)?(?=\s*(?:[,.!?]|$))",
+        said_again,
+        out,
+    )
+    out = _sub(
+        r"(\bnot (?:the )?[a-z ]+?),\s*leave (?:those|them|that|it|these)(?: be| there| alone)?"
+        r"(?=\s*(?:[,.!?]|$))",
+        r"\1",
+        out,
+    )
+    if out == text:
+        return text
+    node = _reading26s(out, lexicon)
+    if node is not None and {t.obj for t in tasks(node)} & left_out(out):
+        return text  # an object the words leave out would be handed over or placed
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -8396,11 +8730,18 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _remarks,
     _inert_stretches,
     _subject_comma26,
+    _kinds_named26s,
+    _free_split26s,
+    _one_each26s,
+    _one_of_them26s,
+    _choice_listed26s,
+    _nobody_else26s,
 )
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _translated25,
+    _address_after26r,
     _courtesy24,
     _attention21,
     _speaker21,
@@ -8441,4 +8782,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _whoever26,
     _headed26,
     _corrected_first26,
+    _everything26s,
 )

@@ -391,6 +391,12 @@ def _replaced(before: str, new: str, scene: Scene, lexicon: Lexicon) -> Node | N
 def _cut_off(text: str) -> GroundingError | None:
     """'The cup to Alice, sorry, the.': the words stop before what they were to name (the
     refusal), or None."""
+    cue = _CUE_CUT_OFF.search(text)
+    if cue is not None:
+        # "…, sorry, correction," / "…, no wait.": the correction the cue announces is not said
+        return GroundingError(
+            f"{cue.group(1)!r} starts a correction that names nothing: say what to change it to"
+        )
     cut = _CUT_OFF.search(text)
     if cut is None:
         return None
@@ -400,6 +406,12 @@ def _cut_off(text: str) -> GroundingError | None:
     )
 
 
+# session 26: a correction cue closing the instruction (12c's wrapper fuzz, ', correction,')
+_CUE_CUT_OFF = re.compile(
+    r"[,;:.!]\s*(correction|no wait|wait|hang on|hold on|i mean|or rather|make that|make it)"
+    r"\s*[,.!…;:-]*\s*$",
+    re.I,
+)
 _CUT_OFF = re.compile(
     r"\b(the|an|their|my|your|our)\s*(?:[.!?…]*\s*$|[.!?…]+\s|,\s*(?:cheers|thanks|thank you|"
     r"ta|done|bye|please)\b)",

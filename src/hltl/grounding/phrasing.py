@@ -2493,6 +2493,13 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     ]
                     items[k:end] = rest
                     continue
+                # "Alice should get the cup, and we need the crisps" (session 26, 12c's fuzz): a
+                # want of the speaker's naming no one else is for the speaker, not for the last
+                # person named
+                raise GroundingError(
+                    f"{_words_of(items[k:end])!r}: the speaker is not a person in the scene; "
+                    f"name the person who gets it; {lexicon.listing('human')}"
+                )
         if it.kind == "word" and it.lemma == "pronoun" and it.text.lower() in _SPEAKER:
             raise GroundingError(
                 f"{it.text!r} is not resolved: the speaker is not a person in the scene; name "
