@@ -96,7 +96,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # its one measurement at the end of session 24; tuned on in session 25), blind24 (written in
 # session 25 by another engineer and committed alone, reviewed by a second engineer, never opened
 # by the engineers who changed the grounder before its one measurement at the end of session 25;
-# tests do not assert it).
+# tuned on in session 26), blind25 (written in session 26 by another engineer and committed alone,
+# reviewed by a second engineer, never opened by the engineers who changed the grounder before
+# its one measurement at the end of session 26; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -138,6 +140,7 @@ PARTS = (
     "blind22",
     "blind23",
     "blind24",
+    "blind25",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
