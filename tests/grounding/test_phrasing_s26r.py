@@ -225,6 +225,11 @@ def test_near_forms_of_courtesies_stay_refused(text: str) -> None:
         "Give Alice the cup, please. We want the water bottle as well.",
         "Hand Bob the apple, and I need the crisps.",
         "Carol's cold, so give her the cup, and we'd like the apple",
+        # the lead's end of session 26 (12c's references fuzz): a want placed for someone does
+        # not carry its recipient or surface into the speaker's next want
+        "I need the crisps taken to Bob, and we need the water bottle",
+        "We need the mugs on the counter, and we need the cup",
+        "I'd like the apple brought to Carol and I need the chips.",
     ],
 )
 def test_the_speakers_own_want_after_a_request_is_refused(text: str) -> None:
@@ -238,6 +243,11 @@ def test_the_speakers_own_want_after_a_request_is_refused(text: str) -> None:
         ("Give Alice the cup, and we need the crisps for Bob.", "cup>A & chips>B"),
         ("I need the apple and the cup brought to Carol", "apple>C & cup>C"),
         ("We need Bob to have the chips", "chips>B"),
+        # two wants each naming its own recipient read as two tasks
+        ("I need the crisps taken to Bob, and I need the cup taken to Alice", "chips>B & cup>A"),
+        ("We need the apple for Carol, and we'd like the cup on the shelf.", "apple>C & cup@shelf"),
+        # one want with more objects after the joint reads as before
+        ("I need the crisps taken to Bob, and the water bottle", "chips>B & bottle>B"),
     ],
 )
 def test_the_speakers_want_naming_its_recipient_reads(text: str, want: str) -> None:

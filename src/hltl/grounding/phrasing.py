@@ -2451,7 +2451,8 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             if j < len(items) and items[j].lemma in _WANTS:
                 end = j + 1
                 while end < len(items) and not (
-                    items[end].kind == "punct" and items[end].lemma in _END
+                    (items[end].kind == "punct" and items[end].lemma in _END)
+                    or _another_want(items, end)
                 ):
                     placed = any(_is(x, "to", "for", "on") for x in items[j + 1 : end])
                     if _is(items[end], ",") and not placed and not _listed_on(items, end + 1):
@@ -2507,6 +2508,22 @@ def _speaker(items: list[Item], lexicon: Lexicon) -> list[Item]:
             )
         k += 1
     return items
+
+
+def _another_want(items: list[Item], k: int) -> bool:
+    """Whether ``items[k:]`` opens another want of the speaker's after a joint (", and we need
+    the cup"): the want before it ends there, so its recipient is not carried into the next one
+    ("I need the crisps taken to Bob, and we need the water bottle", session 26, 12c's fuzz)."""
+    if not _is(items[k], ",", "and"):
+        return False
+    while k < len(items) and _is(items[k], ",", "and", "filler"):
+        k += 1
+    if k >= len(items) or items[k].kind != "word" or items[k].text.lower() not in ("i", "we"):
+        return False
+    k += 1
+    while k < len(items) and _is(items[k], "aux"):
+        k += 1
+    return k < len(items) and items[k].lemma in _WANTS
 
 
 _BARE_PARTICIPLES = frozenset({"put", "set", "sent", "left", "brought", "handed", "passed"})
