@@ -2328,19 +2328,25 @@ def _choice(text: str, lexicon: Lexicon) -> str:
     return _sub(r"\bthe only ([a-z]+(?: [a-z]+)?)\b", only, text)
 
 
+def _reading(text: str, lexicon: Lexicon, *, normalise: bool = True) -> Node | None:
+    """What the grounder reads ``text`` as, or None where it refuses (``normalise=False``: the
+    grammar alone, without the rewrites)."""
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        return parse_instruction(text, lexicon.scene, lexicon, normalise=normalise)
+    except GroundingError:
+        return None
+
+
 def _tasks_of(
     text: str, lexicon: Lexicon, *, normalise: bool = True
 ) -> set[tuple[str, str, str]] | None:
     """The (kind, object, target) of every task the grammar reads in ``text``; None if refused
     (``normalise=False``: the grammar alone, without the rewrites)."""
-    # why: offline.py imports this module, so the grammar is imported where it is used
-    from hltl.grounding.offline import parse_instruction
-
-    try:
-        node = parse_instruction(text, lexicon.scene, lexicon, normalise=normalise)
-    except GroundingError:
-        return None
-    return {(t.kind, t.obj, t.target) for t in tasks(node)}
+    node = _reading(text, lexicon, normalise=normalise)
+    return None if node is None else {(t.kind, t.obj, t.target) for t in tasks(node)}
 
 
 _DONT = r"(?:please |just |and |but |so |also )*(?:don't|do not|dont|never)\s+"
@@ -8338,23 +8344,12 @@ def _archaic19_words(text: str) -> str:
 # as tasks for that one person; anything else is left as it was (and refused as before).
 
 
-def _reading26s(text: str, lexicon: Lexicon) -> Node | None:
-    """What the grammar alone reads ``text`` as, or None where it refuses."""
-    # why: offline.py imports this module, so the grammar is imported where it is used
-    from hltl.grounding.offline import parse_instruction
-
-    try:
-        return parse_instruction(text, lexicon.scene, lexicon, normalise=False)
-    except GroundingError:
-        return None
-
-
 def _a_choice26s(text: str, lexicon: Lexicon) -> bool:
     """Whether the grammar reads ``text`` as one choice: an 'or' of single tasks, or an 'or'
     whose alternatives hand over the same objects to the same people (who gets which is free).
     An 'or' mixing both ('Give Alice or Bob the cup and the apple' is read 'cup>A | (cup>B &
     apple>B)' by the grammar) is not such a choice."""
-    node = _reading26s(text, lexicon)
+    node = _reading(text, lexicon, normalise=False)
     if not isinstance(node, Group) or node.op != "or":
         return False
     if all(isinstance(c, Task) for c in node.children):
@@ -8518,7 +8513,7 @@ def _nobody_else26s(text: str, lexicon: Lexicon) -> str:
     )
     if out == text:
         return text
-    node = _reading26s(out, lexicon)
+    node = _reading(out, lexicon, normalise=False)
     if node is None or len({t.target for t in tasks(node)}) != 1:
         return text
     if not {t.target for t in tasks(node)} <= _ids(text, lexicon, "human"):
@@ -8606,7 +8601,7 @@ def _everything26s(text: str, lexicon: Lexicon) -> str:
     )
     if out == text:
         return text
-    node = _reading26s(out, lexicon)
+    node = _reading(out, lexicon, normalise=False)
     if node is not None and {t.obj for t in tasks(node)} & left_out(out):
         return text  # an object the words leave out would be handed over or placed
     return out
