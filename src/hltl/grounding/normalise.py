@@ -7594,6 +7594,14 @@ _SPEAKER_OPEN = re.compile(
 )
 # what may follow such a stretch in its sentence, still about the speaker
 _SPEAKER_MORE = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
+# what such a following stretch may not hold: 'just not the blue one', 'only the one', 'just the
+# red' after the request single out or leave out what it asks for (session 27: the speaker's
+# opener had let "…, give Alice a mug, just not the blue one. Good robot." lose its exclusion)
+_SPEAKER_MORE_HELD = re.compile(
+    r"\b(?:not|no|never|none|nothing|nobody|neither|nor|without|except|but|one|ones|two|three|"
+    r"both|all|any|either|whichever|other|another|else)\b|n't\b",
+    _F,
+)
 # a warning about the speaker's own things
 _MIND_MINE = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
 _SPEAKER_HELD = re.compile(
@@ -7648,9 +7656,19 @@ def _speaker_stretch(
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
-        or (spoke and _SPEAKER_MORE.match(piece))
+        or (spoke and _SPEAKER_MORE.match(piece) and not _speaker_more_held(piece, lexicon))
         or (right_after and (_MIND_MINE.match(piece) or _inert_sentence(piece, lexicon)))
     )
+
+
+def _speaker_more_held(piece: str, lexicon: Lexicon) -> bool:
+    """Whether ``piece``, said after the speaker's stretch ('just …', 'only …'), could single out
+    or leave out an object: a negation, a count or a choice ('one', 'both', 'other'), or a word
+    telling the scene's objects apart ('red', 'big')."""
+    if _SPEAKER_MORE_HELD.search(piece):
+        return True
+    adjectives = _adjectives(lexicon)
+    return any(w in adjectives for w in re.findall(r"[a-z]+", piece.lower()))
 
 
 def _opener(piece: str, lexicon: Lexicon) -> bool:
