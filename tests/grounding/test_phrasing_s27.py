@@ -12,9 +12,11 @@ from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
+    OFFICE,
     WARD,
     WORKSHOP,
     assert_reads,
@@ -69,6 +71,10 @@ REQUESTS = [
     ("give {p} a {k}, only the {x} one", "x"),
     ("give {p} a {k}, just the {x}", "x"),
     ("give {p} the {x} {k}, no wait, the {y} one", "y"),
+    ("both {k}s to {p}, sorry, just the {x} one", "x"),
+    ("both {k}s to {p}, sorry, just the {y} one", "y"),
+    ("give {p} the {k}s, sorry, just the {y} one", "y"),
+    ("the {x} {k} and the {y} {k} to {p}, sorry, the {y} one", "y"),
     ("the {k}s to {p}, sorry, just the one", None),
     ("give {p} the {k}s, no, just the one", None),
     ("the {k}s to {p}, actually, only the one", None),
@@ -121,3 +127,32 @@ def test_the_two_fuzz_wrongs_of_session_26() -> None:
 )
 def test_what_the_speaker_is_doing_is_still_taken_off(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # three of a kind: 'boxes' was not made 'box' (a plural of '-es'), so every box was read
+        ("The boxes to Mia, sorry, just the one.", DEPOT),
+        ("Give Tom the boxes, no, just the one.", DEPOT),
+        ("The pens to Sam, I mean, just the one.", OFFICE),
+    ],
+)
+def test_just_the_one_after_a_plural_is_refused_with_its_readings(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="ambiguous")
+
+
+def test_a_correction_naming_the_last_object_again_beside_others_is_refused() -> None:
+    # replaced by itself, it kept both
+    assert_refused("Give Alice the cup and the apple, sorry, the apple.", match="cannot tell")
+    assert_refused("The red mug and the blue mug to Bob, no, the blue one.", match="cannot tell")
+    # another object named instead is read as before
+    assert_reads("Give Alice the cup and the apple, sorry, the bottle.", "cup>A & bottle>A")
+    assert_reads("The mugs to Carol, sorry, just the blue one.", "mug_blue>C")
+
+
+def test_in_between_after_a_remark_is_not_taken_off() -> None:
+    # 'in between' orders the request against another: after "I hope this is okay," the remark
+    # rule took it off with the remark
+    assert_refused("I hope this is okay, in between, give Bob the chips. Have a great day.")
+    assert_refused("I hope this is okay, in between, hand Carol the apple. Good robot.")

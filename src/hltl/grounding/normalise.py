@@ -4392,7 +4392,9 @@ _SENTENCE_HELD = re.compile(
     r"they|these|those|there|here|him|her|his|he|she|hers|theirs|mine|yours|something|anything|"
     r"everything|give|hand|pass|bring|take|put|place|want|need|keep|leave|move|send|drop|fetch|"
     r"grab|deliver|have|has|had|more|again|well|as|correction|correct|wrong|change|changed|"
-    r"mind|like|prefer|fancy|rather)\b|n't\b|\d",
+    r"mind|like|prefer|fancy|rather|"
+    # session 27: 'in between', 'meanwhile' order the steps around them
+    r"between|meanwhile|meantime|afterwards|beforehand)\b|n't\b|\d",
     _F,
 )
 # 'this' / 'that' only as a statement's subject ("I hope this is okay"), or thanked for
@@ -8021,13 +8023,17 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
 
     def just_one(m: re.Match[str]) -> str:
         noun = m.group(2)
-        single = noun[:-1] if noun.endswith("s") and _ids(noun[:-1], lexicon, "object") else noun
-        if len(_ids(single, lexicon, "object")) < 2:
+        # 'boxes' is 'box' (session 27: 'boxe' named nothing, so the plural was kept and read as
+        # every box)
+        cut = (noun[:-1], noun[:-2]) if noun.endswith("s") else ()
+        single = next((w for w in cut if _ids(w, lexicon, "object")), noun)
+        if single == noun or len(_ids(single, lexicon, "object")) < 2:
             return m.group(0)
         return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
 
     out = _sub(
-        r"^(.*?\bthe )([a-z]+)( [^,]*?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one\s*([.!]?)$",
+        r"^(.*?\bthe )([a-z]+)((?: [^,]*?)?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one"
+        r"\s*([.!]?)$",
         just_one,
         out,
     )
