@@ -156,3 +156,32 @@ def test_in_between_after_a_remark_is_not_taken_off() -> None:
     # rule took it off with the remark
     assert_refused("I hope this is okay, in between, give Bob the chips. Have a great day.")
     assert_refused("I hope this is okay, in between, hand Carol the apple. Good robot.")
+
+
+# -- (b) blind25's refusals by kind -------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the 'no?' tag of Sinhala and Indian English ('isn't it?') after a request
+        ("Kindly pass the banana to Omar, no?", "banana>B", LAB),
+        ("You can give Mr Lee the jug, no?", "jug>B", WARD),
+        ("The tongs go to Marco, no?", "tongs>A", KITCHEN),
+    ],
+)
+def test_a_no_tag_after_a_request_asks_nothing(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # without its question mark, or with a name after it, 'no' may correct or take back
+        ("Kindly pass the banana to Omar, no!", LAB),
+        ("Pass the banana to Omar, no? Emma.", LAB),
+        ("Give Mr Lee the jug, no.", WARD),
+    ],
+)
+def test_no_without_its_question_mark_is_not_a_tag(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -6604,6 +6604,11 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",?\s*if (?:you|ye|thou) (?:please|will)\b", "", out)
     out = _sub(r"(?:^|(?<=[.!?])\s*)only if it's no (?:bother|trouble)\s*[.!]?", "", out)
     m = _rx(rf",\s*{_TAG19}\s*[?.!]*\s*$").search(out)
+    if m is None:
+        # session 27: "Kindly give the chips to Person A, no?" (the tag of Sinhala and Indian
+        # English, asking 'isn't it?'): only with its question mark, at the end ("…, no!" or
+        # "…, no, Bob" could take the request back or correct it)
+        m = _rx(r",\s*no\s*\?+\s*$").search(out)
     if m is not None and m.start() > 0:
         out = out[: m.start()] + "."
     out = _tidy19(out)
