@@ -712,7 +712,6 @@ KNOWN_MISSES = frozenset(
         "Person B would like the chips, and what Person A wants is the cup.",
         "The one thing Person B needs right now is the apple, he's been roasting beans all "
         "morning.",
-        "Person B needs the chips and nothing else, he told me so himself.",
         "Person A says her throat's dry as dust, she needs the bottle.",
         "The bottle's wanted by Person A, she's over by the grandfather clock.",
         "Mr Novak would like some salt, he reckons the soup's a bit bland.",

@@ -168,9 +168,12 @@ def test_in_between_after_a_remark_is_not_taken_off() -> None:
         ("Kindly pass the banana to Omar, no?", "banana>B", LAB),
         ("You can give Mr Lee the jug, no?", "jug>B", WARD),
         ("The tongs go to Marco, no?", "tongs>A", KITCHEN),
+        # who said it is so, at the end: the request stands as said
+        ("Omar wants the banana, he said so earlier.", "banana>B", LAB),
+        ("Give Mrs Khan the magazine, she told me so herself.", "magazine>C", WARD),
     ],
 )
-def test_a_no_tag_after_a_request_asks_nothing(text: str, want: str, scene: Scene) -> None:
+def test_a_tag_or_a_report_after_a_request_asks_nothing(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
 
 
@@ -181,7 +184,9 @@ def test_a_no_tag_after_a_request_asks_nothing(text: str, want: str, scene: Scen
         ("Kindly pass the banana to Omar, no!", LAB),
         ("Pass the banana to Omar, no? Emma.", LAB),
         ("Give Mr Lee the jug, no.", WARD),
+        # 'told me to' could make the speaker the one asked for something
+        ("Give Omar the banana, she told me to.", LAB),
     ],
 )
-def test_no_without_its_question_mark_is_not_a_tag(text: str, scene: Scene) -> None:
+def test_near_forms_that_could_ask_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)

@@ -7693,6 +7693,12 @@ _ASIDES22: tuple[tuple[str, str], ...] = (
     (r"\s*,\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\s*[.!]?\s*$)", ""),
     # "…, go on", "…, go on then": urging
     (r"\s*,\s*go on(?:,? then)?(?=\s*[.!]?\s*$)", ""),
+    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end
+    (
+        r"\s*,\s*(?:he|she|they) (?:told me so|said so|told me|said as much)"
+        r"(?: (?:himself|herself|themselves|earlier|just now|this morning))?(?=\s*[.!]?\s*$)",
+        "",
+    ),
 )
 # want frames said another way (rewritten whatever they name)
 _FRAMES22: tuple[tuple[str, str], ...] = (
