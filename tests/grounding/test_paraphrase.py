@@ -381,7 +381,6 @@ KNOWN_MISSES = frozenset(
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
-        "The two things you drink from, the bottle and the cup, to Person A.",
         "Both items to Person B, the pair of them.",
         "Bob is to have the two of them, bottle and crisps.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
@@ -452,8 +451,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Give Carol one of the mugs, she really doesn't care which.",
         "Either of them can have the chips, Alice or Bob, makes no odds.",
-        "I'm closing up the bar, so the bottle and the crisps, both of them, up on the shelf "
-        "out of the way.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
@@ -562,8 +559,6 @@ KNOWN_MISSES = frozenset(
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Noah or Zoe can have the globe, either one, they're both doing the project.",
-        'The two things cluttering the floor, the bottle and the crisps, up on the shelf, please.',
-        'The two drinks, bottle and cup, go to Person B, krap.',
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
@@ -636,9 +631,7 @@ KNOWN_MISSES = frozenset(
         'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
-        'The two things you can see, the bottle and the crisps, both to Alice.',
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
-        "Hand over both items, chips and bottle alike, to Person B, she's earned them.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
@@ -659,7 +652,6 @@ KNOWN_MISSES = frozenset(
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
         "Bottle to, no hang on, yes, Person A, it's only her.",
         "Give Person A the bottle, no wait, yeah, that's right, the bottle.",
-        'stick the crisps up on the shelf out of reach and hand alice the bottle, ta muchly',
         'person b gets the apple to start with, and then after it person a gets the chips',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         "sam's asked for the notepad and priya for the stapler, i'm just trimming the spines",
