@@ -693,10 +693,7 @@ KNOWN_MISSES = frozenset(
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
         "leaf stuck to every finger.",
-        "Gamarjoba! Please, crisps give to Bob, yes? Madloba.",
-        "Labas! Prašau, give Person A chips. Ačiū labai.",
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Tena yistilign. Please, Person B the chips give. Ameseginalehu.",
         "Ayubowan! Kindly give the chips to Person A, no? Sthuthi.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
@@ -708,10 +705,7 @@ KNOWN_MISSES = frozenset(
         "Person A says her throat's dry as dust, she needs the bottle.",
         "The bottle's wanted by Person A, she's over by the grandfather clock.",
         "Mr Novak would like some salt, he reckons the soup's a bit bland.",
-        "Cup to Person B. Same with the apple, if you can manage.",
         "Bottle for Person B. Oh, and the chips, them too.",
-        "Gamarjoba. This Person A is very thirsty, you give to him the bottle. Madloba, "
-        "genatsvale.",
         "That bottle there, Person A needs it for the quilting circle.",
         "Small box onto the pallet, please, and the medium one alongside it.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
@@ -728,8 +722,6 @@ KNOWN_MISSES = frozenset(
         "Any of the pens for Priya, she just needs something to write with.",
         "Noah or Zoe, whichever student's free, give them the globe.",
         "Both blocks on the high chair, she likes to bang them.",
-        "Anything edible goes to Person B, so that's the apple and the chips, he's been gilding "
-        "frames since eight.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
         "chips to Person A.",
@@ -756,7 +748,6 @@ KNOWN_MISSES = frozenset(
         "Persoon A's been asking for the apple since her shift began.",
         "Person A says she's peckish, the chhips please.",
         "The stapller lives in the box, put it back there please.",
-        "Would you mind awfully popping the crisps up on the shelf, out of the dog's reach?",
         "Would it be a problem to let Person A have the cup, and Person B the apple while you're "
         "there?",
         "You can give the chips to Person B, no? Sthuthi, sthuthi.",
