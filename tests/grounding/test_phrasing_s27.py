@@ -151,6 +151,23 @@ def test_a_correction_naming_the_last_object_again_beside_others_is_refused() ->
     assert_reads("The mugs to Carol, sorry, just the blue one.", "mug_blue>C")
 
 
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # what replaces 'both <kinds>' takes 'both' with them
+        ("Both mugs to Alice, sorry, just the blue mug.", "mug_blue>A", CELL),
+        ("Both blocks to Ava, sorry, just the green one.", "block_green>C", NURSERY),
+        ("Give Mrs Khan both blankets, no, the grey one.", "blanket_grey>C", WARD),
+        # another object instead of the two (the rewrite 'the red mug and the blue mug' had
+        # replaced the blue one alone: mug_red>A & cup>A)
+        ("Both mugs to Alice, sorry, the cup.", "cup>A", CELL),
+        ("Give Zoe both books, no, the globe.", "globe>C", CLASSROOM),
+    ],
+)
+def test_a_correction_of_both_replaces_the_two(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
 def test_in_between_after_a_remark_is_not_taken_off() -> None:
     # 'in between' orders the request against another: after "I hope this is okay," the remark
     # rule took it off with the remark
