@@ -1880,13 +1880,13 @@ def _apply_correction(
     for k in range(len(before) - 1, start - 1, -1):
         old = before[k]
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
-            said = k
+            first = k
             if k > start and len(old.refs) > 1 and _is(before[k - 1], "both"):
                 # "Both mugs to Alice, sorry, just the blue one / the cup": what replaces the two
                 # takes 'both' with them (session 27: it was refused as 'both' without 'and', and
                 # the rewrite 'the red mug and the blue mug …' then replaced the blue one alone)
-                said = k - 1
-            return [*before[:said], new, *before[k + 1 :], *after[r + 1 :]]
+                first = k - 1
+            return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
 
 
