@@ -694,14 +694,12 @@ KNOWN_MISSES = frozenset(
         "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
         "leaf stuck to every finger.",
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Ayubowan! Kindly give the chips to Person A, no? Sthuthi.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
         "I need the bottle taken over to Bob, he's been planing that hull since first light.",
         "Person B would like the chips, and what Person A wants is the cup.",
         "The one thing Person B needs right now is the apple, he's been roasting beans all "
         "morning.",
-        "Person B needs the chips and nothing else, he told me so himself.",
         "Person A says her throat's dry as dust, she needs the bottle.",
         "The bottle's wanted by Person A, she's over by the grandfather clock.",
         "Mr Novak would like some salt, he reckons the soup's a bit bland.",
@@ -750,7 +748,6 @@ KNOWN_MISSES = frozenset(
         "The stapller lives in the box, put it back there please.",
         "Would it be a problem to let Person A have the cup, and Person B the apple while you're "
         "there?",
-        "You can give the chips to Person B, no? Sthuthi, sthuthi.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Do you think you could see the bottle gets to Person A?",
