@@ -244,7 +244,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "What I need is the bottle over with Person B.",
-        "Right, Person A's asked for the cup and the apple, and the bottle's wanted by Person B.",
         "Person B needs the chips, ugh, and after she's got them Person A's going to want the "
         "bottle.",
         "Person B is wanting the bottle only, kindly do the needful.",

@@ -155,7 +155,7 @@ def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) ->
 # -- wrappers ----------------------------------------------------------------------------------
 
 _OPEN = r"(^|(?<=[.;!?:])\s*|(?<=,)\s*(?:and\s+)?)"
-_WRAPPERS: tuple[tuple[str, str], ...] = (
+_WRAPPERS: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # session 11: "is to be given", "ought to" (an obligation is a request, as "should")
     (r"\b(?:is|are|was|were|am) to be\b", "should be"),
     (r"\bought to\b", "should"),
@@ -210,6 +210,12 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
     (r"\b(could|can|would|will) (?:someone|somebody|anyone|anybody)\b", r"\1 you"),
     (_OPEN + r"(?:i|we)(?:'d| would) (?:love|like|prefer) it if ", r"\1"),
     (_OPEN + r"(?:please )?see (?:to it )?that ", r"\1"),
+    # session 27 (12r): "Would it be a problem to let Person A have the cup?"
+    (
+        _OPEN + r"(?:would|will|is) it be (?:a problem|an issue|a bother|a hassle|any trouble|too "
+        r"much (?:trouble|bother|hassle)) (?:for you )?to (?:(let) )?",
+        lambda m: f"{m.group(1)}could " if m.group(2) else f"{m.group(1)}could you ",
+    ),
 )
 
 
@@ -2523,6 +2529,8 @@ _UNAPOSTROPHED = {
     "havent": "haven't",
     "arent": "aren't",
     "wasnt": "wasn't",
+    "shes": "she's",
+    "hes": "he's",
 }
 
 
@@ -5353,6 +5361,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
     ),
     "hurry": (
         "let's (?:hustle|roll|go|move)",
+        "(?:off|away|on) you (?:go|pop)",
         "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
         "move(?: it)?",
         "chop chop",
@@ -5656,16 +5665,55 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     )
 
     def what_needs(m: re.Match[str]) -> str:
-        if not _only_person(m.group(1), lexicon) or not _ids(m.group(2), lexicon, "object"):
+        if not _only_person(m.group(2), lexicon) or not _ids(m.group(3), lexicon, "object"):
             return m.group(0)
-        if _ids(m.group(2), lexicon, "human"):
+        if _ids(m.group(3), lexicon, "human") or re.match(r"(?:not|never|no)\b", m.group(3), _F):
+            return m.group(0)  # "what Bob needs is not the cup" says what he does not need
+        return f"{m.group(1)}{m.group(2)} needs {m.group(3)}{m.group(4)}"
+
+    # session 27 (12r): also after a comma or 'and' ("…, and what P wants is X"), and 'the one
+    # thing' / 'the only thing' / 'all' for 'what' (never 'the last thing': he does not want it)
+    out = _sub(
+        rf"{_OPEN}(?:what|the (?:one|only) thing|all) {_P} (?:really |actually |most )?(?:needs|"
+        rf"wants|could (?:really )?use|could do with|would like)(?: right now| now| most)? is "
+        rf"{_X}(\s*[,.!]|$)",
+        what_needs,
+        out,
+    )
+
+    def the_one_who(m: re.Match[str]) -> str:
+        # "Person A's the one who wants it": Person A wants it; "the one who needs the cup is
+        # Bob": Bob needs it (the person checked to be one, the object an object or it/them)
+        who, what = (m.group(2), m.group(3)) if m.group(2) else (m.group(5), m.group(4))
+        if not _only_person(who, lexicon) or _ids(what, lexicon, "human"):
             return m.group(0)
-        return f"{m.group(1)} needs {m.group(2)}{m.group(3)}"
+        if not (_ids(what, lexicon, "object") or re.fullmatch(r"it|them", what.strip(), _F)):
+            return m.group(0)
+        return f"{m.group(1)}{who} wants {what}{m.group(6)}"
 
     out = _sub(
-        rf"^what {_P} (?:really |actually |most )?(?:needs|wants|could (?:really )?use|could do "
-        rf"with|would like)(?: right now| now| most)? is {_X}(\s*[,.!]|$)",
-        what_needs,
+        rf"{_OPEN}(?:{_P}(?:'s| is) the (?:one|person) (?:who|that) (?:wants|needs|asked for) "
+        rf"{_X}|the (?:one|person) (?:who|that) (?:wants|needs|asked for) {_X} is {_P})"
+        r"(\s*[,.!?]|$)",
+        the_one_who,
+        out,
+    )
+
+    def wanted_by(m: re.Match[str]) -> str:
+        # "The bottle's wanted by Person A": Person A wants it (a passive of wanting)
+        things, who = m.group(2), m.group(3)
+        if not _only_person(who, lexicon) or not _only_kind(things, lexicon, "object"):
+            return m.group(0)
+        gap = r"^\s*,?\s*(?:and |or |but |plus |then )?(?:the |a |an )(?:(?!is |are |was )[\w ])+?"
+        gap += r" by\b"
+        if re.search(gap, m.string[m.end() :], _F):
+            return m.group(0)  # "…, and the crisps by Bob": the gap would read 'by' as a place
+        return f"{m.group(1)}{who} wants {things}"
+
+    out = _sub(
+        rf"{_OPEN}((?:the |a |an |that |this |these |those )[\w '-]+?)(?:'s| is| are) (?:wanted|"
+        rf"needed|asked for|requested) by {_P}(?=\s*(?:[,.!?]|$))",
+        wanted_by,
         out,
     )
     if low.startswith("if "):
@@ -7550,7 +7598,7 @@ def _while26(text: str, lexicon: Lexicon) -> str:
     """A closing 'while it's quiet' / 'while you're there' / 'while you're at it': when to do it,
     now, asks for nothing more (taken off when it names nothing in the scene)."""
     m = re.search(
-        r"(?:,\s*|\s+)while (?:it's|it is|you're|you are|we're|we are) ([a-z' ]+?)\s*([.!]?)$",
+        r"(?:,\s*|\s+)while (?:it's|it is|you're|you are|we're|we are) ([a-z' ]+?)\s*([.!?]?)$",
         text,
         _F,
     )
@@ -8607,6 +8655,32 @@ def _everything26s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# session 27 (12r): idioms whose words the grammar reads as something else: 'for once' ending a
+# stretch is no condition ('once') and names no one ('for'): "her hands are free for once";
+# 'since first light / first thing' is a time past, no order ('first')
+_IDIOMS27R = (
+    (re.compile(r"\s+for once\b(?=\s*(?:[,.;!?]|$))", _F), ""),
+    (re.compile(r"\bsince first (?:light|thing)\b", _F), "since dawn"),
+    # "could you see the bottle gets to Person A?": see that it does, make sure ('gets to' after
+    # the object; 'see the cup on the shelf' may be looking at it, and stays)
+    (
+        re.compile(
+            r"\b((?:could|can|will|would) you|you (?:could|can|will|would)|please) see (?:to it )?"
+            r"(?:that )?(?=(?:the|a|an|this|that|these|those|it|they|both|all)\b[^,.;!?]*? "
+            r"(?:gets|get) (?:over |across |back )?to\b)",
+            _F,
+        ),
+        r"\1 make sure ",
+    ),
+)
+
+
+def _idioms27r(text: str, lexicon: Lexicon) -> str:
+    for pattern, repl in _IDIOMS27R:
+        text = pattern.sub(repl, text)
+    return text
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -8735,6 +8809,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _idioms27r,
     _translated25,
     _address_after26r,
     _courtesy24,

@@ -399,6 +399,8 @@ _REMARK_VERBS = frozenset(
         "asks",
         "thinks",
         "thought",
+        "reckons",
+        "reckoned",
         "knows",
         "feels",
         "felt",

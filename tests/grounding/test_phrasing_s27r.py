@@ -1,0 +1,189 @@
+"""Session-27 phrasings of issue 12 (engineer 12r), from blind25's refusal kinds 'a clause the
+grammar cannot parse' and 'others': pseudo-clefts ('what P wants is X', 'the one thing P needs is
+X', 'P's the one who wants it'), the passive of wanting ('X is wanted by P'), courtesy frames
+('Would it be a problem to …', 'could you see X gets to P'), idioms the grammar read as keywords
+('off you go', 'for once', 'since first light', 'reckons', 'shes'); docs/grounding.md, "Session 27
+(engineer 12r)". Each with new sentences over several scenes, and near forms that stay refused."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.world.scene import Scene
+from tests.grounding.helpers import (
+    CELL,
+    KITCHEN,
+    OFFICE,
+    SCENES,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+    name_of,
+    unique_objects,
+)
+
+# -- (a) pseudo-clefts and the passive of wanting: the person wants the object ------------------
+
+_FRAMES = (
+    "What {p} wants is the {o}.",
+    "What {p} really needs right now is the {o}.",
+    "The one thing {p} needs is the {o}.",
+    "The only thing {p} wants is the {o}, thanks.",
+    "All {p} wants is the {o}.",
+    "{p} is the one who wants the {o}.",
+    "{p}'s the one who needs the {o}.",
+    "The one who asked for the {o} is {p}.",
+    "The {o} is wanted by {p}.",
+    "The {o}'s needed by {p}, please.",
+)
+
+
+def _said(scene: Scene, k: int) -> tuple[str, str, str]:
+    """A person's name, an object's name (neither shared), and its id."""
+    objs = unique_objects(scene)
+    oid = objs[k % len(objs)]
+    pid = scene.humans[k % len(scene.humans)].id
+    return name_of(scene, pid), name_of(scene, oid), f"{oid}>{pid}"
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.sampled_from(SCENES), st.integers(0, 20), st.sampled_from(_FRAMES))
+def test_a_cleft_or_passive_want_reads_as_the_want(scene: Scene, k: int, frame: str) -> None:
+    p, o, want = _said(scene, k)
+    o = o.removeprefix("the ")
+    assert_reads(frame.format(p=p, o=o), want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Marco's got the tongs, and what Lena wants is the salt shaker.",
+            "tongs>A & salt>B",
+            KITCHEN,
+        ),
+        (
+            "The only thing Sam needs right now is the notepad, he's been on the phone all day.",
+            "notebook>B",
+            OFFICE,
+        ),
+        ("All Mrs Khan wants is the water jug.", "jug>C", WARD),
+        ("Grab the stapler, Sam's the one who needs it, he's by the printer.", "stapler>B", OFFICE),
+        ("The torch is needed by Jess, she's under the van.", "torch>B", WORKSHOP),
+        ("Give Priya the notepad, the stapler's wanted by Sam.", "notebook>A & stapler>B", OFFICE),
+        (
+            "The red mug is needed by Carol, and the crisps are wanted by Bob.",
+            "mug_red>C & chips>B",
+            CELL,
+        ),
+        ("The red mug is needed by Carol, she's by the shelf.", "mug_red>C", CELL),
+    ],
+)
+def test_clefts_and_passives_in_a_longer_request(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # negated, or what the person does not want
+        ("What Lena wants is not the salt.", KITCHEN),
+        ("What Lena doesn't want is the salt.", KITCHEN),
+        ("The last thing Lena needs is the salt.", KITCHEN),
+        ("Lena isn't the one who wants the salt.", KITCHEN),
+        ("The salt isn't wanted by Lena.", KITCHEN),
+        ("The salt is not wanted by Lena.", KITCHEN),
+        # a question, the past, two people, an unclear object
+        ("Is Lena the one who wants the salt?", KITCHEN),
+        ("The salt was wanted by Lena.", KITCHEN),
+        ("What Lena and Marco want is the salt.", KITCHEN),
+        ("The blanket is wanted by Mrs Khan.", WARD),
+        ("Mr Lee's the one who wants the blanket.", WARD),
+        # a gap after the passive: 'by Bob' would read as where the crisps lie
+        ("The red mug is needed by Carol, and the crisps by Bob.", CELL),
+        ("The red mug is needed by Carol and the crisps by Bob.", CELL),
+    ],
+)
+def test_near_forms_of_the_want_frames_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (b) courtesy frames: 'would it be a problem to …', 'could you see X gets to P' -------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Would it be a problem to give Mr Lee the water jug?", "jug>B", WARD),
+        ("Would it be too much trouble to let Jess have the torch?", "torch>B", WORKSHOP),
+        (
+            "Would it be any trouble to put the salt shaker on the counter, and the tongs on the "
+            "rack while you're there?",
+            "salt@counter & tongs@rack",
+            KITCHEN,
+        ),
+        ("Could you see the notepad gets to Priya?", "notebook>A", OFFICE),
+        ("Do you think you could see the torch gets to Kofi?", "torch>A", WORKSHOP),
+        ("Could you see the cup gets to Bob and the apple to Carol?", "cup>B & apple>C", CELL),
+    ],
+)
+def test_courtesy_frames_read_as_the_request(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Would it be a problem to give Mr Lee the water jug tomorrow?", WARD),
+        ("Would it be a problem if Mr Lee had the water jug?", WARD),
+        ("Can you see the cup on the shelf?", CELL),
+        ("Can you see the cup is on the shelf?", CELL),
+        ("Can you see the cup goes on the shelf?", CELL),
+        ("Could you see whether the cup gets to Bob?", CELL),
+        ("Could you see if the notepad gets to Priya?", OFFICE),
+    ],
+)
+def test_near_forms_of_the_courtesy_frames_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (c) idioms the grammar read as its keywords, in remarks and closings ------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Lena the tongs, off you go.", "tongs>B", KITCHEN),
+        ("Off you pop, the torch to Jess.", "torch>B", WORKSHOP),
+        (
+            "The jug to Mrs Khan and the tablets to Mr Lee, right, away you go.",
+            "jug>C & pills>B",
+            WARD,
+        ),
+        ("Pass Sam the stapler, his hands are free for once.", "stapler>B", OFFICE),
+        ("Give Kofi the torch for once.", "torch>A", WORKSHOP),
+        ("Give Alice the bottle, she's been up since first light.", "bottle>A", CELL),
+        ("Mr Lee needs the water jug, he's been awake since first thing.", "jug>B", WARD),
+        ("Marco would like the tongs, he reckons the grill's too hot.", "tongs>A", KITCHEN),
+        ("jess needs the torch, shes under the van", "torch>B", WORKSHOP),
+        ("give sam the notepad, hes in a meeting", "notebook>B", OFFICE),
+    ],
+)
+def test_idioms_in_remarks_and_closings_are_dropped(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Kofi the torch at first light.", WORKSHOP),
+        ("Give Kofi the torch first thing tomorrow.", WORKSHOP),
+        ("Off you go, and the salt too.", KITCHEN),
+        ("Give Sam the stapler, he reckons Priya wants it.", OFFICE),
+    ],
+)
+def test_near_forms_of_the_idioms_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
