@@ -258,7 +258,6 @@ KNOWN_MISSES = frozenset(
         "Something for both of them: the cup to Person A and the apple to Person B.",
         "Either of the two things to Person B is fine.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
-        "Every one of the three pens goes in the box, the black, the blue and the red.",
         "The small and medium boxes, the two little ones, onto the pallet.",
         "Marco needs his tongs, just the one pair.",
         "Both of the mugs are Alice's, give her the pair.",
@@ -642,7 +641,6 @@ KNOWN_MISSES = frozenset(
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
         "B's.",
-        "Every one of the three boxes wants to end up with Mia, she's checking the labels.",
         'The two blocks in the high chair for Lily to play with.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
         'Give Person A the chips but not the apple, and not the cup either.',

@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
     KITCHEN,
     OFFICE,
     SCENES,
@@ -186,4 +187,61 @@ def test_idioms_in_remarks_and_closings_are_dropped(text: str, want: str, scene:
     ],
 )
 def test_near_forms_of_the_idioms_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (d) a set said again: 'all three of the boxes', '…, the big one included', 'both for P' ----
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Stick all three of the boxes on the pallet.",
+            "box_small@pallet & box_medium@pallet & box_large@pallet",
+            DEPOT,
+        ),
+        (
+            "Both spanners on the bench, the big one included.",
+            "spanner_small@bench & spanner_large@bench",
+            WORKSHOP,
+        ),
+        (
+            "Put both of the spanners in the locker, including the small spanner.",
+            "spanner_small@locker & spanner_large@locker",
+            WORKSHOP,
+        ),
+        ("The blankets to Mr Lee, the blue one included.", "blanket_blue>B & blanket_grey>B", WARD),
+        ("the tongs first then the salt shaker, both for Marco", "tongs>A ; salt>A", KITCHEN),
+        ("The notepad and the stapler, both for Sam, he's new.", "notebook>B & stapler>B", OFFICE),
+        (
+            "the drill first, then the hammer, both on the bench",
+            "drill@bench ; hammer@bench",
+            WORKSHOP,
+        ),
+        ("That stapler there, Sam wants it.", "stapler>B", OFFICE),
+        ("This torch here, give it to Jess.", "torch>B", WORKSHOP),
+    ],
+)
+def test_a_set_said_again_reads_as_the_set(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the count is not what the scene has; the one included is not among them, or none is
+        ("Stick all two of the boxes on the pallet.", DEPOT),
+        ("Put the small box and the medium box on the conveyor, the big one included.", DEPOT),
+        ("Put the small box and the medium box on the conveyor, including the tape.", DEPOT),
+        ("Put the red mug on the table, the blue one included.", CELL),
+        ("Put the mugs on the table, the green one included.", CELL),
+        # 'both for' a place, or for two people; 'there' after a verb of placing is a place
+        ("the jug first then the tablets, both for the locker", WARD),
+        ("the tongs first then the salt shaker, both for Marco and Lena", KITCHEN),
+        ("Put that torch there.", WORKSHOP),
+        ("That spanner there, Kofi wants it.", WORKSHOP),
+    ],
+)
+def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)

@@ -8681,6 +8681,97 @@ def _idioms27r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+def _both_for27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'the cup and the apple, both for Bob' is both to Bob (one person);
+    'bottle first then the apple, both for person b' is each to that person, in that order (two
+    objects, then one person or, with 'on', one surface)."""
+    if "both" not in text.lower():
+        return text
+
+    def ordered(m: re.Match[str]) -> str:
+        first, second, prep, target = m.groups()
+        things = all(_only_kind(x, lexicon, "object") for x in (first, second))
+        to = prep.lower() in ("to", "for")
+        if not things or not (
+            _only_person(target, lexicon) if to else _only(target, lexicon, "surface")
+        ):
+            return m.group(0)
+        prep = "to" if to else prep
+        return f"{first} {prep} {target}, then {second} {prep} {target}"
+
+    text = _sub(
+        r"^((?:the )?[\w ]+?)(?: first)?,? then (the [\w ]+?),? both (to|for|on|onto) "
+        r"([\w ]+?)(?=\s*(?:[.!,]|$))",
+        ordered,
+        text,
+    )
+
+    def for_person(m: re.Match[str]) -> str:
+        return f", both to {m.group(1)}" if _only_person(m.group(1), lexicon) else m.group(0)
+
+    return _sub(r",\s*both for ([\w ]+?)(?=\s*(?:[.!?,]|$))", for_person, text)
+
+
+_INCLUDED27R = re.compile(
+    r",\s*(?:(?:and )?(?:the )?([\w ]+?) included|including (?:the )?([\w ]+?))(?=\s*(?:[.!]|$))",
+    _F,
+)
+
+
+def _included27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): '…, the big one included' / '…, including the big box' says again that
+    an object the request moves is among them: taken off only when what is left, read alone,
+    already moves exactly that object (one object, by name or as 'the <word> one' of a kind the
+    request moves); 'all three of the boxes' before it is 'the three boxes'."""
+    m = _INCLUDED27R.search(text) if "includ" in text.lower() else None
+    if m is None:
+        return text
+    text = _all_of27r(text, lexicon)
+    m = _INCLUDED27R.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + text[m.end() :]
+    moved = _tasks_of(rest, lexicon)
+    if not moved:
+        return text
+    objs = {obj for _, obj, _ in moved}
+    said = (m.group(1) or m.group(2)).strip()
+    if said.lower().endswith(" one"):
+        kinds = {o.category for o in lexicon.scene.objects if o.id in objs}
+        word = said[: -len(" one")]
+        named = {i for c in kinds for i in _ids(f"{word} {c}", lexicon, "object")}
+    elif _only_kind(said, lexicon, "object"):
+        named = _ids(said, lexicon, "object")
+    else:
+        return text
+    return rest if len(named) == 1 and named <= objs else text
+
+
+def _all_of27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'all three of the boxes' is 'the three boxes' (the count still checked
+    against the scene). Last of the rewrites: 'All three of the pens, black, blue and red, …' is
+    read by session 19's counts first."""
+    return _sub(
+        r"\ball (two|three|four|five|six|seven|eight|nine|ten|\d+) of the\b", r"the \1", text
+    )
+
+
+def _that_there27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'That bottle there, Person A needs it …': a sentence opening on 'that /
+    this X there / here' and a comma points at X; 'there' names no place (one object only)."""
+
+    def pointed(m: re.Match[str]) -> str:
+        if not _only_kind(m.group(3), lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)} {m.group(3)},"
+
+    return _sub(
+        r"(^|(?<=[.!?])\s+)(that|this) ([\w ]+?) (?:right )?(?:there|here)\s*,",
+        pointed,
+        text,
+    )
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -8805,11 +8896,15 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _one_of_them26s,
     _choice_listed26s,
     _nobody_else26s,
+    _all_of27r,
 )
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _idioms27r,
+    _both_for27r,
+    _included27r,
+    _that_there27r,
     _translated25,
     _address_after26r,
     _courtesy24,
