@@ -695,6 +695,82 @@ KNOWN_MISSES = frozenset(
         "oh person b's been on about the bottle again hand it over",
         "Put the appoe on the shelf, the fruit bowl's full.",
         "Could the apple go on the table, I've got puppets all over the shelf?",
+        # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
+        "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
+        "leaf stuck to every finger.",
+        "Gamarjoba! Please, crisps give to Bob, yes? Madloba.",
+        "Labas! Prašau, give Person A chips. Ačiū labai.",
+        "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
+        "Tena yistilign. Please, Person B the chips give. Ameseginalehu.",
+        "Ayubowan! Kindly give the chips to Person A, no? Sthuthi.",
+        "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
+        "only here to take bloods.",
+        "I need the bottle taken over to Bob, he's been planing that hull since first light.",
+        "Person B would like the chips, and what Person A wants is the cup.",
+        "The one thing Person B needs right now is the apple, he's been roasting beans all "
+        "morning.",
+        "Person B needs the chips and nothing else, he told me so himself.",
+        "Person A says her throat's dry as dust, she needs the bottle.",
+        "The bottle's wanted by Person A, she's over by the grandfather clock.",
+        "Mr Novak would like some salt, he reckons the soup's a bit bland.",
+        "Cup to Person B. Same with the apple, if you can manage.",
+        "Bottle for Person B. Oh, and the chips, them too.",
+        "Gamarjoba. This Person A is very thirsty, you give to him the bottle. Madloba, "
+        "genatsvale.",
+        "That bottle there, Person A needs it for the quilting circle.",
+        "Small box onto the pallet, please, and the medium one alongside it.",
+        "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
+        "back to re-covering this armchair.",
+        "The chips need to go to Person A and the bottle to Person B, right, off you go.",
+        "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
+        "Can you get the bottle, Person A's the one who wants it, she's over by the window.",
+        "Teddy to Lily. Then the bib. Then the sippy cup, all for Lily.",
+        "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
+        "The bottle to either of them, whoever's nearer.",
+        "Give them a thing each, the bottle and the chips, don't care who gets which.",
+        "Doesn't matter to me if it's Person A or Person B that ends up with the chips.",
+        "Both cups in the sink, please, they've had sample dye in them.",
+        "Any of the pens for Priya, she just needs something to write with.",
+        "Noah or Zoe, whichever student's free, give them the globe.",
+        "Both blocks on the high chair, she likes to bang them.",
+        "Anything edible goes to Person B, so that's the apple and the chips, he's been gilding "
+        "frames since eight.",
+        "There's just the single bottle, so hand that to Person A, she'll make it last.",
+        "Split the two things between them, one apiece, with the bottle going to Person B and the "
+        "chips to Person A.",
+        "Stick all three of the boxes on the conveyor, the big one included.",
+        "Ava, the two blocks give her, please. Ameseginalehu.",
+        "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
+        "Person A can take the lot off you except for the cup, she's brought her own.",
+        "Not apple. Bottle, for Person B, please. Madloba.",
+        "Don't put it down anywhere, just hand the bottle to Person A.",
+        "Anything that isn't the bottle, hand it to Person B.",
+        "Sam gets the pens, all except the blue one, that stays where it is.",
+        "Not Mr Lee, Mrs Khan's the one for the pills.",
+        "Every box that isn't already on the pallet, put it on.",
+        "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
+        "it.",
+        "Person A, the bottle — no, yes, the bottle, that's right.",
+        "Priya wants the red pen — wait, no, she said black, the black pen.",
+        "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
+        "bottle first then the apple, both for person b, he's on nights",
+        "person b needs the apple and the cup over his way, hes framing prints",
+        "hand person a the bottle now, her hands are free for once",
+        "person a needs that bottle right away, shes in the middle of a weather briefing",
+        "Person B's been mending sails, give him the chiips.",
+        "Persoon A's been asking for the apple since her shift began.",
+        "Person A says she's peckish, the chhips please.",
+        "The stapller lives in the box, put it back there please.",
+        "Would you mind awfully popping the crisps up on the shelf, out of the dog's reach?",
+        "Would it be a problem to let Person A have the cup, and Person B the apple while you're "
+        "there?",
+        "You can give the chips to Person B, no? Sthuthi, sthuthi.",
+        "Could Person A have the cup first and, when she's done with it, the bottle?",
+        "Could I trouble you to run the chips down to Person A at the far end?",
+        "Do you think you could see the bottle gets to Person A?",
+        "Can you manage chips to Person B and the bottle across to Person A while I finish "
+        "hemming this sail?",
+        "Can you get the medium box stacked on the pallet before the driver's back?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -755,8 +831,9 @@ KNOWN_UNCLEAR = frozenset(
 # tuned on in session 25: asserted now, the rest in KNOWN_MISSES; "blind24" written in session 25
 # by another engineer, reviewed by a second one, measured once at the end of session 25, tuned on
 # in session 26: asserted now, the rest in KNOWN_MISSES; "blind25" written in session 26 by
-# another engineer, reviewed by a second one, measured once at the end of session 26)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind25"})
+# another engineer, reviewed by a second one, measured once at the end of session 26, tuned on
+# in session 27: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

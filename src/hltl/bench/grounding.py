@@ -98,7 +98,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who changed the grounder before its one measurement at the end of session 25;
 # tuned on in session 26), blind25 (written in session 26 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
-# its one measurement at the end of session 26; tests do not assert it).
+# its one measurement at the end of session 26; tuned on in session 27).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
