@@ -707,9 +707,7 @@ KNOWN_MISSES = frozenset(
         "only here to take bloods.",
         "I need the bottle taken over to Bob, he's been planing that hull since first light.",
         "Person B needs the chips and nothing else, he told me so himself.",
-        "Person A says her throat's dry as dust, she needs the bottle.",
         "Cup to Person B. Same with the apple, if you can manage.",
-        "Bottle for Person B. Oh, and the chips, them too.",
         "Gamarjoba. This Person A is very thirsty, you give to him the bottle. Madloba, "
         "genatsvale.",
         "Small box onto the pallet, please, and the medium one alongside it.",
@@ -720,7 +718,6 @@ KNOWN_MISSES = frozenset(
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
-        "Doesn't matter to me if it's Person A or Person B that ends up with the chips.",
         "Both cups in the sink, please, they've had sample dye in them.",
         "Any of the pens for Priya, she just needs something to write with.",
         "Noah or Zoe, whichever student's free, give them the globe.",

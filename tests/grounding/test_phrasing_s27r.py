@@ -245,3 +245,55 @@ def test_a_set_said_again_reads_as_the_set(text: str, want: str, scene: Scene) -
 )
 def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- (e) said around a request: similes, indifference between two people, 'X, them too' -------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Mr Lee says his mouth's as dry as sandpaper, he needs the water jug.", "jug>B", WARD),
+        ("Give Lena the tongs, she's busy as a bee.", "tongs>B", KITCHEN),
+        ("Pass Kofi the torch, it's dark as pitch under there.", "torch>A", WORKSHOP),
+        ("Give Mrs Khan the tablets as soon as you can.", "pills>C", WARD),
+        (
+            "I don't mind if it's Marco or Lena who gets the salt shaker.",
+            "salt>A | salt>B",
+            KITCHEN,
+        ),
+        (
+            "Doesn't matter if it's Kofi or Jess that takes the torch.",
+            "torch>A | torch>B",
+            WORKSHOP,
+        ),
+        (
+            "It doesn't matter whether it's Bob or Carol who gets the apple.",
+            "apple>B | apple>C",
+            CELL,
+        ),
+        ("The drill for Jess. And the torch, it too.", "drill>B & torch>B", WORKSHOP),
+        ("Stapler to Sam. Oh, and the notepad, it as well.", "stapler>B & notebook>B", OFFICE),
+    ],
+)
+def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a comparison with a person of the scene, or one that says which
+        ("Give Lena the tongs, she's as quick as Marco.", KITCHEN),
+        ("Give Sam the stapler, same as Priya.", OFFICE),
+        # one person twice, an unclear object, a deferral, a condition that matters
+        ("Doesn't matter to me if it's Jess or Jess that ends up with the torch.", WORKSHOP),
+        ("It doesn't matter whether it's Bob or Carol who gets the mug.", CELL),
+        ("Doesn't matter if it's Kofi or Jess that takes the torch tomorrow.", WORKSHOP),
+        ("It matters whether it's Bob or Carol who gets the apple.", CELL),
+        # 'them' after two objects: which of them is unclear
+        ("Give Bob the cup and the apple, them too.", CELL),
+    ],
+)
+def test_near_forms_of_what_is_said_around_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

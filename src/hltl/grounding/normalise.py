@@ -8747,6 +8747,81 @@ def _included27r(text: str, lexicon: Lexicon) -> str:
     return rest if len(named) == 1 and named <= objs else text
 
 
+# a predicate simile in a remark: "her throat's (as) dry as dust", "he's as tired as a dog"
+_SIMILE27R = re.compile(
+    r"\b('s|is|are|was|were|feels|looks|seems) (?:as )?([a-z]+) as (?:a |an )?([a-z]+)\b"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# 'as … as' that measures or compares what is asked ('as soon as', 'as close as you can', 'same
+# as Bob'): never a simile
+_NOT_SIMILE27R = frozenset(
+    {
+        *("well", "soon", "long", "much", "many", "far", "near", "close", "quick", "quickly"),
+        *("fast", "same", "possible", "usual", "ever", "always", "before", "agreed", "planned"),
+        *("requested", "asked", "said", "you", "i", "he", "she", "it", "they", "we", "me"),
+        *("him", "her", "them", "us", "one", "ones", "this", "that", "these", "those", "yesterday"),
+    }
+)
+# "Doesn't matter to me if it's Person A or Person B that ends up with the chips"
+_EITHER_PERSON27R = re.compile(
+    rf"^(?:(?:it )?(?:doesn't|does not|won't|will not) matter(?: to me| to us)?(?: at all)?|"
+    rf"(?:i|we) (?:don't|do not) mind) (?:if|whether) it's {_P} or {_P} (?:that|who) "
+    rf"(?:ends up with|gets|has|takes|receives) "
+    rf"{_X}(\s*[.!]|$)",
+    _F,
+)
+
+
+def _said_aside27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r), what is said around a request that asks for nothing more:
+
+    - a predicate simile ('her throat's dry as dust', 'he's as tired as a dog'): the comparison
+      is taken off ("her throat's dry"), the noun compared to naming nothing in the scene and
+      neither word one that measures or compares ('as soon as', 'as close as you can', 'same as
+      Bob');
+    - the speaker's indifference between two people: "Doesn't matter to me if it's P or Q that
+      ends up with X", "I don't mind whether it's P or Q who gets X" is 'X to P or Q' (two
+      people, X objects only);
+    - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
+      name of objects)."""
+    low = text.lower()
+    if " as " in low:
+
+        def simile(m: re.Match[str]) -> str:
+            adj, noun = m.group(2).lower(), m.group(3).lower()
+            if adj in _NOT_SIMILE27R or noun in _NOT_SIMILE27R:
+                return m.group(0)
+            if lexicon.lookup(noun) is not None or not _names_nothing(m.group(0), lexicon):
+                return m.group(0)
+            return f"{m.group(1)} {m.group(2)}"
+
+        text = _SIMILE27R.sub(simile, text)
+    if "matter" in low or "mind" in low:
+        m = _EITHER_PERSON27R.match(text)
+        if (
+            m is not None
+            and _only_person(m.group(1), lexicon)
+            and _only_person(m.group(2), lexicon)
+            and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
+            and _only_kind(m.group(3), lexicon, "object")
+        ):
+            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+    if " too" in low or " as well" in low:
+
+        def again(m: re.Match[str]) -> str:
+            if not _only_kind(m.group(2), lexicon, "object"):
+                return m.group(0)
+            return f"{m.group(1)}{m.group(2)} {m.group(3)}"
+
+        text = _sub(
+            r"(^|(?<=[.!?])\s+|\band )((?:the )?[\w ]+?),\s*(?:them|it) (too|as well)\b",
+            again,
+            text,
+        )
+    return text
+
+
 def _all_of27r(text: str, lexicon: Lexicon) -> str:
     """Session 27 (12r): 'all three of the boxes' is 'the three boxes' (the count still checked
     against the scene). Last of the rewrites: 'All three of the pens, black, blue and red, …' is
@@ -8905,6 +8980,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_for27r,
     _included27r,
     _that_there27r,
+    _said_aside27r,
     _translated25,
     _address_after26r,
     _courtesy24,
