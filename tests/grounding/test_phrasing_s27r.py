@@ -274,6 +274,12 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
         ),
         ("The drill for Jess. And the torch, it too.", "drill>B & torch>B", WORKSHOP),
         ("Stapler to Sam. Oh, and the notepad, it as well.", "stapler>B & notebook>B", OFFICE),
+        (
+            "Any of the pens for Priya, she just needs something to write with.",
+            "pen_black>A | pen_blue>A | pen_red>A",
+            OFFICE,
+        ),
+        ("Give Bob the cup, he's playing with Carol.", "cup>B", CELL),
     ],
 )
 def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scene) -> None:
@@ -293,6 +299,8 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         ("It matters whether it's Bob or Carol who gets the apple.", CELL),
         # 'them' after two objects: which of them is unclear
         ("Give Bob the cup and the apple, them too.", CELL),
+        # 'with' an object of the scene in a remark: it may ask for it
+        ("Give Priya the notepad, she wants it with the stapler.", OFFICE),
     ],
 )
 def test_near_forms_of_what_is_said_around_stay_refused(text: str, scene: Scene) -> None:
