@@ -710,7 +710,6 @@ KNOWN_MISSES = frozenset(
         "Cup to Person B. Same with the apple, if you can manage.",
         "Gamarjoba. This Person A is very thirsty, you give to him the bottle. Madloba, "
         "genatsvale.",
-        "Small box onto the pallet, please, and the medium one alongside it.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
         "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",

@@ -280,6 +280,16 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
             OFFICE,
         ),
         ("Give Bob the cup, he's playing with Carol.", "cup>B", CELL),
+        (
+            "Put the drill on the bench, and the hammer next to it.",
+            "drill@bench & hammer@bench",
+            WORKSHOP,
+        ),
+        (
+            "The drill in the locker and the torch beside it.",
+            "drill@locker & torch@locker",
+            WORKSHOP,
+        ),
     ],
 )
 def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scene) -> None:
@@ -299,6 +309,10 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         ("It matters whether it's Bob or Carol who gets the apple.", CELL),
         # 'them' after two objects: which of them is unclear
         ("Give Bob the cup and the apple, them too.", CELL),
+        # 'next to it' after a hand-over, before a place of its own, or after two places
+        ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
+        ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),
+        ("Put the drill on the bench or in the locker, and the hammer next to it.", WORKSHOP),
         # 'with' an object of the scene in a remark: it may ask for it
         ("Give Priya the notepad, she wants it with the stapler.", OFFICE),
     ],

@@ -8773,6 +8773,22 @@ _EITHER_PERSON27R = re.compile(
 )
 
 
+def _alongside27r(text: str, lexicon: Lexicon) -> str:
+    """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
+    one surface named before, so on that surface (no person named anywhere: 'next to it' after
+    a hand-over says no place)."""
+    m = re.search(r"\b(?:alongside|next to|beside) (?:it|them)(?=\s*(?:[,.;!?]|$))", text, _F)
+    if m is None or _ids(text, lexicon, "human"):
+        return text
+    before = text[: m.start()]
+    said = [it for it in _names(before, lexicon) if it.refs[0].kind == "surface"]
+    if len({r.id for it in said for r in it.refs}) != 1:
+        return text
+    if not re.search(rf"\b(?:on|onto|in|into) (?:the )?{re.escape(said[-1].text)}\b", before, _F):
+        return text
+    return f"{before}on the {said[-1].text}{text[m.end() :]}"
+
+
 def _said_aside27r(text: str, lexicon: Lexicon) -> str:
     """Session 27 (12r), what is said around a request that asks for nothing more:
 
@@ -8784,7 +8800,8 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
       ends up with X", "I don't mind whether it's P or Q who gets X" is 'X to P or Q' (two
       people, X objects only);
     - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
-      name of objects)."""
+      name of objects);
+    - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r)."""
     low = text.lower()
     if " as " in low:
 
@@ -8807,6 +8824,8 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             and _only_kind(m.group(3), lexicon, "object")
         ):
             text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+    if re.search(r"\b(?:alongside|next to|beside)\b", low):
+        text = _alongside27r(text, lexicon)
     if " too" in low or " as well" in low:
 
         def again(m: re.Match[str]) -> str:
