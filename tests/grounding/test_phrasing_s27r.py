@@ -196,6 +196,12 @@ def test_near_forms_of_the_idioms_stay_refused(text: str, scene: Scene) -> None:
 @pytest.mark.parametrize(
     ("text", "want", "scene"),
     [
+        # session 18 asserted a refusal here only to show its rewrite no longer crashed
+        (
+            "Put all three of the pens in the box, cheers",
+            "pen_black@box & pen_blue@box & pen_red@box",
+            OFFICE,
+        ),
         (
             "Stick all three of the boxes on the pallet.",
             "box_small@pallet & box_medium@pallet & box_large@pallet",
