@@ -718,7 +718,6 @@ KNOWN_MISSES = frozenset(
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
         "Both cups in the sink, please, they've had sample dye in them.",
-        "Noah or Zoe, whichever student's free, give them the globe.",
         "Both blocks on the high chair, she likes to bang them.",
         "Anything edible goes to Person B, so that's the apple and the chips, he's been gilding "
         "frames since eight.",

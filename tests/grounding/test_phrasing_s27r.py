@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
     OFFICE,
@@ -287,6 +288,17 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
         ),
         ("Give Bob the cup, he's playing with Carol.", "cup>B", CELL),
         (
+            "Noah or Zoe, whichever one is nearer, give them the globe.",
+            "globe>B | globe>C",
+            CLASSROOM,
+        ),
+        (
+            "Mr Lee or Mrs Khan, whichever patient is closer, take them the water jug.",
+            "jug>B | jug>C",
+            WARD,
+        ),
+        ("Kofi or Jess, whoever's free, give them the torch.", "torch>A | torch>B", WORKSHOP),
+        (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
             WORKSHOP,
@@ -315,6 +327,10 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         ("It matters whether it's Bob or Carol who gets the apple.", CELL),
         # 'them' after two objects: which of them is unclear
         ("Give Bob the cup and the apple, them too.", CELL),
+        # 'whichever <noun>' the two people do not share; one person twice; an unclear object
+        ("Noah or Mrs Ortiz, whichever student's free, give them the globe.", CLASSROOM),
+        ("Noah or Noah, whichever is free, give them the globe.", CLASSROOM),
+        ("Noah or Zoe, whichever student's free, give them the book.", CLASSROOM),
         # 'next to it' after a hand-over, before a place of its own, or after two places
         ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
         ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),

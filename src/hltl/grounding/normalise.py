@@ -8773,6 +8773,31 @@ _EITHER_PERSON27R = re.compile(
 )
 
 
+# "Noah or Zoe, whichever student's free, give them the globe"
+_WHICHEVER_FREE27R = re.compile(
+    rf"^{_P} or {_P},\s*(?:whichever|whoever)( [a-z]+(?: of them)?)?(?:'s| is) (?:free|nearer|"
+    rf"closer|nearest|closest|available|less busy)\s*,\s*(give|hand|pass|bring|take) them "
+    rf"{_X}(\s*[.!]|$)",
+    _F,
+)
+
+
+def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
+    """'P or Q, whichever <noun> is free, give them X': 'give X to P or Q, whichever is free'
+    (two different people; the noun, if any, 'one' / 'person' / 'of them' or a name both share;
+    X one name of objects); else None."""
+    first, second, noun, verb, things, end = m.groups()
+    one, two = _ids(first, lexicon, "human"), _ids(second, lexicon, "human")
+    if not (_only_person(first, lexicon) and _only_person(second, lexicon)) or one == two:
+        return None
+    word = (noun or "").strip().lower().removesuffix(" of them").strip()
+    if word and word not in ("one", "person") and not one | two <= _ids(word, lexicon, "human"):
+        return None
+    if not _only_kind(things, lexicon, "object"):
+        return None
+    return f"{verb} {things} to {first} or {second}, whichever is free{end}"
+
+
 def _alongside27r(text: str, lexicon: Lexicon) -> str:
     """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
     one surface named before, so on that surface (no person named anywhere: 'next to it' after
@@ -8824,6 +8849,10 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             and _only_kind(m.group(3), lexicon, "object")
         ):
             text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+    if "whichever" in low or "whoever" in low:
+        m = _WHICHEVER_FREE27R.match(text)
+        if m is not None:
+            text = _whichever_free27r(m, lexicon) or text
     if re.search(r"\b(?:alongside|next to|beside)\b", low):
         text = _alongside27r(text, lexicon)
     if " too" in low or " as well" in low:
