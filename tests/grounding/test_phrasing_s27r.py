@@ -298,6 +298,9 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
             WARD,
         ),
         ("Kofi or Jess, whoever's free, give them the torch.", "torch>A | torch>B", WORKSHOP),
+        ("Can you get the medium box stacked on the pallet?", "box_medium@pallet", DEPOT),
+        ("Could you get the tape taken over to Tom?", "tape>B", DEPOT),
+        ("Can you get the torch handed to Jess?", "torch>B", WORKSHOP),
         (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
@@ -331,6 +334,9 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         ("Noah or Mrs Ortiz, whichever student's free, give them the globe.", CLASSROOM),
         ("Noah or Noah, whichever is free, give them the globe.", CLASSROOM),
         ("Noah or Zoe, whichever student's free, give them the book.", CLASSROOM),
+        # 'get X done' with an unclear object, or a verb that moves nothing
+        ("Can you get the spanner handed to Jess?", WORKSHOP),
+        ("Can you get the torch fixed on the bench?", WORKSHOP),
         # 'next to it' after a hand-over, before a place of its own, or after two places
         ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
         ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),

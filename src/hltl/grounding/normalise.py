@@ -8798,6 +8798,24 @@ def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
     return f"{verb} {things} to {first} or {second}, whichever is free{end}"
 
 
+# "Can you get the medium box stacked on the pallet?": the causative 'get X done'
+_GOT_DONE27R = (
+    r"\bget ((?:the |both |all the |all of the )[\w ]+?) (stacked|put|placed|set|stored|moved|"
+    r"taken|brought|sent|delivered|handed|passed|given) (?=(?:over |across |back )?(?:on|onto|in|"
+    r"into|to)\b)"
+)
+
+
+def _got_done27r(m: re.Match[str], lexicon: Lexicon) -> str:
+    """'get X stacked on S' is 'stack X on S', 'get X taken to P' 'take X to P' (X one name of
+    objects, or 'both / all the' them)."""
+    things = re.sub(r"^(?:both|all the|all of the) ", "the ", m.group(1), flags=_F)
+    if not _only_kind(things, lexicon, "object"):
+        return m.group(0)
+    verb = {"stacked": "stack", "set": "set", "stored": "store"}.get(m.group(2).lower())
+    return f"{verb or _PARTICIPLES[m.group(2).lower()]} {m.group(1)} "
+
+
 def _alongside27r(text: str, lexicon: Lexicon) -> str:
     """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
     one surface named before, so on that surface (no person named anywhere: 'next to it' after
@@ -8853,6 +8871,8 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
             text = _whichever_free27r(m, lexicon) or text
+    if re.search(r"\b(?:get|got)\b", low):
+        text = _sub(_GOT_DONE27R, lambda m: _got_done27r(m, lexicon), text)
     if re.search(r"\b(?:alongside|next to|beside)\b", low):
         text = _alongside27r(text, lexicon)
     if " too" in low or " as well" in low:
