@@ -749,7 +749,6 @@ KNOWN_MISSES = frozenset(
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "
         "hemming this sail?",
-        "Can you get the medium box stacked on the pallet before the driver's back?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

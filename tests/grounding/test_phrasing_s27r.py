@@ -301,6 +301,8 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
         ("Can you get the medium box stacked on the pallet?", "box_medium@pallet", DEPOT),
         ("Could you get the tape taken over to Tom?", "tape>B", DEPOT),
         ("Can you get the torch handed to Jess?", "torch>B", WORKSHOP),
+        ("Put the tape on the pallet before Tom gets back.", "tape@pallet", DEPOT),
+        ("Could Mr Lee have the water jug before the nurse is back?", "jug>B", WARD),
         (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
@@ -337,6 +339,9 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         # 'get X done' with an unclear object, or a verb that moves nothing
         ("Can you get the spanner handed to Jess?", WORKSHOP),
         ("Can you get the torch fixed on the bench?", WORKSHOP),
+        # someone coming back as a condition, not a deadline
+        ("Put the tape on the pallet when Tom gets back.", DEPOT),
+        ("Put the tape on the pallet after Tom gets back.", DEPOT),
         # 'next to it' after a hand-over, before a place of its own, or after two places
         ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
         ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),

@@ -8844,7 +8844,11 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
       people, X objects only);
     - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
       name of objects);
-    - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r)."""
+    - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r);
+    - 'P or Q, whichever <noun> is free, give them X' (_whichever_free27r);
+    - the causative 'get X stacked on S' (_got_done27r);
+    - a deadline 'before the driver's / she's / he gets back': acting now meets it (someone
+      coming back, never an object)."""
     low = text.lower()
     if " as " in low:
 
@@ -8871,6 +8875,20 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
             text = _whichever_free27r(m, lexicon) or text
+    if " back" in low and "before" in low:
+
+        def deadline(m: re.Match[str]) -> str:
+            said = _ids(m.group(1), lexicon)
+            if said - _ids(m.group(1), lexicon, "human"):
+                return m.group(0)  # "before the cup's back": an object, a task of its own
+            return ""
+
+        text = _sub(
+            r"\s+before (?:the |my |our |his |her |their )?([\w]+(?: [\w]+)?)(?:'s| is| are|'re|"
+            r" gets| get| comes| come) back(?=\s*(?:[.!?,]|$))",
+            deadline,
+            text,
+        )
     if re.search(r"\b(?:get|got)\b", low):
         text = _sub(_GOT_DONE27R, lambda m: _got_done27r(m, lexicon), text)
     if re.search(r"\b(?:alongside|next to|beside)\b", low):
