@@ -732,7 +732,6 @@ KNOWN_MISSES = frozenset(
         "Anything that isn't the bottle, hand it to Person B.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
         "Not Mr Lee, Mrs Khan's the one for the pills.",
-        "Every box that isn't already on the pallet, put it on.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Person A, the bottle — no, yes, the bottle, that's right.",

@@ -304,6 +304,21 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
         ("Put the tape on the pallet before Tom gets back.", "tape@pallet", DEPOT),
         ("Could Mr Lee have the water jug before the nurse is back?", "jug>B", WARD),
         (
+            "All the boxes that aren't on the pallet, stick them on.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put every box that isn't on the pallet on the conveyor.",
+            "box_small@conveyor & box_medium@conveyor",
+            DEPOT,
+        ),
+        (
+            "Every mug that isn't on the table, put it on the shelf.",
+            "mug_red@shelf & mug_blue@shelf",
+            CELL,
+        ),
+        (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
             WORKSHOP,
@@ -342,6 +357,9 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         # someone coming back as a condition, not a deadline
         ("Put the tape on the pallet when Tom gets back.", DEPOT),
         ("Put the tape on the pallet after Tom gets back.", DEPOT),
+        # 'every X that isn't on S' with no such surface, or handed over (not placed)
+        ("Every box that isn't on the shelf, put it on.", DEPOT),
+        ("Every box that isn't already on the pallet, give it to Tom.", DEPOT),
         # 'next to it' after a hand-over, before a place of its own, or after two places
         ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
         ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),

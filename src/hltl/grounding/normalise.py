@@ -8816,6 +8816,39 @@ def _got_done27r(m: re.Match[str], lexicon: Lexicon) -> str:
     return f"{verb or _PARTICIPLES[m.group(2).lower()]} {m.group(1)} "
 
 
+# "Every box that isn't already on the pallet, put it on." / "Put every box that isn't on the
+# pallet on the conveyor."
+_NOT_ON27R = re.compile(
+    r"^(?:(?:put|stick|pop|place|move|set) )?(?:every|each|all the|all of the|the) ([a-z]+) that "
+    r"(?:isn't|aren't|is not|are not) (?:already |yet )?(?:on|in) (?:the )?([a-z ]+?)(?:,\s*"
+    r"(?:put|stick|pop|place|move|set) (?:it|them)(?: (?:on|onto|in|into)(?: (?:the )?([a-z ]+?))?"
+    r")?| (?:on|onto|in|into) (?:the )?([a-z ]+?))\s*([.!]?)$",
+    _F,
+)
+
+
+def _not_on27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
+    """'every X that isn't (already) on S, put it on (S2)' / 'put every X that isn't on S on S2':
+    the Xs of the scene that do not start on S, each put on S2 (S when none is said); None when
+    the kind or a surface is not one name, or no X is left."""
+    noun, where, then, onto, end = m.groups()
+    kinds = {noun.lower(), _singular(noun.lower())}
+    of_kind = {o.id for o in lexicon.scene.objects if o.category.lower() in kinds}
+    surface = _ids(where, lexicon, "surface")
+    target = _ids(then or onto or where, lexicon, "surface")
+    if not of_kind or len(surface) != 1 or len(target) != 1:
+        return None
+    if not (_only(where, lexicon, "surface") and _only(then or onto or where, lexicon, "surface")):
+        return None
+    on = set(starting_on(of_kind, next(iter(surface)), lexicon))
+    left = [f"the {_said(o.id, lexicon)}" for o in lexicon.scene.objects if o.id in of_kind - on]
+    if not left:
+        return None
+    things = left[0] if len(left) == 1 else f"{', '.join(left[:-1])} and {left[-1]}"
+    surface_name = (then or onto or where).strip()
+    return f"put {things} on the {surface_name.removeprefix('the ')}{end}"
+
+
 def _alongside27r(text: str, lexicon: Lexicon) -> str:
     """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
     one surface named before, so on that surface (no person named anywhere: 'next to it' after
@@ -8848,7 +8881,8 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
     - 'P or Q, whichever <noun> is free, give them X' (_whichever_free27r);
     - the causative 'get X stacked on S' (_got_done27r);
     - a deadline 'before the driver's / she's / he gets back': acting now meets it (someone
-      coming back, never an object)."""
+      coming back, never an object);
+    - 'every X that isn't (already) on S, put it on' (_not_on27r): the Xs not starting on S."""
     low = text.lower()
     if " as " in low:
 
@@ -8875,6 +8909,10 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
             text = _whichever_free27r(m, lexicon) or text
+    if "that is" in low or "that are" in low or "that isn't" in low or "that aren't" in low:
+        m = _NOT_ON27R.match(text)
+        if m is not None:
+            text = _not_on27r(m, lexicon) or text
     if " back" in low and "before" in low:
 
         def deadline(m: re.Match[str]) -> str:
