@@ -319,6 +319,11 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
             CELL,
         ),
         (
+            "Lena can take the lot off you except the salt shaker.",
+            "plate_white>B & knife>B & lemon>B & plate_blue>B & tongs>B",
+            KITCHEN,
+        ),
+        (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
             WORKSHOP,

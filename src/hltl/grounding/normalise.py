@@ -3248,7 +3248,8 @@ _SAID14: tuple[tuple[str, str], ...] = (
         "make sure ",
     ),
     # "Give Priya the lot", "All of it to Priya bar the pens": everything (but)
-    (r"\bthe (?:whole )?lot\b(?! of)", "everything"),
+    # (session 27: 'of' a word, so 'the lot off you' is everything too)
+    (r"\bthe (?:whole )?lot\b(?! of\b)", "everything"),
     (r"^all of it\b", "everything"),
     (r"\b(everything|everything else)\s+bar\s+(?=the\b)", r"\1 except "),
     # "Any old pen for Sam": any pen
