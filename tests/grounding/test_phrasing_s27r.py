@@ -17,6 +17,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    NURSERY,
     OFFICE,
     SCENES,
     WARD,
@@ -323,6 +324,12 @@ def test_near_forms_of_a_set_said_again_stay_refused(text: str, scene: Scene) ->
             "plate_white>B & knife>B & lemon>B & plate_blue>B & tongs>B",
             KITCHEN,
         ),
+        ("The teddy and the bib, all for Lily.", "teddy>A & bib>A", NURSERY),
+        (
+            "Drill to Kofi. Then the torch. Then the hammer, all for Kofi.",
+            "drill>A ; torch>A ; hammer>A",
+            WORKSHOP,
+        ),
         (
             "Put the drill on the bench, and the hammer next to it.",
             "drill@bench & hammer@bench",
@@ -365,6 +372,11 @@ def test_what_is_said_around_a_request_is_read(text: str, want: str, scene: Scen
         # 'every X that isn't on S' with no such surface, or handed over (not placed)
         ("Every box that isn't on the shelf, put it on.", DEPOT),
         ("Every box that isn't already on the pallet, give it to Tom.", DEPOT),
+        # 'all for P' with another person or a place named, one object, or two people
+        ("Give Ava the teddy, then the bib, all for Lily.", NURSERY),
+        ("The teddy on the high chair, then the bib, all for Lily.", NURSERY),
+        ("The teddy, all for Lily.", NURSERY),
+        ("Teddy to Lily. Then the bib. Then the sippy cup, all for Lily and Ava.", NURSERY),
         # 'next to it' after a hand-over, before a place of its own, or after two places
         ("Give Kofi the drill, and the hammer next to it.", WORKSHOP),
         ("Put the drill on the bench, and the hammer next to it on the locker.", WORKSHOP),

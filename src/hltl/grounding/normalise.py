@@ -8850,6 +8850,32 @@ def _not_on27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
     return f"put {things} on the {surface_name.removeprefix('the ')}{end}"
 
 
+def _all_for27r(text: str, lexicon: Lexicon) -> str:
+    """'Teddy to Lily. Then the bib. Then the sippy cup, all for Lily.': 'all for / to P' closing
+    the instruction gives every object named to P; taken only when no other person and no
+    surface is named, two objects at least are, and what is left with 'for P' reads as each of
+    them handed to P."""
+    m = re.search(r",\s*all (?:of them |of it )?(?:for|to) ([\w ]+?)\s*([.!]?)$", text, _F)
+    if m is None or not _only_person(m.group(1), lexicon):
+        return text
+    who = _ids(m.group(1), lexicon, "human")
+    said = _names(text, lexicon)
+    if any(
+        r.kind == "surface" or (r.kind == "human" and r.id not in who)
+        for it in said
+        for r in it.refs
+    ):
+        return text
+    objs = _ids(text, lexicon, "object")
+    if len(objs) < 2:
+        return text
+    out = f"{text[: m.start()]}, for {m.group(1)}{m.group(2)}"
+    moved = _tasks_of(out, lexicon)
+    if moved is None or moved != {("deliver", o, next(iter(who))) for o in objs}:
+        return text
+    return out
+
+
 def _alongside27r(text: str, lexicon: Lexicon) -> str:
     """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
     one surface named before, so on that surface (no person named anywhere: 'next to it' after
@@ -8883,6 +8909,7 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
     - the causative 'get X stacked on S' (_got_done27r);
     - a deadline 'before the driver's / she's / he gets back': acting now meets it (someone
       coming back, never an object);
+    - 'X, then Y, all for P' (_all_for27r);
     - 'every X that isn't (already) on S, put it on' (_not_on27r): the Xs not starting on S."""
     low = text.lower()
     if " as " in low:
@@ -8928,6 +8955,8 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             deadline,
             text,
         )
+    if "all " in low:
+        text = _all_for27r(text, lexicon)
     if re.search(r"\b(?:get|got)\b", low):
         text = _sub(_GOT_DONE27R, lambda m: _got_done27r(m, lexicon), text)
     if re.search(r"\b(?:alongside|next to|beside)\b", low):
