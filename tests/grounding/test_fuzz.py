@@ -3,7 +3,9 @@ session 25 (taken back: refused; taken back and replaced: the new handover; an e
 go before the entry: the entry), the reference family of session 26 (one of several objects of a
 kind named by its kind alone, one of two people sharing a title named by the title: refused with
 the readings; a one-of-a-kind object by its kind: that handover; the speaker's own want joined to
-an entry: refused), and the wrappers and take-backs of a seed unchanged by them."""
+an entry: refused), the exclusion family of session 27 (a kind narrowed after a comma: the rest,
+the one named, or refused with the readings; an entry narrowing after a comma wrapped: the
+entry), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -14,10 +16,10 @@ import pytest
 
 from hltl.bench.grounding import Entry, parse_expectation
 from hltl.grounding.lexicon import Lexicon, lex
-from hltl.grounding.tree import Task, tasks
+from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene, load_scene
 from tests.grounding import fuzz
-from tests.grounding.helpers import CELL, CLASSROOM, DEPOT, OFFICE, ROOT, WARD
+from tests.grounding.helpers import CELL, CLASSROOM, DEPOT, NURSERY, OFFICE, ROOT, SCENES, WARD
 
 PARTS = ("tuning", "blind21", "blind23")
 
@@ -160,7 +162,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
     assert min(kinds.values()) > 20, kinds
 
 
-@pytest.mark.parametrize("family", ["wrappers", "takebacks"])
+@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions"])
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
     every = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
@@ -174,7 +176,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
-    assert "expected some of ('wrappers', 'takebacks', 'references')" in err
+    assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -313,3 +315,146 @@ def test_over_the_corpus_each_reference_variant_names_what_it_says() -> None:
             closer = _found(fuzz.SPEAKER_CLOSERS, v.text, "end")
             assert (opener or closer) is not None, v.text
     assert min(kinds.values()) >= 5, kinds
+
+
+# -- exclusions (session 27) ----------------------------------------------------------------------
+
+
+def _exclusions(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.exclusions("t", entry, scene, random.Random(seed)))
+
+
+_FRAMES = {
+    "rest, any": fuzz.REST_ANY,
+    "rest, all": fuzz.REST_ALL,
+    "only that": fuzz.ONLY_THAT,
+    "just one": fuzz.JUST_ONE,
+}
+
+
+def _frame(v: fuzz.Variant) -> re.Match[str]:
+    """The frame of ``v``'s form in its text (after any opener, before any closer), its fields
+    as groups (a field said twice, "a {c}, just not the {x} {c}", the same words again)."""
+    for form in _FRAMES[v.form]:
+        out = re.escape(form.rstrip("."))
+        for key in ("P", "p", "cs", "c", "x"):
+            field = re.escape("{" + key + "}")
+            out = out.replace(field, f"(?P<{key}>[\\w ]+?)", 1).replace(field, f"(?P={key})")
+        m = re.search("(?i)" + out, v.text)
+        if m:
+            return m
+    raise AssertionError(f"{v.text!r} has no frame of {v.form!r}")
+
+
+def _one_of(node: Node, op: str) -> list[Task]:
+    """The tasks of ``node``: one task, or a group ``op`` of tasks."""
+    if isinstance(node, Task):
+        return [node]
+    assert isinstance(node, Group) and node.op == op
+    assert all(isinstance(c, Task) for c in node.children)
+    return [c for c in node.children if isinstance(c, Task)]
+
+
+def _check_frame(v: fuzz.Variant, scene: Scene) -> None:
+    m = _frame(v)
+    whom = _one_person(m["P"] if m.groupdict().get("P") else m["p"], scene)
+    kind = _objects(f"the {m['cs']}" if m.groupdict().get("cs") else f"the {m['c']}", scene)
+    assert len(kind) > 1  # a kind the scene has several of, named by its plural or its kind
+    if v.form == "just one":
+        assert v.want is None and v.must == "refuse" and set(v.readings) == kind
+        return
+    assert v.must == "same" and not v.readings and v.want is not None
+    (named,) = _objects(f"the {m['x']} {next(iter(_kind_of(kind, scene)))}", scene)
+    if v.form == "only that":
+        assert v.want == Task("deliver", named, whom)
+        return
+    got = _one_of(v.want, "or" if v.form == "rest, any" else "and")
+    assert {t.obj for t in got} == kind - {named}  # every other one of the kind, to that person
+    assert {(t.kind, t.target) for t in got} == {("deliver", whom)}
+
+
+def _kind_of(ids: set[str], scene: Scene) -> set[str]:
+    return {o.category for o in scene.objects if o.id in ids}
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_an_exclusion_variant_reads_as_its_frame_says(seed: int) -> None:
+    scene = random.Random(seed).choice([CELL, OFFICE, WARD, DEPOT, CLASSROOM, NURSERY])
+    entry = _entry("s", "Give her the thing.", None)  # the entry lends its scene alone
+    (v,) = _exclusions(entry, scene, seed)
+    assert v.family == "exclusions" and v.form in fuzz.EXCLUSION_FORMS[:4]
+    _check_frame(v, scene)
+
+
+def test_the_frames_come_bare_and_wrapped_and_keep_the_sentence_case() -> None:
+    forms: set[str] = set()
+    wraps: set[tuple[bool, bool]] = set()
+    for seed in range(200):
+        (v,) = _exclusions(_entry("cell", "Give her the thing.", None), CELL, seed)
+        forms.add(v.form)
+        opener = _found(fuzz.OPENERS, v.text, "start") is not None
+        wraps.add((opener, _found(fuzz.CLOSERS, v.text, "end") is not None))
+        assert not re.search(r"(?:,|but|so) A ", v.text)  # "…, a mug for Bob", not "…, A mug"
+    assert forms == set(fuzz.EXCLUSION_FORMS[:4])
+    assert wraps == {(False, False), (True, False), (False, True), (True, True)}
+
+
+def test_three_of_a_kind_give_a_choice_or_all_of_the_rest_and_no_both() -> None:
+    forms: set[str] = set()
+    for seed in range(120):
+        (v,) = _exclusions(_entry("depot", "Give her the thing.", None), DEPOT, seed)
+        forms.add(v.form)
+        assert not re.search(r"(?i)\bboth\b", v.text)
+        if v.form == "rest, any":
+            assert isinstance(v.want, Group) and v.want.op == "or" and len(v.want.children) == 2
+        if v.form == "rest, all":
+            assert isinstance(v.want, Group) and v.want.op == "and" and len(v.want.children) == 2
+        if v.form == "just one":
+            assert v.readings == ("box_small", "box_medium", "box_large")
+    assert forms == set(fuzz.EXCLUSION_FORMS[:4])
+
+
+def test_a_scene_with_no_kind_told_apart_gives_only_a_narrowing_entry_wrapped() -> None:
+    plain = _entry("two", "Give Bob the crisps.", "chips>B")
+    assert _exclusions(plain, TWO, 0) == []
+    narrowed = _entry("two", "Give Bob the crisps, just not the bottle.", "chips>B")
+    for seed in range(20):
+        (v,) = _exclusions(narrowed, TWO, seed)
+        assert v.form == "wrapped" and v.want == narrowed.want and v.must == "same"
+        assert "ive Bob the crisps, just not the bottle" in v.text
+        assert v.text != narrowed.text  # an opener, and a closer after a plain ending
+        assert _found(fuzz.OPENERS, v.text, "start") is not None
+        assert _found(fuzz.CLOSERS, v.text, "end") is not None
+
+
+def test_a_refused_entry_narrowing_stays_refused_with_its_readings() -> None:
+    said = "The blocks to Ava, sorry, just the one."
+    entry = Entry("nursery", said, None, ("block_red", "block_green"))
+    for seed in range(10):
+        wrapped = [v for v in _exclusions(entry, NURSERY, seed) if v.form == "wrapped"]
+        (v,) = wrapped
+        assert v.must == "refuse" and v.want is None and v.readings == entry.readings
+        assert "blocks to Ava, sorry, just the one" in v.text
+
+
+def test_an_entry_without_a_narrowing_is_not_wrapped_again() -> None:
+    for text in (
+        "Give Bob the red mug.",
+        "Bob just wants the cup.",
+        "Only Bob needs a mug, please.",
+    ):
+        made = _exclusions(_entry("cell", text, None), CELL, 1)
+        assert [v.form for v in made] != [] and "wrapped" not in [v.form for v in made]
+
+
+def test_over_the_corpus_each_exclusion_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.EXCLUSION_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=27, every=3, families=("exclusions",)):
+        assert v.family == "exclusions"
+        kinds[v.form] += 1
+        if v.form != "wrapped":
+            _check_frame(v, scene)
+        else:
+            assert fuzz._NARROWS.search(v.text)
+    assert min(kinds.values()) >= 10, kinds
+    assert all(fuzz._told_apart(s) for s in SCENES)  # each scene of the corpus tells a kind apart

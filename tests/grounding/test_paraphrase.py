@@ -379,7 +379,6 @@ KNOWN_MISSES = frozenset(
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
-        "The two things you drink from, the bottle and the cup, to Person A.",
         "Both items to Person B, the pair of them.",
         "Bob is to have the two of them, bottle and crisps.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
@@ -450,8 +449,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Give Carol one of the mugs, she really doesn't care which.",
         "Either of them can have the chips, Alice or Bob, makes no odds.",
-        "I'm closing up the bar, so the bottle and the crisps, both of them, up on the shelf "
-        "out of the way.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
@@ -560,8 +557,6 @@ KNOWN_MISSES = frozenset(
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Noah or Zoe can have the globe, either one, they're both doing the project.",
-        'The two things cluttering the floor, the bottle and the crisps, up on the shelf, please.',
-        'The two drinks, bottle and cup, go to Person B, krap.',
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
@@ -634,9 +629,7 @@ KNOWN_MISSES = frozenset(
         'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
-        'The two things you can see, the bottle and the crisps, both to Alice.',
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
-        "Hand over both items, chips and bottle alike, to Person B, she's earned them.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
@@ -656,7 +649,6 @@ KNOWN_MISSES = frozenset(
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
         "Bottle to, no hang on, yes, Person A, it's only her.",
         "Give Person A the bottle, no wait, yeah, that's right, the bottle.",
-        'stick the crisps up on the shelf out of reach and hand alice the bottle, ta muchly',
         'person b gets the apple to start with, and then after it person a gets the chips',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         "sam's asked for the notepad and priya for the stapler, i'm just trimming the spines",
@@ -698,18 +690,12 @@ KNOWN_MISSES = frozenset(
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
         "leaf stuck to every finger.",
-        "Gamarjoba! Please, crisps give to Bob, yes? Madloba.",
-        "Labas! Prašau, give Person A chips. Ačiū labai.",
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Tena yistilign. Please, Person B the chips give. Ameseginalehu.",
         "Ayubowan! Kindly give the chips to Person A, no? Sthuthi.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
         "I need the bottle taken over to Bob, he's been planing that hull since first light.",
         "Person B needs the chips and nothing else, he told me so himself.",
-        "Cup to Person B. Same with the apple, if you can manage.",
-        "Gamarjoba. This Person A is very thirsty, you give to him the bottle. Madloba, "
-        "genatsvale.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
         "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
@@ -718,8 +704,6 @@ KNOWN_MISSES = frozenset(
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
         "Both cups in the sink, please, they've had sample dye in them.",
         "Both blocks on the high chair, she likes to bang them.",
-        "Anything edible goes to Person B, so that's the apple and the chips, he's been gilding "
-        "frames since eight.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
         "chips to Person A.",
@@ -740,7 +724,6 @@ KNOWN_MISSES = frozenset(
         "Persoon A's been asking for the apple since her shift began.",
         "Person A says she's peckish, the chhips please.",
         "The stapller lives in the box, put it back there please.",
-        "Would you mind awfully popping the crisps up on the shelf, out of the dog's reach?",
         "You can give the chips to Person B, no? Sthuthi, sthuthi.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",

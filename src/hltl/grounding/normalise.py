@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import unicodedata
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
@@ -4139,6 +4140,14 @@ _COURTESY_IFS = (
         "if you could ",
     ),
     (r"\bif (?:ye|yous|u) (could|would|can)\b", r"if you \1"),
+    # session 27: "…, if you can manage." / "if you can manage it" / "if you're able": asking
+    # whether the hearer can, closing a sentence (said before the rest of a clause it is left)
+    (
+        r"\s*,?\s*\bif (?:you|ye|u)(?: can| could| think you can| are able to|'re able to) manage"
+        r"(?: it| that| this)?(?=\s*(?:[.!?]|$))|\s*,\s*\bif (?:you|ye|u) ?(?:'re|are) able"
+        r"(?=\s*(?:[.!?]|$))",
+        "",
+    ),
     (r"\b(?:kindly |please )?do the needful,?\s+and\s+", ""),
     (
         r"^(?:right,?\s*|ok,?\s*|okay,?\s*)?while (?:everyone|everybody|the [a-z]+|we|they) "
@@ -7015,6 +7024,25 @@ _COURTESY24 = (
     # (friend), with and without their letters' marks ('please' in them: _translated25)
     r"dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|"
     r"mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|"
+    # session 27: Georgian, Lithuanian, Amharic and Sinhala greetings, thanks and the Georgian
+    # address 'genatsvale' (dear), with and without their letters' marks; then those of other
+    # languages no part had yet (Latvian, Estonian, Armenian, Azerbaijani, Serbian and Croatian,
+    # Polish, Russian, Bulgarian, Scandinavian, Dutch, Korean, Burmese, Nepali, Bengali, Punjabi,
+    # Hausa, Igbo, Zulu, Xhosa, Hawaiian, Hebrew, Arabic, Turkish, Portuguese, Spanish)
+    r"gamarjoba(?:t)?|(?:didi )?madloba|genatsvale|nakhvamdis|"
+    r"labas(?: rytas| vakaras)?|laba diena|ačiū(?: labai)?|aciu(?: labai)?|"
+    r"tena yistilign|tena yistiligne|tena yistilgn|selam(?: new)?|"
+    r"(?:betam )?(?:ameseginalehu|amesegnalehu|ameseginalew)|"
+    r"ayubowan|(?:bohoma )?(?:sthuthi|sthuthiy|stuthi|isthuthi|istuti)|"
+    r"labdien|paldies|sveiki|tere|aitäh|aitah|tänan|tanan|barev(?: dzez)?|shnorhakalutyun|"
+    r"sağ ?ol|sag ?ol|çox sağ ?ol|chox sag ?ol|hvala(?: lijepa| puno| vam)?|zdravo|dobar dan|"
+    r"dzień dobry|dzien dobry|cześć|czesc|dziękuję|privet|zdravstvuyte|blagodaryu|blagodarya|"
+    r"tack(?: så mycket| sa mycket)?|takk|tusen takk|mange tak|hej|hei|dank je(?: wel)?|"
+    r"dank u(?: wel)?|bedankt|goedemorgen|goedemiddag|annyeonghaseyo|annyeong|kamsahamnida|"
+    r"gamsahamnida|gomawo|mingalaba|mingalarba|dhanyabad|dhonnobad|nomoskar|sat sri akal|"
+    r"sannu|na gode|daalu|ndewo|ngiyabonga|siyabonga|enkosi|mahalo(?: nui)?|aloha|toda raba|"
+    r"marhaba|ahlan(?: wa sahlan)?|teşekkür ederim|tesekkur ederim|olá|bom dia|"
+    r"buenos (?:días|dias)|buenas tardes|muchas gracias|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -7027,6 +7055,16 @@ _COURTESY_STRETCH24 = re.compile(
 )
 
 
+def _unmarked27(words: str) -> str:
+    """``words`` as typed without their letters' marks ('Ačiū' → 'Aciu'; a letter with no
+    unmarked form becomes 'x'): the lexer reads English letters only, and would read 'Ačiū' as
+    'A', 'č', 'iū' — a scene's 'A' (session 27)."""
+    if words.isascii():
+        return words
+    plain = "".join(c for c in unicodedata.normalize("NFKD", words) if not unicodedata.combining(c))
+    return "".join(c if c.isascii() or not c.isalpha() else "x" for c in plain)
+
+
 def _courtesy24(text: str, lexicon: Lexicon) -> str:
     """Session 24: stretches of greetings, thanks, blessings and polite particles of other
     languages ("Sawasdee krap.", "…, asante.", "Habari, …", "Amen to that.", "Diakuiu, thank you
@@ -7036,7 +7074,7 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
     drop = [
-        bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(c, lexicon)
+        bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(_unmarked27(c), lexicon)
         for c in chunks
     ]
     if not any(drop):
@@ -7056,9 +7094,18 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
 # 'please' (Indonesian 'tolong', 'bisa tolong' = could you please; Persian 'lotfan'; German
 # 'bitte'; Spanish 'por favor') and 'sorry' (Persian 'bebakhshid', Indonesian 'maaf'); and a
 # title of respect before a scene person's name (Indonesian 'Bu' / 'Ibu', 'Pak' / 'Bapak', 'Mas',
-# 'Mbak')
+# 'Mbak'). Session 27: 'please' of Lithuanian (prašau, prašom), Georgian (gtkhovt), Amharic
+# (ebakih, ebakish, ebakachihu), Sinhala (karunakarala), Latvian (lūdzu), Estonian (palun),
+# Polish (proszę), Serbian and Croatian (molim), Dutch (alstublieft, alsjeblieft), Turkish
+# (lütfen), Russian (pozhaluysta), Greek (parakalo), Swahili (tafadhali), Hindi (kripya), French
+# (s'il vous plaît), Italian (per favore), Japanese (onegaishimasu) — never where the scene
+# names someone or something by that word (_translated25)
 _PLEASE25 = re.compile(
-    r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog)(?!\w)", _F
+    r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog|"
+    r"prašau|prasau|prašom|prasom|gtkhovt|ebakih|ebakish|ebakachihu|karunakarala|lūdzu|ludzu|"
+    r"palun|proszę|prosze|molim|alstublieft|alsjeblieft|lütfen|lutfen|pozhaluysta|pozhaluista|"
+    r"parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu)(?!\w)",
+    _F,
 )
 _SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)
 # Jamaican English / Patois words for English function words ('di bottle' = the bottle, 'fi Bob'
@@ -7093,7 +7140,7 @@ def _translated25(text: str, lexicon: Lexicon) -> str:
     to Bu Priya, then the notepad to Mas Sam"), as 'Mr' would be when the scene does not say
     it."""
     if _PLEASE25.search(text):
-        text = _PLEASE25.sub("please", text)
+        text = _PLEASE25.sub(lambda m: m[0] if _names(m[0], lexicon) else "please", text)
     if _SORRY25.search(text):
         text = _SORRY25.sub("sorry", text)
     if _PATOIS_WORD25.search(text):
@@ -9001,6 +9048,213 @@ def _that_there27r(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
+
+
+# where a placement's surface keeps the object, said after the surface ("… up on the shelf, out
+# of the dog's reach", "… on the shelf out of reach and …"): why, not where
+_OUT_OF_REACH27 = re.compile(
+    r"(?:\s*,\s*|\s+)(?:well |safely |right )?out of (?:reach(?: of (?:the |a |an |his |her |"
+    r"their |our |my |your )?[a-z]+)?|harm's way|(?:the |his |her |their |our |my |your )?"
+    r"(?:[a-z]+(?:'s|s'|') )?(?:reach|way))(?=\s*(?:[,.;!?]|$|and\b|then\b))",
+    _F,
+)
+
+
+def _out_of_reach27(text: str, lexicon: Lexicon) -> str:
+    """Session 27: 'out of (the dog's) reach' / 'out of the way' right after a surface of the
+    scene ("Pop the crisps up on the shelf, out of the dog's reach") says why the object goes
+    there: taken off when it names nothing. After anything else ("Put the crisps out of reach",
+    "the bottle, out of the way") it is left, and refused: it would be the only place said."""
+    if "out of" not in text.lower():
+        return text
+
+    def cut(m: re.Match[str]) -> str:
+        before = m.string[: m.start()]
+        words = " ".join(re.split(r"[.;!?,]\s", before)[-1].split()[-3:])
+        said = _names(words, lexicon)
+        on_surface = (
+            bool(said)
+            and before.lower().endswith(said[-1].text.lower())
+            and all(r.kind == "surface" for r in said[-1].refs)
+        )
+        return "" if on_surface and _names_nothing(m[0], lexicon) else m[0]
+
+    return _OUT_OF_REACH27.sub(cut, text)
+
+
+# The verb said last (Amharic, Turkish, Japanese, Korean, Hindi word order): "Person B the chips
+# give", "the chips on the shelf put"; and 'to' + a pronoun before the object ("you give to him
+# the bottle"). Each clause is read in the English order only when its words are exactly a person
+# (or a surface after on/onto/in), the objects, and a verb of the grammar's tasks: nothing else.
+_LAST_VERB27 = r"(give|hand|pass|bring|deliver|put|place|set|leave)"
+_OBJECT_NP27 = r"(?:the|a|an|that|this|those|these|both|both the|my|his|her|their) [a-z][a-z -]*?"
+
+
+def _verb_last27(text: str, lexicon: Lexicon) -> str:
+    """Session 27: a clause (between marks, after an optional 'please' / 'you') whose verb comes
+    last: '<person> <objects> give' → 'give <person> <objects>'; '<objects> on <surface> put'
+    → 'put <objects> on <surface>'; and 'give to him/her/them <objects>' → 'give him/her/them
+    <objects>'. The person must be one of the scene's, whole; the objects must name objects and
+    nothing else; a word left over leaves the clause as it is."""
+    low = text.lower()
+    if not re.search(rf"\b{_LAST_VERB27}\b", low):
+        return text
+    out = _sub(
+        rf"\b(give|hand|pass|bring) to (him|her|them) ({_OBJECT_NP27})(?=\s*(?:[,.;!?]|$))",
+        lambda m: f"{m[1]} {m[2]} {m[3]}" if _objects_only(m[3], lexicon) else m[0],
+        text,
+    )
+
+    def person_first(m: re.Match[str]) -> str:
+        who, what, verb = m["who"], m["what"], m["verb"]
+        if verb.lower() in ("put", "place", "set", "leave"):
+            return m[0]
+        if not _person_at(who, lexicon) or _names(who, lexicon)[0].text.lower() != who.lower():
+            return m[0]
+        if not _objects_only(what, lexicon) or len(_names(who, lexicon)) != 1:
+            return m[0]
+        return f"{m['lead']}{verb} {who} {what}"
+
+    out = _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:please,?\s+)?(?:you\s+)?)(?P<who>(?:person [a-z]|"
+        r"(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<what>" + _OBJECT_NP27 + r") "
+        r"(?P<verb>give|hand|pass|bring)(?=\s*(?:please\s*)?(?:[,.;!?]|$))",
+        person_first,
+        out,
+    )
+
+    def placed_first(m: re.Match[str]) -> str:
+        what, where = m["what"], m["where"]
+        if not _objects_only(what, lexicon) or not _surface_only(where, lexicon):
+            return m[0]
+        return f"{m['lead']}{m['verb']} {what} {m['prep']} {where}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:please,?\s+)?(?:you\s+)?)(?P<what>" + _OBJECT_NP27 + r")"
+        r" (?P<prep>on|onto|on to|in|into) (?P<where>the [a-z][a-z ]*?) "
+        r"(?P<verb>put|place|set|leave)(?=\s*(?:please\s*)?(?:[,.;!?]|$))",
+        placed_first,
+        out,
+    )
+
+
+# A description of objects, then the list of the objects it describes ("The two drinks, bottle
+# and cup, go to Person B", "The two things cluttering the floor, the bottle and the crisps, up
+# on the shelf", "Hand over both items, chips and bottle alike, to Person B"; "Anything edible
+# goes to Person B, so that's the apple and the chips"): the list is what the speaker means, and
+# it stands for the description. The description must count as many objects as the list names
+# ('two', 'both', 'all three'), or, said as 'anything / everything <word>', be followed by
+# "so that's" / "that is" / "namely" and the list; where it names objects of the scene itself
+# ('both mugs'), the list must name the same ones. The list names only objects, one per item.
+_COUNT27 = {"both": 2, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "2": 2, "3": 3}
+_DESC_HELD27 = frozenset(
+    {
+        *("not", "n't", "except", "but", "or", "nor", "one", "ones", "each", "other", "only"),
+        *("just", "some", "either", "neither", "no", "none", "and", "then", "first", "last"),
+        *("me", "him", "her", "them", "it", "us", "for", "to", "on", "onto", "into", "in"),
+        *("besides", "without", "apart", "instead", "rest", "else", "more", "less", "than"),
+    }
+)
+
+
+_PROPERTIES27 = frozenset(
+    {
+        *("red", "blue", "green", "white", "black", "grey", "gray", "yellow", "orange", "pink"),
+        *("purple", "brown", "big", "small", "large", "medium", "little", "tall", "short"),
+    }
+)
+
+
+def _listed_items27(words: str, lexicon: Lexicon) -> list[str] | None:
+    """The object ids ``words`` lists, one per item ('bottle and cup', 'the bottle, the cup and
+    the apple'), or None when an item names anything else or more or less than one object."""
+    items = [w for w in re.split(r"\s*,\s*|\s+and\s+", words.strip()) if w]
+    out: list[str] = []
+    for item in items:
+        if not re.fullmatch(r"(?:the |a |an |that |this )?[a-z][a-z -]*", item, _F):
+            return None
+        said = _names(item, lexicon)
+        if len(said) != 1 or len(said[0].refs) != 1 or said[0].refs[0].kind != "object":
+            return None
+        if not item.lower().endswith(said[0].text.lower()):
+            return None
+        out.append(said[0].refs[0].id)
+    return out if len(out) == len(set(out)) and len(out) >= 2 else None
+
+
+def _describes27(desc: str, ids: list[str], lexicon: Lexicon, *, restated: bool) -> bool:
+    """Whether the description ``desc`` may stand for the listed objects ``ids``."""
+    words = re.findall(r"[a-z0-9']+", desc.lower())
+    if not words or any(w in _DESC_HELD27 or w.endswith("n't") for w in words):
+        return False
+    # 'things', 'items', 'objects' name every object: the count says how many are meant
+    desc = re.sub(r"\b(?:things?|items?|objects?|bits?|stuff)\b", "", desc, flags=_F)
+    named = _ids(desc, lexicon)
+    if named and named != set(ids):
+        return False
+    if named and not all(r.kind == "object" for it in _names(desc, lexicon) for r in it.refs):
+        return False
+    for w in words:
+        # a property the description gives ('everything red', 'the two big things') must be
+        # one each listed object has by its name in the scene; one the scene cannot check
+        # ('edible', 'heavy') is the list's to say
+        if w in _adjectives(lexicon) or w in _PROPERTIES27:
+            for oid in ids:
+                obj = next(o for o in lexicon.scene.objects if o.id == oid)
+                if not any(n.lower().startswith(w + " ") for n in (*obj.aliases, obj.id)):
+                    return False
+    counts = [_COUNT27[w] for w in words if w in _COUNT27]
+    if counts:
+        return len(set(counts)) == 1 and counts[0] == len(ids)
+    return restated and words[0] in ("anything", "everything", "all")
+
+
+_ITEM27 = r"(?:(?:the|a|an) )?[a-z]+(?: (?!alike\b|both\b|too\b)[a-z]+)?"
+_LIST27 = rf"(?P<list>{_ITEM27}(?:(?:,\s*| and ){_ITEM27}){{1,4}})"
+
+
+def _described_list27(text: str, lexicon: Lexicon) -> str:
+    """Session 27: a description of objects followed by the list of them, the list standing for
+    it (above): '<desc>, <list>(alike)?, <rest>' at the start of a sentence or after a verb of
+    handing, and '<desc> <verb phrase>, so that's <list>' at the start of a sentence."""
+    low = text.lower()
+    if not any(w in low for w in ("two", "three", "four", "five", "six", "both", "that")):
+        return text
+
+    def apposed(m: re.Match[str]) -> str:
+        ids = _listed_items27(m["list"], lexicon)
+        if ids is None or not _describes27(m["desc"], ids, lexicon, restated=False):
+            return m[0]
+        return f"{m['lead']}{m['list']} "
+
+    out = _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?])\s*)(?:(?:give|hand over|hand|pass|bring|put|stick|pop|"
+        r"take) )?)(?P<desc>(?:the |all |both |all the |both the |all of the |all (?:two|three|"
+        r"four|five|six) |those |these )?(?:(?:two|three|four|five|six) )?[a-z]+s\b[a-z' ]*?)"
+        r",\s*" + _LIST27 + r"(?: alike| both| too)?,\s*",
+        apposed,
+        text,
+    )
+
+    def restated(m: re.Match[str]) -> str:
+        ids = _listed_items27(m["list"], lexicon)
+        if ids is None or not _describes27(m["desc"], ids, lexicon, restated=True):
+            return m[0]
+        verb = re.sub(r"^goes\b", "go", m["verb"], flags=_F)
+        return f"{m['lead']}{m['list']} {verb}{m['end']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?])\s*))(?P<desc>(?:anything|everything|all the [a-z]+s) "
+        r"[a-z]+) (?P<verb>(?:go|goes|should go|can go) (?:to|on|onto|in|into) [a-z][a-z ]*?),\s*"
+        r"(?:so,? )?(?:that's|that is|those are|that means|i\.e\.,?|namely|meaning)\s+"
+        + _LIST27
+        + r"(?P<end>\s*(?:[,.;!?]|$))",
+        restated,
+        out,
+    )
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -9178,4 +9432,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _headed26,
     _corrected_first26,
     _everything26s,
+    _out_of_reach27,
+    _verb_last27,
+    _described_list27,
 )
