@@ -98,7 +98,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who changed the grounder before its one measurement at the end of session 25;
 # tuned on in session 26), blind25 (written in session 26 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
-# its one measurement at the end of session 26; tuned on in session 27).
+# its one measurement at the end of session 26; tuned on in session 27), blind26 (written in
+# session 27 by another engineer and committed alone, never opened by the engineers who changed
+# the grounder before its one measurement at the end of session 27; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -141,6 +143,7 @@ PARTS = (
     "blind23",
     "blind24",
     "blind25",
+    "blind26",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -7437,35 +7437,12 @@ def _made_it26(text: str, lexicon: Lexicon) -> str:
 
 
 def _choices26(text: str, lexicon: Lexicon) -> str:
-    """Choices said another way: 'any way round' / 'any which way' (either way round); 'One of the
-    two, the cup or the bottle, …' (the cup or the bottle, …: the two are named after it); 'Either
-    thing (will do) for P, X or Y' (X or Y for P) and 'the cup or the bottle will do for P' (… for
-    P); 'The pair of them, bottle and chips, …' / 'Both of them, …' (both, …)."""
+    """Choices said another way: 'any way round' / 'any which way' (either way round); 'The pair
+    of them, bottle and chips, …' / 'Both of them, …' (both, …); 'both drinks, the cup and the
+    bottle' (the cup and the bottle). (A choice opener before its list, 'One of the two, the cup
+    or the bottle, …', 'Either thing will do for P, X or Y', is _choice_listed26s.)"""
     out = _sub(
         r"\bany (?:which )?way(?: round| around)?(?=\s*(?:[,.;!?]|$))", "either way round", text
-    )
-
-    def two(m: re.Match[str]) -> str:
-        if len(_objects_listed(m.group(1), lexicon)) != 2:
-            return m.group(0)
-        return m.group(1)
-
-    out = _sub(r"^(?:one|either) of the two,\s*(the [a-z ]+? or the [a-z ]+?)(?=,)", two, out)
-    out = _sub(r"^((?:the )?[a-z]+ or (?:the )?[a-z]+) will do for\b", r"\1 for", out)
-
-    def chosen(m: re.Match[str]) -> str:
-        if len(_objects_listed(m.group(3), lexicon)) != 2:
-            return m.group(0)
-        if _one_name(m.group(2), lexicon, "human") is None:
-            return m.group(0)
-        return f"{m.group(3)} {m.group(1)} {m.group(2)}{m.group(4)}"
-
-    out = _sub(
-        r"^(?:either|any|one)(?: one| thing| item)?(?: will do)? (for|to) "
-        r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+),\s*((?:the )?[a-z]+ or (?:the )?[a-z]+)"
-        r"\s*([.!]?)$",
-        chosen,
-        out,
     )
 
     def described(m: re.Match[str]) -> str:
@@ -7546,61 +7523,6 @@ def _run_on_remark26(text: str, lexicon: Lexicon) -> str:
     if re.search(_JOINS26, text[: m.start()], _F):
         return text  # "… after they're there": a clause joined to the request, not a remark
     return text[: m.start()] + m.group(2)
-
-
-_PERSON26 = r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+)"
-_ANY_WAY26 = (
-    r"(?:either way round|either way around|any way round|any which way|whichever way(?: round)?|"
-    r"(?:i|we) don't mind who gets (?:what|which)|(?:it )?doesn't matter who gets (?:what|which))"
-)
-
-
-def _one_each26(text: str, lexicon: Lexicon) -> str:
-    """'P and Q, one (thing) each, the X and the Y, any way round' / '…, I don't mind who gets
-    what': P the X and Q the Y, or the other way round (two people, two objects; without a word
-    saying any way will do, 'one each' could be in the order said, so it is left)."""
-
-    def each(m: re.Match[str]) -> str:
-        p, q, x, y = m.group(1), m.group(2), m.group(3), m.group(4)
-        if _one_name(p, lexicon, "human") is None or _one_name(q, lexicon, "human") is None:
-            return m.group(0)
-        if _one_name(p, lexicon, "human") == _one_name(q, lexicon, "human"):
-            return m.group(0)
-        if len(_objects_listed(f"{x} and {y}", lexicon)) != 2:
-            return m.group(0)
-        x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
-        return f"Give {p} {x} and {q} {y}, or the other way round{m.group(5)}"
-
-    return _sub(
-        rf"^(?:give )?{_PERSON26} and {_PERSON26},?\s*(?:can have |get |each get )?"
-        r"(?:one|one thing|one item|a thing|an item) (?:each|apiece),\s*"
-        r"((?:the )?[a-z]+) and ((?:the )?[a-z]+),\s*" + _ANY_WAY26 + r"(?: you like)?\s*([.!]?)$",
-        each,
-        text,
-    )
-
-
-def _whoever26(text: str, lexicon: Lexicon) -> str:
-    """'P or Q, whoever, give one of them the X' / 'Give one of P or Q the X': the X to P or Q."""
-
-    def whoever(m: re.Match[str]) -> str:
-        if _one_name(m.group(1), lexicon, "human") is None:
-            return m.group(0)
-        if _one_name(m.group(2), lexicon, "human") is None:
-            return m.group(0)
-        return f"give {m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
-
-    out = _sub(
-        rf"^{_PERSON26} or {_PERSON26},\s*(?:whoever|whichever|either(?: one| of them)?),\s*"
-        r"(?:give|hand|pass) one of them (the [a-z ]+?)\s*([.!]?)$",
-        whoever,
-        text,
-    )
-    return _sub(
-        rf"^(?:give|hand|pass) one of {_PERSON26} or {_PERSON26} (the [a-z ]+?)\s*([.!]?)$",
-        whoever,
-        out,
-    )
 
 
 def _headed26(text: str, lexicon: Lexicon) -> str:
@@ -7690,6 +7612,14 @@ _SPEAKER_OPEN = re.compile(
 )
 # what may follow such a stretch in its sentence, still about the speaker
 _SPEAKER_MORE = re.compile(r"^(?:just|only|still|here (?:to|for)|back|off)\b", _F)
+# what such a following stretch may not hold: 'just not the blue one', 'only the one', 'just the
+# red' after the request single out or leave out what it asks for (session 27: the speaker's
+# opener had let "…, give Alice a mug, just not the blue one. Good robot." lose its exclusion)
+_SPEAKER_MORE_HELD = re.compile(
+    r"\b(?:not|no|never|none|nothing|nobody|neither|nor|without|except|but|one|ones|two|three|"
+    r"both|all|any|either|whichever|other|another|else)\b|n't\b",
+    _F,
+)
 # a warning about the speaker's own things
 _MIND_MINE = re.compile(r"^mind (?:the|my) [a-z ]+\bmy [a-z]+$", _F)
 _SPEAKER_HELD = re.compile(
@@ -7744,9 +7674,19 @@ def _speaker_stretch(
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
-        or (spoke and _SPEAKER_MORE.match(piece))
+        or (spoke and _SPEAKER_MORE.match(piece) and not _speaker_more_held(piece, lexicon))
         or (right_after and (_MIND_MINE.match(piece) or _inert_sentence(piece, lexicon)))
     )
+
+
+def _speaker_more_held(piece: str, lexicon: Lexicon) -> bool:
+    """Whether ``piece``, said after the speaker's stretch ('just …', 'only …'), could single out
+    or leave out an object: a negation, a count or a choice ('one', 'both', 'other'), or a word
+    telling the scene's objects apart ('red', 'big')."""
+    if _SPEAKER_MORE_HELD.search(piece):
+        return True
+    adjectives = _adjectives(lexicon)
+    return any(w in adjectives for w in re.findall(r"[a-z]+", piece.lower()))
 
 
 def _opener(piece: str, lexicon: Lexicon) -> bool:
@@ -8511,51 +8451,91 @@ def _free_split26s(text: str, lexicon: Lexicon) -> str:
     return rest if _a_choice26s(rest, lexicon) else text
 
 
+_PERSON26 = r"((?:person |mr |mrs |ms |miss |dr )?[a-z]+)"
+# who gets which said to be free, after two objects listed with 'and'
+_ANY_WAY26 = (
+    r"(?:either way round|either way around|any way round|any which way|whichever way(?: round)?|"
+    r"(?:i|we) don't mind who gets (?:what|which)|(?:it )?doesn't matter who gets (?:what|which))"
+)
+
+
 def _one_each26s(text: str, lexicon: Lexicon) -> str:
-    """'Lena and Mr Novak are to have one plate apiece, white or blue', 'Alice and Bob, a mug
-    each, red or blue, any way round': two people, one object of a kind each, the two objects
-    told apart by the two words after it, joined by 'or' (which one each gets is free). Read as
-    'Give the X and the Y to P and Q, one each' when that reads as the choice. (Two objects
-    listed with 'and' are session 26 engineer 12's `_one_each26`: read only with a word saying
-    any way will do.)"""
+    """Two people, one object each, who gets which free (one rule, session 27, for session 26's
+    two): 'Lena and Mr Novak are to have one plate apiece, white or blue', 'Alice and Bob, a mug
+    each, red or blue, any way round' (one object of a kind each, the two told apart by the words
+    after it joined by 'or': 'Give the X and the Y to P and Q, one each'); 'P and Q, one (thing)
+    each, the X and the Y, any way round' / '…, I don't mind who gets what' (two objects listed
+    with 'and': 'Give P the X and Q the Y, or the other way round'; without a word saying any way
+    will do, 'one each' could be in the order said, so it is left). Read only when the grammar
+    reads the result as that choice (_a_choice26s)."""
+    out = _one_kind_each26s(text, lexicon) or _one_listed_each26s(text, lexicon)
+    return out if out is not None and _a_choice26s(out, lexicon) else text
+
+
+def _one_kind_each26s(text: str, lexicon: Lexicon) -> str | None:
+    """'P and Q … one K each, X or Y': the choice said plainly, or None."""
     m = _rx(
         r"^(?:give |let )?(.+?) and (.+?)(?:,| can have| could have| get| are to have| have|"
         r" are having)? (?:one|a|an) ([a-z]+) (?:each|apiece),\s*([a-z]+) or ([a-z]+)"
         rf"(?:\s*,\s*(?:{_FREE_SPLIT26S}|{_INDIFFERENT26S}))*\s*([.!]?)$"
     ).match(text.strip())
     if m is None:
-        return text
+        return None
     first, second = m.group(1), m.group(2)
     if len(_ids(first, lexicon, "human")) != 1 or len(_ids(second, lexicon, "human")) != 1:
-        return text
+        return None
     kind = m.group(3)
     a, b = f"the {m.group(4)} {kind}", f"the {m.group(5)} {kind}"
     if len(_ids(a, lexicon, "object")) != 1 or len(_ids(b, lexicon, "object")) != 1:
-        return text
+        return None
     if _ids(a, lexicon, "object") == _ids(b, lexicon, "object"):
-        return text
-    out = f"Give {a} and {b} to {first} and {second}, one each{m.group(6)}"
-    return out if _a_choice26s(out, lexicon) else text
+        return None
+    return f"Give {a} and {b} to {first} and {second}, one each{m.group(6)}"
+
+
+def _one_listed_each26s(text: str, lexicon: Lexicon) -> str | None:
+    """'P and Q, one (thing) each, the X and the Y, any way round': the choice said plainly, or
+    None."""
+    m = _rx(
+        rf"^(?:give )?{_PERSON26} and {_PERSON26},?\s*(?:can have |get |each get )?"
+        r"(?:one|one thing|one item|a thing|an item) (?:each|apiece),\s*"
+        r"((?:the )?[a-z]+) and ((?:the )?[a-z]+),\s*" + _ANY_WAY26 + r"(?: you like)?\s*([.!]?)$"
+    ).match(text)
+    if m is None:
+        return None
+    p, q, x, y = m.group(1), m.group(2), m.group(3), m.group(4)
+    who = (_one_name(p, lexicon, "human"), _one_name(q, lexicon, "human"))
+    if None in who or who[0] == who[1]:
+        return None
+    if len(_objects_listed(f"{x} and {y}", lexicon)) != 2:
+        return None
+    x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
+    return f"Give {p} {x} and {q} {y}, or the other way round{m.group(5)}"
 
 
 def _one_of_them26s(text: str, lexicon: Lexicon) -> str:
     """'Give the bottle to one of them, Person A or Person B': 'one of them' is the people named
-    after it; 'Lena or Marco, whoever, give one of them the tongs': the people named before it.
-    Read only when the people are named and what is left reads as a choice between them."""
+    after it; 'Lena or Marco, whoever, give one of them the tongs': the people named before it;
+    'Give one of Lena or Marco the tongs': the people named after 'one of'. Read only when the
+    people are named and what is left reads as a choice between them (one rule, session 27, for
+    session 26's two)."""
+
+    def people(who: str) -> bool:
+        return bool(_ids(who, lexicon)) and _ids(who, lexicon) == _ids(who, lexicon, "human")
+
     out = text
     m = _rx(r"\bone of them,\s*([^,.!?]+? or [^,.!?]+?)(?=\s*(?:[,.!?]|$))").search(out)
-    if m is not None:
-        who = m.group(1)
-        if _ids(who, lexicon) and _ids(who, lexicon) == _ids(who, lexicon, "human"):
-            out = out[: m.start()] + who + out[m.end() :]
+    if m is not None and people(m.group(1)):
+        out = out[: m.start()] + m.group(1) + out[m.end() :]
     m = _rx(
         r"^([^,]+? or [^,]+?),\s*(?:whoever|whichever|either)(?: of them| one)?,\s*"
         r"(give|hand|pass|take|bring) one of them\b"
     ).match(out)
-    if m is not None:
-        who = m.group(1)
-        if _ids(who, lexicon) and _ids(who, lexicon) == _ids(who, lexicon, "human"):
-            out = f"{m.group(2)} {who}{out[m.end() :]}"
+    if m is not None and people(m.group(1)):
+        out = f"{m.group(2)} {m.group(1)}{out[m.end() :]}"
+    m = _rx(rf"^(give|hand|pass) one of ({_PERSON26} or {_PERSON26}) (?=the\b)").match(out)
+    if m is not None and people(m.group(2)):
+        out = f"{m.group(1)} {m.group(2)} {out[m.end() :]}"
     if out == text:
         return text
     return out if _a_choice26s(out, lexicon) else text
@@ -8566,12 +8546,14 @@ _LISTED26S = r"(?:the )?[a-z][a-z ]*?"
 
 def _choice_listed26s(text: str, lexicon: Lexicon) -> str:
     """'One of the two, the cup or the bottle, to Person B', 'Any of the food to Person B, the
-    apple or the chips', 'Either thing will do for Person B, bottle or chips': a choice opener
-    whose objects are listed with 'or' is read as that list ('the two' must count the list).
-    Read only when what is left reads as a choice."""
+    apple or the chips', 'Either thing will do for Person B, bottle or chips', 'One thing for
+    Person B, bottle or chips': a choice opener whose objects are listed with 'or' is read as
+    that list ('the two' must count the list); 'the cup or the bottle will do for Person B' (…
+    for Person B). Read only when what is left reads as a choice (one rule, session 27, for
+    session 26's two)."""
     opener = (
         r"(?:one|any|either) of (?:the|them|those)(?: (two|three|four|[a-z]+))?|"
-        r"(?:either|any) (?:thing|one|item)"
+        r"(?:either|any|one)(?: thing| one| item)?"
     )
     listed = rf"({_LISTED26S}(?: or {_LISTED26S})+)"
     m = _rx(rf"^({opener}),\s*{listed},\s*((?:to|for|on|onto|in|into) .+)$").match(text.strip())
@@ -8582,7 +8564,8 @@ def _choice_listed26s(text: str, lexicon: Lexicon) -> str:
             rf"^({opener})(?: (?:will|would) do)? ((?:to|for) [^,]+?),\s*{listed}\s*([.!]?)$"
         ).match(text.strip())
         if m is None:
-            return text
+            out = _sub(r"^((?:the )?[a-z]+ or (?:the )?[a-z]+) will do for\b", r"\1 for", text)
+            return out if out != text and _a_choice26s(out, lexicon) else text
         count, items, rest = m.group(2), m.group(4), m.group(3) + m.group(5)
     parts = re.split(r"\s+or\s+", items, flags=_F)
     named = [_ids(p, lexicon, "object") for p in parts]
@@ -9427,8 +9410,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _choices26,
     _let_go26,
     _run_on_remark26,
-    _one_each26,
-    _whoever26,
     _headed26,
     _corrected_first26,
     _everything26s,
