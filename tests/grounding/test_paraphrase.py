@@ -691,11 +691,9 @@ KNOWN_MISSES = frozenset(
         "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
         "leaf stuck to every finger.",
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Ayubowan! Kindly give the chips to Person A, no? Sthuthi.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
         "I need the bottle taken over to Bob, he's been planing that hull since first light.",
-        "Person B needs the chips and nothing else, he told me so himself.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
         "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
@@ -724,7 +722,6 @@ KNOWN_MISSES = frozenset(
         "Persoon A's been asking for the apple since her shift began.",
         "Person A says she's peckish, the chhips please.",
         "The stapller lives in the box, put it back there please.",
-        "You can give the chips to Person B, no? Sthuthi, sthuthi.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "

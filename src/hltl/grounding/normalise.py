@@ -4410,7 +4410,9 @@ _SENTENCE_HELD = re.compile(
     r"they|these|those|there|here|him|her|his|he|she|hers|theirs|mine|yours|something|anything|"
     r"everything|give|hand|pass|bring|take|put|place|want|need|keep|leave|move|send|drop|fetch|"
     r"grab|deliver|have|has|had|more|again|well|as|correction|correct|wrong|change|changed|"
-    r"mind|like|prefer|fancy|rather)\b|n't\b|\d",
+    r"mind|like|prefer|fancy|rather|"
+    # session 27: 'in between', 'meanwhile' order the steps around them
+    r"between|meanwhile|meantime|afterwards|beforehand)\b|n't\b|\d",
     _F,
 )
 # 'this' / 'that' only as a statement's subject ("I hope this is okay"), or thanked for
@@ -6660,6 +6662,11 @@ def _hedges19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",?\s*if (?:you|ye|thou) (?:please|will)\b", "", out)
     out = _sub(r"(?:^|(?<=[.!?])\s*)only if it's no (?:bother|trouble)\s*[.!]?", "", out)
     m = _rx(rf",\s*{_TAG19}\s*[?.!]*\s*$").search(out)
+    if m is None:
+        # session 27: "Kindly give the chips to Person A, no?" (the tag of Sinhala and Indian
+        # English, asking 'isn't it?'): only with its question mark, at the end ("…, no!" or
+        # "…, no, Bob" could take the request back or correct it)
+        m = _rx(r",\s*no\s*\?+\s*$").search(out)
     if m is not None and m.start() > 0:
         out = out[: m.start()] + "."
     out = _tidy19(out)
@@ -7782,6 +7789,12 @@ _ASIDES22: tuple[tuple[str, str], ...] = (
     (r"\s*,\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\s*[.!]?\s*$)", ""),
     # "…, go on", "…, go on then": urging
     (r"\s*,\s*go on(?:,? then)?(?=\s*[.!]?\s*$)", ""),
+    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end
+    (
+        r"\s*,\s*(?:he|she|they) (?:told me so|said so|told me|said as much)"
+        r"(?: (?:himself|herself|themselves|earlier|just now|this morning))?(?=\s*[.!]?\s*$)",
+        "",
+    ),
 )
 # want frames said another way (rewritten whatever they name)
 _FRAMES22: tuple[tuple[str, str], ...] = (
@@ -8117,13 +8130,17 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
 
     def just_one(m: re.Match[str]) -> str:
         noun = m.group(2)
-        single = noun[:-1] if noun.endswith("s") and _ids(noun[:-1], lexicon, "object") else noun
-        if len(_ids(single, lexicon, "object")) < 2:
+        # 'boxes' is 'box' (session 27: 'boxe' named nothing, so the plural was kept and read as
+        # every box)
+        cut = (noun[:-1], noun[:-2]) if noun.endswith("s") else ()
+        single = next((w for w in cut if _ids(w, lexicon, "object")), noun)
+        if single == noun or len(_ids(single, lexicon, "object")) < 2:
             return m.group(0)
         return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
 
     out = _sub(
-        r"^(.*?\bthe )([a-z]+)( [^,]*?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one\s*([.!]?)$",
+        r"^(.*?\bthe )([a-z]+)((?: [^,]*?)?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one"
+        r"\s*([.!]?)$",
         just_one,
         out,
     )

@@ -1865,10 +1865,31 @@ def _apply_correction(
             "whole request again"
         )
     kinds = {x.kind for x in new.refs}
+    ids = {x.id for x in new.refs}
+    alike = [
+        k
+        for k in range(start, len(before))
+        if before[k].kind == "ent" and {x.kind for x in before[k].refs} & kinds
+    ]
+    if _objects(new) and len(alike) > 1 and {x.id for x in before[alike[-1]].refs} <= ids:
+        # "the red mug and the blue mug to Alice, sorry, (just) the blue one" (from "Both mugs
+        # …"): the correction names again the last object named, beside others: it keeps only
+        # that one, or changes nothing; read as the latter it kept both (session 27): not read
+        others = sorted({x.id for k in alike for x in before[k].refs} - ids)
+        raise GroundingError(
+            f"cannot tell what {new.text!r} after {marker.text!r} corrects: it is named before, "
+            f"with {', '.join(others)}; say the whole request again"
+        )
     for k in range(len(before) - 1, start - 1, -1):
         old = before[k]
         if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
-            return [*before[:k], new, *before[k + 1 :], *after[r + 1 :]]
+            first = k
+            if k > start and len(old.refs) > 1 and _is(before[k - 1], "both"):
+                # "Both mugs to Alice, sorry, just the blue one / the cup": what replaces the two
+                # takes 'both' with them (session 27: it was refused as 'both' without 'and', and
+                # the rewrite 'the red mug and the blue mug …' then replaced the blue one alone)
+                first = k - 1
+            return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
     raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
 
 
