@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import collections
 import contextlib
+import gc
 import math
 import queue
 import random
@@ -2350,14 +2351,21 @@ def serve(
     faults: FaultModel | None = None,
     on_ready: Callable[[CellNode], None] | None = None,
     period: float | None = None,
+    freeze: bool = False,
 ) -> NodeStats:
-    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set.
+    """Serve ``scene`` until ``episodes`` episodes have ended or ``stop`` is set; with
+    ``freeze`` (a process of its own: ``hltl node sim``), its heap is frozen once the node is
+    set up (what it holds then lives as long as the process: the collector's full collections,
+    17-18 ms each in the bus benchmark's processes, no longer walk it; docs/bus.md, "Where the
+    time goes (session 27)").
 
     This thread waits without a timeout (a thread waking ten times a second takes the
     interpreter lock from the node's step thread as often: see :class:`_Inbox`); ``stop`` is
     relayed to it by a thread of its own that waits on it alone."""
     stop = threading.Event() if stop is None else stop
     with CellNode(session, scene, cell=cell, factory=factory, faults=faults, period=period) as node:
+        if freeze:
+            gc.freeze()
         if on_ready is not None:
             on_ready(node)
         wake = node.finished

@@ -137,6 +137,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help(sys.stderr)
         return EXIT_USAGE
+    args.program = program  # (a command run as the program may freeze its heap once set up)
     if not (program and args.command in FREEZE_AT_EXIT):
         return _run(args)
     try:

@@ -116,6 +116,7 @@ def run_sim(args: argparse.Namespace) -> int:
                 factory=factory,
                 on_ready=ready,
                 period=None if args.rate is None else 1.0 / args.rate,
+                freeze=getattr(args, "program", False),
             )
         except KeyboardInterrupt:
             console.print("stopped")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import sys
 from pathlib import Path
@@ -162,6 +163,12 @@ def run(args: argparse.Namespace) -> int:
     if args.bus is not None:
         bus = BusSimulator(args)
         extra["simulator"] = bus.factory
+    if getattr(args, "program", False):
+        # set up: the process's heap (modules, the scene, the grounder's tables, the bus
+        # session) lives as long as the episode, so the collector's full collections no longer
+        # walk it (docs/bus.md, "Where the time goes (session 27)"); not when called in a
+        # process that goes on (tests)
+        gc.freeze()
     try:
         episode = run_episode(
             scene,

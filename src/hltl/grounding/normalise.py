@@ -156,7 +156,7 @@ def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) ->
 # -- wrappers ----------------------------------------------------------------------------------
 
 _OPEN = r"(^|(?<=[.;!?:])\s*|(?<=,)\s*(?:and\s+)?)"
-_WRAPPERS: tuple[tuple[str, str], ...] = (
+_WRAPPERS: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     # session 11: "is to be given", "ought to" (an obligation is a request, as "should")
     (r"\b(?:is|are|was|were|am) to be\b", "should be"),
     (r"\bought to\b", "should"),
@@ -211,6 +211,12 @@ _WRAPPERS: tuple[tuple[str, str], ...] = (
     (r"\b(could|can|would|will) (?:someone|somebody|anyone|anybody)\b", r"\1 you"),
     (_OPEN + r"(?:i|we)(?:'d| would) (?:love|like|prefer) it if ", r"\1"),
     (_OPEN + r"(?:please )?see (?:to it )?that ", r"\1"),
+    # session 27 (12r): "Would it be a problem to let Person A have the cup?"
+    (
+        _OPEN + r"(?:would|will|is) it be (?:a problem|an issue|a bother|a hassle|any trouble|too "
+        r"much (?:trouble|bother|hassle)) (?:for you )?to (?:(let) )?",
+        lambda m: f"{m.group(1)}could " if m.group(2) else f"{m.group(1)}could you ",
+    ),
 )
 
 
@@ -2524,6 +2530,8 @@ _UNAPOSTROPHED = {
     "havent": "haven't",
     "arent": "aren't",
     "wasnt": "wasn't",
+    "shes": "she's",
+    "hes": "he's",
 }
 
 
@@ -3241,7 +3249,8 @@ _SAID14: tuple[tuple[str, str], ...] = (
         "make sure ",
     ),
     # "Give Priya the lot", "All of it to Priya bar the pens": everything (but)
-    (r"\bthe (?:whole )?lot\b(?! of)", "everything"),
+    # (session 27: 'of' a word, so 'the lot off you' is everything too)
+    (r"\bthe (?:whole )?lot\b(?! of\b)", "everything"),
     (r"^all of it\b", "everything"),
     (r"\b(everything|everything else)\s+bar\s+(?=the\b)", r"\1 except "),
     # "Any old pen for Sam": any pen
@@ -5364,6 +5373,7 @@ _IDIOMS18: dict[str, tuple[str, ...]] = {
     ),
     "hurry": (
         "let's (?:hustle|roll|go|move)",
+        "(?:off|away|on) you (?:go|pop)",
         "come on(?:,? come on)*(?:,? (?:let's )?move(?: it)?)?",
         "move(?: it)?",
         "chop chop",
@@ -5667,16 +5677,55 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
     )
 
     def what_needs(m: re.Match[str]) -> str:
-        if not _only_person(m.group(1), lexicon) or not _ids(m.group(2), lexicon, "object"):
+        if not _only_person(m.group(2), lexicon) or not _ids(m.group(3), lexicon, "object"):
             return m.group(0)
-        if _ids(m.group(2), lexicon, "human"):
+        if _ids(m.group(3), lexicon, "human") or re.match(r"(?:not|never|no)\b", m.group(3), _F):
+            return m.group(0)  # "what Bob needs is not the cup" says what he does not need
+        return f"{m.group(1)}{m.group(2)} needs {m.group(3)}{m.group(4)}"
+
+    # session 27 (12r): also after a comma or 'and' ("…, and what P wants is X"), and 'the one
+    # thing' / 'the only thing' / 'all' for 'what' (never 'the last thing': he does not want it)
+    out = _sub(
+        rf"{_OPEN}(?:what|the (?:one|only) thing|all) {_P} (?:really |actually |most )?(?:needs|"
+        rf"wants|could (?:really )?use|could do with|would like)(?: right now| now| most)? is "
+        rf"{_X}(\s*[,.!]|$)",
+        what_needs,
+        out,
+    )
+
+    def the_one_who(m: re.Match[str]) -> str:
+        # "Person A's the one who wants it": Person A wants it; "the one who needs the cup is
+        # Bob": Bob needs it (the person checked to be one, the object an object or it/them)
+        who, what = (m.group(2), m.group(3)) if m.group(2) else (m.group(5), m.group(4))
+        if not _only_person(who, lexicon) or _ids(what, lexicon, "human"):
             return m.group(0)
-        return f"{m.group(1)} needs {m.group(2)}{m.group(3)}"
+        if not (_ids(what, lexicon, "object") or re.fullmatch(r"it|them", what.strip(), _F)):
+            return m.group(0)
+        return f"{m.group(1)}{who} wants {what}{m.group(6)}"
 
     out = _sub(
-        rf"^what {_P} (?:really |actually |most )?(?:needs|wants|could (?:really )?use|could do "
-        rf"with|would like)(?: right now| now| most)? is {_X}(\s*[,.!]|$)",
-        what_needs,
+        rf"{_OPEN}(?:{_P}(?:'s| is) the (?:one|person) (?:who|that) (?:wants|needs|asked for) "
+        rf"{_X}|the (?:one|person) (?:who|that) (?:wants|needs|asked for) {_X} is {_P})"
+        r"(\s*[,.!?]|$)",
+        the_one_who,
+        out,
+    )
+
+    def wanted_by(m: re.Match[str]) -> str:
+        # "The bottle's wanted by Person A": Person A wants it (a passive of wanting)
+        things, who = m.group(2), m.group(3)
+        if not _only_person(who, lexicon) or not _only_kind(things, lexicon, "object"):
+            return m.group(0)
+        gap = r"^\s*,?\s*(?:and |or |but |plus |then )?(?:the |a |an )(?:(?!is |are |was )[\w ])+?"
+        gap += r" by\b"
+        if re.search(gap, m.string[m.end() :], _F):
+            return m.group(0)  # "…, and the crisps by Bob": the gap would read 'by' as a place
+        return f"{m.group(1)}{who} wants {things}"
+
+    out = _sub(
+        rf"{_OPEN}((?:the |a |an |that |this |these |those )[\w '-]+?)(?:'s| is| are) (?:wanted|"
+        rf"needed|asked for|requested) by {_P}(?=\s*(?:[,.!?]|$))",
+        wanted_by,
         out,
     )
     if low.startswith("if "):
@@ -7526,7 +7575,7 @@ def _while26(text: str, lexicon: Lexicon) -> str:
     """A closing 'while it's quiet' / 'while you're there' / 'while you're at it': when to do it,
     now, asks for nothing more (taken off when it names nothing in the scene)."""
     m = re.search(
-        r"(?:,\s*|\s+)while (?:it's|it is|you're|you are|we're|we are) ([a-z' ]+?)\s*([.!]?)$",
+        r"(?:,\s*|\s+)while (?:it's|it is|you're|you are|we're|we are) ([a-z' ]+?)\s*([.!?]?)$",
         text,
         _F,
     )
@@ -8654,6 +8703,351 @@ def _everything26s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# session 27 (12r): idioms whose words the grammar reads as something else: 'for once' ending a
+# stretch is no condition ('once') and names no one ('for'): "her hands are free for once";
+# 'since first light / first thing' is a time past, no order ('first')
+_IDIOMS27R = (
+    (re.compile(r"\s+for once\b(?=\s*(?:[,.;!?]|$))", _F), ""),
+    (re.compile(r"\bsince first (?:light|thing)\b", _F), "since dawn"),
+    # "could you see the bottle gets to Person A?": see that it does, make sure ('gets to' after
+    # the object; 'see the cup on the shelf' may be looking at it, and stays)
+    (
+        re.compile(
+            r"\b((?:could|can|will|would) you|you (?:could|can|will|would)|please) see (?:to it )?"
+            r"(?:that )?(?=(?:the|a|an|this|that|these|those|it|they|both|all)\b[^,.;!?]*? "
+            r"(?:gets|get) (?:over |across |back )?to\b)",
+            _F,
+        ),
+        r"\1 make sure ",
+    ),
+)
+
+
+def _idioms27r(text: str, lexicon: Lexicon) -> str:
+    for pattern, repl in _IDIOMS27R:
+        text = pattern.sub(repl, text)
+    return text
+
+
+def _both_for27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'the cup and the apple, both for Bob' is both to Bob (one person);
+    'bottle first then the apple, both for person b' is each to that person, in that order (two
+    objects, then one person or, with 'on', one surface)."""
+    if "both" not in text.lower():
+        return text
+
+    def ordered(m: re.Match[str]) -> str:
+        first, second, prep, target = m.groups()
+        things = all(_only_kind(x, lexicon, "object") for x in (first, second))
+        to = prep.lower() in ("to", "for")
+        if not things or not (
+            _only_person(target, lexicon) if to else _only(target, lexicon, "surface")
+        ):
+            return m.group(0)
+        prep = "to" if to else prep
+        return f"{first} {prep} {target}, then {second} {prep} {target}"
+
+    text = _sub(
+        r"^((?:the )?[\w ]+?)(?: first)?,? then (the [\w ]+?),? both (to|for|on|onto) "
+        r"([\w ]+?)(?=\s*(?:[.!,]|$))",
+        ordered,
+        text,
+    )
+
+    def for_person(m: re.Match[str]) -> str:
+        return f", both to {m.group(1)}" if _only_person(m.group(1), lexicon) else m.group(0)
+
+    return _sub(r",\s*both for ([\w ]+?)(?=\s*(?:[.!?,]|$))", for_person, text)
+
+
+_INCLUDED27R = re.compile(
+    r",\s*(?:(?:and )?(?:the )?([\w ]+?) included|including (?:the )?([\w ]+?))(?=\s*(?:[.!]|$))",
+    _F,
+)
+
+
+def _included27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): '…, the big one included' / '…, including the big box' says again that
+    an object the request moves is among them: taken off only when what is left, read alone,
+    already moves exactly that object (one object, by name or as 'the <word> one' of a kind the
+    request moves); 'all three of the boxes' before it is 'the three boxes'."""
+    m = _INCLUDED27R.search(text) if "includ" in text.lower() else None
+    if m is None:
+        return text
+    text = _all_of27r(text, lexicon)
+    m = _INCLUDED27R.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + text[m.end() :]
+    moved = _tasks_of(rest, lexicon)
+    if not moved:
+        return text
+    objs = {obj for _, obj, _ in moved}
+    said = (m.group(1) or m.group(2)).strip()
+    if said.lower().endswith(" one"):
+        kinds = {o.category for o in lexicon.scene.objects if o.id in objs}
+        word = said[: -len(" one")]
+        named = {i for c in kinds for i in _ids(f"{word} {c}", lexicon, "object")}
+    elif _only_kind(said, lexicon, "object"):
+        named = _ids(said, lexicon, "object")
+    else:
+        return text
+    return rest if len(named) == 1 and named <= objs else text
+
+
+# a predicate simile in a remark: "her throat's (as) dry as dust", "he's as tired as a dog"
+_SIMILE27R = re.compile(
+    r"\b('s|is|are|was|were|feels|looks|seems) (?:as )?([a-z]+) as (?:a |an )?([a-z]+)\b"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# 'as … as' that measures or compares what is asked ('as soon as', 'as close as you can', 'same
+# as Bob'): never a simile
+_NOT_SIMILE27R = frozenset(
+    {
+        *("well", "soon", "long", "much", "many", "far", "near", "close", "quick", "quickly"),
+        *("fast", "same", "possible", "usual", "ever", "always", "before", "agreed", "planned"),
+        *("requested", "asked", "said", "you", "i", "he", "she", "it", "they", "we", "me"),
+        *("him", "her", "them", "us", "one", "ones", "this", "that", "these", "those", "yesterday"),
+    }
+)
+# "Doesn't matter to me if it's Person A or Person B that ends up with the chips"
+_EITHER_PERSON27R = re.compile(
+    rf"^(?:(?:it )?(?:doesn't|does not|won't|will not) matter(?: to me| to us)?(?: at all)?|"
+    rf"(?:i|we) (?:don't|do not) mind) (?:if|whether) it's {_P} or {_P} (?:that|who) "
+    rf"(?:ends up with|gets|has|takes|receives) "
+    rf"{_X}(\s*[.!]|$)",
+    _F,
+)
+
+
+# "Noah or Zoe, whichever student's free, give them the globe"
+_WHICHEVER_FREE27R = re.compile(
+    rf"^{_P} or {_P},\s*(?:whichever|whoever)( [a-z]+(?: of them)?)?(?:'s| is) (?:free|nearer|"
+    rf"closer|nearest|closest|available|less busy)\s*,\s*(give|hand|pass|bring|take) them "
+    rf"{_X}(\s*[.!]|$)",
+    _F,
+)
+
+
+def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
+    """'P or Q, whichever <noun> is free, give them X': 'give X to P or Q, whichever is free'
+    (two different people; the noun, if any, 'one' / 'person' / 'of them' or a name both share;
+    X one name of objects); else None."""
+    first, second, noun, verb, things, end = m.groups()
+    one, two = _ids(first, lexicon, "human"), _ids(second, lexicon, "human")
+    if not (_only_person(first, lexicon) and _only_person(second, lexicon)) or one == two:
+        return None
+    word = (noun or "").strip().lower().removesuffix(" of them").strip()
+    if word and word not in ("one", "person") and not one | two <= _ids(word, lexicon, "human"):
+        return None
+    if not _only_kind(things, lexicon, "object"):
+        return None
+    return f"{verb} {things} to {first} or {second}, whichever is free{end}"
+
+
+# "Can you get the medium box stacked on the pallet?": the causative 'get X done'
+_GOT_DONE27R = (
+    r"\bget ((?:the |both |all the |all of the )[\w ]+?) (stacked|put|placed|set|stored|moved|"
+    r"taken|brought|sent|delivered|handed|passed|given) (?=(?:over |across |back )?(?:on|onto|in|"
+    r"into|to)\b)"
+)
+
+
+def _got_done27r(m: re.Match[str], lexicon: Lexicon) -> str:
+    """'get X stacked on S' is 'stack X on S', 'get X taken to P' 'take X to P' (X one name of
+    objects, or 'both / all the' them)."""
+    things = re.sub(r"^(?:both|all the|all of the) ", "the ", m.group(1), flags=_F)
+    if not _only_kind(things, lexicon, "object"):
+        return m.group(0)
+    verb = {"stacked": "stack", "set": "set", "stored": "store"}.get(m.group(2).lower())
+    return f"{verb or _PARTICIPLES[m.group(2).lower()]} {m.group(1)} "
+
+
+# "Every box that isn't already on the pallet, put it on." / "Put every box that isn't on the
+# pallet on the conveyor."
+_NOT_ON27R = re.compile(
+    r"^(?:(?:put|stick|pop|place|move|set) )?(?:every|each|all the|all of the|the) ([a-z]+) that "
+    r"(?:isn't|aren't|is not|are not) (?:already |yet )?(?:on|in) (?:the )?([a-z ]+?)(?:,\s*"
+    r"(?:put|stick|pop|place|move|set) (?:it|them)(?: (?:on|onto|in|into)(?: (?:the )?([a-z ]+?))?"
+    r")?| (?:on|onto|in|into) (?:the )?([a-z ]+?))\s*([.!]?)$",
+    _F,
+)
+
+
+def _not_on27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
+    """'every X that isn't (already) on S, put it on (S2)' / 'put every X that isn't on S on S2':
+    the Xs of the scene that do not start on S, each put on S2 (S when none is said); None when
+    the kind or a surface is not one name, or no X is left."""
+    noun, where, then, onto, end = m.groups()
+    kinds = {noun.lower(), _singular(noun.lower())}
+    of_kind = {o.id for o in lexicon.scene.objects if o.category.lower() in kinds}
+    surface = _ids(where, lexicon, "surface")
+    target = _ids(then or onto or where, lexicon, "surface")
+    if not of_kind or len(surface) != 1 or len(target) != 1:
+        return None
+    if not (_only(where, lexicon, "surface") and _only(then or onto or where, lexicon, "surface")):
+        return None
+    on = set(starting_on(of_kind, next(iter(surface)), lexicon))
+    left = [f"the {_said(o.id, lexicon)}" for o in lexicon.scene.objects if o.id in of_kind - on]
+    if not left:
+        return None
+    things = left[0] if len(left) == 1 else f"{', '.join(left[:-1])} and {left[-1]}"
+    surface_name = (then or onto or where).strip()
+    return f"put {things} on the {surface_name.removeprefix('the ')}{end}"
+
+
+def _all_for27r(text: str, lexicon: Lexicon) -> str:
+    """'Teddy to Lily. Then the bib. Then the sippy cup, all for Lily.': 'all for / to P' closing
+    the instruction gives every object named to P; taken only when no other person and no
+    surface is named, two objects at least are, and what is left with 'for P' reads as each of
+    them handed to P."""
+    m = re.search(r",\s*all (?:of them |of it )?(?:for|to) ([\w ]+?)\s*([.!]?)$", text, _F)
+    if m is None or not _only_person(m.group(1), lexicon):
+        return text
+    who = _ids(m.group(1), lexicon, "human")
+    said = _names(text, lexicon)
+    if any(
+        r.kind == "surface" or (r.kind == "human" and r.id not in who)
+        for it in said
+        for r in it.refs
+    ):
+        return text
+    objs = _ids(text, lexicon, "object")
+    if len(objs) < 2:
+        return text
+    out = f"{text[: m.start()]}, for {m.group(1)}{m.group(2)}"
+    moved = _tasks_of(out, lexicon)
+    if moved is None or moved != {("deliver", o, next(iter(who))) for o in objs}:
+        return text
+    return out
+
+
+def _alongside27r(text: str, lexicon: Lexicon) -> str:
+    """'Small box onto the pallet, and the medium one alongside it': next to what was put on the
+    one surface named before, so on that surface (no person named anywhere: 'next to it' after
+    a hand-over says no place)."""
+    m = re.search(r"\b(?:alongside|next to|beside) (?:it|them)(?=\s*(?:[,.;!?]|$))", text, _F)
+    if m is None or _ids(text, lexicon, "human"):
+        return text
+    before = text[: m.start()]
+    said = [it for it in _names(before, lexicon) if it.refs[0].kind == "surface"]
+    if len({r.id for it in said for r in it.refs}) != 1:
+        return text
+    if not re.search(rf"\b(?:on|onto|in|into) (?:the )?{re.escape(said[-1].text)}\b", before, _F):
+        return text
+    return f"{before}on the {said[-1].text}{text[m.end() :]}"
+
+
+def _said_aside27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r), what is said around a request that asks for nothing more:
+
+    - a predicate simile ('her throat's dry as dust', 'he's as tired as a dog'): the comparison
+      is taken off ("her throat's dry"), the noun compared to naming nothing in the scene and
+      neither word one that measures or compares ('as soon as', 'as close as you can', 'same as
+      Bob');
+    - the speaker's indifference between two people: "Doesn't matter to me if it's P or Q that
+      ends up with X", "I don't mind whether it's P or Q who gets X" is 'X to P or Q' (two
+      people, X objects only);
+    - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
+      name of objects);
+    - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r);
+    - 'P or Q, whichever <noun> is free, give them X' (_whichever_free27r);
+    - the causative 'get X stacked on S' (_got_done27r);
+    - a deadline 'before the driver's / she's / he gets back': acting now meets it (someone
+      coming back, never an object);
+    - 'X, then Y, all for P' (_all_for27r);
+    - 'every X that isn't (already) on S, put it on' (_not_on27r): the Xs not starting on S."""
+    low = text.lower()
+    if " as " in low:
+
+        def simile(m: re.Match[str]) -> str:
+            adj, noun = m.group(2).lower(), m.group(3).lower()
+            if adj in _NOT_SIMILE27R or noun in _NOT_SIMILE27R:
+                return m.group(0)
+            if lexicon.lookup(noun) is not None or not _names_nothing(m.group(0), lexicon):
+                return m.group(0)
+            return f"{m.group(1)} {m.group(2)}"
+
+        text = _SIMILE27R.sub(simile, text)
+    if "matter" in low or "mind" in low:
+        m = _EITHER_PERSON27R.match(text)
+        if (
+            m is not None
+            and _only_person(m.group(1), lexicon)
+            and _only_person(m.group(2), lexicon)
+            and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
+            and _only_kind(m.group(3), lexicon, "object")
+        ):
+            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+    if "whichever" in low or "whoever" in low:
+        m = _WHICHEVER_FREE27R.match(text)
+        if m is not None:
+            text = _whichever_free27r(m, lexicon) or text
+    if "that is" in low or "that are" in low or "that isn't" in low or "that aren't" in low:
+        m = _NOT_ON27R.match(text)
+        if m is not None:
+            text = _not_on27r(m, lexicon) or text
+    if " back" in low and "before" in low:
+
+        def deadline(m: re.Match[str]) -> str:
+            said = _ids(m.group(1), lexicon)
+            if said - _ids(m.group(1), lexicon, "human"):
+                return m.group(0)  # "before the cup's back": an object, a task of its own
+            return ""
+
+        text = _sub(
+            r"\s+before (?:the |my |our |his |her |their )?([\w]+(?: [\w]+)?)(?:'s| is| are|'re|"
+            r" gets| get| comes| come) back(?=\s*(?:[.!?,]|$))",
+            deadline,
+            text,
+        )
+    if "all " in low:
+        text = _all_for27r(text, lexicon)
+    if re.search(r"\b(?:get|got)\b", low):
+        text = _sub(_GOT_DONE27R, lambda m: _got_done27r(m, lexicon), text)
+    if re.search(r"\b(?:alongside|next to|beside)\b", low):
+        text = _alongside27r(text, lexicon)
+    if " too" in low or " as well" in low:
+
+        def again(m: re.Match[str]) -> str:
+            if not _only_kind(m.group(2), lexicon, "object"):
+                return m.group(0)
+            return f"{m.group(1)}{m.group(2)} {m.group(3)}"
+
+        text = _sub(
+            r"(^|(?<=[.!?])\s+|\band )((?:the )?[\w ]+?),\s*(?:them|it) (too|as well)\b",
+            again,
+            text,
+        )
+    return text
+
+
+def _all_of27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'all three of the boxes' is 'the three boxes' (the count still checked
+    against the scene). Last of the rewrites: 'All three of the pens, black, blue and red, …' is
+    read by session 19's counts first."""
+    return _sub(
+        r"\ball (two|three|four|five|six|seven|eight|nine|ten|\d+) of the\b", r"the \1", text
+    )
+
+
+def _that_there27r(text: str, lexicon: Lexicon) -> str:
+    """Session 27 (12r): 'That bottle there, Person A needs it …': a sentence opening on 'that /
+    this X there / here' and a comma points at X; 'there' names no place (one object only)."""
+
+    def pointed(m: re.Match[str]) -> str:
+        if not _only_kind(m.group(3), lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)} {m.group(3)},"
+
+    return _sub(
+        r"(^|(?<=[.!?])\s+)(that|this) ([\w ]+?) (?:right )?(?:there|here)\s*,",
+        pointed,
+        text,
+    )
+
+
 # -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
 
 
@@ -8985,10 +9379,16 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _one_of_them26s,
     _choice_listed26s,
     _nobody_else26s,
+    _all_of27r,
 )
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _idioms27r,
+    _both_for27r,
+    _included27r,
+    _that_there27r,
+    _said_aside27r,
     _translated25,
     _address_after26r,
     _courtesy24,

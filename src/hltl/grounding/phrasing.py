@@ -399,6 +399,8 @@ _REMARK_VERBS = frozenset(
         "asks",
         "thinks",
         "thought",
+        "reckons",
+        "reckoned",
         "knows",
         "feels",
         "felt",
@@ -477,6 +479,7 @@ def _remark_words(words: list[Item], lexicon: Lexicon, said: set[str], *, reason
         "them",
         "and",
         "num",
+        "with",  # session 27: "she needs something to write with" (no name: nothing moved)
     )
     for n, x in enumerate(words):
         nxt = words[n + 1] if n + 1 < len(words) else None
