@@ -9147,7 +9147,7 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
 # ('two', 'both', 'all three'), or, said as 'anything / everything <word>', be followed by
 # "so that's" / "that is" / "namely" and the list; where it names objects of the scene itself
 # ('both mugs'), the list must name the same ones. The list names only objects, one per item.
-_COUNT27 = {"both": 2, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "2": 2, "3": 3}
+_COUNT27 = {w: n for w, n in _NUMBERS15.items() if n > 1} | {"2": 2, "3": 3}  # not "one"
 _DESC_HELD27 = frozenset(
     {
         *("not", "n't", "except", "but", "or", "nor", "one", "ones", "each", "other", "only"),
@@ -9201,7 +9201,7 @@ def _describes27(desc: str, ids: list[str], lexicon: Lexicon, *, restated: bool)
         # ('edible', 'heavy') is the list's to say
         if w in _adjectives(lexicon) or w in _PROPERTIES27:
             for oid in ids:
-                obj = next(o for o in lexicon.scene.objects if o.id == oid)
+                obj = lexicon.scene.object(oid)
                 if not any(n.lower().startswith(w + " ") for n in (*obj.aliases, obj.id)):
                     return False
     counts = [_COUNT27[w] for w in words if w in _COUNT27]

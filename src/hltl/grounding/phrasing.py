@@ -1880,17 +1880,16 @@ def _apply_correction(
             f"cannot tell what {new.text!r} after {marker.text!r} corrects: it is named before, "
             f"with {', '.join(others)}; say the whole request again"
         )
-    for k in range(len(before) - 1, start - 1, -1):
-        old = before[k]
-        if old.kind == "ent" and {x.kind for x in old.refs} & kinds:
-            first = k
-            if k > start and len(old.refs) > 1 and _is(before[k - 1], "both"):
-                # "Both mugs to Alice, sorry, just the blue one / the cup": what replaces the two
-                # takes 'both' with them (session 27: it was refused as 'both' without 'and', and
-                # the rewrite 'the red mug and the blue mug …' then replaced the blue one alone)
-                first = k - 1
-            return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
-    raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+    if not alike:
+        raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
+    k = alike[-1]  # the last name of the same kind is what the correction replaces
+    first = k
+    if k > start and len(before[k].refs) > 1 and _is(before[k - 1], "both"):
+        # "Both mugs to Alice, sorry, just the blue one / the cup": what replaces the two takes
+        # 'both' with them (session 27: it was refused as 'both' without 'and', and the rewrite
+        # 'the red mug and the blue mug …' then replaced the blue one alone)
+        first = k - 1
+    return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
 
 
 def _takes_back_all(taken: list[Item], after: list[Item], moved: list[Item], marker: Item) -> None:
