@@ -8833,7 +8833,7 @@ _WHICHEVER_FREE27R = re.compile(
 def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
     """'P or Q, whichever <noun> is free, give them X': 'give X to P or Q, whichever is free'
     (two different people; the noun, if any, 'one' / 'person' / 'of them' or a name both share;
-    X one name of objects); else None."""
+    X one name of objects), what follows kept; else None."""
     first, second, noun, verb, things, end = m.groups()
     one, two = _ids(first, lexicon, "human"), _ids(second, lexicon, "human")
     if not (_only_person(first, lexicon) and _only_person(second, lexicon)) or one == two:
@@ -8843,7 +8843,9 @@ def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
         return None
     if not _only_kind(things, lexicon, "object"):
         return None
-    return f"{verb} {things} to {first} or {second}, whichever is free{end}"
+    # what follows the request is kept ("…, give them the globe. Oh, don't bother." is taken
+    # back: session 28, a wrong reading of the take-back fuzz when it was dropped)
+    return f"{verb} {things} to {first} or {second}, whichever is free{end}{m.string[m.end() :]}"
 
 
 # "Can you get the medium box stacked on the pallet?": the causative 'get X done'
@@ -8948,7 +8950,7 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
       Bob');
     - the speaker's indifference between two people: "Doesn't matter to me if it's P or Q that
       ends up with X", "I don't mind whether it's P or Q who gets X" is 'X to P or Q' (two
-      people, X objects only);
+      people, X objects only; what follows kept, session 28);
     - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
       name of objects);
     - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r);
@@ -8979,7 +8981,7 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
             and _only_kind(m.group(3), lexicon, "object")
         ):
-            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}{text[m.end() :]}"
     if "whichever" in low or "whoever" in low:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
