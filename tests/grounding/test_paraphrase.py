@@ -688,7 +688,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
-        "I need the bottle taken over to Bob, he's been planing that hull since first light.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
         "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
