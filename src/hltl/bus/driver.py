@@ -276,12 +276,12 @@ class BusCell:
             hints only).
         first: with ``foresee``, also ask the node to foresee the first step (plan it from
             the briefing or the first basis, start it on a guess, and answer with it: the
-            loop's first commands are then compared with it, not asked about). Off by default
-            since session 28: the node's plan of the first step came after the executor's own
-            (it gets the briefing later and plans no faster), so the loop waited for it
-            longer than a query with its first commands takes (docs/bus.md, "Where the time
-            goes (session 28)"). Without it, the briefing or first basis still goes at once,
-            for the node to take in (ground) while the executor grounds and plans.
+            loop's first commands are then compared with it, not asked about). ``False``:
+            the briefing or first basis still goes at once, for the node to take in (ground)
+            while the executor grounds and plans, and the first commands go in a query (the
+            node's plan of the first step comes after the executor's own; paired under load
+            in session 28, neither way measured faster: docs/bus.md, "Where the time goes
+            (session 28)").
         background: with ``foresee``, also send the executor's forecast horizon, for the node
             to make the executor's background plans for forecast worlds as it simulates ahead
             (sent with the ticks; :meth:`planned`). Off by default: measured under load it
@@ -316,7 +316,7 @@ class BusCell:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
-        first: bool = False,
+        first: bool = True,
     ) -> None:
         self.session = session
         self.first = first
@@ -1368,7 +1368,7 @@ def bus_cell(
     guess: bool = True,
     foresee: bool = True,
     background: bool = False,
-    first: bool = False,
+    first: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1402,7 +1402,7 @@ def bus_cell(
             guess=guess,
             foresee=foresee,
             **({"background": True} if background else {}),
-            **({"first": True} if first else {}),
+            **({} if first else {"first": False}),
         )
         if opened is not None:
             opened.append(c)
