@@ -807,6 +807,7 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
         return k if j == k + 2 else j
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
+    _not_by_whom(items, k, out)
     j = k + 1
     j = _past_dets(items, j)
     if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
@@ -842,6 +843,36 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
         group=-1 if single else it.group,
     )
     return j + 1
+
+
+def _not_by_whom(items: list[Item], k: int, out: list[Item]) -> None:
+    """Session 28 (12r): 'by <person>' after an object that opens a clause of no verb of its own
+    ("Carol wants the red mug, and the crisps by Bob"): where the object is (next to Bob), or who
+    wants or is given it, the verb carried over as a passive (wanted by Bob)? Refused with both
+    readings. After a verb ("give Carol the cup by Bob"), or with a verb or a place of its own
+    after it ("the mug by Bob goes to Carol"), it only says where the object is."""
+    if items[k].text.lower() != "by":
+        return
+    j = _past_dets(items, k + 1)
+    if j >= len(items) or not _humans(items[j]) or len({r.id for r in items[j].refs}) != 1:
+        return
+    n = len(out) - 1
+    while n > 0 and _is(out[n - 1], "det", "filler"):
+        n -= 1
+    if n > 0 and not (
+        out[n - 1].kind == "punct" or _is(out[n - 1], "and", "or", "then", "also", "but")
+    ):
+        return
+    for x in items[j + 1 :]:
+        if x.kind == "punct" or _is(x, "and", "or", "then"):
+            break
+        if _is_verb_item(x) or _is(x, "to", "for", "on"):
+            return  # "the mug by Bob goes to Carol", "the mug by Bob to Carol": where it is
+    it, who = out[-1].text, items[j].text
+    raise GroundingError(
+        f"'{it} by {who}' could mean the {it} next to {who}, or the {it} for {who} (wanted by "
+        f"{who}): say '{who} wants the {it}' or 'the {it} next to {who}'"
+    )
 
 
 def _handed_on(items: list[Item], k: int, out: list[Item]) -> bool:
