@@ -556,7 +556,6 @@ KNOWN_MISSES = frozenset(
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
-        "Noah or Zoe can have the globe, either one, they're both doing the project.",
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
@@ -567,7 +566,6 @@ KNOWN_MISSES = frozenset(
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         'Not Person A ah, Person B is the one getting the apple.',
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Give Person A whatever isn't the bottle, I've had my hands in the slip bucket.",
         "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
@@ -709,7 +707,6 @@ KNOWN_MISSES = frozenset(
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
         "Don't put it down anywhere, just hand the bottle to Person A.",
-        "Anything that isn't the bottle, hand it to Person B.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
         "Not Mr Lee, Mrs Khan's the one for the pills.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "

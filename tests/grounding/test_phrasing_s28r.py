@@ -8,7 +8,17 @@ from __future__ import annotations
 import pytest
 
 from hltl.world.scene import Scene
-from tests.grounding.helpers import CELL, DEPOT, assert_reads, assert_refused
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
 
 # -- (1a) 'X is / comes / gets back', with no place after it: an outside event, never a task ------
 
@@ -134,3 +144,160 @@ def test_a_gap_sending_objects_a_second_place_is_refused(text: str) -> None:
 )
 def test_a_gap_to_the_same_place_or_in_order_still_reads(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# -- (2a) corrections: a reason between the cue and the corrected words; ', not X, Y' -------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Chips to Alice, scratch that, she's fasting, chips to Bob.", "chips>B", CELL),
+        ("Give the bottle to Bob, no wait, Bob's got one, to Alice.", "bottle>A", CELL),
+        (
+            "Put the apple on the shelf, sorry, my head's in the ropewalk, I mean the counter.",
+            "apple@table",
+            CELL,
+        ),
+        ("Torch to Kofi, not Kofi, Jess.", "torch>B", WORKSHOP),
+        ("Torch to Kofi, not Kofi, to Jess, she's going under the van.", "torch>B", WORKSHOP),
+        ("Put the torch on the bench, not the bench, the locker.", "torch@locker", WORKSHOP),
+    ],
+)
+def test_a_reason_or_a_not_inside_a_correction_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the reason gives the person a pronoun after it stands for
+        ("Give the bottle to Bob, no wait, there's only Alice here, to her then.", CELL),
+        # negated, naming an object, adding ('too'), or wanting: not a bare reason
+        ("Give the bottle to Bob, no wait, Bob isn't thirsty, to Alice.", CELL),
+        ("Give the bottle to Bob, no wait, Bob's got the cup, to Alice.", CELL),
+        ("Give the bottle to Bob, no wait, Bob wants the cup, to Alice.", CELL),
+        ("Put the apple on the shelf, sorry, it's too high, I mean the counter.", CELL),
+        # 'not X' that is not the name just said, or more than a name after it
+        ("Torch to Kofi, not Kofi, Jess too.", WORKSHOP),
+        ("Torch to Kofi, not Kofi, the drill.", WORKSHOP),
+    ],
+)
+def test_near_forms_of_a_reason_in_a_correction_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (2b) exclusions: 'whatever isn't X', 'Apart from X, all of it …', '…, which P gets' ----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Bob gets whatever isn't the crisps.",
+            "cup>B & bottle>B & apple>B & mug_red>B & mug_blue>B",
+            CELL,
+        ),
+        ("Give Bob whatever isn't the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
+        (
+            "Everything that isn't the apple goes on the shelf.",
+            "cup@shelf & bottle@shelf & chips@shelf & mug_red@shelf & mug_blue@shelf",
+            CELL,
+        ),
+        (
+            "Apart from the mugs, all of it goes onto the table.",
+            "cup@table & bottle@table & chips@table & apple@table",
+            CELL,
+        ),
+        (
+            "Everything except the tape, all five bits, over to Tom for the cashier's tally.",
+            "box_small>B & scanner>B & box_medium>B & gloves>B & box_large>B",
+            DEPOT,
+        ),
+        (
+            "Everything to Mia, apart from the tape, which Tom gets.",
+            "box_small>A & scanner>A & box_medium>A & gloves>A & box_large>A & tape>B",
+            DEPOT,
+        ),
+    ],
+)
+def test_exclusions_said_another_way_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a place, a property or a person is no object left out
+        ("Bob gets whatever isn't on the shelf.", CELL),
+        ("Bob gets whatever isn't red.", CELL),
+        ("Bob gets whatever isn't Alice.", CELL),
+        # no word for everything after the fronted exclusion, or two
+        ("Apart from the mugs, the cup goes on the table.", CELL),
+        ("Apart from the mugs, everything and all of it goes onto the table.", CELL),
+        # a count that is not what is left; a purpose naming someone of the scene
+        ("Everything except the tape, all four bits, over to Tom.", DEPOT),
+        ("Give Tom the tape for the driver's tally.", DEPOT),
+        # 'which' with an object or two people
+        ("Everything to Mia, apart from the tape, which the scanner gets.", DEPOT),
+        ("Everything to Mia, apart from the tape, which Tom and Mia get.", DEPOT),
+    ],
+)
+def test_near_forms_of_the_exclusions_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (2c) choices: 'whoever's nearest', 'whichever's easier', 'either student', headers ----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Either Mia or Tom can have the tape, whoever's nearest.", "tape>A | tape>B", DEPOT),
+        ("Tom will take whichever's easier, tape or gloves.", "tape>B | gloves>B", DEPOT),
+        ("Tom will take the tape or the gloves, whichever's easier.", "tape>B | gloves>B", DEPOT),
+        (
+            "Either Mia or Tom can have the tape, they're both shattered from the night shift.",
+            "tape>A | tape>B",
+            DEPOT,
+        ),
+        (
+            "The scissors can go to either student, whoever's closest.",
+            "scissors>B | scissors>C",
+            CLASSROOM,
+        ),
+        ("Either student can have the globe.", "globe>B | globe>C", CLASSROOM),
+        ("Any one of the plates to Lena, white or blue.", "plate_white>B | plate_blue>B", KITCHEN),
+        (
+            "Hand out one thing apiece: the tape goes to Mia and the gloves go to Tom.",
+            "tape>A & gloves>B",
+            DEPOT,
+        ),
+        (
+            "Both of them need something, so the tape to Mia and the gloves to Tom.",
+            "tape>A & gloves>B",
+            DEPOT,
+        ),
+    ],
+)
+def test_choices_and_headers_said_around_a_request_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # no choice of people before 'whoever', no remark of two people
+        ("Give Tom the tape, whoever's nearest.", DEPOT),
+        ("Give Tom the tape, they're both shattered.", DEPOT),
+        # 'either of the patients' with another person said apart
+        ("Either of the patients can have the magazine, Mr Lee or Ruth", WARD),
+        # 'any one of the pens' with no recipient: where they are, or where one goes?
+        ("Any one of the pens in the box, please", OFFICE),
+        # a header whose list gives one person two things or places one
+        ("One thing each: the tape and the gloves for Mia, the scanner for Tom.", DEPOT),
+        ("Both of them need something, so the tape to Mia and the gloves on the belt.", DEPOT),
+    ],
+)
+def test_near_forms_of_the_choices_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
