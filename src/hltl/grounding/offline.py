@@ -1937,6 +1937,12 @@ def _order_carried(sentences: list[list[Item]]) -> list[list[Item]]:
     return out
 
 
+def _frags_of(raw: _Raw) -> list[_Frag]:
+    if isinstance(raw, _Frag):
+        return [raw]
+    return [f for child in raw.children for f in _frags_of(child)]
+
+
 def _one_verb_one_place(raw: _Raw) -> None:
     """Session 28 (12r): a clause of no verb of its own ('…, both to Bob', '… and the cup to Bob')
     that hands over objects a clause before puts somewhere (or the other way), with only 'and'
@@ -1977,12 +1983,6 @@ def _one_verb_one_place(raw: _Raw) -> None:
                 f"{' and '.join(dict.fromkeys(sent.values()))}, with no verb of its own and no "
                 "order: say which, or the order ('then')"
             )
-
-
-def _frags_of(raw: _Raw) -> list[_Frag]:
-    if isinstance(raw, _Frag):
-        return [raw]
-    return [f for child in raw.children for f in _frags_of(child)]
 
 
 def _picked_up(body: list[Item], after: list[Item]) -> bool:
