@@ -564,7 +564,6 @@ KNOWN_MISSES = frozenset(
         "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
-        'Not Person A ah, Person B is the one getting the apple.',
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
@@ -706,9 +705,7 @@ KNOWN_MISSES = frozenset(
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Don't put it down anywhere, just hand the bottle to Person A.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
-        "Not Mr Lee, Mrs Khan's the one for the pills.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Person A, the bottle — no, yes, the bottle, that's right.",
@@ -736,8 +733,6 @@ KNOWN_MISSES = frozenset(
         "Both of the subtitlers want something: Person A the chips, Person B the bottle.",
         "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
         "wants to go on the tray.",
-        "Pick up the chips and put them in Person A's hands, then do the same with the cup for "
-        "Person B.",
         "Person A wants the bottle, she's been on the lathe since seven, so get it to her.",
         "Person B's got nothing yet. Give them the chips and the bottle.",
         "The small box wants to sit on the pallet, and the medium one as well, ready for the "
@@ -755,10 +750,7 @@ KNOWN_MISSES = frozenset(
         "The auditor's gone, so every one of the three pens back in the box.",
         "The two smaller boxes can join the big one on the pallet.",
         "Grandad's clearing the floor, so both of the blocks up on the high chair.",
-        "Not Person A, she's had one; it's Person B that gets the cup.",
         "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
-        "No need to put it anywhere, just give Person A the bottle.",
-        "Not on the floor, mind, the bottle goes straight into Person A's hand.",
         "The cashier wants every box except the large one sent down the belt.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",

@@ -301,3 +301,38 @@ def test_choices_and_headers_said_around_a_request_read(text: str, want: str, sc
 )
 def test_near_forms_of_the_choices_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- (2d) what is not to be done, said first; 'in P's hands'; "P's the one for X" ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Not Alice, she's had one; it's Bob that gets the cup.", "cup>B"),
+        ("Not Alice ah, Bob is the one getting the apple.", "apple>B"),
+        ("Carol's the one for the apple.", "apple>C"),
+        ("Don't put it down anywhere, just hand the bottle to Alice.", "bottle>A"),
+        ("No need to put it anywhere, just give Alice the bottle.", "bottle>A"),
+        ("Not on the floor, mind, the bottle goes straight into Alice's hand.", "bottle>A"),
+        ("Put the bottle in Alice's hands, and the cup on the shelf.", "bottle>A & cup@shelf"),
+    ],
+)
+def test_what_is_not_to_be_done_said_first_reads(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the request after it does what was said not to be done
+        "Not Alice, Bob gets the cup and Alice the apple.",
+        "No need to put it anywhere, just put the bottle on the shelf.",
+        "Not on the floor, put the bottle on the shelf.",
+        # a reason naming an object; hands that are no one's of the scene
+        "Not Alice, she's got the cup; Bob gets the apple.",
+        "Put the bottle in the shelf's hands.",
+    ],
+)
+def test_near_forms_of_what_is_not_to_be_done_stay_refused(text: str) -> None:
+    assert_refused(text, CELL)

@@ -9393,6 +9393,116 @@ def _either_title28r(text: str, lexicon: Lexicon) -> str:
     return _sub(r"\beither (?:one of the |of the )?([a-z]+?)s?\b(?!')", two, text)
 
 
+# "… put them in Person A's hands", "the bottle goes straight into Person A's hand": to that person
+_IN_HAND28R = re.compile(
+    r"\b(?:(?:straight|right) )?(?:in|into|in to) ([A-Za-z][\w ]*?)'s (?:own )?hands?\b", _F
+)
+_PUT_VERB28R = re.compile(
+    r"\b(?:put|puts|place|places|pop|pops|stick|sticks|set|sets|drop|drops)\b(?=[^,.;!?]*$)", _F
+)
+
+
+def _in_hand28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): '(straight) in / into P's hand(s)' is 'to P' (P one person of the
+    scene); a verb of putting before it in its clause ('put them in Person A's hands') becomes
+    'hand', since the object goes to the person, on no surface."""
+    if "hand" not in text.lower():
+        return text
+
+    def to(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon):
+            return m.group(0)
+        return f"to {m.group(1)}"
+
+    out, start = [], 0
+    for m in _IN_HAND28R.finditer(text):
+        said = to(m)
+        if said == m.group(0):
+            continue
+        before = text[start : m.start()]
+        out.append(_PUT_VERB28R.sub("hand", before) + said)
+        start = m.end()
+    return "".join(out) + text[start:] if out else text
+
+
+def _the_one_for28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): "P's the one for X", 'P is the one getting X' is 'P gets X', as session
+    27's "P's the one who wants X" (P one person, X one name of objects; a question, a negation
+    or two people stay as they were)."""
+    if "the one" not in text.lower():
+        return text
+
+    def gets(m: re.Match[str]) -> str:
+        who, what = m.group(2), m.group(3)
+        if not _only_person(who, lexicon) or not _only_kind(what, lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}{who} gets {what}"
+
+    return _sub(
+        rf"{_OPEN}{_P}(?:'s| is) the (?:one|person) (?:for|getting|receiving|to get) "
+        r"((?:the |a |an )?[\w ]+?)(?=\s*(?:[,.;!?]|$))",
+        gets,
+        text,
+    )
+
+
+# 'Not P, …' / 'Not P ah, …' / "Not P, she's had one; …" opening: P is not the one
+_NOT_PERSON28R = re.compile(
+    r"^not (?P<p>[A-Za-z][\w ]*?)(?: ah| mind| though)?\s*[,;:.]\s*(?:(?P<why>(?:she|he|they)"
+    r"(?:'s|'ve|'re| has| have| is| are| was) [^,;.!?]+?)\s*[,;.]\s*)?(?P<rest>\S.*)$",
+    _F,
+)
+# "No need to put it anywhere, just …", "Don't put it down anywhere, just …"
+_NOWHERE28R = re.compile(
+    r"^(?:no need to|(?:you )?(?:don't|do not|needn't|need not)(?: need to)?) (?:put|place|set) "
+    r"(?:it|that) (?:down )?anywhere\s*[,;:.]\s*(?P<rest>\S.*)$",
+    _F,
+)
+# "Not on the floor, mind, …": a place the scene has no surface for
+_NOT_ON28R = re.compile(
+    r"^not (?:on|onto|in|into) (?:the |a )?(?P<where>[a-z]+(?: [a-z]+)?)(?:,? mind)?\s*[,;:.]\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _not_first28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): what is not to be done, said first, then the request:
+    - 'Not P, …' (or 'Not P ah, …', "Not P, she's had one; …"): P gets nothing, and the request
+      after it gives P nothing ("Not Person A, she's had one; it's Person B that gets the cup");
+    - 'No need to put it anywhere, just …' / "Don't put it down anywhere, …": nowhere in
+      particular, so the request after it places nothing;
+    - 'Not on the floor, mind, …': a place the scene has no surface for, and the request after
+      it places nothing there.
+    Each is taken off only when the request after it reads by itself and keeps what was said
+    first (a request that gives P something, or places something, stays refused); a reason after
+    'Not P' must be a statement naming no object, with no word that negates, adds or asks."""
+    low = text.lower()
+    if not low.startswith(("not ", "no need", "don't", "do not", "you don't", "needn't")):
+        return text
+    m = _NOT_PERSON28R.match(text)
+    if m is not None and _only_person(m.group("p"), lexicon):
+        why = m.group("why")
+        if why is not None and (_NOT_REASON28R.search(why) or _ids(why, lexicon, "object")):
+            return text
+        rest = m.group("rest")
+        said = _tasks_of(rest, lexicon)
+        if said and not {t for _, _, t in said} & _ids(m.group("p"), lexicon):
+            return rest[:1].upper() + rest[1:]
+        return text
+    for rx in (_NOWHERE28R, _NOT_ON28R):
+        m = rx.match(text)
+        if m is None:
+            continue
+        if rx is _NOT_ON28R and not _names_nothing(m.group("where"), lexicon):
+            return text
+        rest = m.group("rest")
+        said = _tasks_of(rest, lexicon)
+        if said and all(kind == "deliver" for kind, _, _ in said):
+            return rest[:1].upper() + rest[1:]
+    return text
+
+
 # -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
 
 
@@ -9740,6 +9850,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _either_title28r,
     _who_chooses28r,
     _each_one28r,
+    _in_hand28r,
+    _the_one_for28r,
+    _not_first28r,
     _idioms27r,
     _both_for27r,
     _included27r,
