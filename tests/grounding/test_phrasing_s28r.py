@@ -13,6 +13,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     OFFICE,
     WARD,
     WORKSHOP,
@@ -336,3 +337,42 @@ def test_what_is_not_to_be_done_said_first_reads(text: str, want: str) -> None:
 )
 def test_near_forms_of_what_is_not_to_be_done_stay_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- (2e) remarks around a request: 'the poor thing's …', 'they need a rinse', 'X's gone, so' ----
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Both blankets to Mrs Khan, the poor thing's shivering.",
+            "blanket_blue>C & blanket_grey>C",
+            WARD,
+        ),
+        ("The two cups in the sink, they need a rinse.", "cup_green@sink & cup_white@sink", LAB),
+        ("Give Omar the spoon, it needs a wash.", "spoon>B", LAB),
+        ("The blue pen to Priya, the notary wants blue ink.", "pen_blue>A", OFFICE),
+        (
+            "The auditor's gone, so every one of the three pens back in the box.",
+            "pen_black@box & pen_blue@box & pen_red@box",
+            OFFICE,
+        ),
+    ],
+)
+def test_remarks_around_a_request_are_taken_off(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # negated, naming a thing of the scene, or said of a person of the scene
+        ("Both blankets to Mrs Khan, the poor thing's not shivering.", WARD),
+        ("Both blankets to Mrs Khan, the poor thing needs the jug.", WARD),
+        ("The blue pen to Priya, the manager wants blue ink.", OFFICE),
+        ("Sam's gone, so the stapler to Priya.", OFFICE),
+    ],
+)
+def test_near_forms_of_the_remarks_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

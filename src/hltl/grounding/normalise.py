@@ -9503,6 +9503,52 @@ def _not_first28r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# remarks said around a request that the session's earlier remark rules do not take: "…, the poor
+# thing's shivering", "…, they need a rinse", "…, the notary wants blue ink", "The auditor's gone,
+# so …"
+_REMARKS28R = (
+    re.compile(
+        r"\s*,\s*(?:and )?the poor (?:thing|dear|love|soul|lamb|mite|lad|lass)(?:'s| is| has) "
+        r"(?P<said>[a-z][a-z' ]*?)(?=\s*[.!]?\s*$)",
+        _F,
+    ),
+    re.compile(
+        r"\s*,\s*(?:and )?(?P<who>they|it|the [a-z]+)(?:'s| is)? (?:needs?|wants?|could "
+        r"(?:do with|use)) (?P<said>(?:a |an |some )?[a-z][a-z' ]*?)(?=\s*[.!]?\s*$)",
+        _F,
+    ),
+    re.compile(
+        r"^(?P<who>(?:the|my|our) [a-z]+)(?:'s| is| has) (?P<said>gone|left|arrived|finished|off|"
+        r"here|done)(?: (?:now|home|for the day|already))?,? so\s+",
+        _F,
+    ),
+)
+
+
+def _remarks28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): a remark after the request about its person ("Both blankets to Mrs
+    Khan, the poor thing's shivering"), about its objects or someone not in the scene wanting
+    something the scene does not have ("The two cups in the sink, they need a rinse", "…, the
+    notary wants blue ink"), or before it, 'The auditor's gone, so …': taken off when its words
+    (and its subject) name nothing in the scene and hold no word that counts, chooses, negates,
+    orders or points back; the request must read without it."""
+    out = text
+    for rx in _REMARKS28R:
+        m = rx.search(out)
+        if m is None:
+            continue
+        said = m.group("said")
+        who = m.groupdict().get("who") or ""
+        if who.lower() not in ("they", "it") and not _names_nothing(who or "x", lexicon):
+            continue
+        if not _names_nothing(said, lexicon) or _KEEP_WORDS.search(said):
+            continue
+        rest = out[: m.start()] + out[m.end() :]
+        if _tasks_of(rest, lexicon):
+            out = rest[:1].upper() + rest[1:]
+    return out
+
+
 # -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
 
 
@@ -9853,6 +9899,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _in_hand28r,
     _the_one_for28r,
     _not_first28r,
+    _remarks28r,
     _idioms27r,
     _both_for27r,
     _included27r,
