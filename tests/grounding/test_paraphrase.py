@@ -742,7 +742,6 @@ KNOWN_MISSES = frozenset(
         "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
         "her.",
         "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
-        "The single packet of crisps to Person B.",
         "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
         "There's the only bottle here, sat by the arm; over to Person A with it.",
         "The two smaller boxes can join the big one on the pallet.",

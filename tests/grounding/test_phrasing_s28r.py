@@ -376,3 +376,28 @@ def test_remarks_around_a_request_are_taken_off(text: str, want: str, scene: Sce
 )
 def test_near_forms_of_the_remarks_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The single packet of crisps to Bob.", "chips>B", CELL),
+        ("The single apple to Bob.", "apple>B", CELL),
+        ("Give Bob a tin of crisps.", "chips>B", CELL),
+        ("Give Jess the tin of screws.", "screws>B", WORKSHOP),
+    ],
+)
+def test_the_single_one_and_what_holds_it_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("The single mug to Bob.", CELL),  # two mugs
+        ("The bag of mugs to Bob.", CELL),
+        ("Give Tom the box of tape.", DEPOT),  # boxes are objects of the depot
+    ],
+)
+def test_near_forms_of_the_single_one_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -9549,6 +9549,41 @@ def _remarks28r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "The single packet of crisps to Person B": what holds the one object, and 'single' for 'only'
+_PACKET28R = re.compile(
+    r"\b(?:(?P<det>the|a|an|one|that|this) )?(?:(?:single|one|only) )?(?P<box>packet|bag|pack|tin|"
+    r"carton|punnet|jar|box) of (?:the )?(?P<x>[a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def _single28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'the single X' is 'the only X' (the X, when the scene has one: session
+    19's rule checks it); 'a / the (single) packet / bag / tin of X' is 'the X' when X names one
+    object of the scene and the holder's word names nothing there (a box of a scene with boxes,
+    or 'tin of screws' said as the scene says it, is left as it is)."""
+    low = text.lower()
+    if "single" in low:
+        text = _sub(r"\bthe single (?=[a-z])", "the only ", text)
+    if " of " not in low:
+        return text
+
+    def held(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if lexicon.lookup(f"{m.group('box')} of {x}".lower()) is not None:
+            return m.group(0)
+        if _ids(m.group("box"), lexicon):
+            return m.group(0)
+        for n in (2, 1):
+            said = " ".join(x.split()[:n])
+            one = len(_ids(said, lexicon, "object")) == 1
+            if len(x.split()) >= n and one and _only_kind(said, lexicon, "object"):
+                return f"the {said}{x[len(said) :]}"
+        return m.group(0)
+
+    return _PACKET28R.sub(held, text)
+
+
 # -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
 
 
@@ -9900,6 +9935,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _the_one_for28r,
     _not_first28r,
     _remarks28r,
+    _single28r,
     _idioms27r,
     _both_for27r,
     _included27r,
