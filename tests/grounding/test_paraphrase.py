@@ -745,7 +745,6 @@ KNOWN_MISSES = frozenset(
         "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
         "There's the only bottle here, sat by the arm; over to Person A with it.",
         "The two smaller boxes can join the big one on the pallet.",
-        "Grandad's clearing the floor, so both of the blocks up on the high chair.",
         "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
         "The cashier wants every box except the large one sent down the belt.",
         "Any book not yet on the bookshelf wants shelving.",

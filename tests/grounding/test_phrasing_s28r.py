@@ -14,6 +14,7 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     OFFICE,
     WARD,
     WORKSHOP,
@@ -401,3 +402,33 @@ def test_the_single_one_and_what_holds_it_read(text: str, want: str, scene: Scen
 )
 def test_near_forms_of_the_single_one_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Grandad's clearing the floor, so both of the blocks up on the high chair.",
+            "block_red@highchair & block_green@highchair",
+        ),
+        (
+            "Grandad's clearing the floor, so both of the blocks onto the high chair.",
+            "block_red@highchair & block_green@highchair",
+        ),
+        ("Grandad's tired, the bib back on the high chair.", "bib@highchair"),
+    ],
+)
+def test_objects_sent_onto_a_surface_after_a_remark_read(text: str, want: str) -> None:
+    assert_reads(text, want, NURSERY)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # 'on' may say where they lie (for Grandad?) or where they go
+        "Grandad's clearing the floor, so both of the blocks on the high chair.",
+        "Grandad's tired, the bib on the high chair.",
+    ],
+)
+def test_objects_on_a_surface_after_a_remark_stay_refused(text: str) -> None:
+    assert_refused(text, NURSERY)

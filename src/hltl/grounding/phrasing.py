@@ -344,12 +344,35 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
                 f"{len(people)} people: say 'give <person> …'"
             )
         return [people[0], Item("punct", ",", ",")]
+    if _moved_onto(sent):
+        return []
     if not any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
         raise GroundingError(
             f"after a remark about {', '.join(x.text for x in people) or 'someone'}, "
             f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
         )
     return []
+
+
+def _moved_onto(sent: list[Item]) -> bool:
+    """Session 28 (12r): whether ``sent`` says where its objects go, not where they lie: 'onto'
+    / 'into' a surface, or 'up / back / down on' it ("Grandad's clearing the floor, so both of
+    the blocks up on the high chair"), after objects alone, with no person, verb or pronoun: a
+    placement, which needs no one to get it ('the blocks on the high chair' stays unclear)."""
+    if any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
+        return False
+    for n, x in enumerate(sent):
+        if not _is(x, "on") or n + 1 >= len(sent):
+            continue
+        j = _past_dets(sent, n + 1)
+        if j >= len(sent) or not _is_surface(sent[j]):
+            continue
+        said = x.text.lower()
+        if said in ("onto", "into", "on to", "in to") or (
+            n > 0 and _is(sent[n - 1], "filler") and sent[n - 1].text.lower() in ("up", "back")
+        ):
+            return True
+    return False
 
 
 def _reason_length(items: list[Item], k: int) -> int:
