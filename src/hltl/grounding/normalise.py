@@ -9920,6 +9920,12 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _idioms27r,
+    _both_for27r,
+    _included27r,
+    _that_there27r,
+    _said_aside27r,
+    # session 28 (12r): blind26's kinds
     _cue_reason28r,
     _not_that28r,
     _whatever_not28r,
@@ -9936,11 +9942,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_first28r,
     _remarks28r,
     _single28r,
-    _idioms27r,
-    _both_for27r,
-    _included27r,
-    _that_there27r,
-    _said_aside27r,
     _translated25,
     _address_after26r,
     _courtesy24,
