@@ -9452,6 +9452,12 @@ _NOT_PERSON28R = re.compile(
     r"(?:'s|'ve|'re| has| have| is| are| was) [^,;.!?]+?)\s*[,;.]\s*)?(?P<rest>\S.*)$",
     _F,
 )
+# a command opening what follows 'Not P,': 'Not P' may be said to the hearer (session 12)
+_COMMAND28R = re.compile(
+    r"(?:please |just |and |so )*(?:give|hand|pass|bring|take|put|place|send|get|fetch|deliver|"
+    r"carry|move|pop|stick|chuck|leave|set)\b",
+    _F,
+)
 # "No need to put it anywhere, just …", "Don't put it down anywhere, just …"
 _NOWHERE28R = re.compile(
     r"^(?:no need to|(?:you )?(?:don't|do not|needn't|need not)(?: need to)?) (?:put|place|set) "
@@ -9469,7 +9475,9 @@ _NOT_ON28R = re.compile(
 def _not_first28r(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12r): what is not to be done, said first, then the request:
     - 'Not P, …' (or 'Not P ah, …', "Not P, she's had one; …"): P gets nothing, and the request
-      after it gives P nothing ("Not Person A, she's had one; it's Person B that gets the cup");
+      after it, a statement (not a command: 'Not Bob, give Alice the cup' may be said to the
+      hearer), gives one other person everything ("Not Person A, she's had one; it's Person B
+      that gets the cup");
     - 'No need to put it anywhere, just …' / "Don't put it down anywhere, …": nowhere in
       particular, so the request after it places nothing;
     - 'Not on the floor, mind, …': a place the scene has no surface for, and the request after
@@ -9486,10 +9494,13 @@ def _not_first28r(text: str, lexicon: Lexicon) -> str:
         if why is not None and (_NOT_REASON28R.search(why) or _ids(why, lexicon, "object")):
             return text
         rest = m.group("rest")
+        if _COMMAND28R.match(rest):
+            return text  # "Not Bob, give Alice the cup": said to the hearer? (session 12)
         said = _tasks_of(rest, lexicon)
-        if said and not {t for _, _, t in said} & _ids(m.group("p"), lexicon):
+        targets = {t for _, _, t in said or ()}
+        if len(targets) == 1 and not targets & _ids(m.group("p"), lexicon):
             return rest[:1].upper() + rest[1:]
-        return text
+        return text  # "Not Alice, Carol and Bob get a mug each": 'not' which? (session 21)
     for rx in (_NOWHERE28R, _NOT_ON28R):
         m = rx.match(text)
         if m is None:
