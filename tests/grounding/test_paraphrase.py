@@ -716,23 +716,12 @@ KNOWN_MISSES = frozenset(
         "Can you manage chips to Person B and the bottle across to Person A while I finish "
         "hemming this sail?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
-        "E kaaro. Please help me give Person B the bottle, e se gan.",
-        "Ole hyvä, chips to Person B, bottle to Person A. Kiitti.",
-        "Excuse me, sorry, the mycologist here, would you kindly pop the bowl in the sink? Spores "
-        "everywhere. Thanks a million.",
-        "Good morning. If you'd be so good as to take the jug to Mrs Khan, that'd be grand.",
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "Person A needs chips, yaar, the bell ringers are starving.",
-        "Person B's wanting the chips for his break in the signal box, and Person A the bottle.",
-        "Both of the subtitlers want something: Person A the chips, Person B the bottle.",
         "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
         "wants to go on the tray.",
-        "Person A wants the bottle, she's been on the lathe since seven, so get it to her.",
-        "Person B's got nothing yet. Give them the chips and the bottle.",
         "The small box wants to sit on the pallet, and the medium one as well, ready for the "
         "cashier's count.",
-        "Hammer to Kofi for the fence posts. And the drill, same again.",
         "Whichever thing's nearer your arm, that's the one for Person A.",
         "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
         "her.",
@@ -745,21 +734,7 @@ KNOWN_MISSES = frozenset(
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
-        "give the crisps to bob and the cup to carol pls, im on the perfume stall till five",
-        "person b is after the bottle, the foley session ran long",
-        "apple and cup both over to person b hes tuning the harp",
-        "chips to person a, bottle to person b, cup and apple stay put",
-        "the chips for person b, the bottle for person a, cheers, im off to the hatters",
         "whichever ones closer to person a, give her that",
-        "tongs on the rack please, marco needs them out of the way",
-        "the scissors and the ruler both on the desk for the map lesson",
-        "The fletcher, Person B, is asking for the aapple.",
-        "Person A, up at the rope walk, wants the cuips.",
-        "A leemon for Mr Novak's fish, please.",
-        "You will give the bottle to Person B, na? He is driving the fork truck since morning.",
-        "Is there any way the bottle could make it to Person A?",
-        "Would Person A be able to have the bottle, do you think, seeing as she's steaming felt?",
-        "Can the notepad go on the desk, or is that a pain?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

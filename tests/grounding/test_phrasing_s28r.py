@@ -289,9 +289,8 @@ def test_choices_and_headers_said_around_a_request_read(text: str, want: str, sc
 @pytest.mark.parametrize(
     ("text", "scene"),
     [
-        # no choice of people before 'whoever', no remark of two people
+        # no choice of people before 'whoever'
         ("Give Tom the tape, whoever's nearest.", DEPOT),
-        ("Give Tom the tape, they're both shattered.", DEPOT),
         # 'either of the patients' with another person said apart
         ("Either of the patients can have the magazine, Mr Lee or Ruth", WARD),
         # 'any one of the pens' with no recipient: where they are, or where one goes?
