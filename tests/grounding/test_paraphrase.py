@@ -720,8 +720,6 @@ KNOWN_MISSES = frozenset(
         "the apple.",
         "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
         "wants to go on the tray.",
-        "The small box wants to sit on the pallet, and the medium one as well, ready for the "
-        "cashier's count.",
         "Whichever thing's nearer your arm, that's the one for Person A.",
         "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
         "her.",

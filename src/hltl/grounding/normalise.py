@@ -9604,7 +9604,9 @@ def _count_again28r(text: str, lexicon: Lexicon) -> str:
 
 # "… over to Person B for the actuary's tally": what it is for, someone else's
 _PURPOSE_OF28R = re.compile(
-    r"\s+for (?:the|a|an) (?P<who>[a-z]+)'s (?P<what>[a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))", _F
+    r"(?<!\bready)\s+for (?:the|a|an) (?P<who>[a-z]+)'s (?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[.,;!?]|$))",
+    _F,
 )
 
 
