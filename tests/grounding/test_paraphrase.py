@@ -720,6 +720,51 @@ KNOWN_MISSES = frozenset(
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "
         "hemming this sail?",
+        # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
+        "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
+        "the apple.",
+        "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
+        "wants to go on the tray.",
+        "Either Person A or Person B can have the bottle, whoever's nearest, they're both "
+        "shattered from the usher shift.",
+        "Hand out one thing apiece: the apple goes to Person A and the cup goes to Person B.",
+        "Person A will take whichever's easier, chips or apple, she's not fussy today.",
+        "Both of them need something, so the chips to Person A and the bottle to Person B.",
+        "Whichever thing's nearer your arm, that's the one for Person A.",
+        "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
+        "her.",
+        "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
+        "Both blankets to Mrs Khan, the poor thing's shivering.",
+        "Any one of the plates to Lena, white or blue.",
+        "The scissors can go to either student, whoever's closest.",
+        "The single packet of crisps to Person B.",
+        "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
+        "Everything that isn't the apple, all three bits, over to Person B for the actuary's "
+        "tally.",
+        "There's the only bottle here, sat by the arm; over to Person A with it.",
+        "They're both notaries on a break, so one thing each: bottle for Person A, chips for "
+        "Person B.",
+        "The two cups in the sink, they need a rinse.",
+        "The auditor's gone, so every one of the three pens back in the box.",
+        "The two smaller boxes can join the big one on the pallet.",
+        "Grandad's clearing the floor, so both of the blocks up on the high chair.",
+        "All of it to Person A, apart from the apple, which Person B gets.",
+        "Not Person A, she's had one; it's Person B that gets the cup.",
+        "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
+        "No need to put it anywhere, just give Person A the bottle.",
+        "Not on the floor, mind, the bottle goes straight into Person A's hand.",
+        "Person A gets whatever isn't the chips.",
+        "Apart from the cups and the bowl, all of it goes onto the tray for the mushroom count.",
+        "The cashier wants every box except the large one sent down the belt.",
+        "Any book not yet on the bookshelf wants shelving.",
+        "Put the apple on the shelf, sorry, my head's in the ropewalk, I mean the counter.",
+        "Give the bottle to Bob, no wait, Bob's got one, to Alice.",
+        "Chips to Person A, scratch that, she's fasting, chips to Person B.",
+        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
+        "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
+        "The black pen to Priya, sorry, the blue one, the notary wants blue ink.",
+        "Torch to Kofi, not Kofi, Jess, she's going under the van.",
+        "whichever ones closer to person a, give her that",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -782,8 +827,10 @@ KNOWN_UNCLEAR = frozenset(
 # in session 26: asserted now, the rest in KNOWN_MISSES; "blind25" written in session 26 by
 # another engineer, reviewed by a second one, measured once at the end of session 26, tuned on
 # in session 27: asserted now, the rest in KNOWN_MISSES; "blind26" written in session 27 by
-# another engineer and committed alone, measured once at the end of session 27: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind26", "blind27"})
+# another engineer and committed alone, reviewed by a second one, measured once at the end of
+# session 27, tuned on in session 28: asserted now, the rest in KNOWN_MISSES; "blind27" written
+# in session 28 by another engineer and committed alone: measured once at the end, not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind27"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
