@@ -561,9 +561,7 @@ KNOWN_MISSES = frozenset(
         "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
-        'Not Person A ah, Person B is the one getting the apple.',
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Give Person A whatever isn't the bottle, I've had my hands in the slip bucket.",
         "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
@@ -702,10 +700,7 @@ KNOWN_MISSES = frozenset(
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Don't put it down anywhere, just hand the bottle to Person A.",
-        "Anything that isn't the bottle, hand it to Person B.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
-        "Not Mr Lee, Mrs Khan's the one for the pills.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Person A, the bottle — no, yes, the bottle, that's right.",
@@ -720,6 +715,24 @@ KNOWN_MISSES = frozenset(
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "
         "hemming this sail?",
+        # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
+        "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
+        "the apple.",
+        "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
+        "wants to go on the tray.",
+        "Whichever thing's nearer your arm, that's the one for Person A.",
+        "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
+        "her.",
+        "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
+        "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
+        "There's the only bottle here, sat by the arm; over to Person A with it.",
+        "The two smaller boxes can join the big one on the pallet.",
+        "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
+        "The cashier wants every box except the large one sent down the belt.",
+        "Any book not yet on the bookshelf wants shelving.",
+        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
+        "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
+        "whichever ones closer to person a, give her that",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -782,8 +795,10 @@ KNOWN_UNCLEAR = frozenset(
 # in session 26: asserted now, the rest in KNOWN_MISSES; "blind25" written in session 26 by
 # another engineer, reviewed by a second one, measured once at the end of session 26, tuned on
 # in session 27: asserted now, the rest in KNOWN_MISSES; "blind26" written in session 27 by
-# another engineer and committed alone, measured once at the end of session 27: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind26", "blind27"})
+# another engineer and committed alone, reviewed by a second one, measured once at the end of
+# session 27, tuned on in session 28: asserted now, the rest in KNOWN_MISSES; "blind27" written
+# in session 28 by another engineer and committed alone: measured once at the end, not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind27"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
