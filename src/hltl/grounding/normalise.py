@@ -4662,10 +4662,12 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
     ).match(text)
     if m is not None and _the_person(m.group(1), text, lexicon):
         return f"give {m.group(1)} any {m.group(2)}{m.group(3)}"
-    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar
+    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar (session
+    # 28: the objects one phrase, with no comma: "…, hand them the scanner, and we need the work
+    # gloves" had been read as the gloves to either, and the scanner only with them to Mia)
     m = _rx(
         r"^whichever of ([^,]+?) or ([^,]+?) (?:is|'s) [a-z]+(?: [a-z]+)?\s*,\s*(give|hand|pass|"
-        r"bring|take) (?:them|him or her) (.+?)\s*([.!]?)$"
+        r"bring|take) (?:them|him or her) ([^,;:]+?)\s*([.!]?)$"
     ).match(text)
     if (
         m is not None
@@ -4675,6 +4677,10 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
         and _ids(m.group(4), lexicon, "object")
         and not _ids(m.group(4), lexicon, "human")
     ):
+        if len(_ids(m.group(4), lexicon, "object")) > 1:
+            # "…, hand them the scanner and the gloves": both to the one who is around
+            v, o = m.group(3), m.group(4)
+            return f"either {v} {o} to {m.group(1)} or {v} {o} to {m.group(2)}{m.group(5)}"
         return f"{m.group(3)} {m.group(4)} to {m.group(1)} or {m.group(2)}{m.group(5)}"
     # "One of the two people should get the apple", "The cup should go to one of the two people"
     people = [h for h in lexicon.scene.humans]
@@ -8128,6 +8134,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         out,
     )
 
+    return _narrowed_to_one(out, lexicon)
+
+
+def _narrowed_to_one(text: str, lexicon: Lexicon) -> str:
+    """'the Xs, sorry, just the one' (the X: which one is not said, so the refusal names its
+    readings); session 28: 'only the one' as 'just the one', and after 'both Xs' ("Both mugs to
+    Alice, no, just the one"). Also the last of the earlier sessions' steps (``_STEPS``), after
+    their closers are taken off ("…, sorry, only the one, cheers")."""
+
     def just_one(m: re.Match[str]) -> str:
         noun = m.group(2)
         # 'boxes' is 'box' (session 27: 'boxe' named nothing, so the plural was kept and read as
@@ -8136,15 +8151,24 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         single = next((w for w in cut if _ids(w, lexicon, "object")), noun)
         if single == noun or len(_ids(single, lexicon, "object")) < 2:
             return m.group(0)
-        return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
+        return f"{m.group(1)}the {single}{m.group(3)}{m.group(4)}"
 
-    out = _sub(
-        r"^(.*?\bthe )([a-z]+)((?: [^,]*?)?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one"
-        r"\s*([.!]?)$",
-        just_one,
-        out,
+    def listed_one(m: re.Match[str]) -> str:
+        if len(_ids(m.group(2), lexicon, "object")) < 2:
+            return m.group(0)
+        return f"{m.group(1)}the {m.group(2)}{m.group(3)}{m.group(4)}"
+
+    narrowed = (
+        r",\s*(?:sorry|no|i mean),?\s*(?:just|only) (?:the )?one(?: and that's (?:it|all))?"
+        r"\s*([.!]?)$"
     )
-    return out
+    text = _sub(r"^(.*?\b)(?:the|both) ([a-z]+)((?: [^,]*?)?)" + narrowed, just_one, text)
+    # "the red mug and the blue mug to Bob, no, just the one" (the earlier steps' 'both mugs')
+    return _sub(
+        r"^(.*?\b)the [a-z]+ ([a-z]+)(?: and the [a-z]+ \2)+((?: [^,]*?)?)" + narrowed,
+        listed_one,
+        text,
+    )
 
 
 def _negation19(text: str, lexicon: Lexicon) -> str:
@@ -9380,6 +9404,7 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _choice_listed26s,
     _nobody_else26s,
     _all_of27r,
+    _narrowed_to_one,
 )
 
 

@@ -1,0 +1,94 @@
+"""Session-28 phrasings of issue 12 (engineer 12s): a plural narrowed to 'just / only the one'
+refused with its readings, 'whichever of P or Q …, hand them …' with one phrase of objects — each
+rule with the near forms it must read and the near forms it must refuse (docs/grounding.md,
+"Session 28 (engineer 12s)")."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.grounding.helpers import (
+    CELL,
+    DEPOT,
+    KITCHEN,
+    NURSERY,
+    OFFICE,
+    assert_reads,
+    assert_refused,
+)
+
+# -- 'the Xs, sorry, just the one' (normalise.py _narrowed_to_one) ------------------------------
+
+# which one is not said: refused, naming every one of the kind (the fuzz's exclusions family
+# counted 1,161 of these as refusals without their readings when an opener or closer was around)
+JUST_ONE = (
+    ("The boxes to Mia, sorry, just the one", DEPOT, ("box_small", "box_medium", "box_large")),
+    ("Give Tom the boxes, sorry, only the one.", DEPOT, ("box_small", "box_medium", "box_large")),
+    ("Give Tom the boxes, sorry, only the one, cheers", DEPOT, ("box_small", "box_large")),
+    (
+        "Right, eyes on me everyone. Give Tom the boxes, sorry, only the one. Regards.",
+        DEPOT,
+        ("box_small", "box_medium", "box_large"),
+    ),
+    ("Both mugs to Bob, no, just the one.", CELL, ("mug_red", "mug_blue")),
+    ("Both mugs to Bob, no, just the one. Go.", CELL, ("mug_red", "mug_blue")),
+    ("Robot, give Alice the mugs, sorry, only the one and that's us done", CELL, ("mug_red",)),
+    (
+        "Hey robot, the blocks to Ava, sorry, just the one, if that's alright with you.",
+        NURSERY,
+        ("block_red", "block_green"),
+    ),
+    ("Give Alice the red mug and the blue mug, sorry, just the one", CELL, ("mug_blue",)),
+    ("I know you're busy, but give Priya the pens, sorry, only the one.", OFFICE, ("pen_blue",)),
+)
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), JUST_ONE)
+def test_just_the_one_names_its_readings(text: str, scene: object, readings: tuple[str]) -> None:
+    for r in readings:
+        assert_refused(text, scene, match=r)  # type: ignore[arg-type]
+
+
+# near forms: the one named is read; a list of different kinds, or more after the narrowing, is
+# not narrowed
+def test_just_the_one_near_forms() -> None:
+    assert_reads("The boxes to Mia, sorry, just the small one", "box_small>A", DEPOT)
+    assert_reads("Both mugs to Bob, no, just the red one.", "mug_red>B", CELL)
+    assert_refused("Give Alice the cup and the red mug, sorry, just the one", CELL)
+    assert_refused("The boxes to Mia, sorry, just the one, and the tape to Tom", DEPOT)
+    # one of a kind the scene has one of: nothing to narrow (no reading is named)
+    assert_refused("Give Alice the cups, sorry, just the one", CELL)
+
+
+# -- 'Whichever of P or Q is …, hand them …' (normalise.py _choice_frames) ----------------------
+
+
+def test_whichever_of_two_people_one_phrase_of_objects() -> None:
+    said = "Whichever of Mia or Tom is around, hand them "
+    assert_reads(said + "the scanner", "scanner>A | scanner>B", DEPOT)
+    # several objects: all of them to the one who is around (had read (scanner & gloves) to Mia
+    # or the gloves alone to Tom)
+    assert_reads(
+        said + "the scanner and the gloves",
+        "(scanner>A & gloves>A) | (scanner>B & gloves>B)",
+        DEPOT,
+    )
+    # the speaker's own want after a comma is not one of the objects (had read the gloves to
+    # either): refused
+    assert_refused(said + "the scanner, and we need the work gloves", DEPOT)
+    assert_refused(said + "the scanner, and the work gloves", DEPOT)
+    assert_reads(
+        "Whichever of Marco or Lena is free, give them the lemon", "lemon>A | lemon>B", KITCHEN
+    )
+
+
+def test_none_of_the_two_we_have_is_refused() -> None:
+    # "just none of the two we have": none the scene has (a blind23 entry, with a wrapper)
+    said = "our guest is wanting a plate, just none of the two we have"
+    assert_refused("I hope this is okay, " + said + ".", KITCHEN)
+    assert_refused(
+        "I hope this is okay, " + said + ", the white's cracked and the blue's got fish scales "
+        "all over. Good robot.",
+        KITCHEN,
+    )
+    assert_refused("Lena is wanting a plate, just none of the two we have.", KITCHEN)
