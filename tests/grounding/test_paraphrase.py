@@ -499,8 +499,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        'Habari, good afternoon my friend. Please, I am requesting you to give the apple to '
-        'Person A. Asante sana, you are very helpful.',
         'Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank '
         'you ah, very good.',
         "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
@@ -540,9 +538,6 @@ KNOWN_MISSES = frozenset(
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        'Please give bottle to Person B and the cup you give to Person A after that, then finish, '
-        'asante.',
-        'Apple give Person A first, then bottle give Person B, finish already lah.',
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
         'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
         'tape measure out.',

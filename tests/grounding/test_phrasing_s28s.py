@@ -1,5 +1,6 @@
 """Session-28 phrasings of issue 12 (engineer 12s): a plural narrowed to 'just / only the one'
-refused with its readings, 'whichever of P or Q …, hand them …' with one phrase of objects — each
+refused with its readings, 'whichever of P or Q …, hand them …' with one phrase of objects, "I am
+requesting you to", '<object> give <person>', 'finish already' — each
 rule with the near forms it must read and the near forms it must refuse (docs/grounding.md,
 "Session 28 (engineer 12s)")."""
 
@@ -7,15 +8,20 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
     KITCHEN,
     NURSERY,
     OFFICE,
+    ROOT,
     assert_reads,
     assert_refused,
 )
+
+FOUR = load_scene(ROOT / "examples/scenes/4-2.yaml")  # bottle, chips, cup, apple; Person A, B
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips; Alice, Bob
 
 # -- 'the Xs, sorry, just the one' (normalise.py _narrowed_to_one) ------------------------------
 
@@ -92,3 +98,53 @@ def test_none_of_the_two_we_have_is_refused() -> None:
         KITCHEN,
     )
     assert_refused("Lena is wanting a plate, just none of the two we have.", KITCHEN)
+
+
+# -- "I am requesting you to …" (normalise.py _STEPS' 'asking you to') ---------------------------
+
+
+def test_requesting_you_to() -> None:
+    assert_reads("I am requesting you to give the apple to Person A", "apple>A", FOUR)
+    assert_reads("Please, I am requesting you to give the apple to Person A.", "apple>A", FOUR)
+    assert_reads("I'm kindly requesting you to give Person B the cup", "cup>B", FOUR)
+    # the speaker requesting something for themself, or no request after it: refused
+    assert_refused("I am requesting the apple", FOUR)
+    assert_refused("I am requesting you to give me the apple", FOUR)
+    assert_refused("I am requesting you to the apple", FOUR)
+
+
+# -- '<object> give <person>' (normalise.py _object_first28s) ----------------------------------
+
+
+def test_object_first() -> None:
+    assert_reads("Apple give Person A first, then bottle give Person B", "apple>A ; bottle>B", FOUR)
+    assert_reads("The cup give Person B.", "cup>B", FOUR)
+    assert_reads("bottle give Alice first, then crisps give Bob", "bottle>A ; chips>B", TWO)
+    # a pronoun stays a pronoun (resolved or refused as before), a person first is no object,
+    # a count is not one name, a past form is no request
+    assert_reads("Cup give Person A first, then apple give her", "cup>A ; apple>A", FOUR)
+    assert_refused("Bottle give her", TWO)
+    assert_refused("Bob give Alice the bottle", TWO)
+    assert_refused("Two items, both give Alice.", TWO)
+    assert_refused("The bottle gave Bob a headache", TWO)
+    assert_refused("Bottle give Alice first, then Bob give chips", TWO)
+
+
+# -- 'finish already' after the last request (normalise.py _finished28s) -----------------------
+
+
+def test_finish_already() -> None:
+    assert_reads("Give Person A the cup, finish already", "cup>A", FOUR)
+    assert_reads(
+        "Apple give Person A first, then bottle give Person B, finish already lah.",
+        "apple>A ; bottle>B",
+        FOUR,
+    )
+    assert_reads(
+        "Please give bottle to Person B and the cup you give to Person A after that, then finish.",
+        "bottle>B ; cup>A",
+        FOUR,
+    )
+    # more after it, or something to finish: not taken off
+    assert_refused("Give Person A the cup, then finish the apple", FOUR)
+    assert_refused("Give Person A the cup, finish already, and the apple to me", FOUR)

@@ -3237,7 +3237,12 @@ _SAID14: tuple[tuple[str, str], ...] = (
     ),
     # "Reckon Lena wants the lemon", "I am asking you to put …"
     (r"^(?:i )?reckon,?\s+", ""),
-    (r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) asking (?:you )?(?:to )?(?=[a-z])", r"\1"),
+    # (session 28: "I am requesting you to give …", "I'm kindly asking you to …")
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) (?:kindly )?(?:asking|requesting) "
+        r"(?:you )?(?:to )?(?=[a-z])",
+        r"\1",
+    ),
     # "Is possible to give …", "please to put", "must to have": said by someone learning English
     (r"^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", ""),
     (r"\bplease to\b", "please"),
@@ -9163,6 +9168,54 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _whole_name(words: str, lexicon: Lexicon, kind: str) -> bool:
+    """Whether ``words`` (an article aside) are one name of the scene, whole, of ``kind``."""
+    bare = re.sub(r"^(?:the|a|an) ", "", words.strip(), flags=_F)
+    said = _names(bare, lexicon)
+    return (
+        len(said) == 1
+        and said[0].text.lower() == bare.lower()
+        and all(r.kind == kind for r in said[0].refs)
+    )
+
+
+def _object_first28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a clause (between marks, after an optional 'then' / 'and then') said
+    object first, '<object> give <person>' ("Apple give Person A first, then bottle give Person
+    B"): 'give <person> <object>'. The object and the person must each be one name of the
+    scene, whole, with nothing else in the clause but 'first' / 'next' / 'too' after it; a
+    pronoun ('the bottle give her'), a count ('both give Alice'), a past form ('the bottle gave
+    Bob …') or a word left over leaves the clause as it is."""
+
+    def turned(m: re.Match[str]) -> str:
+        if not _whole_name(m["what"], lexicon, "object"):
+            return m[0]
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        return f"{m['lead']}{m['verb']} {m['who']} {m['what']}{m['tail']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:(?:and )?then,?\s+)?)(?P<what>(?:the |a |an )?"
+        r"[a-z]+(?: [a-z]+)?) (?P<verb>give|hand|pass) (?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr)"
+        r" [a-z]+|[a-z]+)(?P<tail>(?: first| next| too| as well)?)(?=\s*(?:[,.;!?]|$))",
+        turned,
+        text,
+    )
+
+
+# Session 28 (12s): 'finish already', 'then finish', 'and that's finished' after the last request:
+# the speaker saying the list is over (asks nothing)
+_FINISHED28S = (
+    r",\s*(?:and |then |and then )?(?:finish|finished|finish already|all finished|that's "
+    r"finished)(?: (?:already|lah|ah|now))*\s*(?=[.!]?\s*$)"
+)
+
+
+def _finished28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'finish already' after the last request (_FINISHED28S), taken off."""
+    return _drop(_FINISHED28S, text, lexicon)
+
+
 # A description of objects, then the list of the objects it describes ("The two drinks, bottle
 # and cup, go to Person B", "The two things cluttering the floor, the bottle and the crisps, up
 # on the shelf", "Hand over both items, chips and bottle alike, to Person B"; "Anything edible
@@ -9458,4 +9511,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _out_of_reach27,
     _verb_last27,
     _described_list27,
+    _object_first28s,
+    _finished28s,
 )
