@@ -314,7 +314,6 @@ KNOWN_MISSES = frozenset(
         "Load the three boxes onto the belt, small, medium and large.",
         "Two spanners, one to Kofi and one to Jess.",
         "Person B is moving desks, so every last one of the four items goes across to her.",
-        "Person A's having the pair, bottle and chips together.",
         "Person B only needs a single bottle, just the one.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
@@ -379,7 +378,6 @@ KNOWN_MISSES = frozenset(
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
-        "Both items to Person B, the pair of them.",
         "Bob is to have the two of them, bottle and crisps.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
@@ -415,8 +413,6 @@ KNOWN_MISSES = frozenset(
         "Hello po, good morning po. Kindly give the bottle to Person A po, if okay with you. "
         "Thank you so much po, God bless.",
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
-        "Right, I'm the midwife, I've been on since seven last night, so, um, bear with me. "
-        "Could you pop the bowl in the sink for us, pet? Ta.",
         "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
         "terribly passing Sam the notepad? Thanks a bunch.",
         "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
@@ -662,8 +658,6 @@ KNOWN_MISSES = frozenset(
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
-        "Give Person B the chips and Person A the bottle and be quick about it as I'm off to "
-        'the next job.',
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
         'not bothered which.',

@@ -1,6 +1,7 @@
 """Session-28 phrasings of issue 12 (engineer 12s): a plural narrowed to 'just / only the one'
 refused with its readings, 'whichever of P or Q …, hand them …' with one phrase of objects, "I am
-requesting you to", '<object> give <person>', 'finish already' — each
+requesting you to", '<object> give <person>', 'finish already', the speaker's own times in a
+remark, 'be quick about it', 'the pair (of them)' — each
 rule with the near forms it must read and the near forms it must refuse (docs/grounding.md,
 "Session 28 (engineer 12s)")."""
 
@@ -13,15 +14,18 @@ from tests.grounding.helpers import (
     CELL,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
+    WORKSHOP,
     assert_reads,
     assert_refused,
 )
 
 FOUR = load_scene(ROOT / "examples/scenes/4-2.yaml")  # bottle, chips, cup, apple; Person A, B
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips; Alice, Bob
+DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")  # bottle, chips; Person A, B
 
 # -- 'the Xs, sorry, just the one' (normalise.py _narrowed_to_one) ------------------------------
 
@@ -148,3 +152,57 @@ def test_finish_already() -> None:
     # more after it, or something to finish: not taken off
     assert_refused("Give Person A the cup, then finish the apple", FOUR)
     assert_refused("Give Person A the cup, finish already, and the apple to me", FOUR)
+
+
+# -- the speaker's own times and places in a remark (normalise.py _SPEAKER_TIMES) ----------------
+
+
+def test_speaker_times_are_not_held() -> None:
+    assert_reads("Give Person B the chips, I'm off to the next job", "chips>B", FOUR)
+    assert_reads(
+        "Right, I'm the midwife, I've been on since seven last night, so, um, bear with me. Could"
+        " you pop the bowl in the sink for us, pet? Ta.",
+        "bowl@sink",
+        LAB,
+    )
+    assert_reads("Give Jess the torch, I'm from the unit next door", "torch>B", WORKSHOP)
+    # an object word after 'next' / 'last', or a verb of giving or wanting: still held (refused)
+    assert_refused("Give Person B the chips, I'll take the next one", FOUR)
+    assert_refused("Give Person B the chips, I'll have the last one", FOUR)
+    assert_refused("Give Person B the chips, I need the bottle next", FOUR)
+    assert_refused("Give Person B the chips, I'm off to the next job with the cup", FOUR)
+
+
+# -- urging after the last request (normalise.py _URGED28S) ------------------------------------
+
+
+def test_be_quick_about_it() -> None:
+    assert_reads(
+        "Give Person B the chips and Person A the bottle and be quick about it as I'm off to the "
+        "next job.",
+        "chips>B & bottle>A",
+        FOUR,
+    )
+    assert_reads("Give Person B the chips, be quick about it.", "chips>B", FOUR)
+    assert_reads("Give Person B the chips. Chop chop!", "chips>B", FOUR)
+    # more after it: not taken off
+    assert_refused("Give Person B the chips and be quick about it, the bottle too", FOUR)
+
+
+# -- 'the pair of them', 'the pair, X and Y' (normalise.py _counts19, _pair_listed28s) ----------
+
+
+def test_the_pair() -> None:
+    assert_reads("Both items to Person B, the pair of them.", "bottle>B & chips>B", DUO)
+    assert_reads("The bottle and the chips to Person B, the pair of them.", "bottle>B & chips>B")
+    assert_reads(
+        "Person A's having the pair, bottle and chips together.", "bottle>A & chips>A", DUO
+    )
+    assert_reads("Give Person A the pair, the bottle and the apple", "bottle>A & apple>A", FOUR)
+    # 'the pair of them' after one object, or after three: refused
+    assert_refused("The bottle to Person B, the pair of them.", DUO)
+    assert_refused("The bottle and the chips and the cup to Person B, the pair of them.", FOUR)
+    # the list must be two objects, whole
+    assert_refused("Person A gets the pair, bottle and Person B.", DUO)
+    assert_refused("Person A gets the pair, bottle and bottle.", DUO)
+    assert_refused("Person A gets the pair, the bottle and the cup and the apple.", FOUR)

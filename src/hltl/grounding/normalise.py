@@ -7652,6 +7652,27 @@ _SPEAKER_HELD = re.compile(
     r"as well|only one)\b|\d",
     _F,
 )
+# Session 28 (12s): a time or a place of the speaker's own said with 'next' / 'last' / 'first' /
+# 'till' ("I've got four minutes till my next run", "I'm off to the next job", "I've been on since
+# seven last night", "from the unit next door", "since first light") orders nothing the request
+# asks: such a phrase is not a held word of the stretch. Its noun must not be a word that could
+# stand for an object ('the next one', 'the last thing', 'the next item'); the stretch must still
+# name nothing in the scene.
+_SPEAKER_TIMES = re.compile(
+    r"\b(?:(?:till|until|before|after|since|for|to) )?(?:the|my|our|his|her|their|this) "
+    r"(?:next|last) (?!(?:ones?|things?|items?|bits?|lot|rest|others?|person|people)\b)"
+    r"[a-z]+\b|\b(?:since )?(?:last|next) (?:night|week|month|year|door)\b|"
+    r"\b(?:since )?first (?:light|thing)\b",
+    _F,
+)
+
+
+def _held_but_times(piece: str) -> bool:
+    """Whether ``piece`` holds a word of _SPEAKER_HELD outside the speaker's own times and places
+    (_SPEAKER_TIMES)."""
+    return bool(_SPEAKER_HELD.search(_SPEAKER_TIMES.sub(" ", piece)))
+
+
 # what may open the sentence of such a stretch, taken off with it
 _SPEAKER_OPENER = re.compile(
     r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
@@ -7688,7 +7709,7 @@ def _speaker_stretch(
     their own things or a sentence that asks nothing), naming nothing in the scene and asking
     nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
+    if not piece or _held_but_times(piece) or not _names_nothing(piece, lexicon):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
@@ -8066,13 +8087,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         before = out[: m.start()]
         said = _ids(re.split(r"[.!?;]", before)[-1], lexicon, "object")
         word = m.group(1).lower()
-        need = {"both": 2, "the two": 2, "the three": 3, "the four": 4, "all three": 3}.get(word)
+        need = {"both": 2, "the two": 2, "the pair": 2, "the three": 3, "the four": 4}.get(word)
+        need = 3 if word == "all three" else need
         if not said or (need is not None and len(said) != need) or len(said) < 2:
             return m.group(0)
         return "" if m.group(2) == "," else m.group(2)
 
     out = _sub(
-        r",\s*(all|both|the two|the three|the four|every one|each one|all three) of them\b"
+        r",\s*(all|both|the two|the pair|the three|the four|every one|each one|all three) of "
+        r"them\b"
         r"\s*(,|(?=[.!?]|$))",
         counted,
         out,
@@ -9203,6 +9226,28 @@ def _object_first28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'the pair, <X> and <Y> (together / both / alike)' at the end ("Person A's
+    having the pair, bottle and chips together"): the two objects listed stand for 'the pair'.
+    The list must be two names of the scene's objects, whole, and nothing else."""
+
+    def listed(m: re.Match[str]) -> str:
+        first, second = m["first"], m["second"]
+        if not (_whole_name(first, lexicon, "object") and _whole_name(second, lexicon, "object")):
+            return m[0]
+        if _ids(first, lexicon, "object") == _ids(second, lexicon, "object"):
+            return m[0]
+        return f"{first} and {second}{m['end']}"
+
+    return _sub(
+        r"\bthe pair,\s*(?P<first>(?:the )?[a-z]+(?: [a-z]+)?) and (?P<second>(?:the )?[a-z]+"
+        r"(?: (?!together|both|alike|as well)[a-z]+)?)(?: (?:together|both|alike|as well))?"
+        r"(?P<end>\s*[.!]?\s*)$",
+        listed,
+        text,
+    )
+
+
 # Session 28 (12s): 'finish already', 'then finish', 'and that's finished' after the last request:
 # the speaker saying the list is over (asks nothing)
 _FINISHED28S = (
@@ -9211,9 +9256,17 @@ _FINISHED28S = (
 )
 
 
+# 'and be quick about it', 'look sharp', 'chop chop' after the last request: urging (asks nothing)
+_URGED28S = (
+    r"(?:,\s*|\s+and\s+|\s*[.!]\s+)(?:be quick(?: about it)?|look sharp|chop,? chop|make it "
+    r"snappy|get a move on)\s*(?=[.!]?\s*$)"
+)
+
+
 def _finished28s(text: str, lexicon: Lexicon) -> str:
-    """Session 28 (12s): 'finish already' after the last request (_FINISHED28S), taken off."""
-    return _drop(_FINISHED28S, text, lexicon)
+    """Session 28 (12s): 'finish already' (_FINISHED28S) and urging (_URGED28S) after the last
+    request, taken off."""
+    return _drop(_URGED28S, _drop(_FINISHED28S, text, lexicon), lexicon)
 
 
 # A description of objects, then the list of the objects it describes ("The two drinks, bottle
@@ -9513,4 +9566,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _described_list27,
     _object_first28s,
     _finished28s,
+    _pair_listed28s,
 )
