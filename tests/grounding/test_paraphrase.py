@@ -221,7 +221,6 @@ KNOWN_MISSES = frozenset(
         "We reported the cup was going to Person A. Correction: it's the apple.",
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
-        "Can help me give Alice the crisps or not?",
         "Cart the grey blanket over to Mr Lee.",
         "Both of the smaller boxes to Tom.",
         "Both plates are for Marco this morning!",
@@ -495,8 +494,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        'Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank '
-        'you ah, very good.',
         "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
         "Um, if it's all the same to you, the bottle over to Person B, please. Ta ever so.",
         "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
@@ -581,7 +578,6 @@ KNOWN_MISSES = frozenset(
         'chios for Person B lah, she asked me just now',
         'Put the stspler in the box, I need the desk clear for the cloth.',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
-        'Boss, the bottle, can pass to Person B or not ah?',
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',

@@ -206,3 +206,28 @@ def test_the_pair() -> None:
     assert_refused("Person A gets the pair, bottle and Person B.", DUO)
     assert_refused("Person A gets the pair, bottle and bottle.", DUO)
     assert_refused("Person A gets the pair, the bottle and the cup and the apple.", FOUR)
+
+
+# -- 'can … or not?', 'sorry, disturb you' (normalise.py _or_not28s, _disturb28s) ---------------
+
+
+def test_can_or_not() -> None:
+    assert_reads("Can help me give Alice the crisps or not?", "chips>A", TWO)
+    assert_reads("Give Alice the crisps, can or not?", "chips>A", TWO)
+    assert_reads("Boss, the bottle, can pass to Person B or not ah?", "bottle>B", DUO)
+    # no 'can': a question whether, refused; the speaker as recipient stays refused
+    assert_refused("Should Person B have the bottle or not?", DUO)
+    assert_refused("Can you give me the crisps or not?", TWO)
+    # not at the end of the question: a negation, refused
+    assert_refused("Can Person B have the bottle or not? Give it to Person A.", DUO)
+
+
+def test_sorry_disturb_you() -> None:
+    assert_reads(
+        "Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank "
+        "you ah, very good.",
+        "bottle>A",
+        DUO,
+    )
+    # between a request and its correction: still a correction cue, refused
+    assert_refused("The bottle to Person A, sorry, disturb you, Person B", DUO)

@@ -9248,6 +9248,28 @@ def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _disturb28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "sorry ah, disturb you a bit" (Singapore English) is "sorry to disturb
+    you a bit", the apology the openers know (_BOTHERING)."""
+    return _sub(
+        r"\bsorry(?: (?:ah|lah|leh))?,?\s+(?=disturb(?:ing)? you\b)",
+        "sorry to ",
+        text,
+    )
+
+
+def _or_not28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a request asked with 'can … or not?' (Singapore English: "Can help me
+    give Alice the crisps or not?", "the bottle, can pass to Person B or not ah?") is the request
+    asked with 'can …?': 'or not' is taken off. Only after 'can' in the same sentence, at the end
+    of a question: "Should Alice have the crisps or not?" asks whether, and stays a question."""
+    return _sub(
+        r"(\bcan\b[^.!?]*?)\s*,?\s+or not(?: (?:ah|lah|leh|one))?\s*(\?)\s*$",
+        r"\1\2",
+        text,
+    )
+
+
 # Session 28 (12s): 'finish already', 'then finish', 'and that's finished' after the last request:
 # the speaker saying the list is over (asks nothing)
 _FINISHED28S = (
@@ -9515,6 +9537,8 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _or_not28s,
+    _disturb28s,
     _idioms27r,
     _both_for27r,
     _included27r,
