@@ -231,3 +231,24 @@ def test_sorry_disturb_you() -> None:
     )
     # between a request and its correction: still a correction cue, refused
     assert_refused("The bottle to Person A, sorry, disturb you, Person B", DUO)
+
+
+# -- "<person>'s to get …", 'gets the two of them', 'both, X and Y alike' (_is_to28s) ----------
+
+
+def test_is_to_get() -> None:
+    assert_reads("Person B's to get the chips", "chips>B", DUO)
+    assert_reads(
+        "Aye aye, Person A's to have both, bottle and chips alike.", "bottle>A & chips>A", DUO
+    )
+    assert_reads("Bob is to have the two of them, bottle and crisps.", "bottle>B & chips>B", TWO)
+    assert_reads("Person A gets the two of them, bottle and chips both.", "bottle>A & chips>A", DUO)
+    assert_reads(
+        "Apart from the red one, Sam's to get the pens.", "pen_black>B & pen_blue>B", OFFICE
+    )
+    # an object before "'s to": no person, not read; 'the two of them' after 'give' are people
+    assert_refused("The bottle's to go to Person A, no, Person B, or not", DUO)
+    assert_refused("Give the two of them the bottle", TWO)
+    assert_refused("Person A's to have nothing", DUO)
+    # the list after 'both' must be two objects
+    assert_refused("Give Person A both, bottle and Person B", DUO)

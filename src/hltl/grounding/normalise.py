@@ -9227,8 +9227,9 @@ def _object_first28s(text: str, lexicon: Lexicon) -> str:
 
 
 def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
-    """Session 28 (12s): 'the pair, <X> and <Y> (together / both / alike)' at the end ("Person A's
-    having the pair, bottle and chips together"): the two objects listed stand for 'the pair'.
+    """Session 28 (12s): 'the pair / both, <X> and <Y> (together / both / alike)' at the end
+    ("Person A's having the pair, bottle and chips together", "Person A's to have both, bottle and
+    chips alike"): the two objects listed stand for 'the pair' / 'both'.
     The list must be two names of the scene's objects, whole, and nothing else."""
 
     def listed(m: re.Match[str]) -> str:
@@ -9240,12 +9241,33 @@ def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
         return f"{first} and {second}{m['end']}"
 
     return _sub(
-        r"\bthe pair,\s*(?P<first>(?:the )?[a-z]+(?: [a-z]+)?) and (?P<second>(?:the )?[a-z]+"
-        r"(?: (?!together|both|alike|as well)[a-z]+)?)(?: (?:together|both|alike|as well))?"
+        r"\b(?:the pair|both),\s*(?P<first>(?:the )?[a-z]+(?: [a-z]+)?) and "
+        r"(?P<second>(?:the )?[a-z]+(?: (?!together|both|alike|as well)[a-z]+)?)"
+        r"(?: (?:together|both|alike|as well))?"
         r"(?P<end>\s*[.!]?\s*)$",
         listed,
         text,
     )
+
+
+def _is_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s to get / have …' ("Person B's to get both"; 's before 'to' is
+    'is', as a possessive cannot stand there) and '<person> is to have …' are '<person> gets …';
+    'gets / has the two of them' (the objects: the person is named as the subject) is 'gets
+    both'. The person must be one of the scene's, whole."""
+
+    def gets(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        return f"{m['who']} gets"
+
+    out = _sub(
+        r"\b(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?:'s| is) to "
+        r"(?:get|have|receive)\b",
+        gets,
+        text,
+    )
+    return _sub(r"\b(gets|has|receives|takes) the two of them\b", r"\1 both", out)
 
 
 def _disturb28s(text: str, _lexicon: Lexicon) -> str:
@@ -9590,5 +9612,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _described_list27,
     _object_first28s,
     _finished28s,
+    _is_to28s,
     _pair_listed28s,
 )
