@@ -350,7 +350,6 @@ KNOWN_MISSES = frozenset(
         "Dana's desperate for the banana, she hasn't eaten since six this morning.",
         "Tom's after the barcode scanner, his own one has died on him.",
         "See the notepad by the phone? Drop it in the box.",
-        "Mia's got the scanner down on her checklist. Could you run it over to her?",
         "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
         "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
@@ -640,7 +639,6 @@ KNOWN_MISSES = frozenset(
         'The chips are meant for Peraon A, could you take them over.',
         'Put the bnana on the tray next to the films, ta.',
         'Drop the scnner on the belt before the next load comes down.',
-        "Will you run the bottle up to Person B for me, he's at the top of the field?",
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")

@@ -252,3 +252,26 @@ def test_is_to_get() -> None:
     assert_refused("Person A's to have nothing", DUO)
     # the list after 'both' must be two objects
     assert_refused("Give Person A both, bottle and Person B", DUO)
+
+
+# -- 'run X (up) to P', 'whizz' (normalise.py _run_to28s, lexicon.py) ---------------------------
+
+
+def test_run_it_over() -> None:
+    assert_reads("Run the bottle up to Person B", "bottle>B", DUO)
+    assert_reads(
+        "Will you run the bottle up to Person B for me, he's at the top of the field?",
+        "bottle>B",
+        DUO,
+    )
+    assert_reads(
+        "Mia's got the scanner down on her checklist. Could you run it over to her?",
+        "scanner>A",
+        DEPOT,
+    )
+    assert_reads("Could you whizz the chips over to Person A", "chips>A", DUO)
+    assert_reads("Person A is running late, give her the chips", "chips>A", DUO)
+    # no carrying: refused as before
+    assert_refused("The chips ran to Person B", DUO)
+    assert_refused("I'll run it to her", DEPOT)
+    assert_refused("Run the numbers to Person B", DUO)

@@ -9270,6 +9270,31 @@ def _is_to28s(text: str, lexicon: Lexicon) -> str:
     return _sub(r"\b(gets|has|receives|takes) the two of them\b", r"\1 both", out)
 
 
+_PRONOUNS28S = frozenset({"him", "her", "them"})
+
+
+def _run_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'run <objects> (up / down / over / across) to <person or surface>' ("Will
+    you run the bottle up to Person B"): carrying it there quickly, 'bring'. Only the verb said
+    as a request (plain 'run', first in its clause or after 'you' / 'to' / 'please'), its object
+    the scene's objects and nothing else, or 'it' / 'them' (resolved as for 'bring'): 'the foley
+    session ran long', 'the tap is running', "I'll run the numbers" are no carrying."""
+
+    def brought(m: re.Match[str]) -> str:
+        said = m["what"].lower() in ("it", "them") or _objects_only(m["what"], lexicon)
+        if not said or not (m["where"].lower() in _PRONOUNS28S or _names(m["where"], lexicon)):
+            return m[0]
+        return f"{m['lead']}bring {m['what']}{m['dir']} to {m['where']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*|\b(?:you|to|please) ))run (?P<what>it|them|(?:the|that|"
+        r"this|those|these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to "
+        r"(?P<where>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|$|\s(?:for|please|now)\b))",
+        brought,
+        text,
+    )
+
+
 def _disturb28s(text: str, _lexicon: Lexicon) -> str:
     """Session 28 (12s): "sorry ah, disturb you a bit" (Singapore English) is "sorry to disturb
     you a bit", the apology the openers know (_BOTHERING)."""
@@ -9614,4 +9639,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _finished28s,
     _is_to28s,
     _pair_listed28s,
+    _run_to28s,
 )
