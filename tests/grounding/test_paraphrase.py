@@ -585,7 +585,6 @@ KNOWN_MISSES = frozenset(
         'through, thanks.',
         "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
         'grateful.',
-        'Lovely, ta, the lemon to the chef please, he wants it with the hake.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
         'Carol would like to have the blue mug, and Bob also the apple, he told me before.',

@@ -275,3 +275,16 @@ def test_run_it_over() -> None:
     assert_refused("The chips ran to Person B", DUO)
     assert_refused("I'll run it to her", DEPOT)
     assert_refused("Run the numbers to Person B", DUO)
+
+
+# -- 'he wants it with the hake' (normalise.py _wanted_with28s) ---------------------------------
+
+
+def test_wanted_with() -> None:
+    assert_reads(
+        "Lovely, ta, the lemon to the chef please, he wants it with the hake.", "lemon>A", KITCHEN
+    )
+    # with an object of the scene: that asks for it too, refused; a word pointing back: refused
+    assert_refused("the lemon to the chef please, he wants it with the salt.", KITCHEN)
+    assert_refused("the lemon to the chef please, he wants it with the other one.", KITCHEN)
+    assert_refused("the lemon to the chef please, he wants it with the fish and the salt.", KITCHEN)

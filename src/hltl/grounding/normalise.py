@@ -9270,6 +9270,24 @@ def _is_to28s(text: str, lexicon: Lexicon) -> str:
     return _sub(r"\b(gets|has|receives|takes) the two of them\b", r"\1 both", out)
 
 
+def _wanted_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '(he / she / they) wants / needs it with the <food or the like>' at the
+    end of a clause ("the lemon to the chef please, he wants it with the hake"): what the object
+    goes with, as 'for the hake' (_purpose), taken off when it names nothing in the scene (nor
+    by a typo) and holds no word that counts, chooses or points back; 'with the salt' (an object
+    of the scene) asks for it too, and stays."""
+    return _sub(
+        r"\b((?:he|she|they) (?:wants?|needs?|would like|'d like) (?:it|them)) with (?:the|his|"
+        r"her|their|a|an|some) ([a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.;!?]|$))",
+        lambda m: (
+            m.group(1)
+            if _names_nothing(m.group(2), lexicon) and not _KEEP_WORDS.search(m.group(2))
+            else m.group(0)
+        ),
+        text,
+    )
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9640,4 +9658,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _is_to28s,
     _pair_listed28s,
     _run_to28s,
+    _wanted_with28s,
 )
