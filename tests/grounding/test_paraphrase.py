@@ -696,7 +696,6 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",
-        "Person B's been mending sails, give him the chiips.",
         "Persoon A's been asking for the apple since her shift began.",
         "Person A says she's peckish, the chhips please.",
         "The stapller lives in the box, put it back there please.",

@@ -288,3 +288,17 @@ def test_wanted_with() -> None:
     assert_refused("the lemon to the chef please, he wants it with the salt.", KITCHEN)
     assert_refused("the lemon to the chef please, he wants it with the other one.", KITCHEN)
     assert_refused("the lemon to the chef please, he wants it with the fish and the salt.", KITCHEN)
+
+
+# -- "<person>'s been mending sails, give him …" (normalise.py _busy_with28s) -------------------
+
+
+def test_busy_with() -> None:
+    assert_reads("Person B's been mending sails, give him the chiips.", "chips>B", FOUR)
+    assert_reads("Person B has been framing prints, give him the cup.", "cup>B", FOUR)
+    # a remark about one person, the request for the other: read as said
+    assert_reads("Person B's been mending sails, the chips to Person A", "chips>A", FOUR)
+    # naming an object of the scene, or a word pointing back: refused
+    assert_refused("Person B's been mending the cup, give him the chips.", FOUR)
+    assert_refused("Person B's been eating apples, give him the chips.", FOUR)
+    assert_refused("Person B's been mending sails for the other one, give him the chips.", FOUR)

@@ -9288,6 +9288,40 @@ def _wanted_with28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -ing words that say what the person wants, not what they are busy with
+_WANTING28S = frozenset(
+    {
+        *("asking", "waiting", "wanting", "looking", "hoping", "begging", "calling", "shouting"),
+        *("dying", "gasping", "longing", "pining", "crying", "going", "getting", "having"),
+        *("needing", "eyeing", "eying", "angling", "expecting", "saving", "keeping", "using"),
+    }
+)
+
+
+def _busy_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s been / is <verb>ing <a few words>,' before the request
+    ("Person B's been mending sails, give him the chips"): what the person is busy with says why,
+    as "Person B is busy, give him …" (read before), and is read as that when the words after
+    the -ing word name nothing in the scene (nor by a typo) and hold no word that counts, chooses
+    or points back, and the -ing word is no verb of the grammar and says no want ('asking',
+    'waiting', 'looking', …). The person stays, for 'him' / 'her' after it."""
+
+    def busy(m: re.Match[str]) -> str:
+        ing, what = m["ing"].lower(), m["what"]
+        if ing in VERBS or ing in _WANTING28S or not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(what, lexicon) or _KEEP_WORDS.search(what):
+            return m[0]
+        return f"{m['who']} is busy,"  # ('mending' alone is one edit from 'sending')
+
+    return _sub(
+        r"^(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?P<be>'s been| has been| is| "
+        r"was) (?P<ing>[a-z]+ing) (?P<what>[a-z]+(?: [a-z]+){0,2}),",
+        busy,
+        text,
+    )
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9659,4 +9693,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _pair_listed28s,
     _run_to28s,
     _wanted_with28s,
+    _busy_with28s,
 )
