@@ -678,7 +678,6 @@ KNOWN_MISSES = frozenset(
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
-        "Both cups in the sink, please, they've had sample dye in them.",
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
@@ -696,9 +695,7 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",
-        "Persoon A's been asking for the apple since her shift began.",
         "Person A says she's peckish, the chhips please.",
-        "The stapller lives in the box, put it back there please.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "

@@ -302,3 +302,22 @@ def test_busy_with() -> None:
     assert_refused("Person B's been mending the cup, give him the chips.", FOUR)
     assert_refused("Person B's been eating apples, give him the chips.", FOUR)
     assert_refused("Person B's been mending sails for the other one, give him the chips.", FOUR)
+
+
+# -- 'lives in', 'since her shift began', "they've had dye in them" ------------------------------
+
+
+def test_lives_in_since_had_in() -> None:
+    assert_reads("The stapller lives in the box, put it back there please.", "stapler@box", OFFICE)
+    assert_reads("The stapler lives in the box.", "stapler@box", OFFICE)
+    assert_reads("Persoon A's been asking for the apple since her shift began.", "apple>A", FOUR)
+    assert_reads(
+        "Both cups in the sink, please, they've had sample dye in them.",
+        "cup_green@sink & cup_white@sink",
+        LAB,
+    )
+    # a person does not live on a surface; an object of the scene named, or more after: refused
+    assert_refused("Priya lives in the box", OFFICE)
+    assert_refused("Person A's been asking for the apple since the cup started.", FOUR)
+    assert_refused("Both cups in the sink, please, they've had the banana in them.", LAB)
+    assert_refused("Both cups in the sink, please, they've had dye in them, and the bowl", LAB)

@@ -198,6 +198,7 @@ for _lemma, _forms in {
     "deposit": ("deposits", "depositing", "deposited"),
     "dump": ("dumps", "dumping", "dumped"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
+    "live": ("lives",),  # session 28: "The stapler lives in the box" (where it is kept)
 }.items():
     _verb(_lemma, "put", *_forms)
 # pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")

@@ -9384,10 +9384,25 @@ _URGED28S = (
 )
 
 
+# 'since her shift began' after a want; "they've had sample dye in them" after a placement of
+# them: when the want began, why the objects go there (each names nothing in the scene)
+_SINCE28S = (
+    r"\s+since (?:her|his|their|my|our|the) [a-z]+(?: [a-z]+)? (?:began|started|opened|came on)"
+    r"(?=\s*[.!]?\s*$)"
+)
+_HAD_IN28S = (
+    r",\s*(?:they've|they have|it's|it has) (?:had|got) (?:[a-z]+ ){1,3}(?:in|on) (?:them|it)"
+    r"(?=\s*[.!]?\s*$)"
+)
+
+
 def _finished28s(text: str, lexicon: Lexicon) -> str:
-    """Session 28 (12s): 'finish already' (_FINISHED28S) and urging (_URGED28S) after the last
-    request, taken off."""
-    return _drop(_URGED28S, _drop(_FINISHED28S, text, lexicon), lexicon)
+    """Session 28 (12s): 'finish already' (_FINISHED28S), urging (_URGED28S), 'since her shift
+    began' (_SINCE28S) and "they've had dye in them" (_HAD_IN28S) after the last request, taken
+    off when they name nothing in the scene."""
+    for said in (_FINISHED28S, _URGED28S, _SINCE28S, _HAD_IN28S):
+        text = _drop(said, text, lexicon)
+    return text
 
 
 # A description of objects, then the list of the objects it describes ("The two drinks, bottle
