@@ -321,3 +321,23 @@ def test_lives_in_since_had_in() -> None:
     assert_refused("Person A's been asking for the apple since the cup started.", FOUR)
     assert_refused("Both cups in the sink, please, they've had the banana in them.", LAB)
     assert_refused("Both cups in the sink, please, they've had dye in them, and the bowl", LAB)
+
+
+# -- two wrong readings the fuzz met on main 22ad877 (seed 31, every 7th entry) ------------------
+
+
+def test_header_list_is_only_objects() -> None:
+    # "Two things for Alice: …": the list must be only the objects ('we need …' is the speaker's)
+    assert_refused("Two things for Alice: the cup, and we need the water bottle")
+    assert_reads("Two things for Alice: the cup, and the water bottle", "cup>A & bottle>A")
+    assert_reads(
+        "Two things on the shelf: the red mug and the blue mug", "mug_red@shelf & mug_blue@shelf"
+    )
+
+
+def test_indifference_keeps_what_follows() -> None:
+    said = "Doesn't matter to me if it's Person A or Person B that ends up with the chips."
+    assert_reads(said, "chips>A | chips>B", FOUR)
+    assert_reads(said + " Thanks.", "chips>A | chips>B", FOUR)
+    # a closer naming a person after it was dropped with the rest of the text: now kept, refused
+    assert_refused(said + " That's all from me and Person A.", FOUR)

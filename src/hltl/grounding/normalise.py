@@ -3734,7 +3734,9 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
         r"(.+?)\s*([.!]?)$"
     ).match(s)
     if m is not None:
-        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()]:
+        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()] and (
+            _plain_list28s(m.group(3), lexicon)
+        ):
             return f"{m.group(3)} {m.group(2)}{m.group(4)}"
         return text
     # "Lena's getting two things today, the lemon and the knife", "Sam wants two pens, the blue
@@ -3800,6 +3802,16 @@ def _shares(listed: str, lexicon: Lexicon) -> dict[str, list[str]]:
         else:
             return {}
     return out
+
+
+def _plain_list28s(listed: str, lexicon: Lexicon) -> bool:
+    """Whether ``listed`` is only names of the scene's objects, joined by commas, 'and' and
+    articles (session 28, 12s: "Two things for Alice: the cup, and we need the water bottle" had
+    counted the speaker's want as the second thing, and read both for Alice)."""
+    rest = listed.lower()
+    for it in _names(listed, lexicon):
+        rest = rest.replace(it.text.lower(), " ", 1)
+    return set(re.findall(r"[a-z']+", rest)) <= {"the", "a", "an", "and", "both", "also"}
 
 
 def _objects_listed(listed: str, lexicon: Lexicon) -> list[str]:
@@ -9031,7 +9043,10 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
             and _only_kind(m.group(3), lexicon, "object")
         ):
-            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}"
+            # (session 28, 12s: what follows the sentence is kept — "… ends up with the chips.
+            # That's all from me and Person A." had lost its second sentence, and read)
+            rest = text[m.end() :]
+            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}{rest}"
     if "whichever" in low or "whoever" in low:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
