@@ -684,7 +684,6 @@ KNOWN_MISSES = frozenset(
         "chips to Person A.",
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
-        "Not apple. Bottle, for Person B, please. Madloba.",
         "Don't put it down anywhere, just hand the bottle to Person A.",
         "Anything that isn't the bottle, hand it to Person B.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
