@@ -335,7 +335,6 @@ KNOWN_MISSES = frozenset(
         "chuck the blue pen in the box its cluttering my desk",
         "cup to person a first please and once shes got it the apple goes to person b",
         "Lenq needs the salt for table four.",
-        "Alixe said she's peckish, the crisps are for her.",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
@@ -694,7 +693,6 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",
-        "Person A says she's peckish, the chhips please.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "

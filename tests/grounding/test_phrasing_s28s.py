@@ -355,3 +355,15 @@ def test_not_first_sentence() -> None:
     assert_refused("Not Person A. The bottle to Person B.", FOUR)
     assert_refused("Not apple. Bottle for Person B instead.", FOUR)
     assert_refused("Not apple. Bottle, for Person B, and the other for Person A.", FOUR)
+
+
+# -- "<person> says she's peckish, …" (normalise.py _says_she_is28s) ----------------------------
+
+
+def test_says_she_is() -> None:
+    assert_reads("Person A says she's peckish, the chhips please.", "chips>A", DUO)
+    assert_reads("Person A said that he's starving, give him the chips", "chips>A", DUO)
+    assert_reads("Person A says she's hungry, the chips to Person B.", "chips>B", DUO)
+    # a negation, or an object of the scene in what is said: refused
+    assert_refused("Person A says she's not hungry, the chips please.", DUO)
+    assert_refused("Person A says she's after the bottle, the chips please.", DUO)

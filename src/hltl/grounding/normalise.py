@@ -9355,6 +9355,28 @@ def _not_first28s(text: str, lexicon: Lexicon) -> str:
     return rest
 
 
+def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person> says / said (that) she's / he's / they're <a word or two>,'
+    opening the instruction ("Person A says she's peckish, the chips please"): the pronoun is
+    the one who says it (the subject of the reporting verb), so it is '<person> is <words>,'. The
+    words must name nothing in the scene and hold no counting or pointing word; the person must be
+    one whole name."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(m["how"], lexicon) or _KEEP_WORDS.search(m["how"]):
+            return m[0]
+        return f"{m['who']} is {m['how']},"
+
+    return _sub(
+        r"^(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?:says|said)(?: that)? "
+        r"(?:she's|she is|he's|he is|they're|they are) (?P<how>[a-z]+(?: [a-z]+)?),",
+        said,
+        text,
+    )
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9743,4 +9765,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _wanted_with28s,
     _busy_with28s,
     _not_first28s,
+    _says_she_is28s,
 )
