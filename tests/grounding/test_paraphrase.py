@@ -499,7 +499,6 @@ KNOWN_MISSES = frozenset(
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
         "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        'Person A want bottle, krap, and Person B want chips. Please you give both.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",

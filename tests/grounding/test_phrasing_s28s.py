@@ -367,3 +367,24 @@ def test_says_she_is() -> None:
     # a negation, or an object of the scene in what is said: refused
     assert_refused("Person A says she's not hungry, the chips please.", DUO)
     assert_refused("Person A says she's after the bottle, the chips please.", DUO)
+
+
+# -- 'Please you give both.' after two wants (normalise.py _give_both28s) ------------------------
+
+
+def test_give_both_after_two_wants() -> None:
+    assert_reads(
+        "Person A want bottle, krap, and Person B want chips. Please you give both.",
+        "bottle>A & chips>B",
+        FOUR,
+    )
+    assert_reads(
+        "Person A wants the bottle. Person B wants the chips. Give both, please.",
+        "bottle>A & chips>B",
+        FOUR,
+    )
+    # one object said, or three: 'both' does not say which, refused
+    assert_refused("Person A wants the bottle. Please give both.", FOUR)
+    assert_refused(
+        "Person A wants the bottle, Person B the chips, Person A the cup. Please give both.", FOUR
+    )

@@ -9377,6 +9377,24 @@ def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _give_both28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a last sentence 'Please (you) give both.' after two objects were each
+    said to be for someone ("Person A want bottle, and Person B want chips. Please you give
+    both."): doing what was said, nothing more; taken off when what comes before names exactly
+    two objects and says who has each (a 'for' / 'to' or a want verb per object)."""
+    m = _rx(
+        r"^(?P<said>.+?[.!])\s+(?:please,?\s+)?(?:you\s+)?(?:give|do|deliver|hand over|sort out)"
+        r" (?:both|them both|both of them|the two)(?:,?\s*please)?\s*[.!]?\s*$"
+    ).match(text)
+    if m is None:
+        return text
+    said = m["said"]
+    wants = len(re.findall(r"\b(?:wants?|needs?|for|to|gets?)\b", said, _F))
+    if len(_ids(said, lexicon, "object")) != 2 or wants < 2 or not _ids(said, lexicon, "human"):
+        return text
+    return said
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9766,4 +9784,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _busy_with28s,
     _not_first28s,
     _says_she_is28s,
+    _give_both28s,
 )
