@@ -514,7 +514,6 @@ KNOWN_MISSES = frozenset(
         'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        'Chips for Person B lah, and the cup, Person A can have that one.',
         "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         "Person A's over there mending the nets. Take her the bottle, will you.",

@@ -388,3 +388,16 @@ def test_give_both_after_two_wants() -> None:
     assert_refused(
         "Person A wants the bottle, Person B the chips, Person A the cup. Please give both.", FOUR
     )
+
+
+# -- '…, and the cup, Person A can have that one' (normalise.py _dislocated28s) ------------------
+
+
+def test_object_taken_up_again() -> None:
+    said = "Chips for Person B lah, and the cup, Person A can have "
+    assert_reads(said + "that one.", "chips>B & cup>A", FOUR)
+    assert_reads(said + "it.", "chips>B & cup>A", FOUR)
+    # no 'and' before the object: which one 'that one' is stays open, refused; a plural the scene
+    # has one of: refused
+    assert_refused("Chips for Person B, the cup, Person A can have that one.", FOUR)
+    assert_refused("Chips for Person B, and the cups, Person A can have that one.", FOUR)

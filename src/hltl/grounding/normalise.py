@@ -9395,6 +9395,28 @@ def _give_both28s(text: str, lexicon: Lexicon) -> str:
     return said
 
 
+def _dislocated28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): an object said first, then a clause taking it up again with 'it' / 'that
+    one' ("…, and the cup, Person A can have that one"): the pronoun is the object just said (a
+    left dislocation), so '<person> can have <object>'. The object must be one whole name of the
+    scene, said right after the start, a full stop or ', and'; the person one whole name."""
+
+    def taken_up(m: re.Match[str]) -> str:
+        if not _whole_name(m["what"], lexicon, "object"):
+            return m[0]
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        return f"{m['lead']}{m['who']} {m['verb']} {m['what']}"
+
+    return _sub(
+        r"(?P<lead>^|(?<=[.!?])\s+|,\s*and\s+)(?P<what>the [a-z]+(?: [a-z]+)?),\s*"
+        r"(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?P<verb>can have|gets|"
+        r"should get|can take) (?:it|that one|that)\b",
+        taken_up,
+        text,
+    )
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9785,4 +9807,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_first28s,
     _says_she_is28s,
     _give_both28s,
+    _dislocated28s,
 )
