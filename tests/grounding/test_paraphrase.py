@@ -437,7 +437,6 @@ KNOWN_MISSES = frozenset(
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Give Carol one of the mugs, she really doesn't care which.",
-        "Either of them can have the chips, Alice or Bob, makes no odds.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
@@ -535,7 +534,6 @@ KNOWN_MISSES = frozenset(
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Noah or Zoe can have the globe, either one, they're both doing the project.",
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
@@ -602,7 +600,6 @@ KNOWN_MISSES = frozenset(
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
-        "Either of them can have the chips, doesn't bother me which.",
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',

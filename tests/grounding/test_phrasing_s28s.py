@@ -18,6 +18,7 @@ from tests.grounding.helpers import (
     NURSERY,
     OFFICE,
     ROOT,
+    WARD,
     WORKSHOP,
     assert_reads,
     assert_refused,
@@ -401,3 +402,23 @@ def test_object_taken_up_again() -> None:
     # has one of: refused
     assert_refused("Chips for Person B, the cup, Person A can have that one.", FOUR)
     assert_refused("Chips for Person B, and the cups, Person A can have that one.", FOUR)
+
+
+# -- 'I don't suppose it matters which', 'Either of them can have …' (_matters_which28s, …) -----
+
+
+def test_matters_which_and_either_of_them() -> None:
+    assert_reads(
+        "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
+        "(blanket_blue>B & blanket_grey>C) | (blanket_grey>B & blanket_blue>C)",
+        WARD,
+    )
+    assert_reads("Either of them can have the chips.", "chips>A | chips>B", DUO)
+    assert_reads(
+        "Either of them can have the chips, doesn't bother me which.", "chips>A | chips>B", DUO
+    )
+    # three people: 'them' could be any two, refused; not a receiving verb: refused
+    assert_refused("Either of them can have the jug.", WARD)
+    assert_refused("Either of them can go on the shelf", DUO)
+    # the speaker's own want is no choice tail
+    assert_refused("Give Mr Lee a blanket, I don't suppose I need the jug.", WARD)

@@ -9442,6 +9442,37 @@ def _run_to28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _matters_which28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "I don't suppose / think it matters which (colour)" and "doesn't bother
+    me which" are "it doesn't matter which (colour)", the choice tail the grammar reads (the
+    speaker leaving the choice open)."""
+    text = _sub(
+        r"\b(?:it )?(?:doesn't|does not) bother me (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+    return _sub(
+        r"\bi (?:don't|do not) (?:suppose|think|reckon|imagine|expect) it (?:matters|'ll matter|"
+        r"will matter) (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+
+
+def _either_of_them28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'Either of them can have / gets …' opening the instruction, in a scene
+    of exactly two people, with no one named before it: 'them' are the two people (the receiving
+    verb says so), so 'Either of the two people …', which the grammar reads as one or the
+    other."""
+    if len(lexicon.scene.humans) != 2:
+        return text
+    return _sub(
+        r"^either of them (?=(?:can have|gets|can take|should get|should have|may have)\b)",
+        "Either of the two people ",
+        text,
+    )
+
+
 def _disturb28s(text: str, _lexicon: Lexicon) -> str:
     """Session 28 (12s): "sorry ah, disturb you a bit" (Singapore English) is "sorry to disturb
     you a bit", the apology the openers know (_BOTHERING)."""
@@ -9748,6 +9779,8 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _or_not28s,
     _disturb28s,
+    _matters_which28s,
+    _either_of_them28s,
     _idioms27r,
     _both_for27r,
     _included27r,
