@@ -589,9 +589,7 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen left in the box, she'll sort it out later.",
         "Kofi wants the hammer, mine's still in the forge.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
-        'Person A gets the bottle, and the cup as well, give them to her together.',
         "You see that bottle by your elbow? Person A's to have it.",
-        'The scanner, stick it on the belt, and the tape with it.',
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
         "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
         'waiting.',

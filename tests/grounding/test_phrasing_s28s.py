@@ -422,3 +422,23 @@ def test_matters_which_and_either_of_them() -> None:
     assert_refused("Either of them can go on the shelf", DUO)
     # the speaker's own want is no choice tail
     assert_refused("Give Mr Lee a blanket, I don't suppose I need the jug.", WARD)
+
+
+# -- '…, and the tape with it', 'give them to her together' (normalise.py _along_with28s) ------
+
+
+def test_along_with_it() -> None:
+    assert_reads(
+        "The scanner, stick it on the belt, and the tape with it.",
+        "scanner@conveyor & tape@conveyor",
+        DEPOT,
+    )
+    assert_reads("Give Tom the scanner, and the tape with it.", "scanner>B & tape>B", DEPOT)
+    assert_reads(
+        "Person A gets the bottle, and the cup as well, give them to her together.",
+        "bottle>A & cup>A",
+        FOUR,
+    )
+    # with another object, or more after it: refused
+    assert_refused("Put the scanner on the belt and the tape with the gloves", DEPOT)
+    assert_refused("Put the scanner on the belt and the tape with it, and Tom the gloves", DEPOT)

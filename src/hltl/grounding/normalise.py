@@ -9417,6 +9417,30 @@ def _dislocated28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _along_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): ', and the <object> with it / them' closing the instruction (the object
+    goes along with what was just placed or handed over: 'too'), and 'give them to <person>
+    together' (how, not what: 'together' taken off). The object must be one whole name."""
+
+    def along(m: re.Match[str]) -> str:
+        if not _whole_name(m["what"], lexicon, "object"):
+            return m[0]
+        return f"{m['lead']}{m['what']} too{m['end']}"
+
+    text = _sub(
+        r"(?P<lead>,?\s*\band )(?P<what>the [a-z]+(?: [a-z]+)?) with (?:it|them)"
+        r"(?P<end>\s*[.!]?\s*)$",
+        along,
+        text,
+    )
+    return _sub(
+        r"\b((?:give|hand|pass|bring|take) (?:them|both|the two of them|both of them) (?:over )?to "
+        r"(?:him|her|them|person [a-z]|[a-z]+)) together(?=\s*[.!]?\s*$)",
+        r"\1",
+        text,
+    )
+
+
 _PRONOUNS28S = frozenset({"him", "her", "them"})
 
 
@@ -9841,4 +9865,5 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _says_she_is28s,
     _give_both28s,
     _dislocated28s,
+    _along_with28s,
 )
