@@ -350,10 +350,9 @@ def test_indifference_keeps_what_follows() -> None:
 def test_not_first_sentence() -> None:
     assert_reads("Not apple. Bottle, for Person B, please. Madloba.", "bottle>B", FOUR)
     assert_reads("Not the apple. The bottle to Person B.", "bottle>B", FOUR)
-    # the object again, a pronoun, a person, 'instead' or 'the other': refused
+    # the object again, a pronoun, 'instead' or 'the other': refused ('Not <person>' is 12r's rule)
     assert_refused("Not apple. Give it to Person B.", FOUR)
     assert_refused("Not apple. The apple to Person B.", FOUR)
-    assert_refused("Not Person A. The bottle to Person B.", FOUR)
     assert_refused("Not apple. Bottle for Person B instead.", FOUR)
     assert_refused("Not apple. Bottle, for Person B, and the other for Person A.", FOUR)
 
