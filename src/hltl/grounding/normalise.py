@@ -9217,6 +9217,16 @@ def _whole_name(words: str, lexicon: Lexicon, kind: str) -> bool:
     )
 
 
+# a person's name as the session-28 (12s) rules take it: 'Person A', a title and a name, a word
+_PERSON28S = r"person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+"
+
+
+def _object_and_person(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether ``m``'s 'what' is one whole name of the scene's objects and its 'who' one of its
+    people."""
+    return _whole_name(m["what"], lexicon, "object") and _whole_name(m["who"], lexicon, "human")
+
+
 def _object_first28s(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12s): a clause (between marks, after an optional 'then' / 'and then') said
     object first, '<object> give <person>' ("Apple give Person A first, then bottle give Person
@@ -9226,16 +9236,14 @@ def _object_first28s(text: str, lexicon: Lexicon) -> str:
     Bob …') or a word left over leaves the clause as it is."""
 
     def turned(m: re.Match[str]) -> str:
-        if not _whole_name(m["what"], lexicon, "object"):
-            return m[0]
-        if not _whole_name(m["who"], lexicon, "human"):
+        if not _object_and_person(m, lexicon):
             return m[0]
         return f"{m['lead']}{m['verb']} {m['who']} {m['what']}{m['tail']}"
 
     return _sub(
         r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:(?:and )?then,?\s+)?)(?P<what>(?:the |a |an )?"
-        r"[a-z]+(?: [a-z]+)?) (?P<verb>give|hand|pass) (?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr)"
-        r" [a-z]+|[a-z]+)(?P<tail>(?: first| next| too| as well)?)(?=\s*(?:[,.;!?]|$))",
+        rf"[a-z]+(?: [a-z]+)?) (?P<verb>give|hand|pass) (?P<who>{_PERSON28S})"
+        r"(?P<tail>(?: first| next| too| as well)?)(?=\s*(?:[,.;!?]|$))",
         turned,
         text,
     )
@@ -9277,7 +9285,7 @@ def _is_to28s(text: str, lexicon: Lexicon) -> str:
         return f"{m['who']} gets"
 
     out = _sub(
-        r"\b(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?:'s| is) to "
+        rf"\b(?P<who>{_PERSON28S})(?:'s| is) to "
         r"(?:get|have|receive)\b",
         gets,
         text,
@@ -9330,7 +9338,7 @@ def _busy_with28s(text: str, lexicon: Lexicon) -> str:
         return f"{m['who']} is busy,"  # ('mending' alone is one edit from 'sending')
 
     return _sub(
-        r"^(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?P<be>'s been| has been| is| "
+        rf"^(?P<who>{_PERSON28S})(?P<be>'s been| has been| is| "
         r"was) (?P<ing>[a-z]+ing) (?P<what>[a-z]+(?: [a-z]+){0,2}),",
         busy,
         text,
@@ -9370,7 +9378,7 @@ def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
         return f"{m['who']} is {m['how']},"
 
     return _sub(
-        r"^(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?:says|said)(?: that)? "
+        rf"^(?P<who>{_PERSON28S}) (?:says|said)(?: that)? "
         r"(?:she's|she is|he's|he is|they're|they are) (?P<how>[a-z]+(?: [a-z]+)?),",
         said,
         text,
@@ -9402,16 +9410,14 @@ def _dislocated28s(text: str, lexicon: Lexicon) -> str:
     scene, said right after the start, a full stop or ', and'; the person one whole name."""
 
     def taken_up(m: re.Match[str]) -> str:
-        if not _whole_name(m["what"], lexicon, "object"):
-            return m[0]
-        if not _whole_name(m["who"], lexicon, "human"):
+        if not _object_and_person(m, lexicon):
             return m[0]
         return f"{m['lead']}{m['who']} {m['verb']} {m['what']}"
 
     return _sub(
         r"(?P<lead>^|(?<=[.!?])\s+|,\s*and\s+)(?P<what>the [a-z]+(?: [a-z]+)?),\s*"
-        r"(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?P<verb>can have|gets|"
-        r"should get|can take) (?:it|that one|that)\b",
+        rf"(?P<who>{_PERSON28S}) (?P<verb>can have|gets|should get|can take) "
+        r"(?:it|that one|that)\b",
         taken_up,
         text,
     )
