@@ -13,9 +13,14 @@ the executor process's garbage collections by side (in-process or bus) and gener
 e.g. ``main/main main2/main nolg/main`` (``main2``, ``main3``: the unpatched node in another
 process: the harness's own noise floor). Node variants: ``main``, ``main2``, ``main3``,
 ``nolg`` (no let-go anywhere), ``replynolg`` (none after an answer), ``fsnolg`` (none before
-the node plans a step), ``fs1nolg`` (none before it plans the first step). Executor
-variants: ``main``, ``nolg`` (no let-go after the requests it does not wait for). Session 27
-(docs/bus.md, "Where the time goes (session 27)") ran it under ``bash /work/notes/bench.sh``.
+the node plans a step), ``fs1nolg`` (none before it plans the first step), ``nopause`` (no
+pause after an answer that guessed steps follow, ``GUESS_PAUSE`` 0), ``resetnext`` (after a
+reset's answer, the next query looked for before the idle work). Executor variants: ``main``,
+``nolg`` (no let-go after the requests it does not wait for), ``nofirst`` (the node not
+asked to foresee the first step, ``bus_cell(first=False)``: the first commands go in a
+query). Besides the suite ratios and paired wall differences it prints the loop's waits for
+the node (``DriverStats.waited``), paired. Sessions 27 and 28 (docs/bus.md, "Where the time
+goes") ran it under ``bash /work/notes/bench.sh``.
 """
 
 from __future__ import annotations
@@ -69,6 +74,16 @@ def _patch_node(variant: str) -> None:
         N.CellNode._foreseen = _without_let_go(  # type: ignore[method-assign]
             N.CellNode._foreseen, first_only=variant == "fs1nolg"
         )
+    elif variant == "nopause":
+        N.GUESS_PAUSE = 0.0
+    elif variant == "resetnext":
+        on_reset = N.CellNode._on_reset
+
+        def _on_reset(self: Any, query: Any) -> None:
+            on_reset(self, query)
+            self._ahead_sent = True  # (the briefing comes next: looked for before idle work)
+
+        N.CellNode._on_reset = _on_reset  # type: ignore[method-assign]
     elif variant not in ("main", "main2", "main3"):
         raise SystemExit(f"unknown node variant {variant!r}")
 
@@ -111,7 +126,7 @@ def main(repeats: int, names: list[str]) -> None:
     from hltl.sim.simulator import Simulator
 
     for name in names:
-        if name.count("/") != 1 or name.split("/")[1] not in ("main", "nolg"):
+        if name.count("/") != 1 or name.split("/")[1] not in ("main", "nolg", "nofirst"):
             raise SystemExit(f"bad variant {name!r}: expected NODE/EXECUTOR")
     trials = B._trials(20)
     ctx = multiprocessing.get_context("spawn")
@@ -131,6 +146,7 @@ def main(repeats: int, names: list[str]) -> None:
     let_go = D.let_go
     sides = ["inproc", *names]
     wall = {s: [[0.0] * len(trials) for _ in range(repeats)] for s in sides}
+    waited = {s: [[0.0] * len(trials) for _ in range(repeats)] for s in names}
     same = 0
     gc.callbacks.append(_on_gc)
     with open_session(BusConfig(connect=tuple(e for e, _ in nodes.values()))) as session:
@@ -154,13 +170,20 @@ def main(repeats: int, names: list[str]) -> None:
                     if s != "inproc":
                         node, executor = s.split("/")
                         D.let_go = _noop if executor == "nolg" else let_go  # type: ignore[assignment]
-                        make = D.bus_cell(session, cell=f"{nodes[node][1]}{i}", opened=opened)
+                        make = D.bus_cell(
+                            session,
+                            cell=f"{nodes[node][1]}{i}",
+                            opened=opened,
+                            first=executor != "nofirst",
+                        )
                     _side[0] = "inproc" if s == "inproc" else "bus"
                     t0 = time.perf_counter()
                     ep = run_episode(tr.scene, simulator=make, **kw)
                     w = time.perf_counter() - t0
                     _side[0] = "none"
                     if opened:
+                        if r:
+                            waited[s][r - 1][i] = opened[0].stats.waited
                         opened[0].end()
                         opened[0].close()
                     D.let_go = let_go  # type: ignore[assignment]
@@ -180,7 +203,9 @@ def main(repeats: int, names: list[str]) -> None:
         print(
             f"{s}: suite ratio median {statistics.median(ratios):+.1f} % "
             f"({', '.join(f'{x:+.1f}' for x in ratios)}); per-episode excess median "
-            f"{statistics.median(excess):+.2f} ms, mean {statistics.mean(excess):+.2f} ms"
+            f"{statistics.median(excess):+.2f} ms, mean {statistics.mean(excess):+.2f} ms; the "
+            f"loop waited for the node {1e3 * statistics.mean(sum(x) for x in waited[s]) / 20:.2f}"
+            " ms an episode"
         )
     for a in names:
         for b in names:
@@ -188,10 +213,16 @@ def main(repeats: int, names: list[str]) -> None:
                 d = [
                     (wall[b][r][i] - wall[a][r][i]) * 1e3 for r in range(repeats) for i in range(20)
                 ]
+                w = [
+                    (waited[b][r][i] - waited[a][r][i]) * 1e3
+                    for r in range(repeats)
+                    for i in range(20)
+                ]
                 print(
                     f"{b} - {a}: per episode median {statistics.median(d):+.2f} ms, "
                     f"mean {statistics.mean(d):+.2f} ms; {b} faster in {sum(x < 0 for x in d)}"
-                    f"/{len(d)}"
+                    f"/{len(d)}; the loop's waits for the node median {statistics.median(w):+.2f} "
+                    f"ms, mean {statistics.mean(w):+.2f} ms"
                 )
     per_side = {"inproc": n, "bus": n * len(names)}
     for (side, gen), times in sorted(_gc.items()):

@@ -73,6 +73,7 @@ class Loopback:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
+        first: bool = True,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,
@@ -83,7 +84,7 @@ class Loopback:
         opened: list[BusCell] = []
         served = {} if factory is None else {"factory": factory}
         make: Any = (
-            partial(bus_cell, foresee=foresee, background=background)
+            partial(bus_cell, foresee=foresee, background=background, first=first)
             if realtime is None
             else partial(realtime_bus_cell, factor=realtime)
         )

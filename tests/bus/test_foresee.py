@@ -102,7 +102,7 @@ def test_a_step_held_back_past_its_stretch_is_held_on(
         guesses_in_the_answer(monkeypatch)
     if not held_on:
         monkeypatch.setattr(node_module.CellNode, "_still_held", lambda self, ep, s: None)
-    run = _both(loopback, "1-1", 0)
+    run = _both(loopback, "1-1", 0, first=True)  # (the first step's commands in no query)
     late = [
         r
         for r in run.episode.records
@@ -123,7 +123,7 @@ def test_a_step_held_back_past_its_span_is_held_in_the_stretch(
     the in-process one."""
     patient_foresight(monkeypatch)
     monkeypatch.setattr(node_module.CellNode, "_still_held", lambda self, ep, s: None)
-    run = _both(loopback, "1-1", 0)
+    run = _both(loopback, "1-1", 0, first=True)  # (the first step's commands in no query)
     assert run.node.stats.spans > 0
     assert run.cell.stats.commands == 0
 
@@ -139,7 +139,7 @@ def test_the_first_step_is_foreseen(
     patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)
-    run = _both(loopback, "4-1", 0)
+    run = _both(loopback, "4-1", 0, first=True)
     first = next(r for r in run.episode.records if r.type == "dispatch")
     assert run.node.stats.foreseen_kept >= 1
     assert run.cell.stats.guessed >= len(first.actions)
@@ -148,37 +148,82 @@ def test_the_first_step_is_foreseen(
     assert run.node.stats.briefed == 1 and run.node.stats.respecs == 0
 
 
+@MODES
+@pytest.mark.parametrize("grounder", [None, "offline"], ids=["briefed", "own-grounder"])
+def test_the_first_step_is_asked_about_without_first(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool, grounder: str | None
+) -> None:
+    """With ``first=False`` the node plans no first step: the briefing (or, with a grounder of
+    the executor's own, the first basis) goes at once and is only taken in, the executor's
+    first commands go in a query, every action is started once, and the log is the in-process
+    one. With ``first`` (the default) the node plans a step on the first world (the spy sees
+    it)."""
+    patient_foresight(monkeypatch)
+    if inline:
+        guesses_in_the_answer(monkeypatch)
+    planned_at: list[float] = []
+    real = node_module.CellNode._foreseen
+
+    def foreseen(self: Any, s: Any, world: Any) -> Any:
+        planned_at.append(s.t)
+        return real(self, s, world)
+
+    monkeypatch.setattr(node_module.CellNode, "_foreseen", foreseen)
+    kw = {} if grounder is None else {"grounder": make_grounder(grounder)}
+    for first in (False, True):
+        planned_at.clear()
+        run = _both(loopback, "4-1", 0, first=first, **kw)
+        dispatch = next(r for r in run.episode.records if r.type == "dispatch")
+        assert (0.0 in planned_at) is first
+        if not first:  # (with it, the first commands go in no query; later ones may)
+            assert run.cell.stats.commands >= len(dispatch.actions)
+        assert set(run.node.stats.starts.values()) == {1}
+        assert run.node.stats.respecs == 0
+        if first:  # (without it nothing waits for the briefing: it may come after the commands)
+            assert run.node.stats.briefed == (grounder is None)
+        else:
+            assert run.node.stats.briefed <= (grounder is None)
+        assert run.node.stats.specs >= 1  # (the first spec, taken in before the first step)
+
+
 def test_no_briefing_without_the_offline_grounder(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """An episode given its spec, or grounded with a grounder of its own, sends no briefing:
-    the first step is foreseen from the executor's first basis, as before."""
+    the first step is foreseen from the executor's first basis (``first``), as before."""
     patient_foresight(monkeypatch)
     trial = make_trial("4-1", 0)
     ep = {"instruction": trial.instruction, "events": trial.events, "seed": trial.seed}
     local = run_episode(trial.scene, **ep)
-    run = loopback.run(trial.scene, **ep, grounder=make_grounder("offline"))
+    run = loopback.run(trial.scene, **ep, grounder=make_grounder("offline"), first=True)
     same_as_local(local, run)
     assert run.node.stats.briefed == 0 and run.node.stats.foreseen_kept >= 1
     spec = next(r for r in local.records if r.type == "grounding").spec
     given = {"spec": spec_from_dict(spec), "events": trial.events, "seed": trial.seed}
     local = run_episode(trial.scene, **given)
-    run = loopback.run(trial.scene, **given)
+    run = loopback.run(trial.scene, **given, first=True)
     same_as_local(local, run)
     assert run.node.stats.briefed == 0 and run.node.stats.foreseen_kept >= 1
 
 
-def test_a_wrong_briefing_never_shows(loopback: Loopback, monkeypatch: pytest.MonkeyPatch) -> None:
+@pytest.mark.parametrize("first", [True, False], ids=["first-foreseen", "first-asked"])
+def test_a_wrong_briefing_never_shows(
+    loopback: Loopback, monkeypatch: pytest.MonkeyPatch, first: bool
+) -> None:
     """The node grounds the briefing to another spec than the executor's (here: another
-    trial's instruction): its first guess is wrong and undone, the executor's own basis
-    replaces the node's spec, and the log is the in-process one."""
+    trial's instruction): its first guess, if it makes one (``first``), is wrong and undone,
+    the executor's own basis replaces the node's spec, and the log is the in-process one."""
     patient_foresight(monkeypatch)
     guesses_in_the_answer(monkeypatch)
     other = make_trial("4-2", 1).instruction
     real = node_module.ground_instruction
     monkeypatch.setattr(node_module, "ground_instruction", lambda g, _text, *a: real(g, other, *a))
-    run = _both(loopback, "4-1", 0)
-    assert run.node.stats.briefed == 1 and run.node.stats.respecs == 1
+    run = _both(loopback, "4-1", 0, first=first)
+    if first:
+        assert run.node.stats.briefed == 1 and run.node.stats.respecs == 1
+    else:  # (nothing waits for the briefing: one the node takes up after the first commands
+        # is dropped, as the executor's own basis has come)
+        assert run.node.stats.respecs == run.node.stats.briefed
 
 
 def test_a_malformed_briefing_is_dropped(
@@ -237,7 +282,7 @@ def test_a_request_simulated_again_is_grounded_once(
         return real(g, texts, scene, spec, done)
 
     monkeypatch.setattr(node_module, "ground_all", ground_all)
-    run = _both(loopback, "4-4-line", 1)
+    run = _both(loopback, "4-4-line", 1, first=True)
     assert run.node.stats.undone > 0  # (the first stretch, the request's tick in it)
     assert contexts and run.node.stats.grounded == len(contexts)
     assert all(
@@ -292,7 +337,7 @@ def test_no_wait_for_a_basis_that_is_not_coming(
     local = run_episode(trial.scene, grounder=_FirstOnly(), **ep)
     failed = [r for r in local.records if r.type == "grounding" and r.spec is None]
     assert len(failed) == 1
-    run = loopback.run(trial.scene, grounder=_FirstOnly(), **ep)
+    run = loopback.run(trial.scene, grounder=_FirstOnly(), first=True, **ep)
     same_as_local(local, run)
     assert run.node.stats.waited_out == 0 and run.cell.stats.unawaited == 1
 
@@ -308,9 +353,9 @@ def test_a_context_change_while_the_executor_waits_is_foreseen(
     before session 20), the start was a guess missed; the log is the in-process one either
     way."""
     patient_foresight(monkeypatch)  # (what is counted must not depend on the machine's load)
-    run = _both(loopback, "4-2", 0)
+    run = _both(loopback, "4-2", 0, first=True)  # (the first step's commands in no query)
     assert [r.trigger for r in run.episode.records if r.type == "takeover"]
     assert run.cell.stats.commands == 0
     monkeypatch.setattr(node_module.CellNode, "_replans_idle", lambda self, s, w, steady: False)
-    before = _both(loopback, "4-2", 0)
+    before = _both(loopback, "4-2", 0, first=True)
     assert before.cell.stats.commands > 0

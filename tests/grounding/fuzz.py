@@ -20,7 +20,10 @@ after a comma ("Give <person> a <kind>, just not the <colour> one.": the rest, a
 <colour> one": that one; "The <kinds> to <person>, sorry, just the one": refused with the
 readings), bare or inside a wrapper's opener and closer (mostly both, the kind session 27 found
 misread); and every entry narrowing after a comma ("…, just not …", "…, sorry, just the one")
-inside an opener and a closer (as the entry, or refused).
+inside an opener and a closer (as the entry, or refused). A fifth family (session 28), tails: a
+sentence after an entry that adds a handover ("… Also, give <person> the <object>."; the entry's
+reading, neither loosened nor dropped, and that handover) or that must be refused ("… Then I want
+the <object>.", "… Hmm, or maybe not.").
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -236,8 +239,25 @@ EXCLUSION_FORMS = ("rest, any", "rest, all", "only that", "just one", "wrapped")
 _NARROWS = re.compile(
     r"(?i),\s*(?:(?:sorry|no|oh|wait|actually),\s*)*(?:just|only|but|except|not|apart)\b"
 )
-Family = Literal["wrappers", "takebacks", "references", "exclusions"]
-FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks", "references", "exclusions")
+# tails (session 28; main read "Doesn't matter to me if it's Person A or Person B that ends up with
+# the chips. Give Person A the bottle." as the chips alone, and "Give Lena the knife and the lemon,
+# the lemon first. Also, give Mr Novak the salt shaker." as the three in any order): a sentence
+# after an entry that adds a handover of an object the entry does not name (the entry's reading
+# kept, that handover read too: "tail adds"), or that must be refused ("tail refused")
+TAIL_ADDS = (
+    " Also, give {p} the {o}.",
+    " And the {o} to {p} as well.",
+    " {P} gets the {o} too.",
+)
+TAIL_REFUSED = (
+    " Then I want the {o}.",  # the speaker's own want
+    " Hmm, or maybe not.",  # left undecided
+    " Ask {p} first.",  # deferred
+    " And the thing for the other one.",  # nothing in the scene
+)
+TAIL_FORMS = ("adds", "refused")
+Family = Literal["wrappers", "takebacks", "references", "exclusions", "tails"]
+FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks", "references", "exclusions", "tails")
 
 Must = Literal["same", "refuse"]
 
@@ -252,6 +272,7 @@ class Variant:
     family: Family = "wrappers"
     readings: tuple[str, ...] = ()  # ids a refusal must name (else it is "unclear")
     form: str = ""  # which of its family's kinds (references: REFERENCE_FORMS)
+    added: Task | None = None  # tails: the handover the tail adds (see ``kept``)
 
 
 def _name(scene: Scene, oid: str) -> str:
@@ -675,6 +696,63 @@ def exclusions(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Ite
         )
 
 
+def tails(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The tail variants of one entry: a sentence after it adding a handover of an object it does
+    not name to a person (for an entry that reads: the entry's reading and that handover, see
+    ``kept``), and a sentence that must be refused (after any entry)."""
+    text = entry.text.strip()
+    if not text.endswith((".", "!", "?")):
+        text += "."
+    named = _objects_named(text, scene) | (
+        {t.obj for t in tasks(entry.want)} if entry.want is not None else set()
+    )
+    free = [x for x in _unique_objects(scene) if x not in named]
+    hid = rng.choice(scene.humans).id
+    p = _name(scene, hid)
+    if free and entry.want is not None:
+        oid = rng.choice(free)
+        added = Task("deliver", oid, hid)
+        tail = rng.choice(TAIL_ADDS).format(o=_name(scene, oid), p=p, P=p[:1].upper() + p[1:])
+        want = Group("and", (entry.want, added))
+        yield Variant(part, entry.scene, text + tail, want, "same", "tails", (), "adds", added)
+    o = _name(scene, rng.choice(free or _unique_objects(scene) or [scene.objects[0].id]))
+    tail = rng.choice(TAIL_REFUSED).format(o=o, p=p)
+    yield Variant(part, entry.scene, text + tail, None, "refuse", "tails", (), "refused")
+
+
+def _dropped(node: Node, task: Task) -> Node | None:
+    """``node`` without ``task`` (the order and choices among the rest kept), or None if empty."""
+    if isinstance(node, Task):
+        return None if node == task else node
+    kids = [k for k in (_dropped(c, task) for c in node.children) if k is not None]
+    if not kids:
+        return None
+    return kids[0] if len(kids) == 1 else Group(node.op, tuple(kids))
+
+
+def _in_choice(node: Node, task: Task) -> bool:
+    if isinstance(node, Task):
+        return False
+    if node.op == "or" and any(t == task for t in tasks(node)):
+        return True
+    return any(_in_choice(c, task) for c in node.children)
+
+
+def kept(got: Node, want: Node, added: Task) -> bool:
+    """A tail that adds ``added``: read once and not as an option, and the rest read as the
+    entry (``want`` without ``added``), neither loosened nor dropped. Where the added handover
+    falls in an order of the entry is not judged: "X last. Also, give Bob the chips." may put
+    the chips before X."""
+    if sum(1 for t in tasks(got) if t == added) != 1 or _in_choice(got, added):
+        return False
+    rest, entry = _dropped(got, added), _dropped(want, added)
+    if rest is None or entry is None:
+        return rest is entry
+    if show_tree(rest) == show_tree(entry):
+        return True
+    return counterexample(spec_of(rest), spec_of(entry)) is None
+
+
 def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "unclear", "wrong"]:
     """How the grounder reads a variant: as it must, refused (without a reading it must name:
     unclear), or otherwise (wrong)."""
@@ -684,6 +762,8 @@ def verdict(variant: Variant, scene: Scene) -> Literal["exact", "refused", "uncl
         return "unclear" if any(r not in str(exc) for r in variant.readings) else "refused"
     if variant.must == "refuse" or variant.want is None:
         return "wrong"
+    if variant.added is not None:
+        return "exact" if kept(got, variant.want, variant.added) else "wrong"
     if show_tree(got) == show_tree(variant.want):
         return "exact"
     same = counterexample(spec_of(got), spec_of(variant.want)) is None
@@ -703,6 +783,7 @@ def generated(
     rng_back = random.Random(f"takebacks:{seed}")
     rng_refs = random.Random(f"references:{seed}")
     rng_excl = random.Random(f"exclusions:{seed}")
+    rng_tail = random.Random(f"tails:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -720,6 +801,9 @@ def generated(
                     yield v, scene
             if "exclusions" in families:
                 for v in exclusions(part, entry, scene, rng_excl):
+                    yield v, scene
+            if "tails" in families:
+                for v in tails(part, entry, scene, rng_tail):
                     yield v, scene
 
 

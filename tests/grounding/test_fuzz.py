@@ -5,7 +5,9 @@ kind named by its kind alone, one of two people sharing a title named by the tit
 the readings; a one-of-a-kind object by its kind: that handover; the speaker's own want joined to
 an entry: refused), the exclusion family of session 27 (a kind narrowed after a comma: the rest,
 the one named, or refused with the readings; an entry narrowing after a comma wrapped: the
-entry), and the wrappers and take-backs of a seed unchanged by them."""
+entry), the tail family of session 28 (a sentence after an entry adding a handover: the entry's
+reading kept and that handover; or one that must be refused), and the wrappers and take-backs of a
+seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -38,10 +40,10 @@ def _takebacks(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
 
 
 def _pattern(form: str) -> str:
-    """A form as a pattern: '{o}' and '{p}' become the groups o and p."""
+    """A form as a pattern: '{o}' and '{p}' (or '{P}', capitalised) become the groups o and p."""
     out = re.escape(form)
-    for key in ("o", "p"):
-        out = out.replace(re.escape("{" + key + "}"), f"(?P<{key}>.+?)")
+    for key, group in (("o", "o"), ("p", "p"), ("P", "p")):
+        out = out.replace(re.escape("{" + key + "}"), f"(?P<{group}>.+?)")
     return out
 
 
@@ -162,7 +164,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
     assert min(kinds.values()) > 20, kinds
 
 
-@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions"])
+@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions", "tails"])
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
     every = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
@@ -176,7 +178,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
-    assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions')" in err
+    assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -458,3 +460,81 @@ def test_over_the_corpus_each_exclusion_variant_names_what_it_says() -> None:
             assert fuzz._NARROWS.search(v.text)
     assert min(kinds.values()) >= 10, kinds
     assert all(fuzz._told_apart(s) for s in SCENES)  # each scene of the corpus tells a kind apart
+
+
+def _tails(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.tails("t", entry, scene, random.Random(seed)))
+
+
+def _tail(text: str, forms: tuple[str, ...]) -> re.Match[str]:
+    """The tail of ``text`` (its last sentence, after the entry's end) as one of ``forms``."""
+    last = re.search(r"[.!?]( [^.!?]*[.!?])$", text)
+    assert last is not None, text
+    m = next((m for f in forms if (m := re.fullmatch(_pattern(f), last[1]))), None)
+    assert m is not None, f"{text!r} ends with none of {forms}"
+    return m
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_a_tail_adds_a_handover_the_entry_does_not_name_or_must_be_refused(seed: int) -> None:
+    entry = _entry(
+        "cell", "Give Bob the cup and Alice the apple, the apple first", "apple>A ; cup>B"
+    )
+    adds, refused = _tails(entry, CELL, seed)
+    assert adds.form == "adds" and adds.must == "same" and adds.added is not None
+    m = _tail(adds.text, fuzz.TAIL_ADDS)
+    assert adds.text.startswith(entry.text + ". ")
+    assert _one_object(m["o"], CELL) == adds.added.obj not in ("cup", "apple")
+    assert _one_person(m["p"], CELL) == adds.added.target
+    assert adds.want == Group("and", (parse_expectation("apple>A ; cup>B"), adds.added))
+    assert refused.form == "refused" and refused.must == "refuse" and refused.want is None
+    _tail(refused.text, fuzz.TAIL_REFUSED)
+    # a refused entry gets only the tail that must be refused
+    (only,) = _tails(_entry("cell", "Give Bob the cup?", None), CELL, seed)
+    assert only.form == "refused" and only.text.startswith("Give Bob the cup? ")
+
+
+ADDED = Task("deliver", "chips", "C")
+WANT = Group("and", (parse_expectation("lemon>B ; knife>B"), ADDED))
+
+
+@pytest.mark.parametrize(
+    ("got", "kept"),
+    [
+        ("(lemon>B ; knife>B) & chips>C", True),
+        ("lemon>B ; (knife>B & chips>C)", True),  # the order stretched over the tail: not judged
+        ("chips>C ; lemon>B ; knife>B", True),
+        ("knife>B & lemon>B & chips>C", False),  # "the lemon first" dropped
+        ("knife>B ; lemon>B ; chips>C", False),
+        ("lemon>B ; knife>B", False),  # the tail dropped
+        ("(lemon>B ; knife>B) & (chips>C | chips>A)", False),  # an option, not a handover
+        ("(lemon>B ; knife>B) & chips>C & chips>C", False),
+        ("(lemon>B ; knife>B) & chips>A", False),
+    ],
+)
+def test_a_tail_that_adds_keeps_the_entry_as_it_reads(got: str, kept: bool) -> None:
+    assert fuzz.kept(parse_expectation(got), WANT, ADDED) is kept
+
+
+@pytest.mark.parametrize(("entry", "verdict"), [("cup>B", "exact"), ("cup>A", "wrong")])
+def test_a_tail_is_judged_by_what_the_grounder_reads(entry: str, verdict: str) -> None:
+    text = "Give Bob the cup. Also, give Carol the chips."
+    want = Group("and", (parse_expectation(entry), ADDED))
+    v = fuzz.Variant("t", "cell", text, want, "same", "tails", (), "adds", ADDED)
+    assert fuzz.verdict(v, CELL) == verdict
+
+
+def test_over_the_corpus_each_tail_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.TAIL_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=28, every=3, families=("tails",)):
+        assert v.family == "tails"
+        kinds[v.form] += 1
+        if v.form == "adds":
+            assert v.added is not None and isinstance(v.want, Group)
+            m = _tail(v.text, fuzz.TAIL_ADDS)
+            assert _one_object(m["o"], scene) == v.added.obj
+            assert v.added.obj not in {t.obj for t in tasks(v.want.children[0])}
+        else:
+            assert v.want is None and v.must == "refuse"
+            _tail(v.text, fuzz.TAIL_REFUSED)
+    assert min(kinds.values()) >= 10, kinds

@@ -368,7 +368,6 @@ KNOWN_MISSES = frozenset(
         "Whichever of the two people is closer can have the bottle.",
         "All three of the boxes want to go on the conveyor, in whatever order suits you.",
         "All three pens in the box, please, I'm clearing the desk.",
-        "Two blankets for Mr Lee, the poor man's frozen.",
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
@@ -418,7 +417,6 @@ KNOWN_MISSES = frozenset(
         "Person A's gasping after her run, she really needs that bottle.",
         "Person B wants the bottle and the chips both, he's off to watch the football.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
-        "Mr Lee needs his tablets, the drug round's running late.",
         "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
@@ -502,7 +500,6 @@ KNOWN_MISSES = frozenset(
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
         "Person A's gasping after the last race, the bottle is what she's needing.",
-        'All Person A wants is her bottle back, she left it on the jetty.',
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
         'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
@@ -534,7 +531,6 @@ KNOWN_MISSES = frozenset(
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        "Noah or Zoe can have the globe, either one, they're both doing the project.",
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
@@ -655,7 +651,6 @@ KNOWN_MISSES = frozenset(
         'start off with crisps for alice and after that bob needs his bottle',
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
-        "Put the appoe on the shelf, the fruit bowl's full.",
         "Could the apple go on the table, I've got puppets all over the shelf?",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
@@ -663,7 +658,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
         "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
         "only here to take bloods.",
-        "I need the bottle taken over to Bob, he's been planing that hull since first light.",
         "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
         "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
@@ -753,7 +747,7 @@ KNOWN_UNCLEAR = frozenset(
 # another engineer, reviewed by a second one, measured once at the end of session 26, tuned on
 # in session 27: asserted now, the rest in KNOWN_MISSES; "blind26" written in session 27 by
 # another engineer and committed alone, measured once at the end of session 27: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind26"})
+MEASURED_ONLY: frozenset[str] = frozenset({"blind26", "blind27"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -831,6 +825,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind25"].entries}) >= 3
     assert len(CORPORA["blind26"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind26"].entries}) >= 3
+    assert len(CORPORA["blind27"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind27"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

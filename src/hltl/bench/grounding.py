@@ -100,7 +100,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
 # its one measurement at the end of session 26; tuned on in session 27), blind26 (written in
 # session 27 by another engineer and committed alone, never opened by the engineers who changed
-# the grounder before its one measurement at the end of session 27; tests do not assert it).
+# the grounder before its one measurement at the end of session 27), blind27 (written in session
+# 28 by another engineer and committed alone, never opened by the engineers who changed the
+# grounder before its one measurement at the end of session 28; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -144,6 +146,7 @@ PARTS = (
     "blind24",
     "blind25",
     "blind26",
+    "blind27",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

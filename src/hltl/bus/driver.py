@@ -272,8 +272,16 @@ class BusCell:
             on, so that one answer carries several steps (``False``: the node stops at each
             step's end, and the executor's next commands cost a round trip).
         foresee: with ``guess``, also send the executor's basis (:meth:`foresee`), for the
-            node to plan the executor's next step itself where the hint is stale and the first
-            step (``False``: hints only).
+            node to plan the executor's next step itself where the hint is stale (``False``:
+            hints only).
+        first: with ``foresee``, also ask the node to foresee the first step (plan it from
+            the briefing or the first basis, start it on a guess, and answer with it: the
+            loop's first commands are then compared with it, not asked about). ``False``:
+            the briefing or first basis still goes at once, for the node to take in (ground)
+            while the executor grounds and plans, and the first commands go in a query (the
+            node's plan of the first step comes after the executor's own; paired under load
+            in session 28, neither way measured faster: docs/bus.md, "Where the time goes
+            (session 28)").
         background: with ``foresee``, also send the executor's forecast horizon, for the node
             to make the executor's background plans for forecast worlds as it simulates ahead
             (sent with the ticks; :meth:`planned`). Off by default: measured under load it
@@ -308,8 +316,10 @@ class BusCell:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
+        first: bool = True,
     ) -> None:
         self.session = session
+        self.first = first
         self.guess = guess
         self.background = background
         # (a streamed stretch is never run past a step's end: nothing to foresee)
@@ -1127,7 +1137,9 @@ class BusCell:
         cost a round trip): the node plans it on the first world,
         starts it on a guess and simulates on, and answers with the guessed step and the
         ticks after it, like a step query's guessed replies. Not waited for here (the loop
-        plans meanwhile)."""
+        plans meanwhile). Without :attr:`first`, the request carries no time: the node takes
+        the briefing (grounds it) or the basis in, foresees nothing and answers nothing, and
+        the loop's first commands are asked about."""
         self._first_sent = True
         req = {
             "episode": self.episode,
@@ -1140,6 +1152,8 @@ class BusCell:
                 **({"basis": self._basis_out()} if start is None else start),
             },
         }
+        if not self.first:  # (taken in only: without a time the node foresees no step)
+            del req["t"], req["batch"]
         if self.link.lost():  # (an injected fault: the first commands are asked about)
             return
         try:
@@ -1147,7 +1161,7 @@ class BusCell:
         except BusError:  # the bus failed: the loop's first query says so
             return
         let_go()  # (not waited for: the request goes now, not when the loop next waits)
-        if got is not None:
+        if got is not None and self.first:
             self._first = got[0]
             self._take_first()
 
@@ -1354,6 +1368,7 @@ def bus_cell(
     guess: bool = True,
     foresee: bool = True,
     background: bool = False,
+    first: bool = True,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1387,6 +1402,7 @@ def bus_cell(
             guess=guess,
             foresee=foresee,
             **({"background": True} if background else {}),
+            **({} if first else {"first": False}),
         )
         if opened is not None:
             opened.append(c)

@@ -982,9 +982,10 @@ class CellNode:
         return True
 
     def _await_reset(self, query: Any) -> None:
-        """A request to foresee the first step is sent right after the reset, which another
-        thread of the node handles: if the reset's answer has not gone yet, wait for it (at
-        most ``RESET_WAIT``, outside the node's lock). Not only for the episode: the answer
+        """A request to foresee the first step (or, without ``bus_cell(first=True)``, the
+        briefing or first basis to take in) is sent right after the reset, which can reach
+        this thread after it: if the reset's answer has not gone yet, wait for it (at most
+        ``RESET_WAIT``, outside the node's lock). Not only for the episode: the answer
         needs the interpreter lock to go, and this thread, grounding the briefing and planning
         the first step, held it for milliseconds while the executor waited for the answer (its
         first observation) to plan that step itself (docs/bus.md, "Where the time goes
@@ -997,7 +998,7 @@ class CellNode:
         except BusError:
             return
         episode = d.get("episode")
-        if "t" not in d or episode in self._reset_ids:  # (only the first step's, once)
+        if episode in self._reset_ids:  # (once: any request the executor sent after it)
             return
         deadline = time.perf_counter() + RESET_WAIT
         while episode not in self._reset_ids and time.perf_counter() < deadline:

@@ -2532,6 +2532,17 @@ _UNAPOSTROPHED = {
     "wasnt": "wasn't",
     "shes": "she's",
     "hes": "he's",
+    # session 28 (blind26's lower case: 'im on the perfume stall till five', 'im off to the
+    # hatters'): none of these is an English word without its apostrophe
+    "im": "I'm",
+    "ive": "I've",
+    "dont": "don't",
+    "werent": "weren't",
+    "youve": "you've",
+    "weve": "we've",
+    "theyve": "they've",
+    "youll": "you'll",
+    "theyll": "they'll",
 }
 
 
@@ -6962,6 +6973,382 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
+
+# A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
+# of two or three words ('the bell ringers are starving', 'the foley session ran long'), a past
+# tense of a few verbs ('ran', 'finished': _PAST28; not any '-ed', 'the red' is none), 'both'
+# after a plural pronoun and its 'be' ("they're both glazing pots": says they are two, asks
+# nothing), and 'seeing as' / 'seeing that' / 'given that' / 'now that' opening it. The same
+# conditions as session 21's: the clause names nothing in the scene, holds no word that could
+# change who gets what or which one, no capitalised word but 'I', and the request before it
+# names something.
+_PAST28 = (
+    r"(?:ran|went|got|came|took|fell|broke|began|overran|finished|started|ended|arrived|left|"
+    r"stopped|closed|opened|dragged|ran over)"
+)
+# a noun phrase's words after its determiner (no 'and' / 'or' / article: one phrase)
+_NOUNS28 = r"(?!(?:and|or|the|a|an)\b)[a-z-]+"
+_REASON28 = re.compile(
+    r"(?:\s*[,;]\s*|\s+[—–-]\s+)"
+    r"((?:(?:oh|and|cos|coz|cause|because|as|since|seeing as|seeing that|given that|now that)"
+    rf"\s+)?(?:(?:they|we)(?:'re| are| were) (both)\b|(?:her|his|their|my|our|the) {_NOUNS28}"
+    rf"(?: {_NOUNS28}){{1,2}}(?:'s| is| are| was| were| has| have| had| keeps?)|"
+    rf"(?:her|his|their|my|our|the) {_NOUNS28}(?: {_NOUNS28}){{0,2}} {_PAST28}|"
+    r"(?:she|he|it|they|we|i)(?:'s|'re|'ve|'d|'m| is| are| was| were| has| have| had) |"
+    rf"(?:she|he|it|they|we|i) {_PAST28})\b[^,.;!?—–]*?)\s*(?=[.!?]|$)",
+    _F,
+)
+
+
+def _reasons28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: a reason said after the request that session 21's rule does not take (above),
+    taken off under the same conditions."""
+    for m in reversed(list(_REASON28.finditer(text))):
+        clause = m.group(1)
+        said = (
+            clause
+            if m.group(2) is None
+            else clause[: m.start(2) - m.start(1)] + clause[m.end(2) - m.start(1) :]
+        )
+        said = re.sub(r"^(?:seeing|given|now) that\s+", "", said, flags=_F)  # no 'that' of its own
+        before = text[: m.start()]
+        words = re.findall(r"[A-Za-z']+", said)
+        if (
+            # a word joined by a hyphen is one word ('mid-take' is no 'take')
+            _REASON_HELD21.search(re.sub(r"\w+(?:-\w+)+", "x", said))
+            or any(w[0].isupper() and w != "I" and not w.startswith("I'") for w in words[1:])
+            or not _names_nothing(clause, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
+    return text
+
+
+# What an object is for, said after the request with more words than session 12's rule
+# (_purpose) takes: a possessive ('for the actuary's tally') or a place after it ('for his break in
+# the signal box'), or 'ready for' ('…, and the medium one as well, ready for the cashier's
+# count'). Taken off when it names nothing in the scene and holds no word that counts, chooses or
+# points back (_KEEP_WORDS), at the end of a clause; never right after 'is' / ''s' (what the
+# clause says of its subject).
+_PURPOSE28 = re.compile(
+    r"(?<!'s)(?<! is)(?<! are)(?<!'re)(?<! was)(?<! were),?\s+(?:ready )?for "
+    r"(?:the|a|an|this|that|some|his|her|their|my|our) ([a-z]+(?:[ -][a-z]+)?(?:'s [a-z]+)?"
+    r"(?: (?:in|on|at|from|of|by) (?:the|a|an|his|her|their|my|our) [a-z]+(?: [a-z]+)?)?)"
+    r"(?=\s*(?:[.,;!?]|$|\bplease\b|\bthanks\b))",
+    _F,
+)
+
+
+def _inert28(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` names nothing in the scene and holds no word that counts, chooses or
+    points back (_KEEP_WORDS): what session 28's rules take off."""
+    return _names_nothing(words, lexicon) and not _KEEP_WORDS.search(words)
+
+
+def _purpose28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: what an object is for, with a possessive or a place after it, or 'ready for'
+    (above), taken off."""
+    if "for " not in text.lower():
+        return text
+    return _PURPOSE28.sub(lambda m: "" if _inert28(m.group(1), lexicon) else m.group(0), text)
+
+
+# 'both' floating after a list of two objects ('the scissors and the ruler both on the desk',
+# 'apple and cup both over to person b'): it says the two named are the two, nothing more
+_BOTH_AFTER28 = re.compile(
+    r"\b((?:the )?([a-z]+(?: [a-z]+)?) and (?:the )?([a-z]+(?: [a-z]+)?)) both "
+    r"(?=(?:go |goes |over |across |back |up |down )?(?:to|on|onto|in|into|for)\b)",
+    _F,
+)
+
+
+def _both_after28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: 'X and Y both to / on …' is 'X and Y to / on …' (X and Y each one name of
+    an object, two different objects)."""
+    if " both " not in text.lower():
+        return text
+
+    def drop(m: re.Match[str]) -> str:
+        one, two = m.group(2), m.group(3)
+        if not (_only_kind(one, lexicon, "object") and _only_kind(two, lexicon, "object")):
+            return m.group(0)
+        a, b = _ids(one, lexicon, "object"), _ids(two, lexicon, "object")
+        if len(a) != 1 or len(b) != 1 or a == b:
+            return m.group(0)
+        return f"{m.group(1)} "
+
+    return _BOTH_AFTER28.sub(drop, text)
+
+
+# "Hammer to Kofi. And the drill, same again.": the objects said alone, then 'same again' (the
+# task before, with these objects): 'And the drill too.'
+_SAME_AGAIN28 = re.compile(
+    r"(^|[.!;]\s+)((?:and |then )?(?:the )?[a-z]+(?: [a-z]+)?),?\s+(?:the )?same again"
+    r"(?:,? please)?(?=\s*(?:[.!]|$))",
+    _F,
+)
+
+
+def _same_again28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: '<objects>, same again' opening its sentence, after a sentence before it, is
+    '<objects> too' (the objects one name of an object)."""
+    if "same again" not in text.lower():
+        return text
+
+    def too(m: re.Match[str]) -> str:
+        what = re.sub(r"^(?:and|then) ", "", m.group(2), flags=_F)
+        if not m.group(1) or not _only_kind(what, lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)} too"
+
+    return _SAME_AGAIN28.sub(too, text)
+
+
+# An object said to want or need to go somewhere ('The small box wants to sit on the pallet',
+# 'the banana wants to go on the tray'): the object put there. Not 'stay' (it is not to move).
+_OBJECT_WANTS28 = re.compile(
+    r"\b((?:the )?[a-z]+(?: [a-z]+)?) (?:wants|needs|want|need) to (?:go|sit|be|live)"
+    r"(?: back)? (on|onto|in|into) ",
+    _F,
+)
+
+
+def _object_wants28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: '<object> wants / needs to go / sit / be on S' is 'put <object> on S' (the
+    object one name of objects)."""
+    if not _rx(r"\b(?:wants?|needs?) to (?:go|sit|be|live)\b").search(text):
+        return text
+
+    def put(m: re.Match[str]) -> str:
+        if not _only_kind(m.group(1), lexicon, "object"):
+            return m.group(0)
+        return f"put {m.group(1)} {m.group(2)} "
+
+    return _OBJECT_WANTS28.sub(put, text)
+
+
+# A tag closing a question that asks only whether the request is all right: Hindi English
+# '…, na?' (isn't it; never 'na' before more words, where it may be 'nah', a correction), and
+# '…, or is that a pain / too much trouble / a problem / a hassle / asking too much?'
+_TAG28 = re.compile(
+    r",\s*(?:na|or is (?:that|it|this) (?:a (?:pain|problem|hassle|bother|nuisance)|"
+    r"(?:too much|asking too much|too much trouble|too much hassle|too much bother)))\s*\?",
+    _F,
+)
+
+
+def _tag28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: the tags above taken off, the question mark kept (what it asks is the
+    request)."""
+    return _TAG28.sub("?", text) if "," in text and "?" in text else text
+
+
+# Who the speaker or a person is, said beside the request (session 28, blind26): the speaker's
+# self-introduction as a stretch of its own ('Excuse me, sorry, the mycologist here, would you
+# …': '(it's / this is) the <role> here'), a role before the person it names ('The fletcher,
+# Person B, is asking for …': the person), and where a person is, said between commas after
+# the name ('Person A, up at the rope walk, wants …'). Each taken off when it names nothing in
+# the scene (a role or place of the scene is never taken off).
+_HERE28 = re.compile(
+    r"(^|[,.!?]\s*)(?:it's |this is )?(?:the|your) ([a-z]+(?: [a-z]+)?) here\s*[,.!]\s*", _F
+)
+_ROLE_FIRST28 = re.compile(r"^(?:the|our|my|your) ([a-z]+(?: [a-z]+)?),\s+([^,]+?),\s+", _F)
+_WHERE_AFTER28 = re.compile(
+    r"^([^,]+?),\s+((?:up|down|over|out|back|round)?\s*(?:at|in|on|by|near|from) "
+    r"(?:the|a|an|his|her|their|my|our) [a-z]+(?: [a-z]+){0,2}),\s+(?=[a-z])",
+    _F,
+)
+
+
+def _who_where28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: the speaker's self-introduction, a role said before its person, and where a
+    person is said after the name (above), taken off."""
+    if " here" in text.lower():
+
+        def intro(m: re.Match[str]) -> str:
+            return m.group(1) if _inert28(m.group(2), lexicon) else m.group(0)
+
+        text = _HERE28.sub(intro, text)
+    m = _ROLE_FIRST28.match(text)
+    if m is not None and _inert28(m.group(1), lexicon) and _only_person(m.group(2), lexicon):
+        text = f"{m.group(2)} {text[m.end() :]}"
+    m = _WHERE_AFTER28.match(text)
+    if m is not None and _only_person(m.group(1), lexicon) and _names_nothing(m.group(2), lexicon):
+        text = f"{m.group(1)} {text[m.end() :]}"
+    return text
+
+
+# "A lemon for Mr Novak's fish": an object for a person's thing (their fish, tea, break) is for
+# that person (the thing naming nothing in the scene, the person one of the scene)
+_FOR_WHOSE28 = re.compile(
+    r"\bfor ([A-Za-z][\w ]*?)'s ([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$|\bplease\b))", _F
+)
+
+
+def _for_whose28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: 'X for P's <thing>' is 'X for P' (above); not where a surface is named (a
+    placement's 'for' says what it is for)."""
+    if "'s " not in text or _ids(text, lexicon, "surface"):
+        return text
+
+    def whose(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon) or not _inert28(m.group(2), lexicon):
+            return m.group(0)
+        return f"for {m.group(1)}"
+
+    return _FOR_WHOSE28.sub(whose, text)
+
+
+# "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
+# condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
+_IF_SO_GOOD28 = re.compile(
+    r"^if you(?:'d| would)(?: be so (?:good|kind) as to| not mind| kindly)\s+(.+?),\s*"
+    r"(?:that|it)(?:'d| would) be (?:grand|great|lovely|brilliant|wonderful|perfect|ace|super|"
+    r"smashing|fab|fabulous|fantastic|marvellous|much appreciated|appreciated|ideal)\s*([.!]?)$",
+    _F,
+)
+
+
+def _if_so_good28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: 'If you'd be so good as to X, that'd be grand' is 'X' (above), in the last
+    sentence of the instruction (what came before, a greeting, kept)."""
+    if not text.lower().startswith("if ") and ". if " not in text.lower():
+        return text
+    head, sep, last = text.rpartition(". ")
+    m = _IF_SO_GOOD28.match(last)
+    if m is None:
+        return text
+    verb = m.group(1)
+    if "not mind" in m.group(0).lower():
+        verb = re.sub(r"^(\w+?)ing\b", lambda v: _base(v.group(1)), verb, flags=_F)
+    return f"{head}{sep}{verb}{m.group(2)}"
+
+
+# "A leemon for Mr Novak": 'a' / 'an' opening the instruction before a typo of a kind the
+# scene has ('leemon': lemon) — the kind spelt right, so the note reads as 'A lemon for …' does
+# (_a_kind_for; the capital 'A' is otherwise Person A where the scene has one)
+_A_TYPO28 = re.compile(r"^(a|an) ([a-z]{4,})(?= (?:for|to) )", _F)
+
+
+def _a_typo28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: the kind above spelt right (one object category within one edit)."""
+    m = _A_TYPO28.match(text)
+    if m is None or _kind_of(m.group(2), lexicon) is not None:
+        return text
+    refs = lexicon.misspelt(m.group(2).lower())
+    objs = {o.id: o.category for o in lexicon.scene.objects}
+    kinds = {objs.get(r.id) for r in refs or ()}
+    if not refs or None in kinds or len(kinds) != 1:
+        return text
+    return f"{m.group(1)} {kinds.pop()}{text[m.end() :]}"
+
+
+# Idioms of handing over (session 28, blind26): 'put X in / into P's hand(s)' is 'give X to P';
+# 'X could / can make it (over) to P' is 'X could go to P'; a header 'Both / all of the <people>
+# want something:' before a list of who gets what is 'Both of them want something:' (the people
+# naming nothing in the scene); and 'them' given something ('Give them the chips') after one
+# person alone is named before it is that person (the singular 'they': "Person B's got nothing
+# yet. Give them the chips and the bottle.").
+_HANDS28 = re.compile(
+    r"\b(put|place|pop|drop|stick) (.+?) (?:in|into) ([A-Za-z][\w ]*?)'s (?:hands?|palms?)\b", _F
+)
+_MAKE_IT28 = re.compile(r"\b(could|can|would|will) make it (?:over |across )?to\b", _F)
+_SOMETHING28 = re.compile(
+    r"^(both|all|each) of the ([a-z]+(?: [a-z]+)?) (wants?|needs?) something\s*:", _F
+)
+_OUT_OF_WAY28 = re.compile(
+    r",\s*(?:(?:as|because|since|cos)\s+)?([A-Za-z][\w ]*?) (?:needs|wants|'d like|would like) "
+    r"(?:it|them|those|that) out of the way(?= *[.!]?$)",
+    _F,
+)
+_GIVE_THEM28 = re.compile(r"\b(give|hand|pass|bring|fetch|get) them (?=(?:the|a|an|both) )", _F)
+
+
+def _handed28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: the idioms of handing over above; and a reason 'P needs / wants it / them out
+    of the way' closing a request that moves something (P one person, or he / she / they)."""
+    low = text.lower()
+    if "out of the way" in low:
+        m = _OUT_OF_WAY28.search(text)
+        if m is not None and (
+            m.group(1).lower() in ("he", "she", "they") or _only_person(m.group(1), lexicon)
+        ):
+            before = text[: m.start()]
+            if _ids(before, lexicon, "object"):
+                text = before + text[m.end() :]
+    if " hand" in low or " palm" in low:
+
+        def hands(m: re.Match[str]) -> str:
+            if not _only_person(m.group(3), lexicon) or _ids(m.group(2), lexicon, "human"):
+                return m.group(0)
+            return f"give {m.group(2)} to {m.group(3)}"
+
+        text = _HANDS28.sub(hands, text)
+    if "make it" in low:
+        text = _MAKE_IT28.sub(r"\1 go to", text)
+    m = _SOMETHING28.match(text)
+    if m is not None and _names_nothing(m.group(2), lexicon):
+        text = f"{m.group(1)} of them {m.group(3)} something:{text[m.end() :]}"
+    m = _GIVE_THEM28.search(text)
+    if m is not None and not _rx(r"\b(?:both|each|every|all|everyone|everybody)\b").search(text):
+        said = [it for it in _names(text[: m.start()], lexicon) if it.refs[0].kind == "human"]
+        who = {r.id for it in said for r in it.refs}
+        if len(who) == 1 and all(len(it.refs) == 1 for it in said):
+            text = f"{text[: m.start()]}{m.group(1)} {said[-1].text} {text[m.end() :]}"
+    return text
+
+
+# 'since <a past time>' in a remark of how long someone has been at something ("she's been on
+# the lathe since seven", "he is driving the fork truck since morning"): said of the past, never
+# when the request is to be done; taken off when its clause has 'been' or an '-ing' verb before it
+_SINCE28 = re.compile(
+    r"\b((?:been|[a-z]{2,}ing)\b[^,.;!?]*?) since (?:(?:one|two|three|four|five|six|seven|eight|"
+    r"nine|ten|eleven|twelve|\d{1,2}(?:[:.]\d\d)?)(?: ?(?:o'clock|am|pm|thirty))?|dawn|"
+    r"(?:this |early )?morning|lunch(?:time)?|breakfast|yesterday|last (?:night|week)|"
+    r"(?:mon|tues|wednes|thurs|fri|satur|sun)day|first thing|the crack of dawn)(?=\s*[,.;!?]|$)",
+    _F,
+)
+
+
+def _since28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: 'since <a past time>' in a remark of how long (above), taken off."""
+    if "since " not in text.lower():
+        return text
+    return _SINCE28.sub(
+        lambda m: m.group(1) if _names_nothing(m.group(1), lexicon) else m.group(0), text
+    )
+
+
+# 'X and Y stay put / stay where they are / stay there': nothing to do with them (as session
+# 16's 'X stays' for one object, _notes), unless another clause names them or counts every object
+_STAY28 = re.compile(
+    r"(?:^|(?<=[.;,])\s*)(?:and )?((?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?) "
+    r"(?:both )?stay(?: put| where they are| there| as they are)\s*(?=[.;,]|$)",
+    _F,
+)
+
+
+def _stay28(text: str, lexicon: Lexicon) -> str:
+    """Session 28: two objects said to stay (above) taken off."""
+    if "stay" not in text.lower():
+        return text
+    m = _STAY28.search(text)
+    if m is None:
+        return text
+    one, two = re.split(r" and ", m.group(1), maxsplit=1, flags=_F)
+    if not (_only_kind(one, lexicon, "object") and _only_kind(two, lexicon, "object")):
+        return text
+    others = text[: m.start()] + text[m.end() :]
+    if _ids(m.group(1), lexicon) & _ids(others, lexicon) or _rx(
+        r"\b(?:everything|anything|all|the lot|the rest|every)\b"
+    ).search(others):
+        return text
+    out = others.strip(" ,;")
+    return out if _names(out, lexicon) else text
+
+
 # -- session 25 (engineer 12r): blind22's kinds ----------------------------------------------------
 
 # What a person wants or needs to do, said after the request as its reason ("Will you take the
@@ -7073,6 +7460,10 @@ _COURTESY24 = (
     r"sannu|na gode|daalu|ndewo|ngiyabonga|siyabonga|enkosi|mahalo(?: nui)?|aloha|toda raba|"
     r"marhaba|ahlan(?: wa sahlan)?|teşekkür ederim|tesekkur ederim|olá|bom dia|"
     r"buenos (?:días|dias)|buenas tardes|muchas gracias|"
+    # session 28 (blind26): Yoruba greetings and thanks ('E kaaro', 'e se gan'), Finnish 'Moi',
+    # 'Kiitti' and 'Ole hyvä' (here you are / please, said alone), Albanian thanks
+    r"e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|"
+    r"ole hyvä|ole hyva|moi|kiitti|faleminderit|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -8897,7 +9288,7 @@ _WHICHEVER_FREE27R = re.compile(
 def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
     """'P or Q, whichever <noun> is free, give them X': 'give X to P or Q, whichever is free'
     (two different people; the noun, if any, 'one' / 'person' / 'of them' or a name both share;
-    X one name of objects); else None."""
+    X one name of objects), what follows kept; else None."""
     first, second, noun, verb, things, end = m.groups()
     one, two = _ids(first, lexicon, "human"), _ids(second, lexicon, "human")
     if not (_only_person(first, lexicon) and _only_person(second, lexicon)) or one == two:
@@ -8907,7 +9298,9 @@ def _whichever_free27r(m: re.Match[str], lexicon: Lexicon) -> str | None:
         return None
     if not _only_kind(things, lexicon, "object"):
         return None
-    return f"{verb} {things} to {first} or {second}, whichever is free{end}"
+    # what follows the request is kept ("…, give them the globe. Oh, don't bother." is taken
+    # back: session 28, a wrong reading of the take-back fuzz when it was dropped)
+    return f"{verb} {things} to {first} or {second}, whichever is free{end}{m.string[m.end() :]}"
 
 
 # "Can you get the medium box stacked on the pallet?": the causative 'get X done'
@@ -9012,7 +9405,7 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
       Bob');
     - the speaker's indifference between two people: "Doesn't matter to me if it's P or Q that
       ends up with X", "I don't mind whether it's P or Q who gets X" is 'X to P or Q' (two
-      people, X objects only);
+      people, X objects only; what follows kept, session 28);
     - 'X, them / it too' right after 'and' or a sentence's start says X again: 'X too' (X one
       name of objects);
     - 'and Y alongside / next to / beside it' after a placement on one surface (_alongside27r);
@@ -9043,10 +9436,7 @@ def _said_aside27r(text: str, lexicon: Lexicon) -> str:
             and _ids(m.group(1), lexicon) != _ids(m.group(2), lexicon)
             and _only_kind(m.group(3), lexicon, "object")
         ):
-            # (session 28, 12s: what follows the sentence is kept — "… ends up with the chips.
-            # That's all from me and Person A." had lost its second sentence, and read)
-            rest = text[m.end() :]
-            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}{rest}"
+            text = f"{m.group(3)} to {m.group(1)} or {m.group(2)}{m.group(4)}{text[m.end() :]}"
     if "whichever" in low or "whoever" in low:
         m = _WHICHEVER_FREE27R.match(text)
         if m is not None:
@@ -9822,6 +10212,19 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _attention21,
     _speaker21,
     _reasons21,
+    _reasons28,
+    _purpose28,
+    _both_after28,
+    _same_again28,
+    _object_wants28,
+    _tag28,
+    _who_where28,
+    _for_whose28,
+    _if_so_good28,
+    _stay28,
+    _a_typo28,
+    _handed28,
+    _since28,
     _doing25,
     _speaker_remarks,
     _asides22,

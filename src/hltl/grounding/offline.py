@@ -353,13 +353,20 @@ def _stubs(text: str, lexicon: Lexicon) -> int:
 
 _NOT_YET = re.compile(r"\bnot (?:just )?yet\b", re.I)
 
-# a correction cue, then 'leave it' / 'forget it' / 'never mind': the request before is taken back
-# (or opening a sentence: 'Forget that, …', 'Never mind, …', 'Cancel that.')
+# words that take back what was asked, said alone (a comma, a stop or the end after them)
+_TAKE_BACK = (
+    r"forget (?:it|that|about it|the whole thing)|never mind(?: (?:it|that))?|"
+    r"(?:don't|do not) bother|cancel (?:that|it)"
+)
+# a correction cue, then 'leave it' / 'forget it' / 'never mind' / 'don't bother' / 'cancel
+# that': the request before is taken back (or opening a sentence: 'Forget that, …', 'Never mind,
+# …', 'Cancel that.', "Don't bother."). Session 28: "…, whichever student's free, give them the
+# globe. Oh, don't bother." had read the globe to either student (a rewrite had dropped the
+# sentence after the request): every take-back of the fuzz is found here, before any rewrite
 _TAKEN_BACK = re.compile(
-    r"(?:\b(?:no|nope|actually|wait|sorry|oops|hang on|hold on)\s*[,.!]?\s+"
-    r"(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|forget (?:it|that)|"
-    r"never mind(?: (?:it|that))?)|(?<=[.!?] )(?:forget (?:it|that)|never mind(?: (?:it|that))?|"
-    r"cancel that))\s*(?=[,.;!?]|$)",
+    r"(?:\b(?:no|nope|actually|wait|sorry|oops|oh|hang on|hold on|on second thoughts?)\s*[,.!]?"
+    rf"\s+(?:(?:no|wait|actually)\s*[,.!]?\s+)?(?:leave (?:it|that)|{_TAKE_BACK})|"
+    rf"(?<=[.!?] )(?:{_TAKE_BACK}))\s*(?=[,.;!?]|$)",
     re.I,
 )
 
@@ -1181,6 +1188,8 @@ class _Parser:
         for end in [*cuts, len(children) - 1]:
             seps = ops[start:end]
             part = self._levels(children[start : end + 1], seps, levels[start:end], items, op)
+            if op == "or" and start > 0:
+                _no_rider(part, items)
             group.children.append(part)
             start = end + 1
         return group
@@ -1479,10 +1488,10 @@ class _Parser:
                     f"{f.text!r} is not a task by itself: say who gets it or where it goes"
                 )
             if f.target is None:
-                f.target = next(
-                    (g.target for g in reversed(frags[:k]) if g.target is not None),
-                    None,
-                )
+                source = next((g for g in reversed(frags[:k]) if g.target is not None), None)
+                if source is not None:
+                    self._not_from_choice(raw, source, f)
+                    f.target = source.target
             if f.target is None:
                 raise GroundingError(
                     f"no recipient or place for the {', '.join(f.objects)} in {f.text!r}: say "
@@ -1492,6 +1501,23 @@ class _Parser:
             self._check_verb(f)
         self._order_kept(raw)
         return self._build(raw)
+
+    def _not_from_choice(self, raw: _Raw, source: _Frag, f: _Frag) -> None:
+        """Refuse ``f`` taking its recipient or place over from ``source`` when ``source`` is one
+        side of a choice of recipients or places that ``f`` is not part of: "Give the globe to
+        Noah or Zoe. The ruler too." (session 28) had given the ruler to Zoe, the last one named,
+        where the speaker means whoever gets the globe (a choice of objects for one person,
+        "Give Alice the cup or the apple, and the book too", keeps its one recipient)."""
+        choice = _choice_around(raw, source, f)
+        if choice is None:
+            return
+        said = list(dict.fromkeys(g.target.text for g in _frags_of(choice) if g.target))
+        if len(said) < 2:
+            return
+        raise GroundingError(
+            f"{f.text!r} names no recipient or place, and the one before is a choice "
+            f"({' or '.join(repr(t) for t in said)}): say who gets the {', '.join(f.objects or [])}"
+        )
 
     def _order_kept(self, raw: _Raw) -> None:
         """'B gets the bottle, then the chips. A gets those.': objects said alone in an order
@@ -1929,6 +1955,39 @@ def _order_carried(sentences: list[list[Item]]) -> list[list[Item]]:
     return out
 
 
+def _no_rider(part: _Raw, items: list[Item]) -> None:
+    """Refuse an alternative that names only another recipient or place ('or Zoe', 'or the
+    desk') and then objects with none of their own: "Give the globe to Noah or Zoe, and the
+    ruler too" had read the ruler as Zoe's only (globe>B | (globe>C & ruler>C)), where the
+    speaker means it goes with the globe, whoever gets it (session 28)."""
+    if not isinstance(part, _RawGroup):
+        return
+    frags = _frags_of(part)
+    first = frags[0]
+    if first.target is None or first.objects is not None or first.it or first.them:
+        return
+    if first.verb_text or first.subject or first.same:
+        return
+    rider = next((f for f in frags[1:] if f.target is None and not f.verb_text), None)
+    if rider is not None:
+        raise GroundingError(
+            f"in {_text(items)!r}, {rider.text!r} could go with {first.target.text!r} only or "
+            "with whichever is chosen: say who gets it, or give it in a sentence of its own"
+        )
+
+
+def _choice_around(raw: _Raw, inside: _Frag, outside: _Frag) -> _RawGroup | None:
+    """The outermost choice ('or') of ``raw`` holding ``inside`` but not ``outside``, or None."""
+    if isinstance(raw, _Frag):
+        return None
+    held = _frags_of(raw)
+    if inside not in held:
+        return None
+    if raw.op == "or" and outside not in held:
+        return raw
+    return next((c for c in (_choice_around(x, inside, outside) for x in raw.children) if c), None)
+
+
 def _frags_of(raw: _Raw) -> list[_Frag]:
     if isinstance(raw, _Frag):
         return [raw]
@@ -1987,12 +2046,28 @@ def _tidy_pieces(
             and nxt
             and all(it.kind == "ent" and all(r.kind == "object" for r in it.refs) for it in nxt)
             and markers[k + 1] is None
+            and not _other_recipient(pieces, seps, k)
         ):
             pieces[k : k + 2] = [pieces[k] + pieces[k + 1]]
             del seps[k], markers[k + 1], commas[k]
             continue
         k += 1
     return pieces, seps, markers
+
+
+def _other_recipient(pieces: list[list[Item]], seps: list[str], k: int) -> bool:
+    """Whether person ``pieces[k]`` is said after 'or' as another recipient of the part before,
+    which ends 'to / for <person>' ("Give the globe to Noah or Zoe, the ruler too": Zoe is not
+    given the ruler alone; session 28)."""
+    if k == 0 or seps[k - 1] != "or":
+        return False
+    before = [it for it in pieces[k - 1] if not _is(it, *_SKIP, "det")]
+    return (
+        len(before) >= 2
+        and before[-1].kind == "ent"
+        and all(r.kind == "human" for r in before[-1].refs)
+        and _is(before[-2], "to", "for")
+    )
 
 
 def _trailing_order(items: list[Item]) -> list[Item]:
