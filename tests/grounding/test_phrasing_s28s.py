@@ -344,19 +344,6 @@ def test_indifference_keeps_what_follows() -> None:
     assert_refused(said + " That's all from me and Person A.", FOUR)
 
 
-# -- 'Not apple. Bottle, for Person B.' (normalise.py _not_first28s) ----------------------------
-
-
-def test_not_first_sentence() -> None:
-    assert_reads("Not apple. Bottle, for Person B, please. Madloba.", "bottle>B", FOUR)
-    assert_reads("Not the apple. The bottle to Person B.", "bottle>B", FOUR)
-    # the object again, a pronoun, 'instead' or 'the other': refused ('Not <person>' is 12r's rule)
-    assert_refused("Not apple. Give it to Person B.", FOUR)
-    assert_refused("Not apple. The apple to Person B.", FOUR)
-    assert_refused("Not apple. Bottle for Person B instead.", FOUR)
-    assert_refused("Not apple. Bottle, for Person B, and the other for Person A.", FOUR)
-
-
 # -- "<person> says she's peckish, …" (normalise.py _says_she_is28s) ----------------------------
 
 

@@ -9735,24 +9735,6 @@ def _busy_with28s(text: str, lexicon: Lexicon) -> str:
     )
 
 
-def _not_first28s(text: str, lexicon: Lexicon) -> str:
-    """Session 28 (12s): a sentence of its own opening the instruction, 'Not (the) <object>.',
-    then a request that does not name that object ("Not apple. Bottle, for Person B, please."):
-    what the speaker does not want, said before what they do; the request stands. The object must
-    be one whole name of the scene, the rest must name something and not name it again nor point
-    back to it ('it', 'that one', 'the other')."""
-    m = _rx(r"^not (?P<what>(?:the )?[a-z]+(?: [a-z]+)?)\s*[.!]\s+(?P<rest>.+)$").match(text)
-    if m is None or not _whole_name(m["what"], lexicon, "object"):
-        return text
-    rest = m["rest"]
-    said = _ids(m["what"], lexicon, "object")
-    if not _names(rest, lexicon) or said & _ids(rest, lexicon, "object"):
-        return text
-    if re.search(r"\b(?:it|that|this|them|other|another|one|instead|rather)\b", rest, _F):
-        return text
-    return rest
-
-
 def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12s): '<person> says / said (that) she's / he's / they're <a word or two>,'
     opening the instruction ("Person A says she's peckish, the chips please"): the pronoun is
@@ -10270,7 +10252,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _run_to28s,
     _wanted_with28s,
     _busy_with28s,
-    _not_first28s,
     _says_she_is28s,
     _give_both28s,
     _dislocated28s,
