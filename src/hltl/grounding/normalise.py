@@ -3248,7 +3248,12 @@ _SAID14: tuple[tuple[str, str], ...] = (
     ),
     # "Reckon Lena wants the lemon", "I am asking you to put …"
     (r"^(?:i )?reckon,?\s+", ""),
-    (r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) asking (?:you )?(?:to )?(?=[a-z])", r"\1"),
+    # (session 28: "I am requesting you to give …", "I'm kindly asking you to …")
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) (?:kindly )?(?:asking|requesting) "
+        r"(?:you )?(?:to )?(?=[a-z])",
+        r"\1",
+    ),
     # "Is possible to give …", "please to put", "must to have": said by someone learning English
     (r"^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", ""),
     (r"\bplease to\b", "please"),
@@ -3740,7 +3745,9 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
         r"(.+?)\s*([.!]?)$"
     ).match(s)
     if m is not None:
-        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()]:
+        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()] and (
+            _plain_list28s(m.group(3), lexicon)
+        ):
             return f"{m.group(3)} {m.group(2)}{m.group(4)}"
         return text
     # "Lena's getting two things today, the lemon and the knife", "Sam wants two pens, the blue
@@ -3806,6 +3813,16 @@ def _shares(listed: str, lexicon: Lexicon) -> dict[str, list[str]]:
         else:
             return {}
     return out
+
+
+def _plain_list28s(listed: str, lexicon: Lexicon) -> bool:
+    """Whether ``listed`` is only names of the scene's objects, joined by commas, 'and' and
+    articles (session 28, 12s: "Two things for Alice: the cup, and we need the water bottle" had
+    counted the speaker's want as the second thing, and read both for Alice)."""
+    rest = listed.lower()
+    for it in _names(listed, lexicon):
+        rest = rest.replace(it.text.lower(), " ", 1)
+    return set(re.findall(r"[a-z']+", rest)) <= {"the", "a", "an", "and", "both", "also"}
 
 
 def _objects_listed(listed: str, lexicon: Lexicon) -> list[str]:
@@ -4673,10 +4690,12 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
     ).match(text)
     if m is not None and _the_person(m.group(1), text, lexicon):
         return f"give {m.group(1)} any {m.group(2)}{m.group(3)}"
-    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar
+    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar (session
+    # 28: the objects one phrase, with no comma: "…, hand them the scanner, and we need the work
+    # gloves" had been read as the gloves to either, and the scanner only with them to Mia)
     m = _rx(
         r"^whichever of ([^,]+?) or ([^,]+?) (?:is|'s) [a-z]+(?: [a-z]+)?\s*,\s*(give|hand|pass|"
-        r"bring|take) (?:them|him or her) (.+?)\s*([.!]?)$"
+        r"bring|take) (?:them|him or her) ([^,;:]+?)\s*([.!]?)$"
     ).match(text)
     if (
         m is not None
@@ -4686,6 +4705,10 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
         and _ids(m.group(4), lexicon, "object")
         and not _ids(m.group(4), lexicon, "human")
     ):
+        if len(_ids(m.group(4), lexicon, "object")) > 1:
+            # "…, hand them the scanner and the gloves": both to the one who is around
+            v, o = m.group(3), m.group(4)
+            return f"either {v} {o} to {m.group(1)} or {v} {o} to {m.group(2)}{m.group(5)}"
         return f"{m.group(3)} {m.group(4)} to {m.group(1)} or {m.group(2)}{m.group(5)}"
     # "One of the two people should get the apple", "The cup should go to one of the two people"
     people = [h for h in lexicon.scene.humans]
@@ -8032,6 +8055,27 @@ _SPEAKER_HELD = re.compile(
     r"as well|only one)\b|\d",
     _F,
 )
+# Session 28 (12s): a time or a place of the speaker's own said with 'next' / 'last' / 'first' /
+# 'till' ("I've got four minutes till my next run", "I'm off to the next job", "I've been on since
+# seven last night", "from the unit next door", "since first light") orders nothing the request
+# asks: such a phrase is not a held word of the stretch. Its noun must not be a word that could
+# stand for an object ('the next one', 'the last thing', 'the next item'); the stretch must still
+# name nothing in the scene.
+_SPEAKER_TIMES = re.compile(
+    r"\b(?:(?:till|until|before|after|since|for|to) )?(?:the|my|our|his|her|their|this) "
+    r"(?:next|last) (?!(?:ones?|things?|items?|bits?|lot|rest|others?|person|people)\b)"
+    r"[a-z]+\b|\b(?:since )?(?:last|next) (?:night|week|month|year|door)\b|"
+    r"\b(?:since )?first (?:light|thing)\b",
+    _F,
+)
+
+
+def _held_but_times(piece: str) -> bool:
+    """Whether ``piece`` holds a word of _SPEAKER_HELD outside the speaker's own times and places
+    (_SPEAKER_TIMES)."""
+    return bool(_SPEAKER_HELD.search(_SPEAKER_TIMES.sub(" ", piece)))
+
+
 # what may open the sentence of such a stretch, taken off with it
 _SPEAKER_OPENER = re.compile(
     r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
@@ -8068,7 +8112,7 @@ def _speaker_stretch(
     their own things or a sentence that asks nothing), naming nothing in the scene and asking
     nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
+    if not piece or _held_but_times(piece) or not _names_nothing(piece, lexicon):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
@@ -8446,13 +8490,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         before = out[: m.start()]
         said = _ids(re.split(r"[.!?;]", before)[-1], lexicon, "object")
         word = m.group(1).lower()
-        need = {"both": 2, "the two": 2, "the three": 3, "the four": 4, "all three": 3}.get(word)
+        need = {"both": 2, "the two": 2, "the pair": 2, "the three": 3, "the four": 4}.get(word)
+        need = 3 if word == "all three" else need
         if not said or (need is not None and len(said) != need) or len(said) < 2:
             return m.group(0)
         return "" if m.group(2) == "," else m.group(2)
 
     out = _sub(
-        r",\s*(all|both|the two|the three|the four|every one|each one|all three) of them\b"
+        r",\s*(all|both|the two|the pair|the three|the four|every one|each one|all three) of "
+        r"them\b"
         r"\s*(,|(?=[.!?]|$))",
         counted,
         out,
@@ -8519,6 +8565,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         out,
     )
 
+    return _narrowed_to_one(out, lexicon)
+
+
+def _narrowed_to_one(text: str, lexicon: Lexicon) -> str:
+    """'the Xs, sorry, just the one' (the X: which one is not said, so the refusal names its
+    readings); session 28: 'only the one' as 'just the one', and after 'both Xs' ("Both mugs to
+    Alice, no, just the one"). Also the last of the earlier sessions' steps (``_STEPS``), after
+    their closers are taken off ("…, sorry, only the one, cheers")."""
+
     def just_one(m: re.Match[str]) -> str:
         noun = m.group(2)
         # 'boxes' is 'box' (session 27: 'boxe' named nothing, so the plural was kept and read as
@@ -8527,15 +8582,24 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         single = next((w for w in cut if _ids(w, lexicon, "object")), noun)
         if single == noun or len(_ids(single, lexicon, "object")) < 2:
             return m.group(0)
-        return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
+        return f"{m.group(1)}the {single}{m.group(3)}{m.group(4)}"
 
-    out = _sub(
-        r"^(.*?\bthe )([a-z]+)((?: [^,]*?)?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one"
-        r"\s*([.!]?)$",
-        just_one,
-        out,
+    def listed_one(m: re.Match[str]) -> str:
+        if len(_ids(m.group(2), lexicon, "object")) < 2:
+            return m.group(0)
+        return f"{m.group(1)}the {m.group(2)}{m.group(3)}{m.group(4)}"
+
+    narrowed = (
+        r",\s*(?:sorry|no|i mean),?\s*(?:just|only) (?:the )?one(?: and that's (?:it|all))?"
+        r"\s*([.!]?)$"
     )
-    return out
+    text = _sub(r"^(.*?\b)(?:the|both) ([a-z]+)((?: [^,]*?)?)" + narrowed, just_one, text)
+    # "the red mug and the blue mug to Bob, no, just the one" (the earlier steps' 'both mugs')
+    return _sub(
+        r"^(.*?\b)the [a-z]+ ([a-z]+)(?: and the [a-z]+ \2)+((?: [^,]*?)?)" + narrowed,
+        listed_one,
+        text,
+    )
 
 
 def _negation19(text: str, lexicon: Lexicon) -> str:
@@ -10081,6 +10145,343 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _whole_name(words: str, lexicon: Lexicon, kind: str) -> bool:
+    """Whether ``words`` (an article aside) are one name of the scene, whole, of ``kind``."""
+    bare = re.sub(r"^(?:the|a|an) ", "", words.strip(), flags=_F)
+    said = _names(bare, lexicon)
+    return (
+        len(said) == 1
+        and said[0].text.lower() == bare.lower()
+        and all(r.kind == kind for r in said[0].refs)
+    )
+
+
+# a person's name as the session-28 (12s) rules take it: 'Person A', a title and a name, a word
+_PERSON28S = r"person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+"
+
+
+def _object_and_person(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether ``m``'s 'what' is one whole name of the scene's objects and its 'who' one of its
+    people."""
+    return _whole_name(m["what"], lexicon, "object") and _whole_name(m["who"], lexicon, "human")
+
+
+def _object_first28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a clause (between marks, after an optional 'then' / 'and then') said
+    object first, '<object> give <person>' ("Apple give Person A first, then bottle give Person
+    B"): 'give <person> <object>'. The object and the person must each be one name of the
+    scene, whole, with nothing else in the clause but 'first' / 'next' / 'too' after it; a
+    pronoun ('the bottle give her'), a count ('both give Alice'), a past form ('the bottle gave
+    Bob …') or a word left over leaves the clause as it is."""
+
+    def turned(m: re.Match[str]) -> str:
+        if not _object_and_person(m, lexicon):
+            return m[0]
+        return f"{m['lead']}{m['verb']} {m['who']} {m['what']}{m['tail']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:(?:and )?then,?\s+)?)(?P<what>(?:the |a |an )?"
+        rf"[a-z]+(?: [a-z]+)?) (?P<verb>give|hand|pass) (?P<who>{_PERSON28S})"
+        r"(?P<tail>(?: first| next| too| as well)?)(?=\s*(?:[,.;!?]|$))",
+        turned,
+        text,
+    )
+
+
+def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'the pair / both, <X> and <Y> (together / both / alike)' at the end
+    ("Person A's having the pair, bottle and chips together", "Person A's to have both, bottle and
+    chips alike"): the two objects listed stand for 'the pair' / 'both'.
+    The list must be two names of the scene's objects, whole, and nothing else."""
+
+    def listed(m: re.Match[str]) -> str:
+        first, second = m["first"], m["second"]
+        if not (_whole_name(first, lexicon, "object") and _whole_name(second, lexicon, "object")):
+            return m[0]
+        if _ids(first, lexicon, "object") == _ids(second, lexicon, "object"):
+            return m[0]
+        return f"{first} and {second}{m['end']}"
+
+    return _sub(
+        r"\b(?:the pair|both),\s*(?P<first>(?:the )?[a-z]+(?: [a-z]+)?) and "
+        r"(?P<second>(?:the )?[a-z]+(?: (?!together|both|alike|as well)[a-z]+)?)"
+        r"(?: (?:together|both|alike|as well))?"
+        r"(?P<end>\s*[.!]?\s*)$",
+        listed,
+        text,
+    )
+
+
+def _is_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s to get / have …' ("Person B's to get both"; 's before 'to' is
+    'is', as a possessive cannot stand there) and '<person> is to have …' are '<person> gets …';
+    'gets / has the two of them' (the objects: the person is named as the subject) is 'gets
+    both'. The person must be one of the scene's, whole."""
+
+    def gets(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        return f"{m['who']} gets"
+
+    out = _sub(
+        rf"\b(?P<who>{_PERSON28S})(?:'s| is) to "
+        r"(?:get|have|receive)\b",
+        gets,
+        text,
+    )
+    return _sub(r"\b(gets|has|receives|takes) the two of them\b", r"\1 both", out)
+
+
+def _wanted_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '(he / she / they) wants / needs it with the <food or the like>' at the
+    end of a clause ("the lemon to the chef please, he wants it with the hake"): what the object
+    goes with, as 'for the hake' (_purpose), taken off when it names nothing in the scene (nor
+    by a typo) and holds no word that counts, chooses or points back; 'with the salt' (an object
+    of the scene) asks for it too, and stays."""
+    return _sub(
+        r"\b((?:he|she|they) (?:wants?|needs?|would like|'d like) (?:it|them)) with (?:the|his|"
+        r"her|their|a|an|some) ([a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.;!?]|$))",
+        lambda m: (
+            m.group(1)
+            if _names_nothing(m.group(2), lexicon) and not _KEEP_WORDS.search(m.group(2))
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# -ing words that say what the person wants, not what they are busy with
+_WANTING28S = frozenset(
+    {
+        *("asking", "waiting", "wanting", "looking", "hoping", "begging", "calling", "shouting"),
+        *("dying", "gasping", "longing", "pining", "crying", "going", "getting", "having"),
+        *("needing", "eyeing", "eying", "angling", "expecting", "saving", "keeping", "using"),
+    }
+)
+
+
+def _busy_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s been / is <verb>ing <a few words>,' before the request
+    ("Person B's been mending sails, give him the chips"): what the person is busy with says why,
+    as "Person B is busy, give him …" (read before), and is read as that when the words after
+    the -ing word name nothing in the scene (nor by a typo) and hold no word that counts, chooses
+    or points back, and the -ing word is no verb of the grammar and says no want ('asking',
+    'waiting', 'looking', …). The person stays, for 'him' / 'her' after it."""
+
+    def busy(m: re.Match[str]) -> str:
+        ing, what = m["ing"].lower(), m["what"]
+        if ing in VERBS or ing in _WANTING28S or not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(what, lexicon) or _KEEP_WORDS.search(what):
+            return m[0]
+        return f"{m['who']} is busy,"  # ('mending' alone is one edit from 'sending')
+
+    return _sub(
+        rf"^(?P<who>{_PERSON28S})(?P<be>'s been| has been| is| "
+        r"was) (?P<ing>[a-z]+ing) (?P<what>[a-z]+(?: [a-z]+){0,2}),",
+        busy,
+        text,
+    )
+
+
+def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person> says / said (that) she's / he's / they're <a word or two>,'
+    opening the instruction ("Person A says she's peckish, the chips please"): the pronoun is
+    the one who says it (the subject of the reporting verb), so it is '<person> is <words>,'. The
+    words must name nothing in the scene and hold no counting or pointing word; the person must be
+    one whole name."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(m["how"], lexicon) or _KEEP_WORDS.search(m["how"]):
+            return m[0]
+        return f"{m['who']} is {m['how']},"
+
+    return _sub(
+        rf"^(?P<who>{_PERSON28S}) (?:says|said)(?: that)? "
+        r"(?:she's|she is|he's|he is|they're|they are) (?P<how>[a-z]+(?: [a-z]+)?),",
+        said,
+        text,
+    )
+
+
+def _give_both28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a last sentence 'Please (you) give both.' after two objects were each
+    said to be for someone ("Person A want bottle, and Person B want chips. Please you give
+    both."): doing what was said, nothing more; taken off when what comes before names exactly
+    two objects and says who has each (a 'for' / 'to' or a want verb per object)."""
+    m = _rx(
+        r"^(?P<said>.+?[.!])\s+(?:please,?\s+)?(?:you\s+)?(?:give|do|deliver|hand over|sort out)"
+        r" (?:both|them both|both of them|the two)(?:,?\s*please)?\s*[.!]?\s*$"
+    ).match(text)
+    if m is None:
+        return text
+    said = m["said"]
+    wants = len(re.findall(r"\b(?:wants?|needs?|for|to|gets?)\b", said, _F))
+    if len(_ids(said, lexicon, "object")) != 2 or wants < 2 or not _ids(said, lexicon, "human"):
+        return text
+    return said
+
+
+def _dislocated28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): an object said first, then a clause taking it up again with 'it' / 'that
+    one' ("…, and the cup, Person A can have that one"): the pronoun is the object just said (a
+    left dislocation), so '<person> can have <object>'. The object must be one whole name of the
+    scene, said right after the start, a full stop or ', and'; the person one whole name."""
+
+    def taken_up(m: re.Match[str]) -> str:
+        if not _object_and_person(m, lexicon):
+            return m[0]
+        return f"{m['lead']}{m['who']} {m['verb']} {m['what']}"
+
+    return _sub(
+        r"(?P<lead>^|(?<=[.!?])\s+|,\s*and\s+)(?P<what>the [a-z]+(?: [a-z]+)?),\s*"
+        rf"(?P<who>{_PERSON28S}) (?P<verb>can have|gets|should get|can take) "
+        r"(?:it|that one|that)\b",
+        taken_up,
+        text,
+    )
+
+
+def _along_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): ', and the <object> with it / them' closing the instruction (the object
+    goes along with what was just placed or handed over: 'too'), and 'give them to <person>
+    together' (how, not what: 'together' taken off). The object must be one whole name."""
+
+    def along(m: re.Match[str]) -> str:
+        if not _whole_name(m["what"], lexicon, "object"):
+            return m[0]
+        return f"{m['lead']}{m['what']} too{m['end']}"
+
+    text = _sub(
+        r"(?P<lead>,?\s*\band )(?P<what>the [a-z]+(?: [a-z]+)?) with (?:it|them)"
+        r"(?P<end>\s*[.!]?\s*)$",
+        along,
+        text,
+    )
+    return _sub(
+        r"\b((?:give|hand|pass|bring|take) (?:them|both|the two of them|both of them) (?:over )?to "
+        r"(?:him|her|them|person [a-z]|[a-z]+)) together(?=\s*[.!]?\s*$)",
+        r"\1",
+        text,
+    )
+
+
+_PRONOUNS28S = frozenset({"him", "her", "them"})
+
+
+def _run_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'run <objects> (up / down / over / across) to <person or surface>' ("Will
+    you run the bottle up to Person B"): carrying it there quickly, 'bring'. Only the verb said
+    as a request (plain 'run', first in its clause or after 'you' / 'to' / 'please'), its object
+    the scene's objects and nothing else, or 'it' / 'them' (resolved as for 'bring'): 'the foley
+    session ran long', 'the tap is running', "I'll run the numbers" are no carrying."""
+
+    def brought(m: re.Match[str]) -> str:
+        said = m["what"].lower() in ("it", "them") or _objects_only(m["what"], lexicon)
+        if not said or not (m["where"].lower() in _PRONOUNS28S or _names(m["where"], lexicon)):
+            return m[0]
+        return f"{m['lead']}bring {m['what']}{m['dir']} to {m['where']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*|\b(?:you|to|please) ))run (?P<what>it|them|(?:the|that|"
+        r"this|those|these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to "
+        r"(?P<where>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|$|\s(?:for|please|now)\b))",
+        brought,
+        text,
+    )
+
+
+def _matters_which28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "I don't suppose / think it matters which (colour)" and "doesn't bother
+    me which" are "it doesn't matter which (colour)", the choice tail the grammar reads (the
+    speaker leaving the choice open)."""
+    text = _sub(
+        r"\b(?:it )?(?:doesn't|does not) bother me (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+    return _sub(
+        r"\bi (?:don't|do not) (?:suppose|think|reckon|imagine|expect) it (?:matters|'ll matter|"
+        r"will matter) (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+
+
+def _either_of_them28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'Either of them can have / gets …' opening the instruction, in a scene
+    of exactly two people, with no one named before it: 'them' are the two people (the receiving
+    verb says so), so 'Either of the two people …', which the grammar reads as one or the
+    other."""
+    if len(lexicon.scene.humans) != 2:
+        return text
+    return _sub(
+        r"^either of them (?=(?:can have|gets|can take|should get|should have|may have)\b)",
+        "Either of the two people ",
+        text,
+    )
+
+
+def _disturb28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "sorry ah, disturb you a bit" (Singapore English) is "sorry to disturb
+    you a bit", the apology the openers know (_BOTHERING)."""
+    return _sub(
+        r"\bsorry(?: (?:ah|lah|leh))?,?\s+(?=disturb(?:ing)? you\b)",
+        "sorry to ",
+        text,
+    )
+
+
+def _or_not28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a request asked with 'can … or not?' (Singapore English: "Can help me
+    give Alice the crisps or not?", "the bottle, can pass to Person B or not ah?") is the request
+    asked with 'can …?': 'or not' is taken off. Only after 'can' in the same sentence, at the end
+    of a question: "Should Alice have the crisps or not?" asks whether, and stays a question."""
+    return _sub(
+        r"(\bcan\b[^.!?]*?)\s*,?\s+or not(?: (?:ah|lah|leh|one))?\s*(\?)\s*$",
+        r"\1\2",
+        text,
+    )
+
+
+# Session 28 (12s): 'finish already', 'then finish', 'and that's finished' after the last request:
+# the speaker saying the list is over (asks nothing)
+_FINISHED28S = (
+    r",\s*(?:and |then |and then )?(?:finish|finished|finish already|all finished|that's "
+    r"finished)(?: (?:already|lah|ah|now))*\s*(?=[.!]?\s*$)"
+)
+
+
+# 'and be quick about it', 'look sharp', 'chop chop' after the last request: urging (asks nothing)
+_URGED28S = (
+    r"(?:,\s*|\s+and\s+|\s*[.!]\s+)(?:be quick(?: about it)?|look sharp|chop,? chop|make it "
+    r"snappy|get a move on)\s*(?=[.!]?\s*$)"
+)
+
+
+# 'since her shift began' after a want; "they've had sample dye in them" after a placement of
+# them: when the want began, why the objects go there (each names nothing in the scene)
+_SINCE28S = (
+    r"\s+since (?:her|his|their|my|our|the) [a-z]+(?: [a-z]+)? (?:began|started|opened|came on)"
+    r"(?=\s*[.!]?\s*$)"
+)
+_HAD_IN28S = (
+    r",\s*(?:they've|they have|it's|it has) (?:had|got) (?:[a-z]+ ){1,3}(?:in|on) (?:them|it)"
+    r"(?=\s*[.!]?\s*$)"
+)
+
+
+def _finished28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'finish already' (_FINISHED28S), urging (_URGED28S), 'since her shift
+    began' (_SINCE28S) and "they've had dye in them" (_HAD_IN28S) after the last request, taken
+    off when they name nothing in the scene."""
+    for said in (_FINISHED28S, _URGED28S, _SINCE28S, _HAD_IN28S):
+        text = _drop(said, text, lexicon)
+    return text
+
+
 # A description of objects, then the list of the objects it describes ("The two drinks, bottle
 # and cup, go to Person B", "The two things cluttering the floor, the bottle and the crisps, up
 # on the shelf", "Hand over both items, chips and bottle alike, to Person B"; "Anything edible
@@ -10322,10 +10723,15 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _choice_listed26s,
     _nobody_else26s,
     _all_of27r,
+    _narrowed_to_one,
 )
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _or_not28s,
+    _disturb28s,
+    _matters_which28s,
+    _either_of_them28s,
     _idioms27r,
     _both_for27r,
     _included27r,
@@ -10405,4 +10811,15 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _out_of_reach27,
     _verb_last27,
     _described_list27,
+    _object_first28s,
+    _finished28s,
+    _is_to28s,
+    _pair_listed28s,
+    _run_to28s,
+    _wanted_with28s,
+    _busy_with28s,
+    _says_she_is28s,
+    _give_both28s,
+    _dislocated28s,
+    _along_with28s,
 )
