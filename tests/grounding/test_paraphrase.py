@@ -209,7 +209,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, both mugs, the red and the blue, could they go to Alice?",
         "Two items, both give Alice lah.",
         "The four treasures, all of them, unto Person A.",
-        "Aye aye, Person A's to have both, bottle and chips alike.",
         "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
         "bottle and the chips.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
@@ -221,7 +220,6 @@ KNOWN_MISSES = frozenset(
         "We reported the cup was going to Person A. Correction: it's the apple.",
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
-        "Can help me give Alice the crisps or not?",
         "Cart the grey blanket over to Mr Lee.",
         "Both of the smaller boxes to Tom.",
         "Both plates are for Marco this morning!",
@@ -263,9 +261,7 @@ KNOWN_MISSES = frozenset(
         "Both of the mugs are Alice's, give her the pair.",
         "Poor Mr Lee is cold, pet, let him have the blue blanket and the grey one as well.",
         "Two things each: the bottle and cup to Person A, the chips and apple to Person B.",
-        "Person A gets the two of them, bottle and chips both.",
         "That one bottle, over to Person A, quick as you can.",
-        "Apart from the red one, Sam's to get the pens.",
         "Bob gets the lot, just leave the two mugs where they are.",
         "Jess wants the other spanner, not the big one on the workbench.",
         "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
@@ -314,7 +310,6 @@ KNOWN_MISSES = frozenset(
         "Load the three boxes onto the belt, small, medium and large.",
         "Two spanners, one to Kofi and one to Jess.",
         "Person B is moving desks, so every last one of the four items goes across to her.",
-        "Person A's having the pair, bottle and chips together.",
         "Person B only needs a single bottle, just the one.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
@@ -340,7 +335,6 @@ KNOWN_MISSES = frozenset(
         "chuck the blue pen in the box its cluttering my desk",
         "cup to person a first please and once shes got it the apple goes to person b",
         "Lenq needs the salt for table four.",
-        "Alixe said she's peckish, the crisps are for her.",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
@@ -355,7 +349,6 @@ KNOWN_MISSES = frozenset(
         "Dana's desperate for the banana, she hasn't eaten since six this morning.",
         "Tom's after the barcode scanner, his own one has died on him.",
         "See the notepad by the phone? Drop it in the box.",
-        "Mia's got the scanner down on her checklist. Could you run it over to her?",
         "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
         "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
@@ -378,8 +371,6 @@ KNOWN_MISSES = frozenset(
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
-        "Both items to Person B, the pair of them.",
-        "Bob is to have the two of them, bottle and crisps.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
@@ -414,8 +405,6 @@ KNOWN_MISSES = frozenset(
         "Hello po, good morning po. Kindly give the bottle to Person A po, if okay with you. "
         "Thank you so much po, God bless.",
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
-        "Right, I'm the midwife, I've been on since seven last night, so, um, bear with me. "
-        "Could you pop the bowl in the sink for us, pet? Ta.",
         "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
         "terribly passing Sam the notepad? Thanks a bunch.",
         "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
@@ -446,7 +435,6 @@ KNOWN_MISSES = frozenset(
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Give Carol one of the mugs, she really doesn't care which.",
-        "Either of them can have the chips, Alice or Bob, makes no odds.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
@@ -497,10 +485,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        'Habari, good afternoon my friend. Please, I am requesting you to give the apple to '
-        'Person A. Asante sana, you are very helpful.',
-        'Hello boss, sorry ah, disturb you a bit. The bottle you give to Person A lah, can? Thank '
-        'you ah, very good.',
         "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
         "Um, if it's all the same to you, the bottle over to Person B, please. Ta ever so.",
         "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
@@ -512,7 +496,6 @@ KNOWN_MISSES = frozenset(
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
         "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        'Person A want bottle, krap, and Person B want chips. Please you give both.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
@@ -527,7 +510,6 @@ KNOWN_MISSES = frozenset(
         'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        'Chips for Person B lah, and the cup, Person A can have that one.',
         "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         "Person A's over there mending the nets. Take her the bottle, will you.",
@@ -537,9 +519,6 @@ KNOWN_MISSES = frozenset(
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        'Please give bottle to Person B and the cup you give to Person A after that, then finish, '
-        'asante.',
-        'Apple give Person A first, then bottle give Person B, finish already lah.',
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
         'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
         'tape measure out.',
@@ -552,7 +531,6 @@ KNOWN_MISSES = frozenset(
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        "Mr Lee and Mrs Khan get a blanket each, I don't suppose it matters which colour.",
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
@@ -561,9 +539,7 @@ KNOWN_MISSES = frozenset(
         "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
-        'Not Person A ah, Person B is the one getting the apple.',
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Give Person A whatever isn't the bottle, I've had my hands in the slip bucket.",
         "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
@@ -586,7 +562,6 @@ KNOWN_MISSES = frozenset(
         'chios for Person B lah, she asked me just now',
         'Put the stspler in the box, I need the desk clear for the cloth.',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
-        'Boss, the bottle, can pass to Person B or not ah?',
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
@@ -599,7 +574,6 @@ KNOWN_MISSES = frozenset(
         'through, thanks.',
         "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
         'grateful.',
-        'Lovely, ta, the lemon to the chef please, he wants it with the hake.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
         'Carol would like to have the blue mug, and Bob also the apple, he told me before.',
@@ -609,9 +583,7 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen left in the box, she'll sort it out later.",
         "Kofi wants the hammer, mine's still in the forge.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
-        'Person A gets the bottle, and the cup as well, give them to her together.',
         "You see that bottle by your elbow? Person A's to have it.",
-        'The scanner, stick it on the belt, and the tape with it.',
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
         "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
         'waiting.',
@@ -620,7 +592,6 @@ KNOWN_MISSES = frozenset(
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
-        "Either of them can have the chips, doesn't bother me which.",
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',
@@ -653,7 +624,6 @@ KNOWN_MISSES = frozenset(
         'The chips are meant for Peraon A, could you take them over.',
         'Put the bnana on the tray next to the films, ta.',
         'Drop the scnner on the belt before the next load comes down.',
-        "Will you run the bottle up to Person B for me, he's at the top of the field?",
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
@@ -663,8 +633,6 @@ KNOWN_MISSES = frozenset(
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
-        "Give Person B the chips and Person A the bottle and be quick about it as I'm off to "
-        'the next job.',
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
         'not bothered which.',
@@ -694,7 +662,6 @@ KNOWN_MISSES = frozenset(
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
-        "Both cups in the sink, please, they've had sample dye in them.",
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
@@ -702,24 +669,35 @@ KNOWN_MISSES = frozenset(
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Don't put it down anywhere, just hand the bottle to Person A.",
-        "Anything that isn't the bottle, hand it to Person B.",
         "Sam gets the pens, all except the blue one, that stays where it is.",
-        "Not Mr Lee, Mrs Khan's the one for the pills.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Person A, the bottle — no, yes, the bottle, that's right.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",
-        "Person B's been mending sails, give him the chiips.",
-        "Persoon A's been asking for the apple since her shift began.",
-        "Person A says she's peckish, the chhips please.",
-        "The stapller lives in the box, put it back there please.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "Could I trouble you to run the chips down to Person A at the far end?",
         "Can you manage chips to Person B and the bottle across to Person A while I finish "
         "hemming this sail?",
+        # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
+        "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
+        "the apple.",
+        "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
+        "wants to go on the tray.",
+        "Whichever thing's nearer your arm, that's the one for Person A.",
+        "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
+        "her.",
+        "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
+        "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
+        "There's the only bottle here, sat by the arm; over to Person A with it.",
+        "The two smaller boxes can join the big one on the pallet.",
+        "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
+        "The cashier wants every box except the large one sent down the belt.",
+        "Any book not yet on the bookshelf wants shelving.",
+        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
+        "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
+        "whichever ones closer to person a, give her that",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -782,8 +760,10 @@ KNOWN_UNCLEAR = frozenset(
 # in session 26: asserted now, the rest in KNOWN_MISSES; "blind25" written in session 26 by
 # another engineer, reviewed by a second one, measured once at the end of session 26, tuned on
 # in session 27: asserted now, the rest in KNOWN_MISSES; "blind26" written in session 27 by
-# another engineer and committed alone, measured once at the end of session 27: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind26", "blind27"})
+# another engineer and committed alone, reviewed by a second one, measured once at the end of
+# session 27, tuned on in session 28: asserted now, the rest in KNOWN_MISSES; "blind27" written
+# in session 28 by another engineer and committed alone: measured once at the end, not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind27"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -99,10 +99,11 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # tuned on in session 26), blind25 (written in session 26 by another engineer and committed alone,
 # reviewed by a second engineer, never opened by the engineers who changed the grounder before
 # its one measurement at the end of session 26; tuned on in session 27), blind26 (written in
-# session 27 by another engineer and committed alone, never opened by the engineers who changed
-# the grounder before its one measurement at the end of session 27), blind27 (written in session
-# 28 by another engineer and committed alone, never opened by the engineers who changed the
-# grounder before its one measurement at the end of session 28; tests do not assert it).
+# session 27 by another engineer and committed alone, reviewed by a second engineer, never opened
+# by the engineers who changed the grounder before its one measurement at the end of session 27;
+# tuned on in session 28), blind27 (written in session 28 by another engineer and committed
+# alone, never opened by the engineers who changed the grounder before its one measurement at the
+# end of session 28; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -168,6 +168,9 @@ for _lemma, _forms in {
     "wheel": ("wheels", "wheeling", "wheeled"),
     "trundle": ("trundles", "trundling", "trundled"),
     "slot": ("slots", "slotting", "slotted"),
+    # session 28 (12s): going quickly with something ("whizz the bib over to the high chair";
+    # 'run the bottle up to …' is normalise.py's _run_to28s: 'ran long' is no carrying)
+    "whizz": ("whizzes", "whizzing", "whizzed", "whiz"),
 }.items():
     _verb(_lemma, "bring", *_forms)
 # put: a surface ("put the cup on the shelf")
@@ -195,6 +198,7 @@ for _lemma, _forms in {
     "deposit": ("deposits", "depositing", "deposited"),
     "dump": ("dumps", "dumping", "dumped"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
+    "live": ("lives",),  # session 28: "The stapler lives in the box" (where it is kept)
 }.items():
     _verb(_lemma, "put", *_forms)
 # pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")
@@ -1919,6 +1923,8 @@ def _lex(text: str, lexicon: Lexicon) -> list[Item]:
             continue
         if tok.low in VERBS:
             items.append(Item("word", "verb:" + VERBS[tok.low], tok.text))
+        elif tok.low == "back" and _come_back(tokens, i):
+            items.append(Item("unknown", tok.low, tok.text))  # a state: never a filler
         elif tok.low in WORDS:
             items.append(Item("word", WORDS[tok.low], tok.text))
         elif tok.low in NUMBERS or tok.low.isdigit():
@@ -1927,6 +1933,35 @@ def _lex(text: str, lexicon: Lexicon) -> list[Item]:
             items.append(Item("unknown", tok.low, tok.text))
         i += 1
     return _merge_unknown(items)
+
+
+# session 28 (12r): 'back' said of what is, comes or gets back, with no place after it ("before
+# the small box is back", "once it's back", "when Tom gets back"): the thing or person returns, an
+# outside event or a state, which no task of the cell makes happen; as a filler ('put it back on',
+# 'bring it back to') it dropped out and left "before the small box is", which the grammar read as
+# the box put where the tape goes. Kept as a word of its own, the clause is refused.
+_COME = frozenset(
+    {"is", "'s", "are", "'re", "was", "were", "be", "been", "being", "am", "'m"}
+    | {"comes", "come", "came", "coming"}
+)
+_GET = frozenset({"gets", "get", "got", "getting"})  # 'get back the cup' is 'bring the cup'
+_BACK_TO = frozenset(
+    {"to", "on", "onto", "in", "into", "at", "where", "here", "there", "with", "from", "up"}
+    | {"down", "over", "inside", "under", "upon", "by", "near", "beside", "next", "out", "off"}
+    | {"home", "round", "around", "across", "again", "together"}
+)
+
+
+def _come_back(tokens: list[Token], i: int) -> bool:
+    """Whether the 'back' at ``i`` is said of something that is / comes / gets back, with no place
+    after it."""
+    if i == 0 or tokens[i - 1].low not in _COME | _GET:
+        return False
+    if i + 1 == len(tokens):
+        return True
+    if tokens[i - 1].low in _GET:
+        return tokens[i + 1].low in ",.;:!?"  # "before Tom gets back.", not "get back the cup"
+    return tokens[i + 1].low not in _BACK_TO
 
 
 def _shared_nouns(tokens: list[Token], lexicon: Lexicon) -> list[Token]:

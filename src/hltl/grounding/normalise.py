@@ -3248,7 +3248,12 @@ _SAID14: tuple[tuple[str, str], ...] = (
     ),
     # "Reckon Lena wants the lemon", "I am asking you to put …"
     (r"^(?:i )?reckon,?\s+", ""),
-    (r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) asking (?:you )?(?:to )?(?=[a-z])", r"\1"),
+    # (session 28: "I am requesting you to give …", "I'm kindly asking you to …")
+    (
+        r"(^|(?<=[.;!?])\s*)(?:i'm|i am|we're|we are) (?:kindly )?(?:asking|requesting) "
+        r"(?:you )?(?:to )?(?=[a-z])",
+        r"\1",
+    ),
     # "Is possible to give …", "please to put", "must to have": said by someone learning English
     (r"^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", ""),
     (r"\bplease to\b", "please"),
@@ -3740,7 +3745,9 @@ def _counted_things(text: str, lexicon: Lexicon) -> str:
         r"(.+?)\s*([.!]?)$"
     ).match(s)
     if m is not None:
-        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()]:
+        if len(_objects_listed(m.group(3), lexicon)) == _NUMBERS15[m.group(1).lower()] and (
+            _plain_list28s(m.group(3), lexicon)
+        ):
             return f"{m.group(3)} {m.group(2)}{m.group(4)}"
         return text
     # "Lena's getting two things today, the lemon and the knife", "Sam wants two pens, the blue
@@ -3806,6 +3813,16 @@ def _shares(listed: str, lexicon: Lexicon) -> dict[str, list[str]]:
         else:
             return {}
     return out
+
+
+def _plain_list28s(listed: str, lexicon: Lexicon) -> bool:
+    """Whether ``listed`` is only names of the scene's objects, joined by commas, 'and' and
+    articles (session 28, 12s: "Two things for Alice: the cup, and we need the water bottle" had
+    counted the speaker's want as the second thing, and read both for Alice)."""
+    rest = listed.lower()
+    for it in _names(listed, lexicon):
+        rest = rest.replace(it.text.lower(), " ", 1)
+    return set(re.findall(r"[a-z']+", rest)) <= {"the", "a", "an", "and", "both", "also"}
 
 
 def _objects_listed(listed: str, lexicon: Lexicon) -> list[str]:
@@ -4673,10 +4690,12 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
     ).match(text)
     if m is not None and _the_person(m.group(1), text, lexicon):
         return f"give {m.group(1)} any {m.group(2)}{m.group(3)}"
-    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar
+    # "Whichever of Dana or Omar is free, give them the spoon": the spoon to Dana or Omar (session
+    # 28: the objects one phrase, with no comma: "…, hand them the scanner, and we need the work
+    # gloves" had been read as the gloves to either, and the scanner only with them to Mia)
     m = _rx(
         r"^whichever of ([^,]+?) or ([^,]+?) (?:is|'s) [a-z]+(?: [a-z]+)?\s*,\s*(give|hand|pass|"
-        r"bring|take) (?:them|him or her) (.+?)\s*([.!]?)$"
+        r"bring|take) (?:them|him or her) ([^,;:]+?)\s*([.!]?)$"
     ).match(text)
     if (
         m is not None
@@ -4686,6 +4705,10 @@ def _choice_frames(text: str, lexicon: Lexicon) -> str:
         and _ids(m.group(4), lexicon, "object")
         and not _ids(m.group(4), lexicon, "human")
     ):
+        if len(_ids(m.group(4), lexicon, "object")) > 1:
+            # "…, hand them the scanner and the gloves": both to the one who is around
+            v, o = m.group(3), m.group(4)
+            return f"either {v} {o} to {m.group(1)} or {v} {o} to {m.group(2)}{m.group(5)}"
         return f"{m.group(3)} {m.group(4)} to {m.group(1)} or {m.group(2)}{m.group(5)}"
     # "One of the two people should get the apple", "The cup should go to one of the two people"
     people = [h for h in lexicon.scene.humans]
@@ -8032,6 +8055,27 @@ _SPEAKER_HELD = re.compile(
     r"as well|only one)\b|\d",
     _F,
 )
+# Session 28 (12s): a time or a place of the speaker's own said with 'next' / 'last' / 'first' /
+# 'till' ("I've got four minutes till my next run", "I'm off to the next job", "I've been on since
+# seven last night", "from the unit next door", "since first light") orders nothing the request
+# asks: such a phrase is not a held word of the stretch. Its noun must not be a word that could
+# stand for an object ('the next one', 'the last thing', 'the next item'); the stretch must still
+# name nothing in the scene.
+_SPEAKER_TIMES = re.compile(
+    r"\b(?:(?:till|until|before|after|since|for|to) )?(?:the|my|our|his|her|their|this) "
+    r"(?:next|last) (?!(?:ones?|things?|items?|bits?|lot|rest|others?|person|people)\b)"
+    r"[a-z]+\b|\b(?:since )?(?:last|next) (?:night|week|month|year|door)\b|"
+    r"\b(?:since )?first (?:light|thing)\b",
+    _F,
+)
+
+
+def _held_but_times(piece: str) -> bool:
+    """Whether ``piece`` holds a word of _SPEAKER_HELD outside the speaker's own times and places
+    (_SPEAKER_TIMES)."""
+    return bool(_SPEAKER_HELD.search(_SPEAKER_TIMES.sub(" ", piece)))
+
+
 # what may open the sentence of such a stretch, taken off with it
 _SPEAKER_OPENER = re.compile(
     r"(?:oh|ah|um|uh|er|erm|well|right|hi|hello|hiya|hey|sorry|so sorry|oh sorry|morning|"
@@ -8068,7 +8112,7 @@ def _speaker_stretch(
     their own things or a sentence that asks nothing), naming nothing in the scene and asking
     nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _SPEAKER_HELD.search(piece) or not _names_nothing(piece, lexicon):
+    if not piece or _held_but_times(piece) or not _names_nothing(piece, lexicon):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
@@ -8446,13 +8490,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         before = out[: m.start()]
         said = _ids(re.split(r"[.!?;]", before)[-1], lexicon, "object")
         word = m.group(1).lower()
-        need = {"both": 2, "the two": 2, "the three": 3, "the four": 4, "all three": 3}.get(word)
+        need = {"both": 2, "the two": 2, "the pair": 2, "the three": 3, "the four": 4}.get(word)
+        need = 3 if word == "all three" else need
         if not said or (need is not None and len(said) != need) or len(said) < 2:
             return m.group(0)
         return "" if m.group(2) == "," else m.group(2)
 
     out = _sub(
-        r",\s*(all|both|the two|the three|the four|every one|each one|all three) of them\b"
+        r",\s*(all|both|the two|the pair|the three|the four|every one|each one|all three) of "
+        r"them\b"
         r"\s*(,|(?=[.!?]|$))",
         counted,
         out,
@@ -8519,6 +8565,15 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         out,
     )
 
+    return _narrowed_to_one(out, lexicon)
+
+
+def _narrowed_to_one(text: str, lexicon: Lexicon) -> str:
+    """'the Xs, sorry, just the one' (the X: which one is not said, so the refusal names its
+    readings); session 28: 'only the one' as 'just the one', and after 'both Xs' ("Both mugs to
+    Alice, no, just the one"). Also the last of the earlier sessions' steps (``_STEPS``), after
+    their closers are taken off ("…, sorry, only the one, cheers")."""
+
     def just_one(m: re.Match[str]) -> str:
         noun = m.group(2)
         # 'boxes' is 'box' (session 27: 'boxe' named nothing, so the plural was kept and read as
@@ -8527,15 +8582,24 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         single = next((w for w in cut if _ids(w, lexicon, "object")), noun)
         if single == noun or len(_ids(single, lexicon, "object")) < 2:
             return m.group(0)
-        return f"{m.group(1)}{single}{m.group(3)}{m.group(4)}"
+        return f"{m.group(1)}the {single}{m.group(3)}{m.group(4)}"
 
-    out = _sub(
-        r"^(.*?\bthe )([a-z]+)((?: [^,]*?)?),\s*(?:sorry|no|i mean),?\s*just (?:the )?one"
-        r"\s*([.!]?)$",
-        just_one,
-        out,
+    def listed_one(m: re.Match[str]) -> str:
+        if len(_ids(m.group(2), lexicon, "object")) < 2:
+            return m.group(0)
+        return f"{m.group(1)}the {m.group(2)}{m.group(3)}{m.group(4)}"
+
+    narrowed = (
+        r",\s*(?:sorry|no|i mean),?\s*(?:just|only) (?:the )?one(?: and that's (?:it|all))?"
+        r"\s*([.!]?)$"
     )
-    return out
+    text = _sub(r"^(.*?\b)(?:the|both) ([a-z]+)((?: [^,]*?)?)" + narrowed, just_one, text)
+    # "the red mug and the blue mug to Bob, no, just the one" (the earlier steps' 'both mugs')
+    return _sub(
+        r"^(.*?\b)the [a-z]+ ([a-z]+)(?: and the [a-z]+ \2)+((?: [^,]*?)?)" + narrowed,
+        listed_one,
+        text,
+    )
 
 
 def _negation19(text: str, lexicon: Lexicon) -> str:
@@ -9441,6 +9505,555 @@ def _that_there27r(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 28 (engineer 12r): blind26's choices, counts, exclusions and corrections ------------
+
+
+# a statement of why, said between a correction's cue and the corrected words ("…, no wait, Bob's
+# got one, to Alice", "…, scratch that, she's fasting, chips to Person B", "…, sorry, my head's in
+# the ropewalk, I mean the counter"): a subject, a form of 'be' / 'have', and words of no request
+_CUE_REASON28R = re.compile(rf"(?<=,)\s*(?:{_CUE19})\s*,\s*(?P<why>[^,.;:!?]+?)\s*,\s*(?=\S)", _F)
+_STATEMENT28R = re.compile(
+    r"(?:he|she|they|it|there|i|we|(?:my|his|her|their|our|the) [a-z]+|[a-z]+(?: [a-z]+)?)"
+    r"(?:'s|'re|'m|'ve| is| are| was| were| has| have| had| am)(?: [a-z']+)+",
+    _F,
+)
+# what a reason may not hold: it could ask, negate, add, choose, order or point at a person after
+_NOT_REASON28R = re.compile(
+    r"\b(?:not|no|never|n't|too|also|instead|either|or|then|first|before|after|once|when|if|"
+    r"give|hand|pass|bring|take|put|place|wants?|needs?|would|could|should|will|can)\b|n't\b",
+    _F,
+)
+_PRONOUN28R = re.compile(r"\b(?:he|she|him|her|they|them|his|their)\b", _F)
+
+
+def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): a reason stated between a correction's cue and the corrected words
+    ("Give the bottle to Bob, no wait, Bob's got one, to Alice") says why, and is taken off, so
+    the cue corrects as it does without it. Only a statement (a subject, then 'is' / 'has' / …),
+    naming no object of the scene, holding no word that asks, negates, adds, chooses or orders;
+    never when the corrected words hold a pronoun the reason could have given its person ("…,
+    no, sorry, there's only Person A here, to her then" stays refused)."""
+    m = _CUE_REASON28R.search(text)
+    if m is None:
+        return text
+    why, after = m.group("why"), text[m.end() :]
+    if not _STATEMENT28R.fullmatch(why) or _NOT_REASON28R.search(why):
+        return text
+    if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
+        return text
+    return text[: m.start("why")] + after
+
+
+# "Torch to Kofi, not Kofi, Jess": the name just said, said again after 'not', then another
+_NOT_THAT28R = re.compile(
+    r"(?P<said>\b[\w ]+?)\s*,\s*not (?:to |on |the )?(?P<x>[\w ]+?)\s*,\s*(?=(?:to |on |the )?"
+    r"(?P<y>[\w ]+?)\s*(?:[,.!?]|$))",
+    _F,
+)
+
+
+def _not_that28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): ', not X, Y' right after X was named ("Torch to Kofi, not Kofi, Jess")
+    takes X back and says Y instead: the grammar's ', no, Y'. X must name exactly what the words
+    before it end on (the same one entity), Y one entity of the same kind, another one; else it
+    is left ('…, not Kofi, the drill' is no such correction, and stays refused)."""
+    if "not " not in text.lower():
+        return text
+
+    def corrected(m: re.Match[str]) -> str:
+        said, x, y = m.group("said"), m.group("x"), m.group("y")
+        ends, xn, yn = _names(said, lexicon), _names(x, lexicon), _names(y, lexicon)
+        if not ends or len(xn) != 1 or len(yn) != 1:
+            return m.group(0)
+        if not all(
+            re.fullmatch(rf"(?:the )?{re.escape(n[0].text)}", w.strip(), _F)
+            for n, w in ((xn, x), (yn, y))
+        ):
+            return m.group(0)  # "…, not Kofi, Jess too": more than the name
+        last, xs, ys = _ids(ends[-1].text, lexicon), _ids(x, lexicon), _ids(y, lexicon)
+        if len(xs) != 1 or xs != last or len(ys) != 1 or ys == xs:
+            return m.group(0)
+        kind = {r.kind for it in _names(x, lexicon) for r in it.refs}
+        if kind != {r.kind for it in _names(y, lexicon) for r in it.refs}:
+            return m.group(0)
+        if not said.lower().rstrip().endswith(ends[-1].text.lower()):
+            return m.group(0)
+        return f"{said}, no, "
+
+    return _NOT_THAT28R.sub(corrected, text, count=1)
+
+
+# "Person A gets whatever isn't the chips", "Everything that isn't the apple …"
+_WHATEVER_NOT28R = re.compile(
+    r"\b(?:whatever|everything (?:that|which)|anything (?:that|which)|all that) (?:isn't|is not|"
+    r"'s not|ain't) ((?:the )?[a-z]+(?: [a-z]+)??(?:(?:,| and| or) (?:the )?[a-z]+(?: [a-z]+)??)*?)"
+    r"(?=\s*(?:[,.;!?]|$|\b(?:goes|go|to|for|on|onto|in|into)\b))",
+    _F,
+)
+
+
+def _whatever_not28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'whatever / everything that / anything that isn't X' is everything
+    except X, when X names objects of the scene and nothing else (each of its items an object by
+    name: 'whatever isn't the chips'); a kind ('everything that isn't a box') is session 26's
+    (_everything26s), a place or a person ('whatever isn't on the shelf') is left."""
+    if "whatever" not in text.lower() and "that is" not in text.lower() and "n't" not in text:
+        return text
+
+    def others(m: re.Match[str]) -> str:
+        items = re.split(r",|\band\b|\bor\b", m.group(1), flags=_F)
+        if not all(_only_kind(i.strip(), lexicon, "object") for i in items if i.strip()):
+            return m.group(0)
+        return f"everything except {m.group(1)}"
+
+    return _WHATEVER_NOT28R.sub(others, text)
+
+
+# "Apart from the cups and the bowl, all of it goes onto the tray": the exclusion said first
+_FRONTED_EXCEPT28R = re.compile(
+    r"^(?P<open>(?:except(?: for)?|apart from|other than|bar|but for|aside from) "
+    r"(?P<x>[^,.;:!?]+?))\s*,\s*(?P<rest>[^.;:!?]+)(?P<end>[.;:!?]*\s*)$",
+    _F,
+)
+_EVERY28R = re.compile(
+    r"\b(?:everything(?: else)?|all of it|all of them|all the rest|the lot|all the stuff|"
+    r"all the things)\b",
+    _F,
+)
+
+
+def _fronted_except28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'Apart from / Except (for) / Other than / Bar X, <clause>' whose clause
+    holds one word for everything ('everything', 'all of it', 'the lot', …) is that clause with
+    'except X' after the word: "Apart from the cups and the bowl, all of it goes onto the tray".
+    X must name objects only; a clause with no such word, or two, is left (refused as before:
+    the exclusion leaves out from nothing)."""
+    m = _FRONTED_EXCEPT28R.match(text)
+    if m is None:
+        return text
+    x, rest = m.group("x"), m.group("rest")
+    items = re.split(r",|\band\b", x, flags=_F)
+    if not all(_only_kind(i.strip(), lexicon, "object") for i in items if i.strip()):
+        return text
+    every = list(_EVERY28R.finditer(rest))
+    if len(every) != 1:
+        return text
+    e = every[0]
+    out = f"{rest[: e.end()]} except {x}{rest[e.end() :]}"
+    return out[:1].upper() + out[1:] + m.group("end")
+
+
+# "…, all three bits, …" after the objects: how many they are, said again
+_COUNT_AGAIN28R = re.compile(
+    r"\s*,\s*(?:that's |that is |so )?all (?P<n>two|three|four|five|six) (?:bits|things|items|"
+    r"pieces|objects|of them|of those)\s*,\s*",
+    _F,
+)
+
+
+def _count_again28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): '…, all three bits, …' between the objects and where they go says how
+    many they are again ("Everything that isn't the apple, all three bits, over to Person B"):
+    taken off when what is left reads and moves exactly that many objects; another count is left
+    (refused: the speaker counts other objects than the words name)."""
+    m = _COUNT_AGAIN28R.search(text) if "all " in text.lower() else None
+    if m is None:
+        return text
+    rest = f"{text[: m.start()]} {text[m.end() :]}"
+    moved = _tasks_of(rest, lexicon)
+    if not moved or len({obj for _, obj, _ in moved}) != _NUMBER18[m.group("n").lower()]:
+        return text
+    return rest
+
+
+# "… over to Person B for the actuary's tally": what it is for, someone else's
+_PURPOSE_OF28R = re.compile(
+    r"(?<!\bready)\s+for (?:the|a|an) (?P<who>[a-z]+)'s (?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[.,;!?]|$))",
+    _F,
+)
+
+
+def _purpose_of28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'for the actuary's tally' closing a clause is what the task is for, as
+    session 10's 'for the meeting' (_purpose), with a possessor: taken off when neither word names
+    anything in the scene nor counts, chooses or points back ('for the patient's lunch' with a
+    patient in the scene, or 'for the other one's tea', stays)."""
+    if "'s " not in text:
+        return text
+    return _PURPOSE_OF28R.sub(
+        lambda m: (
+            ""
+            if _names_nothing(f"{m.group('who')} {m.group('what')}", lexicon)
+            and not _KEEP_WORDS.search(f"{m.group('who')} {m.group('what')}")
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# "All of it to Person A, apart from the apple, which Person B gets.": where the left-out one goes
+_WHICH_GETS28R = re.compile(
+    r"(?P<ex>\b(?:apart from|except(?: for)?|but not|other than|bar) (?P<x>(?:the )?[a-z]+"
+    r"(?: [a-z]+)?)),\s*(?:which|that) (?P<p>[\w ]+?) (?:gets|can have|is to get|will get|'ll get|"
+    r"should get|can take|has)(?=\s*(?:[.!;]|$))",
+    _F,
+)
+
+
+def _which_gets28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): '…, apart from X, which P gets' says where the object left out goes:
+    '…, apart from X, and X to P' (X one name of objects, P one person of the scene; the
+    exclusion itself still has to leave X out of what goes before)."""
+    if "which" not in text.lower() and "that" not in text.lower():
+        return text
+
+    def goes(m: re.Match[str]) -> str:
+        x, who = m.group("x"), m.group("p")
+        if not _only_kind(x, lexicon, "object") or not _only_person(who, lexicon):
+            return m.group(0)
+        return f"{m.group('ex')}, and {x} to {who}"
+
+    return _WHICH_GETS28R.sub(goes, text)
+
+
+# "…, whoever's nearest", "…, whichever's easier": how the choice just said is to be made
+_WHO_CHOOSES28R = re.compile(
+    r"\s*,\s*(?P<w>whoever|whichever)(?:'s| is) (?:nearer|closer|nearest|closest|free|handier|"
+    r"handiest|quicker|quickest|easier|easiest|easiest to reach|nearer to you|closer to you|"
+    r"nearest to you|closest to you|to hand)(?=\s*(?:[,.!?]|$))",
+    _F,
+)
+
+
+# "Person A will take whichever's easier, chips or apple": said before the choice it makes
+_WHICH_FIRST28R = re.compile(
+    r"\b(?P<w>whichever)(?:'s| is) (?:nearer|closer|nearest|closest|handier|handiest|quicker|"
+    r"quickest|easier|easiest|easiest to reach|to hand)\s*,\s*(?=(?:the )?[a-z]+ or (?:the )?[a-z]+"
+    r"\b)",
+    _F,
+)
+
+
+def _one_choice28r(node: Node | None, who: bool) -> bool:
+    """Whether ``node`` is one choice: an 'or' of single tasks, each another person (``who``) or
+    another object (else) for the one object or person they share."""
+    if not isinstance(node, Group) or node.op != "or":
+        return False
+    if not all(isinstance(c, Task) for c in node.children):
+        return False
+    objs = {t.obj for t in tasks(node)}
+    targets = {t.target for t in tasks(node)}
+    n = len(node.children)
+    return (len(objs), len(targets)) == ((1, n) if who else (n, 1))
+
+
+def _who_chooses28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): '…, whoever's nearest' after a choice of people for one object ("Either
+    Person A or Person B can have the bottle, whoever's nearest"), '…, whichever's easier' after a
+    choice of objects for one person, wherever it stands: how the robots choose, taken off when
+    what is left reads as exactly such a choice ('whoever' after 'Give Bob the cup' or after a
+    choice of objects, 'whichever' after a choice of people: left, and refused)."""
+    m = _WHO_CHOOSES28R.search(text) if "ever" in text.lower() else None
+    if m is None:
+        m = _WHICH_FIRST28R.search(text) if "whichever" in text.lower() else None
+        if m is None:
+            return text
+    out = text[: m.start()] + text[m.end() :]
+    who = m.group("w").lower() == "whoever"
+    return out if _one_choice28r(_reading(out, lexicon), who) else text
+
+
+# "…, they're both shattered from the usher shift", "They're both notaries on a break, so …"
+_BOTH_REMARK28R = re.compile(
+    r"(?:(?<=^)|\s*[,.;]\s*)they(?:'re| are) both (?P<said>[a-z][a-z' -]*?)(?:\s*,\s*so\b\s*|"
+    r"(?=\s*(?:[,.;!?]|$)))",
+    _F,
+)
+
+
+def _both_remark28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): "they're both <state>" said of the people a request names ("Either
+    Person A or Person B can have the bottle, they're both shattered from the usher shift",
+    "They're both notaries on a break, so …") is a remark, taken off as session 10's remarks
+    are: only when its words name nothing in the scene and hold no word that counts, chooses,
+    negates, orders or points back, and the rest names two people at least."""
+    if "both" not in text.lower():
+        return text
+    m = _BOTH_REMARK28R.search(text)
+    if m is None or not _names_nothing(m.group("said"), lexicon):
+        return text
+    if _KEEP_WORDS.search(m.group("said")):
+        return text
+    rest = (
+        text[: m.start()]
+        + ("." if m.start() > 0 and "so" not in m.group(0) else "")
+        + " "
+        + text[m.end() :]
+    ).strip()
+    rest = re.sub(r"^[,.;\s]+", "", rest)
+    if len(_ids(rest, lexicon, "human")) < 2:
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+# a header saying each person gets one thing, before the list that says which
+_EACH_ONE28R = re.compile(
+    r"^(?:(?:so|now|right),? )?(?:(?:hand|give|share|dish) out )?(?:one (?:thing|item)|a thing) "
+    r"(?:each|apiece)\s*[:,-]\s*|^both of (?:them|you) (?:need|want|get|are after) (?:something|"
+    r"a thing|one thing)(?: each)?\s*,\s*so\s+",
+    _F,
+)
+
+
+def _each_one28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'Hand out one thing apiece: …', 'one thing each: …', 'Both of them need
+    something, so …' before a list of hand-overs: the list says who gets what, and is read alone
+    when it gives every person of the scene exactly one object (as 'each' says); a list that
+    leaves someone out, gives one two, or places something is left, and refused."""
+    m = _EACH_ONE28R.search(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    rest = rest[:1].upper() + rest[1:]
+    node = _reading(rest, lexicon)
+    if node is None or not isinstance(node, Group) or node.op != "and":
+        return text
+    said = list(tasks(node))
+    people = [t.target for t in said]
+    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people):
+        return text
+    if set(people) != {h.id for h in lexicon.scene.humans}:
+        return text
+    return rest
+
+
+def _either_title28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'either student' / 'either of the students', where exactly two people of
+    the scene are called 'student' and the text names no other person, is 'Noah or Zoe' ("The
+    scissors can go to either student, whoever's closest"); 'any one of the plates to / for …' is
+    'one of the plates …' (one, any)."""
+    low = text.lower()
+    if "any one of the" in low:
+        # only before a recipient: "Any one of the pens in the box" may say where they are
+        text = _sub(r"\bany one of the ([a-z]+) (?=(?:to|for) )", r"one of the \1 ", text)
+    if "either" not in low:
+        return text
+
+    def two(m: re.Match[str]) -> str:
+        word = m.group(1).lower()
+        people = [h for h in lexicon.scene.humans if word in (a.lower() for a in h.aliases)]
+        if len(people) != 2:
+            return m.group(0)
+        if _ids(m.string[: m.start()] + m.string[m.end() :], lexicon, "human"):
+            return m.group(0)  # "Either of the patients …, Mr Lee or Ruth": who is said apart
+        return " or ".join(_name(h.id, lexicon) for h in people)
+
+    return _sub(r"\beither (?:one of the |of the )?([a-z]+?)s?\b(?!')", two, text)
+
+
+# "… put them in Person A's hands", "the bottle goes straight into Person A's hand": to that person
+_IN_HAND28R = re.compile(
+    r"\b(?:(?:straight|right) )?(?:in|into|in to) ([A-Za-z][\w ]*?)'s (?:own )?hands?\b", _F
+)
+_PUT_VERB28R = re.compile(
+    r"\b(?:put|puts|place|places|pop|pops|stick|sticks|set|sets|drop|drops)\b(?=[^,.;!?]*$)", _F
+)
+
+
+def _in_hand28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): '(straight) in / into P's hand(s)' is 'to P' (P one person of the
+    scene); a verb of putting before it in its clause ('put them in Person A's hands') becomes
+    'hand', since the object goes to the person, on no surface."""
+    if "hand" not in text.lower():
+        return text
+
+    def to(m: re.Match[str]) -> str:
+        if not _only_person(m.group(1), lexicon):
+            return m.group(0)
+        return f"to {m.group(1)}"
+
+    out, start = [], 0
+    for m in _IN_HAND28R.finditer(text):
+        said = to(m)
+        if said == m.group(0):
+            continue
+        before = text[start : m.start()]
+        out.append(_PUT_VERB28R.sub("hand", before) + said)
+        start = m.end()
+    return "".join(out) + text[start:] if out else text
+
+
+def _the_one_for28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): "P's the one for X", 'P is the one getting X' is 'P gets X', as session
+    27's "P's the one who wants X" (P one person, X one name of objects; a question, a negation
+    or two people stay as they were)."""
+    if "the one" not in text.lower():
+        return text
+
+    def gets(m: re.Match[str]) -> str:
+        who, what = m.group(2), m.group(3)
+        if not _only_person(who, lexicon) or not _only_kind(what, lexicon, "object"):
+            return m.group(0)
+        return f"{m.group(1)}{who} gets {what}"
+
+    return _sub(
+        rf"{_OPEN}{_P}(?:'s| is) the (?:one|person) (?:for|getting|receiving|to get) "
+        r"((?:the |a |an )?[\w ]+?)(?=\s*(?:[,.;!?]|$))",
+        gets,
+        text,
+    )
+
+
+# 'Not P, …' / 'Not P ah, …' / "Not P, she's had one; …" opening: P is not the one
+_NOT_PERSON28R = re.compile(
+    r"^not (?P<p>[A-Za-z][\w ]*?)(?: ah| mind| though)?\s*[,;:.]\s*(?:(?P<why>(?:she|he|they)"
+    r"(?:'s|'ve|'re| has| have| is| are| was) [^,;.!?]+?)\s*[,;.]\s*)?(?P<rest>\S.*)$",
+    _F,
+)
+# a command opening what follows 'Not P,': 'Not P' may be said to the hearer (session 12)
+_COMMAND28R = re.compile(
+    r"(?:please |just |and |so )*(?:give|hand|pass|bring|take|put|place|send|get|fetch|deliver|"
+    r"carry|move|pop|stick|chuck|leave|set)\b",
+    _F,
+)
+# "No need to put it anywhere, just …", "Don't put it down anywhere, just …"
+_NOWHERE28R = re.compile(
+    r"^(?:no need to|(?:you )?(?:don't|do not|needn't|need not)(?: need to)?) (?:put|place|set) "
+    r"(?:it|that) (?:down )?anywhere\s*[,;:.]\s*(?P<rest>\S.*)$",
+    _F,
+)
+# "Not on the floor, mind, …": a place the scene has no surface for
+_NOT_ON28R = re.compile(
+    r"^not (?:on|onto|in|into) (?:the |a )?(?P<where>[a-z]+(?: [a-z]+)?)(?:,? mind)?\s*[,;:.]\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _not_first28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): what is not to be done, said first, then the request:
+    - 'Not P, …' (or 'Not P ah, …', "Not P, she's had one; …"): P gets nothing, and the request
+      after it, a statement (not a command: 'Not Bob, give Alice the cup' may be said to the
+      hearer), gives one other person everything ("Not Person A, she's had one; it's Person B
+      that gets the cup");
+    - 'No need to put it anywhere, just …' / "Don't put it down anywhere, …": nowhere in
+      particular, so the request after it places nothing;
+    - 'Not on the floor, mind, …': a place the scene has no surface for, and the request after
+      it places nothing there.
+    Each is taken off only when the request after it reads by itself and keeps what was said
+    first (a request that gives P something, or places something, stays refused); a reason after
+    'Not P' must be a statement naming no object, with no word that negates, adds or asks."""
+    low = text.lower()
+    if not low.startswith(("not ", "no need", "don't", "do not", "you don't", "needn't")):
+        return text
+    m = _NOT_PERSON28R.match(text)
+    if m is not None and _only_person(m.group("p"), lexicon):
+        why = m.group("why")
+        if why is not None and (_NOT_REASON28R.search(why) or _ids(why, lexicon, "object")):
+            return text
+        rest = m.group("rest")
+        if _COMMAND28R.match(rest):
+            return text  # "Not Bob, give Alice the cup": said to the hearer? (session 12)
+        said = _tasks_of(rest, lexicon)
+        targets = {t for _, _, t in said or ()}
+        if len(targets) == 1 and not targets & _ids(m.group("p"), lexicon):
+            return rest[:1].upper() + rest[1:]
+        return text  # "Not Alice, Carol and Bob get a mug each": 'not' which? (session 21)
+    for rx in (_NOWHERE28R, _NOT_ON28R):
+        m = rx.match(text)
+        if m is None:
+            continue
+        if rx is _NOT_ON28R and not _names_nothing(m.group("where"), lexicon):
+            return text
+        rest = m.group("rest")
+        said = _tasks_of(rest, lexicon)
+        if said and all(kind == "deliver" for kind, _, _ in said):
+            return rest[:1].upper() + rest[1:]
+    return text
+
+
+# remarks said around a request that the session's earlier remark rules do not take: "…, the poor
+# thing's shivering", "…, they need a rinse", "…, the notary wants blue ink", "The auditor's gone,
+# so …"
+_REMARKS28R = (
+    re.compile(
+        r"\s*,\s*(?:and )?the poor (?:thing|dear|love|soul|lamb|mite|lad|lass)(?:'s| is| has) "
+        r"(?P<said>[a-z][a-z' ]*?)(?=\s*[.!]?\s*$)",
+        _F,
+    ),
+    re.compile(
+        r"\s*,\s*(?:and )?(?P<who>they|it|the [a-z]+)(?:'s| is)? (?:needs?|wants?|could "
+        r"(?:do with|use)) (?P<said>(?:a |an |some )?[a-z][a-z' ]*?)(?=\s*[.!]?\s*$)",
+        _F,
+    ),
+    re.compile(
+        r"^(?P<who>(?:the|my|our) [a-z]+)(?:'s| is| has) (?P<said>gone|left|arrived|finished|off|"
+        r"here|done)(?: (?:now|home|for the day|already))?,? so\s+",
+        _F,
+    ),
+)
+
+
+def _remarks28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): a remark after the request about its person ("Both blankets to Mrs
+    Khan, the poor thing's shivering"), about its objects or someone not in the scene wanting
+    something the scene does not have ("The two cups in the sink, they need a rinse", "…, the
+    notary wants blue ink"), or before it, 'The auditor's gone, so …': taken off when its words
+    (and its subject) name nothing in the scene and hold no word that counts, chooses, negates,
+    orders or points back; the request must read without it."""
+    out = text
+    for rx in _REMARKS28R:
+        m = rx.search(out)
+        if m is None:
+            continue
+        said = m.group("said")
+        who = m.groupdict().get("who") or ""
+        if who.lower() not in ("they", "it") and not _names_nothing(who or "x", lexicon):
+            continue
+        if not _names_nothing(said, lexicon) or _KEEP_WORDS.search(said):
+            continue
+        rest = out[: m.start()] + out[m.end() :]
+        if _tasks_of(rest, lexicon):
+            out = rest[:1].upper() + rest[1:]
+    return out
+
+
+# "The single packet of crisps to Person B": what holds the one object, and 'single' for 'only'
+_PACKET28R = re.compile(
+    r"\b(?:(?P<det>the|a|an|one|that|this) )?(?:(?:single|one|only) )?(?P<box>packet|bag|pack|tin|"
+    r"carton|punnet|jar|box) of (?:the )?(?P<x>[a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def _single28r(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12r): 'the single X' is 'the only X' (the X, when the scene has one: session
+    19's rule checks it); 'a / the (single) packet / bag / tin of X' is 'the X' when X names one
+    object of the scene and the holder's word names nothing there (a box of a scene with boxes,
+    or 'tin of screws' said as the scene says it, is left as it is)."""
+    low = text.lower()
+    if "single" in low:
+        text = _sub(r"\bthe single (?=[a-z])", "the only ", text)
+    if " of " not in low:
+        return text
+
+    def held(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if lexicon.lookup(f"{m.group('box')} of {x}".lower()) is not None:
+            return m.group(0)
+        if _ids(m.group("box"), lexicon):
+            return m.group(0)
+        for n in (2, 1):
+            said = " ".join(x.split()[:n])
+            one = len(_ids(said, lexicon, "object")) == 1
+            if len(x.split()) >= n and one and _only_kind(said, lexicon, "object"):
+                return f"the {said}{x[len(said) :]}"
+        return m.group(0)
+
+    return _PACKET28R.sub(held, text)
+
+
 # -- session 27 (engineer 12s): other languages' orders; a description and the list it is ------
 
 
@@ -9530,6 +10143,343 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
         placed_first,
         out,
     )
+
+
+def _whole_name(words: str, lexicon: Lexicon, kind: str) -> bool:
+    """Whether ``words`` (an article aside) are one name of the scene, whole, of ``kind``."""
+    bare = re.sub(r"^(?:the|a|an) ", "", words.strip(), flags=_F)
+    said = _names(bare, lexicon)
+    return (
+        len(said) == 1
+        and said[0].text.lower() == bare.lower()
+        and all(r.kind == kind for r in said[0].refs)
+    )
+
+
+# a person's name as the session-28 (12s) rules take it: 'Person A', a title and a name, a word
+_PERSON28S = r"person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+"
+
+
+def _object_and_person(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether ``m``'s 'what' is one whole name of the scene's objects and its 'who' one of its
+    people."""
+    return _whole_name(m["what"], lexicon, "object") and _whole_name(m["who"], lexicon, "human")
+
+
+def _object_first28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a clause (between marks, after an optional 'then' / 'and then') said
+    object first, '<object> give <person>' ("Apple give Person A first, then bottle give Person
+    B"): 'give <person> <object>'. The object and the person must each be one name of the
+    scene, whole, with nothing else in the clause but 'first' / 'next' / 'too' after it; a
+    pronoun ('the bottle give her'), a count ('both give Alice'), a past form ('the bottle gave
+    Bob …') or a word left over leaves the clause as it is."""
+
+    def turned(m: re.Match[str]) -> str:
+        if not _object_and_person(m, lexicon):
+            return m[0]
+        return f"{m['lead']}{m['verb']} {m['who']} {m['what']}{m['tail']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*)(?:(?:and )?then,?\s+)?)(?P<what>(?:the |a |an )?"
+        rf"[a-z]+(?: [a-z]+)?) (?P<verb>give|hand|pass) (?P<who>{_PERSON28S})"
+        r"(?P<tail>(?: first| next| too| as well)?)(?=\s*(?:[,.;!?]|$))",
+        turned,
+        text,
+    )
+
+
+def _pair_listed28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'the pair / both, <X> and <Y> (together / both / alike)' at the end
+    ("Person A's having the pair, bottle and chips together", "Person A's to have both, bottle and
+    chips alike"): the two objects listed stand for 'the pair' / 'both'.
+    The list must be two names of the scene's objects, whole, and nothing else."""
+
+    def listed(m: re.Match[str]) -> str:
+        first, second = m["first"], m["second"]
+        if not (_whole_name(first, lexicon, "object") and _whole_name(second, lexicon, "object")):
+            return m[0]
+        if _ids(first, lexicon, "object") == _ids(second, lexicon, "object"):
+            return m[0]
+        return f"{first} and {second}{m['end']}"
+
+    return _sub(
+        r"\b(?:the pair|both),\s*(?P<first>(?:the )?[a-z]+(?: [a-z]+)?) and "
+        r"(?P<second>(?:the )?[a-z]+(?: (?!together|both|alike|as well)[a-z]+)?)"
+        r"(?: (?:together|both|alike|as well))?"
+        r"(?P<end>\s*[.!]?\s*)$",
+        listed,
+        text,
+    )
+
+
+def _is_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s to get / have …' ("Person B's to get both"; 's before 'to' is
+    'is', as a possessive cannot stand there) and '<person> is to have …' are '<person> gets …';
+    'gets / has the two of them' (the objects: the person is named as the subject) is 'gets
+    both'. The person must be one of the scene's, whole."""
+
+    def gets(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        return f"{m['who']} gets"
+
+    out = _sub(
+        rf"\b(?P<who>{_PERSON28S})(?:'s| is) to "
+        r"(?:get|have|receive)\b",
+        gets,
+        text,
+    )
+    return _sub(r"\b(gets|has|receives|takes) the two of them\b", r"\1 both", out)
+
+
+def _wanted_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '(he / she / they) wants / needs it with the <food or the like>' at the
+    end of a clause ("the lemon to the chef please, he wants it with the hake"): what the object
+    goes with, as 'for the hake' (_purpose), taken off when it names nothing in the scene (nor
+    by a typo) and holds no word that counts, chooses or points back; 'with the salt' (an object
+    of the scene) asks for it too, and stays."""
+    return _sub(
+        r"\b((?:he|she|they) (?:wants?|needs?|would like|'d like) (?:it|them)) with (?:the|his|"
+        r"her|their|a|an|some) ([a-z]+(?:[ -][a-z]+)?)(?=\s*(?:[.;!?]|$))",
+        lambda m: (
+            m.group(1)
+            if _names_nothing(m.group(2), lexicon) and not _KEEP_WORDS.search(m.group(2))
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# -ing words that say what the person wants, not what they are busy with
+_WANTING28S = frozenset(
+    {
+        *("asking", "waiting", "wanting", "looking", "hoping", "begging", "calling", "shouting"),
+        *("dying", "gasping", "longing", "pining", "crying", "going", "getting", "having"),
+        *("needing", "eyeing", "eying", "angling", "expecting", "saving", "keeping", "using"),
+    }
+)
+
+
+def _busy_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person>'s been / is <verb>ing <a few words>,' before the request
+    ("Person B's been mending sails, give him the chips"): what the person is busy with says why,
+    as "Person B is busy, give him …" (read before), and is read as that when the words after
+    the -ing word name nothing in the scene (nor by a typo) and hold no word that counts, chooses
+    or points back, and the -ing word is no verb of the grammar and says no want ('asking',
+    'waiting', 'looking', …). The person stays, for 'him' / 'her' after it."""
+
+    def busy(m: re.Match[str]) -> str:
+        ing, what = m["ing"].lower(), m["what"]
+        if ing in VERBS or ing in _WANTING28S or not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(what, lexicon) or _KEEP_WORDS.search(what):
+            return m[0]
+        return f"{m['who']} is busy,"  # ('mending' alone is one edit from 'sending')
+
+    return _sub(
+        rf"^(?P<who>{_PERSON28S})(?P<be>'s been| has been| is| "
+        r"was) (?P<ing>[a-z]+ing) (?P<what>[a-z]+(?: [a-z]+){0,2}),",
+        busy,
+        text,
+    )
+
+
+def _says_she_is28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): '<person> says / said (that) she's / he's / they're <a word or two>,'
+    opening the instruction ("Person A says she's peckish, the chips please"): the pronoun is
+    the one who says it (the subject of the reporting verb), so it is '<person> is <words>,'. The
+    words must name nothing in the scene and hold no counting or pointing word; the person must be
+    one whole name."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _whole_name(m["who"], lexicon, "human"):
+            return m[0]
+        if not _names_nothing(m["how"], lexicon) or _KEEP_WORDS.search(m["how"]):
+            return m[0]
+        return f"{m['who']} is {m['how']},"
+
+    return _sub(
+        rf"^(?P<who>{_PERSON28S}) (?:says|said)(?: that)? "
+        r"(?:she's|she is|he's|he is|they're|they are) (?P<how>[a-z]+(?: [a-z]+)?),",
+        said,
+        text,
+    )
+
+
+def _give_both28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a last sentence 'Please (you) give both.' after two objects were each
+    said to be for someone ("Person A want bottle, and Person B want chips. Please you give
+    both."): doing what was said, nothing more; taken off when what comes before names exactly
+    two objects and says who has each (a 'for' / 'to' or a want verb per object)."""
+    m = _rx(
+        r"^(?P<said>.+?[.!])\s+(?:please,?\s+)?(?:you\s+)?(?:give|do|deliver|hand over|sort out)"
+        r" (?:both|them both|both of them|the two)(?:,?\s*please)?\s*[.!]?\s*$"
+    ).match(text)
+    if m is None:
+        return text
+    said = m["said"]
+    wants = len(re.findall(r"\b(?:wants?|needs?|for|to|gets?)\b", said, _F))
+    if len(_ids(said, lexicon, "object")) != 2 or wants < 2 or not _ids(said, lexicon, "human"):
+        return text
+    return said
+
+
+def _dislocated28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): an object said first, then a clause taking it up again with 'it' / 'that
+    one' ("…, and the cup, Person A can have that one"): the pronoun is the object just said (a
+    left dislocation), so '<person> can have <object>'. The object must be one whole name of the
+    scene, said right after the start, a full stop or ', and'; the person one whole name."""
+
+    def taken_up(m: re.Match[str]) -> str:
+        if not _object_and_person(m, lexicon):
+            return m[0]
+        return f"{m['lead']}{m['who']} {m['verb']} {m['what']}"
+
+    return _sub(
+        r"(?P<lead>^|(?<=[.!?])\s+|,\s*and\s+)(?P<what>the [a-z]+(?: [a-z]+)?),\s*"
+        rf"(?P<who>{_PERSON28S}) (?P<verb>can have|gets|should get|can take) "
+        r"(?:it|that one|that)\b",
+        taken_up,
+        text,
+    )
+
+
+def _along_with28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): ', and the <object> with it / them' closing the instruction (the object
+    goes along with what was just placed or handed over: 'too'), and 'give them to <person>
+    together' (how, not what: 'together' taken off). The object must be one whole name."""
+
+    def along(m: re.Match[str]) -> str:
+        if not _whole_name(m["what"], lexicon, "object"):
+            return m[0]
+        return f"{m['lead']}{m['what']} too{m['end']}"
+
+    text = _sub(
+        r"(?P<lead>,?\s*\band )(?P<what>the [a-z]+(?: [a-z]+)?) with (?:it|them)"
+        r"(?P<end>\s*[.!]?\s*)$",
+        along,
+        text,
+    )
+    return _sub(
+        r"\b((?:give|hand|pass|bring|take) (?:them|both|the two of them|both of them) (?:over )?to "
+        r"(?:him|her|them|person [a-z]|[a-z]+)) together(?=\s*[.!]?\s*$)",
+        r"\1",
+        text,
+    )
+
+
+_PRONOUNS28S = frozenset({"him", "her", "them"})
+
+
+def _run_to28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'run <objects> (up / down / over / across) to <person or surface>' ("Will
+    you run the bottle up to Person B"): carrying it there quickly, 'bring'. Only the verb said
+    as a request (plain 'run', first in its clause or after 'you' / 'to' / 'please'), its object
+    the scene's objects and nothing else, or 'it' / 'them' (resolved as for 'bring'): 'the foley
+    session ran long', 'the tap is running', "I'll run the numbers" are no carrying."""
+
+    def brought(m: re.Match[str]) -> str:
+        said = m["what"].lower() in ("it", "them") or _objects_only(m["what"], lexicon)
+        if not said or not (m["where"].lower() in _PRONOUNS28S or _names(m["where"], lexicon)):
+            return m[0]
+        return f"{m['lead']}bring {m['what']}{m['dir']} to {m['where']}"
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[.;!?,])\s*|\b(?:you|to|please) ))run (?P<what>it|them|(?:the|that|"
+        r"this|those|these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to "
+        r"(?P<where>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|$|\s(?:for|please|now)\b))",
+        brought,
+        text,
+    )
+
+
+def _matters_which28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "I don't suppose / think it matters which (colour)" and "doesn't bother
+    me which" are "it doesn't matter which (colour)", the choice tail the grammar reads (the
+    speaker leaving the choice open)."""
+    text = _sub(
+        r"\b(?:it )?(?:doesn't|does not) bother me (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+    return _sub(
+        r"\bi (?:don't|do not) (?:suppose|think|reckon|imagine|expect) it (?:matters|'ll matter|"
+        r"will matter) (?=which\b)",
+        "it doesn't matter ",
+        text,
+    )
+
+
+def _either_of_them28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'Either of them can have / gets …' opening the instruction, in a scene
+    of exactly two people, with no one named before it: 'them' are the two people (the receiving
+    verb says so), so 'Either of the two people …', which the grammar reads as one or the
+    other."""
+    if len(lexicon.scene.humans) != 2:
+        return text
+    return _sub(
+        r"^either of them (?=(?:can have|gets|can take|should get|should have|may have)\b)",
+        "Either of the two people ",
+        text,
+    )
+
+
+def _disturb28s(text: str, _lexicon: Lexicon) -> str:
+    """Session 28 (12s): "sorry ah, disturb you a bit" (Singapore English) is "sorry to disturb
+    you a bit", the apology the openers know (_BOTHERING)."""
+    return _sub(
+        r"\bsorry(?: (?:ah|lah|leh))?,?\s+(?=disturb(?:ing)? you\b)",
+        "sorry to ",
+        text,
+    )
+
+
+def _or_not28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): a request asked with 'can … or not?' (Singapore English: "Can help me
+    give Alice the crisps or not?", "the bottle, can pass to Person B or not ah?") is the request
+    asked with 'can …?': 'or not' is taken off. Only after 'can' in the same sentence, at the end
+    of a question: "Should Alice have the crisps or not?" asks whether, and stays a question."""
+    return _sub(
+        r"(\bcan\b[^.!?]*?)\s*,?\s+or not(?: (?:ah|lah|leh|one))?\s*(\?)\s*$",
+        r"\1\2",
+        text,
+    )
+
+
+# Session 28 (12s): 'finish already', 'then finish', 'and that's finished' after the last request:
+# the speaker saying the list is over (asks nothing)
+_FINISHED28S = (
+    r",\s*(?:and |then |and then )?(?:finish|finished|finish already|all finished|that's "
+    r"finished)(?: (?:already|lah|ah|now))*\s*(?=[.!]?\s*$)"
+)
+
+
+# 'and be quick about it', 'look sharp', 'chop chop' after the last request: urging (asks nothing)
+_URGED28S = (
+    r"(?:,\s*|\s+and\s+|\s*[.!]\s+)(?:be quick(?: about it)?|look sharp|chop,? chop|make it "
+    r"snappy|get a move on)\s*(?=[.!]?\s*$)"
+)
+
+
+# 'since her shift began' after a want; "they've had sample dye in them" after a placement of
+# them: when the want began, why the objects go there (each names nothing in the scene)
+_SINCE28S = (
+    r"\s+since (?:her|his|their|my|our|the) [a-z]+(?: [a-z]+)? (?:began|started|opened|came on)"
+    r"(?=\s*[.!]?\s*$)"
+)
+_HAD_IN28S = (
+    r",\s*(?:they've|they have|it's|it has) (?:had|got) (?:[a-z]+ ){1,3}(?:in|on) (?:them|it)"
+    r"(?=\s*[.!]?\s*$)"
+)
+
+
+def _finished28s(text: str, lexicon: Lexicon) -> str:
+    """Session 28 (12s): 'finish already' (_FINISHED28S), urging (_URGED28S), 'since her shift
+    began' (_SINCE28S) and "they've had dye in them" (_HAD_IN28S) after the last request, taken
+    off when they name nothing in the scene."""
+    for said in (_FINISHED28S, _URGED28S, _SINCE28S, _HAD_IN28S):
+        text = _drop(said, text, lexicon)
+    return text
 
 
 # A description of objects, then the list of the objects it describes ("The two drinks, bottle
@@ -9773,15 +10723,37 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _choice_listed26s,
     _nobody_else26s,
     _all_of27r,
+    _narrowed_to_one,
 )
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    _or_not28s,
+    _disturb28s,
+    _matters_which28s,
+    _either_of_them28s,
     _idioms27r,
     _both_for27r,
     _included27r,
     _that_there27r,
     _said_aside27r,
+    # session 28 (12r): blind26's kinds
+    _cue_reason28r,
+    _not_that28r,
+    _whatever_not28r,
+    _fronted_except28r,
+    _purpose_of28r,
+    _count_again28r,
+    _which_gets28r,
+    _both_remark28r,
+    _either_title28r,
+    _who_chooses28r,
+    _each_one28r,
+    _in_hand28r,
+    _the_one_for28r,
+    _not_first28r,
+    _remarks28r,
+    _single28r,
     _translated25,
     _address_after26r,
     _courtesy24,
@@ -9839,4 +10811,15 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _out_of_reach27,
     _verb_last27,
     _described_list27,
+    _object_first28s,
+    _finished28s,
+    _is_to28s,
+    _pair_listed28s,
+    _run_to28s,
+    _wanted_with28s,
+    _busy_with28s,
+    _says_she_is28s,
+    _give_both28s,
+    _dislocated28s,
+    _along_with28s,
 )

@@ -1199,6 +1199,13 @@ class _Parser:
         frag = _Frag(index=len(self.frags), segment=self._segment, text=_text(items))
         self.frags.append(frag)
         units = [it for it in items if not _is(it, *_SKIP, "det")]
+        if any(u.kind == "unknown" and u.lemma == "back" for u in units):
+            # session 28 (12r): "before the small box is back" (lexicon._come_back)
+            raise GroundingError(
+                f"{frag.text!r} says something is or comes back, an event the cell can neither "
+                "make happen nor wait for: say where it goes ('back on <surface>', 'back to "
+                "<person>'), or ask when it has happened"
+            )
         if units and _is(units[0], "same", "do"):
             named = [u for u in units[1:] if not _is(u, "same", "with", "for", "and")]
             if not _is(units[0], "same") and not any(_is(u, "same") for u in units):
@@ -1500,6 +1507,7 @@ class _Parser:
                 )
             self._check_verb(f)
         self._order_kept(raw)
+        _one_verb_one_place(raw)
         return self._build(raw)
 
     def _not_from_choice(self, raw: _Raw, source: _Frag, f: _Frag) -> None:
@@ -1992,6 +2000,48 @@ def _frags_of(raw: _Raw) -> list[_Frag]:
     if isinstance(raw, _Frag):
         return [raw]
     return [f for child in raw.children for f in _frags_of(child)]
+
+
+def _one_verb_one_place(raw: _Raw) -> None:
+    """Session 28 (12r): a clause of no verb of its own ('…, both to Bob', '… and the cup to Bob')
+    that hands over objects a clause before puts somewhere (or the other way), with only 'and'
+    between them: "Put the cup and the apple on the shelf, both to Bob" carries 'put' over and
+    gives the cup and the apple two places at once; which one is meant (or a correction) is
+    not said, so it is refused. With an order ('…, then both to Bob') or a verb of its own ('…
+    and give them to Bob') the two are steps, as before; a condition ('once it's there') and a
+    choice ('a mug each') are not such a clause."""
+
+    def lowest(node: _Raw, a: _Frag, b: _Frag) -> _RawGroup | None:
+        if isinstance(node, _Frag):
+            return None
+        for child in node.children:
+            inside = _frags_of(child)
+            if a in inside and b in inside:
+                return lowest(child, a, b)
+        return node
+
+    frags = _frags_of(raw)
+    for n, f in enumerate(frags):
+        if f.verb_text or f.subject or f.condition or f.pick or f.same or f.group >= 0:
+            continue
+        if f.target is None or not f.objects:
+            continue
+        sent: dict[str, str] = {}  # object -> where a clause before sends it
+        for g in frags[:n]:
+            if g.condition or g.pick or g.group >= 0 or g.target is None or not g.objects:
+                continue
+            if g.target.kind == f.target.kind:
+                continue  # two hand-overs or two places: tree.check_deliveries says which
+            group = lowest(raw, g, f)
+            if group is not None and group.op == "and":
+                sent.update({o: g.target.text for o in g.objects if o in f.objects})
+        if sent:
+            raise GroundingError(
+                f"{f.text!r} sends the {', '.join(sent)} to {f.target.text}, and the words "
+                f"before send {'it' if len(sent) == 1 else 'them'} to "
+                f"{' and '.join(dict.fromkeys(sent.values()))}, with no verb of its own and no "
+                "order: say which, or the order ('then')"
+            )
 
 
 def _picked_up(body: list[Item], after: list[Item]) -> bool:

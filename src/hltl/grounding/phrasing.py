@@ -344,12 +344,35 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
                 f"{len(people)} people: say 'give <person> …'"
             )
         return [people[0], Item("punct", ",", ",")]
+    if _moved_onto(sent):
+        return []
     if not any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
         raise GroundingError(
             f"after a remark about {', '.join(x.text for x in people) or 'someone'}, "
             f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
         )
     return []
+
+
+def _moved_onto(sent: list[Item]) -> bool:
+    """Session 28 (12r): whether ``sent`` says where its objects go, not where they lie: 'onto'
+    / 'into' a surface, or 'up / back / down on' it ("Grandad's clearing the floor, so both of
+    the blocks up on the high chair"), after objects alone, with no person, verb or pronoun: a
+    placement, which needs no one to get it ('the blocks on the high chair' stays unclear)."""
+    if any(_is_verb_item(x) or _humans(x) or x.lemma == "pronoun" for x in sent):
+        return False
+    for n, x in enumerate(sent):
+        if not _is(x, "on") or n + 1 >= len(sent):
+            continue
+        j = _past_dets(sent, n + 1)
+        if j >= len(sent) or not _is_surface(sent[j]):
+            continue
+        said = x.text.lower()
+        if said in ("onto", "into", "on to", "in to") or (
+            n > 0 and _is(sent[n - 1], "filler") and sent[n - 1].text.lower() in ("up", "back")
+        ):
+            return True
+    return False
 
 
 def _reason_length(items: list[Item], k: int) -> int:
@@ -807,6 +830,7 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
         return k if j == k + 2 else j
     if k >= len(items) or not _is(items[k], "near", "nearest", "farthest"):
         return k
+    _not_by_whom(items, k, out)
     j = k + 1
     j = _past_dets(items, j)
     if j >= len(items) or items[j].kind != "ent" or len({r.id for r in items[j].refs}) != 1:
@@ -842,6 +866,36 @@ def _place(items: list[Item], k: int, out: list[Item], lexicon: Lexicon) -> int:
         group=-1 if single else it.group,
     )
     return j + 1
+
+
+def _not_by_whom(items: list[Item], k: int, out: list[Item]) -> None:
+    """Session 28 (12r): 'by <person>' after an object that opens a clause of no verb of its own
+    ("Carol wants the red mug, and the crisps by Bob"): where the object is (next to Bob), or who
+    wants or is given it, the verb carried over as a passive (wanted by Bob)? Refused with both
+    readings. After a verb ("give Carol the cup by Bob"), or with a verb or a place of its own
+    after it ("the mug by Bob goes to Carol"), it only says where the object is."""
+    if items[k].text.lower() != "by":
+        return
+    j = _past_dets(items, k + 1)
+    if j >= len(items) or not _humans(items[j]) or len({r.id for r in items[j].refs}) != 1:
+        return
+    n = len(out) - 1
+    while n > 0 and _is(out[n - 1], "det", "filler"):
+        n -= 1
+    if n > 0 and not (
+        out[n - 1].kind == "punct" or _is(out[n - 1], "and", "or", "then", "also", "but")
+    ):
+        return
+    for x in items[j + 1 :]:
+        if x.kind == "punct" or _is(x, "and", "or", "then"):
+            break
+        if _is_verb_item(x) or _is(x, "to", "for", "on"):
+            return  # "the mug by Bob goes to Carol", "the mug by Bob to Carol": where it is
+    it, who = out[-1].text, items[j].text
+    raise GroundingError(
+        f"'{it} by {who}' could mean the {it} next to {who}, or the {it} for {who} (wanted by "
+        f"{who}): say '{who} wants the {it}' or 'the {it} next to {who}'"
+    )
 
 
 def _handed_on(items: list[Item], k: int, out: list[Item]) -> bool:
