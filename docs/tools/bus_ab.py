@@ -16,10 +16,11 @@ process: the harness's own noise floor). Node variants: ``main``, ``main2``, ``m
 the node plans a step), ``fs1nolg`` (none before it plans the first step), ``nopause`` (no
 pause after an answer that guessed steps follow, ``GUESS_PAUSE`` 0), ``resetnext`` (after a
 reset's answer, the next query looked for before the idle work). Executor variants: ``main``,
-``nolg`` (no let-go after the requests it does not wait for), ``nofirst`` (the node not
-asked to foresee the first step, ``bus_cell(first=False)``: the first commands go in a
-query). Besides the suite ratios and paired wall differences it prints the loop's waits for
-the node (``DriverStats.waited``), paired. Sessions 27 and 28 (docs/bus.md, "Where the time
+``nolg`` (no let-go after the requests it does not wait for), ``first`` (the node asked
+to foresee the first step, ``bus_cell(first=True)``: the default until the end of session 28;
+as deployed since, ``main``, the first commands go in a query). Besides the suite ratios and
+paired wall differences it prints the loop's waits for the node (``DriverStats.waited``),
+paired. Sessions 27 and 28 (docs/bus.md, "Where the time
 goes") ran it under ``bash /work/notes/bench.sh``.
 """
 
@@ -126,7 +127,7 @@ def main(repeats: int, names: list[str]) -> None:
     from hltl.sim.simulator import Simulator
 
     for name in names:
-        if name.count("/") != 1 or name.split("/")[1] not in ("main", "nolg", "nofirst"):
+        if name.count("/") != 1 or name.split("/")[1] not in ("main", "nolg", "first"):
             raise SystemExit(f"bad variant {name!r}: expected NODE/EXECUTOR")
     trials = B._trials(20)
     ctx = multiprocessing.get_context("spawn")
@@ -174,7 +175,7 @@ def main(repeats: int, names: list[str]) -> None:
                             session,
                             cell=f"{nodes[node][1]}{i}",
                             opened=opened,
-                            first=executor != "nofirst",
+                            first=executor == "first",
                         )
                     _side[0] = "inproc" if s == "inproc" else "bus"
                     t0 = time.perf_counter()

@@ -73,7 +73,7 @@ class Loopback:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
-        first: bool = True,
+        first: bool = False,
         realtime: float | None = None,
         node: CellNode | None = None,
         **episode: Any,

@@ -153,11 +153,11 @@ def test_the_first_step_is_foreseen(
 def test_the_first_step_is_asked_about_without_first(
     loopback: Loopback, monkeypatch: pytest.MonkeyPatch, inline: bool, grounder: str | None
 ) -> None:
-    """With ``first=False`` the node plans no first step: the briefing (or, with a grounder of
-    the executor's own, the first basis) goes at once and is only taken in, the executor's
-    first commands go in a query, every action is started once, and the log is the in-process
-    one. With ``first`` (the default) the node plans a step on the first world (the spy sees
-    it)."""
+    """With ``first=False`` (the default since the end of session 28) the node plans no first
+    step: the briefing (or, with a grounder of the executor's own, the first basis) goes at once
+    and is only taken in, the executor's first commands go in a query, every action is started
+    once, and the log is the in-process one. With ``first`` the node plans a step on the first
+    world (the spy sees it)."""
     patient_foresight(monkeypatch)
     if inline:
         guesses_in_the_answer(monkeypatch)

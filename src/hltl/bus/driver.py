@@ -276,12 +276,13 @@ class BusCell:
             hints only).
         first: with ``foresee``, also ask the node to foresee the first step (plan it from
             the briefing or the first basis, start it on a guess, and answer with it: the
-            loop's first commands are then compared with it, not asked about). ``False``:
-            the briefing or first basis still goes at once, for the node to take in (ground)
-            while the executor grounds and plans, and the first commands go in a query (the
-            node's plan of the first step comes after the executor's own; paired under load
-            in session 28, neither way measured faster: docs/bus.md, "Where the time goes
-            (session 28)").
+            loop's first commands are then compared with it, not asked about). Off by default
+            since the end of session 28: the briefing or first basis still goes at once, for
+            the node to take in (ground) while the executor grounds and plans, and the first
+            commands go in a query, which is answered sooner than the node's own plan of the
+            first step comes (it gets the briefing later and plans no faster): the lead's
+            quiet paired run, 180 episodes, −0.75 ms an episode median, faster in 113
+            (docs/bus.md, "Where the time goes (session 28)").
         background: with ``foresee``, also send the executor's forecast horizon, for the node
             to make the executor's background plans for forecast worlds as it simulates ahead
             (sent with the ticks; :meth:`planned`). Off by default: measured under load it
@@ -316,7 +317,7 @@ class BusCell:
         guess: bool = True,
         foresee: bool = True,
         background: bool = False,
-        first: bool = True,
+        first: bool = False,
     ) -> None:
         self.session = session
         self.first = first
@@ -1368,7 +1369,7 @@ def bus_cell(
     guess: bool = True,
     foresee: bool = True,
     background: bool = False,
-    first: bool = True,
+    first: bool = False,
 ) -> CellFactory:
     """A :data:`~hltl.sim.episode.CellFactory` for ``run_episode(simulator=…)`` that drives the node
     serving ``cell`` over ``session``; each cell built is appended to ``opened`` if given.
@@ -1402,7 +1403,7 @@ def bus_cell(
             guess=guess,
             foresee=foresee,
             **({"background": True} if background else {}),
-            **({} if first else {"first": False}),
+            **({"first": True} if first else {}),
         )
         if opened is not None:
             opened.append(c)
