@@ -10146,14 +10146,9 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
 
 
 def _whole_name(words: str, lexicon: Lexicon, kind: str) -> bool:
-    """Whether ``words`` (an article aside) are one name of the scene, whole, of ``kind``."""
-    bare = re.sub(r"^(?:the|a|an) ", "", words.strip(), flags=_F)
-    said = _names(bare, lexicon)
-    return (
-        len(said) == 1
-        and said[0].text.lower() == bare.lower()
-        and all(r.kind == kind for r in said[0].refs)
-    )
+    """Whether ``words`` (an article aside, 'a' and 'an' too) are one name of the scene, whole,
+    of ``kind``: :func:`_only_kind` of the words without their article."""
+    return _only_kind(re.sub(r"^(?:the|a|an) ", "", words.strip(), flags=_F), lexicon, kind)
 
 
 # a person's name as the session-28 (12s) rules take it: 'Person A', a title and a name, a word
