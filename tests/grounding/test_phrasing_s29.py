@@ -166,3 +166,64 @@ def test_a_remark_ending_a_sentence_keeps_its_full_stop(tail: str, want: str) ->
 def test_a_remark_between_commas_still_goes() -> None:
     # the remark ends at a comma: no sentence is joined to another
     assert_reads("The magazine, Mrs Khan asked it, please bring to her", "magazine>C", WARD)
+
+
+# -- (d) a person described by a trade the scene does not know ----------------------------------
+#
+# blind27: "Carol the crofter wants the blue mug for her tea.", "alice the juggler gets the
+# bottle, shes parched", "The cup is for Person A, the ventriloquist.", "Person B, the acrobat,
+# …": the description was read as a name the scene lacks. It is taken off before the instruction
+# is read (normalise.trades29), only after one person of the scene, and only when the words are
+# unknown to the lexer and no word of a scene name or a modifier.
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Carol the crofter wants the blue mug for her tea.", "mug_blue>C"),
+        ("Carol the crofter is peckish, give her the crisps.", "chips>C"),
+        ("alice the juggler gets the bottle, shes parched", "bottle>A"),
+        ("The cup is for Bob, the ventriloquist.", "cup>B"),
+        ("Bob, the acrobat, gets the cup.", "cup>B"),
+        ("Give the cup to Carol the crofter.", "cup>C"),
+        ("Hand the cup over to Bob the dairyman, oh sorry, I meant the apple.", "apple>B"),
+        ("Carol the crofter wants the cup and Bob the baker wants the apple.", "cup>C & apple>B"),
+    ],
+)
+def test_a_trade_after_a_name_is_taken_off(text: str, want: str) -> None:
+    assert_reads(text, want)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # 'red' is a word of a scene name: 'the red one'
+        ("Give Alice the red, Bob the blue.", "mug_red>A & mug_blue>B"),
+        ("Alice the red, Bob the blue.", "mug_red>A & mug_blue>B"),
+        # a scene object after the name is what the person gets
+        ("Carol the cup.", "cup>C"),
+        ("Carol the lot.", "cup>C & bottle>C & chips>C & apple>C & mug_red>C & mug_blue>C"),
+    ],
+)
+def test_near_names_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # right after a verb of giving the words are what is given
+        "Give Carol the crofter.",
+        # a clause of its own after a comma ('the archer' is someone else)
+        "Both items to Bob, the archer wants them.",
+        # no person before it
+        "Carol the baker wants the apple, the crofter wants the cup.",
+    ],
+)
+def test_near_trades_refused(text: str) -> None:
+    assert_refused(text)
+
+
+def test_a_clause_after_a_comma_is_not_a_trade() -> None:
+    # blind23: 'the house is paying' says who pays; it describes no one
+    assert_reads("Slide the cbips across to Bob, the house is paying.", "chips>B")

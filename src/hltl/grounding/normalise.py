@@ -7201,6 +7201,88 @@ def _for_whose28(text: str, lexicon: Lexicon) -> str:
     return _FOR_WHOSE28.sub(whose, text)
 
 
+# Session 29 (engineer 12, blind27): a person described by a trade the scene does not know,
+# said right after the name ('Carol the crofter wants …', 'alice the juggler gets …', 'for
+# Person A, the joiner.', 'Person B, the acrobat, is welcome …'). The description is taken off
+# when the name is one person of the scene (not right after a verb: 'Give Alice the red' gives),
+# the words are one or two the lexer does not know, name nothing in the scene (nor a typo of a
+# name) and are no word of a scene name ('red' of 'red mug'), no modifier (_NOT_TRADE29) and no
+# word that counts, chooses or points back; and what follows is a comma, the end of a sentence,
+# or (with no comma before: '…, the house is paying' is a clause) a verb of wanting, having or
+# being.
+_TRADE29 = re.compile(
+    r"(?P<comma>,)?\s+the (?P<trade>[a-z]+(?: [a-z]+)?)"
+    r"(?P<after>\s*,|(?=\s*(?:[.;:!?]|$))|(?= (?:wants|needs|gets|is|was|has|had|would|should|"
+    r"could|can|will|might|may|fancies|likes|asked|asks|says|'s|'d)\b))",
+    _F,
+)
+_NOT_TRADE29 = frozenset(
+    {
+        "red", "blue", "green", "white", "black", "grey", "gray", "yellow", "brown", "pink",
+        "orange", "purple", "big", "small", "large", "little", "medium", "tall", "short", "long",
+        "new", "old", "clean", "dirty", "full", "empty", "lot", "usual", "whole", "left", "right",
+        "top", "bottom", "middle", "near", "far", "nearest", "nearer", "closest", "closer",
+        "other", "rest", "same", "latter", "former", "most", "least", "best", "worst",
+    }
+)  # fmt: skip
+
+
+def _trade_words29(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` could only describe a person (above): unknown to the lexer, naming
+    nothing in the scene, no word of a scene name, no modifier."""
+    try:
+        items = lex(words, lexicon)
+    except GroundingError:
+        return False
+    scene = lexicon.scene
+    names = [
+        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *(n for f in scene.surfaces for n in (f.id, *f.aliases)),
+    ]
+    said = {w.lower() for n in names for w in n.replace("_", " ").split()}
+    return (
+        all(it.kind == "unknown" for it in items)
+        and _inert28(words, lexicon)
+        and not any(w in said or w in _NOT_TRADE29 for w in words.lower().split())
+    )
+
+
+def trades29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: a trade said after a person's name (above) taken off; before the instruction
+    is first read (offline._parse), as the apostrophes are mended: it only describes."""
+    if " the " not in text.lower():
+        return text
+    for m in reversed(list(_TRADE29.finditer(text))):
+        before = text[: m.start()]
+        words = before.split()
+        who = next(
+            (
+                n
+                for n in (3, 2, 1)
+                if len(words) >= n
+                and re.fullmatch(r"[A-Za-z]+", words[-1])
+                and _only_person(" ".join(words[-n:]), lexicon)
+            ),
+            0,
+        )
+        rest = text[m.end() :].lstrip()
+        if m.group("comma") and rest[:1].isalpha() and not m.group("after"):
+            continue  # "…, the house is paying": a clause of its own, not a description
+        if not who or not _trade_words29(m.group("trade"), lexicon):
+            continue
+        ahead = words[-who - 1].lower().strip(",.;:!?") if len(words) > who else ""
+        if ahead in VERBS or ahead in ("the", "a", "an"):
+            continue  # "Give Alice the red": the person gets what follows
+        if (m.group("after") or "").strip() != ",":
+            text = before + text[m.end() :]  # "Carol the crofter wants", "…, the joiner."
+        elif m.group("comma"):
+            text = f"{before} {text[m.end() :].lstrip()}"  # ", the acrobat," goes whole
+        else:
+            text = before + text[m.start("after") :]  # "alice the juggler, …": the comma stays
+    return text
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(

@@ -29,6 +29,7 @@ from hltl.grounding.normalise import (
     order_colons,
     people_named,
     rewritten19,
+    trades29,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
 from hltl.grounding.tree import (
@@ -235,7 +236,7 @@ def _inside() -> list[str]:
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        text = order_colons(apostrophes(text))
+        text = trades29(order_colons(apostrophes(text)), lexicon)
         cut = _cut_off(text)
         if cut is not None:
             raise cut
