@@ -268,7 +268,6 @@ KNOWN_MISSES = frozenset(
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
         "need the chips over with person b like right now",
-        "Ava's asking for her tedfy bear.",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
@@ -699,10 +698,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        'Eskerrik asko in advance: the cup to Person B, mesedez.',
-        "Takk! The water jug onto the bedside locker, if you'd be so kind.",
-        "Si us plau, if it's no trouble, give Mr Novak the salt. Gràcies!",
-        'Dakujem in advance, the torch to Jess, and bless you.',
         "For the ghillie's picnic, Person A needs the apple while Person B is after the cup.",
         'The bottle is wanted by Person B, says the coxswain.',
         'Our dairy farmers are parched and peckish: Person B fancies the bottle, and Person A the '

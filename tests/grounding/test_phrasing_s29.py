@@ -14,6 +14,7 @@ from tests.grounding.helpers import (
     KITCHEN,
     LAB,
     WARD,
+    WORKSHOP,
     assert_reads,
     assert_refused,
 )
@@ -227,3 +228,42 @@ def test_near_trades_refused(text: str) -> None:
 def test_a_clause_after_a_comma_is_not_a_trade() -> None:
     # blind23: 'the house is paying' says who pays; it describes no one
     assert_reads("Slide the cbips across to Bob, the house is paying.", "chips>B")
+
+
+# -- (e) courtesies of other languages; two names of one thing ----------------------------------
+#
+# blind27: Basque, Catalan and Slovak thanks and 'please' ("Eskerrik asko in advance: …,
+# mesedez.", "Si us plau, …. Gràcies!", "Dakujem in advance, …, and bless you.") and "the bedside
+# locker" (the ward's bedside table is also called 'locker').
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Eskerrik asko in advance: give Bob the cup, mesedez.", "cup>B", CELL),
+        ("Kiitos in advance: the cup to Bob.", "cup>B", CELL),
+        ("Si us plau, if it's no trouble, give Mr Novak the salt. Gràcies!", "salt>C", KITCHEN),
+        ("Give Mr Novak the salt, moltes gracies.", "salt>C", KITCHEN),
+        ("Dakujem in advance, the torch to Jess, and bless you.", "torch>B", WORKSHOP),
+        ("Ďakujem pekne, the torch to Jess.", "torch>B", WORKSHOP),
+        ("Takk! The water jug onto the bedside locker, if you'd be so kind.", "jug@bedside", WARD),
+        ("Put the jug on the locker bedside table.", "jug@bedside", WARD),
+    ],
+)
+def test_courtesies_and_two_names_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a courtesy word is no name: what is left must still say who gets what
+        ("Eskerrik asko in advance: the cup, mesedez.", CELL),
+        ("Gràcies, Mr Novak.", KITCHEN),
+        # names of two different things side by side stay two names
+        ("Put the jug on the bedside trolley.", WARD),
+        ("Give Ruth the jug magazine.", WARD),
+    ],
+)
+def test_near_courtesies_and_names_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -7546,6 +7546,10 @@ _COURTESY24 = (
     # 'Kiitti' and 'Ole hyvä' (here you are / please, said alone), Albanian thanks
     r"e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|"
     r"ole hyvä|ole hyva|moi|kiitti|faleminderit|"
+    # session 29 (blind27): Basque, Catalan and Slovak thanks, with and without their letters'
+    # marks, and the English blessing 'bless you' ('please' in them: _translated25)
+    r"eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|"
+    r"ďakujem(?: pekne)?|dakujem(?: pekne)?|vďaka|vdaka|bless you|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -7553,7 +7557,8 @@ _COURTESY24 = (
 )
 _COURTESY_WORD24 = re.compile(rf"\b(?:{_COURTESY24})\b", _F)
 _COURTESY_STRETCH24 = re.compile(
-    rf"(?:{_COURTESY24})(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all))*",
+    rf"(?:and\s+)?(?:{_COURTESY24})"
+    rf"(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all|in advance))*",
     _F,
 )
 
@@ -7574,7 +7579,8 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     very much.") taken off (above)."""
     if not _COURTESY_WORD24.search(text):
         return text
-    parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
+    # session 29: a colon ends a stretch too ('Eskerrik asko in advance: the cup to …')
+    parts = re.split(r"(\s*[,;:.!?]+\s*)", text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
     drop = [
         bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(_unmarked27(c), lexicon)
@@ -7589,7 +7595,7 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
                 out[-1] = sep  # "…, asante." → "…."
             continue
         out.extend((c, sep))
-    said = "".join(out).strip(" ,;")
+    said = "".join(out).strip(" ,;:")
     return said if _names(said, lexicon) else text
 
 
@@ -7607,7 +7613,8 @@ _PLEASE25 = re.compile(
     r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog|"
     r"prašau|prasau|prašom|prasom|gtkhovt|ebakih|ebakish|ebakachihu|karunakarala|lūdzu|ludzu|"
     r"palun|proszę|prosze|molim|alstublieft|alsjeblieft|lütfen|lutfen|pozhaluysta|pozhaluista|"
-    r"parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu)(?!\w)",
+    r"parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu|"
+    r"si us plau|mesedez)(?!\w)",
     _F,
 )
 _SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)

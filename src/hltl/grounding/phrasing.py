@@ -5274,7 +5274,30 @@ def _for_me_alone(items: list[Item]) -> list[Item]:
     return items
 
 
+def _two_names29(items: list[Item]) -> list[Item]:
+    """'the bedside locker' (session 29, blind27): two names of one surface or object said
+    together, after an article ('bedside' and 'locker' both name the bedside table), name it
+    once. Names of different things, or of people, are left."""
+    out: list[Item] = []
+    for it in items:
+        prev = out[-1] if out else None
+        if (
+            prev is not None
+            and len(out) > 1
+            and _is(out[-2], "det")
+            and prev.kind == it.kind == "ent"
+            and len(prev.refs) == len(it.refs) == 1
+            and prev.refs[0] == it.refs[0]
+            and prev.refs[0].kind in ("surface", "object")
+        ):
+            out[-1] = Item("ent", prev.lemma, f"{prev.text} {it.text}", prev.refs, prev.quant)
+            continue
+        out.append(it)
+    return out
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_two_names29),
     _plain(_for_me_alone),
     _plain(_any_described),
     _plain(_described_then_corrected),
