@@ -237,8 +237,6 @@ KNOWN_MISSES = frozenset(
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
         "Hello there. I'm only visiting, so forgive me if I get this wrong, but would you be "
         "able to give the banana to Emma? Thank you ever so much.",
-        "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
-        "the high chair? Thanks.",
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "What I need is the bottle over with Person B.",
@@ -408,8 +406,6 @@ KNOWN_MISSES = frozenset(
         "terribly passing Sam the notepad? Thanks a bunch.",
         "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
         "the magazine down on the bedside locker? Lovely, thank you.",
-        "Hiya, zookeeper here for the school visit, the penguins are still in the van. Could "
-        "you be a star and hand Mrs Ortiz the glue stick? Ta.",
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
@@ -553,8 +549,6 @@ KNOWN_MISSES = frozenset(
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         "crisps up on the shelf please love, out of the dog's reach",
-        'chips to person b and bottle to person a, cheers, back to the eye tests',
-        "new lock's in, so the bottle's for person a now and the chips can go over to person b",
         "bottle to person a when you're ready, no rush, the race isn't for an hour",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
@@ -580,7 +574,6 @@ KNOWN_MISSES = frozenset(
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
         "Priya wants the red pen left in the box, she'll sort it out later.",
-        "Kofi wants the hammer, mine's still in the forge.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
         "You see that bottle by your elbow? Person A's to have it.",
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
@@ -698,10 +691,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        "For the ghillie's picnic, Person A needs the apple while Person B is after the cup.",
-        'The bottle is wanted by Person B, says the coxswain.',
-        'Our dairy farmers are parched and peckish: Person B fancies the bottle, and Person A the '
-        'chips.',
         "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
         "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
         "The bottle's for Person B. Take it over to them.",
@@ -709,9 +698,6 @@ KNOWN_MISSES = frozenset(
         "Chips to Person A, and when that's done, the bottle to that same person as well.",
         'The stapler goes to Sam; put the notepad on the desk after that.',
         'Quick list from the botanist: Person A, cup. Person B, apple.',
-        'Chips to Person B first. After that. Person A gets the cup. Sorry, typing this from the '
-        'cave entrance.',
-        'Give Person B the bottle, give Person A the chips, job done, back to my embroidery.',
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
         'For the long row back, Bob can take the bottle or the crisps, whichever comes to hand.',
@@ -750,7 +736,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
         "Give Person A the chips. Wait, no, she's fasting; the bottle instead.",
         'person b is thirsty after the dive so she wants the bottle',
-        'sam says put the stapler in the box, the proofs are done',
         'Aluce is back from the dive, hand her the bottle.',
         'The forester left the bottle out; put it on the shrlf.',
         'Person A has come up out of the cave and would like the boftle.',

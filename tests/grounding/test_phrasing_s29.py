@@ -13,6 +13,7 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    OFFICE,
     WARD,
     WORKSHOP,
     assert_reads,
@@ -266,4 +267,53 @@ def test_courtesies_and_two_names_read(text: str, want: str, scene: Scene) -> No
     ],
 )
 def test_near_courtesies_and_names_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (f) remarks and context that ask nothing; reported requests; 'while', 'is after' ----------
+#
+# blind27: "…, job done, back to my embroidery.", "Sorry, typing this from the cave entrance.",
+# "Our dairy farmers are parched and peckish: …", "For the ghillie's picnic, …", "sam says put the
+# stapler in the box, the proofs are done", "The bottle is wanted by Person B, says the
+# coxswain.", "Person A needs the apple while Person B is after the cup." (normalise._remarks29,
+# _says29, _while29).
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Give Bob the cup, give Alice the chips, job done, back to my embroidery.",
+            "cup>B & chips>A",
+            CELL,
+        ),
+        ("Give Bob the cup. Sorry, typing this from the cave entrance.", "cup>B", CELL),
+        ("Our dairy farmers are parched and peckish: Bob fancies the cup.", "cup>B", CELL),
+        ("For the ghillie's picnic, Alice needs the apple.", "apple>A", CELL),
+        ("sam says put the stapler in the box, the proofs are done", "stapler@box", OFFICE),
+        ("The cup is wanted by Bob, says the coxswain.", "cup>B", CELL),
+        ("Alice needs the apple while Bob is after the cup.", "apple>A & cup>B", CELL),
+        ("Bob is after the cup.", "cup>B", CELL),
+    ],
+)
+def test_remarks_reports_and_wants_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a part joined with 'and' is more of the request: an object the scene lacks is refused
+        ("Give Bob the cup, and the spanner.", CELL),
+        # a statement that corrects, negates, orders, points back or says a time is no remark
+        ("Give Bob the cup. Sorry, my mistake.", CELL),
+        ("Give Bob the cup, the order is wrong.", CELL),
+        ("Give Bob the cup, depending on the weather.", CELL),
+        # a report whose words point at the reporter, or a want of the speaker
+        ("Sam says give me the stapler.", OFFICE),
+        # 'while' before no want, 'after' of no person
+        ("The cup is after the apple.", CELL),
+    ],
+)
+def test_near_remarks_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)

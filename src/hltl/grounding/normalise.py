@@ -7234,13 +7234,7 @@ def _trade_words29(words: str, lexicon: Lexicon) -> bool:
         items = lex(words, lexicon)
     except GroundingError:
         return False
-    scene = lexicon.scene
-    names = [
-        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
-        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
-        *(n for f in scene.surfaces for n in (f.id, *f.aliases)),
-    ]
-    said = {w.lower() for n in names for w in n.replace("_", " ").split()}
+    said = _scene_words29(lexicon)
     return (
         all(it.kind == "unknown" for it in items)
         and _inert28(words, lexicon)
@@ -7281,6 +7275,185 @@ def trades29(text: str, lexicon: Lexicon) -> str:
         else:
             text = before + text[m.start("after") :]  # "alice the juggler, …": the comma stays
     return text
+
+
+# Session 29 (engineer 12, blind27): a remark or context that asks nothing, said as a sentence
+# of its own, before a colon, or as a comma part opening or closing a sentence ("…, job done,
+# back to my embroidery.", "Sorry, typing this from the cave entrance.", "Our dairy farmers are
+# parched and peckish: …", "For the ghillie's picnic, …"). Taken off only when it names nothing
+# in the scene (nor a typo of a name), holds no verb the grammar knows, no word that counts,
+# chooses, points back, negates, corrects, orders or says a time (_ASKS29), and is no question;
+# and what is left names something. 'this' of the message itself ('typing this') is no pointer.
+_ASKS29 = re.compile(
+    r"\b(?:no|nope|nah|not|never|none|nothing|nobody|wrong|mistake|typo|meant|mean|means|"
+    r"rather|instead|actually|scratch|cancel|forget|ignore|undo|wait|hold|hang|stop|skip|drop|"
+    r"change|swap|switch|kidding|joking|other|others|another|else|same|again|too|also|well|"
+    r"both|each|every|all|any|either|neither|only|just|whichever|whatever|first|last|next|then|"
+    r"after|before|once|when|whenever|while|until|till|if|unless|later|now|soon|today|tonight|"
+    r"tomorrow|yesterday|morning|afternoon|evening|lunch|dinner|breakfast|week|hours?|minutes?|"
+    r"mins?|secs?|seconds?|moment|asap|it|its|them|they|their|theirs|him|her|hers|his|he|she|"
+    r"that|those|these|this|there|here|one|ones|[0-9]+|two|three|four|five|six|seven|eight|"
+    r"nine|ten|half|dozen|pair|couple|lot|rest|everything|anything|something|someone|everyone|"
+    r"anyone|you|me|us|we|i|please|instead|except|without|but|bar|or|nor|sorry|oops|whoops|"
+    r"apologies|correction|corrected|bad|silly|firstly|secondly|thirdly|finally|lastly|"
+    r"initially|subsequently|afterwards?|meanwhile|between|during|likewise|similarly|ditto|"
+    r"same|order|reverse|round|around|way|whoever|whomever|depending|depends|unless)\b|n't\b|[?]",
+    _F,
+)
+_THIS_MESSAGE29 = re.compile(r"\b(?:typing|writing|sending|texting|saying) this\b", _F)
+
+
+def _asks_nothing29(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` is a remark that asks nothing (above): no word of a scene name either
+    ('the red or the blue' names the mugs by their colour)."""
+    plain = _THIS_MESSAGE29.sub("x", words).strip()
+    tokens = re.findall(r"[a-z']+", plain.lower())
+    said = _scene_words29(lexicon)
+    return (
+        bool(tokens)
+        and not _ASKS29.search(plain)
+        and not any(t in VERBS or t.split("'")[0] in VERBS or t in said for t in tokens)
+        and _names_nothing(_unmarked27(words), lexicon)
+    )
+
+
+def _remarks29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: remarks that ask nothing (above) taken off: whole sentences and parts before a
+    colon, and comma parts opening or closing a sentence."""
+    parts = re.split(r"(\s*[.!?;:]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+    out: list[tuple[str, str]] = []
+    for sent, sep in zip(sents, seps, strict=True):
+        if "?" in sep or not sent.strip():
+            out.append((sent, sep))
+            continue
+        if _remark29(sent, lexicon, "") or _typing_from29(sent, lexicon):
+            continue
+        pieces = re.split(r"\s*,\s*", sent)
+        while len(pieces) > 1 and _remark29(pieces[-1], lexicon, "back to "):
+            pieces.pop()
+        while len(pieces) > 1 and _remark29(pieces[0], lexicon, "for "):
+            pieces.pop(0)
+        out.append((", ".join(pieces), sep))
+    said = "".join(a + b for a, b in out).strip()
+    if said == text.strip() or not _names(said, lexicon):
+        return text
+    return said
+
+
+# a statement: a clause with 'be' or 'done' ('the proofs are done', 'job done'); not a name said
+# alone ('The chips' where the scene has none is refused, not taken off)
+_STATEMENT29 = re.compile(r"\b(?:is|are|was|were|am|been|being|done)\b|'s\b|'re\b|'m\b", _F)
+
+
+def _remark29(words: str, lexicon: Lexicon, opener: str) -> bool:
+    """Whether ``words`` is a remark to take off: a statement that asks nothing, or a part
+    opening with ``opener`` ('for the ghillie's picnic' before the request, 'back to my
+    embroidery' after it) that asks nothing; never a part joined with 'and', 'plus', 'with'."""
+    low = words.strip().lower()
+    opens = bool(opener) and low.startswith(opener)
+    rest = low[len(opener) :] if opens else low
+    if (
+        re.match(r"(?:and|or|plus|with|also|then)\b", low)
+        or re.search(r"\bfor\b", rest)  # 'the jug is for the chef': whom it is for
+        or not _asks_nothing29(words, lexicon)
+    ):
+        return False
+    return opens or bool(_STATEMENT29.search(words))
+
+
+# "Sorry, typing this from the cave entrance.": an apology for how the message is sent
+_TYPING_FROM29 = re.compile(
+    r"(?:sorry|apologies),? (?:i'm |i am )?(?:typing|writing|texting|sending) this "
+    r"((?:from|on|in|with|at) [a-z' ]+)",
+    _F,
+)
+
+
+def _typing_from29(sent: str, lexicon: Lexicon) -> bool:
+    """Whether ``sent`` is such an apology (above) naming nothing of the scene."""
+    m = _TYPING_FROM29.fullmatch(sent.strip())
+    return m is not None and _asks_nothing29(m.group(1), lexicon)
+
+
+def _scene_words29(lexicon: Lexicon) -> frozenset[str]:
+    """Every word of the scene's ids, names, categories and aliases ('red' of 'red mug')."""
+    scene = lexicon.scene
+    names = [
+        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *(n for f in scene.surfaces for n in (f.id, *f.aliases)),
+    ]
+    return frozenset(w.lower() for n in names for w in n.replace("_", " ").split())
+
+
+# Session 29 (blind27): a request reported from someone ('sam says put the stapler in the box',
+# 'The bottle is wanted by Person B, says the coxswain.'): the request is what is asked. The
+# report opening the instruction is taken off when it is one person of the scene and what they
+# say has no word for the speaker or a person pronoun ('Mia says she wants …', 'Sam says give me
+# …' are left); one closing a sentence (', says the coxswain', ', the coxswain says') when its
+# words name nothing.
+_SAYS_OPEN29 = re.compile(r"^([A-Za-z]+(?: [A-Za-z]+)?) says,? (?:that )?(?=\w)", _F)
+_SAYS_CLOSE29 = re.compile(
+    r",\s*(?:says ([a-z' ]+?)|((?:the |our |my |a )?[a-z' ]+?) says)\s*(?=[.!;]|$)", _F
+)
+_SPEAKER_OR_PRONOUN29 = re.compile(
+    r"\b(?:i|me|my|mine|we|us|our|he|she|him|her|his|they|them)\b", _F
+)
+
+
+def _says29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: the report of a request taken off (above)."""
+    if "says" not in text.lower():
+        return text
+    m = _SAYS_OPEN29.match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and not _SPEAKER_OR_PRONOUN29.search(text[m.end() :])
+    ):
+        text = text[m.end() :]
+
+    def close(c: re.Match[str]) -> str:
+        who = c.group(1) or c.group(2) or ""
+        return "" if _inert28(who, lexicon) else c.group(0)
+
+    return _SAYS_CLOSE29.sub(close, text)
+
+
+# Session 29 (blind27): 'P is after X' is 'P wants X' (a scene person and a scene object), and
+# 'P needs X while Q wants Y' sets two wants side by side: 'while' before a person and a verb of
+# wanting, after a clause that names an object, is 'and'.
+_IS_AFTER29 = re.compile(
+    r"\b([A-Za-z]+(?: [A-Za-z]+)?) (?:is|'s) (?:after|angling for) (?=the )", _F
+)
+_WHILE29 = re.compile(
+    r"(?<=\w) while ([A-Za-z]+(?: [A-Za-z]+)?) (?=(?:wants|needs|gets|would like|fancies)\b)", _F
+)
+
+
+def _while29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'is after' and 'while' between two wants (above)."""
+    if " after " in text.lower():
+
+        def wants(m: re.Match[str]) -> str:
+            words = m.group(1).split()
+            for n in (len(words), 1):
+                if _only_person(" ".join(words[-n:]), lexicon):
+                    return " ".join([*words[:-n], *words[-n:], "wants "])
+            return m.group(0)
+
+        text = _IS_AFTER29.sub(wants, text)
+    if " while " not in text.lower():
+        return text
+
+    def side(m: re.Match[str]) -> str:
+        before = re.split(r"[.!?;:]\s", text[: m.start()])[-1]
+        if _only_person(m.group(1), lexicon) and _ids(before, lexicon, "object"):
+            return f" and {m.group(1)} "
+        return m.group(0)
+
+    return _WHILE29.sub(side, text)
 
 
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
@@ -10857,6 +11030,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 29 (12): blind27's kinds
+    _says29,
+    _while29,
+    _remarks29,
     _doing25,
     _speaker_remarks,
     _asides22,
