@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -317,3 +319,53 @@ def test_remarks_reports_and_wants_read(text: str, want: str, scene: Scene) -> N
 )
 def test_near_remarks_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- (g) refusals that name every reading -------------------------------------------------------
+#
+# blind27's refusals without their readings: a pronoun refused while a name is unclear too, a
+# choice narrowed by words the grounder cannot read, and 'one of them' after two people named
+# together (offline._more_readings29).
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "readings"),
+    [
+        (
+            "Ruth needs the blanket taken across to Mr Lee, he's feeling the draught.",
+            WARD,
+            ("blanket_blue", "blanket_grey", "Person A", "Person B"),
+        ),
+        ("tom needs a box, the one mia packed", DEPOT, ("box_small", "box_medium", "box_large")),
+        (
+            "Kofi and Jess are at the bench, and one of them asked for the hammer. Take it to "
+            "whoever that was.",
+            WORKSHOP,
+            ("Person A", "Person B"),
+        ),
+    ],
+)
+def test_a_refusal_names_every_reading(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    for r in readings:
+        assert r in str(refused.value)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "absent"),
+    [
+        # one box only is named: nothing more to say
+        ("tom needs the scanner, the one mia packed", DEPOT, "box_small"),
+        # 'one of them' after objects, not people
+        (
+            "Kofi wants the hammer and the torch, one of them will do, then sing.",
+            WORKSHOP,
+            "one of them' could",
+        ),
+    ],
+)
+def test_no_readings_added_where_nothing_is_unclear(text: str, scene: Scene, absent: str) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert absent not in str(refused.value)
