@@ -117,7 +117,6 @@ KNOWN_MISSES = frozenset(
         # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
         "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
         "The little one could do with her sippy cup",
-        "Take the bottle to Person A. When that's done, the chips go to them too.",
         "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
         "load",
         "Stock room's a mess, grab whichever box you like and stick it on the belt",
@@ -133,7 +132,6 @@ KNOWN_MISSES = frozenset(
         "Load Tom up with the boxes, just not the small box",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
         "Give Ava the teddy, won't you give Lily the bib too?",
-        "Take the cup to Person B. When that's done, the apple goes to them too.",
         "Could you bring Grandad's beaker over to him?",
         "Give each of them a spanner, Kofi and Jess, any size",
         "Both people get an item each: the chips for Person B and the bottle for Person A",
@@ -693,10 +691,7 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
         "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
-        "The bottle's for Person B. Take it over to them.",
         'See the bottle? Person A the gamekeeper wants it.',
-        "Chips to Person A, and when that's done, the bottle to that same person as well.",
-        'The stapler goes to Sam; put the notepad on the desk after that.',
         'Quick list from the botanist: Person A, cup. Person B, apple.',
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',

@@ -369,3 +369,56 @@ def test_no_readings_added_where_nothing_is_unclear(text: str, scene: Scene, abs
     with pytest.raises(GroundingError) as refused:
         parse_instruction(text, scene)
     assert absent not in str(refused.value)
+
+
+# -- (h) pronouns and order words said apart ----------------------------------------------------
+#
+# blind27: "The bottle's for Person B. Take it over to them." (a recipient 'them' after one person
+# alone), "…, the bottle to that same person as well.", "The stapler goes to Sam; put the notepad
+# on the desk after that." (a sentence ending on 'after that'), and 'his' before an object (only a
+# possessive; the scene knows no owners).
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The cup's for Bob. Take it over to them.", "cup>B", CELL),
+        ("Alice wants the cup. Give the apple to them too.", "cup>A & apple>A", CELL),
+        (
+            "Chips to Alice, and when that's done, the cup to that same person as well.",
+            "chips>A ; cup>A",
+            CELL,
+        ),
+        (
+            "The stapler goes to Sam; put the notepad on the desk after that.",
+            "stapler>B ; notebook@desk",
+            OFFICE,
+        ),
+        (
+            "The stapler goes to Sam. Put the notepad on the desk afterwards.",
+            "stapler>B ; notebook@desk",
+            OFFICE,
+        ),
+        ("Give his crisps to Alice.", "chips>A", CELL),
+    ],
+)
+def test_pronouns_and_order_said_apart_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # no one named, or two: 'them' could be anyone
+        ("Take the cup over to them.", CELL),
+        ("Alice and Bob want the cup. Take it to them.", CELL),
+        # 'that same person' with two people named before it
+        ("Chips to Alice and the cup to Bob, then the apple to that same person.", CELL),
+        # 'after that' with nothing before it
+        ("Put the notepad on the desk after that.", OFFICE),
+        # 'his' names no recipient
+        ("Bring his crisps.", CELL),
+    ],
+)
+def test_near_pronouns_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

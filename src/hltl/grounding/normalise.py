@@ -7456,6 +7456,28 @@ def _while29(text: str, lexicon: Lexicon) -> str:
     return _WHILE29.sub(side, text)
 
 
+# Session 29 (blind27): 'that same person' ('…, the bottle to that same person as well') is the
+# one person named before it; with none or several named it is left (and refused)
+_SAME_PERSON29 = re.compile(
+    r"\b(?:that|the) (?:very )?same (?:person|one|guy|lady|woman|man)\b", _F
+)
+
+
+def _same_person29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'that same person' named (above)."""
+    if "same" not in text.lower():
+        return text
+    m = _SAME_PERSON29.search(text)
+    if m is None:
+        return text
+    before = _ids(text[: m.start()], lexicon, "human")
+    if len(before) != 1:
+        return text
+    pid = next(iter(before))
+    name = next(h.name for h in lexicon.scene.humans if h.id == pid)
+    return text[: m.start()] + name + text[m.end() :]
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -11033,6 +11055,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 29 (12): blind27's kinds
     _says29,
     _while29,
+    _same_person29,
     _remarks29,
     _doing25,
     _speaker_remarks,

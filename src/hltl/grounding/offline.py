@@ -908,6 +908,12 @@ class _Parser:
                         raise GroundingError(f"{_text(sent)!r}: nothing said before it to order")
                     result = self._first_of(_RawGroup("and", [result]), ahead)
                     continue
+            if n > 0 and conn == "and" and held is None:
+                later = _after_that29(body)
+                if later is not None:
+                    # "The stapler goes to Sam; put the notepad on the desk after that." (session
+                    # 29, blind27): a sentence ending on 'after that' comes after the one before
+                    body, conn = later, "then"
             lead = False
             if (
                 conn == "and"
@@ -2116,6 +2122,27 @@ def _split_after_first29(sent: list[Item]) -> list[list[Item]]:
         if first_refs(sent[: j + 1])[1]:
             return [sent[: j + 1], rest]
     return [sent]
+
+
+def _after_that29(body: list[Item]) -> list[Item] | None:
+    """``body`` without an 'after that' / 'afterwards' that ends it and orders nothing inside it
+    (``_trailing_order`` leaves it, and the sentence would read 'X, then' with nothing after);
+    None when it does not end so."""
+    core = list(body)
+    while core and _is(core[-1], ",", "filler"):
+        core.pop()
+    if len(core) < 3 or not _is(core[-1], "then"):
+        return None
+    try:
+        out = _trailing_order(body)
+    except GroundingError:
+        return None
+    if out is not body and out != body:
+        return None
+    rest = core[:-1]
+    if any(_is(x, "then", "after", "before", "once", "prior", "first") for x in rest):
+        return None
+    return rest
 
 
 def _already_first29(body: list[Item]) -> bool:

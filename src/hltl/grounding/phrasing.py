@@ -2697,6 +2697,11 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 and _objects(nxt)
             ):
                 continue  # "give Alice her cup": a possessive after the person
+            if low == "his" and nxt is not None and _objects(nxt):
+                # "… Bob can take his crisps" (session 29, blind27): 'his' before an object is
+                # only a possessive (never a recipient, as 'her' may be), and whose the object is
+                # changes no task (the scene knows no owners): the object is read alone
+                continue
             candidates = [p for p in seen if p not in _waiting(out, items, k)]
             own = _own_person(out)
             if own is not None:
@@ -2736,6 +2741,11 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     del out[p - 1 :]  # "give Alice and Carol a mug for each of them": said already
                 else:
                     out.extend(group)  # "…, get a mug for each of them": Alice and Carol
+                continue
+            if prev is not None and _is(prev, "to", "for") and len(seen) == 1:
+                # "The bottle's for Person B. Take it over to them." (session 29, blind27): a
+                # recipient 'them' when one person alone has been named is that person
+                out.append(Item("ent", low, it.text, (Ref("human", next(iter(seen))),)))
                 continue
             if (nxt is not None and nxt.kind == "ent") or (
                 prev is not None and _is(prev, "to", "for")
