@@ -691,8 +691,6 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
         "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
-        'See the bottle? Person A the gamekeeper wants it.',
-        'Quick list from the botanist: Person A, cup. Person B, apple.',
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
         'For the long row back, Bob can take the bottle or the crisps, whichever comes to hand.',

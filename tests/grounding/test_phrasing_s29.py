@@ -400,6 +400,9 @@ def test_no_readings_added_where_nothing_is_unclear(text: str, scene: Scene, abs
             OFFICE,
         ),
         ("Give his crisps to Alice.", "chips>A", CELL),
+        # a question pointing at one object, and a heading before a colon
+        ("See the cup? Alice wants it.", "cup>A", CELL),
+        ("Quick list from the botanist: Alice, cup. Bob, apple.", "cup>A & apple>B", CELL),
     ],
 )
 def test_pronouns_and_order_said_apart_read(text: str, want: str, scene: Scene) -> None:
@@ -418,6 +421,9 @@ def test_pronouns_and_order_said_apart_read(text: str, want: str, scene: Scene) 
         ("Put the notepad on the desk after that.", OFFICE),
         # 'his' names no recipient
         ("Bring his crisps.", CELL),
+        # pointing at two objects, or at one with nothing asked of it
+        ("See the cup or the apple? Alice wants it.", CELL),
+        ("See the cup?", CELL),
     ],
 )
 def test_near_pronouns_refused(text: str, scene: Scene) -> None:

@@ -7329,6 +7329,8 @@ def _remarks29(text: str, lexicon: Lexicon) -> str:
             continue
         if _remark29(sent, lexicon, "") or _typing_from29(sent, lexicon):
             continue
+        if sep.strip().startswith(":") and _asks_nothing29(sent, lexicon):
+            continue  # "Quick list from the botanist: …": a heading
         pieces = re.split(r"\s*,\s*", sent)
         while len(pieces) > 1 and _remark29(pieces[-1], lexicon, "back to "):
             pieces.pop()
@@ -7454,6 +7456,24 @@ def _while29(text: str, lexicon: Lexicon) -> str:
         return m.group(0)
 
     return _WHILE29.sub(side, text)
+
+
+# Session 29 (blind27): "See the bottle? Person A the gamekeeper wants it.": a question that
+# points at one object of the scene, opening the instruction, says what the rest is about: 'The
+# bottle.' (the rest must still say who gets it)
+_SEE_THE29 = re.compile(r"^(?:(?:do |can )?you )?see (the|that|this) ([a-z][a-z ]*?)\?\s*", _F)
+
+
+def _see_the29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'See the X?' opening the instruction as 'The X.' (above)."""
+    m = _SEE_THE29.match(text)
+    if (
+        m is None
+        or len(_ids(m.group(2), lexicon, "object")) != 1
+        or not _only(m.group(2), lexicon, "object")
+    ):
+        return text
+    return f"The {m.group(2)}. {text[m.end() :]}"
 
 
 # Session 29 (blind27): 'that same person' ('…, the bottle to that same person as well') is the
@@ -11056,6 +11076,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _says29,
     _while29,
     _same_person29,
+    _see_the29,
     _remarks29,
     _doing25,
     _speaker_remarks,
