@@ -633,7 +633,6 @@ KNOWN_MISSES = frozenset(
         'Crisps to Alice, sorry, I mean Bob, Alice is off crisps.',
         "Cup for Person B, no, sorry, the apple, the cup's got a crack.",
         "Chips to Person A, hang on, make it Person B, A's gone on break.",
-        "Spoon to Omar, nope, to Dana, she's stirring the samples.",
         'The white plate on the rack, no, the counter, we need it for service.',
         'can you put the red mug on the counter for me please my hands are all plaster',
         'start off with crisps for alice and after that bob needs his bottle',
