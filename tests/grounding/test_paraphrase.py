@@ -688,7 +688,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
         "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',

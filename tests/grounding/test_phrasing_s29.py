@@ -428,3 +428,35 @@ def test_pronouns_and_order_said_apart_read(text: str, want: str, scene: Scene) 
 )
 def test_near_pronouns_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- (i) an object described, then named ---------------------------------------------------------
+#
+# blind27: "Mia says the pawnbroker's parcel, the small box, should go on the conveyor."
+# (normalise._described29, after _says29).
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
+        "The parcel, the small box, should go on the conveyor.",
+    ],
+)
+def test_an_object_described_then_named_reads(text: str) -> None:
+    assert_reads(text, "box_small@conveyor", DEPOT)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the name is a choice of three boxes
+        "The parcel, the box, should go on the conveyor.",
+        # a modifier is no description of an unknown thing
+        "The red parcel, the small box, should go on the conveyor.",
+        # a list: no verb after the name
+        "The parcel, the small box, and the tape to Mia.",
+    ],
+)
+def test_near_descriptions_refused(text: str) -> None:
+    assert_refused(text, DEPOT)

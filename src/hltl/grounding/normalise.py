@@ -7497,6 +7497,34 @@ def _see_the29(text: str, lexicon: Lexicon) -> str:
     return f"The {m.group(2)}. {text[m.end() :]}"
 
 
+# Session 29 (blind27): "the pawnbroker's parcel, the small box, should go on the conveyor": an
+# object first described by words the scene does not know, then named between commas, opening a
+# sentence whose verb follows: the name alone ('a list "the spanner, the cup, and …"' has no verb
+# after it and is left)
+_DESCRIBED29 = re.compile(
+    r"(^|[.!?;]\s+)(?:the|a|an|my|our|your|his|her|their) ([a-z' -]+?), (the [a-z -]+?),\s+"
+    r"(?=(?:should|must|needs?|goes|go|is|has|can|could|wants?|belongs)\b)",
+    _F,
+)
+
+
+def _described29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: an object described, then named (above), is the name."""
+    if text.count(",") < 2:
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if (
+            _trade_words29(m.group(2).replace("'s", ""), lexicon)
+            and len(_ids(m.group(3), lexicon, "object")) == 1
+            and _only(m.group(3), lexicon, "object")
+        ):
+            return f"{m.group(1)}{m.group(3)} "
+        return m.group(0)
+
+    return _DESCRIBED29.sub(named, text)
+
+
 # Session 29 (blind27): 'that same person' ('…, the bottle to that same person as well') is the
 # one person named before it; with none or several named it is left (and refused)
 _SAME_PERSON29 = re.compile(
@@ -11163,6 +11191,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 29 (12): blind27's kinds
     _says29,
+    _described29,
     _while29,
     _same_person29,
     _see_the29,
