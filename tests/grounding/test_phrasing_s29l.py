@@ -6,7 +6,15 @@ from __future__ import annotations
 import pytest
 
 from hltl.world.scene import Scene
-from tests.grounding.helpers import CELL, OFFICE, WARD, WORKSHOP, assert_reads, assert_refused
+from tests.grounding.helpers import (
+    CELL,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+    assert_same_or_refused,
+)
 
 # cell: mug_red and mug_blue are the two mugs; Alice is Person A, Bob Person B.
 
@@ -93,19 +101,21 @@ WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
 
 
 @pytest.mark.parametrize(
-    ("text", "scene"),
+    ("text", "want", "scene"),
     [
-        (WARD_ORDER, WARD),
+        (WARD_ORDER, "thermometer>A ; pills>B", WARD),
         ("Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer where it "
-         "is.", WORKSHOP),
-        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.", CELL),
+         "is.", "drill>A", WORKSHOP),
+        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.",
+         "apple>A ; cup>B", CELL),
         ("Last, the stapler goes to Sam, the night porter. First, though, give Priya the "
-         "notebook.", OFFICE),
+         "notebook.", "notebook>A ; stapler>B", OFFICE),
     ],
 )
-def test_a_sentence_end_is_not_inside_an_aside(text: str, scene: Scene) -> None:
-    # never the two requests joined without their order or correction
-    assert_refused(text, scene)
+def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scene) -> None:
+    # never the two requests joined without their order or correction: the careful reading (the
+    # trade taken off before the first read, normalise.trades29, engineer 12) or a refusal
+    assert_same_or_refused(text, want, scene)
 
 
 @pytest.mark.parametrize(
