@@ -35,6 +35,9 @@ from tests.grounding.helpers import (
         ("Give Alice the cup. Naw, Bob.", "cup>B", CELL),
         ("Give Alice the cup. Nope, give Bob the apple.", "apple>B", CELL),
         ("Ruth needs the jug. Nah, the pills.", "pills>A", WARD),
+        # read before as both objects ('nuh-uh' taken off as a word of no meaning)
+        ("Give Alice the cup. Nuh-uh, the apple.", "apple>A", CELL),
+        ("Give Alice the cup. Uh-uh, the apple.", "apple>A", CELL),
     ],
 )
 def test_a_word_saying_no_corrects(text: str, want: str, scene: Scene) -> None:
@@ -50,6 +53,7 @@ def test_a_word_saying_no_corrects(text: str, want: str, scene: Scene) -> None:
         "Give Alice the cup. Nah.",
         "Give Alice the cup. Nope!",
         "Give Alice the cup. Oh, nah.",
+        "Give Alice the cup. Uh-uh.",
         "Na, give Alice the cup.",
     ],
 )
@@ -71,6 +75,7 @@ def test_na_between_commas_names_both_readings() -> None:
         ("Give Alice the cup. Na gode.", "cup>A", CELL),
         ("Give Alice the cup, nae bother.", "cup>A", CELL),
         ("Give Alice the cup, no worries.", "cup>A", CELL),
+        ("Give Alice the cup, uh, thanks.", "cup>A", CELL),
     ],
 )
 def test_near_forms_read_as_before(text: str, want: str, scene: Scene) -> None:
@@ -119,6 +124,8 @@ def test_each_with_each_person_reads(text: str, want: str, scene: Scene) -> None
         ("Give Kofi the torch, not the drill, the hammer too.", "meant in place of 'torch'"),
         ("The torch, not the drill, the hammer for Kofi.", "meant in place of 'torch'"),
         ("Give Kofi a spanner, not the small one, the hammer.", "one more thing besides"),
+        ("Give Kofi the torch - not the drill - the hammer.", "one more thing besides"),
+        ("Give Kofi the torch — not the drill — the hammer.", "one more thing besides"),
         # read before as the hammer alone
         ("Give Kofi everything except the drill, the hammer.", "one more left out"),
         ("Give Kofi everything but the drill, the hammer.", "one more left out"),
@@ -138,6 +145,8 @@ def test_an_object_after_an_exclusion_is_refused(text: str, match: str) -> None:
         # the one meant: one of those left, of the kind left out, or the same said again
         ("Give Kofi a spanner, not the small one, the big one.", "spanner_large>A", WORKSHOP),
         ("Give Tom a box, not the small one, the large one.", "box_large>B", DEPOT),
+        ("Give Tom a box - not the small one - the large one.", "box_large>B", DEPOT),
+        ("Give Kofi the torch - not the drill - and the hammer.", "torch>A & hammer>A", WORKSHOP),
         ("The cup to Alice, not the chips, the cup.", "cup>A", CELL),
         # a clause of its own: a person after it, and one before
         (

@@ -4399,8 +4399,8 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
 
     def inert(chunk: str) -> bool:
         words = re.findall(r"[a-z']+", chunk.lower())
-        if not words or re.search(r"\d", chunk):
-            return False
+        if not words or re.search(r"\d", chunk) or _NO_ALONE29R.match(chunk):
+            return False  # a number; 'uh-uh' (no, session 29)
         plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
         return (
             all(w in common or w in _INERT_WORDS for w in plain)
@@ -10618,19 +10618,22 @@ def _described_list27(text: str, lexicon: Lexicon) -> str:
 
 # -- session 29 (engineer 12r) -------------------------------------------------------------------
 
-# Words that say 'no' (colloquial 'nah', 'naw', 'nope'; Scots 'nae'; German 'nein', French 'non'),
+# Words that say 'no' (colloquial 'nah', 'naw', 'nope', 'nuh-uh', 'uh-uh'; Scots 'nae'; German
+# 'nein', French 'non'),
 # said as a stretch of their own: the correction cue 'no' ("Give Alice the cup. Nah, the apple.").
 # 'na' is 'nah' only opening a sentence: after a comma it may be Hindi English's tag ('…, na?',
 # isn't it; _tag28), so before more words it is refused with both readings.
 _NO_WORD29R = re.compile(
-    r"(?:(?<=^)|(?<=[,.!?;:]\s)|(?<=[,.!?;:]))(nah|naw|nope|nae|nein|non)(?=\s*[,.!?;:]|\s*$)",
+    r"(?:(?<=^)|(?<=[,.!?;:]\s)|(?<=[,.!?;:]))(nah|naw|nope|nuh-uh|uh-uh|nae|nein|non)"
+    r"(?=\s*[,.!?;:]|\s*$)",
     _F,
 )
 _NA_OPENS29R = re.compile(r"(?:(?<=^)|(?<=[.!?]\s)|(?<=[.!?]))(na)(?=\s*[,.!;:]|\s*$)", _F)
 _NA_BETWEEN29R = re.compile(r",\s*na\s*,\s*(?=\S)", _F)
 # a sentence that is only a word saying 'no' ("Give Alice the cup. Nah."): never inert
 _NO_ALONE29R = re.compile(
-    r"^\s*(?:(?:oh|ah|um|er|erm|hmm)\s*,?\s*)?(?:na|nah|naw|nope|nae|nay|nein|non|no)\s*[.!]*\s*$",
+    r"^\s*(?:(?:oh|ah|um|er|erm|hmm)\s*,?\s*)?(?:na|nah|naw|nope|nuh-uh|uh-uh|nae|nay|nein|non|no)"
+    r"\s*[.!]*\s*$",
     _F,
 )
 

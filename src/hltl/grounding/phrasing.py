@@ -2410,7 +2410,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
         p = _past_dets(items, j + 1)
         if (
             j < len(items)
-            and _is(items[j], ",")
+            and _is(items[j], ",", "-")  # "the torch - not the drill - the hammer" (session 29)
             and p < len(items)
             and _objects(items[p])
             and _meant_after29r(items, (k, j, p), whole, out[:target], lexicon)
