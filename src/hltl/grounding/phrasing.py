@@ -1126,6 +1126,11 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if one_of is not None:  # "either of the two", "one of the three": one of that many
             refs = _the_objects(out, one_of, _words_of(items[k : k + 2]), lexicon)
             words = _words_of(items[k : k + 2])
+            if _restates_choice(out, refs):
+                # "a mug, either of the two": the same choice said again, not a second mug
+                out.pop()
+                k += 2
+                continue
             out.append(Item("ent", words.lower(), words, refs, quant="some", group=k))
             k += 2
             continue
@@ -1279,6 +1284,20 @@ def _one_of_the_count(items: list[Item], k: int) -> int | None:
     if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
         return None
     return count
+
+
+def _restates_choice(out: list[Item], refs: tuple[Ref, ...]) -> bool:
+    """Whether 'either of the two' (choosing among ``refs``) follows a comma after a mention
+    that already takes one of exactly those objects ('a mug, either of the two' with two
+    mugs): an apposition that says the same choice again, not a second object."""
+    if len(out) < 2 or not (out[-1].kind == "punct" and out[-1].text == ","):
+        return False
+    before = out[-2]
+    return (
+        _objects(before)
+        and before.quant == "some"
+        and {r.id for r in before.refs} == {r.id for r in refs}
+    )
 
 
 def _some_of(items: list[Item], k: int, lexicon: Lexicon) -> list[Item] | None:
