@@ -10,8 +10,11 @@ import pytest
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
+    NURSERY,
+    OFFICE,
     WARD,
     WORKSHOP,
     assert_reads,
@@ -164,3 +167,189 @@ def test_an_object_after_an_exclusion_is_refused(text: str, match: str) -> None:
 )
 def test_near_exclusions_read(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+# -- (2) blind27's kinds: corrections with a reason ------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the reason names the person the corrected words name again, 'so' before them
+        (
+            "The bottle goes to Bob, hang on, no, Alice is the thirsty one, so to Alice.",
+            "bottle>A",
+            CELL,
+        ),
+        # a cue opening a sentence, the reason closed by a semicolon
+        ("Give Alice the chips. Wait, no, she's fasting; the bottle instead.", "bottle>A", CELL),
+        ("Give Alice the chips, no, she's fasting; the bottle instead.", "bottle>A", CELL),
+        # a cleft naming the corrected object, its subject the one person named before
+        ("Pass Bob the chips, no, that's wrong, it's the bottle he asked for.", "bottle>B", CELL),
+        ("Pass Bob the chips, no, it's the bottle Bob wants.", "bottle>B", CELL),
+        ("Give Sam the red pen, no, it's the blue pen he wants.", "pen_blue>B", OFFICE),
+    ],
+)
+def test_a_correction_with_a_reason_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the reason names someone the corrected words do not
+        ("The bottle goes to Bob, hang on, no, Alice is the thirsty one, so to Carol.", CELL),
+        ("The bottle goes to Bob, hang on, no, Alice is the thirsty one, so the crisps.", CELL),
+        # 'so' after a reason about 'she': which person is unclear
+        ("The bottle goes to Bob, no, she's thirsty, so to Alice.", CELL),
+        # a reason that negates
+        ("Give Alice the chips. Wait, no, she's not hungry; the bottle instead.", CELL),
+        # the cleft's subject is not the person named before, or two were named
+        ("Give Mr Lee the jug, no, it's the pills she asked for.", WARD),
+        ("Pass Bob the chips, no, it's the bottle Alice wants.", CELL),
+        ("Pass Bob the chips and Carol the cup, no, it's the bottle he asked for.", CELL),
+    ],
+)
+def test_near_corrections_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- (2) choices, counts and sharing -------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Bob can take the bottle or the crisps, whichever comes to hand.",
+            "bottle>B | chips>B",
+            CELL,
+        ),
+        (
+            "Give Mia the tape or the gloves; pick whichever you can reach.",
+            "tape>A | gloves>A",
+            DEPOT,
+        ),
+        ("Mia only needs the tape.", "tape>A", DEPOT),
+        (
+            "Mia only needs one of them, the tape or the gloves; pick whichever you can reach.",
+            "tape>A | gloves>A",
+            DEPOT,
+        ),
+        (
+            "Give Ava any one toy, the teddy or a block, whichever.",
+            "teddy>C | block_red>C | block_green>C",
+            NURSERY,
+        ),
+        ("There's only one bottle, and Alice should have it.", "bottle>A", CELL),
+        (
+            "Something each for the two of them: Mia's to get the tape, Tom the scanner.",
+            "tape>A & scanner>B",
+            DEPOT,
+        ),
+        (
+            "Split the two mugs between Alice and Bob, one apiece.",
+            "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+            CELL,
+        ),
+        (
+            "One blanket for each of the two patients, whichever way round.",
+            "(blanket_blue>B & blanket_grey>C) | (blanket_grey>B & blanket_blue>C)",
+            WARD,
+        ),
+    ],
+)
+def test_choices_and_counts_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # how to choose, after no choice of objects
+        ("Give Bob the cup, whichever comes to hand.", CELL),
+        ("Give Bob or Carol the cup, whichever comes to hand.", CELL),
+        # 'them' after objects named before; a kind the list does not name
+        ("Give Mia the scanner. She needs one of them, the tape or the gloves.", DEPOT),
+        ("Give Ava any one block, the teddy or the wipes.", NURSERY),
+        # 'only one' where the scene has two
+        ("There's only one mug, and Alice should have it.", CELL),
+        # 'each' with one, or a count the list does not give
+        ("Something each for the two of them: Mia's to get the tape.", DEPOT),
+        ("Something each for the three of them: Mia gets the tape, Tom the scanner.", DEPOT),
+        # one thing split
+        ("Split the cup between Alice and Bob, one apiece.", CELL),
+    ],
+)
+def test_near_choices_and_counts_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_a_count_of_people_the_scene_lacks_is_refused() -> None:
+    # read before as the two patients, the count unheard
+    assert_refused(
+        "One blanket for each of the three patients.", WARD, match="the scene has 2 .*not 3"
+    )
+    assert_refused("A book for each of the three students.", CLASSROOM, match="not 3")
+
+
+# -- (2) negation and exclusion ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("None of it to Alice; the apple and the cup go to Bob.", "apple>B & cup>B", CELL),
+        ("Don't leave the bottle where it is; hand it to Alice.", "bottle>A", CELL),
+        (
+            "Apart from the bottle, give Alice whatever's there.",
+            "cup>A & chips>A & apple>A & mug_red>A & mug_blue>A",
+            CELL,
+        ),
+        (
+            "Bob is welcome to the lot, bar the apple and the bottle.",
+            "cup>B & chips>B & mug_red>B & mug_blue>B",
+            CELL,
+        ),
+        ("Bob is welcome to the apple.", "apple>B", CELL),
+        (
+            "Mia wants all the kit except the boxes: that's the scanner, the tape and the gloves.",
+            "scanner>A & tape>A & gloves>A",
+            DEPOT,
+        ),
+        ("The chips aren't for Alice; they're Bob's, so hand them over to Bob.", "chips>B", CELL),
+    ],
+)
+def test_negation_said_another_way_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the request after it gives the person said first, or places
+        ("None of it to Alice; the apple and the cup go to Alice.", CELL),
+        ("None of it to Alice; put the apple on the shelf.", CELL),
+        # the request after it moves something else
+        ("Don't leave the bottle where it is; hand the cup to Alice.", CELL),
+        # 'whatever's there' with nothing left out first
+        ("Give Alice whatever's there.", CELL),
+        # the list is not what 'all … except' leaves
+        ("Mia wants all the kit except the boxes: that's the scanner and the tape.", DEPOT),
+        # the request does not hand them to whose they are said to be
+        ("The chips aren't for Alice; they're Bob's, so hand them over to Carol.", CELL),
+        ("The chips aren't for Alice; they're Alice's, so hand them over to Alice.", CELL),
+    ],
+)
+def test_near_negations_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_not_the_one_with_a_clause_names_its_readings() -> None:
+    # 'but not' must be followed by the objects to leave out: which block is left out?
+    assert_refused(
+        "Give Grandad a block, but not the one Lily has been chewing.",
+        NURSERY,
+        match="block_green or block_red",
+    )
+    assert_reads("Give Grandad a block, but not the red one.", "block_green>B", NURSERY)

@@ -2395,6 +2395,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     continue
             break
         if not excluded:
+            _not_which29r(items, k, out)
             raise GroundingError(f"{it.text!r} must be followed by the objects to leave out")
         ids = {r.id for x in excluded for r in x.refs}
         start = max(
@@ -2439,6 +2440,25 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = p + 1
         k = j
     return out
+
+
+def _not_which29r(items: list[Item], k: int, out: list[Item]) -> None:
+    """Session 29 (12r): "Give Grandad a block, but not the one Lily has been chewing": 'the
+    one' and a clause the grammar cannot check leaves out one of the objects the last name
+    names, and which is not said: refused with them as its readings."""
+    j = _past_dets(items, k + 1)
+    if not (j < len(items) and items[j].text.lower() == "one" and j > k + 1):
+        return
+    named = next((x for x in reversed(out) if _objects(x)), None)
+    if named is None or len(named.refs) < 2:
+        return
+    end = next((n for n in range(j, len(items)) if _is(items[n], *_END)), len(items))
+    ids = sorted(r.id for r in named.refs)
+    kind = named.text.split(" ")[-1]
+    raise GroundingError(
+        f"{_words_of(items[k:end])!r} does not say which {kind} is left out: it could be "
+        f"{' or '.join(ids)}; name the one to leave out"
+    )
 
 
 def _meant_after29r(
