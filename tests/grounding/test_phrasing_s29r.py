@@ -353,3 +353,62 @@ def test_not_the_one_with_a_clause_names_its_readings() -> None:
         match="block_green or block_red",
     )
     assert_reads("Give Grandad a block, but not the red one.", "block_green>B", NURSERY)
+
+
+# -- (2) who acts, where things must end up, what a header or a cleft says -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("I don't mind which of your arms does it, give Bob the cup.", "cup>B", CELL),
+        ("The bottle needs to reach Alice.", "bottle>A", CELL),
+        (
+            "Kofi wants the pair of spanners tidied away: both onto the locker.",
+            "spanner_small@locker & spanner_large@locker",
+            WORKSHOP,
+        ),
+        (
+            "Bob wants the mugs for the office: both onto the shelf.",
+            "mug_red@shelf & mug_blue@shelf",
+            CELL,
+        ),
+        (
+            "The concierge wants two plates for room service: both of them onto the worktop, "
+            "please.",
+            "plate_white@counter & plate_blue@counter",
+            KITCHEN,
+        ),
+        (
+            "Three things for Bob to take to the dairy: the cup, the apple and the chips.",
+            "cup>B & apple>B & chips>B",
+            CELL,
+        ),
+        ("It's the cup Alice wants for the tasting, not the bottle.", "cup>A", CELL),
+        ("It's the cup Alice wants, not the bottle.", "cup>A", CELL),
+    ],
+)
+def test_headers_and_clefts_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("I don't mind which cup, give Bob one.", CELL),
+        # two mugs; a surface is not reached by a hand-over
+        ("The mug needs to reach Alice.", CELL),
+        ("The bottle needs to reach the shelf.", CELL),
+        # 'both' of one object; a purpose naming a person; a person for a surface
+        ("Kofi wants the hammer tidied away: both onto the locker.", WORKSHOP),
+        ("Bob wants the mugs for Carol: both onto the shelf.", CELL),
+        ("Bob wants the mugs for the office: both onto Carol.", CELL),
+        # where they are taken names a person
+        ("Three things for Bob to take to Carol: the cup, the apple and the chips.", CELL),
+        # the cleft's purpose names a person; its object is one of two
+        ("It's the cup Alice wants for Bob, not the bottle.", CELL),
+        ("It's the mug Alice wants, not the bottle.", CELL),
+    ],
+)
+def test_near_headers_and_clefts_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

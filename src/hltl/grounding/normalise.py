@@ -11038,6 +11038,112 @@ def _not_for29r(text: str, lexicon: Lexicon) -> str:
     return rest[:1].upper() + rest[1:] if said == want else text
 
 
+# "I don't mind which of your arms does it, …": which robot acts, said to the robots
+_WHICH_ARM29R = re.compile(
+    r"^(?:i|we) (?:don't|do not) (?:mind|care) which (?:of your arms|arm|robot|of the robots|of "
+    r"you|one of you)(?: (?:does it|does that|takes it|goes|handles it))?\s*[,;:.]\s*(?=\S)",
+    _F,
+)
+# "… the bottle needs to reach Person A": where it must end up
+_REACH29R = re.compile(
+    r"\b(?P<x>the [a-z ]+?) (?:needs|has|have|need) to (?:reach|get to|end up with|go to) "
+    r"(?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _which_arm29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): the speaker not minding which robot acts ("I don't mind which of your
+    arms does it, …") asks nothing, and is taken off; 'X needs to reach P' (X one object, P one
+    person) is 'X goes to P'."""
+    out = _WHICH_ARM29R.sub("", text)
+    m = _REACH29R.search(out)
+    if (
+        m is not None
+        and _only(m.group("x"), lexicon, "object")
+        and _only_person(m.group("p"), lexicon)
+    ):
+        out = f"{out[: m.start()]}{m.group('x')} goes to {m.group('p')}{m.group('end')}"
+    if out == text:
+        return text
+    return out[:1].upper() + out[1:]
+
+
+# "Kofi wants the pair of spanners tidied away: both onto the locker.", "The concierge wants two
+# plates for room service: both of them onto the worktop, please."
+_WANTS_PUT29R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like) (?P<x>(?:the |both |two |the two |"
+    r"the pair of |both the )[a-z ]+?)(?: (?:tidied|put|cleared|moved|packed|stowed|taken)"
+    r"(?: away| up| off)?| for (?P<why>[a-z' ]+?))?\s*:\s*(?:both|both of them|the pair|them|"
+    r"all|all of them|the lot) (?P<where>(?:up )?(?:onto|on|into|in) (?:the )?[a-z ]+?)"
+    r"(?:,? please)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_put29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'P wants X tidied away: both onto S' says what to do with X after a
+    colon: put X on S. P is one person of the scene or someone it does not name (who wants it
+    done, not who gets it); X names exactly two objects for 'both' / 'the pair' (as many as it
+    counts for 'all' / 'them'); a purpose ('for room service') names nothing; S is a surface."""
+    m = _WANTS_PUT29R.match(text)
+    if m is None:
+        return text
+    who = m.group("who")
+    if not (_only_person(who, lexicon) or _names_nothing(who, lexicon)):
+        return text
+    if m.group("why") and not _names_nothing(m.group("why"), lexicon):
+        return text
+    objs = _ids(m.group("x"), lexicon, "object")
+    said = m.group(0)[m.end("x") :].lower()
+    if len(objs) < 2 or (("both" in said or "pair" in said) and len(objs) != 2):
+        return text
+    where = re.sub(r"^(?:up )?(?:onto|on|into|in) (?:the )?", "", m.group("where"), flags=_F)
+    if not _surface_only(where, lexicon):
+        return text
+    return f"Put {m.group('x')} {m.group('where')}{m.group('end')}"
+
+
+# "Three things for Person B to take to the dairy: …": where they are taken, in the header
+_COUNT_FOR29R = re.compile(
+    r"^(?P<head>(?:one|two|three|four|five|six) (?:things?|items?) for [A-Za-z][\w ]*?) to "
+    r"(?:take|carry|bring|have|use)(?: (?:them |it )?(?:to|for|with|along|back|home|away)"
+    r"(?P<why>[a-z' ]*))?\s*:",
+    _F,
+)
+
+
+def _count_for29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'N things for P to take to the dairy: …' is 'N things for P: …' (the
+    session-10 count header) when what follows 'to take' names nothing in the scene."""
+    m = _COUNT_FOR29R.match(text)
+    if m is None or (m.group("why") and not _names_nothing(m.group("why"), lexicon)):
+        return text
+    return f"{m.group('head')}:{text[m.end() :]}"
+
+
+# "It's the cup Person A wants for the dye bath, not the bottle."
+_CLEFT_NOT29R = re.compile(
+    r"^it(?:'s| is) (?P<said>the [a-z ]+?) (?P<v>wants|needs|asked for|would like)(?: for "
+    r"(?P<why>[a-z' ]+?))?,\s*not (?P<y>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): "It's the X P wants (for <purpose>), not the Y" is 'P wants the X, not
+    the Y' (X and Y objects, P one person, the purpose naming nothing)."""
+    m = _CLEFT_NOT29R.match(text)
+    if m is None or (m.group("why") and not _names_nothing(m.group("why"), lexicon)):
+        return text
+    words = m.group("said").split(" ")
+    for n in (1, 2):
+        obj, who = " ".join(words[:-n]), " ".join(words[-n:])
+        if _only(obj, lexicon, "object") and _only_person(who, lexicon):
+            return f"{who} {m.group('v')} {obj}, not {m.group('y')}{m.group('end')}"
+    return text
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -11183,6 +11289,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_said29r,
     _all_kit29r,
     _not_for29r,
+    _which_arm29r,
+    _wants_put29r,
+    _count_for29r,
+    _cleft_not29r,
     _or_not28s,
     _disturb28s,
     _matters_which28s,
