@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -412,3 +414,46 @@ def test_headers_and_clefts_read(text: str, want: str, scene: Scene) -> None:
 )
 def test_near_headers_and_clefts_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- a correction that adds ('too') -------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # each read before as the bottle alone ('too' a filler), the chips taken back
+        "Give Alice the chips, no, the bottle too.",
+        "Give Alice the chips. No, the bottle too.",
+        "Give Alice the chips, no wait, the bottle too.",
+        "Give Alice the chips, sorry, the bottle too.",
+        "Give Alice the chips, no, the bottle as well.",
+        "Give Alice the chips, no, also the bottle.",
+        # read before as the chips to Bob alone
+        "Give Alice the chips, no, Bob too.",
+    ],
+)
+def test_a_correction_that_adds_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="replace what was said before, or add")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the chips, no, the bottle.", "bottle>A"),
+        ("Give Alice the chips, no, just the bottle.", "bottle>A"),
+        # 'too' of a new request after 'and', or of another sentence
+        ("Give Alice the chips, no, Carol, and the apple too.", "chips>C & apple>C"),
+        ("Give Alice the chips, oh and the bottle too.", "chips>A & bottle>A"),
+        ("Give Alice the chips, no, the bottle. Bob wants the apple too.", "bottle>A & apple>B"),
+    ],
+)
+def test_near_corrections_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+def test_too_saying_how_is_no_addition() -> None:
+    # "she's too big": the refusal is about the clause, not about adding
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction("Bib to Ava, oh no, she's too big for bibs, to Lily.", NURSERY)
+    assert "add to it" not in str(refused.value)

@@ -1698,6 +1698,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             )
         _not_after_an_exclusion(before, after, it)
         _not_a_list_for_a_list(before, after, it)
+        _adds_after_a_correction29r(after, it)
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
@@ -2440,6 +2441,29 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = p + 1
         k = j
     return out
+
+
+_ADDS29R = frozenset({"too", "as well", "also", "aswell", "besides"})
+
+
+def _adds_after_a_correction29r(after: list[Item], marker: Item) -> None:
+    """Session 29 (12r): "Give Alice the chips, no, the bottle too" read as the bottle alone
+    ('too' a filler): the cue takes the chips back, 'too' keeps them. What the cue's words add to
+    ('too', 'as well', 'also' in them, before any 'and' or the sentence's end) is refused with
+    both readings ("…, sorry, the bottle too" may add it, having forgotten it)."""
+    for n, x in enumerate(after):
+        if x.kind == "punct" and x.lemma in _END:
+            return
+        if _is(x, "and") or _is_verb_item(x):
+            return  # "…, no, Carol, and the apple too": the 'too' of a new request
+        last = n + 1 == len(after) or after[n + 1].kind == "punct"
+        if x.text.lower() in _ADDS29R and (last or x.text.lower() == "also"):
+            # ('too' closing what it adds; "she's too big" says how big)
+            said = _words_of([y for y in after if not (y.kind == "punct" and y.lemma in _END)])
+            raise GroundingError(
+                f"{marker.text!r} then {said!r}: does it replace what was said before, or add "
+                f"to it ({x.text!r})? say 'and …' to add, or '{marker.text}, just …' to replace"
+            )
 
 
 def _not_which29r(items: list[Item], k: int, out: list[Item]) -> None:
