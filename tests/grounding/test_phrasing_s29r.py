@@ -457,3 +457,51 @@ def test_too_saying_how_is_no_addition() -> None:
     with pytest.raises(GroundingError) as refused:
         parse_instruction("Bib to Ava, oh no, she's too big for bibs, to Lily.", NURSERY)
     assert "add to it" not in str(refused.value)
+
+
+# -- what an exclusion leaves out must be said -------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # each read before as leaving out both mugs (every other object to Bob)
+        ("Give Bob all but one of the mugs.", CELL),
+        ("Give Bob all but one mug.", CELL),
+        ("Give Bob everything but one of the mugs.", CELL),
+        ("Give Bob all except one of the mugs.", CELL),
+        ("Give Bob everything but a mug.", CELL),
+        ("Give Bob everything but the mug.", CELL),
+        ("Give Bob everything except the cup and the mug.", CELL),
+        ("Give Tom everything except the box.", DEPOT),
+    ],
+)
+def test_one_of_several_left_out_names_its_readings(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="does not say which one is left out: it could be")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
+        (
+            "Give Bob everything except the red mug.",
+            "cup>B & bottle>B & chips>B & apple>B & mug_blue>B",
+            CELL,
+        ),
+        ("Give Bob the mugs, not the red one.", "mug_blue>B", CELL),
+        ("Give Tom everything except the boxes.", "scanner>B & tape>B & gloves>B", DEPOT),
+    ],
+)
+def test_what_is_left_out_said_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+def test_a_correction_after_but_everything_is_refused_as_after_except() -> None:
+    # read before as everything but the apple (the correction taken to change what is left out)
+    assert_refused(
+        "Give Bob everything but the cup, no, the apple.", CELL, match="change what is left out"
+    )
+    assert_refused("Give Bob everything except the cup, no, the apple.", CELL)
+    # 'but' between requests: the correction changes the person, as before
+    assert_reads("Give Bob the cup but the apple to Carol, no, Alice.", "cup>B & apple>A", CELL)

@@ -1764,7 +1764,9 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
             f"{left_out.text!r}: what does it change? say the whole request again"
         )
     if m > 0 and (
-        _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
+        _is(before[m - 1], "except", "instead_of")
+        or before[m - 1].text.lower() in ("not", "than")
+        or _but_all29r(before, m - 1)
     ):
         # "… except the green one, no, …", "… instead of the cup, no, …", "… rather than the
         # cup, no, …", "… to Bob, not to Carol, no, …"
@@ -2398,6 +2400,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if not excluded:
             _not_which29r(items, k, out)
             raise GroundingError(f"{it.text!r} must be followed by the objects to leave out")
+        _left_out_unsaid29r(items[k:j], excluded)
         ids = {r.id for x in excluded for r in x.refs}
         start = max(
             (n + 1 for n, x in enumerate(out) if x.kind == "punct" and x.lemma in _END), default=0
@@ -2463,6 +2466,30 @@ def _adds_after_a_correction29r(after: list[Item], marker: Item) -> None:
             raise GroundingError(
                 f"{marker.text!r} then {said!r}: does it replace what was said before, or add "
                 f"to it ({x.text!r})? say 'and …' to add, or '{marker.text}, just …' to replace"
+            )
+
+
+def _but_all29r(items: list[Item], k: int) -> bool:
+    """Session 29 (12r): 'but' after 'everything' / 'all' at ``items[k]`` leaves out, as
+    'except' does ("Give Bob everything but the cup, no, the apple" had read the correction as
+    changing what is left out, where 'except' is refused)."""
+    if not (k > 0 and items[k].text.lower() == "but"):
+        return False
+    prev = items[k - 1]
+    return prev.quant == "all" or _is(prev, "q:everything")
+
+
+def _left_out_unsaid29r(said: list[Item], excluded: list[Item]) -> None:
+    """Session 29 (12r): "Give Bob everything but one of the mugs" / "all but one mug" / "…
+    but the mug" (two mugs) had left out both mugs: what is left out is one of several, and
+    which is not said (nor whether 'all' is of the mugs): refused with them as its readings."""
+    for x in excluded:
+        one = x.quant == "some" or (x.quant == "" and not any(r.plural for r in x.refs))
+        if one and len(x.refs) > 1:
+            ids = sorted(r.id for r in x.refs)
+            raise GroundingError(
+                f"{_words_of(said)!r} does not say which one is left out: it could be "
+                f"{' or '.join(ids)}; name the one to leave out"
             )
 
 
