@@ -505,3 +505,75 @@ def test_a_correction_after_but_everything_is_refused_as_after_except() -> None:
     assert_refused("Give Bob everything except the cup, no, the apple.", CELL)
     # 'but' between requests: the correction changes the person, as before
     assert_reads("Give Bob the cup but the apple to Carol, no, Alice.", "cup>B & apple>A", CELL)
+
+
+# -- 'not the other way round'; 'each' with one person ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # read before as the swap ('not' taken as the correction's 'no'): a wrong reading
+        ("Give Bob the cup and Carol the apple, not the other way round.", "cup>B & apple>C"),
+        ("Give Bob the cup and Carol the apple, not vice versa.", "cup>B & apple>C"),
+        ("Give Bob the cup and Carol the apple. Not the other way round!", "cup>B & apple>C"),
+        (
+            "Put the cup on the shelf and the apple on the table, not the other way round.",
+            "cup@shelf & apple@table",
+        ),
+        # the swap and the choice, as before
+        ("Give Bob the cup and Carol the apple, no, the other way round.", "apple>B & cup>C"),
+        (
+            "Give Bob the cup and Carol the apple, or the other way round.",
+            "(cup>B & apple>C) | (apple>B & cup>C)",
+        ),
+    ],
+)
+def test_not_the_other_way_round_keeps_the_request(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+def test_a_swap_cue_beside_not_is_refused() -> None:
+    assert_refused(
+        "Give Bob the cup and Carol the apple, no, not the other way round.",
+        CELL,
+        match="keep what was said, or swap it",
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # each read before as one mug for Bob, 'each' unheard
+        "Give Bob one mug each.",
+        "Give Bob a mug each.",
+        "Bob gets a mug each.",
+        "Give Bob the cup and a mug each.",
+    ],
+)
+def test_each_with_one_person_is_refused_in_the_grammar(text: str) -> None:
+    assert_refused(text, CELL, match="shares out among several people")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Give Bob and Carol a mug each.",
+            "(mug_red>B & mug_blue>C) | (mug_blue>B & mug_red>C)",
+            CELL,
+        ),
+        (
+            "Bob and Carol would each like a mug.",
+            "(mug_red>B & mug_blue>C) | (mug_blue>B & mug_red>C)",
+            CELL,
+        ),
+        (
+            "Give the students a book each.",
+            "(book_red>B & book_green>C) | (book_green>B & book_red>C)",
+            CLASSROOM,
+        ),
+    ],
+)
+def test_each_with_several_people_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)

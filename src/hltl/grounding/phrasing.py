@@ -1244,6 +1244,7 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 k += 1
                 continue
         if it.kind == "word" and it.text.lower() in ("each", "apiece"):
+            _each_of_one_person29r(items, k)
             k += 1  # "a mug each", "would each like": distribution is how shared mentions work
             continue
         if _something_given(items, k):  # "Give both people something": any object each
@@ -4135,6 +4136,8 @@ def _swaps(items: list[Item]) -> list[Item]:
         raise GroundingError(
             f"cannot tell what {items[at].text!r} swaps: say the whole request again"
         )
+    if _as_said29r(items[start:at]):
+        return head
     a, b = objects
     out = list(head)
     out[a], out[b] = head[b], head[a]
@@ -4143,6 +4146,51 @@ def _swaps(items: list[Item]) -> list[Item]:
         # "…, or the other way round", "…. Or vice versa.": either way, not a correction
         return [Item("word", "either", "either"), *head, Item("punct", ",", ","), said[0], *out]
     return out
+
+
+# words that may stand for several people in a sentence with 'each'
+_MANY_WORDS29R = frozenset(
+    {"them", "they", "both", "all", "everyone", "everybody", "us", "we", "you", "those", "these"}
+)
+
+
+def _each_of_one_person29r(items: list[Item], k: int) -> None:
+    """Session 29 (12r): 'each' / 'apiece' after an object shares it out among several people
+    ("Give Bob and Carol a mug each"); "Give Bob a mug each" names one, and had been read as one
+    mug for Bob, 'each' unheard: refused, saying who else is missing. Only where the sentence
+    names exactly one person and no word that may stand for several."""
+    start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+    end = next((n for n in range(k, len(items)) if _is(items[n], *_END)), len(items))
+    said = items[start:end]
+    people = {r.id for x in said if _humans(x) for r in x.refs}
+    several = any(x.text.lower() in _MANY_WORDS29R for x in said)
+    if (
+        len(people) != 1
+        or several
+        or any(x.kind == "ent" and len(x.refs) > 1 and _humans(x) for x in said)
+    ):
+        return
+    raise GroundingError(
+        f"{items[k].text!r} shares out among several people, and the sentence names one "
+        f"({_words_of([x for x in said if _humans(x)])}): name each person, or leave out "
+        f"{items[k].text!r}"
+    )
+
+
+def _as_said29r(between: list[Item]) -> bool:
+    """Session 29 (12r): "Give Bob the cup and Carol the apple, not the other way round" says
+    the request is meant as said; it had been read as 'no, the other way round', a swap. 'not'
+    (never 'no', a correction's cue) with no other cue before the swap word; with one ("…, no,
+    not the other way round") which is meant is unclear, and it is refused."""
+    said = [x for x in between if x.kind != "punct" and not _is(x, "filler")]
+    nots = [x for x in said if _is(x, "not") and x.text.lower() == "not"]
+    if nots and len(said) > 1:
+        # "…, no, not the other way round": a correction, or the request as said?
+        raise GroundingError(
+            f"{_words_of(said)!r} before the other way round: keep what was said, or swap it? "
+            "say the whole request again"
+        )
+    return bool(nots)
 
 
 def _sources(items: list[Item]) -> list[Item]:
