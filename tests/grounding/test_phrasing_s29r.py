@@ -491,6 +491,8 @@ def test_one_of_several_left_out_names_its_readings(text: str, scene: Scene) -> 
         ),
         ("Give Bob the mugs, not the red one.", "mug_blue>B", CELL),
         ("Give Tom everything except the boxes.", "scanner>B & tape>B & gloves>B", DEPOT),
+        # a contrast: no mug is left out of the cup, which mug does not matter
+        ("Give Bob the cup, not the mug.", "cup>B", CELL),
     ],
 )
 def test_what_is_left_out_said_reads(text: str, want: str, scene: Scene) -> None:

@@ -2401,7 +2401,6 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if not excluded:
             _not_which29r(items, k, out)
             raise GroundingError(f"{it.text!r} must be followed by the objects to leave out")
-        _left_out_unsaid29r(items[k:j], excluded)
         ids = {r.id for x in excluded for r in x.refs}
         start = max(
             (n + 1 for n, x in enumerate(out) if x.kind == "punct" and x.lemma in _END), default=0
@@ -2411,6 +2410,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             raise GroundingError(
                 f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
             )
+        _left_out_unsaid29r(items[k:j], excluded, out[target])
         named = {r.id for x in out[start:target] if _objects(x) for r in x.refs}
         if not ids <= {r.id for r in out[target].refs} and ids & named:
             # "the small box and the medium box on the belt, not the small box": another name
@@ -2480,13 +2480,16 @@ def _but_all29r(items: list[Item], k: int) -> bool:
     return prev.quant == "all" or _is(prev, "q:everything")
 
 
-def _left_out_unsaid29r(said: list[Item], excluded: list[Item]) -> None:
+def _left_out_unsaid29r(said: list[Item], excluded: list[Item], target: Item) -> None:
     """Session 29 (12r): "Give Bob everything but one of the mugs" / "all but one mug" / "…
     but the mug" (two mugs) had left out both mugs: what is left out is one of several, and
-    which is not said (nor whether 'all' is of the mugs): refused with them as its readings."""
+    which is not said (nor whether 'all' is of the mugs): refused with them as its readings.
+    Only where they are among what ``target`` names ("Give Bob the cup, not the mug" contrasts,
+    and leaves no mug out of the cup)."""
+    has = {r.id for r in target.refs}
     for x in excluded:
         one = x.quant == "some" or (x.quant == "" and not any(r.plural for r in x.refs))
-        if one and len(x.refs) > 1:
+        if one and len(x.refs) > 1 and {r.id for r in x.refs} <= has:
             ids = sorted(r.id for r in x.refs)
             raise GroundingError(
                 f"{_words_of(said)!r} does not say which one is left out: it could be "
