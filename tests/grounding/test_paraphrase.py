@@ -324,7 +324,6 @@ KNOWN_MISSES = frozenset(
         "Bob wants the cup. Sorry, my mistake, it's the apple he wants.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
-        "Give Ava the red block, oh silly me, she wants the green one.",
         "Person A gets the bottle, correction, Person A gets the chips, the bottle stays put.",
         "Hand the chips to Person A, whoops, wrong one, I meant Person B.",
         "Give Person B the apple and the cup, well, not the cup, just the apple.",
@@ -367,7 +366,6 @@ KNOWN_MISSES = frozenset(
         "Both of them, bottle and chips, go to Person A, she's got the picnic.",
         "Whichever of the two people is closer can have the bottle.",
         "All three of the boxes want to go on the conveyor, in whatever order suits you.",
-        "All three pens in the box, please, I'm clearing the desk.",
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
@@ -390,7 +388,6 @@ KNOWN_MISSES = frozenset(
         "the crisps r alice's, the bottle goes to bob",
         "shelf for the chips, bob for the bottle, ta",
         "Gardener here again, sorry, the globr wants moving onto the desk, please.",
-        "Person A's parched after the heat, run the botrle over to her.",
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
         "Would you mind awfully tidying the red pen away into the box?",
@@ -414,14 +411,12 @@ KNOWN_MISSES = frozenset(
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
-        "Person A's gasping after her run, she really needs that bottle.",
         "Person B wants the bottle and the chips both, he's off to watch the football.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
-        "Bob's thirsty from the ride, so take him over the bottle.",
         "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
@@ -434,7 +429,6 @@ KNOWN_MISSES = frozenset(
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Give Carol one of the mugs, she really doesn't care which.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
@@ -504,7 +498,6 @@ KNOWN_MISSES = frozenset(
         "breakfast.",
         'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
         'pallet before he goes.',
-        'Zoe wants the ruler and Noah needs the glue stick, they told me while I was mopping.',
         "Lily wants her teddy bear, she won't settle for the hymn practice without it.",
         'You see the red mug by the window? Take it across to Alice, would you.',
         'Alice was on about the crisps before the anthem, could you take them over to her?',
@@ -520,12 +513,8 @@ KNOWN_MISSES = frozenset(
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
-        'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
-        'tape measure out.',
         "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
         "see it.",
-        "Drill on the bench then hammer in the locker then torch to Jess and I'll give you a trim "
-        "after.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
@@ -534,9 +523,7 @@ KNOWN_MISSES = frozenset(
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
-        'All three pens go in the box, I need the desk for my pattern paper.',
         'Both plates onto the counter, Marco wants to plate up the goulash.',
-        "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
@@ -546,7 +533,6 @@ KNOWN_MISSES = frozenset(
         "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
         'Give Person A the chips, sorry, not chips, the cup, my mistake my friend.',
         'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
-        'Apple to Person A, no, sorry, to Person B, I make mistake.',
         'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         "Bottle to Person A, no, wait, yes, that's right, Person A, carry on.",
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
@@ -560,7 +546,6 @@ KNOWN_MISSES = frozenset(
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         'chios for Person B lah, she asked me just now',
-        'Put the stspler in the box, I need the desk clear for the cloth.',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
@@ -570,13 +555,10 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
         'much.',
-        "Please could you just put the green cup on the tray, then I'll get the next patient "
-        'through, thanks.',
         "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
         'grateful.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
-        'Carol would like to have the blue mug, and Bob also the apple, he told me before.',
         'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
@@ -628,14 +610,11 @@ KNOWN_MISSES = frozenset(
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         'Quick one before the school bell: bottle to Person B, please and thank you.',
-        "Person A has asked me twice now for the chips, she's starving after the tyre change.",
         "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
-        "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
-        'not bothered which.',
         'Wash-up time: both cups into the sink, green and white alike.',
         "Both spanners to Kofi, he can't find his set.",
         "The chips aren't for Person A, they're for Person B, she's the one who paid.",
@@ -649,15 +628,7 @@ KNOWN_MISSES = frozenset(
         'start off with crisps for alice and after that bob needs his bottle',
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
-        "Could the apple go on the table, I've got puppets all over the shelf?",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
-        "leaf stuck to every finger.",
-        "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
-        "only here to take bloods.",
-        "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
-        "back to re-covering this armchair.",
         "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",

@@ -8027,6 +8027,7 @@ def _while26(text: str, lexicon: Lexicon) -> str:
 # is refused ("give me the cup", "I need the cup", "I'd like it", "then I'll have it").
 _SPEAKER_OPEN = re.compile(
     r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now|look)\s+)*"
+    r"(?:(?:after that|afterwards|after this),?\s+)?"  # session 29 (12s): _speaker_plan29s
     r"(?:i(?:'m|'ve|'ll|'d)?|my (?:[a-z]+ ){1,2}(?:is|are|was|were|has|have|keeps?)|"
     r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me)\b",
     _F,
@@ -8070,10 +8071,58 @@ _SPEAKER_TIMES = re.compile(
 )
 
 
+# Session 29 (12s): the speaker's own next act, said with a verb of the grammar ("then I can get
+# the tape measure out", "and I'll give you a trim after", "then I'll get the next patient
+# through", "I'm only here to take bloods", "and after that I'm back to re-covering this
+# armchair"): the speaker is the verb's subject (or 'here to' says why they came), so the verb
+# asks the robots for nothing. The words after the verb up to the stretch's end must name nothing
+# in the scene (the stretch's rule) and hold no pronoun or count that could stand for what the
+# request names ('I'll take it', 'I can get the other one', 'I'll give him both'), and no 'me'
+# ('I'll get me the cup' asks); an 'after' / 'afterwards' / 'later' closing it orders only the
+# speaker's act. "after that" / "afterwards" opening such a stretch is when the speaker does it.
+_SPEAKER_DOES29S = re.compile(
+    r"\b(?:i(?:'ll|'d| will| would| can| could| must| shall|'m going to| am going to)?|"
+    r"(?:here|in|over|round) to) (?:just |then |quickly )?(?:give|get|take|bring|fetch|grab|put|"
+    r"move|carry|send|set|keep|leave|drop|pop|pass|hand)\b"
+    r"(?P<what>(?: (?!(?:it|them|that|this|those|these|one|ones|both|all|each|either|other|"
+    r"another|else|rest|me|him|her|us|first|next|last)\b)[a-z'-]+)+?)"
+    r"(?: (?:after|afterwards|later))?$",
+    _F,
+)
+_SPEAKER_AFTER29S = re.compile(
+    r"^(?:(?:and|so|then) )?(?:after that|afterwards|after this),? (?=i\b|i'm\b|i'll\b)", _F
+)
+
+
+# 'every' / 'each' before a word that is no name of the scene ("I've got gold leaf stuck to every
+# finger"): counts the speaker's own things, not the scene's (the stretch must still name
+# nothing); 'every one', 'each of them', 'every thing' are left held
+_SPEAKER_EVERY29S = re.compile(
+    r"\b(?:every|each) (?!(?:ones?|things?|items?|bits?|of|the|them|those|these|it|person|"
+    r"people|body|way)\b)[a-z]+\b",
+    _F,
+)
+# 'not … a thing' ("I can't touch a thing", "I didn't say a thing"): nothing, no object
+_NOT_A_THING29S = re.compile(r"(?:n't|\bnot) (?:[a-z]+ )?a (?:single )?thing\b", _F)
+
+
+def _speaker_plan29s(piece: str) -> str:
+    """``piece`` (a stretch of the speaker's) without the speaker's own next act said with a verb
+    of the grammar, and without 'after that' opening it (the rule above), nor 'every <word of no
+    name>'; as it was otherwise."""
+    piece = _SPEAKER_EVERY29S.sub("", _SPEAKER_AFTER29S.sub("", piece.strip()))
+    m = _SPEAKER_DOES29S.search(piece)
+    if m is None or not _SPEAKER_OPEN.match(piece):
+        return piece
+    return piece[: m.start()]
+
+
 def _held_but_times(piece: str) -> bool:
     """Whether ``piece`` holds a word of _SPEAKER_HELD outside the speaker's own times and places
-    (_SPEAKER_TIMES)."""
-    return bool(_SPEAKER_HELD.search(_SPEAKER_TIMES.sub(" ", piece)))
+    (_SPEAKER_TIMES) and the speaker's own next act (_speaker_plan29s)."""
+    return bool(
+        _SPEAKER_HELD.search(_speaker_plan29s(" ".join(_SPEAKER_TIMES.sub(" ", piece).split())))
+    )
 
 
 # what may open the sentence of such a stretch, taken off with it
@@ -8112,7 +8161,11 @@ def _speaker_stretch(
     their own things or a sentence that asks nothing), naming nothing in the scene and asking
     nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _held_but_times(piece) or not _names_nothing(piece, lexicon):
+    if (
+        not piece
+        or _held_but_times(piece)
+        or not _names_nothing(_NOT_A_THING29S.sub(" ", piece), lexicon)
+    ):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
@@ -8160,7 +8213,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
         # before the speaker to the mark
         cut = _rx(
             r"\s+(?=(?:and then|and|so|then|while|whilst|as|because|cos|since)\s+"
-            r"(?:i|i'm|i've|i'll|i'd|my)\b)"
+            r"(?:(?:after that|afterwards),?\s+)?(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
         remark = _speaker_stretch(tail, spoke, lexicon, right_after=after and not head)
@@ -8224,10 +8277,13 @@ _ASIDES22: tuple[tuple[str, str], ...] = (
     (r"\s*,\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\s*[.!]?\s*$)", ""),
     # "…, go on", "…, go on then": urging
     (r"\s*,\s*go on(?:,? then)?(?=\s*[.!]?\s*$)", ""),
-    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end
+    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end;
+    # session 29 (12s): "…, he told me before", "…, they told me while I was mopping" (when, and
+    # what the speaker was doing then)
     (
         r"\s*,\s*(?:he|she|they) (?:told me so|said so|told me|said as much)"
-        r"(?: (?:himself|herself|themselves|earlier|just now|this morning))?(?=\s*[.!]?\s*$)",
+        r"(?: (?:himself|herself|themselves|earlier|before|just now|this morning|yesterday))?"
+        r"(?:,? (?:while|when|as) i was [a-z]+ing(?: (?:up|out|round|about))?)?(?=\s*[.!]?\s*$)",
         "",
     ),
 )
@@ -10593,6 +10649,255 @@ def _described_list27(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 29 (12s): the speaker talking about themself, by kind ---------------------------------
+
+# The speaker owning a slip ('I make mistake', 'I made a mistake', "I've got that wrong", 'silly
+# me'): after the correction that mends it, closing the text ("Apple to Person A, no,
+# sorry, to Person B, I make mistake."), it says why the correction was made, and is taken off;
+# between a request and what replaces it ("Give Ava the red block, oh silly me, she wants the
+# green one.") it is the correction's cue, said as the grammar's ', no, '. Either way it must name
+# nothing, and the correction must then read as any other (the cue's rule).
+_SLIP29S = (
+    r"(?:i (?:make|made|'ve made|have made) (?:a |my )?mistake|"
+    r"i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me)"
+)
+_SLIP_LAST29S = re.compile(rf"\s*,\s*(?:(?:sorry|oops|whoops),?\s*)?{_SLIP29S}\s*[.!]*\s*$", _F)
+_SLIP_CUE29S = re.compile(rf"\s*,\s*(?:oh,?\s*)?{_SLIP29S}\s*,\s*", _F)
+
+
+def _slip_owned29s(text: str, lexicon: Lexicon) -> str:
+    """The speaker owning a slip (above): taken off after a correction, or said as its cue."""
+    last = _SLIP_LAST29S.search(text)
+    if last is not None:
+        head = text[: last.start()]
+        if _CUE_BEFORE29S.search(head) and _names(head, lexicon):
+            return head + "."
+        return text
+    cue = _SLIP_CUE29S.search(text)
+    if (
+        cue is not None
+        and _names(text[: cue.start()], lexicon)
+        and not _CUE_BEFORE29S.search(text[: cue.start()] + ",")  # the cue is one already
+        and text[cue.end() :].strip(" .!")
+    ):
+        return f"{text[: cue.start()]}, no, {text[cue.end() :]}"
+    return text
+
+
+# A gapped clause with 'also' / 'too' between its person and its object ("Carol would like the
+# blue mug, and Bob also the apple"): the verb is the clause's before it, and 'also' marks the
+# clause as one more, as ', and Bob the apple' does; 'also' there says nothing of the object (read
+# as 'the apple too', it gave the blue mug to Bob as well). The word before it must be one whole
+# name of a person of the scene, after ', and' / 'and'; an object after it ('and the cup also the
+# apple') or none ('and Bob also') is left.
+_GAPPED29S = re.compile(
+    r"(?P<head>,?\s+and\s+)(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
+    r"\s+(?:also|too)\s+(?=(?:the|a|an|his|her|their)\s+[a-z])",
+    _F,
+)
+
+
+def _gapped_also29s(text: str, lexicon: Lexicon) -> str:
+    """'…, and Bob also the apple': 'also' taken out of the gapped clause (above)."""
+    return _sub(
+        _GAPPED29S.pattern,
+        lambda m: (
+            f"{m.group('head')}{m.group('who')} "
+            if _only(m.group("who"), lexicon, "human")
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# 'his' / 'her' / 'their' right after a person's want ("… and then Bob wants his crisps"): the
+# possessive is the wanting person's (as session 11's 'once Bob has had his chips'), and says no
+# more of the object than 'the' when the words after it are one whole name of one object of the
+# scene; with two people named, the grammar had taken 'his' as a reference to be resolved. Two
+# objects of the name ('Bob wants his mug', two mugs) or a name that is not whole stay as said.
+_OWN_WANT29S = re.compile(
+    r"\b(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?P<verb>wants|needs|"
+    r"would like|'d like|is asking for|asked for|has asked for) (?:his|her|their) "
+    r"(?P<what>[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|and\b|$))",
+    _F,
+)
+
+
+def _own_want29s(text: str, lexicon: Lexicon) -> str:
+    """'Bob wants his crisps': 'the crisps' (above)."""
+    return _sub(
+        _OWN_WANT29S.pattern,
+        lambda m: (
+            f"{m.group('who')} {m.group('verb')} the {m.group('what')}"
+            if _only(m.group("who"), lexicon, "human") and _only(m.group("what"), lexicon, "object")
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# After a placement, the speaker saying what they are doing with another surface, or that they
+# need it ("All three pens in the box, please, I'm clearing the desk.", "…, I need the desk for
+# my pattern paper.", "…, I need to do the shelves.", "Could the apple go on the table, I've got
+# puppets all over the shelf?"): why the objects go where they go, asking nothing (a surface is
+# never handed over). Taken off when it closes the text, its verb is one of these, the surface it
+# names is not where the request puts anything, the request before it puts something on a
+# surface, and what else it says names nothing in the scene.
+_SURFACE_BUSY29S = re.compile(
+    r"\s*,\s*(?:(?:and|so|as|because|cos|since) )?(?:"
+    r"i(?:'m| am) (?:just |busy )?(?:clearing|cleaning|wiping|tidying|using|working on|doing|"
+    r"dusting|sorting|painting|polishing) (?P<a>(?:the|my) [a-z]+)|"
+    r"i need (?P<b>(?:the|my) [a-z]+)(?: (?:clear|free|empty))?"
+    r"(?: for (?:my |the |a |an |some )?[a-z]+(?: [a-z-]+){0,2})?|"
+    r"i need to (?:do|clean|wipe|clear|dust|tidy|use|sort|paint|polish) (?P<c>(?:the|my) [a-z]+)|"
+    r"i(?:'ve| have) got (?:[a-z]+ ){1,2}all over (?P<d>(?:the|my) [a-z]+))"
+    r"\s*[.!?]*\s*$",
+    _F,
+)
+
+
+def _surface_busy29s(text: str, lexicon: Lexicon) -> str:
+    """The speaker busy with, or needing, another surface after a placement (above): taken off."""
+    m = _SURFACE_BUSY29S.search(text)
+    if m is None:
+        return text
+    where = next(g for g in m.group("a", "b", "c", "d") if g)
+    head = text[: m.start()]
+    surface = _ids(where, lexicon)
+    targets = _ids(head, lexicon, "surface")
+    if (
+        len(surface) != 1
+        or _ids(where, lexicon, "surface") != surface
+        or not targets
+        or surface & targets
+        or _ids(m.group(0).replace(where, " "), lexicon)
+        or re.search(r"\b(?:me|my|i)\b", head, _F)
+    ):
+        return text
+    return head + ("?" if m.group(0).rstrip().endswith("?") else ".")
+
+
+# A surface said as a person's ('on the teacher's desk', "in Grandad's locker"): after 'on' /
+# 'onto' / 'in' / 'into', the possessive says whose it is, and the surface is the one the name
+# means alone; the person must be one whole name of a person of the scene (or 'the <role>' of
+# one), the surface one whole name of one surface. Two surfaces of the name, or a possessor who
+# is no one of the scene, are left (refused as before).
+_OWNED_SURFACE29S = re.compile(
+    r"\b(?P<on>on|onto|on to|in|into|on top of) (?P<who>(?:the )?(?:person [a-z]|"
+    r"(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s (?P<what>[a-z]+(?: [a-z]+)?)\b(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _owned_surface29s(text: str, lexicon: Lexicon) -> str:
+    """'on the teacher's desk': 'on the desk' (above)."""
+    return _sub(
+        _OWNED_SURFACE29S.pattern,
+        lambda m: (
+            f"{m.group('on')} the {m.group('what')}"
+            if _only(m.group("who"), lexicon, "human")
+            and _only(m.group("what"), lexicon, "surface")
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# 'not bothered', 'not fussed', "doesn't care" leaving a choice open ("Give Carol either of the
+# mugs, she's not fussed which", "…, green or white, I'm not bothered", "…, red or blue, not
+# bothered", "she really doesn't care which"): said as "<who> doesn't mind", the choice tail the
+# grammar reads (with 'which' / 'which of them' / 'what' after it, or alone after a choice), and
+# which leaves the request as it was where nothing is open ('Give Carol the red mug, I don't
+# mind'). Only as a clause of its own, between commas or closing the text.
+_NOT_FUSSED29S = re.compile(
+    r"(?P<lead>,\s*)(?:(?P<who>i|she|he|they)(?:'m|'s|'re| am| is| are) (?:really |honestly )?"
+    r"not (?:bothered|fussed|fussy|particular)|(?P<who2>i|she|he|they) (?:really |honestly )?"
+    r"(?:don't|doesn't|do not|does not) care|not (?:bothered|fussed))"
+    r"(?P<tail>(?: (?:which|what)(?: (?:one|of them|of the two))?)?)(?=\s*(?:[.!,;]|$))",
+    _F,
+)
+
+
+def _not_fussed29s(text: str, _lexicon: Lexicon) -> str:
+    """'she's not fussed which': "she doesn't mind which" (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        who = (m.group("who") or m.group("who2") or "i").lower()
+        verb = "don't" if who in ("i", "they") else "doesn't"
+        return f"{m.group('lead')}{'I' if who == 'i' else who} {verb} mind{m.group('tail')}"
+
+    return _sub(_NOT_FUSSED29S.pattern, said, text)
+
+
+# What brought a person's state on ("Person A's parched after the heat", "Bob's thirsty from the
+# ride", "she's starving after the tyre change", "Person A's gasping after her run"): the cause,
+# after 'after' / 'from' following a word of need or tiredness, is taken off (the state alone is
+# the remark the grammar already reads: "Person A's parched, run the bottle over to her."). The
+# cause must name nothing in the scene and hold no pronoun, count or verb that could say what
+# happens to the scene's objects ('thirsty after that', 'hungry after she gets the chips',
+# 'hungry after the apple' stay as said).
+_STATE_CAUSE29S = re.compile(
+    r"(?P<state>(?:'s|'re|\bis|\bare|\bwas|\bwere) (?:really |so |very |absolutely |proper |"
+    r"well |just )?(?:thirsty|hungry|parched|gasping|peckish|starving|famished|ravenous|cold|"
+    r"freezing|frozen|tired|knackered|shattered|exhausted|worn out|sore|sticky|filthy|soaked|"
+    r"drenched|dry|boiling|roasting|sweaty|dusty)) (?P<cause>(?:after|from) [a-z' -]+?)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_CAUSE_HELD29S = re.compile(
+    r"\b(?:it|them|that|this|those|these|one|ones|both|all|each|give|gives|gave|gets|got|get|"
+    r"has|had|have|hand|handed|bring|brought|put|want|wants|need|needs|he|she|they|i|you|giving|"
+    r"getting|handing|bringing|putting|having)\b|\d",
+    _F,
+)
+
+
+def _state_cause29s(text: str, lexicon: Lexicon) -> str:
+    """'Person A's parched after the heat': "Person A's parched" (above)."""
+    return _sub(
+        _STATE_CAUSE29S.pattern,
+        lambda m: (
+            m.group("state")
+            if not _CAUSE_HELD29S.search(m.group("cause"))
+            and _names_nothing(m.group("cause"), lexicon)
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# A person who has asked the speaker for something ("Person A has asked me twice now for the
+# chips"): the one asked is not who gets it ('ask <someone> for X': the asker wants X), so 'me'
+# and how often are taken out, leaving '<person> has asked for', which the grammar reads as a
+# want. The asker must be one whole name of a person of the scene, first in its clause.
+_ASKED_ME29S = re.compile(
+    r"(?P<who>(?:^|(?<=[.;!?,])\s*)(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) "
+    r"(?P<verb>has asked|'s asked|asked|has been asking|'s been asking|keeps asking) me"
+    r"(?: (?:twice|three times|again|already|twice now|again now|all morning|all day|nicely))?"
+    r" for\b",
+    _F,
+)
+
+
+def _asked_me29s(text: str, lexicon: Lexicon) -> str:
+    """'Person A has asked me twice now for the chips': 'Person A has asked for the chips'."""
+    return _sub(
+        _ASKED_ME29S.pattern,
+        lambda m: (
+            f"{m.group('who')} has asked for"
+            if _only(m.group("who").strip(), lexicon, "human")
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# a correction before the slip owned at the end
+_CUE_BEFORE29S = re.compile(
+    rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -10769,6 +11074,14 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _handed28,
     _since28,
     _doing25,
+    _slip_owned29s,
+    _gapped_also29s,
+    _own_want29s,
+    _surface_busy29s,
+    _owned_surface29s,
+    _not_fussed29s,
+    _state_cause29s,
+    _asked_me29s,
     _speaker_remarks,
     _asides22,
     _one_person22,

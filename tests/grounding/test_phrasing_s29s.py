@@ -1,0 +1,250 @@
+"""Session-29 phrasings of issue 12 (engineer 12s): the speaker talking about themself in ways
+that ask nothing — their own next act said with a verb of the grammar, owning a slip, what they
+are doing with another surface, being told or asked —, and the kinds met with them: a gapped
+'and Bob also the apple', 'Bob wants his crisps' beside another person, 'on the teacher's desk',
+'not fussed which', 'parched after the heat'. Each rule with the near forms it must read and the
+near forms it must refuse or read differently (docs/grounding.md, "Session 29 (engineer 12s)")."""
+
+from __future__ import annotations
+
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
+
+FOUR = load_scene(ROOT / "examples/scenes/4-2.yaml")  # bottle, chips, cup, apple; Person A, B
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips; Alice, Bob
+
+# -- the speaker's own next act (normalise.py _speaker_plan29s) ---------------------------------
+
+
+def test_speaker_next_act_with_a_verb_of_the_grammar() -> None:
+    assert_reads(
+        "Stapler to Sam and the black pen into the box and then I can get the tape measure out.",
+        "stapler>B & pen_black@box",
+        OFFICE,
+    )
+    assert_reads(
+        "Drill on the bench then torch to Jess and I'll give you a trim after.",
+        "drill@bench ; torch>B",
+        WORKSHOP,
+    )
+    assert_reads(
+        "Could you put the bottle on the shelf, then I'll get the next patient through, thanks.",
+        "bottle@shelf",
+        CELL,
+    )
+    assert_reads(
+        "Would you give Carol the cup? Thank you, I'm only here to take bloods.", "cup>C", CELL
+    )
+    assert_reads(
+        "First Alice gets the bottle and then Bob gets the chips and after that I'm back to "
+        "re-covering this armchair.",
+        "bottle>A ; chips>B",
+        TWO,
+    )
+
+
+def test_speaker_next_act_near_forms_stay_refused() -> None:
+    # the speaker's act on what the request names, or a pronoun for it: not taken off
+    assert_refused("Give Bob the cup and then I'll get the bottle.", CELL)
+    assert_refused("Give Bob the cup and then I'll take it.", CELL)
+    assert_refused("Give Bob the cup and then I can get the other one.", CELL)
+    assert_refused("Give Bob the cup and then I'll give him both.", CELL)
+    # the speaker as the recipient, or wanting: a request for the speaker
+    assert_refused("Give Bob the cup and then I'll have the bottle after.", CELL)
+    assert_refused("Give Bob the cup and after that I need the tape measure.", CELL)
+    # a request to the hearer, not the speaker's act
+    assert_refused("Give Bob the cup and then get the tape measure out.", CELL)
+
+
+def test_every_and_not_a_thing_in_a_speaker_remark() -> None:
+    assert_reads(
+        "Could Carol have the red mug? I'd do it myself but I've got gold leaf stuck to every "
+        "finger.",
+        "mug_red>C",
+        CELL,
+    )
+    assert_reads(
+        "Bottle to Person A, please, I can't touch a thing with ink on these nibs.",
+        "bottle>A",
+        FOUR,
+    )
+    # 'every one', 'every thing', 'each of them', and 'a thing' without a negation stay held
+    assert_refused("Could Carol have the red mug? I'd do it but I've got every one.", CELL)
+    assert_refused("Could Carol have the red mug? I'd do each of them myself.", CELL)
+    assert_refused("Bottle to Person A, I can touch a thing with ink.", FOUR)
+
+
+# -- the speaker owning a slip (normalise.py _slip_owned29s) ------------------------------------
+
+
+def test_slip_owned_after_a_correction_or_as_its_cue() -> None:
+    assert_reads("Apple to Person A, no, sorry, to Person B, I make mistake.", "apple>B", FOUR)
+    assert_reads("Apple to Person A, no, to Person B, I made a mistake.", "apple>B", FOUR)
+    assert_reads(
+        "Give Ava the red block, oh silly me, she wants the green one.", "block_green>C", NURSERY
+    )
+    assert_reads("Give Ava the red block, silly me, the green one.", "block_green>C", NURSERY)
+    # a cue already before it: the earlier rules' reading stands
+    assert_reads("The chips, no, the bottle, silly me, to Person A.", "bottle>A", FOUR)
+
+
+def test_slip_owned_near_forms() -> None:
+    # no correction before the closing slip: what would it be owning?
+    assert_refused("Apple to Person A, to Person B, I make mistake.", FOUR)
+    # more after the slip than its correction: refused as the cue rule refuses it
+    assert_refused("Give Ava the red block, silly me, and the teddy to Lily.", NURSERY)
+    # a slip with nothing before it, or closing a request with no correction
+    assert_refused("Oh silly me, give Ava the red block.", NURSERY)
+    assert_refused("Give Ava the red block, silly me.", NURSERY)
+
+
+# -- told and asked (normalise.py _ASIDES22, _asked_me29s) --------------------------------------
+
+
+def test_told_me_with_when_and_asked_me_for() -> None:
+    assert_reads(
+        "Zoe wants the ruler and Noah needs the glue stick, they told me while I was mopping.",
+        "ruler>C & glue>B",
+        CLASSROOM,
+    )
+    assert_reads("Bob wants the apple, he told me before.", "apple>B", CELL)
+    assert_reads("Person A has asked me twice now for the chips.", "chips>A", FOUR)
+    assert_reads("Person A keeps asking me for the chips.", "chips>A", FOUR)
+
+
+def test_told_and_asked_near_forms() -> None:
+    # the speaker's 'while' clause naming the scene, or more after 'told me': not an aside
+    assert_refused("Zoe wants the ruler, they told me while I was mopping the desk.", CLASSROOM)
+    assert_refused("Bob wants the apple, he told me before I left.", CELL)
+    # 'me' asked, then another person gets it: the conflict stays refused
+    assert_refused("Person A has asked me for the chips, give them to Person B.", FOUR)
+    # the speaker asked for something: 'me' is the asker's object, no scene person asks
+    assert_refused("Someone has asked me for the chips.", FOUR)
+
+
+# -- a gapped clause with 'also' (normalise.py _gapped_also29s) ---------------------------------
+
+
+def test_gapped_also() -> None:
+    assert_reads(
+        "Carol would like the blue mug, and Bob also the apple, he told me before.",
+        "mug_blue>C & apple>B",
+        CELL,
+    )
+    assert_reads("Carol would like the blue mug, and Bob also the apple.", "mug_blue>C & apple>B")
+    # without the rule 'also' is 'the apple too', and the blue mug went to Bob as well: refused
+    assert_refused("Carol would like the blue mug, and Bob also.", CELL)
+    # an object before 'also' is no gapped clause's person: read as before (all to Carol)
+    assert_reads(
+        "Give Carol the blue mug, and the cup also the apple.", "mug_blue>C & cup>C & apple>C"
+    )
+
+
+# -- 'his' / 'her' after a person's want (normalise.py _own_want29s) ----------------------------
+
+
+def test_own_want_possessive() -> None:
+    assert_reads(
+        "First Alice gets her bottle and then Bob wants his crisps.",
+        "bottle>A ; chips>B",
+        TWO,
+    )
+    assert_reads("Alice wants the cup and Bob wants his apple.", "cup>A & apple>B", CELL)
+    # two mugs: 'his mug' may pick one; left to the grammar, which refuses
+    assert_refused("Alice wants the cup and Bob wants his mug.", CELL)
+
+
+# -- the speaker busy with another surface (normalise.py _surface_busy29s) ----------------------
+
+
+def test_surface_busy_after_a_placement() -> None:
+    three_pens = "pen_black@box & pen_blue@box & pen_red@box"
+    assert_reads("All three pens in the box, please, I'm clearing the desk.", three_pens, OFFICE)
+    assert_reads(
+        "All three pens go in the box, I need the desk for my pattern paper.", three_pens, OFFICE
+    )
+    assert_reads(
+        "Put the stapler in the box, I need the desk clear for the cloth.", "stapler@box", OFFICE
+    )
+    assert_reads(
+        "Both books on the desk, I need to do the shelves.",
+        "book_red@desk & book_green@desk",
+        CLASSROOM,
+    )
+    assert_reads(
+        "Could the apple go on the table, I've got puppets all over the shelf?", "apple@table", CELL
+    )
+
+
+def test_surface_busy_near_forms() -> None:
+    # the surface the request uses: contradictory, refused
+    assert_refused("All three pens in the box, please, I'm clearing the box.", OFFICE)
+    # no placement before it: 'I need the desk' is the speaker's want
+    assert_refused("Give Sam the stapler, I need the desk.", OFFICE)
+    # an object in the remark: it may ask for it
+    assert_refused("Put the stapler in the box, I need the desk for the red pen.", OFFICE)
+    # another verb ('I think the shelf is better'): a correction, not a reason
+    assert_refused("Could the apple go on the table, I think the shelf is better?", CELL)
+
+
+# -- a person's surface (normalise.py _owned_surface29s) ----------------------------------------
+
+
+def test_owned_surface() -> None:
+    assert_reads(
+        "Both books on the teacher's desk, I need to do the shelves.",
+        "book_red@desk & book_green@desk",
+        CLASSROOM,
+    )
+    assert_reads("Put the globe on Zoe's desk.", "globe@desk", CLASSROOM)
+    # 'the student' is two people, 'the caretaker' no one: left, refused
+    assert_refused("Put the globe on the student's desk.", CLASSROOM)
+    assert_refused("Put the globe on the caretaker's desk.", CLASSROOM)
+
+
+# -- 'not fussed which' (normalise.py _not_fussed29s) -------------------------------------------
+
+
+def test_not_fussed_which() -> None:
+    either = "mug_red>C | mug_blue>C"
+    assert_reads("Give Carol one of the mugs, she really doesn't care which.", either)
+    assert_reads("Give Carol either of the mugs, she's not fussed which.", either)
+    assert_reads("One of the mugs for Carol, red or blue, not bothered.", either)
+    assert_reads("One of the mugs for Carol, red or blue, I'm not fussy.", either)
+    # nothing open: the request as said
+    assert_reads("Give Carol the red mug, she's not fussed.", "mug_red>C")
+    # 'not fussed' with more in its clause ('not fussed about the cup') is a negation: refused
+    assert_refused("Give Carol one of the mugs, she's not fussed about the cup.", CELL)
+
+
+# -- what brought a state on (normalise.py _state_cause29s) -------------------------------------
+
+
+def test_state_cause_taken_off() -> None:
+    assert_reads("Person A's parched after the heat, run the bottle over to her.", "bottle>A", FOUR)
+    assert_reads("Bob's thirsty from the ride, so take him over the bottle.", "bottle>B", TWO)
+    assert_reads(
+        "Person A's gasping after her run, she really needs that bottle.", "bottle>A", FOUR
+    )
+    assert_reads(
+        "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
+        "not bothered which.",
+        "apple>A | chips>A",
+        FOUR,
+    )
+
+
+def test_state_cause_near_forms() -> None:
+    # a cause naming the scene, or a pronoun or verb that could be about its objects: left
+    assert_refused("Person A's hungry after the apple, give her the chips.", FOUR)
+    assert_refused("Person A's thirsty after that, give her the bottle.", FOUR)
+    assert_refused("Person A's thirsty after she gets the chips, give her the bottle.", FOUR)
