@@ -11,9 +11,12 @@ from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
+    WARD,
     WORKSHOP,
     assert_reads,
     assert_refused,
@@ -248,3 +251,71 @@ def test_state_cause_near_forms() -> None:
     assert_refused("Person A's hungry after the apple, give her the chips.", FOUR)
     assert_refused("Person A's thirsty after that, give her the bottle.", FOUR)
     assert_refused("Person A's thirsty after she gets the chips, give her the bottle.", FOUR)
+
+
+# -- the kind's objects listed by colour or size (normalise.py _kind_adjectives29s) --------------
+
+
+def test_kind_listed_by_adjectives() -> None:
+    assert_reads("Both mugs, red and blue, up on the shelf.", "mug_red@shelf & mug_blue@shelf")
+    assert_reads("Give Alice a mug, red or blue.", "mug_red>A | mug_blue>A")
+    assert_reads(
+        "Load the three boxes onto the belt, small, medium and large.",
+        "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+        DEPOT,
+    )
+    assert_reads(
+        "Hand Jess a spanner, big or small, she's only tightening a bolt.",
+        "spanner_small>B | spanner_large>B",
+        WORKSHOP,
+    )
+    assert_reads(
+        "Both cups, green and white, onto the tray.", "cup_green@tray & cup_white@tray", LAB
+    )
+
+
+def test_kind_listed_near_forms() -> None:
+    # two of three after 'the three boxes', or after 'the boxes': which is meant is unclear
+    assert_refused("Load the three boxes onto the belt, small and large.", DEPOT)
+    assert_refused("Load the boxes onto the belt, small and large.", DEPOT)
+    # a choice after a plural, a list after one object, a choice of two of three
+    assert_refused("Give Alice both mugs, red or blue.")
+    assert_refused("Give Alice the red mug, red and blue.")
+    assert_refused("Load a box onto the belt, small or large.", DEPOT)
+    # other objects in the clause: the list could be about them
+    assert_refused("Give Alice the cup and both mugs, red and blue.")
+
+
+# -- corrections: 'wrong one', 'I meant', 'nope', a slip after the cue, "it's Person B's" -------
+
+
+def test_correction_cue_forms() -> None:
+    assert_reads(
+        "Hand the chips to Person A, whoops, wrong one, I meant Person B.", "chips>B", FOUR
+    )
+    assert_reads("Chips for Person A, oops, wrong one, Person B.", "chips>B", FOUR)
+    assert_reads("Chips for Person A, wrong one, Person B.", "chips>B", FOUR)
+    assert_reads("Hand the chips to Person A, whoops, I meant Person B.", "chips>B", FOUR)
+    assert_reads("Spoon to Omar, nope, to Dana, she's stirring the samples.", "spoon>A", LAB)
+    assert_reads(
+        "Cup over to Person A... nope, I've read the ticket wrong, it's Person B's.", "cup>B", FOUR
+    )
+    assert_reads("Cup over to Person A, no, it's Person B's.", "cup>B", FOUR)
+    assert_reads(
+        "Magazine to Mr Lee, oh I've got that wrong, it was Mrs Khan who asked for it.",
+        "magazine>C",
+        WARD,
+    )
+
+
+def test_correction_cue_near_forms() -> None:
+    # 'wrong way round' swaps; 'wrong one' with nothing after it corrects to nothing
+    assert_refused("Chips for Person A, oops, wrong way round, Person B.", FOUR)
+    assert_refused("Chips for Person A, oops, wrong one.", FOUR)
+    # 'nope' opening the text answers something: not a correction
+    assert_refused("Nope, cup to Person A.", FOUR)
+    # "it's Person B's" without a correction before it; a cleft naming no one of the scene
+    assert_refused("Cup over to Person A, it's Person B's.", FOUR)
+    assert_refused("Magazine to Mr Lee, no, it was the doctor who asked for it.", WARD)
+    # 'no' then 'body': 'nobody' is no cue followed by 'body'
+    assert_refused("Hand the chips to Person A, whoops, nobody.", FOUR)

@@ -6804,8 +6804,8 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
 _CUE19 = (
     # session 25: 'ah no', 'eh sorry', 'sorry, wrong'
     r"(?:(?:no,? |(?:eh|ah),? no,? |(?:oh|eh|ah),? )?(?:sorry|so sorry)(?:,? (?:no|wrong))?"
-    r"(?:,? i mean)?|whoops|oops|"
-    r"(?:no,? )?my (?:mistake|bad)|pardon me|i mean|i misspeak|i misspoke|let me rephrase|"
+    r"(?:,? i meant?)?|whoops|oops|"  # session 29 (12s): 'I meant' whole, not 'I mean' + 't'
+    r"(?:no,? )?my (?:mistake|bad)|pardon me|i meant?|i misspeak|i misspoke|let me rephrase|"
     r"(?:or )?rather|(?:no,? )?(?:strike|scratch|belay|revert|cancel) that(?: order)?|"
     r"(?:wait|no wait|no),? (?:revert|scratch|strike|cancel) that|correction|"
     r"no,? (?:wait|hold on|hang on)|(?:eh|ah),? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)"
@@ -8501,7 +8501,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
             # "… and then, sorry, the chips to Person A": a pause after a conjunction
             return f"{before} {after}"
-        after = _sub(r"^(?:no|sorry|i misspeak|i mean),?\s*", "", after)
+        after = _sub(r"^(?:no|sorry|i misspeak|i meant?)\b,?\s*", "", after)  # (29s: 'I meant')
         if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
             # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
             return f"{before} {after}"
@@ -10659,8 +10659,11 @@ def _described_list27(text: str, lexicon: Lexicon) -> str:
 # nothing, and the correction must then read as any other (the cue's rule).
 _SLIP29S = (
     r"(?:i (?:make|made|'ve made|have made) (?:a |my )?mistake|"
-    r"i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me)"
+    r"i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me|"
+    r"i(?:'ve| have)? (?:read|heard|got|misread|misheard) (?:the|that|it|my) (?:[a-z]+ )?wrong)"
 )
+# a cue right before the slip: the slip is said of it ("…, nope, I've read the ticket wrong, …")
+_CUE_LAST29S = re.compile(r",\s*(?:no|nope|nah|sorry|oops|whoops|oh no|no sorry)\s*$", _F)
 _SLIP_LAST29S = re.compile(rf"\s*,\s*(?:(?:sorry|oops|whoops),?\s*)?{_SLIP29S}\s*[.!]*\s*$", _F)
 _SLIP_CUE29S = re.compile(rf"\s*,\s*(?:oh,?\s*)?{_SLIP29S}\s*,\s*", _F)
 
@@ -10675,13 +10678,47 @@ def _slip_owned29s(text: str, lexicon: Lexicon) -> str:
         return text
     cue = _SLIP_CUE29S.search(text)
     if (
-        cue is not None
-        and _names(text[: cue.start()], lexicon)
-        and not _CUE_BEFORE29S.search(text[: cue.start()] + ",")  # the cue is one already
-        and text[cue.end() :].strip(" .!")
+        cue is None
+        or not _names(text[: cue.start()], lexicon)
+        or not text[cue.end() :].strip(" .!")
     ):
+        return text
+    if _CUE_LAST29S.search(text[: cue.start()]):
+        return f"{text[: cue.start()]}, {text[cue.end() :]}"  # the cue said just before it
+    if not _CUE_BEFORE29S.search(text[: cue.start()] + ","):  # else the cue is one already
         return f"{text[: cue.start()]}, no, {text[cue.end() :]}"
     return text
+
+
+# 'nope' / 'nah' between what is corrected and the correction ("Spoon to Omar, nope, to Dana",
+# "Cup over to Person A... nope, …"): the grammar's 'no'. Not opening the text (an answer).
+_NOPE29S = re.compile(r"(?<=[a-z])\s*(?:,|\.\.\.|…)\s*(?:nope|nah)\s*,\s*(?=[a-z])", _F)
+
+
+def _nope29s(text: str, _lexicon: Lexicon) -> str:
+    """'…, nope, …': ', no, ' (above)."""
+    return _sub(_NOPE29S.pattern, ", no, ", text)
+
+
+# "…, no, it's Person B's" closing a correction of whom a delivery goes to: the object is that
+# person's, 'it's for Person B' (the person one whole name of the scene)
+_ITS_HIS29S = rf"(?P<cue>,\s*no,\s*)it(?:'s| is| was) (?P<who>{_PERSON28S})'s\s*(?P<end>[.!]?)\s*$"
+
+
+# "…, no, it was Mrs Khan who asked for it": the cleft after the cue, as session 11's "It's Carol
+# who needs …" opening a text: 'Mrs Khan asked for it'
+_CLEFT_AFTER_CUE29S = (
+    rf"(?P<cue>,\s*no,\s*)it(?:'s| is| was) (?P<who>{_PERSON28S}) (?:who|that) (?=[a-z])"
+)
+
+
+def _its_persons29s(text: str, lexicon: Lexicon) -> str:
+    """ "…, no, it's Person B's": "…, no, it's for Person B"; "…, no, it was Mrs Khan who asked
+    for it": "…, no, Mrs Khan asked for it" (above)."""
+    text = _for_person29s(
+        _ITS_HIS29S, text, lexicon, lambda m: f"{m['cue']}it's for {m['who']}{m['end']}"
+    )
+    return _for_person29s(_CLEFT_AFTER_CUE29S, text, lexicon, lambda m: f"{m['cue']}{m['who']} ")
 
 
 # A gapped clause with 'also' / 'too' between its person and its object ("Carol would like the
@@ -10690,24 +10727,35 @@ def _slip_owned29s(text: str, lexicon: Lexicon) -> str:
 # as 'the apple too', it gave the blue mug to Bob as well). The word before it must be one whole
 # name of a person of the scene, after ', and' / 'and'; an object after it ('and the cup also the
 # apple') or none ('and Bob also') is left.
-_GAPPED29S = re.compile(
-    r"(?P<head>,?\s+and\s+)(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
-    r"\s+(?:also|too)\s+(?=(?:the|a|an|his|her|their)\s+[a-z])",
-    _F,
+_GAPPED29S = (
+    rf"(?P<head>,?\s+and\s+)(?P<who>{_PERSON28S})\s+(?:also|too)\s+"
+    r"(?=(?:the|a|an|his|her|their)\s+[a-z])"
 )
+
+
+def _for_person29s(
+    pattern: str,
+    text: str,
+    lexicon: Lexicon,
+    said: Callable[[re.Match[str]], str],
+    what: str = "object",
+) -> str:
+    """``text`` with each match of ``pattern`` whose group 'who' is one whole name of a person of
+    the scene said as ``said`` gives (and, where ``pattern`` has a group 'what', that is one
+    whole name of one thing of kind ``what``); other matches as they were."""
+
+    def one(m: re.Match[str]) -> str:
+        named = _only(m.group("who").strip(), lexicon, "human")
+        if named and "what" in m.groupdict():
+            named = _only(m.group("what"), lexicon, what)
+        return said(m) if named else m.group(0)
+
+    return _sub(pattern, one, text)
 
 
 def _gapped_also29s(text: str, lexicon: Lexicon) -> str:
     """'…, and Bob also the apple': 'also' taken out of the gapped clause (above)."""
-    return _sub(
-        _GAPPED29S.pattern,
-        lambda m: (
-            f"{m.group('head')}{m.group('who')} "
-            if _only(m.group("who"), lexicon, "human")
-            else m.group(0)
-        ),
-        text,
-    )
+    return _for_person29s(_GAPPED29S, text, lexicon, lambda m: f"{m['head']}{m['who']} ")
 
 
 # 'his' / 'her' / 'their' right after a person's want ("… and then Bob wants his crisps"): the
@@ -10715,24 +10763,16 @@ def _gapped_also29s(text: str, lexicon: Lexicon) -> str:
 # more of the object than 'the' when the words after it are one whole name of one object of the
 # scene; with two people named, the grammar had taken 'his' as a reference to be resolved. Two
 # objects of the name ('Bob wants his mug', two mugs) or a name that is not whole stay as said.
-_OWN_WANT29S = re.compile(
-    r"\b(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?P<verb>wants|needs|"
-    r"would like|'d like|is asking for|asked for|has asked for) (?:his|her|their) "
-    r"(?P<what>[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|and\b|$))",
-    _F,
+_OWN_WANT29S = (
+    rf"\b(?P<who>{_PERSON28S}) (?P<verb>wants|needs|would like|'d like|is asking for|asked for|"
+    r"has asked for) (?:his|her|their) (?P<what>[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|and\b|$))"
 )
 
 
 def _own_want29s(text: str, lexicon: Lexicon) -> str:
     """'Bob wants his crisps': 'the crisps' (above)."""
-    return _sub(
-        _OWN_WANT29S.pattern,
-        lambda m: (
-            f"{m.group('who')} {m.group('verb')} the {m.group('what')}"
-            if _only(m.group("who"), lexicon, "human") and _only(m.group("what"), lexicon, "object")
-            else m.group(0)
-        ),
-        text,
+    return _for_person29s(
+        _OWN_WANT29S, text, lexicon, lambda m: f"{m['who']} {m['verb']} the {m['what']}"
     )
 
 
@@ -10782,24 +10822,16 @@ def _surface_busy29s(text: str, lexicon: Lexicon) -> str:
 # means alone; the person must be one whole name of a person of the scene (or 'the <role>' of
 # one), the surface one whole name of one surface. Two surfaces of the name, or a possessor who
 # is no one of the scene, are left (refused as before).
-_OWNED_SURFACE29S = re.compile(
-    r"\b(?P<on>on|onto|on to|in|into|on top of) (?P<who>(?:the )?(?:person [a-z]|"
-    r"(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s (?P<what>[a-z]+(?: [a-z]+)?)\b(?=\s*(?:[,.;!?]|$))",
-    _F,
+_OWNED_SURFACE29S = (
+    rf"\b(?P<on>on|onto|on to|in|into|on top of) (?P<who>(?:the )?(?:{_PERSON28S}))'s "
+    r"(?P<what>[a-z]+(?: [a-z]+)?)\b(?=\s*(?:[,.;!?]|$))"
 )
 
 
 def _owned_surface29s(text: str, lexicon: Lexicon) -> str:
     """'on the teacher's desk': 'on the desk' (above)."""
-    return _sub(
-        _OWNED_SURFACE29S.pattern,
-        lambda m: (
-            f"{m.group('on')} the {m.group('what')}"
-            if _only(m.group("who"), lexicon, "human")
-            and _only(m.group("what"), lexicon, "surface")
-            else m.group(0)
-        ),
-        text,
+    return _for_person29s(
+        _OWNED_SURFACE29S, text, lexicon, lambda m: f"{m['on']} the {m['what']}", "surface"
     )
 
 
@@ -10870,24 +10902,99 @@ def _state_cause29s(text: str, lexicon: Lexicon) -> str:
 # chips"): the one asked is not who gets it ('ask <someone> for X': the asker wants X), so 'me'
 # and how often are taken out, leaving '<person> has asked for', which the grammar reads as a
 # want. The asker must be one whole name of a person of the scene, first in its clause.
-_ASKED_ME29S = re.compile(
-    r"(?P<who>(?:^|(?<=[.;!?,])\s*)(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) "
-    r"(?P<verb>has asked|'s asked|asked|has been asking|'s been asking|keeps asking) me"
-    r"(?: (?:twice|three times|again|already|twice now|again now|all morning|all day|nicely))?"
-    r" for\b",
-    _F,
+_ASKED_ME29S = (
+    rf"(?P<who>(?:^|(?<=[.;!?,])\s*)(?:{_PERSON28S})) (?:has asked|'s asked|asked|has been asking|"
+    r"'s been asking|keeps asking) me(?: (?:twice|three times|again|already|twice now|again now|"
+    r"all morning|all day|nicely))? for\b"
 )
 
 
 def _asked_me29s(text: str, lexicon: Lexicon) -> str:
     """'Person A has asked me twice now for the chips': 'Person A has asked for the chips'."""
+    return _for_person29s(_ASKED_ME29S, text, lexicon, lambda m: f"{m['who']} has asked for")
+
+
+# The kind's objects listed by their colour or size after the words that name them ("both mugs,
+# red and blue, up on the shelf", "Sorry, both mugs, the red and the blue, could they …", "Load
+# the three boxes onto the belt, small, medium and large.", "Hand Jess a spanner, big or small,
+# …"): an apposition saying which they are. With 'and' the clause before it must name exactly the
+# listed objects, by a plural of their kind ('both mugs', 'the three boxes'); with 'or', one of
+# their kind ('a spanner', 'one of the mugs', 'either mug') where the listed ones are all of that
+# kind. Each word must name, with the kind's name, one object of the kind, none twice. The list is
+# then taken off (the plural or the choice says it already); two of three boxes after 'the three
+# boxes', a choice after a plural, a list after one object named ('the red mug, red and blue'), or
+# a word naming nothing are left as said (refused).
+_KIND_LIST29S = (
+    r"(?P<lead>,\s*)(?P<list>(?:the )?(?:{a})(?: one)?(?:(?:,\s*|\s+)(?:(?:and|or)\s+)?"
+    r"(?:the )?(?:{a})(?: one)?){{1,3}})(?=\s*(?:[,.!?]|$))"
+)
+
+
+def _kind_adjectives29s(text: str, lexicon: Lexicon) -> str:
+    """'both mugs, red and blue, …': the list taken off (above)."""
+    adjectives = _adjectives(lexicon)
+    if not adjectives:
+        return text
+    alternatives = "|".join(sorted(map(re.escape, adjectives), key=len, reverse=True))
+    for m in _rx(_KIND_LIST29S.format(a=alternatives)).finditer(text):
+        said = m.group("list").lower()
+        joins = set(re.findall(r"\b(?:and|or)\b", said))
+        words = [
+            w for w in re.split(r",\s*|\s+", re.sub(r"\b(?:and|or|the|one)\b", " ", said)) if w
+        ]
+        if len(joins) != 1 or len(words) < 2 or any(w not in adjectives for w in words):
+            continue
+        head = text[: m.start()]
+        start = max(head.rfind(c) for c in ".!?;:")
+        clause = head[start + 1 :]
+        kinds = set.intersection(*(set(adjectives[w]) for w in words))
+        if len(kinds) != 1:
+            continue
+        kind = next(iter(kinds))
+        every = {o.id for o in lexicon.scene.objects if o.category == kind}
+        listed: set[str] = set()
+        for w in words:
+            ids = {i for i in _ids(f"the {w} {kind}", lexicon, "object") if i in every}
+            if len(ids) != 1 or ids & listed:
+                break
+            listed |= ids
+        else:
+            named = _ids(clause, lexicon, "object")
+            if named & every != named or not named:
+                continue  # the clause names other objects too: which the list is about is unclear
+            kinds_said = rf"{re.escape(kind)}(?:s|es)"
+            plural = re.search(
+                rf"\b(?:both|the|all|those|these|all the)(?: (?:two|three|four))? {kinds_said}\b|"
+                rf"\bboth (?:of the )?{kinds_said}\b",
+                clause,
+                _F,
+            )
+            one = re.search(
+                rf"\b(?:an? {kind}|one of the {kinds_said}|either {kind}|any {kind})\b", clause, _F
+            )
+            if (joins == {"and"} and plural and not one and named == listed) or (
+                joins == {"or"} and one and not plural and listed == every
+            ):
+                return text[: m.start()] + text[m.end() :]
+    return text
+
+
+# 'wrong one' / 'wrong person' / 'wrong thing' right after a correction's cue ("Hand the chips
+# to Person A, whoops, wrong one, I meant Person B.", "Chips for Person A, oops, wrong one, Person
+# B."): the cue said again, taken off; without a cue before it, it is the cue (', no, '). What
+# follows must be more words (a correction to read); 'wrong way round' (a swap) is not this.
+_WRONG_ONE29S = re.compile(
+    r"(?P<cue>,\s*(?:(?:oh |ah )?(?:no|nope|oops|whoops|sorry|oh no|ah no)\s*,?\s*)?)"
+    r"wrong (?:one|person|thing|item)\s*,\s*(?=[a-z])",
+    _F,
+)
+
+
+def _wrong_one29s(text: str, _lexicon: Lexicon) -> str:
+    """'…, whoops, wrong one, I meant Person B': the cue once (above)."""
     return _sub(
-        _ASKED_ME29S.pattern,
-        lambda m: (
-            f"{m.group('who')} has asked for"
-            if _only(m.group("who").strip(), lexicon, "human")
-            else m.group(0)
-        ),
+        _WRONG_ONE29S.pattern,
+        lambda m: m.group("cue").rstrip(" ,") + ", " if m.group("cue").strip(" ,") else ", no, ",
         text,
     )
 
@@ -11074,7 +11181,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _handed28,
     _since28,
     _doing25,
+    _nope29s,
     _slip_owned29s,
+    _its_persons29s,
     _gapped_also29s,
     _own_want29s,
     _surface_busy29s,
@@ -11082,6 +11191,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_fussed29s,
     _state_cause29s,
     _asked_me29s,
+    _kind_adjectives29s,
+    _wrong_one29s,
     _speaker_remarks,
     _asides22,
     _one_person22,
