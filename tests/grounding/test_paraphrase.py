@@ -234,8 +234,6 @@ KNOWN_MISSES = frozenset(
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
-        "Hello there. I'm only visiting, so forgive me if I get this wrong, but would you be "
-        "able to give the banana to Emma? Thank you ever so much.",
         "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
         "the high chair? Thanks.",
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
@@ -382,7 +380,6 @@ KNOWN_MISSES = frozenset(
         "the apple over to person b when u can",
         "the crisps r alice's, the bottle goes to bob",
         "shelf for the chips, bob for the bottle, ta",
-        "Gardener here again, sorry, the globr wants moving onto the desk, please.",
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
         "Would you mind awfully tidying the red pen away into the box?",
@@ -392,17 +389,11 @@ KNOWN_MISSES = frozenset(
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "Morning! I've been up since four with the sourdough, so excuse the flour on "
         "everything. Would you be a darling and bring Carol the red mug? Cheers, my love.",
-        "Evening. Um, sorry, only if it isn't too much trouble, the apple across to Person A, "
-        "please. Thanks awfully, you're a gem.",
-        "Hello po, good morning po. Kindly give the bottle to Person A po, if okay with you. "
-        "Thank you so much po, God bless.",
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
         "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
         "terribly passing Sam the notepad? Thanks a bunch.",
         "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
         "the magazine down on the bedside locker? Lovely, thank you.",
-        "Hiya, zookeeper here for the school visit, the penguins are still in the van. Could "
-        "you be a star and hand Mrs Ortiz the glue stick? Ta.",
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
@@ -469,8 +460,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
-        "Um, if it's all the same to you, the bottle over to Person B, please. Ta ever so.",
         "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
         "be a sweetheart and pass Person A that bottle? Cheers, you're a star.",
         "Oh, sorry, I've got clay up to my elbows from the wheel. Would you mind awfully letting "

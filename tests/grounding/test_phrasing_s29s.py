@@ -319,3 +319,59 @@ def test_correction_cue_near_forms() -> None:
     assert_refused("Magazine to Mr Lee, no, it was the doctor who asked for it.", WARD)
     # 'no' then 'body': 'nobody' is no cue followed by 'body'
     assert_refused("Hand the chips to Person A, whoops, nobody.", FOUR)
+
+
+# -- '<role> here' and kindly conditions (normalise.py _here_i_am29s, _kindly_if29s) ------------
+
+
+def test_self_introduction_with_here() -> None:
+    assert_reads(
+        "Hiya, zookeeper here for the school visit, the penguins are still in the van. Could you "
+        "be a star and hand Mrs Ortiz the glue stick? Ta.",
+        "glue>A",
+        CLASSROOM,
+    )
+    assert_reads(
+        "Gardener here again, sorry, the globr wants moving onto the desk, please.",
+        "globe@desk",
+        CLASSROOM,
+    )
+
+
+def test_self_introduction_near_forms() -> None:
+    # a person of the scene ('teacher' is Mrs Ortiz) saying who they are: 'me' is them, refused
+    assert_refused("Teacher here, give me the globe.", CLASSROOM)
+    # 'here' after an object is where it is (or an unknown name), not who speaks
+    assert_refused("The globe here, Zoe.", CLASSROOM)
+    # a self-introduction with a held word ('it here') is left
+    assert_refused("Put it here, then hand Mrs Ortiz the glue stick.", CLASSROOM)
+
+
+def test_kindly_conditions() -> None:
+    assert_reads(
+        "Um, if it's all the same to you, the bottle over to Person B, please.", "bottle>B", FOUR
+    )
+    assert_reads("Kindly give the bottle to Person A, if okay with you.", "bottle>A", FOUR)
+    assert_reads(
+        "Um, sorry, only if it isn't too much trouble, the apple across to Person A, please.",
+        "apple>A",
+        FOUR,
+    )
+    assert_reads(
+        "I'm only visiting, so forgive me if I get this wrong, but would you be able to give the "
+        "banana to Emma?",
+        "banana>C",
+        LAB,
+    )
+    assert_reads(
+        "Give the banana to Emma, if that's okay with you, and the spoon to Omar.",
+        "banana>C & spoon>B",
+        LAB,
+    )
+
+
+def test_kindly_conditions_near_forms() -> None:
+    # a condition about the scene or the moment is a condition: refused
+    assert_refused("Give the banana to Emma if it's clean.", LAB)
+    assert_refused("Give the banana to Emma, if Emma is there.", LAB)
+    assert_refused("If it's all the same to Emma, give her the banana.", LAB)

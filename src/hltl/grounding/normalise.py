@@ -10999,6 +10999,55 @@ def _wrong_one29s(text: str, _lexicon: Lexicon) -> str:
     )
 
 
+# The speaker saying who they are with 'here' ("Alright mate, bus driver here, …", "Hiya,
+# zookeeper here for the school visit, …", "Gardener here again, sorry, …"): a self-introduction
+# at a sentence's start or after its opener, asking nothing; taken off when its words name
+# nothing in the scene (a person of the scene saying 'Alice here' is who 'me' is, left) and hold
+# no word that could ask, point or count (_REMARK_HELD: 'it here', 'the two here', 'put … here').
+_HERE_I_AM29S = re.compile(
+    r"(?:^|(?<=[.!?,]))\s*(?P<who>(?:[a-z]+ ){0,2}[a-z]+) here(?P<more> again| for (?:the |a |an |"
+    r"your |my |our )?[a-z]+(?: [a-z]+){0,2})?\s*(?:,\s*|(?=[.!?;]|$))",
+    _F,
+)
+
+
+def _here_i_am29s(text: str, lexicon: Lexicon) -> str:
+    """'bus driver here, …': taken off (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        words = f"{m['who']} {(m['more'] or '').replace(' for ', ' ').replace(' again', '')}"
+        if _REMARK_HELD.search(words) or not _names_nothing(words, lexicon):
+            return m.group(0)
+        return " " if m.start() > 0 else ""
+
+    out = _sub(_HERE_I_AM29S.pattern, said, text)
+    return " ".join(out.split()) if out != text and _names(out, lexicon) else text
+
+
+# A condition that only asks kindly ("if it's all the same to you", "if that works for you", "if
+# okay with you", "only if it isn't too much trouble", "if it's no bother", "forgive me if I get
+# this wrong"): it sets no condition on the request, and is taken off as a clause of its own
+# (between commas, or a sentence's start and a comma, or closing a sentence). Conditions about
+# anything else ('if Bob is there', 'if it's clean') are left, and refused.
+_KINDLY_IF29S = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?])|,)\s*)(?:(?:um|er|oh|sorry|so|but|and),?\s*)?(?:(?:only|just) )?(?:"
+    r"if (?:it's|it is) all the same to you|if (?:that|this) (?:works|suits) (?:for )?you|"
+    r"if (?:(?:that's|that is|it's|it is) )?(?:okay|ok|alright|all right|fine) (?:with|by|for) you|"
+    r"if (?:it's|it is|that's|that is) (?:no|not (?:too much|a|any)|not) (?:trouble|bother|"
+    r"problem)|if (?:it|that) (?:isn't|is not|wouldn't be|won't be) (?:too much |any |a )?"
+    r"(?:trouble|bother|problem)|forgive me if i (?:get|got|have got|'ve got) (?:this|it) wrong)"
+    r"\s*(?P<end>,\s*(?:(?:but|so)\s+)?|(?=[.!?]|$))",
+    _F,
+)
+
+
+def _kindly_if29s(text: str, lexicon: Lexicon) -> str:
+    """'if it's all the same to you, …': taken off (above)."""
+    out = _sub(_KINDLY_IF29S.pattern, lambda m: m["lead"] if m["end"] else "", text)
+    out = re.sub(r"^\s*,\s*|(?<=[.!?])\s*,\s*", " ", out).strip()
+    return out if out != text and _names(out, lexicon) else text
+
+
 # a correction before the slip owned at the end
 _CUE_BEFORE29S = re.compile(
     rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
@@ -11181,6 +11230,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _handed28,
     _since28,
     _doing25,
+    _here_i_am29s,
+    _kindly_if29s,
     _nope29s,
     _slip_owned29s,
     _its_persons29s,
