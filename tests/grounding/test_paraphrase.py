@@ -382,7 +382,6 @@ KNOWN_MISSES = frozenset(
         "shelf for the chips, bob for the bottle, ta",
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
-        "Would you mind awfully tidying the red pen away into the box?",
         "Would Person B like the apple? Give it to her, yes?",
         "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
@@ -462,8 +461,6 @@ KNOWN_MISSES = frozenset(
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
         "be a sweetheart and pass Person A that bottle? Cheers, you're a star.",
-        "Oh, sorry, I've got clay up to my elbows from the wheel. Would you mind awfully letting "
-        "Person B have the chips? You're a treasure.",
         "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
         "so good, pass Priya the red pen. Many thanks indeed.",
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
@@ -534,8 +531,6 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
         'much.',
-        "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
-        'grateful.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
         'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',

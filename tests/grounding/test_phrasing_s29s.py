@@ -375,3 +375,29 @@ def test_kindly_conditions_near_forms() -> None:
     assert_refused("Give the banana to Emma if it's clean.", LAB)
     assert_refused("Give the banana to Emma, if Emma is there.", LAB)
     assert_refused("If it's all the same to Emma, give her the banana.", LAB)
+
+
+# -- 'would you mind letting', 'tidy … away into', 'ever so grateful' (_kindly_verbs29s) --------
+
+
+def test_kindly_verbs_and_gratitude() -> None:
+    assert_reads("Would you mind awfully letting Person B have the chips?", "chips>B", FOUR)
+    assert_reads(
+        "Would you mind awfully tidying the red pen away into the box?", "pen_red@box", OFFICE
+    )
+    assert_reads(
+        "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
+        "grateful.",
+        "notebook>B & stapler>A",
+        OFFICE,
+    )
+    assert_reads("Give Sam the notepad, much obliged.", "notebook>B", OFFICE)
+
+
+def test_kindly_verbs_near_forms() -> None:
+    # tidying away with no place, or a surface tidied away: refused
+    assert_refused("Tidy the red pen away.", OFFICE)
+    assert_refused("Tidy the desk away into the box.", OFFICE)
+    # gratitude for an object says more than thanks; 'not mind' with an object is a negation
+    assert_refused("Give Sam the notepad, grateful for the stapler.", OFFICE)
+    assert_refused("If you wouldn't mind the noise, give Sam the notepad.", OFFICE)

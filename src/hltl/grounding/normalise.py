@@ -11026,7 +11026,7 @@ def _here_i_am29s(text: str, lexicon: Lexicon) -> str:
 
 # A condition that only asks kindly ("if it's all the same to you", "if that works for you", "if
 # okay with you", "only if it isn't too much trouble", "if it's no bother", "forgive me if I get
-# this wrong"): it sets no condition on the request, and is taken off as a clause of its own
+# this wrong", "if you wouldn't mind terribly"): it sets no condition on the request, and is taken off as a clause of its own
 # (between commas, or a sentence's start and a comma, or closing a sentence). Conditions about
 # anything else ('if Bob is there', 'if it's clean') are left, and refused.
 _KINDLY_IF29S = re.compile(
@@ -11035,7 +11035,8 @@ _KINDLY_IF29S = re.compile(
     r"if (?:(?:that's|that is|it's|it is) )?(?:okay|ok|alright|all right|fine) (?:with|by|for) you|"
     r"if (?:it's|it is|that's|that is) (?:no|not (?:too much|a|any)|not) (?:trouble|bother|"
     r"problem)|if (?:it|that) (?:isn't|is not|wouldn't be|won't be) (?:too much |any |a )?"
-    r"(?:trouble|bother|problem)|forgive me if i (?:get|got|have got|'ve got) (?:this|it) wrong)"
+    r"(?:trouble|bother|problem)|forgive me if i (?:get|got|have got|'ve got) (?:this|it) wrong|"
+    r"if you (?:wouldn't|would not|don't|do not) mind(?: (?:terribly|awfully|too much|at all))?)"
     r"\s*(?P<end>,\s*(?:(?:but|so)\s+)?|(?=[.!?]|$))",
     _F,
 )
@@ -11046,6 +11047,35 @@ def _kindly_if29s(text: str, lexicon: Lexicon) -> str:
     out = _sub(_KINDLY_IF29S.pattern, lambda m: m["lead"] if m["end"] else "", text)
     out = re.sub(r"^\s*,\s*|(?<=[.!?])\s*,\s*", " ", out).strip()
     return out if out != text and _names(out, lexicon) else text
+
+
+# 'Would you mind (awfully / terribly) letting P have X?' is 'Could you let P have X?' (the
+# '-ing' of the one verb 'let' the courtesy frames had not taken); and 'tidy X away into / in /
+# on S' is 'put X in / on S' (putting away is placing, where S is said; without a place, left).
+_MIND_LETTING29S = re.compile(
+    r"\bwould you mind(?: (?:awfully|terribly|very much|at all))? letting\b", _F
+)
+_TIDY_AWAY29S = re.compile(
+    r"\b(?:tidy|tidying|tidied) (?P<what>(?:the|that|this|those|these|both|all the) [a-z]+(?: "
+    r"[a-z]+)?|it|them) away (?P<where>in|into|on|onto)\b",
+    _F,
+)
+
+
+# thanks said as the speaker's gratitude closing the text ("…, ever so grateful", "…, much
+# obliged", "I'm very grateful"): the courtesy closers' kind
+_GRATEFUL29S = re.compile(
+    r"\s*[,.!]\s*(?:i'm |i am |we're |we are )?(?:ever so |very |so |really |most |much |truly )?"
+    r"(?:grateful|obliged|thankful|appreciated)(?: (?:to you|indeed))?\s*[.!]*\s*$",
+    _F,
+)
+
+
+def _kindly_verbs29s(text: str, _lexicon: Lexicon) -> str:
+    """'would you mind letting …', 'tidy X away into S', '…, ever so grateful' (above)."""
+    text = _MIND_LETTING29S.sub("could you let", text)
+    text = _GRATEFUL29S.sub(".", text)
+    return _TIDY_AWAY29S.sub(lambda m: f"put {m['what']} {m['where']}", text)
 
 
 # a correction before the slip owned at the end
@@ -11232,6 +11262,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _doing25,
     _here_i_am29s,
     _kindly_if29s,
+    _kindly_verbs29s,
     _nope29s,
     _slip_owned29s,
     _its_persons29s,
