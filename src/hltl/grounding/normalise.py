@@ -11026,9 +11026,10 @@ def _here_i_am29s(text: str, lexicon: Lexicon) -> str:
 
 # A condition that only asks kindly ("if it's all the same to you", "if that works for you", "if
 # okay with you", "only if it isn't too much trouble", "if it's no bother", "forgive me if I get
-# this wrong", "if you wouldn't mind terribly"): it sets no condition on the request, and is taken off as a clause of its own
-# (between commas, or a sentence's start and a comma, or closing a sentence). Conditions about
-# anything else ('if Bob is there', 'if it's clean') are left, and refused.
+# this wrong", "if you wouldn't mind terribly"): it sets no condition on the request, and is
+# taken off as a clause of its own (between commas, or a sentence's start and a comma, or
+# closing a sentence). Conditions about anything else ('if Bob is there', 'if it's clean') are
+# left, and refused.
 _KINDLY_IF29S = re.compile(
     r"(?P<lead>(?:^|(?<=[.!?])|,)\s*)(?:(?:um|er|oh|sorry|so|but|and),?\s*)?(?:(?:only|just) )?(?:"
     r"if (?:it's|it is) all the same to you|if (?:that|this) (?:works|suits) (?:for )?you|"
