@@ -155,7 +155,6 @@ KNOWN_MISSES = frozenset(
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
         "Those three things that aren't the bottle, give them to Person A.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
@@ -242,7 +241,6 @@ KNOWN_MISSES = frozenset(
         "Person B needs the chips, ugh, and after she's got them Person A's going to want the "
         "bottle.",
         "Person B is wanting the bottle only, kindly do the needful.",
-        "Bottle goes to Person A. And Person B, she gets the chips.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Person B first, with the bottle. After that, the apple for Person A.",
         "Any of the pens will do for Sam.",
@@ -601,7 +599,6 @@ KNOWN_MISSES = frozenset(
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",

@@ -401,3 +401,24 @@ def test_kindly_verbs_near_forms() -> None:
     # gratitude for an object says more than thanks; 'not mind' with an object is a negation
     assert_refused("Give Sam the notepad, grateful for the stapler.", OFFICE)
     assert_refused("If you wouldn't mind the noise, give Sam the notepad.", OFFICE)
+
+
+# -- a person taken up by a pronoun (normalise.py _dislocated29s) -------------------------------
+
+
+def test_dislocated_person() -> None:
+    assert_reads(
+        "Bottle goes to Person A, and Person B, she gets the chips.", "bottle>A & chips>B", FOUR
+    )
+    assert_reads(
+        "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
+        "bottle>A & chips>B",
+        FOUR,
+    )
+
+
+def test_dislocated_person_near_forms() -> None:
+    # a pronoun that cannot be the person (by title): the chips are someone else's
+    assert_refused("Mr Lee, the jug is hers.", WARD)
+    # the speaker's own: not the person's
+    assert_refused("Person B, the chips are mine.", FOUR)

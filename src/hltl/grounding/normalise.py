@@ -10742,10 +10742,14 @@ def _for_person29s(
 ) -> str:
     """``text`` with each match of ``pattern`` whose group 'who' is one whole name of a person of
     the scene said as ``said`` gives (and, where ``pattern`` has a group 'what', that is one
-    whole name of one thing of kind ``what``); other matches as they were."""
+    whole name of one thing of kind ``what``; a he / she / his / her in the match must fit the
+    person, as far as a title says); other matches as they were."""
 
     def one(m: re.Match[str]) -> str:
-        named = _only(m.group("who").strip(), lexicon, "human")
+        who = m.group("who").strip()
+        named = _only(who, lexicon, "human")
+        if named:
+            named = _fits(next(iter(_ids(who, lexicon, "human"))), m.group(0), lexicon)
         if named and "what" in m.groupdict():
             named = _only(m.group("what"), lexicon, what)
         return said(m) if named else m.group(0)
@@ -11079,6 +11083,34 @@ def _kindly_verbs29s(text: str, _lexicon: Lexicon) -> str:
     return _TIDY_AWAY29S.sub(lambda m: f"put {m['what']} {m['where']}", text)
 
 
+# A person said, then taken up by 'he' / 'she' / 'they' as the subject of a want or a getting
+# ("Bottle goes to Person A. And Person B, she gets the chips."): the pronoun repeats the person
+# (session 11's "Mr Novak he want lemon" at the text's start), after 'and' / 'then' too; the
+# person must be one whole name of the scene and the verb one of having or wanting.
+_DISLOCATED29S = (
+    rf"(?P<lead>(?:^|(?<=[.;!?])\s*|,\s*)(?:and |then |and then )?)(?P<who>{_PERSON28S}),? "
+    r"(?:he|she|they) (?=(?:gets|get|wants|want|needs|need|has|have|would like|'d like|can have|"
+    r"should get|should have|is getting|is having|'s getting|'s having|'ll have|will have)\b)"
+)
+
+
+# … and owning it: "Person B, the chips are his." is 'Person B gets the chips' (the object one
+# whole name of one object of the scene)
+_DISLOCATED_OWNER29S = (
+    rf"(?P<lead>(?:^|(?<=[.;!?])\s*|,\s*)(?:and |then |and then )?)(?P<who>{_PERSON28S}),\s*"
+    r"(?P<what>the [a-z]+(?: [a-z]+)?) (?:is|are|'s|'re) (?:his|hers|theirs)(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _dislocated29s(text: str, lexicon: Lexicon) -> str:
+    """'And Person B, she gets the chips': 'And Person B gets the chips'; 'Person B, the chips
+    are his': 'Person B gets the chips' (above)."""
+    text = _for_person29s(_DISLOCATED29S, text, lexicon, lambda m: f"{m['lead']}{m['who']} ")
+    return _for_person29s(
+        _DISLOCATED_OWNER29S, text, lexicon, lambda m: f"{m['lead']}{m['who']} gets {m['what']}"
+    )
+
+
 # a correction before the slip owned at the end
 _CUE_BEFORE29S = re.compile(
     rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
@@ -11264,6 +11296,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _here_i_am29s,
     _kindly_if29s,
     _kindly_verbs29s,
+    _dislocated29s,
     _nope29s,
     _slip_owned29s,
     _its_persons29s,
