@@ -23,7 +23,10 @@ misread); and every entry narrowing after a comma ("…, just not …", "…, so
 inside an opener and a closer (as the entry, or refused). A fifth family (session 28), tails: a
 sentence after an entry that adds a handover ("… Also, give <person> the <object>."; the entry's
 reading, neither loosened nor dropped, and that handover) or that must be refused ("… Then I want
-the <object>.", "… Hmm, or maybe not.").
+the <object>.", "… Hmm, or maybe not."). A sixth family (session 29), asides: a remark naming
+nothing of the scene before an entry ("Sorry, typing this from the car park. …", "For tomorrow's
+picnic, …") and after it ("…, while the kettle boils."), and a trade after a person's name
+("Alice the baker", "… to Mr Novak, the plumber."): as the entry, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -256,8 +259,40 @@ TAIL_REFUSED = (
     " And the thing for the other one.",  # nothing in the scene
 )
 TAIL_FORMS = ("adds", "refused")
-Family = Literal["wrappers", "takebacks", "references", "exclusions", "tails"]
-FAMILIES: tuple[Family, ...] = ("wrappers", "takebacks", "references", "exclusions", "tails")
+# asides (session 29; blind27 had "For the ghillie's picnic, …", "Sorry, typing this from the cave
+# entrance", "the pallets are splintery" and "Carol the crofter wants …", "Person B, the acrobat,
+# …"): a remark that names nothing in the scene, before or after an entry, or a trade said after a
+# person's name, which must leave the entry's reading as it is (or be refused); only where nothing
+# in the remark or the trade names a thing of the scene (``_names_nothing``)
+ASIDES_BEFORE = (
+    "Sorry, typing this from the car park. ",
+    "It's been a long morning. ",
+    "For tomorrow's picnic, ",
+    "The floor's just been mopped, so mind how you go. ",
+    "Bit of a rush today. ",
+    "While the kettle boils, ",
+    "Sorry about the noise, the builders are in. ",
+)
+ASIDES_AFTER = (  # (the "," forms only after a sentence that is not a question)
+    ". Sorry, typing this from the car park.",
+    ". It's been a long morning.",
+    ", for tomorrow's picnic.",
+    ". The floor's a bit wet, mind.",
+    ". Lovely weather today.",
+    ", while the kettle boils.",
+    ". The builders are in, sorry about the noise.",
+)
+TRADES = ("baker", "crofter", "plumber", "juggler", "night porter", "acrobat", "locksmith")
+ASIDE_FORMS = ("before", "after", "trade")
+Family = Literal["wrappers", "takebacks", "references", "exclusions", "tails", "asides"]
+FAMILIES: tuple[Family, ...] = (
+    "wrappers",
+    "takebacks",
+    "references",
+    "exclusions",
+    "tails",
+    "asides",
+)
 
 Must = Literal["same", "refuse"]
 
@@ -720,6 +755,64 @@ def tails(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator
     yield Variant(part, entry.scene, text + tail, None, "refuse", "tails", (), "refused")
 
 
+def _names_nothing(words: str, scene: Scene) -> bool:
+    """Whether ``words`` name no object, person or surface of ``scene`` (nor one a typo away):
+    no word of them nor two together lexed alone as one (the lexer joins an unknown word to a
+    name after it: "kettle boils" is one unknown)."""
+    said = re.findall(r"[A-Za-z']+", words)
+    for n in (1, 2):
+        for i in range(len(said) - n + 1):
+            try:
+                items = lex(" ".join(said[i : i + n]), Lexicon.of(scene))
+            except GroundingError:
+                return False
+            if any(it.kind == "ent" for it in items):
+                return False
+    return True
+
+
+def _people_said(text: str, scene: Scene) -> list[re.Match[str]]:
+    """Where ``text`` says a person of ``scene`` by a name ("Alice", "Mr Novak", "Person B"; any
+    case), not after "the"/"a" nor before a possessive; a name inside a longer one is left out."""
+    names = {n for h in scene.humans for n in (h.name, *h.aliases) if n[:1].isupper()}
+    found: list[re.Match[str]] = []
+    for name in sorted(names, key=len, reverse=True):
+        for m in re.finditer(rf"(?i)(?<![\w'])(?<!the )(?<!a ){re.escape(name)}\b(?!['’])", text):
+            if not any(f.start() <= m.start() < f.end() for f in found):
+                found.append(m)
+    return sorted(found, key=lambda m: m.start())
+
+
+def asides(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The aside variants of one entry: a remark naming nothing of the scene before it and one
+    after it, and a trade after one of the people it names ("Alice the baker", "…to Alice, the
+    baker."), each read as the entry (or refused; a refused entry must stay refused, with its
+    readings)."""
+    text = entry.text.strip()
+    must: Must = "same" if entry.want is not None else "refuse"
+
+    def aside(said: str, form: str) -> Variant:
+        return Variant(part, entry.scene, said, entry.want, must, "asides", entry.readings, form)
+
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    before = [a for a in ASIDES_BEFORE if _names_nothing(a, scene)]
+    if before and not takes_back:
+        yield aside(_after(rng.choice(before), text, scene), "before")
+    question = text.endswith("?")
+    after = [a for a in ASIDES_AFTER if _names_nothing(a, scene) and not (question and a[0] == ",")]
+    if after:
+        form = rng.choice(after)
+        said = text + form[1:] if question else text.rstrip(".!") + form
+        yield aside(said, "after")
+    trades = [t for t in TRADES if _names_nothing(f"the {t}", scene)]
+    said_at = _people_said(text, scene)
+    if trades and said_at:
+        m, trade = rng.choice(said_at), rng.choice(trades)
+        end = re.match(r"\s*(?:[.!?]|$)", text[m.end() :]) is not None
+        put = f", the {trade}" if end and rng.random() < 0.5 else f" the {trade}"
+        yield aside(text[: m.end()] + put + text[m.end() :], "trade")
+
+
 def _dropped(node: Node, task: Task) -> Node | None:
     """``node`` without ``task`` (the order and choices among the rest kept), or None if empty."""
     if isinstance(node, Task):
@@ -784,6 +877,7 @@ def generated(
     rng_refs = random.Random(f"references:{seed}")
     rng_excl = random.Random(f"exclusions:{seed}")
     rng_tail = random.Random(f"tails:{seed}")
+    rng_aside = random.Random(f"asides:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -804,6 +898,9 @@ def generated(
                     yield v, scene
             if "tails" in families:
                 for v in tails(part, entry, scene, rng_tail):
+                    yield v, scene
+            if "asides" in families:
+                for v in asides(part, entry, scene, rng_aside):
                     yield v, scene
 
 

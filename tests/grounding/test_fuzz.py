@@ -6,8 +6,9 @@ the readings; a one-of-a-kind object by its kind: that handover; the speaker's o
 an entry: refused), the exclusion family of session 27 (a kind narrowed after a comma: the rest,
 the one named, or refused with the readings; an entry narrowing after a comma wrapped: the
 entry), the tail family of session 28 (a sentence after an entry adding a handover: the entry's
-reading kept and that handover; or one that must be refused), and the wrappers and take-backs of a
-seed unchanged by them."""
+reading kept and that handover; or one that must be refused), the aside family of session 29 (a
+remark naming nothing of the scene before or after an entry, a trade after a person's name: the
+entry), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -19,9 +20,19 @@ import pytest
 from hltl.bench.grounding import Entry, parse_expectation
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.tree import Group, Node, Task, tasks
-from hltl.world.scene import Scene, load_scene
+from hltl.world.scene import Scene, load_scene, scene_from_dict
 from tests.grounding import fuzz
-from tests.grounding.helpers import CELL, CLASSROOM, DEPOT, NURSERY, OFFICE, ROOT, SCENES, WARD
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    SCENES,
+    WARD,
+)
 
 PARTS = ("tuning", "blind21", "blind23")
 
@@ -164,7 +175,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
     assert min(kinds.values()) > 20, kinds
 
 
-@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions", "tails"])
+@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions", "tails", "asides"])
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
     every = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
@@ -178,7 +189,8 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
-    assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails')" in err
+    assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
+    assert "'asides')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -537,4 +549,114 @@ def test_over_the_corpus_each_tail_variant_names_what_it_says() -> None:
         else:
             assert v.want is None and v.must == "refuse"
             _tail(v.text, fuzz.TAIL_REFUSED)
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- asides (session 29) --------------------------------------------------------------------------
+
+
+def _asides(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.asides("t", entry, scene, random.Random(seed)))
+
+
+def _without_trade(text: str) -> str:
+    """``text`` with the one trade said after a name taken out."""
+    trades = "|".join(re.escape(t) for t in fuzz.TRADES)
+    out, n = re.subn(rf",? the (?:{trades})\b", "", text)
+    assert n == 1, text
+    return out
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_an_aside_goes_before_and_after_an_entry_and_a_trade_after_a_name(seed: int) -> None:
+    entry = _entry(
+        "cell", "Last, the cup goes to Bob. First, give Alice the apple.", "apple>A ; cup>B"
+    )
+    before, after, trade = _asides(entry, CELL, seed)
+    assert [v.form for v in (before, after, trade)] == list(fuzz.ASIDE_FORMS)
+    for v in (before, after, trade):
+        assert v.family == "asides" and v.must == "same" and v.want == entry.want
+    m = _match(fuzz.ASIDES_BEFORE, before.text, "start")
+    rest = before.text[m.end() :]
+    assert rest in (entry.text, "last, the cup goes to Bob. First, give Alice the apple.")
+    assert after.text.startswith("Last, the cup goes to Bob. First, give Alice the apple")
+    assert any(after.text.endswith(a) for a in fuzz.ASIDES_AFTER)
+    assert _without_trade(trade.text) == entry.text
+    assert re.search(r"\b(?:Bob|Alice),? the \w+", trade.text)
+
+
+def test_a_refused_entry_must_stay_refused_with_its_readings() -> None:
+    entry = Entry("cell", "Give her the mug.", None, ("mug_red", "mug_blue"))
+    for v in _asides(entry, CELL, 3):
+        assert v.must == "refuse" and v.want is None and v.readings == entry.readings
+        assert fuzz.verdict(v, CELL) in ("refused", "unclear")
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_after_a_question_an_aside_is_a_sentence(seed: int) -> None:
+    entry = _entry("cell", "Could you give Bob the cup?", "cup>B")
+    after = next(v for v in _asides(entry, CELL, seed) if v.form == "after")
+    assert after.text.startswith("Could you give Bob the cup? ")
+    assert after.text[len("Could you give Bob the cup? ") - 1 :] in [
+        a[1:] for a in fuzz.ASIDES_AFTER if a.startswith(". ")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("Give Mr Novak the tongs.", ["Mr Novak"]),  # the whole name, not "Mr"
+        ("Marco's plate goes to Lena.", ["Lena"]),  # not before a possessive
+        ("tell lena the chef wants the tongs", ["lena"]),  # any case; "the chef" is no name
+        ("Person C needs the salt shaker, and Marco the tongs.", ["Person C", "Marco"]),
+        ("Give the plate to the guest.", []),  # a title is not a name
+    ],
+)
+def test_a_trade_follows_a_name_the_scene_gives_a_person(text: str, said: list[str]) -> None:
+    assert [m[0] for m in fuzz._people_said(text, KITCHEN)] == said
+
+
+def test_an_aside_or_trade_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "kettle", "category": "kettle", "position": [0.5, 0.5, 0.05]})
+    raw["humans"][1]["aliases"] = ["Bob", "baker"]
+    scene = scene_from_dict(raw)
+    assert fuzz._names_nothing("For tomorrow's picnic, ", scene)
+    assert not fuzz._names_nothing("While the kettle boils, ", scene)
+    assert not fuzz._names_nothing("While the ketle boils, ", scene)  # a typo of a scene word
+    assert not fuzz._names_nothing("the baker", scene)
+    entry = _entry("cell", "Give Alice the cup.", "cup>A")
+    for seed in range(30):
+        for v in fuzz.asides("t", entry, scene, random.Random(seed)):
+            assert "kettle" not in v.text and "baker" not in v.text
+
+
+@pytest.mark.parametrize(("reads", "verdict"), [("cup>A", "exact"), ("cup>B", "wrong")])
+def test_an_aside_is_judged_by_what_the_grounder_reads(reads: str, verdict: str) -> None:
+    v = fuzz.Variant(
+        "t",
+        "cell",
+        "Give Alice the cup. Lovely weather today.",
+        parse_expectation(reads),
+        "same",
+        "asides",
+        (),
+        "after",
+    )
+    assert fuzz.verdict(v, CELL) == verdict
+
+
+def test_over_the_corpus_each_aside_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.ASIDE_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=29, every=3, families=("asides",)):
+        assert v.family == "asides"
+        kinds[v.form] += 1
+        if v.form == "before":
+            _match(fuzz.ASIDES_BEFORE, v.text, "start")
+        elif v.form == "after":
+            assert any(v.text.endswith(a[1:]) for a in fuzz.ASIDES_AFTER), v.text
+        else:
+            said = [m[0] for m in fuzz._people_said(v.text, scene)]
+            assert said == [m[0] for m in fuzz._people_said(_without_trade(v.text), scene)]
+        assert (v.must == "refuse") is (v.want is None)
     assert min(kinds.values()) >= 10, kinds

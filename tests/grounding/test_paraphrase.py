@@ -638,6 +638,87 @@ KNOWN_MISSES = frozenset(
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
+        # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
+        'Eskerrik asko in advance: the cup to Person B, mesedez.',
+        "Takk! The water jug onto the bedside locker, if you'd be so kind.",
+        "Si us plau, if it's no trouble, give Mr Novak the salt. Gràcies!",
+        'Dakujem in advance, the torch to Jess, and bless you.',
+        'Carol the crofter wants the blue mug for her tea.',
+        "For the ghillie's picnic, Person A needs the apple while Person B is after the cup.",
+        'The bottle is wanted by Person B, says the coxswain.',
+        'Our dairy farmers are parched and peckish: Person B fancies the bottle, and Person A the '
+        'chips.',
+        "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
+        "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
+        "The cup's for Person A, the joiner. Once that's done, bring her the apple too.",
+        "The bottle's for Person B. Take it over to them.",
+        'See the bottle? Person A the gamekeeper wants it.',
+        "Chips to Person A, and when that's done, the bottle to that same person as well.",
+        'The stapler goes to Sam; put the notepad on the desk after that.',
+        'Quick list from the botanist: Person A, cup. Person B, apple.',
+        'Chips to Person B first. After that. Person A gets the cup. Sorry, typing this from the '
+        'cave entrance.',
+        'Give Person B the bottle, give Person A the chips, job done, back to my embroidery.',
+        'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
+        'says.',
+        'For the long row back, Bob can take the bottle or the crisps, whichever comes to hand.',
+        "I don't mind which of your arms does it, the bottle needs to reach Person A.",
+        "Something each for the two oceanographers: Person A's to get the bottle, Person B the "
+        "chips.",
+        "Emma's a visiting palaeontologist and not fussy, so hand her either of the cups.",
+        "Sam's proofreading and just needs a pen, any of them will do.",
+        'Mrs Khan is shivering like a diver out of the sea, so let her have both blankets.',
+        'Mia only needs one of them, the tape or the gloves; pick whichever you can reach.',
+        'Noah and Zoe are doing a reading with the linguist; they can have a book apiece.',
+        'Give Ava any one toy, the teddy or a block, whichever.',
+        'Both items to Bob, the archer wants them.',
+        "There's just the one cup, and it goes to Person B, the sculptor.",
+        'Three things for Person B to take to the dairy: the cup, the apple and the chips.',
+        'Person A is the forester on the night shift; both items go to her.',
+        'Split the two items between Person A and Person B, one apiece.',
+        "There's only one bottle, and Person A the caver should have it.",
+        'Both of the cups, the green and the white, want rinsing, so into the sink with the pair.',
+        'One blanket for each of the two patients, whichever way round.',
+        'The concierge wants two plates for room service: both of them onto the worktop, please.',
+        "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
+        'Kofi wants the pair of spanners tidied away: both onto the locker.',
+        "Bob's a rower and wants the crisps, not the bottle.",
+        'Person B, the acrobat, is welcome to the lot, bar the apple and the bottle.',
+        "It's the cup Person A wants for the dye bath, not the bottle.",
+        'None of it to Person A; the apple and the cup go to Person B.',
+        "The chips aren't for Person A; they're Person B's, so hand them over to Person B.",
+        "That bottle's for Person A and for nobody else, she's the only one diving.",
+        "Don't leave the bottle where it is; hand it to Person A.",
+        "Apart from the bottle, give Person B whatever's there.",
+        'Emma needs something to stir her tea; the spoon, mind, not the sponge.',
+        "Mia wants all the kit except the boxes: that's the scanner, the tape and the gloves.",
+        'Hand the cup over to Bob the dairyman, oh sorry, I meant the apple.',
+        'The bottle goes to Bob, hang on, no, Alice is the thirsty one, so to Alice.',
+        'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
+        "Pass Person B the chips, no, that's wrong, it's the bottle she asked for.",
+        "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
+        "Give Person A the chips. Wait, no, she's fasting; the bottle instead.",
+        'alice the juggler gets the bottle, shes parched',
+        'person b is thirsty after the dive so she wants the bottle',
+        'person a the gamekeeper is hungry and thirsty, so she gets both',
+        'sam says put the stapler in the box, the proofs are done',
+        'Carol the crofter is peckish, give her the cridps.',
+        'Aluce is back from the dive, hand her the bottle.',
+        'The forester left the bottle out; put it on the shrlf.',
+        'The cup is for Pefson A, the ventriloquist.',
+        'Person B the ornithologist wants the cgips.',
+        'The chips are for Persoj B, the milkman.',
+        'Person A has come up out of the cave and would like the boftle.',
+        'Person B the goldsmith is hungry; give him the vhips.',
+        'Omsr needs the spoon to stir his samples.',
+        "Ruth has asked for the thermomrter, the ward's too warm.",
+        'Tom needs the glovrs, the pallets are splintery.',
+        'Zoe wants the scissord to cut out her rock diagrams.',
+        "Would you mind lifting the crisps up onto the shelf so the ventriloquist's dummy can't "
+        "get at them?",
+        'Can you carry the bottle down the line to Person A?',
+        "Could the bowl go in the sink? The botanist's soil is caked on it.",
+        "Mind popping the packing tape on the pallet? The milkman's crates need sealing.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -657,6 +738,12 @@ KNOWN_UNCLEAR = frozenset(
         "was.",
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
+        # blind27 (tuned on in session 29)
+        "Ruth needs the blanket taken across to Mr Lee, he's feeling the draught.",
+        'Kofi and Jess are at the bench, and one of them asked for the hammer. Take it to whoever '
+        'that was.',
+        'Give Grandad a block, but not the one Lily has been chewing.',
+        'tom needs a box, the one mia packed',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -702,8 +789,10 @@ KNOWN_UNCLEAR = frozenset(
 # in session 27: asserted now, the rest in KNOWN_MISSES; "blind26" written in session 27 by
 # another engineer and committed alone, reviewed by a second one, measured once at the end of
 # session 27, tuned on in session 28: asserted now, the rest in KNOWN_MISSES; "blind27" written
-# in session 28 by another engineer and committed alone: measured once at the end, not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind27"})
+# in session 28 by another engineer and committed alone, reviewed by a second one, measured once
+# at the end of session 28, its one wrong reading fixed and tuned on in session 29: asserted now,
+# the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -102,8 +102,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 27 by another engineer and committed alone, reviewed by a second engineer, never opened
 # by the engineers who changed the grounder before its one measurement at the end of session 27;
 # tuned on in session 28), blind27 (written in session 28 by another engineer and committed
-# alone, never opened by the engineers who changed the grounder before its one measurement at the
-# end of session 28; tests do not assert it).
+# alone, reviewed by a second engineer, never opened by the engineers who changed the grounder
+# before its one measurement at the end of session 28; tuned on in session 29).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -1288,7 +1288,25 @@ def _counted(text: str, lexicon: Lexicon) -> str:
     who = {next(iter(p)) for p in people}
     if len(who) != len(parts) or (count and len(who) != _COUNTS[count.lower()]):
         return text
+    if m.group(1):
+        _each_of_one29r(text[: text.index(":")].strip(), who, lexicon)
     return listed
+
+
+def _each_of_one29r(header: str, who: set[str], lexicon: Lexicon) -> None:
+    """Session 29 (12r): 'One thing each: the tape for Mia.' — 'each' shares out among more
+    than one, and the list names one person where the scene has others: refused, saying who
+    else 'each' could take in (read before as the one hand-over)."""
+    if len(who) != 1 or len(lexicon.scene.humans) < 2:
+        return
+    (pid,) = who
+    others = [_name(h.id, lexicon) for h in lexicon.scene.humans if h.id != pid]
+    raise GroundingError(
+        f"{header!r} names something for {_name(pid, lexicon)} only: say what "
+        + " and what ".join(others)
+        + (" gets" if len(others) == 1 else " get")
+        + f" as well, or leave out {'apiece' if 'apiece' in header.lower() else 'each'!r}"
+    )
 
 
 def _answered(text: str, lexicon: Lexicon) -> str:
@@ -4451,6 +4469,8 @@ _THANKED = re.compile(r"\b(?:cheers|thanks|thank you|ta) for that\b", _F)
 def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
     if sentence.rstrip().endswith("?"):
         return False  # "Now, where was I? Oh yes, …": a question the next sentence answers
+    if _NO_ALONE29R.match(sentence):
+        return False  # "Give Alice the cup. Nah.": 'no' said after the request (session 29)
     plain = _THANKED.sub("thanks", sentence)
     plain = _rx(r"\bi'?m (?:only|just) [a-z]+ing\b").sub("i am", plain)
     plain = _rx(r"^(?:come|over) here\b").sub("", plain)
@@ -5538,6 +5558,7 @@ def _chat_token(word: str, lexicon: Lexicon) -> bool:
         and not _near_verb(low)
         and low not in first_names()
         and not _held_word(low, lexicon)
+        and not _NO_ALONE29R.match(low)  # 'na', 'nae': 'no' (session 29)
         and _names_nothing(word, lexicon)
     )
 
@@ -8581,6 +8602,8 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         }
         tasks_said = len(re.findall(r"\b(?:to|for)\b", rest))
         if who and len(_ids(rest, lexicon, "object")) == len(people) == tasks_said:
+            if head.group(1) is None:
+                _each_of_one29r(out[: head.end()].strip(" :,"), people, lexicon)
             out = rest  # "P and Q each take one: X for P, Y for Q"
     out = _sub(r"\bboth of the (?=(?:[a-z]+ )?[a-z]+s\b)", "both ", out)
     out = _sub(r"\ball of the (?=[a-z]+s\b)", "all the ", out)
@@ -11117,6 +11140,49 @@ _CUE_BEFORE29S = re.compile(
 )
 
 
+# -- session 29 (engineer 12r) -------------------------------------------------------------------
+
+# Words that say 'no' (colloquial 'nah', 'naw', 'nope'; Scots 'nae'; German 'nein', French 'non'),
+# said as a stretch of their own: the correction cue 'no' ("Give Alice the cup. Nah, the apple.").
+# 'na' is 'nah' only opening a sentence: after a comma it may be Hindi English's tag ('…, na?',
+# isn't it; _tag28), so before more words it is refused with both readings.
+_NO_WORD29R = re.compile(
+    r"(?:(?<=^)|(?<=[,.!?;:]\s)|(?<=[,.!?;:]))(nah|naw|nope|nae|nein|non)(?=\s*[,.!?;:]|\s*$)",
+    _F,
+)
+_NA_OPENS29R = re.compile(r"(?:(?<=^)|(?<=[.!?]\s)|(?<=[.!?]))(na)(?=\s*[,.!;:]|\s*$)", _F)
+_NA_BETWEEN29R = re.compile(r",\s*na\s*,\s*(?=\S)", _F)
+# a sentence that is only a word saying 'no' ("Give Alice the cup. Nah."): never inert
+_NO_ALONE29R = re.compile(
+    r"^\s*(?:(?:oh|ah|um|er|erm|hmm)\s*,?\s*)?(?:na|nah|naw|nope|nae|nay|nein|non|no)\s*[.!]*\s*$",
+    _F,
+)
+
+
+def _no_words29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): a word that says 'no', standing alone between marks, is the cue 'no',
+    whose grammar (a correction, or a refusal of one that names nothing) then reads it; taken off
+    as a filler it had read "Give Alice the cup. Na, the apple." as both objects. A word the scene
+    names is left as it is."""
+    words = _scene_words(lexicon.scene)
+
+    def no(m: re.Match[str]) -> str:
+        said = m.group(1)
+        if said.lower() in words:
+            return said
+        return "No" if said[:1].isupper() else "no"
+
+    out = _NA_OPENS29R.sub(no, _NO_WORD29R.sub(no, text))
+    m = _NA_BETWEEN29R.search(out)
+    if m is not None and "na" not in words:
+        raise GroundingError(
+            f"{m.group(0).strip(' ,')!r} between commas could be 'nah' (no: what follows replaces "
+            "what was said before it) or a tag asking 'isn't it' (what follows is one more "
+            "request): say 'no, …' or 'and …'"
+        )
+    return out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -11247,6 +11313,8 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 29 (12r)
+    _no_words29r,
     _or_not28s,
     _disturb28s,
     _matters_which28s,

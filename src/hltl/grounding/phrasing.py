@@ -1126,6 +1126,11 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if one_of is not None:  # "either of the two", "one of the three": one of that many
             refs = _the_objects(out, one_of, _words_of(items[k : k + 2]), lexicon)
             words = _words_of(items[k : k + 2])
+            if _restates_choice(out, refs):
+                # "a mug, either of the two": the same choice said again, not a second mug
+                out.pop()
+                k += 2
+                continue
             out.append(Item("ent", words.lower(), words, refs, quant="some", group=k))
             k += 2
             continue
@@ -1279,6 +1284,20 @@ def _one_of_the_count(items: list[Item], k: int) -> int | None:
     if nxt is not None and not (nxt.kind == "punct" or _is(nxt, *_AFTER_ALONE)):
         return None
     return count
+
+
+def _restates_choice(out: list[Item], refs: tuple[Ref, ...]) -> bool:
+    """Whether 'either of the two' (choosing among ``refs``) follows a comma after a mention
+    that already takes one of exactly those objects ('a mug, either of the two' with two
+    mugs): an apposition that says the same choice again, not a second object."""
+    if len(out) < 2 or not (out[-1].kind == "punct" and out[-1].text == ","):
+        return False
+    before = out[-2]
+    return (
+        _objects(before)
+        and before.quant == "some"
+        and {r.id for r in before.refs} == {r.id for r in refs}
+    )
 
 
 def _some_of(items: list[Item], k: int, lexicon: Lexicon) -> list[Item] | None:
@@ -2330,7 +2349,7 @@ def _but_after_place(items: list[Item]) -> list[Item]:
     return items
 
 
-def _exclusions(items: list[Item]) -> list[Item]:
+def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'everything except the mugs', 'a mug, not the red one': remove them from the last name."""
     items = _but_after_place(items)
     out: list[Item] = []
@@ -2405,6 +2424,7 @@ def _exclusions(items: list[Item]) -> list[Item]:
             )
         if not kept:
             raise GroundingError(f"nothing is left of {out[target].text!r} after {it.text!r}")
+        whole = out[target]
         out[target] = replace(out[target], refs=kept)
         p = _past_dets(items, j + 1)
         if (
@@ -2412,13 +2432,57 @@ def _exclusions(items: list[Item]) -> list[Item]:
             and _is(items[j], ",")
             and p < len(items)
             and _objects(items[p])
-            and {r.id for r in items[p].refs} < {r.id for r in kept}
+            and _meant_after29r(items, (k, j, p), whole, out[:target], lexicon)
         ):
             # "the box, not the small one, the large one": the one said after it is meant
             out[target] = replace(out[target], refs=items[p].refs)
             j = p + 1
         k = j
     return out
+
+
+def _meant_after29r(
+    items: list[Item], at: tuple[int, int, int], named: Item, before: list[Item], lexicon: Lexicon
+) -> bool:
+    """Session 29 (12r): the object said after a comma right after an exclusion ('X, not Y,
+    Z'). It is the one meant when it is among what X names and is left, of the kind of Y ("the
+    box, not the small one, the large one"), or X said again. It starts a clause of its own when
+    a person or a place follows it and the clause before has its own ("Give Bob the cup, not
+    the mug, the apple for Carol": read as before, False). Else what it adds is unclear — "Give
+    Kofi the torch, not the drill, the hammer" (one more thing, or the hammer in place of the
+    torch?), "everything except the drill, the hammer" (left out too?; read before as the hammer
+    alone) — and it is refused with its readings."""
+    k, j, p = at  # where the exclusion, the comma after it and the object said next are
+    said = {r.id for r in items[p].refs}
+    has = {r.id for r in named.refs}
+    left_out = {r.id for x in items[k + 1 : j] if _objects(x) for r in x.refs}
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    if said == has or (
+        said <= has - left_out and {cats[x] for x in said} == {cats[x] for x in left_out}
+    ):
+        return True  # … or the same said again ("The cup to Person A, not the chips, the cup.")
+    n = p + 1
+    while n < len(items) and _is(items[n], "det", "filler"):
+        n += 1
+    if n < len(items) and _is(items[n], "to", "for", "on"):
+        whom = _past_dets(items, n + 1)
+        start = max(
+            (m + 1 for m, x in enumerate(before) if x.kind == "punct" and x.lemma in _END),
+            default=0,
+        )
+        own = any(x.kind == "ent" and not _objects(x) for x in before[start:])
+        if whom < len(items) and items[whom].kind == "ent" and own:
+            return False
+    excluded = _words_of(items[k:j])
+    again = _words_of(items[j + 1 : p + 1])
+    if said <= has:
+        readings = f"one more left out of {named.text!r}, or the one meant"
+    else:
+        readings = f"one more thing besides {named.text!r}, or meant in place of {named.text!r}"
+    raise GroundingError(
+        f"{again!r} after {excluded!r} could be {readings}: say 'and {again}', or the whole "
+        "request again"
+    )
 
 
 def _listed_after(items: list[Item], j: int, out: list[Item]) -> bool:
@@ -5291,7 +5355,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _corrections_named,
     _plain(_nobody),
     _plain(_instead_of),
-    _plain(_exclusions),
+    _exclusions,
     _plain(_respectively),
     _plain(_so_after_remark),
     _plain(_said_after),

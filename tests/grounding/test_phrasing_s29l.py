@@ -1,0 +1,49 @@
+"""Session-29 phrasing of issue 12 (lead): 'a mug, either of the two' says the same choice again
+(blind27's one wrong reading; docs/grounding.md, "Session 29 (lead)")."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.grounding.helpers import CELL, assert_reads, assert_refused
+
+# cell: mug_red and mug_blue are the two mugs; Alice is Person A, Bob Person B.
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Alice is making tea for the crofters, give her a mug, either of the two, whichever.",
+        "Give Alice a mug, either of the two, whichever.",
+        "Give Alice a mug, either of the two.",
+        "Give Alice a mug, any of the two.",
+        "Give Alice a mug, one of the two.",
+        "Give Alice a mug, whichever.",
+    ],
+)
+def test_a_choice_said_again_is_one_mug(text: str) -> None:
+    assert_reads(text, "mug_red>A | mug_blue>A", CELL)
+
+
+def test_across_and_it_is_a_second_choice() -> None:
+    # a second clause with its own recipient: one mug each, not the same choice again
+    assert_reads(
+        "Give Alice a mug, and either of the two to Bob.",
+        "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+        CELL,
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # after a definite object 'either of the two' says nothing of which two
+        "Give Alice the red mug, either of the two.",
+        # the count is not the mugs'
+        "Give Alice a mug, either of the three.",
+        # two things named before: which two is unclear
+        "Give Alice a mug and the cup, either of the two.",
+    ],
+)
+def test_other_counts_stay_refused(text: str) -> None:
+    assert_refused(text, CELL)
