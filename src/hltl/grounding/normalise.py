@@ -10686,7 +10686,9 @@ _SLIP29S = (
     r"i(?:'ve| have)? (?:read|heard|got|misread|misheard) (?:the|that|it|my) (?:[a-z]+ )?wrong)"
 )
 # a cue right before the slip: the slip is said of it ("…, nope, I've read the ticket wrong, …")
-_CUE_LAST29S = re.compile(r",\s*(?:no|nope|nah|sorry|oops|whoops|oh no|no sorry)\s*$", _F)
+_CUE_LAST29S = re.compile(
+    r"(?:,|\.\.\.|…)\s*(?:no|nope|nah|sorry|oops|whoops|oh no|no sorry)\s*$", _F
+)
 _SLIP_LAST29S = re.compile(rf"\s*,\s*(?:(?:sorry|oops|whoops),?\s*)?{_SLIP29S}\s*[.!]*\s*$", _F)
 _SLIP_CUE29S = re.compile(rf"\s*,\s*(?:oh,?\s*)?{_SLIP29S}\s*,\s*", _F)
 
@@ -10713,26 +10715,15 @@ def _slip_owned29s(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# 'nope' / 'nah' between what is corrected and the correction ("Spoon to Omar, nope, to Dana",
-# "Cup over to Person A... nope, …"): the grammar's 'no'. Not opening the text (an answer).
-_NOPE29S = re.compile(r"(?<=[a-z])\s*(?:,|\.\.\.|…)\s*(?:nope|nah)\s*,\s*(?=[a-z])", _F)
-
-
-def _nope29s(text: str, _lexicon: Lexicon) -> str:
-    """'…, nope, …': ', no, ' (above)."""
-    return _sub(_NOPE29S.pattern, ", no, ", text)
-
-
 # "…, no, it's Person B's" closing a correction of whom a delivery goes to: the object is that
 # person's, 'it's for Person B' (the person one whole name of the scene)
-_ITS_HIS29S = rf"(?P<cue>,\s*no,\s*)it(?:'s| is| was) (?P<who>{_PERSON28S})'s\s*(?P<end>[.!]?)\s*$"
+_CUE_NO29S = r"(?P<cue>(?:,|\.\.\.|…)\s*no,\s*)"
+_ITS_HIS29S = rf"{_CUE_NO29S}it(?:'s| is| was) (?P<who>{_PERSON28S})'s\s*(?P<end>[.!]?)\s*$"
 
 
 # "…, no, it was Mrs Khan who asked for it": the cleft after the cue, as session 11's "It's Carol
 # who needs …" opening a text: 'Mrs Khan asked for it'
-_CLEFT_AFTER_CUE29S = (
-    rf"(?P<cue>,\s*no,\s*)it(?:'s| is| was) (?P<who>{_PERSON28S}) (?:who|that) (?=[a-z])"
-)
+_CLEFT_AFTER_CUE29S = rf"{_CUE_NO29S}it(?:'s| is| was) (?P<who>{_PERSON28S}) (?:who|that) (?=[a-z])"
 
 
 def _its_persons29s(text: str, lexicon: Lexicon) -> str:
@@ -11365,7 +11356,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _kindly_if29s,
     _kindly_verbs29s,
     _dislocated29s,
-    _nope29s,
     _slip_owned29s,
     _its_persons29s,
     _gapped_also29s,
