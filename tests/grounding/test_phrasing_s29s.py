@@ -422,3 +422,26 @@ def test_dislocated_person_near_forms() -> None:
     assert_refused("Mr Lee, the jug is hers.", WARD)
     # the speaker's own: not the person's
     assert_refused("Person B, the chips are mine.", FOUR)
+
+
+# -- a correction taken back at once: 'no, wait, yes' (normalise.py _no_yes29s) -----------------
+
+
+def test_no_then_yes() -> None:
+    assert_reads(
+        "Bottle to Person A, no, wait, yes, that's right, Person A, carry on.", "bottle>A", FOUR
+    )
+    assert_reads(
+        "Give Person A the bottle, no wait, yeah, that's right, the bottle.", "bottle>A", FOUR
+    )
+    assert_reads("Bottle to, no hang on, yes, Person A, it's only her.", "bottle>A", FOUR)
+    assert_reads("Person A, the bottle — no, yes, the bottle, that's right.", "bottle>A", FOUR)
+
+
+def test_no_then_yes_near_forms() -> None:
+    # another name after 'yes', or more after it: refused
+    assert_refused("Bottle to Person A, no, wait, yes, Person B.", FOUR)
+    assert_refused("Bottle to Person A, no, yes, Person A, and the chips to Person B.", FOUR)
+    # (another object after 'yeah' is the correction the earlier rules read: "…, no wait, yeah,
+    # the chips" is the chips to Person A, as on main)
+    assert_reads("Give Person A the bottle, no wait, yeah, the chips.", "chips>A", FOUR)

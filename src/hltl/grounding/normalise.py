@@ -11125,6 +11125,38 @@ def _dislocated29s(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# A correction taken back at once ("Bottle to Person A, no, wait, yes, that's right, Person A,
+# carry on.", "Give Person A the bottle, no wait, yeah, that's right, the bottle.", "Person A,
+# the bottle — no, yes, the bottle, that's right.", "Bottle to, no hang on, yes, Person A, it's
+# only her."): 'no … yes' leaves what was said as it was, and what follows says it again. The
+# words after 'yes' must be one name of the scene that the clause before the cue names already
+# (the same things), or, where that clause stops at 'to' / 'for' / 'on', the name it stops before;
+# what may close it: "that's right", 'carry on', 'go on', "it's only her / him". Anything else
+# after 'yes' (another name, more requests) is left, and refused as before.
+_NO_YES29S = re.compile(
+    r"(?P<head>^[^.!?;]*?)\s*(?:,|—|–|\s-)\s*(?:no|nope)(?:,?\s*(?:wait|hang on|hold on))?\s*,?\s*"
+    r"(?:yes|yeah|yep)(?:,?\s*(?:that's|that is) (?:right|it|correct))?\s*,\s*"
+    r"(?P<again>[^,.!?—–]+?)(?:\s*,\s*(?:that's right|that is right|carry on|go on|it's only "
+    r"(?:her|him|them)))?\s*(?P<end>[.!]?)\s*$",
+    _F,
+)
+
+
+def _no_yes29s(text: str, lexicon: Lexicon) -> str:
+    """'Bottle to Person A, no, wait, yes, that's right, Person A': 'Bottle to Person A' (above)."""
+    m = _NO_YES29S.match(text)
+    if m is None:
+        return text
+    head, again = m["head"].strip(), m["again"].strip()
+    said = _ids(again, lexicon)
+    whole = next((k for k in ("human", "object", "surface") if _only_kind(again, lexicon, k)), None)
+    if whole is None or not said:
+        return text
+    if re.search(r"\b(?:to|for|on|onto)$", head, _F):
+        return f"{head} {again}{m['end'] or '.'}"
+    return f"{head}{m['end'] or '.'}" if said <= _ids(head, lexicon) else text
+
+
 # a correction before the slip owned at the end
 _CUE_BEFORE29S = re.compile(
     rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
@@ -11356,6 +11388,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _kindly_if29s,
     _kindly_verbs29s,
     _dislocated29s,
+    _no_yes29s,
     _slip_owned29s,
     _its_persons29s,
     _gapped_also29s,
