@@ -47,3 +47,34 @@ def test_across_and_it_is_a_second_choice() -> None:
 )
 def test_other_counts_stay_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- 'a mug, both of them': one, or both? ------------------------------------------------------
+#
+# ", both of them" after the objects it counts says them again (`_counts19`); after "a mug" with
+# two mugs in the scene it had been dropped as if "a mug" had named both, and the sentence read
+# one mug. It contradicts the one asked for: refused, saying so.
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice a mug, both of them.",
+        "Give Alice one mug, both of them.",
+        "A mug to Alice, both of them, please.",
+    ],
+)
+def test_one_of_a_kind_then_both_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="one or more than one")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice the mugs, both of them.",
+        "Give Alice the mugs, all of them.",
+        "The red mug and the blue mug to Alice, both of them.",
+    ],
+)
+def test_both_after_both_mugs_still_reads(text: str) -> None:
+    assert_reads(text, "mug_red>A & mug_blue>A", CELL)

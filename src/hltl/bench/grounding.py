@@ -103,7 +103,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who changed the grounder before its one measurement at the end of session 27;
 # tuned on in session 28), blind27 (written in session 28 by another engineer and committed
 # alone, reviewed by a second engineer, never opened by the engineers who changed the grounder
-# before its one measurement at the end of session 28; tuned on in session 29).
+# before its one measurement at the end of session 28; tuned on in session 29), blind28 (written
+# in session 29 by another engineer and committed alone, never opened by the engineers who change
+# the grounder before its one measurement at the end of session 29; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -148,6 +150,7 @@ PARTS = (
     "blind25",
     "blind26",
     "blind27",
+    "blind28",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -8554,6 +8554,21 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     return out if out else text
 
 
+def _one_of_a_kind_before(before: str, said: set[str], lexicon: Lexicon) -> str | None:
+    """The words in the last sentence of ``before`` that ask for one object of a kind the scene
+    has several of ('a mug', 'one mug', 'any mug'), when those objects are all that ``said``
+    names: a count after them ('both of them') contradicts it. None if there are none."""
+    last = re.split(r"[.!?;]", before)[-1]
+    for m in re.finditer(r"\b(?:a|an|one|any|either)\s+([a-z]+)\b", last, _F):
+        kind = _kind_of(m.group(1), lexicon)
+        if kind is None or m.group(1).lower() != kind:
+            continue
+        ids = {o.id for o in lexicon.scene.objects if o.category.lower() == kind}
+        if len(ids) > 1 and said <= ids:
+            return m.group(0)
+    return None
+
+
 def _counts19(text: str, lexicon: Lexicon) -> str:
     """Counts and choices said another way: ', all of them' / ', both of them' / ', the two of
     them' / ', every one of them' after the objects they count (the count checked against what
@@ -8571,6 +8586,12 @@ def _counts19(text: str, lexicon: Lexicon) -> str:
         need = 3 if word == "all three" else need
         if not said or (need is not None and len(said) != need) or len(said) < 2:
             return m.group(0)
+        one = _one_of_a_kind_before(before, set(said), lexicon)
+        if one is not None:  # "a mug, both of them": one mug, or both?
+            raise GroundingError(
+                f"'{one}' and '{m.group(1)} of them': one or more than one? name them; "
+                f"{lexicon.listing('object')}"
+            )
         return "" if m.group(2) == "," else m.group(2)
 
     out = _sub(

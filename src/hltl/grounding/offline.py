@@ -753,6 +753,8 @@ class _Parser:
         self._segment = 0
         self._slots: dict[str, tuple[int, tuple[str, ...]]] = {}  # placeholder -> group, options
         self._chosen: dict[int, str] = {}  # fragment that made a choice -> its placeholder
+        # a group said with 'X first' before another sentence (session 29) -> the ids of X
+        self._ahead: dict[int, tuple[str, ...]] = {}
 
     # -- choices ---------------------------------------------------------------------------------
     def expand(self, node: Node, pending: frozenset[int]) -> Node:
@@ -815,6 +817,7 @@ class _Parser:
             sentences.append(current)
         sentences = _order_carried(sentences)
         sentences = [s for s in sentences if not _only_fillers(s)]
+        sentences = [part for s in sentences for part in _split_after_first29(s)]
         if not sentences:
             raise GroundingError(
                 f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
@@ -822,10 +825,47 @@ class _Parser:
         result: _Raw | None = None
         final = False  # the first sentence opens with 'finally' / 'lastly'
         held: tuple[_Raw, str] | None = None  # objects said alone, then named by a pronoun
+        first_node: _Raw | None = None  # the first sentence, said with 'first' at its end
         for n, sent in enumerate(sentences):
             body, conn = _leading_connector(sent)
             if not body:
                 raise GroundingError(f"no task in {_text(sent)!r}")
+            ahead: tuple[str, ...] = ()
+            if n + 1 < len(sentences) and conn == "and" and held is None:
+                said = {r.id for s in sentences[:n] for x in s if x.kind == "ent" for r in x.refs}
+                body, ahead, alone = _first_said29(body, said)
+                if alone:
+                    # "… Bob first, please. Alice gets the bottle too.": what was said before
+                    if result is None:
+                        raise GroundingError(f"{_text(sent)!r}: nothing said before it to order")
+                    result = self._first_of(_RawGroup("and", [result]), ahead)
+                    continue
+            lead = False
+            if (
+                conn == "and"
+                and held is None
+                and not ahead
+                and len(sentences) > 1
+                and _already_first29(body)
+                and not (n + 1 < len(sentences) and _picked_up(body, sentences[n + 1]))
+            ):
+                # "Give Lena the knife and the lemon first. Also, …" (session 29: the 'first'
+                # was dropped): before the sentences after it, or, said last, before those
+                # before it; in the middle it could be either
+                if n + 1 == len(sentences):
+                    conn = "prior"
+                elif n > 0:
+                    raise GroundingError(
+                        f"cannot tell what {_text(body)!r} comes before: the sentences before "
+                        "it or those after it; say the order once"
+                    )
+                elif any(_leading_connector(s)[1] == "prior" for s in sentences[1:]):
+                    raise GroundingError(
+                        f"{_text(body)!r} is said to be first, and a later sentence goes before "
+                        "it: say the order once"
+                    )
+                else:
+                    lead = True
             if conn == "?":
                 raise GroundingError(
                     f"{_text(sent)!r} says 'first' and another order word: say the order once"
@@ -843,6 +883,10 @@ class _Parser:
                     "of its sentence, or use 'before'"
                 )
             node = self.sentence(body)
+            if ahead:
+                # "Give Lena the knife and the lemon, the lemon first. Also, …": the order is
+                # of this sentence's tasks (not the whole instruction's, not dropped)
+                node = self._first_of(_RawGroup("and", [node]), ahead)
             if held is not None:
                 # "B gets the bottle. Then the chips. Those are for A.": the objects said alone
                 # and the sentence giving them are one step, ordered as the first is said
@@ -850,15 +894,25 @@ class _Parser:
             elif n + 1 < len(sentences) and _picked_up(body, sentences[n + 1]):
                 held = (node, conn)
                 continue
+            if lead:
+                first_node = node
+                continue
             if result is None:
                 result = node
             elif conn == "prior":  # "… Before that, Y.": Y first
                 result = _RawGroup("seq", [node, result])
             else:
                 result = _RawGroup("seq" if conn == "then" else "and", [result, node])
+        if first_node is not None:
+            result = first_node if result is None else _RawGroup("seq", [first_node, result])
         if result is None:
             raise GroundingError("the instruction names no task")
         return result
+
+    def _first_of(self, group: _RawGroup, ahead: tuple[str, ...]) -> _RawGroup:
+        """``group``, whose tasks naming ``ahead`` go first when it is built (``_build``)."""
+        self._ahead[id(group)] = ahead
+        return group
 
     def sentence(self, items: list[Item]) -> _Raw:
         first = items[0]
@@ -1741,7 +1795,18 @@ class _Parser:
         kids = [c for c in (self._build(ch) for ch in raw.children) if c is not None]
         if not kids:
             return None
-        return kids[0] if len(kids) == 1 else Group(raw.op, tuple(kids))
+        node = kids[0] if len(kids) == 1 else Group(raw.op, tuple(kids))
+        ahead = self._ahead.get(id(raw))
+        if ahead:
+            moved = _move_first(node, ahead, self.lex)
+            if moved is node:
+                name = ", ".join(self.lex.display(i) for i in ahead)
+                raise GroundingError(
+                    f"'{name} first': every task said before it names {name}, so it is unclear "
+                    "what goes after; say the order in full"
+                )
+            node = moved
+        return node
 
 
 # -- helpers -------------------------------------------------------------------------------------
@@ -1961,6 +2026,74 @@ def _order_carried(sentences: list[list[Item]]) -> list[list[Item]]:
         out.append([*carried, *sent])
         carried = []
     return out
+
+
+def _split_after_first29(sent: list[Item]) -> list[list[Item]]:
+    """'Give Lena the knife and the lemon, the lemon first, and give Mr Novak the salt': a
+    request, 'X first' naming one of its objects or people again, then ', (and)' and more: two
+    sentences, so that the order is of the request before it (``_first_said29``) and the rest
+    stands beside it, or after it with 'then' (session 29; the 'first' was dropped). Not before
+    'after', 'once', 'before', nor before politeness alone."""
+    for j in range(2, len(sent) - 1):
+        if not (
+            _is(sent[j], "first") and sent[j - 1].kind == "ent" and _is(sent[j + 1], ",", "and")
+        ):
+            continue
+        rest = sent[j + 1 :]
+        k = 0
+        while k < len(rest) and _is(rest[k], ",", "and", "filler"):
+            k += 1
+        if k == len(rest) or _only_fillers(rest) or _is(rest[k], *_SUBORDINATORS, "prior"):
+            continue
+        if first_refs(sent[: j + 1])[1]:
+            return [sent[: j + 1], rest]
+    return [sent]
+
+
+def _already_first29(body: list[Item]) -> bool:
+    """Whether ``body`` ends on a 'first' that orders nothing inside it ('Carol needs the bottle
+    first', ``_trailing_order``'s "already first"), so that it can only order it among other
+    sentences."""
+    core = list(body)
+    while core and _is(core[-1], ",", "filler"):
+        core.pop()
+    if len(core) < 3 or not _is(core[-1], "first"):
+        return False
+    try:
+        out = _trailing_order(body)
+    except GroundingError:
+        return False
+    return not any(_is(x, "prior", "then") for x in out)
+
+
+def _first_said29(body: list[Item], said: set[str]) -> tuple[list[Item], tuple[str, ...], bool]:
+    """'X first' ending a sentence that another sentence follows (session 29: it was dropped,
+    12c's tails fuzz): the body without it, the ids it puts first, and whether it is a sentence
+    of its own ('Bob first, please.': the tasks said before it are ordered) rather than the end
+    of a request ('…, the lemon first.': that sentence's tasks are). Only one name, said before
+    it (first_refs's terms); anything else is left as it was."""
+    before, ids = first_refs(body)
+    if ids:
+        return before, ids, False
+    end = len(body)
+    while end > 0 and (_is(body[end - 1], "filler") or body[end - 1].kind == "punct"):
+        end -= 1
+    if end < 2 or not _is(body[end - 1], "first") or body[end - 2].kind != "ent":
+        return body, (), False
+    k = end - 2
+    while k > 0 and _is(body[k - 1], "det"):
+        k -= 1
+    if k > 0 and (_is(body[k - 1], "do") or body[k - 1].lemma == "verb:serve"):
+        k -= 1
+    ids = tuple(dict.fromkeys(r.id for r in body[end - 2].refs))
+    if (
+        not _only_fillers(body[:k])
+        or not _only_fillers(body[end:])
+        or len(ids) != 1
+        or not set(ids) <= said
+    ):
+        return body, (), False
+    return [], ids, True
 
 
 def _no_rider(part: _Raw, items: list[Item]) -> None:

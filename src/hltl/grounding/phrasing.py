@@ -298,7 +298,12 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
             end = _clause_stop(items, k, at_start)
             rest = items[end:]
             if _remark_words(items[k:end], lexicon, _people(items[:k] + rest), reason=False):
-                leads = at_start and end < len(items) and items[end].kind == "punct"
+                leads = (
+                    at_start
+                    and end < len(items)
+                    and items[end].kind == "punct"
+                    and not (items[end].lemma in _END and _mid_sentence29(items, k))
+                )
                 if leads and any(x.kind == "ent" for x in rest[1:]):
                     items = items[:k] + _addressed(items[k:end], rest[1:]) + rest[1:]
                     continue
@@ -320,6 +325,17 @@ def _remarks(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 continue
         k += 1
     return items
+
+
+def _mid_sentence29(items: list[Item], k: int) -> bool:
+    """Whether a remark at ``k`` follows words of its own sentence other than politeness: ending
+    that sentence ('The blue blanket as well, he's freezing. And the jug to Ruth as well.') it
+    leads nothing after the sentence's end, which stays (session 29: dropped with the remark, the
+    two sentences had read as one and the blanket had gone to Ruth)."""
+    start = max(
+        (n + 1 for n in range(k) if items[n].kind == "punct" and items[n].lemma in _END), default=0
+    )
+    return any(not (_is(x, "filler", ",") or x.kind == "punct") for x in items[start:k])
 
 
 def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
@@ -2941,7 +2957,11 @@ def _last(items: list[Item]) -> list[Item]:
         return items  # "X, then Y last, and Z": is Z in the step after X, or beside it?
     while after and (_is(after[0], *_SEPARATORS, "filler", "first")):
         after.pop(0)
-    end = len(after)
+    # the end of the sentence 'last' is in (session 29: "… before that. Also, …" had kept the
+    # 'before that', which then ordered the two before it)
+    end = next(
+        (n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), len(after)
+    )
     while end > 0 and (after[end - 1].kind == "punct" or _is(after[end - 1], "filler")):
         end -= 1
     if end > 0 and _is(after[end - 1], "prior"):
