@@ -445,3 +445,54 @@ def test_no_then_yes_near_forms() -> None:
     # (another object after 'yeah' is the correction the earlier rules read: "…, no wait, yeah,
     # the chips" is the chips to Person A, as on main)
     assert_reads("Give Person A the bottle, no wait, yeah, the chips.", "chips>A", FOUR)
+
+
+# -- 'not for P, it's for Q'; 'P asked for X and Q for Y' (_not_for_but29s, _asked_and29s) -------
+
+
+def test_not_for_one_but_another() -> None:
+    assert_reads(
+        "The chips are not for Person A, I tell you, they are for Person B.", "chips>B", FOUR
+    )
+    assert_reads(
+        "The chips aren't for Person A, they're for Person B, she's the one who paid.",
+        "chips>B",
+        FOUR,
+    )
+    assert_reads(
+        "Person B asked for the bottle and Person A for the chips.", "bottle>B & chips>A", FOUR
+    )
+    assert_reads(
+        "sam's asked for the notepad and priya for the stapler, i'm just trimming the spines",
+        "notebook>B & stapler>A",
+        OFFICE,
+    )
+
+
+def test_not_for_one_but_another_near_forms() -> None:
+    # the same person twice, or no second clause: a negation, refused
+    assert_refused("The chips aren't for Person A, they're for Person A.", FOUR)
+    assert_refused("The chips aren't for Person A.", FOUR)
+    assert_refused("The chips aren't for Person A, and the bottle is for Person B.", FOUR)
+    # 'for' after a person who asked nothing: two recipients, refused
+    assert_refused("Person B has the bottle and Person A for the chips.", FOUR)
+
+
+# -- what a placement is for: 'ready for …' (normalise.py _ready_for29s) ------------------------
+
+
+def test_ready_for_after_a_placement() -> None:
+    assert_reads(
+        "Put the tape on the belt, and the gloves too, both of them, ready for the next shift.",
+        "tape@conveyor & gloves@conveyor",
+        DEPOT,
+    )
+    assert_reads("Put the globw on the desk ready for geography.", "globe@desk", CLASSROOM)
+
+
+def test_ready_for_near_forms() -> None:
+    # ready for a person, or for 'it': who or what it is for may be asked; no placement: left
+    assert_refused("Put the tape on the belt, ready for Tom.", DEPOT)
+    assert_refused("Put the tape on the belt, ready for it.", DEPOT)
+    assert_refused("Give Tom the tape, ready for the next shift.", DEPOT)
+    assert_refused("Put the globe on the desk ready for the next one.", CLASSROOM)

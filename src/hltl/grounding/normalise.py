@@ -11178,6 +11178,66 @@ def _no_yes29s(text: str, lexicon: Lexicon) -> str:
     return f"{head}{m['end'] or '.'}" if said <= _ids(head, lexicon) else text
 
 
+# "The chips are not for Person A, (I tell you,) they are for Person B": the object is said not
+# to be one person's and then to be another's; the second says it all ('the chips are for Person
+# B'). The two must be different people of the scene, each one whole name, and 'they' / 'it' must
+# take up the object ("…, they are for Person B"); an aside of the speaker's between ('I tell
+# you', 'mind') is let be. Without the second clause (only 'not for Person A') it stays refused.
+_NOT_FOR_BUT29S = re.compile(
+    rf"^(?P<what>the [a-z]+(?: [a-z]+)?) (?P<be>is|are|'s|'re)(?: not|n't) for (?P<no>{_PERSON28S})"
+    r"\s*,\s*(?:(?:i tell you|mind|honestly|i'm telling you|you know)\s*,\s*)?(?:but )?"
+    rf"(?:they|it)(?:'re|'s| are| is) for (?P<who>{_PERSON28S})(?P<end>\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _not_for_but29s(text: str, lexicon: Lexicon) -> str:
+    """'The chips are not for Person A, they are for Person B': 'The chips are for Person B'."""
+    m = _NOT_FOR_BUT29S.match(text)
+    if m is None or not _only(m["no"], lexicon, "human") or not _only(m["who"], lexicon, "human"):
+        return text
+    if _ids(m["no"], lexicon) == _ids(m["who"], lexicon):
+        return text
+    return f"{m['what']} {m['be']} for {m['who']}{m['end']}{text[m.end() :]}"
+
+
+# A want said once for two people ("Person B asked for the bottle and Person A for the chips",
+# "sam's asked for the notepad and priya for the stapler"): the second person's 'for' takes the
+# first's verb, as session 19's '… wants the chips, and after that Person A for the bottle'.
+_ASKED_AND29S = (
+    rf"(?P<first>\b(?:{_PERSON28S})(?: has|'s)? asked for (?:the |a |an )?[a-z]+(?: [a-z]+)?,? and "
+    rf")(?P<who>{_PERSON28S}) for (?=(?:the|a|an) )"
+)
+
+
+def _asked_and29s(text: str, lexicon: Lexicon) -> str:
+    """'Person B asked for the bottle and Person A for the chips': '… and Person A asked for'."""
+    return _for_person29s(
+        _ASKED_AND29S, text, lexicon, lambda m: f"{m['first']}{m['who']} asked for "
+    )
+
+
+# What a placement is for, closing the text ("Put the tape on the belt, and the gloves too, ready
+# for the next shift.", "Put the globe on the desk ready for geography."): 'ready for …' says why
+# the objects go there, and is taken off when the request puts something on a surface and the
+# words name nothing in the scene and hold no word that could ask, point or count (the speaker's
+# times aside: 'the next shift'). 'ready for Zoe', 'ready for it' are left.
+_READY_FOR29S = re.compile(
+    r"(?:\s*,\s*|\s+)(?:all |nice and )?ready for (?P<what>[a-z' -]+?)\s*(?P<end>[.!]?)\s*$", _F
+)
+
+
+def _ready_for29s(text: str, lexicon: Lexicon) -> str:
+    """'…, ready for the next shift': taken off after a placement (above)."""
+    m = _READY_FOR29S.search(text)
+    if m is None or not _ids(text[: m.start()], lexicon, "surface"):
+        return text
+    what = _SPEAKER_TIMES.sub(" ", f"for {m['what']}")
+    if _REMARK_HELD.search(what.replace("for ", " ", 1)) or not _names_nothing(m["what"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
 # a correction before the slip owned at the end
 _CUE_BEFORE29S = re.compile(
     rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
@@ -11410,6 +11470,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _kindly_verbs29s,
     _dislocated29s,
     _no_yes29s,
+    _not_for_but29s,
+    _asked_and29s,
+    _ready_for29s,
     _slip_owned29s,
     _its_persons29s,
     _gapped_also29s,
