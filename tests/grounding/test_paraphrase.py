@@ -383,8 +383,6 @@ KNOWN_MISSES = frozenset(
         "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "Morning! I've been up since four with the sourdough, so excuse the flour on "
-        "everything. Would you be a darling and bring Carol the red mug? Cheers, my love.",
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
         "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
         "terribly passing Sam the notepad? Thanks a bunch.",
@@ -455,8 +453,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
-        "be a sweetheart and pass Person A that bottle? Cheers, you're a star.",
         "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
         "so good, pass Priya the red pen. Many thanks indeed.",
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "

@@ -496,3 +496,28 @@ def test_ready_for_near_forms() -> None:
     assert_refused("Put the tape on the belt, ready for it.", DEPOT)
     assert_refused("Give Tom the tape, ready for the next shift.", DEPOT)
     assert_refused("Put the globe on the desk ready for the next one.", CLASSROOM)
+
+
+# -- 'excuse the flour on everything'; "(I've) only just come off …" (_excuse_the29s) -----------
+
+
+def test_excuse_the_mess_and_an_elided_i() -> None:
+    assert_reads(
+        "Morning! I've been up since four with the sourdough, so excuse the flour on everything. "
+        "Would you be a darling and bring Carol the red mug? Cheers, my love.",
+        "mug_red>C",
+    )
+    assert_reads("Give Carol the red mug, excuse the mess.", "mug_red>C")
+    assert_reads(
+        "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you be "
+        "a sweetheart and pass Person A that bottle?",
+        "bottle>A",
+        FOUR,
+    )
+
+
+def test_excuse_the_mess_near_forms() -> None:
+    # excusing an object of the scene: left, refused
+    assert_refused("Excuse the cup, give Carol the red mug.")
+    # 'just come back with the bottle' is a request to come back (no verb of the grammar)
+    assert_refused("Just come back with the bottle.", FOUR)

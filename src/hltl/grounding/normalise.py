@@ -8050,7 +8050,9 @@ _SPEAKER_OPEN = re.compile(
     r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now|look)\s+)*"
     r"(?:(?:after that|afterwards|after this),?\s+)?"  # session 29 (12s): _speaker_plan29s
     r"(?:i(?:'m|'ve|'ll|'d)?|my (?:[a-z]+ ){1,2}(?:is|are|was|were|has|have|keeps?)|"
-    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me)\b",
+    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me|"
+    # session 29 (12s): "(I've) only just come off the gallops": the speaker's 'I've' left out
+    r"(?:only |just ){1,2}(?:come|got|been|arrived|finished)(?= (?:off|in|back|from|out|up)\b))\b",
     _F,
 )
 # what may follow such a stretch in its sentence, still about the speaker
@@ -11085,6 +11087,8 @@ _KINDLY_IF29S = re.compile(
 def _kindly_if29s(text: str, lexicon: Lexicon) -> str:
     """'if it's all the same to you, …': taken off (above)."""
     out = _sub(_KINDLY_IF29S.pattern, lambda m: m["lead"] if m["end"] else "", text)
+    if out == text:
+        return text
     out = re.sub(r"^\s*,\s*|(?<=[.!?])\s*,\s*", " ", out).strip()
     return out if out != text and _names(out, lexicon) else text
 
@@ -11236,6 +11240,33 @@ def _ready_for29s(text: str, lexicon: Lexicon) -> str:
     if _REMARK_HELD.search(what.replace("for ", " ", 1)) or not _names_nothing(m["what"], lexicon):
         return text
     return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# The speaker asking pardon for the state of things ("so excuse the flour on everything", "so
+# forgive the mud on my boots"): an apology, asking nothing; taken off as a clause of its own when
+# what is excused names nothing in the scene (nor by a typo). 'excuse the cup' (an object) is left.
+_EXCUSE_THE29S = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?,]))\s*)(?:(?:so|and|but|oh)\s+)?(?:please\s+)?(?:excuse|forgive|pardon|"
+    r"ignore) (?:the|my|all the|this) (?P<what>[a-z]+(?: [a-z]+)?)(?: (?:on|in|all over|over) "
+    r"(?P<where>everything|the floor|the place|my [a-z]+|me))?\s*(?=[.!?]|,|$)",
+    _F,
+)
+
+
+def _excuse_the29s(text: str, lexicon: Lexicon) -> str:
+    """'so excuse the flour on everything': taken off (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        words = f"{m['what']} {m['where'] or ''}".replace("everything", "")
+        if _REMARK_HELD.search(words) or not _names_nothing(words, lexicon):
+            return m.group(0)
+        return m["lead"]
+
+    out = _sub(_EXCUSE_THE29S.pattern, said, text)
+    if out == text:
+        return text
+    out = re.sub(r"^\s*[,.!]\s*|(?<=[.!?])\s*[,.]\s*|,\s*(?=[.!?])", " ", out).strip()
+    return out if out != text.strip() and _names(out, lexicon) else text
 
 
 # a correction before the slip owned at the end
@@ -11473,6 +11504,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_for_but29s,
     _asked_and29s,
     _ready_for29s,
+    _excuse_the29s,
     _slip_owned29s,
     _its_persons29s,
     _gapped_also29s,
