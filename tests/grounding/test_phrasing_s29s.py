@@ -12,6 +12,7 @@ from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
     DEPOT,
+    KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
@@ -521,3 +522,26 @@ def test_excuse_the_mess_near_forms() -> None:
     assert_refused("Excuse the cup, give Carol the red mug.")
     # 'just come back with the bottle' is a request to come back (no verb of the grammar)
     assert_refused("Just come back with the bottle.", FOUR)
+
+
+# -- a sentence opening a correction that says it is one (normalise.py _opens_a_fix29s) ---------
+
+
+def test_sentence_opening_an_owned_correction() -> None:
+    assert_reads("Bottle to Person B. Hang on, I misspoke, chips to Person B.", "chips>B", FOUR)
+    assert_reads("Bob wants the cup. Sorry, my mistake, it's the apple he wants.", "apple>B")
+    assert_reads(
+        "Person A wants the bottle. Sorry, I misheard her, it's the chips she wants.",
+        "chips>A",
+        FOUR,
+    )
+    assert_reads("Lemon to Mr Novak. Hang on, not the lemon, the salt.", "salt>C", KITCHEN)
+    assert_reads("The banana for Omar. Actually, change that to Dana.", "banana>A", LAB)
+
+
+def test_sentence_opening_a_correction_near_forms() -> None:
+    # the cue alone could correct or add: refused as before
+    assert_refused("Bottle to Person B. Hang on, chips to Person B.", FOUR)
+    # 'not' an object the sentence before does not name; nothing after the owned slip
+    assert_refused("Lemon to Mr Novak. Hang on, not the knife, the salt.", KITCHEN)
+    assert_refused("Bottle to Person B. Sorry, my mistake.", FOUR)

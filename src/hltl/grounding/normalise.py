@@ -11269,6 +11269,47 @@ def _excuse_the29s(text: str, lexicon: Lexicon) -> str:
     return out if out != text.strip() and _names(out, lexicon) else text
 
 
+# A sentence opening with 'Sorry' / 'Hang on' / 'Actually' could correct the sentence before it or
+# add to it (the session-19 rule refuses it); said with what makes it a correction, it is one
+# ("Bottle to Person B. Hang on, I misspoke, chips to Person B.", "Bob wants the cup. Sorry, my
+# mistake, it's the apple he wants.", "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
+# "The banana for Omar. Actually, change that to Dana."): the grammar's ', no, …'. The owning of
+# the slip ('my mistake', 'I misspoke', 'I misheard her', "I've got that wrong"), 'not <what was
+# said>', or 'change that to' must follow the cue at once; 'not the X' must name an object the
+# sentence before names. "it's the apple he wants" after it is 'the apple' (a cleft of the want).
+_OPENS_A_FIX29S = re.compile(
+    r"(?P<stop>[.!]\s+)(?:oh,?\s*|er,?\s*|um,?\s*)?(?:sorry|so sorry|hang on|hold on|actually|wait)"
+    r"\s*,\s*(?:(?P<slip>my mistake|my bad|i misspoke|i misspeak|i misheard (?:her|him|them|you)|"
+    r"i(?:'ve| have)? got (?:that|it) wrong|i said (?:that|it) wrong)\s*,\s*|"
+    r"(?P<not>not (?P<said>the [a-z]+(?: [a-z]+)?)\s*,\s*)|change (?:that|it) to\s+)",
+    _F,
+)
+_CLEFT_WANT29S = re.compile(
+    r"^it(?:'s| is) (?P<what>the [a-z]+(?: [a-z]+)?) (?:he|she|they) (?:wants?|needs?|'s after|"
+    r"asked for)(?P<end>\s*[.!]?\s*)$",
+    _F,
+)
+
+
+def _opens_a_fix29s(text: str, lexicon: Lexicon) -> str:
+    """'X. Hang on, I misspoke, chips to Person B.': 'X, no, chips to Person B.' (above)."""
+    m = _OPENS_A_FIX29S.search(text)
+    if m is None:
+        return text
+    head, rest = text[: m.start()], text[m.end() :]
+    if m["not"] and not _ids(m["said"], lexicon, "object") <= _ids(head, lexicon, "object"):
+        return text
+    if m["not"] and not _ids(m["said"], lexicon, "object"):
+        return text
+    cleft = _CLEFT_WANT29S.match(rest)
+    if cleft is not None:
+        rest = f"{cleft['what']}{cleft['end']}"
+    if not rest.strip(" .!") or ("change" in m.group(0).lower() and not _names(rest, lexicon)):
+        return text
+    to = "to " if "change" in m.group(0).lower() and not re.match(r"(?:to|for)\b", rest, _F) else ""
+    return f"{head}, no, {to}{rest}"
+
+
 # a correction before the slip owned at the end
 _CUE_BEFORE29S = re.compile(
     rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
@@ -11505,6 +11546,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _asked_and29s,
     _ready_for29s,
     _excuse_the29s,
+    _opens_a_fix29s,
     _slip_owned29s,
     _its_persons29s,
     _gapped_also29s,
