@@ -153,7 +153,6 @@ KNOWN_MISSES = frozenset(
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Kofi needs the drill, he's on the roof, and Jess, she needs the hammer.",
         "Those three things that aren't the bottle, give them to Person A.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
@@ -198,7 +197,6 @@ KNOWN_MISSES = frozenset(
         "what a display!",
         "Either the notebook or the stapler shall be given to Priya, at your discretion.",
         "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
-        "Any plate at all for Lena, folks, the white or the blue, whichever!",
         "Bottle or crisps, any one also can, give Bob.",
         "Each patient, gently, receives one blanket, whichever colour.",
         "Give unto Person B whichever thou wilt of the cup or the apple.",
@@ -232,19 +230,15 @@ KNOWN_MISSES = frozenset(
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
-        "Hello there. I'm only visiting, so forgive me if I get this wrong, but would you be "
-        "able to give the banana to Emma? Thank you ever so much.",
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "What I need is the bottle over with Person B.",
         "Person B needs the chips, ugh, and after she's got them Person A's going to want the "
         "bottle.",
         "Person B is wanting the bottle only, kindly do the needful.",
-        "Bottle goes to Person A. And Person B, she gets the chips.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Person B first, with the bottle. After that, the apple for Person A.",
         "Any of the pens will do for Sam.",
-        "Put the tape on the belt, and the gloves too, both of them, ready for the next shift.",
         "Either mug's fine for Carol, the red or the blue, your call.",
         "Each of them gets one thing: the bottle to Person A, the chips to Person B.",
         "Give Person B any one of them, the bottle, the chips or the apple.",
@@ -259,7 +253,6 @@ KNOWN_MISSES = frozenset(
         "That one bottle, over to Person A, quick as you can.",
         "Bob gets the lot, just leave the two mugs where they are.",
         "Jess wants the other spanner, not the big one on the workbench.",
-        "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
         "need the chips over with person b like right now",
@@ -292,7 +285,6 @@ KNOWN_MISSES = frozenset(
         "okay listen the chips are for Person A the bottle's for Person B got it",
         "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
         "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
-        "Hand Jess a spanner, big or small, she's only tightening a bolt.",
         "Either book can go on the desk, I just need one out for the lesson.",
         "One of the smaller boxes onto the belt, the small or the medium, your pick.",
         "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
@@ -301,7 +293,6 @@ KNOWN_MISSES = frozenset(
         "Everyone gets one thing: the cup for Alice, the apple for Bob and the crisps for Carol.",
         "Those two mugs want to go on the counter, please.",
         "Drop all three of the pens into the box, they keep rolling off.",
-        "Load the three boxes onto the belt, small, medium and large.",
         "Two spanners, one to Kofi and one to Jess.",
         "Person B is moving desks, so every last one of the four items goes across to her.",
         "Jess needs some screws, give her the tin.",
@@ -314,12 +305,9 @@ KNOWN_MISSES = frozenset(
         "Bob doesn't want the bottle at all, it's the crisps he's after.",
         "Alice doesn't want the crisps. The bottle's the one for her.",
         "Person A will take anything at all as long as it isn't the cup.",
-        "Bob wants the cup. Sorry, my mistake, it's the apple he wants.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
-        "Give Ava the red block, oh silly me, she wants the green one.",
         "Person A gets the bottle, correction, Person A gets the chips, the bottle stays put.",
-        "Hand the chips to Person A, whoops, wrong one, I meant Person B.",
         "Give Person B the apple and the cup, well, not the cup, just the apple.",
         "Bottle on the shelf, no wait, to Alice.",
         "Crisps to Bob, ah, not Bob, Alice.",
@@ -360,7 +348,6 @@ KNOWN_MISSES = frozenset(
         "Both of them, bottle and chips, go to Person A, she's got the picnic.",
         "Whichever of the two people is closer can have the bottle.",
         "All three of the boxes want to go on the conveyor, in whatever order suits you.",
-        "All three pens in the box, please, I'm clearing the desk.",
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
         "Person B's order is three things, namely the chips, the cup, and the apple.",
@@ -372,31 +359,19 @@ KNOWN_MISSES = frozenset(
         "Alice needs a mug, but the red one's got a crack, so not that one.",
         "Person B can have anything except the apple.",
         "The tape to Mia, no hang on, Tom, Mia's on her break.",
-        "The banana for Omar. Actually, change that to Dana.",
         "Bib to Ava, oh no, she's too big for bibs, to Lily.",
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
-        "Chips for Person A, oops, wrong one, Person B.",
-        "Person A wants the bottle. Sorry, I misheard her, it's the chips she wants.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
         "the apple over to person b when u can",
         "the crisps r alice's, the bottle goes to bob",
         "shelf for the chips, bob for the bottle, ta",
-        "Gardener here again, sorry, the globr wants moving onto the desk, please.",
-        "Person A's parched after the heat, run the botrle over to her.",
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
-        "Would you mind awfully tidying the red pen away into the box?",
         "Would Person B like the apple? Give it to her, yes?",
         "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "Morning! I've been up since four with the sourdough, so excuse the flour on "
-        "everything. Would you be a darling and bring Carol the red mug? Cheers, my love.",
-        "Evening. Um, sorry, only if it isn't too much trouble, the apple across to Person A, "
-        "please. Thanks awfully, you're a gem.",
-        "Hello po, good morning po. Kindly give the bottle to Person A po, if okay with you. "
-        "Thank you so much po, God bless.",
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
         "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
         "terribly passing Sam the notepad? Thanks a bunch.",
@@ -405,14 +380,12 @@ KNOWN_MISSES = frozenset(
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
-        "Person A's gasping after her run, she really needs that bottle.",
         "Person B wants the bottle and the chips both, he's off to watch the football.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
-        "Bob's thirsty from the ride, so take him over the bottle.",
         "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
@@ -425,19 +398,15 @@ KNOWN_MISSES = frozenset(
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Give Carol one of the mugs, she really doesn't care which.",
         "Anything at all for Person A, just the one item, whatever you grab first.",
         "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
         "having the cup.",
         "Person A and Person B both want a drink, so the bottle to one and the cup to the "
         "other, whichever way round.",
-        "Stick a cup in the sink to soak, green or white, I'm not bothered.",
         "Each student gets a book, you choose who gets which.",
         "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
-        "We're clearing up for the professor's seminar, so both cups, green and white, onto the "
-        "tray.",
         "The two smaller boxes onto the conveyor.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
@@ -451,12 +420,9 @@ KNOWN_MISSES = frozenset(
         "Not to Lily, she'll only chew it; give the teddy to Ava.",
         "Chips for Bob, ah, no, wrong way round, Alice is the one wanting chips.",
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
-        "Bottle to Person B. Hang on, I misspoke, chips to Person B.",
-        "Cup over to Person A... nope, I've read the ticket wrong, it's Person B's.",
         "The apple for Person B, I mean the bottle, leave the apple.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
         "Black pen to Priya, oh, she marks in red, so the red one instead.",
-        "Magazine to Mr Lee, oh I've got that wrong, it was Mrs Khan who asked for it.",
         "Scanner to Tom. No, not Tom, Mia's the one who asked.",
         "bob's been on the bike all day give him the bottle thx",
         "sorry typing one handed, chips to person b",
@@ -465,7 +431,6 @@ KNOWN_MISSES = frozenset(
         "Person B wants a snack, the xhips please.",
         "The sponhe can go in the sink now it's been used.",
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
-        "Put the globw on the desk ready for geography.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
         "How about letting Person A have the bottle, seeing as she's the thirsty one?",
@@ -476,12 +441,6 @@ KNOWN_MISSES = frozenset(
         "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Afternoon! I'm the optician from the high street, just dropping the new frames round. "
-        "Um, if it's all the same to you, the bottle over to Person B, please. Ta ever so.",
-        "Morning all! Only just come off the gallops, so forgive the mud on my boots. Could you "
-        "be a sweetheart and pass Person A that bottle? Cheers, you're a star.",
-        "Oh, sorry, I've got clay up to my elbows from the wheel. Would you mind awfully letting "
-        "Person B have the chips? You're a treasure.",
         "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
         "so good, pass Priya the red pen. Many thanks indeed.",
         "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
@@ -495,7 +454,6 @@ KNOWN_MISSES = frozenset(
         "breakfast.",
         'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
         'pallet before he goes.',
-        'Zoe wants the ruler and Noah needs the glue stick, they told me while I was mopping.',
         "Lily wants her teddy bear, she won't settle for the hymn practice without it.",
         'You see the red mug by the window? Take it across to Alice, would you.',
         'Alice was on about the crisps before the anthem, could you take them over to her?',
@@ -511,12 +469,8 @@ KNOWN_MISSES = frozenset(
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
-        'Stapler to Sam, notebook to Priya and the black pen into the box and then I can get the '
-        'tape measure out.',
         "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
         "see it.",
-        "Drill on the bench then hammer in the locker then torch to Jess and I'll give you a trim "
-        "after.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
@@ -525,9 +479,7 @@ KNOWN_MISSES = frozenset(
         "Give Person A the apple, there is only one only, don't worry.",
         'Both items over to Person A, the pair of them, before her next patient.',
         "Just the one bottle for Person A, that's all she's allowed before the race.",
-        'All three pens go in the box, I need the desk for my pattern paper.',
         'Both plates onto the counter, Marco wants to plate up the goulash.',
-        "Both books on the teacher's desk, I need to do the shelves.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
@@ -537,9 +489,7 @@ KNOWN_MISSES = frozenset(
         "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
         'Give Person A the chips, sorry, not chips, the cup, my mistake my friend.',
         'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
-        'Apple to Person A, no, sorry, to Person B, I make mistake.',
         'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
-        "Bottle to Person A, no, wait, yes, that's right, Person A, carry on.",
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
@@ -549,7 +499,6 @@ KNOWN_MISSES = frozenset(
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         'chios for Person B lah, she asked me just now',
-        'Put the stspler in the box, I need the desk clear for the cloth.',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
@@ -559,13 +508,8 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
         'much.',
-        "Please could you just put the green cup on the tray, then I'll get the next patient "
-        'through, thanks.',
-        "If you wouldn't mind terribly, the notepad to Sam, and the stapler to Priya, ever so "
-        'grateful.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
-        'Carol would like to have the blue mug, and Bob also the apple, he told me before.',
         'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
@@ -581,7 +525,6 @@ KNOWN_MISSES = frozenset(
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
-        'Any pen to Sam, black or blue or red, all same for him.',
         'Whichever box is smallest goes to Tom.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
@@ -592,7 +535,6 @@ KNOWN_MISSES = frozenset(
         'The two blocks in the high chair for Lily to play with.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
         'Give Person A the chips but not the apple, and not the cup either.',
-        'The chips are not for Person A, I tell you, they are for Person B.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
         "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
@@ -602,11 +544,8 @@ KNOWN_MISSES = frozenset(
         'Bottle to Bob, eh sorry, wrong, to Alice I mean.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
-        "Bottle to, no hang on, yes, Person A, it's only her.",
-        "Give Person A the bottle, no wait, yeah, that's right, the bottle.",
         'person b gets the apple to start with, and then after it person a gets the chips',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
-        "sam's asked for the notepad and priya for the stapler, i'm just trimming the spines",
         'the red book goes back up on the bookshelf with the others',
         'Person A is hungry, please bring her the alple from the end.',
         'The chips are meant for Peraon A, could you take them over.',
@@ -616,17 +555,13 @@ KNOWN_MISSES = frozenset(
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         'Quick one before the school bell: bottle to Person B, please and thank you.',
-        "Person A has asked me twice now for the chips, she's starving after the tyre change.",
         "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
         'furnace.',
         "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
-        "Person A's peckish after the audiology clinic, so the apple or else the chips, she's "
-        'not bothered which.',
         'Wash-up time: both cups into the sink, green and white alike.',
         "Both spanners to Kofi, he can't find his set.",
-        "The chips aren't for Person A, they're for Person B, she's the one who paid.",
         'Mr Lee said the blue blanket itches, so give him the other one.',
         'Crisps to Alice, sorry, I mean Bob, Alice is off crisps.',
         "Cup for Person B, no, sorry, the apple, the cup's got a crack.",
@@ -636,16 +571,7 @@ KNOWN_MISSES = frozenset(
         'start off with crisps for alice and after that bob needs his bottle',
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
-        "Could the apple go on the table, I've got puppets all over the shelf?",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Sorry to be a pain, could Carol have the red mug? I'd do it myself but I've got gold "
-        "leaf stuck to every finger.",
-        "Bottle to Person A, please and thank you, I can't touch a thing with ink on these nibs.",
-        "Excuse me, sorry, would you mind giving Mrs Khan the magazine? Thank you so much, I'm "
-        "only here to take bloods.",
-        "Right so first Alice gets her bottle and then Bob wants his crisps and after that I'm "
-        "back to re-covering this armchair.",
-        "Right. Person A, she gets the bottle. Person B, the chips are his. I'm back at the loom.",
         "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
         "The bottle to either of them, whoever's nearer.",
         "Give them a thing each, the bottle and the chips, don't care who gets which.",
@@ -659,7 +585,6 @@ KNOWN_MISSES = frozenset(
         "Sam gets the pens, all except the blue one, that stays where it is.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
-        "Person A, the bottle — no, yes, the bottle, that's right.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",

@@ -6849,8 +6849,8 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
 _CUE19 = (
     # session 25: 'ah no', 'eh sorry', 'sorry, wrong'
     r"(?:(?:no,? |(?:eh|ah),? no,? |(?:oh|eh|ah),? )?(?:sorry|so sorry)(?:,? (?:no|wrong))?"
-    r"(?:,? i mean)?|whoops|oops|"
-    r"(?:no,? )?my (?:mistake|bad)|pardon me|i mean|i misspeak|i misspoke|let me rephrase|"
+    r"(?:,? i meant?)?|whoops|oops|"  # session 29 (12s): 'I meant' whole, not 'I mean' + 't'
+    r"(?:no,? )?my (?:mistake|bad)|pardon me|i meant?|i misspeak|i misspoke|let me rephrase|"
     r"(?:or )?rather|(?:no,? )?(?:strike|scratch|belay|revert|cancel) that(?: order)?|"
     r"(?:wait|no wait|no),? (?:revert|scratch|strike|cancel) that|correction|"
     r"no,? (?:wait|hold on|hang on)|(?:eh|ah),? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)"
@@ -8404,8 +8404,11 @@ def _while26(text: str, lexicon: Lexicon) -> str:
 # is refused ("give me the cup", "I need the cup", "I'd like it", "then I'll have it").
 _SPEAKER_OPEN = re.compile(
     r"^(?:(?:and|so|then|while|whilst|as|because|cos|since|but|oh|well|now|look)\s+)*"
+    r"(?:(?:after that|afterwards|after this),?\s+)?"  # session 29 (12s): _speaker_plan29s
     r"(?:i(?:'m|'ve|'ll|'d)?|my (?:[a-z]+ ){1,2}(?:is|are|was|were|has|have|keeps?)|"
-    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me)\b",
+    r"my (?:[a-z]+ )?[a-z]+'s|it's (?:my|only me|just me)|that's me|"
+    # session 29 (12s): "(I've) only just come off the gallops": the speaker's 'I've' left out
+    r"(?:only |just ){1,2}(?:come|got|been|arrived|finished)(?= (?:off|in|back|from|out|up)\b))\b",
     _F,
 )
 # what may follow such a stretch in its sentence, still about the speaker
@@ -8447,10 +8450,58 @@ _SPEAKER_TIMES = re.compile(
 )
 
 
+# Session 29 (12s): the speaker's own next act, said with a verb of the grammar ("then I can get
+# the tape measure out", "and I'll give you a trim after", "then I'll get the next patient
+# through", "I'm only here to take bloods", "and after that I'm back to re-covering this
+# armchair"): the speaker is the verb's subject (or 'here to' says why they came), so the verb
+# asks the robots for nothing. The words after the verb up to the stretch's end must name nothing
+# in the scene (the stretch's rule) and hold no pronoun or count that could stand for what the
+# request names ('I'll take it', 'I can get the other one', 'I'll give him both'), and no 'me'
+# ('I'll get me the cup' asks); an 'after' / 'afterwards' / 'later' closing it orders only the
+# speaker's act. "after that" / "afterwards" opening such a stretch is when the speaker does it.
+_SPEAKER_DOES29S = re.compile(
+    r"\b(?:i(?:'ll|'d| will| would| can| could| must| shall|'m going to| am going to)?|"
+    r"(?:here|in|over|round) to) (?:just |then |quickly )?(?:give|get|take|bring|fetch|grab|put|"
+    r"move|carry|send|set|keep|leave|drop|pop|pass|hand)\b"
+    r"(?P<what>(?: (?!(?:it|them|that|this|those|these|one|ones|both|all|each|either|other|"
+    r"another|else|rest|me|him|her|us|first|next|last)\b)[a-z'-]+)+?)"
+    r"(?: (?:after|afterwards|later))?$",
+    _F,
+)
+_SPEAKER_AFTER29S = re.compile(
+    r"^(?:(?:and|so|then) )?(?:after that|afterwards|after this),? (?=i\b|i'm\b|i'll\b)", _F
+)
+
+
+# 'every' / 'each' before a word that is no name of the scene ("I've got gold leaf stuck to every
+# finger"): counts the speaker's own things, not the scene's (the stretch must still name
+# nothing); 'every one', 'each of them', 'every thing' are left held
+_SPEAKER_EVERY29S = re.compile(
+    r"\b(?:every|each) (?!(?:ones?|things?|items?|bits?|of|the|them|those|these|it|person|"
+    r"people|body|way)\b)[a-z]+\b",
+    _F,
+)
+# 'not … a thing' ("I can't touch a thing", "I didn't say a thing"): nothing, no object
+_NOT_A_THING29S = re.compile(r"(?:n't|\bnot) (?:[a-z]+ )?a (?:single )?thing\b", _F)
+
+
+def _speaker_plan29s(piece: str) -> str:
+    """``piece`` (a stretch of the speaker's) without the speaker's own next act said with a verb
+    of the grammar, and without 'after that' opening it (the rule above), nor 'every <word of no
+    name>'; as it was otherwise."""
+    piece = _SPEAKER_EVERY29S.sub("", _SPEAKER_AFTER29S.sub("", piece.strip()))
+    m = _SPEAKER_DOES29S.search(piece)
+    if m is None or not _SPEAKER_OPEN.match(piece):
+        return piece
+    return piece[: m.start()]
+
+
 def _held_but_times(piece: str) -> bool:
     """Whether ``piece`` holds a word of _SPEAKER_HELD outside the speaker's own times and places
-    (_SPEAKER_TIMES)."""
-    return bool(_SPEAKER_HELD.search(_SPEAKER_TIMES.sub(" ", piece)))
+    (_SPEAKER_TIMES) and the speaker's own next act (_speaker_plan29s)."""
+    return bool(
+        _SPEAKER_HELD.search(_speaker_plan29s(" ".join(_SPEAKER_TIMES.sub(" ", piece).split())))
+    )
 
 
 # what may open the sentence of such a stretch, taken off with it
@@ -8489,7 +8540,11 @@ def _speaker_stretch(
     their own things or a sentence that asks nothing), naming nothing in the scene and asking
     nothing."""
     piece = piece.strip(" .!?")
-    if not piece or _held_but_times(piece) or not _names_nothing(piece, lexicon):
+    if (
+        not piece
+        or _held_but_times(piece)
+        or not _names_nothing(_NOT_A_THING29S.sub(" ", piece), lexicon)
+    ):
         return False
     return bool(
         _SPEAKER_OPEN.match(piece)
@@ -8537,7 +8592,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
         # before the speaker to the mark
         cut = _rx(
             r"\s+(?=(?:and then|and|so|then|while|whilst|as|because|cos|since)\s+"
-            r"(?:i|i'm|i've|i'll|i'd|my)\b)"
+            r"(?:(?:after that|afterwards),?\s+)?(?:i|i'm|i've|i'll|i'd|my)\b)"
         ).search(piece)
         head, tail = (piece[: cut.start()], piece[cut.end() :]) if cut else ("", piece)
         remark = _speaker_stretch(tail, spoke, lexicon, right_after=after and not head)
@@ -8601,10 +8656,13 @@ _ASIDES22: tuple[tuple[str, str], ...] = (
     (r"\s*,\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\s*[.!]?\s*$)", ""),
     # "…, go on", "…, go on then": urging
     (r"\s*,\s*go on(?:,? then)?(?=\s*[.!]?\s*$)", ""),
-    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end
+    # session 27: "…, he told me so himself", "…, she said so": who said it is so, at the end;
+    # session 29 (12s): "…, he told me before", "…, they told me while I was mopping" (when, and
+    # what the speaker was doing then)
     (
         r"\s*,\s*(?:he|she|they) (?:told me so|said so|told me|said as much)"
-        r"(?: (?:himself|herself|themselves|earlier|just now|this morning))?(?=\s*[.!]?\s*$)",
+        r"(?: (?:himself|herself|themselves|earlier|before|just now|this morning|yesterday))?"
+        r"(?:,? (?:while|when|as) i was [a-z]+ing(?: (?:up|out|round|about))?)?(?=\s*[.!]?\s*$)",
         "",
     ),
 )
@@ -8822,7 +8880,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
             # "… and then, sorry, the chips to Person A": a pause after a conjunction
             return f"{before} {after}"
-        after = _sub(r"^(?:no|sorry|i misspeak|i mean),?\s*", "", after)
+        after = _sub(r"^(?:no|sorry|i misspeak|i meant?)\b,?\s*", "", after)  # (29s: 'I meant')
         if _VERB_NEXT19.match(after) and _only_person(re.split(r"[,.;]", before)[-1], lexicon):
             # "Alice, sorry, wants the crisps": a pause before the verb, not a correction
             return f"{before} {after}"
@@ -10993,6 +11051,627 @@ def _described_list27(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 29 (12s): the speaker talking about themself, by kind ---------------------------------
+
+# The speaker owning a slip ('I make mistake', 'I made a mistake', "I've got that wrong", 'silly
+# me'): after the correction that mends it, closing the text ("Apple to Person A, no,
+# sorry, to Person B, I make mistake."), it says why the correction was made, and is taken off;
+# between a request and what replaces it ("Give Ava the red block, oh silly me, she wants the
+# green one.") it is the correction's cue, said as the grammar's ', no, '. Either way it must name
+# nothing, and the correction must then read as any other (the cue's rule).
+_SLIP29S = (
+    r"(?:i (?:make|made|'ve made|have made) (?:a |my )?mistake|"
+    r"i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me|"
+    r"i(?:'ve| have)? (?:read|heard|got|misread|misheard) (?:the|that|it|my) (?:[a-z]+ )?wrong)"
+)
+# a cue right before the slip: the slip is said of it ("…, nope, I've read the ticket wrong, …")
+_CUE_LAST29S = re.compile(
+    r"(?:,|\.\.\.|…)\s*(?:no|nope|nah|sorry|oops|whoops|oh no|no sorry)\s*$", _F
+)
+_SLIP_LAST29S = re.compile(rf"\s*,\s*(?:(?:sorry|oops|whoops),?\s*)?{_SLIP29S}\s*[.!]*\s*$", _F)
+_SLIP_CUE29S = re.compile(rf"\s*,\s*(?:oh,?\s*)?{_SLIP29S}\s*,\s*", _F)
+
+
+def _slip_owned29s(text: str, lexicon: Lexicon) -> str:
+    """The speaker owning a slip (above): taken off after a correction, or said as its cue."""
+    last = _SLIP_LAST29S.search(text)
+    if last is not None:
+        head = text[: last.start()]
+        if _CUE_BEFORE29S.search(head) and _names(head, lexicon):
+            return head + "."
+        return text
+    cue = _SLIP_CUE29S.search(text)
+    if (
+        cue is None
+        or not _names(text[: cue.start()], lexicon)
+        or not text[cue.end() :].strip(" .!")
+    ):
+        return text
+    if _CUE_LAST29S.search(text[: cue.start()]):
+        return f"{text[: cue.start()]}, {text[cue.end() :]}"  # the cue said just before it
+    if not _CUE_BEFORE29S.search(text[: cue.start()] + ","):  # else the cue is one already
+        return f"{text[: cue.start()]}, no, {text[cue.end() :]}"
+    return text
+
+
+# "…, no, it's Person B's" closing a correction of whom a delivery goes to: the object is that
+# person's, 'it's for Person B' (the person one whole name of the scene)
+_CUE_NO29S = r"(?P<cue>(?:,|\.\.\.|…)\s*no,\s*)"
+_ITS_HIS29S = rf"{_CUE_NO29S}it(?:'s| is| was) (?P<who>{_PERSON28S})'s\s*(?P<end>[.!]?)\s*$"
+
+
+# "…, no, it was Mrs Khan who asked for it": the cleft after the cue, as session 11's "It's Carol
+# who needs …" opening a text: 'Mrs Khan asked for it'
+_CLEFT_AFTER_CUE29S = rf"{_CUE_NO29S}it(?:'s| is| was) (?P<who>{_PERSON28S}) (?:who|that) (?=[a-z])"
+
+
+def _its_persons29s(text: str, lexicon: Lexicon) -> str:
+    """ "…, no, it's Person B's": "…, no, it's for Person B"; "…, no, it was Mrs Khan who asked
+    for it": "…, no, Mrs Khan asked for it" (above)."""
+    text = _for_person29s(
+        _ITS_HIS29S, text, lexicon, lambda m: f"{m['cue']}it's for {m['who']}{m['end']}"
+    )
+    return _for_person29s(_CLEFT_AFTER_CUE29S, text, lexicon, lambda m: f"{m['cue']}{m['who']} ")
+
+
+# A gapped clause with 'also' / 'too' between its person and its object ("Carol would like the
+# blue mug, and Bob also the apple"): the verb is the clause's before it, and 'also' marks the
+# clause as one more, as ', and Bob the apple' does; 'also' there says nothing of the object (read
+# as 'the apple too', it gave the blue mug to Bob as well). The word before it must be one whole
+# name of a person of the scene, after ', and' / 'and'; an object after it ('and the cup also the
+# apple') or none ('and Bob also') is left.
+_GAPPED29S = (
+    rf"(?P<head>,?\s+and\s+)(?P<who>{_PERSON28S})\s+(?:also|too)\s+"
+    r"(?=(?:the|a|an|his|her|their)\s+[a-z])"
+)
+
+
+def _for_person29s(
+    pattern: str,
+    text: str,
+    lexicon: Lexicon,
+    said: Callable[[re.Match[str]], str],
+    what: str = "object",
+) -> str:
+    """``text`` with each match of ``pattern`` whose group 'who' is one whole name of a person of
+    the scene said as ``said`` gives (and, where ``pattern`` has a group 'what', that is one
+    whole name of one thing of kind ``what``; a he / she / his / her in the match must fit the
+    person, as far as a title says); other matches as they were."""
+
+    def one(m: re.Match[str]) -> str:
+        who = m.group("who").strip()
+        named = _only(who, lexicon, "human")
+        if named:
+            named = _fits(next(iter(_ids(who, lexicon, "human"))), m.group(0), lexicon)
+        if named and "what" in m.groupdict():
+            named = _only(m.group("what"), lexicon, what)
+        return said(m) if named else m.group(0)
+
+    return _sub(pattern, one, text)
+
+
+def _gapped_also29s(text: str, lexicon: Lexicon) -> str:
+    """'…, and Bob also the apple': 'also' taken out of the gapped clause (above)."""
+    return _for_person29s(_GAPPED29S, text, lexicon, lambda m: f"{m['head']}{m['who']} ")
+
+
+# 'his' / 'her' / 'their' right after a person's want ("… and then Bob wants his crisps"): the
+# possessive is the wanting person's (as session 11's 'once Bob has had his chips'), and says no
+# more of the object than 'the' when the words after it are one whole name of one object of the
+# scene; with two people named, the grammar had taken 'his' as a reference to be resolved. Two
+# objects of the name ('Bob wants his mug', two mugs) or a name that is not whole stay as said.
+_OWN_WANT29S = (
+    rf"\b(?P<who>{_PERSON28S}) (?P<verb>wants|needs|would like|'d like|is asking for|asked for|"
+    r"has asked for) (?:his|her|their) (?P<what>[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|and\b|$))"
+)
+
+
+def _own_want29s(text: str, lexicon: Lexicon) -> str:
+    """'Bob wants his crisps': 'the crisps' (above)."""
+    return _for_person29s(
+        _OWN_WANT29S, text, lexicon, lambda m: f"{m['who']} {m['verb']} the {m['what']}"
+    )
+
+
+# After a placement, the speaker saying what they are doing with another surface, or that they
+# need it ("All three pens in the box, please, I'm clearing the desk.", "…, I need the desk for
+# my pattern paper.", "…, I need to do the shelves.", "Could the apple go on the table, I've got
+# puppets all over the shelf?"): why the objects go where they go, asking nothing (a surface is
+# never handed over). Taken off when it closes the text, its verb is one of these, the surface it
+# names is not where the request puts anything, the request before it puts something on a
+# surface, and what else it says names nothing in the scene.
+_SURFACE_BUSY29S = re.compile(
+    r"\s*,\s*(?:(?:and|so|as|because|cos|since) )?(?:"
+    r"i(?:'m| am) (?:just |busy )?(?:clearing|cleaning|wiping|tidying|using|working on|doing|"
+    r"dusting|sorting|painting|polishing) (?P<a>(?:the|my) [a-z]+)|"
+    r"i need (?P<b>(?:the|my) [a-z]+)(?: (?:clear|free|empty))?"
+    r"(?: for (?:my |the |a |an |some )?[a-z]+(?: [a-z-]+){0,2})?|"
+    r"i need to (?:do|clean|wipe|clear|dust|tidy|use|sort|paint|polish) (?P<c>(?:the|my) [a-z]+)|"
+    r"i(?:'ve| have) got (?:[a-z]+ ){1,2}all over (?P<d>(?:the|my) [a-z]+))"
+    r"\s*[.!?]*\s*$",
+    _F,
+)
+
+
+def _surface_busy29s(text: str, lexicon: Lexicon) -> str:
+    """The speaker busy with, or needing, another surface after a placement (above): taken off."""
+    m = _SURFACE_BUSY29S.search(text)
+    if m is None:
+        return text
+    where = next(g for g in m.group("a", "b", "c", "d") if g)
+    head = text[: m.start()]
+    surface = _ids(where, lexicon)
+    targets = _ids(head, lexicon, "surface")
+    if (
+        len(surface) != 1
+        or _ids(where, lexicon, "surface") != surface
+        or not targets
+        or surface & targets
+        or _ids(m.group(0).replace(where, " "), lexicon)
+        or re.search(r"\b(?:me|my|i)\b", head, _F)
+    ):
+        return text
+    return head + ("?" if m.group(0).rstrip().endswith("?") else ".")
+
+
+# A surface said as a person's ('on the teacher's desk', "in Grandad's locker"): after 'on' /
+# 'onto' / 'in' / 'into', the possessive says whose it is, and the surface is the one the name
+# means alone; the person must be one whole name of a person of the scene (or 'the <role>' of
+# one), the surface one whole name of one surface. Two surfaces of the name, or a possessor who
+# is no one of the scene, are left (refused as before).
+_OWNED_SURFACE29S = (
+    rf"\b(?P<on>on|onto|on to|in|into|on top of) (?P<who>(?:the )?(?:{_PERSON28S}))'s "
+    r"(?P<what>[a-z]+(?: [a-z]+)?)\b(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _owned_surface29s(text: str, lexicon: Lexicon) -> str:
+    """'on the teacher's desk': 'on the desk' (above)."""
+    return _for_person29s(
+        _OWNED_SURFACE29S, text, lexicon, lambda m: f"{m['on']} the {m['what']}", "surface"
+    )
+
+
+# 'not bothered', 'not fussed', "doesn't care" leaving a choice open ("Give Carol either of the
+# mugs, she's not fussed which", "…, green or white, I'm not bothered", "…, red or blue, not
+# bothered", "she really doesn't care which"): said as "<who> doesn't mind", the choice tail the
+# grammar reads (with 'which' / 'which of them' / 'what' after it, or alone after a choice), and
+# which leaves the request as it was where nothing is open ('Give Carol the red mug, I don't
+# mind'). Only as a clause of its own, between commas or closing the text.
+_NOT_FUSSED29S = re.compile(
+    r"(?P<lead>,\s*)(?:(?P<who>i|she|he|they)(?:'m|'s|'re| am| is| are) (?:really |honestly )?"
+    r"not (?:bothered|fussed|fussy|particular)|(?P<who2>i|she|he|they) (?:really |honestly )?"
+    r"(?:don't|doesn't|do not|does not) care|not (?:bothered|fussed))"
+    r"(?P<tail>(?: (?:which|what)(?: (?:one|of them|of the two))?)?)(?=\s*(?:[.!,;]|$))",
+    _F,
+)
+
+
+def _not_fussed29s(text: str, _lexicon: Lexicon) -> str:
+    """'she's not fussed which': "she doesn't mind which" (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        who = (m.group("who") or m.group("who2") or "i").lower()
+        verb = "don't" if who in ("i", "they") else "doesn't"
+        return f"{m.group('lead')}{'I' if who == 'i' else who} {verb} mind{m.group('tail')}"
+
+    return _sub(_NOT_FUSSED29S.pattern, said, text)
+
+
+# What brought a person's state on ("Person A's parched after the heat", "Bob's thirsty from the
+# ride", "she's starving after the tyre change", "Person A's gasping after her run"): the cause,
+# after 'after' / 'from' following a word of need or tiredness, is taken off (the state alone is
+# the remark the grammar already reads: "Person A's parched, run the bottle over to her."). The
+# cause must name nothing in the scene and hold no pronoun, count or verb that could say what
+# happens to the scene's objects ('thirsty after that', 'hungry after she gets the chips',
+# 'hungry after the apple' stay as said).
+_STATE_CAUSE29S = re.compile(
+    r"(?P<state>(?:'s|'re|\bis|\bare|\bwas|\bwere) (?:really |so |very |absolutely |proper |"
+    r"well |just )?(?:thirsty|hungry|parched|gasping|peckish|starving|famished|ravenous|cold|"
+    r"freezing|frozen|tired|knackered|shattered|exhausted|worn out|sore|sticky|filthy|soaked|"
+    r"drenched|dry|boiling|roasting|sweaty|dusty)) (?P<cause>(?:after|from) [a-z' -]+?)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_CAUSE_HELD29S = re.compile(
+    r"\b(?:it|them|that|this|those|these|one|ones|both|all|each|give|gives|gave|gets|got|get|"
+    r"has|had|have|hand|handed|bring|brought|put|want|wants|need|needs|he|she|they|i|you|giving|"
+    r"getting|handing|bringing|putting|having)\b|\d",
+    _F,
+)
+
+
+def _state_cause29s(text: str, lexicon: Lexicon) -> str:
+    """'Person A's parched after the heat': "Person A's parched" (above)."""
+    return _sub(
+        _STATE_CAUSE29S.pattern,
+        lambda m: (
+            m.group("state")
+            if not _CAUSE_HELD29S.search(m.group("cause"))
+            and _names_nothing(m.group("cause"), lexicon)
+            else m.group(0)
+        ),
+        text,
+    )
+
+
+# A person who has asked the speaker for something ("Person A has asked me twice now for the
+# chips"): the one asked is not who gets it ('ask <someone> for X': the asker wants X), so 'me'
+# and how often are taken out, leaving '<person> has asked for', which the grammar reads as a
+# want. The asker must be one whole name of a person of the scene, first in its clause.
+_ASKED_ME29S = (
+    rf"(?P<who>(?:^|(?<=[.;!?,])\s*)(?:{_PERSON28S})) (?:has asked|'s asked|asked|has been asking|"
+    r"'s been asking|keeps asking) me(?: (?:twice|three times|again|already|twice now|again now|"
+    r"all morning|all day|nicely))? for\b"
+)
+
+
+def _asked_me29s(text: str, lexicon: Lexicon) -> str:
+    """'Person A has asked me twice now for the chips': 'Person A has asked for the chips'."""
+    return _for_person29s(_ASKED_ME29S, text, lexicon, lambda m: f"{m['who']} has asked for")
+
+
+# The kind's objects listed by their colour or size after the words that name them ("both mugs,
+# red and blue, up on the shelf", "Sorry, both mugs, the red and the blue, could they …", "Load
+# the three boxes onto the belt, small, medium and large.", "Hand Jess a spanner, big or small,
+# …"): an apposition saying which they are. With 'and' the clause before it must name exactly the
+# listed objects, by a plural of their kind ('both mugs', 'the three boxes'); with 'or', one of
+# their kind ('a spanner', 'one of the mugs', 'either mug') where the listed ones are all of that
+# kind. Each word must name, with the kind's name, one object of the kind, none twice. The list is
+# then taken off (the plural or the choice says it already); two of three boxes after 'the three
+# boxes', a choice after a plural, a list after one object named ('the red mug, red and blue'), or
+# a word naming nothing are left as said (refused).
+_KIND_LIST29S = (
+    r"(?P<lead>,\s*)(?P<list>(?:the )?(?:{a})(?: one)?(?:(?:,\s*|\s+)(?:(?:and|or)\s+)?"
+    r"(?:the )?(?:{a})(?: one)?){{1,3}})(?=\s*(?:[,.!?]|$))"
+)
+
+
+def _kind_adjectives29s(text: str, lexicon: Lexicon) -> str:
+    """'both mugs, red and blue, …': the list taken off (above)."""
+    adjectives = _adjectives(lexicon)
+    if not adjectives:
+        return text
+    alternatives = "|".join(sorted(map(re.escape, adjectives), key=len, reverse=True))
+    for m in _rx(_KIND_LIST29S.format(a=alternatives)).finditer(text):
+        said = m.group("list").lower()
+        joins = set(re.findall(r"\b(?:and|or)\b", said))
+        words = [
+            w for w in re.split(r",\s*|\s+", re.sub(r"\b(?:and|or|the|one)\b", " ", said)) if w
+        ]
+        if len(joins) != 1 or len(words) < 2 or any(w not in adjectives for w in words):
+            continue
+        head = text[: m.start()]
+        start = max(head.rfind(c) for c in ".!?;:")
+        clause = head[start + 1 :]
+        kinds = set.intersection(*(set(adjectives[w]) for w in words))
+        if len(kinds) != 1:
+            continue
+        kind = next(iter(kinds))
+        every = {o.id for o in lexicon.scene.objects if o.category == kind}
+        listed: set[str] = set()
+        for w in words:
+            ids = {i for i in _ids(f"the {w} {kind}", lexicon, "object") if i in every}
+            if len(ids) != 1 or ids & listed:
+                break
+            listed |= ids
+        else:
+            named = _ids(clause, lexicon, "object")
+            if named & every != named or not named:
+                continue  # the clause names other objects too: which the list is about is unclear
+            kinds_said = rf"{re.escape(kind)}(?:s|es)"
+            plural = re.search(
+                rf"\b(?:both|the|all|those|these|all the)(?: (?:two|three|four))? {kinds_said}\b|"
+                rf"\bboth (?:of the )?{kinds_said}\b",
+                clause,
+                _F,
+            )
+            one = re.search(
+                rf"\b(?:an? {kind}|one of the {kinds_said}|either {kind}|any {kind})\b", clause, _F
+            )
+            if (joins == {"and"} and plural and not one and named == listed) or (
+                joins == {"or"} and one and not plural and listed == every
+            ):
+                return text[: m.start()] + text[m.end() :]
+    return text
+
+
+# 'wrong one' / 'wrong person' / 'wrong thing' right after a correction's cue ("Hand the chips
+# to Person A, whoops, wrong one, I meant Person B.", "Chips for Person A, oops, wrong one, Person
+# B."): the cue said again, taken off; without a cue before it, it is the cue (', no, '). What
+# follows must be more words (a correction to read); 'wrong way round' (a swap) is not this.
+_WRONG_ONE29S = re.compile(
+    r"(?P<cue>,\s*(?:(?:oh |ah )?(?:no|nope|oops|whoops|sorry|oh no|ah no)\s*,?\s*)?)"
+    r"wrong (?:one|person|thing|item)\s*,\s*(?=[a-z])",
+    _F,
+)
+
+
+def _wrong_one29s(text: str, _lexicon: Lexicon) -> str:
+    """'…, whoops, wrong one, I meant Person B': the cue once (above)."""
+    return _sub(
+        _WRONG_ONE29S.pattern,
+        lambda m: m.group("cue").rstrip(" ,") + ", " if m.group("cue").strip(" ,") else ", no, ",
+        text,
+    )
+
+
+# The speaker saying who they are with 'here' ("Alright mate, bus driver here, …", "Hiya,
+# zookeeper here for the school visit, …", "Gardener here again, sorry, …"): a self-introduction
+# at a sentence's start or after its opener, asking nothing; taken off when its words name
+# nothing in the scene (a person of the scene saying 'Alice here' is who 'me' is, left) and hold
+# no word that could ask, point or count (_REMARK_HELD: 'it here', 'the two here', 'put … here').
+_HERE_I_AM29S = re.compile(
+    r"(?:^|(?<=[.!?,]))\s*(?P<who>(?:[a-z]+ ){0,2}[a-z]+) here(?P<more> again| for (?:the |a |an |"
+    r"your |my |our )?[a-z]+(?: [a-z]+){0,2})?\s*(?:,\s*|(?=[.!?;]|$))",
+    _F,
+)
+
+
+def _here_i_am29s(text: str, lexicon: Lexicon) -> str:
+    """'bus driver here, …': taken off (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        words = f"{m['who']} {(m['more'] or '').replace(' for ', ' ').replace(' again', '')}"
+        if _REMARK_HELD.search(words) or not _names_nothing(words, lexicon):
+            return m.group(0)
+        return " " if m.start() > 0 else ""
+
+    out = _sub(_HERE_I_AM29S.pattern, said, text)
+    return " ".join(out.split()) if out != text and _names(out, lexicon) else text
+
+
+# A condition that only asks kindly ("if it's all the same to you", "if that works for you", "if
+# okay with you", "only if it isn't too much trouble", "if it's no bother", "forgive me if I get
+# this wrong", "if you wouldn't mind terribly"): it sets no condition on the request, and is
+# taken off as a clause of its own (between commas, or a sentence's start and a comma, or
+# closing a sentence). Conditions about anything else ('if Bob is there', 'if it's clean') are
+# left, and refused.
+_KINDLY_IF29S = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?])|,)\s*)(?:(?:um|er|oh|sorry|so|but|and),?\s*)?(?:(?:only|just) )?(?:"
+    r"if (?:it's|it is) all the same to you|if (?:that|this) (?:works|suits) (?:for )?you|"
+    r"if (?:(?:that's|that is|it's|it is) )?(?:okay|ok|alright|all right|fine) (?:with|by|for) you|"
+    r"if (?:it's|it is|that's|that is) (?:no|not (?:too much|a|any)|not) (?:trouble|bother|"
+    r"problem)|if (?:it|that) (?:isn't|is not|wouldn't be|won't be) (?:too much |any |a )?"
+    r"(?:trouble|bother|problem)|forgive me if i (?:get|got|have got|'ve got) (?:this|it) wrong|"
+    r"if you (?:wouldn't|would not|don't|do not) mind(?: (?:terribly|awfully|too much|at all))?)"
+    r"\s*(?P<end>,\s*(?:(?:but|so)\s+)?|(?=[.!?]|$))",
+    _F,
+)
+
+
+def _kindly_if29s(text: str, lexicon: Lexicon) -> str:
+    """'if it's all the same to you, …': taken off (above)."""
+    out = _sub(_KINDLY_IF29S.pattern, lambda m: m["lead"] if m["end"] else "", text)
+    if out == text:
+        return text
+    out = re.sub(r"^\s*,\s*|(?<=[.!?])\s*,\s*", " ", out).strip()
+    return out if out != text and _names(out, lexicon) else text
+
+
+# 'Would you mind (awfully / terribly) letting P have X?' is 'Could you let P have X?' (the
+# '-ing' of the one verb 'let' the courtesy frames had not taken); and 'tidy X away into / in /
+# on S' is 'put X in / on S' (putting away is placing, where S is said; without a place, left).
+_MIND_LETTING29S = re.compile(
+    r"\bwould you mind(?: (?:awfully|terribly|very much|at all))? letting\b", _F
+)
+_TIDY_AWAY29S = re.compile(
+    r"\b(?:tidy|tidying|tidied) (?P<what>(?:the|that|this|those|these|both|all the) [a-z]+(?: "
+    r"[a-z]+)?|it|them) away (?P<where>in|into|on|onto)\b",
+    _F,
+)
+
+
+# thanks said as the speaker's gratitude closing the text ("…, ever so grateful", "…, much
+# obliged", "I'm very grateful"): the courtesy closers' kind
+_GRATEFUL29S = re.compile(
+    r"\s*[,.!]\s*(?:i'm |i am |we're |we are )?(?:ever so |very |so |really |most |much |truly )?"
+    r"(?:grateful|obliged|thankful|appreciated)(?: (?:to you|indeed))?\s*[.!]*\s*$",
+    _F,
+)
+
+
+def _kindly_verbs29s(text: str, _lexicon: Lexicon) -> str:
+    """'would you mind letting …', 'tidy X away into S', '…, ever so grateful' (above)."""
+    text = _MIND_LETTING29S.sub("could you let", text)
+    text = _GRATEFUL29S.sub(".", text)
+    return _TIDY_AWAY29S.sub(lambda m: f"put {m['what']} {m['where']}", text)
+
+
+# A person said, then taken up by 'he' / 'she' / 'they' as the subject of a want or a getting
+# ("Bottle goes to Person A. And Person B, she gets the chips."): the pronoun repeats the person
+# (session 11's "Mr Novak he want lemon" at the text's start), after 'and' / 'then' too; the
+# person must be one whole name of the scene and the verb one of having or wanting.
+_DISLOCATED29S = (
+    rf"(?P<lead>(?:^|(?<=[.;!?])\s*|,\s*)(?:and |then |and then )?)(?P<who>{_PERSON28S}),? "
+    r"(?:he|she|they) (?=(?:gets|get|wants|want|needs|need|has|have|would like|'d like|can have|"
+    r"should get|should have|is getting|is having|'s getting|'s having|'ll have|will have)\b)"
+)
+
+
+# … and owning it: "Person B, the chips are his." is 'Person B gets the chips' (the object one
+# whole name of one object of the scene)
+_DISLOCATED_OWNER29S = (
+    rf"(?P<lead>(?:^|(?<=[.;!?])\s*|,\s*)(?:and |then |and then )?)(?P<who>{_PERSON28S}),\s*"
+    r"(?P<what>the [a-z]+(?: [a-z]+)?) (?:is|are|'s|'re) (?:his|hers|theirs)(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _dislocated29s(text: str, lexicon: Lexicon) -> str:
+    """'And Person B, she gets the chips': 'And Person B gets the chips'; 'Person B, the chips
+    are his': 'Person B gets the chips' (above)."""
+    text = _for_person29s(_DISLOCATED29S, text, lexicon, lambda m: f"{m['lead']}{m['who']} ")
+    return _for_person29s(
+        _DISLOCATED_OWNER29S, text, lexicon, lambda m: f"{m['lead']}{m['who']} gets {m['what']}"
+    )
+
+
+# A correction taken back at once ("Bottle to Person A, no, wait, yes, that's right, Person A,
+# carry on.", "Give Person A the bottle, no wait, yeah, that's right, the bottle.", "Person A,
+# the bottle — no, yes, the bottle, that's right.", "Bottle to, no hang on, yes, Person A, it's
+# only her."): 'no … yes' leaves what was said as it was, and what follows says it again. The
+# words after 'yes' must be one name of the scene that the clause before the cue names already
+# (the same things), or, where that clause stops at 'to' / 'for' / 'on', the name it stops before;
+# what may close it: "that's right", 'carry on', 'go on', "it's only her / him". Anything else
+# after 'yes' (another name, more requests) is left, and refused as before.
+_NO_YES29S = re.compile(
+    r"(?P<head>^[^.!?;]*?)\s*(?:,|—|–|\s-)\s*(?:no|nope)(?:,?\s*(?:wait|hang on|hold on))?\s*,?\s*"
+    r"(?:yes|yeah|yep)(?:,?\s*(?:that's|that is) (?:right|it|correct))?\s*,\s*"
+    r"(?P<again>[^,.!?—–]+?)(?:\s*,\s*(?:that's right|that is right|carry on|go on|it's only "
+    r"(?:her|him|them)))?\s*(?P<end>[.!]?)\s*$",
+    _F,
+)
+
+
+def _no_yes29s(text: str, lexicon: Lexicon) -> str:
+    """'Bottle to Person A, no, wait, yes, that's right, Person A': 'Bottle to Person A' (above)."""
+    m = _NO_YES29S.match(text)
+    if m is None:
+        return text
+    head, again = m["head"].strip(), m["again"].strip()
+    said = _ids(again, lexicon)
+    whole = next((k for k in ("human", "object", "surface") if _only_kind(again, lexicon, k)), None)
+    if whole is None or not said:
+        return text
+    if re.search(r"\b(?:to|for|on|onto)$", head, _F):
+        return f"{head} {again}{m['end'] or '.'}"
+    return f"{head}{m['end'] or '.'}" if said <= _ids(head, lexicon) else text
+
+
+# "The chips are not for Person A, (I tell you,) they are for Person B": the object is said not
+# to be one person's and then to be another's; the second says it all ('the chips are for Person
+# B'). The two must be different people of the scene, each one whole name, and 'they' / 'it' must
+# take up the object ("…, they are for Person B"); an aside of the speaker's between ('I tell
+# you', 'mind') is let be. Without the second clause (only 'not for Person A') it stays refused.
+_NOT_FOR_BUT29S = re.compile(
+    rf"^(?P<what>the [a-z]+(?: [a-z]+)?) (?P<be>is|are|'s|'re)(?: not|n't) for (?P<no>{_PERSON28S})"
+    r"\s*,\s*(?:(?:i tell you|mind|honestly|i'm telling you|you know)\s*,\s*)?(?:but )?"
+    rf"(?:they|it)(?:'re|'s| are| is) for (?P<who>{_PERSON28S})(?P<end>\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _not_for_but29s(text: str, lexicon: Lexicon) -> str:
+    """'The chips are not for Person A, they are for Person B': 'The chips are for Person B'."""
+    m = _NOT_FOR_BUT29S.match(text)
+    if m is None or not _only(m["no"], lexicon, "human") or not _only(m["who"], lexicon, "human"):
+        return text
+    if _ids(m["no"], lexicon) == _ids(m["who"], lexicon):
+        return text
+    return f"{m['what']} {m['be']} for {m['who']}{m['end']}{text[m.end() :]}"
+
+
+# A want said once for two people ("Person B asked for the bottle and Person A for the chips",
+# "sam's asked for the notepad and priya for the stapler"): the second person's 'for' takes the
+# first's verb, as session 19's '… wants the chips, and after that Person A for the bottle'.
+_ASKED_AND29S = (
+    rf"(?P<first>\b(?:{_PERSON28S})(?: has|'s)? asked for (?:the |a |an )?[a-z]+(?: [a-z]+)?,? and "
+    rf")(?P<who>{_PERSON28S}) for (?=(?:the|a|an) )"
+)
+
+
+def _asked_and29s(text: str, lexicon: Lexicon) -> str:
+    """'Person B asked for the bottle and Person A for the chips': '… and Person A asked for'."""
+    return _for_person29s(
+        _ASKED_AND29S, text, lexicon, lambda m: f"{m['first']}{m['who']} asked for "
+    )
+
+
+# What a placement is for, closing the text ("Put the tape on the belt, and the gloves too, ready
+# for the next shift.", "Put the globe on the desk ready for geography."): 'ready for …' says why
+# the objects go there, and is taken off when the request puts something on a surface and the
+# words name nothing in the scene and hold no word that could ask, point or count (the speaker's
+# times aside: 'the next shift'). 'ready for Zoe', 'ready for it' are left.
+_READY_FOR29S = re.compile(
+    r"(?:\s*,\s*|\s+)(?:all |nice and )?ready for (?P<what>[a-z' -]+?)\s*(?P<end>[.!]?)\s*$", _F
+)
+
+
+def _ready_for29s(text: str, lexicon: Lexicon) -> str:
+    """'…, ready for the next shift': taken off after a placement (above)."""
+    m = _READY_FOR29S.search(text)
+    if m is None or not _ids(text[: m.start()], lexicon, "surface"):
+        return text
+    what = _SPEAKER_TIMES.sub(" ", f"for {m['what']}")
+    if _REMARK_HELD.search(what.replace("for ", " ", 1)) or not _names_nothing(m["what"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# The speaker asking pardon for the state of things ("so excuse the flour on everything", "so
+# forgive the mud on my boots"): an apology, asking nothing; taken off as a clause of its own when
+# what is excused names nothing in the scene (nor by a typo). 'excuse the cup' (an object) is left.
+_EXCUSE_THE29S = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?,]))\s*)(?:(?:so|and|but|oh)\s+)?(?:please\s+)?(?:excuse|forgive|pardon|"
+    r"ignore) (?:the|my|all the|this) (?P<what>[a-z]+(?: [a-z]+)?)(?: (?:on|in|all over|over) "
+    r"(?P<where>everything|the floor|the place|my [a-z]+|me))?\s*(?=[.!?]|,|$)",
+    _F,
+)
+
+
+def _excuse_the29s(text: str, lexicon: Lexicon) -> str:
+    """'so excuse the flour on everything': taken off (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        words = f"{m['what']} {m['where'] or ''}".replace("everything", "")
+        if _REMARK_HELD.search(words) or not _names_nothing(words, lexicon):
+            return m.group(0)
+        return m["lead"]
+
+    out = _sub(_EXCUSE_THE29S.pattern, said, text)
+    if out == text:
+        return text
+    out = re.sub(r"^\s*[,.!]\s*|(?<=[.!?])\s*[,.]\s*|,\s*(?=[.!?])", " ", out).strip()
+    return out if out != text.strip() and _names(out, lexicon) else text
+
+
+# A sentence opening with 'Sorry' / 'Hang on' / 'Actually' could correct the sentence before it or
+# add to it (the session-19 rule refuses it); said with what makes it a correction, it is one
+# ("Bottle to Person B. Hang on, I misspoke, chips to Person B.", "Bob wants the cup. Sorry, my
+# mistake, it's the apple he wants.", "Lemon to Mr Novak. Hang on, not the lemon, the salt.",
+# "The banana for Omar. Actually, change that to Dana."): the grammar's ', no, …'. The owning of
+# the slip ('my mistake', 'I misspoke', 'I misheard her', "I've got that wrong"), 'not <what was
+# said>', or 'change that to' must follow the cue at once; 'not the X' must name an object the
+# sentence before names. "it's the apple he wants" after it is 'the apple' (a cleft of the want).
+_OPENS_A_FIX29S = re.compile(
+    r"(?P<stop>[.!]\s+)(?:oh,?\s*|er,?\s*|um,?\s*)?(?:sorry|so sorry|hang on|hold on|actually|wait)"
+    r"\s*,\s*(?:(?P<slip>my mistake|my bad|i misspoke|i misspeak|i misheard (?:her|him|them|you)|"
+    r"i(?:'ve| have)? got (?:that|it) wrong|i said (?:that|it) wrong)\s*,\s*|"
+    r"(?P<not>not (?P<said>the [a-z]+(?: [a-z]+)?)\s*,\s*)|change (?:that|it) to\s+)",
+    _F,
+)
+_CLEFT_WANT29S = re.compile(
+    r"^it(?:'s| is) (?P<what>the [a-z]+(?: [a-z]+)?) (?:he|she|they) (?:wants?|needs?|'s after|"
+    r"asked for)(?P<end>\s*[.!]?\s*)$",
+    _F,
+)
+
+
+def _opens_a_fix29s(text: str, lexicon: Lexicon) -> str:
+    """'X. Hang on, I misspoke, chips to Person B.': 'X, no, chips to Person B.' (above)."""
+    m = _OPENS_A_FIX29S.search(text)
+    if m is None:
+        return text
+    head, rest = text[: m.start()], text[m.end() :]
+    if m["not"] and not _ids(m["said"], lexicon, "object") <= _ids(head, lexicon, "object"):
+        return text
+    if m["not"] and not _ids(m["said"], lexicon, "object"):
+        return text
+    cleft = _CLEFT_WANT29S.match(rest)
+    if cleft is not None:
+        rest = f"{cleft['what']}{cleft['end']}"
+    if not rest.strip(" .!") or ("change" in m.group(0).lower() and not _names(rest, lexicon)):
+        return text
+    to = "to " if "change" in m.group(0).lower() and not re.match(r"(?:to|for)\b", rest, _F) else ""
+    return f"{head}, no, {to}{rest}"
+
+
+# a correction before the slip owned at the end
+_CUE_BEFORE29S = re.compile(
+    rf"[,.!]\s*(?:{_CUE19}|no|nope|nah|wait|hang on|hold on|actually)\s*[,.!]", _F
+)
+
+
 # -- session 29 (engineer 12r) -------------------------------------------------------------------
 
 # Words that say 'no' (colloquial 'nah', 'naw', 'nope', 'nuh-uh', 'uh-uh'; Scots 'nae'; German
@@ -11710,6 +12389,27 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _see_the29,
     _remarks29,
     _doing25,
+    _here_i_am29s,
+    _kindly_if29s,
+    _kindly_verbs29s,
+    _dislocated29s,
+    _no_yes29s,
+    _not_for_but29s,
+    _asked_and29s,
+    _ready_for29s,
+    _excuse_the29s,
+    _opens_a_fix29s,
+    _slip_owned29s,
+    _its_persons29s,
+    _gapped_also29s,
+    _own_want29s,
+    _surface_busy29s,
+    _owned_surface29s,
+    _not_fussed29s,
+    _state_cause29s,
+    _asked_me29s,
+    _kind_adjectives29s,
+    _wrong_one29s,
     _speaker_remarks,
     _asides22,
     _one_person22,
