@@ -627,18 +627,25 @@ def references(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Ite
     named = _named(text, scene, "object") | (
         {t.obj for t in tasks(want)} if want is not None else set()
     )
-    unnamed = [x for x in unique if x not in named] or unique
+    # (session 29) only an object the entry does not name: the speaker's want of the entry's own
+    # object restates the entry ("We need the bottle, not the chips this time, the bottle, over to
+    # Person B at the map table." is the bottle to Person B, as a careful person reads it); the
+    # object is still drawn where there is none, so a seed's later variants stay as they were
+    fresh = [x for x in unique if x not in named]
+    unnamed = fresh or unique
     if not unnamed or takes_back:
         return
     o = _name(scene, rng.choice(unnamed))
     if text.lower().startswith(("for ", "to ")):
-        for form in SPEAKER_OPENERS:
+        for form in SPEAKER_OPENERS if fresh else ():
             said = _after(form.format(o=o), text, scene)
             yield Variant(part, entry.scene, said, None, "refuse", "references", (), "speaker")
         return
     plain_end = not text.endswith("?")
     forms = [*SPEAKER_OPENERS, *(f for f in SPEAKER_CLOSERS if plain_end or f.startswith(". "))]
     form = rng.choice(forms)
+    if not fresh:
+        return
     if form in SPEAKER_OPENERS:
         said = _after(form.format(o=o), text, scene)
     elif plain_end:

@@ -295,6 +295,18 @@ def test_every_speaker_opener_goes_before_an_entry_opening_for_a_person() -> Non
         assert v.text[m.end() :] == "for Bob, the crisps, please."
 
 
+@pytest.mark.parametrize(
+    "text",
+    ["Not the chips this time, the bottle, over to Bob.", "For Bob, the crisps and the bottle."],
+)
+def test_no_speaker_want_of_an_object_the_entry_names(text: str) -> None:
+    # "We need the bottle, not the chips this time, the bottle, over to Person B …" (blind26, seed
+    # 29) restates the entry: with every one-of-a-kind object of the scene named, none is made
+    entry = _entry("two", text, "bottle>B" if text.startswith("Not") else "chips>B & bottle>B")
+    for seed in range(20):
+        assert "speaker" not in [v.form for v in _references(entry, TWO, seed)]
+
+
 def test_a_refusal_without_the_readings_is_unclear() -> None:
     v = fuzz.Variant("t", "cell", "Give Bob the mug.", None, "refuse", "references", MUGS)
     assert fuzz.verdict(v, CELL) == "refused"  # the refusal names both mugs

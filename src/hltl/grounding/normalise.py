@@ -4410,8 +4410,8 @@ def _inert_stretches(text: str, lexicon: Lexicon) -> str:
 
     def inert(chunk: str) -> bool:
         words = re.findall(r"[a-z']+", chunk.lower())
-        if not words or re.search(r"\d", chunk):
-            return False
+        if not words or re.search(r"\d", chunk) or _NO_ALONE29R.match(chunk):
+            return False  # a number; 'uh-uh' (no, session 29)
         plain = [re.sub(r"'(?:s|ll|re|d|ve|m)$", "", w) for w in words]
         return (
             all(w in common or w in _INERT_WORDS for w in plain)
@@ -6100,6 +6100,7 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         ids = _ids(role, lexicon, "human")
         if len(ids) < 2:
             return m.group(0)
+        _as_many29r(m.group(0), ids, lexicon)
         names = [_name(pid, lexicon) for pid in sorted(ids)]
         return f"{' and '.join(names)} each get {m.group(1).lower()} {m.group(2)}{m.group(4)}"
 
@@ -6109,6 +6110,18 @@ def _counts18(text: str, lexicon: Lexicon) -> str:
         role_each,
         out,
     )
+
+
+def _as_many29r(said: str, ids: set[str], lexicon: Lexicon) -> None:
+    """Session 29 (12r): 'for each of the three patients' where the scene has two read as the
+    two (the count unheard): a count of people that does not match the scene is refused."""
+    n = re.search(r"\beach of the (two|three|four) ([a-z]+)", said, _F)
+    if n is not None and _COUNTS[n.group(1).lower()] != len(ids):
+        names = ", ".join(_name(pid, lexicon) for pid in sorted(ids))
+        raise GroundingError(
+            f"'the {n.group(1)} {n.group(2)}': the scene has {len(ids)} ({names}), not "
+            f"{_COUNTS[n.group(1).lower()]}"
+        )
 
 
 def _negation18(text: str, lexicon: Lexicon) -> str:
@@ -10650,19 +10663,22 @@ def _described_list27(text: str, lexicon: Lexicon) -> str:
 
 # -- session 29 (engineer 12r) -------------------------------------------------------------------
 
-# Words that say 'no' (colloquial 'nah', 'naw', 'nope'; Scots 'nae'; German 'nein', French 'non'),
+# Words that say 'no' (colloquial 'nah', 'naw', 'nope', 'nuh-uh', 'uh-uh'; Scots 'nae'; German
+# 'nein', French 'non'),
 # said as a stretch of their own: the correction cue 'no' ("Give Alice the cup. Nah, the apple.").
 # 'na' is 'nah' only opening a sentence: after a comma it may be Hindi English's tag ('…, na?',
 # isn't it; _tag28), so before more words it is refused with both readings.
 _NO_WORD29R = re.compile(
-    r"(?:(?<=^)|(?<=[,.!?;:]\s)|(?<=[,.!?;:]))(nah|naw|nope|nae|nein|non)(?=\s*[,.!?;:]|\s*$)",
+    r"(?:(?<=^)|(?<=[,.!?;:]\s)|(?<=[,.!?;:]))(nah|naw|nope|nuh-uh|uh-uh|nae|nein|non)"
+    r"(?=\s*[,.!?;:]|\s*$)",
     _F,
 )
 _NA_OPENS29R = re.compile(r"(?:(?<=^)|(?<=[.!?]\s)|(?<=[.!?]))(na)(?=\s*[,.!;:]|\s*$)", _F)
 _NA_BETWEEN29R = re.compile(r",\s*na\s*,\s*(?=\S)", _F)
 # a sentence that is only a word saying 'no' ("Give Alice the cup. Nah."): never inert
 _NO_ALONE29R = re.compile(
-    r"^\s*(?:(?:oh|ah|um|er|erm|hmm)\s*,?\s*)?(?:na|nah|naw|nope|nae|nay|nein|non|no)\s*[.!]*\s*$",
+    r"^\s*(?:(?:oh|ah|um|er|erm|hmm)\s*,?\s*)?(?:na|nah|naw|nope|nuh-uh|uh-uh|nae|nay|nein|non|no)"
+    r"\s*[.!]*\s*$",
     _F,
 )
 
@@ -10689,6 +10705,475 @@ def _no_words29r(text: str, lexicon: Lexicon) -> str:
             "request): say 'no, …' or 'and …'"
         )
     return out
+
+
+# a reason said after a correction's cue (as _CUE_REASON28R), with the cues that one left: plain
+# 'no' and 'wait / hang on / hold on, no' after a comma or opening a sentence ("Give Person A the
+# chips. Wait, no, she's fasting; the bottle instead."), the reason closed by a comma or a
+# semicolon, and 'so' after it ("…, hang on, no, Alice is the thirsty one, so to Alice")
+_CUE_REASON29R = re.compile(
+    rf"(?:(?<=,)|(?<=[.!?]))\s*(?P<cue>{_CUE19}|(?:(?:wait|hang on|hold on),? )?no)\s*,\s*"
+    r"(?P<why>[^,.;:!?]+?)\s*[,;]\s*(?P<so>so,?\s+)?(?=\S)",
+    _F,
+)
+
+
+def _cue_reason29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): a reason between a correction's cue and the corrected words is taken
+    off, as _cue_reason28r's, for the cues and marks that one left. The reason may name a person
+    only when the corrected words name that person again (it says why they get it: "…, no,
+    Alice is the thirsty one, so to Alice"); never an object, nor words that ask, negate, add,
+    choose or order, nor when the corrected words hold a pronoun it could have given a person."""
+    m = _CUE_REASON29R.search(text)
+    if m is None:
+        return text
+    why, after = m.group("why"), text[m.end() :]
+    if not _STATEMENT28R.fullmatch(why) or _NOT_REASON28R.search(why):
+        return text
+    if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
+        return text
+    people = _ids(why, lexicon, "human")
+    if people and (len(people) != 1 or people != _ids(after, lexicon, "human")):
+        return text
+    if m.group("so") and not people:
+        return text  # '…, no, she's fasting, so …': 'so' ties what follows to her
+    return text[: m.start("why")] + after
+
+
+# what a correction's cue says again of itself ("no, that's wrong, …", "no, I got that wrong,
+# …"), then the corrected object said in a cleft: "…, no, it's the bottle she asked for."
+_CLEFT29R = re.compile(
+    r"(?P<cue>,\s*no,)\s*(?:(?:that's|that is|i got that|i had that) wrong,\s*)?"
+    r"(?:it's|it is|it was) (?P<said>(?:the|that) [a-z ]+?) (?:asked for|wants|wanted|needs|"
+    r"needed|ordered|meant|said)\s*(?=[.!]?$)",
+    _F,
+)
+
+
+def _cleft29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): "Pass Person B the chips, no, that's wrong, it's the bottle she asked
+    for." — a correction that names the object in a cleft ('it's X she asked for') is the
+    grammar's '…, no, X.', when the words before name exactly one person and the cleft's subject
+    is that person (a pronoun that may be hers, or her name); 'that's wrong' after the cue says
+    it again."""
+    m = _CLEFT29R.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    people = _ids(before, lexicon, "human")
+    if len(people) != 1:
+        return text
+    words = m.group("said").split(" ")
+    for n in (1, 2):
+        obj = " ".join(words[:-n])
+        obj = re.sub(r" (?:that|which)$", "", obj, flags=_F)
+        who = " ".join(words[-n:])
+        if len(_ids(obj, lexicon, "object")) != 1 or not _only_kind(obj, lexicon, "object"):
+            continue
+        if who.lower() in ("she", "he", "they"):
+            if not _fits(next(iter(people)), who, lexicon):
+                return text
+        elif _ids(who, lexicon, "human") != people or not _only_kind(who, lexicon, "human"):
+            continue
+        return f"{before}{m.group('cue')} {obj}{text[m.end() :]}"
+    return text
+
+
+# how a choice of objects for one person is to be made, said after it: "…, whichever comes to
+# hand", "…; pick whichever you can reach", "…, grab whichever is nearer"
+_CHOICE_TAIL29R = re.compile(
+    r"\s*[,;]\s*(?:(?:just |so )?(?:pick|take|grab|choose|use) )?whichever(?: one)?(?:'s| is)? "
+    r"(?:comes to hand|you can reach(?: first)?|you reach first|is nearer(?: to you)?|is closer|"
+    r"is easier to reach|you can get to|you get to first)(?=\s*(?:[,.!?]|$))",
+    _F,
+)
+
+
+def _choice_tail29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): how the robots pick among objects offered to one person ('whichever
+    comes to hand', 'pick whichever you can reach') is taken off when what is left reads as
+    exactly one such choice (as _who_chooses28r's 'whichever's easier'); after anything else
+    (one object, a choice of people) it is left, and refused."""
+    m = _CHOICE_TAIL29R.search(text) if "whichever" in text.lower() else None
+    if m is None:
+        return text
+    out = text[: m.start()] + text[m.end() :]
+    return out if _one_choice28r(_reading(out, lexicon), False) else text
+
+
+# "Mia only needs one of them, …": 'only' between the person and what they want
+_ONLY_NEEDS29R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) only (?P<v>needs|wants|requires|would like|asked for)\b", _F
+)
+# "… one of them, the tape or the gloves": 'them' said before what it stands for
+_ONE_OF_THEM29R = re.compile(
+    r"\b(?:one|either) of them,\s*(?P<list>(?:the |a |an )?[a-z ]+? or (?:the |a |an )?[a-z ]+?)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# "Give Ava any one toy, the teddy or a block, …": a word for the kind, then the choice itself
+_ANY_ONE29R = re.compile(
+    r"\bany (?:one |single )?(?P<kind>[a-z]+),\s*(?P<list>(?:the |a |an )?[a-z ]+? or "
+    r"(?:the |a |an )?[a-z ]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _only_needs29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'P only needs / wants …' is 'P needs / wants …': 'only' keeps to what
+    is named, as the grammar does ('Mia only' had been read as a name)."""
+    m = _ONLY_NEEDS29R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')}{text[m.end() :]}"
+
+
+def _choice_said29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): a choice said with a word before it that the list then says again:
+    'one of them, X or Y' (with no object named before 'them') and 'any one <kind>, X or Y' (the
+    kind a word for things the scene has no name for, or the kind of X and Y) are 'X or Y'. Each
+    taken only where the result reads as one choice of objects for one person."""
+    out = _only_needs29r(text, lexicon)
+    m = _ONE_OF_THEM29R.search(out)
+    if m is not None and not _ids(out[: m.start()], lexicon, "object"):
+        out = out[: m.start()] + m.group("list") + out[m.end() :]
+    m = _ANY_ONE29R.search(out)
+    if m is not None:
+        kind = _ids(m.group("kind"), lexicon, "object")
+        listed = _ids(m.group("list"), lexicon, "object")
+        if (not kind and _names_nothing(m.group("kind"), lexicon)) or (listed and listed <= kind):
+            out = out[: m.start()] + m.group("list") + out[m.end() :]
+    if out == text:
+        return text
+    return out if _one_choice28r(_reading(out, lexicon), False) else text
+
+
+# "There's only one bottle, and Person A should have it"
+_ONLY_ONE29R = re.compile(
+    r"^there's (?:only |just )?(?:a single|the one|one|just the one) (?P<x>[a-z ]+?),\s*and "
+    r"(?P<p>[A-Za-z][\w ]*?) (?:should have|should get|can have|gets|is to have|wants|needs) "
+    r"it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): "There's only one X, and P should have it" is the X to P (as session
+    18's "There's only one X, and it's for P"), when the scene has one X and P names one
+    person."""
+    m = _ONLY_ONE29R.match(text)
+    if m is None or len(_ids(m.group("x"), lexicon, "object")) != 1:
+        return text
+    if not _only(m.group("x"), lexicon, "object") or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"the {m.group('x')} to {m.group('p')}{m.group('end')}"
+
+
+# "Something each for the two oceanographers: …", "One thing each for them: …"
+_EACH_FOR29R = re.compile(
+    r"^(?:something|one thing|a thing|an item|one item) (?:each|apiece) for (?:the "
+    r"(?P<n>two|three) [a-z]+s|them|the (?P<m>two|three) of them|both of them)\s*:\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _each_for29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'Something each for the two <role>s: <list>' (the role any word; the
+    people are those the list names) is the list, when it hands each of that many people (every
+    person of the scene when no number is said) exactly one object; "P's to get X" in it is 'P
+    is to get X'."""
+    m = _EACH_FOR29R.match(text)
+    if m is None:
+        return text
+    rest = _sub(
+        r"\b(person [a-z]|[A-Z][a-z]+)'s to (get|have|receive)\b", r"\1 is to \2", m["rest"]
+    )
+    rest = rest[:1].upper() + rest[1:]
+    node = _reading(rest, lexicon)
+    if node is None or not isinstance(node, Group) or node.op != "and":
+        return text
+    said = list(tasks(node))
+    people = [t.target for t in said]
+    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people):
+        return text
+    n = m.group("n") or m.group("m")
+    want = _COUNTS[n.lower()] if n else len(lexicon.scene.humans)
+    return rest if len(people) == want else text
+
+
+# "Split the two items between Person A and Person B, one apiece."
+_SPLIT29R = re.compile(
+    r"^(?:please )?(?:split|share|divide) (?P<x>the [a-z ]+?) between (?P<p>[A-Za-z][\w ]*?) and "
+    r"(?P<q>[A-Za-z][\w ]*?),\s*one (?:apiece|each)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _split29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'Split X between P and Q, one apiece' is 'Give P and Q one of X each'
+    (the choice of the ways to give each one), when X names exactly two objects and P and Q two
+    people."""
+    m = _SPLIT29R.match(text)
+    if m is None or len(_ids(m.group("x"), lexicon, "object")) != 2:
+        return text
+    p, q = m.group("p"), m.group("q")
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    return f"Give {p} and {q} one of {m.group('x')} each{m.group('end')}"
+
+
+# "One blanket for each of the two patients, whichever way round."
+_EACH_OF_N29R = re.compile(
+    r"\b(?P<one>one|an?) (?P<x>[a-z]+) for each of the (?P<n>two|three) (?P<role>[a-z]+)s"
+    r"(?P<way>,\s*(?:whichever|either|any) way round)?(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def _each_of_n29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'One X for each of the two <role>s' is 'one X for each <role>' when the
+    scene has that many people called so; 'whichever way round' after it says the choice it
+    already is."""
+    m = _EACH_OF_N29R.search(text)
+    if m is None:
+        return text
+    role = m.group("role").lower()
+    people = [h for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
+    if len(people) != _COUNTS[m.group("n").lower()]:
+        return text
+    return f"{text[: m.start()]}{m.group('one')} {m.group('x')} for each {role}{text[m.end() :]}"
+
+
+# "None of it to Person A; …", "Nothing for Person A, …"
+_NONE_FOR29R = re.compile(
+    r"^(?:none of (?:it|them|that|those)|nothing|not a thing) (?:goes |is )?(?:to|for) "
+    r"(?P<p>[A-Za-z][\w ]*?)\s*[;,:.]\s*(?P<rest>\S.*)$",
+    _F,
+)
+# "Don't leave the bottle where it is; hand it to Person A."
+_LEAVE_WHERE29R = re.compile(
+    r"^(?:please )?(?:don't|do not) leave (?P<x>the [a-z ]+?) (?:where it is|where they are|"
+    r"lying there|sitting there|there)\s*[;,:.]\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _not_first29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): what is not to be done, said first (as _not_first28r): 'None of it to
+    P; …' / 'Nothing for P, …' is taken off when the request after it reads by itself, hands
+    things over only, and gives P nothing; "Don't leave X where it is; hand it to P" is the
+    request with 'it' for X, when it moves X and nothing else."""
+    m = _NONE_FOR29R.match(text)
+    if m is not None and _only_person(m.group("p"), lexicon):
+        rest = m.group("rest")
+        said = _tasks_of(rest, lexicon)
+        if (
+            said
+            and all(kind == "deliver" for kind, _, _ in said)
+            and not {t for _, _, t in said} & _ids(m.group("p"), lexicon)
+        ):
+            return rest[:1].upper() + rest[1:]
+        return text
+    m = _LEAVE_WHERE29R.match(text)
+    if m is None or len(_ids(m.group("x"), lexicon, "object")) != 1:
+        return text
+    rest = m.group("rest")
+    if len(re.findall(r"\bit\b", rest, _F)) != 1 or _ids(rest, lexicon, "object"):
+        return text
+    rest = _sub(r"\bit\b", m.group("x"), rest)
+    said = _tasks_of(rest, lexicon)
+    if not said or {o for _, o, _ in said} != _ids(m.group("x"), lexicon, "object"):
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+# "Apart from the bottle, give Person B whatever's there."
+_WHATEVER_THERE29R = re.compile(
+    r"^(?P<ex>(?:apart from|except(?: for)?|other than|besides|bar) [^,]+,\s*[^,]*?)\bwhatever"
+    r"(?:'s| is) (?:there|left|going|on offer)\b",
+    _F,
+)
+# "Person B is welcome to the lot, …"
+_WELCOME29R = re.compile(r"\b(is|are) (?:more than |very )?welcome to\b", _F)
+
+
+def _all_said29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): words for 'everything' the earlier rules left: 'whatever's there / left'
+    after an exclusion said first ("Apart from the bottle, give Person B whatever's there"), read
+    by _fronted_except28r then; 'P is welcome to X' is 'P can have X'."""
+    out = _WHATEVER_THERE29R.sub(lambda m: f"{m.group('ex')}everything", text)
+
+    def welcome(m: re.Match[str]) -> str:
+        before = m.string[: m.start()]
+        subject = re.split(r"[,.;:!?]", before)[-1].strip()
+        return "can have" if subject and _only_person(subject, lexicon) else m.group(0)
+
+    return _WELCOME29R.sub(welcome, out) if "welcome" in out.lower() else out
+
+
+# "Mia wants all the kit except the boxes: that's the scanner, the tape and the gloves."
+_ALL_KIT29R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>wants|needs|gets|should get|can have) all the (?P<w>[a-z]+) "
+    r"(?:except|but|apart from|bar) (?P<x>[^:,]+?)\s*[:,]\s*(?:that's|that is|i\.e\.,?|namely|"
+    r"meaning)\s+(?P<list>[^.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _all_kit29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'P wants all the <word> except X: that's A, B and C' is 'P wants A, B
+    and C' when the word names nothing in the scene (or everything) and the list names exactly
+    the scene's objects that X leaves: the list says again what 'all … except X' is."""
+    m = _ALL_KIT29R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    every = {o.id for o in lexicon.scene.objects}
+    word = _ids(m.group("w"), lexicon, "object")
+    if (word and word != every) or (not word and not _names_nothing(m.group("w"), lexicon)):
+        return text
+    left = every - _ids(m.group("x"), lexicon, "object")
+    listed = _ids(m.group("list"), lexicon, "object")
+    if not _ids(m.group("x"), lexicon, "object") or listed != left:
+        return text
+    return f"{m.group('p')} {m.group('v')} {m.group('list')}{m.group('end')}"
+
+
+# "The chips aren't for Person A; they're Person B's, so hand them over to Person B."
+_NOT_FOR29R = re.compile(
+    r"^(?P<x>the [a-z ]+?) (?:aren't|are not|isn't|is not) (?:for|meant for) "
+    r"(?P<p>[A-Za-z][\w ]*?)\s*[;,]\s*(?:they're|they are|it's|it is) (?P<q>[A-Za-z][\w ]*?)'s"
+    r"\s*,\s*so\s+(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _not_for29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'X isn't for P; it's Q's, so <request>' is the request (its 'it' /
+    'them' X), when P and Q are two people and the request hands X to Q and nothing else."""
+    m = _NOT_FOR29R.match(text)
+    if m is None or not _only(m.group("x"), lexicon, "object"):
+        return text
+    p, q = m.group("p"), m.group("q")
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    rest = m.group("rest")
+    if _ids(rest, lexicon, "object"):
+        return text
+    rest = _sub(r"\b(?:it|them)\b", m.group("x"), rest)
+    said = _tasks_of(rest, lexicon)
+    want = {("deliver", o, t) for o in _ids(m.group("x"), lexicon) for t in _ids(q, lexicon)}
+    return rest[:1].upper() + rest[1:] if said == want else text
+
+
+# "I don't mind which of your arms does it, …": which robot acts, said to the robots
+_WHICH_ARM29R = re.compile(
+    r"^(?:i|we) (?:don't|do not) (?:mind|care) which (?:of your arms|arm|robot|of the robots|of "
+    r"you|one of you)(?: (?:does it|does that|takes it|goes|handles it))?\s*[,;:.]\s*(?=\S)",
+    _F,
+)
+# "… the bottle needs to reach Person A": where it must end up
+_REACH29R = re.compile(
+    r"\b(?P<x>the [a-z ]+?) (?:needs|has|have|need) to (?:reach|get to|end up with|go to) "
+    r"(?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _which_arm29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): the speaker not minding which robot acts ("I don't mind which of your
+    arms does it, …") asks nothing, and is taken off; 'X needs to reach P' (X one object, P one
+    person) is 'X goes to P'."""
+    out = _WHICH_ARM29R.sub("", text)
+    m = _REACH29R.search(out)
+    if (
+        m is not None
+        and _only(m.group("x"), lexicon, "object")
+        and _only_person(m.group("p"), lexicon)
+    ):
+        out = f"{out[: m.start()]}{m.group('x')} goes to {m.group('p')}{m.group('end')}"
+    if out == text:
+        return text
+    return out[:1].upper() + out[1:]
+
+
+# "Kofi wants the pair of spanners tidied away: both onto the locker.", "The concierge wants two
+# plates for room service: both of them onto the worktop, please."
+_WANTS_PUT29R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like) (?P<x>(?:the |both |two |the two |"
+    r"the pair of |both the )[a-z ]+?)(?: (?:tidied|put|cleared|moved|packed|stowed|taken)"
+    r"(?: away| up| off)?| for (?P<why>[a-z' ]+?))?\s*:\s*(?:both|both of them|the pair|them|"
+    r"all|all of them|the lot) (?P<where>(?:up )?(?:onto|on|into|in) (?:the )?[a-z ]+?)"
+    r"(?:,? please)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_put29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'P wants X tidied away: both onto S' says what to do with X after a
+    colon: put X on S. P is one person of the scene or someone it does not name (who wants it
+    done, not who gets it); X names exactly two objects for 'both' / 'the pair' (as many as it
+    counts for 'all' / 'them'); a purpose ('for room service') names nothing; S is a surface."""
+    m = _WANTS_PUT29R.match(text)
+    if m is None:
+        return text
+    who = m.group("who")
+    if not (_only_person(who, lexicon) or _names_nothing(who, lexicon)):
+        return text
+    if m.group("why") and not _names_nothing(m.group("why"), lexicon):
+        return text
+    objs = _ids(m.group("x"), lexicon, "object")
+    said = m.group(0)[m.end("x") :].lower()
+    if len(objs) < 2 or (("both" in said or "pair" in said) and len(objs) != 2):
+        return text
+    where = re.sub(r"^(?:up )?(?:onto|on|into|in) (?:the )?", "", m.group("where"), flags=_F)
+    if not _surface_only(where, lexicon):
+        return text
+    return f"Put {m.group('x')} {m.group('where')}{m.group('end')}"
+
+
+# "Three things for Person B to take to the dairy: …": where they are taken, in the header
+_COUNT_FOR29R = re.compile(
+    r"^(?P<head>(?:one|two|three|four|five|six) (?:things?|items?) for [A-Za-z][\w ]*?) to "
+    r"(?:take|carry|bring|have|use)(?: (?:them |it )?(?:to|for|with|along|back|home|away)"
+    r"(?P<why>[a-z' ]*))?\s*:",
+    _F,
+)
+
+
+def _count_for29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): 'N things for P to take to the dairy: …' is 'N things for P: …' (the
+    session-10 count header) when what follows 'to take' names nothing in the scene."""
+    m = _COUNT_FOR29R.match(text)
+    if m is None or (m.group("why") and not _names_nothing(m.group("why"), lexicon)):
+        return text
+    return f"{m.group('head')}:{text[m.end() :]}"
+
+
+# "It's the cup Person A wants for the dye bath, not the bottle."
+_CLEFT_NOT29R = re.compile(
+    r"^it(?:'s| is) (?P<said>the [a-z ]+?) (?P<v>wants|needs|asked for|would like)(?: for "
+    r"(?P<why>[a-z' ]+?))?,\s*not (?P<y>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
+    """Session 29 (12r): "It's the X P wants (for <purpose>), not the Y" is 'P wants the X, not
+    the Y' (X and Y objects, P one person, the purpose naming nothing)."""
+    m = _CLEFT_NOT29R.match(text)
+    if m is None or (m.group("why") and not _names_nothing(m.group("why"), lexicon)):
+        return text
+    words = m.group("said").split(" ")
+    for n in (1, 2):
+        obj, who = " ".join(words[:-n]), " ".join(words[-n:])
+        if _only(obj, lexicon, "object") and _only_person(who, lexicon):
+            return f"{who} {m.group('v')} {obj}, not {m.group('y')}{m.group('end')}"
+    return text
 
 
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
@@ -10823,6 +11308,23 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 29 (12r)
     _no_words29r,
+    _cue_reason29r,
+    _cleft29r,
+    _choice_tail29r,
+    _only_needs29r,
+    _choice_said29r,
+    _only_one29r,
+    _each_for29r,
+    _split29r,
+    _each_of_n29r,
+    _not_first29r,
+    _all_said29r,
+    _all_kit29r,
+    _not_for29r,
+    _which_arm29r,
+    _wants_put29r,
+    _count_for29r,
+    _cleft_not29r,
     _or_not28s,
     _disturb28s,
     _matters_which28s,

@@ -1260,6 +1260,7 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 k += 1
                 continue
         if it.kind == "word" and it.text.lower() in ("each", "apiece"):
+            _each_of_one_person29r(items, k)
             k += 1  # "a mug each", "would each like": distribution is how shared mentions work
             continue
         if _something_given(items, k):  # "Give both people something": any object each
@@ -1714,6 +1715,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             )
         _not_after_an_exclusion(before, after, it)
         _not_a_list_for_a_list(before, after, it)
+        _adds_after_a_correction29r(after, it)
         items = _apply_correction(before, after, it, whole=whole)
         k = 0
     return items
@@ -1779,7 +1781,9 @@ def _not_after_an_exclusion(before: list[Item], after: list[Item], marker: Item)
             f"{left_out.text!r}: what does it change? say the whole request again"
         )
     if m > 0 and (
-        _is(before[m - 1], "except", "instead_of") or before[m - 1].text.lower() in ("not", "than")
+        _is(before[m - 1], "except", "instead_of")
+        or before[m - 1].text.lower() in ("not", "than")
+        or _but_all29r(before, m - 1)
     ):
         # "… except the green one, no, …", "… instead of the cup, no, …", "… rather than the
         # cup, no, …", "… to Bob, not to Carol, no, …"
@@ -2411,6 +2415,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     continue
             break
         if not excluded:
+            _not_which29r(items, k, out)
             raise GroundingError(f"{it.text!r} must be followed by the objects to leave out")
         ids = {r.id for x in excluded for r in x.refs}
         start = max(
@@ -2421,6 +2426,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             raise GroundingError(
                 f"{it.text!r} leaves out the {', '.join(sorted(ids))} from nothing"
             )
+        _left_out_unsaid29r(items[k:j], excluded, out[target])
         named = {r.id for x in out[start:target] if _objects(x) for r in x.refs}
         if not ids <= {r.id for r in out[target].refs} and ids & named:
             # "the small box and the medium box on the belt, not the small box": another name
@@ -2445,7 +2451,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
         p = _past_dets(items, j + 1)
         if (
             j < len(items)
-            and _is(items[j], ",")
+            and _is(items[j], ",", "-")  # "the torch - not the drill - the hammer" (session 29)
             and p < len(items)
             and _objects(items[p])
             and _meant_after29r(items, (k, j, p), whole, out[:target], lexicon)
@@ -2455,6 +2461,75 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             j = p + 1
         k = j
     return out
+
+
+_ADDS29R = frozenset({"too", "as well", "also", "aswell", "besides"})
+
+
+def _adds_after_a_correction29r(after: list[Item], marker: Item) -> None:
+    """Session 29 (12r): "Give Alice the chips, no, the bottle too" read as the bottle alone
+    ('too' a filler): the cue takes the chips back, 'too' keeps them. What the cue's words add to
+    ('too', 'as well', 'also' in them, before any 'and' or the sentence's end) is refused with
+    both readings ("…, sorry, the bottle too" may add it, having forgotten it)."""
+    for n, x in enumerate(after):
+        if x.kind == "punct" and x.lemma in _END:
+            return
+        if _is(x, "and") or _is_verb_item(x):
+            return  # "…, no, Carol, and the apple too": the 'too' of a new request
+        last = n + 1 == len(after) or after[n + 1].kind == "punct"
+        if x.text.lower() in _ADDS29R and (last or x.text.lower() == "also"):
+            # ('too' closing what it adds; "she's too big" says how big)
+            said = _words_of([y for y in after if not (y.kind == "punct" and y.lemma in _END)])
+            raise GroundingError(
+                f"{marker.text!r} then {said!r}: does it replace what was said before, or add "
+                f"to it ({x.text!r})? say 'and …' to add, or '{marker.text}, just …' to replace"
+            )
+
+
+def _but_all29r(items: list[Item], k: int) -> bool:
+    """Session 29 (12r): 'but' after 'everything' / 'all' at ``items[k]`` leaves out, as
+    'except' does ("Give Bob everything but the cup, no, the apple" had read the correction as
+    changing what is left out, where 'except' is refused)."""
+    if not (k > 0 and items[k].text.lower() == "but"):
+        return False
+    prev = items[k - 1]
+    return prev.quant == "all" or _is(prev, "q:everything")
+
+
+def _left_out_unsaid29r(said: list[Item], excluded: list[Item], target: Item) -> None:
+    """Session 29 (12r): "Give Bob everything but one of the mugs" / "all but one mug" / "…
+    but the mug" (two mugs) had left out both mugs: what is left out is one of several, and
+    which is not said (nor whether 'all' is of the mugs): refused with them as its readings.
+    Only where they are among what ``target`` names ("Give Bob the cup, not the mug" contrasts,
+    and leaves no mug out of the cup)."""
+    has = {r.id for r in target.refs}
+    for x in excluded:
+        one = x.quant == "some" or (x.quant == "" and not any(r.plural for r in x.refs))
+        if one and len(x.refs) > 1 and {r.id for r in x.refs} <= has:
+            ids = sorted(r.id for r in x.refs)
+            raise GroundingError(
+                f"{_words_of(said)!r} does not say which one is left out: it could be "
+                f"{' or '.join(ids)}; name the one to leave out"
+            )
+
+
+def _not_which29r(items: list[Item], k: int, out: list[Item]) -> None:
+    """Session 29 (12r): "Give Grandad a block, but not the one Lily has been chewing": 'the
+    one' and a clause the grammar cannot check leaves out one of the objects the last name
+    names, and which is not said: refused with them as its readings."""
+    j = _past_dets(items, k + 1)
+    if not (j < len(items) and items[j].text.lower() == "one" and j > k + 1):
+        return
+    named = next((x for x in reversed(out) if _objects(x)), None)
+    if named is None or len(named.refs) < 2:
+        return
+    end = next((n for n in range(j, len(items)) if _is(items[n], *_END)), len(items))
+    ids = sorted(r.id for r in named.refs)
+    kind = named.text.split(" ")[-1]
+    raise GroundingError(
+        f"{_words_of(items[k:end])!r} does not say which {kind} is left out: it could be "
+        f"{' or '.join(ids)}; name the one to leave out"
+    )
 
 
 def _meant_after29r(
@@ -4084,6 +4159,8 @@ def _swaps(items: list[Item]) -> list[Item]:
         raise GroundingError(
             f"cannot tell what {items[at].text!r} swaps: say the whole request again"
         )
+    if _as_said29r(items[start:at]):
+        return head
     a, b = objects
     out = list(head)
     out[a], out[b] = head[b], head[a]
@@ -4092,6 +4169,51 @@ def _swaps(items: list[Item]) -> list[Item]:
         # "…, or the other way round", "…. Or vice versa.": either way, not a correction
         return [Item("word", "either", "either"), *head, Item("punct", ",", ","), said[0], *out]
     return out
+
+
+# words that may stand for several people in a sentence with 'each'
+_MANY_WORDS29R = frozenset(
+    {"them", "they", "both", "all", "everyone", "everybody", "us", "we", "you", "those", "these"}
+)
+
+
+def _each_of_one_person29r(items: list[Item], k: int) -> None:
+    """Session 29 (12r): 'each' / 'apiece' after an object shares it out among several people
+    ("Give Bob and Carol a mug each"); "Give Bob a mug each" names one, and had been read as one
+    mug for Bob, 'each' unheard: refused, saying who else is missing. Only where the sentence
+    names exactly one person and no word that may stand for several."""
+    start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+    end = next((n for n in range(k, len(items)) if _is(items[n], *_END)), len(items))
+    said = items[start:end]
+    people = {r.id for x in said if _humans(x) for r in x.refs}
+    several = any(x.text.lower() in _MANY_WORDS29R for x in said)
+    if (
+        len(people) != 1
+        or several
+        or any(x.kind == "ent" and len(x.refs) > 1 and _humans(x) for x in said)
+    ):
+        return
+    raise GroundingError(
+        f"{items[k].text!r} shares out among several people, and the sentence names one "
+        f"({_words_of([x for x in said if _humans(x)])}): name each person, or leave out "
+        f"{items[k].text!r}"
+    )
+
+
+def _as_said29r(between: list[Item]) -> bool:
+    """Session 29 (12r): "Give Bob the cup and Carol the apple, not the other way round" says
+    the request is meant as said; it had been read as 'no, the other way round', a swap. 'not'
+    (never 'no', a correction's cue) with no other cue before the swap word; with one ("…, no,
+    not the other way round") which is meant is unclear, and it is refused."""
+    said = [x for x in between if x.kind != "punct" and not _is(x, "filler")]
+    nots = [x for x in said if _is(x, "not") and x.text.lower() == "not"]
+    if nots and len(said) > 1:
+        # "…, no, not the other way round": a correction, or the request as said?
+        raise GroundingError(
+            f"{_words_of(said)!r} before the other way round: keep what was said, or swap it? "
+            "say the whole request again"
+        )
+    return bool(nots)
 
 
 def _sources(items: list[Item]) -> list[Item]:
