@@ -5,6 +5,9 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding.helpers import CELL, OFFICE, WARD, WORKSHOP, assert_reads, assert_refused
 
@@ -93,19 +96,25 @@ WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
 
 
 @pytest.mark.parametrize(
-    ("text", "scene"),
+    ("text", "want", "scene"),
     [
-        (WARD_ORDER, WARD),
+        (WARD_ORDER, "thermometer>A ; pills>B", WARD),
         ("Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer where it "
-         "is.", WORKSHOP),
-        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.", CELL),
+         "is.", "drill>A", WORKSHOP),
+        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.",
+         "apple>A ; cup>B", CELL),
         ("Last, the stapler goes to Sam, the night porter. First, though, give Priya the "
-         "notebook.", OFFICE),
+         "notebook.", "notebook>A ; stapler>B", OFFICE),
     ],
 )
-def test_a_sentence_end_is_not_inside_an_aside(text: str, scene: Scene) -> None:
-    # never the two requests joined without their order or correction
-    assert_refused(text, scene)
+def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scene) -> None:
+    # never the two requests joined without their order or correction: the reading with it, or
+    # a refusal (a trade at a sentence's end is read as an aside by another rule, or refused)
+    try:
+        got = parse_instruction(text, scene)
+    except GroundingError:
+        return
+    assert show_tree(got) == show_tree(parse_expectation(want)), show_tree(got)
 
 
 @pytest.mark.parametrize(
