@@ -5,7 +5,11 @@ from __future__ import annotations
 
 import pytest
 
-from tests.grounding.helpers import CELL, assert_reads, assert_refused
+from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene
+from tests.grounding.helpers import CELL, OFFICE, WARD, WORKSHOP, assert_reads, assert_refused
 
 # cell: mug_red and mug_blue are the two mugs; Alice is Person A, Bob Person B.
 
@@ -78,3 +82,52 @@ def test_one_of_a_kind_then_both_is_refused(text: str) -> None:
 )
 def test_both_after_both_mugs_still_reads(text: str) -> None:
     assert_reads(text, "mug_red>A & mug_blue>A", CELL)
+
+
+# -- an aside between commas stays in its sentence ---------------------------------------------
+#
+# `_asides` dropped the words between two commas when they named nothing of the scene; split on
+# commas alone, ', the juggler. After that,' was taken for one aside, and the next sentence's
+# order or correction went with it (12c's asides fuzz, session 29): "Thermometer to Ruth, the
+# juggler. After that, tablets to Mr Lee." read `thermometer>A & pills>B`. A sentence at a time
+# now: what ends a sentence is not inside an aside.
+
+WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (WARD_ORDER, "thermometer>A ; pills>B", WARD),
+        ("Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer where it "
+         "is.", "drill>A", WORKSHOP),
+        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.",
+         "apple>A ; cup>B", CELL),
+        ("Last, the stapler goes to Sam, the night porter. First, though, give Priya the "
+         "notebook.", "notebook>A ; stapler>B", OFFICE),
+    ],
+)
+def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scene) -> None:
+    # never the two requests joined without their order or correction: the reading with it, or
+    # a refusal (a trade at a sentence's end is read as an aside by another rule, or refused)
+    try:
+        got = parse_instruction(text, scene)
+    except GroundingError:
+        return
+    assert show_tree(got) == show_tree(parse_expectation(want)), show_tree(got)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # an aside that ends inside its sentence is still dropped
+        ("Thermometer to Ruth, the nurse, please. After that, tablets to Mr Lee.",
+         "thermometer>A ; pills>B"),
+        ("Thermometer to Ruth, who is busy. After that, tablets to Mr Lee.",
+         "thermometer>A ; pills>B"),
+        ("Thermometer to Ruth, who is busy.", "thermometer>A"),
+        ("Thermometer to Ruth. After that, tablets to Mr Lee.", "thermometer>A ; pills>B"),
+    ],
+)
+def test_asides_inside_a_sentence_still_go(text: str, want: str) -> None:
+    assert_reads(text, want, WARD)

@@ -623,10 +623,11 @@ def _picks_object(words: str, lexicon: Lexicon) -> bool:
     return m is not None and m.group(1).lower() in _adjectives(lexicon)
 
 
-def _asides(text: str, lexicon: Lexicon) -> str:
-    """', who is at the front,' and ', the gentleman at the end,' said about someone or
-    something: dropped when they name nothing of the scene; two names of one person keep one."""
-    parts = text.split(",")
+def _asides_between_commas(text: str, lexicon: Lexicon) -> str:
+    """The asides between the commas of one sentence (``_asides``; its stop is kept)."""
+    stop = re.search(r"[.!?;]*\s*$", text)
+    end = text[stop.start() :] if stop is not None else ""
+    parts = text[: len(text) - len(end)].split(",")
     out = [parts[0]]
     k = 1
     while k < len(parts):
@@ -667,7 +668,17 @@ def _asides(text: str, lexicon: Lexicon) -> str:
                 continue
         out.append(seg)
         k += 1
-    text = ",".join(out)
+    return ",".join(out) + end
+
+
+def _asides(text: str, lexicon: Lexicon) -> str:
+    """', who is at the front,' and ', the gentleman at the end,' said about someone or
+    something: dropped when they name nothing of the scene; two names of one person keep one.
+    A sentence at a time (session 29): in 'Thermometer to Ruth, the juggler. After that, …' the
+    words between the commas are not one aside (the next sentence's order went with them)."""
+    text = "".join(
+        _asides_between_commas(part, lexicon) for part in re.split(r"(?<=[.!?;])(?=\s)", text)
+    )
     # a restrictive 'who …' after a person the scene names once: "The guest who ordered the
     # fish wants a lemon"
     m = re.search(
