@@ -5,16 +5,11 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
+from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
-from tests.grounding.helpers import (
-    CELL,
-    OFFICE,
-    WARD,
-    WORKSHOP,
-    assert_reads,
-    assert_refused,
-    assert_same_or_refused,
-)
+from tests.grounding.helpers import CELL, OFFICE, WARD, WORKSHOP, assert_reads, assert_refused
 
 # cell: mug_red and mug_blue are the two mugs; Alice is Person A, Bob Person B.
 
@@ -113,9 +108,13 @@ WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
     ],
 )
 def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scene) -> None:
-    # never the two requests joined without their order or correction: the careful reading (the
-    # trade taken off before the first read, normalise.trades29, engineer 12) or a refusal
-    assert_same_or_refused(text, want, scene)
+    # never the two requests joined without their order or correction: the reading with it, or
+    # a refusal (a trade at a sentence's end is read as an aside by another rule, or refused)
+    try:
+        got = parse_instruction(text, scene)
+    except GroundingError:
+        return
+    assert show_tree(got) == show_tree(parse_expectation(want)), show_tree(got)
 
 
 @pytest.mark.parametrize(
