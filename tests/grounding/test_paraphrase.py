@@ -117,7 +117,6 @@ KNOWN_MISSES = frozenset(
         # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
         "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
         "The little one could do with her sippy cup",
-        "Take the bottle to Person A. When that's done, the chips go to them too.",
         "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
         "load",
         "Stock room's a mess, grab whichever box you like and stick it on the belt",
@@ -133,7 +132,6 @@ KNOWN_MISSES = frozenset(
         "Load Tom up with the boxes, just not the small box",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
         "Give Ava the teddy, won't you give Lily the bib too?",
-        "Take the cup to Person B. When that's done, the apple goes to them too.",
         "Could you bring Grandad's beaker over to him?",
         "Give each of them a spanner, Kofi and Jess, any size",
         "Both people get an item each: the chips for Person B and the bottle for Person A",
@@ -232,8 +230,6 @@ KNOWN_MISSES = frozenset(
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
-        "Okay sweetie, hold on, Mummy's talking to the robot. Can you please just put the bib on "
-        "the high chair? Thanks.",
         "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "What I need is the bottle over with Person B.",
@@ -260,7 +256,6 @@ KNOWN_MISSES = frozenset(
         "tom wants the gloves and once hes got them mia wants the tape",
         "apple n bottle both for person b pls",
         "need the chips over with person b like right now",
-        "Ava's asking for her tedfy bear.",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
@@ -500,8 +495,6 @@ KNOWN_MISSES = frozenset(
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         "crisps up on the shelf please love, out of the dog's reach",
-        'chips to person b and bottle to person a, cheers, back to the eye tests',
-        "new lock's in, so the bottle's for person a now and the chips can go over to person b",
         "bottle to person a when you're ready, no rush, the race isn't for an hour",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
@@ -521,7 +514,6 @@ KNOWN_MISSES = frozenset(
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
         "Priya wants the red pen left in the box, she'll sort it out later.",
-        "Kofi wants the hammer, mine's still in the forge.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
         "You see that bottle by your elbow? Person A's to have it.",
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
@@ -619,58 +611,26 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        'Eskerrik asko in advance: the cup to Person B, mesedez.',
-        "Takk! The water jug onto the bedside locker, if you'd be so kind.",
-        "Si us plau, if it's no trouble, give Mr Novak the salt. Gràcies!",
-        'Dakujem in advance, the torch to Jess, and bless you.',
-        'Carol the crofter wants the blue mug for her tea.',
-        "For the ghillie's picnic, Person A needs the apple while Person B is after the cup.",
-        'The bottle is wanted by Person B, says the coxswain.',
-        'Our dairy farmers are parched and peckish: Person B fancies the bottle, and Person A the '
-        'chips.',
-        "Mia says the pawnbroker's parcel, the small box, should go on the conveyor.",
         "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
-        "The cup's for Person A, the joiner. Once that's done, bring her the apple too.",
-        "The bottle's for Person B. Take it over to them.",
-        'See the bottle? Person A the gamekeeper wants it.',
-        "Chips to Person A, and when that's done, the bottle to that same person as well.",
-        'The stapler goes to Sam; put the notepad on the desk after that.',
-        'Quick list from the botanist: Person A, cup. Person B, apple.',
-        'Chips to Person B first. After that. Person A gets the cup. Sorry, typing this from the '
-        'cave entrance.',
-        'Give Person B the bottle, give Person A the chips, job done, back to my embroidery.',
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        'For the long row back, Bob can take the bottle or the crisps, whichever comes to hand.',
         "Emma's a visiting palaeontologist and not fussy, so hand her either of the cups.",
         "Sam's proofreading and just needs a pen, any of them will do.",
         'Mrs Khan is shivering like a diver out of the sea, so let her have both blankets.',
         'Noah and Zoe are doing a reading with the linguist; they can have a book apiece.',
         'Both items to Bob, the archer wants them.',
-        "There's just the one cup, and it goes to Person B, the sculptor.",
         'Person A is the forester on the night shift; both items go to her.',
-        "There's only one bottle, and Person A the caver should have it.",
         'Both of the cups, the green and the white, want rinsing, so into the sink with the pair.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         "Bob's a rower and wants the crisps, not the bottle.",
-        'Person B, the acrobat, is welcome to the lot, bar the apple and the bottle.',
         "That bottle's for Person A and for nobody else, she's the only one diving.",
         'Emma needs something to stir her tea; the spoon, mind, not the sponge.',
-        'Hand the cup over to Bob the dairyman, oh sorry, I meant the apple.',
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
-        'alice the juggler gets the bottle, shes parched',
         'person b is thirsty after the dive so she wants the bottle',
-        'person a the gamekeeper is hungry and thirsty, so she gets both',
-        'sam says put the stapler in the box, the proofs are done',
-        'Carol the crofter is peckish, give her the cridps.',
         'Aluce is back from the dive, hand her the bottle.',
         'The forester left the bottle out; put it on the shrlf.',
-        'The cup is for Pefson A, the ventriloquist.',
-        'Person B the ornithologist wants the cgips.',
-        'The chips are for Persoj B, the milkman.',
         'Person A has come up out of the cave and would like the boftle.',
-        'Person B the goldsmith is hungry; give him the vhips.',
         'Omsr needs the spoon to stir his samples.',
         "Ruth has asked for the thermomrter, the ward's too warm.",
         'Tom needs the glovrs, the pallets are splintery.',
@@ -698,10 +658,6 @@ KNOWN_UNCLEAR = frozenset(
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)
-        "Ruth needs the blanket taken across to Mr Lee, he's feeling the draught.",
-        'Kofi and Jess are at the bench, and one of them asked for the hammer. Take it to whoever '
-        'that was.',
-        'tom needs a box, the one mia packed',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -7246,6 +7246,331 @@ def _for_whose28(text: str, lexicon: Lexicon) -> str:
     return _FOR_WHOSE28.sub(whose, text)
 
 
+# Session 29 (engineer 12, blind27): a person described by a trade the scene does not know,
+# said right after the name ('Carol the crofter wants …', 'alice the juggler gets …', 'for
+# Person A, the joiner.', 'Person B, the acrobat, is welcome …'). The description is taken off
+# when the name is one person of the scene (not right after a verb: 'Give Alice the red' gives),
+# the words are one or two the lexer does not know, name nothing in the scene (nor a typo of a
+# name) and are no word of a scene name ('red' of 'red mug'), no modifier (_NOT_TRADE29) and no
+# word that counts, chooses or points back; and what follows is a comma, the end of a sentence,
+# or (with no comma before: '…, the house is paying' is a clause) a verb of wanting, having or
+# being.
+_TRADE29 = re.compile(
+    r"(?P<comma>,)?\s+the (?P<trade>[a-z]+(?: [a-z]+)?)"
+    r"(?P<after>\s*,|(?=\s*(?:[.;:!?]|$))|(?= (?:wants|needs|gets|is|was|has|had|would|should|"
+    r"could|can|will|might|may|fancies|likes|asked|asks|says|'s|'d)\b))",
+    _F,
+)
+_NOT_TRADE29 = frozenset(
+    {
+        "red", "blue", "green", "white", "black", "grey", "gray", "yellow", "brown", "pink",
+        "orange", "purple", "big", "small", "large", "little", "medium", "tall", "short", "long",
+        "new", "old", "clean", "dirty", "full", "empty", "lot", "usual", "whole", "left", "right",
+        "top", "bottom", "middle", "near", "far", "nearest", "nearer", "closest", "closer",
+        "other", "rest", "same", "latter", "former", "most", "least", "best", "worst",
+    }
+)  # fmt: skip
+
+
+def _trade_words29(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` could only describe a person (above): unknown to the lexer, naming
+    nothing in the scene, no word of a scene name, no modifier."""
+    try:
+        items = lex(words, lexicon)
+    except GroundingError:
+        return False
+    said = _scene_words29(lexicon)
+    return (
+        all(it.kind == "unknown" for it in items)
+        and _inert28(words, lexicon)
+        and not any(w in said or w in _NOT_TRADE29 for w in words.lower().split())
+    )
+
+
+def trades29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: a trade said after a person's name (above) taken off; before the instruction
+    is first read (offline._parse), as the apostrophes are mended: it only describes."""
+    if " the " not in text.lower():
+        return text
+    for m in reversed(list(_TRADE29.finditer(text))):
+        before = text[: m.start()]
+        words = before.split()
+        who = next(
+            (
+                n
+                for n in (3, 2, 1)
+                if len(words) >= n
+                and re.fullmatch(r"[A-Za-z]+", words[-1])
+                and _only_person(" ".join(words[-n:]), lexicon)
+            ),
+            0,
+        )
+        rest = text[m.end() :].lstrip()
+        if m.group("comma") and rest[:1].isalpha() and not m.group("after"):
+            continue  # "…, the house is paying": a clause of its own, not a description
+        if not who or not _trade_words29(m.group("trade"), lexicon):
+            continue
+        ahead = words[-who - 1].lower().strip(",.;:!?") if len(words) > who else ""
+        if ahead in VERBS or ahead in ("the", "a", "an"):
+            continue  # "Give Alice the red": the person gets what follows
+        if (m.group("after") or "").strip() != ",":
+            text = before + text[m.end() :]  # "Carol the crofter wants", "…, the joiner."
+        elif m.group("comma"):
+            text = f"{before} {text[m.end() :].lstrip()}"  # ", the acrobat," goes whole
+        else:
+            text = before + text[m.start("after") :]  # "alice the juggler, …": the comma stays
+    return text
+
+
+# Session 29 (engineer 12, blind27): a remark or context that asks nothing, said as a sentence
+# of its own, before a colon, or as a comma part opening or closing a sentence ("…, job done,
+# back to my embroidery.", "Sorry, typing this from the cave entrance.", "Our dairy farmers are
+# parched and peckish: …", "For the ghillie's picnic, …"). Taken off only when it names nothing
+# in the scene (nor a typo of a name), holds no verb the grammar knows, no word that counts,
+# chooses, points back, negates, corrects, orders or says a time (_ASKS29), and is no question;
+# and what is left names something. 'this' of the message itself ('typing this') is no pointer.
+_ASKS29 = re.compile(
+    r"\b(?:no|nope|nah|not|never|none|nothing|nobody|wrong|mistake|typo|meant|mean|means|"
+    r"rather|instead|actually|scratch|cancel|forget|ignore|undo|wait|hold|hang|stop|skip|drop|"
+    r"change|swap|switch|kidding|joking|other|others|another|else|same|again|too|also|well|"
+    r"both|each|every|all|any|either|neither|only|just|whichever|whatever|first|last|next|then|"
+    r"after|before|once|when|whenever|while|until|till|if|unless|later|now|soon|today|tonight|"
+    r"tomorrow|yesterday|morning|afternoon|evening|lunch|dinner|breakfast|week|hours?|minutes?|"
+    r"mins?|secs?|seconds?|moment|asap|it|its|them|they|their|theirs|him|her|hers|his|he|she|"
+    r"that|those|these|this|there|here|one|ones|[0-9]+|two|three|four|five|six|seven|eight|"
+    r"nine|ten|half|dozen|pair|couple|lot|rest|everything|anything|something|someone|everyone|"
+    r"anyone|you|me|us|we|i|please|instead|except|without|but|bar|or|nor|sorry|oops|whoops|"
+    r"apologies|correction|corrected|bad|silly|firstly|secondly|thirdly|finally|lastly|"
+    r"initially|subsequently|afterwards?|meanwhile|between|during|likewise|similarly|ditto|"
+    r"same|order|reverse|round|around|way|whoever|whomever|depending|depends|unless)\b|n't\b|[?]",
+    _F,
+)
+_THIS_MESSAGE29 = re.compile(r"\b(?:typing|writing|sending|texting|saying) this\b", _F)
+
+
+def _asks_nothing29(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` is a remark that asks nothing (above): no word of a scene name either
+    ('the red or the blue' names the mugs by their colour)."""
+    plain = _THIS_MESSAGE29.sub("x", words).strip()
+    tokens = re.findall(r"[a-z']+", plain.lower())
+    said = _scene_words29(lexicon)
+    return (
+        bool(tokens)
+        and not _ASKS29.search(plain)
+        and not any(t in VERBS or t.split("'")[0] in VERBS or t in said for t in tokens)
+        and _names_nothing(_unmarked27(words), lexicon)
+    )
+
+
+def _remarks29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: remarks that ask nothing (above) taken off: whole sentences and parts before a
+    colon, and comma parts opening or closing a sentence."""
+    parts = re.split(r"(\s*[.!?;:]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+    out: list[tuple[str, str]] = []
+    for sent, sep in zip(sents, seps, strict=True):
+        if "?" in sep or not sent.strip():
+            out.append((sent, sep))
+            continue
+        if _remark29(sent, lexicon, "") or _typing_from29(sent, lexicon):
+            continue
+        if sep.strip().startswith(":") and _asks_nothing29(sent, lexicon):
+            continue  # "Quick list from the botanist: …": a heading
+        pieces = re.split(r"\s*,\s*", sent)
+        while len(pieces) > 1 and _remark29(pieces[-1], lexicon, "back to "):
+            pieces.pop()
+        while len(pieces) > 1 and _remark29(pieces[0], lexicon, "for "):
+            pieces.pop(0)
+        out.append((", ".join(pieces), sep))
+    said = "".join(a + b for a, b in out).strip()
+    if said == text.strip() or not _names(said, lexicon):
+        return text
+    return said
+
+
+# a statement: a clause with 'be' or 'done' ('the proofs are done', 'job done'); not a name said
+# alone ('The chips' where the scene has none is refused, not taken off)
+_STATEMENT29 = re.compile(r"\b(?:is|are|was|were|am|been|being|done)\b|'s\b|'re\b|'m\b", _F)
+
+
+def _remark29(words: str, lexicon: Lexicon, opener: str) -> bool:
+    """Whether ``words`` is a remark to take off: a statement that asks nothing, or a part
+    opening with ``opener`` ('for the ghillie's picnic' before the request, 'back to my
+    embroidery' after it) that asks nothing; never a part joined with 'and', 'plus', 'with'."""
+    low = words.strip().lower()
+    opens = bool(opener) and low.startswith(opener)
+    rest = low[len(opener) :] if opens else low
+    if (
+        re.match(r"(?:and|or|plus|with|also|then)\b", low)
+        or re.search(r"\bfor\b", rest)  # 'the jug is for the chef': whom it is for
+        or not _asks_nothing29(words, lexicon)
+    ):
+        return False
+    return opens or bool(_STATEMENT29.search(words))
+
+
+# "Sorry, typing this from the cave entrance.": an apology for how the message is sent
+_TYPING_FROM29 = re.compile(
+    r"(?:sorry|apologies),? (?:i'm |i am )?(?:typing|writing|texting|sending) this "
+    r"((?:from|on|in|with|at) [a-z' ]+)",
+    _F,
+)
+
+
+def _typing_from29(sent: str, lexicon: Lexicon) -> bool:
+    """Whether ``sent`` is such an apology (above) naming nothing of the scene."""
+    m = _TYPING_FROM29.fullmatch(sent.strip())
+    return m is not None and _asks_nothing29(m.group(1), lexicon)
+
+
+def _scene_words29(lexicon: Lexicon) -> frozenset[str]:
+    """Every word of the scene's ids, names, categories and aliases ('red' of 'red mug')."""
+    scene = lexicon.scene
+    names = [
+        *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.id, h.name, *h.aliases)),
+        *(n for f in scene.surfaces for n in (f.id, *f.aliases)),
+    ]
+    return frozenset(w.lower() for n in names for w in n.replace("_", " ").split())
+
+
+# Session 29 (blind27): a request reported from someone ('sam says put the stapler in the box',
+# 'The bottle is wanted by Person B, says the coxswain.'): the request is what is asked. The
+# report opening the instruction is taken off when it is one person of the scene and what they
+# say has no word for the speaker or a person pronoun ('Mia says she wants …', 'Sam says give me
+# …' are left); one closing a sentence (', says the coxswain', ', the coxswain says') when its
+# words name nothing.
+_SAYS_OPEN29 = re.compile(r"^([A-Za-z]+(?: [A-Za-z]+)?) says,? (?:that )?(?=\w)", _F)
+_SAYS_CLOSE29 = re.compile(
+    r",\s*(?:says ([a-z' ]+?)|((?:the |our |my |a )?[a-z' ]+?) says)\s*(?=[.!;]|$)", _F
+)
+_SPEAKER_OR_PRONOUN29 = re.compile(
+    r"\b(?:i|me|my|mine|we|us|our|he|she|him|her|his|they|them)\b", _F
+)
+
+
+def _says29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: the report of a request taken off (above)."""
+    if "says" not in text.lower():
+        return text
+    m = _SAYS_OPEN29.match(text)
+    if (
+        m is not None
+        and _only_person(m.group(1), lexicon)
+        and not _SPEAKER_OR_PRONOUN29.search(text[m.end() :])
+    ):
+        text = text[m.end() :]
+
+    def close(c: re.Match[str]) -> str:
+        who = c.group(1) or c.group(2) or ""
+        return "" if _inert28(who, lexicon) else c.group(0)
+
+    return _SAYS_CLOSE29.sub(close, text)
+
+
+# Session 29 (blind27): 'P is after X' is 'P wants X' (a scene person and a scene object), and
+# 'P needs X while Q wants Y' sets two wants side by side: 'while' before a person and a verb of
+# wanting, after a clause that names an object, is 'and'.
+_IS_AFTER29 = re.compile(
+    r"\b([A-Za-z]+(?: [A-Za-z]+)?) (?:is|'s) (?:after|angling for) (?=the )", _F
+)
+_WHILE29 = re.compile(
+    r"(?<=\w) while ([A-Za-z]+(?: [A-Za-z]+)?) (?=(?:wants|needs|gets|would like|fancies)\b)", _F
+)
+
+
+def _while29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'is after' and 'while' between two wants (above)."""
+    if " after " in text.lower():
+
+        def wants(m: re.Match[str]) -> str:
+            words = m.group(1).split()
+            for n in (len(words), 1):
+                if _only_person(" ".join(words[-n:]), lexicon):
+                    return " ".join([*words[:-n], *words[-n:], "wants "])
+            return m.group(0)
+
+        text = _IS_AFTER29.sub(wants, text)
+    if " while " not in text.lower():
+        return text
+
+    def side(m: re.Match[str]) -> str:
+        before = re.split(r"[.!?;:]\s", text[: m.start()])[-1]
+        if _only_person(m.group(1), lexicon) and _ids(before, lexicon, "object"):
+            return f" and {m.group(1)} "
+        return m.group(0)
+
+    return _WHILE29.sub(side, text)
+
+
+# Session 29 (blind27): "See the bottle? Person A the gamekeeper wants it.": a question that
+# points at one object of the scene, opening the instruction, says what the rest is about: 'The
+# bottle.' (the rest must still say who gets it)
+_SEE_THE29 = re.compile(r"^(?:(?:do |can )?you )?see (the|that|this) ([a-z][a-z ]*?)\?\s*", _F)
+
+
+def _see_the29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'See the X?' opening the instruction as 'The X.' (above)."""
+    m = _SEE_THE29.match(text)
+    if (
+        m is None
+        or len(_ids(m.group(2), lexicon, "object")) != 1
+        or not _only(m.group(2), lexicon, "object")
+    ):
+        return text
+    return f"The {m.group(2)}. {text[m.end() :]}"
+
+
+# Session 29 (blind27): "the pawnbroker's parcel, the small box, should go on the conveyor": an
+# object first described by words the scene does not know, then named between commas, opening a
+# sentence whose verb follows: the name alone ('a list "the spanner, the cup, and …"' has no verb
+# after it and is left)
+_DESCRIBED29 = re.compile(
+    r"(^|[.!?;]\s+)(?:the|a|an|my|our|your|his|her|their) ([a-z' -]+?), (the [a-z -]+?),\s+"
+    r"(?=(?:should|must|needs?|goes|go|is|has|can|could|wants?|belongs)\b)",
+    _F,
+)
+
+
+def _described29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: an object described, then named (above), is the name."""
+    if text.count(",") < 2:
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if (
+            _trade_words29(m.group(2).replace("'s", ""), lexicon)
+            and len(_ids(m.group(3), lexicon, "object")) == 1
+            and _only(m.group(3), lexicon, "object")
+        ):
+            return f"{m.group(1)}{m.group(3)} "
+        return m.group(0)
+
+    return _DESCRIBED29.sub(named, text)
+
+
+# Session 29 (blind27): 'that same person' ('…, the bottle to that same person as well') is the
+# one person named before it; with none or several named it is left (and refused)
+_SAME_PERSON29 = re.compile(
+    r"\b(?:that|the) (?:very )?same (?:person|one|guy|lady|woman|man)\b", _F
+)
+
+
+def _same_person29(text: str, lexicon: Lexicon) -> str:
+    """Session 29: 'that same person' named (above)."""
+    if "same" not in text.lower():
+        return text
+    m = _SAME_PERSON29.search(text)
+    if m is None:
+        return text
+    before = _ids(text[: m.start()], lexicon, "human")
+    if len(before) != 1:
+        return text
+    pid = next(iter(before))
+    name = next(h.name for h in lexicon.scene.humans if h.id == pid)
+    return text[: m.start()] + name + text[m.end() :]
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -7509,6 +7834,10 @@ _COURTESY24 = (
     # 'Kiitti' and 'Ole hyvä' (here you are / please, said alone), Albanian thanks
     r"e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|"
     r"ole hyvä|ole hyva|moi|kiitti|faleminderit|"
+    # session 29 (blind27): Basque, Catalan and Slovak thanks, with and without their letters'
+    # marks, and the English blessing 'bless you' ('please' in them: _translated25)
+    r"eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|"
+    r"ďakujem(?: pekne)?|dakujem(?: pekne)?|vďaka|vdaka|bless you|"
     # blessings and pace
     r"amen(?: to that)?|inshallah|mashallah|pole pole|"
     # polite and sentence particles said alone (_PARTICLES)
@@ -7516,7 +7845,8 @@ _COURTESY24 = (
 )
 _COURTESY_WORD24 = re.compile(rf"\b(?:{_COURTESY24})\b", _F)
 _COURTESY_STRETCH24 = re.compile(
-    rf"(?:{_COURTESY24})(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all))*",
+    rf"(?:and\s+)?(?:{_COURTESY24})"
+    rf"(?:\s+(?:{_COURTESY24}|my friend|friend|sir|madam|boss|everyone|all|in advance))*",
     _F,
 )
 
@@ -7537,7 +7867,8 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     very much.") taken off (above)."""
     if not _COURTESY_WORD24.search(text):
         return text
-    parts = re.split(r"(\s*[,;.!?]+\s*)", text.strip())
+    # session 29: a colon ends a stretch too ('Eskerrik asko in advance: the cup to …')
+    parts = re.split(r"(\s*[,;:.!?]+\s*)", text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
     drop = [
         bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(_unmarked27(c), lexicon)
@@ -7552,7 +7883,7 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
                 out[-1] = sep  # "…, asante." → "…."
             continue
         out.extend((c, sep))
-    said = "".join(out).strip(" ,;")
+    said = "".join(out).strip(" ,;:")
     return said if _names(said, lexicon) else text
 
 
@@ -7570,7 +7901,8 @@ _PLEASE25 = re.compile(
     r"\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog|"
     r"prašau|prasau|prašom|prasom|gtkhovt|ebakih|ebakish|ebakachihu|karunakarala|lūdzu|ludzu|"
     r"palun|proszę|prosze|molim|alstublieft|alsjeblieft|lütfen|lutfen|pozhaluysta|pozhaluista|"
-    r"parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu)(?!\w)",
+    r"parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu|"
+    r"si us plau|mesedez)(?!\w)",
     _F,
 )
 _SORRY25 = re.compile(r"\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\b", _F)
@@ -12049,6 +12381,13 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 29 (12): blind27's kinds
+    _says29,
+    _described29,
+    _while29,
+    _same_person29,
+    _see_the29,
+    _remarks29,
     _doing25,
     _here_i_am29s,
     _kindly_if29s,

@@ -29,6 +29,7 @@ from hltl.grounding.normalise import (
     order_colons,
     people_named,
     rewritten19,
+    trades29,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
 from hltl.grounding.tree import (
@@ -96,6 +97,9 @@ def parse_instruction(
             _choices_kept(text, node, lexicon)
         return node
     except GroundingError as refused:
+        more = _more_readings29(text, refused, lexicon) if len(inside) == 1 else ""
+        if more:
+            raise GroundingError(f"{refused}; {more}") from None
         unclear = lexicon.unclear_typos(text)
         said = [r for ids in unclear.values() for r in ids if r in str(refused)]
         if not unclear and not _readings(refused) and len(inside) == 1:
@@ -195,6 +199,70 @@ def _unclear_names(text: str, lexicon: Lexicon) -> str:
 _IN_A_LIST = frozenset({",", "and", "or", "the", "a", "an", "both", "either"})
 
 
+# 'a box, the one mia packed': a choice narrowed by what the scene does not know
+_THE_ONE29 = re.compile(r"\b(?:a|an|one) ([a-z]+), the one (?!of\b|for\b|on\b|in\b|to\b)\w", re.I)
+# 'Kofi and Jess …, and one of them asked for the hammer'
+_ONE_OF_THEM29 = re.compile(r"\bone of them\b", re.I)
+
+
+def _more_readings29(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
+    """What else a refusal must say so that one rephrasing can settle it (session 29, blind27's
+    refusals without their readings): a pronoun refused while a name is unclear too ("Ruth needs
+    the blanket taken across to Mr Lee, he's feeling the draught": the blanket could be either),
+    a choice narrowed by words the grounder cannot read ('tom needs a box, the one mia packed':
+    which box), and 'one of them' after two or more people named together ('Kofi and Jess …, and
+    one of them asked for the hammer': which person). '' when there is nothing to add."""
+    said = str(refused)
+    out: list[str] = []
+    if "is not resolved" in said and _readings(refused):
+        named = _unclear_names(text, lexicon)
+        if named and named not in said:
+            out.append(named)
+    if not _readings(refused):
+        try:
+            items = lex(text, lexicon)
+        except GroundingError:
+            return ""
+        m = _THE_ONE29.search(text)
+        if m is not None:
+            ids = sorted(
+                {
+                    r.id
+                    for it in lex(m.group(1), lexicon)
+                    if it.kind == "ent"
+                    for r in it.refs
+                    if r.kind == "object"
+                }
+            )
+            if len(ids) > 1:
+                out.append(f"{m.group(1)!r} could mean {' or '.join(ids)}")
+        one = _ONE_OF_THEM29.search(text)
+        if one is not None:
+            people = _people_listed29(items, lexicon, len(lex(text[: one.start()], lexicon)))
+            if people:
+                out.append(f"'one of them' could mean {' or '.join(people)}")
+    return "; ".join(out)
+
+
+def _people_listed29(items: list[Item], lexicon: Lexicon, stop: int) -> list[str]:
+    """The people of the last 'P and Q' (or 'P, Q and R') said before item ``stop``."""
+    k = min(stop, len(items)) - 1
+    while k >= 0:
+        if items[k].kind == "ent" and all(r.kind == "human" for r in items[k].refs):
+            j = k
+            ids: list[str] = []
+            while j >= 0:
+                it = items[j]
+                if it.kind == "ent" and len(it.refs) == 1 and it.refs[0].kind == "human":
+                    ids.insert(0, it.refs[0].id)
+                elif not (it.kind in ("word", "punct") and it.text.lower() in (",", "and")):
+                    break
+                j -= 1
+            return [person_name(i, lexicon) for i in ids] if len(set(ids)) > 1 else []
+        k -= 1
+    return []
+
+
 def _unclear_it(text: str, lexicon: Lexicon) -> str:
     """What the first 'it' of ``text`` could mean when the last thing named before it is a list of
     objects ("The tape and the gloves are done with, so take it over to Tom": "'it' could mean tape
@@ -235,7 +303,7 @@ def _inside() -> list[str]:
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        text = order_colons(apostrophes(text))
+        text = trades29(order_colons(apostrophes(text)), lexicon)
         cut = _cut_off(text)
         if cut is not None:
             raise cut
@@ -840,6 +908,12 @@ class _Parser:
                         raise GroundingError(f"{_text(sent)!r}: nothing said before it to order")
                     result = self._first_of(_RawGroup("and", [result]), ahead)
                     continue
+            if n > 0 and conn == "and" and held is None:
+                later = _after_that29(body)
+                if later is not None:
+                    # "The stapler goes to Sam; put the notepad on the desk after that." (session
+                    # 29, blind27): a sentence ending on 'after that' comes after the one before
+                    body, conn = later, "then"
             lead = False
             if (
                 conn == "and"
@@ -2048,6 +2122,27 @@ def _split_after_first29(sent: list[Item]) -> list[list[Item]]:
         if first_refs(sent[: j + 1])[1]:
             return [sent[: j + 1], rest]
     return [sent]
+
+
+def _after_that29(body: list[Item]) -> list[Item] | None:
+    """``body`` without an 'after that' / 'afterwards' that ends it and orders nothing inside it
+    (``_trailing_order`` leaves it, and the sentence would read 'X, then' with nothing after);
+    None when it does not end so."""
+    core = list(body)
+    while core and _is(core[-1], ",", "filler"):
+        core.pop()
+    if len(core) < 3 or not _is(core[-1], "then"):
+        return None
+    try:
+        out = _trailing_order(body)
+    except GroundingError:
+        return None
+    if out is not body and out != body:
+        return None
+    rest = core[:-1]
+    if any(_is(x, "then", "after", "before", "once", "prior", "first") for x in rest):
+        return None
+    return rest
 
 
 def _already_first29(body: list[Item]) -> bool:

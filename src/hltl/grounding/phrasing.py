@@ -2817,6 +2817,11 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 and _objects(nxt)
             ):
                 continue  # "give Alice her cup": a possessive after the person
+            if low == "his" and nxt is not None and _objects(nxt):
+                # "… Bob can take his crisps" (session 29, blind27): 'his' before an object is
+                # only a possessive (never a recipient, as 'her' may be), and whose the object is
+                # changes no task (the scene knows no owners): the object is read alone
+                continue
             candidates = [p for p in seen if p not in _waiting(out, items, k)]
             own = _own_person(out)
             if own is not None:
@@ -2856,6 +2861,11 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     del out[p - 1 :]  # "give Alice and Carol a mug for each of them": said already
                 else:
                     out.extend(group)  # "…, get a mug for each of them": Alice and Carol
+                continue
+            if prev is not None and _is(prev, "to", "for") and len(seen) == 1:
+                # "The bottle's for Person B. Take it over to them." (session 29, blind27): a
+                # recipient 'them' when one person alone has been named is that person
+                out.append(Item("ent", low, it.text, (Ref("human", next(iter(seen))),)))
                 continue
             if (nxt is not None and nxt.kind == "ent") or (
                 prev is not None and _is(prev, "to", "for")
@@ -5441,7 +5451,30 @@ def _for_me_alone(items: list[Item]) -> list[Item]:
     return items
 
 
+def _two_names29(items: list[Item]) -> list[Item]:
+    """'the bedside locker' (session 29, blind27): two names of one surface or object said
+    together, after an article ('bedside' and 'locker' both name the bedside table), name it
+    once. Names of different things, or of people, are left."""
+    out: list[Item] = []
+    for it in items:
+        prev = out[-1] if out else None
+        if (
+            prev is not None
+            and len(out) > 1
+            and _is(out[-2], "det")
+            and prev.kind == it.kind == "ent"
+            and len(prev.refs) == len(it.refs) == 1
+            and prev.refs[0] == it.refs[0]
+            and prev.refs[0].kind in ("surface", "object")
+        ):
+            out[-1] = Item("ent", prev.lemma, f"{prev.text} {it.text}", prev.refs, prev.quant)
+            continue
+        out.append(it)
+    return out
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_two_names29),
     _plain(_for_me_alone),
     _plain(_any_described),
     _plain(_described_then_corrected),
