@@ -9,7 +9,15 @@ from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
-from tests.grounding.helpers import CELL, OFFICE, WARD, WORKSHOP, assert_reads, assert_refused
+from tests.grounding.helpers import (
+    CELL,
+    KITCHEN,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
 
 # cell: mug_red and mug_blue are the two mugs; Alice is Person A, Bob Person B.
 
@@ -131,3 +139,28 @@ def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scen
 )
 def test_asides_inside_a_sentence_still_go(text: str, want: str) -> None:
     assert_reads(text, want, WARD)
+
+
+# -- a remark ends where its sentence ends ----------------------------------------------------
+#
+# "morning ." is one filler that takes the full stop into its words; a remark opening the
+# instruction ran on past it to the next comma, and took "Not to Marco" with it (12c's asides
+# fuzz, session 29): "It's been a long morning. Not to Marco, the knife goes to Marco" read
+# `knife>A`, where the sentence alone contradicts itself and is refused.
+
+
+def test_a_remark_does_not_take_the_next_sentence() -> None:
+    assert_refused("It's been a long morning. Not to Marco, the knife goes to Marco", KITCHEN)
+    assert_refused("Not to Marco, the knife goes to Marco", KITCHEN)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "It's been a long morning. The knife goes to Marco",
+        "Good morning. Give Marco the knife.",
+        "Morning. Give Marco the knife.",
+    ],
+)
+def test_a_remark_before_a_request_still_goes(text: str) -> None:
+    assert_reads(text, "knife>A", KITCHEN)

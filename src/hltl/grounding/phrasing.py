@@ -418,12 +418,17 @@ _HAS_WORDS = frozenset({"has", "had", "'s", "is", "was", "wants", "needs", "like
 
 
 def _clause_stop(items: list[Item], k: int, to_comma: bool) -> int:
-    """The end of the sentence from ``k`` (or its first comma when ``to_comma``)."""
+    """The end of the sentence from ``k`` (or its first comma when ``to_comma``). A filler that
+    took the stop into its words ('morning .') ends the sentence too (session 29: "It's been a
+    long morning. Not to Marco, the knife goes to Marco" had the remark run on to the comma and
+    take 'Not to Marco' with it)."""
     n = k
     while n < len(items) and not (
         items[n].kind == "punct"
         and (items[n].lemma in _END or (to_comma and items[n].lemma in (",", "-")))
     ):
+        if n > k and items[n - 1].kind == "word" and items[n - 1].text.rstrip()[-1:] in _END:
+            break
         n += 1
     return n
 
