@@ -8,11 +8,12 @@ import pytest
 from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     KITCHEN,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     assert_reads,
@@ -164,3 +165,49 @@ def test_a_remark_does_not_take_the_next_sentence() -> None:
 )
 def test_a_remark_before_a_request_still_goes(text: str) -> None:
     assert_reads(text, "knife>A", KITCHEN)
+
+
+# -- a correction's cue between commas is not an aside -----------------------------------------
+#
+# `_asides` takes ', our supervisor,' after a person for who that person is; it took ', my
+# mistake,' so too when a closer sent the text to the rewrites ("The chips to Person A, my
+# mistake, the apple. Regards." read `chips>A & apple>A`; 12c's probe on main 235a432).
+
+LINE = load_scene(ROOT / "examples/scenes/4-4-line.yaml")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The chips to Person A, my mistake, the apple. Regards.",
+        "The chips to Person A, my bad, the apple. Regards.",
+        "Bit of a rush today. The chips to Person A, my mistake, the apple.",
+        "The chips to Person A, my mistake, the apple.",
+    ],
+)
+def test_my_mistake_between_commas_corrects(text: str) -> None:
+    assert_reads(text, "apple>A", LINE)
+
+
+def test_a_description_between_commas_still_goes() -> None:
+    assert_reads("The chips to Person A, our supervisor, please. Regards.", "chips>A", LINE)
+
+
+# -- a time after a name is not a trade ---------------------------------------------------------
+#
+# Engineer 12's `trades29` takes 'the baker' off after a name; it took 'the baker tomorrow' off
+# too, and the deferring time with it ("crisps for alice the baker tomorrow" read `chips>A`;
+# the lead's fuzz, seed 53, on main 9388d05).
+
+FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
+
+
+@pytest.mark.parametrize(
+    "text", ["crisps for alice the baker tomorrow", "Crisps for Alice the baker tomorrow."]
+)
+def test_a_time_after_a_trade_is_not_taken_off(text: str) -> None:
+    assert_refused(text, FIG1, match="puts the task off")
+
+
+def test_a_trade_alone_still_goes() -> None:
+    assert_reads("Crisps for Alice the baker.", "chips>A", FIG1)

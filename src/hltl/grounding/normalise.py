@@ -661,6 +661,8 @@ def _asides_between_commas(text: str, lexicon: Lexicon) -> str:
                 himself
                 and re.match(r"(?:the|a|an|our|my|your)\b", words, _F) is not None
                 and not _picks_object(words, lexicon)
+                # "Person A, my mistake, the apple": a correction's cue, not who Person A is
+                and re.fullmatch(_CUE19, words, _F) is None
             )
             if same or described:  # "our manager, Priya," / "Mr Novak, the gentleman …,"
                 out[-1] += parts[k + 1]
@@ -7284,7 +7286,16 @@ def _trade_words29(words: str, lexicon: Lexicon) -> bool:
         all(it.kind == "unknown" for it in items)
         and _inert28(words, lexicon)
         and not any(w in said or w in _NOT_TRADE29 for w in words.lower().split())
+        # "crisps for alice the baker tomorrow": a time is said, which a trade is not (lead)
+        and _TIME29.search(words) is None
     )
+
+
+_TIME29 = re.compile(
+    r"\b(?:tomorrow|tonight|today|now|later|soon|yesterday|morning|afternoon|evening|first|"
+    r"last|next|then|after|before|again|asap)\b",
+    _F,
+)
 
 
 def trades29(text: str, lexicon: Lexicon) -> str:
