@@ -7286,16 +7286,10 @@ def _trade_words29(words: str, lexicon: Lexicon) -> bool:
         all(it.kind == "unknown" for it in items)
         and _inert28(words, lexicon)
         and not any(w in said or w in _NOT_TRADE29 for w in words.lower().split())
-        # "crisps for alice the baker tomorrow": a time is said, which a trade is not (lead)
-        and _TIME29.search(words) is None
+        # "crisps for alice the baker tomorrow": a time is said (or another word that asks,
+        # _ASKS29), which a trade is not (lead)
+        and _ASKS29.search(words) is None
     )
-
-
-_TIME29 = re.compile(
-    r"\b(?:tomorrow|tonight|today|now|later|soon|yesterday|morning|afternoon|evening|first|"
-    r"last|next|then|after|before|again|asap)\b",
-    _F,
-)
 
 
 def trades29(text: str, lexicon: Lexicon) -> str:

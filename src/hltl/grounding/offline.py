@@ -789,6 +789,9 @@ class _Frag:
 class _RawGroup:
     op: Op
     children: list[_Frag | _RawGroup] = field(default_factory=list)
+    # the ids whose tasks go first when it is built ('X first' before another sentence,
+    # session 29; ``_Parser._build``)
+    first: tuple[str, ...] = ()
 
 
 _Raw = _Frag | _RawGroup
@@ -821,8 +824,6 @@ class _Parser:
         self._segment = 0
         self._slots: dict[str, tuple[int, tuple[str, ...]]] = {}  # placeholder -> group, options
         self._chosen: dict[int, str] = {}  # fragment that made a choice -> its placeholder
-        # a group said with 'X first' before another sentence (session 29) -> the ids of X
-        self._ahead: dict[int, tuple[str, ...]] = {}
 
     # -- choices ---------------------------------------------------------------------------------
     def expand(self, node: Node, pending: frozenset[int]) -> Node:
@@ -906,7 +907,7 @@ class _Parser:
                     # "… Bob first, please. Alice gets the bottle too.": what was said before
                     if result is None:
                         raise GroundingError(f"{_text(sent)!r}: nothing said before it to order")
-                    result = self._first_of(_RawGroup("and", [result]), ahead)
+                    result = _RawGroup("and", [result], first=ahead)
                     continue
             if n > 0 and conn == "and" and held is None:
                 later = _after_that29(body)
@@ -960,7 +961,7 @@ class _Parser:
             if ahead:
                 # "Give Lena the knife and the lemon, the lemon first. Also, …": the order is
                 # of this sentence's tasks (not the whole instruction's, not dropped)
-                node = self._first_of(_RawGroup("and", [node]), ahead)
+                node = _RawGroup("and", [node], first=ahead)
             if held is not None:
                 # "B gets the bottle. Then the chips. Those are for A.": the objects said alone
                 # and the sentence giving them are one step, ordered as the first is said
@@ -982,11 +983,6 @@ class _Parser:
         if result is None:
             raise GroundingError("the instruction names no task")
         return result
-
-    def _first_of(self, group: _RawGroup, ahead: tuple[str, ...]) -> _RawGroup:
-        """``group``, whose tasks naming ``ahead`` go first when it is built (``_build``)."""
-        self._ahead[id(group)] = ahead
-        return group
 
     def sentence(self, items: list[Item]) -> _Raw:
         first = items[0]
@@ -1870,7 +1866,7 @@ class _Parser:
         if not kids:
             return None
         node = kids[0] if len(kids) == 1 else Group(raw.op, tuple(kids))
-        ahead = self._ahead.get(id(raw))
+        ahead = raw.first
         if ahead:
             moved = _move_first(node, ahead, self.lex)
             if moved is node:
