@@ -544,7 +544,6 @@ KNOWN_MISSES = frozenset(
         'Bottle to Bob, eh sorry, wrong, to Alice I mean.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
-        'person b gets the apple to start with, and then after it person a gets the chips',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         'the red book goes back up on the bookshelf with the others',
         'Person A is hungry, please bring her the alple from the end.',
