@@ -85,6 +85,28 @@ READS = [
         "chips>B & apple>B",
         CELL,
     ),
+    # (p) a state said with 'need(s) …ing' of what the scene does not name, asking nothing
+    (
+        "The two cooks need feeding: bottle for Person A, chips for Person B.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+    ("Mind popping the apple on the shelf? The cooper's crates need sealing.", "apple@shelf", CELL),
+    # (q) 'while' between two tasks; the trade said to be P, then a pronoun
+    ("Give Bob the cup, while the chips go to Alice.", "cup>B & chips>A", CELL),
+    ("The cooper's Bob and he's getting the apple.", "apple>B", CELL),
+    # (r) a pronoun, then its name; a note said with 'and' after notes
+    ("The chips go to Bob, and the apple, well, him again, Bob.", "chips>B & apple>B", CELL),
+    ("Apple: Alice. Cup: Bob. And the chips, also Carol.", "apple>A & cup>B & chips>C", CELL),
+    # (s) 'P can take X' in a later clause; a state's cause before 'so'; a remark on 'it'
+    ("Alice gets the apple, then Bob can take the chips.", "apple>A ; chips>B", CELL),
+    (
+        "Alice gets the apple, and once that's done Bob can take his chips.",
+        "apple>A ; chips>B",
+        CELL,
+    ),
+    ("bob is hungry after the match so he wants the chips", "chips>B", CELL),
+    ("Could the apple go on the shelf? The juice is sticky on it.", "apple@shelf", CELL),
 ]
 
 
@@ -144,6 +166,24 @@ REFUSED = [
     ("Bob at table four wants the cup", CELL),
     ("everything goes to person b, that's the bottle", DUO),
     ("everything goes to person b, that's the bottle and person a", DUO),
+    # (p) a count the people after the colon do not match; an object of the scene needing it
+    ("The two cooks need feeding: bottle for Person A.", DUO),
+    ("The cups need washing: the red mug to Alice.", CELL),
+    ("The stagehands need feeding.", CELL),
+    # (q) no task before 'while', or nowhere of the scene after it; a pronoun that cannot be P
+    ("Give Bob the cup, while the chips go to the kitchen.", CELL),
+    ("Bob is waiting, while the chips go to Alice.", CELL),
+    ("The diner's Mr Novak and she's getting the salt shaker.", KITCHEN),
+    ("The red's Bob and he's getting the apple.", CELL),
+    # (r) the name is not the one person named before; a note of two people
+    ("The chips go to Bob, and the apple, well, him again, Alice.", CELL),
+    ("Give Alice and Bob the chips, and the apple, him again, Bob.", CELL),
+    ("Apple: Alice. And the chips, also Bob and Carol.", CELL),
+    # (s) X taken on to someone else; the cause names an object; a remark on two objects
+    ("Alice gets the apple, then Bob can take the chips to Carol.", CELL),
+    ("bob is hungry after the apple so he wants the chips", CELL),
+    ("Put the apple and the cup on the shelf. The juice is sticky on it.", CELL),
+    ("Mind the apple on the shelf.", CELL),
 ]
 
 

@@ -8035,6 +8035,242 @@ def _cleft30(text: str, lexicon: Lexicon) -> str:
     return _CLEFT30.sub(plain, text)
 
 
+# "The milkman's crates need sealing.", "The two stagehands need feeding: …": a state said with
+# 'need(s)' and a verb in '-ing', of something or someone the scene does not name; it asks the cell
+# nothing. Taken off as a sentence of its own or a heading before a colon when its subject names
+# nothing and asks nothing (_asks_nothing29); a count before the subject ('the two stagehands')
+# only when as many people of the scene are named after the colon.
+_NEEDS_DOING30 = re.compile(
+    r"(?P<subject>(?:the|our|my|his|her|their|a|an|these|those) (?:(?P<count>two|three|four|both) "
+    r")?[a-z' -]+?) (?:need|needs|want|wants) (?P<doing>[a-z]+ing)(?: (?:badly|urgently|again))?",
+    _F,
+)
+_COUNTS30 = {"two": 2, "both": 2, "three": 3, "four": 4}
+
+
+def _needs_doing30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the state above taken off."""
+    if "need" not in text.lower() and "want" not in text.lower():
+        return text
+    parts = re.split(r"(\s*[.!?;:]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+    out: list[str] = []
+    for k, (sent, sep) in enumerate(zip(sents, seps, strict=True)):
+        m = _NEEDS_DOING30.fullmatch(sent.strip())
+        if m is None or "?" in sep:
+            out.append(sent + sep)
+            continue
+        subject = m["subject"]
+        if m["count"]:
+            after = "".join(a + b for a, b in zip(sents[k + 1 :], seps[k + 1 :], strict=True))
+            people = _ids(after, lexicon, "human")
+            if not sep.strip().startswith(":") or len(people) != _COUNTS30[m["count"].lower()]:
+                out.append(sent + sep)
+                continue
+            subject = subject.replace(f" {m['count']} ", " ", 1)
+        if m["doing"].lower() in VERBS or not _asks_nothing29(f"{subject} {m['doing']}", lexicon):
+            out.append(sent + sep)
+            continue
+    said = "".join(out).strip()
+    if said == text.strip() or not _names(said, lexicon):
+        return text
+    return said
+
+
+# "…, while the chips go across to Person A": 'while' between two tasks sets them side by side
+_WHILE_GO30 = re.compile(
+    r",\s*while (?P<what>(?:the|that|this|those|these) [a-z][a-z ]*?) (?P<verb>go|goes) "
+    r"(?P<dir>(?:(?:over|across|round|along|up|down) )?)to (?P<where>[A-Za-z]+(?: [A-Za-z]+)?)"
+    r"(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _while_go30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the 'while' above is 'and', when a task is said before it and the X are
+    objects of the scene only and P one person or surface (as _while29 for two wants)."""
+    if "while" not in text.lower():
+        return text
+
+    def side(m: re.Match[str]) -> str:
+        before = re.split(r"[.!?;:]\s", text[: m.start()])[-1]
+        if (
+            _ids(before, lexicon, "object")
+            and _objects_only(m["what"], lexicon)
+            and (_only(m["where"], lexicon, "human") or _only(m["where"], lexicon, "surface"))
+        ):
+            what = m["what"][:1].upper() + m["what"][1:]  # a sentence of its own: 'go' is plain
+            return f". {what} {m['verb']} {m['dir']}to {m['where']}"
+        return m[0]
+
+    return _WHILE_GO30.sub(side, text)
+
+
+# "The clown's Person B and he's getting the bottle": who the trade is, then a pronoun for them
+_WHO_IS30 = re.compile(
+    r"(?:^|(?<=[.!?;]\s))(?:the|our|my|your) (?P<trade>[a-z]+(?: [a-z]+)?)(?:'s| is) "
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?),? and (?P<pronoun>he|she|they)\b",
+    _F,
+)
+
+
+def _who_is30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the trade said to be P (above), then a pronoun for P, is P: when the trade is
+    words the lexer does not know naming nothing (_trade_words29), P one person, and the pronoun
+    may be P."""
+    if " and " not in text.lower():
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if (
+            _trade_words29(m["trade"], lexicon)
+            and _only_person(m["who"], lexicon)
+            and _fits(next(iter(_ids(m["who"], lexicon))), m["pronoun"], lexicon)
+        ):
+            return m["who"]
+        return m[0]
+
+    return _WHO_IS30.sub(named, text)
+
+
+# "…, and the bottle, well, him again, Person B.": a pronoun, then the name it stands for
+_NAMED_AFTER30 = re.compile(
+    r"\b(?P<pronoun>him|her|them)(?: again| too| as well)?, (?P<who>[A-Za-z]+(?: [A-Za-z]+)?)"
+    r"(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _named_after30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the pronoun and its name (above) are the name, when the name is one person,
+    the one person named before it, whom the pronoun may be."""
+    if not _rx(r"\b(?:him|her|them)\b").search(text):
+        return text
+
+    def name(m: re.Match[str]) -> str:
+        before = _ids(text[: m.start()], lexicon, "human")
+        who = _ids(m["who"], lexicon, "human")
+        if (
+            _only_person(m["who"], lexicon)
+            and before == who
+            and _fits(next(iter(who)), m["pronoun"], lexicon)
+        ):
+            return m["who"]
+        return m[0]
+
+    return _NAMED_AFTER30.sub(name, text)
+
+
+# "Bottle: Person A. Cup: Person B. And the chips, also Person A.": a note said with 'and' after
+# notes of the same form ('<object>: <person>.')
+_NOTE30 = re.compile(r"(?P<what>[a-z][a-z ]*?):\s*(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)", _F)
+_NOTE_AND30 = re.compile(
+    r"(?:and|also|plus) (?:the )?(?P<what>[a-z][a-z ]*?),? (?:also |too,? )?"
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)(?: too| as well)?",
+    _F,
+)
+
+
+def _note_and30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the note with 'and' (above) said as the notes before it are, when each note
+    is one object and one person of the scene."""
+    if ":" not in text:
+        return text
+    parts = re.split(r"(\s*[.!]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+
+    def note(what: str, who: str) -> bool:
+        return len(_ids(what, lexicon, "object")) == 1 and (
+            _only_kind(what, lexicon, "object") and _only_person(who, lexicon)
+        )
+
+    seen = False
+    out: list[str] = []
+    for sent, sep in zip(sents, seps, strict=True):
+        plain = _NOTE30.fullmatch(sent.strip())
+        if plain is not None and note(plain["what"], plain["who"]):
+            seen = True
+        said = _NOTE_AND30.fullmatch(sent.strip())
+        if seen and plain is None and said is not None and note(said["what"], said["who"]):
+            sent = f"{said['what'][:1].upper()}{said['what'][1:]}: {said['who']}"
+        out.append(sent + sep)
+    return "".join(out).strip()
+
+
+# "…, and once that's done Bob can take his crisps": 'P can take / have X' in a later clause
+_CAN_TAKE30 = re.compile(
+    r"(?:(?<=[,;] )|(?<=\bthen )|(?<=\bdone )|(?<=\bdone, ))"
+    r"(?!(?:then|and|so)\b)(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) can (?:take|have) "
+    r"(?:(?P<own>his|her|their) |(?=the ))(?P<what>[a-z][a-z ]*?)(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _can_take30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'P can take / have X' after a comma, 'then' or 'once that's done' (above) is
+    'P gets X' (as it reads alone), when P is one person (whom 'his' / 'her' may be) and X objects
+    of the scene only."""
+    if " can " not in text.lower():
+        return text
+
+    def gets(m: re.Match[str]) -> str:
+        what = m["what"]
+        if not (_only_person(m["who"], lexicon) and _objects_only(what, lexicon)):
+            return m[0]
+        if m["own"] and not _fits(next(iter(_ids(m["who"], lexicon))), m["own"], lexicon):
+            return m[0]
+        return f"{m['who']} gets {'the ' if m['own'] else ''}{what}"
+
+    return _CAN_TAKE30.sub(gets, text)
+
+
+# "person b is thirsty after the dive so she wants the bottle": a state and its cause, then 'so'
+_STATE_AFTER30 = re.compile(
+    r"\b(?P<state>(?:is|'s|are|'re) [a-z]+) after (?P<cause>(?:the|a|an|his|her|their|my|our) "
+    r"[a-z' -]+?)(?=,? so\b)",
+    _F,
+)
+
+
+def _state_after30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the cause (above) taken off when it names nothing and asks nothing
+    (_asks_nothing29): it says why, never when to act."""
+    if " after " not in text.lower() or " so " not in text.lower():
+        return text
+    return _STATE_AFTER30.sub(
+        lambda m: m["state"] if _asks_nothing29(m["cause"], lexicon) else m[0], text
+    )
+
+
+# "Could the bowl go in the sink? The botanist's soil is caked on it.": a statement after the
+# request about its one object ('it'), naming nothing else: why it is asked
+_STATEMENT_IT30 = re.compile(r"\b(?:is|are|was|were|'s|'re)\b", _F)
+
+
+def _remark_it30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the closing statement above taken off, when the sentences before it name one
+    object of the scene (which 'it' is) and the statement, 'it' aside, names nothing and asks
+    nothing (_asks_nothing29)."""
+    m = re.search(r"(?<=[.!?])\s+(?P<said>[^.!?]+)[.!]?\s*$", text)
+    if m is None or not re.search(r"\bit\b", m["said"], _F):
+        return text
+    said = m["said"]
+    before = text[: m.start()]
+    if (
+        _STATEMENT_IT30.search(said) is None
+        or len(_ids(before, lexicon, "object")) != 1
+        or not _asks_nothing29(re.sub(r"\bit\b", "", said, flags=_F), lexicon)
+    ):
+        return text
+    return before.strip()
+
+
+def _mind30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: "Mind popping the packing tape on the pallet?": 'Would you mind …?' said short
+    (a question; 'Mind the step' is a warning, and no '-ing' follows it)."""
+    return _sub(r"^mind (?=[a-z]+ing\b[^.!?]*\?)", "Would you mind ", text)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -12866,6 +13102,15 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _run_on_it30,
     _at_table30,
     _all_listed30,
+    _needs_doing30,
+    _while_go30,
+    _who_is30,
+    _named_after30,
+    _note_and30,
+    _can_take30,
+    _state_after30,
+    _remark_it30,
+    _mind30,
     # session 29 (12): blind27's kinds
     _says29,
     _described29,
