@@ -7984,7 +7984,10 @@ def _at_table30(text: str, lexicon: Lexicon) -> str:
 
 # "all of it's for person a, that's the bottle and the chips": 'all' said, then what it is
 _ALL_LISTED30 = re.compile(
-    r"(?P<all>\b(?:all of it|all of them|everything|the lot|the whole lot|all of that)\b[^.;!?]*?)"
+    r"(?P<all>\b(?:all of it|all of them|everything|the lot|the whole lot|all of that)\b"
+    # 'all' itself, not a kind of it ('Everything sweet goes …' is _described_list27's)
+    r"(?='s|\s+(?:is|are|goes|go|to|for|on|onto|in|into|over|across)\b|\s*[,.;!?]|\s*$)"
+    r"[^.;!?]*?)"
     r",\s*(?:that's|that is|which is|which are|i\.e\.|meaning|namely)(?: just| only)? "
     r"(?P<list>[^.;!?,]+?(?:,[^.;!?,]+?)*)\s*(?=[.;!?]|$)",
     _F,
