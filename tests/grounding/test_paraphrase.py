@@ -634,7 +634,6 @@ KNOWN_MISSES = frozenset(
         'Zoe wants the scissord to cut out her rock diagrams.',
         "Would you mind lifting the crisps up onto the shelf so the ventriloquist's dummy can't "
         "get at them?",
-        'Can you carry the bottle down the line to Person A?',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",

@@ -107,6 +107,9 @@ READS = [
     ),
     ("bob is hungry after the match so he wants the chips", "chips>B", CELL),
     ("Could the apple go on the shelf? The juice is sticky on it.", "apple@shelf", CELL),
+    # (t) the way an object is carried, before where it goes
+    ("Take the apple along the corridor to Alice.", "apple>A", CELL),
+    ("Could you carry the chips down the hall to Bob?", "chips>B", CELL),
 ]
 
 
@@ -184,6 +187,10 @@ REFUSED = [
     ("bob is hungry after the apple so he wants the chips", CELL),
     ("Put the apple and the cup on the shelf. The juice is sticky on it.", CELL),
     ("Mind the apple on the shelf.", CELL),
+    # (t) the way is a place of the scene, or points back; nothing carried
+    ("Take the apple down the shelf to Alice.", CELL),
+    ("Take the apple down the other one to Alice.", CELL),
+    ("Walk down the hall to Alice.", CELL),
 ]
 
 

@@ -8274,6 +8274,33 @@ def _mind30(text: str, _lexicon: Lexicon) -> str:
     return _sub(r"^mind (?=[a-z]+ing\b[^.!?]*\?)", "Would you mind ", text)
 
 
+# "Can you carry the bottle down the line to Person A?": the way it is carried, then where to
+_PATH30 = re.compile(
+    r"(?P<before>\b(?:the|that|this|it|them)\b[^,.;!?]*?) (?P<dir>down|along|up|across|through|"
+    r"round|around) the (?P<path>[a-z]+(?: [a-z]+)?) (?=to )",
+    _F,
+)
+
+
+def _path30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the way (above) taken off, its direction kept ('carry the bottle down to
+    Person A'), when it names nothing of the scene and holds no word that counts, chooses or
+    points back (_inert28), and an object or 'it' / 'them' is said before it."""
+    if " the " not in text.lower():
+        return text
+
+    def way(m: re.Match[str]) -> str:
+        said = m["before"]
+        if not (_ids(said, lexicon, "object") or re.search(r"\b(?:it|them)\b", said, _F)):
+            return m[0]
+        if not _inert28(m["path"], lexicon):
+            return m[0]
+        direction = {"through": "over", "around": "round"}.get(m["dir"].lower(), m["dir"])
+        return f"{said} {direction} "
+
+    return _PATH30.sub(way, text)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -13114,6 +13141,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_after30,
     _remark_it30,
     _mind30,
+    _path30,
     # session 29 (12): blind27's kinds
     _says29,
     _described29,
