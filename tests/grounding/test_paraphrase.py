@@ -632,8 +632,6 @@ KNOWN_MISSES = frozenset(
         "Ruth has asked for the thermomrter, the ward's too warm.",
         'Tom needs the glovrs, the pallets are splintery.',
         'Zoe wants the scissord to cut out her rock diagrams.',
-        "Would you mind lifting the crisps up onto the shelf so the ventriloquist's dummy can't "
-        "get at them?",
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",

@@ -110,6 +110,8 @@ READS = [
     # (t) the way an object is carried, before where it goes
     ("Take the apple along the corridor to Alice.", "apple>A", CELL),
     ("Could you carry the chips down the hall to Bob?", "chips>B", CELL),
+    # (u) what the request is for, with a subject the scene does not name
+    ("Put the chips on the shelf so the dog can't reach them.", "chips@shelf", CELL),
 ]
 
 
@@ -191,6 +193,10 @@ REFUSED = [
     ("Take the apple down the shelf to Alice.", CELL),
     ("Take the apple down the other one to Alice.", CELL),
     ("Walk down the hall to Alice.", CELL),
+    # (u) the purpose names someone or something of the scene
+    ("Put the chips on the shelf so the red mug can go on the table.", CELL),
+    ("Put the chips on the shelf so the dog won't give Bob the apple.", CELL),
+    ("Put the chips on the shelf so the dog can't reach the cup.", CELL),
 ]
 
 

@@ -8301,6 +8301,30 @@ def _path30(text: str, lexicon: Lexicon) -> str:
     return _PATH30.sub(way, text)
 
 
+# "… onto the shelf so the ventriloquist's dummy can't get at them?": what the request is for,
+# with a subject the scene does not name (session 19's purpose rule takes it with a pronoun)
+_SO_THAT30 = re.compile(
+    r",?\s+so (?:that )?(?P<said>(?:the|a|an|his|her|their|my|our|your) [a-z' -]+? (?:can't|"
+    r"cannot|won't|can|could|will|'ll|doesn't|don't|isn't) [a-z' ]{2,40}?)(?=\s*(?:[.;!?]|$))",
+    _F,
+)
+
+
+def _so_that30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the purpose above taken off when it names nothing of the scene (nor a typo of
+    a name) and something is named before it."""
+    if " so " not in text.lower():
+        return text
+    m = _SO_THAT30.search(text)
+    if (
+        m is None
+        or not _names_nothing(m["said"], lexicon)
+        or not _names(text[: m.start()], lexicon)
+    ):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -13142,6 +13166,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _remark_it30,
     _mind30,
     _path30,
+    _so_that30,
     # session 29 (12): blind27's kinds
     _says29,
     _described29,
