@@ -469,8 +469,6 @@ KNOWN_MISSES = frozenset(
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
-        "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
-        "see it.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
