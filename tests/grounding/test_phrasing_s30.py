@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import show_tree
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.update import classify
 from hltl.world.scene import load_scene
@@ -225,3 +226,12 @@ def test_a_closing_next_is_then_in_an_update() -> None:
 def test_the_reason_names_one_person_of_one_sex() -> None:
     # 'her' and 'he' cannot both be Lily: the reason is not taken off
     assert tree("Lily wants her teddy; he won't sleep until he's got it.", NURSERY) is None
+
+
+def test_whom_it_is_for_after_a_cue_is_no_reason() -> None:
+    # the wrappers fuzz (seed 31) on main df76ad6: the gloves read to Mia, the person corrected
+    # away ('it's for Tom' was taken off as a reason between the cue and the corrected words)
+    text = "The tape is for Mia. Sorry, my mistake, it's for Tom, no wait, the work gloves"
+    assert tree(text, DEPOT) is None or show_tree(tree(text, DEPOT)) == "gloves>B"
+    assert_reads("The tape is for Mia. Sorry, my mistake, it's for Tom.", "tape>B", DEPOT)
+    assert_reads("Give the bottle to Bob, no wait, Bob's got one, to Alice.", "bottle>A", CELL)

@@ -10753,6 +10753,11 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
         return text
+    if re.search(r"\bfor\b", why, _F) and _ids(why, lexicon, "human"):
+        # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
+        # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
+        # gloves to the person before)
+        return text
     return text[: m.start("why")] + after
 
 
