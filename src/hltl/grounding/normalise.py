@@ -8006,8 +8006,10 @@ def _all_listed30(text: str, lexicon: Lexicon) -> str:
         not named
         or any(len(it.refs) != 1 or it.refs[0].kind != "object" for it in named)
         or {it.refs[0].id for it in named} != every
-        or not re.fullmatch(
-            r"(?:(?:the )?[a-z ]+?)(?:(?:,|,? and) (?:the )?[a-z ]+?)*", m["list"], _F
+        # each item one name of one object, nothing else ('…, before I go tomorrow' is no item)
+        or not all(
+            len(_ids(item, lexicon)) == 1 and _only_kind(item, lexicon, "object")
+            for item in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m["list"].strip(), flags=_F)
         )
     ):
         return text
