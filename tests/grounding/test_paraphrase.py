@@ -294,7 +294,6 @@ KNOWN_MISSES = frozenset(
         "Those two mugs want to go on the counter, please.",
         "Drop all three of the pens into the box, they keep rolling off.",
         "Two spanners, one to Kofi and one to Jess.",
-        "Person B is moving desks, so every last one of the four items goes across to her.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
         "Everything that's a box goes on the conveyor, except the big one, leave that on the "
@@ -541,7 +540,6 @@ KNOWN_MISSES = frozenset(
         'Give Ava the blocks, not the green one, only red.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
-        'Bottle to Bob, eh sorry, wrong, to Alice I mean.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
         'person b gets the apple to start with, and then after it person a gets the chips',

@@ -12192,6 +12192,348 @@ def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 30 (12r): blind28's choices, counts, exclusions and corrections ------------------
+# Each rule below rewrites one construction into the form the grammar reads, and leaves the text
+# as it was when what the construction presupposes (one person, the scene's objects, a count)
+# does not hold; docs/grounding.md, "Session 30 (engineer 12r)".
+
+_OBJECT_PRONOUN30R = {"him": "he", "her": "she", "them": "they", "me": "I", "us": "we"}
+# "…, makes no odds to him", "…, it makes no difference", "…, it doesn't matter to her"
+_NO_ODDS30R = re.compile(
+    r"(?P<lead>,\s*)(?:(?:it|that) )?(?:(?:makes|make|'ll make|will make) (?:no|little) "
+    r"(?:odds|difference)|(?:doesn't|does not|won't|will not) (?:matter|make (?:any )?difference))"
+    r"(?: (?:to|for) (?P<who>him|her|them|me|us))?(?P<tail>(?: which(?: one)?)?)"
+    r"(?=\s*(?:[.!,;]|$))",
+    _F,
+)
+
+
+def _no_odds30r(text: str, _lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'makes no odds (to him)' and 'it doesn't matter to her', a clause of its
+    own after a choice, say the chooser does not mind: "he doesn't mind" (to him) or "it doesn't
+    matter" (to no one said), the tails the grammar reads, and which leave a request with nothing
+    open refused as they were."""
+
+    def said(m: re.Match[str]) -> str:
+        who = m.group("who")
+        if who is None:
+            return f"{m.group('lead')}it doesn't matter{m.group('tail')}"
+        subject = _OBJECT_PRONOUN30R[who.lower()]
+        verb = "don't" if subject in ("I", "we", "they") else "doesn't"
+        return f"{m.group('lead')}{subject} {verb} mind{m.group('tail')}"
+
+    return _sub(_NO_ODDS30R.pattern, said, text)
+
+
+# "… to whichever of the two of them, Person A or Person B": the people said after a word for them
+_WHICHEVER_OF30R = re.compile(
+    r"\b(?P<to>to|for) (?:whichever|either|any)(?: one)? of (?:the (?P<n>two|three)(?: of them)?|"
+    r"them(?: both| two)?|the pair of them|the (?P<m>two|three) of you),\s*"
+    r"(?P<list>(?:[A-Za-z][\w ]*?,\s*)*[A-Za-z][\w ]*? or [A-Za-z][\w ]*?)(?=\s*(?:[.!;]|$))",
+    _F,
+)
+
+
+def _whichever_of30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'to whichever of the two of them, P or Q' is 'to either P or Q' when the
+    list names people of the scene only, one each, as many as a number said before it."""
+    m = _WHICHEVER_OF30R.search(text)
+    if m is None:
+        return text
+    names = re.split(r",\s*|\s+or\s+", m.group("list"))
+    if not all(_only_person(n, lexicon) for n in names):
+        return text
+    if len({i for n in names for i in _ids(n, lexicon)}) != len(names):
+        return text
+    n = m.group("n") or m.group("m")
+    if n and _COUNTS[n.lower()] != len(names):
+        return text
+    return f"{text[: m.start()]}{m.group('to')} either {m.group('list')}{text[m.end() :]}"
+
+
+# "One of the books to each student, whichever way round."
+_EACH_ROLE30R = re.compile(
+    r"^(?:please,? )?(?P<what>one of the [a-z]+s|(?:one|an?) [a-z]+) (?:to|for) each "
+    r"(?P<role>[a-z]+)(?:,\s*(?:whichever|either|any) way(?: round)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _each_role30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'One of the Xs to each <role>' (with 'whichever way round' after it or
+    not) is 'Give each <role> one of the Xs', when two people or more of the scene are called so;
+    the grammar then reads the share, or refuses it where the objects do not match."""
+    m = _EACH_ROLE30R.match(text)
+    if m is None:
+        return text
+    role = m.group("role").lower()
+    if sum(role in (a.lower() for a in h.aliases) for h in lexicon.scene.humans) < 2:
+        return text
+    return f"Give each {role} {m.group('what').lower()}{m.group('end')}"
+
+
+# words for everything the scene has, then what they are said again to be: "the whole lot,
+# which is just the bottle and the crisps", "Whatever's there goes to Person A, it's only the
+# bottle anyway"
+_ALL_WORDS30R = (
+    r"(?:the whole lot|the lot|everything|all of it|whatever(?:'s| is) (?:there|here)|"
+    r"whatever there is)"
+)
+_LOT_IS30R = re.compile(
+    r",\s*(?:which is|which are|it's|it is|that's|that is|they're|they are|i\.e\.,?|namely) "
+    r"(?:just |only |simply |all )?(?P<list>(?:the |a |an )?[a-z][a-z ,]*?)"
+    r"(?: anyway| after all| really)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _lot_is30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a word for everything ('the whole lot', 'whatever's there'), then
+    what it is said again to be (", which is just X and Y", ", it's only the X anyway"), is the
+    word alone when the list names exactly every object of the scene ('whatever's there' then
+    'everything'). A list naming fewer (or anything but objects) leaves the text, refused."""
+    if not re.search(_ALL_WORDS30R, text, _F):
+        return text
+    m = _LOT_IS30R.search(text)
+    if m is None or not re.search(_ALL_WORDS30R, text[: m.start()], _F):
+        return text
+    listed = m.group("list")
+    every = {o.id for o in lexicon.scene.objects}
+    if not _objects_only(listed, lexicon) or _ids(listed, lexicon) != every:
+        return text
+    out = text[: m.start()] + m.group("end")
+    out = _sub(r"\bwhatever(?:'s| is) (?:there|here)|\bwhatever there is", "everything", out)
+    return out[:1].upper() + out[1:]
+
+
+def _every_last30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'every last / single one of the four items' is 'all of the four items'
+    (the grammar checks the count against the scene)."""
+    return _sub(
+        r"\bevery (?:last |single )?one of (?=the (?:two|three|four|five|six) [a-z]+s\b)",
+        "all of ",
+        text,
+    )
+
+
+def _pronoun_is_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "so she's to have the two blankets": a pronoun's 's before 'to have /
+    get' is 'is' (as _is_to28s's for a name), and 'she is to have' is 'she gets'."""
+    return _sub(r"\b(she|he)(?:'s| is) to (?:get|have|receive)\b", r"\1 gets", text)
+
+
+def _only_not30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, only not the bottle' after what is given is '…, but not the
+    bottle' (an exclusion the grammar reads); 'but no chips' (a bare name of the scene's objects
+    after 'no') is 'but not the chips'."""
+    out = _sub(r",\s*(?:only|just) not (?=the\b)", ", but not ", text)
+
+    def bare(m: re.Match[str]) -> str:
+        return f"but not the {m.group(1)}" if _whole_name(m.group(1), lexicon, "object") else m[0]
+
+    return _sub(r"\bbut no ([a-z]+(?: [a-z]+)?)(?=\s*(?:[.!;,]|$))", bare, out)
+
+
+# "Only Person A is to get the bottle, nobody else."
+_ONLY_WHO30R = re.compile(
+    r"^only (?P<p>[A-Za-z][\w ]*?) (?P<v>is to get|is to have|gets|should get|should have|can have)"
+    r"\b",
+    _F,
+)
+
+
+def _only_who30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'Only P is to get X' is 'P is to get X' (the request names one
+    recipient: 'only' keeps to it, as 'nobody else' after it does)."""
+    m = _ONLY_WHO30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')}{text[m.end() :]}"
+
+
+def _leaving_out30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, leaving out the big one' closing a request is '…, except the big
+    one' (only an object phrase, ending the text: 'leave it out on the desk' places it)."""
+
+    def left(m: re.Match[str]) -> str:
+        what = m.group("what")
+        if what.lower().split()[-1] not in ("one", "ones") and not _objects_only(what, lexicon):
+            return m[0]
+        return f", except {what}{m.group('end')}"
+
+    return _sub(
+        r",\s*(?:leaving|but leave|but leaving) (?:out|aside) (?P<what>the [a-z ]+?)"
+        r"(?P<end>\s*[.!]?)$",
+        left,
+        text,
+    )
+
+
+def _one_name30r(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (an article aside) are one name of the scene, whole, of one kind."""
+    named = _names(words, lexicon)
+    return len(named) == 1 and _whole_name(words, lexicon, named[0].refs[0].kind)
+
+
+def _rather_than30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'X to P rather than Q' is 'X to P, not Q' when Q is one name of the
+    scene (of a person, object or surface): what the grammar reads as the exclusion."""
+
+    def instead(m: re.Match[str]) -> str:
+        q = m.group("q")
+        if not _one_name30r(q, lexicon):
+            return m[0]
+        return f", not {q}"
+
+    return _sub(
+        r"\s*,?\s*rather than (?P<q>(?:the )?[A-Za-z][\w ]*?)(?=\s*(?:[.!;]|$))", instead, text
+    )
+
+
+def _rather_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, Alice rather.' (the cue after the corrected words, closing the
+    text) is '…, rather Alice.' when the words are one name of the scene."""
+
+    def moved(m: re.Match[str]) -> str:
+        said = m.group("said")
+        if not _one_name30r(said, lexicon):
+            return m[0]
+        return f", rather {said}{m.group('end')}"
+
+    return _sub(r",\s*(?P<said>(?:the )?[A-Za-z][\w ]*?) rather(?P<end>\s*[.!]?)$", moved, text)
+
+
+def _i_mean_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, sorry, cup for Person B I mean.' (the cue after the corrected
+    words) is '…, sorry, I mean cup for Person B.' when the words name something of the scene
+    and no verb or cue of their own."""
+
+    def moved(m: re.Match[str]) -> str:
+        said = m.group("said")
+        if not _names(said, lexicon) or re.search(r"\b(?:i|you|no|not|sorry)\b", said, _F):
+            return m[0]
+        return f", {m.group('cue') or ''}I mean {said}{m.group('end')}"
+
+    return _sub(
+        r",\s*(?P<cue>sorry,\s*|no,\s*)?(?P<said>[A-Za-z][\w ]*?) i mean(?P<end>\s*[.!]?)$",
+        moved,
+        text,
+    )
+
+
+# "…, I mean, the chips, sorry, long day at the dye works.": an apology after the correction
+_SORRY_AFTER30R = re.compile(r",\s*sorry\s*[,;:-]\s*(?P<why>[a-z][a-z' -]*?)(?P<end>\s*[.!]?)$", _F)
+
+
+def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): ', sorry, <words>' closing a text whose words name nothing of the scene
+    and hold no word that counts, chooses, negates or points back is an apology (its reason),
+    taken off: it corrects nothing. Only after a correction already said ('I mean', 'no,'
+    'sorry,' before it), so that 'sorry' cannot be the first cue."""
+    m = _SORRY_AFTER30R.search(text)
+    if m is None or not _inert28(m.group("why"), lexicon):
+        return text
+    before = text[: m.start()]
+    if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
+        return text
+    return before + m.group("end")
+
+
+# "The animator wants the chips sent to Person A, …": someone wants X taken to P
+_WANTS_SENT30R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like|asked for|has asked for) "
+    r"(?P<x>(?:the |both |the two |both the )[a-z ]+?) (?:sent|taken|brought|carried|run|passed)"
+    r"(?P<dir>(?: over| across| back| up| down)?) to (?=\S)",
+    _F,
+)
+
+
+def _wants_sent30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'W wants X sent to P …' is 'Take X to P …' when W is someone the scene
+    does not name (who asks, not who gets it: "The animator wants the chips sent to Person A"),
+    X the scene's objects, and no pronoun follows that W could stand for ('… brought over to
+    her': a person of the scene wanting it, the grammar's own reading)."""
+    m = _WANTS_SENT30R.match(text)
+    if m is None or not _objects_only(m.group("x"), lexicon):
+        return text
+    if not _inert28(m.group("who"), lexicon) or _PRONOUN28R.search(text[m.end() :]):
+        return text
+    return f"Take {m.group('x')}{m.group('dir')} to {text[m.end() :]}"
+
+
+def _beg_pardon30r(text: str, _lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'beg pardon' and 'I beg your pardon' opening a correction are the cue
+    'sorry'."""
+    return _sub(
+        r"(?:(?<=[,;.])|^)(\s*)(?:i )?beg (?:your )?pardon(?=\s*,)",
+        lambda m: f"{m.group(1)}{'Sorry' if m.start() == 0 else 'sorry'}",
+        text,
+    )
+
+
+# "Person A has waited long enough for the bottle now"
+_WAITED30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:has|'s|have) (?:waited|been waiting)(?: (?:long enough|ages|"
+    r"all day|a while))? for (?P<x>(?:the |that |this )?[a-z ]+?)(?: now| already)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _waited30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P has waited (long enough) for X (now)' is 'P is waiting for X' (what
+    the grammar reads as P wanting X), P one person and X the scene's objects."""
+    m = _WAITED30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _objects_only(m.group("x"), lexicon):
+        return text
+    return f"{m.group('p')} is waiting for {m.group('x')}{m.group('end')}"
+
+
+# "It's not the apple Person B is after, it's the cup."
+_NOT_CLEFT30R = re.compile(
+    r"^it(?:'s| is) not (?P<said>the [a-z ]+?) (?:is after|wants|needs|asked for|would like|"
+    r"'s after),\s*it(?:'s| is) (?P<y>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_cleft30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "It's not the X P is after, it's the Y" is 'P wants the Y, not the X'
+    (X and Y objects of the scene, P one person)."""
+    m = _NOT_CLEFT30R.match(text)
+    if m is None or not _objects_only(m.group("y"), lexicon):
+        return text
+    words = m.group("said").split(" ")
+    for n in (1, 2):
+        obj, who = " ".join(words[:-n]), " ".join(words[-n:])
+        if _objects_only(obj, lexicon) and _only_person(who, lexicon):
+            return f"{who} wants {m.group('y')}, not {obj}{m.group('end')}"
+    return text
+
+
+_STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _no_odds30r,
+    _whichever_of30r,
+    _each_role30r,
+    _lot_is30r,
+    _every_last30r,
+    _pronoun_is_to30r,
+    _only_not30r,
+    _only_who30r,
+    _leaving_out30r,
+    _rather_than30r,
+    _rather_after30r,
+    _i_mean_after30r,
+    _sorry_after30r,
+    _wants_sent30r,
+    _beg_pardon30r,
+    _waited30r,
+    _not_cleft30r,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -12322,6 +12664,8 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 30 (12r): blind28's choices, counts, exclusions and corrections
+    *_STEPS30R,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,

@@ -1,0 +1,285 @@
+"""Session-30 phrasings of issue 12 (engineer 12r): blind28's choices, counts, exclusions and
+corrections; docs/grounding.md, "Session 30 (engineer 12r)". Each rule with the sentences it
+changes and near forms that must still read as before, read otherwise, or stay refused."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    LAB,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
+
+
+def _scene(name: str) -> Scene:
+    return load_scene(ROOT / f"examples/scenes/{name}.yaml")
+
+
+FIG1 = _scene("fig1")  # bottle, chips (crisps); A (Alice), B (Bob)
+SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
+L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B, C
+F41 = _scene("4-1")  # bottle, chips, cup, apple; A, B
+DUO = _scene("2-2")  # bottle, chips; A, B
+L24 = _scene("2-4-line")  # bottle, chips; A, B
+ONE = _scene("1-1")  # bottle; A
+T12 = _scene("1-2")  # bottle; A
+T21 = _scene("2-1")  # bottle, chips; A, B
+
+# -- a choice left open: 'makes no odds (to him)' ---------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Person B will have the bottle, or else the chips, makes no odds to him.",
+            "bottle>B | chips>B",
+            DUO,
+        ),
+        ("Give Bob the cup or the apple, it makes no difference to him.", "cup>B | apple>B", CELL),
+        ("Give Bob the cup or the apple, makes no odds.", "cup>B | apple>B", CELL),
+        ("Give Bob the cup or the apple, it doesn't matter to him which.", "cup>B | apple>B", CELL),
+    ],
+)
+def test_no_odds_leaves_the_choice_open(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # nothing is left open to not mind about
+        "Give Person B the bottle, makes no odds to him.",
+        # the one who does not mind is not the one who chooses
+        "Give Person B the bottle or the chips, makes no odds to Person A.",
+    ],
+)
+def test_no_odds_with_nothing_open_stays_refused(text: str) -> None:
+    assert_refused(text, DUO)
+
+
+# -- 'to whichever of the two of them, P or Q' -------------------------------------------------
+
+
+def test_whichever_of_them_then_the_people() -> None:
+    assert_reads(
+        "The chips can go to whichever of the two of them, Person A or Person B.",
+        "chips>A | chips>B",
+        T21,
+    )
+    assert_reads(
+        "The chips can go to either of them, Person A or Person B.", "chips>A | chips>B", T21
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the count said does not match the people listed
+        "The chips can go to whichever of the three of them, Person A or Person B.",
+        # a surface is not one of 'them'
+        "The chips can go to whichever of them, Person A or the shelf.",
+        # one person twice
+        "The chips can go to whichever of the two of them, Person A or Person A.",
+    ],
+)
+def test_whichever_of_them_needs_the_people(text: str) -> None:
+    assert_refused(text, T21)
+
+
+# -- 'one of the books to each student' --------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "One of the books to each student, whichever way round.",
+        "One of the books to each student.",
+        "One book for each student, either way round.",
+    ],
+)
+def test_one_to_each_role_is_the_share(text: str) -> None:
+    assert_reads(text, "(book_red>B & book_green>C) | (book_red>C & book_green>B)", CLASSROOM)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # one teacher: 'each' has nobody to range over
+        "One of the books to each teacher.",
+        # one glue stick for two students
+        "One glue stick to each student.",
+    ],
+)
+def test_one_to_each_role_needs_the_people_and_objects(text: str) -> None:
+    assert_refused(text, CLASSROOM)
+
+
+# -- everything, said again: 'the whole lot, which is just X and Y' ----------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Give Person B the whole lot, which is just the bottle and the crisps.",
+            "bottle>B & chips>B",
+            FIG1,
+        ),
+        ("Whatever's there goes to Person A, it's only the bottle anyway.", "bottle>A", ONE),
+        ("Everything to Person A, that's the bottle and the chips.", "bottle>A & chips>A", DUO),
+    ],
+)
+def test_everything_said_again(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the list is not everything: which is meant is unclear
+        ("Give Person B the whole lot, which is just the bottle.", FIG1),
+        ("Everything to Person A, that's the bottle.", DUO),
+        # the list names a person
+        ("Everything to Person A, that's the bottle and Person B.", DUO),
+    ],
+)
+def test_everything_said_again_as_less_stays_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- counts: 'every last one of the four items', "she's to have" --------------------------------
+
+
+def test_every_last_one_of_the_n() -> None:
+    assert_reads(
+        "Person A is having every last one of the four items.",
+        "bottle>A & chips>A & cup>A & apple>A",
+        SQ,
+    )
+    # the count is the scene's, or it is refused
+    assert_refused("Person A is having every last one of the three items.", SQ)
+
+
+def test_pronoun_is_to_have() -> None:
+    assert_reads(
+        "Mrs Khan's cold, so she's to have the two blankets.",
+        "blanket_blue>C & blanket_grey>C",
+        WARD,
+    )
+    # 'he' cannot be Mrs Khan: refused as before
+    assert_refused("Mrs Khan's cold, so he's to have the two blankets.", WARD)
+
+
+# -- exclusions: 'only not X', 'but no X', 'Only P', 'leaving out', 'rather than' ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Person A's to have all of it, only not the bottle.", "chips>A & cup>A & apple>A", L44),
+        ("Person A's cutting back on salt, so she gets the bottle but no chips.", "bottle>A", L24),
+        ("Only Person A is to get the bottle, nobody else.", "bottle>A", T12),
+        (
+            "Mia wants the boxes on the belt, leaving out the big one.",
+            "box_small@conveyor & box_medium@conveyor",
+            DEPOT,
+        ),
+        ("The scissors to Zoe rather than Noah.", "scissors>C", CLASSROOM),
+        ("Give Zoe the glue stick rather than the red book.", "glue>C", CLASSROOM),
+    ],
+)
+def test_exclusions_said_otherwise(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # 'no' before a word that is no object of the scene: refused as before
+        ("Person A gets the bottle but no more.", L24),
+        # 'Only' before someone the scene lacks
+        ("Only Person C is to get the bottle.", T12),
+        # 'rather than' before a clause, not a name
+        ("The scissors to Zoe rather than giving them to Noah.", CLASSROOM),
+    ],
+)
+def test_exclusions_said_otherwise_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_leaving_out_what_is_not_asked_reads_as_except_does() -> None:
+    # as 'except the gloves' on main: the gloves were not to go, so the boxes go
+    want = "box_small@conveyor & box_medium@conveyor & box_large@conveyor"
+    assert_reads("Mia wants the boxes on the belt, except the gloves.", want, DEPOT)
+    assert_reads("Mia wants the boxes on the belt, leaving out the gloves.", want, DEPOT)
+
+
+def test_leave_it_out_on_a_surface_is_no_exclusion() -> None:
+    # 'leave … out on the desk' places; the rule takes only a closing object phrase
+    assert_refused("Mia wants the boxes on the belt, leaving out the big one on the desk.", DEPOT)
+
+
+# -- corrections: 'X rather', 'X I mean', an apology after, 'beg pardon', a cleft ---------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Bob the apple, oh hang on, Alice rather.", "apple>A", CELL),
+        ("Give Bob the apple, Alice rather.", "apple>A", CELL),
+        ("Chips for Person B, sorry, cup for Person B I mean.", "cup>B", L44),
+        (
+            "Person B needs the bottle, er, I mean, the chips, sorry, long day at the dye works.",
+            "chips>B",
+            F41,
+        ),
+        ("The animator wants the chips sent to Person A, no sorry, Person B.", "chips>B", DUO),
+        # a person of the scene wanting it brought to her: the grammar's own reading, as before
+        ("The doctor needs the sponge brought over to her, her bench is a mess.", "sponge>A", LAB),
+        ("Tin of screws to Kofi; beg pardon, to Jess.", "screws>B", WORKSHOP),
+        ("Tin of screws to Kofi; I beg your pardon, to Jess.", "screws>B", WORKSHOP),
+        ("It's not the apple Person B is after, it's the cup.", "cup>B", SQ),
+        ("Person A has waited long enough for the nottle now", "bottle>A", T12),
+        ("Person A has been waiting ages for the bottle.", "bottle>A", T12),
+    ],
+)
+def test_corrections_said_otherwise(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # 'rather' after what is no name of the scene
+        ("Give Bob the apple, I'd rather.", CELL),
+        # 'I mean' after a clause with a person of its own
+        ("Chips for Person B, sorry, you know what I mean.", L44),
+        # the apology is the only cue: what 'sorry' corrects is unclear
+        ("Person B needs the bottle, sorry, long day at the dye works.", F41),
+        # 'beg pardon' corrects to nothing
+        ("Tin of screws to Kofi; beg pardon.", WORKSHOP),
+        # the cleft's other half is missing
+        ("It's not the apple Person B is after.", SQ),
+        # waiting for something the scene lacks
+        ("Person A has waited long enough for the bus now", T12),
+    ],
+)
+def test_corrections_said_otherwise_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_an_apology_naming_the_scene_is_a_correction() -> None:
+    # 'sorry, the apple' after 'I mean, the chips' corrects again: the apple
+    assert_reads(
+        "Person B needs the bottle, er, I mean, the chips, sorry, the apple.", "apple>B", F41
+    )
