@@ -12,6 +12,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     LAB,
+    OFFICE,
     ROOT,
     WARD,
     WORKSHOP,
@@ -28,6 +29,8 @@ FIG1 = _scene("fig1")  # bottle, chips (crisps); A (Alice), B (Bob)
 SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
 L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B, C
 F41 = _scene("4-1")  # bottle, chips, cup, apple; A, B
+F42 = _scene("4-2")  # bottle, chips, cup, apple; A, B
+TWO = _scene("two_arms")  # bottle, chips (crisps); Alice, Bob
 DUO = _scene("2-2")  # bottle, chips; A, B
 L24 = _scene("2-4-line")  # bottle, chips; A, B
 ONE = _scene("1-1")  # bottle; A
@@ -283,3 +286,130 @@ def test_an_apology_naming_the_scene_is_a_correction() -> None:
     assert_reads(
         "Person B needs the bottle, er, I mean, the chips, sorry, the apple.", "apple>B", F41
     )
+
+
+# -- corrections: a thing said and unsaid, a place corrected, the replaced name again ------------
+
+OFFICE_DESK = "stapler@desk"
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The chips to Person A, and the bottle, no, leave the bottle.", "chips>A", T21),
+        ("Stapler into the box, oh no, leave it out on the desk instead.", OFFICE_DESK, OFFICE),
+        ("The scanner to Mia. Wait, Tom, not Mia.", "scanner>B", DEPOT),
+        ("The scanner to Mia, no, Tom, not Mia.", "scanner>B", DEPOT),
+        ("Person A wants the bottle; sorry, did I say wants? Needs.", "bottle>A", T12),
+        ("Crisps on the shelf, sorry, I meant to Person A.", "chips>A", FIG1),
+        ("Put the crisps on the shelf, no, to Bob.", "chips>B", FIG1),
+    ],
+)
+def test_corrections_of_a_part(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # 'leave it' may take back the whole request: refused as before
+        ("The chips to Person A, and the bottle, no, leave it.", T21),
+        # what is left is not what was added
+        ("The chips to Person A, and the bottle, no, leave the chips.", T21),
+        # 'leave it on' a person: no place
+        ("Stapler into the box, oh no, leave it out on Priya instead.", OFFICE),
+        # 'not' names another kind
+        ("The scanner to Mia. Wait, Tom, not the tape.", DEPOT),
+        # a verb that does not mean the same
+        ("Person A wants the bottle; sorry, did I say wants? Hates.", F41),
+        # the word corrected was not said
+        ("Person A wants the bottle; sorry, did I say needs? Wants.", F41),
+    ],
+)
+def test_corrections_of_a_part_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_corrections_as_on_main() -> None:
+    # Tom again, 'not Mia' naming no one said: read by the grammar as on main (the rule needs
+    # the replaced name before the cue); a place corrected to the same place, as on main
+    assert_reads("The scanner to Tom. Wait, Tom, not Mia.", "scanner>B", DEPOT)
+    assert_reads("Crisps on the shelf, sorry, I meant to the shelf.", "chips@shelf", FIG1)
+
+
+# -- counts: 'only got a single X', 'only one X and only one person', lists and headers -------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("We've only got a single bottle going, and Person B is having it.", "bottle>B", L24),
+        ("We've only got one cup, and Person B is having it.", "cup>B", F41),
+        ("Only one bottle and only one person here, so she gets it.", "bottle>A", T12),
+        ("The pair of things here both want going to Person A.", "bottle>A & chips>A", DUO),
+        (
+            "Person A's getting three items: bottle, chips, cup; the apple stays put.",
+            "bottle>A & chips>A & cup>A",
+            F41,
+        ),
+        (
+            "Load all three boxes onto the belt for Tom's run.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        (
+            "Lay out the two books side by side on the desk ready for the reading group.",
+            "book_red@desk & book_green@desk",
+            CLASSROOM,
+        ),
+        (
+            "The kayakers get one apiece, Person A taking the bottle and Person B the chips.",
+            "bottle>A & chips>B",
+            L24,
+        ),
+        (
+            "Person B's a mountaineer, so pack her off with the chips as well as the apple.",
+            "chips>B & apple>B",
+            F42,
+        ),
+        (
+            "Mia says put a box on the conveyor, doesn't matter which one, but only one.",
+            "box_small@conveyor | box_medium@conveyor | box_large@conveyor",
+            DEPOT,
+        ),
+        (
+            "The bottle and the crisps, the two of them, are going over to Person A.",
+            "bottle>A & chips>A",
+            TWO,
+        ),
+    ],
+)
+def test_counts_and_lists_said_otherwise(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # two mugs: 'a single mug' is not the scene's
+        ("We've only got a single mug going, and Bob is having it.", CELL),
+        # two people: 'only one person' is not the scene's
+        ("Only one bottle and only one person here, so she gets it.", T21),
+        # the apple stays, but the list gives it
+        ("Person A's getting three items: bottle, chips, apple; the apple stays put.", F41),
+        # a placement 'for Tom' (not his thing) stays unclear
+        ("Load all three boxes onto the belt for Tom.", DEPOT),
+        # laid out where?
+        ("Lay out the two books side by side.", CLASSROOM),
+        # one of the two gets both
+        ("The kayakers get one apiece, Person A taking the bottle and the chips.", L24),
+        # sent off with a person
+        ("Person B's a mountaineer, so pack her off with Person A.", F42),
+        # 'only one' after all of them
+        ("Put the boxes on the conveyor, but only one.", DEPOT),
+        # going over to what is no name of the scene
+        ("The bottle and the crisps are going over to the van.", TWO),
+    ],
+)
+def test_counts_and_lists_said_otherwise_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

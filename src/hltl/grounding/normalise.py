@@ -12331,7 +12331,7 @@ def _only_not30r(text: str, lexicon: Lexicon) -> str:
     def bare(m: re.Match[str]) -> str:
         return f"but not the {m.group(1)}" if _whole_name(m.group(1), lexicon, "object") else m[0]
 
-    return _sub(r"\bbut no ([a-z]+(?: [a-z]+)?)(?=\s*(?:[.!;,]|$))", bare, out)
+    return _sub(r"\bbut no ([a-z]+(?: [a-z]+)??)(?=\s*(?:[.!;,]|$))", bare, out)
 
 
 # "Only Person A is to get the bottle, nobody else."
@@ -12513,6 +12513,304 @@ def _not_cleft30r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "…, and the bottle, no, leave the bottle.": an object said, then taken back by its name
+_AND_LEAVE30R = re.compile(
+    r",\s*and (?P<x>(?:the )?[a-z]+(?: [a-z]+)??),\s*(?:no|oh no|wait|actually),\s*leave "
+    r"(?P<y>(?:the )?[a-z]+(?: [a-z]+)??)(?: (?:be|alone|there|where it is|out))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _and_leave30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The chips to Person A, and the bottle, no, leave the bottle." — an
+    object added with no verb or person of its own, then taken back by the same name ('leave the
+    bottle'), is said and unsaid: taken off. 'leave it' could take back the whole request (the
+    grammar's refusal stands)."""
+    m = _AND_LEAVE30R.search(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if _ids(m.group("x"), lexicon) != _ids(m.group("y"), lexicon) or not _whole_name(
+        m.group("y"), lexicon, "object"
+    ):
+        return text
+    return text[: m.start()] + m.group("end")
+
+
+# "Stapler into the box, oh no, leave it out on the desk instead."
+_LEAVE_ON30R = re.compile(
+    r"(?P<cue>\bno,\s*)(?:just )?leave (?:it|them) (?:out )?(?P<on>(?:on|onto|in|into) (?:the )?"
+    r"(?P<s>[a-z]+(?: [a-z]+)??))(?P<inst> instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_on30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): after the cue 'no', 'leave it (out) on S (instead)' says where the object
+    goes: '…, no, on S instead', the correction of a place the grammar reads (S a surface)."""
+    m = _LEAVE_ON30R.search(text)
+    if m is None or not _surface_only(m.group("s"), lexicon):
+        return text
+    return f"{text[: m.start()]}{m.group('cue')}{m.group('on')} instead{m.group('end')}"
+
+
+# "The scanner to Mia. Wait, Tom, not Mia."
+_NOT_AGAIN30R = re.compile(
+    r"(?P<cue>(?:^|[,.;!?]\s*)(?:wait|no|sorry|hang on|hold on|oops|actually),\s*)"
+    r"(?P<q>(?:the )?[A-Za-z][\w ]*?),\s*not (?P<p>(?:the )?[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_again30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a correction '…, Tom, not Mia.' that says again what it replaces is the
+    correction '…, Tom.' when Mia is named before the cue, Tom and Mia are each one name of the
+    scene of the same kind, and they differ."""
+    m = _NOT_AGAIN30R.search(text)
+    if m is None:
+        return text
+    q, p = m.group("q"), m.group("p")
+    if not (_one_name30r(q, lexicon) and _one_name30r(p, lexicon)):
+        return text
+    kinds = {r.kind for w in (q, p) for it in _names(w, lexicon) for r in it.refs}
+    if len(kinds) != 1 or _ids(q, lexicon) == _ids(p, lexicon):
+        return text
+    if not _ids(p, lexicon) <= _ids(text[: m.start()], lexicon):
+        return text
+    return f"{text[: m.start('q')]}{q}{m.group('end')}"
+
+
+_WANT_VERBS30R = frozenset({"wants", "needs", "would like", "'d like", "is after", "requires"})
+# "Person A wants the bottle; sorry, did I say wants? Needs."
+_DID_I_SAY30R = re.compile(
+    r"\s*[;,.]\s*(?:sorry|oops|whoops),?\s*did i say (?P<a>[a-z' ]+?)\?\s*(?P<b>[A-Za-z' ]+?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _did_i_say30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "…; sorry, did I say wants? Needs." corrects a verb of wanting by
+    another ('wants', 'needs', 'would like', 'is after', 'requires'): the request means the same
+    either way, so the correction is taken off, when the first word is said before it."""
+    m = _DID_I_SAY30R.search(text)
+    if m is None:
+        return text
+    a, b = m.group("a").lower(), m.group("b").lower()
+    if a not in _WANT_VERBS30R or b not in _WANT_VERBS30R:
+        return text
+    before = text[: m.start()]
+    if not re.search(rf"\b{re.escape(a)}\b", before, _F):
+        return text
+    return before + (m.group("end") or ".")
+
+
+# "We've only got a single bottle going, and Person B is having it."
+_ONLY_GOT30R = re.compile(
+    r"^(?:we've|we have|we) (?:only )?(?:got|have) (?:only |just )?(?:a single|one|the one|just "
+    r"the one) (?P<x>[a-z]+(?: [a-z]+)??)(?: going| left| here| to spare)?,\s*and "
+    r"(?P<p>[A-Za-z][\w ]*?) (?:is having|is getting|should have|should get|can have|gets|is to "
+    r"have) it(?P<end>\s*[.!]?)$",
+    _F,
+)
+# "Only one bottle and only one person here, so she gets it."
+_ONLY_ONE_HERE30R = re.compile(
+    r"^(?:there's )?only one (?P<x>[a-z]+(?: [a-z]+)??) and only one (?:person|human|of you|one "
+    r"person)(?: here| around| about)?,\s*so (?:she|he|they) (?:gets|can have|should have|is "
+    r"having) it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_got30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "We've only got a single X (going), and P is having it" is 'the X to P'
+    (as _only_one29r's "There's only one X, and P should have it"), the scene having one X and P
+    one person; "Only one X and only one person here, so she gets it" is the X to the scene's one
+    person, when it has one person and one X (and the pronoun fits her)."""
+    m = _ONLY_GOT30R.match(text)
+    if m is not None:
+        if _only(m.group("x"), lexicon, "object") and _only_person(m.group("p"), lexicon):
+            return f"The {m.group('x')} to {m.group('p')}{m.group('end')}"
+        return text
+    m = _ONLY_ONE_HERE30R.match(text)
+    if m is None or not _only(m.group("x"), lexicon, "object"):
+        return text
+    if len(lexicon.scene.humans) != 1:
+        return text
+    pid = lexicon.scene.humans[0].id
+    pronoun = re.search(r"\b(she|he|they)\b", m.group(0), _F)
+    if pronoun is None or not _fits(pid, pronoun.group(1).lower(), lexicon):
+        return text
+    return f"The {m.group('x')} to {lexicon.scene.humans[0].name}{m.group('end')}"
+
+
+def _things_here30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'the pair of things here', 'the two items here': 'here' after a word for
+    the scene's things says where they are, which the grammar knows (taken off)."""
+    return _sub(
+        r"\b((?:the pair of|the two|both|both the|all the|the three|the four) (?:things|items|"
+        r"objects|bits)) here\b",
+        r"\1",
+        text,
+    )
+
+
+# "…; the apple stays put."
+_STAYS_PUT30R = re.compile(
+    r"\s*;\s*(?:and )?(?P<x>the [a-z]+(?: [a-z]+)??) (?:stays|can stay|is staying|remains) "
+    r"(?:put|where it is|here|there)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_put30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…; the apple stays put' closing a request that does nothing with the
+    apple asks nothing: taken off (the count of a header before it, 'three items: …', is then
+    that of its list, not of the scene with the apple)."""
+    m = _STAYS_PUT30R.search(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    said = _tasks_of(out, lexicon)
+    if not said or {o for _, o, _ in said} & _ids(m.group("x"), lexicon):
+        return text
+    return out
+
+
+# "Load all three boxes onto the belt for Tom's run."
+_PLACED_FOR30R = re.compile(
+    r"\b(?P<on>(?:on|onto|into|in) (?:the )?[a-z]+(?: [a-z]+)??) for (?P<p>[A-Za-z][\w ]*?)'s "
+    r"(?P<w>[a-z]+(?: [a-z]+)??)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _placed_for30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a placement closed by 'for P's <thing>' (the thing naming nothing in
+    the scene) says what it is for: taken off, when what is left reads as placements only."""
+    m = _PLACED_FOR30R.search(text)
+    if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
+        return text
+    out = text[: m.start()] + m.group("on") + m.group("end")
+    said = _tasks_of(out, lexicon)
+    return out if said and all(k == "place" for k, _, _ in said) else text
+
+
+def _laid_out30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'lay out / set out X (side by side) on S' is 'lay X on S': 'out' and
+    how the objects are arranged ('side by side', 'next to each other', 'in a row') say nothing
+    the cell can do otherwise."""
+    out = _sub(r"^((?:please )?(?:lay|set|spread)) out (?=(?:the|both|all) )", r"\1 ", text)
+    if out == text:
+        return text
+    return _sub(r" (?:side by side|next to each other|in a row|together)(?= (?:on|onto) )", "", out)
+
+
+# "The kayakers get one apiece, Person A taking the bottle and Person B the chips."
+_APIECE30R = re.compile(
+    r"^(?P<who>(?:the )?[a-z]+|they|the two of them|both of them) (?:get|gets|have|are getting) "
+    r"one (?:thing |item )?(?:apiece|each),\s*(?P<p>[A-Za-z][\w ]*?) taking (?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _apiece30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The kayakers get one apiece, Person A taking the bottle and Person B
+    the chips" is "Person A gets the bottle and Person B the chips" when the list hands each of
+    two people or more one object, and the word before (a role the scene does not name, 'they')
+    names nothing."""
+    m = _APIECE30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if m.group("who").lower() not in ("they", "the two of them", "both of them") and not _inert28(
+        m.group("who"), lexicon
+    ):
+        return text
+    out = f"{m.group('p')} gets {m.group('rest')}"
+    node = _reading(out, lexicon)
+    if not isinstance(node, Group) or node.op != "and":
+        return text
+    said = list(tasks(node))
+    people = [t.target for t in said]
+    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people) or len(said) < 2:
+        return text
+    return out
+
+
+def _off_with30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'pack / send P off with X' is 'give P X' (P a person of the scene or a
+    pronoun, X the scene's objects)."""
+
+    def given(m: re.Match[str]) -> str:
+        who, what = m.group("p"), m.group("x")
+        if not (who.lower() in ("him", "her", "them") or _only_person(who, lexicon)):
+            return m[0]
+        return f"{m.group('lead')}give {who} {what}" if _objects_only(what, lexicon) else m[0]
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[,;.])\s*|\bso |\band |\bplease ))(?:pack|send|see) (?P<p>him|her|them|"
+        r"[A-Z][\w]*(?: [A-Z][\w]*)?) off with (?P<x>(?:the|both|all) [a-z ,]+?)(?=\s*[.!]?$)",
+        given,
+        text,
+    )
+
+
+# "Crisps on the shelf, sorry, I meant to Person A."
+_PLACE_TO30R = re.compile(
+    r"^(?P<verb>(?:please )?(?:put|place|set|pop) )?(?P<x>(?:the )?[a-z]+(?: [a-z]+)??) "
+    r"(?:on|onto|in|into) (?:the )?(?P<s>[a-z]+(?: [a-z]+)??),\s*(?:sorry|no|oops|whoops|my "
+    r"mistake),\s*(?:i meant |i mean |no,\s*)?to (?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _place_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Crisps on the shelf, sorry, I meant to Person A." — a placement whose
+    place is corrected to a person ('to P' after the cue) is the object handed to P: X one name
+    of the scene's objects, S a surface, P one person."""
+    m = _PLACE_TO30R.match(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if not _surface_only(m.group("s"), lexicon) or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    x = x if x.lower().startswith("the ") else f"the {x}"
+    return f"Give {x} to {m.group('p')}{m.group('end')}"
+
+
+# "…, doesn't matter which one, but only one."
+_BUT_ONLY_ONE30R = re.compile(r",\s*(?:but )?(?:only|just) (?:the )?one(?P<end>\s*[.!]?)$", _F)
+
+
+def _but_only_one30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): ', but only one' closing a choice of one object among several ('put a
+    box on the conveyor, doesn't matter which one, but only one') says again that one is meant:
+    taken off when what is left reads as exactly one such choice."""
+    m = _BUT_ONLY_ONE30R.search(text)
+    if m is None:
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    node = _reading(out, lexicon)
+    if not isinstance(node, Group) or node.op != "or":
+        return text
+    if not all(isinstance(c, Task) for c in node.children):
+        return text
+    return out if len({t.target for t in tasks(node)}) == 1 else text
+
+
+def _going_over30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'are going over / across to P' is 'are going to P' ('over' says which
+    way, as the grammar reads it after one object) when a name of the scene follows."""
+
+    def gone(m: re.Match[str]) -> str:
+        return f"{m.group(1)} to {m.group(2)}" if _names(m.group(2), lexicon) else m[0]
+
+    return _sub(
+        r"\b((?:are|is) going|go|goes) (?:over|across|round) to ((?:the )?[A-Za-z]+(?: [A-Z])?)\b",
+        gone,
+        text,
+    )
+
+
 _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_odds30r,
     _whichever_of30r,
@@ -12531,6 +12829,20 @@ _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _beg_pardon30r,
     _waited30r,
     _not_cleft30r,
+    _and_leave30r,
+    _leave_on30r,
+    _not_again30r,
+    _did_i_say30r,
+    _only_got30r,
+    _things_here30r,
+    _stays_put30r,
+    _placed_for30r,
+    _laid_out30r,
+    _apiece30r,
+    _off_with30r,
+    _place_to30r,
+    _but_only_one30r,
+    _going_over30r,
 )
 
 
