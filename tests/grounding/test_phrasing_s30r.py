@@ -11,6 +11,7 @@ from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
     DEPOT,
+    KITCHEN,
     LAB,
     OFFICE,
     ROOT,
@@ -412,4 +413,53 @@ def test_counts_and_lists_said_otherwise(text: str, want: str, scene: Scene) -> 
     ],
 )
 def test_counts_and_lists_said_otherwise_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- a need said as a kind, whose things are whose, 'the pair' after 'both <Xs>' ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Person B needs a drink, so the bogtle to him", "bottle>B", F42),
+        (
+            "Person A wants a drink and will take the cup or the bottle, either way.",
+            "cup>A | bottle>A",
+            F41,
+        ),
+        ("The crisps are Person A's; the bottle isn't.", "chips>A", TWO),
+        (
+            "Lena's carrying both plates out, so hand her the pair.",
+            "plate_white>B & plate_blue>B",
+            KITCHEN,
+        ),
+        ("Bob's carrying both mugs out, so hand him the pair.", "mug_red>B & mug_blue>B", CELL),
+        ("Bottle on the shelf, no, there isn't one, just give it to Person A.", "bottle>A", ONE),
+    ],
+)
+def test_needs_owners_and_pairs(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a need with no request
+        ("Person B needs a drink", F42),
+        # the request is for someone else
+        ("Person B needs a drink, so the bottle to Person A", F42),
+        # 'will take' a person
+        ("Person A wants a drink and will take Person B.", F41),
+        # said alone, 'X is P's' may only say whose X is
+        ("The crisps are Person A's.", TWO),
+        # the same object both P's and not
+        ("The crisps are Person A's; the crisps aren't.", TWO),
+        # one knife: 'both knives' is not the scene's
+        ("Lena's carrying both knives out, so hand her the pair.", KITCHEN),
+        # the correction puts it where there is no place
+        ("Bottle on the shelf, no, there isn't one, give it to the shelf.", ONE),
+    ],
+)
+def test_needs_owners_and_pairs_near_forms(text: str, scene: Scene) -> None:
     assert_refused(text, scene)

@@ -12516,7 +12516,8 @@ def _not_cleft30r(text: str, lexicon: Lexicon) -> str:
 # "…, and the bottle, no, leave the bottle.": an object said, then taken back by its name
 _AND_LEAVE30R = re.compile(
     r",\s*and (?P<x>(?:the )?[a-z]+(?: [a-z]+)??),\s*(?:no|oh no|wait|actually),\s*leave "
-    r"(?P<y>(?:the )?[a-z]+(?: [a-z]+)??)(?: (?:be|alone|there|where it is|out))?(?P<end>\s*[.!]?)$",
+    r"(?P<y>(?:the )?[a-z]+(?: [a-z]+)??)(?: (?:be|alone|there|where it is|out))?"
+    r"(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -12811,6 +12812,107 @@ def _going_over30r(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# "Bottle on the shelf, no, there isn't one, just give it to Person A."
+_NONE_THERE30R = re.compile(
+    r"^(?P<x>(?:the )?[a-z]+(?: [a-z]+)??) (?:on|onto|in|into) (?:the )?[a-z]+(?: [a-z]+)??,\s*"
+    r"(?:oh )?no,\s*(?:(?:there isn't one|there is not one|there's no (?:such )?[a-z]+|there is no "
+    r"[a-z]+|we don't have one|we haven't got one)\s*[,;]\s*)?(?:just )?(?P<v>give|hand|pass|take|"
+    r"bring) it (?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _none_there30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Bottle on the shelf, no, there isn't one, just give it to Person A." —
+    a verbless placement, then 'no' and a whole request for 'it' (with what is missing said
+    between), is that request for the object: X one name of the scene's objects, and the request
+    naming no other object."""
+    m = _NONE_THERE30R.match(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if _ids(m.group("rest"), lexicon, "object"):
+        return text
+    x = m.group("x")
+    x = x if x.lower().startswith("the ") else f"the {x}"
+    return f"{m.group('v').capitalize()} {x} {m.group('rest')}"
+
+
+# "The crisps are Person A's; the bottle isn't."
+_OWNED_NOT30R = re.compile(
+    r"^(?P<x>the [a-z]+(?: [a-z]+)??) (?:is|are|'s|'re) (?P<p>[A-Za-z][\w ]*?)'s\s*[;,]\s*(?:but )?"
+    r"(?P<y>the [a-z]+(?: [a-z]+)??) (?:isn't|aren't|is not|are not)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _owned_not30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The crisps are Person A's; the bottle isn't." — who gets what, said as
+    whose things are whose, in contrast: 'X to P' (X and Y each one name of the scene's objects,
+    different; P one person). Said alone, 'X is P's' may only say whose X is, and is not read."""
+    m = _OWNED_NOT30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x, y = m.group("x"), m.group("y")
+    if not (_whole_name(x, lexicon, "object") and _whole_name(y, lexicon, "object")):
+        return text
+    if _ids(x, lexicon) & _ids(y, lexicon):
+        return text
+    return f"{x[:1].upper()}{x[1:]} to {m.group('p')}{m.group('end')}"
+
+
+# "Person B needs a drink, so the bottle to him"
+_NEEDS_A30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:needs|wants|could use|could do with|would like|fancies) "
+    r"(?:a|an|some|something) (?P<w>[a-z]+(?: [a-z]+)??)(?:,\s*so\s+(?P<so>\S.*)|\s+and (?:will|"
+    r"would|'ll) (?P<v>take|have|accept|settle for) (?P<rest>\S.*))$",
+    _F,
+)
+
+
+def _needs_a30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P needs a drink, so <request>' and 'P wants a drink and will take
+    <objects>': what P needs said as a kind the scene does not name ('a drink', 'a snack'), then
+    what to give: the request, its 'him' / 'her' P (the pronoun fitting P, and the request naming
+    no other person), or 'P will take <objects>'."""
+    m = _NEEDS_A30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
+        return text
+    p = m.group("p")
+    if m.group("v"):
+        rest = m.group("rest")
+        if not _objects_only(re.split(r",", rest)[0], lexicon):
+            return text
+        return f"{p} will {m.group('v')} {rest}"
+    rest = m.group("so")
+    pronouns = re.findall(r"\b(him|her|them)\b", rest, _F)
+    if len(pronouns) != 1 or not _fits(next(iter(_ids(p, lexicon))), pronouns[0].lower(), lexicon):
+        return text
+    if _ids(rest, lexicon, "human"):
+        return text
+    out = _sub(r"\b(?:him|her|them)\b", p, rest)
+    return out[:1].upper() + out[1:]
+
+
+# "Lena's carrying both plates out, so hand her the pair."
+_PAIR_BACK30R = re.compile(
+    r"^(?P<remark>[^,;.]*?\b(?:both|the two|the pair of) (?P<xs>[a-z]+s)\b[^,;.]*),\s*so\s+"
+    r"(?P<req>[^,;.]*?\b)(?P<pair>the pair|the two|both of them|the two of them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _pair_back30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Lena's carrying both plates out, so hand her the pair." — 'the pair'
+    (or 'the two', 'both of them') closing a request after a remark that says 'both <Xs>' is
+    those Xs, when the scene has exactly two of them."""
+    m = _PAIR_BACK30R.match(text)
+    if m is None or len(_ids(m.group("xs"), lexicon, "object")) != 2:
+        return text
+    if not _only_kind(m.group("xs"), lexicon, "object"):
+        return text
+    return f"{text[: m.start('pair')]}both {m.group('xs')}{m.group('end')}"
+
+
 _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_odds30r,
     _whichever_of30r,
@@ -12843,6 +12945,10 @@ _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _place_to30r,
     _but_only_one30r,
     _going_over30r,
+    _none_there30r,
+    _owned_not30r,
+    _needs_a30r,
+    _pair_back30r,
 )
 
 
