@@ -463,3 +463,68 @@ def test_needs_owners_and_pairs(text: str, want: str, scene: Scene) -> None:
 )
 def test_needs_owners_and_pairs_near_forms(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- remarks said with the request: 'P's <doing> and just needs', 'they' after P and Q, 'only one'
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Sam's proofreading and just needs a pen, any of them will do.",
+            "pen_black>B | pen_blue>B | pen_red>B",
+            OFFICE,
+        ),
+        ("Bob's a rower and wants the crisps, not the bottle.", "chips>B", TWO),
+        ("Person A has come up out of the cave and would like the boftle.", "bottle>A", ONE),
+        (
+            "Emma's a visiting palaeontologist and not fussy, so hand her either of the cups.",
+            "cup_green>C | cup_white>C",
+            LAB,
+        ),
+        (
+            "Noah and Zoe are doing a reading with the linguist; they can have a book apiece.",
+            "(book_red>B & book_green>C) | (book_green>B & book_red>C)",
+            CLASSROOM,
+        ),
+        ("Emma needs something to stir her tea; the spoon, mind, not the sponge.", "spoon>C", LAB),
+        (
+            "The one apple we've got goes to Person B, he's the only one who hasn't eaten.",
+            "apple>B",
+            L44,
+        ),
+        (
+            "That bottle's for Person A and for nobody else, she's the only one diving.",
+            "bottle>A",
+            ONE,
+        ),
+        ("The thermometer to Mr Lee, he's the only one awake.", "thermometer>B", WARD),
+    ],
+)
+def test_remarks_with_the_request(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # the remark names an object of the scene: it may ask for it
+        ("Sam's holding the stapler and just needs a pen, any of them will do.", OFFICE),
+        # the remark says 'not': refused as before
+        ("Bob's not a rower and wants the crisps, not the bottle.", TWO),
+        # 'they' after two people with a third named in the request
+        (
+            "Noah and Zoe are doing a reading; they can have a book apiece with Mrs Ortiz.",
+            CLASSROOM,
+        ),
+        # something to do with an object of the scene
+        ("Emma needs something to stir the bowl; the spoon, not the sponge.", LAB),
+        # the pronoun does not fit the one person
+        ("The thermometer to Mr Lee, she's the only one awake.", WARD),
+        # two people get things: 'the only one' is whose?
+        ("The apple to Person B and the cup to Person A, he's the only one who hasn't eaten.", L44),
+    ],
+)
+def test_remarks_with_the_request_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -12913,6 +12913,119 @@ def _pair_back30r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start('pair')]}both {m.group('xs')}{m.group('end')}"
 
 
+# "Sam's proofreading and just needs a pen, …", "Bob's a rower and wants the crisps, …"
+_STATE_AND_WANT30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is| has) (?P<said>[a-z][a-z' -]*?) and (?:just |only |also )?"
+    r"(?P<v>needs|wants|would like|'d like|is after|could use)\b",
+    _F,
+)
+
+
+def _state_and_want30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P's <doing or being something> and (just) needs / wants …' is 'P needs
+    / wants …': what P is doing, or is, joined by 'and' to what P wants, is a remark (its words
+    naming nothing in the scene and holding no word that counts, chooses, negates or points
+    back); P one person."""
+    m = _STATE_AND_WANT30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _inert28(m.group("said"), lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')}{text[m.end() :]}"
+
+
+# "Emma's a visiting palaeontologist and not fussy, so hand her either of the cups."
+_AND_NOT_FUSSY30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?P<said>[a-z][a-z' -]*?) and (?P<not>not (?:fussy|"
+    r"bothered|particular|picky))(?=\s*,\s*so\b)",
+    _F,
+)
+# "Noah and Zoe are doing a reading with the linguist; they can have a book apiece."
+_THEY_AFTER30R = re.compile(
+    r"^(?P<pq>[A-Za-z][\w ]*? and [A-Za-z][\w ]*?) (?:are|'re) (?P<said>[a-z][a-z' -]*?)\s*[;,]\s*"
+    r"(?:so )?they (?P<rest>(?:can|could|should|will|each|both|get|have)\b.*)$",
+    _F,
+)
+
+
+def _remark_then30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a remark about the people a request is for, said first: 'P's <a role>
+    and not fussy, so …' is "P's not fussy, so …" (the remark's words naming nothing in the
+    scene); 'P and Q are <doing something>; they can have …' is 'P and Q can have …' (P and Q
+    two people of the scene, the remark naming nothing)."""
+    m = _AND_NOT_FUSSY30R.match(text)
+    if m is not None:
+        if _only_person(m.group("p"), lexicon) and _inert28(m.group("said"), lexicon):
+            return f"{m.group('p')}'s {m.group('not')}{text[m.end() :]}"
+        return text
+    m = _THEY_AFTER30R.match(text)
+    if m is None or not _inert28(m.group("said"), lexicon):
+        return text
+    p, q = re.split(r" and ", m.group("pq"), maxsplit=1)
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon) or _ids(m.group("rest"), lexicon, "human"):
+        return text
+    return f"{m.group('pq')} {m.group('rest')}"
+
+
+# "Emma needs something to stir her tea; the spoon, mind, not the sponge."
+_SOMETHING_TO30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>needs|wants|would like) something"
+    r"(?: to (?P<why>[a-z][a-z' ]*?))?\s*[;:]\s*(?P<rest>(?:the|a|an) \S.*)$",
+    _F,
+)
+
+
+def _something_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P needs something to stir her tea; the spoon, (mind,) not the sponge'
+    is 'P needs the spoon, …': what the thing is for (naming nothing in the scene) and then what
+    it is, the first words after the mark naming the scene's objects."""
+    m = _SOMETHING_TO30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if m.group("why") and not _names_nothing(m.group("why"), lexicon):
+        return text
+    rest = m.group("rest")
+    if not _objects_only(re.split(r"[,;]", rest)[0], lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')} {rest}"
+
+
+# "…, he's the only one who hasn't eaten.", "…, she's the only one diving."
+_ONLY_ONE_WHO30R = re.compile(
+    r",\s*(?P<who>she|he|they)(?:'s| is|'re| are) the only (?:one|ones|person|people)"
+    r"(?P<said>(?: [a-z][a-z' -]*?)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+_REMARK_KEEP30R = re.compile(
+    r"\b(?:all|every|each|both|either|any|or|then|it|them|first|last|next|instead|except|give|"
+    r"hand|take|put|bring)\b",
+    _F,
+)
+
+
+def _only_one_who30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, he's the only one who hasn't eaten' closing a request says why the
+    one person the request hands things to gets them: taken off, when its words name nothing in
+    the scene and hold no word that chooses, counts or asks, and the pronoun fits that person;
+    'and for nobody else' before it is ', nobody else'."""
+    m = _ONLY_ONE_WHO30R.search(text)
+    if m is None or not _names_nothing(m.group("said"), lexicon):
+        return text
+    if _REMARK_KEEP30R.search(m.group("said")):
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    out = _sub(r"\band for (?=nobody else\b|no one else\b|no-one else\b)", ", ", out)
+    said = _tasks_of(out, lexicon)
+    if not said or any(k != "deliver" for k, _, _ in said):
+        return text
+    people = {t for _, _, t in said}
+    if len(people) != 1 or not _fits(next(iter(people)), m.group("who").lower(), lexicon):
+        return text
+    return out
+
+
 _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_odds30r,
     _whichever_of30r,
@@ -12949,6 +13062,10 @@ _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _owned_not30r,
     _needs_a30r,
     _pair_back30r,
+    _state_and_want30r,
+    _remark_then30r,
+    _something_to30r,
+    _only_one_who30r,
 )
 
 
