@@ -12291,7 +12291,8 @@ def _lot_is30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): a word for everything ('the whole lot', 'whatever's there'), then
     what it is said again to be (", which is just X and Y", ", it's only the X anyway"), is the
     word alone when the list names exactly every object of the scene ('whatever's there' then
-    'everything'). A list naming fewer (or anything but objects) leaves the text, refused."""
+    'everything') and what is left reads, with every object. A list naming fewer (or anything
+    but objects) leaves the text, refused; so does 'Everything sweet …' (a kind said first)."""
     if not re.search(_ALL_WORDS30R, text, _F):
         return text
     m = _LOT_IS30R.search(text)
@@ -12303,7 +12304,9 @@ def _lot_is30r(text: str, lexicon: Lexicon) -> str:
         return text
     out = text[: m.start()] + m.group("end")
     out = _sub(r"\bwhatever(?:'s| is) (?:there|here)|\bwhatever there is", "everything", out)
-    return out[:1].upper() + out[1:]
+    out = out[:1].upper() + out[1:]
+    said = _tasks_of(out, lexicon)
+    return out if said and {o for _, o, _ in said} == every else text
 
 
 def _every_last30r(text: str, lexicon: Lexicon) -> str:
@@ -12375,13 +12378,17 @@ def _one_name30r(words: str, lexicon: Lexicon) -> bool:
     return len(named) == 1 and _whole_name(words, lexicon, named[0].refs[0].kind)
 
 
+_NEGATED30R = re.compile(r"\b(?:not|no|never|don't|do not|doesn't|does not)\b|n't\b", _F)
+
+
 def _rather_than30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): 'X to P rather than Q' is 'X to P, not Q' when Q is one name of the
-    scene (of a person, object or surface): what the grammar reads as the exclusion."""
+    scene (of a person, object or surface) and nothing before it is negated ("don't give her
+    the apple rather than the crisps" stays refused): what the grammar reads as the exclusion."""
 
     def instead(m: re.Match[str]) -> str:
         q = m.group("q")
-        if not _one_name30r(q, lexicon):
+        if not _one_name30r(q, lexicon) or _NEGATED30R.search(m.string[: m.start()]):
             return m[0]
         return f", not {q}"
 
