@@ -595,14 +595,10 @@ KNOWN_MISSES = frozenset(
         "the apple.",
         "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
         "wants to go on the tray.",
-        "Whichever thing's nearer your arm, that's the one for Person A.",
         "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
         "her.",
-        "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
-        "There's the only bottle here, sat by the arm; over to Person A with it.",
         "The two smaller boxes can join the big one on the pallet.",
         "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
-        "The cashier wants every box except the large one sent down the belt.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",

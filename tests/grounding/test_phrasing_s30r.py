@@ -528,3 +528,55 @@ def test_remarks_with_the_request(text: str, want: str, scene: Scene) -> None:
 )
 def test_remarks_with_the_request_near_forms(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- which kind, 'there's the only X', 'over to P with it', 'wants X sent down the belt' --------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Emma isn't bothered which cup, either will do, she's only rinsing her brushes.",
+            "cup_green>C | cup_white>C",
+            LAB,
+        ),
+        (
+            "Whichever thing's nearer your arm, that's the one for Person A.",
+            "bottle>A | chips>A",
+            L24,
+        ),
+        (
+            "There's the only bottle here, sat by the arm; over to Person A with it.",
+            "bottle>A",
+            ONE,
+        ),
+        ("Over to Person A with the bottle.", "bottle>A", ONE),
+        (
+            "The cashier wants every box except the large one sent down the belt.",
+            "box_small@conveyor & box_medium@conveyor",
+            DEPOT,
+        ),
+    ],
+)
+def test_kinds_and_presentations(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # one spoon: 'which spoon' has nothing to choose from
+        ("Emma isn't bothered which spoon, either will do.", LAB),
+        # the one is for someone the scene lacks
+        ("Whichever thing's nearer your arm, that's the one for Person C.", L24),
+        # two cups: 'the only cup' is not the scene's
+        ("There's the only cup here; over to Emma with it.", LAB),
+        # what is said of it names another object
+        ("There's the only bottle here, sat by the chips; over to Person A with it.", L24),
+        # down the belt to a person
+        ("The cashier wants every box sent down Mia.", DEPOT),
+    ],
+)
+def test_kinds_and_presentations_near_forms(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

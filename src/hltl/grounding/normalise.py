@@ -13033,6 +13033,100 @@ def _only_one_who30r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "Emma isn't bothered which cup, either will do, …"
+_WHICH_KIND30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:isn't|is not|'s not|doesn't mind|does not mind|doesn't care|does "
+    r"not care)(?: (?:bothered|fussed|fussy|particular))? which (?P<x>[a-z]+)\s*,\s*"
+    r"(?P<will>(?:either|any)(?: one)? (?:will do|is fine|'ll do))",
+    _F,
+)
+# "Whichever thing's nearer your arm, that's the one for Person A."
+_WHICHEVER_FIRST30R = re.compile(
+    r"^whichever (?P<x>[a-z]+)(?:'s| is) (?P<how>nearer|closer|nearest|closest|handier|easier to "
+    r"reach)(?: (?:to )?(?:your arm|the arm|you|the robot))?\s*,\s*that(?:'s| is) the one for "
+    r"(?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _which_kind30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Emma isn't bothered which cup, either will do, …" is 'Give Emma a cup,
+    either will do, …' (the scene having two cups or more, P one person); "Whichever thing's
+    nearer your arm, that's the one for Person A" is 'Give Person A whichever thing is nearer'
+    (P one person; the grammar reads the kind, 'thing' for any object)."""
+    m = _WHICH_KIND30R.match(text)
+    if m is not None:
+        if not _only_person(m.group("p"), lexicon):
+            return text
+        if len(_ids(m.group("x"), lexicon, "object")) < 2:
+            return text
+        if not _only_kind(m.group("x"), lexicon, "object"):
+            return text
+        return f"Give {m.group('p')} a {m.group('x')}, {m.group('will')}{text[m.end() :]}"
+    m = _WHICHEVER_FIRST30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"Give {m.group('p')} whichever {m.group('x')} is nearer{m.group('end')}"
+
+
+# "There's the only bottle here, sat by the arm; over to Person A with it."
+_THERES_THE30R = re.compile(
+    r"^there(?:'s| is) (?:the only|only the|the one|just the|the) (?P<x>[a-z]+(?: [a-z]+)??)"
+    r"(?: here| there)?(?:\s*,\s*(?P<said>[a-z][a-z' ]*?))?\s*[;:]\s*(?P<rest>\S.*)$",
+    _F,
+)
+_WITH_IT30R = re.compile(
+    r"^(?P<dir>over|across|up|down|round) to (?P<p>[A-Za-z][\w ]*?) with (?P<x>it|them|the "
+    r"[a-z]+(?: [a-z]+)??)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _theres_the30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'Over to P with it' is 'Take it over to P' (P one person); "There's the
+    only bottle here, sat by the arm; <request for 'it'>" is that request for the bottle (the
+    scene having one, what is said of it naming nothing else, the request naming no object and
+    one 'it')."""
+    m = _THERES_THE30R.match(text)
+    if m is not None:
+        x, rest = m.group("x"), m.group("rest")
+        if not _only(x, lexicon, "object"):
+            return text
+        if m.group("said") and (
+            not _names_nothing(m.group("said"), lexicon) or _REMARK_KEEP30R.search(m.group("said"))
+        ):
+            return text
+        if len(re.findall(r"\bit\b", rest, _F)) != 1 or _ids(rest, lexicon, "object"):
+            return text
+        text = _sub(r"\bit\b", f"the {x}", rest)
+        text = text[:1].upper() + text[1:]
+    w = _WITH_IT30R.match(text)
+    if w is None or not _only_person(w.group("p"), lexicon):
+        return text
+    return f"Take {w.group('x')} {w.group('dir')} to {w.group('p')}{w.group('end')}"
+
+
+# "The cashier wants every box except the large one sent down the belt."
+_WANTS_DOWN30R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like) (?P<x>(?:the|every|all|both) [a-z ]+?) "
+    r"(?:sent|put|moved|run|loaded) (?:down|along|onto|on|up) (?:the )?(?P<s>[a-z]+)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_down30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'W wants X sent down the belt' is 'Put X on the belt' (W someone the
+    scene does not name, or one person of it: who asks; S a surface)."""
+    m = _WANTS_DOWN30R.match(text)
+    if m is None or not _surface_only(m.group("s"), lexicon):
+        return text
+    who = m.group("who")
+    if not (_inert28(who, lexicon) or _only_person(who, lexicon)):
+        return text
+    return f"Put {m.group('x')} on the {m.group('s')}{m.group('end')}"
+
+
 _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_odds30r,
     _whichever_of30r,
@@ -13073,6 +13167,9 @@ _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
     _remark_then30r,
     _something_to30r,
     _only_one_who30r,
+    _which_kind30r,
+    _theres_the30r,
+    _wants_down30r,
 )
 
 
