@@ -580,3 +580,23 @@ def test_kinds_and_presentations(text: str, want: str, scene: Scene) -> None:
 )
 def test_kinds_and_presentations_near_forms(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # engineer 12's fuzz (seed 32): a time after the list is no item of it, and puts it off
+        (
+            "Give Person B the whole lot, which is just the bottle and the crisps, before I go "
+            "tomorrow",
+            FIG1,
+        ),
+        # a time in the words a rule would take off: the time rule stands
+        ("Person B needs a drink tomorrow, so the bottle to him", F42),
+        ("Load all three boxes onto the belt for Tom's run tomorrow.", DEPOT),
+        ("Emma needs something to stir her tea tonight; the spoon, not the sponge.", LAB),
+        ("Person B needs the bottle, er, I mean, the chips, sorry, see you tomorrow.", F41),
+    ],
+)
+def test_a_time_is_not_taken_off(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

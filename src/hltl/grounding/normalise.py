@@ -12197,6 +12197,13 @@ def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
 # as it was when what the construction presupposes (one person, the scene's objects, a count)
 # does not hold; docs/grounding.md, "Session 30 (engineer 12r)".
 
+# a time said in words a rule takes off ("needs a drink tomorrow", "for Tom's run tonight"): the
+# rule is not taken, so what the grammar and the time rule make of the time stands
+_TIME30R = re.compile(
+    r"\b(?:tonight|tomorrow|later|soon|today|yesterday|morning|afternoon|evening|week|minutes?|"
+    r"hours?|after|before|until|till|when|once|then|next|first|last|now)\b",
+    _F,
+)
 _OBJECT_PRONOUN30R = {"him": "he", "her": "she", "them": "they", "me": "I", "us": "we"}
 # "…, makes no odds to him", "…, it makes no difference", "…, it doesn't matter to her"
 _NO_ODDS30R = re.compile(
@@ -12290,8 +12297,9 @@ _LOT_IS30R = re.compile(
 def _lot_is30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): a word for everything ('the whole lot', 'whatever's there'), then
     what it is said again to be (", which is just X and Y", ", it's only the X anyway"), is the
-    word alone when the list names exactly every object of the scene ('whatever's there' then
-    'everything') and what is left reads, with every object. A list naming fewer (or anything
+    word alone when the list, each item one name of the scene's objects, names exactly every
+    object of the scene ('whatever's there' then 'everything') and what is left reads, with
+    every object. A list naming fewer (or anything
     but objects) leaves the text, refused; so does 'Everything sweet …' (a kind said first)."""
     if not re.search(_ALL_WORDS30R, text, _F):
         return text
@@ -12300,7 +12308,10 @@ def _lot_is30r(text: str, lexicon: Lexicon) -> str:
         return text
     listed = m.group("list")
     every = {o.id for o in lexicon.scene.objects}
-    if not _objects_only(listed, lexicon) or _ids(listed, lexicon) != every:
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", listed.strip()) if w]
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text  # "…, the bottle and the crisps, before I go tomorrow": not a list of names
+    if _ids(listed, lexicon) != every:
         return text
     out = text[: m.start()] + m.group("end")
     out = _sub(r"\bwhatever(?:'s| is) (?:there|here)|\bwhatever there is", "everything", out)
@@ -12438,7 +12449,7 @@ def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     taken off: it corrects nothing. Only after a correction already said ('I mean', 'no,'
     'sorry,' before it), so that 'sorry' cannot be the first cue."""
     m = _SORRY_AFTER30R.search(text)
-    if m is None or not _inert28(m.group("why"), lexicon):
+    if m is None or not _inert28(m.group("why"), lexicon) or _TIME30R.search(m.group("why")):
         return text
     before = text[: m.start()]
     if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
@@ -12698,6 +12709,8 @@ def _placed_for30r(text: str, lexicon: Lexicon) -> str:
     m = _PLACED_FOR30R.search(text)
     if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
         return text
+    if _TIME30R.search(m.group("w")):
+        return text
     out = text[: m.start()] + m.group("on") + m.group("end")
     said = _tasks_of(out, lexicon)
     return out if said and all(k == "place" for k, _, _ in said) else text
@@ -12884,6 +12897,8 @@ def _needs_a30r(text: str, lexicon: Lexicon) -> str:
     m = _NEEDS_A30R.match(text)
     if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
         return text
+    if _TIME30R.search(m.group("w")):
+        return text
     p = m.group("p")
     if m.group("v"):
         rest = m.group("rest")
@@ -12991,7 +13006,9 @@ def _something_to30r(text: str, lexicon: Lexicon) -> str:
     m = _SOMETHING_TO30R.match(text)
     if m is None or not _only_person(m.group("p"), lexicon):
         return text
-    if m.group("why") and not _names_nothing(m.group("why"), lexicon):
+    if m.group("why") and (
+        not _names_nothing(m.group("why"), lexicon) or _TIME30R.search(m.group("why"))
+    ):
         return text
     rest = m.group("rest")
     if not _objects_only(re.split(r"[,;]", rest)[0], lexicon):
