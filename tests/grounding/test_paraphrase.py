@@ -468,8 +468,6 @@ KNOWN_MISSES = frozenset(
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
-        "Lemon to Marco. Salt to Marco too. Then the white plate on the rack so the guests don't "
-        "see it.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
@@ -542,7 +540,6 @@ KNOWN_MISSES = frozenset(
         'interval.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'Chips to Person B, oops, Person A, I mean, sorry, love.',
-        'person b gets the apple to start with, and then after it person a gets the chips',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         'the red book goes back up on the bookshelf with the others',
         'Person A is hungry, please bring her the alple from the end.',
@@ -604,7 +601,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        "Alice the linguist gets the bottle, and once that's done Bob can take his crisps.",
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
         'Mrs Khan is shivering like a diver out of the sea, so let her have both blankets.',
@@ -614,52 +610,18 @@ KNOWN_MISSES = frozenset(
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
-        'person b is thirsty after the dive so she wants the bottle',
         'Aluce is back from the dive, hand her the bottle.',
         'The forester left the bottle out; put it on the shrlf.',
         'Omsr needs the spoon to stir his samples.',
         "Ruth has asked for the thermomrter, the ward's too warm.",
         'Tom needs the glovrs, the pallets are splintery.',
         'Zoe wants the scissord to cut out her rock diagrams.',
-        "Would you mind lifting the crisps up onto the shelf so the ventriloquist's dummy can't "
-        "get at them?",
-        'Can you carry the bottle down the line to Person A?',
-        "Could the bowl go in the sink? The botanist's soil is caked on it.",
-        "Mind popping the packing tape on the pallet? The milkman's crates need sealing.",
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
-        "Hi there, it's the distiller from next door, er, the apple for Person B please.",
-        "Sorry, the microbiologist again, could Omar have the white cup, if it's not too much "
-        "trouble?",
-        "Hvala, the flashlight to Jess next, if you'd be so kind.",
-        "It's the chips that Person B wants, not the bottle.",
-        'The two stagehands need feeding: bottle for Person A, chips for Person B.',
-        'Person A could murder a drink, so the bottle, please.',
-        "Person B needs something to eat, the chips'll do.",
-        'Priya wants her notepad left out on the desk for the meeting.',
-        'For the geography lesson Mrs Ortiz would like the globe set out on the desk.',
-        "Lily's grizzling for her teddy bear; she won't nap till she's got it.",
-        "The clown's Person B and he's getting the bottle, while the chips go across to Person A.",
-        "Chips to Person B, and while you're over there the apple for him as well.",
-        'Person A has had her eye on that bottle ever since the bell-ringing practice finished.',
-        'The chips go to Person B, and the bottle, well, him again, Person B.',
-        'Sam left the stapler behind, so run it over to him.',
-        'Person B gets the cup first then Person A gets the apple after that is done',
-        'Bottle: Person A. Cup: Person B. And the chips, also Person A. Done.',
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",
-        "The bottle. Over to Person A. Nothing else for now, the skier's happy.",
-        "grab the bottle take it to Person A thanks that's the lot",
         'Person A, a dyer, wants a drink and will take the cup or the bottle, either way.',
-        'mr novak at table four wants the salt',
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         'Hand the bottle to Percon A, the shearer',
-        'Could you stow the crisps up on the shelf, by any chance?',
-        'Would it be all right if Person B took the bottle off you?',
-        'Any chance of running the chips across to Person B before the cyclists set off?',
-        'How about the chips going over to Person B, the sexton?',
-        "D'you mind getting that bottle to Person A, she's the restorer?",
-        'Is it OK for Person B to have the bottle first, then after it the chips?',
-        'Can the medium box go onto the belt next?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
