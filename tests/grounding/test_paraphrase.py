@@ -590,8 +590,6 @@ KNOWN_MISSES = frozenset(
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "Omar's got spore prints drying, so he needs the spoon handed to him, and the banana "
-        "wants to go on the tray.",
         "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
         "her.",
         "The two smaller boxes can join the big one on the pallet.",

@@ -16,6 +16,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -113,6 +114,10 @@ READS = [
     ("Could you carry the chips down the hall to Bob?", "chips>B", CELL),
     # (u) what the request is for, with a subject the scene does not name
     ("Put the chips on the shelf so the dog can't reach them.", "chips@shelf", CELL),
+    # (v) what a person has going on, as the reason before 'so' ('spore' had been mended to the
+    # verb 'store' and the reason read as a request)
+    ("Bob's got spore prints drying, so he needs the chips.", "chips>B", CELL),
+    ("Emma's got spore samples soaking, so she needs the sponge.", "sponge>C", LAB),
 ]
 
 
@@ -200,6 +205,10 @@ REFUSED = [
     ("Put the chips on the shelf so the red mug can go on the table.", CELL),
     ("Put the chips on the shelf so the dog won't give Bob the apple.", CELL),
     ("Put the chips on the shelf so the dog can't reach the cup.", CELL),
+    # (v) what they have going names the scene, or a person; nothing asked after it
+    ("Bob's got the apple baking, so he needs the chips.", CELL),
+    ("Bob's got Alice waiting, so he needs the chips.", CELL),
+    ("Bob's got bread baking.", CELL),
 ]
 
 

@@ -8327,6 +8327,32 @@ def _so_that30(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + text[m.end() :]
 
 
+# "Omar's got spore prints drying, so he needs the spoon …": what a person has going on, said as the
+# reason for a request after 'so'
+_HAS_GOING30 = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)(?:'s| has) got (?P<what>(?:some |his |"
+    r"her |their |a |an |the )?[a-z][a-z' -]*?) (?P<doing>[a-z]+ing)(?=,? so\b)",
+    _F,
+)
+
+
+def _has_going30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the reason above is said as 'P is busy' (a remark the grammar's remark rule
+    reads, its person standing in for the request's pronouns), when P is one person and what they
+    have going names nothing and asks nothing (_asks_nothing29)."""
+    if " got " not in text.lower():
+        return text
+
+    def busy(m: re.Match[str]) -> str:
+        if _only_person(m["who"], lexicon) and _asks_nothing29(
+            f"{m['what']} {m['doing']}", lexicon
+        ):
+            return f"{m['who']} is busy"
+        return m[0]
+
+    return _HAS_GOING30.sub(busy, text)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -14174,6 +14200,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _mind30,
     _path30,
     _so_that30,
+    _has_going30,
     # session 29 (12): blind27's kinds
     _says29,
     _described29,
