@@ -560,7 +560,9 @@ def _people(text: str, lexicon: Lexicon) -> str:
     # "Mr Novak he want lemon": a pronoun repeating the subject
     for h in humans:
         for alias in (*h.aliases, h.name):
-            text = _sub(rf"^({re.escape(alias)}),? (?:he|she|they) ", r"\1 ", text)
+            text = _sub(
+                rf"^({re.escape(alias)}),? (?:he|she|they) ", _said_again30s(h.id, lexicon), text
+            )
     # "You bring for the doctor the bowl"
     text = _sub(r"^you (?=give|bring|hand|pass|take|put|place|fetch)", "", text)
     return _sub(
@@ -572,6 +574,16 @@ def _people(text: str, lexicon: Lexicon) -> str:
         ),
         text,
     )
+
+
+def _said_again30s(pid: str, lexicon: Lexicon) -> Callable[[re.Match[str]], str]:
+    """Session 30 (12s): 'P, he …' says P again, unless P's title rules the pronoun out ("Mr
+    Lee, she gets the jug" speaks to Mr Lee of someone else)."""
+
+    def again(m: re.Match[str]) -> str:
+        return m.group(1) + " " if _fits(pid, m.group(0), lexicon) else m.group(0)
+
+    return again
 
 
 def _one_thing(words: str, lexicon: Lexicon) -> bool:
@@ -1067,12 +1079,17 @@ def _labels(text: str, lexicon: Lexicon) -> str:
         # "Not urgent:" / "No rush -" are labels; "Cancel this:" is not
         or (_NEGATIONS.search(label) and not re.match(r"^(?:not|no) [a-z]+$", label, _F))
         or _ORDER_WORDS.search(label)
+        or _LATER30S.search(label)
         or re.search(_TASK_WORDS, label, _F)
         or not _plain_words(_NOTE_WORDS.sub(" ", label), lexicon)
     ):
         return text
     return m.group(2)
 
+
+# session 30 (12s): a label naming a later time than now ("Tomorrow's list: Alice, cup.") puts
+# what follows off; it is not dropped, and the instruction is refused for the time
+_LATER30S = re.compile(r"\b(?:tomorrow|later|next (?:week|month|shift|time)|weekend)\b", _F)
 
 # words that head a note and are in no list of common words
 _NOTE_WORDS = re.compile(r"\b(?:handover|hand-over|fyi|memo|todo|to-do|reminder|ps|nb|re)\b", _F)
@@ -4493,8 +4510,27 @@ def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
         bool(re.search(r"[a-z]", plain, _F))
         and not _SENTENCE_HELD.search(plain)
         and not _POINTING.search(plain)
+        and not _asks30s(plain)
         and _names_nothing(plain, lexicon)
     )
+
+
+# Session 30 (12s): a sentence shaped as a request is no remark, whatever it names: a thing said
+# alone ('The spanner.', 'A cloth, please.') or someone wanting or getting a thing ('The chef
+# wants the jug.'). Naming nothing of the scene, it had been taken off as inert, and the request
+# beside it read as if it were all that was asked; kept, it is refused for the unknown name.
+_ASKS30S = re.compile(
+    r"^\s*(?:the|a|an|some|that|this|these|those)\s+[a-z][a-z'-]*(?:\s+[a-z][a-z'-]*){0,2}"
+    r"\s*(?:,?\s*please)?\s*[.!]*\s*$|"
+    r"\b(?:wants|needs|would like|'d like|is after|asked for|asks for|is asking for|gets|is "
+    r"getting|is to get|should get|should have|can have|could have|will have|is due)\s+(?:the|a|"
+    r"an|some|his|her|their|my|your|our|this|that|these|those)\b",
+    _F,
+)
+
+
+def _asks30s(sentence: str) -> bool:
+    return _ASKS30S.search(sentence) is not None
 
 
 def _inert_sentences(text: str, lexicon: Lexicon) -> str:
@@ -5923,7 +5959,7 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"\b(the [a-z ]+?),\s*(?:those|these|they|it|that) (go|goes|are|is)\b", fronted, out)
 
     def resumed(m: re.Match[str]) -> str:
-        if not _only_person(m.group(1), lexicon):
+        if not _only_person(m.group(1), lexicon) or not _resumes30s(m, lexicon):
             return m.group(0)
         return f"{m.group(1)} {m.group(2)}"
 
@@ -5939,6 +5975,16 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
         r"(?:it|them)\b",
         found,
         out,
+    )
+
+
+def _resumes30s(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Session 30 (12s): whether the pronoun of 'P, she gets …' may say P again: not when P's
+    title says otherwise ("Mr Lee, she gets the jug" speaks to Mr Lee of someone else, and had
+    been read as the jug for Mr Lee)."""
+    return all(
+        _fits(pid, m.group(0)[len(m.group(1)) :], lexicon)
+        for pid in _ids(m.group(1), lexicon, "human")
     )
 
 

@@ -315,6 +315,12 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
+        if off is not None:
+            raise GroundingError(
+                f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
+                "when it is to be done"
+            )
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -384,6 +390,24 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             ) from None
         raise best from None
 
+
+# Session 30 (12s): what was asked, said after it to be for a later time ("Give Bob the cup,
+# that is for later.", "…. It's for tomorrow."): a pronoun for it, 'be', then 'for' and the time,
+# ending a sentence. Taken off as a closer (or its time as how long), it had been read as a
+# request for now; refused as a deferring time word is. ("… for later" after the verb's objects
+# stays a purpose: "Give Bob the cup for later".)
+_PUT_OFF30S = re.compile(
+    r"[,.;!?]\s*(?:and\s+|but\s+)?(?P<said>(?:that|this|it|those|these|they|that one|those ones)"
+    r"(?:'s|'re| is| are|'ll be| will be| can wait| can be) (?:saved |kept )?for (?:later(?: on)?|"
+    r"tomorrow|tonight|next (?:week|month|time)|the weekend|this (?:evening|afternoon)|after "
+    r"(?:lunch|dinner|breakfast|tea|school|work)))\b(?=\s*(?:,?\s*(?:please|thanks|thank you|"
+    r"ta|cheers)\s*)?[.!]*\s*$)",
+    re.I,
+)
+
+# 'Later' opening a sentence ("Later, give Bob the cup.", "Later: Alice, cup."): the time of
+# what follows, not 'then' (read as an order word with nothing before it, it had been dropped)
+_LATER30S = re.compile(r"(?:^|[.;!?]\s+)(?P<said>later)\b(?!\s+(?:on|than)\b)", re.I)
 
 # words that put a task off (session 20: refused, since acting now could be wrong; 'now',
 # 'today', 'soon', 'asap', 'right away' are read)
@@ -2374,12 +2398,12 @@ def _trailing_order(items: list[Item]) -> list[Item]:
                 # last separator take the task before them, after it (as '…, and then the bottle')
                 or (
                     k == seps[-1]
-                    and lemma == "then"
                     and all(
                         _is(x, "det")
                         or (x.kind == "ent" and all(r.kind == "object" for r in x.refs))
                         for x in body[j:]
                     )
+                    and (lemma == "then" or _first_of_listed30s(body, k, j))
                 )
             )
         )
@@ -2396,6 +2420,44 @@ def _trailing_order(items: list[Item]) -> list[Item]:
             )
         return body  # "Carol needs the bottle first": already first
     return items
+
+
+def _first_of_listed30s(body: list[Item], k: int, j: int) -> bool:
+    """Session 30 (12s): "Give Lena the knife and the lemon, and the salt first": the objects
+    after the last separator, said with 'first', go before the objects listed before them, as
+    '…, and the bottle after that' goes after them (the 'first' had been dropped as "already
+    first"). Only after a comma (', and', ', '), where what comes before is one object ("Put the
+    knife on the counter, and the tongs first") or a list closed with 'and' (the comma says the
+    rest is added). After a list of commas alone ('the knife, the lemon, and the salt first') or
+    several clauses, what 'first' puts first is unclear: refused. Without a comma ('the knife and
+    the salt first') it is left as it was."""
+    m = k
+    while m > 0 and _is(body[m - 1], ",", "and"):
+        m -= 1
+    if not any(_is(x, ",") for x in body[m : k + 1]) or j >= len(body):
+        return False
+    n = m
+    while n > 0 and (_is(body[n - 1], ",", "and", "det") or _only_objects30s(body[n - 1])):
+        n -= 1
+    listed = body[n:m]  # the list of objects right before the separator
+    if not any(_only_objects30s(x) for x in listed):
+        # a place or a person ends what comes before: the objects of all of it
+        listed = [
+            x for x in body[:m] if x.kind == "ent" and any(r.kind == "object" for r in x.refs)
+        ]
+        if len(listed) > 1:
+            listed = []  # "the knife to Lena and the lemon to Marco, and the salt first"
+    count = sum(1 for x in listed if x.kind == "ent")
+    if count == 1 or (count > 1 and any(_is(x, "and") for x in listed)):
+        return True
+    raise GroundingError(
+        f"cannot tell what 'first' puts first in {_text(body)!r}: the last of what is listed or "
+        "all of it; say the order with 'then'"
+    )
+
+
+def _only_objects30s(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "object" for r in item.refs)
 
 
 def _it_to_person(nps: list[Item], frag: _Frag) -> bool:
