@@ -9,10 +9,13 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
     KITCHEN,
     WARD,
+    WORKSHOP,
     assert_reads,
     assert_refused,
 )
@@ -188,6 +191,56 @@ def test_first_after_a_list_with_a_comma_orders(text: str, want: str) -> None:
 )
 def test_first_after_an_unclear_list_is_refused(text: str) -> None:
     assert_refused(text, KITCHEN, match="cannot tell what 'first' puts first")
+
+
+# -- sizes compared (normalise.py _sizes30s) --------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each refused before for an unknown name ('two', 'smaller box', 'both of the')
+        ("Mia wants the two smaller boxes", "box_small>A & box_medium>A", DEPOT),
+        ("Tom wants the two bigger boxes", "box_medium>B & box_large>B", DEPOT),
+        ("Both of the smaller boxes to Tom.", "box_small>B & box_medium>B", DEPOT),
+        ("Give Tom the smaller boxes.", "box_small>B & box_medium>B", DEPOT),
+        ("Give Tom the smallest box.", "box_small>B", DEPOT),
+        ("Give Tom the biggest box.", "box_large>B", DEPOT),
+        ("Whichever box is smallest goes to Tom.", "box_small>B", DEPOT),
+        (
+            "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "One of the smaller boxes onto the belt, the small or the medium, your pick.",
+            "box_small@conveyor | box_medium@conveyor",
+            DEPOT,
+        ),
+        ("Give Jess the smaller spanner.", "spanner_small>B", WORKSHOP),
+        ("Give Jess the bigger spanner.", "spanner_large>B", WORKSHOP),
+        ("Put the tape aboard the pallet.", "tape@pallet", DEPOT),  # 'aboard' is 'onto'
+    ],
+)
+def test_sizes_compared_pick_the_objects(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Tom the smaller box.", DEPOT),  # one of three: which?
+        ("Give Tom the three smaller boxes.", DEPOT),  # there are three boxes in all
+        ("Give Tom the biggest boxes.", DEPOT),
+        ("Give Jess the two smaller spanners.", WORKSHOP),  # two spanners in all
+        ("Both of the smaller boxes, small and large, to Tom.", DEPOT),  # said again otherwise
+        ("One of the smaller boxes onto the belt, the small or the large, your pick.", DEPOT),
+        ("Which box is the biggest?", DEPOT),
+        ("Give Bob the bigger mug.", CELL),  # the mugs differ in colour, not size
+    ],
+)
+def test_sizes_compared_near_forms_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
 
 
 # -- checked, left as it was -----------------------------------------------------------------

@@ -12238,6 +12238,191 @@ def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 30 (12s): sizes compared ------------------------------------------------------------
+#
+# A scene may tell objects of one kind apart by size words in their names ('small box', 'medium
+# box', 'large box'). 'the smallest box', 'the two smaller boxes', 'both of the bigger boxes',
+# 'one of the smaller boxes', 'whichever box is smallest' pick them out by that order (each had
+# been refused for an unknown name). Only where every object of the kind has a size word and no
+# two share a rank; 'the smaller box' is one of two only, 'the smaller boxes' (no number) the two
+# of three that are not the largest (or not the smallest); a number as large as the kind, or
+# anything else, is left (and refused).
+_SIZE_RANKS30S = {
+    "tiny": 0,
+    "little": 1,
+    "small": 1,
+    "mini": 1,
+    "medium": 2,
+    "middle": 2,
+    "medium-sized": 2,
+    "mid-sized": 2,
+    "middle-sized": 2,
+    "large": 3,
+    "big": 3,
+    "huge": 4,
+}
+_COMPARED30S = {
+    "smaller": "less",
+    "lesser": "less",
+    "littler": "less",
+    "bigger": "more",
+    "larger": "more",
+    "smallest": "least",
+    "littlest": "least",
+    "tiniest": "least",
+    "biggest": "most",
+    "largest": "most",
+}
+_COUNTS30S = {"two": 2, "both": 2, "three": 3}
+
+
+def _ranked30s(category: str, lexicon: Lexicon) -> list[str] | None:
+    """The objects of ``category``, smallest first, when each has one size word in its names and
+    no two share a rank; else None."""
+    ranks: dict[str, int] = {}
+    for o in lexicon.scene.objects:
+        if o.category != category:
+            continue
+        said = {
+            _SIZE_RANKS30S[w]
+            for n in (o.id.replace("_", " "), *o.aliases)
+            for w in n.lower().split()
+            if w in _SIZE_RANKS30S
+        }
+        if len(said) != 1:
+            return None
+        ranks[o.id] = _rank30s(o.id, lexicon)
+    if len(ranks) < 2 or len(set(ranks.values())) != len(ranks):
+        return None
+    return sorted(ranks, key=lambda i: ranks[i])
+
+
+_JOINS30S = frozenset({"the", "and", "or"})
+
+
+def _rank30s(oid: str, lexicon: Lexicon) -> int:
+    o = next(x for x in lexicon.scene.objects if x.id == oid)
+    return next(
+        _SIZE_RANKS30S[w]
+        for n in (o.id.replace("_", " "), *o.aliases)
+        for w in n.lower().split()
+        if w in _SIZE_RANKS30S
+    )
+
+
+def _object_name30s(oid: str, lexicon: Lexicon) -> str:
+    """A name of object ``oid`` that names it alone ('the small box')."""
+    o = next(x for x in lexicon.scene.objects if x.id == oid)
+    for a in (*o.aliases, o.id.replace("_", " ")):
+        if _ids(a, lexicon) == {oid}:
+            return f"the {a}"
+    return f"the {oid}"
+
+
+def _sizes30s(text: str, lexicon: Lexicon) -> str:
+    if not re.search(r"(?:er|est)\b", text, _F) or not any(w in text.lower() for w in _COMPARED30S):
+        return text
+    words = "|".join(_COMPARED30S)
+    before = text
+    chosen: list[list[int]] = []
+    text = _sub(
+        rf"\b(?:(?P<count>the two|the three|two|three|both(?: of the| the)?)\s+|(?P<one>one of "
+        rf"the)\s+|(?P<the>the)\s+)?(?P<cmp>{words})\s+(?P<noun>[a-z]+)\b"
+        # "…, small and medium, …": the sizes said again after them
+        rf"(?P<again>\s*,\s*{_AGAIN30S}\s*,)?",
+        lambda m: _compared30s(m, lexicon, chosen),
+        text,
+    )
+    for ranks in chosen:
+        # "One of the smaller boxes onto the belt, the small or the medium, your pick": the sizes
+        # said again later in the sentence
+        for m in _rx(rf",\s*(?P<again>{_AGAIN30S})\s*(?=[,.!?;]|$)").finditer(text):
+            said = _sizes_said30s(m.group("again"))
+            if said is None:
+                continue
+            if said != ranks:
+                return before  # the sizes said again are others: which is meant?
+            text = text[: m.start()] + text[m.end() :]
+            break
+    # "Whichever box is smallest goes to Tom": the one of that size
+    return _sub(
+        r"\bwhichever\s+(?P<noun>[a-z]+)\s+is\s+(?:the\s+)?(?P<cmp>smallest|biggest|largest)\b",
+        lambda m: _compared30s(m, lexicon, whichever=True),
+        text,
+    )
+
+
+def _kind_ranked30s(noun: str, lexicon: Lexicon) -> tuple[list[str], bool] | None:
+    """The objects a kind's name ``noun`` ('box', 'boxes') names, smallest first, and whether it
+    is said in the plural; None unless it names all of one category, ranked by size."""
+    ids = _ids(noun, lexicon, "object")
+    cats = {o.category for o in lexicon.scene.objects if o.id in ids}
+    if len(cats) != 1:
+        return None
+    category = cats.pop()
+    order = _ranked30s(category, lexicon)
+    if order is None or set(order) != ids:
+        return None
+    return order, noun.lower() != category.lower()
+
+
+# sizes said again: 'small and medium', 'the small or the medium'
+_AGAIN30S = r"(?:the\s+)?[a-z-]+(?:(?:\s*,\s*|\s+(?:and|or)\s+)(?:the\s+)?[a-z-]+)+"
+
+
+def _sizes_said30s(words: str) -> list[int] | None:
+    """The ranks ``words`` says, sorted ('small and medium': [1, 2]); None unless each word
+    other than 'the', 'and', 'or' is a size word."""
+    said = [w for w in re.findall(r"[a-z-]+", words.lower()) if w not in _JOINS30S]
+    if not all(w in _SIZE_RANKS30S for w in said):
+        return None
+    return sorted(_SIZE_RANKS30S[w] for w in said)
+
+
+def _compared30s(
+    m: re.Match[str],
+    lexicon: Lexicon,
+    chosen: list[list[int]] | None = None,
+    *,
+    whichever: bool = False,
+) -> str:
+    """What 'the two smaller boxes' (``m``) names, said by the objects' own names; ``m`` itself
+    where that is not one reading."""
+    kind = _kind_ranked30s(m.group("noun"), lexicon)
+    if kind is None:
+        return m.group(0)
+    order, plural = kind
+    way = _COMPARED30S[m.group("cmp").lower()]
+    ranked = order if way in ("less", "least") else order[::-1]
+    if whichever:
+        return m.group(0) if plural else _object_name30s(ranked[0], lexicon)
+    count_word = (m.group("count") or "").lower().split()
+    count = next((_COUNTS30S[w] for w in count_word if w in _COUNTS30S), 0)
+    if not plural:
+        if count or m.group("one") or not m.group("the"):
+            return m.group(0)
+        if way in ("least", "most") or len(order) == 2:
+            return _object_name30s(ranked[0], lexicon)  # 'the smallest box', 'the bigger box'
+        return m.group(0)
+    if way in ("least", "most"):
+        return m.group(0)  # 'the smallest boxes'
+    if not count:
+        if len(order) != 3 or not (m.group("the") or m.group("one")):
+            return m.group(0)
+        count = 2  # 'the smaller boxes' of three: the two that are not the largest
+    if count >= len(order):
+        return m.group(0)
+    names = [_object_name30s(i, lexicon) for i in ranked[:count]]
+    ranks = sorted(_rank30s(i, lexicon) for i in ranked[:count])
+    if m.group("again") and _sizes_said30s(m.group("again").strip(" ,")) != ranks:
+        return m.group(0)  # "the two smaller boxes, small and large, …": which is meant?
+    if chosen is not None and not m.group("again"):
+        chosen.append(ranks)
+    if m.group("one"):
+        return "either " + " or ".join(names)
+    return ", ".join(names[:-1]) + " and " + names[-1]
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -12396,6 +12581,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _included27r,
     _that_there27r,
     _said_aside27r,
+    # session 30 (12s)
+    _sizes30s,
     # session 28 (12r): blind26's kinds
     _cue_reason28r,
     _not_that28r,
