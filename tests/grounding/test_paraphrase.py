@@ -297,8 +297,6 @@ KNOWN_MISSES = frozenset(
         "Mr Novak wants a plate — the white one, mind, not the blue.",
         "The blanket on the trolley stays there; Mrs Khan gets the other one.",
         "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
-        "Bob doesn't want the bottle at all, it's the crisps he's after.",
-        "Alice doesn't want the crisps. The bottle's the one for her.",
         "Person A will take anything at all as long as it isn't the cup.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
@@ -404,7 +402,6 @@ KNOWN_MISSES = frozenset(
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
-        "Don't give Bob the bottle; he gets the crisps.",
         "Nothing for Person A today; the chips go to Person B.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
@@ -530,7 +527,6 @@ KNOWN_MISSES = frozenset(
         'Give Person A the chips but not the apple, and not the cup either.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
-        "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
         'Give Ava the blocks, not the green one, only red.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',

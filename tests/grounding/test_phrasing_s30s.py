@@ -243,6 +243,45 @@ def test_sizes_compared_near_forms_stay_refused(text: str, scene: Scene) -> None
     assert_refused(text, scene)
 
 
+# -- a negated want, then what is wanted (normalise.py _not_wanted30s) --------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each refused before for the negation
+        ("Don't give Bob the bottle; he gets the crisps.", "chips>B", CELL),
+        ("Don't give Bob the bottle; give him the crisps.", "chips>B", CELL),
+        ("Alice doesn't want the crisps. The bottle's the one for her.", "bottle>A", CELL),
+        ("Bob doesn't want the bottle at all, it's the crisps he's after.", "chips>B", CELL),
+        ("Bob doesn't want the bottle, it's the crisps he wants.", "chips>B", CELL),
+        (
+            "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
+            "blanket_blue>C",
+            WARD,
+        ),
+        # with a comma, as read before
+        ("Alice doesn't want the crisps, give her the bottle.", "bottle>A", CELL),
+    ],
+)
+def test_a_negated_want_then_what_is_wanted_reads(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Don't give Bob the bottle. Give him the bottle.", CELL),  # the same thing
+        ("Bob doesn't want the bottle at all.", CELL),  # nothing wanted instead
+        ("Bob doesn't want the bottle, it's the spanner he's after.", CELL),  # not in the scene
+        ("Mr Lee doesn't want the jug, so it's the magazine for her.", WARD),  # not Mr Lee
+        ("It's the bottle he's after. Bob doesn't want the crisps.", CELL),  # not opening
+    ],
+)
+def test_a_negated_want_near_forms_stay_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
 # -- checked, left as it was -----------------------------------------------------------------
 
 

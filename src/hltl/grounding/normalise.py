@@ -12423,6 +12423,68 @@ def _compared30s(
     return ", ".join(names[:-1]) + " and " + names[-1]
 
 
+# -- session 30 (12s): a negated want, then what is wanted ------------------------------------
+#
+# "Don't give Bob the bottle; he gets the crisps.", "Alice doesn't want the crisps. The bottle's
+# the one for her.", "Bob doesn't want the bottle at all, it's the crisps he's after.", "Mrs Khan
+# doesn't want the grey blanket, so it's the other one for her.": the grammar reads a negated
+# request and, after a comma, what is given instead ("Alice doesn't want the crisps, give her the
+# bottle"); said with a full stop or a semicolon between them, with 'at all', or with what is
+# wanted said as a cleft, each had been refused. Only a text opening with the negated request;
+# the cleft only with a pronoun and objects of the scene; the grammar then reads (or refuses)
+# the two as it reads them with a comma.
+_NOT_WANTED30S = re.compile(
+    r"^(?P<neg>(?:[A-Z][\w ]*? (?:doesn't|does not|won't|will not|didn't|did not) (?:want|need)|"
+    r"(?:don't|do not) (?:give|hand|pass|bring|take|send|deliver)) [^.;,!?]+?)(?:\s+at all)?"
+    r"\s*[.;,]\s*(?P<rest>\S.*)$",
+    _F,
+)
+_CLEFTS30S = (
+    # "it's the crisps he's after" / "it's the crisps she wants"
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) (?:that |which )?"
+        r"(?P<p>he|she)(?:'s| is) (?:after|wanting)\b",
+        r"\g<p> wants \g<o>",
+    ),
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) (?:that |which )?"
+        r"(?P<p>he|she) (?:wants|needs)\b",
+        r"\g<p> wants \g<o>",
+    ),
+    # "so it's the other one for her", "the bottle's the one for her"
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) for "
+        r"(?P<p>him|her)\b",
+        r"give \g<p> \g<o>",
+    ),
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?P<o>the [\w ]+?)(?:'s| is) the one (?:for|meant for) "
+        r"(?P<p>him|her)\b",
+        r"give \g<p> \g<o>",
+    ),
+)
+
+
+def _not_wanted30s(text: str, lexicon: Lexicon) -> str:
+    if "n't" not in text and " not " not in text.lower():
+        return text
+    m = _NOT_WANTED30S.match(text)
+    if m is None or not _ids(m.group("neg"), lexicon, "object"):
+        return text
+    rest = m.group("rest")
+    for pattern, repl in _CLEFTS30S:
+        c = _rx(pattern).match(rest)
+        if c is None:
+            continue
+        said = c.group("o")
+        if not (_objects_only(said, lexicon) or re.fullmatch(r"the other(?: one)?", said, _F)):
+            return text
+        rest = c.expand(repl) + rest[c.end() :]
+        break
+    out = f"{m.group('neg')}, {rest}"
+    return text if " ".join(out.split()) == " ".join(text.split()) else out
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -12583,6 +12645,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_aside27r,
     # session 30 (12s)
     _sizes30s,
+    _not_wanted30s,
     # session 28 (12r): blind26's kinds
     _cue_reason28r,
     _not_that28r,
