@@ -273,6 +273,7 @@ def test_a_negated_want_then_what_is_wanted_reads(text: str, want: str, scene: S
     [
         ("Don't give Bob the bottle. Give him the bottle.", CELL),  # the same thing
         ("Bob doesn't want the bottle at all.", CELL),  # nothing wanted instead
+        ("Alice doesn't need the chips. Bob does.", CELL),  # an ellipsis alone (session 8)
         ("Bob doesn't want the bottle, it's the spanner he's after.", CELL),  # not in the scene
         ("Mr Lee doesn't want the jug, so it's the magazine for her.", WARD),  # not Mr Lee
         ("It's the bottle he's after. Bob doesn't want the crisps.", CELL),  # not opening

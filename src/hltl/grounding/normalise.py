@@ -12430,13 +12430,15 @@ def _compared30s(
 # doesn't want the grey blanket, so it's the other one for her.": the grammar reads a negated
 # request and, after a comma, what is given instead ("Alice doesn't want the crisps, give her the
 # bottle"); said with a full stop or a semicolon between them, with 'at all', or with what is
-# wanted said as a cleft, each had been refused. Only a text opening with the negated request;
+# wanted said as a cleft, each had been refused. Only a text opening with the negated request,
+# and after a stop or a semicolon only a sentence naming an object ("Alice doesn't need the
+# chips. Bob does." stays refused, session 8);
 # the cleft only with a pronoun and objects of the scene; the grammar then reads (or refuses)
 # the two as it reads them with a comma.
 _NOT_WANTED30S = re.compile(
     r"^(?P<neg>(?:[A-Z][\w ]*? (?:doesn't|does not|won't|will not|didn't|did not) (?:want|need)|"
     r"(?:don't|do not) (?:give|hand|pass|bring|take|send|deliver)) [^.;,!?]+?)(?:\s+at all)?"
-    r"\s*[.;,]\s*(?P<rest>\S.*)$",
+    r"\s*(?P<sep>[.;,])\s*(?P<rest>\S.*)$",
     _F,
 )
 _CLEFTS30S = (
@@ -12472,6 +12474,8 @@ def _not_wanted30s(text: str, lexicon: Lexicon) -> str:
     if m is None or not _ids(m.group("neg"), lexicon, "object"):
         return text
     rest = m.group("rest")
+    if m.group("sep") != "," and not _ids(rest, lexicon, "object") and "other" not in rest.lower():
+        return text  # "Alice doesn't need the chips. Bob does.": said alone, refused (session 8)
     for pattern, repl in _CLEFTS30S:
         c = _rx(pattern).match(rest)
         if c is None:
