@@ -26,7 +26,14 @@ reading, neither loosened nor dropped, and that handover) or that must be refuse
 the <object>.", "… Hmm, or maybe not."). A sixth family (session 29), asides: a remark naming
 nothing of the scene before an entry ("Sorry, typing this from the car park. …", "For tomorrow's
 picnic, …") and after it ("…, while the kettle boils."), and a trade after a person's name
-("Alice the baker", "… to Mr Novak, the plumber."): as the entry, or refused.
+("Alice the baker", "… to Mr Novak, the plumber."): as the entry, or refused. A seventh family
+(session 30), afterthoughts: for an entry of one handover naming its one person, that person
+corrected after it ("…, oh hang on, <person> rather", "… Scratch that, <person>.", with or without
+a reason naming nothing: "…, sorry, I meant <person>, I mixed them up"; that handover to that
+person, or refused) or left undecided ("…, or <person> maybe, I can't remember which"; refused); a
+person's state said before or after a grounded entry with no choice ("<Person> is parched. …"; the
+entry, or refused: a state asks for nothing); and the count of an entry's handovers restated after
+it ("… That's two things in all."; the entry, or refused) or miscounted (refused).
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -174,17 +181,12 @@ SPEAKER_CLOSERS = (
     ", and the {o} for us",
     ", then bring me the {o}",
 )
+# words that stand for a person of a gender
+_HE_SHE = ("he", "she", "him", "her", "his", "hers", "himself", "herself")
 # words that tell a person apart from another of the same title
 _GENDERED = frozenset(
     [
-        "he",
-        "she",
-        "him",
-        "her",
-        "his",
-        "hers",
-        "himself",
-        "herself",
+        *_HE_SHE,
         "mr",
         "mrs",
         "ms",
@@ -284,7 +286,53 @@ ASIDES_AFTER = (  # (the "," forms only after a sentence that is not a question)
 )
 TRADES = ("baker", "crofter", "plumber", "juggler", "night porter", "acrobat", "locksmith")
 ASIDE_FORMS = ("before", "after", "trade")
-Family = Literal["wrappers", "takebacks", "references", "exclusions", "tails", "asides"]
+# afterthoughts (session 30; blind28 had "Give Bob the apple, oh hang on, Alice rather.", "The
+# scanner to Mia. Wait, Tom, not Mia.", "Thermometer to Mr Lee, or rather Ruth, she's checking
+# temps.", "The bottle to Person A, or Person B maybe, I can't remember which." (refused), "The
+# glaciologist, Person A, needs the bottle, she's parched." and "Person A's getting three items:
+# bottle, chips, cup"): {q} the person an entry's one handover goes to instead, {p} the person the
+# entry named; a form for a question entry must open a sentence (". …")
+RECIPIENT_FIXES = (  # the handover to {q}
+    ", oh hang on, {q} rather",
+    ". Scratch that, {q}.",
+    ", no sorry, {q}",
+    ", or rather {q}",
+    ", beg pardon, to {q}",
+    ". Wait, {q}, not {p}.",
+    ", sorry, I meant {q}",
+    ". Sorry, I meant {q}.",
+)
+REASONS = (", I mixed them up", ", my mistake", ", long day", ", I got the names muddled")
+UNDECIDED = (  # refused: which person is left open
+    ", or {q} maybe, I can't remember which",
+    ", or was it {q}? I forget.",
+    ", no, {q}, or was it {p}...",
+    ", unless it was {q}, I'm not sure",
+    ". Or {q}, I can't remember which.",
+)
+# a person's state (before or after a grounded entry with no choice): the entry, or refused
+STATES = (
+    "{P} is parched.",
+    "{P} has had a long day.",
+    "{P} is starving.",
+    "{P} is freezing.",
+    "{P} looks worn out.",
+    "{P} is thirsty.",
+)
+# the count of an entry's handovers restated ({n}, {N} at a sentence's start): right, the entry
+# (or refused); one off, refused
+COUNTS = (
+    ". That's {n} {things} in all.",
+    ", {n} {things} all told.",
+    ". {N} {things}, that's the lot.",
+)
+_NUMBERS = ("one", "two", "three", "four", "five", "six", "seven")
+# words that stand for a person, which a name said beside the entry could change
+_PRONOUNS = frozenset([*_HE_SHE, "they", "them", "their", "theirs", "themselves"])
+AFTERTHOUGHT_FORMS = ("recipient", "reason", "undecided", "state", "count", "miscount")
+Family = Literal[
+    "wrappers", "takebacks", "references", "exclusions", "tails", "asides", "afterthoughts"
+]
 FAMILIES: tuple[Family, ...] = (
     "wrappers",
     "takebacks",
@@ -292,6 +340,7 @@ FAMILIES: tuple[Family, ...] = (
     "exclusions",
     "tails",
     "asides",
+    "afterthoughts",
 )
 
 Must = Literal["same", "refuse"]
@@ -827,6 +876,85 @@ def asides(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         yield aside(text[: m.end()] + put + text[m.end() :], "trade")
 
 
+def _then(text: str, form: str) -> str:
+    """``form`` (opening "," or ". ") said after ``text``: after a question only a sentence."""
+    if text.endswith("?"):
+        return text + form[1:]
+    return text.rstrip(".!") + form
+
+
+def afterthoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The afterthought variants of one entry. For a grounded entry of one handover naming its
+    one person by a name and no other person or object (and no pronoun for a person): that person
+    corrected to another after it (RECIPIENT_FIXES, once with a REASONS remark naming nothing:
+    that object to that person) and left undecided (UNDECIDED: refused). For a grounded entry
+    with no choice and no pronoun for a person: a person's state before or after it (STATES: the
+    entry). For a grounded entry with no choice whose handovers move distinct objects: their
+    count restated after it (COUNTS: the entry) and miscounted by one (refused)."""
+    text = entry.text.strip()
+    want = entry.want
+    if want is None:
+        return
+    plain_end = not text.endswith("?")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    pronoun = bool(_words(text) & _PRONOUNS)
+
+    def variant(said: str, to: Node | None, form: str) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, said, to, must, "afterthoughts", (), form)
+
+    said_at = _people_said(text, scene)
+    if (
+        isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and not takes_back
+        and not pronoun
+        and len(said_at) == 1
+        and _named(text, scene, "human") == {want.target}
+        and _named(said_at[0][0], scene, "human") == {want.target}
+        and _objects_named(text, scene) <= {want.obj}
+    ):
+        others = [h.id for h in scene.humans if h.id != want.target]
+        if others:
+            p = said_at[0][0]
+            q = _name(scene, rng.choice(others))
+            to = Task("deliver", want.obj, _one_id(q, scene))
+            forms = [f for f in RECIPIENT_FIXES if plain_end or f.startswith(". ")]
+            yield variant(_then(text, rng.choice(forms).format(p=p, q=q)), to, "recipient")
+            form, reason = rng.choice(forms).format(p=p, q=q), rng.choice(REASONS)
+            fixed = form[:-1] + reason + "." if form.endswith(".") else form + reason
+            yield variant(_then(text, fixed), to, "reason")
+            forms = [f for f in UNDECIDED if plain_end or f.startswith(". ")]
+            yield variant(_then(text, rng.choice(forms).format(p=p, q=q)), None, "undecided")
+    if _has_choice(want):
+        return
+    if not pronoun:
+        who = _name(scene, rng.choice(scene.humans).id)
+        who = who[:1].upper() + who[1:]
+        states = [f for f in STATES if _names_nothing(f.replace("{P}", ""), scene)]
+        if states:
+            state = rng.choice(states).format(P=who)
+            before = rng.random() < 0.5 and not takes_back
+            said = state + " " + text if before else _then(text, ". " + state)
+            yield variant(said, want, "state")
+    moved = [t.obj for t in tasks(want)]
+    n = len(moved)
+    if len(set(moved)) == n and n < len(_NUMBERS):
+        form = rng.choice([f for f in COUNTS if plain_end or f.startswith(". ")])
+        off = n + 1 if n == 1 or rng.random() < 0.5 else n - 1
+        for count, to, name in ((n, want, "count"), (off, None, "miscount")):
+            word = _NUMBERS[count - 1]
+            things = "thing" if count == 1 else "things"
+            said = form.format(n=word, N=word[:1].upper() + word[1:], things=things)
+            yield variant(_then(text, said), to, name)
+
+
+def _one_id(name: str, scene: Scene) -> str:
+    (hid,) = _named(name, scene, "human")
+    return hid
+
+
 def _dropped(node: Node, task: Task) -> Node | None:
     """``node`` without ``task`` (the order and choices among the rest kept), or None if empty."""
     if isinstance(node, Task):
@@ -892,6 +1020,7 @@ def generated(
     rng_excl = random.Random(f"exclusions:{seed}")
     rng_tail = random.Random(f"tails:{seed}")
     rng_aside = random.Random(f"asides:{seed}")
+    rng_after = random.Random(f"afterthoughts:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -915,6 +1044,9 @@ def generated(
                     yield v, scene
             if "asides" in families:
                 for v in asides(part, entry, scene, rng_aside):
+                    yield v, scene
+            if "afterthoughts" in families:
+                for v in afterthoughts(part, entry, scene, rng_after):
                     yield v, scene
 
 

@@ -8,7 +8,10 @@ the one named, or refused with the readings; an entry narrowing after a comma wr
 entry), the tail family of session 28 (a sentence after an entry adding a handover: the entry's
 reading kept and that handover; or one that must be refused), the aside family of session 29 (a
 remark naming nothing of the scene before or after an entry, a trade after a person's name: the
-entry), and the wrappers and take-backs of a seed unchanged by them."""
+entry), the afterthought family of session 30 (an entry's one person corrected after it, with or
+without a reason: the handover to that person; left undecided: refused; a person's state before or
+after an entry: the entry; its count of handovers restated: the entry; miscounted: refused), and
+the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -175,7 +178,9 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
     assert min(kinds.values()) > 20, kinds
 
 
-@pytest.mark.parametrize("family", ["wrappers", "takebacks", "exclusions", "tails", "asides"])
+@pytest.mark.parametrize(
+    "family", ["wrappers", "takebacks", "exclusions", "tails", "asides", "afterthoughts"]
+)
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
     every = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11)]
@@ -190,7 +195,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides')" in err
+    assert "'asides', 'afterthoughts')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -685,4 +690,163 @@ def test_over_the_corpus_each_aside_variant_names_what_it_says() -> None:
             said = [m[0] for m in fuzz._people_said(v.text, scene)]
             assert said == [m[0] for m in fuzz._people_said(_without_trade(v.text), scene)]
         assert (v.must == "refuse") is (v.want is None)
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- afterthoughts (session 30) -------------------------------------------------------------------
+
+
+def _afterthoughts(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.afterthoughts("t", entry, scene, random.Random(seed)))
+
+
+def _count(v: fuzz.Variant) -> int:
+    """The count an afterthought's count form says."""
+    words = "|".join(fuzz._NUMBERS)
+    forms = [
+        re.escape(f).replace(r"\{n\}", f"({words})").replace(r"\{N\}", f"(?i:({words}))")
+        for f in fuzz.COUNTS
+    ]
+    for form in forms:
+        m = re.search(form.replace(r"\{things\}", "things?") + "$", v.text)
+        if m is None and form.startswith(r"\."):
+            m = re.search(form[2:].replace(r"\{things\}", "things?") + "$", v.text)
+        if m:
+            n = fuzz._NUMBERS.index(m[1].lower()) + 1
+            assert m[0].count("things") == (n > 1), v.text
+            return n
+    raise AssertionError(f"{v.text!r} has no count")
+
+
+def _check_recipient(v: fuzz.Variant, entry: Entry, scene: Scene, forms: tuple[str, ...]) -> str:
+    """``v`` said as the entry then one of ``forms`` (a REASONS remark taken out), the person
+    corrected to named in it and not the entry's; the form returned."""
+    assert isinstance(entry.want, Task)
+    said = entry.text.rstrip(".!") if not entry.text.endswith("?") else entry.text
+    assert v.text.startswith(said), v.text
+    rest = v.text[len(said) :]
+    if v.form == "reason":
+        reasons = [r for r in fuzz.REASONS if r in rest]
+        assert len(reasons) == 1, v.text
+        rest = rest.replace(reasons[0], "", 1)
+    if entry.text.endswith("?"):
+        rest = "." + rest
+    (form,) = (f for f in forms if re.fullmatch(_pattern(f.replace("{q}", "{o}")), rest))
+    q = re.fullmatch(_pattern(form.replace("{q}", "{o}")), rest)
+    assert q is not None
+    whom = _one_person(q["o"], scene)
+    assert whom != entry.want.target
+    if v.want is not None:
+        assert v.want == Task("deliver", entry.want.obj, whom)
+    return form
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_one_handover_gets_every_afterthought(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    made = _afterthoughts(entry, CELL, seed)
+    assert [v.form for v in made] == list(fuzz.AFTERTHOUGHT_FORMS)
+    fix, reason, undecided, state, count, miscount = made
+    for v in made:
+        assert v.family == "afterthoughts" and (v.must == "refuse") is (v.want is None)
+    assert fix.must == reason.must == "same" and undecided.must == "refuse"
+    _check_recipient(fix, entry, CELL, fuzz.RECIPIENT_FIXES)
+    _check_recipient(reason, entry, CELL, fuzz.RECIPIENT_FIXES)
+    _check_recipient(undecided, entry, CELL, fuzz.UNDECIDED)
+    assert state.want == entry.want
+    states = [s.format(P=n) for s in fuzz.STATES for n in ("Alice", "Bob", "Carol")]
+    assert any(state.text in (f"{s} {entry.text}", f"{entry.text[:-1]}. {s}") for s in states)
+    assert count.want == entry.want and _count(count) == 1
+    assert miscount.want is None and _count(miscount) == 2
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_a_miscount_is_one_off_and_a_count_says_every_handover(seed: int) -> None:
+    entry = _entry(
+        "cell",
+        "Give Alice the cup and Bob the apple, then the chips to Carol.",
+        "(cup>A & apple>B) ; chips>C",
+    )
+    made = {v.form: v for v in _afterthoughts(entry, CELL, seed)}
+    assert set(made) == {"state", "count", "miscount"}  # (three people named: no correction)
+    assert _count(made["count"]) == 3 and made["count"].want == entry.want
+    assert _count(made["miscount"]) in (2, 4) and made["miscount"].must == "refuse"
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_after_a_question_an_afterthought_is_a_sentence(seed: int) -> None:
+    entry = _entry("cell", "Could you give Carol the bottle?", "bottle>C")
+    for v in _afterthoughts(entry, CELL, seed):
+        if v.text.startswith(entry.text):
+            assert v.text[len(entry.text)] == " " and v.text[len(entry.text) + 1].isupper()
+        else:
+            assert v.form == "state" and v.text.endswith(" " + entry.text)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # two people named: a correction could be of either (no correction, no undecided)
+        ("Give Bob the apple, not Alice.", "apple>B", {"state", "count", "miscount"}),
+        # a pronoun for a person: a name beside it could change whom it means (nor a state)
+        ("Bob wants the apple, give it to him.", "apple>B", {"count", "miscount"}),
+        # a choice: neither a state nor a count (the choice could seem settled by them)
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", set()),
+        # one object moved twice: no count
+        ("Put the cup on the shelf, then give it to Bob.", "cup@shelf ; cup>B", {"state"}),
+        # a placement: no correction of a person
+        ("Put the cup on the shelf.", "cup@shelf", {"state", "count", "miscount"}),
+        # refused: nothing
+        ("Give her the cup.", None, set()),
+    ],
+)
+def test_an_afterthought_is_only_made_where_it_says_what_it_must(
+    text: str, want: str | None, forms: set[str]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(10):
+        assert {v.form for v in _afterthoughts(entry, CELL, seed)} == forms
+
+
+def test_a_state_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "day", "category": "day", "position": [0.5, 0.5, 0.05]})
+    scene = scene_from_dict(raw)
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    for seed in range(40):
+        for v in fuzz.afterthoughts("t", entry, scene, random.Random(seed)):
+            assert "long day" not in v.text or v.form == "reason"
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("Give Alice the cup.", "cup>A", "exact"),
+        ("Give Alice the cup.", "cup>B", "wrong"),
+        ("Give Alice the cup.", None, "wrong"),
+        ("Give Alice the cup, or was it Bob? I forget.", None, "refused"),
+    ],
+)
+def test_an_afterthought_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    to = parse_expectation(want) if want is not None else None
+    must: fuzz.Must = "same" if to is not None else "refuse"
+    v = fuzz.Variant("t", "cell", text, to, must, "afterthoughts", (), "recipient")
+    assert fuzz.verdict(v, CELL) == verdict
+
+
+def test_over_the_corpus_each_afterthought_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.AFTERTHOUGHT_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=30, every=2, families=("afterthoughts",)):
+        assert v.family == "afterthoughts" and (v.must == "refuse") is (v.want is None)
+        kinds[v.form] += 1
+        if v.form in ("count", "miscount"):
+            assert v.form == "miscount" or v.want is not None
+        elif v.form == "state":
+            states = [re.escape(s).replace(r"\{P\}", ".+?") for s in fuzz.STATES]
+            assert re.search(rf"(?:^(?:{'|'.join(states)}) |[.!?] (?:{'|'.join(states)})$)", v.text)
+        else:
+            said = fuzz._people_said(v.text, scene)
+            assert len(said) >= 2 and len({_one_person(m[0], scene) for m in said}) == 2, v.text
     assert min(kinds.values()) >= 10, kinds

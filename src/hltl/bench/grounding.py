@@ -105,7 +105,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # alone, reviewed by a second engineer, never opened by the engineers who changed the grounder
 # before its one measurement at the end of session 28; tuned on in session 29), blind28 (written
 # in session 29 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 29; tests do not assert it).
+# the grounder before its one measurement at the end of session 29; tests do not assert it),
+# blind29 (written in session 30 by another engineer and committed alone, never opened by the
+# engineers who change the grounder before its one measurement at the end of session 30; tests do
+# not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -151,6 +154,7 @@ PARTS = (
     "blind26",
     "blind27",
     "blind28",
+    "blind29",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
