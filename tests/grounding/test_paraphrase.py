@@ -362,7 +362,6 @@ KNOWN_MISSES = frozenset(
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
         "Would Person B like the apple? Give it to her, yes?",
-        "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
@@ -424,7 +423,6 @@ KNOWN_MISSES = frozenset(
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
-        "How about letting Person A have the bottle, seeing as she's the thirsty one?",
         "Any way the apple could find its way to Person A?",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")

@@ -32,10 +32,13 @@ from tests.grounding.helpers import (
         "Give Bob the cup. A cloth, please.",
         "Give Bob the cup. Dave needs a towel.",
         "Give Bob the cup. The porter would like a biscuit.",
+        "Give Bob the cup. For the chef, the jug.",
+        "Give Bob the cup. The jug to the chef.",
+        "Give Bob the cup. A towel for the guest.",
     ],
 )
 def test_a_request_for_what_the_scene_lacks_is_refused(text: str) -> None:
-    assert_refused(text, CELL, match="no (?:object or )?(?:person|object) called")
+    assert_refused(text, CELL)
 
 
 @pytest.mark.parametrize(
@@ -45,6 +48,8 @@ def test_a_request_for_what_the_scene_lacks_is_refused(text: str) -> None:
         "Give Bob the cup. Thanks a lot.",
         "Morning! Give Bob the cup.",
         "Give Bob the cup. Spores everywhere.",
+        "Give Bob the cup. The auditors are in.",
+        "Give Bob the cup. Back to you in the studio.",
     ],
 )
 def test_remarks_beside_a_request_are_still_taken_off(text: str) -> None:
@@ -181,6 +186,32 @@ def test_first_after_a_list_with_a_comma_orders(text: str, want: str) -> None:
 
 
 @pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # each read in any order before: the 'first' ending the first clause was dropped
+        ("Give Lena the salt first, and the knife and the lemon.", "salt>B ; (knife>B & lemon>B)"),
+        ("Give Lena the salt first, and Marco the knife.", "salt>B ; knife>A"),
+        ("Give Lena the salt first and Marco the knife.", "salt>B ; knife>A"),
+        ("Give Lena the salt first, and give Marco the knife.", "salt>B ; knife>A"),
+        ("The salt to Lena first, and the knife to Marco.", "salt>B ; knife>A"),
+        (
+            "Put the salt on the counter first, and the knife on the rack.",
+            "salt@counter ; knife@rack",
+        ),
+        (
+            "Give Lena the knife and the lemon first, and Marco the salt.",
+            "(knife>B & lemon>B) ; salt>A",
+        ),
+        # near forms, read as before
+        ("Give Lena the salt first, then the knife and the lemon.", "salt>B ; (knife>B & lemon>B)"),
+        ("Give Lena the salt first, please.", "salt>B"),
+    ],
+)
+def test_first_ending_the_first_clause_puts_it_first(text: str, want: str) -> None:
+    assert_reads(text, want, KITCHEN)
+
+
+@pytest.mark.parametrize(
     "text",
     [
         # the whole list, or its last? ; and whose is the salt after two clauses?
@@ -281,6 +312,51 @@ def test_a_negated_want_then_what_is_wanted_reads(text: str, want: str, scene: S
 )
 def test_a_negated_want_near_forms_stay_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- a suggestion, a remark that picks an object, 'how about' after a request (normalise.py
+#    _what_about30s, _person_one30s, _remarks; offline.py _HOW_ABOUT30S) -----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # refused before: 'what about' asked a question, 'letting' was read as a name, 'the
+        # thirsty one' as an object
+        ("What about taking the bottle across to Alice, eh?", "bottle>A"),
+        ("How about letting Alice have the bottle?", "bottle>A"),
+        ("What about letting Alice have the bottle?", "bottle>A"),
+        ("Give Alice the bottle, she's the thirsty one.", "bottle>A"),
+        ("How about letting Alice have the bottle, seeing as she's the thirsty one?", "bottle>A"),
+        # 'how about' opening the text, or with 'too' / 'or', read as before
+        ("How about giving Alice the cup?", "cup>A"),
+        ("Hi, how about giving Alice the cup?", "cup>A"),
+        ("Give Alice the cup, how about the bottle too?", "cup>A & bottle>A"),
+        ("Give Alice the cup, or how about the bottle?", "cup>A | bottle>A"),
+    ],
+)
+def test_suggestions_and_a_person_said_to_be_the_one_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "match"),
+    [
+        ("What about Bob?", None),
+        ("What about doing the bottle?", None),
+        ("How about letting Alice and Bob have the bottle?", None),
+        ("Give Alice the bottle, she's the thirsty one, and Bob the apple.", None),
+        # was mug_red>A | mug_blue>A: the remark naming which mug was taken off
+        ("Give Alice a mug, it's the red one.", None),
+        ("Give Alice a mug, she's the red one.", None),
+        # was cup>A & bottle>A: one more thing, or the bottle instead?
+        ("Give Alice the cup, how about the bottle?", "say 'too' or 'instead'"),
+        ("Give Alice the cup. How about the bottle?", "say 'too' or 'instead'"),
+        ("Give Alice the cup. What about Bob?", "say 'too' or 'instead'"),
+    ],
+)
+def test_suggestions_and_remarks_near_forms_stay_refused(text: str, match: str | None) -> None:
+    assert_refused(text, CELL, match=match)
 
 
 # -- checked, left as it was -----------------------------------------------------------------

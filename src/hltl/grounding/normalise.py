@@ -756,6 +756,10 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         return text  # a question ("u there? give …") is not a remark
     if any(not _plain_words(c, lexicon) for c in said):
         return text  # a word neither common nor the scene's may be a name it does not know
+    if any(_picks_object(c, lexicon) for c in said):
+        # session 30 (12s): "Give Alice a mug, it's the red one" names which mug: taken off, it
+        # had been read as either mug
+        return text
     if any(re.search(_TASK_WORDS, c, _F) and not _ids(c, lexicon, "object") for c in said):
         return text  # "Bob gets what's left" asks without naming: not a remark
     people = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "human"]
@@ -4516,15 +4520,21 @@ def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
 
 
 # Session 30 (12s): a sentence shaped as a request is no remark, whatever it names: a thing said
-# alone ('The spanner.', 'A cloth, please.') or someone wanting or getting a thing ('The chef
-# wants the jug.'). Naming nothing of the scene, it had been taken off as inert, and the request
+# alone ('The spanner.', 'A cloth, please.'), someone wanting or getting a thing ('The chef
+# wants the jug.'), a thing with its recipient or place ('The jug to the chef.', 'For the chef,
+# the jug.'). Naming nothing of the scene, it had been taken off as inert, and the request
 # beside it read as if it were all that was asked; kept, it is refused for the unknown name.
 _ASKS30S = re.compile(
     r"^\s*(?:the|a|an|some|that|this|these|those)\s+[a-z][a-z'-]*(?:\s+[a-z][a-z'-]*){0,2}"
     r"\s*(?:,?\s*please)?\s*[.!]*\s*$|"
     r"\b(?:wants|needs|would like|'d like|is after|asked for|asks for|is asking for|gets|is "
     r"getting|is to get|should get|should have|can have|could have|will have|is due)\s+(?:the|a|"
-    r"an|some|his|her|their|my|your|our|this|that|these|those)\b",
+    r"an|some|his|her|their|my|your|our|this|that|these|those)\b|"
+    # "The jug to the chef.", "A towel for the guest.", "For the chef, the jug."
+    r"^\s*(?:the|a|an|some|that|this|these|those)\s+[a-z][a-z'-]*(?:\s+[a-z][a-z'-]*)?\s+(?:to|"
+    r"for|on|onto|into|over to|across to)\s+(?:the|a|an|my|our|your|his|her)\s+[a-z]|"
+    r"^\s*for\s+(?:the|a|an|my|our|your|his|her)\s+[a-z]+(?:\s+[a-z]+)?\s*[,:]\s*(?:the|a|an|"
+    r"some)\s+[a-z]",
     _F,
 )
 
@@ -12489,6 +12499,54 @@ def _not_wanted30s(text: str, lexicon: Lexicon) -> str:
     return text if " ".join(out.split()) == " ".join(text.split()) else out
 
 
+# -- session 30 (12s): a suggestion said with 'what about' -----------------------------------
+#
+# "What about taking the bottle across to Person A, eh?" asks as "How about taking …?" does (the
+# grammar's filler 'how about' before a verb): 'what about' before the -ing form of a verb of the
+# grammar is said so; "How / what about letting Person A have the bottle" is 'how about giving
+# Person A the bottle' (one person named between). 'What about Bob?' or 'what about the
+# bottle?' (no verb) are left, and refused.
+_WHAT_ABOUT30S = re.compile(
+    r"\b(?:what|how) about (?:letting (?P<who>[\w ]+?) have|(?P<verb>[a-z]+ing))\b", _F
+)
+
+
+def _what_about30s(text: str, lexicon: Lexicon) -> str:
+    if "about" not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if m.group("who") is not None:
+            who = m.group("who")
+            return f"how about giving {who}" if _only(who, lexicon, "human") else m.group(0)
+        verb = m.group("verb")
+        return f"how about {verb}" if verb.lower() in VERBS else m.group(0)
+
+    return _WHAT_ABOUT30S.sub(said, text)
+
+
+# -- session 30 (12s): a person said to be 'the <word> one' ----------------------------------
+#
+# "…, seeing as she's the thirsty one": 'the thirsty one' is the person the pronoun says, not
+# an object ('one' read as an object had refused it: "no object called 'thirsty one'"). Closing
+# the text after a comma, with 'he' / 'she' / 'they' and 'is', a word that tells no objects of
+# the scene apart ('the red one' is left), and nothing after it, it is a reason, taken off.
+_PERSON_ONE30S = re.compile(
+    r",\s*(?:(?:seeing as|since|as|because|cos|'cause)\s+)?(?:he|she|they)(?:'s| is|'re| are) "
+    r"the (?P<adj>[a-z]+) ones?\s*(?=[.!?]*\s*$)",
+    _F,
+)
+
+
+def _person_one30s(text: str, lexicon: Lexicon) -> str:
+    if " one" not in text.lower():
+        return text
+    m = _PERSON_ONE30S.search(text)
+    if m is None or m.group("adj").lower() in _adjectives(lexicon) or _names(m.group(0), lexicon):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -12650,6 +12708,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 30 (12s)
     _sizes30s,
     _not_wanted30s,
+    _what_about30s,
+    _person_one30s,
     # session 28 (12r): blind26's kinds
     _cue_reason28r,
     _not_that28r,

@@ -315,6 +315,12 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        more = _HOW_ABOUT30S.search(text)
+        if more is not None and _names_any30s(text[: more.start()], lexicon):
+            raise GroundingError(
+                f"{more.group('said')!r} after a request could add to it or replace what it "
+                "names: say 'too' or 'instead'"
+            )
         off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
         if off is not None:
             raise GroundingError(
@@ -404,6 +410,25 @@ _PUT_OFF30S = re.compile(
     r"ta|cheers)\s*)?[.!]*\s*$)",
     re.I,
 )
+
+# Session 30 (12s): 'how about …' after a request ("Give Alice the cup, how about the
+# bottle?"): one more thing, or the thing instead? ('how about' was a filler, and the bottle read
+# as one more). Read where 'too' / 'as well' / 'also' / 'instead' says which, or 'or' makes it a
+# choice; opening the text it asks as 'please' does.
+_HOW_ABOUT30S = re.compile(
+    r"(?<!\bor)(?:[,.;!?]\s*|\s+and\s+)(?P<said>(?:what|how) about\b[^.;!?]*)"
+    r"(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+def _names_any30s(text: str, lexicon: Lexicon) -> bool:
+    """Whether ``text`` names anything of the scene (a request before 'how about')."""
+    try:
+        return any(it.kind == "ent" for it in lex(text, lexicon))
+    except GroundingError:
+        return True
+
 
 # 'Later' opening a sentence ("Later, give Bob the cup.", "Later: Alice, cup."): the time of
 # what follows, not 'then' (read as an order word with nothing before it, it had been dropped)
@@ -911,6 +936,7 @@ class _Parser:
         sentences = _order_carried(sentences)
         sentences = [s for s in sentences if not _only_fillers(s)]
         sentences = [part for s in sentences for part in _split_after_first29(s)]
+        sentences = [_first_clause30s(s) for s in sentences]
         if not sentences:
             raise GroundingError(
                 f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
@@ -2142,6 +2168,53 @@ def _split_after_first29(sent: list[Item]) -> list[list[Item]]:
         if first_refs(sent[: j + 1])[1]:
             return [sent[: j + 1], rest]
     return [sent]
+
+
+def _first_clause30s(sent: list[Item]) -> list[Item]:
+    """Session 30 (12s): "Give Lena the salt first, and the knife and the lemon", "The salt to
+    Lena first, and the knife to Marco": 'first' ending the sentence's first clause, then ',' /
+    'and' and more, puts that clause first, as '…, then …' does (the 'first' had been dropped,
+    and the two read in any order). The first clause holds no comma and no order word, and an
+    'and' in it only between objects; what follows holds no order word of its own (with one, or
+    'then' right after 'first', it is left as it was)."""
+    for j in range(1, len(sent) - 2):
+        if not (
+            _is(sent[j], "first") and sent[j - 1].kind == "ent" and _is(sent[j + 1], ",", "and")
+        ):
+            continue
+        before, after = sent[:j], sent[j + 1 :]
+        k = 0
+        while k < len(after) and _is(after[k], ",", "and", "filler"):
+            k += 1
+        after = after[k:]
+        order = ("then", "prior", "first", "after", "before", "once", "meanwhile")
+        if (
+            not after
+            or _only_fillers(after)
+            or any(_is(x, ",", *order) or x.kind == "punct" for x in before)
+            or any(_is(x, *order) for x in after)
+            or not all(
+                _between_objects30s(before, n) for n, x in enumerate(before) if _is(x, "and")
+            )
+        ):
+            return sent
+        return [*before, Item("punct", ",", ","), Item("word", "then", "then"), *after]
+    return sent
+
+
+def _between_objects30s(items: list[Item], n: int) -> bool:
+    """Whether the 'and' at ``n`` joins two objects ('the knife and the lemon')."""
+    left = n - 1
+    right = n + 1
+    while right < len(items) and _is(items[right], "det"):
+        right += 1
+    return (
+        left >= 0
+        and right < len(items)
+        and all(r.kind == "object" for x in (items[left], items[right]) for r in x.refs)
+        and items[left].kind == "ent"
+        and items[right].kind == "ent"
+    )
 
 
 def _after_that29(body: list[Item]) -> list[Item] | None:
