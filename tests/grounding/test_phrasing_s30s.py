@@ -224,6 +224,15 @@ def test_first_after_an_unclear_list_is_refused(text: str) -> None:
     assert_refused(text, KITCHEN, match="cannot tell what 'first' puts first")
 
 
+def test_first_said_twice_over_two_clauses_is_refused() -> None:
+    # was apple>A ; cup>B: the opening 'First' unheard
+    assert_refused(
+        "First give Bob the cup, and Alice the apple first.", CELL, match="say the order once"
+    )
+    assert_reads("First, give Bob the cup first.", "cup>B", CELL)  # one clause: said twice
+    assert_reads("First give Bob the cup, then Alice the apple.", "cup>B ; apple>A", CELL)
+
+
 # -- sizes compared (normalise.py _sizes30s) --------------------------------------------------
 
 

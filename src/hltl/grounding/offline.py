@@ -991,7 +991,13 @@ class _Parser:
                     )
                 else:
                     lead = True
-            if conn == "?":
+            if conn == "?" or (
+                any(_is(x, "first") for x in sent[: len(sent) - len(body)])
+                and any(_is(x, "first") for x in body)
+                and any(_is(x, ",", "and", "then") for x in body)
+            ):
+                # (session 30, 12s: "First give Bob the cup, and Alice the apple first" had put
+                # the apple first, the opening 'First' unheard)
                 raise GroundingError(
                     f"{_text(sent)!r} says 'first' and another order word: say the order once"
                 )
