@@ -7423,6 +7423,14 @@ def _asks_nothing29(words: str, lexicon: Lexicon) -> bool:
     )
 
 
+def _first_name30s(words: str) -> bool:
+    """Session 30 (12s): whether ``words`` is a first name said alone ('Dave'): before a colon it
+    says who gets what follows ("Give Bob the cup. Dave: apple." had read the apple as Bob's), no
+    heading to take off."""
+    said = words.strip().split()
+    return len(said) == 1 and said[0][:1].isupper() and said[0].lower() in first_names()
+
+
 def _remarks29(text: str, lexicon: Lexicon) -> str:
     """Session 29: remarks that ask nothing (above) taken off: whole sentences and parts before a
     colon, and comma parts opening or closing a sentence."""
@@ -7435,7 +7443,11 @@ def _remarks29(text: str, lexicon: Lexicon) -> str:
             continue
         if _remark29(sent, lexicon, "") or _typing_from29(sent, lexicon):
             continue
-        if sep.strip().startswith(":") and _asks_nothing29(sent, lexicon):
+        if (
+            sep.strip().startswith(":")
+            and _asks_nothing29(sent, lexicon)
+            and not _first_name30s(sent)
+        ):
             continue  # "Quick list from the botanist: …": a heading
         pieces = re.split(r"\s*,\s*", sent)
         while len(pieces) > 1 and _remark29(pieces[-1], lexicon, "back to "):
