@@ -19,7 +19,6 @@ from hltl.grounding.lexicon import (
     foreign_words,
     lex,
     person_name,
-    title_sex,
 )
 from hltl.grounding.normalise import (
     apostrophes,
@@ -342,7 +341,6 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         if normalise:
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
-            _no_one_fits30s(text, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -380,7 +378,6 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 node = _read(plain, scene, lexicon)
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
-                _no_one_fits30s(text, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -618,30 +615,6 @@ def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
             f"{words[-1]!r} is not resolved: 'he' and 'she' are two people, and fewer are named; "
             "name the person"
         )
-
-
-def _no_one_fits30s(text: str, lexicon: Lexicon) -> None:
-    """Session 30 (12s): 'Give Mr Lee the jug, she's thirsty': a he / she that no one the text
-    names may be, by title, is someone it does not name (a reason or remark taken off had hidden
-    it, and the jug went to Mr Lee): refused with its readings."""
-    named = people_named(text, lexicon)
-    if not named:
-        return
-    for word in _SEXED.findall(text):
-        sex = PRONOUN_SEX[word.lower()]
-        if all(title_sex(p, lexicon) not in (None, sex) for p in named):
-            others = [
-                h.id
-                for h in lexicon.scene.humans
-                if h.id not in named and title_sex(h.id, lexicon) in (None, sex)
-            ]
-            could = " or ".join(person_name(p, lexicon) for p in others)
-            raise GroundingError(
-                f"{word!r} is not resolved: it cannot mean "
-                f"{' or '.join(person_name(p, lexicon) for p in sorted(named))} (by title)"
-                + (f"; it could mean {could}" if could else "")
-                + "; name the person"
-            )
 
 
 _BEFORE = re.compile(r"^(.+?)\s+before\s+(?!that\b|this\b|then\b|now\b|[,.;!?])(.+)$", re.I)
