@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import partial
@@ -11,6 +12,7 @@ import pytest
 
 from hltl.bus.driver import BusCell, BusTiming, bus_cell
 from hltl.bus.faults import FaultModel
+from hltl.bus.keys import robot_of
 from hltl.bus.node import CellNode
 from hltl.bus.realtime import realtime_bus_cell
 from hltl.bus.session import BusConfig, open_session
@@ -45,6 +47,8 @@ class BusRun:
 END_WAIT = 10.0
 # the executor's query timeout in the runs of a test that counts (see patient_foresight)
 PATIENT_TIMEOUT = 30.0
+# how long a test waits for the executor's session to know a new node (at once, unless loaded)
+ROUTE_WAIT = 30.0
 
 
 class Loopback:
@@ -123,8 +127,47 @@ class Loopback:
         return BusRun(ep, node, bc)
 
     def node(self, scene: Scene, **kw: Any) -> CellNode:
-        """A cell node on the node's session (close it when done)."""
-        return CellNode(self._node_session, scene, **kw)
+        """A cell node on the node's session (close it when done), once the executor's session
+        knows it (:meth:`reach`)."""
+        node = CellNode(self._node_session, scene, **kw)
+        try:
+            self.reach(node)
+        except BaseException:
+            node.close()
+            raise
+        return node
+
+    def reach(self, node: CellNode) -> None:
+        """Wait (up to ``ROUTE_WAIT``) until the executor's session knows what ``node``
+        declared: its queryables (a query goes to it), its command subscribers (a command
+        reaches it) and its robots' liveliness tokens. The declarations cross the loopback link
+        on Zenoh's threads; on a loaded machine the executor's reset, sent as its cell is
+        built, went before them and matched nothing: lost at once, it was sent again, and the
+        briefing or first basis sent right after it reached the node first, which held it
+        ``RESET_WAIT`` for a reset queued behind it and then refused it (no episode): the
+        first step was asked about, not foreseen, and every test that counts foresight failed
+        (the red trains of session 29). A node is up before its executor starts (``hltl node
+        sim`` is started first; the executor retries a reset nobody answers), so the tests
+        wait for that here rather than count what a node starting mid-reset does."""
+        k, session = node.keys, self._exec_session
+        entities = [session.declare_querier(key) for key in (k.sim_step, k.sim_reset)]
+        entities += [session.declare_publisher(k.action(r)) for r in node.scene.robot_ids]
+        robots = set(node.scene.robot_ids)
+        deadline = time.monotonic() + ROUTE_WAIT
+        try:
+            while True:
+                matched = all(e.matching_status.matching for e in entities)
+                if matched and robots <= _tokens(session, k.all_alive):
+                    return
+                if time.monotonic() > deadline:
+                    raise AssertionError(
+                        f"the executor's session did not know the node of cell {k.cell!r} "
+                        f"within {ROUTE_WAIT:g} s"
+                    )
+                time.sleep(0.001)
+        finally:
+            for e in entities:
+                e.undeclare()
 
     def kill_node_session(self) -> None:
         """The node's process dies: its session goes away without a word."""
@@ -134,6 +177,12 @@ class Loopback:
         for s in (self._exec_session, self._node_session):
             if not s.is_closed():
                 s.close()
+
+
+def _tokens(session: Any, key: str) -> set[str]:
+    """The robots whose liveliness token under ``key`` the session sees held."""
+    replies = session.liveliness().get(key, timeout=1.0)
+    return {robot_of(str(r.ok.key_expr)) for r in replies if r.ok is not None}
 
 
 _expect = BusCell.expect

@@ -12,7 +12,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hltl.bus.node import CellNode
 from hltl.bus.realtime import RealtimeBusCell
 from hltl.execution.drivers import ActionState, ActionStatus, Handle, OwnClock
 from hltl.execution.executor import ExecStatus, Executor, ExecutorConfig
@@ -142,7 +141,7 @@ def test_a_real_time_cell_says_its_halt_came_too_late(loopback: Loopback) -> Non
     the report of its end, and the executor's cell says so (``ended_first``); a halt that
     halts says nothing."""
     scene = load_scene(ROOT / "examples" / "scenes" / "two_arms.yaml")
-    with CellNode(loopback._node_session, scene, factory=_RaceCell):
+    with loopback.node(scene, factory=_RaceCell):
         cell = RealtimeBusCell(
             loopback._exec_session, scene, EventSchedule(), 0, PerceptionModel(), EventLog(),
             factor=10.0,

@@ -91,7 +91,6 @@ def test_a_bus_cell_fuses_the_perception_node_into_its_observations(
     loopback: Loopback, tmp_path: Path
 ) -> None:
     from hltl.bus.driver import BusCell
-    from hltl.bus.node import CellNode
     from hltl.execution.log import EventLog
     from hltl.sim.events import EventSchedule
     from hltl.sim.simulator import PerceptionModel
@@ -102,7 +101,7 @@ def test_a_bus_cell_fuses_the_perception_node_into_its_observations(
     th = _serve_in_thread(loopback, folder)
     assert client.wait_for(len(local), timeout=30.0)
     th.join(timeout=30.0)
-    with CellNode(loopback._node_session, SCENE):
+    with loopback.node(SCENE):
         cell = BusCell(
             loopback._exec_session,
             SCENE,

@@ -229,7 +229,7 @@ def test_a_silent_or_broken_cell_is_down_not_a_hang(
             for bc in opened:
                 bc.close()
 
-    with CellNode(loopback._node_session, scene, factory=_faulty(fault, release)) as node:
+    with loopback.node(scene, factory=_faulty(fault, release)) as node:
         thread = threading.Thread(target=executor, name="executor", daemon=True)
         thread.start()
         thread.join(HANG)
@@ -250,7 +250,7 @@ def test_a_silent_or_broken_cell_is_down_not_a_hang(
 
 def test_node_refuses_a_bad_clock_and_steps_in_real_time(loopback: Loopback) -> None:
     scene, _ = _case("fig1")
-    with CellNode(loopback._node_session, scene):
+    with loopback.node(scene):
 
         def cell(factor: float) -> RealtimeBusCell:
             return RealtimeBusCell(
@@ -283,7 +283,7 @@ def test_run_realtime_on_the_command_line(
     scene = load_scene(TWO_ARMS)
     argv = ["run", "--scene", str(TWO_ARMS), "--instruction", "Give Person A the bottle"]
     argv += ["--events", str(EVENTS / "goal.yaml"), "--json"]
-    with CellNode(loopback._node_session, scene) as node:
+    with loopback.node(scene) as node:
         code = main([*argv, "--bus", f"zenoh:{loopback.endpoint}", "--realtime", "10"])
     out = capsys.readouterr().out
     assert code == 0 and '"success": true' in out

@@ -163,10 +163,9 @@ def test_node_refuses_another_scene(loopback: Loopback) -> None:
     node_scene = scenarios.get("fig1").scene
     other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
     from hltl.bus.driver import bus_cell
-    from hltl.bus.node import CellNode
 
     with (
-        CellNode(loopback._node_session, node_scene),
+        loopback.node(node_scene),
         pytest.raises(BusError, match="serves the scene"),
     ):
         run_episode(
@@ -181,7 +180,6 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
     cell from the same process (``executor_here``): a cell counts from when it is built until
     it is closed, also when its node refuses it."""
     from hltl.bus.driver import BusCell
-    from hltl.bus.node import CellNode
     from hltl.bus.session import open_executors
     from hltl.errors import BusError
     from hltl.execution.log import EventLog
@@ -201,7 +199,7 @@ def test_a_node_yields_to_an_executor_only_in_its_process(loopback: Loopback) ->
     assert run.episode.success and seen and set(seen) == {before + 1}
     assert open_executors() == before  # closed
     other = load_scene(ROOT / "examples" / "scenes" / "2-4-line.yaml")
-    with CellNode(loopback._node_session, sc.scene):
+    with loopback.node(sc.scene):
         cell = BusCell(
             loopback._exec_session,
             other,

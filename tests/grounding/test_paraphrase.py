@@ -627,6 +627,80 @@ KNOWN_MISSES = frozenset(
         'Can you carry the bottle down the line to Person A?',
         "Could the bowl go in the sink? The botanist's soil is caked on it.",
         "Mind popping the packing tape on the pallet? The milkman's crates need sealing.",
+        # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
+        "Hi there, it's the distiller from next door, er, the apple for Person B please.",
+        "Sorry, the microbiologist again, could Omar have the white cup, if it's not too much "
+        "trouble?",
+        "Hvala, the flashlight to Jess next, if you'd be so kind.",
+        "It's the chips that Person B wants, not the bottle.",
+        'The two stagehands need feeding: bottle for Person A, chips for Person B.',
+        'Person A could murder a drink, so the bottle, please.',
+        "Person A's thirsty and wants the bottle.",
+        "Person B needs something to eat, the chips'll do.",
+        'Priya wants her notepad left out on the desk for the meeting.',
+        'For the geography lesson Mrs Ortiz would like the globe set out on the desk.',
+        "Lily's grizzling for her teddy bear; she won't nap till she's got it.",
+        "The clown's Person B and he's getting the bottle, while the chips go across to Person A.",
+        "Chips to Person B, and while you're over there the apple for him as well.",
+        'Person A has had her eye on that bottle ever since the bell-ringing practice finished.',
+        'The chips go to Person B, and the bottle, well, him again, Person B.',
+        'Sam left the stapler behind, so run it over to him.',
+        'Person B gets the cup first then Person A gets the apple after that is done',
+        'Bottle: Person A. Cup: Person B. And the chips, also Person A. Done.',
+        "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
+        "Person A.",
+        "The bottle. Over to Person A. Nothing else for now, the skier's happy.",
+        "grab the bottle take it to Person A thanks that's the lot",
+        'The bottle and the crisps, the two of them, are going over to Person A.',
+        'Person A, a dyer, wants a drink and will take the cup or the bottle, either way.',
+        "Person B's a mountaineer, so pack her off with the chips as well as the apple.",
+        'Person B will have the bottle, or else the chips, makes no odds to him.',
+        'The kayakers get one apiece, Person A taking the bottle and Person B the chips.',
+        "Whatever's there goes to Person A, it's only the bottle anyway.",
+        'The chips can go to whichever of the two of them, Person A or Person B.',
+        "Mia says put a box on the conveyor, doesn't matter which one, but only one.",
+        "Lena's carrying both plates out, so hand her the pair.",
+        'One of the books to each student, whichever way round.',
+        'Give Person B the whole lot, which is just the bottle and the crisps.',
+        'Person A is having every last one of the four items.',
+        "Person A's getting three items: bottle, chips, cup; the apple stays put.",
+        'The pair of things here both want going to Person A.',
+        "We've only got a single bottle going, and Person B is having it.",
+        'Only one bottle and only one person here, so she gets it.',
+        "Mrs Khan's cold, so she's to have the two blankets.",
+        "Load all three boxes onto the belt for Tom's run.",
+        'Lay out the two books side by side on the desk ready for the reading group.',
+        "The crisps are Person A's; the bottle isn't.",
+        "It's not the apple Person B is after, it's the cup.",
+        "Person A's to have all of it, only not the bottle.",
+        "Person A's cutting back on salt, so she gets the bottle but no chips.",
+        'Only Person A is to get the bottle, nobody else.',
+        'Mia wants the boxes on the belt, leaving out the big one.',
+        'The scissors to Zoe rather than Noah.',
+        'Give Bob the apple, oh hang on, Alice rather.',
+        'Crisps on the shelf, sorry, I meant to Person A.',
+        'Chips for Person B, sorry, cup for Person B I mean.',
+        'Person B needs the bottle, er, I mean, the chips, sorry, long day at the dye works.',
+        'The animator wants the chips sent to Person A, no sorry, Person B.',
+        "Bottle on the shelf, no, there isn't one, just give it to Person A.",
+        'Person A wants the bottle; sorry, did I say wants? Needs.',
+        'The chips to Person A, and the bottle, no, leave the bottle.',
+        'Stapler into the box, oh no, leave it out on the desk instead.',
+        'The scanner to Mia. Wait, Tom, not Mia.',
+        'Tin of screws to Kofi; beg pardon, to Jess.',
+        "all of it's for person a, that's the bottle and the chips",
+        'mr novak at table four wants the salt',
+        'Person B needs a drink, so the bogtle to him',
+        "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
+        'Hand the bottle to Percon A, the shearer',
+        'Person A has waited long enough for the nottle now',
+        'Could you stow the crisps up on the shelf, by any chance?',
+        'Would it be all right if Person B took the bottle off you?',
+        'Any chance of running the chips across to Person B before the cyclists set off?',
+        'How about the chips going over to Person B, the sexton?',
+        "D'you mind getting that bottle to Person A, she's the restorer?",
+        'Is it OK for Person B to have the bottle first, then after it the chips?',
+        'Can the medium box go onto the belt next?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -692,8 +766,10 @@ KNOWN_UNCLEAR = frozenset(
 # session 27, tuned on in session 28: asserted now, the rest in KNOWN_MISSES; "blind27" written
 # in session 28 by another engineer and committed alone, reviewed by a second one, measured once
 # at the end of session 28, its one wrong reading fixed and tuned on in session 29: asserted now,
-# the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind28", "blind29"})
+# the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind28" written in session 29 by another engineer
+# and committed alone, reviewed by a second one, measured once at the end of session 29, tuned on
+# in session 30: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind29"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

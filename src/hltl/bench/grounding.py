@@ -104,8 +104,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # tuned on in session 28), blind27 (written in session 28 by another engineer and committed
 # alone, reviewed by a second engineer, never opened by the engineers who changed the grounder
 # before its one measurement at the end of session 28; tuned on in session 29), blind28 (written
-# in session 29 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 29; tests do not assert it),
+# in session 29 by another engineer and committed alone, reviewed by a second engineer, never
+# opened by the engineers who changed the grounder before its one measurement at the end of
+# session 29; tuned on in session 30),
 # blind29 (written in session 30 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 30; tests do
 # not assert it).
