@@ -10,7 +10,7 @@ from typing import Any
 
 import pytest
 
-from hltl.bus.driver import BusCell, BusTiming, bus_cell
+from hltl.bus.driver import BusCell, BusTiming, _listeners_of, bus_cell
 from hltl.bus.faults import FaultModel
 from hltl.bus.keys import robot_of
 from hltl.bus.node import CellNode
@@ -61,6 +61,9 @@ class Loopback:
         self.endpoint = endpoint
         self._node_session = open_session(BusConfig(listen=(endpoint,)))
         self._exec_session = open_session(BusConfig(connect=(endpoint,)))
+        # the executor's report and liveliness subscriptions (declared once per session, with
+        # its first cell otherwise): declared now, so that reach() waits for the node to know them
+        _listeners_of(self._exec_session)
 
     def run(
         self,
@@ -139,12 +142,13 @@ class Loopback:
 
     def reach(self, node: CellNode) -> None:
         """Wait (up to ``ROUTE_WAIT``) until the executor's session knows what ``node``
-        declared: its queryables (a query goes to it), its command subscribers (a command
-        reaches it) and its robots' liveliness tokens. The declarations cross the loopback link
-        on Zenoh's threads; on a loaded machine the executor's reset, sent as its cell is
-        built, went before them and matched nothing: lost at once, it was sent again, and the
-        briefing or first basis sent right after it reached the node first, which held it
-        ``RESET_WAIT`` for a reset queued behind it and then refused it (no episode): the
+        declared (its queryables: a query goes to it; its command subscribers: a command
+        reaches it; its robots' liveliness tokens) and the node's session knows the executor's
+        report subscription (a report reaches the executor). The declarations cross the
+        loopback link on Zenoh's threads; on a loaded machine the executor's reset, sent as its
+        cell is built, went before them and matched nothing: lost at once, it was sent again,
+        and the briefing or first basis sent right after it reached the node first, which held
+        it ``RESET_WAIT`` for a reset queued behind it and then refused it (no episode): the
         first step was asked about, not foreseen, and every test that counts foresight failed
         (the red trains of session 29). A node is up before its executor starts (``hltl node
         sim`` is started first; the executor retries a reset nobody answers), so the tests
@@ -152,6 +156,10 @@ class Loopback:
         k, session = node.keys, self._exec_session
         entities = [session.declare_querier(key) for key in (k.sim_step, k.sim_reset)]
         entities += [session.declare_publisher(k.action(r)) for r in node.scene.robot_ids]
+        # (and the other way: the node's reports reach the executor's subscription)
+        entities += [
+            self._node_session.declare_publisher(k.status(r)) for r in node.scene.robot_ids
+        ]
         robots = set(node.scene.robot_ids)
         deadline = time.monotonic() + ROUTE_WAIT
         try:

@@ -400,6 +400,9 @@ FILLER_PHRASES: tuple[str, ...] = (
     "that is all",
     "while you 're at it",
     "while you are at it",
+    # session 30: "…, and while you're over there the apple for him as well": the hearer passing
+    "while you 're over there",
+    "while you are over there",
     "for me",
     "each of",
     "either one",

@@ -7644,6 +7644,757 @@ def _same_person29(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + name + text[m.end() :]
 
 
+# -- session 30 (engineer 12): blind28's kinds (politeness, wants, pronouns and ellipsis, splits,
+# lower case, questions); docs/grounding.md, "Session 30 (engineer 12)" ---------------------------
+
+# words that join, order, choose or repeat tasks: a 'next' closing an instruction that holds one of
+# them may order its own tasks ('Give Bob the cup and Alice the apple next')
+_JOINS30 = re.compile(
+    r"\b(?:and|or|plus|then|first|last|after|before|once|when|until|till|both|each|every|all|"
+    r"either|also|too|again|instead|rather|except|not|no|but)\b|n't\b",
+    _F,
+)
+_NEXT30 = re.compile(r"^(?P<body>[^.;!?]+?),?\s+next(?P<tail>\s*(?:,[^.;!?]*)?[.!?]?)\s*$", _F)
+
+
+def _next30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'The flashlight to Jess next(, if you'd be so kind).' — a closing 'next' of an
+    instruction of one task (one object, one person or surface, one sentence, no word that joins or
+    orders tasks) is 'Next, …' said last: after what the cell is doing, which the grammar reads as
+    now (an update reads it as 'then': update.py); with two tasks it may order them, and is left."""
+    if "next" not in text.lower():
+        return text
+    m = _NEXT30.match(text.strip())
+    if m is None or _JOINS30.search(m["body"]) or _names(m["tail"], lexicon):
+        return text
+    objects = _ids(m["body"], lexicon, "object")
+    if len(objects) != 1 or len(_ids(m["body"], lexicon) - objects) != 1:
+        return text
+    return m["body"] + m["tail"]
+
+
+def _by_any_chance30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: 'by any chance' in a question ("Could you stow the crisps up on the shelf, by any
+    chance?", "Could you by any chance …?") softens the asking, as 'please' does."""
+    if "chance" not in text.lower():
+        return text
+    text = _sub(r",?\s*by any chance\s*(?=\?)", "", text)
+    return _sub(r"\b(you),?\s+by any chance,?\s+(?=[a-z])(?=[^.!]*\?)", r"\1 ", text)
+
+
+def _dyou30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: "D'you mind …", "d'ya mind …": 'do you', said short."""
+    return _sub(r"\bd'(?:you|ya|ye)\b", "do you", text) if "d'" in text.lower() else text
+
+
+# "Would it be OK if Person B took the bottle off you?": the robot letting P take X is P having X
+_LET_TAKE30 = re.compile(
+    r"\b(?:would it be|will it be|is it|would that be) (?:ok|okay|all right|alright|fine) (?:with "
+    r"you )?if (?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?:took|takes|had|has|got|gets) "
+    r"(?P<what>(?:the|that|this|those|these) [a-z][a-z ]*?)(?: (?:off|from) you)?\s*(?=\?)",
+    _F,
+)
+
+
+def _let_take30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: asking leave for P to take X (above) is 'could P have X?' when P is one person
+    and X objects of the scene only."""
+    if " if " not in text.lower():
+        return text
+
+    def have(m: re.Match[str]) -> str:
+        if _only_person(m["who"], lexicon) and _objects_only(m["what"], lexicon):
+            return f"could {m['who']} have {m['what']}"
+        return m[0]
+
+    return _LET_TAKE30.sub(have, text)
+
+
+# 'run' said as carrying, where _run_to28s does not look: after 'so' ("…, so run it over to him"),
+# and as '-ing' after 'of' / 'about' ("Any chance of running the chips across to Person B …?")
+_RUN30 = re.compile(
+    r"(?P<lead>\b(?:so|of|about) )run(?P<ing>ning)? (?P<what>it|them|(?:the|that|this|those|"
+    r"these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to "
+    r"(?P<where>[A-Za-z]+(?: [A-Za-z]+)?)\b",
+    _F,
+)
+
+
+def _run30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'run' carrying (above) is 'bring', on the conditions of _run_to28s: its object
+    the scene's objects only or 'it' / 'them', where it goes a pronoun or one person or surface."""
+    if "run" not in text.lower():
+        return text
+
+    def brought(m: re.Match[str]) -> str:
+        what = m["what"]
+        if what.lower() not in ("it", "them") and not _objects_only(what, lexicon):
+            return m[0]
+        words = m["where"].split()
+        for n in (len(words), 1):
+            where = " ".join(words[:n])
+            if where.lower() in _PRONOUNS28S or any(
+                _only(where, lexicon, kind) for kind in ("human", "surface")
+            ):
+                verb = "bringing" if m["ing"] else "bring"
+                rest = " ".join(words[n:])
+                return f"{m['lead']}{verb} {what}{m['dir']} to {where}{' ' + rest if rest else ''}"
+        return m[0]
+
+    return _RUN30.sub(brought, text)
+
+
+# "How about the chips going over to Person B?": a suggestion that objects go to someone
+_HOW_ABOUT30 = re.compile(
+    r"\b(?:how|what) about (?P<what>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:going|heading|"
+    r"getting taken|being taken|being brought) (?P<dir>(?:(?:over|across|round|along) )?)"
+    r"(?=(?:to|on|onto|into|in) )",
+    _F,
+)
+
+
+def _how_about30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'how about X going (over) to P' (above) is 'X (over) to P' when X is objects of
+    the scene only."""
+    if "about" not in text.lower():
+        return text
+    return _HOW_ABOUT30.sub(
+        lambda m: f"{m['what']} {m['dir']}" if _objects_only(m["what"], lexicon) else m[0], text
+    )
+
+
+# 'then' said twice over: "…, then after it the chips", "… then Person A gets the apple after that
+# is done": one order, said before and after the task
+_THEN_AFTER_IT30 = re.compile(r"\bthen,? after (?:it|that),?\s+(?=[a-z])", _F)
+_THEN_AFTER_THAT30 = re.compile(
+    r"(\bthen\b[^.;!?,]*?)\s+after (?:that|it)(?: is| has been|'s)?(?: done| finished| over)?"
+    r"(?=\s*(?:[.!?]|$))",
+    _F,
+)
+
+
+def _then_after30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: 'then' and 'after it / after that (is done)' around one task (above) are one
+    'then'."""
+    if "after" not in text.lower() or "then" not in text.lower():
+        return text
+    return _THEN_AFTER_THAT30.sub(r"\1", _THEN_AFTER_IT30.sub("then ", text))
+
+
+# The speaker saying who they are, as a comma part before the request ("Hi there, it's the
+# distiller from next door, er, …", "Sorry, the microbiologist again, could Omar have …"): 'it's /
+# this is the <trade> (again / here) (from <a place>)' or 'the <trade> again / here'; the trade one
+# or two words the lexer does not know that name nothing (_trade_words29), the place naming nothing
+_INTRODUCED30 = re.compile(
+    r"(?:^|(?<=,))\s*(?:(?P<its>it's|it is|this is) )?(?:the|your) "
+    r"(?P<who>[a-z]+(?: (?!again\b|here\b|speaking\b|from\b)[a-z]+)?)"
+    r"(?P<again> again| here| speaking)?(?: from (?P<place>next door|upstairs|downstairs|"
+    r"down the (?:hall|corridor|road)|across the (?:hall|corridor|road)|the [a-z]+(?: [a-z]+)?))?"
+    r"\s*,\s*",
+    _F,
+)
+
+
+def _introduced30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the speaker's introduction (above) taken off, in the first sentence only, when
+    it is said with 'it's' / 'this is' or with 'again' / 'here', and something is named after it."""
+    first = re.split(r"[.!?;]\s", text, maxsplit=1)[0]
+    for m in _INTRODUCED30.finditer(first):
+        place = m["place"] or ""
+        if not (m["its"] or m["again"]) or not _trade_words29(m["who"], lexicon):
+            continue
+        if place and (_names(place, lexicon) or _KEEP_WORDS.search(place.replace("next door", ""))):
+            continue
+        rest = text[m.end() :]
+        if _names(rest, lexicon):
+            return f"{text[: m.start()]}{' ' if m.start() else ''}{rest}".strip()
+    return text
+
+
+# wants said by an idiom: a closed list (docs/grounding.md, "Session 30 (engineer 12)"); each is
+# rewritten as the plain state or want it says, which the grammar reads as before
+_IDIOMS30: tuple[tuple[str, str], ...] = (
+    # "Person A could murder a drink, so the bottle, please.": thirsty
+    (r"\bcould (?:murder|kill for|really murder) an? (?:drink|cuppa|brew|coffee|tea|pint|"
+     r"cold one)\b", "is thirsty"),
+    # "… could murder a sandwich": hungry
+    (r"\bcould (?:murder|kill for|really murder) an? (?:sandwich|snack|bite|biscuit|butty|"
+     r"sarnie)\b|\bcould eat a horse\b", "is hungry"),
+    # "Person A has had her eye on that bottle": she wants it
+    (r"(?:\s+has|'s) (?:had |got )?(?:her|his|their) eyes? on\b", " wants"),
+    # "Lily's grizzling for her teddy": she wants it
+    (r"(?:\s+is|'s) (?:grizzling|crying|crying out|pining|gasping|begging) for\b", " wants"),
+)  # fmt: skip
+
+
+def _idioms30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: the idioms above, said plainly."""
+    for pattern, plain in _IDIOMS30:
+        text = _sub(pattern, plain, text)
+    return text
+
+
+# "… ever since the bell-ringing practice finished": how long the want has lasted, in the past
+_EVER_SINCE30 = re.compile(r"\s+ever since (?P<when>[^,.;!?]+?)(?=\s*(?:[,.;!?]|$))", _F)
+
+
+def _ever_since30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: an 'ever since …' (above) naming nothing of the scene and holding no word that
+    counts, chooses or points back, taken off: it says since when, never when to act."""
+    if "ever since" not in text.lower():
+        return text
+    return _EVER_SINCE30.sub(lambda m: "" if _inert28(m["when"], lexicon) else m[0], text)
+
+
+# "Lily wants her teddy bear; she won't nap till she's got it.": why the want presses, said after
+# it: the wanting person will not do something until they have it (a reason; it asks nothing more)
+_TILL_GOT30 = re.compile(
+    r"\s*[;,.]\s*(?:and |so )?(?P<p1>he|she|they) (?:won't|will not|can't|cannot|wo n't) "
+    r"(?P<what>[a-z]+(?: [a-z]+){0,2}) (?:till|until) (?P<p2>he|she|they)(?:'s| has|'ve| have) "
+    r"(?:got|had) (?:it|them|one)\s*(?P<end>[.!]?)\s*$",
+    _F,
+)
+
+
+def _till_got30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the reason above taken off when one person is named before it, whom both
+    pronouns may be, and its words name nothing of the scene."""
+    if "till" not in text.lower() and "until" not in text.lower():
+        return text
+    m = _TILL_GOT30.search(text)
+    if m is None or m["p1"].lower() != m["p2"].lower() or not _names_nothing(m["what"], lexicon):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    sexes = {
+        PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    }
+    if len(people) != 1 or len(sexes) > 1 or not _fits(next(iter(people)), text, lexicon):
+        return text
+    return text[: m.start()] + (m["end"] or ".")
+
+
+# "Person A's thirsty and wants the bottle": a state said before the want, joined by 'and'
+_STATE_AND30 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)(?:'s| is) (?:very |really |so |a bit "
+    r")?(?P<state>[a-z]+) and (?=(?:wants|needs|would like|'d like|is after|could use)\b)",
+    _F,
+)
+
+
+def _state_and30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the state (above) taken off when P is one person and the state one word the
+    lexer does not know naming nothing (_trade_words29): 'P wants X'."""
+    if " and " not in text.lower():
+        return text
+
+    def wants(m: re.Match[str]) -> str:
+        start = m.start("who")
+        lead = m[0][: start - m.start()]
+        if _only_person(m["who"], lexicon) and _trade_words29(m["state"], lexicon):
+            return f"{lead}{m['who']} "
+        return m[0]
+
+    return _STATE_AND30.sub(wants, text)
+
+
+# "Person B needs something to eat, the chips'll do.": the want, then what will meet it
+_WILL_DO30 = re.compile(
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?P<verb>needs|wants|would like|could use|could do with) "
+    r"(?:something|anything|a bite|a drink|a snack)(?: to (?:eat|drink|nibble|munch on))?,\s*(?:so "
+    r")?(?P<what>the [a-z][a-z ]*?)(?:'ll| will| would| should|'d) do\b",
+    _F,
+)
+
+
+def _will_do30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'P needs something (to eat), the X'll do' (above) is 'P needs the X', when P is
+    one person and the X objects of the scene only."""
+    if " do" not in text.lower():
+        return text
+    return _WILL_DO30.sub(
+        lambda m: (
+            f"{m['who']} {m['verb']} {m['what']}"
+            if _only_person(m["who"], lexicon) and _objects_only(m["what"], lexicon)
+            else m[0]
+        ),
+        text,
+    )
+
+
+# "Priya wants her notepad left out on the desk", "… would like the globe set out on the desk":
+# an object wanted on a surface, 'out' saying only that it is to be seen there; 'her' / 'his'
+# before it the wanting person's own (the scene knows no owners)
+_SET_OUT30 = re.compile(
+    r"\b(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?P<verb>wants|needs|would like|'d like) "
+    r"(?:(?P<own>her|his|their) |the )(?P<what>[a-z][a-z ]*?) (?:left|set|laid|put) out "
+    r"(?P<on>on|onto|on to) ",
+    _F,
+)
+
+
+def _set_out30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'P wants (her) X left / set / laid out on S' (above) is 'P wants the X put on
+    S', when P is one person (whom 'her' / 'his' may be) and X objects of the scene only."""
+    if " out " not in text.lower():
+        return text
+
+    def put(m: re.Match[str]) -> str:
+        if not (_only_person(m["who"], lexicon) and _objects_only(m["what"], lexicon)):
+            return m[0]
+        if m["own"] and not _fits(next(iter(_ids(m["who"], lexicon))), m["own"], lexicon):
+            return m[0]
+        return f"{m['who']} {m['verb']} the {m['what']} put {m['on']} "
+
+    return _SET_OUT30.sub(put, text)
+
+
+def _for_opener30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: "For the geography lesson Mrs Ortiz would like …": what the request is for,
+    opening the instruction without a comma before the person who wants it; taken off as
+    _remarks29 takes off 'For the ghillie's picnic, …' (the words name nothing and ask nothing,
+    _asks_nothing29) when a scene person's name follows it and what is left names something."""
+    m = re.match(
+        r"^for ((?:the|a|an|our|my|your|this|today's|tomorrow's) [a-z' -]+)$",
+        text.split(",")[0].split(".")[0],
+        _F,
+    )
+    if m is None:
+        return text
+    words = m.group(1).split()
+    for n in range(2, min(len(words), 6)):
+        head, rest = " ".join(words[:n]), " ".join(words[n:])
+        said = _names(rest, lexicon)
+        if not said or not _asks_nothing29(head, lexicon):
+            continue
+        first = said[0]
+        if first.refs[0].kind != "human" or not rest.lower().startswith(first.text.lower()):
+            continue
+        return text[len("for ") + len(head) :].lstrip()
+    return text
+
+
+# "The bottle. Over to Person A.": the object said as a sentence, where it goes as the next one
+_OVER_TO30 = re.compile(
+    r"(?:^|(?<=[.!?;])\s+)(?P<what>the [a-z][a-z ]*?)\.\s+(?P<dir>(?:over|across|round|along|"
+    r"up|down|back) )?to (?P<where>[A-Za-z]+(?: [A-Za-z]+)?)\s*(?=[.!?]|$)",
+    _F,
+)
+
+
+def _over_to30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the two sentences above are one ('The bottle over to Person A.') when the first
+    is objects of the scene alone and the second one person or surface."""
+    if "to " not in text.lower():
+        return text
+
+    def joined(m: re.Match[str]) -> str:
+        where = m["where"]
+        if _objects_only(m["what"], lexicon) and (
+            _only(where, lexicon, "human") or _only(where, lexicon, "surface")
+        ):
+            lead = m[0][: m.start("what") - m.start()]
+            return f"{lead}{m['what']} {(m['dir'] or '').lower()}to {where}"
+        return m[0]
+
+    return _OVER_TO30.sub(joined, text)
+
+
+# "grab the bottle take it to Person A": two requests run on, the second taking up the first's
+# object with 'it'
+_RUN_ON_IT30 = re.compile(
+    r"\b(?P<first>(?:grab|get|fetch|pick up|collect) (?P<what>(?:the|that|this) [a-z][a-z ]*?)) "
+    r"(?=(?:and )?(?:take|bring|give|hand|carry|pass|run) it\b)",
+    _F,
+)
+
+
+def _run_on_it30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the run-on above joined with 'and', when the first object is one object of the
+    scene (so that 'it' is that object)."""
+    if " it " not in text.lower():
+        return text
+    return _RUN_ON_IT30.sub(
+        lambda m: (
+            f"{m['first']} and "
+            if len(_ids(m["what"], lexicon, "object")) == 1
+            and _only_kind(m["what"], lexicon, "object")
+            and not m[0].endswith("and ")
+            else m[0]
+        ),
+        text,
+    )
+
+
+# "mr novak at table four wants the salt": where the person sits, a numbered place after a name
+_AT_TABLE30 = re.compile(
+    r"\b(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?:at|on|in) (?:table|bed|seat|bay|booth|desk|station|"
+    r"pitch|stall|room|cubicle) (?:number |no\.? )?(?:[0-9]+|one|two|three|four|five|six|seven|"
+    r"eight|nine|ten|eleven|twelve)\b"
+    r"(?=\s+(?:wants|needs|would like|'d like|is after|gets|asked)\b)",
+    _F,
+)
+
+
+def _at_table30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: a numbered place said after a person's name before their want (above) taken
+    off when the name is one scene person and the place names nothing of the scene."""
+    if " at " not in text.lower() and " in " not in text.lower() and " on " not in text.lower():
+        return text
+
+    def who(m: re.Match[str]) -> str:
+        place = m[0][len(m["who"]) :]
+        if _only_person(m["who"], lexicon) and _names_nothing(place, lexicon):
+            return m["who"]
+        return m[0]
+
+    return _AT_TABLE30.sub(who, text)
+
+
+# "all of it's for person a, that's the bottle and the chips": 'all' said, then what it is
+_ALL_LISTED30 = re.compile(
+    r"(?P<all>\b(?:all of it|all of them|everything|the lot|the whole lot|all of that)\b"
+    # 'all' itself, not a kind of it ('Everything sweet goes …' is _described_list27's)
+    r"(?='s|\s+(?:is|are|goes|go|to|for|on|onto|in|into|over|across)\b|\s*[,.;!?]|\s*$)"
+    r"[^.;!?]*?)"
+    r",\s*(?:that's|that is|which is|which are|i\.e\.|meaning|namely)(?: just| only)? "
+    r"(?P<list>[^.;!?,]+?(?:,[^.;!?,]+?)*)\s*(?=[.;!?]|$)",
+    _F,
+)
+
+
+def _all_listed30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: what 'all' is, said after it (above), taken off when the list names the
+    scene's objects, each and only those (a list of fewer is a contradiction: left, and refused)."""
+    m = _ALL_LISTED30.search(text)
+    if m is None:
+        return text
+    named = _names(m["list"], lexicon)
+    every = {o.id for o in lexicon.scene.objects}
+    if (
+        not named
+        or any(len(it.refs) != 1 or it.refs[0].kind != "object" for it in named)
+        or {it.refs[0].id for it in named} != every
+        # each item one name of one object, nothing else ('…, before I go tomorrow' is no item)
+        or not all(
+            len(_ids(item, lexicon)) == 1 and _only_kind(item, lexicon, "object")
+            for item in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m["list"].strip(), flags=_F)
+        )
+    ):
+        return text
+    return text[: m.start()] + m["all"] + text[m.end() :]
+
+
+# "It's the chips that Person B wants, not the bottle.": the object put first in a cleft
+_CLEFT30 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)it(?:'s| is) (?P<what>(?:the|that|this) [a-z][a-z ]*?) (?:that|which) "
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?P<verb>wants|needs|is after|would like|'d like|asked "
+    r"for|has asked for)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _cleft30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the cleft above said plainly ('Person B wants the chips, not the bottle.') when
+    P is one person and X objects of the scene only."""
+    if "it" not in text.lower():
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        if not (_only_person(m["who"], lexicon) and _objects_only(m["what"], lexicon)):
+            return m[0]
+        lead = m[0][: m[0].lower().index("it")]
+        return f"{lead}{m['who']} {m['verb']} {m['what']}"
+
+    return _CLEFT30.sub(plain, text)
+
+
+# "The milkman's crates need sealing.", "The two stagehands need feeding: …": a state said with
+# 'need(s)' and a verb in '-ing', of something or someone the scene does not name; it asks the cell
+# nothing. Taken off as a sentence of its own or a heading before a colon when its subject names
+# nothing and asks nothing (_asks_nothing29); a count before the subject ('the two stagehands')
+# only when as many people of the scene are named after the colon.
+_NEEDS_DOING30 = re.compile(
+    r"(?P<subject>(?:the|our|my|his|her|their|a|an|these|those) (?:(?P<count>two|three|four|both) "
+    r")?[a-z' -]+?) (?:need|needs|want|wants) (?P<doing>[a-z]+ing)(?: (?:badly|urgently|again))?",
+    _F,
+)
+_COUNTS30 = {"two": 2, "both": 2, "three": 3, "four": 4}
+
+
+def _needs_doing30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the state above taken off."""
+    if "need" not in text.lower() and "want" not in text.lower():
+        return text
+    parts = re.split(r"(\s*[.!?;:]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+    out: list[str] = []
+    for k, (sent, sep) in enumerate(zip(sents, seps, strict=True)):
+        m = _NEEDS_DOING30.fullmatch(sent.strip())
+        if m is None or "?" in sep:
+            out.append(sent + sep)
+            continue
+        subject = m["subject"]
+        if m["count"]:
+            after = "".join(a + b for a, b in zip(sents[k + 1 :], seps[k + 1 :], strict=True))
+            people = _ids(after, lexicon, "human")
+            if not sep.strip().startswith(":") or len(people) != _COUNTS30[m["count"].lower()]:
+                out.append(sent + sep)
+                continue
+            subject = subject.replace(f" {m['count']} ", " ", 1)
+        if m["doing"].lower() in VERBS or not _asks_nothing29(f"{subject} {m['doing']}", lexicon):
+            out.append(sent + sep)
+            continue
+    said = "".join(out).strip()
+    if said == text.strip() or not _names(said, lexicon):
+        return text
+    return said
+
+
+# "…, while the chips go across to Person A": 'while' between two tasks sets them side by side
+_WHILE_GO30 = re.compile(
+    r",\s*while (?P<what>(?:the|that|this|those|these) [a-z][a-z ]*?) (?P<verb>go|goes) "
+    r"(?P<dir>(?:(?:over|across|round|along|up|down) )?)to (?P<where>[A-Za-z]+(?: [A-Za-z]+)?)"
+    r"(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _while_go30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the 'while' above is 'and', when a task is said before it and the X are
+    objects of the scene only and P one person or surface (as _while29 for two wants)."""
+    if "while" not in text.lower():
+        return text
+
+    def side(m: re.Match[str]) -> str:
+        before = re.split(r"[.!?;:]\s", text[: m.start()])[-1]
+        if (
+            _ids(before, lexicon, "object")
+            and _objects_only(m["what"], lexicon)
+            and (_only(m["where"], lexicon, "human") or _only(m["where"], lexicon, "surface"))
+        ):
+            what = m["what"][:1].upper() + m["what"][1:]  # a sentence of its own: 'go' is plain
+            return f". {what} {m['verb']} {m['dir']}to {m['where']}"
+        return m[0]
+
+    return _WHILE_GO30.sub(side, text)
+
+
+# "The clown's Person B and he's getting the bottle": who the trade is, then a pronoun for them
+_WHO_IS30 = re.compile(
+    r"(?:^|(?<=[.!?;]\s))(?:the|our|my|your) (?P<trade>[a-z]+(?: [a-z]+)?)(?:'s| is) "
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?),? and (?P<pronoun>he|she|they)\b",
+    _F,
+)
+
+
+def _who_is30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the trade said to be P (above), then a pronoun for P, is P: when the trade is
+    words the lexer does not know naming nothing (_trade_words29), P one person, and the pronoun
+    may be P."""
+    if " and " not in text.lower():
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if (
+            _trade_words29(m["trade"], lexicon)
+            and _only_person(m["who"], lexicon)
+            and _fits(next(iter(_ids(m["who"], lexicon))), m["pronoun"], lexicon)
+        ):
+            return m["who"]
+        return m[0]
+
+    return _WHO_IS30.sub(named, text)
+
+
+# "…, and the bottle, well, him again, Person B.": a pronoun, then the name it stands for
+_NAMED_AFTER30 = re.compile(
+    r"\b(?P<pronoun>him|her|them)(?: again| too| as well)?, (?P<who>[A-Za-z]+(?: [A-Za-z]+)?)"
+    r"(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _named_after30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the pronoun and its name (above) are the name, when the name is one person,
+    the one person named before it, whom the pronoun may be."""
+    if not _rx(r"\b(?:him|her|them)\b").search(text):
+        return text
+
+    def name(m: re.Match[str]) -> str:
+        before = _ids(text[: m.start()], lexicon, "human")
+        who = _ids(m["who"], lexicon, "human")
+        if (
+            _only_person(m["who"], lexicon)
+            and before == who
+            and _fits(next(iter(who)), m["pronoun"], lexicon)
+        ):
+            return m["who"]
+        return m[0]
+
+    return _NAMED_AFTER30.sub(name, text)
+
+
+# "Bottle: Person A. Cup: Person B. And the chips, also Person A.": a note said with 'and' after
+# notes of the same form ('<object>: <person>.')
+_NOTE30 = re.compile(r"(?P<what>[a-z][a-z ]*?):\s*(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)", _F)
+_NOTE_AND30 = re.compile(
+    r"(?:and|also|plus) (?:the )?(?P<what>[a-z][a-z ]*?),? (?:also |too,? )?"
+    r"(?P<who>[A-Za-z]+(?: [A-Za-z]+)?)(?: too| as well)?",
+    _F,
+)
+
+
+def _note_and30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the note with 'and' (above) said as the notes before it are, when each note
+    is one object and one person of the scene."""
+    if ":" not in text:
+        return text
+    parts = re.split(r"(\s*[.!]+\s*)", text.strip())
+    sents, seps = parts[0::2], [*parts[1::2], ""]
+
+    def note(what: str, who: str) -> bool:
+        return len(_ids(what, lexicon, "object")) == 1 and (
+            _only_kind(what, lexicon, "object") and _only_person(who, lexicon)
+        )
+
+    seen = False
+    out: list[str] = []
+    for sent, sep in zip(sents, seps, strict=True):
+        plain = _NOTE30.fullmatch(sent.strip())
+        if plain is not None and note(plain["what"], plain["who"]):
+            seen = True
+        said = _NOTE_AND30.fullmatch(sent.strip())
+        if seen and plain is None and said is not None and note(said["what"], said["who"]):
+            sent = f"{said['what'][:1].upper()}{said['what'][1:]}: {said['who']}"
+        out.append(sent + sep)
+    return "".join(out).strip()
+
+
+# "…, and once that's done Bob can take his crisps": 'P can take / have X' in a later clause
+_CAN_TAKE30 = re.compile(
+    r"(?:(?<=[,;] )|(?<=\bthen )|(?<=\bdone )|(?<=\bdone, ))"
+    r"(?!(?:then|and|so)\b)(?P<who>[A-Za-z]+(?: [A-Za-z]+)?) can (?:take|have) "
+    r"(?:(?P<own>his|her|their) |(?=the ))(?P<what>[a-z][a-z ]*?)(?=\s*(?:[.!?;]|$))",
+    _F,
+)
+
+
+def _can_take30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: 'P can take / have X' after a comma, 'then' or 'once that's done' (above) is
+    'P gets X' (as it reads alone), when P is one person (whom 'his' / 'her' may be) and X objects
+    of the scene only."""
+    if " can " not in text.lower():
+        return text
+
+    def gets(m: re.Match[str]) -> str:
+        what = m["what"]
+        if not (_only_person(m["who"], lexicon) and _objects_only(what, lexicon)):
+            return m[0]
+        if m["own"] and not _fits(next(iter(_ids(m["who"], lexicon))), m["own"], lexicon):
+            return m[0]
+        return f"{m['who']} gets {'the ' if m['own'] else ''}{what}"
+
+    return _CAN_TAKE30.sub(gets, text)
+
+
+# "person b is thirsty after the dive so she wants the bottle": a state and its cause, then 'so'
+_STATE_AFTER30 = re.compile(
+    r"\b(?P<state>(?:is|'s|are|'re) [a-z]+) after (?P<cause>(?:the|a|an|his|her|their|my|our) "
+    r"[a-z' -]+?)(?=,? so\b)",
+    _F,
+)
+
+
+def _state_after30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the cause (above) taken off when it names nothing and asks nothing
+    (_asks_nothing29): it says why, never when to act."""
+    if " after " not in text.lower() or " so " not in text.lower():
+        return text
+    return _STATE_AFTER30.sub(
+        lambda m: m["state"] if _asks_nothing29(m["cause"], lexicon) else m[0], text
+    )
+
+
+# "Could the bowl go in the sink? The botanist's soil is caked on it.": a statement after the
+# request about its one object ('it'), naming nothing else: why it is asked
+_STATEMENT_IT30 = re.compile(r"\b(?:is|are|was|were|'s|'re)\b", _F)
+
+
+def _remark_it30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the closing statement above taken off, when the sentences before it name one
+    object of the scene (which 'it' is) and the statement, 'it' aside, names nothing and asks
+    nothing (_asks_nothing29)."""
+    m = re.search(r"(?<=[.!?])\s+(?P<said>[^.!?]+)[.!]?\s*$", text)
+    if m is None or not re.search(r"\bit\b", m["said"], _F):
+        return text
+    said = m["said"]
+    before = text[: m.start()]
+    if (
+        _STATEMENT_IT30.search(said) is None
+        or len(_ids(before, lexicon, "object")) != 1
+        or not _asks_nothing29(re.sub(r"\bit\b", "", said, flags=_F), lexicon)
+    ):
+        return text
+    return before.strip()
+
+
+def _mind30(text: str, _lexicon: Lexicon) -> str:
+    """Session 30: "Mind popping the packing tape on the pallet?": 'Would you mind …?' said short
+    (a question; 'Mind the step' is a warning, and no '-ing' follows it)."""
+    return _sub(r"^mind (?=[a-z]+ing\b[^.!?]*\?)", "Would you mind ", text)
+
+
+# "Can you carry the bottle down the line to Person A?": the way it is carried, then where to
+_PATH30 = re.compile(
+    r"(?P<before>\b(?:the|that|this|it|them)\b[^,.;!?]*?) (?P<dir>down|along|up|across|through|"
+    r"round|around) the (?P<path>[a-z]+(?: [a-z]+)?) (?=to )",
+    _F,
+)
+
+
+def _path30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the way (above) taken off, its direction kept ('carry the bottle down to
+    Person A'), when it names nothing of the scene and holds no word that counts, chooses or
+    points back (_inert28), and an object or 'it' / 'them' is said before it."""
+    if " the " not in text.lower():
+        return text
+
+    def way(m: re.Match[str]) -> str:
+        said = m["before"]
+        if not (_ids(said, lexicon, "object") or re.search(r"\b(?:it|them)\b", said, _F)):
+            return m[0]
+        if not _inert28(m["path"], lexicon):
+            return m[0]
+        direction = {"through": "over", "around": "round"}.get(m["dir"].lower(), m["dir"])
+        return f"{said} {direction} "
+
+    return _PATH30.sub(way, text)
+
+
+# "… onto the shelf so the ventriloquist's dummy can't get at them?": what the request is for,
+# with a subject the scene does not name (session 19's purpose rule takes it with a pronoun)
+_SO_THAT30 = re.compile(
+    r",?\s+so (?:that )?(?P<said>(?:the|a|an|his|her|their|my|our|your) [a-z' -]+? (?:can't|"
+    r"cannot|won't|can|could|will|'ll|doesn't|don't|isn't) [a-z' ]{2,40}?)(?=\s*(?:[.;!?]|$))",
+    _F,
+)
+
+
+def _so_that30(text: str, lexicon: Lexicon) -> str:
+    """Session 30: the purpose above taken off when it names nothing of the scene (nor a typo of
+    a name) and something is named before it."""
+    if " so " not in text.lower():
+        return text
+    m = _SO_THAT30.search(text)
+    if (
+        m is None
+        or not _names_nothing(m["said"], lexicon)
+        or not _names(text[: m.start()], lexicon)
+    ):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -10071,6 +10822,11 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
     if not _STATEMENT28R.fullmatch(why) or _NOT_REASON28R.search(why):
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
+        return text
+    if re.search(r"\bfor\b", why, _F) and _ids(why, lexicon, "human"):
+        # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
+        # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
+        # gloves to the person before)
         return text
     return text[: m.start("why")] + after
 
@@ -12758,6 +13514,38 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 30 (12): blind28's kinds
+    _dyou30,
+    _by_any_chance30,
+    _introduced30,
+    _idioms30,
+    _ever_since30,
+    _till_got30,
+    _state_and30,
+    _will_do30,
+    _set_out30,
+    _for_opener30,
+    _cleft30,
+    _let_take30,
+    _run30,
+    _how_about30,
+    _then_after30,
+    _next30,
+    _over_to30,
+    _run_on_it30,
+    _at_table30,
+    _all_listed30,
+    _needs_doing30,
+    _while_go30,
+    _who_is30,
+    _named_after30,
+    _note_and30,
+    _can_take30,
+    _state_after30,
+    _remark_it30,
+    _mind30,
+    _path30,
+    _so_that30,
     # session 29 (12): blind27's kinds
     _says29,
     _described29,

@@ -35,6 +35,10 @@ _THEN = re.compile(
     r"(?:\s+with\s+(?:that|this))?)\b[\s,]*",
     re.IGNORECASE,
 )
+# session 30: 'The flashlight to Jess next.' — a 'next' closing a one-sentence update is 'Next, …'
+_NEXT_LAST = re.compile(
+    r"^(?P<body>[^.;!?]+?),?\s+next(?P<tail>\s*(?:,[^.;!?]*)?[.!?]?)\s*$", re.IGNORECASE
+)
 _ADD = re.compile(
     r"^\s*(?:and\s+)?(?:also|additionally|in\s+addition|plus|and)\b[\s,]*", re.IGNORECASE
 )
@@ -84,6 +88,9 @@ def classify(instruction: str, lexicon: Lexicon) -> UpdateCommand:
     m = _THEN.match(text)
     if m:
         return UpdateCommand("then", text=text[m.end() :])
+    m = _NEXT_LAST.match(text)
+    if m:
+        return UpdateCommand("then", text=m["body"] + m["tail"])
     if _FIRST.search(text) and not _SEQ_WORDS.search(text):
         rest = _FIRST.sub("", text).strip(" ,.;")
         items = lex(rest, lexicon)
