@@ -13315,6 +13315,1004 @@ def _person_one30s(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + text[m.end() :]
 
 
+# -- session 30 (12r): blind28's choices, counts, exclusions and corrections ------------------
+# Each rule below rewrites one construction into the form the grammar reads, and leaves the text
+# as it was when what the construction presupposes (one person, the scene's objects, a count)
+# does not hold; docs/grounding.md, "Session 30 (engineer 12r)".
+
+# a time said in words a rule takes off ("needs a drink tomorrow", "for Tom's run tonight"): the
+# rule is not taken, so what the grammar and the time rule make of the time stands
+_TIME30R = re.compile(
+    r"\b(?:tonight|tomorrow|later|soon|today|yesterday|morning|afternoon|evening|week|minutes?|"
+    r"hours?|after|before|until|till|when|once|then|next|first|last|now)\b",
+    _F,
+)
+_OBJECT_PRONOUN30R = {"him": "he", "her": "she", "them": "they", "me": "I", "us": "we"}
+# "…, makes no odds to him", "…, it makes no difference", "…, it doesn't matter to her"
+_NO_ODDS30R = re.compile(
+    r"(?P<lead>,\s*)(?:(?:it|that) )?(?:(?:makes|make|'ll make|will make) (?:no|little) "
+    r"(?:odds|difference)|(?:doesn't|does not|won't|will not) (?:matter|make (?:any )?difference))"
+    r"(?: (?:to|for) (?P<who>him|her|them|me|us))?(?P<tail>(?: which(?: one)?)?)"
+    r"(?=\s*(?:[.!,;]|$))",
+    _F,
+)
+
+
+def _no_odds30r(text: str, _lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'makes no odds (to him)' and 'it doesn't matter to her', a clause of its
+    own after a choice, say the chooser does not mind: "he doesn't mind" (to him) or "it doesn't
+    matter" (to no one said), the tails the grammar reads, and which leave a request with nothing
+    open refused as they were."""
+
+    def said(m: re.Match[str]) -> str:
+        who = m.group("who")
+        if who is None:
+            return f"{m.group('lead')}it doesn't matter{m.group('tail')}"
+        subject = _OBJECT_PRONOUN30R[who.lower()]
+        verb = "don't" if subject in ("I", "we", "they") else "doesn't"
+        return f"{m.group('lead')}{subject} {verb} mind{m.group('tail')}"
+
+    return _sub(_NO_ODDS30R.pattern, said, text)
+
+
+# "… to whichever of the two of them, Person A or Person B": the people said after a word for them
+_WHICHEVER_OF30R = re.compile(
+    r"\b(?P<to>to|for) (?:whichever|either|any)(?: one)? of (?:the (?P<n>two|three)(?: of them)?|"
+    r"them(?: both| two)?|the pair of them|the (?P<m>two|three) of you),\s*"
+    r"(?P<list>(?:[A-Za-z][\w ]*?,\s*)*[A-Za-z][\w ]*? or [A-Za-z][\w ]*?)(?=\s*(?:[.!;]|$))",
+    _F,
+)
+
+
+def _whichever_of30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'to whichever of the two of them, P or Q' is 'to either P or Q' when the
+    list names people of the scene only, one each, as many as a number said before it."""
+    m = _WHICHEVER_OF30R.search(text)
+    if m is None:
+        return text
+    names = re.split(r",\s*|\s+or\s+", m.group("list"))
+    if not all(_only_person(n, lexicon) for n in names):
+        return text
+    if len({i for n in names for i in _ids(n, lexicon)}) != len(names):
+        return text
+    n = m.group("n") or m.group("m")
+    if n and _COUNTS[n.lower()] != len(names):
+        return text
+    return f"{text[: m.start()]}{m.group('to')} either {m.group('list')}{text[m.end() :]}"
+
+
+# "One of the books to each student, whichever way round."
+_EACH_ROLE30R = re.compile(
+    r"^(?:please,? )?(?P<what>one of the [a-z]+s|(?:one|an?) [a-z]+) (?:to|for) each "
+    r"(?P<role>[a-z]+)(?:,\s*(?:whichever|either|any) way(?: round)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _each_role30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'One of the Xs to each <role>' (with 'whichever way round' after it or
+    not) is 'Give each <role> one of the Xs', when two people or more of the scene are called so;
+    the grammar then reads the share, or refuses it where the objects do not match."""
+    m = _EACH_ROLE30R.match(text)
+    if m is None:
+        return text
+    role = m.group("role").lower()
+    if sum(role in (a.lower() for a in h.aliases) for h in lexicon.scene.humans) < 2:
+        return text
+    return f"Give each {role} {m.group('what').lower()}{m.group('end')}"
+
+
+# words for everything the scene has, then what they are said again to be: "the whole lot,
+# which is just the bottle and the crisps", "Whatever's there goes to Person A, it's only the
+# bottle anyway"
+_ALL_WORDS30R = (
+    r"(?:the whole lot|the lot|everything|all of it|whatever(?:'s| is) (?:there|here)|"
+    r"whatever there is)"
+)
+_LOT_IS30R = re.compile(
+    r",\s*(?:which is|which are|it's|it is|that's|that is|they're|they are|i\.e\.,?|namely) "
+    r"(?:just |only |simply |all )?(?P<list>(?:the |a |an )?[a-z][a-z ,]*?)"
+    r"(?: anyway| after all| really)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _lot_is30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a word for everything ('the whole lot', 'whatever's there'), then
+    what it is said again to be (", which is just X and Y", ", it's only the X anyway"), is the
+    word alone when the list, each item one name of the scene's objects, names exactly every
+    object of the scene ('whatever's there' then 'everything') and what is left reads, with
+    every object. A list naming fewer (or anything
+    but objects) leaves the text, refused; so does 'Everything sweet …' (a kind said first)."""
+    if not re.search(_ALL_WORDS30R, text, _F):
+        return text
+    m = _LOT_IS30R.search(text)
+    if m is None or not re.search(_ALL_WORDS30R, text[: m.start()], _F):
+        return text
+    listed = m.group("list")
+    every = {o.id for o in lexicon.scene.objects}
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", listed.strip()) if w]
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text  # "…, the bottle and the crisps, before I go tomorrow": not a list of names
+    if _ids(listed, lexicon) != every:
+        return text
+    out = text[: m.start()] + m.group("end")
+    out = _sub(r"\bwhatever(?:'s| is) (?:there|here)|\bwhatever there is", "everything", out)
+    out = out[:1].upper() + out[1:]
+    said = _tasks_of(out, lexicon)
+    return out if said and {o for _, o, _ in said} == every else text
+
+
+def _every_last30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'every last / single one of the four items' is 'all of the four items'
+    (the grammar checks the count against the scene)."""
+    return _sub(
+        r"\bevery (?:last |single )?one of (?=the (?:two|three|four|five|six) [a-z]+s\b)",
+        "all of ",
+        text,
+    )
+
+
+def _pronoun_is_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "so she's to have the two blankets": a pronoun's 's before 'to have /
+    get' is 'is' (as _is_to28s's for a name), and 'she is to have' is 'she gets'."""
+    return _sub(r"\b(she|he)(?:'s| is) to (?:get|have|receive)\b", r"\1 gets", text)
+
+
+def _only_not30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, only not the bottle' after what is given is '…, but not the
+    bottle' (an exclusion the grammar reads); 'but no chips' (a bare name of the scene's objects
+    after 'no') is 'but not the chips'."""
+    out = _sub(r",\s*(?:only|just) not (?=the\b)", ", but not ", text)
+
+    def bare(m: re.Match[str]) -> str:
+        return f"but not the {m.group(1)}" if _whole_name(m.group(1), lexicon, "object") else m[0]
+
+    return _sub(r"\bbut no ([a-z]+(?: [a-z]+)??)(?=\s*(?:[.!;,]|$))", bare, out)
+
+
+# "Only Person A is to get the bottle, nobody else."
+_ONLY_WHO30R = re.compile(
+    r"^only (?P<p>[A-Za-z][\w ]*?) (?P<v>is to get|is to have|gets|should get|should have|can have)"
+    r"\b",
+    _F,
+)
+
+
+def _only_who30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'Only P is to get X' is 'P is to get X' (the request names one
+    recipient: 'only' keeps to it, as 'nobody else' after it does)."""
+    m = _ONLY_WHO30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')}{text[m.end() :]}"
+
+
+def _leaving_out30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, leaving out the big one' closing a request is '…, except the big
+    one' (only an object phrase, ending the text: 'leave it out on the desk' places it)."""
+
+    def left(m: re.Match[str]) -> str:
+        what = m.group("what")
+        if what.lower().split()[-1] not in ("one", "ones") and not _objects_only(what, lexicon):
+            return m[0]
+        return f", except {what}{m.group('end')}"
+
+    return _sub(
+        r",\s*(?:leaving|but leave|but leaving) (?:out|aside) (?P<what>the [a-z ]+?)"
+        r"(?P<end>\s*[.!]?)$",
+        left,
+        text,
+    )
+
+
+def _one_name30r(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (an article aside) are one name of the scene, whole, of one kind."""
+    named = _names(words, lexicon)
+    return len(named) == 1 and _whole_name(words, lexicon, named[0].refs[0].kind)
+
+
+_NEGATED30R = re.compile(r"\b(?:not|no|never|don't|do not|doesn't|does not)\b|n't\b", _F)
+
+
+def _rather_than30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'X to P rather than Q' is 'X to P, not Q' when Q is one name of the
+    scene (of a person, object or surface) and nothing before it is negated ("don't give her
+    the apple rather than the crisps" stays refused): what the grammar reads as the exclusion."""
+
+    def instead(m: re.Match[str]) -> str:
+        q = m.group("q")
+        if not _one_name30r(q, lexicon) or _NEGATED30R.search(m.string[: m.start()]):
+            return m[0]
+        return f", not {q}"
+
+    return _sub(
+        r"\s*,?\s*rather than (?P<q>(?:the )?[A-Za-z][\w ]*?)(?=\s*(?:[.!;]|$))", instead, text
+    )
+
+
+def _rather_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, Alice rather.' (the cue after the corrected words, closing the
+    text) is '…, rather Alice.' when the words are one name of the scene."""
+
+    def moved(m: re.Match[str]) -> str:
+        said = m.group("said")
+        if not _one_name30r(said, lexicon):
+            return m[0]
+        return f", rather {said}{m.group('end')}"
+
+    return _sub(r",\s*(?P<said>(?:the )?[A-Za-z][\w ]*?) rather(?P<end>\s*[.!]?)$", moved, text)
+
+
+def _i_mean_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, sorry, cup for Person B I mean.' (the cue after the corrected
+    words) is '…, sorry, I mean cup for Person B.' when the words name something of the scene
+    and no verb or cue of their own."""
+
+    def moved(m: re.Match[str]) -> str:
+        said = m.group("said")
+        if not _names(said, lexicon) or re.search(r"\b(?:i|you|no|not|sorry)\b", said, _F):
+            return m[0]
+        return f", {m.group('cue') or ''}I mean {said}{m.group('end')}"
+
+    return _sub(
+        r",\s*(?P<cue>sorry,\s*|no,\s*)?(?P<said>[A-Za-z][\w ]*?) i mean(?P<end>\s*[.!]?)$",
+        moved,
+        text,
+    )
+
+
+# "…, I mean, the chips, sorry, long day at the dye works.": an apology after the correction
+_SORRY_AFTER30R = re.compile(r",\s*sorry\s*[,;:-]\s*(?P<why>[a-z][a-z' -]*?)(?P<end>\s*[.!]?)$", _F)
+
+
+def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): ', sorry, <words>' closing a text whose words name nothing of the scene
+    and hold no word that counts, chooses, negates or points back is an apology (its reason),
+    taken off: it corrects nothing. Only after a correction already said ('I mean', 'no,'
+    'sorry,' before it), so that 'sorry' cannot be the first cue."""
+    m = _SORRY_AFTER30R.search(text)
+    if m is None or not _inert28(m.group("why"), lexicon) or _TIME30R.search(m.group("why")):
+        return text
+    before = text[: m.start()]
+    if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
+        return text
+    return before + m.group("end")
+
+
+# "The animator wants the chips sent to Person A, …": someone wants X taken to P
+_WANTS_SENT30R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like|asked for|has asked for) "
+    r"(?P<x>(?:the |both |the two |both the )[a-z ]+?) (?:sent|taken|brought|carried|run|passed)"
+    r"(?P<dir>(?: over| across| back| up| down)?) to (?=\S)",
+    _F,
+)
+
+
+def _wants_sent30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'W wants X sent to P …' is 'Take X to P …' when W is someone the scene
+    does not name (who asks, not who gets it: "The animator wants the chips sent to Person A"),
+    X the scene's objects, and no pronoun follows that W could stand for ('… brought over to
+    her': a person of the scene wanting it, the grammar's own reading)."""
+    m = _WANTS_SENT30R.match(text)
+    if m is None or not _objects_only(m.group("x"), lexicon):
+        return text
+    if not _inert28(m.group("who"), lexicon) or _PRONOUN28R.search(text[m.end() :]):
+        return text
+    return f"Take {m.group('x')}{m.group('dir')} to {text[m.end() :]}"
+
+
+def _beg_pardon30r(text: str, _lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'beg pardon' and 'I beg your pardon' opening a correction are the cue
+    'sorry'."""
+    return _sub(
+        r"(?:(?<=[,;.])|^)(\s*)(?:i )?beg (?:your )?pardon(?=\s*,)",
+        lambda m: f"{m.group(1)}{'Sorry' if m.start() == 0 else 'sorry'}",
+        text,
+    )
+
+
+# "Person A has waited long enough for the bottle now"
+_WAITED30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:has|'s|have) (?:waited|been waiting)(?: (?:long enough|ages|"
+    r"all day|a while))? for (?P<x>(?:the |that |this )?[a-z ]+?)(?: now| already)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _waited30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P has waited (long enough) for X (now)' is 'P is waiting for X' (what
+    the grammar reads as P wanting X), P one person and X the scene's objects."""
+    m = _WAITED30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _objects_only(m.group("x"), lexicon):
+        return text
+    return f"{m.group('p')} is waiting for {m.group('x')}{m.group('end')}"
+
+
+# "It's not the apple Person B is after, it's the cup."
+_NOT_CLEFT30R = re.compile(
+    r"^it(?:'s| is) not (?P<said>the [a-z ]+?) (?:is after|wants|needs|asked for|would like|"
+    r"'s after),\s*it(?:'s| is) (?P<y>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_cleft30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "It's not the X P is after, it's the Y" is 'P wants the Y, not the X'
+    (X and Y objects of the scene, P one person)."""
+    m = _NOT_CLEFT30R.match(text)
+    if m is None or not _objects_only(m.group("y"), lexicon):
+        return text
+    words = m.group("said").split(" ")
+    for n in (1, 2):
+        obj, who = " ".join(words[:-n]), " ".join(words[-n:])
+        if _objects_only(obj, lexicon) and _only_person(who, lexicon):
+            return f"{who} wants {m.group('y')}, not {obj}{m.group('end')}"
+    return text
+
+
+# "…, and the bottle, no, leave the bottle.": an object said, then taken back by its name
+_AND_LEAVE30R = re.compile(
+    r",\s*and (?P<x>(?:the )?[a-z]+(?: [a-z]+)??),\s*(?:no|oh no|wait|actually),\s*leave "
+    r"(?P<y>(?:the )?[a-z]+(?: [a-z]+)??)(?: (?:be|alone|there|where it is|out))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _and_leave30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The chips to Person A, and the bottle, no, leave the bottle." — an
+    object added with no verb or person of its own, then taken back by the same name ('leave the
+    bottle'), is said and unsaid: taken off. 'leave it' could take back the whole request (the
+    grammar's refusal stands)."""
+    m = _AND_LEAVE30R.search(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if _ids(m.group("x"), lexicon) != _ids(m.group("y"), lexicon) or not _whole_name(
+        m.group("y"), lexicon, "object"
+    ):
+        return text
+    return text[: m.start()] + m.group("end")
+
+
+# "Stapler into the box, oh no, leave it out on the desk instead."
+_LEAVE_ON30R = re.compile(
+    r"(?P<cue>\bno,\s*)(?:just )?leave (?:it|them) (?:out )?(?P<on>(?:on|onto|in|into) (?:the )?"
+    r"(?P<s>[a-z]+(?: [a-z]+)??))(?P<inst> instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_on30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): after the cue 'no', 'leave it (out) on S (instead)' says where the object
+    goes: '…, no, on S instead', the correction of a place the grammar reads (S a surface)."""
+    m = _LEAVE_ON30R.search(text)
+    if m is None or not _surface_only(m.group("s"), lexicon):
+        return text
+    return f"{text[: m.start()]}{m.group('cue')}{m.group('on')} instead{m.group('end')}"
+
+
+# "The scanner to Mia. Wait, Tom, not Mia."
+_NOT_AGAIN30R = re.compile(
+    r"(?P<cue>(?:^|[,.;!?]\s*)(?:wait|no|sorry|hang on|hold on|oops|actually),\s*)"
+    r"(?P<q>(?:the )?[A-Za-z][\w ]*?),\s*not (?P<p>(?:the )?[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_again30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a correction '…, Tom, not Mia.' that says again what it replaces is the
+    correction '…, Tom.' when Mia is named before the cue, Tom and Mia are each one name of the
+    scene of the same kind, and they differ."""
+    m = _NOT_AGAIN30R.search(text)
+    if m is None:
+        return text
+    q, p = m.group("q"), m.group("p")
+    if not (_one_name30r(q, lexicon) and _one_name30r(p, lexicon)):
+        return text
+    kinds = {r.kind for w in (q, p) for it in _names(w, lexicon) for r in it.refs}
+    if len(kinds) != 1 or _ids(q, lexicon) == _ids(p, lexicon):
+        return text
+    if not _ids(p, lexicon) <= _ids(text[: m.start()], lexicon):
+        return text
+    return f"{text[: m.start('q')]}{q}{m.group('end')}"
+
+
+_WANT_VERBS30R = frozenset({"wants", "needs", "would like", "'d like", "is after", "requires"})
+# "Person A wants the bottle; sorry, did I say wants? Needs."
+_DID_I_SAY30R = re.compile(
+    r"\s*[;,.]\s*(?:sorry|oops|whoops),?\s*did i say (?P<a>[a-z' ]+?)\?\s*(?P<b>[A-Za-z' ]+?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _did_i_say30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "…; sorry, did I say wants? Needs." corrects a verb of wanting by
+    another ('wants', 'needs', 'would like', 'is after', 'requires'): the request means the same
+    either way, so the correction is taken off, when the first word is said before it."""
+    m = _DID_I_SAY30R.search(text)
+    if m is None:
+        return text
+    a, b = m.group("a").lower(), m.group("b").lower()
+    if a not in _WANT_VERBS30R or b not in _WANT_VERBS30R:
+        return text
+    before = text[: m.start()]
+    if not re.search(rf"\b{re.escape(a)}\b", before, _F):
+        return text
+    return before + (m.group("end") or ".")
+
+
+# "We've only got a single bottle going, and Person B is having it."
+_ONLY_GOT30R = re.compile(
+    r"^(?:we've|we have|we) (?:only )?(?:got|have) (?:only |just )?(?:a single|one|the one|just "
+    r"the one) (?P<x>[a-z]+(?: [a-z]+)??)(?: going| left| here| to spare)?,\s*and "
+    r"(?P<p>[A-Za-z][\w ]*?) (?:is having|is getting|should have|should get|can have|gets|is to "
+    r"have) it(?P<end>\s*[.!]?)$",
+    _F,
+)
+# "Only one bottle and only one person here, so she gets it."
+_ONLY_ONE_HERE30R = re.compile(
+    r"^(?:there's )?only one (?P<x>[a-z]+(?: [a-z]+)??) and only one (?:person|human|of you|one "
+    r"person)(?: here| around| about)?,\s*so (?:she|he|they) (?:gets|can have|should have|is "
+    r"having) it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_got30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "We've only got a single X (going), and P is having it" is 'the X to P'
+    (as _only_one29r's "There's only one X, and P should have it"), the scene having one X and P
+    one person; "Only one X and only one person here, so she gets it" is the X to the scene's one
+    person, when it has one person and one X (and the pronoun fits her)."""
+    m = _ONLY_GOT30R.match(text)
+    if m is not None:
+        if _only(m.group("x"), lexicon, "object") and _only_person(m.group("p"), lexicon):
+            return f"The {m.group('x')} to {m.group('p')}{m.group('end')}"
+        return text
+    m = _ONLY_ONE_HERE30R.match(text)
+    if m is None or not _only(m.group("x"), lexicon, "object"):
+        return text
+    if len(lexicon.scene.humans) != 1:
+        return text
+    pid = lexicon.scene.humans[0].id
+    pronoun = re.search(r"\b(she|he|they)\b", m.group(0), _F)
+    if pronoun is None or not _fits(pid, pronoun.group(1).lower(), lexicon):
+        return text
+    return f"The {m.group('x')} to {lexicon.scene.humans[0].name}{m.group('end')}"
+
+
+def _things_here30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'the pair of things here', 'the two items here': 'here' after a word for
+    the scene's things says where they are, which the grammar knows (taken off)."""
+    return _sub(
+        r"\b((?:the pair of|the two|both|both the|all the|the three|the four) (?:things|items|"
+        r"objects|bits)) here\b",
+        r"\1",
+        text,
+    )
+
+
+# "…; the apple stays put."
+_STAYS_PUT30R = re.compile(
+    r"\s*;\s*(?:and )?(?P<x>the [a-z]+(?: [a-z]+)??) (?:stays|can stay|is staying|remains) "
+    r"(?:put|where it is|here|there)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_put30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…; the apple stays put' closing a request that does nothing with the
+    apple asks nothing: taken off (the count of a header before it, 'three items: …', is then
+    that of its list, not of the scene with the apple)."""
+    m = _STAYS_PUT30R.search(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    said = _tasks_of(out, lexicon)
+    if not said or {o for _, o, _ in said} & _ids(m.group("x"), lexicon):
+        return text
+    return out
+
+
+# "Load all three boxes onto the belt for Tom's run."
+_PLACED_FOR30R = re.compile(
+    r"\b(?P<on>(?:on|onto|into|in) (?:the )?[a-z]+(?: [a-z]+)??) for (?P<p>[A-Za-z][\w ]*?)'s "
+    r"(?P<w>[a-z]+(?: [a-z]+)??)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _placed_for30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a placement closed by 'for P's <thing>' (the thing naming nothing in
+    the scene) says what it is for: taken off, when what is left reads as placements only."""
+    m = _PLACED_FOR30R.search(text)
+    if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
+        return text
+    if _TIME30R.search(m.group("w")):
+        return text
+    out = text[: m.start()] + m.group("on") + m.group("end")
+    said = _tasks_of(out, lexicon)
+    return out if said and all(k == "place" for k, _, _ in said) else text
+
+
+def _laid_out30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'lay out / set out X (side by side) on S' is 'lay X on S': 'out' and
+    how the objects are arranged ('side by side', 'next to each other', 'in a row') say nothing
+    the cell can do otherwise."""
+    out = _sub(r"^((?:please )?(?:lay|set|spread)) out (?=(?:the|both|all) )", r"\1 ", text)
+    if out == text:
+        return text
+    return _sub(r" (?:side by side|next to each other|in a row|together)(?= (?:on|onto) )", "", out)
+
+
+# "The kayakers get one apiece, Person A taking the bottle and Person B the chips."
+_APIECE30R = re.compile(
+    r"^(?P<who>(?:the )?[a-z]+|they|the two of them|both of them) (?:get|gets|have|are getting) "
+    r"one (?:thing |item )?(?:apiece|each),\s*(?P<p>[A-Za-z][\w ]*?) taking (?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _apiece30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The kayakers get one apiece, Person A taking the bottle and Person B
+    the chips" is "Person A gets the bottle and Person B the chips" when the list hands each of
+    two people or more one object, and the word before (a role the scene does not name, 'they')
+    names nothing."""
+    m = _APIECE30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if m.group("who").lower() not in ("they", "the two of them", "both of them") and not _inert28(
+        m.group("who"), lexicon
+    ):
+        return text
+    out = f"{m.group('p')} gets {m.group('rest')}"
+    node = _reading(out, lexicon)
+    if not isinstance(node, Group) or node.op != "and":
+        return text
+    said = list(tasks(node))
+    people = [t.target for t in said]
+    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people) or len(said) < 2:
+        return text
+    return out
+
+
+def _off_with30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'pack / send P off with X' is 'give P X' (P a person of the scene or a
+    pronoun, X the scene's objects)."""
+
+    def given(m: re.Match[str]) -> str:
+        who, what = m.group("p"), m.group("x")
+        if not (who.lower() in ("him", "her", "them") or _only_person(who, lexicon)):
+            return m[0]
+        return f"{m.group('lead')}give {who} {what}" if _objects_only(what, lexicon) else m[0]
+
+    return _sub(
+        r"(?P<lead>(?:^|(?<=[,;.])\s*|\bso |\band |\bplease ))(?:pack|send|see) (?P<p>him|her|them|"
+        r"[A-Z][\w]*(?: [A-Z][\w]*)?) off with (?P<x>(?:the|both|all) [a-z ,]+?)(?=\s*[.!]?$)",
+        given,
+        text,
+    )
+
+
+# "Crisps on the shelf, sorry, I meant to Person A."
+_PLACE_TO30R = re.compile(
+    r"^(?P<verb>(?:please )?(?:put|place|set|pop) )?(?P<x>(?:the )?[a-z]+(?: [a-z]+)??) "
+    r"(?:on|onto|in|into) (?:the )?(?P<s>[a-z]+(?: [a-z]+)??),\s*(?:sorry|no|oops|whoops|my "
+    r"mistake),\s*(?:i meant |i mean |no,\s*)?to (?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _place_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Crisps on the shelf, sorry, I meant to Person A." — a placement whose
+    place is corrected to a person ('to P' after the cue) is the object handed to P: X one name
+    of the scene's objects, S a surface, P one person."""
+    m = _PLACE_TO30R.match(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if not _surface_only(m.group("s"), lexicon) or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    x = x if x.lower().startswith("the ") else f"the {x}"
+    return f"Give {x} to {m.group('p')}{m.group('end')}"
+
+
+# "…, doesn't matter which one, but only one."
+_BUT_ONLY_ONE30R = re.compile(r",\s*(?:but )?(?:only|just) (?:the )?one(?P<end>\s*[.!]?)$", _F)
+
+
+def _but_only_one30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): ', but only one' closing a choice of one object among several ('put a
+    box on the conveyor, doesn't matter which one, but only one') says again that one is meant:
+    taken off when what is left reads as exactly one such choice."""
+    m = _BUT_ONLY_ONE30R.search(text)
+    if m is None:
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    node = _reading(out, lexicon)
+    if not isinstance(node, Group) or node.op != "or":
+        return text
+    if not all(isinstance(c, Task) for c in node.children):
+        return text
+    return out if len({t.target for t in tasks(node)}) == 1 else text
+
+
+def _going_over30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'are going over / across to P' is 'are going to P' ('over' says which
+    way, as the grammar reads it after one object) when a name of the scene follows."""
+
+    def gone(m: re.Match[str]) -> str:
+        return f"{m.group(1)} to {m.group(2)}" if _names(m.group(2), lexicon) else m[0]
+
+    return _sub(
+        r"\b((?:are|is) going|go|goes) (?:over|across|round) to ((?:the )?[A-Za-z]+(?: [A-Z])?)\b",
+        gone,
+        text,
+    )
+
+
+# "Bottle on the shelf, no, there isn't one, just give it to Person A."
+_NONE_THERE30R = re.compile(
+    r"^(?P<x>(?:the )?[a-z]+(?: [a-z]+)??) (?:on|onto|in|into) (?:the )?[a-z]+(?: [a-z]+)??,\s*"
+    r"(?:oh )?no,\s*(?:(?:there isn't one|there is not one|there's no (?:such )?[a-z]+|there is no "
+    r"[a-z]+|we don't have one|we haven't got one)\s*[,;]\s*)?(?:just )?(?P<v>give|hand|pass|take|"
+    r"bring) it (?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _none_there30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Bottle on the shelf, no, there isn't one, just give it to Person A." —
+    a verbless placement, then 'no' and a whole request for 'it' (with what is missing said
+    between), is that request for the object: X one name of the scene's objects, and the request
+    naming no other object."""
+    m = _NONE_THERE30R.match(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    if _ids(m.group("rest"), lexicon, "object"):
+        return text
+    x = m.group("x")
+    x = x if x.lower().startswith("the ") else f"the {x}"
+    return f"{m.group('v').capitalize()} {x} {m.group('rest')}"
+
+
+# "The crisps are Person A's; the bottle isn't."
+_OWNED_NOT30R = re.compile(
+    r"^(?P<x>the [a-z]+(?: [a-z]+)??) (?:is|are|'s|'re) (?P<p>[A-Za-z][\w ]*?)'s\s*[;,]\s*(?:but )?"
+    r"(?P<y>the [a-z]+(?: [a-z]+)??) (?:isn't|aren't|is not|are not)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _owned_not30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "The crisps are Person A's; the bottle isn't." — who gets what, said as
+    whose things are whose, in contrast: 'X to P' (X and Y each one name of the scene's objects,
+    different; P one person). Said alone, 'X is P's' may only say whose X is, and is not read."""
+    m = _OWNED_NOT30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x, y = m.group("x"), m.group("y")
+    if not (_whole_name(x, lexicon, "object") and _whole_name(y, lexicon, "object")):
+        return text
+    if _ids(x, lexicon) & _ids(y, lexicon):
+        return text
+    return f"{x[:1].upper()}{x[1:]} to {m.group('p')}{m.group('end')}"
+
+
+# "Person B needs a drink, so the bottle to him"
+_NEEDS_A30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:needs|wants|could use|could do with|would like|fancies) "
+    r"(?:a|an|some|something) (?P<w>[a-z]+(?: [a-z]+)??)(?:,\s*so\s+(?P<so>\S.*)|\s+and (?:will|"
+    r"would|'ll) (?P<v>take|have|accept|settle for) (?P<rest>\S.*))$",
+    _F,
+)
+
+
+def _needs_a30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P needs a drink, so <request>' and 'P wants a drink and will take
+    <objects>': what P needs said as a kind the scene does not name ('a drink', 'a snack'), then
+    what to give: the request, its 'him' / 'her' P (the pronoun fitting P, and the request naming
+    no other person), or 'P will take <objects>'."""
+    m = _NEEDS_A30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon) or not _inert28(m.group("w"), lexicon):
+        return text
+    if _TIME30R.search(m.group("w")):
+        return text
+    p = m.group("p")
+    if m.group("v"):
+        rest = m.group("rest")
+        if not _objects_only(re.split(r",", rest)[0], lexicon):
+            return text
+        return f"{p} will {m.group('v')} {rest}"
+    rest = m.group("so")
+    pronouns = re.findall(r"\b(him|her|them)\b", rest, _F)
+    if len(pronouns) != 1 or not _fits(next(iter(_ids(p, lexicon))), pronouns[0].lower(), lexicon):
+        return text
+    if _ids(rest, lexicon, "human"):
+        return text
+    out = _sub(r"\b(?:him|her|them)\b", p, rest)
+    return out[:1].upper() + out[1:]
+
+
+# "Lena's carrying both plates out, so hand her the pair."
+_PAIR_BACK30R = re.compile(
+    r"^(?P<remark>[^,;.]*?\b(?:both|the two|the pair of) (?P<xs>[a-z]+s)\b[^,;.]*),\s*so\s+"
+    r"(?P<req>[^,;.]*?\b)(?P<pair>the pair|the two|both of them|the two of them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _pair_back30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Lena's carrying both plates out, so hand her the pair." — 'the pair'
+    (or 'the two', 'both of them') closing a request after a remark that says 'both <Xs>' is
+    those Xs, when the scene has exactly two of them."""
+    m = _PAIR_BACK30R.match(text)
+    if m is None or len(_ids(m.group("xs"), lexicon, "object")) != 2:
+        return text
+    if not _only_kind(m.group("xs"), lexicon, "object"):
+        return text
+    return f"{text[: m.start('pair')]}both {m.group('xs')}{m.group('end')}"
+
+
+# "Sam's proofreading and just needs a pen, …", "Bob's a rower and wants the crisps, …"
+_STATE_AND_WANT30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is| has) (?P<said>[a-z][a-z' -]*?) and (?:just |only |also )?"
+    r"(?P<v>needs|wants|would like|'d like|is after|could use)\b",
+    _F,
+)
+
+
+def _state_and_want30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P's <doing or being something> and (just) needs / wants …' is 'P needs
+    / wants …': what P is doing, or is, joined by 'and' to what P wants, is a remark (its words
+    naming nothing in the scene and holding no word that counts, chooses, negates or points
+    back); P one person."""
+    m = _STATE_AND_WANT30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _inert28(m.group("said"), lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')}{text[m.end() :]}"
+
+
+# "Emma's a visiting palaeontologist and not fussy, so hand her either of the cups."
+_AND_NOT_FUSSY30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?P<said>[a-z][a-z' -]*?) and (?P<not>not (?:fussy|"
+    r"bothered|particular|picky))(?=\s*,\s*so\b)",
+    _F,
+)
+# "Noah and Zoe are doing a reading with the linguist; they can have a book apiece."
+_THEY_AFTER30R = re.compile(
+    r"^(?P<pq>[A-Za-z][\w ]*? and [A-Za-z][\w ]*?) (?:are|'re) (?P<said>[a-z][a-z' -]*?)\s*[;,]\s*"
+    r"(?:so )?they (?P<rest>(?:can|could|should|will|each|both|get|have)\b.*)$",
+    _F,
+)
+
+
+def _remark_then30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): a remark about the people a request is for, said first: 'P's <a role>
+    and not fussy, so …' is "P's not fussy, so …" (the remark's words naming nothing in the
+    scene); 'P and Q are <doing something>; they can have …' is 'P and Q can have …' (P and Q
+    two people of the scene, the remark naming nothing)."""
+    m = _AND_NOT_FUSSY30R.match(text)
+    if m is not None:
+        if _only_person(m.group("p"), lexicon) and _inert28(m.group("said"), lexicon):
+            return f"{m.group('p')}'s {m.group('not')}{text[m.end() :]}"
+        return text
+    m = _THEY_AFTER30R.match(text)
+    if m is None or not _inert28(m.group("said"), lexicon):
+        return text
+    p, q = re.split(r" and ", m.group("pq"), maxsplit=1)
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon) or _ids(m.group("rest"), lexicon, "human"):
+        return text
+    return f"{m.group('pq')} {m.group('rest')}"
+
+
+# "Emma needs something to stir her tea; the spoon, mind, not the sponge."
+_SOMETHING_TO30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>needs|wants|would like) something"
+    r"(?: to (?P<why>[a-z][a-z' ]*?))?\s*[;:]\s*(?P<rest>(?:the|a|an) \S.*)$",
+    _F,
+)
+
+
+def _something_to30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'P needs something to stir her tea; the spoon, (mind,) not the sponge'
+    is 'P needs the spoon, …': what the thing is for (naming nothing in the scene) and then what
+    it is, the first words after the mark naming the scene's objects."""
+    m = _SOMETHING_TO30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if m.group("why") and (
+        not _names_nothing(m.group("why"), lexicon) or _TIME30R.search(m.group("why"))
+    ):
+        return text
+    rest = m.group("rest")
+    if not _objects_only(re.split(r"[,;]", rest)[0], lexicon):
+        return text
+    return f"{m.group('p')} {m.group('v')} {rest}"
+
+
+# "…, he's the only one who hasn't eaten.", "…, she's the only one diving."
+_ONLY_ONE_WHO30R = re.compile(
+    r",\s*(?P<who>she|he|they)(?:'s| is|'re| are) the only (?:one|ones|person|people)"
+    r"(?P<said>(?: [a-z][a-z' -]*?)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+_REMARK_KEEP30R = re.compile(
+    r"\b(?:all|every|each|both|either|any|or|then|it|them|first|last|next|instead|except|give|"
+    r"hand|take|put|bring)\b",
+    _F,
+)
+
+
+def _only_one_who30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): '…, he's the only one who hasn't eaten' closing a request says why the
+    one person the request hands things to gets them: taken off, when its words name nothing in
+    the scene and hold no word that chooses, counts or asks, and the pronoun fits that person;
+    'and for nobody else' before it is ', nobody else'."""
+    m = _ONLY_ONE_WHO30R.search(text)
+    if m is None or not _names_nothing(m.group("said"), lexicon):
+        return text
+    if _REMARK_KEEP30R.search(m.group("said")):
+        return text
+    out = text[: m.start()] + (m.group("end") or ".")
+    out = _sub(r"\band for (?=nobody else\b|no one else\b|no-one else\b)", ", ", out)
+    said = _tasks_of(out, lexicon)
+    if not said or any(k != "deliver" for k, _, _ in said):
+        return text
+    people = {t for _, _, t in said}
+    if len(people) != 1 or not _fits(next(iter(people)), m.group("who").lower(), lexicon):
+        return text
+    return out
+
+
+# "Emma isn't bothered which cup, either will do, …"
+_WHICH_KIND30R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:isn't|is not|'s not|doesn't mind|does not mind|doesn't care|does "
+    r"not care)(?: (?:bothered|fussed|fussy|particular))? which (?P<x>[a-z]+)\s*,\s*"
+    r"(?P<will>(?:either|any)(?: one)? (?:will do|is fine|'ll do))",
+    _F,
+)
+# "Whichever thing's nearer your arm, that's the one for Person A."
+_WHICHEVER_FIRST30R = re.compile(
+    r"^whichever (?P<x>[a-z]+)(?:'s| is) (?P<how>nearer|closer|nearest|closest|handier|easier to "
+    r"reach)(?: (?:to )?(?:your arm|the arm|you|the robot))?\s*,\s*that(?:'s| is) the one for "
+    r"(?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _which_kind30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): "Emma isn't bothered which cup, either will do, …" is 'Give Emma a cup,
+    either will do, …' (the scene having two cups or more, P one person); "Whichever thing's
+    nearer your arm, that's the one for Person A" is 'Give Person A whichever thing is nearer'
+    (P one person; the grammar reads the kind, 'thing' for any object)."""
+    m = _WHICH_KIND30R.match(text)
+    if m is not None:
+        if not _only_person(m.group("p"), lexicon):
+            return text
+        if len(_ids(m.group("x"), lexicon, "object")) < 2:
+            return text
+        if not _only_kind(m.group("x"), lexicon, "object"):
+            return text
+        return f"Give {m.group('p')} a {m.group('x')}, {m.group('will')}{text[m.end() :]}"
+    m = _WHICHEVER_FIRST30R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"Give {m.group('p')} whichever {m.group('x')} is nearer{m.group('end')}"
+
+
+# "There's the only bottle here, sat by the arm; over to Person A with it."
+_THERES_THE30R = re.compile(
+    r"^there(?:'s| is) (?:the only|only the|the one|just the|the) (?P<x>[a-z]+(?: [a-z]+)??)"
+    r"(?: here| there)?(?:\s*,\s*(?P<said>[a-z][a-z' ]*?))?\s*[;:]\s*(?P<rest>\S.*)$",
+    _F,
+)
+_WITH_IT30R = re.compile(
+    r"^(?P<dir>over|across|up|down|round) to (?P<p>[A-Za-z][\w ]*?) with (?P<x>it|them|the "
+    r"[a-z]+(?: [a-z]+)??)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _theres_the30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'Over to P with it' is 'Take it over to P' (P one person); "There's the
+    only bottle here, sat by the arm; <request for 'it'>" is that request for the bottle (the
+    scene having one, what is said of it naming nothing else, the request naming no object and
+    one 'it')."""
+    m = _THERES_THE30R.match(text)
+    if m is not None:
+        x, rest = m.group("x"), m.group("rest")
+        if not _only(x, lexicon, "object"):
+            return text
+        if m.group("said") and (
+            not _names_nothing(m.group("said"), lexicon) or _REMARK_KEEP30R.search(m.group("said"))
+        ):
+            return text
+        if len(re.findall(r"\bit\b", rest, _F)) != 1 or _ids(rest, lexicon, "object"):
+            return text
+        text = _sub(r"\bit\b", f"the {x}", rest)
+        text = text[:1].upper() + text[1:]
+    w = _WITH_IT30R.match(text)
+    if w is None or not _only_person(w.group("p"), lexicon):
+        return text
+    return f"Take {w.group('x')} {w.group('dir')} to {w.group('p')}{w.group('end')}"
+
+
+# "The cashier wants every box except the large one sent down the belt."
+_WANTS_DOWN30R = re.compile(
+    r"^(?P<who>[A-Za-z][\w' ]*?) (?:wants|needs|would like) (?P<x>(?:the|every|all|both) [a-z ]+?) "
+    r"(?:sent|put|moved|run|loaded) (?:down|along|onto|on|up) (?:the )?(?P<s>[a-z]+)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_down30r(text: str, lexicon: Lexicon) -> str:
+    """Session 30 (12r): 'W wants X sent down the belt' is 'Put X on the belt' (W someone the
+    scene does not name, or one person of it: who asks; S a surface)."""
+    m = _WANTS_DOWN30R.match(text)
+    if m is None or not _surface_only(m.group("s"), lexicon):
+        return text
+    who = m.group("who")
+    if not (_inert28(who, lexicon) or _only_person(who, lexicon)):
+        return text
+    return f"Put {m.group('x')} on the {m.group('s')}{m.group('end')}"
+
+
+_STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _no_odds30r,
+    _whichever_of30r,
+    _each_role30r,
+    _lot_is30r,
+    _every_last30r,
+    _pronoun_is_to30r,
+    _only_not30r,
+    _only_who30r,
+    _leaving_out30r,
+    _rather_than30r,
+    _rather_after30r,
+    _i_mean_after30r,
+    _sorry_after30r,
+    _wants_sent30r,
+    _beg_pardon30r,
+    _waited30r,
+    _not_cleft30r,
+    _and_leave30r,
+    _leave_on30r,
+    _not_again30r,
+    _did_i_say30r,
+    _only_got30r,
+    _things_here30r,
+    _stays_put30r,
+    _placed_for30r,
+    _laid_out30r,
+    _apiece30r,
+    _off_with30r,
+    _place_to30r,
+    _but_only_one30r,
+    _going_over30r,
+    _none_there30r,
+    _owned_not30r,
+    _needs_a30r,
+    _pair_back30r,
+    _state_and_want30r,
+    _remark_then30r,
+    _something_to30r,
+    _only_one_who30r,
+    _which_kind30r,
+    _theres_the30r,
+    _wants_down30r,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -13445,6 +14443,8 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 30 (12r): blind28's choices, counts, exclusions and corrections
+    *_STEPS30R,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,
