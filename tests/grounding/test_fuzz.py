@@ -312,6 +312,20 @@ def test_no_speaker_want_of_an_object_the_entry_names(text: str) -> None:
         assert "speaker" not in [v.form for v in _references(entry, TWO, seed)]
 
 
+def test_no_near_opener_wants_an_object_the_entry_names() -> None:
+    # "We need the knife, not the knife, the tongs, for Marco" (causes12, seed 32, session 30):
+    # the speaker's want of the knife the entry takes back is no second request
+    entry = _entry("kitchen", "Not the knife, the tongs, for Marco", "tongs>A")
+    made = [
+        v.text
+        for seed in range(40)
+        for v in fuzz.variants("t", entry, KITCHEN, random.Random(seed))
+        if v.must == "refuse"
+    ]
+    assert made and not any(t.startswith(("We need the knife", "I want the knife")) for t in made)
+    assert any(t.startswith(("We need the", "I want the")) for t in made)  # other objects
+
+
 def test_a_refusal_without_the_readings_is_unclear() -> None:
     v = fuzz.Variant("t", "cell", "Give Bob the mug.", None, "refuse", "references", MUGS)
     assert fuzz.verdict(v, CELL) == "refused"  # the refusal names both mugs

@@ -125,7 +125,6 @@ KNOWN_MISSES = frozenset(
         "One of the snacks for Person B: the chips or the apple",
         "Lily wants the two blocks to bang together",
         "Both plates need to go on the worktop before service",
-        "Mia wants the two smaller boxes",
         "Clear everything onto the belt, leave the boxes where they are",
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
         "No red pen for Sam, one of the other two will do",
@@ -137,7 +136,6 @@ KNOWN_MISSES = frozenset(
         "Both people get an item each: the chips for Person B and the bottle for Person A",
         "One of the drinks for Person A: the bottle or the cup",
         "Both cups need to go in the sink before lunch",
-        "Tom wants the two bigger boxes",
         "Clear everything into the locker, leave the spanners where they are",
         "No black pen for Priya, one of the other two will do",
         "Load Jess up with the spanners, just not the small one",
@@ -196,7 +194,6 @@ KNOWN_MISSES = frozenset(
         "Apple, Person A. Chips, Person B. Cup, Person A. Bottle, Person B. Four deliveries, "
         "what a display!",
         "Either the notebook or the stapler shall be given to Priya, at your discretion.",
-        "Aye, both of the lesser boxes, small and medium, go aboard the pallet.",
         "Bottle or crisps, any one also can, give Bob.",
         "Each patient, gently, receives one blanket, whichever colour.",
         "Give unto Person B whichever thou wilt of the cup or the apple.",
@@ -216,7 +213,6 @@ KNOWN_MISSES = frozenset(
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
         "Cart the grey blanket over to Mr Lee.",
-        "Both of the smaller boxes to Tom.",
         "Both plates are for Marco this morning!",
         "Everything except the apple is going home with Person B tonight, folks!",
         "Forceps, sorry, I mean the spoon, to Omar.",
@@ -286,7 +282,6 @@ KNOWN_MISSES = frozenset(
         "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
         "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
         "Either book can go on the desk, I just need one out for the lesson.",
-        "One of the smaller boxes onto the belt, the small or the medium, your pick.",
         "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
         "They both want something. Bottle over to Person A please, and cup across to Person B.",
         "The apple can go to either person, I'm not bothered which of them.",
@@ -301,8 +296,6 @@ KNOWN_MISSES = frozenset(
         "Mr Novak wants a plate — the white one, mind, not the blue.",
         "The blanket on the trolley stays there; Mrs Khan gets the other one.",
         "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
-        "Bob doesn't want the bottle at all, it's the crisps he's after.",
-        "Alice doesn't want the crisps. The bottle's the one for her.",
         "Person A will take anything at all as long as it isn't the cup.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
@@ -368,7 +361,6 @@ KNOWN_MISSES = frozenset(
         "Person B reckons she fancies the chilps now.",
         "Over to Person B with the bpttle, please.",
         "Would Person B like the apple? Give it to her, yes?",
-        "What about taking the bottle across to Person A, eh?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
@@ -406,10 +398,8 @@ KNOWN_MISSES = frozenset(
         "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
-        "The two smaller boxes onto the conveyor.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
-        "Don't give Bob the bottle; he gets the crisps.",
         "Nothing for Person A today; the chips go to Person B.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
@@ -432,7 +422,6 @@ KNOWN_MISSES = frozenset(
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
-        "How about letting Person A have the bottle, seeing as she's the thirsty one?",
         "Any way the apple could find its way to Person A?",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
@@ -522,7 +511,6 @@ KNOWN_MISSES = frozenset(
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
-        'Whichever box is smallest goes to Tom.',
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
@@ -534,7 +522,6 @@ KNOWN_MISSES = frozenset(
         'Give Person A the chips but not the apple, and not the cup either.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
-        "Mrs Khan doesn't want the grey blanket, so it's the other one for her.",
         'Give Ava the blocks, not the green one, only red.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',

@@ -935,6 +935,7 @@ WORDS: dict[str, str] = {
     "at": "on",
     "atop": "on",
     "upon": "on",  # formal: "place the apple upon the shelf"
+    "aboard": "on",  # session 30 (12s): "both boxes go aboard the pallet"
     "instead": "instead",
     "nearest": "nearest",
     "closest": "nearest",

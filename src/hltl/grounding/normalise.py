@@ -560,7 +560,9 @@ def _people(text: str, lexicon: Lexicon) -> str:
     # "Mr Novak he want lemon": a pronoun repeating the subject
     for h in humans:
         for alias in (*h.aliases, h.name):
-            text = _sub(rf"^({re.escape(alias)}),? (?:he|she|they) ", r"\1 ", text)
+            text = _sub(
+                rf"^({re.escape(alias)}),? (?:he|she|they) ", _said_again30s(h.id, lexicon), text
+            )
     # "You bring for the doctor the bowl"
     text = _sub(r"^you (?=give|bring|hand|pass|take|put|place|fetch)", "", text)
     return _sub(
@@ -572,6 +574,16 @@ def _people(text: str, lexicon: Lexicon) -> str:
         ),
         text,
     )
+
+
+def _said_again30s(pid: str, lexicon: Lexicon) -> Callable[[re.Match[str]], str]:
+    """Session 30 (12s): 'P, he …' says P again, unless P's title rules the pronoun out ("Mr
+    Lee, she gets the jug" speaks to Mr Lee of someone else)."""
+
+    def again(m: re.Match[str]) -> str:
+        return m.group(1) + " " if _fits(pid, m.group(0), lexicon) else m.group(0)
+
+    return again
 
 
 def _one_thing(words: str, lexicon: Lexicon) -> bool:
@@ -744,6 +756,10 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         return text  # a question ("u there? give …") is not a remark
     if any(not _plain_words(c, lexicon) for c in said):
         return text  # a word neither common nor the scene's may be a name it does not know
+    if any(_picks_object(c, lexicon) for c in said):
+        # session 30 (12s): "Give Alice a mug, it's the red one" names which mug: taken off, it
+        # had been read as either mug
+        return text
     if any(re.search(_TASK_WORDS, c, _F) and not _ids(c, lexicon, "object") for c in said):
         return text  # "Bob gets what's left" asks without naming: not a remark
     people = [it for c in said for it in _names(c, lexicon) if it.refs[0].kind == "human"]
@@ -1067,12 +1083,17 @@ def _labels(text: str, lexicon: Lexicon) -> str:
         # "Not urgent:" / "No rush -" are labels; "Cancel this:" is not
         or (_NEGATIONS.search(label) and not re.match(r"^(?:not|no) [a-z]+$", label, _F))
         or _ORDER_WORDS.search(label)
+        or _LATER30S.search(label)
         or re.search(_TASK_WORDS, label, _F)
         or not _plain_words(_NOTE_WORDS.sub(" ", label), lexicon)
     ):
         return text
     return m.group(2)
 
+
+# session 30 (12s): a label naming a later time than now ("Tomorrow's list: Alice, cup.") puts
+# what follows off; it is not dropped, and the instruction is refused for the time
+_LATER30S = re.compile(r"\b(?:tomorrow|later|next (?:week|month|shift|time)|weekend)\b", _F)
 
 # words that head a note and are in no list of common words
 _NOTE_WORDS = re.compile(r"\b(?:handover|hand-over|fyi|memo|todo|to-do|reminder|ps|nb|re)\b", _F)
@@ -4493,8 +4514,33 @@ def _inert_sentence(sentence: str, lexicon: Lexicon) -> bool:
         bool(re.search(r"[a-z]", plain, _F))
         and not _SENTENCE_HELD.search(plain)
         and not _POINTING.search(plain)
+        and not _asks30s(plain)
         and _names_nothing(plain, lexicon)
     )
+
+
+# Session 30 (12s): a sentence shaped as a request is no remark, whatever it names: a thing said
+# alone ('The spanner.', 'A cloth, please.'), someone wanting or getting a thing ('The chef
+# wants the jug.'), a thing with its recipient or place ('The jug to the chef.', 'For the chef,
+# the jug.'). Naming nothing of the scene, it had been taken off as inert, and the request
+# beside it read as if it were all that was asked; kept, it is refused for the unknown name.
+_ASKS30S = re.compile(
+    r"^\s*(?:the|a|an|some|that|this|these|those)\s+[a-z][a-z'-]*(?:\s+[a-z][a-z'-]*){0,2}"
+    r"\s*(?:,?\s*please)?\s*[.!]*\s*$|"
+    r"\b(?:wants|needs|would like|'d like|is after|asked for|asks for|is asking for|gets|is "
+    r"getting|is to get|should get|should have|can have|could have|will have|is due)\s+(?:the|a|"
+    r"an|some|his|her|their|my|your|our|this|that|these|those)\b|"
+    # "The jug to the chef.", "A towel for the guest.", "For the chef, the jug."
+    r"^\s*(?:the|a|an|some|that|this|these|those)\s+[a-z][a-z'-]*(?:\s+[a-z][a-z'-]*)?\s+(?:to|"
+    r"for|on|onto|into|over to|across to)\s+(?:the|a|an|my|our|your|his|her)\s+[a-z]|"
+    r"^\s*for\s+(?:the|a|an|my|our|your|his|her)\s+[a-z]+(?:\s+[a-z]+)?\s*[,:]\s*(?:the|a|an|"
+    r"some)\s+[a-z]",
+    _F,
+)
+
+
+def _asks30s(sentence: str) -> bool:
+    return _ASKS30S.search(sentence) is not None
 
 
 def _inert_sentences(text: str, lexicon: Lexicon) -> str:
@@ -5923,7 +5969,7 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"\b(the [a-z ]+?),\s*(?:those|these|they|it|that) (go|goes|are|is)\b", fronted, out)
 
     def resumed(m: re.Match[str]) -> str:
-        if not _only_person(m.group(1), lexicon):
+        if not _only_person(m.group(1), lexicon) or not _resumes30s(m, lexicon):
             return m.group(0)
         return f"{m.group(1)} {m.group(2)}"
 
@@ -5939,6 +5985,16 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
         r"(?:it|them)\b",
         found,
         out,
+    )
+
+
+def _resumes30s(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Session 30 (12s): whether the pronoun of 'P, she gets …' may say P again: not when P's
+    title says otherwise ("Mr Lee, she gets the jug" speaks to Mr Lee of someone else, and had
+    been read as the jug for Mr Lee)."""
+    return all(
+        _fits(pid, m.group(0)[len(m.group(1)) :], lexicon)
+        for pid in _ids(m.group(1), lexicon, "human")
     )
 
 
@@ -7367,6 +7423,14 @@ def _asks_nothing29(words: str, lexicon: Lexicon) -> bool:
     )
 
 
+def _first_name30s(words: str) -> bool:
+    """Session 30 (12s): whether ``words`` is a first name said alone ('Dave'): before a colon it
+    says who gets what follows ("Give Bob the cup. Dave: apple." had read the apple as Bob's), no
+    heading to take off."""
+    said = words.strip().split()
+    return len(said) == 1 and said[0][:1].isupper() and said[0].lower() in first_names()
+
+
 def _remarks29(text: str, lexicon: Lexicon) -> str:
     """Session 29: remarks that ask nothing (above) taken off: whole sentences and parts before a
     colon, and comma parts opening or closing a sentence."""
@@ -7379,7 +7443,11 @@ def _remarks29(text: str, lexicon: Lexicon) -> str:
             continue
         if _remark29(sent, lexicon, "") or _typing_from29(sent, lexicon):
             continue
-        if sep.strip().startswith(":") and _asks_nothing29(sent, lexicon):
+        if (
+            sep.strip().startswith(":")
+            and _asks_nothing29(sent, lexicon)
+            and not _first_name30s(sent)
+        ):
             continue  # "Quick list from the botanist: …": a heading
         pieces = re.split(r"\s*,\s*", sent)
         while len(pieces) > 1 and _remark29(pieces[-1], lexicon, "back to "):
@@ -12974,6 +13042,305 @@ def _cleft_not29r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 30 (12s): sizes compared ------------------------------------------------------------
+#
+# A scene may tell objects of one kind apart by size words in their names ('small box', 'medium
+# box', 'large box'). 'the smallest box', 'the two smaller boxes', 'both of the bigger boxes',
+# 'one of the smaller boxes', 'whichever box is smallest' pick them out by that order (each had
+# been refused for an unknown name). Only where every object of the kind has a size word and no
+# two share a rank; 'the smaller box' is one of two only, 'the smaller boxes' (no number) the two
+# of three that are not the largest (or not the smallest); a number as large as the kind, or
+# anything else, is left (and refused).
+_SIZE_RANKS30S = {
+    "tiny": 0,
+    "little": 1,
+    "small": 1,
+    "mini": 1,
+    "medium": 2,
+    "middle": 2,
+    "medium-sized": 2,
+    "mid-sized": 2,
+    "middle-sized": 2,
+    "large": 3,
+    "big": 3,
+    "huge": 4,
+}
+_COMPARED30S = {
+    "smaller": "less",
+    "lesser": "less",
+    "littler": "less",
+    "bigger": "more",
+    "larger": "more",
+    "smallest": "least",
+    "littlest": "least",
+    "tiniest": "least",
+    "biggest": "most",
+    "largest": "most",
+}
+_COUNTS30S = {"two": 2, "both": 2, "three": 3}
+
+
+def _ranked30s(category: str, lexicon: Lexicon) -> list[str] | None:
+    """The objects of ``category``, smallest first, when each has one size word in its names and
+    no two share a rank; else None."""
+    ranks: dict[str, int] = {}
+    for o in lexicon.scene.objects:
+        if o.category != category:
+            continue
+        said = {
+            _SIZE_RANKS30S[w]
+            for n in (o.id.replace("_", " "), *o.aliases)
+            for w in n.lower().split()
+            if w in _SIZE_RANKS30S
+        }
+        if len(said) != 1:
+            return None
+        ranks[o.id] = _rank30s(o.id, lexicon)
+    if len(ranks) < 2 or len(set(ranks.values())) != len(ranks):
+        return None
+    return sorted(ranks, key=lambda i: ranks[i])
+
+
+_JOINS30S = frozenset({"the", "and", "or"})
+
+
+def _rank30s(oid: str, lexicon: Lexicon) -> int:
+    o = next(x for x in lexicon.scene.objects if x.id == oid)
+    return next(
+        _SIZE_RANKS30S[w]
+        for n in (o.id.replace("_", " "), *o.aliases)
+        for w in n.lower().split()
+        if w in _SIZE_RANKS30S
+    )
+
+
+def _object_name30s(oid: str, lexicon: Lexicon) -> str:
+    """A name of object ``oid`` that names it alone ('the small box')."""
+    o = next(x for x in lexicon.scene.objects if x.id == oid)
+    for a in (*o.aliases, o.id.replace("_", " ")):
+        if _ids(a, lexicon) == {oid}:
+            return f"the {a}"
+    return f"the {oid}"
+
+
+def _sizes30s(text: str, lexicon: Lexicon) -> str:
+    if not re.search(r"(?:er|est)\b", text, _F) or not any(w in text.lower() for w in _COMPARED30S):
+        return text
+    words = "|".join(_COMPARED30S)
+    before = text
+    chosen: list[list[int]] = []
+    text = _sub(
+        rf"\b(?:(?P<count>the two|the three|two|three|both(?: of the| the)?)\s+|(?P<one>one of "
+        rf"the)\s+|(?P<the>the)\s+)?(?P<cmp>{words})\s+(?P<noun>[a-z]+)\b"
+        # "…, small and medium, …": the sizes said again after them
+        rf"(?P<again>\s*,\s*{_AGAIN30S}\s*,)?",
+        lambda m: _compared30s(m, lexicon, chosen),
+        text,
+    )
+    for ranks in chosen:
+        # "One of the smaller boxes onto the belt, the small or the medium, your pick": the sizes
+        # said again later in the sentence
+        for m in _rx(rf",\s*(?P<again>{_AGAIN30S})\s*(?=[,.!?;]|$)").finditer(text):
+            said = _sizes_said30s(m.group("again"))
+            if said is None:
+                continue
+            if said != ranks:
+                return before  # the sizes said again are others: which is meant?
+            text = text[: m.start()] + text[m.end() :]
+            break
+    # "Whichever box is smallest goes to Tom": the one of that size
+    return _sub(
+        r"\bwhichever\s+(?P<noun>[a-z]+)\s+is\s+(?:the\s+)?(?P<cmp>smallest|biggest|largest)\b",
+        lambda m: _compared30s(m, lexicon, whichever=True),
+        text,
+    )
+
+
+def _kind_ranked30s(noun: str, lexicon: Lexicon) -> tuple[list[str], bool] | None:
+    """The objects a kind's name ``noun`` ('box', 'boxes') names, smallest first, and whether it
+    is said in the plural; None unless it names all of one category, ranked by size."""
+    ids = _ids(noun, lexicon, "object")
+    cats = {o.category for o in lexicon.scene.objects if o.id in ids}
+    if len(cats) != 1:
+        return None
+    category = cats.pop()
+    order = _ranked30s(category, lexicon)
+    if order is None or set(order) != ids:
+        return None
+    return order, noun.lower() != category.lower()
+
+
+# sizes said again: 'small and medium', 'the small or the medium'
+_AGAIN30S = r"(?:the\s+)?[a-z-]+(?:(?:\s*,\s*|\s+(?:and|or)\s+)(?:the\s+)?[a-z-]+)+"
+
+
+def _sizes_said30s(words: str) -> list[int] | None:
+    """The ranks ``words`` says, sorted ('small and medium': [1, 2]); None unless each word
+    other than 'the', 'and', 'or' is a size word."""
+    said = [w for w in re.findall(r"[a-z-]+", words.lower()) if w not in _JOINS30S]
+    if not all(w in _SIZE_RANKS30S for w in said):
+        return None
+    return sorted(_SIZE_RANKS30S[w] for w in said)
+
+
+def _compared30s(
+    m: re.Match[str],
+    lexicon: Lexicon,
+    chosen: list[list[int]] | None = None,
+    *,
+    whichever: bool = False,
+) -> str:
+    """What 'the two smaller boxes' (``m``) names, said by the objects' own names; ``m`` itself
+    where that is not one reading."""
+    kind = _kind_ranked30s(m.group("noun"), lexicon)
+    if kind is None:
+        return m.group(0)
+    order, plural = kind
+    way = _COMPARED30S[m.group("cmp").lower()]
+    ranked = order if way in ("less", "least") else order[::-1]
+    if whichever:
+        return m.group(0) if plural else _object_name30s(ranked[0], lexicon)
+    count_word = (m.group("count") or "").lower().split()
+    count = next((_COUNTS30S[w] for w in count_word if w in _COUNTS30S), 0)
+    if not plural:
+        if count or m.group("one") or not m.group("the"):
+            return m.group(0)
+        if way in ("least", "most") or len(order) == 2:
+            return _object_name30s(ranked[0], lexicon)  # 'the smallest box', 'the bigger box'
+        return m.group(0)
+    if way in ("least", "most"):
+        return m.group(0)  # 'the smallest boxes'
+    if not count:
+        if len(order) != 3 or not (m.group("the") or m.group("one")):
+            return m.group(0)
+        count = 2  # 'the smaller boxes' of three: the two that are not the largest
+    if count >= len(order):
+        return m.group(0)
+    names = [_object_name30s(i, lexicon) for i in ranked[:count]]
+    ranks = sorted(_rank30s(i, lexicon) for i in ranked[:count])
+    if m.group("again") and _sizes_said30s(m.group("again").strip(" ,")) != ranks:
+        return m.group(0)  # "the two smaller boxes, small and large, …": which is meant?
+    if chosen is not None and not m.group("again"):
+        chosen.append(ranks)
+    if m.group("one"):
+        return "either " + " or ".join(names)
+    return ", ".join(names[:-1]) + " and " + names[-1]
+
+
+# -- session 30 (12s): a negated want, then what is wanted ------------------------------------
+#
+# "Don't give Bob the bottle; he gets the crisps.", "Alice doesn't want the crisps. The bottle's
+# the one for her.", "Bob doesn't want the bottle at all, it's the crisps he's after.", "Mrs Khan
+# doesn't want the grey blanket, so it's the other one for her.": the grammar reads a negated
+# request and, after a comma, what is given instead ("Alice doesn't want the crisps, give her the
+# bottle"); said with a full stop or a semicolon between them, with 'at all', or with what is
+# wanted said as a cleft, each had been refused. Only a text opening with the negated request,
+# and after a stop or a semicolon only a sentence naming an object ("Alice doesn't need the
+# chips. Bob does." stays refused, session 8);
+# the cleft only with a pronoun and objects of the scene; the grammar then reads (or refuses)
+# the two as it reads them with a comma.
+_NOT_WANTED30S = re.compile(
+    r"^(?P<neg>(?:[A-Z][\w ]*? (?:doesn't|does not|won't|will not|didn't|did not) (?:want|need)|"
+    r"(?:don't|do not) (?:give|hand|pass|bring|take|send|deliver)) [^.;,!?]+?)(?:\s+at all)?"
+    r"\s*(?P<sep>[.;,])\s*(?P<rest>\S.*)$",
+    _F,
+)
+_CLEFTS30S = (
+    # "it's the crisps he's after" / "it's the crisps she wants"
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) (?:that |which )?"
+        r"(?P<p>he|she)(?:'s| is) (?:after|wanting)\b",
+        r"\g<p> wants \g<o>",
+    ),
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) (?:that |which )?"
+        r"(?P<p>he|she) (?:wants|needs)\b",
+        r"\g<p> wants \g<o>",
+    ),
+    # "so it's the other one for her", "the bottle's the one for her"
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?:it's|it is) (?P<o>(?:the|that) [\w ]+?) for "
+        r"(?P<p>him|her)\b",
+        r"give \g<p> \g<o>",
+    ),
+    (
+        r"^(?P<so>(?:so|but|no),?\s+)?(?P<o>the [\w ]+?)(?:'s| is) the one (?:for|meant for) "
+        r"(?P<p>him|her)\b",
+        r"give \g<p> \g<o>",
+    ),
+)
+
+
+def _not_wanted30s(text: str, lexicon: Lexicon) -> str:
+    if "n't" not in text and " not " not in text.lower():
+        return text
+    m = _NOT_WANTED30S.match(text)
+    if m is None or not _ids(m.group("neg"), lexicon, "object"):
+        return text
+    rest = m.group("rest")
+    if m.group("sep") != "," and not _ids(rest, lexicon, "object") and "other" not in rest.lower():
+        return text  # "Alice doesn't need the chips. Bob does.": said alone, refused (session 8)
+    for pattern, repl in _CLEFTS30S:
+        c = _rx(pattern).match(rest)
+        if c is None:
+            continue
+        said = c.group("o")
+        if not (_objects_only(said, lexicon) or re.fullmatch(r"the other(?: one)?", said, _F)):
+            return text
+        rest = c.expand(repl) + rest[c.end() :]
+        break
+    out = f"{m.group('neg')}, {rest}"
+    return text if " ".join(out.split()) == " ".join(text.split()) else out
+
+
+# -- session 30 (12s): a suggestion said with 'what about' -----------------------------------
+#
+# "What about taking the bottle across to Person A, eh?" asks as "How about taking …?" does (the
+# grammar's filler 'how about' before a verb): 'what about' before the -ing form of a verb of the
+# grammar is said so; "How / what about letting Person A have the bottle" is 'how about giving
+# Person A the bottle' (one person named between). 'What about Bob?' or 'what about the
+# bottle?' (no verb) are left, and refused.
+_WHAT_ABOUT30S = re.compile(
+    r"\b(?:what|how) about (?:letting (?P<who>[\w ]+?) have|(?P<verb>[a-z]+ing))\b", _F
+)
+
+
+def _what_about30s(text: str, lexicon: Lexicon) -> str:
+    if "about" not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if m.group("who") is not None:
+            who = m.group("who")
+            return f"how about giving {who}" if _only(who, lexicon, "human") else m.group(0)
+        verb = m.group("verb")
+        return f"how about {verb}" if verb.lower() in VERBS else m.group(0)
+
+    return _WHAT_ABOUT30S.sub(said, text)
+
+
+# -- session 30 (12s): a person said to be 'the <word> one' ----------------------------------
+#
+# "…, seeing as she's the thirsty one": 'the thirsty one' is the person the pronoun says, not
+# an object ('one' read as an object had refused it: "no object called 'thirsty one'"). Closing
+# the text after a comma, with 'he' / 'she' / 'they' and 'is', a word that tells no objects of
+# the scene apart ('the red one' is left), and nothing after it, it is a reason, taken off.
+_PERSON_ONE30S = re.compile(
+    r",\s*(?:(?:seeing as|since|as|because|cos|'cause)\s+)?(?:he|she|they)(?:'s| is|'re| are) "
+    r"the (?P<adj>[a-z]+) ones?\s*(?=[.!?]*\s*$)",
+    _F,
+)
+
+
+def _person_one30s(text: str, lexicon: Lexicon) -> str:
+    if " one" not in text.lower():
+        return text
+    m = _PERSON_ONE30S.search(text)
+    if m is None or m.group("adj").lower() in _adjectives(lexicon) or _names(m.group(0), lexicon):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
 # -- session 30 (12r): blind28's choices, counts, exclusions and corrections ------------------
 # Each rule below rewrites one construction into the form the grammar reads, and leaves the text
 # as it was when what the construction presupposes (one person, the scene's objects, a count)
@@ -14132,6 +14499,11 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _included27r,
     _that_there27r,
     _said_aside27r,
+    # session 30 (12s)
+    _sizes30s,
+    _not_wanted30s,
+    _what_about30s,
+    _person_one30s,
     # session 28 (12r): blind26's kinds
     _cue_reason28r,
     _not_that28r,

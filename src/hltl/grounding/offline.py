@@ -315,6 +315,18 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{later.group(0)!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        more = _HOW_ABOUT30S.search(text)
+        if more is not None and _names_any30s(text[: more.start()], lexicon):
+            raise GroundingError(
+                f"{more.group('said')!r} after a request could add to it or replace what it "
+                "names: say 'too' or 'instead'"
+            )
+        off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
+        if off is not None:
+            raise GroundingError(
+                f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
+                "when it is to be done"
+            )
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -384,6 +396,43 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             ) from None
         raise best from None
 
+
+# Session 30 (12s): what was asked, said after it to be for a later time ("Give Bob the cup,
+# that is for later.", "…. It's for tomorrow."): a pronoun for it, 'be', then 'for' and the time,
+# ending a sentence. Taken off as a closer (or its time as how long), it had been read as a
+# request for now; refused as a deferring time word is. ("… for later" after the verb's objects
+# stays a purpose: "Give Bob the cup for later".)
+_PUT_OFF30S = re.compile(
+    r"[,.;!?]\s*(?:and\s+|but\s+)?(?P<said>(?:that|this|it|those|these|they|that one|those ones)"
+    r"(?:'s|'re| is| are|'ll be| will be| can wait| can be) (?:saved |kept )?for (?:later(?: on)?|"
+    r"tomorrow|tonight|next (?:week|month|time)|the weekend|this (?:evening|afternoon)|after "
+    r"(?:lunch|dinner|breakfast|tea|school|work)))\b(?=\s*(?:,?\s*(?:please|thanks|thank you|"
+    r"ta|cheers)\s*)?[.!]*\s*$)",
+    re.I,
+)
+
+# Session 30 (12s): 'how about …' after a request ("Give Alice the cup, how about the
+# bottle?"): one more thing, or the thing instead? ('how about' was a filler, and the bottle read
+# as one more). Read where 'too' / 'as well' / 'also' / 'instead' says which, or 'or' makes it a
+# choice; opening the text it asks as 'please' does.
+_HOW_ABOUT30S = re.compile(
+    r"(?<!\bor)(?:[,.;!?]\s*|\s+and\s+)(?P<said>(?:what|how) about\b[^.;!?]*)"
+    r"(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+def _names_any30s(text: str, lexicon: Lexicon) -> bool:
+    """Whether ``text`` names anything of the scene (a request before 'how about')."""
+    try:
+        return any(it.kind == "ent" for it in lex(text, lexicon))
+    except GroundingError:
+        return True
+
+
+# 'Later' opening a sentence ("Later, give Bob the cup.", "Later: Alice, cup."): the time of
+# what follows, not 'then' (read as an order word with nothing before it, it had been dropped)
+_LATER30S = re.compile(r"(?:^|[.;!?]\s+)(?P<said>later)\b(?!\s+(?:on|than)\b)", re.I)
 
 # words that put a task off (session 20: refused, since acting now could be wrong; 'now',
 # 'today', 'soon', 'asap', 'right away' are read)
@@ -887,6 +936,7 @@ class _Parser:
         sentences = _order_carried(sentences)
         sentences = [s for s in sentences if not _only_fillers(s)]
         sentences = [part for s in sentences for part in _split_after_first29(s)]
+        sentences = [_first_clause30s(s) for s in sentences]
         if not sentences:
             raise GroundingError(
                 f"no task in {_text(items)!r}: say what goes to whom, e.g. 'give Bob the chips'"
@@ -941,7 +991,13 @@ class _Parser:
                     )
                 else:
                     lead = True
-            if conn == "?":
+            if conn == "?" or (
+                any(_is(x, "first") for x in sent[: len(sent) - len(body)])
+                and any(_is(x, "first") for x in body)
+                and any(_is(x, ",", "and", "then") for x in body)
+            ):
+                # (session 30, 12s: "First give Bob the cup, and Alice the apple first" had put
+                # the apple first, the opening 'First' unheard)
                 raise GroundingError(
                     f"{_text(sent)!r} says 'first' and another order word: say the order once"
                 )
@@ -2120,6 +2176,53 @@ def _split_after_first29(sent: list[Item]) -> list[list[Item]]:
     return [sent]
 
 
+def _first_clause30s(sent: list[Item]) -> list[Item]:
+    """Session 30 (12s): "Give Lena the salt first, and the knife and the lemon", "The salt to
+    Lena first, and the knife to Marco": 'first' ending the sentence's first clause, then ',' /
+    'and' and more, puts that clause first, as '…, then …' does (the 'first' had been dropped,
+    and the two read in any order). The first clause holds no comma and no order word, and an
+    'and' in it only between objects; what follows holds no order word of its own (with one, or
+    'then' right after 'first', it is left as it was)."""
+    for j in range(1, len(sent) - 2):
+        if not (
+            _is(sent[j], "first") and sent[j - 1].kind == "ent" and _is(sent[j + 1], ",", "and")
+        ):
+            continue
+        before, after = sent[:j], sent[j + 1 :]
+        k = 0
+        while k < len(after) and _is(after[k], ",", "and", "filler"):
+            k += 1
+        after = after[k:]
+        order = ("then", "prior", "first", "after", "before", "once", "meanwhile")
+        if (
+            not after
+            or _only_fillers(after)
+            or any(_is(x, ",", *order) or x.kind == "punct" for x in before)
+            or any(_is(x, *order) for x in after)
+            or not all(
+                _between_objects30s(before, n) for n, x in enumerate(before) if _is(x, "and")
+            )
+        ):
+            return sent
+        return [*before, Item("punct", ",", ","), Item("word", "then", "then"), *after]
+    return sent
+
+
+def _between_objects30s(items: list[Item], n: int) -> bool:
+    """Whether the 'and' at ``n`` joins two objects ('the knife and the lemon')."""
+    left = n - 1
+    right = n + 1
+    while right < len(items) and _is(items[right], "det"):
+        right += 1
+    return (
+        left >= 0
+        and right < len(items)
+        and all(r.kind == "object" for x in (items[left], items[right]) for r in x.refs)
+        and items[left].kind == "ent"
+        and items[right].kind == "ent"
+    )
+
+
 def _after_that29(body: list[Item]) -> list[Item] | None:
     """``body`` without an 'after that' / 'afterwards' that ends it and orders nothing inside it
     (``_trailing_order`` leaves it, and the sentence would read 'X, then' with nothing after);
@@ -2374,12 +2477,12 @@ def _trailing_order(items: list[Item]) -> list[Item]:
                 # last separator take the task before them, after it (as '…, and then the bottle')
                 or (
                     k == seps[-1]
-                    and lemma == "then"
                     and all(
                         _is(x, "det")
                         or (x.kind == "ent" and all(r.kind == "object" for r in x.refs))
                         for x in body[j:]
                     )
+                    and (lemma == "then" or _first_of_listed30s(body, k, j))
                 )
             )
         )
@@ -2396,6 +2499,44 @@ def _trailing_order(items: list[Item]) -> list[Item]:
             )
         return body  # "Carol needs the bottle first": already first
     return items
+
+
+def _first_of_listed30s(body: list[Item], k: int, j: int) -> bool:
+    """Session 30 (12s): "Give Lena the knife and the lemon, and the salt first": the objects
+    after the last separator, said with 'first', go before the objects listed before them, as
+    '…, and the bottle after that' goes after them (the 'first' had been dropped as "already
+    first"). Only after a comma (', and', ', '), where what comes before is one object ("Put the
+    knife on the counter, and the tongs first") or a list closed with 'and' (the comma says the
+    rest is added). After a list of commas alone ('the knife, the lemon, and the salt first') or
+    several clauses, what 'first' puts first is unclear: refused. Without a comma ('the knife and
+    the salt first') it is left as it was."""
+    m = k
+    while m > 0 and _is(body[m - 1], ",", "and"):
+        m -= 1
+    if not any(_is(x, ",") for x in body[m : k + 1]) or j >= len(body):
+        return False
+    n = m
+    while n > 0 and (_is(body[n - 1], ",", "and", "det") or _only_objects30s(body[n - 1])):
+        n -= 1
+    listed = body[n:m]  # the list of objects right before the separator
+    if not any(_only_objects30s(x) for x in listed):
+        # a place or a person ends what comes before: the objects of all of it
+        listed = [
+            x for x in body[:m] if x.kind == "ent" and any(r.kind == "object" for r in x.refs)
+        ]
+        if len(listed) > 1:
+            listed = []  # "the knife to Lena and the lemon to Marco, and the salt first"
+    count = sum(1 for x in listed if x.kind == "ent")
+    if count == 1 or (count > 1 and any(_is(x, "and") for x in listed)):
+        return True
+    raise GroundingError(
+        f"cannot tell what 'first' puts first in {_text(body)!r}: the last of what is listed or "
+        "all of it; say the order with 'then'"
+    )
+
+
+def _only_objects30s(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "object" for r in item.refs)
 
 
 def _it_to_person(nps: list[Item], frag: _Frag) -> bool:

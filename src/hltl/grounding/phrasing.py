@@ -2804,6 +2804,14 @@ def _verb_later(items: list[Item], k: int) -> bool:
     return verb and not human
 
 
+def _title_readings30s(fits: list[str], sex: str | None, lexicon: Lexicon) -> str:
+    """Session 30 (12s): the readings a pronoun ruled out by a title still has ("Mr Lee, she gets
+    the jug": Ruth or Mrs Khan), for the refusal to name: those named before that fit, else every
+    person of the scene whose title does not rule it out."""
+    people = fits or [h.id for h in lexicon.scene.humans if title_sex(h.id, lexicon) in (None, sex)]
+    return f" (it could mean {_or(people, lexicon)})" if len(people) > 1 else ""
+
+
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'give him the apple too': the one person named before; several → refuse with readings."""
     out: list[Item] = []
@@ -2840,7 +2848,8 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                     raise GroundingError(
                         f"{it.text!r} is not resolved: it cannot mean "
                         f"{_or([p for p in candidates if p not in fits], lexicon)} (by title), and "
-                        "no one else fits for certain; name the person"
+                        f"no one else fits for certain{_title_readings30s(fits, sex, lexicon)}; "
+                        "name the person"
                     )
                 candidates = fits
             if len(candidates) == 1:
@@ -4202,15 +4211,45 @@ def _each_of_one_person29r(items: list[Item], k: int) -> None:
     said = items[start:end]
     people = {r.id for x in said if _humans(x) for r in x.refs}
     several = any(x.text.lower() in _MANY_WORDS29R for x in said)
-    if (
-        len(people) != 1
-        or several
-        or any(x.kind == "ent" and len(x.refs) > 1 and _humans(x) for x in said)
-    ):
+    if several or any(x.kind == "ent" and len(x.refs) > 1 and _humans(x) for x in said):
+        return
+    if len(people) != 1:
+        _each_of_one_in_clause30s(items, k, start, end)
         return
     raise GroundingError(
         f"{items[k].text!r} shares out among several people, and the sentence names one "
         f"({_words_of([x for x in said if _humans(x)])}): name each person, or leave out "
+        f"{items[k].text!r}"
+    )
+
+
+def _each_of_one_in_clause30s(items: list[Item], k: int, start: int, end: int) -> None:
+    """Session 30 (12s): 'each' shares out among the people of its own clause. "Give Bob a mug
+    each, and Carol the cup" names two people in the sentence, one in the clause with 'each',
+    and had been read as one mug for Bob. The clause runs between separators (',', 'and',
+    'then') that do not continue a list of people ("Give Bob and Carol a mug each" is one
+    clause: the 'and' follows a person); with one person in it, refused."""
+
+    def joins_people(n: int) -> bool:
+        # the separator at n follows a person, or a separator after one ("Bob, and Carol")
+        m = n - 1
+        while m >= start and (_is(items[m], ",", "and", "filler") or items[m].kind == "punct"):
+            m -= 1
+        return m >= start and _humans(items[m])
+
+    lo = k
+    while lo > start and not (_is(items[lo - 1], ",", "and", "then") and not joins_people(lo - 1)):
+        lo -= 1
+    hi = k + 1
+    while hi < end and not (_is(items[hi], ",", "and", "then") and not joins_people(hi)):
+        hi += 1
+    clause = items[lo:hi]
+    people = {r.id for x in clause if _humans(x) for r in x.refs}
+    if len(people) != 1 or any(x.kind == "ent" and len(x.refs) > 1 and _humans(x) for x in clause):
+        return
+    raise GroundingError(
+        f"{items[k].text!r} shares out among several people, and its part of the sentence "
+        f"({_words_of(clause)!r}) names one: name each person who gets one, or leave out "
         f"{items[k].text!r}"
     )
 
