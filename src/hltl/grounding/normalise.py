@@ -14468,6 +14468,30 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# A sentence of its own that only counts what the sentences before asked for: "Give Bob the cup.
+# One thing, that's the lot.", "… Two things in all." It asks for nothing: it is a check (the
+# grounder reads the rest and compares; offline.py). Found by 12c's 'afterthoughts' fuzz: "Hand
+# Bob the bottle. Two things, that's the lot." read as both objects for Bob.
+_COUNT_ONLY30 = (
+    r"(?:that(?:'s| is| makes) |so )?(one|two|three|four|five|six|both|\d) (?:things?|items?)"
+    r"(?: (?:in all|all told|in total|total))?"
+    r"(?:,? (?:that's|that is) (?:the lot|all|it|everything)(?: (?:then|now))?)?"
+)
+
+
+def count_said30(text: str) -> tuple[str, int, str] | None:
+    """The first sentence of ``text`` after another that only counts things ('Two things,
+    that's the lot.'): ``text`` without it, the count, and the sentence; None if there is none."""
+    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
+    for k, sentence in enumerate(sentences[1:], start=1):
+        m = _rx(rf"^{_COUNT_ONLY30}\s*[.!]?$").match(sentence.strip())
+        if m is not None:
+            word = m.group(1).lower()
+            count = int(word) if word.isdigit() else {"one": 1, "both": 2, **_NUMBER18}[word]
+            return " ".join([*sentences[:k], *sentences[k + 1 :]]), count, sentence.strip()
+    return None
+
+
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,

@@ -24,6 +24,7 @@ from hltl.grounding.normalise import (
     apostrophes,
     canonical,
     canonical19,
+    count_said30,
     hearer_named,
     one_person,
     order_colons,
@@ -301,9 +302,33 @@ def _inside() -> list[str]:
     return cast(list[str], _READING.texts)
 
 
+def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon) -> Node:
+    """What ``rest`` asks for, when ``said`` ('Two things, that's the lot.') counts it: exactly
+    ``count`` tasks, all of them to be done (no choice), each of another object; else refused
+    (the count is a check, never a request of that many)."""
+    node = _parse(rest, scene, lexicon, normalise=True)
+    done = list(tasks(node))
+    if _all_done(node) and len(done) == count == len({t.obj for t in done}):
+        return node
+    raise GroundingError(
+        f"{said!r} counts {count}, but the request asks for {len(done)} "
+        f"({', '.join(t.atom for t in done)}){'' if _all_done(node) else ' with a choice'}: "
+        "name the objects you want"
+    )
+
+
+def _all_done(node: Node) -> bool:
+    return isinstance(node, Task) or (
+        node.op != "or" and all(_all_done(child) for child in node.children)
+    )
+
+
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         text = trades29(order_colons(apostrophes(text)), lexicon)
+        counted = count_said30(text)
+        if counted is not None:
+            return _counted30(*counted, scene, lexicon)
         cut = _cut_off(text)
         if cut is not None:
             raise cut
