@@ -117,6 +117,9 @@ def _match_phrase_plain(tokens: list[Token], i: int) -> tuple[int, str] | None:
     for n in range(min(lexicon.MAX_PHRASE, len(tokens) - i), 1, -1):
         lemma = PHRASES.get(tuple(t.low for t in tokens[i : i + n]))
         if lemma is not None and not lexicon._pronoun_subject(tokens, i + n):
+            words = tuple(t.low for t in tokens[i : i + n])
+            if words in lexicon._GREETING_ALONE and not lexicon._sentence_starts(tokens, i):
+                continue  # (a greeting is one only where a sentence starts)
             return n, lemma
     return None
 

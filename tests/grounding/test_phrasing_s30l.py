@@ -78,3 +78,32 @@ def test_a_count_after_one_handover_is_that_handover_or_refused(
 ) -> None:
     text = f"Give Person {who} the {obj}. {count}{tail}."
     assert_same_or_refused(text, f"{obj}>{who}", TWO)
+
+
+TWO_ARMS = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips; Alice, Bob
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # (12c's asides fuzz, causes10: the greeting 'morning.' swallowed the stop after a
+        # remark, and the next sentence's person went to Bob)
+        (
+            "It's been a long morning. Alice gets whatever Bob doesn't: Bob gets the bottle",
+            "bottle>B & chips>A",
+        ),
+        (
+            "Bob gets the bottle. It's been a long evening. Alice gets the chips",
+            "bottle>B & chips>A",
+        ),
+        (
+            "Bob gets the bottle. It has been a long morning. Alice gets the rest",
+            "bottle>B & chips>A",
+        ),
+        ("Morning. Give Alice the chips.", "chips>A"),
+        ("Oh, morning! Give Alice the chips.", "chips>A"),
+        ("Good afternoon. Give Alice the chips.", "chips>A"),
+    ],
+)
+def test_a_greeting_word_ending_a_remark_keeps_its_stop(text: str, want: str) -> None:
+    assert_reads(text, want, TWO_ARMS)

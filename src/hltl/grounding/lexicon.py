@@ -687,12 +687,17 @@ for _it in ("would it be", "is it", "will it be", "would that be", "is that"):
     for _ok in ("ok", "okay", "alright", "all right", "fine", "possible", "cool"):
         for _to in ("to", "for you to", "if you", "if you could", "if you would"):
             PHRASES[tuple(f"{_it} {_ok} {_to}".split())] = "filler"
+# (a greeting only where a sentence starts: in "It's been a long evening. Alice gets …" the
+# word ends a remark, and the stop after it ends the sentence; 12c's asides fuzz, session 30)
+_GREETING_ALONE: set[tuple[str, str]] = set()
 # A greeting said alone before the request ("Morning! …", "Afternoon, …"), and an opening that
 # only urges ("Go on, pass …", "Come on, …"): always followed by punctuation, so "the cup
 # should go on the shelf" keeps its verb
 for _hello in ("morning", "afternoon", "evening", "good day", "greetings", "go on", "come on"):
     for _mark in ("!", ",", ".", "-"):
         PHRASES[(*_hello.split(), _mark)] = "filler"
+        if _hello in ("morning", "afternoon", "evening"):
+            _GREETING_ALONE.add((_hello, _mark))
 # "Make sure Carol ends up with the apple": she has it
 for _end in ("end", "ends", "ended", "ending", "wind", "winds"):
     PHRASES[(_end, "up", "with")] = "verb:have"
@@ -2187,11 +2192,22 @@ def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
     for n in range(len(lows), 1, -1):
         lemma = PHRASES.get(lows[:n])
         if lemma is not None and not _pronoun_subject(tokens, i + n):
+            if lows[:n] in _GREETING_ALONE and not _sentence_starts(tokens, i):
+                continue
             return n, lemma
     return None
 
 
 _BE_NEXT = frozenset({"'s", "is", "was", "has", "'re", "are", "were", "had"})
+
+
+def _sentence_starts(tokens: list[Token], i: int) -> bool:
+    """Whether token ``i`` starts a sentence or follows an opening word ('Oh, morning!',
+    'Well morning, …')."""
+    return i == 0 or tokens[i - 1].low in {
+        *(".", "!", "?", ",", ";", ":", "-", "…"),
+        *("oh", "ah", "well", "hi", "hello", "hey", "and", "a", "very", "top", "the", "good"),
+    }
 
 
 def _pronoun_subject(tokens: list[Token], end: int) -> bool:
