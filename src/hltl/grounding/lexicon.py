@@ -2201,13 +2201,18 @@ def _match_phrase(tokens: list[Token], i: int) -> tuple[int, str] | None:
 _BE_NEXT = frozenset({"'s", "is", "was", "has", "'re", "are", "were", "had"})
 
 
-def _sentence_starts(tokens: list[Token], i: int) -> bool:
-    """Whether token ``i`` starts a sentence or follows an opening word ('Oh, morning!',
-    'Well morning, …')."""
-    return i == 0 or tokens[i - 1].low in {
+_BEFORE_GREETING = frozenset(
+    {
         *(".", "!", "?", ",", ";", ":", "-", "…"),
         *("oh", "ah", "well", "hi", "hello", "hey", "and", "a", "very", "top", "the", "good"),
     }
+)
+
+
+def _sentence_starts(tokens: list[Token], i: int) -> bool:
+    """Whether token ``i`` starts a sentence or follows an opening word ('Oh, morning!',
+    'Well morning, …')."""
+    return i == 0 or tokens[i - 1].low in _BEFORE_GREETING
 
 
 def _pronoun_subject(tokens: list[Token], end: int) -> bool:

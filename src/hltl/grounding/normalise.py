@@ -8118,7 +8118,6 @@ _NEEDS_DOING30 = re.compile(
     r")?[a-z' -]+?) (?:need|needs|want|wants) (?P<doing>[a-z]+ing)(?: (?:badly|urgently|again))?",
     _F,
 )
-_COUNTS30 = {"two": 2, "both": 2, "three": 3, "four": 4}
 
 
 def _needs_doing30(text: str, lexicon: Lexicon) -> str:
@@ -8137,7 +8136,7 @@ def _needs_doing30(text: str, lexicon: Lexicon) -> str:
         if m["count"]:
             after = "".join(a + b for a, b in zip(sents[k + 1 :], seps[k + 1 :], strict=True))
             people = _ids(after, lexicon, "human")
-            if not sep.strip().startswith(":") or len(people) != _COUNTS30[m["count"].lower()]:
+            if not sep.strip().startswith(":") or len(people) != _NUMBERS15[m["count"].lower()]:
                 out.append(sent + sep)
                 continue
             subject = subject.replace(f" {m['count']} ", " ", 1)
@@ -13077,7 +13076,6 @@ _COMPARED30S = {
     "biggest": "most",
     "largest": "most",
 }
-_COUNTS30S = {"two": 2, "both": 2, "three": 3}
 
 
 def _ranked30s(category: str, lexicon: Lexicon) -> list[str] | None:
@@ -13112,15 +13110,6 @@ def _rank30s(oid: str, lexicon: Lexicon) -> int:
         for w in n.lower().split()
         if w in _SIZE_RANKS30S
     )
-
-
-def _object_name30s(oid: str, lexicon: Lexicon) -> str:
-    """A name of object ``oid`` that names it alone ('the small box')."""
-    o = next(x for x in lexicon.scene.objects if x.id == oid)
-    for a in (*o.aliases, o.id.replace("_", " ")):
-        if _ids(a, lexicon) == {oid}:
-            return f"the {a}"
-    return f"the {oid}"
 
 
 def _sizes30s(text: str, lexicon: Lexicon) -> str:
@@ -13199,14 +13188,14 @@ def _compared30s(
     way = _COMPARED30S[m.group("cmp").lower()]
     ranked = order if way in ("less", "least") else order[::-1]
     if whichever:
-        return m.group(0) if plural else _object_name30s(ranked[0], lexicon)
+        return m.group(0) if plural else f"the {_said(ranked[0], lexicon)}"
     count_word = (m.group("count") or "").lower().split()
-    count = next((_COUNTS30S[w] for w in count_word if w in _COUNTS30S), 0)
+    count = next((_NUMBERS15[w] for w in count_word if w in _NUMBERS15), 0)
     if not plural:
         if count or m.group("one") or not m.group("the"):
             return m.group(0)
         if way in ("least", "most") or len(order) == 2:
-            return _object_name30s(ranked[0], lexicon)  # 'the smallest box', 'the bigger box'
+            return f"the {_said(ranked[0], lexicon)}"  # 'the smallest box', 'the bigger box'
         return m.group(0)
     if way in ("least", "most"):
         return m.group(0)  # 'the smallest boxes'
@@ -13216,7 +13205,7 @@ def _compared30s(
         count = 2  # 'the smaller boxes' of three: the two that are not the largest
     if count >= len(order):
         return m.group(0)
-    names = [_object_name30s(i, lexicon) for i in ranked[:count]]
+    names = [f"the {_said(i, lexicon)}" for i in ranked[:count]]
     ranks = sorted(_rank30s(i, lexicon) for i in ranked[:count])
     if m.group("again") and _sizes_said30s(m.group("again").strip(" ,")) != ranks:
         return m.group(0)  # "the two smaller boxes, small and large, …": which is meant?
@@ -14487,7 +14476,7 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
         m = _rx(rf"^{_COUNT_ONLY30}\s*[.!]?$").match(sentence.strip())
         if m is not None:
             word = m.group(1).lower()
-            count = int(word) if word.isdigit() else {"one": 1, "both": 2, **_NUMBER18}[word]
+            count = int(word) if word.isdigit() else _NUMBERS15[word]
             return " ".join([*sentences[:k], *sentences[k + 1 :]]), count, sentence.strip()
     return None
 

@@ -308,18 +308,12 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
     (the count is a check, never a request of that many)."""
     node = _parse(rest, scene, lexicon, normalise=True)
     done = list(tasks(node))
-    if _all_done(node) and len(done) == count == len({t.obj for t in done}):
+    if not _has_choice(node) and len(done) == count == len({t.obj for t in done}):
         return node
     raise GroundingError(
         f"{said!r} counts {count}, but the request asks for {len(done)} "
-        f"({', '.join(t.atom for t in done)}){'' if _all_done(node) else ' with a choice'}: "
+        f"({', '.join(t.atom for t in done)}){' with a choice' if _has_choice(node) else ''}: "
         "name the objects you want"
-    )
-
-
-def _all_done(node: Node) -> bool:
-    return isinstance(node, Task) or (
-        node.op != "or" and all(_all_done(child) for child in node.children)
     )
 
 
