@@ -33,6 +33,7 @@ L24 = _scene("2-4-line")  # bottle, chips; A, B
 ONE = _scene("1-1")  # bottle; A
 T12 = _scene("1-2")  # bottle; A
 T21 = _scene("2-1")  # bottle, chips; A, B
+DEPOT = load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml")
 
 
 def _case(text: str, want: str | None, scene: Scene) -> None:
@@ -456,4 +457,54 @@ def test_yes_i_did_mean_her(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_a_better_place(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+# -- two wrong readings of the grammar ----------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # 'all' after a comma is the pens said before it (it had read every object)
+        ("Give Sam the pens, all but the red one.", "pen_black>B & pen_blue>B", OFFICE),
+        ("Give Sam the pens, all except the red one.", "pen_black>B & pen_blue>B", OFFICE),
+        # 'all but' with nothing before it is every object, as before
+        (
+            "Give Sam all but the red pen.",
+            "pen_black>B & notebook>B & pen_blue>B & stapler>B",
+            OFFICE,
+        ),
+        # the same for a placement: the boxes said before, but the small one
+        (
+            "Put the boxes on the pallet, all but the small one.",
+            "box_medium@pallet & box_large@pallet",
+            DEPOT,
+        ),
+    ],
+)
+def test_all_but_after_a_comma(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # 'leave' with no place of its own had taken the belt over
+        ("Put the small box on the belt, leave the large one.", None, DEPOT),
+        ("Put the boxes on the belt, leave the large one.", None, DEPOT),
+        # a place of its own, or 'there', is a placement as before
+        (
+            "Put the small box on the belt, then leave the tape on the pallet.",
+            "box_small@conveyor ; tape@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the small box on the belt, and leave the large one there too.",
+            "box_small@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+    ],
+)
+def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
