@@ -1230,6 +1230,9 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if quant:
             j = k + 1
             j = _past_dets(items, j)
+            if _both_of_two31r(items, k, j):
+                k += 1  # "both of the stapler and the notepad": the two, as 'the X and the Y'
+                continue
             if quant == "some" and j + 1 < len(items) and _objects(items[j + 1]):
                 kind, many = _quant_word(items[j])
                 if kind == "num":  # "one of the two mugs": there must be two
@@ -1546,6 +1549,33 @@ def _choice_of_two(out: list[Item], at: int) -> Item | None:
     )
     out[start : j + 1] = [Item("word", "det", "the"), choice] if start < i else [choice]
     return choice
+
+
+def _both_of_two31r(items: list[Item], k: int, j: int) -> bool:
+    """Session 31 (12r): 'both of the X and the Y' (X and Y names of one object each, different,
+    joined by 'and' and followed by no third name) is 'the X and the Y': 'both' counts the two
+    (it had been read as two Xs, and refused with one X)."""
+    if not (_is(items[k], "q:both") and items[k].text.lower().startswith("both of")):
+        return False
+
+    def single(n: int) -> bool:
+        x = items[n] if n < len(items) else None
+        return (
+            x is not None
+            and _objects(x)
+            and len({r.id for r in x.refs}) == 1
+            and not any(r.plural for r in x.refs)
+        )
+
+    if not single(j) or j + 1 >= len(items) or not _is(items[j + 1], "and"):
+        return False
+    m = _past_dets(items, j + 2)
+    if not single(m) or items[m].refs[0].id == items[j].refs[0].id:
+        return False
+    after = items[m + 1] if m + 1 < len(items) else None
+    return after is None or not (
+        _is(after, "and", "or", ",") and any(_objects(x) for x in items[m + 2 : m + 4])
+    )
 
 
 def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | None:
