@@ -893,6 +893,8 @@ def _left_alone31r(f: _Frag, source: _Frag) -> None:
     it on the shelf', 'leave the apple there') is the grammar's placement, as before."""
     if f.verb != "leave" or not f.verb_text or source.target is None:
         return
+    if source.target.kind != "surface":
+        return  # "The apple for Person B, I mean the bottle, leave the apple": the correction's
     raise GroundingError(
         f"{f.text!r} has no place: leave the {', '.join(f.objects or ())} where "
         f"{'it is' if len(f.objects or ()) == 1 else 'they are'} (say 'not the …'), or put "
