@@ -408,6 +408,11 @@ def test_leave_the_x_then_a_request(text: str, want: str | None, scene: Scene) -
         ),
         # a slip after a correction already made speaks of that one
         ("The chips, no, the bottle, silly me, to Person A.", "bottle>A", ONE),
+        # a slip closing the text says the request is wrong, not what is right (these were
+        # read as the request, the slip taken off as a remark)
+        ("Chips for Person A, I tell a lie.", None, DUO),
+        ("Give Person A the chips, I got them mixed up.", None, DUO),
+        ("Chips for Person A, oh, I've got that wrong, sorry.", None, DUO),
     ],
 )
 def test_the_speakers_slip(text: str, want: str | None, scene: Scene) -> None:

@@ -14815,6 +14815,12 @@ _SLIP_AFTER_CUE31R = re.compile(
     rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|oh)\s*),\s*{_SLIP31R}\s*,\s*(?=\S)", _F
 )
 _SLIP_ALONE31R = re.compile(rf"(?P<lead>,\s*){_SLIP31R}\s*,\s*(?=\S)", _F)
+# "Give Person A the chips, I got them mixed up.": the slip closing the text, nothing after it
+_SLIP_CLOSING31R = re.compile(
+    rf"[,;.!]\s*(?:(?:oh|ah|no|sorry|wait|whoops|oops)\s*,?\s*)*(?P<said>{_SLIP31R})"
+    r"(?:\s*,?\s*(?:sorry|again|there))*\s*[.!]?\s*$",
+    _F,
+)
 # "…, it's Person A.", "…, it's Zoe's turn.": the corrected person in a cleft
 _ITS_WHO31R = re.compile(
     r"(?P<lead>,\s*)it(?:'s| is) (?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|"
@@ -14829,7 +14835,15 @@ def _slip31r(text: str, lexicon: Lexicon) -> str:
     corrects); without a cue before them they are the cue ('no'). Then "…, it's P" or "it's P's
     turn" closing the correction is 'P' (one person of the scene), the form the grammar reads.
     A slip said after a correction already made ("The chips, no, the bottle, silly me, to P") is
-    left: it speaks of that one."""
+    left: it speaks of that one. A slip closing the text ("Give Person A the chips, I got them
+    mixed up.") says the request is wrong and not what is right: refused (it had been taken off
+    as a remark, and the request read)."""
+    closing = _SLIP_CLOSING31R.search(text)
+    if closing is not None:
+        raise GroundingError(
+            f"{closing.group('said')!r} says what was asked is wrong, but not what is right: "
+            "say the whole request again"
+        )
     out = _SLIP_AFTER_CUE31R.sub(lambda m: f"{m.group('cue')}, ", text)
     alone = _SLIP_ALONE31R.search(text) if out == text else None
     if alone is not None:
