@@ -10,6 +10,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
@@ -512,4 +513,26 @@ def test_all_but_after_a_comma(text: str, want: str | None, scene: Scene) -> Non
     ],
 )
 def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Lena doesn't want the blue plate, just the white one.", "plate_white>B", KITCHEN),
+        ("The knife to Lena, oops, I meant to say the tongs.", "tongs>B", KITCHEN),
+        ("The knife to Lena, I should have said the tongs.", "tongs>B", KITCHEN),
+        ("The knife to Lena, hmm, better make it the tongs.", "tongs>B", KITCHEN),
+        ("Tongs to Lena, hold on, it's Mr Novak who wants them.", "tongs>C", KITCHEN),
+        ("Tongs to Lena, no, it's Mr Novak's turn.", "tongs>C", KITCHEN),
+        ("Give the apple to Bob, no hang on, it was Carol who asked.", "apple>C", CELL),
+        # the same object kept and left out; a person where the object goes; an object where
+        # the person was corrected; the one who wants something else
+        ("Lena doesn't want the blue plate, just the blue one.", None, KITCHEN),
+        ("Lena doesn't want the blue plate, just Marco.", None, KITCHEN),
+        ("Tongs to Lena, hold on, it's the knife who wants them.", None, KITCHEN),
+        ("Tongs to Lena, hold on, it's Mr Novak who wants the knife.", None, KITCHEN),
+    ],
+)
+def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)

@@ -14981,7 +14981,59 @@ def _wont_mind31r(text: str, _lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m.group('lead')}{who} {verb} mind{m.group('tail')}{m.group('end')}"
 
 
+# "Lena doesn't want the blue plate, just the white one."
+_DOESNT_WANT_JUST31R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:doesn't|does not|don't|do not) (?:want|need) (?P<x>the [a-z]+"
+    r"(?: [a-z]+)?)\s*[,;]\s*(?:just|only|but|she wants|he wants|they want) (?P<y>the [a-z]+"
+    r"(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _doesnt_want_just31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "P doesn't want the X, just the Y" is 'P wants the Y, not the X' (P one
+    person; the grammar checks X and Y, 'the white one' included)."""
+    m = _DOESNT_WANT_JUST31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{m.group('p')} wants {m.group('y')}, not {m.group('x')}{m.group('end')}"
+
+
+def _meant_to_say31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'I meant to say', 'I should have said' in a correction are 'I meant';
+    'better make it' / 'best make it' is 'make it'."""
+    out = _sub(
+        r"\bi (?:meant|mean|wanted) to say\b|\bi should(?: have|'ve) said\b",
+        lambda m: "I meant" if m[0][0] == "I" else "i meant",
+        text,
+    )
+    return _sub(
+        r"(?<=,)(\s*)(?:(?:hmm|um|er),?\s*)?(?:better|best) (?=make (?:it|that)\b)", r"\1", out
+    )
+
+
+# "Tongs to Lena, hold on, it's Mr Novak who wants them."
+_ITS_WHO_CUE31R = re.compile(
+    rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|actually)\s*,\s*)it(?:'s| is| was) "
+    r"(?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|needed|asked for|ordered|"
+    r"is after|was after) (?:it|them|that|those)| who asked)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_who_cue31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "…, hold on, it's P who wants them" or "…, wait, it's P's turn" after a
+    request is '…, hold on, P' (the corrected person, one of the scene)."""
+    m = _ITS_WHO_CUE31R.search(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{text[: m.start()]}{m.group('cue')}{m.group('p')}{m.group('end') or '.'}"
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _doesnt_want_just31r,
+    _meant_to_say31r,
+    _its_who_cue31r,
     _these_listed31r,
     _wont_mind31r,
     _will_do_for31r,
