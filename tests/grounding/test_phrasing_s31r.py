@@ -536,3 +536,63 @@ def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> Non
 )
 def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # words for 'except' the grammar did not know
+        (
+            "Put the boxes on the pallet, excluding the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "The boxes go on the pallet, minus the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, not including the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, with the exception of the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        # what stays where it is
+        (
+            "Put the boxes on the pallet, leave the big one where it is.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, but leave the big one alone.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, the big one can stay where it is.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        # 'there' is the pallet (as on main); a person is no object to leave out
+        (
+            "Put the boxes on the pallet, leave the big one there.",
+            "box_small@pallet & box_medium@pallet & box_large@pallet",
+            DEPOT,
+        ),
+        ("Put the boxes on the pallet, leave Tom where he is.", None, DEPOT),
+        # who does not need what the request hands to someone else
+        ("The gloves go to Tom, Mia doesn't need them.", "gloves>B", DEPOT),
+        ("Tom needs the gloves; the tape isn't for him.", "gloves>B", DEPOT),
+        # the statement denies the request's own task; 'him' could be either
+        ("Tom needs the gloves, Tom doesn't need them.", None, DEPOT),
+        ("Tom needs the gloves; the gloves aren't for him.", None, DEPOT),
+        ("Give Tom and Mia the gloves; they aren't for him.", None, DEPOT),
+    ],
+)
+def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)

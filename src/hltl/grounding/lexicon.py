@@ -835,6 +835,10 @@ for _p, _q in {
     "other than": "except",
     "but not": "except",
     "and not": "except",
+    # session 31 (12r): "Put the boxes on the pallet, excluding / minus / not including / with
+    # the exception of the big one" (refused before: unknown words, or 'not')
+    "not including": "except",
+    "with the exception of": "except",
     "the same for": "same",
     "same for": "same",
     "do the same for": "same",
@@ -1098,6 +1102,9 @@ WORDS: dict[str, str] = {
     "same": "same",
     "apart": "except",
     "except": "except",
+    "excluding": "except",  # session 31 (12r), with 'minus' and 'barring'
+    "minus": "except",
+    "barring": "except",
     # subjects and auxiliaries, skipped ("after you have given …", "once the cup is on …")
     "you": "subject",
     "u": "subject",  # texting: "can u put …"

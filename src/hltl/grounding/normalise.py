@@ -15030,7 +15030,80 @@ def _its_who_cue31r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m.group('cue')}{m.group('p')}{m.group('end') or '.'}"
 
 
+# "Put the boxes on the pallet, leave the big one where it is." / "…, the big one can stay put."
+_LEAVE_WHERE31R = re.compile(
+    r",\s*(?:but |and )?(?:(?:just |please )?leave (?P<x>the [a-z]+(?: [a-z]+)?) (?:where it is|"
+    r"where they are|alone|be|as it is|as they are|in place|untouched)|"
+    r"(?P<y>the [a-z]+(?: [a-z]+)?) (?:can stay|stays|should stay|can remain|remains|is "
+    r"staying) (?:where it is|put|there|behind|in place|as it is))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_where31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): '…, leave the big one where it is' / 'alone', '…, the big one can stay
+    where it is' closing a request is '…, except the big one' (what the grammar reads as an
+    exclusion), when the words name objects only ('one' for a kind said before) and the request
+    before names some object."""
+    m = _LEAVE_WHERE31R.search(text)
+    if m is None:
+        return text
+    x = m.group("x") or m.group("y")
+    if x.lower().split()[-1] not in ("one", "ones") and not _objects_only(x, lexicon):
+        return text
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}, except {x}{m.group('end') or '.'}"
+
+
+# "The gloves go to Tom, Mia doesn't need them." / "Tom needs the gloves; the tape isn't for him."
+_NOT_FOR_THEM31R = re.compile(
+    r"^(?P<req>[^;.!?]+?)\s*[,;.]\s*(?:but |and )?(?:(?P<p>[A-Za-z][\w ]*?) (?:doesn't|does not|"
+    r"don't|do not) (?:need|want|get) (?P<x>it|them|the [a-z]+(?: [a-z]+)?)|(?P<y>the [a-z]+"
+    r"(?: [a-z]+)?|it|they|that|those) (?:isn't|is not|aren't|are not|'s not|'re not) for "
+    r"(?P<q>[A-Za-z][\w ]*?))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_them31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a statement that someone does not need something, beside a request
+    ("The gloves go to Tom, Mia doesn't need them", "Tom needs the gloves; the tape isn't for
+    him"), is taken off when the request reads and none of its tasks is the one the statement
+    denies ('it' / 'them' the request's objects, 'him' / 'her' its one person); else it is left,
+    and refused ("Tom needs the gloves, Tom doesn't need them")."""
+    m = _NOT_FOR_THEM31R.match(text)
+    if m is None:
+        return text
+    req = m.group("req")
+    said = _tasks_of(req, lexicon)
+    if not said or any(k != "deliver" for k, _, _ in said):
+        return text
+    who_words = m.group("p") or m.group("q")
+    what = m.group("x") or m.group("y")
+    people = {t for _, _, t in said}
+    if re.fullmatch(r"him|her|them", who_words, _F):
+        if len(people) != 1 or not _fits(next(iter(people)), who_words, lexicon):
+            return text
+        who = set(people)
+    elif _only_person(who_words, lexicon):
+        who = _ids(who_words, lexicon)
+    else:
+        return text
+    if re.fullmatch(r"it|them|they|that|those", what, _F):
+        objects = {o for _, o, _ in said}
+    elif _objects_only(what, lexicon):
+        objects = _ids(what, lexicon, "object")
+    else:
+        return text
+    if any(o in objects and t in who for _, o, t in said):
+        return text
+    return req + (m.group("end") or ".")
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _not_for_them31r,
+    _leave_where31r,
     _doesnt_want_just31r,
     _meant_to_say31r,
     _its_who_cue31r,
