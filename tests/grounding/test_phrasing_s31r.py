@@ -35,6 +35,7 @@ ONE = _scene("1-1")  # bottle; A
 T12 = _scene("1-2")  # bottle; A
 T21 = _scene("2-1")  # bottle, chips; A, B
 DEPOT = load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml")
+WORKSHOP = load_scene(ROOT / "tests/grounding/paraphrase/scenes/workshop.yaml")
 
 
 def _case(text: str, want: str | None, scene: Scene) -> None:
@@ -595,4 +596,48 @@ def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) 
     ],
 )
 def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Jess needs a couple of spanners.", "spanner_small>B & spanner_large>B", WORKSHOP),
+        ("Jess needs a couple of hammers.", None, WORKSHOP),
+        (
+            "Give Jess the small and large spanners.",
+            "spanner_small>B & spanner_large>B",
+            WORKSHOP,
+        ),
+        # one red mug, no green one: the adjectives must each name one object
+        ("Give Bob the red and green mugs.", None, CELL),
+        ("Give Bob the red and red mugs.", None, CELL),
+        (
+            "Kofi needs the hammer, the drill and the torch, three things.",
+            "hammer>A & drill>A & torch>A",
+            WORKSHOP,
+        ),
+        ("Kofi needs the hammer, the drill and the torch, two things.", None, WORKSHOP),
+        (
+            "Kofi needs three items - the hammer, the drill and the torch.",
+            "hammer>A & drill>A & torch>A",
+            WORKSHOP,
+        ),
+        (
+            "The hammer and the drill, one for Kofi and one for Jess.",
+            "(hammer>A & drill>B) | (hammer>B & drill>A)",
+            WORKSHOP,
+        ),
+        ("The hammer and the drill, one for Kofi and one for Kofi.", None, WORKSHOP),
+        ("The hammer, the drill and the torch, one for Kofi and one for Jess.", None, WORKSHOP),
+        (
+            "Split the spanners between Kofi and Jess.",
+            "(spanner_small>A & spanner_large>B) | (spanner_small>B & spanner_large>A)",
+            WORKSHOP,
+        ),
+        # three boxes between two people: no split is the only one
+        ("Split the boxes between Mia and Tom.", None, DEPOT),
+    ],
+)
+def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)

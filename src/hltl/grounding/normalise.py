@@ -15101,7 +15101,131 @@ def _not_for_them31r(text: str, lexicon: Lexicon) -> str:
     return req + (m.group("end") or ".")
 
 
+def _couple_of31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'a couple of spanners' is 'two spanners' (the grammar checks the count
+    against the scene: 'two of the pens' with three pens is a choice of two)."""
+    return _sub(r"\ba couple of (?:the )?(?=[a-z]+s\b)", "two ", text)
+
+
+# "the small and large spanners", "the small, medium and large boxes"
+_ADJECTIVES_AND31R = re.compile(
+    r"\bthe (?P<adj>[a-z]+(?:,\s*[a-z]+)*,? and [a-z]+) (?P<noun>[a-z]+)s\b", _F
+)
+
+
+def _adjectives_and31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'the small and large spanners' is 'the small spanner and the large
+    spanner' when each adjective with the noun names one object of the scene, each a different
+    one (else left: 'the red and green cups' with one red cup is refused as before)."""
+
+    def each(m: re.Match[str]) -> str:
+        adjectives = [a for a in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group("adj")) if a]
+        noun = m.group("noun")
+        names = [f"the {a} {noun}" for a in adjectives]
+        ids = [_ids(n, lexicon, "object") for n in names]
+        if any(
+            len(i) != 1 or not _whole_name(n, lexicon, "object")
+            for i, n in zip(ids, names, strict=True)
+        ):
+            return m[0]
+        if len(set().union(*ids)) != len(names):
+            return m[0]
+        return ", ".join(names[:-1]) + " and " + names[-1]
+
+    return _sub(_ADJECTIVES_AND31R.pattern, each, text)
+
+
+# "Kofi needs the hammer, the drill and the torch, three things."
+_COUNT_AFTER31R = re.compile(
+    r"(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+),\s*(?:that's |so )?(?P<n>two|three|four|five|six|2|3|4|5|6) (?:things|items|"
+    r"objects)(?: in all| altogether| in total)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _count_after31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a list of objects, then ', three things' closing the text, is the list
+    when it names that many different objects of the scene (else left, refused: a count the list
+    does not meet)."""
+    m = _COUNT_AFTER31R.search(text)
+    if m is None:
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    n = m.group("n").lower()
+    want = int(n) if n.isdigit() else _COUNTS[n]
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or len(set().union(*ids)) != want or len(items) != want:
+        return text
+    return f"{text[: m.end('list')]}{m.group('end') or '.'}"
+
+
+def _dash_header31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Kofi needs 3 items - hammer, drill, torch' is '…: hammer, drill,
+    torch' (a dash after a count of things opens the list, as a colon does)."""
+    return _sub(
+        r"\b((?:two|three|four|five|six|2|3|4|5|6) (?:things|items|objects))\s+[-\u2013\u2014]\s+"
+        r"(?=[a-z])",
+        r"\1: ",
+        text,
+    )
+
+
+# "The hammer and the drill, one for Kofi and one for Jess."
+_ONE_FOR_EACH31R = re.compile(
+    r"^(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+),\s*one (?:for|to) (?P<p>[A-Za-z][\w ]*?),? and (?:one|the other) (?:for|to) "
+    r"(?P<q>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_for_each31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "The hammer and the drill, one for Kofi and one for Jess" is 'Give the
+    hammer and the drill to Kofi and Jess, one each' when the list names two objects and the
+    two people differ (the grammar reads the share, either way round)."""
+    m = _ONE_FOR_EACH31R.match(text)
+    if m is None:
+        return text
+    p, q = m.group("p"), m.group("q")
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    if len(items) != 2 or not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or ids[0] == ids[1]:
+        return text
+    return f"Give {m.group('list')} to {p} and {q}, one each{m.group('end')}"
+
+
+def _split_two31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Split the spanners between Kofi and Jess' with nothing after is
+    session 29's 'Split … , one each' (two objects between two people: one each is the only
+    split; _split29r checks both counts and leaves the text otherwise)."""
+    m = re.match(
+        r"^(?P<head>(?:please )?(?:split|share|divide) the [a-z ]+? between [A-Za-z][\w ]*? and "
+        r"[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    out = f"{m.group('head')}, one each{m.group('end')}"
+    return out if _split29r(out, lexicon) != out else text
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _couple_of31r,
+    _adjectives_and31r,
+    _count_after31r,
+    _dash_header31r,
+    _one_for_each31r,
+    _split_two31r,
     _not_for_them31r,
     _leave_where31r,
     _doesnt_want_just31r,
