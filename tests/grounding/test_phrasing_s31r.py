@@ -641,3 +641,27 @@ def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -
 )
 def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the chooser's words after a choice: any of them will do
+        ("Give Noah one of the books, his pick.", "book_red>B | book_green>B", CLASSROOM),
+        ("Noah gets one book, you choose which.", "book_red>B | book_green>B", CLASSROOM),
+        ("A book for Noah, no preference.", "book_red>B | book_green>B", CLASSROOM),
+        ("Noah wants a book, either colour.", "book_red>B | book_green>B", CLASSROOM),
+        (
+            "Noah wants a book, red or green, either's good.",
+            "book_red>B | book_green>B",
+            CLASSROOM,
+        ),
+        ("Noah needs a book, any old one.", "book_red>B | book_green>B", CLASSROOM),
+        # with nothing left open they change nothing, as 'whichever' does
+        ("Give Noah the red book, his pick.", "book_red>B", CLASSROOM),
+        # a choice the scene cannot meet stays refused
+        ("Give Noah one of the globes, his pick.", None, CLASSROOM),
+    ],
+)
+def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)

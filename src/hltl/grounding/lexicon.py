@@ -609,6 +609,21 @@ _phrases(
     "any is ok",
     "either one is ok",
     "any one is ok",
+    # session 31 (12r)
+    "his pick",
+    "her pick",
+    "their pick",
+    "your pick",
+    "you choose which",
+    "you pick which",
+    "you decide which",
+    "no preference",
+    "either colour",
+    "either color",
+    "either size",
+    "either is good",
+    "either 's good",
+    "any old one",
 )
 
 # Session 7 (issue 12): whole families of politeness around a request, not single sentences.
