@@ -665,3 +665,27 @@ def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> No
 )
 def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The magazine for Mr Lee, I'm wrong, it's Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, my apologies, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, sorry, wrong patient, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, not him, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, change that to Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, I meant Mrs Khan, sorry about that.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, hmm, Mrs Khan actually.", "magazine>C", WARD),
+        ("The magazine for Mr Lee. No! Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, no, it's Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, oh no, it's the jug he wants.", "jug>B", WARD),
+        ("The magazine for Mr Lee, sorry, swap that for the jug.", "jug>B", WARD),
+        # a role two share, a cue cut off, a word that is no name
+        ("The magazine for Mr Lee, no, it's the patient.", None, WARD),
+        ("The magazine for Mr Lee, my apologies.", None, WARD),
+        ("Magazine to Mr Lee, hmm, tomorrow actually.", None, WARD),
+    ],
+)
+def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)

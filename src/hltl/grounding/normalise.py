@@ -15016,14 +15016,14 @@ def _meant_to_say31r(text: str, _lexicon: Lexicon) -> str:
 _ITS_WHO_CUE31R = re.compile(
     rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|actually)\s*,\s*)it(?:'s| is| was) "
     r"(?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|needed|asked for|ordered|"
-    r"is after|was after) (?:it|them|that|those)| who asked)(?P<end>\s*[.!]?)$",
+    r"is after|was after) (?:it|them|that|those)| who asked)?(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _its_who_cue31r(text: str, lexicon: Lexicon) -> str:
-    """Session 31 (12r): "…, hold on, it's P who wants them" or "…, wait, it's P's turn" after a
-    request is '…, hold on, P' (the corrected person, one of the scene)."""
+    """Session 31 (12r): "…, hold on, it's P who wants them", "…, wait, it's P's turn" or "…,
+    no, it's P" after a request is '…, hold on, P' (the corrected person, one of the scene)."""
     m = _ITS_WHO_CUE31R.search(text)
     if m is None or not _only_person(m.group("p"), lexicon):
         return text
@@ -15219,7 +15219,40 @@ def _split_two31r(text: str, lexicon: Lexicon) -> str:
     return out if _split29r(out, lexicon) != out else text
 
 
+# what says 'no' before a correction, from a closed list: "I'm wrong", "my apologies", "wrong
+# patient", "not him"
+_CUE_WORDS31R = re.compile(
+    r"(?<=,)\s*(?:(?:oh|ah|hmm|sorry),?\s*)?(?:i'm wrong|i am wrong|(?:my )?apologies|wrong "
+    r"(?:person|patient|one|place|spot|thing|name|item|object|guy|lady|bay|table)|not (?:him|her|"
+    r"them|that one))\s*,\s*(?=\S)",
+    _F,
+)
+
+
+def _cue_words31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): words that say the request just said is wrong, between commas before
+    the corrected words ("…, I'm wrong, it's Mrs Khan", "…, my apologies, Mrs Khan", "…, wrong
+    patient, Mrs Khan", "…, not him, Mrs Khan"), are the cue 'no'; 'change / swap / switch that
+    to / for' is 'make that'; 'oh no, it's' is 'no, it's'; "No! Mrs Khan." is "No, Mrs Khan.";
+    ', Mrs Khan actually.' closing the text is ', actually Mrs Khan.' (one name of the scene); ',
+    sorry about that' after a correction is taken off."""
+    out = _CUE_WORDS31R.sub(" no, ", text)
+    out = _sub(r"\b(?:change|swap|switch) (that|it) (?:to|for)\b", r"make \1", out)
+    out = _sub(r"(?<=,)(\s*)(?:oh|ah),?\s*no,\s*(?=it(?:'s| is) )", r"\1no, ", out)
+    out = _sub(r"(?<=[.!?]\s)no!\s+(?=[A-Za-z])", "No, ", out)
+
+    def actually(m: re.Match[str]) -> str:
+        said = m.group("said")
+        return f", actually {said}{m.group('end')}" if _one_name30r(said, lexicon) else m[0]
+
+    out = _sub(r",\s*(?P<said>(?:the )?[A-Za-z][\w ]*?) actually(?P<end>\s*[.!]?)$", actually, out)
+    if re.search(r",\s*(?:no|sorry|i meant?|actually)\b", out[: max(0, len(out) - 20)], _F):
+        out = _sub(r",\s*sorry about (?:that|this)(?=\s*[.!]?$)", "", out)
+    return out
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _cue_words31r,
     _couple_of31r,
     _adjectives_and31r,
     _count_after31r,
