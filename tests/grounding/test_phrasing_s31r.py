@@ -689,3 +689,21 @@ def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
 )
 def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Omar only the cups.", "cup_green>B & cup_white>B", LAB),
+        ("Give Omar only the spoon and Emma the bowl.", "spoon>B & bowl>C", LAB),
+        ("Dana gets the other cup, not the green one.", "cup_white>A", LAB),
+        ("Dana gets the non-green cup.", "cup_white>A", LAB),
+        ("The spoon to Emma but not to Omar.", "spoon>C", LAB),
+        # no red cup; one spoon, no green one; the one excluded is the one asked for
+        ("Dana gets the non-red cup.", None, LAB),
+        ("Dana gets the other spoon, not the green one.", None, LAB),
+        ("The spoon to Omar but not to Omar.", None, LAB),
+    ],
+)
+def test_only_other_and_not_to(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)

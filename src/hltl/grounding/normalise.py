@@ -15251,7 +15251,60 @@ def _cue_words31r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+def _only_after_person31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Give P only the cups' is 'Give P the cups' ('only' keeps to what is
+    named, as the grammar does; 'P only' had been read as a name), P one person."""
+
+    def only(m: re.Match[str]) -> str:
+        return f"{m.group(1)}{m.group(2)} " if _only_person(m.group(2), lexicon) else m[0]
+
+    return _sub(
+        r"\b((?:give|hand|pass|bring|fetch|get) )([A-Z][\w]*(?: [A-Z][\w]*)?) (?:only|just) "
+        r"(?=(?:the|both|one|a|an) )",
+        only,
+        text,
+    )
+
+
+def _other_not31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'the other cup, not the green one' is 'a cup, but not the green one'
+    when the scene has exactly two cups ('the other' is then the one left); 'the non-green cup'
+    is 'the cup that isn't green'."""
+
+    def other(m: re.Match[str]) -> str:
+        kind = m.group("kind")
+        if len(_ids(kind, lexicon, "object")) != 2 or not _only_kind(kind, lexicon, "object"):
+            return m[0]
+        return f"a {kind}, but not the {m.group('adj')} one"
+
+    out = _sub(
+        r"\bthe other (?P<kind>[a-z]+),\s*not the (?P<adj>[a-z]+) (?:one|(?P=kind))\b", other, text
+    )
+    return _sub(
+        r"\bthe non-(?P<adj>[a-z]+) (?P<kind>[a-z]+)\b", r"the \g<kind> that isn't \g<adj>", out
+    )
+
+
+def _but_not_to31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "The spoon to Emma but not to Omar" is 'The spoon to Emma' when Omar is
+    one person of the scene and no task of the request is his (else left: "… to Omar but not to
+    Omar" is refused)."""
+    m = re.search(
+        r"\s*,?\s*(?:but|and) not (?:to|for) (?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$", text, _F
+    )
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    req = text[: m.start()]
+    said = _tasks_of(req, lexicon)
+    if not said or _ids(m.group("p"), lexicon) & {t for _, _, t in said}:
+        return text
+    return req + (m.group("end") or ".")
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _only_after_person31r,
+    _other_not31r,
+    _but_not_to31r,
     _cue_words31r,
     _couple_of31r,
     _adjectives_and31r,
