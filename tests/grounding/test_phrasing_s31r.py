@@ -707,3 +707,18 @@ def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
 )
 def test_only_other_and_not_to(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The black pen for Priya, sorry, make that red.", "pen_red>A", OFFICE),
+        ("The black pen for Priya, sorry, red not black.", "pen_red>A", OFFICE),
+        # no green pen; the stapler has no red one; 'not blue' is not what was asked
+        ("The black pen for Priya, sorry, make that green.", None, OFFICE),
+        ("The stapler for Priya, sorry, make that red.", None, OFFICE),
+        ("The black pen for Priya, sorry, red not blue.", None, OFFICE),
+    ],
+)
+def test_a_correction_by_its_colour(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)

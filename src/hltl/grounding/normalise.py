@@ -15301,7 +15301,67 @@ def _but_not_to31r(text: str, lexicon: Lexicon) -> str:
     return req + (m.group("end") or ".")
 
 
+def _adj_names_one31r(adj: str, before: str, lexicon: Lexicon) -> bool:
+    """Whether ``adj`` with the kind of the one object named in ``before`` names exactly one
+    object of the scene, another than that one ('red' after 'the black pen': the red pen)."""
+    named = [it for it in _names(before, lexicon) if it.refs[0].kind == "object"]
+    if len(named) != 1 or len({r.id for r in named[0].refs}) != 1:
+        return False
+    kinds = {o.category for o in lexicon.scene.objects if o.id == named[0].refs[0].id}
+    for kind in kinds:
+        ids = _ids(f"{adj} {kind}", lexicon, "object")
+        if (
+            len(ids) == 1
+            and ids != {named[0].refs[0].id}
+            and _whole_name(f"{adj} {kind}", lexicon, "object")
+        ):
+            return True
+    return False
+
+
+def _kind_of31r(before: str, lexicon: Lexicon) -> str:
+    """The category of the one object ``before`` names ('' if not one)."""
+    ids = _ids(before, lexicon, "object")
+    return next((o.category for o in lexicon.scene.objects if ids == {o.id}), "")
+
+
+def _bare_adjective31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a correction that says only the colour or size of the one object
+    asked for ("The black pen for Priya, sorry, make that red", "…, sorry, red not black") is 'the
+    red one' (the grammar's ellipsis) when the word with that object's kind names one other
+    object of the scene, and the word after 'not' the object asked for (else left, refused). ("…
+    - red, I mean." closes on 'I mean', which offline.py takes as a correction cut off.)"""
+    m = re.search(
+        r",\s*(?P<cue>(?:sorry|no|oops),?\s*)?make (?:that|it) (?P<adj>[a-z]+)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is not None and _adj_names_one31r(m.group("adj"), text[: m.start()], lexicon):
+        cue = m.group("cue") or ""
+        return (
+            f"{text[: m.start()]}, {cue}make that the {m.group('adj')} one{m.group('end') or '.'}"
+        )
+    m = re.search(
+        r",\s*(?P<cue>sorry|no|oops|wait),?\s*(?P<adj>[a-z]+),? not (?P<old>[a-z]+)"
+        r"(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if (
+        m is not None
+        and _adj_names_one31r(m.group("adj"), text[: m.start()], lexicon)
+        and _ids(text[: m.start()], lexicon, "object")
+        == _ids(f"{m.group('old')} {_kind_of31r(text[: m.start()], lexicon)}", lexicon, "object")
+    ):
+        return (
+            f"{text[: m.start()]}, {m.group('cue')}, the {m.group('adj')} one, not the "
+            f"{m.group('old')} one{m.group('end') or '.'}"
+        )
+    return text
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _bare_adjective31r,
     _only_after_person31r,
     _other_not31r,
     _but_not_to31r,
