@@ -333,6 +333,7 @@ KNOWN_MISSES = frozenset(
         "For Person B, bottle, please give. Thank you.",
         "Bob wants the bottle Alice wants the crisps that's all of it.",
         "Hand Kofi a spanner, whichever's nearest your gripper.",
+        "Lily can have one of the blocks, either colour's fine.",
         "One thing each: the chips to one of them, the bottle to the other, you pick who gets "
         "what.",
         "Both of them, bottle and chips, go to Person A, she's got the picnic.",

@@ -15285,22 +15285,6 @@ def _other_not31r(text: str, lexicon: Lexicon) -> str:
     )
 
 
-def _but_not_to31r(text: str, lexicon: Lexicon) -> str:
-    """Session 31 (12r): "The spoon to Emma but not to Omar" is 'The spoon to Emma' when Omar is
-    one person of the scene and no task of the request is his (else left: "… to Omar but not to
-    Omar" is refused)."""
-    m = re.search(
-        r"\s*,?\s*(?:but|and) not (?:to|for) (?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$", text, _F
-    )
-    if m is None or not _only_person(m.group("p"), lexicon):
-        return text
-    req = text[: m.start()]
-    said = _tasks_of(req, lexicon)
-    if not said or _ids(m.group("p"), lexicon) & {t for _, _, t in said}:
-        return text
-    return req + (m.group("end") or ".")
-
-
 def _adj_names_one31r(adj: str, before: str, lexicon: Lexicon) -> bool:
     """Whether ``adj`` with the kind of the one object named in ``before`` names exactly one
     object of the scene, another than that one ('red' after 'the black pen': the red pen)."""
@@ -15364,7 +15348,6 @@ _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
     _bare_adjective31r,
     _only_after_person31r,
     _other_not31r,
-    _but_not_to31r,
     _cue_words31r,
     _couple_of31r,
     _adjectives_and31r,
