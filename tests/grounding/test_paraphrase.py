@@ -299,7 +299,6 @@ KNOWN_MISSES = frozenset(
         "Person A will take anything at all as long as it isn't the cup.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
-        "Person A gets the bottle, correction, Person A gets the chips, the bottle stays put.",
         "Give Person B the apple and the cup, well, not the cup, just the apple.",
         "Bottle on the shelf, no wait, to Alice.",
         "Crisps to Bob, ah, not Bob, Alice.",
