@@ -1668,13 +1668,17 @@ class _Parser:
                 )
                 if source is not None and source.objects is not None:
                     if (
-                        f.bare
-                        and f.target is not None
+                        f.target is not None
+                        and (f.bare or (f.verb_text != "" and f.target.kind == "human"))
                         and source.target is not None
                         and source.target.kind == "surface"
                     ):
                         # "The bib goes on the high chair. Then Lily.": a name alone does not
-                        # take over an object said to be put somewhere; what Lily gets is unsaid
+                        # take over an object said to be put somewhere; what Lily gets is unsaid.
+                        # Nor does a person after a verb of its own (session 31, lead): "Put
+                        # the bottle on the shelf and give Alice, then the chips" had given
+                        # Alice the bottle it put on the shelf ('…, then to Lily' still does:
+                        # a relay, session 12)
                         raise GroundingError(
                             f"{f.text!r} names no object, and the {', '.join(source.objects)} "
                             f"{'is' if len(source.objects) == 1 else 'are'} put on the "
