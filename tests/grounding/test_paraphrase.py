@@ -233,7 +233,6 @@ KNOWN_MISSES = frozenset(
         "bottle.",
         "Person B is wanting the bottle only, kindly do the needful.",
         "Bottle first. To Alice. After, chips to Bob.",
-        "Person B first, with the bottle. After that, the apple for Person A.",
         "Any of the pens will do for Sam.",
         "Either mug's fine for Carol, the red or the blue, your call.",
         "Each of them gets one thing: the bottle to Person A, the chips to Person B.",
