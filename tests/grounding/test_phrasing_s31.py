@@ -83,6 +83,14 @@ READS = [
     ("Mrs Ortiz would like the ruler put on her desk.", "ruler@desk", CLASSROOM),
     # (y) a bare purpose after a placement
     ("Put the ruler on the desk for maths.", "ruler@desk", CLASSROOM),
+    # (z) who is served first, then what they are given
+    (
+        "Serve Bob first, give him the apple, and after him, Carol with the cup.",
+        "apple>B ; cup>C",
+        CELL,
+    ),
+    # (aa) 'X first, over to P.'
+    ("Apple first, over to Bob. Then the cup to Alice.", "apple>B ; cup>A", CELL),
 ]
 
 
@@ -151,6 +159,12 @@ REFUSED = [
     # (y) a person, or a pronoun, after 'for'
     ("Put the ruler on the desk for Noah.", CLASSROOM),
     ("Put the ruler on the desk for it.", CLASSROOM),
+    # (z) served first, with nothing given
+    ("Serve Bob first, give him it.", CELL),
+    # (aa) a person or a surface first; two mugs
+    ("Alice first, over to Bob.", CELL),
+    ("Shelf first, over to Bob.", CELL),
+    ("Mug first, over to Bob.", CELL),
 ]
 
 

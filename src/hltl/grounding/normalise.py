@@ -8423,6 +8423,18 @@ def _has_going30(text: str, lexicon: Lexicon) -> str:
 # -- session 31 (engineer 12): blind29's kinds (politeness, wants, pronouns and ellipsis, splits,
 # lower case, questions); docs/grounding.md, "Session 31 (engineer 12)" ---------------------------
 
+def _things31(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (a phrase the session-31 patterns take lazily up to a mark) is objects of
+    the scene only, said as names alone: no verb of the grammar and no word that asks
+    (_ASKS29) among them ('the cup wants the apple' is no list of objects)."""
+    tokens = re.findall(r"[a-z']+", words.lower())
+    return (
+        _objects_only(words, lexicon)
+        and not any(t in VERBS for t in tokens)
+        and not _ASKS29.search(" ".join(tokens[1:]))  # past its determiner ('that bottle')
+    )
+
+
 # A courtesy of another language said with what it is ("Rahmat, as we say in Uzbek!", "Jerejef, as
 # we say in Wolof.", "…, as my gran would say in Gaelic"): one to three words, then 'as <someone>
 # (would) say in <a capitalised language or place>', a sentence or comma part of its own; or that
@@ -8579,7 +8591,7 @@ def _cleft_wants31(text: str, lexicon: Lexicon) -> str:
         return text
 
     def wants(m: re.Match[str]) -> str:
-        if not (_only_person(m["p"], lexicon) and _objects_only(m["x"], lexicon)):
+        if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
             return m[0]
         if "pron" in m.groupdict() and not _the_person(m["p"], m["pron"], lexicon):
             return m[0]
@@ -8624,7 +8636,7 @@ def _along_with31(text: str, lexicon: Lexicon) -> str:
 
     def too(m: re.Match[str]) -> str:
         before = text[: m.start()]
-        if not _objects_only(m["x"], lexicon) or not _ids(before, lexicon, "object"):
+        if not _things31(m["x"], lexicon) or not _ids(before, lexicon, "object"):
             return m[0]
         return f"{m['x']} too"
 
@@ -8647,7 +8659,7 @@ def _will_take31(text: str, lexicon: Lexicon) -> str:
 
     def wants(m: re.Match[str]) -> str:
         people = _ids(text[: m.start()], lexicon, "human")
-        if len(people) != 1 or not _objects_only(m["x"], lexicon):
+        if len(people) != 1 or not _things31(m["x"], lexicon):
             return m[0]
         pid = next(iter(people))
         name = next(h.name for h in lexicon.scene.humans if h.id == pid)
@@ -8675,7 +8687,7 @@ def _with_object31(text: str, lexicon: Lexicon) -> str:
         return text
 
     def to(m: re.Match[str]) -> str:
-        if not (_only_person(m["p"], lexicon) and _objects_only(m["x"], lexicon)):
+        if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
             return m[0]
         return f"{m['x']} to {m['p']}{m['when'] or ''}"
 
@@ -8700,7 +8712,7 @@ def _with_going31(text: str, lexicon: Lexicon) -> str:
 
     def also(m: re.Match[str]) -> str:
         where = m["where"]
-        if not _objects_only(m["x"], lexicon) or not (
+        if not _things31(m["x"], lexicon) or not (
             _only_person(where, lexicon) or _surface_only(where, lexicon)
         ):
             return m[0]
@@ -8797,7 +8809,7 @@ def _make_way31(text: str, lexicon: Lexicon) -> str:
         return text
 
     def go(m: re.Match[str]) -> str:
-        if not _objects_only(m["x"], lexicon):
+        if not _things31(m["x"], lexicon):
             return m[0]
         return f"{m['x']} {m['modal'] or ''}go {m['dir']}to"
 
@@ -8885,9 +8897,13 @@ def _up_on31(text: str, lexicon: Lexicon) -> str:
         return text
 
     def on(m: re.Match[str]) -> str:
-        if not (_objects_only(m["x"], lexicon) and _surface_only(m["s"], lexicon)):
+        if not _things31(m["x"], lexicon):
             return m[0]
-        return f"{m['x']} {m['on']} {m['s']}"
+        words = m["s"].split()
+        for k in range(len(words), 0, -1):  # 'the shelf and': the surface is 'the shelf'
+            if _surface_only(" ".join(words[:k]), lexicon):
+                return f"{m['x']} {m['on']} {m['s']}"
+        return m[0]
 
     return _UP_ON31.sub(on, text)
 
@@ -8941,7 +8957,7 @@ def _what_needs31(text: str, lexicon: Lexicon) -> str:
     # past its determiner a noun ('his shift' is no request to shift anything): no word that asks
     if len(why) < 3 or _ASKS29.search(why[2]) or not _names_nothing(m["why"], lexicon):
         return text
-    if not (_only_person(m["p"], lexicon) and _objects_only(m["x"], lexicon)):
+    if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
         return text
     return f"{m['p']} {m['v']} {m['x']}{m['end']}"
 
@@ -9044,6 +9060,155 @@ def _for_bare31(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + m["s"] + m["end"].strip()
 
 
+# "Serve Person A first, give her the bottle, …": who is served first, then what she is given
+_SERVE_FIRST31 = re.compile(
+    r"^(?:serve|see to|start with|begin with) (?P<p>[A-Za-z]+(?: [A-Za-z]+)?) first,\s*"
+    r"(?P<v>give|hand|pass|bring) (?P<pron>her|him|them) (?=(?:the|that|this|those|these) )",
+    _F,
+)
+
+
+def _serve_first31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'Serve P first, give her X' is 'First give P X', when P is one person of the
+    scene whom the pronoun may be."""
+    m = _SERVE_FIRST31.match(text.strip())
+    if m is None or not _the_person(m["p"], m["pron"], lexicon):
+        return text
+    return f"First {m['v'].lower()} {m['p']} {text.strip()[m.end() :]}"
+
+
+# "Cup first, over to Person B.": the object, its order, then where it goes, in a sentence of its own
+_FIRST_OVER31 = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?) first,\s*"
+    r"(?P<dir>(?:over|across|up|down|round) )?(?P<to>to|on|onto|in|into) "
+    r"(?P<where>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?)(?P<end>\s*[.!;])",
+    _F,
+)
+
+
+def _first_over31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'X first, over to P.' is 'X to P first.', when X is one object of the scene
+    (said as its name alone) and P one person or surface."""
+    if "first" not in text.lower():
+        return text
+
+    def ordered(m: re.Match[str]) -> str:
+        x, where = m["x"], m["where"]
+        if not (_only(x, lexicon, "object") and _things31(x if " " in x else f"the {x}", lexicon)):
+            return m[0]
+        if not (_only_person(where, lexicon) or _surface_only(where, lexicon)):
+            return m[0]
+        return f"{x} {m['to']} {where} first{m['end']}"
+
+    return _FIRST_OVER31.sub(ordered, text)
+
+
+# who wants what was just asked, said after it by their trade ("Both items to Bob, the archer wants
+# them."): the one person the request names, described
+_TRADE_WANTS31 = re.compile(
+    r",\s*(?:the|our|my|your) (?P<trade>[a-z]+(?: [a-z]+)?) (?:wants|needs|has asked for|asked "
+    r"for|would like|is after) (?:it|them|those|that|both)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _trade_wants31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the closing part above taken off when the request before it names one person
+    and objects, and the trade words could only describe a person (_trade_words29)."""
+    m = _TRADE_WANTS31.search(text)
+    if m is None or not _trade_words29(m["trade"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    return rest + m["end"].strip()
+
+
+# a trade said with 'a' / 'an' between commas after a person's name ("Person A, a dyer, wants …")
+_A_TRADE31 = re.compile(
+    r"(?P<p>\b[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?),\s+(?:a|an) (?P<trade>[a-z]+(?: [a-z]+)?),\s+",
+    _F,
+)
+
+
+def trades31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the trade above taken off, as trades29 takes off 'the <trade>' (and with it,
+    before the instruction is first read: the rewrites read 'Person A wants a drink and will take
+    …' only with the trade gone), when the name is one person of the scene and the trade words
+    could only describe a person."""
+    if ", a" not in text.lower():
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if _only_person(m["p"], lexicon) and _trade_words29(m["trade"], lexicon):
+            return f"{m['p']} "
+        return m[0]
+
+    return _A_TRADE31.sub(named, text)
+
+
+# where or when a person works, said after their trade ("Person A is the forester on the night
+# shift; …"): it describes the person, as the trade does
+_TRADE_ON31 = re.compile(
+    r"(?P<head>\b(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:is|'s) (?:the|our|a|an) "
+    r"(?P<trade>[a-z]+)) (?P<pp>(?:on|from|at|in|of) (?:the|a|an|our) [a-z]+(?: [a-z]+){0,2})"
+    r"(?=\s*[;,.])",
+    _F,
+)
+
+
+def _trade_on31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the description above taken off when P is one person of the scene, the trade
+    could only describe a person and the description names nothing and holds no word that asks
+    (_ASKS29) past its determiner."""
+    if " is " not in text.lower() and "'s " not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        pp = m["pp"].split(" ", 2)[-1]
+        if (
+            _only_person(m["p"], lexicon)
+            and _trade_words29(m["trade"], lexicon)
+            and _names_nothing(m["pp"], lexicon)
+            and not _ASKS29.search(pp)  # past its determiner a noun: 'the night shift'
+        ):
+            return m["head"]
+        return m[0]
+
+    return _TRADE_ON31.sub(said, text)
+
+
+# what a person's state is like, said with 'like a …' ("Mrs Khan is shivering like a diver out of
+# the sea", "Ava is building a tower like the acrobats' human pyramid"): a comparison, asking nothing
+_LIKE_A31 = re.compile(
+    r"(?P<head>\b(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:is|'s) [a-z]+(?: (?:a|an|the|her|"
+    r"his|their) [a-z]+)?) like (?P<what>(?:a|an|the) [a-z' ]+?)(?=\s*[;,.])",
+    _F,
+)
+
+
+def _like_a31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the comparison above taken off when P is one person of the scene, and the
+    comparison and what the person is doing name nothing and ask nothing."""
+    if " like " not in text.lower():
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        doing = m["head"][len(m["p"]) :]
+        what = m["what"].split(" ", 1)[1]
+        if (
+            _only_person(m["p"], lexicon)
+            and _names_nothing(doing, lexicon)
+            and _names_nothing(m["what"], lexicon)
+            and _asks_nothing29(what, lexicon)
+            and not any(w in VERBS for w in doing.lower().split()[1:2])
+        ):
+            return m["head"]
+        return m[0]
+
+    return _LIKE_A31.sub(plain, text)
+
+
 _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _as_we_say31,
     _interjected31,
@@ -9070,6 +9235,11 @@ _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_so31,
     _her_surface31,
     _for_bare31,
+    _serve_first31,
+    _first_over31,
+    _trade_wants31,
+    _trade_on31,
+    _like_a31,
 )
 
 

@@ -31,6 +31,7 @@ from hltl.grounding.normalise import (
     people_named,
     rewritten19,
     trades29,
+    trades31,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
 from hltl.grounding.tree import (
@@ -319,7 +320,7 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        text = trades29(order_colons(apostrophes(text)), lexicon)
+        text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
