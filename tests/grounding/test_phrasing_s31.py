@@ -91,6 +91,14 @@ READS = [
     ),
     # (aa) 'X first, over to P.'
     ("Apple first, over to Bob. Then the cup to Alice.", "apple>B ; cup>A", CELL),
+    # (bb) who wants what was asked, by their trade, closing it
+    ("The cup and the apple to Carol, the welder wants them.", "cup>C & apple>C", CELL),
+    # (cc) a trade said with 'a' after the name (before the first reading)
+    ("Bob, a glazier, wants a snack and will take the apple.", "apple>B", CELL),
+    # (dd) where a person works, after their trade
+    ("Carol is the baker on the early shift; both mugs go to her.", "mug_red>C & mug_blue>C", CELL),
+    # (ee) 'like a …' said of a person's state
+    ("Bob is starving like a wolf in winter, so let him have the crisps.", "chips>B", CELL),
 ]
 
 
@@ -165,6 +173,15 @@ REFUSED = [
     ("Alice first, over to Bob.", CELL),
     ("Shelf first, over to Bob.", CELL),
     ("Mug first, over to Bob.", CELL),
+    # (bb) two people named before it; a trade that is a scene word
+    ("The cup to Carol and the apple to Bob, the welder wants them.", CELL),
+    ("The cup to Carol, the mug wants it.", CELL),
+    # (cc) a person the scene lacks
+    ("Dave, a glazier, wants a snack and will take the apple.", CELL),
+    # (dd) the workplace names a surface of the scene
+    ("Carol is the baker on the shelf; both mugs go to her.", CELL),
+    # (ee) the comparison names an object of the scene
+    ("Bob is starving like a man without his crisps; let him have them.", CELL),
 ]
 
 

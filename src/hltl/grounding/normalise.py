@@ -8423,6 +8423,7 @@ def _has_going30(text: str, lexicon: Lexicon) -> str:
 # -- session 31 (engineer 12): blind29's kinds (politeness, wants, pronouns and ellipsis, splits,
 # lower case, questions); docs/grounding.md, "Session 31 (engineer 12)" ---------------------------
 
+
 def _things31(words: str, lexicon: Lexicon) -> bool:
     """Whether ``words`` (a phrase the session-31 patterns take lazily up to a mark) is objects of
     the scene only, said as names alone: no verb of the grammar and no word that asks
@@ -9077,7 +9078,7 @@ def _serve_first31(text: str, lexicon: Lexicon) -> str:
     return f"First {m['v'].lower()} {m['p']} {text.strip()[m.end() :]}"
 
 
-# "Cup first, over to Person B.": the object, its order, then where it goes, in a sentence of its own
+# "Cup first, over to Person B.": the object, its order, then where it goes, a sentence of its own
 _FIRST_OVER31 = re.compile(
     r"(?:^|(?<=[.;!?]\s))(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?) first,\s*"
     r"(?P<dir>(?:over|across|up|down|round) )?(?P<to>to|on|onto|in|into) "
@@ -9179,7 +9180,7 @@ def _trade_on31(text: str, lexicon: Lexicon) -> str:
 
 
 # what a person's state is like, said with 'like a …' ("Mrs Khan is shivering like a diver out of
-# the sea", "Ava is building a tower like the acrobats' human pyramid"): a comparison, asking nothing
+# the sea"): a comparison, asking nothing
 _LIKE_A31 = re.compile(
     r"(?P<head>\b(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:is|'s) [a-z]+(?: (?:a|an|the|her|"
     r"his|their) [a-z]+)?) like (?P<what>(?:a|an|the) [a-z' ]+?)(?=\s*[;,.])",
