@@ -160,6 +160,11 @@ REFUSED = [
     # (v) what happened names an object; no state after the person (a time that may put it off)
     ("After the apple Alice is shattered and needs the bottle.", CELL),
     ("After the marathon Alice needs the bottle.", CELL),
+    # (v) a state to come after what happens: the time puts the task off
+    ("After the race Bob is going to need the bottle.", CELL),
+    ("After the race Bob is getting the bottle.", CELL),
+    ("After the race Bob is to get the bottle.", CELL),
+    ("After the race Bob is due the bottle.", CELL),
     # (w) the state is an object of the scene
     ("bob is crisps so the apple to him", CELL),
     # (x) a pronoun that cannot be the one person named

@@ -8972,9 +8972,13 @@ _AFTER_STATE31 = re.compile(
 )
 
 
+_TO_COME31 = frozenset({"to", "going", "due", "about", "off", "away", "out", "back", "set", "yet"})
+
+
 def _after_state31(text: str, lexicon: Lexicon) -> str:
-    """Session 31: the opening above taken off when P is one person of the scene and what happened
-    names nothing and asks nothing (_asks_nothing29 past its determiner)."""
+    """Session 31: the opening above taken off when P is one person of the scene, what happened
+    names nothing and asks nothing (_asks_nothing29 past its determiner), and the state holds now
+    (one word, then 'and', a comma or 'so')."""
     m = _AFTER_STATE31.match(text.strip())
     if m is None:
         return text
@@ -8985,6 +8989,16 @@ def _after_state31(text: str, lexicon: Lexicon) -> str:
     if not any(_only_person(" ".join(words[:n]), lexicon) for n in (len(words), 1)):
         return text
     rest = text.strip()[m.end() :]
+    # the state is one that holds now ('is dry as a bone and …', 'is shattered, so …'): never one
+    # to come ('is going to need', 'is getting', 'is to get', 'is due'), which the time puts off
+    state = _rx(r"^[A-Za-z]+(?: [A-Za-z]+)?(?:'s| is) ([a-z]+)\b[^,;.]*?(?: and\b|,| so\b)").match(
+        rest
+    )
+    if state is None:
+        return text
+    word = state.group(1).lower()
+    if word.endswith("ing") or word in VERBS or word in _TO_COME31:
+        return text
     return rest[:1].upper() + rest[1:]
 
 
