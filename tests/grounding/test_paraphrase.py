@@ -604,7 +604,6 @@ KNOWN_MISSES = frozenset(
         'Hand the bottle to Percon A, the shearer',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
-        'Person B first. The bottle, that is. Then over to Person A. Chips for her.',
         "Either mug will do for Carol, she's not fussy.",
         'Split the cup and the apple between Person A and Person B, whichever way round you like.',
         "Person B can have the apple or the cup, either's fine by me.",

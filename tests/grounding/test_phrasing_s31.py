@@ -99,6 +99,9 @@ READS = [
     ("Carol is the baker on the early shift; both mugs go to her.", "mug_red>C & mug_blue>C", CELL),
     # (ee) 'like a …' said of a person's state
     ("Bob is starving like a wolf in winter, so let him have the crisps.", "chips>B", CELL),
+    # (ff) one task said over two sentences
+    ("Bob first. The apple, that is. Then over to Carol. Cup for her.", "apple>B ; cup>C", CELL),
+    ("Then over to Mrs Ortiz. Globe for her.", "globe>A", CLASSROOM),
 ]
 
 
@@ -187,6 +190,10 @@ REFUSED = [
     ("Carol is the baker on the shelf; both mugs go to her.", CELL),
     # (ee) the comparison names an object of the scene
     ("Bob is starving like a man without his crisps; let him have them.", CELL),
+    # (ff) a person said as what they get; a pronoun that cannot be the person; two mugs
+    ("Bob first. Alice, that is.", CELL),
+    ("Then over to Mrs Ortiz. Globe for him.", CLASSROOM),
+    ("Then over to Carol. Mug for her.", CELL),
 ]
 
 

@@ -9224,6 +9224,48 @@ def _like_a31(text: str, lexicon: Lexicon) -> str:
     return _LIKE_A31.sub(plain, text)
 
 
+# one task said over two sentences: the person, then what they get ("Person B first. The bottle,
+# that is.", "Then over to Person A. Chips for her.")
+_PERSON_THEN_WHAT31 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<p>[A-Za-z]+(?: [A-Za-z]+)?) (?P<when>first|next|last)\.\s+"
+    r"(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?),? that is(?P<end>\s*[.!])",
+    _F,
+)
+_TO_THEN_WHAT31 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<then>(?:and )?then,? |next,? )?(?P<dir>(?:over|across|up|down|round) )?"
+    r"to (?P<p>[A-Za-z]+(?: [A-Za-z]+)?)\.\s+(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?)"
+    r" for (?P<pron>her|him|them)(?P<end>\s*[.!])",
+    _F,
+)
+
+
+def _one_task_two_sentences31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the two sentences above are one task, 'The bottle to Person B first.', 'Then
+    chips to Person A.', when P is one person of the scene, X one object said by its name alone,
+    and the pronoun one P may be (the second sentence names no one, so 'her' is the person the
+    sentence before it names)."""
+    if "." not in text:
+        return text
+
+    def first(m: re.Match[str]) -> str:
+        x = m["x"] if " " in m["x"] else f"the {m['x']}"
+        if not (_only_person(m["p"], lexicon) and _only(x, lexicon, "object")):
+            return m[0]
+        if not _things31(x, lexicon):
+            return m[0]
+        return f"{m['x']} to {m['p']} {m['when']}{m['end']}"
+
+    def then(m: re.Match[str]) -> str:
+        x = m["x"] if " " in m["x"] else f"the {m['x']}"
+        if not (_the_person(m["p"], m["pron"], lexicon) and _only(x, lexicon, "object")):
+            return m[0]
+        if not _things31(x, lexicon):
+            return m[0]
+        return f"{m['then'] or ''}{m['x']} to {m['p']}{m['end']}"
+
+    return _TO_THEN_WHAT31.sub(then, _PERSON_THEN_WHAT31.sub(first, text))
+
+
 _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _as_we_say31,
     _interjected31,
@@ -9255,6 +9297,7 @@ _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _trade_wants31,
     _trade_on31,
     _like_a31,
+    _one_task_two_sentences31,
 )
 
 
