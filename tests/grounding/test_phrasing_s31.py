@@ -8,9 +8,18 @@ from __future__ import annotations
 import pytest
 
 from hltl.world.scene import load_scene
-from tests.grounding.helpers import CELL, CLASSROOM, ROOT, assert_reads, assert_refused, tree
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    ROOT,
+    assert_reads,
+    assert_refused,
+    assert_same_or_refused,
+    tree,
+)
 
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # bottle, chips; Person A, Person B
+LINE24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")  # bottle, chips; Person A, Person B
 
 READS = [
     # (a) a courtesy said with its language (alone, its word taken off before)
@@ -205,3 +214,18 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
 def test_a_trade_is_said_of_a_person_of_the_scene_only() -> None:
     # 'Dave' is no one of the scene: the trade before him is not taken off, and nothing is guessed
     assert tree("Bob gets the cup, and our welder, Dave, the apple.", CELL) is None
+
+
+@pytest.mark.parametrize("cue", ["no wait", "correction", "sorry"])
+def test_who_it_is_after_a_cue_is_the_correction(cue: str) -> None:
+    # the wrappers fuzz (seeds 31 and 32) on main 7931fa8: 'it's Person A' after 'whoops' was
+    # taken off as a reason, and the chips read to Person B, the person corrected away
+    text = (
+        "Take the bottle to Person B, whoops, I've got them mixed up again, it's Person A, "
+        f"{cue}, the chips"
+    )
+    assert_same_or_refused(text, "chips>A", LINE24)
+    assert_same_or_refused(
+        "Take the bottle to Person B, whoops, it's Person A, no wait, the chips", "chips>A", LINE24
+    )
+    assert_reads("Give the bottle to Bob, no wait, Bob's got one, to Alice", "bottle>A", CELL)

@@ -11714,6 +11714,10 @@ _NOT_REASON28R = re.compile(
 _PRONOUN28R = re.compile(r"\b(?:he|she|him|her|they|them|his|their)\b", _F)
 
 
+# "it's Person A", "that was Bob": who it is, said after a correction's cue (_cue_reason28r)
+_IT_IS_WHO31 = re.compile(r"(?:it|that)(?:'s| is| was) ", _F)
+
+
 def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12r): a reason stated between a correction's cue and the corrected words
     ("Give the bottle to Bob, no wait, Bob's got one, to Alice") says why, and is taken off, so
@@ -11729,10 +11733,11 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
         return text
-    if re.search(r"\bfor\b", why, _F) and _ids(why, lexicon, "human"):
+    if (re.search(r"\bfor\b", why, _F) or _IT_IS_WHO31.match(why)) and _ids(why, lexicon, "human"):
         # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
         # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
-        # gloves to the person before)
+        # gloves to the person before); so is "…, whoops, it's Person A, no wait, the chips"
+        # (session 31, engineer 12: the wrappers fuzz on blind29 had read the chips to Person B)
         return text
     return text[: m.start("why")] + after
 
