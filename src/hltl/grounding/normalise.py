@@ -9266,6 +9266,40 @@ def _one_task_two_sentences31(text: str, lexicon: Lexicon) -> str:
     return _TO_THEN_WHAT31.sub(then, _PERSON_THEN_WHAT31.sub(first, text))
 
 
+# who a person is, said between commas right after their name ("… give Alice, our bassoonist, the
+# chips", "hand Bob, a regular here, the crisps", "Omar, the new intern, …"): it only describes
+_APPOSITION31 = re.compile(
+    r"(?P<p>\b(?:(?:person|mr|mrs|ms|miss|dr|nurse|chef) )?[A-Za-z]+),\s+(?P<det>our|my|your|a|an|"
+    r"the) (?P<desc>[a-z]+(?: [a-z]+)??)(?: (?:here|round here|from next door))?,\s+(?=\S)",
+    _F,
+)
+
+
+def _apposition31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the description above taken off, the name kept (the text as said without it),
+    when the name is one person of the scene and the description's words name nothing, hold no
+    word of a scene name, no verb of the grammar and no word that asks (_ASKS29); after 'the' only
+    words that could only describe a person (_trade_words29: 'Give Alice, the red, …' is left).
+    Without it the comma kept after the name read 'give Alice, the chips' as two tasks, and gave
+    Alice the object before them too (12c's frames fuzz, on main 7931fa8)."""
+    if "," not in text:
+        return text
+    said = _scene_words29(lexicon)
+
+    def named(m: re.Match[str]) -> str:
+        desc = m["desc"]
+        words = desc.lower().split()
+        if not _only_person(m["p"], lexicon) or not _names_nothing(desc, lexicon):
+            return m[0]
+        if any(w in said or w in VERBS for w in words) or _ASKS29.search(desc):
+            return m[0]
+        if m["det"].lower() == "the" and not _trade_words29(desc, lexicon):
+            return m[0]
+        return f"{m['p']} "
+
+    return _APPOSITION31.sub(named, text)
+
+
 _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _as_we_say31,
     _interjected31,
@@ -9298,6 +9332,7 @@ _STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
     _trade_on31,
     _like_a31,
     _one_task_two_sentences31,
+    _apposition31,
 )
 
 

@@ -341,6 +341,12 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{more.group('said')!r} after a request could add to it or replace what it "
                 "names: say 'too' or 'instead'"
             )
+        cleft = _CLEFT_AFTER31.search(text)
+        if cleft is not None and _names_any30s(text[: cleft.start()], lexicon):
+            raise GroundingError(
+                f"{cleft.group('said')!r} after a request could add to it or correct what it "
+                "names: say 'too' or 'instead'"
+            )
         off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
         if off is not None:
             raise GroundingError(
@@ -438,6 +444,19 @@ _PUT_OFF30S = re.compile(
 _HOW_ABOUT30S = re.compile(
     r"(?<!\bor)(?:[,.;!?]\s*|\s+and\s+)(?P<said>(?:what|how) about\b[^.;!?]*)"
     r"(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+# Session 31 (engineer 12): a want said as a cleft in a sentence after a request ("Give Bob the cup.
+# It's the apple that Alice is hoping for."): its focus sets the object against another, so it may
+# correct what was asked as well as add to it (12c's frames fuzz: read as a correction of 'it',
+# or folded into the request's order); read where 'too' / 'as well' / 'also' / 'instead' says which
+_CLEFT_AFTER31 = re.compile(
+    r"(?<=[.;!?])\s*(?P<said>it(?:'s| is| was) (?:the|that|this|those|these|a|an) [^.;!?]*?"
+    r"(?:hoping for|after|wanting|craving|wants|needs|would like|'d like|waiting for|asked for|"
+    r"asking for|longing for|fancies))(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)"
+    r"(?=\s*(?:[.;!?]|$))",
     re.I,
 )
 
