@@ -229,3 +229,42 @@ def test_who_it_is_after_a_cue_is_the_correction(cue: str) -> None:
         "Take the bottle to Person B, whoops, it's Person A, no wait, the chips", "chips>A", LINE24
     )
     assert_reads("Give the bottle to Bob, no wait, Bob's got one, to Alice", "bottle>A", CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Put the apple on the shelf and give Alice, our bassoonist, the cup",
+            "apple@shelf & cup>A",
+        ),
+        (
+            "Put the apple on the shelf, then hand Bob, a regular here, the cup.",
+            "apple@shelf ; cup>B",
+        ),
+        (
+            "put the crisps on the shelf and hand alice, our oboist, the apple",
+            "chips@shelf & apple>A",
+        ),
+    ],
+)
+def test_an_apposition_after_a_name_only_describes(text: str, want: str) -> None:
+    # 12c's frames fuzz on main 7931fa8: the comma left after the name gave Alice the apple too
+    assert_reads(text, want, CELL)
+
+
+def test_an_apposition_after_an_unknown_name_is_left() -> None:
+    assert_refused("Give Dave, our bassoonist, the cup", CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Bob the cup. Actually no, give it to Alice. It's the apple that Alice is hoping for.",
+        "Give Bob the apple, then Alice the red mug. It's the crisps that Alice is after.",
+        "Give Bob the cup. It's the apple Carol wants.",
+    ],
+)
+def test_a_cleft_want_after_a_request_is_refused(text: str) -> None:
+    # 12c's frames fuzz on main 7931fa8: read as a correction of 'it', or folded into the order
+    assert_refused(text, CELL, match="say 'too' or 'instead'")
