@@ -769,6 +769,12 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
     body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
+    if _trailing_remarks31l(remark) and _reading(body, lexicon, normalise=False) is not None:
+        # session 31 (lead): "Give Bob the cup and, once Bob has it, give Alice the bottle. It's
+        # the apple that Alice is hoping for.": the request's 'it' is the cup, said before it; a
+        # remark said after every request does not stand in for pronouns the request resolves
+        # (it had made 'once Bob has the apple'); the remark must still be in the request
+        person, thing = set(), set()
     if len(person) > 1:
         _pronoun_among(said, body, person, lexicon)
     if len(person) == 1:
@@ -788,6 +794,12 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if wanting and not _agrees(wanting, body, lexicon):
         return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _trailing_remarks31l(remark: list[bool]) -> bool:
+    """Whether every remark comes after every request (``_remarks``)."""
+    last = max((k for k, r in enumerate(remark) if not r), default=-1)
+    return all(k > last for k, r in enumerate(remark) if r)
 
 
 def _pronoun_among(said: list[str], body: str, person: set[str], lexicon: Lexicon) -> None:
