@@ -16277,7 +16277,29 @@ def _bare_adjective31r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "Alice would be happy with the bottle or the crisps."
+_HAPPY_WITH31R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:would be|'d be|will be) (?:quite |perfectly |very )?"
+    r"(?:happy|fine|glad|content|pleased) (?:with|to get|to have) (?P<x>(?:either |both )?"
+    r"(?:the|a|an|one of the|any of the) [^,;:.!?]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _happy_with31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'P would be happy with X' / "P'd be fine with X" is 'P would like X' (P
+    one person, X the scene's objects: what P takes, the grammar reading a choice or a list in
+    it). 'P is happy with X' is left: it may say she has it already."""
+    m = _HAPPY_WITH31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _objects_only(m.group("x"), lexicon):
+        return text
+    return f"{m.group('p')} would like {m.group('x')}{text[m.start('end') :]}"
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _happy_with31r,
     _bare_adjective31r,
     _only_after_person31r,
     _other_not31r,
