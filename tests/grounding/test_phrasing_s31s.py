@@ -1,0 +1,139 @@
+"""Session-31 phrasings of issue 12 (engineer 12s): doubtful readings found on main by the lead's
+probes, each now a refusal naming why — a step waited for that nothing asks, a request the words
+after it call wrong, 'has' beside a want, a reason whose pronoun a title rules out. Each rule
+with the near forms it must still read (docs/grounding.md, "Session 31 (engineer 12s)")."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.grounding.helpers import CELL, WARD, assert_reads, assert_refused
+
+# -- 'after the cup is done' with no step for the cup (offline.py _unasked_done31s) --------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was cup>A ; chips>B ; apple>A: 'is done' taken as fillers, 'after the cup' as a step
+        "Bob gets the chips, then Alice gets the apple after the cup is done",
+        "Give Alice the apple once the cup is done.",
+        "Give Alice the apple when the cup's done.",
+        "Give Alice the apple after Bob's cup is done.",
+        "Give Alice the apple as soon as the cup is over.",
+        "Give Alice the apple after the cup has been done.",
+    ],
+)
+def test_a_step_waited_for_that_nothing_asks_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="waits for a step this instruction does not ask for")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # the step waited for is asked in the instruction
+        ("Give Bob the cup, and once the cup is done, give Alice the apple", "cup>B ; apple>A"),
+        ("Give Bob the cup, and once that is done, give Alice the apple", "cup>B ; apple>A"),
+        # 'after the cup' (no 'is done'): the same person's step before (session 8)
+        ("Give Alice the apple after the cup", "cup>A ; apple>A"),
+        ("Give Alice the apple after the cup is on the shelf", "cup@shelf ; apple>A"),
+        ("Once Bob has the cup, give Alice the apple", "cup>B ; apple>A"),
+    ],
+)
+def test_near_forms_of_a_step_waited_for_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- the words after the request say it is wrong (offline.py _said_wrong31s) ----------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # each was read as the request before it (the remark taken off)
+        "Put the apple on the shelf. It is the wrong one.",
+        "Put the apple on the shelf, it's the wrong one.",
+        "Give Bob the cup, that's wrong.",
+        "Give Bob the cup. That's the wrong cup.",
+        "Give Bob the cup. It isn't the right one.",
+        "Give Bob the cup. Oh, that looks like the wrong one!",
+    ],
+)
+def test_a_request_said_to_be_wrong_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="says it is wrong")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the cup, it's the right one.", "cup>B"),
+        ("Give Bob the cup, he's the right one to ask.", "cup>B"),
+        # a correction after 'wrong' is read as a correction (session 27)
+        ("Hand the chips to Alice, whoops, wrong one, I meant Bob.", "chips>B"),
+    ],
+)
+def test_near_forms_of_a_request_said_to_be_wrong_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- 'has' beside a want (offline.py _has_beside_want31s) ----------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was cup>B & apple>B: 'has' read as a request
+        "Bob has the cup and wants the apple.",
+        "Bob has the cup, he needs the apple.",
+        "Bob has the cup. He wants the apple.",
+        "Bob's got the cup, and he'd like the apple.",
+        "Bob wants the apple and has the cup.",
+        "Alice wants the apple and Bob has the cup.",
+    ],
+)
+def test_has_beside_a_want_is_refused_with_both_readings(text: str) -> None:
+    assert_refused(text, CELL, match="could say what .* already holds .* or that .* is to get")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # no want said: 'has' allots (blind13, blind21)
+        ("Bob has the cup and Alice the apple.", "cup>B & apple>A"),
+        ("Is it alright if Bob has the cup?", "cup>B"),
+        # a condition: 'has' is the state waited for
+        ("Once Bob has the cup, Alice wants the apple", "cup>B ; apple>A"),
+        ("Bob wants the cup; once he has it, give Alice the apple", "cup>B ; apple>A"),
+        ("Bob wants the apple and the cup.", "apple>B & cup>B"),
+    ],
+)
+def test_near_forms_of_has_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- a reason whose pronoun a title rules out (offline.py _ruled_out_dropped31s) -----------------
+
+
+def test_a_reason_with_a_pronoun_the_title_rules_out_is_refused_with_its_readings() -> None:
+    # was jug>B: session 21's rule took the reason off, 'she' with it
+    assert_refused(
+        "Give Mr Lee the jug, she's thirsty.",
+        WARD,
+        match=r"cannot mean Person B .*could mean Person A \(Ruth.*Person C \(Mrs Khan",
+    )
+    assert_refused(
+        "Give Mrs Khan the magazine, he's bored.", WARD, match=r"cannot mean Person C .*by title"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Mr Lee the jug, he's thirsty.", "jug>B"),
+        ("Give Mrs Khan the jug, she's thirsty.", "jug>C"),
+        ("Give Ruth the jug, she's thirsty.", "jug>A"),  # a name alone says nothing of sex
+        ("Give Mr Lee the jug, it's hot in here.", "jug>B"),
+    ],
+)
+def test_a_reason_whose_pronoun_fits_is_taken_off_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, WARD)
