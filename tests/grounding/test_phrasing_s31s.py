@@ -7,7 +7,15 @@ from __future__ import annotations
 
 import pytest
 
-from tests.grounding.helpers import CELL, WARD, assert_reads, assert_refused
+from hltl.world.scene import Scene
+from tests.grounding.helpers import (
+    CELL,
+    NURSERY,
+    OFFICE,
+    WARD,
+    assert_reads,
+    assert_refused,
+)
 
 # -- 'after the cup is done' with no step for the cup (offline.py _unasked_done31s) --------------
 
@@ -137,3 +145,74 @@ def test_a_reason_with_a_pronoun_the_title_rules_out_is_refused_with_its_reading
 )
 def test_a_reason_whose_pronoun_fits_is_taken_off_as_before(text: str, want: str) -> None:
     assert_reads(text, want, WARD)
+
+
+# -- a choice said to be fine for one person (normalise.py _will_do31s) --------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused ('will do' / 'is fine' unread)
+        ("Any of the pens will do for Sam.", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("Either of the pens is fine for Sam.", "pen_black>B | pen_blue>B | pen_red>B", OFFICE),
+        ("Either mug's fine for Carol.", "mug_red>C | mug_blue>C", CELL),
+        ("Either mug works for Carol.", "mug_red>C | mug_blue>C", CELL),
+        ("Any of the mugs to Carol is fine.", "mug_red>C | mug_blue>C", CELL),
+        (
+            "Lily can have one of the blocks, either colour's fine.",
+            "block_red>A | block_green>A",
+            NURSERY,
+        ),
+    ],
+)
+def test_a_choice_said_to_be_fine_for_one_person_is_that_choice(
+    text: str, want: str, scene: Scene
+) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Either of the mugs is fine for Carol and Bob.",  # two people: who gets it?
+        "Give Carol the red mug, either colour's fine.",  # no choice before: a contradiction
+        "Either of them is fine for Carol.",  # names no object
+    ],
+)
+def test_near_forms_of_a_choice_said_to_be_fine_are_refused(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+# -- 'both of those' before where they go (normalise.py _both_of31s) ------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused ('Both of' unread)
+        (
+            "Black pen to Sam. Also the notepad. Both of those to him.",
+            "pen_black>B & notebook>B",
+            OFFICE,
+        ),
+        ("Give Alice the cup and the apple. Both of those to Alice.", "cup>A & apple>A", CELL),
+        ("Both of them, the bottle and the cup, go to Alice.", "bottle>A & cup>A", CELL),
+        ("Both, the bottle and the cup, to Alice.", "bottle>A & cup>A", CELL),
+    ],
+)
+def test_both_of_those_is_the_two_named(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Both of them, the bottle, go to Alice.",  # one named: not both
+        "Both of them, Alice and Bob, go to the shelf.",  # people, not things
+        "Alice and Bob. Give both of them the cup.",
+        "Give Alice the cup. Both of those to Bob.",  # one object before 'both'
+    ],
+)
+def test_near_forms_of_both_of_those_are_refused(text: str) -> None:
+    assert_refused(text, CELL)

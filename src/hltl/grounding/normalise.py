@@ -7076,6 +7076,86 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 31 (engineer 12s): blind17-23's known misses, by kind -------------------------------
+
+# 'will do' / 'is fine' said of a choice with its one recipient ("Any of the pens will do for
+# Sam.", "Either mug's fine for Carol.", "Either of the two things to Person B is fine."): the
+# choice for that person. Session 21 read "Either cup will do for Dana" alone (one word after
+# 'either', a whole text); this reads a sentence of that shape wherever it stands.
+_FINE31S = r"(?: will do| would do|'ll do| is fine|'s fine| is okay| is ok| works)"
+_CHOICE31S = (
+    r"(?:either|any)(?: one)?(?: of (?:the|those|these)(?: two| three| four)?)? [a-z]+(?: [a-z]+)?"
+)
+_WILL_DO31S = re.compile(
+    rf"(?:^|(?<=[.!?] ))(?P<choice>{_CHOICE31S}){_FINE31S} (?P<to>for|to) "
+    r"(?P<who>[^,.;!?]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_FINE_AFTER31S = re.compile(
+    rf"(?:^|(?<=[.!?] ))(?P<choice>{_CHOICE31S}) (?P<to>for|to) (?P<who>[^,.;!?]+?)"
+    rf"{_FINE31S}(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# after a choice said before it: 'either colour's fine', 'any size is ok' (said of the kind)
+_KIND_FINE31S = re.compile(
+    r",\s*(?:either|any) (?:colour|color|size|one|kind|sort)(?:'s| is) (?:fine|ok|okay)"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _will_do31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a choice said to be fine for one person is that choice for them (above):
+    read when the choice names only objects and the words after 'for' / 'to' exactly one person
+    ("Any of the pens will do for Sam and Priya" stays)."""
+
+    def chosen(m: re.Match[str]) -> str:
+        if not _objects_only(m.group("choice"), lexicon) or not _only_person(
+            m.group("who"), lexicon
+        ):
+            return m.group(0)
+        return f"{m.group('choice')} {m.group('to')} {m.group('who')}"
+
+    out = _WILL_DO31S.sub(chosen, text)
+    out = _FINE_AFTER31S.sub(chosen, out)
+
+    def after_choice(m: re.Match[str]) -> str:
+        chose = re.search(r"\b(?:one of|either|any)\b", m.string[: m.start()], _F)
+        return "" if chose else m.group(0)
+
+    return _KIND_FINE31S.sub(after_choice, out)
+
+
+# 'Both of those' / 'both of them' opening a sentence, then where they go ("Black pen to Sam.
+# Also the notepad. Both of those to him."): the grammar's 'both' (the two objects named before,
+# or a refusal saying it cannot tell which); with the list said after it ("Both of them, bottle
+# and chips, go to Person A"): the list. ('Give both of them a cup' names people: left.)
+_BOTH_OF31S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?:(?P<both>both|the two|all three|the three) of (?:them|those|these)"
+    r"(?P<list>,\s*[^,.;!?]+?,)?|(?P<alone>both|all three),\s*(?P<listed>[^,.;!?]+?),)"
+    r"(?= (?:to|for|on|onto|in|into|go|goes|over|up|across)\b)",
+    _F,
+)
+_HOW_MANY31S = {"both": 2, "the two": 2, "all three": 3, "the three": 3}
+
+
+def _both_of31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): 'both of those' before where they go is 'both'; with a list in
+    apposition, the list, when it names only objects, as many as the count says (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        listed, both = m.group("list") or m.group("listed"), m.group("both") or m.group("alone")
+        if listed is None:
+            return both
+        names = _names(listed, lexicon)
+        if not _objects_only(listed, lexicon) or len(names) != _HOW_MANY31S[both.lower()]:
+            return m.group(0)
+        words = listed.strip(" ,")
+        return words[0].upper() + words[1:] if both[0].isupper() else words
+
+    return _BOTH_OF31S.sub(said, text)
+
+
 # -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
 
 # A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
@@ -14481,6 +14561,7 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
+_STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (_will_do31s, _both_of31s)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,
@@ -14663,4 +14744,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _give_both28s,
     _dislocated28s,
     _along_with28s,
+    # session 31 (12s): blind17-23's kinds
+    *_STEPS31S,
 )
