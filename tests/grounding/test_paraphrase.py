@@ -270,7 +270,6 @@ KNOWN_MISSES = frozenset(
         "The chips are wanted by Person A and the bottle by Person B.",
         "Small box onto the conveyor first, please, and the medium one straight after.",
         "Hand the cup over to Bob and do likewise for Carol with the chips.",
-        "You see that bottle next to you? Person A needs it, give it her.",
         "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
@@ -318,7 +317,6 @@ KNOWN_MISSES = frozenset(
         "thanks.",
         "Dana's desperate for the banana, she hasn't eaten since six this morning.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "See the notepad by the phone? Drop it in the box.",
         "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
         "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
@@ -437,7 +435,6 @@ KNOWN_MISSES = frozenset(
         'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
         'pallet before he goes.',
         "Lily wants her teddy bear, she won't settle for the hymn practice without it.",
-        'You see the red mug by the window? Take it across to Alice, would you.',
         'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
@@ -495,7 +492,6 @@ KNOWN_MISSES = frozenset(
         'for her.',
         "Priya wants the red pen left in the box, she'll sort it out later.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
-        "You see that bottle by your elbow? Person A's to have it.",
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
         "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
         'waiting.',

@@ -7156,6 +7156,44 @@ def _both_of31s(text: str, lexicon: Lexicon) -> str:
     return _BOTH_OF31S.sub(said, text)
 
 
+# Where an object is, said where the object opens a sentence ("You see the red mug by the
+# window? Take it across to Alice", "That bottle by the door, up on the shelf", "You see that
+# bottle next to you? Person A needs it"): a place the scene does not know, after a name that is
+# one object of the scene, tells which object is meant no more than the name does; taken off.
+# (After a name of several objects it would have to choose — 'the mug by the window' with two
+# mugs — and is left, and refused; after a verb it may say where to put it — "Put the cup by the
+# window" — and is left.) The question pointing at the object ("You see that bottle? …") is the
+# object said as a topic ("That bottle. …"), as session 17's _see_it17 reads it before 'it'.
+_WHERE_IT_IS31S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<see>(?:(?:so |and )?(?:do |can )?you see |see ))?"
+    r"(?P<det>the|that|this) (?P<obj>[a-z]+(?: [a-z]+)?)(?P<loc> (?:by|next to|near|beside|"
+    r"behind|in front of|right by|just by|over by) (?:you|(?:the|your|my|that|this) [a-z]+"
+    r"(?: [a-z]+)?))?(?P<end>\s*[?,])",
+    _F,
+)
+
+
+def _where_it_is31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a place the scene does not know after a sentence-opening name of one
+    object is taken off, and the question pointing at it is the object as a topic (above)."""
+
+    def one(m: re.Match[str]) -> str:
+        obj, loc, see = m.group("obj"), m.group("loc"), m.group("see")
+        asks = see is not None and m.group("end").strip() == "?"
+        if loc is None and not asks:
+            return m.group(0)
+        named = _names(obj, lexicon)
+        if len(named) != 1 or named[0].quant or len(_ids(obj, lexicon)) != 1:
+            return m.group(0)
+        if not _objects_only(obj, lexicon) or not _names_nothing(loc or "", lexicon):
+            return m.group(0)
+        if asks:
+            return f"{m.group('det').capitalize()} {obj}."
+        return f"{see or ''}{m.group('det')} {obj}{m.group('end')}"
+
+    return _WHERE_IT_IS31S.sub(one, text)
+
+
 # -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
 
 # A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
@@ -14561,7 +14599,11 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
-_STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (_will_do31s, _both_of31s)
+_STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _will_do31s,
+    _both_of31s,
+    _where_it_is31s,
+)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,

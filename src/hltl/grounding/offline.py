@@ -537,7 +537,8 @@ def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
         items = lex(text, lexicon)
     except GroundingError:
         return
-    if not any(it.lemma in ("verb:want", "verb:need", "verb:like") for it in items):
+    wants = [w for w, it in enumerate(items) if it.lemma in ("verb:want", "verb:need", "verb:like")]
+    if not wants:
         return
     for k, it in enumerate(items):
         if it.lemma != "verb:have" or it.text.lower() not in ("has", "has got", "'s got"):
@@ -560,6 +561,8 @@ def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
             and not (items[k - 2].kind == "punct" or _is(items[k - 2], "and", "but"))
         ):
             continue
+        if subject is items[k - 1] and not any(_same_subject31s(items, w, subject) for w in wants):
+            continue  # "Marco's got the tongs, and what Lena wants is the salt": another's want
         j = k + 1
         while j < len(items) and _is(items[j], "det"):
             j += 1
@@ -571,6 +574,19 @@ def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
             f"{subject.text} is to get {_text(items[k + 1 : j + 1])} too: say 'give' for each "
             "thing to hand over"
         )
+
+
+def _same_subject31s(items: list[Item], w: int, subject: Item) -> bool:
+    """Whether the want at ``items[w]`` may be said of ``subject``: its own subject is that
+    person or a he/she, or it has none ('… and wants the apple')."""
+    before = items[w - 1] if w > 0 else None
+    if before is None:
+        return False
+    if before.kind == "ent":
+        return {r.id for r in before.refs} == {r.id for r in subject.refs}
+    return _is(before, "and", ",") or (
+        _is(before, "pronoun") and before.text.lower() in ("he", "she")
+    )
 
 
 _RULED_OUT31S = re.compile(
