@@ -597,6 +597,81 @@ KNOWN_MISSES = frozenset(
         'Person A, a dyer, wants a drink and will take the cup or the bottle, either way.',
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         'Hand the bottle to Percon A, the shearer',
+        # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
+        'Rahmat, as we say in Uzbek! Now could the bottle go over to Person B?',
+        'Ooh, bless you, would you put the bib on the high chair, please, pet?',
+        'Alice, our oboist, would like the bottle up on the shelf, where nobody will knock it '
+        'over.',
+        "What Bob really needs right now, after his shift at the chandler's, is the crisps.",
+        "Person A could really do with the cup; for Person B it's the apple she's craving, so that "
+        "too.",
+        'The chips are what Person B is hoping for, and Person A is wanting the bottle.',
+        'Person B would love the chips to nibble, and once she has them, Person A wants the '
+        'bottle.',
+        'Person A fancies the bottle, she tells me.',
+        'After the regatta Person A is dry as a bone and needs that bottle.',
+        'Chef wants the tongs and the lemon, if you can manage both.',
+        'Grab the apple off the side and give it to Carol.',
+        'Our fencer, Person A, is owed the bottle, while her coach, Person B, is owed the chips.',
+        'Serve Person A first, give her the bottle, and after her, Person B with the chips.',
+        "That bottle? Person A's. She left it here when she nipped out to the draper's.",
+        "Person A has asked for the chips, and she'll take the bottle along with them.",
+        'The intern needs the notepad for his notes, and the stapler along with it.',
+        'Mrs Ortiz would like the globe set down on her desk for geography.',
+        "Alice gets the bottle Bob gets the crisps that's it that's all from the tobacconist.",
+        "Cup first, over to Person B. Once that's sorted, apple, Person A.",
+        "Okay so the chips go across to Person A and then Person B gets the bottle and right "
+        "that's the orienteers fed.",
+        'Person B first. The bottle, that is. Then over to Person A. Chips for her.',
+        "Right, Person A is thirsty, she wants the bottle, bring it her, there's a love.",
+        "Chips to Person B to begin with, and the moment you've done that the bottle to Person A.",
+        "Either mug will do for Carol, she's not fussy.",
+        'Split the cup and the apple between Person A and Person B, whichever way round you like.',
+        "Person B can have the apple or the cup, either's fine by me.",
+        'The machinist says Person A should have both of them, the bottle and the chips.',
+        "For Person B, any one of these: the cup, the apple, the bottle. She won't mind.",
+        "Whichever's handier, the bottle or the chips, hand it to Person A.",
+        "Whichever bottle's there, Person A gets it.",
+        "Sam can have any one of the pens, the millwright's lent us them.",
+        'Make sure each of the patients ends up with a blanket of their own.',
+        "Ava may play with one of the blocks, either, she's not fussy about colour.",
+        'Hand over two things to Person A, namely the apple and the cup.',
+        "Person B wants only one item, and it's the bottle.",
+        'Person A is to have the pair of items, the bottle and the chips alike.',
+        'The triathlete, Person A, gets our solitary bottle.',
+        'A single bottle will do for Person A after her orienteering.',
+        "Two things going out: Person A has the chips and the bottle is Person B's.",
+        'Gather up the three pens, every one of them, and drop them in the box.',
+        'Both of the blocks are to go in the high chair so Lily can bash them about.',
+        "Bob wants a mug, but not the red one, he can't stand red.",
+        "The cup's meant for Person B; don't give it to Person A by mistake.",
+        "Of the two things, Person A wants the one that isn't a bag of chips.",
+        'Not to Person A; the bottle goes to Person B.',
+        "That bottle is Person A's and no one else's, so see she gets it.",
+        'No bottle for Person B today, just his chips.',
+        'Leave the teddy; the bib to Lily.',
+        "Chips for Person A, no, I tell a lie, it's the bottle she ordered.",
+        "Take the bottle to Person B, whoops, I've got them mixed up again, it's Person A.",
+        'The bottle to Person A. Yes, Person A, I did mean her.',
+        "The sponge can go on the tray, oh, hold on, the sink's a better home for it.",
+        "The globe is for Noah, wait, I've got that wrong, it's Zoe's turn.",
+        'Sit the teddy in the high chair, no, better down on the play mat with her.',
+        'carol is thirsty so the water bottle to her, and the apple to bob',
+        'the crisps go up on the shelf please, the maltster wants them out of reach',
+        'person b first with the chips, then the cup for person a',
+        'person a is thirsty and could use both the bottle and a cup to pour into',
+        'person a the violinist has asked for chips and the bottle is for person b',
+        'person a, the confectioner, has earned the bottle',
+        'Bob has been eyeing the criaps since lunch, so let him have them.',
+        "Please stand the bottle on the sehlf, that's where it lives.",
+        "The bottle is Person B's, and Persoh A can have the chips, thanks.",
+        "Peerson A is the acupuncturist and she'd like her bottle now.",
+        'Somebody left the spobge on the side; drop it in the sink, please.',
+        'Any chance the chips could make their way over to Person A, the pizzaiolo?',
+        'Will you bring Person A the bottle? Jerejef, as we say in Wolof.',
+        'Could Person A get the chips, with the bottle going to Person B? Faafetai.',
+        'Would you drop the black pen in the box for me? Trugarez, as we say in Brittany.',
+        'Could the blue plate come off the rack and go on the worktop?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -615,6 +690,8 @@ KNOWN_UNCLEAR = frozenset(
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)
+        # blind29 (tuned on in session 31)
+        "Either book will do, but it's for the student.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -664,8 +741,10 @@ KNOWN_UNCLEAR = frozenset(
 # at the end of session 28, its one wrong reading fixed and tuned on in session 29: asserted now,
 # the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind28" written in session 29 by another engineer
 # and committed alone, reviewed by a second one, measured once at the end of session 29, tuned on
-# in session 30: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind29"})
+# in session 30: asserted now, the rest in KNOWN_MISSES; "blind29" written in session 30 by
+# another engineer and committed alone, reviewed by a second one, measured once at the end of
+# session 30, tuned on in session 31: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

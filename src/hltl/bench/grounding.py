@@ -108,8 +108,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who changed the grounder before its one measurement at the end of
 # session 29; tuned on in session 30),
 # blind29 (written in session 30 by another engineer and committed alone, never opened by the
-# engineers who change the grounder before its one measurement at the end of session 30; tests do
-# not assert it).
+# engineers who change the grounder before its one measurement at the end of session 30; tuned on
+# in session 31).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
