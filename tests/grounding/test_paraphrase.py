@@ -625,7 +625,6 @@ KNOWN_MISSES = frozenset(
         'Person B first. The bottle, that is. Then over to Person A. Chips for her.',
         "Right, Person A is thirsty, she wants the bottle, bring it her, there's a love.",
         "Chips to Person B to begin with, and the moment you've done that the bottle to Person A.",
-        "Either mug will do for Carol, she's not fussy.",
         'Split the cup and the apple between Person A and Person B, whichever way round you like.',
         "Person B can have the apple or the cup, either's fine by me.",
         'The machinist says Person A should have both of them, the bottle and the chips.',
