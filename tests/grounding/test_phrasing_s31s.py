@@ -10,6 +10,7 @@ import pytest
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    LAB,
     NURSERY,
     OFFICE,
     WARD,
@@ -258,3 +259,46 @@ def test_where_the_one_object_named_is_tells_nothing_more(
 )
 def test_near_forms_of_where_an_object_is_are_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- a negated reason after the request (normalise.py _negated_reason31s) -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused for the negation
+        (
+            "Lily wants her teddy bear, she won't settle for the hymn practice without it.",
+            "teddy>A",
+            NURSERY,
+        ),
+        (
+            "Dana's desperate for the banana, she hasn't eaten since six this morning.",
+            "banana>A",
+            LAB,
+        ),
+        ("Give Bob the cup, it isn't urgent.", "cup>B", CELL),
+        ("Give Bob the cup, it doesn't belong there.", "cup>B", CELL),
+    ],
+)
+def test_a_negated_reason_after_the_request_is_taken_off(
+    text: str, want: str, scene: Scene
+) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Dana the banana, she doesn't like this one.", LAB),  # which one
+        ("Give Dana the banana, she hasn't had that today.", LAB),
+        ("Give Bob the cup, she won't mind.", CELL),
+        ("Give Bob the cup, he's not having the apple.", CELL),  # names an object
+        ("Give Bob the cup, it isn't his.", CELL),  # whose it is
+        ("Give Bob the cup, he hasn't got one.", CELL),
+        ("Give Bob a mug, it isn't the blue one.", CELL),
+    ],
+)
+def test_a_negation_that_could_change_the_request_is_not_taken_off(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

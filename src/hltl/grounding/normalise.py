@@ -7194,6 +7194,53 @@ def _where_it_is31s(text: str, lexicon: Lexicon) -> str:
     return _WHERE_IT_IS31S.sub(one, text)
 
 
+# A reason after the request that says what is not so of its subject ("…, she won't settle for
+# the hymn practice without it", "…, she hasn't eaten since six this morning", "…, the race
+# isn't for an hour"): session 21's reasons (_reasons21) hold no negation, as 'she's not having
+# the X' changes what is asked; a negated verb whose clause names nothing in the scene, no
+# other name, and no word that could change who gets what, which one or when (_NOT_HELD31S:
+# session 21's words but the negation, and choices, time words) is a reason all the same, taken
+# off on session 21's terms (closing its sentence, after a request that names something).
+_NOT_REASON31S = re.compile(
+    r"\s*,\s*(?P<said>(?:(?:and|cos|because|as|since)\s+)?(?:she|he|it|they|(?:the|her|his|their) "
+    r"[a-z]+)(?:'s| is| has)? ?(?:won't|wont|isn't|hasn't|can't|doesn't|didn't|haven't|aren't|"
+    r"wasn't|not|'s not|'re not| is not| has not)\b[^,.;!?—–]*?)\s*(?=[.!?]|$)",
+    _F,
+)
+_NOT_HELD31S = re.compile(
+    r"\b(?:nothing|none|only|just the|too|also|as well|instead|rather|first|then|before|once|"
+    r"when|until|unless|if|one|ones|both|each|either|every|another|other|rest|same|give|hand|"
+    r"pass|bring|take|put|place|want|wants|wanted|need|needs|needed|like|likes|love|loves|fancy|"
+    r"fancies|prefer|prefers|keep|leave|send|move|them|those|these|that|this|wrong|mean|meant|"
+    r"sorry|actually|mistake|change|swap|cancel|him|for him|for her|mine|yours|hers|his own|"
+    r"her own|which|what|whatever|any|anything|all|else|matter|mind|fussed|bothered|care|sure|"
+    r"know|yet|now|today|tomorrow|tonight|later|soon|here|have|get|got|having|getting|theirs|"
+    r"ours)\b|\b(?:his|her|their)\s*$",
+    _F,
+)
+
+
+def _negated_reason31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a negated reason closing the request's sentence is taken off (above)."""
+    for m in reversed(list(_NOT_REASON31S.finditer(text))):
+        said = m.group("said")
+        words = re.findall(r"[A-Za-z']+", said)
+        before = text[: m.start()]
+        # 'this morning', 'that week': a time, not a thing pointed at
+        when = re.sub(
+            r"\b(?:this|that) (?:morning|afternoon|evening|week|year)\b", "", said, flags=_F
+        )
+        if (
+            _NOT_HELD31S.search(when)
+            or any(w[0].isupper() and w != "I" for w in words[1:])
+            or not _names_nothing(said, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
+    return text
+
+
 # -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
 
 # A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
@@ -14603,6 +14650,7 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _will_do31s,
     _both_of31s,
     _where_it_is31s,
+    _negated_reason31s,
 )
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 30 (12r): blind28's choices, counts, exclusions and corrections

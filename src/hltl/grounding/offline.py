@@ -600,13 +600,17 @@ def _ruled_out_dropped31s(refused: GroundingError, text: str, plain: str, lexico
     it ("Give Mr Lee the jug, she's thirsty.": 'she' is not Mr Lee, and Ruth or Mrs Khan, whom
     it does not name, may be meant). Such a rewrite is not taken: the reason clause it drops is
     about someone else of the scene. ("Pills to Mrs Khan, wait, no, Mr Lee, she's had hers
-    already": 'she' may be Mrs Khan, named before; the rewrite is taken as before.)"""
+    already": 'she' may be Mrs Khan, named before; the rewrite is taken as before.) The people
+    are those of the whole instruction, when ``text`` is a part of it read again ("…, she's been
+    waiting, no, leave it, give Mrs Khan the thermometer instead")."""
     m = _RULED_OUT31S.match(str(refused))
     if m is None:
         return False
     said = m.group("p").lower()
+    whole = _inside()[0] if _inside() else text
     if any(
-        title_sex(p, lexicon) in (None, PRONOUN_SEX.get(said)) for p in people_named(text, lexicon)
+        title_sex(p, lexicon) in (None, PRONOUN_SEX.get(said))
+        for p in people_named(whole, lexicon) | people_named(text, lexicon)
     ):
         return False
     word = re.compile(rf"\b{re.escape(said)}\b", re.I)
