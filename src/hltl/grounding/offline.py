@@ -387,7 +387,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 # Ugh, I don't know. Good robot.": the speaker says they are unsure; a rewrite
                 # that takes that off would act on what they doubt (session 24: 12c's fuzz)
                 continue
-            if _ruled_out_dropped31s(refused, text, plain, lexicon):
+            if _ruled_out_dropped31s(text, plain, lexicon):
                 # "Give Mr Lee the jug, she's thirsty.": the reason the rewrite takes off says
                 # 'she', which cannot be Mr Lee; someone else of the scene may be meant
                 continue
@@ -589,32 +589,33 @@ def _same_subject31s(items: list[Item], w: int, subject: Item) -> bool:
     )
 
 
-_RULED_OUT31S = re.compile(
-    r"^'(?P<p>[a-z]+)' is not resolved: it cannot mean .* \(by title\)", re.I
-)
-
-
-def _ruled_out_dropped31s(refused: GroundingError, text: str, plain: str, lexicon: Lexicon) -> bool:
-    """Session 31 (12s): whether ``plain`` (a rewrite of ``text``) took off a pronoun the reading
-    of ``text`` refused as one a title rules out, when no person the instruction names may be
-    it ("Give Mr Lee the jug, she's thirsty.": 'she' is not Mr Lee, and Ruth or Mrs Khan, whom
-    it does not name, may be meant). Such a rewrite is not taken: the reason clause it drops is
-    about someone else of the scene. ("Pills to Mrs Khan, wait, no, Mr Lee, she's had hers
+def _ruled_out_dropped31s(text: str, plain: str, lexicon: Lexicon) -> bool:
+    """Session 31 (12s): whether ``plain`` (a rewrite of ``text``) took off a he / she / him /
+    her / his that no person the instruction names may be by title, while another person of the
+    scene may be ("Give Mr Lee the jug, she's thirsty.": 'she' is not Mr Lee, and Ruth or Mrs
+    Khan, whom it does not name, may be meant). Such a rewrite is not taken: the clause it drops
+    is about someone else of the scene. ("Pills to Mrs Khan, wait, no, Mr Lee, she's had hers
     already": 'she' may be Mrs Khan, named before; the rewrite is taken as before.) The people
     are those of the whole instruction, when ``text`` is a part of it read again ("…, she's been
     waiting, no, leave it, give Mrs Khan the thermometer instead")."""
-    m = _RULED_OUT31S.match(str(refused))
-    if m is None:
+    words = set(re.findall(r"\b(?:he|she|him|her|his)\b", text.lower()))
+    if not words:
         return False
-    said = m.group("p").lower()
     whole = _inside()[0] if _inside() else text
-    if any(
-        title_sex(p, lexicon) in (None, PRONOUN_SEX.get(said))
-        for p in people_named(whole, lexicon) | people_named(text, lexicon)
-    ):
+    named = people_named(whole, lexicon) | people_named(text, lexicon)
+    if not named:
         return False
-    word = re.compile(rf"\b{re.escape(said)}\b", re.I)
-    return len(word.findall(plain)) < len(word.findall(text))
+    for said in words:
+        sex = PRONOUN_SEX[said]
+        if any(title_sex(p, lexicon) in (None, sex) for p in named):
+            continue
+        others = [h.id for h in lexicon.scene.humans if h.id not in named]
+        if not any(title_sex(p, lexicon) in (None, sex) for p in others):
+            continue  # no one of the scene may be it: someone the scene does not hold
+        word = re.compile(rf"\b{said}\b", re.I)
+        if len(word.findall(plain)) < len(word.findall(text)):
+            return True
+    return False
 
 
 def _names_any30s(text: str, lexicon: Lexicon) -> bool:
