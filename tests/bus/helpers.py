@@ -150,9 +150,11 @@ class Loopback:
         and the briefing or first basis sent right after it reached the node first, which held
         it ``RESET_WAIT`` for a reset queued behind it and then refused it (no episode): the
         first step was asked about, not foreseen, and every test that counts foresight failed
-        (the red trains of session 29). A node is up before its executor starts (``hltl node
-        sim`` is started first; the executor retries a reset nobody answers), so the tests
-        wait for that here rather than count what a node starting mid-reset does."""
+        (the red trains of session 29; since session 31 the node parks such a request until
+        its reset is answered, tests/bus/test_reset_order.py). A node is up before its
+        executor starts (``hltl node sim`` is started first; the executor retries a reset
+        nobody answers), so the tests wait for that here rather than count what a node
+        starting mid-reset does."""
         k, session = node.keys, self._exec_session
         entities = [session.declare_querier(key) for key in (k.sim_step, k.sim_reset)]
         entities += [session.declare_publisher(k.action(r)) for r in node.scene.robot_ids]

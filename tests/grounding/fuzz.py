@@ -33,7 +33,15 @@ a reason naming nothing: "…, sorry, I meant <person>, I mixed them up"; that h
 person, or refused) or left undecided ("…, or <person> maybe, I can't remember which"; refused); a
 person's state said before or after a grounded entry with no choice ("<Person> is parched. …"; the
 entry, or refused: a state asks for nothing); and the count of an entry's handovers restated after
-it ("… That's two things in all."; the entry, or refused) or miscounted (refused).
+it ("… That's two things in all."; the entry, or refused) or miscounted (refused). An eighth family
+(session 31), frames: an entry's one handover said as a want in a frame ("What <person> needs is
+the <object>.", "It's the <object> <person> is after.") or as a want the speaker was told of
+("<Person> wants the <object>, I'm told."): that handover, or refused; that want negated, had
+already or past ("What <person> doesn't need is …", "I'm told <person> has the <object> already.",
+"The last thing <person> wants is …"): refused; a want frame after a grounded entry adding a
+handover of an object it does not name (the entry's reading and that handover); and a person
+described between commas after their name in an entry ("Alice, our oboist, would like …"): as the
+entry, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -50,7 +58,7 @@ from collections import Counter
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal, cast
+from typing import Literal, cast, get_args
 
 from hltl.bench.grounding import CORPUS_DIR, PARTS, Entry, load_corpus, show_tree
 from hltl.errors import GroundingError
@@ -330,10 +338,43 @@ _NUMBERS = ("one", "two", "three", "four", "five", "six", "seven")
 # words that stand for a person, which a name said beside the entry could change
 _PRONOUNS = frozenset([*_HE_SHE, "they", "them", "their", "theirs", "themselves"])
 AFTERTHOUGHT_FORMS = ("recipient", "reason", "undecided", "state", "count", "miscount")
+# frames (session 31; blind29 had "What Bob really needs right now, after his shift at the
+# chandler's, is the crisps.", "The chips are what Person B is hoping for", "Person A fancies the
+# bottle, she tells me." and "Alice, our oboist, would like the bottle up on the shelf"): an
+# entry's one handover said as a want in a frame (WANT_FRAMES) or as a want the speaker was told of
+# (TOLD): that handover, or refused; the same want negated, had already or past (NOT_WANTED):
+# refused; a frame after a grounded entry adding a handover of an object it does not name: the
+# entry's reading and that handover (as a tail's, see ``kept``); and a person said by a name in an
+# entry described after it between commas (APPOSITIONS: "Alice, our oboist, would like …"): as
+# the entry, or refused. The frames say "is" whatever the object ("What Bob needs is the chips").
+WANT_FRAMES = (
+    "What {p} needs is the {o}.",
+    "What {p} would really like is the {o}.",
+    "It's the {o} that {p} is hoping for.",
+    "It's the {o} {p} is after.",
+    "The thing {p} needs is the {o}.",
+    "What {p}'s been asking for all morning is the {o}.",
+)
+TOLD = (
+    "{P} wants the {o}, I'm told.",
+    "I'm told {p} needs the {o}.",
+    "{P} would like the {o}, apparently.",
+    "{P} fancies the {o}, or so I hear.",
+)
+NOT_WANTED = (  # refused: no want (negated, had already, past, or given up)
+    "What {p} doesn't need is the {o}.",
+    "It's the {o} that {p} already has.",
+    "What {p} needed yesterday was the {o}.",
+    "The last thing {p} wants is the {o}.",
+    "It's the {o} that {p} was hoping for, but not any more.",
+    "I'm told {p} has the {o} already.",
+    "{P} wanted the {o}, apparently, but not now.",
+)
+APPOSITIONS = ("our oboist", "the new intern", "my neighbour", "our bassoonist", "a regular here")
+# words after a name that an apposition before them would part from it ("Alice, our oboist, too")
+_HELD = frozenset(["too", "rather", "instead", "either", "first", "last", "as", "then", "only"])
+FRAME_FORMS = ("frame", "told", "not wanted", "frame tail", "apposition")
 Family = Literal[
-    "wrappers", "takebacks", "references", "exclusions", "tails", "asides", "afterthoughts"
-]
-FAMILIES: tuple[Family, ...] = (
     "wrappers",
     "takebacks",
     "references",
@@ -341,7 +382,9 @@ FAMILIES: tuple[Family, ...] = (
     "tails",
     "asides",
     "afterthoughts",
-)
+    "frames",
+]
+FAMILIES: tuple[Family, ...] = get_args(Family)
 
 Must = Literal["same", "refuse"]
 
@@ -950,6 +993,66 @@ def afterthoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> 
             yield variant(_then(text, said), to, name)
 
 
+def frames(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The frame variants of one entry. For a grounded entry of one handover of a one-of-a-kind
+    object to a person: that handover said in a want frame (WANT_FRAMES: the handover), as a want
+    the speaker was told of (TOLD: the same) and as a want negated, had or past (NOT_WANTED:
+    refused). For a grounded entry: a want frame after it for a person and a one-of-a-kind object
+    it does not name (the entry's reading and that handover). For an entry saying a person by a
+    name with a word after it: an apposition between commas after the name (as the entry, or
+    refused with its readings). Only forms naming nothing of the scene but their object and
+    person are said."""
+    text = entry.text.strip()
+    want = entry.want
+
+    def fits(form: str) -> bool:
+        return _names_nothing(re.sub(r"\{\w\}", "", form), scene)
+
+    def say(form: str, oid: str, hid: str) -> str:
+        p = _name(scene, hid)
+        return form.format(o=_name(scene, oid), p=p, P=p[:1].upper() + p[1:])
+
+    unique = _unique_objects(scene)
+    if (
+        isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and want.obj in unique
+    ):
+        for forms, to, form in (
+            (WANT_FRAMES, want, "frame"),
+            (TOLD, want, "told"),
+            (NOT_WANTED, None, "not wanted"),
+        ):
+            fitting = [f for f in forms if fits(f)]
+            if fitting:
+                said = say(rng.choice(fitting), want.obj, want.target)
+                must: Must = "same" if to is not None else "refuse"
+                yield Variant(part, entry.scene, said, to, must, "frames", (), form)
+    if want is not None:
+        named = _objects_named(text, scene) | {t.obj for t in tasks(want)}
+        free = [x for x in unique if x not in named]
+        fitting = [f for f in WANT_FRAMES if fits(f)]
+        if free and fitting:
+            oid, hid = rng.choice(free), rng.choice(scene.humans).id
+            added = Task("deliver", oid, hid)
+            said = text if text.endswith((".", "!", "?")) else text + "."
+            said += " " + say(rng.choice(fitting), oid, hid)
+            group = Group("and", (want, added))
+            yield Variant(part, entry.scene, said, group, "same", "frames", (), "frame tail", added)
+    spots = [
+        m
+        for m in _people_said(text, scene)
+        if (after := re.match(r" ([A-Za-z]+)", text[m.end() :])) and after[1].lower() not in _HELD
+    ]
+    appositions = [a for a in APPOSITIONS if _names_nothing(a, scene)]
+    if spots and appositions:
+        m, apposition = rng.choice(spots), rng.choice(appositions)
+        said = f"{text[: m.end()]}, {apposition},{text[m.end() :]}"
+        must = "same" if want is not None else "refuse"
+        yield Variant(part, entry.scene, said, want, must, "frames", entry.readings, "apposition")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -1021,6 +1124,7 @@ def generated(
     rng_tail = random.Random(f"tails:{seed}")
     rng_aside = random.Random(f"asides:{seed}")
     rng_after = random.Random(f"afterthoughts:{seed}")
+    rng_frames = random.Random(f"frames:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1047,6 +1151,9 @@ def generated(
                     yield v, scene
             if "afterthoughts" in families:
                 for v in afterthoughts(part, entry, scene, rng_after):
+                    yield v, scene
+            if "frames" in families:
+                for v in frames(part, entry, scene, rng_frames):
                     yield v, scene
 
 

@@ -10,8 +10,11 @@ reading kept and that handover; or one that must be refused), the aside family o
 remark naming nothing of the scene before or after an entry, a trade after a person's name: the
 entry), the afterthought family of session 30 (an entry's one person corrected after it, with or
 without a reason: the handover to that person; left undecided: refused; a person's state before or
-after an entry: the entry; its count of handovers restated: the entry; miscounted: refused), and
-the wrappers and take-backs of a seed unchanged by them."""
+after an entry: the entry; its count of handovers restated: the entry; miscounted: refused),
+the frame family of session 31 (an entry's one handover said as a want in a frame or as a want the
+speaker was told of: that handover; negated, had or past: refused; a frame after an entry adding a
+handover: the entry and that handover; a person described between commas after their name: the
+entry), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -195,7 +198,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts')" in err
+    assert "'asides', 'afterthoughts', 'frames')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -830,10 +833,14 @@ def test_a_state_naming_a_thing_of_the_scene_is_left_out() -> None:
 def test_an_afterthought_is_judged_by_what_the_grounder_reads(
     text: str, want: str | None, verdict: str
 ) -> None:
+    assert _judged(text, want, "afterthoughts", "recipient") == verdict
+
+
+def _judged(text: str, want: str | None, family: fuzz.Family, form: str) -> str:
+    """The verdict on ``text`` in the cell scene as a variant that must read as ``want``."""
     to = parse_expectation(want) if want is not None else None
     must: fuzz.Must = "same" if to is not None else "refuse"
-    v = fuzz.Variant("t", "cell", text, to, must, "afterthoughts", (), "recipient")
-    assert fuzz.verdict(v, CELL) == verdict
+    return fuzz.verdict(fuzz.Variant("t", "cell", text, to, must, family, (), form), CELL)
 
 
 def test_over_the_corpus_each_afterthought_variant_names_what_it_says() -> None:
@@ -849,4 +856,147 @@ def test_over_the_corpus_each_afterthought_variant_names_what_it_says() -> None:
         else:
             said = fuzz._people_said(v.text, scene)
             assert len(said) >= 2 and len({_one_person(m[0], scene) for m in said}) == 2, v.text
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- frames (session 31) --------------------------------------------------------------------------
+
+
+def _frames(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.frames("t", entry, scene, random.Random(seed)))
+
+
+def _said_by(forms: tuple[str, ...], text: str, scene: Scene) -> Task:
+    """The one handover ``text`` says by one of ``forms`` (the whole of it), each object and
+    person said by the names the fuzz gives them."""
+    said = set()
+    for form in forms:
+        for o in scene.objects:
+            for h in scene.humans:
+                p = fuzz._name(scene, h.id)
+                if form.format(o=fuzz._name(scene, o.id), p=p, P=p[:1].upper() + p[1:]) == text:
+                    said.add(Task("deliver", o.id, h.id))
+    assert len(said) == 1, (text, said)
+    return said.pop()
+
+
+def _without_apposition(text: str) -> str:
+    """``text`` with the one apposition said after a name taken out."""
+    said = "|".join(re.escape(a) for a in fuzz.APPOSITIONS)
+    out, n = re.subn(rf", (?:{said}),", "", text)
+    assert n == 1, text
+    return out
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_one_handover_gets_every_frame(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    made = _frames(entry, CELL, seed)
+    assert [v.form for v in made] == list(fuzz.FRAME_FORMS)
+    frame, told, not_wanted, tail, apposition = made
+    for v in made:
+        assert v.family == "frames" and (v.must == "refuse") is (v.want is None)
+    # the entry's handover said again: as a want (the handover) or not wanted (refused)
+    assert frame.want == told.want == entry.want and not_wanted.want is None
+    assert _said_by(fuzz.WANT_FRAMES, frame.text, CELL) == entry.want
+    assert _said_by(fuzz.TOLD, told.text, CELL) == entry.want
+    assert _said_by(fuzz.NOT_WANTED, not_wanted.text, CELL) == entry.want
+    # a frame after the entry adds a handover of a one-of-a-kind object the entry does not name
+    assert tail.text.startswith(entry.text + " ") and tail.added is not None
+    assert _said_by(fuzz.WANT_FRAMES, tail.text[len(entry.text) + 1 :], CELL) == tail.added
+    assert tail.added.obj != "apple" and tail.added.obj in fuzz._unique_objects(CELL)
+    assert tail.want == Group("and", (entry.want, tail.added))
+    # the person described after their name: the entry
+    assert apposition.want == entry.want and apposition.must == "same"
+    assert _without_apposition(apposition.text) == entry.text
+    assert apposition.text.startswith("Give Bob, ")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # a choice: no frame of it (nor a want refused), but a frame after it and an apposition
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", {"frame tail", "apposition"}),
+        # a mug of two: "the mug" would not say which
+        ("Give Alice the red mug.", "mug_red>A", {"frame tail", "apposition"}),
+        # a placement, no person said
+        ("Put the cup on the shelf.", "cup@shelf", {"frame tail"}),
+        # every object moved: none left for a frame after it
+        (
+            "Give Carol everything.",
+            "cup>C & bottle>C & chips>C & apple>C & mug_red>C & mug_blue>C",
+            {"apposition"},
+        ),
+        # a name followed by a word an apposition would part from it (only after Bob)
+        (
+            "Give Bob the cup, and the apple to Alice too.",
+            "cup>B & apple>A",
+            {"frame tail", "apposition"},
+        ),
+        # refused without a name: nothing
+        ("Give her the cup.", None, set()),
+    ],
+)
+def test_a_frame_is_only_made_where_it_says_what_it_must(
+    text: str, want: str | None, forms: set[str]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(10):
+        made = _frames(entry, CELL, seed)
+        assert {v.form for v in made} == forms
+        for v in made:
+            if v.form == "apposition" and "Alice too" in text:
+                assert v.text.startswith("Give Bob, ") and v.want == entry.want
+
+
+def test_a_refused_entry_with_a_name_stays_refused_with_its_readings() -> None:
+    entry = Entry("cell", "Give Bob the mug.", None, ("mug_red", "mug_blue"))
+    (v,) = _frames(entry, CELL, 3)
+    assert v.form == "apposition" and v.must == "refuse" and v.readings == entry.readings
+    assert fuzz.verdict(v, CELL) in ("refused", "unclear")
+
+
+def test_a_form_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "morning", "category": "morning", "position": [0.5, 0.5, 0.05]})
+    raw["humans"][1]["aliases"] = ["Bob", "oboist"]
+    scene = scene_from_dict(raw)
+    entry = _entry("cell", "Give Alice the apple.", "apple>A")
+    for seed in range(40):
+        for v in fuzz.frames("t", entry, scene, random.Random(seed)):
+            assert "all morning" not in v.text and "oboist" not in v.text
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("What Bob needs is the cup.", "cup>B", "exact"),
+        ("What Bob needs is the cup.", "cup>A", "wrong"),
+        ("What Bob needs is the cup.", None, "wrong"),
+        ("What Bob doesn't need is the cup.", None, "refused"),
+    ],
+)
+def test_a_frame_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    assert _judged(text, want, "frames", "frame") == verdict
+
+
+def test_over_the_corpus_each_frame_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.FRAME_FORMS, 0)
+    said = {"frame": fuzz.WANT_FRAMES, "told": fuzz.TOLD, "not wanted": fuzz.NOT_WANTED}
+    for v, scene in fuzz.generated(PARTS, seed=31, every=2, families=("frames",)):
+        assert v.family == "frames" and (v.must == "refuse") is (v.want is None)
+        kinds[v.form] += 1
+        if v.form in said:
+            task = _said_by(said[v.form], v.text, scene)
+            assert v.want is None or v.want == task
+        elif v.form == "frame tail":
+            assert v.added is not None and isinstance(v.want, Group)
+            assert v.added not in tasks(v.want.children[0])
+            m = re.search(r"[.!?] ([^.!?]+\.)$", v.text)
+            assert m is not None and _said_by(fuzz.WANT_FRAMES, m[1], scene) == v.added
+        else:
+            names = [m[0] for m in fuzz._people_said(v.text, scene)]
+            assert names == [m[0] for m in fuzz._people_said(_without_apposition(v.text), scene)]
     assert min(kinds.values()) >= 10, kinds

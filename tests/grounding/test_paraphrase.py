@@ -333,7 +333,6 @@ KNOWN_MISSES = frozenset(
         "All three of the boxes want to go on the conveyor, in whatever order suits you.",
         "For reading group, lay out both books on the desk, the two of them.",
         "The pair of spanners to Jess, she'll need the two.",
-        "Person B's order is three things, namely the chips, the cup, and the apple.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
@@ -621,34 +620,11 @@ KNOWN_MISSES = frozenset(
         'Person B first. The bottle, that is. Then over to Person A. Chips for her.',
         "Right, Person A is thirsty, she wants the bottle, bring it her, there's a love.",
         "Chips to Person B to begin with, and the moment you've done that the bottle to Person A.",
-        'Split the cup and the apple between Person A and Person B, whichever way round you like.',
-        "Person B can have the apple or the cup, either's fine by me.",
         'The machinist says Person A should have both of them, the bottle and the chips.',
-        "For Person B, any one of these: the cup, the apple, the bottle. She won't mind.",
-        "Whichever's handier, the bottle or the chips, hand it to Person A.",
-        "Whichever bottle's there, Person A gets it.",
         "Sam can have any one of the pens, the millwright's lent us them.",
-        'Make sure each of the patients ends up with a blanket of their own.',
-        "Ava may play with one of the blocks, either, she's not fussy about colour.",
-        'Hand over two things to Person A, namely the apple and the cup.',
-        "Person B wants only one item, and it's the bottle.",
-        'Person A is to have the pair of items, the bottle and the chips alike.',
-        'The triathlete, Person A, gets our solitary bottle.',
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
-        'Gather up the three pens, every one of them, and drop them in the box.',
         'Both of the blocks are to go in the high chair so Lily can bash them about.',
-        "The cup's meant for Person B; don't give it to Person A by mistake.",
-        "Of the two things, Person A wants the one that isn't a bag of chips.",
-        'Not to Person A; the bottle goes to Person B.',
-        "That bottle is Person A's and no one else's, so see she gets it.",
-        'No bottle for Person B today, just his chips.',
-        'Leave the teddy; the bib to Lily.',
-        "Chips for Person A, no, I tell a lie, it's the bottle she ordered.",
-        "Take the bottle to Person B, whoops, I've got them mixed up again, it's Person A.",
-        'The bottle to Person A. Yes, Person A, I did mean her.',
-        "The sponge can go on the tray, oh, hold on, the sink's a better home for it.",
-        "The globe is for Noah, wait, I've got that wrong, it's Zoe's turn.",
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
         'carol is thirsty so the water bottle to her, and the apple to bob',
         'the crisps go up on the shelf please, the maltster wants them out of reach',
@@ -657,7 +633,6 @@ KNOWN_MISSES = frozenset(
         'person a the violinist has asked for chips and the bottle is for person b',
         'person a, the confectioner, has earned the bottle',
         'Bob has been eyeing the criaps since lunch, so let him have them.',
-        "Please stand the bottle on the sehlf, that's where it lives.",
         "The bottle is Person B's, and Persoh A can have the chips, thanks.",
         "Peerson A is the acupuncturist and she'd like her bottle now.",
         'Somebody left the spobge on the side; drop it in the sink, please.',
@@ -684,8 +659,6 @@ KNOWN_UNCLEAR = frozenset(
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)
-        # blind29 (tuned on in session 31)
-        "Either book will do, but it's for the student.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -737,8 +710,10 @@ KNOWN_UNCLEAR = frozenset(
 # and committed alone, reviewed by a second one, measured once at the end of session 29, tuned on
 # in session 30: asserted now, the rest in KNOWN_MISSES; "blind29" written in session 30 by
 # another engineer and committed alone, reviewed by a second one, measured once at the end of
-# session 30, tuned on in session 31: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# session 30, tuned on in session 31: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
+# "blind30" written in session 31 by another engineer and committed alone, measured once at the
+# end of session 31: not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind30"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -822,6 +797,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind28"].entries}) >= 3
     assert len(CORPORA["blind29"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind29"].entries}) >= 3
+    assert len(CORPORA["blind30"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind30"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -109,7 +109,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 29; tuned on in session 30),
 # blind29 (written in session 30 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 30; tuned on
-# in session 31).
+# in session 31), blind30 (written in session 31 by another engineer and committed alone, never
+# opened by the engineers who change the grounder before its one measurement at the end of session
+# 31; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -156,6 +158,7 @@ PARTS = (
     "blind27",
     "blind28",
     "blind29",
+    "blind30",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

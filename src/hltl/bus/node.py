@@ -76,8 +76,6 @@ LATER = 8
 # after an answer, the node waits this long (wall seconds; the next query ends the wait) before
 # its idle work: the cores go to the answer's way back and to the executor
 PAUSE = 0.002
-# how often a node waiting for another thread (a reset's answer) looks again
-PAUSE_SLICE = 0.0001
 # after an answer that guessed steps follow, the node waits this long before simulating them
 GUESS_PAUSE = 0.002
 # guessed steps go as further replies after the answer (False: in the answer itself, every
@@ -97,8 +95,8 @@ FORESEE_TIMEOUT = 0.05
 # executor, far behind in the cell's time, grounds the instruction only when its loop reaches
 # it (an update takes it ~10 ms); one that will send none does not wait (see "awaits")
 FORESEE_WAIT = 0.25
-# a request to foresee the first step waits at most this long for its episode's reset, which
-# the node handles on another thread (it was sent first)
+# a request to foresee that came before its episode's reset had been answered is parked at
+# most this long (wall seconds) for it, then refused (see CellNode._park)
 RESET_WAIT = 1.0
 # how a reset sent with the step queries starts (see CellNode._on_step)
 RESET_HEAD = b'{"reset":true,'
@@ -140,6 +138,10 @@ class NodeStats:
     specs: int = 0  # the executor's specs whose basis the node took in (for foresight)
     new_bases: int = 0  # waits for a new spec's basis before foreseeing that it ended
     waited_out: int = 0  # of those, ended by FORESEE_WAIT (the hint used)
+    # requests to foresee taken before their episode's reset had been answered (the reset lost
+    # and sent again, or taken late on its own queryable): parked until it was (see _park)
+    parked: int = 0
+    parked_refused: int = 0  # of those, refused: no reset came within RESET_WAIT
     # instructions grounded here, ahead of the executor (after a briefing; once each: a tick
     # undone and simulated again takes the first grounding)
     grounded: int = 0
@@ -540,6 +542,10 @@ class CellNode:
         if publish_poses:  # rosbags builds its CDR code on first use (~1 s): not mid-episode
             encode_pose(StampedPose("world", 0.0, (0.0, 0.0, 0.0)))
         k = self.keys
+        # (started once the node is made: a reset's handler asks whether it runs on it)
+        self._server = threading.Thread(
+            target=self._serve_steps, name="hltl-node-steps", daemon=True
+        )
         # step queries wait in an inbox for the node's own thread (_serve_steps), which can
         # look in it between the ticks it streams
         self._steps = _Inbox()
@@ -566,9 +572,13 @@ class CellNode:
         # the executor's briefings are grounded here with the offline grounder (loaded now,
         # about half a second once per process, not in an episode)
         self._grounder: Grounder = make_grounder("offline")
-        # the episodes whose reset was answered here lately (a request to foresee the first
-        # step waits only for one not yet: see _await_reset)
+        # the episodes whose reset was answered here lately, and the requests to foresee that
+        # came before their episode's reset had been: parked by episode, with when their wait
+        # ends; and those whose reset this thread has just answered, served next (see _park)
         self._reset_ids: collections.deque[str] = collections.deque(maxlen=64)
+        self._parking = threading.Lock()  # (the two above; never held while waiting)
+        self._parked: dict[str, list[tuple[float, Any]]] = {}
+        self._unparked: collections.deque[Any] = collections.deque()
         if publish_poses:  # declared now, not in an episode's first ticks (see _publisher)
             for key in (
                 k.observation,
@@ -577,9 +587,6 @@ class CellNode:
                 *(k.joint_states(r.id) for r in scene.robots),
             ):
                 self._publisher(key)
-        self._server = threading.Thread(
-            target=self._serve_steps, name="hltl-node-steps", daemon=True
-        )
         self._server.start()
 
     # -- lifetime ----------------------------------------------------------------------------------
@@ -619,9 +626,9 @@ class CellNode:
         if out is None:  # (refused: answered as such)
             return
         # (out of the lock; the step thread takes up the request to foresee the first step,
-        # sent right after the reset, once this answer has gone: see _await_reset)
+        # sent right after the reset, once this answer has gone: see _park)
         self._reply_bytes(query, out[0])
-        self._reset_ids.append(out[1])
+        self._unpark(out[1])
         if out[2] is not None:
             threading.Thread(
                 target=self._run_clock, args=(out[2],), name="hltl-node-clock", daemon=True
@@ -685,6 +692,9 @@ class CellNode:
         after an answer that starts a stretch, stream the stretch on (:meth:`_stream`)."""
         query: Any = None
         while True:
+            left = self._refuse_late() if self._parked else None
+            if query is None and self._unparked:  # (its reset just answered: before the rest)
+                query = self._unparked.popleft()
             if query is None:
                 try:
                     query = self._steps.try_recv()
@@ -693,9 +703,12 @@ class CellNode:
                         self._publish_later()
                     if query is None:  # and the cell is saved for the next commands
                         self._save_idle()
-                        query = self._steps.recv()
+                        # (until a parked request's wait is over, if one is)
+                        query = self._steps.recv() if left is None else self._steps.try_recv(left)
                 except Exception:  # withdrawn: the node closed
                     return
+                if query is None:
+                    continue
             try:
                 self._ahead_sent = False
                 stretch = self._on_step(query)
@@ -845,7 +858,8 @@ class CellNode:
         if _payload(query).startswith(RESET_HEAD):
             self._on_reset(query)
             return None
-        self._await_reset(query)
+        if self._park(query):
+            return None
         with self._guard(query):
             d = loads(_payload(query), "step request")
             if d.get("end") and (self._ep is None or self._ep.id != d.get("episode")):
@@ -981,28 +995,74 @@ class CellNode:
         self.stats.waited_out += 1
         return True
 
-    def _await_reset(self, query: Any) -> None:
-        """A request to foresee the first step (or, without ``bus_cell(first=True)``, the
-        briefing or first basis to take in) is sent right after the reset, which can reach
-        this thread after it: if the reset's answer has not gone yet, wait for it (at most
-        ``RESET_WAIT``, outside the node's lock). Not only for the episode: the answer
-        needs the interpreter lock to go, and this thread, grounding the briefing and planning
-        the first step, held it for milliseconds while the executor waited for the answer (its
-        first observation) to plan that step itself (docs/bus.md, "Where the time goes
-        (session 20)")."""
+    def _park(self, query: Any) -> bool:
+        """Park a request to foresee (the first step, or without ``bus_cell(first=True)`` the
+        briefing or first basis to take in) whose episode's reset has not been answered yet,
+        and say so: it is served once it has (:meth:`_unpark`), or refused after
+        ``RESET_WAIT`` (:meth:`_refuse_late`). The executor sends it right after the reset;
+        it comes first when the reset was lost and sent again (no queryable matched it yet:
+        the node had just started), and then the reset is queued behind it on this very
+        thread, or when the reset came on ``…/sim/reset`` and another thread took it late.
+        Until session 31 this thread waited for the reset instead, which in the first case
+        could never come before the wait's end (1 s, then the briefing refused, the first
+        step not foreseen). Parked, the request holds neither the node's lock nor this
+        thread: what comes meanwhile is served, the reset first of all. Not only for the
+        episode: the reset's answer needs the interpreter lock to go, and this thread,
+        grounding the briefing and planning the first step, held it for milliseconds while
+        the executor waited for that answer (its first observation) to plan the step itself
+        (docs/bus.md, "Where the time goes (session 20)")."""
         payload = _payload(query)
         if b'"foresee"' not in payload:
-            return
+            return False
         try:
             d = loads(payload, "foresee request")
         except BusError:
-            return
+            return False
         episode = d.get("episode")
-        if episode in self._reset_ids:  # (once: any request the executor sent after it)
-            return
-        deadline = time.perf_counter() + RESET_WAIT
-        while episode not in self._reset_ids and time.perf_counter() < deadline:
-            time.sleep(PAUSE_SLICE)
+        if not isinstance(episode, str):
+            return False  # (refused as it is)
+        with self._parking:
+            if episode in self._reset_ids:  # (the usual order: the reset's answer has gone)
+                return False
+            self._parked.setdefault(episode, []).append((time.perf_counter() + RESET_WAIT, query))
+        self.stats.parked += 1
+        return True
+
+    def _unpark(self, episode: str) -> None:
+        """The reset of ``episode`` has been answered: the requests parked for it are served
+        now, on this thread before anything that came after the reset, or (the reset came on
+        ``…/sim/reset``, another thread) handed back to the step thread through its inbox."""
+        with self._parking:
+            self._reset_ids.append(episode)
+            parked = self._parked.pop(episode, [])
+        if threading.current_thread() is self._server:
+            self._unparked.extend(q for _, q in parked)
+        else:
+            for _, q in parked:
+                self._steps.put(q)
+
+    def _refuse_late(self) -> float | None:
+        """Refuse the parked requests whose reset has not come within ``RESET_WAIT`` (as it
+        stands, a request for an episode the node does not know); how long until the next
+        parked one's wait is over (``None``: none is parked)."""
+        now = time.perf_counter()
+        late: list[tuple[str, Any]] = []
+        with self._parking:
+            for episode, parked in list(self._parked.items()):
+                late += [(episode, q) for end, q in parked if end <= now]
+                parked[:] = [(end, q) for end, q in parked if end > now]
+                if not parked:
+                    del self._parked[episode]
+            left = min((end for p in self._parked.values() for end, _ in p), default=None)
+        for episode, q in late:
+            self.stats.parked_refused += 1
+            error = (
+                f"no episode {episode[:40]!r} on this node: its reset did not come within "
+                f"{RESET_WAIT:g} s of this request"
+            )
+            with contextlib.suppress(Exception):  # (timed out at the executor: nothing to say)
+                q.reply_err(dumps({"error": error}))
+        return None if left is None else max(0.0, left - now)
 
     def _ground_ahead(self, ep: _Episode, s: _Stretch, instructions: list[str]) -> bool:
         """Ground the instructions of a tick the stretch simulated, as the executor will when

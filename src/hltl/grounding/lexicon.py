@@ -58,6 +58,9 @@ _TOKEN_SUBS: tuple[_Rewrite, ...] = (
     (re.compile(r"(?i)\s+exclamation (?:mark|point)\b"), "!", ("exclamation ",)),
     # "all the stuff": a mass noun for every object ("the stuff" alone stays unknown)
     (re.compile(r"(?i)\ball (of )?(the |your |this |that )?stuff\b"), "all the things", ("stuff",)),
+    # "Give Sam the pens, all but the red one" (session 31, 12r): 'all' after a comma is the
+    # objects said before it, not every object (it had given Sam the notebook and the stapler)
+    (re.compile(r"(?i),\s*all (?:but|except)\b"), ", except", (", all ", ",all ")),
     (re.compile(r"(?i)\ball (but|except)\b"), r"everything \1", ("all ",)),  # "all but the apple"
     (
         re.compile(r"(?i)\b(1st|2nd|3rd)\b"),

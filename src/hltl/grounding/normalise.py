@@ -14493,6 +14493,675 @@ _STEPS30R: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 31 (12r): blind29's choices, counts, exclusions and corrections ------------------
+# Each rule below rewrites one construction into the form the grammar reads, and leaves the text
+# as it was when what the construction presupposes (one person, the scene's objects, a count)
+# does not hold; docs/grounding.md, "Session 31 (engineer 12r)".
+
+# "Either mug will do for Carol, she's not fussy.": the idiom with a clause after it
+_WILL_DO_FOR31R = re.compile(
+    r"^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works) for "
+    r"(?P<p>[A-Za-z][\w ]*?)(?=\s*,)",
+    _F,
+)
+# "Either book will do, but it's for the student.": the person said after it
+_WILL_DO_BUT31R = re.compile(
+    r"^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works),?\s*(?:but|and|only) "
+    r"(?:it's|it is|it'll be|it will be|that's|that is) (?:for|going to) "
+    r"(?P<p>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _will_do_for31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Either X will do for P' with a clause after it ('…, she's not fussy')
+    is 'Either X for P, …' (as _speaker21's rule for the idiom alone); 'Either X will do, but
+    it's for P' is 'Either X for P'. X a kind of the scene's objects, P words that name only
+    people (one, or a role some share: the grammar then refuses with its readings)."""
+    m = _WILL_DO_FOR31R.match(text) or _WILL_DO_BUT31R.match(text)
+    if m is None or not _only_kind(m.group("x"), lexicon, "object"):
+        return text
+    p = m.group("p")
+    named = _names(p, lexicon)
+    if len(named) != 1 or not all(r.kind == "human" for r in named[0].refs):
+        return text
+    if not re.fullmatch(r"(?:the )?" + re.escape(named[0].text), p.strip(), _F):
+        return text
+    end = m.groupdict().get("end")
+    rest = end if end is not None else text[m.end() :]
+    return f"{m.group('q')} {m.group('x')} for {p}{rest}"
+
+
+def _fine_by_me31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): "either's fine by me", "any one is fine with me" after a choice: the
+    speaker saying any will do, as 'either is fine' (which the grammar reads as the choice's
+    tail); 'me' there is who does not mind, not a recipient."""
+    return _sub(
+        r"\b(?P<q>either|any(?: one)?|whichever|both)(?:'s| is) (?P<how>fine|ok|okay|good|all "
+        r"right|alright) (?:by|with) (?:me|us)(?=\s*(?:[.!,;]|$))",
+        lambda m: f"{m.group('q')} is {m.group('how')}",
+        text,
+    )
+
+
+# "Split the cup and the apple between A and B, whichever way round you like."
+_SPLIT_WAY31R = re.compile(
+    r"^(?P<head>(?:please )?(?:split|share|divide) the [a-z ]+? between [A-Za-z][\w ]*? and "
+    r"[A-Za-z][\w ]*?),\s*(?:whichever|either|any) way(?: round| around)?(?: (?:you|u) "
+    r"(?:like|want|please|prefer|fancy))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _split_way31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Split X between P and Q, whichever way round (you like)' is 'Split X
+    between P and Q, one each' (_split29r's form, which checks that X names two objects and P and
+    Q two people, and leaves the text otherwise)."""
+    m = _SPLIT_WAY31R.match(text)
+    if m is None:
+        return text
+    out = f"{m.group('head')}, one each{m.group('end')}"
+    return out if _split29r(out, lexicon) != out else text
+
+
+# "Whichever's handier, the bottle or the chips, hand it to Person A."
+_WHICHEVER_FRONT31R = re.compile(
+    r"^whichever(?:'s| is) (?P<how>handier|nearer|closer|easier(?: to (?:reach|grab|get))?|"
+    r"nearest|closest)\s*,\s*(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?? or (?:the |a |an )?"
+    r"[a-z]+(?: [a-z]+)??)\s*,\s*(?P<rest>[^,;:.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_front31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "Whichever's handier, X or Y, hand it to P" is 'hand X or Y to P,
+    whichever's handier' (the tail the grammar reads): X and Y each one object of the scene, the
+    request after them naming no object and holding one 'it' for the choice."""
+    m = _WHICHEVER_FRONT31R.match(text)
+    if m is None:
+        return text
+    items = re.split(r"\s+or\s+", m.group("list"))
+    if not all(_whole_name(x, lexicon, "object") and len(_ids(x, lexicon)) == 1 for x in items):
+        return text
+    rest = m.group("rest")
+    if len(re.findall(r"\bit\b", rest, _F)) != 1 or _ids(rest, lexicon, "object"):
+        return text
+    if re.search(r"\b(?:them|they|one|other|each|both|not|no|don't)\b", rest, _F):
+        return text
+    said = _sub(r"\bit\b", m.group("list"), rest)
+    return f"{said[:1].upper()}{said[1:]}, whichever's {m.group('how')}{m.group('end') or '.'}"
+
+
+# "Whichever bottle's there, Person A gets it."
+_WHICHEVER_THERE31R = re.compile(
+    r"^whichever (?P<x>[a-z]+)(?:'s| is) (?:there|here|about|around|left)\s*,\s*"
+    r"(?P<rest>[^,;:.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_there31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "Whichever bottle's there, P gets it" is 'P gets the bottle' when the
+    scene has one object of that kind (the words presuppose one; with two, which one is 'there'
+    is not said, and the text is left, refused). The request after it names no object and holds
+    one 'it'."""
+    m = _WHICHEVER_THERE31R.match(text)
+    if m is None or not _only(m.group("x"), lexicon, "object"):
+        return text
+    if not _only_kind(m.group("x"), lexicon, "object"):
+        return text
+    rest = m.group("rest")
+    if len(re.findall(r"\bit\b", rest, _F)) != 1 or _ids(rest, lexicon, "object"):
+        return text
+    said = _sub(r"\bit\b", f"the {m.group('x')}", rest)
+    return f"{said[:1].upper()}{said[1:]}{m.group('end')}"
+
+
+def _of_their_own31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'each of the patients … a blanket of their own' is '… a blanket': 'of
+    their own' says again that each gets a different one, which 'each' already shares out. Only
+    after 'each' (or 'every') in the same sentence; 'Make sure each of the Rs ends up with' is
+    'Each R should get' (the role said by the scene's people)."""
+    if not re.search(r"\b(?:each|every)\b", text, _F):
+        return text
+    out = _sub(
+        r"\b(?P<x>an? [a-z]+) of (?:their|his|her|his or her) (?:very )?own\b",
+        lambda m: m.group("x"),
+        text,
+    )
+    if out == text:
+        return text
+
+    def each(m: re.Match[str]) -> str:
+        role = m.group("role").lower()
+        if sum(role in (a.lower() for a in h.aliases) for h in lexicon.scene.humans) < 2:
+            return m[0]
+        return f"Each {role} should get"
+
+    return _sub(
+        r"^(?:please )?(?:make sure|ensure|see that|see to it that) each of the (?P<role>[a-z]+)s "
+        r"(?:ends up with|gets|has|receives)",
+        each,
+        out,
+    )
+
+
+def _play_with31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "Ava may play with one of the blocks, either, she's not fussy about
+    colour": 'P may / can play with X' is 'P can have X' (a toy handed to P to play with; P one
+    person, X the scene's objects); ', either,' after a choice says it again (taken off); 'not
+    fussy about colour' is 'not fussy'."""
+    m = re.match(
+        r"^(?P<p>[A-Za-z][\w ]*?) (?:may|can|could|gets to|is allowed to) play with "
+        r"(?P<x>(?:one of the|either of the|any of the|the|a|an|either) [a-z]+(?: [a-z]+)??)"
+        r"(?=\s*(?:[,.!;]|$))",
+        text,
+        _F,
+    )
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _objects_only(m.group("x"), lexicon):
+        return text
+    rest = text[m.end() :]
+    if re.match(r"\s*,\s*either\s*,", rest, _F) and re.match(
+        r"(?:one|either|any) of\b|either\b|an?\b", m.group("x"), _F
+    ):
+        rest = ", " + rest.split(",", 2)[2].lstrip()
+    rest = _sub(
+        r"\b(not (?:fussy|fussed|bothered|particular)) (?:about|on|over) (?:the )?(?:colou?rs?|"
+        r"sizes?|shapes?|which(?: one)?)\b",
+        r"\1",
+        rest,
+    )
+    return f"{m.group('p')} can have {m.group('x')}{rest}"
+
+
+# "Hand over two things to Person A, namely the apple and the cup."
+_NAMELY31R = re.compile(
+    r"\b(?P<n>two|three|four|five|2|3|4|5) (?:things|items|objects|bits)(?P<mid>(?: [a-z][\w ]*?)?)"
+    r",\s*(?:namely|that is|i\.e\.,?|to wit|specifically|viz\.?|which are) "
+    r"(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _namely31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Hand over two things to P, namely X and Y' is 'Hand over X and Y to
+    P': the list says what the count counted, when it names that many objects of the scene, one
+    each and different, and what stood between them names only people or surfaces."""
+    m = _NAMELY31R.search(text)
+    if m is None:
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    n = m.group("n").lower()
+    want = int(n) if n.isdigit() else _COUNTS[n]
+    if len(items) != want or not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or len(set().union(*ids)) != want:
+        return text
+    if _ids(m.group("mid"), lexicon, "object"):
+        return text
+    said = ", ".join(items[:-1]) + " and " + items[-1]
+    return f"{text[: m.start()]}{said}{m.group('mid')}{m.group('end')}"
+
+
+# "Person B wants only one item, and it's the bottle."
+_ONLY_ONE_ITEM31R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>wants|needs|would like|is after|asked for|gets|should get|"
+    r"can have) (?:only |just )?(?:one|a single) (?:thing|item|object),?\s*(?:and|which is) "
+    r"(?:it's|it is|that's|that is|that'll be|it'll be)? ?(?P<x>(?:the |that )[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one_item31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "P wants only one item, and it's the X" is 'P wants the X' (P one
+    person, X one object of the scene: the count is the one the name meets)."""
+    m = _ONLY_ONE_ITEM31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x = re.sub(r"^that ", "the ", m.group("x"), flags=_F)
+    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+        return text
+    return f"{m.group('p')} {m.group('v')} {x}{m.group('end')}"
+
+
+def _alike31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): '…, the bottle and the chips alike' closing a list of objects is the
+    list ('alike' says the same of each, as 'both' before it would)."""
+
+    def said(m: re.Match[str]) -> str:
+        return m.group("list") + m.group("end") if _objects_only(m.group("list"), lexicon) else m[0]
+
+    return _sub(
+        r"(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+        r"(?: [a-z]+)?)+) (?:alike|both|the pair of them)(?P<end>\s*[.!]?)$",
+        said,
+        text,
+    )
+
+
+def _solitary31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'our solitary bottle', 'the lone cup', 'a single bottle will do for P':
+    a word saying there is one is 'the X' when the scene has exactly one X (else left: 'the
+    solitary mug' with two mugs is refused)."""
+
+    def one(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if not _only(x, lexicon, "object") or not _only_kind(x, lexicon, "object"):
+            return m[0]
+        return f"{m.group('lead') or ''}the {x}"
+
+    out = _sub(
+        r"(?P<lead>^|\b)(?:our|my|the|your) (?:solitary|sole|lone|one and only|single|only "
+        r"remaining) (?P<x>[a-z]+)\b",
+        one,
+        text,
+    )
+    m = re.match(
+        r"^(?:an?|one|a single) (?P<x>[a-z]+) (?:will do|would do|is fine|is enough) (?:for|to) "
+        r"(?P<p>[A-Za-z][\w ]*?)(?=\s*(?:[,.!;]|$))",
+        out,
+        _F,
+    )
+    if (
+        m is not None
+        and _only(m.group("x"), lexicon, "object")
+        and _only_person(m.group("p"), lexicon)
+    ):
+        out = f"The {m.group('x')} for {m.group('p')}{out[m.end() :]}"
+    return out
+
+
+def _every_one_of_them31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'the three pens, every one of them,' (and 'all of them', 'the lot of
+    them', 'each and every one') after a plural of the scene's objects says again that all are
+    meant: taken off, when the plural before it names several objects."""
+
+    def again(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if not _objects_only(x, lexicon) or len(_ids(x, lexicon, "object")) < 2:
+            return m[0]
+        return f"{x}{m.group('end')}"
+
+    return _sub(
+        r"(?P<x>\bthe (?:(?:two|three|four|five) )?[a-z]+s),\s*(?:every (?:single |last )?one of "
+        r"them|all of them|the lot of them|each and every one(?: of them)?|the whole lot)"
+        r"(?P<end>\s*,|\s*[.!]?$)",
+        again,
+        text,
+    )
+
+
+def _gather_up31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Gather up X and drop them in / on S' is 'Put X in / on S' ('gather up'
+    collects the objects, 'drop' sets them down: a placement; X the scene's objects, S one
+    surface)."""
+    m = re.match(
+        r"^(?:please )?(?:gather|collect|round) up (?P<x>[^,;:.!?]+?),?\s*and (?:drop|pop|put|"
+        r"place|stick|chuck) (?:them|it) (?P<on>in|into|on|onto|inside) (?P<s>(?:the )?[a-z]+"
+        r"(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is None or not _objects_only(m.group("x"), lexicon):
+        return text
+    if not _surface_only(m.group("s"), lexicon):
+        return text
+    return f"Put {m.group('x')} {m.group('on')} {m.group('s')}{m.group('end')}"
+
+
+# "Bob wants a mug, but not the red one, he can't stand red."
+_CANT_STAND31R = re.compile(
+    r"(?P<keep>\bnot the (?P<a>[a-z]+) (?:one|[a-z]+)),\s*(?:(?:he|she|they|i|we)(?: just)? "
+    r"(?:can't stand|cannot stand|can't abide|can't bear|hates?|dislikes?|doesn't like|don't like|"
+    r"isn't keen on|aren't keen on|is not keen on|won't have|doesn't want|don't want)) "
+    r"(?P<b>[a-z]+)(?: ones?| things?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cant_stand31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): '…, but not the red one, he can't stand red' — a reason closing an
+    exclusion, that says the excluded word again ('red' after 'not the red one'), is taken off:
+    it leaves out what the exclusion already leaves out. Another word ('…, he can't stand
+    blue') is left, refused."""
+    m = _CANT_STAND31R.search(text)
+    if m is None or m.group("a").lower() != m.group("b").lower():
+        return text
+    if not _names_nothing(m.group("b"), lexicon) and not _ids(m.group("keep"), lexicon):
+        return text
+    return text[: m.end("keep")] + (m.group("end") or ".")
+
+
+# "The cup's meant for Person B; don't give it to Person A by mistake."
+_BY_MISTAKE31R = re.compile(
+    r"^(?P<req>[^;.!?]+?)\s*(?P<mark>[;.]|,\s*(?:but|and|so)?)\s*(?P<neg>(?:but |and |so |just )?"
+    r"(?:don't|do not|never) (?:give|hand|pass|bring|take|send|put|place) )(?P<it>it|them) "
+    r"(?P<to>(?:to|on|onto|in|into) [^,;.!?]+?)(?: by (?:mistake|accident)| in error)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _by_mistake31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "<request of X for P>; don't give it to Q (by mistake)": 'it' in the
+    negated command is the request's one object, said by its name (the negated command then
+    reads as the grammar's 'Don't give the X to Q' beside a request, dropped only when no task
+    of it is one of the request's); 'by mistake' says why it is not wanted; "the cup's meant for
+    P" is "the cup is for P". Left where the request names no object or several."""
+    m = _BY_MISTAKE31R.match(text)
+    if m is None:
+        return text
+    req = _sub(
+        r"^(?P<x>(?:the |that |this )[a-z]+(?: [a-z]+)?)(?:'s| is) (?:meant|intended) for\b",
+        r"\g<x> is for",
+        m.group("req"),
+    )
+    named = [it for it in _names(req, lexicon) if it.refs[0].kind == "object"]
+    if len(named) != 1 or len({r.id for r in named[0].refs}) != 1:
+        return text
+    if _ids(m.group("to"), lexicon, "object"):
+        return text
+    mark = m.group("mark").strip()
+    sep = ". " if mark in (".", ";") else ", but "
+    neg = m.group("neg").strip()
+    neg = re.sub(r"^(?:but|and|so|just) ", "", neg, flags=_F)
+    neg = neg[:1].upper() + neg[1:] if sep == ". " else neg
+    return f"{req}{sep}{neg} the {named[0].text} {m.group('to')}{m.group('end') or '.'}"
+
+
+# "Of the two things, Person A wants the one that isn't a bag of chips."
+_ONE_THAT_ISNT31R = re.compile(
+    r"^of the two(?: (?:things|items|objects))?,\s*(?P<p>[A-Za-z][\w ]*?) (?P<v>wants|needs|"
+    r"gets|should get|can have|would like) the one (?:that|which)(?:'s| is)? (?:isn't|is not|"
+    r"'s not|aren't|are not) (?:a (?:bag|packet|bottle|cup|box) of |the |an? )?(?P<x>[a-z]+"
+    r"(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_that_isnt31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "Of the two things, P wants the one that isn't (a bag of) X" is 'P
+    wants the Y', Y the scene's other object, when the scene has exactly two objects and X names
+    one of them ('a bag of chips' the chips)."""
+    m = _ONE_THAT_ISNT31R.match(text)
+    if m is None or len(lexicon.scene.objects) != 2 or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+        return text
+    other = [o.id for o in lexicon.scene.objects if o.id not in _ids(x, lexicon)]
+    if len(other) != 1:
+        return text
+    return f"{m.group('p')} {m.group('v')} the {other[0]}{m.group('end')}"
+
+
+def _not_to_semi31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Not to P; the X goes to Q' is 'Not to P, …' (what _negated reads: the
+    person left out, said first), the semicolon a pause as the comma is."""
+    return _sub(r"^(not (?:to|for) [A-Za-z][\w ]*?)\s*;\s*(?=\S)", r"\1, ", text)
+
+
+def _no_one_elses31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "That bottle is P's and no one else's, so see she gets it": 'and no one
+    else's' (or 'nobody else's') after whose it is says only that P is the one (taken off); 'see
+    (that) she gets it' is 'make sure she gets it'."""
+    m = re.search(r"'s,? and (?:no one|no-one|nobody|not anybody|not anyone) else's\b", text, _F)
+    if m is None:
+        return text
+    words = text[: m.start()].split(" ")
+    if not any(_only_person(" ".join(words[-n:]), lexicon) for n in (1, 2, 3)):
+        return text
+    out = f"{text[: m.start()]}'s{text[m.end() :]}"
+    return _sub(r"\bso see (?:that )?(?=(?:she|he|they) gets?\b)", "so make sure ", out)
+
+
+# "No bottle for Person B today, just his chips."
+_NO_X_JUST31R = re.compile(
+    r"^no (?P<x>[a-z]+(?: [a-z]+)?) (?:for|to) (?P<p>[A-Za-z][\w ]*?)(?: today| this time| now)?"
+    r",\s*(?:just|only) (?:his|her|their|the) (?P<y>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_x_just31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "No X for P (today), just his Y" is 'P gets the Y, not the X' (X and Y
+    objects of the scene, one each and different, P one person)."""
+    m = _NO_X_JUST31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x, y = m.group("x"), m.group("y")
+    if not (_whole_name(x, lexicon, "object") and _whole_name(y, lexicon, "object")):
+        return text
+    if len(_ids(y, lexicon)) != 1 or _ids(x, lexicon) & _ids(y, lexicon):
+        return text
+    return f"{m.group('p')} gets the {y}, not the {x}{m.group('end')}"
+
+
+# "Leave the teddy; the bib to Lily."
+_LEAVE_FIRST31R = re.compile(
+    r"^(?:just )?leave (?P<x>the [a-z]+(?: [a-z]+)?)(?: (?:alone|be|where it is|where they are|"
+    r"there|for now|out of it))?\s*[;:.]\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _leave_first31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "Leave the X; <request>" (a sentence or a clause of its own ending in a
+    semicolon, colon or stop) says the X is not to be moved: the request alone, when it names
+    neither the X nor 'it'/'them' and reads with no task of the X. 'Leave the X on S' (a
+    placement) is not this form."""
+    m = _LEAVE_FIRST31R.match(text)
+    if m is None or not _whole_name(m.group("x"), lexicon, "object"):
+        return text
+    rest = m.group("rest")
+    if re.search(r"\b(?:it|them|that|those|instead|too|also|as well|then)\b", rest, _F):
+        return text
+    if _ids(rest, lexicon, "object") & _ids(m.group("x"), lexicon):
+        return text
+    said = _tasks_of(rest, lexicon)
+    if not said or {o for _, o, _ in said} & _ids(m.group("x"), lexicon):
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+# what a speaker says of their own slip, between a correction's cue and the corrected words: a
+# closed list ("I tell a lie", "I've got them mixed up again", "I've got that wrong")
+_SLIP31R = (
+    r"(?:i tell a lie|i(?:'ve| have)? got (?:them|it|that|those|this|these) (?:all )?(?:mixed up|"
+    r"muddled(?: up)?|wrong|the wrong way round|back to front)(?: again)?|i(?:'ve| have)? "
+    r"(?:mixed|muddled) (?:them|it|that|those) up(?: again)?|silly me|what am i saying)"
+)
+_SLIP_AFTER_CUE31R = re.compile(
+    rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|oh)\s*),\s*{_SLIP31R}\s*,\s*(?=\S)", _F
+)
+_SLIP_ALONE31R = re.compile(rf"(?P<lead>,\s*){_SLIP31R}\s*,\s*(?=\S)", _F)
+# "…, it's Person A.", "…, it's Zoe's turn.": the corrected person in a cleft
+_ITS_WHO31R = re.compile(
+    r"(?P<lead>,\s*)it(?:'s| is) (?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|"
+    r"needed|asked for|ordered) it)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _slip31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): the speaker's words about their own slip ('I tell a lie', "I've got
+    them mixed up again", "I've got that wrong") after a correction's cue are taken off (the cue
+    corrects); without a cue before them they are the cue ('no'). Then "…, it's P" or "it's P's
+    turn" closing the correction is 'P' (one person of the scene), the form the grammar reads.
+    A slip said after a correction already made ("The chips, no, the bottle, silly me, to P") is
+    left: it speaks of that one."""
+    out = _SLIP_AFTER_CUE31R.sub(lambda m: f"{m.group('cue')}, ", text)
+    alone = _SLIP_ALONE31R.search(text) if out == text else None
+    if alone is not None:
+        if re.search(
+            rf"(?:^|[,.;!?]\s*)(?:{_CUE19}|no|wait|hang on|hold on|actually)\b",
+            text[: alone.start()],
+            _F,
+        ):
+            return text  # "The chips, no, the bottle, silly me, to Person A": after a correction
+        out = f"{text[: alone.start()]}{alone.group('lead')}no, {text[alone.end() :]}"
+    if out == text:
+        return text
+    m = _ITS_WHO31R.search(out)
+    if m is not None and _only_person(m.group("p"), lexicon):
+        out = f"{out[: m.start()]}{m.group('lead')}{m.group('p')}{m.group('end')}"
+    return out
+
+
+# "The bottle to Person A. Yes, Person A, I did mean her."
+_YES_MEANT31R = re.compile(
+    r"(?P<lead>[.!]\s+)(?:yes|yeah|yep|yup|that's right),?\s+(?P<p>[A-Za-z][\w ]*?)"
+    r"(?:,?\s*(?:i (?:did )?mean(?:t)? (?:her|him|them|it)|that's (?:right|who i meant)|"
+    r"(?:she|he)'s the one))?\s*[.!]?$",
+    _F,
+)
+
+
+def _yes_meant31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a last sentence 'Yes, P(, I did mean her)' after a request whose one
+    recipient is P says the request again: taken off (the pronoun fitting P). Where the request
+    gives to someone else, or to several, it is left (a correction, refused)."""
+    m = _YES_MEANT31R.search(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    before = text[: m.start()] + m.group("lead").strip()
+    said = _tasks_of(before, lexicon)
+    who = _ids(m.group("p"), lexicon)
+    if not said or {t for _, _, t in said} != who:
+        return text
+    if not _fits(next(iter(who)), text[m.start() :], lexicon):
+        return text
+    return before
+
+
+# "…, oh, hold on, the sink's a better home for it."; "…, no, better down on the play mat."
+_BETTER_HOME31R = re.compile(
+    r"(?P<cue>,\s*(?:(?:oh|ah),?\s*)?(?:hold on|hang on|wait|no|actually|on second thoughts?)"
+    r"(?:,?\s*(?:no|actually))?,?\s*)(?:(?P<s>the [a-z]+(?: [a-z]+)?)(?:'s| is|'d be| would be) "
+    r"(?:a |the )?better (?:home|place|spot|bet|choice)(?: for (?:it|them))?|better(?: off)?"
+    r"(?: down| up)? (?P<on>on|in|onto|into) (?P<s2>the [a-z]+(?: [a-z]+)?))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _better_home31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a correction of a placement that says the new place is better ('…, hold
+    on, the sink's a better home for it', '…, no, better down on the play mat') is '…, no, on
+    the S' when S is one surface of the scene and the request before places one object."""
+    m = _BETTER_HOME31R.search(text)
+    if m is None:
+        return text
+    s = m.group("s") or m.group("s2")
+    if not _surface_only(s, lexicon):
+        return text
+    said = _tasks_of(text[: m.start()], lexicon)
+    if not said or len(said) != 1 or next(iter(said))[0] != "place":
+        return text
+    on = m.group("on") or "on"
+    return f"{text[: m.start()]}, no, {on} {s}{m.group('end') or '.'}"
+
+
+def _sit_stand31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Sit / stand / prop / perch X on / in S' is 'Put X on / in S' (X the
+    scene's objects, S one surface: where a thing is set down upright)."""
+
+    def put(m: re.Match[str]) -> str:
+        if not _objects_only(m.group("x"), lexicon) or not _surface_only(m.group("s"), lexicon):
+            return m[0]
+        return f"{m.group('lead')}{'P' if m.group('v')[0].isupper() else 'p'}ut {m.group('x')} "
+
+    return _sub(
+        r"(?P<lead>^|(?<=[,;.!?])\s*|\bplease )(?P<v>sit|stand|prop|perch)(?: (?:up|down))? "
+        r"(?P<x>(?:the|both|all the) [a-z]+(?: [a-z]+)??) (?=(?:up |down |back )?(?:on|in|onto|"
+        r"into|on top of) (?P<s>the [a-z]+(?: [a-z]+)?)\b)",
+        put,
+        text,
+    )
+
+
+# "For Person B, any one of these: the cup, the apple, the bottle."
+_THESE_LISTED31R = re.compile(
+    r"(?:\b(?:any|either|just) )?\bone of (?:these|those|them|the following|"
+    r"the (?P<n>two|three|four)(?: of them)?)\s*:\s*(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?"
+    r"(?:(?:,\s*|,? (?:and|or) )"
+    r"(?:the |a |an )?[a-z]+(?: [a-z]+)?)+)(?P<end>\s*(?:[.!;]|$))",
+    _F,
+)
+
+
+def _these_listed31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'any one of these: X, Y, Z' (a chooser pointing at a list said after a
+    colon) is 'X, Y or Z', when the list names objects of the scene, one each and different (as
+    many as a number said with it); the grammar reads the choice."""
+    m = _THESE_LISTED31R.search(text)
+    if m is None:
+        return text
+    items = [
+        w for w in re.split(r"\s*,\s*(?:and\s+|or\s+)?|\s+(?:and|or)\s+", m.group("list")) if w
+    ]
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or len(set().union(*ids)) != len(items):
+        return text
+    if m.group("n") and _COUNTS[m.group("n").lower()] != len(items):
+        return text
+    said = ", ".join(items[:-1]) + " or " + items[-1]
+    return f"{text[: m.start()]}{said}{m.group('end')}{text[m.end() :]}"
+
+
+def _wont_mind31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): "She won't mind." / ", he wouldn't mind" after a choice (an 'or',
+    'either', 'any', 'one of', 'whichever' before it) is 'she doesn't mind' (the chooser's tail
+    the grammar reads); after no choice the negation is left, and refused."""
+    m = re.search(
+        r"(?P<lead>(?:[.!]\s+|,\s*))(?P<who>she|he|they|i|we) (?:won't|will not|wouldn't|would "
+        r"not) mind(?P<tail>(?: which(?: one)?)?)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is None or not re.search(r"\b(?:or|either|any|one of|whichever)\b", text[: m.start()], _F):
+        return text
+    who = m.group("who")
+    verb = "don't" if who.lower() in ("i", "we", "they") else "doesn't"
+    return f"{text[: m.start()]}{m.group('lead')}{who} {verb} mind{m.group('tail')}{m.group('end')}"
+
+
+_STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _these_listed31r,
+    _wont_mind31r,
+    _will_do_for31r,
+    _fine_by_me31r,
+    _split_way31r,
+    _whichever_front31r,
+    _whichever_there31r,
+    _of_their_own31r,
+    _play_with31r,
+    _namely31r,
+    _only_one_item31r,
+    _alike31r,
+    _solitary31r,
+    _every_one_of_them31r,
+    _gather_up31r,
+    _cant_stand31r,
+    _by_mistake31r,
+    _one_that_isnt31r,
+    _not_to_semi31r,
+    _no_one_elses31r,
+    _no_x_just31r,
+    _leave_first31r,
+    _slip31r,
+    _yes_meant31r,
+    _better_home31r,
+    _sit_stand31r,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -14653,6 +15322,8 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _negated_reason31s,
 )
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 31 (12r): blind29's choices, counts, exclusions and corrections
+    *_STEPS31R,
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,
     # session 29 (12r)

@@ -1062,6 +1062,24 @@ def _is_verb(item: Item) -> bool:
     return item.kind == "word" and item.lemma.startswith("verb:")
 
 
+def _left_alone31r(f: _Frag, source: _Frag) -> None:
+    """Session 31 (12r): "Put the small box on the belt, leave the large one." and "… Leave the
+    tape." — 'leave' said with objects and no place of its own says to leave them where they are
+    (an exclusion), or to put them where the objects before went: refused, asking which. It had
+    taken the place over ('… & box_large@conveyor', a wrong reading). A place said with it ('leave
+    it on the shelf', 'leave the apple there') is the grammar's placement, as before."""
+    if f.verb != "leave" or not f.verb_text or source.target is None:
+        return
+    if source.target.kind != "surface":
+        return  # "The apple for Person B, I mean the bottle, leave the apple": the correction's
+    raise GroundingError(
+        f"{f.text!r} has no place: leave the {', '.join(f.objects or ())} where "
+        f"{'it is' if len(f.objects or ()) == 1 else 'they are'} (say 'not the …'), or put "
+        f"{'it' if len(f.objects or ()) == 1 else 'them'} on the {source.target.text} too "
+        "(say 'put … on …')?"
+    )
+
+
 class _Parser:
     def __init__(self, lexicon: Lexicon) -> None:
         self.lex = lexicon
@@ -1874,6 +1892,7 @@ class _Parser:
                 source = next((g for g in reversed(frags[:k]) if g.target is not None), None)
                 if source is not None:
                     self._not_from_choice(raw, source, f)
+                    _left_alone31r(f, source)
                     f.target = source.target
             if f.target is None:
                 raise GroundingError(

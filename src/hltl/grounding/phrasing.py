@@ -1230,6 +1230,9 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if quant:
             j = k + 1
             j = _past_dets(items, j)
+            if _both_of_two31r(items, k, j):
+                k += 1  # "both of the stapler and the notepad": the two, as 'the X and the Y'
+                continue
             if quant == "some" and j + 1 < len(items) and _objects(items[j + 1]):
                 kind, many = _quant_word(items[j])
                 if kind == "num":  # "one of the two mugs": there must be two
@@ -1242,6 +1245,11 @@ def _folded(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 named = _named_after_generic(items, j, quant, words)
                 if named:
                     k = named  # "either thing, bottle or chips": the bottle or the chips
+                    continue
+                listed = _one_of_list31r(items, k, j)
+                if listed is not None:  # "one of the cup, the apple and the bottle"
+                    out.append(listed[0])
+                    k = listed[1]
                     continue
                 out.append(_quantify(target, quant, count, words, lexicon, k))
                 k = j + 1
@@ -1541,6 +1549,97 @@ def _choice_of_two(out: list[Item], at: int) -> Item | None:
     )
     out[start : j + 1] = [Item("word", "det", "the"), choice] if start < i else [choice]
     return choice
+
+
+def _both_of_two31r(items: list[Item], k: int, j: int) -> bool:
+    """Session 31 (12r): 'both of the X and the Y' (X and Y names of one object each, different,
+    joined by 'and' and followed by no third name) is 'the X and the Y': 'both' counts the two
+    (it had been read as two Xs, and refused with one X)."""
+    if not (_is(items[k], "q:both") and items[k].text.lower().startswith("both of")):
+        return False
+
+    def single(n: int) -> bool:
+        x = items[n] if n < len(items) else None
+        return (
+            x is not None
+            and _objects(x)
+            and len({r.id for r in x.refs}) == 1
+            and not any(r.plural for r in x.refs)
+        )
+
+    if not single(j) or j + 1 >= len(items) or not _is(items[j + 1], "and"):
+        return False
+    m = _past_dets(items, j + 2)
+    if not single(m) or items[m].refs[0].id == items[j].refs[0].id:
+        return False
+    after = items[m + 1] if m + 1 < len(items) else None
+    return after is None or not (
+        _is(after, "and", "or", ",") and any(_objects(x) for x in items[m + 2 : m + 4])
+    )
+
+
+def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | None:
+    """Session 31 (12r): 'one of / any one of / either of the cup, the apple and the bottle' (a
+    chooser with 'of', then a list of names of one object each): one of the listed objects, a
+    choice, and the index after the list; None where the first name is of several objects ('one
+    of the mugs and the apple': one mug and the apple) or nothing is listed after it. Before,
+    'one of' took only the first name, and the rest were added to it (every object, a wrong
+    reading). A list said twice over the same object, or one closed by 'too' / 'also' / 'as
+    well' (one of them, and one more?), is refused."""
+    it = items[k]
+    if not (_is(it, "q:some") and " of" in f" {it.text.lower()} "):
+        return None
+
+    def single(x: Item) -> bool:
+        return (
+            _objects(x) and len({r.id for r in x.refs}) == 1 and not any(r.plural for r in x.refs)
+        )
+
+    said = [items[j]]
+    n = j + 1
+    while n < len(items):
+        m = n
+        if _is(items[m], ","):
+            m += 1
+        if m < len(items) and _is(items[m], "and", "or"):
+            m += 1
+        if m == n:
+            break
+        m = _past_dets(items, m)
+        if m >= len(items) or not single(items[m]):
+            break
+        said.append(items[m])
+        n = m + 1
+    if len(said) < 2:
+        return None
+    words = " ".join(x.text for x in items[k:n])
+    if not single(items[j]):
+        if any(r.plural for r in items[j].refs):
+            return None  # "one of the mugs and the apple": one mug, and the apple
+        # "one of the mug and the cup" with two mugs: which mug is in the choice?
+        raise GroundingError(
+            f"{words!r}: {items[j].text!r} could be any of "
+            f"{', '.join(sorted({r.id for r in items[j].refs}))}; name the object"
+        )
+    ids = [x.refs[0].id for x in said]
+    if len(set(ids)) != len(ids):
+        raise GroundingError(f"{words!r} names one object twice: name each once")
+    if (
+        n < len(items)
+        and _is(items[n], "filler")
+        and items[n].text.lower()
+        in (
+            "too",
+            "also",
+            "as well",
+        )
+    ):
+        raise GroundingError(
+            f"{words!r} then {items[n].text!r}: one of them, or one of them and more? name "
+            "what each person gets"
+        )
+    refs = tuple(x.refs[0] for x in said)
+    return Item("ent", words.lower(), words, refs, quant="some", group=k), n
 
 
 def _quant_word(it: Item) -> tuple[str, int]:
