@@ -187,7 +187,6 @@ KNOWN_MISSES = frozenset(
         "Bottle is what Alice want, crisps is for Bob one, can or not?",
         "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
         "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
-        "Haul the medium box onto the belt, then do likewise with the small one, smartly.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
         "Give Person B the bottle, and thereafter the chips unto the same.",
         "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
@@ -213,7 +212,6 @@ KNOWN_MISSES = frozenset(
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
         "Cart the grey blanket over to Mr Lee.",
-        "Both plates are for Marco this morning!",
         "Everything except the apple is going home with Person B tonight, folks!",
         "Forceps, sorry, I mean the spoon, to Omar.",
         "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
@@ -268,8 +266,6 @@ KNOWN_MISSES = frozenset(
         "Priority is Person A, she needs the cup; once she's sorted, Person B would like the "
         "apple.",
         "The chips are wanted by Person A and the bottle by Person B.",
-        "Small box onto the conveyor first, please, and the medium one straight after.",
-        "Hand the cup over to Bob and do likewise for Carol with the chips.",
         "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
@@ -361,7 +357,6 @@ KNOWN_MISSES = frozenset(
         "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
         "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
-        "Person B wants the bottle and the chips both, he's off to watch the football.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
@@ -468,7 +463,6 @@ KNOWN_MISSES = frozenset(
         "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
-        "crisps up on the shelf please love, out of the dog's reach",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         'chios for Person B lah, she asked me just now',

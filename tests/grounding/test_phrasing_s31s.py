@@ -10,6 +10,8 @@ import pytest
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
+    KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
@@ -301,4 +303,49 @@ def test_a_negated_reason_after_the_request_is_taken_off(
     ],
 )
 def test_a_negation_that_could_change_the_request_is_not_taken_off(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- 'do likewise', 'straight after', '… both' (normalise.py _said_otherwise31s) ------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused
+        (
+            "Haul the medium box onto the belt, then do likewise with the small one, smartly.",
+            "box_medium@conveyor ; box_small@conveyor",
+            DEPOT,
+        ),
+        (
+            "Small box onto the conveyor first, please, and the medium one straight after.",
+            "box_small@conveyor ; box_medium@conveyor",
+            DEPOT,
+        ),
+        (
+            "Hand the cup over to Bob and do likewise for Carol with the chips.",
+            "cup>B & chips>C",
+            CELL,
+        ),
+        ("Give Bob the cup and the apple both.", "cup>B & apple>B", CELL),
+        ("Put the cup on the shelf please love.", "cup@shelf", CELL),
+        ("Both plates are for Marco this morning!", "plate_white>A & plate_blue>A", KITCHEN),
+        ("Give Marco the knife this morning.", "knife>A", KITCHEN),
+    ],
+)
+def test_words_the_grammar_reads_said_another_way(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Small box onto the conveyor, and the medium one straight after lunch.", DEPOT),  # later
+        ("Give the cup to Bob and Alice both.", CELL),  # two people: 'both' counts no objects
+        ("Marco had the knife this morning.", KITCHEN),  # what was, not what to do
+        ("Give Marco the knife this afternoon.", KITCHEN),  # later: put off (session 20)
+    ],
+)
+def test_near_forms_said_another_way_are_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)

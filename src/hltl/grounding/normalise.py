@@ -7241,6 +7241,49 @@ def _negated_reason31s(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# Words the grammar reads said another way: 'do likewise' is 'do the same' ("Haul the medium box
+# onto the belt, then do likewise with the small one"); 'straight / right / directly /
+# immediately after' closing a clause is 'after' ("…, and the medium one straight after"); 'the
+# X and the Y both' is 'both the X and the Y' when X and Y name objects ("Person B wants the
+# bottle and the chips both, …").
+_BOTH_AFTER31S = re.compile(
+    r"\b(?P<list>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?) both"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _said_otherwise31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): 'do likewise', 'straight after', '… both', 'please love', 'this
+    morning' said as the grammar says them (above)."""
+    out = _sub(r"\bdo likewise\b", "do the same", text)
+    # a term of address after a courtesy word, without its comma ('please love')
+    out = _sub(
+        r"\b(please|thanks|ta|cheers) (love|dear|mate|pet|hun|darling)(?=\s*(?:[,.;!?]|$))",
+        r"\1, \2",
+        out,
+    )
+    # 'this morning' closing a request: today ('this afternoon / evening' put it off: session 20);
+    # not after a past tense ("Marco had the knife this morning" says what was)
+    if not re.search(
+        r"\b(?:had|got|was|were|gave|took|brought|handed|passed|did|went|came)\b", out, _F
+    ):
+        out = _sub(r"(?<=[a-z]) this morning(?=\s*[.!]*\s*$)", "", out)
+    out = _sub(
+        r"\b(?:straight|right|directly|immediately) (after|afterwards)(?=\s*(?:[,.;!?]|$))",
+        r"\1",
+        out,
+    )
+
+    def both(m: re.Match[str]) -> str:
+        listed = m.group("list")
+        if len(_ids(listed, lexicon, "object")) != 2 or not _objects_only(listed, lexicon):
+            return m.group(0)
+        return f"both {listed}"
+
+    return _BOTH_AFTER31S.sub(both, out)
+
+
 # -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
 
 # A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
@@ -15320,6 +15363,7 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_of31s,
     _where_it_is31s,
     _negated_reason31s,
+    _said_otherwise31s,
 )
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
