@@ -300,6 +300,7 @@ def test_a_negated_reason_after_the_request_is_taken_off(
         ("Give Bob the cup, it isn't his.", CELL),  # whose it is
         ("Give Bob the cup, he hasn't got one.", CELL),
         ("Give Bob a mug, it isn't the blue one.", CELL),
+        ("Give Bob a mug, he can't stand blue.", CELL),  # a word of a scene name: which mug
     ],
 )
 def test_a_negation_that_could_change_the_request_is_not_taken_off(text: str, scene: Scene) -> None:

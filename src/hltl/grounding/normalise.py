@@ -7200,7 +7200,8 @@ def _where_it_is31s(text: str, lexicon: Lexicon) -> str:
 # the X' changes what is asked; a negated verb whose clause names nothing in the scene, no
 # other name, and no word that could change who gets what, which one or when (_NOT_HELD31S:
 # session 21's words but the negation, and choices, time words) is a reason all the same, taken
-# off on session 21's terms (closing its sentence, after a request that names something).
+# off on session 21's terms (closing its sentence, after a request that names something), when
+# it holds no word of a scene name either ("…, he can't stand blue" may say which mug).
 _NOT_REASON31S = re.compile(
     r"\s*,\s*(?P<said>(?:(?:and|cos|because|as|since)\s+)?(?:she|he|it|they|(?:the|her|his|their) "
     r"[a-z]+)(?:'s| is| has)? ?(?:won't|wont|isn't|hasn't|can't|doesn't|didn't|haven't|aren't|"
@@ -7230,9 +7231,12 @@ def _negated_reason31s(text: str, lexicon: Lexicon) -> str:
         when = re.sub(
             r"\b(?:this|that) (?:morning|afternoon|evening|week|year)\b", "", said, flags=_F
         )
+        scene_words = _scene_words29(lexicon)
         if (
             _NOT_HELD31S.search(when)
             or any(w[0].isupper() and w != "I" for w in words[1:])
+            # a word of a scene name ('blue' of 'blue mug': "…, he can't stand blue")
+            or any(len(w) > 2 and w.lower() in scene_words for w in words)
             or not _names_nothing(said, lexicon)
             or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
         ):
