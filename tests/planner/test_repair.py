@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import math
 import random
 import time
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
@@ -202,7 +204,10 @@ def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.Mo
     # beyond CP_UP_TO goals (no joint re-plan), when asked, the walk stops after
     # REPAIR_WALK_SHARE of the time and the repair squeezes its best plan; the plan returned
     # is valid and no longer. The share is 0 (session 23): the repair squeezes the walk's first
-    # plan before any round of the walk
+    # plan before any round of the walk. (The deadlines only bound how long each run takes:
+    # the walk's first plan is made before any is read, the share 0 is over at once, and a
+    # squeeze cut short by load returns None or a plan no longer, so nothing asserted here
+    # depends on the machine's speed.)
     events: list[str] = []
     real_step = _OrderWalk.step
     real_squeezed = anytime._squeezed
@@ -234,23 +239,47 @@ def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.Mo
     assert "repair" not in events
 
 
+# the repair's budget in the tests: moves, not seconds (grid 8 x 8 seed 2 squeezes its first
+# plan four times in the first 50; a few hundred moves take 0.1 s at quiet)
+MOVES = 400
+
+
+def _spy(monkeypatch: pytest.MonkeyPatch, name: str) -> list[int]:
+    """How often ``repair.Repair.<name>`` is called (with the horizon, for ``squeeze``)."""
+    calls: list[int] = []
+    real = getattr(repair.Repair, name)
+
+    def spy(self: repair.Repair, *args: Any) -> Any:
+        calls.append(args[-1] if args else 0)
+        return real(self, *args)
+
+    monkeypatch.setattr(repair.Repair, name, spy)
+    return calls
+
+
 def test_squeezed_stops_at_a_plan_that_meets_the_bound(monkeypatch: pytest.MonkeyPatch) -> None:
     # a plan no longer than a lower bound is optimal: the repair returns the first plan it
-    # finds at or below ``enough`` instead of squeezing it again
-    calls: list[int] = []
-    real = repair.Repair.squeeze
-
-    def squeeze(self: repair.Repair, paths: dict[int, repair.Path], T: int) -> bool:
-        calls.append(T)
-        return real(self, paths, T)
-
-    monkeypatch.setattr(repair.Repair, "squeeze", squeeze)
+    # finds at or below ``enough`` instead of squeezing it again; without a bound it goes on
+    # squeezing each plan it finds (a budget in moves, not wall time: the same on any machine)
+    calls = _spy(monkeypatch, "squeeze")
     _, router, _ = _first("grid", 8, 2)
-    found = _squeezed(router, dict(router.routes), time.perf_counter() + 60.0, enough=10**12)
+    found = _squeezed(router, dict(router.routes), math.inf, enough=10**12, moves=MOVES)
     assert found is not None and len(calls) == 1
     calls.clear()
-    again = _squeezed(router, dict(router.routes), time.perf_counter() + 1.0)
+    again = _squeezed(router, dict(router.routes), math.inf, moves=MOVES)
     assert again is not None and again[0] < found[0] and len(calls) > 1
+
+
+def test_squeezed_makes_at_most_its_moves(monkeypatch: pytest.MonkeyPatch) -> None:
+    # ``moves`` ends the repair, not the clock (here a safety net of ten minutes): the plan
+    # does not depend on the machine's speed
+    steps = _spy(monkeypatch, "step")
+    _, router, _ = _first("grid", 8, 2)
+    few = _squeezed(router, dict(router.routes), time.perf_counter() + 600.0, moves=25)
+    assert few is not None and 0 < len(steps) <= 25
+    steps.clear()
+    assert _squeezed(router, dict(router.routes), time.perf_counter() + 600.0, moves=25) == few
+    assert 0 < len(steps) <= 25
 
 
 def test_a_level_starts_again_from_its_plan_after_restart_moves(

@@ -1080,13 +1080,14 @@ def _squeezed(
     enough: float = -math.inf,
     *,
     exchange: _Exchange | None = None,
+    moves: int | None = None,
 ) -> _Found | None:
     """The plan of ``routes`` in fewer steps, by conflict repair (``repair.Repair``) until
     ``until``: squeezed into one step fewer, repaired, and again from each plan found, every
     one replayed through the monitors. The shortest plan found (None: none); stops once it is
-    no longer than ``enough`` (a lower bound: it is optimal). ``exchange``: see
+    no longer than ``enough`` (a lower bound: it is optimal). ``exchange`` and ``moves``: see
     ``_squeeze_paths``."""
-    return _squeeze_paths(router, _paths_of(routes), until, enough, exchange=exchange)
+    return _squeeze_paths(router, _paths_of(routes), until, enough, exchange=exchange, moves=moves)
 
 
 def _squeeze_paths(
@@ -1097,13 +1098,17 @@ def _squeeze_paths(
     *,
     seed: int = 5,
     exchange: _Exchange | None = None,
+    moves: int | None = None,
 ) -> _Found | None:
     """``_squeezed`` from per-goal paths (steps counted from 0, none empty), its repair with
     ``seed``. With ``exchange`` each shorter plan is offered to the other process, and (when
     it listens) every ``NEWS_EVERY`` moves a shorter plan from it is taken when it has fewer
     steps than the plan being squeezed: replayed through the monitors, then squeezed instead.
     (One with as many steps, shorter only by its steps' lengths, would restart the search for
-    the level this one has been repairing: engineer 11's diagnosis in session 21.)"""
+    the level this one has been repairing: engineer 11's diagnosis in session 21.) With
+    ``moves``: at most that many moves (repair steps, plans replayed and taken), so that the
+    plan does not depend on the machine's speed (as ``_more``'s ``rounds``; ``until`` then
+    only a safety net, ``math.inf`` for none)."""
 
     p = router.p
     node = router.node
@@ -1118,10 +1123,10 @@ def _squeeze_paths(
     best: _Found | None = None
     if not rep.squeeze(paths, repair.length(paths) - 1):
         return None
-    moves = 0
-    while time.perf_counter() < until:
-        moves += 1
-        listen = exchange is not None and exchange.listen and not moves % NEWS_EVERY
+    done = 0  # moves made
+    while time.perf_counter() < until and (moves is None or done < moves):
+        done += 1
+        listen = exchange is not None and exchange.listen and not done % NEWS_EVERY
         theirs = exchange.news() if listen and exchange is not None else None
         if theirs is not None and repair.length(theirs) <= rep.T:
             found = router.replay(_steps_of(theirs))
