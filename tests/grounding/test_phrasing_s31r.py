@@ -10,6 +10,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
@@ -34,6 +35,7 @@ ONE = _scene("1-1")  # bottle; A
 T12 = _scene("1-2")  # bottle; A
 T21 = _scene("2-1")  # bottle, chips; A, B
 DEPOT = load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml")
+WORKSHOP = load_scene(ROOT / "tests/grounding/paraphrase/scenes/workshop.yaml")
 
 
 def _case(text: str, want: str | None, scene: Scene) -> None:
@@ -408,6 +410,11 @@ def test_leave_the_x_then_a_request(text: str, want: str | None, scene: Scene) -
         ),
         # a slip after a correction already made speaks of that one
         ("The chips, no, the bottle, silly me, to Person A.", "bottle>A", ONE),
+        # a slip closing the text says the request is wrong, not what is right (these were
+        # read as the request, the slip taken off as a remark)
+        ("Chips for Person A, I tell a lie.", None, DUO),
+        ("Give Person A the chips, I got them mixed up.", None, DUO),
+        ("Chips for Person A, oh, I've got that wrong, sorry.", None, DUO),
     ],
 )
 def test_the_speakers_slip(text: str, want: str | None, scene: Scene) -> None:
@@ -507,4 +514,208 @@ def test_all_but_after_a_comma(text: str, want: str | None, scene: Scene) -> Non
     ],
 )
 def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Lena doesn't want the blue plate, just the white one.", "plate_white>B", KITCHEN),
+        ("The knife to Lena, oops, I meant to say the tongs.", "tongs>B", KITCHEN),
+        ("The knife to Lena, I should have said the tongs.", "tongs>B", KITCHEN),
+        ("The knife to Lena, hmm, better make it the tongs.", "tongs>B", KITCHEN),
+        ("Tongs to Lena, hold on, it's Mr Novak who wants them.", "tongs>C", KITCHEN),
+        ("Tongs to Lena, no, it's Mr Novak's turn.", "tongs>C", KITCHEN),
+        ("Give the apple to Bob, no hang on, it was Carol who asked.", "apple>C", CELL),
+        # the same object kept and left out; a person where the object goes; an object where
+        # the person was corrected; the one who wants something else
+        ("Lena doesn't want the blue plate, just the blue one.", None, KITCHEN),
+        ("Lena doesn't want the blue plate, just Marco.", None, KITCHEN),
+        ("Tongs to Lena, hold on, it's the knife who wants them.", None, KITCHEN),
+        ("Tongs to Lena, hold on, it's Mr Novak who wants the knife.", None, KITCHEN),
+    ],
+)
+def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # words for 'except' the grammar did not know
+        (
+            "Put the boxes on the pallet, excluding the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "The boxes go on the pallet, minus the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, not including the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, with the exception of the big one.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        # what stays where it is
+        (
+            "Put the boxes on the pallet, leave the big one where it is.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, but leave the big one alone.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the pallet, the big one can stay where it is.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        # 'there' is the pallet (as on main); a person is no object to leave out
+        (
+            "Put the boxes on the pallet, leave the big one there.",
+            "box_small@pallet & box_medium@pallet & box_large@pallet",
+            DEPOT,
+        ),
+        ("Put the boxes on the pallet, leave Tom where he is.", None, DEPOT),
+        # who does not need what the request hands to someone else
+        ("The gloves go to Tom, Mia doesn't need them.", "gloves>B", DEPOT),
+        ("Tom needs the gloves; the tape isn't for him.", "gloves>B", DEPOT),
+        # the statement denies the request's own task; 'him' could be either
+        ("Tom needs the gloves, Tom doesn't need them.", None, DEPOT),
+        ("Tom needs the gloves; the gloves aren't for him.", None, DEPOT),
+        ("Give Tom and Mia the gloves; they aren't for him.", None, DEPOT),
+    ],
+)
+def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Jess needs a couple of spanners.", "spanner_small>B & spanner_large>B", WORKSHOP),
+        ("Jess needs a couple of hammers.", None, WORKSHOP),
+        (
+            "Give Jess the small and large spanners.",
+            "spanner_small>B & spanner_large>B",
+            WORKSHOP,
+        ),
+        # one red mug, no green one: the adjectives must each name one object
+        ("Give Bob the red and green mugs.", None, CELL),
+        ("Give Bob the red and red mugs.", None, CELL),
+        (
+            "Kofi needs the hammer, the drill and the torch, three things.",
+            "hammer>A & drill>A & torch>A",
+            WORKSHOP,
+        ),
+        ("Kofi needs the hammer, the drill and the torch, two things.", None, WORKSHOP),
+        (
+            "Kofi needs three items - the hammer, the drill and the torch.",
+            "hammer>A & drill>A & torch>A",
+            WORKSHOP,
+        ),
+        (
+            "The hammer and the drill, one for Kofi and one for Jess.",
+            "(hammer>A & drill>B) | (hammer>B & drill>A)",
+            WORKSHOP,
+        ),
+        ("The hammer and the drill, one for Kofi and one for Kofi.", None, WORKSHOP),
+        ("The hammer, the drill and the torch, one for Kofi and one for Jess.", None, WORKSHOP),
+        (
+            "Split the spanners between Kofi and Jess.",
+            "(spanner_small>A & spanner_large>B) | (spanner_small>B & spanner_large>A)",
+            WORKSHOP,
+        ),
+        # three boxes between two people: no split is the only one
+        ("Split the boxes between Mia and Tom.", None, DEPOT),
+    ],
+)
+def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the chooser's words after a choice: any of them will do
+        ("Give Noah one of the books, his pick.", "book_red>B | book_green>B", CLASSROOM),
+        ("Noah gets one book, you choose which.", "book_red>B | book_green>B", CLASSROOM),
+        ("A book for Noah, no preference.", "book_red>B | book_green>B", CLASSROOM),
+        (
+            "Noah wants a book, red or green, either's good.",
+            "book_red>B | book_green>B",
+            CLASSROOM,
+        ),
+        ("Noah needs a book, any old one.", "book_red>B | book_green>B", CLASSROOM),
+        # with nothing left open they change nothing, as 'whichever' does
+        ("Give Noah the red book, his pick.", "book_red>B", CLASSROOM),
+        # a choice the scene cannot meet stays refused
+        ("Give Noah one of the globes, his pick.", None, CLASSROOM),
+    ],
+)
+def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The magazine for Mr Lee, I'm wrong, it's Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, my apologies, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, sorry, wrong patient, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, not him, Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, change that to Mrs Khan.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, I meant Mrs Khan, sorry about that.", "magazine>C", WARD),
+        ("Magazine to Mr Lee, hmm, Mrs Khan actually.", "magazine>C", WARD),
+        ("The magazine for Mr Lee. No! Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, no, it's Mrs Khan.", "magazine>C", WARD),
+        ("The magazine for Mr Lee, oh no, it's the jug he wants.", "jug>B", WARD),
+        ("The magazine for Mr Lee, sorry, swap that for the jug.", "jug>B", WARD),
+        # a role two share, a cue cut off, a word that is no name
+        ("The magazine for Mr Lee, no, it's the patient.", None, WARD),
+        ("The magazine for Mr Lee, my apologies.", None, WARD),
+        ("Magazine to Mr Lee, hmm, tomorrow actually.", None, WARD),
+    ],
+)
+def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Omar only the cups.", "cup_green>B & cup_white>B", LAB),
+        ("Give Omar only the spoon and Emma the bowl.", "spoon>B & bowl>C", LAB),
+        ("Dana gets the other cup, not the green one.", "cup_white>A", LAB),
+        ("Dana gets the non-green cup.", "cup_white>A", LAB),
+        # no red cup; one spoon, no green one
+        ("Dana gets the non-red cup.", None, LAB),
+        ("Dana gets the other spoon, not the green one.", None, LAB),
+    ],
+)
+def test_only_and_other(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The black pen for Priya, sorry, make that red.", "pen_red>A", OFFICE),
+        ("The black pen for Priya, sorry, red not black.", "pen_red>A", OFFICE),
+        # no green pen; the stapler has no red one; 'not blue' is not what was asked
+        ("The black pen for Priya, sorry, make that green.", None, OFFICE),
+        ("The stapler for Priya, sorry, make that red.", None, OFFICE),
+        ("The black pen for Priya, sorry, red not blue.", None, OFFICE),
+    ],
+)
+def test_a_correction_by_its_colour(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)

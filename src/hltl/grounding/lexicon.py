@@ -609,6 +609,18 @@ _phrases(
     "any is ok",
     "either one is ok",
     "any one is ok",
+    # session 31 (12r)
+    "his pick",
+    "her pick",
+    "their pick",
+    "your pick",
+    "you choose which",
+    "you pick which",
+    "you decide which",
+    "no preference",
+    "either is good",
+    "either 's good",
+    "any old one",
 )
 
 # Session 7 (issue 12): whole families of politeness around a request, not single sentences.
@@ -835,6 +847,10 @@ for _p, _q in {
     "other than": "except",
     "but not": "except",
     "and not": "except",
+    # session 31 (12r): "Put the boxes on the pallet, excluding / minus / not including / with
+    # the exception of the big one" (refused before: unknown words, or 'not')
+    "not including": "except",
+    "with the exception of": "except",
     "the same for": "same",
     "same for": "same",
     "do the same for": "same",
@@ -1098,6 +1114,9 @@ WORDS: dict[str, str] = {
     "same": "same",
     "apart": "except",
     "except": "except",
+    "excluding": "except",  # session 31 (12r), with 'minus' and 'barring'
+    "minus": "except",
+    "barring": "except",
     # subjects and auxiliaries, skipped ("after you have given …", "once the cup is on …")
     "you": "subject",
     "u": "subject",  # texting: "can u put …"

@@ -769,6 +769,12 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
     body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
+    if _trailing_remarks31l(remark) and _reading(body, lexicon, normalise=False) is not None:
+        # session 31 (lead): "Give Bob the cup and, once Bob has it, give Alice the bottle. It's
+        # the apple that Alice is hoping for.": the request's 'it' is the cup, said before it; a
+        # remark said after every request does not stand in for pronouns the request resolves
+        # (it had made 'once Bob has the apple'); the remark must still be in the request
+        person, thing = set(), set()
     if len(person) > 1:
         _pronoun_among(said, body, person, lexicon)
     if len(person) == 1:
@@ -788,6 +794,12 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if wanting and not _agrees(wanting, body, lexicon):
         return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _trailing_remarks31l(remark: list[bool]) -> bool:
+    """Whether every remark comes after every request (``_remarks``)."""
+    last = max((k for k, r in enumerate(remark) if not r), default=-1)
+    return all(k > last for k, r in enumerate(remark) if r)
 
 
 def _pronoun_among(said: list[str], body: str, person: set[str], lexicon: Lexicon) -> None:
@@ -15027,6 +15039,12 @@ _SLIP_AFTER_CUE31R = re.compile(
     rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|oh)\s*),\s*{_SLIP31R}\s*,\s*(?=\S)", _F
 )
 _SLIP_ALONE31R = re.compile(rf"(?P<lead>,\s*){_SLIP31R}\s*,\s*(?=\S)", _F)
+# "Give Person A the chips, I got them mixed up.": the slip closing the text, nothing after it
+_SLIP_CLOSING31R = re.compile(
+    rf"[,;.!]\s*(?:(?:oh|ah|no|sorry|wait|whoops|oops)\s*,?\s*)*(?P<said>{_SLIP31R})"
+    r"(?:\s*,?\s*(?:sorry|again|there))*\s*[.!]?\s*$",
+    _F,
+)
 # "…, it's Person A.", "…, it's Zoe's turn.": the corrected person in a cleft
 _ITS_WHO31R = re.compile(
     r"(?P<lead>,\s*)it(?:'s| is) (?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|"
@@ -15041,7 +15059,15 @@ def _slip31r(text: str, lexicon: Lexicon) -> str:
     corrects); without a cue before them they are the cue ('no'). Then "…, it's P" or "it's P's
     turn" closing the correction is 'P' (one person of the scene), the form the grammar reads.
     A slip said after a correction already made ("The chips, no, the bottle, silly me, to P") is
-    left: it speaks of that one."""
+    left: it speaks of that one. A slip closing the text ("Give Person A the chips, I got them
+    mixed up.") says the request is wrong and not what is right: refused (it had been taken off
+    as a remark, and the request read)."""
+    closing = _SLIP_CLOSING31R.search(text)
+    if closing is not None:
+        raise GroundingError(
+            f"{closing.group('said')!r} says what was asked is wrong, but not what is right: "
+            "say the whole request again"
+        )
     out = _SLIP_AFTER_CUE31R.sub(lambda m: f"{m.group('cue')}, ", text)
     alone = _SLIP_ALONE31R.search(text) if out == text else None
     if alone is not None:
@@ -15179,7 +15205,385 @@ def _wont_mind31r(text: str, _lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m.group('lead')}{who} {verb} mind{m.group('tail')}{m.group('end')}"
 
 
+# "Lena doesn't want the blue plate, just the white one."
+_DOESNT_WANT_JUST31R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:doesn't|does not|don't|do not) (?:want|need) (?P<x>the [a-z]+"
+    r"(?: [a-z]+)?)\s*[,;]\s*(?:just|only|but|she wants|he wants|they want) (?P<y>the [a-z]+"
+    r"(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _doesnt_want_just31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "P doesn't want the X, just the Y" is 'P wants the Y, not the X' (P one
+    person; the grammar checks X and Y, 'the white one' included)."""
+    m = _DOESNT_WANT_JUST31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{m.group('p')} wants {m.group('y')}, not {m.group('x')}{m.group('end')}"
+
+
+def _meant_to_say31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'I meant to say', 'I should have said' in a correction are 'I meant';
+    'better make it' / 'best make it' is 'make it'."""
+    out = _sub(
+        r"\bi (?:meant|mean|wanted) to say\b|\bi should(?: have|'ve) said\b",
+        lambda m: "I meant" if m[0][0] == "I" else "i meant",
+        text,
+    )
+    return _sub(
+        r"(?<=,)(\s*)(?:(?:hmm|um|er),?\s*)?(?:better|best) (?=make (?:it|that)\b)", r"\1", out
+    )
+
+
+# "Tongs to Lena, hold on, it's Mr Novak who wants them."
+_ITS_WHO_CUE31R = re.compile(
+    rf"(?P<cue>,\s*(?:{_CUE19}|no|wait|hang on|hold on|actually)\s*,\s*)it(?:'s| is| was) "
+    r"(?P<p>[A-Za-z][\w ]*?)(?:'s turn| who (?:wants|wanted|needs|needed|asked for|ordered|"
+    r"is after|was after) (?:it|them|that|those)| who asked)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_who_cue31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "…, hold on, it's P who wants them", "…, wait, it's P's turn" or "…,
+    no, it's P" after a request is '…, hold on, P' (the corrected person, one of the scene)."""
+    m = _ITS_WHO_CUE31R.search(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    return f"{text[: m.start()]}{m.group('cue')}{m.group('p')}{m.group('end') or '.'}"
+
+
+# "Put the boxes on the pallet, leave the big one where it is." / "…, the big one can stay put."
+_LEAVE_WHERE31R = re.compile(
+    r",\s*(?:but |and )?(?:(?:just |please )?leave (?P<x>the [a-z]+(?: [a-z]+)?) (?:where it is|"
+    r"where they are|alone|be|as it is|as they are|in place|untouched)|"
+    r"(?P<y>the [a-z]+(?: [a-z]+)?) (?:can stay|stays|should stay|can remain|remains|is "
+    r"staying) (?:where it is|put|there|behind|in place|as it is))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_where31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): '…, leave the big one where it is' / 'alone', '…, the big one can stay
+    where it is' closing a request is '…, except the big one' (what the grammar reads as an
+    exclusion), when the words name objects only ('one' for a kind said before) and the request
+    before names some object."""
+    m = _LEAVE_WHERE31R.search(text)
+    if m is None:
+        return text
+    x = m.group("x") or m.group("y")
+    if x.lower().split()[-1] not in ("one", "ones") and not _objects_only(x, lexicon):
+        return text
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}, except {x}{m.group('end') or '.'}"
+
+
+# "The gloves go to Tom, Mia doesn't need them." / "Tom needs the gloves; the tape isn't for him."
+_NOT_FOR_THEM31R = re.compile(
+    r"^(?P<req>[^;.!?]+?)\s*[,;.]\s*(?:but |and )?(?:(?P<p>[A-Za-z][\w ]*?) (?:doesn't|does not|"
+    r"don't|do not) (?:need|want|get) (?P<x>it|them|the [a-z]+(?: [a-z]+)?)|(?P<y>the [a-z]+"
+    r"(?: [a-z]+)?|it|they|that|those) (?:isn't|is not|aren't|are not|'s not|'re not) for "
+    r"(?P<q>[A-Za-z][\w ]*?))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_them31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a statement that someone does not need something, beside a request
+    ("The gloves go to Tom, Mia doesn't need them", "Tom needs the gloves; the tape isn't for
+    him"), is taken off when the request reads and none of its tasks is the one the statement
+    denies ('it' / 'them' the request's objects, 'him' / 'her' its one person); else it is left,
+    and refused ("Tom needs the gloves, Tom doesn't need them")."""
+    m = _NOT_FOR_THEM31R.match(text)
+    if m is None:
+        return text
+    req = m.group("req")
+    said = _tasks_of(req, lexicon)
+    if not said or any(k != "deliver" for k, _, _ in said):
+        return text
+    who_words = m.group("p") or m.group("q")
+    what = m.group("x") or m.group("y")
+    people = {t for _, _, t in said}
+    if re.fullmatch(r"him|her|them", who_words, _F):
+        if len(people) != 1 or not _fits(next(iter(people)), who_words, lexicon):
+            return text
+        who = set(people)
+    elif _only_person(who_words, lexicon):
+        who = _ids(who_words, lexicon)
+    else:
+        return text
+    if re.fullmatch(r"it|them|they|that|those", what, _F):
+        objects = {o for _, o, _ in said}
+    elif _objects_only(what, lexicon):
+        objects = _ids(what, lexicon, "object")
+    else:
+        return text
+    if any(o in objects and t in who for _, o, t in said):
+        return text
+    return req + (m.group("end") or ".")
+
+
+def _couple_of31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'a couple of spanners' is 'two spanners' (the grammar checks the count
+    against the scene: 'two of the pens' with three pens is a choice of two)."""
+    return _sub(r"\ba couple of (?:the )?(?=[a-z]+s\b)", "two ", text)
+
+
+# "the small and large spanners", "the small, medium and large boxes"
+_ADJECTIVES_AND31R = re.compile(
+    r"\bthe (?P<adj>[a-z]+(?:,\s*[a-z]+)*,? and [a-z]+) (?P<noun>[a-z]+)s\b", _F
+)
+
+
+def _adjectives_and31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'the small and large spanners' is 'the small spanner and the large
+    spanner' when each adjective with the noun names one object of the scene, each a different
+    one (else left: 'the red and green cups' with one red cup is refused as before)."""
+
+    def each(m: re.Match[str]) -> str:
+        adjectives = [a for a in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group("adj")) if a]
+        noun = m.group("noun")
+        names = [f"the {a} {noun}" for a in adjectives]
+        ids = [_ids(n, lexicon, "object") for n in names]
+        if any(
+            len(i) != 1 or not _whole_name(n, lexicon, "object")
+            for i, n in zip(ids, names, strict=True)
+        ):
+            return m[0]
+        if len(set().union(*ids)) != len(names):
+            return m[0]
+        return ", ".join(names[:-1]) + " and " + names[-1]
+
+    return _sub(_ADJECTIVES_AND31R.pattern, each, text)
+
+
+# "Kofi needs the hammer, the drill and the torch, three things."
+_COUNT_AFTER31R = re.compile(
+    r"(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+),\s*(?:that's |so )?(?P<n>two|three|four|five|six|2|3|4|5|6) (?:things|items|"
+    r"objects)(?: in all| altogether| in total)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _count_after31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a list of objects, then ', three things' closing the text, is the list
+    when it names that many different objects of the scene (else left, refused: a count the list
+    does not meet)."""
+    m = _COUNT_AFTER31R.search(text)
+    if m is None:
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    n = m.group("n").lower()
+    want = int(n) if n.isdigit() else _COUNTS[n]
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or len(set().union(*ids)) != want or len(items) != want:
+        return text
+    return f"{text[: m.end('list')]}{m.group('end') or '.'}"
+
+
+def _dash_header31r(text: str, _lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Kofi needs 3 items - hammer, drill, torch' is '…: hammer, drill,
+    torch' (a dash after a count of things opens the list, as a colon does)."""
+    return _sub(
+        r"\b((?:two|three|four|five|six|2|3|4|5|6) (?:things|items|objects))\s+[-\u2013\u2014]\s+"
+        r"(?=[a-z])",
+        r"\1: ",
+        text,
+    )
+
+
+# "The hammer and the drill, one for Kofi and one for Jess."
+_ONE_FOR_EACH31R = re.compile(
+    r"^(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+),\s*one (?:for|to) (?P<p>[A-Za-z][\w ]*?),? and (?:one|the other) (?:for|to) "
+    r"(?P<q>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_for_each31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): "The hammer and the drill, one for Kofi and one for Jess" is 'Give the
+    hammer and the drill to Kofi and Jess, one each' when the list names two objects and the
+    two people differ (the grammar reads the share, either way round)."""
+    m = _ONE_FOR_EACH31R.match(text)
+    if m is None:
+        return text
+    p, q = m.group("p"), m.group("q")
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    if len(items) != 2 or not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or ids[0] == ids[1]:
+        return text
+    return f"Give {m.group('list')} to {p} and {q}, one each{m.group('end')}"
+
+
+def _split_two31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Split the spanners between Kofi and Jess' with nothing after is
+    session 29's 'Split … , one each' (two objects between two people: one each is the only
+    split; _split29r checks both counts and leaves the text otherwise)."""
+    m = re.match(
+        r"^(?P<head>(?:please )?(?:split|share|divide) the [a-z ]+? between [A-Za-z][\w ]*? and "
+        r"[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is None:
+        return text
+    out = f"{m.group('head')}, one each{m.group('end')}"
+    return out if _split29r(out, lexicon) != out else text
+
+
+# what says 'no' before a correction, from a closed list: "I'm wrong", "my apologies", "wrong
+# patient", "not him"
+_CUE_WORDS31R = re.compile(
+    r"(?<=,)\s*(?:(?:oh|ah|hmm|sorry),?\s*)?(?:i'm wrong|i am wrong|(?:my )?apologies|wrong "
+    r"(?:person|patient|one|place|spot|thing|name|item|object|guy|lady|bay|table)|not (?:him|her|"
+    r"them|that one))\s*,\s*(?=\S)",
+    _F,
+)
+
+
+def _cue_words31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): words that say the request just said is wrong, between commas before
+    the corrected words ("…, I'm wrong, it's Mrs Khan", "…, my apologies, Mrs Khan", "…, wrong
+    patient, Mrs Khan", "…, not him, Mrs Khan"), are the cue 'no'; 'change / swap / switch that
+    to / for' is 'make that'; 'oh no, it's' is 'no, it's'; "No! Mrs Khan." is "No, Mrs Khan.";
+    ', Mrs Khan actually.' closing the text is ', actually Mrs Khan.' (one name of the scene); ',
+    sorry about that' after a correction is taken off."""
+    out = _CUE_WORDS31R.sub(" no, ", text)
+    out = _sub(r"\b(?:change|swap|switch) (that|it) (?:to|for)\b", r"make \1", out)
+    out = _sub(r"(?<=,)(\s*)(?:oh|ah),?\s*no,\s*(?=it(?:'s| is) )", r"\1no, ", out)
+    out = _sub(r"(?<=[.!?]\s)no!\s+(?=[A-Za-z])", "No, ", out)
+
+    def actually(m: re.Match[str]) -> str:
+        said = m.group("said")
+        return f", actually {said}{m.group('end')}" if _one_name30r(said, lexicon) else m[0]
+
+    out = _sub(r",\s*(?P<said>(?:the )?[A-Za-z][\w ]*?) actually(?P<end>\s*[.!]?)$", actually, out)
+    if re.search(r",\s*(?:no|sorry|i meant?|actually)\b", out[: max(0, len(out) - 20)], _F):
+        out = _sub(r",\s*sorry about (?:that|this)(?=\s*[.!]?$)", "", out)
+    return out
+
+
+def _only_after_person31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'Give P only the cups' is 'Give P the cups' ('only' keeps to what is
+    named, as the grammar does; 'P only' had been read as a name), P one person."""
+
+    def only(m: re.Match[str]) -> str:
+        return f"{m.group(1)}{m.group(2)} " if _only_person(m.group(2), lexicon) else m[0]
+
+    return _sub(
+        r"\b((?:give|hand|pass|bring|fetch|get) )([A-Z][\w]*(?: [A-Z][\w]*)?) (?:only|just) "
+        r"(?=(?:the|both|one|a|an) )",
+        only,
+        text,
+    )
+
+
+def _other_not31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'the other cup, not the green one' is 'a cup, but not the green one'
+    when the scene has exactly two cups ('the other' is then the one left); 'the non-green cup'
+    is 'the cup that isn't green'."""
+
+    def other(m: re.Match[str]) -> str:
+        kind = m.group("kind")
+        if len(_ids(kind, lexicon, "object")) != 2 or not _only_kind(kind, lexicon, "object"):
+            return m[0]
+        return f"a {kind}, but not the {m.group('adj')} one"
+
+    out = _sub(
+        r"\bthe other (?P<kind>[a-z]+),\s*not the (?P<adj>[a-z]+) (?:one|(?P=kind))\b", other, text
+    )
+    return _sub(
+        r"\bthe non-(?P<adj>[a-z]+) (?P<kind>[a-z]+)\b", r"the \g<kind> that isn't \g<adj>", out
+    )
+
+
+def _adj_names_one31r(adj: str, before: str, lexicon: Lexicon) -> bool:
+    """Whether ``adj`` with the kind of the one object named in ``before`` names exactly one
+    object of the scene, another than that one ('red' after 'the black pen': the red pen)."""
+    named = [it for it in _names(before, lexicon) if it.refs[0].kind == "object"]
+    if len(named) != 1 or len({r.id for r in named[0].refs}) != 1:
+        return False
+    kinds = {o.category for o in lexicon.scene.objects if o.id == named[0].refs[0].id}
+    for kind in kinds:
+        ids = _ids(f"{adj} {kind}", lexicon, "object")
+        if (
+            len(ids) == 1
+            and ids != {named[0].refs[0].id}
+            and _whole_name(f"{adj} {kind}", lexicon, "object")
+        ):
+            return True
+    return False
+
+
+def _kind_of31r(before: str, lexicon: Lexicon) -> str:
+    """The category of the one object ``before`` names ('' if not one)."""
+    ids = _ids(before, lexicon, "object")
+    return next((o.category for o in lexicon.scene.objects if ids == {o.id}), "")
+
+
+def _bare_adjective31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): a correction that says only the colour or size of the one object
+    asked for ("The black pen for Priya, sorry, make that red", "…, sorry, red not black") is 'the
+    red one' (the grammar's ellipsis) when the word with that object's kind names one other
+    object of the scene, and the word after 'not' the object asked for (else left, refused). ("…
+    - red, I mean." closes on 'I mean', which offline.py takes as a correction cut off.)"""
+    m = re.search(
+        r",\s*(?P<cue>(?:sorry|no|oops),?\s*)?make (?:that|it) (?P<adj>[a-z]+)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is not None and _adj_names_one31r(m.group("adj"), text[: m.start()], lexicon):
+        cue = m.group("cue") or ""
+        return (
+            f"{text[: m.start()]}, {cue}make that the {m.group('adj')} one{m.group('end') or '.'}"
+        )
+    m = re.search(
+        r",\s*(?P<cue>sorry|no|oops|wait),?\s*(?P<adj>[a-z]+),? not (?P<old>[a-z]+)"
+        r"(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if (
+        m is not None
+        and _adj_names_one31r(m.group("adj"), text[: m.start()], lexicon)
+        and _ids(text[: m.start()], lexicon, "object")
+        == _ids(f"{m.group('old')} {_kind_of31r(text[: m.start()], lexicon)}", lexicon, "object")
+    ):
+        return (
+            f"{text[: m.start()]}, {m.group('cue')}, the {m.group('adj')} one, not the "
+            f"{m.group('old')} one{m.group('end') or '.'}"
+        )
+    return text
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _bare_adjective31r,
+    _only_after_person31r,
+    _other_not31r,
+    _cue_words31r,
+    _couple_of31r,
+    _adjectives_and31r,
+    _count_after31r,
+    _dash_header31r,
+    _one_for_each31r,
+    _split_two31r,
+    _not_for_them31r,
+    _leave_where31r,
+    _doesnt_want_just31r,
+    _meant_to_say31r,
+    _its_who_cue31r,
     _these_listed31r,
     _wont_mind31r,
     _will_do_for31r,

@@ -1028,6 +1028,9 @@ class _Frag:
     trails: bool = False  # a condition said after the clause it holds back
     choice: int = -1  # 'it' for a chosen object ('a block … it'): the fragment that chose it
     bare: bool = False  # a person's name alone: no verb, object or preposition ('…, then Lily')
+    # ', the chips' right after 'give Bob,': the objects of that clause, not a task of its own
+    # (``_Parser._folded31l``)
+    folded: bool = False
 
 
 @dataclass(slots=True)
@@ -1851,19 +1854,26 @@ class _Parser:
                 f.objects = [o for g in antes for o in (g.objects or [])]
                 f.group = antes[0].group if len(antes) == 1 else -1
                 f.choice = antes[0].choice if antes[0].choice >= 0 else antes[0].index
+            elif f.objects is None and self._folded31l(k):
+                g = frags[k + 1]
+                f.objects, f.group, f.choice = list(g.objects or ()), g.group, g.index
             elif f.objects is None:
                 source = self._objects_from_right(k) or next(
                     (g for g in reversed(frags[:k]) if g.objects and not g.pick), None
                 )
                 if source is not None and source.objects is not None:
                     if (
-                        f.bare
-                        and f.target is not None
+                        f.target is not None
+                        and (f.bare or (f.verb_text != "" and f.target.kind == "human"))
                         and source.target is not None
                         and source.target.kind == "surface"
                     ):
                         # "The bib goes on the high chair. Then Lily.": a name alone does not
-                        # take over an object said to be put somewhere; what Lily gets is unsaid
+                        # take over an object said to be put somewhere; what Lily gets is unsaid.
+                        # Nor does a person after a verb of its own (session 31, lead): "Put
+                        # the bottle on the shelf and give Alice, then the chips" had given
+                        # Alice the bottle it put on the shelf ('…, then to Lily' still does:
+                        # a relay, session 12)
                         raise GroundingError(
                             f"{f.text!r} names no object, and the {', '.join(source.objects)} "
                             f"{'is' if len(source.objects) == 1 else 'are'} put on the "
@@ -1939,6 +1949,37 @@ class _Parser:
                     )
         for child in raw.children:
             self._order_kept(child)
+
+    def _folded31l(self, k: int) -> bool:
+        """'…, then give Bob, the chips': a giving verb and its person, then after a comma
+        alone the objects with no verb, recipient or place of their own, are one clause, 'give
+        Bob the chips' (session 31, lead). Read as two, 'give Bob' had taken an object said
+        before ('put the cup on the shelf'), so Bob got the cup as well: a wrong reading found
+        by the ``frames`` fuzz (an aside in between, 'give Bob, our oboist, the chips', leaves
+        this comma when the aside is dropped). The objects' fragment is folded into this one."""
+        frags = self.frags
+        f = frags[k]
+        if k + 1 >= len(frags) or f.target is None or f.it or f.them or f.subject:
+            return False
+        g = frags[k + 1]
+        if not (
+            f.verb_text
+            and f.verb is not None
+            and VERB_CLASS[f.verb] == "give"
+            and f.target.kind == "human"
+            and f.target.prep in ("", "to")  # ('give Bob' alone is read 'give to Bob')
+            and g.segment == f.segment
+            and g.comma
+            and not g.pause
+            and not g.verb_text
+            and g.objects is not None
+            and g.target is None
+            and not (g.it or g.them or g.subject or g.same or g.condition or g.bare)
+            and self._target_from_right(k + 1) is None
+        ):
+            return False
+        g.folded = True
+        return True
 
     def _objects_from_right(self, k: int) -> _Frag | None:
         """Objects shared from the right: 'give A and B the cup', 'A and B want a mug'."""
@@ -2118,7 +2159,7 @@ class _Parser:
 
     def _build(self, raw: _Raw) -> Node | None:
         if isinstance(raw, _Frag):
-            if raw.pick:
+            if raw.pick or raw.folded:
                 return None
             assert raw.target is not None and raw.objects is not None
             kind: Literal["deliver", "place"] = "deliver" if raw.target.kind == "human" else "place"
