@@ -4,12 +4,15 @@ that must stay refused."""
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
 from hltl.errors import GroundingError
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, title_sex
 from hltl.grounding.offline import OfflineGrounder
 from hltl.grounding.tree import tasks
 from hltl.grounding.update import ground_update
@@ -118,6 +121,17 @@ def test_courtesy_the_speaker_purpose_and_time_change_nothing(
 ) -> None:
     scene, text, want = request
     said = f"{opener}{text}{closer}"
+    sexes = {
+        PRONOUN_SEX[w] for w in re.findall(r"[a-z]+", f"{opener} {closer}") if w in PRONOUN_SEX
+    }
+    if ">" in want and any(
+        title_sex(want.split(">")[1], Lexicon.of(scene)) not in (None, sex) for sex in sexes
+    ):
+        # session 31 (the lead's decision, 12s): ', bless him' after a request for Mrs Ortiz is
+        # about someone the instruction does not name (a title rules her out): refused with
+        # the readings, not taken off
+        assert_refused(said, scene)
+        return
     assert_means(said, want, scene)
 
 

@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import parse_expectation, show_tree
-from hltl.grounding.lexicon import Lexicon, _same_name, _touching
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, _same_name, _touching, title_sex
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -183,6 +183,13 @@ def test_sorry_to_bother_is_an_apology_whose_refusal_names_the_readings() -> Non
 )
 def test_a_reason_after_the_request_is_taken_off(scene: Scene, k: int, reason: str) -> None:
     request, want = plain_request(scene, k)
+    said = PRONOUN_SEX.get(reason.split()[0].split("'")[0])  # 'she's …', 'her hands …'
+    if said is not None and title_sex(want.split(">")[1], Lexicon.of(scene)) not in (None, said):
+        # session 31 (the lead's decision, 12s): 'she' after 'Give Mr Lee …' cannot be Mr Lee,
+        # so the reason is about someone the instruction does not name (Ruth or Mrs Khan): not
+        # taken off, refused with the readings ("Give Mr Lee the jug, she's thirsty.")
+        assert_refused(f"{request}, {reason}.", scene, match="by title")
+        return
     assert_reads(f"{request}, {reason}.", want, scene)
 
 

@@ -7088,6 +7088,218 @@ def _reasons21(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 31 (engineer 12s): blind17-23's known misses, by kind -------------------------------
+
+# 'will do' / 'is fine' said of a choice with its one recipient ("Any of the pens will do for
+# Sam.", "Either mug's fine for Carol.", "Either of the two things to Person B is fine."): the
+# choice for that person. Session 21 read "Either cup will do for Dana" alone (one word after
+# 'either', a whole text); this reads a sentence of that shape wherever it stands.
+_FINE31S = r"(?: will do| would do|'ll do| is fine|'s fine| is okay| is ok| works)"
+_CHOICE31S = (
+    r"(?:either|any)(?: one)?(?: of (?:the|those|these)(?: two| three| four)?)? [a-z]+(?: [a-z]+)?"
+)
+_WILL_DO31S = re.compile(
+    rf"(?:^|(?<=[.!?] ))(?P<choice>{_CHOICE31S}){_FINE31S} (?P<to>for|to) "
+    r"(?P<who>[^,.;!?]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_FINE_AFTER31S = re.compile(
+    rf"(?:^|(?<=[.!?] ))(?P<choice>{_CHOICE31S}) (?P<to>for|to) (?P<who>[^,.;!?]+?)"
+    rf"{_FINE31S}(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# after a choice said before it: 'either colour's fine', 'any size is ok' (said of the kind)
+_KIND_FINE31S = re.compile(
+    r",\s*(?:either|any) (?:colour|color|size|one|kind|sort)(?:'s| is) (?:fine|ok|okay)"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _will_do31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a choice said to be fine for one person is that choice for them (above):
+    read when the choice names only objects and the words after 'for' / 'to' exactly one person
+    ("Any of the pens will do for Sam and Priya" stays)."""
+
+    def chosen(m: re.Match[str]) -> str:
+        if not _objects_only(m.group("choice"), lexicon) or not _only_person(
+            m.group("who"), lexicon
+        ):
+            return m.group(0)
+        return f"{m.group('choice')} {m.group('to')} {m.group('who')}"
+
+    out = _WILL_DO31S.sub(chosen, text)
+    out = _FINE_AFTER31S.sub(chosen, out)
+
+    def after_choice(m: re.Match[str]) -> str:
+        chose = re.search(r"\b(?:one of|either|any)\b", m.string[: m.start()], _F)
+        return "" if chose else m.group(0)
+
+    return _KIND_FINE31S.sub(after_choice, out)
+
+
+# 'Both of those' / 'both of them' opening a sentence, then where they go ("Black pen to Sam.
+# Also the notepad. Both of those to him."): the grammar's 'both' (the two objects named before,
+# or a refusal saying it cannot tell which); with the list said after it ("Both of them, bottle
+# and chips, go to Person A"): the list. ('Give both of them a cup' names people: left.)
+_BOTH_OF31S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?:(?P<both>both|the two|all three|the three) of (?:them|those|these)"
+    r"(?P<list>,\s*[^,.;!?]+?,)?|(?P<alone>both|all three),\s*(?P<listed>[^,.;!?]+?),)"
+    r"(?= (?:to|for|on|onto|in|into|go|goes|over|up|across)\b)",
+    _F,
+)
+_HOW_MANY31S = {"both": 2, "the two": 2, "all three": 3, "the three": 3}
+
+
+def _both_of31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): 'both of those' before where they go is 'both'; with a list in
+    apposition, the list, when it names only objects, as many as the count says (above)."""
+
+    def said(m: re.Match[str]) -> str:
+        listed, both = m.group("list") or m.group("listed"), m.group("both") or m.group("alone")
+        if listed is None:
+            return both
+        names = _names(listed, lexicon)
+        if not _objects_only(listed, lexicon) or len(names) != _HOW_MANY31S[both.lower()]:
+            return m.group(0)
+        words = listed.strip(" ,")
+        return words[0].upper() + words[1:] if both[0].isupper() else words
+
+    return _BOTH_OF31S.sub(said, text)
+
+
+# Where an object is, said where the object opens a sentence ("You see the red mug by the
+# window? Take it across to Alice", "That bottle by the door, up on the shelf", "You see that
+# bottle next to you? Person A needs it"): a place the scene does not know, after a name that is
+# one object of the scene, tells which object is meant no more than the name does; taken off.
+# (After a name of several objects it would have to choose — 'the mug by the window' with two
+# mugs — and is left, and refused; after a verb it may say where to put it — "Put the cup by the
+# window" — and is left.) The question pointing at the object ("You see that bottle? …") is the
+# object said as a topic ("That bottle. …"), as session 17's _see_it17 reads it before 'it'.
+_WHERE_IT_IS31S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<see>(?:(?:so |and )?(?:do |can )?you see |see ))?"
+    r"(?P<det>the|that|this) (?P<obj>[a-z]+(?: [a-z]+)?)(?P<loc> (?:by|next to|near|beside|"
+    r"behind|in front of|right by|just by|over by) (?:you|(?:the|your|my|that|this) [a-z]+"
+    r"(?: [a-z]+)?))?(?P<end>\s*[?,])",
+    _F,
+)
+
+
+def _where_it_is31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a place the scene does not know after a sentence-opening name of one
+    object is taken off, and the question pointing at it is the object as a topic (above)."""
+
+    def one(m: re.Match[str]) -> str:
+        obj, loc, see = m.group("obj"), m.group("loc"), m.group("see")
+        asks = see is not None and m.group("end").strip() == "?"
+        if loc is None and not asks:
+            return m.group(0)
+        named = _names(obj, lexicon)
+        if len(named) != 1 or named[0].quant or len(_ids(obj, lexicon)) != 1:
+            return m.group(0)
+        if not _objects_only(obj, lexicon) or not _names_nothing(loc or "", lexicon):
+            return m.group(0)
+        if asks:
+            return f"{m.group('det').capitalize()} {obj}."
+        return f"{see or ''}{m.group('det')} {obj}{m.group('end')}"
+
+    return _WHERE_IT_IS31S.sub(one, text)
+
+
+# A reason after the request that says what is not so of its subject ("…, she won't settle for
+# the hymn practice without it", "…, she hasn't eaten since six this morning", "…, the race
+# isn't for an hour"): session 21's reasons (_reasons21) hold no negation, as 'she's not having
+# the X' changes what is asked; a negated verb whose clause names nothing in the scene, no
+# other name, and no word that could change who gets what, which one or when (_NOT_HELD31S:
+# session 21's words but the negation, and choices, time words) is a reason all the same, taken
+# off on session 21's terms (closing its sentence, after a request that names something), when
+# it holds no word of a scene name either ("…, he can't stand blue" may say which mug).
+_NOT_REASON31S = re.compile(
+    r"\s*,\s*(?P<said>(?:(?:and|cos|because|as|since)\s+)?(?:she|he|it|they|(?:the|her|his|their) "
+    r"[a-z]+)(?:'s| is| has)? ?(?:won't|wont|isn't|hasn't|can't|doesn't|didn't|haven't|aren't|"
+    r"wasn't|not|'s not|'re not| is not| has not)\b[^,.;!?—–]*?)\s*(?=[.!?]|$)",
+    _F,
+)
+_NOT_HELD31S = re.compile(
+    r"\b(?:nothing|none|only|just the|too|also|as well|instead|rather|first|then|before|once|"
+    r"when|until|unless|if|one|ones|both|each|either|every|another|other|rest|same|give|hand|"
+    r"pass|bring|take|put|place|want|wants|wanted|need|needs|needed|like|likes|love|loves|fancy|"
+    r"fancies|prefer|prefers|keep|leave|send|move|them|those|these|that|this|wrong|mean|meant|"
+    r"sorry|actually|mistake|change|swap|cancel|him|for him|for her|mine|yours|hers|his own|"
+    r"her own|which|what|whatever|any|anything|all|else|matter|mind|fussed|bothered|care|sure|"
+    r"know|yet|now|today|tomorrow|tonight|later|soon|here|have|get|got|having|getting|theirs|"
+    r"ours)\b|\b(?:his|her|their)\s*$",
+    _F,
+)
+
+
+def _negated_reason31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): a negated reason closing the request's sentence is taken off (above)."""
+    for m in reversed(list(_NOT_REASON31S.finditer(text))):
+        said = m.group("said")
+        words = re.findall(r"[A-Za-z']+", said)
+        before = text[: m.start()]
+        # 'this morning', 'that week': a time, not a thing pointed at
+        when = re.sub(
+            r"\b(?:this|that) (?:morning|afternoon|evening|week|year)\b", "", said, flags=_F
+        )
+        scene_words = _scene_words29(lexicon)
+        if (
+            _NOT_HELD31S.search(when)
+            or any(w[0].isupper() and w != "I" for w in words[1:])
+            # a word of a scene name ('blue' of 'blue mug': "…, he can't stand blue")
+            or any(len(w) > 2 and w.lower() in scene_words for w in words)
+            or not _names_nothing(said, lexicon)
+            or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)
+        ):
+            continue
+        text = before + text[m.end() :]
+    return text
+
+
+# Words the grammar reads said another way: 'do likewise' is 'do the same' ("Haul the medium box
+# onto the belt, then do likewise with the small one"); 'straight / right / directly /
+# immediately after' closing a clause is 'after' ("…, and the medium one straight after"); 'the
+# X and the Y both' is 'both the X and the Y' when X and Y name objects ("Person B wants the
+# bottle and the chips both, …").
+_BOTH_AFTER31S = re.compile(
+    r"\b(?P<list>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?) both"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _said_otherwise31s(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12s): 'do likewise', 'straight after', '… both', 'please love', 'this
+    morning' said as the grammar says them (above)."""
+    out = _sub(r"\bdo likewise\b", "do the same", text)
+    # a term of address after a courtesy word, without its comma ('please love')
+    out = _sub(
+        r"\b(please|thanks|ta|cheers) (love|dear|mate|pet|hun|darling)(?=\s*(?:[,.;!?]|$))",
+        r"\1, \2",
+        out,
+    )
+    # 'this morning' closing a request: today ('this afternoon / evening' put it off: session 20);
+    # not after a past tense ("Marco had the knife this morning" says what was)
+    if not re.search(
+        r"\b(?:had|got|was|were|gave|took|brought|handed|passed|did|went|came)\b", out, _F
+    ):
+        out = _sub(r"(?<=[a-z]) this morning(?=\s*[.!]*\s*$)", "", out)
+    out = _sub(
+        r"\b(?:straight|right|directly|immediately) (after|afterwards)(?=\s*(?:[,.;!?]|$))",
+        r"\1",
+        out,
+    )
+
+    def both(m: re.Match[str]) -> str:
+        listed = m.group("list")
+        if len(_ids(listed, lexicon, "object")) != 2 or not _objects_only(listed, lexicon):
+            return m.group(0)
+        return f"both {listed}"
+
+    return _BOTH_AFTER31S.sub(both, out)
+
+
 # -- session 28 (engineer 12): blind26's reasons said after the request ---------------------------
 
 # A reason closing the request's sentence that session 21's (_reasons21) did not take: a subject
@@ -16497,6 +16709,13 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
+_STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _will_do31s,
+    _both_of31s,
+    _where_it_is31s,
+    _negated_reason31s,
+    _said_otherwise31s,
+)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
@@ -16683,4 +16902,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _give_both28s,
     _dislocated28s,
     _along_with28s,
+    # session 31 (12s): blind17-23's kinds
+    *_STEPS31S,
 )

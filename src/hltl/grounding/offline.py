@@ -19,6 +19,7 @@ from hltl.grounding.lexicon import (
     foreign_words,
     lex,
     person_name,
+    title_sex,
 )
 from hltl.grounding.normalise import (
     apostrophes,
@@ -353,6 +354,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
+        _said_wrong31s(text)
+        _unasked_done31s(text, lexicon)
+        _has_beside_want31s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -389,6 +393,10 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 # "I'm not sure, morning! Would you mind passing Bob the crisps?", "… No, Tom.
                 # Ugh, I don't know. Good robot.": the speaker says they are unsure; a rewrite
                 # that takes that off would act on what they doubt (session 24: 12c's fuzz)
+                continue
+            if _ruled_out_dropped31s(text, plain, lexicon):
+                # "Give Mr Lee the jug, she's thirsty.": the reason the rewrite takes off says
+                # 'she', which cannot be Mr Lee; someone else of the scene may be meant
                 continue
             if _stubs(plain, lexicon) > stubs:
                 # "…, the green one's for the communion wine." → "…, the green one's.": the
@@ -459,6 +467,175 @@ _CLEFT_AFTER31 = re.compile(
     r"(?=\s*(?:[.;!?]|$))",
     re.I,
 )
+
+
+# Session 31 (12s): a sentence after the request saying it is wrong ("Put the apple on the shelf.
+# It is the wrong one.", "…, that's the wrong cup.", "It isn't the right one.") questions what
+# was asked; taken off as a remark it had been read. Refused when it ends the instruction (a
+# correction after it, "that's wrong, it's the bottle she asked for", is read as before).
+_SAID_WRONG31S = re.compile(
+    r"(?:^|[,.;!?—–-]\s*)(?P<said>(?:(?:oh|but|and|though|sorry|hmm|wait)\s*,?\s+)*"
+    r"(?:it|that|this|they|those|these)(?: one| ones)?(?:(?:'s|'re| is| are| was| were| looks| "
+    r"seems)(?: like)?(?: (?:the|a|an))? (?:wrong|incorrect)|(?:'s not|'re not| isn't| aren't| "
+    r"is not| are not| wasn't| was not)(?: (?:the|a|an))? right)\b(?: (?:one|ones|[a-z]+))?)"
+    r"\s*[.!?]*\s*$",
+    re.I,
+)
+
+
+def _said_wrong31s(text: str) -> None:
+    """Session 31 (12s): refuse a request the words after it say is wrong (above)."""
+    m = _SAID_WRONG31S.search(text)
+    if m is not None and m.start("said") > 0:
+        raise GroundingError(
+            f"{m.group('said')!r} after the request says it is wrong: say what is to be done "
+            "instead"
+        )
+
+
+# the words saying a step is complete after its subject ('done', 'over'; 'finished' and the like
+# are unknown words, refused by the grammar already)
+_DONE31S = frozenset({"done", "over", "finished", "complete", "completed"})
+
+
+def _unasked_done31s(text: str, lexicon: Lexicon) -> None:
+    """Session 31 (12s): 'after / once / when the cup is done' waits for a step with the cup; when
+    no other part of the instruction names the cup, no such step is asked for, and the grammar
+    (the complement words taken as fillers) had made one up ("Bob gets the chips, then Alice gets
+    the apple after the cup is done" read cup>A first): refused. ("Give Bob the cup, and once the
+    cup is done, give Alice the apple" names the step it waits for: read as before.)"""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for k, it in enumerate(items):
+        if not _is(it, "after", "once"):
+            continue
+        j = k + 1
+        named: list[int] = []
+        while j < len(items) and (
+            _is(items[j], "det", "and", ",")
+            or items[j].text.lower() == "'s"
+            or (
+                items[j].kind == "ent" and all(r.kind in ("object", "human") for r in items[j].refs)
+            )
+        ):
+            if items[j].kind == "ent" and items[j].refs[0].kind == "object":
+                named.append(j)
+            j += 1
+        while j < len(items) and (
+            _is(items[j], "aux", "verb:have") or items[j].text.lower() in ("'s", "has", "have")
+        ):
+            j += 1
+        if not named or j == k + 1 or j >= len(items) or items[j].text.lower() not in _DONE31S:
+            continue
+        said = {r.id for x in named for r in items[x].refs}
+        others = {
+            r.id
+            for x, o in enumerate(items)
+            if o.kind == "ent" and not k < x < j
+            for r in o.refs
+            if r.kind == "object"
+        }
+        if not said <= others:
+            raise GroundingError(
+                f"{_text(items[k : j + 1])!r} waits for a step this instruction does not ask for "
+                f"(nothing else in it names {' or '.join(sorted(said - others))}): say what is "
+                "to be done with it"
+            )
+
+
+def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
+    """Session 31 (12s): 'Bob has the cup and wants the apple': a person 'has' an object, beside
+    a want said in the same instruction. 'Has' then says what the person holds (a state: only
+    the apple is asked for), or allots the object ("Alice has the bottle, Bob has the crisps");
+    the scene puts the cup elsewhere, so the state reading is no more certain than the other:
+    refused with both readings (the grammar had read cup>B & apple>B). A 'has' in a condition
+    ("once she has it") or a relative clause ("Lena, who has the knife, wants the lemon") is a
+    state, read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    wants = [w for w, it in enumerate(items) if it.lemma in ("verb:want", "verb:need", "verb:like")]
+    if not wants:
+        return
+    for k, it in enumerate(items):
+        if it.lemma != "verb:have" or it.text.lower() not in ("has", "has got", "'s got"):
+            continue
+        subject = items[k - 1] if k > 0 else None
+        if subject is not None and _is(subject, "and"):
+            # "Bob wants the apple and has the cup": the subject of the want before, in the
+            # same sentence
+            start = max((x + 1 for x in range(k) if items[x].lemma in _SENTENCE_END), default=0)
+            if items[start + 1].lemma in ("verb:want", "verb:need", "verb:like"):
+                subject = items[start]
+        if subject is None or not (
+            (subject.kind == "ent" and all(r.kind == "human" for r in subject.refs))
+            or (_is(subject, "pronoun") and subject.text.lower() in ("he", "she"))
+        ):
+            continue
+        if (
+            subject is items[k - 1]
+            and k > 1
+            and not (items[k - 2].kind == "punct" or _is(items[k - 2], "and", "but"))
+        ):
+            continue
+        if subject is items[k - 1] and not any(_same_subject31s(items, w, subject) for w in wants):
+            continue  # "Marco's got the tongs, and what Lena wants is the salt": another's want
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        if j >= len(items) or items[j].kind != "ent" or items[j].refs[0].kind != "object":
+            continue
+        raise GroundingError(
+            f"{_text([subject, *items[k : j + 1]])!r} beside a want could say what "
+            f"{subject.text} already holds (only the rest is asked for) or that "
+            f"{subject.text} is to get {_text(items[k + 1 : j + 1])} too: say 'give' for each "
+            "thing to hand over"
+        )
+
+
+def _same_subject31s(items: list[Item], w: int, subject: Item) -> bool:
+    """Whether the want at ``items[w]`` may be said of ``subject``: its own subject is that
+    person or a he/she, or it has none ('… and wants the apple')."""
+    before = items[w - 1] if w > 0 else None
+    if before is None:
+        return False
+    if before.kind == "ent":
+        return {r.id for r in before.refs} == {r.id for r in subject.refs}
+    return _is(before, "and", ",") or (
+        _is(before, "pronoun") and before.text.lower() in ("he", "she")
+    )
+
+
+def _ruled_out_dropped31s(text: str, plain: str, lexicon: Lexicon) -> bool:
+    """Session 31 (12s): whether ``plain`` (a rewrite of ``text``) took off a he / she / him /
+    her / his that no person the instruction names may be by title, while another person of the
+    scene may be ("Give Mr Lee the jug, she's thirsty.": 'she' is not Mr Lee, and Ruth or Mrs
+    Khan, whom it does not name, may be meant). Such a rewrite is not taken: the clause it drops
+    is about someone else of the scene. ("Pills to Mrs Khan, wait, no, Mr Lee, she's had hers
+    already": 'she' may be Mrs Khan, named before; the rewrite is taken as before.) The people
+    are those of the whole instruction, when ``text`` is a part of it read again ("…, she's been
+    waiting, no, leave it, give Mrs Khan the thermometer instead")."""
+    words = set(re.findall(r"\b(?:he|she|him|her|his)\b", text.lower()))
+    if not words:
+        return False
+    whole = _inside()[0] if _inside() else text
+    named = people_named(whole, lexicon) | people_named(text, lexicon)
+    if not named:
+        return False
+    for said in words:
+        sex = PRONOUN_SEX[said]
+        if any(title_sex(p, lexicon) in (None, sex) for p in named):
+            continue
+        others = [h.id for h in lexicon.scene.humans if h.id not in named]
+        if not any(title_sex(p, lexicon) in (None, sex) for p in others):
+            continue  # no one of the scene may be it: someone the scene does not hold
+        word = re.compile(rf"\b{said}\b", re.I)
+        if len(word.findall(plain)) < len(word.findall(text)):
+            return True
+    return False
 
 
 def _names_any30s(text: str, lexicon: Lexicon) -> bool:
