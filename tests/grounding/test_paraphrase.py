@@ -233,7 +233,6 @@ KNOWN_MISSES = frozenset(
         "bottle.",
         "Person B is wanting the bottle only, kindly do the needful.",
         "Bottle first. To Alice. After, chips to Bob.",
-        "Person B first, with the bottle. After that, the apple for Person A.",
         "Any of the pens will do for Sam.",
         "Either mug's fine for Carol, the red or the blue, your call.",
         "Each of them gets one thing: the bottle to Person A, the chips to Person B.",
@@ -585,9 +584,6 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        'Mrs Khan is shivering like a diver out of the sea, so let her have both blankets.',
-        'Both items to Bob, the archer wants them.',
-        'Person A is the forester on the night shift; both items go to her.',
         'Both of the cups, the green and the white, want rinsing, so into the sink with the pair.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
@@ -601,58 +597,20 @@ KNOWN_MISSES = frozenset(
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",
-        'Person A, a dyer, wants a drink and will take the cup or the bottle, either way.',
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         'Hand the bottle to Percon A, the shearer',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
-        'Rahmat, as we say in Uzbek! Now could the bottle go over to Person B?',
-        'Ooh, bless you, would you put the bib on the high chair, please, pet?',
-        'Alice, our oboist, would like the bottle up on the shelf, where nobody will knock it '
-        'over.',
-        "What Bob really needs right now, after his shift at the chandler's, is the crisps.",
-        "Person A could really do with the cup; for Person B it's the apple she's craving, so that "
-        "too.",
-        'The chips are what Person B is hoping for, and Person A is wanting the bottle.',
-        'Person B would love the chips to nibble, and once she has them, Person A wants the '
-        'bottle.',
-        'Person A fancies the bottle, she tells me.',
-        'After the regatta Person A is dry as a bone and needs that bottle.',
-        'Chef wants the tongs and the lemon, if you can manage both.',
-        'Grab the apple off the side and give it to Carol.',
-        'Our fencer, Person A, is owed the bottle, while her coach, Person B, is owed the chips.',
-        'Serve Person A first, give her the bottle, and after her, Person B with the chips.',
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
-        "Person A has asked for the chips, and she'll take the bottle along with them.",
-        'The intern needs the notepad for his notes, and the stapler along with it.',
-        'Mrs Ortiz would like the globe set down on her desk for geography.',
-        "Alice gets the bottle Bob gets the crisps that's it that's all from the tobacconist.",
-        "Cup first, over to Person B. Once that's sorted, apple, Person A.",
-        "Okay so the chips go across to Person A and then Person B gets the bottle and right "
-        "that's the orienteers fed.",
-        'Person B first. The bottle, that is. Then over to Person A. Chips for her.',
-        "Right, Person A is thirsty, she wants the bottle, bring it her, there's a love.",
-        "Chips to Person B to begin with, and the moment you've done that the bottle to Person A.",
         'The machinist says Person A should have both of them, the bottle and the chips.',
         "Sam can have any one of the pens, the millwright's lent us them.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
         'Both of the blocks are to go in the high chair so Lily can bash them about.',
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
-        'carol is thirsty so the water bottle to her, and the apple to bob',
-        'the crisps go up on the shelf please, the maltster wants them out of reach',
-        'person b first with the chips, then the cup for person a',
-        'person a is thirsty and could use both the bottle and a cup to pour into',
-        'person a the violinist has asked for chips and the bottle is for person b',
-        'person a, the confectioner, has earned the bottle',
         'Bob has been eyeing the criaps since lunch, so let him have them.',
         "The bottle is Person B's, and Persoh A can have the chips, thanks.",
         "Peerson A is the acupuncturist and she'd like her bottle now.",
         'Somebody left the spobge on the side; drop it in the sink, please.',
-        'Any chance the chips could make their way over to Person A, the pizzaiolo?',
-        'Will you bring Person A the bottle? Jerejef, as we say in Wolof.',
-        'Could Person A get the chips, with the bottle going to Person B? Faafetai.',
-        'Would you drop the black pen in the box for me? Trugarez, as we say in Brittany.',
-        'Could the blue plate come off the rack and go on the worktop?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -34,6 +34,7 @@ L24 = _scene("2-4-line")  # bottle, chips; A, B
 ONE = _scene("1-1")  # bottle; A
 T12 = _scene("1-2")  # bottle; A
 T21 = _scene("2-1")  # bottle, chips; A, B
+TWO = _scene("two_arms")  # bottle, chips (crisps); Alice, Bob
 DEPOT = load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml")
 WORKSHOP = load_scene(ROOT / "tests/grounding/paraphrase/scenes/workshop.yaml")
 
@@ -718,4 +719,20 @@ def test_only_and_other(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_a_correction_by_its_colour(text: str, want: str | None, scene: Scene) -> None:
+    _case(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Alice would be happy with the bottle or the crisps.", "bottle>A | chips>A", TWO),
+        ("Alice: bottle or crisps, she's happy with either.", "bottle>A | chips>A", TWO),
+        ("The bottle or the crisps for Alice, either's grand.", "bottle>A | chips>A", TWO),
+        # a person is no object; 'is happy with' may say she has it; a count the scene lacks
+        ("Alice would be happy with Bob.", None, TWO),
+        ("Alice is happy with the bottle but Bob wants it.", None, TWO),
+        ("Alice would be happy with the three items.", None, TWO),
+    ],
+)
+def test_happy_with(text: str, want: str | None, scene: Scene) -> None:
     _case(text, want, scene)

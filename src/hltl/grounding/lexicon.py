@@ -620,8 +620,15 @@ _phrases(
     "no preference",
     "either is good",
     "either 's good",
+    "either is grand",
+    "either 's grand",
     "any old one",
 )
+# "…, she's happy with either" (session 31, 12r): the one who gets it does not mind which
+for _who in ("she 's", "she is", "he 's", "he is", "they 're", "they are", "i 'm", "i am"):
+    for _fine in ("happy", "fine", "ok", "okay", "content"):
+        for _any in ("either", "either one", "any of them", "either of them"):
+            PHRASES[tuple(f"{_who} {_fine} with {_any}".split())] = "whichever"
 
 # Session 7 (issue 12): whole families of politeness around a request, not single sentences.
 # Thanks with any intensifier ("thank you so much", "thanks a million", "many thanks").

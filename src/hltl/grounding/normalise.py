@@ -7356,7 +7356,7 @@ def _for_whose28(text: str, lexicon: Lexicon) -> str:
 # or (with no comma before: '…, the house is paying' is a clause) a verb of wanting, having or
 # being.
 _TRADE29 = re.compile(
-    r"(?P<comma>,)?\s+the (?P<trade>[a-z]+(?: [a-z]+)?)"
+    r"(?P<comma>,)?\s+the (?P<trade>[a-z]+(?: [a-z]+)??)"
     r"(?P<after>\s*,|(?=\s*(?:[.;:!?]|$))|(?= (?:wants|needs|gets|is|was|has|had|would|should|"
     r"could|can|will|might|may|fancies|likes|asked|asks|says|'s|'d)\b))",
     _F,
@@ -8460,6 +8460,922 @@ def _has_going30(text: str, lexicon: Lexicon) -> str:
         return m[0]
 
     return _HAS_GOING30.sub(busy, text)
+
+
+# -- session 31 (engineer 12): blind29's kinds (politeness, wants, pronouns and ellipsis, splits,
+# lower case, questions); docs/grounding.md, "Session 31 (engineer 12)" ---------------------------
+
+
+def _things31(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (a phrase the session-31 patterns take lazily up to a mark) is objects of
+    the scene only, said as names alone: no verb of the grammar and no word that asks
+    (_ASKS29) among them ('the cup wants the apple' is no list of objects)."""
+    tokens = re.findall(r"[a-z']+", words.lower())
+    return (
+        _objects_only(words, lexicon)
+        and not any(t in VERBS for t in tokens)
+        and not _ASKS29.search(" ".join(tokens[1:]))  # past its determiner ('that bottle')
+    )
+
+
+# A courtesy of another language said with what it is ("Rahmat, as we say in Uzbek!", "Jerejef, as
+# we say in Wolof.", "…, as my gran would say in Gaelic"): one to three words, then 'as <someone>
+# (would) say in <a capitalised language or place>', a sentence or comma part of its own; or that
+# alone as a sentence, its courtesy taken off before (_courtesy24: "Salamat, as we say in …!")
+_AS_WE_SAY31 = re.compile(
+    r"(?P<lead>^|(?<=[.!?])\s+|,\s*)(?:(?P<word>[A-Za-z][\w'’-]*(?: [\w'’-]+){0,2}),\s*)?[Aa]s "
+    r"(?:we|I|they|you|people|folk|my [a-z]+|our [a-z]+) (?:would |'d |always |often |like to )?"
+    r"say (?:it )?(?:in|back in|over in|up in|down in) (?P<lang>[A-Z][a-z]+(?: [A-Z][a-z]+)?)"
+    r"(?P<end>\s*(?:[.!?:;]|$))"
+)
+
+
+def _as_we_say31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: a courtesy said with its language (above) taken off when its words and the
+    language name nothing of the scene and hold no word that asks (_asks_nothing29), and what is
+    left names something. A question mark after it is kept (it closes the request)."""
+    if " say " not in text.lower():
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        if m["word"] is None and (m["lead"].strip() == "," or m["end"].strip() not in ".!"):
+            return m[0]  # without its words: only a sentence of its own ('Salamat' taken off)
+        if not (
+            (m["word"] is None or _asks_nothing29(m["word"], lexicon))
+            and _names_nothing(m["lang"], lexicon)
+        ):
+            return m[0]
+        end = m["end"].strip()
+        if m["lead"].strip() == ",":
+            return end if end in ("?", ".", "!") else ""
+        return " " if m["lead"] else ""
+
+    said = _AS_WE_SAY31.sub(dropped, text).strip()
+    return said if said != text.strip() and _names(said, lexicon) else text
+
+
+# an interjection opening a question, before 'could / would / can / will you' ("Ooh, would you put
+# the bib on the high chair?"): a sound of the speaker, never a word of the request
+_INTERJECTED31 = re.compile(
+    r"^(?:oh|ooh|ah|aah|aw|ooh la la|oh dear|well|hmm|um|erm|er|uh)\s*,\s*(?=(?:could|would|can|"
+    r"will|might|may) (?:you|someone|somebody|one of you)\b)",
+    _F,
+)
+
+
+def _interjected31(text: str, _lexicon: Lexicon) -> str:
+    """Session 31: the interjection above taken off."""
+    return _INTERJECTED31.sub("", text)
+
+
+# a trade said before a person's name, with the speaker's or a person's word, in a later clause
+# ("…, while her coach, Person B, is owed the chips"): it only describes the person (as trades29's
+# 'the <trade>' after the name)
+_TRADE_BEFORE31 = re.compile(
+    r"(?P<lead>(?<=[;]\s)|(?<=,\s)|(?<=\bwhile\s)|(?<=\band\s))(?:our|my|your|her|his|their|the) "
+    r"(?P<trade>[a-z]+(?: [a-z]+)?),\s+(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?),\s+",
+    _F,
+)
+
+
+def _trades31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the trade above taken off, the person's name kept, when the name is one person
+    of the scene and the trade words could only describe a person (_trade_words29)."""
+    if "," not in text:
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if _only_person(m["p"], lexicon) and _trade_words29(m["trade"], lexicon):
+            return f"{m['p']} "
+        return m[0]
+
+    return _TRADE_BEFORE31.sub(named, text)
+
+
+# wants said by an idiom: a closed list (docs/grounding.md, "Session 31 (engineer 12)"), each said
+# plainly as a want the grammar reads ('should get')
+_IDIOMS31: tuple[tuple[str, str], ...] = (
+    # "Person A is owed the bottle": it is due to her
+    (r"(?:\s+is|'s) (?:still )?owed\b(?= (?:the|that|this|those|these|her|his|their)\b)",
+     " should get"),
+    # "Person A has earned the bottle": she has a right to it now
+    (r"(?:\s+has|'s) (?:really |more than |well and truly )?earned\b(?= (?:the|that|this|those|"
+     r"these|her|his|their)\b)", " should get"),
+    # "Bob has been eyeing the crisps": he wants them
+    (r"(?:\s+has|'s|\s+is) (?:been )?eyeing(?: up)?\b(?= (?:the|that|this|those|these)\b)",
+     " wants"),
+)  # fmt: skip
+
+
+def _idioms31(text: str, _lexicon: Lexicon) -> str:
+    """Session 31: the idioms above, said plainly."""
+    for pattern, plain in _IDIOMS31:
+        text = _sub(pattern, plain, text)
+    return text
+
+
+# what the wanted object is for, said as 'to <verb>' after it ("Person B would love the chips to
+# nibble", "… a cup to pour into"): a purpose, never where it goes
+_TO_DO31 = re.compile(
+    r"(?P<before>\b(?:would (?:love|like)|'d (?:love|like)|wants?|needs?|could use|could do with|"
+    r"fancies|fancy) [^,.;!?]*?)\s+to (?P<verb>[a-z]+)(?P<prep> (?:into|in|on|with|from|over))?"
+    r"(?=\s*(?:[,.;!?]|$|\band\b))",
+    _F,
+)
+
+
+def _to_do31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the purpose above taken off when what comes before it ends with an object of
+    the scene (the want's object), and its verb is no verb of the grammar, names nothing and asks
+    nothing (_asks_nothing29: no pronoun, count or time)."""
+    if " to " not in text.lower():
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        verb = m["verb"]
+        if (
+            verb.lower() in VERBS
+            or not _asks_nothing29(verb, lexicon)
+            or not _ends_object(m["before"], lexicon)
+        ):
+            return m[0]
+        return m["before"]
+
+    return _TO_DO31.sub(dropped, text)
+
+
+# a want said as a cleft: "The chips are what Person B is hoping for", "for Person B it's the apple
+# she's craving"; the wanting said with a verb of wanting (closed: _WANTING31)
+_WANTING31 = (
+    r"(?:wants|needs|is after|'s after|is hoping for|'s hoping for|is wanting|'s wanting|"
+    r"is craving|'s craving|craves|fancies|is longing for|'s longing for|would like|'d like|"
+    r"has asked for|asked for|is waiting for|'s waiting for)"
+)
+_WHAT_WANTS31 = re.compile(
+    rf"(?:^|(?<=[,;.!?]\s))(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:is|are|'s|'re) "
+    rf"(?:just |exactly )?what (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:really )?{_WANTING31}"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_FOR_ITS31 = re.compile(
+    r"(?:^|(?<=[,;.!?]\s))for (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?),? it(?:'s| is) "
+    r"(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:that )?(?P<pron>she|he|they)"
+    r"(?:'s|'re| is| are) (?:really )?(?:craving|after|wanting|hoping for|longing for|"
+    r"waiting for)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _cleft_wants31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the clefts above are 'P wants X', when P is one person of the scene, X objects
+    of the scene only, and the pronoun (in the second) may be that person."""
+    if " what " not in text.lower() and "for " not in text.lower():
+        return text
+
+    def wants(m: re.Match[str]) -> str:
+        if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
+            return m[0]
+        if "pron" in m.groupdict() and not _the_person(m["p"], m["pron"], lexicon):
+            return m[0]
+        return f"{m['p']} wants {m['x']}"
+
+    return _FOR_ITS31.sub(wants, _WHAT_WANTS31.sub(wants, text))
+
+
+# the speaker saying whose word the request is, closing it: "…, she tells me.", "…, he told me",
+# "…, or so I'm told": who said it, never who gets anything
+_TOLD_ME31 = re.compile(
+    r",\s*(?:or so )?(?:(?:she|he|they) (?:tells|told|has told|'s told|tell|have told|'ve told) "
+    r"me|I'm told|I am told|I've been told|I was told)(?:\s+(?:so|earlier|just now))?"
+    r"(?P<end>\s*[.!]?\s*)$",
+    _F,
+)
+
+
+def _told_me31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the closing part above taken off when what is left names a person of the
+    scene (who told the speaker does not change what is asked)."""
+    m = _TOLD_ME31.search(text)
+    if m is None or not _ids(text[: m.start()], lexicon, "human"):
+        return text
+    return text[: m.start()] + m["end"].strip()
+
+
+# "…, and the stapler along with it": 'along with it / them' after a second object is 'too'
+_ALONG_WITH31 = re.compile(
+    r"(?P<x>\b(?:the|that|this|those|these) [a-z][a-z ]*?) along with (?:it|them)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _along_with31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'X along with it / them' (above) is 'X too', when X is objects of the scene only
+    and an object is named before it (what 'it' stands for: the grammar keeps the first task's
+    person for 'too')."""
+    if "along with" not in text.lower():
+        return text
+
+    def too(m: re.Match[str]) -> str:
+        before = text[: m.start()]
+        if not _things31(m["x"], lexicon) or not _ids(before, lexicon, "object"):
+            return m[0]
+        return f"{m['x']} too"
+
+    return _ALONG_WITH31.sub(too, text)
+
+
+# "…, and she'll take the bottle (too)": a person saying what they will take is their want
+_WILL_TAKE31 = re.compile(
+    r"\b(?P<pron>she|he|they)(?:'ll| will) (?:happily |gladly )?take (?P<x>(?:the|that|this|those|"
+    r"these) [a-z][a-z ]*?)(?P<too>,? (?:too|as well|also))?(?=\s*(?:[.;!?]|$))",
+    _F,
+)
+
+
+def _will_take31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'she'll take X' (above) is 'she wants X', when X is objects of the scene only
+    (nothing said of where it goes) and one person is named before it whom the pronoun may be."""
+    if "take" not in text.lower():
+        return text
+
+    def wants(m: re.Match[str]) -> str:
+        people = _ids(text[: m.start()], lexicon, "human")
+        if len(people) != 1 or not _things31(m["x"], lexicon):
+            return m[0]
+        pid = next(iter(people))
+        name = next(h.name for h in lexicon.scene.humans if h.id == pid)
+        if not _the_person(name, m["pron"], lexicon):
+            return m[0]
+        return f"{m['pron']} wants {m['x']}{m['too'] or ''}"
+
+    return _WILL_TAKE31.sub(wants, text)
+
+
+# a task said as the person 'with' the object, no verb ("…, and after her, Person B with the
+# chips", "person b first with the chips, then …"): the object to that person
+_WITH_OBJECT31 = re.compile(
+    r"(?P<lead>^|(?<=[,;.!?]\s)|(?<=\band\s)|(?<=\bthen\s))(?P<p>[A-Za-z]+(?: [A-Za-z])?)"
+    r"(?P<when> first| next| last)?,? with (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)"
+    r"(?=\s*(?:[,.;!?]|$|\bthen\b))",
+    _F,
+)
+
+
+def _with_object31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'P (first) with X' (above) is 'X to P (first)', when P is one person of the
+    scene, said alone (no verb before it in its clause), and X objects of the scene only."""
+    if " with " not in text.lower():
+        return text
+
+    def to(m: re.Match[str]) -> str:
+        if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
+            return m[0]
+        return f"{m['x']} to {m['p']}{m['when'] or ''}"
+
+    return _WITH_OBJECT31.sub(to, text)
+
+
+# "Could Person A get the chips, with the bottle going to Person B?": a second task said as what
+# goes with the first
+_WITH_GOING31 = re.compile(
+    r",\s*with (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:going|heading|off) "
+    r"(?P<dir>(?:over |across |up |down )?)(?P<to>to|on|onto|in|into) "
+    r"(?P<where>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?)(?=\s*(?:[.!?]|$))",
+    _F,
+)
+
+
+def _with_going31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: ', with X going to P' (above) is ', and X to P', when X is objects of the
+    scene only and P one person or surface."""
+    if " with " not in text.lower():
+        return text
+
+    def also(m: re.Match[str]) -> str:
+        where = m["where"]
+        if not _things31(m["x"], lexicon) or not (
+            _only_person(where, lexicon) or _surface_only(where, lexicon)
+        ):
+            return m[0]
+        return f", and {m['x']} {m['to']} {where}"
+
+    return _WITH_GOING31.sub(also, text)
+
+
+# "…, if you can manage both.": the speaker allowing that it is much to ask, closing the request
+_IF_MANAGE31 = re.compile(
+    r",\s*if you (?:can|could) (?:manage|handle|carry) (?P<what>both|it|that|them|all that|the two)"
+    r"(?: (?:of them|at once|together))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _if_manage31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the closing part above taken off ('both' and 'the two' only when the request
+    names exactly two objects, which it then counts)."""
+    m = _IF_MANAGE31.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if m["what"].lower() in ("both", "the two") and len(_ids(rest, lexicon, "object")) != 2:
+        return text
+    return rest + m["end"].strip()
+
+
+# the speaker closing a run-on: "… that's it that's all from the tobacconist", "… and right that's
+# the orienteers fed": it says the request is over (and who sends it), never asks
+_RUN_ON_CLOSE31 = re.compile(
+    r"(?:\s*,)?\s+(?:and )?(?:(?:right|okay|ok|so)\s*,?\s+)?(?:that's (?:it|all|everything)"
+    r"(?:,? that's (?:it|all|everything))*(?: from (?:the|your) (?P<trade>[a-z]+(?: [a-z]+)?))?|"
+    r"that's (?:the|our|my|them|the two of them|both of them) ?(?P<who>[a-z]*) "
+    r"(?:fed|sorted|done|happy|set|watered|looked after))(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _run_on_close31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the closing above taken off when the trade (if said) could only describe a
+    person (_trade_words29), the people fed are named by no scene word, and a request is left."""
+    m = _RUN_ON_CLOSE31.search(text)
+    if m is None:
+        return text
+    if m["trade"] and not _trade_words29(m["trade"], lexicon):
+        return text
+    if m["who"] and not _names_nothing(m["who"], lexicon):
+        return text
+    rest = text[: m.start()]
+    return rest + m["end"].strip() if _names(rest, lexicon) else text
+
+
+# "bring it her", "give it him": British speech for 'bring it to her'
+_IT_HER31 = re.compile(
+    r"\b(?P<v>bring|give|hand|pass|take|fetch|send) (?P<x>it|them) (?P<p>her|him|them)\b"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _it_her31(text: str, _lexicon: Lexicon) -> str:
+    """Session 31: 'bring it her' (above) is 'bring it to her' (the pronouns left to the
+    grammar, which refuses them when it cannot tell whom or what they mean)."""
+    return _IT_HER31.sub(lambda m: f"{m['v']} {m['x']} to {m['p']}", text)
+
+
+# "…, and the moment you've done that the bottle to Person A": as soon as the first is done
+_THE_MOMENT31 = re.compile(
+    r"\b(?:the moment|the minute|the second|as soon as) (?:you've|you have|you're|you are) "
+    r"(?:done|finished|through with) (?:that|it|this)(?: one)?,?\s+(?=[a-z])",
+    _F,
+)
+
+
+def _the_moment31(text: str, _lexicon: Lexicon) -> str:
+    """Session 31: 'the moment you've done that' (above) is 'once that's done,' (which the grammar
+    orders after what was said before it)."""
+    return _THE_MOMENT31.sub("once that's done, ", text)
+
+
+# "Any chance the chips could make their way over to Person A?": the objects going there
+_MAKE_WAY31 = re.compile(
+    r"(?P<x>\b(?:the|that|this|those|these) [a-z][a-z ]*?) (?P<modal>(?:could|can|would|might|"
+    r"will|should) )?make (?:their|its) way (?P<dir>(?:over |across |up |down |round )?)to\b",
+    _F,
+)
+
+
+def _make_way31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'X make their way to' (above) is 'X go to', when X is objects of the scene only
+    ('their' then is said of them, never of a person)."""
+    if "way" not in text.lower():
+        return text
+
+    def go(m: re.Match[str]) -> str:
+        if not _things31(m["x"], lexicon):
+            return m[0]
+        return f"{m['x']} {m['modal'] or ''}go {m['dir']}to"
+
+    return _MAKE_WAY31.sub(go, text)
+
+
+# where an object is picked up from, said before a second task for 'it' ("Grab the apple off the
+# side and give it to Carol", "Could the blue plate come off the rack and go on the worktop?")
+_OFF_THE31 = re.compile(
+    r"\b(?P<v>grab|take|get|pick up|lift) (?P<x>(?:the|that|this) [a-z][a-z ]*?) (?:off|from) "
+    r"(?:the|that|this) (?P<from>[a-z]+(?: [a-z]+)?) and (?=(?:give|hand|pass|bring|take|put|"
+    r"place|set|pop|drop|stand) it\b)",
+    _F,
+)
+_COME_OFF31 = re.compile(
+    r"(?P<x>\b(?:the|that|this) [a-z][a-z ]*?) (?P<modal>(?:could|can|would|might|will|should) )?"
+    r"come (?:off|down from|out of|from) (?:the|that|this) (?P<from>[a-z]+(?: [a-z]+)?) and go "
+    r"(?=(?:on|onto|in|into|to|over to|across to) )",
+    _F,
+)
+
+
+def _off_the31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: where the object is taken from (above) taken off, when the object is one object
+    of the scene and where it is taken from names nothing of the scene or one surface ('the side',
+    'the rack'): the second task says where it goes."""
+    if " off " not in text.lower() and " from " not in text.lower() and " out " not in text.lower():
+        return text
+
+    def source(where: str) -> bool:
+        return (_names_nothing(where, lexicon) and _asks_nothing29(where, lexicon)) or (
+            _surface_only(where, lexicon)
+        )
+
+    def picked(m: re.Match[str]) -> str:
+        if not _only(m["x"], lexicon, "object") or not source(m["from"]):
+            return m[0]
+        return f"pick up {m['x']} and "
+
+    def moved(m: re.Match[str]) -> str:
+        if not _only(m["x"], lexicon, "object") or not source(m["from"]):
+            return m[0]
+        return f"{m['x']} {m['modal'] or ''}go "
+
+    return _COME_OFF31.sub(moved, _OFF_THE31.sub(picked, text))
+
+
+# 'while' between two wants after a comma ("Person A should get the bottle, while Person B should
+# get the chips"): _while29 reads it without the comma
+_WHILE31 = re.compile(
+    r"(?<=\w),\s+while (?P<p>[A-Za-z]+(?: [A-Za-z]+)?) "
+    r"(?=(?:wants|needs|gets|would like|fancies|should get|should have)\b)",
+    _F,
+)
+
+
+def _while31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: ', while P <wants>' is ', and P <wants>' when P is one person of the scene and
+    the clause before it names an object (two wants side by side)."""
+    if " while " not in text.lower():
+        return text
+
+    def side(m: re.Match[str]) -> str:
+        before = re.split(r"[.!?;:]\s", text[: m.start()])[-1]
+        if _only_person(m["p"], lexicon) and _ids(before, lexicon, "object"):
+            return f", and {m['p']} "
+        return m[0]
+
+    return _WHILE31.sub(side, text)
+
+
+# an object wanted 'up on' / 'down on' a surface ("Alice would like the bottle up on the shelf"):
+# the direction is said of the surface, 'on' it
+_UP_ON31 = re.compile(
+    r"(?P<x>\b(?:the|that|this|those|these) [a-z][a-z ]*?) (?:up|down|back|over) "
+    r"(?P<on>on|onto|in|into|on top of) (?P<s>(?:the )?[a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def _up_on31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'X up on S' (above) is 'X on S' when X is objects of the scene only and S one
+    surface (what it is put on)."""
+    if " on" not in text.lower() and " in" not in text.lower():
+        return text
+
+    def on(m: re.Match[str]) -> str:
+        if not _things31(m["x"], lexicon):
+            return m[0]
+        words = m["s"].split()
+        for k in range(len(words), 0, -1):  # 'the shelf and': the surface is 'the shelf'
+            if _surface_only(" ".join(words[:k]), lexicon):
+                return f"{m['x']} {m['on']} {m['s']}"
+        return m[0]
+
+    return _UP_ON31.sub(on, text)
+
+
+# why a place is chosen, said of it after a comma ("…, where nobody will knock it over"): a closed
+# list of the harms a high or safe place keeps off (docs/grounding.md)
+_SAFE_WHERE31 = re.compile(
+    r",\s*(?:where|so) (?:nobody|no one|no-one|the kids|the children|little hands|the dog|the cat) "
+    r"(?:will|can|'ll|could|won't|can't)\s+(?:knock|reach|get at|get to|grab|spill|break|touch)"
+    r"(?: (?:it|them))?(?: (?:over|down|off))?(?P<end>\s*[.!]?)\s*$|"
+    # "…, the maltster wants them out of reach": who asks wanting them kept safe there
+    r",\s*(?:(?:the|our|my) (?P<trade>[a-z]+)|she|he|they|I|we) (?:wants?|likes?|would like|"
+    r"'d like|needs?) (?:it|them) (?:kept )?(?:out of reach|out of the way|up high|"
+    r"somewhere safe|safe)"
+    r"(?P<end2>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _safe_where31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the reasons above taken off after a request that names one surface and an
+    object (they then say why there, never anything more), the trade (if said) one that could
+    only describe a person (_trade_words29)."""
+    m = _SAFE_WHERE31.search(text)
+    if m is None or (m["trade"] and not _trade_words29(m["trade"], lexicon)):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "surface")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    return rest + (m["end"] or m["end2"] or "").strip()
+
+
+# "What Bob really needs right now, after his shift at the chandler's, is the crisps.": a cleft
+# want with why, said between commas, naming what happened before (the want is now)
+_WHAT_NEEDS31 = re.compile(
+    r"^what (?P<p>[A-Za-z]+(?: [A-Za-z]+)??) (?:really |most )?(?P<v>needs|wants|would like)"
+    r"(?: (?:right now|now|most))?,\s*(?P<why>(?:after|since) (?:his|her|their|a|the) [^,]+?),\s*"
+    r"is (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _what_needs31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the cleft above is 'P needs X', when P is one person of the scene, X objects of
+    the scene only and what happened names nothing and holds no word that asks (_ASKS29) past its
+    first two words."""
+    m = _WHAT_NEEDS31.match(text.strip())
+    if m is None:
+        return text
+    why = m["why"].split(" ", 2)
+    # past its determiner a noun ('his shift' is no request to shift anything): no word that asks
+    if len(why) < 3 or _ASKS29.search(why[2]) or not _names_nothing(m["why"], lexicon):
+        return text
+    if not (_only_person(m["p"], lexicon) and _things31(m["x"], lexicon)):
+        return text
+    return f"{m['p']} {m['v']} {m['x']}{m['end']}"
+
+
+# "After the regatta Person A is dry as a bone and needs …": what happened before the state the
+# person is in now (a present 'is' right after the person): it says why, never when to act
+_AFTER_STATE31 = re.compile(
+    r"^(?:after|since) (?P<what>(?:the|his|her|their|a|an) [a-z][a-z' ]*?),?\s+"
+    r"(?=(?P<p>[A-Za-z]+(?: [A-Za-z]+)?)(?:'s| is) )",
+    _F,
+)
+
+
+_TO_COME31 = frozenset({"to", "going", "due", "about", "off", "away", "out", "back", "set", "yet"})
+
+
+def _after_state31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the opening above taken off when P is one person of the scene, what happened
+    names nothing and asks nothing (_asks_nothing29 past its determiner), and the state holds now
+    (one word, then 'and', a comma or 'so')."""
+    m = _AFTER_STATE31.match(text.strip())
+    if m is None:
+        return text
+    what = m["what"].split(" ", 1)[1]
+    if not (_asks_nothing29(what, lexicon) and _names_nothing(m["what"], lexicon)):
+        return text
+    words = m["p"].split()
+    if not any(_only_person(" ".join(words[:n]), lexicon) for n in (len(words), 1)):
+        return text
+    rest = text.strip()[m.end() :]
+    # the state is one that holds now ('is dry as a bone and …', 'is shattered, so …'): never one
+    # to come ('is going to need', 'is getting', 'is to get', 'is due'), which the time puts off
+    state = _rx(r"^[A-Za-z]+(?: [A-Za-z]+)?(?:'s| is) ([a-z]+)\b[^,;.]*?(?: and\b|,| so\b)").match(
+        rest
+    )
+    if state is None:
+        return text
+    word = state.group(1).lower()
+    if word.endswith("ing") or word in VERBS or word in _TO_COME31:
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+# "carol is thirsty so the water bottle to her": a state, then 'so' and what it calls for, said
+# without the comma the grammar needs between them
+_STATE_SO31 = re.compile(
+    r"^(?P<p>[A-Za-z]+(?: [A-Za-z]+)?) (?P<be>is|'s) (?P<how>(?:really |very |so |a bit |dead )?"
+    r"[a-z]+) so (?=[a-z])",
+    _F,
+)
+
+
+def _state_so31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the comma put in (above) when P is one person of the scene and the state one
+    word that names nothing and asks nothing."""
+    m = _STATE_SO31.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    how = m["how"].split()[-1]
+    if how.lower() in VERBS or not _asks_nothing29(how, lexicon):
+        return text
+    return f"{m['p']} {m['be']} {m['how']}, so {text.strip()[m.end() :]}"
+
+
+# an owned surface said with a pronoun ("… set down on her desk"): the one person named before
+_HER_SURFACE31 = re.compile(
+    r"\b(?P<on>on|onto|in|into|on top of) (?P<pron>her|his|their) (?P<s>[a-z]+(?: [a-z]+)?)\b", _F
+)
+
+
+def _her_surface31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'on her desk' is 'on the desk' when the desk is one surface of the scene and
+    one person is named before it, whom the pronoun may be (as _owned_surface29s with a name)."""
+    if not _rx(r"\b(?:her|his|their) ").search(text):
+        return text
+
+    def the(m: re.Match[str]) -> str:
+        words = m["s"].split()
+        for n in (len(words), 1):
+            s = " ".join(words[:n])
+            if _surface_only(s, lexicon):
+                people = _ids(text[: m.start()], lexicon, "human")
+                if len(people) != 1:
+                    return m[0]
+                pid = next(iter(people))
+                name = next(h.name for h in lexicon.scene.humans if h.id == pid)
+                if not _the_person(name, m["pron"], lexicon):
+                    return m[0]
+                rest = " ".join(words[n:])
+                return f"{m['on']} the {s}{' ' + rest if rest else ''}"
+        return m[0]
+
+    return _HER_SURFACE31.sub(the, text)
+
+
+# what a placement is for, said as one bare word ("… on the desk for geography"): after a surface
+_FOR_BARE31 = re.compile(
+    r"(?P<s>\b(?:on|onto|in|into|on top of) (?:the )?[a-z]+(?: [a-z]+)?) for (?P<w>[a-z]+)"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _for_bare31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the purpose above taken off when what comes before 'for' ends with one surface
+    of the scene and the word names nothing, asks nothing and is no verb of the grammar."""
+    m = _FOR_BARE31.search(text)
+    if m is None:
+        return text
+    tail = m["s"].split(" ", 1)[1]
+    w = m["w"]
+    if not _surface_only(tail, lexicon) or w.lower() in VERBS or not _asks_nothing29(w, lexicon):
+        return text
+    return text[: m.start()] + m["s"] + m["end"].strip()
+
+
+# "Serve Person A first, give her the bottle, …": who is served first, then what she is given
+_SERVE_FIRST31 = re.compile(
+    r"^(?:serve|see to|start with|begin with) (?P<p>[A-Za-z]+(?: [A-Za-z]+)?) first,\s*"
+    r"(?P<v>give|hand|pass|bring) (?P<pron>her|him|them) (?=(?:the|that|this|those|these) )",
+    _F,
+)
+
+
+def _serve_first31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'Serve P first, give her X' is 'First give P X', when P is one person of the
+    scene whom the pronoun may be."""
+    m = _SERVE_FIRST31.match(text.strip())
+    if m is None or not _the_person(m["p"], m["pron"], lexicon):
+        return text
+    return f"First {m['v'].lower()} {m['p']} {text.strip()[m.end() :]}"
+
+
+# "Cup first, over to Person B.": the object, its order, then where it goes, a sentence of its own
+_FIRST_OVER31 = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?) first,\s*"
+    r"(?P<dir>(?:over|across|up|down|round) )?(?P<to>to|on|onto|in|into) "
+    r"(?P<where>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?)(?P<end>\s*[.!;])",
+    _F,
+)
+
+
+def _first_over31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: 'X first, over to P.' is 'X to P first.', when X is one object of the scene
+    (said as its name alone) and P one person or surface."""
+    if "first" not in text.lower():
+        return text
+
+    def ordered(m: re.Match[str]) -> str:
+        x, where = m["x"], m["where"]
+        if not (_only(x, lexicon, "object") and _things31(x if " " in x else f"the {x}", lexicon)):
+            return m[0]
+        if not (_only_person(where, lexicon) or _surface_only(where, lexicon)):
+            return m[0]
+        return f"{x} {m['to']} {where} first{m['end']}"
+
+    return _FIRST_OVER31.sub(ordered, text)
+
+
+# who wants what was just asked, said after it by their trade ("Both items to Bob, the archer wants
+# them."): the one person the request names, described
+_TRADE_WANTS31 = re.compile(
+    r",\s*(?:the|our|my|your) (?P<trade>[a-z]+(?: [a-z]+)?) (?:wants|needs|has asked for|asked "
+    r"for|would like|is after) (?:it|them|those|that|both)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _trade_wants31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the closing part above taken off when the request before it names one person
+    and objects, and the trade words could only describe a person (_trade_words29)."""
+    m = _TRADE_WANTS31.search(text)
+    if m is None or not _trade_words29(m["trade"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    return rest + m["end"].strip()
+
+
+# a trade said with 'a' / 'an' between commas after a person's name ("Person A, a dyer, wants …")
+_A_TRADE31 = re.compile(
+    r"(?P<p>\b[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?),\s+(?:a|an) (?P<trade>[a-z]+(?: [a-z]+)?),\s+",
+    _F,
+)
+
+
+def trades31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the trade above taken off, as trades29 takes off 'the <trade>' (and with it,
+    before the instruction is first read: the rewrites read 'Person A wants a drink and will take
+    …' only with the trade gone), when the name is one person of the scene and the trade words
+    could only describe a person."""
+    if ", a" not in text.lower():
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        if _only_person(m["p"], lexicon) and _trade_words29(m["trade"], lexicon):
+            return f"{m['p']} "
+        return m[0]
+
+    return _A_TRADE31.sub(named, text)
+
+
+# where or when a person works, said after their trade ("Person A is the forester on the night
+# shift; …"): it describes the person, as the trade does
+_TRADE_ON31 = re.compile(
+    r"(?P<head>\b(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:is|'s) (?:the|our|a|an) "
+    r"(?P<trade>[a-z]+)) (?P<pp>(?:on|from|at|in|of) (?:the|a|an|our) [a-z]+(?: [a-z]+){0,2})"
+    r"(?=\s*[;,.])",
+    _F,
+)
+
+
+def _trade_on31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the description above taken off when P is one person of the scene, the trade
+    could only describe a person and the description names nothing and holds no word that asks
+    (_ASKS29) past its determiner."""
+    if " is " not in text.lower() and "'s " not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        pp = m["pp"].split(" ", 2)[-1]
+        if (
+            _only_person(m["p"], lexicon)
+            and _trade_words29(m["trade"], lexicon)
+            and _names_nothing(m["pp"], lexicon)
+            and not _ASKS29.search(pp)  # past its determiner a noun: 'the night shift'
+        ):
+            return m["head"]
+        return m[0]
+
+    return _TRADE_ON31.sub(said, text)
+
+
+# what a person's state is like, said with 'like a …' ("Mrs Khan is shivering like a diver out of
+# the sea"): a comparison, asking nothing
+_LIKE_A31 = re.compile(
+    r"(?P<head>\b(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:is|'s) [a-z]+(?: (?:a|an|the|her|"
+    r"his|their) [a-z]+)?) like (?P<what>(?:a|an|the) [a-z' ]+?)(?=\s*[;,.])",
+    _F,
+)
+
+
+def _like_a31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the comparison above taken off when P is one person of the scene, and the
+    comparison and what the person is doing name nothing and ask nothing."""
+    if " like " not in text.lower():
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        doing = m["head"][len(m["p"]) :]
+        what = m["what"].split(" ", 1)[1]
+        if (
+            _only_person(m["p"], lexicon)
+            and _names_nothing(doing, lexicon)
+            and _names_nothing(m["what"], lexicon)
+            and _asks_nothing29(what, lexicon)
+            and not any(w in VERBS for w in doing.lower().split()[1:2])
+        ):
+            return m["head"]
+        return m[0]
+
+    return _LIKE_A31.sub(plain, text)
+
+
+# one task said over two sentences: the person, then what they get ("Person B first. The bottle,
+# that is.", "Then over to Person A. Chips for her.")
+_PERSON_THEN_WHAT31 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<p>[A-Za-z]+(?: [A-Za-z]+)?) (?P<when>first|next|last)\.\s+"
+    r"(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?),? that is(?P<end>\s*[.!])",
+    _F,
+)
+_TO_THEN_WHAT31 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<then>(?:and )?then,? |next,? )?(?P<dir>(?:over|across|up|down|round) )?"
+    r"to (?P<p>[A-Za-z]+(?: [A-Za-z]+)?)\.\s+(?P<x>(?:the |that |this )?[A-Za-z][a-z]*(?: [a-z]+)?)"
+    r" for (?P<pron>her|him|them)(?P<end>\s*[.!])",
+    _F,
+)
+
+
+def _one_task_two_sentences31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the two sentences above are one task, 'The bottle to Person B first.', 'Then
+    chips to Person A.', when P is one person of the scene, X one object said by its name alone,
+    and the pronoun one P may be (the second sentence names no one, so 'her' is the person the
+    sentence before it names)."""
+    if "." not in text:
+        return text
+
+    def first(m: re.Match[str]) -> str:
+        x = m["x"] if " " in m["x"] else f"the {m['x']}"
+        if not (_only_person(m["p"], lexicon) and _only(x, lexicon, "object")):
+            return m[0]
+        if not _things31(x, lexicon):
+            return m[0]
+        return f"{m['x']} to {m['p']} {m['when']}{m['end']}"
+
+    def then(m: re.Match[str]) -> str:
+        x = m["x"] if " " in m["x"] else f"the {m['x']}"
+        if not (_the_person(m["p"], m["pron"], lexicon) and _only(x, lexicon, "object")):
+            return m[0]
+        if not _things31(x, lexicon):
+            return m[0]
+        return f"{m['then'] or ''}{m['x']} to {m['p']}{m['end']}"
+
+    return _TO_THEN_WHAT31.sub(then, _PERSON_THEN_WHAT31.sub(first, text))
+
+
+# who a person is, said between commas right after their name ("… give Alice, our bassoonist, the
+# chips", "hand Bob, a regular here, the crisps", "Omar, the new intern, …"): it only describes
+_APPOSITION31 = re.compile(
+    r"(?P<p>\b(?:(?:person|mr|mrs|ms|miss|dr|nurse|chef) )?[A-Za-z]+),\s+(?P<det>our|my|your|a|an|"
+    r"the) (?P<desc>[a-z]+(?: [a-z]+)??)(?: (?:here|round here|from next door))?,\s+(?=\S)",
+    _F,
+)
+
+
+def _apposition31(text: str, lexicon: Lexicon) -> str:
+    """Session 31: the description above taken off, the name kept (the text as said without it),
+    when the name is one person of the scene and the description's words name nothing, hold no
+    word of a scene name, no verb of the grammar and no word that asks (_ASKS29); after 'the' only
+    words that could only describe a person (_trade_words29: 'Give Alice, the red, …' is left).
+    Without it the comma kept after the name read 'give Alice, the chips' as two tasks, and gave
+    Alice the object before them too (12c's frames fuzz, on main 7931fa8)."""
+    if "," not in text:
+        return text
+    said = _scene_words29(lexicon)
+
+    def named(m: re.Match[str]) -> str:
+        desc = m["desc"]
+        words = desc.lower().split()
+        if not _only_person(m["p"], lexicon) or not _names_nothing(desc, lexicon):
+            return m[0]
+        if any(w in said or w in VERBS for w in words) or _ASKS29.search(desc):
+            return m[0]
+        if m["det"].lower() == "the" and not _trade_words29(desc, lexicon):
+            return m[0]
+        return f"{m['p']} "
+
+    return _APPOSITION31.sub(named, text)
+
+
+_STEPS31: tuple[Callable[[str, Lexicon], str], ...] = (
+    _as_we_say31,
+    _interjected31,
+    _trades31,
+    _idioms31,
+    _to_do31,
+    _cleft_wants31,
+    _told_me31,
+    _along_with31,
+    _will_take31,
+    _with_object31,
+    _with_going31,
+    _if_manage31,
+    _run_on_close31,
+    _it_her31,
+    _the_moment31,
+    _make_way31,
+    _off_the31,
+    _while31,
+    _up_on31,
+    _safe_where31,
+    _what_needs31,
+    _after_state31,
+    _state_so31,
+    _her_surface31,
+    _for_bare31,
+    _serve_first31,
+    _first_over31,
+    _trade_wants31,
+    _trade_on31,
+    _like_a31,
+    _one_task_two_sentences31,
+    _apposition31,
+)
 
 
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
@@ -10875,6 +11791,10 @@ _NOT_REASON28R = re.compile(
 _PRONOUN28R = re.compile(r"\b(?:he|she|him|her|they|them|his|their)\b", _F)
 
 
+# "it's Person A", "that was Bob": who it is, said after a correction's cue (_cue_reason28r)
+_IT_IS_WHO31 = re.compile(r"(?:it|that)(?:'s| is| was) ", _F)
+
+
 def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12r): a reason stated between a correction's cue and the corrected words
     ("Give the bottle to Bob, no wait, Bob's got one, to Alice") says why, and is taken off, so
@@ -10890,10 +11810,11 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
         return text
-    if re.search(r"\bfor\b", why, _F) and _ids(why, lexicon, "human"):
+    if (re.search(r"\bfor\b", why, _F) or _IT_IS_WHO31.match(why)) and _ids(why, lexicon, "human"):
         # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
         # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
-        # gloves to the person before)
+        # gloves to the person before); so is "…, whoops, it's Person A, no wait, the chips"
+        # (session 31, engineer 12: the wrappers fuzz on blind29 had read the chips to Person B)
         return text
     return text[: m.start("why")] + after
 
@@ -15386,7 +16307,29 @@ def _bare_adjective31r(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "Alice would be happy with the bottle or the crisps."
+_HAPPY_WITH31R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:would be|'d be|will be) (?:quite |perfectly |very )?"
+    r"(?:happy|fine|glad|content|pleased) (?:with|to get|to have) (?P<x>(?:either |both )?"
+    r"(?:the|a|an|one of the|any of the) [^,;:.!?]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _happy_with31r(text: str, lexicon: Lexicon) -> str:
+    """Session 31 (12r): 'P would be happy with X' / "P'd be fine with X" is 'P would like X' (P
+    one person, X the scene's objects: what P takes, the grammar reading a choice or a list in
+    it). 'P is happy with X' is left: it may say she has it already."""
+    m = _HAPPY_WITH31R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    if not _objects_only(m.group("x"), lexicon):
+        return text
+    return f"{m.group('p')} would like {m.group('x')}{text[m.start('end') :]}"
+
+
 _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _happy_with31r,
     _bare_adjective31r,
     _only_after_person31r,
     _other_not31r,
@@ -15658,6 +16601,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 31 (12): blind29's kinds
+    *_STEPS31,
     # session 30 (12): blind28's kinds
     _dyou30,
     _by_any_chance30,

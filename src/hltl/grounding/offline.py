@@ -31,6 +31,7 @@ from hltl.grounding.normalise import (
     people_named,
     rewritten19,
     trades29,
+    trades31,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
 from hltl.grounding.tree import (
@@ -319,7 +320,7 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        text = trades29(order_colons(apostrophes(text)), lexicon)
+        text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
@@ -338,6 +339,12 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         if more is not None and _names_any30s(text[: more.start()], lexicon):
             raise GroundingError(
                 f"{more.group('said')!r} after a request could add to it or replace what it "
+                "names: say 'too' or 'instead'"
+            )
+        cleft = _CLEFT_AFTER31.search(text)
+        if cleft is not None and _names_any30s(text[: cleft.start()], lexicon):
+            raise GroundingError(
+                f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
             )
         off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
@@ -437,6 +444,19 @@ _PUT_OFF30S = re.compile(
 _HOW_ABOUT30S = re.compile(
     r"(?<!\bor)(?:[,.;!?]\s*|\s+and\s+)(?P<said>(?:what|how) about\b[^.;!?]*)"
     r"(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
+# Session 31 (engineer 12): a want said as a cleft in a sentence after a request ("Give Bob the cup.
+# It's the apple that Alice is hoping for."): its focus sets the object against another, so it may
+# correct what was asked as well as add to it (12c's frames fuzz: read as a correction of 'it',
+# or folded into the request's order); read where 'too' / 'as well' / 'also' / 'instead' says which
+_CLEFT_AFTER31 = re.compile(
+    r"(?<=[.;!?])\s*(?P<said>it(?:'s| is| was) (?:the|that|this|those|these|a|an) [^.;!?]*?"
+    r"(?:hoping for|after|wanting|craving|wants|needs|would like|'d like|waiting for|asked for|"
+    r"asking for|longing for|fancies))(?<!\btoo)(?<!\bas well)(?<!\balso)(?<!\binstead)"
+    r"(?=\s*(?:[.;!?]|$))",
     re.I,
 )
 
