@@ -17,7 +17,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
-from tests.grounding.helpers import CELL, assert_reads, assert_refused, tree
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import CELL, ROOT, assert_reads, assert_refused, tree
 
 
 @pytest.mark.parametrize(
@@ -124,3 +125,29 @@ def test_a_giving_verb_does_not_take_an_object_put_on_a_surface(text: str) -> No
     # (the frames fuzz, heldout 'two') 'give Alice' names no object, and the one before is put
     # on the shelf: what Alice gets is unsaid, as for a name alone ("…. Then Lily.")
     assert_refused(text, CELL, match="names no object")
+
+
+def test_a_trailing_remark_does_not_replace_an_it_whose_object_was_named_before() -> None:
+    # (12c's frames fuzz, blind16 f41) the request alone is refused (the apple handed twice),
+    # but its 'it' is the apple named before it: the remark's bottle had been handed instead
+    f41 = load_scene(ROOT / "examples/scenes/4-1.yaml")
+    got = tree(
+        "Person B asked for the apple, so hand it over, and the cup to Person A. It's the "
+        "bottle that Person B is hoping for.",
+        f41,
+    )
+    assert got is None or "bottle>A" not in show_tree(got)
+
+
+def test_a_negated_commands_object_is_the_it_of_the_request_after_it() -> None:
+    # (12c's frames fuzz, causes13 kitchen) the trailing remark names the knife; the request's
+    # 'it' is still the lemon of the negated command: read with it, or refused, never the knife
+    # alone
+    kitchen = load_scene(ROOT / "tests/grounding/paraphrase/scenes/kitchen.yaml")
+    got = tree(
+        "Don't put the lemon on the rack, give it to Marco. It's the knife that Marco is hoping "
+        "for.",
+        kitchen,
+    )
+    assert got is None or "lemon" in show_tree(got)
+    assert_reads("Don't put the lemon on the rack, give it to Marco.", "lemon>A", kitchen)

@@ -783,7 +783,7 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
-    if thing and len(things) == 1:
+    if thing and len(things) == 1 and not _object_before_pronoun31l(remark, body, lexicon):
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
@@ -794,6 +794,19 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if wanting and not _agrees(wanting, body, lexicon):
         return text  # "Bob would like the bottle …": a want the request gives someone else
     return body
+
+
+def _object_before_pronoun31l(remark: list[bool], body: str, lexicon: Lexicon) -> bool:
+    """Whether remarks said after every request follow a request that names an object before
+    its first 'it' / 'them': the pronoun has its antecedent there, and a remark said later does
+    not stand in for it (session 31, lead: "Person B asked for the apple, so hand it over, and
+    the cup to Person A. It's the bottle that Person B is hoping for." had handed the bottle)."""
+    m = re.search(r"\b(?:it|them)\b", body, _F)
+    return (
+        m is not None
+        and _trailing_remarks31l(remark)
+        and any(n.refs[0].kind == "object" for n in _names(body[: m.start()], lexicon))
+    )
 
 
 def _trailing_remarks31l(remark: list[bool]) -> bool:
@@ -2443,6 +2456,8 @@ def _negated(text: str, lexicon: Lexicon) -> str:
         own = [it for it in _names(rest, lexicon) if it.refs[0].kind == "object"]
         if len(objects) == 1 and not own and re.search(r"\b(?:it|them)\b", rest, _F):
             rest = _sub(r"\b(?:it|them)\b", f"the {objects[0].text}", rest)
+        elif len(objects) == 1 and own:
+            rest = _first_sentence_it31l(rest, objects[0].text, lexicon)
         return _unless_asked(said, rest, rest, lexicon) or text
     # "Give Bob the chips. Don't give him the apple." / "…, but don't hand her the bib"
     m = re.match(
@@ -2469,6 +2484,21 @@ def _negated(text: str, lexicon: Lexicon) -> str:
             return text
         return m.group(2)
     return text
+
+
+def _first_sentence_it31l(rest: str, words: str, lexicon: Lexicon) -> str:
+    """'it' / 'them' in the first sentence of ``rest`` (after a negated command naming
+    ``words``), when that sentence names no object of its own: the negated command's object,
+    whatever later sentences name (session 31, lead: "Don't put the lemon on the rack, give it
+    to Marco. It's the knife that Marco is hoping for." had handed the knife alone)."""
+    m = re.match(r"[^.;!?]*", rest)
+    first = m.group(0) if m is not None else ""
+    later = rest[len(first) :]
+    if any(it.refs[0].kind == "object" for it in _names(first, lexicon)):
+        return rest
+    if not re.search(r"\b(?:it|them)\b", first, _F):
+        return rest
+    return _sub(r"\b(?:it|them)\b", f"the {words}", first) + later
 
 
 def _unless_asked(said: str, request: str, result: str, lexicon: Lexicon) -> str | None:
