@@ -39,7 +39,7 @@ DEPOT = load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml")
 WORKSHOP = load_scene(ROOT / "tests/grounding/paraphrase/scenes/workshop.yaml")
 
 
-def _case(text: str, want: str | None, scene: Scene) -> None:
+def _assert_case(text: str, want: str | None, scene: Scene) -> None:
     if want is None:
         assert_refused(text, scene)
     else:
@@ -77,7 +77,7 @@ def _case(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_one_of_a_list_is_a_choice(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -96,7 +96,7 @@ def test_one_of_a_list_is_a_choice(text: str, want: str | None, scene: Scene) ->
     ],
 )
 def test_one_of_these_then_the_list(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 # -- choices said by an idiom -------------------------------------------------------------------
@@ -115,7 +115,7 @@ def test_one_of_these_then_the_list(text: str, want: str | None, scene: Scene) -
     ],
 )
 def test_either_will_do_for(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 def test_either_will_do_for_a_shared_role_names_the_readings() -> None:
@@ -148,7 +148,7 @@ def test_either_will_do_for_a_shared_role_names_the_readings() -> None:
     ],
 )
 def test_split_whichever_way_round(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -160,7 +160,7 @@ def test_split_whichever_way_round(text: str, want: str | None, scene: Scene) ->
     ],
 )
 def test_either_fine_by_me(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -182,7 +182,7 @@ def test_either_fine_by_me(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_whichever_said_first(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -195,7 +195,7 @@ def test_whichever_said_first(text: str, want: str | None, scene: Scene) -> None
     ],
 )
 def test_whichever_there_with_one_such_object(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -212,7 +212,7 @@ def test_whichever_there_with_one_such_object(text: str, want: str | None, scene
     ],
 )
 def test_each_of_their_own(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -231,7 +231,7 @@ def test_each_of_their_own(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_may_play_with(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 # -- counts said again --------------------------------------------------------------------------
@@ -247,7 +247,7 @@ def test_may_play_with(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_n_things_namely(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -259,7 +259,7 @@ def test_n_things_namely(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_only_one_item_and_its(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -278,7 +278,7 @@ def test_only_one_item_and_its(text: str, want: str | None, scene: Scene) -> Non
     ],
 )
 def test_one_said_by_a_word(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -295,7 +295,7 @@ def test_one_said_by_a_word(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_gather_up_every_one_of_them(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 # -- exclusions ---------------------------------------------------------------------------------
@@ -311,7 +311,7 @@ def test_gather_up_every_one_of_them(text: str, want: str | None, scene: Scene) 
     ],
 )
 def test_cant_stand_the_excluded(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -330,7 +330,7 @@ def test_cant_stand_the_excluded(text: str, want: str | None, scene: Scene) -> N
     ],
 )
 def test_dont_give_it_to_another(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -347,7 +347,7 @@ def test_dont_give_it_to_another(text: str, want: str | None, scene: Scene) -> N
     ],
 )
 def test_the_one_that_isnt(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -363,7 +363,7 @@ def test_the_one_that_isnt(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_left_out_said_first(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -377,7 +377,7 @@ def test_left_out_said_first(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_leave_the_x_then_a_request(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 # -- corrections --------------------------------------------------------------------------------
@@ -419,7 +419,7 @@ def test_leave_the_x_then_a_request(text: str, want: str | None, scene: Scene) -
     ],
 )
 def test_the_speakers_slip(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -436,7 +436,7 @@ def test_the_speakers_slip(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_yes_i_did_mean_her(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -465,7 +465,7 @@ def test_yes_i_did_mean_her(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_a_better_place(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 # -- two wrong readings of the grammar ----------------------------------------------------------
@@ -492,7 +492,7 @@ def test_a_better_place(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_all_but_after_a_comma(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -515,7 +515,7 @@ def test_all_but_after_a_comma(text: str, want: str | None, scene: Scene) -> Non
     ],
 )
 def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -537,7 +537,7 @@ def test_leave_without_a_place(text: str, want: str | None, scene: Scene) -> Non
     ],
 )
 def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -597,7 +597,7 @@ def test_corrections_said_other_ways(text: str, want: str | None, scene: Scene) 
     ],
 )
 def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -641,7 +641,7 @@ def test_exclusions_said_other_ways(text: str, want: str | None, scene: Scene) -
     ],
 )
 def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -664,7 +664,7 @@ def test_counts_said_other_ways(text: str, want: str | None, scene: Scene) -> No
     ],
 )
 def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -688,7 +688,7 @@ def test_the_choosers_words(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -704,7 +704,7 @@ def test_cue_words(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_only_and_other(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -719,7 +719,7 @@ def test_only_and_other(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_a_correction_by_its_colour(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)
 
 
 @pytest.mark.parametrize(
@@ -735,4 +735,4 @@ def test_a_correction_by_its_colour(text: str, want: str | None, scene: Scene) -
     ],
 )
 def test_happy_with(text: str, want: str | None, scene: Scene) -> None:
-    _case(text, want, scene)
+    _assert_case(text, want, scene)

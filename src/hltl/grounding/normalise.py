@@ -769,11 +769,14 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
     body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
-    if _trailing_remarks31l(remark) and _reading(body, lexicon, normalise=False) is not None:
-        # session 31 (lead): "Give Bob the cup and, once Bob has it, give Alice the bottle. It's
-        # the apple that Alice is hoping for.": the request's 'it' is the cup, said before it; a
-        # remark said after every request does not stand in for pronouns the request resolves
-        # (it had made 'once Bob has the apple'); the remark must still be in the request
+    # session 31 (lead): "Give Bob the cup and, once Bob has it, give Alice the bottle. It's the
+    # apple that Alice is hoping for.": the request's 'it' is the cup, said before it; remarks said
+    # after every request do not stand in for pronouns the request resolves (it had made 'once
+    # Bob has the apple'), nor for an 'it' whose object it names before it; the remarks must still
+    # be in the request
+    last = max((k for k, r in enumerate(remark) if not r), default=-1)
+    trailing = all(k > last for k, r in enumerate(remark) if r)
+    if trailing and _reading(body, lexicon, normalise=False) is not None:
         person, thing = set(), set()
     if len(person) > 1:
         _pronoun_among(said, body, person, lexicon)
@@ -783,7 +786,7 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
-    if thing and len(things) == 1 and not _object_before_pronoun31l(remark, body, lexicon):
+    if thing and len(things) == 1 and not (trailing and _object_before_pronoun31l(body, lexicon)):
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
@@ -796,23 +799,15 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     return body
 
 
-def _object_before_pronoun31l(remark: list[bool], body: str, lexicon: Lexicon) -> bool:
-    """Whether remarks said after every request follow a request that names an object before
-    its first 'it' / 'them': the pronoun has its antecedent there, and a remark said later does
-    not stand in for it (session 31, lead: "Person B asked for the apple, so hand it over, and
-    the cup to Person A. It's the bottle that Person B is hoping for." had handed the bottle)."""
+def _object_before_pronoun31l(body: str, lexicon: Lexicon) -> bool:
+    """Whether ``body`` names an object before its first 'it' / 'them': the pronoun's antecedent,
+    which a remark said later does not replace (``_remarks``; session 31, lead: "Person B asked
+    for the apple, so hand it over, and the cup to Person A. It's the bottle that Person B is
+    hoping for." had handed the bottle)."""
     m = re.search(r"\b(?:it|them)\b", body, _F)
-    return (
-        m is not None
-        and _trailing_remarks31l(remark)
-        and any(n.refs[0].kind == "object" for n in _names(body[: m.start()], lexicon))
+    return m is not None and any(
+        n.refs[0].kind == "object" for n in _names(body[: m.start()], lexicon)
     )
-
-
-def _trailing_remarks31l(remark: list[bool]) -> bool:
-    """Whether every remark comes after every request (``_remarks``)."""
-    last = max((k for k, r in enumerate(remark) if not r), default=-1)
-    return all(k > last for k, r in enumerate(remark) if r)
 
 
 def _pronoun_among(said: list[str], body: str, person: set[str], lexicon: Lexicon) -> None:
