@@ -387,10 +387,13 @@ FRAME_FORMS = ("frame", "told", "not wanted", "frame tail", "apposition")
 # (or refused); an object left undecided between two ("the cup or, er, the chips, I forget
 # which"): refused; and, for an entry of one task, another object added before its own with "and"
 # ("the cup and, er, the chips"): that task of both objects, or refused. {x} is what is said
-# first, {o} the entry's own words.
+# first, {o} the entry's own words. A bare filler (FILLERS) is a repair only outside a list: in "the
+# cup, er, the chips and the apple" or "Carol, er, Bob or Alice" it may be a list said haltingly
+# (a careful person would read three), so there only a word of repair is said (``_in_list``); and
+# nothing is said after a negation ("not Jess, uh, no, Kofi" may undo the "not"; ``_NEGATED``).
+FILLERS = ("{x}, er, {o}", "{x}, um, {o}")
 REPAIRS = (
-    "{x}, er, {o}",
-    "{x}, um, {o}",
+    *FILLERS,
     "{x}, sorry, {o}",
     "{x}, I mean {o}",
     "{x}, er, I mean {o}",
@@ -405,6 +408,9 @@ UNDECIDED_REPAIRS = (  # refused: which object is left open
 ADDED_REPAIRS = ("{x} and, er, {o}", "{x}, oh, and {o}", "{x} and, um, {o}")
 STUTTERS = ("{x}, er, {o}", "{x}, um, {o}", "{x}... {o}")
 REPAIR_FORMS = ("object", "undecided", "added", "person", "stutter")
+_LIST_BEFORE = re.compile(r"(?i)(?:,|\band|\bor|&)\s*$")
+_LIST_AFTER = re.compile(r"(?i)^\s*(?:,\s*(?:the\b|[A-Z])|and\b|or\b|&|plus\b|nor\b)")
+_NEGATED = re.compile(r"(?i)\b(?:not|no|except|but|than|nor|without|bar|from)\s+$")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -1085,9 +1091,19 @@ def frames(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         yield Variant(part, entry.scene, said, want, must, "frames", entry.readings, "apposition")
 
 
+def _in_list(text: str, at: re.Match[str]) -> bool:
+    """Whether the words ``at`` matched may be an item of a list ("the cup, the chips and …")."""
+    return bool(_LIST_BEFORE.search(text[: at.start()]) or _LIST_AFTER.match(text[at.end() :]))
+
+
+def _repair(text: str, at: re.Match[str], rng: random.Random) -> str:
+    """A form of REPAIRS for the words ``at`` matched: no bare filler in a list."""
+    return rng.choice([f for f in REPAIRS if not (f in FILLERS and _in_list(text, at))])
+
+
 def _said_once(text: str, scene: Scene, oid: str) -> re.Match[str] | None:
     """The one place ``text`` says the object ``oid``, as "the <name>" (any case; not before a
-    possessive), where nothing else in it names the object; else None."""
+    possessive nor after a negation), where nothing else in it names the object; else None."""
     items = lex(text, Lexicon.of(scene))
     if sum(1 for it in items if it.kind == "ent" and any(r.id == oid for r in it.refs)) != 1:
         return None
@@ -1100,7 +1116,9 @@ def _said_once(text: str, scene: Scene, oid: str) -> re.Match[str] | None:
                 f.start() <= m.start() < f.end() for f in found
             ):
                 found.append(m)
-    return found[0] if len(found) == 1 else None
+    if len(found) != 1 or _NEGATED.search(text[: found[0].start()]):
+        return None
+    return found[0]
 
 
 def _inserted(text: str, at: re.Match[str], form: str, x: str) -> str:
@@ -1131,7 +1149,7 @@ def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     "and" (ADDED_REPAIRS: that task of both). For an entry saying a person by a name and no
     pronoun: that name said after another person's the entry does not name and a repair (REPAIRS:
     the entry, or refused with its readings), and a name of two words begun and said again
-    (STUTTERS: the same)."""
+    (STUTTERS: the same). No bare filler in a list, nothing after a negation (see FILLERS)."""
     text = entry.text.strip()
     want = entry.want
     pronoun = bool(_words(text) & (_PRONOUNS | {"it", "its"}))
@@ -1149,19 +1167,20 @@ def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
         if free and spots:
             at, xid = rng.choice(spots), rng.choice(free)
             x = "the " + _name(scene, xid)
-            yield variant(_inserted(text, at, rng.choice(REPAIRS), x), want, "object")
+            yield variant(_inserted(text, at, _repair(text, at, rng), x), want, "object")
             yield variant(_inserted(text, at, rng.choice(UNDECIDED_REPAIRS), x), None, "undecided")
             if isinstance(want, Task) and not pronoun:
                 both = Group("and", (Task(want.kind, xid, want.target), want))
                 yield variant(_inserted(text, at, rng.choice(ADDED_REPAIRS), x), both, "added")
     if pronoun:
         return
-    said_at = _people_said(text, scene)
-    met = _named(text, scene, "human")
+    people = _people_said(text, scene)
+    said_at = [m for m in people if not _NEGATED.search(text[: m.start()])]
+    met = _named(text, scene, "human").union(*(_named(m[0], scene, "human") for m in people))
     others = [q for h in scene.humans if h.id not in met and (q := _proper_name(scene, h.id))]
     if said_at and others:
         at, q = rng.choice(said_at), rng.choice(others)
-        yield variant(_inserted(text, at, rng.choice(REPAIRS), q), want, "person")
+        yield variant(_inserted(text, at, _repair(text, at, rng), q), want, "person")
     long = [m for m in said_at if " " in m[0]]
     if long:
         at = rng.choice(long)

@@ -1110,6 +1110,47 @@ def test_a_repair_is_only_made_where_it_says_what_it_must(
             assert (v.want is None) is (v.form == "undecided" or want is None)
 
 
+@pytest.mark.parametrize(
+    ("text", "want", "filler"),
+    [
+        ("Give Bob the apple.", "apple>B", True),
+        # in a list: a filler may be a list said haltingly, so only a word of repair
+        ("Give Bob the apple and the cup.", "apple>B & cup>B", False),
+        ("Give Bob the cup, the apple.", "cup>B & apple>B", False),
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", False),
+        ("Give Bob the apple, the cup too.", "apple>B & cup>B", False),
+    ],
+)
+def test_a_bare_filler_is_said_only_outside_a_list(text: str, want: str, filler: bool) -> None:
+    """(The object's; Bob, said alone, may be repaired with a filler in each.)"""
+    entry = _entry("cell", text, want)
+    fillers = set()
+    for seed in range(60):
+        for v in _repairs(entry, CELL, seed):
+            if v.form == "object":
+                fillers.add(bool(re.search(r", (?:er|um), (?!I mean)", v.text)))
+    assert fillers == ({True, False} if filler else {False})
+
+
+def test_nothing_is_repaired_after_a_negation_nor_to_a_person_the_entry_names() -> None:
+    entry = _entry("cell", "Give Bob the cup, not Alice, and not the apple.", "cup>B")
+    for seed in range(30):
+        for v in _repairs(entry, CELL, seed):
+            assert "not Alice," in v.text and "not the apple." in v.text
+            if v.form == "person":
+                assert re.search(r"Give Carol, .*Bob the cup", v.text), v.text
+    # an object after a negation: not repaired
+    entry = _entry("cell", "Give Bob nothing but the cup.", "cup>B")
+    assert {v.form for seed in range(30) for v in _repairs(entry, CELL, seed)} == {"person"}
+    # a name the lexer misses in the whole sentence ("Person B is after"): still named
+    text = "For the ghillie's picnic, Person A needs the apple while Person B is after the cup."
+    entry = _entry("cell", text, "apple>A & cup>B")
+    for seed in range(30):
+        for v in _repairs(entry, CELL, seed):
+            if v.form == "person":
+                assert "Carol, " in v.text and not {"Alice", "Bob"} & set(v.text.split())
+
+
 def test_a_repair_keeps_the_sentence_case_and_a_remark_is_closed_by_a_comma() -> None:
     entry = _entry("cell", "The apple goes to Bob.", "apple>B")
     texts = {v.form: v.text for seed in range(20) for v in _repairs(entry, CELL, seed)}
