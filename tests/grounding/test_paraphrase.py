@@ -296,7 +296,6 @@ KNOWN_MISSES = frozenset(
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
         "cup to person a first please and once shes got it the apple goes to person b",
-        "Lenq needs the salt for table four.",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
