@@ -488,7 +488,6 @@ KNOWN_MISSES = frozenset(
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
-        'All four items: cup and apple to Person A, bottle and chips to Person B.',
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
