@@ -518,10 +518,6 @@ KNOWN_MISSES = frozenset(
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         'Wash-up time: both cups into the sink, green and white alike.',
-        'Mr Lee said the blue blanket itches, so give him the other one.',
-        'Crisps to Alice, sorry, I mean Bob, Alice is off crisps.',
-        "Cup for Person B, no, sorry, the apple, the cup's got a crack.",
-        "Chips to Person A, hang on, make it Person B, A's gone on break.",
         'The white plate on the rack, no, the counter, we need it for service.',
         'can you put the red mug on the counter for me please my hands are all plaster',
         'start off with crisps for alice and after that bob needs his bottle',
@@ -551,13 +547,10 @@ KNOWN_MISSES = frozenset(
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
-        "her.",
         "The two smaller boxes can join the big one on the pallet.",
         "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
-        "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '

@@ -269,8 +269,8 @@ def test_both_want_either(text: str, want: str | None, scene: Scene) -> None:
         ),
         # the request names another object
         (
-            "Whichever you can reach first, the cup or the apple, hand it to Person A and the"
-            " bottle to Person B.",
+            "Whichever you can reach first, the cup or the apple, hand it to Person A and"
+            " the bottle to Person B.",
             None,
             F41,
         ),
@@ -280,7 +280,7 @@ def test_reach_first(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
-# -- "…; she doesn't want the Y", "…, Q shouldn't get it" ----------------------------------------
+# -- "…; she doesn't want the Y", "…, Q shouldn't get it" ---------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -495,18 +495,92 @@ def test_no_such_place(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
-# -- "X to Q, no, to P, Q's got one" ------------------------------------------------------------
+# -- a reason about what a correction took away: "Sam's got one", 'the cup's got a crack' -------
 
 
 @pytest.mark.parametrize(
     ("text", "want", "scene"),
     [
         ("Stapler to Priya, no, to Sam, Priya's got one.", "stapler>B", OFFICE),
-        # someone the scene does not have
+        ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B", TWO),
+        ("Chips to Person A, hang on, make it Person B, A's gone on break.", "chips>B", L24),
+        ("Cup for Person B, no, sorry, the apple, the cup's got a crack.", "apple>B", F42),
+        # someone or something the correction did not take away
         ("Stapler to Priya, no, to Sam, Kofi's got one.", None, OFFICE),
+        ("Cup for Person A, no, sorry, the bottle, the apple's got a crack.", None, F42),
+        ("Cup for Person A, no, sorry, the bottle, the bottle's got a crack.", None, F42),
+        ("Crisps to Alice, sorry, I mean Bob, the bottle is broken.", None, TWO),
+        # no correction before it
+        ("Cup for Person B, the cup's got a crack.", None, F42),
     ],
 )
-def test_got_one(text: str, want: str | None, scene: Scene) -> None:
+def test_corrected_reason(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- "X to Q, no, sorry, there's only P here, to her then" --------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
+            "bottle>A",
+            T12,
+        ),
+        ("Bottle for Person C, sorry, there's only Person A here, for her then.", "bottle>A", T12),
+        # two people; the person said is not the one here
+        ("Bottle to Person C, no, sorry, there's only Person A here, to her then.", None, T21),
+        ("Bottle to Person B, no, sorry, there's only Person B here, to her then.", None, T12),
+    ],
+)
+def test_only_one_here(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- "There's only the X, and P's the only one here, so that's simple: …" -----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "There's only the bottle, and Person A's the only one here, so that's easy: hand"
+            " her it.",
+            "bottle>A",
+            T12,
+        ),
+        # two objects: not the only one
+        (
+            "There's only the bottle, and Person A's the only one here, so that's simple:"
+            " give it to her.",
+            None,
+            T21,
+        ),
+    ],
+)
+def test_only_these(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'P said the blue blanket itches, so give him the other one' --------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Mrs Khan says the grey blanket is too thin, so bring her the other one.",
+            "blanket_blue>C",
+            WARD,
+        ),
+        # three pens: which other?; one jug: no other
+        ("Sam said the black pen is broken, so give him the other one.", None, OFFICE),
+        ("Mr Lee said the jug is too heavy, so give him the other one.", None, WARD),
+    ],
+)
+def test_other_one(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 

@@ -16587,6 +16587,12 @@ _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
 # the object named elsewhere in the text) does not hold; docs/grounding.md, "Session 32 (engineer
 # 12r)".
 
+
+def _one_object32r(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (an article aside) are one whole name of exactly one object."""
+    return _whole_name(words, lexicon, "object") and len(_ids(words, lexicon)) == 1
+
+
 _COUNT_WORDS32R = r"two|three|four|five|six|2|3|4|5|6"
 
 # "all four of the things on the table", "The pair of items on the table both", "the two things"
@@ -16859,7 +16865,7 @@ def _both_want_either32r(text: str, lexicon: Lexicon) -> str:
         q, lexicon
     ):
         return text
-    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+    if not _one_object32r(x, lexicon):
         return text
     return f"Give {x} to {p} or {q}{text[m.start('end') :]}"
 
@@ -16943,7 +16949,7 @@ def _stays_put32r(text: str, lexicon: Lexicon) -> str:
     if m is None:
         return text
     head, x = text[: m.start()], m.group("x")
-    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+    if not _one_object32r(x, lexicon):
         return text
     if _request_ids32r(head, lexicon) is None or _ids(x, lexicon) & _ids(head, lexicon):
         return text
@@ -16956,7 +16962,7 @@ def _only_nothing_else32r(text: str, lexicon: Lexicon) -> str:
 
     def only(m: re.Match[str]) -> str:
         x = m.group("x")
-        if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+        if not _one_object32r(x, lexicon):
             return m[0]
         return f"{x[:1].upper()}{x[1:]} "
 
@@ -16985,7 +16991,7 @@ def _no_need_first32r(text: str, lexicon: Lexicon) -> str:
     if m is None:
         return text
     x = m.group("x")
-    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+    if not _one_object32r(x, lexicon):
         return text
     rest = _sub(r"\bit\b", x, m.group("rest"))
     hand = re.search(r"\b(?:right |straight )?into (?P<p>[A-Za-z][\w ]*?)'s hands?$", rest, _F)
@@ -17171,31 +17177,10 @@ def _no_such_place32r(text: str, lexicon: Lexicon) -> str:
     if m is None or _names(m.group("s"), lexicon):
         return text
     x = m.group("x")
-    if not _whole_name(x, lexicon, "object") or len(_ids(x, lexicon)) != 1:
+    if not _one_object32r(x, lexicon):
         return text
     rest = _sub(r"\bit\b", x, m.group("rest"))
     return f"{rest[:1].upper()}{rest[1:]}{m.group('end') or '.'}"
-
-
-def _got_one32r(text: str, lexicon: Lexicon) -> str:
-    """Session 32 (12r): after a correction of the person ('X to Q, no, to P'), ", Q's got one"
-    / ", Q's got his own" closing the text gives the reason: taken off when Q is the person
-    corrected away (one person, not P)."""
-    m = re.search(
-        r"^(?P<head>.*?\bto (?P<q>[A-Za-z][\w ]*?),\s*(?:no|sorry|oops),?\s*(?:to |I mean )"
-        r"(?P<p>[A-Za-z][\w ]*?)),\s*(?P<who>[A-Za-z][\w ]*?)(?:'s| has) (?:got |already got )?"
-        r"(?:one|(?:his|her|their) own|one already|it already)(?: already)?(?P<end>\s*[.!]?)$",
-        text,
-        _F,
-    )
-    if m is None:
-        return text
-    q, p, who = m.group("q"), m.group("p"), m.group("who")
-    if not (_only_person(q, lexicon) and _only_person(p, lexicon) and _only_person(who, lexicon)):
-        return text
-    if _ids(who, lexicon) != _ids(q, lexicon) or _ids(q, lexicon) == _ids(p, lexicon):
-        return text
-    return f"{m.group('head')}{m.group('end') or '.'}"
 
 
 # "The two cups both want washing, so into the sink with the pair of them."
@@ -17277,6 +17262,131 @@ def _counted_header32r(text: str, lexicon: Lexicon) -> str:
     return f"{rest[:1].upper()}{rest[1:]}" if ok else text
 
 
+# what a person corrected away has or is, closing the text: "Sam's got one", "Alice is off
+# crisps", "A's gone on break"; and what is wrong with an object corrected away: "the cup's got
+# a crack"
+_WHY_NOT_PERSON32R = (
+    r"(?:'s| has) (?:got |already got |already had |had )?(?:one|(?:his|her|their) own|his|hers|"
+    r"theirs|one already|it already)(?: already)?|(?:'s| is) off (?:the )?[a-z]+|(?:'s| has) gone "
+    r"(?:on (?:a )?break|home|out|off shift)|(?:'s| is) (?:on (?:a )?break|not here|off shift|busy)"
+)
+_WHY_NOT_OBJECT32R = (
+    r"(?:'s| has) got a (?:crack|chip|hole|stain)(?: in it)?|(?:'s| is) (?:cracked|chipped|"
+    r"broken|dirty|filthy|empty|wet|leaking|sticky)"
+)
+_CORRECTED_REASON32R = re.compile(
+    r"^(?P<head>.+?,\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b.+?),\s*(?P<who>(?:the )?"
+    rf"[A-Za-z][\w ]*?)(?P<why>{_WHY_NOT_PERSON32R}|{_WHY_NOT_OBJECT32R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_reason32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): after a correction ('X to Q, no, to P', '…, sorry, I mean P', 'X for P,
+    no, sorry, the Y'), a closing reason about what was corrected away, from a closed list ("Q's
+    got one / his own", 'Q is off crisps', "Q's gone on break", "the X's got a crack", 'the X is
+    broken'), is taken off: its subject must be one person or object of the scene named before
+    the cue and not after it (the one corrected away); anything else is left, refused."""
+    m = _CORRECTED_REASON32R.match(text)
+    if m is None:
+        return text
+    head, who = m.group("head"), m.group("who")
+    kind = "human" if re.match(_WHY_NOT_PERSON32R, m.group("why"), _F) else "object"
+    if not _whole_name(who, lexicon, kind) or len(_ids(who, lexicon)) != 1:
+        return text
+    cue = list(re.finditer(r",\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b", head, _F))
+    before, after = head[: cue[0].start()], head[cue[-1].end() :]
+    said = _ids(who, lexicon)
+    if not said <= _ids(before, lexicon) or said & _ids(after, lexicon):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "Bottle to Person B, no, sorry, there's only Person A here, to her then."
+_ONLY_ONE_HERE32R = re.compile(
+    r"^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\w ]*?),\s*(?:(?:no|sorry|oops|wait),\s*)+"
+    r"there(?:'s| is) only (?P<p>[A-Za-z][\w ]*?) here,\s*(?:so )?(?:to|for) (?:her|him|them)"
+    r"(?: then| instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one_here32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "X to Q, no, sorry, there's only P here, to her then" is 'X to P' when
+    P is the scene's one person and Q no other person of it (the slip the reason explains; 'Person
+    B' may be read as a typo of P); else left, refused."""
+    m = _ONLY_ONE_HERE32R.match(text)
+    if m is None or len(lexicon.scene.humans) != 1:
+        return text
+    p = m.group("p")
+    if not _only_person(p, lexicon) or _ids(m.group("q"), lexicon) - _ids(p, lexicon):
+        return text
+    if not _fits(next(iter(_ids(p, lexicon))), m[0][m.end("p") :], lexicon):
+        return text
+    return f"{m.group('head')} {m.group('prep')} {p}{m.group('end') or '.'}"
+
+
+# "There's only the bottle, and Person A's the only one here, so that's simple: give it to her."
+_ONLY_THESE32R = re.compile(
+    r"^there(?:'s| is) only (?P<x>the [a-z ]+?),? and (?P<p>[A-Za-z][\w ]*?)(?:'s| is) the only "
+    r"(?:one|person) here,\s*so (?:that's|it's) (?:simple|easy|straightforward)\s*[:,;]\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _only_these32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "There's only the X, and P's the only one here, so that's simple: give
+    it to her" is 'give the X to P': the scene has one object (X) and one person (P), as said, and
+    the request's 'it' / 'her' are they (else left, refused)."""
+    m = _ONLY_THESE32R.match(text)
+    if m is None or len(lexicon.scene.objects) != 1 or len(lexicon.scene.humans) != 1:
+        return text
+    x, p, rest = m.group("x"), m.group("p"), m.group("rest")
+    if not _whole_name(x, lexicon, "object") or not _only_person(p, lexicon):
+        return text
+    if _names(rest, lexicon) or not _fits(next(iter(_ids(p, lexicon))), rest, lexicon):
+        return text
+    rest = _sub(r"\bit\b", x, rest)
+    rest = _sub(r"\b(?:her|him|them)\b", p, rest)
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+# "Mr Lee said the blue blanket itches, so give him the other one."
+_OTHER_ONE32R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:said|says|thinks|reckons|told me)(?: that)? (?P<x>the [a-z ]+?) "
+    r"(?:itches|is itchy|scratches|is scratchy|is too (?:small|big|heavy|cold|warm|thin)|is "
+    r"(?:dirty|broken|cracked|wet)|doesn't fit)\s*,\s*so (?P<v>give|hand|bring|pass|take) "
+    r"(?P<pro>him|her|them) the other one(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _other_one32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'P said the blue blanket itches, so give him the other one' is 'give P
+    the grey blanket': the complaint (from a closed list) rules out the X named, 'the other one'
+    is the scene's other object of that kind when it has exactly two (said by a name of it alone),
+    and the pronoun is P (one person it fits); with three of the kind, refused as before."""
+    m = _OTHER_ONE32R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    ids = _ids(x, lexicon, "object")
+    if len(ids) != 1 or not _whole_name(x, lexicon, "object"):
+        return text
+    kinds = _kinds(ids, lexicon)
+    same = [o for o in lexicon.scene.objects if o.category in kinds]
+    if len(same) != 2 or not _fits(
+        next(iter(_ids(m.group("p"), lexicon))), m.group("pro"), lexicon
+    ):
+        return text
+    (other,) = [o for o in same if o.id not in ids]
+    name = next((a for a in other.aliases if _ids(a, lexicon) == {other.id}), "")
+    if not name:
+        return text
+    return f"{m.group('v').capitalize()} {m.group('p')} the {name}{m.group('end') or '.'}"
+
+
 _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _apposed_list32r,
     _apposed_adjectives32r,
@@ -17302,7 +17412,10 @@ _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _isnt_adjective32r,
     _er_person32r,
     _no_such_place32r,
-    _got_one32r,
+    _corrected_reason32r,
+    _only_one_here32r,
+    _only_these32r,
+    _other_one32r,
     _into_with_them32r,
     _for_table32r,
     _counted_header32r,
