@@ -17,6 +17,7 @@ from tests.grounding.helpers import (
     OFFICE,
     ROOT,
     WARD,
+    WORKSHOP,
     assert_reads,
     assert_refused,
 )
@@ -101,6 +102,11 @@ def test_apposed_list(text: str, want: str | None, scene: Scene) -> None:
             "box_small@pallet & box_medium@pallet & box_large@pallet",
             DEPOT,
         ),
+        (
+            "Both spanners, large and small, go in the locker.",
+            "spanner_small@locker & spanner_large@locker",
+            WORKSHOP,
+        ),
         # a count the adjectives do not meet; an adjective that names no box
         ("The two boxes, small, medium and large, go on the pallet.", None, DEPOT),
         ("The three boxes, small, tiny and large, go on the pallet.", None, DEPOT),
@@ -147,6 +153,11 @@ def test_taken_home(text: str, want: str | None, scene: Scene) -> None:
             FIG1,
         ),
         (
+            "One book each for Noah and Zoe out of the red one and the green one.",
+            "(book_red>B & book_green>C) | (book_red>C & book_green>B)",
+            CLASSROOM,
+        ),
+        (
             "One blanket apiece for the two patients.",
             "(blanket_blue>B & blanket_grey>C) | (blanket_blue>C & blanket_grey>B)",
             WARD,
@@ -154,6 +165,7 @@ def test_taken_home(text: str, want: str | None, scene: Scene) -> None:
         # a count the scene does not meet; one person twice; a role three do not share
         ("Person A and Person B get a single item apiece out of the three, you pick.", None, SQ),
         ("One each for Bob and Bob out of the bottle and the crisps.", None, FIG1),
+        ("One book each for Noah and Zoe out of the red one and the globe.", None, CLASSROOM),
         ("One blanket apiece for the three patients.", None, WARD),
     ],
 )
@@ -292,6 +304,8 @@ def test_reach_first(text: str, want: str | None, scene: Scene) -> None:
         ("Give Person B the bottle; she doesn't want the bottle.", None, F41),
         ("The chips are for Person B, Person B shouldn't get them.", None, L24),
         ("Hand Person A and Person B the bottle; she doesn't want the cup.", None, F41),
+        # not yet: more than a name after it
+        ("Give Person A the chips; she doesn't want the apple yet.", None, F42),
     ],
 )
 def test_not_wanted(text: str, want: str | None, scene: Scene) -> None:
@@ -505,11 +519,13 @@ def test_no_such_place(text: str, want: str | None, scene: Scene) -> None:
         ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B", TWO),
         ("Chips to Person A, hang on, make it Person B, A's gone on break.", "chips>B", L24),
         ("Cup for Person B, no, sorry, the apple, the cup's got a crack.", "apple>B", F42),
+        ("Sponge to the tray, no, the sink, the tray's wet.", "sponge@sink", LAB),
         # someone or something the correction did not take away
         ("Stapler to Priya, no, to Sam, Kofi's got one.", None, OFFICE),
         ("Cup for Person A, no, sorry, the bottle, the apple's got a crack.", None, F42),
         ("Cup for Person A, no, sorry, the bottle, the bottle's got a crack.", None, F42),
         ("Crisps to Alice, sorry, I mean Bob, the bottle is broken.", None, TWO),
+        ("Sponge to the tray, no, the sink, the sponge's wet.", None, LAB),
         # no correction before it
         ("Cup for Person B, the cup's got a crack.", None, F42),
     ],

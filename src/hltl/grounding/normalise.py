@@ -16611,6 +16611,11 @@ def _all_things32r(text: str, lexicon: Lexicon) -> str:
     more) and the place said with it ('on the table', in passing: where they lie) is no surface
     of the scene; a place the scene has, or a count it does not meet, leaves the text (refused)."""
 
+    if re.search(
+        r"\b(?:except|but|apart from|other than|bar|save|minus|excluding|not)\b", text, _F
+    ):
+        return text  # 'all four … except the cup' says two counts: left, refused
+
     def every(m: re.Match[str]) -> str:
         word = (m.group("all") or "two").lower()
         count = int(word) if word.isdigit() else _COUNTS[word]
@@ -16662,7 +16667,7 @@ def _apposed_list32r(text: str, lexicon: Lexicon) -> str:
 
 # "The three boxes, small, medium and large, all go …"
 _APPOSED_ADJECTIVES32R = re.compile(
-    rf"\b(?:the (?P<n>{_COUNT_WORDS32R})|both(?: of)? the) (?P<noun>[a-z]+)s,\s*"
+    rf"\b(?:the (?P<n>{_COUNT_WORDS32R})|both(?: of the| the)?) (?P<noun>[a-z]+)s,\s*"
     r"(?P<adj>[a-z]+(?:,\s*[a-z]+)*,? and [a-z]+)\s*,(?: (?:all|both)(?= [a-z]))?",
     _F,
 )
@@ -16721,7 +16726,8 @@ _APIECE_OUT_OF32R = re.compile(
 )
 # "One each for Alice and Bob out of the crisps and the bottle"
 _ONE_EACH_FOR32R = re.compile(
-    r"^one (?:each|apiece) (?:for|to) (?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) "
+    r"^one(?: (?P<kind>[a-z]+))? (?:each|apiece) (?:for|to) (?P<p>[A-Za-z][\w ]*?) and "
+    r"(?P<q>[A-Za-z][\w ]*?) "
     r"(?:out of|from) (?P<x>the [a-z ]+? and the [a-z ]+?)(?P<end>\s*(?:[,;.!]|$))",
     _F,
 )
@@ -16736,10 +16742,10 @@ _ONE_APIECE_FOR32R = re.compile(
 def _apiece32r(text: str, lexicon: Lexicon) -> str:
     """Session 32 (12r): the share-outs said with 'apiece' / 'each' and 'out of': 'P and Q get a
     single item apiece out of the two (on the table)' is 'P and Q get one each' when the count
-    is the scene's objects and the place none of its surfaces; 'One each for P and Q out of X
-    and Y' is 'Give P and Q one of X and Y each' (_split29r's reading: two objects, two
-    people); 'One X apiece for the two Rs' is 'One X for each of the two Rs' (_each_of_n29r
-    checks the role's count)."""
+    is the scene's objects and the place none of its surfaces; 'One (book) each for P and Q out
+    of X and Y' is 'Give P and Q one of X and Y each' (_split29r's reading: two objects, two
+    people; 'the red one' there the red book, and both books); 'One X apiece for the two Rs' is
+    'One X for each of the two Rs' (_each_of_n29r checks the role's count)."""
 
     def one_each(m: re.Match[str]) -> str:
         n = m.group("n").lower()
@@ -16754,12 +16760,16 @@ def _apiece32r(text: str, lexicon: Lexicon) -> str:
     out = _sub(_APIECE_OUT_OF32R.pattern, one_each, text)
     m = _ONE_EACH_FOR32R.match(out)
     if m is not None:
-        split = f"Split {m.group('x')} between {m.group('p')} and {m.group('q')}, one each"
+        x, kind = m.group("x"), m.group("kind")
+        if kind is not None:
+            if not _only_kind(kind, lexicon, "object"):
+                return out
+            x = _sub(r"\b(the [a-z]+) one\b", rf"\1 {kind}", x)  # 'the red one': the red book
+            if not _ids(x, lexicon, "object") <= _ids(kind, lexicon, "object"):
+                return out
+        split = f"Split {x} between {m.group('p')} and {m.group('q')}, one each"
         if _split29r(split, lexicon) != split:
-            return (
-                f"Give {m.group('p')} and {m.group('q')} one of {m.group('x')} each"
-                + out[m.start("end") :]
-            )
+            return f"Give {m.group('p')} and {m.group('q')} one of {x} each{out[m.start('end') :]}"
     m = _ONE_APIECE_FOR32R.match(out)
     if m is not None:
         said = f"{m.group('one')} {m.group('x')} for each of the {m.group('n')} {m.group('role')}s"
@@ -16915,7 +16925,8 @@ def _not_wanted32r(text: str, lexicon: Lexicon) -> str:
     if m is not None:
         head = text[: m.start()]
         said = _request_ids32r(head, lexicon)
-        x_ids = _ids(m.group("x"), lexicon, "object")
+        whole = _whole_name(m.group("x"), lexicon, "object")
+        x_ids = _ids(m.group("x"), lexicon, "object") if whole else set()
         who = m.group("who")
         if said is not None and len(said[1]) == 1 and x_ids and not x_ids & said[0]:
             pid = next(iter(said[1]))
@@ -17274,31 +17285,42 @@ _WHY_NOT_OBJECT32R = (
     r"(?:'s| has) got a (?:crack|chip|hole|stain)(?: in it)?|(?:'s| is) (?:cracked|chipped|"
     r"broken|dirty|filthy|empty|wet|leaking|sticky)"
 )
+_WHY_NOT_SURFACE32R = r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+_WHY_NOT32R = {
+    "human": _WHY_NOT_PERSON32R,
+    "object": _WHY_NOT_OBJECT32R,
+    "surface": _WHY_NOT_SURFACE32R,
+}
 _CORRECTED_REASON32R = re.compile(
     r"^(?P<head>.+?,\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b.+?),\s*(?P<who>(?:the )?"
-    rf"[A-Za-z][\w ]*?)(?P<why>{_WHY_NOT_PERSON32R}|{_WHY_NOT_OBJECT32R})(?P<end>\s*[.!]?)$",
+    rf"[A-Za-z][\w ]*?)(?P<why>{'|'.join(_WHY_NOT32R.values())})(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _corrected_reason32r(text: str, lexicon: Lexicon) -> str:
     """Session 32 (12r): after a correction ('X to Q, no, to P', '…, sorry, I mean P', 'X for P,
-    no, sorry, the Y'), a closing reason about what was corrected away, from a closed list ("Q's
-    got one / his own", 'Q is off crisps', "Q's gone on break", "the X's got a crack", 'the X is
-    broken'), is taken off: its subject must be one person or object of the scene named before
-    the cue and not after it (the one corrected away); anything else is left, refused."""
+    no, sorry, the Y'), a closing reason about what was corrected away, from a closed list for
+    each kind ("Q's got one / his own", 'Q is off crisps', "Q's gone on break"; "the X's got a
+    crack", 'the X is broken'; "the tray's wet"), is taken off: its subject must be one person,
+    object or surface of the scene named before the cue and not after it, and the correction
+    must name another of its kind (the one corrected away); anything else is left, refused."""
     m = _CORRECTED_REASON32R.match(text)
     if m is None:
         return text
     head, who = m.group("head"), m.group("who")
-    kind = "human" if re.match(_WHY_NOT_PERSON32R, m.group("why"), _F) else "object"
-    if not _whole_name(who, lexicon, kind) or len(_ids(who, lexicon)) != 1:
+    kind = next((k for k in _WHY_NOT32R if _whole_name(who, lexicon, k)), "")
+    if not kind or len(_ids(who, lexicon)) != 1:
+        return text
+    if not re.fullmatch(_WHY_NOT32R[kind], m.group("why"), _F):
         return text
     cue = list(re.finditer(r",\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b", head, _F))
     before, after = head[: cue[0].start()], head[cue[-1].end() :]
     said = _ids(who, lexicon)
     if not said <= _ids(before, lexicon) or said & _ids(after, lexicon):
         return text
+    if not _ids(after, lexicon, kind):
+        return text  # the correction put nothing of its kind in its place: not corrected away
     return f"{head}{m.group('end') or '.'}"
 
 
