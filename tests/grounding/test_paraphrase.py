@@ -524,9 +524,6 @@ KNOWN_MISSES = frozenset(
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
-        "The bottle to either of them, whoever's nearer.",
-        "Give them a thing each, the bottle and the chips, don't care who gets which.",
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
@@ -534,7 +531,6 @@ KNOWN_MISSES = frozenset(
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Sam gets the pens, all except the blue one, that stays where it is.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
@@ -555,7 +551,6 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        'Both of the cups, the green and the white, want rinsing, so into the sink with the pair.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",

@@ -639,6 +639,101 @@ def test_for_table(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- '…, all except the blue one, that stays where it is' ---------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Priya gets the pens, all except the red one, that stays where it is.",
+            "pen_black>A & pen_blue>A",
+            OFFICE,
+        ),
+        (
+            "Priya gets the pens, all except the red one, that stays put.",
+            "pen_black>A & pen_blue>A",
+            OFFICE,
+        ),
+        # no green pen; no exclusion before it
+        ("Priya gets the pens, all except the green one, that stays where it is.", None, OFFICE),
+        ("Priya gets the red pen, that stays where it is.", None, OFFICE),
+    ],
+)
+def test_except_stays(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'Both of the cups, the green and the white, …, into the sink with the pair' ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Both of the cups, the green and the white, need rinsing, so into the sink with"
+            " the pair.",
+            "cup_green@sink & cup_white@sink",
+            LAB,
+        ),
+        # no red cup
+        (
+            "Both of the cups, the green and the red, need rinsing, so into the sink with"
+            " the pair.",
+            None,
+            LAB,
+        ),
+    ],
+)
+def test_apposed_adjectives_with_the(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'Give them a thing each, X and Y', 'X to either of them': the scene's two people -----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Give them a thing each, the bottle and the chips, don't care who gets which.",
+            "(bottle>A & chips>B) | (bottle>B & chips>A)",
+            DUO,
+        ),
+        ("The crisps to either of them, whoever's nearer.", "chips>A | chips>B", FIG1),
+        # a person named after it; three people
+        ("Give them a thing each, the bottle and the chips, Person A first.", None, DUO),
+        ("Give them a thing each, the spoon and the bowl.", None, LAB),
+        ("The apple to either of them, whoever's nearer.", None, CELL),
+    ],
+)
+def test_either_of_them(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'one of the mugs for her, red or blue, …': the choice said again ---------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Carol's having a coffee, so one of the mugs for her, red or blue, not bothered.",
+            "mug_red>C | mug_blue>C",
+            CELL,
+        ),
+        # no green mug
+        (
+            "Carol's having a coffee, so one of the mugs for her, red or green, not bothered.",
+            None,
+            CELL,
+        ),
+    ],
+)
+def test_choice_adjectives(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 # -- 'Two students, two books: …the red one…' ---------------------------------------------------
 
 

@@ -16668,7 +16668,8 @@ def _apposed_list32r(text: str, lexicon: Lexicon) -> str:
 # "The three boxes, small, medium and large, all go …"
 _APPOSED_ADJECTIVES32R = re.compile(
     rf"\b(?:the (?P<n>{_COUNT_WORDS32R})|both(?: of the| the)?) (?P<noun>[a-z]+)s,\s*"
-    r"(?P<adj>[a-z]+(?:,\s*[a-z]+)*,? and [a-z]+)\s*,(?: (?:all|both)(?= [a-z]))?",
+    r"(?P<adj>(?:the )?[a-z]+(?:,\s*(?:the )?[a-z]+)*,? and (?:the )?[a-z]+)\s*,"
+    r"(?: (?:all|both)(?= [a-z]))?",
     _F,
 )
 
@@ -16680,11 +16681,12 @@ def _apposed_adjectives32r(text: str, lexicon: Lexicon) -> str:
     the spanners, large and small,' two)."""
 
     def said(m: re.Match[str]) -> str:
-        adjectives = [a for a in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group("adj")) if a]
+        adj = _sub(r"\bthe ", "", m.group("adj"))  # 'the green and the white'
+        adjectives = [a for a in re.split(r",\s*(?:and\s+)?|\s+and\s+", adj) if a]
         n = (m.group("n") or "two").lower()
         if len(adjectives) != (int(n) if n.isdigit() else _COUNTS[n]):
             return m[0]
-        out = f"the {m.group('adj')} {m.group('noun')}s"
+        out = f"the {adj} {m.group('noun')}s"
         rewritten = _adjectives_and31r(out, lexicon)
         return rewritten if rewritten != out else m[0]
 
@@ -16783,7 +16785,8 @@ _YOU_PICK32R = re.compile(
     r",\s*(?:you pick|you choose|your (?:pick|choice|call)|(?:i'll|i will) let you (?:choose|"
     r"pick|decide)(?: which (?:goes|one goes) where| who gets (?:which|what))?|(?:i'm|i am) not "
     r"(?:fussed|bothered|fussy) (?:who (?:ends up with|gets) (?:what|which))|(?:i )?don't mind "
-    r"(?:how|which way(?: round)?|who gets (?:what|which)))(?P<end>\s*[.!]?)$",
+    r"(?:how|which way(?: round)?|who gets (?:what|which))|(?:i )?don't care (?:how|which way"
+    r"(?: round)?|who gets (?:what|which)))(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -17198,7 +17201,7 @@ def _no_such_place32r(text: str, lexicon: Lexicon) -> str:
 _INTO_WITH_THEM32R = re.compile(
     r"^(?P<x>the [a-z ]+?) (?:both |all )?(?:want|need|could do with) (?:a )?[a-z]+ing\s*,\s*"
     r"(?:so )?(?P<prep>into|in|onto|on) (?P<s>the [a-z ]+?) with (?:them|the pair of them|both of "
-    r"them|the lot|the two of them)(?P<end>\s*[.!]?)$",
+    r"them|the lot|the two of them|the pair|the two)(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -17409,14 +17412,84 @@ def _other_one32r(text: str, lexicon: Lexicon) -> str:
     return f"{m.group('v').capitalize()} {m.group('p')} the {name}{m.group('end') or '.'}"
 
 
+# "…, all except the blue one, that stays where it is."
+_EXCEPT_STAYS32R = re.compile(
+    r"(?P<head>\b(?:except|apart from|other than|bar|but not) (?:for )?the [a-z ]+?)\s*,\s*"
+    r"(?:that|it|which)(?: one)? (?:stays|can stay|is staying|is to stay) (?:put|where it is|here|"
+    r"there)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _except_stays32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): '…, all except the blue one, that stays where it is' is '…, all except
+    the blue one': the clause after the exclusion says of what it left out (one object, 'the
+    blue one' after 'the pens' too) that it stays, which the exclusion already says."""
+    m = _EXCEPT_STAYS32R.search(text)
+    if m is None:
+        return text
+    excluded = m.group("head").split(" the ", 1)[1]
+    said = _one(f"the {excluded}", text[: m.start()], lexicon)
+    if not _one_object32r(said, lexicon):
+        return text
+    return f"{text[: m.end('head')]}{m.group('end') or '.'}"
+
+
+def _either_of_them32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Give them a thing each, X and Y' and 'X to either of them' in a text
+    that names no person are the scene's people when it has two: 'Give P and Q one of X and Y
+    each' (_split29r's reading, two objects) and 'X to P or Q'. With more people, or a person
+    named, 'them' is not the scene's pair and the text is left, refused."""
+    humans = lexicon.scene.humans
+    if len(humans) != 2 or _ids(text, lexicon, "human"):
+        return text
+    p, q = (h.name for h in humans)
+    m = re.match(
+        r"^(?:please )?give them (?:a thing|one thing|an item|one item|one|something) (?:each|"
+        r"apiece),\s*(?P<x>the [a-z ]+? and the [a-z ]+?)(?P<end>\s*(?:[,;.!]|$))",
+        text,
+        _F,
+    )
+    if m is not None:
+        split = f"Split {m.group('x')} between {p} and {q}, one each"
+        if _split29r(split, lexicon) == split:
+            return text
+        return f"Give {p} and {q} one of {m.group('x')} each{text[m.start('end') :]}"
+    return _sub(r"\b(?P<v>to|for) either of them\b", rf"\g<v> {p} or {q}", text)
+
+
+def _choice_adjectives32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'one of the mugs for him, red or blue, …' is 'one of the mugs for him,
+    …': the adjectives say the choice again when each with the kind names one of its objects and
+    together they name all of them (else left: 'red or green' with no green mug is refused)."""
+
+    def again(m: re.Match[str]) -> str:
+        kind = m.group("kind")
+        adjectives = re.split(r",\s*(?:or\s+)?|\s+or\s+", m.group("adj"))
+        names = [f"{a} {kind}" for a in adjectives]
+        if not all(_one_object32r(n, lexicon) for n in names):
+            return m[0]
+        if set().union(*(_ids(n, lexicon) for n in names)) != _ids(kind, lexicon, "object"):
+            return m[0]
+        return m.group("head")
+
+    return _sub(
+        r"(?P<head>\b(?:one|either|any) of the (?P<kind>[a-z]+)s\b[^,;:.!?]*?),\s*(?:the )?"
+        r"(?P<adj>[a-z]+(?:,\s*(?:the )?[a-z]+)*,? or (?:the )?[a-z]+)(?=\s*(?:[,;.!]|$))",
+        again,
+        text,
+    )
+
+
 _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _apposed_list32r,
     _apposed_adjectives32r,
     _all_things32r,
     _taken_home32r,
     _apiece32r,
-    _you_pick32r,
     _each_of_them32r,
+    _either_of_them32r,
+    _you_pick32r,
     _choice_tail32r,
     _both_want_either32r,
     _reach_first32r,
@@ -17441,6 +17514,8 @@ _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _into_with_them32r,
     _for_table32r,
     _counted_header32r,
+    _except_stays32r,
+    _choice_adjectives32r,
 )
 
 
