@@ -553,7 +553,6 @@ KNOWN_MISSES = frozenset(
         'says.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
-        "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
         'Aluce is back from the dive, hand her the bottle.',
         'The forester left the bottle out; put it on the shrlf.',
         'Omsr needs the spoon to stir his samples.',

@@ -546,9 +546,25 @@ def test_corrected_reason(text: str, want: str | None, scene: Scene) -> None:
             T12,
         ),
         ("Bottle for Person C, sorry, there's only Person A here, for her then.", "bottle>A", T12),
+        (
+            "Bottle to Person C. Sorry, wrong room, it's only Person A here, so she gets it.",
+            "bottle>A",
+            T12,
+        ),
         # two people; the person said is not the one here
         ("Bottle to Person C, no, sorry, there's only Person A here, to her then.", None, T21),
         ("Bottle to Person B, no, sorry, there's only Person B here, to her then.", None, T12),
+        # who gets it is not the one here
+        (
+            "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person B gets it.",
+            None,
+            T12,
+        ),
+        (
+            "Bottle to Person C. Oops, wrong bay, it's just Person A here, so Person A gets it.",
+            None,
+            T21,
+        ),
     ],
 )
 def test_only_one_here(text: str, want: str | None, scene: Scene) -> None:

@@ -17336,14 +17336,30 @@ _ONLY_ONE_HERE32R = re.compile(
 )
 
 
+# "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it." ('wrong
+# bay' is 'no' once _cue_words31r has run)
+_ONLY_ONE_HERE_SO32R = re.compile(
+    r"^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\w ]*?)\.\s*(?:oops|sorry|whoops),?\s*"
+    r"(?:(?:wrong (?:bay|room|person|one|ward)|no),?\s*)?it(?:'s| is) (?:just|only) "
+    r"(?P<p>[A-Za-z][\w ]*?) here,?\s*so (?P<p2>[A-Za-z][\w ]*?|she|he|they) "
+    r"(?:gets|has|should get|can have) it"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
 def _only_one_here32r(text: str, lexicon: Lexicon) -> str:
-    """Session 32 (12r): "X to Q, no, sorry, there's only P here, to her then" is 'X to P' when
-    P is the scene's one person and Q no other person of it (the slip the reason explains; 'Person
-    B' may be read as a typo of P); else left, refused."""
-    m = _ONLY_ONE_HERE32R.match(text)
+    """Session 32 (12r): "X to Q, no, sorry, there's only P here, to her then" and "X to Q.
+    Oops, wrong bay, it's just P here, so P gets it." are 'X to P' when P is the scene's one
+    person and Q no other person of it (the slip the reason explains; 'Person B' may be read as a
+    typo of P), and who 'gets it' is P; else left, refused."""
+    m = _ONLY_ONE_HERE32R.match(text) or _ONLY_ONE_HERE_SO32R.match(text)
     if m is None or len(lexicon.scene.humans) != 1:
         return text
     p = m.group("p")
+    p2 = m.groupdict().get("p2")
+    if p2 is not None and not re.fullmatch(r"she|he|they", p2, _F) and p2.lower() != p.lower():
+        return text
     if not _only_person(p, lexicon) or _ids(m.group("q"), lexicon) - _ids(p, lexicon):
         return text
     if not _fits(next(iter(_ids(p, lexicon))), m[0][m.end("p") :], lexicon):
