@@ -570,7 +570,6 @@ KNOWN_MISSES = frozenset(
         "Sam can have any one of the pens, the millwright's lent us them.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
-        'Both of the blocks are to go in the high chair so Lily can bash them about.',
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
         'Bob has been eyeing the criaps since lunch, so let him have them.',
         "The bottle is Person B's, and Persoh A can have the chips, thanks.",

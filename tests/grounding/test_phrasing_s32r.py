@@ -750,6 +750,28 @@ def test_choice_adjectives(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- a placement, then 'so P can bash them about' -----------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "The two blocks go in the high chair so Lily can bash them about.",
+            "block_red@highchair & block_green@highchair",
+            NURSERY,
+        ),
+        ("The teddy goes on the play mat so Ava can cuddle it.", "teddy@mat", NURSERY),
+        # a purpose that hands it over; a handover; no such person
+        ("The teddy goes on the play mat so Ava can have it.", None, NURSERY),
+        ("Give Ava the teddy so Lily can cuddle it.", None, NURSERY),
+        ("The teddy goes on the play mat so Bob can cuddle it.", None, NURSERY),
+    ],
+)
+def test_so_can(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 # -- 'Two students, two books: …the red one…' ---------------------------------------------------
 
 

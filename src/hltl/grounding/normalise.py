@@ -17497,6 +17497,35 @@ def _choice_adjectives32r(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# "Both of the blocks are to go in the high chair so Lily can bash them about."
+_SO_CAN32R = re.compile(
+    r"^(?P<head>[^,;:.!?]+?)\s*,?\s*so (?:that )?(?P<p>[A-Za-z][\w ]*?) can (?P<v>[a-z]+)"
+    r"(?: (?:with|at|on))? (?:them|it)(?: (?:about|around|later|there|in peace))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+_HANDED_VERBS32R = frozenset({"keep", "use", "grab", "hold", "reach", "see", "find", "borrow"})
+
+
+def _so_can32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): a placement then 'so P can bash them about' (what P will do with the
+    things placed) is the placement: taken off when the request names a surface and no person, P
+    is one person of the scene and the verb is none of the grammar's (a purpose that hands
+    something over, 'so Lily can have them', is left)."""
+    m = _SO_CAN32R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    head = m.group("head")
+    if not _ids(head, lexicon, "surface") or not _ids(head, lexicon, "object"):
+        return text
+    verb = m.group("v").lower()
+    if _ids(head, lexicon, "human") or verb in VERBS or verb in _HANDED_VERBS32R:
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
 _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _apposed_list32r,
     _apposed_adjectives32r,
@@ -17532,6 +17561,7 @@ _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_header32r,
     _except_stays32r,
     _choice_adjectives32r,
+    _so_can32r,
 )
 
 
