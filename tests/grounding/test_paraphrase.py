@@ -543,9 +543,6 @@ KNOWN_MISSES = frozenset(
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "person b needs the apple and the cup over his way, hes framing prints",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
-        "Could I trouble you to run the chips down to Person A at the far end?",
-        "Can you manage chips to Person B and the bottle across to Person A while I finish "
-        "hemming this sail?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
@@ -564,12 +561,7 @@ KNOWN_MISSES = frozenset(
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
-        'Aluce is back from the dive, hand her the bottle.',
-        'The forester left the bottle out; put it on the shrlf.',
-        'Omsr needs the spoon to stir his samples.',
-        "Ruth has asked for the thermomrter, the ward's too warm.",
         'Tom needs the glovrs, the pallets are splintery.',
-        'Zoe wants the scissord to cut out her rock diagrams.',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",
@@ -582,10 +574,6 @@ KNOWN_MISSES = frozenset(
         "Two things going out: Person A has the chips and the bottle is Person B's.",
         'Both of the blocks are to go in the high chair so Lily can bash them about.',
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
-        'Bob has been eyeing the criaps since lunch, so let him have them.',
-        "The bottle is Person B's, and Persoh A can have the chips, thanks.",
-        "Peerson A is the acupuncturist and she'd like her bottle now.",
-        'Somebody left the spobge on the side; drop it in the sink, please.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         "Bob isn't fussy: one of the mugs, doesn't matter which, as long as it's clean.",
         "One each for Alice and Bob out of the crisps and the bottle, I'm not fussed who ends up "

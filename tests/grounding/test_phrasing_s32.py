@@ -91,6 +91,24 @@ READS = [
     # (v) a slip of the word 'person' of a label, even of its first letter
     ("Give Oerson B the chips.", "chips>B", TWO),
     ("Persog A wants the bottle.", "bottle>A", TWO),
+    # (x) what the wanted object is for, with what it is done to
+    ("Carol needs the cup to stir her tea.", "cup>C", CELL),
+    # (y) a reason said as a state of no scene name, closing it
+    ("Carol has asked for the cup, the room's too warm.", "cup>C", CELL),
+    # (z) how long a want said in the perfect has lasted
+    ("Bob has been eyeing the crisps since lunch, so let him have them.", "chips>B", CELL),
+    # (aa) where a person is back from
+    ("Alice is back from the dive, hand her the cup.", "cup>A", CELL),
+    # (bb) who left it where, then the request for 'it'
+    ("Somebody left the apple out; put it on the shelf.", "apple@shelf", CELL),
+    ("The farrier left the apple out; give it to Bob.", "apple>B", CELL),
+    # (cc) who the person is, then what they want
+    ("Carol is the farrier and she'd like the apple.", "apple>C", CELL),
+    # (dd) where the person is; 'run X down to'; 'can you manage X to'
+    ("Could you run the apple down to Bob at the far end?", "apple>B", CELL),
+    ("Can you manage the apple to Bob?", "apple>B", CELL),
+    # (m) possession beside who gets the other thing
+    ("The apple is Bob's, and Carol can have the cup.", "apple>B & cup>C", CELL),
     # (w) courtesies of other languages
     ("bob could do with the crisps, zikomo", "chips>B", CELL),
     ("Carol is having the cup, mesi anpil.", "cup>C", CELL),
@@ -160,6 +178,22 @@ REFUSED = [
     # (u) next to an object not on that surface; not a surface's object at all
     ("Put the white plate on the counter next to the blue one.", KITCHEN),
     ("Put the white plate on the rack next to the lemon.", KITCHEN),
+    # (x) a verb of the grammar, or a scene name, after 'to'
+    ("Carol needs the cup to give Bob.", CELL),
+    ("Carol needs the cup to stir the apple.", CELL),
+    # (y) the state of a surface of the scene
+    ("Carol has asked for the cup, the shelf is too high.", CELL),
+    # (aa) back from a surface of the scene
+    ("Alice is back from the shelf, hand her the cup.", CELL),
+    # (bb) a person of the scene left it (it may go back to them)
+    ("Bob left the apple out; put it on the shelf.", CELL),
+    # (cc) a pronoun that cannot be the person
+    ("Mr Lee is the porter and she'd like the jug.", WARD),
+    # (dd) at a surface of the scene; a person carried
+    ("Could you run the apple down to Bob at the table?", CELL),
+    ("Can you manage Bob to Carol?", CELL),
+    # (m) a person after 'can have'
+    ("The apple is Bob's, and Carol can have him.", CELL),
     # (w) 'I forget' is still the speaker's doubt
     ("I forget who wants the chips, give them to Person B.", TWO),
 ]

@@ -9908,8 +9908,9 @@ _OWNED_PART32 = re.compile(
     rf"^(?P<x>{_DET32} [a-z][a-z ]*?) (?:is|are|'s|'re) (?P<p>{_PERSON32})'s$", _F
 )
 _GOES_PART32 = re.compile(
-    rf"^(?:and )?{_DET32} [a-z][a-z ]*? (?:goes|go) (?:to|in|into|on|onto|over to) "
-    r"(?:the )?[a-z][a-z ]*$",
+    rf"^(?:and )?(?:{_DET32} [a-z][a-z ]*? (?:goes|go) (?:to|in|into|on|onto|over to) "
+    rf"(?:the )?[a-z][a-z ]*|{_PERSON32} (?:can have|gets|is having|'s having|will have|"
+    rf"should have|takes) {_DET32} [a-z][a-z ]*)$",
     _F,
 )
 _TELEGRAM32 = re.compile(
@@ -9957,7 +9958,8 @@ def _possession32(text: str, lexicon: Lexicon) -> str:
 
 def _owned_listed32(text: str, lexicon: Lexicon) -> str:
     """Session 32: in one sentence of comma parts, 'X is P's' beside a part saying where another
-    thing goes ('the torch goes in the locker') is 'X is for P'."""
+    thing goes ('the torch goes in the locker') or who gets it ('Person A can have the chips')
+    is 'X is for P'."""
     parts = re.split(r"(\s*[,;]\s*)", text.strip().rstrip("."))
     if len(parts) < 3 or re.search(r"[.!?]", text.strip()[:-1]):
         return text
@@ -10038,6 +10040,8 @@ def _hand_over32(text: str, _lexicon: Lexicon) -> str:
     return _HAND_OVER32.sub(lambda m: f", {m['v']} {m['o']} over.", text)
 
 
+# verbs of placing the grammar reads through earlier rewrites, not in VERBS ('drop it in the sink')
+_PLACING32 = frozenset({"drop", "pop", "stick", "set", "stand", "sit"})
 # "The sponge is dripping, pop it in the sink": the state of the object said first, then the
 # request for 'it'
 _STATE_IT32 = re.compile(
@@ -10052,7 +10056,7 @@ def _state_it32(text: str, lexicon: Lexicon) -> str:
     scene, the state one word naming nothing and asking nothing, and the verb one of the
     grammar's."""
     m = _STATE_IT32.match(text)
-    if m is None or m["v"].lower() not in VERBS:
+    if m is None or m["v"].lower() not in (*VERBS, *_PLACING32):
         return text
     if not _things31(m["x"], lexicon) or len(_ids(m["x"], lexicon)) != 1:
         return text
@@ -10197,6 +10201,172 @@ def _beside_object32(words: str, before: str, lexicon: Lexicon) -> str | None:
     return found[0] if len(found) == 1 else None
 
 
+# what the wanted object is for, said as 'to <verb> <his / her …> <noun>' after it ("Omar needs
+# the spoon to stir his samples", "Zoe wants the scissors to cut out her rock diagrams"): a
+# purpose (as _to_do31's 'to <verb>'), never where it goes
+_TO_DO_WITH32 = re.compile(
+    r"(?P<before>\b(?:would (?:love|like)|'d (?:love|like)|wants?|needs?|could use|could do with|"
+    r"has asked for|asked for) [^,.;!?]*?)\s+to (?P<verb>[a-z]+)(?: (?:out|up|off|through))? "
+    r"(?P<what>(?:his|her|their|some|a|an) [a-z]+(?: [a-z]+){0,2})(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _to_do_with32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: the purpose above taken off when what comes before it ends with an object of
+    the scene, the verb is no verb of the grammar, and its words name nothing and ask nothing
+    (but the possessive)."""
+    if " to " not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        words = re.sub(r"^(?:his|her|their|some|a|an) ", "", m["what"], flags=_F)
+        if m["verb"].lower() in VERBS or not _ends_object(m["before"], lexicon):
+            return m[0]
+        if not _asks_nothing29(f"{m['verb']} {words}", lexicon):
+            return m[0]
+        return m["before"]
+
+    return _TO_DO_WITH32.sub(dropped, text)
+
+
+# a reason said as the state of a place or a thing of no scene name, closing a request: "…, the
+# ward's too warm"
+_TOO_WARM32 = re.compile(
+    r",\s*(?:(?:the|it's|it is) )?(?P<what>[a-z]+)(?:'s| is| are|'re) (?:too|so|really|very|ever "
+    r"so|a bit|far too|way too) (?P<state>[a-z]+)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _too_warm32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: the closing state above taken off when its words name nothing and ask nothing
+    and what is left names a person."""
+    m = _TOO_WARM32.search(text)
+    if m is None or not _asks_nothing29(f"{m['what']} {m['state']}", lexicon):
+        return text
+    rest = text[: m.start()]
+    return rest + m["end"].strip() if _ids(rest, lexicon, "human") else text
+
+
+# a past time after a want said in the perfect ("Bob has been eyeing the crisps since lunch"):
+# how long the want has lasted, never when the task is to be done
+_SINCE32 = re.compile(
+    r"(?P<before>\b(?:has|have|'s|'ve) been [a-z]+ing [^,.;!?]*?) since (?:lunch|breakfast|"
+    r"dinner|tea|this morning|dawn|yesterday|last night|earlier|first thing|the morning)\b",
+    _F,
+)
+
+
+def _since32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: the time above taken off when what comes before it ends with an object of the
+    scene."""
+    if "since" not in text:
+        return text
+    return _SINCE32.sub(lambda m: m["before"] if _ends_object(m["before"], lexicon) else m[0], text)
+
+
+# where a person is back from ("Aluce is back from the dive, hand her the bottle"): a remark
+_BACK_FROM_PLACE32 = re.compile(
+    rf"^(?P<p>{_PERSON32}) (?:is|'s) (?:just )?back from (?:the|his|her|their) [a-z]+"
+    r"(?= *[,;.])",
+    _F,
+)
+
+
+def _back_from_place32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: 'P is back from the <noun>' is 'P is back' when P is one person of the scene
+    and the noun names nothing and asks nothing."""
+    m = _BACK_FROM_PLACE32.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    said = m[0].split(" back from ", 1)[1]
+    if not _asks_nothing29(said.split(" ", 1)[1], lexicon):
+        return text
+    return f"{m['p']} is back{text[m.end() :]}"
+
+
+# who left an object where, then the request for 'it' ("Somebody left the sponge on the side;
+# drop it in the sink", "The forester left the bottle out; put it on the shelf")
+_LEFT_IT32 = re.compile(
+    rf"^(?P<who>somebody|someone|(?:the|our|my) [a-z]+) left (?P<x>{_DET32} [a-z][a-z ]*?) "
+    r"(?P<where>out|about|lying around|on the side|over there|here|there)\s*[;,]\s*(?:so\s+)?"
+    r"(?P<v>[a-z]+) it\b",
+    _F,
+)
+
+
+def _left_it32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: 'Somebody left X out; <verb> it …' is '<verb> X …', when who left it names
+    nothing (nobody, or a trade), X is one object of the scene and the verb one of the
+    grammar's."""
+    m = _LEFT_IT32.match(text)
+    if m is None or m["v"].lower() not in (*VERBS, *_PLACING32):
+        return text
+    who = m["who"].lower()
+    if who not in ("somebody", "someone") and not _trade_words29(who.split(" ", 1)[1], lexicon):
+        return text
+    if not _things31(m["x"], lexicon) or len(_ids(m["x"], lexicon)) != 1:
+        return text
+    return f"{m['v']} {m['x']}{text[m.end() :]}"
+
+
+# "P is the acupuncturist and she'd like her bottle": who the person is, then what they want
+_IS_THE_AND32 = re.compile(
+    rf"^(?P<p>{_PERSON32}) is the (?P<trade>[a-z]+) and (?P<pron>she|he|they)"
+    r"(?P<want>'d like|'d love| would like| wants| needs| is after)\b",
+    _F,
+)
+
+
+def _is_the_and32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: 'P is the <trade> and she'd like' is 'P would like', when P is one person of
+    the scene, the trade could only describe a person, and the pronoun may be P."""
+    m = _IS_THE_AND32.match(text)
+    if m is None or not _the_person(m["p"], m["pron"], lexicon):
+        return text
+    if not _trade_words29(m["trade"], lexicon):
+        return text
+    want = m["want"].strip()
+    want = {"'d like": "would like", "'d love": "would love"}.get(want, want)
+    return f"{m['p']} {want}{text[m.end() :]}"
+
+
+# where a person is, after their name at the end of a request ("… down to Person A at the far
+# end?"): said of no scene name, it only says where to find them
+_AT_THE_END32 = re.compile(
+    rf"(?<=\bto )(?P<p>{_PERSON32}) (?:at|by|near) the (?:far |other |back |front )?"
+    r"(?P<place>[a-z]+)"
+    r"(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+# "Could you run the chips down to …", "Can you manage the chips to …": verbs of carrying
+_RUN_DOWN32 = re.compile(
+    rf"\b(?:run|nip|pop|whizz|zip) (?P<x>{_DET32} [a-z][a-z ]*?) (?:down|over|up|across|along) "
+    r"to\b",
+    _F,
+)
+_MANAGE32 = re.compile(r"^(?P<ask>can|could) you manage (?=[a-z])", _F)
+
+
+def _carried32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: a person's place after their name taken off (one person of the scene, the
+    place naming nothing and asking nothing); 'run X down to' is 'take X to', 'can you manage X
+    to P' is 'X to P?' (X objects of the scene only)."""
+    m = _AT_THE_END32.search(text)
+    if m is not None and _only_person(m["p"], lexicon) and _asks_nothing29(m["place"], lexicon):
+        text = text[: m.start()] + m["p"] + m["end"].strip()
+    text = _RUN_DOWN32.sub(
+        lambda m: f"take {m['x']} to" if _things31(m["x"], lexicon) else m[0], text
+    )
+    m2 = _MANAGE32.match(text)
+    if m2 is not None and _ids(text[m2.end() :].split(" to ", 1)[0], lexicon, "object"):
+        head = text[m2.end() :].split(" to ", 1)[0]
+        if _things31(head, lexicon):
+            text = text[m2.end() :]
+    return text
+
+
 _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts32,
     _run_on_said32,
@@ -10218,6 +10388,13 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
     _asked_as32,
     _add_to32,
     _beside_on32,
+    _to_do_with32,
+    _too_warm32,
+    _since32,
+    _back_from_place32,
+    _left_it32,
+    _is_the_and32,
+    _carried32,
 )
 
 
