@@ -107,6 +107,8 @@ READS = [
     # (dd) where the person is; 'run X down to'; 'can you manage X to'
     ("Could you run the apple down to Bob at the far end?", "apple>B", CELL),
     ("Can you manage the apple to Bob?", "apple>B", CELL),
+    # (ee) 'over his way' after the wanted objects
+    ("Bob needs the apple and the cup over his way.", "apple>B & cup>B", CELL),
     # (m) possession beside who gets the other thing
     ("The apple is Bob's, and Carol can have the cup.", "apple>B & cup>C", CELL),
     # (w) courtesies of other languages
@@ -192,6 +194,8 @@ REFUSED = [
     # (dd) at a surface of the scene; a person carried
     ("Could you run the apple down to Bob at the table?", CELL),
     ("Can you manage Bob to Carol?", CELL),
+    # (ee) a pronoun that cannot be the one person named
+    ("Mr Lee needs the jug over her way.", WARD),
     # (m) a person after 'can have'
     ("The apple is Bob's, and Carol can have him.", CELL),
     # (w) 'I forget' is still the speaker's doubt

@@ -10121,7 +10121,9 @@ def _asked_as32(text: str, lexicon: Lexicon) -> str:
     if m is not None and _only_person(m["p"], lexicon):
         text = f"Could {m['p']} {m['v']} {m['rest']}?"
     m = _SHALL_WE_SAY32.match(text)
-    if m is not None and not re.search(r"\b(?:who|what|which|whether|where|how)\b", m["rest"], _F):
+    if m is not None and not re.search(
+        r"\b(?:who|what|which|whether|where|how|or|not|either)\b|n't", m["rest"], _F
+    ):
         text = f"{m['rest']}."
     return text
 
@@ -10367,6 +10369,29 @@ def _carried32(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "person b needs the apple and the cup over his way": to the person who wants them
+_HIS_WAY32 = re.compile(
+    r"(?P<before>\b(?:wants?|needs?|would like|'d like) [^,.;!?]*?) over (?P<pos>his|her|their) "
+    r"way\b",
+    _F,
+)
+
+
+def _his_way32(text: str, lexicon: Lexicon) -> str:
+    """Session 32: 'over his way' (above) taken off after the wanted objects, when one person is
+    named before it whom the pronoun may be."""
+    if " way" not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        people = _people_before32(text[: m.start()] + m["before"], lexicon)
+        if not _ends_object(m["before"], lexicon) or len(people) != 1:
+            return m[0]
+        return m["before"] if _fits(next(iter(people)), m["pos"], lexicon) else m[0]
+
+    return _HIS_WAY32.sub(dropped, text)
+
+
 _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts32,
     _run_on_said32,
@@ -10395,6 +10420,7 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
     _left_it32,
     _is_the_and32,
     _carried32,
+    _his_way32,
 )
 
 
