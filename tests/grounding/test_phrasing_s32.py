@@ -193,6 +193,7 @@ REFUSED = [
     ("Mr Lee is the porter and she'd like the jug.", WARD),
     # (dd) at a surface of the scene; a person carried
     ("Could you run the apple down to Bob at the table?", CELL),
+    ("Could you run the apple down to Bob at the end?", CELL),  # when, or where? (session 26)
     ("Can you manage Bob to Carol?", CELL),
     # (ee) a pronoun that cannot be the one person named
     ("Mr Lee needs the jug over her way.", WARD),

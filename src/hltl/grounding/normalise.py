@@ -10337,7 +10337,7 @@ def _is_the_and32(text: str, lexicon: Lexicon) -> str:
 # where a person is, after their name at the end of a request ("… down to Person A at the far
 # end?"): said of no scene name, it only says where to find them
 _AT_THE_END32 = re.compile(
-    rf"(?<=\bto )(?P<p>{_PERSON32}) (?:at|by|near) the (?:far |other |back |front )?"
+    rf"(?<=\bto )(?P<p>{_PERSON32}) (?:at|by|near) the (?P<far>far |other |back |front )?"
     r"(?P<place>[a-z]+)"
     r"(?P<end>\s*[.!?]?)\s*$",
     _F,
@@ -10356,7 +10356,14 @@ def _carried32(text: str, lexicon: Lexicon) -> str:
     place naming nothing and asking nothing); 'run X down to' is 'take X to', 'can you manage X
     to P' is 'X to P?' (X objects of the scene only)."""
     m = _AT_THE_END32.search(text)
-    if m is not None and _only_person(m["p"], lexicon) and _asks_nothing29(m["place"], lexicon):
+    # 'at the end' alone may say when (last: session 26); 'at the far end' says where
+    ends = m is not None and m["place"].lower() in ("end", "start", "beginning") and not m["far"]
+    if (
+        m is not None
+        and not ends
+        and _only_person(m["p"], lexicon)
+        and _asks_nothing29(m["place"], lexicon)
+    ):
         text = text[: m.start()] + m["p"] + m["end"].strip()
     text = _RUN_DOWN32.sub(
         lambda m: f"take {m['x']} to" if _things31(m["x"], lexicon) else m[0], text
