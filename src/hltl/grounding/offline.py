@@ -663,7 +663,9 @@ _DEFERRED = re.compile(
 # the speaker saying they are unsure of what they ask
 _DOUBT = re.compile(
     r"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know|dunno|no idea|"
-    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|i forget|i forgot|"
+    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|"
+    # session 32: 'before I forget' is no doubt (the speaker remembers now)
+    r"(?<!\bbefore )i forget|i forgot|"
     r"lost track)\b",
     re.I,
 )
