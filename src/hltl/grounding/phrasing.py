@@ -2042,6 +2042,7 @@ def _apply_correction(
             if _is(x, "it", "them") or (x.lemma == "pronoun" and x.text.lower() == "them"):
                 if not moved:
                     raise GroundingError(f"{x.text!r} after {marker.text!r} refers to nothing")
+                _one_meant32l(x, marker, moved, before[cut:])
                 rest[m : m + 1] = _joined(moved)
                 break
         return before[:cut] + rest
@@ -2087,6 +2088,23 @@ def _apply_correction(
         # 'the red mug and the blue mug …' then replaced the blue one alone)
         first = k - 1
     return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
+
+
+def _one_meant32l(pronoun: Item, marker: Item, moved: list[Item], taken: list[Item]) -> None:
+    """Session 32 (lead): the pronoun of a correction ('…, no, give it to Carol') stands for
+    what the clause taken back moved; 'it' names one thing, so after several objects ('Put the
+    chips and the bottle on the shelf, no, give it to Bob') it is unclear which, and after a
+    choice ('Give Bob the chips or the bottle, no, give it to Carol') 'it' or 'them' may mean the
+    choice or both: refused, naming the objects (they had been read as both, 12c's repairs fuzz)."""
+    said = list(dict.fromkeys(r.id for y in moved for r in y.refs if len(y.refs) == 1))
+    if len(said) < 2:
+        return
+    chose = any(_is(y, "or") for y in taken)
+    if pronoun.text.lower() == "it" or chose:
+        raise GroundingError(
+            f"{pronoun.text!r} after {marker.text!r} could mean any of {', '.join(said)}: name "
+            "the object"
+        )
 
 
 def _takes_back_all(taken: list[Item], after: list[Item], moved: list[Item], marker: Item) -> None:
