@@ -9,7 +9,9 @@
   object of the clause taken back (chips>C & bottle>C). 'it' after several objects, and any
   pronoun after a choice, is unclear: refused, naming the objects.
 - "Not urgent: the apple and, um, the cup to Bob": 'Not urgent: the apple and' was taken as a
-  thing left out, so the apple was lost. What is left out never runs across a colon."""
+  thing left out, so the apple was lost. What is left out never runs across a colon.
+- "Tom needs the packing tape and the medium box loaded onto the pallet": the grammar read 'needs
+  the tape' and 'the box loaded onto the pallet'; the participle is said of the whole list."""
 
 from __future__ import annotations
 
@@ -18,7 +20,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
-from tests.grounding.helpers import CELL, assert_reads, assert_refused, name_of, tree
+from tests.grounding.helpers import CELL, DEPOT, assert_reads, assert_refused, name_of, tree
 
 _FILLERS = ("er", "um", "uh", "erm")
 _ONE_OF_A_KIND = ("cup", "bottle", "chips", "apple")
@@ -64,6 +66,8 @@ def test_a_repair_by_hesitation_keeps_the_name_said_last(text: str, want: str) -
         # a list word or a choice of its own after the hesitation
         ("Give Bob the cup, um, and the apple", "cup>B & apple>B"),
         ("Give Bob the cup, um, or the apple", "cup>B | apple>B"),
+        ("Give Bob the cup and, um, the apple", "cup>B & apple>B"),
+        ("Give Bob the cup or, er, the apple", "cup>B | apple>B"),
         # names of two kinds: nothing repaired
         ("Give Alice the cup, er, Bob the apple", "cup>A & apple>B"),
         ("Give Bob the cup, er, Alice, the apple", "cup>B & apple>A"),
@@ -109,3 +113,25 @@ def test_one_object_or_them_after_a_correction_and_a_heading_read(text: str, wan
 def test_the_readings_of_a_repair_never_hold_the_name_taken_back() -> None:
     got = tree("Bob should get the water bottle, um, the apple", CELL)
     assert got is not None and "bottle" not in show_tree(got)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Tom needs the packing tape and the medium box loaded onto the pallet",
+            "tape@pallet & box_medium@pallet",
+        ),
+        (
+            "Tom needs the packing tape and, um, the medium box loaded onto the pallet",
+            "tape@pallet & box_medium@pallet",
+        ),
+        ("Tom needs the medium box loaded onto the pallet", "box_medium@pallet"),
+        (
+            "Mia wants the gloves and the packing tape put on the pallet",
+            "gloves@pallet & tape@pallet",
+        ),
+    ],
+)
+def test_a_participle_after_a_wanted_list_places_the_whole_list(text: str, want: str) -> None:
+    assert_reads(text, want, DEPOT)

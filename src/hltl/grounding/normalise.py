@@ -2869,6 +2869,18 @@ def _wanted_placed(text: str, lexicon: Lexicon) -> str:
     return f"put {m.group(2)} {m.group(3)} {where}"
 
 
+def placed_list32l(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (lead): 'Tom needs the packing tape and the medium box loaded onto the pallet'
+    rewritten as _wanted_placed does, before the instruction is first read, when the wanted
+    objects are a list: the grammar alone had read it as 'needs the tape' and 'the box loaded
+    onto the pallet' (tape>B & box_medium@pallet), one reading of two, where the participle is
+    said of the whole list (12c's repairs fuzz, 'and, um, the medium box')."""
+    if not re.search(r"\band\b", text, _F):
+        return text
+    out = _wanted_placed(text, lexicon)
+    return out if out != text and re.search(r"\band\b", out, _F) else text
+
+
 def _they_one(text: str, lexicon: Lexicon) -> str:
     """'Person B gets the chips, and when they've got them, Person A gets the bottle': 'they'
     for the one person named before the condition."""

@@ -32,6 +32,8 @@ _TITLE_AGAIN = re.compile(
     rf"\b({_TITLES})\.?\s*,?\s*(?:(?:um+|uh+|er+|erm+|ah+)\s*,?\s*)?(?=\1\.?\s+[A-Za-z])",
     _F,
 )
+# a hesitation just after a list word ("the tape and, um, the box"): a pause inside the list
+_AFTER_A_LIST_WORD = re.compile(r"\b(and|or)\s*,?\s*(?:um+|uh+|er+|erm+)\s*,\s*", _F)
 _DETS = r"(?:(?:the|a|an|my|our|your|his|her|their|that|this)\s+)?"
 _PREPS = r"(?:(?:to|for|on|onto|in|into|at|by|with)\s+)?"
 _BOUNDARY = re.compile(r"[.;:!?,—–]|\s-\s")
@@ -105,6 +107,7 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
     if _HESITATION.search(text) is None and _TITLE_AGAIN.search(text) is None:
         return text
     out = _TITLE_AGAIN.sub("", text)
+    out = _AFTER_A_LIST_WORD.sub(r"\1 ", out)
     pos = 0
     while True:
         m = _HESITATION.search(out, pos)
