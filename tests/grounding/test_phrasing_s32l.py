@@ -20,7 +20,19 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import show_tree
-from tests.grounding.helpers import CELL, DEPOT, assert_reads, assert_refused, name_of, tree
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import (
+    CELL,
+    DEPOT,
+    OFFICE,
+    ROOT,
+    assert_reads,
+    assert_refused,
+    name_of,
+    tree,
+)
+
+FIG = load_scene(ROOT / "examples/scenes/fig1.yaml")
 
 _FILLERS = ("er", "um", "uh", "erm")
 _ONE_OF_A_KIND = ("cup", "bottle", "chips", "apple")
@@ -135,3 +147,47 @@ def test_the_readings_of_a_repair_never_hold_the_name_taken_back() -> None:
 )
 def test_a_participle_after_a_wanted_list_places_the_whole_list(text: str, want: str) -> None:
     assert_reads(text, want, DEPOT)
+
+
+def test_a_statement_asked_after_a_repair_is_still_a_question() -> None:
+    # the commas around a repair word end no clause: still 'The stapler is for Priya?'
+    assert_refused("The stapler is for Sam, er, Priya?", OFFICE, match="is a question")
+    assert_refused("The stapler is for Sam, no, Priya?", OFFICE, match="is a question")
+    assert_reads("The stapler is for Sam, no, Priya", "stapler>A", OFFICE)
+    # a request said with a question mark stays a request
+    assert_reads("Give the stapler to Sam, sorry, Priya?", "stapler>A", OFFICE)
+
+
+@pytest.mark.parametrize("repair", ["sorry", "er", "no, sorry", "I mean"])
+def test_a_repair_after_both_to_a_person_names_whom_both_go_to(repair: str) -> None:
+    text = f"the chips first then the bottle both to Person A, {repair}, person b"
+    assert_reads(text, "chips>B ; bottle>B", FIG)
+    assert_reads("the chips first then the bottle both to Person A", "chips>A ; bottle>A", FIG)
+
+
+def test_the_other_one_after_a_repaired_person_is_not_read_alone() -> None:
+    # 'the other one' points back into the clause the repair takes back: refused (as 'Alice
+    # gets the cup and Carol, sorry, Bob gets the apple' is), never mug>B alone
+    for text in (
+        "Alice gets a mug and Carol, sorry, Bob gets the other one",
+        "Alice wants a mug, Carol, I mean Bob wants the other one",
+    ):
+        assert_refused(text, CELL, match="could take back the whole clause")
+    assert_reads(
+        "Alice gets a mug and Bob gets the other one",
+        "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+        CELL,
+    )
+
+
+def test_no_other_way_round_after_a_repair_leaves_one_person() -> None:
+    for text in (
+        "Give Bob, uh, no, Alice the cup and the apple, or the other way round",
+        "Give Bob, er, Alice the cup and the apple, or the other way round",
+    ):
+        assert_refused(text, CELL, match="swaps")
+    assert_reads(
+        "Give Alice the cup and Carol the apple, or the other way round",
+        "(cup>A & apple>C) | (apple>A & cup>C)",
+        CELL,
+    )

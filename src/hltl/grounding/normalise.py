@@ -11678,7 +11678,12 @@ def _both_for27r(text: str, lexicon: Lexicon) -> str:
         return text
 
     def ordered(m: re.Match[str]) -> str:
-        first, second, prep, target = m.groups()
+        first, second, prep, target = m.group(1, 2, 3, 4)
+        if m["new"]:
+            # session 32 (lead): "…, both to Person A, sorry, person b": the repair names whom
+            # both go to (it had been applied to the second only, after the split: 12c's
+            # repairs fuzz)
+            target = m["new"]
         things = all(_only_kind(x, lexicon, "object") for x in (first, second))
         to = prep.lower() in ("to", "for")
         if not things or not (
@@ -11690,7 +11695,8 @@ def _both_for27r(text: str, lexicon: Lexicon) -> str:
 
     text = _sub(
         r"^((?:the )?[\w ]+?)(?: first)?,? then (the [\w ]+?),? both (to|for|on|onto) "
-        r"([\w ]+?)(?=\s*(?:[.!,]|$))",
+        r"([\w ]+?)(?:\s*,\s*(?:(?:no|sorry|i mean|actually|oops)\s*,?\s*)+(?P<new>[\w ]+?))?"
+        r"(?=\s*(?:[.!,]|$))",
         ordered,
         text,
     )

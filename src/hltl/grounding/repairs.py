@@ -1,14 +1,4 @@
-"""Self-repairs in speech, read before the instruction is first parsed (session 32).
-
-A speaker who names one thing and then, after a bare hesitation, another thing of the same
-kind ("Give Bob the water bottle, er, the cup", "Give Alice, um, Bob a mug", "on the table, er,
-the shelf") has repaired the first name: the hesitation does what 'sorry' or 'I mean' does
-there, and the first name is not asked for. The lexer drops hesitations as fillers, so these
-were read as lists ("the bottle and the cup"), a reading the speaker never gave (12c's `repairs`
-fuzz family). Where a list goes on around the two names ("the cup, er, the chips and the
-apple", "Carol, er, Bob or Alice") the hesitation may be a pause inside the list, and nothing is
-rewritten. A title said again ("Mr, er, Mr Novak", "Person, um, Person A") is said once.
-"""
+"""Self-repairs in speech ("the bottle, er, the cup"), said as repairs before the first read."""
 
 from __future__ import annotations
 
