@@ -29,6 +29,7 @@ from tests.grounding.helpers import (
     assert_reads,
     assert_refused,
     name_of,
+    paraphrase_scene,
     tree,
 )
 
@@ -190,4 +191,22 @@ def test_no_other_way_round_after_a_repair_leaves_one_person() -> None:
         "Give Alice the cup and Carol the apple, or the other way round",
         "(cup>A & apple>C) | (apple>A & cup>C)",
         CELL,
+    )
+
+
+def test_a_name_after_a_closing_sorry_is_what_it_repairs_to() -> None:
+    kitchen = paraphrase_scene("kitchen")
+    # 'Marco' after 'sorry' is the repair, not a word of address dropped with the apology
+    assert_reads("The tongs to Lena. Correction: to Mr Novak, sorry, Marco.", "tongs>A", kitchen)
+    assert_reads("The tongs to Lena. Correction: to Mr Novak, sorry, folks.", "tongs>C", kitchen)
+    assert_reads("The tongs to Lena, no, to Mr Novak, my mistake, folks.", "tongs>C", kitchen)
+
+
+def test_a_repaired_person_before_a_choice_of_people_gets_no_share() -> None:
+    classroom = paraphrase_scene("classroom")
+    text = "Either of the students can have the globe, Mrs Ortiz, sorry, Noah or Zoe"
+    got = tree(text, classroom)
+    assert got is None or show_tree(got) in ("globe>B | globe>C", "globe>C | globe>B")
+    assert_reads(
+        "Either of the students can have the globe, Noah or Zoe", "globe>B | globe>C", classroom
     )

@@ -3982,8 +3982,10 @@ def _either_of(text: str, lexicon: Lexicon) -> str:
     can have it; 'Either Alice or Carol, whoever's nearer, gets the apple': the choice is theirs."""
     m = _rx(
         r"^either of (?:the ([a-z]+)|them|the two|you two)( can have| could have| gets?| can get"
-        r"| should get| may have)( .+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$"
+        r"| should get| may have)( [^,]+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$"
     ).match(text.strip())
+    # (what they can have ends at the first comma: "…, Mrs Ortiz, sorry, Noah or Zoe" had
+    # dropped the repair with the name it takes back, then given her a share; session 32)
     if m is not None:
         a, b = m.group(4), m.group(5)
         if not (_only_person(a, lexicon) and _only_person(b, lexicon)):
@@ -10887,15 +10889,23 @@ def _negation22(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
+    """Session 32 (lead): whether the word after a closing 'sorry' ('…, no, to Mr Novak, sorry,
+    Marco.') names someone or something of the scene: then 'sorry' repairs to it, and it is not
+    a word of address to drop with the apology ('…, my mistake, folks'), as it had been (the tongs
+    went to Mr Novak: 12c's repairs fuzz)."""
+    return word is not None and not _names_nothing(word, lexicon)
+
+
 def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
     out = _sub(r",\s*(?:sorry|so sorry|apologies)\s*([.!]?)$", r"\1", out).strip()
     # a cue after the correction ('…, my mistake, folks'): said of what came before it
     out = _sub(
-        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?"
+        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
         r"\s*([.!]?)$",
-        r"\1\2",
+        lambda m: m.group(0) if _repairs_to32l(m.group(2), lexicon) else m.group(1) + m.group(3),
         out,
     )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
@@ -10930,8 +10940,9 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
                 after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
             out = f"{before}, no, {after}"
             out = _sub(
-                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?\s*([.!]?)$",
-                r"\1",
+                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
+                r"\s*([.!]?)$",
+                lambda m: m.group(0) if _repairs_to32l(m.group(1), lexicon) else m.group(2),
                 out,
             )
             same = _rx(r"(?<=, no, )(.+?)\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(out)
