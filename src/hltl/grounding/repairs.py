@@ -18,8 +18,9 @@ _HESITATION = re.compile(
 )
 # a title said, a hesitation, and the title again with the name
 _TITLES = r"(?:mr|mrs|ms|miss|mx|dr|doctor|nurse|sister|professor|prof|person|uncle|auntie|aunt)"
+# (only with the hesitation: "Same person, Person A, the clarinettist" says no title twice)
 _TITLE_AGAIN = re.compile(
-    rf"\b({_TITLES})\.?\s*,?\s*(?:(?:um+|uh+|er+|erm+|ah+)\s*,?\s*)?(?=\1\.?\s+[A-Za-z])",
+    rf"\b({_TITLES})\.?\s*,?\s*(?:um+|uh+|er+|erm+|ah+)\s*,?\s*(?=\1\.?\s+[A-Za-z])",
     _F,
 )
 # a hesitation just after a list word ("the tape and, um, the box"): a pause inside the list
