@@ -63,13 +63,17 @@ class WorkClock:
             raise ValueError(f"a work clock must advance: step {step!r}")
         self.step = step
         self.wall_seconds = wall_seconds
-        self.t = start
+        self.start = start
         self.readings = 0
+
+    @property
+    def t(self) -> float:
+        """The time the next reading gives (readings are counted: no rounding drifts)."""
+        return self.start + self.readings * self.step
 
     def now(self) -> float:
         t = self.t
         self.readings += 1
-        self.t = t + self.step
         return t
 
     def wall(self, until: float) -> float:
