@@ -1,9 +1,4 @@
-"""The planner's clock: where its deadlines, phases and shares are read (docs/planner.md,
-"The clock").
-
-Production reads ``time.perf_counter`` (``WALL``). Tests pass a ``WorkClock``, which runs
-only with the planner's work, so that a run's phases fall at the same points on a fast
-machine and on a loaded one."""
+"""The planner's clock: wall time in production, a clock of work in tests."""
 
 from __future__ import annotations
 
