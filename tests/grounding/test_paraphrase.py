@@ -295,7 +295,6 @@ KNOWN_MISSES = frozenset(
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
         "cup to person a first please and once shes got it the apple goes to person b",
-        "Lenq needs the salt for table four.",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
@@ -485,7 +484,6 @@ KNOWN_MISSES = frozenset(
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
         "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
-        'All four items: cup and apple to Person A, bottle and chips to Person B.',
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
         "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
@@ -516,19 +514,12 @@ KNOWN_MISSES = frozenset(
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         'Wash-up time: both cups into the sink, green and white alike.',
-        'Mr Lee said the blue blanket itches, so give him the other one.',
-        'Crisps to Alice, sorry, I mean Bob, Alice is off crisps.',
-        "Cup for Person B, no, sorry, the apple, the cup's got a crack.",
-        "Chips to Person A, hang on, make it Person B, A's gone on break.",
         'The white plate on the rack, no, the counter, we need it for service.',
         'can you put the red mug on the counter for me please my hands are all plaster',
         'start off with crisps for alice and after that bob needs his bottle',
         'chale pls the chips to person a eh',
         "oh person b's been on about the bottle again hand it over",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Bob's having a coffee, so one of the mugs for him, red or blue, not bothered.",
-        "The bottle to either of them, whoever's nearer.",
-        "Give them a thing each, the bottle and the chips, don't care who gets which.",
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
@@ -536,7 +527,6 @@ KNOWN_MISSES = frozenset(
         "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Sam gets the pens, all except the blue one, that stays where it is.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
         "it.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
@@ -545,21 +535,16 @@ KNOWN_MISSES = frozenset(
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "There's only the bottle, and Person A's the only one here, so that's simple: give it to "
-        "her.",
         "The two smaller boxes can join the big one on the pallet.",
         "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
-        "Bottle to Person B, no, sorry, there's only Person A here, to her then.",
         "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        'Both of the cups, the green and the white, want rinsing, so into the sink with the pair.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
-        "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
         'Tom needs the glovrs, the pallets are splintery.',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
@@ -571,47 +556,10 @@ KNOWN_MISSES = frozenset(
         "Sam can have any one of the pens, the millwright's lent us them.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
-        'Both of the blocks are to go in the high chair so Lily can bash them about.',
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
-        "Bob isn't fussy: one of the mugs, doesn't matter which, as long as it's clean.",
-        "One each for Alice and Bob out of the crisps and the bottle, I'm not fussed who ends up "
-        "with what.",
-        'Whichever of the two you can reach first, the bottle or the chips, hand it across to '
-        'Person B.',
-        "Each of them gets one of the two things, the bottle and the chips, I don't mind how.",
-        "Person A and Person B both want the chips; give them to either one, I'm not bothered.",
-        "Either cup for Dana, whichever one's clean.",
-        "One blanket apiece for the two patients, I'll let you choose which goes where.",
-        "Either block to Lily, she'll chew whichever you hand her.",
-        "Person B's packing for the lobster boat, so all four of the things on the table go to "
-        "her.",
-        "Person A's taking three things home with her, namely the bottle, the chips and the cup.",
-        'Person B gets the two things to drink from, the bottle and the cup.',
-        'The pair of items on the table both go to Person B.',
-        'Person A and Person B get a single item apiece out of the two on the table, you pick.',
-        "Person A, our hygienist, wants that bottle, and there's only the one, so no mix-ups.",
-        'The two cups both want washing, so into the sink with the pair of them.',
-        'The three boxes, small, medium and large, all go on the belt for the stevedores.',
-        'Lena wants the pair of plates, the white one and the blue one, for table six.',
-        'Two students, two books: Noah takes the red one and Zoe gets the green one.',
         'Both of the spanners, large and small, go away in the locker tonight.',
-        "Alice can take whatever's here apart from the crisps, she's off crisps this week.",
         "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
-        "Hand Person A the chips; she doesn't want the apple.",
-        'The chips are for Person B; the bottle stays put, leave it alone.',
-        "The bottle is for Person A alone, Person B shouldn't get it.",
-        "Only the bottle, nothing else, goes to Person A, she's the arborist on call.",
-        "No need to set the bottle down first, just pass it right into Person A's hand.",
-        "Person B gets the other thing, the one that isn't the bottle, malo aupito.",
-        'Omar would like a cup, any cup except the green one.',
-        "Mrs Khan's blanket is the one that isn't grey, please take it to her.",
-        'Every box bar the large one needs to go on the belt, the stevedores will sort the rest.',
-        "Ava gets the teddy, and no, not Lily, she's had hers.",
-        'Give the bottle to Person, er, Person A, the only one here.',
-        "Put the bottle on, oh wait, there's no shelf, just give it to Person A.",
-        "Notebook to Sam, no, to Priya, Sam's got one.",
-        "Hammer to Kofi, no, to Jess, Kofi's got his own.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
