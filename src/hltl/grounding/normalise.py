@@ -9997,9 +9997,8 @@ def _owned_listed32(text: str, lexicon: Lexicon) -> str:
 # "Bottle next. Same person, Person A, the clarinettist.": the person of the task before,
 # said again in a sentence of its own (the named person must be the one named before)
 _SAME_PERSON32 = re.compile(
-    r"(?P<before>(?:^|(?<=[.!?]\s))[^.!?]+?)\.\s+Same "
-    rf"(?:(?:person|one|recipient)(?:,\s*(?P<p>{_PERSON32}))?|(?P<named>{_PERSON32}))"
-    r"(?:,\s*(?:the|our|a) (?P<trade>[a-z]+(?: [a-z]+)?))?"
+    r"(?P<before>(?:^|(?<=[.!?]\s))[^.!?]+?)\.\s+Same (?:person|one|recipient)"
+    rf"(?:,\s*(?P<p>{_PERSON32}))?(?:,\s*(?:the|our|a) (?P<trade>[a-z]+(?: [a-z]+)?))?"
     r"\s*(?P<end>[.!]|$)",
     _F,
 )
@@ -10018,12 +10017,9 @@ def _same_person32(text: str, lexicon: Lexicon) -> str:
             return m[0]
         if m["trade"] and not _trade_words29(m["trade"], lexicon):
             return m[0]
-        # 'Same Person A.': the words 'person, ' taken off as a stutter before (the lead's
-        # repairs): the person said, as after 'Same person,'
-        who = m["p"] or m["named"]
-        if who:
+        if m["p"]:
             earlier = _ids(text[: m.start()], lexicon, "human")
-            if not _only_person(who, lexicon) or earlier != _ids(who, lexicon, "human"):
+            if not _only_person(m["p"], lexicon) or earlier != _ids(m["p"], lexicon, "human"):
                 return m[0]
         return f"{before}, same person{m['end']}"
 
