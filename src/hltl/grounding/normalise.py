@@ -2869,6 +2869,18 @@ def _wanted_placed(text: str, lexicon: Lexicon) -> str:
     return f"put {m.group(2)} {m.group(3)} {where}"
 
 
+def placed_list32l(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (lead): 'Tom needs the packing tape and the medium box loaded onto the pallet'
+    rewritten as _wanted_placed does, before the instruction is first read, when the wanted
+    objects are a list: the grammar alone had read it as 'needs the tape' and 'the box loaded
+    onto the pallet' (tape>B & box_medium@pallet), one reading of two, where the participle is
+    said of the whole list (12c's repairs fuzz, 'and, um, the medium box')."""
+    if not re.search(r"\band\b", text, _F):
+        return text
+    out = _wanted_placed(text, lexicon)
+    return out if out != text and re.search(r"\band\b", out, _F) else text
+
+
 def _they_one(text: str, lexicon: Lexicon) -> str:
     """'Person B gets the chips, and when they've got them, Person A gets the bottle': 'they'
     for the one person named before the condition."""
@@ -3970,8 +3982,10 @@ def _either_of(text: str, lexicon: Lexicon) -> str:
     can have it; 'Either Alice or Carol, whoever's nearer, gets the apple': the choice is theirs."""
     m = _rx(
         r"^either of (?:the ([a-z]+)|them|the two|you two)( can have| could have| gets?| can get"
-        r"| should get| may have)( .+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$"
+        r"| should get| may have)( [^,]+?),\s*([^,]+?) or ([^,]+?)\s*([.!]?)$"
     ).match(text.strip())
+    # (what they can have ends at the first comma: "…, Mrs Ortiz, sorry, Noah or Zoe" had
+    # dropped the repair with the name it takes back, then given her a share; session 32)
     if m is not None:
         a, b = m.group(4), m.group(5)
         if not (_only_person(a, lexicon) and _only_person(b, lexicon)):
@@ -4025,7 +4039,9 @@ def _not_first(text: str, lexicon: Lexicon) -> str:
     not one the request names, and a want said before the request for the same object is the
     request said twice; 'Not the pens, just the other bits, into the box': everything but them;
     'Leave the blue pen, put the other two in the box': the others of its kind, as many as said."""
-    m = _rx(r"^(no,\s*)?not ([^,]+?),\s*(.+)$").match(text.strip())
+    # (what is left out ends at a comma, and never runs across a colon or a full stop: "Not
+    # urgent: the apple and, um, the cup to Bob" left out nothing; session 32, 12c's repairs fuzz)
+    m = _rx(r"^(no,\s*)?not ([^,:;.!?]+?),\s*(.+)$").match(text.strip())
     if m is not None:
         left, rest = m.group(2), m.group(3)
         n = _rx(r"^just the other (?:bits|things|stuff|items|ones),?\s*(.+)$").match(rest)
@@ -11723,15 +11739,23 @@ def _negation22(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
+    """Session 32 (lead): whether the word after a closing 'sorry' ('…, no, to Mr Novak, sorry,
+    Marco.') names someone or something of the scene: then 'sorry' repairs to it, and it is not
+    a word of address to drop with the apology ('…, my mistake, folks'), as it had been (the tongs
+    went to Mr Novak: 12c's repairs fuzz)."""
+    return word is not None and not _names_nothing(word, lexicon)
+
+
 def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
     out = _sub(r",\s*(?:sorry|so sorry|apologies)\s*([.!]?)$", r"\1", out).strip()
     # a cue after the correction ('…, my mistake, folks'): said of what came before it
     out = _sub(
-        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?"
+        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
         r"\s*([.!]?)$",
-        r"\1\2",
+        lambda m: m.group(0) if _repairs_to32l(m.group(2), lexicon) else m.group(1) + m.group(3),
         out,
     )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
@@ -11766,8 +11790,9 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
                 after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
             out = f"{before}, no, {after}"
             out = _sub(
-                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*[a-z]+)?\s*([.!]?)$",
-                r"\1",
+                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
+                r"\s*([.!]?)$",
+                lambda m: m.group(0) if _repairs_to32l(m.group(1), lexicon) else m.group(2),
                 out,
             )
             same = _rx(r"(?<=, no, )(.+?)\s+((?:to|for) [A-Z][\w ]*?)\s*([.!]?)$").search(out)
@@ -12514,7 +12539,12 @@ def _both_for27r(text: str, lexicon: Lexicon) -> str:
         return text
 
     def ordered(m: re.Match[str]) -> str:
-        first, second, prep, target = m.groups()
+        first, second, prep, target = m.group(1, 2, 3, 4)
+        if m["new"]:
+            # session 32 (lead): "…, both to Person A, sorry, person b": the repair names whom
+            # both go to (it had been applied to the second only, after the split: 12c's
+            # repairs fuzz)
+            target = m["new"]
         things = all(_only_kind(x, lexicon, "object") for x in (first, second))
         to = prep.lower() in ("to", "for")
         if not things or not (
@@ -12526,7 +12556,8 @@ def _both_for27r(text: str, lexicon: Lexicon) -> str:
 
     text = _sub(
         r"^((?:the )?[\w ]+?)(?: first)?,? then (the [\w ]+?),? both (to|for|on|onto) "
-        r"([\w ]+?)(?=\s*(?:[.!,]|$))",
+        r"([\w ]+?)(?:\s*,\s*(?:(?:no|sorry|i mean|actually|oops)\s*,?\s*)+(?P<new>[\w ]+?))?"
+        r"(?=\s*(?:[.!,]|$))",
         ordered,
         text,
     )
