@@ -16930,3 +16930,61 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12s): blind17-23's kinds
     *_STEPS31S,
 )
+
+
+# Session 32 (12s): a hesitation between two names of one kind, with nothing else between them
+# ("The magazine, er, the jug, for Mr Lee"): the second replaces the first, as 'I mean' says
+_HESITANT32S = re.compile(r"\s*,\s*(?:um+|uh+|er+|erm+|ah+|hmm+)\s*,\s*", _F)
+# what may follow the second name for it to end its part: a stop, the part's preposition or
+# 'please', or a comma not opening another name of a list ('…, er, the jug, the pills')
+_REPAIR_END32S = re.compile(
+    r"^\s*(?:$|[.;!?]|,(?!\s*(?:and\s+)?(?:the|a|an|one|some)\b)|(?:for|to|on|onto|in|into|over|"
+    r"please)\b)",
+    _F,
+)
+
+
+def repaired32s(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12s): 'X, er, Y' where X and Y each name one thing of one kind (objects,
+    people or surfaces) is 'X, I mean Y' — a speaker who stops after a name and says another of
+    its kind in its place replaces it ("The magazine, er, the jug, for Mr Lee": jug>B; the
+    hesitation had been dropped and both read). Not when Y goes on into a list ('…, er, the jug
+    and the pills', '…, the jug, the pills') or is added to ('the jug too'), nor when X closes a
+    list ('the cup, the apple, er, the bottle'): which of them the speaker takes back is
+    unclear, and the grammar reads or refuses those as before."""
+    if not _HESITANT32S.search(text):
+        return text
+    out, rest = "", text
+    while (m := _HESITANT32S.search(rest)) is not None:
+        before, after = rest[: m.start()], rest[m.end() :]
+        cue = ", I mean " if _repairs32s(before, after, lexicon) else m.group(0)
+        out, rest = out + before + cue, after
+    return out + rest
+
+
+def _repairs32s(before: str, after: str, lexicon: Lexicon) -> bool:
+    """Whether the name ending ``before`` is replaced by the one opening ``after`` (above)."""
+    clause = re.split(r"[.;!?]", before)[-1]
+    said = _names(clause, lexicon)
+    if not said or not clause.rstrip().lower().endswith(said[-1].text.lower()):
+        return False
+    x = said[-1]
+    head = clause.rstrip()[: -len(x.text)]
+    head = re.sub(r"\b(?:the|a|an|my|your|our)\s*$", "", head, flags=_F).rstrip()
+    listed = re.match(r"(.*?)\s*(?:,|\band)\s*$", head, _F)
+    if listed is not None and _names(re.split(r",|\band\b", listed[1])[-1], lexicon):
+        return False  # "the cup, the apple, er, the bottle": X closes a list
+    part = re.split(r"[.;!?,]", after)[0]
+    found = _names(part, lexicon)
+    if not found:
+        return False
+    y = found[0]
+    m = re.match(rf"\s*(?:(?:the|a|an)\s+)?{re.escape(y.text)}", after, _F)
+    if m is None:
+        return False
+    kinds = {r.kind for r in (*x.refs, *y.refs)}
+    if _REPAIR_END32S.match(after[m.end() :]) is None and not (
+        kinds == {"human"} and re.match(r"\s+(?:the|a|an)\b", after[m.end() :], _F)
+    ):
+        return False  # "Give Ruth, er, Mr Lee the jug": a recipient before the object
+    return len(kinds) == 1 and len({r.id for r in x.refs}) == len({r.id for r in y.refs}) == 1
