@@ -234,3 +234,39 @@ def test_a_pronoun_beside_someone_absent_is_refused_naming_them(text: str, said:
 
 def test_a_pronoun_with_several_people_stays_unresolved() -> None:
     assert_refused("Give her the cup.", CELL, match="'her' is not resolved: it could mean")
+
+
+# -- a statement closing the instruction (normalise.py _trailing_remark32s) ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # blind22, blind23: refused before for the speaker's 'me' / an unresolved 'she'
+        ("chios for Person B lah, she asked me just now", "chips>B", "4-1"),
+        (
+            "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
+            "bottle>B & chips>B",
+            "2-1",
+        ),
+        ("Give Bob the cup, he's doing the rounds next.", "cup>B", "grounding_cell"),
+        ("Give Bob the cup, he asked me an hour ago.", "cup>B", "grounding_cell"),
+    ],
+)
+def test_a_statement_after_the_request_is_taken_off(text: str, want: str, scene: str) -> None:
+    assert_reads(text, want, load_scene(ROOT / f"examples/scenes/{scene}.yaml"))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a statement that says something of the request stays (and the whole is refused)
+        "Give Bob the cup, Alice is next.",  # next for something
+        "Give Bob the cup, Alice is sitting by the apple.",  # names an object
+        "Give Bob the cup, he asked me for it too.",  # 'it', 'too'
+        "Give Bob the cup, Alice asked me but I can't remember what for.",  # a negation
+        "Give Bob the cup, Alice asked me and she'll want one later.",  # a want, a time
+    ],
+)
+def test_a_statement_that_could_change_the_request_is_not_taken_off(text: str) -> None:
+    assert_refused(text, CELL)

@@ -16734,6 +16734,83 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
+# Session 32 (12s): a statement closing the instruction after its request ("Could Bob have the
+# crisps before we go on, he's the only tenor we've got?", "…, she's doing the X-ray rounds
+# next."): who it is about, then a verb of its own
+_TRAILING32S = re.compile(
+    r"(?P<cut>[,.;!?]\s*(?:(?i:and|cos|because)\s+)?(?P<said>(?P<who>(?i:he|she|they|i|we|(?:his|"
+    r"her|their|my|our) [a-z]+)|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?P<pred>(?:'s|'re|'m|'ve|'ll|'d|\s+"
+    r"(?:is|are|am|was|were|has|have|had|will|would|says|said|asked|told|keeps|kept|does|did|can|"
+    r"could|should|must|looks|seems|sounds|goes|went|came|comes))\b[^,.;!?]*)))(?P<end>[.!?]*)"
+    r"\s*$"
+)
+# words that would make such a statement say something of the request: a negation, a choice,
+# a count, a time or order, a correction, a want, a hand-over, a thing pointed at
+_TRAILING_HELD32S = frozenset(
+    {
+        *("not", "n't", "never", "no", "nothing", "nobody", "none", "neither", "nor", "instead"),
+        *("too", "also", "either", "only", "just", "rather", "prefer", "prefers", "wrong"),
+        *("right", "mistake", "meant", "mean", "both", "each", "every", "all", "any", "which"),
+        *("whichever", "whatever", "one", "ones", "two", "three", "four", "five", "first"),
+        *("then", "after", "before", "later", "tomorrow", "tonight", "wait", "until", "till"),
+        *("unless", "if", "or", "want", "wants", "wanted", "wanting", "need", "needs", "needed"),
+        *("needing", "like", "likes", "love", "loves", "fancy", "fancies", "give", "gives"),
+        *("hand", "pass", "bring", "take", "put", "place", "move", "send", "fetch", "get"),
+        *("gets", "got", "getting", "have", "has", "had", "having", "already", "same", "other"),
+        *("else", "it", "them", "those", "these", "that", "this", "mine", "yours", "hers"),
+        *("his", "theirs", "ours", "allergic", "hates", "hate", "share", "keep", "keeps"),
+        *("leave", "stay", "stays", "back", "again", "more", "less", "another", "for", "to"),
+    }
+)
+
+
+# how long or since when, in such a statement ("she's been out on the water all day")
+_TRAILING_TIME32S = re.compile(
+    r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
+    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours))\b"
+)
+
+
+def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12s): a statement after the request, closing the instruction, about the
+    person it names, someone else or the speaker ("…, she's been out on the water all day?",
+    "…, he's the only tenor we've got?", "…, she's doing the X-ray rounds next.", "…, his lines
+    are all over the place."), is taken off when it holds none of the words that could say
+    something of the request (_TRAILING_HELD32S: a negation, choice, count, time, correction,
+    want, hand-over, or a word pointing at a thing), no word of the scene's names but the
+    people the request names, and the request before it names an object. Session 21's
+    reasons and session 29's remarks keep such a statement for the speaker's words ('we',
+    'me') or a word the grammar reads; those were refused. A he / she the request's person
+    cannot be is checked where the rewrite is read (offline.py _ruled_out_dropped31s)."""
+    m = _TRAILING32S.search(text)
+    if m is None:
+        return text
+    before, said = text[: m.start()], m["said"]
+    pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
+    if any(
+        w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
+        for w in words
+    ) or re.match(r"(?:'s|'re|\s+is|\s+are)\s+(?:up\s+)?next\b", pred):
+        return text  # "…, Alice is next": next for something
+    if not _ids(before, lexicon, "object"):
+        return text
+    request_people = _ids(before, lexicon, "human")
+    if not _ids(said, lexicon, "human") <= request_people or _ids(said, lexicon) - request_people:
+        return text
+    names = _scene_words29(lexicon) - {
+        w
+        for p in request_people
+        for h in lexicon.scene.humans
+        if h.id == p
+        for n in (h.id, h.name, *h.aliases)
+        for w in n.lower().split()
+    }
+    if any(w.split("'")[0] in names for w in words):
+        return text
+    return f"{before.rstrip()}{m['end'] or '.'}"
+
+
 _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _will_do31s,
     _both_of31s,
@@ -16741,6 +16818,7 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _negated_reason31s,
     _said_otherwise31s,
 )
+_STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s,)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
@@ -16929,6 +17007,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _along_with28s,
     # session 31 (12s): blind17-23's kinds
     *_STEPS31S,
+    # session 32 (12s): blind17-23's kinds
+    *_STEPS32S,
 )
 
 
