@@ -591,6 +591,85 @@ KNOWN_MISSES = frozenset(
         "The bottle is Person B's, and Persoh A can have the chips, thanks.",
         "Peerson A is the acupuncturist and she'd like her bottle now.",
         'Somebody left the spobge on the side; drop it in the sink, please.',
+        # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
+        'Grazas! Oh, and before I forget, the bottle goes to Person B, if you please.',
+        'Honestly, whenever suits you, just let Person B have the chips, ta very much.',
+        'Would you be so good as to hand Person A the chips? Meur ras, as my gran says in Cornish.',
+        'Would you mind awfully giving the globe to Mrs Ortiz? Dhanyavad, as we say at home in '
+        'Pune.',
+        "Bob's been up the steeplejack's ladder since dawn, and what he needs most is the crisps.",
+        'Our saxophonist, Person A, is after the chips, while Person B has her heart set on the '
+        'bottle.',
+        "They each want something: the chips are what Person A's been craving, the bottle is what "
+        "Person B asked for.",
+        'Person A would love the bottle, if you can manage it, the lumberjacks drank all the '
+        'water.',
+        'The one thing Person A needs at the moment is that bottle.',
+        'Person B keeps asking for the bottle, and Person A has a fancy for the chips, says the '
+        'caddie.',
+        'Tom needs the barcode scanner before he heads off on his round.',
+        "The bottle's Bob's to take out on the trawler; the crisps, Alice's.",
+        "The bottle's for Person A; once she has it, the chips are hers as well.",
+        "Person A's getting the bottle off you, and Person B the chips, the percussionist reckons.",
+        'Chips first, to Person A. Bottle next. Same person, Person A, the clarinettist.',
+        "The chips. Person B's. Off you go.",
+        "Chips for Person B then bottle for Person A then it's tea break.",
+        'Sam wants the red pen he told me so this morning and Priya wants the stapler.',
+        "The drill is Jess's, the torch goes in the locker, and that's the lot.",
+        "Bob isn't fussy: one of the mugs, doesn't matter which, as long as it's clean.",
+        "One each for Alice and Bob out of the crisps and the bottle, I'm not fussed who ends up "
+        "with what.",
+        'Whichever of the two you can reach first, the bottle or the chips, hand it across to '
+        'Person B.',
+        "Each of them gets one of the two things, the bottle and the chips, I don't mind how.",
+        "Person A and Person B both want the chips; give them to either one, I'm not bothered.",
+        "Either cup for Dana, whichever one's clean.",
+        "One blanket apiece for the two patients, I'll let you choose which goes where.",
+        "Either block to Lily, she'll chew whichever you hand her.",
+        "Person B's packing for the lobster boat, so all four of the things on the table go to "
+        "her.",
+        "Person A's taking three things home with her, namely the bottle, the chips and the cup.",
+        'Person B gets the two things to drink from, the bottle and the cup.',
+        'The pair of items on the table both go to Person B.',
+        'Person A and Person B get a single item apiece out of the two on the table, you pick.',
+        "Person A, our hygienist, wants that bottle, and there's only the one, so no mix-ups.",
+        'The two cups both want washing, so into the sink with the pair of them.',
+        'The three boxes, small, medium and large, all go on the belt for the stevedores.',
+        'Lena wants the pair of plates, the white one and the blue one, for table six.',
+        'Two students, two books: Noah takes the red one and Zoe gets the green one.',
+        'Both of the spanners, large and small, go away in the locker tonight.',
+        "Alice can take whatever's here apart from the crisps, she's off crisps this week.",
+        "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
+        "Hand Person A the chips; she doesn't want the apple.",
+        'The chips are for Person B; the bottle stays put, leave it alone.',
+        "The bottle is for Person A alone, Person B shouldn't get it.",
+        "Only the bottle, nothing else, goes to Person A, she's the arborist on call.",
+        "No need to set the bottle down first, just pass it right into Person A's hand.",
+        "Person B gets the other thing, the one that isn't the bottle, malo aupito.",
+        'Omar would like a cup, any cup except the green one.',
+        "Mrs Khan's blanket is the one that isn't grey, please take it to her.",
+        'Every box bar the large one needs to go on the belt, the stevedores will sort the rest.',
+        "Ava gets the teddy, and no, not Lily, she's had hers.",
+        'Give the bottle to Person, er, Person A, the only one here.',
+        "Put the bottle on, oh wait, there's no shelf, just give it to Person A.",
+        "Notebook to Sam, no, to Priya, Sam's got one.",
+        "Hammer to Kofi, no, to Jess, Kofi's got his own.",
+        'bob could do with the crisps, zikomo',
+        "the chips are person b's, give them over please",
+        'bowl and spoon both on the tray when you clear up',
+        'The criisps need to go up on the shelf before the caddies raid them.',
+        'Pperson B is having the cup, mesi anpil.',
+        'Person B is asking where the cips have got to, can you hand them over?',
+        "Take the bottle over to Oerson A, she's the steeplejack having a break.",
+        'Persog A wants her bottle back from you before the accordion lesson.',
+        'The spnoge is dripping, pop it in the sink please.',
+        'Put the maagzine on the locker for Mr Lee to read after his nap.',
+        'Any chance the blue mug could find its way over to Alice?',
+        "Don't suppose you could pass Person B the apple? She's starving.",
+        'Be good if Person A could get the bottle off you, could you manage that?',
+        'Shall we say the chips go to Person A and the bottle goes to Person B?',
+        'Would it be a bother to add the small box to the pallet?',
+        'Would you stack the white plate on the rack next to the blue one?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -661,9 +740,10 @@ KNOWN_UNCLEAR = frozenset(
 # in session 30: asserted now, the rest in KNOWN_MISSES; "blind29" written in session 30 by
 # another engineer and committed alone, reviewed by a second one, measured once at the end of
 # session 30, tuned on in session 31: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
-# "blind30" written in session 31 by another engineer and committed alone, measured once at the
-# end of session 31: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind30"})
+# "blind30" written in session 31 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 31, tuned on in session 32: asserted now, the rest in
+# KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -111,7 +111,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 30; tuned on
 # in session 31), blind30 (written in session 31 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 31; tests do not assert it).
+# 31; tuned on in session 32).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
