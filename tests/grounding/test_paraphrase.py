@@ -333,7 +333,6 @@ KNOWN_MISSES = frozenset(
         "Kofi's after whichever spanner isn't already on the workbench.",
         "Alice needs a mug, but the red one's got a crack, so not that one.",
         "Person B can have anything except the apple.",
-        "The tape to Mia, no hang on, Tom, Mia's on her break.",
         "Bib to Ava, oh no, she's too big for bibs, to Lily.",
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
@@ -462,7 +461,6 @@ KNOWN_MISSES = frozenset(
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
-        'chios for Person B lah, she asked me just now',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
@@ -487,7 +485,6 @@ KNOWN_MISSES = frozenset(
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
-        "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'All four items: cup and apple to Person A, bottle and chips to Person B.',
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
