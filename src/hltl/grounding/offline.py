@@ -30,7 +30,6 @@ from hltl.grounding.normalise import (
     one_person,
     order_colons,
     people_named,
-    repaired32s,
     rewritten19,
     trades29,
     trades31,
@@ -323,7 +322,6 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
-        text = repaired32s(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
