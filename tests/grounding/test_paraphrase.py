@@ -61,11 +61,9 @@ KNOWN_MISSES = frozenset(
         # knife") may ask for it or pick someone out by it, so it is not dropped
         "Bob is upset about the cup, so give him the apple",
         "Lena, who has the knife, wants the lemon",
-        # blind9 (tuned on in session 11): corrections said three times over ("No wait, … Actually
-        # no, grandpa's right, …"; "Jess - no, Kofi - no, Jess after all"): which one stands is
-        # not read
-        "Give grandpa the teddy. No wait, give Lily the teddy. Actually no, grandpa's right, give "
-        "it to him.",
+        # blind9 (tuned on in session 11): corrections said three times over ("Jess - no, Kofi -
+        # no, Jess after all"): which one stands is not read ("… Actually no, grandpa's right,
+        # give it to him." reads since session 32, 12s: the statement keeps only whom it is about)
         "the drill goes to Jess - no, Kofi - no, Jess after all",
         # blind9: a long dictated run-on of remarks naming the people again and again ('her' is
         # Lily or Grandad?); "So the thing is Jess is up a ladder …" (a remark of several clauses)
@@ -237,7 +235,6 @@ KNOWN_MISSES = frozenset(
         "The small and medium boxes, the two little ones, onto the pallet.",
         "Marco needs his tongs, just the one pair.",
         "Both of the mugs are Alice's, give her the pair.",
-        "Poor Mr Lee is cold, pet, let him have the blue blanket and the grey one as well.",
         "Two things each: the bottle and cup to Person A, the chips and apple to Person B.",
         "That one bottle, over to Person A, quick as you can.",
         "Bob gets the lot, just leave the two mugs where they are.",
@@ -269,7 +266,6 @@ KNOWN_MISSES = frozenset(
         "as well thanks",
         "okay so Person A's having the cup and the apple's going over to Person B off you go",
         "okay listen the chips are for Person A the bottle's for Person B got it",
-        "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
         "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
         "Either book can go on the desk, I just need one out for the lesson.",
         "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
@@ -309,7 +305,6 @@ KNOWN_MISSES = frozenset(
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
         "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
@@ -428,7 +423,6 @@ KNOWN_MISSES = frozenset(
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
-        "Person A's over there mending the nets. Take her the bottle, will you.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
         "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
@@ -565,7 +559,6 @@ KNOWN_MISSES = frozenset(
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it.",
-        'Aluce is back from the dive, hand her the bottle.',
         'The forester left the bottle out; put it on the shrlf.',
         'Omsr needs the spoon to stir his samples.',
         "Ruth has asked for the thermomrter, the ward's too warm.",

@@ -15,6 +15,7 @@ from tests.grounding.helpers import (
     KITCHEN,
     NURSERY,
     ROOT,
+    WARD,
     assert_reads,
     assert_refused,
 )
@@ -219,3 +220,48 @@ def test_a_statement_after_the_request_is_taken_off(text: str, want: str, scene:
 )
 def test_a_statement_that_could_change_the_request_is_not_taken_off(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- a statement about one person opening the instruction (normalise.py _opening_state32s) -------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # blind19, blind20, blind22, blind27: the statement kept for the words the grammar reads
+        # ('nothing', 'since', 'there', 'from'), and the pronoun after it had no one to mean
+        (
+            "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
+            "apple>B ; chips>B",
+            "grounding_cell",
+        ),
+        ("Poor Bob hasn't eaten since six. Could he get the crisps off you.", "chips>B", "fig1"),
+        (
+            "Person A's over there mending the nets. Take her the bottle, will you.",
+            "bottle>A",
+            "1-2",
+        ),
+        ("Alice is back from the dive, hand her the bottle.", "bottle>A", "two_arms"),
+    ],
+)
+def test_a_statement_opening_the_instruction_names_the_pronouns_person(
+    text: str, want: str, scene: str
+) -> None:
+    assert_reads(text, want, load_scene(ROOT / f"examples/scenes/{scene}.yaml"))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Bob wants nothing from the shelf. Give him the apple.",  # a want, a surface
+        "Bob's had nothing since breakfast. Give him the apple and Alice the cup.",  # a person
+        "Bob's been sitting by the cup since breakfast. Give him the apple.",  # an object
+        "Bob's had nothing but the cup. Give him the apple.",  # an object, 'but'
+    ],
+)
+def test_a_statement_that_could_say_more_keeps_the_pronoun_unresolved(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+def test_a_statement_about_someone_a_title_rules_out_stays() -> None:
+    assert_refused("Mr Lee's had nothing since breakfast. Give her the jug.", WARD)

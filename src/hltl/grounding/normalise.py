@@ -16811,6 +16811,57 @@ def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
     return f"{before.rstrip()}{m['end'] or '.'}"
 
 
+# Session 32 (12s): a statement about one person opening the instruction, then a request whose
+# person is a pronoun ("Bob's had nothing since breakfast. Give him the apple, then the crisps.",
+# "Person A's over there mending the nets. Take her the bottle, will you.")
+_OPENING_STATE32S = re.compile(
+    r"^(?P<lead>(?:(?:oh|so|well|right|okay|ok)\s*,?\s+)*)(?:poor\s+)?(?P<who>[A-Za-z][\w]*(?: "
+    r"[A-Za-z][\w]*)?)(?P<verb>'s|\s+(?:is|has|hasn't|has not|was|wasn't|isn't|is not|had|looks|"
+    r"seems))\b(?P<words>[^.;!?,]*?)(?P<stop>[.;!]+\s+|,\s+(?=(?:so\s+)?(?:could|can|would|will|"
+    r"please|give|hand|pass|bring|take|get|let|pop|put)\b))(?P<rest>\S.*)$",
+    _F,
+)
+# words that would make the statement ask or say something of an object
+_OPENING_HELD32S = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "send", "fetch", "get"),
+        *("gets", "got", "want", "wants", "wanted", "wanting", "need", "needs", "needed"),
+        *("needing", "like", "likes", "fancy", "fancies", "after", "asked", "asking", "it"),
+        *("them", "that", "those", "these", "this", "one", "ones", "both", "either", "any"),
+        *("which", "whichever", "whatever", "mine", "yours", "hers", "his", "theirs", "ours"),
+        *("too", "also", "instead", "or", "and", "but", "if", "unless", "then", "first"),
+        *("later", "tomorrow", "tonight", "wait", "until", "till", "i", "me", "my", "we", "us"),
+    }
+)
+
+
+def _opening_state32s(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12s): a statement about one person opening the instruction, before a request
+    whose only person is a he / him / she / her (above), is 'P is waiting.' — who it is about
+    kept, for the pronoun; what it says of them goes. Session 21's remarks drop such a statement
+    only when every word of it is one the grammar does not know ('Bob's hungry.'): 'nothing',
+    'since', 'from', 'there', a negation had kept it, and the pronoun had no one to mean. Only
+    when the statement names nothing else in the scene and holds none of _OPENING_HELD32S (a
+    want, a hand-over, a word pointing at a thing, a choice, a time, the speaker), the request
+    names no person, and the person's title does not rule the pronoun out."""
+    m = _OPENING_STATE32S.match(text)
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    pid = next(iter(_ids(m["who"], lexicon)))
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["words"].lower())
+    if any(w in _OPENING_HELD32S or w.split("'")[0] in _OPENING_HELD32S for w in words):
+        return text
+    if _ids(m["words"], lexicon) or _ids(m["rest"], lexicon, "human"):
+        return text
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", m["rest"], _F)}
+    if not pronouns or any(title_sex(pid, lexicon) not in (None, PRONOUN_SEX[p]) for p in pronouns):
+        return text
+    if len({PRONOUN_SEX[p] for p in pronouns}) > 1:
+        return text  # 'he' and 'she': two people
+    stop = ". " if m["stop"].strip() != "," else ", "
+    return f"{m['lead']}{m['who']} is waiting{stop}{m['rest']}"
+
+
 _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _will_do31s,
     _both_of31s,
@@ -16818,7 +16869,7 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _negated_reason31s,
     _said_otherwise31s,
 )
-_STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s,)
+_STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
