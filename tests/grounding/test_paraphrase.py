@@ -442,7 +442,6 @@ KNOWN_MISSES = frozenset(
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
         "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",

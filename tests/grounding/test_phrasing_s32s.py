@@ -222,6 +222,31 @@ def test_a_statement_that_could_change_the_request_is_not_taken_off(text: str) -
     assert_refused(text, CELL)
 
 
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind22: between a request taken back and the one that replaces it
+        ("Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.", "jug>B"),
+        ("Give Mr Lee the jug, he's parched, and take the pills to Mrs Khan.", "jug>B & pills>C"),
+    ],
+)
+def test_a_statement_between_two_requests_is_taken_off(text: str, want: str) -> None:
+    assert_reads(text, want, WARD)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # 'he' is not Mrs Khan: it may be Mr Lee, who is to get the jug
+        "Don't take the jug to Mrs Khan, he's nil by mouth, take it to Mr Lee.",
+        "Don't take the jug to Mrs Khan, she's had it, take it to Mr Lee.",  # 'had', 'it'
+        "Don't take the jug to Mrs Khan, she's on the trolley, take it to Mr Lee.",  # a surface
+    ],
+)
+def test_a_statement_between_requests_that_could_matter_stays(text: str) -> None:
+    assert_refused(text, WARD)
+
+
 # -- a statement about one person opening the instruction (normalise.py _opening_state32s) -------
 
 

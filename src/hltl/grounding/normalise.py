@@ -16775,29 +16775,53 @@ def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
     """Session 32 (12s): a statement after the request, closing the instruction, about the
     person it names, someone else or the speaker ("…, she's been out on the water all day?",
     "…, he's the only tenor we've got?", "…, she's doing the X-ray rounds next.", "…, his lines
-    are all over the place."), is taken off when it holds none of the words that could say
-    something of the request (_TRAILING_HELD32S: a negation, choice, count, time, correction,
-    want, hand-over, or a word pointing at a thing), no word of the scene's names but the
-    people the request names, and the request before it names an object. Session 21's
-    reasons and session 29's remarks keep such a statement for the speaker's words ('we',
-    'me') or a word the grammar reads; those were refused. A he / she the request's person
-    cannot be is checked where the rewrite is read (offline.py _ruled_out_dropped31s)."""
+    are all over the place."), is taken off when it is inert (_inert_statement32s); so is one
+    between commas after a request and before another that opens on its verb ("Don't take the
+    jug to Mrs Khan, she's nil by mouth, take it to Mr Lee."). Session 21's reasons and session
+    29's remarks keep such a statement for the speaker's words ('we', 'me') or a word the grammar
+    reads; those were refused. A he / she the request's person cannot be is checked where the
+    rewrite is read (offline.py _ruled_out_dropped31s)."""
     m = _TRAILING32S.search(text)
-    if m is None:
-        return text
-    before, said = text[: m.start()], m["said"]
+    if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
+        return f"{text[: m.start()].rstrip()}{m['end'] or '.'}"
+    m = _BETWEEN32S.search(text)
+    if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
+        return f"{text[: m.start()]},{text[m.end() :]}"
+    return text
+
+
+# such a statement between commas, before a request that opens on its verb
+_BETWEEN32S = re.compile(
+    r"(?P<cut>,\s*(?P<said>(?P<who>(?i:he|she|they|(?:his|her|their) [a-z]+)|[A-Z][a-z]+(?: [A-Z]"
+    r"[a-z]+)?)(?P<pred>(?:'s|'re|\s+(?:is|are|was|were|has|have|had|will|would))\b[^,.;!?]*))"
+    r"\s*,)(?=\s*(?:and\s+|so\s+|just\s+)?(?i:give|hand|pass|bring|take|put|place|pop|send|move)"
+    r"\b)"
+)
+
+
+def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool:
+    """Whether the statement ``m`` matched (its 'said', 'pred') after the request ``before``
+    holds none of the words that could say something of the request (_TRAILING_HELD32S: a
+    negation, choice, count, time, correction, want, hand-over, or a word pointing at a thing;
+    'all day', 'since seven' are its own times), no word of the scene's names but those of the
+    people the request names, a he / she one of those people may be, and the request names an
+    object."""
     pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
     if any(
         w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
         for w in words
     ) or re.match(r"(?:'s|'re|\s+is|\s+are)\s+(?:up\s+)?next\b", pred):
-        return text  # "…, Alice is next": next for something
+        return False  # "…, Alice is next": next for something
     if not _ids(before, lexicon, "object"):
-        return text
+        return False
     request_people = _ids(before, lexicon, "human")
+    said = m["said"]
     if not _ids(said, lexicon, "human") <= request_people or _ids(said, lexicon) - request_people:
-        return text
+        return False
+    for pronoun in re.findall(r"\b(?:he|she|his|her)\b", said.lower()):
+        if not any(title_sex(p, lexicon) in (None, PRONOUN_SEX[pronoun]) for p in request_people):
+            return False  # "Don't take the jug to Mrs Khan, he's nil by mouth, …": who is he?
     names = _scene_words29(lexicon) - {
         w
         for p in request_people
@@ -16806,9 +16830,7 @@ def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
         for n in (h.id, h.name, *h.aliases)
         for w in n.lower().split()
     }
-    if any(w.split("'")[0] in names for w in words):
-        return text
-    return f"{before.rstrip()}{m['end'] or '.'}"
+    return not any(w.split("'")[0] in names for w in words)
 
 
 # Session 32 (12s): a statement about one person opening the instruction, then a request whose
