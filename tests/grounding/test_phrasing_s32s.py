@@ -172,8 +172,10 @@ def test_a_pronoun_in_a_scene_of_one_person_is_that_person(text: str) -> None:
 @pytest.mark.parametrize(
     ("text", "said"),
     [
-        # blind30's steeplejack entry: 'Oerson A' names no one the scene holds
-        ("Take the bottle over to Oerson A, she's the steeplejack having a break.", "Oerson A"),
+        # as blind30's steeplejack entry said it, with a name the scene does not hold ('Oerson A'
+        # there is read as a typo of 'Person A' since session 32, engineer 12)
+        ("Take the bottle over to Dorothy, she's the steeplejack having a break.", "Dorothy"),
+        ("Take the bottle over to Mrs Patel, she's waiting.", "Mrs Patel"),
         ("Tell Bob she can have the bottle.", "Bob"),
         ("give her the bottle, mrs jones said", "mrs jones"),
     ],
