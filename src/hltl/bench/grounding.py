@@ -111,7 +111,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 30; tuned on
 # in session 31), blind30 (written in session 31 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 31; tuned on in session 32).
+# 31; tuned on in session 32), blind31 (written in session 32 by another engineer and committed
+# alone, never opened by the engineers who change the grounder before its one measurement at the
+# end of session 32; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -159,6 +161,7 @@ PARTS = (
     "blind28",
     "blind29",
     "blind30",
+    "blind31",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
