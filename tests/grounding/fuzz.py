@@ -41,7 +41,12 @@ already or past ("What <person> doesn't need is …", "I'm told <person> has the
 "The last thing <person> wants is …"): refused; a want frame after a grounded entry adding a
 handover of an object it does not name (the entry's reading and that handover); and a person
 described between commas after their name in an entry ("Alice, our oboist, would like …"): as the
-entry, or refused.
+entry, or refused. A ninth family (session 32), repairs: an object or a person of an entry said
+after another one and a filler or a word of repair ("the cup, er, the chips", "Carol, sorry,
+Bob"), or a name begun and said again ("Person, er, Person A"): as the entry, or refused; an
+object left undecided between two ("the cup or, er, the chips, I forget which"): refused; and,
+for an entry of one task, another object added before its own with "and" ("the cup and, er, the
+chips"): that task of both objects, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -374,6 +379,38 @@ APPOSITIONS = ("our oboist", "the new intern", "my neighbour", "our bassoonist",
 # words after a name that an apposition before them would part from it ("Alice, our oboist, too")
 _HELD = frozenset(["too", "rather", "instead", "either", "first", "last", "as", "then", "only"])
 FRAME_FORMS = ("frame", "told", "not wanted", "frame tail", "apposition")
+# repairs (session 32; blind30 had "Give the bottle to Person, er, Person A, the only one here."
+# and "Notebook to Sam, no, to Priya, Sam's got one.", and the lead found "The magazine, er, the
+# jug, for Mr Lee." read as both): an object or a person of an entry said after another one and a
+# filler or a word of repair ("the cup, er, the chips", "Carol, sorry, Bob"), or a name begun and
+# said again ("Person, er, Person A"): the speaker repairs what they said, so it reads as the entry
+# (or refused); an object left undecided between two ("the cup or, er, the chips, I forget
+# which"): refused; and, for an entry of one task, another object added before its own with "and"
+# ("the cup and, er, the chips"): that task of both objects, or refused. {x} is what is said
+# first, {o} the entry's own words. A bare filler (FILLERS) is a repair only outside a list: in "the
+# cup, er, the chips and the apple" or "Carol, er, Bob or Alice" it may be a list said haltingly
+# (a careful person would read three), so there only a word of repair is said (``_in_list``); and
+# nothing is said after a negation ("not Jess, uh, no, Kofi" may undo the "not"; ``_NEGATED``).
+FILLERS = ("{x}, er, {o}", "{x}, um, {o}")
+REPAIRS = (
+    *FILLERS,
+    "{x}, sorry, {o}",
+    "{x}, I mean {o}",
+    "{x}, er, I mean {o}",
+    "{x}, no, sorry, {o}",
+    "{x}, uh, no, {o}",
+)
+UNDECIDED_REPAIRS = (  # refused: which object is left open
+    "{x} or, er, {o}, I forget which",
+    "{x}, or maybe {o}, I can't remember which",
+    "{x}, um, or {o}, not sure which",
+)
+ADDED_REPAIRS = ("{x} and, er, {o}", "{x}, oh, and {o}", "{x} and, um, {o}")
+STUTTERS = ("{x}, er, {o}", "{x}, um, {o}", "{x}... {o}")
+REPAIR_FORMS = ("object", "undecided", "added", "person", "stutter")
+_LIST_BEFORE = re.compile(r"(?i)(?:,|\band|\bor|&)\s*$")
+_LIST_AFTER = re.compile(r"(?i)^\s*(?:,\s*(?:the\b|[A-Z])|and\b|or\b|&|plus\b|nor\b)")
+_NEGATED = re.compile(r"(?i)\b(?:not|no|except|but|than|nor|without|bar|from)\s+$")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -383,6 +420,7 @@ Family = Literal[
     "asides",
     "afterthoughts",
     "frames",
+    "repairs",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -1053,6 +1091,104 @@ def frames(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         yield Variant(part, entry.scene, said, want, must, "frames", entry.readings, "apposition")
 
 
+def _in_list(text: str, at: re.Match[str]) -> bool:
+    """Whether the words ``at`` matched may be an item of a list ("the cup, the chips and …")."""
+    return bool(_LIST_BEFORE.search(text[: at.start()]) or _LIST_AFTER.match(text[at.end() :]))
+
+
+def _repair(text: str, at: re.Match[str], rng: random.Random) -> str:
+    """A form of REPAIRS for the words ``at`` matched: no bare filler in a list."""
+    return rng.choice([f for f in REPAIRS if not (f in FILLERS and _in_list(text, at))])
+
+
+def _said_once(text: str, scene: Scene, oid: str) -> re.Match[str] | None:
+    """The one place ``text`` says the object ``oid``, as "the <name>" (any case; not before a
+    possessive nor after a negation), where nothing else in it names the object; else None."""
+    items = lex(text, Lexicon.of(scene))
+    if sum(1 for it in items if it.kind == "ent" and any(r.id == oid for r in it.refs)) != 1:
+        return None
+    obj = next(o for o in scene.objects if o.id == oid)
+    names = sorted({*obj.aliases, oid.replace("_", " ")}, key=len, reverse=True)
+    found: list[re.Match[str]] = []
+    for name in names:
+        for m in re.finditer(rf"(?i)\b(the) ({re.escape(name)})\b(?!['’])", text):
+            if _objects_named(m[0], scene) == {oid} and not any(
+                f.start() <= m.start() < f.end() for f in found
+            ):
+                found.append(m)
+    if len(found) != 1 or _NEGATED.search(text[: found[0].start()]):
+        return None
+    return found[0]
+
+
+def _inserted(text: str, at: re.Match[str], form: str, x: str) -> str:
+    """``text`` with the words ``at`` matched said by ``form`` after ``x`` ("{x}, er, {o}"): a
+    form that ends in a remark ("…, I forget which") is closed by a comma before more words."""
+    said = at[0]
+    if said.startswith("The ") and x.startswith("the "):  # (the sentence's first word)
+        x, said = "The " + x[4:], "the " + said[4:]
+    put = form.format(x=x, o=said)
+    rest = text[at.end() :]
+    if form.endswith("which") and rest and not re.match(r"\s*[,.!?;]", rest):
+        put += ","
+    return text[: at.start()] + put + rest
+
+
+def _proper_name(scene: Scene, hid: str) -> str | None:
+    """A name of the person ``hid`` in capitals ("Bob", "Mr Lee") no other shares, or None."""
+    h = next(h for h in scene.humans if h.id == hid)
+    shared = {a for x in scene.humans if x.id != hid for a in x.aliases}
+    return next((n for n in (*h.aliases, h.name) if n[:1].isupper() and n not in shared), None)
+
+
+def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The repair variants of one entry. For a grounded entry saying one object it moves once as
+    "the <name>": that object said after a one-of-a-kind object the entry does not name and a
+    repair (REPAIRS: the entry), and left undecided between the two (UNDECIDED_REPAIRS: refused).
+    For a grounded entry of one task saying no pronoun: the other object added before its own with
+    "and" (ADDED_REPAIRS: that task of both). For an entry saying a person by a name and no
+    pronoun: that name said after another person's the entry does not name and a repair (REPAIRS:
+    the entry, or refused with its readings), and a name of two words begun and said again
+    (STUTTERS: the same). No bare filler in a list, nothing after a negation (see FILLERS)."""
+    text = entry.text.strip()
+    want = entry.want
+    pronoun = bool(_words(text) & (_PRONOUNS | {"it", "its"}))
+
+    def variant(said: str, to: Node | None, form: str) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, said, to, must, "repairs", entry.readings, form)
+
+    if want is not None:
+        named = _objects_named(text, scene) | {t.obj for t in tasks(want)}
+        free = [x for x in _unique_objects(scene) if x not in named]
+        spots = [
+            m for oid in sorted({t.obj for t in tasks(want)}) if (m := _said_once(text, scene, oid))
+        ]
+        if free and spots:
+            at, xid = rng.choice(spots), rng.choice(free)
+            x = "the " + _name(scene, xid)
+            yield variant(_inserted(text, at, _repair(text, at, rng), x), want, "object")
+            yield variant(_inserted(text, at, rng.choice(UNDECIDED_REPAIRS), x), None, "undecided")
+            if isinstance(want, Task) and not pronoun:
+                both = Group("and", (Task(want.kind, xid, want.target), want))
+                yield variant(_inserted(text, at, rng.choice(ADDED_REPAIRS), x), both, "added")
+    if pronoun:
+        return
+    people = _people_said(text, scene)
+    said_at = [m for m in people if not _NEGATED.search(text[: m.start()])]
+    met = _named(text, scene, "human").union(*(_named(m[0], scene, "human") for m in people))
+    others = [q for h in scene.humans if h.id not in met and (q := _proper_name(scene, h.id))]
+    if said_at and others:
+        at, q = rng.choice(said_at), rng.choice(others)
+        yield variant(_inserted(text, at, _repair(text, at, rng), q), want, "person")
+    long = [m for m in said_at if " " in m[0]]
+    if long:
+        at = rng.choice(long)
+        yield variant(
+            _inserted(text, at, rng.choice(STUTTERS), at[0].split(" ")[0]), want, "stutter"
+        )
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -1125,6 +1261,7 @@ def generated(
     rng_aside = random.Random(f"asides:{seed}")
     rng_after = random.Random(f"afterthoughts:{seed}")
     rng_frames = random.Random(f"frames:{seed}")
+    rng_repairs = random.Random(f"repairs:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1154,6 +1291,9 @@ def generated(
                     yield v, scene
             if "frames" in families:
                 for v in frames(part, entry, scene, rng_frames):
+                    yield v, scene
+            if "repairs" in families:
+                for v in repairs(part, entry, scene, rng_repairs):
                     yield v, scene
 
 

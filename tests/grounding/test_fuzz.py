@@ -14,7 +14,10 @@ after an entry: the entry; its count of handovers restated: the entry; miscounte
 the frame family of session 31 (an entry's one handover said as a want in a frame or as a want the
 speaker was told of: that handover; negated, had or past: refused; a frame after an entry adding a
 handover: the entry and that handover; a person described between commas after their name: the
-entry), and the wrappers and take-backs of a seed unchanged by them."""
+entry), the repair family of session 32 (an entry's object or person said after another and a
+filler or a word of repair, or a name begun and said again: the entry; an object left undecided
+between two: refused; another object added with "and": that task of both), and the wrappers and
+take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -23,7 +26,7 @@ import re
 
 import pytest
 
-from hltl.bench.grounding import Entry, parse_expectation
+from hltl.bench.grounding import CORPUS_DIR, Entry, load_corpus, parse_expectation
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene, load_scene, scene_from_dict
@@ -198,7 +201,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts', 'frames')" in err
+    assert "'asides', 'afterthoughts', 'frames', 'repairs')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -999,4 +1002,215 @@ def test_over_the_corpus_each_frame_variant_names_what_it_says() -> None:
         else:
             names = [m[0] for m in fuzz._people_said(v.text, scene)]
             assert names == [m[0] for m in fuzz._people_said(_without_apposition(v.text), scene)]
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- repairs (session 32) -------------------------------------------------------------------------
+
+
+def _repairs(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.repairs("t", entry, scene, random.Random(seed)))
+
+
+def _unrepaired(text: str, forms: tuple[str, ...]) -> list[tuple[str, str]]:
+    """Every way ``text`` may say one of ``forms`` around words of it: the text with the form's
+    ``{o}`` alone in its place (and without a comma after it, which may close a remark), each
+    with its ``{x}``."""
+    out = []
+    for form in forms:
+        pattern = re.escape(form).replace(re.escape("{x}"), "(?P<x>[^,.]+?)")
+        pattern = pattern.replace(re.escape("{o}"), "(?P<o>[^,.]+?)")
+        for start in range(len(text)):
+            m = re.compile(pattern).match(text, start)
+            if m is None:
+                continue
+            ends = range(m.end("o"), len(text) + 1) if form.endswith("{o}") else [m.end()]
+            for end in ends:
+                o = text[m.start("o") : m.end("o") if end == m.end() else end]
+                if m["x"].startswith("The ") and o.startswith("the "):
+                    o = "The " + o[4:]  # (the sentence's first word)
+                rest = text[end:]
+                out.append((text[:start] + o + rest, m["x"]))
+                if form.endswith("which") and rest.startswith(","):
+                    out.append((text[:start] + o + rest[1:], m["x"]))
+    return out
+
+
+def _is_repair_of(v: fuzz.Variant, entry: Entry, forms: tuple[str, ...]) -> str:
+    """The words said before the entry's own (the ``{x}`` of ``forms``) where taking them out of
+    ``v``'s text with the form's words gives back the entry's text; fails otherwise."""
+    for said, x in _unrepaired(v.text, forms):
+        if said == entry.text:
+            return x
+    raise AssertionError(f"{v.text!r} is not {entry.text!r} said by one of {forms}")
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_one_handover_gets_every_repair(seed: int) -> None:
+    entry = _entry("cell", "Give Person B the apple, please.", "apple>B")
+    made = _repairs(entry, CELL, seed)
+    assert [v.form for v in made] == list(fuzz.REPAIR_FORMS)
+    obj, undecided, added, person, stutter = made
+    for v in made:
+        assert v.family == "repairs" and (v.must == "refuse") is (v.want is None)
+    # an object said first and repaired to the entry's: the entry
+    x = _is_repair_of(obj, entry, fuzz.REPAIRS)
+    assert obj.want == entry.want and x.startswith("the ")
+    xid = _one_object(x, CELL)
+    assert xid != "apple" and xid in fuzz._unique_objects(CELL)
+    # left undecided between the two: refused
+    x = _is_repair_of(undecided, entry, fuzz.UNDECIDED_REPAIRS)
+    assert undecided.want is None and _one_object(x, CELL) != "apple"
+    # another object added with "and": both
+    x = _is_repair_of(added, entry, fuzz.ADDED_REPAIRS)
+    both = Group("and", (Task("deliver", _one_object(x, CELL), "B"), Task("deliver", "apple", "B")))
+    assert added.want == both
+    # another person said first and repaired to the entry's: the entry
+    q = _is_repair_of(person, entry, fuzz.REPAIRS)
+    assert person.want == entry.want and _one_person(q, CELL) in ("A", "C")
+    assert "Person B" in person.text
+    # a name begun and said again: the entry
+    assert _is_repair_of(stutter, entry, fuzz.STUTTERS) == "Person"
+    assert stutter.want == entry.want
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # a name of one word: no stutter
+        ("Give Bob the apple.", "apple>B", {"object", "undecided", "added", "person"}),
+        # two tasks: nothing added
+        ("Give Bob the apple and the cup.", "apple>B & cup>B", {"object", "undecided", "person"}),
+        # a pronoun: nothing added, no person repaired
+        ("Give Bob the apple, he wants it.", "apple>B", {"object", "undecided"}),
+        # the object said without "the": no object repaired
+        ("Apple to Bob.", "apple>B", {"person"}),
+        # the object said twice: no object repaired
+        ("The apple to Bob, the apple.", "apple>B", {"person"}),
+        # every person named: none to say first
+        (
+            "Give Alice the cup, Bob the apple and Carol the bottle.",
+            "cup>A & apple>B & bottle>C",
+            {"object", "undecided"},
+        ),
+        # refused: only the person, refused
+        ("Give Bob the mug.", None, {"person"}),
+        # no name and no object said by "the": nothing
+        ("Give her a mug.", None, set()),
+    ],
+)
+def test_a_repair_is_only_made_where_it_says_what_it_must(
+    text: str, want: str | None, forms: set[str]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(10):
+        made = _repairs(entry, CELL, seed)
+        assert {v.form for v in made} == forms
+        for v in made:
+            assert (v.want is None) is (v.form == "undecided" or want is None)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "filler"),
+    [
+        ("Give Bob the apple.", "apple>B", True),
+        # in a list: a filler may be a list said haltingly, so only a word of repair
+        ("Give Bob the apple and the cup.", "apple>B & cup>B", False),
+        ("Give Bob the cup, the apple.", "cup>B & apple>B", False),
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", False),
+        ("Give Bob the apple, the cup too.", "apple>B & cup>B", False),
+    ],
+)
+def test_a_bare_filler_is_said_only_outside_a_list(text: str, want: str, filler: bool) -> None:
+    """(The object's; Bob, said alone, may be repaired with a filler in each.)"""
+    entry = _entry("cell", text, want)
+    fillers = set()
+    for seed in range(60):
+        for v in _repairs(entry, CELL, seed):
+            if v.form == "object":
+                fillers.add(bool(re.search(r", (?:er|um), (?!I mean)", v.text)))
+    assert fillers == ({True, False} if filler else {False})
+
+
+def test_nothing_is_repaired_after_a_negation_nor_to_a_person_the_entry_names() -> None:
+    entry = _entry("cell", "Give Bob the cup, not Alice, and not the apple.", "cup>B")
+    for seed in range(30):
+        for v in _repairs(entry, CELL, seed):
+            assert "not Alice," in v.text and "not the apple." in v.text
+            if v.form == "person":
+                assert re.search(r"Give Carol, .*Bob the cup", v.text), v.text
+    # an object after a negation: not repaired
+    entry = _entry("cell", "Give Bob nothing but the cup.", "cup>B")
+    assert {v.form for seed in range(30) for v in _repairs(entry, CELL, seed)} == {"person"}
+    # a name the lexer misses in the whole sentence ("Person B is after"): still named
+    text = "For the ghillie's picnic, Person A needs the apple while Person B is after the cup."
+    entry = _entry("cell", text, "apple>A & cup>B")
+    for seed in range(30):
+        for v in _repairs(entry, CELL, seed):
+            if v.form == "person":
+                assert "Carol, " in v.text and not {"Alice", "Bob"} & set(v.text.split())
+
+
+def test_a_repair_keeps_the_sentence_case_and_a_remark_is_closed_by_a_comma() -> None:
+    entry = _entry("cell", "The apple goes to Bob.", "apple>B")
+    texts = {v.form: v.text for seed in range(20) for v in _repairs(entry, CELL, seed)}
+    assert re.match(r"The \w+.*, the apple goes to Bob\.$", texts["object"])
+    assert re.match(r"The \w+.*(which|which,) goes to Bob\.$", texts["undecided"])
+    assert texts["undecided"].endswith("which, goes to Bob.")
+    entry = _entry("cell", "Give Bob the apple", "apple>B")
+    for seed in range(20):
+        for v in _repairs(entry, CELL, seed):
+            if v.form == "undecided":
+                assert v.text.endswith("which"), v.text
+
+
+def test_a_refused_entry_stays_refused_with_its_readings() -> None:
+    entry = Entry("cell", "Give Bob the mug.", None, ("mug_red", "mug_blue"))
+    (v,) = _repairs(entry, CELL, 3)
+    assert v.form == "person" and v.must == "refuse" and v.readings == entry.readings
+    assert fuzz.verdict(v, CELL) in ("refused", "unclear")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("Give Bob the cup, I mean the chips.", "chips>B", "exact"),
+        ("Give Bob the cup, I mean the chips.", "cup>B & chips>B", "wrong"),
+        ("Give Bob the cup and the chips.", "chips>B", "wrong"),
+        ("Give Bob the cup or, er, the chips, I forget which.", None, "refused"),
+    ],
+)
+def test_a_repair_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    assert _judged(text, want, "repairs", "object") == verdict
+
+
+def test_over_the_corpus_each_repair_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.REPAIR_FORMS, 0)
+    said = {
+        "object": fuzz.REPAIRS,
+        "person": fuzz.REPAIRS,
+        "stutter": fuzz.STUTTERS,
+        "undecided": fuzz.UNDECIDED_REPAIRS,
+        "added": fuzz.ADDED_REPAIRS,
+    }
+    for part in PARTS:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        rng = random.Random(32)
+        for entry in corpus.entries[::2]:
+            scene = corpus.scenes[entry.scene]
+            for v in fuzz.repairs(part, entry, scene, rng):
+                assert v.family == "repairs" and (v.must == "refuse") is (v.want is None)
+                kinds[v.form] += 1
+                x = _is_repair_of(v, entry, said[v.form])
+                if v.form == "person":
+                    assert len(_people_named(x, scene)) == 1
+                    assert not _people_named(x, scene) & _people_named(entry.text, scene)
+                elif v.form != "stutter":
+                    assert len(fuzz._objects_named(x, scene)) == 1
+                    assert not fuzz._objects_named(x, scene) & fuzz._objects_named(
+                        entry.text, scene
+                    )
+                assert v.want == entry.want or v.form in ("undecided", "added")
     assert min(kinds.values()) >= 10, kinds

@@ -16581,6 +16581,990 @@ _STEPS31R: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 32 (12r): blind30's choices, counts, negation, exclusions and corrections ----------
+# As session 31's: each rule rewrites one construction into the form the grammar reads, and leaves
+# the text as it was when what the construction presupposes (a count the scene meets, one person,
+# the object named elsewhere in the text) does not hold; docs/grounding.md, "Session 32 (engineer
+# 12r)".
+
+
+def _one_object32r(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (an article aside) are one whole name of exactly one object."""
+    return _whole_name(words, lexicon, "object") and len(_ids(words, lexicon)) == 1
+
+
+_COUNT_WORDS32R = r"two|three|four|five|six|2|3|4|5|6"
+
+# "all four of the things on the table", "The pair of items on the table both", "the two things"
+_ALL_THINGS32R = re.compile(
+    rf"(?<!\bof )\b(?:all (?P<all>{_COUNT_WORDS32R})(?: of the)?|"
+    r"(?P<pair>the pair of|both of the)) (?:things|items|objects)"
+    r"(?P<loc> (?:on|at|in) the (?P<place>[a-z]+)| here| out)?"
+    r"(?P<rest> (?:both|all)(?= [a-z]))?",
+    _F,
+)
+
+
+def _all_things32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'all four of the things (on the table)', 'the pair of items on the
+    table (both)' is 'everything' when the count is the number of the scene's objects (two or
+    more) and the place said with it ('on the table', in passing: where they lie) is no surface
+    of the scene; a place the scene has, or a count it does not meet, leaves the text (refused)."""
+
+    if re.search(
+        r"\b(?:except|but|apart from|other than|bar|save|minus|excluding|not)\b", text, _F
+    ):
+        return text  # 'all four … except the cup' says two counts: left, refused
+
+    def every(m: re.Match[str]) -> str:
+        word = (m.group("all") or "two").lower()
+        count = int(word) if word.isdigit() else _COUNTS[word]
+        if count < 2 or count != len(lexicon.scene.objects):
+            return m[0]
+        place = m.group("place")
+        if place is not None and _names(place, lexicon):
+            return m[0]
+        return "everything"
+
+    return _sub(_ALL_THINGS32R.pattern, every, text)
+
+
+# "the two things to drink from, the bottle and the cup"
+_APPOSED_LIST32R = re.compile(
+    rf"\bthe (?P<n>{_COUNT_WORDS32R}) (?:things|items|objects|bits)(?P<desc>(?: [a-z]+){{1,4}}?)?"
+    r",\s*(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\s*|,? and )(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)+)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _apposed_list32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'the two things to drink from, the bottle and the cup' is 'the bottle
+    and the cup': the list after the comma says which things the count counted, when it names
+    that many different objects of the scene, each whole, and the words describing them name
+    nothing of the scene and no place (else left, refused: a count the list does not meet, or
+    'the two things on the shelf' in a scene without a shelf)."""
+    m = _APPOSED_LIST32R.search(text)
+    if m is None:
+        return text
+    items = [w for w in re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("list").strip()) if w]
+    n = m.group("n").lower()
+    want = int(n) if n.isdigit() else _COUNTS[n]
+    if len(items) != want or not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    ids = [_ids(w, lexicon, "object") for w in items]
+    if any(len(i) != 1 for i in ids) or len(set().union(*ids)) != want:
+        return text
+    desc = m.group("desc") or ""
+    if _names(desc, lexicon) or re.search(r"\b(?:on|in|at|by|under|near) the\b", desc, _F):
+        return text  # a place said of them, which the scene does not have: not checked
+    said = ", ".join(items[:-1]) + " and " + items[-1]
+    end = m.start("end")
+    if m.start() == 0 and m.group("end").strip() == ",":
+        end = m.end("end")  # the subject: the comma closes the apposition
+    return f"{text[: m.start()]}{said}{text[end:]}"
+
+
+# "The three boxes, small, medium and large, all go …"
+_APPOSED_ADJECTIVES32R = re.compile(
+    rf"\b(?:the (?P<n>{_COUNT_WORDS32R})|both(?: of the| the)?) (?P<noun>[a-z]+)s,\s*"
+    r"(?P<adj>(?:the )?[a-z]+(?:,\s*(?:the )?[a-z]+)*,? and (?:the )?[a-z]+)\s*,"
+    r"(?: (?:all|both)(?= [a-z]))?",
+    _F,
+)
+
+
+def _apposed_adjectives32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'the three boxes, small, medium and large, (all) go' is 'the small,
+    medium and large boxes go' (_adjectives_and31r's form, which checks that each adjective with
+    the noun names one different object), when the count is the number of adjectives ('both of
+    the spanners, large and small,' two)."""
+
+    def said(m: re.Match[str]) -> str:
+        adj = _sub(r"\bthe ", "", m.group("adj"))  # 'the green and the white'
+        adjectives = [a for a in re.split(r",\s*(?:and\s+)?|\s+and\s+", adj) if a]
+        n = (m.group("n") or "two").lower()
+        if len(adjectives) != (int(n) if n.isdigit() else _COUNTS[n]):
+            return m[0]
+        out = f"the {adj} {m.group('noun')}s"
+        rewritten = _adjectives_and31r(out, lexicon)
+        return rewritten if rewritten != out else m[0]
+
+    return _sub(_APPOSED_ADJECTIVES32R.pattern, said, text)
+
+
+# "Person A's taking the bottle and the cup home with her."
+_TAKEN_HOME32R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) taking (?P<x>(?:the|both|all|everything)\b[^;:.!?]*?) "
+    r"(?:home|away|back)(?: with (?P<pro>her|him|them))?(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _taken_home32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "P's taking X home (with her)" is "P's having X": P takes the things
+    away, so they go to P (P one person the pronoun fits, X the scene's objects only). Without
+    'home' / 'away' / 'back' 'taking' is the robot's verb ('take the cup to Bob') and is left."""
+    m = _TAKEN_HOME32R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    if x.lower() != "everything" and not _objects_only(x, lexicon):
+        return text
+    if _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    pid = next(iter(_ids(m.group("p"), lexicon)))
+    if m.group("pro") and not _fits(pid, m.group("pro"), lexicon):
+        return text
+    return f"{m.group('p')}'s having {x}{text[m.start('end') :]}"
+
+
+# "Person A and Person B get a single item apiece out of the two on the table"
+_APIECE_OUT_OF32R = re.compile(
+    r"\b(?:a single|one|just one) (?:item|thing|object) (?:apiece|each) out of the "
+    rf"(?P<n>{_COUNT_WORDS32R})(?: (?:things|items|objects))?(?: (?:on|at|in) the (?P<place>[a-z]+)"
+    r"| here)?(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+# "One each for Alice and Bob out of the crisps and the bottle"
+_ONE_EACH_FOR32R = re.compile(
+    r"^one(?: (?P<kind>[a-z]+))? (?:each|apiece) (?:for|to) (?P<p>[A-Za-z][\w ]*?) and "
+    r"(?P<q>[A-Za-z][\w ]*?) "
+    r"(?:out of|from) (?P<x>the [a-z ]+? and the [a-z ]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+# "One blanket apiece for the two patients"
+_ONE_APIECE_FOR32R = re.compile(
+    rf"^(?P<one>one|an?) (?P<x>[a-z]+) (?:apiece|each) for the (?P<n>{_COUNT_WORDS32R}) "
+    r"(?P<role>[a-z]+)s(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _apiece32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): the share-outs said with 'apiece' / 'each' and 'out of': 'P and Q get a
+    single item apiece out of the two (on the table)' is 'P and Q get one each' when the count
+    is the scene's objects and the place none of its surfaces; 'One (book) each for P and Q out
+    of X and Y' is 'Give P and Q one of X and Y each' (_split29r's reading: two objects, two
+    people; 'the red one' there the red book, and both books); 'One X apiece for the two Rs' is
+    'One X for each of the two Rs' (_each_of_n29r checks the role's count)."""
+
+    def one_each(m: re.Match[str]) -> str:
+        n = m.group("n").lower()
+        count = int(n) if n.isdigit() else _COUNTS[n]
+        if count != len(lexicon.scene.objects):
+            return m[0]
+        place = m.group("place")
+        if place is not None and _names(place, lexicon):
+            return m[0]
+        return "one each"
+
+    out = _sub(_APIECE_OUT_OF32R.pattern, one_each, text)
+    m = _ONE_EACH_FOR32R.match(out)
+    if m is not None:
+        x, kind = m.group("x"), m.group("kind")
+        if kind is not None:
+            if not _only_kind(kind, lexicon, "object"):
+                return out
+            x = _sub(r"\b(the [a-z]+) one\b", rf"\1 {kind}", x)  # 'the red one': the red book
+            if not _ids(x, lexicon, "object") <= _ids(kind, lexicon, "object"):
+                return out
+        split = f"Split {x} between {m.group('p')} and {m.group('q')}, one each"
+        if _split29r(split, lexicon) != split:
+            return f"Give {m.group('p')} and {m.group('q')} one of {x} each{out[m.start('end') :]}"
+    m = _ONE_APIECE_FOR32R.match(out)
+    if m is not None:
+        said = f"{m.group('one')} {m.group('x')} for each of the {m.group('n')} {m.group('role')}s"
+        if _each_of_n29r(said, lexicon) != said:
+            return f"{said}{out[m.start('end') :]}"
+    return out
+
+
+# what leaves the share-out to the robot, closing the text after a comma
+_YOU_PICK32R = re.compile(
+    r",\s*(?:you pick|you choose|your (?:pick|choice|call)|(?:i'll|i will) let you (?:choose|"
+    r"pick|decide)(?: which (?:goes|one goes) where| who gets (?:which|what))?|(?:i'm|i am) not "
+    r"(?:fussed|bothered|fussy) (?:who (?:ends up with|gets) (?:what|which))|(?:i )?don't mind "
+    r"(?:how|which way(?: round)?|who gets (?:what|which))|(?:i )?don't care (?:how|which way"
+    r"(?: round)?|who gets (?:what|which)))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _you_pick32r(text: str, _lexicon: Lexicon) -> str:
+    """Session 32 (12r): ', you pick', ", I'll let you choose which goes where", ", I'm not
+    fussed who ends up with what", ", I don't mind how" closing a share-out ('one each', 'one of
+    … each', 'for each of') leave the choice the share-out already is to the robot: taken off.
+    After anything else (a single request) they are left, refused."""
+    m = _YOU_PICK32R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    if not re.search(r"\bone each\b|\bone of\b.*\beach\b|\bfor each of\b|\beach of\b", head, _F):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "Each of them gets one of the bottle and the chips"
+_EACH_OF_THEM32R = re.compile(
+    r"^each of them (?:gets|takes|has|should get|can have) one of (?P<x>the [a-z ]+? and the "
+    r"[a-z ]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _each_of_them32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Each of them gets one of X and Y' opening a text that names no person
+    is the scene's people, when it has two and X and Y are two objects: 'Give Person A and
+    Person B one of X and Y each' (_split29r's reading). With more people (or a person named in
+    the text) 'them' is not the scene's pair and the text is left, refused."""
+    m = _EACH_OF_THEM32R.match(text)
+    humans = lexicon.scene.humans
+    if m is None or len(humans) != 2 or _ids(text, lexicon, "human"):
+        return text
+    p, q = (h.name or h.id for h in humans)
+    split = f"Split {m.group('x')} between {p} and {q}, one each"
+    if _split29r(split, lexicon) == split:
+        return text
+    return f"Give {p} and {q} one of {m.group('x')} each{text[m.start('end') :]}"
+
+
+# ", whichever one's clean", ", she'll chew whichever you hand her", ", as long as it's clean"
+_CHOICE_TAIL32R = re.compile(
+    r",\s*(?:whichever(?: one)?(?:'s| is) (?P<state>clean|free|handy|handier|nearer|closer|"
+    r"nearest|closest|dry|empty|spare)|(?:she|he|they)(?:'ll| will) (?:chew|use|take|have|like|"
+    r"play with|enjoy|be happy with) whichever(?: one)? you (?:hand|give|bring|pass) "
+    r"(?:her|him|them)|as long as it's (?:clean|dry|empty|not broken))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _choice_tail32r(text: str, _lexicon: Lexicon) -> str:
+    """Session 32 (12r): after a choice ('either cup', 'one of the mugs'), ", whichever one's
+    clean", ", she'll chew whichever you hand her", ", as long as it's clean" leave which one to
+    the robot: ', whichever' (the tail the grammar reads), and 'as long as …' is taken off after
+    'doesn't matter which' (which says the choice again). Without a choice before it the text
+    is left, refused."""
+    m = _CHOICE_TAIL32R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    if not re.search(r"\b(?:either|one of the|any of the|any one of the)\b", head, _F):
+        return text
+    if m[0].lstrip(", ").lower().startswith("as long"):
+        if not re.search(r"\b(?:doesn't|does not|don't) matter which\b", head, _F):
+            return text
+        return f"{head}{m.group('end') or '.'}"
+    return f"{head}, whichever{m.group('end') or '.'}"
+
+
+# "Person A and Person B both want the chips; give them to either one"
+_BOTH_WANT_EITHER32R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) (?:both )?(?:want|need|would like|are "
+    r"after)(?: both)? (?P<x>the [a-z ]+?)\s*[;,.:]\s*(?:so )?(?:just )?(?:give|hand|pass) "
+    r"(?:it|them) to either(?: one)?(?: of them)?(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _both_want_either32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'P and Q both want X; give it / them to either (one)' is 'Give X to P
+    or Q' (P and Q two people, X one object of the scene, the pronoun X again)."""
+    m = _BOTH_WANT_EITHER32R.match(text)
+    if m is None:
+        return text
+    p, q, x = m.group("p"), m.group("q"), m.group("x")
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)) or _ids(p, lexicon) == _ids(
+        q, lexicon
+    ):
+        return text
+    if not _one_object32r(x, lexicon):
+        return text
+    return f"Give {x} to {p} or {q}{text[m.start('end') :]}"
+
+
+def _reach_first32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Whichever (of the two) you can reach first, X or Y, hand it to P' is
+    _whichever_front31r's "Whichever's nearer, X or Y, …" (the robot's choice by reach; that
+    rule checks X, Y and the request)."""
+    out = _sub(
+        r"^whichever(?: (?:one|of the two|of them))? you can (?:reach|get to|grab) "
+        r"(?:first|soonest|easiest|more easily)\s*,",
+        "Whichever's nearer,",
+        text,
+    )
+    if out == text:
+        return text
+    said = _whichever_front31r(out, lexicon)
+    return said if said != out else text
+
+
+def _request_ids32r(head: str, lexicon: Lexicon) -> tuple[set[str], set[str]] | None:
+    """The objects and people a request names (None when it names none of either)."""
+    objects, people = _ids(head, lexicon, "object"), _ids(head, lexicon, "human")
+    return (objects, people) if objects and people else None
+
+
+# "; she doesn't want the apple.", ", Person B shouldn't get it."
+_NOT_WANTED32R = re.compile(
+    r"\s*[;,]\s*(?:but |and )?(?P<who>[A-Za-z][\w ]*?) (?:doesn't|does not|don't|do not) "
+    r"(?:want|need) (?P<x>(?:the|a|an|any) [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+_SHOULDNT_GET32R = re.compile(
+    r"\s*[;,]\s*(?:but |and )?(?P<who>[A-Za-z][\w ]*?) (?:shouldn't|should not|mustn't|must not|"
+    r"isn't to|is not to) (?:get|have|be given) (?:it|them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_wanted32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): a closing remark of what someone is not to get, said after a request
+    that gives something else: 'Hand P the chips; she doesn't want the apple' (the pronoun P, the
+    apple not in the request), 'The bottle is for P (alone), Q shouldn't get it' (Q another
+    person than the request's). Taken off when what it withholds is nothing the request gives;
+    else (the request gives it, or the person is not resolved) left, refused."""
+    m = _NOT_WANTED32R.search(text)
+    if m is not None:
+        head = text[: m.start()]
+        said = _request_ids32r(head, lexicon)
+        whole = _whole_name(m.group("x"), lexicon, "object")
+        x_ids = _ids(m.group("x"), lexicon, "object") if whole else set()
+        who = m.group("who")
+        if said is not None and len(said[1]) == 1 and x_ids and not x_ids & said[0]:
+            pid = next(iter(said[1]))
+            same = re.fullmatch(r"she|he|they", who, _F) and _fits(pid, who, lexicon)
+            if same or (_ids(who, lexicon, "human") == said[1] and _only_person(who, lexicon)):
+                return f"{head}{m.group('end') or '.'}"
+    m = _SHOULDNT_GET32R.search(text)
+    if m is not None:
+        head = _sub(r"\b(for (?:[A-Za-z][\w ]*?)) (?:alone|only)$", r"\1", text[: m.start()])
+        said = _request_ids32r(head, lexicon)
+        who = m.group("who")
+        if said is not None and _only_person(who, lexicon) and not _ids(who, lexicon) & said[1]:
+            return f"{head}{m.group('end') or '.'}"
+    return text
+
+
+# "the bottle stays put, leave it alone"
+_STAYS_PUT32R = re.compile(
+    r"\s*[;,]\s*(?:but |and )?(?P<x>the [a-z ]+?) (?:stays|stay|is staying|can stay) "
+    r"(?:put|where it is|here|there)(?:\s*,\s*(?:just )?leave it(?: alone| be| there)?)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_put32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): '…; the X stays put(, leave it alone)' after a request that does not
+    name X says X is not part of it: taken off (X one object of the scene); when the request
+    moves X the text is left, refused."""
+    m = _STAYS_PUT32R.search(text)
+    if m is None:
+        return text
+    head, x = text[: m.start()], m.group("x")
+    if not _one_object32r(x, lexicon):
+        return text
+    if _request_ids32r(head, lexicon) is None or _ids(x, lexicon) & _ids(head, lexicon):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+def _only_nothing_else32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Only the X, nothing else, goes to P' is 'The X goes to P' (the grammar
+    gives only what is named; X one object of the scene)."""
+
+    def only(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if not _one_object32r(x, lexicon):
+            return m[0]
+        return f"{x[:1].upper()}{x[1:]} "
+
+    return _sub(
+        r"^(?:only|just) (?P<x>the [a-z ]+?),\s*(?:nothing|and nothing) else,\s*(?=(?:goes|is|"
+        r"should go|needs to go) (?:to|for) )",
+        only,
+        text,
+    )
+
+
+# "No need to set the bottle down first, just pass it right into Person A's hand."
+_NO_NEED_FIRST32R = re.compile(
+    r"^(?:there's )?no need to (?:set|put|place|leave) (?P<x>the [a-z ]+?) (?:down )?"
+    r"(?:first|beforehand)\s*,\s*(?:just )?(?P<rest>(?:pass|hand|give|bring) it\b[^,;:.!?]*?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_need_first32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'No need to set the X down first, just pass it (right) into P's hand'
+    is 'pass the X to P': the step waived is no task, 'it' is X (one object of the scene), and
+    'into P's hand(s)' is to P (one person)."""
+    m = _NO_NEED_FIRST32R.match(text)
+    if m is None:
+        return text
+    x = m.group("x")
+    if not _one_object32r(x, lexicon):
+        return text
+    rest = _sub(r"\bit\b", x, m.group("rest"))
+    hand = re.search(r"\b(?:right |straight )?into (?P<p>[A-Za-z][\w ]*?)'s hands?$", rest, _F)
+    if hand is not None:
+        if not _only_person(hand.group("p"), lexicon):
+            return text
+        rest = f"{rest[: hand.start()]}to {hand.group('p')}"
+    return f"{rest[:1].upper()}{rest[1:]}{m.group('end') or '.'}"
+
+
+def _not_other_person32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'P gets the X, and no, not Q, she's had hers' is 'P gets the X, not Q,
+    …' ('no' before 'not' says the 'not' again; _negated reads 'not Q' after a request to P).
+    Only when Q is one person other than P."""
+
+    def no(m: re.Match[str]) -> str:
+        q = m.group("q")
+        if not _only_person(q, lexicon) or _ids(q, lexicon) & _ids(text[: m.start()], lexicon):
+            return m[0]
+        return f", not {q}"
+
+    return _sub(r",\s*(?:and )?no,\s*not (?P<q>[A-Za-z][\w ]*?)(?=\s*(?:[,.!]|$))", no, text)
+
+
+# ", and there's only the one, so no mix-ups"
+_ONLY_THE_ONE32R = re.compile(
+    r",\s*(?:and )?there(?:'s| is) only (?:the )?one(?: of (?:it|them))?"
+    r"(?:\s*,\s*so no (?:mix-?ups|confusion|mistakes))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_the_one32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): ", and there's only the one(, so no mix-ups)" after a request naming
+    one object says the scene has one of its kind: taken off when it has (else left, refused:
+    'the cup' with two cups)."""
+    m = _ONLY_THE_ONE32R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    objects = [it for it in _names(head, lexicon) if it.refs[0].kind == "object"]
+    if len(objects) != 1 or len(objects[0].refs) != 1:
+        return text
+    kind = _kinds({objects[0].refs[0].id}, lexicon)
+    if len([o for o in lexicon.scene.objects if o.category in kind]) != 1:
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+def _dont_suppose32r(text: str, _lexicon: Lexicon) -> str:
+    """Session 32 (12r): "(I) don't suppose you could …?" is 'Could you …?' (a request put as a
+    doubt; the grammar reads the question)."""
+    return _sub(r"^(?:i )?don't suppose (?:you|u) could (?=[a-z])", "Could you ", text)
+
+
+def _whatevers_here32r(text: str, _lexicon: Lexicon) -> str:
+    """Session 32 (12r): "whatever's here apart from X" / 'everything here bar X' is 'everything
+    except X' (the grammar's exclusion, which checks X against the scene)."""
+    return _sub(
+        r"\b(?:whatever(?:'s| is) (?:here|there|about|around|on hand)|everything (?:here|there))"
+        r"(?:,)? (?:apart from|bar|other than|but|except for|except) (?=the |a |an )",
+        "everything except ",
+        text,
+    )
+
+
+# ", the stevedores will sort the rest"
+_OTHERS_REST32R = re.compile(
+    r",\s*(?:the|our) [a-z]+s (?:will|can|'ll) (?:sort|deal with|handle|see to|take care of|do) "
+    r"the rest(?: (?:later|themselves))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _others_rest32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): ', the stevedores will sort the rest' after an exclusion ('every box
+    bar the large one') says who sees to what is left out: not the robot's task, taken off
+    when the people named are none of the scene's and the request before it excludes."""
+    m = _OTHERS_REST32R.search(text)
+    if m is None or _names(m[0], lexicon):
+        return text
+    head = text[: m.start()]
+    if not re.search(r"\b(?:except|but not|apart from|other than|bar)\b", head, _F):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+def _other_isnt32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'the other thing, the one that isn't the X' is the scene's one object
+    besides X, when the scene has exactly two objects and X names one of them (else left)."""
+
+    def other(m: re.Match[str]) -> str:
+        x = m.group("x")
+        if len(lexicon.scene.objects) != 2 or not _whole_name(x, lexicon, "object"):
+            return m[0]
+        ids = _ids(x, lexicon, "object")
+        rest = [o.id for o in lexicon.scene.objects if o.id not in ids]
+        return f"the {rest[0]}" if len(ids) == 1 and len(rest) == 1 else m[0]
+
+    return _sub(
+        r"\bthe other (?:thing|item|one|object),\s*the one (?:that|which) (?:isn't|is not|'s not) "
+        r"(?P<x>the [a-z ]+?)(?=\s*(?:[,;.!]|$))",
+        other,
+        text,
+    )
+
+
+def _any_except32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'a cup, any cup except the green one' is 'any cup except the green one'
+    (the first 'a cup' said again by the second; one kind of the scene's objects)."""
+
+    def said(m: re.Match[str]) -> str:
+        kind = m.group("kind")
+        return m.group("any") if _only_kind(kind, lexicon, "object") else m[0]
+
+    return _sub(
+        r"\ban? (?P<kind>[a-z]+),\s*(?P<any>any (?P=kind) (?:except|but|apart from|other than) )",
+        said,
+        text,
+    )
+
+
+def _isnt_adjective32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "P's X is the one that isn't grey" is "P's X is the blue one" when the
+    scene has exactly two Xs and 'grey X' names one of them (the other is then said by its own
+    adjective; else left, refused)."""
+
+    def other(m: re.Match[str]) -> str:
+        kind, adj = m.group("kind"), m.group("adj")
+        ids = _ids(kind, lexicon, "object")
+        if len(ids) != 2 or not _only_kind(kind, lexicon, "object"):
+            return m[0]
+        no = _ids(f"{adj} {kind}", lexicon, "object")
+        if len(no) != 1 or not _whole_name(f"{adj} {kind}", lexicon, "object"):
+            return m[0]
+        (yes,) = ids - no
+        names = [o for o in lexicon.scene.objects if o.id == yes]
+        for alias in names[0].aliases if names else ():
+            if alias.lower().endswith(f" {kind.lower()}") and _ids(alias, lexicon) == {yes}:
+                return f"{m.group('head')}the {alias.rsplit(' ', 1)[0]} one"
+        return m[0]
+
+    return _sub(
+        r"(?P<head>'s (?P<kind>[a-z]+) is )the one (?:that|which) (?:isn't|is not|'s not) "
+        r"(?P<adj>[a-z]+)\b",
+        other,
+        text,
+    )
+
+
+def _er_person32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'to Person, er, Person A' (a label begun, then said whole) is 'to
+    Person A'; ', the only one here' after a person is taken off when the scene has that one
+    person only."""
+    out = _sub(r"\bperson,?\s*(?:er|erm|um|uh|ah),?\s*(?=person [a-z]\b)", "", text)
+
+    def only(m: re.Match[str]) -> str:
+        p = m.group("p")
+        return p if len(lexicon.scene.humans) == 1 and _only_person(p, lexicon) else m[0]
+
+    return _sub(
+        r"\b(?P<p>person [a-z]|[A-Z][a-z]+),\s*the only (?:one|person) (?:here|around|about|in "
+        r"the room)(?=\s*[.!]?$)",
+        only,
+        out,
+    )
+
+
+# "Put the bottle on, oh wait, there's no shelf, just give it to Person A."
+_NO_SUCH_PLACE32R = re.compile(
+    r"^(?:put|place|set|pop|leave) (?P<x>the [a-z ]+?) (?:on|onto|in|into)\s*,\s*(?:oh )?wait\s*,"
+    r"\s*there(?:'s| is) no (?P<s>[a-z]+)(?: here)?\s*,\s*(?:so )?(?:just )?"
+    r"(?P<rest>(?:give|hand|pass|bring|take) it\b[^,;:.!?]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_such_place32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Put the X on, oh wait, there's no shelf, just give it to P' is 'give
+    the X to P': the placement broken off is taken back because the place does not exist (the
+    scene has no surface by that word; if it has, the text is left, refused), and 'it' is X."""
+    m = _NO_SUCH_PLACE32R.match(text)
+    if m is None or _names(m.group("s"), lexicon):
+        return text
+    x = m.group("x")
+    if not _one_object32r(x, lexicon):
+        return text
+    rest = _sub(r"\bit\b", x, m.group("rest"))
+    return f"{rest[:1].upper()}{rest[1:]}{m.group('end') or '.'}"
+
+
+# "The two cups both want washing, so into the sink with the pair of them."
+_INTO_WITH_THEM32R = re.compile(
+    r"^(?P<x>the [a-z ]+?) (?:both |all )?(?:want|need|could do with) (?:a )?[a-z]+ing\s*,\s*"
+    r"(?:so )?(?P<prep>into|in|onto|on) (?P<s>the [a-z ]+?) with (?:them|the pair of them|both of "
+    r"them|the lot|the two of them|the pair|the two)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _into_with_them32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'The two cups (both) want washing, so into the sink with the pair of
+    them' is 'Put the two cups into the sink': 'into S with them' is the idiom for putting them
+    there, the clause before it (the things and what they need) the reason; X the scene's
+    objects only, S one surface (else left, refused)."""
+    m = _INTO_WITH_THEM32R.match(text)
+    if m is None or not _objects_only(m.group("x"), lexicon):
+        return text
+    if not _whole_name(m.group("s"), lexicon, "surface"):
+        return text
+    x = m.group("x")
+    return f"Put {x[:1].lower()}{x[1:]} {m.group('prep')} {m.group('s')}{m.group('end') or '.'}"
+
+
+def _for_table32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): ', for table six' / 'for bed 4' closing a request to a person of the
+    scene says what the things are for (a table the scene does not have): taken off when the
+    word names nothing of the scene and the request names one person."""
+    m = re.search(
+        r",?\s*for (?P<place>table|bed|room|bay|seat|booth) (?:\d+|one|two|three|four|five|six|"
+        r"seven|eight|nine|ten|eleven|twelve)(?P<end>\s*[.!]?)$",
+        text,
+        _F,
+    )
+    if m is None or _names(m.group("place"), lexicon):
+        return text
+    head = text[: m.start()]
+    if len(_ids(head, lexicon, "human")) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "Two students, two books: Noah takes the red one and Zoe gets the green one."
+_COUNTED_HEADER32R = re.compile(
+    rf"^(?P<n>{_COUNT_WORDS32R}) (?P<role>[a-z]+)s,\s*(?P<m>{_COUNT_WORDS32R}) (?P<kind>[a-z]+)s"
+    r"\s*:\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _counted_header32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Two students, two books: Noah takes the red one and Zoe gets the
+    green one' is the request after the colon, 'the red one' there the red book: the header
+    counts the people by their role and the objects by their kind, and both counts must be the
+    scene's (else left, refused); each 'the <adjective> one' must then name one book."""
+    m = _COUNTED_HEADER32R.match(text)
+    if m is None:
+        return text
+    n, k = m.group("n").lower(), m.group("m").lower()
+    role, kind = m.group("role").lower(), m.group("kind")
+    people = [h for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
+    if len(people) != (int(n) if n.isdigit() else _COUNTS[n]):
+        return text
+    if not _only_kind(kind, lexicon, "object"):
+        return text
+    if len(_ids(kind, lexicon, "object")) != (int(k) if k.isdigit() else _COUNTS[k]):
+        return text
+    ok = True
+
+    def one(o: re.Match[str]) -> str:
+        nonlocal ok
+        said = f"the {o.group(1)} {kind}"
+        if len(_ids(said, lexicon, "object")) != 1 or not _whole_name(said, lexicon, "object"):
+            ok = False
+        return said
+
+    rest = _sub(r"\bthe ([a-z]+) one\b", one, m.group("rest"))
+    return f"{rest[:1].upper()}{rest[1:]}" if ok else text
+
+
+# what a person corrected away has or is, closing the text: "Sam's got one", "Alice is off
+# crisps", "A's gone on break"; and what is wrong with an object corrected away: "the cup's got
+# a crack"
+_WHY_NOT_PERSON32R = (
+    r"(?:'s| has) (?:got |already got |already had |had )?(?:one|(?:his|her|their) own|his|hers|"
+    r"theirs|one already|it already)(?: already)?|(?:'s| is) off (?:the )?[a-z]+|(?:'s| has) gone "
+    r"(?:on (?:a )?break|home|out|off shift)|(?:'s| is) (?:on (?:a )?break|not here|off shift|busy)"
+)
+_WHY_NOT_OBJECT32R = (
+    r"(?:'s| has) got a (?:crack|chip|hole|stain)(?: in it)?|(?:'s| is) (?:cracked|chipped|"
+    r"broken|dirty|filthy|empty|wet|leaking|sticky)"
+)
+_WHY_NOT_SURFACE32R = r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+_WHY_NOT32R = {
+    "human": _WHY_NOT_PERSON32R,
+    "object": _WHY_NOT_OBJECT32R,
+    "surface": _WHY_NOT_SURFACE32R,
+}
+_CORRECTED_REASON32R = re.compile(
+    r"^(?P<head>.+?,\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b.+?),\s*(?P<who>(?:the )?"
+    rf"[A-Za-z][\w ]*?)(?P<why>{'|'.join(_WHY_NOT32R.values())})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_reason32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): after a correction ('X to Q, no, to P', '…, sorry, I mean P', 'X for P,
+    no, sorry, the Y'), a closing reason about what was corrected away, from a closed list for
+    each kind ("Q's got one / his own", 'Q is off crisps', "Q's gone on break"; "the X's got a
+    crack", 'the X is broken'; "the tray's wet"), is taken off: its subject must be one person,
+    object or surface of the scene named before the cue and not after it, and the correction
+    must name another of its kind (the one corrected away); anything else is left, refused."""
+    m = _CORRECTED_REASON32R.match(text)
+    if m is None:
+        return text
+    head, who = m.group("head"), m.group("who")
+    kind = next((k for k in _WHY_NOT32R if _whole_name(who, lexicon, k)), "")
+    if not kind or len(_ids(who, lexicon)) != 1:
+        return text
+    if not re.fullmatch(_WHY_NOT32R[kind], m.group("why"), _F):
+        return text
+    cue = list(re.finditer(r",\s*(?:no|sorry|oops|hang on|wait|i mean|make it)\b", head, _F))
+    before, after = head[: cue[0].start()], head[cue[-1].end() :]
+    said = _ids(who, lexicon)
+    if not said <= _ids(before, lexicon) or said & _ids(after, lexicon):
+        return text
+    if not _ids(after, lexicon, kind):
+        return text  # the correction put nothing of its kind in its place: not corrected away
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "Bottle to Person B, no, sorry, there's only Person A here, to her then."
+_ONLY_ONE_HERE32R = re.compile(
+    r"^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\w ]*?),\s*(?:(?:no|sorry|oops|wait),\s*)+"
+    r"there(?:'s| is) only (?P<p>[A-Za-z][\w ]*?) here,\s*(?:so )?(?:to|for) (?:her|him|them)"
+    r"(?: then| instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+# "Bottle to Person B. Oops, wrong bay, it's just Person A here, so Person A gets it." ('wrong
+# bay' is 'no' once _cue_words31r has run)
+_ONLY_ONE_HERE_SO32R = re.compile(
+    r"^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\w ]*?)\.\s*(?:oops|sorry|whoops),?\s*"
+    r"(?:(?:wrong (?:bay|room|person|one|ward)|no),?\s*)?it(?:'s| is) (?:just|only) "
+    r"(?P<p>[A-Za-z][\w ]*?) here,?\s*so (?P<p2>[A-Za-z][\w ]*?|she|he|they) "
+    r"(?:gets|has|should get|can have) it"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one_here32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "X to Q, no, sorry, there's only P here, to her then" and "X to Q.
+    Oops, wrong bay, it's just P here, so P gets it." are 'X to P' when P is the scene's one
+    person and Q no other person of it (the slip the reason explains; 'Person B' may be read as a
+    typo of P), and who 'gets it' is P; else left, refused."""
+    m = _ONLY_ONE_HERE32R.match(text) or _ONLY_ONE_HERE_SO32R.match(text)
+    if m is None or len(lexicon.scene.humans) != 1:
+        return text
+    p = m.group("p")
+    p2 = m.groupdict().get("p2")
+    if p2 is not None and not re.fullmatch(r"she|he|they", p2, _F) and p2.lower() != p.lower():
+        return text
+    if not _only_person(p, lexicon) or _ids(m.group("q"), lexicon) - _ids(p, lexicon):
+        return text
+    if not _fits(next(iter(_ids(p, lexicon))), m[0][m.end("p") :], lexicon):
+        return text
+    return f"{m.group('head')} {m.group('prep')} {p}{m.group('end') or '.'}"
+
+
+# "There's only the bottle, and Person A's the only one here, so that's simple: give it to her."
+_ONLY_THESE32R = re.compile(
+    r"^there(?:'s| is) only (?P<x>the [a-z ]+?),? and (?P<p>[A-Za-z][\w ]*?)(?:'s| is) the only "
+    r"(?:one|person) here,\s*so (?:that's|it's) (?:simple|easy|straightforward)\s*[:,;]\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _only_these32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): "There's only the X, and P's the only one here, so that's simple: give
+    it to her" is 'give the X to P': the scene has one object (X) and one person (P), as said, and
+    the request's 'it' / 'her' are they (else left, refused)."""
+    m = _ONLY_THESE32R.match(text)
+    if m is None or len(lexicon.scene.objects) != 1 or len(lexicon.scene.humans) != 1:
+        return text
+    x, p, rest = m.group("x"), m.group("p"), m.group("rest")
+    if not _whole_name(x, lexicon, "object") or not _only_person(p, lexicon):
+        return text
+    if _names(rest, lexicon) or not _fits(next(iter(_ids(p, lexicon))), rest, lexicon):
+        return text
+    rest = _sub(r"\bit\b", x, rest)
+    rest = _sub(r"\b(?:her|him|them)\b", p, rest)
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+# "Mr Lee said the blue blanket itches, so give him the other one."
+_OTHER_ONE32R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:said|says|thinks|reckons|told me)(?: that)? (?P<x>the [a-z ]+?) "
+    r"(?:itches|is itchy|scratches|is scratchy|is too (?:small|big|heavy|cold|warm|thin)|is "
+    r"(?:dirty|broken|cracked|wet)|doesn't fit)\s*,\s*so (?P<v>give|hand|bring|pass|take) "
+    r"(?P<pro>him|her|them) the other one(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _other_one32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'P said the blue blanket itches, so give him the other one' is 'give P
+    the grey blanket': the complaint (from a closed list) rules out the X named, 'the other one'
+    is the scene's other object of that kind when it has exactly two (said by a name of it alone),
+    and the pronoun is P (one person it fits); with three of the kind, refused as before."""
+    m = _OTHER_ONE32R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    x = m.group("x")
+    ids = _ids(x, lexicon, "object")
+    if len(ids) != 1 or not _whole_name(x, lexicon, "object"):
+        return text
+    kinds = _kinds(ids, lexicon)
+    same = [o for o in lexicon.scene.objects if o.category in kinds]
+    if len(same) != 2 or not _fits(
+        next(iter(_ids(m.group("p"), lexicon))), m.group("pro"), lexicon
+    ):
+        return text
+    (other,) = [o for o in same if o.id not in ids]
+    name = next((a for a in other.aliases if _ids(a, lexicon) == {other.id}), "")
+    if not name:
+        return text
+    return f"{m.group('v').capitalize()} {m.group('p')} the {name}{m.group('end') or '.'}"
+
+
+# "…, all except the blue one, that stays where it is."
+_EXCEPT_STAYS32R = re.compile(
+    r"(?P<head>\b(?:except|apart from|other than|bar|but not) (?:for )?the [a-z ]+?)\s*,\s*"
+    r"(?:that|it|which)(?: one)? (?:stays|can stay|is staying|is to stay) (?:put|where it is|here|"
+    r"there)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _except_stays32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): '…, all except the blue one, that stays where it is' is '…, all except
+    the blue one': the clause after the exclusion says of what it left out (one object, 'the
+    blue one' after 'the pens' too) that it stays, which the exclusion already says."""
+    m = _EXCEPT_STAYS32R.search(text)
+    if m is None:
+        return text
+    excluded = m.group("head").split(" the ", 1)[1]
+    said = _one(f"the {excluded}", text[: m.start()], lexicon)
+    if not _one_object32r(said, lexicon):
+        return text
+    return f"{text[: m.end('head')]}{m.group('end') or '.'}"
+
+
+def _either_of_them32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'Give them a thing each, X and Y' and 'X to either of them' in a text
+    that names no person are the scene's people when it has two: 'Give P and Q one of X and Y
+    each' (_split29r's reading, two objects) and 'X to P or Q'. With more people, or a person
+    named, 'them' is not the scene's pair and the text is left, refused."""
+    humans = lexicon.scene.humans
+    if len(humans) != 2 or _ids(text, lexicon, "human"):
+        return text
+    p, q = (h.name for h in humans)
+    m = re.match(
+        r"^(?:please )?give them (?:a thing|one thing|an item|one item|one|something) (?:each|"
+        r"apiece),\s*(?P<x>the [a-z ]+? and the [a-z ]+?)(?P<end>\s*(?:[,;.!]|$))",
+        text,
+        _F,
+    )
+    if m is not None:
+        split = f"Split {m.group('x')} between {p} and {q}, one each"
+        if _split29r(split, lexicon) == split:
+            return text
+        return f"Give {p} and {q} one of {m.group('x')} each{text[m.start('end') :]}"
+    return _sub(r"\b(?P<v>to|for) either of them\b", rf"\g<v> {p} or {q}", text)
+
+
+def _choice_adjectives32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): 'one of the mugs for him, red or blue, …' is 'one of the mugs for him,
+    …': the adjectives say the choice again when each with the kind names one of its objects and
+    together they name all of them (else left: 'red or green' with no green mug is refused)."""
+
+    def again(m: re.Match[str]) -> str:
+        kind = m.group("kind")
+        adjectives = re.split(r",\s*(?:or\s+)?|\s+or\s+", m.group("adj"))
+        names = [f"{a} {kind}" for a in adjectives]
+        if not all(_one_object32r(n, lexicon) for n in names):
+            return m[0]
+        if set().union(*(_ids(n, lexicon) for n in names)) != _ids(kind, lexicon, "object"):
+            return m[0]
+        return m.group("head")
+
+    return _sub(
+        r"(?P<head>\b(?:one|either|any) of the (?P<kind>[a-z]+)s\b[^,;:.!?]*?),\s*(?:the )?"
+        r"(?P<adj>[a-z]+(?:,\s*(?:the )?[a-z]+)*,? or (?:the )?[a-z]+)(?=\s*(?:[,;.!]|$))",
+        again,
+        text,
+    )
+
+
+# "Both of the blocks are to go in the high chair so Lily can bash them about."
+_SO_CAN32R = re.compile(
+    r"^(?P<head>[^,;:.!?]+?)\s*,?\s*so (?:that )?(?P<p>[A-Za-z][\w ]*?) can (?P<v>[a-z]+)"
+    r"(?: (?:with|at|on))? (?:them|it)(?: (?:about|around|later|there|in peace))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+_HANDED_VERBS32R = frozenset({"keep", "use", "grab", "hold", "reach", "see", "find", "borrow"})
+
+
+def _so_can32r(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12r): a placement then 'so P can bash them about' (what P will do with the
+    things placed) is the placement: taken off when the request names a surface and no person, P
+    is one person of the scene and the verb is none of the grammar's (a purpose that hands
+    something over, 'so Lily can have them', is left)."""
+    m = _SO_CAN32R.match(text)
+    if m is None or not _only_person(m.group("p"), lexicon):
+        return text
+    head = m.group("head")
+    if not _ids(head, lexicon, "surface") or not _ids(head, lexicon, "object"):
+        return text
+    verb = m.group("v").lower()
+    if _ids(head, lexicon, "human") or verb in VERBS or verb in _HANDED_VERBS32R:
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+_STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _apposed_list32r,
+    _apposed_adjectives32r,
+    _all_things32r,
+    _taken_home32r,
+    _apiece32r,
+    _each_of_them32r,
+    _either_of_them32r,
+    _you_pick32r,
+    _choice_tail32r,
+    _both_want_either32r,
+    _reach_first32r,
+    _not_wanted32r,
+    _stays_put32r,
+    _only_nothing_else32r,
+    _no_need_first32r,
+    _not_other_person32r,
+    _only_the_one32r,
+    _dont_suppose32r,
+    _whatevers_here32r,
+    _others_rest32r,
+    _other_isnt32r,
+    _any_except32r,
+    _isnt_adjective32r,
+    _er_person32r,
+    _no_such_place32r,
+    _corrected_reason32r,
+    _only_one_here32r,
+    _only_these32r,
+    _other_one32r,
+    _into_with_them32r,
+    _for_table32r,
+    _counted_header32r,
+    _except_stays32r,
+    _choice_adjectives32r,
+    _so_can32r,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -16895,6 +17879,8 @@ _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _op
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
+    # session 32 (12r): blind30's choices, counts, negation, exclusions and corrections
+    *_STEPS32R,
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,
     # session 29 (12r)
