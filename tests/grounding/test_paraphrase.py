@@ -122,7 +122,6 @@ KNOWN_MISSES = frozenset(
         "Both people get an item each: the cup for Person A and the apple for Person B",
         "One of the snacks for Person B: the chips or the apple",
         "Lily wants the two blocks to bang together",
-        "Both plates need to go on the worktop before service",
         "Clear everything onto the belt, leave the boxes where they are",
         "Everything goes to the sink for washing, except for the spoon and the banana of course",
         "No red pen for Sam, one of the other two will do",
@@ -397,7 +396,6 @@ KNOWN_MISSES = frozenset(
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
-        "Any way the apple could find its way to Person A?",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "Ah, good afternoon, apologies, choir practice ran over again. Whenever you have a "
@@ -435,8 +433,6 @@ KNOWN_MISSES = frozenset(
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Person A the apple, there is only one only, don't worry.",
-        'Both items over to Person A, the pair of them, before her next patient.',
-        "Just the one bottle for Person A, that's all she's allowed before the race.",
         'Both plates onto the counter, Marco wants to plate up the goulash.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
@@ -525,11 +521,7 @@ KNOWN_MISSES = frozenset(
         "it.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
-        "person b needs the apple and the cup over his way, hes framing prints",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
-        "Could I trouble you to run the chips down to Person A at the far end?",
-        "Can you manage chips to Person B and the bottle across to Person A while I finish "
-        "hemming this sail?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
@@ -543,16 +535,11 @@ KNOWN_MISSES = frozenset(
         'says.',
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
-        'The forester left the bottle out; put it on the shrlf.',
-        'Omsr needs the spoon to stir his samples.',
-        "Ruth has asked for the thermomrter, the ward's too warm.",
         'Tom needs the glovrs, the pallets are splintery.',
-        'Zoe wants the scissord to cut out her rock diagrams.',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
         "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
         "Person A.",
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
-        'Hand the bottle to Percon A, the shearer',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         'The machinist says Person A should have both of them, the bottle and the chips.',
@@ -560,53 +547,9 @@ KNOWN_MISSES = frozenset(
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
-        'Bob has been eyeing the criaps since lunch, so let him have them.',
-        "The bottle is Person B's, and Persoh A can have the chips, thanks.",
-        "Peerson A is the acupuncturist and she'd like her bottle now.",
-        'Somebody left the spobge on the side; drop it in the sink, please.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
-        'Grazas! Oh, and before I forget, the bottle goes to Person B, if you please.',
-        'Honestly, whenever suits you, just let Person B have the chips, ta very much.',
-        'Would you be so good as to hand Person A the chips? Meur ras, as my gran says in Cornish.',
-        'Would you mind awfully giving the globe to Mrs Ortiz? Dhanyavad, as we say at home in '
-        'Pune.',
-        "Bob's been up the steeplejack's ladder since dawn, and what he needs most is the crisps.",
-        'Our saxophonist, Person A, is after the chips, while Person B has her heart set on the '
-        'bottle.',
-        "They each want something: the chips are what Person A's been craving, the bottle is what "
-        "Person B asked for.",
-        'Person A would love the bottle, if you can manage it, the lumberjacks drank all the '
-        'water.',
-        'The one thing Person A needs at the moment is that bottle.',
-        'Person B keeps asking for the bottle, and Person A has a fancy for the chips, says the '
-        'caddie.',
-        'Tom needs the barcode scanner before he heads off on his round.',
-        "The bottle's Bob's to take out on the trawler; the crisps, Alice's.",
-        "The bottle's for Person A; once she has it, the chips are hers as well.",
-        "Person A's getting the bottle off you, and Person B the chips, the percussionist reckons.",
-        'Chips first, to Person A. Bottle next. Same person, Person A, the clarinettist.',
-        "The chips. Person B's. Off you go.",
-        "Chips for Person B then bottle for Person A then it's tea break.",
-        'Sam wants the red pen he told me so this morning and Priya wants the stapler.',
-        "The drill is Jess's, the torch goes in the locker, and that's the lot.",
         'Both of the spanners, large and small, go away in the locker tonight.',
         "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
-        "Person B gets the other thing, the one that isn't the bottle, malo aupito.",
-        'bob could do with the crisps, zikomo',
-        "the chips are person b's, give them over please",
-        'bowl and spoon both on the tray when you clear up',
-        'The criisps need to go up on the shelf before the caddies raid them.',
-        'Pperson B is having the cup, mesi anpil.',
-        'Person B is asking where the cips have got to, can you hand them over?',
-        "Take the bottle over to Oerson A, she's the steeplejack having a break.",
-        'Persog A wants her bottle back from you before the accordion lesson.',
-        'The spnoge is dripping, pop it in the sink please.',
-        'Put the maagzine on the locker for Mr Lee to read after his nap.',
-        'Any chance the blue mug could find its way over to Alice?',
-        'Be good if Person A could get the bottle off you, could you manage that?',
-        'Shall we say the chips go to Person A and the bottle goes to Person B?',
-        'Would it be a bother to add the small box to the pallet?',
-        'Would you stack the white plate on the rack next to the blue one?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

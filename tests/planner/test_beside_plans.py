@@ -11,7 +11,17 @@ from typing import Any
 import pytest
 
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStatus, anytime, lns, plan, profile, repair, schedule
+from hltl.planner import (
+    PlanResult,
+    PlanStatus,
+    WorkClock,
+    anytime,
+    lns,
+    plan,
+    profile,
+    repair,
+    schedule,
+)
 from hltl.planner.anytime import _Exchange, _Router, _Slot, _squeeze_paths, _steps_of, goals
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.schedule import time_unit
@@ -242,17 +252,24 @@ def test_the_walks_squeeze_does_not_take_the_other_sides_plans_as_they_come(
 
 
 def test_the_bound_process_waits_for_a_plan_only_until_its_deadline() -> None:
+    # nothing is offered: it looks for news at each reading of its clock (0.02 s of real
+    # sleep between two) and returns at the deadline, 0.2 s on a clock of 0.01 s a reading
     _, problem, s, _, _ = _cell(8, 2)
     _, bound = _pair(problem)
-    anytime._plans_beside(s, problem.start(), bound, 0, time.perf_counter() + 0.2)
+    clock = WorkClock(0.01)
+    anytime._plans_beside(s, problem.start(), bound, 0, 0.2, clock=clock)
     assert bound.best == float("inf")  # (nothing offered, nothing taken: it just returned)
+    assert clock.readings == 21  # (0.00 to 0.19 are before the deadline; 0.20 is not)
 
 
 @pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
 def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyPatch) -> None:
     # a 17-goal grid at a 4 s budget on two cores: the bound's process, its bound final,
     # hands over a plan shorter than any the walk's process has (here the walk makes only its
-    # first plan); the run ends with that plan, replayed, valid
+    # first plan); the run ends with that plan, replayed, valid. On a clock of work (the
+    # run's phases end after the same work on any machine) that lets the run wait for the
+    # bound's process as long as it runs (60 s at most), so a loaded machine, where the
+    # process starts late, hands the plan over too
     c = delivery_cell("grid", 17, 0)
     problem = Problem(c.scene, c.spec)
     s = _Search(problem)
@@ -265,7 +282,7 @@ def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyP
     def bound(*args: Any, **kwargs: Any) -> profile.ProfileBound:
         return profile.ProfileBound(kwargs["floor"], True, 0)  # (final at once)
 
-    def plans(s: Any, start: Any, exchange: _Exchange, ticks: int, deadline: float) -> None:
+    def plans(s: Any, start: Any, exchange: _Exchange, *_: Any, **__: Any) -> None:
         exchange.offer(shorter[0], handed)  # type: ignore[index]
 
     def more(problem: Problem, s: _Search, until: float, **kwargs: Any) -> Any:
@@ -278,7 +295,8 @@ def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyP
     monkeypatch.setattr(schedule, "WORKERS", 2)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
     assert lns.available()  # (imported here: the forked process has it at once)
-    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    clock = WorkClock(0.02, wall_seconds=DEADLINE_S)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0, clock=clock)
     assert res.status is PlanStatus.SOLVED and res.makespan == to_seconds(shorter[0])
     check_plan(c.scene, c.spec, res.to_dict())
 
@@ -287,7 +305,8 @@ def test_the_plan_the_bound_process_squeezed_is_used(monkeypatch: pytest.MonkeyP
 def test_the_walk_offers_its_plans_only_when_the_bound_runs_beside(
     monkeypatch: pytest.MonkeyPatch, workers: int
 ) -> None:
-    # one core (or no fork): no process beside, no exchange; the walk runs as before
+    # one core (or no fork): no process beside, no exchange; the walk runs as before (on a
+    # clock of work: the phases end after the same work on any machine)
     if workers == 2 and not anytime.beside_possible():
         pytest.skip("one core, or no fork")
     seen: list[object] = []
@@ -302,6 +321,6 @@ def test_the_walk_offers_its_plans_only_when_the_bound_runs_beside(
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
     assert lns.available()
     c = delivery_cell("grid", 17, 0)
-    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=4.0, clock=WorkClock(0.02))
     assert res.status is PlanStatus.SOLVED
     assert len(seen) == 1 and (seen[0] is None) is (workers == 1)

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from hltl.bench.cells import delivery_cell
 from hltl.errors import HltlError
-from hltl.planner import PlanStatus, anytime, lns, plan, profile, schedule
+from hltl.planner import WALL, Clock, PlanStatus, WorkClock, anytime, lns, plan, profile, schedule
 from hltl.planner.problem import Problem, to_seconds, to_ticks
 from hltl.planner.schedule import time_unit
 from hltl.spec.hierarchy import HSpec, spec_from_dict
@@ -178,30 +178,51 @@ def test_cells_without_fixed_durations_are_outside_the_class() -> None:
     assert not profile.applicable(problem)
 
 
+# the anytime runs below: a 4 s budget on a clock that advances 0.02 s at each reading (a
+# round of the walk, a repair move, a pair: docs/planner.md, "The clock"), so each phase ends
+# after the same work on a fast machine and a loaded one. CP-SAT and HiGHS keep wall time:
+# ``wall_seconds`` is what the profile bound gets (0: nothing, it proves no more than its floor)
+BUDGET_S = 4.0
+STEP_S = 0.02
+
+
 def test_anytime_gives_its_last_share_to_the_profile_bound(monkeypatch: pytest.MonkeyPatch) -> None:
-    # a 17-goal grid cell (more goals than the step bound takes, no pair above the start bound):
-    # the profile bound runs once, from the bound known so far up to the best plan, and the
-    # bound reported is at least what it proved
-    calls: list[tuple[int, int | None, int]] = []
+    # a 17-goal grid cell (more goals than the step bound takes, no pair above the start bound),
+    # on one core: the walk stops at 70 % of the budget, then the profile bound runs once, from
+    # the bound known so far up to the best plan, and the bound reported is at least what it
+    # proved. (Given time, CP-SAT's climb here takes 10-20 s under load: it gets none, and
+    # proves its floor)
+    clock = WorkClock(STEP_S)
+    calls: list[tuple[int, int | None, int, float]] = []
     real = profile.profile_bound
+    walks: list[float] = []
+    real_more = anytime._more
 
     def spy(*args: object, **kwargs: object) -> profile.ProfileBound:
+        at = clock.t  # (where on the run's clock it is asked)
         got = real(*args, **kwargs)  # type: ignore[arg-type]
         floor, upper = kwargs["floor"], kwargs["upper"]
         assert isinstance(floor, int) and (upper is None or isinstance(upper, int))
-        calls.append((floor, upper, got.ticks))
+        calls.append((floor, upper, got.ticks, at))
         return got
 
+    def more(problem: Problem, s: object, until: float, **kwargs: Any) -> object:
+        walks.append(until)
+        return real_more(problem, s, until, **kwargs)  # type: ignore[arg-type]
+
     monkeypatch.setattr(profile, "profile_bound", spy)
+    monkeypatch.setattr(anytime, "_more", more)
     # a share of 4 s long enough for the profile bound (10 s budgets give it 1 s), on one core
-    # (on two it runs beside the walk: the next test)
+    # (on two it runs beside the walk: the next tests)
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)
     monkeypatch.setattr(schedule, "WORKERS", 1)
     c = delivery_cell("grid", 17, 0)
-    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=BUDGET_S, clock=clock)
     assert res.status is PlanStatus.SOLVED and res.makespan is not None
+    assert walks == [pytest.approx(0.7 * BUDGET_S)]  # (the run starts at 0 on this clock)
     assert len(calls) == 1
-    floor, upper, ticks = calls[0]
+    floor, upper, ticks, at = calls[0]
+    assert walks[0] <= at < BUDGET_S  # (after the walk's share, before the deadline)
     assert upper is not None and floor <= ticks <= upper
     assert res.lower_bound is not None
     assert to_ticks(res.lower_bound) >= ticks
@@ -299,16 +320,22 @@ def test_the_climb_skips_at_most_max_stride_levels(monkeypatch: pytest.MonkeyPat
     assert max(steps) == profile.MAX_STRIDE
 
 
-def _beside(floor: float, deadline: float) -> anytime._ProfileBeside:
+def _beside(floor: float, deadline: float, clock: Clock = WALL) -> anytime._ProfileBeside:
     c = delivery_cell("grid", 4, 1)
     problem = Problem(c.scene, c.spec)
     s, node, _, _ = start_targets(problem)
-    return anytime._ProfileBeside(problem, s, node, to_ticks(floor), to_ticks(4.0), deadline)
+    return anytime._ProfileBeside(
+        problem, s, node, to_ticks(floor), to_ticks(4.0), deadline, clock=clock
+    )
 
 
 @pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
 def test_the_bound_beside_the_walk_is_what_the_bound_proves() -> None:
-    beside = _beside(3.0, time.perf_counter() + DEADLINE_S)
+    # its bound final, the process waits for the walk's plans until its deadline (none come
+    # here): on the wall clock that was the whole 60 s; on a clock of 0.1 s a reading (one
+    # look for news, then 0.02 s of sleep) a deadline of 1 s is ten looks. The bound itself,
+    # and the wait for the process, get up to 60 s of wall time
+    beside = _beside(3.0, 1.0, WorkClock(0.1, wall_seconds=DEADLINE_S))
     assert beside.finish(wanted=True) == to_ticks(3.3)
     assert not beside.proc.is_alive()
 
@@ -338,13 +365,17 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
     # keeps going until the deadline too; one core: the walk stops for the bound's last share
     if workers == 2 and not anytime.beside_possible():
         pytest.skip("one core, or no fork")
+    # (one core: the bound gets no time, this is about when it runs; two cores: the run waits
+    # for the bound's process to end, which it does by its own copy of the clock, so that it
+    # has told where it runs whatever the machine's load)
+    clock = WorkClock(STEP_S, wall_seconds=DEADLINE_S if workers == 2 else 0.0)
     where = tmp_path / "bound"
     seen: dict[str, float] = {}
     real_bound, real_more = profile.profile_bound, anytime._more
 
     def bound(*args: object, **kwargs: object) -> profile.ProfileBound:
-        deadline = kwargs["deadline"]
-        where.write_text(f"{os.getpid()} {deadline!r}")  # (from the bound's process)
+        # (from the bound's process, on its copy of the clock: where the run was at its start)
+        where.write_text(f"{os.getpid()} {clock.t!r}")
         return real_bound(*args, **kwargs)  # type: ignore[arg-type]
 
     def more(problem: Problem, s: object, until: float, **kwargs: float) -> object:
@@ -359,14 +390,17 @@ def test_on_two_cores_the_bound_runs_beside_the_walk(
     # import could outlast this 4 s run, and the bound would (rightly) never be asked
     assert lns.available()
     c = delivery_cell("grid", 17, 0)
-    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=BUDGET_S, clock=clock)
     assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
-    pid, deadline = where.read_text().split()
+    pid, at = where.read_text().split()
     assert (int(pid) == os.getpid()) is (workers == 1)
     if workers == 2:
-        assert seen["until"] == float(deadline)
+        # the walk to the deadline, the bound from before the walk's start
+        assert seen["until"] == BUDGET_S and float(at) < 0.45 * BUDGET_S
     else:
-        assert seen["until"] < float(deadline)
+        # the walk to 70 %, the bound after it
+        assert seen["until"] == pytest.approx(0.7 * BUDGET_S)
+        assert seen["until"] <= float(at) < BUDGET_S
 
 
 @pytest.mark.skipif(not anytime.beside_possible(), reason="one core, or no fork")
@@ -387,8 +421,8 @@ def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
     seen: dict[str, Any] = {}
 
     class Spy(real_beside):  # type: ignore[valid-type,misc]
-        def __init__(self, *args: Any) -> None:
-            super().__init__(*args)
+        def __init__(self, *args: Any, **kwargs: Any) -> None:
+            super().__init__(*args, **kwargs)
             started.append(self)
 
     def pairs(*args: Any, **kwargs: Any) -> float:
@@ -409,7 +443,7 @@ def test_the_bound_beside_starts_before_the_pairs_and_stops_if_a_pair_beats_it(
     monkeypatch.setattr(anytime, "PROFILE_SHARE", 0.3)  # (a share long enough at 4 s)
     assert lns.available()  # (imported here: the forked process has it at once)
     c = delivery_cell(layout, 17, 0)
-    res = plan(c.scene, c.spec, anytime=True, timeout=4.0)
+    res = plan(c.scene, c.spec, anytime=True, timeout=BUDGET_S, clock=WorkClock(STEP_S))
     assert res.status is PlanStatus.SOLVED and res.lower_bound is not None
     assert seen["started before the pairs"] == 1
     assert seen["pair above the start bound"] is not kept

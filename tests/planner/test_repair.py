@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.cells import delivery_cell
-from hltl.planner import PlanResult, PlanStatus, anytime, repair
+from hltl.planner import PlanResult, PlanStatus, WorkClock, anytime, repair
 from hltl.planner.anytime import _more, _orders, _OrderWalk, _Router, _squeezed, goals
 from hltl.planner.problem import Problem, to_seconds
 from hltl.planner.search import _Search, plan_steps
@@ -223,10 +223,11 @@ def test_big_cells_squeeze_the_walks_plan_after_its_share(monkeypatch: pytest.Mo
     monkeypatch.setattr(_OrderWalk, "step", lambda self: events.append("walk") or real_step(self))
     c = delivery_cell("grid", 17, 2)
     problem = Problem(c.scene, c.spec)
-    assert _more(problem, _Search(problem), time.perf_counter() + 0.5) is not None
+    # (budgets on a clock of work: 50 and 150 rounds or moves, on any machine)
+    assert _more(problem, _Search(problem), 0.5, clock=WorkClock(0.01)) is not None
     assert "repair" not in events  # (only when asked: not on lines, not at 1 s)
     events.clear()
-    found = _more(problem, _Search(problem), time.perf_counter() + 1.5, squeeze=True)
+    found = _more(problem, _Search(problem), 1.5, squeeze=True, clock=WorkClock(0.01))
     assert found is not None
     assert events[0] == "repair"
     assert got[0] is None or found[0] <= got[0][0]  # type: ignore[index]

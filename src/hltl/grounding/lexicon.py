@@ -1606,7 +1606,7 @@ class Lexicon:
                 continue
             if self._likelier_word(word, right):
                 continue
-            if _other_name(word, right, entries):
+            if not _label_word32(key, diff[0]) and _other_name(word, right, entries):
                 return None  # "Mrs Dhan" for "Mrs Khan": another person's name
             found.append((n, _best(entries)))
         ids = {r.id for _, refs in found for r in refs}
@@ -1725,6 +1725,14 @@ def _correctable(word: str) -> bool:
     if len(word) < 4 or not word.isalpha() or word in WORDS or word in VERBS:
         return False
     return word not in PHRASE_WORDS
+
+
+def _label_word32(key: tuple[str, ...], at: int) -> bool:
+    """Session 32: whether word ``at`` of the name ``key`` is the common word of a label, a
+    common English word before one letter or digit ('person' of "Person A"): no one's name, so a
+    slip of its first letter or a letter far from the one meant ("Oerson A", "Persog A") is
+    read as any slip of a word is, not taken for another person's name (_other_name)."""
+    return at == 0 and len(key) == 2 and len(key[1]) == 1 and key[0] in common_words()
 
 
 def _other_name(typed: str, name: str, entries: list[tuple[Ref, str, bool]]) -> bool:

@@ -30,11 +30,13 @@ from hltl.grounding.normalise import (
     one_person,
     order_colons,
     people_named,
+    placed_list32l,
     rewritten19,
     trades29,
     trades31,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
+from hltl.grounding.repairs import repairs32l
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -322,6 +324,7 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
+        text = placed_list32l(repairs32l(text, lexicon), lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
@@ -790,7 +793,9 @@ _DEFERRED = re.compile(
 # the speaker saying they are unsure of what they ask
 _DOUBT = re.compile(
     r"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know|dunno|no idea|"
-    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|i forget|i forgot|"
+    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|"
+    # session 32: 'before I forget' is no doubt (the speaker remembers now)
+    r"(?<!\bbefore )i forget|i forgot|"
     r"lost track)\b",
     re.I,
 )

@@ -175,7 +175,7 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
     a request, unless its verb asks leave ('Grandad can have the wipes?')."""
     while end > k and (_is(items[end - 1], ",") or items[end - 1].text.lower() in _THANKS_WORDS):
         end -= 1  # "The stapler is for Priya, thanks?"
-    if any(_is(x, ",") for x in items[k:end]):
+    if any(_is(items[i], ",") and not _beside_a_repair32l(items, i) for i in range(k, end)):
         return False  # "Carol's thirsty, can you …?": the mark ends a later clause
     n = _past_dets(items, k)
     if n + 1 >= end:
@@ -190,6 +190,17 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
         and (_is_verb_item(verb) or _is(verb, "aux") or said[0] in _IS_WORDS)
         and said[0] not in _PERMISSIONS
     )
+
+
+def _beside_a_repair32l(items: list[Item], n: int) -> bool:
+    """Session 32 (lead): whether the comma ``items[n]`` only sets off a repair word ('The stapler
+    is for Sam, sorry, Priya?'): such commas end no clause, so the statement is still said as a
+    question (it had been read as a request after a repair: 12c's repairs fuzz)."""
+
+    def repair(x: Item) -> bool:
+        return _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not"))
+
+    return (n + 1 < len(items) and repair(items[n + 1])) or (n > 0 and repair(items[n - 1]))
 
 
 _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't"})
@@ -2068,6 +2079,7 @@ def _apply_correction(
             if _is(x, "it", "them") or (x.lemma == "pronoun" and x.text.lower() == "them"):
                 if not moved:
                     raise GroundingError(f"{x.text!r} after {marker.text!r} refers to nothing")
+                _one_meant32l(x, marker, moved, before[cut:])
                 rest[m : m + 1] = _joined(moved)
                 break
         return before[:cut] + rest
@@ -2115,6 +2127,23 @@ def _apply_correction(
     return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
 
 
+def _one_meant32l(pronoun: Item, marker: Item, moved: list[Item], taken: list[Item]) -> None:
+    """Session 32 (lead): the pronoun of a correction ('…, no, give it to Carol') stands for
+    what the clause taken back moved; 'it' names one thing, so after several objects ('Put the
+    chips and the bottle on the shelf, no, give it to Bob') it is unclear which, and after a
+    choice ('Give Bob the chips or the bottle, no, give it to Carol') 'it' or 'them' may mean the
+    choice or both: refused, naming the objects (they had been read as both, 12c's repairs fuzz)."""
+    said = list(dict.fromkeys(r.id for y in moved for r in y.refs if len(y.refs) == 1))
+    if len(said) < 2:
+        return
+    chose = any(_is(y, "or") for y in taken)
+    if pronoun.text.lower() == "it" or chose:
+        raise GroundingError(
+            f"{pronoun.text!r} after {marker.text!r} could mean any of {', '.join(said)}: name "
+            "the object"
+        )
+
+
 def _takes_back_all(taken: list[Item], after: list[Item], moved: list[Item], marker: Item) -> None:
     """'Give Alice the cup and Bob the chips, no, give Carol the cup': a clause of several tasks
     taken back by a clause that names only some of its objects again could take back the whole
@@ -2128,7 +2157,11 @@ def _takes_back_all(taken: list[Item], after: list[Item], moved: list[Item], mar
     again = {r.id for x in after[:stop] if _objects(x) for r in x.refs}
     if any(_is(x, "it", "them") or x.text.lower() == "them" for x in after[:stop]):
         return  # 'them' takes back what the clause moved; 'it' is refused where unclear
-    if not things <= again:
+    # session 32 (lead): 'the other one' points back into the clause taken back ("Alice gets a
+    # mug and Carol, sorry, Bob gets the other one"): it names nothing again, so the whole
+    # clause taken back left Bob's mug alone (12c's repairs fuzz)
+    other = any("other" in x.text.lower().split() for x in after[:stop] if x.kind == "ent")
+    if not things <= again or other:
         raise GroundingError(
             f"{marker.text!r} could take back the whole clause before it or only the task it "
             "names again: say the whole request again"
@@ -4347,6 +4380,7 @@ def _swaps(items: list[Item]) -> list[Item]:
         raise GroundingError(
             f"cannot tell what {items[at].text!r} swaps: say the whole request again"
         )
+    _two_left_to_swap32l(head, items[at])
     if _as_said29r(items[start:at]):
         return head
     a, b = objects
@@ -4357,6 +4391,29 @@ def _swaps(items: list[Item]) -> list[Item]:
         # "…, or the other way round", "…. Or vice versa.": either way, not a correction
         return [Item("word", "either", "either"), *head, Item("punct", ",", ","), said[0], *out]
     return out
+
+
+def _two_left_to_swap32l(head: list[Item], swap: Item) -> None:
+    """Session 32 (lead): "Give Bob, uh, no, Alice the cup and the apple, or the other way round":
+    the repair takes Bob back, so one person is left and there is no other way round (it had been
+    read as the same two tasks either way, 12c's repairs fuzz): refused."""
+    kept = []
+    for k, x in enumerate(head):
+        if x.kind != "ent" or _objects(x):
+            continue
+        n = k + 1
+        while n < len(head) and _is(head[n], ",", "filler", "-"):
+            n += 1
+        repaired = n < len(head) and (
+            _is(head[n], "correct") or (head[n].text.lower() == "no" and _is(head[n], "not"))
+        )
+        if not repaired:
+            kept.append(x)
+    if len(kept) < 2:
+        raise GroundingError(
+            f"cannot tell what {swap.text!r} swaps: a repair leaves one person or place; say "
+            "the whole request again"
+        )
 
 
 # words that may stand for several people in a sentence with 'each'

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
+from hltl.planner.clock import WALL, Clock, WorkClock
 from hltl.planner.problem import Problem
 from hltl.planner.result import Binding, PlanResult, PlanStatus, PlanStep, SearchStats
 from hltl.planner.search import ALGORITHMS, _Search, search
@@ -31,12 +31,15 @@ PHASE_UP_TO = 16
 
 __all__ = [
     "ALGORITHMS",
+    "WALL",
     "Binding",
+    "Clock",
     "PlanResult",
     "PlanStatus",
     "PlanStep",
     "Problem",
     "SearchStats",
+    "WorkClock",
     "plan",
 ]
 
@@ -57,6 +60,7 @@ def plan(
     on_progress: Callable[[int, float], None] | None = None,
     anytime: bool = False,
     suboptimality: float | None = None,
+    clock: Clock = WALL,
 ) -> PlanResult:
     """Find a minimum-makespan plan for ``spec`` in ``scene``.
 
@@ -76,6 +80,9 @@ def plan(
         anytime: return a plan fast and improve it until ``timeout`` (default 10 s), with a
             proven lower bound (``lower_bound``, ``gap``); see docs/planner.md.
         suboptimality: anytime mode stops once makespan <= suboptimality x lower bound.
+        clock: where ``timeout``, every phase's share of it and the seconds reported are read:
+            ``time.perf_counter`` (``WALL``); tests pass a :class:`WorkClock`, which advances
+            only with the planner's work (docs/planner.md, "The clock").
 
     Returns:
         A :class:`PlanResult`; "no plan" is ``status == PlanStatus.INFEASIBLE`` with a reason.
@@ -99,32 +106,34 @@ def plan(
             problem,
             timeout=10.0 if timeout is None else timeout,
             suboptimality=suboptimality,
+            clock=clock,
         )
     # a share of the time is kept for a better plan to return should the search time out
     reserve = 0.0 if timeout is None or timeout < 2.0 else min(1.0, FALLBACK_SHARE * timeout)
-    t0 = time.perf_counter()
+    t0 = clock.now()
     state = None
     if algorithm == "astar" and max_expansions is None and timeout is not None and timeout >= 2.0:
         state = _Search(problem)
         if phase_runs(problem, state):
             from hltl.planner.phase import plan_phased  # why: start-up (see PHASE_ABOVE)
 
-            return plan_phased(problem, state, t0, timeout, reserve, on_progress)
+            return plan_phased(problem, state, t0, timeout, reserve, on_progress, clock=clock)
     result = search(
         problem,
         algorithm=algorithm,
-        timeout=None if timeout is None else timeout - reserve - (time.perf_counter() - t0),
+        timeout=None if timeout is None else timeout - reserve - (clock.now() - t0),
         max_expansions=max_expansions,
         on_progress=on_progress,
         state=state,
+        clock=clock,
     )
     if state is not None:
-        result = replace(result, stats=replace(result.stats, seconds=time.perf_counter() - t0))
+        result = replace(result, stats=replace(result.stats, seconds=clock.now() - t0))
     if result.status is PlanStatus.TIMEOUT:
         from hltl.planner.anytime import with_fallback_plan  # why: start-up (see PHASE_ABOVE)
 
         # the walk checks the clock between routings: leave room for the last one
-        return with_fallback_plan(problem, result, time.perf_counter() + 0.7 * reserve)
+        return with_fallback_plan(problem, result, clock.now() + 0.7 * reserve, clock=clock)
     return result
 
 

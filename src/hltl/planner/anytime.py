@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from hltl.planner import lns, profile, repair, schedule
+from hltl.planner.clock import WALL, Clock
 from hltl.planner.pairs import PairBound, pair_value
 from hltl.planner.problem import TICKS_PER_SECOND, Instance, Node, Problem, to_seconds
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
@@ -415,9 +416,15 @@ def _orders(s: _Search, node: Node, gls: Sequence[Goal], seed: int) -> Callable[
 
 
 def construct(
-    problem: Problem, s: _Search | None = None, *, tries: int = 1, deadline: float = math.inf
+    problem: Problem,
+    s: _Search | None = None,
+    *,
+    tries: int = 1,
+    deadline: float = math.inf,
+    clock: Clock = WALL,
 ) -> _Found | None:
-    """The best prioritized plan over ``tries`` priority orders (cost in ticks, step chain)."""
+    """The best prioritized plan over ``tries`` priority orders (cost in ticks, step chain),
+    no more tried once ``clock`` has passed ``deadline``."""
     s = _Search(problem) if s is None else s
     node = problem.start()
     gls = goals(s, node)
@@ -427,7 +434,7 @@ def construct(
     next_order = _orders(s, node, gls, seed=0)
     best: _Found | None = None
     for k in range(tries):
-        if k and time.perf_counter() > deadline:
+        if k and clock.now() > deadline:
             break
         order = next_order()
         steps = router.route_all(order) if order else None
@@ -443,6 +450,7 @@ def plan_anytime(
     timeout: float = 10.0,
     suboptimality: float | None = None,
     on_improve: Callable[[float, float, float], None] | None = None,
+    clock: Clock = WALL,
 ) -> PlanResult:
     """A plan within ``timeout`` seconds and a proven lower bound on the optimum.
 
@@ -451,13 +459,15 @@ def plan_anytime(
         timeout: seconds for the whole run (first plan, improvements, bound).
         suboptimality: stop as soon as makespan <= suboptimality x lower bound (e.g. 1.1).
         on_improve: called with (seconds since start, makespan, lower bound) on every change.
+        clock: where the deadline, the phases' shares and the seconds reported are read
+            (``clock.WALL``; tests: a ``clock.WorkClock``, docs/planner.md "The clock").
 
     Returns:
         ``solved`` with ``lower_bound`` and ``gap`` (0: proved optimal); ``infeasible`` when no
         plan exists; ``timeout`` when no plan was found in time (the bound is still reported).
     """
 
-    t0 = time.perf_counter()
+    t0 = clock.now()
     deadline = t0 + timeout
     s = _Search(problem)
     heur = s.heuristic
@@ -466,14 +476,14 @@ def plan_anytime(
         return PlanResult(PlanStatus.SOLVED, (), 0.0, SearchStats(0, 1, 0.0, "anytime"), "", 0.0)
     lb: float = heur(start)
     if math.isinf(lb):
-        return _infeasible(problem, s, "anytime", t0, 0, 1)
+        return _infeasible(problem, s, "anytime", t0, 0, 1, clock=clock)
 
-    best = construct(problem, s, tries=1, deadline=deadline)
-    first = None if best is None else time.perf_counter() - t0
+    best = construct(problem, s, tries=1, deadline=deadline, clock=clock)
+    first = None if best is None else clock.now() - t0
 
     def note() -> None:
         if on_improve is not None and best is not None:
-            on_improve(time.perf_counter() - t0, to_seconds(best[0]), to_seconds(lb))
+            on_improve(clock.now() - t0, to_seconds(best[0]), to_seconds(lb))
 
     def good_enough() -> bool:
         if best is None:
@@ -496,11 +506,11 @@ def plan_anytime(
     if big and not good_enough() and best is not None:
         until = t0 + SCHEDULE_SHARE * timeout
         if schedule.steps_applicable(problem):
-            ticks, found = step_bound(problem, s, start, round(lb), best[0], until)
+            ticks, found = step_bound(problem, s, start, round(lb), best[0], clock.wall(until))
             if found is not None and found[0] < best[0]:
                 best = found
         else:
-            ticks = _schedule_at_start(problem, s, start, round(lb), best[0], until)
+            ticks = _schedule_at_start(problem, s, start, round(lb), best[0], clock.wall(until))
         lb = max(lb, ticks)
         note()
     phases = (
@@ -527,10 +537,14 @@ def plan_anytime(
                     # on 32-goal grid and random cells), and is stopped if a pair beats the
                     # start bound (lines: there the pairs are the bound)
                     assert best is not None
-                    beside = _ProfileBeside(problem, s, start, round(lb), best[0], deadline)
+                    beside = _ProfileBeside(
+                        problem, s, start, round(lb), best[0], deadline, clock=clock
+                    )
                 # (the first pair even when the first plan came after this phase's end)
                 walk_end = min(deadline, t0 + phases[1] * timeout)
-                paired = _pairs_at_start(problem, s, start, end, lb, first_until=walk_end)
+                paired = _pairs_at_start(
+                    problem, s, start, end, lb, first_until=walk_end, clock=clock
+                )
                 if paired > lb:
                     profiled = False
                     if beside is not None:
@@ -565,7 +579,7 @@ def plan_anytime(
                         tgts,
                         floor=round(lb),
                         upper=best[0],
-                        deadline=end,
+                        deadline=clock.wall(end),
                     )
                     lb = max(lb, bound.ticks)
                     note()
@@ -582,17 +596,19 @@ def plan_anytime(
                         enough=lb,
                         squeeze=profiled,
                         exchange=None if beside is None else beside.exchange,
+                        clock=clock,
                     )
                     if cand is not None and cand[0] < best[0]:
                         best = cand
                         note()
                 continue
-            remaining = end - time.perf_counter()
+            remaining = end - clock.now()
             if remaining <= 0:
                 continue
             res = search(
                 problem,
                 timeout=remaining,
+                clock=clock,
                 upper=None if best is None else best[0],
                 state=s,
                 pairs_after=0 if n_goals <= PAIRS_UP_TO else 10**9,
@@ -600,7 +616,7 @@ def plan_anytime(
             expanded += res.stats.expanded
             if res.status is PlanStatus.SOLVED and res.makespan is not None:
                 stats = SearchStats(
-                    expanded, res.stats.generated, time.perf_counter() - t0, "anytime", first
+                    expanded, res.stats.generated, clock.now() - t0, "anytime", first
                 )
                 return PlanResult(
                     PlanStatus.SOLVED, res.steps, res.makespan, stats, "", res.makespan
@@ -625,7 +641,7 @@ def plan_anytime(
     finally:
         if beside is not None:
             beside.close()
-    stats = SearchStats(expanded, 0, time.perf_counter() - t0, "anytime", first)
+    stats = SearchStats(expanded, 0, clock.now() - t0, "anytime", first)
     if best is None:
         return PlanResult(
             PlanStatus.TIMEOUT,
@@ -656,13 +672,22 @@ class _ProfileBeside:
     stopping it, at the deadline or when the plan meets the bound, loses nothing proved."""
 
     def __init__(
-        self, problem: Problem, s: _Search, start: Node, floor: int, upper: int, deadline: float
+        self,
+        problem: Problem,
+        s: _Search,
+        start: Node,
+        floor: int,
+        upper: int,
+        deadline: float,
+        *,
+        clock: Clock = WALL,
     ) -> None:
 
         heur = s.heuristic
         tgts = schedule.targets(problem, heur.graph, start, heur.required_atoms(start[2]))
         self.bound = floor
         self.deadline = deadline
+        self.clock = clock  # (the process takes a copy as it stands: ``clock.WorkClock``)
 
         ctx = multiprocessing.get_context("fork")
         self.conn, send = ctx.Pipe(duplex=False)
@@ -673,7 +698,7 @@ class _ProfileBeside:
         self.proc = ctx.Process(
             target=_profile_child,
             args=(send, problem, s, start, tgts, floor, upper, deadline),
-            kwargs={"exchange": _Exchange(problem, squeezes, walks)},
+            kwargs={"exchange": _Exchange(problem, squeezes, walks), "clock": clock},
             daemon=True,
         )
         self.proc.start()
@@ -693,12 +718,15 @@ class _ProfileBeside:
         if self.proc.is_alive():
             self.proc.terminate()
         self.proc.join()
-        self._read(0.0)
+        self._read(-math.inf)
         self.conn.close()
 
     def _read(self, until: float) -> None:
-        # the levels proved, until the process ends (the pipe's end) or ``until``
-        while not self.conn.closed and self.conn.poll(max(0.0, until - time.perf_counter())):
+        # the levels proved, until the process ends (the pipe's end) or ``until`` (on the
+        # run's clock; a wait keeps wall time)
+        while not self.conn.closed and self.conn.poll(
+            max(0.0, self.clock.wall(until) - time.perf_counter())
+        ):
             try:
                 self.bound = max(self.bound, self.conn.recv())
             except EOFError:
@@ -716,10 +744,11 @@ def _profile_child(
     deadline: float,
     *,
     exchange: _Exchange | None = None,
+    clock: Clock = WALL,
 ) -> None:
     """The profile bound's process (``_ProfileBeside``): every level it proves is sent; once
     the bound is final (the relaxation solved at it), it squeezes the walk's plans handed
-    over by ``exchange`` until ``deadline`` (``_plans_beside``)."""
+    over by ``exchange`` until ``deadline`` on ``clock`` (``_plans_beside``)."""
 
     try:
         if lns.available():
@@ -730,36 +759,48 @@ def _profile_child(
                 tgts,
                 floor=floor,
                 upper=upper,
-                deadline=deadline,
+                deadline=clock.wall(deadline),
                 on_proven=send.send,
                 lp=True,
                 mip=True,
             )
             if got.solved and exchange is not None:
-                _plans_beside(s, start, exchange, got.ticks, deadline)
+                _plans_beside(s, start, exchange, got.ticks, deadline, clock=clock)
     finally:
         send.close()
 
 
 def _plans_beside(
-    s: _Search, start: Node, exchange: _Exchange, bound: int, deadline: float
+    s: _Search,
+    start: Node,
+    exchange: _Exchange,
+    bound: int,
+    deadline: float,
+    *,
+    clock: Clock = WALL,
 ) -> None:
     """The bound's process, its bound final: the walk's best plan (``exchange.news``; waited
-    for) squeezed by conflict repair with its own seed (``BESIDE_SEED``) until ``deadline``,
-    each shorter plan handed back; again from the walk's next plan when it is shorter than
-    any found here. Stops at a plan that meets ``bound``."""
+    for) squeezed by conflict repair with its own seed (``BESIDE_SEED``) until ``deadline``
+    on ``clock``, each shorter plan handed back; again from the walk's next plan when it is
+    shorter than any found here. Stops at a plan that meets ``bound``."""
 
     gls = goals(s, start)
     if not gls:
         return
     router = _Router(s, start, gls)
-    while time.perf_counter() < deadline:
+    while clock.now() < deadline:
         theirs = exchange.news()
         if theirs is None:
             time.sleep(0.02)
             continue
         found = _squeeze_paths(
-            router, repair.ranked(theirs), deadline, bound, seed=BESIDE_SEED, exchange=exchange
+            router,
+            repair.ranked(theirs),
+            deadline,
+            bound,
+            seed=BESIDE_SEED,
+            exchange=exchange,
+            clock=clock,
         )
         if found is not None and found[0] <= bound:
             return
@@ -941,6 +982,7 @@ def _pairs_at_start(
     floor: float = 0.0,
     *,
     first_until: float | None = None,
+    clock: Clock = WALL,
 ) -> float:
     """The best pairwise bound at the start node from the pairs solved before ``until``, the
     pairs of the longest routes first (any subset of pairs gives a valid bound). When the first
@@ -950,7 +992,8 @@ def _pairs_at_start(
     ones do). The first pair is tried until ``first_until`` (default ``until``) even when
     ``until`` has passed: on 32-robot lines a 1 s budget's first plan came at 0.51-0.62 s in
     some runs, after the pairs' 0.45 s, and no pair at all left the gap at 26-61 % where one
-    pair (about 0.1 s) gives 0.3-5 % (docs/planner.md, "Session 17")."""
+    pair (about 0.1 s) gives 0.3-5 % (docs/planner.md, "Session 17"). The times are on
+    ``clock``."""
     heur = s.heuristic
     graph = heur.graph
     locs = start[0]
@@ -961,7 +1004,7 @@ def _pairs_at_start(
     bound = PairBound(problem, graph)
     best = 0.0
     for k, (a, b) in enumerate(pairs):
-        if time.perf_counter() > (until if k or first_until is None else first_until) or (
+        if clock.now() > (until if k or first_until is None else first_until) or (
             k >= PAIRS_TRIAL and best <= floor
         ):
             break
@@ -979,20 +1022,20 @@ def _more(
     rounds: int | None = None,
     squeeze: bool = False,
     exchange: _Exchange | None = None,
+    clock: Clock = WALL,
 ) -> _Found | None:
-    """More plans until ``until``: a walk over priority orders, each new order followed by
-    large-neighbourhood moves from the best plan (see ``_OrderWalk``, ``_Neighbourhood``); when
-    there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals and CP-SAT is installed,
-    the walk stops after
-    ``CP_WALK_SHARE`` of the time and CP-SAT re-plans every goal jointly from the best plan
-    (``_jointly``), then the walk goes on if time is left. The best plan found; the walk
-    stops early once it is no longer than ``enough`` (a lower bound: it is optimal). With
-    ``rounds``: at most that many rounds (an order and its moves) and no joint re-plan, so the
-    plan does not depend on the machine's speed (``until`` only as a safety net). With
-    ``squeeze``, on cells of more than ``CP_UP_TO`` goals the walk stops after
-    ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan into fewer
-    steps until ``until`` (``_squeezed``). With ``exchange``, each shorter plan is offered to
-    the bound's process."""
+    """More plans until ``until`` (on ``clock``): a walk over priority orders, each new order
+    followed by large-neighbourhood moves from the best plan (see ``_OrderWalk``,
+    ``_Neighbourhood``); when there are at least ``CP_MIN_SECONDS``, at most ``CP_UP_TO`` goals
+    and CP-SAT is installed, the walk stops after ``CP_WALK_SHARE`` of the time and CP-SAT
+    re-plans every goal jointly from the best plan (``_jointly``), then the walk goes on if time
+    is left. The best plan found; the walk stops early once it is no longer than ``enough`` (a
+    lower bound: it is optimal). With ``rounds``: at most that many rounds (an order and its
+    moves) and no joint re-plan, so the plan does not depend on the machine's speed (``until``
+    only as a safety net). With ``squeeze``, on cells of more than ``CP_UP_TO`` goals the walk
+    stops after ``REPAIR_WALK_SHARE`` of the time and conflict repair squeezes its best plan
+    into fewer steps until ``until`` (``_squeezed``). With ``exchange``, each shorter plan is
+    offered to the bound's process."""
 
     node = problem.start()
     gls = goals(s, node)
@@ -1005,7 +1048,7 @@ def _more(
     joint = (
         rounds is None
         and 3 <= len(gls) <= CP_UP_TO
-        and until - time.perf_counter() >= CP_MIN_SECONDS
+        and until - clock.now() >= CP_MIN_SECONDS
         and _joint_possible(problem, gls)
     )
     # (after CP-SAT's import in ``_joint_possible``, 0.5-1.5 s: the walk's share is measured
@@ -1017,7 +1060,7 @@ def _more(
         and len(gls) > CP_UP_TO
         and repair.applicable(problem, [g.atom.name for g in gls], [g.after for g in gls])
     )
-    now = time.perf_counter()
+    now = clock.now()
     if joint:
         walk_until = now + CP_WALK_SHARE * (until - now)
     elif squeeze:
@@ -1045,19 +1088,23 @@ def _more(
             if rounds <= 0:
                 break
             rounds -= 1
-        now = time.perf_counter()
+        now = clock.now()
         # a round is not cut short: none starts that would end past ``walk_until`` if it took
         # as long as the last one (32-goal rounds take 0.05-0.3 s of CPU, more under load)
         if now + took >= walk_until:
             if squeeze and best is not None:
                 squeeze = False
-                better(_squeezed(walk.router, best_routes, until, enough, exchange=exchange))
+                better(
+                    _squeezed(
+                        walk.router, best_routes, until, enough, exchange=exchange, clock=clock
+                    )
+                )
                 walk_until = until
                 continue
             if not joint or best is None:
                 break
             joint = False
-            better(_jointly(problem, s, walk.router, best, until))
+            better(_jointly(problem, s, walk.router, best, clock.wall(until)))
             walk_until = until
             continue
         walk.step()
@@ -1069,7 +1116,7 @@ def _more(
                 lns.step()
             # (the neighbourhood's current routes: a plan as long as its best)
             better(lns.best, lns.routes)
-        took = time.perf_counter() - now
+        took = clock.now() - now
     return best
 
 
@@ -1081,13 +1128,16 @@ def _squeezed(
     *,
     exchange: _Exchange | None = None,
     moves: int | None = None,
+    clock: Clock = WALL,
 ) -> _Found | None:
     """The plan of ``routes`` in fewer steps, by conflict repair (``repair.Repair``) until
-    ``until``: squeezed into one step fewer, repaired, and again from each plan found, every
-    one replayed through the monitors. The shortest plan found (None: none); stops once it is
-    no longer than ``enough`` (a lower bound: it is optimal). ``exchange`` and ``moves``: see
-    ``_squeeze_paths``."""
-    return _squeeze_paths(router, _paths_of(routes), until, enough, exchange=exchange, moves=moves)
+    ``until`` (on ``clock``): squeezed into one step fewer, repaired, and again from each
+    plan found, every one replayed through the monitors. The shortest plan found (None:
+    none); stops once it is no longer than ``enough`` (a lower bound: it is optimal).
+    ``exchange`` and ``moves``: see ``_squeeze_paths``."""
+    return _squeeze_paths(
+        router, _paths_of(routes), until, enough, exchange=exchange, moves=moves, clock=clock
+    )
 
 
 def _squeeze_paths(
@@ -1099,6 +1149,7 @@ def _squeeze_paths(
     seed: int = 5,
     exchange: _Exchange | None = None,
     moves: int | None = None,
+    clock: Clock = WALL,
 ) -> _Found | None:
     """``_squeezed`` from per-goal paths (steps counted from 0, none empty), its repair with
     ``seed``. With ``exchange`` each shorter plan is offered to the other process, and (when
@@ -1124,7 +1175,7 @@ def _squeeze_paths(
     if not rep.squeeze(paths, repair.length(paths) - 1):
         return None
     done = 0  # moves made
-    while time.perf_counter() < until and (moves is None or done < moves):
+    while clock.now() < until and (moves is None or done < moves):
         done += 1
         listen = exchange is not None and exchange.listen and not done % NEWS_EVERY
         theirs = exchange.news() if listen and exchange is not None else None
@@ -1347,19 +1398,24 @@ class _OrderWalk:
 
 
 def with_fallback_plan(
-    problem: Problem, result: PlanResult, until: float | None = None, known: _Found | None = None
+    problem: Problem,
+    result: PlanResult,
+    until: float | None = None,
+    known: _Found | None = None,
+    *,
+    clock: Clock = WALL,
 ) -> PlanResult:
     """A timed-out exact result with a prioritized plan attached (status unchanged): the first
-    one, improved by more orders and neighbourhoods until ``until`` (``time.perf_counter``),
-    or ``known`` (a plan found before) where that is shorter."""
+    one, improved by more orders and neighbourhoods until ``until`` (on ``clock``), or
+    ``known`` (a plan found before) where that is shorter."""
     s = _Search(problem)
     found = construct(problem, s)
     if found is None or (known is not None and known[0] < found[0]):
         found = known
     if found is None:
         return result
-    if until is not None and time.perf_counter() < until:
-        better = _more(problem, s, until)
+    if until is not None and clock.now() < until:
+        better = _more(problem, s, until, clock=clock)
         if better is not None and better[0] < found[0]:
             found = better
     lb = result.lower_bound

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 
 from hltl.planner import anytime, lns, phase_runs, profile, schedule
 from hltl.planner.anytime import _Found
+from hltl.planner.clock import WALL, Clock
 from hltl.planner.problem import Node, Problem, to_seconds, to_ticks
 from hltl.planner.result import PlanResult, PlanStatus, SearchStats
 from hltl.planner.search import Live, _Search, plan_steps, search
@@ -256,24 +257,28 @@ def plan_phased(
     timeout: float,
     reserve: float,
     on_progress: Callable[[int, float], None] | None,
+    *,
+    clock: Clock = WALL,
 ) -> PlanResult:
     """``planner.plan`` in exact mode on a cell ``planner.phase_runs`` takes: the first phase
     (``certify``) until ``CERTIFY_SHARE`` of ``timeout`` (``t0``: the run's start), A* beside
     it (``_Apart``) or after it, looking only for plans shorter than the phase's best; the
-    last ``reserve`` seconds improve the plan a timed-out search returns."""
+    last ``reserve`` seconds improve the plan a timed-out search returns. Times are on
+    ``clock``; the phase's CP-SAT and HiGHS keep wall time (its deadline is
+    ``clock.wall``'s)."""
     best: _Found | None = None  # a plan found before A*: A* looks only for shorter ones
     deadline = t0 + timeout - reserve
-    beside = _Apart(problem, state, deadline, on_progress)
+    beside = _Apart(problem, state, deadline, on_progress, clock=clock)
     try:
         cert = certify(
             problem,
             state,
-            t0 + CERTIFY_SHARE * timeout,
+            clock.wall(t0 + CERTIFY_SHARE * timeout),
             beside.start,
             beside.ahead,
             beside.watch,
         )
-        phase: float | None = time.perf_counter() - t0
+        phase: float | None = clock.now() - t0
         result = beside.finish(cert)
     finally:
         # whatever happened (an exception in the phase, or while A* is awaited), no
@@ -282,7 +287,7 @@ def plan_phased(
     # (where A* ran in a process beside the phase: when the phase ended, how long A* waited)
     phase, held = (None, None) if beside.proc is None else (phase, beside.held)
     if cert.optimal is not None:
-        stats = SearchStats(0, 0, time.perf_counter() - t0, "astar")
+        stats = SearchStats(0, 0, clock.now() - t0, "astar")
         if result is not None:
             stats = replace(result.stats, seconds=stats.seconds)
         return _solved(problem, cert.optimal, replace(stats, phase=phase, held=held))
@@ -292,12 +297,13 @@ def plan_phased(
     if result is None:
         result = search(
             problem,
-            timeout=timeout - reserve - (time.perf_counter() - t0),
+            timeout=timeout - reserve - (clock.now() - t0),
             on_progress=on_progress,
             upper=None if best is None else best[0],
             state=state,
+            clock=clock,
         )
-    result = replace(result, stats=replace(result.stats, seconds=time.perf_counter() - t0))
+    result = replace(result, stats=replace(result.stats, seconds=clock.now() - t0))
     if best is not None and (
         result.status is PlanStatus.INFEASIBLE
         or (result.makespan is not None and to_ticks(result.makespan) >= best[0])
@@ -313,7 +319,7 @@ def plan_phased(
             result = replace(result, lower_bound=lb, reason=reason)
         # the walk checks the clock between routings: leave room for the last one
         return anytime.with_fallback_plan(
-            problem, result, time.perf_counter() + 0.7 * reserve, best
+            problem, result, clock.now() + 0.7 * reserve, best, clock=clock
         )
     return result
 
@@ -332,10 +338,13 @@ class _Beside:
         problem: Problem,
         deadline: float,
         on_progress: Callable[[int, float], None] | None,
+        *,
+        clock: Clock = WALL,
     ) -> None:
         self.problem = problem
         self.deadline = deadline
         self.on_progress = on_progress
+        self.clock = clock
         self.live = Live()
         # A*'s thread, made when A* starts (where it runs in a process of its own, never)
         self.pool: ThreadPoolExecutor | None = None
@@ -355,9 +364,10 @@ class _Beside:
         self.future = self.pool.submit(
             search,
             self.problem,
-            timeout=self.deadline - time.perf_counter(),
+            timeout=self.deadline - self.clock.now(),
             on_progress=self.on_progress,
             live=self.live,
+            clock=self.clock,
         )
 
     def finish(self, cert: Certificate) -> PlanResult | None:
@@ -392,13 +402,17 @@ class _Apart:
         state: _Search,
         deadline: float,
         on_progress: Callable[[int, float], None] | None,
+        *,
+        clock: Clock = WALL,
     ) -> None:
         self.problem = problem
         self.state = state
         self.deadline = deadline
+        # (``deadline`` is on this clock; the process takes a copy of it as it stands)
+        self.clock = clock
         # A* on a thread beside the full model instead, where no process can be forked or
         # ``on_progress`` wants to be called
-        self.thread = _Beside(problem, deadline, on_progress)
+        self.thread = _Beside(problem, deadline, on_progress, clock=clock)
         self.apart = on_progress is None
         self.proc: BaseProcess | None = None
         self.results: Connection | None = None  # A*'s result comes on this
@@ -422,7 +436,7 @@ class _Apart:
         upper_end, self.uppers = ctx.Pipe(duplex=False)
         proc = ctx.Process(
             target=_apart_child,
-            args=(result_end, upper_end, self.problem, self.state, self.deadline),
+            args=(result_end, upper_end, self.problem, self.state, self.deadline, self.clock),
             daemon=True,
         )
         proc.start()
@@ -527,10 +541,16 @@ class _Apart:
 
 
 def _apart_child(
-    results: Connection, uppers: Connection, problem: Problem, state: _Search, deadline: float
+    results: Connection,
+    uppers: Connection,
+    problem: Problem,
+    state: _Search,
+    deadline: float,
+    clock: Clock = WALL,
 ) -> None:
-    """``_Apart``'s process: A* until ``deadline``, its result sent on ``results``; a thread
-    passes every smaller ``upper`` that comes on ``uppers`` to the search (``search.Live``)."""
+    """``_Apart``'s process: A* until ``deadline`` on ``clock`` (its copy), its result sent on
+    ``results``; a thread passes every smaller ``upper`` that comes on ``uppers`` to the
+    search (``search.Live``)."""
     live = Live()
 
     def listen() -> None:
@@ -542,8 +562,8 @@ def _apart_child(
 
     threading.Thread(target=listen, daemon=True).start()
     try:
-        left = deadline - time.perf_counter()
-        results.send(search(problem, timeout=left, state=state, live=live))
+        left = deadline - clock.now()
+        results.send(search(problem, timeout=left, state=state, live=live, clock=clock))
     finally:
         results.close()
 

@@ -7,11 +7,11 @@ import gc
 import heapq
 import itertools
 import math
-import time
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any, ParamSpec, TypeVar
 
 from hltl.planner.bindings import derive_bindings
+from hltl.planner.clock import WALL, Clock
 from hltl.planner.explain import explain_infeasible
 from hltl.planner.heuristic import NO_HOT, Heuristic, Hot
 from hltl.planner.problem import Instance, Node, Problem, to_seconds
@@ -430,6 +430,7 @@ def search(
     upper: int | None = None,
     state: _Search | None = None,
     live: Live | None = None,
+    clock: Clock = WALL,
 ) -> PlanResult:
     """Minimum-makespan path from the problem's start node to the accepting set F.
 
@@ -450,12 +451,15 @@ def search(
             stop. Nodes whose f reaches ``upper`` are dropped, which changes no expansion
             below it: the plan found, when it is cheaper than every ``upper`` given, is the
             one found without them.
+        clock: where ``timeout`` and the seconds reported are read (``clock.WALL``; tests: a
+            ``clock.WorkClock``, which advances at each reading, docs/planner.md "The clock").
     """
     if algorithm not in ALGORITHMS:
         raise ValueError(
             f"unknown algorithm {algorithm!r}; expected one of {', '.join(ALGORITHMS)}"
         )
-    t0 = time.perf_counter()
+    now_ = clock.now  # (for ``WALL``, ``time.perf_counter`` itself)
+    t0 = now_()
     deadline = math.inf if timeout is None else t0 + timeout
     s = _Search(problem) if state is None else state
     h: Callable[[Node], float]
@@ -478,14 +482,14 @@ def search(
             PlanStatus.SOLVED,
             (),
             0.0,
-            SearchStats(0, 1, time.perf_counter() - t0, algorithm),
+            SearchStats(0, 1, now_() - t0, algorithm),
             lower_bound=0.0,
         )
     if pairs_after <= 0 and heur is not None:
         heur.enable_pairs()
     h0 = h(start)
     if math.isinf(h0):
-        return _infeasible(problem, s, algorithm, t0, 0, 1)
+        return _infeasible(problem, s, algorithm, t0, 0, 1, clock=clock)
 
     counter = itertools.count()
     # per node reached: [g, tags of its equally cheap ways in (see ``Tag``), how many of them
@@ -532,14 +536,14 @@ def search(
         rec[2] = len(node_tags)
         if problem.monitor.accepted(node[2]):
             steps = _reconstruct(s, recs, node, start_perm)
-            stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+            stats = SearchStats(expanded, generated, now_() - t0, algorithm)
             makespan = to_seconds(g)
             return PlanResult(PlanStatus.SOLVED, steps, makespan, stats, lower_bound=makespan)
         expanded += 1
         if expanded == pairs_after and heur is not None:
             # a hard instance: the pairwise bound now pays for its tables
             heur.enable_pairs()
-        now = time.perf_counter()
+        now = now_()
         if now > deadline or (max_expansions is not None and expanded > max_expansions):
             return stop(now - t0)
         if live is not None:
@@ -554,8 +558,8 @@ def search(
         # the start node has no tag: nothing can be shifted into a step before it
         for U, cost, child, tag, perm in s.steps(node, node_tags):
             n_children += 1
-            if n_children % CHECK_EVERY == 0 and time.perf_counter() > deadline:
-                return stop(time.perf_counter() - t0)
+            if n_children % CHECK_EVERY == 0 and now_() > deadline:
+                return stop(now_() - t0)
             ng = g + cost
             if upper is not None and ng >= upper:
                 continue
@@ -582,7 +586,7 @@ def search(
                 generated += 1
             heapq.heappush(heap, (ng + hc, -ng, next(counter), child))
     if upper is not None:
-        stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+        stats = SearchStats(expanded, generated, now_() - t0, algorithm)
         lb = to_seconds(upper)
         return PlanResult(
             PlanStatus.INFEASIBLE,
@@ -590,7 +594,7 @@ def search(
             reason=f"no plan shorter than {lb:.3f} s",
             lower_bound=lb,
         )
-    return _infeasible(problem, s, algorithm, t0, expanded, generated)
+    return _infeasible(problem, s, algorithm, t0, expanded, generated, clock=clock)
 
 
 def _zero(_: Node) -> float:
@@ -602,9 +606,16 @@ def _zero2(_: Node, __: Hot) -> float:
 
 
 def _infeasible(
-    problem: Problem, s: _Search, algorithm: str, t0: float, expanded: int, generated: int
+    problem: Problem,
+    s: _Search,
+    algorithm: str,
+    t0: float,
+    expanded: int,
+    generated: int,
+    *,
+    clock: Clock = WALL,
 ) -> PlanResult:
-    stats = SearchStats(expanded, generated, time.perf_counter() - t0, algorithm)
+    stats = SearchStats(expanded, generated, clock.now() - t0, algorithm)
     return PlanResult(PlanStatus.INFEASIBLE, stats=stats, reason=explain_infeasible(problem))
 
 

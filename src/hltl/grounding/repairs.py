@@ -1,0 +1,121 @@
+"""Self-repairs in speech ("the bottle, er, the cup"), said as repairs before the first read."""
+
+from __future__ import annotations
+
+import re
+
+from hltl.errors import GroundingError
+from hltl.grounding.lexicon import Item, Lexicon, lex
+
+_F = re.IGNORECASE
+
+# a bare hesitation between commas (or a comma and a space); not one that opens a list word or
+# a repair word of its own ("the cup, um, and the apple", "the crisps, um, or the bottle")
+_HESITATION = re.compile(
+    r"\s*,\s*(?:um+|uh+|er+|erm+|ah+|uhm+|hmm+)\s*(?:,\s*|\s+)"
+    r"(?!(?:and|or|nor|i mean|sorry|no|not|actually|rather|then|but|plus)\b)",
+    _F,
+)
+# a title said, a hesitation, and the title again with the name
+_TITLES = r"(?:mr|mrs|ms|miss|mx|dr|doctor|nurse|sister|professor|prof|person|uncle|auntie|aunt)"
+# (only with the hesitation: "Same person, Person A, the clarinettist" says no title twice)
+_TITLE_AGAIN = re.compile(
+    rf"\b({_TITLES})\.?\s*,?\s*(?:um+|uh+|er+|erm+|ah+)\s*,?\s*(?=\1\.?\s+[A-Za-z])",
+    _F,
+)
+# a hesitation just after a list word ("the tape and, um, the box"): a pause inside the list
+_AFTER_A_LIST_WORD = re.compile(r"\b(and|or)\s*,?\s*(?:um+|uh+|er+|erm+)\s*,\s*", _F)
+_DETS = r"(?:(?:the|a|an|my|our|your|his|her|their|that|this)\s+)?"
+_PREPS = r"(?:(?:to|for|on|onto|in|into|at|by|with)\s+)?"
+_BOUNDARY = re.compile(r"[.;:!?,—–]|\s-\s")
+
+
+def _names(words: str, lexicon: Lexicon) -> list[Item]:
+    try:
+        return [it for it in lex(words, lexicon) if it.kind == "ent"]
+    except GroundingError:
+        return []
+
+
+def _kind(item: Item) -> str | None:
+    kinds = {r.kind for r in item.refs}
+    return next(iter(kinds)) if len(kinds) == 1 else None
+
+
+def _last_name(before: str, lexicon: Lexicon) -> tuple[Item, str] | None:
+    """The name ``before`` ends with, and the words before that name (within its clause)."""
+    stops = list(_BOUNDARY.finditer(before))
+    clause = before[stops[-1].end() :] if stops else before
+    names = _names(clause, lexicon)
+    if not names:
+        return None
+    last = names[-1]
+    m = re.search(rf"(?:^|\s){_DETS}{re.escape(last.text)}\s*$", clause, _F)
+    if m is None:
+        return None
+    return last, before[: len(before) - len(clause) + m.start()]
+
+
+def _first_name(after: str, lexicon: Lexicon) -> tuple[Item, str] | None:
+    """The name ``after`` opens with (after a determiner or a preposition), and the words after
+    that name."""
+    stop = _BOUNDARY.search(after)
+    clause = after[: stop.start()] if stop else after
+    names = _names(clause, lexicon)
+    if not names:
+        return None
+    first = names[0]
+    m = re.match(rf"\s*{_PREPS}{_DETS}{re.escape(first.text)}\b", clause, _F)
+    if m is None:
+        return None
+    return first, after[m.end() :]
+
+
+def _listed_before(words: str, kind: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (what precedes the first name) end a list of that kind ('the cup,',
+    'Alice and', 'the cup or')."""
+    tail = words.rstrip()
+    if re.search(r"(?:,|\band|\bor|\bnor|&)\s*$", tail, _F) is None:
+        return False
+    head = re.sub(r"(?:,|\band|\bor|\bnor|&)\s*$", "", tail, flags=_F)
+    found = _last_name(head, lexicon)
+    return found is not None and _kind(found[0]) == kind
+
+
+def _listed_after(words: str, kind: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` (what follows the second name) go on with a list of that kind (', the
+    apple', ' and Carol', ' or the bottle')."""
+    m = re.match(r"\s*(?:,\s*(?:and\s+|or\s+)?|and\s+|or\s+|nor\s+|&\s*)", words, _F)
+    if m is None or not m.group(0).strip():
+        return False
+    found = _first_name(words[m.end() :], lexicon)
+    return found is not None and _kind(found[0]) == kind
+
+
+def repairs32l(text: str, lexicon: Lexicon) -> str:
+    """``text`` with each bare hesitation between two names of one kind, no list around them,
+    said as the repair it is (', sorry, '), and each title said again said once."""
+    if _HESITATION.search(text) is None and _TITLE_AGAIN.search(text) is None:
+        return text
+    out = _TITLE_AGAIN.sub("", text)
+    out = _AFTER_A_LIST_WORD.sub(r"\1 ", out)
+    pos = 0
+    while True:
+        m = _HESITATION.search(out, pos)
+        if m is None:
+            return out
+        pos = m.end()
+        before = _last_name(out[: m.start()], lexicon)
+        after = _first_name(out[m.end() :], lexicon)
+        if before is None or after is None:
+            continue
+        (said, ahead), (meant, behind) = before, after
+        kind = _kind(said)
+        if kind is None or kind != _kind(meant) or kind == "robot":
+            continue
+        if {r.id for r in said.refs} == {r.id for r in meant.refs}:
+            continue  # "the cup, um, the cup": said again, not repaired
+        if _listed_before(ahead, kind, lexicon) or _listed_after(behind, kind, lexicon):
+            continue
+        out = f"{out[: m.start()]}, sorry, {out[m.end() :]}"
+        pos = m.start() + len(", sorry, ")
