@@ -292,3 +292,8 @@ def test_a_statement_that_could_say_more_keeps_the_pronoun_unresolved(text: str)
 
 def test_a_statement_about_someone_a_title_rules_out_stays() -> None:
     assert_refused("Mr Lee's had nothing since breakfast. Give her the jug.", WARD)
+
+
+def test_a_person_and_commas_alone_is_refused_for_its_words() -> None:
+    # the property test's "A , ," (test_offline.py): no holding, nothing to read
+    assert_refused("A , ,", CELL)

@@ -698,12 +698,12 @@ def _held32s(sentence: list[Item]) -> tuple[str, str, bool] | None:
     """The person, the objects and whether it is past, when ``sentence`` is only a person
     holding objects ('Marco had the knife', 'Marco has got the knife and the lemon'); else
     None."""
+    while sentence and _is(sentence[-1], ","):
+        sentence = sentence[:-1]  # "Marco got the knife, thanks": the thanks taken off before
     if len(sentence) < 3 or not (
         sentence[0].kind == "ent" and all(r.kind == "human" for r in sentence[0].refs)
     ):
         return None
-    while _is(sentence[-1], ","):
-        sentence = sentence[:-1]  # "Marco got the knife, thanks": the thanks taken off before
     verb, k = sentence[1], 2
     low = verb.text.lower()
     if low == "has" and _is(sentence[2], "verb:have") and sentence[2].text.lower() == "had":
