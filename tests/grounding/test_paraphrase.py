@@ -61,11 +61,9 @@ KNOWN_MISSES = frozenset(
         # knife") may ask for it or pick someone out by it, so it is not dropped
         "Bob is upset about the cup, so give him the apple",
         "Lena, who has the knife, wants the lemon",
-        # blind9 (tuned on in session 11): corrections said three times over ("No wait, … Actually
-        # no, grandpa's right, …"; "Jess - no, Kofi - no, Jess after all"): which one stands is
-        # not read
-        "Give grandpa the teddy. No wait, give Lily the teddy. Actually no, grandpa's right, give "
-        "it to him.",
+        # blind9 (tuned on in session 11): corrections said three times over ("Jess - no, Kofi -
+        # no, Jess after all"): which one stands is not read ("… Actually no, grandpa's right,
+        # give it to him." reads since session 32, 12s: the statement keeps only whom it is about)
         "the drill goes to Jess - no, Kofi - no, Jess after all",
         # blind9: a long dictated run-on of remarks naming the people again and again ('her' is
         # Lily or Grandad?); "So the thing is Jess is up a ladder …" (a remark of several clauses)
@@ -236,7 +234,6 @@ KNOWN_MISSES = frozenset(
         "The small and medium boxes, the two little ones, onto the pallet.",
         "Marco needs his tongs, just the one pair.",
         "Both of the mugs are Alice's, give her the pair.",
-        "Poor Mr Lee is cold, pet, let him have the blue blanket and the grey one as well.",
         "Two things each: the bottle and cup to Person A, the chips and apple to Person B.",
         "That one bottle, over to Person A, quick as you can.",
         "Bob gets the lot, just leave the two mugs where they are.",
@@ -268,7 +265,6 @@ KNOWN_MISSES = frozenset(
         "as well thanks",
         "okay so Person A's having the cup and the apple's going over to Person B off you go",
         "okay listen the chips are for Person A the bottle's for Person B got it",
-        "Poor Bob hasn't eaten since six. Could he get the crisps off you.",
         "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
         "Either book can go on the desk, I just need one out for the lesson.",
         "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
@@ -307,7 +303,6 @@ KNOWN_MISSES = frozenset(
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "Bob's had nothing since breakfast. Give him the apple, then the crisps.",
         "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
@@ -331,7 +326,6 @@ KNOWN_MISSES = frozenset(
         "Kofi's after whichever spanner isn't already on the workbench.",
         "Alice needs a mug, but the red one's got a crack, so not that one.",
         "Person B can have anything except the apple.",
-        "The tape to Mia, no hang on, Tom, Mia's on her break.",
         "Bib to Ava, oh no, she's too big for bibs, to Lily.",
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
@@ -426,7 +420,6 @@ KNOWN_MISSES = frozenset(
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
-        "Person A's over there mending the nets. Take her the bottle, will you.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
         "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
@@ -444,7 +437,6 @@ KNOWN_MISSES = frozenset(
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Don't take the jug to Mrs Khan, she's nil by mouth, take it to Mr Lee.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
         "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
@@ -457,7 +449,6 @@ KNOWN_MISSES = frozenset(
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
-        'chios for Person B lah, she asked me just now',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Could the bowl and the spoon both go on the tray, please?',
@@ -482,7 +473,6 @@ KNOWN_MISSES = frozenset(
         "Bottle for Person A, and, honestly, that's the whole job today.",
         'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
         'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
-        "Person B's to get both, chips and bottle, she's doing the X-ray rounds next.",
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',

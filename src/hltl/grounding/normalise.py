@@ -18599,6 +18599,156 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
+# Session 32 (12s): a statement closing the instruction after its request ("Could Bob have the
+# crisps before we go on, he's the only tenor we've got?", "…, she's doing the X-ray rounds
+# next."): who it is about, then a verb of its own
+_TRAILING32S = re.compile(
+    r"(?P<cut>[,.;!?]\s*(?:(?i:and|cos|because)\s+)?(?P<said>(?P<who>(?i:he|she|they|i|we|(?:his|"
+    r"her|their|my|our) [a-z]+)|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?P<pred>(?:'s|'re|'m|'ve|'ll|'d|\s+"
+    r"(?:is|are|am|was|were|has|have|had|will|would|says|said|asked|told|keeps|kept|does|did|can|"
+    r"could|should|must|looks|seems|sounds|goes|went|came|comes))\b[^,.;!?]*)))(?P<end>[.!?]*)"
+    r"\s*$"
+)
+# words that would make such a statement say something of the request: a negation, a choice,
+# a count, a time or order, a correction, a want, a hand-over, a thing pointed at
+_TRAILING_HELD32S = frozenset(
+    {
+        *("not", "n't", "never", "no", "nothing", "nobody", "none", "neither", "nor", "instead"),
+        *("too", "also", "either", "only", "just", "rather", "prefer", "prefers", "wrong"),
+        *("right", "mistake", "meant", "mean", "both", "each", "every", "all", "any", "which"),
+        *("whichever", "whatever", "one", "ones", "two", "three", "four", "five", "first"),
+        *("then", "after", "before", "later", "tomorrow", "tonight", "wait", "until", "till"),
+        *("unless", "if", "or", "want", "wants", "wanted", "wanting", "need", "needs", "needed"),
+        *("needing", "like", "likes", "love", "loves", "fancy", "fancies", "give", "gives"),
+        *("hand", "pass", "bring", "take", "put", "place", "move", "send", "fetch", "get"),
+        *("gets", "got", "getting", "have", "has", "had", "having", "already", "same", "other"),
+        *("else", "it", "them", "those", "these", "that", "this", "mine", "yours", "hers"),
+        *("his", "theirs", "ours", "allergic", "hates", "hate", "share", "keep", "keeps"),
+        *("leave", "stay", "stays", "back", "again", "more", "less", "another", "for", "to"),
+    }
+)
+
+
+# how long or since when, in such a statement ("she's been out on the water all day")
+_TRAILING_TIME32S = re.compile(
+    r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
+    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours))\b"
+)
+
+
+def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12s): a statement after the request, closing the instruction, about the
+    person it names, someone else or the speaker ("…, she's been out on the water all day?",
+    "…, he's the only tenor we've got?", "…, she's doing the X-ray rounds next.", "…, his lines
+    are all over the place."), is taken off when it is inert (_inert_statement32s); so is one
+    between commas after a request and before another that opens on its verb ("Don't take the
+    jug to Mrs Khan, she's nil by mouth, take it to Mr Lee."). Session 21's reasons and session
+    29's remarks keep such a statement for the speaker's words ('we', 'me') or a word the grammar
+    reads; those were refused. A he / she the request's person cannot be is checked where the
+    rewrite is read (offline.py _ruled_out_dropped31s)."""
+    m = _TRAILING32S.search(text)
+    if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
+        return f"{text[: m.start()].rstrip()}{m['end'] or '.'}"
+    m = _BETWEEN32S.search(text)
+    if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
+        return f"{text[: m.start()]},{text[m.end() :]}"
+    return text
+
+
+# such a statement between commas, before a request that opens on its verb
+_BETWEEN32S = re.compile(
+    r"(?P<cut>,\s*(?P<said>(?P<who>(?i:he|she|they|(?:his|her|their) [a-z]+)|[A-Z][a-z]+(?: [A-Z]"
+    r"[a-z]+)?)(?P<pred>(?:'s|'re|\s+(?:is|are|was|were|has|have|had|will|would))\b[^,.;!?]*))"
+    r"\s*,)(?=\s*(?:and\s+|so\s+|just\s+)?(?i:give|hand|pass|bring|take|put|place|pop|send|move)"
+    r"\b)"
+)
+
+
+def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool:
+    """Whether the statement ``m`` matched (its 'said', 'pred') after the request ``before``
+    holds none of the words that could say something of the request (_TRAILING_HELD32S: a
+    negation, choice, count, time, correction, want, hand-over, or a word pointing at a thing;
+    'all day', 'since seven' are its own times), no word of the scene's names but those of the
+    people the request names, a he / she one of those people may be, and the request names an
+    object."""
+    pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
+    if any(
+        w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
+        for w in words
+    ) or re.match(r"(?:'s|'re|\s+is|\s+are)\s+(?:up\s+)?next\b", pred):
+        return False  # "…, Alice is next": next for something
+    if not _ids(before, lexicon, "object"):
+        return False
+    request_people = _ids(before, lexicon, "human")
+    said = m["said"]
+    if not _ids(said, lexicon, "human") <= request_people or _ids(said, lexicon) - request_people:
+        return False
+    for pronoun in re.findall(r"\b(?:he|she|his|her)\b", said.lower()):
+        if not any(title_sex(p, lexicon) in (None, PRONOUN_SEX[pronoun]) for p in request_people):
+            return False  # "Don't take the jug to Mrs Khan, he's nil by mouth, …": who is he?
+    names = _scene_words29(lexicon) - {
+        w
+        for p in request_people
+        for h in lexicon.scene.humans
+        if h.id == p
+        for n in (h.id, h.name, *h.aliases)
+        for w in n.lower().split()
+    }
+    return not any(w.split("'")[0] in names for w in words)
+
+
+# Session 32 (12s): a statement about one person opening the instruction, then a request whose
+# person is a pronoun ("Bob's had nothing since breakfast. Give him the apple, then the crisps.",
+# "Person A's over there mending the nets. Take her the bottle, will you.")
+_OPENING_STATE32S = re.compile(
+    r"^(?P<lead>(?:(?:oh|so|well|right|okay|ok)\s*,?\s+)*)(?:poor\s+)?(?P<who>[A-Za-z][\w]*(?: "
+    r"[A-Za-z][\w]*)?)(?P<verb>'s|\s+(?:is|has|hasn't|has not|was|wasn't|isn't|is not|had|looks|"
+    r"seems))\b(?P<words>[^.;!?,]*?)(?P<stop>[.;!]+\s+|,\s+(?=(?:so\s+)?(?:could|can|would|will|"
+    r"please|give|hand|pass|bring|take|get|let|pop|put)\b))(?P<rest>\S.*)$",
+    _F,
+)
+# words that would make the statement ask or say something of an object
+_OPENING_HELD32S = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "send", "fetch", "get"),
+        *("gets", "got", "want", "wants", "wanted", "wanting", "need", "needs", "needed"),
+        *("needing", "like", "likes", "fancy", "fancies", "after", "asked", "asking", "it"),
+        *("them", "that", "those", "these", "this", "one", "ones", "both", "either", "any"),
+        *("which", "whichever", "whatever", "mine", "yours", "hers", "his", "theirs", "ours"),
+        *("too", "also", "instead", "or", "and", "but", "if", "unless", "then", "first"),
+        *("later", "tomorrow", "tonight", "wait", "until", "till", "i", "me", "my", "we", "us"),
+    }
+)
+
+
+def _opening_state32s(text: str, lexicon: Lexicon) -> str:
+    """Session 32 (12s): a statement about one person opening the instruction, before a request
+    whose only person is a he / him / she / her (above), is 'P is waiting.' — who it is about
+    kept, for the pronoun; what it says of them goes. Session 21's remarks drop such a statement
+    only when every word of it is one the grammar does not know ('Bob's hungry.'): 'nothing',
+    'since', 'from', 'there', a negation had kept it, and the pronoun had no one to mean. Only
+    when the statement names nothing else in the scene and holds none of _OPENING_HELD32S (a
+    want, a hand-over, a word pointing at a thing, a choice, a time, the speaker), the request
+    names no person, and the person's title does not rule the pronoun out."""
+    m = _OPENING_STATE32S.match(text)
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    pid = next(iter(_ids(m["who"], lexicon)))
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["words"].lower())
+    if any(w in _OPENING_HELD32S or w.split("'")[0] in _OPENING_HELD32S for w in words):
+        return text
+    if _ids(m["words"], lexicon) or _ids(m["rest"], lexicon, "human"):
+        return text
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", m["rest"], _F)}
+    if not pronouns or any(title_sex(pid, lexicon) not in (None, PRONOUN_SEX[p]) for p in pronouns):
+        return text
+    if len({PRONOUN_SEX[p] for p in pronouns}) > 1:
+        return text  # 'he' and 'she': two people
+    stop = ". " if m["stop"].strip() != "," else ", "
+    return f"{m['lead']}{m['who']} is waiting{stop}{m['rest']}"
+
+
 _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _will_do31s,
     _both_of31s,
@@ -18606,6 +18756,7 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _negated_reason31s,
     _said_otherwise31s,
 )
+_STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
@@ -18798,4 +18949,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _along_with28s,
     # session 31 (12s): blind17-23's kinds
     *_STEPS31S,
+    # session 32 (12s): blind17-23's kinds
+    *_STEPS32S,
 )

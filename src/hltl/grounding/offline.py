@@ -360,6 +360,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _said_wrong31s(text)
         _unasked_done31s(text, lexicon)
         _has_beside_want31s(text, lexicon)
+        _state_only32s(text, lexicon)
+        _left_then_it32s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -597,6 +599,131 @@ def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
             f"{subject.text} is to get {_text(items[k + 1 : j + 1])} too: say 'give' for each "
             "thing to hand over"
         )
+
+
+# Session 32 (12s): the forms of 'have' / 'get' that say what a person held before ('had', 'has
+# had', 'got' — 'Marco got the knife' tells what happened) and those that say what the person
+# holds now ('has', 'has got', "'s got")
+_PAST32S = frozenset({"had", "got"})
+_NOW32S = frozenset({"has", "has got", "'s got"})
+
+
+def _state_only32s(text: str, lexicon: Lexicon) -> None:
+    """Session 32 (12s): a sentence that is only a person holding objects ("Marco had the
+    knife.", "Marco has the knife."). Past, it reports what happened and asks for nothing (the
+    grammar had read it as knife>A, alone or beside a request: "Marco had the knife. Give Lena
+    the tongs."): refused. Present, as the whole instruction, it says what the person holds or
+    (as "Bob has the cup and Alice the apple" does) allots it: refused naming both readings.
+    Said with 'please' or thanks, beside another person's part ("…, Lena has the tongs"), or
+    in a part of a longer instruction a rewrite reads again, the present allots and is read as
+    before; a 'had' after 'if' wishes, and one with more after it ('had the chips earlier and
+    wants them again') is not this sentence."""
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
+    except GroundingError:
+        return
+    start, sentences = 0, []
+    for k, it in enumerate([*items, Item("punct", ".", ".")]):
+        if it.kind == "punct" and it.lemma in _SENTENCE_END:
+            if k > start:
+                sentences.append(items[start:k])
+            start = k + 1
+    for sentence in sentences:
+        said = _held32s(sentence)
+        if said is None:
+            continue
+        who, what, past = said
+        if past:
+            raise GroundingError(
+                f"{_text(sentence)!r} says what {who} had: it asks for nothing; say 'give {who} "
+                f"{what}' to have it handed over"
+            )
+        if len(sentences) == 1 and len(_inside()) <= 1 and not _ASKED32S.search(text):
+            raise GroundingError(
+                f"{_text(sentence)!r} could say what {who} already holds (nothing to do) or that "
+                f"{who} is to get {what}: say 'give {who} {what}' to have it handed over"
+            )
+
+
+def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
+    """Session 32 (12s): 'Leave the teddy; give it to Lily.' — 'leave' with one object and
+    nothing after it (no place, no person) keeps the object where it is, or lets it go to
+    someone; an 'it' / 'them' after it, with no other object named between, can only be that
+    object, which the first reading keeps back: the instruction contradicts itself or asks for
+    the object in two words. Refused naming both readings (the grammar had read teddy>A).
+    'Leave the teddy; give the bib to Lily' (another object), 'Leave the teddy on the mat'
+    (a place) and 'Leave the red mug, give Bob the other one' read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for k, it in enumerate(items):
+        if it.lemma != "verb:leave":
+            continue
+        j = k + 1
+        while j < len(items) and _is(items[j], "det"):
+            j += 1
+        if j >= len(items) or not _objects_only32s(items[j]) or len(items[j].refs) != 1:
+            continue
+        n = j + 1
+        while n < len(items) and (
+            _is(items[n], "filler") or (_is(items[n], "aux") and items[n].text.lower() == "be")
+        ):
+            n += 1
+        if n < len(items) and not (items[n].kind == "punct" or _is(items[n], "and")):
+            continue
+        for m in range(n, len(items)):
+            x = items[m]
+            if x.kind == "ent" and any(r.kind == "object" for r in x.refs):
+                break  # another object named first: 'it' may be that one
+            if (
+                x.text.lower() in ("it", "them")
+                and _is(x, "it", "pronoun")
+                and _is_verb(items[m - 1])  # 'give it', not "it's only the bottle"
+            ):
+                left = _text(items[k : j + 1])
+                obj = _text(items[k + 1 : j + 1])
+                raise GroundingError(
+                    f"{x.text!r} after {left!r} can only be {obj}: {it.text.lower()!r} may keep "
+                    f"{obj} where it is (then it goes to no one) or leave it for the one who "
+                    f"gets it; say 'give {obj} to …', or name the object that goes"
+                )
+
+
+# the words that make "Marco has the knife" asked ("…, please", "…, cheers")
+_ASKED32S = re.compile(r"\b(?:please|pls|plz|thanks|thank you|ta|cheers)\b", re.I)
+
+
+def _held32s(sentence: list[Item]) -> tuple[str, str, bool] | None:
+    """The person, the objects and whether it is past, when ``sentence`` is only a person
+    holding objects ('Marco had the knife', 'Marco has got the knife and the lemon'); else
+    None."""
+    while sentence and _is(sentence[-1], ","):
+        sentence = sentence[:-1]  # "Marco got the knife, thanks": the thanks taken off before
+    if len(sentence) < 3 or not (
+        sentence[0].kind == "ent" and all(r.kind == "human" for r in sentence[0].refs)
+    ):
+        return None
+    verb, k = sentence[1], 2
+    low = verb.text.lower()
+    if low == "has" and _is(sentence[2], "verb:have") and sentence[2].text.lower() == "had":
+        k, past = 3, True  # "has had"
+    elif low in _PAST32S and verb.lemma in ("verb:have", "verb:get"):
+        past = True
+    elif low in _NOW32S and verb.lemma == "verb:have":
+        past = False
+    else:
+        return None
+    said = sentence[k:]
+    if not any(_objects_only32s(x) for x in said) or not all(
+        _is(x, "det", "and", ",") or _objects_only32s(x) for x in said
+    ):
+        return None
+    return sentence[0].text, _text(said), past
+
+
+def _objects_only32s(item: Item) -> bool:
+    return item.kind == "ent" and all(r.kind == "object" for r in item.refs)
 
 
 def _same_subject31s(items: list[Item], w: int, subject: Item) -> bool:

@@ -13,11 +13,13 @@ from hltl.grounding.lexicon import (
     NUMBERS,
     PRONOUN_SEX,
     RETRACTIONS,
+    TITLES,
     VERB_CLASS,
     Item,
     Lexicon,
     Ref,
     common_words,
+    first_names,
     near_keyword,
     person_name,
     title_sex,
@@ -370,6 +372,7 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
                 f"who gets {_words_of(head)!r}? the remark before it names "
                 f"{len(people)} people: say 'give <person> …'"
             )
+        _named_after32s(people[0], head, rest[stop + 1 :] if stop is not None else [])
         return [people[0], Item("punct", ",", ",")]
     if _moved_onto(sent):
         return []
@@ -379,6 +382,29 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
             f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
         )
     return []
+
+
+def _named_after32s(person: Item, head: list[Item], after: list[Item]) -> None:
+    """Session 32 (12s): "Person A looks worn out. Chips. Person B. Bottle. Also Person B." —
+    objects alone after a remark about one person, and then a sentence that opens on another
+    person with nothing but objects after ('Person B.', 'Person B. Bottle.', joined by
+    _telegraphic): said as a telegram, that person may get what came before ('Chips. Person
+    B.') as much as the person of the remark may; the remark had made the chips Person A's.
+    Refused naming both readings. (Without such a name after, "Person A is thirsty. Bottle,
+    please." reads bottle>A as before, and "…. Bottle. Person B gets the chips." too.)"""
+    stop = next((n for n, x in enumerate(after) if x.kind == "punct" and x.lemma in _END), None)
+    sent = [x for x in after[:stop] if not _is(x, "filler", "also", "then", "and")]
+    if (
+        sent
+        and _humans(sent[0])
+        and {r.id for r in sent[0].refs} != {r.id for r in person.refs}
+        and all(_objects(x) or _is(x, "det", "and", ",") for x in sent[1:])
+    ):
+        objects = _words_of([x for x in head if not _is(x, "filler")])
+        raise GroundingError(
+            f"who gets {objects!r}? {person.text} (the remark before it) or {sent[0].text} (named "
+            f"alone after it): say 'give <person> …'"
+        )
 
 
 def _moved_onto(sent: list[Item]) -> bool:
@@ -2984,6 +3010,8 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                         "name the person"
                     )
                 candidates = fits
+            if not seen and not candidates:
+                candidates = _sole_person32s(it, items, sex, lexicon)
             if len(candidates) == 1:
                 out.append(Item("ent", low, it.text, (Ref("human", candidates[0]),)))
                 continue
@@ -3025,6 +3053,43 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
             continue
         out.append(it)
     return out
+
+
+def _sole_person32s(
+    pronoun: Item, items: list[Item], sex: str | None, lexicon: Lexicon
+) -> list[str]:
+    """Session 32 (12s): the one person of a scene that holds one, for a he / she no name before
+    resolves ("Give her the bottle." with Person A alone: she is Person A; refused before as
+    "it could mean Person A", naming one reading). Not when the person's title rules the
+    pronoun out, nor when the instruction names someone the scene does not hold — a word the
+    grammar does not know that is a first name, a title, or capitalised inside its sentence
+    ("Take the bottle to Oerson A, she's …", "Tell Bob she can have it"): the pronoun may be
+    that person, and the refusal says so."""
+    humans = lexicon.scene.humans
+    if len(humans) != 1 or title_sex(humans[0].id, lexicon) not in (None, sex):
+        return []
+    for k, it in enumerate(items):
+        if it.kind != "unknown":
+            continue
+        opening = k == 0 or (items[k - 1].kind == "punct" and items[k - 1].lemma in _END)
+        words = it.text.split()
+        for n, word in enumerate(words):
+            low = word.lower().strip(".,'")
+            if (
+                low in first_names()
+                or low in TITLES
+                or (word[:1].isupper() and word != "I" and not (opening and n == 0))
+            ):
+                end = n + 2 if low in TITLES else n + 1
+                while end < len(words) and words[end][:1].isupper():
+                    end += 1  # "Oerson A", "Mrs Patel"
+                said = " ".join(words[n:end])
+                raise GroundingError(
+                    f"{pronoun.text!r} is not resolved: {said!r} is no one the scene holds, "
+                    f"and {pronoun.text!r} may mean them or "
+                    f"{_or([humans[0].id], lexicon)}; name the person"
+                )
+    return [humans[0].id]
 
 
 def _own_person(out: list[Item]) -> str | None:
