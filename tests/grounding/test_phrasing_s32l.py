@@ -210,3 +210,30 @@ def test_a_repaired_person_before_a_choice_of_people_gets_no_share() -> None:
     assert_reads(
         "Either of the students can have the globe, Noah or Zoe", "globe>B | globe>C", classroom
     )
+
+
+@pytest.mark.parametrize(
+    ("scene", "text", "want"),
+    [
+        (
+            "ward",
+            "Mrs Khan wants the medication, I mean the magazine and the jug placed on the bedside "
+            "table",
+            "magazine@bedside & jug@bedside",
+        ),
+        (
+            "lab",
+            "Dana needs the banana, sorry, the spoon, the bowl and the sponge put in the sink",
+            "spoon@sink & bowl@sink & sponge@sink",
+        ),
+    ],
+)
+def test_a_repair_before_a_wanted_list_with_a_participle_places_the_list(
+    scene: str, text: str, want: str
+) -> None:
+    assert_reads(text, want, paraphrase_scene(scene))
+
+
+def test_a_repair_before_a_list_taken_to_a_person() -> None:
+    text = "Bob would like the water bottle, er, I mean the cup and the apple taken to Carol"
+    assert_reads(text, "cup>C & apple>C", CELL)

@@ -2877,6 +2877,18 @@ def placed_list32l(text: str, lexicon: Lexicon) -> str:
     said of the whole list (12c's repairs fuzz, 'and, um, the medium box')."""
     if not re.search(r"\band\b", text, _F):
         return text
+    repaired = _rx(
+        r"^(?P<want>.+? (?:needs|wants|would like|'d like|would love|'d love|could use)) "
+        r"(?P<said>(?:the|a|an) [^,]+?),\s*(?:(?:er|um|uh),\s*)?(?:i mean|sorry|no,? sorry|no)"
+        r"\s*,?\s*(?P<meant>(?:the|a|an) [^,]+?(?:, (?:the|a|an) [^,]+?)* and (?:the|a|an) [^,]+? "
+        rf"(?:{_PLACED})\b[^,]*)$"
+    ).match(text.strip())
+    if repaired is not None and _only_kind(repaired["said"], lexicon, "object"):
+        # "Mrs Khan wants the medication, I mean the magazine and the jug placed on the bedside
+        # table": the repair names what is wanted placed; the first name is taken back
+        text = f"{repaired['want']} {repaired['meant']}"
+        out = _wanted_placed(text, lexicon)
+        return out if out != text else text
     out = _wanted_placed(text, lexicon)
     return out if out != text and re.search(r"\band\b", out, _F) else text
 
