@@ -2886,9 +2886,7 @@ def placed_list32l(text: str, lexicon: Lexicon) -> str:
     if repaired is not None and _only_kind(repaired["said"], lexicon, "object"):
         # "Mrs Khan wants the medication, I mean the magazine and the jug placed on the bedside
         # table": the repair names what is wanted placed; the first name is taken back
-        text = f"{repaired['want']} {repaired['meant']}"
-        out = _wanted_placed(text, lexicon)
-        return out if out != text else text
+        return _wanted_placed(f"{repaired['want']} {repaired['meant']}", lexicon)
     out = _wanted_placed(text, lexicon)
     return out if out != text and re.search(r"\band\b", out, _F) else text
 
@@ -9645,20 +9643,11 @@ def _speaker_parts32(text: str, lexicon: Lexicon) -> str:
     off, when it names nothing and what is left names something."""
     if not _PARTS32.search(text):
         return text
-    parts = re.split(r"(\s*[,;:.!?]+\s*)", text.strip())
-    chunks, seps = parts[0::2], [*parts[1::2], ""]
-    drop = [bool(_PARTS32.fullmatch(c.strip())) and _names_nothing(c, lexicon) for c in chunks]
-    if not any(drop):
-        return text
-    out: list[str] = []
-    for c, sep, d in zip(chunks, seps, drop, strict=True):
-        if d:
-            if out and sep.strip()[:1] in (".", "!", "?") and out[-1].strip()[:1] in (",", ";"):
-                out[-1] = sep  # "…, could you manage that?" → "…?"
-            continue
-        out.extend((c, sep))
-    said = "".join(out).strip(" ,;:")
-    return said if _names(said, lexicon) else text
+    return _stretches_dropped(  # "…, could you manage that?" → "…?"
+        text,
+        lambda c: bool(_PARTS32.fullmatch(c.strip())) and _names_nothing(c, lexicon),
+        lexicon,
+    )
 
 
 # The speaker closing a request with what follows it, in a run-on without a comma: "… then it's
@@ -10760,19 +10749,30 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     if not _COURTESY_WORD24.search(text):
         return text
     # session 29: a colon ends a stretch too ('Eskerrik asko in advance: the cup to …')
+    return _stretches_dropped(
+        text,
+        lambda c: (
+            bool(_COURTESY_STRETCH24.fullmatch(c.strip()))
+            and _names_nothing(_unmarked27(c), lexicon)
+        ),
+        lexicon,
+    )
+
+
+def _stretches_dropped(text: str, drops: Callable[[str], bool], lexicon: Lexicon) -> str:
+    """``text`` without each stretch between commas, colons and sentence ends that ``drops``
+    (a comma left before a sentence end goes with it: "…, asante." → "…."), when what is left
+    names something; else ``text``."""
     parts = re.split(r"(\s*[,;:.!?]+\s*)", text.strip())
     chunks, seps = parts[0::2], [*parts[1::2], ""]
-    drop = [
-        bool(_COURTESY_STRETCH24.fullmatch(c.strip())) and _names_nothing(_unmarked27(c), lexicon)
-        for c in chunks
-    ]
+    drop = [drops(c) for c in chunks]
     if not any(drop):
         return text
     out: list[str] = []
     for c, sep, d in zip(chunks, seps, drop, strict=True):
         if d:
             if out and sep.strip()[:1] in (".", "!", "?") and out[-1].strip()[:1] in (",", ";"):
-                out[-1] = sep  # "…, asante." → "…."
+                out[-1] = sep
             continue
         out.extend((c, sep))
     said = "".join(out).strip(" ,;:")

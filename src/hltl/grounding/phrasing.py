@@ -196,11 +196,14 @@ def _beside_a_repair32l(items: list[Item], n: int) -> bool:
     """Session 32 (lead): whether the comma ``items[n]`` only sets off a repair word ('The stapler
     is for Sam, sorry, Priya?'): such commas end no clause, so the statement is still said as a
     question (it had been read as a request after a repair: 12c's repairs fuzz)."""
+    return (n + 1 < len(items) and _repair_word32l(items[n + 1])) or (
+        n > 0 and _repair_word32l(items[n - 1])
+    )
 
-    def repair(x: Item) -> bool:
-        return _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not"))
 
-    return (n + 1 < len(items) and repair(items[n + 1])) or (n > 0 and repair(items[n - 1]))
+def _repair_word32l(x: Item) -> bool:
+    """Whether ``x`` is a word of repair: a correction cue ('sorry', 'I mean') or 'no'."""
+    return _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not"))
 
 
 _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't"})
@@ -4404,10 +4407,7 @@ def _two_left_to_swap32l(head: list[Item], swap: Item) -> None:
         n = k + 1
         while n < len(head) and _is(head[n], ",", "filler", "-"):
             n += 1
-        repaired = n < len(head) and (
-            _is(head[n], "correct") or (head[n].text.lower() == "no" and _is(head[n], "not"))
-        )
-        if not repaired:
+        if not (n < len(head) and _repair_word32l(head[n])):
             kept.append(x)
     if len(kept) < 2:
         raise GroundingError(
