@@ -111,6 +111,35 @@ READS = [
         CELL,
     ),
     ("Set the cup down on the shelf near the window.", "cup@shelf", CELL),
+    # (p) the same kinds in blind24 and blind29: a cleft putting the person first
+    ("It's Carol who ordered the apple, so hand it over to them, would you.", "apple>C", CELL),
+    # (q) 'been on about' (wants), 'again' of it; 'hand it over' run on after a want
+    ("Bob's been on about the apple.", "apple>B", CELL),
+    ("alice's been on about the cup again hand it over", "cup>A", CELL),
+    # (r) the request reported from someone of a trade
+    ("The farrier says Carol should have the apple.", "apple>C", CELL),
+    # (s) who lent the things, by trade
+    (
+        "Sam can have the pens, the caretaker's lent us them.",
+        "pen_black>B & pen_blue>B & pen_red>B",
+        OFFICE,
+    ),
+    # (t) the speaker's hands, run on at the end
+    ("put the cup on the shelf for me my hands are full of flour", "cup@shelf", CELL),
+    ("can you put the cup on the shelf for me my hands are all wet", "cup@shelf", CELL),
+    # (u) 'start with' what is first
+    (
+        "start off with the cup for alice and after that bob needs the apple",
+        "cup>A ; apple>B",
+        CELL,
+    ),
+    # (v) what it is for, of that person
+    ("Bob needs the crisps to keep him going, and Carol the apple.", "chips>B & apple>C", CELL),
+    ("Mr Lee needs the jug to tide him over.", "jug>B", WARD),
+    # (a) a header of the speaker's: a quick one before a bell
+    ("Quick one before the bell: the apple to Bob.", "apple>B", CELL),
+    # (b) a courtesy or address before 'please' without a comma
+    ("Chale please the apple to Bob.", "apple>B", CELL),
 ]
 
 
@@ -165,6 +194,26 @@ REFUSED = [
     # (o) by a person; by a time
     ("Put the apple on the counter by Bob.", CELL),
     ("Put the apple on the shelf by the weekend.", CELL),
+    # (p) a verb of no want; a person after it
+    ("It's Carol who gave Bob the apple.", CELL),
+    ("It's Carol who ordered Bob.", CELL),
+    # (q) a person after it; a pronoun after it; 'again' of a plain want
+    ("Bob's been on about Carol.", CELL),
+    ("Bob's been on about the apple, give him the cup.", CELL),
+    ("Bob wants the apple again hand it over", CELL),
+    # (r) a pronoun or the speaker in what is reported
+    ("The farrier says she should have the apple.", CELL),
+    ("The farrier says give me the apple.", CELL),
+    # (s) a person of the scene lent it
+    ("Sam can have the pens, Priya's lent us them.", OFFICE),
+    # (t) hands said with a scene name
+    ("Put the cup on the shelf, my hands are all apple.", CELL),
+    # (u) no one named with what is first
+    ("start off with the cup and after that bob needs the apple", CELL),
+    # (v) a pronoun that cannot be the one person named
+    ("Mrs Khan needs the jug to keep him going.", WARD),
+    # (a) before a person
+    ("Quick one before Carol: the apple to Bob.", CELL),
 ]
 
 

@@ -10464,6 +10464,7 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
 # them'). Each names nothing and changes nothing asked.
 _PARTS33 = re.compile(
     r"(?:hello there|hello|hi),? nothing (?:fancy|special)(?: today| this time)?|"
+    r"(?:just )?(?:a )?quick one(?: before (?:the|my|our|his|her) [a-z]+(?: [a-z]+)?)?|"
     r"nothing (?:fancy|special)(?: today| this time)?|"
     r"(?:ah|oh|well),? go on(?:,)? then|go on(?:,)? then|"
     r"(?:it's |that's |it is |that is )?(?:as )?(?:simple|easy) as that|"
@@ -10858,6 +10859,185 @@ def _by_landmark33(text: str, lexicon: Lexicon) -> str:
     return _BY_LANDMARK33.sub(dropped, text)
 
 
+# "It's Person B who ordered the cup": the person put first in a cleft, with a verb of wanting
+_CLEFT_WHO33 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)it(?:'s| is| was) (?P<who>[A-Za-z]+(?: [A-Za-z]+)?) who "
+    r"(?P<verb>ordered|asked for|requested|wanted|wants|needs|needed)"
+    rf"(?= {_DET32}\b)",
+    _F,
+)
+
+
+def _cleft_who33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the cleft above said plainly ('Person B ordered the cup'), when P is one
+    person and what follows up to a mark is objects of the scene only."""
+    if " who " not in text:
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        what = re.split(r"[,.;!?]|\s+(?:and|but|so)\s+", text[m.end() :], maxsplit=1)[0]
+        if not _only_person(m["who"], lexicon) or not _things31(what, lexicon):
+            return m[0]
+        lead = m[0][: m[0].lower().index("it")]
+        return f"{lead}{m['who']} {m['verb']}"
+
+    return _CLEFT_WHO33.sub(plain, text)
+
+
+# "person b's been on about the bottle again hand it over": the want said by an idiom, then the
+# handover of 'it' run on
+_ON_ABOUT33 = re.compile(
+    rf"(?:\s+has|'s) been (?:going )?on about\b(?= {_DET32}\b)",
+    _F,
+)
+_WANT_RUN_ON33 = re.compile(
+    r"\b(?P<first>(?:wants|needs) (?P<what>(?:the|that|this) [a-z][a-z ]*?)) "
+    r"(?=(?:hand|give|pass|bring|take) it(?: over)?\s*$)",
+    _F,
+)
+
+
+def _on_about33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: 'P's been on about X (again)' is 'P wants X' (X objects only, no pronoun after
+    that may hand P something else); a closing 'hand it over' run on after a want of one object
+    is joined with a comma ('it' is that object)."""
+    m = _ON_ABOUT33.search(text)
+    if m is not None:
+        what = re.split(r"[,.;!?]|\s+(?:again|and|but|so)\b", text[m.end() :], maxsplit=1)[0]
+        if _things31(what, lexicon) and not re.search(r"\b(?:her|him|them)\b", text, _F):
+            # 'again' of going on about it, not of the handover
+            after = text[m.end() :]
+            if after[len(what) :].lower().startswith(" again"):
+                after = what + after[len(what) + len(" again") :]
+            text = text[: m.start()] + " wants" + after
+    if " it" not in text:
+        return text
+    return _WANT_RUN_ON33.sub(
+        lambda m: (
+            f"{m['first']}, "
+            if len(_ids(m["what"], lexicon, "object")) == 1
+            and _only_kind(m["what"], lexicon, "object")
+            else m[0]
+        ),
+        text,
+    )
+
+
+# "The machinist says Person A should have …": the request reported from someone of a trade
+_TRADE_SAYS33 = re.compile(r"^(?:the|our|my) (?P<trade>[a-z]+) says,? (?:that )?(?=[A-Z])", _F)
+
+
+def _trade_says33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the opening report above taken off (as _says29 takes off a person's), when the
+    trade could only describe a person and what follows has no word for the speaker and no person
+    pronoun ('both of them' counts the objects)."""
+    if " says" not in text:
+        return text
+    m = _TRADE_SAYS33.match(text)
+    if m is None or not _trade_words29(m["trade"], lexicon):
+        return text
+    rest = text[m.end() :]
+    counted = re.sub(r"\b(?:both|all|either|each) of them\b", "", rest, flags=_F)
+    return text if _SPEAKER_OR_PRONOUN29.search(counted) else rest
+
+
+# ", the millwright's lent us them": where the things came from, said by the speaker
+_LENT33 = re.compile(
+    r",\s*(?:the|our|my) (?P<trade>[a-z]+)(?:'s| has| had)? lent (?:us|me) (?:them|it)"
+    r"(?: (?:for the day|for now|this morning|today))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _lent33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above taken off when the trade could only describe a person
+    and what is left names a person."""
+    if " lent " not in text:
+        return text
+    return _trade_closing_dropped(_LENT33, text, lexicon)
+
+
+# "… for me please my hands are all plaster": the speaker's hands, why they ask, run on at the end
+_MY_HANDS33 = re.compile(
+    r"(?:,\s*|\s+)(?:as |because |cos |since )?my hands are (?:all |both |a bit |too |full of |"
+    r"covered in |(?:all )?covered in )?(?P<what>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _my_hands33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above taken off when what the hands are names nothing and
+    asks nothing, and what is left names something."""
+    if "my hands" not in text.lower():
+        return text
+    m = _MY_HANDS33.search(text)
+    if (
+        m is None
+        or not _asks_nothing29(m["what"], lexicon)
+        or not _names(text[: m.start()], lexicon)
+    ):
+        return text
+    return text[: m.start()] + m["end"].strip()
+
+
+# "start off with crisps for alice and after that …": what is first, said with 'start with'
+_START_WITH33 = re.compile(
+    r"^(?:start|begin)(?: off| out)? with (?P<task>[^,.;!?]+?)"
+    r"(?= (?:and )?(?:after that|then|next)\b)",
+    _F,
+)
+
+
+def _start_with33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: 'start with X for P and after that …' is 'X for P first and after that …',
+    when the task is objects and one person joined by 'for' or 'to'."""
+    if not text.lower().startswith(("start", "begin")):
+        return text
+    m = _START_WITH33.match(text)
+    if m is None:
+        return text
+    what, to, who = (
+        m["task"].partition(" for ") if " for " in m["task"] else m["task"].partition(" to ")
+    )
+    if not to or not _things31(what, lexicon) or not _only_person(who, lexicon):
+        return text
+    return f"{m['task']} first{text[m.end() :]}"
+
+
+# "Person B needs the chips to keep him going": what the thing is for, of that person
+_KEEP_GOING33 = re.compile(
+    r"(?P<want>\b(?:needs?|wants?) (?:the|that|this|those|these) [^,.;!?]+?) to (?:keep (?P<a>him|"
+    r"her|them) going|tide (?P<b>him|her|them) over)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _keep_going33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the purpose above taken off after a want of objects only, when the one person
+    named before it in its sentence may be the pronoun."""
+    if " to " not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        people = _people_before32(text[: m.start()], lexicon)
+        pron = m["a"] or m["b"]
+        what = m["want"].split(" ", 1)[1]
+        if len(people) != 1 or not _fits(next(iter(people)), pron, lexicon):
+            return m[0]
+        return m["want"] if _things31(what, lexicon) else m[0]
+
+    return _KEEP_GOING33.sub(dropped, text)
+
+
+def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: a courtesy or address of the session-24 list opening the instruction before
+    'please' without a comma ("chale pls the chips to person a") taken off, as with one."""
+    m = _rx(rf"^(?:{_COURTESY24})\s+(?=(?:pls|please|plz)\b)").match(text)
+    if m is None or not _names_nothing(m[0], lexicon):
+        return text
+    return text[m.end() :]
+
+
 _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts33,
     _idioms33,
@@ -10874,6 +11054,14 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _name_typo33,
     _asked_as33,
     _by_landmark33,
+    _cleft_who33,
+    _on_about33,
+    _trade_says33,
+    _lent33,
+    _my_hands33,
+    _start_with33,
+    _keep_going33,
+    _courtesy_please33,
 )
 
 
