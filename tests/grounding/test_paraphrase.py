@@ -495,18 +495,10 @@ KNOWN_MISSES = frozenset(
         'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
-        'Quick one before the school bell: bottle to Person B, please and thank you.',
-        "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
-        'furnace.',
-        "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         'Wash-up time: both cups into the sink, green and white alike.',
         'The white plate on the rack, no, the counter, we need it for service.',
-        'can you put the red mug on the counter for me please my hands are all plaster',
-        'start off with crisps for alice and after that bob needs his bottle',
-        'chale pls the chips to person a eh',
-        "oh person b's been on about the bottle again hand it over",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
@@ -540,8 +532,6 @@ KNOWN_MISSES = frozenset(
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
-        'The machinist says Person A should have both of them, the bottle and the chips.',
-        "Sam can have any one of the pens, the millwright's lent us them.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
