@@ -194,6 +194,8 @@ REFUSED = [
     # (o) by a person; by a time
     ("Put the apple on the counter by Bob.", CELL),
     ("Put the apple on the shelf by the weekend.", CELL),
+    # (o) a participle after a want list, not a verb of placing opening the clause (session 10)
+    ("Ruth wants the thermometer and the tablets put on the cart by the bed", WARD),
     # (p) a verb of no want; a person after it
     ("It's Carol who gave Bob the apple.", CELL),
     ("It's Carol who ordered Bob.", CELL),

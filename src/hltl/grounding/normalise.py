@@ -10842,17 +10842,30 @@ _WHEN33 = frozenset(
 )
 
 
+# the clause of the placement opens with its verb (a participle after a want list, "Ruth wants
+# the thermometer and the tablets put on the cart by the bed", is left: session 10 refuses it)
+_PLACING33 = re.compile(
+    r"^(?:(?:please|kindly|would you mind|could you|can you|would you|will you)\s+)*(?:put|place|"
+    r"set|pop|stand|lay|leave|move|putting|placing|setting|popping|standing|laying|leaving|"
+    r"moving)\b",
+    _F,
+)
+
+
 def _by_landmark33(text: str, lexicon: Lexicon) -> str:
-    """Session 33: 'by the X' taken off after 'on the S', when S is a surface of the scene and X
-    names nothing (no word of a scene name, nothing that asks): a spot on that surface the
-    scene cannot tell."""
+    """Session 33: 'by the X' taken off after 'on the S', when S is a surface of the scene, X
+    names nothing (no word of a scene name, nothing that asks) and the clause opens with a verb
+    of placing: a spot on that surface the scene cannot tell."""
     if not re.search(r" (?:by|next to|beside|near) ", text):
         return text
 
     def dropped(m: re.Match[str]) -> str:
         said = _scene_words29(lexicon)
         by = m["by"].split()[-1].lower()
-        if by in _WHEN33 or not _surface_only(m["on"].split(" ", 1)[1], lexicon) or by in said:
+        clause = re.split(r"[,.;:!?]\s*", text[: m.start()])[-1]
+        if not _PLACING33.match(clause) or by in _WHEN33 or by in said:
+            return m[0]
+        if not _surface_only(m["on"].split(" ", 1)[1], lexicon):
             return m[0]
         return m["on"] if _names_nothing(m["by"], lexicon) and not _ASKS29.search(by) else m[0]
 
