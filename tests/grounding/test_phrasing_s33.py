@@ -136,6 +136,17 @@ READS = [
     # (v) what it is for, of that person
     ("Bob needs the crisps to keep him going, and Carol the apple.", "chips>B & apple>C", CELL),
     ("Mr Lee needs the jug to tide him over.", "jug>B", WARD),
+    # (w) whose the things are, then the handover to that same person
+    (
+        "The apple is for Bob, and the cup, well, that's Carol's, so give it to Carol.",
+        "apple>B & cup>C",
+        CELL,
+    ),
+    (
+        "The apple is for Bob, and the cup, that's Carol's, so hand it over to Carol.",
+        "apple>B & cup>C",
+        CELL,
+    ),
     # (a) a header of the speaker's: a quick one before a bell
     ("Quick one before the bell: the apple to Bob.", "apple>B", CELL),
     # (b) a courtesy or address before 'please' without a comma
@@ -214,6 +225,8 @@ REFUSED = [
     ("start off with the cup and after that bob needs the apple", CELL),
     # (v) a pronoun that cannot be the one person named
     ("Mrs Khan needs the jug to keep him going.", WARD),
+    # (w) the handover to another person than the owner
+    ("The apple is for Bob, and the cup, that's Carol's, so give it to Alice.", CELL),
     # (a) before a person
     ("Quick one before Carol: the apple to Bob.", CELL),
 ]

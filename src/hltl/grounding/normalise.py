@@ -11042,6 +11042,28 @@ def _keep_going33(text: str, lexicon: Lexicon) -> str:
     return _KEEP_GOING33.sub(dropped, text)
 
 
+# "…, and the chips, well, those are Person A's, so give them to Person A": whose the things are,
+# then the handover to that same person
+_THOSE_ARE33 = re.compile(
+    r"\b(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?),\s*(?:well,\s*)?(?:those|they|that|"
+    r"it)(?:'s| are| is) (?P<p>[A-Z][A-Za-z ]*?)'s,\s*so (?:give|hand|pass|take) (?:them|it) "
+    r"(?:over )?to (?P<q>[A-Z][A-Za-z ]*?)(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _those_are33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above is 'X to P', when X is objects only and the owner and
+    the one handed them are the same one person (the handover says it; 'them' is X)."""
+    if "'s, so " not in text:
+        return text
+    m = _THOSE_ARE33.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["p"], lexicon) != _ids(m["q"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['x']} to {m['q']}{m['end']}"
+
+
 def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a courtesy or address of the session-24 list opening the instruction before
     'please' without a comma ("chale pls the chips to person a") taken off, as with one."""
@@ -11075,6 +11097,7 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _start_with33,
     _keep_going33,
     _courtesy_please33,
+    _those_are33,
 )
 
 
