@@ -27,7 +27,9 @@ READS = [
     ("Nothing fancy today, just the apple for Bob, thanks.", "apple>B", CELL),
     ("Oh, go on then, the cup to Carol.", "cup>C", CELL),
     ("The apple? Bob. The cup? Carol. Simple as that.", "apple>B & cup>C", CELL),
+    # (a') 'all yours' said to the person just addressed
     ("The cup, Carol, there you go, all yours.", "cup>C", CELL),
+    ("The cup, Carol, all yours.", "cup>C", CELL),
     ("Cheers in advance, the apple to Bob.", "apple>B", CELL),
     (
         "The crisps for Alice. The cup too. And, oh yes, the apple.",
@@ -162,7 +164,10 @@ def test_blind31_kinds_read(text: str, want: str, scene: object) -> None:
 REFUSED = [
     # (a) a part of the list with nothing named after it, or with no one named
     ("Go on then.", CELL),
+    # (a') 'all yours' with no person addressed just before it: whose?
     ("The cup, all yours.", CELL),
+    ("The cup to Bob, the apple, all yours.", CELL),
+    ("Bob gets the cup. The apple, all yours.", CELL),
     ("Simple as that.", CELL),
     ("No rush on the apple, the cup to Carol.", CELL),
     # (c) an idiom before a person; a pronoun after it that may hand her something else
