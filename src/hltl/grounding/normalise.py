@@ -10459,7 +10459,7 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
 
 # The speaker's own words said as a comma part or sentence of their own (a closed list): what the
 # request is not ('nothing fancy today'), giving in ('go on then'), that it is all there is
-# ('Simple as that'), handing it over ('all yours'), thanks ahead ('Cheers in advance'), what the
+# ('Simple as that'), thanks ahead ('Cheers in advance'), what the
 # speaker has just remembered ('oh yes'), and that neither task is pressing ('no rush on either of
 # them'). Each names nothing and changes nothing asked.
 _PARTS33 = re.compile(
@@ -10468,8 +10468,6 @@ _PARTS33 = re.compile(
     r"nothing (?:fancy|special)(?: today| this time)?|"
     r"(?:ah|oh|well),? go on(?:,)? then|go on(?:,)? then|"
     r"(?:it's |that's |it is |that is )?(?:as )?(?:simple|easy) as that|"
-    r"(?:there you go|there you are),? (?:it's |that's )?all (?:yours|theirs)|"
-    r"(?:it's |that's )?all yours|"
     r"(?:cheers|ta|thank you|thanks|many thanks) in advance|"
     r"(?:and,? )?(?:oh|ah),? yes|"
     r"(?:there's )?no (?:rush|hurry)(?: at all)? (?:on|with|for) (?:either|any|both|each|all|"
@@ -10482,7 +10480,7 @@ _PARTS33 = re.compile(
 def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a comma part or sentence that is wholly one of the closed list above taken
     off, when it names nothing and what is left names a person or surface (whom or where the
-    request is for: 'all yours' said with no one named is the hearer's)."""
+    request is for)."""
     if not _PARTS33.search(text):
         return text
     said = _stretches_dropped(
@@ -10494,6 +10492,26 @@ def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
         return text
     # "And, the apple": the 'and' kept before what followed the part taken off
     return re.sub(r"\b(And|and),\s+(?=the\b)", r"\1 ", said)
+
+
+# "The bottle, Person A, there you go, all yours.": handing it over, said to the person just
+# addressed
+_ALL_YOURS33 = re.compile(
+    r",\s*(?P<p>[A-Z][A-Za-z ]*?),\s*(?:(?:there|here) you (?:go|are),\s*)?(?:it's |that's )?"
+    r"all yours(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _all_yours33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: 'all yours' (and 'there you go' before it) taken off when the comma part
+    before it is one person of the scene alone, the one addressed ("The cup to Bob, the apple,
+    all yours": whose? left)."""
+    if "all yours" not in text:
+        return text
+    m = _ALL_YOURS33.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start()]}, {m['p']}{m['end'].strip()}"
 
 
 # wants said by an idiom: a closed list (docs/grounding.md, "Session 33 (engineer 12)"), each
@@ -11042,6 +11060,28 @@ def _keep_going33(text: str, lexicon: Lexicon) -> str:
     return _KEEP_GOING33.sub(dropped, text)
 
 
+# "…, and the chips, well, those are Person A's, so give them to Person A": whose the things are,
+# then the handover to that same person
+_THOSE_ARE33 = re.compile(
+    r"\b(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?),\s*(?:well,\s*)?(?:those|they|that|"
+    r"it)(?:'s| are| is) (?P<p>[A-Z][A-Za-z ]*?)'s,\s*so (?:give|hand|pass|take) (?:them|it) "
+    r"(?:over )?to (?P<q>[A-Z][A-Za-z ]*?)(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _those_are33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above is 'X to P', when X is objects only and the owner and
+    the one handed them are the same one person (the handover says it; 'them' is X)."""
+    if "'s, so " not in text:
+        return text
+    m = _THOSE_ARE33.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["p"], lexicon) != _ids(m["q"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['x']} to {m['q']}{m['end']}"
+
+
 def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a courtesy or address of the session-24 list opening the instruction before
     'please' without a comma ("chale pls the chips to person a") taken off, as with one."""
@@ -11053,6 +11093,7 @@ def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
 
 _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts33,
+    _all_yours33,
     _idioms33,
     _would_help33,
     _more_than33,
@@ -11075,6 +11116,7 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _start_with33,
     _keep_going33,
     _courtesy_please33,
+    _those_are33,
 )
 
 
