@@ -369,12 +369,10 @@ KNOWN_MISSES = frozenset(
         "Person A and Person B both want a drink, so the bottle to one and the cup to the "
         "other, whichever way round.",
         "Each student gets a book, you choose who gets which.",
-        "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
-        "Nothing for Person A today; the chips go to Person B.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
         "other.",

@@ -18769,7 +18769,533 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_otherwise31s,
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
+# -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
+
+
+def _share_out33r(node: Node | None) -> bool:
+    """Whether ``node`` is a share-out: an 'or' of 'and's of single tasks, each 'and' the same
+    objects to the same people, another way round."""
+    if not isinstance(node, Group) or node.op != "or" or len(node.children) < 2:
+        return False
+    ways = [c for c in node.children if isinstance(c, Group) and c.op == "and"]
+    if len(ways) != len(node.children) or not all(
+        isinstance(t, Task) for c in ways for t in c.children
+    ):
+        return False
+    objs = {frozenset(t.obj for t in tasks(c)) for c in ways}
+    people = {frozenset(t.target for t in tasks(c)) for c in ways}
+    return len(objs) == 1 and len(people) == 1
+
+
+def _objects_named33r(words: list[str], lexicon: Lexicon) -> bool:
+    """Whether each of ``words`` is one whole name of one object, each another object."""
+    if not all(_one_object32r(w, lexicon) for w in words):
+        return False
+    return len(set().union(*(_ids(w, lexicon) for w in words))) == len(words)
+
+
+def _object_said33r(oid: str, lexicon: Lexicon) -> str | None:
+    """A name of object ``oid`` that names it alone in the scene ('the bottle'), or None."""
+    obj = next((o for o in lexicon.scene.objects if o.id == oid), None)
+    if obj is None:
+        return None
+    for name in (*obj.aliases, obj.category):
+        if _ids(f"the {name}", lexicon) == {oid}:
+            return f"the {name}"
+    return None
+
+
+# a closing remark that leaves a choice to the robot: how it picks ("whichever's closer to hand",
+# "whatever's nearest", "whichever you like"), someone not minding which ("the banjo player's not
+# fussy", "he's not fussed which colour", "the supervisor isn't bothered which"), the speaker's
+# use of whichever is picked ("I'll plate up on whichever you pick"), and, after a share-out,
+# "either way round is fine", "you decide who gets which"
+_FREE_CHOICE33R = re.compile(
+    r",\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|"
+    r"handiest)(?: to (?:hand|you))?|whichever(?: one)? you (?:like|pick|choose|prefer|fancy)|"
+    r"(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't| are not|"
+    r" aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)(?: "
+    r"(?:colour|color|one|size|kind))?)?|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|"
+    r"into) whichever(?: one)? you (?:pick|choose|use)|(?P<share>(?:either|any) way(?: round)? "
+    r"(?:is|'s) (?:fine|ok|okay|good)|you decide who gets (?:which|what)))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _free_choice33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing remark leaving a choice to the robot (above) says again what
+    the choice before it says: taken off when what is left reads as one choice of objects (or,
+    for 'either way round' and 'who gets which', as a share-out). After one object, or a choice
+    of another kind, it is left, and refused."""
+    m = _FREE_CHOICE33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if not (_share_out33r(node) if m.group("share") else _one_choice28r(node, False)):
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "One each for Alice and Bob, the bottle and the crisps, …": the things said after the people
+_ONE_EACH_LISTED33R = re.compile(
+    r"^(?P<head>one (?:each|apiece) for (?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?)),\s*"
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_each_listed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One each for P and Q, X and Y' is session 29's 'One each for P and Q
+    out of X and Y', P and Q two people, X and Y two objects, each one named whole."""
+    m = _ONE_EACH_LISTED33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon):
+        return text
+    if not _objects_named33r(re.split(r" and ", m["x"], maxsplit=1, flags=_F), lexicon):
+        return text
+    return f"{m['head']} out of {m['x']}{text[m.start('end') :]}"
+
+
+# "Bob's off to the cricket, so he's taking both, the bottle and the crisps."
+_SO_TAKING33R = re.compile(
+    r"^(?P<lead>(?P<p>[A-Za-z][\w ]*?)(?:'s| is) [a-z][a-z' ]*?,\s*so )(?P<pro>he|she)(?:'s| is) "
+    r"taking (?P<x>(?:both,?\s*)?[^,;:.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _so_taking33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "P's off to …, so he's taking X" is "…, so he's having X" (what P takes
+    with him is his: session 32's "P's taking X home"): the remark before names P alone, the
+    pronoun may be P, and X names the scene's objects and nothing else ('taking X to Q', 'taking
+    X over', left, refused)."""
+    m = _SO_TAKING33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    pid = next(iter(_ids(m["p"], lexicon)))
+    if _ids(m["lead"], lexicon) != {pid} or not _fits(pid, m["pro"], lexicon):
+        return text
+    x = m["x"]
+    if not _objects_only(x, lexicon) or re.search(r"\b(?:to|over|back|home|away|out)\b", x, _F):
+        return text
+    return f"{m['lead']}{m['pro']}'s having {x}{m['end'] or '.'}"
+
+
+_NUMBERS33R = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+# "Put the two of them, bottle and crisps, up on the shelf": 'them' said before its list
+_THEM_LISTED33R = re.compile(
+    r"\bthe (?P<n>two|three|four|five|six) of them,\s*(?P<x>[a-z][a-z ]*?(?:,\s*[a-z][a-z ]*?)* "
+    r"and [a-z][a-z ]*?),",
+    _F,
+)
+
+
+def _them_listed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the two of them, X and Y,' with nothing named before it is the list:
+    'them' stands for what follows, when the list names as many different objects as the count
+    says, each whole (a count it does not meet, or a person in it, is left, refused)."""
+    m = _THEM_LISTED33R.search(text)
+    if m is None or _names(text[: m.start()], lexicon):
+        return text
+    parts = re.split(r",\s*(?:and\s+)?|\s+and\s+", m["x"], flags=_F)
+    if not _objects_named33r(parts, lexicon) or len(parts) != _NUMBERS33R[m["n"].lower()]:
+        return text
+    return f"{text[: m.start()]}{m['x']}{text[m.end() :]}"
+
+
+# "Every single item here goes to Person B, all four of them", "Every box in the place, all
+# three, goes up onto the belt"
+_EVERY_COUNTED33R = re.compile(
+    r"\b(?P<every>every (?P<single>single )?(?P<kind>[a-z]+))(?P<here> here| in the place| in "
+    r"the room| in sight)?(?P<mid>[^,;.!?]*?)(?P<count>,\s*all (?P<n>two|three|four|five|six)"
+    r"(?: of them)?)(?:,(?=\s*[a-z]))?(?=\s*(?:[,.;!]|$|[a-z]))",
+    _F,
+)
+
+
+def _every_counted33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'every (single) item (here) …, all four of them' is 'every item …' when
+    the count is the number of the scene's objects (of the kind said: 'every box …, all three'
+    with three boxes); 'single' and 'here' / 'in the place' go with it. A count the scene does not
+    meet is left, refused."""
+    m = _EVERY_COUNTED33R.search(text)
+    if m is None:
+        return text
+    kind = m["kind"].lower()
+    if kind in ("item", "thing", "object"):
+        have = len(lexicon.scene.objects)
+    elif _only_kind(kind, lexicon, "object"):
+        have = len(_ids(kind, lexicon, "object"))
+    else:
+        return text
+    if have != _NUMBERS33R[m["n"].lower()]:
+        return text
+    return f"{text[: m.start()]}every {m['kind']}{m['mid']}{text[m.end() :]}"
+
+
+# "the drinking things, which is the bottle plus the cup": a description, then what it is
+_WHICH_IS_LIST33R = re.compile(
+    r"\bthe (?P<desc>[a-z]+ (?:things|items|bits|stuff)),\s*which (?:is|are|means) "
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:plus|and|with) (?P<y>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _which_is_list33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the drinking things, which is the bottle plus the cup' is the list
+    'the bottle and the cup': the description names nothing of the scene and the list two
+    different objects, each whole."""
+    m = _WHICH_IS_LIST33R.search(text)
+    if m is None or _names(m["desc"].rsplit(" ", 1)[0], lexicon):
+        return text
+    x, y = m["x"], m["y"]
+    if not _objects_named33r([x, y], lexicon):
+        return text
+    return f"{text[: m.start()]}{x} and {y}{text[m.end() :]}"
+
+
+# "A thing for each of them, Person A on the chips and Person B on the bottle", "One thing apiece
+# for them: Person A takes the cup, Person B takes the apple."
+_THING_EACH33R = re.compile(
+    r"^(?:a|one) (?:thing|item) (?:for each of them|apiece for them|each for them|each|apiece)"
+    r"\s*[,:]\s*(?P<list>[^;.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+_ONE_SHARE33R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:on|takes|gets|has|having|with) (?P<x>(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)$",
+    _F,
+)
+
+
+def _thing_each33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'A thing for each of them, P on the X and Q on the Y' (or 'P takes the
+    X, …') is 'P gets the X and Q gets the Y': the header says each of the scene's people gets
+    one thing, and the list gives every one of them ('them', no one named before) one
+    different object, each whole; anything else (a person left out or twice, two things for one)
+    is left, refused."""
+    m = _THING_EACH33R.match(text)
+    if m is None:
+        return text
+    shares = [_ONE_SHARE33R.match(s) for s in re.split(r",\s*(?:and\s+)?|\s+and\s+", m["list"])]
+    if not all(shares):
+        return text
+    said = [s for s in shares if s is not None]
+    people = [_ids(s["p"], lexicon) for s in said]
+    if not all(_only_person(s["p"], lexicon) for s in said):
+        return text
+    if {next(iter(p)) for p in people} != {h.id for h in lexicon.scene.humans}:
+        return text
+    if len(said) != len(lexicon.scene.humans):
+        return text
+    if not _objects_named33r([s["x"] for s in said], lexicon):
+        return text
+    out = [f"{s['p']} gets {s['x']}" for s in said]
+    joined = ", ".join(out[:-1]) + f" and {out[-1]}"
+    return f"{joined}{m['end'] or '.'}"
+
+
+# "Both cups need a rinse after the titration, so into the sink they go, the green and the white."
+_INTO_THEY_GO33R = re.compile(
+    r"^(?P<x>(?:both|the two|all (?:two|three|four)|the) [a-z]+s) (?:both |all )?(?:want|need|"
+    r"could do with) (?:a )?[a-z]+(?: (?P<why>(?:after|before|from) [a-z ]+?))?\s*,\s*(?:so )?"
+    r"(?P<prep>into|in|onto|on) (?P<s>the [a-z ]+?) (?:they go|with (?:them|the pair of them|both "
+    r"of them|the pair|the two of them))(?:,\s*the (?P<a>[a-z]+) and the (?P<b>[a-z]+))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _into_they_go33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Both cups need a rinse (after the titration), so into the sink they
+    go(, the green and the white)' is 'Put both cups into the sink' (session 32's 'into S with
+    them'): X the scene's objects only, what they need it after naming nothing of the scene, S one
+    surface, and the adjectives after it (when said) naming X's objects, each once."""
+    m = _INTO_THEY_GO33R.match(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    if not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if m["why"] and _names(m["why"], lexicon):
+        return text
+    x = m["x"]
+    if m["a"]:
+        kind = re.sub(r"^(?:both|the two|all \w+|the) ", "", x, flags=_F)[:-1]
+        said = [_ids(f"the {adj} {kind}", lexicon, "object") for adj in (m["a"], m["b"])]
+        if not all(len(s) == 1 for s in said) or said[0] | said[1] != _ids(x, lexicon):
+            return text
+        if said[0] == said[1]:
+            return text
+    return f"Put {x[:1].lower()}{x[1:]} {m['prep']} {m['s']}{m['end'] or '.'}"
+
+
+# "Not the cup, not the apple, just the bottle to Person B."
+_NOT_THESE33R = re.compile(
+    r"^(?P<nots>(?:not (?:the |a |an )?[a-z]+(?: [a-z]+)?,\s*)+)(?P<just>(?:just|only) )?"
+    r"(?P<rest>the .+)$",
+    _F,
+)
+# "Not on the floor, into Person A's hand, the bottle."
+_NOT_THERE33R = re.compile(
+    r"^not (?:on|in|onto|into|under) (?:the )?(?P<place>[a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<where>(?:into|onto|to|in|on) [^,;.!?]+?),\s*(?P<x>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_these33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Not the X, not the Y, just the Z to P' opens with what is not asked
+    for: taken off when each 'not' names one object of the scene that the rest does not name
+    (the rest then reads alone); 'Not on the floor, into P's hand, the X' is 'The X into P's
+    hand' when the place not meant is none the rest says."""
+    m = _NOT_THESE33R.match(text)
+    if m is not None:
+        nots = [n for n in re.split(r",\s*", m["nots"]) if n.strip()]
+        said = [re.sub(r"^not ", "", n, flags=_F) for n in nots]
+        rest = m["rest"]
+        if not all(_one_object32r(s, lexicon) for s in said) or not _ids(rest, lexicon, "object"):
+            return text
+        if set().union(*(_ids(s, lexicon) for s in said)) & _ids(rest, lexicon):
+            return text
+        return f"{rest[:1].upper()}{rest[1:]}"
+    m = _NOT_THERE33R.match(text)
+    if m is None or not _one_object32r(m["x"], lexicon):
+        return text
+    if _names(m["place"], lexicon) and _ids(m["place"], lexicon) & _ids(m["where"], lexicon):
+        return text
+    if not _ids(m["where"], lexicon) or _ids(m["where"], lexicon, "object"):
+        return text
+    x = m["x"]
+    return f"{x[:1].upper()}{x[1:]} {m['where']}{m['end'] or '.'}"
+
+
+# ", and definitely not for Person B, who's on a diet for the rugby", ", not to the teacher"
+_NOT_FOR_OTHER33R = re.compile(
+    r",\s*(?:and )?(?:definitely |certainly |absolutely |just )?not (?:for|to) "
+    r"(?P<q>(?:the )?[A-Za-z][\w ]*?)(?:,\s*who(?:'s| is) (?P<who>[^,;.!?]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing ', (and) not for / to Q' after a request to another person
+    says who does not get it (an afterthought after a pause; the tuning part's 'Give Bob the
+    chips but not to Carol' stays refused): taken off when Q names people of the scene only,
+    none of whom the request names (so 'to the student, not to Noah', which picks a student, is
+    left), and a 'who …' about Q names nothing of the scene. What is left is read as said: 'The
+    globe to the student' with two students is refused naming them."""
+    m = _NOT_FOR_OTHER33R.search(text)
+    if m is None:
+        return text
+    q = _ids(m["q"], lexicon, "human")
+    if not q or _ids(m["q"], lexicon) != q or (m["who"] and _names(m["who"], lexicon)):
+        return text
+    head = text[: m.start()]
+    said = _ids(head, lexicon, "human")
+    if not said or said & q or not _ids(head, lexicon, "object"):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "Nothing for Person B today, he's fasting; the bottle's for Person A."
+_NOTHING_FOR33R = re.compile(
+    r"^nothing for (?P<q>[A-Za-z][\w ]*?)(?: today| this time| now| for now)?(?:,\s*(?:he|she|"
+    r"they)(?:'s| is|'re| are) [a-z]+(?: [a-z]+)?)?\s*[;.]\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _nothing_for33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Nothing for Q (today)(, he's fasting); <request>' opens with who gets
+    nothing: taken off when Q is one person of the scene the request does not name and the
+    request names someone else (the remark about Q names nothing)."""
+    m = _NOTHING_FOR33R.match(text)
+    if m is None or not _only_person(m["q"], lexicon):
+        return text
+    rest = m["rest"]
+    q = _ids(m["q"], lexicon)
+    said = _ids(rest, lexicon, "human")
+    if not said or said & q or not _ids(rest, lexicon, "object"):
+        return text
+    if _names(text[: m.start("rest")], lexicon) != _names(m["q"], lexicon):
+        return text
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+# "The bottle goes to Person A and to nobody else."
+_NOBODY_ELSE33R = re.compile(
+    r"(?:,\s*|\s+)(?:and |but )?(?:to |for )?(?:nobody|no one|no-one|noone) else(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _nobody_else33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'and to nobody else' closing a request to one person says what a
+    request says: taken off (after a request to two people, or none, left, refused)."""
+    m = _NOBODY_ELSE33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    if len(_ids(head, lexicon, "human")) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+_ANYTHING_BUT33R = re.compile(
+    r"\banything (?:but|except|apart from|other than|bar) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[,;.!]|$|\s(?:for|to|goes|go|onto|into|on|in)\b))",
+    _F,
+)
+
+
+def _anything_but33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'anything but the chips' is the one object left when the scene has
+    one besides X ('Anything but the chips for Person B' with a bottle and chips); with more left
+    'anything' may be one of them or all, and the text is left, refused."""
+    m = _ANYTHING_BUT33R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    left = [o.id for o in lexicon.scene.objects if o.id not in _ids(m["x"], lexicon)]
+    said = _object_said33r(left[0], lexicon) if len(left) == 1 else None
+    if said is None:
+        return text
+    return f"{text[: m.start()]}{said}{text[m.end() :]}"
+
+
+# "Onto the belt with any box apart from the big one, whichever you like."
+_ONTO_WITH33R = re.compile(
+    r"^(?P<prep>onto|into|on to|in to|up onto) (?P<s>the [a-z]+(?: [a-z]+)?) with "
+    r"(?P<x>[^,;:.!?]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _onto_with33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Onto S with X' is 'Put X onto S' (the motion first, then what is
+    moved): S one surface of the scene, X naming objects and no person or surface."""
+    m = _ONTO_WITH33R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    x = m["x"]
+    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    return f"Put {x} {m['prep'].lower()} {m['s']}{text[m.start('end') :]}"
+
+
+# a correction's cue said at length: "oh hang about, I got that wrong", "hmm, no, my mistake",
+# "oh, correction from the skipper", "no, wrong way round" (before the whole request again)
+_CORRECTION_CUE33R = re.compile(
+    r",\s*(?:oh,? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my "
+    r"mistake|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?|no,? (?P<way>wrong way round|"
+    r"the wrong way round)|no,? not (?P<x>(?:the )?[a-z]+(?: [a-z]+)?))\s*,\s*(?P<fix>.+)$",
+    _F,
+)
+# the person said again as an owner: "they're Carol's"
+_THEYRE_OWNED33R = re.compile(
+    r"^(?:they're|they are|those are|these are) (?P<p>[A-Za-z][\w ]*?)'s(?P<end>\s*[.!]?)$", _F
+)
+
+
+def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a correction's cue said at length (above) is 'no': "Crisps to Alice, oh
+    hang about, I got that wrong, they're Carol's" is "Crisps to Alice, no, to Carol" (the
+    owner said again a person of the scene other than the request's); "Knife to Lena, oh no, not
+    the knife, the tongs" is "…, no, the tongs" (what 'not' names is the request's object);
+    'no, wrong way round' before the whole request again is 'no'. The request corrected must
+    name one person; the correction is then read by the grammar's own rule."""
+    m = _CORRECTION_CUE33R.search(text)
+    if m is None:
+        return text
+    head, fix = text[: m.start()], m["fix"]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    if m["x"] is not None:
+        if not _one_object32r(m["x"], lexicon):
+            return text
+        if not _ids(m["x"], lexicon) <= _ids(head, lexicon) or not _ids(fix, lexicon, "object"):
+            return text
+    if m["way"] is not None and not (_ids(fix, lexicon, "human") and _ids(fix, lexicon, "object")):
+        return text
+    owned = _THEYRE_OWNED33R.match(fix)
+    if owned is not None:
+        if not _only_person(owned["p"], lexicon) or _ids(owned["p"], lexicon) == people:
+            return text
+        fix = f"to {owned['p']}{owned['end'] or '.'}"
+    return f"{head}, no, {fix}"
+
+
+# "One of these to Person A, the bottle or the chips, …": 'these' said before its choice
+_ONE_OF_THESE33R = re.compile(
+    r"^(?:just )?one of (?:these|those|them|the two) (?P<to>to|for) (?P<p>[A-Za-z][\w ]*?),\s*"
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) or (?P<y>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_of_these33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One of these to P, X or Y' is 'Either X or Y to P': 'these' stands for
+    the choice said after the person, two different objects of the scene, each whole; P one
+    person."""
+    m = _ONE_OF_THESE33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x, y = m["x"], m["y"]
+    if not _objects_named33r([x, y], lexicon):
+        return text
+    return f"Either {x} or {y} {m['to']} {m['p']}{text[m.start('end') :]}"
+
+
+# "Of everything lying about here, Person A only wants the bottle."
+_OF_EVERYTHING33R = re.compile(
+    r"^(?:out )?of (?:everything|all the things|all the stuff|all of it|all that)(?P<mid>(?: "
+    r"[a-z]+){0,4}),\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _of_everything33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Of everything lying about here, P only wants X' opens with what X is
+    picked out of, the scene's things: taken off when it names nothing of the scene and the rest
+    names one person and an object (the rest is then read alone)."""
+    m = _OF_EVERYTHING33R.match(text)
+    if m is None or _names(m["mid"], lexicon):
+        return text
+    rest = m["rest"]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+_STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _one_of_these33r,
+    _of_everything33r,
+    _one_each_listed33r,
+    _free_choice33r,
+    _so_taking33r,
+    _them_listed33r,
+    _every_counted33r,
+    _which_is_list33r,
+    _thing_each33r,
+    _into_they_go33r,
+    _not_these33r,
+    _not_for_other33r,
+    _nothing_for33r,
+    _nobody_else33r,
+    _anything_but33r,
+    _onto_with33r,
+    _correction_cue33r,
+)
+
+
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
+    *_STEPS33R,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
     # session 32 (12r): blind30's choices, counts, negation, exclusions and corrections
