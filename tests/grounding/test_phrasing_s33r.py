@@ -91,8 +91,20 @@ def _cases(*cases: tuple[str, str | None, Scene]) -> list[tuple[str, str | None,
             "(blanket_blue>B & blanket_grey>C) | (blanket_grey>B & blanket_blue>C)",
             WARD,
         ),
+        (
+            "Hand Kofi a spanner, whichever's nearest your gripper.",
+            "spanner_small>A | spanner_large>A",
+            WORKSHOP,
+        ),
+        (
+            "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
+            "cup>A | apple>A",
+            SQ,
+        ),
         # after one object the remark is left, refused
         ("Give Bob the red mug, whichever's closer to hand.", None, CELL),
+        ("Hand Kofi the hammer, whichever's nearest your gripper.", None, WORKSHOP),
+        ("Pass Person A the cup, depending on what's easiest to reach.", None, SQ),
         ("Give Sam the stapler, he's not fussed which colour.", None, OFFICE),
         ("The drill to Jess, whatever's nearest.", None, WORKSHOP),
     ),
@@ -247,6 +259,18 @@ def test_which_is_list(text: str, want: str | None, scene: Scene) -> None:
             SQ,
         ),
         ("A thing for each of them: Dana takes the spoon, Omar takes the bowl.", None, LAB),
+        (
+            "Everyone gets one thing: the cup for Alice, the apple for Bob and the crisps for "
+            "Carol.",
+            "cup>A & apple>B & chips>C",
+            CELL,
+        ),
+        ("Everyone gets one thing: the cup for Alice, the apple for Bob.", None, CELL),
+        (
+            "Everyone gets one thing: the cup for Alice, the apple for Bob and the crisps for Bob.",
+            None,
+            CELL,
+        ),
     ),
 )
 def test_thing_each(text: str, want: str | None, scene: Scene) -> None:
@@ -352,8 +376,15 @@ def test_nothing_for(text: str, want: str | None, scene: Scene) -> None:
     _cases(
         ("Anything but the chips for Person B.", "bottle>B", T21),
         ("Give Person B anything but the chips.", "bottle>B", T21),
-        # three things left: one of them, or all?
-        ("Anything but the chips for Person B.", None, SQ),
+        ("Anything but the chips for Person B.", "bottle>B | cup>B | apple>B", SQ),
+        ("Person B can have anything except the apple.", "bottle>B | chips>B | cup>B", SQ),
+        (
+            "Person A will take anything at all as long as it isn't the cup.",
+            "bottle>A | chips>A | apple>A",
+            F42,
+        ),
+        # a person after 'as long as it isn't'
+        ("Person A will take anything at all as long as it isn't Person B.", None, F42),
     ),
 )
 def test_anything_but(text: str, want: str | None, scene: Scene) -> None:
@@ -404,12 +435,17 @@ def test_onto_says_where_one_goes() -> None:
             T21,
         ),
         ("Knife to Lena, oh no, not the knife, the tongs.", "tongs>B", KITCHEN),
+        ("Crisps to Bob, ah, not Bob, Alice.", "chips>A", FIG1),
+        ("Give Person B the apple and the cup, well, not the cup, just the apple.", "apple>B", F41),
         # the same person; no such person; no whole request after 'wrong way round'; 'not' naming
         # what the request did not name
         ("Crisps to Alice, oh hang about, I got that wrong, they're Alice's.", None, CELL),
         ("Crisps to Alice, oh hang about, I got that wrong, they're Dave's.", None, CELL),
         ("Chips to Person B, no, wrong way round.", None, T21),
         ("Knife to Lena, oh no, not the lemon, the tongs.", None, KITCHEN),
+        ("Crisps to Bob, ah, not Alice, Carol.", None, FIG1),
+        ("Crisps to Bob, ah, not Bob, the bottle.", None, FIG1),
+        ("Give Person B the apple and the cup, well, not the bottle, just the apple.", None, F41),
     ),
 )
 def test_correction_cue(text: str, want: str | None, scene: Scene) -> None:
@@ -436,6 +472,74 @@ def test_correction_cue(text: str, want: str | None, scene: Scene) -> None:
     ),
 )
 def test_one_of_these(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- share-outs said another way: 'Two spanners, one to P and one to Q'; 'One thing each: X to
+# one of them, Y to the other'; 'Whichever of the two people is closer can have X' -------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Two spanners, one to Kofi and one to Jess.",
+            "(spanner_small>A & spanner_large>B) | (spanner_large>A & spanner_small>B)",
+            WORKSHOP,
+        ),
+        (
+            "Two cups, one to Dana and one to Omar.",
+            "(cup_green>A & cup_white>B) | (cup_white>A & cup_green>B)",
+            LAB,
+        ),
+        (
+            "One thing each: the chips to one of them, the bottle to the other, you pick who gets "
+            "what.",
+            "(bottle>A & chips>B) | (chips>A & bottle>B)",
+            DUO,
+        ),
+        ("Whichever of the two people is closer can have the bottle.", "bottle>A | bottle>B", T21),
+        # one person twice; a count the scene does not meet; one object twice; three people
+        ("Two spanners, one to Kofi and one to Kofi.", None, WORKSHOP),
+        ("Two pens, one to Priya and one to Sam.", None, OFFICE),
+        ("One thing each: the chips to one of them, the chips to the other.", None, DUO),
+        ("Whichever of the two people is closer can have the bottle.", None, CELL),
+    ),
+)
+def test_share_outs(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- ', in whatever order suits you'; ", she'll need the two"; '… the white one, mind, not the
+# blue' ------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Put all three boxes on the conveyor, in whatever order suits you.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        (
+            "The pair of spanners to Jess, she'll need the two.",
+            "spanner_small>B & spanner_large>B",
+            WORKSHOP,
+        ),
+        ("Mr Novak wants a plate — the white one, mind, not the blue.", "plate_white>C", KITCHEN),
+        # steps in order; one thing, not two; no red plate
+        (
+            "Put the small box on the conveyor, then the large box on the pallet, in whatever "
+            "order suits you.",
+            None,
+            DEPOT,
+        ),
+        ("The hammer to Jess, she'll need the two.", None, WORKSHOP),
+        ("Mr Novak wants a plate — the white one, mind, not the red.", None, KITCHEN),
+    ),
+)
+def test_said_again(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 

@@ -18806,18 +18806,22 @@ def _object_said33r(oid: str, lexicon: Lexicon) -> str | None:
 
 
 # a closing remark that leaves a choice to the robot: how it picks ("whichever's closer to hand",
-# "whatever's nearest", "whichever you like"), someone not minding which ("the banjo player's not
+# "whatever's nearest", "whichever's nearest your gripper", "depending on what's easiest to reach",
+# "whichever you like"), someone not minding which ("the banjo player's not
 # fussy", "he's not fussed which colour", "the supervisor isn't bothered which"), the speaker's
 # use of whichever is picked ("I'll plate up on whichever you pick"), and, after a share-out,
 # "either way round is fine", "you decide who gets which"
 _FREE_CHOICE33R = re.compile(
     r",\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|"
-    r"handiest)(?: to (?:hand|you))?|whichever(?: one)? you (?:like|pick|choose|prefer|fancy)|"
+    r"handiest)(?: to (?:hand|you)|(?: to)? (?:your|the) (?:gripper|arm|hand))?|whichever(?: one)? "
+    r"you (?:like|pick|choose|prefer|fancy)|depending on (?:what|which|whichever)(?:'s| is) "
+    r"(?:easiest|nearest|closest|handiest|quickest)(?: to (?:reach|get|grab))?|"
     r"(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't| are not|"
     r" aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)(?: "
     r"(?:colour|color|one|size|kind))?)?|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|"
     r"into) whichever(?: one)? you (?:pick|choose|use)|(?P<share>(?:either|any) way(?: round)? "
-    r"(?:is|'s) (?:fine|ok|okay|good)|you decide who gets (?:which|what)))(?P<end>\s*[.!]?)$",
+    r"(?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|choose) who gets (?:which|what)))"
+    r"(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -18961,20 +18965,22 @@ def _which_is_list33r(text: str, lexicon: Lexicon) -> str:
 # "A thing for each of them, Person A on the chips and Person B on the bottle", "One thing apiece
 # for them: Person A takes the cup, Person B takes the apple."
 _THING_EACH33R = re.compile(
-    r"^(?:a|one) (?:thing|item) (?:for each of them|apiece for them|each for them|each|apiece)"
+    r"^(?:(?:a|one) (?:thing|item) (?:for each of them|apiece for them|each for them|each|apiece)"
+    r"|(?:everyone|everybody|each of them) gets? (?:one|a) (?:thing|item))"
     r"\s*[,:]\s*(?P<list>[^;.!?]+?)(?P<end>\s*[.!]?)$",
     _F,
 )
 _ONE_SHARE33R = re.compile(
-    r"^(?P<p>[A-Za-z][\w ]*?) (?:on|takes|gets|has|having|with) (?P<x>(?:the |a |an )?[a-z]+"
-    r"(?: [a-z]+)?)$",
+    r"^(?:(?P<p>[A-Za-z][\w ]*?) (?:on|takes|gets|has|having|with) (?P<x>(?:the |a |an )?[a-z]+"
+    r"(?: [a-z]+)?)|(?P<x2>the [a-z]+(?: [a-z]+)?) (?:for|to) (?P<p2>[A-Za-z][\w ]*?))$",
     _F,
 )
 
 
 def _thing_each33r(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12r): 'A thing for each of them, P on the X and Q on the Y' (or 'P takes the
-    X, …') is 'P gets the X and Q gets the Y': the header says each of the scene's people gets
+    X, …'; "Everyone gets one thing: the X for P, …") is 'P gets the X and Q gets the Y': the
+    header says each of the scene's people gets
     one thing, and the list gives every one of them ('them', no one named before) one
     different object, each whole; anything else (a person left out or twice, two things for one)
     is left, refused."""
@@ -18984,17 +18990,16 @@ def _thing_each33r(text: str, lexicon: Lexicon) -> str:
     shares = [_ONE_SHARE33R.match(s) for s in re.split(r",\s*(?:and\s+)?|\s+and\s+", m["list"])]
     if not all(shares):
         return text
-    said = [s for s in shares if s is not None]
-    people = [_ids(s["p"], lexicon) for s in said]
-    if not all(_only_person(s["p"], lexicon) for s in said):
+    said = [(s["p"] or s["p2"], s["x"] or s["x2"]) for s in shares if s is not None]
+    if not all(_only_person(p, lexicon) for p, _x in said):
         return text
-    if {next(iter(p)) for p in people} != {h.id for h in lexicon.scene.humans}:
+    if {next(iter(_ids(p, lexicon))) for p, _x in said} != {h.id for h in lexicon.scene.humans}:
         return text
     if len(said) != len(lexicon.scene.humans):
         return text
-    if not _objects_named33r([s["x"] for s in said], lexicon):
+    if not _objects_named33r([x for _p, x in said], lexicon):
         return text
-    out = [f"{s['p']} gets {s['x']}" for s in said]
+    out = [f"{p} gets {x}" for p, x in said]
     joined = ", ".join(out[:-1]) + f" and {out[-1]}"
     return f"{joined}{m['end'] or '.'}"
 
@@ -19146,24 +19151,29 @@ def _nobody_else33r(text: str, lexicon: Lexicon) -> str:
 
 
 _ANYTHING_BUT33R = re.compile(
-    r"\banything (?:but|except|apart from|other than|bar) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)"
-    r"(?=\s*(?:[,;.!]|$|\s(?:for|to|goes|go|onto|into|on|in)\b))",
+    r"\banything(?: at all)?,? (?:(?:but|except|apart from|other than|bar)|as long as it(?:'s not| "
+    r"isn't| is not)) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[,;.!]|$|\s(?:for|to|goes|go|"
+    r"onto|into|on|in)\b))",
     _F,
 )
 
 
 def _anything_but33r(text: str, lexicon: Lexicon) -> str:
-    """Session 33 (12r): 'anything but the chips' is the one object left when the scene has
-    one besides X ('Anything but the chips for Person B' with a bottle and chips); with more left
-    'anything' may be one of them or all, and the text is left, refused."""
+    """Session 33 (12r): 'anything but the chips', 'anything at all as long as it isn't the
+    cup' is one of the scene's other objects (blind19's reading): the one object left, or 'any
+    one of the A, the B or the C', each said by a name of its own (X one whole name of the
+    scene's objects; where an object has no name of its own the text is left, refused)."""
     m = _ANYTHING_BUT33R.search(text)
     if m is None or not _whole_name(m["x"], lexicon, "object"):
         return text
     left = [o.id for o in lexicon.scene.objects if o.id not in _ids(m["x"], lexicon)]
-    said = _object_said33r(left[0], lexicon) if len(left) == 1 else None
-    if said is None:
+    said = [_object_said33r(oid, lexicon) for oid in left]
+    names = [n for n in said if n is not None]
+    if not names or len(names) != len(said):
         return text
-    return f"{text[: m.start()]}{said}{text[m.end() :]}"
+    if len(names) > 1:
+        names = [f"any one of {', '.join(names[:-1])} or {names[-1]}"]
+    return f"{text[: m.start()]}{names[0]}{text[m.end() :]}"
 
 
 # "Onto the belt with any box apart from the big one, whichever you like."
@@ -19191,7 +19201,8 @@ def _onto_with33r(text: str, lexicon: Lexicon) -> str:
 _CORRECTION_CUE33R = re.compile(
     r",\s*(?:oh,? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my "
     r"mistake|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?|no,? (?P<way>wrong way round|"
-    r"the wrong way round)|no,? not (?P<x>(?:the )?[a-z]+(?: [a-z]+)?))\s*,\s*(?P<fix>.+)$",
+    r"the wrong way round)|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
+    r"\s*,\s*(?P<fix>.+)$",
     _F,
 )
 # the person said again as an owner: "they're Carol's"
@@ -19204,7 +19215,8 @@ def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12r): a correction's cue said at length (above) is 'no': "Crisps to Alice, oh
     hang about, I got that wrong, they're Carol's" is "Crisps to Alice, no, to Carol" (the
     owner said again a person of the scene other than the request's); "Knife to Lena, oh no, not
-    the knife, the tongs" is "…, no, the tongs" (what 'not' names is the request's object);
+    the knife, the tongs" is "…, no, the tongs" (what 'not' names is the request's object, or
+    its person: "Crisps to Bob, ah, not Bob, Alice"; 'well, not the cup, just the apple' too);
     'no, wrong way round' before the whole request again is 'no'. The request corrected must
     name one person; the correction is then read by the grammar's own rule."""
     m = _CORRECTION_CUE33R.search(text)
@@ -19215,9 +19227,15 @@ def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
     if len(people) != 1 or not _ids(head, lexicon, "object"):
         return text
     if m["x"] is not None:
-        if not _one_object32r(m["x"], lexicon):
+        # what 'not' takes back: one object or the person of the request, and the fix one of
+        # its kind
+        if _one_object32r(m["x"], lexicon):
+            kind = "object"
+        elif _ids(m["x"], lexicon) == people and _only_person(m["x"], lexicon):
+            kind = "human"
+        else:
             return text
-        if not _ids(m["x"], lexicon) <= _ids(head, lexicon) or not _ids(fix, lexicon, "object"):
+        if not _ids(m["x"], lexicon) <= _ids(head, lexicon) or not _ids(fix, lexicon, kind):
             return text
     if m["way"] is not None and not (_ids(fix, lexicon, "human") and _ids(fix, lexicon, "object")):
         return text
@@ -19272,7 +19290,160 @@ def _of_everything33r(text: str, lexicon: Lexicon) -> str:
     return f"{rest[:1].upper()}{rest[1:]}"
 
 
+# "Two spanners, one to Kofi and one to Jess."
+_TWO_ONE_EACH33R = re.compile(
+    r"^(?:the )?two (?P<kind>[a-z]+)s,\s*one (?:to|for) (?P<p>[A-Za-z][\w ]*?),? and (?:one|the "
+    r"other) (?:to|for) (?P<q>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _two_one_each33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Two spanners, one to Kofi and one to Jess' is 'One spanner each for
+    Kofi and Jess' (session 29's share-out): the scene has two of the kind, P and Q two people."""
+    m = _TWO_ONE_EACH33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon) or not _only_kind(
+        m["kind"], lexicon, "object"
+    ):
+        return text
+    if len(_ids(m["kind"], lexicon, "object")) != 2:
+        return text
+    return f"One {m['kind']} each for {m['p']} and {m['q']}{m['end'] or '.'}"
+
+
+# "One thing each: the chips to one of them, the bottle to the other, …"
+_ONE_AND_OTHER33R = re.compile(
+    r"^one (?:thing|item) each\s*[:,]\s*(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) one of them,"
+    r"\s*(?:and )?(?P<y>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) the other(?: one)?"
+    r"(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_and_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One thing each: X to one of them, Y to the other' in a scene of two
+    people, none named, is 'One each for P and Q out of X and Y' (either way round); X and Y two
+    objects, each whole."""
+    m = _ONE_AND_OTHER33R.match(text)
+    humans = lexicon.scene.humans
+    if m is None or len(humans) != 2 or _ids(text, lexicon, "human"):
+        return text
+    if not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    p, q = (h.name or h.id for h in humans)
+    return f"One each for {p} and {q} out of {m['x']} and {m['y']}{text[m.start('end') :]}"
+
+
+# "Whichever of the two people is closer can have the bottle."
+_WHICHEVER_PERSON33R = re.compile(
+    r"^whichever of (?:the two(?: people)?|them) is (?:closer|nearer|nearest|closest|free|handier)"
+    r"(?: to you)? (?P<rest>(?:can have|gets|should get|can take) .+)$",
+    _F,
+)
+
+
+def _whichever_person33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Whichever of the two people is closer can have X' in a scene of two
+    people is 'Either of the two people can have X' (a choice of people, as session 28's 'either
+    of them'); with more people the text is left, refused."""
+    m = _WHICHEVER_PERSON33R.match(text)
+    if m is None or len(lexicon.scene.humans) != 2 or _ids(m["rest"], lexicon, "human"):
+        return text
+    return f"Either of the two people {m['rest']}"
+
+
+# ", in whatever order suits you" after things that all go
+_ANY_ORDER33R = re.compile(
+    r",\s*(?:and )?in (?:whatever|any) order(?: (?:suits you|you like|you want|you fancy|is "
+    r"easiest))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _any_order33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): ', in whatever order suits you' closing a request read as tasks in no
+    order (an 'and') says what that reading is: taken off; after steps in order ('then'), or a
+    choice, it is left, refused."""
+    m = _ANY_ORDER33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if not (isinstance(node, Group) and node.op == "and"):
+        return text
+    if not all(isinstance(c, Task) for c in node.children):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "The pair of spanners to Jess, she'll need the two."
+_NEEDS_BOTH33R = re.compile(
+    r",\s*(?P<pro>she|he|they)(?:'ll| will|'s going to| is going to)? (?:need|want|use) (?:the two|"
+    r"both|them both|both of them|the pair|the two of them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _needs_both33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): ", she'll need the two" closing a request that hands two objects to one
+    person, who the pronoun may be, says why: taken off (a count other than the request's, or
+    another person, is left, refused)."""
+    m = _NEEDS_BOTH33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if node is None:
+        return text
+    done = list(tasks(node))
+    people = {t.target for t in done}
+    if len(done) != 2 or len(people) != 1 or any(t.kind != "deliver" for t in done):
+        return text
+    if not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "Mr Novak wants a plate — the white one, mind, not the blue."
+_NOT_THE_OTHER33R = re.compile(
+    r"\bthe (?P<a>[a-z]+) (?P<kind>one|[a-z]+)(?P<mind>,\s*mind)?,\s*not the (?P<b>[a-z]+)"
+    r"(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_the_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): '… the white one(, mind), not the blue' closing a text says which of two
+    of a kind again: the contrast is taken off when 'the A K' and 'the B K' are each one object
+    of the scene, another each (K said, or the kind of 'a K' before 'one'; 'a K — the A one'
+    then says 'the A K' once)."""
+    m = _NOT_THE_OTHER33R.search(text)
+    if m is None:
+        return text
+    kind, start = m["kind"], m.start()
+    if kind.lower() == "one":
+        said = list(re.finditer(r"\b(?:a|an|either) (?P<k>[a-z]+)\b", text[:start], _F))
+        if not said:
+            return text
+        kind = said[-1]["k"]
+        if re.fullmatch(r"\s*[,—–-]\s*", text[said[-1].end() : start]):
+            start = said[-1].start()  # 'a plate — the white one': the one said once
+    this = _ids(f"the {m['a']} {kind}", lexicon, "object")
+    other = _ids(f"the {m['b']} {kind}", lexicon, "object")
+    if len(this) != 1 or len(other) != 1 or this == other:
+        return text
+    return f"{text[:start]}the {m['a']} {kind}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _two_one_each33r,
+    _one_and_other33r,
+    _whichever_person33r,
+    _any_order33r,
+    _needs_both33r,
+    _not_the_other33r,
     _one_of_these33r,
     _of_everything33r,
     _one_each_listed33r,
