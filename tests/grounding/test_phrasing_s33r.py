@@ -543,6 +543,44 @@ def test_said_again(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- 'no, I mean the bottle, it's the bottle she's after'; '…and not the blue, he says that colour
+# gives him a headache' ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Give Person B the chips, no, I mean the bottle, it's the bottle she's after.",
+            "bottle>B",
+            DUO,
+        ),
+        (
+            "Mr Lee's to get the grey blanket and not the blue, he says that colour gives him a "
+            "headache.",
+            "blanket_grey>B",
+            WARD,
+        ),
+        # the reason names another object; another person; no 'not' before it
+        ("Give Person B the chips, no, I mean the bottle, it's the chips she's after.", None, DUO),
+        (
+            "Mr Lee gets the grey blanket and not the blue, he says that colour suits Mrs Khan.",
+            None,
+            WARD,
+        ),
+        (
+            "Mr Lee gets the grey blanket and not the blue, she says that colour gives him a "
+            "headache.",
+            None,
+            WARD,
+        ),
+        ("Mr Lee gets the grey blanket, he says that colour gives him a headache.", None, WARD),
+    ),
+)
+def test_reasons_said_again(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-33 (12r) steps taken out
     (but 'Any one of the boxes onto the belt', phrasing.py's): each rule is what reads it."""

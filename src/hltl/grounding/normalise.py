@@ -19437,7 +19437,53 @@ def _not_the_other33r(text: str, lexicon: Lexicon) -> str:
     return f"{text[:start]}the {m['a']} {kind}{m['end'] or '.'}"
 
 
+# "…, no, I mean the bottle, it's the bottle she's after."
+_ITS_THE_X33R = re.compile(
+    r"\b(?:no|sorry|actually),\s*(?:i mean |i meant )?(?P<said>(?:the )?[a-z]+(?: [a-z]+)?),\s*"
+    r"it's (?P<x>the [a-z]+(?: [a-z]+)?) (?:that |which )?(?:(?:she|he|they)(?:'s| is|'re| are) "
+    r"after|(?:she|he|they) (?:wants?|needs?|asked for))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_the_x33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to an object ('no, I mean the bottle'), "it's the
+    bottle she's after" says the correction again: taken off when it names the one object the
+    correction names (another object is left, refused; _said_why's kinds for people and
+    places)."""
+    m = _ITS_THE_X33R.search(text)
+    if m is None or not _one_object32r(m["said"], lexicon):
+        return text
+    if _ids(m["said"], lexicon) != _ids(m["x"], lexicon):
+        return text
+    return f"{text[: m.end('said')]}{m['end'] or '.'}"
+
+
+# "…, and not the blue, he says that colour gives him a headache."
+_EXCLUDED_REASON33R = re.compile(
+    r"\bnot (?:the )?[a-z]+(?: one)?(?P<cut>,\s*(?P<pro>she|he|they) (?:says|said|reckons|thinks|"
+    r"finds) (?:that (?:colour|color|one|size|kind)|it|that|those) [a-z' ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _excluded_reason33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing reason the person gives for what 'not' leaves out ("…, and
+    not the blue, he says that colour gives him a headache") is taken off when it names nothing
+    of the scene and the request (what is left) names one person, whom the pronoun may be."""
+    m = _EXCLUDED_REASON33R.search(text)
+    if m is None or _names(m["cut"].split(" ", 2)[-1], lexicon):
+        return text
+    head = text[: m.start("cut")]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _its_the_x33r,
+    _excluded_reason33r,
     _two_one_each33r,
     _one_and_other33r,
     _whichever_person33r,
