@@ -14,6 +14,7 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     OFFICE,
     WARD,
     WORKSHOP,
@@ -578,6 +579,64 @@ def test_said_again(text: str, want: str | None, scene: Scene) -> None:
     ),
 )
 def test_reasons_said_again(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- blind19-21's exclusions and choices said another way ----------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
+            "mug_red>C | mug_blue>C",
+            CELL,
+        ),
+        (
+            "Either book can go on the desk, I just need one out for the lesson.",
+            "book_red@desk | book_green@desk",
+            CLASSROOM,
+        ),
+        (
+            "The blanket on the trolley stays there; Mrs Khan gets the other one.",
+            "blanket_blue>C",
+            WARD,
+        ),
+        (
+            "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
+            "other.",
+            "blanket_blue>C",
+            WARD,
+        ),
+        (
+            "Kofi's after whichever spanner isn't already on the workbench.",
+            "spanner_small>A",
+            WORKSHOP,
+        ),
+        ("Alice needs a mug, but the red one's got a crack, so not that one.", "mug_blue>A", CELL),
+        ("Zoe can have the red book, not the one on the bookshelf.", "book_red>C", CLASSROOM),
+        ("Not to Lily, she'll only chew it; give the teddy to Ava.", "teddy>C", NURSERY),
+        ("Scanner to Tom. No, not Tom, Mia's the one who asked.", "scanner>A", DEPOT),
+        # no green mug; one object before the remark; one jug; no blanket on the bedside table;
+        # no spanner on the locker; no green mug; the red book is not on the desk; the person
+        # 'not' names gets it; the person named twice
+        ("Carol would like a mug. Red or green, grab whichever one is nearer to you.", None, CELL),
+        ("Give Zoe the red book, I just need one out for the lesson.", None, CLASSROOM),
+        ("The jug on the trolley stays there; Mrs Khan gets the other one.", None, WARD),
+        (
+            "The blanket on the bedside table stays there; Mrs Khan gets the other one.",
+            None,
+            WARD,
+        ),
+        ("Kofi's after whichever spanner isn't on the locker.", None, WORKSHOP),
+        ("Alice needs a mug, but the green one's got a crack, so not that one.", None, CELL),
+        ("Zoe can have the red book, not the one on the desk.", None, CLASSROOM),
+        ("Not to Lily, she'll only chew it; give the teddy to Lily.", None, NURSERY),
+        ("Scanner to Tom. No, not Tom, Tom's the one who asked.", None, DEPOT),
+    ),
+)
+def test_exclusions_said_another_way(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 

@@ -18809,7 +18809,8 @@ def _object_said33r(oid: str, lexicon: Lexicon) -> str | None:
 # "whatever's nearest", "whichever's nearest your gripper", "depending on what's easiest to reach",
 # "whichever you like"), someone not minding which ("the banjo player's not
 # fussy", "he's not fussed which colour", "the supervisor isn't bothered which"), the speaker's
-# use of whichever is picked ("I'll plate up on whichever you pick"), and, after a share-out,
+# use of whichever is picked ("I'll plate up on whichever you pick", "I just need one out for
+# the lesson"), and, after a share-out,
 # "either way round is fine", "you decide who gets which"
 _FREE_CHOICE33R = re.compile(
     r",\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|"
@@ -18819,8 +18820,10 @@ _FREE_CHOICE33R = re.compile(
     r"(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't| are not|"
     r" aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)(?: "
     r"(?:colour|color|one|size|kind))?)?|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|"
-    r"into) whichever(?: one)? you (?:pick|choose|use)|(?P<share>(?:either|any) way(?: round)? "
-    r"(?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|choose) who gets (?:which|what)))"
+    r"into) whichever(?: one)? you (?:pick|choose|use)|(?:i|we) (?:just |only )?need (?:the )?one"
+    r"(?: of them)?(?: out| there| down| up)?(?: for (?:the |my |our )?[a-z]+)?|"
+    r"(?P<share>(?:either|any) way(?: round)? (?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|"
+    r"choose) who gets (?:which|what)))"
     r"(?P<end>\s*[.!]?)$",
     _F,
 )
@@ -19108,16 +19111,18 @@ def _not_for_other33r(text: str, lexicon: Lexicon) -> str:
 
 # "Nothing for Person B today, he's fasting; the bottle's for Person A."
 _NOTHING_FOR33R = re.compile(
-    r"^nothing for (?P<q>[A-Za-z][\w ]*?)(?: today| this time| now| for now)?(?:,\s*(?:he|she|"
-    r"they)(?:'s| is|'re| are) [a-z]+(?: [a-z]+)?)?\s*[;.]\s*(?P<rest>.+)$",
+    r"^(?:nothing for|not to|not for) (?P<q>[A-Za-z][\w ]*?)(?: today| this time| now| for now)?"
+    r"(?:,\s*(?P<pro>he|she|they)(?:'s| is|'re| are|'ll| will|'d| would) (?:only )?[a-z]+(?: "
+    r"[a-z]+)?)?\s*[;.]\s*(?P<rest>.+)$",
     _F,
 )
 
 
 def _nothing_for33r(text: str, lexicon: Lexicon) -> str:
-    """Session 33 (12r): 'Nothing for Q (today)(, he's fasting); <request>' opens with who gets
-    nothing: taken off when Q is one person of the scene the request does not name and the
-    request names someone else (the remark about Q names nothing)."""
+    """Session 33 (12r): 'Nothing for Q (today)(, he's fasting); <request>' (or 'Not to Q, she'll
+    only chew it; …') opens with who gets nothing: taken off when Q is one person of the scene
+    the request does not name, the request names someone else, and the remark about Q names
+    nothing and its pronoun may be Q."""
     m = _NOTHING_FOR33R.match(text)
     if m is None or not _only_person(m["q"], lexicon):
         return text
@@ -19127,6 +19132,8 @@ def _nothing_for33r(text: str, lexicon: Lexicon) -> str:
     if not said or said & q or not _ids(rest, lexicon, "object"):
         return text
     if _names(text[: m.start("rest")], lexicon) != _names(m["q"], lexicon):
+        return text
+    if m["pro"] and not _fits(next(iter(q)), m["pro"], lexicon):
         return text
     return f"{rest[:1].upper()}{rest[1:]}"
 
@@ -19199,7 +19206,7 @@ def _onto_with33r(text: str, lexicon: Lexicon) -> str:
 # a correction's cue said at length: "oh hang about, I got that wrong", "hmm, no, my mistake",
 # "oh, correction from the skipper", "no, wrong way round" (before the whole request again)
 _CORRECTION_CUE33R = re.compile(
-    r",\s*(?:oh,? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my "
+    r"[,.]\s*(?:oh,? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my "
     r"mistake|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?|no,? (?P<way>wrong way round|"
     r"the wrong way round)|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
     r"\s*,\s*(?P<fix>.+)$",
@@ -19207,7 +19214,10 @@ _CORRECTION_CUE33R = re.compile(
 )
 # the person said again as an owner: "they're Carol's"
 _THEYRE_OWNED33R = re.compile(
-    r"^(?:they're|they are|those are|these are) (?P<p>[A-Za-z][\w ]*?)'s(?P<end>\s*[.!]?)$", _F
+    r"^(?:(?:they're|they are|those are|these are) (?P<p>[A-Za-z][\w ]*?)'s|(?P<p2>[A-Za-z][\w "
+    r"]*?)(?:'s| is) the one who (?:asked|asked for (?:it|them)|wants (?:it|them)|needs (?:it|"
+    r"them)))(?P<end>\s*[.!]?)$",
+    _F,
 )
 
 
@@ -19241,9 +19251,10 @@ def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
         return text
     owned = _THEYRE_OWNED33R.match(fix)
     if owned is not None:
-        if not _only_person(owned["p"], lexicon) or _ids(owned["p"], lexicon) == people:
+        p = owned["p"] or owned["p2"]
+        if not _only_person(p, lexicon) or _ids(p, lexicon) == people:
             return text
-        fix = f"to {owned['p']}{owned['end'] or '.'}"
+        fix = f"to {p}{owned['end'] or '.'}"
     return f"{head}, no, {fix}"
 
 
@@ -19481,7 +19492,131 @@ def _excluded_reason33r(text: str, lexicon: Lexicon) -> str:
     return f"{head}{m['end'] or '.'}"
 
 
+# "Carol would like a mug. Red or blue, grab whichever one is nearer to you."
+_CHOICE_FOLLOWS33R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>would like|wants|needs|is after|'s after) an? (?P<k>[a-z]+)\."
+    r"\s*(?P<a>[a-z]+) or (?P<b>[a-z]+),\s*(?:just )?(?:grab|pick|take|choose|get|bring) "
+    r"whichever(?: one)?(?:'s| is) (?:nearer|closer|nearest|closest|handier)(?: to you)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _choice_follows33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'P would like a K. A or B, grab whichever one is nearer' is 'P would
+    like the A K or the B K, whichever': the second sentence says which Ks the first leaves
+    open, each 'the A K' one object of the scene, another each."""
+    m = _CHOICE_FOLLOWS33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    a, b = f"the {m['a']} {m['k']}", f"the {m['b']} {m['k']}"
+    if not _objects_named33r([a, b], lexicon):
+        return text
+    return f"{m['p']} {m['v']} {a} or {b}, whichever{m['end'] or '.'}"
+
+
+# "The blanket on the trolley stays there; Mrs Khan gets the other one." / "Mrs Khan wants a
+# blanket, but leave the one on the cart where it is and give her the other."
+_STAYS_OTHER33R = re.compile(
+    r"^(?:the (?P<k>[a-z]+) (?:on|in) the (?P<s>[a-z]+(?: [a-z]+)?) stays (?:there|put|where it "
+    r"is)\s*[;,.]\s*(?P<p>[A-Za-z][\w ]*?) gets the other(?: one)?|(?P<p2>[A-Za-z][\w ]*?) "
+    r"(?:wants|needs|would like) an? (?P<k2>[a-z]+),\s*but leave the one (?:on|in) the "
+    r"(?P<s2>[a-z]+(?: [a-z]+)?) (?:where it is|there|alone) and give (?:her|him|them) the "
+    r"other(?: one)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'The K on the S stays there; P gets the other one' (or 'P wants a K,
+    but leave the one on the S where it is and give her the other') is 'P gets the K that isn't
+    on the S', when the scene has two Ks, one of them starting on S (one surface)."""
+    m = _STAYS_OTHER33R.match(text)
+    if m is None:
+        return text
+    k, s, p = m["k"] or m["k2"], m["s"] or m["s2"], m["p"] or m["p2"]
+    if not _only_person(p, lexicon) or not _whole_name(s, lexicon, "surface"):
+        return text
+    kinds = _ids(k, lexicon, "object")
+    if len(kinds) != 2 or not _only_kind(k, lexicon, "object"):
+        return text
+    if len(starting_on(kinds, next(iter(_ids(s, lexicon))), lexicon)) != 1:
+        return text
+    return f"{p} gets the {k} that isn't on the {s}{m['end'] or '.'}"
+
+
+# "Kofi's after whichever spanner isn't already on the workbench."
+_WHICHEVER_ISNT33R = re.compile(
+    r"\bwhichever (?P<k>[a-z]+) (?:isn't|is not) (?:already |still )?(?P<what>(?:on|in) the "
+    r"[a-z]+(?: [a-z]+)?|the [a-z]+ one)(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _whichever_isnt33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'whichever K isn't (already) on the S' / 'isn't the A one' is 'the K
+    that isn't …' (the grammar's description), when the scene has two Ks (so one is left)."""
+
+    def said(m: re.Match[str]) -> str:
+        if len(_ids(m["k"], lexicon, "object")) != 2 or not _only_kind(m["k"], lexicon, "object"):
+            return m[0]
+        return f"the {m['k']} that isn't {m['what']}"
+
+    return _sub(_WHICHEVER_ISNT33R.pattern, said, text)
+
+
+# "Alice needs a mug, but the red one's got a crack, so not that one."
+_BUT_FLAWED33R = re.compile(
+    r",\s*but the (?P<a>[a-z]+) one(?:'s| is| has)(?: got)? (?:a crack|cracked|a chip|chipped|"
+    r"broken|dirty|filthy|leaking|stained)\s*,\s*so not that one(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _but_flawed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "…, but the red one's got a crack, so not that one" after 'a K' is ',
+    but not the red one' (the exclusion, its reason taken off), when 'the red K' is one object
+    of the scene."""
+    m = _BUT_FLAWED33R.search(text)
+    if m is None:
+        return text
+    said = re.findall(r"\ban? ([a-z]+)\b", text[: m.start()], _F)
+    if not said or len(_ids(f"the {m['a']} {said[-1]}", lexicon, "object")) != 1:
+        return text
+    return f"{text[: m.start()]}, but not the {m['a']} one{m['end'] or '.'}"
+
+
+# "Zoe can have the red book, not the one on the bookshelf."
+_NOT_THE_ONE_ON33R = re.compile(
+    r"\bthe (?P<a>[a-z]+) (?P<k>[a-z]+),\s*not the one (?:up |down )?(?:on|in) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_the_one_on33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the red book, not the one on the bookshelf' is 'the red book' when
+    the red book is one object that does not start on S and another K does."""
+    m = _NOT_THE_ONE_ON33R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    this = _ids(f"the {m['a']} {m['k']}", lexicon, "object")
+    if len(this) != 1:
+        return text
+    on = set(
+        starting_on(_ids(m["k"], lexicon, "object"), next(iter(_ids(m["s"], lexicon))), lexicon)
+    )
+    if not on or on & this:
+        return text
+    return f"{text[: m.start()]}the {m['a']} {m['k']}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _choice_follows33r,
+    _stays_other33r,
+    _whichever_isnt33r,
+    _but_flawed33r,
+    _not_the_one_on33r,
     _its_the_x33r,
     _excluded_reason33r,
     _two_one_each33r,
