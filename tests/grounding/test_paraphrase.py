@@ -265,7 +265,6 @@ KNOWN_MISSES = frozenset(
         "okay so Person A's having the cup and the apple's going over to Person B off you go",
         "okay listen the chips are for Person A the bottle's for Person B got it",
         "They both want something. Bottle over to Person A please, and cup across to Person B.",
-        "The apple can go to either person, I'm not bothered which of them.",
         "Those two mugs want to go on the counter, please.",
         "Drop all three of the pens into the box, they keep rolling off.",
         "Jess needs some screws, give her the tin.",
@@ -307,7 +306,6 @@ KNOWN_MISSES = frozenset(
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
         "Lily wants a block to chew on. Not the red one, love, the other.",
-        "Bib to Ava, oh no, she's too big for bibs, to Lily.",
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
@@ -344,22 +342,12 @@ KNOWN_MISSES = frozenset(
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Anything at all for Person A, just the one item, whatever you grab first.",
-        "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
-        "having the cup.",
-        "Person A and Person B both want a drink, so the bottle to one and the cup to the "
-        "other, whichever way round.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Mr Novak's getting the plate that's sitting out, not the one up in the plate rack.",
-        "Chips for Bob, ah, no, wrong way round, Alice is the one wanting chips.",
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
-        "The apple for Person B, I mean the bottle, leave the apple.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
-        "Black pen to Priya, oh, she marks in red, so the red one instead.",
         "bob's been on the bike all day give him the bottle thx",
         "sorry typing one handed, chips to person b",
         "Pop the cjips up on the shelf before the kids find them.",

@@ -640,6 +640,101 @@ def test_exclusions_said_another_way(text: str, want: str | None, scene: Scene) 
     _assert_case(text, want, scene)
 
 
+# -- more share-outs, choices and corrections of blind19-21 --------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "One item apiece for the two of them, mind: Person A's having the apple, Person B's "
+            "having the cup.",
+            "apple>A & cup>B",
+            L44,
+        ),
+        (
+            "Give the two people a single item each: Person A the bottle, Person B the apple.",
+            "bottle>A & apple>B",
+            F42,
+        ),
+        (
+            "Person A and Person B both want a drink, so the bottle to one and the cup to the "
+            "other, whichever way round.",
+            "(bottle>A & cup>B) | (cup>A & bottle>B)",
+            F41,
+        ),
+        (
+            "Anything at all for Person A, just the one item, whatever you grab first.",
+            "bottle>A | chips>A | cup>A | apple>A",
+            SQ,
+        ),
+        (
+            "Mr Novak's getting the plate that's sitting out, not the one up in the plate rack.",
+            "plate_white>C",
+            KITCHEN,
+        ),
+        ("Chips for Bob, ah, no, wrong way round, Alice is the one wanting chips.", "chips>A", TWO),
+        ("Black pen to Priya, oh, she marks in red, so the red one instead.", "pen_red>A", OFFICE),
+        ("The apple for Person B, I mean the bottle, leave the apple.", "bottle>B", F42),
+        ("Bib to Ava, oh no, she's too big for bibs, to Lily.", "bib>A", NURSERY),
+        (
+            "The apple can go to either person, I'm not bothered which of them.",
+            "apple>A | apple>B",
+            F42,
+        ),
+        (
+            "Dana and Omar both want a drink, so the green cup to one and the white cup to the "
+            "other.",
+            "(cup_green>A & cup_white>B) | (cup_white>A & cup_green>B)",
+            LAB,
+        ),
+        # one person twice; one object twice; a person twice; three people; no knife in the
+        # rack; no plate on the counter; another object wanted; the same person; no green pen;
+        # another person's remark; an object 'leave' does not correct; the same person; a remark
+        # naming another object; three people
+        (
+            "One item apiece for the two of them, mind: Person A's having the apple, Person A's "
+            "having the cup.",
+            None,
+            SQ,
+        ),
+        (
+            "Give the two people a single item each: Person A the bottle, Person A the apple.",
+            None,
+            F42,
+        ),
+        (
+            "Person A and Person B both want a drink, so the bottle to one and the bottle to the "
+            "other.",
+            None,
+            F41,
+        ),
+        ("Anything at all for Person A and Person B, just the one item.", None, SQ),
+        (
+            "Mr Novak's getting the knife that's sitting out, not the one up in the plate rack.",
+            None,
+            KITCHEN,
+        ),
+        (
+            "Mr Novak's getting the plate that's sitting out, not the one on the counter.",
+            None,
+            KITCHEN,
+        ),
+        ("Chips for Bob, ah, no, wrong way round, Alice is the one wanting the bottle.", None, TWO),
+        ("Chips for Bob, ah, no, wrong way round, Bob is the one wanting chips.", None, TWO),
+        ("Black pen to Priya, oh, she marks in red, so the green one instead.", None, OFFICE),
+        ("Black pen to Priya, oh, Sam marks in red, so the red one instead.", None, OFFICE),
+        ("Black pen to Priya, oh, she marks in the box, so the red one instead.", None, OFFICE),
+        ("The apple for Person B, I mean the bottle, leave the cup.", None, F42),
+        ("The apple for Person B, I mean the bottle, leave the bottle.", None, F42),
+        ("Bib to Ava, oh no, she's too big for bibs, to Ava.", None, NURSERY),
+        ("Bib to Ava, oh no, she's too big for the teddy, to Lily.", None, NURSERY),
+    ),
+)
+def test_more_said_another_way(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-33 (12r) steps taken out
     (but 'Any one of the boxes onto the belt', phrasing.py's): each rule is what reads it."""

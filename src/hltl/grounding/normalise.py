@@ -18814,15 +18814,19 @@ def _object_said33r(oid: str, lexicon: Lexicon) -> str | None:
 # "either way round is fine", "you decide who gets which"
 _FREE_CHOICE33R = re.compile(
     r",\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|"
-    r"handiest)(?: to (?:hand|you)|(?: to)? (?:your|the) (?:gripper|arm|hand))?|whichever(?: one)? "
-    r"you (?:like|pick|choose|prefer|fancy)|depending on (?:what|which|whichever)(?:'s| is) "
-    r"(?:easiest|nearest|closest|handiest|quickest)(?: to (?:reach|get|grab))?|"
-    r"(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't| are not|"
-    r" aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)(?: "
-    r"(?:colour|color|one|size|kind))?)?|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|"
-    r"into) whichever(?: one)? you (?:pick|choose|use)|(?:i|we) (?:just |only )?need (?:the )?one"
-    r"(?: of them)?(?: out| there| down| up)?(?: for (?:the |my |our )?[a-z]+)?|"
-    r"(?P<share>(?:either|any) way(?: round)? (?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|"
+    r"handiest)(?: to (?:hand|you)|(?: to)? (?:your|the) (?:gripper|arm|hand))?"
+    r"|whichever(?: one)? you (?:like|pick|choose|prefer|fancy)"
+    r"|(?:whatever|whichever)(?: one)? you (?:grab|reach|get to|can reach) first"
+    r"|depending on (?:what|which|whichever)(?:'s| is) (?:easiest|nearest|closest|handiest|"
+    r"quickest)(?: to (?:reach|get|grab))?"
+    r"|(?P<who>(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't|"
+    r" are not| aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)"
+    r"(?: (?:colour|color|one|size|kind|of them))?)?)"
+    r"|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|into) whichever(?: one)? you "
+    r"(?:pick|choose|use)"
+    r"|(?:i|we) (?:just |only )?need (?:the )?one(?: of them)?(?: out| there| down| up)?(?: for "
+    r"(?:the |my |our )?[a-z]+)?"
+    r"|(?P<share>(?:either|any) way(?: round)? (?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|"
     r"choose) who gets (?:which|what)))"
     r"(?P<end>\s*[.!]?)$",
     _F,
@@ -18832,14 +18836,21 @@ _FREE_CHOICE33R = re.compile(
 def _free_choice33r(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12r): a closing remark leaving a choice to the robot (above) says again what
     the choice before it says: taken off when what is left reads as one choice of objects (or,
-    for 'either way round' and 'who gets which', as a share-out). After one object, or a choice
+    for 'either way round' and 'who gets which', as a share-out; someone not minding which, after
+    a choice of people too). After one object, or a choice
     of another kind, it is left, and refused."""
     m = _FREE_CHOICE33R.search(text)
     if m is None:
         return text
     head = text[: m.start()]
     node = _reading(head, lexicon)
-    if not (_share_out33r(node) if m.group("share") else _one_choice28r(node, False)):
+    if m.group("share"):
+        chosen = _share_out33r(node)
+    else:
+        chosen = _one_choice28r(node, False) or (
+            m["who"] is not None and _one_choice28r(node, True)
+        )
+    if not chosen:
         return text
     return f"{head}{m.group('end') or '.'}"
 
@@ -18968,22 +18979,25 @@ def _which_is_list33r(text: str, lexicon: Lexicon) -> str:
 # "A thing for each of them, Person A on the chips and Person B on the bottle", "One thing apiece
 # for them: Person A takes the cup, Person B takes the apple."
 _THING_EACH33R = re.compile(
-    r"^(?:(?:a|one) (?:thing|item) (?:for each of them|apiece for them|each for them|each|apiece)"
-    r"|(?:everyone|everybody|each of them) gets? (?:one|a) (?:thing|item))"
+    r"^(?:(?:a|one) (?:thing|item) (?:for each of them|(?:apiece|each) for (?:them|the two of "
+    r"them)|each|apiece)(?:,\s*mind)?|(?:everyone|everybody|each of them) gets? (?:one|a) (?:thing|"
+    r"item)|give (?:the two people|both people|them both|both of them|each of them) (?:a single|"
+    r"one|a|an) (?:item|thing) each)"
     r"\s*[,:]\s*(?P<list>[^;.!?]+?)(?P<end>\s*[.!]?)$",
     _F,
 )
 _ONE_SHARE33R = re.compile(
-    r"^(?:(?P<p>[A-Za-z][\w ]*?) (?:on|takes|gets|has|having|with) (?P<x>(?:the |a |an )?[a-z]+"
-    r"(?: [a-z]+)?)|(?P<x2>the [a-z]+(?: [a-z]+)?) (?:for|to) (?P<p2>[A-Za-z][\w ]*?))$",
+    r"^(?:(?P<p>[A-Za-z][\w ]*?)(?: (?:on|takes|gets|has|having|with|is having|is getting)|'s "
+    r"(?:having|getting)) (?P<x>(?:the |a |an )?[a-z]+(?: [a-z]+)?)|(?P<x2>the [a-z]+(?: [a-z]+)?)"
+    r" (?:for|to) (?P<p2>[A-Za-z][\w ]*?)|(?P<p3>[A-Za-z][\w ]*?) (?P<x3>the [a-z]+(?: [a-z]+)?))$",
     _F,
 )
 
 
 def _thing_each33r(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12r): 'A thing for each of them, P on the X and Q on the Y' (or 'P takes the
-    X, …'; "Everyone gets one thing: the X for P, …") is 'P gets the X and Q gets the Y': the
-    header says each of the scene's people gets
+    X, …'; "Everyone gets one thing: the X for P, …"; 'Give the two people a single item each: P
+    the X, …') is 'P gets the X and Q gets the Y': the header says each of the scene's people gets
     one thing, and the list gives every one of them ('them', no one named before) one
     different object, each whole; anything else (a person left out or twice, two things for one)
     is left, refused."""
@@ -18993,7 +19007,11 @@ def _thing_each33r(text: str, lexicon: Lexicon) -> str:
     shares = [_ONE_SHARE33R.match(s) for s in re.split(r",\s*(?:and\s+)?|\s+and\s+", m["list"])]
     if not all(shares):
         return text
-    said = [(s["p"] or s["p2"], s["x"] or s["x2"]) for s in shares if s is not None]
+    said = [
+        (s["p"] or s["p2"] or s["p3"], s["x"] or s["x2"] or s["x3"])
+        for s in shares
+        if s is not None
+    ]
     if not all(_only_person(p, lexicon) for p, _x in said):
         return text
     if {next(iter(_ids(p, lexicon))) for p, _x in said} != {h.id for h in lexicon.scene.humans}:
@@ -19206,17 +19224,19 @@ def _onto_with33r(text: str, lexicon: Lexicon) -> str:
 # a correction's cue said at length: "oh hang about, I got that wrong", "hmm, no, my mistake",
 # "oh, correction from the skipper", "no, wrong way round" (before the whole request again)
 _CORRECTION_CUE33R = re.compile(
-    r"[,.]\s*(?:oh,? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my "
-    r"mistake|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?|no,? (?P<way>wrong way round|"
-    r"the wrong way round)|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
+    r"[,.]\s*(?:(?:oh|ah|er|um),? )?(?:hang (?:about|on),? i (?:got|had) that wrong"
+    r"|(?:hmm|hm|erm|um),? no,? my mistake"
+    r"|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?"
+    r"|no,? (?P<way>wrong way round|the wrong way round)"
+    r"|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
     r"\s*,\s*(?P<fix>.+)$",
     _F,
 )
 # the person said again as an owner: "they're Carol's"
 _THEYRE_OWNED33R = re.compile(
     r"^(?:(?:they're|they are|those are|these are) (?P<p>[A-Za-z][\w ]*?)'s|(?P<p2>[A-Za-z][\w "
-    r"]*?)(?:'s| is) the one who (?:asked|asked for (?:it|them)|wants (?:it|them)|needs (?:it|"
-    r"them)))(?P<end>\s*[.!]?)$",
+    r"]*?)(?:'s| is) the one (?:who (?:asked|asked for (?:it|them)|wants (?:it|them)|needs (?:it|"
+    r"them))|wanting (?P<w>it|them|(?:the )?[a-z]+)))(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -19253,6 +19273,11 @@ def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
     if owned is not None:
         p = owned["p"] or owned["p2"]
         if not _only_person(p, lexicon) or _ids(p, lexicon) == people:
+            return text
+        wanted = owned["w"] or "it"
+        if wanted.lower() not in ("it", "them") and not (
+            _ids(wanted, lexicon) and _ids(wanted, lexicon) == _ids(head, lexicon, "object")
+        ):
             return text
         fix = f"to {p}{owned['end'] or '.'}"
     return f"{head}, no, {fix}"
@@ -19611,7 +19636,170 @@ def _not_the_one_on33r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}the {m['a']} {m['k']}{m['end'] or '.'}"
 
 
+# "Person A and Person B both want a drink, so the bottle to one and the cup to the other, …"
+_TO_ONE_OTHER33R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) both (?:want|need|would like) (?:an? "
+    r"[a-z]+|something)\s*,\s*so (?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) one(?: of them)? "
+    r"and (?P<y>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) the other(?: one)?(?:,\s*(?:whichever|"
+    r"either|any) way(?: round)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _to_one_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'P and Q both want a drink, so X to one and Y to the other(, whichever
+    way round)' is 'One each for P and Q out of X and Y' (P and Q two people, X and Y two
+    objects, each whole)."""
+    m = _TO_ONE_OTHER33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon):
+        return text
+    if not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    return f"One each for {m['p']} and {m['q']} out of {m['x']} and {m['y']}{m['end'] or '.'}"
+
+
+# "Anything at all for Person A, just the one item, whatever you grab first."
+_ANYTHING_AT_ALL33R = re.compile(
+    r"^anything(?: at all)? for (?P<p>[A-Za-z][\w ]*?),\s*(?:just )?(?:the )?one(?: item| thing)?"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _anything_at_all33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Anything at all for P, just the one item' is 'Any one of <every object
+    of the scene> for P', each object said by a name of its own (else left, refused)."""
+    m = _ANYTHING_AT_ALL33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects]
+    names = [n for n in said if n is not None]
+    if len(names) < 2 or len(names) != len(said):
+        return text
+    listed = f"{', '.join(names[:-1])} or {names[-1]}"
+    return f"Any one of {listed} for {m['p']}{text[m.end() :]}"
+
+
+# "the plate that's sitting out, not the one up in the plate rack"
+_SITTING_OUT33R = re.compile(
+    r"\bthe (?P<k>[a-z]+) (?:that's|that is|which is) (?:sitting|lying|left) (?:out|about|around)"
+    r",\s*not the one (?:up |down )?(?:on|in) the (?P<s>[a-z]+(?: [a-z]+)?)(?P<end>,|\s*[.!]?$)",
+    _F,
+)
+
+
+def _sitting_out33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the plate that's sitting out, not the one up in the plate rack' is 'the
+    plate that isn't on the rack' when the scene has two of the kind and one starts on S."""
+
+    def said(m: re.Match[str]) -> str:
+        kinds = _ids(m["k"], lexicon, "object")
+        if len(kinds) != 2 or not _only_kind(m["k"], lexicon, "object"):
+            return m[0]
+        if not _whole_name(m["s"], lexicon, "surface"):
+            return m[0]
+        if len(starting_on(kinds, next(iter(_ids(m["s"], lexicon))), lexicon)) != 1:
+            return m[0]
+        return f"the {m['k']} that isn't on the {m['s']}{'' if m['end'] == ',' else m['end']}"
+
+    return _sub(_SITTING_OUT33R.pattern, said, text)
+
+
+# "Black pen to Priya, oh, she marks in red, so the red one instead."
+_SO_INSTEAD33R = re.compile(
+    r"^(?P<head>[^,;.!?]+?),\s*(?:oh|ah|hmm),\s*(?P<pro>she|he|they) (?P<why>[a-z' ]+?),\s*so "
+    r"(?P<x>the [a-z]+ one|the [a-z]+ [a-z]+) instead(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _so_instead33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "X to P, oh, she marks in red, so the red one instead" is "X to P, no,
+    the red one": a remark about the request's one person (the pronoun may be P, the remark
+    names nothing of the scene), then another object of X's kind."""
+    m = _SO_INSTEAD33R.match(text)
+    if m is None or _names(m["why"], lexicon):
+        return text
+    head = m["head"]
+    people, objs = _ids(head, lexicon, "human"), _ids(head, lexicon, "object")
+    if len(people) != 1 or len(objs) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}, no, {m['x']}{m['end'] or '.'}"
+
+
+# "The apple for Person B, I mean the bottle, leave the apple."
+_LEAVE_CORRECTED33R = re.compile(
+    r"\b(?:i mean|i meant|no|sorry),?\s+(?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:and )?leave (?P<x>the "
+    r"[a-z]+(?: [a-z]+)?)(?: where it is| there| alone| be)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_corrected33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to another object ('I mean the bottle'), 'leave the
+    apple' says the correction again: taken off when the apple is one object the text names
+    before the correction and the correction another."""
+    m = _LEAVE_CORRECTED33R.search(text)
+    if m is None or not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    if not _ids(m["x"], lexicon) <= _ids(text[: m.start()], lexicon):
+        return text
+    return f"{text[: m.end('y')]}{m['end'] or '.'}"
+
+
+# "Bib to Ava, oh no, she's too big for bibs, to Lily."
+_CUE_REMARK33R = re.compile(
+    r"^(?P<head>[^,;.!?]+?),\s*(?:oh,? )?no,\s*(?P<pro>she|he|they)(?:'s| is|'re| are) "
+    r"(?P<why>[a-z' ]+?),\s*(?P<fix>to [A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cue_remark33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "Bib to Ava, oh no, she's too big for bibs, to Lily" is "Bib to Ava, no,
+    to Lily": a remark about the request's one person (the pronoun may be them; it names
+    nothing of the scene but the request's object) before the person the correction gives it
+    to, another person of the scene."""
+    m = _CUE_REMARK33R.match(text)
+    if m is None:
+        return text
+    head = m["head"]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    if not _ids(m["why"], lexicon) <= _ids(head, lexicon, "object"):
+        return text
+    q = m["fix"][3:]
+    if not _only_person(q, lexicon) or _ids(q, lexicon) == people:
+        return text
+    return f"{head}, no, {m['fix']}{m['end'] or '.'}"
+
+
+# "The apple can go to either person, …"
+_EITHER_PERSON33R = re.compile(r"\b(?P<prep>to|for) either (?:person|one)\b(?! of)", _F)
+
+
+def _either_person33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'to either person' in a scene of two people, none named elsewhere, is
+    'to either of the two people' ('person' alone names each of them)."""
+    m = _EITHER_PERSON33R.search(text)
+    if m is None or len(lexicon.scene.humans) != 2:
+        return text
+    if _ids(text[: m.start()] + text[m.end() :], lexicon, "human"):
+        return text
+    return f"{text[: m.start()]}{m['prep']} either of the two people{text[m.end() :]}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _to_one_other33r,
+    _anything_at_all33r,
+    _sitting_out33r,
+    _so_instead33r,
+    _leave_corrected33r,
+    _cue_remark33r,
+    _either_person33r,
     _choice_follows33r,
     _stays_other33r,
     _whichever_isnt33r,
