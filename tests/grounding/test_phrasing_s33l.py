@@ -5,14 +5,29 @@
   was read as the remark after a choice ("…, whichever is easier") and the rest of its clause
   dropped, so the plan left out the step the deckhand was to name. A 'whatever/whichever' clause
   that waits on someone's word (tells, says, asks, decides, …) is refused; a remark on a choice
-  ("whichever is easier", "whichever she likes") still reads."""
+  ("whichever is easier", "whichever she likes") still reads.
+- 12c's repairs fuzz (session 32) found four more wrong readings:
+  - "The cup is for Bob, I mean Alice, and the apple goes to the other one." read apple>C: Bob,
+    taken back by the repair, was counted as named. 'the other one' now leaves out only the
+    people kept, so in a scene of three it is refused naming Bob and Carol.
+  - "Apple to Carol, sorry, Alice and chips to Bob, sorry, swap the people." read apple>A &
+    chips>B: ', sorry, swap the people' was taken off as an apology. Words that change what was
+    said (swap, switch, reverse, the other way round, …) are never an apology.
+  - "Give Alice the cup, oh and Alice, I mean Bob wanted the bottle." read bottle>B: the repair
+    took back the whole clause before it. A clause's subject repaired at once, before its verb,
+    is said once (hltl.grounding.repairs.subject_repairs33l).
+  - "Mia wants the tape. Once she's got it, the barcode scanner, I mean the gloves go to her
+    too." read tape>A & gloves>A: the repair lost the order 'once she's got it' set. An object
+    repaired at once to another, with no list around and the clause going on after it, is said
+    once (object_repairs33l)."""
 
 from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import show_tree
 from hltl.world.scene import load_scene
-from tests.grounding.helpers import CELL, ROOT, assert_reads, assert_refused
+from tests.grounding.helpers import CELL, DEPOT, ROOT, assert_reads, assert_refused, tree
 
 FIG = load_scene(ROOT / "examples/scenes/fig1.yaml")
 
@@ -48,3 +63,87 @@ def test_the_cell_scene_reads_a_choice_remark_and_refuses_a_deferral() -> None:
     assert_refused(
         "Give Bob the cup, then whatever Carol tells you.", CELL, match="someone else's word"
     )
+
+
+def test_the_other_one_after_a_repaired_person_leaves_out_only_the_people_kept() -> None:
+    for repair in ("I mean", "no, sorry,", "sorry,"):
+        assert_refused(
+            f"The cup is for Bob, {repair} Alice, and the apple goes to the other one.",
+            CELL,
+            match="could mean Person B",
+        )
+    # two people: the other one of those kept is the one person left
+    assert_reads(
+        "The bottle is for Person B, I mean Person A, and the chips go to the other one.",
+        "bottle>A & chips>B",
+        FIG,
+    )
+    assert_refused("The cup is for Bob and the apple goes to the other one.", CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Apple to Carol, sorry, Alice and chips to Bob, sorry, swap the people.",
+        "Apple to Carol, no, sorry, Alice and chips to Bob, sorry, swap them round.",
+        "Apple to Carol, no, Alice and chips to Bob, sorry, the other way round.",
+    ],
+)
+def test_a_swap_after_a_repair_is_never_taken_off_as_an_apology(text: str) -> None:
+    got = tree(text, CELL)
+    assert got is None or show_tree(got) == "apple>B & chips>A", show_tree(got)
+
+
+def test_a_swap_alone_still_reads() -> None:
+    assert_reads("Apple to Alice and chips to Bob, sorry, swap the people.", "apple>B & chips>A")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup, oh and Alice, I mean Bob wanted the bottle.", "cup>A & bottle>B"),
+        ("Give Alice the cup, and Alice, no, Bob wants the bottle.", "cup>A & bottle>B"),
+        (
+            "apple goes on the table, the crisps on the shelf, oh and Alice, I mean Bob wanted "
+            "the bottle, so that too",
+            "apple@table & chips@shelf & bottle>B",
+        ),
+        ("Alice, no, Bob wants the cup.", "cup>B"),
+    ],
+)
+def test_a_subject_repaired_before_its_verb_takes_back_only_the_name(text: str, want: str) -> None:
+    assert_reads(text, want)
+
+
+def test_a_repaired_list_of_people_is_not_a_subject_repair() -> None:
+    assert_refused("Alice and Bob, no, Carol get the cup.")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Mia wants the tape. Once she's got it, the barcode scanner, I mean the gloves go to "
+            "her too.",
+            "tape>A ; gloves>A",
+        ),
+        (
+            "Give Mia the tape. Once she has it, the scanner, no, the gloves go to her.",
+            "tape>A ; gloves>A",
+        ),
+    ],
+)
+def test_an_object_repaired_at_once_keeps_the_order_of_its_clause(text: str, want: str) -> None:
+    assert_reads(text, want, DEPOT)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the cup, no, the apple.", "apple>B"),
+        ("The cup, no, the apple goes to Bob.", "apple>B"),
+        ("Bob gets the cup then the chips, I mean the bottle goes to Alice.", "cup>B ; bottle>A"),
+    ],
+)
+def test_an_object_repair_reads_as_the_object_meant(text: str, want: str) -> None:
+    assert_reads(text, want)

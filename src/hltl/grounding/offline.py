@@ -36,7 +36,7 @@ from hltl.grounding.normalise import (
     trades31,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
-from hltl.grounding.repairs import repairs32l
+from hltl.grounding.repairs import object_repairs33l, repairs32l, subject_repairs33l
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -324,7 +324,10 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
         text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
-        text = placed_list32l(repairs32l(text, lexicon), lexicon)
+        text = placed_list32l(
+            object_repairs33l(subject_repairs33l(repairs32l(text, lexicon), lexicon), lexicon),
+            lexicon,
+        )
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
