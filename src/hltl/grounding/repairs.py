@@ -28,6 +28,8 @@ _AFTER_A_LIST_WORD = re.compile(r"\b(and|or)\s*,?\s*(?:um+|uh+|er+|erm+)\s*,\s*"
 _DETS = r"(?:(?:the|a|an|my|our|your|his|her|their|that|this)\s+)?"
 _PREPS = r"(?:(?:to|for|on|onto|in|into|at|by|with)\s+)?"
 _BOUNDARY = re.compile(r"[.;:!?,—–]|\s-\s")
+# the kinds of names a bare hesitation repairs (a robot's name is not said so)
+_NAMED_KINDS = frozenset({"object", "human", "surface"})
 
 
 def _names(words: str, lexicon: Lexicon) -> list[Item]:
@@ -92,6 +94,27 @@ def _listed_after(words: str, kind: str, lexicon: Lexicon) -> bool:
     return found is not None and _kind(found[0]) == kind
 
 
+def _repair_between(
+    out: str, m: re.Match[str], lexicon: Lexicon, kinds: frozenset[str]
+) -> tuple[str, str, str] | None:
+    """Where ``m`` (a hesitation or a repair word) stands between two different names of one
+    kind in ``kinds``, with no list of that kind around them: (that kind, the words before the
+    name said, the words after the name meant); else None."""
+    before = _last_name(out[: m.start()], lexicon)
+    after = _first_name(out[m.end() :], lexicon)
+    if before is None or after is None:
+        return None
+    (said, ahead), (meant, behind) = before, after
+    kind = _kind(said)
+    if kind is None or kind != _kind(meant) or kind not in kinds:
+        return None
+    if {r.id for r in said.refs} == {r.id for r in meant.refs}:
+        return None  # "the cup, um, the cup": said again, not repaired
+    if _listed_before(ahead, kind, lexicon) or _listed_after(behind, kind, lexicon):
+        return None
+    return kind, ahead, behind
+
+
 def repairs32l(text: str, lexicon: Lexicon) -> str:
     """``text`` with each bare hesitation between two names of one kind, no list around them,
     said as the repair it is (', sorry, '), and each title said again said once."""
@@ -105,17 +128,7 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
         if m is None:
             return out
         pos = m.end()
-        before = _last_name(out[: m.start()], lexicon)
-        after = _first_name(out[m.end() :], lexicon)
-        if before is None or after is None:
-            continue
-        (said, ahead), (meant, behind) = before, after
-        kind = _kind(said)
-        if kind is None or kind != _kind(meant) or kind == "robot":
-            continue
-        if {r.id for r in said.refs} == {r.id for r in meant.refs}:
-            continue  # "the cup, um, the cup": said again, not repaired
-        if _listed_before(ahead, kind, lexicon) or _listed_after(behind, kind, lexicon):
+        if _repair_between(out, m, lexicon, _NAMED_KINDS) is None:
             continue
         out = f"{out[: m.start()]}, sorry, {out[m.end() :]}"
         pos = m.start() + len(", sorry, ")
@@ -181,17 +194,10 @@ def object_repairs33l(text: str, lexicon: Lexicon) -> str:
         if m is None:
             return out
         pos = m.end()
-        before = _last_name(out[: m.start()], lexicon)
-        after = _first_name(out[m.end() :], lexicon)
-        if before is None or after is None:
+        between = _repair_between(out, m, lexicon, frozenset({"object"}))
+        if between is None:
             continue
-        (said, ahead), (meant, behind) = before, after
-        if _kind(said) != "object" or _kind(meant) != "object":
-            continue
-        if {r.id for r in said.refs} == {r.id for r in meant.refs}:
-            continue
-        if _listed_before(ahead, "object", lexicon) or _listed_after(behind, "object", lexicon):
-            continue
+        _, ahead, behind = between
         if not re.match(
             r"\s+(?:go|goes|to|for|should|can|is|are|needs?|on|onto|in|into)\b", behind, _F
         ):
