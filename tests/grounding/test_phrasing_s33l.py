@@ -147,3 +147,57 @@ def test_an_object_repaired_at_once_keeps_the_order_of_its_clause(text: str, wan
 )
 def test_an_object_repair_reads_as_the_object_meant(text: str, want: str) -> None:
     assert_reads(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Please, please give Alice the bottle! What comes next is Alice's call.",
+        "Give Carol the apple. The rest is up to Carol.",
+        "Both mugs on the table please. The rest is up to Alice.",
+        "Could you put the apple on the table, and after that it's up to Carol.",
+        "Give Bob the cup, and see what Carol says.",
+        "Next up. Give Bob the cup. Done, and see what the duty officer says.",
+        "Depending on what the foreman says, morning! Would you mind passing Bob the crisps?",
+        "Wait for Carol to give the word, then give Bob the cup.",
+        "Give Bob the cup. After that it's all up to the supervisor.",
+    ],
+)
+def test_what_comes_next_left_to_someone_elses_word_is_refused(text: str) -> None:
+    # 12c's deferrals fuzz (session 33): these read as handovers ('the rest is up to Carol':
+    # every object to Carol) or dropped the deferral
+    assert_refused(text, match="someone else's word")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Either mug's fine for Carol, the red or the blue, your call.", "mug_red>C | mug_blue>C"),
+        ("Give Bob the cup. Then you're done.", "cup>B"),
+        ("Give Bob the cup. That's all for now.", "cup>B"),
+    ],
+)
+def test_the_robots_own_choice_and_a_closing_remark_still_read(text: str, want: str) -> None:
+    assert_reads(text, want)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Give Alice the cup and Bob the apple. Bob first, please. Then you're done.",
+            "apple>B ; cup>A",
+        ),
+        ("Alice gets whatever Bob doesn't: Bob gets the bottle. Then you're done.", None),
+        ("Give Bob the cup and Alice the apple. After that, you're free.", "cup>B & apple>A"),
+    ],
+)
+def test_a_last_then_youre_done_orders_nothing(text: str, want: str | None) -> None:
+    # 12c's deferrals fuzz (session 33): the closing 'then' cost the order said before it, or
+    # set one; the text reads as it does without that sentence
+    scene = FIG if "whatever" in text else CELL
+    got, alone = tree(text, scene), tree(text.rsplit(". ", 1)[0] + ".", scene)
+    assert got is not None and alone is not None
+    assert show_tree(got) == show_tree(alone)
+    if want is not None:
+        assert_reads(text, want)

@@ -5990,7 +5990,9 @@ def _surface_only(words: str, lexicon: Lexicon) -> bool:
 
 
 _REPAIR_WORD33L = re.compile(
-    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say)\b)+\s*,?\s*", _F
+    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say|um+|uh+|er+|erm+)\b)+"
+    r"\s*,?\s*",
+    _F,
 )
 
 

@@ -139,7 +139,7 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
 _SUBJECT_REPAIRED = re.compile(
     r"(?P<pre>(?:^|[,.;:!?]\s*)(?:(?i:oh|ah|and|also|plus|then)\s+)*)"
     r"(?P<said>[A-Z][\w]*(?: [A-Z][\w]*)?)\s*,\s*"
-    r"(?:(?i:i mean|i meant|sorry|no|or rather|oops)\s*,?\s*)+"
+    r"(?:(?i:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
     r"(?P<meant>[A-Z][\w]*(?: [A-Z][\w]*)?)"
     r"(?=\s+(?i:wanted|wants|needs|needed|would like|gets|is getting|asked for|should get|"
     r"can have|has asked for|is after)\b)"
@@ -175,7 +175,8 @@ def subject_repairs33l(text: str, lexicon: Lexicon) -> str:
 
 # an object repaired at once by a repair word ("the barcode scanner, I mean the gloves")
 _OBJECT_REPAIR = re.compile(
-    r"\s*,\s*(?:(?:i mean|i meant|sorry|no|or rather|oops)\s*,?\s*)+(?=(?:the|a|an|my|that)\s)",
+    r"\s*,\s*(?:(?:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
+    r"(?=(?:the|a|an|my|that)\s)",
     _F,
 )
 
