@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.repairs import _first_name, _last_name
 from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene
 
@@ -5988,6 +5989,29 @@ def _surface_only(words: str, lexicon: Lexicon) -> bool:
     return _only(words, lexicon, "surface")
 
 
+_REPAIR_WORD33L = re.compile(
+    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say|um+|uh+|er+|erm+)\b)+"
+    r"\s*,?\s*",
+    _F,
+)
+
+
+def _taken_back33l(text: str, lexicon: Lexicon) -> set[str]:
+    """Session 33 (lead): the people ``text`` names and takes back at once by a repair ('for
+    Bob, I mean Alice': Bob), so that 'the other one' after it is not read as the one person
+    neither said (12c's repairs fuzz: "The cup is for Bob, I mean Alice, and the apple goes to
+    the other one." read apple>C, where Bob is as likely)."""
+    taken: set[str] = set()
+    for m in _REPAIR_WORD33L.finditer(text):
+        before = _last_name(text[: m.start()], lexicon)
+        after = _first_name(text[m.end() :], lexicon)
+        if before is None or after is None:
+            continue
+        if all(r.kind == "human" for r in before[0].refs + after[0].refs):
+            taken |= {r.id for r in before[0].refs} - {r.id for r in after[0].refs}
+    return taken
+
+
 def _pronouns18(text: str, lexicon: Lexicon) -> str:
     """Pronouns and ellipsis said of one person: 'P wants X. Give it to them.' ('them' for the one
     person the text names, who asked), '…, sort that out (for them)' after a want, 'Then the Y,
@@ -6013,8 +6037,10 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",\s*same (?:person|one|guy|lady)\s*([.!]?)$", r" to the same person\1", out)
     other = re.search(r"\b(to|for) the other (?:one|person)\b", out, _F)
     if other and people:
-        # "… and the chips are for the other one": the one person not named
-        left = [h for h in lexicon.scene.humans if h.id not in people]
+        # "… and the chips are for the other one": the one person not named (one taken back
+        # by a repair is not named: "for Bob, I mean Alice, …" names Alice alone)
+        kept = [h for h in people if h not in _taken_back33l(out[: other.start()], lexicon)]
+        left = [h for h in lexicon.scene.humans if h.id not in kept]
         if len(left) == 1:
             out = _sub(
                 r"\b(to|for) the other (?:one|person)\b", rf"\1 {_name(left[0].id, lexicon)}", out
@@ -16318,6 +16344,14 @@ def _i_mean_after30r(text: str, lexicon: Lexicon) -> str:
 _SORRY_AFTER30R = re.compile(r",\s*sorry\s*[,;:-]\s*(?P<why>[a-z][a-z' -]*?)(?P<end>\s*[.!]?)$", _F)
 
 
+# words that change what was said ('swap the people', 'the other way round'): never an apology
+_CHANGES33L = re.compile(
+    r"\b(?:swap|swop|switch|reverse|change|changed|other way|wrong way|round|around|instead|"
+    r"mixed|mix|muddled)\b",
+    _F,
+)
+
+
 def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): ', sorry, <words>' closing a text whose words name nothing of the scene
     and hold no word that counts, chooses, negates or points back is an apology (its reason),
@@ -16326,6 +16360,8 @@ def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     m = _SORRY_AFTER30R.search(text)
     if m is None or not _inert28(m.group("why"), lexicon) or _TIME30R.search(m.group("why")):
         return text
+    if _CHANGES33L.search(m.group("why")):
+        return text  # ", sorry, swap the people": a change of its own (session 33, lead)
     before = text[: m.start()]
     if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
         return text
