@@ -407,7 +407,6 @@ KNOWN_MISSES = frozenset(
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
-        "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",

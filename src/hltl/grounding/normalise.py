@@ -20502,7 +20502,34 @@ def _either_person33r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['prep']} either of the two people{text[m.end() :]}"
 
 
+# "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now."
+_CORRECTED_AWAY33R = re.compile(
+    r"^(?P<head>.+?\b(?:no|sorry|oops|i mean|i meant),?\s+(?:i mean\s+|i meant\s+)?(?:to )?"
+    r"(?P<q>[A-Za-z][\w ]*?)),\s*(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?P<why>(?:too|not|no longer|"
+    r"off|done with|finished with)\b[a-z' ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_away33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to another person ('I mean to Lily'), "Ava's too big
+    for teddies now" says why of the person corrected away: taken off when P is one person the
+    text names before the correction, the correction names another, and the remark names nothing
+    of the scene but the request's objects."""
+    m = _CORRECTED_AWAY33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    p, q = _ids(m["p"], lexicon), _ids(m["q"], lexicon)
+    cue = m.start("q")
+    if p == q or not p <= _ids(text[:cue], lexicon, "human"):
+        return text
+    if not _ids(m["why"], lexicon) <= _ids(text[:cue], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _corrected_away33r,
     _to_one_other33r,
     _anything_at_all33r,
     _sitting_out33r,
