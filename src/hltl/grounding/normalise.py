@@ -18685,6 +18685,10 @@ def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool
     object."""
     pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
+    if not re.sub(r"^(?:'[a-z]+|\s+[a-z]+)", "", pred).strip():
+        # session 33: "…; the crisps, Alice's.": a possessive that says whose the things before
+        # it are (the afterthoughts fuzz: taken off, the crisps had gone to Bob), no statement
+        return False
     if any(
         w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
         for w in words

@@ -362,6 +362,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _has_beside_want31s(text, lexicon)
         _state_only32s(text, lexicon)
         _left_then_it32s(text, lexicon)
+        _owner_only33s(text, lexicon)
+        _other_after_repair33s(text, lexicon)
+        _them_after_choice33s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -376,6 +379,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         if normalise:
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
+            _said_against33s(text, node, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -417,6 +421,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 node = _read(plain, scene, lexicon)
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
+                _said_against33s(text, node, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -652,7 +657,11 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
     object, which the first reading keeps back: the instruction contradicts itself or asks for
     the object in two words. Refused naming both readings (the grammar had read teddy>A).
     'Leave the teddy; give the bib to Lily' (another object), 'Leave the teddy on the mat'
-    (a place) and 'Leave the red mug, give Bob the other one' read as before."""
+    (a place, nothing after) and 'Leave the red mug, give Bob the other one' read as before.
+    Session 33 (12s): with a place ('Leave the teddy on the mat; give it to Lily.', read as
+    teddy@mat & teddy>A) 'leave' keeps the object there, and the 'it' after it moves it again:
+    refused naming both ('put … on …' then 'give it …' is a placement and a hand-over, read as
+    before); so is an 'and then' between."""
     try:
         items = lex(text, lexicon)
     except GroundingError:
@@ -670,7 +679,9 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
             _is(items[n], "filler") or (_is(items[n], "aux") and items[n].text.lower() == "be")
         ):
             n += 1
-        if n < len(items) and not (items[n].kind == "punct" or _is(items[n], "and")):
+        place = _place_said33s(items, n)
+        n = place or n
+        if n < len(items) and not (items[n].kind == "punct" or _is(items[n], "and", "then")):
             continue
         for m in range(n, len(items)):
             x = items[m]
@@ -681,13 +692,250 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
                 and _is(x, "it", "pronoun")
                 and _is_verb(items[m - 1])  # 'give it', not "it's only the bottle"
             ):
-                left = _text(items[k : j + 1])
                 obj = _text(items[k + 1 : j + 1])
+                if place:
+                    left = _text(items[k:place])
+                    where = _text(items[j + 1 : place])
+                    raise GroundingError(
+                        f"{x.text!r} after {left!r} can only be {obj}, which "
+                        f"{it.text.lower()!r} keeps {where}: is {obj} to stay {where}, or to "
+                        f"go {where} and then be moved again? say one"
+                    )
+                left = _text(items[k : j + 1])
                 raise GroundingError(
                     f"{x.text!r} after {left!r} can only be {obj}: {it.text.lower()!r} may keep "
                     f"{obj} where it is (then it goes to no one) or leave it for the one who "
                     f"gets it; say 'give {obj} to …', or name the object that goes"
                 )
+
+
+def _place_said33s(items: list[Item], n: int) -> int:
+    """Session 33 (12s): the index after 'on / in / at <surface>' said at ``n`` ('leave the
+    teddy on the mat'), else 0."""
+    if n >= len(items) or not _is(items[n], "on"):
+        return 0
+    n += 1
+    while n < len(items) and _is(items[n], "det"):
+        n += 1
+    if (
+        n < len(items)
+        and items[n].kind == "ent"
+        and all(r.kind == "surface" for r in items[n].refs)
+    ):
+        return n + 1
+    return 0
+
+
+# Session 33 (12s): the forms of 'have' that say what a person holds now ("he's got one",
+# "Sam has it already")
+_HOLDS33S = frozenset({"has", "has got", "'s got", "have", "have got", "'ve got"})
+
+
+def _said_against33s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 33 (12s): a clause of ``text`` that says the person who gets something in
+    ``node`` does not take it or holds it already: 'Bob is off crisps' (the crisps go to Bob:
+    "Crisps to Alice, sorry, I mean Bob, Bob is off crisps.") or, closing the instruction,
+    'he's got one (already)' / 'Sam has it' ("Give Bob the cup, he's got one already.",
+    "Stapler to Priya, no, to Sam, Sam's got one."). The grammar had dropped such a clause as a
+    remark and read the request; the remark undercuts it (or the correction before it), so
+    the instruction is refused naming what it asks and what the remark says. A he / she is any
+    person named before it whom the scene's titles allow. Said of someone else ("…, I mean
+    Bob, Alice is off crisps.", "The stapler's for Priya. Oh hang on, she's got one, give it
+    to Sam."), negated ("she hasn't got one") or after 'once' / 'when' it is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    given = [t for t in tasks(node) if t.kind == "deliver"]
+    if not given:
+        return
+    for s in range(len(items)):
+        if s > 0 and not (items[s - 1].kind == "punct" or _is(items[s - 1], "reason")):
+            continue
+        k = s
+        while k < len(items) and _is(items[k], "and", "correct", "reason", "filler"):
+            k += 1
+        said = _against_clause33s(items, k)
+        if said is None:
+            continue
+        end, objects = said
+        who = _who33s(items, k, lexicon)
+        hit = [t for t in given if t.target in who and (not objects or t.obj in objects)]
+        if not hit:
+            continue
+        clause = _text(items[k:end])
+        what = " and ".join(dict.fromkeys(f"the {t.obj}" for t in hit))
+        name = " or ".join(dict.fromkeys(lexicon.display(t.target) for t in hit))
+        others = [
+            lexicon.display(r.id)
+            for r in dict.fromkeys(r for x in items if x.kind == "ent" for r in x.refs)
+            if r.kind == "human" and r.id not in who
+        ]
+        instead = f", or to {' or '.join(others)}" if others else ", or to no one"
+        if objects:
+            raise GroundingError(
+                f"{clause!r} says {name} does not take {what}, yet the request gives it to "
+                f"{name}: is {what} to go to {name}{instead}? say who gets it"
+            )
+        if any(x.kind != "punct" and not _is(x, "filler") for x in items[end:]):
+            continue  # "Bob's got one, give him the other mug": the request after it
+        raise GroundingError(
+            f"{clause!r} says {name} already has one, yet the request gives {what} to {name}: "
+            f"is {what} still to go to {name}{instead}? say who gets it"
+        )
+
+
+def _against_clause33s(items: list[Item], k: int) -> tuple[int, frozenset[str]] | None:
+    """The end of the clause at ``k`` and the objects it says its subject is off ('Bob is off
+    (the) crisps'; none for 'he's got one', 'Sam has it already'), when it is one of those."""
+    if k + 2 >= len(items):
+        return None
+    subject = items[k]
+    if not (
+        (subject.kind == "ent" and all(r.kind == "human" for r in subject.refs))
+        or (_is(subject, "pronoun") and subject.text.lower() in ("he", "she"))
+    ):
+        return None
+    j = k + 1
+    if _is(items[j], "aux", "filler") and items[j].text.lower() in ("is", "'s"):
+        if items[j + 1].text.lower() == "off" and _is(items[j + 1], "filler"):
+            n = j + 2
+            while n < len(items) and _is(items[n], "det"):
+                n += 1
+            if n < len(items) and _objects_only32s(items[n]):
+                return n + 1, frozenset(r.id for r in items[n].refs)
+            return None
+        j += 1  # "he's already got one"
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j >= len(items):
+        return None
+    verb = items[j].text.lower()
+    if not (
+        (items[j].lemma == "verb:have" and verb in _HOLDS33S)
+        or (j > k + 1 and items[j].lemma == "verb:get" and verb == "got")
+    ):
+        return None
+    j += 1
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j >= len(items) or items[j].text.lower() not in ("one", "it", "them"):
+        return None
+    j += 1
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j < len(items) and items[j].kind != "punct":
+        return None
+    return j, frozenset()
+
+
+def _who33s(items: list[Item], k: int, lexicon: Lexicon) -> set[str]:
+    """Who the subject at ``k`` may be: the person named, or for a he / she each person named
+    before it whom the scene's titles allow."""
+    subject = items[k]
+    if subject.kind == "ent":
+        return {r.id for r in subject.refs}
+    sex = PRONOUN_SEX[subject.text.lower()]
+    return {
+        r.id
+        for x in items[:k]
+        if x.kind == "ent"
+        for r in x.refs
+        if r.kind == "human" and title_sex(r.id, lexicon) in (None, sex)
+    }
+
+
+def _owner_only33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'The drill is Jess's.' as the whole instruction says whose the drill
+    is (nothing to do) or, as "The drill is Jess's, the torch goes in the locker" does, allots
+    it (the grammar had read drill>B): refused naming both readings. Said with 'please' or
+    thanks, or beside another part, it allots and is read as before."""
+    if _ASKED32S.search(text):
+        return
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler") or it.text == "'s"]
+    except GroundingError:
+        return
+    while items and items[-1].kind == "punct" and items[-1].lemma in (".", "!"):
+        items = items[:-1]
+    k = 1 if items and _is(items[0], "det") else 0
+    if len(items) != k + 4 or not _objects_only32s(items[k]):
+        return
+    verb, owner, mark = items[k + 1 :]
+    if (
+        verb.text.lower() in ("is", "are", "'s")
+        and owner.kind == "ent"
+        and all(r.kind == "human" for r in owner.refs)
+        and mark.text == "'s"
+    ):
+        obj = _text(items[: k + 1]).lower()
+        be, go = ("are", "go") if verb.text == "are" else ("is", "goes")
+        raise GroundingError(
+            f"{text.strip()!r} could say whose {obj} {be} (nothing to do) or that {obj} {go} to "
+            f"{owner.text}: say 'give {owner.text} {obj}' to have it handed over"
+        )
+
+
+def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'Give Alice a mug, no, give Bob the other one': 'the other' after a
+    correction that takes back 'a mug' (any one of two) points at no mug, since none was picked
+    (the grammar had read either mug to Bob): refused naming the mugs. After 'the red mug'
+    ('…, no, give Bob the other one': the blue mug) and without a correction ('Give Alice a mug
+    and Bob the other one': one each) it is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for c, it in enumerate(items):
+        if not (_is(it, "correct") or (_is(it, "not") and it.text.lower() == "no")):
+            continue
+        before = [
+            x
+            for x in range(c)
+            if _objects_only32s(items[x])
+            and len(items[x].refs) > 1
+            and x > 0
+            and (_is(items[x - 1], "q:some") or items[x - 1].text.lower() in ("a", "an"))
+        ]
+        if not before:
+            continue
+        for n in range(c + 1, len(items) - 1):
+            if items[n].text.lower() == "the" and _is(items[n + 1], "other"):
+                said = items[before[-1]]
+                raise GroundingError(
+                    f"'the other' after {_text(items[before[-1] - 1 : before[-1] + 1])!r}, "
+                    f"taken back, points at none of them: it could mean "
+                    f"{' or '.join(r.id for r in said.refs)}; name the one that goes"
+                )
+
+
+def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
+    Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
+    may be the one chosen or both (the grammar had read both): refused naming the readings.
+    'It' after the choice (the one chosen) and 'them' after 'the cup and the apple' read as
+    before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for m, it in enumerate(items):
+        if it.text.lower() != "them" or not _is(it, "pronoun", "it"):
+            continue
+        last = next((x for x in range(m - 1, -1, -1) if _objects_only32s(items[x])), None)
+        if last is None:
+            continue
+        x = last
+        while x > 0 and (
+            _objects_only32s(items[x - 1]) or _is(items[x - 1], "det", "or", "and", ",", "either")
+        ):
+            x -= 1
+        if any(_is(items[y], "or") for y in range(x, last)):
+            listed = _text(items[x : last + 1]).strip(" ,")
+            raise GroundingError(
+                f"'them' after {listed!r} could mean the one chosen or both: say 'it' for the "
+                "one chosen, or 'and' for both"
+            )
 
 
 # the words that make "Marco has the knife" asked ("…, please", "…, cheers")

@@ -1,0 +1,234 @@
+"""Session-33 phrasings of issue 12 (engineer 12s): doubtful readings found on main by the lead's
+probes and the fuzz — a remark that undercuts the request or its correction, 'leave' with a
+place then 'it', an owner said alone, 'the other' after a taken-back 'a mug', 'them' after a
+choice, a gapped possessive taken for a remark — each now the reading a careful person gives or
+a refusal naming the readings. Each rule with the near forms it must leave as they were
+(docs/grounding.md, "Session 33 (engineer 12s)")."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.grounding.helpers import (
+    CELL,
+    NURSERY,
+    OFFICE,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
+
+# -- a remark that says the person who gets it does not take it (offline.py _said_against33s) ---
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was chips>B: the reason contradicts the correction
+        "Crisps to Alice, sorry, I mean Bob, Bob is off crisps.",
+        "Crisps to Alice, sorry, I mean Bob, he is off crisps.",
+        "Crisps to Alice, no, Bob, Bob's off the crisps.",
+        "Give Bob the crisps, Bob is off crisps.",
+        # was chips>B: a statement that asks for nothing
+        "Bob is off crisps.",
+    ],
+)
+def test_a_person_off_what_they_get_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="says Person B does not take the chips")
+
+
+def test_the_refusal_names_the_correction_s_other_reading() -> None:
+    assert_refused(
+        "Crisps to Alice, sorry, I mean Bob, Bob is off crisps.",
+        CELL,
+        match="to go to Person B, or to Person A",
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # the remark is about the person the correction takes the crisps from (blind24)
+        ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B"),
+        ("Chips to Person A, actually, make that the bottle, she's off salt.", "bottle>A"),
+        # 'off' before no object is no remark about one
+        ("Give Bob the crisps, he's off to the match.", "chips>B"),
+    ],
+)
+def test_near_forms_of_off_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- a remark closing the instruction that says the person holds one already ---------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was cup>B
+        "Give Bob the cup, he's got one already.",
+        "Give Bob the cup, he has one.",
+        "Give Bob the cup, because he has it already.",
+        "Give Bob the cup, Bob's got one.",
+    ],
+)
+def test_a_recipient_said_to_have_one_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="says Person B already has one, yet the request gives the cup")
+
+
+def test_a_corrected_recipient_said_to_have_one_is_refused_with_both_readings() -> None:
+    # was stapler>B: decided refused (the remark undercuts the correction; keeping Priya would
+    # be a guess as well), naming both people
+    assert_refused(
+        "Stapler to Priya, no, to Sam, Sam's got one.",
+        OFFICE,
+        match="still to go to Person B, or to Person A",
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the remark is about the person the correction takes the object from
+        ("Stapler to Priya, no, to Sam, Priya's got one.", "stapler>B", OFFICE),
+        ("Give the bottle to Bob, no wait, Bob's got one, to Alice.", "bottle>A", CELL),
+        # a condition, not a remark
+        ("Chips for Bob, and once he has them, the bottle for Alice.", "chips>B ; bottle>A", CELL),
+    ],
+)
+def test_near_forms_of_holding_one_read_as_before(text: str, want: str, scene: object) -> None:
+    assert_reads(text, want, scene)  # type: ignore[arg-type]
+
+
+# -- 'leave' with a place, then 'it' (offline.py _left_then_it32s, session 33) ------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was teddy@mat & teddy>A
+        "Leave the teddy on the mat; give it to Lily.",
+        "Leave the teddy on the mat and then give it to Lily.",
+        "Leave the teddy in the high chair, give it to Ava.",
+    ],
+)
+def test_leave_on_a_place_then_it_is_refused_with_both_readings(text: str) -> None:
+    assert_refused(text, NURSERY, match="is the teddy to stay .*, or to go .* and then be moved")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Put the teddy on the mat; give it to Lily.", "teddy@mat & teddy>A"),
+        ("Leave the teddy on the mat.", "teddy@mat"),
+        ("Leave the teddy on the mat; give the bib to Lily.", "teddy@mat & bib>A"),
+    ],
+)
+def test_near_forms_of_leave_on_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, NURSERY)
+
+
+# -- an owner said alone (offline.py _owner_only33s) ---------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text", ["The drill is Jess's.", "The drill's Jess's.", "The spanners are Jess's!"]
+)
+def test_an_owner_said_alone_is_refused_with_both_readings(text: str) -> None:
+    # the drill was read as drill>B
+    assert_refused(text, WORKSHOP, match="could say whose the .* (is|are) .* or that the")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("The drill is Jess's, please.", "drill>B"),
+        # beside another part it allots (blind30)
+        (
+            "The drill is Jess's, the torch goes in the locker, and that's the lot.",
+            "drill>B & torch@locker",
+        ),
+        ("The drill is for Jess.", "drill>B"),
+    ],
+)
+def test_near_forms_of_an_owner_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, WORKSHOP)
+
+
+# -- 'the other' after a taken-back 'a mug' (offline.py _other_after_repair33s) -----------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was mug_red>B | mug_blue>B
+        "Give Alice a mug, no, give Bob the other one",
+        "Give Alice a mug. No, give Bob the other one.",
+        "Give Alice one of the mugs, sorry, give Bob the other mug",
+    ],
+)
+def test_the_other_after_a_taken_back_indefinite_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="could mean mug_red or mug_blue")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the red mug, no, give Bob the other one", "mug_blue>B"),
+        (
+            "Give Alice a mug and Bob the other one",
+            "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+        ),
+    ],
+)
+def test_near_forms_of_the_other_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- 'them' after a choice (offline.py _them_after_choice33s) ------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was cup>A & apple>A
+        "Whichever you can reach first, the cup or the apple, hand them to Person A.",
+        "Either the cup or the apple, give them to Bob",
+        "The cup or the apple, hand them to Person A.",
+    ],
+)
+def test_them_after_a_choice_is_refused_with_both_readings(text: str) -> None:
+    assert_refused(text, CELL, match="could mean the one chosen or both")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Whichever you can reach first, the cup or the apple, hand it to Person A.",
+            "cup>A | apple>A",
+        ),
+        ("The cup and the apple, hand them to Person A.", "cup>A & apple>A"),
+    ],
+)
+def test_near_forms_of_them_after_a_list_read_as_before(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- a gapped possessive after a remark (normalise.py _inert_statement32s, session 33) -----------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was bottle>B & chips>B (the afterthoughts fuzz): ", Alice's" taken off as a statement
+        "Alice is starving. The bottle's Bob's to take out on the trawler; the crisps, Alice's.",
+        "The bottle's Bob's to take out on the trawler; the crisps, Alice's.",
+    ],
+)
+def test_a_gapped_possessive_keeps_its_owner(text: str) -> None:
+    assert_reads(text, "bottle>B & chips>A", CELL)
+
+
+def test_a_closing_statement_is_still_taken_off() -> None:
+    assert_reads("Give Bob the crisps, he's doing the rounds next door.", "chips>B", CELL)
