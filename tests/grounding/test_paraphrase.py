@@ -298,8 +298,6 @@ KNOWN_MISSES = frozenset(
         "you are very kind.",
         "Alright mate, bus driver here, I've got four minutes till my next run. Be a legend and "
         "chuck the packing tape on the belt, cheers.",
-        "Hiya, lifeguard here, dripping all over your floor, sorry. Stick the crisps up on the "
-        "shelf, would you? Ta.",
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
@@ -339,12 +337,6 @@ KNOWN_MISSES = frozenset(
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
-        "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
-        "terribly passing Sam the notepad? Thanks a bunch.",
-        "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
-        "the magazine down on the bedside locker? Lovely, thank you.",
-        "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
-        "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "Noah desperately needs a ruler, his lines are all over the place.",
@@ -398,14 +390,8 @@ KNOWN_MISSES = frozenset(
         "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "Ah, good afternoon, apologies, choir practice ran over again. Whenever you have a "
-        "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
-        "so good, pass Priya the red pen. Many thanks indeed.",
-        "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
-        "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "

@@ -11,8 +11,10 @@ import pytest
 
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
     NURSERY,
     OFFICE,
+    WARD,
     WORKSHOP,
     assert_reads,
     assert_refused,
@@ -232,3 +234,71 @@ def test_a_gapped_possessive_keeps_its_owner(text: str) -> None:
 
 def test_a_closing_statement_is_still_taken_off() -> None:
     assert_reads("Give Bob the crisps, he's doing the rounds next door.", "chips>B", CELL)
+
+
+# -- a greeting sentence that asks nothing (normalise.py _greeting_said33s) ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused (blind21, blind22): the greeting's sentence says who the speaker is
+        (
+            "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
+            "passing Sam the notepad?",
+            "notebook>B",
+            OFFICE,
+        ),
+        (
+            "Morning, it's the dentist up from outpatients. Could you set the magazine down on "
+            "the bedside locker?",
+            "magazine@bedside",
+            WARD,
+        ),
+        (
+            "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. Pass "
+            "Priya the red pen.",
+            "pen_red>A",
+            OFFICE,
+        ),
+        ("Hiya, I'm the plumber from upstairs. Hand Bob the crisps.", "chips>B", CELL),
+    ],
+)
+def test_a_greeting_sentence_goes(text: str, want: str, scene: object) -> None:
+    assert_reads(text, want, scene)  # type: ignore[arg-type]
+
+
+def test_a_greeting_sentence_with_a_want_keeps_it() -> None:
+    assert_reads("Morning, Bob wants the cup. Hand Alice the crisps.", "cup>B & chips>A", CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the greeting's sentence points at a thing, asks, or names an object: not taken off
+        "Morning, it's for Bob. Hand Alice the crisps.",
+        "Hello, don't give Bob anything. Hand Alice the crisps.",
+        "Hello, I'm after the apple. Hand Alice the crisps.",
+    ],
+)
+def test_a_greeting_sentence_that_says_something_is_not_dropped(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Would you be a good sort and hand Jess the torch? Much appreciated.",
+            "torch>B",
+            WORKSHOP,
+        ),
+        ("When you get a tick, could the packing tape go on the belt?", "tape@conveyor", DEPOT),
+    ],
+)
+def test_courtesy_frames_with_a_kind_word(text: str, want: str, scene: object) -> None:
+    assert_reads(text, want, scene)  # type: ignore[arg-type]
+
+
+def test_a_kind_word_frame_is_not_a_name() -> None:
+    assert_refused("Would you be a good hammer and hand Jess the torch?", WORKSHOP)

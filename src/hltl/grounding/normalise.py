@@ -4620,15 +4620,22 @@ def _inert_sentences(text: str, lexicon: Lexicon) -> str:
 
 # courtesy in frames a held word is part of: each asks nothing of its own
 _COURTESY_FRAMES: tuple[tuple[str, str], ...] = (
-    # "would you be a dear / a love / an angel and give …": could you give
-    (r"\b(would|could|will|can) you be (?:a|an|my) [a-z]+ and\s+", r"\1 you "),
+    # "would you be a dear / a love / an angel and give …": could you give (session 33, 12s:
+    # "would you be a good sort and hand …", "be a real star and …": a kind word before it)
+    (
+        r"\b(would|could|will|can) you be (?:a|an|my) (?:(?:good|real|proper|absolute|kind|"
+        r"lovely|little|total) )?[a-z]+ and\s+",
+        r"\1 you ",
+    ),
     (r"^(?:be (?:a|an) [a-z]+ and|be a love,?)\s+", ""),
     # "Pretty please (with sugar / a cherry on top)": please
     (r"\bpretty please(?: with (?:sugar|a cherry|cherries|bells) on(?: top)?)?\b", "please"),
     # "When convenient, …", "At your convenience, …", "When you get a chance, …"
     (
         r"(^|(?<=[.!?])\s*)(?:when (?:convenient|it's convenient|you can)|at your "
-        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec))\s*,\s*",
+        # session 33 (12s): 'a second', 'a tick' (blind22)
+        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec|second|tick))"
+        r"\s*,\s*",
         r"\1",
     ),
     # "I hope this is okay, …", "I hope that's alright, …"
@@ -18773,7 +18780,60 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_otherwise31s,
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
+
+
+# Session 33 (12s): a greeting opening the instruction, with the rest of its sentence ("Morning,
+# it's the dentist up from outpatients.", "Afternoon, I'm the carpenter from the unit next door,
+# after a small favour.", "Hello, paramedic, just dropping off some paperwork for the manager.")
+_GREETING33S = re.compile(
+    r"^(?:(?:ah|oh|well|right)\s*,?\s+)?(?P<said>(?:hello|hi|hiya|hey|hullo|morning|afternoon|"
+    r"evening|good (?:morning|afternoon|evening|day))\b[^.!?]*[.!]+)\s+(?P<rest>\S.*)$",
+    _F,
+)
+# words that would make the greeting's sentence ask, point at a thing, or say when
+_GREETING_HELD33S = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "send", "fetch", "get"),
+        *("gets", "want", "wants", "wanted", "need", "needs", "needed", "like", "likes"),
+        *("fancy", "fancies", "asked", "asking", "it", "them", "that", "those", "these", "this"),
+        *("one", "ones", "both", "either", "any", "which", "whichever", "too", "also", "instead"),
+        *("or", "if", "unless", "then", "first", "later", "tomorrow", "tonight", "wait"),
+        *("until", "till", "not", "no", "don't", "never", "cancel", "please", "could", "can"),
+        *("would", "will", "should", "must"),
+    }
+)
+
+
+def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): a sentence that opens on a greeting and says who the speaker is or
+    why they came ("Hello, sorry, I'm the tailor, I've come to measure the manager for her
+    suit. If you'd be so good, pass Priya the red pen.") asks for nothing: it goes, and the
+    sentences after it are read. Only when it names no object or surface of the scene, holds
+    none of _GREETING_HELD33S (a hand-over, a want, a word pointing at a thing, a choice, a
+    time, a negation, a modal that could ask), and nothing after it says he / she / him /
+    her / they / them (who they are could hang on a name in it, or on someone it names whom
+    the scene does not hold)."""
+    m = _GREETING33S.match(text)
+    if m is None:
+        return text
+    # "Morning, it's the dentist …": the speaker saying who it is, no thing pointed at
+    said = re.sub(
+        r"^([a-z ]+,\s*)it(?:'s| is) (?=(?:the|a|an|your|just) )", r"\1", m["said"], flags=_F
+    )
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", said.lower())
+    if any(w in _GREETING_HELD33S or w.split("'")[0] in _GREETING_HELD33S for w in words):
+        return text
+    if _ids(m["said"], lexicon, "object") or _ids(m["said"], lexicon, "surface"):
+        return text
+    if re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", m["rest"], _F):
+        return text  # "Hello, I'm Carol's plumber. Hand her …": 'her' may hang on the greeting
+    return m["rest"]
+
+
+_STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (_greeting_said33s,)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
+    *_STEPS33S,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
     # session 32 (12r): blind30's choices, counts, negation, exclusions and corrections
