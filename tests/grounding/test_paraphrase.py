@@ -339,7 +339,6 @@ KNOWN_MISSES = frozenset(
         "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
-        "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
@@ -351,7 +350,6 @@ KNOWN_MISSES = frozenset(
         "Alice wants the bottle. Bob wants the crisps. Sort the pair of them out.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
-        "The cup. Person B. The chips. Person A. Ready when you are.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
@@ -361,7 +359,6 @@ KNOWN_MISSES = frozenset(
         "Person A and Person B both want a drink, so the bottle to one and the cup to the "
         "other, whichever way round.",
         "Each student gets a book, you choose who gets which.",
-        "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
@@ -414,7 +411,6 @@ KNOWN_MISSES = frozenset(
         "I'm off to put my feet up.",
         "Bottle. Person A. Quick as you like, she's weighing out in five.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
-        'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',

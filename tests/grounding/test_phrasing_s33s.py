@@ -302,3 +302,30 @@ def test_courtesy_frames_with_a_kind_word(text: str, want: str, scene: object) -
 
 def test_a_kind_word_frame_is_not_a_name() -> None:
     assert_refused("Would you be a good hammer and hand Jess the torch?", WORKSHOP)
+
+
+# -- a choice made by what is to hand; a closer; an idiom in a closing statement -----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # each was refused (blind21, blind22)
+        ("Either mug to Bob, whichever's closer to hand.", "mug_red>B | mug_blue>B"),
+        ("The cup or the apple for Bob, whichever is closer to your hand.", "cup>B | apple>B"),
+        ("Give Alice the cup. The crisps, Bob. Ready when you are.", "cup>A & chips>B"),
+        ("Bob desperately needs the crisps, his tea is all over the place.", "chips>B"),
+    ],
+)
+def test_blind21_22_kinds_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+def test_whichever_to_hand_after_one_object_is_still_refused() -> None:
+    # nothing to choose from: 'closer to hand' is no choice of the robots'
+    assert_refused("Hand Bob the cup, whichever's closer to hand.", CELL)
+
+
+def test_all_outside_the_idiom_still_counts() -> None:
+    # 'all' in a closing statement may count what is asked: the statement stays (refused)
+    assert_refused("Bob desperately needs the crisps, he's eaten all the rest.", CELL)

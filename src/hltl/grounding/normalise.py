@@ -6517,7 +6517,9 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
 _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
-    r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
+    # session 33 (12s): 'ready when you are' (blind21)
+    r"when(?: you're| you are) ready|ready when you are|there's a good (?:lad|girl|boy|robot|"
+    r"chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
     _F,
@@ -13103,7 +13105,9 @@ def _which_gets28r(text: str, lexicon: Lexicon) -> str:
 _WHO_CHOOSES28R = re.compile(
     r"\s*,\s*(?P<w>whoever|whichever)(?:'s| is) (?:nearer|closer|nearest|closest|free|handier|"
     r"handiest|quicker|quickest|easier|easiest|easiest to reach|nearer to you|closer to you|"
-    r"nearest to you|closest to you|to hand)(?=\s*(?:[,.!?]|$))",
+    r"nearest to you|closest to you|to hand|"
+    # session 33 (12s): "whichever's closer to hand", "… closer to your hand" (blind21, blind22)
+    r"(?:nearer|closer|nearest|closest) to (?:your )?hand)(?=\s*(?:[,.!?]|$))",
     _F,
 )
 
@@ -18648,10 +18652,12 @@ _TRAILING_HELD32S = frozenset(
 )
 
 
-# how long or since when, in such a statement ("she's been out on the water all day")
+# how long or since when, in such a statement ("she's been out on the water all day"); session
+# 33: and 'all over the place' ("his lines are all over the place": no count)
 _TRAILING_TIME32S = re.compile(
     r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
-    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours))\b"
+    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours)|all over the "
+    r"(?:place|shop))\b"
 )
 
 
@@ -18692,7 +18698,7 @@ def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool
     object."""
     pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
-    if not re.sub(r"^(?:'[a-z]+|\s+[a-z]+)", "", pred).strip():
+    if not re.sub(r"^(?:'[a-z]+|\s+[a-z]+)", "", m["pred"]).strip():
         # session 33: "…; the crisps, Alice's.": a possessive that says whose the things before
         # it are (the afterthoughts fuzz: taken off, the crisps had gone to Bob), no statement
         return False
