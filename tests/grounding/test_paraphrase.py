@@ -336,7 +336,6 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
@@ -347,7 +346,6 @@ KNOWN_MISSES = frozenset(
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
-        "Alice wants the bottle. Bob wants the crisps. Sort the pair of them out.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
@@ -363,7 +361,6 @@ KNOWN_MISSES = frozenset(
         "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
-        "Nothing for Person A today; the chips go to Person B.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
         "other.",

@@ -329,3 +329,24 @@ def test_whichever_to_hand_after_one_object_is_still_refused() -> None:
 def test_all_outside_the_idiom_still_counts() -> None:
     # 'all' in a closing statement may count what is asked: the statement stays (refused)
     assert_refused("Bob desperately needs the crisps, he's eaten all the rest.", CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # each was refused (blind21)
+        ("Please, you help me, give the crisps to Alice.", "chips>A"),
+        (
+            "Alice wants the cup. Bob wants the crisps. Sort the pair of them out.",
+            "cup>A & chips>B",
+        ),
+        ("Nothing for Alice today; the crisps go to Bob.", "chips>B"),
+    ],
+)
+def test_more_blind21_kinds_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+def test_nothing_for_today_still_refuses_what_it_rules_out() -> None:
+    # the request after it gives the person something: not taken off (refused)
+    assert_refused("Nothing for Alice today; the crisps go to Alice.", CELL)

@@ -6517,8 +6517,8 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
 _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
-    # session 33 (12s): 'ready when you are' (blind21)
-    r"when(?: you're| you are) ready|ready when you are|there's a good (?:lad|girl|boy|robot|"
+    # session 33 (12s): 'ready when you are', 'you help me' (blind21)
+    r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|there's a good (?:lad|girl|boy|robot|"
     r"chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
@@ -14886,10 +14886,11 @@ def _each_of_n29r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m.group('one')} {m.group('x')} for each {role}{text[m.end() :]}"
 
 
-# "None of it to Person A; …", "Nothing for Person A, …"
+# "None of it to Person A; …", "Nothing for Person A, …" (session 33, 12s: "Nothing for Person
+# A today; …", blind21)
 _NONE_FOR29R = re.compile(
     r"^(?:none of (?:it|them|that|those)|nothing|not a thing) (?:goes |is )?(?:to|for) "
-    r"(?P<p>[A-Za-z][\w ]*?)\s*[;,:.]\s*(?P<rest>\S.*)$",
+    r"(?P<p>[A-Za-z][\w ]*?)(?: (?:today|this time))?\s*[;,:.]\s*(?P<rest>\S.*)$",
     _F,
 )
 # "Don't leave the bottle where it is; hand it to Person A."
