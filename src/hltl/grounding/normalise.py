@@ -6518,8 +6518,8 @@ _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
     # session 33 (12s): 'ready when you are', 'you help me' (blind21)
-    r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|there's a good (?:lad|girl|boy|robot|"
-    r"chap)|nice and (?:slow|"
+    r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|"
+    r"there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
     _F,
