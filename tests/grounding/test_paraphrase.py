@@ -406,7 +406,6 @@ KNOWN_MISSES = frozenset(
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        "Bottle. Person A. Quick as you like, she's weighing out in five.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
@@ -445,8 +444,6 @@ KNOWN_MISSES = frozenset(
         "Priya wants the red pen left in the box, she'll sort it out later.",
         'Pick up the cup and give it Person B, yeah, then the apple same way.',
         "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
-        "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
-        'waiting.',
         "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
         "Give Person B the bottle I'm just going to check the hammers on this upright.",
         "Bottle for Person A, and, honestly, that's the whole job today.",

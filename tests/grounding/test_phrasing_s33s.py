@@ -350,3 +350,16 @@ def test_more_blind21_kinds_read(text: str, want: str) -> None:
 def test_nothing_for_today_still_refuses_what_it_rules_out() -> None:
     # the request after it gives the person something: not taken off (refused)
     assert_refused("Nothing for Alice today; the crisps go to Alice.", CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # each was refused (blind22; blind23's crane entry reads too)
+        ("Crisps. Bob. Quick as you like, he's on stage in five.", "chips>B"),
+        ("Crisps to Bob, quick as you like.", "chips>B"),
+        ("Crisps to Bob, he's on stage in ten minutes.", "chips>B"),
+    ],
+)
+def test_quick_as_you_like_and_in_five(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

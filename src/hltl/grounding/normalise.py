@@ -6517,8 +6517,9 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
 _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
-    # session 33 (12s): 'ready when you are', 'you help me' (blind21)
+    # session 33 (12s): 'ready when you are', 'you help me' (blind21), 'quick as you like'
     r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|"
+    r"(?:as )?(?:quick|fast|soon) as you (?:like|can)|"
     r"there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
@@ -18658,7 +18659,7 @@ _TRAILING_HELD32S = frozenset(
 _TRAILING_TIME32S = re.compile(
     r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
     r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours)|all over the "
-    r"(?:place|shop))\b"
+    r"(?:place|shop)|in (?:two|five|ten|twenty|a (?:minute|mo|sec|tick|jiffy))(?: minutes)?)\b"
 )
 
 
