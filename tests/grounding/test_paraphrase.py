@@ -598,20 +598,12 @@ KNOWN_MISSES = frozenset(
 KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
-        "Hand that over to Person A when you're ready.",
-        "Plate to Lena. The one she likes. You know the one I mean.",
-        "One of them gets the chips, no idea which, you'll have to ask.",
         "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
         # blind22 (tuned on in session 24)
-        'Person B spoke of the cup and the apple. Please, give it to her now.',
-        'Priya came by looking for her pen. Could you take it back to her?',
-        'The student by the radiator wants the scissors, can you take them over?',
-        'Put one of the boxes on the belt, the one Mia put a red sticker on.',
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)
         # blind31 (tuned on in session 33)
-        'The globe to the student, not to the teacher.',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -7,6 +7,8 @@ a refusal naming the readings. Each rule with the near forms it must leave as th
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from tests.grounding.helpers import (
@@ -362,4 +364,58 @@ def test_nothing_for_today_still_refuses_what_it_rules_out() -> None:
     ],
 )
 def test_quick_as_you_like_and_in_five(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- refusals that name their readings (offline.py _more_readings33s) ----------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "readings"),
+    [
+        # each was refused without its readings (blind21, blind22, blind31)
+        ("Hand that over to Alice when you're ready.", CELL, "'it' could mean cup or bottle"),
+        (
+            "Bob spoke of the cup and the apple. Please, give it to her now.",
+            CELL,
+            "'it' could mean cup or apple",
+        ),
+        (
+            "Priya came by looking for her pen. Could you take it back to her?",
+            OFFICE,
+            "'pen' could mean pen_black or pen_blue or pen_red",
+        ),
+        ("Mug to Carol. The one she likes. You know the one I mean.", CELL, "mug_blue or mug_red"),
+        (
+            "Put one of the mugs on the shelf, the one Bob put a sticker on.",
+            CELL,
+            "mug_blue or mug_red",
+        ),
+        (
+            "One of them gets the crisps, no idea which, you'll have to ask.",
+            CELL,
+            "'one of them' could mean Person A (Alice) or Person B (Bob) or Person C (Carol)",
+        ),
+    ],
+)
+def test_refusals_name_their_readings(text: str, scene: object, readings: str) -> None:
+    assert_refused(text, scene, match=re.escape(readings))  # type: ignore[arg-type]
+
+
+def test_a_shared_role_is_named_with_its_people() -> None:
+    assert_refused(
+        "The patient by the window wants the jug, can you take it over?",
+        WARD,
+        match=re.escape("'patient' could mean Person B (Mr Lee, patient) or Person C"),
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # readings are only added to refusals: what reads stays read
+        ("Hand the cup over to Alice when you're ready.", "cup>A"),
+    ],
+)
+def test_readings_never_make_a_reading(text: str, want: str) -> None:
     assert_reads(text, want, CELL)

@@ -102,7 +102,18 @@ def parse_instruction(
             _choices_kept(text, node, lexicon)
         return node
     except GroundingError as refused:
-        more = _more_readings29(text, refused, lexicon) if len(inside) == 1 else ""
+        more = (
+            "; ".join(
+                m
+                for m in (
+                    _more_readings29(text, refused, lexicon),
+                    _more_readings33s(text, refused, lexicon),
+                )
+                if m
+            )
+            if len(inside) == 1
+            else ""
+        )
         if more:
             raise GroundingError(f"{refused}; {more}") from None
         unclear = lexicon.unclear_typos(text)
@@ -247,6 +258,70 @@ def _more_readings29(text: str, refused: GroundingError, lexicon: Lexicon) -> st
             if people:
                 out.append(f"'one of them' could mean {' or '.join(people)}")
     return "; ".join(out)
+
+
+# 'one of the boxes, the one Mia put a red sticker on': a choice narrowed by what the scene does
+# not know, said with 'one of the' (session 33)
+_ONE_OF_THE33S = re.compile(
+    r"\bone of the ([a-z]+)\b[^,.;!?]*, the one (?!of\b|for\b|on\b|in\b|to\b)\w", re.I
+)
+# 'One of them gets the chips': 'them' people, by the verb after it
+_ONE_OF_THEM_GETS33S = re.compile(
+    r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b", re.I
+)
+
+
+def _more_readings33s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
+    """Session 33 (12s): more of what a refusal must say so that one rephrasing can settle it
+    (blind21/22's refusals without their readings; they never make a reading): a pronoun that
+    refers to nothing before it could be any object of the scene ("Hand that over to Person A
+    when you're ready."); with a he / she refused, an 'it' after a list ("Person B spoke of the
+    cup and the apple. Please, give it to her now.") and an object said with 'her / his / their'
+    ("… looking for her pen. Could you take it back to her?"); a role several people share
+    ('The student by the radiator …'), an object of several said bare to open a sentence ('Plate
+    to Lena. The one she likes. …'), 'one of the boxes, the one …', and 'one of them gets …' with
+    no people named before it (each person of the scene). '' when there is nothing to add."""
+    said = str(refused)
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    out: list[str] = []
+
+    def add(word: str, ids: list[str]) -> None:
+        if len(ids) > 1 and not all(i in said for i in ids):
+            out.append(f"{word!r} could mean {' or '.join(ids)}")
+
+    nothing = re.match(r"^'(\w+)' in .* refers to nothing before it", said)
+    if nothing is not None and not _readings(refused):
+        add(nothing.group(1), [o.id for o in lexicon.scene.objects])
+    if "is not resolved" in said:
+        it = _unclear_it(text, lexicon)
+        if it and it not in said:
+            out.append(it)
+    for k, x in enumerate(items):
+        if x.kind != "ent" or len({r.id for r in x.refs}) < 2 or any(r.plural for r in x.refs):
+            continue
+        before = items[k - 1] if k > 0 else None
+        opens = before is None or (before.kind == "punct" and before.lemma in _SENTENCE_END)
+        owned = before is not None and before.text.lower() in ("her", "his", "their")
+        kinds = {r.kind for r in x.refs}
+        if kinds == {"object"} and (opens or owned):
+            add(x.text, sorted({r.id for r in x.refs}))
+        elif kinds == {"human"} and before is not None and before.text.lower() == "the":
+            add(x.text, [person_name(r.id, lexicon) for r in x.refs])
+    m = _ONE_OF_THE33S.search(text)
+    if m is not None:
+        add(
+            m.group(1),
+            sorted({r.id for y in lex(m.group(1), lexicon) if y.kind == "ent" for r in y.refs}),
+        )
+    one = _ONE_OF_THEM_GETS33S.search(text)
+    if one is not None and not _people_listed29(
+        items, lexicon, len(lex(text[: one.start()], lexicon))
+    ):
+        add("one of them", [person_name(h.id, lexicon) for h in lexicon.scene.humans])
+    return "; ".join(dict.fromkeys(out))
 
 
 def _people_listed29(items: list[Item], lexicon: Lexicon, stop: int) -> list[str]:
