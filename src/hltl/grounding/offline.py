@@ -964,16 +964,16 @@ def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
     for c, it in enumerate(items):
         if not (_is(it, "correct") or (_is(it, "not") and it.text.lower() == "no")):
             continue
-        before = [
-            x
-            for x in range(c)
-            if _objects_only32s(items[x])
+        x = max((x for x in range(c) if items[x].kind == "ent"), default=0)
+        if not (
+            x > 0
+            and _objects_only32s(items[x])
             and len(items[x].refs) > 1
-            and x > 0
             and (_is(items[x - 1], "q:some") or items[x - 1].text.lower() in ("a", "an"))
-        ]
-        if not before:
-            continue
+            and all(y.kind == "punct" for y in items[x + 1 : c])
+        ):
+            continue  # "Alice gets a mug and Carol, sorry, Bob …": the repair is of a person
+        before = [x]
         for n in range(c + 1, len(items) - 1):
             if items[n].text.lower() == "the" and _is(items[n + 1], "other"):
                 said = items[before[-1]]
@@ -1000,6 +1000,10 @@ def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
         last = next((x for x in range(m - 1, -1, -1) if _objects_only32s(items[x])), None)
         if last is None:
             continue
+        if any(
+            _is(y, "correct") or (_is(y, "not") and y.text.lower() == "no") for y in items[last:m]
+        ):
+            continue  # "… on the shelf, no, give them to Bob": a correction's (session 32)
         x = last
         while x > 0 and (
             _objects_only32s(items[x - 1]) or _is(items[x - 1], "det", "or", "and", ",", "either")
