@@ -281,6 +281,11 @@ def test_a_greeting_sentence_with_a_want_keeps_it() -> None:
         "Morning, it's for Bob. Hand Alice the crisps.",
         "Hello, don't give Bob anything. Hand Alice the crisps.",
         "Hello, I'm after the apple. Hand Alice the crisps.",
+        # a person named in a terse part or a want: it may allot or ask
+        "Morning, for Alice. Give Bob the cup.",
+        "Morning, Alice next. Give Bob the cup.",
+        "Hello, Alice is after a drink. Give Bob the cup.",
+        "Hi, to Alice. Give Bob the cup.",
     ],
 )
 def test_a_greeting_sentence_that_says_something_is_not_dropped(text: str) -> None:

@@ -18818,9 +18818,10 @@ def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
     suit. If you'd be so good, pass Priya the red pen.") asks for nothing: it goes, and the
     sentences after it are read. Only when it names no object or surface of the scene, holds
     none of _GREETING_HELD33S (a hand-over, a want, a word pointing at a thing, a choice, a
-    time, a negation, a modal that could ask), and nothing after it says he / she / him /
-    her / they / them (who they are could hang on a name in it, or on someone it names whom
-    the scene does not hold)."""
+    time, a negation, a modal that could ask), names a person only in a clause of its own
+    (three words or more the scene does not name, no 'after'), and nothing after it says he /
+    she / him / her / they / them (who they are could hang on a name in it, or on someone it
+    names whom the scene does not hold)."""
     m = _GREETING33S.match(text)
     if m is None:
         return text
@@ -18833,6 +18834,14 @@ def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(m["said"], lexicon, "object") or _ids(m["said"], lexicon, "surface"):
         return text
+    if _ids(m["said"], lexicon, "human"):
+        # a person named: only in a clause of the speaker's own ("I've come to measure the
+        # manager for her suit"), not a want ('Alice is after a drink') or a terse part that may
+        # allot ('for Alice', "Alice's turn", 'Alice next')
+        scene = _scene_words29(lexicon)
+        own = [w for w in words[1:] if len(w) > 3 and w.split("'")[0] not in scene]
+        if "after" in words or len(own) < 3:
+            return text
     if re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", m["rest"], _F):
         return text  # "Hello, I'm Carol's plumber. Hand her …": 'her' may hang on the greeting
     return m["rest"]
