@@ -296,8 +296,6 @@ KNOWN_MISSES = frozenset(
         "just, um, set the thermometer on the bedside table, that'd be grand.",
         "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
         "you are very kind.",
-        "Alright mate, bus driver here, I've got four minutes till my next run. Be a legend and "
-        "chuck the packing tape on the belt, cheers.",
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
@@ -422,14 +420,12 @@ KNOWN_MISSES = frozenset(
         'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
         'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
-        "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
-        'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "

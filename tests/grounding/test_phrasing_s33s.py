@@ -424,3 +424,45 @@ def test_a_shared_role_is_named_with_its_people() -> None:
 )
 def test_readings_never_make_a_reading(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# -- a list asked as a question; a cleft naming the corrected person; 'alright' ------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # each was refused (blind22, blind20)
+        (
+            "Could the cup and the apple both go on the shelf, please?",
+            "cup@shelf & apple@shelf",
+            CELL,
+        ),
+        ("Can the cup and the apple go on the shelf?", "cup@shelf & apple@shelf", CELL),
+        ("Crisps to Alice, no, Bob's the one doing the dishes.", "chips>B", CELL),
+        (
+            "Alright mate, van driver here, I've got five minutes till my next run. Be a legend "
+            "and chuck the packing tape on the belt, cheers.",
+            "tape@conveyor",
+            DEPOT,
+        ),
+    ],
+)
+def test_batch2_kinds_read(text: str, want: str, scene: object) -> None:
+    assert_reads(text, want, scene)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a person in the list, or a word the scene does not hold: not the statement
+        "Could Bob and the cup go on the shelf?",
+        # the cleft names the scene or says something of the request: left (refused)
+        "Crisps to Alice, no, Bob's the one sitting by the apple.",
+        "Crisps to Alice, no, Bob's the one who is allergic.",
+        # 'till' not the speaker's own time
+        "Alright, wait till Carol's here. Hand Bob the cup.",
+    ],
+)
+def test_batch2_near_forms_stay_refused(text: str) -> None:
+    assert_refused(text, CELL)

@@ -19427,7 +19427,8 @@ _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _op
 # after a small favour.", "Hello, paramedic, just dropping off some paperwork for the manager.")
 _GREETING33S = re.compile(
     r"^(?:(?:ah|oh|well|right)\s*,?\s+)?(?P<said>(?:hello|hi|hiya|hey|hullo|morning|afternoon|"
-    r"evening|good (?:morning|afternoon|evening|day))\b[^.!?]*[.!]+)\s+(?P<rest>\S.*)$",
+    r"evening|good (?:morning|afternoon|evening|day)|alright|all right)\b[^.!?]*[.!]+)\s+"
+    r"(?P<rest>\S.*)$",
     _F,
 )
 # words that would make the greeting's sentence ask, point at a thing, or say when
@@ -19461,6 +19462,8 @@ def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
     said = re.sub(
         r"^([a-z ]+,\s*)it(?:'s| is) (?=(?:the|a|an|your|just) )", r"\1", m["said"], flags=_F
     )
+    # "… I've got four minutes till my next run.": the speaker's own time
+    said = re.sub(r"\b(?:till|until) (?:my|our) ", " ", said, flags=_F)
     words = re.findall(r"[a-z]+(?:'[a-z]+)?", said.lower())
     if any(w in _GREETING_HELD33S or w.split("'")[0] in _GREETING_HELD33S for w in words):
         return text
@@ -19479,7 +19482,53 @@ def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
     return m["rest"]
 
 
-_STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (_greeting_said33s,)
+# Session 33 (12s): a request asked as a question whose subject is a list of objects ("Could the
+# bowl and the spoon both go on the tray, please?"): the grammar reads the question with one
+# object only, and the statement ('The bowl and the spoon could go …') with the list
+_MODAL_FIRST33S = re.compile(
+    r"^(?P<mod>could|can|would|will|might)\s+(?P<subj>(?:the )?[a-z][a-z ]*? and (?:the )?"
+    r"[a-z][a-z ]*?)\s+(?P<rest>(?:both\s+)?(?:go|be put|be placed|be moved)\b.*)$",
+    _F,
+)
+
+
+def _modal_first33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the question above said as the statement, when its subject names
+    objects of the scene only (each word of it)."""
+    m = _MODAL_FIRST33S.match(text.strip())
+    if m is None or not _things31(m["subj"], lexicon):
+        return text
+    subj = m["subj"][:1].upper() + m["subj"][1:]
+    return f"{subj} {m['mod'].lower()} {m['rest']}"
+
+
+# Session 33 (12s): a correction that names its person in a cleft ("Gloves to Mia, no, Tom's the
+# one loading my trailer."): the person is what the correction says
+_CLEFT_CORRECTED33S = re.compile(
+    r"(?P<cue>,\s*(?:no|sorry|i mean|actually|wait|no wait)(?:,\s*|\s+))(?P<who>[A-Z][a-z]+(?: "
+    r"[A-Z][a-z]+)?)(?:'s| is) the one(?: (?:who|that))? (?P<rest>[a-z][^,.;!?]*?)(?P<end>[.!]*)"
+    r"\s*$"
+)
+
+
+def _cleft_corrected33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the cleft above closing the instruction is its person alone, when that
+    is one person of the scene and what the cleft says of them names nothing of the scene and
+    holds none of _TRAILING_HELD32S ('Tom's the one who wants the tape' is left)."""
+    m = _CLEFT_CORRECTED33S.search(text)
+    if m is None or not _only_person(m["who"], lexicon) or _ids(m["rest"], lexicon):
+        return text
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", m["rest"].lower())
+    if any(w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S for w in words):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['who']}{m['end'] or '.'}"
+
+
+_STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _greeting_said33s,
+    _modal_first33s,
+    _cleft_corrected33s,
+)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
