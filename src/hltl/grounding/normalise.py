@@ -13739,8 +13739,9 @@ _WHO_CHOOSES28R = re.compile(
     r"\s*,\s*(?P<w>whoever|whichever)(?:'s| is) (?:nearer|closer|nearest|closest|free|handier|"
     r"handiest|quicker|quickest|easier|easiest|easiest to reach|nearer to you|closer to you|"
     r"nearest to you|closest to you|to hand|"
-    # session 33 (12s): "whichever's closer to hand", "… closer to your hand" (blind21, blind22)
-    r"(?:nearer|closer|nearest|closest) to (?:your )?hand)(?=\s*(?:[,.!?]|$))",
+    # session 33 (12s): "… closer to your hand" before more words (blind22; "whichever's closer
+    # to hand" closing the text is 12r's _FREE_CHOICE33R)
+    r"(?:nearer|closer|nearest|closest) to your hand)(?=\s*(?:[,.!?]|$))",
     _F,
 )
 
@@ -15519,11 +15520,10 @@ def _each_of_n29r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m.group('one')} {m.group('x')} for each {role}{text[m.end() :]}"
 
 
-# "None of it to Person A; …", "Nothing for Person A, …" (session 33, 12s: "Nothing for Person
-# A today; …", blind21)
+# "None of it to Person A; …", "Nothing for Person A, …"
 _NONE_FOR29R = re.compile(
     r"^(?:none of (?:it|them|that|those)|nothing|not a thing) (?:goes |is )?(?:to|for) "
-    r"(?P<p>[A-Za-z][\w ]*?)(?: (?:today|this time))?\s*[;,:.]\s*(?P<rest>\S.*)$",
+    r"(?P<p>[A-Za-z][\w ]*?)\s*[;,:.]\s*(?P<rest>\S.*)$",
     _F,
 )
 # "Don't leave the bottle where it is; hand it to Person A."
