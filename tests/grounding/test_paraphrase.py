@@ -462,8 +462,6 @@ KNOWN_MISSES = frozenset(
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
-        "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
-        "Person A.",
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",

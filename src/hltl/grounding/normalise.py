@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.repairs import _first_name, _last_name
 from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene
 
@@ -5995,6 +5996,29 @@ def _surface_only(words: str, lexicon: Lexicon) -> bool:
     return _only(words, lexicon, "surface")
 
 
+_REPAIR_WORD33L = re.compile(
+    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say|um+|uh+|er+|erm+)\b)+"
+    r"\s*,?\s*",
+    _F,
+)
+
+
+def _taken_back33l(text: str, lexicon: Lexicon) -> set[str]:
+    """Session 33 (lead): the people ``text`` names and takes back at once by a repair ('for
+    Bob, I mean Alice': Bob), so that 'the other one' after it is not read as the one person
+    neither said (12c's repairs fuzz: "The cup is for Bob, I mean Alice, and the apple goes to
+    the other one." read apple>C, where Bob is as likely)."""
+    taken: set[str] = set()
+    for m in _REPAIR_WORD33L.finditer(text):
+        before = _last_name(text[: m.start()], lexicon)
+        after = _first_name(text[m.end() :], lexicon)
+        if before is None or after is None:
+            continue
+        if all(r.kind == "human" for r in before[0].refs + after[0].refs):
+            taken |= {r.id for r in before[0].refs} - {r.id for r in after[0].refs}
+    return taken
+
+
 def _pronouns18(text: str, lexicon: Lexicon) -> str:
     """Pronouns and ellipsis said of one person: 'P wants X. Give it to them.' ('them' for the one
     person the text names, who asked), '…, sort that out (for them)' after a want, 'Then the Y,
@@ -6020,8 +6044,10 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",\s*same (?:person|one|guy|lady)\s*([.!]?)$", r" to the same person\1", out)
     other = re.search(r"\b(to|for) the other (?:one|person)\b", out, _F)
     if other and people:
-        # "… and the chips are for the other one": the one person not named
-        left = [h for h in lexicon.scene.humans if h.id not in people]
+        # "… and the chips are for the other one": the one person not named (one taken back
+        # by a repair is not named: "for Bob, I mean Alice, …" names Alice alone)
+        kept = [h for h in people if h not in _taken_back33l(out[: other.start()], lexicon)]
+        left = [h for h in lexicon.scene.humans if h.id not in kept]
         if len(left) == 1:
             out = _sub(
                 r"\b(to|for) the other (?:one|person)\b", rf"\1 {_name(left[0].id, lexicon)}", out
@@ -10469,7 +10495,7 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
 
 # The speaker's own words said as a comma part or sentence of their own (a closed list): what the
 # request is not ('nothing fancy today'), giving in ('go on then'), that it is all there is
-# ('Simple as that'), handing it over ('all yours'), thanks ahead ('Cheers in advance'), what the
+# ('Simple as that'), thanks ahead ('Cheers in advance'), what the
 # speaker has just remembered ('oh yes'), and that neither task is pressing ('no rush on either of
 # them'). Each names nothing and changes nothing asked.
 _PARTS33 = re.compile(
@@ -10478,8 +10504,6 @@ _PARTS33 = re.compile(
     r"nothing (?:fancy|special)(?: today| this time)?|"
     r"(?:ah|oh|well),? go on(?:,)? then|go on(?:,)? then|"
     r"(?:it's |that's |it is |that is )?(?:as )?(?:simple|easy) as that|"
-    r"(?:there you go|there you are),? (?:it's |that's )?all (?:yours|theirs)|"
-    r"(?:it's |that's )?all yours|"
     r"(?:cheers|ta|thank you|thanks|many thanks) in advance|"
     r"(?:and,? )?(?:oh|ah),? yes|"
     r"(?:there's )?no (?:rush|hurry)(?: at all)? (?:on|with|for) (?:either|any|both|each|all|"
@@ -10492,7 +10516,7 @@ _PARTS33 = re.compile(
 def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a comma part or sentence that is wholly one of the closed list above taken
     off, when it names nothing and what is left names a person or surface (whom or where the
-    request is for: 'all yours' said with no one named is the hearer's)."""
+    request is for)."""
     if not _PARTS33.search(text):
         return text
     said = _stretches_dropped(
@@ -10504,6 +10528,26 @@ def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
         return text
     # "And, the apple": the 'and' kept before what followed the part taken off
     return re.sub(r"\b(And|and),\s+(?=the\b)", r"\1 ", said)
+
+
+# "The bottle, Person A, there you go, all yours.": handing it over, said to the person just
+# addressed
+_ALL_YOURS33 = re.compile(
+    r",\s*(?P<p>[A-Z][A-Za-z ]*?),\s*(?:(?:there|here) you (?:go|are),\s*)?(?:it's |that's )?"
+    r"all yours(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _all_yours33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: 'all yours' (and 'there you go' before it) taken off when the comma part
+    before it is one person of the scene alone, the one addressed ("The cup to Bob, the apple,
+    all yours": whose? left)."""
+    if "all yours" not in text:
+        return text
+    m = _ALL_YOURS33.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start()]}, {m['p']}{m['end'].strip()}"
 
 
 # wants said by an idiom: a closed list (docs/grounding.md, "Session 33 (engineer 12)"), each
@@ -11052,6 +11096,28 @@ def _keep_going33(text: str, lexicon: Lexicon) -> str:
     return _KEEP_GOING33.sub(dropped, text)
 
 
+# "…, and the chips, well, those are Person A's, so give them to Person A": whose the things are,
+# then the handover to that same person
+_THOSE_ARE33 = re.compile(
+    r"\b(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?),\s*(?:well,\s*)?(?:those|they|that|"
+    r"it)(?:'s| are| is) (?P<p>[A-Z][A-Za-z ]*?)'s,\s*so (?:give|hand|pass|take) (?:them|it) "
+    r"(?:over )?to (?P<q>[A-Z][A-Za-z ]*?)(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _those_are33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above is 'X to P', when X is objects only and the owner and
+    the one handed them are the same one person (the handover says it; 'them' is X)."""
+    if "'s, so " not in text:
+        return text
+    m = _THOSE_ARE33.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["p"], lexicon) != _ids(m["q"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['x']} to {m['q']}{m['end']}"
+
+
 def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a courtesy or address of the session-24 list opening the instruction before
     'please' without a comma ("chale pls the chips to person a") taken off, as with one."""
@@ -11063,6 +11129,7 @@ def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
 
 _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts33,
+    _all_yours33,
     _idioms33,
     _would_help33,
     _more_than33,
@@ -11085,6 +11152,7 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _start_with33,
     _keep_going33,
     _courtesy_please33,
+    _those_are33,
 )
 
 
@@ -16289,6 +16357,14 @@ def _i_mean_after30r(text: str, lexicon: Lexicon) -> str:
 _SORRY_AFTER30R = re.compile(r",\s*sorry\s*[,;:-]\s*(?P<why>[a-z][a-z' -]*?)(?P<end>\s*[.!]?)$", _F)
 
 
+# words that change what was said ('swap the people', 'the other way round'): never an apology
+_CHANGES33L = re.compile(
+    r"\b(?:swap|swop|switch|reverse|change|changed|other way|wrong way|round|around|instead|"
+    r"mixed|mix|muddled)\b",
+    _F,
+)
+
+
 def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): ', sorry, <words>' closing a text whose words name nothing of the scene
     and hold no word that counts, chooses, negates or points back is an apology (its reason),
@@ -16297,6 +16373,8 @@ def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     m = _SORRY_AFTER30R.search(text)
     if m is None or not _inert28(m.group("why"), lexicon) or _TIME30R.search(m.group("why")):
         return text
+    if _CHANGES33L.search(m.group("why")):
+        return text  # ", sorry, swap the people": a change of its own (session 33, lead)
     before = text[: m.start()]
     if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
         return text
