@@ -13191,14 +13191,11 @@ def _each_one28r(text: str, lexicon: Lexicon) -> str:
         return text
     rest = text[m.end() :]
     rest = rest[:1].upper() + rest[1:]
-    node = _reading(rest, lexicon)
-    if node is None or not isinstance(node, Group) or node.op != "and":
+    said = _handovers33t(rest, lexicon)
+    if said is None:
         return text
-    said = list(tasks(node))
     people = [t.target for t in said]
-    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people):
-        return text
-    if set(people) != {h.id for h in lexicon.scene.humans}:
+    if len(set(people)) != len(people) or set(people) != {h.id for h in lexicon.scene.humans}:
         return text
     return rest
 
@@ -18458,6 +18455,213 @@ _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 33 (engineer 12t): blind17, blind23, blind18, causes17 and blind15's kinds ------------
+
+_N33T = {"two": 2, "three": 3, "four": 4}
+# how much each person gets, said before the list that says what: 'one thing', 'an item',
+# 'something (to drink from)', 'two things'
+_AMOUNT33T = (
+    r"(?:one thing|one item|a thing|an item|something|(?P<n>two|three) (?:things|items))"
+    r"(?: to (?:drink|eat|read|use)(?: from| with| out of)?)?"
+)
+# who they are: every person of the scene ('each of them'), or so many ('both', 'the two of them')
+_WHO33T = (
+    r"(?:each of (?:them|you)|each of the (?P<k1>two|three|four)(?: of them)?|both (?:of them|of "
+    r"you|people)|the (?P<k2>two|three|four) of them|all (?P<k3>two|three|four) of them)"
+)
+_EACH_HEADERS33T = (
+    # "Both people get an item each: …", "Each of them gets one thing: …"
+    rf"^{_WHO33T} (?:gets?|can have|receives?|should get|will get) {_AMOUNT33T}"
+    r"(?: each| apiece)?\s*[:,]\s*",
+    # "Something for both of them: …", "One thing apiece for the two of them: …"
+    rf"^{_AMOUNT33T}(?: each| apiece)? for {_WHO33T}\s*[:,]\s*",
+    # "Two things each: …"
+    rf"^{_AMOUNT33T} (?:each|apiece)\s*:\s*",
+)
+
+
+def _each_header33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a header saying how much each person gets ('Both people get an item
+    each:', 'Each of them gets one thing:', 'Something for both of them:', 'One thing apiece for
+    the two of them:', 'Two things each:', 'Each of them gets something to drink from,'), then
+    the list of hand-overs that says what: the list is read alone when it is a count check the
+    scene passes: it hands over only, to every person of the scene (as many as 'both' / 'the two'
+    say), and to each exactly as many objects as the header says. Any other list is left (and
+    refused)."""
+    for header in _EACH_HEADERS33T:
+        m = _rx(header).match(text)
+        if m is not None:
+            break
+    else:
+        return text
+    rest = text[m.end() :]
+    rest = rest[:1].upper() + rest[1:]
+
+    def whose(w: re.Match[str]) -> str:
+        # after the header, "the bottle's Person A's" says who gets it
+        return f"{w.group(1)} to {w.group(2)}" if _only_person(w.group(2), lexicon) else w.group(0)
+
+    rest = _sub(r"\b(the [a-z ]+?)(?:'s| is| are) ([a-z][\w ]*?)'s\b", whose, rest)
+    said = _handovers33t(rest, lexicon)
+    if said is None:
+        return text
+    humans = {h.id for h in lexicon.scene.humans}
+    groups = m.groupdict()
+    count = groups.get("k1") or groups.get("k2") or groups.get("k3")
+    if "both" in m.group(0).lower():
+        count = "two"
+    if len(humans) < 2 or (count is not None and _N33T[count.lower()] != len(humans)):
+        return text
+    amount = _N33T[m.group("n").lower()] if m.group("n") else 1
+    got = [t.target for t in said]
+    if set(got) != humans or any(got.count(h) != amount for h in humans):
+        return text
+    return rest
+
+
+def _handovers33t(text: str, lexicon: Lexicon) -> list[Task] | None:
+    """The hand-overs ``text`` reads as, all of them asked ('and'), or None where it is refused
+    or reads as anything else (a choice, an order, a placement)."""
+    node = _reading(text, lexicon)
+    if node is None or not isinstance(node, Group) or node.op != "and":
+        return None
+    said = list(tasks(node))
+    return said if all(t.kind == "deliver" for t in said) else None
+
+
+# what a kind word covers, by the objects' categories (a closed list: 'the drinks' names no
+# object of the scene by itself)
+_KINDS33T = {
+    "drinks": frozenset({"bottle", "cup", "mug", "jug", "beaker", "glass", "flask"}),
+    "snacks": frozenset({"chips", "crisps", "apple", "banana", "biscuit"}),
+}
+
+
+def _kind_choice33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'One of the drinks for Person A: the bottle or the cup' is 'give Person
+    A the bottle or the cup' when each object listed is of a category the kind word covers
+    (``_KINDS33T``; "…: the bottle or the chips" is left, and refused), as 'One of the pens for
+    Priya: the red or the blue' is (``_choices17``)."""
+    m = _rx(
+        r"^one of the (drinks|snacks) for ([a-z][\w ]*?)\s*:\s*(the [a-z ]+?) or (the [a-z ]+?)"
+        r"\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _only_person(m.group(2), lexicon):
+        return text
+    kinds = _KINDS33T[m.group(1).lower()]
+    for said in (m.group(3), m.group(4)):
+        ids = _ids(said, lexicon, "object")
+        if len(ids) != 1 or not _only(said, lexicon, "object"):
+            return text
+        if lexicon.scene.object(next(iter(ids))).category not in kinds:
+            return text
+    return f"give {m.group(2)} {m.group(3)} or {m.group(4)}{m.group(5)}"
+
+
+def _each_any33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Give each of them a pen, Priya and Sam, any colour' is 'Priya and Sam
+    each get a pen': 'them' is the two people said after it, and 'any colour' (or size, or one)
+    says again that the pen is not chosen. Only 'a/an <word>' is so said again; 'the red one'
+    after the names is left."""
+    m = _rx(
+        r"^(?:give )?each of (?:them|you|the two) (?:gets? |can have |should get )?(an? [a-z]+),"
+        r"\s*([^,]+?) and ([^,]+?),\s*any (?:colou?r|size|one|kind)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not (_only_person(m.group(2), lexicon) and _only_person(m.group(3), lexicon)):
+        return text
+    return f"{m.group(2)} and {m.group(3)} each get {m.group(1)}{m.group(4)}"
+
+
+def _other_two33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'No black pen for Priya, one of the other two will do' is 'Priya gets
+    one of the pens except the black pen' when the scene has as many other objects of the black
+    pen's category as the count says ('the other two'; 'either of the others' when two)."""
+    m = _rx(
+        r"^no (the )?([a-z][a-z ]*?) for ([a-z][\w ]*?),\s*(?:just )?(?:one of the other "
+        r"(two|three|four)|either of the other (two)|either of the others) (?:will do|is fine|"
+        r"'ll do|would do)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _only_person(m.group(3), lexicon):
+        return text
+    said = f"the {m.group(2)}"
+    if not _only(said, lexicon, "object"):
+        return text
+    obj = lexicon.scene.object(next(iter(_ids(said, lexicon, "object"))))
+    others = [o for o in lexicon.scene.objects if o.category == obj.category and o.id != obj.id]
+    count = _N33T[(m.group(4) or m.group(5) or "two").lower()]
+    if len(others) != count:
+        return text
+    return f"{m.group(3)} gets one of the {_plural33t(obj.category)} except {said}{m.group(6)}"
+
+
+def _plural33t(word: str) -> str:
+    return f"{word}es" if word.endswith(("x", "ch", "sh", "s")) else f"{word}s"
+
+
+def _leave_where33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): after a request for everything ('everything', 'the lot', 'all of it'),
+    '…, (just) leave the X where they are' is '…, except the X' ("Bob gets the lot, just leave
+    the two mugs where they are"); 'clear everything into / onto S' (S a surface of the scene)
+    is 'put everything into / onto S'. A request for named objects is left: there 'leave' may
+    correct it."""
+    m = _rx(
+        r"^(.*\b(?:everything|the lot|all of it)\b.*?),\s*(?:and |but )?(?:just )?leave (the "
+        r"[a-z ]+?) (?:where (?:it is|they are)|alone|be)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _ids(m.group(2), lexicon, "object"):
+        return text
+    if not _names(m.group(2), lexicon) or not all(
+        r.kind == "object" for it in _names(m.group(2), lexicon) for r in it.refs
+    ):
+        return text
+    head = m.group(1)
+    c = _rx(r"^clear (everything|the lot|all of it) (into|onto|in|on) (the [a-z ]+?)$").match(head)
+    if c is not None:
+        if not _only(c.group(3), lexicon, "surface"):
+            return text
+        head = f"put {c.group(1)} {c.group(2)} {c.group(3)}"
+    return f"{head}, except {m.group(2)}{m.group(3)}"
+
+
+def _load_up33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'load P up with X' (P a person) is 'give P X'; 'pack / load S with X' (S
+    a surface) is 'put X on S'."""
+
+    def person(m: re.Match[str]) -> str:
+        return f"give {m.group(1)} " if _only_person(m.group(1), lexicon) else m.group(0)
+
+    text = _sub(r"\bload ([a-z][\w ]*?) up with ", person, text)
+
+    def surface(m: re.Match[str]) -> str:
+        if not _only(m.group(2), lexicon, "surface"):
+            return m.group(0)
+        return f"put {m.group(3)} on {m.group(2)}"
+
+    return _sub(
+        r"\b(pack|load|fill) (the [a-z ]+?) with (the lot|everything|the [a-z ]+?)(?=,|[.!]?$)",
+        surface,
+        text,
+    )
+
+
+def _wont_you33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'won't you' before a verb of a request ("Give Ava the teddy, won't you
+    give Lily the bib too?") asks it politely: the request. Said by a subject ('you won't give')
+    it negates, and is left."""
+    return _sub(rf"(^|,\s*|\band\s+)won't you (?={_DO_VERBS})", r"\1", text)
+
+
+_STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _each_header33t,
+    _kind_choice33t,
+    _each_any33t,
+    _other_two33t,
+    _leave_where33t,
+    _load_up33t,
+    _wont_you33t,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -18770,6 +18974,8 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
+    *_STEPS33T,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
     # session 32 (12r): blind30's choices, counts, negation, exclusions and corrections
