@@ -9,7 +9,9 @@ import pytest
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -28,6 +30,7 @@ F42 = _scene("4-2")  # bottle, chips, cup, apple; A, B
 DUO = _scene("2-2")  # bottle, chips; A, B
 T21 = _scene("2-1")  # bottle, chips; A, B
 L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B
+SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
 FIG1 = _scene("fig1")  # bottle, chips (crisps); Alice, Bob; shelf
 
 
@@ -236,4 +239,87 @@ def test_load_up(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_wont_you(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- the recipient said first: 'Unto Person A the chips'; 'whichever thou wilt of X or Y' -------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Unto Person A the chips, nay, I misspeak, the bottle.", "bottle>A", F41),
+        ("To Person A the chips.", "chips>A", F41),
+        ("Give unto Person B whichever thou wilt of the cup or the apple.", "cup>B | apple>B", F41),
+        # 'unto the same' is 'to the same person' ('unto' is read first)
+        (
+            "Give Person B the bottle, and thereafter the chips unto the same.",
+            "bottle>B ; chips>B",
+            F41,
+        ),
+        # a surface said first, a choice with no second object: left
+        ("Unto the shelf the chips.", None, F41),
+        ("Give unto Person B whichever thou wilt of the cup.", None, F41),
+    ],
+)
+def test_fronted_to(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- an interjection or a word of address beside a correction; 'I mean' after the name ---------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The hammer for Jess, eish, sorry, the drill for Jess.", "drill>B", WORKSHOP),
+        (
+            "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
+            "glue@desk",
+            CLASSROOM,
+        ),
+        ("Chips to Person B, oops, Person A, I mean, sorry, love.", "chips>A", DUO),
+        ("Forceps, sorry, I mean the spoon, to Omar.", "spoon>B", LAB),
+        # no correction: the list is a list; a person after the correction is no address; a
+        # first word the scene may name ('nothing')
+        ("The hammer for Jess, eish, the drill for Jess.", "hammer>B & drill>B", WORKSHOP),
+        ("Glue stick up on the shelf, oh no wait, on the desk, Noah.", None, CLASSROOM),
+        ("Nothing, sorry, I mean the spoon, to Omar.", None, LAB),
+        ("Forceps, sorry, I mean the spoon.", None, LAB),
+    ],
+)
+def test_exclaimed_fix(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- after a placement, whom it is for; what an object is for, said with an -ing verb -----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Would you put the black pen in the box for Priya?", "pen_black@box", OFFICE),
+        (
+            "The two blocks in the high chair for Lily to play with.",
+            "block_red@highchair & block_green@highchair",
+            NURSERY,
+        ),
+        (
+            "Person A needs the cup for rinsing the core samples, and Person B wants the chips.",
+            "cup>A & chips>B",
+            SQ,
+        ),
+        (
+            "Everything goes to the sink for washing, except for the spoon and the banana of "
+            "course",
+            "cup_green@sink & bowl@sink & cup_white@sink & sponge@sink",
+            LAB,
+        ),
+        # the person named again, a verb of the grammar, an object in the purpose
+        ("Put the black pen in the box for Priya, and give Priya the stapler.", None, OFFICE),
+        ("The two blocks in the high chair for Lily to give.", None, NURSERY),
+        ("Person A needs the cup for rinsing the apple, and Person B wants the chips.", None, SQ),
+    ],
+)
+def test_placed_for(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)

@@ -12174,11 +12174,11 @@ def _archaic19_words(text: str) -> str:
         (r"\bshall be (given|handed|passed|brought|placed|put|taken)\b", r"should be \1"),
         (r"\bshall (have|get|receive)\b", r"gets"),
         (r"\b(?:thereafter|thereupon)\b", "then"),
+        (r"\bunto\b", "to"),  # before 'to the same': "unto the same" is 'to the same person'
         (
             r"\bto the (?:very )?same(?: (?:player|person|one|fellow|chap|lady|gentleman|guy))?\b",
             "to the same person",
         ),
-        (r"\bunto\b", "to"),
         (r"\bprithee\b", "please"),
         (r"\bnay\b", "no"),
         (r"(?<!teddy )\bbear (?=the |it\b|them\b)", "bring "),
@@ -18651,6 +18651,179 @@ def _wont_you33t(text: str, lexicon: Lexicon) -> str:
     return _sub(rf"(^|,\s*|\band\s+)won't you (?={_DO_VERBS})", r"\1", text)
 
 
+def _fronted_to33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): the recipient said first, 'Unto Person A the chips' / 'To Person A the
+    chips' / 'Give unto Person B …' ('give Person A the chips'; P one person of the scene, the
+    objects after it), and 'whichever thou wilt / you like of the X or the Y' ('either the X or
+    the Y': the robots choose)."""
+
+    def fronted(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}give {m.group(2)} "
+
+    text = _sub(
+        r"(^|[.;:!]\s+)(?:give )?(?:un)?to ([a-z][\w ]*?) (?=(?:the|either|whichever|both|all) )",
+        fronted,
+        text,
+    )
+    return _sub(
+        r"\bwhichever (?:thou|you) (?:wilt|will|like|want|wish|please|fancy|prefer) of (the "
+        r"[a-z ]+?) or (the [a-z ]+?)(?=\s*[.!]?$)",
+        r"either \1 or \2",
+        text,
+    )
+
+
+# interjections and words of address (by kind, _INTERJECTION19 / _ADDRESS19) that may stand
+# alone between commas next to a correction; those that join, point, time or may be asked for
+# are not among them
+_EXCLAIMS33T = (_INTERJECTION19 | _ADDRESS19) - {
+    *("and", "just", "there", "please", "thanks", "thank", "you", "kindly", "quick", "slow"),
+    *("slowly", "like", "hands", "fine", "right", "well", "so", "now", "ok", "okay", "yeah"),
+    *("yep", "yup", "aye", "alright", "old", "me", "my", "our", "good", "young", "big"),
+    *("little", "people", "easy", "steady", "careful", "smart", "o"),
+}
+_FIX_CUE33T = r"(?:sorry|no|wait|oops|whoops|actually|i mean|i meant|hang on|hold on|oh no)\b"
+
+
+def _exclaimed_fix33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a correction with an interjection or a word of address beside it ("The
+    hammer for Jess, eish, sorry, the drill for Jess", "…, oh no wait, on the desk, cariad,
+    tidy."): the word, alone between commas just before the correction's cue or after what the
+    correction names at the end, is taken off (it names nothing of the scene: a scene's 'doll'
+    stays); '…, oops, Person A, I mean, sorry, love.' says 'I mean' after the name it corrects
+    to: taken off there too. The correction is then read as one without them."""
+    low = text.lower()
+    if not any(cue in low for cue in ("sorry", "no", "wait", "oops", "mean", "actually", "hang")):
+        return text
+
+    def alone(m: re.Match[str]) -> str:
+        word = m.group(2)
+        if word.lower() not in _EXCLAIMS33T or not _names_nothing(word, lexicon):
+            return m.group(0)
+        return m.group(1)
+
+    # before the cue: "…, eish, sorry, …"
+    out = _sub(rf"(,\s*)([a-z']+)\s*,\s*(?={_FIX_CUE33T})", alone, text)
+    if _rx(_FIX_CUE33T).search(out) is None:
+        return text
+
+    def at_end(m: re.Match[str]) -> str:
+        word = m.group(1)
+        if word.lower() not in _EXCLAIMS33T or not _names_nothing(word, lexicon):
+            return m.group(0)
+        return m.group(2)
+
+    # after the correction, ending the text: "…, on the desk, cariad, tidy."
+    for _ in range(3):
+        was = out
+        out = _sub(r"(?<=[a-z]),\s*([a-z']+)(\s*[.!]*)\s*$", at_end, out)
+        if out == was:
+            break
+    m = _rx(rf"^(.*\b{_FIX_CUE33T},?\s+[^,]+?),\s*i mean\b(.*)$").match(out)
+    if m is not None and m.group(2).strip(" ,.!") and not _is_closer33t(m.group(2), lexicon):
+        return out
+    return out if m is None else m.group(1) + m.group(2)
+
+
+def _is_closer33t(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` ('…, sorry, love.') are only apology, thanks and address, naming
+    nothing of the scene."""
+    said = re.findall(r"[a-z']+", words.lower())
+    return _names_nothing(words, lexicon) and all(
+        w in _EXCLAIMS33T or w in _ADDRESS or w in ("sorry", "thanks", "please") for w in said
+    )
+
+
+
+def _unknown_fixed33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Forceps, sorry, I mean the spoon, to Omar.': the first word names
+    nothing of the scene, and the speaker says at once ('sorry / no / oops, I mean') which object
+    they mean: that object ('the spoon, to Omar.'). A first word the scene names ('The cup,
+    sorry, I mean the spoon') is a correction read as before."""
+    m = _rx(
+        r"^(?:the )?([a-z]+),\s*(?:(?:sorry|no|oops|whoops),?\s+)+i (?:mean|meant),?\s+(the "
+        r"[a-z ]+?),\s*(.+)$"
+    ).match(text)
+    if m is None or not _names_nothing(m.group(1), lexicon) or _KEEP_WORDS.search(m.group(1)):
+        return text
+    if not _only_kind(m.group(2), lexicon, "object"):
+        return text
+    return f"{m.group(2)}, {m.group(3)}"
+
+
+
+# after a placement, whom it is put there for: 'in the box for Priya', 'in the high chair for
+# Lily to play with'
+_PLACED_FOR33T = (
+    r"(?P<place>\b(?:on|in|onto|into) (?:the )?[a-z]+(?: [a-z]+)?) for "
+    rf"(?P<p>{_PERSON32})(?: to (?P<v>[a-z]+)(?: (?:with|on|in|from|at))?)?(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _placed_for33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Would you put the black pen in the box for Priya?', 'The two blocks in
+    the high chair for Lily to play with.': after 'on / in S' (S one surface of the scene), 'for
+    P' (one person; 'to <verb>' no verb of the grammar) says whom the placement is for, as
+    'for Mr Lee to read' does (``_for_to_do32``): taken off when what is left reads as
+    placements only and names P nowhere else (the placement is asked; P gets nothing)."""
+    if " for " not in text:
+        return text
+    m = _rx(_PLACED_FOR33T).search(text)
+    if m is None:
+        return text
+    where = re.sub(r"^(?:on|in|onto|into) ", "", m["place"], flags=_F)
+    if not (_surface_only(where, lexicon) and _only_person(m["p"], lexicon)):
+        return text
+    # the verb of use may be a word of a scene name ('play' of 'play mat'), never a name itself
+    if m["v"] and (
+        m["v"].lower() in VERBS or _ASKS29.search(m["v"]) or not _names_nothing(m["v"], lexicon)
+    ):
+        return text
+    out = text[: m.start()] + m["place"] + text[m.end() :]
+    if _ids(out, lexicon, "human"):
+        return text
+    said = _tasks_of(out, lexicon)
+    return out if said and all(kind == "place" for kind, _, _ in said) else text
+
+
+# words ending in -ing that are no verb's -ing form
+_NOT_GERUNDS33T = frozenset(
+    {
+        *("nothing", "something", "anything", "everything", "morning", "evening", "king"),
+        *("ring", "thing", "spring", "string", "wing", "sing", "bring", "during", "ceiling"),
+        *("pudding", "icing", "sibling", "darling", "duckling", "sling", "swing", "sting"),
+        *("building", "wedding", "clothing", "bedding", "stuffing", "filling", "timing"),
+    }
+)
+
+
+def _purpose_ing33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): what an object is for, said with an -ing verb after it ("Person A needs
+    the cup for rinsing the core samples", "Everything goes to the sink for washing"): taken
+    off when the -ing word is a verb's (not 'nothing', 'evening': ``_NOT_GERUNDS33T``, no verb
+    of the grammar) and neither it nor what follows it, up to the clause's end, names anything
+    of the scene or asks anything (``_asks_nothing29``)."""
+    if "ing" not in text:
+        return text
+
+    def purpose(m: re.Match[str]) -> str:
+        verb = m.group(2).lower()
+        if verb in _NOT_GERUNDS33T or len(verb) < 6 or verb[:-3] in VERBS:
+            return m.group(0)
+        if not _asks_nothing29(m.group(2) + m.group(3), lexicon):
+            return m.group(0)
+        return m.group(1)
+
+    return _sub(
+        r"\b((?:the [a-z]+|everything|it|them)(?: goes to the [a-z]+)?) for ([a-z]+ing)"
+        r"((?: [a-z']+){0,4}?)(?=\s*(?:[,;.!?]|\band\b|$))",
+        purpose,
+        text,
+    )
+
+
 _STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
     _each_header33t,
     _kind_choice33t,
@@ -18659,6 +18832,11 @@ _STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
     _leave_where33t,
     _load_up33t,
     _wont_you33t,
+    _fronted_to33t,
+    _exclaimed_fix33t,
+    _unknown_fixed33t,
+    _placed_for33t,
+    _purpose_ing33t,
 )
 
 
