@@ -433,7 +433,6 @@ KNOWN_MISSES = frozenset(
         'much.',
         'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
         'cheers.',
-        'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
         "Priya wants the red pen left in the box, she'll sort it out later.",
@@ -448,7 +447,6 @@ KNOWN_MISSES = frozenset(
         "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
-        'The two blocks in the high chair for Lily to play with.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
         'Give Person A the chips but not the apple, and not the cup either.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
@@ -457,14 +455,12 @@ KNOWN_MISSES = frozenset(
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
-        'Chips to Person B, oops, Person A, I mean, sorry, love.',
         'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         'the red book goes back up on the bookshelf with the others',
         'Person A is hungry, please bring her the alple from the end.',
         'The chips are meant for Peraon A, could you take them over.',
         'Put the bnana on the tray next to the films, ta.',
         'Drop the scnner on the belt before the next load comes down.',
-        'Would you put the black pen in the box for Priya?',
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         'Quick one before the school bell: bottle to Person B, please and thank you.',
