@@ -461,6 +461,9 @@ KNOWN_MISSES = frozenset(
         'The chips are meant for Peraon A, could you take them over.',
         'Put the bnana on the tray next to the films, ta.',
         'Drop the scnner on the belt before the next load comes down.',
+        # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
+        # on the desk for Noah"; session 33, 12t)
+        "Would you put the black pen in the box for Priya?",
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         'Quick one before the school bell: bottle to Person B, please and thank you.',

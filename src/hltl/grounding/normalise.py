@@ -18754,20 +18754,22 @@ def _unknown_fixed33t(text: str, lexicon: Lexicon) -> str:
 
 
 
-# after a placement, whom it is put there for: 'in the box for Priya', 'in the high chair for
-# Lily to play with'
+# after a placement, whom it is put there for and what they will do: 'in the high chair for Lily
+# to play with'
 _PLACED_FOR33T = (
     r"(?P<place>\b(?:on|in|onto|into) (?:the )?[a-z]+(?: [a-z]+)?) for "
-    rf"(?P<p>{_PERSON32})(?: to (?P<v>[a-z]+)(?: (?:with|on|in|from|at))?)?(?=\s*(?:[,.;!?]|$))"
+    rf"(?P<p>{_PERSON32}) to (?P<v>[a-z]+)(?: (?:with|on|in|from|at))?(?=\s*(?:[,.;!?]|$))"
 )
 
 
 def _placed_for33t(text: str, lexicon: Lexicon) -> str:
-    """Session 33 (12t): 'Would you put the black pen in the box for Priya?', 'The two blocks in
-    the high chair for Lily to play with.': after 'on / in S' (S one surface of the scene), 'for
-    P' (one person; 'to <verb>' no verb of the grammar) says whom the placement is for, as
+    """Session 33 (12t): 'The two blocks in the high chair for Lily to play with.': after 'on /
+    in S' (S one surface of the scene), 'for P to <verb> (with)' (P one person, the verb no verb
+    of the grammar nor a scene name) says whom the placement is for and what they will do, as
     'for Mr Lee to read' does (``_for_to_do32``): taken off when what is left reads as
-    placements only and names P nowhere else (the placement is asked; P gets nothing)."""
+    placements only and names P nowhere else (the placement is asked; P gets nothing). A bare
+    'for P' after a placement stays refused (sessions 30 and 31: 'Put the ruler on the desk for
+    Noah' may ask for it to reach Noah)."""
     if " for " not in text:
         return text
     m = _rx(_PLACED_FOR33T).search(text)
@@ -18777,9 +18779,7 @@ def _placed_for33t(text: str, lexicon: Lexicon) -> str:
     if not (_surface_only(where, lexicon) and _only_person(m["p"], lexicon)):
         return text
     # the verb of use may be a word of a scene name ('play' of 'play mat'), never a name itself
-    if m["v"] and (
-        m["v"].lower() in VERBS or _ASKS29.search(m["v"]) or not _names_nothing(m["v"], lexicon)
-    ):
+    if m["v"].lower() in VERBS or _ASKS29.search(m["v"]) or not _names_nothing(m["v"], lexicon):
         return text
     out = text[: m.start()] + m["place"] + text[m.end() :]
     if _ids(out, lexicon, "human"):
