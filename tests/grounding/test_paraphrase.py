@@ -519,6 +519,74 @@ KNOWN_MISSES = frozenset(
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
         "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
+        # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
+        'Hello there, nothing fancy today, just the bottle for Person A, thank you kindly.',
+        "Ah, go on then, the bottle to Person A if you would, there's a good robot.",
+        'Kadrinchey la, and sorry to bother you, but Mrs Khan is asking for the water jug.',
+        "Cheers in advance, mate, the packing tape over to Tom when you can, the dustman's "
+        "blocking the yard.",
+        "Bob wants his crisps on the shelf, out of reach of the goatherd's kids.",
+        'The chips are wanted by Person B, apparently, according to the roadie.',
+        "I reckon Person A needs the bottle more than anyone, so that one's hers.",
+        "Person B could murder the chips and Person A would like the bottle, we've hockey at six.",
+        'Mrs Ortiz needs the globe for her geography lesson this afternoon.',
+        "Grandad wants the baby wipes, the little one's got jam absolutely everywhere.",
+        'The bottle? Alice. The crisps? Bob. Simple as that.',
+        "For Person A: the bottle. The cup too. And, oh yes, the apple, she's got a long gig.",
+        "Person A first, that's the bottle; next up Person B, that's the chips, the sousaphone "
+        "section's waiting.",
+        'The bottle, Person A, there you go, all yours.',
+        "There's a bottle over there, yeah? Person A wants it.",
+        "That's Kofi's drill, take it over to him, and the screws with it.",
+        'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
+        'Chips for Person A, bottle for Person B, no rush on either of them.',
+        "Either mug to Bob, whichever's closer to hand.",
+        "Bob's off to the cricket, so he's taking both, the bottle and the crisps.",
+        'One each for Alice and Bob, the bottle and the crisps, you decide who gets which.',
+        "Any one of the cup, the bottle or the apple for Person B, the banjo player's not fussy.",
+        "Person A can have either the apple or the chips, whatever's nearest.",
+        'One thing apiece for them: Person A takes the cup, Person B takes the apple.',
+        "One of these to Person A, the bottle or the chips, I don't mind which.",
+        'Of everything lying about here, Person A only wants the bottle.',
+        'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
+        "Sam can have any of the pens, he's not fussed which colour.",
+        'Each patient gets a blanket, either way round is fine.',
+        "Any one of the boxes onto the belt, the supervisor isn't bothered which.",
+        "Either plate onto the worktop, I'll plate up on whichever you pick.",
+        'Put the two of them, bottle and crisps, up on the shelf.',
+        'Every single item here goes to Person B, all four of them.',
+        'Person A gets the drinking things, which is the bottle plus the cup, for the roadies.',
+        'A thing for each of them, Person A on the chips and Person B on the bottle.',
+        'Both cups need a rinse after the titration, so into the sink they go, the green and the '
+        'white.',
+        'All three pens into the box, the optometrist is coming to use the desk.',
+        "Mrs Khan is to have both blankets, the radiator by her bed's packed in.",
+        'Every box in the place, all three, goes up onto the belt for the evening run.',
+        "Lily's to have both blocks, red and green, she wants to build a tower.",
+        "Bob gets everything but the crisps, the osteopath's told him to cut down.",
+        'Not the cup, not the apple, just the bottle to Person B.',
+        "Chips for Person A, and definitely not for Person B, who's on a diet for the rugby.",
+        "Nothing for Person B today, he's fasting; the bottle's for Person A.",
+        "Not on the floor, into Person A's hand, the bottle.",
+        'The bottle goes to Person A and to nobody else.',
+        'Anything but the chips for Person B.',
+        "Mr Lee's to get the grey blanket and not the blue, he says that colour gives him a "
+        "headache.",
+        'Onto the belt with any box apart from the big one, whichever you like.',
+        "Crisps to Alice, oh hang about, I got that wrong, they're Carol's.",
+        "The bottle's for Person B, hmm, no, my mistake, it's Person A's.",
+        "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
+        "Bottle to Person A, oh, correction from the skipper, it's Person B.",
+        'Place the bottle, hang on, no, hand the bottle to Person A, ua tsaug.',
+        'Chips to Person B, no, wrong way round, chips to Person A and the bottle to Person B.',
+        'Knife to Lena, oh no, not the knife, the tongs.',
+        "the bottle would help person a a lot, she's been busking all morning",
+        "Eprson A's asking after the chips, she's the tram driver.",
+        'Person A has earned the cyips after hauling the nets in.',
+        "Baby wpies to Ava, there's been a spill.",
+        'Would you mind setting the red mug down on the counter by the kettle?',
+        'Do you think Person A could have the cup for her tea break?',
+        "Is it okay if the globe goes up on the bookshelf, out of harm's way?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -537,6 +605,8 @@ KNOWN_UNCLEAR = frozenset(
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)
+        # blind31 (tuned on in session 33)
+        'The globe to the student, not to the teacher.',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -592,8 +662,9 @@ KNOWN_UNCLEAR = frozenset(
 # "blind30" written in session 31 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 31, tuned on in session 32: asserted now, the rest in
 # KNOWN_MISSES; "blind31" written in session 32 by another engineer and committed alone,
-# measured once at the end of session 32: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind31"})
+# reviewed by a second one, measured once at the end of session 32, its one wrong reading fixed
+# and tuned on in session 33: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

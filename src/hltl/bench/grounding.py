@@ -113,7 +113,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 31; tuned on in session 32), blind31 (written in session 32 by another engineer and committed
 # alone, never opened by the engineers who change the grounder before its one measurement at the
-# end of session 32; tests do not assert it).
+# end of session 32; its one wrong reading fixed and tuned on in session 33).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

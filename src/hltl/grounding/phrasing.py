@@ -736,6 +736,28 @@ _CHOOSES = frozenset(
 )
 
 
+# the words of someone else's say-so after 'whatever/whichever' (session 33, lead)
+_DEFERS33L = frozenset(
+    {
+        *("tells", "tell", "told", "says", "say", "said", "asks", "ask", "asked", "instructs"),
+        *("decides", "decide", "orders", "suggests", "reckons", "radios", "shouts", "calls"),
+    }
+)
+
+
+def _refuse_deferral33l(items: list[Item], k: int) -> None:
+    """Session 33 (lead): "…. Then whatever the deckhand tells you" — a 'whatever/whichever'
+    clause (from ``k`` to its end) that waits on someone else's word leaves a step unsaid:
+    refused, never dropped as a remark on a choice."""
+    end = k + 1
+    while end < len(items) and items[end].kind != "punct" and not _is(items[end], "then"):
+        end += 1
+    if any(not _DEFERS33L.isdisjoint(x.text.lower().split()) for x in items[k + 1 : end]):
+        raise GroundingError(
+            f"{_words_of(items[k:end])!r} waits on someone else's word: say what to do"
+        )
+
+
 def _whichever(items: list[Item]) -> list[Item]:
     """'… or the cup, whichever (is easier)': the rest of the clause adds nothing."""
     out: list[Item] = []
@@ -745,6 +767,7 @@ def _whichever(items: list[Item]) -> list[Item]:
             if k + 1 < len(items) and _objects(items[k + 1]):
                 out.append(Item("word", "q:some", it.text))  # "whichever mug": any mug
                 continue
+            _refuse_deferral33l(items, k)
             skipping, start = True, k
             continue
         chooses = k + 1 < len(items) and items[k + 1].text.lower() in _CHOOSES
