@@ -46,7 +46,11 @@ after another one and a filler or a word of repair ("the cup, er, the chips", "C
 Bob"), or a name begun and said again ("Person, er, Person A"): as the entry, or refused; an
 object left undecided between two ("the cup or, er, the chips, I forget which"): refused; and,
 for an entry of one task, another object added before its own with "and" ("the cup and, er, the
-chips"): that task of both objects, or refused.
+chips"): that task of both objects, or refused. A tenth family (session 33), deferrals: words
+after an entry or before it that hand part of the decision to someone else or leave it open
+("… Then whatever the deckhand tells you.", "…, and see what Sam says.", "Check with Sam first.
+…"): refused, the plan would be incomplete; and a sentence that only closes the request ("… Then
+you're done.", "… That's all for now."): as the entry, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -411,6 +415,46 @@ REPAIR_FORMS = ("object", "undecided", "added", "person", "stutter")
 _LIST_BEFORE = re.compile(r"(?i)(?:,|\band|\bor|&)\s*$")
 _LIST_AFTER = re.compile(r"(?i)^\s*(?:,\s*(?:the\b|[A-Z])|and\b|or\b|&|plus\b|nor\b)")
 _NEGATED = re.compile(r"(?i)\b(?:not|no|except|but|than|nor|without|bar|from)\s+$")
+# deferrals (session 33; blind31 read "Bottle to Person A. Chips to Person B. Then whatever the
+# deckhand tells you." as the two handovers, its last sentence dropped): words after an entry, or
+# before it, that hand part of the decision to someone else or leave it open ("Then whatever the
+# deckhand tells you.", "After that, ask Sam what's next.", "The rest is up to Sam.", "…, and see
+# what Sam says.", "Check with Sam first."): the plan would be incomplete, or wait on a word the
+# robot does not hear, so refused; and a near tail that only closes the request ("Then you're
+# done.", "That's all for now."): the entry, or refused. {p} is a person of the scene by a name, or
+# a role that names nothing in the scene ("the deckhand"); {o} an object the entry does not name.
+ROLES = ("deckhand", "supervisor", "foreman", "shift manager", "site boss", "duty officer")
+DEFERRED_AFTER = (  # a sentence after the entry: refused
+    " Then whatever {p} tells you.",
+    " After that, ask {p} what's next.",
+    " The rest is up to {p}.",
+    " Then do whatever {p} says.",
+    " {P} will tell you what to do after that.",
+    " Then ask {p} what to do with the {o}.",
+    " And give {p} whatever they ask for.",
+    " What comes next is {p}'s call.",
+)
+DEFERRED_JOINED = (  # a clause joined to the entry (not after a question): refused
+    ", and see what {p} says.",
+    ", then wait for {p} to tell you what's next.",
+    ", and after that it's up to {p}.",
+)
+DEFERRED_BEFORE = (  # said before the entry: refused
+    "Check with {p} first. ",
+    "Once {p} says so, ",
+    "Depending on what {p} says, ",
+    "Wait for {p} to give the word, then ",
+    "Ask {p} before you start. ",
+)
+SETTLED = (  # a near tail that only closes the request: the entry
+    " Then you're done.",
+    " That's all for now.",
+    " That's everything.",
+    " Nothing else after that.",
+    " That's it, thanks.",
+    " After that, you're free.",
+)
+DEFERRAL_FORMS = ("after", "joined", "before", "settled")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -421,6 +465,7 @@ Family = Literal[
     "afterthoughts",
     "frames",
     "repairs",
+    "deferrals",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -875,17 +920,23 @@ def exclusions(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Ite
         )
 
 
-def tails(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
-    """The tail variants of one entry: a sentence after it adding a handover of an object it does
-    not name to a person (for an entry that reads: the entry's reading and that handover, see
-    ``kept``), and a sentence that must be refused (after any entry)."""
+def _sentence_and_free(entry: Entry, scene: Scene) -> tuple[str, list[str]]:
+    """The entry's text as a sentence (a full stop after it where it has none) and the
+    one-of-a-kind objects of ``scene`` it does not name (nor move)."""
     text = entry.text.strip()
     if not text.endswith((".", "!", "?")):
         text += "."
     named = _objects_named(text, scene) | (
         {t.obj for t in tasks(entry.want)} if entry.want is not None else set()
     )
-    free = [x for x in _unique_objects(scene) if x not in named]
+    return text, [x for x in _unique_objects(scene) if x not in named]
+
+
+def tails(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The tail variants of one entry: a sentence after it adding a handover of an object it does
+    not name to a person (for an entry that reads: the entry's reading and that handover, see
+    ``kept``), and a sentence that must be refused (after any entry)."""
+    text, free = _sentence_and_free(entry, scene)
     hid = rng.choice(scene.humans).id
     p = _name(scene, hid)
     if free and entry.want is not None:
@@ -1189,6 +1240,43 @@ def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
         )
 
 
+def _deferred_to(scene: Scene, rng: random.Random) -> str:
+    """Who a deferral names: a person of the scene by a name no other shares, or a role naming
+    nothing in the scene ("the deckhand")."""
+    people = [n for h in scene.humans if (n := _proper_name(scene, h.id))]
+    roles = [f"the {r}" for r in ROLES if _names_nothing(f"the {r}", scene)]
+    return rng.choice(people + roles if rng.random() < 0.5 or not people else people)
+
+
+def deferrals(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The deferral variants of one entry: a sentence after it handing on what comes next
+    (DEFERRED_AFTER), a clause joined to it (DEFERRED_JOINED; not after a question) and words
+    before it (DEFERRED_BEFORE; not before a take-back), each refused; and a sentence closing
+    the request (SETTLED): the entry (a refused entry stays refused, with its readings)."""
+    text, free = _sentence_and_free(entry, scene)
+
+    def variant(said: str, form: str) -> Variant:
+        if form == "settled" and entry.want is not None:
+            return Variant(part, entry.scene, said, entry.want, "same", "deferrals", (), form)
+        readings = entry.readings if form == "settled" else ()
+        return Variant(part, entry.scene, said, None, "refuse", "deferrals", readings, form)
+
+    after = [f for f in DEFERRED_AFTER if free or "{o}" not in f]
+    p = _deferred_to(scene, rng)
+    o = _name(scene, rng.choice(free)) if free else ""
+    form = rng.choice(after).format(p=p, P=p[:1].upper() + p[1:], o=o)
+    yield variant(text + form, "after")
+    if not text.endswith("?"):
+        p = _deferred_to(scene, rng)
+        yield variant(text.rstrip(".!") + rng.choice(DEFERRED_JOINED).format(p=p), "joined")
+    if not text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry")):
+        p = _deferred_to(scene, rng)
+        before = rng.choice(DEFERRED_BEFORE).format(p=p)
+        body = text if before.endswith(". ") else _after(", ", text, scene)[2:]
+        yield variant(before + body, "before")
+    yield variant(text + rng.choice(SETTLED), "settled")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -1262,6 +1350,7 @@ def generated(
     rng_after = random.Random(f"afterthoughts:{seed}")
     rng_frames = random.Random(f"frames:{seed}")
     rng_repairs = random.Random(f"repairs:{seed}")
+    rng_defer = random.Random(f"deferrals:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1294,6 +1383,9 @@ def generated(
                     yield v, scene
             if "repairs" in families:
                 for v in repairs(part, entry, scene, rng_repairs):
+                    yield v, scene
+            if "deferrals" in families:
+                for v in deferrals(part, entry, scene, rng_defer):
                     yield v, scene
 
 

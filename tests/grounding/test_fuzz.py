@@ -16,8 +16,9 @@ speaker was told of: that handover; negated, had or past: refused; a frame after
 handover: the entry and that handover; a person described between commas after their name: the
 entry), the repair family of session 32 (an entry's object or person said after another and a
 filler or a word of repair, or a name begun and said again: the entry; an object left undecided
-between two: refused; another object added with "and": that task of both), and the wrappers and
-take-backs of a seed unchanged by them."""
+between two: refused; another object added with "and": that task of both), the deferral family
+of session 33 (words after or before an entry handing on what comes next: refused; a sentence only
+closing the request: the entry), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -201,7 +202,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts', 'frames', 'repairs')" in err
+    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -1213,4 +1214,149 @@ def test_over_the_corpus_each_repair_variant_names_what_it_says() -> None:
                         entry.text, scene
                     )
                 assert v.want == entry.want or v.form in ("undecided", "added")
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- deferrals (session 33) -----------------------------------------------------------------------
+
+
+def _deferrals(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.deferrals("t", entry, scene, random.Random(seed)))
+
+
+def _deferred_to_someone(p: str, scene: Scene) -> None:
+    """``p`` (what a deferral names) is one person of ``scene`` by a name, or one of the roles,
+    naming nothing in the scene."""
+    if p.startswith("the ") and p[4:] in fuzz.ROLES:
+        assert fuzz._names_nothing(p, scene), p
+    else:
+        assert len(_people_named(p, scene)) == 1 and p[:1].isupper(), p
+
+
+def _said_with(
+    forms: tuple[str, ...], text: str, entry: str, at: str, scene: Scene
+) -> re.Match[str]:
+    """``text`` is ``entry`` with one of ``forms`` after it (``at="end"``) or before it
+    (``at="start"``; the entry's first word may be in lower case after a comma), the form's
+    person or role and its object (one the entry does not name) as they must be."""
+    if at == "end":
+        said = [text[len(e) :] for e in (entry, entry.rstrip(".!")) if text.startswith(e)]
+    else:
+        said = [text[: -len(e)] for e in (entry, entry[:1].lower() + entry[1:]) if text.endswith(e)]
+    found = [m for w in said for f in forms if (m := re.fullmatch(_pattern(f), w))]
+    assert found, f"{text!r} is not {entry!r} with one of {forms}"
+    m = found[0]
+    if m.groupdict().get("p"):
+        p = m["p"]
+        _deferred_to_someone("the " + p[4:] if p.startswith("The ") else p, scene)
+    if m.groupdict().get("o"):
+        assert not fuzz._objects_named(m["o"], scene) & fuzz._objects_named(entry, scene)
+        _one_object(m["o"], scene)
+    return m
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_gets_every_deferral(seed: int) -> None:
+    entry = _entry("cell", "Give Person B the apple, please.", "apple>B")
+    made = _deferrals(entry, CELL, seed)
+    assert [v.form for v in made] == list(fuzz.DEFERRAL_FORMS)
+    after, joined, before, settled = made
+    for v in made:
+        assert v.family == "deferrals" and (v.must == "refuse") is (v.want is None)
+    # handing on what comes next, after it, joined to it or before it: refused
+    for v in (after, joined, before):
+        assert v.want is None and v.readings == ()
+    _said_with(fuzz.DEFERRED_AFTER, after.text, entry.text, "end", CELL)
+    _said_with(fuzz.DEFERRED_JOINED, joined.text, entry.text, "end", CELL)
+    _said_with(fuzz.DEFERRED_BEFORE, before.text, entry.text, "start", CELL)
+    # closing the request: the entry
+    assert settled.want == entry.want
+    _said_with(fuzz.SETTLED, settled.text, entry.text, "end", CELL)
+
+
+def test_a_deferral_says_a_person_a_role_and_an_object_the_entry_does_not_name() -> None:
+    entry = _entry("cell", "Give Bob the apple and the cup.", "apple>B & cup>B")
+    people, roles, objects = set(), set(), set()
+    for seed in range(80):
+        for v in _deferrals(entry, CELL, seed):
+            if v.form != "after":
+                continue
+            m = _said_with(fuzz.DEFERRED_AFTER, v.text, entry.text, "end", CELL)
+            p = m["p"]
+            (roles if p.lower().startswith("the ") else people).add(p)
+            if m.groupdict().get("o"):
+                objects.add(_one_object(m["o"], CELL))
+    assert people == {"Alice", "Bob", "Carol"} and len(roles) >= 3
+    assert objects and not objects & {"apple", "cup"}
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_after_a_question_nothing_is_joined_and_before_a_take_back_nothing_goes(seed: int) -> None:
+    question = _entry("cell", "Could you give Carol the bottle?", "bottle>C")
+    made = _deferrals(question, CELL, seed)
+    assert [v.form for v in made] == ["after", "before", "settled"]
+    assert made[0].text.startswith("Could you give Carol the bottle? ")
+    assert made[1].text.endswith(
+        ("could you give Carol the bottle?", ". Could you give Carol the bottle?")
+    )
+    back = _entry("cell", "Actually, give Carol the bottle.", "bottle>C")
+    assert [v.form for v in _deferrals(back, CELL, seed)] == ["after", "joined", "settled"]
+
+
+def test_a_refused_entry_stays_refused_and_a_settled_one_keeps_its_readings() -> None:
+    entry = Entry("cell", "Give Bob the mug", None, ("mug_red", "mug_blue"))
+    made = _deferrals(entry, CELL, 3)
+    assert [v.form for v in made] == list(fuzz.DEFERRAL_FORMS)
+    assert all(v.must == "refuse" and v.want is None for v in made)
+    assert made[-1].readings == entry.readings and made[-1].text.startswith("Give Bob the mug. ")
+    assert fuzz.verdict(made[-1], CELL) in ("refused", "unclear")
+
+
+def test_a_role_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["humans"][1]["aliases"] = ["Bob", "deckhand"]
+    raw["humans"][2]["aliases"] = ["Carol", "foreman"]
+    scene = scene_from_dict(raw)
+    entry = _entry("cell", "Give Alice the apple.", "apple>A")
+    for seed in range(60):
+        for v in fuzz.deferrals("t", entry, scene, random.Random(seed)):
+            assert "deckhand" not in v.text and "foreman" not in v.text
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("Give Bob the cup.", None, "after", "wrong"),  # read where it must be refused
+        ("Give Bob the mug.", None, "after", "refused"),
+        ("Give Bob the cup.", "cup>B", "settled", "exact"),
+        ("Give Bob the cup.", "cup>A", "settled", "wrong"),
+    ],
+)
+def test_a_deferral_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "deferrals", form) == verdict
+
+
+def test_over_the_corpus_each_deferral_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.DEFERRAL_FORMS, 0)
+    said = {
+        "after": (fuzz.DEFERRED_AFTER, "end"),
+        "joined": (fuzz.DEFERRED_JOINED, "end"),
+        "before": (fuzz.DEFERRED_BEFORE, "start"),
+        "settled": (fuzz.SETTLED, "end"),
+    }
+    for part in PARTS:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        rng = random.Random(33)
+        for entry in corpus.entries[::2]:
+            scene = corpus.scenes[entry.scene]
+            text = entry.text.strip()
+            text = text if text.endswith((".", "!", "?")) else text + "."
+            for v in fuzz.deferrals(part, entry, scene, rng):
+                assert v.family == "deferrals" and (v.must == "refuse") is (v.want is None)
+                kinds[v.form] += 1
+                forms, at = said[v.form]
+                _said_with(forms, v.text, text, at, scene)
+                assert v.want == (entry.want if v.form == "settled" else None)
     assert min(kinds.values()) >= 10, kinds
