@@ -18736,7 +18736,6 @@ def _is_closer33t(words: str, lexicon: Lexicon) -> bool:
     )
 
 
-
 def _unknown_fixed33t(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12t): 'Forceps, sorry, I mean the spoon, to Omar.': the first word names
     nothing of the scene, and the speaker says at once ('sorry / no / oops, I mean') which object
@@ -18751,7 +18750,6 @@ def _unknown_fixed33t(text: str, lexicon: Lexicon) -> str:
     if not _only_kind(m.group(2), lexicon, "object"):
         return text
     return f"{m.group(2)}, {m.group(3)}"
-
 
 
 # after a placement, whom it is put there for and what they will do: 'in the high chair for Lily
@@ -18824,6 +18822,459 @@ def _purpose_ing33t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _stays_on33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): '… Grey blanket stays on the cart.': an object said to stay on the
+    surface it starts on (inside its footprint) is to be left where it is, as '… stays put' (read
+    by the rules for that); an object that does not start there is left (staying there would be
+    a move, and is refused)."""
+    if "stay" not in text.lower():
+        return text
+
+    def stays(m: re.Match[str]) -> str:
+        if not (_only(m["o"], lexicon, "object") and _surface_only(m["s"], lexicon)):
+            return m[0]
+        (obj,) = _ids(m["o"], lexicon, "object")
+        (where,) = _ids(m["s"], lexicon, "surface")
+        return f"{m['lead']}{m['o']} stays put" if starting_on({obj}, where, lexicon) else m[0]
+
+    return _sub(
+        r"(?P<lead>(?:^|[.;,]\s*)(?:and |but )?)(?P<o>(?:the )?[a-z]+(?: [a-z]+)?) (?:stays|can "
+        r"stay|should stay) (?:on|in) (?P<s>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[.;!]|$))",
+        stays,
+        text,
+    )
+
+
+def _each_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): '…, and not the cup either' after a 'not' is '…, and not the cup' (one
+    more left out); 'Each patient, receives one blanket, whichever colour' (a filler taken off
+    between 'each <role>' and its verb) is 'Each patient receives one blanket': 'whichever
+    colour / size' after 'each … one / a <noun>' says again that which one is not chosen; a
+    manner word between commas after 'each <role>' ('gently', not 'only') is taken off."""
+    out = _sub(
+        r"(\bnot\b[^.;]*?,\s*and not (?:the )?[a-z ]+?)\s+either(?=\s*[.!]?$)",
+        r"\1",
+        text,
+    )
+    m = _rx(
+        r"^(each [a-z]+)(?:,\s*([a-z]+ly)\s*)?,?\s+(receives?|gets?|should get|can have) (one|a|"
+        r"an) ([a-z]+)(?:,\s*whichever (?:colou?r|size|one))?\s*([.!]?)$"
+    ).match(out)
+    if m is None or (m.group(2) and m.group(2).lower() in _LY_HELD19):
+        return out
+    return f"{m.group(1)} {m.group(3)} {m.group(4)} {m.group(5)}{m.group(6)}"
+
+
+def _both_named33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'both mugs, (the) red and (the) blue(,)' names the two mugs again by
+    what tells them apart: 'both mugs', when 'the red mug' and 'the blue mug' are the scene's two
+    mugs (any other pair is left). Then 'both mugs, could they go to Alice?' is 'could both mugs
+    go to Alice?', and 'easy / gently does it' (take care) is taken off between commas."""
+    out = _drop(r",\s*(?:gently|easy|steady|slowly) does it(?=\s*[,.!]|$)", text, lexicon)
+
+    def named(m: re.Match[str]) -> str:
+        kind = _singular(m.group(2).lower())
+        both = _ids(f"the {m.group(2)}", lexicon, "object")
+        one = _ids(f"the {m.group(3)} {kind}", lexicon, "object")
+        two = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
+        if len(both) != 2 or len(one) != 1 or len(two) != 1 or one | two != both:
+            return m.group(0)
+        return f"{m.group(1)}{m.group(2)}{m.group(5)}"
+
+    out = _sub(
+        r"\b(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and (?:the )?([a-z]+)(?: ones)?(,?)",
+        named,
+        out,
+    )
+    return _sub(
+        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?[a-z]+s),\s*(could|can|would|will) they "
+        r"(go|be taken|be given) (to [a-z][\w ]*?)\s*\?",
+        r"\1\3 \2 \4 \5?",
+        out,
+    )
+
+
+def _got_them33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'once he's got them' / 'after she's got them' / 'once hes got them'
+    (without the apostrophe) is 'once he has them' (a pronoun for the objects just named, as
+    the grammar reads it), and the clause after it is set off by a comma when it is not: "tom
+    wants the gloves and once hes got them mia wants the tape"."""
+    if "got" not in text.lower():
+        return text
+
+    def got(m: re.Match[str]) -> str:
+        have = "have" if m.group(2).lower() == "they" else "has"
+        return f"{m.group(1)} {m.group(2)} {have} {m.group(3)}, "
+
+    return _sub(
+        r"\b(once|after|when) (he|she|they)(?:'s|s|'ve| has| have)? got (it|them)\b,?\s+",
+        got,
+        text,
+    )
+
+
+def _need_over33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'What I need is the bottle over with Person B' / '(I) need the chips
+    over with person b' is 'I need the bottle taken over to Person B' (the speaker's need, said
+    with where the object is to go: the person named gets it); 'like right now' is 'right
+    now'."""
+    out = _sub(r"\blike (?=right now\b|now\b|asap\b|straight away\b)", "", text)
+
+    def over(m: re.Match[str]) -> str:
+        if not (_only_kind(m.group(1), lexicon, "object") and _only_person(m.group(2), lexicon)):
+            return m.group(0)
+        return f"I need {m.group(1)} taken over to {m.group(2)}"
+
+    return _sub(
+        r"^(?:what i need is|i need|need) (the [a-z ]+?) over (?:with|to) ([a-z][\w ]*?)"
+        r"(?=\s*(?:right now|now)?\s*[.!]?$)",
+        over,
+        out,
+    )
+
+
+def _telegraphed33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): words of a quick note. 'could P grab / take / get the X off you' is
+    'could P have the X' (P takes it from the robot: a hand-over); 'apple n bottle' ('n' between
+    two object names) is 'apple and bottle'; 'That one bottle' is 'the bottle' where the scene
+    has one bottle only (with more, 'that one' points at one: left); 'P wants the X only, kindly
+    do the needful' is 'P wants the X' ('only' after the one object wanted; 'do the needful',
+    do what is needed, a closer)."""
+    out = text
+
+    def off(m: re.Match[str]) -> str:
+        return (
+            f"{m.group(1)} {m.group(2)} have " if _only_person(m.group(2), lexicon) else m.group(0)
+        )
+
+    out = _sub(
+        r"\b(could|can) ([a-z][\w ]*?) (?:grab|take|get) (?=the [a-z ]+? (?:off|from) you\b)",
+        off,
+        out,
+    )
+    out = _sub(r"(\bhave the [a-z ]+?) (?:off|from) you\b", r"\1", out) if out != text else out
+
+    def joined(m: re.Match[str]) -> str:
+        if _only_kind(m.group(1), lexicon, "object") and _only_kind(m.group(2), lexicon, "object"):
+            return f"{m.group(1)} and {m.group(2)}"
+        return m.group(0)
+
+    out = _sub(r"\b([a-z]+) n ([a-z]+)\b", joined, out)
+
+    def that_one(m: re.Match[str]) -> str:
+        said = f"the {m.group(2)}"
+        if not _only(said, lexicon, "object"):
+            return m.group(0)
+        kind = lexicon.scene.object(next(iter(_ids(said, lexicon, "object")))).category
+        if sum(o.category == kind for o in lexicon.scene.objects) != 1:
+            return m.group(0)
+        return f"{m.group(1)}{said}"
+
+    out = _sub(r"(^|[.;]\s*)that one ([a-z]+)\b", that_one, out)
+    return _sub(
+        r"^([a-z][\w ]*? (?:wants|needs|is wanting) the [a-z]+) only(?:,\s*(?:kindly |please )?do "
+        r"the needful)?\s*([.!]?)$",
+        lambda m: m.group(1) + m.group(2) if _ids(m.group(1), lexicon, "human") else m.group(0),
+        out,
+    )
+
+
+def _said_again33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'P wants the X left in / on S' is 'P wants the X put in S' ('left', the
+    participle of leave, between an object and a surface; 'on the left' is no such place);
+    '…, then the apple (the) same way' after a hand-over is '…, then the apple too' (the same
+    hand-over); '… as well while he's at it' is '… as well'; 'Either X or Y goes to P' (or
+    'shall be given to P') is 'X or Y goes to P', and 'at your discretion' after a choice is
+    taken off."""
+    out = _sub(
+        r"\b(wants?|needs?|would like) (the [a-z ]+?) left (in|on|into|onto) "
+        r"(?=the [a-z ]+?\s*(?:[,.!]|$))",
+        r"\1 \2 put \3 ",
+        text,
+    )
+    out = _sub(r"(,\s*(?:and )?then the [a-z]+) (?:the )?same way\b", r"\1 too", out)
+    out = _sub(
+        r"\b(too|as well|also)\s*,?\s*while (?:he|she|they|you)(?:'s|'re| is| are) at it\b",
+        r"\1",
+        out,
+    )
+    if " or " in out:
+        # "…, at your discretion" after a choice: the robots choose, as the choice says
+        out = _sub(r",\s*(?:at your discretion|as you see fit)(?=\s*[.!]?$)", "", out)
+    return _sub(
+        r"^either ((?:the )?[a-z]+ or (?:the )?[a-z]+) (?:goes|go|should go|is going|shall be "
+        r"given|should be given) to\b",
+        r"\1 goes to",
+        out,
+    )
+
+
+def _whose33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): an object said as a person's ('Grandad's beaker', 'Lily's bib') where
+    the scene has that object once: 'bring Grandad's beaker over to him' is 'bring the beaker
+    over to Grandad' (the pronoun after it fits him, and no one else is named); 'put Lily's bib
+    on her high chair' is 'put the bib on the high chair' (the owner of the place, one surface of
+    the scene, is the owner said before). Anything else is left."""
+    if "'s " not in text:
+        return text
+    for m in _rx(r"\b(?:(\w+) )?(\w+)'s ([a-z]+)( [a-z]+)?\b").finditer(text):
+        who = next(
+            (w for w in (m.group(2), f"{m.group(1)} {m.group(2)}") if _only_person(w, lexicon)),
+            None,
+        )
+        if who is None:
+            continue
+        obj = next(
+            (
+                o
+                for o in (m.group(3) + (m.group(4) or ""), m.group(3))
+                if _only(f"the {o}", lexicon, "object")
+            ),
+            None,
+        )
+        if obj is None:
+            return text
+        start = m.end(2) - len(who)
+        end = m.start(3) + len(obj)
+        return _owner_said33t(text, start, end, who, obj, lexicon)
+    return text
+
+
+def _owner_said33t(text: str, start: int, end: int, who: str, obj: str, lexicon: Lexicon) -> str:
+    """``_whose33t``'s rewrite of "<who>'s <obj>" (``text[start:end]``), or ``text``."""
+    rest = text[end:]
+    if _ids(text[:start] + rest, lexicon, "human"):
+        return text
+    (pid,) = _ids(who, lexicon, "human")
+    said = f"{text[:start]}the {obj}"
+    to = _rx(r"^(.*?\b(?:to|for) )(him|her)\b").match(rest)
+    if to is not None and _fits(pid, to.group(2), lexicon):
+        return f"{said}{to.group(1)}{who}{rest[to.end() :]}"
+    on = _rx(r"^( (?:on|in|onto|into) )(?:his|her) ([a-z]+(?: [a-z]+)?)\b").match(rest)
+    if on is not None and _fits(pid, rest, lexicon) and _surface_only(on.group(2), lexicon):
+        return f"{said}{on.group(1)}the {on.group(2)}{rest[on.end() :]}"
+    return text
+
+
+# a pair noun ('the one pair' of tongs)
+_PAIRS33T = frozenset({"tongs", "scissors", "gloves", "pliers", "tweezers", "shears", "glasses"})
+
+
+def _one_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a count or a choice said again after the request. '…, just the one
+    pair' after a pair noun the scene has once ('Marco needs his tongs'); '…, not the green one,
+    only red' where what is left is the red one alone; '…, and, honestly, that's the whole job
+    today' closing a request (taken off, as 'that's all'); 'Lily wants the two blocks to bang
+    together' ('to bang': what she will do with them, _USES; 'together' says it of both)."""
+    out = _sub(r"\b(to [a-z]+) together(?=\s*[.!]?$)", r"\1", text)
+    out = _sub(
+        r"(?:,\s*and)?(?:,\s*(?:honestly|really|truly|basically))?,\s*that's (?:the whole job|all)"
+        r"(?: (?:today|for today|for now))?(?=\s*[.!]?$)",
+        "",
+        out,
+    )
+    m = _rx(r"^(.*\b(?:his|her|their|the) ([a-z]+)),\s*just the one pair\s*([.!]?)$").match(out)
+    if (
+        m is not None
+        and m.group(2).lower() in _PAIRS33T
+        and _only(f"the {m.group(2)}", lexicon, "object")
+    ):
+        out = m.group(1) + m.group(3)
+    m = _rx(r"^(.*\bnot the [a-z]+ one),\s*only (?:the )?([a-z]+)(?: one)?\s*([.!]?)$").match(out)
+    if m is not None:
+        said = _tasks_of(m.group(1) + m.group(3), lexicon)
+        kept = {obj for _, obj, _ in said or ()}
+        named = {
+            o.id
+            for o in lexicon.scene.objects
+            if o.id in kept
+            and any(
+                m.group(2).lower() in a.lower().split()
+                for a in (o.id.replace("_", " "), *o.aliases)
+            )
+        }
+        if said and len(kept) == 1 and named == kept:
+            out = m.group(1) + m.group(3)
+    return out
+
+
+# a statement about something the scene does not have, opening the instruction before a request
+# ("Stock room's a mess, grab …", "Sorry, the dogs are going mad outside, could you …")
+_OPENING33T = (
+    r"^(?P<lead>(?:(?:sorry|oh|so|well|right|okay|ok)\s*,?\s+)*)(?P<said>(?:the |our |my )?[a-z]+"
+    r"(?: [a-z]+)?(?:'s|'re| is| are) [a-z' ]+?),\s+(?P<rest>(?:(?:so|and)\s+)?(?:could|can|would|"
+    r"will|please|give|hand|pass|bring|take|grab|get|pop|put|stick)\b.*)$"
+)
+
+
+def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a statement opening the instruction about something the scene does not
+    have ('Stock room's a mess', 'the dogs are going mad outside'), then a request: the
+    statement is taken off when it names nothing of the scene (nor by a typo) and holds no word
+    that would make it ask, point, choose, time or say who (``_OPENING_HELD32S``, pronouns);
+    the request must read without it."""
+    m = _rx(_OPENING33T).match(text)
+    if m is None or not _names_nothing(m["said"], lexicon):
+        return text
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
+    held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
+    if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
+        return text
+    rest = m["lead"] + m["rest"]
+    return rest[:1].upper() + rest[1:] if _reading(rest, lexicon) is not None else text
+
+
+def _counted_close33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a closing sentence counting the hand-overs ('Four deliveries, what a
+    display!') is a count check: taken off when what comes before it reads as exactly that many
+    hand-overs, all asked ('and'); an exclamation after it ('what a <word>') names nothing. A
+    count the request does not meet is left (and refused)."""
+    m = _rx(
+        r"(?<=[.!?])\s+(one|two|three|four|five|six) (?:deliveries|delivery|hand-?overs?|drops?|"
+        r"jobs?|tasks?)(?: in all| in total)?(?:,\s*what an? ([a-z]+))?\s*[.!]*\s*$"
+    ).search(text)
+    if m is None or (m.group(2) and not _names_nothing(m.group(2), lexicon)):
+        return text
+    said = _handovers33t(text[: m.start()], lexicon)
+    if said is None or len(said) != _COUNTS[m.group(1).lower()]:
+        return text
+    return text[: m.start()]
+
+
+def _objects_first33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): the objects said first, then 'give P' ("Bottle or crisps, any one also
+    can, give Bob.", "Two items, both give Alice lah."): 'Give P <the objects>' — a choice when
+    'or' joins them ('any one also can', 'either one', 'any one' after it say the choice again),
+    all of them with 'and'; 'N items / things, both / all give P' is 'Give P the N items' (the
+    count checked by the grammar). Only when the objects name objects alone and P one person."""
+    m = _rx(
+        r"^(?P<objs>(?:the )?[a-z]+ (?:or|and) (?:the )?[a-z]+),\s*(?:(?:any one|either one|either)"
+        r"(?: also can| is fine| will do)?,\s*)?give (?P<p>[a-z][\w ]*?)(?: lah| la| leh)?"
+        r"\s*(?P<end>[.!]?)$"
+    ).match(text)
+    if m is not None:
+        objs = re.split(r" (?:or|and) ", m["objs"], flags=_F)
+        if _only_person(m["p"], lexicon) and all(_only_kind(o, lexicon, "object") for o in objs):
+            return f"Give {m['p']} {m['objs']}{m['end']}"
+        return text
+    m = _rx(
+        r"^(?P<n>two|three|four) (?P<k>items|things),\s*(?:both|all) give (?P<p>[a-z][\w ]*?)"
+        r"(?: lah| la| leh)?\s*(?P<end>[.!]?)$"
+    ).match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"Give {m['p']} the {m['n']} {m['k']}{m['end']}"
+
+
+def _openers33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): words that open or pace a request and ask nothing, from a closed list:
+    'Right, listen.' (a call for attention: 'Right.'), 'nothing fancy,' (the request is a plain
+    one), 'Quick as you like,' / ', quick as you like' (soon: the cell acts now); and a run-on
+    where the speaker's own plan follows a request with no stop ("Give Person B the bottle I'm
+    just going to check the hammers …": a comma before "I'm going to / I'm off to / I'll be",
+    when what is before it reads alone)."""
+    out = _sub(r"^((?:right|ok|okay|now|so)),?\s+listen\s*[.!,]\s*", r"\1. ", text)
+    out = _sub(r"^nothing (?:fancy|special|complicated|major),\s*", "", out)
+    if not _LATER24.search(out):
+        # (a time said with it is left: 'Quick as you like, later.' stays refused)
+        out = _sub(r"(?:(?<=[.!]\s)|^)quick as you like\s*[,.!]\s*", "", out)
+        out = _sub(r",\s*quick as you like(?=\s*[,.!]|$)", "", out)
+    m = _rx(
+        r"^([^,.;!?]+?) (i'm (?:just )?going to|i'm off to|i'll be|i am (?:just )?going to) "
+    ).match(out)
+    if m is not None and _reading(m.group(1), lexicon) is not None:
+        out = f"{m.group(1)}, {out[m.start(2) :]}"
+    return out
+
+
+def _places_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): where an object is, said beside the request in words that name nothing
+    of the scene: 'bring her the apple from the end', 'on the tray next to the films' (taken
+    off: a place the scene has, 'next to the sink', is left and refused); 'not the big one on
+    the workbench' where the big one starts on the workbench (where it lies, said to pick it
+    out: taken off), and 'the other spanner, not the big one' of two spanners is 'the spanner,
+    not the big one'; 'the small and medium boxes, the two little ones,' (the count said again:
+    taken off when it counts the objects before it); 'The chips are (meant) for P, could you take
+    them over' is 'could you take the chips over to P'."""
+
+    def place(m: re.Match[str]) -> str:
+        # only right after an object or a surface of the scene ('the alple from the end')
+        if not _names(m.group(1), lexicon) or _names(m.group(2), lexicon):
+            return m.group(0)
+        if _LATER24.search(m.group(3)) or _KEEP_WORDS.search(m.group(3)):
+            return m.group(0)
+        return m.group(1)
+
+    out = _sub(
+        r"\b([a-z]+)(\s+(?:from|next to|beside) the ([a-z]+(?: [a-z]+)?))(?=\s*(?:[,.!?]|$))",
+        place,
+        text,
+    )
+    m = _rx(r"\bnot the ([a-z]+) one on (the [a-z ]+?)(?=\s*[,.!]?$)").search(out)
+    if m is not None and _surface_only(m.group(2), lexicon):
+        (where,) = _ids(m.group(2), lexicon, "surface")
+        picked = [
+            o.id
+            for o in lexicon.scene.objects
+            if any(m.group(1).lower() in a.lower().split() for a in o.aliases)
+        ]
+        if len(picked) == 1 and starting_on(set(picked), where, lexicon):
+            out = out[: m.start()] + f"not the {m.group(1)} one" + out[m.end() :]
+    m = _rx(r"\bthe other ([a-z]+),\s*not the ([a-z]+) one\b").search(out)
+    if m is not None and len(_ids(f"the {m.group(1)}s", lexicon, "object")) == 2:
+        out = f"{out[: m.start()]}the {m.group(1)}, not the {m.group(2)} one{out[m.end() :]}"
+    m = _rx(r"^(the [a-z]+ and [a-z]+ [a-z]+s),\s*the (two|three) [a-z]+ ones,\s*").match(out)
+    if m is not None and len(_ids(m.group(1), lexicon, "object")) == _COUNTS[m.group(2).lower()]:
+        out = f"{m.group(1)} {out[m.end() :]}"
+
+    def over(m: re.Match[str]) -> str:
+        if not (_only_kind(m.group(1), lexicon, "object") and _only_person(m.group(2), lexicon)):
+            return m.group(0)
+        return f"{m.group(3)}{m.group(4)} {m.group(1).lower()} over to {m.group(2)}"
+
+    return _sub(
+        r"^(the [a-z ]+?) (?:is|are) (?:meant |supposed to be )?for ([a-z][\w ]*?),\s*((?:could|"
+        r"can|would) you |please )?(take|bring|carry) (?:it|them) over\b",
+        over,
+        out,
+    )
+
+
+def _everything_bar33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Everything (left) on the pitch bar the bottle and the cup heads to
+    Person A!': 'heads (over) to' is 'goes to' (before a person or a surface of the scene), 'bar'
+    after 'everything' is 'except', and where everything is ('(left) on the pitch') is taken off
+    when it names nothing of the scene (a surface of the scene may narrow it: left)."""
+    out = _sub(
+        r"\b(?:heads|is headed|is heading) (?:over |straight )?to (?=[a-z][\w ]*?\s*[.!]?$)",
+        "goes to ",
+        text,
+    )
+    m = _rx(r"^everything(?: left)?(?: (?:on|in|at) (the [a-z]+))? (?:bar|except) ").match(out)
+    if m is None or (m.group(1) and not _names_nothing(m.group(1), lexicon)):
+        return out if out != text and _reading(out, lexicon) is not None else text
+    return f"Everything except {out[m.end() :]}"
+
+
+def _formal33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): formal and hesitant wrappers from a closed list: '(and) with (the
+    greatest | all due) respect,' opening the request; 'no further questions' closing it (a
+    closer of the courtroom: no correction); a frame begun and given up for another, 'is it okay
+    if, sorry, could you …' ('could you …')."""
+    out = _sub(
+        r"(^|,\s*)(?:and )?with (?:the (?:greatest|utmost|deepest) |all (?:due )?)respect,\s*",
+        r"\1",
+        text,
+    )
+    out = _sub(r"(?<=[.!]\s)(thank you|thanks),\s*no further questions(?=\s*[.!]?$)", r"\1", out)
+    return _sub(
+        r"\b(?:is it (?:okay|ok|alright|all right)|would it be (?:okay|ok|alright|possible)) if,\s*"
+        r"(?:(?:sorry|um|er|erm),\s*)*(?=(?:could|can|would|will) you\b)",
+        "",
+        out,
+    )
+
+
 _STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
     _each_header33t,
     _kind_choice33t,
@@ -18837,6 +19288,22 @@ _STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
     _unknown_fixed33t,
     _placed_for33t,
     _purpose_ing33t,
+    _stays_on33t,
+    _each_said33t,
+    _both_named33t,
+    _got_them33t,
+    _need_over33t,
+    _telegraphed33t,
+    _said_again33t,
+    _whose33t,
+    _one_said33t,
+    _opening_scene33t,
+    _counted_close33t,
+    _objects_first33t,
+    _openers33t,
+    _places_said33t,
+    _everything_bar33t,
+    _formal33t,
 )
 
 
