@@ -455,29 +455,19 @@ KNOWN_MISSES = frozenset(
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
-        'nothing fancy, just hand person a that bottle, ta, the strings can wait',
         'the red book goes back up on the bookshelf with the others',
         'Person A is hungry, please bring her the alple from the end.',
         'The chips are meant for Peraon A, could you take them over.',
-        'Put the bnana on the tray next to the films, ta.',
         'Drop the scnner on the belt before the next load comes down.',
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
         "Would you put the black pen in the box for Priya?",
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
-        'Quick one before the school bell: bottle to Person B, please and thank you.',
-        "Person B needs the chips to keep him going, and Person A the bottle, it's hot by the "
-        'furnace.',
-        "It's Person B who ordered the cup, so hand it over to them, would you.",
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         'Wash-up time: both cups into the sink, green and white alike.',
         'The white plate on the rack, no, the counter, we need it for service.',
-        'can you put the red mug on the counter for me please my hands are all plaster',
-        'start off with crisps for alice and after that bob needs his bottle',
-        'chale pls the chips to person a eh',
-        "oh person b's been on about the bottle again hand it over",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
@@ -511,8 +501,6 @@ KNOWN_MISSES = frozenset(
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
-        'The machinist says Person A should have both of them, the bottle and the chips.',
-        "Sam can have any one of the pens, the millwright's lent us them.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
         'Sit the teddy in the high chair, no, better down on the play mat with her.',
@@ -520,26 +508,7 @@ KNOWN_MISSES = frozenset(
         'Both of the spanners, large and small, go away in the locker tonight.',
         "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
-        'Hello there, nothing fancy today, just the bottle for Person A, thank you kindly.',
-        "Ah, go on then, the bottle to Person A if you would, there's a good robot.",
-        'Kadrinchey la, and sorry to bother you, but Mrs Khan is asking for the water jug.',
-        "Cheers in advance, mate, the packing tape over to Tom when you can, the dustman's "
-        "blocking the yard.",
-        "Bob wants his crisps on the shelf, out of reach of the goatherd's kids.",
-        'The chips are wanted by Person B, apparently, according to the roadie.',
-        "I reckon Person A needs the bottle more than anyone, so that one's hers.",
-        "Person B could murder the chips and Person A would like the bottle, we've hockey at six.",
-        'Mrs Ortiz needs the globe for her geography lesson this afternoon.',
-        "Grandad wants the baby wipes, the little one's got jam absolutely everywhere.",
-        'The bottle? Alice. The crisps? Bob. Simple as that.',
-        "For Person A: the bottle. The cup too. And, oh yes, the apple, she's got a long gig.",
-        "Person A first, that's the bottle; next up Person B, that's the chips, the sousaphone "
-        "section's waiting.",
-        'The bottle, Person A, there you go, all yours.',
-        "There's a bottle over there, yeah? Person A wants it.",
-        "That's Kofi's drill, take it over to him, and the screws with it.",
         'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
-        'Chips for Person A, bottle for Person B, no rush on either of them.',
         "Either mug to Bob, whichever's closer to hand.",
         "Bob's off to the cricket, so he's taking both, the bottle and the crisps.",
         'One each for Alice and Bob, the bottle and the crisps, you decide who gets which.',
@@ -559,11 +528,8 @@ KNOWN_MISSES = frozenset(
         'A thing for each of them, Person A on the chips and Person B on the bottle.',
         'Both cups need a rinse after the titration, so into the sink they go, the green and the '
         'white.',
-        'All three pens into the box, the optometrist is coming to use the desk.',
-        "Mrs Khan is to have both blankets, the radiator by her bed's packed in.",
         'Every box in the place, all three, goes up onto the belt for the evening run.',
         "Lily's to have both blocks, red and green, she wants to build a tower.",
-        "Bob gets everything but the crisps, the osteopath's told him to cut down.",
         'Not the cup, not the apple, just the bottle to Person B.',
         "Chips for Person A, and definitely not for Person B, who's on a diet for the rugby.",
         "Nothing for Person B today, he's fasting; the bottle's for Person A.",
@@ -577,16 +543,8 @@ KNOWN_MISSES = frozenset(
         "The bottle's for Person B, hmm, no, my mistake, it's Person A's.",
         "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
         "Bottle to Person A, oh, correction from the skipper, it's Person B.",
-        'Place the bottle, hang on, no, hand the bottle to Person A, ua tsaug.',
         'Chips to Person B, no, wrong way round, chips to Person A and the bottle to Person B.',
         'Knife to Lena, oh no, not the knife, the tongs.',
-        "the bottle would help person a a lot, she's been busking all morning",
-        "Eprson A's asking after the chips, she's the tram driver.",
-        'Person A has earned the cyips after hauling the nets in.',
-        "Baby wpies to Ava, there's been a spill.",
-        'Would you mind setting the red mug down on the counter by the kettle?',
-        'Do you think Person A could have the cup for her tea break?',
-        "Is it okay if the globe goes up on the bookshelf, out of harm's way?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -663,8 +621,10 @@ KNOWN_UNCLEAR = frozenset(
 # one, measured once at the end of session 31, tuned on in session 32: asserted now, the rest in
 # KNOWN_MISSES; "blind31" written in session 32 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 32, its one wrong reading fixed
-# and tuned on in session 33: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# and tuned on in session 33: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
+# "blind32" written in session 33 by another engineer and committed alone, measured once at the
+# end of session 33: not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind32"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -752,6 +712,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind30"].entries}) >= 3
     assert len(CORPORA["blind31"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind31"].entries}) >= 3
+    assert len(CORPORA["blind32"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind32"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -113,7 +113,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 31; tuned on in session 32), blind31 (written in session 32 by another engineer and committed
 # alone, never opened by the engineers who change the grounder before its one measurement at the
-# end of session 32; its one wrong reading fixed and tuned on in session 33).
+# end of session 32; its one wrong reading fixed and tuned on in session 33), blind32 (written in
+# session 33 by another engineer and committed alone, never opened by the engineers who change the
+# grounder before its one measurement at the end of session 33; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -162,6 +164,7 @@ PARTS = (
     "blind29",
     "blind30",
     "blind31",
+    "blind32",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
