@@ -412,6 +412,9 @@ KNOWN_MISSES = frozenset(
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'the red book goes back up on the bookshelf with the others',
         'Drop the scnner on the belt before the next load comes down.',
+        # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
+        # give Alice."; session 33, 12t)
+        "Two items, both give Alice lah.",
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
         "Would you put the black pen in the box for Priya?",

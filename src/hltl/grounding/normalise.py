@@ -19498,28 +19498,31 @@ def _each_said33t(text: str, lexicon: Lexicon) -> str:
 
 
 def _both_named33t(text: str, lexicon: Lexicon) -> str:
-    """Session 33 (12t): 'both mugs, (the) red and (the) blue(,)' names the two mugs again by
-    what tells them apart: 'both mugs', when 'the red mug' and 'the blue mug' are the scene's two
-    mugs (any other pair is left). Then 'both mugs, could they go to Alice?' is 'could both mugs
-    go to Alice?', and 'easy / gently does it' (take care) is taken off between commas."""
+    """Session 33 (12t): 'Both mugs, (the) red and (the) blue, …' opening the instruction names
+    the two mugs again by what tells them apart: 'Both mugs …', when 'the red mug' and 'the blue
+    mug' are the scene's two mugs (any other pair is left; later in a clause that names other
+    objects the words could be about them, as session 29's near forms say: left). 'Both mugs,
+    could they go to Alice?' is 'could both mugs go to Alice?', and 'easy / gently does it' (take
+    care) is taken off between commas."""
     out = _drop(r",\s*(?:gently|easy|steady|slowly) does it(?=\s*[,.!]|$)", text, lexicon)
 
     def named(m: re.Match[str]) -> str:
-        kind = _singular(m.group(2).lower())
-        both = _ids(f"the {m.group(2)}", lexicon, "object")
-        one = _ids(f"the {m.group(3)} {kind}", lexicon, "object")
-        two = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
+        kind = _singular(m.group(3).lower())
+        both = _ids(f"the {m.group(3)}", lexicon, "object")
+        one = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
+        two = _ids(f"the {m.group(5)} {kind}", lexicon, "object")
         if len(both) != 2 or len(one) != 1 or len(two) != 1 or one | two != both:
             return m.group(0)
-        return f"{m.group(1)}{m.group(2)}{m.group(5)}"
+        return f"{m.group(1) or ''}{m.group(2)}{m.group(3)} "
 
     out = _sub(
-        r"\b(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and (?:the )?([a-z]+)(?: ones)?(,?)",
+        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and "
+        r"(?:the )?([a-z]+)(?: ones)?,\s*",
         named,
         out,
     )
     return _sub(
-        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?[a-z]+s),\s*(could|can|would|will) they "
+        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?[a-z]+s),?\s*(could|can|would|will) they "
         r"(go|be taken|be given) (to [a-z][\w ]*?)\s*\?",
         r"\1\3 \2 \4 \5?",
         out,
@@ -19775,27 +19778,21 @@ def _counted_close33t(text: str, lexicon: Lexicon) -> str:
 
 def _objects_first33t(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12t): the objects said first, then 'give P' ("Bottle or crisps, any one also
-    can, give Bob.", "Two items, both give Alice lah."): 'Give P <the objects>' — a choice when
-    'or' joins them ('any one also can', 'either one', 'any one' after it say the choice again),
-    all of them with 'and'; 'N items / things, both / all give P' is 'Give P the N items' (the
-    count checked by the grammar). Only when the objects name objects alone and P one person."""
+    can, give Bob."): 'Give P <the objects>' — a choice when 'or' joins them ('any one also
+    can', 'either one', 'any one' after it say the choice again), all of them with 'and'. Only
+    when the objects name objects alone and P one person ('Two items, both give Alice' stays
+    refused: session 28's near form, a count is not one name)."""
     m = _rx(
         r"^(?P<objs>(?:the )?[a-z]+ (?:or|and) (?:the )?[a-z]+),\s*(?:(?:any one|either one|either)"
         r"(?: also can| is fine| will do)?,\s*)?give (?P<p>[a-z][\w ]*?)(?: lah| la| leh)?"
         r"\s*(?P<end>[.!]?)$"
     ).match(text)
-    if m is not None:
-        objs = re.split(r" (?:or|and) ", m["objs"], flags=_F)
-        if _only_person(m["p"], lexicon) and all(_only_kind(o, lexicon, "object") for o in objs):
-            return f"Give {m['p']} {m['objs']}{m['end']}"
+    if m is None:
         return text
-    m = _rx(
-        r"^(?P<n>two|three|four) (?P<k>items|things),\s*(?:both|all) give (?P<p>[a-z][\w ]*?)"
-        r"(?: lah| la| leh)?\s*(?P<end>[.!]?)$"
-    ).match(text)
-    if m is None or not _only_person(m["p"], lexicon):
-        return text
-    return f"Give {m['p']} the {m['n']} {m['k']}{m['end']}"
+    objs = re.split(r" (?:or|and) ", m["objs"], flags=_F)
+    if _only_person(m["p"], lexicon) and all(_only_kind(o, lexicon, "object") for o in objs):
+        return f"Give {m['p']} {m['objs']}{m['end']}"
+    return text
 
 
 def _openers33t(text: str, lexicon: Lexicon) -> str:
