@@ -19498,26 +19498,31 @@ def _each_said33t(text: str, lexicon: Lexicon) -> str:
 
 
 def _both_named33t(text: str, lexicon: Lexicon) -> str:
-    """Session 33 (12t): 'Both mugs, (the) red and (the) blue, …' opening the instruction names
-    the two mugs again by what tells them apart: 'Both mugs …', when 'the red mug' and 'the blue
-    mug' are the scene's two mugs (any other pair is left; later in a clause that names other
-    objects the words could be about them, as session 29's near forms say: left). 'Both mugs,
-    could they go to Alice?' is 'could both mugs go to Alice?', and 'easy / gently does it' (take
-    care) is taken off between commas."""
+    """Session 33 (12t): 'both mugs, (the) red and (the) blue,' names the two mugs again by what
+    tells them apart: 'both mugs', when 'the red mug' and 'the blue mug' are the scene's two
+    mugs (any other pair is left) and the sentence names no other object (with one, as in
+    session 29's near form 'Give Alice the cup and both mugs, red and blue.', the words could be
+    about it: left). 'Both mugs, could they go to Alice?' is 'could both mugs go to Alice?', and
+    'easy / gently does it' (take care) is taken off between commas."""
     out = _drop(r",\s*(?:gently|easy|steady|slowly) does it(?=\s*[,.!]|$)", text, lexicon)
 
     def named(m: re.Match[str]) -> str:
-        kind = _singular(m.group(3).lower())
-        both = _ids(f"the {m.group(3)}", lexicon, "object")
-        one = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
-        two = _ids(f"the {m.group(5)} {kind}", lexicon, "object")
+        kind = _singular(m.group(2).lower())
+        both = _ids(f"the {m.group(2)}", lexicon, "object")
+        one = _ids(f"the {m.group(3)} {kind}", lexicon, "object")
+        two = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
         if len(both) != 2 or len(one) != 1 or len(two) != 1 or one | two != both:
             return m.group(0)
-        return f"{m.group(1) or ''}{m.group(2)}{m.group(3)} "
+        before = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+        after = re.split(r"[.;!?]", m.string[m.end() :])[0]
+        if _ids(before, lexicon, "object") or _ids(after, lexicon, "object"):
+            return m.group(0)
+        # opening the sentence, what follows is its verb ('Both spanners go …'); later, a clause
+        # of its own ('Lily's to have both blocks, she wants …')
+        return f"{m.group(1)}{m.group(2)}{' ' if not before.strip() else ', '}"
 
     out = _sub(
-        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and "
-        r"(?:the )?([a-z]+)(?: ones)?,\s*",
+        r"\b(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and (?:the )?([a-z]+)(?: ones)?,\s*",
         named,
         out,
     )
