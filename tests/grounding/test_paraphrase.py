@@ -210,28 +210,17 @@ KNOWN_MISSES = frozenset(
         "as well thanks",
         "okay so Person A's having the cup and the apple's going over to Person B off you go",
         "okay listen the chips are for Person A the bottle's for Person B got it",
-        "Carol would like a mug. Red or blue, grab whichever one is nearer to you.",
-        "Either book can go on the desk, I just need one out for the lesson.",
-        "Pass Person A the cup or else the apple, depending on what's easiest to reach.",
         "They both want something. Bottle over to Person A please, and cup across to Person B.",
-        "The apple can go to either person, I'm not bothered which of them.",
-        "Everyone gets one thing: the cup for Alice, the apple for Bob and the crisps for Carol.",
         "Those two mugs want to go on the counter, please.",
         "Drop all three of the pens into the box, they keep rolling off.",
-        "Two spanners, one to Kofi and one to Jess.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
         "Everything that's a box goes on the conveyor, except the big one, leave that on the "
         "pallet.",
-        "Mr Novak wants a plate — the white one, mind, not the blue.",
-        "The blanket on the trolley stays there; Mrs Khan gets the other one.",
         "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
-        "Person A will take anything at all as long as it isn't the cup.",
         "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
-        "Give Person B the apple and the cup, well, not the cup, just the apple.",
         "Bottle on the shelf, no wait, to Alice.",
-        "Crisps to Bob, ah, not Bob, Alice.",
         "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
@@ -256,21 +245,12 @@ KNOWN_MISSES = frozenset(
         "he's waiting.",
         "For Person B, bottle, please give. Thank you.",
         "Bob wants the bottle Alice wants the crisps that's all of it.",
-        "Hand Kofi a spanner, whichever's nearest your gripper.",
-        "One thing each: the chips to one of them, the bottle to the other, you pick who gets "
-        "what.",
-        "Whichever of the two people is closer can have the bottle.",
         "All three of the boxes want to go on the conveyor, in whatever order suits you.",
         "For reading group, lay out both books on the desk, the two of them.",
-        "The pair of spanners to Jess, she'll need the two.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
         "Lily wants a block to chew on. Not the red one, love, the other.",
-        "Kofi's after whichever spanner isn't already on the workbench.",
-        "Alice needs a mug, but the red one's got a crack, so not that one.",
-        "Person B can have anything except the apple.",
-        "Bib to Ava, oh no, she's too big for bibs, to Lily.",
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
@@ -307,28 +287,12 @@ KNOWN_MISSES = frozenset(
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Anything at all for Person A, just the one item, whatever you grab first.",
-        "Person A and Person B both want a drink, so the bottle to one and the cup to the "
-        "other, whichever way round.",
-        "Each student gets a book, you choose who gets which.",
-        "Either spanner in the locker, whichever's closer to hand.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Give the two people a single item each: Person A the bottle, Person B the apple.",
         "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
         "chair.",
-        "Nothing for Person A today; the chips go to Person B.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Mrs Khan wants a blanket, but leave the one on the cart where it is and give her the "
-        "other.",
-        "Mr Novak's getting the plate that's sitting out, not the one up in the plate rack.",
-        "Zoe can have the red book, not the one on the bookshelf.",
-        "Not to Lily, she'll only chew it; give the teddy to Ava.",
-        "Chips for Bob, ah, no, wrong way round, Alice is the one wanting chips.",
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
-        "The apple for Person B, I mean the bottle, leave the apple.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
-        "Black pen to Priya, oh, she marks in red, so the red one instead.",
-        "Scanner to Tom. No, not Tom, Mia's the one who asked.",
         "bob's been on the bike all day give him the bottle thx",
         "sorry typing one handed, chips to person b",
         "Pop the cjips up on the shelf before the kids find them.",
@@ -452,8 +416,6 @@ KNOWN_MISSES = frozenset(
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
         # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
-        "So the bottle is for Person B, and the chips, well, those are Person A's, so give them to "
-        "Person A.",
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
@@ -465,41 +427,8 @@ KNOWN_MISSES = frozenset(
         "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
-        "Either mug to Bob, whichever's closer to hand.",
-        "Bob's off to the cricket, so he's taking both, the bottle and the crisps.",
-        'One each for Alice and Bob, the bottle and the crisps, you decide who gets which.',
-        "Any one of the cup, the bottle or the apple for Person B, the banjo player's not fussy.",
-        "Person A can have either the apple or the chips, whatever's nearest.",
-        'One thing apiece for them: Person A takes the cup, Person B takes the apple.',
-        "One of these to Person A, the bottle or the chips, I don't mind which.",
-        'Of everything lying about here, Person A only wants the bottle.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
-        "Sam can have any of the pens, he's not fussed which colour.",
-        'Each patient gets a blanket, either way round is fine.',
-        "Any one of the boxes onto the belt, the supervisor isn't bothered which.",
-        "Either plate onto the worktop, I'll plate up on whichever you pick.",
-        'Put the two of them, bottle and crisps, up on the shelf.',
-        'Every single item here goes to Person B, all four of them.',
-        'Person A gets the drinking things, which is the bottle plus the cup, for the roadies.',
-        'A thing for each of them, Person A on the chips and Person B on the bottle.',
-        'Both cups need a rinse after the titration, so into the sink they go, the green and the '
-        'white.',
-        'Every box in the place, all three, goes up onto the belt for the evening run.',
-        'Not the cup, not the apple, just the bottle to Person B.',
-        "Chips for Person A, and definitely not for Person B, who's on a diet for the rugby.",
-        "Nothing for Person B today, he's fasting; the bottle's for Person A.",
-        "Not on the floor, into Person A's hand, the bottle.",
-        'The bottle goes to Person A and to nobody else.',
-        'Anything but the chips for Person B.',
-        "Mr Lee's to get the grey blanket and not the blue, he says that colour gives him a "
-        "headache.",
-        'Onto the belt with any box apart from the big one, whichever you like.',
-        "Crisps to Alice, oh hang about, I got that wrong, they're Carol's.",
-        "The bottle's for Person B, hmm, no, my mistake, it's Person A's.",
         "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
-        "Bottle to Person A, oh, correction from the skipper, it's Person B.",
-        'Chips to Person B, no, wrong way round, chips to Person A and the bottle to Person B.',
-        'Knife to Lena, oh no, not the knife, the tongs.',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -519,7 +448,6 @@ KNOWN_UNCLEAR = frozenset(
         "asked.",
         # blind27 (tuned on in session 29)
         # blind31 (tuned on in session 33)
-        'The globe to the student, not to the teacher.',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
