@@ -19393,6 +19393,8 @@ _EXCLAIMS33T = (_INTERJECTION19 | _ADDRESS19) - {
     *("slowly", "like", "hands", "fine", "right", "well", "so", "now", "ok", "okay", "yeah"),
     *("yep", "yup", "aye", "alright", "old", "me", "my", "our", "good", "young", "big"),
     *("little", "people", "easy", "steady", "careful", "smart", "o"),
+    # hesitations are repair words (repairs.py, session 33's subject and object repairs)
+    *("hmm", "um", "uh", "er", "erm"),
 }
 _FIX_CUE33T = r"(?:sorry|no|wait|oops|whoops|actually|i mean|i meant|hang on|hold on|oh no)\b"
 
