@@ -19205,6 +19205,8 @@ def _each_header33t(text: str, lexicon: Lexicon) -> str:
     else:
         return text
     rest = text[m.end() :]
+    if "," in m.group(0) and not re.match(r"(?:the |[A-Z])", rest):
+        return text  # after a comma, the list itself ("…, mind: …" is session 33 (12r)'s)
     rest = rest[:1].upper() + rest[1:]
 
     def whose(w: re.Match[str]) -> str:
