@@ -229,10 +229,6 @@ KNOWN_MISSES = frozenset(
         "just, um, set the thermometer on the bedside table, that'd be grand.",
         "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
         "you are very kind.",
-        "Alright mate, bus driver here, I've got four minutes till my next run. Be a legend and "
-        "chuck the packing tape on the belt, cheers.",
-        "Hiya, lifeguard here, dripping all over your floor, sorry. Stick the crisps up on the "
-        "shelf, would you? Ta.",
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
@@ -262,16 +258,8 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
-        "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
-        "terribly passing Sam the notepad? Thanks a bunch.",
-        "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
-        "the magazine down on the bedside locker? Lovely, thank you.",
-        "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
-        "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
-        "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
@@ -280,10 +268,8 @@ KNOWN_MISSES = frozenset(
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
-        "Alice wants the bottle. Bob wants the crisps. Sort the pair of them out.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
-        "The cup. Person B. The chips. Person A. Ready when you are.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
@@ -304,14 +290,8 @@ KNOWN_MISSES = frozenset(
         "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "Ah, good afternoon, apologies, choir practice ran over again. Whenever you have a "
-        "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
-        "so good, pass Priya the red pen. Many thanks indeed.",
-        "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
-        "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
@@ -333,7 +313,6 @@ KNOWN_MISSES = frozenset(
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
-        'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
@@ -349,14 +328,11 @@ KNOWN_MISSES = frozenset(
         'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
         'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
-        "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
-        "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
-        'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
@@ -435,15 +411,8 @@ KNOWN_MISSES = frozenset(
 KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
-        "Hand that over to Person A when you're ready.",
-        "Plate to Lena. The one she likes. You know the one I mean.",
-        "One of them gets the chips, no idea which, you'll have to ask.",
         "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
         # blind22 (tuned on in session 24)
-        'Person B spoke of the cup and the apple. Please, give it to her now.',
-        'Priya came by looking for her pen. Could you take it back to her?',
-        'The student by the radiator wants the scissors, can you take them over?',
-        'Put one of the boxes on the belt, the one Mia put a red sticker on.',
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)

@@ -4621,15 +4621,22 @@ def _inert_sentences(text: str, lexicon: Lexicon) -> str:
 
 # courtesy in frames a held word is part of: each asks nothing of its own
 _COURTESY_FRAMES: tuple[tuple[str, str], ...] = (
-    # "would you be a dear / a love / an angel and give …": could you give
-    (r"\b(would|could|will|can) you be (?:a|an|my) [a-z]+ and\s+", r"\1 you "),
+    # "would you be a dear / a love / an angel and give …": could you give (session 33, 12s:
+    # "would you be a good sort and hand …", "be a real star and …": a kind word before it)
+    (
+        r"\b(would|could|will|can) you be (?:a|an|my) (?:(?:good|real|proper|absolute|kind|"
+        r"lovely|little|total) )?[a-z]+ and\s+",
+        r"\1 you ",
+    ),
     (r"^(?:be (?:a|an) [a-z]+ and|be a love,?)\s+", ""),
     # "Pretty please (with sugar / a cherry on top)": please
     (r"\bpretty please(?: with (?:sugar|a cherry|cherries|bells) on(?: top)?)?\b", "please"),
     # "When convenient, …", "At your convenience, …", "When you get a chance, …"
     (
         r"(^|(?<=[.!?])\s*)(?:when (?:convenient|it's convenient|you can)|at your "
-        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec))\s*,\s*",
+        # session 33 (12s): 'a second', 'a tick' (blind22)
+        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec|second|tick))"
+        r"\s*,\s*",
         r"\1",
     ),
     # "I hope this is okay, …", "I hope that's alright, …"
@@ -6536,7 +6543,10 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
 _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
-    r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
+    # session 33 (12s): 'ready when you are', 'you help me' (blind21), 'quick as you like'
+    r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|"
+    r"(?:as )?(?:quick|fast|soon) as you (?:like|can)|"
+    r"there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
     _F,
@@ -13796,7 +13806,10 @@ def _which_gets28r(text: str, lexicon: Lexicon) -> str:
 _WHO_CHOOSES28R = re.compile(
     r"\s*,\s*(?P<w>whoever|whichever)(?:'s| is) (?:nearer|closer|nearest|closest|free|handier|"
     r"handiest|quicker|quickest|easier|easiest|easiest to reach|nearer to you|closer to you|"
-    r"nearest to you|closest to you|to hand)(?=\s*(?:[,.!?]|$))",
+    r"nearest to you|closest to you|to hand|"
+    # session 33 (12s): "… closer to your hand" before more words (blind22; "whichever's closer
+    # to hand" closing the text is 12r's _FREE_CHOICE33R)
+    r"(?:nearer|closer|nearest|closest) to your hand)(?=\s*(?:[,.!?]|$))",
     _F,
 )
 
@@ -20206,10 +20219,12 @@ _TRAILING_HELD32S = frozenset(
 )
 
 
-# how long or since when, in such a statement ("she's been out on the water all day")
+# how long or since when, in such a statement ("she's been out on the water all day"); session
+# 33: and 'all over the place' ("his lines are all over the place": no count)
 _TRAILING_TIME32S = re.compile(
     r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
-    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours))\b"
+    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours)|all over the "
+    r"(?:place|shop)|in (?:two|five|ten|twenty|a (?:minute|mo|sec|tick|jiffy))(?: minutes)?)\b"
 )
 
 
@@ -20250,6 +20265,10 @@ def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool
     object."""
     pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
+    if not re.sub(r"^(?:'[a-z]+|\s+[a-z]+)", "", m["pred"]).strip():
+        # session 33: "…; the crisps, Alice's.": a possessive that says whose the things before
+        # it are (the afterthoughts fuzz: taken off, the crisps had gone to Bob), no statement
+        return False
     if any(
         w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
         for w in words
@@ -20334,6 +20353,115 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_otherwise31s,
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
+
+
+# Session 33 (12s): a greeting opening the instruction, with the rest of its sentence ("Morning,
+# it's the dentist up from outpatients.", "Afternoon, I'm the carpenter from the unit next door,
+# after a small favour.", "Hello, paramedic, just dropping off some paperwork for the manager.")
+_GREETING33S = re.compile(
+    r"^(?:(?:ah|oh|well|right)\s*,?\s+)?(?P<said>(?:hello|hi|hiya|hey|hullo|morning|afternoon|"
+    r"evening|good (?:morning|afternoon|evening|day)|alright|all right)\b[^.!?]*[.!]+)\s+"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+# words that would make the greeting's sentence ask, point at a thing, or say when
+_GREETING_HELD33S = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "send", "fetch", "get"),
+        *("gets", "want", "wants", "wanted", "need", "needs", "needed", "like", "likes"),
+        *("fancy", "fancies", "asked", "asking", "it", "them", "that", "those", "these", "this"),
+        *("one", "ones", "both", "either", "any", "which", "whichever", "too", "also", "instead"),
+        *("or", "if", "unless", "then", "first", "later", "tomorrow", "tonight", "wait"),
+        *("until", "till", "not", "no", "don't", "never", "cancel", "please", "could", "can"),
+        *("would", "will", "should", "must"),
+    }
+)
+
+
+def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): a sentence that opens on a greeting and says who the speaker is or
+    why they came ("Hello, sorry, I'm the tailor, I've come to measure the manager for her
+    suit. If you'd be so good, pass Priya the red pen.") asks for nothing: it goes, and the
+    sentences after it are read. Only when it names no object or surface of the scene, holds
+    none of _GREETING_HELD33S (a hand-over, a want, a word pointing at a thing, a choice, a
+    time, a negation, a modal that could ask), names a person only in a clause of its own
+    (three words or more the scene does not name, no 'after'), and nothing after it says he /
+    she / him / her / they / them (who they are could hang on a name in it, or on someone it
+    names whom the scene does not hold)."""
+    m = _GREETING33S.match(text)
+    if m is None:
+        return text
+    # "Morning, it's the dentist …": the speaker saying who it is, no thing pointed at
+    said = re.sub(
+        r"^([a-z ]+,\s*)it(?:'s| is) (?=(?:the|a|an|your|just) )", r"\1", m["said"], flags=_F
+    )
+    # "… I've got four minutes till my next run.": the speaker's own time
+    said = re.sub(r"\b(?:till|until) (?:my|our) ", " ", said, flags=_F)
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", said.lower())
+    if any(w in _GREETING_HELD33S or w.split("'")[0] in _GREETING_HELD33S for w in words):
+        return text
+    if _ids(m["said"], lexicon, "object") or _ids(m["said"], lexicon, "surface"):
+        return text
+    if _ids(m["said"], lexicon, "human"):
+        # a person named: only in a clause of the speaker's own ("I've come to measure the
+        # manager for her suit"), not a want ('Alice is after a drink') or a terse part that may
+        # allot ('for Alice', "Alice's turn", 'Alice next')
+        scene = _scene_words29(lexicon)
+        own = [w for w in words[1:] if len(w) > 3 and w.split("'")[0] not in scene]
+        if "after" in words or len(own) < 3:
+            return text
+    if re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", m["rest"], _F):
+        return text  # "Hello, I'm Carol's plumber. Hand her …": 'her' may hang on the greeting
+    return m["rest"]
+
+
+# Session 33 (12s): a request asked as a question whose subject is a list of objects ("Could the
+# bowl and the spoon both go on the tray, please?"): the grammar reads the question with one
+# object only, and the statement ('The bowl and the spoon could go …') with the list
+_MODAL_FIRST33S = re.compile(
+    r"^(?P<mod>could|can|would|will|might)\s+(?P<subj>(?:the )?[a-z][a-z ]*? and (?:the )?"
+    r"[a-z][a-z ]*?)\s+(?P<rest>(?:both\s+)?(?:go|be put|be placed|be moved)\b.*)$",
+    _F,
+)
+
+
+def _modal_first33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the question above said as the statement, when its subject names
+    objects of the scene only (each word of it)."""
+    m = _MODAL_FIRST33S.match(text.strip())
+    if m is None or not _things31(m["subj"], lexicon):
+        return text
+    subj = m["subj"][:1].upper() + m["subj"][1:]
+    return f"{subj} {m['mod'].lower()} {m['rest']}"
+
+
+# Session 33 (12s): a correction that names its person in a cleft ("Gloves to Mia, no, Tom's the
+# one loading my trailer."): the person is what the correction says
+_CLEFT_CORRECTED33S = re.compile(
+    r"(?P<cue>,\s*(?:no|sorry|i mean|actually|wait|no wait)(?:,\s*|\s+))(?P<who>[A-Z][a-z]+(?: "
+    r"[A-Z][a-z]+)?)(?:'s| is) the one(?: (?:who|that))? (?P<rest>[a-z][^,.;!?]*?)(?P<end>[.!]*)"
+    r"\s*$"
+)
+
+
+def _cleft_corrected33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the cleft above closing the instruction is its person alone, when that
+    is one person of the scene and what the cleft says of them names nothing of the scene and
+    holds none of _TRAILING_HELD32S ('Tom's the one who wants the tape' is left)."""
+    m = _CLEFT_CORRECTED33S.search(text)
+    if m is None or not _only_person(m["who"], lexicon) or _ids(m["rest"], lexicon):
+        return text
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", m["rest"].lower())
+    if any(w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S for w in words):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['who']}{m['end'] or '.'}"
+
+
+_STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _greeting_said33s,
+    _modal_first33s,
+    _cleft_corrected33s,
+)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
@@ -21357,7 +21485,34 @@ def _either_person33r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['prep']} either of the two people{text[m.end() :]}"
 
 
+# "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now."
+_CORRECTED_AWAY33R = re.compile(
+    r"^(?P<head>.+?\b(?:no|sorry|oops|i mean|i meant),?\s+(?:i mean\s+|i meant\s+)?(?:to )?"
+    r"(?P<q>[A-Za-z][\w ]*?)),\s*(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?P<why>(?:too|not|no longer|"
+    r"off|done with|finished with)\b[a-z' ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_away33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to another person ('I mean to Lily'), "Ava's too big
+    for teddies now" says why of the person corrected away: taken off when P is one person the
+    text names before the correction, the correction names another, and the remark names nothing
+    of the scene but the request's objects."""
+    m = _CORRECTED_AWAY33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    p, q = _ids(m["p"], lexicon), _ids(m["q"], lexicon)
+    cue = m.start("q")
+    if p == q or not p <= _ids(text[:cue], lexicon, "human"):
+        return text
+    if not _ids(m["why"], lexicon) <= _ids(text[:cue], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _corrected_away33r,
     _to_one_other33r,
     _anything_at_all33r,
     _sitting_out33r,
@@ -21399,6 +21554,8 @@ _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
+    *_STEPS33S,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
