@@ -478,7 +478,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
             )
-        off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
+        off = _PUT_OFF30S.search(text) or _LATER30S.search(text) or _LATER_END33L.search(text)
         if off is not None:
             raise GroundingError(
                 f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
@@ -1158,6 +1158,9 @@ def _names_any30s(text: str, lexicon: Lexicon) -> bool:
 # 'Later' opening a sentence ("Later, give Bob the cup.", "Later: Alice, cup."): the time of
 # what follows, not 'then' (read as an order word with nothing before it, it had been dropped)
 _LATER30S = re.compile(r"(?:^|[.;!?]\s+)(?P<said>later)\b(?!\s+(?:on|than)\b)", re.I)
+# 'later' after a comma, closing the text ("…. Quick as you like, later."): a filler dropped
+# before it had left it to be dropped too (session 33, lead)
+_LATER_END33L = re.compile(r",\s*(?P<said>later(?: on)?)\s*[.!]*\s*$", re.I)
 
 # words that put a task off (session 20: refused, since acting now could be wrong; 'now',
 # 'today', 'soon', 'asap', 'right away' are read)
