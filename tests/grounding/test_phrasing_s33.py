@@ -27,7 +27,9 @@ READS = [
     ("Nothing fancy today, just the apple for Bob, thanks.", "apple>B", CELL),
     ("Oh, go on then, the cup to Carol.", "cup>C", CELL),
     ("The apple? Bob. The cup? Carol. Simple as that.", "apple>B & cup>C", CELL),
+    # (a') 'all yours' said to the person just addressed
     ("The cup, Carol, there you go, all yours.", "cup>C", CELL),
+    ("The cup, Carol, all yours.", "cup>C", CELL),
     ("Cheers in advance, the apple to Bob.", "apple>B", CELL),
     (
         "The crisps for Alice. The cup too. And, oh yes, the apple.",
@@ -136,6 +138,17 @@ READS = [
     # (v) what it is for, of that person
     ("Bob needs the crisps to keep him going, and Carol the apple.", "chips>B & apple>C", CELL),
     ("Mr Lee needs the jug to tide him over.", "jug>B", WARD),
+    # (w) whose the things are, then the handover to that same person
+    (
+        "The apple is for Bob, and the cup, well, that's Carol's, so give it to Carol.",
+        "apple>B & cup>C",
+        CELL,
+    ),
+    (
+        "The apple is for Bob, and the cup, that's Carol's, so hand it over to Carol.",
+        "apple>B & cup>C",
+        CELL,
+    ),
     # (a) a header of the speaker's: a quick one before a bell
     ("Quick one before the bell: the apple to Bob.", "apple>B", CELL),
     # (b) a courtesy or address before 'please' without a comma
@@ -151,7 +164,10 @@ def test_blind31_kinds_read(text: str, want: str, scene: object) -> None:
 REFUSED = [
     # (a) a part of the list with nothing named after it, or with no one named
     ("Go on then.", CELL),
+    # (a') 'all yours' with no person addressed just before it: whose?
     ("The cup, all yours.", CELL),
+    ("The cup to Bob, the apple, all yours.", CELL),
+    ("Bob gets the cup. The apple, all yours.", CELL),
     ("Simple as that.", CELL),
     ("No rush on the apple, the cup to Carol.", CELL),
     # (c) an idiom before a person; a pronoun after it that may hand her something else
@@ -214,6 +230,8 @@ REFUSED = [
     ("start off with the cup and after that bob needs the apple", CELL),
     # (v) a pronoun that cannot be the one person named
     ("Mrs Khan needs the jug to keep him going.", WARD),
+    # (w) the handover to another person than the owner
+    ("The apple is for Bob, and the cup, that's Carol's, so give it to Alice.", CELL),
     # (a) before a person
     ("Quick one before Carol: the apple to Bob.", CELL),
 ]

@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.repairs import _first_name, _last_name
 from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene
 
@@ -5988,6 +5989,29 @@ def _surface_only(words: str, lexicon: Lexicon) -> bool:
     return _only(words, lexicon, "surface")
 
 
+_REPAIR_WORD33L = re.compile(
+    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say|um+|uh+|er+|erm+)\b)+"
+    r"\s*,?\s*",
+    _F,
+)
+
+
+def _taken_back33l(text: str, lexicon: Lexicon) -> set[str]:
+    """Session 33 (lead): the people ``text`` names and takes back at once by a repair ('for
+    Bob, I mean Alice': Bob), so that 'the other one' after it is not read as the one person
+    neither said (12c's repairs fuzz: "The cup is for Bob, I mean Alice, and the apple goes to
+    the other one." read apple>C, where Bob is as likely)."""
+    taken: set[str] = set()
+    for m in _REPAIR_WORD33L.finditer(text):
+        before = _last_name(text[: m.start()], lexicon)
+        after = _first_name(text[m.end() :], lexicon)
+        if before is None or after is None:
+            continue
+        if all(r.kind == "human" for r in before[0].refs + after[0].refs):
+            taken |= {r.id for r in before[0].refs} - {r.id for r in after[0].refs}
+    return taken
+
+
 def _pronouns18(text: str, lexicon: Lexicon) -> str:
     """Pronouns and ellipsis said of one person: 'P wants X. Give it to them.' ('them' for the one
     person the text names, who asked), '…, sort that out (for them)' after a want, 'Then the Y,
@@ -6013,8 +6037,10 @@ def _pronouns18(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",\s*same (?:person|one|guy|lady)\s*([.!]?)$", r" to the same person\1", out)
     other = re.search(r"\b(to|for) the other (?:one|person)\b", out, _F)
     if other and people:
-        # "… and the chips are for the other one": the one person not named
-        left = [h for h in lexicon.scene.humans if h.id not in people]
+        # "… and the chips are for the other one": the one person not named (one taken back
+        # by a repair is not named: "for Bob, I mean Alice, …" names Alice alone)
+        kept = [h for h in people if h not in _taken_back33l(out[: other.start()], lexicon)]
+        left = [h for h in lexicon.scene.humans if h.id not in kept]
         if len(left) == 1:
             out = _sub(
                 r"\b(to|for) the other (?:one|person)\b", rf"\1 {_name(left[0].id, lexicon)}", out
@@ -10459,7 +10485,7 @@ _STEPS32: tuple[Callable[[str, Lexicon], str], ...] = (
 
 # The speaker's own words said as a comma part or sentence of their own (a closed list): what the
 # request is not ('nothing fancy today'), giving in ('go on then'), that it is all there is
-# ('Simple as that'), handing it over ('all yours'), thanks ahead ('Cheers in advance'), what the
+# ('Simple as that'), thanks ahead ('Cheers in advance'), what the
 # speaker has just remembered ('oh yes'), and that neither task is pressing ('no rush on either of
 # them'). Each names nothing and changes nothing asked.
 _PARTS33 = re.compile(
@@ -10468,8 +10494,6 @@ _PARTS33 = re.compile(
     r"nothing (?:fancy|special)(?: today| this time)?|"
     r"(?:ah|oh|well),? go on(?:,)? then|go on(?:,)? then|"
     r"(?:it's |that's |it is |that is )?(?:as )?(?:simple|easy) as that|"
-    r"(?:there you go|there you are),? (?:it's |that's )?all (?:yours|theirs)|"
-    r"(?:it's |that's )?all yours|"
     r"(?:cheers|ta|thank you|thanks|many thanks) in advance|"
     r"(?:and,? )?(?:oh|ah),? yes|"
     r"(?:there's )?no (?:rush|hurry)(?: at all)? (?:on|with|for) (?:either|any|both|each|all|"
@@ -10482,7 +10506,7 @@ _PARTS33 = re.compile(
 def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a comma part or sentence that is wholly one of the closed list above taken
     off, when it names nothing and what is left names a person or surface (whom or where the
-    request is for: 'all yours' said with no one named is the hearer's)."""
+    request is for)."""
     if not _PARTS33.search(text):
         return text
     said = _stretches_dropped(
@@ -10494,6 +10518,26 @@ def _speaker_parts33(text: str, lexicon: Lexicon) -> str:
         return text
     # "And, the apple": the 'and' kept before what followed the part taken off
     return re.sub(r"\b(And|and),\s+(?=the\b)", r"\1 ", said)
+
+
+# "The bottle, Person A, there you go, all yours.": handing it over, said to the person just
+# addressed
+_ALL_YOURS33 = re.compile(
+    r",\s*(?P<p>[A-Z][A-Za-z ]*?),\s*(?:(?:there|here) you (?:go|are),\s*)?(?:it's |that's )?"
+    r"all yours(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _all_yours33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: 'all yours' (and 'there you go' before it) taken off when the comma part
+    before it is one person of the scene alone, the one addressed ("The cup to Bob, the apple,
+    all yours": whose? left)."""
+    if "all yours" not in text:
+        return text
+    m = _ALL_YOURS33.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start()]}, {m['p']}{m['end'].strip()}"
 
 
 # wants said by an idiom: a closed list (docs/grounding.md, "Session 33 (engineer 12)"), each
@@ -11042,6 +11086,28 @@ def _keep_going33(text: str, lexicon: Lexicon) -> str:
     return _KEEP_GOING33.sub(dropped, text)
 
 
+# "…, and the chips, well, those are Person A's, so give them to Person A": whose the things are,
+# then the handover to that same person
+_THOSE_ARE33 = re.compile(
+    r"\b(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?),\s*(?:well,\s*)?(?:those|they|that|"
+    r"it)(?:'s| are| is) (?P<p>[A-Z][A-Za-z ]*?)'s,\s*so (?:give|hand|pass|take) (?:them|it) "
+    r"(?:over )?to (?P<q>[A-Z][A-Za-z ]*?)(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _those_are33(text: str, lexicon: Lexicon) -> str:
+    """Session 33: the closing part above is 'X to P', when X is objects only and the owner and
+    the one handed them are the same one person (the handover says it; 'them' is X)."""
+    if "'s, so " not in text:
+        return text
+    m = _THOSE_ARE33.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["p"], lexicon) != _ids(m["q"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['x']} to {m['q']}{m['end']}"
+
+
 def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
     """Session 33: a courtesy or address of the session-24 list opening the instruction before
     'please' without a comma ("chale pls the chips to person a") taken off, as with one."""
@@ -11053,6 +11119,7 @@ def _courtesy_please33(text: str, lexicon: Lexicon) -> str:
 
 _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts33,
+    _all_yours33,
     _idioms33,
     _would_help33,
     _more_than33,
@@ -11075,6 +11142,7 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
     _start_with33,
     _keep_going33,
     _courtesy_please33,
+    _those_are33,
 )
 
 
@@ -16276,6 +16344,14 @@ def _i_mean_after30r(text: str, lexicon: Lexicon) -> str:
 _SORRY_AFTER30R = re.compile(r",\s*sorry\s*[,;:-]\s*(?P<why>[a-z][a-z' -]*?)(?P<end>\s*[.!]?)$", _F)
 
 
+# words that change what was said ('swap the people', 'the other way round'): never an apology
+_CHANGES33L = re.compile(
+    r"\b(?:swap|swop|switch|reverse|change|changed|other way|wrong way|round|around|instead|"
+    r"mixed|mix|muddled)\b",
+    _F,
+)
+
+
 def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     """Session 30 (12r): ', sorry, <words>' closing a text whose words name nothing of the scene
     and hold no word that counts, chooses, negates or points back is an apology (its reason),
@@ -16284,6 +16360,8 @@ def _sorry_after30r(text: str, lexicon: Lexicon) -> str:
     m = _SORRY_AFTER30R.search(text)
     if m is None or not _inert28(m.group("why"), lexicon) or _TIME30R.search(m.group("why")):
         return text
+    if _CHANGES33L.search(m.group("why")):
+        return text  # ", sorry, swap the people": a change of its own (session 33, lead)
     before = text[: m.start()]
     if not re.search(rf"(?:^|[,.;]\s*)(?:{_CUE19})\s*,", before, _F):
         return text
@@ -19401,7 +19479,1073 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_otherwise31s,
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
+# -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
+
+
+def _share_out33r(node: Node | None) -> bool:
+    """Whether ``node`` is a share-out: an 'or' of 'and's of single tasks, each 'and' the same
+    objects to the same people, another way round."""
+    if not isinstance(node, Group) or node.op != "or" or len(node.children) < 2:
+        return False
+    ways = [c for c in node.children if isinstance(c, Group) and c.op == "and"]
+    if len(ways) != len(node.children) or not all(
+        isinstance(t, Task) for c in ways for t in c.children
+    ):
+        return False
+    objs = {frozenset(t.obj for t in tasks(c)) for c in ways}
+    people = {frozenset(t.target for t in tasks(c)) for c in ways}
+    return len(objs) == 1 and len(people) == 1
+
+
+def _objects_named33r(words: list[str], lexicon: Lexicon) -> bool:
+    """Whether each of ``words`` is one whole name of one object, each another object."""
+    if not all(_one_object32r(w, lexicon) for w in words):
+        return False
+    return len(set().union(*(_ids(w, lexicon) for w in words))) == len(words)
+
+
+def _object_said33r(oid: str, lexicon: Lexicon) -> str | None:
+    """A name of object ``oid`` that names it alone in the scene ('the bottle'), or None."""
+    obj = next((o for o in lexicon.scene.objects if o.id == oid), None)
+    if obj is None:
+        return None
+    for name in (*obj.aliases, obj.category):
+        if _ids(f"the {name}", lexicon) == {oid}:
+            return f"the {name}"
+    return None
+
+
+# a closing remark that leaves a choice to the robot: how it picks ("whichever's closer to hand",
+# "whatever's nearest", "whichever's nearest your gripper", "depending on what's easiest to reach",
+# "whichever you like"), someone not minding which ("the banjo player's not
+# fussy", "he's not fussed which colour", "the supervisor isn't bothered which"), the speaker's
+# use of whichever is picked ("I'll plate up on whichever you pick", "I just need one out for
+# the lesson"), and, after a share-out,
+# "either way round is fine", "you decide who gets which"
+_FREE_CHOICE33R = re.compile(
+    r",\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|"
+    r"handiest)(?: to (?:hand|you)|(?: to)? (?:your|the) (?:gripper|arm|hand))?"
+    r"|whichever(?: one)? you (?:like|pick|choose|prefer|fancy)"
+    r"|(?:whatever|whichever)(?: one)? you (?:grab|reach|get to|can reach) first"
+    r"|depending on (?:what|which|whichever)(?:'s| is) (?:easiest|nearest|closest|handiest|"
+    r"quickest)(?: to (?:reach|get|grab))?"
+    r"|(?P<who>(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't|"
+    r" are not| aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)"
+    r"(?: (?:colour|color|one|size|kind|of them))?)?)"
+    r"|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|into) whichever(?: one)? you "
+    r"(?:pick|choose|use)"
+    r"|(?:i|we) (?:just |only )?need (?:the )?one(?: of them)?(?: out| there| down| up)?(?: for "
+    r"(?:the |my |our )?[a-z]+)?"
+    r"|(?P<share>(?:either|any) way(?: round)? (?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|"
+    r"choose) who gets (?:which|what)))"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _free_choice33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing remark leaving a choice to the robot (above) says again what
+    the choice before it says: taken off when what is left reads as one choice of objects (or,
+    for 'either way round' and 'who gets which', as a share-out; someone not minding which, after
+    a choice of people too). After one object, or a choice
+    of another kind, it is left, and refused."""
+    m = _FREE_CHOICE33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if m.group("share"):
+        chosen = _share_out33r(node)
+    else:
+        chosen = _one_choice28r(node, False) or (
+            m["who"] is not None and _one_choice28r(node, True)
+        )
+    if not chosen:
+        return text
+    return f"{head}{m.group('end') or '.'}"
+
+
+# "One each for Alice and Bob, the bottle and the crisps, …": the things said after the people
+_ONE_EACH_LISTED33R = re.compile(
+    r"^(?P<head>one (?:each|apiece) for (?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?)),\s*"
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_each_listed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One each for P and Q, X and Y' is session 29's 'One each for P and Q
+    out of X and Y', P and Q two people, X and Y two objects, each one named whole."""
+    m = _ONE_EACH_LISTED33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon):
+        return text
+    if not _objects_named33r(re.split(r" and ", m["x"], maxsplit=1, flags=_F), lexicon):
+        return text
+    return f"{m['head']} out of {m['x']}{text[m.start('end') :]}"
+
+
+# "Bob's off to the cricket, so he's taking both, the bottle and the crisps."
+_SO_TAKING33R = re.compile(
+    r"^(?P<lead>(?P<p>[A-Za-z][\w ]*?)(?:'s| is) [a-z][a-z' ]*?,\s*so )(?P<pro>he|she)(?:'s| is) "
+    r"taking (?P<x>(?:both,?\s*)?[^,;:.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _so_taking33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "P's off to …, so he's taking X" is "…, so he's having X" (what P takes
+    with him is his: session 32's "P's taking X home"): the remark before names P alone, the
+    pronoun may be P, and X names the scene's objects and nothing else ('taking X to Q', 'taking
+    X over', left, refused)."""
+    m = _SO_TAKING33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    pid = next(iter(_ids(m["p"], lexicon)))
+    if _ids(m["lead"], lexicon) != {pid} or not _fits(pid, m["pro"], lexicon):
+        return text
+    x = m["x"]
+    if not _objects_only(x, lexicon) or re.search(r"\b(?:to|over|back|home|away|out)\b", x, _F):
+        return text
+    return f"{m['lead']}{m['pro']}'s having {x}{m['end'] or '.'}"
+
+
+_NUMBERS33R = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+# "Put the two of them, bottle and crisps, up on the shelf": 'them' said before its list
+_THEM_LISTED33R = re.compile(
+    r"\bthe (?P<n>two|three|four|five|six) of them,\s*(?P<x>[a-z][a-z ]*?(?:,\s*[a-z][a-z ]*?)* "
+    r"and [a-z][a-z ]*?),",
+    _F,
+)
+
+
+def _them_listed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the two of them, X and Y,' with nothing named before it is the list:
+    'them' stands for what follows, when the list names as many different objects as the count
+    says, each whole (a count it does not meet, or a person in it, is left, refused)."""
+    m = _THEM_LISTED33R.search(text)
+    if m is None or _names(text[: m.start()], lexicon):
+        return text
+    parts = re.split(r",\s*(?:and\s+)?|\s+and\s+", m["x"], flags=_F)
+    if not _objects_named33r(parts, lexicon) or len(parts) != _NUMBERS33R[m["n"].lower()]:
+        return text
+    return f"{text[: m.start()]}{m['x']}{text[m.end() :]}"
+
+
+# "Every single item here goes to Person B, all four of them", "Every box in the place, all
+# three, goes up onto the belt"
+_EVERY_COUNTED33R = re.compile(
+    r"\b(?P<every>every (?P<single>single )?(?P<kind>[a-z]+))(?P<here> here| in the place| in "
+    r"the room| in sight)?(?P<mid>[^,;.!?]*?)(?P<count>,\s*all (?P<n>two|three|four|five|six)"
+    r"(?: of them)?)(?:,(?=\s*[a-z]))?(?=\s*(?:[,.;!]|$|[a-z]))",
+    _F,
+)
+
+
+def _every_counted33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'every (single) item (here) …, all four of them' is 'every item …' when
+    the count is the number of the scene's objects (of the kind said: 'every box …, all three'
+    with three boxes); 'single' and 'here' / 'in the place' go with it. A count the scene does not
+    meet is left, refused."""
+    m = _EVERY_COUNTED33R.search(text)
+    if m is None:
+        return text
+    kind = m["kind"].lower()
+    if kind in ("item", "thing", "object"):
+        have = len(lexicon.scene.objects)
+    elif _only_kind(kind, lexicon, "object"):
+        have = len(_ids(kind, lexicon, "object"))
+    else:
+        return text
+    if have != _NUMBERS33R[m["n"].lower()]:
+        return text
+    return f"{text[: m.start()]}every {m['kind']}{m['mid']}{text[m.end() :]}"
+
+
+# "the drinking things, which is the bottle plus the cup": a description, then what it is
+_WHICH_IS_LIST33R = re.compile(
+    r"\bthe (?P<desc>[a-z]+ (?:things|items|bits|stuff)),\s*which (?:is|are|means) "
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:plus|and|with) (?P<y>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _which_is_list33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the drinking things, which is the bottle plus the cup' is the list
+    'the bottle and the cup': the description names nothing of the scene and the list two
+    different objects, each whole."""
+    m = _WHICH_IS_LIST33R.search(text)
+    if m is None or _names(m["desc"].rsplit(" ", 1)[0], lexicon):
+        return text
+    x, y = m["x"], m["y"]
+    if not _objects_named33r([x, y], lexicon):
+        return text
+    return f"{text[: m.start()]}{x} and {y}{text[m.end() :]}"
+
+
+# "A thing for each of them, Person A on the chips and Person B on the bottle", "One thing apiece
+# for them: Person A takes the cup, Person B takes the apple."
+_THING_EACH33R = re.compile(
+    r"^(?:(?:a|one) (?:thing|item) (?:for each of them|(?:apiece|each) for (?:them|the two of "
+    r"them)|each|apiece)(?:,\s*mind)?|(?:everyone|everybody|each of them) gets? (?:one|a) (?:thing|"
+    r"item)|give (?:the two people|both people|them both|both of them|each of them) (?:a single|"
+    r"one|a|an) (?:item|thing) each)"
+    r"\s*[,:]\s*(?P<list>[^;.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+_ONE_SHARE33R = re.compile(
+    r"^(?:(?P<p>[A-Za-z][\w ]*?)(?: (?:on|takes|gets|has|having|with|is having|is getting)|'s "
+    r"(?:having|getting)) (?P<x>(?:the |a |an )?[a-z]+(?: [a-z]+)?)|(?P<x2>the [a-z]+(?: [a-z]+)?)"
+    r" (?:for|to) (?P<p2>[A-Za-z][\w ]*?)|(?P<p3>[A-Za-z][\w ]*?) (?P<x3>the [a-z]+(?: [a-z]+)?))$",
+    _F,
+)
+
+
+def _thing_each33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'A thing for each of them, P on the X and Q on the Y' (or 'P takes the
+    X, …'; "Everyone gets one thing: the X for P, …"; 'Give the two people a single item each: P
+    the X, …') is 'P gets the X and Q gets the Y': the header says each of the scene's people gets
+    one thing, and the list gives every one of them ('them', no one named before) one
+    different object, each whole; anything else (a person left out or twice, two things for one)
+    is left, refused."""
+    m = _THING_EACH33R.match(text)
+    if m is None:
+        return text
+    shares = [_ONE_SHARE33R.match(s) for s in re.split(r",\s*(?:and\s+)?|\s+and\s+", m["list"])]
+    if not all(shares):
+        return text
+    said = [
+        (s["p"] or s["p2"] or s["p3"], s["x"] or s["x2"] or s["x3"])
+        for s in shares
+        if s is not None
+    ]
+    if not all(_only_person(p, lexicon) for p, _x in said):
+        return text
+    if {next(iter(_ids(p, lexicon))) for p, _x in said} != {h.id for h in lexicon.scene.humans}:
+        return text
+    if len(said) != len(lexicon.scene.humans):
+        return text
+    if not _objects_named33r([x for _p, x in said], lexicon):
+        return text
+    out = [f"{p} gets {x}" for p, x in said]
+    joined = ", ".join(out[:-1]) + f" and {out[-1]}"
+    return f"{joined}{m['end'] or '.'}"
+
+
+# "Both cups need a rinse after the titration, so into the sink they go, the green and the white."
+_INTO_THEY_GO33R = re.compile(
+    r"^(?P<x>(?:both|the two|all (?:two|three|four)|the) [a-z]+s) (?:both |all )?(?:want|need|"
+    r"could do with) (?:a )?[a-z]+(?: (?P<why>(?:after|before|from) [a-z ]+?))?\s*,\s*(?:so )?"
+    r"(?P<prep>into|in|onto|on) (?P<s>the [a-z ]+?) (?:they go|with (?:them|the pair of them|both "
+    r"of them|the pair|the two of them))(?:,\s*the (?P<a>[a-z]+) and the (?P<b>[a-z]+))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _into_they_go33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Both cups need a rinse (after the titration), so into the sink they
+    go(, the green and the white)' is 'Put both cups into the sink' (session 32's 'into S with
+    them'): X the scene's objects only, what they need it after naming nothing of the scene, S one
+    surface, and the adjectives after it (when said) naming X's objects, each once."""
+    m = _INTO_THEY_GO33R.match(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    if not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if m["why"] and _names(m["why"], lexicon):
+        return text
+    x = m["x"]
+    if m["a"]:
+        kind = re.sub(r"^(?:both|the two|all \w+|the) ", "", x, flags=_F)[:-1]
+        said = [_ids(f"the {adj} {kind}", lexicon, "object") for adj in (m["a"], m["b"])]
+        if not all(len(s) == 1 for s in said) or said[0] | said[1] != _ids(x, lexicon):
+            return text
+        if said[0] == said[1]:
+            return text
+    return f"Put {x[:1].lower()}{x[1:]} {m['prep']} {m['s']}{m['end'] or '.'}"
+
+
+# "Not the cup, not the apple, just the bottle to Person B."
+_NOT_THESE33R = re.compile(
+    r"^(?P<nots>(?:not (?:the |a |an )?[a-z]+(?: [a-z]+)?,\s*)+)(?P<just>(?:just|only) )?"
+    r"(?P<rest>the .+)$",
+    _F,
+)
+# "Not on the floor, into Person A's hand, the bottle."
+_NOT_THERE33R = re.compile(
+    r"^not (?:on|in|onto|into|under) (?:the )?(?P<place>[a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<where>(?:into|onto|to|in|on) [^,;.!?]+?),\s*(?P<x>the [a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_these33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Not the X, not the Y, just the Z to P' opens with what is not asked
+    for: taken off when each 'not' names one object of the scene that the rest does not name
+    (the rest then reads alone); 'Not on the floor, into P's hand, the X' is 'The X into P's
+    hand' when the place not meant is none the rest says."""
+    m = _NOT_THESE33R.match(text)
+    if m is not None:
+        nots = [n for n in re.split(r",\s*", m["nots"]) if n.strip()]
+        said = [re.sub(r"^not ", "", n, flags=_F) for n in nots]
+        rest = m["rest"]
+        if not all(_one_object32r(s, lexicon) for s in said) or not _ids(rest, lexicon, "object"):
+            return text
+        if set().union(*(_ids(s, lexicon) for s in said)) & _ids(rest, lexicon):
+            return text
+        return f"{rest[:1].upper()}{rest[1:]}"
+    m = _NOT_THERE33R.match(text)
+    if m is None or not _one_object32r(m["x"], lexicon):
+        return text
+    if _names(m["place"], lexicon) and _ids(m["place"], lexicon) & _ids(m["where"], lexicon):
+        return text
+    if not _ids(m["where"], lexicon) or _ids(m["where"], lexicon, "object"):
+        return text
+    x = m["x"]
+    return f"{x[:1].upper()}{x[1:]} {m['where']}{m['end'] or '.'}"
+
+
+# ", and definitely not for Person B, who's on a diet for the rugby", ", not to the teacher"
+_NOT_FOR_OTHER33R = re.compile(
+    r",\s*(?:and )?(?:definitely |certainly |absolutely |just )?not (?:for|to) "
+    r"(?P<q>(?:the )?[A-Za-z][\w ]*?)(?:,\s*who(?:'s| is) (?P<who>[^,;.!?]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing ', (and) not for / to Q' after a request to another person
+    says who does not get it (an afterthought after a pause; the tuning part's 'Give Bob the
+    chips but not to Carol' stays refused): taken off when Q names people of the scene only,
+    none of whom the request names (so 'to the student, not to Noah', which picks a student, is
+    left), and a 'who …' about Q names nothing of the scene. What is left is read as said: 'The
+    globe to the student' with two students is refused naming them."""
+    m = _NOT_FOR_OTHER33R.search(text)
+    if m is None:
+        return text
+    q = _ids(m["q"], lexicon, "human")
+    if not q or _ids(m["q"], lexicon) != q or (m["who"] and _names(m["who"], lexicon)):
+        return text
+    head = text[: m.start()]
+    said = _ids(head, lexicon, "human")
+    if not said or said & q or not _ids(head, lexicon, "object"):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "Nothing for Person B today, he's fasting; the bottle's for Person A."
+_NOTHING_FOR33R = re.compile(
+    r"^(?:nothing for|not to|not for) (?P<q>[A-Za-z][\w ]*?)(?: today| this time| now| for now)?"
+    r"(?:,\s*(?P<pro>he|she|they)(?:'s| is|'re| are|'ll| will|'d| would) (?:only )?[a-z]+(?: "
+    r"[a-z]+)?)?\s*[;.]\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _nothing_for33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Nothing for Q (today)(, he's fasting); <request>' (or 'Not to Q, she'll
+    only chew it; …') opens with who gets nothing: taken off when Q is one person of the scene
+    the request does not name, the request names someone else, and the remark about Q names
+    nothing and its pronoun may be Q."""
+    m = _NOTHING_FOR33R.match(text)
+    if m is None or not _only_person(m["q"], lexicon):
+        return text
+    rest = m["rest"]
+    q = _ids(m["q"], lexicon)
+    said = _ids(rest, lexicon, "human")
+    if not said or said & q or not _ids(rest, lexicon, "object"):
+        return text
+    if _names(text[: m.start("rest")], lexicon) != _names(m["q"], lexicon):
+        return text
+    if m["pro"] and not _fits(next(iter(q)), m["pro"], lexicon):
+        return text
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+# "The bottle goes to Person A and to nobody else."
+_NOBODY_ELSE33R = re.compile(
+    r"(?:,\s*|\s+)(?:and |but )?(?:to |for )?(?:nobody|no one|no-one|noone) else(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _nobody_else33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'and to nobody else' closing a request to one person says what a
+    request says: taken off (after a request to two people, or none, left, refused)."""
+    m = _NOBODY_ELSE33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    if len(_ids(head, lexicon, "human")) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+_ANYTHING_BUT33R = re.compile(
+    r"\banything(?: at all)?,? (?:(?:but|except|apart from|other than|bar)|as long as it(?:'s not| "
+    r"isn't| is not)) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[,;.!]|$|\s(?:for|to|goes|go|"
+    r"onto|into|on|in)\b))",
+    _F,
+)
+
+
+def _anything_but33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'anything but the chips', 'anything at all as long as it isn't the
+    cup' is one of the scene's other objects (blind19's reading): the one object left, or 'any
+    one of the A, the B or the C', each said by a name of its own (X one whole name of the
+    scene's objects; where an object has no name of its own the text is left, refused)."""
+    m = _ANYTHING_BUT33R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    left = [o.id for o in lexicon.scene.objects if o.id not in _ids(m["x"], lexicon)]
+    said = [_object_said33r(oid, lexicon) for oid in left]
+    names = [n for n in said if n is not None]
+    if not names or len(names) != len(said):
+        return text
+    if len(names) > 1:
+        names = [f"any one of {', '.join(names[:-1])} or {names[-1]}"]
+    return f"{text[: m.start()]}{names[0]}{text[m.end() :]}"
+
+
+# "Onto the belt with any box apart from the big one, whichever you like."
+_ONTO_WITH33R = re.compile(
+    r"^(?P<prep>onto|into|on to|in to|up onto) (?P<s>the [a-z]+(?: [a-z]+)?) with "
+    r"(?P<x>[^,;:.!?]+?)(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _onto_with33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Onto S with X' is 'Put X onto S' (the motion first, then what is
+    moved): S one surface of the scene, X naming objects and no person or surface."""
+    m = _ONTO_WITH33R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    x = m["x"]
+    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    return f"Put {x} {m['prep'].lower()} {m['s']}{text[m.start('end') :]}"
+
+
+# a correction's cue said at length: "oh hang about, I got that wrong", "hmm, no, my mistake",
+# "oh, correction from the skipper", "no, wrong way round" (before the whole request again)
+_CORRECTION_CUE33R = re.compile(
+    r"[,.]\s*(?:(?:oh|ah|er|um),? )?(?:hang (?:about|on),? i (?:got|had) that wrong"
+    r"|(?:hmm|hm|erm|um),? no,? my mistake"
+    r"|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?"
+    r"|no,? (?P<way>wrong way round|the wrong way round)"
+    r"|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
+    r"\s*,\s*(?P<fix>.+)$",
+    _F,
+)
+# the person said again as an owner: "they're Carol's"
+_THEYRE_OWNED33R = re.compile(
+    r"^(?:(?:they're|they are|those are|these are) (?P<p>[A-Za-z][\w ]*?)'s|(?P<p2>[A-Za-z][\w "
+    r"]*?)(?:'s| is) the one (?:who (?:asked|asked for (?:it|them)|wants (?:it|them)|needs (?:it|"
+    r"them))|wanting (?P<w>it|them|(?:the )?[a-z]+)))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _correction_cue33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a correction's cue said at length (above) is 'no': "Crisps to Alice, oh
+    hang about, I got that wrong, they're Carol's" is "Crisps to Alice, no, to Carol" (the
+    owner said again a person of the scene other than the request's); "Knife to Lena, oh no, not
+    the knife, the tongs" is "…, no, the tongs" (what 'not' names is the request's object, or
+    its person: "Crisps to Bob, ah, not Bob, Alice"; 'well, not the cup, just the apple' too);
+    'no, wrong way round' before the whole request again is 'no'. The request corrected must
+    name one person; the correction is then read by the grammar's own rule."""
+    m = _CORRECTION_CUE33R.search(text)
+    if m is None:
+        return text
+    head, fix = text[: m.start()], m["fix"]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    if m["x"] is not None:
+        # what 'not' takes back: one object or the person of the request, and the fix one of
+        # its kind
+        if _one_object32r(m["x"], lexicon):
+            kind = "object"
+        elif _ids(m["x"], lexicon) == people and _only_person(m["x"], lexicon):
+            kind = "human"
+        else:
+            return text
+        if not _ids(m["x"], lexicon) <= _ids(head, lexicon) or not _ids(fix, lexicon, kind):
+            return text
+    if m["way"] is not None and not (_ids(fix, lexicon, "human") and _ids(fix, lexicon, "object")):
+        return text
+    owned = _THEYRE_OWNED33R.match(fix)
+    if owned is not None:
+        p = owned["p"] or owned["p2"]
+        if not _only_person(p, lexicon) or _ids(p, lexicon) == people:
+            return text
+        wanted = owned["w"] or "it"
+        if wanted.lower() not in ("it", "them") and not (
+            _ids(wanted, lexicon) and _ids(wanted, lexicon) == _ids(head, lexicon, "object")
+        ):
+            return text
+        fix = f"to {p}{owned['end'] or '.'}"
+    return f"{head}, no, {fix}"
+
+
+# "One of these to Person A, the bottle or the chips, …": 'these' said before its choice
+_ONE_OF_THESE33R = re.compile(
+    r"^(?:just )?one of (?:these|those|them|the two) (?P<to>to|for) (?P<p>[A-Za-z][\w ]*?),\s*"
+    r"(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) or (?P<y>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_of_these33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One of these to P, X or Y' is 'Either X or Y to P': 'these' stands for
+    the choice said after the person, two different objects of the scene, each whole; P one
+    person."""
+    m = _ONE_OF_THESE33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x, y = m["x"], m["y"]
+    if not _objects_named33r([x, y], lexicon):
+        return text
+    return f"Either {x} or {y} {m['to']} {m['p']}{text[m.start('end') :]}"
+
+
+# "Of everything lying about here, Person A only wants the bottle."
+_OF_EVERYTHING33R = re.compile(
+    r"^(?:out )?of (?:everything|all the things|all the stuff|all of it|all that)(?P<mid>(?: "
+    r"[a-z]+){0,4}),\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _of_everything33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Of everything lying about here, P only wants X' opens with what X is
+    picked out of, the scene's things: taken off when it names nothing of the scene and the rest
+    names one person and an object (the rest is then read alone)."""
+    m = _OF_EVERYTHING33R.match(text)
+    if m is None or _names(m["mid"], lexicon):
+        return text
+    rest = m["rest"]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    return f"{rest[:1].upper()}{rest[1:]}"
+
+
+# "Two spanners, one to Kofi and one to Jess."
+_TWO_ONE_EACH33R = re.compile(
+    r"^(?:the )?two (?P<kind>[a-z]+)s,\s*one (?:to|for) (?P<p>[A-Za-z][\w ]*?),? and (?:one|the "
+    r"other) (?:to|for) (?P<q>[A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _two_one_each33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Two spanners, one to Kofi and one to Jess' is 'One spanner each for
+    Kofi and Jess' (session 29's share-out): the scene has two of the kind, P and Q two people."""
+    m = _TWO_ONE_EACH33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon) or not _only_kind(
+        m["kind"], lexicon, "object"
+    ):
+        return text
+    if len(_ids(m["kind"], lexicon, "object")) != 2:
+        return text
+    return f"One {m['kind']} each for {m['p']} and {m['q']}{m['end'] or '.'}"
+
+
+# "One thing each: the chips to one of them, the bottle to the other, …"
+_ONE_AND_OTHER33R = re.compile(
+    r"^one (?:thing|item) each\s*[:,]\s*(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) one of them,"
+    r"\s*(?:and )?(?P<y>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) the other(?: one)?"
+    r"(?P<end>\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _one_and_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'One thing each: X to one of them, Y to the other' in a scene of two
+    people, none named, is 'One each for P and Q out of X and Y' (either way round); X and Y two
+    objects, each whole."""
+    m = _ONE_AND_OTHER33R.match(text)
+    humans = lexicon.scene.humans
+    if m is None or len(humans) != 2 or _ids(text, lexicon, "human"):
+        return text
+    if not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    p, q = (h.name or h.id for h in humans)
+    return f"One each for {p} and {q} out of {m['x']} and {m['y']}{text[m.start('end') :]}"
+
+
+# "Whichever of the two people is closer can have the bottle."
+_WHICHEVER_PERSON33R = re.compile(
+    r"^whichever of (?:the two(?: people)?|them) is (?:closer|nearer|nearest|closest|free|handier)"
+    r"(?: to you)? (?P<rest>(?:can have|gets|should get|can take) .+)$",
+    _F,
+)
+
+
+def _whichever_person33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Whichever of the two people is closer can have X' in a scene of two
+    people is 'Either of the two people can have X' (a choice of people, as session 28's 'either
+    of them'); with more people the text is left, refused."""
+    m = _WHICHEVER_PERSON33R.match(text)
+    if m is None or len(lexicon.scene.humans) != 2 or _ids(m["rest"], lexicon, "human"):
+        return text
+    return f"Either of the two people {m['rest']}"
+
+
+# ", in whatever order suits you" after things that all go
+_ANY_ORDER33R = re.compile(
+    r",\s*(?:and )?in (?:whatever|any) order(?: (?:suits you|you like|you want|you fancy|is "
+    r"easiest))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _any_order33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): ', in whatever order suits you' closing a request read as tasks in no
+    order (an 'and') says what that reading is: taken off; after steps in order ('then'), or a
+    choice, it is left, refused."""
+    m = _ANY_ORDER33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if not (isinstance(node, Group) and node.op == "and"):
+        return text
+    if not all(isinstance(c, Task) for c in node.children):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "The pair of spanners to Jess, she'll need the two."
+_NEEDS_BOTH33R = re.compile(
+    r",\s*(?P<pro>she|he|they)(?:'ll| will|'s going to| is going to)? (?:need|want|use) (?:the two|"
+    r"both|them both|both of them|the pair|the two of them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _needs_both33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): ", she'll need the two" closing a request that hands two objects to one
+    person, who the pronoun may be, says why: taken off (a count other than the request's, or
+    another person, is left, refused)."""
+    m = _NEEDS_BOTH33R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if node is None:
+        return text
+    done = list(tasks(node))
+    people = {t.target for t in done}
+    if len(done) != 2 or len(people) != 1 or any(t.kind != "deliver" for t in done):
+        return text
+    if not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "Mr Novak wants a plate — the white one, mind, not the blue."
+_NOT_THE_OTHER33R = re.compile(
+    r"\bthe (?P<a>[a-z]+) (?P<kind>one|[a-z]+)(?P<mind>,\s*mind)?,\s*not the (?P<b>[a-z]+)"
+    r"(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_the_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): '… the white one(, mind), not the blue' closing a text says which of two
+    of a kind again: the contrast is taken off when 'the A K' and 'the B K' are each one object
+    of the scene, another each (K said, or the kind of 'a K' before 'one'; 'a K — the A one'
+    then says 'the A K' once)."""
+    m = _NOT_THE_OTHER33R.search(text)
+    if m is None:
+        return text
+    kind, start = m["kind"], m.start()
+    if kind.lower() == "one":
+        said = list(re.finditer(r"\b(?:a|an|either) (?P<k>[a-z]+)\b", text[:start], _F))
+        if not said:
+            return text
+        kind = said[-1]["k"]
+        if re.fullmatch(r"\s*[,—–-]\s*", text[said[-1].end() : start]):
+            start = said[-1].start()  # 'a plate — the white one': the one said once
+    this = _ids(f"the {m['a']} {kind}", lexicon, "object")
+    other = _ids(f"the {m['b']} {kind}", lexicon, "object")
+    if len(this) != 1 or len(other) != 1 or this == other:
+        return text
+    return f"{text[:start]}the {m['a']} {kind}{m['end'] or '.'}"
+
+
+# "…, no, I mean the bottle, it's the bottle she's after."
+_ITS_THE_X33R = re.compile(
+    r"\b(?:no|sorry|actually),\s*(?:i mean |i meant )?(?P<said>(?:the )?[a-z]+(?: [a-z]+)?),\s*"
+    r"it's (?P<x>the [a-z]+(?: [a-z]+)?) (?:that |which )?(?:(?:she|he|they)(?:'s| is|'re| are) "
+    r"after|(?:she|he|they) (?:wants?|needs?|asked for))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_the_x33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to an object ('no, I mean the bottle'), "it's the
+    bottle she's after" says the correction again: taken off when it names the one object the
+    correction names (another object is left, refused; _said_why's kinds for people and
+    places)."""
+    m = _ITS_THE_X33R.search(text)
+    if m is None or not _one_object32r(m["said"], lexicon):
+        return text
+    if _ids(m["said"], lexicon) != _ids(m["x"], lexicon):
+        return text
+    return f"{text[: m.end('said')]}{m['end'] or '.'}"
+
+
+# "…, and not the blue, he says that colour gives him a headache."
+_EXCLUDED_REASON33R = re.compile(
+    r"\bnot (?:the )?[a-z]+(?: one)?(?P<cut>,\s*(?P<pro>she|he|they) (?:says|said|reckons|thinks|"
+    r"finds) (?:that (?:colour|color|one|size|kind)|it|that|those) [a-z' ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _excluded_reason33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): a closing reason the person gives for what 'not' leaves out ("…, and
+    not the blue, he says that colour gives him a headache") is taken off when it names nothing
+    of the scene and the request (what is left) names one person, whom the pronoun may be."""
+    m = _EXCLUDED_REASON33R.search(text)
+    if m is None or _names(m["cut"].split(" ", 2)[-1], lexicon):
+        return text
+    head = text[: m.start("cut")]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "Carol would like a mug. Red or blue, grab whichever one is nearer to you."
+_CHOICE_FOLLOWS33R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?P<v>would like|wants|needs|is after|'s after) an? (?P<k>[a-z]+)\."
+    r"\s*(?P<a>[a-z]+) or (?P<b>[a-z]+),\s*(?:just )?(?:grab|pick|take|choose|get|bring) "
+    r"whichever(?: one)?(?:'s| is) (?:nearer|closer|nearest|closest|handier)(?: to you)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _choice_follows33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'P would like a K. A or B, grab whichever one is nearer' is 'P would
+    like the A K or the B K, whichever': the second sentence says which Ks the first leaves
+    open, each 'the A K' one object of the scene, another each."""
+    m = _CHOICE_FOLLOWS33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    a, b = f"the {m['a']} {m['k']}", f"the {m['b']} {m['k']}"
+    if not _objects_named33r([a, b], lexicon):
+        return text
+    return f"{m['p']} {m['v']} {a} or {b}, whichever{m['end'] or '.'}"
+
+
+# "The blanket on the trolley stays there; Mrs Khan gets the other one." / "Mrs Khan wants a
+# blanket, but leave the one on the cart where it is and give her the other."
+_STAYS_OTHER33R = re.compile(
+    r"^(?:the (?P<k>[a-z]+) (?:on|in) the (?P<s>[a-z]+(?: [a-z]+)?) stays (?:there|put|where it "
+    r"is)\s*[;,.]\s*(?P<p>[A-Za-z][\w ]*?) gets the other(?: one)?|(?P<p2>[A-Za-z][\w ]*?) "
+    r"(?:wants|needs|would like) an? (?P<k2>[a-z]+),\s*but leave the one (?:on|in) the "
+    r"(?P<s2>[a-z]+(?: [a-z]+)?) (?:where it is|there|alone) and give (?:her|him|them) the "
+    r"other(?: one)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'The K on the S stays there; P gets the other one' (or 'P wants a K,
+    but leave the one on the S where it is and give her the other') is 'P gets the K that isn't
+    on the S', when the scene has two Ks, one of them starting on S (one surface)."""
+    m = _STAYS_OTHER33R.match(text)
+    if m is None:
+        return text
+    k, s, p = m["k"] or m["k2"], m["s"] or m["s2"], m["p"] or m["p2"]
+    if not _only_person(p, lexicon) or not _whole_name(s, lexicon, "surface"):
+        return text
+    kinds = _ids(k, lexicon, "object")
+    if len(kinds) != 2 or not _only_kind(k, lexicon, "object"):
+        return text
+    if len(starting_on(kinds, next(iter(_ids(s, lexicon))), lexicon)) != 1:
+        return text
+    return f"{p} gets the {k} that isn't on the {s}{m['end'] or '.'}"
+
+
+# "Kofi's after whichever spanner isn't already on the workbench."
+_WHICHEVER_ISNT33R = re.compile(
+    r"\bwhichever (?P<k>[a-z]+) (?:isn't|is not) (?:already |still )?(?P<what>(?:on|in) the "
+    r"[a-z]+(?: [a-z]+)?|the [a-z]+ one)(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _whichever_isnt33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'whichever K isn't (already) on the S' / 'isn't the A one' is 'the K
+    that isn't …' (the grammar's description), when the scene has two Ks (so one is left)."""
+
+    def said(m: re.Match[str]) -> str:
+        if len(_ids(m["k"], lexicon, "object")) != 2 or not _only_kind(m["k"], lexicon, "object"):
+            return m[0]
+        return f"the {m['k']} that isn't {m['what']}"
+
+    return _sub(_WHICHEVER_ISNT33R.pattern, said, text)
+
+
+# "Alice needs a mug, but the red one's got a crack, so not that one."
+_BUT_FLAWED33R = re.compile(
+    r",\s*but the (?P<a>[a-z]+) one(?:'s| is| has)(?: got)? (?:a crack|cracked|a chip|chipped|"
+    r"broken|dirty|filthy|leaking|stained)\s*,\s*so not that one(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _but_flawed33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "…, but the red one's got a crack, so not that one" after 'a K' is ',
+    but not the red one' (the exclusion, its reason taken off), when 'the red K' is one object
+    of the scene."""
+    m = _BUT_FLAWED33R.search(text)
+    if m is None:
+        return text
+    said = re.findall(r"\ban? ([a-z]+)\b", text[: m.start()], _F)
+    if not said or len(_ids(f"the {m['a']} {said[-1]}", lexicon, "object")) != 1:
+        return text
+    return f"{text[: m.start()]}, but not the {m['a']} one{m['end'] or '.'}"
+
+
+# "Zoe can have the red book, not the one on the bookshelf."
+_NOT_THE_ONE_ON33R = re.compile(
+    r"\bthe (?P<a>[a-z]+) (?P<k>[a-z]+),\s*not the one (?:up |down )?(?:on|in) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_the_one_on33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the red book, not the one on the bookshelf' is 'the red book' when
+    the red book is one object that does not start on S and another K does."""
+    m = _NOT_THE_ONE_ON33R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    this = _ids(f"the {m['a']} {m['k']}", lexicon, "object")
+    if len(this) != 1:
+        return text
+    on = set(
+        starting_on(_ids(m["k"], lexicon, "object"), next(iter(_ids(m["s"], lexicon))), lexicon)
+    )
+    if not on or on & this:
+        return text
+    return f"{text[: m.start()]}the {m['a']} {m['k']}{m['end'] or '.'}"
+
+
+# "Person A and Person B both want a drink, so the bottle to one and the cup to the other, …"
+_TO_ONE_OTHER33R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) both (?:want|need|would like) (?:an? "
+    r"[a-z]+|something)\s*,\s*so (?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) one(?: of them)? "
+    r"and (?P<y>(?:the )?[a-z]+(?: [a-z]+)?) (?:to|for) the other(?: one)?(?:,\s*(?:whichever|"
+    r"either|any) way(?: round)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _to_one_other33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'P and Q both want a drink, so X to one and Y to the other(, whichever
+    way round)' is 'One each for P and Q out of X and Y' (P and Q two people, X and Y two
+    objects, each whole)."""
+    m = _TO_ONE_OTHER33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon):
+        return text
+    if not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    return f"One each for {m['p']} and {m['q']} out of {m['x']} and {m['y']}{m['end'] or '.'}"
+
+
+# "Anything at all for Person A, just the one item, whatever you grab first."
+_ANYTHING_AT_ALL33R = re.compile(
+    r"^anything(?: at all)? for (?P<p>[A-Za-z][\w ]*?),\s*(?:just )?(?:the )?one(?: item| thing)?"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _anything_at_all33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'Anything at all for P, just the one item' is 'Any one of <every object
+    of the scene> for P', each object said by a name of its own (else left, refused)."""
+    m = _ANYTHING_AT_ALL33R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects]
+    names = [n for n in said if n is not None]
+    if len(names) < 2 or len(names) != len(said):
+        return text
+    listed = f"{', '.join(names[:-1])} or {names[-1]}"
+    return f"Any one of {listed} for {m['p']}{text[m.end() :]}"
+
+
+# "the plate that's sitting out, not the one up in the plate rack"
+_SITTING_OUT33R = re.compile(
+    r"\bthe (?P<k>[a-z]+) (?:that's|that is|which is) (?:sitting|lying|left) (?:out|about|around)"
+    r",\s*not the one (?:up |down )?(?:on|in) the (?P<s>[a-z]+(?: [a-z]+)?)(?P<end>,|\s*[.!]?$)",
+    _F,
+)
+
+
+def _sitting_out33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'the plate that's sitting out, not the one up in the plate rack' is 'the
+    plate that isn't on the rack' when the scene has two of the kind and one starts on S."""
+
+    def said(m: re.Match[str]) -> str:
+        kinds = _ids(m["k"], lexicon, "object")
+        if len(kinds) != 2 or not _only_kind(m["k"], lexicon, "object"):
+            return m[0]
+        if not _whole_name(m["s"], lexicon, "surface"):
+            return m[0]
+        if len(starting_on(kinds, next(iter(_ids(m["s"], lexicon))), lexicon)) != 1:
+            return m[0]
+        return f"the {m['k']} that isn't on the {m['s']}{'' if m['end'] == ',' else m['end']}"
+
+    return _sub(_SITTING_OUT33R.pattern, said, text)
+
+
+# "Black pen to Priya, oh, she marks in red, so the red one instead."
+_SO_INSTEAD33R = re.compile(
+    r"^(?P<head>[^,;.!?]+?),\s*(?:oh|ah|hmm),\s*(?P<pro>she|he|they) (?P<why>[a-z' ]+?),\s*so "
+    r"(?P<x>the [a-z]+ one|the [a-z]+ [a-z]+) instead(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _so_instead33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "X to P, oh, she marks in red, so the red one instead" is "X to P, no,
+    the red one": a remark about the request's one person (the pronoun may be P, the remark
+    names nothing of the scene), then another object of X's kind."""
+    m = _SO_INSTEAD33R.match(text)
+    if m is None or _names(m["why"], lexicon):
+        return text
+    head = m["head"]
+    people, objs = _ids(head, lexicon, "human"), _ids(head, lexicon, "object")
+    if len(people) != 1 or len(objs) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{head}, no, {m['x']}{m['end'] or '.'}"
+
+
+# "The apple for Person B, I mean the bottle, leave the apple."
+_LEAVE_CORRECTED33R = re.compile(
+    r"\b(?:i mean|i meant|no|sorry),?\s+(?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:and )?leave (?P<x>the "
+    r"[a-z]+(?: [a-z]+)?)(?: where it is| there| alone| be)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_corrected33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to another object ('I mean the bottle'), 'leave the
+    apple' says the correction again: taken off when the apple is one object the text names
+    before the correction and the correction another."""
+    m = _LEAVE_CORRECTED33R.search(text)
+    if m is None or not _objects_named33r([m["x"], m["y"]], lexicon):
+        return text
+    if not _ids(m["x"], lexicon) <= _ids(text[: m.start()], lexicon):
+        return text
+    return f"{text[: m.end('y')]}{m['end'] or '.'}"
+
+
+# "Bib to Ava, oh no, she's too big for bibs, to Lily."
+_CUE_REMARK33R = re.compile(
+    r"^(?P<head>[^,;.!?]+?),\s*(?:oh,? )?no,\s*(?P<pro>she|he|they)(?:'s| is|'re| are) "
+    r"(?P<why>[a-z' ]+?),\s*(?P<fix>to [A-Za-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cue_remark33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): "Bib to Ava, oh no, she's too big for bibs, to Lily" is "Bib to Ava, no,
+    to Lily": a remark about the request's one person (the pronoun may be them; it names
+    nothing of the scene but the request's object) before the person the correction gives it
+    to, another person of the scene."""
+    m = _CUE_REMARK33R.match(text)
+    if m is None:
+        return text
+    head = m["head"]
+    people = _ids(head, lexicon, "human")
+    if len(people) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+        return text
+    if not _ids(m["why"], lexicon) <= _ids(head, lexicon, "object"):
+        return text
+    q = m["fix"][3:]
+    if not _only_person(q, lexicon) or _ids(q, lexicon) == people:
+        return text
+    return f"{head}, no, {m['fix']}{m['end'] or '.'}"
+
+
+# "The apple can go to either person, …"
+_EITHER_PERSON33R = re.compile(r"\b(?P<prep>to|for) either (?:person|one)\b(?! of)", _F)
+
+
+def _either_person33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): 'to either person' in a scene of two people, none named elsewhere, is
+    'to either of the two people' ('person' alone names each of them)."""
+    m = _EITHER_PERSON33R.search(text)
+    if m is None or len(lexicon.scene.humans) != 2:
+        return text
+    if _ids(text[: m.start()] + text[m.end() :], lexicon, "human"):
+        return text
+    return f"{text[: m.start()]}{m['prep']} either of the two people{text[m.end() :]}"
+
+
+_STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _to_one_other33r,
+    _anything_at_all33r,
+    _sitting_out33r,
+    _so_instead33r,
+    _leave_corrected33r,
+    _cue_remark33r,
+    _either_person33r,
+    _choice_follows33r,
+    _stays_other33r,
+    _whichever_isnt33r,
+    _but_flawed33r,
+    _not_the_one_on33r,
+    _its_the_x33r,
+    _excluded_reason33r,
+    _two_one_each33r,
+    _one_and_other33r,
+    _whichever_person33r,
+    _any_order33r,
+    _needs_both33r,
+    _not_the_other33r,
+    _one_of_these33r,
+    _of_everything33r,
+    _one_each_listed33r,
+    _free_choice33r,
+    _so_taking33r,
+    _them_listed33r,
+    _every_counted33r,
+    _which_is_list33r,
+    _thing_each33r,
+    _into_they_go33r,
+    _not_these33r,
+    _not_for_other33r,
+    _nothing_for33r,
+    _nobody_else33r,
+    _anything_but33r,
+    _onto_with33r,
+    _correction_cue33r,
+)
+
+
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
+    *_STEPS33R,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections
     *_STEPS31R,
     # session 32 (12r): blind30's choices, counts, negation, exclusions and corrections

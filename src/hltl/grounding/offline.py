@@ -36,7 +36,7 @@ from hltl.grounding.normalise import (
     trades31,
 )
 from hltl.grounding.phrasing import dropped_refs, first_refs, refine, starting_on
-from hltl.grounding.repairs import repairs32l
+from hltl.grounding.repairs import object_repairs33l, repairs32l, subject_repairs33l
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -95,6 +95,7 @@ def parse_instruction(
     inside = _inside()
     if not inside:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
+        _refuse_deferred33l(text)
     inside.append(text)  # a rewrite reading a part again keeps what was lexed so far
     try:
         node = _parse(text, scene, lexicon, normalise=True)
@@ -123,6 +124,52 @@ def parse_instruction(
         raise GroundingError(f"{refused}; {more}") from None
     finally:
         inside.pop()
+
+
+# words that hand what comes next (or whether to start) to someone else's word: "The rest is up
+# to Carol.", "What comes next is Alice's call.", "…, and see what the supervisor says.",
+# "Depending on what the foreman says, …" (session 33, lead: 12c's deferrals fuzz)
+_DEFERRED33L = re.compile(
+    r"\b(?:is|are|'s|was)\s+(?:all\s+)?up to\s+(?!(?:the\s+)?(?:top|brim|rim|ceiling|line|mark)\b)"
+    r"|\b(?:[a-z]+'s|his|her|their)\s+(?:call|decision|say-so)\b(?!\s+(?:to|for|of)\b)"
+    r"|\bsee what\s+[\w' ]{1,40}?\s+(?:says|thinks|wants|decides)\b"
+    r"|\bdepending on (?:what|whatever|whether)\s+[\w' ]{1,40}?\s+"
+    r"(?:says|tells|decides|wants|thinks)\b"
+    r"|\b(?:wait|hang on|hold on) (?:for|till|until)\s+[\w' ]{1,40}?\s+"
+    r"(?:to (?:say|give|tell|decide)|says|gives|tells|decides)\b",
+    re.I,
+)
+
+
+# a last sentence that only says the robot is done then ("Then you're done.", "After that,
+# you're free.")
+_DONE33L = re.compile(
+    r"(?<=[.!?])\s+(?:(?:and )?then|after that,?)\s+you(?:'re| are) (?:done|free|finished)"
+    r"(?: for now| for the day)?\s*[.!]?\s*$",
+    re.I,
+)
+
+
+def _done_dropped33l(text: str) -> str:
+    """Session 33 (lead): ``text`` without a last sentence that only says the robot is done then
+    ("…. Bob first, please. Then you're done."): its 'then' orders nothing, and read with the
+    rest it had cost an order said before it or set one that was not said (12c's deferrals
+    fuzz: "Alice gets whatever Bob doesn't: Bob gets the bottle. Then you're done." read
+    bottle>B ; chips>A)."""
+    m = _DONE33L.search(text)
+    return text[: m.start()] if m and m.start() > 0 else text
+
+
+def _refuse_deferred33l(text: str) -> None:
+    """Session 33 (lead): an instruction that leaves what comes next (or when to start) to
+    someone else's word is refused: the plan would be incomplete, or wait on a word the robot
+    does not hear (blind30's time rule; 12c's deferrals fuzz found these read as handovers or
+    dropped: "Give Carol the apple. The rest is up to Carol." read every object to Carol)."""
+    m = _DEFERRED33L.search(text)
+    if m is not None:
+        end = re.compile(r"[.,;:!?]|$").search(text, m.end())
+        said = text[m.start() : end.start() if end else len(text)].strip()[:60]
+        raise GroundingError(f"{said!r} leaves what to do to someone else's word: say what to do")
 
 
 # 'either way round': the speaker allows the other distribution too
@@ -323,8 +370,13 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
 
 def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Node:
     if normalise:
-        text = trades31(trades29(order_colons(apostrophes(text)), lexicon), lexicon)
-        text = placed_list32l(repairs32l(text, lexicon), lexicon)
+        text = trades31(
+            trades29(order_colons(apostrophes(_done_dropped33l(text))), lexicon), lexicon
+        )
+        text = placed_list32l(
+            object_repairs33l(subject_repairs33l(repairs32l(text, lexicon), lexicon), lexicon),
+            lexicon,
+        )
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)

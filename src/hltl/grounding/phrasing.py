@@ -5687,6 +5687,10 @@ def _described_then_corrected(items: list[Item]) -> list[Item]:
     return items
 
 
+# 'onto' / 'into' say where a thing goes, never where it lies: no description (session 33, 12r)
+_MOTION_ON33R = frozenset({"onto", "into", "on to", "in to"})
+
+
 def _any_described(items: list[Item]) -> list[Item]:
     """'Any one of the pens in the box, please', 'Any cup on the tray': with no verb, a place
     after 'any (one of) <objects>' can say which of them are meant (those in the box) as well as
@@ -5700,7 +5704,7 @@ def _any_described(items: list[Item]) -> list[Item]:
                 continue
             if not (_objects(sent[k + 1]) and len({r.id for r in sent[k + 1].refs}) > 1):
                 continue
-            if not _is(sent[k + 2], "on"):
+            if not _is(sent[k + 2], "on") or sent[k + 2].text.lower() in _MOTION_ON33R:
                 continue
             s = _past_dets(sent, k + 3)
             if s < len(sent) and sent[s].kind == "ent" and sent[s].refs[0].kind == "surface":

@@ -28,6 +28,8 @@ _AFTER_A_LIST_WORD = re.compile(r"\b(and|or)\s*,?\s*(?:um+|uh+|er+|erm+)\s*,\s*"
 _DETS = r"(?:(?:the|a|an|my|our|your|his|her|their|that|this)\s+)?"
 _PREPS = r"(?:(?:to|for|on|onto|in|into|at|by|with)\s+)?"
 _BOUNDARY = re.compile(r"[.;:!?,—–]|\s-\s")
+# the kinds of names a bare hesitation repairs (a robot's name is not said so)
+_NAMED_KINDS = frozenset({"object", "human", "surface"})
 
 
 def _names(words: str, lexicon: Lexicon) -> list[Item]:
@@ -92,6 +94,27 @@ def _listed_after(words: str, kind: str, lexicon: Lexicon) -> bool:
     return found is not None and _kind(found[0]) == kind
 
 
+def _repair_between(
+    out: str, m: re.Match[str], lexicon: Lexicon, kinds: frozenset[str]
+) -> tuple[str, str, str] | None:
+    """Where ``m`` (a hesitation or a repair word) stands between two different names of one
+    kind in ``kinds``, with no list of that kind around them: (that kind, the words before the
+    name said, the words after the name meant); else None."""
+    before = _last_name(out[: m.start()], lexicon)
+    after = _first_name(out[m.end() :], lexicon)
+    if before is None or after is None:
+        return None
+    (said, ahead), (meant, behind) = before, after
+    kind = _kind(said)
+    if kind is None or kind != _kind(meant) or kind not in kinds:
+        return None
+    if {r.id for r in said.refs} == {r.id for r in meant.refs}:
+        return None  # "the cup, um, the cup": said again, not repaired
+    if _listed_before(ahead, kind, lexicon) or _listed_after(behind, kind, lexicon):
+        return None
+    return kind, ahead, behind
+
+
 def repairs32l(text: str, lexicon: Lexicon) -> str:
     """``text`` with each bare hesitation between two names of one kind, no list around them,
     said as the repair it is (', sorry, '), and each title said again said once."""
@@ -105,17 +128,80 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
         if m is None:
             return out
         pos = m.end()
-        before = _last_name(out[: m.start()], lexicon)
-        after = _first_name(out[m.end() :], lexicon)
-        if before is None or after is None:
-            continue
-        (said, ahead), (meant, behind) = before, after
-        kind = _kind(said)
-        if kind is None or kind != _kind(meant) or kind == "robot":
-            continue
-        if {r.id for r in said.refs} == {r.id for r in meant.refs}:
-            continue  # "the cup, um, the cup": said again, not repaired
-        if _listed_before(ahead, kind, lexicon) or _listed_after(behind, kind, lexicon):
+        if _repair_between(out, m, lexicon, _NAMED_KINDS) is None:
             continue
         out = f"{out[: m.start()]}, sorry, {out[m.end() :]}"
         pos = m.start() + len(", sorry, ")
+
+
+# "…, oh and Alice, I mean Bob wanted the bottle": a clause's subject repaired at once, then its
+# verb (session 33, lead)
+_SUBJECT_REPAIRED = re.compile(
+    r"(?P<pre>(?:^|[,.;:!?]\s*)(?:(?i:oh|ah|and|also|plus|then)\s+)*)"
+    r"(?P<said>[A-Z][\w]*(?: [A-Z][\w]*)?)\s*,\s*"
+    r"(?:(?i:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
+    r"(?P<meant>[A-Z][\w]*(?: [A-Z][\w]*)?)"
+    r"(?=\s+(?i:wanted|wants|needs|needed|would like|gets|is getting|asked for|should get|"
+    r"can have|has asked for|is after)\b)"
+)
+
+
+def _one_person(words: str, lexicon: Lexicon) -> frozenset[str] | None:
+    names = _names(words, lexicon)
+    if len(names) != 1 or _kind(names[0]) != "human" or len(names[0].refs) != 1:
+        return None
+    if names[0].text.lower() != words.lower():
+        return None
+    return frozenset(r.id for r in names[0].refs)
+
+
+def subject_repairs33l(text: str, lexicon: Lexicon) -> str:
+    """``text`` with a clause's subject repaired at once ("…, oh and Alice, I mean Bob wanted the
+    bottle") said once (the person meant): the repair takes back the name, not the clauses
+    before it (12c's repairs fuzz read `bottle>B & cup>B` for "Give Alice the cup, oh and Alice,
+    I mean Bob wanted the bottle")."""
+
+    def meant(m: re.Match[str]) -> str:
+        said = _one_person(m.group("said"), lexicon)
+        other = _one_person(m.group("meant"), lexicon)
+        if said is None or other is None or said == other:
+            return m.group(0)
+        return f"{m.group('pre')}{m.group('meant')}"
+
+    if "," not in text:
+        return text
+    return _SUBJECT_REPAIRED.sub(meant, text)
+
+
+# an object repaired at once by a repair word ("the barcode scanner, I mean the gloves")
+_OBJECT_REPAIR = re.compile(
+    r"\s*,\s*(?:(?:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
+    r"(?=(?:the|a|an|my|that)\s)",
+    _F,
+)
+
+
+def object_repairs33l(text: str, lexicon: Lexicon) -> str:
+    """``text`` with an object named and repaired at once to another ("Once she's got it, the
+    barcode scanner, I mean the gloves go to her too") said once (the object meant), when no list
+    goes on around them and the words after it go on with the clause: the repair replaces the
+    name, not the clause (12c's repairs fuzz lost the order 'once she's got it' set)."""
+    if _OBJECT_REPAIR.search(text) is None:
+        return text
+    out = text
+    pos = 0
+    while True:
+        m = _OBJECT_REPAIR.search(out, pos)
+        if m is None:
+            return out
+        pos = m.end()
+        between = _repair_between(out, m, lexicon, frozenset({"object"}))
+        if between is None:
+            continue
+        _, ahead, behind = between
+        if not re.match(
+            r"\s+(?:go|goes|to|for|should|can|is|are|needs?|on|onto|in|into)\b", behind, _F
+        ):
+            continue  # the clause must go on after the name meant
+        out = f"{ahead.rstrip()} {out[m.end() :]}"
+        pos = len(ahead)
