@@ -55,8 +55,6 @@ KNOWN_MISSES = frozenset(
         # blind8 (tuned on in session 10): "the third" after "one box each" is the box the two
         # do not get; read as a share of the three it is not said which goes where
         "Tom and Mia, one box each; the third goes on the belt",
-        # causes10 (session 10): 'left' is not read as a verb ("the one on the left")
-        "The chef wants the knife and the tongs left on the counter",
         # causes10: a remark or an aside naming an object ("upset about the cup", "who has the
         # knife") may ask for it or pick someone out by it, so it is not dropped
         "Bob is upset about the cup, so give him the apple",
@@ -113,29 +111,11 @@ KNOWN_MISSES = frozenset(
         # list after, 'one of the <description>', purposes ('to bang together', 'before
         # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
         # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
-        "Now then, dear, be a good helper and put Lily's bib on her high chair, won't you?",
         "The little one could do with her sippy cup",
         "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
         "load",
-        "Stock room's a mess, grab whichever box you like and stick it on the belt",
-        "Give each of them a pen, Priya and Sam, any colour",
-        "Both people get an item each: the cup for Person A and the apple for Person B",
-        "One of the snacks for Person B: the chips or the apple",
-        "Lily wants the two blocks to bang together",
-        "Clear everything onto the belt, leave the boxes where they are",
-        "Everything goes to the sink for washing, except for the spoon and the banana of course",
-        "No red pen for Sam, one of the other two will do",
-        "Load Tom up with the boxes, just not the small box",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
-        "Give Ava the teddy, won't you give Lily the bib too?",
-        "Could you bring Grandad's beaker over to him?",
-        "Give each of them a spanner, Kofi and Jess, any size",
-        "Both people get an item each: the chips for Person B and the bottle for Person A",
-        "One of the drinks for Person A: the bottle or the cup",
         "Both cups need to go in the sink before lunch",
-        "Clear everything into the locker, leave the spanners where they are",
-        "No black pen for Priya, one of the other two will do",
-        "Load Jess up with the spanners, just not the small one",
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
         # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
@@ -168,16 +148,12 @@ KNOWN_MISSES = frozenset(
         # 'do likewise with', comparatives ('lesser', 'smaller'), 'N deliveries' said after the
         # steps, fronted recipients ('Unto Person A the chips'), a surface alias used as a verb
         # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
-        "For the record, and with the greatest respect, would you kindly deliver the stapler "
-        "to Sam. Thank you, no further questions.",
         "Good morning, good morning! Before the next track, could our robot friend pop the "
         "lemon over to Mr Novak? Lovely stuff.",
         "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
         "maybe go to Carol? Sorry. Thank you.",
         "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
         "over to Mr Lee. Namaste.",
-        "Um, sorry, is it okay if, sorry, could you give Person B the bottle? Only if it's no "
-        "bother. Sorry!",
         "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
         "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
         "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
@@ -185,33 +161,18 @@ KNOWN_MISSES = frozenset(
         "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
         "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
-        "Give Person B the bottle, and thereafter the chips unto the same.",
         "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
-        "Apple, Person A. Chips, Person B. Cup, Person A. Bottle, Person B. Four deliveries, "
-        "what a display!",
-        "Either the notebook or the stapler shall be given to Priya, at your discretion.",
-        "Bottle or crisps, any one also can, give Bob.",
-        "Each patient, gently, receives one blanket, whichever colour.",
-        "Give unto Person B whichever thou wilt of the cup or the apple.",
         "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
         "The two blocks be Lily's treasure, arr, give her both!",
-        "Sorry, both mugs, the red and the blue, could they go to Alice?",
-        "Two items, both give Alice lah.",
         "The four treasures, all of them, unto Person A.",
         "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
         "bottle and the chips.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
-        "Ja, pack the locker with the lot, just not the two spanners.",
-        "Everything left on the pitch bar the bottle and the cup heads to Person A!",
-        "The hammer for Jess, eish, sorry, the drill for Jess.",
-        "Unto Person A the chips, nay, I misspeak, the bottle.",
         "We reported the cup was going to Person A. Correction: it's the apple.",
         "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",
-        "Forceps, sorry, I mean the spoon, to Omar.",
-        "Glue stick up on the shelf, oh no wait, on the desk, cariad, tidy.",
         "Pronto, the cup to Person A, capisce?",
         # blind18 (tuned on in session 20): kinds not met yet (docs/grounding.md, "Session 20"):
         # the speaker as 'me' inside a remark, corrections said with a remark ('hold on, Mummy's
@@ -221,25 +182,10 @@ KNOWN_MISSES = frozenset(
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
-        "Sorry, quick one, could Person B grab the chips off you? Cheers.",
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
-        "What I need is the bottle over with Person B.",
-        "Person B needs the chips, ugh, and after she's got them Person A's going to want the "
-        "bottle.",
-        "Person B is wanting the bottle only, kindly do the needful.",
         "Bottle first. To Alice. After, chips to Bob.",
-        "Something for both of them: the cup to Person A and the apple to Person B.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
-        "The small and medium boxes, the two little ones, onto the pallet.",
-        "Marco needs his tongs, just the one pair.",
         "Both of the mugs are Alice's, give her the pair.",
-        "Two things each: the bottle and cup to Person A, the chips and apple to Person B.",
-        "That one bottle, over to Person A, quick as you can.",
-        "Bob gets the lot, just leave the two mugs where they are.",
-        "Jess wants the other spanner, not the big one on the workbench.",
-        "tom wants the gloves and once hes got them mia wants the tape",
-        "apple n bottle both for person b pls",
-        "need the chips over with person b like right now",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
@@ -278,16 +224,11 @@ KNOWN_MISSES = frozenset(
         "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
         " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
-        "cup to person a first please and once shes got it the apple goes to person b",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
         "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
         "you are very kind.",
-        "Alright mate, bus driver here, I've got four minutes till my next run. Be a legend and "
-        "chuck the packing tape on the belt, cheers.",
-        "Hiya, lifeguard here, dripping all over your floor, sorry. Stick the crisps up on the "
-        "shelf, would you? Ta.",
         "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
         "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
@@ -317,16 +258,8 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "Xin chao. Please, you help me, give chips for Person A. Thank you, thank you, very kind.",
-        "Hello, paramedic, just dropping off some paperwork for the manager. Would you mind "
-        "terribly passing Sam the notepad? Thanks a bunch.",
-        "Morning, it's the dentist up from outpatients. Sorry to barge in, but could you set "
-        "the magazine down on the bedside locker? Lovely, thank you.",
-        "Afternoon, I'm the carpenter from the unit next door, after a small favour. Would you "
-        "be a good sort and hand Jess the torch? Much appreciated.",
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
-        "Noah desperately needs a ruler, his lines are all over the place.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
@@ -335,10 +268,8 @@ KNOWN_MISSES = frozenset(
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
-        "Alice wants the bottle. Bob wants the crisps. Sort the pair of them out.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
-        "The cup. Person B. The chips. Person A. Ready when you are.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
@@ -359,14 +290,8 @@ KNOWN_MISSES = frozenset(
         "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "Ah, good afternoon, apologies, choir practice ran over again. Whenever you have a "
-        "moment, might the crisps go up on the shelf? Bless you, that's lovely.",
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        "Hello, sorry, I'm the tailor, I've come to measure the manager for her suit. If you'd be "
-        "so good, pass Priya the red pen. Many thanks indeed.",
-        "Hiya, I'm the lorry for the two o'clock, sorry, early again. When you get a tick, could "
-        "the packing tape go on the belt? Ta, mate, you're a legend.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
@@ -387,9 +312,7 @@ KNOWN_MISSES = frozenset(
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        "Bottle. Person A. Quick as you like, she's weighing out in five.",
         "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
-        'Either the cup or the apple for Person B, whichever is closer to your hand, my friend.',
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
@@ -405,55 +328,36 @@ KNOWN_MISSES = frozenset(
         'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
         'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
-        "Gloves to Mia, no, Tom's the one loading my trailer.",
         "Salt on the rack, no, on the counter, the rack's only for plates.",
-        "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
-        'Could the bowl and the spoon both go on the tray, please?',
         'Can Mr Novak have the salt, please, he says the soup needs it?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',
         "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
         'much.',
-        'Sorry, the dogs are going mad outside, could you whizz the bib over to the high chair, '
-        'cheers.',
-        'Person A needs the cup for rinsing the core samples, and Person B wants the chips.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        "Priya wants the red pen left in the box, she'll sort it out later.",
-        'Pick up the cup and give it Person B, yeah, then the apple same way.',
-        "Give Marco the knife, he's filleting, and the tongs as well while he's at it.",
-        "Right, listen. Person B: bottle. Person A: chips. Quick as you like, the crane's "
-        'waiting.',
         "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
-        "Give Person B the bottle I'm just going to check the hammers on this upright.",
-        "Bottle for Person A, and, honestly, that's the whole job today.",
-        'Magazine to Mrs Khan. Jug to Mr Lee. Grey blanket stays on the cart.',
-        'Each of them gets something to drink from, Person A the cup, Person B the bottle.',
-        "Both mugs, red and blue, up on the shelf, gently does it, they're my good ones.",
         'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
         'stop.',
-        "One thing apiece for the two of them: the bottle's Person A's, the chips are Person "
-        "B's.",
-        'The two blocks in the high chair for Lily to play with.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
-        'Give Person A the chips but not the apple, and not the cup either.',
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
-        'Give Ava the blocks, not the green one, only red.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
-        'Chips to Person B, oops, Person A, I mean, sorry, love.',
         'the red book goes back up on the bookshelf with the others',
-        'Person A is hungry, please bring her the alple from the end.',
-        'The chips are meant for Peraon A, could you take them over.',
         'Drop the scnner on the belt before the next load comes down.',
-        'Would you put the black pen in the box for Priya?',
+        # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
+        # give Alice."; session 33, 12t)
+        "Two items, both give Alice lah.",
+        # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
+        # on the desk for Noah"; session 33, 12t)
+        "Would you put the black pen in the box for Priya?",
         "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
@@ -500,7 +404,6 @@ KNOWN_MISSES = frozenset(
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
-        "Lily's to have both blocks, red and green, she wants to build a tower.",
         "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
     }
 )
@@ -508,15 +411,8 @@ KNOWN_MISSES = frozenset(
 KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
-        "Hand that over to Person A when you're ready.",
-        "Plate to Lena. The one she likes. You know the one I mean.",
-        "One of them gets the chips, no idea which, you'll have to ask.",
         "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
         # blind22 (tuned on in session 24)
-        'Person B spoke of the cup and the apple. Please, give it to her now.',
-        'Priya came by looking for her pen. Could you take it back to her?',
-        'The student by the radiator wants the scissors, can you take them over?',
-        'Put one of the boxes on the belt, the one Mia put a red sticker on.',
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
         # blind27 (tuned on in session 29)

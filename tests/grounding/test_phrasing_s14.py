@@ -313,7 +313,10 @@ def test_slip_costs() -> None:
         ("Bob's request: the cup", "cup>B", CELL),
         ("Order for Bob: one cup", "cup>B", CELL),
         ("Bob ordered the cup", "cup>B", CELL),
-        ("The cup is Bob's", "cup>B", CELL),
+        # "The cup is Bob's" (was cup>B) is refused naming both readings since session 33: alone
+        # it may say whose the cup is, asking nothing (the lead's probe "The drill is Jess's.";
+        # tests/grounding/test_phrasing_s33s.py); with 'please' it allots
+        ("The cup is Bob's, please", "cup>B", CELL),
         ("Carol, the apple is yours", "apple>C", CELL),
         ("OK Google, give Lena the salt", "salt>B", KITCHEN),
         ("Would you mind awfully passing Mrs Khan the water jug", "jug>C", WARD),

@@ -201,3 +201,16 @@ def test_a_last_then_youre_done_orders_nothing(text: str, want: str | None) -> N
     assert show_tree(got) == show_tree(alone)
     if want is not None:
         assert_reads(text, want)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Bob the cup, later.",
+        "Give Bob the cup. Quick as you like, later.",
+        "Give Bob the cup and Alice the apple, later on.",
+    ],
+)
+def test_a_closing_later_after_a_comma_puts_the_task_off(text: str) -> None:
+    # a filler dropped before it had left 'later' to be dropped too (12t's near form)
+    assert_refused(text, match="puts the task off")

@@ -735,6 +735,25 @@ def test_more_said_another_way(text: str, want: str | None, scene: Scene) -> Non
     _assert_case(text, want, scene)
 
 
+# -- "…, I mean to Lily, Ava's too big for teddies now": why, of the person corrected away -------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        ("Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now.", "teddy>A", NURSERY),
+        ("Gloves to Mia, no, Tom, Mia's done with them.", "gloves>B", DEPOT),
+        # the person corrected to; another object; a person not named before; no person corrected
+        ("Teddy to Ava, oops, I mean to Lily, Lily's too big for teddies now.", None, NURSERY),
+        ("Teddy to Ava, oops, I mean to Lily, Ava's too big for the bib now.", None, NURSERY),
+        ("Teddy to Ava, oops, I mean to Lily, Grandad's too big for teddies now.", None, NURSERY),
+        ("Teddy to Ava, oops, I mean the bib, Ava's too big for teddies now.", None, NURSERY),
+    ),
+)
+def test_corrected_away(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-33 (12r) steps taken out
     (but 'Any one of the boxes onto the belt', phrasing.py's): each rule is what reads it."""

@@ -517,6 +517,12 @@ for _do in (
     "handle it",
     "make that happen",
     "make it happen",
+    # session 33 (12s): the things (or the people) just named, more than one (blind21)
+    "sort them out",
+    "sort those out",
+    "sort them both out",
+    "sort the pair of them out",
+    "sort the two of them out",
 ):
     PHRASES[tuple(_do.split())] = "filler"
 # "Be a dear and bring …", "Do me a favour and …": an opening that asks kindly

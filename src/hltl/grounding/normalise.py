@@ -4621,15 +4621,22 @@ def _inert_sentences(text: str, lexicon: Lexicon) -> str:
 
 # courtesy in frames a held word is part of: each asks nothing of its own
 _COURTESY_FRAMES: tuple[tuple[str, str], ...] = (
-    # "would you be a dear / a love / an angel and give …": could you give
-    (r"\b(would|could|will|can) you be (?:a|an|my) [a-z]+ and\s+", r"\1 you "),
+    # "would you be a dear / a love / an angel and give …": could you give (session 33, 12s:
+    # "would you be a good sort and hand …", "be a real star and …": a kind word before it)
+    (
+        r"\b(would|could|will|can) you be (?:a|an|my) (?:(?:good|real|proper|absolute|kind|"
+        r"lovely|little|total) )?[a-z]+ and\s+",
+        r"\1 you ",
+    ),
     (r"^(?:be (?:a|an) [a-z]+ and|be a love,?)\s+", ""),
     # "Pretty please (with sugar / a cherry on top)": please
     (r"\bpretty please(?: with (?:sugar|a cherry|cherries|bells) on(?: top)?)?\b", "please"),
     # "When convenient, …", "At your convenience, …", "When you get a chance, …"
     (
         r"(^|(?<=[.!?])\s*)(?:when (?:convenient|it's convenient|you can)|at your "
-        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec))\s*,\s*",
+        # session 33 (12s): 'a second', 'a tick' (blind22)
+        r"(?:earliest )?convenience|when you get a (?:chance|minute|moment|sec|second|tick))"
+        r"\s*,\s*",
         r"\1",
     ),
     # "I hope this is okay, …", "I hope that's alright, …"
@@ -6536,7 +6543,10 @@ def _filler_word(word: str, lexicon: Lexicon) -> bool:
 _SET_FILLERS19 = re.compile(
     r"^(?:and |so )?(?:(?:no|nae|nay) (?:bother|worries|problem|problems|fuss|rush|hurry|sweat|"
     r"stress|pressure|drama)|good (?:night|morning|evening|afternoon|day)|in your own time|"
-    r"when(?: you're| you are) ready|there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
+    # session 33 (12s): 'ready when you are', 'you help me' (blind21), 'quick as you like'
+    r"when(?: you're| you are) ready|ready when you are|(?:please )?(?:you )?help me(?: out)?|"
+    r"(?:as )?(?:quick|fast|soon) as you (?:like|can)|"
+    r"there's a good (?:lad|girl|boy|robot|chap)|nice and (?:slow|"
     r"easy|gentle|steady|careful)|steady hands(?: everyone)?|for the record|with respect|"
     r"merging now|over and out|back after the break|see you (?:soon|later|all))$",
     _F,
@@ -12874,11 +12884,11 @@ def _archaic19_words(text: str) -> str:
         (r"\bshall be (given|handed|passed|brought|placed|put|taken)\b", r"should be \1"),
         (r"\bshall (have|get|receive)\b", r"gets"),
         (r"\b(?:thereafter|thereupon)\b", "then"),
+        (r"\bunto\b", "to"),  # before 'to the same': "unto the same" is 'to the same person'
         (
             r"\bto the (?:very )?same(?: (?:player|person|one|fellow|chap|lady|gentleman|guy))?\b",
             "to the same person",
         ),
-        (r"\bunto\b", "to"),
         (r"\bprithee\b", "please"),
         (r"\bnay\b", "no"),
         (r"(?<!teddy )\bbear (?=the |it\b|them\b)", "bring "),
@@ -13796,7 +13806,10 @@ def _which_gets28r(text: str, lexicon: Lexicon) -> str:
 _WHO_CHOOSES28R = re.compile(
     r"\s*,\s*(?P<w>whoever|whichever)(?:'s| is) (?:nearer|closer|nearest|closest|free|handier|"
     r"handiest|quicker|quickest|easier|easiest|easiest to reach|nearer to you|closer to you|"
-    r"nearest to you|closest to you|to hand)(?=\s*(?:[,.!?]|$))",
+    r"nearest to you|closest to you|to hand|"
+    # session 33 (12s): "… closer to your hand" before more words (blind22; "whichever's closer
+    # to hand" closing the text is 12r's _FREE_CHOICE33R)
+    r"(?:nearer|closer|nearest|closest) to your hand)(?=\s*(?:[,.!?]|$))",
     _F,
 )
 
@@ -13891,14 +13904,11 @@ def _each_one28r(text: str, lexicon: Lexicon) -> str:
         return text
     rest = text[m.end() :]
     rest = rest[:1].upper() + rest[1:]
-    node = _reading(rest, lexicon)
-    if node is None or not isinstance(node, Group) or node.op != "and":
+    said = _handovers33t(rest, lexicon)
+    if said is None:
         return text
-    said = list(tasks(node))
     people = [t.target for t in said]
-    if any(t.kind != "deliver" for t in said) or len(set(people)) != len(people):
-        return text
-    if set(people) != {h.id for h in lexicon.scene.humans}:
+    if len(set(people)) != len(people) or set(people) != {h.id for h in lexicon.scene.humans}:
         return text
     return rest
 
@@ -19168,6 +19178,864 @@ _STEPS32R: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 33 (engineer 12t): blind17, blind23, blind18, causes17 and blind15's kinds ------------
+
+_N33T = {"two": 2, "three": 3, "four": 4}
+# how much each person gets, said before the list that says what: 'one thing', 'an item',
+# 'something (to drink from)', 'two things'
+_AMOUNT33T = (
+    r"(?:one thing|one item|a thing|an item|something|(?P<n>two|three) (?:things|items))"
+    r"(?: to (?:drink|eat|read|use)(?: from| with| out of)?)?"
+)
+# who they are: every person of the scene ('each of them'), or so many ('both', 'the two of them')
+_WHO33T = (
+    r"(?:each of (?:them|you)|each of the (?P<k1>two|three|four)(?: of them)?|both (?:of them|of "
+    r"you|people)|the (?P<k2>two|three|four) of them|all (?P<k3>two|three|four) of them)"
+)
+_EACH_HEADERS33T = (
+    # "Both people get an item each: …", "Each of them gets one thing: …"
+    rf"^{_WHO33T} (?:gets?|can have|receives?|should get|will get) {_AMOUNT33T}"
+    r"(?: each| apiece)?\s*[:,]\s*",
+    # "Something for both of them: …", "One thing apiece for the two of them: …"
+    rf"^{_AMOUNT33T}(?: each| apiece)? for {_WHO33T}\s*[:,]\s*",
+    # "Two things each: …"
+    rf"^{_AMOUNT33T} (?:each|apiece)\s*:\s*",
+)
+
+
+def _each_header33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a header saying how much each person gets ('Both people get an item
+    each:', 'Each of them gets one thing:', 'Something for both of them:', 'One thing apiece for
+    the two of them:', 'Two things each:', 'Each of them gets something to drink from,'), then
+    the list of hand-overs that says what: the list is read alone when it is a count check the
+    scene passes: it hands over only, to every person of the scene (as many as 'both' / 'the two'
+    say), and to each exactly as many objects as the header says. Any other list is left (and
+    refused)."""
+    for header in _EACH_HEADERS33T:
+        m = _rx(header).match(text)
+        if m is not None:
+            break
+    else:
+        return text
+    rest = text[m.end() :]
+    if "," in m.group(0) and not re.match(r"(?:the |[A-Z])", rest):
+        return text  # after a comma, the list itself ("…, mind: …" is session 33 (12r)'s)
+    rest = rest[:1].upper() + rest[1:]
+
+    def whose(w: re.Match[str]) -> str:
+        # after the header, "the bottle's Person A's" says who gets it
+        return f"{w.group(1)} to {w.group(2)}" if _only_person(w.group(2), lexicon) else w.group(0)
+
+    rest = _sub(r"\b(the [a-z ]+?)(?:'s| is| are) ([a-z][\w ]*?)'s\b", whose, rest)
+    said = _handovers33t(rest, lexicon)
+    if said is None:
+        return text
+    humans = {h.id for h in lexicon.scene.humans}
+    groups = m.groupdict()
+    count = groups.get("k1") or groups.get("k2") or groups.get("k3")
+    if "both" in m.group(0).lower():
+        count = "two"
+    if len(humans) < 2 or (count is not None and _N33T[count.lower()] != len(humans)):
+        return text
+    amount = _N33T[m.group("n").lower()] if m.group("n") else 1
+    got = [t.target for t in said]
+    if set(got) != humans or any(got.count(h) != amount for h in humans):
+        return text
+    return rest
+
+
+def _handovers33t(text: str, lexicon: Lexicon) -> list[Task] | None:
+    """The hand-overs ``text`` reads as, all of them asked ('and'), or None where it is refused
+    or reads as anything else (a choice, an order, a placement)."""
+    node = _reading(text, lexicon)
+    if node is None or not isinstance(node, Group) or node.op != "and":
+        return None
+    said = list(tasks(node))
+    return said if all(t.kind == "deliver" for t in said) else None
+
+
+# what a kind word covers, by the objects' categories (a closed list: 'the drinks' names no
+# object of the scene by itself)
+_KINDS33T = {
+    "drinks": frozenset({"bottle", "cup", "mug", "jug", "beaker", "glass", "flask"}),
+    "snacks": frozenset({"chips", "crisps", "apple", "banana", "biscuit"}),
+}
+
+
+def _kind_choice33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'One of the drinks for Person A: the bottle or the cup' is 'give Person
+    A the bottle or the cup' when each object listed is of a category the kind word covers
+    (``_KINDS33T``; "…: the bottle or the chips" is left, and refused), as 'One of the pens for
+    Priya: the red or the blue' is (``_choices17``)."""
+    m = _rx(
+        r"^one of the (drinks|snacks) for ([a-z][\w ]*?)\s*:\s*(the [a-z ]+?) or (the [a-z ]+?)"
+        r"\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _only_person(m.group(2), lexicon):
+        return text
+    kinds = _KINDS33T[m.group(1).lower()]
+    for said in (m.group(3), m.group(4)):
+        ids = _ids(said, lexicon, "object")
+        if len(ids) != 1 or not _only(said, lexicon, "object"):
+            return text
+        if lexicon.scene.object(next(iter(ids))).category not in kinds:
+            return text
+    return f"give {m.group(2)} {m.group(3)} or {m.group(4)}{m.group(5)}"
+
+
+def _each_any33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Give each of them a pen, Priya and Sam, any colour' is 'Priya and Sam
+    each get a pen': 'them' is the two people said after it, and 'any colour' (or size, or one)
+    says again that the pen is not chosen. Only 'a/an <word>' is so said again; 'the red one'
+    after the names is left."""
+    m = _rx(
+        r"^(?:give )?each of (?:them|you|the two) (?:gets? |can have |should get )?(an? [a-z]+),"
+        r"\s*([^,]+?) and ([^,]+?),\s*any (?:colou?r|size|one|kind)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not (_only_person(m.group(2), lexicon) and _only_person(m.group(3), lexicon)):
+        return text
+    return f"{m.group(2)} and {m.group(3)} each get {m.group(1)}{m.group(4)}"
+
+
+def _other_two33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'No black pen for Priya, one of the other two will do' is 'Priya gets
+    one of the pens except the black pen' when the scene has as many other objects of the black
+    pen's category as the count says ('the other two'; 'either of the others' when two)."""
+    m = _rx(
+        r"^no (the )?([a-z][a-z ]*?) for ([a-z][\w ]*?),\s*(?:just )?(?:one of the other "
+        r"(two|three|four)|either of the other (two)|either of the others) (?:will do|is fine|"
+        r"'ll do|would do)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _only_person(m.group(3), lexicon):
+        return text
+    said = f"the {m.group(2)}"
+    if not _only(said, lexicon, "object"):
+        return text
+    obj = lexicon.scene.object(next(iter(_ids(said, lexicon, "object"))))
+    others = [o for o in lexicon.scene.objects if o.category == obj.category and o.id != obj.id]
+    count = _N33T[(m.group(4) or m.group(5) or "two").lower()]
+    if len(others) != count:
+        return text
+    return f"{m.group(3)} gets one of the {_plural33t(obj.category)} except {said}{m.group(6)}"
+
+
+def _plural33t(word: str) -> str:
+    return f"{word}es" if word.endswith(("x", "ch", "sh", "s")) else f"{word}s"
+
+
+def _leave_where33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): after a request for everything ('everything', 'the lot', 'all of it'),
+    '…, (just) leave the X where they are' is '…, except the X' ("Bob gets the lot, just leave
+    the two mugs where they are"); 'clear everything into / onto S' (S a surface of the scene)
+    is 'put everything into / onto S'. A request for named objects is left: there 'leave' may
+    correct it."""
+    m = _rx(
+        r"^(.*\b(?:everything|the lot|all of it)\b.*?),\s*(?:and |but )?(?:just )?leave (the "
+        r"[a-z ]+?) (?:where (?:it is|they are)|alone|be)\s*([.!]?)$"
+    ).match(text)
+    if m is None or not _ids(m.group(2), lexicon, "object"):
+        return text
+    if not _names(m.group(2), lexicon) or not all(
+        r.kind == "object" for it in _names(m.group(2), lexicon) for r in it.refs
+    ):
+        return text
+    head = m.group(1)
+    c = _rx(r"^clear (everything|the lot|all of it) (into|onto|in|on) (the [a-z ]+?)$").match(head)
+    if c is not None:
+        if not _only(c.group(3), lexicon, "surface"):
+            return text
+        head = f"put {c.group(1)} {c.group(2)} {c.group(3)}"
+    return f"{head}, except {m.group(2)}{m.group(3)}"
+
+
+def _load_up33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'load P up with X' (P a person) is 'give P X'; 'pack / load S with X' (S
+    a surface) is 'put X on S'."""
+
+    def person(m: re.Match[str]) -> str:
+        return f"give {m.group(1)} " if _only_person(m.group(1), lexicon) else m.group(0)
+
+    text = _sub(r"\bload ([a-z][\w ]*?) up with ", person, text)
+
+    def surface(m: re.Match[str]) -> str:
+        if not _only(m.group(2), lexicon, "surface"):
+            return m.group(0)
+        return f"put {m.group(3)} on {m.group(2)}"
+
+    return _sub(
+        r"\b(pack|load|fill) (the [a-z ]+?) with (the lot|everything|the [a-z ]+?)(?=,|[.!]?$)",
+        surface,
+        text,
+    )
+
+
+def _wont_you33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'won't you' before a verb of a request ("Give Ava the teddy, won't you
+    give Lily the bib too?") asks it politely: the request. Said by a subject ('you won't give')
+    it negates, and is left."""
+    return _sub(rf"(^|,\s*|\band\s+)won't you (?={_DO_VERBS})", r"\1", text)
+
+
+def _fronted_to33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): the recipient said first, 'Unto Person A the chips' / 'To Person A the
+    chips' / 'Give unto Person B …' ('give Person A the chips'; P one person of the scene, the
+    objects after it), and 'whichever thou wilt / you like of the X or the Y' ('either the X or
+    the Y': the robots choose)."""
+
+    def fronted(m: re.Match[str]) -> str:
+        if not _only_person(m.group(2), lexicon):
+            return m.group(0)
+        return f"{m.group(1)}give {m.group(2)} "
+
+    text = _sub(
+        r"(^|[.;:!]\s+)(?:give )?(?:un)?to ([a-z][\w ]*?) (?=(?:the|either|whichever|both|all) )",
+        fronted,
+        text,
+    )
+    return _sub(
+        r"\bwhichever (?:thou|you) (?:wilt|will|like|want|wish|please|fancy|prefer) of (the "
+        r"[a-z ]+?) or (the [a-z ]+?)(?=\s*[.!]?$)",
+        r"either \1 or \2",
+        text,
+    )
+
+
+# interjections and words of address (by kind, _INTERJECTION19 / _ADDRESS19) that may stand
+# alone between commas next to a correction; those that join, point, time or may be asked for
+# are not among them
+_EXCLAIMS33T = (_INTERJECTION19 | _ADDRESS19) - {
+    *("and", "just", "there", "please", "thanks", "thank", "you", "kindly", "quick", "slow"),
+    *("slowly", "like", "hands", "fine", "right", "well", "so", "now", "ok", "okay", "yeah"),
+    *("yep", "yup", "aye", "alright", "old", "me", "my", "our", "good", "young", "big"),
+    *("little", "people", "easy", "steady", "careful", "smart", "o"),
+    # hesitations are repair words (repairs.py, session 33's subject and object repairs)
+    *("hmm", "um", "uh", "er", "erm"),
+}
+_FIX_CUE33T = r"(?:sorry|no|wait|oops|whoops|actually|i mean|i meant|hang on|hold on|oh no)\b"
+
+
+def _exclaimed_fix33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a correction with an interjection or a word of address beside it ("The
+    hammer for Jess, eish, sorry, the drill for Jess", "…, oh no wait, on the desk, cariad,
+    tidy."): the word, alone between commas just before the correction's cue or after what the
+    correction names at the end, is taken off (it names nothing of the scene: a scene's 'doll'
+    stays); '…, oops, Person A, I mean, sorry, love.' says 'I mean' after the name it corrects
+    to: taken off there too. The correction is then read as one without them."""
+    low = text.lower()
+    if not any(cue in low for cue in ("sorry", "no", "wait", "oops", "mean", "actually", "hang")):
+        return text
+
+    def alone(m: re.Match[str]) -> str:
+        word = m.group(2)
+        if word.lower() not in _EXCLAIMS33T or not _names_nothing(word, lexicon):
+            return m.group(0)
+        return m.group(1)
+
+    # before the cue: "…, eish, sorry, …"
+    out = _sub(rf"(,\s*)([a-z']+)\s*,\s*(?={_FIX_CUE33T})", alone, text)
+    if _rx(_FIX_CUE33T).search(out) is None:
+        return text
+
+    def at_end(m: re.Match[str]) -> str:
+        word = m.group(1)
+        if word.lower() not in _EXCLAIMS33T or not _names_nothing(word, lexicon):
+            return m.group(0)
+        return m.group(2)
+
+    # after the correction, ending the text: "…, on the desk, cariad, tidy."
+    for _ in range(3):
+        was = out
+        out = _sub(r"(?<=[a-z]),\s*([a-z']+)(\s*[.!]*)\s*$", at_end, out)
+        if out == was:
+            break
+    m = _rx(rf"^(.*\b{_FIX_CUE33T},?\s+[^,]+?),\s*i mean\b(.*)$").match(out)
+    if m is not None and m.group(2).strip(" ,.!") and not _is_closer33t(m.group(2), lexicon):
+        return out
+    return out if m is None else m.group(1) + m.group(2)
+
+
+def _is_closer33t(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` ('…, sorry, love.') are only apology, thanks and address, naming
+    nothing of the scene."""
+    said = re.findall(r"[a-z']+", words.lower())
+    return _names_nothing(words, lexicon) and all(
+        w in _EXCLAIMS33T or w in _ADDRESS or w in ("sorry", "thanks", "please") for w in said
+    )
+
+
+def _unknown_fixed33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Forceps, sorry, I mean the spoon, to Omar.': the first word names
+    nothing of the scene, and the speaker says at once ('sorry / no / oops, I mean') which object
+    they mean: that object ('the spoon, to Omar.'). A first word the scene names ('The cup,
+    sorry, I mean the spoon') is a correction read as before."""
+    m = _rx(
+        r"^(?:the )?([a-z]+),\s*(?:(?:sorry|no|oops|whoops),?\s+)+i (?:mean|meant),?\s+(the "
+        r"[a-z ]+?),\s*(.+)$"
+    ).match(text)
+    if m is None or not _names_nothing(m.group(1), lexicon) or _KEEP_WORDS.search(m.group(1)):
+        return text
+    if not _only_kind(m.group(2), lexicon, "object"):
+        return text
+    return f"{m.group(2)}, {m.group(3)}"
+
+
+# after a placement, whom it is put there for and what they will do: 'in the high chair for Lily
+# to play with'
+_PLACED_FOR33T = (
+    r"(?P<place>\b(?:on|in|onto|into) (?:the )?[a-z]+(?: [a-z]+)?) for "
+    rf"(?P<p>{_PERSON32}) to (?P<v>[a-z]+)(?: (?:with|on|in|from|at))?(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _placed_for33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'The two blocks in the high chair for Lily to play with.': after 'on /
+    in S' (S one surface of the scene), 'for P to <verb> (with)' (P one person, the verb no verb
+    of the grammar nor a scene name) says whom the placement is for and what they will do, as
+    'for Mr Lee to read' does (``_for_to_do32``): taken off when what is left reads as
+    placements only and names P nowhere else (the placement is asked; P gets nothing). A bare
+    'for P' after a placement stays refused (sessions 30 and 31: 'Put the ruler on the desk for
+    Noah' may ask for it to reach Noah)."""
+    if " for " not in text:
+        return text
+    m = _rx(_PLACED_FOR33T).search(text)
+    if m is None:
+        return text
+    where = re.sub(r"^(?:on|in|onto|into) ", "", m["place"], flags=_F)
+    if not (_surface_only(where, lexicon) and _only_person(m["p"], lexicon)):
+        return text
+    # the verb of use may be a word of a scene name ('play' of 'play mat'), never a name itself
+    if m["v"].lower() in VERBS or _ASKS29.search(m["v"]) or not _names_nothing(m["v"], lexicon):
+        return text
+    out = text[: m.start()] + m["place"] + text[m.end() :]
+    if _ids(out, lexicon, "human"):
+        return text
+    said = _tasks_of(out, lexicon)
+    return out if said and all(kind == "place" for kind, _, _ in said) else text
+
+
+# words ending in -ing that are no verb's -ing form
+_NOT_GERUNDS33T = frozenset(
+    {
+        *("nothing", "something", "anything", "everything", "morning", "evening", "king"),
+        *("ring", "thing", "spring", "string", "wing", "sing", "bring", "during", "ceiling"),
+        *("pudding", "icing", "sibling", "darling", "duckling", "sling", "swing", "sting"),
+        *("building", "wedding", "clothing", "bedding", "stuffing", "filling", "timing"),
+    }
+)
+
+
+def _purpose_ing33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): what an object is for, said with an -ing verb after it ("Person A needs
+    the cup for rinsing the core samples", "Everything goes to the sink for washing"): taken
+    off when the -ing word is a verb's (not 'nothing', 'evening': ``_NOT_GERUNDS33T``, no verb
+    of the grammar) and neither it nor what follows it, up to the clause's end, names anything
+    of the scene or asks anything (``_asks_nothing29``)."""
+    if "ing" not in text:
+        return text
+
+    def purpose(m: re.Match[str]) -> str:
+        verb = m.group(2).lower()
+        if verb in _NOT_GERUNDS33T or len(verb) < 6 or verb[:-3] in VERBS:
+            return m.group(0)
+        if not _asks_nothing29(m.group(2) + m.group(3), lexicon):
+            return m.group(0)
+        return m.group(1)
+
+    return _sub(
+        r"\b((?:the [a-z]+|everything|it|them)(?: goes to the [a-z]+)?) for ([a-z]+ing)"
+        r"((?: [a-z']+){0,4}?)(?=\s*(?:[,;.!?]|\band\b|$))",
+        purpose,
+        text,
+    )
+
+
+def _stays_on33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): '… Grey blanket stays on the cart.': an object said to stay on the
+    surface it starts on (inside its footprint) is to be left where it is, as '… stays put' (read
+    by the rules for that); an object that does not start there is left (staying there would be
+    a move, and is refused)."""
+    if "stay" not in text.lower():
+        return text
+
+    def stays(m: re.Match[str]) -> str:
+        if not (_only(m["o"], lexicon, "object") and _surface_only(m["s"], lexicon)):
+            return m[0]
+        (obj,) = _ids(m["o"], lexicon, "object")
+        (where,) = _ids(m["s"], lexicon, "surface")
+        return f"{m['lead']}{m['o']} stays put" if starting_on({obj}, where, lexicon) else m[0]
+
+    return _sub(
+        r"(?P<lead>(?:^|[.;,]\s*)(?:and |but )?)(?P<o>(?:the )?[a-z]+(?: [a-z]+)?) (?:stays|can "
+        r"stay|should stay) (?:on|in) (?P<s>(?:the )?[a-z]+(?: [a-z]+)?)(?=\s*(?:[.;!]|$))",
+        stays,
+        text,
+    )
+
+
+def _each_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): '…, and not the cup either' after a 'not' is '…, and not the cup' (one
+    more left out); 'Each patient, receives one blanket, whichever colour' (a filler taken off
+    between 'each <role>' and its verb) is 'Each patient receives one blanket': 'whichever
+    colour / size' after 'each … one / a <noun>' says again that which one is not chosen; a
+    manner word between commas after 'each <role>' ('gently', not 'only') is taken off."""
+    out = _sub(
+        r"(\bnot\b[^.;]*?,\s*and not (?:the )?[a-z ]+?)\s+either(?=\s*[.!]?$)",
+        r"\1",
+        text,
+    )
+    m = _rx(
+        r"^(each [a-z]+)(?:,\s*([a-z]+ly)\s*)?,?\s+(receives?|gets?|should get|can have) (one|a|"
+        r"an) ([a-z]+)(?:,\s*whichever (?:colou?r|size|one))?\s*([.!]?)$"
+    ).match(out)
+    if m is None or (m.group(2) and m.group(2).lower() in _LY_HELD19):
+        return out
+    return f"{m.group(1)} {m.group(3)} {m.group(4)} {m.group(5)}{m.group(6)}"
+
+
+def _both_named33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'both mugs, (the) red and (the) blue,' names the two mugs again by what
+    tells them apart: 'both mugs', when 'the red mug' and 'the blue mug' are the scene's two
+    mugs (any other pair is left) and the sentence names no other object (with one, as in
+    session 29's near form 'Give Alice the cup and both mugs, red and blue.', the words could be
+    about it: left). 'Both mugs, could they go to Alice?' is 'could both mugs go to Alice?', and
+    'easy / gently does it' (take care) is taken off between commas."""
+    out = _drop(r",\s*(?:gently|easy|steady|slowly) does it(?=\s*[,.!]|$)", text, lexicon)
+
+    def named(m: re.Match[str]) -> str:
+        kind = _singular(m.group(2).lower())
+        both = _ids(f"the {m.group(2)}", lexicon, "object")
+        one = _ids(f"the {m.group(3)} {kind}", lexicon, "object")
+        two = _ids(f"the {m.group(4)} {kind}", lexicon, "object")
+        if len(both) != 2 or len(one) != 1 or len(two) != 1 or one | two != both:
+            return m.group(0)
+        before = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+        after = re.split(r"[.;!?]", m.string[m.end() :])[0]
+        if _ids(before, lexicon, "object") or _ids(after, lexicon, "object"):
+            return m.group(0)
+        # opening the sentence, what follows is its verb ('Both spanners go …'); later, a clause
+        # of its own ('Lily's to have both blocks, she wants …')
+        return f"{m.group(1)}{m.group(2)}{' ' if not before.strip() else ', '}"
+
+    out = _sub(
+        r"\b(both (?:the )?)([a-z]+s),\s*(?:the )?([a-z]+) and (?:the )?([a-z]+)(?: ones)?,\s*",
+        named,
+        out,
+    )
+    return _sub(
+        r"^((?:sorry|so|right|now),\s*)?(both (?:the )?[a-z]+s),?\s*(could|can|would|will) they "
+        r"(go|be taken|be given) (to [a-z][\w ]*?)\s*\?",
+        r"\1\3 \2 \4 \5?",
+        out,
+    )
+
+
+def _got_them33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'once he's got them' / 'after she's got them' / 'once hes got them'
+    (without the apostrophe) is 'once he has them' (a pronoun for the objects just named, as
+    the grammar reads it), and the clause after it is set off by a comma when it is not: "tom
+    wants the gloves and once hes got them mia wants the tape"."""
+    if "got" not in text.lower():
+        return text
+
+    def got(m: re.Match[str]) -> str:
+        have = "have" if m.group(2).lower() == "they" else "has"
+        return f"{m.group(1)} {m.group(2)} {have} {m.group(3)}, "
+
+    return _sub(
+        r"\b(once|after|when) (he|she|they)(?:'s|s|'ve| has| have)? got (it|them)\b,?\s+",
+        got,
+        text,
+    )
+
+
+def _need_over33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'What I need is the bottle over with Person B' / '(I) need the chips
+    over with person b' is 'I need the bottle taken over to Person B' (the speaker's need, said
+    with where the object is to go: the person named gets it); 'like right now' is 'right
+    now'."""
+    out = _sub(r"\blike (?=right now\b|now\b|asap\b|straight away\b)", "", text)
+
+    def over(m: re.Match[str]) -> str:
+        if not (_only_kind(m.group(1), lexicon, "object") and _only_person(m.group(2), lexicon)):
+            return m.group(0)
+        return f"I need {m.group(1)} taken over to {m.group(2)}"
+
+    return _sub(
+        r"^(?:what i need is|i need|need) (the [a-z ]+?) over (?:with|to) ([a-z][\w ]*?)"
+        r"(?=\s*(?:right now|now)?\s*[.!]?$)",
+        over,
+        out,
+    )
+
+
+def _telegraphed33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): words of a quick note. 'could P grab / take / get the X off you' is
+    'could P have the X' (P takes it from the robot: a hand-over); 'apple n bottle' ('n' between
+    two object names) is 'apple and bottle'; 'That one bottle' is 'the bottle' where the scene
+    has one bottle only (with more, 'that one' points at one: left); 'P wants the X only, kindly
+    do the needful' is 'P wants the X' ('only' after the one object wanted; 'do the needful',
+    do what is needed, a closer)."""
+    out = text
+
+    def off(m: re.Match[str]) -> str:
+        return (
+            f"{m.group(1)} {m.group(2)} have " if _only_person(m.group(2), lexicon) else m.group(0)
+        )
+
+    out = _sub(
+        r"\b(could|can) ([a-z][\w ]*?) (?:grab|take|get) (?=the [a-z ]+? (?:off|from) you\b)",
+        off,
+        out,
+    )
+    out = _sub(r"(\bhave the [a-z ]+?) (?:off|from) you\b", r"\1", out) if out != text else out
+
+    def joined(m: re.Match[str]) -> str:
+        if _only_kind(m.group(1), lexicon, "object") and _only_kind(m.group(2), lexicon, "object"):
+            return f"{m.group(1)} and {m.group(2)}"
+        return m.group(0)
+
+    out = _sub(r"\b([a-z]+) n ([a-z]+)\b", joined, out)
+
+    def that_one(m: re.Match[str]) -> str:
+        said = f"the {m.group(2)}"
+        if not _only(said, lexicon, "object"):
+            return m.group(0)
+        kind = lexicon.scene.object(next(iter(_ids(said, lexicon, "object")))).category
+        if sum(o.category == kind for o in lexicon.scene.objects) != 1:
+            return m.group(0)
+        return f"{m.group(1)}{said}"
+
+    out = _sub(r"(^|[.;]\s*)that one ([a-z]+)\b", that_one, out)
+    return _sub(
+        r"^([a-z][\w ]*? (?:wants|needs|is wanting) the [a-z]+) only(?:,\s*(?:kindly |please )?do "
+        r"the needful)?\s*([.!]?)$",
+        lambda m: m.group(1) + m.group(2) if _ids(m.group(1), lexicon, "human") else m.group(0),
+        out,
+    )
+
+
+def _said_again33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'P wants the X left in / on S' is 'P wants the X put in S' ('left', the
+    participle of leave, between an object and a surface; 'on the left' is no such place);
+    '…, then the apple (the) same way' after a hand-over is '…, then the apple too' (the same
+    hand-over); '… as well while he's at it' is '… as well'; 'Either X or Y goes to P' (or
+    'shall be given to P') is 'X or Y goes to P', and 'at your discretion' after a choice is
+    taken off."""
+    out = _sub(
+        r"\b(wants?|needs?|would like) (the [a-z ]+?) left (in|on|into|onto) "
+        r"(?=the [a-z ]+?\s*(?:[,.!]|$))",
+        r"\1 \2 put \3 ",
+        text,
+    )
+    out = _sub(r"(,\s*(?:and )?then the [a-z]+) (?:the )?same way\b", r"\1 too", out)
+    out = _sub(
+        r"\b(too|as well|also)\s*,?\s*while (?:he|she|they|you)(?:'s|'re| is| are) at it\b",
+        r"\1",
+        out,
+    )
+    if " or " in out:
+        # "…, at your discretion" after a choice: the robots choose, as the choice says
+        out = _sub(r",\s*(?:at your discretion|as you see fit)(?=\s*[.!]?$)", "", out)
+    return _sub(
+        r"^either ((?:the )?[a-z]+ or (?:the )?[a-z]+) (?:goes|go|should go|is going|shall be "
+        r"given|should be given) to\b",
+        r"\1 goes to",
+        out,
+    )
+
+
+def _whose33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): an object said as a person's ('Grandad's beaker', 'Lily's bib') where
+    the scene has that object once: 'bring Grandad's beaker over to him' is 'bring the beaker
+    over to Grandad' (the pronoun after it fits him, and no one else is named); 'put Lily's bib
+    on her high chair' is 'put the bib on the high chair' (the owner of the place, one surface of
+    the scene, is the owner said before). Anything else is left."""
+    if "'s " not in text:
+        return text
+    for m in _rx(r"\b(?:(\w+) )?(\w+)'s ([a-z]+)( [a-z]+)?\b").finditer(text):
+        who = next(
+            (w for w in (m.group(2), f"{m.group(1)} {m.group(2)}") if _only_person(w, lexicon)),
+            None,
+        )
+        if who is None:
+            continue
+        obj = next(
+            (
+                o
+                for o in (m.group(3) + (m.group(4) or ""), m.group(3))
+                if _only(f"the {o}", lexicon, "object")
+            ),
+            None,
+        )
+        if obj is None:
+            return text
+        start = m.end(2) - len(who)
+        end = m.start(3) + len(obj)
+        return _owner_said33t(text, start, end, who, obj, lexicon)
+    return text
+
+
+def _owner_said33t(text: str, start: int, end: int, who: str, obj: str, lexicon: Lexicon) -> str:
+    """``_whose33t``'s rewrite of "<who>'s <obj>" (``text[start:end]``), or ``text``."""
+    rest = text[end:]
+    if _ids(text[:start] + rest, lexicon, "human"):
+        return text
+    (pid,) = _ids(who, lexicon, "human")
+    said = f"{text[:start]}the {obj}"
+    to = _rx(r"^(.*?\b(?:to|for) )(him|her)\b").match(rest)
+    if to is not None and _fits(pid, to.group(2), lexicon):
+        return f"{said}{to.group(1)}{who}{rest[to.end() :]}"
+    on = _rx(r"^( (?:on|in|onto|into) )(?:his|her) ([a-z]+(?: [a-z]+)?)\b").match(rest)
+    if on is not None and _fits(pid, rest, lexicon) and _surface_only(on.group(2), lexicon):
+        return f"{said}{on.group(1)}the {on.group(2)}{rest[on.end() :]}"
+    return text
+
+
+# a pair noun ('the one pair' of tongs)
+_PAIRS33T = frozenset({"tongs", "scissors", "gloves", "pliers", "tweezers", "shears", "glasses"})
+
+
+def _one_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a count or a choice said again after the request. '…, just the one
+    pair' after a pair noun the scene has once ('Marco needs his tongs'); '…, not the green one,
+    only red' where what is left is the red one alone; '…, and, honestly, that's the whole job
+    today' closing a request (taken off, as 'that's all'); 'Lily wants the two blocks to bang
+    together' ('to bang': what she will do with them, _USES; 'together' says it of both)."""
+    out = _sub(r"\b(to [a-z]+) together(?=\s*[.!]?$)", r"\1", text)
+    out = _sub(
+        r"(?:,\s*and)?(?:,\s*(?:honestly|really|truly|basically))?,\s*that's (?:the whole job|all)"
+        r"(?: (?:today|for today|for now))?(?=\s*[.!]?$)",
+        "",
+        out,
+    )
+    m = _rx(r"^(.*\b(?:his|her|their|the) ([a-z]+)),\s*just the one pair\s*([.!]?)$").match(out)
+    if (
+        m is not None
+        and m.group(2).lower() in _PAIRS33T
+        and _only(f"the {m.group(2)}", lexicon, "object")
+    ):
+        out = m.group(1) + m.group(3)
+    m = _rx(r"^(.*\bnot the [a-z]+ one),\s*only (?:the )?([a-z]+)(?: one)?\s*([.!]?)$").match(out)
+    if m is not None:
+        said = _tasks_of(m.group(1) + m.group(3), lexicon)
+        kept = {obj for _, obj, _ in said or ()}
+        named = {
+            o.id
+            for o in lexicon.scene.objects
+            if o.id in kept
+            and any(
+                m.group(2).lower() in a.lower().split()
+                for a in (o.id.replace("_", " "), *o.aliases)
+            )
+        }
+        if said and len(kept) == 1 and named == kept:
+            out = m.group(1) + m.group(3)
+    return out
+
+
+# a statement about something the scene does not have, opening the instruction before a request
+# ("Stock room's a mess, grab …", "Sorry, the dogs are going mad outside, could you …")
+_OPENING33T = (
+    r"^(?P<lead>(?:(?:sorry|oh|so|well|right|okay|ok)\s*,?\s+)*)(?P<said>(?:the |our |my )?[a-z]+"
+    r"(?: [a-z]+)?(?:'s|'re| is| are) [a-z' ]+?),\s+(?P<rest>(?:(?:so|and)\s+)?(?:could|can|would|"
+    r"will|please|give|hand|pass|bring|take|grab|get|pop|put|stick)\b.*)$"
+)
+
+
+def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a statement opening the instruction about something the scene does not
+    have ('Stock room's a mess', 'the dogs are going mad outside'), then a request: the
+    statement is taken off when it names nothing of the scene (nor by a typo) and holds no word
+    that would make it ask, point, choose, time or say who (``_OPENING_HELD32S``, pronouns);
+    the request must read without it."""
+    m = _rx(_OPENING33T).match(text)
+    if m is None or not _names_nothing(m["said"], lexicon):
+        return text
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
+    held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
+    if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
+        return text
+    rest = m["lead"] + m["rest"]
+    return rest[:1].upper() + rest[1:] if _reading(rest, lexicon) is not None else text
+
+
+def _counted_close33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): a closing sentence counting the hand-overs ('Four deliveries, what a
+    display!') is a count check: taken off when what comes before it reads as exactly that many
+    hand-overs, all asked ('and'); an exclamation after it ('what a <word>') names nothing. A
+    count the request does not meet is left (and refused)."""
+    m = _rx(
+        r"(?<=[.!?])\s+(one|two|three|four|five|six) (?:deliveries|delivery|hand-?overs?|drops?|"
+        r"jobs?|tasks?)(?: in all| in total)?(?:,\s*what an? ([a-z]+))?\s*[.!]*\s*$"
+    ).search(text)
+    if m is None or (m.group(2) and not _names_nothing(m.group(2), lexicon)):
+        return text
+    said = _handovers33t(text[: m.start()], lexicon)
+    if said is None or len(said) != _COUNTS[m.group(1).lower()]:
+        return text
+    return text[: m.start()]
+
+
+def _objects_first33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): the objects said first, then 'give P' ("Bottle or crisps, any one also
+    can, give Bob."): 'Give P <the objects>' — a choice when 'or' joins them ('any one also
+    can', 'either one', 'any one' after it say the choice again), all of them with 'and'. Only
+    when the objects name objects alone and P one person ('Two items, both give Alice' stays
+    refused: session 28's near form, a count is not one name)."""
+    m = _rx(
+        r"^(?P<objs>(?:the )?[a-z]+ (?:or|and) (?:the )?[a-z]+),\s*(?:(?:any one|either one|either)"
+        r"(?: also can| is fine| will do)?,\s*)?give (?P<p>[a-z][\w ]*?)(?: lah| la| leh)?"
+        r"\s*(?P<end>[.!]?)$"
+    ).match(text)
+    if m is None:
+        return text
+    objs = re.split(r" (?:or|and) ", m["objs"], flags=_F)
+    if _only_person(m["p"], lexicon) and all(_only_kind(o, lexicon, "object") for o in objs):
+        return f"Give {m['p']} {m['objs']}{m['end']}"
+    return text
+
+
+def _openers33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): words that open or pace a request and ask nothing, from a closed list:
+    'Right, listen.' (a call for attention: 'Right.'), 'nothing fancy,' (the request is a plain
+    one), 'Quick as you like,' / ', quick as you like' (soon: the cell acts now); and a run-on
+    where the speaker's own plan follows a request with no stop ("Give Person B the bottle I'm
+    just going to check the hammers …": a comma before "I'm going to / I'm off to / I'll be",
+    when what is before it reads alone)."""
+    out = _sub(r"^((?:right|ok|okay|now|so)),?\s+listen\s*[.!,]\s*", r"\1. ", text)
+    out = _sub(r"^nothing (?:fancy|special|complicated|major),\s*", "", out)
+    if not _LATER24.search(out):
+        # (a time said with it is left: 'Quick as you like, later.' stays refused)
+        out = _sub(r"(?:(?<=[.!]\s)|^)quick as you like\s*[,.!]\s*", "", out)
+        out = _sub(r",\s*quick as you like(?=\s*[,.!]|$)", "", out)
+    m = _rx(
+        r"^([^,.;!?]+?) (i'm (?:just )?going to|i'm off to|i'll be|i am (?:just )?going to) "
+    ).match(out)
+    if m is not None and _reading(m.group(1), lexicon) is not None:
+        out = f"{m.group(1)}, {out[m.start(2) :]}"
+    return out
+
+
+def _places_said33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): where an object is, said beside the request in words that name nothing
+    of the scene: 'bring her the apple from the end', 'on the tray next to the films' (taken
+    off: a place the scene has, 'next to the sink', is left and refused); 'not the big one on
+    the workbench' where the big one starts on the workbench (where it lies, said to pick it
+    out: taken off), and 'the other spanner, not the big one' of two spanners is 'the spanner,
+    not the big one'; 'the small and medium boxes, the two little ones,' (the count said again:
+    taken off when it counts the objects before it); 'The chips are (meant) for P, could you take
+    them over' is 'could you take the chips over to P'."""
+
+    def place(m: re.Match[str]) -> str:
+        # only right after an object or a surface of the scene ('the alple from the end')
+        if not _names(m.group(1), lexicon) or _names(m.group(2), lexicon):
+            return m.group(0)
+        if _LATER24.search(m.group(3)) or _KEEP_WORDS.search(m.group(3)):
+            return m.group(0)
+        return m.group(1)
+
+    out = _sub(
+        r"\b([a-z]+)(\s+(?:from|next to|beside) the ([a-z]+(?: [a-z]+)?))(?=\s*(?:[,.!?]|$))",
+        place,
+        text,
+    )
+    m = _rx(r"\bnot the ([a-z]+) one on (the [a-z ]+?)(?=\s*[,.!]?$)").search(out)
+    if m is not None and _surface_only(m.group(2), lexicon):
+        (where,) = _ids(m.group(2), lexicon, "surface")
+        picked = [
+            o.id
+            for o in lexicon.scene.objects
+            if any(m.group(1).lower() in a.lower().split() for a in o.aliases)
+        ]
+        if len(picked) == 1 and starting_on(set(picked), where, lexicon):
+            out = out[: m.start()] + f"not the {m.group(1)} one" + out[m.end() :]
+    m = _rx(r"\bthe other ([a-z]+),\s*not the ([a-z]+) one\b").search(out)
+    if m is not None and len(_ids(f"the {m.group(1)}s", lexicon, "object")) == 2:
+        out = f"{out[: m.start()]}the {m.group(1)}, not the {m.group(2)} one{out[m.end() :]}"
+    m = _rx(r"^(the [a-z]+ and [a-z]+ [a-z]+s),\s*the (two|three) [a-z]+ ones,\s*").match(out)
+    if m is not None and len(_ids(m.group(1), lexicon, "object")) == _COUNTS[m.group(2).lower()]:
+        out = f"{m.group(1)} {out[m.end() :]}"
+
+    def over(m: re.Match[str]) -> str:
+        if not (_only_kind(m.group(1), lexicon, "object") and _only_person(m.group(2), lexicon)):
+            return m.group(0)
+        return f"{m.group(3)}{m.group(4)} {m.group(1).lower()} over to {m.group(2)}"
+
+    return _sub(
+        r"^(the [a-z ]+?) (?:is|are) (?:meant |supposed to be )?for ([a-z][\w ]*?),\s*((?:could|"
+        r"can|would) you |please )?(take|bring|carry) (?:it|them) over\b",
+        over,
+        out,
+    )
+
+
+def _everything_bar33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): 'Everything (left) on the pitch bar the bottle and the cup heads to
+    Person A!': 'heads (over) to' is 'goes to' (before a person or a surface of the scene), 'bar'
+    after 'everything' is 'except', and where everything is ('(left) on the pitch') is taken off
+    when it names nothing of the scene (a surface of the scene may narrow it: left)."""
+    out = _sub(
+        r"\b(?:heads|is headed|is heading) (?:over |straight )?to (?=[a-z][\w ]*?\s*[.!]?$)",
+        "goes to ",
+        text,
+    )
+    m = _rx(r"^everything(?: left)?(?: (?:on|in|at) (the [a-z]+))? (?:bar|except) ").match(out)
+    if m is None or (m.group(1) and not _names_nothing(m.group(1), lexicon)):
+        return out if out != text and _reading(out, lexicon) is not None else text
+    return f"Everything except {out[m.end() :]}"
+
+
+def _formal33t(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12t): formal and hesitant wrappers from a closed list: '(and) with (the
+    greatest | all due) respect,' opening the request; 'no further questions' closing it (a
+    closer of the courtroom: no correction); a frame begun and given up for another, 'is it okay
+    if, sorry, could you …' ('could you …')."""
+    out = _sub(
+        r"(^|,\s*)(?:and )?with (?:the (?:greatest|utmost|deepest) |all (?:due )?)respect,\s*",
+        r"\1",
+        text,
+    )
+    out = _sub(r"(?<=[.!]\s)(thank you|thanks),\s*no further questions(?=\s*[.!]?$)", r"\1", out)
+    return _sub(
+        r"\b(?:is it (?:okay|ok|alright|all right)|would it be (?:okay|ok|alright|possible)) if,\s*"
+        r"(?:(?:sorry|um|er|erm),\s*)*(?=(?:could|can|would|will) you\b)",
+        "",
+        out,
+    )
+
+
+_STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _each_header33t,
+    _kind_choice33t,
+    _each_any33t,
+    _other_two33t,
+    _leave_where33t,
+    _load_up33t,
+    _wont_you33t,
+    _fronted_to33t,
+    _exclaimed_fix33t,
+    _unknown_fixed33t,
+    _placed_for33t,
+    _purpose_ing33t,
+    _stays_on33t,
+    _each_said33t,
+    _both_named33t,
+    _got_them33t,
+    _need_over33t,
+    _telegraphed33t,
+    _said_again33t,
+    _whose33t,
+    _one_said33t,
+    _opening_scene33t,
+    _counted_close33t,
+    _objects_first33t,
+    _openers33t,
+    _places_said33t,
+    _everything_bar33t,
+    _formal33t,
+)
+
+
 _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _stammers18,
     _edges18,
@@ -19351,10 +20219,12 @@ _TRAILING_HELD32S = frozenset(
 )
 
 
-# how long or since when, in such a statement ("she's been out on the water all day")
+# how long or since when, in such a statement ("she's been out on the water all day"); session
+# 33: and 'all over the place' ("his lines are all over the place": no count)
 _TRAILING_TIME32S = re.compile(
     r"\b(?:all (?:day|morning|afternoon|evening|night|week)(?: long)?|since (?:dawn|breakfast|"
-    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours))\b"
+    r"lunch|six|seven|eight|nine|ten|first thing|this morning)|for (?:ages|hours)|all over the "
+    r"(?:place|shop)|in (?:two|five|ten|twenty|a (?:minute|mo|sec|tick|jiffy))(?: minutes)?)\b"
 )
 
 
@@ -19395,6 +20265,10 @@ def _inert_statement32s(m: re.Match[str], before: str, lexicon: Lexicon) -> bool
     object."""
     pred = _TRAILING_TIME32S.sub(" ", m["pred"].lower())  # "all day", "since seven": when
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", pred)
+    if not re.sub(r"^(?:'[a-z]+|\s+[a-z]+)", "", m["pred"]).strip():
+        # session 33: "…; the crisps, Alice's.": a possessive that says whose the things before
+        # it are (the afterthoughts fuzz: taken off, the crisps had gone to Bob), no statement
+        return False
     if any(
         w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S or w.endswith("n't")
         for w in words
@@ -19479,6 +20353,115 @@ _STEPS31S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_otherwise31s,
 )
 _STEPS32S: tuple[Callable[[str, Lexicon], str], ...] = (_trailing_remark32s, _opening_state32s)
+
+
+# Session 33 (12s): a greeting opening the instruction, with the rest of its sentence ("Morning,
+# it's the dentist up from outpatients.", "Afternoon, I'm the carpenter from the unit next door,
+# after a small favour.", "Hello, paramedic, just dropping off some paperwork for the manager.")
+_GREETING33S = re.compile(
+    r"^(?:(?:ah|oh|well|right)\s*,?\s+)?(?P<said>(?:hello|hi|hiya|hey|hullo|morning|afternoon|"
+    r"evening|good (?:morning|afternoon|evening|day)|alright|all right)\b[^.!?]*[.!]+)\s+"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+# words that would make the greeting's sentence ask, point at a thing, or say when
+_GREETING_HELD33S = frozenset(
+    {
+        *("give", "hand", "pass", "bring", "take", "put", "place", "send", "fetch", "get"),
+        *("gets", "want", "wants", "wanted", "need", "needs", "needed", "like", "likes"),
+        *("fancy", "fancies", "asked", "asking", "it", "them", "that", "those", "these", "this"),
+        *("one", "ones", "both", "either", "any", "which", "whichever", "too", "also", "instead"),
+        *("or", "if", "unless", "then", "first", "later", "tomorrow", "tonight", "wait"),
+        *("until", "till", "not", "no", "don't", "never", "cancel", "please", "could", "can"),
+        *("would", "will", "should", "must"),
+    }
+)
+
+
+def _greeting_said33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): a sentence that opens on a greeting and says who the speaker is or
+    why they came ("Hello, sorry, I'm the tailor, I've come to measure the manager for her
+    suit. If you'd be so good, pass Priya the red pen.") asks for nothing: it goes, and the
+    sentences after it are read. Only when it names no object or surface of the scene, holds
+    none of _GREETING_HELD33S (a hand-over, a want, a word pointing at a thing, a choice, a
+    time, a negation, a modal that could ask), names a person only in a clause of its own
+    (three words or more the scene does not name, no 'after'), and nothing after it says he /
+    she / him / her / they / them (who they are could hang on a name in it, or on someone it
+    names whom the scene does not hold)."""
+    m = _GREETING33S.match(text)
+    if m is None:
+        return text
+    # "Morning, it's the dentist …": the speaker saying who it is, no thing pointed at
+    said = re.sub(
+        r"^([a-z ]+,\s*)it(?:'s| is) (?=(?:the|a|an|your|just) )", r"\1", m["said"], flags=_F
+    )
+    # "… I've got four minutes till my next run.": the speaker's own time
+    said = re.sub(r"\b(?:till|until) (?:my|our) ", " ", said, flags=_F)
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?", said.lower())
+    if any(w in _GREETING_HELD33S or w.split("'")[0] in _GREETING_HELD33S for w in words):
+        return text
+    if _ids(m["said"], lexicon, "object") or _ids(m["said"], lexicon, "surface"):
+        return text
+    if _ids(m["said"], lexicon, "human"):
+        # a person named: only in a clause of the speaker's own ("I've come to measure the
+        # manager for her suit"), not a want ('Alice is after a drink') or a terse part that may
+        # allot ('for Alice', "Alice's turn", 'Alice next')
+        scene = _scene_words29(lexicon)
+        own = [w for w in words[1:] if len(w) > 3 and w.split("'")[0] not in scene]
+        if "after" in words or len(own) < 3:
+            return text
+    if re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", m["rest"], _F):
+        return text  # "Hello, I'm Carol's plumber. Hand her …": 'her' may hang on the greeting
+    return m["rest"]
+
+
+# Session 33 (12s): a request asked as a question whose subject is a list of objects ("Could the
+# bowl and the spoon both go on the tray, please?"): the grammar reads the question with one
+# object only, and the statement ('The bowl and the spoon could go …') with the list
+_MODAL_FIRST33S = re.compile(
+    r"^(?P<mod>could|can|would|will|might)\s+(?P<subj>(?:the )?[a-z][a-z ]*? and (?:the )?"
+    r"[a-z][a-z ]*?)\s+(?P<rest>(?:both\s+)?(?:go|be put|be placed|be moved)\b.*)$",
+    _F,
+)
+
+
+def _modal_first33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the question above said as the statement, when its subject names
+    objects of the scene only (each word of it)."""
+    m = _MODAL_FIRST33S.match(text.strip())
+    if m is None or not _things31(m["subj"], lexicon):
+        return text
+    subj = m["subj"][:1].upper() + m["subj"][1:]
+    return f"{subj} {m['mod'].lower()} {m['rest']}"
+
+
+# Session 33 (12s): a correction that names its person in a cleft ("Gloves to Mia, no, Tom's the
+# one loading my trailer."): the person is what the correction says
+_CLEFT_CORRECTED33S = re.compile(
+    r"(?P<cue>,\s*(?:no|sorry|i mean|actually|wait|no wait)(?:,\s*|\s+))(?P<who>[A-Z][a-z]+(?: "
+    r"[A-Z][a-z]+)?)(?:'s| is) the one(?: (?:who|that))? (?P<rest>[a-z][^,.;!?]*?)(?P<end>[.!]*)"
+    r"\s*$"
+)
+
+
+def _cleft_corrected33s(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12s): the cleft above closing the instruction is its person alone, when that
+    is one person of the scene and what the cleft says of them names nothing of the scene and
+    holds none of _TRAILING_HELD32S ('Tom's the one who wants the tape' is left)."""
+    m = _CLEFT_CORRECTED33S.search(text)
+    if m is None or not _only_person(m["who"], lexicon) or _ids(m["rest"], lexicon):
+        return text
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", m["rest"].lower())
+    if any(w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S for w in words):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['who']}{m['end'] or '.'}"
+
+
+_STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _greeting_said33s,
+    _modal_first33s,
+    _cleft_corrected33s,
+)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
@@ -20502,7 +21485,34 @@ def _either_person33r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['prep']} either of the two people{text[m.end() :]}"
 
 
+# "Teddy to Ava, oops, I mean to Lily, Ava's too big for teddies now."
+_CORRECTED_AWAY33R = re.compile(
+    r"^(?P<head>.+?\b(?:no|sorry|oops|i mean|i meant),?\s+(?:i mean\s+|i meant\s+)?(?:to )?"
+    r"(?P<q>[A-Za-z][\w ]*?)),\s*(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?P<why>(?:too|not|no longer|"
+    r"off|done with|finished with)\b[a-z' ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_away33r(text: str, lexicon: Lexicon) -> str:
+    """Session 33 (12r): after a correction to another person ('I mean to Lily'), "Ava's too big
+    for teddies now" says why of the person corrected away: taken off when P is one person the
+    text names before the correction, the correction names another, and the remark names nothing
+    of the scene but the request's objects."""
+    m = _CORRECTED_AWAY33R.match(text)
+    if m is None or not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    p, q = _ids(m["p"], lexicon), _ids(m["q"], lexicon)
+    cue = m.start("q")
+    if p == q or not p <= _ids(text[:cue], lexicon, "human"):
+        return text
+    if not _ids(m["why"], lexicon) <= _ids(text[:cue], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
 _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _corrected_away33r,
     _to_one_other33r,
     _anything_at_all33r,
     _sitting_out33r,
@@ -20544,6 +21554,10 @@ _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
+    *_STEPS33S,
+    # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
+    *_STEPS33T,
     # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
     *_STEPS33R,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections

@@ -103,7 +103,18 @@ def parse_instruction(
             _choices_kept(text, node, lexicon)
         return node
     except GroundingError as refused:
-        more = _more_readings29(text, refused, lexicon) if len(inside) == 1 else ""
+        more = (
+            "; ".join(
+                m
+                for m in (
+                    _more_readings29(text, refused, lexicon),
+                    _more_readings33s(text, refused, lexicon),
+                )
+                if m
+            )
+            if len(inside) == 1
+            else ""
+        )
         if more:
             raise GroundingError(f"{refused}; {more}") from None
         unclear = lexicon.unclear_typos(text)
@@ -296,6 +307,70 @@ def _more_readings29(text: str, refused: GroundingError, lexicon: Lexicon) -> st
     return "; ".join(out)
 
 
+# 'one of the boxes, the one Mia put a red sticker on': a choice narrowed by what the scene does
+# not know, said with 'one of the' (session 33)
+_ONE_OF_THE33S = re.compile(
+    r"\bone of the ([a-z]+)\b[^,.;!?]*, the one (?!of\b|for\b|on\b|in\b|to\b)\w", re.I
+)
+# 'One of them gets the chips': 'them' people, by the verb after it
+_ONE_OF_THEM_GETS33S = re.compile(
+    r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b", re.I
+)
+
+
+def _more_readings33s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
+    """Session 33 (12s): more of what a refusal must say so that one rephrasing can settle it
+    (blind21/22's refusals without their readings; they never make a reading): a pronoun that
+    refers to nothing before it could be any object of the scene ("Hand that over to Person A
+    when you're ready."); with a he / she refused, an 'it' after a list ("Person B spoke of the
+    cup and the apple. Please, give it to her now.") and an object said with 'her / his / their'
+    ("… looking for her pen. Could you take it back to her?"); a role several people share
+    ('The student by the radiator …'), an object of several said bare to open a sentence ('Plate
+    to Lena. The one she likes. …'), 'one of the boxes, the one …', and 'one of them gets …' with
+    no people named before it (each person of the scene). '' when there is nothing to add."""
+    said = str(refused)
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    out: list[str] = []
+
+    def add(word: str, ids: list[str]) -> None:
+        if len(ids) > 1 and not all(i in said for i in ids):
+            out.append(f"{word!r} could mean {' or '.join(ids)}")
+
+    nothing = re.match(r"^'(\w+)' in .* refers to nothing before it", said)
+    if nothing is not None and not _readings(refused):
+        add(nothing.group(1), [o.id for o in lexicon.scene.objects])
+    if "is not resolved" in said:
+        it = _unclear_it(text, lexicon)
+        if it and it not in said:
+            out.append(it)
+    for k, x in enumerate(items):
+        if x.kind != "ent" or len({r.id for r in x.refs}) < 2 or any(r.plural for r in x.refs):
+            continue
+        before = items[k - 1] if k > 0 else None
+        opens = before is None or (before.kind == "punct" and before.lemma in _SENTENCE_END)
+        owned = before is not None and before.text.lower() in ("her", "his", "their")
+        kinds = {r.kind for r in x.refs}
+        if kinds == {"object"} and (opens or owned):
+            add(x.text, sorted({r.id for r in x.refs}))
+        elif kinds == {"human"} and before is not None and before.text.lower() == "the":
+            add(x.text, [person_name(r.id, lexicon) for r in x.refs])
+    m = _ONE_OF_THE33S.search(text)
+    if m is not None:
+        add(
+            m.group(1),
+            sorted({r.id for y in lex(m.group(1), lexicon) if y.kind == "ent" for r in y.refs}),
+        )
+    one = _ONE_OF_THEM_GETS33S.search(text)
+    if one is not None and not _people_listed29(
+        items, lexicon, len(lex(text[: one.start()], lexicon))
+    ):
+        add("one of them", [person_name(h.id, lexicon) for h in lexicon.scene.humans])
+    return "; ".join(dict.fromkeys(out))
+
+
 def _people_listed29(items: list[Item], lexicon: Lexicon, stop: int) -> list[str]:
     """The people of the last 'P and Q' (or 'P, Q and R') said before item ``stop``."""
     k = min(stop, len(items)) - 1
@@ -403,7 +478,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
             )
-        off = _PUT_OFF30S.search(text) or _LATER30S.search(text)
+        off = _PUT_OFF30S.search(text) or _LATER30S.search(text) or _LATER_END33L.search(text)
         if off is not None:
             raise GroundingError(
                 f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
@@ -414,6 +489,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _has_beside_want31s(text, lexicon)
         _state_only32s(text, lexicon)
         _left_then_it32s(text, lexicon)
+        _owner_only33s(text, lexicon)
+        _other_after_repair33s(text, lexicon)
+        _them_after_choice33s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -428,6 +506,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         if normalise:
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
+            _said_against33s(text, node, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -469,6 +548,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 node = _read(plain, scene, lexicon)
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
+                _said_against33s(text, node, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -704,7 +784,11 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
     object, which the first reading keeps back: the instruction contradicts itself or asks for
     the object in two words. Refused naming both readings (the grammar had read teddy>A).
     'Leave the teddy; give the bib to Lily' (another object), 'Leave the teddy on the mat'
-    (a place) and 'Leave the red mug, give Bob the other one' read as before."""
+    (a place, nothing after) and 'Leave the red mug, give Bob the other one' read as before.
+    Session 33 (12s): with a place ('Leave the teddy on the mat; give it to Lily.', read as
+    teddy@mat & teddy>A) 'leave' keeps the object there, and the 'it' after it moves it again:
+    refused naming both ('put … on …' then 'give it …' is a placement and a hand-over, read as
+    before); so is an 'and then' between."""
     try:
         items = lex(text, lexicon)
     except GroundingError:
@@ -722,7 +806,9 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
             _is(items[n], "filler") or (_is(items[n], "aux") and items[n].text.lower() == "be")
         ):
             n += 1
-        if n < len(items) and not (items[n].kind == "punct" or _is(items[n], "and")):
+        place = _place_said33s(items, n)
+        n = place or n
+        if n < len(items) and not (items[n].kind == "punct" or _is(items[n], "and", "then")):
             continue
         for m in range(n, len(items)):
             x = items[m]
@@ -733,13 +819,254 @@ def _left_then_it32s(text: str, lexicon: Lexicon) -> None:
                 and _is(x, "it", "pronoun")
                 and _is_verb(items[m - 1])  # 'give it', not "it's only the bottle"
             ):
-                left = _text(items[k : j + 1])
                 obj = _text(items[k + 1 : j + 1])
+                if place:
+                    left = _text(items[k:place])
+                    where = _text(items[j + 1 : place])
+                    raise GroundingError(
+                        f"{x.text!r} after {left!r} can only be {obj}, which "
+                        f"{it.text.lower()!r} keeps {where}: is {obj} to stay {where}, or to "
+                        f"go {where} and then be moved again? say one"
+                    )
+                left = _text(items[k : j + 1])
                 raise GroundingError(
                     f"{x.text!r} after {left!r} can only be {obj}: {it.text.lower()!r} may keep "
                     f"{obj} where it is (then it goes to no one) or leave it for the one who "
                     f"gets it; say 'give {obj} to …', or name the object that goes"
                 )
+
+
+def _place_said33s(items: list[Item], n: int) -> int:
+    """Session 33 (12s): the index after 'on / in / at <surface>' said at ``n`` ('leave the
+    teddy on the mat'), else 0."""
+    if n >= len(items) or not _is(items[n], "on"):
+        return 0
+    n += 1
+    while n < len(items) and _is(items[n], "det"):
+        n += 1
+    if (
+        n < len(items)
+        and items[n].kind == "ent"
+        and all(r.kind == "surface" for r in items[n].refs)
+    ):
+        return n + 1
+    return 0
+
+
+# Session 33 (12s): the forms of 'have' that say what a person holds now ("he's got one",
+# "Sam has it already")
+_HOLDS33S = frozenset({"has", "has got", "'s got", "have", "have got", "'ve got"})
+
+
+def _said_against33s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 33 (12s): a clause of ``text`` that says the person who gets something in
+    ``node`` does not take it or holds it already: 'Bob is off crisps' (the crisps go to Bob:
+    "Crisps to Alice, sorry, I mean Bob, Bob is off crisps.") or, closing the instruction,
+    'he's got one (already)' / 'Sam has it' ("Give Bob the cup, he's got one already.",
+    "Stapler to Priya, no, to Sam, Sam's got one."). The grammar had dropped such a clause as a
+    remark and read the request; the remark undercuts it (or the correction before it), so
+    the instruction is refused naming what it asks and what the remark says. A he / she is any
+    person named before it whom the scene's titles allow. Said of someone else ("…, I mean
+    Bob, Alice is off crisps.", "The stapler's for Priya. Oh hang on, she's got one, give it
+    to Sam."), negated ("she hasn't got one") or after 'once' / 'when' it is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    given = [t for t in tasks(node) if t.kind == "deliver"]
+    if not given:
+        return
+    for s in range(len(items)):
+        if s > 0 and not (items[s - 1].kind == "punct" or _is(items[s - 1], "reason")):
+            continue
+        k = s
+        while k < len(items) and _is(items[k], "and", "correct", "reason", "filler"):
+            k += 1
+        said = _against_clause33s(items, k)
+        if said is None:
+            continue
+        end, objects = said
+        who = _who33s(items, k, lexicon)
+        hit = [t for t in given if t.target in who and (not objects or t.obj in objects)]
+        if not hit:
+            continue
+        clause = _text(items[k:end])
+        what = " and ".join(dict.fromkeys(f"the {t.obj}" for t in hit))
+        name = " or ".join(dict.fromkeys(lexicon.display(t.target) for t in hit))
+        others = [
+            lexicon.display(r.id)
+            for r in dict.fromkeys(r for x in items if x.kind == "ent" for r in x.refs)
+            if r.kind == "human" and r.id not in who
+        ]
+        instead = f", or to {' or '.join(others)}" if others else ", or to no one"
+        if objects:
+            raise GroundingError(
+                f"{clause!r} says {name} does not take {what}, yet the request gives it to "
+                f"{name}: is {what} to go to {name}{instead}? say who gets it"
+            )
+        if any(x.kind != "punct" and not _is(x, "filler") for x in items[end:]):
+            continue  # "Bob's got one, give him the other mug": the request after it
+        raise GroundingError(
+            f"{clause!r} says {name} already has one, yet the request gives {what} to {name}: "
+            f"is {what} still to go to {name}{instead}? say who gets it"
+        )
+
+
+def _against_clause33s(items: list[Item], k: int) -> tuple[int, frozenset[str]] | None:
+    """The end of the clause at ``k`` and the objects it says its subject is off ('Bob is off
+    (the) crisps'; none for 'he's got one', 'Sam has it already'), when it is one of those."""
+    if k + 2 >= len(items):
+        return None
+    subject = items[k]
+    if not (
+        (subject.kind == "ent" and all(r.kind == "human" for r in subject.refs))
+        or (_is(subject, "pronoun") and subject.text.lower() in ("he", "she"))
+    ):
+        return None
+    j = k + 1
+    if _is(items[j], "aux", "filler") and items[j].text.lower() in ("is", "'s"):
+        if items[j + 1].text.lower() == "off" and _is(items[j + 1], "filler"):
+            n = j + 2
+            while n < len(items) and _is(items[n], "det"):
+                n += 1
+            if n < len(items) and _objects_only32s(items[n]):
+                return n + 1, frozenset(r.id for r in items[n].refs)
+            return None
+        j += 1  # "he's already got one"
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j >= len(items):
+        return None
+    verb = items[j].text.lower()
+    if not (
+        (items[j].lemma == "verb:have" and verb in _HOLDS33S)
+        or (j > k + 1 and items[j].lemma == "verb:get" and verb == "got")
+    ):
+        return None
+    j += 1
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j >= len(items) or items[j].text.lower() not in ("one", "it", "them"):
+        return None
+    j += 1
+    if j < len(items) and items[j].text.lower() == "already":
+        j += 1
+    if j < len(items) and items[j].kind != "punct":
+        return None
+    return j, frozenset()
+
+
+def _who33s(items: list[Item], k: int, lexicon: Lexicon) -> set[str]:
+    """Who the subject at ``k`` may be: the person named, or for a he / she each person named
+    before it whom the scene's titles allow."""
+    subject = items[k]
+    if subject.kind == "ent":
+        return {r.id for r in subject.refs}
+    sex = PRONOUN_SEX[subject.text.lower()]
+    return {
+        r.id
+        for x in items[:k]
+        if x.kind == "ent"
+        for r in x.refs
+        if r.kind == "human" and title_sex(r.id, lexicon) in (None, sex)
+    }
+
+
+def _owner_only33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'The drill is Jess's.' as the whole instruction says whose the drill
+    is (nothing to do) or, as "The drill is Jess's, the torch goes in the locker" does, allots
+    it (the grammar had read drill>B): refused naming both readings. Said with 'please' or
+    thanks, or beside another part, it allots and is read as before."""
+    if _ASKED32S.search(text):
+        return
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler") or it.text == "'s"]
+    except GroundingError:
+        return
+    while items and items[-1].kind == "punct" and items[-1].lemma in (".", "!"):
+        items = items[:-1]
+    k = 1 if items and _is(items[0], "det") else 0
+    if len(items) != k + 4 or not _objects_only32s(items[k]):
+        return
+    verb, owner, mark = items[k + 1 :]
+    if (
+        verb.text.lower() in ("is", "are", "'s")
+        and owner.kind == "ent"
+        and all(r.kind == "human" for r in owner.refs)
+        and mark.text == "'s"
+    ):
+        obj = _text(items[: k + 1]).lower()
+        be, go = ("are", "go") if verb.text == "are" else ("is", "goes")
+        raise GroundingError(
+            f"{text.strip()!r} could say whose {obj} {be} (nothing to do) or that {obj} {go} to "
+            f"{owner.text}: say 'give {owner.text} {obj}' to have it handed over"
+        )
+
+
+def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'Give Alice a mug, no, give Bob the other one': 'the other' after a
+    correction that takes back 'a mug' (any one of two) points at no mug, since none was picked
+    (the grammar had read either mug to Bob): refused naming the mugs. After 'the red mug'
+    ('…, no, give Bob the other one': the blue mug) and without a correction ('Give Alice a mug
+    and Bob the other one': one each) it is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for c, it in enumerate(items):
+        if not (_is(it, "correct") or (_is(it, "not") and it.text.lower() == "no")):
+            continue
+        x = max((x for x in range(c) if items[x].kind == "ent"), default=0)
+        if not (
+            x > 0
+            and _objects_only32s(items[x])
+            and len(items[x].refs) > 1
+            and (_is(items[x - 1], "q:some") or items[x - 1].text.lower() in ("a", "an"))
+            and all(y.kind == "punct" for y in items[x + 1 : c])
+        ):
+            continue  # "Alice gets a mug and Carol, sorry, Bob …": the repair is of a person
+        before = [x]
+        for n in range(c + 1, len(items) - 1):
+            if items[n].text.lower() == "the" and _is(items[n + 1], "other"):
+                said = items[before[-1]]
+                raise GroundingError(
+                    f"'the other' after {_text(items[before[-1] - 1 : before[-1] + 1])!r}, "
+                    f"taken back, points at none of them: it could mean "
+                    f"{' or '.join(r.id for r in said.refs)}; name the one that goes"
+                )
+
+
+def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
+    """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
+    Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
+    may be the one chosen or both (the grammar had read both): refused naming the readings.
+    'It' after the choice (the one chosen) and 'them' after 'the cup and the apple' read as
+    before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for m, it in enumerate(items):
+        if it.text.lower() != "them" or not _is(it, "pronoun", "it"):
+            continue
+        last = next((x for x in range(m - 1, -1, -1) if _objects_only32s(items[x])), None)
+        if last is None:
+            continue
+        if any(
+            _is(y, "correct") or (_is(y, "not") and y.text.lower() == "no") for y in items[last:m]
+        ):
+            continue  # "… on the shelf, no, give them to Bob": a correction's (session 32)
+        x = last
+        while x > 0 and (
+            _objects_only32s(items[x - 1]) or _is(items[x - 1], "det", "or", "and", ",", "either")
+        ):
+            x -= 1
+        if any(_is(items[y], "or") for y in range(x, last)):
+            listed = _text(items[x : last + 1]).strip(" ,")
+            raise GroundingError(
+                f"'them' after {listed!r} could mean the one chosen or both: say 'it' for the "
+                "one chosen, or 'and' for both"
+            )
 
 
 # the words that make "Marco has the knife" asked ("…, please", "…, cheers")
@@ -831,6 +1158,9 @@ def _names_any30s(text: str, lexicon: Lexicon) -> bool:
 # 'Later' opening a sentence ("Later, give Bob the cup.", "Later: Alice, cup."): the time of
 # what follows, not 'then' (read as an order word with nothing before it, it had been dropped)
 _LATER30S = re.compile(r"(?:^|[.;!?]\s+)(?P<said>later)\b(?!\s+(?:on|than)\b)", re.I)
+# 'later' after a comma, closing the text ("…. Quick as you like, later."): a filler dropped
+# before it had left it to be dropped too (session 33, lead)
+_LATER_END33L = re.compile(r",\s*(?P<said>later(?: on)?)\s*[.!]*\s*$", re.I)
 
 # words that put a task off (session 20: refused, since acting now could be wrong; 'now',
 # 'today', 'soon', 'asap', 'right away' are read)
