@@ -141,7 +141,8 @@ def parse_instruction(
 # to Carol.", "What comes next is Alice's call.", "…, and see what the supervisor says.",
 # "Depending on what the foreman says, …" (session 33, lead: 12c's deferrals fuzz)
 _DEFERRED33L = re.compile(
-    r"\b(?:is|are|'s|was)\s+(?:all\s+)?up to\s+(?!(?:the\s+)?(?:top|brim|rim|ceiling|line|mark)\b)"
+    r"\b(?:is|are|'s|was)\s+(?:all\s+)?up to\s+"
+    r"(?!(?:you|yourself|the robots?)\b|(?:the\s+)?(?:top|brim|rim|ceiling|line|mark)\b)"
     r"|\b(?:[a-z]+'s|his|her|their)\s+(?:call|decision|say-so)\b(?!\s+(?:to|for|of)\b)"
     r"|\bsee what\s+[\w' ]{1,40}?\s+(?:says|thinks|wants|decides)\b"
     r"|\bdepending on (?:what|whatever|whether)\s+[\w' ]{1,40}?\s+"
