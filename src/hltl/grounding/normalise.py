@@ -62,7 +62,7 @@ from hltl.grounding.lexicon import (
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
-from hltl.grounding.repairs import _first_name, _last_name
+from hltl.grounding.repairs import REPAIR_WORDS, _first_name, _last_name
 from hltl.grounding.tree import Group, Node, Task, tasks
 from hltl.world.scene import Scene
 
@@ -5997,7 +5997,7 @@ def _surface_only(words: str, lexicon: Lexicon) -> bool:
 
 
 _REPAIR_WORD33L = re.compile(
-    r"(?:,?\s*\b(?:I mean|I meant|sorry|no|or rather|rather|oops|I should say|um+|uh+|er+|erm+)\b)+"
+    rf"(?:,?\s*\b(?:{REPAIR_WORDS}|rather|i should say)\b)+"
     r"\s*,?\s*",
     _F,
 )

@@ -28,6 +28,9 @@ _AFTER_A_LIST_WORD = re.compile(r"\b(and|or)\s*,?\s*(?:um+|uh+|er+|erm+)\s*,\s*"
 _DETS = r"(?:(?:the|a|an|my|our|your|his|her|their|that|this)\s+)?"
 _PREPS = r"(?:(?:to|for|on|onto|in|into|at|by|with)\s+)?"
 _BOUNDARY = re.compile(r"[.;:!?,—–]|\s-\s")
+# the words that repair a name said just before (a hesitation among them); lower case, for
+# patterns compiled with re.IGNORECASE or used inside (?i:…)
+REPAIR_WORDS = r"(?:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)"
 # the kinds of names a bare hesitation repairs (a robot's name is not said so)
 _NAMED_KINDS = frozenset({"object", "human", "surface"})
 
@@ -139,7 +142,7 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
 _SUBJECT_REPAIRED = re.compile(
     r"(?P<pre>(?:^|[,.;:!?]\s*)(?:(?i:oh|ah|and|also|plus|then)\s+)*)"
     r"(?P<said>[A-Z][\w]*(?: [A-Z][\w]*)?)\s*,\s*"
-    r"(?:(?i:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
+    rf"(?:(?i:{REPAIR_WORDS})\s*,?\s*)+"
     r"(?P<meant>[A-Z][\w]*(?: [A-Z][\w]*)?)"
     r"(?=\s+(?i:wanted|wants|needs|needed|would like|gets|is getting|asked for|should get|"
     r"can have|has asked for|is after)\b)"
@@ -175,7 +178,7 @@ def subject_repairs33l(text: str, lexicon: Lexicon) -> str:
 
 # an object repaired at once by a repair word ("the barcode scanner, I mean the gloves")
 _OBJECT_REPAIR = re.compile(
-    r"\s*,\s*(?:(?:i mean|i meant|sorry|no|or rather|oops|um+|uh+|er+|erm+)\s*,?\s*)+"
+    rf"\s*,\s*(?:{REPAIR_WORDS}\s*,?\s*)+"
     r"(?=(?:the|a|an|my|that)\s)",
     _F,
 )
