@@ -247,7 +247,6 @@ KNOWN_MISSES = frozenset(
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
         "Lily wants a block to chew on. Not the red one, love, the other.",
-        "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
         "the apple over to person b when u can",
@@ -431,36 +430,6 @@ KNOWN_MISSES = frozenset(
         "I've been on the trumpet all morning and I'm whacked so could you just take the bottle to "
         "Person A for me",
         "Torch to Jess she's under the van and the screws on the bench after that",
-        "One for Person A, one for Person B, that's the apple and the cup; who gets which is up to "
-        "you.",
-        'Something to eat for Person A, apple or chips, pick whichever you like.',
-        'Split it up so Person A ends up with the bottle and Person B ends up with the cup.',
-        'Whichever of Person A and Person B is closer gets the bottle.',
-        'Any bottle you can lay hands on, give it to Person A.',
-        "There's a lone bottle in this cell and Person A is the one to have it.",
-        'Nobody goes without: Person A gets handed the bottle, Person B the bag of chips.',
-        'Either patient can have the magazine, they both like the puzzles.',
-        "Scissors to either of the students, Zoe or Noah, doesn't matter.",
-        'Both mugs need shifting up to the shelf, the red and the blue alike.',
-        "Hand everything we've got, both the items, over to Person A.",
-        'One bottle, one person: bottle to Person A.',
-        "Ava's building a tower so she needs the pair of blocks, red and green.",
-        "The locker's where the two spanners live, so in they go.",
-        'Carol asked for a mug, anything but the red one.',
-        "Leaving the crisps aside, Bob can take what's left.",
-        "Only Person B gets anything today, and it's the chips.",
-        'No fuss, nothing else, just the bottle for Person A.',
-        'Nothing fancy, no glass, just the bottle for Person A.',
-        'Person B, not Person A, is the one getting the chips.',
-        'Lena wants the plate, but not the one on the plate rack.',
-        "Zoe wants to read the book that isn't green.",
-        'Crisps on the shelf, actually no, give them to Bob.',
-        "Over to Person A with the cup, hmm, no, it's Person B who's meant to get it.",
-        'First I said chips, but Person A is actually after the apple, so give her that.',
-        "Chips for Person A, ugh, wrong one, she's been after the bottle all along.",
-        "Bottle to Person B, no, Person A, there's only her here.",
-        'The spoon in the sink, oh no, sorry, on the tray is better.',
-        'Drill to Jess, no, Kofi, final answer.',
         'bottle to person a please, from the stableman',
         'person a has the chips coming, and person b is owed the bottle from earlier',
         'Person A fancies the xpple after her walk.',
@@ -480,9 +449,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
-        # blind32 (tuned on in session 34)
-        'Give it to Person B, the one by the window.',
-        'just give them the bottle, the one who asked',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
