@@ -282,6 +282,126 @@ def test_negation_and_exclusion(text: str, want: str | None, scene: Scene) -> No
     _assert_case(text, want, scene)
 
 
+# -- the same kinds in blind19 and blind20 ------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        # the owner said between the object and 'hand it to him'
+        ("Whichever cup isn't the green one, that's Omar's, hand it to him.", "cup_white>B", LAB),
+        (
+            "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
+            "book_red>C",
+            CLASSROOM,
+        ),
+        # 'him' cannot be Mrs Khan (a title says who is who)
+        ("The magazine on the bed, that's Mrs Khan's, hand it to him.", None, WARD),
+        # a note 'Shelf for the bottle' before a correction
+        ("Shelf for the bottle, please, or no, better still, straight to Alice.", "bottle>A", FIG1),
+        ("Shelf for the bottle, please, or no, better still, straight to Carol.", None, FIG1),
+        ("Table for the bottle, please, or no, straight to Alice.", None, FIG1),  # no table
+        ("Bottle on the shelf, no wait, to Alice.", "bottle>A", TWO),
+        ("Bottle on the shelf, no wait, to Carol.", None, TWO),
+        # the better place said twice
+        (
+            "Sponge on the tray... actually no, sink's better, put it in the sink.",
+            "sponge@sink",
+            LAB,
+        ),
+        ("Sponge on the tray... actually no, tray's better, put it in the sink.", None, LAB),
+        # the speaker's reason for what is left out
+        (
+            "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
+            "spanner_small@locker & screws@locker & torch@locker & spanner_large@locker",
+            WORKSHOP,
+        ),
+        ("Clear the lot into the locker, I still need those.", None, WORKSHOP),
+        # 'X's no good, so one of the others'
+        (
+            "Sam's after a pen. Red's no good for forms, so one of the others.",
+            "pen_black>B | pen_blue>B",
+            OFFICE,
+        ),
+        ("Omar's after a cup. Green's no good, so one of the others.", "cup_white>B", LAB),
+        ("Sam's after a pen. Green's no good for forms, so one of the others.", None, OFFICE),
+        # 'Not the red one, the other' with two of the kind
+        (
+            "Lily wants a block to chew on. Not the red one, love, the other.",
+            "block_green>A",
+            NURSERY,
+        ),
+        ("Lily wants a block to chew on. Not the blue one, love, the other.", None, NURSERY),
+        ("Sam wants a pen. Not the red one, the other.", None, OFFICE),  # three pens
+        # a person named by role and place, then by name
+        (
+            "The guest on table five, Mr Novak, gets the white plate, not the blue.",
+            "plate_white>C",
+            KITCHEN,
+        ),
+        ("The guest on table five, Lena, gets the white plate, not the blue.", None, KITCHEN),
+        # the order said again
+        (
+            "The cup and then the apple to Person B, or rather the apple first and then the cup.",
+            "apple>B ; cup>B",
+            F41,
+        ),
+        (
+            "The cup and then the apple to Person B, or rather the apple first and then the "
+            "bottle.",
+            None,
+            F41,
+        ),
+        (
+            "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, "
+            "apple to Person B first and the cup after.",
+            "apple>B ; cup>A",
+            F42,
+        ),
+        (
+            "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, "
+            "apple to Person A first and the cup after.",
+            None,
+            F42,
+        ),
+        # a heading for the two people of the scene
+        (
+            "They both want something. Bottle over to Person A please, and cup across to Person B.",
+            "bottle>A & cup>B",
+            F41,
+        ),
+        ("They both want something. Bottle over to Person A please.", None, F41),
+        # 'Everything that's a box', and the one left out staying where it starts
+        (
+            "Everything that's a box goes on the conveyor, except the big one, leave that on the "
+            "pallet.",
+            "box_small@conveyor & box_medium@conveyor",
+            DEPOT,
+        ),
+        (
+            "Everything that's a box goes on the conveyor, except the small one, leave that on "
+            "the pallet.",
+            None,
+            DEPOT,
+        ),
+        # counted plurals wanting to go somewhere
+        (
+            "Those two mugs want to go on the counter, please.",
+            "mug_red@table & mug_blue@table",
+            CELL,
+        ),
+        (
+            "All three of the boxes want to go on the conveyor, in whatever order suits you.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        ("Those three mugs want to go on the counter, please.", None, CELL),
+    ),
+)
+def test_blind19_and_blind20_kinds(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 # -- refusals that name their readings ------------------------------------------------------------
 
 

@@ -22133,7 +22133,293 @@ def _one_by34r(text: str, lexicon: Lexicon) -> str:
     return f"{m['head']}{m['end'] or '.'}"
 
 
+# -- session 34 (12r): the same kinds in blind19 and blind20 -------------------------------------
+
+# "Whichever cup isn't the green one, that's Omar's, hand it to him."
+_OWNER_THEN34R = re.compile(
+    r"^(?P<x>.+?),\s*(?:that's|that is|is|it's|it is) (?P<p>[a-z][\w ]*?)'s,\s*"
+    r"(?P<v>give|hand|pass|take) it(?: to)? (?P<pro>him|her)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _owner_then34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "<the object described>, that's Omar's (is Zoe's), hand it to him" is
+    "<the object described>, hand it to Omar": the owner is the one person 'him' / 'her' then
+    means (the description must name no person)."""
+    m = _OWNER_THEN34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if _ids(m["x"], lexicon, "human") or not _ids(m["x"], lexicon, "object"):
+        return text
+    return f"{m['x']}, {m['v']} it to {m['p']}{m['end'] or '.'}"
+
+
+# "Shelf for the bottle, please, or no, better still, straight to Alice."
+_SURFACE_FOR34R = re.compile(
+    r"^(?P<s>[a-z]+(?: [a-z]+)?) for (?P<x>the [a-z]+(?: [a-z]+)?),\s*(?:please,\s*)?(?:or )?"
+    r"no,\s*(?:(?:better still|even better|better yet),\s*)?(?:straight |right )?"
+    r"(?P<rest>(?:to|on|onto|in|into) .+)$",
+    _F,
+)
+
+
+def _surface_for34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a note "Shelf for the bottle" before a correction ("…, or no, better
+    still, straight to Alice") is "The bottle on the shelf, no, to Alice" (S one surface, the
+    object one whole name)."""
+    m = _SURFACE_FOR34R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"The {m['x'][4:]} on the {m['s'].lower()}, no, {m['rest']}"
+
+
+# "Bottle on the shelf, no wait, to Alice."
+_NO_WAIT_TO34R = re.compile(
+    r"(?P<head>\b(?:on|in) the [a-z]+(?: [a-z]+)?),\s*no,? wait,\s*(?P<to>to [a-z])", _F
+)
+
+
+def _no_wait_to34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "X on the shelf, no wait, to Alice" is "…, no, to Alice" ('no wait' the
+    cue 'no', before a new recipient)."""
+    m = _NO_WAIT_TO34R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['head']}, no, {m['to']}{text[m.end() :]}"
+
+
+# "Sponge on the tray... actually no, sink's better, put it in the sink."
+_SAID_BETTER34R = re.compile(
+    r"(?P<cue>\b(?:no|sorry|actually),\s*)(?:the )?(?P<s>[a-z]+(?: [a-z]+)?)(?:'s| is| would be) "
+    r"better,\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _said_better34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "sink's better, put it in the sink" says the
+    place twice: the first saying comes off when the request after it names that surface."""
+    m = _SAID_BETTER34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _ids(m["s"], lexicon) <= _ids(m["rest"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}"
+
+
+# "Clear the lot into the locker, bar the drill and the hammer, I still need those."
+_STILL_NEED34R = re.compile(
+    r"(?P<head>\b(?:bar|except|apart from|but|other than|minus|not) [^,]+?),\s*I (?:still |'ll )?"
+    r"need (?:those|them|that|it|these)(?: still| later)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _still_need34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after what is left out ('bar the drill and the hammer'), "I still need
+    those" says why: taken off (the speaker asks for nothing)."""
+    m = _STILL_NEED34R.search(text)
+    if m is None or not _ids(m["head"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "Sam's after a pen. Red's no good for forms, so one of the others."
+_NO_GOOD34R = re.compile(
+    r"^(?P<head>.+?\ban? (?P<k>[a-z]+))\.\s*(?:the )?(?P<a>[a-z]+)(?: one)?(?:'s| is) no good"
+    r"(?: for [a-z ]+?)?,\s*so (?:one of the others|another one|a different one)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_good34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P's after a pen. Red's no good for forms, so one of the others" is "P's
+    after a pen, any but the red one" (the red pen one object of the kind)."""
+    m = _NO_GOOD34R.match(text)
+    if m is None or len(_ids(f"the {m['a']} {m['k']}", lexicon, "object")) != 1:
+        return text
+    if len(_ids(m["k"], lexicon, "object")) < 2:
+        return text
+    return f"{m['head']}, any but the {m['a']} one{m['end'] or '.'}"
+
+
+# "Lily wants a block to chew on. Not the red one, love, the other."
+_NOT_ONE_OTHER34R = re.compile(
+    r"^(?P<head>.+?\ban? (?P<k>[a-z]+))(?: to [a-z]+(?: on| with)?)?\.\s*not the (?P<a>[a-z]+) "
+    r"one,\s*(?:(?:love|dear|pet|mind),\s*)?the other(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_one_other34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P wants a block (to chew on). Not the red one, the other." is "P wants
+    a block, any but the red one" when the scene holds two of the kind (with more, 'the other' is
+    not one)."""
+    m = _NOT_ONE_OTHER34R.match(text)
+    if m is None or len(_ids(m["k"], lexicon, "object")) != 2:
+        return text
+    if len(_ids(f"the {m['a']} {m['k']}", lexicon, "object")) != 1:
+        return text
+    return f"{m['head']}, any but the {m['a']} one{m['end'] or '.'}"
+
+
+# "The guest on table five, Mr Novak, gets the white plate, not the blue."
+_AT_TABLE34R = re.compile(
+    r"^the (?P<role>[a-z]+) (?:on|at) table (?:[a-z]+|\d+),\s*(?P<p>[a-z][\w ]*?),\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _at_table34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "The guest on table five, Mr Novak, …" names one person twice: "Mr
+    Novak …" (the role must be one of the person's names)."""
+    m = _AT_TABLE34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if not _ids(m["p"], lexicon) <= _ids(m["role"], lexicon, "human"):
+        return text
+    return f"{m['p']} {m['rest']}"
+
+
+# "The cup and then the apple to Person B, or rather the apple first and then the cup."
+_RATHER_ORDER34R = re.compile(
+    rf"^(?P<x>{_THING34R}) and then (?P<y>{_THING34R}) to (?P<p>[a-z][\w ]*?),\s*or rather "
+    rf"(?P<y2>{_THING34R}) first,? and then (?P<x2>{_THING34R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _rather_order34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "X and then Y to P, or rather Y first and then X" says the order again
+    with the same two objects: "Y to P, then X to P"."""
+    m = _RATHER_ORDER34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    if _ids(m["x"], lexicon) != _ids(m["x2"], lexicon):
+        return text
+    if _ids(m["y"], lexicon) != _ids(m["y2"], lexicon) or not _objects34r(lexicon, m["x2"]):
+        return text
+    y = m["y2"][0].upper() + m["y2"][1:]
+    return f"{y} to {m['p']}, then {m['x2']} to {m['p']}{m['end'] or '.'}"
+
+
+# "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to
+# Person B first and the cup after."
+_SWAP_ORDER34R = re.compile(
+    r"^(?P<a>[^;,]+?),\s*then (?P<b>[^;,]+?);\s*(?:no,\s*)?(?:hang on,\s*|wait,\s*)?swap the "
+    r"order(?: round| around| over)?,\s*(?P<y>[^,]+?) first,? and (?P<x>[^,]+?) after"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _swap_order34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "A, then B; no, swap the order round, B first and A after" is "B, then
+    A": the tasks said again must be the two before (their objects the same, a person they name
+    the one of that task)."""
+    m = _SWAP_ORDER34R.match(text)
+    if m is None:
+        return text
+    for said, task in ((m["y"], m["b"]), (m["x"], m["a"])):
+        if _ids(said, lexicon, "object") != _ids(task, lexicon, "object"):
+            return text
+        if not _ids(said, lexicon, "human") <= _ids(task, lexicon, "human"):
+            return text
+    if len(_ids(m["a"], lexicon, "object")) != 1 or len(_ids(m["b"], lexicon, "object")) != 1:
+        return text
+    return f"{m['b'][0].upper()}{m['b'][1:]}, then {m['a']}{m['end'] or '.'}"
+
+
+# "They both want something. Bottle over to Person A please, and cup across to Person B."
+_BOTH_SOMETHING34R = re.compile(
+    r"^(?:they|the two of them) both (?:want|need|would like) something\.\s*(?P<rest>.+)$", _F
+)
+
+
+def _both_something34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "They both want something." before tasks for both people of a scene of
+    two: the heading comes off."""
+    m = _BOTH_SOMETHING34R.match(text)
+    people = {h.id for h in lexicon.scene.humans}
+    if m is None or len(people) != 2 or _ids(m["rest"], lexicon, "human") != people:
+        return text
+    return m["rest"]
+
+
+# "Everything that's a box goes on the conveyor, except the big one, leave that on the pallet."
+_THAT_IS_A34R = re.compile(
+    r"^everything that(?:'s| is) an? (?P<k>[a-z]+) (?:goes|go) (?P<p>on|onto|in|into) ", _F
+)
+
+
+def _that_is_a34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Everything that's a box goes on S" is "Every box on S"."""
+    m = _THAT_IS_A34R.match(text)
+    if m is None or len(_ids(m["k"], lexicon, "object")) < 2:
+        return text
+    return f"Every {m['k']} {m['p']} {text[m.end() :]}"
+
+
+_LEAVE_THAT34R = re.compile(
+    r"(?P<head>\bexcept the (?P<a>[a-z]+) one),\s*leave (?:that|it) (?:on|in) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_that34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "every K …, except the big one, leave that on the pallet": the one left
+    out stays where it is, said where: taken off when it starts on that surface (else left)."""
+    m = _LEAVE_THAT34R.search(text)
+    k = re.search(r"\bevery ([a-z]+)\b", text[: m.start()], _F) if m is not None else None
+    if m is None or k is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    one = _ids(f"the {m['a']} {k.group(1)}", lexicon, "object")
+    surface = next(iter(_ids(m["s"], lexicon, "surface")))
+    if len(one) != 1 or set(starting_on(one, surface, lexicon)) != one:
+        return text
+    return f"{text[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "Those two mugs want to go on the counter, please." / "All three of the boxes want to go on …"
+_COUNTED_WANT34R = re.compile(
+    r"^(?P<d>those|the|all|both)(?P<n> two| three| four)?(?P<of> of the)? (?P<k>[a-z]+s) "
+    r"(?:want|need) to (?:go|sit|be|live) (?P<p>on|onto|in|into) ",
+    _F,
+)
+
+
+def _counted_want34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Those two mugs (All three of the boxes) want to go on S" is "Put the two
+    mugs (all three of the boxes) on S" (session 28's '<object> wants to go on S', for a counted
+    plural; the count read by the grammar)."""
+    m = _COUNTED_WANT34R.match(text)
+    if m is None or not _ids(m["k"], lexicon, "object"):
+        return text
+    d = "the" if m["d"].lower() == "those" else m["d"].lower()
+    if d == "the" and m["of"]:
+        return text
+    return f"Put {d}{m['n'] or ''}{m['of'] or ''} {m['k']} {m['p']} {text[m.end() :]}"
+
+
 _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _owner_then34r,
+    _surface_for34r,
+    _no_wait_to34r,
+    _said_better34r,
+    _still_need34r,
+    _no_good34r,
+    _not_one_other34r,
+    _at_table34r,
+    _rather_order34r,
+    _swap_order34r,
+    _both_something34r,
+    _that_is_a34r,
+    _leave_that34r,
+    _counted_want34r,
     _final_answer34r,
     _place_better34r,
     _meant_to_get34r,
