@@ -212,7 +212,6 @@ KNOWN_MISSES = frozenset(
         "okay listen the chips are for Person A the bottle's for Person B got it",
         "Drop all three of the pens into the box, they keep rolling off.",
         "Jess needs some screws, give her the tin.",
-        "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
         "chuck the blue pen in the box its cluttering my desk",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
@@ -344,29 +343,17 @@ KNOWN_MISSES = frozenset(
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
-        'Wash-up time: both cups into the sink, green and white alike.',
-        'The white plate on the rack, no, the counter, we need it for service.',
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
-        "Split the two things between them, one apiece, with the bottle going to Person B and the "
-        "chips to Person A.",
         "Ava, the two blocks give her, please. Ameseginalehu.",
-        "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
-        "it.",
-        "Priya wants the red pen — wait, no, she said black, the black pen.",
-        "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "The two smaller boxes can join the big one on the pallet.",
-        "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
-        "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
@@ -379,12 +366,9 @@ KNOWN_MISSES = frozenset(
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         'A single bottle will do for Person A after her orienteering.',
         "Two things going out: Person A has the chips and the bottle is Person B's.",
-        'Sit the teddy in the high chair, no, better down on the play mat with her.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
-        "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
-        'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
         "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
         # blind32 (tuned on in session 34): refusals left at its one measurement (docs/grounding.md)

@@ -21911,7 +21911,8 @@ def _gets_handed34r(text: str, lexicon: Lexicon) -> str:
 
 # "Both mugs need shifting up to the shelf, the red and the blue alike."
 _ALIKE34R = re.compile(
-    r"^(?P<head>.*\bboth\b.+,\s*the [a-z]+ and the [a-z]+) alike(?P<end>\s*[.!]?)$", _F
+    r"^(?P<head>.*\bboth\b.+,\s*(?:the )?[a-z]+ and (?:the )?[a-z]+) alike(?P<end>\s*[.!]?)$",
+    _F,
 )
 
 
@@ -22405,7 +22406,285 @@ def _counted_want34r(text: str, lexicon: Lexicon) -> str:
     return f"Put {d}{m['n'] or ''}{m['of'] or ''} {m['k']} {m['p']} {text[m.end() :]}"
 
 
+# "The stapler's for Priya. Oh hang on, she's got one, give it to Sam."
+_HAS_ONE34R = re.compile(
+    r"(?P<cue>\b(?:hang on|no|actually|wait|sorry),\s*)(?P<pro>she|he)(?:'s| has)(?: already)? "
+    r"got (?:one|it)(?: already)?,\s*(?P<rest>(?:give|hand|pass|take) it .+)$",
+    _F,
+)
+
+
+def _has_one34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "she's got one (already)" says why the request
+    before it is taken back: taken off when the text before names one person, whom the pronoun
+    may be, and the request after it another."""
+    m = _HAS_ONE34R.search(text)
+    if m is None:
+        return text
+    before = _ids(text[: m.start()], lexicon, "human")
+    after = _ids(m["rest"], lexicon, "human")
+    if len(before) != 1 or len(after) != 1 or before == after:
+        return text
+    if not _fits(next(iter(before)), m["pro"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}"
+
+
+# -- session 34 (12r): the same kinds in blind24 to blind31 --------------------------------------
+
+# "The white plate on the rack, no, the counter, we need it for service."
+_NEED_IT_FOR34R = re.compile(
+    rf"^(?P<head>.+\b{_CUE34R}\b.+?),\s*we (?:need|want) (?:it|that|them) (?:for|at|in) "
+    r"(?P<why>[a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _need_it_for34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction, "we need it for service" says why (naming nothing
+    of the scene): taken off."""
+    m = _NEED_IT_FOR34R.match(text)
+    if m is None or _ids(m["why"], lexicon):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "Split the two things between them, one apiece, with the bottle going to Person B and …"
+_SPLIT_BETWEEN34R = re.compile(
+    r"^split the (?P<n>two|three|four) (?:things|items) between (?:them|the two of them),\s*"
+    r"(?:one (?:apiece|each),\s*)?with (?P<rest>.+)$",
+    _F,
+)
+
+
+def _split_between34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Split the two things between them, one apiece, with X going to P and Y
+    to Q" is "X to P and Y to Q" when that names as many objects as the count, each once, and
+    every person of the scene (else left, refused)."""
+    m = _SPLIT_BETWEEN34R.match(text)
+    if m is None:
+        return text
+    rest = re.sub(r"\b(?:going|goes|heading) to\b", "to", m["rest"], flags=_F)
+    said = [it for it in _names(rest, lexicon) if all(r.kind == "object" for r in it.refs)]
+    objects = {r.id for it in said for r in it.refs}
+    if len(objects) != _NUMBERS33R[m["n"].lower()] or len(said) != len(objects):
+        return text
+    if _ids(rest, lexicon, "human") != {h.id for h in lexicon.scene.humans}:
+        return text
+    return rest[0].upper() + rest[1:]
+
+
+# "Not the bottle for Bob, he said so twice, he's after a packet of crisps."
+_NOT_FOR_AFTER34R = re.compile(
+    r"^not (?P<x>the [a-z]+) for (?P<p>[a-z][\w ]*?),\s*(?:(?P<pro1>he|she) said so(?: twice)?,"
+    r"\s*)?(?P<pro>he|she)(?:'s| is) after (?:a packet of |a bag of |some |the )?(?P<y>[a-z]+)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_after34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Not the bottle for Bob, he said so, he's after a packet of crisps" is
+    "Not the bottle, the crisps for Bob" (the pronouns may be Bob; X and Y two objects)."""
+    m = _NOT_FOR_AFTER34R.match(text)
+    if m is None or not _the_person(m["p"], f"{m['pro']} {m['pro1'] or ''}", lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], f"the {m['y']}"):
+        return text
+    return f"Not {m['x']}, the {m['y']} for {m['p']}{m['end'] or '.'}"
+
+
+# "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with it."
+_STRAIGHT_WITH_IT34R = re.compile(
+    r"^(?P<head>.+?)\s*(?:—|–|,)\s*(?P<cue>actually|no|sorry),\s*(?:on second thoughts?,\s*)?"
+    r"(?:straight |right )?to (?P<p>[a-z][\w ]*?) with it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _straight_with_it34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "…, actually, on second thoughts, straight to Alice with it" is "…,
+    actually, give it to Alice" (P one person)."""
+    m = _STRAIGHT_WITH_IT34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{m['head']}, {m['cue']}, give it to {m['p']}{m['end'] or '.'}"
+
+
+# "Priya wants the red pen — wait, no, she said black, the black pen."
+_SHE_SAID34R = re.compile(
+    r"(?P<cue>\b(?:no|sorry|wait),\s*)(?:she|he|they) said (?P<a>[a-z]+),\s*"
+    r"(?P<rest>the (?P=a) [a-z]+)",
+    _F,
+)
+
+
+def _she_said34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "she said black, the black pen" says the word
+    twice: the first saying comes off (the second must name one object)."""
+    m = _SHE_SAID34R.search(text)
+    if m is None or not _whole_name(m["rest"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}{text[m.end() :]}"
+
+
+# "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint."
+_CORRECTED_PLACE_WHY34R = re.compile(
+    r"^(?P<head>.+\b(?:no|sorry|actually),\s*(?:on |in )?the (?P<s2>[a-z]+(?: [a-z]+)?)),\s*the "
+    r"(?P<s1>[a-z]+(?: [a-z]+)?)(?:'s| is) (?P<why>[a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_place_why34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction to another surface, "the desk's covered in paint"
+    says why of the surface corrected away: taken off when that surface is named before the cue
+    and the remark names nothing else."""
+    m = _CORRECTED_PLACE_WHY34R.match(text)
+    if m is None or not _whole_name(m["s1"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["s2"], lexicon, "surface") or _ids(m["why"], lexicon):
+        return text
+    s1, s2 = _ids(m["s1"], lexicon), _ids(m["s2"], lexicon)
+    cue = m.start("s2")
+    if s1 == s2 or not s1 <= _ids(text[:cue], lexicon, "surface"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "The two smaller boxes can join the big one on the pallet."
+_JOIN_THE34R = re.compile(
+    r"\b(?P<x>the (?:two |three )?[a-z]+ (?P<k>[a-z]+)) can join the (?P<a>[a-z]+) one "
+    r"(?P<p>on|in) the (?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _join_the34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "the smaller boxes can join the big one on the pallet" is "… can go on
+    the pallet" when the big one is one object that starts there."""
+    m = _JOIN_THE34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    one: set[str] = set()
+    for k in (m["k"], m["k"][:-1], m["k"][:-2]):
+        one = _ids(f"the {m['a']} {k}", lexicon, "object")
+        if len(one) == 1:
+            break
+    surface = next(iter(_ids(m["s"], lexicon, "surface")))
+    if len(one) != 1 or set(starting_on(one, surface, lexicon)) != one:
+        return text
+    return f"{text[: m.start()]}{m['x']} can go {m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "Don't bother with the bottle, she's brought a flask, just the chips to Person A."
+_BROUGHT_OWN34R = re.compile(
+    r"^(?P<h>don't bother with (?:the )?[a-z]+),\s*(?:she|he)(?:'s| has) (?:brought|got) "
+    r"(?:a|an|her|his) (?P<w>[a-z]+)(?: with (?:her|him))?,\s*(?P<rest>just .+)$",
+    _F,
+)
+
+
+def _brought_own34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Don't bother with the bottle, she's brought a flask, just …": why the
+    bottle is left out (naming nothing of the scene) comes off."""
+    m = _BROUGHT_OWN34R.match(text)
+    if m is None or _ids(m["w"], lexicon):
+        return text
+    return f"{m['h']}, {m['rest']}"
+
+
+# "whichever ones closer to person a, give her that"
+_WHICHEVER_CLOSER34R = re.compile(
+    r"^whichever (?:one's|ones|one is|is|'s) (?P<adj>closer|nearer|closest|nearest) to "
+    r"(?P<p>[a-z][\w ]*?),\s*give (?P<pro>her|him) (?:that|it)(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_closer34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "whichever one's closer to P, give her that" is "Give P X or Y,
+    whichever is closer to her": a choice of the scene's objects (two to four, each named
+    alone)."""
+    m = _WHICHEVER_CLOSER34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects]
+    if not 2 <= len(said) <= 4 or any(s is None for s in said):
+        return text
+    listed = ", ".join(s for s in said[:-1] if s) + f" or {said[-1]}"
+    return f"Give {m['p']} {listed}, whichever is {m['adj']} to {m['pro']}{m['end'] or '.'}"
+
+
+# "Person B gets the bottle and Person A gets the chips and the apple stays where it is."
+_STAYS_PUT34R = re.compile(
+    r"^(?P<head>.+?)(?:,| and|;)\s*(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) stays (?:where it is|put|"
+    r"as it is)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_put34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "…, and the apple stays where it is" after tasks that do not name the
+    apple: nothing to do for it (one the tasks name is left, refused)."""
+    m = _STAYS_PUT34R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if _ids(m["x"], lexicon) & _ids(m["head"], lexicon) or not _ids(m["head"], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier."
+_ITS_P_WHO34R = re.compile(
+    r"^it(?:'s| is) (?P<p>[a-z][\w ]*?) who(?:'s| is) getting (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
+    r"not (?P<q>[a-z][\w ]*?)(?:,\s*(?P<why>[^,.;!?]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_p_who34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "It's P who's getting X, not Q(, the caddie got it wrong)" is "P is
+    getting X, not Q" (P and Q two people; the remark naming nothing of the scene)."""
+    m = _ITS_P_WHO34R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if m["why"] and _ids(m["why"], lexicon):
+        return text
+    return f"{m['p']} is getting {m['x']}, not {m['q']}{m['end'] or '.'}"
+
+
+# "Sit the teddy in the high chair, no, better down on the play mat with her."
+_BETTER_DOWN34R = re.compile(
+    rf"(?P<cue>\b{_CUE34R},\s*)better (?:down |up )?(?P<p>on|in|onto|into) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?: with (?:her|him|them))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _better_down34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "better down on the play mat (with her)" is "on
+    the play mat" (S one surface)."""
+    m = _BETTER_DOWN34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['p']} the {m['s']}{m['end'] or '.'}"
+
+
 _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _has_one34r,
+    _need_it_for34r,
+    _split_between34r,
+    _not_for_after34r,
+    _straight_with_it34r,
+    _she_said34r,
+    _corrected_place_why34r,
+    _join_the34r,
+    _brought_own34r,
+    _whichever_closer34r,
+    _stays_put34r,
+    _its_p_who34r,
+    _better_down34r,
     _owner_then34r,
     _surface_for34r,
     _no_wait_to34r,
