@@ -185,7 +185,6 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
-        "Both of the mugs are Alice's, give her the pair.",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
@@ -365,12 +364,10 @@ KNOWN_MISSES = frozenset(
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         'A single bottle will do for Person A after her orienteering.',
-        "Two things going out: Person A has the chips and the bottle is Person B's.",
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
-        "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
         # blind32 (tuned on in session 34): refusals left at its one measurement (docs/grounding.md)
         "Morning, hope the night shift was kind to you; if it's no bother, the red mug up on the "
         "shelf.",

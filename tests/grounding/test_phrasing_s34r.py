@@ -534,6 +534,23 @@ def test_blind19_and_blind20_kinds(text: str, want: str | None, scene: Scene) ->
             NURSERY,
         ),
         ("Sit the teddy in the high chair, no, better down on the floor with her.", None, NURSERY),
+        # 'Over to P with X' before a correction of the object
+        (
+            "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
+            "bottle>B",
+            DUO,
+        ),
+        ("Over to Person B with the chips, no, I mean the banana.", None, DUO),
+        # blind18: 'Both of the mugs are Alice's, give her the pair.'
+        ("Both of the mugs are Alice's, give her the pair.", "mug_red>A & mug_blue>A", CELL),
+        ("Both of the cups are Alice's, give her the pair.", None, CELL),  # one cup
+        # 'Two things going out:' and 'the bottle is Person B's' under it
+        (
+            "Two things going out: Person A has the chips and the bottle is Person B's.",
+            "chips>A & bottle>B",
+            T21,
+        ),
+        ("Three things going out: Person A has the chips and the bottle is Person B's.", None, T21),
     ),
 )
 def test_blind24_to_blind31_kinds(text: str, want: str | None, scene: Scene) -> None:

@@ -22671,7 +22671,75 @@ def _better_down34r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['cue']}{m['p']} the {m['s']}{m['end'] or '.'}"
 
 
+# "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after."
+_OVER_WITH_FIXED34R = re.compile(
+    r"^over to (?P<p>[a-z][\w ]*?) with (?P<x>the [a-z]+(?: [a-z]+)?)"
+    rf"(?P<rest>,\s*(?:hmm,\s*|oh,\s*)?(?:{_CUE34R})\b.+)$",
+    _F,
+)
+
+
+def _over_with_fixed34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Over to P with X, no, I mean Y" is "X to P, no, I mean Y": the
+    correction then replaces the object (it had left 'to P with Y', refused)."""
+    m = _OVER_WITH_FIXED34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"]):
+        return text
+    return f"The {m['x'][4:]} to {m['p']}{m['rest']}"
+
+
+# "Both of the mugs are Alice's, give her the pair."
+_ARE_HERS34R = re.compile(
+    r"^(?P<q>both|all (?:two|three|four)) of the (?P<k>[a-z]+) are (?P<p>[a-z][\w ]*?)'s,\s*"
+    r"(?:so )?give (?P<pro>her|him) (?:the pair|both|them|the lot|all of them|the two)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _are_hers34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Both of the mugs are Alice's, give her the pair" is "Give Alice both
+    of the mugs" (the pronoun may be P; the count read by the grammar)."""
+    m = _ARE_HERS34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if not _ids(m["k"], lexicon, "object"):
+        return text
+    return f"Give {m['p']} {m['q'].lower()} of the {m['k']}{m['end'] or '.'}"
+
+
+# "Two things going out: Person A has the chips and the bottle is Person B's."
+_GOING_OUT34R = re.compile(
+    r"^(?P<n>two|three|four) things going out\s*:\s*(?P<rest>.+)$",
+    _F,
+)
+_IS_HERS34R = re.compile(
+    r"(?P<lead>^|\band |,\s*)(?P<x>the [a-z]+(?: [a-z]+)?) is (?P<p>[a-z][\w ]*?)'s(?=\s*(?:[.!,]|"
+    r"\band\b|$))",
+    _F,
+)
+
+
+def _going_out34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a heading "Two things going out:" is "Two things:" (session 30's count,
+    checked against the tasks), and in the tasks under it "the bottle is Person B's" says who it
+    goes to: "Person B gets the bottle" (one person, one whole object)."""
+    m = _GOING_OUT34R.match(text)
+    if m is None:
+        return text
+
+    def goes(w: re.Match[str]) -> str:
+        if not _only_person(w["p"], lexicon) or not _whole_name(w["x"], lexicon, "object"):
+            return w.group(0)
+        return f"{w['lead']}{w['p']} gets {w['x']}"
+
+    return f"{m['n']} things: {_IS_HERS34R.sub(goes, m['rest'])}"
+
+
 _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _over_with_fixed34r,
+    _are_hers34r,
+    _going_out34r,
     _has_one34r,
     _need_it_for34r,
     _split_between34r,
