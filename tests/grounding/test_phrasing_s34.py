@@ -11,6 +11,8 @@ from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
+    NURSERY,
     OFFICE,
     ROOT,
     WARD,
@@ -89,6 +91,13 @@ READS = [
     ("Could you see your way to handing Carol the cup?", "cup>C", CELL),
     ("How about handing Carol the cup, does that suit you?", "cup>C", CELL),
     ("Could you pass Carol the cup, then?", "cup>C", CELL),
+    # (v) a remark closing the instruction as a comma part, inert by the sentence test
+    ("Give Bob the apple, hope the rain held off for you.", "apple>B", CELL),
+    ("Put the cup on the shelf, hope the weather was kind to you.", "cup@shelf", CELL),
+    # (w) a size word the scene's names do not use
+    ("Put the little box on the belt.", "box_small@conveyor", DEPOT),
+    ("Aye, give Grandad the wee teddy.", "teddy>B", NURSERY),
+    ("give Jess the huge spanner", "spanner_large>B", WORKSHOP),
 ]
 
 
@@ -152,6 +161,14 @@ REFUSED = [
     ("Mind if the farrier grabs the apple?", CELL),
     ("Give Bob the apple. Could you pass Carol the cup, then?", CELL),
     ("What about giving Bob the apple, would that be Carol's?", CELL),
+    # (v) a closing part that takes the request back, says when, or names a person
+    ("Give Bob the apple, just kidding around.", CELL),
+    ("Give Bob the apple, on second thoughts.", CELL),
+    ("Give Bob the apple, hope Carol had fun.", CELL),
+    ("Give Bob the apple, the usual one.", CELL),
+    # (w) two objects of the noun with no size names; the little one (a person)
+    ("Give Grandad the wee block.", NURSERY),
+    ("Give Grandad the little one.", NURSERY),
 ]
 
 
@@ -160,7 +177,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (v) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (x) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

@@ -11715,8 +11715,81 @@ def _questions34(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# A remark closing the instruction as a comma part ("Give Person A the bottle, hope the night shift
+# was kind to you."): the same test as a sentence of its own (_inert_sentence: it names nothing,
+# no word of it could name, count, choose, negate, order, delay, condition, correct, point back or
+# hand over, it is shaped as no request), and no word that takes the request back, says when or
+# how fast, or which end of the order (the lead's note, session 34: one test for the kind, not a
+# pattern per remark)
+_TRAILING_HELD34 = re.compile(
+    r"\b(?:kidding|joking|thoughts?|second|typo|nope|nah|asap|now|soon|today|yesterday|week|"
+    r"hours?|minutes?|mins?|moment|order|reverse|round|around|depend\w*|quick(?:ly)?|fast|"
+    r"slow(?:ly)?|urgent(?:ly)?|end|start|beginning|finish|please|yet|still|sure|maybe|perhaps|"
+    r"think|guess|unsure|doubt|mine|me|us|we|our|my|i)\b",
+    _F,
+)
+_TRAILING34 = re.compile(r",\s*(?P<said>[^,;:.!?]+?)(?P<end>\s*[.!]?)\s*$")
+
+
+def _trailing_remark34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing comma part above taken off when it is inert by both tests and of
+    three words or more, and what is left, one sentence, names a person or surface."""
+    m = _TRAILING34.search(text)
+    if m is None or len(m["said"].split()) < 3:
+        return text
+    said = m["said"]
+    if _TRAILING_HELD34.search(said) or not _inert_sentence(said, lexicon):
+        return text
+    rest = text[: m.start()]
+    if re.search(r"[.!?;:]", rest) or not _ids(rest, lexicon, "human") | _ids(
+        rest, lexicon, "surface"
+    ):
+        return text
+    return rest + m["end"].strip()
+
+
+# "the wee box" (Scots and Irish English: small), "the little teddy": a size said by a word the
+# scene's names do not use. Read as the scene's own size word when the scene names an object
+# '<size> <noun>' of that size class (depot: 'small box'), or taken off when the noun names one
+# object alone and no object of it is named by size (a description, not a choice)
+_SIZE_WORD34 = re.compile(
+    r"\b(?P<det>the|that|this|your|her|his|their) (?P<size>wee|little|tiny|teeny|small|big|huge|"
+    r"massive|large) (?P<noun>[a-z]+)\b",
+    _F,
+)
+_SIZE_CLASS34 = {
+    **dict.fromkeys(("wee", "little", "tiny", "teeny", "small"), ("small", "little")),
+    **dict.fromkeys(("big", "huge", "massive", "large"), ("large", "big")),
+}
+
+
+def _size_words34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the size words above (a closed list), as said there."""
+    if not _SIZE_WORD34.search(text):
+        return text
+    aliases = {a.lower() for o in lexicon.scene.objects for a in (o.id, *o.aliases)}
+
+    def plain(m: re.Match[str]) -> str:
+        noun, size = m["noun"].lower(), m["size"].lower()
+        if noun in ("one", "ones", "uns", "un") or f"{size} {noun}" in aliases:
+            return m[0]
+        sized = [w for w in _SIZE_CLASS34[size] if f"{w} {noun}" in aliases]
+        if sized:
+            return f"{m['det']} {sized[0]} {m['noun']}"
+        others = {w for ws in _SIZE_CLASS34.values() for w in ws}
+        if any(f"{w} {noun}" in aliases for w in others):
+            return m[0]  # the noun's objects are named by another size: which one is meant?
+        ids = _ids(f"the {noun}", lexicon)
+        if len(ids) != 1 or not _only_kind(f"the {noun}", lexicon, "object"):
+            return m[0]
+        return f"{m['det']} {m['noun']}"
+
+    return _SIZE_WORD34.sub(plain, text)
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
+    _trailing_remark34,
     _thanks_from34,
     _idioms34,
     _what_like34,
@@ -11737,6 +11810,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _to_do34,
     _mind_if34,
     _questions34,
+    _size_words34,
 )
 
 
