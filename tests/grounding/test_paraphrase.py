@@ -117,9 +117,9 @@ KNOWN_MISSES = frozenset(
         # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
         # wait a moment … is going to'), 'the other one' after 'can keep', a remark then 'she'
         # resumed, 'the N things that aren't X' as a subject, 'namely', 'leave the
-        # X where it is' after a correction, 'so hand it over' then another handover, gapping
-        # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
-        # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
+        # X where it is' after a correction, gapping with a rest ('and then you can have a
+        # rest'), 'All three of the pens, …, into the box, that's the deliverable', 'going home
+        # with P tonight', "Don't … instead, good!"
         "omg bestie pls give Sam the stapler, slay",
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
@@ -131,7 +131,6 @@ KNOWN_MISSES = frozenset(
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
         "Alice needs the bottle, and Bob, for my next trick, wants the crisps.",
-        "Person B asked for the apple, so hand it over, and the cup to Person A.",
         "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",

@@ -98,6 +98,8 @@ READS = [
     ("Put the little box on the belt.", "box_small@conveyor", DEPOT),
     ("Aye, give Grandad the wee teddy.", "teddy>B", NURSERY),
     ("give Jess the huge spanner", "spanner_large>B", WORKSHOP),
+    # (x) 'hand it over', then a clause of its own with its recipient
+    ("Bob wants the apple, so give it over, and the cup to Carol.", "apple>B & cup>C", CELL),
 ]
 
 
@@ -169,6 +171,9 @@ REFUSED = [
     # (w) two objects of the noun with no size names; the little one (a person)
     ("Give Grandad the wee block.", NURSERY),
     ("Give Grandad the little one.", NURSERY),
+    # (x) a surface after it; two people
+    ("Bob wants the apple, so give it over, and the cup to the shelf.", CELL),
+    ("Bob wants the apple, so give it over, and the cup to Carol and Alice.", CELL),
 ]
 
 
@@ -177,7 +182,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (x) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (y) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

@@ -11787,6 +11787,26 @@ def _size_words34(text: str, lexicon: Lexicon) -> str:
     return _SIZE_WORD34.sub(plain, text)
 
 
+# "… so hand it over, and the cup to Person A.": the handover of 'it' closed by 'over', then a
+# clause of its own with its recipient (the grammar had read 'it' and the cup both to Person A)
+_OVER_AND34 = re.compile(
+    r"\b(?P<first>(?:hand|give|pass|take|bring) (?:it|them) over),\s+and (?P<x>(?:the|that|this) "
+    r"[a-z][a-z ]*?) (?P<to>to (?P<p>[A-Z][A-Za-z ]*?))(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _over_and34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing clause above said as a sentence of its own, when X is objects only
+    and P one person."""
+    if " over, and " not in text:
+        return text
+    m = _OVER_AND34.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    said = m["x"][0].upper() + m["x"][1:]
+    return f"{text[: m.start()]}{m['first']}. {said} {m['to']}{m['end'] or '.'}"
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
     _trailing_remark34,
@@ -11811,6 +11831,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _mind_if34,
     _questions34,
     _size_words34,
+    _over_and34,
 )
 
 
