@@ -364,7 +364,6 @@ KNOWN_MISSES = frozenset(
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
         "Split the two things between them, one apiece, with the bottle going to Person B and the "
         "chips to Person A.",
-        "Ava, the two blocks give her, please. Ameseginalehu.",
         "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
         "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "

@@ -100,6 +100,10 @@ READS = [
     ("give Jess the huge spanner", "spanner_large>B", WORKSHOP),
     # (x) 'hand it over', then a clause of its own with its recipient
     ("Bob wants the apple, so give it over, and the cup to Carol.", "apple>B & cup>C", CELL),
+    # (y) the person addressed, then the objects and the verb last with its pronoun
+    ("Lily, the teddy give her, please.", "teddy>A", NURSERY),
+    ("Grandad, the two blocks give him.", "block_red>B & block_green>B", NURSERY),
+    ("Mrs Khan, the grey blanket give her.", "blanket_grey>C", WARD),
 ]
 
 
@@ -174,6 +178,9 @@ REFUSED = [
     # (x) a surface after it; two people
     ("Bob wants the apple, so give it over, and the cup to the shelf.", CELL),
     ("Bob wants the apple, so give it over, and the cup to Carol and Alice.", CELL),
+    # (y) a pronoun against the title; a person among the objects
+    ("Mr Lee, the jug give her.", WARD),
+    ("Carol, the cup and Bob give her.", CELL),
 ]
 
 
@@ -182,7 +189,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (y) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (z) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

@@ -11807,6 +11807,32 @@ def _over_and34(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['first']}. {said} {m['to']}{m['end'] or '.'}"
 
 
+# "Ava, the two blocks give her, please.": the person addressed first, then the objects and the
+# verb last with its pronoun (as session 27's '<person> <objects> give')
+_VERB_LAST34 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?),\s*"
+    r"(?P<x>(?:the|a|an|that|this|those|these|both|both the) [a-z][a-z -]*?) "
+    r"(?P<v>give|hand|pass|bring) (?P<pron>her|him|them)"
+    r"(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _verb_last34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the clause above in the English order ('give P X'), when P is one person the
+    pronoun may be (by title) and X objects only."""
+    if not re.search(r" (?:give|hand|pass|bring) (?:her|him|them)\b", text):
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
+            return m[0]
+        if not _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon):
+            return m[0]
+        return f"{m['v'].capitalize()} {m['p']} {m['x']}"
+
+    return _VERB_LAST34.sub(plain, text)
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
     _trailing_remark34,
@@ -11832,6 +11858,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _questions34,
     _size_words34,
     _over_and34,
+    _verb_last34,
 )
 
 
