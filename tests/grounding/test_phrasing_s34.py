@@ -172,6 +172,8 @@ REFUSED = [
     ("Give Bob the apple, on second thoughts.", CELL),
     ("Give Bob the apple, hope Carol had fun.", CELL),
     ("Give Bob the apple, the usual one.", CELL),
+    ("Give Bob the apple, in a bit of a while.", CELL),
+    ("Give Bob the apple, hope you can do it on Friday.", CELL),
     # (w) two objects of the noun with no size names; the little one (a person)
     ("Give Grandad the wee block.", NURSERY),
     ("Give Grandad the little one.", NURSERY),

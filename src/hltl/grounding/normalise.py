@@ -11718,27 +11718,36 @@ def _questions34(text: str, lexicon: Lexicon) -> str:
 # A remark closing the instruction as a comma part ("Give Person A the bottle, hope the night shift
 # was kind to you."): the same test as a sentence of its own (_inert_sentence: it names nothing,
 # no word of it could name, count, choose, negate, order, delay, condition, correct, point back or
-# hand over, it is shaped as no request), and no word that takes the request back, says when or
-# how fast, or which end of the order (the lead's note, session 34: one test for the kind, not a
-# pattern per remark)
+# hand over, it is shaped as no request; the lead's note, session 34: one test for the kind, not a
+# pattern per remark), opening as session 16's remarks about the hearer or the moment do
+# (_REMARK_SUBJECT: 'hope', 'you', 'your', 'have a'; a comma part without its own subject may say
+# how or when the request is to be done: ", at your discretion", ", in a bit"), and no word that
+# takes the request back, leaves it to the hearer, says when or how fast, which end of the order,
+# or the speaker
 _TRAILING_HELD34 = re.compile(
     r"\b(?:kidding|joking|thoughts?|second|typo|nope|nah|asap|now|soon|today|yesterday|week|"
     r"hours?|minutes?|mins?|moment|order|reverse|round|around|depend\w*|quick(?:ly)?|fast|"
     r"slow(?:ly)?|urgent(?:ly)?|end|start|beginning|finish|please|yet|still|sure|maybe|perhaps|"
-    r"think|guess|unsure|doubt|mine|me|us|we|our|my|i)\b",
+    r"think|guess|unsure|doubt|mine|me|us|we|our|my|i|discretion|choice|call|decide\w*|"
+    r"decision|option\w*|prefer\w*|fit|suits?|up|bit|while|shortly|eventually|sometime|later|"
+    r"leisure|weekend|morning|afternoon|evening|noon|midday|midnight|clock|tonight|monday|"
+    r"tuesday|wednesday|thursday|friday|saturday|sunday)\b",
     _F,
 )
 _TRAILING34 = re.compile(r",\s*(?P<said>[^,;:.!?]+?)(?P<end>\s*[.!]?)\s*$")
 
 
 def _trailing_remark34(text: str, lexicon: Lexicon) -> str:
-    """Session 34: the closing comma part above taken off when it is inert by both tests and of
-    three words or more, and what is left, one sentence, names a person or surface."""
+    """Session 34: the closing comma part above taken off when it opens as a remark, is inert by
+    both tests and of three words or more, and what is left, one sentence, names a person or
+    surface."""
     m = _TRAILING34.search(text)
     if m is None or len(m["said"].split()) < 3:
         return text
     said = m["said"]
-    if _TRAILING_HELD34.search(said) or not _inert_sentence(said, lexicon):
+    if not _REMARK_SUBJECT.match(said.strip()) or _TRAILING_HELD34.search(said):
+        return text
+    if not _inert_sentence(said, lexicon):
         return text
     rest = text[: m.start()]
     if re.search(r"[.!?;:]", rest) or not _ids(rest, lexicon, "human") | _ids(
