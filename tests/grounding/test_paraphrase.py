@@ -370,7 +370,6 @@ KNOWN_MISSES = frozenset(
         "it.",
         "Priya wants the red pen — wait, no, she said black, the black pen.",
         "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
-        "Could Person A have the cup first and, when she's done with it, the bottle?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",

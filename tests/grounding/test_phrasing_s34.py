@@ -104,6 +104,13 @@ READS = [
     ("Lily, the teddy give her, please.", "teddy>A", NURSERY),
     ("Grandad, the two blocks give him.", "block_red>B & block_green>B", NURSERY),
     ("Mrs Khan, the grey blanket give her.", "blanket_grey>C", WARD),
+    # (z) the next thing when the person has finished with the first: after that
+    (
+        "Could Carol have the cup first and, once she's finished with it, the apple?",
+        "cup>C ; apple>C",
+        CELL,
+    ),
+    ("Give Mr Lee the jug and, when he's done with it, the magazine.", "jug>B ; magazine>B", WARD),
 ]
 
 
@@ -183,6 +190,9 @@ REFUSED = [
     # (y) a pronoun against the title; a person among the objects
     ("Mr Lee, the jug give her.", WARD),
     ("Carol, the cup and Bob give her.", CELL),
+    # (z) two people before it; a pronoun against the title
+    ("Give Bob the cup and Carol the apple and, when he's done with it, the bottle.", CELL),
+    ("Give Mr Lee the jug and, when she's done, the magazine.", WARD),
 ]
 
 
@@ -191,7 +201,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (z) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (aa) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

@@ -11842,6 +11842,29 @@ def _verb_last34(text: str, lexicon: Lexicon) -> str:
     return _VERB_LAST34.sub(plain, text)
 
 
+# "Could Person A have the cup first and, when she's done with it, the bottle?": the next thing
+# when the person has finished with the first, said as 'after that'
+_DONE_WITH34 = re.compile(
+    r",\s*(?:when|once) (?P<pron>she|he|they)(?:'s| is| has|'re| are| have)(?: all)? "
+    r"(?:done|finished)(?: with (?:it|them|that|those))?,\s*(?=(?:the|that|this|those|these)\b)",
+    _F,
+)
+
+
+def _done_with34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the clause above is ', after that, ' when the sentence before it names one
+    person, the one the pronoun may be."""
+    if " done" not in text and " finished" not in text:
+        return text
+    m = _DONE_WITH34.search(text)
+    if m is None:
+        return text
+    people = _people_before32(text[: m.start()], lexicon)
+    if len(people) != 1 or not _fits(next(iter(people)), m["pron"], lexicon):
+        return text
+    return f"{text[: m.start()]}, after that, {text[m.end() :]}"
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
     _trailing_remark34,
@@ -11868,6 +11891,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _size_words34,
     _over_and34,
     _verb_last34,
+    _done_with34,
 )
 
 
