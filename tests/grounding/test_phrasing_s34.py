@@ -111,6 +111,9 @@ READS = [
         CELL,
     ),
     ("Give Mr Lee the jug and, when he's done with it, the magazine.", "jug>B ; magazine>B", WARD),
+    # (aa) the hearer told to do what the want says
+    ("Carol needs the cup, so do that.", "cup>C", CELL),
+    ("Bob wants the apple, so do it for him.", "apple>B", CELL),
 ]
 
 
@@ -193,6 +196,9 @@ REFUSED = [
     # (z) two people before it; a pronoun against the title
     ("Give Bob the cup and Carol the apple and, when he's done with it, the bottle.", CELL),
     ("Give Mr Lee the jug and, when she's done, the magazine.", WARD),
+    # (aa) a person wanted; no want before it
+    ("Carol needs Bob, so do that.", CELL),
+    ("Give Bob the apple, so do that too.", CELL),
 ]
 
 
@@ -201,7 +207,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (aa) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (bb) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

@@ -11865,6 +11865,26 @@ def _done_with34(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}, after that, {text[m.end() :]}"
 
 
+# "…, and Emma needs the green cup, so do that too.": the hearer told to do what the want says,
+# closing a clause that says a want of objects for one person
+_DO_THAT34 = re.compile(
+    r"\b(?P<want>(?:wants|needs|would like|asked for|is after|'s after) (?P<x>(?:the|that|this|"
+    r"those|these) [a-z][a-z ]*?)),\s*so do (?:that|this|it|those)(?: too| as well| for (?:her|"
+    r"him|them))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _do_that34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: ', so do that (too)' taken off after a want of objects only."""
+    if "so do " not in text:
+        return text
+    m = _DO_THAT34.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
     _trailing_remark34,
@@ -11892,6 +11912,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _over_and34,
     _verb_last34,
     _done_with34,
+    _do_that34,
 )
 
 
