@@ -115,11 +115,10 @@ KNOWN_MISSES = frozenset(
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
         # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
-        # wait a moment … is going to'), 'the other one' after 'can keep', a remark then 'she'
-        # resumed, 'the N things that aren't X' as a subject, 'namely', 'leave the
-        # X where it is' after a correction, gapping with a rest ('and then you can have a
-        # rest'), 'All three of the pens, …, into the box, that's the deliverable', 'going home
-        # with P tonight', "Don't … instead, good!"
+        # wait a moment … is going to'), 'the other one' after 'can keep', 'the N things that
+        # aren't X' as a subject, 'namely', 'leave the X where it is' after a correction, gapping
+        # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
+        # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
         "omg bestie pls give Sam the stapler, slay",
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
