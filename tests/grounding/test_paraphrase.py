@@ -129,7 +129,6 @@ KNOWN_MISSES = frozenset(
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
-        "Alice needs the bottle, and Bob, for my next trick, wants the crisps.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
         "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",

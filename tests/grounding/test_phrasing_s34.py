@@ -114,6 +114,8 @@ READS = [
     # (aa) the hearer told to do what the want says
     ("Carol needs the cup, so do that.", "cup>C", CELL),
     ("Bob wants the apple, so do it for him.", "apple>B", CELL),
+    # (bb) the speaker's aside between a person and their want
+    ("The cup to Alice, and Carol, for my next trick, wants the apple.", "cup>A & apple>C", CELL),
 ]
 
 
@@ -199,6 +201,9 @@ REFUSED = [
     # (aa) a person wanted; no want before it
     ("Carol needs Bob, so do that.", CELL),
     ("Give Bob the apple, so do that too.", CELL),
+    # (bb) no person before it; a handover after it
+    ("The cup, for my next trick, wants Bob.", CELL),
+    ("Carol, for my next trick, gives Bob the cup.", CELL),
 ]
 
 
@@ -207,7 +212,7 @@ def test_near_sentences_stay_refused(text: str, scene: object) -> None:
     assert_refused(text, scene)  # type: ignore[arg-type]
 
 
-# (bb) a handed pronoun with nothing of its kind named before it: the refusal names the readings
+# (cc) a handed pronoun with nothing of its kind named before it: the refusal names the readings
 UNSAID = [
     ("Give it to Person B, the one on the left.", "'it' could mean|bottle or chips", TWO),
     ("just give them the chips, the one who asked", "Person A .Alice. or Person B .Bob.", TWO),

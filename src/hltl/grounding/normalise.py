@@ -11885,6 +11885,22 @@ def _do_that34(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + m["want"] + m["end"].strip()
 
 
+# "…, and Bob, for my next trick, wants the crisps.": the speaker's aside between a person and
+# their want (a closed list, each naming nothing and asking nothing)
+_MID_ASIDE34 = re.compile(
+    r"(?P<p>\b[A-Z][a-z]+(?: [A-Z][a-z]*)?),\s*(?:for my next trick|as it happens|as luck would "
+    r"have it|of all people|funnily enough|believe it or not),\s*(?=(?:wants|needs|would like|"
+    r"is after|'s after|asked for|gets)\b)"
+)
+
+
+def _mid_aside34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the aside above taken off when P is one person of the scene."""
+    if "," not in text:
+        return text
+    return _MID_ASIDE34.sub(lambda m: f"{m['p']} " if _only_person(m["p"], lexicon) else m[0], text)
+
+
 _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _speaker_parts34,
     _trailing_remark34,
@@ -11913,6 +11929,7 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
     _verb_last34,
     _done_with34,
     _do_that34,
+    _mid_aside34,
 )
 
 
