@@ -6329,11 +6329,23 @@ def _negation18(text: str, lexicon: Lexicon) -> str:
         where = _ids(m.group(2), lexicon, "surface")
         if len(ids) < 2 or len(where) != 1 or _ids(m.group(2), lexicon, "object"):
             return m.group(0)
+        # session 34 (12s): the surface's words may run on past its name ("… the rack goes to
+        # Mr Novak", "… the plate rack before I go tomorrow"): what follows the name is kept (it
+        # had been dropped with the time in it)
+        words = m.group(2).split()
+        n = next(
+            (n for n in range(len(words), 0, -1) if _only(" ".join(words[:n]), lexicon, "surface")),
+            0,
+        )
+        if n == 0:
+            return m.group(0)
+        rest = " ".join(words[n:])
+        rest = f" {rest}" if rest else ""
         off = ids - set(starting_on(ids, next(iter(where)), lexicon))
         if len(off) == 1:
-            return _said(next(iter(off)), lexicon)
+            return _said(next(iter(off)), lexicon) + rest
         if off == ids:
-            return m.group(1)  # every one of them: the refusal names the readings
+            return m.group(1) + rest  # every one of them: the refusal names the readings
         if off:
             raise GroundingError(
                 f"{m.group(0)!r} could mean {' or '.join(sorted(off))}: name the one meant"
