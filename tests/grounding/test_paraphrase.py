@@ -293,7 +293,6 @@ KNOWN_MISSES = frozenset(
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
         "Person A's gasping after the last race, the bottle is what she's needing.",
@@ -308,7 +307,6 @@ KNOWN_MISSES = frozenset(
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
-        "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
@@ -324,9 +322,6 @@ KNOWN_MISSES = frozenset(
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
         "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
-        'Give Person A the chips, sorry, not chips, the cup, my mistake my friend.',
-        'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
-        'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',

@@ -12,17 +12,21 @@ from pathlib import Path
 
 import pytest
 
-from hltl.world.scene import load_scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
     KITCHEN,
+    LAB,
     OFFICE,
     assert_reads,
     assert_refused,
 )
 
-ONE = load_scene(Path(__file__).resolve().parents[2] / "examples/scenes/1-1.yaml")
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples/scenes"
+ONE, SQUARE, LINE, L24 = (
+    load_scene(EXAMPLES / f"{n}.yaml") for n in ("1-1", "4-4-square", "4-4-line", "2-4-line")
+)
 
 # -- a time after the surface of 'the X that isn't on S' (normalise.py _negation18) -----------
 
@@ -191,3 +195,135 @@ def test_a_question_without_a_repair_is_no_request() -> None:
 )
 def test_needs_it_loaded_is_a_placement(text: str, want: str) -> None:
     assert_reads(text, want, DEPOT)
+
+
+# -- blind21/22: a correction's cue said with the slip, 'not X', or thinking aloud --------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind22 (normalise.py _RESTATE20: 'no, (my) mistake' before the request said again)
+        "Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.",
+        "Bottle to Person B, no, my mistake, it is for Person A.",
+        "Bottle to Person B, no, mistake, it is for Person A.",
+    ],
+)
+def test_no_mistake_before_the_request_again(text: str) -> None:
+    assert_reads(text, "bottle>A", LINE)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # nothing after the cue, or no cue before 'mistake', or what follows names no person
+        "Bottle to Person B, no, mistake.",
+        "Bottle to Person B, mistake, it is for Person A.",
+        "Bottle to Person B, no, mistake, it is for the chips.",
+    ],
+)
+def test_mistake_without_a_correction_stays_refused(text: str) -> None:
+    assert_refused(text, LINE)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind22 (_correction_cue33r: 'sorry, not X, Y' as 'no, not X, Y'; _corrections19: the
+        # word of address after 'my mistake' said with 'my' and no comma)
+        ("Give Person A the chips, sorry, not chips, the cup, my mistake my friend.", "cup>A"),
+        ("Give Person A the chips, sorry, not the chips, the cup.", "cup>A"),
+        ("Give Person A the chips, sorry, not Person A, Person B.", "chips>B"),
+        ("Give Person A the chips, no, the cup, my mistake my friend.", "cup>A"),
+        ("Give Person A the chips, no, the cup, my mistake, my friend.", "cup>A"),
+    ],
+)
+def test_sorry_not_x_corrects(text: str, want: str) -> None:
+    assert_reads(text, want, SQUARE)
+
+
+def test_sorry_not_what_was_not_asked_stays_refused() -> None:
+    # 'not the apple' takes back nothing the request said
+    assert_refused("Give Person A the chips, sorry, not the apple, the cup.", SQUARE)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind22 (_SAID14: thinking aloud before a correction's cue)
+        "Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.",
+        "Person A gets the chips, hang on, let me think, no, Person B gets the chips.",
+    ],
+)
+def test_thinking_aloud_before_a_correction(text: str) -> None:
+    assert_reads(text, "chips>B", L24)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Person A gets the chips, let me check my list.",
+        "Person A gets the chips, let me check my list, Person B gets the chips.",
+    ],
+)
+def test_let_me_check_without_a_cue_stays_refused(text: str) -> None:
+    assert_refused(text, L24)
+
+
+# -- blind22: a remark said without its 'is' (normalise.py _zero_copula34s) ---------------------
+
+F41 = load_scene(EXAMPLES / "4-1.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Person B want the apple lah, she hungry already since morning.", "apple>B", F41),
+        ("Person B want the apple, she hungry.", "apple>B", F41),
+        ("Give Alice the apple, she hungry, give Bob the cup.", "apple>A & cup>B", CELL),
+    ],
+)
+def test_a_state_without_is_is_a_remark(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # a state that names something of the scene is no remark; nor a role said after 'she'
+        ("Person B want the apple, she hungry for the chips.", F41),
+        ("Person B want the apple, she the hungry one.", F41),
+        # the pronoun no person named may be (_named_other_sex34s)
+        ("Give Alice the apple, he hungry.", CELL),
+    ],
+)
+def test_a_state_without_is_that_says_more_stays_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+# -- blind22: 'the one at the sink' says where a person is (normalise.py _where_they_are) -------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
+        "Omar's the one at the sink, so give him the sponge.",
+        "Omar's the one standing at the sink, so give him the sponge.",
+    ],
+)
+def test_the_one_at_a_surface_is_where_they_are(text: str) -> None:
+    assert_reads(text, "sponge>B", LAB)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the request points at a place: the surface may be it
+        "Omar's the one at the sink, so put the sponge there.",
+        # the remark names an object
+        "Omar's the one with the sponge, so give him the bowl.",
+    ],
+)
+def test_the_one_with_a_place_or_object_said_stays_refused(text: str) -> None:
+    assert_refused(text, LAB)

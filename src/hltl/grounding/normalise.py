@@ -857,7 +857,9 @@ def _where_they_are(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
     out: set[str] = set()
     for c in said:
         for m in re.finditer(
-            r"(?:'s|\bis|\bare|\bwas|\bsits?|\bsitting|\bstands?|\bstanding|\bwaiting) (?:now |"
+            # session 34 (12s): "Omar's the one at the sink" says where Omar is, too
+            r"(?:'s|\bis|\bare|\bwas|\bsits?|\bsitting|\bstands?|\bstanding|\bwaiting) (?:the one "
+            r"(?:(?:standing|sitting|waiting) )?)?(?:now |"
             r"still |already |just )?(?:in|at|on|by|near|next to|beside) (?:her|his|their|the|its)"
             r" ([a-z]+(?: [a-z]+)?)",
             c,
@@ -3357,6 +3359,13 @@ _SAID14: tuple[tuple[str, str], ...] = (
         r"hat was i saying|what did i want|let me think|let me see|let's see|what's next|now then)"
         r"\s*[?.!,…]+\s*(?:(?:oh|ah|ahh|yes|yeah|right|that's it|that's right)[,!.]*\s+)*",
         "",
+    ),
+    # session 34 (12s): "…, hang on, let me check my list, no, Person B …": thinking aloud before
+    # a correction's cue (kept where no cue follows: 'let me check' alone is not taken off)
+    (
+        r",\s*let me (?:think|see|check|look)(?: (?:at )?(?:my|the) (?:list|notes|sheet|order))?"
+        r"\s*,\s*(?=(?:no|sorry|actually)\b)",
+        ", ",
     ),
     # "Reckon Lena wants the lemon", "I am asking you to put …"
     (r"^(?:i )?reckon,?\s+", ""),
@@ -7028,7 +7037,9 @@ _CUE19 = (
 
 _RESTATE20 = re.compile(
     r"(?:(?<=[.!?])\s+|\s*,\s*)(?:(?:oh,? )?(?:no|sorry|correction|hang on|hold on|wait)"
-    r"(?:,? (?:actually|sorry|no|wait))?(?:,? i said that wrong| i got that wrong| that's wrong)?"
+    # session 34 (12s): 'no, (my) mistake' admits the slip ("…, no, mistake, it is for Person A")
+    r"(?:,? (?:actually|sorry|no|wait|(?:my )?mistake))?"
+    r"(?:,? i said that wrong| i got that wrong| that's wrong)?"
     r"|sorry,? i (?:said|got) that wrong|actually,? no)\s*[,.:;!]\s*(?:actually\s*,\s*)?",
     _F,
 )
@@ -12487,9 +12498,15 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r",\s*(?:sorry|so sorry|apologies)\s*([.!]?)$", r"\1", out).strip()
     # a cue after the correction ('…, my mistake, folks'): said of what came before it
     out = _sub(
-        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
+        # session 34 (12s): the word of address with 'my' and no comma ('my mistake my friend')
+        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)"
+        r"(?:,\s*([a-z]+)|,?\s+my\s+([a-z]+))?"
         r"\s*([.!]?)$",
-        lambda m: m.group(0) if _repairs_to32l(m.group(2), lexicon) else m.group(1) + m.group(3),
+        lambda m: (
+            m.group(0)
+            if _repairs_to32l(m.group(2) or m.group(3), lexicon)
+            else m.group(1) + m.group(4)
+        ),
         out,
     )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
@@ -20474,6 +20491,29 @@ _STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (
     _modal_first33s,
     _cleft_corrected33s,
 )
+
+# -- session 34 (12s): blind21/22's kinds -------------------------------------------------------
+
+# A remark said without its 'is' ("Person B want the apple lah, she hungry already since
+# morning."): a he / she / they right after a stop or comma, then at once a word of a person's
+# state (session 29's list, `_STATE_CAUSE29S`), is said as '<pronoun> is / are <state>' (a copula
+# left out, as Singapore and Malaysian English, and others, do), which the remark rules read.
+_ZERO_COPULA34S = re.compile(
+    r"(?P<lead>(?:^|[,.;!?])\s*)(?P<who>he|she|they)\s+(?=(?:really |so |very |also |still )?"
+    r"(?:thirsty|hungry|parched|gasping|peckish|starving|famished|ravenous|cold|freezing|tired|"
+    r"knackered|shattered|exhausted|sore|sticky|soaked|boiling|sweaty)\b)",
+    _F,
+)
+
+
+def _zero_copula34s(text: str, lexicon: Lexicon) -> str:
+    """', she hungry already' → ', she is hungry already' (above)."""
+    return _ZERO_COPULA34S.sub(
+        lambda m: f"{m['lead']}{m['who']} {'are' if m['who'].lower() == 'they' else 'is'} ", text
+    )
+
+
+_STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (_zero_copula34s,)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
@@ -20933,7 +20973,8 @@ _CORRECTION_CUE33R = re.compile(
     r"|(?:hmm|hm|erm|um),? no,? my mistake"
     r"|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?"
     r"|no,? (?P<way>wrong way round|the wrong way round)"
-    r"|(?:no|well|ah|er|um),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
+    # session 34 (12s): 'sorry, not the chips, the cup' as 'no, not …'
+    r"|(?:no|well|ah|er|um|sorry),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))"
     r"\s*,\s*(?P<fix>.+)$",
     _F,
 )
@@ -21578,6 +21619,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS32R,
     # session 30 (12r): blind28's choices, counts, exclusions and corrections
     *_STEPS30R,
+    # session 34 (12s): blind21/22's kinds
+    *_STEPS34S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,
