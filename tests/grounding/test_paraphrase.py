@@ -258,7 +258,6 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
@@ -321,7 +320,6 @@ KNOWN_MISSES = frozenset(
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
-        "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',

@@ -327,3 +327,54 @@ def test_the_one_at_a_surface_is_where_they_are(text: str) -> None:
 )
 def test_the_one_with_a_place_or_object_said_stays_refused(text: str) -> None:
     assert_refused(text, LAB)
+
+
+# -- blind21: 'nothing else will do for her' closing the request (normalise.py _closers19) -----
+
+FIG1 = load_scene(EXAMPLES / "fig1.yaml")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "What Alice wants is the crisps, honestly nothing else will do for her.",
+        "Alice wants the crisps, nothing else will do for her.",
+        "Give Alice the crisps, nothing else will do for her.",
+        "Alice wants the crisps, nothing more for her.",
+    ],
+)
+def test_nothing_else_for_her_closes(text: str) -> None:
+    assert_reads(text, "chips>A", FIG1)
+
+
+def test_nothing_else_for_a_name_stays_refused() -> None:
+    # a name is not said again: it may be another person's request
+    assert_refused("Alice wants the crisps, nothing else will do for Bob.", FIG1)
+
+
+# -- blind22: 'she said apple' said again after the correction (normalise.py _said_object34s) ---
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
+        "Give Alice the cup, no wait, the apple, she said apple.",
+        "Give Alice the apple, she said apple.",
+    ],
+)
+def test_she_said_the_object_again(text: str) -> None:
+    assert_reads(text, "apple>A", CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # what she said is the object the correction took back
+        "Give Alice the cup, no wait, the apple, she said the cup.",
+        # 'he' cannot be Alice (_named_other_sex34s)
+        "Give Alice the cup, no wait, the apple, he said apple.",
+    ],
+)
+def test_she_said_another_object_stays_refused(text: str) -> None:
+    assert_refused(text, CELL)

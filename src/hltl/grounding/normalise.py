@@ -6976,11 +6976,11 @@ def _closers19(text: str, lexicon: Lexicon) -> str:
             continue  # '… All hands, go.': said with the closer
         if not c or _filler_stretch(c, False, lexicon):
             continue
-        if (
-            opener is not None
-            and not _CLOSER_HELD19.search(c[opener.end() :])
-            and _names_nothing(c, lexicon)
-        ):
+        rest = c[opener.end() :] if opener is not None else ""
+        if opener is not None and re.match(r"nothing (?:else|more)\b", c, _F):
+            # session 34 (12s): "…, nothing else will do for her": whom it is for, said again
+            rest = re.sub(r"\s+for (?:him|her|them)\s*[.!]*$", "", rest, flags=_F)
+        if opener is not None and not _CLOSER_HELD19.search(rest) and _names_nothing(c, lexicon):
             keep = k
             continue
         break
@@ -20513,7 +20513,34 @@ def _zero_copula34s(text: str, lexicon: Lexicon) -> str:
     )
 
 
-_STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (_zero_copula34s,)
+# What a person was heard to ask for, said again after the request ("Give Alice the cup, no wait,
+# the apple, she said apple, I'm sure of it."): a he / she / they after a comma, 'said', then the
+# name of the one object the stretch before it names, is '<pronoun> asked for the <object>', a
+# want the remark rules check against the request (it must give that object to a person the
+# pronoun may be).
+_SAID_OBJECT34S = re.compile(
+    r"(?P<lead>,\s*)(?P<who>he|she|they) said (?:the )?(?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[,.!;]|$))",
+    _F,
+)
+
+
+def _said_object34s(text: str, lexicon: Lexicon) -> str:
+    """', she said apple' → ', she asked for the apple' (above), when the object is the one the
+    stretch just before it names ("…, the apple, she said apple": said again); 'she said the cup'
+    after 'the apple' is left as said (refused)."""
+
+    def said(m: re.Match[str]) -> str:
+        before = text[: m.start()].rsplit(",", 1)[-1]
+        what = _ids(m["what"], lexicon, "object")
+        if not _only(m["what"], lexicon, "object") or what != _ids(before, lexicon, "object"):
+            return m.group(0)
+        return f"{m['lead']}{m['who']} asked for the {m['what']}"
+
+    return _SAID_OBJECT34S.sub(said, text)
+
+
+_STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (_zero_copula34s, _said_object34s)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
