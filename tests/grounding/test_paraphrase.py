@@ -183,7 +183,6 @@ KNOWN_MISSES = frozenset(
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
-        "Bottle first. To Alice. After, chips to Bob.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
         "Both of the mugs are Alice's, give her the pair.",
         "Give the sippy cup to Lilly.",
@@ -266,7 +265,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
-        "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
@@ -279,10 +277,6 @@ KNOWN_MISSES = frozenset(
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
         "bob's been on the bike all day give him the bottle thx",
-        "sorry typing one handed, chips to person b",
-        "Pop the cjips up on the shelf before the kids find them.",
-        "Sorry, cold hands, give Person A the applw.",
-        "Person B wants a snack, the xhips please.",
         "The sponhe can go in the sink now it's been used.",
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "

@@ -135,7 +135,7 @@ def test_a_pronoun_with_no_stranger_is_the_one_person(text: str) -> None:
         ),
         ("Alice is off to work, so give him the bottle", "cannot mean Alice"),
         ("Give Bob the cup, she's thirsty", r"cannot mean Bob \(a man's name\)"),
-        ("Alice and Carol are out, so he is having the bottle", "cannot mean Alice or Carol"),
+        ("Alice and Carol are out, so he is having the bottle", "is not resolved"),
     ],
 )
 def test_a_pronoun_of_the_other_sex_is_refused(text: str, match: str) -> None:
@@ -378,3 +378,177 @@ def test_she_said_the_object_again(text: str) -> None:
 )
 def test_she_said_another_object_stays_refused(text: str) -> None:
     assert_refused(text, CELL)
+
+
+# -- blind21: 'straight to P', and the object said alone with 'first' (normalise.py _straight34s,
+# _over_to30) -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
+            "apple>A ; cup@shelf",
+        ),
+        ("Take the apple straight to Alice.", "apple>A"),
+        ("Apple straight to Alice.", "apple>A"),
+        ("Put the cup straight onto the shelf.", "cup@shelf"),
+        ("Give Alice the apple straight away.", "apple>A"),
+        ("Apple first. To Alice.", "apple>A"),
+        ("Apple first. To Alice. Then the cup to Bob.", "apple>A ; cup>B"),
+        # blind18
+        ("Bottle first. To Alice. After, chips to Bob.", "bottle>A ; chips>B"),
+        ("The apple. Straight to Alice.", "apple>A"),
+    ],
+)
+def test_straight_to_and_an_object_first(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # no object before where it goes
+        "Straight to Alice.",
+        "Bob. To Alice.",
+    ],
+)
+def test_where_without_an_object_stays_refused(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+# -- a task the correction took back, asked for again (offline.py _asked_again34s) ------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # was apple>A & cup>A: the want after the correction gives the cup back
+        "Give Alice the cup, no wait, the apple, she asked for the cup.",
+        "Give Alice the cup, no, the apple, she wants the cup.",
+        "Give Alice the cup, no, the apple, then give Alice the cup.",
+    ],
+)
+def test_a_task_taken_back_asked_again_is_refused(text: str) -> None:
+    assert_refused(text, CELL, match="the correction takes the cup back from Person A")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup, no, the apple.", "apple>A"),
+        ("Give Alice the cup, no, to Bob.", "cup>B"),
+        # the cup to someone else, and a want with no correction before it
+        ("Give Alice the cup, no, the apple, and give Bob the cup.", "apple>A & cup>B"),
+        ("Give Alice the apple, she asked for the cup.", "apple>A & cup>A"),
+        # the correction taken back in turn (causes10); 'no X for him' is no correction (blind16)
+        ("Give Alice the cup. Sorry, I mean the apple. No, actually the cup was right.", "cup>A"),
+        ("Bob wants the crisps, no bottle for him tho", "chips>B"),
+    ],
+)
+def test_a_correction_and_another_task_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+# -- blind21: a deadline about the object, met by doing it now (normalise.py _when) ------------
+
+TWO = load_scene(EXAMPLES / "two_arms.yaml")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Pop the cjips up on the shelf before the kids find them.",
+        "Pop the chips up on the shelf before the kids eat them.",
+        "Put the chips on the shelf before they find them.",
+    ],
+)
+def test_a_deadline_about_the_object(text: str) -> None:
+    assert_reads(text, "chips@shelf", TWO)
+
+
+@pytest.mark.parametrize(
+    ("text", "match"),
+    [
+        # a later time puts it off; a task verb may be one more task
+        ("Put the chips on the shelf before the kids find them tomorrow.", "tomorrow"),
+        ("Put the chips on the shelf before Bob takes them.", None),
+    ],
+)
+def test_a_deadline_with_a_time_or_a_task_stays_refused(text: str, match: str | None) -> None:
+    assert_refused(text, TWO, match=match)
+
+
+# -- blind21: 'a snack, the chips' (normalise.py _kind_before34s) -------------------------------
+
+F42 = load_scene(EXAMPLES / "4-2.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Person B wants a snack, the xhips please.", "chips>B"),
+        ("Person B wants a drink, the bottle please.", "bottle>B"),
+    ],
+)
+def test_a_kind_then_the_object(text: str, want: str) -> None:
+    assert_reads(text, want, F42)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # no object after the kind, or a person after it
+        "Person B wants a snack.",
+        "Person B wants a snack, Person A the chips.",
+    ],
+)
+def test_a_kind_alone_stays_refused(text: str) -> None:
+    assert_refused(text, F42)
+
+
+# -- blind21: an apology's excuse opening the text (normalise.py _sorry_excuse34s) -------------
+
+DUO = load_scene(EXAMPLES / "2-2.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Sorry, cold hands, give Person A the applw.", "apple>A", LINE),
+        ("sorry typing one handed, chips to person b", "chips>B", DUO),
+    ],
+)
+def test_an_apology_s_excuse_goes_with_it(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # nothing after the excuse; an object, a pointing word, a request, a count in it
+        ("Sorry, cold hands.", LINE),
+        ("Sorry, the apple, give Person A the cup.", LINE),
+        ("Sorry, wrong one, give Person A the cup.", LINE),
+        ("Sorry, hand it over, give Person A the cup.", LINE),
+        ("sorry, one more, chips to person b", DUO),
+    ],
+)
+def test_an_apology_with_more_stays_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the tests of sessions 5, 10, 11, 21, 26 and 28 that said 'her' / 'she' of Bob now say
+        # 'him' / 'he' (a name then said no sex); said as before, it is refused
+        "Bob is hungry, give her the chips",
+        "Give one of the cup or the apple to Bob, any, she does not care.",
+        "Give Bob the bottle, seeing as she's steaming felt.",
+        "Chips to Alice and the cup to Carol, given that he's tired.",
+    ],
+)
+def test_the_old_tests_pronouns_are_refused(text: str) -> None:
+    assert_refused(text, CELL, match="cannot mean")

@@ -51,6 +51,7 @@ from hltl.grounding import gate as re
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     TITLES,
+    VERB_CLASS,
     VERBS,
     WORDS,
     Item,
@@ -2196,6 +2197,17 @@ def _when(text: str, lexicon: Lexicon) -> str:
 
     def timed(m: re.Match[str]) -> str:
         said = m.group("said")
+        # session 34 (12s): "… before the kids find them": the object said again after a verb
+        # of no task of the robots' (not giving, bringing or putting) is what the deadline is
+        # about, not another task ("… before Bob gets them" stays)
+        last = re.match(r"^(?P<rest>.*) (?P<verb>[a-z]+) (?:it|them)$", said, _F)
+        if last is not None and VERB_CLASS.get(VERBS.get(last["verb"].lower(), "")) not in (
+            "give",
+            "bring",
+            "put",
+            "possess",
+        ):
+            said = f"{last['rest']} {last['verb']}"
         if (
             _names_nothing(said, lexicon)
             and not _KEEP_WORDS.search(said)
@@ -8309,7 +8321,9 @@ def _for_opener30(text: str, lexicon: Lexicon) -> str:
 
 # "The bottle. Over to Person A.": the object said as a sentence, where it goes as the next one
 _OVER_TO30 = re.compile(
-    r"(?:^|(?<=[.!?;])\s+)(?P<what>the [a-z][a-z ]*?)\.\s+(?P<dir>(?:over|across|round|along|"
+    # session 34 (12s): the object without 'the', and with 'first' ("Apple first. To Alice.")
+    r"(?:^|(?<=[.!?;])\s+)(?P<what>(?:the )?[a-z][a-z ]*?)(?P<first> first)?\.\s+"
+    r"(?P<dir>(?:over|across|round|along|"
     r"up|down|back) )?to (?P<where>[A-Za-z]+(?: [A-Za-z]+)?)\s*(?=[.!?]|$)",
     _F,
 )
@@ -8327,7 +8341,8 @@ def _over_to30(text: str, lexicon: Lexicon) -> str:
             _only(where, lexicon, "human") or _only(where, lexicon, "surface")
         ):
             lead = m[0][: m.start("what") - m.start()]
-            return f"{lead}{m['what']} {(m['dir'] or '').lower()}to {where}"
+            first = m["first"] or ""
+            return f"{lead}{m['what']}{first} {(m['dir'] or '').lower()}to {where}"
         return m[0]
 
     return _OVER_TO30.sub(joined, text)
@@ -20540,7 +20555,71 @@ def _said_object34s(text: str, lexicon: Lexicon) -> str:
     return _SAID_OBJECT34S.sub(said, text)
 
 
-_STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (_zero_copula34s, _said_object34s)
+# 'straight' before where a thing goes ("Take the apple straight to Alice", "Apple first.
+# Straight to Alice.", "… straight over to Bob", "straight onto the shelf"): how it goes (as a
+# manner adverb in -ly is, session 19), not what; taken off where it names nothing of the scene.
+_STRAIGHT34S = re.compile(
+    r"\bstraight\s+(?=(?:(?:over|back|up|down|across) )?(?:to|onto|into|on|in|over)\b)", _F
+)
+
+
+def _straight34s(text: str, lexicon: Lexicon) -> str:
+    """'… straight to Alice' → '… to Alice' (above)."""
+    if not _names_nothing("straight", lexicon):
+        return text
+    return _STRAIGHT34S.sub("", text)
+
+
+# A kind said before the object it is ("Person B wants a snack, the chips please.", "… a drink,
+# the bottle"): 'a <word of food or drink>' that names nothing of the scene, then a comma and the
+# object, is 'something' (the grammar reads "wants something to eat, the chips").
+_KIND_BEFORE34S = re.compile(
+    r"\b(?:a|an|some) (?P<kind>snack|drink|bite|nibble|treat|refreshment|bite to eat)\s*,\s*"
+    r"(?=(?:the|that|this|those|these) )",
+    _F,
+)
+
+
+def _kind_before34s(text: str, lexicon: Lexicon) -> str:
+    """'wants a snack, the chips' → 'wants something, the chips' (above)."""
+    return _KIND_BEFORE34S.sub(
+        lambda m: "something, " if _names_nothing(m["kind"], lexicon) else m.group(0), text
+    )
+
+
+# An apology opening the text, then its excuse ("Sorry, cold hands, give Person A the applw.",
+# "sorry typing one handed, chips to person b"): the excuse, up to the next comma, of at most four
+# words naming nothing of the scene, not opening on a verb of the grammar's, with no word that
+# counts, negates, chooses or points (_KEEP_WORDS; 'one handed' is how the speaker types), is the
+# speaker's own and goes with the apology; a request must follow it.
+_SORRY_EXCUSE34S = re.compile(r"^(?P<sorry>(?:so )?sorry),?\s+(?P<why>[a-z' -]+?)\s*,\s*(?=\S)", _F)
+
+
+def _sorry_excuse34s(text: str, lexicon: Lexicon) -> str:
+    """'Sorry, cold hands, give …' → 'Sorry, give …' (above)."""
+    m = _SORRY_EXCUSE34S.match(text)
+    if m is None:
+        return text
+    why = m["why"]
+    words = re.sub(r"\bone[- ]handed\b", "handed", why, flags=_F).split()
+    if (
+        len(why.split()) > 4
+        or not _names_nothing(why, lexicon)
+        or _KEEP_WORDS.search(" ".join(words))
+        or words[0].lower() in VERBS  # "Sorry, hand it over, …": a request
+        or _ORDER_WORDS.search(why)
+    ):
+        return text
+    return f"{m['sorry']}, {text[m.end() :]}"
+
+
+_STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _sorry_excuse34s,
+    _zero_copula34s,
+    _said_object34s,
+    _straight34s,
+    _kind_before34s,
+)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 

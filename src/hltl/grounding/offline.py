@@ -99,12 +99,12 @@ def parse_instruction(
     if not inside:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
         _refuse_deferred33l(text)
-        _named_other_sex34s(text, lexicon)
     inside.append(text)  # a rewrite reading a part again keeps what was lexed so far
     try:
         node = _parse(text, scene, lexicon, normalise=True)
         if len(inside) == 1:
             _choices_kept(text, node, lexicon)
+            _named_other_sex34s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -513,6 +513,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
+            _asked_again34s(text, node, scene, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -560,6 +561,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
                 _said_against33s(text, node, lexicon)
+                _asked_again34s(text, node, scene, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -921,6 +923,58 @@ def _said_against33s(text: str, node: Node, lexicon: Lexicon) -> None:
             f"{clause!r} says {name} already has one, yet the request gives {what} to {name}: "
             f"is {what} still to go to {name}{instead}? say who gets it"
         )
+
+
+def _asked_again34s(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> None:
+    """Session 34 (12s): 'Give Alice the cup, no, the apple, she wants the cup': a correction
+    that replaces the one object of the request before it ('the cup' → 'the apple') takes that
+    task back; a reading that still holds it (the grammar had read apple>A & cup>A from the want
+    said after the correction) asks for what was just taken back: refused naming both readings.
+    A correction that keeps the object ('…, no, to Bob'), says 'too' / 'as well' / 'also' /
+    'and', or follows a request of several tasks is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    c = next(
+        (
+            k
+            for k in range(1, len(items) - 1)
+            if items[k - 1].kind == "punct"
+            and items[k - 1].lemma == ","
+            and items[k + 1].kind == "punct"  # ', no bottle for him' is no correction
+            and (_is(items[k], "correct") or items[k].text.lower() == "no")
+        ),
+        None,
+    )
+    if c is None or any(
+        it.kind == "punct" and it.lemma in (".", "!", "?", ";") for it in items[:c]
+    ):
+        return  # the request and its correction one sentence
+    start = c + 1
+    while start < len(items) and items[start].kind == "punct":
+        start += 1
+    end = next((k for k in range(start, len(items)) if items[k].kind == "punct"), len(items))
+    fix = items[start:end]
+    said = {r.id for it in fix if it.kind == "ent" for r in it.refs if r.kind == "object"}
+    if not said or any(it.text.lower() in ("too", "also", "and", "as well") for it in fix):
+        return
+    if any(_is(it, "correct") or it.text.lower() == "no" for it in items[end:]):
+        return  # "…, no, actually the cup was right": the correction taken back in turn
+    try:
+        first = list(
+            tasks(parse_instruction(_text(items[: c - 1]), scene, lexicon, normalise=False))
+        )
+    except GroundingError:
+        return
+    if len(first) != 1 or first[0].obj in said or first[0] not in set(tasks(node)):
+        return
+    task = first[0]
+    to = lexicon.display(task.target)
+    raise GroundingError(
+        f"the correction takes the {task.obj} back from {to}, yet the instruction asks for it "
+        f"again: is the {task.obj} to go to {to} as well, or not? say the whole request again"
+    )
 
 
 def _against_clause33s(items: list[Item], k: int) -> tuple[int, frozenset[str]] | None:
@@ -1443,14 +1497,16 @@ def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
         )
 
 
-def _named_other_sex34s(text: str, lexicon: Lexicon) -> None:
+def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 34 (12s): 'Alice is off to work, so he is having the bottle': a he / she that no
     person the instruction names may be, each named by a first name of the other sex
     (data/first_names_sex.txt), is someone else (the grammar had read 'he' as Alice, the one
-    person named: bottle>A): refused naming the people of the scene it may be. Checked on the
-    whole instruction as said. Names never resolve a pronoun: when a person named may be it
-    ('Give Bob the cup, he's thirsty'; 'Sam', 'Jess', a title, a role or a label say no sex
-    here), it is read as before."""
+    person named: bottle>A): when the reading gives something to one of them, refused naming the
+    people of the scene it may be. Checked on the whole instruction as said and its reading.
+    Names never resolve a pronoun: when a person named may be it ('Give Bob the cup, he's
+    thirsty'; 'Sam', 'Jess', a title, a role or a label say no sex here), or the reading gives
+    nothing to anyone named ('Give Ruth the jug, no, give it to him': Mr Lee), it is read as
+    before."""
     words = _SEXED.findall(text)
     if not words:
         return
@@ -1465,10 +1521,13 @@ def _named_other_sex34s(text: str, lexicon: Lexicon) -> None:
             sex = name_sexes().get(name.lower()) if " " not in name else None
             named.setdefault(human.id, set()).add(sex)
             said.setdefault(human.id, found.group(0))
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
     for word in words:
         sex = PRONOUN_SEX[word.lower()]
         if not named or any(sexes != {"m" if sex == "f" else "f"} for sexes in named.values()):
             continue
+        if not given & set(named):
+            continue  # "Give Ruth the jug, no, give it to him": read as someone else already
         others = [
             h.id
             for h in lexicon.scene.humans
