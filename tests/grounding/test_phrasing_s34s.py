@@ -15,6 +15,7 @@ import pytest
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
     LAB,
@@ -52,10 +53,20 @@ def test_a_time_after_the_surface_puts_the_task_off(text: str) -> None:
         "before I go",
         "Mr Novak's getting the plate that isn't on the plate rack.",
         "Give Mr Novak the plate that isn't on the rack before I go",
+        "The plate that's not on the rack goes to Mr Novak.",
     ],
 )
 def test_the_plate_off_the_rack_is_read_without_a_time(text: str) -> None:
     assert_reads(text, "plate_white>C", KITCHEN)
+
+
+def test_the_object_said_again_after_the_surface() -> None:
+    # blind20 (12r's rewrite leaves "the book that isn't on the bookshelf give it to Zoe")
+    assert_reads(
+        "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
+        "book_red>C",
+        CLASSROOM,
+    )
 
 
 # -- '-ing' after a sentence about a person (offline.py _doer_said34s) -------------------------

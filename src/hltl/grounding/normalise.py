@@ -6361,6 +6361,8 @@ def _negation18(text: str, lexicon: Lexicon) -> str:
         if n == 0:
             return m.group(0)
         rest = " ".join(words[n:])
+        if re.fullmatch(r"(?:give|hand|pass|take|bring|send) (?:it|them)", rest, _F):
+            rest = ""  # "… on the bookshelf give it to Zoe": the object said again, then where
         rest = f" {rest}" if rest else ""
         off = ids - set(starting_on(ids, next(iter(where)), lexicon))
         if len(off) == 1:
