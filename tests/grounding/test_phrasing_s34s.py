@@ -456,6 +456,8 @@ def test_a_task_taken_back_asked_again_is_refused(text: str) -> None:
         # the correction taken back in turn (causes10); 'no X for him' is no correction (blind16)
         ("Give Alice the cup. Sorry, I mean the apple. No, actually the cup was right.", "cup>A"),
         ("Bob wants the crisps, no bottle for him tho", "chips>B"),
+        # a closing 'sorry.' is no correction (the lead's session-34 rule reads what follows)
+        ("Give Alice the cup, sorry. Give Alice the apple.", "cup>A & apple>A"),
     ],
 )
 def test_a_correction_and_another_task_read(text: str, want: str) -> None:

@@ -944,7 +944,9 @@ def _asked_again34s(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> No
             for k in range(1, len(items) - 1)
             if items[k - 1].kind == "punct"
             and items[k - 1].lemma == ","
-            and items[k + 1].kind == "punct"  # ', no bottle for him' is no correction
+            # ', no, …' ('no bottle for him' is no correction; ', sorry. …' closes a sentence)
+            and items[k + 1].kind == "punct"
+            and items[k + 1].lemma == ","
             and (_is(items[k], "correct") or items[k].text.lower() == "no")
         ),
         None,
