@@ -12523,6 +12523,27 @@ def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
     return word is not None and not _names_nothing(word, lexicon)
 
 
+# a bare apology said at the end of its sentence ('…, sorry. '), not 'no, sorry' or 'sorry, I mean'
+_CLOSING_SORRY34L = re.compile(
+    r"\s*,\s*(?:(?:oh|ah|eh),? )?(?:sorry|so sorry|apologies)\s*[.!]\s*", _F
+)
+
+
+def _names_verb34l(after: str) -> bool:
+    """Whether the sentence ``after`` opens with a request of its own: a verb of the grammar's
+    tasks, or a subject and a verb of wanting or having ('Carol needs …', 'What Carol needs is
+    …')."""
+    first = re.split(r"[.!?;]", after)[0]
+    words = re.findall(r"[a-z]+", first.lower())
+    return bool(words) and (
+        words[0] in VERBS
+        or any(
+            w in ("needs", "wants", "gets", "would", "could", "is", "has", "should")
+            for w in words[1:4]
+        )
+    )
+
+
 def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
@@ -12546,6 +12567,12 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         if _APOLOGY19.search(before) or _rx(_BOTHER19).match(after):
             # "Excuse me, sorry, I'm covering today", "sorry to bother": an apology for the
             # interruption, not a correction of what was said before it
+            return text
+        if _CLOSING_SORRY34L.fullmatch(m.group(0)) and _names_verb34l(after):
+            # session 34 (lead): "Bob gets the chips, sorry. What Carol needs is the bottle.": a
+            # bare apology closing its sentence, and a sentence after it that asks for something
+            # by its own verb, is an apology, as the grammar reads "…, sorry. Carol needs the
+            # bottle." (12's fuzz: taken for a correction, the chips were dropped)
             return text
         if re.search(r"\b(?:and|then|and then|but)\s*$", before, _F):
             # "… and then, sorry, the chips to Person A": a pause after a conjunction
