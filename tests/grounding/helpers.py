@@ -8,6 +8,7 @@ import pytest
 
 from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
+from hltl.grounding.lexicon import PRONOUN_SEX, name_sexes
 from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.grounding.tree import Node
 from hltl.spec.equivalence import counterexample
@@ -59,6 +60,20 @@ def plain_request(scene: Scene, k: int) -> tuple[str, str]:
     shared = {a for x in scene.humans if x.id != h.id for a in x.aliases}
     name = next(a for a in (*h.aliases, h.name) if a not in shared)
     return f"give {name} the {o.aliases[0] if o.aliases else o.id}", f"{o.id}>{h.id}"
+
+
+def fits(name: str, pronoun: str) -> bool:
+    """Whether ``pronoun`` may be the person called ``name`` (session 34: a first name of one sex,
+    src/hltl/grounding/data/first_names_sex.txt, rules a pronoun of the other sex out)."""
+    sex = name_sexes().get(name.lower())
+    return sex is None or PRONOUN_SEX[pronoun.lower()] == sex
+
+
+def pronoun_for(name: str, female: str) -> str:
+    """``female`` ('she', 'her', 'hers') said of ``name``: 'he', 'him', 'his' for a man's name."""
+    if name_sexes().get(name.lower()) != "m":
+        return female
+    return {"she": "he", "her": "him", "hers": "his"}[female]
 
 
 def assert_means(text: str, want: str, scene: Scene = CELL) -> None:

@@ -175,7 +175,6 @@ KNOWN_MISSES = frozenset(
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
-        "Bottle first. To Alice. After, chips to Bob.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
@@ -230,7 +229,6 @@ KNOWN_MISSES = frozenset(
         "Would Person B like the apple? Give it to her, yes?",
         "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
@@ -239,7 +237,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
-        "Apple first. Straight to Alice. After that, cup, up on the shelf, and we're square.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
         "Put the spoon on the tray and the green cup on the tray and then once they're both "
@@ -252,10 +249,6 @@ KNOWN_MISSES = frozenset(
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
         "bob's been on the bike all day give him the bottle thx",
-        "sorry typing one handed, chips to person b",
-        "Pop the cjips up on the shelf before the kids find them.",
-        "Sorry, cold hands, give Person A the applw.",
-        "Person B wants a snack, the xhips please.",
         "The sponhe can go in the sink now it's been used.",
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
@@ -265,7 +258,6 @@ KNOWN_MISSES = frozenset(
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        'Person B want the apple lah, she hungry already since morning.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
         "Person A's gasping after the last race, the bottle is what she's needing.",
@@ -280,7 +272,6 @@ KNOWN_MISSES = frozenset(
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
-        "Omar's the one at the sink, so the sponge, give it to him, he'll know what to do.",
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
@@ -295,10 +286,6 @@ KNOWN_MISSES = frozenset(
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
-        "Give Alice the cup, no wait, the apple, she said apple, I'm sure of it.",
-        'Give Person A the chips, sorry, not chips, the cup, my mistake my friend.',
-        'Sorry, sorry, bottle go to Person B... no, mistake, krap, it is for Person A.',
-        'Person A gets the chips, hang on, let me check my list, no, Person B gets the chips.',
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',

@@ -459,7 +459,9 @@ def test_whose_is_what_is_who_gets_it(where: str, data: st.DataObject, end: str)
         # a title says who 'her' is; without one the one person named is
         ("Mrs Khan is cold, give her the grey blanket", "blanket_grey>C", WARD),
         ("Mr Lee and Mrs Khan are here: give her the magazine", "magazine>C", WARD),
-        ("Bob is hungry, give her the chips", "chips>B", CELL),
+        # (session 34: 'her' said of Bob, a man's first name, is someone else — refused, in
+        # test_phrasing_s34s; a name the sex list lacks still lends its person)
+        ("Sam is hungry, give her the red pen", "pen_red>B", OFFICE),
         # the last word of a name of two words ('teddy bear'), when nothing else has it
         ("Give Ava the bear", "teddy>C", NURSERY),
         ("Put the bib on the chair", "bib@highchair", NURSERY),

@@ -4,6 +4,7 @@ said across sentences and its name one letter from a scene's name; the fuzz's 'n
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from hypothesis import given, settings
@@ -20,6 +21,7 @@ from tests.grounding.helpers import (
     SCENES,
     assert_reads,
     assert_refused,
+    fits,
     name_of,
     paraphrase_scene,
     plain_request,
@@ -170,6 +172,18 @@ def test_sorry_to_bother_is_an_apology_whose_refusal_names_the_readings() -> Non
 # -- blind19's refusals by kind ------------------------------------------------------------------
 
 
+def _named_other34(request: str, want: str, reason: str, scene: Scene) -> bool:
+    """Whether the request names its person by a first name the reason's he / she cannot be."""
+    human = next(h for h in scene.humans if h.id == want.split(">")[1])
+    pronoun = reason.split("'")[0]
+    return any(
+        " " not in name
+        and re.search(rf"\b{re.escape(name)}\b", request, re.I) is not None
+        and not fits(name, pronoun)
+        for name in (human.name, *human.aliases)
+    )
+
+
 @settings(max_examples=40, deadline=None)
 @_requests_in(
     [
@@ -189,6 +203,11 @@ def test_a_reason_after_the_request_is_taken_off(scene: Scene, k: int, reason: s
         # so the reason is about someone the instruction does not name (Ruth or Mrs Khan): not
         # taken off, refused with the readings ("Give Mr Lee the jug, she's thirsty.")
         assert_refused(f"{request}, {reason}.", scene, match="by title")
+        return
+    if reason.split()[0] in ("she's", "he's") and _named_other34(request, want, reason, scene):
+        # session 34 (12s): likewise a first name of the other sex ('Give Bob the cup, she's
+        # getting chilly …'): someone the request does not name, refused with the readings
+        assert_refused(f"{request}, {reason}.", scene, match="cannot mean")
         return
     assert_reads(f"{request}, {reason}.", want, scene)
 

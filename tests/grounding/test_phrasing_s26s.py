@@ -85,7 +85,8 @@ def test_plates_apiece_by_colour_in_the_kitchen() -> None:
 @pytest.mark.parametrize(
     ("text", "want"),
     [
-        ("Give one of the cup or the apple to Bob, any, she does not care.", "cup>B | apple>B"),
+        # (session 34: 'he' for Bob; 'she' after a man's first name is someone else, refused)
+        ("Give one of the cup or the apple to Bob, any, he does not care.", "cup>B | apple>B"),
         ("Give Bob the cup or the apple, he's not fussed which.", "cup>B | apple>B"),
         ("Give Bob the cup or the apple, it's all the same to him.", "cup>B | apple>B"),
         ("Give Bob the cup or the apple, makes no odds.", "cup>B | apple>B"),

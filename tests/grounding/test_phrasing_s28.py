@@ -4,6 +4,8 @@ is said after such a choice without a recipient of its own (docs/grounding.md, "
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from hltl.errors import GroundingError
@@ -15,6 +17,7 @@ from tests.grounding.helpers import (
     WORKSHOP,
     assert_reads,
     assert_refused,
+    fits,
     tree,
 )
 
@@ -169,8 +172,18 @@ def test_near_choices_read(text: str, want: str) -> None:
     ],
 )
 def test_a_reason_after_the_request_is_taken_off(tail: str) -> None:
-    assert_reads(f"Give Bob the bottle{tail}.", "bottle>B")
-    assert_reads(f"Chips to Alice and the cup to Carol{tail}.", "chips>A & cup>C")
+    # session 34: a he / she that no first name said may be (Bob is a man's, Alice and Carol
+    # women's) is someone else: refused naming the others, else the reason is taken off
+    for request, want in (
+        ("Give Bob the bottle", "bottle>B"),
+        ("Chips to Alice and the cup to Carol", "chips>A & cup>C"),
+    ):
+        pronoun = re.search(r"\b(?:he|she)\b", tail)
+        names = re.findall(r"\b(?:Bob|Alice|Carol)\b", request)
+        if pronoun and not any(fits(name, pronoun.group(0)) for name in names):
+            assert_refused(f"{request}{tail}.", match="cannot mean")
+        else:
+            assert_reads(f"{request}{tail}.", want)
 
 
 @pytest.mark.parametrize(

@@ -20,7 +20,13 @@
 - 12c's deferrals fuzz: "The cup goes to Person B, the chips go to Person A, the apple stays
   where it is. Nothing else after that." (4-2) read cup>B ; chips>A: 'nothing else' was a
   filler and 'after that' ordered the clause before it after the one before that. 'nothing
-  (else/more) after that/this' is one closing filler."""
+  (else/more) after that/this' is one closing filler.
+- 12's frames fuzz: "Sorry, could Bob have one of the mugs? Either is fine, sorry. What Carol
+  needs is the water bottle." read bottle>C: the closing ', sorry.' was taken for a correction
+  cue, and the sentence after it replaced the whole request. A bare apology closing its
+  sentence, before a sentence that asks for something by its own verb, is an apology, as the
+  grammar already read "…, sorry. Carol needs the bottle."; '…, sorry. Carol.' and '…, sorry,
+  Carol needs the bottle.' are corrections still."""
 
 from __future__ import annotations
 
@@ -108,3 +114,22 @@ def test_a_question_keeps_its_end_before_a_statement() -> None:
 )
 def test_nothing_else_after_that_closes_without_an_order(text: str, want: str) -> None:
     assert_reads(text, want, F42)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Sorry, could Bob have one of the mugs? Either is fine, sorry. What Carol needs is the "
+            "water bottle.",
+            "(mug_red>B | mug_blue>B) & bottle>C",
+        ),
+        ("Bob gets the chips, sorry. What Carol needs is the water bottle.", "chips>B & bottle>C"),
+        ("Bob gets the chips, sorry. Carol needs the water bottle.", "chips>B & bottle>C"),
+        # corrections still
+        ("Give Bob the chips, sorry. Carol.", "chips>C"),
+        ("Give Bob the chips, sorry, Carol needs the bottle.", "bottle>C"),
+    ],
+)
+def test_a_closing_apology_before_a_new_request_is_no_correction(text: str, want: str) -> None:
+    assert_reads(text, want)

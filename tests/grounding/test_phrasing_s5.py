@@ -14,7 +14,7 @@ from hltl.grounding.lexicon import Lexicon, common_words, tokenize
 from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import CELL, ROOT, assert_means, one_edits
+from tests.grounding.helpers import CELL, ROOT, assert_means, one_edits, pronoun_for
 from tests.grounding.helpers import tree as _tree
 
 SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
@@ -118,8 +118,9 @@ def test_a_retraction_replaces_the_sentence_before(
     (a, b), (p, q) = objs[:2], people[:2]
     assert_means(f"Give {PEOPLE[p]} the {a}. {word}, give {PEOPLE[q]} the {b}.", f"{b}>{q}")
     assert_means(f"Give {PEOPLE[p]} the {a}, {word.lower()}, {PEOPLE[q]} wants the {b}", f"{b}>{q}")
-    # 'her' is the person of the sentence taken back
-    assert_means(f"Give {PEOPLE[p]} the {a}. {word}, give her the {b}.", f"{b}>{p}")
+    # 'her' is the person of the sentence taken back ('him' for a man's first name: session 34)
+    her = pronoun_for(PEOPLE[p], "her")
+    assert_means(f"Give {PEOPLE[p]} the {a}. {word}, give {her} the {b}.", f"{b}>{p}")
 
 
 @pytest.mark.parametrize(
@@ -315,7 +316,8 @@ def test_crisps_where_the_scene_says_chips() -> None:
 def test_a_negated_want_beside_a_request(objs: list[str], p: str) -> None:
     a, b = objs[:2]
     who = PEOPLE[p]
-    assert_means(f"{who} doesn't want the {a}, she wants the {b}", f"{b}>{p}")
+    # (session 34: 'he' for a man's first name; 'she' would be someone else)
+    assert_means(f"{who} doesn't want the {a}, {pronoun_for(who, 'she')} wants the {b}", f"{b}>{p}")
     assert_means(f"Don't give {who} the {a}, give {who} the {b}", f"{b}>{p}")
     # the same object again, 'everything' or a pronoun after it: refused, not guessed
     assert _tree(f"{who} doesn't want the {a}, give her everything") is None

@@ -1797,6 +1797,15 @@ def first_names() -> frozenset[str]:
     return frozenset(w for w in text.split("\n") if w and not w.startswith("#"))
 
 
+@functools.cache
+def name_sexes() -> dict[str, str]:
+    """First names of one sex ('f' or 'm'; data/first_names_sex.txt says where from): used only
+    to refuse a he / she no person named may be, never to resolve one."""
+    text = resources.files("hltl.grounding").joinpath("data/first_names_sex.txt").read_text("utf-8")
+    pairs = (line.split() for line in text.split("\n") if line and not line.startswith("#"))
+    return {name: sex for name, sex in pairs}
+
+
 _SOUNDS_ALIKE = ({"i", "y"}, {"c", "k"})
 
 

@@ -12,12 +12,15 @@ from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
+    TITLES,
     VERB_CLASS,
     Item,
     Lexicon,
     ambiguous,
+    first_names,
     foreign_words,
     lex,
+    name_sexes,
     person_name,
     title_sex,
 )
@@ -101,6 +104,7 @@ def parse_instruction(
         node = _parse(text, scene, lexicon, normalise=True)
         if len(inside) == 1:
             _choices_kept(text, node, lexicon)
+            _named_other_sex34s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -534,6 +538,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _owner_only33s(text, lexicon)
         _other_after_repair33s(text, lexicon)
         _them_after_choice33s(text, lexicon)
+        _doer_said34s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -549,6 +554,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
+            _asked_again34s(text, node, scene, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -576,6 +582,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 # "Give Mr Lee the jug, she's thirsty.": the reason the rewrite takes off says
                 # 'she', which cannot be Mr Lee; someone else of the scene may be meant
                 continue
+            stranger = _stranger_dropped34s(text, plain, lexicon)
+            if stranger is not None:
+                if not _readings(best):
+                    best = stranger
+                continue
             if _stubs(plain, lexicon) > stubs:
                 # "…, the green one's for the communion wine." → "…, the green one's.": the
                 # rewrite took off what the clause said of the object, and what is left would
@@ -591,6 +602,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 _not_before_itself(plain, node, scene, lexicon)
                 _two_sexes_one_person(text, lexicon)
                 _said_against33s(text, node, lexicon)
+                _asked_again34s(text, node, scene, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -956,6 +968,60 @@ def _said_against33s(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+def _asked_again34s(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> None:
+    """Session 34 (12s): 'Give Alice the cup, no, the apple, she wants the cup': a correction
+    that replaces the one object of the request before it ('the cup' → 'the apple') takes that
+    task back; a reading that still holds it (the grammar had read apple>A & cup>A from the want
+    said after the correction) asks for what was just taken back: refused naming both readings.
+    A correction that keeps the object ('…, no, to Bob'), says 'too' / 'as well' / 'also' /
+    'and', or follows a request of several tasks is read as before."""
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    c = next(
+        (
+            k
+            for k in range(1, len(items) - 1)
+            if items[k - 1].kind == "punct"
+            and items[k - 1].lemma == ","
+            # ', no, …' ('no bottle for him' is no correction; ', sorry. …' closes a sentence)
+            and items[k + 1].kind == "punct"
+            and items[k + 1].lemma == ","
+            and (_is(items[k], "correct") or items[k].text.lower() == "no")
+        ),
+        None,
+    )
+    if c is None or any(
+        it.kind == "punct" and it.lemma in (".", "!", "?", ";") for it in items[:c]
+    ):
+        return  # the request and its correction one sentence
+    start = c + 1
+    while start < len(items) and items[start].kind == "punct":
+        start += 1
+    end = next((k for k in range(start, len(items)) if items[k].kind == "punct"), len(items))
+    fix = items[start:end]
+    said = {r.id for it in fix if it.kind == "ent" for r in it.refs if r.kind == "object"}
+    if not said or any(it.text.lower() in ("too", "also", "and", "as well") for it in fix):
+        return
+    if any(_is(it, "correct") or it.text.lower() == "no" for it in items[end:]):
+        return  # "…, no, actually the cup was right": the correction taken back in turn
+    try:
+        first = list(
+            tasks(parse_instruction(_text(items[: c - 1]), scene, lexicon, normalise=False))
+        )
+    except GroundingError:
+        return
+    if len(first) != 1 or first[0].obj in said or first[0] not in set(tasks(node)):
+        return
+    task = first[0]
+    to = lexicon.display(task.target)
+    raise GroundingError(
+        f"the correction takes the {task.obj} back from {to}, yet the instruction asks for it "
+        f"again: is the {task.obj} to go to {to} as well, or not? say the whole request again"
+    )
+
+
 def _against_clause33s(items: list[Item], k: int) -> tuple[int, frozenset[str]] | None:
     """The end of the clause at ``k`` and the objects it says its subject is off ('Bob is off
     (the) crisps'; none for 'he's got one', 'Sam has it already'), when it is one of those."""
@@ -1080,6 +1146,53 @@ def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
                 )
 
 
+# the words before a task said with '-ing' (or 'having' and its participle) that make it a time
+# or a reason of the sentence's own clause ('for loading' is a purpose: not here)
+_DOER_WORDS34S = ("after", "before", "since", "once", "upon", "having")
+
+
+def _doer_said34s(text: str, lexicon: Lexicon) -> None:
+    """Session 34 (12s): 'Bob has earned the crisps after giving Carol the apple': a sentence
+    about a person (their name first, a verb next, not a comma) then 'after giving …' says what
+    that person does or did, not what the robots are to do (the grammar had read apple>C ;
+    chips>B): refused. Said to the robots ('Give Bob the crisps after giving Carol the apple'),
+    with 'getting' (what the person receives) or with a purpose ('for loading the van') it is
+    read as before."""
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
+    except GroundingError:
+        return
+    sentence: list[Item] = []
+    for it in [*items, None]:
+        if it is not None and not (it.kind == "punct" and it.lemma in (".", "!", "?", ";")):
+            sentence.append(it)
+            continue
+        said, sentence = sentence, []
+        if (
+            len(said) < 4
+            or said[0].kind != "ent"
+            or not all(r.kind == "human" for r in said[0].refs)
+            or said[1].kind in ("punct", "ent")
+        ):
+            continue
+        for k in range(2, len(said) - 2):
+            verb = said[k + 1]
+            if (
+                said[k].text.lower() in _DOER_WORDS34S
+                and _is_verb(verb)
+                and VERB_CLASS.get(verb.lemma.removeprefix("verb:")) in ("give", "bring", "put")
+                and (verb.text.lower().endswith("ing") or said[k].text.lower() == "having")
+                and verb.text.lower() not in ("getting", "going")
+                and any(it.kind == "ent" for it in said[k + 2 :])
+            ):
+                clause = _text(said[k:])
+                raise GroundingError(
+                    f"{clause!r} is said of {said[0].text} (the sentence is about them): it "
+                    f"tells what {said[0].text} does or did, not what the robots are to do; say "
+                    "each thing the robots are to do as a request"
+                )
+
+
 def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
     Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
@@ -1189,6 +1302,44 @@ def _ruled_out_dropped31s(text: str, plain: str, lexicon: Lexicon) -> bool:
         if len(word.findall(plain)) < len(word.findall(text)):
             return True
     return False
+
+
+def _stranger_dropped34s(text: str, plain: str, lexicon: Lexicon) -> GroundingError | None:
+    """Session 34 (12s): a refusal when, in a scene of one person, ``plain`` (a rewrite of
+    ``text``) took off the name of someone the scene does not hold (a word the grammar does not
+    know, capitalised inside its sentence, or a first name or title opening it) and keeps a he /
+    she / him / her the name may be ("I'm Carol's plumber. Hand her the bottle.": 'her' may be
+    Carol; with the first sentence taken off it had become the one person of the scene, as
+    session 32 reads a pronoun no name comes before). None when nothing such was taken off."""
+    said = re.findall(r"\b(?:he|she|him|her|his|hers)\b", plain, re.I)
+    if not said or len(lexicon.scene.humans) != 1:
+        return None
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return None
+    kept = set(re.findall(r"[\w']+", plain.lower()))
+    for k, it in enumerate(items):
+        if it.kind != "unknown":
+            continue
+        opening = k == 0 or (items[k - 1].kind == "punct" and items[k - 1].lemma in ".;!?:")
+        for n, word in enumerate(it.text.split()):
+            low = word.lower().strip(".,'").removesuffix("'s")
+            # written as a name: capitalised inside its sentence, or a first name or title
+            # opening it ('there's a love', 'since dawn' are no one)
+            if (
+                low in kept
+                or not word[:1].isupper()
+                or word == "I"
+                or (opening and n == 0 and low not in first_names() and low not in TITLES)
+            ):
+                continue
+            people = [person_name(h.id, lexicon) for h in lexicon.scene.humans]
+            return GroundingError(
+                f"{said[0]!r} is not resolved: it could mean {low.title()!r}, whom the scene "
+                f"does not hold, or {' or '.join(people)}; name the person"
+            )
+    return None
 
 
 def _names_any30s(text: str, lexicon: Lexicon) -> bool:
@@ -1388,6 +1539,52 @@ def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
         raise GroundingError(
             f"{words[-1]!r} is not resolved: 'he' and 'she' are two people, and fewer are named; "
             "name the person"
+        )
+
+
+def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 34 (12s): 'Alice is off to work, so he is having the bottle': a he / she that no
+    person the instruction names may be, each named by a first name of the other sex
+    (data/first_names_sex.txt), is someone else (the grammar had read 'he' as Alice, the one
+    person named: bottle>A): when the reading gives something to one of them, refused naming the
+    people of the scene it may be. Checked on the whole instruction as said and its reading.
+    Names never resolve a pronoun: when a person named may be it ('Give Bob the cup, he's
+    thirsty'; 'Sam', 'Jess', a title, a role or a label say no sex here), or the reading gives
+    nothing to anyone named ('Give Ruth the jug, no, give it to him': Mr Lee), it is read as
+    before."""
+    words = _SEXED.findall(text)
+    if not words:
+        return
+    named: dict[str, set[str | None]] = {}
+    said: dict[str, str] = {}
+    for human in lexicon.scene.humans:
+        for name in (human.name, *human.aliases):
+            found = re.search(rf"\b{re.escape(name)}\b", text, re.I)
+            if found is None:
+                continue
+            # a first name said alone (a title, a role, a label say no sex here)
+            sex = name_sexes().get(name.lower()) if " " not in name else None
+            named.setdefault(human.id, set()).add(sex)
+            said.setdefault(human.id, found.group(0))
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    for word in words:
+        sex = PRONOUN_SEX[word.lower()]
+        if not named or any(sexes != {"m" if sex == "f" else "f"} for sexes in named.values()):
+            continue
+        if not given & set(named):
+            continue  # "Give Ruth the jug, no, give it to him": read as someone else already
+        others = [
+            h.id
+            for h in lexicon.scene.humans
+            if h.id not in named and title_sex(h.id, lexicon) in (None, sex)
+        ]
+        kind = "a woman's name" if sex == "m" else "a man's name"
+        if len(named) > 1:
+            kind = "women's names" if sex == "m" else "men's names"
+        could = " or ".join(person_name(p, lexicon) for p in others)
+        raise GroundingError(
+            f"{word!r} is not resolved: it cannot mean {' or '.join(said.values())} ({kind}); "
+            f"it could mean {could or 'someone the scene does not hold'}; name the person"
         )
 
 
