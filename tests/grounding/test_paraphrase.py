@@ -128,7 +128,6 @@ KNOWN_MISSES = frozenset(
         "Play on! Drill to Kofi, advantage played.",
         "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Those three things that aren't the bottle, give them to Person A.",
         "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
@@ -165,8 +164,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
         "The two blocks be Lily's treasure, arr, give her both!",
         "The four treasures, all of them, unto Person A.",
-        "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
-        "bottle and the chips.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "We reported the cup was going to Person A. Correction: it's the apple.",
         "good evening, tonights order chips for person b plus the cup for person a",
@@ -198,7 +195,6 @@ KNOWN_MISSES = frozenset(
         "Novak? Thank you, sir.",
         "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
         "bottle. Thanks. Sorry Dave, go on.",
-        "Carol says she'd love the blue mug, oh, and Bob fancies the apple.",
         "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
         " chips, he wants those.",
         "Honestly, the thing Person B has been after all morning is the bottle.",
@@ -208,10 +204,7 @@ KNOWN_MISSES = frozenset(
         "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
-        "okay so Person A's having the cup and the apple's going over to Person B off you go",
-        "okay listen the chips are for Person A the bottle's for Person B got it",
         "They both want something. Bottle over to Person A please, and cup across to Person B.",
-        "Those two mugs want to go on the counter, please.",
         "Drop all three of the pens into the box, they keep rolling off.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
@@ -227,21 +220,13 @@ KNOWN_MISSES = frozenset(
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
-        "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
-        "you are very kind.",
-        "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
-        "thanks.",
         "Tom's after the barcode scanner, his own one has died on him.",
-        "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
         "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because she "
         "asked earlier and she's been very patient.",
         "Give Jess the small spanner quick she's under the van and after that the hammer to Kofi "
         "he's waiting.",
-        "For Person B, bottle, please give. Thank you.",
-        "Bob wants the bottle Alice wants the crisps that's all of it.",
-        "All three of the boxes want to go on the conveyor, in whatever order suits you.",
         "For reading group, lay out both books on the desk, the two of them.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
@@ -250,13 +235,8 @@ KNOWN_MISSES = frozenset(
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
-        "the apple over to person b when u can",
-        "the crisps r alice's, the bottle goes to bob",
         "shelf for the chips, bob for the bottle, ta",
-        "Person B reckons she fancies the chilps now.",
-        "Over to Person B with the bpttle, please.",
         "Would Person B like the apple? Give it to her, yes?",
-        "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
@@ -404,7 +384,6 @@ KNOWN_MISSES = frozenset(
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
-        "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -20004,6 +20004,146 @@ def _formal33t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds ---------
+
+
+def _counted_those34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a count after 'all … of the' or the demonstrative 'those' is the count
+    with 'the': 'All three of the boxes want to go …' (opening the request, before 'want to go')
+    is 'the three boxes want to go …', 'Those three things that aren't the bottle, …' is 'The
+    three things that aren't the bottle, …'. Only before a plural that names objects of the
+    scene; the count is checked as for 'the three boxes' (a count the scene does not meet is
+    refused)."""
+
+    def the(m: re.Match[str]) -> str:
+        said = f"the {m['n']} {m['kind']}"
+        if not _ids(f"the {m['kind']}", lexicon, "object"):
+            return m.group(0)
+        return said.capitalize() if m.group(0)[:1].isupper() else said
+
+    out = _sub(
+        r"^all (?P<n>two|three|four|five|six) of (?:the|those) (?P<kind>[a-z]+s)(?= want to go\b)",
+        the,
+        text,
+    )
+    return _sub(r"\bthose (?P<n>two|three|four|five|six) (?P<kind>[a-z]+s)\b", the, out)
+
+
+def _objects_said34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a last sentence naming only objects ('Sorry, the bottle and the
+    chips.', 'I mean the bottle and the chips.') after a request that reads: taken off when it
+    names exactly the objects that request hands over or places (it says them again); any other
+    objects (a correction), a person or a place in it is left and refused."""
+    m = _rx(
+        r"(?<=[.!?])\s+(?:(?:sorry|i mean|that is|so|yes|yeah)\s*,?\s+)?(?P<objs>(?:the )?[a-z]+"
+        r"(?:(?:,\s*| and )(?:the )?[a-z]+)*)\s*[.!]?$"
+    ).search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    said = _tasks_of(before, lexicon)
+    objs = re.split(r",\s*| and ", m["objs"], flags=_F)
+    named: set[str] = set()
+    for o in objs:
+        if not _only_kind(o, lexicon, "object"):
+            return text
+        named |= _ids(o, lexicon, "object")
+    if not said or named != {obj for _, obj, _ in said} or len(named) != len(objs):
+        return text
+    return before
+
+
+# 'P says / reckons (that) she'd love X': what P wants, said by the speaker
+_REPORTED34T = (
+    r"(?P<lead>^|[.!;]\s+|,\s*(?:(?:oh|and|oh and),?\s+)*)(?P<p>[a-z][\w ]*?) (?:says|said|"
+    r"reckons|thinks|tells me)(?: that)? (?P<pro>he|she|they)(?P<verb>(?:'d| would) (?:love|like)|"
+    r" wants| needs| fancies)\b"
+)
+
+
+def _reported_want34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): what a person wants, reported ('Carol says she'd love the blue mug',
+    'Person B reckons she fancies the chips') is that person's want ('Carol would love the blue
+    mug'): only when the words before 'says' name one person, no person is named before them, and
+    the pronoun may be that person (a title says which: 'Mr Lee says she'd love …' is left)."""
+
+    def want(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or _ids(text[: m.start()], lexicon, "human"):
+            return m.group(0)
+        (pid,) = _ids(m["p"], lexicon, "human")
+        if m["pro"].lower() == "they" or not _fits(pid, m["pro"], lexicon):
+            return m.group(0)
+        verb = m["verb"].replace("'d", " would").strip()
+        return f"{m['lead']}{m['p']} {verb}"
+
+    return _sub(_REPORTED34T, want, text)
+
+
+# closers said after a request without a stop: 'off you go', 'got it', 'that's all of it'
+_CLOSERS34T = r"off you go|got it|that's all of it|that's it|that is all|that's the lot"
+
+
+def _closers34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): closers that ask nothing, from a closed list (``_CLOSERS34T``), said
+    after a request with no stop ('… the apple's going over to Person B off you go'): taken off
+    when what is before them reads alone. 'Thank you, you are very kind.' is 'Thank you.'; a
+    thanks of another language put right into English ('Obrigado, eh, I mean thanks.') is
+    'Thanks.'; in text-speak 'when u can' is 'when you can' and 'the crisps r Alice's' is 'the
+    crisps are Alice's' (only before a possessive or 'for')."""
+    m = _rx(rf"^(?P<said>.*?\S)\s*,?\s+(?:{_CLOSERS34T})\s*[.!?]*$").match(text)
+    if m is not None and _reading(m["said"], lexicon) is not None:
+        text = m["said"]
+    out = _sub(
+        r"(?<=[.!]\s)(thank you|thanks|cheers),\s*(?:you are|you're) (?:very |so |too )?kind"
+        r"(?=\s*[.!]?$)",
+        r"\1",
+        text,
+    )
+    out = _sub(
+        rf"(?<=[.!]\s)(?:{_COURTESY24}),\s*(?:(?:eh|er|um|erm),\s*)?i mean (thanks|thank you)\b",
+        r"\1",
+        out,
+    )
+    out = _sub(r"\bwhen u can\b", "when you can", out)
+    return _sub(r"(^|,\s*)(the [a-z]+) r (?=[a-z]+'s\b|for\b)", r"\1\2 are ", out)
+
+
+def _frames34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): request frames of learners and of talk, from a closed list: 'I would
+    like that you give …' is 'I would like you to give …'; '(do|d') you reckon you could …' is
+    'could you …'; 'Over to P with the X' is 'the X over to P'; 'For P, (the) X, please give.'
+    (the verb said last) is 'please give P the X'; '…, then the crisps, same place' after a
+    hand-over or placement is '…, then the crisps too' (the same target)."""
+    out = _sub(r"\bi would like (?:it )?that you (?=[a-z]+ )", "I would like you to ", text)
+    out = _sub(
+        r"\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\b", r"\1 you", out
+    )
+    m = _rx(r"^(?:over|across) to (?P<p>[a-z][\w ]*?) with (?P<obj>the [a-z]+)\b").match(out)
+    if m is not None and _only_person(m["p"], lexicon) and _only_kind(m["obj"], lexicon, "object"):
+        out = f"{m['obj'].capitalize()} over to {m['p']}{out[m.end() :]}"
+    m = _rx(
+        r"^for (?P<p>[a-z][\w ]*?),\s*(?P<obj>(?:the )?[a-z]+),\s*(?:please )?give\s*(?P<end>[.!]?)"
+    ).match(out)
+    if m is not None and _only_person(m["p"], lexicon) and _only_kind(m["obj"], lexicon, "object"):
+        obj = m["obj"] if m["obj"].lower().startswith("the ") else f"the {m['obj']}"
+        out = f"Please give {m['p']} {obj}{m['end']}{out[m.end() :]}"
+    return _sub(
+        r"((?:(?<=[.!]\s)then|,\s*(?:and )?then) (?:the )?[a-z]+),\s*(?:the )?same (?:place|spot)"
+        r"(?=\s*[.!]?$)",
+        r"\1 too",
+        out,
+    )
+
+
+_STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _counted_those34t,
+    _objects_said34t,
+    _reported_want34t,
+    _closers34t,
+    _frames34t,
+)
+
+
 _STEPS33T: tuple[Callable[[str, Lexicon], str], ...] = (
     _each_header33t,
     _kind_choice33t,
@@ -21556,6 +21696,8 @@ _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
+    # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
+    *_STEPS34T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
