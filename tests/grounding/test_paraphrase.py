@@ -79,7 +79,6 @@ KNOWN_MISSES = frozenset(
         # night staff') is a remark the general rule does not take off ('to' may name a
         # recipient); 'the wee box' ('wee' read as a size the scene does not have)
         "Aye, if ye could put the wee box on the belt, that'd be magic, ta",
-        "Aye, if ye could give Grandad the wee teddy, that'd be magic",
         # blind13: 'Sorry' after a call and before a remark of two words ("Behind! Sorry, chef
         # habit.") could correct; 'chef habit' opens with no speaker or hearer
         "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
@@ -104,8 +103,6 @@ KNOWN_MISSES = frozenset(
         # blind13: 'the kids' is not a name of the students
         "Each of the kids gets a book",
         # causes15: 'after those two' after three sentences of which the first two are meant
-        "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after those "
-        "two.",
         # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
         # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
         # list after, 'one of the <description>', purposes ('to bang together', 'before
@@ -124,11 +121,7 @@ KNOWN_MISSES = frozenset(
         # X where it is' after a correction, 'so hand it over' then another handover, gapping
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
-        "omg bestie pls give Sam the stapler, slay",
-        "Play on! Drill to Kofi, advantage played.",
-        "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
@@ -151,10 +144,7 @@ KNOWN_MISSES = frozenset(
         "lemon over to Mr Novak? Lovely stuff.",
         "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
         "maybe go to Carol? Sorry. Thank you.",
-        "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
-        "over to Mr Lee. Namaste.",
         "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
-        "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
         "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
         "Bottle is what Alice want, crisps is for Bob one, can or not?",
         "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
@@ -197,15 +187,10 @@ KNOWN_MISSES = frozenset(
         "bottle. Thanks. Sorry Dave, go on.",
         "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
         " chips, he wants those.",
-        "Honestly, the thing Person B has been after all morning is the bottle.",
-        "Priority is Person A, she needs the cup; once she's sorted, Person B would like the "
-        "apple.",
         "The chips are wanted by Person A and the bottle by Person B.",
         "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
-        "They both want something. Bottle over to Person A please, and cup across to Person B.",
-        "Drop all three of the pens into the box, they keep rolling off.",
         "Jess needs some screws, give her the tin.",
         "Sam's after a pen. Red's no good for forms, so one of the others.",
         "Everything that's a box goes on the conveyor, except the big one, leave that on the "
@@ -236,7 +221,6 @@ KNOWN_MISSES = frozenset(
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
         "shelf for the chips, bob for the bottle, ta",
-        "Would Person B like the apple? Give it to her, yes?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
@@ -317,20 +301,15 @@ KNOWN_MISSES = frozenset(
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',
-        "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
-        'much.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
         "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
-        'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
-        'stop.',
         "Give Person B everything you've got there but not the apple, she hates apples.",
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
         "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
-        'the red book goes back up on the bookshelf with the others',
         'Drop the scnner on the belt before the next load comes down.',
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
         # give Alice."; session 33, 12t)
@@ -338,7 +317,6 @@ KNOWN_MISSES = frozenset(
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
         "Would you put the black pen in the box for Priya?",
-        "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",

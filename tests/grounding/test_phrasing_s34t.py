@@ -9,10 +9,14 @@ import pytest
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
+    LAB,
+    NURSERY,
     OFFICE,
     ROOT,
     WARD,
+    WORKSHOP,
     assert_reads,
     assert_refused,
 )
@@ -28,6 +32,7 @@ DUO = _scene("2-2")  # bottle, chips; A, B
 T21 = _scene("2-1")  # bottle, chips; A, B
 L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B
 SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
+T12 = _scene("1-2")  # bottle; A, B
 TWO = _scene("two_arms")  # bottle, chips (crisps); Alice, Bob
 FIG1 = _scene("fig1")  # bottle, chips (crisps); Alice, Bob; shelf
 
@@ -197,4 +202,209 @@ def test_closers(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_frames(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'Drop all three of the pens into the box' is a placement ----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Drop all three of the pens into the box, they keep rolling off.",
+            "pen_black@box & pen_blue@box & pen_red@box",
+            OFFICE,
+        ),
+        ("Drop all two of the pens into the box.", None, OFFICE),
+        ("Drop all three of the pens.", None, OFFICE),
+    ],
+)
+def test_drop_all(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- the cleft 'the thing P has been after is X'; a header 'They both want something.' ----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Honestly, the thing Person B has been after all morning is the bottle.", "bottle>B", L44),
+        ("The thing Person A wants is the cup.", "cup>A", L44),
+        (
+            "They both want something. Bottle over to Person A please, and cup across to Person B.",
+            "bottle>A & cup>B",
+            F41,
+        ),
+        # not a person; one of the two left out, or two things for one; three people
+        ("The thing on the table is the bottle.", None, L44),
+        ("They both want something. Bottle over to Person A please.", None, F41),
+        ("They both want something. Bottle and cup to Person A, and apple to Person B.", None, F41),
+        ("They both want something. The cup to Alice and the apple to Bob.", None, CELL),
+    ],
+)
+def test_thing_and_both(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- a question that names the two, then 'give it to her'; who comes first ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Would Person B like the apple? Give it to her, yes?", "apple>B", SQ),
+        (
+            "Priority is Person A, she needs the cup; once she's sorted, Person B would like the "
+            "apple.",
+            "cup>A ; apple>B",
+            F42,
+        ),
+        # the pronoun cannot be the person by title; more after the request; 'them' of one thing
+        ("Would Mr Lee like the magazine? Give it to her.", None, WARD),
+        ("Would Person B like the apple? Give it to her, and the cup to Person A.", None, SQ),
+        ("Would Person B like the apple? Give them to her.", None, SQ),
+        (
+            "Priority is Mr Lee, she needs the jug; once she's sorted, Ruth would like the "
+            "magazine.",
+            None,
+            WARD,
+        ),
+    ],
+)
+def test_asked_first(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'Only one bottle between the lot of us': the count of the scene ---------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Only one bottle between the lot of us, so that single bottle goes to Person A, full "
+            "stop.",
+            "bottle>A",
+            T12,
+        ),
+        # two mugs; another kind said again
+        ("Only one mug between the lot of us, so that single mug goes to Alice.", None, CELL),
+        ("Only one cup between the lot of us, so that single bottle goes to Person A.", None, T12),
+    ],
+)
+def test_only_one(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- where a placement goes, said again in words naming nothing; 'Don't mind me' ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("the red book goes back up on the bookshelf with the others", "book_red@shelf", CLASSROOM),
+        (
+            "Why don't you set the globe down on the desk where the class can see the dig site?",
+            "globe@desk",
+            CLASSROOM,
+        ),
+        (
+            "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
+            "much.",
+            "apple>B",
+            SQ,
+        ),
+        # a person, an object, the speaker or a time in the 'where' clause; 'the rest'; a person
+        ("the red book goes back up on the bookshelf with the rest", None, CLASSROOM),
+        ("Why don't you set the globe down on the desk where Zoe can see it?", None, CLASSROOM),
+        ("Set the globe down on the desk where the red book is.", None, CLASSROOM),
+        ("Set the globe down on the desk where I can see it.", None, CLASSROOM),
+        ("Set the globe down on the desk where the class can see it tomorrow.", None, CLASSROOM),
+        ("Don't mind Person A, hand Person B the apple.", None, SQ),
+    ],
+)
+def test_remark_places(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- closed lists: breathing, a referee, text-speak, 'wee', appositions of a role ---------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
+            "over to Mr Lee. Namaste.",
+            "blanket_grey>B",
+            WARD,
+        ),
+        ("Namaste. Breathe in, and place the sponge in the sink. Breathe out.", "sponge@sink", LAB),
+        ("omg bestie pls give Sam the stapler, slay", "stapler>B", OFFICE),
+        ("Play on! Drill to Kofi, advantage played.", "drill>A", WORKSHOP),
+        ("Aye, if ye could give Grandad the wee teddy, that'd be magic", "teddy>B", NURSERY),
+        (
+            "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red "
+            "pen.",
+            "notebook>B & pen_red>A",
+            OFFICE,
+        ),
+        # breathing said of an object; two blocks; another person's role; a role as 'my' word
+        ("Breathe in, and place the sponge in the sink, and breathe out the banana.", None, LAB),
+        ("if ye could give Grandad the wee block, that'd be magic", None, NURSERY),
+        (
+            "My client, Sam, requires the notepad, and Priya, the intern, wishes to have the red "
+            "pen.",
+            None,
+            OFFICE,
+        ),
+        ("My manager, Sam, requires the notepad.", None, OFFICE),
+    ],
+)
+def test_idioms(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- 'after those two' says the order again; 'leave the X where it is' the correction ----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after "
+            "those two.",
+            "(stapler>B & pen_red>B) ; notebook>A",
+            OFFICE,
+        ),
+        (
+            "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
+            "scanner>A",
+            DEPOT,
+        ),
+        # a count that does not agree; the object left is still moved, or not the one replaced
+        ("The stapler goes to Sam. Then the notepad to Priya after those two.", None, OFFICE),
+        (
+            "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after "
+            "those three.",
+            None,
+            OFFICE,
+        ),
+        ("Tape to Mia, leave the tape where it is.", None, DEPOT),
+        (
+            "Tape to Mia. No, hang on, the scanner and the tape to Mia, leave the tape where it "
+            "is.",
+            None,
+            DEPOT,
+        ),
+        (
+            "Tape to Mia. No, hang on, the scanner to Mia, leave the gloves where they are.",
+            None,
+            DEPOT,
+        ),
+    ],
+)
+def test_said_again(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)

@@ -20013,7 +20013,8 @@ def _counted_those34t(text: str, lexicon: Lexicon) -> str:
     is 'the three boxes want to go …', 'Those three things that aren't the bottle, …' is 'The
     three things that aren't the bottle, …'. Only before a plural that names objects of the
     scene; the count is checked as for 'the three boxes' (a count the scene does not meet is
-    refused)."""
+    refused). 'Drop all three of the pens into the box' is 'Put the three pens into the box'
+    ('drop' before a place is a placement; 'drop all' alone drops the running tasks)."""
 
     def the(m: re.Match[str]) -> str:
         said = f"the {m['n']} {m['kind']}"
@@ -20026,7 +20027,14 @@ def _counted_those34t(text: str, lexicon: Lexicon) -> str:
         the,
         text,
     )
-    return _sub(r"\bthose (?P<n>two|three|four|five|six) (?P<kind>[a-z]+s)\b", the, out)
+    out = _sub(r"\bthose (?P<n>two|three|four|five|six) (?P<kind>[a-z]+s)\b", the, out)
+    m = _rx(
+        r"^drop all (?P<n>two|three|four|five|six) of the (?P<kind>[a-z]+s) (?=(?:into|onto|in|on) "
+        r"the [a-z]+)"
+    ).match(out)
+    if m is not None and _ids(f"the {m['kind']}", lexicon, "object"):
+        out = f"Put the {m['n']} {m['kind']} {out[m.end() :]}"
+    return out
 
 
 def _objects_said34t(text: str, lexicon: Lexicon) -> str:
@@ -20135,12 +20143,230 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _thing_cleft34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): 'the thing P has been after (all morning) is the X' is 'what P has been
+    after … is the X' (the grammar's cleft): only when the words after 'the thing' name one person
+    and a verb of wanting follows them ('the thing on the shelf is …' is left)."""
+
+    def what(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon):
+            return m.group(0)
+        return f"{m['lead']}{'W' if not m['lead'] else 'w'}hat {m['p']} {m['v']}"
+
+    return _sub(
+        r"(?P<lead>^|[.!]\s+|,\s*)the thing (?P<p>[a-z][\w ]*?) (?P<v>wants|needs|has been after|"
+        r"'s been after|is after|would like|has asked for|asked for)\b",
+        what,
+        text,
+    )
+
+
+def _both_want34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a header sentence 'They both want something.' ('Both of them want
+    something.') before the list that says what: a count check, taken off when the scene has two
+    people and the rest hands exactly one object to each of them (anything else is left and
+    refused: 'They both want something. Bottle to Person A.')."""
+    m = _rx(
+        r"^(?:they both|both of them|the two of them) (?:want|need|get) (?:something|a thing|one "
+        r"thing)\s*[.!:]\s+"
+    ).match(text)
+    if m is None or len(lexicon.scene.humans) != 2:
+        return text
+    rest = text[m.end() :]
+    said = _handovers33t(rest, lexicon)
+    if said is None or sorted(t.target for t in said) != sorted(h.id for h in lexicon.scene.humans):
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+def _asked_first34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a question whether a person wants an object, then the request that hands
+    'it' to 'her' ('Would Person B like the apple? Give it to her, yes?'): 'Give P the X' — only
+    when the question names one person and one object, the pronouns fit them, and nothing else
+    follows ('yes?', 'please' closing it)."""
+    m = _rx(
+        r"^(?:would|does|do) (?P<p>[a-z][\w ]*?) (?:like|want|need) (?P<obj>the [a-z]+(?: [a-z]+)?)"
+        r"\?\s+(?P<verb>give|hand|pass|take) (?:it|that) (?:over )?to (?P<pro>him|her)"
+        r"(?:,?\s*(?:yes|yeah|please|thanks))?\s*[.!?]?$"
+    ).match(text)
+    if (
+        m is None
+        or not _only_person(m["p"], lexicon)
+        or not _only(m["obj"], lexicon, "object")
+        or not _fits(next(iter(_ids(m["p"], lexicon, "human"))), m["pro"], lexicon)
+    ):
+        return text
+    return f"{m['verb'].capitalize()} {m['p']} {m['obj']}."
+
+
+def _sorted_first34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): 'Priority is P, she needs the X; …' is 'P needs the X; …' (who comes
+    first, said before what they need, when the pronoun may be P and the sentence opens with it);
+    'once she's sorted' (has what she needs) is 'once she's done'."""
+    out = _sub(r"\bonce (he|she|they)(?:'s| is|'re| are) sorted\b", r"once \1's done", text)
+    m = _rx(
+        r"^(?:the )?(?:first )?priority is (?P<p>[a-z][\w ]*?),\s*(?P<pro>he|she) (?P<v>needs|"
+        r"wants|would like)\b"
+    ).match(out)
+    if m is None or not _only_person(m["p"], lexicon):
+        return out
+    if not _fits(next(iter(_ids(m["p"], lexicon, "human"))), m["pro"], lexicon):
+        return out
+    return f"{m['p']} {m['v']}{out[m.end() :]}"
+
+
+def _only_one34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): 'Only one bottle between the lot of us, so that single bottle goes to P'
+    says the count of the scene: the opening is taken off when the scene has exactly one such
+    object ('that single bottle' is then 'the bottle'); where it has more, left and refused."""
+    m = _rx(
+        r"^only (?:one|the one|a single) (?P<kind>[a-z]+) (?:between|for|among) (?:the lot of us|"
+        r"all of us|us all|everyone|the lot),\s*(?:so\s+)?(?:that|the|this) (?:single |one |lone )?"
+        r"(?P<again>[a-z]+)\b"
+    ).match(text)
+    if m is None or m["kind"].lower() != m["again"].lower():
+        return text
+    if not _only(f"the {m['kind']}", lexicon, "object"):
+        return text
+    rest = text[m.end() :]
+    return f"The {m['kind']}{rest}"
+
+
+def _remark_places34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): where a placement goes, said again in words that name nothing: 'on the
+    bookshelf with the others' ('with the others' after a surface of the scene: where the others
+    are) and 'on the desk where the class can see the dig site' (a 'where' clause at the end that
+    names nothing of the scene and holds no word that would change what is asked, ``_KEEP_WORDS``);
+    "Don't mind me (up the ladder)," opening a request (an idiom: pay me no attention)."""
+    out = _sub(
+        r"^((?:[a-z]+[!.,]\s+)?)don't mind me(?: (?:up|on|in|at|under) the [a-z]+)?,\s*",
+        lambda m: m.group(1) if _names_nothing(m.group(0), lexicon) else m.group(0),
+        text,
+    )
+
+    def where(m: re.Match[str]) -> str:
+        if not _surface_only(m["s"], lexicon):
+            return m.group(0)
+        tail = m["tail"]
+        if tail.lower() == "with the others":
+            return m["head"]
+        said = tail[len("where ") :]
+        held = _KEEP_WORDS.search(said) or _LATER24.search(said)
+        if (
+            _names_nothing(said, lexicon)
+            and not held
+            and not _rx(r"\b(?:i|we|my|our)\b").search(said)
+        ):
+            return m["head"]
+        return m.group(0)
+
+    return _sub(
+        r"(?P<head>\b(?:on|onto|in|into) (?P<s>the [a-z]+)) (?P<tail>with the others|where [a-z ]+)"
+        r"(?=\s*[.!?]?$)",
+        where,
+        out,
+    )
+
+
+def _idioms34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): words that ask nothing, from closed lists: the breathing of a calm
+    ('Breathe in.', 'Breathe out.', 'Breathe in... and breathe out.' as a sentence or a clause
+    joined by 'and' to the request); a referee's 'Play on!' opening and ', advantage played'
+    closing; text-speak 'omg' and the address 'bestie' opening, 'slay' closing; 'the wee X' is 'the
+    X' ('wee': small, where the scene has one X); 'My client, Sam, requires …' ('my <word>,' before
+    a name names nothing of the scene), 'Priya, the manager, …' (her own role said after her
+    name), 'wishes to have' and 'requires' are 'would like' and 'needs'."""
+    out = _sub(
+        r"(?:^|(?<=[.!?]\s))breathe in(?:\s*(?:\.\.\.|…|,)?\s*(?:and )?breathe out)?"
+        r"\s*(?:[.!]|\.\.\.|…)\s*",
+        "",
+        text,
+    )
+    out = _sub(r"(?:^|(?<=[.!?]\s))breathe in,\s*and\s+(?=[a-z])", "", out)
+    out = _sub(r"(?<=[.!?])\s*breathe out\s*[.!]?$", "", out)
+    out = _sub(r"^play on!\s*", "", out)
+    out = _sub(r",\s*advantage played\s*([.!]?)$", r"\1", out)
+    out = _sub(r"^omg\s+(?:bestie\s+)?", "", out)
+    out = _sub(r",\s*slay\s*([.!]?)$", r"\1", out)
+
+    def wee(m: re.Match[str]) -> str:
+        return f"the {m.group(1)}" if _only(f"the {m.group(1)}", lexicon, "object") else m.group(0)
+
+    out = _sub(r"\bthe wee ([a-z]+)\b", wee, out)
+
+    def client(m: re.Match[str]) -> str:
+        if _names_nothing(m.group(1), lexicon) and _only_person(m.group(2), lexicon):
+            return m.group(2)
+        return m.group(0)
+
+    out = _sub(r"\bmy ([a-z]+), ([A-Z][a-z]+(?: [A-Z][a-z]+)?),(?= )", client, out)
+
+    def role(m: re.Match[str]) -> str:
+        if _only_person(m.group(1), lexicon) and _ids(m.group(1), lexicon, "human") == _ids(
+            m.group(2), lexicon, "human"
+        ):
+            return m.group(1)
+        return m.group(0)
+
+    out = _sub(r"\b([A-Z][a-z]+), the ([a-z]+),(?= )", role, out)
+    out = _sub(r"\bwishes to have\b", "would like", out)
+    return _sub(r"(?<=[a-z] )requires (?=the )", "needs ", out)
+
+
+def _after_those34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): 'Then the notepad to Priya after those two.' — 'after those two' (or
+    'after them', 'after both') closing a 'then' sentence says the order again: taken off when
+    the count agrees with the hand-overs and placements before it (a count that does not is
+    left and refused)."""
+    m = _rx(
+        r"(?<=[.!]\s)(?P<then>then [^.!?]+?) after (?:those|these|them|both)(?: (?P<n>two|three|"
+        r"four))?\s*(?P<end>[.!]?)$"
+    ).search(text)
+    if m is None:
+        return text
+    before = text[: m.start()].rstrip()
+    said = _handovers33t(before, lexicon)
+    want = _COUNTS[m["n"].lower()] if m["n"] else 2
+    if said is None or len(said) != want:
+        return text
+    return f"{text[: m.start()]}{m['then']}{m['end']}"
+
+
+def _left_as_was34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): after a correction that replaces an object, '…, leave the X where it
+    is' naming the object replaced says the correction again ('Tape to Mia. No, hang on, the
+    scanner to Mia, leave the tape where it is.'): taken off when what is before reads and does
+    not move the X (an X that is still moved is left and refused)."""
+    m = _rx(r",\s*(?:and )?leave (?P<obj>the [a-z]+) (?:where it is|be)\s*[.!]?$").search(text)
+    if m is None or not _only(m["obj"], lexicon, "object"):
+        return text
+    before = text[: m.start()]
+    if not _rx(r"\b(?:no|sorry|actually|wait)\b").search(before):
+        return text
+    (oid,) = _ids(m["obj"], lexicon, "object")
+    if oid not in _ids(before, lexicon, "object"):
+        return text
+    said = _tasks_of(before, lexicon)
+    if not said or oid in {obj for _, obj, _ in said}:
+        return text
+    return before + "."
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
     _reported_want34t,
     _closers34t,
     _frames34t,
+    _thing_cleft34t,
+    _both_want34t,
+    _asked_first34t,
+    _sorted_first34t,
+    _only_one34t,
+    _remark_places34t,
+    _idioms34t,
+    _after_those34t,
+    _left_as_was34t,
 )
 
 
