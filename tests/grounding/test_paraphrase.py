@@ -362,6 +362,71 @@ KNOWN_MISSES = frozenset(
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
+        # blind32 (tuned on in session 34): refusals left at its one measurement (docs/grounding.md)
+        "Morning, hope the night shift was kind to you; if it's no bother, the red mug up on the "
+        "shelf.",
+        'Bottle to Alice, please, and ke a leboga, as my Setswana nan used to say.',
+        'Be a star and pass Person A the cup, would you, no rush at all.',
+        "Okay so, basically, Person A's after the bottle, kind of urgently, thanks a bunch.",
+        "Dear me, sorry to ask, could Omar have the banana whenever you're free?",
+        'Lemon on the worktop, if you please, and thanks from the potman and me.',
+        'According to the hedgelayer, Person A needs the cup and the chips are meant for Person B.',
+        "What I'd like is the apple going over to Person B.",
+        "Person A would love the bottle if it's going spare.",
+        'The chips are wanted over by Person B, the bagpiper says.',
+        'Person A is gasping for that bottle after the jog.',
+        "Person B's throat is dry so she needs the bottle, and Person A has a craving for the "
+        "chips.",
+        'The landlady tells me Mr Novak wants the salt shaker.',
+        'For his fractions worksheet Noah is going to need the ruler.',
+        'As for the crisps, Alice can have them; the bottle is for Bob.',
+        'That bottle goes to Person A, and Person B can take the chips off your hands.',
+        'Person B was the one who asked for the chips, so trot them over to her.',
+        'Can you see the bottle on your left? Person A has asked for it, take it over.',
+        "That bottle, Person A's been on about it since the saxophone lesson, so let her have it.",
+        "The tongs are what Lena's been waiting on, so over to her with them.",
+        "I've been on the trumpet all morning and I'm whacked so could you just take the bottle to "
+        "Person A for me",
+        "Torch to Jess she's under the van and the screws on the bench after that",
+        "One for Person A, one for Person B, that's the apple and the cup; who gets which is up to "
+        "you.",
+        'Something to eat for Person A, apple or chips, pick whichever you like.',
+        'Split it up so Person A ends up with the bottle and Person B ends up with the cup.',
+        'Whichever of Person A and Person B is closer gets the bottle.',
+        'Any bottle you can lay hands on, give it to Person A.',
+        "There's a lone bottle in this cell and Person A is the one to have it.",
+        'Nobody goes without: Person A gets handed the bottle, Person B the bag of chips.',
+        'Either patient can have the magazine, they both like the puzzles.',
+        "Scissors to either of the students, Zoe or Noah, doesn't matter.",
+        'Both mugs need shifting up to the shelf, the red and the blue alike.',
+        "Hand everything we've got, both the items, over to Person A.",
+        'One bottle, one person: bottle to Person A.',
+        "Ava's building a tower so she needs the pair of blocks, red and green.",
+        "The locker's where the two spanners live, so in they go.",
+        'Carol asked for a mug, anything but the red one.',
+        "Leaving the crisps aside, Bob can take what's left.",
+        "Only Person B gets anything today, and it's the chips.",
+        'No fuss, nothing else, just the bottle for Person A.',
+        'Nothing fancy, no glass, just the bottle for Person A.',
+        'Person B, not Person A, is the one getting the chips.',
+        'Lena wants the plate, but not the one on the plate rack.',
+        "Zoe wants to read the book that isn't green.",
+        'Crisps on the shelf, actually no, give them to Bob.',
+        "Over to Person A with the cup, hmm, no, it's Person B who's meant to get it.",
+        'First I said chips, but Person A is actually after the apple, so give her that.',
+        "Chips for Person A, ugh, wrong one, she's been after the bottle all along.",
+        "Bottle to Person B, no, Person A, there's only her here.",
+        'The spoon in the sink, oh no, sorry, on the tray is better.',
+        'Drill to Jess, no, Kofi, final answer.',
+        'bottle to person a please, from the stableman',
+        'person a has the chips coming, and person b is owed the bottle from earlier',
+        'Person A fancies the xpple after her walk.',
+        'Erson A has been at the bandstand all day and could use the bottle.',
+        "Sam's asked for the stalper to do the handouts.",
+        'Mind if Person A grabs the chips off you?',
+        'Could you see your way to getting the chips to Person A?',
+        'What about giving Person B the bottle, would that work?',
+        'Can you hand Person A the bottle, then?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -372,8 +437,9 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
-        # blind27 (tuned on in session 29)
-        # blind31 (tuned on in session 33)
+        # blind32 (tuned on in session 34)
+        'Give it to Person B, the one by the window.',
+        'just give them the bottle, the one who asked',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -431,9 +497,10 @@ KNOWN_UNCLEAR = frozenset(
 # KNOWN_MISSES; "blind31" written in session 32 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 32, its one wrong reading fixed
 # and tuned on in session 33: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
-# "blind32" written in session 33 by another engineer and committed alone, measured once at the
-# end of session 33: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind32"})
+# "blind32" written in session 33 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 33 (0 wrong), tuned on in session 34: asserted now, the
+# rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

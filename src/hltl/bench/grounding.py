@@ -115,7 +115,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # alone, never opened by the engineers who change the grounder before its one measurement at the
 # end of session 32; its one wrong reading fixed and tuned on in session 33), blind32 (written in
 # session 33 by another engineer and committed alone, never opened by the engineers who change the
-# grounder before its one measurement at the end of session 33; tests do not assert it).
+# grounder before its one measurement at the end of session 33; tuned on in session 34).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
