@@ -131,7 +131,6 @@ KNOWN_MISSES = frozenset(
         "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
-        "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
         # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
