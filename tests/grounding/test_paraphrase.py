@@ -155,7 +155,6 @@ KNOWN_MISSES = frozenset(
         "The four treasures, all of them, unto Person A.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "We reported the cup was going to Person A. Correction: it's the apple.",
-        "good evening, tonights order chips for person b plus the cup for person a",
         "The crsps, Bob want one lah.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",
@@ -187,7 +186,6 @@ KNOWN_MISSES = frozenset(
         "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
         " chips, he wants those.",
         "The chips are wanted by Person A and the bottle by Person B.",
-        "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
         "Jess needs some screws, give her the tin.",
@@ -209,9 +207,6 @@ KNOWN_MISSES = frozenset(
         "patient.",
         "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because she "
         "asked earlier and she's been very patient.",
-        "Give Jess the small spanner quick she's under the van and after that the hammer to Kofi "
-        "he's waiting.",
-        "For reading group, lay out both books on the desk, the two of them.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
@@ -302,7 +297,6 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
         "Give Person B everything you've got there but not the apple, she hates apples.",
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',

@@ -408,3 +408,51 @@ def test_idioms(text: str, want: str | None, scene: Scene) -> None:
 )
 def test_said_again(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
+
+
+# -- telegraphed requests; a state run on with no commas; what the request is for ---------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Right. That hammer. Back on the workbench. Ta.", "hammer@bench", WORKSHOP),
+        (
+            "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, "
+            "köszi.",
+            "chips>A & bottle>B",
+            DUO,
+        ),
+        (
+            "good evening, tonights order chips for person b plus the cup for person a",
+            "chips>B & cup>A",
+            F42,
+        ),
+        (
+            "Give Jess the small spanner quick she's under the van and after that the hammer to "
+            "Kofi he's waiting.",
+            "spanner_small>B ; hammer>A",
+            WORKSHOP,
+        ),
+        (
+            "For reading group, lay out both books on the desk, the two of them.",
+            "book_red@desk & book_green@desk",
+            CLASSROOM,
+        ),
+        # a person after the object's sentence; a person not in the scene; a state naming an
+        # object; a person, a time or a count after 'for'
+        ("Right. That hammer. Back on Kofi. Ta.", None, WORKSHOP),
+        ("Chips to Person A. Bottle, that one is Person C's.", None, DUO),
+        (
+            "Give Jess the small spanner quick she's under the hammer and after that the drill to "
+            "Kofi.",
+            None,
+            WORKSHOP,
+        ),
+        ("For Zoe, lay out both books on the desk.", None, CLASSROOM),
+        ("For later, lay out both books on the desk.", None, CLASSROOM),
+        ("For both, lay out both books on the desk.", None, CLASSROOM),
+    ],
+)
+def test_telegraphed(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)

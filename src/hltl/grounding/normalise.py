@@ -20352,6 +20352,79 @@ def _left_as_was34t(text: str, lexicon: Lexicon) -> str:
     return before + "."
 
 
+def _telegraph34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): telegraphed requests. An object said as a sentence and the surface it
+    goes on as the next ('That hammer. Back on the workbench.') are one ('That hammer back on the
+    workbench.'; session 30's `_over_to30` joins 'The bottle. Over to Person A.'), when the first
+    names objects alone and the second one surface; 'Bottle, that one is Person B's.' (the object,
+    then a pronoun for it) is 'Bottle, Person B's.'; an order header 'tonight's order' ('good
+    evening, tonights order chips for person b …') is taken off."""
+
+    def joined(m: re.Match[str]) -> str:
+        if _objects_only(m["what"], lexicon) and _surface_only(m["where"], lexicon):
+            return f"{m['lead']}{m['what']} {m['dir'] or ''}{m['prep']} {m['where']}"
+        return m.group(0)
+
+    out = _sub(
+        r"(?P<lead>(?:^|(?<=[.!?;])\s+))(?P<what>(?:the|that|this) [a-z][a-z ]*?)\.\s+"
+        r"(?P<dir>(?:back|up|down) )?(?P<prep>on|onto|in|into) (?P<where>the [a-z]+(?: [a-z]+)?)"
+        r"(?=\s*[.!?]|$)",
+        joined,
+        text,
+    )
+
+    def owned(m: re.Match[str]) -> str:
+        if _objects_only(m["what"], lexicon) and _only_person(m["p"], lexicon):
+            return f"{m['what']}, {m['p']}'s"
+        return m.group(0)
+
+    out = _sub(
+        r"(?<![a-z] )(?P<what>\b[a-z]+(?: [a-z]+)?), (?:that one|this one|that|it) (?:is|'s) "
+        r"(?P<p>[a-z][\w ]*?)'s(?=\s*[.!,]|$)",
+        owned,
+        out,
+    )
+    return _sub(
+        r"(^|,\s*|(?<=[.!])\s+)(?:tonight'?s|today'?s|this evening'?s|this morning'?s) order:?\s+",
+        r"\1",
+        out,
+    )
+
+
+def _run_on_state34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a remark on the recipient's state run on with no commas ('Give Jess the
+    small spanner quick she's under the van and after that the hammer to Kofi he's waiting'): set
+    off by commas (', she's under the van,') so that session 21's `_reasons21` judges it — only
+    when it names nothing of the scene, right after a name or 'quick', and the whole then reads."""
+
+    def comma(m: re.Match[str]) -> str:
+        if not _names_nothing(m["state"], lexicon) or _REASON_HELD21.search(m["state"]):
+            return m.group(0)
+        return f"{m['before']}, {m['state']},"
+
+    out = _sub(
+        r"(?P<before>\b[a-z]+) (?P<state>(?:he|she)'s (?:under|waiting|busy|up|out|on|in)\b"
+        r"[a-z ]*?)(?= and (?:after that|then)\b|\s*[.!]?$)",
+        comma,
+        text,
+    ).rstrip(",")
+    return out if out != text and _reading(out, lexicon) is not None else text
+
+
+def _for_said34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): what the request is for, opening it without a determiner ('For reading
+    group, lay out both books on the desk, …'): taken off as session 30's `_for_opener30` takes
+    off 'For the geography lesson', when the words ask nothing and name nothing of the scene
+    (`_asks_nothing29`: 'For Person B, …' is a recipient and stays) and a verb follows."""
+    m = _rx(r"^for ([a-z]+(?: [a-z]+)?),\s+(?=(?:lay|put|place|set|give|hand|bring|take)\b)").match(
+        text
+    )
+    if m is None or not _asks_nothing29(m.group(1), lexicon) or _KEEP_WORDS.search(m.group(1)):
+        return text
+    rest = text[m.end() :]
+    return rest[:1].upper() + rest[1:]
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20367,6 +20440,9 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _idioms34t,
     _after_those34t,
     _left_as_was34t,
+    _telegraph34t,
+    _run_on_state34t,
+    _for_said34t,
 )
 
 
