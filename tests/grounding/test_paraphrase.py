@@ -202,11 +202,8 @@ KNOWN_MISSES = frozenset(
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
-        "Tom's after the barcode scanner, his own one has died on him.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
-        "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because she "
-        "asked earlier and she's been very patient.",
         "Whichever cup isn't the green one, that's Omar's, hand it to him.",
         "The guest on table five, Mr Novak, gets the white plate, not the blue.",
         "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
@@ -214,7 +211,6 @@ KNOWN_MISSES = frozenset(
         "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
         "The cup and then the apple to Person B, or rather the apple first and then the cup.",
         "Shelf for the bottle, please, or no, better still, straight to Alice.",
-        "shelf for the chips, bob for the bottle, ta",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",

@@ -456,3 +456,32 @@ def test_said_again(text: str, want: str | None, scene: Scene) -> None:
 )
 def test_telegraphed(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
+
+
+# -- reasons that ask nothing; a list said target first -----------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because "
+            "she asked earlier and she's been very patient.",
+            "blanket_blue>B ; jug>C",
+            WARD,
+        ),
+        ("Tom's after the barcode scanner, his own one has died on him.", "scanner>B", DEPOT),
+        ("Crisps straight into Alice's hands, she's on after the interval.", "chips>A", TWO),
+        ("shelf for the chips, bob for the bottle, ta", "chips@shelf & bottle>B", FIG1),
+        # a reason naming an object, or a pronoun that cannot be the person; an object of the
+        # scene dying; a person for a person, a surface for a person; two mugs
+        ("The jug to Mrs Khan because she asked for the magazine.", None, WARD),
+        ("The jug to Mrs Khan because he asked earlier.", None, WARD),
+        ("Tom's after the barcode scanner, his own box has died on him.", None, DEPOT),
+        ("shelf for the chips, alice for bob", None, FIG1),
+        ("shelf for bob, bottle for the chips", None, FIG1),
+        ("Alice for the cup, Bob for the mug.", None, CELL),
+    ],
+)
+def test_reasons_and_targets(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)

@@ -20425,6 +20425,66 @@ def _for_said34t(text: str, lexicon: Lexicon) -> str:
     return rest[:1].upper() + rest[1:]
 
 
+def _reasons_said34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): reasons that ask nothing. '… because she asked earlier and she's been
+    very patient' closing the request: a 'because' of a pronoun's clauses joined by 'and', taken
+    off whole when it names nothing of the scene and holds no word of session 21's
+    `_REASON_HELD21` ('patient' after 'been' / 'is' is the adjective, not the ward's role noun);
+    '…, his own one has died on him' (a thing of his own, so not one of the
+    scene's: 'has died', 'is broken', 'has packed up', from a closed list); 'straight into
+    Alice's hands' is 'to Alice'."""
+
+    def why(m: re.Match[str]) -> str:
+        # 'she's been very patient': the adjective, not the ward's role noun 'patient'
+        said = _sub(r"\b(been|is|'s|was) (?:very |so |really |ever so )?patient\b", r"\1", m["why"])
+        if _names_nothing(said, lexicon) and not _REASON_HELD21.search(said):
+            return ""
+        return m.group(0)
+
+    out = _sub(
+        r" because (?P<why>(?:he|she|they)\b[^,.;!?]*?)(?=\s*[.!]?$)",
+        why,
+        text,
+    )
+    out = _sub(
+        r",\s*(?:his|her|their) own one (?:has died|died|is broken|'s broken|has broken|broke|has "
+        r"packed up|packed up|has given up)(?: on (?:him|her|them))?(?=\s*[.!]?$)",
+        "",
+        out,
+    )
+
+    def hands(m: re.Match[str]) -> str:
+        return f"to {m['p']}" if _only_person(m["p"], lexicon) else m.group(0)
+
+    return _sub(r"\b(?:straight |right )?into (?P<p>[a-z][\w ]*?)'s hands\b", hands, out)
+
+
+def _target_for34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a list of where things go said target first ('shelf for the chips, bob
+    for the bottle, ta'): a clause that is a surface or a person, 'for', and one object of the
+    scene is 'the chips on the shelf' / 'the bottle for Bob' — only when the words before 'for'
+    name one surface or one person alone and those after it one object alone."""
+
+    def turned(m: re.Match[str]) -> str:
+        where, obj = m["where"], m["obj"]
+        if not _only_kind(obj, lexicon, "object"):
+            return m.group(0)
+        the = obj if obj.lower().startswith("the ") else f"the {obj}"
+        if _surface_only(where, lexicon):
+            place = where if where.lower().startswith("the ") else f"the {where}"
+            return f"{m['lead']}{the} on {place}"
+        if _only_person(where, lexicon):
+            return f"{m['lead']}{the} for {where}"
+        return m.group(0)
+
+    return _sub(
+        r"(?P<lead>^|,\s*)(?P<where>(?:the )?[a-z]+(?: [a-z]+)?) for (?P<obj>(?:the )?[a-z]+)"
+        r"(?=\s*(?:,|[.!]?$))",
+        turned,
+        text,
+    )
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20443,6 +20503,8 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _telegraph34t,
     _run_on_state34t,
     _for_said34t,
+    _reasons_said34t,
+    _target_for34t,
 )
 
 
