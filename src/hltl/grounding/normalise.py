@@ -20121,7 +20121,8 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
     like that you give …' is 'I would like you to give …'; '(do|d') you reckon you could …' is
     'could you …'; 'Over to P with the X' is 'the X over to P'; 'For P, (the) X, please give.'
     (the verb said last) is 'please give P the X'; '…, then the crisps, same place' after a
-    hand-over or placement is '…, then the crisps too' (the same target)."""
+    hand-over or placement is '…, then the crisps too' (the same target: only where what is
+    before it has one target; two are left and refused, as session 26 decided)."""
     out = _sub(r"\bi would like (?:it )?that you (?=[a-z]+ )", "I would like you to ", text)
     out = _sub(
         r"\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\b", r"\1 you", out
@@ -20135,10 +20136,18 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
     if m is not None and _only_person(m["p"], lexicon) and _only_kind(m["obj"], lexicon, "object"):
         obj = m["obj"] if m["obj"].lower().startswith("the ") else f"the {m['obj']}"
         out = f"Please give {m['p']} {obj}{m['end']}{out[m.end() :]}"
+
+    def same(m: re.Match[str]) -> str:
+        # one target before it, or 'same place' could be either (session 26's near form)
+        said = _tasks_of(m.string[: m.start()].rstrip(" ,"), lexicon)
+        if not said or len({target for _, _, target in said}) != 1:
+            return m.group(0)
+        return f"{m.group(1)} too"
+
     return _sub(
         r"((?:(?<=[.!]\s)then|,\s*(?:and )?then) (?:the )?[a-z]+),\s*(?:the )?same (?:place|spot)"
         r"(?=\s*[.!]?$)",
-        r"\1 too",
+        same,
         out,
     )
 
