@@ -199,6 +199,7 @@ def test_closers(text: str, want: str | None, scene: Scene) -> None:
         ("For Person B, bottle, please take.", None, DUO),
         ("For the bottle, Person B, please give.", None, DUO),
         ("The bottle goes to Bob first. Then the crisps, same time.", None, TWO),
+        ("Give Bob the bottle first. Then the crisps, same place.", None, TWO),
         # two targets before it: which one is 'same place'? (session 26's near form)
         (
             "Put the jug on the trolley and the pills on the bedside table, then the thermometer, "

@@ -20122,7 +20122,8 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
     'could you …'; 'Over to P with the X' is 'the X over to P'; 'For P, (the) X, please give.'
     (the verb said last) is 'please give P the X'; '…, then the crisps, same place' after a
     hand-over or placement is '…, then the crisps too' (the same target: only where what is
-    before it has one target; two are left and refused, as session 26 decided)."""
+    before it has one target, said as where it goes, 'to Bob' / 'on the shelf'; two targets, or
+    'Give Ruth the jug', are left and refused, as session 26 decided)."""
     out = _sub(r"\bi would like (?:it )?that you (?=[a-z]+ )", "I would like you to ", text)
     out = _sub(
         r"\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\b", r"\1 you", out
@@ -20138,9 +20139,14 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
         out = f"Please give {m['p']} {obj}{m['end']}{out[m.end() :]}"
 
     def same(m: re.Match[str]) -> str:
-        # one target before it, or 'same place' could be either (session 26's near form)
-        said = _tasks_of(m.string[: m.start()].rstrip(" ,"), lexicon)
+        # one target before it, or 'same place' could be either; and said as where it went
+        # ('to Bob', 'on the shelf'): 'Give Ruth the jug, then …, same place' names no place
+        # (session 26's near forms)
+        before = m.string[: m.start()].rstrip(" ,")
+        said = _tasks_of(before, lexicon)
         if not said or len({target for _, _, target in said}) != 1:
+            return m.group(0)
+        if not _rx(r"\b(?:to|onto|into|on|in) (?:the )?[a-z]").search(before):
             return m.group(0)
         return f"{m.group(1)} too"
 
