@@ -50,7 +50,16 @@ chips"): that task of both objects, or refused. A tenth family (session 33), def
 after an entry or before it that hand part of the decision to someone else or leave it open
 ("… Then whatever the deckhand tells you.", "…, and see what Sam says.", "Check with Sam first.
 …"): refused, the plan would be incomplete; and a sentence that only closes the request ("… Then
-you're done.", "… That's all for now."): as the entry, or refused.
+you're done.", "… That's all for now."): as the entry, or refused; and (session 34) a choice left
+up to the robot ("…, it's up to you.", "… Also, give Sam the cup or the pen, it's up to you
+which."): the entry's choice, or that choice added. An eleventh family (session 34), clefts: an
+entry's one handover said as a pseudo-cleft or an it-cleft ("It's Bob who gets the chips.", "The
+chips are what Bob's after.", "Bob is the one to have the chips."), with another person set
+against the one named ("It's Bob, not Alice, who gets the chips."): that handover, or refused;
+negated ("It's not Bob who gets the chips.": no recipient) or said of a person the scene does not
+have: refused; with a second object: both handovers; a cleft after an entry adding a handover: the
+entry and that handover; and a placement's surface in a cleft ("The shelf is where the apple
+goes."): that placement, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -454,7 +463,75 @@ SETTLED = (  # a near tail that only closes the request: the entry
     " That's it, thanks.",
     " After that, you're free.",
 )
-DEFERRAL_FORMS = ("after", "joined", "before", "settled")
+# (session 34) "… is up to you": the robot is "you", so a choice left up to it is a free choice
+# and no deferral (blind32's "One for Person A, one for Person B, …; who gets which is up to you."
+# was refused by the first deferral rule): an entry with a choice in it, with a clause or sentence
+# leaving the choice to the robot (YOURS_JOINED, YOURS_AFTER): the entry; and, after a grounded
+# entry with no choice or order in it, a sentence adding a choice of two objects for a person left
+# to the robot (YOURS_ADDED): the entry and that choice.
+YOURS_JOINED = (", it's up to you.", ", up to you.", ", your choice.", ", whichever you like.")
+YOURS_AFTER = (
+    " It's up to you which.",
+    " The choice is up to you.",
+    " Up to you.",
+    " Which one is up to you.",
+)
+YOURS_ADDED = (
+    " Also, give {p} the {o} or the {x}, it's up to you which.",
+    " And {p} gets the {o} or the {x}, whichever you like.",
+)
+DEFERRAL_FORMS = ("after", "joined", "before", "settled", "yours", "yours added")
+# clefts (session 34; blind32 had "What Person A wants is the bottle"-like wants and clefts the
+# ten families did not say): an entry's one handover of a one-of-a-kind object to a person said as
+# a pseudo-cleft or an it-cleft (CLEFTS: "It's Bob who gets the chips.", "The chips are what Bob's
+# after."): that handover, or refused; with another person set against the one named inside or
+# after it (CONTRASTS: "It's Bob, not Alice, who gets the chips."): the same handover; negated
+# (NOT_CLEFTS: "It's not Bob who gets the chips."): refused, it names no recipient (in a scene of
+# two, a careful reader would not guess the other one either); said of a person the scene does not
+# have (ABSENT, by CLEFTS: "It's Zoe who gets the chips."): refused; with a second one-of-a-kind
+# object (SECOND: "It's Bob who gets the chips and the apple."): both handovers, never the entry's
+# one alone; and a cleft after a grounded entry adding a handover of an object it does not name
+# (the entry's reading and that handover, as a tail's, see ``kept``). For an entry of one placement
+# of a one-of-a-kind object: the surface said in a cleft (PLACE_CLEFTS: "The shelf is where the
+# apple goes."): that placement, or refused. {be} agrees with the object ("The chips are …").
+CLEFTS = (
+    "What {p} wants is the {o}.",
+    "It's {p} who gets the {o}.",
+    "The {o} {be} what {p}'s after.",
+    "{P} is the one to have the {o}.",
+    "{P} is the one who gets the {o}.",
+    "The one who gets the {o} is {p}.",
+    "It's {p} that the {o} {be} for.",
+    "The {o} {be} what {p} wants.",
+    "It's {p} the {o} {go} to.",
+)
+CONTRASTS = (  # {q} another person of the scene: the handover to {p}
+    "It's {p}, not {q}, who gets the {o}.",
+    "It's {p} who gets the {o}, not {q}.",
+    "{P}, not {q}, is the one to have the {o}.",
+    "The {o} {be} for {p}, not for {q}.",
+)
+NOT_CLEFTS = (  # refused: no recipient named
+    "It's not {p} who gets the {o}.",
+    "It isn't {p} who wants the {o}.",
+    "{P} isn't the one to have the {o}.",
+    "What {p} wants isn't the {o}.",
+    "It's not {p} that the {o} {be} for.",
+)
+ABSENT = ("Zoe", "Mr Okafor", "Priyanka", "Dr Hale", "Nikos", "Grandma Rose")
+SECOND = (  # the handover of both objects
+    "What {p} wants is the {o} and the {x}.",
+    "It's {p} who gets the {o} and the {x}.",
+    "The {o} and the {x} are what {p}'s after.",
+    "{P} is the one to have the {o} and the {x}.",
+)
+CLEFT_TAILS = (  # after a grounded entry: that handover too
+    " And it's {p} who gets the {o}.",
+    " Also, what {p} wants is the {o}.",
+    " The {o} {be} what {p}'s after, too.",
+)
+PLACE_CLEFTS = ("The {s} is where the {o} goes.", "Where the {o} goes is the {s}.")
+CLEFT_FORMS = ("cleft", "contrast", "not", "absent", "second", "cleft tail", "place")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -466,6 +543,7 @@ Family = Literal[
     "frames",
     "repairs",
     "deferrals",
+    "clefts",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -499,7 +577,7 @@ def _unique_objects(scene: Scene) -> list[str]:
     return [o.id for o in scene.objects if cats.count(o.category) == 1]
 
 
-def _named(text: str, scene: Scene, kind: Literal["object", "human"]) -> set[str]:
+def _named(text: str, scene: Scene, kind: Literal["object", "human", "surface"]) -> set[str]:
     try:
         items = lex(text, Lexicon.of(scene))
     except GroundingError:
@@ -1275,6 +1353,108 @@ def deferrals(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
         body = text if before.endswith(". ") else _after(", ", text, scene)[2:]
         yield variant(before + body, "before")
     yield variant(text + rng.choice(SETTLED), "settled")
+    if entry.want is not None and _has_choice(entry.want):
+        if text.endswith("?") or rng.random() < 0.5:
+            said = text + rng.choice(YOURS_AFTER)
+        else:
+            said = text.rstrip(".!") + rng.choice(YOURS_JOINED)
+        yield Variant(part, entry.scene, said, entry.want, "same", "deferrals", (), "yours")
+    elif entry.want is not None and len(free) >= 2 and not _has_order(entry.want):
+        oid, xid = rng.sample(free, 2)
+        hid = rng.choice(scene.humans).id
+        choice = Group("or", (Task("deliver", oid, hid), Task("deliver", xid, hid)))
+        p = _name(scene, hid)
+        said = text + rng.choice(YOURS_ADDED).format(p=p, o=_name(scene, oid), x=_name(scene, xid))
+        want = Group("and", (entry.want, choice))
+        yield Variant(part, entry.scene, said, want, "same", "deferrals", (), "yours added")
+
+
+def _has_order(node: Node) -> bool:
+    return isinstance(node, Group) and (
+        node.op == "seq" or any(_has_order(c) for c in node.children)
+    )
+
+
+def _agreed(o: str) -> dict[str, str]:
+    """The verb forms that agree with the object named ``o`` ("the chips are", "the cup is")."""
+    plural = o.endswith("s") and not o.endswith("ss")
+    return {"be": "are" if plural else "is", "go": "go" if plural else "goes"}
+
+
+def _surface_name(scene: Scene, sid: str) -> str | None:
+    """A name of the surface ``sid`` that names it alone after "the", or None."""
+    surface = next(s for s in scene.surfaces if s.id == sid)
+    for name in (*surface.aliases, sid.replace("_", " ")):
+        if _named(f"the {name}", scene, "surface") == {sid}:
+            return name
+    return None
+
+
+def clefts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The cleft variants of one entry. For a grounded entry of one handover of a one-of-a-kind
+    object to a person: that handover said in a cleft (CLEFTS: the handover), with another person
+    set against it (CONTRASTS: the same), negated (NOT_CLEFTS: refused), of a person the scene does
+    not have (ABSENT in a cleft: refused) and with a second one-of-a-kind object (SECOND: both
+    handovers). For a grounded entry: a cleft after it adding a handover of an object it does not
+    name (CLEFT_TAILS: the entry's reading and that handover). For an entry of one placement of a
+    one-of-a-kind object: the surface in a cleft (PLACE_CLEFTS: the placement). Only forms naming
+    nothing of the scene but their objects, people and surface are said."""
+    text, free = _sentence_and_free(entry, scene)
+    want = entry.want
+    unique = _unique_objects(scene)
+
+    def fits(forms: tuple[str, ...]) -> list[str]:
+        return [f for f in forms if _names_nothing(re.sub(r"\{\w+\}", "", f), scene)]
+
+    def say(form: str, oid: str, p: str, **more: str) -> str:
+        o = _name(scene, oid)
+        return form.format(o=o, p=p, P=p[:1].upper() + p[1:], **_agreed(o), **more)
+
+    def variant(said: str, to: Node | None, form: str, added: Task | None = None) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, said, to, must, "clefts", (), form, added)
+
+    if (
+        isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and want.obj in unique
+    ):
+        p = _name(scene, want.target)
+        cleft = fits(CLEFTS)
+        if cleft:
+            yield variant(say(rng.choice(cleft), want.obj, p), want, "cleft")
+        others = [
+            q for h in scene.humans if h.id != want.target and (q := _proper_name(scene, h.id))
+        ]
+        contrast = fits(CONTRASTS)
+        if others and contrast:
+            said = say(rng.choice(contrast), want.obj, p, q=rng.choice(others))
+            yield variant(said, want, "contrast")
+        negated = fits(NOT_CLEFTS)
+        if negated:
+            yield variant(say(rng.choice(negated), want.obj, p), None, "not")
+        absent = [z for z in ABSENT if _names_nothing(z, scene)]
+        if cleft and absent:
+            yield variant(say(rng.choice(cleft), want.obj, rng.choice(absent)), None, "absent")
+        second = fits(SECOND)
+        if free and second:
+            xid = rng.choice(free)
+            said = say(rng.choice(second), want.obj, p, x=_name(scene, xid))
+            both = Group("and", (want, Task("deliver", xid, want.target)))
+            yield variant(said, both, "second")
+    tail = fits(CLEFT_TAILS)
+    if want is not None and free and tail:
+        oid, hid = rng.choice(free), rng.choice(scene.humans).id
+        added = Task("deliver", oid, hid)
+        said = text + say(rng.choice(tail), oid, _name(scene, hid))
+        yield variant(said, Group("and", (want, added)), "cleft tail", added)
+    if isinstance(want, Task) and want.kind == "place" and want.obj in unique:
+        s = _surface_name(scene, want.target)
+        place = fits(PLACE_CLEFTS)
+        if s and place:
+            o = _name(scene, want.obj)
+            yield variant(rng.choice(place).format(o=o, s=s), want, "place")
 
 
 def _one_id(name: str, scene: Scene) -> str:
@@ -1351,6 +1531,7 @@ def generated(
     rng_frames = random.Random(f"frames:{seed}")
     rng_repairs = random.Random(f"repairs:{seed}")
     rng_defer = random.Random(f"deferrals:{seed}")
+    rng_clefts = random.Random(f"clefts:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1386,6 +1567,9 @@ def generated(
                     yield v, scene
             if "deferrals" in families:
                 for v in deferrals(part, entry, scene, rng_defer):
+                    yield v, scene
+            if "clefts" in families:
+                for v in clefts(part, entry, scene, rng_clefts):
                     yield v, scene
 
 

@@ -18,7 +18,11 @@ entry), the repair family of session 32 (an entry's object or person said after 
 filler or a word of repair, or a name begun and said again: the entry; an object left undecided
 between two: refused; another object added with "and": that task of both), the deferral family
 of session 33 (words after or before an entry handing on what comes next: refused; a sentence only
-closing the request: the entry), and the wrappers and take-backs of a seed unchanged by them."""
+closing the request: the entry; a choice left up to the robot: the choice), the cleft family of
+session 34 (an entry's one handover in a cleft, or with another person set against it: that
+handover; negated or of a person the scene does not have: refused; with a second object: both; a
+cleft after an entry: the entry and that handover; a placement's surface in a cleft: the
+placement), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -202,7 +206,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals')" in err
+    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -1259,8 +1263,8 @@ def _said_with(
 def test_an_entry_gets_every_deferral(seed: int) -> None:
     entry = _entry("cell", "Give Person B the apple, please.", "apple>B")
     made = _deferrals(entry, CELL, seed)
-    assert [v.form for v in made] == list(fuzz.DEFERRAL_FORMS)
-    after, joined, before, settled = made
+    assert [v.form for v in made] == [f for f in fuzz.DEFERRAL_FORMS if f != "yours"]
+    after, joined, before, settled, added = made
     for v in made:
         assert v.family == "deferrals" and (v.must == "refuse") is (v.want is None)
     # handing on what comes next, after it, joined to it or before it: refused
@@ -1272,6 +1276,16 @@ def test_an_entry_gets_every_deferral(seed: int) -> None:
     # closing the request: the entry
     assert settled.want == entry.want
     _said_with(fuzz.SETTLED, settled.text, entry.text, "end", CELL)
+    # a choice of two objects for a person left to the robot after it: the entry and that choice
+    assert added.text.startswith(entry.text + " ") and added.must == "same"
+    said = _filled(fuzz.YOURS_ADDED, added.text[len(entry.text) :])
+    hid, oid, xid = (
+        _one_person(said["p"], CELL),
+        *map(_one_object, (said["o"], said["x"]), [CELL] * 2),
+    )
+    assert len({oid, xid, "apple"}) == 3 and {oid, xid} <= set(fuzz._unique_objects(CELL))
+    choice = Group("or", (Task("deliver", oid, hid), Task("deliver", xid, hid)))
+    assert added.want == Group("and", (entry.want, choice))
 
 
 def test_a_deferral_says_a_person_a_role_and_an_object_the_entry_does_not_name() -> None:
@@ -1294,22 +1308,46 @@ def test_a_deferral_says_a_person_a_role_and_an_object_the_entry_does_not_name()
 def test_after_a_question_nothing_is_joined_and_before_a_take_back_nothing_goes(seed: int) -> None:
     question = _entry("cell", "Could you give Carol the bottle?", "bottle>C")
     made = _deferrals(question, CELL, seed)
-    assert [v.form for v in made] == ["after", "before", "settled"]
+    assert [v.form for v in made] == ["after", "before", "settled", "yours added"]
     assert made[0].text.startswith("Could you give Carol the bottle? ")
     assert made[1].text.endswith(
         ("could you give Carol the bottle?", ". Could you give Carol the bottle?")
     )
     back = _entry("cell", "Actually, give Carol the bottle.", "bottle>C")
-    assert [v.form for v in _deferrals(back, CELL, seed)] == ["after", "joined", "settled"]
+    made = _deferrals(back, CELL, seed)
+    assert [v.form for v in made] == ["after", "joined", "settled", "yours added"]
 
 
 def test_a_refused_entry_stays_refused_and_a_settled_one_keeps_its_readings() -> None:
     entry = Entry("cell", "Give Bob the mug", None, ("mug_red", "mug_blue"))
     made = _deferrals(entry, CELL, 3)
-    assert [v.form for v in made] == list(fuzz.DEFERRAL_FORMS)
+    assert [v.form for v in made] == ["after", "joined", "before", "settled"]
     assert all(v.must == "refuse" and v.want is None for v in made)
     assert made[-1].readings == entry.readings and made[-1].text.startswith("Give Bob the mug. ")
     assert fuzz.verdict(made[-1], CELL) in ("refused", "unclear")
+
+
+def test_a_choice_is_left_up_to_the_robot_after_it_or_joined_to_it() -> None:
+    # (session 34) "up to you": the robot's own choice, not a deferral (blind32's "…; who gets
+    # which is up to you.")
+    entry = _entry("cell", "Give Bob the cup or the apple.", "cup>B | apple>B")
+    question = _entry("cell", "Could Carol have a mug?", "mug_red>C | mug_blue>C")
+    ends: set[str] = set()
+    for seed in range(40):
+        *_, yours = _deferrals(entry, CELL, seed)
+        assert yours.form == "yours" and yours.want == entry.want and yours.must == "same"
+        end = yours.text[len("Give Bob the cup or the apple") :]
+        assert end in fuzz.YOURS_JOINED or end[1:] in fuzz.YOURS_AFTER
+        ends.add(end)
+        *_, yours = _deferrals(question, CELL, seed)
+        assert yours.form == "yours" and yours.text[len(question.text) :] in fuzz.YOURS_AFTER
+    assert ends & set(fuzz.YOURS_JOINED) and ends - set(fuzz.YOURS_JOINED)
+
+
+def test_no_choice_is_added_after_an_order() -> None:
+    entry = _entry("cell", "Give Bob the cup, then Alice the apple.", "cup>B ; apple>A")
+    for seed in range(20):
+        assert "yours added" not in {v.form for v in _deferrals(entry, CELL, seed)}
 
 
 def test_a_role_naming_a_thing_of_the_scene_is_left_out() -> None:
@@ -1330,6 +1368,8 @@ def test_a_role_naming_a_thing_of_the_scene_is_left_out() -> None:
         ("Give Bob the mug.", None, "after", "refused"),
         ("Give Bob the cup.", "cup>B", "settled", "exact"),
         ("Give Bob the cup.", "cup>A", "settled", "wrong"),
+        ("Give Bob the cup or the apple, it's up to you.", "cup>B | apple>B", "yours", "exact"),
+        ("Give Bob the cup or the apple, it's up to you.", "cup>B", "yours", "wrong"),
     ],
 )
 def test_a_deferral_is_judged_by_what_the_grounder_reads(
@@ -1345,6 +1385,8 @@ def test_over_the_corpus_each_deferral_variant_names_what_it_says() -> None:
         "joined": (fuzz.DEFERRED_JOINED, "end"),
         "before": (fuzz.DEFERRED_BEFORE, "start"),
         "settled": (fuzz.SETTLED, "end"),
+        "yours": (fuzz.YOURS_AFTER, "end"),
+        "yours added": (fuzz.YOURS_ADDED, "end"),
     }
     for part in PARTS:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
@@ -1357,6 +1399,197 @@ def test_over_the_corpus_each_deferral_variant_names_what_it_says() -> None:
                 assert v.family == "deferrals" and (v.must == "refuse") is (v.want is None)
                 kinds[v.form] += 1
                 forms, at = said[v.form]
-                _said_with(forms, v.text, text, at, scene)
-                assert v.want == (entry.want if v.form == "settled" else None)
+                if v.form == "yours":  # said after the entry, or joined to it
+                    assert v.want == entry.want and entry.want is not None
+                    assert fuzz._has_choice(entry.want)
+                    if not v.text.endswith(fuzz.YOURS_AFTER):
+                        forms = fuzz.YOURS_JOINED
+                        text = text.rstrip(".!")
+                    assert v.text.startswith(text) and v.text[len(text) :] in forms
+                elif v.form == "yours added":
+                    assert isinstance(v.want, Group) and v.want.children[0] == entry.want
+                    assert v.text.startswith(text + " ")
+                    _filled(forms, v.text[len(text) :])
+                else:
+                    _said_with(forms, v.text, text, at, scene)
+                    assert v.want == (entry.want if v.form == "settled" else None)
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- clefts, and a choice left up to the robot (session 34) ----------------------------------------
+
+
+def _clefts(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.clefts("t", entry, scene, random.Random(seed)))
+
+
+def _filled(forms: tuple[str, ...], text: str) -> dict[str, str]:
+    """What ``text`` fills the one form of ``forms`` it says with: the object {o}, person {p} (or
+    {P}), other person {q}, second object {x}, surface {s} and verb forms {be} and {go}."""
+    for form in forms:
+        out = re.escape(form)
+        for key, said in (
+            *((k, ".+?") for k in ("o", "p", "P", "q", "x", "s")),
+            ("be", "is|are"),
+            ("go", "goes|go"),
+        ):
+            group = "p" if key == "P" else key
+            out = out.replace(re.escape("{" + key + "}"), f"(?P<{group}>{said})", 1)
+        if m := re.fullmatch(out, text):
+            return m.groupdict()
+    raise AssertionError(f"{text!r} says none of {forms}")
+
+
+def _agrees(said: dict[str, str]) -> None:
+    """The verb forms said agree with the object ("the crisps are", "the cup goes")."""
+    agreed = fuzz._agreed(said["o"])
+    for key in ("be", "go"):
+        assert said.get(key) in (None, agreed[key]), said
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_one_handover_gets_every_cleft(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    made = _clefts(entry, CELL, seed)
+    assert [v.form for v in made] == [f for f in fuzz.CLEFT_FORMS if f != "place"]
+    cleft, contrast, negated, absent, second, tail = made
+    for v in made:
+        assert v.family == "clefts" and (v.must == "refuse") is (v.want is None)
+    # the entry's handover in a cleft, with another person set against it: the handover
+    for v, forms in ((cleft, fuzz.CLEFTS), (contrast, fuzz.CONTRASTS)):
+        said = _filled(forms, v.text)
+        assert v.want == entry.want and (said["o"], said["p"]) == ("apple", "Bob")
+        _agrees(said)
+    assert _filled(fuzz.CONTRASTS, contrast.text)["q"] in ("Alice", "Carol")
+    # negated, or of a person the scene does not have: refused
+    said = _filled(fuzz.NOT_CLEFTS, negated.text)
+    assert negated.want is None and (said["o"], said["p"]) == ("apple", "Bob")
+    said = _filled(fuzz.CLEFTS, absent.text)
+    assert absent.want is None and said["o"] == "apple" and said["p"] in fuzz.ABSENT
+    assert not _people_named(absent.text, CELL)
+    # a second object: both handovers, never the entry's alone
+    said = _filled(fuzz.SECOND, second.text)
+    x = _one_object(said["x"], CELL)
+    assert (said["o"], said["p"]) == ("apple", "Bob") and x in fuzz._unique_objects(CELL)
+    assert x != "apple" and second.want == Group("and", (entry.want, Task("deliver", x, "B")))
+    # a cleft after the entry adds a handover of an object the entry does not name
+    assert tail.text.startswith(entry.text + " ") and tail.added is not None
+    said = _filled(fuzz.CLEFT_TAILS, tail.text[len(entry.text) :])
+    _agrees(said)
+    added = Task("deliver", _one_object(said["o"], CELL), _one_person(said["p"], CELL))
+    assert tail.added == added and added.obj in fuzz._unique_objects(CELL)
+    assert added.obj != "apple" and tail.want == Group("and", (entry.want, added))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # a choice, a mug of two: no cleft of it, only a cleft after it
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", {"cleft tail"}),
+        ("Give Alice the red mug.", "mug_red>A", {"cleft tail"}),
+        # a placement of a one-of-a-kind object: its surface in a cleft
+        ("Put the cup on the shelf.", "cup@shelf", {"cleft tail", "place"}),
+        ("Put the red mug on the shelf.", "mug_red@shelf", {"cleft tail"}),
+        # every object moved: none left for a second object or a cleft after it
+        (
+            "Give Carol everything.",
+            "cup>C & bottle>C & chips>C & apple>C & mug_red>C & mug_blue>C",
+            set(),
+        ),
+        # refused: nothing
+        ("Give her the cup.", None, set()),
+    ],
+)
+def test_a_cleft_is_only_made_where_it_says_what_it_must(
+    text: str, want: str | None, forms: set[str]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(10):
+        assert {v.form for v in _clefts(entry, CELL, seed)} == forms
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_a_placement_says_its_surface_in_a_cleft(seed: int) -> None:
+    entry = _entry("cell", "Put the crisps on the counter.", "chips@table")
+    (v,) = (v for v in _clefts(entry, CELL, seed) if v.form == "place")
+    said = _filled(fuzz.PLACE_CLEFTS, v.text)
+    assert said["o"] == "crisps" and said["s"] in ("table", "counter")
+    assert v.want == entry.want and v.must == "same"
+
+
+def test_the_verb_agrees_with_the_object() -> None:
+    assert fuzz._agreed("crisps") == {"be": "are", "go": "go"}
+    assert fuzz._agreed("cup") == fuzz._agreed("glass") == {"be": "is", "go": "goes"}
+    entry = _entry("cell", "Give Bob the crisps.", "chips>B")
+    for seed in range(40):
+        for v in _clefts(entry, CELL, seed):
+            assert not re.search(r"crisps (?:is (?:what|for)|goes)\b", v.text), v.text
+
+
+def test_a_cleft_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["humans"][1]["aliases"] = ["Bob", "Zoe", "Nikos"]
+    raw["objects"].append({"id": "one", "category": "one", "position": [0.5, 0.5, 0.05]})
+    scene = scene_from_dict(raw)
+    entry = _entry("cell", "Give Alice the apple.", "apple>A")
+    absent = set()
+    for seed in range(60):
+        for v in fuzz.clefts("t", entry, scene, random.Random(seed)):
+            assert not re.search(r"(?i)\bthe one (?:to|who)\b", v.text), v.text
+            if v.form == "absent":
+                absent.add(_filled(fuzz.CLEFTS, v.text)["p"])
+    assert absent and not absent & {"Zoe", "Nikos"}
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("It's Bob, not Alice, who gets the chips.", "chips>B", "contrast", "exact"),
+        ("It's Bob, not Alice, who gets the chips.", "chips>A", "contrast", "wrong"),
+        ("It's not Bob who gets the chips.", None, "not", "refused"),
+        ("Give Bob the chips.", None, "absent", "wrong"),  # read where it must be refused
+        ("Give Bob the chips.", "chips>B & apple>B", "second", "wrong"),  # the one alone
+    ],
+)
+def test_a_cleft_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "clefts", form) == verdict
+
+
+def test_over_the_corpus_each_cleft_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.CLEFT_FORMS, 0)
+    said = {
+        "cleft": fuzz.CLEFTS,
+        "contrast": fuzz.CONTRASTS,
+        "not": fuzz.NOT_CLEFTS,
+        "absent": fuzz.CLEFTS,
+        "second": fuzz.SECOND,
+        "place": fuzz.PLACE_CLEFTS,
+    }
+    for v, scene in fuzz.generated(PARTS, seed=34, every=2, families=("clefts",)):
+        assert v.family == "clefts" and (v.must == "refuse") is (v.want is None)
+        kinds[v.form] += 1
+        if v.form == "cleft tail":
+            assert v.added is not None and isinstance(v.want, Group)
+            assert v.added not in tasks(v.want.children[0])
+            continue
+        filled = _filled(said[v.form], v.text)
+        _agrees(filled)
+        oid = _one_object(filled["o"], scene)
+        if v.form == "place":
+            assert isinstance(v.want, Task) and (v.want.kind, v.want.obj) == ("place", oid)
+            assert fuzz._named("the " + filled["s"], scene, "surface") == {v.want.target}
+            continue
+        if v.form == "absent":
+            assert v.want is None and fuzz._names_nothing(filled["p"], scene)
+            continue
+        task = Task("deliver", oid, _one_person(filled["p"], scene))
+        if v.form == "second":
+            x = Task("deliver", _one_object(filled["x"], scene), task.target)
+            assert x != task and v.want == Group("and", (task, x))
+        else:
+            assert v.want == (None if v.form == "not" else task)
+        if v.form == "contrast":
+            assert _one_person(filled["q"], scene) != task.target
     assert min(kinds.values()) >= 10, kinds
