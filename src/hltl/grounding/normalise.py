@@ -20444,7 +20444,8 @@ def _reasons_said34t(text: str, lexicon: Lexicon) -> str:
     """Session 34 (12t): reasons that ask nothing. '… because she asked earlier and she's been
     very patient' closing the request: a 'because' of a pronoun's clauses joined by 'and', taken
     off whole when it names nothing of the scene and holds no word of session 21's
-    `_REASON_HELD21` ('patient' after 'been' / 'is' is the adjective, not the ward's role noun);
+    `_REASON_HELD21` ('patient' after 'been' / 'is' is the adjective, not the ward's role noun)
+    and each pronoun in it may be one person named before it alone (a title says which);
     '…, his own one has died on him' (a thing of his own, so not one of the
     scene's: 'has died', 'is broken', 'has packed up', from a closed list); 'straight into
     Alice's hands' is 'to Alice'."""
@@ -20452,9 +20453,15 @@ def _reasons_said34t(text: str, lexicon: Lexicon) -> str:
     def why(m: re.Match[str]) -> str:
         # 'she's been very patient': the adjective, not the ward's role noun 'patient'
         said = _sub(r"\b(been|is|'s|was) (?:very |so |really |ever so )?patient\b", r"\1", m["why"])
-        if _names_nothing(said, lexicon) and not _REASON_HELD21.search(said):
-            return ""
-        return m.group(0)
+        if not _names_nothing(said, lexicon) or _REASON_HELD21.search(said):
+            return m.group(0)
+        # each pronoun may be one person named before it alone ('Give Bob the chips and Carol
+        # the apple because she's hungry': Bob or Carol, session 5's near form, stays)
+        named = _ids(m.string[: m.start()], lexicon, "human")
+        for pro in re.findall(r"\b(?:he|she|they|him|her)\b", said, _F):
+            if len([pid for pid in named if _fits(pid, pro, lexicon)]) != 1:
+                return m.group(0)
+        return ""
 
     out = _sub(
         r" because (?P<why>(?:he|she|they)\b[^,.;!?]*?)(?=\s*[.!]?$)",
