@@ -20507,6 +20507,58 @@ def _target_for34t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _pirate34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a pirate's role-play, from a closed list: 'Arr,' / ', arr' and the
+    addresses 'matey', 'me hearties' are interjections; "Cap'n" before a name is a title taken
+    off; "be wantin'" is 'wants'; 'old' before a name of the scene names no one else ('old
+    Grandad'); 'the treasure, the teddy bear,' is 'the teddy bear,' (the role-play's word, said
+    again by the object's name); 'X be P's treasure' is 'X are for P'. Only where the text holds
+    one of the pirate's words ('arr', 'matey', 'hearties', "cap'n"); 'the four treasures' is 'the
+    four things' wherever it is said (the count checked as for things)."""
+    out = _sub(r"\bthe (two|three|four|five|six) treasures\b", r"the \1 things", text)
+    if not _rx(r"\b(?:arr|matey|hearties|cap'n)\b").search(out):
+        return out
+    out = _sub(r"^arr,\s*", "", out)
+    out = _sub(r",\s*(?:arr|matey|me hearties)(?=\s*[,.!]|$)", "", out)
+    out = _sub(r"\bcap'n (?=[A-Z])", "", out)
+    out = _sub(r"\bbe wantin'?(?= )", "wants", out)
+
+    def old(m: re.Match[str]) -> str:
+        return m.group(1) if _only_person(m.group(1), lexicon) else m.group(0)
+
+    out = _sub(r"\bold ([A-Z][a-z]+)\b", old, out)
+
+    def said(m: re.Match[str]) -> str:
+        return m.group(1) if _only(m.group(1), lexicon, "object") else m.group(0)
+
+    out = _sub(r"\bthe treasure, (the [a-z]+(?: [a-z]+)?)(?=,)", said, out)
+
+    def owned(m: re.Match[str]) -> str:
+        if _only_person(m["p"], lexicon) and _objects_only(m["what"], lexicon):
+            return f"{m['what']} are for {m['p']}"
+        return m.group(0)
+
+    return _sub(r"(?P<what>\bthe [a-z ]+?) be (?P<p>[a-z][\w ]*?)'s treasure\b", owned, out)
+
+
+def _reported_fix34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a report taken back, news-style: 'We reported the cup was going to P.
+    Correction: it's the apple.' is 'The cup was going to P. No, the apple.' (the report's frame
+    'we reported / said / announced (that)' before what was going where, and 'Correction: it's'
+    opening the next sentence before an object, the correction's cue)."""
+    if "correction" not in text.lower():
+        return text
+    m = _rx(
+        r"^we (?:reported|said|announced|stated)(?: earlier)?(?: that)? (?=the [a-z]+ (?:was|were|"
+        r"is) going to )"
+    ).match(text)
+    if m is None:
+        return text
+    out = text[m.end() :]
+    out = out[:1].upper() + out[1:]
+    return _sub(r"(?<=[.!]\s)correction:\s*(?:it's|it is) (?=the [a-z]+\s*[.!]?$)", "No, ", out)
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20527,6 +20579,8 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _for_said34t,
     _reasons_said34t,
     _target_for34t,
+    _pirate34t,
+    _reported_fix34t,
 )
 
 
