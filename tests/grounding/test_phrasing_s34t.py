@@ -11,6 +11,7 @@ from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
     DEPOT,
+    KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
@@ -539,4 +540,45 @@ def test_reasons_and_targets(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_role_play(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- Singapore English's particles; a radio dedication; legal wording ---------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Bottle is what Alice want, crisps is for Bob one, can or not?",
+            "bottle>A & chips>B",
+            TWO,
+        ),
+        ("The crsps, Bob want one lah.", "chips>B", TWO),
+        (
+            "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
+            "tongs>B & knife>A",
+            KITCHEN,
+        ),
+        (
+            "The stapler, hereinafter 'the item', is to be placed in the box. The notebook "
+            "likewise.",
+            "stapler@box & notebook@box",
+            OFFICE,
+        ),
+        # session 28's near form; no particle; a person not in the scene; a name given that is an
+        # object of the scene
+        ("Two items, both give Alice lah.", None, TWO),
+        ("Bottle is what Alice want, crisps is for Bob one.", None, TWO),
+        ("The crsps, Carol want one lah.", None, TWO),
+        (
+            "This one goes out to Lena, who'd love the tongs, and to Bob, who needs the knife!",
+            None,
+            KITCHEN,
+        ),
+        ("The stapler, hereinafter 'the notebook', is to be placed in the box.", None, OFFICE),
+        ("The stapler is to be placed in the box. Sam likewise.", None, OFFICE),
+    ],
+)
+def test_dialects_and_frames(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)

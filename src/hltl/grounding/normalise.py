@@ -20559,6 +20559,79 @@ def _reported_fix34t(text: str, lexicon: Lexicon) -> str:
     return _sub(r"(?<=[.!]\s)correction:\s*(?:it's|it is) (?=the [a-z]+\s*[.!]?$)", "No, ", out)
 
 
+def _singlish34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): Singapore English from a closed list, only where one of its particles is
+    said ('lah', 'leh', 'lor', 'can or not?'): the particles are taken off; 'P want' is 'P wants';
+    'X is for P one' ('one' closing the clause, an emphasis) is 'X is for P'; 'P want(s) one'
+    after the object said first ('The crsps, Bob want one lah') is 'P wants it'; a bare object
+    opening a clause before 'is' ('Bottle is what Alice want', 'crisps is for Bob') takes 'the'.
+    'Two items, both give Alice lah.' stays refused (session 28's near form: a count is not a
+    name)."""
+    if not _rx(r"\b(?:lah|leh|lor)\b|\bcan or not\b").search(text):
+        return text
+    out = _sub(r",?\s*\bcan or not\s*\?", ".", text)
+    out = _sub(r"\s+\b(?:lah|leh|lor)\b(?=\s*[,.!?]|$)", "", out)
+
+    def wants(m: re.Match[str]) -> str:
+        return f"{m.group(1)} wants" if _only_person(m.group(1), lexicon) else m.group(0)
+
+    out = _sub(r"\b([A-Z][a-z]+(?: [A-Z])?) want\b", wants, out)
+    out = _sub(r"(\bfor [A-Z][a-z]+(?: [A-Z])?) one(?=\s*[,.!?]|$)", r"\1", out)
+    m = _rx(r"^(?P<obj>the [a-z]+), (?P<p>[a-z][\w ]*?) wants one(?=\s*[.!]?$)").match(out)
+    if m is not None and _only_person(m["p"], lexicon) and _only(m["obj"], lexicon, "object"):
+        out = f"{m['obj']}, {m['p']} wants it{out[m.end() :]}"
+
+    def the(m: re.Match[str]) -> str:
+        if _only(m.group(2), lexicon, "object") and not m.group(2).lower().startswith("the "):
+            return f"{m.group(1)}the {m.group(2)} is"
+        return m.group(0)
+
+    return _sub(r"(^|,\s*)([a-z]+) is\b", the, out)
+
+
+def _dedication34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a radio dedication, 'This one goes out to Lena, who'd love the tongs, and
+    to Marco, who needs the knife!': the frame 'This one (song) goes out to' is taken off and each
+    'P, who would love / needs X' is 'P would love / needs X' — only when every name is one person
+    of the scene."""
+    m = _rx(r"^this (?:one|song|next one) goes out to ").match(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    parts = _rx(
+        r"(?:^|,\s*and to\s+)(?P<p>[A-Z][\w ]*?), who(?P<mod>'d| would)? (?P<v>love|like|needs|"
+        r"wants|fancies)\b"
+    )
+    found = list(parts.finditer(rest))
+    if not found or not all(_only_person(f["p"], lexicon) for f in found):
+        return text
+
+    def said(f: re.Match[str]) -> str:
+        lead = ", and " if f.start() > 0 else ""
+        verb = f"would {f['v']}" if f["mod"] else f["v"]
+        return f"{lead}{f['p']} {verb}"
+
+    return parts.sub(said, rest)
+
+
+def _legal34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): legal wording from a closed list: ", hereinafter 'the item'," (a name
+    given for later, naming nothing of the scene) is taken off; 'The notebook likewise.' (a
+    sentence of an object and 'likewise') is 'The notebook too.'. (The name given is a kind word,
+    'the item', or names nothing; "hereinafter 'the notebook'" is left and refused.)"""
+    out = _sub(
+        r",\s*hereinafter (?:called |referred to as )?['\"‘“](?P<name>[a-z ]+)['\"’”],",
+        lambda m: (
+            ""
+            if _rx(r"^(?:the )?(?:item|thing|object|article)$").match(m["name"])
+            or _names_nothing(m["name"], lexicon)
+            else m.group(0)
+        ),
+        text,
+    )
+    return _sub(r"(?<=[.!]\s)(the [a-z]+(?: [a-z]+)?) likewise(?=\s*[.!]?$)", r"\1 too", out)
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20581,6 +20654,9 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _target_for34t,
     _pirate34t,
     _reported_fix34t,
+    _singlish34t,
+    _dedication34t,
+    _legal34t,
 )
 
 
