@@ -144,8 +144,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
         "maybe go to Carol? Sorry. Thank you.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
-        "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
-        "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",

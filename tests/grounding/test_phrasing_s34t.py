@@ -34,6 +34,7 @@ T21 = _scene("2-1")  # bottle, chips; A, B
 L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B
 SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
 T12 = _scene("1-2")  # bottle; A, B
+L24 = _scene("2-4-line")  # bottle, chips; A, B
 TWO = _scene("two_arms")  # bottle, chips (crisps); Alice, Bob
 FIG1 = _scene("fig1")  # bottle, chips (crisps); Alice, Bob; shelf
 
@@ -581,4 +582,40 @@ def test_role_play(text: str, want: str | None, scene: Scene) -> None:
     ],
 )
 def test_dialects_and_frames(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- the object said first, 'sorry' replacing nothing; 'either of them? Either thing' -----------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
+            "chips>A",
+            L24,
+        ),
+        (
+            "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
+            "bottle>A | chips>A",
+            T21,
+        ),
+        # another object after 'sorry' (a correction); the pronoun cannot be the person by
+        # title; four things for 'either'; 'either person'
+        ("The chips, sorry, the bottle, Person A asked for them, could they go to her?", None, L24),
+        ("The jug, sorry, Mr Lee asked for it, could it go to her?", None, WARD),
+        (
+            "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
+            None,
+            F41,
+        ),
+        (
+            "Sorry, could Person A have either of them? Either person, I don't mind, sorry.",
+            None,
+            T21,
+        ),
+    ],
+)
+def test_fronted_asked(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)

@@ -20632,6 +20632,35 @@ def _legal34t(text: str, lexicon: Lexicon) -> str:
     return _sub(r"(?<=[.!]\s)(the [a-z]+(?: [a-z]+)?) likewise(?=\s*[.!]?$)", r"\1 too", out)
 
 
+def _fronted_asked34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): the object said first, then who asked for it and the request by pronouns
+    ('The chips, sorry, Person A asked for them, could they go to her?'): 'Person A asked for the
+    chips, could they go to her?' — 'sorry' there replaces nothing (the clause after it points
+    back to the object with 'them' / 'it'); only when the object is one of the scene's and the
+    pronoun after 'to' may be the person. 'Could P have either of them? Either thing, I don't
+    mind.' (the next sentence says 'them' are things) is 'Could P have either thing?', where the
+    scene has two objects."""
+    m = _rx(
+        r"^(?P<obj>the [a-z]+), (?:sorry, )?(?P<p>[a-z][\w ]*?) asked for (?:them|it), "
+        r"(?P<ask>could (?:they|it) go to (?P<pro>her|him)\?)"
+    ).match(text)
+    if (
+        m is not None
+        and _only_person(m["p"], lexicon)
+        and _only(m["obj"], lexicon, "object")
+        and _fits(next(iter(_ids(m["p"], lexicon, "human"))), m["pro"], lexicon)
+    ):
+        text = f"{m['p']} asked for {m['obj']}, {m['ask']}{text[m.end() :]}"
+    if len(lexicon.scene.objects) != 2:
+        return text  # 'either' counts two things: a scene of more is left and refused
+    return _sub(
+        r"\beither of them\?\s+either (?:thing|one)(?:,\s*(?:i don't mind|whichever|any))?"
+        r"(?:,\s*sorry)?\s*[.!]?$",
+        "either thing?",
+        text,
+    )
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20657,6 +20686,7 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _singlish34t,
     _dedication34t,
     _legal34t,
+    _fronted_asked34t,
 )
 
 
