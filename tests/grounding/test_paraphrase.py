@@ -282,12 +282,10 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        "Give Person B everything you've got there but not the apple, she hates apples.",
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
-        "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
         'Drop the scnner on the belt before the next load comes down.',
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
         # give Alice."; session 33, 12t)

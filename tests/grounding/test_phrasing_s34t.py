@@ -619,3 +619,34 @@ def test_dialects_and_frames(text: str, want: str | None, scene: Scene) -> None:
 )
 def test_fronted_asked(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
+
+
+# -- a closing reason naming only the object left out or corrected away ------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Give Person B everything you've got there but not the apple, she hates apples.",
+            "bottle>B & chips>B & cup>B",
+            SQ,
+        ),
+        (
+            "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
+            "apple>B",
+            L44,
+        ),
+        # another object in the reason; nothing left out or corrected away; the object kept
+        ("Give Person B everything you've got there but not the apple, she hates cups.", None, SQ),
+        ("Give Person B the apple, she hates apples.", None, SQ),
+        ("Person B's having the chips and the apple, I had chips on the brain.", None, L44),
+        (
+            "Person B's having the chips, wait, sorry, the apple, I had apples on the brain.",
+            None,
+            L44,
+        ),
+    ],
+)
+def test_reason_for_change(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)

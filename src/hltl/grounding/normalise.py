@@ -20661,6 +20661,35 @@ def _fronted_asked34t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+def _reason_for_change34t(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12t): a closing reason that names only the object the request leaves out or
+    corrects away, so it changes nothing: '… but not the apple, she hates apples' (a dislike from
+    a closed list, after 'not' that object) and '…, wait, sorry, the apple, I had chips on the
+    brain' (the slip explained: the object replaced) — taken off when what is before it reads
+    and does not move that object. 'everything you've got there' is 'everything you've got'."""
+    out = _sub(r"\beverything you've got there\b", "everything you've got", text)
+    m = _rx(
+        r",\s*(?:(?:he|she|they) (?:hates|hate|doesn't like|don't like|can't stand|isn't keen on|"
+        r"is allergic to)|i (?:had|have|'ve got|got) (?P<slip>[a-z]+) on the brain)"
+        r"(?P<what>(?: [a-z]+)?)\s*[.!]?$"
+    ).search(out)
+    if m is None:
+        return out
+    named = m["slip"] or m["what"].strip()
+    before = out[: m.start()]
+    ids = _ids(named, lexicon, "object") if named else set()
+    if len(ids) != 1 or not _names(named, lexicon) or not _objects_only(named, lexicon):
+        return out
+    (oid,) = ids
+    cue = r"\bnot (?:the )?" if not m["slip"] else r"\b(?:sorry|wait|no)\b.*"
+    if oid not in _ids(before, lexicon, "object") or not _rx(cue).search(before):
+        return out
+    said = _tasks_of(before, lexicon)
+    if not said or oid in {obj for _, obj, _ in said}:
+        return out
+    return before + "."
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -20687,6 +20716,7 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _dedication34t,
     _legal34t,
     _fronted_asked34t,
+    _reason_for_change34t,
 )
 
 
