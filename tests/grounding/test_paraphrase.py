@@ -178,28 +178,13 @@ KNOWN_MISSES = frozenset(
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
         "Jess needs some screws, give her the tin.",
-        "Sam's after a pen. Red's no good for forms, so one of the others.",
-        "Everything that's a box goes on the conveyor, except the big one, leave that on the "
-        "pallet.",
-        "Clear the lot into the locker, bar the drill and the hammer, I still need those.",
-        "Sponge on the tray... actually no, sink's better, put it in the sink.",
         "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
-        "Bottle on the shelf, no wait, to Alice.",
-        "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to"
-        " Person B first and the cup after.",
         "chuck the blue pen in the box its cluttering my desk",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
-        "Whichever cup isn't the green one, that's Omar's, hand it to him.",
-        "The guest on table five, Mr Novak, gets the white plate, not the blue.",
-        "The book that's lying about, not the one up on the bookshelf, is Zoe's, give it her.",
-        "Lily wants a block to chew on. Not the red one, love, the other.",
-        "Torch in the locker, no, give it to Jess instead, she's going under the floor.",
-        "The cup and then the apple to Person B, or rather the apple first and then the cup.",
-        "Shelf for the bottle, please, or no, better still, straight to Alice.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "What Alice wants is the crisps, honestly nothing else will do for her.",
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
@@ -364,36 +349,6 @@ KNOWN_MISSES = frozenset(
         "I've been on the trumpet all morning and I'm whacked so could you just take the bottle to "
         "Person A for me",
         "Torch to Jess she's under the van and the screws on the bench after that",
-        "One for Person A, one for Person B, that's the apple and the cup; who gets which is up to "
-        "you.",
-        'Something to eat for Person A, apple or chips, pick whichever you like.',
-        'Split it up so Person A ends up with the bottle and Person B ends up with the cup.',
-        'Whichever of Person A and Person B is closer gets the bottle.',
-        'Any bottle you can lay hands on, give it to Person A.',
-        "There's a lone bottle in this cell and Person A is the one to have it.",
-        'Nobody goes without: Person A gets handed the bottle, Person B the bag of chips.',
-        'Either patient can have the magazine, they both like the puzzles.',
-        "Scissors to either of the students, Zoe or Noah, doesn't matter.",
-        'Both mugs need shifting up to the shelf, the red and the blue alike.',
-        "Hand everything we've got, both the items, over to Person A.",
-        'One bottle, one person: bottle to Person A.',
-        "Ava's building a tower so she needs the pair of blocks, red and green.",
-        "The locker's where the two spanners live, so in they go.",
-        'Carol asked for a mug, anything but the red one.',
-        "Leaving the crisps aside, Bob can take what's left.",
-        "Only Person B gets anything today, and it's the chips.",
-        'No fuss, nothing else, just the bottle for Person A.',
-        'Nothing fancy, no glass, just the bottle for Person A.',
-        'Person B, not Person A, is the one getting the chips.',
-        'Lena wants the plate, but not the one on the plate rack.',
-        "Zoe wants to read the book that isn't green.",
-        'Crisps on the shelf, actually no, give them to Bob.',
-        "Over to Person A with the cup, hmm, no, it's Person B who's meant to get it.",
-        'First I said chips, but Person A is actually after the apple, so give her that.',
-        "Chips for Person A, ugh, wrong one, she's been after the bottle all along.",
-        "Bottle to Person B, no, Person A, there's only her here.",
-        'The spoon in the sink, oh no, sorry, on the tray is better.',
-        'Drill to Jess, no, Kofi, final answer.',
         'bottle to person a please, from the stableman',
         'person a has the chips coming, and person b is owed the bottle from earlier',
         'Person A fancies the xpple after her walk.',
@@ -413,9 +368,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
         "asked.",
-        # blind32 (tuned on in session 34)
-        'Give it to Person B, the one by the window.',
-        'just give them the bottle, the one who asked',
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -475,8 +427,9 @@ KNOWN_UNCLEAR = frozenset(
 # and tuned on in session 33: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
 # "blind32" written in session 33 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 33 (0 wrong), tuned on in session 34: asserted now, the
-# rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind33" written in session 34 by another engineer and
+# committed alone, measured once at the end of session 34: not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind33"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -566,6 +519,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind31"].entries}) >= 3
     assert len(CORPORA["blind32"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind32"].entries}) >= 3
+    assert len(CORPORA["blind33"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind33"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -115,7 +115,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # alone, never opened by the engineers who change the grounder before its one measurement at the
 # end of session 32; its one wrong reading fixed and tuned on in session 33), blind32 (written in
 # session 33 by another engineer and committed alone, never opened by the engineers who change the
-# grounder before its one measurement at the end of session 33; tuned on in session 34).
+# grounder before its one measurement at the end of session 33; tuned on in session 34), blind33
+# (written in session 34 by another engineer and committed alone, never opened by the engineers
+# who change the grounder before its one measurement at the end of session 34; tests do not
+# assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -165,6 +168,7 @@ PARTS = (
     "blind30",
     "blind31",
     "blind32",
+    "blind33",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

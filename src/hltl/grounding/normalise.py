@@ -22269,6 +22269,908 @@ _STEPS33R: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 34 (12r): blind32's choices, counts, negation, exclusions and corrections -----------
+
+_CUE34R = r"(?:no|sorry|actually|i mean|i meant|or rather|correction)"
+_PERSON34R = r"person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+"
+_THING34R = r"(?:the )?[a-z]+(?: [a-z]+)?"
+
+
+def _persons34r(lexicon: Lexicon, *words: str) -> bool:
+    """Whether each of ``words`` names one person, each another."""
+    ids = [_ids(w, lexicon, "human") for w in words]
+    return all(_only_person(w, lexicon) for w in words) and len(set().union(*ids)) == len(words)
+
+
+def _objects34r(lexicon: Lexicon, *words: str) -> bool:
+    """Whether each of ``words`` is one whole name of one object, each another."""
+    ids = [_ids(w, lexicon, "object") for w in words]
+    apart = len(set().union(*ids)) == len(words)
+    return apart and all(_whole_name(w, lexicon, "object") for w in words)
+
+
+# "Drill to Jess, no, Kofi, final answer."
+_FINAL34R = re.compile(
+    rf"^(?P<head>.+?\b{_CUE34R}\b.+?),\s*(?:and )?(?:that's )?(?:my )?final answer"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _final_answer34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): 'final answer' closing a correction ("Drill to Jess, no, Kofi, final
+    answer") only stresses it: taken off (not without a correction before it)."""
+    m = _FINAL34R.match(text)
+    return text if m is None else f"{m['head']}{m['end'] or '.'}"
+
+
+# "The spoon in the sink, oh no, sorry, on the tray is better."
+_BETTER34R = re.compile(
+    rf"^(?P<head>.+?\b{_CUE34R},\s*)(?P<p>on|in|onto|into) the (?P<s>[a-z]+(?: [a-z]+)?) "
+    r"(?:is|would be|'d be|will be) (?:better|best)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _place_better34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, 'on the tray is better' is the place the
+    correction names ('…, sorry, on the tray'); S must be one surface of the scene, and a place
+    the scene lacks ('…, sorry, on the floor is better') is refused (it had been dropped as a
+    remark, and the place corrected away read)."""
+    m = _BETTER34R.match(text)
+    if m is None:
+        return text
+    if not _whole_name(m["s"], lexicon, "surface"):
+        if _ids(m["s"], lexicon):
+            return text
+        raise GroundingError(
+            f"no surface called {m['s']!r} in the scene; {lexicon.listing('surface')}"
+        )
+    return f"{m['head']}{m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "…, no, it's Person B who's meant to get it."
+_MEANT34R = re.compile(
+    r"\b(?P<it>it's|it is) (?P<p>[a-z][\w ]*?) who(?:'s| is) (?:meant|supposed) to "
+    r"(?:get|have|receive) (?P<x>it|them|the [a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def _meant_to_get34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "it's P who's meant (supposed) to get it" is "it's P who gets it" (P
+    one person of the scene)."""
+    m = _MEANT34R.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['it']} {m['p']} who gets {m['x']}{text[m.end() :]}"
+
+
+# "…, she's been after the bottle all along."
+_ALL_ALONG34R = re.compile(
+    r"\b(?P<s>she|he)(?:'s| has) been after (?P<x>the [a-z]+(?: [a-z]+)?) all along\b", _F
+)
+
+
+def _after_all_along34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue ('ugh, wrong one'), "she's been after the X all
+    along" is "she wants the X" (X one whole name of an object)."""
+    m = _ALL_ALONG34R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if not re.search(rf"\b(?:{_CUE34R}|wrong one|oops)\b", text[: m.start()], _F):
+        return text  # 'all along' sets the want against what was said: only after a correction
+    return f"{text[: m.start()]}{m['s']} wants {m['x']}{text[m.end() :]}"
+
+
+# "First I said chips, but Person A is actually after the apple, so give her that."
+_FIRST_SAID34R = re.compile(
+    r"^(?:at )?first,? I (?:said|asked for|put) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?),?\s*but "
+    r"(?P<rest>.+)$",
+    _F,
+)
+
+
+def _first_said34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "First I said X, but <request>" takes the speaker's earlier word back:
+    the request is read alone, its 'actually' (the stress on what replaces X) with it. X must
+    name something of the scene, and the request must not name it again."""
+    m = _FIRST_SAID34R.match(text)
+    if m is None:
+        return text
+    said = _ids(m["x"], lexicon)
+    if not said or not _whole_name(m["x"], lexicon, "object") or said & _ids(m["rest"], lexicon):
+        return text
+    rest = re.sub(r"\b(?:is|'s) actually after\b", "is after", m["rest"], count=1, flags=_F)
+    return rest[0].upper() + rest[1:]
+
+
+# "Crisps on the shelf, actually no, give them to Bob."
+_PLACED_THEN34R = re.compile(
+    r"^(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?P<p>on|in|onto|into) (?P<s>the [a-z]+(?: [a-z]+)?)"
+    r"(?P<cue>,\s*(?:(?:actually|hmm|oh|er|um),?\s*)?(?:no|sorry|wait|actually)\b,?\s*"
+    r"(?:give|hand|pass|take|bring) (?:them|it) .+)$",
+    _F,
+)
+
+
+def _placed_then34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a placement said without its verb ('Crisps on the shelf') before a
+    correction that says a whole new request ('actually no, give them to Bob') is 'Put the
+    crisps on the shelf, …': the correction then takes the clause back, 'them' the crisps."""
+    m = _PLACED_THEN34R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    x = m["x"] if m["x"].lower().startswith("the ") else f"the {m['x']}"
+    return f"Put {x} {m['p']} {m['s']}{m['cue']}"
+
+
+# "Bottle to Person B, no, Person A, there's only her here." (the scene holds Person A alone)
+_ONLY_HERE34R = re.compile(
+    r"^(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) to (?P<q>[a-z][\w ]*?),\s*no,\s*(?P<p>[a-z][\w ]*?),"
+    r"\s*(?:there's|there is) only (?P<pro>her|him) here(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_here34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "X to Q, no, P, there's only her here" in a scene of one person, P,
+    where Q names no one: X to P (the remark says why Q was wrong)."""
+    m = _ONLY_HERE34R.match(text)
+    if m is None or len(lexicon.scene.humans) != 1:
+        return text
+    names = {n.lower() for h in lexicon.scene.humans for n in (h.name, *h.aliases)}
+    if m["q"].lower() in names or _ids(m["q"], lexicon, "object"):
+        return text
+    if not _the_person(m["p"], m["pro"], lexicon) or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"{m['x']} to {m['p']}{m['end'] or '.'}"
+
+
+# "Whichever of Person A and Person B is closer gets the bottle."
+_WHICHEVER_OF34R = re.compile(
+    rf"^whichever of (?P<p>{_PERSON34R}) and (?P<q>{_PERSON34R}) (?:is|'s) (?P<adj>closer|"
+    r"nearer|closest|nearest)(?P<to> to (?:you|the robot|your gripper|hand))? (?:gets|can have|"
+    r"should get|takes) (?P<x>.+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_of34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Whichever of P and Q is closer (to you) gets X" is "X to P or Q,
+    whichever is closer" (the nearer one is the robot's to find: a choice; P and Q two
+    people)."""
+    m = _WHICHEVER_OF34R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    # 'closer to you' is closer to the robot, as 'whichever is closer' says
+    return f"{m['x']} to {m['p']} or {m['q']}, whichever is {m['adj']}{m['end']}"
+
+
+# "…, apple or chips, pick whichever you like."
+_PICK34R = re.compile(
+    r"(?P<head>\bor\b.+?),\s*(?:just )?pick (?:whichever|either|any)(?: one)?(?: you (?:like|"
+    r"want|fancy|prefer))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _pick_whichever34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): 'pick whichever you like' closing a choice ('X or Y') leaves it to the
+    robot: 'whichever you like'."""
+    m = _PICK34R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['head']}, whichever you like{m['end'] or '.'}"
+
+
+# "Something to eat for Person A, apple or chips, …"
+_SOMETHING_FOR34R = re.compile(
+    rf"^something(?: to (?:eat|drink|read|nibble on|snack on|play with))? for (?P<p>{_PERSON34R})"
+    rf",\s*(?:either )?(?P<x>{_THING34R}) or (?P<y>{_THING34R})(?P<rest>\s*(?:[,.!].*)?)$",
+    _F,
+)
+
+
+def _something_for34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Something to eat for P, X or Y" is "X or Y for P": the objects named
+    say what the something is (P one person; X and Y two objects, each whole)."""
+    m = _SOMETHING_FOR34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    return f"{m['x'][0].upper()}{m['x'][1:]} or {m['y']} for {m['p']}{m['rest'] or '.'}"
+
+
+# "Scissors to either of the students, Zoe or Noah, doesn't matter."
+_EITHER_NAMED34R = re.compile(
+    rf"\beither of the (?P<role>[a-z]+),\s*(?P<p>{_PERSON34R}) or (?P<q>{_PERSON34R})"
+    r"(?=\s*[,.!]|\s*$)",
+    _F,
+)
+
+
+def _either_named34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "either of the students, Zoe or Noah" names the two again: "either of
+    the students" (P and Q two people, and the students exactly they)."""
+    m = _EITHER_NAMED34R.search(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    group = _ids(m["role"], lexicon, "human")
+    if group != _ids(m["p"], lexicon) | _ids(m["q"], lexicon):
+        return text
+    return f"{text[: m.start()]}either of the {m['role']}{text[m.end() :]}"
+
+
+# "Either patient can have the magazine, they both like the puzzles."
+_BOTH_LIKE34R = re.compile(
+    r"^(?P<head>either .+?),\s*(?:they|they'd) both (?:like|love|enjoy|want|read|use)\b"
+    r"(?P<why>[^,;.!]*)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_like34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a choice of two people ('Either patient can have X'), "they both
+    like the puzzles" says why either will do: taken off when it names nothing of the scene but
+    the request's objects."""
+    m = _BOTH_LIKE34R.match(text)
+    if m is None or not _ids(m["why"], lexicon) <= _ids(m["head"], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "One for Person A, one for Person B, that's the apple and the cup; who gets which is …"
+_ONE_FOR_EACH34R = re.compile(
+    rf"^one for (?P<p>{_PERSON34R}),\s*(?:and )?one for (?P<q>{_PERSON34R}),\s*(?:that's|that is|"
+    rf"those are|out of) (?P<x>{_THING34R}) and (?P<y>{_THING34R})(?P<tail>\s*(?:[;,.!].*)?)$",
+    _F,
+)
+
+
+def _one_for_each34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "One for P, one for Q, that's X and Y" is "One each for P and Q out of X
+    and Y" (which goes to whom is not said: a choice); P and Q two people, X and Y two objects."""
+    m = _ONE_FOR_EACH34R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    tail = m["tail"] or "."
+    if tail.lstrip().startswith(";"):
+        tail = "," + tail.lstrip()[1:]
+    return f"One each for {m['p']} and {m['q']} out of {m['x']} and {m['y']}{tail}"
+
+
+# "Split it up so Person A ends up with the bottle and Person B ends up with the cup."
+_SPLIT_SO34R = re.compile(r"^split (?:it|them|things|everything) up so(?: that)? (?P<rest>.+)$", _F)
+
+
+def _split_so34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Split it up so <who ends up with what>" says the share-out by its
+    result: the result read alone (it must name two people or more)."""
+    m = _SPLIT_SO34R.match(text)
+    if m is None or len(_ids(m["rest"], lexicon, "human")) < 2:
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+# "Any bottle you can lay hands on, give it to Person A."
+_LAY_HANDS34R = re.compile(
+    r"\b(?P<any>any (?:[a-z]+ )?[a-z]+) (?:that )?you can (?:lay|get|put) (?:your )?hands on\b",
+    _F,
+)
+
+
+def _lay_hands34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "any X you can lay hands on" is "any X" (any at all)."""
+    m = _LAY_HANDS34R.search(text)
+    if m is None or not _ids(m["any"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['any']}{text[m.end() :]}"
+
+
+# "There's a lone bottle in this cell and Person A is the one to have it."
+_LONE_ONE34R = re.compile(
+    r"^there(?:'s| is) (?:a lone|a single|only one|just the one|just one|one) (?P<k>[a-z]+)"
+    r"(?: (?:in|on) (?:this|the) (?:cell|room|table|bench|place))?(?: here)?,?\s*and "
+    r"(?P<p>[a-z][\w ]*?) is the one to (?:have|get|take) it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _lone_one34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "There's a lone X here and P is the one to have it" is "Give P the X":
+    a count, so the scene must hold exactly one X (else left, and refused)."""
+    m = _LONE_ONE34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if len(_ids(m["k"], lexicon, "object")) != 1 or not _whole_name(m["k"], lexicon, "object"):
+        return text
+    return f"Give {m['p']} the {m['k']}{m['end'] or '.'}"
+
+
+# "Nobody goes without: Person A gets handed the bottle, Person B the bag of chips."
+_NOBODY_WITHOUT34R = re.compile(
+    r"^(?:nobody|no one|no-one) (?:goes|is going|will go|is left) without(?: anything)?\s*[:,]\s*"
+    r"(?P<rest>.+)$",
+    _F,
+)
+
+
+def _nobody_without34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Nobody goes without: <tasks>" is the tasks, when they name every
+    person of the scene (else the heading says more than they do: left, and refused)."""
+    m = _NOBODY_WITHOUT34R.match(text)
+    if m is None:
+        return text
+    if _ids(m["rest"], lexicon, "human") != {h.id for h in lexicon.scene.humans}:
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+_GETS_HANDED34R = re.compile(
+    rf"\b(?P<p>{_PERSON34R}) gets (?:handed|passed|given) (?=(?:the|a|an) )", _F
+)
+
+
+def _gets_handed34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P gets handed the X" is "P gets the X" (P one person)."""
+    m = _GETS_HANDED34R.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['p']} gets {text[m.end() :]}"
+
+
+# "Both mugs need shifting up to the shelf, the red and the blue alike."
+_ALIKE34R = re.compile(
+    r"^(?P<head>.*\bboth\b.+,\s*the [a-z]+ and the [a-z]+) alike(?P<end>\s*[.!]?)$", _F
+)
+
+
+def _alike34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "both …, the red and the blue alike": 'alike' only stresses the two
+    listed (the list is then checked against 'both')."""
+    m = _ALIKE34R.match(text)
+    return text if m is None else f"{m['head']}{m['end'] or '.'}"
+
+
+# "Hand everything we've got, both the items, over to Person A."
+_WE_HAVE34R = re.compile(r"\b(?P<e>everything) (?:we've got|we have got|we have)\b", _F)
+
+
+def _we_have34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "everything we've got" is "everything" (the scene's objects)."""
+    m = _WE_HAVE34R.search(text)
+    return text if m is None else f"{text[: m.start()]}{m['e']}{text[m.end() :]}"
+
+
+# "One bottle, one person: bottle to Person A."
+_ONE_ONE34R = re.compile(r"^one (?P<k>[a-z]+),\s*one person\s*:\s*(?P<rest>.+)$", _F)
+
+
+def _one_one34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a heading "One bottle, one person:" counts the scene: taken off when the
+    scene holds exactly one X and one person (else left, and refused)."""
+    m = _ONE_ONE34R.match(text)
+    if m is None or len(lexicon.scene.humans) != 1:
+        return text
+    if not _whole_name(m["k"], lexicon, "object"):
+        return text
+    kind = next(iter(_ids(m["k"], lexicon, "object")))
+    cat = next(o.category for o in lexicon.scene.objects if o.id == kind)
+    if sum(o.category == cat for o in lexicon.scene.objects) != 1:
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+# "… she needs the pair of blocks, red and green."
+_PAIR_LISTED34R = re.compile(
+    r"\bthe pair of (?P<k>[a-z]+s)(?=,\s*(?:the )?[a-z]+ and (?:the )?[a-z]+\s*[.!]?$)", _F
+)
+
+
+def _pair_listed34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "the pair of blocks, red and green" is "both blocks, red and green"
+    (the grammar checks 'both' against the scene and the list against 'both')."""
+    m = _PAIR_LISTED34R.search(text)
+    if m is None or not _ids(m["k"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}both {m['k']}{text[m.end() :]}"
+
+
+# "The locker's where the two spanners live, so in they go."
+_WHERE_LIVE34R = re.compile(
+    r"^the (?P<s>[a-z]+(?: [a-z]+)?)(?:'s| is) where (?P<x>the (?:two |three |four )?[a-z]+) "
+    r"(?:live|belong|go|are kept|get kept),?\s*so (?P<p>in|on) (?:they|them) go(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _where_live34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "The locker's where the spanners live, so in they go" is "Put the
+    spanners in the locker" (S one surface; the objects and their count read by the grammar)."""
+    m = _WHERE_LIVE34R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _ids(m["x"], lexicon, "object"):
+        return text
+    return f"Put {m['x']} {m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "Carol asked for a mug, anything but the red one."
+_ANYTHING_BUT34R = re.compile(
+    r"\b(?P<a>an? [a-z]+),\s*anything but (?P<x>the [a-z]+ one|the [a-z]+ [a-z]+)\b", _F
+)
+
+
+def _anything_but34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "a mug, anything but the red one" is "a mug, any but the red one": the
+    'anything' is of the kind said before it."""
+    m = _ANYTHING_BUT34R.search(text)
+    if m is None or not _ids(m["a"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['a']}, any but {m['x']}{text[m.end() :]}"
+
+
+# "Leaving the crisps aside, Bob can take what's left."
+_LEAVING_ASIDE34R = re.compile(
+    rf"^(?:leaving|setting|putting|keeping) (?P<x>{_THING34R}) (?:aside|to one side),\s*"
+    r"(?P<p>[a-z][\w ]*?) can (?:take|have) (?:what's left|whatever's left|what is left|the rest)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leaving_aside34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Leaving X aside, P can take what's left" is "P can take everything
+    except X" (X one whole object, P one person)."""
+    m = _LEAVING_ASIDE34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"]):
+        return text
+    return f"{m['p']} can take everything except {m['x']}{m['end'] or '.'}"
+
+
+# "Only Person B gets anything today, and it's the chips."
+_ONLY_GETS34R = re.compile(
+    r"^only (?P<p>[a-z][\w ]*?) gets anything(?: today| now| this time)?,\s*and (?:it's|it is) "
+    rf"(?P<x>{_THING34R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_gets34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Only P gets anything, and it's the X" is "P gets the X" (P one person,
+    X one whole object)."""
+    m = _ONLY_GETS34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"]):
+        return text
+    return f"{m['p']} gets {m['x']}{m['end'] or '.'}"
+
+
+# "No fuss, nothing else, just the bottle for Person A."
+_NO_FUSS34R = re.compile(r"^no fuss,\s*(?P<rest>(?:nothing else,\s*)?just .+)$", _F)
+
+
+def _no_fuss34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "No fuss," before "just <request>" is a filler: taken off."""
+    m = _NO_FUSS34R.match(text)
+    return text if m is None else m["rest"][0].upper() + m["rest"][1:]
+
+
+# "Nothing fancy, no glass, just the bottle for Person A." ('Nothing fancy,' is taken off first)
+_NOTHING_FANCY34R = re.compile(
+    r"^(?:nothing (?:fancy|else|more),\s*)?no (?P<n>[a-z]+(?: [a-z]+)?),\s*(?P<rest>just .+)$",
+    _F,
+)
+
+
+def _nothing_fancy34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "(Nothing fancy,) no glass, just X for P": the thing said not wanted is
+    left out of a request that does not name it (one it names leaves the text, refused)."""
+    m = _NOTHING_FANCY34R.match(text)
+    if m is None or _ids(m["n"], lexicon) & _ids(m["rest"], lexicon):
+        return text
+    if not _ids(m["rest"], lexicon, "object") or _ids(m["n"], lexicon, "human"):
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+# "Person B, not Person A, is the one getting the chips."
+_NOT_Q_ONE34R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?),\s*not (?P<q>[a-z][\w ]*?),\s*is the one (?:getting|to get|who gets|"
+    r"having) (?P<rest>.+)$",
+    _F,
+)
+
+
+def _not_q_one34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P, not Q, is the one getting X" is "P is the one getting X" (P and Q
+    two people)."""
+    m = _NOT_Q_ONE34R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    return f"{m['p']} is the one getting {m['rest']}"
+
+
+# "Lena wants the plate, but not the one on the plate rack."
+_BUT_NOT_ON34R = re.compile(
+    r"\bthe (?P<k>[a-z]+),\s*(?:but )?not the one (?P<p>on|in) the (?P<s>[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _but_not_on34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "the plate, but not the one on the rack" is "the plate that is not on
+    the rack" (K names several objects, S one surface; which K that leaves is the grammar's)."""
+    m = _BUT_NOT_ON34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if len(_ids(m["k"], lexicon, "object")) < 2:
+        return text
+    return f"{text[: m.start()]}the {m['k']} that is not {m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "Zoe wants to read the book that isn't green."
+_WANTS_TO_USE34R = re.compile(
+    r"\b(?P<w>wants|needs|would like) to (?:read|use|borrow|eat|drink|wear|play with) "
+    r"(?=the |an? )",
+    _F,
+)
+
+
+def _wants_to_use34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P wants to read the book" is "P wants the book": what P does with it
+    is P's (a verb of the robot's, 'wants to put …', is not one of these)."""
+    m = _WANTS_TO_USE34R.search(text)
+    if m is None or not _ids(text[m.end() :], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['w']} {text[m.end() :]}"
+
+
+# "Give it to Person B, the one by the window."
+_ONE_BY34R = re.compile(
+    r"^(?P<head>.+\bto (?P<p>[a-z][\w ]*?)),\s*the one (?:by|at|near|next to|beside) the "
+    r"(?P<w>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_by34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a person named once, "the one by the window" (naming nothing of
+    the scene) only describes that person: taken off."""
+    m = _ONE_BY34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or _ids(m["w"], lexicon):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# -- session 34 (12r): the same kinds in blind19 and blind20 -------------------------------------
+
+# "Whichever cup isn't the green one, that's Omar's, hand it to him."
+_OWNER_THEN34R = re.compile(
+    r"^(?P<x>.+?),\s*(?:that's|that is|is|it's|it is) (?P<p>[a-z][\w ]*?)'s,\s*"
+    r"(?P<v>give|hand|pass|take) it(?: to)? (?P<pro>him|her)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _owner_then34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "<the object described>, that's Omar's (is Zoe's), hand it to him" is
+    "<the object described>, hand it to Omar": the owner is the one person 'him' / 'her' then
+    means (the description must name no person)."""
+    m = _OWNER_THEN34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if _ids(m["x"], lexicon, "human") or not _ids(m["x"], lexicon, "object"):
+        return text
+    return f"{m['x']}, {m['v']} it to {m['p']}{m['end'] or '.'}"
+
+
+# "Shelf for the bottle, please, or no, better still, straight to Alice."
+_SURFACE_FOR34R = re.compile(
+    r"^(?P<s>[a-z]+(?: [a-z]+)?) for (?P<x>the [a-z]+(?: [a-z]+)?),\s*(?:please,\s*)?(?:or )?"
+    r"no,\s*(?:(?:better still|even better|better yet),\s*)?(?:straight |right )?"
+    r"(?P<rest>(?:to|on|onto|in|into) .+)$",
+    _F,
+)
+
+
+def _surface_for34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a note "Shelf for the bottle" before a correction ("…, or no, better
+    still, straight to Alice") is "The bottle on the shelf, no, to Alice" (S one surface, the
+    object one whole name)."""
+    m = _SURFACE_FOR34R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"The {m['x'][4:]} on the {m['s'].lower()}, no, {m['rest']}"
+
+
+# "Bottle on the shelf, no wait, to Alice."
+_NO_WAIT_TO34R = re.compile(
+    r"(?P<head>\b(?:on|in) the [a-z]+(?: [a-z]+)?),\s*no,? wait,\s*(?P<to>to [a-z])", _F
+)
+
+
+def _no_wait_to34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "X on the shelf, no wait, to Alice" is "…, no, to Alice" ('no wait' the
+    cue 'no', before a new recipient)."""
+    m = _NO_WAIT_TO34R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['head']}, no, {m['to']}{text[m.end() :]}"
+
+
+# "Sponge on the tray... actually no, sink's better, put it in the sink."
+_SAID_BETTER34R = re.compile(
+    r"(?P<cue>\b(?:no|sorry|actually),\s*)(?:the )?(?P<s>[a-z]+(?: [a-z]+)?)(?:'s| is| would be) "
+    r"better,\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _said_better34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "sink's better, put it in the sink" says the
+    place twice: the first saying comes off when the request after it names that surface."""
+    m = _SAID_BETTER34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _ids(m["s"], lexicon) <= _ids(m["rest"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}"
+
+
+# "Clear the lot into the locker, bar the drill and the hammer, I still need those."
+_STILL_NEED34R = re.compile(
+    r"(?P<head>\b(?:bar|except|apart from|but|other than|minus|not) [^,]+?),\s*I (?:still |'ll )?"
+    r"need (?:those|them|that|it|these)(?: still| later)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _still_need34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after what is left out ('bar the drill and the hammer'), "I still need
+    those" says why: taken off (the speaker asks for nothing)."""
+    m = _STILL_NEED34R.search(text)
+    if m is None or not _ids(m["head"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "Sam's after a pen. Red's no good for forms, so one of the others."
+_NO_GOOD34R = re.compile(
+    r"^(?P<head>.+?\ban? (?P<k>[a-z]+))\.\s*(?:the )?(?P<a>[a-z]+)(?: one)?(?:'s| is) no good"
+    r"(?: for [a-z ]+?)?,\s*so (?:one of the others|another one|a different one)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_good34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P's after a pen. Red's no good for forms, so one of the others" is "P's
+    after a pen, any but the red one" (the red pen one object of the kind)."""
+    m = _NO_GOOD34R.match(text)
+    if m is None or len(_ids(f"the {m['a']} {m['k']}", lexicon, "object")) != 1:
+        return text
+    if len(_ids(m["k"], lexicon, "object")) < 2:
+        return text
+    return f"{m['head']}, any but the {m['a']} one{m['end'] or '.'}"
+
+
+# "Lily wants a block to chew on. Not the red one, love, the other."
+_NOT_ONE_OTHER34R = re.compile(
+    r"^(?P<head>.+?\ban? (?P<k>[a-z]+))(?: to [a-z]+(?: on| with)?)?\.\s*not the (?P<a>[a-z]+) "
+    r"one,\s*(?:(?:love|dear|pet|mind),\s*)?the other(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_one_other34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "P wants a block (to chew on). Not the red one, the other." is "P wants
+    a block, any but the red one" when the scene holds two of the kind (with more, 'the other' is
+    not one)."""
+    m = _NOT_ONE_OTHER34R.match(text)
+    if m is None or len(_ids(m["k"], lexicon, "object")) != 2:
+        return text
+    if len(_ids(f"the {m['a']} {m['k']}", lexicon, "object")) != 1:
+        return text
+    return f"{m['head']}, any but the {m['a']} one{m['end'] or '.'}"
+
+
+# "The guest on table five, Mr Novak, gets the white plate, not the blue."
+_AT_TABLE34R = re.compile(
+    r"^the (?P<role>[a-z]+) (?:on|at) table (?:[a-z]+|\d+),\s*(?P<p>[a-z][\w ]*?),\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _at_table34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "The guest on table five, Mr Novak, …" names one person twice: "Mr
+    Novak …" (the role must be one of the person's names)."""
+    m = _AT_TABLE34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if not _ids(m["p"], lexicon) <= _ids(m["role"], lexicon, "human"):
+        return text
+    return f"{m['p']} {m['rest']}"
+
+
+# "The cup and then the apple to Person B, or rather the apple first and then the cup."
+_RATHER_ORDER34R = re.compile(
+    rf"^(?P<x>{_THING34R}) and then (?P<y>{_THING34R}) to (?P<p>[a-z][\w ]*?),\s*or rather "
+    rf"(?P<y2>{_THING34R}) first,? and then (?P<x2>{_THING34R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _rather_order34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "X and then Y to P, or rather Y first and then X" says the order again
+    with the same two objects: "Y to P, then X to P"."""
+    m = _RATHER_ORDER34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    if _ids(m["x"], lexicon) != _ids(m["x2"], lexicon):
+        return text
+    if _ids(m["y"], lexicon) != _ids(m["y2"], lexicon) or not _objects34r(lexicon, m["x2"]):
+        return text
+    y = m["y2"][0].upper() + m["y2"][1:]
+    return f"{y} to {m['p']}, then {m['x2']} to {m['p']}{m['end'] or '.'}"
+
+
+# "Cup to Person A, then the apple to Person B; no, hang on, swap the order round, apple to
+# Person B first and the cup after."
+_SWAP_ORDER34R = re.compile(
+    r"^(?P<a>[^;,]+?),\s*then (?P<b>[^;,]+?);\s*(?:no,\s*)?(?:hang on,\s*|wait,\s*)?swap the "
+    r"order(?: round| around| over)?,\s*(?P<y>[^,]+?) first,? and (?P<x>[^,]+?) after"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _swap_order34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "A, then B; no, swap the order round, B first and A after" is "B, then
+    A": the tasks said again must be the two before (their objects the same, a person they name
+    the one of that task)."""
+    m = _SWAP_ORDER34R.match(text)
+    if m is None:
+        return text
+    for said, task in ((m["y"], m["b"]), (m["x"], m["a"])):
+        if _ids(said, lexicon, "object") != _ids(task, lexicon, "object"):
+            return text
+        if not _ids(said, lexicon, "human") <= _ids(task, lexicon, "human"):
+            return text
+    if len(_ids(m["a"], lexicon, "object")) != 1 or len(_ids(m["b"], lexicon, "object")) != 1:
+        return text
+    return f"{m['b'][0].upper()}{m['b'][1:]}, then {m['a']}{m['end'] or '.'}"
+
+
+# "They both want something. Bottle over to Person A please, and cup across to Person B."
+_BOTH_SOMETHING34R = re.compile(
+    r"^(?:they|the two of them) both (?:want|need|would like) something\.\s*(?P<rest>.+)$", _F
+)
+
+
+def _both_something34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "They both want something." before tasks for both people of a scene of
+    two: the heading comes off."""
+    m = _BOTH_SOMETHING34R.match(text)
+    people = {h.id for h in lexicon.scene.humans}
+    if m is None or len(people) != 2 or _ids(m["rest"], lexicon, "human") != people:
+        return text
+    return m["rest"]
+
+
+# "Everything that's a box goes on the conveyor, except the big one, leave that on the pallet."
+_THAT_IS_A34R = re.compile(
+    r"^everything that(?:'s| is) an? (?P<k>[a-z]+) (?:goes|go) (?P<p>on|onto|in|into) ", _F
+)
+
+
+def _that_is_a34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Everything that's a box goes on S" is "Every box on S"."""
+    m = _THAT_IS_A34R.match(text)
+    if m is None or len(_ids(m["k"], lexicon, "object")) < 2:
+        return text
+    return f"Every {m['k']} {m['p']} {text[m.end() :]}"
+
+
+_LEAVE_THAT34R = re.compile(
+    r"(?P<head>\bexcept the (?P<a>[a-z]+) one),\s*leave (?:that|it) (?:on|in) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_that34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "every K …, except the big one, leave that on the pallet": the one left
+    out stays where it is, said where: taken off when it starts on that surface (else left)."""
+    m = _LEAVE_THAT34R.search(text)
+    k = re.search(r"\bevery ([a-z]+)\b", text[: m.start()], _F) if m is not None else None
+    if m is None or k is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    one = _ids(f"the {m['a']} {k.group(1)}", lexicon, "object")
+    surface = next(iter(_ids(m["s"], lexicon, "surface")))
+    if len(one) != 1 or set(starting_on(one, surface, lexicon)) != one:
+        return text
+    return f"{text[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "Those two mugs want to go on the counter, please." / "All three of the boxes want to go on …"
+_COUNTED_WANT34R = re.compile(
+    r"^(?P<d>those|the|all|both)(?P<n> two| three| four)?(?P<of> of the)? (?P<k>[a-z]+s) "
+    r"(?:want|need) to (?:go|sit|be|live) (?P<p>on|onto|in|into) ",
+    _F,
+)
+
+
+def _counted_want34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Those two mugs (All three of the boxes) want to go on S" is "Put the two
+    mugs (all three of the boxes) on S" (session 28's '<object> wants to go on S', for a counted
+    plural; the count read by the grammar)."""
+    m = _COUNTED_WANT34R.match(text)
+    if m is None or not _ids(m["k"], lexicon, "object"):
+        return text
+    d = "the" if m["d"].lower() == "those" else m["d"].lower()
+    if d == "the" and m["of"]:
+        return text
+    return f"Put {d}{m['n'] or ''}{m['of'] or ''} {m['k']} {m['p']} {text[m.end() :]}"
+
+
+_STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _owner_then34r,
+    _surface_for34r,
+    _no_wait_to34r,
+    _said_better34r,
+    _still_need34r,
+    _no_good34r,
+    _not_one_other34r,
+    _at_table34r,
+    _rather_order34r,
+    _swap_order34r,
+    _both_something34r,
+    _that_is_a34r,
+    _leave_that34r,
+    _counted_want34r,
+    _final_answer34r,
+    _place_better34r,
+    _meant_to_get34r,
+    _after_all_along34r,
+    _first_said34r,
+    _placed_then34r,
+    _only_here34r,
+    _whichever_of34r,
+    _something_for34r,
+    _pick_whichever34r,
+    _either_named34r,
+    _both_like34r,
+    _one_for_each34r,
+    _split_so34r,
+    _lay_hands34r,
+    _lone_one34r,
+    _nobody_without34r,
+    _gets_handed34r,
+    _alike34r,
+    _we_have34r,
+    _one_one34r,
+    _pair_listed34r,
+    _where_live34r,
+    _anything_but34r,
+    _leaving_aside34r,
+    _only_gets34r,
+    _no_fuss34r,
+    _nothing_fancy34r,
+    _not_q_one34r,
+    _but_not_on34r,
+    _wants_to_use34r,
+    _one_by34r,
+)
+
+
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
@@ -22276,6 +23178,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS34T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
+    # session 34 (12r): blind32's choices, counts, negation, exclusions and corrections
+    *_STEPS34R,
     # session 33 (12r): blind31's choices, counts, negation, exclusions and corrections
     *_STEPS33R,
     # session 31 (12r): blind29's choices, counts, exclusions and corrections

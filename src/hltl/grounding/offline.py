@@ -554,7 +554,9 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                     raise cut
                 return node
             except GroundingError as rewritten:
-                if _readings(rewritten) and not _readings(best):
+                if (_readings(rewritten) and not _readings(best)) or _nothing_before34r(
+                    rewritten, best
+                ):
                     # "The patient is to be given the jug": the rewrite got as far as the name,
                     # and its refusal says which readings there are (the first only that it
                     # cannot parse)
@@ -2328,7 +2330,10 @@ class _Parser:
                 f"{frag.text!r}; " + "; ".join(self.lex.listing(k) for k in want)
             )
         if _is(np, "it", "them"):
-            raise GroundingError(f"{np.text!r} cannot be a recipient or place in {frag.text!r}")
+            raise GroundingError(
+                f"{np.text!r} cannot be a recipient or place in {frag.text!r}"
+                + _one_of_them34r(np, want, self.lex)
+            )
         cls = VERB_CLASS[frag.verb] if frag.verb else None
         if want == ("surface",):
             raise GroundingError(
@@ -3575,3 +3580,28 @@ def _continues(seps: list[str], k: int, word: str) -> bool:
         if s != "," and not (word == "or" and s == "and"):
             return False
     return False
+
+
+def _one_of_them34r(np: Item, want: tuple[str, ...], lexicon: Lexicon) -> str:
+    """Session 34 (12r): a recipient 'them' no one before it names ("just give them the bottle,
+    the one who asked") may be a singular 'they': the refusal names the people it could mean
+    (blind32 refused it without them)."""
+    people = [h.id for h in lexicon.scene.humans]
+    if np.text.lower() != "them" or "human" not in want or len(people) < 2:
+        return ""
+    names = [person_name(pid, lexicon) for pid in people]
+    said = ", ".join(names[:-1]) + " or " + names[-1]
+    return f": if it means one person, it could mean {said}; name the person"
+
+
+def _nothing_before34r(rewritten: GroundingError, best: GroundingError) -> bool:
+    """Session 34 (12r): a rewrite refused because its pronoun refers to nothing before it ("Give
+    it to Person B, the one by the window." → "Give it to Person B.") says more than a first
+    refusal without readings ('one' … is neither a verb …): the pronoun's readings are then added
+    to it (_more_readings33s; blind32 refused it without them)."""
+    if _readings(best) or _NOTHING_BEFORE.match(str(best)):
+        return False
+    return _NOTHING_BEFORE.match(str(rewritten)) is not None
+
+
+_NOTHING_BEFORE = re.compile(r"^'(?:it|that|this|them)' in .* refers to nothing before it$")

@@ -3782,8 +3782,11 @@ def _other_person_too(
         i != r.id and c == cats.get(r.id) for r in last.refs for i, c in cats.items()
     ):
         return
-    said = _people(out)
-    left = [h.id for h in lexicon.scene.humans if h.id not in said]
+    # the other person is the one besides the recipient in force, the last one said: one taken
+    # back by a repair is that other ('Give Person B, I mean Person A the bottle, or no, the
+    # other one': chips to A, or the bottle back to B; 12r's repairs fuzz, session 34)
+    said = next((x for x in reversed(out) if _humans(x)), None)
+    left = [h.id for h in lexicon.scene.humans if said and h.id not in {r.id for r in said.refs}]
     if said and len(left) == 1:
         raise GroundingError(
             f"{items[k].text!r} is unclear: it could mean {other.refs[0].id} or {left[0]}; name "
