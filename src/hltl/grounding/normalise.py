@@ -20485,7 +20485,9 @@ def _target_for34t(text: str, lexicon: Lexicon) -> str:
     """Session 34 (12t): a list of where things go said target first ('shelf for the chips, bob
     for the bottle, ta'): a clause that is a surface or a person, 'for', and one object of the
     scene is 'the chips on the shelf' / 'the bottle for Bob' — only when the words before 'for'
-    name one surface or one person alone and those after it one object alone."""
+    name one surface or one person alone and those after it one object alone, and no
+    correction's cue is said (session 34's `_surface_for34r` reads 'Shelf for the bottle, please,
+    or no, better still, straight to Alice')."""
 
     def turned(m: re.Match[str]) -> str:
         where, obj = m["where"], m["obj"]
@@ -20499,6 +20501,8 @@ def _target_for34t(text: str, lexicon: Lexicon) -> str:
             return f"{m['lead']}{the} for {where}"
         return m.group(0)
 
+    if _rx(r"\b(?:no|rather|sorry|actually|wait|instead)\b").search(text):
+        return text  # a correction's note ('Shelf for the bottle, …, or no, …'): 12r's rules
     return _sub(
         r"(?P<lead>^|,\s*)(?P<where>(?:the )?[a-z]+(?: [a-z]+)?) for (?P<obj>(?:the )?[a-z]+)"
         r"(?=\s*(?:,|[.!]?$))",
