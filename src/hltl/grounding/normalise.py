@@ -20176,24 +20176,6 @@ def _thing_cleft34t(text: str, lexicon: Lexicon) -> str:
     )
 
 
-def _both_want34t(text: str, lexicon: Lexicon) -> str:
-    """Session 34 (12t): a header sentence 'They both want something.' ('Both of them want
-    something.') before the list that says what: a count check, taken off when the scene has two
-    people and the rest hands exactly one object to each of them (anything else is left and
-    refused: 'They both want something. Bottle to Person A.')."""
-    m = _rx(
-        r"^(?:they both|both of them|the two of them) (?:want|need|get) (?:something|a thing|one "
-        r"thing)\s*[.!:]\s+"
-    ).match(text)
-    if m is None or len(lexicon.scene.humans) != 2:
-        return text
-    rest = text[m.end() :]
-    said = _handovers33t(rest, lexicon)
-    if said is None or sorted(t.target for t in said) != sorted(h.id for h in lexicon.scene.humans):
-        return text
-    return rest[:1].upper() + rest[1:]
-
-
 def _asked_first34t(text: str, lexicon: Lexicon) -> str:
     """Session 34 (12t): a question whether a person wants an object, then the request that hands
     'it' to 'her' ('Would Person B like the apple? Give it to her, yes?'): 'Give P the X' — only
@@ -20701,7 +20683,6 @@ _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _closers34t,
     _frames34t,
     _thing_cleft34t,
-    _both_want34t,
     _asked_first34t,
     _sorted_first34t,
     _only_one34t,
