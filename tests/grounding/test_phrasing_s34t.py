@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.world.scene import Scene, load_scene
+from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -15,36 +15,24 @@ from tests.grounding.helpers import (
     LAB,
     NURSERY,
     OFFICE,
-    ROOT,
     WARD,
     WORKSHOP,
-    assert_reads,
-    assert_refused,
 )
 
-
-def _scene(name: str) -> Scene:
-    return load_scene(ROOT / f"examples/scenes/{name}.yaml")
-
-
-F41 = _scene("4-1")  # bottle, chips, cup, apple; A, B
-F42 = _scene("4-2")  # bottle, chips, cup, apple; A, B
-DUO = _scene("2-2")  # bottle, chips; A, B
-T21 = _scene("2-1")  # bottle, chips; A, B
-L44 = _scene("4-4-line")  # bottle, chips, cup, apple; A, B
-SQ = _scene("4-4-square")  # bottle, chips, cup, apple; A, B
-T12 = _scene("1-2")  # bottle; A, B
-L24 = _scene("2-4-line")  # bottle, chips; A, B
-TWO = _scene("two_arms")  # bottle, chips (crisps); Alice, Bob
-FIG1 = _scene("fig1")  # bottle, chips (crisps); Alice, Bob; shelf
-
-
-def _assert_case(text: str, want: str | None, scene: Scene) -> None:
-    if want is None:
-        assert_refused(text, scene)
-    else:
-        assert_reads(text, want, scene)
-
+# the scenes of the numbered parts and the reading-or-refusal check, as session 33 (12t) has them
+from tests.grounding.test_phrasing_s33t import (
+    DUO,
+    F41,
+    F42,
+    FIG1,
+    L24,
+    L44,
+    SQ,
+    T12,
+    T21,
+    TWO,
+    _assert_case,
+)
 
 # -- a count after 'all … of the' or 'those' is the count with 'the' (and is checked) -----------
 
