@@ -20008,13 +20008,13 @@ def _formal33t(text: str, lexicon: Lexicon) -> str:
 
 
 def _counted_those34t(text: str, lexicon: Lexicon) -> str:
-    """Session 34 (12t): a count after 'all … of the' or the demonstrative 'those' is the count
-    with 'the': 'All three of the boxes want to go …' (opening the request, before 'want to go')
-    is 'the three boxes want to go …', 'Those three things that aren't the bottle, …' is 'The
-    three things that aren't the bottle, …'. Only before a plural that names objects of the
-    scene; the count is checked as for 'the three boxes' (a count the scene does not meet is
-    refused). 'Drop all three of the pens into the box' is 'Put the three pens into the box'
-    ('drop' before a place is a placement; 'drop all' alone drops the running tasks)."""
+    """Session 34 (12t): a count after the demonstrative 'those' is the count with 'the': 'Those
+    three things that aren't the bottle, …' is 'The three things that aren't the bottle, …'.
+    Only before a plural that names objects of the scene; the count is checked as for 'the three
+    things' (a count the scene does not meet is refused). 'Those two mugs want to go on …' is
+    12r's `_counted_want34r` (left to it). 'Drop all three of the pens into the box' is 'Put the
+    three pens into the box' ('drop' before a place is a placement; 'drop all' alone drops the
+    running tasks)."""
 
     def the(m: re.Match[str]) -> str:
         said = f"the {m['n']} {m['kind']}"
@@ -20023,11 +20023,10 @@ def _counted_those34t(text: str, lexicon: Lexicon) -> str:
         return said.capitalize() if m.group(0)[:1].isupper() else said
 
     out = _sub(
-        r"^all (?P<n>two|three|four|five|six) of (?:the|those) (?P<kind>[a-z]+s)(?= want to go\b)",
+        r"\bthose (?P<n>two|three|four|five|six) (?P<kind>[a-z]+s)\b(?! (?:want|need)s? to\b)",
         the,
         text,
     )
-    out = _sub(r"\bthose (?P<n>two|three|four|five|six) (?P<kind>[a-z]+s)\b", the, out)
     m = _rx(
         r"^drop all (?P<n>two|three|four|five|six) of the (?P<kind>[a-z]+s) (?=(?:into|onto|in|on) "
         r"the [a-z]+)"
