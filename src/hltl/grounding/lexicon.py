@@ -303,6 +303,20 @@ PHRASES: dict[tuple[str, ...], str] = {
     ("and", "nothing", "else"): "filler",
     ("nothing", "else"): "filler",
     ("but", "nothing", "else"): "filler",
+    # session 34 (lead): 'nothing (else/more) after that' closes the instruction; read as
+    # 'nothing else' and 'after that' it ordered the clauses before it (12c's deferrals fuzz:
+    # "The cup goes to Person B, the chips go to Person A, …. Nothing else after that." read
+    # cup>B ; chips>A)
+    **{
+        (*head, "after", *tail): "filler"
+        for head in (("nothing",), ("nothing", "else"), ("nothing", "more"))
+        for tail in (("that",), ("this",), ())
+    },
+    **{
+        ("and", *head, "after", *tail): "filler"
+        for head in (("nothing",), ("nothing", "else"), ("nothing", "more"))
+        for tail in (("that",), ("this",), ())
+    },
     ("'d", "like"): "verb:like",
     ("should", "get"): "verb:have",
     ("should", "have"): "verb:have",

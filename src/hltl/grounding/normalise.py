@@ -7022,6 +7022,18 @@ _RESTATE20 = re.compile(
 )
 
 
+# session 34 (lead): 'it' that stands for the object, not the empty subject of a remark on the
+# choice ('…, Alice or Bob, it doesn't matter' / 'it makes no odds' / 'it's all the same' / 'it's
+# up to you'): read as the object, that 'it' made a correction of the object look like the whole
+# request said again (12r's repairs fuzz: "Either of them can have the bottle, uh, no, the
+# chips, Alice or Bob, makes no odds." read chips>A | bottle>A | bottle>B)
+_REFERRING_IT34L = re.compile(
+    r"\bit\b(?!\s*(?:doesn't|does not|don't|won't|will not) matter\b|\s+makes? no (?:odds|"
+    r"difference)\b|(?:'s| is) (?:all )?(?:the same|one|fine|up to)\b)",
+    _F,
+)
+
+
 def _restated20(text: str, lexicon: Lexicon) -> str:
     """Session 20: a correction said as the whole request again ('Chips to A. Correction, chips
     to B, and the apple to A.', 'Chips to A, sorry, I said that wrong, chips to B.', 'Teddy on the
@@ -7045,10 +7057,12 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
         objects = {obj for _, obj, _ in said or ()}
         if not said or any(o.startswith("?") for o in objects):
             continue
-        if re.search(r"\bit\b", after, _F):
+        if _REFERRING_IT34L.search(after):
             if len(objects) != 1:
                 continue
-            after = _sub(r"\bit\b", f"the {_said(next(iter(objects)), lexicon)}", after)
+            after = _sub(
+                _REFERRING_IT34L.pattern, f"the {_said(next(iter(objects)), lexicon)}", after
+            )
         # the grammar alone first; the rewrites only where that is refused ('Bob. Chips to Bob.')
         again = _tasks_of(after, lexicon, normalise=False) or _tasks_of(after, lexicon)
         if again is None or not objects <= {obj for _, obj, _ in again} or again == said:
@@ -20940,7 +20954,11 @@ def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
     rewrite is read (offline.py _ruled_out_dropped31s)."""
     m = _TRAILING32S.search(text)
     if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
-        return f"{text[: m.start()].rstrip()}{m['end'] or '.'}"
+        # session 34 (lead): a statement said as a sentence of its own leaves the request its own
+        # end ('The stapler is for Priya? It's been a long morning.' stays a question: 12c's
+        # asides fuzz read stapler>A, where the question alone is refused)
+        own = text[m.start()] if text[m.start()] in ".!?" else ""
+        return f"{text[: m.start()].rstrip()}{own or m['end'] or '.'}"
     m = _BETWEEN32S.search(text)
     if m is not None and _inert_statement32s(m, text[: m.start()], lexicon):
         return f"{text[: m.start()]},{text[m.end() :]}"
