@@ -75,12 +75,9 @@ KNOWN_MISSES = frozenset(
         # plan naming an object the request does not ("to move the large box") may ask for it
         "Mrs Khan is our new patient: the blue blanket for her, please",
         "Tom wants to move the large box, can he have the gloves?",
-        # blind13 (tuned on in session 15): the speaker handing over to a named group ('to the
-        # night staff') is a remark the general rule does not take off ('to' may name a
-        # recipient); 'the wee box' ('wee' read as a size the scene does not have)
-        "Aye, if ye could put the wee box on the belt, that'd be magic, ta",
-        # blind13: 'Sorry' after a call and before a remark of two words ("Behind! Sorry, chef
-        # habit.") could correct; 'chef habit' opens with no speaker or hearer
+        # blind13 (tuned on in session 15; its 'wee box' reads since session 34): 'Sorry' after
+        # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
+        # 'chef habit' opens with no speaker or hearer
         "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
         # blind13: a remark with a negation about the object ('hasn't had his pills') and 'them'
         # for the pills
@@ -116,9 +113,8 @@ KNOWN_MISSES = frozenset(
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
         # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
-        # wait a moment … is going to'), 'the other one' after 'can keep', a remark then 'she'
-        # resumed, 'the N things that aren't X' as a subject, 'namely', 'leave the
-        # X where it is' after a correction, 'so hand it over' then another handover, gapping
+        # wait a moment … is going to'), 'the other one' after 'can keep', 'the N things that
+        # aren't X' as a subject, 'namely', 'leave the X where it is' after a correction, gapping
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
@@ -126,9 +122,6 @@ KNOWN_MISSES = frozenset(
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
-        "Alice needs the bottle, and Bob, for my next trick, wants the crisps.",
-        "Person B asked for the apple, so hand it over, and the cup to Person A.",
-        "Omar needs the banana, he's starving, and Emma, she needs the green cup, so do that too.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
@@ -159,7 +152,6 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "Bottle first. To Alice. After, chips to Bob.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
-        "Both of the mugs are Alice's, give her the pair.",
         "Give the sippy cup to Lilly.",
         "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
@@ -178,7 +170,6 @@ KNOWN_MISSES = frozenset(
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
         "Jess needs some screws, give her the tin.",
-        "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
         "chuck the blue pen in the box its cluttering my desk",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
@@ -281,29 +272,15 @@ KNOWN_MISSES = frozenset(
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
-        'Wash-up time: both cups into the sink, green and white alike.',
-        'The white plate on the rack, no, the counter, we need it for service.',
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         "There's just the single bottle, so hand that to Person A, she'll make it last.",
-        "Split the two things between them, one apiece, with the bottle going to Person B and the "
-        "chips to Person A.",
-        "Ava, the two blocks give her, please. Ameseginalehu.",
-        "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
         "Not apple. Bottle, for Person B, please. Madloba.",
-        "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
-        "it.",
-        "Priya wants the red pen — wait, no, she said black, the black pen.",
-        "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
-        "Could Person A have the cup first and, when she's done with it, the bottle?",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
-        "The two smaller boxes can join the big one on the pallet.",
-        "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
         "Any book not yet on the bookshelf wants shelving.",
         "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
-        "whichever ones closer to person a, give her that",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
@@ -315,49 +292,10 @@ KNOWN_MISSES = frozenset(
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         'A single bottle will do for Person A after her orienteering.',
-        "Two things going out: Person A has the chips and the bottle is Person B's.",
-        'Sit the teddy in the high chair, no, better down on the play mat with her.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
-        "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
-        'Person B gets the bottle and Person A gets the chips and the apple stays where it is.',
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
-        # blind32 (tuned on in session 34): refusals left at its one measurement (docs/grounding.md)
-        "Morning, hope the night shift was kind to you; if it's no bother, the red mug up on the "
-        "shelf.",
-        'Bottle to Alice, please, and ke a leboga, as my Setswana nan used to say.',
-        'Be a star and pass Person A the cup, would you, no rush at all.',
-        "Okay so, basically, Person A's after the bottle, kind of urgently, thanks a bunch.",
-        "Dear me, sorry to ask, could Omar have the banana whenever you're free?",
-        'Lemon on the worktop, if you please, and thanks from the potman and me.',
-        'According to the hedgelayer, Person A needs the cup and the chips are meant for Person B.',
-        "What I'd like is the apple going over to Person B.",
-        "Person A would love the bottle if it's going spare.",
-        'The chips are wanted over by Person B, the bagpiper says.',
-        'Person A is gasping for that bottle after the jog.',
-        "Person B's throat is dry so she needs the bottle, and Person A has a craving for the "
-        "chips.",
-        'The landlady tells me Mr Novak wants the salt shaker.',
-        'For his fractions worksheet Noah is going to need the ruler.',
-        'As for the crisps, Alice can have them; the bottle is for Bob.',
-        'That bottle goes to Person A, and Person B can take the chips off your hands.',
-        'Person B was the one who asked for the chips, so trot them over to her.',
-        'Can you see the bottle on your left? Person A has asked for it, take it over.',
-        "That bottle, Person A's been on about it since the saxophone lesson, so let her have it.",
-        "The tongs are what Lena's been waiting on, so over to her with them.",
-        "I've been on the trumpet all morning and I'm whacked so could you just take the bottle to "
-        "Person A for me",
-        "Torch to Jess she's under the van and the screws on the bench after that",
-        'bottle to person a please, from the stableman',
-        'person a has the chips coming, and person b is owed the bottle from earlier',
-        'Person A fancies the xpple after her walk.',
-        'Erson A has been at the bandstand all day and could use the bottle.',
-        "Sam's asked for the stalper to do the handouts.",
-        'Mind if Person A grabs the chips off you?',
-        'Could you see your way to getting the chips to Person A?',
-        'What about giving Person B the bottle, would that work?',
-        'Can you hand Person A the bottle, then?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -402,6 +402,161 @@ def test_blind19_and_blind20_kinds(text: str, want: str | None, scene: Scene) ->
     _assert_case(text, want, scene)
 
 
+# -- the same kinds in blind19 and blind24 to blind31 ---------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        # "she's got one" after a correction cue, the request after it for another person
+        (
+            "The stapler's for Priya. Oh hang on, she's got one, give it to Sam.",
+            "stapler>B",
+            OFFICE,
+        ),
+        ("The stapler's for Priya. Oh hang on, she's got one, give it to Priya.", None, OFFICE),
+        ("The magazine's for Mr Lee. Oh hang on, she's got one, give it to Mrs Khan.", None, WARD),
+        # 'alike' after a list without 'the'
+        (
+            "Wash-up time: both cups into the sink, green and white alike.",
+            "cup_green@sink & cup_white@sink",
+            LAB,
+        ),
+        ("Both cups into the sink, green and blue alike.", None, LAB),
+        # the reason after a correction
+        (
+            "The white plate on the rack, no, the counter, we need it for service.",
+            "plate_white@counter",
+            KITCHEN,
+        ),
+        ("The white plate on the rack, we need it for service.", None, KITCHEN),  # no correction
+        # 'Split the two things between them'
+        (
+            "Split the two things between them, one apiece, with the bottle going to Person B and "
+            "the chips to Person A.",
+            "bottle>B & chips>A",
+            T21,
+        ),
+        (
+            "Split the two things between them, one apiece, with the bottle going to Person B.",
+            None,
+            T21,
+        ),
+        (
+            "Split the two things between them, one apiece, with the bottle going to Person B and "
+            "the bottle to Person A.",
+            None,
+            T21,
+        ),
+        # 'Not the X for P, he's after Y'
+        (
+            "Not the bottle for Bob, he said so twice, he's after a packet of crisps.",
+            "chips>B",
+            TWO,
+        ),
+        ("Not the bottle for Bob, he's after a packet of biscuits.", None, TWO),
+        ("Not the jug for Mrs Khan, he's after the magazine.", None, WARD),  # 'he' is not Mrs Khan
+        # 'straight to P with it' after a correction
+        (
+            "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with "
+            "it.",
+            "bottle>A",
+            FIG1,
+        ),
+        (
+            "Pop the bottle up on the shelf — actually, on second thoughts, straight to Carol with "
+            "it.",
+            None,
+            FIG1,
+        ),
+        # 'she said black, the black pen'
+        (
+            "Priya wants the red pen — wait, no, she said black, the black pen.",
+            "pen_black>A",
+            OFFICE,
+        ),
+        ("Priya wants the red pen — wait, no, she said green, the green pen.", None, OFFICE),
+        # why of the surface corrected away
+        (
+            "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint.",
+            "ruler@shelf",
+            CLASSROOM,
+        ),
+        (
+            "The ruler goes on the desk. Sorry, the bookshelf, the bookshelf's covered in paint.",
+            None,
+            CLASSROOM,
+        ),
+        # 'can join the big one on S' when the big one starts there
+        (
+            "The two smaller boxes can join the big one on the pallet.",
+            "box_small@pallet & box_medium@pallet",
+            DEPOT,
+        ),
+        ("The two smaller boxes can join the big one on the conveyor.", None, DEPOT),
+        # why the thing is left out
+        (
+            "Don't bother with the bottle, she's brought a flask, just the chips to Person A.",
+            "chips>A",
+            DUO,
+        ),
+        # 'whichever one's closer to P, give her that'
+        ("whichever ones closer to person a, give her that", "bottle>A | chips>A", L24),
+        ("whichever ones closer to person c, give her that", None, L24),
+        # 'and the X stays where it is'
+        (
+            "Person B gets the bottle and Person A gets the chips and the apple stays where it is.",
+            "bottle>B & chips>A",
+            F42,
+        ),
+        # the bottle is asked for and said to stay
+        (
+            "Person B gets the bottle and Person A gets the chips and the bottle stays where it "
+            "is.",
+            None,
+            F42,
+        ),
+        # "It's P who's getting X, not Q, <remark>"
+        (
+            "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier.",
+            "cup>B",
+            L44,
+        ),
+        (
+            "It's Person B who's getting the cup, not Person A, the apple got it wrong earlier.",
+            None,
+            L44,
+        ),
+        # 'better down on S (with her)' after a correction
+        (
+            "Sit the teddy in the high chair, no, better down on the play mat with her.",
+            "teddy@mat",
+            NURSERY,
+        ),
+        ("Sit the teddy in the high chair, no, better down on the floor with her.", None, NURSERY),
+        # 'Over to P with X' before a correction of the object
+        (
+            "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after.",
+            "bottle>B",
+            DUO,
+        ),
+        ("Over to Person B with the chips, no, I mean the banana.", None, DUO),
+        # blind18: 'Both of the mugs are Alice's, give her the pair.'
+        ("Both of the mugs are Alice's, give her the pair.", "mug_red>A & mug_blue>A", CELL),
+        ("Both of the cups are Alice's, give her the pair.", None, CELL),  # one cup
+        # 'Two things going out:' and 'the bottle is Person B's' under it
+        (
+            "Two things going out: Person A has the chips and the bottle is Person B's.",
+            "chips>A & bottle>B",
+            T21,
+        ),
+        ("Three things going out: Person A has the chips and the bottle is Person B's.", None, T21),
+    ),
+)
+def test_blind24_to_blind31_kinds(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 # -- refusals that name their readings ------------------------------------------------------------
 
 

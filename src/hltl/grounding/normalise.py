@@ -11170,6 +11170,783 @@ _STEPS33: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 34 (engineer 12): blind32's kinds (politeness, wants, pronouns and ellipsis, splits,
+# lower case, typos, questions); docs/grounding.md, "Session 34 (engineer 12)" -----------------
+
+# The speaker's own words said as a comma part or sentence of their own (a closed list, as
+# _PARTS33): a wish for the hearer ('hope the night shift was kind to you', 'hope you're well'),
+# that it is not pressing ('no rush at all'), how pressing ('kind of urgently'), an exclamation
+# ('Dear me'). Each names nothing and changes nothing asked.
+_PARTS34 = re.compile(
+    r"(?:i )?hope (?:the|your) (?:[a-z]+ ){0,2}[a-z]+ (?:was|is|has been|'s been) (?:kind|good|"
+    r"easy|gentle) (?:to|on) you|(?:i )?hope you(?:'re| are) (?:well|keeping well|doing well)|"
+    r"(?:there's )?no (?:rush|hurry)(?: at all| whatsoever)|"
+    r"(?:kind of|sort of|kinda|quite|rather|fairly|pretty|a bit) urgently|"
+    r"(?:oh )?dear me",
+    _F,
+)
+
+
+def _speaker_parts34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: a comma part or sentence that is wholly one of the closed list above taken
+    off, when it names nothing and what is left names something."""
+    if not _PARTS34.search(text):
+        return text
+    return _stretches_dropped(
+        text,
+        lambda c: bool(_PARTS34.fullmatch(c.strip())) and _names_nothing(c, lexicon),
+        lexicon,
+    )
+
+
+# thanks closing the request, said from the speaker and someone of a trade ("…, and thanks from
+# the potman and me."): the speaker is no recipient, the trade no person of the scene
+_THANKS_FROM34 = re.compile(
+    r",\s*(?:and\s+)?(?:thanks|thank you|cheers|many thanks)(?: very much| a lot)? from "
+    r"(?:(?:the|our|my) (?P<trade>[a-z]+) and (?:me|us)|(?:me|us) and (?:the|our|my) "
+    r"(?P<trade2>[a-z]+))(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _thanks_from34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing thanks above taken off when the trade could only describe a
+    person (_trade_words29) and what is left names something."""
+    m = _THANKS_FROM34.search(text)
+    if m is None or not _trade_words29(m["trade"] or m["trade2"], lexicon):
+        return text
+    rest = text[: m.start()]
+    return rest + m["end"].strip() if _names(rest, lexicon) else text
+
+
+# a courtesy (of _COURTESY24, or English thanks) said with whose word it was ("…, and ke a leboga,
+# as my Setswana nan used to say."): the courtesy and the saying go together
+_AS_USED_TO34 = re.compile(
+    r",\s*(?P<court>[^,.;!?]+?),\s*as (?:my|our) (?:[A-Z][a-z]+ )?[a-z]+ (?:used to|would|"
+    r"always|often) say(?P<end>\s*[.!]?)\s*$"
+)
+_THANKS34 = re.compile(
+    r"(?:and\s+)?(?:thanks|thank you|cheers|ta|many thanks)(?: very much| a lot| so much)?", _F
+)
+
+
+def _as_used_to34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: a closing courtesy and the saying above taken off, when the courtesy is one of
+    the courtesy list (or English thanks) naming nothing and what is left names something."""
+    if " say" not in text:
+        return text
+    m = _AS_USED_TO34.search(text)
+    if m is None:
+        return text
+    court = m["court"].strip()
+    if not (_COURTESY_STRETCH24.fullmatch(court) or _THANKS34.fullmatch(court)):
+        return text
+    if not _names_nothing(_unmarked27(court), lexicon) or not _names(text[: m.start()], lexicon):
+        return text
+    return text[: m.start()] + m["end"].strip()
+
+
+# wants said by an idiom: a closed list (docs/grounding.md, "Session 34 (engineer 12)"), each
+# said plainly as a want the grammar reads, before a determiner (as _IDIOMS33)
+_IDIOMS34: tuple[tuple[str, str], ...] = (
+    # "Person A is gasping for that bottle" (thirsty for it)
+    (rf"(?:\s+is|'s|\s+was) (?:absolutely |just |really )?gasping for\b(?= {_DET32}\b)", " wants"),
+    # "Person A has a craving for the chips", "… has got a craving for"
+    (rf"(?:\s+has|'s)(?: got)? (?:a|such a|a real|a big) craving for\b(?= {_DET32}\b)", " wants"),
+    # "The chips are wanted over by Person B": wanted (over) where Person B is
+    (r"\s+(?P<be>is|are) wanted over by\b(?= [A-Z])", r" \g<be> wanted by"),
+    # "the chips are meant for Person B": who they are for
+    (r"\s+(?P<be>is|are) (?:meant|intended) for\b(?= [A-Z])", r" \g<be> for"),
+)  # fmt: skip
+
+
+def _idioms34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the idioms above, said plainly: a want's object up to a mark must be objects
+    of the scene only, and no pronoun after it may hand that person something else (as
+    _idioms33); 'wanted over by' and 'meant for' need one person of the scene after them, the
+    object before them (its sentence's start) objects only."""
+    for pattern, plain in _IDIOMS34:
+        m = _rx(pattern).search(text)
+        if m is None:
+            continue
+        if plain == " wants":
+            what = re.split(
+                r"[,.;!?]|\s+(?:and|but|so|while|after)\s+", text[m.end() :], maxsplit=1
+            )[0]
+            if not _things31(what, lexicon) or re.search(
+                r"\b(?:her|him|them)\b", text[m.end() :], _F
+            ):
+                continue
+        else:
+            who = re.split(r"[,.;!?]|\s+(?:and|but|so)\s+", text[m.end() :], maxsplit=1)[0]
+            what = re.split(r"[,.;!?]|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
+            if not _only_person(who, lexicon) or not _things31(what, lexicon):
+                continue
+        text = text[: m.start()] + m.expand(plain) + text[m.end() :]
+    return text
+
+
+# "What I'd like is the apple going over to Person B.": the want said as a pseudo-cleft, its focus
+# the object and where it goes ("I'd like the apple going over to Person B" reads)
+_WHAT_LIKE34 = re.compile(
+    rf"^what (?P<who>i'd|i would|we'd|we would) (?P<v>like|love|want) is (?={_DET32}\b)", _F
+)
+
+
+def _what_like34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the pseudo-cleft above said plainly, when its focus up to 'going' is objects
+    of the scene only and a person or surface follows (the grammar reads the rest)."""
+    m = _WHAT_LIKE34.match(text)
+    if m is None:
+        return text
+    focus = re.split(r"\s+(?:going|to go|sent|taken|brought|put|delivered)\b", text[m.end() :])
+    if len(focus) < 2 or not _things31(focus[0], lexicon):
+        return text
+    return f"{m['who']} {m['v']} {text[m.end() :]}"
+
+
+# "… if it's going spare": whether the thing is free for the taking, which the scene's own
+# thing is (the request is for it): a closed list of such conditions, after a want of one object
+_SPARE34 = re.compile(
+    r"\s+if (?:it's|it is|they're|they are) (?:going spare|going begging|spare|not being used|"
+    r"not needed)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_WANTS_ONE34 = re.compile(
+    r"\b(?:would love|would like|wants|needs|fancies|could use|would welcome) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?)$",
+    _F,
+)
+
+
+def _if_spare34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the condition above taken off when it closes a sentence whose want's object
+    (its last words) is one object of the scene (or several, for 'they')."""
+    m = _SPARE34.search(text)
+    if m is None:
+        return text
+    w = _WANTS_ONE34.search(text[: m.start()])
+    if w is None or not _things31(w["x"], lexicon):
+        return text
+    one = len(_ids(w["x"], lexicon, "object")) == 1 and not w["x"].lower().startswith("those")
+    if one != bool(re.match(r"\s+if it", m[0], _F)):
+        return text
+    return text[: m.start()] + m["end"].strip()
+
+
+# "Person A fancies the apple after her walk.": what made the person want it, said after the
+# want of a closed list of doings (not an order: no task is said after it)
+_AFTER_DOING34 = re.compile(
+    r"\b(?P<want>(?:wants|needs|fancies|could use|would love|would like|is after|'s after) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?)) after (?:the|her|his|their|a|that) "
+    r"(?:long |big |hard |early )?"
+    r"(?:jog|walk|run|swim|hike|ride|workout|shift|match|game|climb|cycle|dance|practice|"
+    r"rehearsal|training|session|drive|trek)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _after_doing34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'after the jog' taken off after a want of objects only, closing the
+    instruction."""
+    if " after " not in text:
+        return text
+    m = _AFTER_DOING34.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
+# "The landlady tells me Mr Novak wants …": the request reported from someone of a trade (as
+# _trade_says33's 'says')
+_TRADE_TELLS34 = re.compile(
+    r"^(?:the|our|my) (?P<trade>[a-z]+) (?:tells|told|has told|'s told) (?:me|us),? (?:that )?"
+    r"(?=[A-Z])",
+    _F,
+)
+# "According to the hedgelayer, …": whose word the request is, opening it (_according33 takes
+# it off closing)
+_ACCORDING_OPEN34 = re.compile(r"^according to (?:the|our|my) (?P<trade>[a-z]+),\s*(?=[A-Z])", _F)
+
+
+def _trade_tells34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the opening report above taken off when the trade could only describe a
+    person and what follows has no word for the speaker and no person pronoun (as
+    _trade_says33)."""
+    for rx in (_TRADE_TELLS34, _ACCORDING_OPEN34):
+        m = rx.match(text)
+        if m is None or not _trade_words29(m["trade"], lexicon):
+            continue
+        rest = text[m.end() :]
+        counted = re.sub(r"\b(?:both|all|either|each) of them\b", "", rest, flags=_F)
+        if not _SPEAKER_OR_PRONOUN29.search(counted):
+            return rest
+    return text
+
+
+# "For his fractions worksheet Noah is going to need the ruler.": what the person needs it for,
+# fronted, its pronoun the person named right after it
+_FOR_HIS34 = re.compile(
+    r"^[Ff]or (?P<pron>his|her|their) (?P<what>[a-z]+(?: [a-z]+){0,2}),? (?P<p>[A-Z][a-z]+"
+    r"(?: [A-Z][a-z]*)?) (?=(?:is going to need|is gonna need|will need|needs|wants|is after|"
+    r"would like)\b)"
+)
+
+
+def _for_his34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the fronted purpose above taken off when its words name nothing and ask
+    nothing but the pronoun, P is one person of the scene and the pronoun may be P."""
+    m = _FOR_HIS34.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if not _asks_nothing29(m["what"], lexicon) or not _names_nothing(m["what"], lexicon):
+        return text
+    if not _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon):
+        return text
+    return text[m.start("p") :]
+
+
+# "As for the crisps, Alice can have them; …": the object said first as the topic, then the clause
+# that says who gets it, pointing back with a pronoun
+_AS_FOR34 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)as (?:for|regards|to) (?P<x>(?:the|that|this|those|these) [^,.;!?]+?),"
+    r"\s*(?P<rest>[^.;!?]*)",
+    _F,
+)
+
+
+def _as_for34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'As for X, …' is 'X, …' (a topic the grammar reads: "The crisps, Alice can
+    have them"), when X is objects of the scene only and the clause after it says 'them' (X more
+    than one thing) or 'it' (one)."""
+    m = _AS_FOR34.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    many = len(_ids(m["x"], lexicon, "object")) > 1 or m["x"].lower().endswith("s")
+    pron = r"\bthem\b" if many else r"\bit\b"
+    if not re.search(pron, m["rest"], _F):
+        return text
+    lead = re.sub(r"as (?:for|regards|to) $", "", text[: m.start("x")], flags=_F)
+    return f"{lead}{text[m.start('x') :]}"
+
+
+# "Person B can take the chips off your hands": P has them (the hearer is rid of them)
+_OFF_HANDS34 = re.compile(
+    rf"\b(?P<v>can|could|will|may) take (?P<x>{_DET32} [a-z][a-z ]*?) off (?:your|our|my) hands\b",
+    _F,
+)
+# "Person B was the one who asked for the chips": the want said as 'the one who'
+_THE_ONE_WHO34 = re.compile(
+    r"(?P<p>\b[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:was|is|'s) the one (?:who|that) "
+    r"(?P<v>asked for|ordered|requested|wanted|wants|needs|needed)(?= (?P<x>(?:the|that|this|"
+    r"those|these) [a-z][a-z ]*?)(?:[,.;!?]|\s+(?:and|so|but)\b|$))"
+)
+# "… so trot them over to her": carrying, said by a verb of going quickly with a thing (as
+# _carried32's 'run X down to'), its object a pronoun or objects of the scene
+_TROT34 = re.compile(
+    rf"\b(?:trot|scoot|nip|zip|run|whizz) (?P<x>it|them|{_DET32} [a-z][a-z ]*?) "
+    r"(?:over|down|up|across|along|round) to\b",
+    _F,
+)
+
+
+def _handover_frames34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'P can take X off your hands' is 'P can have X'; 'P was the one who asked for
+    X' is 'P asked for X' (P one person, X objects only up to a mark); 'trot X over to' is 'take
+    X over to' (X 'it', 'them' or objects only)."""
+    if " hands" in text:
+        text = _OFF_HANDS34.sub(
+            lambda m: f"{m['v']} have {m['x']}" if _things31(m["x"], lexicon) else m[0], text
+        )
+    if " the one " in text:
+        text = _THE_ONE_WHO34.sub(
+            lambda m: (
+                f"{m['p']} {m['v']}"
+                if _only_person(m["p"], lexicon) and _things31(m["x"], lexicon)
+                else m[0]
+            ),
+            text,
+        )
+    return _TROT34.sub(
+        lambda m: (
+            f"take {m['x']} over to"
+            if m["x"].lower() in ("it", "them") or _things31(m["x"], lexicon)
+            else m[0]
+        ),
+        text,
+    )
+
+
+# "Can you see the bottle on your left? Person A has asked for it, take it over.": a question that
+# points the hearer at one object, then a sentence that says 'it' of it
+_SEE_THE34 = re.compile(
+    rf"^(?:can|do) you see (?P<x>{_DET32} [a-z][a-z ]*?)(?: (?:on|to) your (?:left|right)| over "
+    r"there| there| in front of you| behind you| next to you)?\?\s+(?P<rest>[^.?!]+[.!]?)\s*$",
+    _F,
+)
+
+
+def _see_the34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the pointing question above taken off and the first 'it' of the sentence
+    after it said as the object, when it is one object of the scene (by its words alone) and
+    that sentence names no other object."""
+    if "see " not in text.lower():
+        return text
+    m = _SEE_THE34.match(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    if len(_ids(m["x"], lexicon, "object")) != 1 or _ids(m["rest"], lexicon, "object"):
+        return text
+    if not re.search(r"\bit\b", m["rest"]):
+        return text
+    return re.sub(r"\bit\b", m["x"].lower(), m["rest"], count=1)
+
+
+# "Person A's been on about it since the saxophone lesson": since when the person has wanted it
+_SINCE_WANTED34 = re.compile(
+    r"(?P<want>(?:'s|\s+has) been (?:going on|on|banging on|asking|going) (?:about|for|on about) "
+    r"(?:it|them)) since (?:the|her|his|their|this|that) (?:[a-z]+ ){0,2}(?:lesson|class|"
+    r"morning|meeting|match|game|break|lunch|practice|rehearsal|session|shift|walk|visit)"
+    r"(?=\s*[,.;!?]|\s*$)",
+    _F,
+)
+
+
+def _since_wanted34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'since the <event>' taken off after 'been on about it' when its words name
+    nothing of the scene."""
+    if " since " not in text:
+        return text
+    return _SINCE_WANTED34.sub(
+        lambda m: m["want"] if _names_nothing(m[0][len(m["want"]) :], lexicon) else m[0], text
+    )
+
+
+# "The tongs are what Lena's been waiting on, so over to her with them.": the want said as a
+# pseudo-cleft with the object first, then the handover said without its verb
+_WHAT_WAITING34 = re.compile(
+    r"^(?P<x>(?:[Tt]he|[Tt]hat|[Tt]his|[Tt]hose|[Tt]hese) [a-z][a-z ]*?) (?:is|are|'s) "
+    r"(?:just )?what "
+    r"(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?P<v>(?:'s| has) been (?:waiting (?:on|for)|after|"
+    r"asking for|wanting)|(?:'s| is) (?:waiting (?:on|for)|after)| wants| needs| asked for)"
+    r"(?=\s*[,.;!?]|\s+(?:and|so)\b|\s*$)",
+)
+_OVER_WITH34 = re.compile(
+    r"\b(?P<so>so |and )?over to (?P<who>her|him|them) with (?P<x>it|them)(?=\s*[.!]?\s*$)", _F
+)
+
+
+def _what_waiting34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'X are what P's been waiting on' is 'P wants X' (X objects only, P one
+    person); then 'over to her with them' closing it is 'take them over to her'."""
+    m = _WHAT_WAITING34.match(text)
+    if m is not None and _things31(m["x"], lexicon) and _only_person(m["p"], lexicon):
+        text = f"{m['p']} wants {m['x']}{text[m.end() :]}"
+    return _OVER_WITH34.sub(lambda m: f"{m['so'] or ''}take {m['x']} over to {m['who']}", text)
+
+
+# "I've been on the trumpet all morning and I'm whacked so could you …": the speaker's remarks run
+# on before the request, joined by 'and' and closed by 'so'
+_RUN_ON_REMARKS34 = re.compile(
+    r"^(?P<said>(?:i|i'm|i've|i am|i have|we|we're|we've)\b[^,.;:!?]*?)\s+so\s+"
+    r"(?=(?:could|can|would|will) you\b|please\b)",
+    _F,
+)
+_ALL_DAY34 = re.compile(r"\b(?:all|the whole) (?:day|morning|afternoon|evening|night|week)\b", _F)
+
+
+def _run_on_remarks34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the run-on remarks above taken off when each of the clauses 'and' joins is a
+    remark about the speaker (_remark_clause; how long, 'all morning', said of it), and what is
+    left names something."""
+    m = _RUN_ON_REMARKS34.match(text)
+    if m is None:
+        return text
+    clauses = re.split(r"\s+and\s+", m["said"], flags=_F)
+    if not all(_remark_clause(_ALL_DAY34.sub("", c), lexicon) for c in clauses):
+        return text
+    rest = text[m.end() :]
+    return rest if _names(rest, lexicon) else text
+
+
+# "Torch to Jess she's under the van and …": where the person just named is, run on after the
+# name (a remark: it names nothing and asks nothing)
+_WHERE_SHE_IS34 = re.compile(
+    r"(?P<p>\b[A-Z][a-z]+(?: [A-Z][a-z]*)?),? (?P<pron>she|he)(?:'s| is) (?:under|in|at|by|behind|"
+    r"up|out in|round|on) the (?P<place>[a-z]+(?: [a-z]+)?)(?=\s+and\b|\s*[,.;!?]|\s*$)"
+)
+
+
+def _where_she_is34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the remark above taken off when P is one person of the scene the pronoun may
+    be, and the place names nothing and asks nothing."""
+    if "'s " not in text and " is " not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _asks_nothing29(m["place"], lexicon):
+            return m[0]
+        if not _names_nothing(m["place"], lexicon):
+            return m[0]
+        return m["p"] if _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon) else m[0]
+
+    return _WHERE_SHE_IS34.sub(dropped, text)
+
+
+# ", from the stableman": whose request it is, by their trade, closing it
+_FROM_TRADE34 = re.compile(r",\s*from (?:the|our|my) (?P<trade>[a-z]+)(?P<end>\s*[.!]?)\s*$", _F)
+
+
+def _from_trade34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing part above taken off when the trade could only describe a person
+    and what is left names a person (as _according33)."""
+    if "from " not in text:
+        return text
+    return _trade_closing_dropped(_FROM_TRADE34, text, lexicon)
+
+
+# "person a has the chips coming": the person is to get them; "… is owed the bottle from earlier":
+# since when it is owed
+_HAS_COMING34 = re.compile(
+    rf"\b(?:has|'s got|has got) (?P<x>{_DET32} [a-z][a-z ]*?) coming(?: (?:to (?:her|him|them)|"
+    r"her way|his way|their way))?(?=\s*[,.;!?]|\s+and\b|\s*$)",
+    _F,
+)
+_OWED_FROM34 = re.compile(
+    rf"\b(?P<owed>(?:is|'s) owed (?P<x>{_DET32} [a-z][a-z ]*?)) from (?:earlier|before|"
+    r"yesterday|last time|this morning)(?=\s*[,.;!?]|\s*$)",
+    _F,
+)
+
+
+def _has_coming34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'has X coming' is 'gets X', and 'from earlier' after 'is owed X' is taken off
+    (X objects only)."""
+    if " coming" in text:
+        text = _HAS_COMING34.sub(
+            lambda m: f"gets {m['x']}" if _things31(m["x"], lexicon) else m[0], text
+        )
+    if " owed " in text:
+        text = _OWED_FROM34.sub(lambda m: m["owed"] if _things31(m["x"], lexicon) else m[0], text)
+    return text
+
+
+# "Erson A has been at the bandstand all day and could use the bottle": where the person has been
+# (naming nothing), said before the want it explains
+_BEEN_AT34 = re.compile(
+    r"(?P<p>\b[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:has|'s) been (?P<where>(?:at|in|on|out in|"
+    r"up at|down at|out at|over at) the [a-z]+(?: [a-z]+)?) (?:all day|all morning|"
+    r"all afternoon|for hours|since dawn) and "
+    r"(?=(?:could use|needs|wants|would love|would like|could do with)\b)",
+)
+
+
+def _been_at34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the clause above taken off (the person is the want's subject) when the place
+    names nothing and asks nothing; P is left for the grammar to read (a name with a slip)."""
+    if " been " not in text:
+        return text
+    m = _BEEN_AT34.search(text)
+    if m is None or not _names_nothing(m["where"], lexicon):
+        return text
+    if not _asks_nothing29(m["where"].split(" the ", 1)[1], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['p']} {text[m.end() :]}"
+
+
+# "Sam's asked for the stapler to do the handouts.": what the person wants it for, closing the
+# want (a doing of a closed list, on something the scene does not name)
+_TO_DO34 = re.compile(
+    rf"\b(?P<want>(?:asked for|wants|needs|is after|'s after|would like) (?P<x>{_DET32} "
+    r"[a-z][a-z ]*?)) to (?:do|finish|mark|sort|fix|write|staple|make) (?:the|her|his|their|"
+    r"some) (?P<what>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _to_do34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the purpose above taken off when X is objects only and its words name
+    nothing and ask nothing."""
+    if " to " not in text:
+        return text
+    m = _TO_DO34.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    if not _names_nothing(m["what"], lexicon) or not _asks_nothing29(m["what"], lexicon):
+        return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
+# "Mind if Person A grabs the chips off you?": asking leave for P to take X is asking that P get X
+_MIND_IF34 = re.compile(
+    r"^(?:do you |would you )?mind if (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?P<v>grabs|takes|has|"
+    rf"borrows|gets|nabs) (?P<x>{_DET32} [a-z][a-z ]*?)(?P<off> off you)?\s*\?\s*$",
+    _F,
+)
+
+
+def _mind_if34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the question above is 'Can P have X?' (P one person, X objects only), the
+    whole instruction."""
+    m = _MIND_IF34.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _things31(m["x"], lexicon):
+        return text
+    return f"Can {m['p']} have {m['x']}?"
+
+
+# "Could you see your way to getting the chips to Person A?": whether the hearer can manage it
+_SEE_WAY34 = re.compile(
+    r"^(?P<ask>(?:could|can|would) you) (?:possibly )?see your way(?: clear)? to "
+    r"(?P<v>[a-z]+)ing\b",
+    _F,
+)
+# "What about giving Person B the bottle, would that work?": the hearer asked whether it suits
+_WOULD_WORK34 = re.compile(
+    r"^(?P<q>(?:what|how) about [a-z]+ing\b[^,.;!?]*?),\s*(?:would|does|will|is) that (?:work|do|"
+    r"be (?:okay|ok|alright|all right|possible|fine)|suit you)\s*\?\s*$",
+    _F,
+)
+# "Can you hand Person A the bottle, then?": 'then' closing a question that is the whole request
+# ('in that case'), no order
+_THEN_ASKED34 = re.compile(r"^(?P<q>(?:can|could|would|will) you [^,.;!?]+?),\s*then\s*\?\s*$", _F)
+
+
+def _questions34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: 'see your way to -ing' is the verb itself; ', would that work?' after 'what
+    about -ing …' is taken off; ', then?' closing a one-sentence question is taken off (each when
+    the words left name something)."""
+    m = _SEE_WAY34.match(text)
+    if m is not None:
+        said = f"{m['ask']} {_base(m['v'])}{text[m.end() :]}"
+        if _names(said, lexicon):
+            text = said
+    m = _WOULD_WORK34.match(text)
+    if m is not None and _names(m["q"], lexicon):
+        text = f"{m['q']}?"
+    m = _THEN_ASKED34.match(text)
+    if m is not None and _names(m["q"], lexicon):
+        text = f"{m['q']}?"
+    return text
+
+
+# A remark closing the instruction as a comma part ("Give Person A the bottle, hope the night shift
+# was kind to you."): the same test as a sentence of its own (_inert_sentence: it names nothing,
+# no word of it could name, count, choose, negate, order, delay, condition, correct, point back or
+# hand over, it is shaped as no request; the lead's note, session 34: one test for the kind, not a
+# pattern per remark), opening as session 16's remarks about the hearer or the moment do
+# (_REMARK_SUBJECT: 'hope', 'you', 'your', 'have a'; a comma part without its own subject may say
+# how or when the request is to be done: ", at your discretion", ", in a bit"), and no word that
+# takes the request back, leaves it to the hearer, says when or how fast, which end of the order,
+# or the speaker
+_TRAILING_HELD34 = re.compile(
+    r"\b(?:kidding|joking|thoughts?|second|typo|nope|nah|asap|now|soon|today|yesterday|week|"
+    r"hours?|minutes?|mins?|moment|order|reverse|round|around|depend\w*|quick(?:ly)?|fast|"
+    r"slow(?:ly)?|urgent(?:ly)?|end|start|beginning|finish|please|yet|still|sure|maybe|perhaps|"
+    r"think|guess|unsure|doubt|mine|me|us|we|our|my|i|discretion|choice|call|decide\w*|"
+    r"decision|option\w*|prefer\w*|fit|suits?|up|bit|while|shortly|eventually|sometime|later|"
+    r"leisure|weekend|morning|afternoon|evening|noon|midday|midnight|clock|tonight|monday|"
+    r"tuesday|wednesday|thursday|friday|saturday|sunday)\b",
+    _F,
+)
+_TRAILING34 = re.compile(r",\s*(?P<said>[^,;:.!?]+?)(?P<end>\s*[.!]?)\s*$")
+
+
+def _trailing_remark34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing comma part above taken off when it opens as a remark, is inert by
+    both tests and of three words or more, and what is left, one sentence, names a person or
+    surface."""
+    m = _TRAILING34.search(text)
+    if m is None or len(m["said"].split()) < 3:
+        return text
+    said = m["said"]
+    if not _REMARK_SUBJECT.match(said.strip()) or _TRAILING_HELD34.search(said):
+        return text
+    if not _inert_sentence(said, lexicon):
+        return text
+    rest = text[: m.start()]
+    if re.search(r"[.!?;:]", rest) or not _ids(rest, lexicon, "human") | _ids(
+        rest, lexicon, "surface"
+    ):
+        return text
+    return rest + m["end"].strip()
+
+
+# "the wee box" (Scots and Irish English: small), "the little teddy": a size said by a word the
+# scene's names do not use. Read as the scene's own size word when the scene names an object
+# '<size> <noun>' of that size class (depot: 'small box'), or taken off when the noun names one
+# object alone and no object of it is named by size (a description, not a choice)
+_SIZE_WORD34 = re.compile(
+    r"\b(?P<det>the|that|this|your|her|his|their) (?P<size>wee|little|tiny|teeny|small|big|huge|"
+    r"massive|large) (?P<noun>[a-z]+)\b",
+    _F,
+)
+_SIZE_CLASS34 = {
+    **dict.fromkeys(("wee", "little", "tiny", "teeny", "small"), ("small", "little")),
+    **dict.fromkeys(("big", "huge", "massive", "large"), ("large", "big")),
+}
+
+
+def _size_words34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the size words above (a closed list), as said there."""
+    if not _SIZE_WORD34.search(text):
+        return text
+    aliases = {a.lower() for o in lexicon.scene.objects for a in (o.id, *o.aliases)}
+
+    def plain(m: re.Match[str]) -> str:
+        noun, size = m["noun"].lower(), m["size"].lower()
+        if noun in ("one", "ones", "uns", "un") or f"{size} {noun}" in aliases:
+            return m[0]
+        sized = [w for w in _SIZE_CLASS34[size] if f"{w} {noun}" in aliases]
+        if sized:
+            return f"{m['det']} {sized[0]} {m['noun']}"
+        others = {w for ws in _SIZE_CLASS34.values() for w in ws}
+        if any(f"{w} {noun}" in aliases for w in others):
+            return m[0]  # the noun's objects are named by another size: which one is meant?
+        ids = _ids(f"the {noun}", lexicon)
+        if len(ids) != 1 or not _only_kind(f"the {noun}", lexicon, "object"):
+            return m[0]
+        return f"{m['det']} {m['noun']}"
+
+    return _SIZE_WORD34.sub(plain, text)
+
+
+# "… so hand it over, and the cup to Person A.": the handover of 'it' closed by 'over', then a
+# clause of its own with its recipient (the grammar had read 'it' and the cup both to Person A)
+_OVER_AND34 = re.compile(
+    r"\b(?P<first>(?:hand|give|pass|take|bring) (?:it|them) over),\s+and (?P<x>(?:the|that|this) "
+    r"[a-z][a-z ]*?) (?P<to>to (?P<p>[A-Z][A-Za-z ]*?))(?P<end>\s*[.!]?)\s*$"
+)
+
+
+def _over_and34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the closing clause above said as a sentence of its own, when X is objects only
+    and P one person."""
+    if " over, and " not in text:
+        return text
+    m = _OVER_AND34.search(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    said = m["x"][0].upper() + m["x"][1:]
+    return f"{text[: m.start()]}{m['first']}. {said} {m['to']}{m['end'] or '.'}"
+
+
+# "Ava, the two blocks give her, please.": the person addressed first, then the objects and the
+# verb last with its pronoun (as session 27's '<person> <objects> give')
+_VERB_LAST34 = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?),\s*"
+    r"(?P<x>(?:the|a|an|that|this|those|these|both|both the) [a-z][a-z -]*?) "
+    r"(?P<v>give|hand|pass|bring) (?P<pron>her|him|them)"
+    r"(?=\s*(?:[,.;!?]|$))"
+)
+
+
+def _verb_last34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the clause above in the English order ('give P X'), when P is one person the
+    pronoun may be (by title) and X objects only."""
+    if not re.search(r" (?:give|hand|pass|bring) (?:her|him|them)\b", text):
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
+            return m[0]
+        if not _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon):
+            return m[0]
+        return f"{m['v'].capitalize()} {m['p']} {m['x']}"
+
+    return _VERB_LAST34.sub(plain, text)
+
+
+# "Could Person A have the cup first and, when she's done with it, the bottle?": the next thing
+# when the person has finished with the first, said as 'after that'
+_DONE_WITH34 = re.compile(
+    r",\s*(?:when|once) (?P<pron>she|he|they)(?:'s| is| has|'re| are| have)(?: all)? "
+    r"(?:done|finished)(?: with (?:it|them|that|those))?,\s*(?=(?:the|that|this|those|these)\b)",
+    _F,
+)
+
+
+def _done_with34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the clause above is ', after that, ' when the sentence before it names one
+    person, the one the pronoun may be."""
+    if " done" not in text and " finished" not in text:
+        return text
+    m = _DONE_WITH34.search(text)
+    if m is None:
+        return text
+    people = _people_before32(text[: m.start()], lexicon)
+    if len(people) != 1 or not _fits(next(iter(people)), m["pron"], lexicon):
+        return text
+    return f"{text[: m.start()]}, after that, {text[m.end() :]}"
+
+
+# "…, and Emma needs the green cup, so do that too.": the hearer told to do what the want says,
+# closing a clause that says a want of objects for one person
+_DO_THAT34 = re.compile(
+    r"\b(?P<want>(?:wants|needs|would like|asked for|is after|'s after) (?P<x>(?:the|that|this|"
+    r"those|these) [a-z][a-z ]*?)),\s*so do (?:that|this|it|those)(?: too| as well| for (?:her|"
+    r"him|them))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _do_that34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: ', so do that (too)' taken off after a want of objects only."""
+    if "so do " not in text:
+        return text
+    m = _DO_THAT34.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
+# "…, and Bob, for my next trick, wants the crisps.": the speaker's aside between a person and
+# their want (a closed list, each naming nothing and asking nothing)
+_MID_ASIDE34 = re.compile(
+    r"(?P<p>\b[A-Z][a-z]+(?: [A-Z][a-z]*)?),\s*(?:for my next trick|as it happens|as luck would "
+    r"have it|of all people|funnily enough|believe it or not),\s*(?=(?:wants|needs|would like|"
+    r"is after|'s after|asked for|gets)\b)"
+)
+
+
+def _mid_aside34(text: str, lexicon: Lexicon) -> str:
+    """Session 34: the aside above taken off when P is one person of the scene."""
+    if "," not in text:
+        return text
+    return _MID_ASIDE34.sub(lambda m: f"{m['p']} " if _only_person(m["p"], lexicon) else m[0], text)
+
+
+_STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
+    _speaker_parts34,
+    _trailing_remark34,
+    _thanks_from34,
+    _idioms34,
+    _what_like34,
+    _if_spare34,
+    _after_doing34,
+    _trade_tells34,
+    _for_his34,
+    _as_for34,
+    _handover_frames34,
+    _see_the34,
+    _since_wanted34,
+    _what_waiting34,
+    _run_on_remarks34,
+    _where_she_is34,
+    _from_trade34,
+    _has_coming34,
+    _been_at34,
+    _to_do34,
+    _mind_if34,
+    _questions34,
+    _size_words34,
+    _over_and34,
+    _verb_last34,
+    _done_with34,
+    _do_that34,
+    _mid_aside34,
+)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -11439,6 +12216,8 @@ _COURTESY24 = (
     r"sulpayki|añay|anay|tenkyu(?: tru)?|"
     # session 33 (blind31): Dzongkha and Sikkimese, Bemba and Hmong thanks
     r"kadrinchey(?: la)?|kadrin chhe(?: la)?|natotela(?: sana)?|ua tsaug(?: ntau)?|"
+    # session 34 (blind32): Setswana thanks
+    r"ke a leboga|kea leboga|kealeboga|"
     # session 29 (blind27): Basque, Catalan and Slovak thanks, with and without their letters'
     # marks, and the English blessing 'bless you' ('please' in them: _translated25)
     r"eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|"
@@ -22629,7 +23408,8 @@ def _gets_handed34r(text: str, lexicon: Lexicon) -> str:
 
 # "Both mugs need shifting up to the shelf, the red and the blue alike."
 _ALIKE34R = re.compile(
-    r"^(?P<head>.*\bboth\b.+,\s*the [a-z]+ and the [a-z]+) alike(?P<end>\s*[.!]?)$", _F
+    r"^(?P<head>.*\bboth\b.+,\s*(?:the )?[a-z]+ and (?:the )?[a-z]+) alike(?P<end>\s*[.!]?)$",
+    _F,
 )
 
 
@@ -23123,7 +23903,353 @@ def _counted_want34r(text: str, lexicon: Lexicon) -> str:
     return f"Put {d}{m['n'] or ''}{m['of'] or ''} {m['k']} {m['p']} {text[m.end() :]}"
 
 
+# "The stapler's for Priya. Oh hang on, she's got one, give it to Sam."
+_HAS_ONE34R = re.compile(
+    r"(?P<cue>\b(?:hang on|no|actually|wait|sorry),\s*)(?P<pro>she|he)(?:'s| has)(?: already)? "
+    r"got (?:one|it)(?: already)?,\s*(?P<rest>(?:give|hand|pass|take) it .+)$",
+    _F,
+)
+
+
+def _has_one34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "she's got one (already)" says why the request
+    before it is taken back: taken off when the text before names one person, whom the pronoun
+    may be, and the request after it another."""
+    m = _HAS_ONE34R.search(text)
+    if m is None:
+        return text
+    before = _ids(text[: m.start()], lexicon, "human")
+    after = _ids(m["rest"], lexicon, "human")
+    if len(before) != 1 or len(after) != 1 or before == after:
+        return text
+    if not _fits(next(iter(before)), m["pro"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}"
+
+
+# -- session 34 (12r): the same kinds in blind24 to blind31 --------------------------------------
+
+# "The white plate on the rack, no, the counter, we need it for service."
+_NEED_IT_FOR34R = re.compile(
+    rf"^(?P<head>.+\b{_CUE34R}\b.+?),\s*we (?:need|want) (?:it|that|them) (?:for|at|in) "
+    r"(?P<why>[a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _need_it_for34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction, "we need it for service" says why (naming nothing
+    of the scene): taken off."""
+    m = _NEED_IT_FOR34R.match(text)
+    if m is None or _ids(m["why"], lexicon):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "Split the two things between them, one apiece, with the bottle going to Person B and …"
+_SPLIT_BETWEEN34R = re.compile(
+    r"^split the (?P<n>two|three|four) (?:things|items) between (?:them|the two of them),\s*"
+    r"(?:one (?:apiece|each),\s*)?with (?P<rest>.+)$",
+    _F,
+)
+
+
+def _split_between34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Split the two things between them, one apiece, with X going to P and Y
+    to Q" is "X to P and Y to Q" when that names as many objects as the count, each once, and
+    every person of the scene (else left, refused)."""
+    m = _SPLIT_BETWEEN34R.match(text)
+    if m is None:
+        return text
+    rest = re.sub(r"\b(?:going|goes|heading) to\b", "to", m["rest"], flags=_F)
+    said = [it for it in _names(rest, lexicon) if all(r.kind == "object" for r in it.refs)]
+    objects = {r.id for it in said for r in it.refs}
+    if len(objects) != _NUMBERS33R[m["n"].lower()] or len(said) != len(objects):
+        return text
+    if _ids(rest, lexicon, "human") != {h.id for h in lexicon.scene.humans}:
+        return text
+    return rest[0].upper() + rest[1:]
+
+
+# "Not the bottle for Bob, he said so twice, he's after a packet of crisps."
+_NOT_FOR_AFTER34R = re.compile(
+    r"^not (?P<x>the [a-z]+) for (?P<p>[a-z][\w ]*?),\s*(?:(?P<pro1>he|she) said so(?: twice)?,"
+    r"\s*)?(?P<pro>he|she)(?:'s| is) after (?:a packet of |a bag of |some |the )?(?P<y>[a-z]+)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_after34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Not the bottle for Bob, he said so, he's after a packet of crisps" is
+    "Not the bottle, the crisps for Bob" (the pronouns may be Bob; X and Y two objects)."""
+    m = _NOT_FOR_AFTER34R.match(text)
+    if m is None or not _the_person(m["p"], f"{m['pro']} {m['pro1'] or ''}", lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], f"the {m['y']}"):
+        return text
+    return f"Not {m['x']}, the {m['y']} for {m['p']}{m['end'] or '.'}"
+
+
+# "Pop the bottle up on the shelf — actually, on second thoughts, straight to Alice with it."
+_STRAIGHT_WITH_IT34R = re.compile(
+    r"^(?P<head>.+?)\s*(?:—|–|,)\s*(?P<cue>actually|no|sorry),\s*(?:on second thoughts?,\s*)?"
+    r"(?:straight |right )?to (?P<p>[a-z][\w ]*?) with it(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _straight_with_it34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "…, actually, on second thoughts, straight to Alice with it" is "…,
+    actually, give it to Alice" (P one person)."""
+    m = _STRAIGHT_WITH_IT34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{m['head']}, {m['cue']}, give it to {m['p']}{m['end'] or '.'}"
+
+
+# "Priya wants the red pen — wait, no, she said black, the black pen."
+_SHE_SAID34R = re.compile(
+    r"(?P<cue>\b(?:no|sorry|wait),\s*)(?:she|he|they) said (?P<a>[a-z]+),\s*"
+    r"(?P<rest>the (?P=a) [a-z]+)",
+    _F,
+)
+
+
+def _she_said34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "she said black, the black pen" says the word
+    twice: the first saying comes off (the second must name one object)."""
+    m = _SHE_SAID34R.search(text)
+    if m is None or not _whole_name(m["rest"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['rest']}{text[m.end() :]}"
+
+
+# "The ruler goes on the desk. Sorry, the bookshelf, the desk's covered in paint."
+_CORRECTED_PLACE_WHY34R = re.compile(
+    r"^(?P<head>.+\b(?:no|sorry|actually),\s*(?:on |in )?the (?P<s2>[a-z]+(?: [a-z]+)?)),\s*the "
+    r"(?P<s1>[a-z]+(?: [a-z]+)?)(?:'s| is) (?P<why>[a-z ]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _corrected_place_why34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction to another surface, "the desk's covered in paint"
+    says why of the surface corrected away: taken off when that surface is named before the cue
+    and the remark names nothing else."""
+    m = _CORRECTED_PLACE_WHY34R.match(text)
+    if m is None or not _whole_name(m["s1"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["s2"], lexicon, "surface") or _ids(m["why"], lexicon):
+        return text
+    s1, s2 = _ids(m["s1"], lexicon), _ids(m["s2"], lexicon)
+    cue = m.start("s2")
+    if s1 == s2 or not s1 <= _ids(text[:cue], lexicon, "surface"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "The two smaller boxes can join the big one on the pallet."
+_JOIN_THE34R = re.compile(
+    r"\b(?P<x>the (?:two |three )?[a-z]+ (?P<k>[a-z]+)) can join the (?P<a>[a-z]+) one "
+    r"(?P<p>on|in) the (?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _join_the34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "the smaller boxes can join the big one on the pallet" is "… can go on
+    the pallet" when the big one is one object that starts there."""
+    m = _JOIN_THE34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    one: set[str] = set()
+    for k in (m["k"], m["k"][:-1], m["k"][:-2]):
+        one = _ids(f"the {m['a']} {k}", lexicon, "object")
+        if len(one) == 1:
+            break
+    surface = next(iter(_ids(m["s"], lexicon, "surface")))
+    if len(one) != 1 or set(starting_on(one, surface, lexicon)) != one:
+        return text
+    return f"{text[: m.start()]}{m['x']} can go {m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "Don't bother with the bottle, she's brought a flask, just the chips to Person A."
+_BROUGHT_OWN34R = re.compile(
+    r"^(?P<h>don't bother with (?:the )?[a-z]+),\s*(?:she|he)(?:'s| has) (?:brought|got) "
+    r"(?:a|an|her|his) (?P<w>[a-z]+)(?: with (?:her|him))?,\s*(?P<rest>just .+)$",
+    _F,
+)
+
+
+def _brought_own34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Don't bother with the bottle, she's brought a flask, just …": why the
+    bottle is left out (naming nothing of the scene) comes off."""
+    m = _BROUGHT_OWN34R.match(text)
+    if m is None or _ids(m["w"], lexicon):
+        return text
+    return f"{m['h']}, {m['rest']}"
+
+
+# "whichever ones closer to person a, give her that"
+_WHICHEVER_CLOSER34R = re.compile(
+    r"^whichever (?:one's|ones|one is|is|'s) (?P<adj>closer|nearer|closest|nearest) to "
+    r"(?P<p>[a-z][\w ]*?),\s*give (?P<pro>her|him) (?:that|it)(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_closer34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "whichever one's closer to P, give her that" is "Give P X or Y,
+    whichever is closer to her": a choice of the scene's objects (two to four, each named
+    alone)."""
+    m = _WHICHEVER_CLOSER34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects]
+    if not 2 <= len(said) <= 4 or any(s is None for s in said):
+        return text
+    listed = ", ".join(s for s in said[:-1] if s) + f" or {said[-1]}"
+    return f"Give {m['p']} {listed}, whichever is {m['adj']} to {m['pro']}{m['end'] or '.'}"
+
+
+# "Person B gets the bottle and Person A gets the chips and the apple stays where it is."
+_STAYS_PUT34R = re.compile(
+    r"^(?P<head>.+?)(?:,| and|;)\s*(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) stays (?:where it is|put|"
+    r"as it is)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stays_put34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "…, and the apple stays where it is" after tasks that do not name the
+    apple: nothing to do for it (one the tasks name is left, refused)."""
+    m = _STAYS_PUT34R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if _ids(m["x"], lexicon) & _ids(m["head"], lexicon) or not _ids(m["head"], lexicon, "object"):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "It's Person B who's getting the cup, not Person A, the caddie got it wrong earlier."
+_ITS_P_WHO34R = re.compile(
+    r"^it(?:'s| is) (?P<p>[a-z][\w ]*?) who(?:'s| is) getting (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
+    r"not (?P<q>[a-z][\w ]*?)(?:,\s*(?P<why>[^,.;!?]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_p_who34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "It's P who's getting X, not Q(, the caddie got it wrong)" is "P is
+    getting X, not Q" (P and Q two people; the remark naming nothing of the scene)."""
+    m = _ITS_P_WHO34R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if m["why"] and _ids(m["why"], lexicon):
+        return text
+    return f"{m['p']} is getting {m['x']}, not {m['q']}{m['end'] or '.'}"
+
+
+# "Sit the teddy in the high chair, no, better down on the play mat with her."
+_BETTER_DOWN34R = re.compile(
+    rf"(?P<cue>\b{_CUE34R},\s*)better (?:down |up )?(?P<p>on|in|onto|into) the "
+    r"(?P<s>[a-z]+(?: [a-z]+)?)(?: with (?:her|him|them))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _better_down34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): after a correction cue, "better down on the play mat (with her)" is "on
+    the play mat" (S one surface)."""
+    m = _BETTER_DOWN34R.search(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}{m['cue']}{m['p']} the {m['s']}{m['end'] or '.'}"
+
+
+# "Over to Person B with the chips, no, I mean the bottle, it's the bottle she's after."
+_OVER_WITH_FIXED34R = re.compile(
+    r"^over to (?P<p>[a-z][\w ]*?) with (?P<x>the [a-z]+(?: [a-z]+)?)"
+    rf"(?P<rest>,\s*(?:hmm,\s*|oh,\s*)?(?:{_CUE34R})\b.+)$",
+    _F,
+)
+
+
+def _over_with_fixed34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Over to P with X, no, I mean Y" is "X to P, no, I mean Y": the
+    correction then replaces the object (it had left 'to P with Y', refused)."""
+    m = _OVER_WITH_FIXED34R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"]):
+        return text
+    return f"The {m['x'][4:]} to {m['p']}{m['rest']}"
+
+
+# "Both of the mugs are Alice's, give her the pair."
+_ARE_HERS34R = re.compile(
+    r"^(?P<q>both|all (?:two|three|four)) of the (?P<k>[a-z]+) are (?P<p>[a-z][\w ]*?)'s,\s*"
+    r"(?:so )?give (?P<pro>her|him) (?:the pair|both|them|the lot|all of them|the two)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _are_hers34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): "Both of the mugs are Alice's, give her the pair" is "Give Alice both
+    of the mugs" (the pronoun may be P; the count read by the grammar)."""
+    m = _ARE_HERS34R.match(text)
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if not _ids(m["k"], lexicon, "object"):
+        return text
+    return f"Give {m['p']} {m['q'].lower()} of the {m['k']}{m['end'] or '.'}"
+
+
+# "Two things going out: Person A has the chips and the bottle is Person B's."
+_GOING_OUT34R = re.compile(
+    r"^(?P<n>two|three|four) things going out\s*:\s*(?P<rest>.+)$",
+    _F,
+)
+_IS_HERS34R = re.compile(
+    r"(?P<lead>^|\band |,\s*)(?P<x>the [a-z]+(?: [a-z]+)?) is (?P<p>[a-z][\w ]*?)'s(?=\s*(?:[.!,]|"
+    r"\band\b|$))",
+    _F,
+)
+
+
+def _going_out34r(text: str, lexicon: Lexicon) -> str:
+    """Session 34 (12r): a heading "Two things going out:" is "Two things:" (session 30's count,
+    checked against the tasks), and in the tasks under it "the bottle is Person B's" says who it
+    goes to: "Person B gets the bottle" (one person, one whole object)."""
+    m = _GOING_OUT34R.match(text)
+    if m is None:
+        return text
+
+    def goes(w: re.Match[str]) -> str:
+        if not _only_person(w["p"], lexicon) or not _whole_name(w["x"], lexicon, "object"):
+            return w.group(0)
+        return f"{w['lead']}{w['p']} gets {w['x']}"
+
+    return f"{m['n']} things: {_IS_HERS34R.sub(goes, m['rest'])}"
+
+
 _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _over_with_fixed34r,
+    _are_hers34r,
+    _going_out34r,
+    _has_one34r,
+    _need_it_for34r,
+    _split_between34r,
+    _not_for_after34r,
+    _straight_with_it34r,
+    _she_said34r,
+    _corrected_place_why34r,
+    _join_the34r,
+    _brought_own34r,
+    _whichever_closer34r,
+    _stays_put34r,
+    _its_p_who34r,
+    _better_down34r,
     _owner_then34r,
     _surface_for34r,
     _no_wait_to34r,
@@ -23240,6 +24366,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_first28r,
     _remarks28r,
     _single28r,
+    # session 34 (12): a courtesy's saying goes with the courtesy (before _courtesy24)
+    _as_used_to34,
     _translated25,
     _address_after26r,
     _courtesy24,
@@ -23259,6 +24387,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 34 (12): blind32's kinds
+    *_STEPS34,
     # session 33 (12): blind31's kinds
     *_STEPS33,
     # session 32 (12): blind30's kinds

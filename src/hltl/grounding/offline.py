@@ -123,6 +123,8 @@ def parse_instruction(
             named = _unclear_names(text, lexicon)
             if not named and "could mean" not in str(refused):
                 named = _unclear_it(text, lexicon)
+            if not named and "could mean" not in str(refused):
+                named = _unsaid_pronoun34(text, lexicon)
             if named:
                 # "Alice should get the mug. Not Alice, sorry, Carol.": refused for the
                 # correction, and 'the mug' could be either mug: the refusal says which
@@ -418,6 +420,45 @@ def _unclear_it(text: str, lexicon: Lexicon) -> str:
             joined = True
         elif it.text.lower() not in _IN_A_LIST:
             joined = False
+    return ""
+
+
+# Session 34 (engineer 12): a pronoun that is what a verb of handing hands ('give it to …') or
+# whom it hands to ('give them the bottle') with nothing of its kind named before it in the
+# instruction: it can only mean one of the scene's things of that kind (blind32's "Give it to
+# Person B, the one by the window.", "just give them the bottle, the one who asked")
+_HANDED_IT34 = re.compile(r"\b(?:give|hand|pass|bring|take|send|put)\s+(?P<pron>it)\b", re.I)
+_HANDED_TO34 = re.compile(
+    r"\b(?:give|hand|pass|bring|get)\s+(?P<pron>them|her|him)\s+(?:the|that|this|a|an|some)\b",
+    re.I,
+)
+
+
+def _unsaid_pronoun34(text: str, lexicon: Lexicon) -> str:
+    """What the first handed 'it' (objects) or 'them'/'her'/'him' handed to (people: those the
+    pronoun fits) could mean when nothing of that kind is named before it, '' otherwise (it never
+    makes a reading: the refusal says which readings there are)."""
+    for rx, kind in ((_HANDED_IT34, "object"), (_HANDED_TO34, "human")):
+        m = rx.search(text)
+        if m is None:
+            continue
+        try:
+            before = lex(text[: m.start()], lexicon)
+        except GroundingError:
+            continue
+        if any(r.kind == kind for it in before if it.kind == "ent" for r in it.refs):
+            continue
+        pron = m["pron"].lower()
+        if kind == "object":
+            said = list(lexicon.scene.object_ids)
+        else:
+            said = [
+                person_name(h.id, lexicon)
+                for h in lexicon.scene.humans
+                if pron == "them" or title_sex(h.id, lexicon) in (None, PRONOUN_SEX[pron])
+            ]
+        if len(said) > 1:
+            return f"{pron!r} names nothing said before it: it could mean {' or '.join(said)}"
     return ""
 
 
