@@ -20921,7 +20921,14 @@ def _frames34t(text: str, lexicon: Lexicon) -> str:
         r"\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\b", r"\1 you", out
     )
     m = _rx(r"^(?:over|across) to (?P<p>[a-z][\w ]*?) with (?P<obj>the [a-z]+)\b").match(out)
-    if m is not None and _only_person(m["p"], lexicon) and _only_kind(m["obj"], lexicon, "object"):
+    # (with a correction's cue after it, 12r's rules read it: this one stands aside)
+    fix = _rx(r"\b(?:no|sorry|rather|actually|wait|i mean)\b").search(out)
+    if (
+        m is not None
+        and not fix
+        and _only_person(m["p"], lexicon)
+        and _only_kind(m["obj"], lexicon, "object")
+    ):
         out = f"{m['obj'].capitalize()} over to {m['p']}{out[m.end() :]}"
     m = _rx(
         r"^for (?P<p>[a-z][\w ]*?),\s*(?P<obj>(?:the )?[a-z]+),\s*(?:please )?give\s*(?P<end>[.!]?)"
