@@ -100,8 +100,6 @@ KNOWN_MISSES = frozenset(
         # blind13: 'the kids' is not a name of the students
         "Each of the kids gets a book",
         # causes15: 'after those two' after three sentences of which the first two are meant
-        "The stapler goes to Sam. The red pen to Sam too. Then the notepad to Priya after those "
-        "two.",
         # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
         # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
         # list after, 'one of the <description>', purposes ('to bang together', 'before
@@ -119,19 +117,13 @@ KNOWN_MISSES = frozenset(
         # aren't X' as a subject, 'namely', 'leave the X where it is' after a correction, gapping
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
-        "omg bestie pls give Sam the stapler, slay",
-        "Play on! Drill to Kofi, advantage played.",
-        "Namaste. Breathe in, and place the sponge in the sink. Breathe out.",
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Those three things that aren't the bottle, give them to Person A.",
-        "Tape to Mia. No, hang on, the scanner to Mia, leave the tape where it is.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
         "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
         "you can have a rest",
-        "Hammer to Kofi. No, hang on, the drill to Kofi, leave the hammer where it is.",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
         # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
@@ -144,25 +136,8 @@ KNOWN_MISSES = frozenset(
         "lemon over to Mr Novak? Lovely stuff.",
         "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
         "maybe go to Carol? Sorry. Thank you.",
-        "Breathe in... and breathe out. Now, gently, in your own time, bring the grey blanket "
-        "over to Mr Lee. Namaste.",
-        "Arr, Cap'n Lily be wantin' her bib, and old Grandad wants the sippy cup, me hearties!",
-        "My client, Sam, requires the notepad, and Priya, the manager, wishes to have the red pen.",
-        "This one goes out to Lena, who'd love the tongs, and to Marco, who needs the knife!",
-        "Bottle is what Alice want, crisps is for Bob one, can or not?",
-        "Find the treasure, matey, the teddy bear, and give it to Lily, arr!",
-        "The stapler, hereinafter 'the item', is to be placed in the box. The notebook likewise.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
-        "The chips, sorry, Person A asked for them, could they go to her? Sorry.",
-        "Sorry, could Person A have either of them? Either thing, I don't mind, sorry.",
-        "The two blocks be Lily's treasure, arr, give her both!",
-        "The four treasures, all of them, unto Person A.",
-        "Could Person B have the two things that aren't the cup or the apple? Sorry, the "
-        "bottle and the chips.",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
-        "We reported the cup was going to Person A. Correction: it's the apple.",
-        "good evening, tonights order chips for person b plus the cup for person a",
-        "The crsps, Bob want one lah.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",
         "Pronto, the cup to Person A, capisce?",
@@ -188,46 +163,18 @@ KNOWN_MISSES = frozenset(
         "Novak? Thank you, sir.",
         "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
         "bottle. Thanks. Sorry Dave, go on.",
-        "Carol says she'd love the blue mug, oh, and Bob fancies the apple.",
         "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
         " chips, he wants those.",
-        "Honestly, the thing Person B has been after all morning is the bottle.",
-        "Priority is Person A, she needs the cup; once she's sorted, Person B would like the "
-        "apple.",
         "The chips are wanted by Person A and the bottle by Person B.",
-        "Right. That hammer. Back on the workbench. Ta.",
         "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
         "as well thanks",
-        "okay so Person A's having the cup and the apple's going over to Person B off you go",
-        "okay listen the chips are for Person A the bottle's for Person B got it",
-        "Drop all three of the pens into the box, they keep rolling off.",
         "Jess needs some screws, give her the tin.",
         "chuck the blue pen in the box its cluttering my desk",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",
-        "Bonjour! Excuse me, please, I would like that you give the stapler to Priya. Thank you, "
-        "you are very kind.",
-        "Do me a favour, robot, be a love and give Person A the chips. Obrigado, eh, I mean "
-        "thanks.",
-        "Tom's after the barcode scanner, his own one has died on him.",
-        "The bottle goes to Bob first. Then the crisps, same place.",
         "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
         "patient.",
-        "Blue blanket to Mr Lee, he's shivering, and after that the jug to Mrs Khan because she "
-        "asked earlier and she's been very patient.",
-        "Give Jess the small spanner quick she's under the van and after that the hammer to Kofi "
-        "he's waiting.",
-        "For Person B, bottle, please give. Thank you.",
-        "Bob wants the bottle Alice wants the crisps that's all of it.",
-        "For reading group, lay out both books on the desk, the two of them.",
-        "the apple over to person b when u can",
-        "the crisps r alice's, the bottle goes to bob",
-        "shelf for the chips, bob for the bottle, ta",
-        "Person B reckons she fancies the chilps now.",
-        "Over to Person B with the bpttle, please.",
-        "Would Person B like the apple? Give it to her, yes?",
-        "D'you reckon you could get that bottle up on the shelf?",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
@@ -296,20 +243,12 @@ KNOWN_MISSES = frozenset(
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',
-        "Morning! Don't mind me up the ladder, could you just hand Person B the apple, ta very "
-        'much.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        "So. Chips, those are for Person A. Bottle, that one is Person B's. That is all, köszi.",
-        'Only one bottle between the lot of us, so that single bottle goes to Person A, full '
-        'stop.',
-        "Give Person B everything you've got there but not the apple, she hates apples.",
         "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
         'anyway.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
-        "Person B's having the chips, wait, sorry, the apple, I had chips on the brain.",
-        'the red book goes back up on the bookshelf with the others',
         'Drop the scnner on the belt before the next load comes down.',
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
         # give Alice."; session 33, 12t)
@@ -317,7 +256,6 @@ KNOWN_MISSES = frozenset(
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
         "Would you put the black pen in the box for Priya?",
-        "Why don't you set the globe down on the desk where the class can see the dig site?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
