@@ -26,7 +26,10 @@
   cue, and the sentence after it replaced the whole request. A bare apology closing its
   sentence, before a sentence that asks for something by its own verb, is an apology, as the
   grammar already read "…, sorry. Carol needs the bottle."; '…, sorry. Carol.' and '…, sorry,
-  Carol needs the bottle.' are corrections still."""
+  Carol needs the bottle.' are corrections still.
+- 12c's wrappers fuzz: "The bowl, which Omar has been asking about, should go to her and that's
+  us done" (lab) read bowl>B: 'her' before 'and' was not counted as the object, so the check
+  that a first name rules out a he / she (12s) never saw it."""
 
 from __future__ import annotations
 
@@ -133,3 +136,16 @@ def test_nothing_else_after_that_closes_without_an_order(text: str, want: str) -
 )
 def test_a_closing_apology_before_a_new_request_is_no_correction(text: str, want: str) -> None:
     assert_reads(text, want)
+
+
+LAB = load_scene(ROOT / "tests/grounding/paraphrase/scenes/lab.yaml")
+
+
+def test_her_before_and_is_the_object_a_mans_name_cannot_be() -> None:
+    # 12c's wrappers fuzz: read bowl>B (Omar), though 'her' cannot be Omar
+    text = "The bowl, which Omar has been asking about, should go to her and that's us done"
+    assert_refused(text, LAB, match="cannot mean Omar")
+    assert_refused("Give Omar the bowl and her the spoon", LAB, match="cannot mean Omar")
+    # her own name: read as before
+    text = "The bowl, which Dana has been asking about, should go to her and that's us done"
+    assert_reads(text, "bowl>A", LAB)
