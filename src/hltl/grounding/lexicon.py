@@ -308,12 +308,8 @@ PHRASES: dict[tuple[str, ...], str] = {
     # "The cup goes to Person B, the chips go to Person A, …. Nothing else after that." read
     # cup>B ; chips>A)
     **{
-        (*head, "after", *tail): "filler"
-        for head in (("nothing",), ("nothing", "else"), ("nothing", "more"))
-        for tail in (("that",), ("this",), ())
-    },
-    **{
-        ("and", *head, "after", *tail): "filler"
+        (*lead, *head, "after", *tail): "filler"
+        for lead in ((), ("and",))
         for head in (("nothing",), ("nothing", "else"), ("nothing", "more"))
         for tail in (("that",), ("this",), ())
     },

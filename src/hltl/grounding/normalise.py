@@ -7097,9 +7097,7 @@ def _restated20(text: str, lexicon: Lexicon) -> str:
         if _REFERRING_IT34L.search(after):
             if len(objects) != 1:
                 continue
-            after = _sub(
-                _REFERRING_IT34L.pattern, f"the {_said(next(iter(objects)), lexicon)}", after
-            )
+            after = _REFERRING_IT34L.sub(f"the {_said(next(iter(objects)), lexicon)}", after)
         # the grammar alone first; the rewrites only where that is refused ('Bob. Chips to Bob.')
         again = _tasks_of(after, lexicon, normalise=False) or _tasks_of(after, lexicon)
         if again is None or not objects <= {obj for _, obj, _ in again} or again == said:
