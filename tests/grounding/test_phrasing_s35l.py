@@ -9,7 +9,12 @@
 - The same fuzz: "Dana needs the spoon, the one bowl and the sponge put in the sink" (lab) read
   spoon>A & bowl>A & sponge@sink, and "… and the cup and the one apple go to Person A too"
   (4-4-square) gave the cup to Person B: 'the one bowl' means 'the bowl', but the 'one' was
-  taken off only after the passes that read a list had stopped at it."""
+  taken off only after the passes that read a list had stopped at it.
+- The same fuzz: "Lena is taking the three plates out, so she needs both of them" (kitchen, two
+  plates) read both plates for Lena: the count was in a reason clause, dropped with it. A count
+  said right before a kind of the scene's objects that is more than the scene has is refused
+  wherever it is said; fewer is left to the grammar ("the two boxes, the small and the medium
+  one" names two of three)."""
 
 from __future__ import annotations
 
@@ -120,3 +125,43 @@ def test_the_one_and_the_other_keep_their_choice() -> None:
         "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
         CELL,
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Lena is taking the three plates out, so she needs both of them", KITCHEN),
+        ("Lena is taking all three plates out, so she needs both of them", KITCHEN),
+        ("Lena's stacking 3 plates, give her the tongs.", KITCHEN),
+        ("The two cups are dirty, so give Alice the bottle.", CELL),  # one cup
+    ],
+)
+def test_a_count_the_scene_does_not_have_is_refused_wherever_said(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="the scene has")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Lena is taking the two plates out, so she needs both of them",
+            "plate_white>B & plate_blue>B",
+            KITCHEN,
+        ),
+        (
+            "Put all 3 boxes on the conveyor.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        ("Give Mia one of the three boxes.", "box_small>A | box_medium>A | box_large>A", DEPOT),
+        ("Give Alice one of the two mugs.", "mug_red>A | mug_blue>A", CELL),
+        (
+            "Give Mia the two boxes, the small and the medium one.",
+            "box_small>A & box_medium>A",
+            DEPOT,
+        ),
+        ("Both mugs go to Bob.", "mug_red>B & mug_blue>B", CELL),
+    ],
+)
+def test_a_count_the_scene_has_is_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
