@@ -334,6 +334,51 @@ def test_corrections(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- blind20's two left: a remark of the hour, a handover from the person's side ----------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
+            "just, um, set the thermometer on the bedside table, that'd be grand.",
+            "thermometer@bedside",
+            WARD,
+        ),
+        (
+            "It's past midnight and I'm the only one in the office. Give Sam the stapler, please.",
+            "stapler>B",
+            OFFICE,
+        ),
+        # the place names the scene; the sentence says more than the hour
+        (
+            "It's gone three in the morning and I'm the only one on the trolley. Set the jug on "
+            "the bedside table.",
+            None,
+            WARD,
+        ),
+        (
+            "It's gone three in the morning and I'm the only one who knows. Set the jug on the "
+            "bedside table.",
+            None,
+            WARD,
+        ),
+        (
+            "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
+            "patient.",
+            "bottle>A & cup>B",
+            SQ,
+        ),
+        ("Person A takes the bottle off Person B.", None, SQ),  # from another person
+        ("Person A takes the bottle off you. And for Person C, the cup.", None, SQ),
+        ("Person A takes the banana off you.", None, SQ),
+    ),
+)
+def test_blind20(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_a_label_the_scene_has_is_the_grammars_correction() -> None:
     """With a Person B in the scene, "… to Person B, or rather Person A" is the grammar's own
     correction (read before these steps, as it is now)."""

@@ -25008,6 +25008,77 @@ def _belongs35r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['cue']}, {m['v']} {m['it']} to {m['p']}{m['end'] or '.'}"
 
 
+# blind20's kinds -----------------------------------------------------------------------------
+
+# "Sorry, it's gone three in the morning and I'm the only one on the floor. …"
+_LATE_ALONE35R = re.compile(
+    r"^(?:sorry,\s*)?(?P<said>[^.!?]+)\.\s+(?P<rest>\S.*)$",
+    _F,
+)
+_LATE35R = re.compile(
+    r"it(?:'s| is) (?:gone|past|nearly|almost|after) (?:one|two|three|four|five|six|seven|eight|"
+    r"nine|ten|eleven|twelve|midnight|midday|noon|[0-9]{1,2})(?: (?:in the morning|at night|"
+    r"o'clock|already))?",
+    _F,
+)
+_ALONE35R = re.compile(
+    r"(?:i'm|i am) (?:the only one|on my own|by myself|alone) (?:on|in) (?:the )?"
+    r"(?P<w>[a-z]+(?: [a-z]+)?)",
+    _F,
+)
+
+
+def _late_alone35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): a first sentence that says only the time of night and that the speaker is
+    alone ("Sorry, it's gone three in the morning and I'm the only one on the floor.") asks nothing
+    and is taken off before the request (its place naming nothing of the scene; 'only one' there
+    is the speaker, no count)."""
+    m = _LATE_ALONE35R.match(text) if "it" in text.lower() else None
+    if m is None:
+        return text
+    for part in re.split(r",\s*(?:and\s+)?|\s+and\s+", m["said"].strip(), flags=_F):
+        alone = _ALONE35R.fullmatch(part)
+        if alone is not None and _ids(alone["w"], lexicon):
+            return text
+        if alone is None and _LATE35R.fullmatch(part) is None:
+            return text
+    return m["rest"][:1].upper() + m["rest"][1:]
+
+
+# "Person A takes the bottle off you."
+_TAKES_OFF35R = re.compile(
+    r"\b(?P<p>person [a-z]|[a-z]+) takes (?P<x>the [a-z]+(?: [a-z]+)?) (?:off|from) (?:you|the "
+    r"robots?|the arms?)\b",
+    _F,
+)
+
+
+def _takes_off35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "P takes the bottle off you" is "P gets the bottle" (a handover said from
+    the person's side; one person, one whole object)."""
+    if " takes " not in text.lower():
+        return text
+
+    def gets(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _whole_name(m["x"], lexicon, "object"):
+            return m[0]
+        return f"{m['p']} gets {m['x']}"
+
+    return _TAKES_OFF35R.sub(gets, text)
+
+
+# "…. And for Person B, the cup."
+_AND_FOR35R = re.compile(r"(?<=[.!?])\s+and for (?=(?P<p>person [a-z]|[a-z]+),\s*the )", _F)
+
+
+def _and_for35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): a sentence opening "And for P, the X" is "For P, the X" (the 'and' joins it
+    to the sentence before; P one person)."""
+    if "and for" not in text.lower():
+        return text
+    return _AND_FOR35R.sub(lambda m: " For " if _only_person(m["p"], lexicon) else m[0], text)
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -25037,6 +25108,9 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _wrong_way35r,
     _change_that35r,
     _belongs35r,
+    _late_alone35r,
+    _takes_off35r,
+    _and_for35r,
 )
 
 
