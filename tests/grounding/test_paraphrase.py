@@ -170,11 +170,6 @@ KNOWN_MISSES = frozenset(
         "as well thanks",
         "Jess needs some screws, give her the tin.",
         "chuck the blue pen in the box its cluttering my desk",
-        # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
-        "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
-        "just, um, set the thermometer on the bedside table, that'd be grand.",
-        "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
-        "patient.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
