@@ -185,11 +185,7 @@ KNOWN_MISSES = frozenset(
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
-        "chair.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
-        "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
         "bob's been on the bike all day give him the bottle thx",
         "The sponhe can go in the sink now it's been used.",
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",

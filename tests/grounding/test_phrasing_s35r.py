@@ -379,6 +379,54 @@ def test_blind20(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- blind21's corrections and counts -------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        # "…, or, ugh, my notes are smudged, the apple it says": what the notes say corrects
+        ("Person A gets the cup, or, ugh, my notes are smudged, the apple it says.", "apple>A", SQ),
+        ("Person A gets the cup, or, ugh, the banana it says.", None, SQ),  # no banana
+        # two tasks before it: which one the notes correct is not said
+        ("Person A gets the cup and the chips, or, ugh, the apple it says.", None, SQ),
+        ("Person A gets the cup, Person B the chips, or, ugh, the apple it says.", None, SQ),
+        # "<one handover>. Er, hold on, she'd rather have the X, go with that."
+        (
+            "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
+            "bottle>A",
+            DUO,
+        ),
+        ("Give Alice the crisps. Hang on, she'd rather have the bottle.", "bottle>A", TWO),
+        # the same object; two handovers before it; 'she' cannot be Mr Lee
+        ("For Person A, the chips. Er, hold on, she'd rather have the chips.", None, DUO),
+        (
+            "For Person A, the chips, and Person B the bottle. Er, hold on, she'd rather have the "
+            "cup.",
+            None,
+            DUO,
+        ),
+        ("Give Mr Lee the jug. Hang on, she'd rather have the magazine.", None, WARD),
+        # "P likes both her Ks …, so put the pair of them in S"
+        (
+            "Lily likes both her blocks with her when she eats, so put the pair of them in the "
+            "high chair.",
+            "block_red@highchair & block_green@highchair",
+            NURSERY,
+        ),
+        (
+            "Bob likes both his mugs, so put the pair of them on the shelf.",
+            "mug_red@shelf & mug_blue@shelf",
+            CELL,
+        ),
+        ("Emma likes her spoons, so put them in the sink.", None, LAB),  # one spoon
+        ("Bob likes both his mugs, so put the pair of them on Alice.", None, CELL),
+    ),
+)
+def test_blind21(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_a_label_the_scene_has_is_the_grammars_correction() -> None:
     """With a Person B in the scene, "… to Person B, or rather Person A" is the grammar's own
     correction (read before these steps, as it is now)."""

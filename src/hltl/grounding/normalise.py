@@ -25079,6 +25079,74 @@ def _and_for35r(text: str, lexicon: Lexicon) -> str:
     return _AND_FOR35R.sub(lambda m: " For " if _only_person(m["p"], lexicon) else m[0], text)
 
 
+# blind21's kinds -----------------------------------------------------------------------------
+
+# "Person A gets the cup, or, ugh, my notes are smudged, the apple it says."
+_IT_SAYS35R = re.compile(
+    r",\s*or,\s*(?:(?:ugh|er|erm|um|hmm|oh),\s*)?(?:(?:my|the) notes? (?:are|is|'s) [a-z]+,\s*)?"
+    r"(?P<x>the [a-z]+(?: [a-z]+)?) it says(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _it_says35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "…, or, ugh, my notes are smudged, the apple it says": what the notes say,
+    read off after a doubt, corrects the object ("…, no, the apple"): 'it says' settles the 'or',
+    which is no choice (one whole object, after one task)."""
+    m = _IT_SAYS35R.search(text) if "it says" in text.lower() else None
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    done = _tasks_of(text[: m.start()], lexicon)
+    if done is None or len(done) != 1:
+        return text  # which of several the notes correct is not said
+    return f"{text[: m.start()]}, no, {m['x']}{m['end'] or '.'}"
+
+
+# "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that."
+_RATHER_AFTER35R = re.compile(
+    r"^(?P<head>[^.!?]+)[.!]\s*(?:(?:er|erm|um|hmm|oh),?\s*)?(?:hold on|hang on|wait),\s*"
+    r"(?P<pro>she|he)(?:'d| would) rather have (?P<x>the [a-z]+(?: [a-z]+)?)(?:,\s*go with "
+    r"(?:that|it|that one))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _rather_after35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "<one handover>. Er, hold on, she'd rather have the bottle(, go with
+    that)" is "<the handover>, no, the bottle": 'rather' says the object replaces the one asked
+    for (a 'hold on' opening a sentence alone could also add), when 'she' may be the one person
+    of the handover and the bottle is another object."""
+    m = _RATHER_AFTER35R.match(text) if "rather" in text.lower() else None
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    done = _tasks_of(m["head"], lexicon)
+    if done is None or len(done) != 1:
+        return text
+    kind, obj, who = next(iter(done))
+    if kind != "deliver" or obj in _ids(m["x"], lexicon) or not _fits(who, m["pro"], lexicon):
+        return text
+    return f"{m['head']}, no, {m['x']}{m['end'] or '.'}"
+
+
+# "Lily likes both her blocks with her when she eats, so put the pair of them in the high chair."
+_LIKES_BOTH35R = re.compile(
+    r"^(?P<p>[a-z]+(?: [a-z]+)?) likes (?:both |the two of )?(?:her|his) (?P<k>[a-z]+s)(?: with "
+    r"(?:her|him))?(?: when (?:she|he) [a-z]+)?,\s*so (?P<v>put|pop|place|set|stick) (?P<them>"
+    r"the pair of them|both of them|the two of them|them) (?P<rest>(?:in|into|on|onto) .+)$",
+    _F,
+)
+
+
+def _likes_both35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "Lily likes both her blocks (with her when she eats), so put the pair of
+    them in S" is "Put both blocks in S" (why, naming one person, taken off; 'both' and 'the
+    pair' read as two, checked against the scene by the grammar)."""
+    m = _LIKES_BOTH35R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _ids(m["k"], lexicon, "object"):
+        return text
+    return f"{m['v'][:1].upper()}{m['v'][1:]} both {m['k']} {m['rest']}"
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -25111,6 +25179,9 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _late_alone35r,
     _takes_off35r,
     _and_for35r,
+    _it_says35r,
+    _rather_after35r,
+    _likes_both35r,
 )
 
 
