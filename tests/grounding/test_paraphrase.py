@@ -252,8 +252,6 @@ KNOWN_MISSES = frozenset(
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
-        "There's just the single bottle, so hand that to Person A, she'll make it last.",
-        "Not apple. Bottle, for Person B, please. Madloba.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
@@ -269,11 +267,8 @@ KNOWN_MISSES = frozenset(
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
-        'A single bottle will do for Person A after her orienteering.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
-        # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
-        'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -22,10 +22,12 @@ from tests.grounding.helpers import (
 # the example scenes session 32's tests load (bottle, chips, cup, apple; people A and B; …)
 from tests.grounding.test_phrasing_s32r import (
     DUO,
+    F41,
     F42,
     FIG1,
     L24,
     L44,
+    ONE,
     SQ,
     T12,
     T21,
@@ -424,6 +426,41 @@ def test_blind20(text: str, want: str | None, scene: Scene) -> None:
     ),
 )
 def test_blind21(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- blind25, blind29 and blind31: the same kinds ------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "There's just the single bottle, so hand that to Person A, she'll make it last.",
+            "bottle>A",
+            ONE,
+        ),
+        ("There's just the single mug, so hand that to Bob.", None, CELL),  # two mugs
+        ("There's just the single bottle, so hand that to Person C.", None, L24),
+        ("Not apple. Bottle, for Person B, please. Madloba.", "bottle>B", F41),
+        ("Not apple. Apple, for Person B.", None, F41),  # the same object
+        ("Not banana. Bottle, for Person B.", None, F41),  # no banana there
+        ("A single bottle will do for Person A after her orienteering.", "bottle>A", T12),
+        ("A single mug will do for Bob.", "mug_red>B | mug_blue>B", CELL),
+        ("A single banana will do for Person A.", None, T12),
+        (
+            "They each get a thing, so bottle for Person A and chips for Person B, natotela.",
+            "bottle>A & chips>B",
+            T21,
+        ),
+        (
+            "They each get a thing, so the bottle for Person A and the chips for Person A.",
+            None,
+            DUO,
+        ),
+    ),
+)
+def test_blind25_to_31(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 

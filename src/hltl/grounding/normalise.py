@@ -24471,8 +24471,9 @@ def _really_mind35r(text: str, _lexicon: Lexicon) -> str:
 
 # "They're to have one thing apiece, so …", "A single thing for each of them, so …"
 _APIECE35R = re.compile(
-    r"^(?:(?:they|both of them|the two of them)(?:'re| are) to (?:have|get) )?(?:one|a single) "
-    r"thing (?:apiece|each|for each of them)\s*,\s*(?=so\b)",
+    r"^(?:(?:(?:they|both of them|the two of them)(?:'re| are) to (?:have|get) )?(?:one|a single) "
+    r"thing (?:apiece|each|for each of them)|(?:they|both of them|the two of them) each (?:get|"
+    r"have) (?:a|one|a single) thing)\s*,\s*(?=so\b)",
     _F,
 )
 # "… so the bottle finds Person A and the chips find Person B"
@@ -24484,8 +24485,9 @@ _FINDS35R = re.compile(
 
 
 def _apiece35r(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12r): a heading "They're to have one thing apiece, so" or "A single thing
-    for each of them, so" is "One thing apiece, so" (the count checked against the tasks, as
+    """Session 35 (12r): a heading "They're to have one thing apiece, so", "A single thing for
+    each of them, so" or "They each get a thing, so" is "One thing apiece, so" (the count checked
+    against the tasks, as
     that heading is: each person named once); in the tasks after it "the bottle finds Person A"
     is "the bottle goes to Person A" (a whole object, one person)."""
     m = _APIECE35R.match(text)
@@ -24562,31 +24564,42 @@ _THE_ONE35R = re.compile(
 )
 
 
+# "There's just the single bottle, so hand that to Person A, …"
+_THE_SINGLE35R = re.compile(
+    r"^there(?:'s| is) (?:just |only )?the (?:one|single|lone) (?P<k>[a-z]+)(?: here)?,\s*so "
+    r"(?P<v>hand|give|pass|take|bring) (?:that|it)(?: one)? (?:over |across )?to (?P<p>[^,.;!?]+?)"
+    r"(?P<rest>\s*(?:[,.;!?].*)?)$",
+    _F,
+)
+
+
 def _the_one35r(text: str, lexicon: Lexicon) -> str:
     """Session 35 (12r): "There's just the one bottle here and it's meant for P" is "The bottle
-    is for P" when the scene has one bottle (the count must agree: with two it is left, and
-    refused)."""
-    m = _THE_ONE35R.match(text)
+    is for P", "There's just the single bottle, so hand that to P" is "Hand the bottle to P", when
+    the scene has one bottle (the count must agree: with two it is left, and refused)."""
+    m = _THE_ONE35R.match(text) or _THE_SINGLE35R.match(text)
     if m is None or not _only_person(m["p"], lexicon):
         return text
     if len(_ids(f"the {m['k']}s", lexicon, "object")) != 1 or not _only_kind(
         m["k"], lexicon, "object"
     ):
         return text
+    if m.re is _THE_SINGLE35R:
+        return f"{m['v'][:1].upper()}{m['v'][1:]} the {m['k']} to {m['p']}{m['rest']}"
     return f"The {m['k']} is for {m['p']}{m['rest']}"
 
 
 # ", after her gymnastics" closing a request: when, as a remark naming nothing of the scene
 _AFTER_HER35R = re.compile(
-    r",\s*after (?P<w>(?:her|his|their) (?:[a-z]+ )?(?:[a-z]+(?:ing|ics)|class|lesson|practice|"
-    r"training|shift|session|match|game|nap|walk|swim|workout|rehearsal|appointment|meeting|"
-    r"exam|lecture|visit|round))(?P<end>\s*[.!]?)$",
+    r"(?:,\s*|\s+)after (?P<w>(?:her|his|their) (?:[a-z]+ )?(?:[a-z]+(?:ing|ics)|class|lesson|"
+    r"practice|training|shift|session|match|game|nap|walk|swim|workout|rehearsal|appointment|"
+    r"meeting|exam|lecture|visit|round))(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _after_her35r(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12r): ", after her gymnastics" closing a request is a remark (what the person
+    """Session 35 (12r): "(,) after her gymnastics" closing a request is a remark (what the person
     is back from) when it names an activity (a word in -ing or -ics, 'class', 'shift', 'nap', …)
     and nothing of the scene, and is taken off; "…, after her bottle" (an object: an order) or
     "…, after her pills" (a thing the scene lacks) is left."""
@@ -25147,6 +25160,43 @@ def _likes_both35r(text: str, lexicon: Lexicon) -> str:
     return f"{m['v'][:1].upper()}{m['v'][1:]} both {m['k']} {m['rest']}"
 
 
+# "A single bottle will do for Person A …"
+_SINGLE_WILL_DO35R = re.compile(
+    r"^(?:a single|just the one|just one|one) (?P<k>[a-z]+) will do for (?P<p>person [a-z]|"
+    r"[a-z]+)(?P<rest>(?:[\s,.;!?].*)?)$",
+    _F,
+)
+
+
+def _single_will_do35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "A single bottle will do for P" is "Give P a bottle" (one of that kind of
+    the scene's objects, the robots' pick)."""
+    m = _SINGLE_WILL_DO35R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _ids(m["k"], lexicon, "object"):
+        return text
+    return f"Give {m['p']} a {m['k']}{m['rest']}"
+
+
+# "Not apple. Bottle, for Person B, please."
+_NOT_FIRST35R = re.compile(
+    r"^not (?P<x>(?:the )?[a-z]+)\.\s*(?P<rest>[^.!?]+?)(?P<tail>\s*[.!].*)?$",
+    _F,
+)
+
+
+def _not_first35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): a first sentence "Not apple." before a request for another object is that
+    request with ", not the apple" (one whole object; the request must name objects, not it)."""
+    m = _NOT_FIRST35R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    said = _ids(m["rest"], lexicon, "object")
+    if not said or said & _ids(m["x"], lexicon):
+        return text
+    x = m["x"] if m["x"].lower().startswith("the ") else f"the {m['x']}"
+    return f"{m['rest']}, not {x}{m['tail'] or '.'}"
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -25182,6 +25232,8 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _it_says35r,
     _rather_after35r,
     _likes_both35r,
+    _single_will_do35r,
+    _not_first35r,
 )
 
 
