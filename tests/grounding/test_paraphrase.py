@@ -269,6 +269,39 @@ KNOWN_MISSES = frozenset(
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
+        # blind33 (tuned on in session 35): refusals left at its one measurement (docs/grounding.md)
+        "Oh go on then, the bottle to Person B first, and after it the chips, she's earned them at "
+        "cribbage.",
+        "Person B has her heart set on the apple; Person A just wants the bottle after a day's "
+        "angling.",
+        "Chips are needed over at Person A's end, and once they're there, Person B is wanting the "
+        "apple.",
+        "Person B fancies the chips, if you'd sort that.",
+        "Tom needs the packing tape, and I'd like the scanner sat on the belt, ta.",
+        "The bottle's headed for Person B; the cup, for Person A, who's doing the sudoku.",
+        'It was Person B who asked after the chips, so carry them across to him when you can.',
+        'The gloves go to Tom, and the scanner can go along with them.',
+        "The teddy's fallen on the floor, put it on the play mat.",
+        "Apple to Carol, she's off to the crazy golf. Then up on the shelf with the red mug.",
+        'The bottle. For Person A. She drives the early train. Ta.',
+        'Small box onto the pallet and after that the medium box onto the belt and then the '
+        'warehouseman can lock up.',
+        "Torch to Jess, she's under the bench, then the small spanner to Kofi.",
+        'person a wants chips and person b could do with the cup after her crochet',
+        'first the bottle for person b and after it the apple for person a',
+        "the apple's meant for person b so take it over",
+        'person a is after her bottle can you get it to her',
+        'wipes to grandad, lily needs changing',
+        "The red mug's in the way, set it down on the cointer for me.",
+        "Person B's having the apploe and the cup with her draughts game.",
+        'Kick off with the chuips for Person A, and follow up with the bottle for Person B.',
+        "Lily won't settle without her tedsy, let her have it.",
+        'Would the shelf be a better home for the crisps? Pop them up there, ta.',
+        "Person B's off to the ceilidh; is it alright to send her off with the cup and the chips?",
+        'How about letting Person A have the chips, what do you say?',
+        "Emma's just a visitor, but can she have the banana?",
+        "Would you pop the red pen into the box, Priya's having a tidy-up?",
+        'Can Jess take the hammer and the screws?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -339,8 +372,9 @@ KNOWN_UNCLEAR = frozenset(
 # "blind32" written in session 33 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 33 (0 wrong), tuned on in session 34: asserted now, the
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind33" written in session 34 by another engineer and
-# committed alone, measured once at the end of session 34: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind33"})
+# committed alone, reviewed by a second one, measured once at the end of session 34 (0 wrong), tuned
+# on in session 35: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
