@@ -267,6 +267,9 @@ KNOWN_MISSES = frozenset(
         "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
+        # a time after the request puts it off (test_phrasing_s34's "Give Carol the apple after
+        # her walk."; session 35, 12r)
+        'A single bottle will do for Person A after her orienteering.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind33 (tuned on in session 35): refusals left at its one measurement (docs/grounding.md)

@@ -140,6 +140,7 @@ def test_choices(text: str, want: str | None, scene: Scene) -> None:
         ("There's just the one banana here and it's meant for Person A.", None, L24),
         # ', after her <activity>' closing a request (an object there is an order: left)
         ("The bottle is for Person A, after her gymnastics.", "bottle>A", L24),
+        ("The bottle is for Person A after her gymnastics.", None, L24),  # no comma: a time
         ("The bottle is for Person A, after her pills.", None, L24),  # no pills there
         # "Those two cups are filthy, put the pair of them in the sink"
         (
@@ -445,9 +446,11 @@ def test_blind21(text: str, want: str | None, scene: Scene) -> None:
         ("Not apple. Bottle, for Person B, please. Madloba.", "bottle>B", F41),
         ("Not apple. Apple, for Person B.", None, F41),  # the same object
         ("Not banana. Bottle, for Person B.", None, F41),  # no banana there
-        ("A single bottle will do for Person A after her orienteering.", "bottle>A", T12),
-        ("A single mug will do for Bob.", "mug_red>B | mug_blue>B", CELL),
-        ("A single banana will do for Person A.", None, T12),
+        # a time after a request puts it off (session 34's "Give Carol the apple after her
+        # walk."), with or without a comma; a single mug of two (session 31)
+        ("A single bottle will do for Person A after her orienteering.", None, T12),
+        ("Give Person A the bottle, after her orienteering.", None, T12),
+        ("A single mug will do for Alice, after her walk.", None, CELL),
         (
             "They each get a thing, so bottle for Person A and chips for Person B, natotela.",
             "bottle>A & chips>B",

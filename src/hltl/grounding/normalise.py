@@ -24591,20 +24591,28 @@ def _the_one35r(text: str, lexicon: Lexicon) -> str:
 
 # ", after her gymnastics" closing a request: when, as a remark naming nothing of the scene
 _AFTER_HER35R = re.compile(
-    r"(?:,\s*|\s+)after (?P<w>(?:her|his|their) (?:[a-z]+ )?(?:[a-z]+(?:ing|ics)|class|lesson|"
+    r",\s*after (?P<w>(?:her|his|their) (?:[a-z]+ )?(?:[a-z]+(?:ing|ics)|class|lesson|"
     r"practice|training|shift|session|match|game|nap|walk|swim|workout|rehearsal|appointment|"
     r"meeting|exam|lecture|visit|round))(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
+# what the remark follows: a state of who the thing is for ("The bottle is (meant) for Person A")
+_FOR_P35R = re.compile(
+    r"\b(?:is|are|'s|'re) (?:meant |intended |just )?for (?:person [a-z]|[a-z]+)$", _F
+)
+
+
 def _after_her35r(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12r): "(,) after her gymnastics" closing a request is a remark (what the person
-    is back from) when it names an activity (a word in -ing or -ics, 'class', 'shift', 'nap', …)
-    and nothing of the scene, and is taken off; "…, after her bottle" (an object: an order) or
-    "…, after her pills" (a thing the scene lacks) is left."""
+    """Session 35 (12r): "The bottle is (meant) for P, after her gymnastics": after a comma, what
+    the thing is for is when she will use it, a remark (said after a request, "Give Carol the
+    apple after her walk", it is a time, and refused: session 34's near forms), taken off when it
+    names an activity (a word in -ing or -ics, 'class', 'shift', 'nap', …) and nothing of the
+    scene; "…, after her bottle" (an object: an order) or "…, after her pills" (a thing the scene
+    lacks) is left."""
     m = _AFTER_HER35R.search(text) if "after" in text.lower() else None
-    if m is None or _ids(m["w"], lexicon):
+    if m is None or _ids(m["w"], lexicon) or not _FOR_P35R.search(text[: m.start()]):
         return text
     if not _asks_nothing29(m["w"].split(" ", 1)[1], lexicon):  # the pronoun aside
         return text
@@ -25160,23 +25168,6 @@ def _likes_both35r(text: str, lexicon: Lexicon) -> str:
     return f"{m['v'][:1].upper()}{m['v'][1:]} both {m['k']} {m['rest']}"
 
 
-# "A single bottle will do for Person A …"
-_SINGLE_WILL_DO35R = re.compile(
-    r"^(?:a single|just the one|just one|one) (?P<k>[a-z]+) will do for (?P<p>person [a-z]|"
-    r"[a-z]+)(?P<rest>(?:[\s,.;!?].*)?)$",
-    _F,
-)
-
-
-def _single_will_do35r(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12r): "A single bottle will do for P" is "Give P a bottle" (one of that kind of
-    the scene's objects, the robots' pick)."""
-    m = _SINGLE_WILL_DO35R.match(text)
-    if m is None or not _only_person(m["p"], lexicon) or not _ids(m["k"], lexicon, "object"):
-        return text
-    return f"Give {m['p']} a {m['k']}{m['rest']}"
-
-
 # "Not apple. Bottle, for Person B, please."
 _NOT_FIRST35R = re.compile(
     r"^not (?P<x>(?:the )?[a-z]+)\.\s*(?P<rest>[^.!?]+?)(?P<tail>\s*[.!].*)?$",
@@ -25232,7 +25223,6 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _it_says35r,
     _rather_after35r,
     _likes_both35r,
-    _single_will_do35r,
     _not_first35r,
 )
 
