@@ -1,7 +1,8 @@
 """Session-35 phrasings of issue 12 (engineer 12): blind33's refusals by kind in its sections of
-politeness, wants, pronouns and ellipsis, sentence splits, lower case, typos and questions, and the
-clefts fuzz family's (docs/grounding.md, "Session 35 (engineer 12)"). Each rule with sentences it
-reads (which fail with the rule taken out) and near sentences that must stay refused."""
+politeness, wants, pronouns and ellipsis, sentence splits, lower case, typos and questions, the
+clefts fuzz family's, and the same kinds in blind16 and blind13 (docs/grounding.md, "Session 35
+(engineer 12)"). Each rule with sentences it reads (which fail with the rule taken out) and near
+sentences that must stay refused."""
 
 from __future__ import annotations
 
@@ -129,6 +130,23 @@ READS = [
     ("Put the stapler in the box, Sam's having a break.", "stapler@box", OFFICE),
     ("Can Jess take the hammer and the screws?", "hammer>B & screws>B", WORKSHOP),
     ("Could Kofi take the drill?", "drill>A", WORKSHOP),
+    # (x) the hearer told to get the wants sorted, a rest offered after it (blind16)
+    (
+        "Bob is waiting on the cup and Carol on the apple so get those sorted and then you can "
+        "have a rest",
+        "cup>B & apple>C",
+        CELL,
+    ),
+    ("Bob wants the cup and Carol the apple, so get those sorted.", "cup>B & apple>C", CELL),
+    # (y) office speech: 'action' before the doing (blind16)
+    ("can we action getting the stapler over to Priya?", "stapler>A", OFFICE),
+    ("can you action putting the stapler in the box?", "stapler@box", OFFICE),
+    # (z) what the person has not had, then the handover of it (blind13)
+    (
+        "Mr Lee hasn't had his pills, take them over, then the magazine.",
+        "pills>B ; magazine>B",
+        WARD,
+    ),
 ]
 
 
@@ -229,6 +247,18 @@ REFUSED = [
     ("Can Jess take the hammer to the bench?", WORKSHOP),
     ("Can Jess take Kofi?", WORKSHOP),
     ("Can Jess take the bench?", WORKSHOP),
+    # (x) the pronoun against the number; before a sentence mark
+    ("Bob wants the cup, so get them sorted.", CELL),
+    ("Bob wants the cup and Carol the apple, so get it sorted.", CELL),
+    # (y) 'action' before no doing
+    ("can we action Priya?", OFFICE),
+    # (z) the pronoun against the title or the number; a surface not had; another recipient;
+    # the handover negated
+    ("Mrs Khan hasn't had his magazine, take it over.", WARD),
+    ("Mrs Khan hasn't had her magazine, take them over.", WARD),
+    ("Mrs Khan hasn't had her trolley, take it over.", WARD),
+    ("Mrs Khan hasn't had her magazine, take it over to Mr Lee.", WARD),
+    ("Mrs Khan hasn't had her magazine, don't take it over.", WARD),
 ]
 
 

@@ -12618,6 +12618,77 @@ def _who_she_is35(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "… and Person B on the bottle so get those sorted and then you can have a rest": the hearer told
+# to see to the wants just said (as _do_that34's 'so do that too'), with a rest offered after it
+_GET_SORTED35 = re.compile(
+    r",?\s+so (?:get|have) (?P<pron>those|them|these|that|it) (?:sorted|sorted out|seen to|done)"
+    r"(?: for (?:me|us|them))?(?:,? and then you can have a (?:rest|break|breather|sit down|"
+    r"cuppa))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_WANTED35 = re.compile(
+    r"\b(?:wants|needs|is after|'s after|is waiting on|is waiting for|would like|could use)\b", _F
+)
+
+
+def _get_sorted35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the closing part above taken off when what is left, one sentence, says a want
+    (and names no surface: nothing is placed) and the pronoun fits the number of its objects."""
+    if "so " not in text:
+        return text
+    m = _GET_SORTED35.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if re.search(r"[.;:!?]", rest) or not _WANTED35.search(rest) or _ids(rest, lexicon, "surface"):
+        return text
+    objs = _ids(rest, lexicon, "object")
+    if not objs or (len(objs) > 1) != (m["pron"].lower() in ("those", "them", "these")):
+        return text
+    return rest + m["end"].strip()
+
+
+# "Quick one, just circling back: can we action getting the stapler over to Priya?": office speech,
+# 'action' before the doing
+_ACTION_DOING35 = re.compile(r"\b(?P<ask>can|could) (?:we|you) action (?P<v>[a-z]+)ing\b", _F)
+
+
+def _office35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'can we action getting X …' is 'can you get X …' when the words after it name
+    something."""
+    m = _ACTION_DOING35.search(text)
+    if m is None or not _names(text[m.end() :], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['ask']} you {_base(m['v'])}{text[m.end() :]}"
+
+
+# "Mr Lee hasn't had his pills, take them over, …": what the person has not yet had (his own, a
+# closed list of such negated states), then the handover of it with no recipient said
+_NOT_HAD35 = re.compile(
+    r"^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:hasn't|has not|hasn't yet|has not yet) (?:had|got|"
+    r"been given|received) (?P<pron>his|her|their) (?P<x>[a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<v>take|bring|carry|pop) (?P<it>them|it) over\b",
+    _F,
+)
+
+
+def _not_had35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the two clauses above are 'Take X over to P' when P is one person the pronoun
+    may be, X objects of the scene only, and 'it'/'them' fits their number (the negation is of the
+    state, which the handover ends: no task is negated)."""
+    m = _NOT_HAD35.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _things31(f"the {m['x']}", lexicon):
+        return text
+    if m["pron"].lower() != "their" and not _fits(
+        next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon
+    ):
+        return text
+    plural = len(_ids(m["x"], lexicon, "object")) > 1 or m["x"].lower().endswith("s")
+    if (m["it"].lower() == "them") != plural:
+        return text
+    return f"{m['v'].capitalize()} the {m['x']} over to {m['p']}{text[m.end() :]}"
+
+
 _STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
     _after_it35,
     _want_idioms35,
@@ -12642,6 +12713,9 @@ _STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
     _better_home35,
     _questions35,
     _who_she_is35,
+    _get_sorted35,
+    _office35,
+    _not_had35,
 )
 
 
