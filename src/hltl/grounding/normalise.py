@@ -12074,54 +12074,37 @@ def _after_pastime35(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + m["want"] + m["end"].strip()
 
 
-# "Chips are needed over at Person A's end": the want said of the object, with the person's end of
-# the room (a closed list of such places)
+# "Chips are needed over at Person A's end, and once they're there, …": the want said of the object,
+# with the person's end of the room (a closed list of such places), and the next task when the
+# objects have got there (that end: as session 11's 'there', the one place named before it)
 _NEEDED_AT35 = re.compile(
     r"(?:^|(?<=[.;!?])\s+)(?P<x>(?:the |those |these )?[a-z][a-z ]*?) (?:is|are) (?:needed|wanted) "
     r"(?:over )?(?:at|by|on) (?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?)'s (?:end|side|place|desk|"
     r"table|spot|corner|station|bench)\b",
     _F,
 )
+_ONCE_THERE35 = re.compile(
+    r",?\s*and once (?:they're|they are|it's|it is|that's|that is) there,\s*", _F
+)
 
 
 def _needed_at35(text: str, lexicon: Lexicon) -> str:
     """Session 35: the want above is 'P wants X' when X (its determiner added if not said) is
-    objects of the scene only and P one person."""
+    objects of the scene only and P one person; ', and once they're there, ' right after it is ',
+    and after that, '."""
     if "'s " not in text or ("needed" not in text and "wanted" not in text):
         return text
-
-    def plain(m: re.Match[str]) -> str:
-        x = m["x"]
-        what = x if re.match(rf"{_DET32}\b", x, _F) else f"the {x}"
-        if not _things31(what, lexicon) or not _only_person(m["p"], lexicon):
-            return m[0]
-        lead = m[0][: m.start("x") - m.start()]
-        return f"{lead}{m['p']} wants {what[0].lower()}{what[1:]}"
-
-    return _NEEDED_AT35.sub(plain, text)
-
-
-# "…, and once they're there, Person B …": the next task when the things just said have arrived
-_ONCE_THERE35 = re.compile(
-    r",?\s*and once (?P<pron>they're|they are|it's|it is|that's|that is) (?:there|delivered|"
-    r"dropped off|sorted|done),\s*",
-    _F,
-)
-
-
-def _once_there35(text: str, lexicon: Lexicon) -> str:
-    """Session 35: the clause above is ', and after that, ' when the clause before it names
-    objects of the scene and one person or surface (where 'there' is)."""
-    if "once " not in text:
-        return text
-    m = _ONCE_THERE35.search(text)
+    m = _NEEDED_AT35.search(text)
     if m is None:
         return text
-    before = re.split(r"[.;:!?]", text[: m.start()])[-1]
-    targets = _ids(before, lexicon, "human") | _ids(before, lexicon, "surface")
-    if len(targets) != 1 or not _ids(before, lexicon, "object"):
+    what = m["x"] if re.match(rf"{_DET32}\b", m["x"], _F) else f"the {m['x']}"
+    if not _things31(what, lexicon) or not _only_person(m["p"], lexicon):
         return text
-    return f"{text[: m.start()]}, and after that, {text[m.end() :]}"
+    then = _ONCE_THERE35.match(text, m.end())
+    said = f"{m['p']} wants {what[0].lower()}{what[1:]}"
+    if then is None:
+        return f"{text[: m.start('x')]}{said}{text[m.end() :]}"
+    return f"{text[: m.start('x')]}{said}, and after that, {text[then.end() :]}"
 
 
 # "Person B fancies the chips, if you'd sort that.": the hearer asked to see to it, closing (a
@@ -12321,7 +12304,7 @@ def _state_it35(text: str, lexicon: Lexicon) -> str:
 # "Then up on the shelf with the red mug.": the placement said with the place first and the object
 # after 'with' (as _what_waiting34's 'over to her with it')
 _ON_WITH35 = re.compile(
-    r"(?:^|(?<=[.;!?] )|(?<=, ))(?P<then>(?:then|and then|next|after that),? )?(?:up |down |over )?"
+    r"(?:(?<=[.;!?] )|(?<=, ))(?P<then>(?:then|and then|next|after that),? )?(?:up |down |over )?"
     r"(?P<on>on|onto|in|into|on top of) (?P<s>the [a-z][a-z ]*?) with "
     rf"(?P<x>{_DET32} [a-z][a-z ]*?)(?P<end>\s*(?:[,.;!?]|$))",
     _F,
@@ -12330,7 +12313,8 @@ _ON_WITH35 = re.compile(
 
 def _on_with35(text: str, lexicon: Lexicon) -> str:
     """Session 35: the placement above said plainly ('Then put the red mug on the shelf') when S
-    is one surface of the scene and X objects only."""
+    is one surface of the scene and X objects only, after a sentence mark, a comma or 'then' (an
+    instruction opening with it is _onto_with33r's)."""
     if " with " not in text:
         return text
 
@@ -12338,7 +12322,7 @@ def _on_with35(text: str, lexicon: Lexicon) -> str:
         if not _surface_only(m["s"], lexicon) or not _things31(m["x"], lexicon):
             return m[0]
         then = m["then"] or ""
-        opens = not then and (m.start() == 0 or text[: m.start()].rstrip()[-1:] in ".;!?")
+        opens = not then and text[: m.start()].rstrip()[-1:] in ".;!?"
         verb = "Put" if opens else "put"
         return f"{then}{verb} {m['x']} {m['on']} {m['s']}{m['end']}"
 
@@ -12694,7 +12678,6 @@ _STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
     _want_idioms35,
     _after_pastime35,
     _needed_at35,
-    _once_there35,
     _if_sort35,
     _sat_on35,
     _headed_for35,
