@@ -160,9 +160,11 @@ REFUSED = [
     ("Mrs Khan won't sleep without his magazine.", WARD),
     ("Carol won't settle without the shelf.", CELL),
     ("Carol won't settle without Bob.", CELL),
-    # (c) a pronoun against the title; a time of day is no pastime
+    # (c) a pronoun against the title; a time, or an event (when, not why), is no pastime
     ("Mrs Khan wants the magazine after his darts.", WARD),
     ("Carol wants the cup after her morning.", CELL),
+    ("Carol wants the cup after the meeting.", CELL),
+    ("Carol wants the cup after the wedding.", CELL),
     # (d) a surface wanted; a surface's end; a place not of the closed list
     ("The shelf is needed over at Carol's end.", CELL),
     ("Crisps are needed over at the shelf's end.", CELL),
@@ -178,6 +180,7 @@ REFUSED = [
     ("I'd like the cup sat on Bob.", CELL),
     ("I'd like the cup sat on the shelf by Bob.", CELL),
     ("I'd like Bob sat on the shelf.", CELL),
+    ("I'd like the cup left on the shelf.", CELL),
     # (h) headed for two people; a person headed somewhere
     ("The cup's headed for Carol and Bob.", CELL),
     ("Bob's headed for Carol.", CELL),

@@ -12041,16 +12041,17 @@ def _want_idioms35(text: str, lexicon: Lexicon) -> str:
 
 
 # "… wants the bottle after a day's angling", "… could do with the cup after her crochet": what
-# made the person want it (a doing: a word in '-ing', or one of a closed list of pastimes), closing
-# the instruction after a want of objects only
+# made the person want it (a pastime of a closed list, said as hers or as 'a day's'; "after the
+# meeting" says when, and is not taken off), closing the instruction after a want of objects only
 _AFTER_PASTIME35 = re.compile(
     r"\b(?P<want>(?:wants|needs|fancies|could use|could do with|would love|would like|is after|"
     rf"'s after) (?P<x>{_DET32}(?: (?!and\b|but\b|so\b)[a-z]+)+?)) after (?:(?P<pron>her|his|"
-    r"their)|the|a|a long|"
-    r"a hard|a busy) (?:(?:long |hard |busy )?day's )?(?P<doing>[a-z]+ing|crochet|gymnastics|"
-    r"aerobics|pilates|yoga|karate|judo|chess|bingo|cribbage|darts|golf|tennis|football|"
-    r"netball|cricket|rugby|hockey|squash|badminton|choir|ballet|embroidery|needlework|"
-    r"patchwork|pottery|origami|allotment|gardening)(?P<end>\s*[.!]?)\s*$",
+    r"their)|a (?:long |hard |busy )?day's) (?P<doing>angling|fishing|knitting|crochet|sewing|"
+    r"quilting|swimming|running|cycling|climbing|rowing|sailing|skating|skiing|surfing|riding|"
+    r"dancing|singing|walking|jogging|hiking|boxing|bowling|baking|painting|gardening|"
+    r"gymnastics|aerobics|pilates|yoga|karate|judo|chess|bingo|cribbage|darts|golf|tennis|"
+    r"football|netball|cricket|rugby|hockey|squash|badminton|choir|ballet|embroidery|needlework|"
+    r"patchwork|pottery|origami)(?P<end>\s*[.!]?)\s*$",
     _F,
 )
 
@@ -12135,7 +12136,7 @@ def _if_sort35(text: str, lexicon: Lexicon) -> str:
 # to stand there (a closed list of such participles)
 _SAT_ON35 = re.compile(
     r"\b(?P<want>(?:i|we)(?:'d| would) (?:like|love|prefer|want)) "
-    rf"(?P<x>{_DET32} [a-z][a-z ]*?) (?:sat|sitting|stood|standing|left|placed|put|parked|set) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?) (?:sat|sitting|stood|standing|placed|put|parked|set) "
     r"(?P<on>on|in|onto|into|on top of) (?=the\b)",
     _F,
 )
