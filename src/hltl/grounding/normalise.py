@@ -25303,14 +25303,14 @@ _ANYTHING_BUT35R = re.compile(
 
 def _anything_but35r(text: str, lexicon: Lexicon) -> str:
     """Session 35 (12r): "P can have anything but X and Y (, I'm not fussed what)" is "P can have
-    A or B", the scene's other objects (each named whole, every one of X and Y a name of the
-    scene's objects; one left is that one)."""
+    A or B", the scene's other objects (each named whole, every one of X and Y, two or more, a
+    name of the scene's objects; one left is that one)."""
     m = _ANYTHING_BUT35R.match(text) if "anything" in text.lower() else None
     if m is None or not _only_person(m["p"], lexicon):
         return text
     items = [i.strip() for i in re.split(r",|\band\b", m["x"], flags=_F) if i.strip()]
-    if not items or not all(_only_kind(i, lexicon, "object") for i in items):
-        return text
+    if len(items) < 2 or not all(_only_kind(i, lexicon, "object") for i in items):
+        return text  # one thing left out is session 33's _anything_but33r
     out = {oid for i in items for oid in _ids(i, lexicon, "object")}
     said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects if o.id not in out]
     if not said or any(x is None for x in said):
@@ -25334,32 +25334,6 @@ def _keep_losing35r(text: str, _lexicon: Lexicon) -> str:
     if m is None:
         return text
     return f"{text[: m.end('head')]}{m['end'] or '.'}"
-
-
-# "Salt on the rack, no, on the counter, the rack's only for plates."
-_ONLY_FOR35R = re.compile(
-    r"^(?P<head>.+\bno,\s*(?:on |in )?the (?P<s2>[a-z]+(?: [a-z]+)?)),\s*the (?P<s1>[a-z]+"
-    r"(?: [a-z]+)?)(?:'s| is) (?:only|just) for (?P<k>[a-z]+)(?P<end>\s*[.!]?)$",
-    _F,
-)
-
-
-def _only_for35r(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12r): after a correction to another surface, "the rack's only for plates" says
-    why of the surface corrected away (named before the cue): taken off when the kind it is for
-    is not what the request moves."""
-    m = _ONLY_FOR35R.match(text) if "only for" in text.lower() else None
-    if m is None or not _whole_name(m["s1"], lexicon, "surface"):
-        return text
-    if not _whole_name(m["s2"], lexicon, "surface"):
-        return text
-    s1, s2 = _ids(m["s1"], lexicon), _ids(m["s2"], lexicon)
-    if s1 == s2 or not s1 <= _ids(text[: m.start("s2")], lexicon, "surface"):
-        return text
-    done = _tasks_of(m["head"], lexicon)
-    if not done or {t[1] for t in done} & _ids(m["k"], lexicon):
-        return text
-    return f"{m['head']}{m['end'] or '.'}"
 
 
 # "Give Jess the spanner that isn't already sitting on the bench, she'll know why."
@@ -25426,7 +25400,6 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _whoever_not35r,
     _anything_but35r,
     _keep_losing35r,
-    _only_for35r,
     _isnt_on35r,
 )
 
