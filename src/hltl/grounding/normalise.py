@@ -21760,6 +21760,34 @@ def count_said30(text: str) -> tuple[str, int, str] | None:
     return None
 
 
+# Session 35 (lead): a count said right before a kind of the scene's objects ('three plates',
+# 'all 3 cups'); 'two of the …' (a part of them) is not one: its whole is counted
+_COUNTED35L = re.compile(r"\b(two|three|four|five|six|[2-6])\s+([a-z]+)\b", _F)
+
+
+def miscounted35l(text: str, lexicon: Lexicon) -> None:
+    """Refuse ``text`` when it counts more of a kind of the scene's objects than the scene has,
+    wherever it says so (12c's counts fuzz: "Lena is taking the three plates out, so she needs
+    both of them" read both plates for Lena, the count in the reason clause dropped with it). A
+    speaker who counts what is not there may mean something else, so the request is not read.
+    Fewer is left to the grammar ('two boxes, the small and the medium' picks two of three; 'the
+    two boxes, the small and the medium one' names them); words for any object ('things',
+    'items') name several kinds and are counted by the grammar, not here."""
+    for m in _COUNTED35L.finditer(text):
+        word = m.group(1).lower()
+        said = int(word) if word.isdigit() else _COUNTS[word]
+        refs = [r for it in _names(m.group(2), lexicon) for r in it.refs]
+        if not refs or any(r.kind != "object" for r in refs):
+            continue
+        ids = sorted({r.id for r in refs})
+        kinds = {o.category for o in lexicon.scene.objects if o.id in ids}
+        if len(kinds) == 1 and len(ids) < said:
+            raise GroundingError(
+                f"{m.group(0)!r}: the scene has {len(ids)} ({', '.join(ids)}) matching "
+                f"{m.group(2)!r}, not {said}: name the ones meant"
+            )
+
+
 # Session 32 (12s): a statement closing the instruction after its request ("Could Bob have the
 # crisps before we go on, he's the only tenor we've got?", "…, she's doing the X-ray rounds
 # next."): who it is about, then a verb of its own
