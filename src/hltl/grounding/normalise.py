@@ -49,6 +49,7 @@ from hltl.errors import GroundingError
 # a match of it must contain, and compiled patterns are kept past re's own cache
 from hltl.grounding import gate as re
 from hltl.grounding.lexicon import (
+    KIND_CATEGORIES,
     PRONOUN_SEX,
     TITLES,
     VERB_CLASS,
@@ -20118,12 +20119,8 @@ def _handovers33t(text: str, lexicon: Lexicon) -> list[Task] | None:
     return said if all(t.kind == "deliver" for t in said) else None
 
 
-# what a kind word covers, by the objects' categories (a closed list: 'the drinks' names no
-# object of the scene by itself)
-_KINDS33T = {
-    "drinks": frozenset({"bottle", "cup", "mug", "jug", "beaker", "glass", "flask"}),
-    "snacks": frozenset({"chips", "crisps", "apple", "banana", "biscuit"}),
-}
+# what a kind word covers, by the objects' categories (lexicon.KIND_CATEGORIES)
+_KINDS33T = KIND_CATEGORIES
 
 
 def _kind_choice33t(text: str, lexicon: Lexicon) -> str:
