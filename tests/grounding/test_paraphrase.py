@@ -210,12 +210,9 @@ KNOWN_MISSES = frozenset(
         "Person A's gasping after the last race, the bottle is what she's needing.",
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
-        'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
-        'pallet before he goes.',
         'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
@@ -236,7 +233,6 @@ KNOWN_MISSES = frozenset(
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',
-        "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Can Mr Novak have the salt, please, he says the soup needs it?',

@@ -14,6 +14,7 @@ import pytest
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
@@ -256,4 +257,69 @@ def test_a_kind_before_people_and_objects_reads() -> None:
         "All three of them want something to eat: Dana the banana, Omar the bowl, Emma the spoon",
         "banana>A & bowl>B & spoon>C",
         LAB,
+    )
+
+
+# -- blind21/22's kinds --------------------------------------------------------------------------
+
+
+L24 = load_scene(EXAMPLES / "2-4-line.yaml")
+FIG1 = load_scene(EXAMPLES / "fig1.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind22 (normalise._has_to35s): an object that has to be somewhere
+        (
+            "Tom needs the barcode scanner for his last drop, and the medium box has to be on "
+            "the pallet before he goes.",
+            "scanner>B & box_medium@pallet",
+        ),
+        ("The tape has to go on the conveyor.", "tape@conveyor"),
+        ("The tape and the gloves have to be on the pallet", "tape@pallet & gloves@pallet"),
+    ],
+)
+def test_an_object_that_has_to_be_somewhere(text: str, want: str) -> None:
+    assert_reads(text, want, DEPOT)
+
+
+def test_a_person_who_has_to_be_somewhere_is_no_placement() -> None:
+    assert_refused("Tom has to be on the pallet, give him the tape", DEPOT)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind22 (normalise._FRAMES22): how long, between 'waiting' and 'for'
+        (
+            "Person A has been waiting ages for those chips. They're hers, take them over.",
+            "chips>A",
+        ),
+        ("Person B is waiting so long for the bottle. Take it over.", "bottle>B"),
+    ],
+)
+def test_waiting_ages_for(text: str, want: str) -> None:
+    assert_reads(text, want, L24)
+
+
+def test_waiting_ages_for_a_person_is_no_want() -> None:
+    assert_refused("Person A has been waiting ages for Person B. Take them over.", L24)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # blind22 (normalise._reason_head35s): a reason, then 'and I …'
+        "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
+        "Give Alice the bottle, she's been shouting at me and I can't hear a word.",
+    ],
+)
+def test_a_reason_then_the_speaker(text: str) -> None:
+    assert_reads(text, "bottle>A", FIG1)
+
+
+def test_a_reason_that_could_change_the_request_then_the_speaker() -> None:
+    assert_refused(
+        "Give Alice the bottle, she's not having the chips and I can't hear a word.", FIG1
     )

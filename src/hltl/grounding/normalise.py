@@ -13043,7 +13043,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
             remark, head = True, ""
         if (
             remark
-            and (not head or _names(head, lexicon))
+            and (not head or _names(head, lexicon) or _reason_head35s(head, out, lexicon))
             and (
                 not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
                 or not _names("".join(out) + head, lexicon)
@@ -13113,6 +13113,13 @@ _FRAMES22: tuple[tuple[str, str], ...] = (
     (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
     # session 26: "Person A's been waiting on it" (waiting for it)
     (r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) waiting on\b", " wants"),
+    # session 35 (12s): "Person A has been waiting ages for those chips" (how long, as _words
+    # reads it)
+    (
+        r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) (?:still )?waiting "
+        r"(?:ages|forever|a while|so long|for ages) for\b",
+        " wants",
+    ),
 )
 # a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
 _PURPOSE22 = re.compile(
@@ -22148,6 +22155,47 @@ _STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (
     _straight34s,
     _kind_before34s,
 )
+
+# -- session 35 (12s): blind21/22's kinds --------------------------------------------------------
+
+# An object that has to be somewhere ("… and the medium box has to be on the pallet before he
+# goes"): an obligation, as 'should be on' / 'has got to go on' (read already); said of a person
+# ("Tom has to be on the pallet") it is no placement and is left.
+_HAS_TO35S = re.compile(
+    r"\b(?P<obj>(?:the |that |this )?[a-z]+(?: [a-z]+)?) (?:has|have) to (?P<v>be|go|sit)"
+    r"(?P<back> back)? (?P<on>on|onto|in|into) ",
+    _F,
+)
+
+
+def _has_to35s(text: str, lexicon: Lexicon) -> str:
+    """'<object> has to be on S' → '<object> should be on S' (above)."""
+
+    def should(m: re.Match[str]) -> str:
+        if not _only_kind(m["obj"], lexicon, "object"):
+            return m.group(0)
+        return f"{m['obj']} should {m['v']}{m['back'] or ''} {m['on']} "
+
+    return _HAS_TO35S.sub(should, text)
+
+
+# a reason's subject and verb ("she's been shouting at me", "he keeps asking")
+_REASON_HEAD35S = re.compile(
+    r"^\s*(?:she|he|they|it)(?:'s|'re|'ve|'ll|'d| is| are| was| were| has| have| had| keeps?)\b",
+    _F,
+)
+
+
+def _reason_head35s(head: str, out: list[str], lexicon: Lexicon) -> bool:
+    """Session 35 (12s): in _speaker_remarks, the words before 'and I …' may be a reason said
+    after the request ("Give Alicw the bottle, she's been shouting at me and I can't hear a
+    word"): the speaker's part is taken off and the reason left for _reasons21 (which takes it
+    off only when it names nothing and holds no word that could change the request), when the
+    reason opens on a pronoun and a verb and the words before it name something."""
+    return bool(_REASON_HEAD35S.match(head)) and bool(_names("".join(out), lexicon))
+
+
+_STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (_has_to35s,)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
@@ -24508,6 +24556,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS30R,
     # session 34 (12s): blind21/22's kinds
     *_STEPS34S,
+    # session 35 (12s): blind21/22's kinds
+    *_STEPS35S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,
