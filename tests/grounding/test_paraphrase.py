@@ -195,9 +195,6 @@ KNOWN_MISSES = frozenset(
         "Give Person A something to eat, but not the apple, she's allergic.",
         "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
         "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
-        "bob's been on the bike all day give him the bottle thx",
-        "The sponhe can go in the sink now it's been used.",
-        "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",

@@ -323,3 +323,53 @@ def test_a_reason_that_could_change_the_request_then_the_speaker() -> None:
     assert_refused(
         "Give Alice the bottle, she's not having the chips and I can't hear a word.", FIG1
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind21 (normalise._state_run_on35s): a person's state run on into the request
+        ("bob's been on the bike all day give him the bottle thx", "bottle>B"),
+        ("alice is back give her the chips", "chips>A"),
+        (
+            "bob's been on the bike all day give him the bottle and alice the chips",
+            "bottle>B & chips>A",
+        ),
+    ],
+)
+def test_a_state_run_on_into_the_request(text: str, want: str) -> None:
+    assert_reads(text, want, FIG1)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bob's been on the bike all day give her the bottle thx",  # not Bob
+        "bob's not thirsty give him the bottle",  # a negation
+        "bob's been waiting for the chips give him the bottle",  # a want of something else
+    ],
+)
+def test_a_state_run_on_that_could_change_the_request(text: str) -> None:
+    assert_refused(text, FIG1)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # blind21 (normalise._done_with35s): the object's use said to be over
+        (
+            "The magazone can go back on the trolley, Mrs Khan's finished with it.",
+            "magazine@trolley",
+            WARD,
+        ),
+        ("Give Ruth the magazine, Mrs Khan's finished with it.", "magazine>A", WARD),
+        ("The magazine can go back on the trolley, she's done with it.", "magazine@trolley", WARD),
+        ("The sponhe can go in the sink now it's been used.", "sponge@sink", LAB),
+    ],
+)
+def test_the_use_said_to_be_over(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+def test_someone_finished_with_it_alone_asks_nothing() -> None:
+    assert_refused("Mrs Khan's finished with it.", WARD)

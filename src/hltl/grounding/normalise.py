@@ -22195,7 +22195,65 @@ def _reason_head35s(head: str, out: list[str], lexicon: Lexicon) -> bool:
     return bool(_REASON_HEAD35S.match(head)) and bool(_names("".join(out), lexicon))
 
 
-_STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (_has_to35s,)
+# A person's state run on into the request without a mark ("bob's been on the bike all day give
+# him the bottle thx"): the state, then a request opening on its verb and a pronoun.
+_STATE_RUN_ON35S = re.compile(
+    r"^(?P<who>[a-z]+(?: [a-z]+)?)(?P<state>(?:'s| is| was)(?: been)? [a-z' ]+?) "
+    r"(?P<req>(?:give|hand|pass|bring|take|fetch) (?:him|her|them)\b[^,.;!?]*[.!]?)$",
+    _F,
+)
+
+
+def _state_run_on35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): a comma put between the state and the request above, when the state's
+    subject is one person, its words name nothing else and hold no word that counts, negates,
+    orders or asks (_SENTENCE_HELD, _TASK_WORDS); the remark is then read as any other."""
+    m = _STATE_RUN_ON35S.match(text.strip())
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    # how long the state has lasted ('all day') counts nothing
+    state = _rx(r"\ball (?:day|morning|afternoon|evening|night|week)\b").sub("", m["state"])
+    if (
+        not _names_nothing(state, lexicon)
+        or _SENTENCE_HELD.search(state)
+        or re.search(_TASK_WORDS, state, _F)
+    ):
+        return text
+    return f"{m['who']}{m['state']}, {m['req']}"
+
+
+# The object's use said to be over, closing the request ("…, Mrs Khan's finished with it.", "…
+# now it's been used"): why it is moved, asking nothing of the person
+_DONE_WITH35S = re.compile(
+    r"(?:\s*,\s*(?:as |since |because )?(?P<who>[A-Za-z][\w ]*?)(?:'s| is| has| are|'re|'ve| have)"
+    r" (?:finished|done)(?: with)? (?:it|them)"
+    r"|,?\s+now(?: that)? (?:it|they)(?:'s| has| is|'re| are| have|'ve) been (?:used|finished|"
+    r"emptied|read|done))(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def _done_with35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): the closing remark above taken off, when its person is one person of
+    the scene (or a pronoun) and the request before it names its object."""
+    m = _DONE_WITH35S.search(text)
+    if m is None or m.start() == 0:
+        return text
+    who = m["who"]
+    if who is not None and not (
+        _only_person(who, lexicon) or who.lower() in ("he", "she", "they", "i", "we")
+    ):
+        return text
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
+_STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _has_to35s,
+    _state_run_on35s,
+    _done_with35s,
+)
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
 
