@@ -180,7 +180,6 @@ KNOWN_MISSES = frozenset(
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
-        "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
@@ -204,10 +203,8 @@ KNOWN_MISSES = frozenset(
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
-        "Person A's gasping after the last race, the bottle is what she's needing.",
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
-        'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
@@ -228,7 +225,6 @@ KNOWN_MISSES = frozenset(
         "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
         "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
         'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
-        "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",

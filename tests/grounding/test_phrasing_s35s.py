@@ -373,3 +373,103 @@ def test_the_use_said_to_be_over(text: str, want: str, scene: Scene) -> None:
 
 def test_someone_finished_with_it_alone_asks_nothing() -> None:
     assert_refused("Mrs Khan's finished with it.", WARD)
+
+
+ONE = load_scene(EXAMPLES / "1-1.yaml")
+TWO_ARMS = load_scene(EXAMPLES / "two_arms.yaml")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # blind22 (normalise._what_she_wants35s): session 31's cleft with a he / she
+        (
+            "Person A's gasping after the last race, the bottle is what she's needing.",
+            "bottle>A",
+            ONE,
+        ),
+        ("Person A's thirsty, the bottle is what she really needs.", "bottle>A", ONE),
+        ("Alice is thirsty, the bottle is what she needs.", "bottle>A", CELL),
+    ],
+)
+def test_the_cleft_with_a_pronoun(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Alice and Carol are thirsty, the bottle is what she needs.",  # two she's
+        "Bob's thirsty, the bottle is what she's needing.",  # not Bob
+        "The bottle is what she's needing.",  # no one named
+    ],
+)
+def test_the_cleft_with_a_pronoun_no_one_fits(text: str) -> None:
+    assert_refused(text, CELL)
+
+
+def test_when_the_want_was_said() -> None:
+    # blind22 (normalise._when_talked35s): when Alice talked about it, not when to hand it over
+    assert_reads(
+        "Alice was on about the crisps before the anthem, could you take them over to her?",
+        "chips>A",
+        TWO_ARMS,
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a time that names the scene's things is left (and refused)
+        "Alice was on about the crisps before the bottle, could you take them over to her?",
+        "Alice was on about the crisps before the anthem.",
+    ],
+)
+def test_when_the_want_was_said_near_forms(text: str) -> None:
+    assert_refused(text, TWO_ARMS)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # blind21 (normalise._at_work35s, _worked_on35s): a person at work on a surface
+        (
+            "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
+            "tape>A & gloves>A",
+        ),
+        ("Give Mia the tape, she's packing the pallet.", "tape>A"),
+    ],
+)
+def test_a_person_at_work_on_a_surface(text: str, want: str) -> None:
+    assert_reads(text, want, DEPOT)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the remark names an object, or the request points at a place: left, and refused
+        "Give Mia the tape, she's loading the gloves on the pallet.",
+        "Give Mia the tape, she's packing the pallet, put the gloves there.",
+        "Put the tape on the last pallet",
+    ],
+)
+def test_a_person_at_work_near_forms(text: str) -> None:
+    assert_refused(text, DEPOT)
+
+
+def test_what_the_surface_corrected_away_is_kept_for() -> None:
+    # blind22 (normalise._WHY_NOT_SURFACE32R): a reason about the surface corrected away
+    assert_reads(
+        "Salt on the rack, no, on the counter, the rack's only for plates.", "salt@counter", KITCHEN
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Salt on the counter, the rack's only for plates.",  # no correction
+        "Salt on the rack, no, on the counter, the counter's only for plates.",  # the one kept
+    ],
+)
+def test_what_a_surface_is_kept_for_near_forms(text: str) -> None:
+    assert_refused(text, KITCHEN)

@@ -793,7 +793,11 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
-    named = _ids(body, lexicon) | _where_they_are(said, body, lexicon)
+    named = (
+        _ids(body, lexicon)
+        | _where_they_are(said, body, lexicon)
+        | _at_work35s(said, body, lexicon)
+    )
     if not {r.id for c in said for it in _names(c, lexicon) for r in it.refs} <= named:
         return text  # the remark names something the request does not: it may ask for it
     wanting = [c for c in said if re.search(_TASK_WORDS + _MAY_HAVE, c, _F)]
@@ -848,6 +852,50 @@ def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
         if len(person) > 1:
             _pronoun_among([m.group(1)], m.group(2), person, lexicon)
     return text
+
+
+# a person at work on a surface ("she's packing the last pallet", "Mia's checking the pallets")
+_AT_WORK35S = re.compile(
+    r"(?:'s|\bis|\bare|'re|\bwas|\bwere)(?: still| just| busy)? (?:packing|loading|unloading|"
+    r"checking|stacking|sorting|clearing|wiping|cleaning|tidying|laying|setting) (?:up )?"
+    r"(?:the|her|his|their) (?P<s>[a-z]+(?: [a-z]+)?)(?=\s*[,.;!?]|\s*$)",
+    _F,
+)
+
+
+def _worked_on35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): which of a surface a person is at work on ("she's packing the last
+    pallet"), a scene that has one, says nothing of any task: 'the last / next / first' taken
+    off before it (a remark can then be taken off: _at_work35s)."""
+
+    def plain(m: re.Match[str]) -> str:
+        if not _only(m["s"], lexicon, "surface") or m.group(0).lower().count(" the ") != 1:
+            return m.group(0)
+        return m.group(0).replace(f" {m['which']} ", " ", 1)
+
+    return _rx(
+        r"(?:'s|\bis|\bare|'re)(?: still| just| busy)? (?:packing|loading|unloading|checking|"
+        r"stacking|sorting|clearing) the (?P<which>last|next|first) (?P<s>[a-z]+)"
+        r"(?=\s*[,.;!?]|\s*$)"
+    ).sub(plain, text)
+
+
+def _at_work35s(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
+    """Session 35 (12s): the surfaces remarks name only as where a person is at work ("The
+    tape's for Mia, and the gloves as well, she's packing the last pallet."), on the conditions
+    of _where_they_are (the remarks name no object; the request points at no place): what a
+    person works on changes nobody's task. The surface said in the plural ('the pallets') counts
+    as its name."""
+    if any(_ids(c, lexicon, "object") for c in said) or re.search(r"\b(?:there|here)\b", body, _F):
+        return set()
+    out: set[str] = set()
+    for c in said:
+        for m in _AT_WORK35S.finditer(c):
+            for n in (m["s"], m["s"].removesuffix("s")):
+                if _only(n, lexicon, "surface"):
+                    out |= _ids(n, lexicon, "surface")
+                    break
+    return out
 
 
 def _where_they_are(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
@@ -19773,7 +19821,12 @@ _WHY_NOT_OBJECT32R = (
     r"(?:'s| has) got a (?:crack|chip|hole|stain)(?: in it)?|(?:'s| is) (?:cracked|chipped|"
     r"broken|dirty|filthy|empty|wet|leaking|sticky)"
 )
-_WHY_NOT_SURFACE32R = r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+_WHY_NOT_SURFACE32R = (
+    r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+    # session 35 (12s): what the surface is kept for ("…, no, on the counter, the rack's only for
+    # plates")
+    r"|(?:'s| is) (?:only|just) (?:for|meant for) [a-z]+s"
+)
 _WHY_NOT32R = {
     "human": _WHY_NOT_PERSON32R,
     "object": _WHY_NOT_OBJECT32R,
@@ -22249,10 +22302,61 @@ def _done_with35s(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + text[m.end() :]
 
 
+# session 31's cleft with a he / she for its person ("Person A's gasping after the last race,
+# the bottle is what she's needing."): the wanting also said as '-ing' ('is needing')
+_WHAT_SHE_WANTS35S = re.compile(
+    rf"(?:^|(?<=[,;.!?]\s))(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:is|are|'s|'re) "
+    rf"(?:just |exactly )?what (?P<pron>she|he)\s?(?:really )?"
+    rf"(?:{_WANTING31}|'s needing|is needing)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _what_she_wants35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): 'X is what she wants / is needing' is 'P wants X' when P is the one
+    person named before it, every he / she of the text may be P (a title, a word of kin or a
+    first name of the other sex rules P out: _the_person, _named_other_sex34s), and X the scene's
+    objects only."""
+    m = _WHAT_SHE_WANTS35S.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    who = one_person(text[: m.start()], lexicon)
+    if who is None or not _the_person(who, text, lexicon):
+        return text
+    return f"{text[: m.start()]}{who} wants {m['x']}{text[m.end() :]}"
+
+
+# when a person talked about the object ("Alice was on about the crisps before the anthem,
+# could you …"): when the want was said, not when to do the task (as session 34's 'since the
+# lesson' after 'been on about it')
+_WHEN_TALKED35S = re.compile(
+    r"(?P<want>\b(?:was|were|'s been|has been|had been) (?:on|going on|banging on|asking) about "
+    r"(?:(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?|it|them)) "
+    r"(?P<when>(?:before|during|after|at) (?:the|her|his|their|this|that) (?:[a-z]+ ){0,2}"
+    r"[a-z]+)(?=\s*[,;])",
+    _F,
+)
+
+
+def _when_talked35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): the time above taken off when it names nothing of the scene and holds
+    no word that counts, chooses or points back (_KEEP_WORDS), and a clause follows it."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _names_nothing(m["when"], lexicon) or _KEEP_WORDS.search(m["when"]):
+            return m[0]
+        return m["want"]
+
+    return _WHEN_TALKED35S.sub(said, text)
+
+
 _STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _worked_on35s,
+    _when_talked35s,
     _has_to35s,
     _state_run_on35s,
     _done_with35s,
+    _what_she_wants35s,
 )
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
