@@ -371,8 +371,16 @@ def test_the_use_said_to_be_over(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
 
 
-def test_someone_finished_with_it_alone_asks_nothing() -> None:
-    assert_refused("Mrs Khan's finished with it.", WARD)
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mrs Khan's finished with it.",  # asks nothing
+        # the person the request gives it to: it could take the task back
+        "Give Mrs Khan the magazine, Mrs Khan's done with it.",
+    ],
+)
+def test_someone_finished_with_it_near_forms(text: str) -> None:
+    assert_refused(text, WARD)
 
 
 ONE = load_scene(EXAMPLES / "1-1.yaml")

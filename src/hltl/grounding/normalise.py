@@ -22287,19 +22287,24 @@ _DONE_WITH35S = re.compile(
 
 
 def _done_with35s(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12s): the closing remark above taken off, when its person is one person of
-    the scene (or a pronoun) and the request before it names its object."""
+    """Session 35 (12s): the closing remark above taken off, when the request before it names
+    its object and its person is one person of the scene the request does not name, a he / she /
+    they where the request names no one, or the speaker ("Give Mia the gloves, she's done with
+    them" could take back Mia's task; "Gloves to Mia, no, Tom, Mia's done with them" is a reason
+    for a correction, session 32's)."""
     m = _DONE_WITH35S.search(text)
     if m is None or m.start() == 0:
         return text
-    who = m["who"]
-    if who is not None and not (
-        _only_person(who, lexicon) or who.lower() in ("he", "she", "they", "i", "we")
-    ):
+    before, who = text[: m.start()], m["who"]
+    if who is not None and who.lower() not in ("i", "we"):
+        if who.lower() in ("he", "she", "they"):
+            if _ids(before, lexicon, "human"):
+                return text
+        elif not _only_person(who, lexicon) or _ids(who, lexicon) & _ids(before, lexicon):
+            return text
+    if not _ids(before, lexicon, "object"):
         return text
-    if not _ids(text[: m.start()], lexicon, "object"):
-        return text
-    return text[: m.start()] + text[m.end() :]
+    return before + text[m.end() :]
 
 
 # session 31's cleft with a he / she for its person ("Person A's gasping after the last race,

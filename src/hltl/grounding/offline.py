@@ -3950,6 +3950,8 @@ def _both_then_one35s(text: str, node: Node, lexicon: Lexicon) -> None:
     both objects (the one named then only one of them) or be said to the two people ('sorry,
     both'), and the chips alone go: refused naming both readings. 'both, the bottle and the
     chips, to Person B' (the two named) is read as before."""
+    if re.search(r"\bboth\s*,", text, re.I) is None:
+        return  # (lexed only when it may hold 'both ,')
     try:
         items = lex(text, lexicon)
     except GroundingError:
