@@ -481,3 +481,27 @@ def test_what_the_surface_corrected_away_is_kept_for() -> None:
 )
 def test_what_a_surface_is_kept_for_near_forms(text: str) -> None:
     assert_refused(text, KITCHEN)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # found on main (phrasing._is_after): was chips>A ; bottle>A, the want read as an order
+        ("Give Alice the bottle, she's after the chips.", "bottle>A & chips>A"),
+        ("Give Alice the bottle and she's after the chips.", "bottle>A & chips>A"),
+        ("Give Alice the bottle, she wants the chips.", "bottle>A & chips>A"),
+    ],
+)
+def test_a_pronoun_is_after_an_object(text: str, want: str) -> None:
+    assert_reads(text, want, FIG1)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Bob the bottle, she's after the chips.",  # not Bob
+        "Give Alice the bottle, he's after the chips.",  # not Alice
+    ],
+)
+def test_a_pronoun_is_after_an_object_no_one_fits(text: str) -> None:
+    assert_refused(text, FIG1)

@@ -214,7 +214,9 @@ _THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx
 
 def _is_after(items: list[Item]) -> list[Item]:
     """'Bob's after the chips': at the start of a clause, a person who 'is after' an object
-    wants it ('after' between a person and an object orders nothing)."""
+    wants it ('after' between a person and an object orders nothing). Session 35 (12s): a
+    he / she too ("Give Alice the bottle, she's after the chips." had read `chips>A ; bottle>A`,
+    the want as an order), resolved as any pronoun is."""
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -222,7 +224,7 @@ def _is_after(items: list[Item]) -> list[Item]:
         opens = not out or out[-1].kind == "punct" or _is(out[-1], "and")
         if (
             opens
-            and _humans(it)
+            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
             and k + 3 < len(items)
             and items[k + 1].text.lower() in ("'s", "is", "are", "'re")
             and _is(items[k + 2], "after")
