@@ -168,7 +168,6 @@ KNOWN_MISSES = frozenset(
         "The little one wants her teddy, she won't settle without it.",
         "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
-        "The tape's for Mia, and the gloves as well, she's packing the last pallet.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
@@ -179,9 +178,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "bob's been on the bike all day give him the bottle thx",
-        "The sponhe can go in the sink now it's been used.",
-        "The magazone can go back on the trolley, Mrs Khan's finished with it.",
         "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
         "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",
@@ -191,15 +187,10 @@ KNOWN_MISSES = frozenset(
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
         "the hinges here.",
-        "Person A's gasping after the last race, the bottle is what she's needing.",
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
-        'Tom needs the barcode scanner for his last drop, and the medium box has to be on the '
-        'pallet before he goes.',
-        'Alice was on about the crisps before the anthem, could you take them over to her?',
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        "Person A has been waiting ages for those chips. They're hers, take them over.",
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
@@ -212,9 +203,7 @@ KNOWN_MISSES = frozenset(
         'Both plates onto the counter, Marco wants to plate up the goulash.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',
-        "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
         "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
         'Can Mr Novak have the salt, please, he says the soup needs it?',

@@ -2306,8 +2306,66 @@ def ambiguous(item: Item, lexicon: Lexicon) -> GroundingError:
     )
 
 
+# what a kind word covers, by the objects' categories (a closed list, session 33 (12t): 'the
+# drinks' names no object of the scene by itself; session 35 (12s): also what 'a snack' or
+# 'something to drink' said before the objects must agree with)
+KIND_CATEGORIES = {
+    "drinks": frozenset({"bottle", "cup", "mug", "jug", "beaker", "glass", "flask"}),
+    "snacks": frozenset({"chips", "crisps", "apple", "banana", "biscuit"}),
+}
 TITLE_SEX = {"mr": "m", "mister": "m", "mrs": "f", "ms": "f", "miss": "f", "missus": "f"}
 PRONOUN_SEX = {"he": "m", "him": "m", "his": "m", "she": "f", "her": "f", "hers": "f"}
+
+
+# session 35 (12s): a word of kin that the scene names a person by ('Grandad', 'big sister')
+# says that person's sex as a title does (a closed list; a first name alone still says none)
+KIN_SEX35S = {
+    **dict.fromkeys(
+        (
+            *("grandad", "granddad", "grandpa", "grandfather", "dad", "daddy", "father"),
+            *("uncle", "brother", "son", "husband", "boyfriend", "nephew", "grandson"),
+        ),
+        "m",
+    ),
+    **dict.fromkeys(
+        (
+            *("grandma", "granny", "gran", "nan", "nana", "nanna", "grandmother", "mum", "mummy"),
+            *("mom", "mommy", "mother", "aunt", "auntie", "aunty", "sister", "daughter", "wife"),
+            *("girlfriend", "niece", "granddaughter"),
+        ),
+        "f",
+    ),
+}
+
+
+def _kin_sex35s(name: str) -> str | None:
+    """'m' / 'f' when ``name``'s last word is a word of kin ('Grandad', 'big sister')."""
+    words = name.lower().split()
+    return KIN_SEX35S.get(words[-1]) if words else None
+
+
+def said_sex35s(pid: str, lexicon: Lexicon) -> str | None:
+    """Session 35 (12s): 'm' or 'f' when the scene names person ``pid`` with a title or a word
+    of kin ('Mr Lee', 'Grandad'); what resolving a he / she / him / her as a person of the
+    request goes by ("The two blocks are for Grandad, give her both!": not Grandad)."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    kin = {s for a in (human.name, *human.aliases) if (s := _kin_sex35s(a)) is not None}
+    title = title_sex(pid, lexicon)
+    sexes = kin | ({title} if title else set())
+    return next(iter(sexes)) if len(sexes) == 1 else None
+
+
+def sex_said_by35s(pids: list[str], lexicon: Lexicon) -> str:
+    """'by title' / "by 'Grandad'": how the scene says the sex of each of ``pids`` (for a
+    refusal that rules them out)."""
+    said: list[str] = []
+    for pid in pids:
+        human = next(h for h in lexicon.scene.humans if h.id == pid)
+        kin = [a for a in human.aliases if _kin_sex35s(a) is not None]
+        how = "title" if title_sex(pid, lexicon) is not None or not kin else repr(kin[0])
+        if how not in said:
+            said.append(how)
+    return "by " + " and ".join(said)
 
 
 def title_sex(pid: str, lexicon: Lexicon) -> str | None:

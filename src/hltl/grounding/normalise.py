@@ -49,6 +49,7 @@ from hltl.errors import GroundingError
 # a match of it must contain, and compiled patterns are kept past re's own cache
 from hltl.grounding import gate as re
 from hltl.grounding.lexicon import (
+    KIND_CATEGORIES,
     PRONOUN_SEX,
     TITLES,
     VERB_CLASS,
@@ -792,7 +793,11 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
-    named = _ids(body, lexicon) | _where_they_are(said, body, lexicon)
+    named = (
+        _ids(body, lexicon)
+        | _where_they_are(said, body, lexicon)
+        | _at_work35s(said, body, lexicon)
+    )
     if not {r.id for c in said for it in _names(c, lexicon) for r in it.refs} <= named:
         return text  # the remark names something the request does not: it may ask for it
     wanting = [c for c in said if re.search(_TASK_WORDS + _MAY_HAVE, c, _F)]
@@ -847,6 +852,50 @@ def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
         if len(person) > 1:
             _pronoun_among([m.group(1)], m.group(2), person, lexicon)
     return text
+
+
+# a person at work on a surface ("she's packing the last pallet", "Mia's checking the pallets")
+_AT_WORK35S = re.compile(
+    r"(?:'s|\bis|\bare|'re|\bwas|\bwere)(?: still| just| busy)? (?:packing|loading|unloading|"
+    r"checking|stacking|sorting|clearing|wiping|cleaning|tidying|laying|setting) (?:up )?"
+    r"(?:the|her|his|their) (?P<s>[a-z]+(?: [a-z]+)?)(?=\s*[,.;!?]|\s*$)",
+    _F,
+)
+
+
+def _worked_on35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): which of a surface a person is at work on ("she's packing the last
+    pallet"), a scene that has one, says nothing of any task: 'the last / next / first' taken
+    off before it (a remark can then be taken off: _at_work35s)."""
+
+    def plain(m: re.Match[str]) -> str:
+        if not _only(m["s"], lexicon, "surface") or m.group(0).lower().count(" the ") != 1:
+            return m.group(0)
+        return m.group(0).replace(f" {m['which']} ", " ", 1)
+
+    return _rx(
+        r"(?:'s|\bis|\bare|'re)(?: still| just| busy)? (?:packing|loading|unloading|checking|"
+        r"stacking|sorting|clearing) the (?P<which>last|next|first) (?P<s>[a-z]+)"
+        r"(?=\s*[,.;!?]|\s*$)"
+    ).sub(plain, text)
+
+
+def _at_work35s(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
+    """Session 35 (12s): the surfaces remarks name only as where a person is at work ("The
+    tape's for Mia, and the gloves as well, she's packing the last pallet."), on the conditions
+    of _where_they_are (the remarks name no object; the request points at no place): what a
+    person works on changes nobody's task. The surface said in the plural ('the pallets') counts
+    as its name."""
+    if any(_ids(c, lexicon, "object") for c in said) or re.search(r"\b(?:there|here)\b", body, _F):
+        return set()
+    out: set[str] = set()
+    for c in said:
+        for m in _AT_WORK35S.finditer(c):
+            for n in (m["s"], m["s"].removesuffix("s")):
+                if _only(n, lexicon, "surface"):
+                    out |= _ids(n, lexicon, "surface")
+                    break
+    return out
 
 
 def _where_they_are(said: list[str], body: str, lexicon: Lexicon) -> set[str]:
@@ -13781,7 +13830,7 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
             remark, head = True, ""
         if (
             remark
-            and (not head or _names(head, lexicon))
+            and (not head or _names(head, lexicon) or _reason_head35s(head, out, lexicon))
             and (
                 not _SPEAKER_CUE.search("".join(pieces[n + 1 :]))
                 or not _names("".join(out) + head, lexicon)
@@ -13851,6 +13900,13 @@ _FRAMES22: tuple[tuple[str, str], ...] = (
     (r"\s*(?:\bis|'s|\bare|'re) wanting\b", " wants"),
     # session 26: "Person A's been waiting on it" (waiting for it)
     (r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) waiting on\b", " wants"),
+    # session 35 (12s): "Person A has been waiting ages for those chips" (how long, as _words
+    # reads it)
+    (
+        r"\s*(?:\bis|'s|\bare|'re|\bhas been|'s been|\bhave been|'ve been) (?:still )?waiting "
+        r"(?:ages|forever|a while|so long|for ages) for\b",
+        " wants",
+    ),
 )
 # a purpose after the object: 'for marking up his draft', 'for her collage of the solar system'
 _PURPOSE22 = re.compile(
@@ -20504,7 +20560,12 @@ _WHY_NOT_OBJECT32R = (
     r"(?:'s| has) got a (?:crack|chip|hole|stain)(?: in it)?|(?:'s| is) (?:cracked|chipped|"
     r"broken|dirty|filthy|empty|wet|leaking|sticky)"
 )
-_WHY_NOT_SURFACE32R = r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+_WHY_NOT_SURFACE32R = (
+    r"(?:'s| is) (?:wet|full|dirty|cluttered|taken|sticky|in use)"
+    # session 35 (12s): what the surface is kept for ("…, no, on the counter, the rack's only for
+    # plates")
+    r"|(?:'s| is) (?:only|just) (?:for|meant for) [a-z]+s"
+)
 _WHY_NOT32R = {
     "human": _WHY_NOT_PERSON32R,
     "object": _WHY_NOT_OBJECT32R,
@@ -20857,12 +20918,8 @@ def _handovers33t(text: str, lexicon: Lexicon) -> list[Task] | None:
     return said if all(t.kind == "deliver" for t in said) else None
 
 
-# what a kind word covers, by the objects' categories (a closed list: 'the drinks' names no
-# object of the scene by itself)
-_KINDS33T = {
-    "drinks": frozenset({"bottle", "cup", "mug", "jug", "beaker", "glass", "flask"}),
-    "snacks": frozenset({"chips", "crisps", "apple", "banana", "biscuit"}),
-}
+# what a kind word covers, by the objects' categories (lexicon.KIND_CATEGORIES)
+_KINDS33T = KIND_CATEGORIES
 
 
 def _kind_choice33t(text: str, lexicon: Lexicon) -> str:
@@ -22917,6 +22974,161 @@ _STEPS34S: tuple[Callable[[str, Lexicon], str], ...] = (
     _said_object34s,
     _straight34s,
     _kind_before34s,
+)
+
+# -- session 35 (12s): blind21/22's kinds --------------------------------------------------------
+
+# An object that has to be somewhere ("… and the medium box has to be on the pallet before he
+# goes"): an obligation, as 'should be on' / 'has got to go on' (read already); said of a person
+# ("Tom has to be on the pallet") it is no placement and is left.
+_HAS_TO35S = re.compile(
+    r"\b(?P<obj>(?:the |that |this )?[a-z]+(?: [a-z]+)?) (?:has|have) to (?P<v>be|go|sit)"
+    r"(?P<back> back)? (?P<on>on|onto|in|into) ",
+    _F,
+)
+
+
+def _has_to35s(text: str, lexicon: Lexicon) -> str:
+    """'<object> has to be on S' → '<object> should be on S' (above)."""
+
+    def should(m: re.Match[str]) -> str:
+        if not _only_kind(m["obj"], lexicon, "object"):
+            return m.group(0)
+        return f"{m['obj']} should {m['v']}{m['back'] or ''} {m['on']} "
+
+    return _HAS_TO35S.sub(should, text)
+
+
+# a reason's subject and verb ("she's been shouting at me", "he keeps asking")
+_REASON_HEAD35S = re.compile(
+    r"^\s*(?:she|he|they|it)(?:'s|'re|'ve|'ll|'d| is| are| was| were| has| have| had| keeps?)\b",
+    _F,
+)
+
+
+def _reason_head35s(head: str, out: list[str], lexicon: Lexicon) -> bool:
+    """Session 35 (12s): in _speaker_remarks, the words before 'and I …' may be a reason said
+    after the request ("Give Alicw the bottle, she's been shouting at me and I can't hear a
+    word"): the speaker's part is taken off and the reason left for _reasons21 (which takes it
+    off only when it names nothing and holds no word that could change the request), when the
+    reason opens on a pronoun and a verb and the words before it name something."""
+    return bool(_REASON_HEAD35S.match(head)) and bool(_names("".join(out), lexicon))
+
+
+# A person's state run on into the request without a mark ("bob's been on the bike all day give
+# him the bottle thx"): the state, then a request opening on its verb and a pronoun.
+_STATE_RUN_ON35S = re.compile(
+    r"^(?P<who>[a-z]+(?: [a-z]+)?)(?P<state>(?:'s| is| was)(?: been)? [a-z' ]+?) "
+    r"(?P<req>(?:give|hand|pass|bring|take|fetch) (?:him|her|them)\b[^,.;!?]*[.!]?)$",
+    _F,
+)
+
+
+def _state_run_on35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): a comma put between the state and the request above, when the state's
+    subject is one person, its words name nothing else and hold no word that counts, negates,
+    orders or asks (_SENTENCE_HELD, _TASK_WORDS); the remark is then read as any other."""
+    m = _STATE_RUN_ON35S.match(text.strip())
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    # how long the state has lasted ('all day') counts nothing
+    state = _rx(r"\ball (?:day|morning|afternoon|evening|night|week)\b").sub("", m["state"])
+    if (
+        not _names_nothing(state, lexicon)
+        or _SENTENCE_HELD.search(state)
+        or re.search(_TASK_WORDS, state, _F)
+    ):
+        return text
+    return f"{m['who']}{m['state']}, {m['req']}"
+
+
+# The object's use said to be over, closing the request ("…, Mrs Khan's finished with it.", "…
+# now it's been used"): why it is moved, asking nothing of the person
+_DONE_WITH35S = re.compile(
+    r"(?:\s*,\s*(?:as |since |because )?(?P<who>[A-Za-z][\w ]*?)(?:'s| is| has| are|'re|'ve| have)"
+    r" (?:finished|done)(?: with)? (?:it|them)"
+    r"|,?\s+now(?: that)? (?:it|they)(?:'s| has| is|'re| are| have|'ve) been (?:used|finished|"
+    r"emptied|read|done))(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def _done_with35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): the closing remark above taken off, when the request before it names
+    its object and its person is one person of the scene the request does not name, a he / she /
+    they where the request names no one, or the speaker ("Give Mia the gloves, she's done with
+    them" could take back Mia's task; "Gloves to Mia, no, Tom, Mia's done with them" is a reason
+    for a correction, session 32's)."""
+    m = _DONE_WITH35S.search(text)
+    if m is None or m.start() == 0:
+        return text
+    before, who = text[: m.start()], m["who"]
+    if who is not None and who.lower() not in ("i", "we"):
+        if who.lower() in ("he", "she", "they"):
+            if _ids(before, lexicon, "human"):
+                return text
+        elif not _only_person(who, lexicon) or _ids(who, lexicon) & _ids(before, lexicon):
+            return text
+    if not _ids(before, lexicon, "object"):
+        return text
+    return before + text[m.end() :]
+
+
+# session 31's cleft with a he / she for its person ("Person A's gasping after the last race,
+# the bottle is what she's needing."): the wanting also said as '-ing' ('is needing')
+_WHAT_SHE_WANTS35S = re.compile(
+    rf"(?:^|(?<=[,;.!?]\s))(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:is|are|'s|'re) "
+    rf"(?:just |exactly )?what (?P<pron>she|he)\s?(?:really )?"
+    rf"(?:{_WANTING31}|'s needing|is needing)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _what_she_wants35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): 'X is what she wants / is needing' is 'P wants X' when P is the one
+    person named before it, every he / she of the text may be P (a title, a word of kin or a
+    first name of the other sex rules P out: _the_person, _named_other_sex34s), and X the scene's
+    objects only."""
+    m = _WHAT_SHE_WANTS35S.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    who = one_person(text[: m.start()], lexicon)
+    if who is None or not _the_person(who, text, lexicon):
+        return text
+    return f"{text[: m.start()]}{who} wants {m['x']}{text[m.end() :]}"
+
+
+# when a person talked about the object ("Alice was on about the crisps before the anthem,
+# could you …"): when the want was said, not when to do the task (as session 34's 'since the
+# lesson' after 'been on about it')
+_WHEN_TALKED35S = re.compile(
+    r"(?P<want>\b(?:was|were|'s been|has been|had been) (?:on|going on|banging on|asking) about "
+    r"(?:(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?|it|them)) "
+    r"(?P<when>(?:before|during|after|at) (?:the|her|his|their|this|that) (?:[a-z]+ ){0,2}"
+    r"[a-z]+)(?=\s*[,;])",
+    _F,
+)
+
+
+def _when_talked35s(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12s): the time above taken off when it names nothing of the scene and holds
+    no word that counts, chooses or points back (_KEEP_WORDS), and a clause follows it."""
+
+    def said(m: re.Match[str]) -> str:
+        if not _names_nothing(m["when"], lexicon) or _KEEP_WORDS.search(m["when"]):
+            return m[0]
+        return m["want"]
+
+    return _WHEN_TALKED35S.sub(said, text)
+
+
+_STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _worked_on35s,
+    _when_talked35s,
+    _has_to35s,
+    _state_run_on35s,
+    _done_with35s,
+    _what_she_wants35s,
 )
 # -- session 33 (12r): blind31's choices, counts, negation, exclusions and corrections ----------
 
@@ -26258,6 +26470,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS30R,
     # session 34 (12s): blind21/22's kinds
     *_STEPS34S,
+    # session 35 (12s): blind21/22's kinds
+    *_STEPS35S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,

@@ -11,6 +11,7 @@ from typing import Literal, cast
 from hltl.errors import GroundingError
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
+    KIND_CATEGORIES,
     PRONOUN_SEX,
     TITLES,
     VERB_CLASS,
@@ -106,6 +107,10 @@ def parse_instruction(
         node = _parse(text, scene, lexicon, normalise=True)
         if len(inside) == 1:
             _choices_kept(text, node, lexicon)
+            _choice_left35s(text, node, lexicon)
+            _deadline_or_task35s(text, node, lexicon)
+            _both_then_one35s(text, node, lexicon)
+            _kind_fits35s(text, lexicon)
             _named_other_sex34s(text, node, lexicon)
         return node
     except GroundingError as refused:
@@ -3849,3 +3854,181 @@ def _nothing_before34r(rewritten: GroundingError, best: GroundingError) -> bool:
 
 
 _NOTHING_BEFORE = re.compile(r"^'(?:it|that|this|them)' in .* refers to nothing before it$")
+
+
+# -- session 35 (12s): choices left to the robots, deadlines about an object, kinds said of it --
+
+# who gets which said to be left to the robots (or not to matter): 'who gets which is up to
+# you', 'I don't mind who gets what', 'you decide who gets which'
+_WHO_GETS = r"who (?:gets|has|takes|receives) (?:which|what)(?: one| thing)?"
+_WHO_GETS_FREE35S = re.compile(
+    rf"\b(?:(?:(?:i|we) )?(?:don't|do not|doesn't|does not) (?:mind|care|matter)(?: about)?|"
+    rf"(?:it )?makes no (?:odds|difference)|you (?:decide|choose|pick|say|work out|sort out)|"
+    rf"(?:it's |it is )?(?:all )?(?:up to you|your (?:call|choice|pick|decision))(?: about)?) "
+    rf"{_WHO_GETS}\b"
+    rf"|\b{_WHO_GETS} (?:(?:is|'s) (?:all )?(?:up to you|your (?:call|choice|pick|decision)|"
+    rf"free|open|not important|unimportant|irrelevant)|(?:doesn't|does not|don't|do not) "
+    rf"matter|makes no (?:odds|difference))\b",
+    re.I,
+)
+# a remark leaving a choice to the robots, said as a clause of its own ('…, your call.')
+_CHOICE_LEFT35S = re.compile(
+    r"(?:^|[,;:.!?-])\s*(?P<said>(?:(?:and|but|so) )?(?:(?:it's|it is|that's|that is) )?(?:all )?"
+    r"(?:up to you|your (?:call|choice|pick|decision))|you (?:choose|pick|decide)(?: which)?|"
+    r"whichever(?: you like)?|no preference|either (?:one )?(?:is|'s) (?:fine|ok|okay|good|grand)|"
+    r"any (?:one )?(?:is fine|will do))\s*(?=[,;:.!?]|$)",
+    re.I,
+)
+
+
+def _choice_left35s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 35 (12s): a remark that leaves a choice to the robots when the reading has none
+    is refused, naming what the request says: after a share-out said in full ('Give Person A
+    the apple and Person B the cup, who gets which is up to you': apple>A & cup>B as said, or
+    the other way round), or with nothing to choose ('Give Priya the notebook, your call':
+    whether, when or what else is not said). Said of someone else ('Give Bob the chips, his
+    choice') it is what that person chose, and read as before."""
+    if _has_choice(node):
+        return
+    m = _WHO_GETS_FREE35S.search(text)
+    said = _task_list35s(node, lexicon)
+    if m is not None:
+        raise GroundingError(
+            f"{m.group(0)!r} leaves who gets which to the robots, but the request says it "
+            f"({said}): say that alone, or 'one each, either way round'"
+        )
+    left = _CHOICE_LEFT35S.search(text)
+    if left is not None:
+        raise GroundingError(
+            f"{left['said']!r} leaves a choice to the robots, but the request has none "
+            f"({said}): say what may be chosen ('the X or the Y'), or leave it out"
+        )
+
+
+def _task_list35s(node: Node, lexicon: Lexicon) -> str:
+    """'the apple to Person A (Alice) and the cup to Person B (Bob)': the reading's tasks."""
+    words = [_task_words(t, lexicon) for t in tasks(node)]
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
+# a person said to get an object in a deadline ('… before Bob gets them', '… by the time she
+# takes it'): when, or another task?
+_DEADLINE35S = re.compile(
+    r"\b(?:before|by the time|until|till) (?P<who>[a-z][\w' ]{0,30}?) "
+    r"(?:gets?|has|receives|takes|grabs|collects|picks up|comes for|comes to get) "
+    r"(?:it|them)\b",
+    re.I,
+)
+
+
+def _deadline_or_task35s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 35 (12s): 'Put the chips on the shelf before Bob gets them' had read chips@shelf ;
+    chips>B. A person getting it / them (the object placed), said after 'before' / 'by the
+    time', may be another task of the robots' (then hand it over) or when that person comes
+    for it (placed only, Bob takes it himself): refused naming both. Said of another object
+    ('… before Bob gets the apple') or with the robots handing it ('… before you give them to
+    Bob') it is read as before."""
+    m = _DEADLINE35S.search(text)
+    if m is None:
+        return
+    said = list(tasks(node))
+    who = people_named(m["who"], lexicon)
+    if not who and m["who"].lower() not in ("he", "she", "they"):
+        return
+    placed = {t.obj for t in said if t.kind == "place"}
+    for t in said:
+        if t.kind != "deliver" or t.obj not in placed or (who and t.target not in who):
+            continue
+        name = person_name(t.target, lexicon)
+        raise GroundingError(
+            f"{m.group(0)!r} could be a task (then hand the {t.obj} to {name}) or when they come "
+            f"for it (the {t.obj} placed only): say 'then give it to …', or leave the person out"
+        )
+
+
+def _both_then_one35s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 35 (12s): 'sorry, both, chips to person b' had read bottle>B & chips>B. 'both'
+    alone, then after a comma one object named where the reading takes more: 'both' may mean
+    both objects (the one named then only one of them) or be said to the two people ('sorry,
+    both'), and the chips alone go: refused naming both readings. 'both, the bottle and the
+    chips, to Person B' (the two named) is read as before."""
+    if re.search(r"\bboth\s*,", text, re.I) is None:
+        return  # (lexed only when it may hold 'both ,')
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    for k in range(len(items) - 2):
+        if not (_is_word35s(items[k], "both") and items[k + 1].kind == "punct"):
+            continue
+        if items[k + 1].lemma != ",":
+            continue
+        j = k + 2
+        while j < len(items) and _is_word35s(items[j], "the", "a", "an"):
+            j += 1
+        if j >= len(items) or items[j].kind != "ent":
+            continue
+        one = {r.id for r in items[j].refs}
+        if len(one) != 1 or items[j].refs[0].kind != "object":
+            continue
+        nxt = items[j + 1] if j + 1 < len(items) else None
+        if nxt is not None and (_is_word35s(nxt, "and", "or") or nxt.lemma == ","):
+            continue  # a list after 'both'
+        more = sorted({t.obj for t in tasks(node)} - one)
+        if not more:
+            continue
+        obj = next(iter(one))
+        raise GroundingError(
+            f"'both, {items[j].text}' could mean both objects ({' and '.join([*more, obj])}) or "
+            f"the {obj} alone ('both' said to the two people): say 'both of them to …' or "
+            f"'the {obj} to …'"
+        )
+
+
+def _is_word35s(item: Item, *words: str) -> bool:
+    return item.kind == "word" and item.text.lower() in words
+
+
+# a kind said before the objects it is ('wants a snack, the chips', 'something to drink: the
+# bottle'); the kinds it may be (KIND_CATEGORIES)
+_KIND_SAID35S = re.compile(
+    r"\b(?P<kind>(?:a|an|some) (?:snack|bite(?: to eat)?|nibble|treat|drink|refreshment)s?|"
+    r"(?:something|anything)(?: nice)? to (?:eat|drink|nibble))\s*[,:]\s*",
+    re.I,
+)
+
+
+def _kind_fits35s(text: str, lexicon: Lexicon) -> None:
+    """Session 35 (12s): 'Person B wants a snack, the bottle and the chips' had read both for
+    Person B: a kind said before the objects (an apposition) must agree with each object then
+    named (a bottle is no snack), by its category (KIND_CATEGORIES, a closed list: an object
+    of a category the list does not give the kind is refused too); else refused, naming it.
+    'a snack, the chips', 'something to drink: the bottle', 'a snack each: the chips for Person A
+    and the apple for Person B' are read as before."""
+    for m in _KIND_SAID35S.finditer(text):
+        kind = m["kind"].lower()
+        eat, drink = KIND_CATEGORIES["snacks"], KIND_CATEGORIES["drinks"]
+        fits = drink if "drink" in kind else eat | drink if "refreshment" in kind else eat
+        try:
+            items = lex(text[m.end() :], lexicon)
+        except GroundingError:
+            continue
+        for before, it in zip([None, *items], items, strict=False):
+            if it.kind == "ent" and all(r.kind == "object" for r in it.refs):
+                ids = {r.id for r in it.refs}
+                if len(ids) == 1 and lexicon.scene.object(next(iter(ids))).category not in fits:
+                    raise GroundingError(
+                        f"{m['kind']!r} does not fit the {next(iter(ids))}: say which objects "
+                        "are meant"
+                    )
+            elif not (
+                _is_word35s(it, "the", "a", "an", "and", "or", "both", "either", "for", "to")
+                or (it.kind == "punct" and it.lemma == ",")
+                or (
+                    it.kind == "ent"
+                    and all(r.kind == "human" for r in it.refs)
+                    and before is not None
+                    and _is_word35s(before, "for", "to")
+                )
+            ):
+                break  # the objects listed, each with whom it is for, end here

@@ -22,6 +22,8 @@ from hltl.grounding.lexicon import (
     first_names,
     near_keyword,
     person_name,
+    said_sex35s,
+    sex_said_by35s,
     title_sex,
 )
 
@@ -212,7 +214,9 @@ _THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx
 
 def _is_after(items: list[Item]) -> list[Item]:
     """'Bob's after the chips': at the start of a clause, a person who 'is after' an object
-    wants it ('after' between a person and an object orders nothing)."""
+    wants it ('after' between a person and an object orders nothing). Session 35 (12s): a
+    he / she too ("Give Alice the bottle, she's after the chips." had read `chips>A ; bottle>A`,
+    the want as an order), resolved as any pronoun is."""
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -220,7 +224,7 @@ def _is_after(items: list[Item]) -> list[Item]:
         opens = not out or out[-1].kind == "punct" or _is(out[-1], "and")
         if (
             opens
-            and _humans(it)
+            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
             and k + 3 < len(items)
             and items[k + 1].text.lower() in ("'s", "is", "are", "'re")
             and _is(items[k + 2], "after")
@@ -3023,9 +3027,12 @@ def _verb_later(items: list[Item], k: int) -> bool:
 def _title_readings30s(fits: list[str], sex: str | None, lexicon: Lexicon) -> str:
     """Session 30 (12s): the readings a pronoun ruled out by a title still has ("Mr Lee, she gets
     the jug": Ruth or Mrs Khan), for the refusal to name: those named before that fit, else every
-    person of the scene whose title does not rule it out."""
-    people = fits or [h.id for h in lexicon.scene.humans if title_sex(h.id, lexicon) in (None, sex)]
-    return f" (it could mean {_or(people, lexicon)})" if len(people) > 1 else ""
+    person of the scene whose title does not rule it out (session 35: or word of kin; one such
+    person is named too: "… Grandad's going to feed her …" could mean Lily, not for certain)."""
+    people = fits or [
+        h.id for h in lexicon.scene.humans if said_sex35s(h.id, lexicon) in (None, sex)
+    ]
+    return f" (it could mean {_or(people, lexicon)})" if people else ""
 
 
 def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
@@ -3057,13 +3064,15 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 # "… and Carol the mug nearest to her": the one person of that part
                 candidates = [own]
             sex = PRONOUN_SEX.get(low)
-            if any(title_sex(p, lexicon) not in (None, sex) for p in candidates):
-                # "Mr Lee is cold, give her the blanket": not Mr Lee (a title says who is who)
-                fits = [p for p in candidates if title_sex(p, lexicon) in (None, sex)]
-                if len(fits) != 1 or title_sex(fits[0], lexicon) != sex:
+            if any(said_sex35s(p, lexicon) not in (None, sex) for p in candidates):
+                # "Mr Lee is cold, give her the blanket": not Mr Lee (a title says who is who;
+                # session 35, a word of kin too: "… for Grandad, give her both!")
+                fits = [p for p in candidates if said_sex35s(p, lexicon) in (None, sex)]
+                if len(fits) != 1 or said_sex35s(fits[0], lexicon) != sex:
+                    out35s = [p for p in candidates if p not in fits]
                     raise GroundingError(
                         f"{it.text!r} is not resolved: it cannot mean "
-                        f"{_or([p for p in candidates if p not in fits], lexicon)} (by title), and "
+                        f"{_or(out35s, lexicon)} ({sex_said_by35s(out35s, lexicon)}), and "
                         f"no one else fits for certain{_title_readings30s(fits, sex, lexicon)}; "
                         "name the person"
                     )
