@@ -41,10 +41,7 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
-        # blind5 (tuned on in session 7): a remark naming a surface ("it's cluttering the
-        # counter") could be asking for something there
-        "Put the cup on the shelf, it's cluttering the counter",
-        # blind5: a surface name used as the verb
+        # blind5 (tuned on in session 7): a surface name used as the verb
         "Shelf the bottle please",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
@@ -159,17 +156,7 @@ KNOWN_MISSES = frozenset(
         # ('Carol says she'd love'), passives, 'he'/'she' across clauses, fragments and run-ons,
         # choice and count words ('Either cup will do', 'big or small', 'one to Kofi and one to
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
-        "Chef, sorry, behind you... oh, it's the robot. Could you kindly give the salt to Mr "
-        "Novak? Thank you, sir.",
-        "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
-        "bottle. Thanks. Sorry Dave, go on.",
-        "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
-        " chips, he wants those.",
-        "The chips are wanted by Person A and the bottle by Person B.",
-        "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
-        "as well thanks",
         "Jess needs some screws, give her the tin.",
-        "chuck the blue pen in the box its cluttering my desk",
         # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
         "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
         "just, um, set the thermometer on the bedside table, that'd be grand.",

@@ -59,6 +59,7 @@ from hltl.grounding.lexicon import (
     common_words,
     first_names,
     lex,
+    name_sexes,
     person_name,
     title_sex,
 )
@@ -21546,6 +21547,236 @@ def _reason_for_change34t(text: str, lexicon: Lexicon) -> str:
     return before + "."
 
 
+# -- session 35 (engineer 12t): blind19, blind23, blind18, blind17 and causes15's kinds --------
+
+
+def _person_alt35t(lexicon: Lexicon) -> str:
+    """A pattern of every name or alias that names one person of the scene, longest first."""
+    names = {n for h in lexicon.scene.humans for n in (h.name, *h.aliases)}
+    alone = [n for n in names if _only_person(n, lexicon)]
+    return "|".join(re.escape(n) for n in sorted(alone, key=len, reverse=True)) or r"(?!)"
+
+
+# words for kin of one sex, in a person's names ('Grandad', 'big sister'): like a first name of
+# one sex, they only rule a he / she out, never resolve one
+_KIN_SEX35T = {
+    **dict.fromkeys(
+        (
+            "grandad",
+            "granddad",
+            "grandpa",
+            "grandfather",
+            "dad",
+            "daddy",
+            "father",
+            "uncle",
+            "brother",
+            "son",
+            "husband",
+            "boy",
+            "man",
+            "gentleman",
+            "grandson",
+            "nephew",
+        ),
+        "m",
+    ),
+    **dict.fromkeys(
+        (
+            "grandma",
+            "granny",
+            "gran",
+            "nan",
+            "nana",
+            "nanna",
+            "grandmother",
+            "mum",
+            "mummy",
+            "mom",
+            "mommy",
+            "mother",
+            "aunt",
+            "auntie",
+            "sister",
+            "daughter",
+            "wife",
+            "girl",
+            "woman",
+            "lady",
+            "granddaughter",
+            "niece",
+        ),
+        "f",
+    ),
+}
+
+
+def _may_be35t(pid: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether he/she ``pronoun`` may be person ``pid``: neither a title, nor a first name of one
+    sex (data/first_names_sex.txt), nor a word for kin of one sex in its names says otherwise
+    (used here only to rule a reading out)."""
+    sex = PRONOUN_SEX[pronoun.lower()]
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    names = [n.lower().split() for n in (human.name, *human.aliases)]
+    firsts = {n[0] for n in names if n[0].rstrip(".") not in TITLES}
+    said = {name_sexes().get(n) for n in firsts} | {_KIN_SEX35T.get(w) for n in names for w in n}
+    return title_sex(pid, lexicon) in (None, sex) and said - {None} <= {sex}
+
+
+_STATE35T = r"(?:'s|\s+is|\s+was|'s been|\s+has been)"
+
+
+def _state_and35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a person's state joined by 'and' (no comma) to a clause whose subject is
+    'she' / 'he' ("so Lily's in her high chair now and she'll need her bib …"): the 'and' is the
+    comma the same run-on has ("Lily's in her high chair now, she'll need her bib"), read as that
+    one is — only when the state is said of one person, names no object or other person, carries
+    no negation or time, and the pronoun may be that person."""
+    people = _person_alt35t(lexicon)
+    m = _rx(
+        rf"(?:^|(?<=[.!?;,])\s+)(?:(?:so|well|right|okay|ok),?\s+)*(?P<p>{people})"
+        rf"(?P<state>{_STATE35T}\s+[a-z' ]+?) and (?P<pro>she|he)"
+        r"(?='s\b|'ll\b|'d\b|\s+(?:is|will|would|needs|wants|has|could|can)\b)"
+    ).search(text)
+    if m is None or not _may_be35t(next(iter(_ids(m["p"], lexicon, "human"))), m["pro"], lexicon):
+        return text
+    state = m["state"]
+    if (
+        _ids(state, lexicon, "object")
+        or _ids(state, lexicon, "human")
+        or _rx(
+            r"\b(?:not|n't|no|never|nobody|nothing|and|then|tonight|tomorrow|later|soon)\b"
+        ).search(state.replace("n't", " n't"))
+        or _opens_request(state)
+    ):
+        return text
+    cut = m.start("pro") - len(" and ")
+    return f"{text[:cut]}, {text[m.start('pro') :]}"
+
+
+def _subject_pronoun35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): after another person has been named, a clause of one person then a
+    comma and 'he' / 'she' opening the next clause, a want or request (", and Person B has been
+    eyeing up the chips, he wants those"): the pronoun goes on with that clause's subject, so it
+    is that person (said by name; a remark there, '…, he told me before', is left to the rules
+    for remarks) — only when that clause names no other person and no other he/she/him/her,
+    the pronoun may be that person (title, first name), and no person named before is one the
+    pronoun fits by title when that person's does not say (then it is refused as before)."""
+    people = _person_alt35t(lexicon)
+    pattern = _rx(
+        rf"(?:,\s*and\s+|;\s*|[.!?]\s+)(?:so\s+)?(?P<p>{people})"
+        r"(?P<clause>(?:'s|\s)[^,.;!?]+?),\s+(?P<pro>she|he)(?=(?:'s|'ll|'d)\b|\s+[a-z])"
+        r"(?P<then>[^,.;!?]*)"
+    )
+    for m in pattern.finditer(text):
+        before = text[: m.start()]
+        (pid,) = _ids(m["p"], lexicon, "human") or {""}
+        sex = PRONOUN_SEX[m["pro"].lower()]
+        earlier = _ids(before, lexicon, "human") - {pid}
+        if (
+            not pid
+            or not earlier
+            or not _rx(_TASK_WORDS).search(m["then"])
+            or _ids(m["clause"], lexicon, "human")
+            or _rx(r"\b(?:he|him|his|she|her|hers|they|them)\b").search(m["clause"])
+            or not _may_be35t(pid, m["pro"], lexicon)
+            or (
+                title_sex(pid, lexicon) != sex
+                and any(title_sex(q, lexicon) == sex for q in earlier)
+            )
+        ):
+            continue
+        return f"{text[: m.start('pro')]}{m['p']}{text[m.end('pro') :]}"
+    return text
+
+
+def _gapped_passive35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a passive of wanting, then 'and' and a second object with 'by' and a
+    second person ('The chips are wanted by Person A and the bottle by Person B'): the second
+    clause is the first with its verb left out (a gap), so its 'by' is the first's, whom it is
+    wanted by, not where the object is — 'Person A wants the chips and Person B wants the
+    bottle'. Only with two different persons, each one of the scene's, objects alone before
+    each 'by', and nothing after the second person; without the passive before it ('Person A
+    wants the chips, and the bottle by Person B') it stays refused with both readings."""
+    people = _person_alt35t(lexicon)
+    det = r"(?:the|a|an|that|this|these|those) "
+    m = _rx(
+        rf"(?:^|(?<=[.!?;])\s+)(?P<o1>{det}[\w '-]+?)(?:'s| is| are) (?:wanted|needed|asked for|"
+        rf"requested) by (?P<p1>{people}),? and (?P<o2>{det}[\w '-]+?) by (?P<p2>{people})"
+        r"(?P<end>\s*[.!]?)$"
+    ).search(text)
+    if m is None:
+        return text
+    p1, p2 = (_ids(m[k], lexicon, "human") for k in ("p1", "p2"))
+    if p1 == p2 or not all(_only_kind(m[k], lexicon, "object") for k in ("o1", "o2")):
+        return text
+    return f"{text[: m.start()]}{m['p1']} wants {m['o1']} and {m['p2']} wants {m['o2']}{m['end']}"
+
+
+def _in_the_way35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a closing reason that says only where the one object put away is now
+    ('chuck the blue pen in the box its cluttering my desk', "Put the cup on the shelf, it's
+    cluttering the counter"): 'it' with a verb of being in the way from a closed list and the
+    place it is cluttering, a surface of the scene other than where it goes (or a place the
+    scene does not name) — taken off when what is before it reads alone as placing that one
+    object. After no comma, 'its' there is "it's" (texting)."""
+    m = _rx(
+        r"(?:,\s*|\s+)(?:it's|its|it is) (?:cluttering(?: up)?|in the way (?:on|of)|blocking|"
+        r"taking up (?:space|room) on|all over) (?:the|my|our|your) (?P<s>[a-z][\w ]*?)\s*[.!]?$"
+    ).search(text)
+    if m is None or _ids(m["s"], lexicon, "object") or _ids(m["s"], lexicon, "human"):
+        return text
+    before = text[: m.start()]
+    said = _tasks_of(before, lexicon)
+    if not said or len(said) != 1:
+        return text
+    ((kind, _, target),) = said
+    if kind != "place" or target in _ids(m["s"], lexicon, "surface"):
+        return text
+    return before + "."
+
+
+def _aside_else35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): words said to someone other than the robot, from closed lists, taken
+    off: a kitchen call taken back on seeing the robot ("Chef, sorry, behind you... oh, it's the
+    robot. Could you …": the call is to the chef, the request after it to the robot), and a pause
+    to tell the robot something with its close ("Yeah, hang on, Dave, I'm just telling the robot
+    something. Robot, please hand Bob the bottle. Thanks. Sorry Dave, go on."), the close only
+    with the name the pause gave, which names no one and nothing of the scene. Neither may name
+    an object; a request in them is left, and refused as before."""
+    out = text
+    m = _rx(
+        r"^(?:(?P<voc>[a-z][\w ]*?),\s*)?(?:sorry,?\s*)?(?:behind(?: you)?|coming through|mind "
+        r"your backs?)(?:\.\.\.|[.!,])\s*(?P<oh>oh,?\s*it's (?:just |only )?the robot[.!]\s+)"
+    ).match(out)
+    if m is not None and not _ids(m[0], lexicon, "object") and len(_ids(m[0], lexicon)) <= 1:
+        out = m["oh"][0].upper() + out[m.start("oh") + 1 :]
+    m = _rx(
+        r"^(?:(?:yeah|yes|ok|okay|right),?\s*)?(?:hang on|hold on|one sec(?:ond)?|just a "
+        r"sec(?:ond)?),?\s*(?P<voc>[a-z]+),?\s*i'm (?:just )?(?:telling|asking) the robot "
+        r"(?:something|a thing)[.!]\s+"
+    ).match(out)
+    if m is None or not _names_nothing(m["voc"], lexicon) or m["voc"].lower() in WORDS:
+        return out
+    rest = out[m.end() :]
+    close = _rx(
+        rf"(?<=[.!?])\s+sorry,?\s*{re.escape(m['voc'])},?\s*(?:go on|carry on|you were "
+        r"saying)[.!]?$"
+    ).search(rest)
+    if close is not None:
+        rest = rest[: close.start()]
+    return rest
+
+
+_STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _state_and35t,
+    _subject_pronoun35t,
+    _gapped_passive35t,
+    _in_the_way35t,
+    _aside_else35t,
+)
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -24497,6 +24728,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
     *_STEPS34T,
+    # session 35 (12t): blind19, blind23, blind18, blind17 and causes15's kinds
+    *_STEPS35T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 34 (12r): blind32's choices, counts, negation, exclusions and corrections
