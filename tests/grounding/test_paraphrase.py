@@ -68,9 +68,8 @@ KNOWN_MISSES = frozenset(
         "flashlight and honestly the screws too so could you get both of those over to her",
         # blind9: 'him' and 'her' after two names without titles: the grounder knows no one's sex
         "Bob, then Alice: chips for him, bottle for her",
-        # causes11 (session 11): a remark naming a role two people share ("our new patient"); a
-        # plan naming an object the request does not ("to move the large box") may ask for it
-        "Mrs Khan is our new patient: the blue blanket for her, please",
+        # causes11 (session 11): a plan naming an object the request does not ("to move the large
+        # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",
         # blind13 (tuned on in session 15; its 'wee box' reads since session 34): 'Sorry' after
         # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
@@ -261,8 +260,6 @@ KNOWN_MISSES = frozenset(
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
-        # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
-        "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         'A single bottle will do for Person A after her orienteering.',

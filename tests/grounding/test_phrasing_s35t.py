@@ -11,7 +11,7 @@ from hltl.world.scene import Scene
 from tests.grounding.helpers import CELL, KITCHEN, NURSERY, OFFICE, WARD, assert_refused
 
 # the scenes of the numbered parts and the reading-or-refusal check, as session 33 (12t) has them
-from tests.grounding.test_phrasing_s33t import SQ, T21, TWO, _assert_case
+from tests.grounding.test_phrasing_s33t import DUO, SQ, T21, TWO, _assert_case
 
 READ: list[tuple[str, str, Scene]] = []
 
@@ -62,6 +62,23 @@ def test_state_and(text: str, want: str | None, scene: Scene) -> None:
             "Ruth wants the jug, and Mr Lee has been eyeing up the blue blanket, he wants that.",
             "jug>A & blanket_blue>B",
             WARD,
+        ),
+        # a reason after 'since' / 'because' (a typo in the name as the lexer reads it)
+        (
+            "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
+            "bottle>A & chips>B",
+            DUO,
+        ),
+        (
+            "Person A gets the bottle. Person B gets the chips because he skipped lunch.",
+            "bottle>A & chips>B",
+            DUO,
+        ),
+        (
+            "the bottle is Person A's, and Person B gets the chips since she gave Person A the "
+            "bottle",
+            None,
+            DUO,
         ),
         # after a full stop; another person in the clause before; a title that does not fit; a
         # person before whom the pronoun fits by title while this one's says nothing
@@ -186,6 +203,26 @@ def test_in_the_way(text: str, want: str | None, scene: Scene) -> None:
     ),
 )
 def test_aside_else(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
+# -- a person introduced by a name of their own: they are there -------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Mrs Khan is our new patient: the blue blanket for her, please",
+            "blanket_blue>C",
+            WARD,
+        ),
+        # another person's name; the pronoun the title rules out
+        ("Mrs Khan is our new nurse: the blue blanket for her, please", None, WARD),
+        ("Mrs Khan is our new patient: the blue blanket for him, please", None, WARD),
+    ),
+)
+def test_introduced(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 

@@ -21657,26 +21657,30 @@ def _state_and35t(text: str, lexicon: Lexicon) -> str:
 def _subject_pronoun35t(text: str, lexicon: Lexicon) -> str:
     """Session 35 (12t): after another person has been named, a clause of one person then a
     comma and 'he' / 'she' opening the next clause, a want or request (", and Person B has been
-    eyeing up the chips, he wants those"): the pronoun goes on with that clause's subject, so it
-    is that person (said by name; a remark there, '…, he told me before', is left to the rules
-    for remarks) — only when that clause names no other person and no other he/she/him/her,
+    eyeing up the chips, he wants those"), or 'since' / 'because' and 'he' / 'she' opening a
+    reason (", and Person B gets the chips since he skipped lunch"): the pronoun goes on with
+    that clause's subject, so it is that person (said by name; a remark after a comma, '…, he
+    told me before', is left to the rules for remarks) — only when that clause names no other
+    person and no other he/she/him/her,
     the pronoun may be that person (title, first name), and no person named before is one the
     pronoun fits by title when that person's does not say (then it is refused as before)."""
-    people = _person_alt35t(lexicon)
+    # a name as the scene has it, or one or two words the lexer takes for one person (a typo)
+    people = rf"{_person_alt35t(lexicon)}|[a-z]+ [a-z]\b|[a-z]+"
     pattern = _rx(
         rf"(?:,\s*and\s+|;\s*|[.!?]\s+)(?:so\s+)?(?P<p>{people})"
-        r"(?P<clause>(?:'s|\s)[^,.;!?]+?),\s+(?P<pro>she|he)(?=(?:'s|'ll|'d)\b|\s+[a-z])"
+        r"(?P<clause>(?:'s|\s)[^,.;!?]+?)(?P<link>,\s+|\s+(?:since|because|cos)\s+)"
+        r"(?P<pro>she|he)(?=(?:'s|'ll|'d)\b|\s+[a-z])"
         r"(?P<then>[^,.;!?]*)"
     )
     for m in pattern.finditer(text):
         before = text[: m.start()]
-        (pid,) = _ids(m["p"], lexicon, "human") or {""}
+        pid = next(iter(_ids(m["p"], lexicon, "human"))) if _only_person(m["p"], lexicon) else ""
         sex = PRONOUN_SEX[m["pro"].lower()]
         earlier = _ids(before, lexicon, "human") - {pid}
         if (
             not pid
             or not earlier
-            or not _rx(_TASK_WORDS).search(m["then"])
+            or (m["link"].strip() == "," and not _rx(_TASK_WORDS).search(m["then"]))
             or _ids(m["clause"], lexicon, "human")
             or _rx(r"\b(?:he|him|his|she|her|hers|they|them)\b").search(m["clause"])
             or not _may_be35t(pid, m["pro"], lexicon)
@@ -21768,12 +21772,33 @@ def _aside_else35t(text: str, lexicon: Lexicon) -> str:
     return rest
 
 
+def _introduced35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a person introduced by a name the scene gives that person ('Mrs Khan is
+    our new patient: the blue blanket for her, please'): it says who is who and asks nothing,
+    so it is read as the person being there ('Mrs Khan is here: …', which the grammar reads) —
+    only when the role is one of that person's own names (shared or not: 'patient' is Mr Lee's
+    too) and the person is one of the scene's; 'Mrs Khan is our new nurse' (Ruth's) is left."""
+    people = _person_alt35t(lexicon)
+    m = _rx(
+        rf"^(?P<p>{people}) is (?:our|the|my|your|a) (?:new |latest |other )?(?P<r>[a-z][\w ]*?)"
+        r"(?P<sep>\s*[:;,.]\s+)"
+    ).match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    (pid,) = _ids(m["p"], lexicon, "human")
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    if m["r"].lower() not in {a.lower() for a in human.aliases}:
+        return text
+    return f"{m['p']} is here{m['sep']}{text[m.end() :]}"
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
     _gapped_passive35t,
     _in_the_way35t,
     _aside_else35t,
+    _introduced35t,
 )
 
 
