@@ -13301,24 +13301,29 @@ def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
     return word is not None and not _names_nothing(word, lexicon)
 
 
-# a bare apology said at the end of its sentence ('…, sorry. '), not 'no, sorry' or 'sorry, I mean'
-_CLOSING_SORRY34L = re.compile(
-    r"\s*,\s*(?:(?:oh|ah|eh),? )?(?:sorry|so sorry|apologies)\s*[.!]\s*", _F
-)
+def cue_closes_sentence(after: str) -> bool:
+    """Whether the words after a correction cue ('sorry', 'no', 'my mistake', …) open with a full
+    stop or '!': the cue then closes its sentence ('Bob gets the chips, sorry. Carol needs …'),
+    an apology for or an answer to what came before, and corrects nothing after it. The one
+    reader of that rule (review of session 34): ``_corrections19`` here (a bare apology before
+    a sentence with a request of its own) and offline ``_asked_again34s`` (', no, …' alone is a
+    correction there)."""
+    return re.match(r"\s*[.!]", after) is not None
+
+
+# a bare apology ('…, sorry. '), not 'no, sorry' or 'sorry, I mean': closing its sentence when
+# cue_closes_sentence says so of what follows it
+_CLOSING_SORRY34L = re.compile(r"\s*,\s*(?:(?:oh|ah|eh),? )?(?:sorry|so sorry|apologies)", _F)
 
 
 def _names_verb34l(after: str) -> bool:
     """Whether the sentence ``after`` opens with a request of its own: a verb of the grammar's
-    tasks, or a subject and a verb of wanting or having ('Carol needs …', 'What Carol needs is
-    …')."""
+    tasks or a request's opening (``_opens_request``), or a subject and a verb after it
+    (``_VERB_NEXT19``: 'Carol needs …', 'What Carol needs is …')."""
     first = re.split(r"[.!?;]", after)[0]
     words = re.findall(r"[a-z]+", first.lower())
     return bool(words) and (
-        words[0] in VERBS
-        or any(
-            w in ("needs", "wants", "gets", "would", "could", "is", "has", "should")
-            for w in words[1:4]
-        )
+        words[0] in VERBS or _opens_request(first) or any(_VERB_NEXT19.match(w) for w in words[1:4])
     )
 
 
@@ -13346,7 +13351,9 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
             # "Excuse me, sorry, I'm covering today", "sorry to bother": an apology for the
             # interruption, not a correction of what was said before it
             return text
-        if _CLOSING_SORRY34L.fullmatch(m.group(0)) and _names_verb34l(after):
+        sorry = _CLOSING_SORRY34L.match(m.group(0))
+        closes = sorry is not None and cue_closes_sentence(m.group(0)[sorry.end() :])
+        if closes and _names_verb34l(after):
             # session 34 (lead): "Bob gets the chips, sorry. What Carol needs is the bottle.": a
             # bare apology closing its sentence, and a sentence after it that asks for something
             # by its own verb, is an apology, as the grammar reads "…, sorry. Carol needs the

@@ -29,6 +29,7 @@ from hltl.grounding.normalise import (
     canonical,
     canonical19,
     count_said30,
+    cue_closes_sentence,
     hearer_named,
     one_person,
     order_colons,
@@ -987,7 +988,7 @@ def _asked_again34s(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> No
             and items[k - 1].lemma == ","
             # ', no, …' ('no bottle for him' is no correction; ', sorry. …' closes a sentence)
             and items[k + 1].kind == "punct"
-            and items[k + 1].lemma == ","
+            and not cue_closes_sentence(items[k + 1].text)
             and (_is(items[k], "correct") or items[k].text.lower() == "no")
         ),
         None,
