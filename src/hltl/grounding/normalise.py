@@ -13304,10 +13304,10 @@ def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
 def cue_closes_sentence(after: str) -> bool:
     """Whether the words after a correction cue ('sorry', 'no', 'my mistake', …) open with a full
     stop or '!': the cue then closes its sentence ('Bob gets the chips, sorry. Carol needs …'),
-    an apology for or an answer to what came before, and corrects nothing after it. The one
-    reader of that rule (review of session 34): ``_corrections19`` here (a bare apology before
-    a sentence with a request of its own) and offline ``_asked_again34s`` (', no, …' alone is a
-    correction there)."""
+    an apology for or an answer to what came before, and corrects nothing after it (review of
+    session 34: ``_corrections19``'s bare apology before a sentence with a request of its own;
+    offline ``_asked_again34s`` keeps its narrower test, a comma after the cue, which this
+    excludes too: a wider one there would change readings)."""
     return re.match(r"\s*[.!]", after) is not None
 
 
