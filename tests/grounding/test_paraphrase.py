@@ -267,6 +267,70 @@ KNOWN_MISSES = frozenset(
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
         'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
+        # blind33 (tuned on in session 35): refusals left at its one measurement (docs/grounding.md)
+        "Oh go on then, the bottle to Person B first, and after it the chips, she's earned them at "
+        "cribbage.",
+        "Person B has her heart set on the apple; Person A just wants the bottle after a day's "
+        "angling.",
+        "Chips are needed over at Person A's end, and once they're there, Person B is wanting the "
+        "apple.",
+        "Person B fancies the chips, if you'd sort that.",
+        "Tom needs the packing tape, and I'd like the scanner sat on the belt, ta.",
+        "The bottle's headed for Person B; the cup, for Person A, who's doing the sudoku.",
+        'It was Person B who asked after the chips, so carry them across to him when you can.',
+        'The gloves go to Tom, and the scanner can go along with them.',
+        "The teddy's fallen on the floor, put it on the play mat.",
+        "Apple to Carol, she's off to the crazy golf. Then up on the shelf with the red mug.",
+        'The bottle. For Person A. She drives the early train. Ta.',
+        'Small box onto the pallet and after that the medium box onto the belt and then the '
+        'warehouseman can lock up.',
+        "Torch to Jess, she's under the bench, then the small spanner to Kofi.",
+        "Person A's the au pair, she can take the cup or the apple, whichever comes to hand.",
+        "Pick any one of the four things for Person A, she really doesn't mind which, erokamano.",
+        "They're to have one thing apiece, so the bottle finds Person A and the chips find Person "
+        "B.",
+        "Whichever robot's idle can fetch the bottle for Person A, it makes no odds to me.",
+        "Sam's the typist today, any of the pens will do for him.",
+        "Kofi can take whichever spanner's handy.",
+        'A single thing for each of them, so the cup across to Person A and the bottle across to '
+        'Person B.',
+        "There's just the one bottle here and it's meant for Person A, after her gymnastics.",
+        'Those two cups are filthy, put the pair of them in the sink to soak.',
+        "Gather up all three pens and drop them in the box, we're closing for the night.",
+        "Load the belt with every box we've got, all three, the longshoreman's waiting.",
+        'Both spanners, the big one and the small one, go away in the locker.',
+        "It's the bottle Alice wants, not the crisps, she's off to her knitting circle.",
+        'Bob fancies the crisps, so give him those and leave the bottle be.',
+        'Person A can have the lot apart from the cup, she brought her own flask.',
+        "Person A's allergic, so the apple goes to Person B instead.",
+        'Person B may have the cup, though the apple stays where it is.',
+        "Person A doesn't want chips, she's on a diet for the dressage, so the bottle's hers.",
+        'Only the bottle, and only to Person A, no other jobs for now.',
+        'Apart from the two cups, load every item onto the tray.',
+        "Just the bib for Grandad, he's got wipes of his own.",
+        "Crisps to Alice, oops, I've gone and got it wrong, Bob's the one who ordered them.",
+        'Stick the bottle on the shelf; actually, no, Alice would rather have it in her hand.',
+        "Person B's getting the bottle. Hang about, no, it's Person A who's getting it.",
+        "Person A's getting the chips, oh wait, I meant the bottle for her.",
+        'Take the bottle over to Person B, or rather Person A, I keep mixing them up.',
+        "Chips for Person A, no, hang on, I had them the wrong way about: Person B's chips.",
+        "Priya was to get the stapler, but change that, Sam's doing the filing, so him.",
+        'Give the teddy to Ava, whoops, no, it belongs to Lily, give it to her.',
+        'person a wants chips and person b could do with the cup after her crochet',
+        'first the bottle for person b and after it the apple for person a',
+        "the apple's meant for person b so take it over",
+        'person a is after her bottle can you get it to her',
+        'wipes to grandad, lily needs changing',
+        "The red mug's in the way, set it down on the cointer for me.",
+        "Person B's having the apploe and the cup with her draughts game.",
+        'Kick off with the chuips for Person A, and follow up with the bottle for Person B.',
+        "Lily won't settle without her tedsy, let her have it.",
+        'Would the shelf be a better home for the crisps? Pop them up there, ta.',
+        "Person B's off to the ceilidh; is it alright to send her off with the cup and the chips?",
+        'How about letting Person A have the chips, what do you say?',
+        "Emma's just a visitor, but can she have the banana?",
+        "Would you pop the red pen into the box, Priya's having a tidy-up?",
+        'Can Jess take the hammer and the screws?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -337,8 +401,9 @@ KNOWN_UNCLEAR = frozenset(
 # "blind32" written in session 33 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 33 (0 wrong), tuned on in session 34: asserted now, the
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind33" written in session 34 by another engineer and
-# committed alone, measured once at the end of session 34: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind33"})
+# committed alone, reviewed by a second one, measured once at the end of session 34 (0 wrong), tuned
+# on in session 35: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

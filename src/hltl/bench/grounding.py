@@ -117,8 +117,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 33 by another engineer and committed alone, never opened by the engineers who change the
 # grounder before its one measurement at the end of session 33; tuned on in session 34), blind33
 # (written in session 34 by another engineer and committed alone, never opened by the engineers
-# who change the grounder before its one measurement at the end of session 34; tests do not
-# assert it).
+# who change the grounder before its one measurement at the end of session 34; tuned on in
+# session 35).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
