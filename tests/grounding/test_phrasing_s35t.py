@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import normalise
-from tests.grounding.helpers import CELL, KITCHEN, NURSERY, OFFICE, WARD, PhrasingCases
+from tests.grounding.helpers import CELL, CLASSROOM, KITCHEN, NURSERY, OFFICE, WARD, PhrasingCases
 
 # the scenes of the numbered parts, as session 33 (12t) has them
 from tests.grounding.test_phrasing_s33t import DUO, SQ, T21, TWO
@@ -185,6 +185,22 @@ test_introduced = CASES.test(
     # another person's name; the pronoun the title rules out
     ("Mrs Khan is our new nurse: the blue blanket for her, please", None, WARD),
     ("Mrs Khan is our new patient: the blue blanket for him, please", None, WARD),
+)
+
+
+# -- 'with the Y' after the surface, Y already there --------------------------------------------
+
+test_with_one_there = CASES.test(
+    (
+        "Any chance the red book could go up on the shelf with the green one?",
+        "book_red@shelf",
+        CLASSROOM,
+    ),
+    ("Put the red book on the shelf with the green book", "book_red@shelf", CLASSROOM),
+    # Y not on that surface (it may ask to move Y too); the object moved itself
+    ("Put the red book on the desk with the green one", None, CLASSROOM),
+    ("Put the red book on the shelf with the globe", None, CLASSROOM),
+    ("Put the green book on the shelf with the green one", None, CLASSROOM),
 )
 
 

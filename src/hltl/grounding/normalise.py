@@ -21799,6 +21799,36 @@ def _introduced35t(text: str, lexicon: Lexicon) -> str:
     return f"{m['p']} is here{m['sep']}{text[m.end() :]}"
 
 
+def _with_one_there35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): 'with the Y' after the surface an object goes to, where Y is one other
+    object of the scene that starts on that surface ('Any chance the red book could go up on the
+    shelf with the green one?' when the green book lies on the shelf): it says where on the
+    surface, as 'next to the green one' does, and asks nothing of Y (already there) — taken off.
+    'the green one' is the moved object's kind; a Y elsewhere, or not one object, stays refused
+    (it may ask to move Y too)."""
+    m = _rx(
+        r"\b(?:on|onto|in|into) (?:the )?(?P<s>[a-z][\w ]*?) with (?P<y>the [a-z]+(?: [a-z]+)?)"
+        r"(?=\s*[,.!?]|$)"
+    ).search(text)
+    if m is None or not _only(m["s"], lexicon, "surface"):
+        return text
+    moved = _ids(text[: m.start()], lexicon, "object")
+    if len(moved) != 1:
+        return text
+    (oid,) = moved
+    y = m["y"]
+    if y.lower().endswith(" one"):
+        kind = next(o.category for o in lexicon.scene.objects if o.id == oid)
+        y = f"{y[:-4]} {kind}"
+    if not _only(y, lexicon, "object"):
+        return text
+    (yid,) = _ids(y, lexicon, "object")
+    (sid,) = _ids(m["s"], lexicon, "surface")
+    if yid == oid or starting_on({yid}, sid, lexicon) != [yid]:
+        return text
+    return text[: m.end("s")] + text[m.end("y") :]
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -21806,6 +21836,7 @@ _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _in_the_way35t,
     _aside_else35t,
     _introduced35t,
+    _with_one_there35t,
 )
 
 
