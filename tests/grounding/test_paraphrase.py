@@ -145,7 +145,6 @@ KNOWN_MISSES = frozenset(
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
         # in a two-word name, 'Lilly' (a name of its own), 'do the X for P'
-        "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
         "Both of the blocks onto the high chair, please, before she throws them again.",
         "Give the sippy cup to Lilly.",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",

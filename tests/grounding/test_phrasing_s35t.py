@@ -204,6 +204,23 @@ test_with_one_there = CASES.test(
 )
 
 
+# -- a want of a drink, then the one object that holds it -------------------------------------
+
+test_drink_in = CASES.test(
+    (
+        "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
+        "pills>C & jug>B",
+        WARD,
+    ),
+    ("Carol would like a brew, the blue mug please.", "mug_blue>C", CELL),
+    # an object that holds no drink; two mugs; more after the object; no object at all
+    ("Mr Lee wants some water, the grey blanket please.", None, WARD),
+    ("Carol would like a brew, the mug please.", None, CELL),
+    ("Mr Lee wants some water, the jug for Ruth please.", None, WARD),
+    ("Priya wants a coffee", None, OFFICE),
+)
+
+
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-35 (12t) steps taken out:
     each rule is what reads it."""

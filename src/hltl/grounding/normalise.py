@@ -21829,6 +21829,30 @@ def _with_one_there35t(text: str, lexicon: Lexicon) -> str:
     return text[: m.end("s")] + text[m.end("y") :]
 
 
+# what a drink is said as, and the kinds of the scene's objects that hold one
+_DRINKS35T = r"(?:water|a drink|drink|juice|milk|squash|tea|coffee|a brew|a cuppa)"
+_HOLDERS35T = frozenset({"jug", "bottle", "cup", "mug", "beaker", "glass", "flask"})
+
+
+def _drink_in35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a want of a drink, then the one object of the scene that holds it said
+    after a comma ('Mr Lee wants some water, the jug please'): the object is what is wanted —
+    only for a drink from a closed list and an object whose kind holds drink (a jug, bottle,
+    cup, mug, beaker, glass, flask); 'wants some water, the blanket please' and 'Priya wants a
+    coffee' stay refused."""
+    m = _rx(
+        rf"\b(?P<want>wants|needs|would like|'d like|could do with) (?:some )?{_DRINKS35T}"
+        r"(?:,\s*|\s*[-—:]\s*)(?P<x>the [a-z]+(?: (?!please\b)[a-z]+)?)"
+        r"(?P<tail>(?:,?\s*please)?\s*[.!]?)$"
+    ).search(text)
+    if m is None or not _only(m["x"], lexicon, "object"):
+        return text
+    (oid,) = _ids(m["x"], lexicon, "object")
+    if next(o.category for o in lexicon.scene.objects if o.id == oid) not in _HOLDERS35T:
+        return text
+    return f"{text[: m.start()]}{m['want']} {m['x']}{m['tail']}"
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -21837,6 +21861,7 @@ _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _aside_else35t,
     _introduced35t,
     _with_one_there35t,
+    _drink_in35t,
 )
 
 
