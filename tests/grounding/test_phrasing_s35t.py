@@ -102,6 +102,9 @@ test_gapped_passive = CASES.test(
         "chips>A & bottle>B",
         T21,
     ),
+    # session 27's near forms (refused then, lest 'by Bob' read as where the crisps lie)
+    ("The red mug is needed by Carol, and the crisps by Bob.", "mug_red>C & chips>B", CELL),
+    ("The red mug is needed by Carol and the crisps by Bob.", "mug_red>C & chips>B", CELL),
     # no passive before it (session 28's both readings); one person twice; more after it
     ("Person A wants the chips and the bottle by Person B.", None, T21),
     ("The chips are wanted by Person A and the bottle by Person A.", None, T21),
