@@ -59,7 +59,12 @@ against the one named ("It's Bob, not Alice, who gets the chips."): that handove
 negated ("It's not Bob who gets the chips.": no recipient) or said of a person the scene does not
 have: refused; with a second object: both handovers; a cleft after an entry adding a handover: the
 entry and that handover; and a placement's surface in a cleft ("The shelf is where the apple
-goes."): that placement, or refused.
+goes."): that placement, or refused. A twelfth family (session 35), counts: a kind the scene
+has several objects of said with a count or "both" for a person ("Give Bob the two mugs."): every
+one of the kind to that person where the count agrees with the scene, refused where it does not
+("the three mugs" of two, "both pens" of three); an entry's one-of-a-kind object said as the only
+one ("the one apple": the entry) or as several ("both apples": refused); and an entry's kind in the
+plural ("the mugs") said with its count (the entry) or another one (refused).
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -532,6 +537,29 @@ CLEFT_TAILS = (  # after a grounded entry: that handover too
 )
 PLACE_CLEFTS = ("The {s} is where the {o} goes.", "Where the {o} goes is the {s}.")
 CLEFT_FORMS = ("cleft", "contrast", "not", "absent", "second", "cleft tail", "place")
+# counts (session 35; the issue's "counts and plurals that must match the scene"): a kind the
+# scene has several objects of said with a count or a quantifier for a person (KIND_COUNTS: "Give
+# Bob the two mugs.", "Give Bob all three pens."; BOTH: "Give Bob both mugs."): every one of the
+# kind to that person where the count agrees with the scene; refused where it does not ("the three
+# mugs" of two, "both pens" of three: a careful person asks which, or what is missing). An entry's
+# one one-of-a-kind object said as the only one (ONE: "the one apple", "the only apple"): the
+# entry; said as several (SEVERAL: "both apples", "the two apples"): refused. An entry's kind in
+# the plural ("the mugs", every one of the kind) said with its count or "both" (the entry) or with
+# another count (refused). "all {n}" is said for three or more only ("all two mugs" is no English).
+NUMBERS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten")
+KIND_COUNTS = (
+    "Give {p} the {n} {cs}.",
+    "{P} gets the {n} {cs}.",
+    "The {n} {cs} go to {p}, please.",
+    "Could you bring {p} the {n} {cs}?",
+    "Give {p} all {n} {cs}.",
+)
+BOTH = ("Give {p} both {cs}.", "Both {cs} to {p}, please.", "{P} gets both {cs}.")
+ENTRY_COUNTS = ("the {n} {cs}", "all {n} {cs}")  # an entry's "the <kinds>" said with a count
+ONE = ("the one {o}", "the only {o}", "the single {o}")
+SEVERAL = ("both {os}", "the two {os}", "all three {os}", "the 2 {os}")
+MASS = frozenset(["glue", "salt", "tape", "water", "juice", "milk", "rice", "soup", "sugar"])
+COUNT_FORMS = ("kind", "kind miscounted", "one", "several", "entry", "entry miscounted")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -544,6 +572,7 @@ Family = Literal[
     "repairs",
     "deferrals",
     "clefts",
+    "counts",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -1457,6 +1486,128 @@ def clefts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
             yield variant(rng.choice(place).format(o=o, s=s), want, "place")
 
 
+def _several(name: str) -> str | None:
+    """The plural of an object's name ("apple": "apples", "knife": "knives", "teddy": "teddies"),
+    or None for a name already plural, a mass noun or a name with "of" ("bag of crisps")."""
+    last = name.rsplit(" ", 1)[-1].lower()
+    if last.endswith("s") or last in MASS or " of " in name:
+        return None
+    if last.endswith("fe"):
+        return name[:-2] + "ves"
+    if last.endswith("y") and last[-2:-1] not in ("a", "e", "i", "o", "u"):
+        return name[:-1] + "ies"
+    return _plural(name)
+
+
+def _counted(n: int, rng: random.Random) -> str:
+    """The count ``n`` said as a word or (a third of the time) in digits."""
+    return str(n) if rng.randrange(3) == 0 else NUMBERS[n]
+
+
+def _miscount(n: int, rng: random.Random) -> int:
+    """A count of two or more that is not ``n``: one more, or (of three or more) one fewer."""
+    return rng.choice((n + 1, n - 1)) if n >= 3 else n + 1
+
+
+def _of_kind_said(n: int, forms: tuple[str, ...], rng: random.Random) -> str:
+    """A form of ``forms`` for a count ``n``: "all {n}" only for three or more."""
+    return rng.choice([f for f in forms if n >= 3 or "all {n}" not in f])
+
+
+def _plurals(scene: Scene) -> dict[str, tuple[str, tuple[str, ...]]]:
+    """The kinds the scene has several objects of whose plural the lexer reads as every one
+    ("the mugs"), by that plural: the kind and its ids."""
+    kinds, _ = _shared(scene)
+    return {
+        _plural(c): (c, ids)
+        for c, ids in kinds.items()
+        if _named(f"the {_plural(c)}", scene, "object") == set(ids)
+    }
+
+
+# a word before "the <kinds>" after which no count can be said ("one of the mugs", "all the mugs")
+_NO_COUNT_AFTER = re.compile(
+    r"(?i)\b(?:of|all|both|any|either|neither|each|every|" + "|".join(NUMBERS) + r"|\d+)\s+$"
+)
+
+
+def _the_once(text: str, name: str) -> re.Match[str] | None:
+    """The one "the <name>" of ``text`` (a whole word, "The" at a sentence's start), or None."""
+    found = list(re.finditer(rf"\b([Tt]he) {re.escape(name)}(?![\w'-])", text))
+    return found[0] if len(found) == 1 else None
+
+
+def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The count variants of one entry. For a scene with a kind it has several objects of, a
+    request of every one of the kind for a person with the count (KIND_COUNTS, BOTH for two:
+    every one to that person) or another count (BOTH for three or more: refused). For a grounded
+    entry with no choice in it naming its one one-of-a-kind object once as "the <name>", that
+    object said as the only one (ONE: the entry) or as several (SEVERAL: refused); naming a kind
+    in the plural once as "the <kinds>" (every one of the kind) and nothing else of that kind, that
+    plural said with its count or "both" (the entry) and with another count (refused)."""
+    text = entry.text.strip()
+    want = entry.want
+    plurals = _plurals(scene)
+
+    def variant(said: str, to: Node | None, form: str) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, said, to, must, "counts", (), form)
+
+    if plurals:
+        cs, (_, ids) = rng.choice(sorted(plurals.items()))
+        hid = rng.choice(scene.humans).id
+        p = _name(scene, hid)
+        every = Group("and", tuple(Task("deliver", i, hid) for i in ids))
+        n, agree = len(ids), rng.randrange(2) == 0
+        if agree:
+            forms = KIND_COUNTS + BOTH if n == 2 else KIND_COUNTS
+        else:
+            forms = KIND_COUNTS + BOTH if n >= 3 else KIND_COUNTS
+            n = _miscount(n, rng)
+        form = _of_kind_said(n, forms, rng)
+        said = form.format(p=p, P=p[:1].upper() + p[1:], n=_counted(n, rng), cs=cs)
+        yield variant(said, every if agree else None, "kind" if agree else "kind miscounted")
+    if want is None or _has_choice(want):
+        return
+    named = _objects_named(text, scene)
+    unique = _unique_objects(scene)
+    for oid in sorted({t.obj for t in tasks(want)} & named & set(unique)):
+        m = _said_once(text, scene, oid)
+        if m is None:
+            continue
+        the, name, before, after = m[1], m[2], text[: m.start()], text[m.end() :]
+        os = _several(name)
+        if os is None:  # ("the one chips", "the one salt": no English)
+            continue
+        one = rng.choice(ONE).format(o=name)
+        yield variant(before + the + one[3:] + after, want, "one")
+        if _named(f"the {os}", scene, "object") == {oid}:
+            many = rng.choice(SEVERAL).format(os=os)
+            many = many[:1].upper() + many[1:] if the[:1].isupper() else many
+            yield variant(before + many + after, None, "several")
+        break
+    for cs, (kind, ids) in sorted(plurals.items()):
+        m = _the_once(text, cs)
+        if m is None or _NO_COUNT_AFTER.search(text[: m.start()]):
+            continue
+        rest = text[: m.start()] + text[m.end() :]
+        # (nor where the rest may narrow the kind: "both pens … apart from the black one" says
+        # two of three, as a careful person reads it)
+        telling = {w for o in scene.objects if o.id in ids for w in _words(" ".join(o.aliases))}
+        narrows = _TELLING | {"one", "ones"} | (telling - _words(kind))
+        if _named(rest, scene, "object") & set(ids) or _words(rest) & narrows:
+            continue
+        n = len(ids)
+        for agree in (True, False):  # (rare in the corpus: both said)
+            forms = (*ENTRY_COUNTS, "both {cs}") if (n == 2) is agree else ENTRY_COUNTS
+            count = n if agree else _miscount(n, rng)
+            form = _of_kind_said(count, forms, rng).format(n=_counted(count, rng), cs=cs)
+            form = form[:1].upper() + form[1:] if m[1] == "The" else form
+            said = text[: m.start()] + form + text[m.end() :]
+            to = want if agree else None
+            yield variant(said, to, "entry" if agree else "entry miscounted")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -1532,6 +1683,7 @@ def generated(
     rng_repairs = random.Random(f"repairs:{seed}")
     rng_defer = random.Random(f"deferrals:{seed}")
     rng_clefts = random.Random(f"clefts:{seed}")
+    rng_counts = random.Random(f"counts:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1570,6 +1722,9 @@ def generated(
                     yield v, scene
             if "clefts" in families:
                 for v in clefts(part, entry, scene, rng_clefts):
+                    yield v, scene
+            if "counts" in families:
+                for v in counts(part, entry, scene, rng_counts):
                     yield v, scene
 
 

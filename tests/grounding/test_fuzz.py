@@ -22,7 +22,10 @@ closing the request: the entry; a choice left up to the robot: the choice), the 
 session 34 (an entry's one handover in a cleft, or with another person set against it: that
 handover; negated or of a person the scene does not have: refused; with a second object: both; a
 cleft after an entry: the entry and that handover; a placement's surface in a cleft: the
-placement), and the wrappers and take-backs of a seed unchanged by them."""
+placement), the count family of session 35 (a kind of several said with its count or "both": every
+one of it; with another count: refused; an entry's one-of-a-kind object said as the only one: the
+entry; as several: refused; an entry's kind in the plural said with its count: the entry; with
+another: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -206,7 +209,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts')" in err
+    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -1593,3 +1596,175 @@ def test_over_the_corpus_each_cleft_variant_names_what_it_says() -> None:
         if v.form == "contrast":
             assert _one_person(filled["q"], scene) != task.target
     assert min(kinds.values()) >= 10, kinds
+
+
+# -- counts (session 35) ---------------------------------------------------------------------------
+
+
+def _counts(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.counts("t", entry, scene, random.Random(seed)))
+
+
+def _three_mugs() -> Scene:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    mug = {"id": "mug_green", "category": "mug", "aliases": ["green mug"]}
+    raw["objects"].append({**mug, "position": [0.5, 0.5, 0.05]})
+    return scene_from_dict(raw)
+
+
+def _count_filled(text: str, cs: str) -> dict[str, str]:
+    """What ``text`` fills the one form of KIND_COUNTS or BOTH it says with, for the kind ``cs``
+    in the plural: the person {p} (or {P}) and the count {n} (None for "both")."""
+    for form in (*fuzz.KIND_COUNTS, *fuzz.BOTH):
+        out = re.escape(form).replace(re.escape("{cs}"), re.escape(cs))
+        out = out.replace(re.escape("{n}"), r"(?P<n>\w+)")
+        out = re.sub(r"\\\{[pP]\\\}", "(?P<p>.+?)", out, count=1)
+        if m := re.fullmatch(out, text):
+            return m.groupdict()
+    raise AssertionError(f"{text!r} says no count of {cs}")
+
+
+_COUNTED = re.compile(r"\b(?:(?:the|all) (?P<n>\w+)|(?P<both>both)) mugs\b", re.I)
+
+
+def _count_said(text: str) -> int:
+    """The count of mugs ``text`` says: a word, digits or "both"."""
+    m = _COUNTED.search(text)
+    assert m is not None, text
+    if m["both"]:
+        return 2
+    return int(m["n"]) if m["n"].isdigit() else fuzz.NUMBERS.index(m["n"].lower())
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_a_kind_of_several_is_said_with_its_count_or_another(seed: int) -> None:
+    for scene, n in ((CELL, 2), (_three_mugs(), 3)):
+        entry = _entry("cell", "Give her the cup.", None)  # refused: only the kind's variant
+        (v,) = _counts(entry, scene, seed)
+        p = _one_person(_count_filled(v.text, "mugs")["p"], scene)
+        assert "all two" not in v.text and "all 2 " not in v.text
+        if v.form == "kind":  # every mug to that person, said with their number
+            mugs = [o.id for o in scene.objects if o.category == "mug"]
+            assert v.want == Group("and", tuple(Task("deliver", m, p) for m in mugs))
+            assert _count_said(v.text) == n and v.must == "same"
+        else:  # another number, or "both" of three: refused
+            assert v.form == "kind miscounted" and v.want is None and v.must == "refuse"
+            assert _count_said(v.text) != n
+
+
+def test_both_is_said_of_two_and_miscounts_three() -> None:
+    entry = _entry("cell", "Give her the cup.", None)
+    both = {
+        (n, v.form)
+        for seed in range(200)
+        for scene, n in ((CELL, 2), (_three_mugs(), 3))
+        for v in _counts(entry, scene, seed)
+        if re.search(r"(?i)\bboth\b", v.text)
+    }
+    assert both == {(2, "kind"), (3, "kind miscounted")}
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_a_one_of_a_kind_object_is_said_as_the_one_or_as_several(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    kind, one, several = _counts(entry, CELL, seed)
+    assert kind.form in ("kind", "kind miscounted")
+    assert (one.form, several.form) == ("one", "several")
+    said = [f.format(o="apple") for f in fuzz.ONE]
+    assert one.text in [f"Give Bob {s}, please." for s in said] and one.want == entry.want
+    said = [f.format(os="apples") for f in fuzz.SEVERAL]
+    assert several.text in [f"Give Bob {s}, please." for s in said]
+    assert several.want is None and several.must == "refuse"
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # a sentence's "The": kept in capitals
+        ("The apple to Bob.", "apple>B", {"one", "several"}),
+        # a name already plural or a mass noun: no count of it
+        ("Give Bob the crisps.", "chips>B", set()),
+        # one of several, a choice, a refusal: no count of the entry's object
+        ("Give Alice the red mug.", "mug_red>A", set()),
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", set()),
+        ("Give him the apple.", None, set()),
+        # an entry's kind in the plural, said once and nothing else of it
+        (
+            "Put the mugs on the shelf.",
+            "mug_red@shelf & mug_blue@shelf",
+            {"entry", "entry miscounted"},
+        ),
+        ("Give Bob one of the mugs.", "mug_red>B | mug_blue>B", set()),
+        ("Give Bob the mugs but not the red mug.", "mug_blue>B", set()),
+        # nor where the rest may narrow the kind ("both mugs … but the blue one" is one of two)
+        ("Put the mugs on the shelf apart from the blue one.", "mug_red@shelf", set()),
+    ],
+)
+def test_a_count_is_only_made_where_it_says_what_it_must(
+    text: str, want: str | None, forms: set[str]
+) -> None:
+    entry = _entry("cell", text, want)
+    made = set()
+    for seed in range(20):
+        variants = _counts(entry, CELL, seed)
+        assert variants[0].form in ("kind", "kind miscounted")
+        made |= {v.form for v in variants[1:]}
+        for v in variants[1:]:
+            if text.startswith("The "):
+                assert v.text.startswith(("The ", "Both ", "All ")), v.text
+    assert made == forms
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_every_mug_is_said_with_their_count(seed: int) -> None:
+    for scene, n in ((CELL, 2), (_three_mugs(), 3)):
+        want = " & ".join(f"{o.id}@shelf" for o in scene.objects if o.category == "mug")
+        entry = _entry("cell", "Put the mugs on the shelf.", want)
+        said, miscounted = (v for v in _counts(entry, scene, seed) if v.form.startswith("entry"))
+        assert (said.form, miscounted.form) == ("entry", "entry miscounted")
+        for v in (said, miscounted):
+            assert re.fullmatch(r"Put (?:the \w+|all \w+|both) mugs on the shelf\.", v.text)
+            assert "all two" not in v.text and "all 2 " not in v.text
+        assert said.want == entry.want and _count_said(said.text) == n
+        assert miscounted.want is None and _count_said(miscounted.text) != n
+
+
+def test_a_plural_is_said_of_a_name_that_has_one() -> None:
+    assert fuzz._several("apple") == "apples" and fuzz._several("box") == "boxes"
+    assert fuzz._several("knife") == "knives" and fuzz._several("teddy") == "teddies"
+    assert fuzz._several("water bottle") == "water bottles"
+    assert fuzz._several("key") == "keys"
+    for name in ("chips", "scissors", "salt", "glue", "bag of crisps"):
+        assert fuzz._several(name) is None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("Give Bob the two mugs.", "mug_red>B & mug_blue>B", "kind", "exact"),
+        ("Give Bob the two mugs.", "mug_red>B", "kind", "wrong"),
+        ("Give Bob the three mugs.", None, "kind miscounted", "refused"),
+        ("Give Bob the two mugs.", None, "kind miscounted", "wrong"),  # read where refused
+        ("Give Bob the one apple.", "apple>B", "one", "exact"),
+    ],
+)
+def test_a_count_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "counts", form) == verdict
+
+
+def test_over_the_corpus_each_count_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.COUNT_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=35, every=1, families=("counts",)):
+        assert v.family == "counts" and (v.must == "refuse") is (v.want is None)
+        assert v.must == ("same" if v.form in ("kind", "one", "entry") else "refuse")
+        kinds[v.form] += 1
+        if v.form.startswith("kind"):
+            plurals = fuzz._plurals(scene)
+            cs = next(c for c in plurals if re.search(rf"\b{c}\b", v.text))
+            _one_person(_count_filled(v.text, cs)["p"], scene)
+            if v.form == "kind":
+                ids = plurals[cs][1]
+                assert isinstance(v.want, Group) and {t.obj for t in tasks(v.want)} == set(ids)
+    assert min(kinds.values()) >= 2 and kinds["one"] >= 30, kinds
