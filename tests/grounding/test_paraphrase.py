@@ -136,7 +136,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",
-        "Pronto, the cup to Person A, capisce?",
         # blind18 (tuned on in session 20): kinds not met yet (docs/grounding.md, "Session 20"):
         # the speaker as 'me' inside a remark, corrections said with a remark ('hold on, Mummy's
         # talking', 'Hang on, not the lemon, the salt'), passives and 'is wanting', 'she' resumed

@@ -10,7 +10,7 @@ from hltl.grounding import normalise
 from tests.grounding.helpers import CELL, CLASSROOM, KITCHEN, NURSERY, OFFICE, WARD, PhrasingCases
 
 # the scenes of the numbered parts, as session 33 (12t) has them
-from tests.grounding.test_phrasing_s33t import DUO, SQ, T21, TWO
+from tests.grounding.test_phrasing_s33t import DUO, F41, SQ, T21, TWO
 
 CASES = PhrasingCases()
 
@@ -221,6 +221,36 @@ test_drink_in = CASES.test(
     ("Carol would like a brew, the mug please.", None, CELL),
     ("Mr Lee wants some water, the jug for Ruth please.", None, WARD),
     ("Priya wants a coffee", None, OFFICE),
+)
+
+
+# -- 'They each get a thing, so …': session 33's header ---------------------------------------
+
+test_they_each = CASES.test(
+    (
+        "They each get a thing, so bottle for Person A and chips for Person B, natotela.",
+        "bottle>A & chips>B",
+        T21,
+    ),
+    (
+        "They both get something: the bottle for Person A and the chips for Person B.",
+        "bottle>A & chips>B",
+        T21,
+    ),
+    # a list the header does not fit: one person twice, or one person alone
+    ("They each get a thing, so bottle for Person A and chips for Person A.", None, T21),
+    ("They each get a thing, so bottle for Person A.", None, T21),
+)
+
+
+# -- ', capisce?': a check that the request was understood ------------------------------------
+
+test_understood = CASES.test(
+    ("Pronto, the cup to Person A, capisce?", "cup>A", F41),
+    ("The cup to Person A, savvy?", "cup>A", F41),
+    # nothing before it; a request that does not read alone
+    ("Capisce?", None, F41),
+    ("The cup to the shelf, capisce?", None, F41),
 )
 
 

@@ -21853,6 +21853,42 @@ def _drink_in35t(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['want']} {m['x']}{m['tail']}"
 
 
+def _they_each35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): 'They each get a thing, so …' / 'They both get something: …' opening
+    the instruction is session 33's header 'Each of them gets a thing: …' ('they' the people the
+    list after it names), read as ``_each_header33t`` reads that: the list alone, only where it
+    hands each person of the scene as much as the header says; else the words are left as said
+    (and refused as before)."""
+    m = _rx(
+        r"^they (?P<who>each|both) (?:get|have|receive) (?P<amt>a thing|one thing|an item|one "
+        r"item|something)(?: each| apiece)?\s*(?:,\s*(?:so|then)\s+|:\s*)"
+    ).match(text)
+    if m is None:
+        return text
+    who = "Each of them gets" if m["who"].lower() == "each" else f"{m['who'].title()} of them get"
+    header = f"{who} {m['amt']}: {text[m.end() :]}"
+    read = _each_header33t(header, lexicon)
+    return read if read != header else text  # a list the header does not fit: left as said
+
+
+# a closing question of a speaker checking they were understood, from a closed list
+_UNDERSTOOD35T = (
+    r",?\s*(?:capisce|capiche|comprende|comprendez|savvy|understood|got that|you got that|"
+    r"get it|follow me)\s*\?\s*$"
+)
+
+
+def _understood35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): '…, capisce?' / ', savvy?' / ', understood?' closing a request ('Pronto,
+    the cup to Person A, capisce?'): a check that the request was understood, asking nothing —
+    taken off when what is before it reads alone."""
+    m = _rx(_UNDERSTOOD35T).search(text)
+    if m is None or m.start() == 0:
+        return text
+    before = text[: m.start()].rstrip(" ,")
+    return before + "." if _tasks_of(before, lexicon) else text
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -21862,6 +21898,8 @@ _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _introduced35t,
     _with_one_there35t,
     _drink_in35t,
+    _they_each35t,
+    _understood35t,
 )
 
 
