@@ -153,11 +153,6 @@ KNOWN_MISSES = frozenset(
         # choice and count words ('Either cup will do', 'big or small', 'one to Kofi and one to
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
         "Jess needs some screws, give her the tin.",
-        # blind20 (tuned on in session 22): refusals left (docs/grounding.md, "Session 22")
-        "Sorry, it's gone three in the morning and I'm the only one on the floor. If you could "
-        "just, um, set the thermometer on the bedside table, that'd be grand.",
-        "Okay, so Person A takes the bottle off you. And for Person B, the cup, she's been "
-        "patient.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
@@ -173,11 +168,7 @@ KNOWN_MISSES = frozenset(
         "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Lily likes both her blocks with her when she eats, so put the pair of them in the high "
-        "chair.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Person A gets the cup, or, ugh, my notes are smudged, the apple it says.",
-        "For Person A, the chips. Er, hold on, she'd rather have the bottle, go with that.",
         "bob's been on the bike all day give him the bottle thx",
         "The sponhe can go in the sink now it's been used.",
         "The magazone can go back on the trolley, Mrs Khan's finished with it.",
@@ -244,8 +235,6 @@ KNOWN_MISSES = frozenset(
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
-        "There's just the single bottle, so hand that to Person A, she'll make it last.",
-        "Not apple. Bottle, for Person B, please. Madloba.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
@@ -259,11 +248,11 @@ KNOWN_MISSES = frozenset(
         'Tom needs the glovrs, the pallets are splintery.',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
+        # a time after the request puts it off (test_phrasing_s34's "Give Carol the apple after
+        # her walk."; session 35, 12r)
         'A single bottle will do for Person A after her orienteering.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
-        # blind31 (tuned on in session 33): refusals left at its one measurement (docs/grounding.md)
-        'They each get a thing, so bottle for Person A and chips for Person B, natotela.',
         # blind33 (tuned on in session 35): refusals left at its one measurement (docs/grounding.md)
         "Oh go on then, the bottle to Person B first, and after it the chips, she's earned them at "
         "cribbage.",
@@ -282,37 +271,6 @@ KNOWN_MISSES = frozenset(
         'Small box onto the pallet and after that the medium box onto the belt and then the '
         'warehouseman can lock up.',
         "Torch to Jess, she's under the bench, then the small spanner to Kofi.",
-        "Person A's the au pair, she can take the cup or the apple, whichever comes to hand.",
-        "Pick any one of the four things for Person A, she really doesn't mind which, erokamano.",
-        "They're to have one thing apiece, so the bottle finds Person A and the chips find Person "
-        "B.",
-        "Whichever robot's idle can fetch the bottle for Person A, it makes no odds to me.",
-        "Sam's the typist today, any of the pens will do for him.",
-        "Kofi can take whichever spanner's handy.",
-        'A single thing for each of them, so the cup across to Person A and the bottle across to '
-        'Person B.',
-        "There's just the one bottle here and it's meant for Person A, after her gymnastics.",
-        'Those two cups are filthy, put the pair of them in the sink to soak.',
-        "Gather up all three pens and drop them in the box, we're closing for the night.",
-        "Load the belt with every box we've got, all three, the longshoreman's waiting.",
-        'Both spanners, the big one and the small one, go away in the locker.',
-        "It's the bottle Alice wants, not the crisps, she's off to her knitting circle.",
-        'Bob fancies the crisps, so give him those and leave the bottle be.',
-        'Person A can have the lot apart from the cup, she brought her own flask.',
-        "Person A's allergic, so the apple goes to Person B instead.",
-        'Person B may have the cup, though the apple stays where it is.',
-        "Person A doesn't want chips, she's on a diet for the dressage, so the bottle's hers.",
-        'Only the bottle, and only to Person A, no other jobs for now.',
-        'Apart from the two cups, load every item onto the tray.',
-        "Just the bib for Grandad, he's got wipes of his own.",
-        "Crisps to Alice, oops, I've gone and got it wrong, Bob's the one who ordered them.",
-        'Stick the bottle on the shelf; actually, no, Alice would rather have it in her hand.',
-        "Person B's getting the bottle. Hang about, no, it's Person A who's getting it.",
-        "Person A's getting the chips, oh wait, I meant the bottle for her.",
-        'Take the bottle over to Person B, or rather Person A, I keep mixing them up.',
-        "Chips for Person A, no, hang on, I had them the wrong way about: Person B's chips.",
-        "Priya was to get the stapler, but change that, Sam's doing the filing, so him.",
-        'Give the teddy to Ava, whoops, no, it belongs to Lily, give it to her.',
         'person a wants chips and person b could do with the cup after her crochet',
         'first the bottle for person b and after it the apple for person a',
         "the apple's meant for person b so take it over",
@@ -400,7 +358,7 @@ KNOWN_UNCLEAR = frozenset(
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind33" written in session 34 by another engineer and
 # committed alone, reviewed by a second one, measured once at the end of session 34 (0 wrong), tuned
 # on in session 35: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind34"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -492,6 +450,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind32"].entries}) >= 3
     assert len(CORPORA["blind33"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind33"].entries}) >= 3
+    assert len(CORPORA["blind34"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind34"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

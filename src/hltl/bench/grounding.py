@@ -118,7 +118,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # grounder before its one measurement at the end of session 33; tuned on in session 34), blind33
 # (written in session 34 by another engineer and committed alone, never opened by the engineers
 # who change the grounder before its one measurement at the end of session 34; tuned on in
-# session 35).
+# session 35), blind34 (written in session 35 by another engineer and committed alone, never
+# opened by the engineers who change the grounder before its one measurement at the end of
+# session 35; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -169,6 +171,7 @@ PARTS = (
     "blind31",
     "blind32",
     "blind33",
+    "blind34",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

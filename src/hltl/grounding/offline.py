@@ -30,6 +30,7 @@ from hltl.grounding.normalise import (
     canonical19,
     count_said30,
     hearer_named,
+    miscounted35l,
     one_person,
     order_colons,
     people_named,
@@ -99,6 +100,7 @@ def parse_instruction(
     if not inside:
         lexicon.forget()  # a new instruction: what was lexed for the one before is not kept
         _refuse_deferred33l(text)
+        miscounted35l(text, lexicon)
     inside.append(text)  # a rewrite reading a part again keeps what was lexed so far
     try:
         node = _parse(text, scene, lexicon, normalise=True)

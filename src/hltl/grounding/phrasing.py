@@ -1504,6 +1504,18 @@ def _definite_one(items: list[Item], k: int, out: list[Item]) -> bool:
     return True
 
 
+def _definite_ones35l(items: list[Item]) -> list[Item]:
+    """Session 35 (lead): 'the one bowl' is 'the bowl' (``_definite_one``) before any pass reads
+    a list, not only when the quantifiers are folded: 12c's counts fuzz found "Dana needs the
+    spoon, the one bowl and the sponge put in the sink" and "… and the cup and the one apple go
+    to Person A" split at the 'one' (the word stopped the scan for the list)."""
+    out: list[Item] = []
+    for k, it in enumerate(items):
+        if not _definite_one(items, k, out):
+            out.append(it)
+    return out
+
+
 def _one_then_other(items: list[Item], k: int, lexicon: Lexicon) -> bool:
     """Whether 'one' at ``k``, with no name after it, is answered by 'the other' later in its
     sentence in a scene of exactly two objects: one of them, and the other one."""
@@ -2558,6 +2570,24 @@ def _but_after_place(items: list[Item]) -> list[Item]:
     return items
 
 
+def _past_both35l(items: list[Item], k: int) -> int:
+    """Session 35 (lead): 'both' before the objects left out ("everything but both mugs",
+    "except the knife and both plates"; 12c's counts fuzz found them read as adding the mugs) is
+    skipped like a determiner when the name after it is two objects; a name of another number is
+    refused, as 'both' elsewhere is."""
+    if not (k < len(items) and _is(items[k], "both")):
+        return k
+    j = _past_dets(items, k + 1)
+    if j < len(items) and _objects(items[j]):
+        count = len({r.id for r in items[j].refs})
+        if count != 2:
+            raise GroundingError(
+                f"'both {items[j].text}' but the scene has {count} of them: say which to leave out"
+            )
+        return j
+    return k
+
+
 def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
     """'everything except the mugs', 'a mug, not the red one': remove them from the last name."""
     items = _but_after_place(items)
@@ -2570,7 +2600,8 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
             _is(it, "not") and low == "not" and k + 1 < len(items) and _starts_objects(items, k + 1)
         )
         if _is(it, "and") and low == "but" and out and out[-1].quant == "all":
-            starts = _starts_objects(items, k + 1)  # "everything but the mugs"
+            # "everything but the mugs", "everything but both mugs"
+            starts = _starts_objects(items, _past_both35l(items, k + 1))
         elif (
             _is(it, "and")
             and low == "but"
@@ -2590,6 +2621,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
         while j < len(items):
             while j < len(items) and _is(items[j], "det", "filler"):
                 j += 1
+            j = _past_both35l(items, j)
             if j < len(items) and _objects(items[j]):
                 excluded.append(items[j])
                 j += 1
@@ -2597,7 +2629,7 @@ def _exclusions(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 if (
                     j + 1 < len(items)
                     and _is(items[j], "and", ",", "or")
-                    and _starts_objects(items, j + 1)
+                    and _starts_objects(items, _past_both35l(items, j + 1))
                     and (not _is(items[j], ",") or _listed_after(items, j + 1, out))
                 ):
                     j += 1
@@ -5769,6 +5801,7 @@ def _two_names29(items: list[Item]) -> list[Item]:
 
 
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
+    _plain(_definite_ones35l),
     _plain(_two_names29),
     _plain(_for_me_alone),
     _plain(_any_described),

@@ -1,0 +1,167 @@
+"""Session-35 phrasing of issue 12 (lead): wrong readings the fuzz found (docs/grounding.md,
+"Session 35 (lead)").
+
+- 12c's counts fuzz: "Everything but both mugs to Alice." (cell) read every object, the mugs
+  included, and "Put everything on the worktop except the knife and both plates" (kitchen) put
+  the plates there too: 'but' before 'both' was read as 'and', and 'both' after 'and' in a list
+  of objects left out ended the list. 'both' before the objects left out is skipped as a
+  determiner when the name after it is two objects; another number is refused.
+- The same fuzz: "Dana needs the spoon, the one bowl and the sponge put in the sink" (lab) read
+  spoon>A & bowl>A & sponge@sink, and "… and the cup and the one apple go to Person A too"
+  (4-4-square) gave the cup to Person B: 'the one bowl' means 'the bowl', but the 'one' was
+  taken off only after the passes that read a list had stopped at it.
+- The same fuzz: "Lena is taking the three plates out, so she needs both of them" (kitchen, two
+  plates) read both plates for Lena: the count was in a reason clause, dropped with it. A count
+  said right before a kind of the scene's objects that is more than the scene has is refused
+  wherever it is said; fewer is left to the grammar ("the two boxes, the small and the medium
+  one" names two of three)."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    CELL,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    ROOT,
+    assert_reads,
+    assert_refused,
+)
+
+SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
+
+_NO_MUGS = "cup>A & bottle>A & chips>A & apple>A"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Everything but both mugs to Alice.",
+        "Give Alice everything but both mugs.",
+        "Give Alice everything but both the mugs.",
+        "Give Alice everything but both of the mugs.",
+        "Give Alice everything except both mugs.",
+        "Give Alice everything but the mugs.",
+        "Give Alice everything but the two mugs.",
+    ],
+)
+def test_both_in_what_is_left_out_is_left_out(text: str) -> None:
+    assert_reads(text, _NO_MUGS, CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Put everything on the worktop except the knife and both plates",
+            "lemon@counter & salt@counter & tongs@counter",
+        ),
+        (
+            "Put everything on the worktop except both plates and the knife",
+            "lemon@counter & salt@counter & tongs@counter",
+        ),
+        ("Give Lena everything but the knife and both plates.", "lemon>B & salt>B & tongs>B"),
+    ],
+)
+def test_both_after_and_in_what_is_left_out_is_left_out(text: str, want: str) -> None:
+    assert_reads(text, want, KITCHEN)
+
+
+def test_both_in_a_list_of_objects_left_out_keeps_the_rest() -> None:
+    assert_reads(
+        "Put everything but both mugs and the cup on the table",
+        "bottle@table & chips@table & apple@table",
+        CELL,
+    )
+    assert_reads(
+        "Give Omar everything but both cups and the sponge", "spoon>B & banana>B & bowl>B", LAB
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Mia everything but both boxes.", DEPOT),  # three boxes
+        ("Give Mia everything except the tape and both boxes.", DEPOT),
+        ("Give Alice everything but both cups.", CELL),  # one cup
+    ],
+)
+def test_both_that_the_scene_does_not_count_is_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="both")
+
+
+def test_the_one_object_in_a_list_is_that_object() -> None:
+    assert_reads(
+        "Dana needs the spoon, the one bowl and the sponge put in the sink",
+        "spoon@sink & bowl@sink & sponge@sink",
+        LAB,
+    )
+    assert_reads(
+        "The bottle goes to Person A and the chips go to Person B and the cup and the one apple "
+        "go to Person A too",
+        "bottle>A & chips>B & cup>A & apple>A",
+        SQ,
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Alice the cup and the one mug.",  # two mugs: which?
+        "The cup and the one mug go to Alice.",
+        "Give Alice just the one mug.",
+    ],
+)
+def test_the_one_of_two_stays_refused(text: str) -> None:
+    assert_refused(text, CELL, match="ambiguous")
+
+
+def test_the_one_and_the_other_keep_their_choice() -> None:
+    assert_reads(
+        "Give Alice the one mug and Bob the other.",
+        "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+        CELL,
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Lena is taking the three plates out, so she needs both of them", KITCHEN),
+        ("Lena is taking all three plates out, so she needs both of them", KITCHEN),
+        ("Lena's stacking 3 plates, give her the tongs.", KITCHEN),
+        ("The two cups are dirty, so give Alice the bottle.", CELL),  # one cup
+    ],
+)
+def test_a_count_the_scene_does_not_have_is_refused_wherever_said(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="the scene has")
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Lena is taking the two plates out, so she needs both of them",
+            "plate_white>B & plate_blue>B",
+            KITCHEN,
+        ),
+        (
+            "Put all 3 boxes on the conveyor.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        ("Give Mia one of the three boxes.", "box_small>A | box_medium>A | box_large>A", DEPOT),
+        ("Give Alice one of the two mugs.", "mug_red>A | mug_blue>A", CELL),
+        (
+            "Give Mia the two boxes, the small and the medium one.",
+            "box_small>A & box_medium>A",
+            DEPOT,
+        ),
+        ("Both mugs go to Bob.", "mug_red>B & mug_blue>B", CELL),
+    ],
+)
+def test_a_count_the_scene_has_is_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
