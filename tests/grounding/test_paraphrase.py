@@ -113,7 +113,6 @@ KNOWN_MISSES = frozenset(
         # aren't X' as a subject, 'namely', 'leave the X where it is' after a correction, gapping
         # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
         # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
-        "Person B can keep the bottle, and the chips are for the other one, cheers.",
         "Quick one, just circling back: can we action getting the stapler over to Priya? "
         "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "

@@ -224,25 +224,6 @@ test_drink_in = CASES.test(
 )
 
 
-# -- 'They each get a thing, so …': session 33's header ---------------------------------------
-
-test_they_each = CASES.test(
-    (
-        "They each get a thing, so bottle for Person A and chips for Person B, natotela.",
-        "bottle>A & chips>B",
-        T21,
-    ),
-    (
-        "They both get something: the bottle for Person A and the chips for Person B.",
-        "bottle>A & chips>B",
-        T21,
-    ),
-    # a list the header does not fit: one person twice, or one person alone
-    ("They each get a thing, so bottle for Person A and chips for Person A.", None, T21),
-    ("They each get a thing, so bottle for Person A.", None, T21),
-)
-
-
 # -- ', capisce?': a check that the request was understood ------------------------------------
 
 test_understood = CASES.test(
@@ -251,6 +232,21 @@ test_understood = CASES.test(
     # nothing before it; a request that does not read alone
     ("Capisce?", None, F41),
     ("The cup to the shelf, capisce?", None, F41),
+)
+
+
+# -- 'P can keep the X' of an object lying about: P is to have it -----------------------------
+
+test_can_keep = CASES.test(
+    (
+        "Person B can keep the bottle, and the chips are for the other one, cheers.",
+        "bottle>B & chips>A",
+        DUO,
+    ),
+    ("Person B can keep the bottle.", "bottle>B", DUO),
+    # a place after it; a person kept
+    ("Person B can keep the bottle on the shelf.", None, DUO),
+    ("Person B can keep Person A.", None, DUO),
 )
 
 

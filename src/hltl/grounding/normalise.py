@@ -21853,24 +21853,6 @@ def _drink_in35t(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['want']} {m['x']}{m['tail']}"
 
 
-def _they_each35t(text: str, lexicon: Lexicon) -> str:
-    """Session 35 (12t): 'They each get a thing, so …' / 'They both get something: …' opening
-    the instruction is session 33's header 'Each of them gets a thing: …' ('they' the people the
-    list after it names), read as ``_each_header33t`` reads that: the list alone, only where it
-    hands each person of the scene as much as the header says; else the words are left as said
-    (and refused as before)."""
-    m = _rx(
-        r"^they (?P<who>each|both) (?:get|have|receive) (?P<amt>a thing|one thing|an item|one "
-        r"item|something)(?: each| apiece)?\s*(?:,\s*(?:so|then)\s+|:\s*)"
-    ).match(text)
-    if m is None:
-        return text
-    who = "Each of them gets" if m["who"].lower() == "each" else f"{m['who'].title()} of them get"
-    header = f"{who} {m['amt']}: {text[m.end() :]}"
-    read = _each_header33t(header, lexicon)
-    return read if read != header else text  # a list the header does not fit: left as said
-
-
 # a closing question of a speaker checking they were understood, from a closed list
 _UNDERSTOOD35T = (
     r",?\s*(?:capisce|capiche|comprende|comprendez|savvy|understood|got that|you got that|"
@@ -21889,6 +21871,24 @@ def _understood35t(text: str, lexicon: Lexicon) -> str:
     return before + "." if _tasks_of(before, lexicon) else text
 
 
+def _can_keep35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): 'P can keep the X' where the scene has X lying about (no one holds
+    anything in a scene) is 'P can have the X': P is to end up with it ('Person B can keep the
+    bottle, and the chips are for the other one') — only with one person of the scene, objects
+    alone after 'keep', and the clause ending there."""
+    people = _person_alt35t(lexicon)
+    return _sub(
+        rf"\b(?P<p>{people}) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)"
+        r"(?=\s*(?:[,.!;]|$))",
+        lambda m: (
+            f"{m['p']} can have {m['x']}"
+            if _only_person(m["p"], lexicon) and _only_kind(m["x"], lexicon, "object")
+            else m[0]
+        ),
+        text,
+    )
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -21898,8 +21898,8 @@ _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _introduced35t,
     _with_one_there35t,
     _drink_in35t,
-    _they_each35t,
     _understood35t,
+    _can_keep35t,
 )
 
 
