@@ -14,7 +14,15 @@
   plates) read both plates for Lena: the count was in a reason clause, dropped with it. A count
   said right before a kind of the scene's objects that is more than the scene has is refused
   wherever it is said; fewer is left to the grammar ("the two boxes, the small and the medium
-  one" names two of three)."""
+  one" names two of three).
+- 12's frames fuzz: "We need the apple, both mugs need shifting up to the shelf, the red and the
+  blue alike." (cell) read the apple onto the shelf: 'both mugs' named as 'the red mug and the
+  blue mug' joined the list before the comma. Opening a clause of its own (a verb after it), it
+  opens a sentence now, and "We need the apple" is refused as before (the speaker).
+- 12r's fuzz: "Tom wants to move the large box, can he have the gloves? Also, give Tom the
+  packing tape or the barcode scanner, it's up to you which." (depot) read the large box into the
+  choice: the plan's object stood for an 'it' anywhere after it, here the subject of "it's up to
+  you". Only an object 'it' of the request's own sentence is the plan's object now."""
 
 from __future__ import annotations
 
@@ -26,6 +34,7 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     ROOT,
     assert_reads,
     assert_refused,
@@ -165,3 +174,47 @@ def test_a_count_the_scene_does_not_have_is_refused_wherever_said(text: str, sce
 )
 def test_a_count_the_scene_has_is_read(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We need the apple, both mugs need shifting up to the shelf, the red and the blue alike.",
+        "We need the apple, both mugs need shifting up to the shelf.",
+    ],
+)
+def test_both_opening_a_clause_does_not_join_the_list_before(text: str) -> None:
+    assert_refused(text, CELL, match="speaker")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Alice the cup, both mugs go to Bob.", "cup>A & mug_red>B & mug_blue>B"),
+        (
+            "Alice gets the cup, both mugs go on the shelf.",
+            "cup>A & mug_red@shelf & mug_blue@shelf",
+        ),
+        (
+            "Give Alice the cup, both mugs and the apple.",
+            "cup>A & mug_red>A & mug_blue>A & apple>A",
+        ),
+        ("Give Alice the apple, both mugs are for Bob.", "apple>A & mug_red>B & mug_blue>B"),
+    ],
+)
+def test_both_after_a_comma_keeps_its_clause(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
+
+
+def test_a_plans_object_is_not_the_it_of_a_later_remark() -> None:
+    assert_refused(
+        "Tom wants to move the large box, can he have the gloves? Also, give Tom the packing "
+        "tape or the barcode scanner, it's up to you which.",
+        DEPOT,
+    )
+    assert_reads("Tom wants to move the large box, can he have it?", "box_large>B", DEPOT)
+    assert_reads(
+        "Ava wants to build a tower, can she have the blocks?",
+        "block_red>C & block_green>C",
+        NURSERY,
+    )

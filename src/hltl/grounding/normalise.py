@@ -1730,8 +1730,15 @@ def _told_apart(text: str, lexicon: Lexicon) -> str:
     if m is not None and _only(m.group(1), lexicon, "human") and one_person(text, lexicon):
         plan, rest = m.group(2), f"{m.group(3)}{m.group(4)}"
         things = [it for it in _names(plan, lexicon) if it.refs[0].kind == "object"]
-        if len(things) == 1 and re.search(r"\bit\b", rest, _F):
-            rest = _sub(r"\bit\b", f"the {things[0].text}", rest)  # "…, can he have it?"
+        if len(things) == 1:
+            # "…, can he have it?": the 'it' of the request's own sentence, an object; not the
+            # subject of a later remark (session 35, lead: 12r's fuzz read "…, can he have the
+            # gloves? Also, give Tom the tape or the scanner, it's up to you which." as the
+            # large box of the plan joining the choice)
+            end = re.search(r"[.!?](?:\s|$)", rest)
+            head, tail = (rest[: end.end()], rest[end.end() :]) if end else (rest, "")
+            it = r"\bit\b(?!'s|\s+(?:is|was|does|doesn't|makes)\b)"
+            rest = _sub(it, f"the {things[0].text}", head) + tail
         if (
             len(things) == len(_names(plan, lexicon))
             and _ids(plan, lexicon) <= _ids(rest, lexicon)  # else the plan may ask for them
@@ -1740,6 +1747,12 @@ def _told_apart(text: str, lexicon: Lexicon) -> str:
         ):
             return _sub(r"\b(?:he|she)\b", m.group(1), rest)
     return text
+
+
+# a verb after the subject of a clause ('both mugs need …', '… go on the shelf')
+_CLAUSE_VERB35L = re.compile(
+    r"\s+(?:need|go|should|must|are|have|want|can|could|will|would|belong|get)\b", _F
+)
 
 
 def _both_kind(text: str, lexicon: Lexicon) -> str:
@@ -1755,7 +1768,15 @@ def _both_kind(text: str, lexicon: Lexicon) -> str:
         if m is None:
             continue
         a, b = (_said(i, lexicon) for i in ids)
-        text = text[: m.start()] + f"the {a} and the {b}" + text[m.end() :]
+        comma = _rx(r",\s*$").search(text, 0, m.start())
+        if comma is not None and _CLAUSE_VERB35L.match(text, m.end()):
+            # Session 35 (lead): "We need the apple, both mugs need shifting up to the shelf"
+            # (12's frames fuzz) read the apple onto the shelf: 'both mugs' opening a clause of
+            # its own after a comma would join the list before it once named; it opens a
+            # sentence instead
+            text = text[: comma.start()] + f". The {a} and the {b}" + text[m.end() :]
+        else:
+            text = text[: m.start()] + f"the {a} and the {b}" + text[m.end() :]
         words = {w for i in ids for w in _said(i, lexicon).lower().split() if w != cat}
         alt = "|".join(map(re.escape, sorted(words)))
         if alt:
