@@ -26312,6 +26312,175 @@ def _not_first35r(text: str, lexicon: Lexicon) -> str:
     return f"{m['rest']}, not {x}{m['tail'] or '.'}"
 
 
+# blind22's kinds -----------------------------------------------------------------------------
+
+# "…, she's not fussed which, she only wants a brew."
+_ONLY_WANTS35R = re.compile(
+    r"(?P<head>\b(?:not fussed|not bothered|doesn't mind|don't mind|does not mind) which),\s*"
+    r"(?:she|he|they) (?:only|just) wants? (?P<w>(?:a|an|some) [a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_wants35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): after a phrase leaving the choice ("…, she's not fussed which"), "she
+    only wants a brew" says what for, naming nothing of the scene: taken off (a thing of the
+    scene there is a want: left)."""
+    m = _ONLY_WANTS35R.search(text) if "wants" in text.lower() else None
+    if m is None or _ids(m["w"], lexicon) or not _asks_nothing29(m["w"].split(" ", 1)[1], lexicon):
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Give Person A the apple, there is only one only, don't worry."
+_ONLY_ONE35R = re.compile(
+    r"^(?P<head>[^,.;!?]+),\s*there(?:'s| is) only (?:the )?one(?: only)?(?:\s*,\s*(?:don't "
+    r"worry|no worries|never mind))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "<one handover>, there is only one (only), don't worry": the count of the
+    one object the request names, said again: taken off when the scene holds exactly one of its
+    kind (else left, and refused)."""
+    m = _ONLY_ONE35R.match(text) if "only" in text.lower() else None
+    if m is None:
+        return text
+    done = _tasks_of(m["head"], lexicon)
+    if done is None or len(done) != 1:
+        return text
+    obj = next(iter(done))[1]
+    kind = next(o.category for o in lexicon.scene.objects if o.id == obj)
+    if sum(o.category == kind for o in lexicon.scene.objects) != 1:
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "…, but not the red one, that's the controller's and she's funny about it."
+_NOT_THEIRS35R = re.compile(
+    r"(?P<head>\bnot the [a-z]+ one),\s*(?:that's|that is|it's|it is) (?:the )?(?P<o>[a-z]+)'s"
+    r"(?: and (?:she|he|they)(?:'s| is|'re| are) (?P<w>[a-z ]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_theirs35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "…, but not the red one, that's the controller's (and she's funny about
+    it)": why that one is left out, its owner no one of the scene and the rest naming nothing,
+    taken off (an owner of the scene may be the one to get it: left)."""
+    m = _NOT_THEIRS35R.search(text) if "'s" in text else None
+    if m is None or _ids(m["o"], lexicon) or (m["w"] and _ids(m["w"], lexicon)):
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead."
+_DONT_INSTEAD35R = re.compile(
+    r"^(?:don't|do not) (?P<v>give|hand|pass) (?P<p>[a-z]+(?: [a-z])?) (?P<x>the [a-z]+"
+    r"(?: [a-z]+)?),\s*(?:(?P<why>[^,.;!?]+?),\s*)?(?:give|hand|pass) (?P<pro>him|her) "
+    r"(?P<y>the [a-z]+(?: [a-z]+)?) instead(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _dont_instead35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "Don't give P X, <why>, give him Y instead" is "Give P Y, not X" (one
+    person 'him' may be, two whole objects, the reason naming nothing of the scene)."""
+    m = _DONT_INSTEAD35R.match(text) if "instead" in text.lower() else None
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]) or (m["why"] and _ids(m["why"], lexicon)):
+        return text
+    return f"{m['v'][:1].upper()}{m['v'][1:]} {m['p']} {m['y']}, not {m['x']}{m['end'] or '.'}"
+
+
+# "Give the bottle to whoever isn't Person A, I don't know the other one's name."
+_WHOEVER_NOT35R = re.compile(
+    r"\bto whoever (?:isn't|is not) (?P<p>person [a-z]|[a-z]+)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _whoever_not35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "to whoever isn't Person A" in a scene of two people is "to" the other one
+    (with more people it is left, and refused; blind22's "…, I don't know the other one's name"
+    stays refused: a rewrite may not take off the speaker's 'I don't know', offline.py's
+    _DOUBT)."""
+    m = _WHOEVER_NOT35R.search(text) if "whoever" in text.lower() else None
+    people = lexicon.scene.humans
+    if m is None or len(people) != 2 or not _only_person(m["p"], lexicon):
+        return text
+    said = next(iter(_ids(m["p"], lexicon)))
+    other = next(h for h in people if h.id != said)
+    return f"{text[: m.start()]}to {other.name}{text[m.end() :]}"
+
+
+# "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what."
+_ANYTHING_BUT35R = re.compile(
+    r"^(?P<p>[a-z]+(?: [a-z])?) can have anything (?:but|except|other than) (?P<x>[^,.;!?]+?)"
+    r"(?:,\s*(?:i'm|i am) not (?:fussed|bothered) (?:what|which))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _anything_but35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "P can have anything but X and Y (, I'm not fussed what)" is "P can have
+    A or B", the scene's other objects (each named whole, every one of X and Y, two or more, a
+    name of the scene's objects; one left is that one)."""
+    m = _ANYTHING_BUT35R.match(text) if "anything" in text.lower() else None
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    items = [i.strip() for i in re.split(r",|\band\b", m["x"], flags=_F) if i.strip()]
+    if len(items) < 2 or not all(_only_kind(i, lexicon, "object") for i in items):
+        return text  # one thing left out is session 33's _anything_but33r
+    out = {oid for i in items for oid in _ids(i, lexicon, "object")}
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects if o.id not in out]
+    if not said or any(x is None for x in said):
+        return text
+    listed = " or ".join(x for x in said if x)
+    return f"{m['p']} can have {listed}{m['end'] or '.'}"
+
+
+# "…, actually, on the desk is better, I keep losing it."
+_KEEP_LOSING35R = re.compile(
+    r"(?P<head>\b(?:no|sorry|actually)\b.*?),\s*i keep (?:losing|misplacing|forgetting|dropping)"
+    r" (?:it|them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _keep_losing35r(text: str, _lexicon: Lexicon) -> str:
+    """Session 35 (12r): after a correction, "I keep losing it" says why the speaker changed their
+    mind: taken off (the correction is read as before)."""
+    m = _KEEP_LOSING35R.search(text) if "keep" in text.lower() else None
+    if m is None:
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Give Jess the spanner that isn't already sitting on the bench, she'll know why."
+_ISNT_ON35R = re.compile(
+    r"\bthat (?:isn't|is not) (?:already )?(?:sitting |lying |resting |left )?(?P<p>on|in) "
+    r"(?P<s>the [a-z]+(?: [a-z]+)?)(?P<why>,\s*(?:she|he|they)(?:'ll| will) know why)?",
+    _F,
+)
+
+
+def _isnt_on35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "the spanner that isn't already sitting on the bench" is "the spanner that
+    is not on the bench" (session 34's reading of it), ", she'll know why" after it a remark."""
+    m = (
+        _ISNT_ON35R.search(text)
+        if "that is" in text.lower() or "that isn't" in text.lower()
+        else None
+    )
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}that is not {m['p']} {m['s']}{text[m.end() :]}"
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -26348,6 +26517,14 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _rather_after35r,
     _likes_both35r,
     _not_first35r,
+    _only_wants35r,
+    _only_one35r,
+    _not_theirs35r,
+    _dont_instead35r,
+    _whoever_not35r,
+    _anything_but35r,
+    _keep_losing35r,
+    _isnt_on35r,
 )
 
 
