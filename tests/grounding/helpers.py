@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
 from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
+from hltl.grounding import normalise
 from hltl.grounding.lexicon import PRONOUN_SEX, name_sexes
 from hltl.grounding.offline import parse_instruction, spec_of
 from hltl.grounding.tree import Node
@@ -95,6 +97,48 @@ def assert_refused(text: str, scene: Scene = CELL, match: str | None = None) -> 
     """``text`` is refused (with a message matching ``match``)."""
     with pytest.raises(GroundingError, match=match):
         parse_instruction(text, scene)
+
+
+def assert_case(text: str, want: str | None, scene: Scene = CELL) -> None:
+    """``text`` reads as ``want`` (corpus notation), or is refused when ``want`` is None."""
+    if want is None:
+        assert_refused(text, scene)
+    else:
+        assert_reads(text, want, scene)
+
+
+Case = tuple[str, str | None, Scene]
+
+
+class PhrasingCases:
+    """The cases of a session's phrasing test file (the scaffolding each file had of its own):
+    ``test(*cases)`` is a test of (text, reading or None for a sentence that must stay refused,
+    scene) cases, bound to a ``test_…`` name in the file; ``read`` keeps every case that reads,
+    for ``refused_without``."""
+
+    def __init__(self) -> None:
+        self.read: list[tuple[str, str, Scene]] = []
+
+    def test(self, *cases: Case) -> Callable[[str, str | None, Scene], None]:
+        """A test of ``cases``, each read as its reading or refused."""
+        self.read.extend((t, w, s) for t, w, s in cases if w is not None)
+
+        @pytest.mark.parametrize(("text", "want", "scene"), list(cases))
+        def check(text: str, want: str | None, scene: Scene) -> None:
+            assert_case(text, want, scene)
+
+        return check
+
+    def refused_without(self, steps: tuple[object, ...], monkeypatch: pytest.MonkeyPatch) -> None:
+        """Every case that reads is refused with ``steps`` taken out of the rewrites
+        (normalise._STEPS19): each rule is what reads it (the "cannot fail" rule)."""
+        mine = set(steps)
+        monkeypatch.setattr(
+            normalise, "_STEPS19", tuple(s for s in normalise._STEPS19 if s not in mine)
+        )
+        assert self.read
+        for text, _want, scene in self.read:
+            assert_refused(text, scene)
 
 
 def assert_same_or_refused(text: str, want: str, scene: Scene = CELL) -> None:

@@ -41,10 +41,7 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
-        # blind5 (tuned on in session 7): a remark naming a surface ("it's cluttering the
-        # counter") could be asking for something there
-        "Put the cup on the shelf, it's cluttering the counter",
-        # blind5: a surface name used as the verb
+        # blind5 (tuned on in session 7): a surface name used as the verb
         "Shelf the bottle please",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
@@ -71,9 +68,8 @@ KNOWN_MISSES = frozenset(
         "flashlight and honestly the screws too so could you get both of those over to her",
         # blind9: 'him' and 'her' after two names without titles: the grounder knows no one's sex
         "Bob, then Alice: chips for him, bottle for her",
-        # causes11 (session 11): a remark naming a role two people share ("our new patient"); a
-        # plan naming an object the request does not ("to move the large box") may ask for it
-        "Mrs Khan is our new patient: the blue blanket for her, please",
+        # causes11 (session 11): a plan naming an object the request does not ("to move the large
+        # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",
         # blind13 (tuned on in session 15; its 'wee box' reads since session 34): 'Sorry' after
         # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
@@ -110,11 +106,10 @@ KNOWN_MISSES = frozenset(
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
         # Breathe in', 'omg bestie', 'If everyone could just wait a moment … is going to'), 'the
-        # other one' after 'can keep', 'the N things that aren't X' as a subject, 'namely', 'leave
-        # the X where it is' after a correction, 'All three of the pens, …, into the box, that's
-        # the deliverable', 'going home with P tonight', "Don't … instead, good!" (session 35:
-        # 'circling back … action getting' and gapping with a rest read)
-        "Person B can keep the bottle, and the chips are for the other one, cheers.",
+        # N things that aren't X' as a subject, 'namely', 'leave the X where it is' after a
+        # correction, 'All three of the pens, …, into the box, that's the deliverable', 'going home
+        # with P tonight', "Don't … instead, good!" (session 35: 'circling back … action getting',
+        # gapping with a rest, and 'the other one' after 'can keep' read)
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
@@ -133,7 +128,6 @@ KNOWN_MISSES = frozenset(
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Cart the grey blanket over to Mr Lee.",
         "Everything except the apple is going home with Person B tonight, folks!",
-        "Pronto, the cup to Person A, capisce?",
         # blind18 (tuned on in session 20): kinds not met yet (docs/grounding.md, "Session 20"):
         # the speaker as 'me' inside a remark, corrections said with a remark ('hold on, Mummy's
         # talking', 'Hang on, not the lemon, the salt'), passives and 'is wanting', 'she' resumed
@@ -141,28 +135,16 @@ KNOWN_MISSES = frozenset(
         # after a list, 'Each of them' / 'Something for both of them' headers, 'the pair', 'the
         # lot', 'the one pair', exclusions with 'apart from' / 'that isn't', 'Not P, mind, P',
         # pronouns across clauses ('once hes got them'), texting ('n', 'like right now'), a typo
-        # in a two-word name, 'Lilly' (a name of its own), 'with the green one', 'do the X for P'
-        "Mrs Khan is due her medication, and Mr Lee wants some water, the jug please.",
+        # in a two-word name, 'Lilly' (a name of its own), 'do the X for P'
         "Both of the blocks onto the high chair, please, before she throws them again.",
         "Give the sippy cup to Lilly.",
-        "Any chance the red book could go up on the shelf with the green one?",
         "Is it okay to do the chips for Person A first and then the bottle for Person B?",
         # blind19 (tuned on in session 21): kinds not met yet (docs/grounding.md, "Session 21"):
         # greetings and asides taken for names or corrections, wants said through another
         # ('Carol says she'd love'), passives, 'he'/'she' across clauses, fragments and run-ons,
         # choice and count words ('Either cup will do', 'big or small', 'one to Kofi and one to
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
-        "Chef, sorry, behind you... oh, it's the robot. Could you kindly give the salt to Mr "
-        "Novak? Thank you, sir.",
-        "Yeah, hang on, Dave, I'm just telling the robot something. Robot, please hand Bob the "
-        "bottle. Thanks. Sorry Dave, go on.",
-        "Right, so Person A is thirsty, she needs the bottle, and Person B has been eyeing up the"
-        " chips, he wants those.",
-        "The chips are wanted by Person A and the bottle by Person B.",
-        "so Lily's in her high chair now and she'll need her bib and the sippy cup can go to her "
-        "as well thanks",
         "Jess needs some screws, give her the tin.",
-        "chuck the blue pen in the box its cluttering my desk",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
         "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
@@ -239,8 +221,6 @@ KNOWN_MISSES = frozenset(
         "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
-        # blind28 (tuned on in session 30): refusals left at its one measurement (docs/grounding.md)
-        "the bottle is Person A's, and Perskn B gets the chips since he skipped lunch",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         # a time after the request puts it off (test_phrasing_s34's "Give Carol the apple after

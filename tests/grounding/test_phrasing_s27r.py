@@ -105,9 +105,8 @@ def test_clefts_and_passives_in_a_longer_request(text: str, want: str, scene: Sc
         ("What Lena and Marco want is the salt.", KITCHEN),
         ("The blanket is wanted by Mrs Khan.", WARD),
         ("Mr Lee's the one who wants the blanket.", WARD),
-        # a gap after the passive: 'by Bob' would read as where the crisps lie
-        ("The red mug is needed by Carol, and the crisps by Bob.", CELL),
-        ("The red mug is needed by Carol and the crisps by Bob.", CELL),
+        # (a gap after the passive, 'The red mug is needed by Carol, and the crisps by Bob.', is
+        # read since session 35 as the passive said again: test_phrasing_s35t.py, gapped passive)
     ],
 )
 def test_near_forms_of_the_want_frames_stay_refused(text: str, scene: Scene) -> None:

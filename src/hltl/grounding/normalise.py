@@ -60,6 +60,7 @@ from hltl.grounding.lexicon import (
     common_words,
     first_names,
     lex,
+    name_sexes,
     person_name,
     title_sex,
 )
@@ -14095,24 +14096,29 @@ def _repairs_to32l(word: str | None, lexicon: Lexicon) -> bool:
     return word is not None and not _names_nothing(word, lexicon)
 
 
-# a bare apology said at the end of its sentence ('…, sorry. '), not 'no, sorry' or 'sorry, I mean'
-_CLOSING_SORRY34L = re.compile(
-    r"\s*,\s*(?:(?:oh|ah|eh),? )?(?:sorry|so sorry|apologies)\s*[.!]\s*", _F
-)
+def cue_closes_sentence(after: str) -> bool:
+    """Whether the words after a correction cue ('sorry', 'no', 'my mistake', …) open with a full
+    stop or '!': the cue then closes its sentence ('Bob gets the chips, sorry. Carol needs …'),
+    an apology for or an answer to what came before, and corrects nothing after it (review of
+    session 34: ``_corrections19``'s bare apology before a sentence with a request of its own;
+    offline ``_asked_again34s`` keeps its narrower test, a comma after the cue, which this
+    excludes too: a wider one there would change readings)."""
+    return re.match(r"\s*[.!]", after) is not None
+
+
+# a bare apology ('…, sorry. '), not 'no, sorry' or 'sorry, I mean': closing its sentence when
+# cue_closes_sentence says so of what follows it
+_CLOSING_SORRY34L = re.compile(r"\s*,\s*(?:(?:oh|ah|eh),? )?(?:sorry|so sorry|apologies)", _F)
 
 
 def _names_verb34l(after: str) -> bool:
     """Whether the sentence ``after`` opens with a request of its own: a verb of the grammar's
-    tasks, or a subject and a verb of wanting or having ('Carol needs …', 'What Carol needs is
-    …')."""
+    tasks or a request's opening (``_opens_request``), or a subject and a verb after it
+    (``_VERB_NEXT19``: 'Carol needs …', 'What Carol needs is …')."""
     first = re.split(r"[.!?;]", after)[0]
     words = re.findall(r"[a-z]+", first.lower())
     return bool(words) and (
-        words[0] in VERBS
-        or any(
-            w in ("needs", "wants", "gets", "would", "could", "is", "has", "should")
-            for w in words[1:4]
-        )
+        words[0] in VERBS or _opens_request(first) or any(_VERB_NEXT19.match(w) for w in words[1:4])
     )
 
 
@@ -14140,7 +14146,9 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
             # "Excuse me, sorry, I'm covering today", "sorry to bother": an apology for the
             # interruption, not a correction of what was said before it
             return text
-        if _CLOSING_SORRY34L.fullmatch(m.group(0)) and _names_verb34l(after):
+        sorry = _CLOSING_SORRY34L.match(m.group(0))
+        closes = sorry is not None and cue_closes_sentence(m.group(0)[sorry.end() :])
+        if closes and _names_verb34l(after):
             # session 34 (lead): "Bob gets the chips, sorry. What Carol needs is the bottle.": a
             # bare apology closing its sentence, and a sentence after it that asks for something
             # by its own verb, is an apology, as the grammar reads "…, sorry. Carol needs the
@@ -22342,6 +22350,355 @@ def _reason_for_change34t(text: str, lexicon: Lexicon) -> str:
     return before + "."
 
 
+# -- session 35 (engineer 12t): blind19, blind23, blind18, blind17 and causes15's kinds --------
+
+
+def _person_alt35t(lexicon: Lexicon) -> str:
+    """A pattern of every name or alias that names one person of the scene, longest first."""
+    names = {n for h in lexicon.scene.humans for n in (h.name, *h.aliases)}
+    alone = [n for n in names if _only_person(n, lexicon)]
+    return "|".join(re.escape(n) for n in sorted(alone, key=len, reverse=True)) or r"(?!)"
+
+
+# words for kin of one sex, in a person's names ('Grandad', 'big sister'): like a first name of
+# one sex, they only rule a he / she out, never resolve one
+_KIN_SEX35T = {
+    **dict.fromkeys(
+        (
+            "grandad",
+            "granddad",
+            "grandpa",
+            "grandfather",
+            "dad",
+            "daddy",
+            "father",
+            "uncle",
+            "brother",
+            "son",
+            "husband",
+            "boy",
+            "man",
+            "gentleman",
+            "grandson",
+            "nephew",
+        ),
+        "m",
+    ),
+    **dict.fromkeys(
+        (
+            "grandma",
+            "granny",
+            "gran",
+            "nan",
+            "nana",
+            "nanna",
+            "grandmother",
+            "mum",
+            "mummy",
+            "mom",
+            "mommy",
+            "mother",
+            "aunt",
+            "auntie",
+            "sister",
+            "daughter",
+            "wife",
+            "girl",
+            "woman",
+            "lady",
+            "granddaughter",
+            "niece",
+        ),
+        "f",
+    ),
+}
+
+
+def _may_be35t(pid: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether he/she ``pronoun`` may be person ``pid``: neither a title, nor a first name of one
+    sex (data/first_names_sex.txt), nor a word for kin of one sex in its names says otherwise
+    (used here only to rule a reading out)."""
+    sex = PRONOUN_SEX[pronoun.lower()]
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    names = [n.lower().split() for n in (human.name, *human.aliases)]
+    firsts = {n[0] for n in names if n[0].rstrip(".") not in TITLES}
+    said = {name_sexes().get(n) for n in firsts} | {_KIN_SEX35T.get(w) for n in names for w in n}
+    return title_sex(pid, lexicon) in (None, sex) and said - {None} <= {sex}
+
+
+_STATE35T = r"(?:'s|\s+is|\s+was|'s been|\s+has been)"
+
+
+def _state_and35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a person's state joined by 'and' (no comma) to a clause whose subject is
+    'she' / 'he' ("so Lily's in her high chair now and she'll need her bib …"): the 'and' is the
+    comma the same run-on has ("Lily's in her high chair now, she'll need her bib"), read as that
+    one is — only when the state is said of one person, names no object or other person, carries
+    no negation or time, and the pronoun may be that person."""
+    people = _person_alt35t(lexicon)
+    m = _rx(
+        rf"(?:^|(?<=[.!?;,])\s+)(?:(?:so|well|right|okay|ok),?\s+)*(?P<p>{people})"
+        rf"(?P<state>{_STATE35T}\s+[a-z' ]+?) and (?P<pro>she|he)"
+        r"(?='s\b|'ll\b|'d\b|\s+(?:is|will|would|needs|wants|has|could|can)\b)"
+    ).search(text)
+    if m is None or not _may_be35t(next(iter(_ids(m["p"], lexicon, "human"))), m["pro"], lexicon):
+        return text
+    state = m["state"]
+    if (
+        _ids(state, lexicon, "object")
+        or _ids(state, lexicon, "human")
+        or _rx(
+            r"\b(?:not|n't|no|never|nobody|nothing|and|then|tonight|tomorrow|later|soon)\b"
+        ).search(state.replace("n't", " n't"))
+        or _opens_request(state)
+    ):
+        return text
+    cut = m.start("pro") - len(" and ")
+    return f"{text[:cut]}, {text[m.start('pro') :]}"
+
+
+def _subject_pronoun35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): after another person has been named, a clause of one person then a
+    comma and 'he' / 'she' opening the next clause, a want or request (", and Person B has been
+    eyeing up the chips, he wants those"), or 'since' / 'because' and 'he' / 'she' opening a
+    reason (", and Person B gets the chips since he skipped lunch"): the pronoun goes on with
+    that clause's subject, so it is that person (said by name; a remark after a comma, '…, he
+    told me before', is left to the rules for remarks) — only when that clause names no other
+    person and no other he/she/him/her,
+    the pronoun may be that person (title, first name), and no person named before is one the
+    pronoun fits by title when that person's does not say (then it is refused as before)."""
+    # a name as the scene has it, or one or two words the lexer takes for one person (a typo)
+    people = rf"{_person_alt35t(lexicon)}|[a-z]+ [a-z]\b|[a-z]+"
+    pattern = _rx(
+        rf"(?:,\s*and\s+|;\s*|[.!?]\s+)(?:so\s+)?(?P<p>{people})"
+        r"(?P<clause>(?:'s|\s)[^,.;!?]+?)(?P<link>,\s+|\s+(?:since|because|cos)\s+)"
+        r"(?P<pro>she|he)(?=(?:'s|'ll|'d)\b|\s+[a-z])"
+        r"(?P<then>[^,.;!?]*)"
+    )
+    for m in pattern.finditer(text):
+        before = text[: m.start()]
+        pid = next(iter(_ids(m["p"], lexicon, "human"))) if _only_person(m["p"], lexicon) else ""
+        sex = PRONOUN_SEX[m["pro"].lower()]
+        earlier = _ids(before, lexicon, "human") - {pid}
+        if (
+            not pid
+            or not earlier
+            or (m["link"].strip() == "," and not _rx(_TASK_WORDS).search(m["then"]))
+            or _ids(m["clause"], lexicon, "human")
+            or _rx(r"\b(?:he|him|his|she|her|hers|they|them)\b").search(m["clause"])
+            or not _may_be35t(pid, m["pro"], lexicon)
+            or (
+                title_sex(pid, lexicon) != sex
+                and any(title_sex(q, lexicon) == sex for q in earlier)
+            )
+        ):
+            continue
+        return f"{text[: m.start('pro')]}{m['p']}{text[m.end('pro') :]}"
+    return text
+
+
+def _gapped_passive35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a passive of wanting, then 'and' and a second object with 'by' and a
+    second person ('The chips are wanted by Person A and the bottle by Person B'): the second
+    clause is the first with its verb left out (a gap), so its 'by' is the first's, whom it is
+    wanted by, not where the object is — 'Person A wants the chips and Person B wants the
+    bottle'. Only with two different persons, each one of the scene's, objects alone before
+    each 'by', and nothing after the second person; without the passive before it ('Person A
+    wants the chips, and the bottle by Person B') it stays refused with both readings."""
+    people = _person_alt35t(lexicon)
+    det = r"(?:the|a|an|that|this|these|those) "
+    m = _rx(
+        rf"(?:^|(?<=[.!?;])\s+)(?P<o1>{det}[\w '-]+?)(?:'s| is| are) (?:wanted|needed|asked for|"
+        rf"requested) by (?P<p1>{people}),? and (?P<o2>{det}[\w '-]+?) by (?P<p2>{people})"
+        r"(?P<end>\s*[.!]?)$"
+    ).search(text)
+    if m is None:
+        return text
+    p1, p2 = (_ids(m[k], lexicon, "human") for k in ("p1", "p2"))
+    if p1 == p2 or not all(_only_kind(m[k], lexicon, "object") for k in ("o1", "o2")):
+        return text
+    return f"{text[: m.start()]}{m['p1']} wants {m['o1']} and {m['p2']} wants {m['o2']}{m['end']}"
+
+
+def _in_the_way35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a closing reason that says only where the one object put away is now
+    ('chuck the blue pen in the box its cluttering my desk', "Put the cup on the shelf, it's
+    cluttering the counter"): 'it' with a verb of being in the way from a closed list and the
+    place it is cluttering, a surface of the scene other than where it goes (or a place the
+    scene does not name) — taken off when what is before it reads alone as placing that one
+    object. After no comma, 'its' there is "it's" (texting)."""
+    m = _rx(
+        r"(?:,\s*|\s+)(?:it's|its|it is) (?:cluttering(?: up)?|in the way (?:on|of)|blocking|"
+        r"taking up (?:space|room) on|all over) (?:the|my|our|your) (?P<s>[a-z][\w ]*?)\s*[.!]?$"
+    ).search(text)
+    if m is None or _ids(m["s"], lexicon, "object") or _ids(m["s"], lexicon, "human"):
+        return text
+    before = text[: m.start()]
+    said = _tasks_of(before, lexicon)
+    if not said or len(said) != 1:
+        return text
+    ((kind, _, target),) = said
+    if kind != "place" or target in _ids(m["s"], lexicon, "surface"):
+        return text
+    return before + "."
+
+
+def _aside_else35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): words said to someone other than the robot, from closed lists, taken
+    off: a kitchen call taken back on seeing the robot ("Chef, sorry, behind you... oh, it's the
+    robot. Could you …": the call is to the chef, the request after it to the robot), and a pause
+    to tell the robot something with its close ("Yeah, hang on, Dave, I'm just telling the robot
+    something. Robot, please hand Bob the bottle. Thanks. Sorry Dave, go on."), the close only
+    with the name the pause gave, which names no one and nothing of the scene. Neither may name
+    an object; a request in them is left, and refused as before."""
+    out = text
+    m = _rx(
+        r"^(?:(?P<voc>[a-z][\w ]*?),\s*)?(?:sorry,?\s*)?(?:behind(?: you)?|coming through|mind "
+        r"your backs?)(?:\.\.\.|[.!,])\s*(?P<oh>oh,?\s*it's (?:just |only )?the robot[.!]\s+)"
+    ).match(out)
+    if m is not None and not _ids(m[0], lexicon, "object") and len(_ids(m[0], lexicon)) <= 1:
+        out = m["oh"][0].upper() + out[m.start("oh") + 1 :]
+    m = _rx(
+        r"^(?:(?:yeah|yes|ok|okay|right),?\s*)?(?:hang on|hold on|one sec(?:ond)?|just a "
+        r"sec(?:ond)?),?\s*(?P<voc>[a-z]+),?\s*i'm (?:just )?(?:telling|asking) the robot "
+        r"(?:something|a thing)[.!]\s+"
+    ).match(out)
+    if m is None or not _names_nothing(m["voc"], lexicon) or m["voc"].lower() in WORDS:
+        return out
+    rest = out[m.end() :]
+    close = _rx(
+        rf"(?<=[.!?])\s+sorry,?\s*{re.escape(m['voc'])},?\s*(?:go on|carry on|you were "
+        r"saying)[.!]?$"
+    ).search(rest)
+    if close is not None:
+        rest = rest[: close.start()]
+    return rest
+
+
+def _introduced35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a person introduced by a name the scene gives that person ('Mrs Khan is
+    our new patient: the blue blanket for her, please'): it says who is who and asks nothing,
+    so it is read as the person being there ('Mrs Khan is here: …', which the grammar reads) —
+    only when the role is one of that person's own names (shared or not: 'patient' is Mr Lee's
+    too) and the person is one of the scene's; 'Mrs Khan is our new nurse' (Ruth's) is left."""
+    people = _person_alt35t(lexicon)
+    m = _rx(
+        rf"^(?P<p>{people}) is (?:our|the|my|your|a) (?:new |latest |other )?(?P<r>[a-z][\w ]*?)"
+        r"(?P<sep>\s*[:;,.]\s+)"
+    ).match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    (pid,) = _ids(m["p"], lexicon, "human")
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    if m["r"].lower() not in {a.lower() for a in human.aliases}:
+        return text
+    return f"{m['p']} is here{m['sep']}{text[m.end() :]}"
+
+
+def _with_one_there35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): 'with the Y' after the surface an object goes to, where Y is one other
+    object of the scene that starts on that surface ('Any chance the red book could go up on the
+    shelf with the green one?' when the green book lies on the shelf): it says where on the
+    surface, as 'next to the green one' does, and asks nothing of Y (already there) — taken off.
+    'the green one' is the moved object's kind; a Y elsewhere, or not one object, stays refused
+    (it may ask to move Y too)."""
+    m = _rx(
+        r"\b(?:on|onto|in|into) (?:the )?(?P<s>[a-z][\w ]*?) with (?P<y>the [a-z]+(?: [a-z]+)?)"
+        r"(?=\s*[,.!?]|$)"
+    ).search(text)
+    if m is None or not _only(m["s"], lexicon, "surface"):
+        return text
+    moved = _ids(text[: m.start()], lexicon, "object")
+    if len(moved) != 1:
+        return text
+    (oid,) = moved
+    y = m["y"]
+    if y.lower().endswith(" one"):
+        kind = next(o.category for o in lexicon.scene.objects if o.id == oid)
+        y = f"{y[:-4]} {kind}"
+    if not _only(y, lexicon, "object"):
+        return text
+    (yid,) = _ids(y, lexicon, "object")
+    (sid,) = _ids(m["s"], lexicon, "surface")
+    if yid == oid or starting_on({yid}, sid, lexicon) != [yid]:
+        return text
+    return text[: m.end("s")] + text[m.end("y") :]
+
+
+# what a drink is said as, and the kinds of the scene's objects that hold one
+_DRINKS35T = r"(?:water|a drink|drink|juice|milk|squash|tea|coffee|a brew|a cuppa)"
+_HOLDERS35T = frozenset({"jug", "bottle", "cup", "mug", "beaker", "glass", "flask"})
+
+
+def _drink_in35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): a want of a drink, then the one object of the scene that holds it said
+    after a comma ('Mr Lee wants some water, the jug please'): the object is what is wanted —
+    only for a drink from a closed list and an object whose kind holds drink (a jug, bottle,
+    cup, mug, beaker, glass, flask); 'wants some water, the blanket please' and 'Priya wants a
+    coffee' stay refused."""
+    m = _rx(
+        rf"\b(?P<want>wants|needs|would like|'d like|could do with) (?:some )?{_DRINKS35T}"
+        r"(?:,\s*|\s*[-—:]\s*)(?P<x>the [a-z]+(?: (?!please\b)[a-z]+)?)"
+        r"(?P<tail>(?:,?\s*please)?\s*[.!]?)$"
+    ).search(text)
+    if m is None or not _only(m["x"], lexicon, "object"):
+        return text
+    (oid,) = _ids(m["x"], lexicon, "object")
+    if next(o.category for o in lexicon.scene.objects if o.id == oid) not in _HOLDERS35T:
+        return text
+    return f"{text[: m.start()]}{m['want']} {m['x']}{m['tail']}"
+
+
+# a closing question of a speaker checking they were understood, from a closed list
+_UNDERSTOOD35T = (
+    r",?\s*(?:capisce|capiche|comprende|comprendez|savvy|understood|got that|you got that|"
+    r"get it|follow me)\s*\?\s*$"
+)
+
+
+def _understood35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): '…, capisce?' / ', savvy?' / ', understood?' closing a request ('Pronto,
+    the cup to Person A, capisce?'): a check that the request was understood, asking nothing —
+    taken off when what is before it reads alone."""
+    m = _rx(_UNDERSTOOD35T).search(text)
+    if m is None or m.start() == 0:
+        return text
+    before = text[: m.start()].rstrip(" ,")
+    return before + "." if _tasks_of(before, lexicon) else text
+
+
+def _can_keep35t(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12t): 'P can keep the X' where the scene has X lying about (no one holds
+    anything in a scene) is 'P can have the X': P is to end up with it ('Person B can keep the
+    bottle, and the chips are for the other one') — only with one person of the scene, objects
+    alone after 'keep', and the clause ending there."""
+    people = _person_alt35t(lexicon)
+    return _sub(
+        rf"\b(?P<p>{people}) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)"
+        r"(?=\s*(?:[,.!;]|$))",
+        lambda m: (
+            f"{m['p']} can have {m['x']}"
+            if _only_person(m["p"], lexicon) and _only_kind(m["x"], lexicon, "object")
+            else m[0]
+        ),
+        text,
+    )
+
+
+_STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _state_and35t,
+    _subject_pronoun35t,
+    _gapped_passive35t,
+    _in_the_way35t,
+    _aside_else35t,
+    _introduced35t,
+    _with_one_there35t,
+    _drink_in35t,
+    _understood35t,
+    _can_keep35t,
+)
+
+
 _STEPS34T: tuple[Callable[[str, Lexicon], str], ...] = (
     _counted_those34t,
     _objects_said34t,
@@ -26454,6 +26811,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
     *_STEPS34T,
+    # session 35 (12t): blind19, blind23, blind18, blind17 and causes15's kinds
+    *_STEPS35T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 35 (12r): blind33's choices, counts, negation, exclusions and corrections

@@ -992,7 +992,9 @@ def _asked_again34s(text: str, node: Node, scene: Scene, lexicon: Lexicon) -> No
             for k in range(1, len(items) - 1)
             if items[k - 1].kind == "punct"
             and items[k - 1].lemma == ","
-            # ', no, …' ('no bottle for him' is no correction; ', sorry. …' closes a sentence)
+            # ', no, …' ('no bottle for him' is no correction; ', sorry. …' closes a sentence,
+            # normalise.cue_closes_sentence: only a comma after the cue goes on to a correction
+            # here, so ', no; …' and ', no: …' are left as they were)
             and items[k + 1].kind == "punct"
             and items[k + 1].lemma == ","
             and (_is(items[k], "correct") or items[k].text.lower() == "no")
