@@ -1598,7 +1598,10 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         if _named(rest, scene, "object") & set(ids) or _words(rest) & narrows:
             continue
         n = len(ids)
-        for agree in (True, False):  # (rare in the corpus: both said)
+        # (a list after a colon says what is meant: "all the kit except both boxes: that's the
+        # scanner, the tape and the gloves" is those three, as a careful person reads it, so no
+        # other count is said there)
+        for agree in (True,) if ":" in text[m.end() :] else (True, False):
             forms = (*ENTRY_COUNTS, "both {cs}") if (n == 2) is agree else ENTRY_COUNTS
             count = n if agree else _miscount(n, rng)
             form = _of_kind_said(count, forms, rng).format(n=_counted(count, rng), cs=cs)

@@ -1696,6 +1696,12 @@ def test_a_one_of_a_kind_object_is_said_as_the_one_or_as_several(seed: int) -> N
         ),
         ("Give Bob one of the mugs.", "mug_red>B | mug_blue>B", set()),
         ("Give Bob the mugs but not the red mug.", "mug_blue>B", set()),
+        # a list after a colon says what is meant: the count only, no miscount
+        (
+            "Give Bob everything but the mugs: the cup, the bottle, the crisps and the apple.",
+            "cup>B & bottle>B & chips>B & apple>B",
+            {"entry", "one", "several"},
+        ),
         # nor where the rest may narrow the kind ("both mugs … but the blue one" is one of two)
         ("Put the mugs on the shelf apart from the blue one.", "mug_red@shelf", set()),
     ],

@@ -79,9 +79,6 @@ KNOWN_MISSES = frozenset(
         # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
         # 'chef habit' opens with no speaker or hearer
         "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
-        # blind13: a remark with a negation about the object ('hasn't had his pills') and 'them'
-        # for the pills
-        "Mr Lee hasn't had his pills, take them over, then the jug after",
         # blind13 / causes15: two people said in a remark, then 'him'/'her': the grounder knows
         # no one's sex from a first name, and a remark of two people is not taken off
         "Ruth and Mr Lee are both here now, pass him the magazine",
@@ -112,18 +109,14 @@ KNOWN_MISSES = frozenset(
         "Both cups need to go in the sink before lunch",
         # blind16 (tuned on in session 18) and causes18: kinds not met yet (docs/grounding.md,
         # "Session 18"): idioms no kind lists ('Prithee … unto … Anon', 'Play on', 'Namaste.
-        # Breathe in', 'omg bestie', 'circling back … action getting', 'If everyone could just
-        # wait a moment … is going to'), 'the other one' after 'can keep', 'the N things that
-        # aren't X' as a subject, 'namely', 'leave the X where it is' after a correction, gapping
-        # with a rest ('and then you can have a rest'), 'All three of the pens, …, into the box,
-        # that's the deliverable', 'going home with P tonight', "Don't … instead, good!"
+        # Breathe in', 'omg bestie', 'If everyone could just wait a moment … is going to'), 'the
+        # other one' after 'can keep', 'the N things that aren't X' as a subject, 'namely', 'leave
+        # the X where it is' after a correction, 'All three of the pens, …, into the box, that's
+        # the deliverable', 'going home with P tonight', "Don't … instead, good!" (session 35:
+        # 'circling back … action getting' and gapping with a rest read)
         "Person B can keep the bottle, and the chips are for the other one, cheers.",
-        "Quick one, just circling back: can we action getting the stapler over to Priya? "
-        "Appreciate it, thanks team.",
         "If everyone could just wait a moment, our robot here is going to place the globe on the "
         "desk. Lovely, thank you all.",
-        "Person A is waiting on the chips and Person B on the bottle so get those sorted and then "
-        "you can have a rest",
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
         # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
@@ -213,18 +206,12 @@ KNOWN_MISSES = frozenset(
         "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        "Give Person A the apple, there is only one only, don't worry.",
         'Both plates onto the counter, Marco wants to plate up the goulash.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
-        "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
-        "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what.",
-        "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
-        'Put the stapler in the box, actually, on the desk is better, I keep losing it.',
         "Salt on the rack, no, on the counter, the rack's only for plates.",
         'knife on the worktop please, the guests want it by their bread',
         "Give Alicw the bottle, she's been shouting at me and I can't hear a word.",
@@ -272,39 +259,7 @@ KNOWN_MISSES = frozenset(
         'A single bottle will do for Person A after her orienteering.',
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
-        # blind33 (tuned on in session 35): refusals left at its one measurement (docs/grounding.md)
-        "Oh go on then, the bottle to Person B first, and after it the chips, she's earned them at "
-        "cribbage.",
-        "Person B has her heart set on the apple; Person A just wants the bottle after a day's "
-        "angling.",
-        "Chips are needed over at Person A's end, and once they're there, Person B is wanting the "
-        "apple.",
-        "Person B fancies the chips, if you'd sort that.",
-        "Tom needs the packing tape, and I'd like the scanner sat on the belt, ta.",
-        "The bottle's headed for Person B; the cup, for Person A, who's doing the sudoku.",
-        'It was Person B who asked after the chips, so carry them across to him when you can.',
-        'The gloves go to Tom, and the scanner can go along with them.',
-        "The teddy's fallen on the floor, put it on the play mat.",
-        "Apple to Carol, she's off to the crazy golf. Then up on the shelf with the red mug.",
-        'The bottle. For Person A. She drives the early train. Ta.',
-        'Small box onto the pallet and after that the medium box onto the belt and then the '
-        'warehouseman can lock up.',
-        "Torch to Jess, she's under the bench, then the small spanner to Kofi.",
-        'person a wants chips and person b could do with the cup after her crochet',
-        'first the bottle for person b and after it the apple for person a',
-        "the apple's meant for person b so take it over",
-        'person a is after her bottle can you get it to her',
-        'wipes to grandad, lily needs changing',
-        "The red mug's in the way, set it down on the cointer for me.",
-        "Person B's having the apploe and the cup with her draughts game.",
-        'Kick off with the chuips for Person A, and follow up with the bottle for Person B.',
-        "Lily won't settle without her tedsy, let her have it.",
-        'Would the shelf be a better home for the crisps? Pop them up there, ta.',
-        "Person B's off to the ceilidh; is it alright to send her off with the cup and the chips?",
-        'How about letting Person A have the chips, what do you say?',
-        "Emma's just a visitor, but can she have the banana?",
-        "Would you pop the red pen into the box, Priya's having a tidy-up?",
-        'Can Jess take the hammer and the screws?',
+        # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

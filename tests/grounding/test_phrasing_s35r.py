@@ -467,6 +467,76 @@ def test_blind25_to_31(text: str, want: str | None, scene: Scene) -> None:
     _assert_case(text, want, scene)
 
 
+# -- blind22's choices, negation and corrections ---------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    _cases(
+        (
+            "Give Carol either of the mugs, she's not fussed which, she only wants a brew.",
+            "mug_red>C | mug_blue>C",
+            CELL,
+        ),
+        # what she wants is a thing of the scene
+        (
+            "Give Carol either of the mugs, she's not fussed which, she only wants a mug.",
+            None,
+            CELL,
+        ),
+        ("Give Person A the apple, there is only one only, don't worry.", "apple>A", F41),
+        ("Give Alice the red mug, there is only one.", None, CELL),  # two mugs
+        (
+            "Give Alice a mug, but not the red one, that's the controller's and they're funny "
+            "about it.",
+            "mug_blue>A",
+            CELL,
+        ),
+        # 'he' could be someone of the scene (offline.py's guard); an owner of the scene
+        (
+            "Give Alice a mug, but not the red one, that's the controller's and he's funny about "
+            "it.",
+            None,
+            CELL,
+        ),
+        ("Give Bob a mug, but not the red one, that's Carol's.", None, CELL),
+        (
+            "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead.",
+            "bottle>B",
+            FIG1,
+        ),
+        ("Don't give Bob the crisps, give her the bottle instead.", None, FIG1),
+        ("Don't give Bob the crisps, Alice wants them, give him the bottle instead.", None, FIG1),
+        ("Give the bottle to whoever isn't Person A.", "bottle>B", DUO),
+        ("Give the cup to whoever isn't Alice.", None, CELL),  # three people
+        ("Give the bottle to whoever isn't Person C.", None, DUO),
+        (
+            "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed "
+            "what.",
+            "gloves>B",
+            DEPOT,
+        ),
+        ("Tom can have anything but the tape and the boxes.", "scanner>B | gloves>B", DEPOT),
+        ("Tom can have anything but the tape and the hammer.", None, DEPOT),  # no hammer
+        # nothing left
+        ("Tom can have anything but the boxes, the gloves, the tape and the scanner.", None, DEPOT),
+        (
+            "Put the stapler in the box, actually, on the desk is better, I keep losing it.",
+            "stapler@desk",
+            OFFICE,
+        ),
+        (
+            "Give Jess the spanner that isn't already sitting on the bench, she'll know why.",
+            "spanner_small>B",
+            WORKSHOP,
+        ),
+        ("Give Jess the spanner that isn't already sitting on the floor.", None, WORKSHOP),
+    ),
+)
+def test_blind22(text: str, want: str | None, scene: Scene) -> None:
+    _assert_case(text, want, scene)
+
+
 def test_a_label_the_scene_has_is_the_grammars_correction() -> None:
     """With a Person B in the scene, "… to Person B, or rather Person A" is the grammar's own
     correction (read before these steps, as it is now)."""

@@ -12006,6 +12006,724 @@ _STEPS34: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 35 (engineer 12): blind33's kinds (politeness, wants, pronouns and ellipsis, splits,
+# lower case, typos, questions) and the clefts family's; docs/grounding.md, "Session 35 (engineer
+# 12)" -----------------------------------------------------------------------------------------
+
+# "… and after it the apple for person a": 'after it' before the next object is 'after that' (the
+# task before it); before a determiner only, so 'put the cup after it' is no sequence
+_AFTER_IT35 = re.compile(rf"\b(?P<and>,?\s*and) after it,?(?= {_DET32}\b)", _F)
+
+
+def _after_it35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'and after it the X' is 'and after that the X' when what follows up to a mark
+    or 'for'/'to' is objects of the scene only and something is named before it."""
+    if "after it" not in text.lower():
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        what = re.split(r"[,.;!?]|\s+(?:and|for|to|on|onto|in|into)\s+", text[m.end() :])[0]
+        if not _things31(what, lexicon) or not _names(text[: m.start()], lexicon):
+            return m[0]
+        return f"{m['and']} after that"
+
+    return _AFTER_IT35.sub(plain, text)
+
+
+# a want said by a negated idiom: a closed list (docs/grounding.md, "Session 35 (engineer 12)"),
+# with the subject's own pronoun: "Lily won't settle without her teddy" (she wants it: the negation
+# is of settling, not of the handover)
+_WANT_IDIOMS35 = re.compile(
+    r"(?P<p>\b[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:won't|will not|can't|cannot|wouldn't) "
+    r"(?:settle|sleep|go down|nod off|calm down|stop crying|cope)(?: down)? without "
+    r"(?P<pron>her|his|their) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?|[a-z]+)(?=\s*(?:[,.;!?]|$)|\s+(?:and|but|so|after)\b)",
+    _F,
+)
+
+
+def _want_idioms35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the idiom above is 'P wants X' when P is one person whom the pronoun may be
+    and X (said with or without its determiner: 'without her teddy' is 'the teddy') objects of the
+    scene only."""
+    if " without " not in text:
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        pron = m["pron"]
+        what = m["x"] if re.match(rf"{_DET32}\b", m["x"], _F) else f"the {m['x']}"
+        if not _only_person(m["p"], lexicon) or not _things31(what, lexicon):
+            return m[0]
+        if pron.lower() != "their" and not _fits(next(iter(_ids(m["p"], lexicon))), pron, lexicon):
+            return m[0]
+        return f"{m['p']} wants {what}"
+
+    return _WANT_IDIOMS35.sub(plain, text)
+
+
+# "… wants the bottle after a day's angling", "… could do with the cup after her crochet": what
+# made the person want it (a pastime of a closed list, said as hers or as 'a day's'; "after the
+# meeting" says when, and is not taken off), closing the instruction after a want of objects only
+_AFTER_PASTIME35 = re.compile(
+    r"\b(?P<want>(?:wants|needs|fancies|could use|could do with|would love|would like|is after|"
+    rf"'s after) (?P<x>{_DET32}(?: (?!and\b|but\b|so\b)[a-z]+)+?)) after (?:(?P<pron>her|his|"
+    r"their)|a (?:long |hard |busy )?day's) (?P<doing>angling|fishing|knitting|crochet|sewing|"
+    r"quilting|swimming|running|cycling|climbing|rowing|sailing|skating|skiing|surfing|riding|"
+    r"dancing|singing|walking|jogging|hiking|boxing|bowling|baking|painting|gardening|"
+    r"gymnastics|aerobics|pilates|yoga|karate|judo|chess|bingo|cribbage|darts|golf|tennis|"
+    r"football|netball|cricket|rugby|hockey|squash|badminton|choir|ballet|embroidery|needlework|"
+    r"patchwork|pottery|origami)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _after_pastime35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'after <pastime>' above taken off when X is objects only, the doing names
+    nothing and asks nothing, and a pronoun there may be the want's subject (the person just
+    before the want)."""
+    if " after " not in text:
+        return text
+    m = _AFTER_PASTIME35.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    if not _names_nothing(m["doing"], lexicon) or not _asks_nothing29(m["doing"], lexicon):
+        return text
+    if m["pron"] and m["pron"].lower() != "their":
+        before = re.split(r"[,.;:!?]|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
+        people = _ids(before, lexicon, "human")
+        if len(people) != 1 or not _fits(next(iter(people)), m["pron"], lexicon):
+            return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
+# "Chips are needed over at Person A's end, and once they're there, …": the want said of the object,
+# with the person's end of the room (a closed list of such places), and the next task when the
+# objects have got there (that end: as session 11's 'there', the one place named before it)
+_NEEDED_AT35 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)(?P<x>(?:the |those |these )?[a-z][a-z ]*?) (?:is|are) (?:needed|wanted) "
+    r"(?:over )?(?:at|by|on) (?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?)'s (?:end|side|place|desk|"
+    r"table|spot|corner|station|bench)\b",
+    _F,
+)
+_ONCE_THERE35 = re.compile(
+    r",?\s*and once (?:they're|they are|it's|it is|that's|that is) there,\s*", _F
+)
+
+
+def _needed_at35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the want above is 'P wants X' when X (its determiner added if not said) is
+    objects of the scene only and P one person; ', and once they're there, ' right after it is ',
+    and after that, '."""
+    if "'s " not in text or ("needed" not in text and "wanted" not in text):
+        return text
+    m = _NEEDED_AT35.search(text)
+    if m is None:
+        return text
+    what = m["x"] if re.match(rf"{_DET32}\b", m["x"], _F) else f"the {m['x']}"
+    if not _things31(what, lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    then = _ONCE_THERE35.match(text, m.end())
+    said = f"{m['p']} wants {what[0].lower()}{what[1:]}"
+    if then is None:
+        return f"{text[: m.start('x')]}{said}{text[m.end() :]}"
+    return f"{text[: m.start('x')]}{said}, and after that, {text[then.end() :]}"
+
+
+# "Person B fancies the chips, if you'd sort that.": the hearer asked to see to it, closing (a
+# closed list: said of the request itself, no condition of the world)
+_IF_SORT35 = re.compile(
+    r",\s*if you(?:'d| would| could| can| will)(?: kindly| please)? (?:sort|see to|handle|arrange|"
+    r"do|organise|organize|deal with) (?:that|it|this)(?: out)?(?: for (?:me|us))?"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _if_sort35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the closing part above taken off when what is left names a person or a
+    surface (something to see to)."""
+    if " if " not in text:
+        return text
+    m = _IF_SORT35.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if not _ids(rest, lexicon, "human") | _ids(rest, lexicon, "surface"):
+        return text
+    return rest + m["end"].strip()
+
+
+# "I'd like the scanner sat on the belt": where the speaker wants the object, said with how it is
+# to stand there (a closed list of such participles)
+_SAT_ON35 = re.compile(
+    r"\b(?P<want>(?:i|we)(?:'d| would) (?:like|love|prefer|want)) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?) (?:sat|sitting|stood|standing|placed|put|parked|set) "
+    r"(?P<on>on|in|onto|into|on top of) (?=the\b)",
+    _F,
+)
+
+
+def _sat_on35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the participle above taken off ('I'd like the scanner on the belt') when X is
+    objects of the scene only and what follows up to a mark is one surface."""
+    if "'d " not in text and " would " not in text:
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        where = re.split(r"[,.;!?]|\s+(?:and|but|so)\s+", text[m.end() :], maxsplit=1)[0]
+        if not _things31(m["x"], lexicon) or not _surface_only(where, lexicon):
+            return m[0]
+        return f"{m['want']} {m['x']} {m['on']} "
+
+    return _SAT_ON35.sub(plain, text)
+
+
+# "The bottle's headed for Person B": where the object is bound, said of it (a closed list)
+_HEADED_FOR35 = re.compile(
+    rf"(?P<x>\b{_DET32} [a-z][a-z ]*?)(?P<be>'s|'re| is| are) (?:headed|heading|bound|destined|"
+    r"earmarked) (?:for|to) (?=[A-Za-z])",
+    _F,
+)
+
+
+def _headed_for35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'X is headed for P' is 'X is for P' when X is objects of the scene only and
+    what follows up to a mark is one person."""
+    if not re.search(r"head|bound|destined|earmarked", text):
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        who = re.split(r"[,.;!?]|\s+(?:and|but|so|who)\s+", text[m.end() :], maxsplit=1)[0]
+        if not _things31(m["x"], lexicon) or not _only_person(who, lexicon):
+            return m[0]
+        return f"{m['x']}{m['be']} for "
+
+    return _HEADED_FOR35.sub(plain, text)
+
+
+# "It was Person B who asked after the chips": the cleft of _cleft_who33 with verbs of asking for
+# or being after something; "It's Bob that the apple is for": the person put first, what is for
+# them after 'that'
+_CLEFT_AFTER35 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)it(?:'s| is| was) (?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?:who|that)"
+    r"(?: asked after| was after| is after|'s after| has asked after| had asked for)"
+    rf"(?= {_DET32}\b)",
+    _F,
+)
+_CLEFT_FOR35 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)it(?:'s| is| was) (?P<who>[A-Za-z]+(?: [A-Za-z]+)?) (?:that|who) "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?) (?P<be>is|are|was|were) (?:for|meant for|intended for)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _clefts35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the clefts above said plainly ('Person B asked for the chips', 'The apple is
+    for Bob'), when the focus is one person of the scene and what it is after (up to a mark) or
+    what is for them objects of the scene only."""
+    if "it" not in text.lower():
+        return text
+
+    def asked(m: re.Match[str]) -> str:
+        what = re.split(r"[,.;!?]|\s+(?:and|but|so)\s+", text[m.end() :], maxsplit=1)[0]
+        if not _only_person(m["who"], lexicon) or not _things31(what, lexicon):
+            return m[0]
+        lead = m[0][: m[0].lower().index("it")]
+        return f"{lead}{m['who']} asked for"
+
+    def meant(m: re.Match[str]) -> str:
+        if not _only_person(m["who"], lexicon) or not _things31(m["x"], lexicon):
+            return m[0]
+        lead = m[0][: m[0].lower().index("it")]
+        x = m["x"]
+        return f"{lead}{x[0].upper()}{x[1:]} {m['be']} for {m['who']}"
+
+    return _CLEFT_FOR35.sub(meant, _CLEFT_AFTER35.sub(asked, text))
+
+
+# "The shelf is where the cup goes.": the place put first in a pseudo-cleft
+_WHERE_GOES35 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)(?P<s>(?:the|that|this) [a-z][a-z ]*?) is where "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?) (?P<v>goes|go|belongs|belong|lives|live|should go|"
+    r"should be|needs to go|need to go)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _where_goes35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'S is where X goes' is 'X goes on S' when S is one surface of the scene and X
+    objects only."""
+    if " where " not in text:
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        if not _surface_only(m["s"], lexicon) or not _things31(m["x"], lexicon):
+            return m[0]
+        x = m["x"]
+        lead = m[0][: m.start("s") - m.start()]
+        return f"{lead}{x[0].upper()}{x[1:]} goes on {m['s'].lower()}"
+
+    return _WHERE_GOES35.sub(plain, text)
+
+
+# "…, and the scanner can go along with them.": a second object to go where the first went (the
+# pronoun is the first clause's objects, which have one recipient or place)
+_ALONG_WITH35 = re.compile(
+    rf",?\s*and (?P<x>{_DET32} [a-z][a-z ]*?) (?:can|could|should|will|may|might as well|is to) "
+    r"go (?:along )?with (?P<pron>them|it)(?: too| as well)?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _along_with35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the clause above is ', and X too' when X is objects of the scene only and the
+    one clause before it (no other mark) names objects that the pronoun may be ('it' one object,
+    'them' several or one said in the plural) and one person or surface."""
+    if " with " not in text:
+        return text
+    m = _ALONG_WITH35.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    before = text[: m.start()]
+    if re.search(r"[.;:!?]", before):
+        return text
+    objs = _ids(before, lexicon, "object")
+    if len(_ids(before, lexicon, "human") | _ids(before, lexicon, "surface")) != 1 or not objs:
+        return text
+    words = [it.text for it in _names(before, lexicon) if it.refs[0].kind == "object"]
+    plural = len(objs) > 1 or any(w.lower().endswith("s") for w in words)
+    if (m["pron"].lower() == "them") != plural:
+        return text
+    return f"{before}, and {m['x']} too{m['end'].strip()}"
+
+
+# "The teddy's fallen on the floor, put it on the play mat.": a state of the object (a closed list
+# of where things lie that no request says), then the request of 'it'
+_STATE_IT35 = re.compile(
+    r"^(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?:'s|'re| is| are|'ve| has| have) "
+    r"(?:(?:fallen|dropped|rolled|tipped|slipped|been knocked|got knocked)(?: over| down| off)?"
+    r"(?: (?:on|onto) the (?:floor|ground|carpet|rug))?|in (?:the|my|our|your) way|"
+    r"(?:on|all over) the (?:floor|ground|carpet|rug)|under (?:my|our|your) feet)"
+    r",\s*(?:so\s+)?(?P<v>put|set|pop|place|stick|move|pick|lift|give|hand|take|bring|pass)"
+    r"(?P<up> up)? (?P<pron>it|them)\b",
+    _F,
+)
+
+
+def _state_it35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the state above taken off and its object said for the pronoun ('put the teddy
+    on the play mat'), when X is objects of the scene only and the pronoun fits their number."""
+    m = _STATE_IT35.match(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    one = len(_ids(m["x"], lexicon, "object")) == 1
+    if (m["pron"].lower() == "it") != (one and not m["x"].lower().startswith(("those", "these"))):
+        return text
+    return f"{m['v'].capitalize()}{m['up'] or ''} {m['x'].lower()}{text[m.end() :]}"
+
+
+# "Then up on the shelf with the red mug.": the placement said with the place first and the object
+# after 'with' (as _what_waiting34's 'over to her with it')
+_ON_WITH35 = re.compile(
+    r"(?:(?<=[.;!?] )|(?<=, ))(?P<then>(?:then|and then|next|after that),? )?(?:up |down |over )?"
+    r"(?P<on>on|onto|in|into|on top of) (?P<s>the [a-z][a-z ]*?) with "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?)(?P<end>\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _on_with35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the placement above said plainly ('Then put the red mug on the shelf') when S
+    is one surface of the scene and X objects only, after a sentence mark, a comma or 'then' (an
+    instruction opening with it is _onto_with33r's)."""
+    if " with " not in text:
+        return text
+
+    def plain(m: re.Match[str]) -> str:
+        if not _surface_only(m["s"], lexicon) or not _things31(m["x"], lexicon):
+            return m[0]
+        then = m["then"] or ""
+        opens = not then and text[: m.start()].rstrip()[-1:] in ".;!?"
+        verb = "Put" if opens else "put"
+        return f"{then}{verb} {m['x']} {m['on']} {m['s']}{m['end']}"
+
+    return _ON_WITH35.sub(plain, text)
+
+
+# "The bottle. For Person A.": telegraph, the object and its recipient as sentences of their own
+_TELEGRAPH35 = re.compile(
+    rf"^(?P<x>{_DET32} [a-z][a-z ]*?)\.\s+(?P<for>for|to) (?P<p>[A-Z][A-Za-z]*(?: [A-Z][a-z]*)?)"
+    r"\.(?=\s|$)",
+    _F,
+)
+
+
+def _telegraph35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the two sentences above are one ('The bottle for Person A.') when X is objects
+    of the scene only and P one person."""
+    m = _TELEGRAPH35.match(text)
+    if m is None or not _things31(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    return f"{m['x']} {m['for'].lower()} {m['p']}.{text[m.end() :]}"
+
+
+# "… and then the warehouseman can lock up.": what someone of a trade does after the tasks (a
+# closed list of doings that end a day's work), closing the instruction; no task of the cell
+_THEN_TRADE35 = re.compile(
+    r",?\s+and then (?:the|our|my) (?P<trade>[a-z]+) (?:can|will|could|is going to|'ll) "
+    r"(?:lock up|close up|shut up shop|knock off|clock off|go home|head home|get off home|"
+    r"pack up|finish up|call it a day)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _then_trade35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the closing clause above taken off when the trade could only describe a person
+    (_trade_words29) and what is left names something."""
+    if "then " not in text:
+        return text
+    m = _THEN_TRADE35.search(text)
+    if m is None or not _trade_words29(m["trade"], lexicon):
+        return text
+    rest = text[: m.start()]
+    return rest + m["end"].strip() if _names(rest, lexicon) else text
+
+
+# "Torch to Jess, she's under the bench, then …": where the person just named is (as
+# _where_she_is34), at a surface of the scene: a person under, behind or by a surface is where
+# she is, not where something goes
+_BY_SURFACE35 = re.compile(
+    r"(?P<p>\b[A-Z][a-z]+(?: [A-Z][a-z]*)?),? (?P<pron>she|he)(?:'s| is) (?:under|behind|beside|"
+    r"by|next to|near|underneath|round the back of) (?P<s>the [a-z]+(?: [a-z]+)?)"
+    r"(?=\s*,|\s+and\b|\s*[.;!?]|\s*$)"
+)
+
+
+def _by_surface35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the remark above taken off when P is one person the pronoun may be and S one
+    surface of the scene (a place the scene lacks is _where_she_is34's)."""
+    if "'s " not in text and " is " not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _surface_only(m["s"], lexicon):
+            return m[0]
+        return m["p"] if _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon) else m[0]
+
+    return _BY_SURFACE35.sub(dropped, text)
+
+
+# "the apple's meant for person b so take it over", "person a is after her bottle can you get it
+# to her": a want run on into the request to carry it out, with no mark between
+_WANT_RUN_ON35 = re.compile(
+    r"^(?P<want>(?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?)(?:'s| is) (?:meant |intended )?for "
+    r"(?P<p>person [a-z]|[a-z]+)|(?P<q>person [a-z]|[a-z]+) (?:is after|'s after|wants|needs) "
+    r"(?P<y>(?:the|her|his|their) [a-z]+(?: [a-z]+)?)) (?P<then>so|can you|could you|would you)\b",
+    _F,
+)
+
+
+def _want_run_on35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: a mark put after the want ('…, so take it over', '…. can you get it to her')
+    when its object is objects of the scene only ('her bottle' as 'the bottle'), its person one
+    person, and the request after it says 'it' or 'them'."""
+    m = _WANT_RUN_ON35.match(text)
+    if m is None or not re.search(r"\b(?:it|them)\b", text[m.end() :], _F):
+        return text
+    x = m["x"] or re.sub(r"^(?:her|his|their)\b", "the", m["y"], flags=_F)
+    if not _things31(x, lexicon) or not _only_person(m["p"] or m["q"], lexicon):
+        return text
+    mark = ", " if m["then"].lower() == "so" else ". "
+    want = re.sub(r" (?:meant|intended) for ", " for ", m["want"], flags=_F)  # as _idioms34
+    return f"{want}{mark}{m['then']}{text[m.end() :]}"
+
+
+# "wipes to grandad, lily needs changing": a closing remark of the person's care (a closed list),
+# which asks the cell nothing
+_CARE35 = re.compile(
+    r",\s*(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?) (?:needs|wants|is due|'s due|is ready for|"
+    r"'s ready for) (?:changing|a change|feeding|a feed|winding|burping|a nap|a sleep|a wash|"
+    r"a bath|settling|his nap|her nap|his bath|her bath)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _care35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the remark above taken off when P is one person of the scene and what is left,
+    one sentence, names a person or surface."""
+    if "," not in text:
+        return text
+    m = _CARE35.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if re.search(r"[.;:!?]", rest) or not _ids(rest, lexicon, "human") | _ids(
+        rest, lexicon, "surface"
+    ):
+        return text
+    return rest + m["end"].strip()
+
+
+# "Person B's having the apple and the cup with her draughts game.": what the person will be
+# doing when she has them (a closed list of meals and pastimes), closing the instruction
+_WITH_HER35 = re.compile(
+    r"\b(?P<want>(?P<p>[A-Za-z][a-z]*(?: [A-Za-z][a-z]*)?)(?:'s| is) having (?P<x>(?:the|that|"
+    r"this|those|these) [a-z][a-z ]*?)) with (?P<pron>her|his|their) (?:[a-z]+ )?(?:game|match|"
+    r"tea|lunch|dinner|breakfast|supper|snack|elevenses|crossword|sudoku|puzzle|jigsaw|knitting|"
+    r"book|film|show|programme)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _with_her35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'with her <game>' above taken off when P is one person the pronoun may be and
+    X objects of the scene only."""
+    if " having " not in text:
+        return text
+    m = _WITH_HER35.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _things31(m["x"], lexicon):
+        return text
+    if m["pron"].lower() != "their" and not _fits(
+        next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon
+    ):
+        return text
+    return text[: m.start()] + m["want"] + m["end"].strip()
+
+
+# "Kick off with the chips for Person A, and follow up with the bottle for Person B.": the order
+# said with a closed list of openers and followers
+_KICK_OFF35 = re.compile(
+    r"^(?:kick off|lead off|open|get going|get started) with (?P<task>[^,.;!?]+?)"
+    r"(?P<sep>,?\s+(?:and )?)(?:follow (?:up|on|that up|it up)|finish (?:off|up)|round (?:off|it "
+    r"off)) with (?P<next>[^,.;!?]+?)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _kick_off35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the instruction above is 'X for P first, and after that Y for Q' when each
+    task is objects and one person joined by 'for' or 'to'."""
+    m = _KICK_OFF35.match(text)
+    if m is None:
+        return text
+    for task in (m["task"], m["next"]):
+        what, to, who = task.partition(" for ") if " for " in task else task.partition(" to ")
+        if not to or not _things31(what, lexicon) or not _only_person(who, lexicon):
+            return text
+    return f"{m['task']} first, and after that {m['next']}{m['end'] or '.'}"
+
+
+# "Would the shelf be a better home for the crisps? Pop them up there, ta.": the place asked about,
+# then the placement of 'them' 'there'
+_BETTER_HOME35 = re.compile(
+    r"^(?:would|wouldn't|might|could) (?P<s>the [a-z][a-z ]*?) (?:be|make) a (?:better|good|nice|"
+    r"decent|safer|tidier) (?:home|place|spot|resting place) for (?P<x>(?:the|that|this|those|"
+    r"these) [a-z][a-z ]*?)\s*\?\s+(?:so\s+)?(?:pop|put|stick|place|set|pop|move) (?P<pron>it|them)"
+    r"(?: up| down| over)? there\b",
+    _F,
+)
+
+
+def _better_home35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the question and the placement above are 'Put X on S' when S is one surface of
+    the scene, X objects only and the pronoun fits their number."""
+    m = _BETTER_HOME35.match(text)
+    if m is None or not _surface_only(m["s"], lexicon) or not _things31(m["x"], lexicon):
+        return text
+    plural = len(_ids(m["x"], lexicon, "object")) > 1 or m["x"].lower().endswith("s")
+    if (m["pron"].lower() == "them") != plural:
+        return text
+    return f"Put {m['x']} on {m['s']}{text[m.end() :]}"
+
+
+# "is it alright to send her off with the cup and the chips?": leave asked to give her them
+_SEND_OFF35 = re.compile(
+    r"\bis it (?:alright|all right|ok|okay|fine) (?:to|if (?:i|we|you)) send (?P<p>her|him|them|"
+    r"[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:off|away|home) with "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?)(?P<end>\s*\?)\s*$",
+    _F,
+)
+# "How about letting Person A have the chips, what do you say?": the hearer asked whether it suits
+_WHAT_SAY35 = re.compile(
+    r",\s*(?:what do you say|what d'you say|what say you|what do you reckon|what d'you reckon|"
+    r"how does that sound|sound good|sound ok|sound okay)\s*\?\s*$",
+    _F,
+)
+
+
+def _questions35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'is it alright to send her off with X?' is 'can you give her X?' (X objects
+    only, her one person of the sentence before or named); ', what do you say?' closing a
+    'how about'/'what about' question is taken off."""
+    m = _SEND_OFF35.search(text)
+    if m is not None and _things31(m["x"], lexicon):
+        who = m["p"]
+        if who.lower() in ("her", "him", "them"):
+            people = _ids(text[: m.start()], lexicon, "human")
+            ok = len(people) == 1 and _fits(next(iter(people)), who, lexicon)
+        else:
+            ok = _only_person(who, lexicon)
+        if ok:
+            text = f"{text[: m.start()]}can you give {who} {m['x']}?"
+    m = _WHAT_SAY35.search(text)
+    if m is not None and re.match(r"^(?:how|what) about\b", text, _F):
+        text = text[: m.start()] + "?"
+    return text
+
+
+# "Emma's just a visitor, but can she have the banana?": who the person is (a word for a role), then
+# the request of her by pronoun
+_JUST_A35 = re.compile(
+    r"^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) (?:just|only|merely) an? (?P<role>[a-z]+),?"
+    r"\s+but (?P<ask>can|could|may) (?P<pron>she|he) (?P<rest>have|get|take) ",
+    _F,
+)
+# "Would you pop the red pen into the box, Priya's having a tidy-up?": what a person is doing, of a
+# closed list, closing the request
+_HAVING_A35 = re.compile(
+    r",\s*(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) having a (?:tidy-up|tidy up|tidy|"
+    r"clear-out|clear out|sort-out|sort out|break|nap|lie-down|lie down|rest|day off)"
+    r"(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+# "Can Jess take the hammer and the screws?": the whole question, of a person and objects only
+_CAN_P_TAKE35 = re.compile(
+    r"^(?P<ask>can|could|may) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) take "
+    rf"(?P<x>{_DET32} [a-z][a-z ]*?)\s*\?\s*$",
+    _F,
+)
+
+
+def _role35(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether ``m``'s role could only describe a person (_trade_words29) or is a name of its
+    person P alone ('Emma's just a visitor' where the scene calls Emma the visitor), and its
+    pronoun may be P."""
+    who = _ids(m["p"], lexicon, "human")
+    if not (_trade_words29(m["role"], lexicon) or _ids(m["role"], lexicon) == who):
+        return False
+    return _fits(next(iter(who)), m["pron"], lexicon)
+
+
+def _who_she_is35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'P's just a <role>, but can she have X?' is 'Can P have X?' (P one person the
+    pronoun may be, the role a word that could only describe a person); ', P's having a tidy-up'
+    closing a request is taken off (P one person); 'Can P take X?' alone is 'Can P have X?' (X
+    objects only: no place or other person is said, so P is to get them)."""
+    m = _JUST_A35.match(text)
+    if m is not None and _only_person(m["p"], lexicon) and _role35(m, lexicon):
+        text = f"{m['ask'].capitalize()} {m['p']} {m['rest']} {text[m.end() :]}"
+    m = _HAVING_A35.search(text)
+    if m is not None and _only_person(m["p"], lexicon):
+        rest = text[: m.start()]
+        if not re.search(r"[.;:!?]", rest) and _names(rest, lexicon):
+            text = rest + m["end"].strip()
+    m = _CAN_P_TAKE35.match(text)
+    if m is not None and _only_person(m["p"], lexicon) and _things31(m["x"], lexicon):
+        text = f"{m['ask'].capitalize()} {m['p']} have {m['x']}?"
+    return text
+
+
+# "… and Person B on the bottle so get those sorted and then you can have a rest": the hearer told
+# to see to the wants just said (as _do_that34's 'so do that too'), with a rest offered after it
+_GET_SORTED35 = re.compile(
+    r",?\s+so (?:get|have) (?P<pron>those|them|these|that|it) (?:sorted|sorted out|seen to|done)"
+    r"(?: for (?:me|us|them))?(?:,? and then you can have a (?:rest|break|breather|sit down|"
+    r"cuppa))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_WANTED35 = re.compile(
+    r"\b(?:wants|needs|is after|'s after|is waiting on|is waiting for|would like|could use)\b", _F
+)
+
+
+def _get_sorted35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the closing part above taken off when what is left, one sentence, says a want
+    (and names no surface: nothing is placed) and the pronoun fits the number of its objects."""
+    if "so " not in text:
+        return text
+    m = _GET_SORTED35.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if re.search(r"[.;:!?]", rest) or not _WANTED35.search(rest) or _ids(rest, lexicon, "surface"):
+        return text
+    objs = _ids(rest, lexicon, "object")
+    if not objs or (len(objs) > 1) != (m["pron"].lower() in ("those", "them", "these")):
+        return text
+    return rest + m["end"].strip()
+
+
+# "Quick one, just circling back: can we action getting the stapler over to Priya?": office speech,
+# 'action' before the doing
+_ACTION_DOING35 = re.compile(r"\b(?P<ask>can|could) (?:we|you) action (?P<v>[a-z]+)ing\b", _F)
+
+
+def _office35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: 'can we action getting X …' is 'can you get X …' when the words after it name
+    something."""
+    m = _ACTION_DOING35.search(text)
+    if m is None or not _names(text[m.end() :], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['ask']} you {_base(m['v'])}{text[m.end() :]}"
+
+
+# "Mr Lee hasn't had his pills, take them over, …": what the person has not yet had (his own, a
+# closed list of such negated states), then the handover of it with no recipient said
+_NOT_HAD35 = re.compile(
+    r"^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:hasn't|has not|hasn't yet|has not yet) (?:had|got|"
+    r"been given|received) (?P<pron>his|her|their) (?P<x>[a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<v>take|bring|carry|pop) (?P<it>them|it) over\b",
+    _F,
+)
+
+
+def _not_had35(text: str, lexicon: Lexicon) -> str:
+    """Session 35: the two clauses above are 'Take X over to P' when P is one person the pronoun
+    may be, X objects of the scene only, and 'it'/'them' fits their number (the negation is of the
+    state, which the handover ends: no task is negated)."""
+    m = _NOT_HAD35.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _things31(f"the {m['x']}", lexicon):
+        return text
+    if m["pron"].lower() != "their" and not _fits(
+        next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon
+    ):
+        return text
+    plural = len(_ids(m["x"], lexicon, "object")) > 1 or m["x"].lower().endswith("s")
+    if (m["it"].lower() == "them") != plural:
+        return text
+    return f"{m['v'].capitalize()} the {m['x']} over to {m['p']}{text[m.end() :]}"
+
+
+_STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
+    _after_it35,
+    _want_idioms35,
+    _after_pastime35,
+    _needed_at35,
+    _if_sort35,
+    _sat_on35,
+    _headed_for35,
+    _clefts35,
+    _where_goes35,
+    _along_with35,
+    _state_it35,
+    _on_with35,
+    _telegraph35,
+    _then_trade35,
+    _by_surface35,
+    _want_run_on35,
+    _care35,
+    _with_her35,
+    _kick_off35,
+    _better_home35,
+    _questions35,
+    _who_she_is35,
+    _get_sorted35,
+    _office35,
+    _not_had35,
+)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -25237,6 +25955,175 @@ def _not_first35r(text: str, lexicon: Lexicon) -> str:
     return f"{m['rest']}, not {x}{m['tail'] or '.'}"
 
 
+# blind22's kinds -----------------------------------------------------------------------------
+
+# "…, she's not fussed which, she only wants a brew."
+_ONLY_WANTS35R = re.compile(
+    r"(?P<head>\b(?:not fussed|not bothered|doesn't mind|don't mind|does not mind) which),\s*"
+    r"(?:she|he|they) (?:only|just) wants? (?P<w>(?:a|an|some) [a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_wants35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): after a phrase leaving the choice ("…, she's not fussed which"), "she
+    only wants a brew" says what for, naming nothing of the scene: taken off (a thing of the
+    scene there is a want: left)."""
+    m = _ONLY_WANTS35R.search(text) if "wants" in text.lower() else None
+    if m is None or _ids(m["w"], lexicon) or not _asks_nothing29(m["w"].split(" ", 1)[1], lexicon):
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Give Person A the apple, there is only one only, don't worry."
+_ONLY_ONE35R = re.compile(
+    r"^(?P<head>[^,.;!?]+),\s*there(?:'s| is) only (?:the )?one(?: only)?(?:\s*,\s*(?:don't "
+    r"worry|no worries|never mind))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "<one handover>, there is only one (only), don't worry": the count of the
+    one object the request names, said again: taken off when the scene holds exactly one of its
+    kind (else left, and refused)."""
+    m = _ONLY_ONE35R.match(text) if "only" in text.lower() else None
+    if m is None:
+        return text
+    done = _tasks_of(m["head"], lexicon)
+    if done is None or len(done) != 1:
+        return text
+    obj = next(iter(done))[1]
+    kind = next(o.category for o in lexicon.scene.objects if o.id == obj)
+    if sum(o.category == kind for o in lexicon.scene.objects) != 1:
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "…, but not the red one, that's the controller's and she's funny about it."
+_NOT_THEIRS35R = re.compile(
+    r"(?P<head>\bnot the [a-z]+ one),\s*(?:that's|that is|it's|it is) (?:the )?(?P<o>[a-z]+)'s"
+    r"(?: and (?:she|he|they)(?:'s| is|'re| are) (?P<w>[a-z ]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_theirs35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "…, but not the red one, that's the controller's (and she's funny about
+    it)": why that one is left out, its owner no one of the scene and the rest naming nothing,
+    taken off (an owner of the scene may be the one to get it: left)."""
+    m = _NOT_THEIRS35R.search(text) if "'s" in text else None
+    if m is None or _ids(m["o"], lexicon) or (m["w"] and _ids(m["w"], lexicon)):
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Don't give Bob the crisps, they're bad for his teeth, give him the bottle instead."
+_DONT_INSTEAD35R = re.compile(
+    r"^(?:don't|do not) (?P<v>give|hand|pass) (?P<p>[a-z]+(?: [a-z])?) (?P<x>the [a-z]+"
+    r"(?: [a-z]+)?),\s*(?:(?P<why>[^,.;!?]+?),\s*)?(?:give|hand|pass) (?P<pro>him|her) "
+    r"(?P<y>the [a-z]+(?: [a-z]+)?) instead(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _dont_instead35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "Don't give P X, <why>, give him Y instead" is "Give P Y, not X" (one
+    person 'him' may be, two whole objects, the reason naming nothing of the scene)."""
+    m = _DONT_INSTEAD35R.match(text) if "instead" in text.lower() else None
+    if m is None or not _the_person(m["p"], m["pro"], lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]) or (m["why"] and _ids(m["why"], lexicon)):
+        return text
+    return f"{m['v'][:1].upper()}{m['v'][1:]} {m['p']} {m['y']}, not {m['x']}{m['end'] or '.'}"
+
+
+# "Give the bottle to whoever isn't Person A, I don't know the other one's name."
+_WHOEVER_NOT35R = re.compile(
+    r"\bto whoever (?:isn't|is not) (?P<p>person [a-z]|[a-z]+)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _whoever_not35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "to whoever isn't Person A" in a scene of two people is "to" the other one
+    (with more people it is left, and refused; blind22's "…, I don't know the other one's name"
+    stays refused: a rewrite may not take off the speaker's 'I don't know', offline.py's
+    _DOUBT)."""
+    m = _WHOEVER_NOT35R.search(text) if "whoever" in text.lower() else None
+    people = lexicon.scene.humans
+    if m is None or len(people) != 2 or not _only_person(m["p"], lexicon):
+        return text
+    said = next(iter(_ids(m["p"], lexicon)))
+    other = next(h for h in people if h.id != said)
+    return f"{text[: m.start()]}to {other.name}{text[m.end() :]}"
+
+
+# "Tom can have anything but the tape and the boxes and the scanner, I'm not fussed what."
+_ANYTHING_BUT35R = re.compile(
+    r"^(?P<p>[a-z]+(?: [a-z])?) can have anything (?:but|except|other than) (?P<x>[^,.;!?]+?)"
+    r"(?:,\s*(?:i'm|i am) not (?:fussed|bothered) (?:what|which))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _anything_but35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "P can have anything but X and Y (, I'm not fussed what)" is "P can have
+    A or B", the scene's other objects (each named whole, every one of X and Y, two or more, a
+    name of the scene's objects; one left is that one)."""
+    m = _ANYTHING_BUT35R.match(text) if "anything" in text.lower() else None
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    items = [i.strip() for i in re.split(r",|\band\b", m["x"], flags=_F) if i.strip()]
+    if len(items) < 2 or not all(_only_kind(i, lexicon, "object") for i in items):
+        return text  # one thing left out is session 33's _anything_but33r
+    out = {oid for i in items for oid in _ids(i, lexicon, "object")}
+    said = [_object_said33r(o.id, lexicon) for o in lexicon.scene.objects if o.id not in out]
+    if not said or any(x is None for x in said):
+        return text
+    listed = " or ".join(x for x in said if x)
+    return f"{m['p']} can have {listed}{m['end'] or '.'}"
+
+
+# "…, actually, on the desk is better, I keep losing it."
+_KEEP_LOSING35R = re.compile(
+    r"(?P<head>\b(?:no|sorry|actually)\b.*?),\s*i keep (?:losing|misplacing|forgetting|dropping)"
+    r" (?:it|them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _keep_losing35r(text: str, _lexicon: Lexicon) -> str:
+    """Session 35 (12r): after a correction, "I keep losing it" says why the speaker changed their
+    mind: taken off (the correction is read as before)."""
+    m = _KEEP_LOSING35R.search(text) if "keep" in text.lower() else None
+    if m is None:
+        return text
+    return f"{text[: m.end('head')]}{m['end'] or '.'}"
+
+
+# "Give Jess the spanner that isn't already sitting on the bench, she'll know why."
+_ISNT_ON35R = re.compile(
+    r"\bthat (?:isn't|is not) (?:already )?(?:sitting |lying |resting |left )?(?P<p>on|in) "
+    r"(?P<s>the [a-z]+(?: [a-z]+)?)(?P<why>,\s*(?:she|he|they)(?:'ll| will) know why)?",
+    _F,
+)
+
+
+def _isnt_on35r(text: str, lexicon: Lexicon) -> str:
+    """Session 35 (12r): "the spanner that isn't already sitting on the bench" is "the spanner that
+    is not on the bench" (session 34's reading of it), ", she'll know why" after it a remark."""
+    m = (
+        _ISNT_ON35R.search(text)
+        if "that is" in text.lower() or "that isn't" in text.lower()
+        else None
+    )
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    return f"{text[: m.start()]}that is not {m['p']} {m['s']}{text[m.end() :]}"
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -25273,6 +26160,14 @@ _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _rather_after35r,
     _likes_both35r,
     _not_first35r,
+    _only_wants35r,
+    _only_one35r,
+    _not_theirs35r,
+    _dont_instead35r,
+    _whoever_not35r,
+    _anything_but35r,
+    _keep_losing35r,
+    _isnt_on35r,
 )
 
 
@@ -25434,6 +26329,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 35 (12): blind33's kinds
+    *_STEPS35,
     # session 34 (12): blind32's kinds
     *_STEPS34,
     # session 33 (12): blind31's kinds
