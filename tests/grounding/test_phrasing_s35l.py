@@ -22,7 +22,12 @@
 - 12r's fuzz: "Tom wants to move the large box, can he have the gloves? Also, give Tom the
   packing tape or the barcode scanner, it's up to you which." (depot) read the large box into the
   choice: the plan's object stood for an 'it' anywhere after it, here the subject of "it's up to
-  you". Only an object 'it' of the request's own sentence is the plan's object now."""
+  you". Only an object 'it' of the request's own sentence is the plan's object now.
+- blind34's one wrong reading at its measurement: "The stapler goes to Priya, and she should get
+  the notebook after it." (office) read notebook>A ; stapler>A. 'after it' closing the last
+  clause was read as a condition put before everything. Its 'it' is the one object said before
+  that clause and not in it, and the clause comes after that one, as with 'after that'; any
+  other 'after it' there is refused."""
 
 from __future__ import annotations
 
@@ -35,6 +40,7 @@ from tests.grounding.helpers import (
     KITCHEN,
     LAB,
     NURSERY,
+    OFFICE,
     ROOT,
     assert_reads,
     assert_refused,
@@ -218,3 +224,31 @@ def test_a_plans_object_is_not_the_it_of_a_later_remark() -> None:
         "block_red>C & block_green>C",
         NURSERY,
     )
+
+
+OFFICE_STAPLER_FIRST = "stapler>A ; notebook>A"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The stapler goes to Priya, and she should get the notebook after it.",
+        "Give Priya the stapler, and she should get the notebook after it.",
+        "The stapler goes to Priya, and the notebook goes to her after it.",
+        "Give Priya the stapler and the notebook after it.",
+        "The stapler goes to Priya, and she should get the notebook after that.",
+    ],
+)
+def test_after_it_closing_a_clause_follows_the_object_before(text: str) -> None:
+    assert_reads(text, OFFICE_STAPLER_FIRST, OFFICE)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Priya the notebook after it.",  # nothing before it
+        "Give Priya the stapler and the notebook, and Sam the black pen after it.",  # two before
+    ],
+)
+def test_after_it_with_no_one_object_before_is_refused(text: str) -> None:
+    assert_refused(text, OFFICE, match="after it")

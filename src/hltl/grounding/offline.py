@@ -3494,11 +3494,34 @@ def _other_recipient(pieces: list[list[Item]], seps: list[str], k: int) -> bool:
     )
 
 
+def _after_it35l(core: list[Item]) -> list[Item]:
+    """Session 35 (lead): blind34's one wrong reading at its measurement, "The stapler goes to
+    Priya, and she should get the notebook after it." read notebook>A ; stapler>A: 'after it'
+    closing the last clause was read as a condition before everything. Its 'it' is the one
+    object said before that clause and not in it; the clause then comes after that one, as with
+    'after that'. Any other 'after it' there is refused (after what?)."""
+    if len(core) < 3 or not (_is(core[-1], "it") and core[-2].text.lower() == "after"):
+        return core
+    seps = [k for k, x in enumerate(core[:-2]) if _is(x, "and", ",")]
+
+    def named(part: list[Item]) -> set[str]:
+        return {r.id for x in part if _objects_only32s(x) for r in x.refs}
+
+    if seps:
+        before, last = named(core[: seps[-1]]), named(core[seps[-1] : -2])
+        if len(before) == 1 and last and not before & last:
+            return [*core[:-2], Item("word", "then", f"{core[-2].text} {core[-1].text}")]
+    raise GroundingError(
+        f"'{core[-2].text} {core[-1].text}' in {_text(core)!r}: say after which task or object"
+    )
+
+
 def _trailing_order(items: list[Item]) -> list[Item]:
     """'X and Y afterwards' is 'X, then Y'; 'X, but Y first' is 'Y, then X'."""
     core = list(items)
     while core and _is(core[-1], ",", "filler"):
         core.pop()
+    core = _after_it35l(core)
     if len(core) < 3 or not _is(core[-1], "then", "first", "after", "prior"):
         return items
     # "… after" / "… after that" at the end is "afterwards"; "… before that" is "first"
