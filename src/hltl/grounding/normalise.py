@@ -12779,6 +12779,14 @@ _STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
 # pattern checked against the scene; a remark is taken off only when it names nothing of the
 # scene and asks nothing (_asks_nothing29, or a closed list written in the pattern).
 
+
+def _fit36(pid: str, text: str, lexicon: Lexicon) -> bool:
+    """Whether every he/she/him/her in ``text`` may be person ``pid``: by title (_fits), and by
+    a first name or a word for kin of one sex (_may_be35t)."""
+    said = re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    return _fits(pid, text, lexicon) and all(_may_be35t(pid, w, lexicon) for w in said)
+
+
 # "Very good of you, really, …", "That's kind of you, …": a courtesy opening the instruction
 _GOOD_OF_YOU36 = re.compile(
     r"^(?:(?:that's|that is|it's|it is|how|so|very|really|ever so|too) )*(?:kind|good|nice|"
@@ -12789,7 +12797,8 @@ _GOOD_OF_YOU36 = re.compile(
 # doing (a closed list of what the speaker goes to), opening the instruction before a colon
 _FAVOUR36 = re.compile(
     r"^(?:a |one )?(?:quick|small|little|tiny|wee) favou?r(?: to ask)?(?: (?:before|ahead of) my "
-    r"(?P<act>[a-z]+(?: [a-z]+)?) (?:lesson|class|practice|rehearsal|session|shift|appointment|"
+    r"(?:(?P<act>[a-z]+(?: [a-z]+)?) )?(?:lesson|class|practice|rehearsal|session|shift|"
+    r"appointment|"
     r"match|game|run|swim|walk|meeting))?\s*:\s*",
     _F,
 )
@@ -12955,7 +12964,7 @@ def _closing_remarks36(text: str, lexicon: Lexicon) -> str:
     m = _BACK_FROM36.search(text)
     if m is not None and _asks_nothing29(m["what"], lexicon):
         people = _ids(text[: m.start()], lexicon, "human")
-        if len(people) == 1 and _fits(next(iter(people)), m["pron"], lexicon):
+        if len(people) == 1 and _fit36(next(iter(people)), m["pron"], lexicon):
             text = text[: m.start()] + m["end"].strip()
     return text
 
@@ -13075,7 +13084,7 @@ def _keep_going36(text: str, lexicon: Lexicon) -> str:
     s = _SUBJECT36.search(text[: m.start()])
     if s is None or not _only_person(s["p"], lexicon):
         return text
-    if m["pron"].lower() == "them" or not _fits(
+    if m["pron"].lower() == "them" or not _fit36(
         next(iter(_ids(s["p"], lexicon))), m["pron"], lexicon
     ):
         return text
@@ -13100,7 +13109,7 @@ def _want_with36(text: str, lexicon: Lexicon) -> str:
     if m is None or not _things31(m["x"], lexicon):
         return text
     people = _ids(text[: m.start()], lexicon, "human")
-    if len(people) != 1 or not _fits(next(iter(people)), m["pron"], lexicon):
+    if len(people) != 1 or not _fit36(next(iter(people)), m["pron"], lexicon):
         return text
     (p,) = people
     name = next(h for h in lexicon.scene.humans if h.id == p).name
@@ -13201,14 +13210,14 @@ def _whose_then36(text: str, lexicon: Lexicon) -> str:
     if not _things31(x, lexicon) or not _only_person(m["p"], lexicon) or _names(m["req"], lexicon):
         return text
     p = next(iter(_ids(m["p"], lexicon)))
-    if "pos" in m.groupdict() and not _fits(p, m["pos"], lexicon):
+    if "pos" in m.groupdict() and not _fit36(p, m["pos"], lexicon):
         return text
     obj = "them" if _plural36(x, lexicon) else "it"
     req = m["req"]
     if len(re.findall(rf"\b{obj}\b", req, _F)) != 1:
         return text
     people = re.findall(r"\b(?:him|her)\b", req, _F)
-    if len(people) != 1 or not _fits(p, people[0], lexicon):
+    if len(people) != 1 or not _fit36(p, people[0], lexicon):
         return text
     req = re.sub(rf"\b{obj}\b", x.lower(), req, count=1, flags=_F)
     req = re.sub(r"\b(?:him|her)\b", m["p"], req, count=1, flags=_F)
@@ -13230,7 +13239,7 @@ def _also_hers36(text: str, lexicon: Lexicon) -> str:
         return text
     before = text[: m.start()]
     people = _ids(before, lexicon, "human")
-    if len(people) != 1 or not _fits(next(iter(people)), before + " " + m["pron"], lexicon):
+    if len(people) != 1 or not _fit36(next(iter(people)), before + " " + m["pron"], lexicon):
         return text
     return before + m["end"].strip()
 
@@ -13259,7 +13268,7 @@ def _body_state36(text: str, lexicon: Lexicon) -> str:
         return text
     before = text[: m.start()]
     people = _ids(before, lexicon, "human")
-    if len(people) != 1 or not _fits(next(iter(people)), m["pron"], lexicon):
+    if len(people) != 1 or not _fit36(next(iter(people)), m["pron"], lexicon):
         return text
     return before.rstrip(" ,") + ("." if before.rstrip()[-1:] not in ".!?" else "")
 
@@ -13342,7 +13351,7 @@ def _said_again36(text: str, lexicon: Lexicon) -> str:
     if (
         m is not None
         and _only_person(m["p"], lexicon)
-        and _fits(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon)
+        and _fit36(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon)
     ):
         text = f"{m['p']} {m['v']}{text[m.end() :]}"
     return text
