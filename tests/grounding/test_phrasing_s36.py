@@ -226,6 +226,7 @@ test_splits = CASES.test(
     ("Person A wants the bottle she's been at it, and Person B the chips.", None, T21),
     ("Person A wants the bottle she's been out later, and Person B the chips.", None, T21),
     ("Give Bob the bottle and Alice wants the crisps give them those.", None, FIG1),
+    ("Person B gets the bottle he's been waiting ages Person A gets it.", None, DUO),
     ("Apple to Person A. Cup to Person B. Apple stays put.", None, SQ),
     ("Everything to Person A. Chips stay put.", None, SQ),
     ("Grey blanket. Mr Lee. Her feet are like ice.", None, WARD),
@@ -264,6 +265,13 @@ test_lower_case = CASES.test(
         # two mugs in the scene: 'the mugs going' is the plural, as before
         ("the mugs going to bob", "mug_red>B & mug_blue>B", CELL),
         ("the crisps going to bob", "chips>B", CELL),
+        # a want run on ('she's craving') is no remark: read as before (blind29)
+        (
+            "Person A could really do with the cup; for Person B it's the apple she's craving, so "
+            "that too.",
+            "cup>A & apple>B",
+            SQ,
+        ),
     ],
 )
 def test_read_as_before(text: str, want: str, scene: Scene) -> None:

@@ -13122,25 +13122,34 @@ def _want_with36(text: str, lexicon: Lexicon) -> str:
 # _run_on_remark26 at the end): "Person A wants the bottle she's been at kickboxing, and …",
 # "Person B gets the bottle he's been waiting ages Person A gets the chips …"
 _RUN_ON_MID36 = re.compile(
-    r"(?<![,.;:!?])\s+(?P<r>(?:he|she)(?:'s| is| has) [a-z' ]+?)"
+    r"(?<![,.;:!?])\s+(?P<r>(?:he|she)(?:'s| has) been [a-z' ]+?)"
     r"(?=\s*[,;]|\s+(?:Person [A-Z]|[A-Z][a-z]+) (?:gets|wants|needs|is having|'s having|has)\b)",
+)
+
+# what a person's been doing that is a want ("she's been craving", "he's been after")
+_WANTING36 = re.compile(
+    r"\b(?:crav\w*|dying|gasping|desperate|asking|after|on about|wanting|needing|hoping|keen|"
+    r"itching|begging|waiting (?:for|on)|angling|eyeing|hankering|pining|longing)\b",
+    _F,
 )
 
 
 def _run_on_mid36(text: str, lexicon: Lexicon) -> str:
-    """Session 36: a remark 'he's …' / 'she's …' run on after an object, ending at a comma or
-    before a new clause of a person's want, taken off when it names nothing and holds no word
-    that could ask, point back, negate or order (_RUN_ON_HELD26), and no word joins it to what
-    is before (_JOINS26); a new clause after it starts a sentence."""
-    if "'s " not in text and " is " not in text and " has " not in text:
+    """Session 36: a remark "he's been …" / "she's been …" run on after an object, ending at a
+    comma or before a new clause of a person's want, taken off when it names nothing and holds
+    no word that could ask, point back, negate or order (_RUN_ON_HELD26) or want (_WANTING36),
+    and no word joins it to what is before (_JOINS26); a new clause after it starts a
+    sentence."""
+    if " been " not in text:
         return text
 
     def dropped(m: re.Match[str]) -> str:
-        said = re.sub(r"^(?:he|she)(?:'s| is| has)", "", m["r"].lower())
+        said = re.sub(r"^(?:he|she)(?:'s| has) been", "", m["r"].lower())
         before = text[: m.start()]
         if (
             not _names_nothing(m["r"], lexicon)
             or _RUN_ON_HELD26.search(said)
+            or _WANTING36.search(said)
             or re.search(_JOINS26, before, _F)
             or not _ids(before.rsplit(",", 1)[-1], lexicon, "object")
         ):
