@@ -109,9 +109,8 @@ KNOWN_MISSES = frozenset(
         # N things that aren't X' as a subject, 'namely', 'leave the X where it is' after a
         # correction, 'All three of the pens, …, into the box, that's the deliverable', 'going home
         # with P tonight', "Don't … instead, good!" (session 35: 'circling back … action getting',
-        # gapping with a rest, and 'the other one' after 'can keep' read)
-        "If everyone could just wait a moment, our robot here is going to place the globe on the "
-        "desk. Lovely, thank you all.",
+        # gapping with a rest, and 'the other one' after 'can keep' read; session 36: 'If everyone
+        # could just wait a moment, our robot here is going to …' reads)
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
         # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English

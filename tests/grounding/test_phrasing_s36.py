@@ -261,6 +261,28 @@ test_lower_case = CASES.test(
     ),
 )
 
+# -- the same kinds in blind16: the request announced to the room ----------------------------
+
+test_announced = CASES.test(
+    (
+        "If everyone could just wait a moment, our robot here is going to place the globe on the "
+        "desk. Lovely, thank you all.",
+        "globe@desk",
+        CLASSROOM,
+    ),
+    ("Our robot is going to give the globe to Noah.", "globe>B", CLASSROOM),
+    # the wait asked alone, the robot to wait, a time
+    ("If everyone could just wait a moment, place the globe on the desk.", None, CLASSROOM),
+    ("Our robot here is going to wait.", None, CLASSROOM),
+    (
+        "If everyone could just wait a moment, our robot here is going to place the globe on the "
+        "desk tomorrow.",
+        None,
+        CLASSROOM,
+    ),
+    ("Your robot is going to place the globe on the desk.", None, CLASSROOM),
+)
+
 
 @pytest.mark.parametrize(
     ("text", "want", "scene"),

@@ -13415,6 +13415,29 @@ def _trade_said36(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "If everyone could just wait a moment, our robot here is going to place the globe on the
+# desk.": the request announced to the room (the wait asked of everyone else, opening)
+_ANNOUNCED36 = re.compile(
+    r"^(?:(?:if )?(?:everyone|everybody|you all|all of you) (?:could|can|would) (?:just )?(?:wait|"
+    r"hold on|bear with (?:me|us)) (?:a|one) (?:moment|minute|second|sec|tick|mo),\s*)?"
+    r"(?:our|the|this|my) robot(?: here| friend)? (?:is going to|'s going to|is about to|will|"
+    r"'ll) (?=(?:give|hand|pass|bring|take|deliver|put|place|set|pop|move)\b)",
+    _F,
+)
+
+
+def _announced36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'our robot (here) is going to <verb> …' (after a wait asked of everyone) is the
+    request '<verb> …' (a verb of the grammar's hand-overs and placements)."""
+    if "robot" not in text.lower():
+        return text
+    m = _ANNOUNCED36.match(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    return rest[0].upper() + rest[1:]
+
+
 _STEPS36: tuple[Callable[[str, Lexicon], str], ...] = (
     _courtesies36,
     _asked36,
@@ -13432,6 +13455,7 @@ _STEPS36: tuple[Callable[[str, Lexicon], str], ...] = (
     _body_state36,
     _stay_put36,
     _trade_said36,
+    _announced36,
 )
 # before every other rewrite: whether the text writes apostrophes is asked of the words as said
 _STEPS36_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_dropped_is36,)
