@@ -96,6 +96,8 @@ test_why_placed = CASES.test(
     ("Give Bob the apple so nobody sits on it.", None, CELL),
     ("Put the apple and the cup on the shelf so nobody sits on it.", None, CELL),
     ("Put the blue plate in the plate rack with the others.", None, KITCHEN),
+    # 'the rest' may be more to move (test_phrasing_s34t)
+    ("Put the white plate in the plate rack with the rest.", None, KITCHEN),
 )
 
 # -- closing remarks of a closed list: 'rough poker night', "its porridge oclock", 'hes the one

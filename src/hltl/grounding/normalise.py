@@ -12892,7 +12892,7 @@ _SO_NOBODY36 = re.compile(
 # "… in the plate rack with the others": the place already holds others of the object's kind
 _WITH_OTHERS36 = re.compile(
     r"(?P<place>\b(?:on|onto|in|into) (?P<s>the [a-z]+(?: [a-z]+)?)) with the (?:others|other "
-    r"ones|rest(?: of them)?)(?P<end>\s*[.!?]?)\s*$",
+    r"ones)(?P<end>\s*[.!?]?)\s*$",
     _F,
 )
 
