@@ -109,9 +109,8 @@ KNOWN_MISSES = frozenset(
         # N things that aren't X' as a subject, 'namely', 'leave the X where it is' after a
         # correction, 'All three of the pens, …, into the box, that's the deliverable', 'going home
         # with P tonight', "Don't … instead, good!" (session 35: 'circling back … action getting',
-        # gapping with a rest, and 'the other one' after 'can keep' read)
-        "If everyone could just wait a moment, our robot here is going to place the globe on the "
-        "desk. Lovely, thank you all.",
+        # gapping with a rest, and 'the other one' after 'can keep' read; session 36: 'If everyone
+        # could just wait a moment, our robot here is going to …' reads)
         # blind17 (tuned on in session 19) and causes19: kinds not met yet (docs/grounding.md,
         # "Session 19"): greetings and openers naming a person or holding a held word ('Howzit,
         # Jess.', 'For the record, and with the greatest respect'), pirate and Singapore English
@@ -230,33 +229,6 @@ KNOWN_MISSES = frozenset(
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
-        'Go on, be a love, the cup to Person B, and thanks a million from the whole ballet class.',
-        "Quick favour before my flamenco lesson: bottle to Person B, and that's everything.",
-        "Much obliged if you'd get the bottle to Person A, blagodaram.",
-        "Very good of you, really, just the bottle for Person A and then I'll leave you in peace, "
-        "miigwech.",
-        'The bottle needs putting up on the shelf, the bosun likes things stowed.',
-        'Person B would love the apple, and Person A could use the chips to keep her going at the '
-        'bonsai show.',
-        "The bottle's been asked for by Person B, who runs the model railway club, and Person A "
-        "asked for the chips.",
-        'The sink is where the green cup ought to be, the aquarist left it out.',
-        'The coalman left the crisps out, so get them and put them up on the shelf.',
-        "Person B's to have the apple, and he'll want the cup with it.",
-        "Hand the chips to Person A, and likewise the bottle to Person B, he's the hedger.",
-        "Person A's been beachcombing all morning: the bottle to her first, then the chips, also "
-        "hers.",
-        "Person B's having the chips and Person A the bottle; give them those when you've got a "
-        "hand free.",
-        "Marco's lost his tongs, get them to him, would you.",
-        "The scissors are Noah's, so bring them over to him.",
-        "Bob's thirsty he wants the bottle and Alice wants the crisps give them those.",
-        'Apple to Person A. Cup to Person B. Chips stay put.',
-        "Person B gets the bottle he's been waiting ages Person A gets the chips she's been "
-        "waiting longer.",
-        "Chips for Person A. And the bottle. That's for Person B, the park keeper.",
-        "Person A wants the bottle she's been at kickboxing, and Person B the chips he's starving.",
-        'Grey blanket. Mr Lee. His feet are like ice.',
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         "Bring Person B just one thing, the cup, the apple or the bottle, he's not bothered which.",
         'The apple goes to whichever of the two of them you reach first.',
@@ -291,19 +263,6 @@ KNOWN_MISSES = frozenset(
         "Take the bottle to, erm, what's her name, Person A, that's it.",
         "Sponge in the sink, no, the tray, sorry, the sink's full.",
         "Take Lena the lemon, no hang on, it's the salt she wants.",
-        'alice first with the bottle and after that bob gets the chips, kendo finishes at six',
-        'snack time so its apple for person a and chips for person b',
-        'cup for person b thx hes the one back from surfing',
-        'person a needs the bottle, rough poker night',
-        'the bottles going to person b and person a gets the chips this time round',
-        'dana the doctor is after the spoon and bowl, its porridge oclock',
-        'tom needs the scanner for the last van of the day',
-        'Pop the chipos up on the shelf, the coastguard will eat later.',
-        "Is there any chance of the bottle for Person B, seeing as he's been woodturning all day?",
-        "Do you think you could manage the bottle over to Person A, she's the bursar?",
-        'Would you put the banana on the tray so nobody sits on it?',
-        'Would you pop the white plate up in the plate rack with the others?',
-        "Would you mind laying the small spanner out on the workbench, I've a nut to loosen?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

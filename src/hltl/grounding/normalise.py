@@ -12774,6 +12774,693 @@ _STEPS35: tuple[Callable[[str, Lexicon], str], ...] = (
 )
 
 
+# -- session 36 (engineer 12): blind34's refusals by kind in the sections of politeness, wants,
+# pronouns and ellipsis, splits and run-ons, lower case, typos and questions. Each rule a closed
+# pattern checked against the scene; a remark is taken off only when it names nothing of the
+# scene and asks nothing (_asks_nothing29, or a closed list written in the pattern).
+
+
+def _fit36(pid: str, text: str, lexicon: Lexicon) -> bool:
+    """Whether every he/she/him/her in ``text`` may be person ``pid``: by title (_fits), and by
+    a first name or a word for kin of one sex (_may_be35t)."""
+    said = re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    return _fits(pid, text, lexicon) and all(_may_be35t(pid, w, lexicon) for w in said)
+
+
+# "Very good of you, really, …", "That's kind of you, …": a courtesy opening the instruction
+_GOOD_OF_YOU36 = re.compile(
+    r"^(?:(?:that's|that is|it's|it is|how|so|very|really|ever so|too) )*(?:kind|good|nice|"
+    r"sweet|decent|lovely|thoughtful|generous) of you(?:,\s*(?:really|truly|honestly))?\s*[,.!]\s*",
+    _F,
+)
+# "Quick favour before my flamenco lesson: …": a favour asked for, before the speaker's own
+# doing (a closed list of what the speaker goes to), opening the instruction before a colon
+_FAVOUR36 = re.compile(
+    r"^(?:a |one )?(?:quick|small|little|tiny|wee) favou?r(?: to ask)?(?: (?:before|ahead of) my "
+    r"(?:(?P<act>[a-z]+(?: [a-z]+)?) )?(?:lesson|class|practice|rehearsal|session|shift|"
+    r"appointment|"
+    r"match|game|run|swim|walk|meeting))?\s*:\s*",
+    _F,
+)
+# "…, and thanks a million from the whole ballet class.": thanks from a group the scene lacks
+_THANKS_GROUP36 = re.compile(
+    r",\s*(?:and\s+)?(?:thanks|thank you|cheers|many thanks)(?: a million| a bunch| a lot| very "
+    r"much| so much| loads)? from (?:the whole|all the|all of the|everyone in the|everyone at the|"
+    r"the) (?P<what>[a-z]+ )?(?:class|club|team|group|crew|choir|band|troupe|squad|gang|lot|"
+    r"staff|family)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+# "Much obliged if you'd get the bottle to Person A": a request said as the speaker's thanks
+_OBLIGED36 = re.compile(
+    r"^(?:much obliged|most obliged|(?:I'd|I would|I'll|I will|we'd|we would) be (?:much |most |"
+    r"very |ever so )?obliged) if you(?:'d| would| could)(?: kindly)? (?=[a-z])",
+    _F,
+)
+
+
+def _courtesies36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: the courtesies above taken off (the favour's doing and the group naming
+    nothing and asking nothing), when what is left names something."""
+    out = text
+    m = _GOOD_OF_YOU36.match(out)
+    if m is not None:
+        out = out[m.end() :]
+    m = _FAVOUR36.match(out)
+    if m is not None and (m["act"] is None or _asks_nothing29(m["act"], lexicon)):
+        out = out[m.end() :]
+    m = _THANKS_GROUP36.search(out)
+    if m is not None and (m["what"] is None or _asks_nothing29(m["what"], lexicon)):
+        out = out[: m.start()] + m["end"].strip()
+    m = _OBLIGED36.match(out)
+    if m is not None:
+        out = out[m.end() :]
+    if out == text or not _names(out, lexicon):
+        return text
+    return out[0].upper() + out[1:]
+
+
+# "Do you think you could manage the bottle over to Person A?": 'could you manage' (_carried32)
+_THINK_MANAGE36 = re.compile(
+    r"^(?:do you think|d'you think|do you reckon|you think|I wonder if|I wonder whether) you "
+    r"(?P<ask>could|can) manage (?=[a-z])",
+    _F,
+)
+# "laying the small spanner out on the workbench": 'out' of laying out, before the surface
+_LAID_OUT36 = re.compile(
+    rf"\b(?P<v>lay|laying|set|setting|spread|spreading|put|putting) (?P<x>{_DET32} [a-z][a-z ]*?)"
+    r" out (?P<on>on|onto|upon|across) (?P<s>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# "Is there any chance of the bottle for Person B?": asks for the object to go to the person
+_ANY_CHANCE36 = re.compile(
+    rf"^(?:is there )?any chance of (?P<x>{_DET32} [a-z][a-z ]*?) (?:for|going to|going over to|"
+    r"over to|to) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?=\s*[,?])",
+    _F,
+)
+
+
+def _asked36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: the question frames above said plainly: 'could you manage' after 'do you
+    think', 'lay X out on S' as 'lay X on S' (X objects only, S one surface), 'is there any chance
+    of X for P' as 'X for P' (X objects only, P one person)."""
+    m = _THINK_MANAGE36.match(text)
+    if m is not None:
+        text = f"{m['ask'].capitalize()} you manage {text[m.end() :]}"
+    if " out " in text:
+        text = _LAID_OUT36.sub(
+            lambda m: (
+                f"{m['v']} {m['x']} {m['on']} {m['s']}"
+                if _things31(m["x"], lexicon) and _surface_only(m["s"], lexicon)
+                else m[0]
+            ),
+            text,
+        )
+    m = _ANY_CHANCE36.match(text)
+    if m is not None and _things31(m["x"], lexicon) and _only_person(m["p"], lexicon):
+        x = m["x"]
+        text = f"{x[0].upper()}{x[1:]} for {m['p']}{text[m.end() :]}"
+    return text
+
+
+# "Would you put the banana on the tray so nobody sits on it?": why it goes there, said of
+# others (a closed list of what someone might do to it where it lies)
+_SO_NOBODY36 = re.compile(
+    r"(?:,\s*|\s+)so (?:that )?(?:nobody|no one|no-one) (?:sits|steps|treads|stands|trips|kneels|"
+    r"leans|sits down|knocks|falls) (?:on|over|in|onto) (?P<pron>it|them)(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+# "… in the plate rack with the others": the place already holds others of the object's kind
+_WITH_OTHERS36 = re.compile(
+    r"(?P<place>\b(?:on|onto|in|into) (?P<s>the [a-z]+(?: [a-z]+)?)) with the (?:others|other "
+    r"ones)(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+
+
+def _why_placed36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: after a placement of one object, 'so nobody sits on it' (the pronoun of the
+    object's number) taken off; 'on S with the others' is 'on S' when S holds another object of
+    the placed object's category where the scene starts."""
+    m = _SO_NOBODY36.search(text)
+    if m is not None:
+        objs = _ids(text[: m.start()], lexicon, "object")
+        if (
+            len(objs) == 1
+            and m["pron"].lower() == "it"
+            and _ids(text[: m.start()], lexicon, "surface")
+        ):
+            text = text[: m.start()] + m["end"].strip()
+    m = _WITH_OTHERS36.search(text)
+    if m is None or not _surface_only(m["s"], lexicon):
+        return text
+    objs = _ids(text[: m.start()], lexicon, "object")
+    if len(objs) != 1:
+        return text
+    (x,) = objs
+    cat = next(o.category for o in lexicon.scene.objects if o.id == x)
+    same = {o.id for o in lexicon.scene.objects if o.category == cat and o.id != x}
+    s = next(iter(_ids(m["s"], lexicon, "surface")))
+    if not same or not starting_on(same, s, lexicon) or starting_on({x}, s, lexicon):
+        return text
+    return text[: m.end("place")] + m["end"].strip()
+
+
+# closing remarks of a closed list, naming nothing and asking nothing: "…, rough poker night",
+# "…, its porridge oclock", "… thx hes the one back from surfing"
+_ROUGH_NIGHT36 = re.compile(
+    r"(?:rough|long|hard|tough|busy|late|heavy|mad|crazy|rotten) (?P<what>[a-z]+ )?"
+    r"(?:night|day|shift|week|weekend)",
+    _F,
+)
+_OCLOCK36 = re.compile(r"(?:it's|its|it is) (?P<what>[a-z]+) (?:o'clock|oclock|o clock|time)", _F)
+_BACK_FROM36 = re.compile(
+    r"(?P<lead>\s+(?:(?:thx|thanks|ta|cheers),?\s+)?|,\s*)(?P<pron>he|she)(?:'s|s| is) the one "
+    r"(?:just )?(?:back from|home from|in from|off to|back off) (?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _closing_remarks36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: a comma part wholly one of the closed remarks above (its words naming nothing
+    and asking nothing) taken off; 'he's the one back from X' closing a request to one person
+    the pronoun may be, taken off."""
+    low = text.lower()
+    if any(w in low for w in ("night", "day", "shift", "week", "clock", "time")):
+
+        def drops(c: str) -> bool:
+            c = c.strip()
+            m = _ROUGH_NIGHT36.fullmatch(c) or _OCLOCK36.fullmatch(c)
+            return m is not None and (m["what"] is None or _asks_nothing29(m["what"], lexicon))
+
+        text = _stretches_dropped(text, drops, lexicon)
+    m = _BACK_FROM36.search(text)
+    if m is not None and _asks_nothing29(m["what"], lexicon):
+        people = _ids(text[: m.start()], lexicon, "human")
+        if len(people) == 1 and _fit36(next(iter(people)), m["pron"], lexicon):
+            text = text[: m.start()] + m["end"].strip()
+    return text
+
+
+# "snack time so its apple for person a and chips for person b": the time of day named by what
+# it is time for, then 'so it's' before the request
+_TIME_SO36 = re.compile(r"^(?P<what>[a-z]+) (?:time|o'clock|oclock),? so (?:it's|its|it is) ", _F)
+# "tom needs the scanner for the last van of the day": what the object is needed for, closing
+_FOR_THE_LAST36 = re.compile(
+    r"\s+for the (?:first|last|next|early|late|morning|afternoon|evening|night) (?P<n>[a-z]+)"
+    r"(?: of the (?:day|night|week|shift|morning|afternoon|evening))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_TIME_NOUNS36 = frozenset(
+    {
+        "day", "night", "week", "month", "year", "hour", "minute", "time", "moment", "while",
+        "bit", "morning", "afternoon", "evening", "weekend", "shift", "round", "go", "turn",
+    }
+)  # fmt: skip
+
+
+def _time_for36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'X time so it's …' opening (X naming nothing and asking nothing) taken off,
+    and 'for the last van (of the day)' closing a want or need of one person (the noun no time
+    and naming nothing) taken off."""
+    m = _TIME_SO36.match(text)
+    if m is not None and _asks_nothing29(m["what"], lexicon) and _names(text[m.end() :], lexicon):
+        text = text[m.end() :]
+    m = _FOR_THE_LAST36.search(text)
+    if m is None or m["n"].lower() in _TIME_NOUNS36 or not _asks_nothing29(m["n"], lexicon):
+        return text
+    before = text[: m.start()]
+    if not re.search(r"\b(?:needs|wants|is after|'s after|could use|could do with)\b", before, _F):
+        return text
+    if len(_ids(before, lexicon, "human")) != 1:
+        return text
+    return before + m["end"].strip()
+
+
+# "The bottle's been asked for by Person B, who runs …, and …": the want said in the passive
+_ASKED_BY36 = re.compile(
+    rf"^(?P<x>{_DET32} [a-z][a-z ]*?)(?:'s| has|'ve| have) been (?:asked for|requested|ordered|"
+    r"bagged|claimed|put aside) by (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?P<aside>,\s*who [^,]+,)?",
+    _F,
+)
+# "The sink is where the green cup ought to be": 'should be' (_where_goes35)
+_WHERE_OUGHT36 = re.compile(
+    rf"\bis where (?P<x>{_DET32} [a-z][a-z ]*?) (?:ought to|has to|must|wants to) (?P<v>be|go)\b",
+    _F,
+)
+# "…, the aquarist left it out", "The coalman left the crisps out, so …": someone of a trade
+# left the object out (where it should not be)
+_LEFT_OUT36 = re.compile(
+    r"(?P<lead>,\s*)(?:the|our|my) (?P<trade>[a-z]+) (?:left|got|took|has left|'s left) "
+    r"(?P<pron>it|them) out(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_LEFT_X_OUT36 = re.compile(
+    rf"^(?:the|our|my) (?P<trade>[a-z]+) (?:left|got|took|has left|'s left) (?P<x>{_DET32} "
+    r"[a-z][a-z ]*?) out,\s*so (?P<req>.+)$",
+    _F,
+)
+
+
+def _plural36(x: str, lexicon: Lexicon) -> bool:
+    return len(_ids(x, lexicon, "object")) > 1 or x.lower().endswith("s")
+
+
+def _wants_said36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'X has been asked for by P' is 'P wants X' (X objects only, P one person);
+    'S is where X ought to be' is 'should be'; a closing '…, the <trade> left it out' taken off
+    (the trade could only describe a person, the pronoun of the objects' number); 'The <trade>
+    left X out, so <request>' is the request, its first pronoun of X's number said as X."""
+    m = _ASKED_BY36.match(text)
+    if m is not None and _things31(m["x"], lexicon) and _only_person(m["p"], lexicon):
+        x = m["x"][0].lower() + m["x"][1:]
+        text = f"{m['p']}{m['aside'] or ''} wants {x}{text[m.end() :]}"
+    text = _WHERE_OUGHT36.sub(
+        lambda m: f"is where {m['x']} should {m['v']}" if _things31(m["x"], lexicon) else m[0], text
+    )
+    m = _LEFT_OUT36.search(text)
+    if m is not None and _trade_words29(m["trade"], lexicon):
+        objs = _ids(text[: m.start()], lexicon, "object")
+        if objs and (m["pron"].lower() == "them" or len(objs) == 1):
+            text = text[: m.start()] + m["end"].strip()
+    m = _LEFT_X_OUT36.match(text)
+    if m is not None and _trade_words29(m["trade"], lexicon) and _things31(m["x"], lexicon):
+        pron = "them" if _plural36(m["x"], lexicon) else "it"
+        req = re.sub(rf"\b{pron}\b", m["x"].lower(), m["req"], count=1, flags=_F)
+        if req != m["req"]:
+            text = req[0].upper() + req[1:]
+    return text
+
+
+# "Person A could use the chips to keep her going at the bonsai show": why the person wants it
+_KEEP_GOING36 = re.compile(
+    r"\s+to keep (?P<pron>her|him|them) going(?: (?:at|through|during|till|until|for|on) "
+    r"(?P<what>(?:the|her|his|their) [a-z]+(?: [a-z]+)?))?(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_SUBJECT36 = re.compile(
+    r"(?:^|[,;.]\s*(?:and\s+)?|\band\s+)(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:could use|could do "
+    r"with|needs|wants|would like|would love|'d like|'d love|is after|'s after) [^,;.]*$"
+)
+
+
+def _keep_going36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'to keep her going (at …)' closing a want of person P taken off, when the
+    pronoun may be P and the place or doing names nothing and asks nothing."""
+    if "going" not in text:
+        return text
+    m = _KEEP_GOING36.search(text)
+    if m is None or (
+        m["what"] is not None and not _asks_nothing29(m["what"].split(" ", 1)[1], lexicon)
+    ):
+        return text
+    s = _SUBJECT36.search(text[: m.start()])
+    if s is None or not _only_person(s["p"], lexicon):
+        return text
+    if m["pron"].lower() == "them" or not _fit36(
+        next(iter(_ids(s["p"], lexicon))), m["pron"], lexicon
+    ):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
+# "Person B's to have the apple, and he'll want the cup with it.": a second object for the one
+# person before, said by a pronoun that may be them
+_WANT_WITH36 = re.compile(
+    rf",?\s*and (?P<pron>he|she)(?:'ll| will) (?:want|need|have|be wanting) (?P<x>{_DET32} "
+    r"[a-z][a-z ]*?)(?: with (?:it|them)| too| as well)(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _want_with36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: ', and he'll want Y with it' after a request of one person P is ', and Y for
+    P' (the pronoun may be P, Y objects only)."""
+    if "'ll " not in text and " will " not in text:
+        return text
+    m = _WANT_WITH36.search(text)
+    if m is None or not _things31(m["x"], lexicon):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _fit36(next(iter(people)), m["pron"], lexicon):
+        return text
+    (p,) = people
+    name = next(h for h in lexicon.scene.humans if h.id == p).name
+    if not _only_person(name, lexicon):
+        return text
+    return f"{text[: m.start()]}, and {m['x']} for {name}{m['end'].strip()}"
+
+
+# a remark about a person run on with no mark before a comma or a new clause (as
+# _run_on_remark26 at the end): "Person A wants the bottle she's been at kickboxing, and …",
+# "Person B gets the bottle he's been waiting ages Person A gets the chips …"
+_RUN_ON_MID36 = re.compile(
+    r"(?<![,.;:!?])\s+(?P<r>(?:he|she)(?:'s| has) been [a-z' ]+?)"
+    r"(?=\s*[,;]|\s+(?:Person [A-Z]|[A-Z][a-z]+) (?:gets|wants|needs|is having|'s having|has)\b)",
+)
+
+# what a person's been doing that is a want ("she's been craving", "he's been after")
+_WANTING36 = re.compile(
+    r"\b(?:crav\w*|dying|gasping|desperate|asking|after|on about|wanting|needing|hoping|keen|"
+    r"itching|begging|waiting (?:for|on)|angling|eyeing|hankering|pining|longing)\b",
+    _F,
+)
+
+
+def _run_on_mid36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: a remark "he's been …" / "she's been …" run on after an object, ending at a
+    comma or before a new clause of a person's want, taken off when it names nothing and holds
+    no word that could ask, point back, negate or order (_RUN_ON_HELD26) or want (_WANTING36),
+    and no word joins it to what is before (_JOINS26); a new clause after it starts a
+    sentence."""
+    if " been " not in text:
+        return text
+
+    def dropped(m: re.Match[str]) -> str:
+        said = re.sub(r"^(?:he|she)(?:'s| has) been", "", m["r"].lower())
+        before = text[: m.start()]
+        if (
+            not _names_nothing(m["r"], lexicon)
+            or _RUN_ON_HELD26.search(said)
+            or _WANTING36.search(said)
+            or re.search(_JOINS26, before, _F)
+            or not _ids(before.rsplit(",", 1)[-1], lexicon, "object")
+        ):
+            return m[0]
+        after = text[m.end() :]
+        return "" if after.lstrip()[:1] in (",", ";") else "."
+
+    return _RUN_ON_MID36.sub(dropped, text)
+
+
+# "…; give them those when you've got a hand free", "… and Alice wants the crisps give them
+# those": the wants said before, asked for again by pronouns
+_GIVE_THEM_THOSE36 = re.compile(
+    r"(?:\s*[;,.]\s*|\s+)(?:so |then |just |now )?(?:give|hand|bring|take) (?:them|'em) "
+    r"(?:those|these|them|what they want|their things)(?: (?:when you(?:'ve| have) got a "
+    r"(?:hand|minute|moment|sec|second) (?:free|spare)|when you get a (?:chance|minute|moment)|"
+    r"when you can|when you're free))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+_WANTS36 = re.compile(
+    r"\b(?:wants|needs|gets|is having|'s having|would like|fancies|is after|'s after)\b", _F
+)
+
+
+def _give_them_those36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'give them those' closing a sentence of wants of two or more people (every
+    clause a want: a verb of wanting, no other verb of the grammar) taken off."""
+    if "them" not in text and "'em" not in text:
+        return text
+    m = _GIVE_THEM_THOSE36.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    if len(_ids(before, lexicon, "human")) < 2 or not _WANTS36.search(before):
+        return text
+    rest = _WANTS36.sub(" ", re.sub(r"\b(?:and|the)\b", " ", before, flags=_F))
+    if any(w in VERBS for w in re.findall(r"[a-z]+", rest.lower())) or _KEEP_WORDS.search(rest):
+        return text
+    return before + m["end"].strip()
+
+
+# "Marco's lost his tongs, get them to him, would you.", "The scissors are Noah's, so bring them
+# over to him.": whose the object is, then the request by pronouns
+_LOST_HIS36 = re.compile(
+    r"^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| has) (?:lost|forgotten|mislaid|misplaced|dropped|"
+    r"left) (?P<pos>his|her|their) (?P<x>[a-z][a-z ]*?),\s*(?:so\s+)?(?P<req>.+)$",
+)
+_ARE_WHOSE36 = re.compile(
+    rf"^(?P<x>{_DET32} [a-z][a-z ]*?) (?:are|is|'s|belongs? to) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)"
+    r"(?:'s)?,\s*so (?P<req>.+)$",
+    _F,
+)
+
+
+def _whose_then36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: the two statements above before a request said by pronouns: the request
+    alone, its one object pronoun (of X's number) said as X and its one person pronoun (which
+    may be P) as P; X objects only, P one person, no other name in the request."""
+    m = _LOST_HIS36.match(text) or _ARE_WHOSE36.match(text)
+    if m is None:
+        return text
+    x = (
+        m["x"]
+        if m["x"].lower().startswith(("the ", "that ", "this ", "those ", "these "))
+        else (f"the {m['x']}")
+    )
+    if not _things31(x, lexicon) or not _only_person(m["p"], lexicon) or _names(m["req"], lexicon):
+        return text
+    p = next(iter(_ids(m["p"], lexicon)))
+    if "pos" in m.groupdict() and not _fit36(p, m["pos"], lexicon):
+        return text
+    obj = "them" if _plural36(x, lexicon) else "it"
+    req = m["req"]
+    if len(re.findall(rf"\b{obj}\b", req, _F)) != 1:
+        return text
+    people = re.findall(r"\b(?:him|her)\b", req, _F)
+    if len(people) != 1 or not _fit36(p, people[0], lexicon):
+        return text
+    req = re.sub(rf"\b{obj}\b", x.lower(), req, count=1, flags=_F)
+    req = re.sub(r"\b(?:him|her)\b", m["p"], req, count=1, flags=_F)
+    return req[0].upper() + req[1:]
+
+
+# "…: the bottle to her first, then the chips, also hers.": the last object's person said again
+# when every step before goes to that one person
+_ALSO_HERS36 = re.compile(
+    r",\s*(?:also|again|likewise) (?P<pron>hers|his|theirs)(?P<end>\s*[.!]?)\s*$", _F
+)
+
+
+def _also_hers36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: ', also hers' closing, taken off when the instruction names one person (the
+    pronoun may be them) and every pronoun before is that person's."""
+    m = _ALSO_HERS36.search(text)
+    if m is None or m["pron"].lower() == "theirs":
+        return text
+    before = text[: m.start()]
+    people = _ids(before, lexicon, "human")
+    if len(people) != 1 or not _fit36(next(iter(people)), before + " " + m["pron"], lexicon):
+        return text
+    return before + m["end"].strip()
+
+
+# "Grey blanket. Mr Lee. His feet are like ice.": how the person is (a closed list of a body's
+# state), a sentence of its own after the request to that person
+_BODY36 = re.compile(
+    r"(?:^|(?<=[.!?])\s+|,\s*)(?P<pron>His|Her|his|her) (?:feet|hands|toes|fingers|nose|ears|"
+    r"hands and feet|feet and hands) (?:are|is|'re) (?:like ice|like blocks of ice|freezing|"
+    r"frozen|icy|cold|perishing|numb)(?P<end>\s*[.!]?)\s*$",
+)
+
+
+def _body_state36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: the closing remark above taken off after a request to one person the pronoun
+    may be."""
+    if (
+        " feet" not in text
+        and " hands" not in text
+        and " toes" not in text
+        and (" fingers" not in text and " nose" not in text and " ears" not in text)
+    ):
+        return text
+    m = _BODY36.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    people = _ids(before, lexicon, "human")
+    if len(people) != 1 or not _fit36(next(iter(people)), m["pron"], lexicon):
+        return text
+    return before.rstrip(" ,") + ("." if before.rstrip()[-1:] not in ".!?" else "")
+
+
+# "Apple to Person A. Cup to Person B. Chips stay put.": an object the request does not name
+# stays where it is (a sentence of its own, after the request)
+_STAY_PUT36 = re.compile(
+    rf"(?:^|(?<=[.!?])\s+)(?P<x>(?:{_DET32} )?[A-Za-z][a-z]*(?: [a-z]+)?) (?:stays?|remains?) "
+    r"(?:put|where (?:it is|they are))(?P<end>\s*[.!]?)\s*$",
+)
+
+
+def _stay_put36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'X stays put.' closing, after a request that names objects, people or
+    surfaces but not X, taken off (X objects only): leaving X is what the request does."""
+    if "stay" not in text and "remain" not in text:
+        return text
+    m = _STAY_PUT36.search(text)
+    if m is None or m.start() == 0:
+        return text
+    x = (
+        m["x"]
+        if m["x"].lower().split()[0] in ("the", "that", "this", "those", "these")
+        else (f"the {m['x'].lower()}")
+    )
+    if not _things31(x, lexicon):
+        return text
+    before = text[: m.start()]
+    if _ids(x, lexicon) & _ids(before, lexicon) or not _names(before, lexicon):
+        return text
+    if _KEEP_WORDS.search(re.sub(r"\b(?:and|the)\b", " ", before, flags=_F)):
+        return text  # 'everything', 'the rest', 'it': the request may take X in
+    return before.rstrip()
+
+
+# "the bottles going to person b": the apostrophe of "bottle's" (is) dropped, where the scene
+# has one bottle (a plural then names nothing) and no verb follows the plural
+_DROPPED_IS36 = re.compile(
+    r"\b(?P<det>the|that|this) (?P<x>[a-z]+)s (?=(?:going|headed|meant|gone|off|for|over|due)\b)",
+    _F,
+)
+
+
+def _dropped_is36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'the Xs going to …' is "the X's going to …" in a text written without
+    apostrophes, when 'the X' names exactly one object of the scene and 'Xs' is only its name
+    said plural (no name of its own)."""
+    if "s " not in text or "'" in text or "’" in text:
+        return text  # a text that writes its apostrophes means the plural it says
+
+    def mended(m: re.Match[str]) -> str:
+        one, many = _names(f"the {m['x']}", lexicon), _names(f"the {m['x']}s", lexicon)
+        if len(one) != 1 or len(many) != 1 or len(one[0].refs) != 1 or len(many[0].refs) != 1:
+            return m[0]
+        (a,), (b,) = one[0].refs, many[0].refs
+        if a.kind != "object" or a.id != b.id or a.plural or not b.plural:
+            return m[0]  # "the chips": a name said plural, no dropped mark
+        return f"{m['det']} {m['x']}'s "
+
+    return _DROPPED_IS36.sub(mended, text)
+
+
+# "…, and likewise the bottle to Person B": 'likewise' before a clause said without its verb
+_LIKEWISE36 = re.compile(rf"\band likewise (?={_DET32} )", _F)
+# "Bob's thirsty he wants the bottle …": the person's state run on into their want, said again
+# by a pronoun that may be them (a closed list of states)
+_STATE_WANTS36 = re.compile(
+    r"^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) (?:thirsty|hungry|starving|peckish|parched|"
+    r"famished|cold|freezing|tired|shattered) (?P<pron>he|she) (?P<v>wants|needs|would like|"
+    r"fancies)\b",
+    _F,
+)
+
+
+def _said_again36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'and likewise X' is 'and X'; "P's thirsty he wants X" is 'P wants X' (P one
+    person the pronoun may be)."""
+    if "likewise" in text.lower():
+        text = _LIKEWISE36.sub("and ", text)
+    m = _STATE_WANTS36.match(text)
+    if (
+        m is not None
+        and _only_person(m["p"], lexicon)
+        and _fit36(next(iter(_ids(m["p"], lexicon))), m["pron"], lexicon)
+    ):
+        text = f"{m['p']} {m['v']}{text[m.end() :]}"
+    return text
+
+
+# "…, the bosun likes things stowed", "…, the coastguard will eat later": what someone of a
+# trade likes or will do, closing (a closed list, naming nothing of the scene)
+_TRADE_REMARK36 = re.compile(
+    r",\s*(?:the|our|my) (?P<trade>[a-z]+) (?:(?:likes|prefers|likes to have|likes to keep) "
+    r"(?:things|everything|it all|stuff) (?:stowed|tidy|neat|put away|shipshape|in order|just so|"
+    r"squared away|off the floor)|(?:will|'ll|is going to) (?:eat|snack|have a snack|have lunch|"
+    r"have tea|have supper) (?:later|in a bit|afterwards))(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+# "…, kendo finishes at six": when someone's activity ends, closing
+_FINISHES_AT36 = re.compile(
+    r",\s*(?P<what>[a-z]+) (?:finishes|ends|starts|kicks off|is over) at (?:one|two|three|four|"
+    r"five|six|seven|eight|nine|ten|eleven|twelve|[0-9]{1,2})(?: o'clock| oclock| ?[ap]m)?"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+# "…, and Person B, the park keeper": a trade of two words whose first is a verb of the
+# grammar said as a noun (after 'the'), the second a doer's word
+_TRADE_COMPOUND36 = re.compile(
+    r"(?P<p>\b(?:Person [A-Z]|[A-Z][a-z]+(?: [A-Z][a-z]+)?)),\s*the (?P<w1>[a-z]+) "
+    r"(?P<w2>[a-z]+(?:er|or|ist|man|woman|keeper|hand|maker))(?=\s*(?:[,.;!?]|$))"
+)
+# "alice first with the bottle and after that …": who goes first, and with what
+_FIRST_WITH36 = re.compile(
+    rf"^(?P<p>(?:person [a-z]|[a-z]+)) first with (?P<x>{_DET32} [a-z][a-z ]*?)"
+    r"(?= and (?:after that|then)\b|,? then\b)",
+    _F,
+)
+
+
+def _trade_said36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: the closing remarks above taken off (the trade could only describe a person,
+    _trade_words29; the activity names nothing and asks nothing) when what is left names
+    something; 'P, the park keeper' is 'P' (P one person, the second word a trade); 'P first
+    with X and after that …' is 'P gets X first and after that …' (P one person, X objects)."""
+    m = _TRADE_REMARK36.search(text)
+    if m is not None and _trade_words29(m["trade"], lexicon) and _names(text[: m.start()], lexicon):
+        text = text[: m.start()] + m["end"].strip()
+    m = _FINISHES_AT36.search(text)
+    if m is not None and _trade_words29(m["what"], lexicon) and _names(text[: m.start()], lexicon):
+        text = text[: m.start()] + m["end"].strip()
+    m = _TRADE_COMPOUND36.search(text)
+    if (
+        m is not None
+        and _only_person(m["p"], lexicon)
+        and m["w1"].lower() in VERBS
+        and _trade_words29(m["w2"], lexicon)
+    ):
+        text = text[: m.end("p")] + text[m.end() :]
+    m = _FIRST_WITH36.match(text)
+    if m is not None and _only_person(m["p"], lexicon) and _things31(m["x"], lexicon):
+        text = f"{m['p']} gets {m['x']} first{text[m.end() :]}"
+    return text
+
+
+# "If everyone could just wait a moment, our robot here is going to place the globe on the
+# desk.": the request announced to the room (the wait asked of everyone else, opening)
+_ANNOUNCED36 = re.compile(
+    r"^(?:(?:if )?(?:everyone|everybody|you all|all of you) (?:could|can|would) (?:just )?(?:wait|"
+    r"hold on|bear with (?:me|us)) (?:a|one) (?:moment|minute|second|sec|tick|mo),\s*)?"
+    r"(?:our|the|this|my) robot(?: here| friend)? (?:is going to|'s going to|is about to|will|"
+    r"'ll) (?=(?:give|hand|pass|bring|take|deliver|put|place|set|pop|move)\b)",
+    _F,
+)
+
+
+def _announced36(text: str, lexicon: Lexicon) -> str:
+    """Session 36: 'our robot (here) is going to <verb> …' (after a wait asked of everyone) is the
+    request '<verb> …' (a verb of the grammar's hand-overs and placements)."""
+    if "robot" not in text.lower():
+        return text
+    m = _ANNOUNCED36.match(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    return rest[0].upper() + rest[1:]
+
+
+_STEPS36: tuple[Callable[[str, Lexicon], str], ...] = (
+    _courtesies36,
+    _asked36,
+    _why_placed36,
+    _closing_remarks36,
+    _time_for36,
+    _wants_said36,
+    _keep_going36,
+    _want_with36,
+    _run_on_mid36,
+    _said_again36,
+    _give_them_those36,
+    _whose_then36,
+    _also_hers36,
+    _body_state36,
+    _stay_put36,
+    _trade_said36,
+    _announced36,
+)
+# before every other rewrite: whether the text writes apostrophes is asked of the words as said
+_STEPS36_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_dropped_is36,)
+
+
 # "If you'd be so good as to take the jug to Mrs Khan, that'd be grand.": a request said as a
 # condition of the speaker's pleasure (asks the same as 'Would you be so good as to …?')
 _IF_SO_GOOD28 = re.compile(
@@ -26814,6 +27501,8 @@ _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
 
 
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
+    # session 36 (12): an apostrophe dropped (asked of the text as said)
+    *_STEPS36_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
@@ -26909,6 +27598,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _a_typo28,
     _handed28,
     _since28,
+    # session 36 (12): blind34's kinds
+    *_STEPS36,
     # session 35 (12): blind33's kinds
     *_STEPS35,
     # session 34 (12): blind32's kinds
