@@ -1788,7 +1788,7 @@ def _remarks(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
     return list(fuzz.remarks("t", entry, scene, random.Random(seed)))
 
 
-def _filled(forms: tuple[str, ...], scene: Scene) -> list[str]:
+def _remarks_filled(forms: tuple[str, ...], scene: Scene) -> list[str]:
     """``forms`` with {p} (and {P}) filled by every name of every person of ``scene``, as said or
     in lower or upper case (CONTRARY), or as they are (REMARKS, TIMED)."""
     names = {
@@ -1800,7 +1800,7 @@ def _filled(forms: tuple[str, ...], scene: Scene) -> list[str]:
 def _remark_said(forms: tuple[str, ...], text: str, entry: str, scene: Scene) -> str:
     """The form of ``forms`` (its {p}/{P} filled) ``text`` says after ``entry``, whose closing "."
     or "!" goes (a question keeps its "?"); fails where there is none."""
-    for form in _filled(forms, scene):
+    for form in _remarks_filled(forms, scene):
         said = form[1:] if entry.endswith("?") else form
         if text in (entry + said, entry.rstrip(".!") + said):
             return form
@@ -1904,7 +1904,7 @@ def test_over_the_corpus_each_remark_variant_names_what_it_says() -> None:
         assert v.must == "refuse" or v.form == "remark"
         kinds[v.form] += 1
         forms = {"remark": fuzz.REMARKS, "time": fuzz.TIMED, "contrary": fuzz.CONTRARY}[v.form]
-        said = [f for f in _filled(forms, scene) if v.text.endswith(f.lstrip("."))]
+        said = [f for f in _remarks_filled(forms, scene) if v.text.endswith(f.lstrip("."))]
         assert said, v.text
         if v.form == "contrary":  # the remark says the one person the rest of the text says
             (form,) = said
