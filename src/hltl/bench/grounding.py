@@ -120,7 +120,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # who change the grounder before its one measurement at the end of session 34; tuned on in
 # session 35), blind34 (written in session 35 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of
-# session 35; its one wrong reading fixed and tuned on in session 36).
+# session 35; its one wrong reading fixed and tuned on in session 36), blind35 (written in
+# session 36 by another engineer and committed alone, never opened by the engineers who change
+# the grounder before its one measurement at the end of session 36; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -172,6 +174,7 @@ PARTS = (
     "blind32",
     "blind33",
     "blind34",
+    "blind35",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
