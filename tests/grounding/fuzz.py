@@ -64,7 +64,11 @@ has several objects of said with a count or "both" for a person ("Give Bob the t
 one of the kind to that person where the count agrees with the scene, refused where it does not
 ("the three mugs" of two, "both pens" of three); an entry's one-of-a-kind object said as the only
 one ("the one apple": the entry) or as several ("both apples": refused); and an entry's kind in the
-plural ("the mugs") said with its count (the entry) or another one (refused).
+plural ("the mugs") said with its count (the entry) or another one (refused). A thirteenth family
+(session 36), remarks: a remark after an entry that names nothing of the scene and asks nothing
+(", the heating's off", ". It's for the bake sale."): as the entry, or refused; a delay after it
+(", after lunch", ", once the meeting's over"): refused; and, for an entry of one handover naming
+its one person, that person said not to want it (", Bob doesn't want it"): refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -560,6 +564,43 @@ ONE = ("the one {o}", "the only {o}", "the single {o}")
 SEVERAL = ("both {os}", "the two {os}", "all three {os}", "the 2 {os}")
 MASS = frozenset(["glue", "salt", "tape", "water", "juice", "milk", "rice", "soup", "sugar"])
 COUNT_FORMS = ("kind", "kind miscounted", "one", "several", "entry", "entry miscounted")
+# remarks (session 36; blind34 had "she's frozen, the heating's off on this side", "rough poker
+# night" and "the whole lot's for the same van" among its refusals): a remark after an entry that
+# names no object, person or surface of the scene and carries no request, negation, time or
+# condition (REMARKS: the entry, or refused; a refused entry stays refused with its readings); a
+# remark that says the one person an entry hands its one object to does not want it (CONTRARY:
+# refused, a careful person asks); and a delay after an entry (TIMED: refused, doing it now does not
+# wait for it, as docs/grounding.md's "what it is for, and by when" has it). After a question only
+# the ". " forms, each a sentence of its own. No "but" or "though" before CONTRARY's remark: a
+# concession ("…, though Bob said not to bother": do it anyway) is a reading a careful person may
+# take, so it would be no clear refusal.
+REMARKS = (
+    ", the heating's off",
+    ", it's for the bake sale",
+    ", it's been one of those days",
+    ", the lift's out again",
+    ", we're a bit short-staffed",
+    ", I've got my hands full",
+    ". The heating's off.",
+    ". It's for the bake sale.",
+    ". We're a bit short-staffed today.",
+)
+CONTRARY = (  # {p} the entry's one person as it says them ({P}: at a sentence's start)
+    ", {p} doesn't want it",
+    ", {p} said no to it",
+    ". {P} doesn't want it.",
+    ". {P} said no to it.",
+)
+TIMED = (
+    ", after lunch",
+    ", but not until after lunch",
+    ", first thing tomorrow",
+    ", once the meeting's over",
+    ", when I get back from the shops",
+    ". Not until this afternoon, though.",
+    ". But only once the meeting's over.",
+)
+REMARK_FORMS = ("remark", "time", "contrary")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -573,6 +614,7 @@ Family = Literal[
     "deferrals",
     "clefts",
     "counts",
+    "remarks",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -1122,6 +1164,25 @@ def _then(text: str, form: str) -> str:
     return text.rstrip(".!") + form
 
 
+def _one_person_said(text: str, want: Node | None, scene: Scene) -> tuple[str, Task] | None:
+    """For ``text`` grounded as one handover (``want``) naming its one person by a name once and
+    no other person or object, and no pronoun for a person: that name as ``text`` says it, and the
+    handover; else None."""
+    said_at = _people_said(text, scene)
+    if (
+        isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and not _words(text) & _PRONOUNS
+        and len(said_at) == 1
+        and _named(text, scene, "human") == {want.target}
+        and _named(said_at[0][0], scene, "human") == {want.target}
+        and _objects_named(text, scene) <= {want.obj}
+    ):
+        return said_at[0][0], want
+    return None
+
+
 def afterthoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
     """The afterthought variants of one entry. For a grounded entry of one handover naming its
     one person by a name and no other person or object (and no pronoun for a person): that person
@@ -1142,23 +1203,13 @@ def afterthoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> 
         must: Must = "same" if to is not None else "refuse"
         return Variant(part, entry.scene, said, to, must, "afterthoughts", (), form)
 
-    said_at = _people_said(text, scene)
-    if (
-        isinstance(want, Task)
-        and want.kind == "deliver"
-        and want.target is not None
-        and not takes_back
-        and not pronoun
-        and len(said_at) == 1
-        and _named(text, scene, "human") == {want.target}
-        and _named(said_at[0][0], scene, "human") == {want.target}
-        and _objects_named(text, scene) <= {want.obj}
-    ):
-        others = [h.id for h in scene.humans if h.id != want.target]
+    said = _one_person_said(text, want, scene)
+    if said is not None and not takes_back:
+        p, handover = said
+        others = [h.id for h in scene.humans if h.id != handover.target]
         if others:
-            p = said_at[0][0]
             q = _name(scene, rng.choice(others))
-            to = Task("deliver", want.obj, _one_id(q, scene))
+            to = Task("deliver", handover.obj, _one_id(q, scene))
             forms = [f for f in RECIPIENT_FIXES if plain_end or f.startswith(". ")]
             yield variant(_then(text, rng.choice(forms).format(p=p, q=q)), to, "recipient")
             form, reason = rng.choice(forms).format(p=p, q=q), rng.choice(REASONS)
@@ -1611,6 +1662,33 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
             yield variant(said, to, "entry" if agree else "entry miscounted")
 
 
+def remarks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The remark variants of one entry: a remark naming nothing of the scene after it (REMARKS:
+    as the entry, or refused; a refused entry stays refused with its readings), a delay after it
+    (TIMED: refused), and, for a grounded entry of one handover naming its one person by a name and
+    no other person or object (and no pronoun for a person), that person said not to want it
+    (CONTRARY: refused). After a question only the ". " forms."""
+    text = entry.text.strip()
+    question = text.endswith("?")
+
+    def said(forms: tuple[str, ...]) -> list[str]:  # (CONTRARY's person left out)
+        plain = [f for f in forms if not question or f.startswith(". ")]
+        return [f for f in plain if _names_nothing(re.sub(r"\{[pP]\}", "", f), scene)]
+
+    def variant(form: str, to: Node | None, readings: tuple[str, ...], name: str) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, _then(text, form), to, must, "remarks", readings, name)
+
+    if forms := said(REMARKS):
+        yield variant(rng.choice(forms), entry.want, entry.readings, "remark")
+    if forms := said(TIMED):
+        yield variant(rng.choice(forms), None, (), "time")
+    one = _one_person_said(text, entry.want, scene)
+    if one is not None and (forms := said(CONTRARY)):
+        p = one[0]
+        yield variant(rng.choice(forms).format(p=p, P=p[:1].upper() + p[1:]), None, (), "contrary")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -1687,6 +1765,7 @@ def generated(
     rng_defer = random.Random(f"deferrals:{seed}")
     rng_clefts = random.Random(f"clefts:{seed}")
     rng_counts = random.Random(f"counts:{seed}")
+    rng_remarks = random.Random(f"remarks:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -1728,6 +1807,9 @@ def generated(
                     yield v, scene
             if "counts" in families:
                 for v in counts(part, entry, scene, rng_counts):
+                    yield v, scene
+            if "remarks" in families:
+                for v in remarks(part, entry, scene, rng_remarks):
                     yield v, scene
 
 

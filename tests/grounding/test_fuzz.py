@@ -25,7 +25,9 @@ cleft after an entry: the entry and that handover; a placement's surface in a cl
 placement), the count family of session 35 (a kind of several said with its count or "both": every
 one of it; with another count: refused; an entry's one-of-a-kind object said as the only one: the
 entry; as several: refused; an entry's kind in the plural said with its count: the entry; with
-another: refused), and the wrappers and take-backs of a seed unchanged by them."""
+another: refused), the remark family of session 36 (a remark naming nothing of the scene after an
+entry: the entry; a delay after it, or the one person it hands its one object to said not to want
+it: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -193,7 +195,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
 
 
 @pytest.mark.parametrize(
-    "family", ["wrappers", "takebacks", "exclusions", "tails", "asides", "afterthoughts"]
+    "family", ["wrappers", "takebacks", "exclusions", "tails", "asides", "afterthoughts", "remarks"]
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
@@ -209,7 +211,10 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err
     assert "error: --families: no family called 'nope'" in err
     assert "expected some of ('wrappers', 'takebacks', 'references', 'exclusions', 'tails', " in err
-    assert "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts')" in err
+    assert (
+        "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
+    )
+    assert "'remarks')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -1774,3 +1779,136 @@ def test_over_the_corpus_each_count_variant_names_what_it_says() -> None:
                 ids = plurals[cs][1]
                 assert isinstance(v.want, Group) and {t.obj for t in tasks(v.want)} == set(ids)
     assert min(kinds.values()) >= 2 and kinds["one"] >= 30, kinds
+
+
+# -- remarks (session 36) --------------------------------------------------------------------------
+
+
+def _remarks(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.remarks("t", entry, scene, random.Random(seed)))
+
+
+def _remarks_filled(forms: tuple[str, ...], scene: Scene) -> list[str]:
+    """``forms`` with {p} (and {P}) filled by every name of every person of ``scene``, as said or
+    in lower or upper case (CONTRARY), or as they are (REMARKS, TIMED)."""
+    names = {
+        m for h in scene.humans for n in (h.name, *h.aliases) for m in (n, n.lower(), n.upper())
+    }
+    return sorted({f.format(p=n, P=n[:1].upper() + n[1:]) for f in forms for n in names})
+
+
+def _remark_said(forms: tuple[str, ...], text: str, entry: str, scene: Scene) -> str:
+    """The form of ``forms`` (its {p}/{P} filled) ``text`` says after ``entry``, whose closing "."
+    or "!" goes (a question keeps its "?"); fails where there is none."""
+    for form in _remarks_filled(forms, scene):
+        said = form[1:] if entry.endswith("?") else form
+        if text in (entry + said, entry.rstrip(".!") + said):
+            return form
+    raise AssertionError(f"{text!r} is not {entry!r} and one of {forms}")
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_an_entry_of_one_handover_gets_a_remark_a_delay_and_a_contrary_remark(seed: int) -> None:
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    remark, timed, contrary = _remarks(entry, CELL, seed)
+    assert [v.form for v in (remark, timed, contrary)] == list(fuzz.REMARK_FORMS)
+    assert all(v.family == "remarks" for v in (remark, timed, contrary))
+    # a remark naming nothing: the entry
+    assert remark.want == entry.want and remark.must == "same"
+    _remark_said(fuzz.REMARKS, remark.text, entry.text, CELL)
+    # a delay, and the person said not to want it: refused (any refusal will do)
+    for v, forms in ((timed, fuzz.TIMED), (contrary, fuzz.CONTRARY)):
+        assert v.want is None and v.must == "refuse" and v.readings == ()
+        said = _remark_said(forms, v.text, entry.text, CELL)
+        assert ("Bob" in said) is (forms is fuzz.CONTRARY)
+    assert _people_named(contrary.text, CELL) == {"B"}
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_after_a_question_a_remark_is_a_sentence(seed: int) -> None:
+    entry = _entry("cell", "Could you give Carol the bottle?", "bottle>C")
+    made = _remarks(entry, CELL, seed)
+    assert [v.form for v in made] == list(fuzz.REMARK_FORMS)
+    for v in made:
+        assert v.text.startswith("Could you give Carol the bottle? ")
+        assert v.text[len("Could you give Carol the bottle? ")].isupper()
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the apple and the cup.", "apple>B & cup>B"),  # two objects: "it" is which?
+        ("Give Bob the apple or the cup.", "apple>B | cup>B"),  # a choice
+        ("Put the apple on the shelf.", "apple@shelf"),  # no person
+        ("Bob wants the apple, give it to him.", "apple>B"),  # a pronoun for the person
+        ("Give Bob the apple, not Alice.", "apple>B"),  # another person named
+        ("Give Bob the apple, not the cup.", "apple>B"),  # another object named
+    ],
+)
+def test_a_contrary_remark_is_only_made_of_an_entry_naming_its_one_person(
+    text: str, want: str
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        assert [v.form for v in _remarks(entry, CELL, seed)] == ["remark", "time"]
+
+
+def test_a_refused_entry_stays_refused_with_its_readings_and_gets_no_contrary_remark() -> None:
+    entry = Entry("cell", "Give her the mug.", None, ("mug_red", "mug_blue"))
+    for seed in range(10):
+        remark, timed = _remarks(entry, CELL, seed)
+        assert remark.must == "refuse" and remark.want is None
+        assert remark.readings == entry.readings and timed.readings == ()
+        assert fuzz.verdict(remark, CELL) in ("refused", "unclear")
+
+
+def test_a_remark_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "lift", "category": "lift", "position": [0.5, 0.5, 0.05]})
+    raw["objects"].append({"id": "tin", "category": "tin", "position": [0.5, 0.6, 0.05]})
+    raw["objects"][-1]["aliases"] = ["lunch box", "lunch"]
+    raw["objects"].append({"id": "radiator", "category": "radiator", "position": [0.5, 0.7, 0.05]})
+    raw["objects"][-1]["aliases"] = ["heating"]
+    scene = scene_from_dict(raw)
+    assert not fuzz._names_nothing(", the lift's out again", scene)
+    assert not fuzz._names_nothing(", the heating's off", scene)
+    assert fuzz._names_nothing(", it's for the bake sale", scene)
+    entry = _entry("cell", "Give Alice the cup.", "cup>A")
+    seen = set()
+    for seed in range(60):
+        for v in _remarks(entry, scene, seed):
+            seen.add(v.form)
+            assert not re.search(r"(?i)\b(?:lift|lunch|heating)\b", v.text), v.text
+    assert seen == set(fuzz.REMARK_FORMS)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("Give Alice the cup, the heating's off", "cup>A", "remark", "exact"),
+        ("Give Alice the cup, the heating's off", "cup>B", "remark", "wrong"),
+        ("Give Alice the cup, the heating's off", None, "time", "wrong"),  # read where refused
+        ("Give Alice the cup, after lunch", None, "time", "refused"),
+    ],
+)
+def test_a_remark_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "remarks", form) == verdict
+
+
+def test_over_the_corpus_each_remark_variant_names_what_it_says() -> None:
+    kinds = dict.fromkeys(fuzz.REMARK_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=36, every=2, families=("remarks",)):
+        assert v.family == "remarks" and (v.must == "refuse") is (v.want is None)
+        assert v.must == "refuse" or v.form == "remark"
+        kinds[v.form] += 1
+        forms = {"remark": fuzz.REMARKS, "time": fuzz.TIMED, "contrary": fuzz.CONTRARY}[v.form]
+        said = [f for f in _remarks_filled(forms, scene) if v.text.endswith(f.lstrip("."))]
+        assert said, v.text
+        if v.form == "contrary":  # the remark says the one person the rest of the text says
+            (form,) = said
+            rest = _people_named(v.text[: -len(form.lstrip("."))], scene)
+            (named,) = fuzz._people_said(form, scene)  # (the lexer joins "Bob said" as unknown)
+            assert len(rest) == 1 and {_one_person(named[0], scene)} == rest, v.text
+    assert min(kinds.values()) >= 30, kinds
