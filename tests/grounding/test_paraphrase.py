@@ -182,7 +182,6 @@ KNOWN_MISSES = frozenset(
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        'Both plates onto the counter, Marco wants to plate up the goulash.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         'knife on the worktop please, the guests want it by their bread',

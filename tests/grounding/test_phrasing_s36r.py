@@ -218,6 +218,14 @@ test_counted_remarks = CASES.test(
     ("Both blocks to Ava, Lily wants to stack them.", None, NURSERY),
     ("Both blocks up on the high chair, Lily wants to have them.", None, NURSERY),
     ("Both blocks up on the high chair, the dog wants to stack them.", None, NURSERY),
+    # blind22's "…, Marco wants to plate up the goulash" (a dish the scene lacks)
+    (
+        "Both plates onto the counter, Marco wants to plate up the goulash.",
+        "plate_white@counter & plate_blue@counter",
+        KITCHEN,
+    ),
+    ("Both plates onto the counter, Marco wants to plate up the lemon.", None, KITCHEN),
+    ("Both plates to Lena, Marco wants to plate up the goulash.", None, KITCHEN),
     # a state of something outside the scene
     (
         "Both blankets to Mrs Khan, she's frozen, the heating's off on this side.",

@@ -27225,19 +27225,23 @@ def _them_remark36r(text: str, lexicon: Lexicon) -> str:
 # "Both blocks up on the high chair, Lily wants to stack them."
 _WANTS_TO_V36R = re.compile(
     r",\s*(?P<p>[a-z][\w ]*?) (?:wants|needs|is going|'s going|would like|'d like) to "
-    r"(?:stack|sort|count|line up|build with|play with|paint|colour|color|look at|tidy|check|"
-    r"label|dry|clean|wash) (?:them|those|it)(?: up| out)?(?P<end>\s*[.!]?)$",
+    r"(?:(?:stack|sort|count|line up|build with|play with|paint|colour|color|look at|tidy|check|"
+    r"label|dry|clean|wash) (?:them|those|it)(?: up| out)?|(?:plate|dish|serve) up(?P<what> the "
+    r"[a-z]+)?)(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _wants_to_v36r(text: str, lexicon: Lexicon) -> str:
-    """Session 36 (12r): "Both blocks up on the high chair, Lily wants to stack them": after a
-    request that only places objects (on a surface it names), what a person of the scene wants to
-    do with them there is why: taken off (a request that hands anything to anyone is left)."""
+    """Session 36 (12r): "Both blocks up on the high chair, Lily wants to stack them" (or "…,
+    Marco wants to plate up the goulash"): after a request that only places objects (on a surface
+    it names), what a person of the scene wants to do with them there is why: taken off (a request
+    that hands anything to anyone is left, and so is a dish that names a scene object)."""
     m = _WANTS_TO_V36R.search(text)
     if m is None or not _only_person(m["p"], lexicon):
         return text
+    if m["what"] and not _names_nothing(m["what"], lexicon):
+        return text  # "Marco wants to plate up the lemon": the lemon may be asked for
     head = text[: m.start()]
     done = _tasks_of(head, lexicon)
     if not done or any(kind != "place" for kind, _, _ in done):
