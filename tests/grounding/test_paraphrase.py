@@ -213,7 +213,6 @@ KNOWN_MISSES = frozenset(
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
         "Any book not yet on the bookshelf wants shelving.",
-        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',

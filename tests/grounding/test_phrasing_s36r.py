@@ -325,6 +325,15 @@ test_corrections = CASES.test(
     ("Take the jug to, erm, what's her name, Mr Lee.", None, WARD),
     ("Take the jug to, erm, what's her name, the patient.", None, WARD),
     ("Take the bottle to, erm, what's her name.", None, ONE),
+    # blind26's "the, sorry, where was I, the bottle, yes, the bottle"
+    (
+        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
+        "bottle>A",
+        ONE,
+    ),
+    ("Give Person A the, erm, what's it called, the bottle.", "bottle>A", ONE),
+    ("Give Person A the, sorry, where was I, the pear.", None, ONE),
+    ("Give Person A the, sorry, where was I, the bottle, yes, the apple.", None, SQ),
     # "…, no, the tray, sorry, the sink's full"
     ("Sponge in the sink, no, the tray, sorry, the sink's full.", "sponge@tray", LAB),
     ("Sponge in the sink, no, the tray, sorry, the tray's full.", None, LAB),

@@ -27330,6 +27330,31 @@ def _only_chew36r(text: str, lexicon: Lexicon) -> str:
         return text
     return f"{text[: m.start()]}{m['end'] or '.'}"
 
+# "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A."
+_WHERE_WAS_I36R = re.compile(
+    r"\bthe,\s*(?:(?:sorry|erm|um|er|uh),?\s*)*(?:where was i|what's it called|what do you call "
+    r"it),\s*(?P<x>the [a-z]+(?: [a-z]+)?)(?:,\s*(?:yes|yeah|that's it),\s*(?P<again>the [a-z]+"
+    r"(?: [a-z]+)?))?(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _where_was_i36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "the, sorry, where was I, the bottle, yes, the bottle" is "the bottle":
+    the speaker lost for the word after 'the', then saying it (one whole object, said again the
+    same if at all)."""
+    if "the," not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if not _whole_name(m["x"], lexicon, "object"):
+            return m[0]
+        if m["again"] and _ids(m["again"], lexicon) != _ids(m["x"], lexicon):
+            return m[0]
+        return m["x"]
+
+    return _WHERE_WAS_I36R.sub(said, text)
+
 
 _STEPS36R: tuple[Callable[[str, Lexicon], str], ...] = (
     _one_thing_listed36r,
@@ -27358,6 +27383,7 @@ _STEPS36R: tuple[Callable[[str, Lexicon], str], ...] = (
     _same_van36r,
     _her_ones36r,
     _only_chew36r,
+    _where_was_i36r,
 )
 
 
