@@ -181,7 +181,6 @@ KNOWN_MISSES = frozenset(
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
-        'Both plates onto the counter, Marco wants to plate up the goulash.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         'knife on the worktop please, the guests want it by their bread',
@@ -213,7 +212,6 @@ KNOWN_MISSES = frozenset(
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
         "Any book not yet on the bookshelf wants shelving.",
-        "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A.",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
@@ -230,39 +228,6 @@ KNOWN_MISSES = frozenset(
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
-        "Bring Person B just one thing, the cup, the apple or the bottle, he's not bothered which.",
-        'The apple goes to whichever of the two of them you reach first.',
-        "Either Person A or Person B, the bottle's for one of them, you choose.",
-        "One apiece: Person A is to have the chips and Person B the bottle, they're back from the "
-        "beach.",
-        "There's only the one bottle and only Person A to give it to, so off it goes to her.",
-        "Person B won't mind if it's the bottle or the chips, just bring him whichever's closer.",
-        "Each patient is to have a blanket, Mr Lee the blue and Mrs Khan the grey, it's nippy on "
-        "the ward tonight.",
-        "Lily can have any one of her blocks, she'll only chew it.",
-        "Kofi says either spanner will do, he's not fussy.",
-        'Put the two mugs on the shelf, the busboy keeps knocking them over.',
-        "Two people, two things: the bottle's Person B's, and the chips are Person A's, hand them "
-        "over.",
-        "Just the single bottle, to Person A, that's her ration for the fell race.",
-        "There's a single bottle about, take it to Person A, she's the drayman.",
-        'All three pens in the box, the compositor keeps nicking them.',
-        "Both blankets to Mrs Khan, she's frozen, the heating's off on this side.",
-        "The three boxes onto the belt, the whole lot's for the same van.",
-        'Both blocks up on the high chair, Lily wants to stack them.',
-        'Both spanners into the locker, the pipefitter borrowed them and never said.',
-        "Not the bottle, the crisps, Bob's the one who's peckish.",
-        "The bottle isn't Person B's, it's Person A's, take it to her.",
-        'No need for anything fancy, just the bottle to Person A.',
-        'The blue pen stays put on the desk, but the black one and the red one belong in the box.',
-        'Mr Lee gets the jug but not the tablets, those are for Mrs Khan.',
-        "Except for the big box, stack every other thing on the pallet, it's all going out "
-        "together.",
-        "Apart from the baby wipes, move the whole lot up onto the high chair, the dog's about.",
-        'Bob gets the chips, scratch that, Alice does, she won the bet.',
-        "Take the bottle to, erm, what's her name, Person A, that's it.",
-        "Sponge in the sink, no, the tray, sorry, the sink's full.",
-        "Take Lena the lemon, no hang on, it's the salt she wants.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -26975,7 +26975,7 @@ def _meant_for35r(text: str, lexicon: Lexicon) -> str:
     if m is None or not _whole_name(m["x"], lexicon, "object"):
         return text
     people = _ids(text[: m.start()], lexicon, "human")
-    if len(people) != 1 or not _fits(next(iter(people)), m["pro"], lexicon):
+    if len(people) != 1 or not _may_be35t(next(iter(people)), m["pro"], lexicon):
         return text
     return f"{text[: m.start()]}{m['said']}{m['end'] or '.'}"
 
@@ -27387,6 +27387,700 @@ def _isnt_on35r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}that is not {m['p']} {m['s']}{text[m.end() :]}"
 
 
+# -- session 36 (12r): blind34's choices, counts, negation, exclusions and corrections ----------
+
+
+def _the_one36r(words: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` name one person that he/she ``pronoun`` ('' for none) may be: by title,
+    first name or a word for kin (session 35's check, used to rule a reading out)."""
+    if not _only_person(words, lexicon):
+        return False
+    return not pronoun or _may_be35t(next(iter(_ids(words, lexicon))), pronoun, lexicon)
+
+
+# "Bring Person B just one thing, the cup, the apple or the bottle": one thing, then the choice
+_ONE_THING_LISTED36R = re.compile(
+    r"\b(?:just |only )?(?:one|a single) (?:thing|item),\s*(?P<list>(?:the [a-z]+(?: [a-z]+)?,\s*)+"
+    r"(?:the [a-z]+(?: [a-z]+)?,?\s*)?or (?:the [a-z]+(?: [a-z]+)?))(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _one_thing_listed36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "one thing, the cup, the apple or the bottle" is "one of the cup, the
+    apple or the bottle" (a choice among the objects listed after it, each named whole, the last
+    joined by 'or'; a list joined by 'and' stays, and is refused: one thing, then several)."""
+    if " or " not in text.lower():
+        return text
+
+    def one_of(m: re.Match[str]) -> str:
+        said = [w for w in re.split(r",\s*|\s+or\s+", m["list"]) if w.strip()]
+        if len(said) < 2 or not all(_whole_name(w, lexicon, "object") for w in said):
+            return m[0]
+        if len({i for w in said for i in _ids(w, lexicon)}) != len(said):
+            return m[0]
+        return f"one of {m['list']}"
+
+    return _ONE_THING_LISTED36R.sub(one_of, text)
+
+
+# "The apple goes to whichever of the two of them you reach first": the robots choose the person
+_WHICHEVER_OF_THEM36R = re.compile(
+    r"\bto whichever (?:one )?of (?P<two>the two of )?them (?:you (?:reach|get to|come to) first|"
+    r"(?:is|'s) (?:nearer|nearest|closer|closest|handier))(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _whichever_of_them36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "to whichever of (the two of) them you reach first / is nearer" is "to
+    either of them" (the choice of person left to the robots, as 'either of them' leaves it);
+    with "the two of them" only in a scene of two people."""
+    if "whichever" not in text.lower():
+        return text
+
+    def either(m: re.Match[str]) -> str:
+        if m["two"] and len(lexicon.scene.humans) != 2:
+            return m[0]
+        return "to either of them"
+
+    return _WHICHEVER_OF_THEM36R.sub(either, text)
+
+
+# "Either Person A or Person B, the bottle's for one of them, you choose."
+_EITHER_THEN_ONE36R = re.compile(
+    r"^either (?P<p>[a-z][\w ]*?) or (?P<q>[a-z][\w ]*?),\s*(?P<x>the [a-z]+(?: [a-z]+)?)"
+    r"(?:'s| is) (?:for|going to) (?:one|either) of (?:them|the two)(?P<end>\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _either_then_one36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Either P or Q, the X's for one of them" is "The X's for P or Q" (P and
+    Q two people, the X one whole object)."""
+    m = _EITHER_THEN_ONE36R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    x = m["x"][:1].upper() + m["x"][1:]
+    return f"{x} is for {m['p']} or {m['q']}{m['end']}{text[m.end() :]}"
+
+
+# "Person B won't mind if it's the bottle or the chips, just bring him whichever's closer."
+_MIND_IF36R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?) (?:won't|doesn't|wouldn't|will not|does not|would not) mind if "
+    r"it(?:'s| is) (?P<x>the [a-z]+(?: [a-z]+)?) or (?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:so )?"
+    r"(?:just )?(?P<v>bring|give|take|hand) (?P<pro>him|her) whichever(?:'s| is) (?P<adj>closer|"
+    r"nearer|nearest|closest|handier|easier)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _mind_if36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "P won't mind if it's X or Y, just bring him whichever's closer" is
+    "Bring P X or Y, whichever's closer" (P one person the pronoun may be; X and Y two objects,
+    each whole)."""
+    m = _MIND_IF36R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    v = m["v"][:1].upper() + m["v"][1:]
+    return f"{v} {m['p']} {m['x']} or {m['y']}, whichever is {m['adj']}{m['end'] or '.'}"
+
+
+# "Kofi says either spanner will do, he's not fussy."
+_SAYS_WILL_DO36R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?) says (?P<x>(?:either|any) (?:one of the )?[a-z]+) (?:will|would) do"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _says_will_do36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "P says either spanner will do" is "Either spanner will do for P" (the
+    choice is P's own, so it is for P: one person)."""
+    m = _SAYS_WILL_DO36R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = m["x"][:1].upper() + m["x"][1:]
+    return f"{x} will do for {m['p']}{text[m.end() :]}"
+
+
+# "One apiece: Person A is to have the chips and Person B the bottle"
+_ONE_APIECE36R = re.compile(r"^one (?:apiece|each)\s*:\s*(?=\S)", _F)
+
+
+def _one_apiece36r(text: str, _lexicon: Lexicon) -> str:
+    """Session 36 (12r): a heading "One apiece:" / "One each:" before a list is "One thing
+    apiece:" (session 28's heading: the list read alone only when it gives every person of the
+    scene exactly one object)."""
+    m = _ONE_APIECE36R.match(text)
+    return text if m is None else f"One thing apiece: {text[m.end() :]}"
+
+
+# "Two people, two things: the bottle's Person B's, and the chips are Person A's, hand them over."
+_PEOPLE_THINGS36R = re.compile(
+    r"^(?P<n>two|three|four) (?:people|persons),\s*(?P<m>two|three|four) (?:things|items)\s*:"
+    r"\s*(?P<rest>.+?)(?:,\s*(?:and )?(?:hand|give|pass) (?:them|those) (?:over|out|round))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+_WHOSE36R = re.compile(
+    r"\b(?P<x>the [a-z]+(?: [a-z]+)?)(?:'s| is| are) (?P<p>[a-z][\w ]*?)'s\b", _F
+)
+
+
+def _people_things36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): a heading "Two people, two things:" counts both: the list after it
+    ("the bottle's Person B's, and the chips are Person A's", whose a thing is being who gets it;
+    a closing "hand them over" asks for those hand-overs) is read alone when it hands over exactly
+    that many objects to exactly that many people (else left, and refused)."""
+    m = _PEOPLE_THINGS36R.match(text)
+    if m is None:
+        return text
+
+    def whose(w: re.Match[str]) -> str:
+        if not _only_person(w["p"], lexicon) or not _whole_name(w["x"], lexicon, "object"):
+            return w[0]
+        return f"{w['x']} to {w['p']}"
+
+    rest = _WHOSE36R.sub(whose, m["rest"])
+    rest = rest[:1].upper() + rest[1:] + (m["end"] or ".")
+    said = _handovers33t(rest, lexicon)
+    if said is None:
+        return text
+    people, things = _N33T[m["n"].lower()], _N33T[m["m"].lower()]
+    if len({t.target for t in said}) != people or len({t.obj for t in said}) != things:
+        return text
+    return rest if len(said) == things else text
+
+
+# "Each patient is to have a blanket, Mr Lee the blue and Mrs Khan the grey"
+_EACH_ROLE36R = re.compile(
+    r"^each (?P<role>[a-z]+) (?:gets|is to (?:have|get)|should (?:have|get)|can have|will get) "
+    r"(?:a|one) (?P<k>[a-z]+)\s*[,:]\s*(?P<list>[a-z][\w ]*? the [a-z]+(?: one)?(?:(?:,| and|, "
+    r"and) [a-z][\w ]*? the [a-z]+(?: one)?)+)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_GAPPED36R = re.compile(
+    r"(?:^|,\s*(?:and\s+)?|\s+and\s+)(?P<p>[a-z][\w ]*?) the (?P<adj>[a-z]+)"
+    r"(?: one)?(?=,|\s+and\s|$)",
+    _F,
+)
+
+
+def _each_role36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Each patient is to have a blanket, Mr Lee the blue and Mrs Khan the
+    grey" is "Mr Lee gets the blue blanket and Mrs Khan gets the grey blanket": every person of
+    the scene the role names is named in the list, once, each with one object of the kind said
+    (else left: "each patient" stays ambiguous, and refused)."""
+    m = _EACH_ROLE36R.match(text)
+    if m is None:
+        return text
+    role = m["role"].lower()
+    holders = {h.id for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)}
+    pairs = [(g["p"], g["adj"]) for g in _GAPPED36R.finditer(m["list"])]
+    if len(holders) < 2 or len(pairs) != len(holders):
+        return text
+    said = " and ".join(f"{p} gets the {adj} {m['k']}" for p, adj in pairs)
+    done = _handovers33t(said, lexicon)
+    if done is None or sorted(t.target for t in done) != sorted(holders):
+        return text
+    kinds = {o.id: o.category for o in lexicon.scene.objects}
+    if any(kinds.get(t.obj) != kinds.get(done[0].obj) for t in done):
+        return text
+    return f"{said}{text[m.end() :]}"
+
+
+# "Not the bottle, the crisps, Bob's the one who's peckish."
+_ONE_WHOS36R = re.compile(
+    r"^(?P<head>(?:not (?:the )?[a-z]+(?: [a-z]+)?,\s*)?(?:the )?[a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<p>[a-z][\w ]*?)(?:'s| is) the one (?:who's|who is|that's) (?:(?:a bit|really|very|so) )?"
+    r"(?:peckish|hungry|thirsty|starving|famished|parched|cold|freezing|chilly)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_whos36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "(Not the bottle,) the crisps, Bob's the one who's peckish" is "(Not
+    the bottle,) the crisps for Bob": an object said alone, then the one person said to be hungry,
+    thirsty or cold is who it is for (the object one whole name; a clause that says to whom
+    already is left)."""
+    m = _ONE_WHOS36R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    last = re.split(r",\s*", m["head"])[-1]
+    if not _whole_name(last, lexicon, "object"):
+        return text
+    return f"{m['head']} for {m['p']}{m['end'] or '.'}"
+
+
+# "The bottle isn't Person B's, it's Person A's, take it to her."
+_ISNT_HERS36R = re.compile(
+    r"^(?P<x>the [a-z]+(?: [a-z]+)?) (?:isn't|is not|'s not) (?P<p>[a-z][\w ]*?)'s,\s*"
+    r"(?:it's|it is) (?P<q>[a-z][\w ]*?)'s(?:,\s*(?:so )?(?:take|give|bring|hand) it "
+    r"(?:to|over to) (?P<pro>him|her))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _isnt_hers36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "The bottle isn't Person B's, it's Person A's(, take it to her)" is
+    "The bottle isn't for Person B, it's for Person A": whose it is, is who gets it; the closing
+    'take it to her' asks for that hand-over (its pronoun one Person A may be)."""
+    m = _ISNT_HERS36R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if not _the_one36r(m["q"], m["pro"] or "", lexicon):
+        return text
+    return f"{m['x']} isn't for {m['p']}, it's for {m['q']}{m['end'] or '.'}"
+
+
+# "No need for anything fancy, just the bottle to Person A."
+_NO_NEED36R = re.compile(
+    r"^no need for anything (?:fancy|special|else|more),\s*(?=(?:just|only) )", _F
+)
+
+
+def _no_need36r(text: str, _lexicon: Lexicon) -> str:
+    """Session 36 (12r): "No need for anything fancy, just X" is "Nothing fancy, just X"
+    (session 34's opener: 'just' then says the whole request)."""
+    m = _NO_NEED36R.match(text)
+    return text if m is None else f"Nothing fancy, {text[m.end() :]}"
+
+
+# "The blue pen stays put on the desk, but the black one and the red one belong in the box."
+_STAYS_BUT36R = re.compile(
+    r"^(?P<x>the (?P<adj>[a-z]+) (?P<k>[a-z]+)) stays (?:put|where it is|as it is)"
+    r"(?: (?:on|in) (?P<s>the [a-z]+(?: [a-z]+)?))?,\s*but (?P<rest>.+)$",
+    _F,
+)
+
+
+def _stays_but36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "The blue pen stays put (on the desk), but the black one and the red one
+    belong in the box" is "The black pen and the red pen belong in the box": nothing to do for the
+    pen that stays (where it lies: a surface said must be the one it starts on), and 'the black
+    one' after it is a pen (each such one a whole name; the rest must not name the pen that
+    stays)."""
+    m = _STAYS_BUT36R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    x = _ids(m["x"], lexicon, "object")
+    if m["s"]:
+        if not _whole_name(m["s"], lexicon, "surface"):
+            return text
+        if not starting_on(x, next(iter(_ids(m["s"], lexicon, "surface"))), lexicon):
+            return text
+
+    def kind(o: re.Match[str]) -> str:
+        said = f"the {o['adj']} {m['k']}"
+        return said if _whole_name(said, lexicon, "object") else o[0]
+
+    rest = _sub(r"\bthe (?P<adj>[a-z]+) one\b", kind, m["rest"])
+    if "one" in re.findall(r"[a-z]+", rest.lower()) or _ids(rest, lexicon) & x:
+        return text
+    return rest[:1].upper() + rest[1:]
+
+
+# "Mr Lee gets the jug but not the tablets, those are for Mrs Khan."
+_BUT_NOT_THOSE36R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?) (?P<v>gets|is getting|has|is having) (?P<x>the [a-z]+(?: [a-z]+)?),?\s*"
+    r"but not (?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:those|these|they|that|this|it)(?:'re| are|'s| is)"
+    r" (?:for|going to) (?P<q>[a-z][\w ]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _but_not_those36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "P gets X but not Y, those are for Q" is "P gets X and Q gets Y" (P and
+    Q two people, X and Y two objects, each named whole)."""
+    m = _BUT_NOT_THOSE36R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    return f"{m['p']} gets {m['x']} and {m['q']} gets {m['y']}{m['end'] or '.'}"
+
+
+# "Except for the big box, stack every other thing on the pallet", "Apart from the baby wipes,
+# move the whole lot up onto the high chair"
+_FRONTED_BUT36R = re.compile(
+    r"^(?:except(?: for)?|apart from|other than|bar|barring|aside from) (?:the )?[a-z]+"
+    r"(?: [a-z]+)?,\s*",
+    _F,
+)
+
+
+def _fronted_rest36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): after a fronted "Except for X," / "Apart from X,", "every other thing"
+    is "everything else" and "the whole lot" is "everything" (session 28's fronted exception
+    then reads it: all but X; a thing said that is not one of the scene's objects is left)."""
+    m = _FRONTED_BUT36R.match(text)
+    if m is None or not _objects_only(m[0], lexicon):
+        return text
+    rest = _sub(r"\bevery other (?:thing|item|object)\b", "everything else", text[m.end() :])
+    rest = _sub(r"\bthe whole lot\b", "everything", rest)
+    return f"{m[0]}{rest}"
+
+
+# "Bob gets the chips, scratch that, Alice does, she won the bet."
+_DOES_WHY36R = re.compile(
+    r"^(?P<head>.+?,\s*(?:scratch that|no|sorry|actually|wait|i mean|no wait),?\s*"
+    r"(?P<p>[a-z][\w ]*?) does),\s*(?P<why>(?P<pro>she|he) (?:won|lost|asked|called|got|paid|"
+    r"bought|earned|came|did)\b[^,.;!?]*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _does_why36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): after a correction to the person ("…, scratch that, Alice does"), a
+    closing reason said of that person in the past ("she won the bet") asks nothing: taken off
+    (the pronoun one the person may be; the reason naming nothing of the scene and holding no word
+    that could change who gets what)."""
+    m = _DOES_WHY36R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    if _REASON_HELD21.search(m["why"]) or not _names_nothing(m["why"], lexicon):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "Take the bottle to, erm, what's her name, Person A, that's it."
+_WHATS_NAME36R = re.compile(
+    r"(?P<to>\b(?:to|for)),\s*(?:(?:erm|um|er|uh|ehm),?\s*)*what(?:'s| is) "
+    r"(?P<pro>her|his|their) name,\s*(?P<p>[a-z][\w ]*?)(?:,\s*that(?:'s| is) (?:it|the one|"
+    r"right))?(?P<end>\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _whats_name36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "to, erm, what's her name, Person A(, that's it)" is "to Person A": the
+    speaker searching for the name, then saying it (one person, one the pronoun may be)."""
+    if "name" not in text.lower():
+        return text
+
+    def named(m: re.Match[str]) -> str:
+        pro = "" if m["pro"].lower() == "their" else m["pro"]
+        if not _the_one36r(m["p"], pro, lexicon):
+            return m[0]
+        return f"{m['to']} {m['p']}{m['end']}"
+
+    return _WHATS_NAME36R.sub(named, text)
+
+
+# "Sponge in the sink, no, the tray, sorry, the sink's full."
+_FULL_AFTER36R = re.compile(
+    r"^(?P<head>.+?(?:in|on|into|onto) (?P<s>the [a-z]+(?: [a-z]+)?),\s*(?:no|sorry|wait|"
+    r"actually),?\s*(?:(?:in|on|into|onto) )?(?P<t>the [a-z]+(?: [a-z]+)?)),\s*(?:sorry,\s*)?"
+    r"(?P<again>the [a-z]+(?: [a-z]+)?)(?:'s| is) (?:full|busy|taken|in use|cluttered|occupied|"
+    r"wet|dirty|a mess|covered)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _full_after36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Sponge in the sink, no, the tray, sorry, the sink's full" is "Sponge
+    in the sink, no, the tray": why the place said first will not do (the same surface, said
+    again) asks nothing once the correction names another."""
+    m = _FULL_AFTER36R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["t"], lexicon, "surface"):
+        return text
+    again = _ids(m["again"], lexicon, "surface")
+    if not _whole_name(m["again"], lexicon, "surface") or again != _ids(m["s"], lexicon):
+        return text
+    if again == _ids(m["t"], lexicon):
+        return text
+    return f"{m['head']}{m['end'] or '.'}"
+
+
+# "Take Lena the lemon, no hang on, it's the salt she wants."
+_ITS_X_WANTS36R = re.compile(
+    r",\s*(?P<no>no|sorry|wait|actually)(?:,?\s*(?:hang on|hold on|wait))?,?\s*"
+    r"it(?:'s| is) (?P<x>the [a-z]+(?: [a-z]+)?) (?:that )?(?P<pro>she|he) (?:wants|needs|"
+    r"asked for|is after)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_x_wants36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Take Lena the lemon, no hang on, it's the salt she wants" is "Take
+    Lena the lemon, no, the salt": the object corrected, said as what the one person named before
+    wants (the pronoun one that person may be; the object one whole name)."""
+    m = _ITS_X_WANTS36R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _may_be35t(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{text[: m.start()]}, no, {m['x']}{m['end'] or '.'}"
+
+
+# "Just the single bottle, to Person A, that's her ration for the fell race."
+_THATS_HERS36R = re.compile(
+    r",\s*(?:and )?that(?:'s| is) (?P<pro>her|his) (?P<what>[a-z]+(?: [a-z]+)?(?: for the [a-z]+"
+    r"(?: [a-z]+)?)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _thats_hers36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): a closing "that's her ration (for the fell race)" after a request to one
+    person the pronoun may be says what the thing is to them: taken off (it names nothing of the
+    scene and no word that could change who gets what)."""
+    m = _THATS_HERS36R.search(text)
+    if m is None or _REASON_HELD21.search(m["what"]) or not _names_nothing(m["what"], lexicon):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _may_be35t(next(iter(people)), m["pro"], lexicon):
+        return text
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# "There's a single bottle about, take it to Person A"
+_THERES_ONE36R = re.compile(
+    r"^there(?:'s| is) (?:a|one|a single|just the one|only the one|only one|the one) "
+    r"(?P<k>[a-z]+)(?: (?:about|here|left|going|over there|on the go))?,\s*(?:so\s+)?"
+    r"(?P<v>take|give|bring|hand|pass) it (?P<rest>(?:to|over to) .+)$",
+    _F,
+)
+# "There's only the one bottle and only Person A to give it to, so off it goes to her."
+_ONLY_ONE_TO36R = re.compile(
+    r"^there(?:'s| is) only (?:the )?one (?P<k>[a-z]+) and only (?P<p>[a-z][\w ]*?) to "
+    r"(?:give|take|hand) it to,\s*so (?:off it goes to|(?:give|take|hand) it to) (?P<pro>her|him)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_of_kind36r(k: str, lexicon: Lexicon) -> str | None:
+    """'the bottle' when the scene holds exactly one object of kind (or name) ``k``."""
+    said = f"the {k}"
+    if not _whole_name(said, lexicon, "object") or len(_ids(said, lexicon, "object")) != 1:
+        return None
+    return said
+
+
+def _theres_one36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "There's a single bottle about, take it to P" is "Take the bottle to P",
+    and "There's only the one bottle and only P to give it to, so off it goes to her" is "Give P
+    the bottle": the count must agree with the scene (exactly one such object; 'only P' the one
+    person of the scene, one the pronoun may be), else left, and refused."""
+    m = _THERES_ONE36R.match(text)
+    if m is not None:
+        said = _one_of_kind36r(m["k"], lexicon)
+        if said is None:
+            return text
+        return f"{m['v'][:1].upper()}{m['v'][1:]} {said} {m['rest']}"
+    m = _ONLY_ONE_TO36R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    said = _one_of_kind36r(m["k"], lexicon)
+    if said is None or len(lexicon.scene.humans) != 1:
+        return text
+    return f"Give {m['p']} {said}{m['end'] or '.'}"
+
+
+# "Put the two mugs on the shelf, the busboy keeps knocking them over."
+_THEM_REMARK36R = re.compile(
+    r",\s*(?P<who>the [a-z]+) (?:keeps |kept |has been |'s been |is always |always |will only )?"
+    r"(?:knock(?:ing|ed|s)? (?:them|those) (?:over|off|down)|(?:nick(?:ing|ed|s)?|"
+    r"pinch(?:ing|ed|es)?|borrow(?:ing|ed|s)?|los(?:ing|t|es)|swip(?:ing|ed|es)|hid(?:ing|den|es)?|"
+    r"misplac(?:ing|ed|es)) (?:them|those))(?: again)?(?: and never (?:said|asked|told anyone|"
+    r"brought them back|gave them back))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _them_remark36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): a closing remark that someone outside the scene keeps knocking over,
+    nicking, borrowing or losing 'them' ("…, the busboy keeps knocking them over", "…, the
+    pipefitter borrowed them and never said"), after a request that names two or more objects
+    (what 'them' stands for), asks nothing: taken off (the one it is said of no one of the
+    scene)."""
+    m = _THEM_REMARK36R.search(text)
+    if m is None or not _names_nothing(m["who"], lexicon):
+        return text
+    if len(_ids(text[: m.start()], lexicon, "object")) < 2:
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# "Both blocks up on the high chair, Lily wants to stack them."
+_WANTS_TO_V36R = re.compile(
+    r",\s*(?P<p>[a-z][\w ]*?) (?:wants|needs|is going|'s going|would like|'d like) to "
+    r"(?:(?:stack|sort|count|line up|build with|play with|paint|colour|color|look at|tidy|check|"
+    r"label|dry|clean|wash) (?:them|those|it)(?: up| out)?|(?:plate|dish|serve) up(?P<what> the "
+    r"[a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_to_v36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Both blocks up on the high chair, Lily wants to stack them" (or "…,
+    Marco wants to plate up the goulash"): after a request that only places objects (on a surface
+    it names), what a person of the scene wants to do with them there is why: taken off (a request
+    that hands anything to anyone is left, and so is a dish that names a scene object)."""
+    m = _WANTS_TO_V36R.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if m["what"] and not _names_nothing(m["what"], lexicon):
+        return text  # "Marco wants to plate up the lemon": the lemon may be asked for
+    head = text[: m.start()]
+    done = _tasks_of(head, lexicon)
+    if not done or any(kind != "place" for kind, _, _ in done):
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "…, she's frozen, the heating's off on this side."
+_STATE_HERE36R = re.compile(
+    r",\s*(?P<what>the [a-z]+)(?:'s| is) (?:off|out|down|broken|bust|playing up|not working|"
+    r"on the blink)(?: again)?(?: (?:on|at) this (?:side|end)| in here| over here| today)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _state_here36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): a closing state of something outside the scene ("…, the heating's off on
+    this side") asks nothing: taken off when it names nothing of the scene and the request
+    before it names something."""
+    m = _STATE_HERE36R.search(text)
+    if m is None or not _names_nothing(m["what"], lexicon):
+        return text
+    if not _ids(text[: m.start()], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# "The three boxes onto the belt, the whole lot's for the same van."
+_SAME_VAN36R = re.compile(
+    r",\s*(?:the whole lot|the lot|they|they're all|they are all|all of them|it all)(?:'s| is| "
+    r"are|'re)? (?:all )?(?:for|going (?:on|in|out on)|going to) the same (?P<what>[a-z]+)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _same_van36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "…, the whole lot's for the same van" after a request naming two or
+    more objects says they go out together: taken off (the van, order or customer no one and
+    nothing of the scene)."""
+    m = _SAME_VAN36R.search(text)
+    if m is None or not _names_nothing(m["what"], lexicon):
+        return text
+    if len(_ids(text[: m.start()], lexicon, "object")) < 2:
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# "Lily can have any one of her blocks"
+_HER_ONES36R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?) (?P<v>can have|can take|gets|may have) (?P<any>any one|any|either|one) "
+    r"of (?P<pro>her|his) (?P<k>[a-z]+s)\b",
+    _F,
+)
+
+
+def _her_ones36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "Lily can have any one of her blocks" is "… any one of the blocks": the
+    scene says nothing of whose a thing is, so 'her blocks' said of the one person who gets one
+    are the scene's blocks (the pronoun one that person may be; the kind one the scene holds)."""
+    m = _HER_ONES36R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    if not _ids(f"the {m['k']}", lexicon, "object"):
+        return text
+    return f"{m['p']} {m['v']} {m['any']} of the {m['k']}{text[m.end() :]}"
+
+
+# "…, she'll only chew it."
+_ONLY_CHEW36R = re.compile(
+    r",\s*(?P<pro>she|he)(?:'ll| will) only (?:chew|lose|drop|break|spill|throw|break|suck) "
+    r"(?:it|them)(?: anyway)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_chew36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): a closing "she'll only chew it" after a request to the one person the
+    pronoun may be says what will become of it: taken off."""
+    m = _ONLY_CHEW36R.search(text)
+    if m is None:
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _may_be35t(next(iter(people)), m["pro"], lexicon):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+# "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A."
+_WHERE_WAS_I36R = re.compile(
+    r"\bthe,\s*(?:(?:sorry|erm|um|er|uh),?\s*)*(?:where was i|what's it called|what do you call "
+    r"it),\s*(?P<x>the [a-z]+(?: [a-z]+)?)(?:,\s*(?:yes|yeah|that's it),\s*(?P<again>the [a-z]+"
+    r"(?: [a-z]+)?))?(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _where_was_i36r(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12r): "the, sorry, where was I, the bottle, yes, the bottle" is "the bottle":
+    the speaker lost for the word after 'the', then saying it (one whole object, said again the
+    same if at all)."""
+    if "the," not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if not _whole_name(m["x"], lexicon, "object"):
+            return m[0]
+        if m["again"] and _ids(m["again"], lexicon) != _ids(m["x"], lexicon):
+            return m[0]
+        return m["x"]
+
+    return _WHERE_WAS_I36R.sub(said, text)
+
+
+_STEPS36R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _one_thing_listed36r,
+    _whichever_of_them36r,
+    _either_then_one36r,
+    _mind_if36r,
+    _says_will_do36r,
+    _one_apiece36r,
+    _people_things36r,
+    _each_role36r,
+    _one_whos36r,
+    _isnt_hers36r,
+    _no_need36r,
+    _stays_but36r,
+    _but_not_those36r,
+    _fronted_rest36r,
+    _does_why36r,
+    _whats_name36r,
+    _full_after36r,
+    _its_x_wants36r,
+    _thats_hers36r,
+    _theres_one36r,
+    _them_remark36r,
+    _wants_to_v36r,
+    _state_here36r,
+    _same_van36r,
+    _her_ones36r,
+    _only_chew36r,
+    _where_was_i36r,
+)
+
+
 _STEPS35R: tuple[Callable[[str, Lexicon], str], ...] = (
     _pronoun_take35r,
     _really_mind35r,
@@ -27511,6 +28205,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS35T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
+    # session 36 (12r): blind34's choices, counts, negation, exclusions and corrections
+    *_STEPS36R,
     # session 35 (12r): blind33's choices, counts, negation, exclusions and corrections
     *_STEPS35R,
     # session 34 (12r): blind32's choices, counts, negation, exclusions and corrections
