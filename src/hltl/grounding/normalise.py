@@ -21510,6 +21510,12 @@ _OPENING33T = (
 )
 
 
+# session 36 (12s): 'between' places the request between two steps ("Order's up so in between,
+# give Bob the chips": between what?): the statement is kept, so the request is not read alone
+# ('meanwhile', 'in the meantime' are while the statement's matter goes on: read as before)
+_ORDER_HELD36S = frozenset({"between"})
+
+
 def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12t): a statement opening the instruction about something the scene does not
     have ('Stock room's a mess', 'the dogs are going mad outside'), then a request: the
@@ -21521,6 +21527,7 @@ def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
         return text
     words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
     held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
+    held |= _ORDER_HELD36S
     if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
         return text
     rest = m["lead"] + m["rest"]
