@@ -2344,12 +2344,6 @@ def _kin_sex35s(name: str) -> str | None:
     return KIN_SEX35S.get(words[-1]) if words else None
 
 
-def kin_sex36s(name: str) -> str | None:
-    """Session 36 (12s): 'm' / 'f' when ``name`` is a word of kin of one sex ('Grandad',
-    'big sister'); for offline.py's pronoun checks, which say a name's sex only when said."""
-    return _kin_sex35s(name)
-
-
 def said_sex35s(pid: str, lexicon: Lexicon) -> str | None:
     """Session 35 (12s): 'm' or 'f' when the scene names person ``pid`` with a title or a word
     of kin ('Mr Lee', 'Grandad'); what resolving a he / she / him / her as a person of the

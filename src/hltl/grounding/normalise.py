@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     lex,
     name_sexes,
     person_name,
+    said_sex35s,
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
@@ -787,6 +788,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
+        if not _kin_fits36s(next(iter(person)), body, lexicon):
+            return text  # "Grandad's here, she'll need her bib": not him
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
@@ -1483,6 +1486,17 @@ def _fits(pid: str, text: str, lexicon: Lexicon) -> bool:
     """Whether every he/she/him/her in ``text`` may be person ``pid`` (a title says which; a
     name alone does not)."""
     sex = title_sex(pid, lexicon)
+    said = {
+        PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    }
+    return sex is None or said <= {sex}
+
+
+def _kin_fits36s(pid: str, text: str, lexicon: Lexicon) -> bool:
+    """Session 36 (12s): as _fits, a word of kin the scene names person ``pid`` by saying the
+    sex too (lexicon.said_sex35s: 'Grandad', 'big sister'); for the remark's person standing in
+    for the request's pronoun ("Grandad's here, she'll need her bib" had read bib>B)."""
+    sex = said_sex35s(pid, lexicon)
     said = {
         PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
     }

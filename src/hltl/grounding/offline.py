@@ -20,7 +20,6 @@ from hltl.grounding.lexicon import (
     ambiguous,
     first_names,
     foreign_words,
-    kin_sex36s,
     lex,
     name_sexes,
     person_name,
@@ -1589,19 +1588,15 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     named: dict[str, set[str | None]] = {}
     said: dict[str, str] = {}
-    kin: set[str] = set()
     for human in lexicon.scene.humans:
         for name in (human.name, *human.aliases):
             found = re.search(rf"\b{re.escape(name)}\b", text, re.I)
             if found is None:
                 continue
-            # a first name said alone (a title, a role, a label say no sex here); session 36
-            # (12s): a word of kin too ("Grandad's here, she'll need her bib" had read bib>B)
+            # a first name said alone (a title, a role, a label say no sex here)
             sex = name_sexes().get(name.lower()) if " " not in name else None
-            sex = sex or kin_sex36s(name)
             named.setdefault(human.id, set()).add(sex)
             said.setdefault(human.id, found.group(0))
-            kin |= {human.id} if kin_sex36s(name) else set()
     given = {t.target for t in tasks(node) if t.kind == "deliver"}
     for word in words:
         sex = PRONOUN_SEX[word.lower()]
@@ -1617,8 +1612,6 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
         kind = "a woman's name" if sex == "m" else "a man's name"
         if len(named) > 1:
             kind = "women's names" if sex == "m" else "men's names"
-        if kin >= set(named):
-            kind = "a word for a woman" if sex == "m" else "a word for a man"
         could = " or ".join(person_name(p, lexicon) for p in others)
         raise GroundingError(
             f"{word!r} is not resolved: it cannot mean {' or '.join(said.values())} ({kind}); "
