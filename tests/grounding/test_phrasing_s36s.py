@@ -10,6 +10,7 @@ import pytest
 from hltl.grounding import normalise, offline
 from tests.grounding.helpers import (
     CELL,
+    DEPOT,
     NURSERY,
     OFFICE,
     WARD,
@@ -142,6 +143,28 @@ def test_having_a_pen_refused_naming_pens() -> None:
     assert_refused(
         "Put the stapler in the box, Sam's having the pen.", OFFICE, match="pen_black, pen_blue"
     )
+
+
+# -- blind22: "she'll be wanting" keeps its space; a scene word in the plural is a plain word -----
+
+test_blind22 = CASES.test(
+    (
+        "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
+        "scanner>A",
+        DEPOT,
+    ),
+    ("Mia's checking the pallets, so she'll be needing the scanner.", "scanner>A", DEPOT),
+    ("Mia'll be wanting the scanner.", "scanner>A", DEPOT),
+    (
+        "Mia's loading the pallets, so she'll be wanting the tape and Tom the gloves.",
+        "tape>A & gloves>B",
+        DEPOT,
+    ),
+    # the want and the request disagree; 'she' cannot be Tom; the remark names objects
+    ("Mia's checking the pallets, so she'll be wanting the scanner. Give it to Tom.", None, DEPOT),
+    ("Tom's checking the pallets, so she'll be wanting the scanner.", None, DEPOT),
+    ("Mia's checking the boxes, so she'll be wanting the scanner.", None, DEPOT),
+)
 
 
 def test_the_rules_are_what_changes_them(monkeypatch: pytest.MonkeyPatch) -> None:

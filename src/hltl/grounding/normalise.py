@@ -995,6 +995,9 @@ def _known_words(lexicon: Lexicon) -> frozenset[str]:
         *(n for s in scene.surfaces for n in (s.id, *s.aliases)),
     ]
     own = {w for n in names for w in re.findall(r"[a-z]+", n.lower())}
+    # session 36 (12s): a word of a name said in the plural is that word ("Mia's checking the
+    # pallets": the scene's pallet)
+    own |= {w + "s" for w in own} | {w + "es" for w in own if w.endswith(("s", "x", "ch", "sh"))}
     return _COMMON | own
 
 
@@ -3509,9 +3512,10 @@ _WANTS14: tuple[tuple[str, str], ...] = (
     ),
     # "Mia could really do with the scanner": she would like it
     (r"\b(?:could|can) (?:really |certainly |definitely |probably |just )?do with\b", "would like"),
-    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"
-    (r"\b(?:will|would|'ll|'d) be wanting\b", "wants"),
-    (r"\b(?:will|would|'ll|'d) be needing\b", "needs"),
+    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"; session 36
+    # (12s): with the space kept ("she'll be wanting" had become 'shewants')
+    (r"(?:\s+(?:will|would)|'ll|'d) be wanting\b", " wants"),
+    (r"(?:\s+(?:will|would)|'ll|'d) be needing\b", " needs"),
     # "Can I get the salt for Lena", "I'll have the salt for Lena": asked for someone else
     (
         r"^(?:(?:can|could|may) (?:i|we) (?:get|have|grab|please have|please get)|(?:i|we)'ll have"
