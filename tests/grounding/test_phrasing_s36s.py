@@ -18,6 +18,7 @@ from tests.grounding.helpers import (
     assert_case,
     assert_refused,
 )
+from tests.grounding.test_phrasing_s32r import L24
 
 CASES = PhrasingCases()
 
@@ -164,6 +165,29 @@ test_blind22 = CASES.test(
     ("Mia's checking the pallets, so she'll be wanting the scanner. Give it to Tom.", None, DEPOT),
     ("Tom's checking the pallets, so she'll be wanting the scanner.", None, DEPOT),
     ("Mia's checking the boxes, so she'll be wanting the scanner.", None, DEPOT),
+)
+
+
+# -- blind22: 'P to end up with X' after a degree word: the person gets it (normalise._words) -----
+
+test_end_up_with = CASES.test(
+    (
+        "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
+        "the hinges here.",
+        "bottle>B",
+        L24,
+    ),
+    ("I'd quite like Person B to end up with the bottle and the chips.", "bottle>B & chips>B", L24),
+    # the object ending up with the person: 'go to', as before
+    ("I'd quite like the bottle to end up with Person B.", "bottle>B", L24),
+    (
+        "The bottle should end up with Person B, and the chips with Person A.",
+        "bottle>B & chips>A",
+        L24,
+    ),
+    # a person with a person, or with 'it' (nothing named): refused as before
+    ("I'd quite like Person B to end up with Person A.", None, L24),
+    ("I'd quite like Person B to end up with it.", None, L24),
 )
 
 

@@ -440,6 +440,14 @@ def _person_before(m: re.Match[str], lexicon: Lexicon) -> bool:
     )
 
 
+def _person_ends_up36s(after: str, lexicon: Lexicon) -> bool:
+    """Session 36 (12s): whether what follows 'end up with' names an object first: then the
+    person ends up with it ("I'd quite like Person B to end up with the bottle", left to the
+    grammar), not the object with a person ('go to' had made 'Person B to go to the bottle')."""
+    names = _names(after, lexicon)
+    return bool(names) and names[0].refs[0].kind == "object"
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
@@ -452,7 +460,8 @@ def _words(text: str, lexicon: Lexicon) -> str:
     # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
     sentences = re.split(r"(?<=[.;!?])\s+", text)
     for n, s in enumerate(sentences):
-        if re.search(r"\bends? up with\b", s, _F):
+        m = re.search(r"\bends? up with\b", s, _F)
+        if m is not None and not _person_ends_up36s(s[m.end() :], lexicon):
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
     text = " ".join(sentences)
