@@ -166,8 +166,6 @@ KNOWN_MISSES = frozenset(
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        "I'd quite like Person B to end up with the bottle, if that works for you, I'm just on "
-        "the hinges here.",
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",
@@ -175,7 +173,6 @@ KNOWN_MISSES = frozenset(
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
         'you?',
-        "Mia's checking the pallets, so she'll be wanting the scanner. Give it to her, ta.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',

@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     lex,
     name_sexes,
     person_name,
+    said_sex35s,
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
@@ -439,6 +440,14 @@ def _person_before(m: re.Match[str], lexicon: Lexicon) -> bool:
     )
 
 
+def _person_ends_up36s(after: str, lexicon: Lexicon) -> bool:
+    """Session 36 (12s): whether what follows 'end up with' names an object first: then the
+    person ends up with it ("I'd quite like Person B to end up with the bottle", left to the
+    grammar), not the object with a person ('go to' had made 'Person B to go to the bottle')."""
+    names = _names(after, lexicon)
+    return bool(names) and names[0].refs[0].kind == "object"
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
@@ -451,7 +460,8 @@ def _words(text: str, lexicon: Lexicon) -> str:
     # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
     sentences = re.split(r"(?<=[.;!?])\s+", text)
     for n, s in enumerate(sentences):
-        if re.search(r"\bends? up with\b", s, _F):
+        m = re.search(r"\bends? up with\b", s, _F)
+        if m is not None and not _person_ends_up36s(s[m.end() :], lexicon):
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
     text = " ".join(sentences)
@@ -787,6 +797,8 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     if len(person) == 1:
         if not _fits(next(iter(person)), body, lexicon):
             return text  # "Mr Lee is cold, give her …": not him
+        if not _kin_fits36s(next(iter(person)), body, lexicon):
+            return text  # "Grandad's here, she'll need her bib": not him
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
@@ -992,6 +1004,9 @@ def _known_words(lexicon: Lexicon) -> frozenset[str]:
         *(n for s in scene.surfaces for n in (s.id, *s.aliases)),
     ]
     own = {w for n in names for w in re.findall(r"[a-z]+", n.lower())}
+    # session 36 (12s): a word of a name said in the plural is that word ("Mia's checking the
+    # pallets": the scene's pallet)
+    own |= {w + "s" for w in own} | {w + "es" for w in own if w.endswith(("s", "x", "ch", "sh"))}
     return _COMMON | own
 
 
@@ -1483,6 +1498,17 @@ def _fits(pid: str, text: str, lexicon: Lexicon) -> bool:
     """Whether every he/she/him/her in ``text`` may be person ``pid`` (a title says which; a
     name alone does not)."""
     sex = title_sex(pid, lexicon)
+    said = {
+        PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
+    }
+    return sex is None or said <= {sex}
+
+
+def _kin_fits36s(pid: str, text: str, lexicon: Lexicon) -> bool:
+    """Session 36 (12s): as _fits, a word of kin the scene names person ``pid`` by saying the
+    sex too (lexicon.said_sex35s: 'Grandad', 'big sister'); for the remark's person standing in
+    for the request's pronoun ("Grandad's here, she'll need her bib" had read bib>B)."""
+    sex = said_sex35s(pid, lexicon)
     said = {
         PRONOUN_SEX[w.lower()] for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", text, _F)
     }
@@ -3495,9 +3521,10 @@ _WANTS14: tuple[tuple[str, str], ...] = (
     ),
     # "Mia could really do with the scanner": she would like it
     (r"\b(?:could|can) (?:really |certainly |definitely |probably |just )?do with\b", "would like"),
-    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"
-    (r"\b(?:will|would|'ll|'d) be wanting\b", "wants"),
-    (r"\b(?:will|would|'ll|'d) be needing\b", "needs"),
+    # "Ruth will be wanting the thermometer", "Zoe would be wanting the green book"; session 36
+    # (12s): with the space kept ("she'll be wanting" had become 'shewants')
+    (r"(?:\s+(?:will|would)|'ll|'d) be wanting\b", " wants"),
+    (r"(?:\s+(?:will|would)|'ll|'d) be needing\b", " needs"),
     # "Can I get the salt for Lena", "I'll have the salt for Lena": asked for someone else
     (
         r"^(?:(?:can|could|may) (?:i|we) (?:get|have|grab|please have|please get)|(?:i|we)'ll have"
@@ -22197,6 +22224,12 @@ _OPENING33T = (
 )
 
 
+# session 36 (12s): 'between' places the request between two steps ("Order's up so in between,
+# give Bob the chips": between what?): the statement is kept, so the request is not read alone
+# ('meanwhile', 'in the meantime' are while the statement's matter goes on: read as before)
+_ORDER_HELD36S = frozenset({"between"})
+
+
 def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
     """Session 33 (12t): a statement opening the instruction about something the scene does not
     have ('Stock room's a mess', 'the dogs are going mad outside'), then a request: the
@@ -22208,6 +22241,7 @@ def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
         return text
     words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
     held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
+    held |= _ORDER_HELD36S
     if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
         return text
     rest = m["lead"] + m["rest"]

@@ -23,6 +23,7 @@ from hltl.grounding.lexicon import (
     lex,
     name_sexes,
     person_name,
+    said_sex35s,
     title_sex,
 )
 from hltl.grounding.normalise import (
@@ -112,6 +113,7 @@ def parse_instruction(
             _both_then_one35s(text, node, lexicon)
             _kind_fits35s(text, lexicon)
             _named_other_sex34s(text, node, lexicon)
+            _use_said36s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -824,13 +826,16 @@ def _state_only32s(text: str, lexicon: Lexicon) -> None:
                 sentences.append(items[start:k])
             start = k + 1
     for sentence in sentences:
-        said = _held32s(sentence)
+        said, quoted = _held32s(sentence), _text(sentence)
+        if said is None:
+            said = _held_past36s(sentence)
+            quoted = f"{said[0]} had {said[1]}" if said is not None else quoted
         if said is None:
             continue
         who, what, past = said
         if past:
             raise GroundingError(
-                f"{_text(sentence)!r} says what {who} had: it asks for nothing; say 'give {who} "
+                f"{quoted!r} says what {who} had: it asks for nothing; say 'give {who} "
                 f"{what}' to have it handed over"
             )
         if len(sentences) == 1 and len(_inside()) <= 1 and not _ASKED32S.search(text):
@@ -1265,6 +1270,19 @@ def _held32s(sentence: list[Item]) -> tuple[str, str, bool] | None:
     ):
         return None
     return sentence[0].text, _text(said), past
+
+
+def _held_past36s(sentence: list[Item]) -> tuple[str, str, bool] | None:
+    """Session 36 (12s): _held32s's past said as a clause of its own between commas ("Give
+    Alice the cup, Bob had the chips." had read cup>A & chips>B): what was, asking nothing."""
+    start = 0
+    for k, it in enumerate([*sentence, Item("punct", ",", ",")]):
+        if _is(it, ","):
+            said = _held32s(sentence[start:k]) if start > 0 or k < len(sentence) else None
+            if said is not None and said[2]:
+                return said
+            start = k + 1
+    return None
 
 
 def _objects_only32s(item: Item) -> bool:
@@ -4057,3 +4075,62 @@ def _kind_fits35s(text: str, lexicon: Lexicon) -> None:
                 )
             ):
                 break  # the objects listed, each with whom it is for, end here
+
+
+# a person said to be done with the object, or not yet ("…, Mrs Khan's not finished with it.",
+# "…, she's done with them"): a clause of its own, not a time ('when she's done with it, …')
+_USE_SAID36S = re.compile(
+    r"(?:^|[,;.!?]\s*|\s-\s)(?:(?:as|since|because|cos|and|but|so)\s+)?"
+    r"(?P<who>[A-Za-z][\w.]*(?: [A-Z][\w]*)?)(?:'s|\u2019s| is| has| are|'re| have|'ve)"
+    r"(?P<neg>n't| not)?(?: (?:quite|yet|still|all))? (?:done|finished)(?: with)? "
+    r"(?P<x>it|them)\b(?! (?:first|then|before|after)\b)",
+    re.I,
+)
+
+
+def _use_said36s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 36 (12s): a person said to be done with the object (it / them, what the reading
+    moves) or not yet says where it should be, which the reading may contradict: "Give Mrs Khan
+    the magazine, she's done with it." (the remark had been taken off: magazine>C) — handed to
+    whom is done with it; "The magazine can go back on the trolley, Mrs Khan's not finished with
+    it." (magazine@trolley) — taken from whom still needs it (a he / she named by no one: from
+    whoever it is). Refused naming both readings. Done with it and moved away ('…, Mrs Khan's
+    finished with it', session 35's _done_with35s), or not finished and handed to them, is read
+    as before; a time ('when she's done with it, …') is not this remark."""
+    if " done" not in text and " finished" not in text:
+        return
+    said = list(tasks(node))
+    for m in _USE_SAID36S.finditer(text):
+        who = m["who"].lower()
+        if who in ("i", "we", "you", "it", "that", "this", "there"):
+            continue
+        moved = {t.obj for t in said}
+        if m["x"].lower() == "it" and len(moved) != 1:
+            continue  # which one it is is not this check's to say
+        if who in ("he", "she", "they"):
+            sex = PRONOUN_SEX.get(who)
+            people = {
+                p for p in people_named(text, lexicon) if said_sex35s(p, lexicon) in (None, sex)
+            }
+            person = people if len(people) == 1 else set()
+        else:
+            person = people_named(m["who"], lexicon)
+            if not person:
+                continue  # no one of the scene: nothing to go by
+        names = " or ".join(person_name(p, lexicon) for p in sorted(person))
+        names = names or f"whoever {m['who']!r} is"
+        for t in said:
+            given = t.kind == "deliver" and (not person or t.target in person)
+            if m["neg"] is None and given and person:
+                raise GroundingError(
+                    f"{m.group(0).strip(' ,;.!?-')!r} says {names} has finished with the {t.obj}, "
+                    f"yet it is handed to them: either give it to them anyway, or take it from "
+                    f"them and say where it goes"
+                )
+            if m["neg"] is not None and not given:
+                where = person_name(t.target, lexicon) if t.kind == "deliver" else f"the {t.target}"
+                raise GroundingError(
+                    f"{m.group(0).strip(' ,;.!?-')!r} says {names} still needs the {t.obj}, yet "
+                    f"it goes to {where}: either leave it with them (or hand it to them), or "
+                    f"move it to {where} anyway; say which"
+                )

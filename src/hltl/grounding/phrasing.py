@@ -221,7 +221,9 @@ def _is_after(items: list[Item]) -> list[Item]:
     k = 0
     while k < len(items):
         it = items[k]
-        opens = not out or out[-1].kind == "punct" or _is(out[-1], "and")
+        # session 36 (12s): after 'then' too ("Give Alice the bottle, then she's after the
+        # chips." had read `chips>A ; bottle>A`, 'after' as the order)
+        opens = not out or out[-1].kind == "punct" or _is(out[-1], "and", "then")
         if (
             opens
             and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
