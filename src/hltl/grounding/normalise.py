@@ -62,6 +62,7 @@ from hltl.grounding.lexicon import (
     lex,
     name_sexes,
     person_name,
+    said_sex35s,
     title_sex,
 )
 from hltl.grounding.phrasing import starting_on
@@ -851,6 +852,9 @@ def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
     ):
         person = _ids(m.group(1), lexicon, "human")
         if len(person) > 1:
+            named = _named_by_sex36t(m.group(1), m.group(2), person, lexicon)
+            if named is not None:
+                return named
             _pronoun_among([m.group(1)], m.group(2), person, lexicon)
     return text
 
@@ -22685,6 +22689,128 @@ def _can_keep35t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 36 (engineer 12t) ---------------------------------------------------------------
+
+# the words after 'the next' that point back to a task or an object ('before the next one'),
+# never an event of the world
+_NEXT_TASK36T = frozenset(
+    (
+        "one",
+        "ones",
+        "thing",
+        "things",
+        "bit",
+        "bits",
+        "item",
+        "items",
+        "task",
+        "tasks",
+        "step",
+        "steps",
+        "job",
+        "jobs",
+        "lot",
+        "person",
+        "people",
+        "time",
+        "go",
+        "turn",
+        "round",
+    )
+)
+_NEXT_EVENT36T = re.compile(
+    r"(?P<lead>,?\s+before the) next (?P<noun>[a-z]+)(?P<more>(?: [a-z']+){0,3})"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _next_event36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): a closing deadline 'before the next <noun> …' whose noun is an event of
+    the world ("Drop the scnner on the belt before the next load comes down."): 'next' there
+    orders nothing of the request, so the deadline is read as '… before the load comes down' is
+    (`_when` / `_before_deadline32`: met by doing the task now) — only when the noun names nothing
+    of the scene (nor a typo of it), is no word for a task or an object ('the next one', 'the next
+    bit'), and the deadline without 'next' is one those rules take off; else left as it was."""
+    m = _NEXT_EVENT36T.search(text)
+    if m is None or m["noun"].lower() in _NEXT_TASK36T or _names(m["noun"], lexicon):
+        return text
+    plain = f"{text[: m.start()]}{m['lead']} {m['noun']}{m['more']}{m['end']}"
+    for rule in (_when, _before_deadline32):
+        out = rule(plain, lexicon)
+        if out != plain and "before" not in out[m.start() :].lower():
+            return out
+    return text
+
+
+def _sure36t(pid: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether he/she ``pronoun`` is person ``pid`` by what the scene says of its sex: a title or
+    word of kin (`said_sex35s`) or a first name of that sex (data/first_names_sex.txt)."""
+    sex = PRONOUN_SEX[pronoun.lower()]
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    firsts = {n.lower().split()[0] for n in (human.name, *human.aliases)}
+    named = {name_sexes().get(n) for n in firsts} - {None}
+    return said_sex35s(pid, lexicon) == sex or named == {sex}
+
+
+def _named_by_sex36t(said: str, request: str, person: set[str], lexicon: Lexicon) -> str | None:
+    """Session 36 (12t): 'Ruth and Mr Lee are both here now, pass him the magazine' — a remark
+    naming several people and asking nothing, then a request whose one person is a he / him /
+    she / her: when all but one of those named are ruled out (`_may_be35t`: a title, a first name
+    of one sex, a word of kin) and that one is the pronoun for certain (`_sure36t`) or no one else
+    in the scene may be it ("Marco and Lena are both in now, pass her the lemon": Marco and Mr
+    Novak are men), the pronoun is that person's name; None otherwise (`_pronoun_among` then
+    refuses with the readings, "Marco and Mr Novak …, pass him the lemon"). A 'her' before a
+    noun (a possessive) is left, and so is what a title alone decides (`_pronoun_among` lets the
+    grammar read 'Mr Lee and Mrs Khan: the jug for her, the magazine for him')."""
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", request, _F)}
+    if len(pronouns) != 1 or _ids(request, lexicon, "human"):
+        return None
+    if re.search(r"\b(?:he|him|his|she|her|hers)\b", said, _F):
+        return None  # the remark has a pronoun of its own to read first
+    pronoun = next(iter(pronouns))
+    sex = PRONOUN_SEX[pronoun]
+    fits = [p for p in person if title_sex(p, lexicon) in (None, sex)]
+    if len(fits) == 1 and said_sex35s(fits[0], lexicon) == sex:
+        return None  # a title decides: the grammar reads it among them (as before)
+    if re.search(r"\bher (?!(?:the|a|an|both|some|one|all|these|those|this|that)\b)[a-z]", request):
+        return None  # 'her cup': a possessive
+    may = [p for p in sorted(person) if _may_be35t(p, pronoun, lexicon)]
+    if len(may) != 1:
+        return None
+    (pid,) = may
+    others = [h.id for h in lexicon.scene.humans if h.id != pid]
+    if not _sure36t(pid, pronoun, lexicon) and any(_may_be35t(o, pronoun, lexicon) for o in others):
+        return None
+    name = next(it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid})
+    told = _sub(r"\b" + pronoun + r"\b", name, request)
+    return f"{said}, {told}"
+
+
+def _people_in36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): 'Marco and Lena are (both) in (now).' — people 'in' with no place after
+    it have come in, as 'Lena's in now' says of one (`_why_said_first`): read as '… are here'.
+    Only for a sentence of people named alone, joined by 'and'."""
+
+    def here(m: re.Match[str]) -> str:
+        who = re.split(r",\s*|\s+and\s+", m["who"])
+        return (
+            f"{m['who']} are here{m['rest']}"
+            if len(who) > 1 and all(_only_person(w, lexicon) for w in who)
+            else m[0]
+        )
+
+    return _sub(
+        r"(?:^|(?<=[.!?]\s))(?P<who>[^,.!?;]+?) (?:are|'re) (?:both |all )?in"
+        r"(?P<rest>(?: now)?(?:[.!,]|$))",
+        here,
+        text,
+    )
+
+
+_STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (_next_event36t, _people_in36t)
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -26813,6 +26939,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS34T,
     # session 35 (12t): blind19, blind23, blind18, blind17 and causes15's kinds
     *_STEPS35T,
+    # session 36 (12t): blind23, causes10, blind13, blind17 and causes15's kinds
+    *_STEPS36T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 35 (12r): blind33's choices, counts, negation, exclusions and corrections

@@ -1,0 +1,122 @@
+"""Session-36 phrasings of issue 12 (engineer 12t): blind23, causes10, blind13, blind17 and
+causes15's refusals by kind; docs/grounding.md, "Session 36 (engineer 12t)". Each rule with the
+sentences it changes and near forms that must stay refused (or read as they did)."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.grounding import normalise, phrasing
+from tests.grounding.helpers import (
+    DEPOT,
+    KITCHEN,
+    OFFICE,
+    WARD,
+    PhrasingCases,
+)
+
+# the two-arm scene, as session 33 (12t) has it (Alice, Bob; bottle, chips)
+from tests.grounding.test_phrasing_s33t import TWO
+
+CASES = PhrasingCases()  # read by the _STEPS36T rewrites
+SEX = PhrasingCases()  # read by normalise._named_by_sex36t
+ONE_OF = PhrasingCases()  # read by phrasing._one_of36t
+
+
+# -- a deadline 'before the next <event>': met by doing the task now ---------------------------
+
+
+test_next_event = CASES.test(
+    ("Drop the scnner on the belt before the next load comes down.", "scanner@conveyor", DEPOT),
+    ("Give Tom the tape before the next shift starts", "tape>B", DEPOT),
+    # 'next' of a task or an object; a scene object; a later time; another task after it; a
+    # scene object said again as what the event does
+    ("Drop the scanner on the belt before the next one.", None, DEPOT),
+    ("Drop the scanner on the belt before the next bit.", None, DEPOT),
+    ("Drop the scanner on the belt before the next box comes down.", None, DEPOT),
+    ("Drop the scanner on the belt before the next load arrives tomorrow.", None, DEPOT),
+    ("Drop the scanner on the belt before the next week.", None, DEPOT),
+    ("Drop the scanner on the belt before the next load comes down, then the tape.", None, DEPOT),
+    ("Drop the scanner on the belt before the next lorry gets the tape.", None, DEPOT),
+)
+
+
+# -- 'P and Q are (both) in (now)': they have come in -----------------------------------------
+
+
+test_people_in = CASES.test(
+    ("Marco and Lena are both in now, pass Lena the lemon", "lemon>B", KITCHEN),
+    ("Marco and Lena are both in, pass Lena the lemon", "lemon>B", KITCHEN),
+    # an object among them; 'in' with a place of the scene after it
+    ("Marco and the lemon are both in now, pass Lena the lemon", None, KITCHEN),
+    ("Marco and Lena are both in the lemon", None, KITCHEN),
+)
+
+
+# -- a remark of several people, then a request whose one person is he / him / she / her -------
+
+
+test_named_by_sex = SEX.test(
+    ("Ruth and Mr Lee are both here now, pass him the magazine", "magazine>B", WARD),
+    ("Ruth and Mr Lee are both here now, pass her the magazine", "magazine>A", WARD),
+    ("Mr Lee and Ruth are both here now, pass her the magazine", "magazine>A", WARD),
+    ("Marco and Lena are both in now, pass her the lemon", "lemon>B", KITCHEN),
+    ("Mr Novak and Lena are both in now, pass her the lemon", "lemon>B", KITCHEN),
+    ("Alice and Bob are both here now, pass him the crisps", "chips>B", TWO),
+    # both may be it (two men; a name the list does not give a sex; two women); a 'her' before a
+    # noun; a pronoun in the remark itself; two sentences
+    ("Marco and Mr Novak are both in now, pass him the lemon", None, KITCHEN),
+    ("Marco and Lena are both in now, pass him the lemon", None, KITCHEN),
+    ("Ruth and Mrs Khan are both here now, pass her the magazine", None, WARD),
+    ("Ruth and Mr Lee are both here now, pass her cup to him", None, WARD),
+    ("Alice and Bob are here and she's thirsty, pass him the crisps", None, TWO),
+    ("Marco and Lena are all in now. Pass her the lemon.", None, KITCHEN),
+)
+
+
+# -- 'one of the <kind>' … 'the other N': the one choice, then the rest of that kind ----------
+
+
+test_one_of_then_other = ONE_OF.test(
+    (
+        "Give Sam one of the pens and put the other two in the box",
+        "(pen_black>B & pen_blue@box & pen_red@box) | (pen_blue>B & pen_black@box & pen_red@box)"
+        " | (pen_red>B & pen_black@box & pen_blue@box)",
+        OFFICE,
+    ),
+    (
+        "Give Tom one of the boxes and put the other two on the pallet",
+        "(box_small>B & box_medium@pallet & box_large@pallet) | (box_medium>B & box_small@pallet"
+        " & box_large@pallet) | (box_large>B & box_small@pallet & box_medium@pallet)",
+        DEPOT,
+    ),
+    (
+        "One of the pens for Sam and the other two for Priya",
+        "(pen_black>B & pen_blue>A & pen_red>A) | (pen_blue>B & pen_black>A & pen_red>A)"
+        " | (pen_red>B & pen_black>A & pen_blue>A)",
+        OFFICE,
+    ),
+    # a count the scene does not hold; 'any of' (no one choice); another choice; 'them' (no
+    # kind said); the rest said first
+    ("Give Sam one of the pens and put the other three in the box", None, OFFICE),
+    ("Give Sam any of the pens and put the other two in the box", None, OFFICE),
+    ("Give Sam one of the pens or the stapler and put the other two in the box", None, OFFICE),
+    ("Give Sam one of them and put the other two in the box", None, OFFICE),
+    ("Put the other two in the box and give Sam one of the pens", None, OFFICE),
+)
+
+
+def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every sentence the session-36 (12t) rewrites read is refused with them taken out."""
+    CASES.refused_without(normalise._STEPS36T, monkeypatch)
+
+
+def test_refused_without_named_by_sex(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every sentence `_named_by_sex36t` reads is refused without it (as it was before)."""
+    SEX.refused_with(normalise, "_named_by_sex36t", lambda *_: None, monkeypatch)
+
+
+def test_refused_without_one_of(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every 'one of the …' sentence `_one_of36t` reads is refused without it ('One pen for Sam
+    and the other two …', session 32's form, is not its)."""
+    ONE_OF.refused_with(phrasing, "_one_of36t", lambda *_: False, monkeypatch)
