@@ -71,10 +71,6 @@ KNOWN_MISSES = frozenset(
         # causes11 (session 11): a plan naming an object the request does not ("to move the large
         # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",
-        # blind13 (tuned on in session 15; its 'wee box' reads since session 34): 'Sorry' after
-        # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
-        # 'chef habit' opens with no speaker or hearer
-        "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
         # blind13: a run-on of three wants with 'he' for the third person (said by role and
         # name) and 'do that last'
         "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
@@ -114,8 +110,6 @@ KNOWN_MISSES = frozenset(
         # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
         "Good morning, good morning! Before the next track, could our robot friend pop the "
         "lemon over to Mr Novak? Lovely stuff.",
-        "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
-        "maybe go to Carol? Sorry. Thank you.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Cart the grey blanket over to Mr Lee.",

@@ -8,6 +8,7 @@ import pytest
 
 from hltl.grounding import normalise, phrasing
 from tests.grounding.helpers import (
+    CELL,
     DEPOT,
     KITCHEN,
     OFFICE,
@@ -50,6 +51,37 @@ test_people_in = CASES.test(
     # an object among them; 'in' with a place of the scene after it
     ("Marco and the lemon are both in now, pass Lena the lemon", None, KITCHEN),
     ("Marco and Lena are both in the lemon", None, KITCHEN),
+)
+
+
+# -- a condition of courtesy straight before a polite question ---------------------------------
+
+
+test_no_trouble = CASES.test(
+    (
+        "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
+        "maybe go to Carol? Sorry. Thank you.",
+        "apple>C",
+        CELL,
+    ),
+    ("if it's not too much trouble could the apple maybe go to Carol?", "apple>C", CELL),
+    # a choice, a negation, a 'maybe not' left in the question
+    ("if it's not too much trouble could the apple maybe go to Carol or Bob?", None, CELL),
+    ("if it's not too much trouble could the apple not go to Carol?", None, CELL),
+    ("if it's not too much trouble could the apple go to Carol, or maybe not?", None, CELL),
+)
+
+
+# -- '<word> habit' after an apology: 'force of habit' ----------------------------------------
+
+
+test_habit = CASES.test(
+    ("Behind! Sorry, chef habit. Tongs to Lena please, thank you!", "tongs>B", KITCHEN),
+    # an object or a person by name before 'habit'; a request before the apology; no full stop
+    ("Behind! Sorry, salt habit. Tongs to Lena please", None, KITCHEN),
+    ("Behind! Sorry, Lena habit. Tongs to Marco please", None, KITCHEN),
+    ("Tongs to Marco. Sorry, chef habit. Tongs to Lena please", None, KITCHEN),
+    ("Behind! Sorry, chef habit, tongs to Lena please", None, KITCHEN),
 )
 
 

@@ -22808,7 +22808,48 @@ def _people_in36t(text: str, lexicon: Lexicon) -> str:
     )
 
 
-_STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (_next_event36t, _people_in36t)
+def _no_trouble36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "if it's not too much trouble could the apple maybe go to Carol?" — the
+    condition of courtesy said straight before a polite question (no comma between: session 19's
+    `_hedges19` takes it off only before a comma or the end) asks nothing: taken off, so the
+    question is read as said alone (its 'maybe' a softener there). Only 'trouble' / 'bother', and
+    only before could / can / would / will / might opening the question."""
+    return _sub(
+        r"(?:^|(?<=[.!?,]\s))(?:but\s+)?if (?:it's|it is) (?:not|no) (?:too much |any )?"
+        r"(?:trouble|bother)\s*,?\s+(?=(?:could|can|would|will|might) [a-z])",
+        "",
+        text,
+    )
+
+
+def _habit36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Behind! Sorry, chef habit." — '<word> habit' after an apology, closing
+    its sentence, is 'force of habit' (read since session 15 as the apology for a call): the word
+    before 'habit' says what kind of habit, never who or what to act on, so a role of a person in
+    the scene ('chef') may be it; a word naming an object or a person by name ('salt habit',
+    'Lena habit') or one that counts, chooses or points back (`_KEEP_WORDS`) is not, and is left
+    as it was."""
+
+    def habit(m: re.Match[str]) -> str:
+        word = m["w"]
+        roles = {a for h in lexicon.scene.humans for a in h.aliases if a.islower()}
+        if _KEEP_WORDS.search(word) or (_names(word, lexicon) and word.lower() not in roles):
+            return m[0]
+        return f"{m['sorry']}, force of habit"
+
+    return _sub(
+        r"\b(?P<sorry>sorry),\s+(?:(?:old|bad|an?)\s+)?(?P<w>[a-z]+) habits?(?=\s*[.!])",
+        habit,
+        text,
+    )
+
+
+_STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _next_event36t,
+    _people_in36t,
+    _no_trouble36t,
+    _habit36t,
+)
 
 
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
