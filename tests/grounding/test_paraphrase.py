@@ -214,6 +214,81 @@ KNOWN_MISSES = frozenset(
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
+        # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
+        'Go on, be a love, the cup to Person B, and thanks a million from the whole ballet class.',
+        "Quick favour before my flamenco lesson: bottle to Person B, and that's everything.",
+        "Much obliged if you'd get the bottle to Person A, blagodaram.",
+        "Very good of you, really, just the bottle for Person A and then I'll leave you in peace, "
+        "miigwech.",
+        'The bottle needs putting up on the shelf, the bosun likes things stowed.',
+        'Person B would love the apple, and Person A could use the chips to keep her going at the '
+        'bonsai show.',
+        "The bottle's been asked for by Person B, who runs the model railway club, and Person A "
+        "asked for the chips.",
+        'The sink is where the green cup ought to be, the aquarist left it out.',
+        'The coalman left the crisps out, so get them and put them up on the shelf.',
+        "Person B's to have the apple, and he'll want the cup with it.",
+        "Hand the chips to Person A, and likewise the bottle to Person B, he's the hedger.",
+        "Person A's been beachcombing all morning: the bottle to her first, then the chips, also "
+        "hers.",
+        "Person B's having the chips and Person A the bottle; give them those when you've got a "
+        "hand free.",
+        "Marco's lost his tongs, get them to him, would you.",
+        "The scissors are Noah's, so bring them over to him.",
+        "Bob's thirsty he wants the bottle and Alice wants the crisps give them those.",
+        'Apple to Person A. Cup to Person B. Chips stay put.',
+        "Person B gets the bottle he's been waiting ages Person A gets the chips she's been "
+        "waiting longer.",
+        "Chips for Person A. And the bottle. That's for Person B, the park keeper.",
+        "Person A wants the bottle she's been at kickboxing, and Person B the chips he's starving.",
+        'Grey blanket. Mr Lee. His feet are like ice.',
+        "Alice and Bob each get something: she's having the chips, he's having the bottle.",
+        "Bring Person B just one thing, the cup, the apple or the bottle, he's not bothered which.",
+        'The apple goes to whichever of the two of them you reach first.',
+        "Either Person A or Person B, the bottle's for one of them, you choose.",
+        "One apiece: Person A is to have the chips and Person B the bottle, they're back from the "
+        "beach.",
+        "There's only the one bottle and only Person A to give it to, so off it goes to her.",
+        "Person B won't mind if it's the bottle or the chips, just bring him whichever's closer.",
+        "Each patient is to have a blanket, Mr Lee the blue and Mrs Khan the grey, it's nippy on "
+        "the ward tonight.",
+        "Lily can have any one of her blocks, she'll only chew it.",
+        "Kofi says either spanner will do, he's not fussy.",
+        'Put the two mugs on the shelf, the busboy keeps knocking them over.',
+        "Two people, two things: the bottle's Person B's, and the chips are Person A's, hand them "
+        "over.",
+        "Just the single bottle, to Person A, that's her ration for the fell race.",
+        "There's a single bottle about, take it to Person A, she's the drayman.",
+        'All three pens in the box, the compositor keeps nicking them.',
+        "Both blankets to Mrs Khan, she's frozen, the heating's off on this side.",
+        "The three boxes onto the belt, the whole lot's for the same van.",
+        'Both blocks up on the high chair, Lily wants to stack them.',
+        'Both spanners into the locker, the pipefitter borrowed them and never said.',
+        "Not the bottle, the crisps, Bob's the one who's peckish.",
+        "The bottle isn't Person B's, it's Person A's, take it to her.",
+        'No need for anything fancy, just the bottle to Person A.',
+        'The blue pen stays put on the desk, but the black one and the red one belong in the box.',
+        'Mr Lee gets the jug but not the tablets, those are for Mrs Khan.',
+        "Except for the big box, stack every other thing on the pallet, it's all going out "
+        "together.",
+        "Apart from the baby wipes, move the whole lot up onto the high chair, the dog's about.",
+        'Bob gets the chips, scratch that, Alice does, she won the bet.',
+        "Take the bottle to, erm, what's her name, Person A, that's it.",
+        "Sponge in the sink, no, the tray, sorry, the sink's full.",
+        "Take Lena the lemon, no hang on, it's the salt she wants.",
+        'alice first with the bottle and after that bob gets the chips, kendo finishes at six',
+        'snack time so its apple for person a and chips for person b',
+        'cup for person b thx hes the one back from surfing',
+        'person a needs the bottle, rough poker night',
+        'the bottles going to person b and person a gets the chips this time round',
+        'dana the doctor is after the spoon and bowl, its porridge oclock',
+        'tom needs the scanner for the last van of the day',
+        'Pop the chipos up on the shelf, the coastguard will eat later.',
+        "Is there any chance of the bottle for Person B, seeing as he's been woodturning all day?",
+        "Do you think you could manage the bottle over to Person A, she's the bursar?",
+        'Would you put the banana on the tray so nobody sits on it?',
+        'Would you pop the white plate up in the plate rack with the others?',
+        "Would you mind laying the small spanner out on the workbench, I've a nut to loosen?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -285,8 +360,10 @@ KNOWN_UNCLEAR = frozenset(
 # one, measured once at the end of session 33 (0 wrong), tuned on in session 34: asserted now, the
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind33" written in session 34 by another engineer and
 # committed alone, reviewed by a second one, measured once at the end of session 34 (0 wrong), tuned
-# on in session 35: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind34"})
+# on in session 35: asserted now, the rest in KNOWN_MISSES; "blind34" written in session 35 by
+# another engineer and committed alone, reviewed by a second one, measured once at the end of
+# session 35 (1 wrong, fixed), tuned on in session 36: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

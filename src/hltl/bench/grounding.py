@@ -120,7 +120,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # who change the grounder before its one measurement at the end of session 34; tuned on in
 # session 35), blind34 (written in session 35 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of
-# session 35; tests do not assert it).
+# session 35; its one wrong reading fixed and tuned on in session 36).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
