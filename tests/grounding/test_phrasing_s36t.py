@@ -9,8 +9,10 @@ import pytest
 from hltl.grounding import normalise, phrasing
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
+    NURSERY,
     OFFICE,
     WARD,
     PhrasingCases,
@@ -82,6 +84,56 @@ test_habit = CASES.test(
     ("Behind! Sorry, Lena habit. Tongs to Marco please", None, KITCHEN),
     ("Tongs to Marco. Sorry, chef habit. Tongs to Lena please", None, KITCHEN),
     ("Behind! Sorry, chef habit, tongs to Lena please", None, KITCHEN),
+)
+
+
+# -- 'the kids' of a scene whose people share a role for children -----------------------------
+
+
+test_kids = CASES.test(
+    (
+        "Each of the kids gets a book",
+        "(book_red>B & book_green>C) | (book_green>B & book_red>C)",
+        CLASSROOM,
+    ),
+    (
+        "Give the children a book each",
+        "(book_red>B & book_green>C) | (book_green>B & book_red>C)",
+        CLASSROOM,
+    ),
+    # one globe for two; a scene with no role shared by children (the nursery)
+    ("Give the kids the globe", None, CLASSROOM),
+    ("Each of the kids gets a block", None, NURSERY),
+)
+
+
+# -- a feeling about an object, then 'so' and a request ---------------------------------------
+
+
+test_upset_about = CASES.test(
+    ("Bob is upset about the cup, so give him the apple", "apple>B", CELL),
+    ("Bob's really cross about the crisps, so give Carol the apple", "apple>C", CELL),
+    # a person it is about; a feeling not in the list; 'the other one' (of what?); two people
+    ("Bob is upset about Alice, so give him the apple", None, CELL),
+    ("Bob is happy about the cup, so give him the apple", None, CELL),
+    ("Bob is upset about the cup, so give him the other one", None, CELL),
+    ("Bob and Alice are upset about the cup, so give him the apple", None, CELL),
+)
+
+
+# -- ', who has the X,' after a person: what they hold, no request -----------------------------
+
+
+test_who_has = CASES.test(
+    ("Lena, who has the knife, wants the lemon", "lemon>B", KITCHEN),
+    ("Lena, who's got the knife, wants the lemon", "lemon>B", KITCHEN),
+    # a want in the clause; 'it' or the same object after it; a person held
+    ("Lena, who wants the knife, needs the lemon", None, KITCHEN),
+    ("Lena, who has the knife, wants it", None, KITCHEN),
+    ("Lena, who has the knife, wants the knife", None, KITCHEN),
+    ("Lena, who has Marco, wants the lemon", None, KITCHEN),
+    # a place the scene may belie (causes10's near form)
+    ("Put the cup, which is on the shelf, on the table", None, CELL),
 )
 
 

@@ -22844,11 +22844,92 @@ def _habit36t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# words for the children of a group, said of the people of a shared role for children (a closed
+# list both ways: 'the kids' of the classroom's two students)
+_KIDS36T = r"kids|children|pupils|schoolkids|schoolchildren"
+_CHILD_ROLES36T = ("student", "pupil")
+
+
+def _kids36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Each of the kids gets a book" — 'the kids' / 'the children' / 'the
+    pupils' where two people or more of the scene share a role for children ('student', 'pupil')
+    and no one else has it: those people, said as the role's plural ('the students', which the
+    grammar reads as every one of them). Left as it was in a scene without such a role (the
+    nursery's toddler and big sister are no role shared) or when a name of the scene is one of
+    those words."""
+    said = {a.lower() for h in lexicon.scene.humans for a in (h.name, *h.aliases)}
+    if said & set(_KIDS36T.split("|")):
+        return text
+    for role in _CHILD_ROLES36T:
+        held = [h for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
+        if len(held) >= 2:
+            return _sub(rf"\bthe (?:{_KIDS36T})\b", f"the {role}s", text)
+    return text
+
+
+def _aside_object36t(what: str, rest: str, lexicon: Lexicon) -> bool:
+    """Whether ``what``, said aside of a person, names objects alone and the request ``rest``
+    after it names none of them nor an it / them / that / those / one (which could be them)."""
+    ids = _ids(what, lexicon)
+    return (
+        bool(ids)
+        and _only_kind(what, lexicon, "object")
+        and not ids & _ids(rest, lexicon)
+        and not re.search(r"\b(?:it|them|that|those|one)\b", rest, _F)
+    )
+
+
+# a feeling about something (a closed list): what it is about is no request
+_FEELING36T = (
+    r"upset|sad|cross|angry|annoyed|grumpy|moody|worried|unhappy|fed up|sulking|miffed|"
+    r"gutted|disappointed|down"
+)
+
+
+def _upset_about36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Bob is upset about the cup, so give him the apple" — a person's feeling
+    about an object (a closed list of feelings), then 'so' and a request: what the feeling is
+    about asks for nothing, so it is taken off ('Bob is upset, so give him the apple', read since
+    session 21 as a reason). Only when the request names neither that object nor an it / them /
+    that / one (which could be it), and the feeling is said of one person alone."""
+    m = _rx(
+        rf"^(?P<who>[^,.;!?]+?)(?P<be>'s|\s+is|\s+was|'s been|\s+has been)\s+(?:really |so |a bit "
+        rf"|very )?(?P<feel>{_FEELING36T}) (?:about|over|with) (?P<what>[^,.;!?]+?)"
+        r"(?P<rest>,?\s+so\s+[^.;!?]+[.!]?)\s*$"
+    ).match(text.strip())
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    if not _aside_object36t(m["what"], m["rest"], lexicon):
+        return text
+    return f"{m['who']}{m['be']} {m['feel']}{m['rest']}"
+
+
+def _who_has36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Lena, who has the knife, wants the lemon" — a relative clause of
+    possession or use between commas after a person ('who has / has got / 's got / is holding /
+    is using the X') says what that person has, no request (a scene holds nothing in anyone's
+    hands, so it changes nothing): taken off. Only when X is objects alone and what follows names
+    neither X nor an it / them / that / one; 'who wants / needs …' (a want) and 'which is on the
+    shelf' (a place the scene may belie) are left."""
+    m = _rx(
+        r"^(?P<who>[^,.;!?]+?),\s+who(?:'s| has| is)?\s+(?:got|has|holding|using|carrying|"
+        r"minding)\s+(?P<what>[^,.;!?]+?),\s+(?P<rest>[^,.;!?]+[.!]?)\s*$"
+    ).match(text.strip())
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    if not _aside_object36t(m["what"], m["rest"], lexicon):
+        return text
+    return f"{m['who']} {m['rest']}"
+
+
 _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _next_event36t,
     _people_in36t,
     _no_trouble36t,
     _habit36t,
+    _kids36t,
+    _upset_about36t,
+    _who_has36t,
 )
 
 
